@@ -1,0 +1,3 @@
+//! Library half of the `weft` CLI: text rendering shared with tests.
+
+pub mod tables;

@@ -1,0 +1,126 @@
+//! Backends: one validated, specialised module -> WGSL, SPIR-V, HLSL, GLSL, MSL.
+//!
+//! Options are fixed here (never naga's build-profile-dependent defaults) so
+//! bytes are identical in debug and release builds and on every machine.
+//! The HLSL register mapping is documented in docs/hlsl-registers.md.
+
+use naga::back::{glsl, hlsl, msl, spv, wgsl};
+use naga::valid::ModuleInfo;
+use naga::{Module, ShaderStage};
+
+/// HLSL: samplers live in naga's sampler heap (`nagaSamplerHeap`) at this space…
+pub const HLSL_SAMPLER_HEAP_SPACE: u8 = 8;
+pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
+/// …and each group's sampler-index buffer is `t<this>` in the group's space.
+pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
+
+pub struct Emitted {
+    pub wgsl: String,
+    pub spirv: Vec<u8>,
+    pub hlsl: String,
+    pub msl: String,
+    /// (entry point, stage, source) per entry point.
+    pub glsl: Vec<(String, ShaderStage, String)>,
+}
+
+pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    wgsl::write_string(module, info, wgsl::WriterFlags::empty()).map_err(|e| format!("WGSL backend: {e}"))
+}
+
+/// Every language but WGSL needs the overrides resolved (naga has no SPIR-V
+/// specialisation constants), so these take a module without overrides.
+pub fn emit_others(module: &Module, info: &ModuleInfo) -> Result<(Vec<u8>, String, String, Vec<(String, ShaderStage, String)>), String> {
+    let spirv = emit_spirv(module, info)?;
+    let hlsl = emit_hlsl(module, info)?;
+    let msl = emit_msl(module, info)?;
+    let mut glsl_out = Vec::new();
+    for ep in &module.entry_points {
+        glsl_out.push((ep.name.clone(), ep.stage, emit_glsl(module, info, &ep.name, ep.stage)?));
+    }
+    Ok((spirv, hlsl, msl, glsl_out))
+}
+
+pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String> {
+    let options = spv::Options {
+        lang_version: (1, 0),
+        flags: spv::WriterFlags::ADJUST_COORDINATE_SPACE
+            | spv::WriterFlags::LABEL_VARYINGS
+            | spv::WriterFlags::CLAMP_FRAG_DEPTH,
+        ..spv::Options::default()
+    };
+    let words = spv::write_vec(module, info, &options, None).map_err(|e| format!("SPIR-V backend: {e}"))?;
+    Ok(words.iter().flat_map(|w| w.to_le_bytes()).collect())
+}
+
+/// (group, binding) -> register `binding` in space `group`.
+pub fn hlsl_options(module: &Module) -> hlsl::Options {
+    let mut options = hlsl::Options {
+        shader_model: hlsl::ShaderModel::V5_1,
+        fake_missing_bindings: false,
+        ..hlsl::Options::default()
+    };
+    options.sampler_heap_target = hlsl::SamplerHeapBindTargets {
+        standard_samplers: bind_target(HLSL_SAMPLER_HEAP_SPACE, 0),
+        comparison_samplers: bind_target(HLSL_COMPARISON_SAMPLER_HEAP_SPACE, 0),
+    };
+    for (_, var) in module.global_variables.iter() {
+        if let Some(rb) = &var.binding {
+            options.binding_map.insert(rb.clone(), bind_target(rb.group as u8, rb.binding));
+            options.sampler_buffer_binding_map.insert(
+                hlsl::SamplerIndexBufferKey { group: rb.group },
+                bind_target(rb.group as u8, HLSL_SAMPLER_INDEX_REGISTER),
+            );
+        }
+    }
+    options
+}
+
+fn bind_target(space: u8, register: u32) -> hlsl::BindTarget {
+    hlsl::BindTarget {
+        space,
+        register,
+        binding_array_size: None,
+        dynamic_storage_buffer_offsets_index: None,
+        restrict_indexing: false,
+    }
+}
+
+pub fn emit_hlsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    let options = hlsl_options(module);
+    let pipeline = hlsl::PipelineOptions { entry_point: None };
+    let mut out = String::new();
+    let mut w = hlsl::Writer::new(&mut out, &options, &pipeline);
+    w.write(module, info, None).map_err(|e| format!("HLSL backend: {e}"))?;
+    Ok(out)
+}
+
+pub fn emit_msl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    let options = msl::Options { lang_version: (2, 1), ..msl::Options::default() };
+    let pipeline = msl::PipelineOptions::default();
+    msl::write_string(module, info, &options, &pipeline)
+        .map(|(s, _)| s)
+        .map_err(|e| format!("MSL backend: {e}"))
+}
+
+pub fn emit_glsl(module: &Module, info: &ModuleInfo, entry: &str, stage: ShaderStage) -> Result<String, String> {
+    let options = glsl::Options {
+        version: glsl::Version::Desktop(450),
+        writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE,
+        ..glsl::Options::default()
+    };
+    let pipeline = glsl::PipelineOptions { shader_stage: stage, entry_point: entry.to_string(), multiview: None };
+    let mut out = String::new();
+    let mut w = glsl::Writer::new(&mut out, module, info, &options, &pipeline, naga::proc::BoundsCheckPolicies::default())
+        .map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
+    w.write().map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
+    Ok(out)
+}
+
+pub fn stage_suffix(stage: ShaderStage) -> &'static str {
+    match stage {
+        ShaderStage::Vertex => "vert",
+        ShaderStage::Fragment => "frag",
+        ShaderStage::Compute => "comp",
+        _ => "other",
+    }
+}

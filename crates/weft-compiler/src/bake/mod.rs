@@ -1,0 +1,4 @@
+//! Lookup tables the toolchain computes at build time (pure Rust, deterministic),
+//! written under `generated/luts/` and bound through the engine interface.
+
+pub mod split_sum;

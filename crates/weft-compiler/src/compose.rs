@@ -1,0 +1,161 @@
+//! Composition: engine interface + generated prelude + included library files
+//! + the material's source, concatenated into one WGSL module, with a source
+//! map from composed byte offsets back to the user's files.
+//!
+//! WGSL needs no declaration order at module scope, so plain concatenation is
+//! enough; no identifier is mangled and the output stays readable.
+
+use crate::prelude::Prelude;
+use codespan_reporting::diagnostic::{Diagnostic, Label};
+use std::ops::Range;
+use weft_front::model::{Loc, Material};
+use weft_front::{Diagnostics, FileId, SourceDb};
+
+/// Where a range of composed text came from.
+#[derive(Clone, Debug)]
+pub enum Target {
+    /// Copied from a file starting at this byte offset.
+    File { file: FileId, offset: usize },
+    /// Generated from a TOML declaration.
+    Decl(Loc),
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct SourceMap {
+    segments: Vec<(Range<usize>, Target)>,
+}
+
+impl SourceMap {
+    /// Maps a composed span to a file span. A span inside generated text maps
+    /// to the whole declaration it was generated from.
+    pub fn map(&self, span: Range<usize>) -> Option<(FileId, Range<usize>)> {
+        let (seg, target) = self
+            .segments
+            .iter()
+            .find(|(r, _)| r.start <= span.start && span.start < r.end.max(r.start + 1))?;
+        Some(match target {
+            Target::File { file, offset } => {
+                let start = span.start - seg.start + offset;
+                let end = span.end.min(seg.end) - seg.start + offset;
+                (*file, start..end.max(start))
+            }
+            Target::Decl(loc) => (loc.file, loc.span.clone()),
+        })
+    }
+}
+
+pub struct Composed {
+    pub text: String,
+    pub map: SourceMap,
+}
+
+pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
+
+/// Registers the engine interface in the source database (once) so its lines can be shown.
+pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
+    let path = std::path::Path::new("<weft>/engine_interface.wgsl");
+    db.find(path)
+        .unwrap_or_else(|| db.add(path, "<weft engine interface>".into(), ENGINE_INTERFACE.into()))
+}
+
+pub fn compose(m: &Material, prelude: &Prelude, db: &mut SourceDb) -> Composed {
+    let mut text = String::new();
+    let mut map = SourceMap::default();
+    let mut push_file = |text: &mut String, file: FileId, src: &str| {
+        let start = text.len();
+        text.push_str(src);
+        if !src.ends_with('\n') {
+            text.push('\n');
+        }
+        map.segments.push((start..start + src.len(), Target::File { file, offset: 0 }));
+    };
+    let engine = engine_interface_file(db);
+    push_file(&mut text, engine, ENGINE_INTERFACE);
+    let mut prelude_segments = Vec::new();
+    for (line, target) in &prelude.lines {
+        let start = text.len();
+        text.push_str(line);
+        text.push('\n');
+        prelude_segments.push((start..text.len(), target.clone()));
+    }
+    for src in &m.sources {
+        let start = text.len();
+        text.push_str(&format!("// ---- {} ----\n", src.rel_path));
+        prelude_segments.push((start..text.len(), Target::Decl(m.decl.clone())));
+        let body = db.text(src.file).to_string();
+        push_file(&mut text, src.file, &body);
+    }
+    map.segments.extend(prelude_segments);
+    map.segments.sort_by_key(|(r, _)| r.start);
+    Composed { text, map }
+}
+
+/// Converts naga labels (composed spans) into a diagnostic in the user's files.
+pub fn naga_diagnostic(
+    code: &str,
+    message: String,
+    labels: impl IntoIterator<Item = (naga::Span, String)>,
+    notes: Vec<String>,
+    map: &SourceMap,
+    fallback: &Loc,
+) -> Diagnostic<FileId> {
+    let mut out: Vec<Label<FileId>> = Vec::new();
+    for (i, (span, msg)) in labels.into_iter().enumerate() {
+        let Some(range) = span.to_range() else { continue };
+        if let Some((file, r)) = map.map(range) {
+            let label = if i == 0 { Label::primary(file, r) } else { Label::secondary(file, r) };
+            out.push(label.with_message(msg));
+        }
+    }
+    if out.is_empty() {
+        out.push(Label::primary(fallback.file, fallback.span.clone()).with_message("in this material"));
+    }
+    Diagnostic::error()
+        .with_code(code)
+        .with_message(message)
+        .with_labels(out)
+        .with_notes(notes)
+}
+
+/// Parses and validates the composed module once, reporting naga's errors in the user's files.
+pub fn parse_and_validate(
+    composed: &Composed,
+    m: &Material,
+    diags: &mut Diagnostics,
+) -> Option<(naga::Module, naga::valid::ModuleInfo)> {
+    let module = match naga::front::wgsl::parse_str(&composed.text) {
+        Ok(module) => module,
+        Err(e) => {
+            let labels: Vec<(naga::Span, String)> = e.labels().map(|(s, m)| (s, m.to_string())).collect();
+            let notes = e.notes().map(|n| n.to_string()).collect();
+            diags.push(naga_diagnostic("wgsl-parse", e.message().to_string(), labels, notes, &composed.map, &m.decl));
+            return None;
+        }
+    };
+    match validator().validate(&module) {
+        Ok(info) => Some((module, info)),
+        Err(e) => {
+            diags.push(validation_diagnostic(&e, composed, m));
+            None
+        }
+    }
+}
+
+pub fn validator() -> naga::valid::Validator {
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
+}
+
+pub fn validation_diagnostic(
+    e: &naga::WithSpan<naga::valid::ValidationError>,
+    composed: &Composed,
+    m: &Material,
+) -> Diagnostic<FileId> {
+    let labels: Vec<(naga::Span, String)> = e.spans().map(|(s, l)| (*s, l.clone())).collect();
+    let mut notes = Vec::new();
+    let mut source: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
+    while let Some(s) = source {
+        notes.push(s.to_string());
+        source = s.source();
+    }
+    naga_diagnostic("wgsl-validation", e.as_inner().to_string(), labels, notes, &composed.map, &m.decl)
+}

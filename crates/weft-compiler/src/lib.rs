@@ -1,0 +1,23 @@
+//! weft compiler: a checked material -> validated shader variants in every
+//! language, plus inspector metadata.
+//!
+//! Pipeline (one way): [`prelude`] (uniforms/bindings/keywords from the TOML)
+//! -> [`compose`] (one WGSL module + source map) -> naga parse + validate once
+//! -> per variant [`specialise`] (bake keywords and tier, drop dead branches,
+//! compact) -> validate -> [`backends`] -> [`reflect`] (metadata from the
+//! specialised module itself). [`library`] runs that over a materials folder
+//! and [`output`] writes the result atomically. This is also the API for
+//! `build.rs` scripts: see [`library::build_library`].
+
+pub mod backends;
+pub mod bake;
+pub mod compose;
+pub mod library;
+pub mod metadata;
+pub mod output;
+pub mod prelude;
+pub mod reflect;
+pub mod specialise;
+pub mod variant;
+
+pub use library::{BuildOptions, BuildOutput, build_library, build_materials, compile_material};

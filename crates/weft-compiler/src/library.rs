@@ -1,0 +1,278 @@
+//! Building a whole materials folder: discovery, per-material compilation
+//! (variants in parallel), aliasing, metadata assembly and library-level files
+//! (baked LUTs, the metadata JSON Schema).
+//!
+//! Output is a map of relative path -> bytes; `output.rs` writes or checks it.
+//! Results are collected in a fixed order, so bytes do not depend on thread count.
+
+use crate::compose::{self, ENGINE_INTERFACE};
+use crate::variant::{self, CompiledVariant, sha256_hex};
+use crate::{bake, metadata, prelude};
+use codespan_reporting::diagnostic::{Diagnostic, Label};
+use rayon::prelude::*;
+use sha2::{Digest, Sha256};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use weft_front::model::Material;
+use weft_front::{Diagnostics, SourceDb, variants};
+use weft_meta::{ENGINE_INTERFACE_VERSION, MaterialMetadata, SCHEMA_VERSION, Variant};
+
+/// Size and sample count of the baked split-sum LUT.
+pub const SPLIT_SUM_LUT_SIZE: u32 = 64;
+pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
+pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx.rg16f";
+
+#[derive(Clone, Debug, Default)]
+pub struct BuildOptions {
+    /// Worker threads (None: rayon's default).
+    pub jobs: Option<usize>,
+    /// Reuse a material's files from this output folder when its inputs are unchanged.
+    pub reuse_from: Option<PathBuf>,
+}
+
+/// Everything a build produced: files relative to the output folder.
+#[derive(Default)]
+pub struct BuildOutput {
+    pub files: BTreeMap<String, Vec<u8>>,
+    pub materials: Vec<MaterialMetadata>,
+    /// Materials whose files were reused unchanged.
+    pub reused: Vec<String>,
+    pub variant_count: usize,
+}
+
+/// Material TOML files in a materials folder: `<dir>/<name>/*.toml`, sorted.
+pub fn discover(materials_dir: &Path) -> std::io::Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(materials_dir)? {
+        let dir = entry?.path();
+        if !dir.is_dir() || dir.file_name().is_some_and(|n| n == "lib") {
+            continue;
+        }
+        for f in std::fs::read_dir(&dir)? {
+            let f = f?.path();
+            if f.extension().is_some_and(|e| e == "toml") {
+                out.push(f);
+            }
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Hash of everything a material's output depends on.
+pub fn inputs_hash(m: &Material, db: &SourceDb) -> String {
+    let mut h = Sha256::new();
+    h.update(env!("CARGO_PKG_VERSION"));
+    h.update(ENGINE_INTERFACE);
+    h.update(db.text(m.file));
+    for s in &m.sources {
+        h.update(&s.rel_path);
+        h.update([0]);
+        h.update(db.text(s.file));
+    }
+    h.finalize().iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Compiles one loaded material: every variant, in parallel, then metadata.
+/// Returns the material's files relative to its own folder.
+pub fn compile_material(
+    m: &Material,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
+    let prelude = prelude::generate(m);
+    let composed = compose::compose(m, &prelude, db);
+    let (module, _info) = compose::parse_and_validate(&composed, m, diags)?;
+    if !check_interface(m, &module, diags) {
+        return None;
+    }
+    let keys = variants::variants(m);
+    let results: Vec<Result<CompiledVariant, String>> =
+        keys.par_iter().map(|k| variant::compile_variant(m, &module, k, &prelude)).collect();
+    let mut compiled = Vec::new();
+    for r in results {
+        match r {
+            Ok(v) => compiled.push(v),
+            Err(msg) => diags.push(
+                Diagnostic::error()
+                    .with_code("variant")
+                    .with_message(msg)
+                    .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("in this material")]),
+            ),
+        }
+    }
+    if compiled.len() != keys.len() {
+        return None;
+    }
+    let aliases = variant::find_aliases(&compiled);
+    let mut files = Vec::new();
+    let mut variants_meta = Vec::new();
+    for ((key, v), alias) in keys.iter().zip(compiled).zip(aliases) {
+        let keywords = key
+            .keywords
+            .iter()
+            .map(|&(k, val)| (m.keywords[k].name.clone(), m.keywords[k].values[val].clone()))
+            .collect();
+        let (alias_of, shader) = match alias {
+            Some(j) => (Some(keys[j].id(m)), None),
+            None => {
+                files.extend(v.files);
+                (None, Some(v.shader))
+            }
+        };
+        variants_meta.push(Variant { id: v.id, tier: m.tiers.values[key.tier].clone(), keywords, alias_of, shader });
+    }
+    let meta = MaterialMetadata {
+        schema_version: SCHEMA_VERSION,
+        engine_interface_version: ENGINE_INTERFACE_VERSION,
+        name: m.name.clone(),
+        label: weft_meta::Text { en: m.label.clone(), zh: m.label_zh.clone() },
+        description: m
+            .description
+            .as_ref()
+            .map(|d| weft_meta::Text { en: d.clone(), zh: m.description_zh.clone() }),
+        inputs_hash: inputs_hash(m, db),
+        groups: metadata::groups(m),
+        parameters: metadata::parameters(m, &prelude),
+        keywords: metadata::keywords(m),
+        tiers: metadata::tiers(m),
+        presets: metadata::presets(m),
+        passes: metadata::passes(m),
+        vertex_inputs: metadata::vertex_inputs(m),
+        variants: variants_meta,
+    };
+    Some((meta, files))
+}
+
+/// Passes name entry points that exist with the right stage; vertex stages
+/// read only the inputs the material `requires`.
+fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics) -> bool {
+    let before = diags.error_count();
+    for pass in &m.passes {
+        for (name, stage) in [(&pass.vertex, naga::ShaderStage::Vertex), (&pass.fragment, naga::ShaderStage::Fragment)] {
+            if !module.entry_points.iter().any(|ep| &ep.name == name && ep.stage == stage) {
+                let found: Vec<String> = module.entry_points.iter().map(|e| format!("{} ({:?})", e.name, e.stage)).collect();
+                diags.push(
+                    Diagnostic::error()
+                        .with_code("missing-entry-point")
+                        .with_message(format!("pass `{}` names {:?} entry point `{name}`, which the WGSL does not define", pass.name, stage))
+                        .with_labels(vec![Label::primary(pass.decl.file, pass.decl.span.clone()).with_message("in this pass")])
+                        .with_notes(vec![format!("entry points found: {}", found.join(", "))]),
+                );
+            }
+        }
+    }
+    let locations = crate::reflect::vertex_locations(module);
+    for loc in locations {
+        if !m.requires.iter().any(|a| a.location() == loc) {
+            let name = weft_front::model::VertexAttribute::ALL
+                .iter()
+                .find(|a| a.location() == loc)
+                .map_or(format!("location {loc}"), |a| a.name().to_string());
+            diags.push(
+                Diagnostic::error()
+                    .with_code("missing-require")
+                    .with_message(format!("the vertex stage reads `{name}` but the material does not require it"))
+                    .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("material declared here")])
+                    .with_notes(vec![format!("add \"{name}\" to `requires` in [material]")]),
+            );
+        }
+    }
+    diags.error_count() == before
+}
+
+/// Reads a previous build's files for a material if its inputs are unchanged.
+fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
+    let dir = out_dir.join(&m.name);
+    let meta_bytes = std::fs::read(dir.join(format!("{}.meta.json", m.name))).ok()?;
+    let meta: MaterialMetadata = serde_json::from_slice(&meta_bytes).ok()?;
+    if meta.inputs_hash != hash {
+        return None;
+    }
+    let mut files = Vec::new();
+    for v in &meta.variants {
+        for f in v.shader.iter().flat_map(|s| s.files.values().flatten()) {
+            let bytes = std::fs::read(dir.join(&f.path)).ok()?;
+            if sha256_hex(&bytes) != f.sha256 {
+                return None;
+            }
+            files.push((f.path.clone(), bytes));
+        }
+    }
+    Some((meta, files))
+}
+
+/// Compiles every material under `materials_dir` (see [`build_materials`]).
+pub fn build_library(
+    materials_dir: &Path,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize, &str) + Sync),
+) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
+    match discover(materials_dir) {
+        Ok(paths) => build_materials(&paths, Some(materials_dir), options, progress),
+        Err(e) => {
+            let mut diags = Diagnostics::new();
+            diags.push(Diagnostic::error().with_code("io").with_message(format!("cannot read materials folder `{}`: {e}", materials_dir.display())));
+            Err((SourceDb::new(), diags))
+        }
+    }
+}
+
+/// Compiles the given material files. `root` is the materials root includes
+/// resolve against (None: found per file, see [`weft_front::find_root`]).
+///
+/// On any error, returns the diagnostics (with the files they point into);
+/// nothing is written by this function.
+pub fn build_materials(
+    paths: &[PathBuf],
+    root: Option<&Path>,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize, &str) + Sync),
+) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
+    let mut db = SourceDb::new();
+    let mut diags = Diagnostics::new();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.jobs.unwrap_or(0)).build().expect("thread pool");
+    let mut out = BuildOutput::default();
+    for (i, path) in paths.iter().enumerate() {
+        let root = root.map_or_else(|| weft_front::find_root(path), Path::to_path_buf);
+        let Some(m) = weft_front::load_material(path, &root, &mut db, &mut diags) else { continue };
+        if out.materials.iter().any(|x| x.name == m.name) {
+            diags.push(Diagnostic::error().with_code("duplicate").with_message(format!("two materials are named `{}`", m.name))
+                .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("second material with this name")]));
+            continue;
+        }
+        progress(i, paths.len(), &m.name);
+        let hash = inputs_hash(&m, &db);
+        let reused = options.reuse_from.as_deref().and_then(|dir| reuse(dir, &m, &hash));
+        let result = match reused {
+            Some(r) => {
+                out.reused.push(m.name.clone());
+                Some(r)
+            }
+            None => pool.install(|| compile_material(&m, &mut db, &mut diags)),
+        };
+        if let Some((meta, files)) = result {
+            out.variant_count += meta.variants.len();
+            for (name, bytes) in files {
+                out.files.insert(format!("{}/{name}", m.name), bytes);
+            }
+            let mut json = serde_json::to_string_pretty(&meta).expect("metadata serialises");
+            json.push('\n');
+            out.files.insert(format!("{0}/{0}.meta.json", m.name), json.into_bytes());
+            out.materials.push(meta);
+        }
+    }
+    if diags.has_errors() {
+        return Err((db, diags));
+    }
+    progress(paths.len(), paths.len(), "");
+    add_library_files(&mut out.files);
+    Ok(out)
+}
+
+/// Files shared by every material: baked LUTs and the metadata schema.
+pub fn add_library_files(files: &mut BTreeMap<String, Vec<u8>>) {
+    let lut = bake::split_sum::split_sum_lut(SPLIT_SUM_LUT_SIZE, SPLIT_SUM_LUT_SAMPLES);
+    files.insert(SPLIT_SUM_LUT_PATH.into(), bake::split_sum::encode_rg16f(&lut));
+    files.insert("metadata.schema.json".into(), weft_meta::metadata_json_schema().into_bytes());
+}

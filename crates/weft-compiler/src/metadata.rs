@@ -1,0 +1,183 @@
+//! The material-level half of the inspector metadata (parameters, keywords,
+//! tiers, presets, passes). The per-variant half comes from `reflect.rs`.
+
+use crate::prelude::{self, Prelude};
+use serde_json::{Value, json};
+use std::collections::BTreeMap;
+use weft_front::model::{Instances, Material, ParamValue, PresetValue};
+use weft_front::samples;
+use weft_meta::*;
+
+fn text(en: &str, zh: &Option<String>) -> Text {
+    Text { en: en.to_string(), zh: zh.clone() }
+}
+
+fn opt_text(en: &Option<String>, zh: &Option<String>) -> Option<Text> {
+    match (en, zh) {
+        (None, None) => None,
+        _ => Some(Text { en: en.clone().unwrap_or_default(), zh: zh.clone() }),
+    }
+}
+
+/// A parameter value as JSON (numbers stay numbers, textures become names).
+pub fn value_json(v: &ParamValue) -> Value {
+    match v {
+        ParamValue::Float(x) => json!(x),
+        ParamValue::Int(i) => json!(i),
+        ParamValue::Bool(b) => json!(b),
+        ParamValue::Vector(xs) => json!(xs),
+        ParamValue::Texture(t) => json!(t.name()),
+        ParamValue::Curve(keys) => serde_json::to_value(keys).unwrap_or(Value::Null),
+        ParamValue::Gradient(stops) => serde_json::to_value(stops).unwrap_or(Value::Null),
+    }
+}
+
+pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
+    let members = prelude::uniform_members(m);
+    m.params
+        .iter()
+        .map(|p| {
+            let binding = prelude.texture_bindings.iter().find(|(n, _)| *n == p.name).map(|(_, b)| *b);
+            let uniform_member = members.iter().find(|mem| mem.name == p.name).map(|mem| mem.name.clone());
+            let color = (p.kind == ParamKind::Color).then(|| {
+                let d = match &p.default {
+                    ParamValue::Vector(v) => v.clone(),
+                    _ => vec![1.0; 4],
+                };
+                let conv = |c: f64| if p.hdr { c } else { samples::srgb_to_linear(c) };
+                ColorInfo { hdr: p.hdr, linear_default: [conv(d[0]), conv(d[1]), conv(d[2]), d[3]] }
+            });
+            let texture = match (&p.kind, &p.default) {
+                (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) => Some(TextureInfo {
+                    default: *t,
+                    srgb: p.srgb,
+                    tiling_member: p.tiling.then(|| format!("{}_st", p.name)),
+                    tiling_default: p.tiling.then_some([1.0, 1.0, 0.0, 0.0]),
+                }),
+                _ => None,
+            };
+            let curve = match &p.default {
+                ParamValue::Curve(keys) => Some(CurveInfo {
+                    keyframes: keys.clone(),
+                    samples: p.samples,
+                    baked_default: samples::sample_curve(keys, p.samples),
+                    time_range: samples::curve_time_range(keys),
+                }),
+                _ => None,
+            };
+            let gradient = match &p.default {
+                ParamValue::Gradient(stops) => Some(GradientInfo {
+                    stops: stops.clone(),
+                    width: p.samples,
+                    baked_default: samples::bake_gradient(stops, p.samples),
+                }),
+                _ => None,
+            };
+            Parameter {
+                name: p.name.clone(),
+                kind: p.kind,
+                label: text(&p.label, &p.label_zh),
+                tooltip: opt_text(&p.tooltip, &p.tooltip_zh),
+                group: p.group.clone(),
+                order: p.order,
+                default: value_json(&p.default),
+                range: p.range,
+                soft_range: p.soft_range,
+                step: p.step,
+                power: p.power,
+                show_if: p.show_if.clone(),
+                color,
+                texture,
+                curve,
+                gradient,
+                uniform_member,
+                binding,
+            }
+        })
+        .collect()
+}
+
+pub fn keywords(m: &Material) -> Vec<Keyword> {
+    m.keywords
+        .iter()
+        .map(|k| Keyword {
+            name: k.name.clone(),
+            kind: k.kind,
+            mode: k.mode,
+            values: k.values.clone(),
+            default: k.values[k.default].clone(),
+            label: text(&k.label, &k.label_zh),
+            tooltip: opt_text(&k.tooltip, &k.tooltip_zh),
+            group: k.group.clone(),
+            show_if: k.show_if.clone(),
+        })
+        .collect()
+}
+
+pub fn tiers(m: &Material) -> Tiers {
+    Tiers {
+        values: m.tiers.values.clone(),
+        default: m.tiers.values[m.tiers.default].clone(),
+        reference: m.tiers.values[m.tiers.reference].clone(),
+        descriptions: m
+            .tiers
+            .descriptions
+            .iter()
+            .map(|(t, en, zh)| (t.clone(), Text { en: en.clone(), zh: zh.clone() }))
+            .collect(),
+    }
+}
+
+pub fn presets(m: &Material) -> Vec<Preset> {
+    m.presets
+        .iter()
+        .map(|p| Preset {
+            name: p.name.clone(),
+            label: text(&p.label, &p.label_zh),
+            values: p
+                .values
+                .iter()
+                .map(|(k, v)| {
+                    let j = match v {
+                        PresetValue::Param(pv) => value_json(pv),
+                        PresetValue::Keyword(s) => json!(s),
+                    };
+                    (k.clone(), j)
+                })
+                .collect::<BTreeMap<_, _>>(),
+        })
+        .collect()
+}
+
+pub fn passes(m: &Material) -> Vec<Pass> {
+    m.passes
+        .iter()
+        .map(|p| Pass {
+            name: p.name.clone(),
+            vertex_entry: p.vertex.clone(),
+            fragment_entry: p.fragment.clone(),
+            render_state: RenderState {
+                blend: p.blend,
+                cull: p.cull,
+                depth_write: p.depth_write,
+                depth_test: p.depth_test,
+                queue: p.queue,
+            },
+            instances: match &p.instances {
+                Instances::Fixed(n) => InstanceCount::Fixed(*n),
+                Instances::Param(s) => InstanceCount::Parameter(s.clone()),
+            },
+        })
+        .collect()
+}
+
+pub fn groups(m: &Material) -> Vec<Group> {
+    m.groups.iter().map(|g| Group { name: g.name.clone(), label: text(&g.label, &g.label_zh) }).collect()
+}
+
+pub fn vertex_inputs(m: &Material) -> Vec<VertexInput> {
+    m.requires
+        .iter()
+        .map(|a| VertexInput { name: a.name().into(), location: a.location(), format: a.format().into() })
+        .collect()
+}

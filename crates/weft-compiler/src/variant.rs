@@ -1,0 +1,169 @@
+//! Compiling one variant: specialise, validate, emit every language, reflect.
+
+use crate::backends::{self, stage_suffix};
+use crate::compose::validator;
+use crate::prelude::{Prelude, TIER_OVERRIDE};
+use crate::reflect;
+use crate::specialise::{Bindings, specialise};
+use naga::Literal;
+use sha2::{Digest, Sha256};
+use std::collections::{BTreeMap, HashMap};
+use weft_front::model::Material;
+use weft_front::variants::VariantKey;
+use weft_meta::{KeywordKind, KeywordMode, PipelineConstant, ShaderFile, VariantShader};
+
+/// A compiled variant: its files (name -> bytes) and reflection.
+pub struct CompiledVariant {
+    pub id: String,
+    pub files: Vec<(String, Vec<u8>)>,
+    pub shader: VariantShader,
+    /// The WGSL text, used to detect identical variants.
+    pub wgsl: String,
+}
+
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+}
+
+fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
+    match kind {
+        KeywordKind::Toggle => Literal::Bool(value == 1),
+        KeywordKind::Enum => Literal::U32(value as u32),
+    }
+}
+
+/// All combinations of the `constant`-mode keywords' values (one empty combination if none).
+fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
+    let mut combos = vec![Vec::new()];
+    for (k, kw) in m.keywords.iter().enumerate().filter(|(_, k)| k.mode == KeywordMode::Constant) {
+        combos = combos
+            .into_iter()
+            .flat_map(|c| {
+                (0..kw.values.len()).map(move |v| {
+                    let mut c2 = c.clone();
+                    c2.push((k, v));
+                    c2
+                })
+            })
+            .collect();
+    }
+    combos
+}
+
+pub fn compile_variant(
+    m: &Material,
+    module: &naga::Module,
+    key: &VariantKey,
+    prelude: &Prelude,
+) -> Result<CompiledVariant, String> {
+    let id = key.id(m);
+    let mut values = Bindings::default();
+    values.values.insert(TIER_OVERRIDE.into(), Literal::U32(key.tier as u32));
+    for &(k, v) in &key.keywords {
+        let kw = &m.keywords[k];
+        values.values.insert(kw.name.clone(), keyword_literal(kw.kind, v));
+    }
+    let specialised = specialise(module, &values);
+    let info = validator()
+        .validate(&specialised)
+        .map_err(|e| format!("variant `{id}` fails validation after specialisation: {}", e.as_inner()))?;
+    let wgsl = backends::emit_wgsl(&specialised, &info)?;
+
+    let mut files: Vec<(String, Vec<u8>)> = vec![(format!("{id}.wgsl"), wgsl.clone().into_bytes())];
+    let mut by_lang: BTreeMap<String, Vec<ShaderFile>> = BTreeMap::new();
+    by_lang.entry("wgsl".into()).or_default().push(ShaderFile {
+        path: format!("{id}.wgsl"),
+        sha256: sha256_hex(wgsl.as_bytes()),
+        entry_point: None,
+        constants: BTreeMap::new(),
+    });
+
+    // Other languages cannot keep overrides: one set of files per constant-keyword combination.
+    for combo in constant_combinations(m) {
+        let mut suffix = String::new();
+        let mut constants = BTreeMap::new();
+        let mut pc = naga::back::PipelineConstants::default();
+        for &(k, v) in &combo {
+            let kw = &m.keywords[k];
+            suffix.push_str(&format!("+{}-{}", kw.name.to_lowercase(), kw.values[v]));
+            constants.insert(kw.name.clone(), kw.values[v].clone());
+            pc.insert(kw.name.clone(), if kw.kind == KeywordKind::Toggle { (v == 1) as u8 as f64 } else { v as f64 });
+        }
+        let (resolved, _) = naga::back::pipeline_constants::process_overrides(&specialised, &info, None, &pc)
+            .map_err(|e| format!("variant `{id}`: resolving pipeline constants: {e}"))?;
+        let mut resolved = resolved.into_owned();
+        for (_, o) in resolved.overrides.iter_mut() {
+            o.name = None;
+            o.id = None;
+        }
+        naga::compact::compact(&mut resolved, naga::compact::KeepUnused::No);
+        let rinfo = validator()
+            .validate(&resolved)
+            .map_err(|e| format!("variant `{id}{suffix}` fails validation: {}", e.as_inner()))?;
+        let (spirv, hlsl, msl, glsl) = backends::emit_others(&resolved, &rinfo).map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
+        let stem = format!("{id}{suffix}");
+        let mut add = |lang: &str, name: String, bytes: Vec<u8>, entry: Option<String>| {
+            by_lang.entry(lang.into()).or_default().push(ShaderFile {
+                path: name.clone(),
+                sha256: sha256_hex(&bytes),
+                entry_point: entry,
+                constants: constants.clone(),
+            });
+            files.push((name, bytes));
+        };
+        add("spirv", format!("{stem}.spv"), spirv, None);
+        add("hlsl", format!("{stem}.hlsl"), hlsl.into_bytes(), None);
+        add("msl", format!("{stem}.metal"), msl.into_bytes(), None);
+        for (entry, stage, src) in glsl {
+            add("glsl", format!("{stem}.{entry}.{}.glsl", stage_suffix(stage)), src.into_bytes(), Some(entry));
+        }
+    }
+
+    let pipeline_constants = specialised
+        .overrides
+        .iter()
+        .filter_map(|(_, o)| {
+            let name = o.name.clone()?;
+            let kw = m.keyword(&name)?;
+            Some(PipelineConstant {
+                ty: if kw.kind == KeywordKind::Toggle { "bool".into() } else { "u32".into() },
+                default: kw.values[kw.default].clone(),
+                name,
+            })
+        })
+        .collect();
+
+    let locations = reflect::vertex_locations(&specialised);
+    let vertex_inputs = m
+        .requires
+        .iter()
+        .filter(|a| locations.contains(&a.location()))
+        .map(|a| weft_meta::VertexInput { name: a.name().into(), location: a.location(), format: a.format().into() })
+        .collect();
+
+    let shader = VariantShader {
+        files: by_lang,
+        entry_points: reflect::entry_points(&specialised),
+        pipeline_constants,
+        bindings: reflect::bindings(&specialised, &info, &prelude.texture_bindings),
+        material_uniform: reflect::material_uniform(&specialised),
+        vertex_inputs,
+    };
+    Ok(CompiledVariant { id, files, shader, wgsl })
+}
+
+/// Maps each variant to the first earlier variant with identical WGSL.
+pub fn find_aliases(variants: &[CompiledVariant]) -> Vec<Option<usize>> {
+    let mut first: HashMap<&str, usize> = HashMap::new();
+    variants
+        .iter()
+        .enumerate()
+        .map(|(i, v)| match first.get(v.wgsl.as_str()) {
+            Some(&j) => Some(j),
+            None => {
+                first.insert(&v.wgsl, i);
+                None
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,46 @@
+// weft engine interface, version 1.
+//
+// Composed ahead of every material by the toolchain (never edited per material).
+// Group 0 is per frame, group 1 per material (generated from the material's
+// parameter list), group 2 per object. Engines bind these; the inspector
+// metadata lists exactly the bindings each variant still uses.
+
+const WEFT_PI: f32 = 3.14159265358979;
+const WEFT_INV_PI: f32 = 0.318309886183791;
+
+struct WeftFrame {
+    // World -> clip.
+    view_proj: mat4x4<f32>,
+    // World -> view (rotation + translation), for view-space effects (sphere maps).
+    view: mat4x4<f32>,
+    // xyz: camera position in world space; w: unused.
+    camera_position: vec4<f32>,
+    // xyz: unit direction from the surface towards the main light; w: unused.
+    light_direction: vec4<f32>,
+    // rgb: main light radiance (linear); a: unused.
+    light_color: vec4<f32>,
+    // L2 spherical-harmonic irradiance coefficients (rgb in xyz), already
+    // convolved with the clamped cosine and divided by pi: E(n)/pi = sum c_i Y_i(n).
+    sh: array<vec4<f32>, 9>,
+    // x: number of mip levels of the prefiltered environment cube;
+    // y: exposure; z: time in seconds; w: unused.
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    // Object -> world.
+    model: mat4x4<f32>,
+    // Inverse-transpose of the upper 3x3 of `model`, in a mat4 for alignment.
+    normal_matrix: mat4x4<f32>,
+}
+
+@group(0) @binding(0) var<uniform> weft_frame: WeftFrame;
+// Prefiltered (GGX) radiance cube: mip m holds roughness m / (mip_count - 1).
+@group(0) @binding(1) var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) var weft_environment_sampler: sampler;
+// Split-sum environment BRDF LUT baked by the toolchain (generated/luts/):
+// u = N.V, v = perceptual roughness; rg = (scale, bias) applied to F0.
+@group(0) @binding(3) var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) var weft_lut_sampler: sampler;
+
+@group(2) @binding(0) var<uniform> weft_object: WeftObject;

@@ -1,0 +1,75 @@
+//! weft front end: reads a material's TOML and WGSL sources into a checked
+//! [`Material`], reporting every problem it finds as a codespan diagnostic.
+//!
+//! Pipeline: [`parse`] (TOML -> model, local checks) -> [`includes`] (WGSL
+//! sources, in dependency order) -> [`check`] (cross-references, budget).
+
+pub mod check;
+pub mod condition;
+pub mod diag;
+pub mod includes;
+pub mod model;
+pub mod parse;
+pub mod samples;
+pub mod toml_reader;
+pub mod variants;
+
+pub use diag::{Diagnostics, FileId, SourceDb, Span};
+pub use model::Material;
+
+use includes::{Origin, Resolver};
+use std::path::{Path, PathBuf};
+use toml_reader::Cx;
+
+/// The materials root for a TOML file: the nearest ancestor directory that has
+/// a `lib/` folder, else the file's own directory.
+pub fn find_root(toml_path: &Path) -> PathBuf {
+    let abs = toml_path.canonicalize().unwrap_or_else(|_| toml_path.to_path_buf());
+    let mut dir = abs.parent();
+    while let Some(d) = dir {
+        if d.join("lib").is_dir() {
+            return d.to_path_buf();
+        }
+        dir = d.parent();
+    }
+    abs.parent().map(Path::to_path_buf).unwrap_or_default()
+}
+
+/// Loads and checks one material. On error, `None` and the reasons in `diags`.
+pub fn load_material(path: &Path, root: &Path, db: &mut SourceDb, diags: &mut Diagnostics) -> Option<Material> {
+    let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    let text = match std::fs::read_to_string(&abs) {
+        Ok(t) => t,
+        Err(e) => {
+            diags.push(
+                codespan_reporting::diagnostic::Diagnostic::error()
+                    .with_code("io")
+                    .with_message(format!("cannot read `{}`: {e}", path.display())),
+            );
+            return None;
+        }
+    };
+    let file = db.add(&abs, includes::display_path(&abs), text.clone());
+    let before = diags.error_count();
+    let mut material = {
+        let mut cx = Cx { file, diags };
+        parse::parse_material(&text, &abs, root, &mut cx)?
+    };
+
+    // WGSL sources: the material's own file last, its includes first.
+    let (source, extra) = parse::source_entries(&text);
+    let (source_rel, source_span) = source.unwrap_or_else(|| {
+        let stem = abs.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        (format!("{stem}.wgsl"), material.decl.span.clone())
+    });
+    let mut resolver = Resolver::new(db, diags, root);
+    for (inc, span) in extra {
+        resolver.include(&inc, Origin { file, span });
+    }
+    let dir = abs.parent().unwrap_or(Path::new("."));
+    resolver.source(&dir.join(&source_rel), Origin { file, span: source_span });
+    material.sources = resolver.finish();
+
+    check::check(&mut material, diags);
+    (diags.error_count() == before).then_some(material)
+}

@@ -1,0 +1,925 @@
+//! Material TOML -> [`Material`], checking each table's keys, types and local
+//! rules (default inside range, min <= max, known enum values) as it goes.
+//! Cross-references (show-if targets, groups, presets, budget) are checked
+//! afterwards in `check.rs`.
+
+use crate::condition::parse_condition_text;
+use crate::diag::Span;
+use crate::model::*;
+use crate::toml_reader::{Cx, Table, Value, expect_array, expect_number, expect_string, type_error};
+use std::path::Path;
+use toml::de::{DeTable, DeValue};
+use weft_meta::{
+    BlendMode, CullMode, DepthTest, GradientStop, Keyframe, KeywordKind, KeywordMode, ParamKind,
+    TextureDefault,
+};
+
+pub const TOP_KEYS: &[&str] = &[
+    "material", "groups", "params", "keywords", "tier", "variants", "presets", "pass",
+];
+pub const MATERIAL_KEYS: &[&str] = &[
+    "name",
+    "label",
+    "label_zh",
+    "description",
+    "description_zh",
+    "source",
+    "includes",
+    "requires",
+];
+pub const GROUP_KEYS: &[&str] = &["label", "label_zh"];
+pub const PARAM_KEYS: &[&str] = &[
+    "type",
+    "default",
+    "range",
+    "soft_range",
+    "step",
+    "power",
+    "label",
+    "label_zh",
+    "tooltip",
+    "tooltip_zh",
+    "group",
+    "order",
+    "show_if",
+    "hdr",
+    "srgb",
+    "tiling",
+    "samples",
+    "width",
+];
+pub const KEYWORD_KEYS: &[&str] = &[
+    "type",
+    "values",
+    "default",
+    "mode",
+    "label",
+    "label_zh",
+    "tooltip",
+    "tooltip_zh",
+    "group",
+    "show_if",
+];
+pub const TIER_KEYS: &[&str] = &["name", "description", "description_zh", "default"];
+pub const VARIANTS_KEYS: &[&str] = &["max_variants", "exclude"];
+pub const PRESET_KEYS: &[&str] = &["label", "label_zh", "values"];
+pub const PASS_KEYS: &[&str] = &[
+    "name",
+    "vertex",
+    "fragment",
+    "blend",
+    "cull",
+    "depth_write",
+    "depth_test",
+    "queue",
+    "instances",
+];
+pub const KEYFRAME_KEYS: &[&str] = &["time", "value", "in_slope", "out_slope"];
+pub const STOP_KEYS: &[&str] = &["position", "color"];
+
+/// Default budget when a material sets no `max_variants`.
+pub const DEFAULT_MAX_VARIANTS: usize = 64;
+
+/// Parses a material file. `None` when the TOML itself does not parse or a
+/// required part is missing; every problem found is in `cx.diags`.
+pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Option<Material> {
+    let doc = match DeTable::parse(text) {
+        Ok(doc) => doc,
+        Err(e) => {
+            let span = e.span().unwrap_or(0..0);
+            cx.error_with_note(
+                "toml-syntax",
+                format!("invalid TOML: {}", e.message().trim()),
+                span,
+                "here",
+                "see docs/material-format.md for the file format",
+            );
+            return None;
+        }
+    };
+    let top = Table {
+        map: doc.get_ref(),
+        span: 0..0,
+        what: "the material file".into(),
+    };
+    top.check_keys(TOP_KEYS, cx);
+
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let Some(mat_v) = top.get("material") else {
+        cx.error_with_note(
+            "missing-key",
+            "missing [material] table",
+            0..0,
+            "the file starts here",
+            "add a [material] table with at least `source = \"<file>.wgsl\"`",
+        );
+        return None;
+    };
+    let mat = Table::new(mat_v, "[material]", cx)?;
+    mat.check_keys(MATERIAL_KEYS, cx);
+    let name = mat.string("name", cx).unwrap_or(stem);
+    if !is_snake_ident(&name) {
+        cx.error_with_note(
+            "bad-name",
+            format!("material name `{name}` is not a lower-case identifier"),
+            mat.span_of("name"),
+            "used as a folder name and in WGSL",
+            "use lower_snake_case letters, digits and underscores",
+        );
+    }
+    let label = mat.string("label", cx).unwrap_or_else(|| name.clone());
+    let decl = Loc {
+        file: cx.file,
+        span: mat.key_span("name").unwrap_or_else(|| mat.span.clone()),
+    };
+
+    let requires = parse_requires(&mat, cx);
+
+    let mut material = Material {
+        label,
+        label_zh: mat.string("label_zh", cx),
+        description: mat.string("description", cx),
+        description_zh: mat.string("description_zh", cx),
+        file: cx.file,
+        path: path.to_path_buf(),
+        root: root.to_path_buf(),
+        sources: Vec::new(),
+        requires,
+        groups: Vec::new(),
+        params: Vec::new(),
+        keywords: Vec::new(),
+        tiers: Tiers {
+            values: Vec::new(),
+            default: 0,
+            reference: 0,
+            descriptions: Vec::new(),
+        },
+        max_variants: DEFAULT_MAX_VARIANTS,
+        max_variants_span: None,
+        exclude: Vec::new(),
+        presets: Vec::new(),
+        passes: Vec::new(),
+        decl,
+        name,
+    };
+
+    if let Some(g) = top.get("groups").and_then(|v| Table::new(v, "[groups]", cx)) {
+        for (gname, gspan, gv) in g.entries() {
+            let Some(t) = Table::new(gv, format!("group `{gname}`"), cx) else {
+                continue;
+            };
+            t.check_keys(GROUP_KEYS, cx);
+            let _ = gspan;
+            material.groups.push(Group {
+                name: gname.to_string(),
+                label: t.string("label", cx).unwrap_or_else(|| gname.to_string()),
+                label_zh: t.string("label_zh", cx),
+            });
+        }
+    }
+
+    if let Some(p) = top.get("params").and_then(|v| Table::new(v, "[params]", cx)) {
+        for (pname, pspan, pv) in p.entries() {
+            if let Some(param) = parse_param(pname, pspan, pv, cx) {
+                material.params.push(param);
+            }
+        }
+    }
+
+    if let Some(k) = top.get("keywords").and_then(|v| Table::new(v, "[keywords]", cx)) {
+        for (kname, kspan, kv) in k.entries() {
+            if let Some(kw) = parse_keyword(kname, kspan, kv, cx) {
+                material.keywords.push(kw);
+            }
+        }
+    }
+
+    parse_tiers(&top, &mut material, cx);
+
+    if let Some(v) = top.get("variants").and_then(|v| Table::new(v, "[variants]", cx)) {
+        v.check_keys(VARIANTS_KEYS, cx);
+        if let Some(n) = v.integer("max_variants", cx) {
+            if n < 1 {
+                cx.error(
+                    "out-of-range",
+                    "`max_variants` must be at least 1",
+                    v.span_of("max_variants"),
+                    "here",
+                );
+            } else {
+                material.max_variants = n as usize;
+                material.max_variants_span = Some(v.span_of("max_variants"));
+            }
+        }
+        if let Some(list) = v.strings("exclude", cx) {
+            for (text, span) in list {
+                match parse_condition_text(&text) {
+                    Ok(conds) => material.exclude.push(conds),
+                    Err(msg) => bad_condition(cx, &msg, span),
+                }
+            }
+        }
+    }
+
+    if let Some(p) = top.get("presets").and_then(|v| Table::new(v, "[presets]", cx)) {
+        for (name, span, pv) in p.entries() {
+            if let Some(preset) = parse_preset(name, span, pv, cx) {
+                material.presets.push(preset);
+            }
+        }
+    }
+
+    match top.get("pass") {
+        Some(v) => {
+            if let Some(items) = expect_array(v, "`pass`", cx) {
+                for item in items {
+                    if let Some(pass) = parse_pass(item, cx) {
+                        material.passes.push(pass);
+                    }
+                }
+            }
+        }
+        None => material.passes.push(default_pass(cx.file, material.decl.span.clone())),
+    }
+
+    // The WGSL source is resolved by `includes.rs`; remember where it was named.
+    Some(material)
+}
+
+/// The `source` and `includes` entries of [material], with spans, for `includes.rs`.
+pub fn source_entries(text: &str) -> (Option<(String, Span)>, Vec<(String, Span)>) {
+    let Ok(doc) = DeTable::parse(text) else {
+        return (None, Vec::new());
+    };
+    let Some(DeValue::Table(mat)) = doc.get_ref().get("material").map(|v| v.get_ref()) else {
+        return (None, Vec::new());
+    };
+    let source = mat.get("source").and_then(|v| match v.get_ref() {
+        DeValue::String(s) => Some((s.to_string(), v.span())),
+        _ => None,
+    });
+    let includes = match mat.get("includes").map(|v| v.get_ref()) {
+        Some(DeValue::Array(items)) => items
+            .iter()
+            .filter_map(|v| match v.get_ref() {
+                DeValue::String(s) => Some((s.to_string(), v.span())),
+                _ => None,
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    (source, includes)
+}
+
+pub fn is_snake_ident(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some('a'..='z'))
+        && chars.all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+}
+
+pub fn is_upper_ident(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some('A'..='Z'))
+        && chars.all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+}
+
+fn bad_condition(cx: &mut Cx, msg: &str, span: Span) {
+    cx.error_with_note(
+        "bad-condition",
+        format!("cannot read condition: {msg}"),
+        span,
+        "here",
+        "write `KEYWORD`, `!KEYWORD`, `KEYWORD == value`, `tier == fast` or a bool parameter, joined with &&",
+    );
+}
+
+fn parse_requires(mat: &Table, cx: &mut Cx) -> Vec<VertexAttribute> {
+    let Some(list) = mat.strings("requires", cx) else {
+        return vec![
+            VertexAttribute::Position,
+            VertexAttribute::Normal,
+            VertexAttribute::Uv0,
+        ];
+    };
+    let mut out = Vec::new();
+    for (name, span) in list {
+        match VertexAttribute::ALL.iter().find(|a| a.name() == name) {
+            Some(a) if !out.contains(a) => out.push(*a),
+            Some(_) => cx.error("duplicate", format!("`{name}` is listed twice"), span, "again here"),
+            None => {
+                let names: Vec<&str> = VertexAttribute::ALL.iter().map(|a| a.name()).collect();
+                let hint = crate::diag::did_you_mean(&name, names.iter().copied())
+                    .map_or_else(|| format!("expected one of: {}", names.join(", ")), |s| format!("did you mean `{s}`?"));
+                cx.error_with_note("unknown-value", format!("unknown vertex input `{name}`"), span, "not a vertex input", hint);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+fn parse_kind(t: &Table, cx: &mut Cx) -> Option<ParamKind> {
+    let Some(v) = t.get("type") else {
+        cx.error_with_note(
+            "missing-key",
+            format!("{} has no `type`", t.what),
+            t.span.clone(),
+            "declared here",
+            format!(
+                "add `type = \"...\"`, one of: {}",
+                ParamKind::ALL.map(|k| k.name()).join(", ")
+            ),
+        );
+        return None;
+    };
+    let name = expect_string(v, &format!("`type` of {}", t.what), cx)?;
+    match ParamKind::ALL.iter().find(|k| k.name() == name) {
+        Some(k) => Some(*k),
+        None => {
+            let names = ParamKind::ALL.map(|k| k.name());
+            let hint = crate::diag::did_you_mean(&name, names.iter().copied())
+                .map_or_else(|| format!("expected one of: {}", names.join(", ")), |s| format!("did you mean `{s}`?"));
+            cx.error_with_note("unknown-value", format!("unknown parameter type `{name}`"), v.span(), "unknown type", hint);
+            None
+        }
+    }
+}
+
+fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Param> {
+    let t = Table::new(v, format!("parameter `{name}`"), cx)?;
+    t.check_keys(PARAM_KEYS, cx);
+    if !is_snake_ident(name) {
+        cx.error_with_note(
+            "bad-name",
+            format!("parameter name `{name}` is not a lower-case identifier"),
+            name_span.clone(),
+            "becomes a WGSL struct member",
+            "use lower_snake_case",
+        );
+    }
+    let kind = parse_kind(&t, cx)?;
+
+    // Keys that only make sense for some kinds.
+    let only_for: &[(&str, &[ParamKind])] = &[
+        ("hdr", &[ParamKind::Color]),
+        ("srgb", &[ParamKind::Texture2d, ParamKind::Cube]),
+        ("tiling", &[ParamKind::Texture2d]),
+        ("samples", &[ParamKind::Curve]),
+        ("width", &[ParamKind::Gradient]),
+        ("power", &[ParamKind::Float]),
+    ];
+    for (key, kinds) in only_for {
+        if t.get(key).is_some() && !kinds.contains(&kind) {
+            cx.error_with_note(
+                "unknown-key",
+                format!("`{key}` does not apply to a {} parameter", kind.name()),
+                t.key_span(key).unwrap_or(t.span.clone()),
+                "not used for this type",
+                format!(
+                    "`{key}` is for: {}",
+                    kinds.iter().map(|k| k.name()).collect::<Vec<_>>().join(", ")
+                ),
+            );
+        }
+    }
+
+    let hdr = t.boolean("hdr", cx).unwrap_or(false);
+    let numeric = kind.components().is_some() && kind != ParamKind::Bool;
+    let mut range = t.range("range", cx);
+    if range.is_some() && !numeric && kind != ParamKind::Curve {
+        cx.error(
+            "unknown-key",
+            format!("`range` does not apply to a {} parameter", kind.name()),
+            t.key_span("range").unwrap_or(t.span.clone()),
+            "not used for this type",
+        );
+        range = None;
+    }
+    if kind == ParamKind::Color && range.is_none() && !hdr {
+        range = Some([0.0, 1.0]);
+    }
+    let soft_range = t.range("soft_range", cx);
+    if let (Some(soft), Some(hard)) = (soft_range, range) {
+        if soft[0] < hard[0] || soft[1] > hard[1] {
+            cx.error(
+                "out-of-range",
+                format!("`soft_range` of parameter `{name}` is outside its `range` [{}, {}]", hard[0], hard[1]),
+                t.span_of("soft_range"),
+                "must lie inside range",
+            );
+        }
+    }
+    let step = t.number("step", cx);
+    if let Some(s) = step {
+        if s <= 0.0 {
+            cx.error("out-of-range", "`step` must be positive", t.span_of("step"), "here");
+        }
+    }
+    let power = t.number("power", cx);
+    if let Some(p) = power {
+        if p <= 0.0 {
+            cx.error("out-of-range", "`power` must be positive", t.span_of("power"), "here");
+        }
+    }
+    let samples = match kind {
+        ParamKind::Curve => t.integer("samples", cx).unwrap_or(16),
+        ParamKind::Gradient => t.integer("width", cx).unwrap_or(256),
+        _ => 0,
+    };
+    if matches!(kind, ParamKind::Curve | ParamKind::Gradient) && !(2..=4096).contains(&samples) {
+        let key = if kind == ParamKind::Curve { "samples" } else { "width" };
+        cx.error("out-of-range", format!("`{key}` must be between 2 and 4096"), t.span_of(key), "here");
+    }
+
+    let default = parse_default(&t, kind, hdr, range, cx)?;
+    let show_if = t.get("show_if").and_then(|v| {
+        let text = expect_string(v, "`show_if`", cx)?;
+        match parse_condition_text(&text) {
+            Ok(mut c) if c.len() == 1 => c.pop(),
+            Ok(_) => {
+                bad_condition(cx, "show_if takes one condition", v.span());
+                None
+            }
+            Err(msg) => {
+                bad_condition(cx, &msg, v.span());
+                None
+            }
+        }
+    });
+
+    Some(Param {
+        name: name.to_string(),
+        kind,
+        label: t.string("label", cx).unwrap_or_else(|| humanize(name)),
+        label_zh: t.string("label_zh", cx),
+        tooltip: t.string("tooltip", cx),
+        tooltip_zh: t.string("tooltip_zh", cx),
+        group: t.string("group", cx).unwrap_or_else(|| "main".into()),
+        order: t.integer("order", cx).unwrap_or(0),
+        default,
+        range,
+        soft_range,
+        step,
+        power,
+        show_if,
+        hdr,
+        srgb: t.boolean("srgb", cx).unwrap_or(false),
+        tiling: t.boolean("tiling", cx).unwrap_or(false),
+        samples: samples.clamp(2, 4096) as u32,
+        decl: Loc {
+            file: cx.file,
+            span: name_span,
+        },
+    })
+}
+
+/// "base_color" -> "Base color".
+pub fn humanize(name: &str) -> String {
+    let s = name.replace('_', " ");
+    let mut c = s.chars();
+    match c.next() {
+        Some(f) => f.to_uppercase().chain(c).collect(),
+        None => s,
+    }
+}
+
+fn out_of_range(cx: &mut Cx, what: &str, value: f64, range: [f64; 2], span: Span, range_span: Span) {
+    let d = cx.diags.error(
+        "default-out-of-range",
+        format!("default of {what} is outside its range"),
+        cx.file,
+        span,
+        format!("{value} is not in [{}, {}]", range[0], range[1]),
+    );
+    d.labels.push(
+        codespan_reporting::diagnostic::Label::secondary(cx.file, range_span).with_message("range declared here"),
+    );
+    d.notes.push("change the default or widen `range`".into());
+}
+
+fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>, cx: &mut Cx) -> Option<ParamValue> {
+    let what = t.what.clone();
+    let range_span = t.span_of("range");
+    let Some(v) = t.get("default") else {
+        // Sensible defaults so a material renders without any value set.
+        return Some(match kind {
+            ParamKind::Float => ParamValue::Float(range.map_or(0.0, |r| r[0].max(0.0).min(r[1]))),
+            ParamKind::Int => ParamValue::Int(range.map_or(0, |r| r[0].max(0.0).min(r[1]) as i64)),
+            ParamKind::Bool => ParamValue::Bool(false),
+            ParamKind::Vec2 => ParamValue::Vector(vec![0.0; 2]),
+            ParamKind::Vec3 => ParamValue::Vector(vec![0.0; 3]),
+            ParamKind::Vec4 => ParamValue::Vector(vec![0.0; 4]),
+            ParamKind::Color => ParamValue::Vector(vec![1.0; 4]),
+            ParamKind::Texture2d | ParamKind::Cube => ParamValue::Texture(TextureDefault::White),
+            ParamKind::Curve => ParamValue::Curve(vec![
+                Keyframe { time: 0.0, value: 0.0, in_slope: 0.0, out_slope: 0.0 },
+                Keyframe { time: 1.0, value: 0.0, in_slope: 0.0, out_slope: 0.0 },
+            ]),
+            ParamKind::Gradient => ParamValue::Gradient(vec![
+                GradientStop { position: 0.0, color: [0.0, 0.0, 0.0, 1.0] },
+                GradientStop { position: 1.0, color: [1.0, 1.0, 1.0, 1.0] },
+            ]),
+        });
+    };
+    let dwhat = format!("`default` of {what}");
+    let check = |cx: &mut Cx, x: f64, span: Span| {
+        if let Some(r) = range {
+            if x < r[0] || x > r[1] {
+                out_of_range(cx, &what, x, r, span, range_span.clone());
+            }
+        }
+    };
+    match kind {
+        ParamKind::Float => {
+            let x = expect_number(v, &dwhat, cx)?;
+            check(cx, x, v.span());
+            Some(ParamValue::Float(x))
+        }
+        ParamKind::Int => {
+            let x = crate::toml_reader::expect_integer(v, &dwhat, cx)?;
+            check(cx, x as f64, v.span());
+            Some(ParamValue::Int(x))
+        }
+        ParamKind::Bool => crate::toml_reader::expect_bool(v, &dwhat, cx).map(ParamValue::Bool),
+        ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 | ParamKind::Color => {
+            let items = expect_array(v, &dwhat, cx)?;
+            let n = kind.components().unwrap_or(4);
+            let ok_len = if kind == ParamKind::Color { items.len() == 3 || items.len() == 4 } else { items.len() == n };
+            if !ok_len {
+                cx.error(
+                    "wrong-type",
+                    format!("{dwhat} must have {} components", if kind == ParamKind::Color { "3 or 4".to_string() } else { n.to_string() }),
+                    v.span(),
+                    format!("{} components here", items.len()),
+                );
+                return None;
+            }
+            let mut out = Vec::new();
+            for item in items {
+                let x = expect_number(item, &dwhat, cx)?;
+                check(cx, x, item.span());
+                out.push(x);
+            }
+            if kind == ParamKind::Color && out.len() == 3 {
+                out.push(1.0);
+            }
+            let _ = hdr;
+            Some(ParamValue::Vector(out))
+        }
+        ParamKind::Texture2d | ParamKind::Cube => {
+            let name = expect_string(v, &dwhat, cx)?;
+            match TextureDefault::ALL.iter().find(|d| d.name() == name) {
+                Some(d) => Some(ParamValue::Texture(*d)),
+                None => {
+                    cx.error_with_note(
+                        "unknown-value",
+                        format!("unknown texture default `{name}`"),
+                        v.span(),
+                        "not a built-in texture",
+                        "use one of: white, black, gray, normal",
+                    );
+                    None
+                }
+            }
+        }
+        ParamKind::Curve => {
+            let items = expect_array(v, &dwhat, cx)?;
+            let mut keys = Vec::new();
+            for item in items {
+                let k = Table::new(item, "a curve keyframe", cx)?;
+                k.check_keys(KEYFRAME_KEYS, cx);
+                let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx)) else {
+                    cx.error("missing-key", "a keyframe needs `time` and `value`", item.span(), "here");
+                    return None;
+                };
+                if let Some(r) = range {
+                    if value < r[0] || value > r[1] {
+                        out_of_range(cx, &what, value, r, k.span_of("value"), range_span.clone());
+                    }
+                }
+                if let Some(prev) = keys.last().map(|k: &Keyframe| k.time) {
+                    if time <= prev {
+                        cx.error("unordered-keys", "curve keyframes must have increasing `time`", k.span_of("time"), format!("{time} is not after {prev}"));
+                    }
+                }
+                keys.push(Keyframe {
+                    time,
+                    value,
+                    in_slope: k.number("in_slope", cx).unwrap_or(0.0),
+                    out_slope: k.number("out_slope", cx).unwrap_or(0.0),
+                });
+            }
+            if keys.is_empty() {
+                cx.error("wrong-type", "a curve needs at least one keyframe", v.span(), "empty");
+                return None;
+            }
+            Some(ParamValue::Curve(keys))
+        }
+        ParamKind::Gradient => {
+            let items = expect_array(v, &dwhat, cx)?;
+            let mut stops = Vec::new();
+            for item in items {
+                let s = Table::new(item, "a gradient stop", cx)?;
+                s.check_keys(STOP_KEYS, cx);
+                let (Some(position), Some(color)) = (s.number("position", cx), s.numbers("color", cx)) else {
+                    cx.error("missing-key", "a gradient stop needs `position` and `color`", item.span(), "here");
+                    return None;
+                };
+                if !(0.0..=1.0).contains(&position) {
+                    cx.error("out-of-range", "gradient stop `position` must be in [0, 1]", s.span_of("position"), "here");
+                }
+                if color.len() != 3 && color.len() != 4 || color.iter().any(|c| !(0.0..=1.0).contains(c)) {
+                    cx.error("wrong-type", "gradient stop `color` must be 3 or 4 numbers in [0, 1]", s.span_of("color"), "here");
+                    return None;
+                }
+                if let Some(prev) = stops.last().map(|s: &GradientStop| s.position) {
+                    if position < prev {
+                        cx.error("unordered-keys", "gradient stops must have non-decreasing `position`", s.span_of("position"), "out of order");
+                    }
+                }
+                stops.push(GradientStop {
+                    position,
+                    color: [color[0], color[1], color[2], color.get(3).copied().unwrap_or(1.0)],
+                });
+            }
+            if stops.is_empty() {
+                cx.error("wrong-type", "a gradient needs at least one stop", v.span(), "empty");
+                return None;
+            }
+            Some(ParamValue::Gradient(stops))
+        }
+    }
+}
+
+fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Keyword> {
+    let t = Table::new(v, format!("keyword `{name}`"), cx)?;
+    t.check_keys(KEYWORD_KEYS, cx);
+    if !is_upper_ident(name) || name == "WEFT_TIER" || name.starts_with("TIER_") {
+        cx.error_with_note(
+            "bad-name",
+            format!("keyword name `{name}` is not an UPPER_SNAKE identifier (or is reserved)"),
+            name_span.clone(),
+            "becomes a WGSL override",
+            "use UPPER_SNAKE_CASE; WEFT_TIER and TIER_* are reserved for tiers",
+        );
+    }
+    let kind_name = t.string("type", cx).unwrap_or_else(|| "toggle".into());
+    let kind = match kind_name.as_str() {
+        "toggle" => KeywordKind::Toggle,
+        "enum" => KeywordKind::Enum,
+        other => {
+            let hint = crate::diag::did_you_mean(other, ["toggle", "enum"]).map_or("use `toggle` or `enum`".to_string(), |s| format!("did you mean `{s}`?"));
+            cx.error_with_note("unknown-value", format!("unknown keyword type `{other}`"), t.span_of("type"), "unknown", hint);
+            return None;
+        }
+    };
+    let mode = match t.string("mode", cx).as_deref() {
+        None | Some("static") => KeywordMode::Static,
+        Some("constant") => KeywordMode::Constant,
+        Some(other) => {
+            cx.error_with_note("unknown-value", format!("unknown keyword mode `{other}`"), t.span_of("mode"), "unknown", "use `static` (a variant per value) or `constant` (a pipeline constant)");
+            return None;
+        }
+    };
+    let values: Vec<String> = match kind {
+        KeywordKind::Toggle => {
+            if t.get("values").is_some() {
+                cx.error("unknown-key", "a toggle keyword has the fixed values off/on", t.key_span("values").unwrap_or(t.span.clone()), "remove `values`, or use type = \"enum\"");
+            }
+            vec!["off".into(), "on".into()]
+        }
+        KeywordKind::Enum => {
+            let Some(list) = t.strings("values", cx) else {
+                cx.error("missing-key", format!("enum keyword `{name}` needs `values`"), name_span.clone(), "declared here");
+                return None;
+            };
+            let mut out: Vec<String> = Vec::new();
+            for (value, span) in list {
+                if !is_snake_ident(&value) {
+                    cx.error("bad-name", format!("keyword value `{value}` is not a lower-case identifier"), span, "becomes a WGSL constant suffix");
+                } else if out.contains(&value) {
+                    cx.error("duplicate", format!("keyword value `{value}` is listed twice"), span, "again here");
+                } else {
+                    out.push(value);
+                }
+            }
+            if out.len() < 2 {
+                cx.error("wrong-type", format!("enum keyword `{name}` needs at least two values"), t.span_of("values"), "here");
+                return None;
+            }
+            out
+        }
+    };
+    let default = match t.get("default") {
+        None => 0,
+        Some(dv) => {
+            let value = match (kind, dv.get_ref()) {
+                (KeywordKind::Toggle, DeValue::Boolean(b)) => if *b { "on" } else { "off" }.to_string(),
+                (_, DeValue::String(s)) => s.to_string(),
+                (_, other) => {
+                    type_error(cx, &format!("`default` of keyword `{name}`"), "a value name (or true/false for a toggle)", other, dv.span());
+                    return None;
+                }
+            };
+            match values.iter().position(|v| *v == value) {
+                Some(i) => i,
+                None => {
+                    cx.error_with_note("unknown-value", format!("`{value}` is not a value of keyword `{name}`"), dv.span(), "unknown value", format!("values: {}", values.join(", ")));
+                    0
+                }
+            }
+        }
+    };
+    let show_if = t.get("show_if").and_then(|v| {
+        let text = expect_string(v, "`show_if`", cx)?;
+        match parse_condition_text(&text) {
+            Ok(mut c) if c.len() == 1 => c.pop(),
+            Ok(_) => {
+                bad_condition(cx, "show_if takes one condition", v.span());
+                None
+            }
+            Err(msg) => {
+                bad_condition(cx, &msg, v.span());
+                None
+            }
+        }
+    });
+    Some(Keyword {
+        name: name.to_string(),
+        kind,
+        mode,
+        values,
+        default,
+        label: t.string("label", cx).unwrap_or_else(|| humanize(&name.to_lowercase())),
+        label_zh: t.string("label_zh", cx),
+        tooltip: t.string("tooltip", cx),
+        tooltip_zh: t.string("tooltip_zh", cx),
+        group: t.string("group", cx).unwrap_or_else(|| "main".into()),
+        show_if,
+        decl: Loc { file: cx.file, span: name_span },
+    })
+}
+
+fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
+    let Some(v) = top.get("tier") else {
+        cx.error_with_note(
+            "missing-key",
+            "no quality tiers declared",
+            material.decl.span.clone(),
+            "material declared here",
+            "add [[tier]] tables named `fast` and `reference` (the reference is what other tiers are measured against)",
+        );
+        return;
+    };
+    let Some(items) = expect_array(v, "`tier`", cx) else { return };
+    let mut default = None;
+    for item in items {
+        let Some(t) = Table::new(item, "a [[tier]]", cx) else { continue };
+        t.check_keys(TIER_KEYS, cx);
+        let Some(name) = t.string("name", cx) else {
+            cx.error("missing-key", "a [[tier]] needs a `name`", item.span(), "here");
+            continue;
+        };
+        if !is_snake_ident(&name) {
+            cx.error("bad-name", format!("tier name `{name}` is not a lower-case identifier"), t.span_of("name"), "becomes TIER_<NAME> in WGSL");
+            continue;
+        }
+        if material.tiers.values.contains(&name) {
+            cx.error("duplicate", format!("tier `{name}` is declared twice"), t.span_of("name"), "again here");
+            continue;
+        }
+        if t.boolean("default", cx) == Some(true) {
+            if default.is_some() {
+                cx.error("duplicate", "more than one tier is marked `default = true`", t.span_of("default"), "second default");
+            }
+            default = Some(material.tiers.values.len());
+        }
+        material.tiers.descriptions.push((
+            name.clone(),
+            t.string("description", cx).unwrap_or_default(),
+            t.string("description_zh", cx),
+        ));
+        material.tiers.values.push(name);
+    }
+    for required in ["fast", "reference"] {
+        if !material.tiers.values.iter().any(|t| t == required) {
+            cx.error_with_note(
+                "missing-tier",
+                format!("the `{required}` tier is missing"),
+                v.span(),
+                "tiers declared here",
+                "every material has at least `fast` and `reference` tiers",
+            );
+        }
+    }
+    material.tiers.reference = material.tiers.values.iter().position(|t| t == "reference").unwrap_or(0);
+    material.tiers.default = default
+        .or_else(|| material.tiers.values.iter().position(|t| t == "fast"))
+        .unwrap_or(0);
+}
+
+fn parse_preset(name: &str, span: Span, v: &Value, cx: &mut Cx) -> Option<Preset> {
+    let t = Table::new(v, format!("preset `{name}`"), cx)?;
+    t.check_keys(PRESET_KEYS, cx);
+    let mut values = Vec::new();
+    if let Some(vals) = t.get("values").and_then(|v| Table::new(v, format!("values of preset `{name}`"), cx)) {
+        for (key, _kspan, val) in vals.entries() {
+            let pv = match val.get_ref() {
+                DeValue::String(s) if is_upper_ident(key) || key == "tier" => PresetValue::Keyword(s.to_string()),
+                DeValue::Boolean(b) if is_upper_ident(key) => PresetValue::Keyword(if *b { "on" } else { "off" }.into()),
+                DeValue::Boolean(b) => PresetValue::Param(ParamValue::Bool(*b)),
+                DeValue::Integer(_) | DeValue::Float(_) => {
+                    PresetValue::Param(ParamValue::Float(expect_number(val, "a preset value", cx)?))
+                }
+                DeValue::String(s) => PresetValue::Param(ParamValue::Texture(
+                    TextureDefault::ALL.iter().copied().find(|d| d.name() == s.as_ref()).unwrap_or(TextureDefault::White),
+                )),
+                DeValue::Array(_) => PresetValue::Param(ParamValue::Vector(crate::toml_reader::expect_numbers(val, "a preset value", cx)?)),
+                other => {
+                    type_error(cx, &format!("preset value `{key}`"), "a number, bool, string or array", other, val.span());
+                    continue;
+                }
+            };
+            values.push((key.to_string(), pv));
+        }
+    }
+    Some(Preset {
+        name: name.to_string(),
+        label: t.string("label", cx).unwrap_or_else(|| humanize(name)),
+        label_zh: t.string("label_zh", cx),
+        values,
+        decl: Loc { file: cx.file, span },
+    })
+}
+
+fn default_pass(file: usize, span: Span) -> Pass {
+    Pass {
+        name: "forward".into(),
+        vertex: "vs_main".into(),
+        fragment: "fs_main".into(),
+        blend: BlendMode::Opaque,
+        cull: CullMode::Back,
+        depth_write: true,
+        depth_test: DepthTest::LessEqual,
+        queue: 2000,
+        instances: Instances::Fixed(1),
+        decl: Loc { file, span },
+    }
+}
+
+fn pick<T: Copy>(t: &Table, key: &str, options: &[(&str, T)], cx: &mut Cx) -> Option<T> {
+    let s = t.string(key, cx)?;
+    match options.iter().find(|(n, _)| *n == s) {
+        Some((_, v)) => Some(*v),
+        None => {
+            let names: Vec<&str> = options.iter().map(|(n, _)| *n).collect();
+            let hint = crate::diag::did_you_mean(&s, names.iter().copied())
+                .map_or_else(|| format!("expected one of: {}", names.join(", ")), |x| format!("did you mean `{x}`?"));
+            cx.error_with_note("unknown-value", format!("unknown `{key}` value `{s}` in {}", t.what), t.span_of(key), "unknown", hint);
+            None
+        }
+    }
+}
+
+fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
+    let t = Table::new(v, "a [[pass]]", cx)?;
+    t.check_keys(PASS_KEYS, cx);
+    let mut pass = default_pass(cx.file, v.span());
+    pass.name = t.string("name", cx).unwrap_or(pass.name);
+    pass.vertex = t.string("vertex", cx).unwrap_or(pass.vertex);
+    pass.fragment = t.string("fragment", cx).unwrap_or(pass.fragment);
+    use BlendMode as B;
+    if let Some(b) = pick(&t, "blend", &[("opaque", B::Opaque), ("alpha", B::Alpha), ("premultiplied", B::Premultiplied), ("additive", B::Additive), ("multiply", B::Multiply)], cx) {
+        pass.blend = b;
+        if b != B::Opaque {
+            pass.depth_write = false;
+            pass.queue = 3000;
+        }
+    }
+    if let Some(c) = pick(&t, "cull", &[("none", CullMode::None), ("front", CullMode::Front), ("back", CullMode::Back)], cx) {
+        pass.cull = c;
+    }
+    use DepthTest as D;
+    if let Some(d) = pick(&t, "depth_test", &[("always", D::Always), ("never", D::Never), ("less", D::Less), ("less_equal", D::LessEqual), ("equal", D::Equal), ("greater", D::Greater), ("greater_equal", D::GreaterEqual)], cx) {
+        pass.depth_test = d;
+    }
+    pass.depth_write = t.boolean("depth_write", cx).unwrap_or(pass.depth_write);
+    pass.queue = t.integer("queue", cx).unwrap_or(pass.queue);
+    if let Some(iv) = t.get("instances") {
+        match iv.get_ref() {
+            DeValue::Integer(_) => {
+                let n = crate::toml_reader::expect_integer(iv, "`instances`", cx)?;
+                if !(1..=4096).contains(&n) {
+                    cx.error("out-of-range", "`instances` must be between 1 and 4096", iv.span(), "here");
+                }
+                pass.instances = Instances::Fixed(n.clamp(1, 4096) as u32);
+            }
+            DeValue::String(s) => pass.instances = Instances::Param(s.to_string()),
+            other => type_error(cx, "`instances`", "a count or an int parameter's name", other, iv.span()),
+        }
+    }
+    Some(pass)
+}

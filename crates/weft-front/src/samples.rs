@@ -1,0 +1,123 @@
+//! Values the toolchain bakes from parameter defaults: curve samples, gradient
+//! ramps and sRGB -> linear colour conversion. Engines that let users edit
+//! curves and gradients must bake them the same way (docs/material-format.md).
+
+use weft_meta::{GradientStop, Keyframe};
+
+/// sRGB transfer function, encoded -> linear.
+pub fn srgb_to_linear(c: f64) -> f64 {
+    if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+}
+
+/// sRGB transfer function, linear -> encoded.
+pub fn linear_to_srgb(c: f64) -> f64 {
+    if c <= 0.0031308 { c * 12.92 } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 }
+}
+
+/// Evaluates a keyframed curve (cubic Hermite, as Unity's AnimationCurve), clamped at the ends.
+pub fn eval_curve(keys: &[Keyframe], t: f64) -> f64 {
+    let (first, last) = (keys[0], keys[keys.len() - 1]);
+    if t <= first.time {
+        return first.value;
+    }
+    if t >= last.time {
+        return last.value;
+    }
+    let i = keys.windows(2).position(|w| t >= w[0].time && t <= w[1].time).unwrap_or(0);
+    let (k0, k1) = (keys[i], keys[i + 1]);
+    let dt = k1.time - k0.time;
+    let s = (t - k0.time) / dt;
+    let (s2, s3) = (s * s, s * s * s);
+    let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
+    let h10 = s3 - 2.0 * s2 + s;
+    let h01 = -2.0 * s3 + 3.0 * s2;
+    let h11 = s3 - s2;
+    h00 * k0.value + h10 * dt * k0.out_slope + h01 * k1.value + h11 * dt * k1.in_slope
+}
+
+/// The time span the baked samples cover.
+pub fn curve_time_range(keys: &[Keyframe]) -> [f64; 2] {
+    [keys[0].time, keys[keys.len() - 1].time]
+}
+
+/// `n` samples at evenly spaced times over the keyframes' span.
+pub fn sample_curve(keys: &[Keyframe], n: u32) -> Vec<f64> {
+    let [t0, t1] = curve_time_range(keys);
+    (0..n)
+        .map(|i| {
+            let t = if n > 1 { t0 + (t1 - t0) * i as f64 / (n - 1) as f64 } else { t0 };
+            eval_curve(keys, t)
+        })
+        .collect()
+}
+
+/// Bakes gradient stops into `width` sRGB8 RGBA texels: interpolated in linear
+/// light between stops (texel centres), alpha linearly.
+pub fn bake_gradient(stops: &[GradientStop], width: u32) -> Vec<u8> {
+    let mut out = Vec::with_capacity(width as usize * 4);
+    for i in 0..width {
+        let x = (i as f64 + 0.5) / width as f64;
+        let c = gradient_at(stops, x);
+        for (ch, v) in c.iter().enumerate() {
+            let enc = if ch < 3 { linear_to_srgb(*v) } else { *v };
+            out.push((enc.clamp(0.0, 1.0) * 255.0).round() as u8);
+        }
+    }
+    out
+}
+
+/// Linear-light colour of a gradient at `x`.
+pub fn gradient_at(stops: &[GradientStop], x: f64) -> [f64; 4] {
+    let lin = |s: &GradientStop| {
+        [srgb_to_linear(s.color[0]), srgb_to_linear(s.color[1]), srgb_to_linear(s.color[2]), s.color[3]]
+    };
+    let (first, last) = (&stops[0], &stops[stops.len() - 1]);
+    if x <= first.position {
+        return lin(first);
+    }
+    if x >= last.position {
+        return lin(last);
+    }
+    let i = stops.windows(2).position(|w| x >= w[0].position && x <= w[1].position).unwrap_or(0);
+    let (a, b) = (lin(&stops[i]), lin(&stops[i + 1]));
+    let span = stops[i + 1].position - stops[i].position;
+    let t = if span > 0.0 { (x - stops[i].position) / span } else { 0.0 };
+    [0, 1, 2, 3].map(|c| a[c] + (b[c] - a[c]) * t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn curve_hits_keys_and_slopes() {
+        let keys = [
+            Keyframe { time: 0.0, value: 0.0, in_slope: 1.0, out_slope: 1.0 },
+            Keyframe { time: 1.0, value: 1.0, in_slope: 1.0, out_slope: 1.0 },
+        ];
+        // A Hermite with matching unit slopes is the straight line.
+        for s in sample_curve(&keys, 5).iter().enumerate() {
+            assert!((s.1 - s.0 as f64 / 4.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn srgb_round_trips() {
+        for i in 0..=10 {
+            let c = i as f64 / 10.0;
+            assert!((linear_to_srgb(srgb_to_linear(c)) - c).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn gradient_ends() {
+        let stops = [
+            GradientStop { position: 0.0, color: [0.0, 0.0, 0.0, 1.0] },
+            GradientStop { position: 1.0, color: [1.0, 1.0, 1.0, 1.0] },
+        ];
+        let ramp = bake_gradient(&stops, 4);
+        assert_eq!(ramp.len(), 16);
+        assert!(ramp[0] < ramp[12]);
+        assert_eq!(ramp[3], 255);
+    }
+}

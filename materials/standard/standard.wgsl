@@ -1,0 +1,111 @@
+// @include "lib/forward.wgsl"
+//
+// standard: metallic/roughness PBR (seed 004 sec. 2) with an optional
+// view-space sphere map (seed 004 sec. 6). Returns linear HDR radiance.
+//
+// Tiers (WEFT_TIER):
+//   fast      = the seed's form: GGX D, Schlick F, Schlick-GGX G with
+//               k = (alpha + 1)^2 / 8, analytic split-sum fit (Unity's) for the
+//               environment BRDF, roughness-aware Schlick for ambient kd.
+//   reference = GGX D, Schlick F, height-correlated Smith visibility, the
+//               toolchain-baked split-sum LUT, ambient kd = 1 - E_spec.
+// Both: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube.
+// The material uniform, textures and keyword overrides come from the
+// generated prelude (standard.toml).
+
+@fragment
+fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+    // ------------------------------------------------------------ surface
+    // One UV transform for all main maps (Unity's _MainTex_ST convention).
+    let uv = weft_transform_uv(in.uv0, material.base_map_st);
+    let base_rgba = material.base_color * textureSample(base_map, material_sampler, uv);
+    // Colours and factors are clamped to their physical ranges so that
+    // out-of-range uniforms or texels cannot make radiance negative (an
+    // albedo > 1 would give F0 > 1 and a negative 1 - F).
+    let base = saturate(base_rgba.rgb);
+    let alpha = saturate(base_rgba.a);
+    let rmo = textureSample(rmo_map, material_sampler, uv).rgb;
+    let roughness = saturate(material.roughness * rmo.r);
+    let metallic = saturate(material.metallic * rmo.g);
+    let ao = saturate(mix(1.0, rmo.b, material.occlusion_strength));
+    let specular_strength = max(material.specular_strength, 0.0);
+
+    // ------------------------------------------------------------ geometry
+    // v falls back to +z if the camera sits on the point; a degenerate
+    // interpolated normal falls back to v (the surface then faces the viewer).
+    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    var n = weft_safe_normalize(in.world_normal, v);
+    if NORMAL_MAP {
+        let frame = weft_tangent_frame(n, in.world_tangent);
+        let texel = textureSample(normal_map, material_sampler, uv).rgb;
+        n = weft_normal_from_tangent_space(frame, weft_unpack_normal(texel, material.normal_strength));
+    }
+    let l = weft_main_light_direction();
+    // l = -v gives a zero half vector: fall back to n (n.l <= 0 there or at
+    // grazing, so the direct term is multiplied by 0 anyway).
+    let h = weft_safe_normalize(l + v, n);
+    // Views below the shading normal (normal maps, interpolation) are treated
+    // as grazing: n.v floored at 1e-4 rather than dropped.
+    let n_dot_v = weft_clamp_cos(dot(n, v));
+    // Light below the horizon contributes nothing: n.l = 0 multiplies it out.
+    let n_dot_l = saturate(dot(n, l));
+    let n_dot_h = saturate(dot(n, h));
+    let v_dot_h = saturate(dot(v, h));
+
+    let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
+    let diffuse_albedo = base * (1.0 - metallic);
+
+    // ------------------------------------------------------------ tier terms
+    var visibility: f32;
+    var env_brdf: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    if WEFT_TIER == TIER_REFERENCE {
+        visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+        // Diffuse ambient gets the energy the specular lobe did not reflect
+        // (Filament: Fd * (1 - E)); E <= 1, the max() is for interpolation.
+        ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
+    } else {
+        visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+        env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
+        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
+    }
+
+    // ------------------------------------------------------------ direct
+    // Cook-Torrance D * V * F with V = G / (4 n.v n.l) (finite for all
+    // cosines, see brdf.wgsl); kd = (1 - F)(1 - metallic), Lambert 1/pi.
+    let f = weft_f_schlick(f0, v_dot_h);
+    let specular = weft_d_ggx(n_dot_h, roughness) * visibility * f * specular_strength;
+    let diffuse = (vec3<f32>(1.0) - f) * weft_diffuse_lambert(diffuse_albedo);
+    let direct = (diffuse + specular) * weft_main_light_radiance() * n_dot_l;
+
+    // ------------------------------------------------------------ indirect
+    // Split sum: prefiltered radiance along reflect(-v, n) times the
+    // environment BRDF; AO applied as in the seed. SH already returns E / pi.
+    let prefiltered = weft_prefiltered_radiance(reflect(-v, n), roughness);
+    let indirect_specular = prefiltered * env_brdf * (ao * specular_strength);
+    let indirect_diffuse = weft_sh_irradiance(n) * ao * ambient_kd * diffuse_albedo;
+
+    var color = direct + indirect_specular + indirect_diffuse;
+
+    // ------------------------------------------------------------ sphere map
+    // Each branch samples sphere_map itself so the texture vanishes from the
+    // OFF variant once the toolchain drops dead branches.
+    if SPHERE_MAP == SPHERE_MAP_ADD {
+        let dir = weft_sphere_map_direction(n, in.world_position);
+        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
+        color += sph * material.sphere_strength;
+    }
+    if SPHERE_MAP == SPHERE_MAP_MULTIPLY {
+        let dir = weft_sphere_map_direction(n, in.world_position);
+        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
+        // mix() extrapolates for strength > 1 and could turn negative.
+        color *= max(mix(vec3<f32>(1.0), sph, material.sphere_strength), vec3<f32>(0.0));
+    }
+
+    // Never negative (e.g. a negative ADD strength); at most the fp16 maximum
+    // so an Rgba16Float target never stores Inf (a sharp lobe at grazing under
+    // a bright light can exceed it).
+    let radiance = clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    return vec4<f32>(radiance, alpha);
+}
