@@ -11,13 +11,27 @@ use weft_compiler::{BuildOptions, BuildOutput, build_library, output};
 use weft_meta::{MaterialMetadata, Stage};
 
 fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
 }
 
 fn build_dir(dir: &Path, jobs: Option<usize>) -> BuildOutput {
-    match build_library(dir, &BuildOptions { jobs, ..Default::default() }, &|_, _, _| {}) {
+    match build_library(
+        dir,
+        &BuildOptions {
+            jobs,
+            ..Default::default()
+        },
+        &|_, _, _| {},
+    ) {
         Ok(out) => out,
-        Err((db, diags)) => panic!("{} does not build:\n{}", dir.display(), diags.render_plain(&db)),
+        Err((db, diags)) => panic!(
+            "{} does not build:\n{}",
+            dir.display(),
+            diags.render_plain(&db)
+        ),
     }
 }
 
@@ -42,15 +56,28 @@ fn all_materials() -> impl Iterator<Item = &'static MaterialMetadata> {
 
 /// An external validator, or a failure saying what to install.
 fn tool(name: &str, package: &str) -> PathBuf {
-    let found = std::env::var_os("PATH")
-        .and_then(|paths| std::env::split_paths(&paths).map(|p| p.join(name)).find(|p| p.is_file()));
-    found.unwrap_or_else(|| panic!("`{name}` not found: install it with `apt-get install -y {package}` (see .ci/run)"))
+    let found = std::env::var_os("PATH").and_then(|paths| {
+        std::env::split_paths(&paths)
+            .map(|p| p.join(name))
+            .find(|p| p.is_file())
+    });
+    found.unwrap_or_else(|| {
+        panic!("`{name}` not found: install it with `apt-get install -y {package}` (see .ci/run)")
+    })
 }
 
 #[test]
 fn generated_tree_is_current() {
-    let s = output::check(&repo().join("generated"), &builds()[0].files, &["reports", "gallery", "gallery.md"]).unwrap();
-    assert!(s.is_clean(), "generated/ is stale, run `cargo xtask regenerate`: {s:?}");
+    let s = output::check(
+        &repo().join("generated"),
+        &builds()[0].files,
+        &["reports", "gallery", "gallery.md"],
+    )
+    .unwrap();
+    assert!(
+        s.is_clean(),
+        "generated/ is stale, run `cargo xtask regenerate`: {s:?}"
+    );
 }
 
 #[test]
@@ -61,11 +88,22 @@ fn every_spirv_passes_spirv_val() {
     for (name, bytes) in all_files().filter(|(n, _)| n.ends_with(".spv")) {
         let path = dir.path().join(name.replace('/', "__"));
         std::fs::write(&path, bytes).unwrap();
-        let out = Command::new(&spirv_val).args(["--target-env", "vulkan1.0"]).arg(&path).output().unwrap();
-        assert!(out.status.success(), "spirv-val rejects {name}:\n{}", String::from_utf8_lossy(&out.stderr));
+        let out = Command::new(&spirv_val)
+            .args(["--target-env", "vulkan1.0"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "spirv-val rejects {name}:\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         count += 1;
     }
-    assert!(count >= 12, "expected SPIR-V for every variant, found {count}");
+    assert!(
+        count >= 12,
+        "expected SPIR-V for every variant, found {count}"
+    );
 }
 
 #[test]
@@ -77,7 +115,10 @@ fn every_hlsl_compiles_with_glslang_for_each_stage() {
         for v in &m.variants {
             let Some(shader) = &v.shader else { continue };
             for file in &shader.files["hlsl"] {
-                let bytes = all_files().find(|(n, _)| **n == format!("{}/{}", m.name, file.path)).unwrap().1;
+                let bytes = all_files()
+                    .find(|(n, _)| **n == format!("{}/{}", m.name, file.path))
+                    .unwrap()
+                    .1;
                 let path = dir.path().join(&file.path);
                 std::fs::write(&path, bytes).unwrap();
                 for ep in &shader.entry_points {
@@ -106,15 +147,22 @@ fn every_hlsl_compiles_with_glslang_for_each_stage() {
             }
         }
     }
-    assert!(count >= 24, "expected every HLSL entry point checked, got {count}");
+    assert!(
+        count >= 24,
+        "expected every HLSL entry point checked, got {count}"
+    );
 }
 
 fn reparse(name: &str, bytes: &[u8]) -> (naga::Module, naga::valid::ModuleInfo) {
     let text = std::str::from_utf8(bytes).unwrap();
-    let module = naga::front::wgsl::parse_str(text).unwrap_or_else(|e| panic!("{name} does not re-parse:\n{}", e.emit_to_string(text)));
-    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{name} does not validate:\n{}", e.emit_to_string(text)));
+    let module = naga::front::wgsl::parse_str(text)
+        .unwrap_or_else(|e| panic!("{name} does not re-parse:\n{}", e.emit_to_string(text)));
+    let info = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("{name} does not validate:\n{}", e.emit_to_string(text)));
     (module, info)
 }
 
@@ -138,15 +186,26 @@ fn metadata_matches_the_emitted_modules() {
             let wgsl = &shader.files["wgsl"][0];
             let name = format!("{}/{}", m.name, wgsl.path);
             let bytes = all_files().find(|(n, _)| **n == name).unwrap().1;
-            assert_eq!(weft_compiler::variant::sha256_hex(bytes), wgsl.sha256, "{name}: hash");
+            assert_eq!(
+                weft_compiler::variant::sha256_hex(bytes),
+                wgsl.sha256,
+                "{name}: hash"
+            );
             let (module, _) = reparse(&name, bytes);
 
             let mut layouter = naga::proc::Layouter::default();
             layouter.update(module.to_ctx()).unwrap();
-            let ubo = module.global_variables.iter().find(|(_, g)| g.binding.as_ref().is_some_and(|b| b.group == 1 && b.binding == 0));
+            let ubo = module.global_variables.iter().find(|(_, g)| {
+                g.binding
+                    .as_ref()
+                    .is_some_and(|b| b.group == 1 && b.binding == 0)
+            });
             match (&shader.material_uniform, ubo) {
                 (Some(meta), Some((_, g))) => {
-                    let naga::TypeInner::Struct { members, span } = &module.types[g.ty].inner else { panic!("{name}: uniform is not a struct") };
+                    let naga::TypeInner::Struct { members, span } = &module.types[g.ty].inner
+                    else {
+                        panic!("{name}: uniform is not a struct")
+                    };
                     assert_eq!(meta.size, *span, "{name}: uniform size");
                     assert_eq!(meta.members.len(), members.len(), "{name}: member count");
                     for (mm, nm) in meta.members.iter().zip(members) {
@@ -156,23 +215,48 @@ fn metadata_matches_the_emitted_modules() {
                     }
                 }
                 (None, None) => {}
-                (meta, naga) => panic!("{name}: metadata uniform {:?} vs module uniform {:?}", meta.is_some(), naga.is_some()),
+                (meta, naga) => panic!(
+                    "{name}: metadata uniform {:?} vs module uniform {:?}",
+                    meta.is_some(),
+                    naga.is_some()
+                ),
             }
 
             let mut found: Vec<(u32, u32, String)> = module
                 .global_variables
                 .iter()
-                .filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding, g.name.clone().unwrap_or_default())))
+                .filter_map(|(_, g)| {
+                    g.binding
+                        .as_ref()
+                        .map(|b| (b.group, b.binding, g.name.clone().unwrap_or_default()))
+                })
                 .collect();
             found.sort();
-            let listed: Vec<(u32, u32, String)> = shader.bindings.iter().map(|b| (b.group, b.binding, b.name.clone())).collect();
+            let listed: Vec<(u32, u32, String)> = shader
+                .bindings
+                .iter()
+                .map(|b| (b.group, b.binding, b.name.clone()))
+                .collect();
             assert_eq!(found, listed, "{name}: bindings");
 
-            let eps: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
-            let listed: Vec<&str> = shader.entry_points.iter().map(|e| e.name.as_str()).collect();
+            let eps: Vec<&str> = module
+                .entry_points
+                .iter()
+                .map(|e| e.name.as_str())
+                .collect();
+            let listed: Vec<&str> = shader
+                .entry_points
+                .iter()
+                .map(|e| e.name.as_str())
+                .collect();
             assert_eq!(eps, listed, "{name}: entry points");
             for pass in &m.passes {
-                assert!(eps.contains(&pass.vertex_entry.as_str()) && eps.contains(&pass.fragment_entry.as_str()), "{name}: pass {}", pass.name);
+                assert!(
+                    eps.contains(&pass.vertex_entry.as_str())
+                        && eps.contains(&pass.fragment_entry.as_str()),
+                    "{name}: pass {}",
+                    pass.name
+                );
             }
         }
     }
@@ -193,17 +277,34 @@ fn output_is_identical_across_runs_and_thread_counts() {
 
 #[test]
 fn dead_branches_and_their_bindings_are_removed() {
-    let m = &builds()[0].materials.iter().find(|m| m.name == "standard").unwrap();
+    let m = &builds()[0]
+        .materials
+        .iter()
+        .find(|m| m.name == "standard")
+        .unwrap();
     let params = |id: &str| -> Vec<String> {
         let v = m.resolve_variant(id).unwrap();
-        v.shader.as_ref().unwrap().bindings.iter().filter_map(|b| b.parameter.clone()).collect()
+        v.shader
+            .as_ref()
+            .unwrap()
+            .bindings
+            .iter()
+            .filter_map(|b| b.parameter.clone())
+            .collect()
     };
     let plain = params("fast.normal_map-off.sphere_map-off");
-    assert!(!plain.contains(&"normal_map".to_string()) && !plain.contains(&"sphere_map".to_string()), "{plain:?}");
+    assert!(
+        !plain.contains(&"normal_map".to_string()) && !plain.contains(&"sphere_map".to_string()),
+        "{plain:?}"
+    );
     assert!(params("fast.normal_map-on.sphere_map-off").contains(&"normal_map".to_string()));
     assert!(params("reference.normal_map-off.sphere_map-add").contains(&"sphere_map".to_string()));
     // Keyword overrides never survive into static variants.
-    for (name, bytes) in builds()[0].files.iter().filter(|(n, _)| n.ends_with(".wgsl")) {
+    for (name, bytes) in builds()[0]
+        .files
+        .iter()
+        .filter(|(n, _)| n.ends_with(".wgsl"))
+    {
         let text = std::str::from_utf8(bytes).unwrap();
         assert!(!text.contains("override"), "{name} still has an override");
     }
@@ -211,50 +312,115 @@ fn dead_branches_and_their_bindings_are_removed() {
 
 #[test]
 fn identical_variants_are_aliased_and_constant_keywords_stay_overrides() {
-    let m = builds()[1].materials.iter().find(|m| m.name == "switches").unwrap();
-    let v = m.variants.iter().find(|v| v.id == "fast.unused-on.use_mask-on").unwrap();
+    let m = builds()[1]
+        .materials
+        .iter()
+        .find(|m| m.name == "switches")
+        .unwrap();
+    let v = m
+        .variants
+        .iter()
+        .find(|v| v.id == "fast.unused-on.use_mask-on")
+        .unwrap();
     assert_eq!(v.alias_of.as_deref(), Some("fast.unused-off.use_mask-on"));
     assert!(v.shader.is_none());
     let files: BTreeMap<&String, &Vec<u8>> = builds()[1].files.iter().collect();
-    assert!(!files.keys().any(|k| k.contains("unused-on")), "aliased variants emit no files");
+    assert!(
+        !files.keys().any(|k| k.contains("unused-on")),
+        "aliased variants emit no files"
+    );
 
-    let canonical = m.resolve_variant("fast.unused-off.use_mask-on").unwrap().shader.as_ref().unwrap();
+    let canonical = m
+        .resolve_variant("fast.unused-off.use_mask-on")
+        .unwrap()
+        .shader
+        .as_ref()
+        .unwrap();
     assert_eq!(canonical.pipeline_constants.len(), 1);
     assert_eq!(canonical.pipeline_constants[0].name, "STYLE");
-    let wgsl = std::str::from_utf8(files[&"switches/fast.unused-off.use_mask-on.wgsl".to_string()]).unwrap();
-    assert!(wgsl.contains("override STYLE"), "constant-mode keyword kept as a pipeline constant");
+    let wgsl = std::str::from_utf8(files[&"switches/fast.unused-off.use_mask-on.wgsl".to_string()])
+        .unwrap();
+    assert!(
+        wgsl.contains("override STYLE"),
+        "constant-mode keyword kept as a pipeline constant"
+    );
     // One SPIR-V per value of the constant keyword, each labelled.
     let spirv = &canonical.files["spirv"];
     assert_eq!(spirv.len(), 2);
-    assert_eq!(spirv[1].constants.get("STYLE").map(String::as_str), Some("ramp"));
+    assert_eq!(
+        spirv[1].constants.get("STYLE").map(String::as_str),
+        Some("ramp")
+    );
     // The gradient ramp's binding is only used when STYLE may be `ramp`: it is, so it is listed.
-    assert!(canonical.bindings.iter().any(|b| b.parameter.as_deref() == Some("ramp")));
+    assert!(
+        canonical
+            .bindings
+            .iter()
+            .any(|b| b.parameter.as_deref() == Some("ramp"))
+    );
 }
 
 #[test]
 fn baked_curves_and_gradients_reach_the_metadata() {
-    let m = builds()[1].materials.iter().find(|m| m.name == "switches").unwrap();
-    let curve = m.parameters.iter().find(|p| p.name == "falloff").unwrap().curve.as_ref().unwrap();
+    let m = builds()[1]
+        .materials
+        .iter()
+        .find(|m| m.name == "switches")
+        .unwrap();
+    let curve = m
+        .parameters
+        .iter()
+        .find(|p| p.name == "falloff")
+        .unwrap()
+        .curve
+        .as_ref()
+        .unwrap();
     assert_eq!(curve.baked_default.len(), 8);
     assert_eq!(curve.baked_default[0], 0.0);
     assert!((curve.baked_default[7] - 1.0).abs() < 1e-12);
-    let ramp = m.parameters.iter().find(|p| p.name == "ramp").unwrap().gradient.as_ref().unwrap();
+    let ramp = m
+        .parameters
+        .iter()
+        .find(|p| p.name == "ramp")
+        .unwrap()
+        .gradient
+        .as_ref()
+        .unwrap();
     assert_eq!(ramp.baked_default.len(), 16 * 4);
     // First texel centre x = 1/32: linear-light mix (31/32 red, 1/32 blue), sRGB-encoded.
     assert_eq!(&ramp.baked_default[0..4], &[251, 0, 49, 255]);
     assert_eq!(&ramp.baked_default[60..64], &[49, 0, 251, 255]);
-    let tint = m.parameters.iter().find(|p| p.name == "tint").unwrap().color.as_ref().unwrap();
-    assert!((tint.linear_default[0] - 0.214).abs() < 1e-3, "sRGB 0.5 -> linear 0.214");
+    let tint = m
+        .parameters
+        .iter()
+        .find(|p| p.name == "tint")
+        .unwrap()
+        .color
+        .as_ref()
+        .unwrap();
+    assert!(
+        (tint.linear_default[0] - 0.214).abs() < 1e-3,
+        "sRGB 0.5 -> linear 0.214"
+    );
 }
 
 #[test]
 fn generated_code_snapshots() {
     let files = &builds()[0].files;
     let text = |k: &str| String::from_utf8(files[k].clone()).unwrap();
-    insta::assert_snapshot!("standard_default_wgsl", text("standard/fast.normal_map-off.sphere_map-off.wgsl"));
-    insta::assert_snapshot!("standard_reference_normal_add_hlsl", text("standard/reference.normal_map-on.sphere_map-add.hlsl"));
+    insta::assert_snapshot!(
+        "standard_default_wgsl",
+        text("standard/fast.normal_map-off.sphere_map-off.wgsl")
+    );
+    insta::assert_snapshot!(
+        "standard_reference_normal_add_hlsl",
+        text("standard/reference.normal_map-on.sphere_map-add.hlsl")
+    );
     let fixtures = &builds()[1].files;
-    insta::assert_snapshot!("switches_constant_mode_wgsl", String::from_utf8(fixtures["switches/fast.unused-off.use_mask-on.wgsl"].clone()).unwrap());
+    insta::assert_snapshot!(
+        "switches_constant_mode_wgsl",
+        String::from_utf8(fixtures["switches/fast.unused-off.use_mask-on.wgsl"].clone()).unwrap()
+    );
 }
 
 #[test]
@@ -262,7 +428,13 @@ fn generated_prelude_snapshot() {
     let mut db = weft_front::SourceDb::new();
     let mut diags = weft_front::Diagnostics::new();
     let root = repo().join("tests/fixtures/materials");
-    let m = weft_front::load_material(&root.join("switches/switches.toml"), &root, &mut db, &mut diags).unwrap();
+    let m = weft_front::load_material(
+        &root.join("switches/switches.toml"),
+        &root,
+        &mut db,
+        &mut diags,
+    )
+    .unwrap();
     let prelude = weft_compiler::prelude::generate(&m);
     let text: Vec<&str> = prelude.lines.iter().map(|(l, _)| l.as_str()).collect();
     insta::assert_snapshot!("switches_prelude", text.join("\n"));

@@ -44,7 +44,10 @@ enum Bench {
 }
 
 fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask is in the workspace").to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask is in the workspace")
+        .to_path_buf()
 }
 
 fn main() -> ExitCode {
@@ -52,7 +55,9 @@ fn main() -> ExitCode {
     let root = workspace_root();
     match cli.command {
         Command::Regenerate { check } => regenerate(&root, check),
-        Command::Bench { what: Bench::Compile { runs } } => bench_compile(&root, runs.max(1)),
+        Command::Bench {
+            what: Bench::Compile { runs },
+        } => bench_compile(&root, runs.max(1)),
     }
 }
 
@@ -124,7 +129,11 @@ fn median(mut v: Vec<Duration>) -> Duration {
 
 fn bench_compile(root: &Path, runs: usize) -> ExitCode {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let profile = if cfg!(debug_assertions) { "debug" } else { "release" };
+    let profile = if cfg!(debug_assertions) {
+        "debug"
+    } else {
+        "release"
+    };
     // Warm-up (page cache, lazy statics).
     let Some(first) = build(root, &BuildOptions::default()) else {
         return ExitCode::FAILURE;
@@ -144,7 +153,14 @@ fn bench_compile(root: &Path, runs: usize) -> ExitCode {
     let mut single = Vec::new();
     for _ in 0..runs {
         let t = Instant::now();
-        build(root, &BuildOptions { jobs: Some(1), ..Default::default() }).expect("built once already");
+        build(
+            root,
+            &BuildOptions {
+                jobs: Some(1),
+                ..Default::default()
+            },
+        )
+        .expect("built once already");
         single.push(t.elapsed());
     }
     // No-change rebuild: inputs hashed, files reused from a previous output.
@@ -154,17 +170,47 @@ fn bench_compile(root: &Path, runs: usize) -> ExitCode {
     let mut unchanged = Vec::new();
     for _ in 0..runs {
         let t = Instant::now();
-        let out = build(root, &BuildOptions { reuse_from: Some(out_dir.clone()), ..Default::default() }).expect("built");
+        let out = build(
+            root,
+            &BuildOptions {
+                reuse_from: Some(out_dir.clone()),
+                ..Default::default()
+            },
+        )
+        .expect("built");
         output::write_atomically(&out_dir, &out.files, &[]).expect("write");
         unchanged.push(t.elapsed());
-        assert_eq!(out.reused.len(), out.materials.len(), "every material reused");
+        assert_eq!(
+            out.reused.len(),
+            out.materials.len(),
+            "every material reused"
+        );
     }
     let (full, single, unchanged) = (median(full), median(single), median(unchanged));
     let vps = |d: Duration| first.variant_count as f64 / d.as_secs_f64();
-    println!("weft compile benchmark ({profile} build of xtask, {threads} threads available, median of {runs} runs)");
-    println!("  materials: {}, variants: {} ({} distinct), files: {}", first.materials.len(), first.variant_count, canonical, first.files.len());
-    println!("  full library build, all threads : {:>8.1} ms  ({:.0} variants/s)", full.as_secs_f64() * 1e3, vps(full));
-    println!("  full library build, 1 thread    : {:>8.1} ms  ({:.0} variants/s)", single.as_secs_f64() * 1e3, vps(single));
-    println!("  no-change rebuild (+ write)     : {:>8.1} ms", unchanged.as_secs_f64() * 1e3);
+    println!(
+        "weft compile benchmark ({profile} build of xtask, {threads} threads available, median of {runs} runs)"
+    );
+    println!(
+        "  materials: {}, variants: {} ({} distinct), files: {}",
+        first.materials.len(),
+        first.variant_count,
+        canonical,
+        first.files.len()
+    );
+    println!(
+        "  full library build, all threads : {:>8.1} ms  ({:.0} variants/s)",
+        full.as_secs_f64() * 1e3,
+        vps(full)
+    );
+    println!(
+        "  full library build, 1 thread    : {:>8.1} ms  ({:.0} variants/s)",
+        single.as_secs_f64() * 1e3,
+        vps(single)
+    );
+    println!(
+        "  no-change rebuild (+ write)     : {:>8.1} ms",
+        unchanged.as_secs_f64() * 1e3
+    );
     ExitCode::SUCCESS
 }

@@ -41,7 +41,9 @@ enum Color {
 #[derive(Subcommand)]
 enum Command {
     /// Compile materials (folders or .toml files) into an output folder, atomically.
-    #[command(after_help = "Examples:\n  weft build\n  weft build materials -o generated --jobs 2\n  weft build materials/standard/standard.toml -o /tmp/out --force")]
+    #[command(
+        after_help = "Examples:\n  weft build\n  weft build materials -o generated --jobs 2\n  weft build materials/standard/standard.toml -o /tmp/out --force"
+    )]
     Build {
         /// A materials folder (with lib/ and one folder per material) or material .toml files.
         #[arg(default_value = "materials")]
@@ -57,22 +59,24 @@ enum Command {
         force: bool,
     },
     /// Report diagnostics only; writes nothing. Exit status 1 on any error.
-    #[command(after_help = "Examples:\n  weft check\n  weft check materials/standard/standard.toml")]
+    #[command(
+        after_help = "Examples:\n  weft check\n  weft check materials/standard/standard.toml"
+    )]
     Check {
         #[arg(default_value = "materials")]
         paths: Vec<PathBuf>,
     },
     /// Show a material's parameters, keywords, tiers and variants as tables.
-    #[command(after_help = "Examples:\n  weft inspect materials/standard/standard.toml\n  weft inspect generated/standard/standard.meta.json")]
+    #[command(
+        after_help = "Examples:\n  weft inspect materials/standard/standard.toml\n  weft inspect generated/standard/standard.meta.json"
+    )]
     Inspect {
         /// A material .toml file or a generated .meta.json file.
         path: PathBuf,
     },
     /// List a material's variants, their aliases and files.
     #[command(after_help = "Examples:\n  weft variants materials/standard/standard.toml")]
-    Variants {
-        path: PathBuf,
-    },
+    Variants { path: PathBuf },
 }
 
 fn color_choice(c: Color) -> ColorChoice {
@@ -89,12 +93,19 @@ fn report(db: &SourceDb, diags: &Diagnostics, color: Color) {
     diags.emit(db, &mut stderr);
     let n = diags.error_count();
     if n > 0 {
-        eprintln!("error: {n} error{} found; nothing was written", if n == 1 { "" } else { "s" });
+        eprintln!(
+            "error: {n} error{} found; nothing was written",
+            if n == 1 { "" } else { "s" }
+        );
     }
 }
 
 /// Builds from folders and/or files.
-fn build(paths: &[PathBuf], options: &BuildOptions, quiet: bool) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
+fn build(
+    paths: &[PathBuf],
+    options: &BuildOptions,
+    quiet: bool,
+) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
     let show = !quiet && std::io::stderr().is_terminal();
     let progress = move |i: usize, n: usize, name: &str| {
         if show {
@@ -150,9 +161,17 @@ fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Build { paths, out, jobs, force } => {
+        Command::Build {
+            paths,
+            out,
+            jobs,
+            force,
+        } => {
             let started = std::time::Instant::now();
-            let options = BuildOptions { jobs, reuse_from: (!force).then(|| out.clone()) };
+            let options = BuildOptions {
+                jobs,
+                reuse_from: (!force).then(|| out.clone()),
+            };
             match build(&paths, &options, cli.quiet) {
                 Ok(result) => {
                     if let Err(e) = output::write_atomically(&out, &result.files, PRESERVED) {
@@ -167,7 +186,11 @@ fn main() -> ExitCode {
                             result.files.len(),
                             out.display(),
                             started.elapsed().as_secs_f64(),
-                            if result.reused.is_empty() { String::new() } else { format!(" ({} unchanged)", result.reused.len()) }
+                            if result.reused.is_empty() {
+                                String::new()
+                            } else {
+                                format!(" ({} unchanged)", result.reused.len())
+                            }
                         );
                     }
                     ExitCode::SUCCESS
@@ -181,7 +204,11 @@ fn main() -> ExitCode {
         Command::Check { paths } => match build(&paths, &BuildOptions::default(), cli.quiet) {
             Ok(result) => {
                 if !cli.quiet {
-                    println!("ok: {} material(s), {} variant(s)", result.materials.len(), result.variant_count);
+                    println!(
+                        "ok: {} material(s), {} variant(s)",
+                        result.materials.len(),
+                        result.variant_count
+                    );
                 }
                 ExitCode::SUCCESS
             }

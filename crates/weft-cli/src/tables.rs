@@ -24,7 +24,16 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
         let _ = writeln!(out, "{}", s.trim_end());
     };
     line(&mut out, header.to_vec());
-    line(&mut out, widths.iter().map(|w| "-".repeat(*w)).collect::<Vec<_>>().iter().map(|s| s.as_str()).collect());
+    line(
+        &mut out,
+        widths
+            .iter()
+            .map(|w| "-".repeat(*w))
+            .collect::<Vec<_>>()
+            .iter()
+            .map(|s| s.as_str())
+            .collect(),
+    );
     for r in rows {
         line(&mut out, r.iter().map(|s| s.as_str()).collect());
     }
@@ -34,7 +43,16 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
 fn cond(c: &Option<Condition>) -> String {
     match c {
         None => String::new(),
-        Some(c) => format!("{} {} {}", c.subject, if c.op == ConditionOp::Equal { "==" } else { "!=" }, c.value),
+        Some(c) => format!(
+            "{} {} {}",
+            c.subject,
+            if c.op == ConditionOp::Equal {
+                "=="
+            } else {
+                "!="
+            },
+            c.value
+        ),
     }
 }
 
@@ -50,7 +68,12 @@ pub fn inspect(m: &MaterialMetadata) -> String {
     }
     let _ = writeln!(out, "\nParameters");
     let mut params: Vec<_> = m.parameters.iter().collect();
-    let group_pos = |g: &str| m.groups.iter().position(|x| x.name == g).unwrap_or(usize::MAX);
+    let group_pos = |g: &str| {
+        m.groups
+            .iter()
+            .position(|x| x.name == g)
+            .unwrap_or(usize::MAX)
+    };
     params.sort_by_key(|p| (group_pos(&p.group), p.order));
     let rows: Vec<Vec<String>> = params
         .iter()
@@ -60,26 +83,53 @@ pub fn inspect(m: &MaterialMetadata) -> String {
                 p.name.clone(),
                 p.kind.name().to_string(),
                 p.default.to_string(),
-                p.range.map(|r| format!("[{}, {}]", num(r[0]), num(r[1]))).unwrap_or_default(),
+                p.range
+                    .map(|r| format!("[{}, {}]", num(r[0]), num(r[1])))
+                    .unwrap_or_default(),
                 p.label.en.clone(),
                 cond(&p.show_if),
             ]
         })
         .collect();
-    out.push_str(&table(&["group", "name", "type", "default", "range", "label", "show if"], &rows));
+    out.push_str(&table(
+        &[
+            "group", "name", "type", "default", "range", "label", "show if",
+        ],
+        &rows,
+    ));
     let _ = writeln!(out, "\nKeywords");
     let rows: Vec<Vec<String>> = m
         .keywords
         .iter()
-        .map(|k| vec![k.name.clone(), format!("{:?}", k.kind).to_lowercase(), format!("{:?}", k.mode).to_lowercase(), k.values.join(" | "), k.default.clone()])
+        .map(|k| {
+            vec![
+                k.name.clone(),
+                format!("{:?}", k.kind).to_lowercase(),
+                format!("{:?}", k.mode).to_lowercase(),
+                k.values.join(" | "),
+                k.default.clone(),
+            ]
+        })
         .collect();
-    out.push_str(&table(&["name", "kind", "mode", "values", "default"], &rows));
+    out.push_str(&table(
+        &["name", "kind", "mode", "values", "default"],
+        &rows,
+    ));
     let _ = writeln!(out, "\nTiers (reference: {})", m.tiers.reference);
     let rows: Vec<Vec<String>> = m
         .tiers
         .values
         .iter()
-        .map(|t| vec![t.clone(), m.tiers.descriptions.get(t).map(|d| d.en.clone()).unwrap_or_default()])
+        .map(|t| {
+            vec![
+                t.clone(),
+                m.tiers
+                    .descriptions
+                    .get(t)
+                    .map(|d| d.en.clone())
+                    .unwrap_or_default(),
+            ]
+        })
         .collect();
     out.push_str(&table(&["tier", "what it computes"], &rows));
     if !m.presets.is_empty() {
@@ -87,7 +137,17 @@ pub fn inspect(m: &MaterialMetadata) -> String {
         let rows: Vec<Vec<String>> = m
             .presets
             .iter()
-            .map(|p| vec![p.name.clone(), p.label.en.clone(), p.values.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(" ")])
+            .map(|p| {
+                vec![
+                    p.name.clone(),
+                    p.label.en.clone(),
+                    p.values
+                        .iter()
+                        .map(|(k, v)| format!("{k}={v}"))
+                        .collect::<Vec<_>>()
+                        .join(" "),
+                ]
+            })
             .collect();
         out.push_str(&table(&["name", "label", "values"], &rows));
     }
@@ -107,9 +167,18 @@ pub fn inspect(m: &MaterialMetadata) -> String {
             ]
         })
         .collect();
-    out.push_str(&table(&["pass", "entry points", "blend", "cull", "depth", "queue"], &rows));
+    out.push_str(&table(
+        &["pass", "entry points", "blend", "cull", "depth", "queue"],
+        &rows,
+    ));
     let canonical = m.variants.iter().filter(|v| v.alias_of.is_none()).count();
-    let _ = writeln!(out, "\nVariants: {} ({} distinct, {} aliases) — `weft variants` lists them\n", m.variants.len(), canonical, m.variants.len() - canonical);
+    let _ = writeln!(
+        out,
+        "\nVariants: {} ({} distinct, {} aliases) — `weft variants` lists them\n",
+        m.variants.len(),
+        canonical,
+        m.variants.len() - canonical
+    );
     out
 }
 
@@ -122,10 +191,22 @@ pub fn variants(m: &MaterialMetadata) -> String {
         .map(|v| match (&v.alias_of, &v.shader) {
             (Some(a), _) => vec![v.id.clone(), format!("= {a}"), String::new(), String::new()],
             (None, Some(s)) => {
-                let textures = s.bindings.iter().filter(|b| b.group == 1 && b.parameter.is_some()).count();
+                let textures = s
+                    .bindings
+                    .iter()
+                    .filter(|b| b.group == 1 && b.parameter.is_some())
+                    .count();
                 let files: usize = s.files.values().map(|f| f.len()).sum();
-                let ubo = s.material_uniform.as_ref().map_or("-".into(), |u| format!("{} B", u.size));
-                vec![v.id.clone(), format!("{} bindings ({textures} textures)", s.bindings.len()), ubo, format!("{files} files")]
+                let ubo = s
+                    .material_uniform
+                    .as_ref()
+                    .map_or("-".into(), |u| format!("{} B", u.size));
+                vec![
+                    v.id.clone(),
+                    format!("{} bindings ({textures} textures)", s.bindings.len()),
+                    ubo,
+                    format!("{files} files"),
+                ]
             }
             _ => vec![v.id.clone(), String::new(), String::new(), String::new()],
         })

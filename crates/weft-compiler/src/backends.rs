@@ -24,18 +24,26 @@ pub struct Emitted {
 }
 
 pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
-    wgsl::write_string(module, info, wgsl::WriterFlags::empty()).map_err(|e| format!("WGSL backend: {e}"))
+    wgsl::write_string(module, info, wgsl::WriterFlags::empty())
+        .map_err(|e| format!("WGSL backend: {e}"))
 }
 
 /// Every language but WGSL needs the overrides resolved (naga has no SPIR-V
 /// specialisation constants), so these take a module without overrides.
-pub fn emit_others(module: &Module, info: &ModuleInfo) -> Result<(Vec<u8>, String, String, Vec<(String, ShaderStage, String)>), String> {
+pub fn emit_others(
+    module: &Module,
+    info: &ModuleInfo,
+) -> Result<(Vec<u8>, String, String, Vec<(String, ShaderStage, String)>), String> {
     let spirv = emit_spirv(module, info)?;
     let hlsl = emit_hlsl(module, info)?;
     let msl = emit_msl(module, info)?;
     let mut glsl_out = Vec::new();
     for ep in &module.entry_points {
-        glsl_out.push((ep.name.clone(), ep.stage, emit_glsl(module, info, &ep.name, ep.stage)?));
+        glsl_out.push((
+            ep.name.clone(),
+            ep.stage,
+            emit_glsl(module, info, &ep.name, ep.stage)?,
+        ));
     }
     Ok((spirv, hlsl, msl, glsl_out))
 }
@@ -48,7 +56,8 @@ pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String>
             | spv::WriterFlags::CLAMP_FRAG_DEPTH,
         ..spv::Options::default()
     };
-    let words = spv::write_vec(module, info, &options, None).map_err(|e| format!("SPIR-V backend: {e}"))?;
+    let words =
+        spv::write_vec(module, info, &options, None).map_err(|e| format!("SPIR-V backend: {e}"))?;
     Ok(words.iter().flat_map(|w| w.to_le_bytes()).collect())
 }
 
@@ -65,7 +74,9 @@ pub fn hlsl_options(module: &Module) -> hlsl::Options {
     };
     for (_, var) in module.global_variables.iter() {
         if let Some(rb) = &var.binding {
-            options.binding_map.insert(rb.clone(), bind_target(rb.group as u8, rb.binding));
+            options
+                .binding_map
+                .insert(rb.clone(), bind_target(rb.group as u8, rb.binding));
             options.sampler_buffer_binding_map.insert(
                 hlsl::SamplerIndexBufferKey { group: rb.group },
                 bind_target(rb.group as u8, HLSL_SAMPLER_INDEX_REGISTER),
@@ -90,29 +101,50 @@ pub fn emit_hlsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
     let pipeline = hlsl::PipelineOptions { entry_point: None };
     let mut out = String::new();
     let mut w = hlsl::Writer::new(&mut out, &options, &pipeline);
-    w.write(module, info, None).map_err(|e| format!("HLSL backend: {e}"))?;
+    w.write(module, info, None)
+        .map_err(|e| format!("HLSL backend: {e}"))?;
     Ok(out)
 }
 
 pub fn emit_msl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
-    let options = msl::Options { lang_version: (2, 1), ..msl::Options::default() };
+    let options = msl::Options {
+        lang_version: (2, 1),
+        ..msl::Options::default()
+    };
     let pipeline = msl::PipelineOptions::default();
     msl::write_string(module, info, &options, &pipeline)
         .map(|(s, _)| s)
         .map_err(|e| format!("MSL backend: {e}"))
 }
 
-pub fn emit_glsl(module: &Module, info: &ModuleInfo, entry: &str, stage: ShaderStage) -> Result<String, String> {
+pub fn emit_glsl(
+    module: &Module,
+    info: &ModuleInfo,
+    entry: &str,
+    stage: ShaderStage,
+) -> Result<String, String> {
     let options = glsl::Options {
         version: glsl::Version::Desktop(450),
         writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE,
         ..glsl::Options::default()
     };
-    let pipeline = glsl::PipelineOptions { shader_stage: stage, entry_point: entry.to_string(), multiview: None };
+    let pipeline = glsl::PipelineOptions {
+        shader_stage: stage,
+        entry_point: entry.to_string(),
+        multiview: None,
+    };
     let mut out = String::new();
-    let mut w = glsl::Writer::new(&mut out, module, info, &options, &pipeline, naga::proc::BoundsCheckPolicies::default())
+    let mut w = glsl::Writer::new(
+        &mut out,
+        module,
+        info,
+        &options,
+        &pipeline,
+        naga::proc::BoundsCheckPolicies::default(),
+    )
+    .map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
+    w.write()
         .map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
-    w.write().map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
     Ok(out)
 }
 

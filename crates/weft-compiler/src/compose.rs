@@ -54,8 +54,13 @@ pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
 /// Registers the engine interface in the source database (once) so its lines can be shown.
 pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
     let path = std::path::Path::new("<weft>/engine_interface.wgsl");
-    db.find(path)
-        .unwrap_or_else(|| db.add(path, "<weft engine interface>".into(), ENGINE_INTERFACE.into()))
+    db.find(path).unwrap_or_else(|| {
+        db.add(
+            path,
+            "<weft engine interface>".into(),
+            ENGINE_INTERFACE.into(),
+        )
+    })
 }
 
 pub fn compose(m: &Material, prelude: &Prelude, db: &mut SourceDb) -> Composed {
@@ -67,7 +72,8 @@ pub fn compose(m: &Material, prelude: &Prelude, db: &mut SourceDb) -> Composed {
         if !src.ends_with('\n') {
             text.push('\n');
         }
-        map.segments.push((start..start + src.len(), Target::File { file, offset: 0 }));
+        map.segments
+            .push((start..start + src.len(), Target::File { file, offset: 0 }));
     };
     let engine = engine_interface_file(db);
     push_file(&mut text, engine, ENGINE_INTERFACE);
@@ -101,14 +107,22 @@ pub fn naga_diagnostic(
 ) -> Diagnostic<FileId> {
     let mut out: Vec<Label<FileId>> = Vec::new();
     for (i, (span, msg)) in labels.into_iter().enumerate() {
-        let Some(range) = span.to_range() else { continue };
+        let Some(range) = span.to_range() else {
+            continue;
+        };
         if let Some((file, r)) = map.map(range) {
-            let label = if i == 0 { Label::primary(file, r) } else { Label::secondary(file, r) };
+            let label = if i == 0 {
+                Label::primary(file, r)
+            } else {
+                Label::secondary(file, r)
+            };
             out.push(label.with_message(msg));
         }
     }
     if out.is_empty() {
-        out.push(Label::primary(fallback.file, fallback.span.clone()).with_message("in this material"));
+        out.push(
+            Label::primary(fallback.file, fallback.span.clone()).with_message("in this material"),
+        );
     }
     Diagnostic::error()
         .with_code(code)
@@ -126,9 +140,17 @@ pub fn parse_and_validate(
     let module = match naga::front::wgsl::parse_str(&composed.text) {
         Ok(module) => module,
         Err(e) => {
-            let labels: Vec<(naga::Span, String)> = e.labels().map(|(s, m)| (s, m.to_string())).collect();
+            let labels: Vec<(naga::Span, String)> =
+                e.labels().map(|(s, m)| (s, m.to_string())).collect();
             let notes = e.notes().map(|n| n.to_string()).collect();
-            diags.push(naga_diagnostic("wgsl-parse", e.message().to_string(), labels, notes, &composed.map, &m.decl));
+            diags.push(naga_diagnostic(
+                "wgsl-parse",
+                e.message().to_string(),
+                labels,
+                notes,
+                &composed.map,
+                &m.decl,
+            ));
             return None;
         }
     };
@@ -142,7 +164,10 @@ pub fn parse_and_validate(
 }
 
 pub fn validator() -> naga::valid::Validator {
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::all(),
+    )
 }
 
 pub fn validation_diagnostic(
@@ -157,5 +182,12 @@ pub fn validation_diagnostic(
         notes.push(s.to_string());
         source = s.source();
     }
-    naga_diagnostic("wgsl-validation", e.as_inner().to_string(), labels, notes, &composed.map, &m.decl)
+    naga_diagnostic(
+        "wgsl-validation",
+        e.as_inner().to_string(),
+        labels,
+        notes,
+        &composed.map,
+        &m.decl,
+    )
 }

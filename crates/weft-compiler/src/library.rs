@@ -20,7 +20,8 @@ use weft_meta::{ENGINE_INTERFACE_VERSION, MaterialMetadata, SCHEMA_VERSION, Vari
 /// Size and sample count of the baked split-sum LUT.
 pub const SPLIT_SUM_LUT_SIZE: u32 = 64;
 pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
-pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx.rg16f";
+/// Size and sample count are in the name, so a reused file is never a stale bake.
+pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
 
 #[derive(Clone, Debug, Default)]
 pub struct BuildOptions {
@@ -87,8 +88,10 @@ pub fn compile_material(
         return None;
     }
     let keys = variants::variants(m);
-    let results: Vec<Result<CompiledVariant, String>> =
-        keys.par_iter().map(|k| variant::compile_variant(m, &module, k, &prelude)).collect();
+    let results: Vec<Result<CompiledVariant, String>> = keys
+        .par_iter()
+        .map(|k| variant::compile_variant(m, &module, k, &prelude))
+        .collect();
     let mut compiled = Vec::new();
     for r in results {
         match r {
@@ -97,7 +100,10 @@ pub fn compile_material(
                 Diagnostic::error()
                     .with_code("variant")
                     .with_message(msg)
-                    .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("in this material")]),
+                    .with_labels(vec![
+                        Label::primary(m.decl.file, m.decl.span.clone())
+                            .with_message("in this material"),
+                    ]),
             ),
         }
     }
@@ -111,7 +117,12 @@ pub fn compile_material(
         let keywords = key
             .keywords
             .iter()
-            .map(|&(k, val)| (m.keywords[k].name.clone(), m.keywords[k].values[val].clone()))
+            .map(|&(k, val)| {
+                (
+                    m.keywords[k].name.clone(),
+                    m.keywords[k].values[val].clone(),
+                )
+            })
             .collect();
         let (alias_of, shader) = match alias {
             Some(j) => (Some(keys[j].id(m)), None),
@@ -120,17 +131,26 @@ pub fn compile_material(
                 (None, Some(v.shader))
             }
         };
-        variants_meta.push(Variant { id: v.id, tier: m.tiers.values[key.tier].clone(), keywords, alias_of, shader });
+        variants_meta.push(Variant {
+            id: v.id,
+            tier: m.tiers.values[key.tier].clone(),
+            keywords,
+            alias_of,
+            shader,
+        });
     }
     let meta = MaterialMetadata {
         schema_version: SCHEMA_VERSION,
         engine_interface_version: ENGINE_INTERFACE_VERSION,
         name: m.name.clone(),
-        label: weft_meta::Text { en: m.label.clone(), zh: m.label_zh.clone() },
-        description: m
-            .description
-            .as_ref()
-            .map(|d| weft_meta::Text { en: d.clone(), zh: m.description_zh.clone() }),
+        label: weft_meta::Text {
+            en: m.label.clone(),
+            zh: m.label_zh.clone(),
+        },
+        description: m.description.as_ref().map(|d| weft_meta::Text {
+            en: d.clone(),
+            zh: m.description_zh.clone(),
+        }),
         inputs_hash: inputs_hash(m, db),
         groups: metadata::groups(m),
         parameters: metadata::parameters(m, &prelude),
@@ -149,9 +169,20 @@ pub fn compile_material(
 fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics) -> bool {
     let before = diags.error_count();
     for pass in &m.passes {
-        for (name, stage) in [(&pass.vertex, naga::ShaderStage::Vertex), (&pass.fragment, naga::ShaderStage::Fragment)] {
-            if !module.entry_points.iter().any(|ep| &ep.name == name && ep.stage == stage) {
-                let found: Vec<String> = module.entry_points.iter().map(|e| format!("{} ({:?})", e.name, e.stage)).collect();
+        for (name, stage) in [
+            (&pass.vertex, naga::ShaderStage::Vertex),
+            (&pass.fragment, naga::ShaderStage::Fragment),
+        ] {
+            if !module
+                .entry_points
+                .iter()
+                .any(|ep| &ep.name == name && ep.stage == stage)
+            {
+                let found: Vec<String> = module
+                    .entry_points
+                    .iter()
+                    .map(|e| format!("{} ({:?})", e.name, e.stage))
+                    .collect();
                 diags.push(
                     Diagnostic::error()
                         .with_code("missing-entry-point")
@@ -172,8 +203,13 @@ fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics)
             diags.push(
                 Diagnostic::error()
                     .with_code("missing-require")
-                    .with_message(format!("the vertex stage reads `{name}` but the material does not require it"))
-                    .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("material declared here")])
+                    .with_message(format!(
+                        "the vertex stage reads `{name}` but the material does not require it"
+                    ))
+                    .with_labels(vec![
+                        Label::primary(m.decl.file, m.decl.span.clone())
+                            .with_message("material declared here"),
+                    ])
                     .with_notes(vec![format!("add \"{name}\" to `requires` in [material]")]),
             );
         }
@@ -182,7 +218,11 @@ fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics)
 }
 
 /// Reads a previous build's files for a material if its inputs are unchanged.
-fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
+fn reuse(
+    out_dir: &Path,
+    m: &Material,
+    hash: &str,
+) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
     let dir = out_dir.join(&m.name);
     let meta_bytes = std::fs::read(dir.join(format!("{}.meta.json", m.name))).ok()?;
     let meta: MaterialMetadata = serde_json::from_slice(&meta_bytes).ok()?;
@@ -212,7 +252,10 @@ pub fn build_library(
         Ok(paths) => build_materials(&paths, Some(materials_dir), options, progress),
         Err(e) => {
             let mut diags = Diagnostics::new();
-            diags.push(Diagnostic::error().with_code("io").with_message(format!("cannot read materials folder `{}`: {e}", materials_dir.display())));
+            diags.push(Diagnostic::error().with_code("io").with_message(format!(
+                "cannot read materials folder `{}`: {e}",
+                materials_dir.display()
+            )));
             Err((SourceDb::new(), diags))
         }
     }
@@ -231,19 +274,34 @@ pub fn build_materials(
 ) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
     let mut db = SourceDb::new();
     let mut diags = Diagnostics::new();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.jobs.unwrap_or(0)).build().expect("thread pool");
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(options.jobs.unwrap_or(0))
+        .build()
+        .expect("thread pool");
     let mut out = BuildOutput::default();
     for (i, path) in paths.iter().enumerate() {
         let root = root.map_or_else(|| weft_front::find_root(path), Path::to_path_buf);
-        let Some(m) = weft_front::load_material(path, &root, &mut db, &mut diags) else { continue };
+        let Some(m) = weft_front::load_material(path, &root, &mut db, &mut diags) else {
+            continue;
+        };
         if out.materials.iter().any(|x| x.name == m.name) {
-            diags.push(Diagnostic::error().with_code("duplicate").with_message(format!("two materials are named `{}`", m.name))
-                .with_labels(vec![Label::primary(m.decl.file, m.decl.span.clone()).with_message("second material with this name")]));
+            diags.push(
+                Diagnostic::error()
+                    .with_code("duplicate")
+                    .with_message(format!("two materials are named `{}`", m.name))
+                    .with_labels(vec![
+                        Label::primary(m.decl.file, m.decl.span.clone())
+                            .with_message("second material with this name"),
+                    ]),
+            );
             continue;
         }
         progress(i, paths.len(), &m.name);
         let hash = inputs_hash(&m, &db);
-        let reused = options.reuse_from.as_deref().and_then(|dir| reuse(dir, &m, &hash));
+        let reused = options
+            .reuse_from
+            .as_deref()
+            .and_then(|dir| reuse(dir, &m, &hash));
         let result = match reused {
             Some(r) => {
                 out.reused.push(m.name.clone());
@@ -258,7 +316,8 @@ pub fn build_materials(
             }
             let mut json = serde_json::to_string_pretty(&meta).expect("metadata serialises");
             json.push('\n');
-            out.files.insert(format!("{0}/{0}.meta.json", m.name), json.into_bytes());
+            out.files
+                .insert(format!("{0}/{0}.meta.json", m.name), json.into_bytes());
             out.materials.push(meta);
         }
     }
@@ -266,13 +325,25 @@ pub fn build_materials(
         return Err((db, diags));
     }
     progress(paths.len(), paths.len(), "");
-    add_library_files(&mut out.files);
+    add_library_files(&mut out.files, options.reuse_from.as_deref());
     Ok(out)
 }
 
 /// Files shared by every material: baked LUTs and the metadata schema.
-pub fn add_library_files(files: &mut BTreeMap<String, Vec<u8>>) {
-    let lut = bake::split_sum::split_sum_lut(SPLIT_SUM_LUT_SIZE, SPLIT_SUM_LUT_SAMPLES);
-    files.insert(SPLIT_SUM_LUT_PATH.into(), bake::split_sum::encode_rg16f(&lut));
-    files.insert("metadata.schema.json".into(), weft_meta::metadata_json_schema().into_bytes());
+/// With `reuse_from`, a LUT already baked there (same size and sample count,
+/// same toolchain version) is reused instead of baked again.
+pub fn add_library_files(files: &mut BTreeMap<String, Vec<u8>>, reuse_from: Option<&Path>) {
+    let expected_len = (SPLIT_SUM_LUT_SIZE * SPLIT_SUM_LUT_SIZE * 4) as usize;
+    let reused = reuse_from
+        .and_then(|dir| std::fs::read(dir.join(SPLIT_SUM_LUT_PATH)).ok())
+        .filter(|b| b.len() == expected_len);
+    let lut = reused.unwrap_or_else(|| {
+        let lut = bake::split_sum::split_sum_lut(SPLIT_SUM_LUT_SIZE, SPLIT_SUM_LUT_SAMPLES);
+        bake::split_sum::encode_rg16f(&lut)
+    });
+    files.insert(SPLIT_SUM_LUT_PATH.into(), lut);
+    files.insert(
+        "metadata.schema.json".into(),
+        weft_meta::metadata_json_schema().into_bytes(),
+    );
 }

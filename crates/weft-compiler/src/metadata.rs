@@ -9,13 +9,19 @@ use weft_front::samples;
 use weft_meta::*;
 
 fn text(en: &str, zh: &Option<String>) -> Text {
-    Text { en: en.to_string(), zh: zh.clone() }
+    Text {
+        en: en.to_string(),
+        zh: zh.clone(),
+    }
 }
 
 fn opt_text(en: &Option<String>, zh: &Option<String>) -> Option<Text> {
     match (en, zh) {
         (None, None) => None,
-        _ => Some(Text { en: en.clone().unwrap_or_default(), zh: zh.clone() }),
+        _ => Some(Text {
+            en: en.clone().unwrap_or_default(),
+            zh: zh.clone(),
+        }),
     }
 }
 
@@ -37,23 +43,35 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
     m.params
         .iter()
         .map(|p| {
-            let binding = prelude.texture_bindings.iter().find(|(n, _)| *n == p.name).map(|(_, b)| *b);
-            let uniform_member = members.iter().find(|mem| mem.name == p.name).map(|mem| mem.name.clone());
+            let binding = prelude
+                .texture_bindings
+                .iter()
+                .find(|(n, _)| *n == p.name)
+                .map(|(_, b)| *b);
+            let uniform_member = members
+                .iter()
+                .find(|mem| mem.name == p.name)
+                .map(|mem| mem.name.clone());
             let color = (p.kind == ParamKind::Color).then(|| {
                 let d = match &p.default {
                     ParamValue::Vector(v) => v.clone(),
                     _ => vec![1.0; 4],
                 };
                 let conv = |c: f64| if p.hdr { c } else { samples::srgb_to_linear(c) };
-                ColorInfo { hdr: p.hdr, linear_default: [conv(d[0]), conv(d[1]), conv(d[2]), d[3]] }
+                ColorInfo {
+                    hdr: p.hdr,
+                    linear_default: [conv(d[0]), conv(d[1]), conv(d[2]), d[3]],
+                }
             });
             let texture = match (&p.kind, &p.default) {
-                (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) => Some(TextureInfo {
-                    default: *t,
-                    srgb: p.srgb,
-                    tiling_member: p.tiling.then(|| format!("{}_st", p.name)),
-                    tiling_default: p.tiling.then_some([1.0, 1.0, 0.0, 0.0]),
-                }),
+                (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) => {
+                    Some(TextureInfo {
+                        default: *t,
+                        srgb: p.srgb,
+                        tiling_member: p.tiling.then(|| format!("{}_st", p.name)),
+                        tiling_default: p.tiling.then_some([1.0, 1.0, 0.0, 0.0]),
+                    })
+                }
                 _ => None,
             };
             let curve = match &p.default {
@@ -123,7 +141,15 @@ pub fn tiers(m: &Material) -> Tiers {
             .tiers
             .descriptions
             .iter()
-            .map(|(t, en, zh)| (t.clone(), Text { en: en.clone(), zh: zh.clone() }))
+            .map(|(t, en, zh)| {
+                (
+                    t.clone(),
+                    Text {
+                        en: en.clone(),
+                        zh: zh.clone(),
+                    },
+                )
+            })
             .collect(),
     }
 }
@@ -172,12 +198,22 @@ pub fn passes(m: &Material) -> Vec<Pass> {
 }
 
 pub fn groups(m: &Material) -> Vec<Group> {
-    m.groups.iter().map(|g| Group { name: g.name.clone(), label: text(&g.label, &g.label_zh) }).collect()
+    m.groups
+        .iter()
+        .map(|g| Group {
+            name: g.name.clone(),
+            label: text(&g.label, &g.label_zh),
+        })
+        .collect()
 }
 
 pub fn vertex_inputs(m: &Material) -> Vec<VertexInput> {
     m.requires
         .iter()
-        .map(|a| VertexInput { name: a.name().into(), location: a.location(), format: a.format().into() })
+        .map(|a| VertexInput {
+            name: a.name().into(),
+            location: a.location(),
+            format: a.format().into(),
+        })
         .collect()
 }

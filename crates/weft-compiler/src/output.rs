@@ -26,7 +26,9 @@ impl Staleness {
 }
 
 fn is_preserved(rel: &str, preserve: &[&str]) -> bool {
-    preserve.iter().any(|p| rel == *p || rel.starts_with(&format!("{p}/")))
+    preserve
+        .iter()
+        .any(|p| rel == *p || rel.starts_with(&format!("{p}/")))
 }
 
 /// Every file under `dir`, relative, with `/` separators, sorted.
@@ -42,7 +44,11 @@ pub fn list_files(dir: &Path) -> io::Result<Vec<String>> {
             if p.is_dir() {
                 stack.push(p);
             } else {
-                let rel = p.strip_prefix(dir).expect("under dir").to_string_lossy().replace('\\', "/");
+                let rel = p
+                    .strip_prefix(dir)
+                    .expect("under dir")
+                    .to_string_lossy()
+                    .replace('\\', "/");
                 out.push(rel);
             }
         }
@@ -52,7 +58,11 @@ pub fn list_files(dir: &Path) -> io::Result<Vec<String>> {
 }
 
 /// Compares `files` with `dir` (ignoring preserved paths).
-pub fn check(dir: &Path, files: &BTreeMap<String, Vec<u8>>, preserve: &[&str]) -> io::Result<Staleness> {
+pub fn check(
+    dir: &Path,
+    files: &BTreeMap<String, Vec<u8>>,
+    preserve: &[&str],
+) -> io::Result<Staleness> {
     let mut s = Staleness::default();
     for (rel, bytes) in files {
         match std::fs::read(dir.join(rel)) {
@@ -70,11 +80,23 @@ pub fn check(dir: &Path, files: &BTreeMap<String, Vec<u8>>, preserve: &[&str]) -
 }
 
 /// Replaces `dir` with exactly `files` (plus preserved paths from the old `dir`).
-pub fn write_atomically(dir: &Path, files: &BTreeMap<String, Vec<u8>>, preserve: &[&str]) -> io::Result<()> {
-    let parent = dir.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+pub fn write_atomically(
+    dir: &Path,
+    files: &BTreeMap<String, Vec<u8>>,
+    preserve: &[&str],
+) -> io::Result<()> {
+    let parent = dir
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
     std::fs::create_dir_all(parent)?;
-    let name = dir.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
-    let tmp = tempfile::Builder::new().prefix(&format!(".{name}.tmp-")).tempdir_in(parent)?;
+    let name = dir
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "out".into());
+    let tmp = tempfile::Builder::new()
+        .prefix(&format!(".{name}.tmp-"))
+        .tempdir_in(parent)?;
     for (rel, bytes) in files {
         let path = tmp.path().join(rel);
         if let Some(p) = path.parent() {
@@ -95,7 +117,10 @@ pub fn write_atomically(dir: &Path, files: &BTreeMap<String, Vec<u8>>, preserve:
     }
     let new_dir: PathBuf = tmp.keep();
     if dir.exists() {
-        let old = tempfile::Builder::new().prefix(&format!(".{name}.old-")).tempdir_in(parent)?.keep();
+        let old = tempfile::Builder::new()
+            .prefix(&format!(".{name}.old-"))
+            .tempdir_in(parent)?
+            .keep();
         std::fs::remove_dir(&old)?;
         std::fs::rename(dir, &old)?;
         if let Err(e) = std::fs::rename(&new_dir, dir) {
@@ -130,10 +155,16 @@ mod tests {
         files.insert("b.txt".into(), b"two".to_vec());
         write_atomically(&dir, &files, &["reports"]).unwrap();
         assert!(check(&dir, &files, &["reports"]).unwrap().is_clean());
-        assert_eq!(std::fs::read_to_string(dir.join("reports/r.md")).unwrap(), "kept");
+        assert_eq!(
+            std::fs::read_to_string(dir.join("reports/r.md")).unwrap(),
+            "kept"
+        );
         assert!(!dir.join("a/stale.txt").exists());
         // No temporary folders left behind.
-        let leftovers: Vec<_> = std::fs::read_dir(root.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        let leftovers: Vec<_> = std::fs::read_dir(root.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
         assert_eq!(leftovers.len(), 1);
     }
 }

@@ -6,7 +6,9 @@ use crate::backends::{HLSL_SAMPLER_INDEX_REGISTER, hlsl_options};
 use crate::prelude::{MATERIAL_GROUP, MATERIAL_UNIFORM_BINDING, UNIFORM_STRUCT};
 use naga::valid::ModuleInfo;
 use naga::{AddressSpace, ImageClass, ImageDimension, Module, ShaderStage, TypeInner};
-use weft_meta::{Binding, BindingKind, EntryPoint, HlslBinding, Stage, UniformLayout, UniformMember};
+use weft_meta::{
+    Binding, BindingKind, EntryPoint, HlslBinding, Stage, UniformLayout, UniformMember,
+};
 
 pub fn stage(s: ShaderStage) -> Stage {
     match s {
@@ -20,12 +22,19 @@ pub fn entry_points(module: &Module) -> Vec<EntryPoint> {
     module
         .entry_points
         .iter()
-        .map(|ep| EntryPoint { name: ep.name.clone(), stage: stage(ep.stage) })
+        .map(|ep| EntryPoint {
+            name: ep.name.clone(),
+            stage: stage(ep.stage),
+        })
         .collect()
 }
 
 /// Every resource binding, sorted by (group, binding), with the stages that use it.
-pub fn bindings(module: &Module, info: &ModuleInfo, texture_params: &[(String, u32)]) -> Vec<Binding> {
+pub fn bindings(
+    module: &Module,
+    info: &ModuleInfo,
+    texture_params: &[(String, u32)],
+) -> Vec<Binding> {
     let hlsl = hlsl_options(module);
     let mut out = Vec::new();
     for (handle, var) in module.global_variables.iter() {
@@ -33,7 +42,14 @@ pub fn bindings(module: &Module, info: &ModuleInfo, texture_params: &[(String, u
         let kind = match (&module.types[var.ty].inner, var.space) {
             (TypeInner::Sampler { comparison: false }, _) => BindingKind::Sampler,
             (TypeInner::Sampler { comparison: true }, _) => BindingKind::ComparisonSampler,
-            (TypeInner::Image { dim, arrayed, class }, _) => match (dim, arrayed, class) {
+            (
+                TypeInner::Image {
+                    dim,
+                    arrayed,
+                    class,
+                },
+                _,
+            ) => match (dim, arrayed, class) {
                 (_, _, ImageClass::Depth { .. }) => BindingKind::DepthTexture2d,
                 (ImageDimension::Cube, _, _) => BindingKind::TextureCube,
                 (ImageDimension::D3, _, _) => BindingKind::Texture3d,
@@ -56,14 +72,35 @@ pub fn bindings(module: &Module, info: &ModuleInfo, texture_params: &[(String, u
                 space: rb.group,
                 sampler_index_slot: Some(rb.binding),
             },
-            BindingKind::UniformBuffer => HlslBinding { register: format!("b{}", target.register), space: target.space as u32, sampler_index_slot: None },
-            _ => HlslBinding { register: format!("t{}", target.register), space: target.space as u32, sampler_index_slot: None },
+            BindingKind::UniformBuffer => HlslBinding {
+                register: format!("b{}", target.register),
+                space: target.space as u32,
+                sampler_index_slot: None,
+            },
+            _ => HlslBinding {
+                register: format!("t{}", target.register),
+                space: target.space as u32,
+                sampler_index_slot: None,
+            },
         };
         let name = var.name.clone().unwrap_or_default();
         let parameter = (rb.group == MATERIAL_GROUP)
-            .then(|| texture_params.iter().find(|(_, b)| *b == rb.binding).map(|(p, _)| p.clone()))
+            .then(|| {
+                texture_params
+                    .iter()
+                    .find(|(_, b)| *b == rb.binding)
+                    .map(|(p, _)| p.clone())
+            })
             .flatten();
-        out.push(Binding { group: rb.group, binding: rb.binding, name, kind, parameter, stages, hlsl: hlsl_binding });
+        out.push(Binding {
+            group: rb.group,
+            binding: rb.binding,
+            name,
+            kind,
+            parameter,
+            stages,
+            hlsl: hlsl_binding,
+        });
     }
     out.sort_by_key(|b| (b.group, b.binding));
     out
@@ -92,8 +129,19 @@ fn scalar_name(s: naga::Scalar) -> String {
 fn scalar_or_compound(module: &Module, inner: &TypeInner) -> String {
     match inner {
         TypeInner::Scalar(s) => scalar_name(*s),
-        TypeInner::Vector { size, scalar } => format!("vec{}<{}>", *size as u8, scalar_name(*scalar)),
-        TypeInner::Matrix { columns, rows, scalar } => format!("mat{}x{}<{}>", *columns as u8, *rows as u8, scalar_name(*scalar)),
+        TypeInner::Vector { size, scalar } => {
+            format!("vec{}<{}>", *size as u8, scalar_name(*scalar))
+        }
+        TypeInner::Matrix {
+            columns,
+            rows,
+            scalar,
+        } => format!(
+            "mat{}x{}<{}>",
+            *columns as u8,
+            *rows as u8,
+            scalar_name(*scalar)
+        ),
         TypeInner::Array { base, size, .. } => match size {
             naga::ArraySize::Constant(n) => format!("array<{}, {n}>", type_name(module, *base)),
             _ => format!("array<{}>", type_name(module, *base)),
@@ -105,7 +153,9 @@ fn scalar_or_compound(module: &Module, inner: &TypeInner) -> String {
 /// Layout of the group-1 uniform block, if the variant still has it.
 pub fn material_uniform(module: &Module) -> Option<UniformLayout> {
     let var = module.global_variables.iter().find(|(_, v)| {
-        v.binding.as_ref().is_some_and(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_UNIFORM_BINDING)
+        v.binding
+            .as_ref()
+            .is_some_and(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_UNIFORM_BINDING)
     })?;
     struct_layout(module, var.1.ty)
 }
@@ -118,7 +168,10 @@ pub fn struct_layout(module: &Module, ty: naga::Handle<naga::Type>) -> Option<Un
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).ok()?;
     Some(UniformLayout {
-        struct_name: module.types[ty].name.clone().unwrap_or_else(|| UNIFORM_STRUCT.into()),
+        struct_name: module.types[ty]
+            .name
+            .clone()
+            .unwrap_or_else(|| UNIFORM_STRUCT.into()),
         size: *span,
         align: layouter[ty].alignment.round_up(1),
         members: members
@@ -137,7 +190,11 @@ pub fn struct_layout(module: &Module, ty: naga::Handle<naga::Type>) -> Option<Un
 /// Shader locations the vertex entry points read.
 pub fn vertex_locations(module: &Module) -> Vec<u32> {
     let mut out = Vec::new();
-    for ep in module.entry_points.iter().filter(|e| e.stage == ShaderStage::Vertex) {
+    for ep in module
+        .entry_points
+        .iter()
+        .filter(|e| e.stage == ShaderStage::Vertex)
+    {
         for arg in &ep.function.arguments {
             let mut push = |b: &Option<naga::Binding>| {
                 if let Some(naga::Binding::Location { location, .. }) = b {

@@ -10,9 +10,7 @@
 //!
 //! Keywords in `constant` mode are left as overrides (WGSL pipeline constants).
 
-use naga::{
-    BinaryOperator, Block, Expression, Handle, Literal, Module, Statement, UnaryOperator,
-};
+use naga::{BinaryOperator, Block, Expression, Handle, Literal, Module, Statement, UnaryOperator};
 use std::collections::{HashMap, HashSet};
 
 /// Values to bake into a variant: override name -> value.
@@ -81,7 +79,8 @@ fn specialise_function(
     let mut live = HashSet::new();
     collect_evaluated(&f.body, &mut live);
     let exprs = &f.expressions;
-    f.named_expressions.retain(|h, _| live.contains(h) || exprs[*h].needs_pre_emit());
+    f.named_expressions
+        .retain(|h, _| live.contains(h) || exprs[*h].needs_pre_emit());
 }
 
 /// Expressions a block evaluates: emitted ranges and statement results.
@@ -89,8 +88,12 @@ fn collect_evaluated(block: &Block, live: &mut HashSet<Handle<Expression>>) {
     for stmt in block.iter() {
         match stmt {
             Statement::Emit(range) => live.extend(range.clone()),
-            Statement::Call { result: Some(r), .. }
-            | Statement::Atomic { result: Some(r), .. }
+            Statement::Call {
+                result: Some(r), ..
+            }
+            | Statement::Atomic {
+                result: Some(r), ..
+            }
             | Statement::WorkGroupUniformLoad { result: r, .. }
             | Statement::SubgroupBallot { result: r, .. }
             | Statement::SubgroupGather { result: r, .. }
@@ -102,11 +105,15 @@ fn collect_evaluated(block: &Block, live: &mut HashSet<Handle<Expression>>) {
                 collect_evaluated(accept, live);
                 collect_evaluated(reject, live);
             }
-            Statement::Loop { body, continuing, .. } => {
+            Statement::Loop {
+                body, continuing, ..
+            } => {
                 collect_evaluated(body, live);
                 collect_evaluated(continuing, live);
             }
-            Statement::Switch { cases, .. } => cases.iter().for_each(|c| collect_evaluated(&c.body, live)),
+            Statement::Switch { cases, .. } => {
+                cases.iter().for_each(|c| collect_evaluated(&c.body, live))
+            }
             _ => {}
         }
     }
@@ -117,21 +124,27 @@ fn prune_block(module: &Module, exprs: &naga::Arena<Expression>, block: Block) -
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
         let stmt = match stmt {
-            Statement::If { condition, accept, reject } => {
-                match eval(module, exprs, condition) {
-                    Some(Value::Bool(taken)) => {
-                        let chosen = if taken { accept } else { reject };
-                        Statement::Block(prune_block(module, exprs, chosen))
-                    }
-                    _ => Statement::If {
-                        condition,
-                        accept: prune_block(module, exprs, accept),
-                        reject: prune_block(module, exprs, reject),
-                    },
+            Statement::If {
+                condition,
+                accept,
+                reject,
+            } => match eval(module, exprs, condition) {
+                Some(Value::Bool(taken)) => {
+                    let chosen = if taken { accept } else { reject };
+                    Statement::Block(prune_block(module, exprs, chosen))
                 }
-            }
+                _ => Statement::If {
+                    condition,
+                    accept: prune_block(module, exprs, accept),
+                    reject: prune_block(module, exprs, reject),
+                },
+            },
             Statement::Block(b) => Statement::Block(prune_block(module, exprs, b)),
-            Statement::Loop { body, continuing, break_if } => Statement::Loop {
+            Statement::Loop {
+                body,
+                continuing,
+                break_if,
+            } => Statement::Loop {
                 body: prune_block(module, exprs, body),
                 continuing: prune_block(module, exprs, continuing),
                 break_if,
@@ -183,7 +196,10 @@ fn eval(module: &Module, exprs: &naga::Arena<Expression>, h: Handle<Expression>)
     match &exprs[h] {
         Expression::Literal(l) => literal(l),
         Expression::Constant(c) => eval_global(module, module.constants[*c].init),
-        Expression::Unary { op: UnaryOperator::LogicalNot, expr } => match eval(module, exprs, *expr)? {
+        Expression::Unary {
+            op: UnaryOperator::LogicalNot,
+            expr,
+        } => match eval(module, exprs, *expr)? {
             Value::Bool(b) => Some(Value::Bool(!b)),
             _ => None,
         },
@@ -193,9 +209,13 @@ fn eval(module: &Module, exprs: &naga::Arena<Expression>, h: Handle<Expression>)
             // Short-circuit forms fold with one side known.
             match (op, l, r) {
                 (BinaryOperator::LogicalAnd, Some(Value::Bool(false)), _)
-                | (BinaryOperator::LogicalAnd, _, Some(Value::Bool(false))) => return Some(Value::Bool(false)),
+                | (BinaryOperator::LogicalAnd, _, Some(Value::Bool(false))) => {
+                    return Some(Value::Bool(false));
+                }
                 (BinaryOperator::LogicalOr, Some(Value::Bool(true)), _)
-                | (BinaryOperator::LogicalOr, _, Some(Value::Bool(true))) => return Some(Value::Bool(true)),
+                | (BinaryOperator::LogicalOr, _, Some(Value::Bool(true))) => {
+                    return Some(Value::Bool(true));
+                }
                 _ => {}
             }
             let (l, r) = (l?, r?);
@@ -214,7 +234,9 @@ fn eval(module: &Module, exprs: &naga::Arena<Expression>, h: Handle<Expression>)
             match (l, r) {
                 (Value::Bool(a), Value::Bool(b)) => match op {
                     BinaryOperator::LogicalAnd | BinaryOperator::And => Some(Value::Bool(a && b)),
-                    BinaryOperator::LogicalOr | BinaryOperator::InclusiveOr => Some(Value::Bool(a || b)),
+                    BinaryOperator::LogicalOr | BinaryOperator::InclusiveOr => {
+                        Some(Value::Bool(a || b))
+                    }
                     BinaryOperator::Equal => Some(Value::Bool(a == b)),
                     BinaryOperator::NotEqual => Some(Value::Bool(a != b)),
                     _ => None,

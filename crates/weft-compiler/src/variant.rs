@@ -22,7 +22,10 @@ pub struct CompiledVariant {
 }
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
@@ -35,7 +38,12 @@ fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
 /// All combinations of the `constant`-mode keywords' values (one empty combination if none).
 fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
     let mut combos = vec![Vec::new()];
-    for (k, kw) in m.keywords.iter().enumerate().filter(|(_, k)| k.mode == KeywordMode::Constant) {
+    for (k, kw) in m
+        .keywords
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| k.mode == KeywordMode::Constant)
+    {
         combos = combos
             .into_iter()
             .flat_map(|c| {
@@ -58,15 +66,22 @@ pub fn compile_variant(
 ) -> Result<CompiledVariant, String> {
     let id = key.id(m);
     let mut values = Bindings::default();
-    values.values.insert(TIER_OVERRIDE.into(), Literal::U32(key.tier as u32));
+    values
+        .values
+        .insert(TIER_OVERRIDE.into(), Literal::U32(key.tier as u32));
     for &(k, v) in &key.keywords {
         let kw = &m.keywords[k];
-        values.values.insert(kw.name.clone(), keyword_literal(kw.kind, v));
+        values
+            .values
+            .insert(kw.name.clone(), keyword_literal(kw.kind, v));
     }
     let specialised = specialise(module, &values);
-    let info = validator()
-        .validate(&specialised)
-        .map_err(|e| format!("variant `{id}` fails validation after specialisation: {}", e.as_inner()))?;
+    let info = validator().validate(&specialised).map_err(|e| {
+        format!(
+            "variant `{id}` fails validation after specialisation: {}",
+            e.as_inner()
+        )
+    })?;
     let wgsl = backends::emit_wgsl(&specialised, &info)?;
 
     let mut files: Vec<(String, Vec<u8>)> = vec![(format!("{id}.wgsl"), wgsl.clone().into_bytes())];
@@ -87,10 +102,18 @@ pub fn compile_variant(
             let kw = &m.keywords[k];
             suffix.push_str(&format!("+{}-{}", kw.name.to_lowercase(), kw.values[v]));
             constants.insert(kw.name.clone(), kw.values[v].clone());
-            pc.insert(kw.name.clone(), if kw.kind == KeywordKind::Toggle { (v == 1) as u8 as f64 } else { v as f64 });
+            pc.insert(
+                kw.name.clone(),
+                if kw.kind == KeywordKind::Toggle {
+                    (v == 1) as u8 as f64
+                } else {
+                    v as f64
+                },
+            );
         }
-        let (resolved, _) = naga::back::pipeline_constants::process_overrides(&specialised, &info, None, &pc)
-            .map_err(|e| format!("variant `{id}`: resolving pipeline constants: {e}"))?;
+        let (resolved, _) =
+            naga::back::pipeline_constants::process_overrides(&specialised, &info, None, &pc)
+                .map_err(|e| format!("variant `{id}`: resolving pipeline constants: {e}"))?;
         let mut resolved = resolved.into_owned();
         for (_, o) in resolved.overrides.iter_mut() {
             o.name = None;
@@ -100,7 +123,8 @@ pub fn compile_variant(
         let rinfo = validator()
             .validate(&resolved)
             .map_err(|e| format!("variant `{id}{suffix}` fails validation: {}", e.as_inner()))?;
-        let (spirv, hlsl, msl, glsl) = backends::emit_others(&resolved, &rinfo).map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
+        let (spirv, hlsl, msl, glsl) = backends::emit_others(&resolved, &rinfo)
+            .map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
         let stem = format!("{id}{suffix}");
         let mut add = |lang: &str, name: String, bytes: Vec<u8>, entry: Option<String>| {
             by_lang.entry(lang.into()).or_default().push(ShaderFile {
@@ -115,7 +139,12 @@ pub fn compile_variant(
         add("hlsl", format!("{stem}.hlsl"), hlsl.into_bytes(), None);
         add("msl", format!("{stem}.metal"), msl.into_bytes(), None);
         for (entry, stage, src) in glsl {
-            add("glsl", format!("{stem}.{entry}.{}.glsl", stage_suffix(stage)), src.into_bytes(), Some(entry));
+            add(
+                "glsl",
+                format!("{stem}.{entry}.{}.glsl", stage_suffix(stage)),
+                src.into_bytes(),
+                Some(entry),
+            );
         }
     }
 
@@ -126,7 +155,11 @@ pub fn compile_variant(
             let name = o.name.clone()?;
             let kw = m.keyword(&name)?;
             Some(PipelineConstant {
-                ty: if kw.kind == KeywordKind::Toggle { "bool".into() } else { "u32".into() },
+                ty: if kw.kind == KeywordKind::Toggle {
+                    "bool".into()
+                } else {
+                    "u32".into()
+                },
                 default: kw.values[kw.default].clone(),
                 name,
             })
@@ -138,7 +171,11 @@ pub fn compile_variant(
         .requires
         .iter()
         .filter(|a| locations.contains(&a.location()))
-        .map(|a| weft_meta::VertexInput { name: a.name().into(), location: a.location(), format: a.format().into() })
+        .map(|a| weft_meta::VertexInput {
+            name: a.name().into(),
+            location: a.location(),
+            format: a.format().into(),
+        })
         .collect();
 
     let shader = VariantShader {
@@ -149,7 +186,12 @@ pub fn compile_variant(
         material_uniform: reflect::material_uniform(&specialised),
         vertex_inputs,
     };
-    Ok(CompiledVariant { id, files, shader, wgsl })
+    Ok(CompiledVariant {
+        id,
+        files,
+        shader,
+        wgsl,
+    })
 }
 
 /// Maps each variant to the first earlier variant with identical WGSL.

@@ -1,35 +1,87 @@
 //! Cross-reference checks over a parsed material: names that must exist,
 //! names that must not collide, preset values, instance sources and the
 //! variant budget.
+//!
+//! References written in the TOML (`show_if`, `group`, `[variants].exclude`,
+//! preset values, `instances`) are checked by [`check_references`], which the
+//! parser calls once the whole file is read, with the [`Sites`] where each
+//! reference was written so errors point at it. [`check`] covers the rest.
 
-use crate::diag::{Diagnostics, did_you_mean};
+use crate::diag::{Diagnostics, Span, did_you_mean};
 use crate::model::*;
 use crate::variants;
 use codespan_reporting::diagnostic::Label;
+use std::collections::HashMap;
 use weft_meta::{Condition, KeywordKind, ParamKind};
 
+/// Where the references of a material file were written (byte spans in its
+/// TOML). Anything missing falls back to the declaration's span.
+#[derive(Clone, Debug, Default)]
+pub struct Sites {
+    /// Parameter name -> its `show_if` string.
+    pub param_show_if: HashMap<String, Span>,
+    /// Keyword name -> its `show_if` string.
+    pub keyword_show_if: HashMap<String, Span>,
+    /// Parameter name -> its `group` string.
+    pub param_group: HashMap<String, Span>,
+    /// Keyword name -> its `group` string.
+    pub keyword_group: HashMap<String, Span>,
+    /// One per entry of `Material::exclude`: the filter string.
+    pub exclude: Vec<Span>,
+    /// (preset, key) -> (span of the key, span of the value).
+    pub preset_values: HashMap<(String, String), (Span, Span)>,
+    /// One per entry of `Material::passes`: the `instances` value, if written.
+    pub instances: Vec<Option<Span>>,
+}
+
+/// Checks after the includes are resolved: generated names and the budget.
 pub fn check(m: &mut Material, diags: &mut Diagnostics) {
     check_names(m, diags);
-    check_groups(m, diags);
+    check_pass_names(m, diags);
+    check_budget(m, diags);
+}
+
+/// Checks the references the TOML makes (see [`Sites`]); called by the parser.
+pub fn check_references(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
+    check_groups(m, sites, diags);
+    let at = |span: Option<&Span>, decl: &Loc| Loc {
+        file: decl.file,
+        span: span.cloned().unwrap_or(decl.span.clone()),
+    };
     for p in &m.params {
         if let Some(c) = &p.show_if {
-            check_condition(m, c, &p.decl, "show_if", diags);
+            check_condition(
+                m,
+                c,
+                &at(sites.param_show_if.get(&p.name), &p.decl),
+                "show_if",
+                diags,
+            );
         }
     }
     for k in &m.keywords {
         if let Some(c) = &k.show_if {
-            check_condition(m, c, &k.decl, "show_if", diags);
+            check_condition(
+                m,
+                c,
+                &at(sites.keyword_show_if.get(&k.name), &k.decl),
+                "show_if",
+                diags,
+            );
         }
     }
-    let decl = Loc { file: m.file, span: m.max_variants_span.clone().unwrap_or(m.decl.span.clone()) };
-    for e in &m.exclude {
+    let decl = Loc {
+        file: m.file,
+        span: m.max_variants_span.clone().unwrap_or(m.decl.span.clone()),
+    };
+    for (i, e) in m.exclude.iter().enumerate() {
+        let loc = at(sites.exclude.get(i), &decl);
         for c in e {
-            check_condition(m, c, &decl, "exclude", diags);
+            check_condition(m, c, &loc, "exclude", diags);
         }
     }
-    check_presets(m, diags);
-    check_passes(m, diags);
-    check_budget(m, diags);
+    check_presets(m, sites, diags);
+    check_instances(m, sites, diags);
 }
 
 /// Identifiers the prelude generates must be unique.
@@ -44,33 +96,92 @@ fn check_names(m: &Material, diags: &mut Diagnostics) {
     for k in &m.keywords {
         names.push((k.name.clone(), &k.decl));
         if k.kind == KeywordKind::Enum {
-            names.extend(k.values.iter().map(|v| (format!("{}_{}", k.name, v.to_uppercase()), &k.decl)));
+            names.extend(
+                k.values
+                    .iter()
+                    .map(|v| (format!("{}_{}", k.name, v.to_uppercase()), &k.decl)),
+            );
         }
     }
     for (i, (name, loc)) in names.iter().enumerate() {
         if let Some((_, first)) = names[..i].iter().find(|(n, _)| n == name) {
-            let d = diags.error("duplicate", format!("`{name}` is declared twice"), loc.file, loc.span.clone(), "second declaration");
-            d.labels.push(Label::secondary(first.file, first.span.clone()).with_message("first declared here"));
+            let d = diags.error(
+                "duplicate",
+                format!("`{name}` is declared twice"),
+                loc.file,
+                loc.span.clone(),
+                "second declaration",
+            );
+            d.labels.push(
+                Label::secondary(first.file, first.span.clone())
+                    .with_message("first declared here"),
+            );
             d.notes.push("parameter names, generated members (`<texture>_st`) and keyword constants share one WGSL namespace".into());
         }
     }
 }
 
-fn check_groups(m: &mut Material, diags: &mut Diagnostics) {
+fn check_groups(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
     let declared = !m.groups.is_empty();
-    let mut used: Vec<(String, Loc)> = m.params.iter().map(|p| (p.group.clone(), p.decl.clone())).collect();
-    used.extend(m.keywords.iter().map(|k| (k.group.clone(), k.decl.clone())));
+    let mut used: Vec<(String, Loc)> = m
+        .params
+        .iter()
+        .map(|p| {
+            (
+                p.group.clone(),
+                Loc {
+                    file: p.decl.file,
+                    span: sites
+                        .param_group
+                        .get(&p.name)
+                        .cloned()
+                        .unwrap_or(p.decl.span.clone()),
+                },
+            )
+        })
+        .collect();
+    used.extend(m.keywords.iter().map(|k| {
+        (
+            k.group.clone(),
+            Loc {
+                file: k.decl.file,
+                span: sites
+                    .keyword_group
+                    .get(&k.name)
+                    .cloned()
+                    .unwrap_or(k.decl.span.clone()),
+            },
+        )
+    }));
     for (g, loc) in used {
         if m.groups.iter().any(|x| x.name == g) {
             continue;
         }
         if declared && g != "main" {
-            let hint = did_you_mean(&g, m.groups.iter().map(|x| x.name.as_str()))
-                .map_or_else(|| "declare it under [groups]".to_string(), |s| format!("did you mean `{s}`?"));
-            let d = diags.error("unknown-group", format!("unknown group `{g}`"), loc.file, loc.span, "uses an undeclared group");
+            let names: Vec<&str> = m.groups.iter().map(|x| x.name.as_str()).collect();
+            let hint = did_you_mean(&g, names.iter().copied()).map_or_else(
+                || {
+                    format!(
+                        "declare `[groups.{g}]`, or use one of: {}",
+                        names.join(", ")
+                    )
+                },
+                |s| format!("did you mean `{s}`?"),
+            );
+            let d = diags.error(
+                "unknown-group",
+                format!("unknown group `{g}`"),
+                loc.file,
+                loc.span,
+                "not declared under [groups]",
+            );
             d.notes.push(hint);
         } else {
-            m.groups.push(Group { label: crate::parse::humanize(&g), name: g, label_zh: None });
+            m.groups.push(Group {
+                label: crate::parse::humanize(&g),
+                name: g,
+                label_zh: None,
+            });
         }
     }
 }
@@ -80,9 +191,21 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
         Some(m.tiers.values.clone())
     } else if let Some(k) = m.keyword(&c.subject) {
         Some(k.values.clone())
-    } else if m.param(&c.subject).is_some_and(|p| p.kind == ParamKind::Bool) {
+    } else if m
+        .param(&c.subject)
+        .is_some_and(|p| p.kind == ParamKind::Bool)
+    {
         if what == "exclude" {
-            let d = diags.error("bad-condition", format!("`exclude` can only name keywords and `tier`, not parameter `{}`", c.subject), loc.file, loc.span.clone(), "in this filter");
+            let d = diags.error(
+                "bad-condition",
+                format!(
+                    "`exclude` can only name keywords and `tier`, not parameter `{}`",
+                    c.subject
+                ),
+                loc.file,
+                loc.span.clone(),
+                "in this filter",
+            );
             d.notes.push("parameters do not create variants".into());
             return;
         }
@@ -93,24 +216,59 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
     let Some(values) = values else {
         let mut names: Vec<&str> = m.keywords.iter().map(|k| k.name.as_str()).collect();
         names.push("tier");
-        names.extend(m.params.iter().filter(|p| p.kind == ParamKind::Bool).map(|p| p.name.as_str()));
-        let d = diags.error("unknown-keyword", format!("unknown keyword `{}` in {what}", c.subject), loc.file, loc.span.clone(), format!("{what} names `{}`", c.subject));
-        d.notes.push(match did_you_mean(&c.subject, names.iter().copied()) {
-            Some(s) => format!("did you mean `{s}`?"),
-            None => format!("known names: {}", names.join(", ")),
-        });
+        names.extend(
+            m.params
+                .iter()
+                .filter(|p| p.kind == ParamKind::Bool)
+                .map(|p| p.name.as_str()),
+        );
+        let d = diags.error(
+            "unknown-keyword",
+            format!("unknown keyword `{}` in {what}", c.subject),
+            loc.file,
+            loc.span.clone(),
+            format!(
+                "`{}` is not a keyword, `tier` or a bool parameter",
+                c.subject
+            ),
+        );
+        d.notes
+            .push(match did_you_mean(&c.subject, names.iter().copied()) {
+                Some(s) => format!("did you mean `{s}`?"),
+                None => format!("known names: {}", names.join(", ")),
+            });
         return;
     };
     if !values.contains(&c.value) {
-        let d = diags.error("unknown-value", format!("`{}` is not a value of `{}` in {what}", c.value, c.subject), loc.file, loc.span.clone(), "here");
-        d.notes.push(format!("values: {}", values.join(", ")));
+        let d = diags.error(
+            "unknown-value",
+            format!("`{}` is not a value of `{}` in {what}", c.value, c.subject),
+            loc.file,
+            loc.span.clone(),
+            format!("`{}` has no value `{}`", c.subject, c.value),
+        );
+        d.notes.push(
+            match did_you_mean(&c.value, values.iter().map(String::as_str)) {
+                Some(s) => format!(
+                    "did you mean `{s}`? values of `{}`: {}",
+                    c.subject,
+                    values.join(", ")
+                ),
+                None => format!("values of `{}`: {}", c.subject, values.join(", ")),
+            },
+        );
     }
 }
 
-fn check_presets(m: &Material, diags: &mut Diagnostics) {
+fn check_presets(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
     for preset in &m.presets {
         for (key, value) in &preset.values {
-            let loc = &preset.decl;
+            let file = preset.decl.file;
+            let (key_span, value_span) = sites
+                .preset_values
+                .get(&(preset.name.clone(), key.clone()))
+                .cloned()
+                .unwrap_or((preset.decl.span.clone(), preset.decl.span.clone()));
             match (m.param(key), m.keyword(key), value) {
                 (Some(p), _, PresetValue::Param(v)) => {
                     let nums: Vec<f64> = match v {
@@ -119,35 +277,122 @@ fn check_presets(m: &Material, diags: &mut Diagnostics) {
                         _ => vec![],
                     };
                     let ok_type = match (p.kind, v) {
-                        (ParamKind::Float | ParamKind::Int, ParamValue::Float(_)) => true,
+                        (ParamKind::Float, ParamValue::Float(_)) => true,
+                        (ParamKind::Int, ParamValue::Float(x)) => x.fract() == 0.0,
                         (ParamKind::Bool, ParamValue::Bool(_)) => true,
-                        (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 | ParamKind::Color, ParamValue::Vector(xs)) => {
-                            xs.len() == p.kind.components().unwrap_or(0) || (p.kind == ParamKind::Color && xs.len() == 3)
+                        (
+                            ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 | ParamKind::Color,
+                            ParamValue::Vector(xs),
+                        ) => {
+                            xs.len() == p.kind.components().unwrap_or(0)
+                                || (p.kind == ParamKind::Color && xs.len() == 3)
                         }
                         (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(_)) => true,
                         _ => false,
                     };
                     if !ok_type {
-                        diags.error("wrong-type", format!("preset `{}` gives `{key}` a value of the wrong type", preset.name), loc.file, loc.span.clone(), format!("`{key}` is a {}", p.kind.name()));
+                        let d = diags.error(
+                            "wrong-type",
+                            format!(
+                                "preset `{}` gives `{key}` a value of the wrong type",
+                                preset.name
+                            ),
+                            file,
+                            value_span,
+                            format!("not a {} value", p.kind.name()),
+                        );
+                        d.labels.push(
+                            Label::secondary(p.decl.file, p.decl.span.clone())
+                                .with_message(format!("`{key}` is a {}", p.kind.name())),
+                        );
+                        d.notes.push(preset_value_hint(p.kind).into());
                     } else if let Some(r) = p.range {
                         if nums.iter().any(|x| *x < r[0] || *x > r[1]) {
-                            diags.error("out-of-range", format!("preset `{}` sets `{key}` outside its range [{}, {}]", preset.name, r[0], r[1]), loc.file, loc.span.clone(), "in this preset");
+                            let d = diags.error(
+                                "out-of-range",
+                                format!(
+                                    "preset `{}` sets `{key}` outside its range [{}, {}]",
+                                    preset.name, r[0], r[1]
+                                ),
+                                file,
+                                value_span,
+                                format!("not in [{}, {}]", r[0], r[1]),
+                            );
+                            d.labels.push(
+                                Label::secondary(p.decl.file, p.decl.span.clone())
+                                    .with_message(format!("`{key}` declared here")),
+                            );
                         }
                     }
                 }
                 (_, Some(k), PresetValue::Keyword(v)) => {
                     if !k.values.contains(v) {
-                        diags.error("unknown-value", format!("preset `{}`: `{v}` is not a value of keyword `{key}`", preset.name), loc.file, loc.span.clone(), "in this preset");
+                        let d = diags.error(
+                            "unknown-value",
+                            format!(
+                                "preset `{}`: `{v}` is not a value of keyword `{key}`",
+                                preset.name
+                            ),
+                            file,
+                            value_span,
+                            "unknown value",
+                        );
+                        d.notes
+                            .push(match did_you_mean(v, k.values.iter().map(String::as_str)) {
+                                Some(s) => format!(
+                                    "did you mean `{s}`? values of `{key}`: {}",
+                                    k.values.join(", ")
+                                ),
+                                None => format!("values of `{key}`: {}", k.values.join(", ")),
+                            });
                     }
                 }
                 (None, None, PresetValue::Keyword(v)) if key == "tier" => {
                     if !m.tiers.values.contains(v) {
-                        diags.error("unknown-value", format!("preset `{}`: unknown tier `{v}`", preset.name), loc.file, loc.span.clone(), "in this preset");
+                        let d = diags.error(
+                            "unknown-value",
+                            format!("preset `{}`: unknown tier `{v}`", preset.name),
+                            file,
+                            value_span,
+                            "unknown tier",
+                        );
+                        d.notes
+                            .push(format!("tiers: {}", m.tiers.values.join(", ")));
                     }
                 }
+                (None, Some(k), PresetValue::Param(_)) => {
+                    let d = diags.error(
+                        "wrong-type",
+                        format!(
+                            "preset `{}` gives keyword `{key}` a value of the wrong type",
+                            preset.name
+                        ),
+                        file,
+                        value_span,
+                        "expected a value name",
+                    );
+                    d.notes.push(format!(
+                        "write one of: {}",
+                        k.values
+                            .iter()
+                            .map(|v| format!("\"{v}\""))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ));
+                }
                 _ => {
-                    let names = m.params.iter().map(|p| p.name.as_str()).chain(m.keywords.iter().map(|k| k.name.as_str()));
-                    let d = diags.error("unknown-key", format!("preset `{}` sets unknown `{key}`", preset.name), loc.file, loc.span.clone(), "in this preset");
+                    let names = m
+                        .params
+                        .iter()
+                        .map(|p| p.name.as_str())
+                        .chain(m.keywords.iter().map(|k| k.name.as_str()));
+                    let d = diags.error(
+                        "unknown-key",
+                        format!("preset `{}` sets unknown `{key}`", preset.name),
+                        file,
+                        key_span,
+                        "not a parameter, keyword or `tier`",
+                    );
                     if let Some(s) = did_you_mean(key, names) {
                         d.notes.push(format!("did you mean `{s}`?"));
                     }
@@ -157,18 +402,92 @@ fn check_presets(m: &Material, diags: &mut Diagnostics) {
     }
 }
 
-fn check_passes(m: &Material, diags: &mut Diagnostics) {
-    for (i, pass) in m.passes.iter().enumerate() {
-        if m.passes[..i].iter().any(|p| p.name == pass.name) {
-            diags.error("duplicate", format!("pass `{}` is declared twice", pass.name), pass.decl.file, pass.decl.span.clone(), "second pass with this name");
+fn preset_value_hint(kind: ParamKind) -> &'static str {
+    match kind {
+        ParamKind::Float => "write a number",
+        ParamKind::Int => "write a whole number",
+        ParamKind::Bool => "write true or false",
+        ParamKind::Vec2 => "write 2 numbers: [x, y]",
+        ParamKind::Vec3 => "write 3 numbers: [x, y, z]",
+        ParamKind::Vec4 => "write 4 numbers: [x, y, z, w]",
+        ParamKind::Color => "write 3 or 4 numbers: [r, g, b] or [r, g, b, a]",
+        ParamKind::Texture2d | ParamKind::Cube => {
+            "write a built-in texture: \"white\", \"black\", \"gray\" or \"normal\""
         }
-        if let Instances::Param(name) = &pass.instances {
-            match m.param(name) {
-                Some(p) if p.kind == ParamKind::Int => {}
-                _ => {
-                    let d = diags.error("unknown-param", format!("pass `{}` takes its instance count from `{name}`, which is not an int parameter", pass.name), pass.decl.file, pass.decl.span.clone(), "in this pass");
-                    d.notes.push("declare an int parameter (e.g. a shell count) and name it in `instances`".into());
-                }
+        ParamKind::Curve | ParamKind::Gradient => "presets cannot set curves or gradients",
+    }
+}
+
+fn check_pass_names(m: &Material, diags: &mut Diagnostics) {
+    for (i, pass) in m.passes.iter().enumerate() {
+        if let Some(first) = m.passes[..i].iter().find(|p| p.name == pass.name) {
+            let d = diags.error(
+                "duplicate",
+                format!("pass `{}` is declared twice", pass.name),
+                pass.decl.file,
+                pass.decl.span.clone(),
+                "second pass with this name",
+            );
+            d.labels.push(
+                Label::secondary(first.decl.file, first.decl.span.clone())
+                    .with_message("first pass with this name"),
+            );
+            d.notes.push("give each [[pass]] a distinct `name`".into());
+        }
+    }
+}
+
+fn check_instances(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
+    for (i, pass) in m.passes.iter().enumerate() {
+        let Instances::Param(name) = &pass.instances else {
+            continue;
+        };
+        let span = sites
+            .instances
+            .get(i)
+            .cloned()
+            .flatten()
+            .unwrap_or(pass.decl.span.clone());
+        match m.param(name) {
+            Some(p) if p.kind == ParamKind::Int => {}
+            Some(p) => {
+                let d = diags.error(
+                    "unknown-param",
+                    format!("pass `{}` takes its instance count from `{name}`, which is not an int parameter", pass.name),
+                    pass.decl.file,
+                    span,
+                    "instance count named here",
+                );
+                d.labels.push(
+                    Label::secondary(p.decl.file, p.decl.span.clone())
+                        .with_message(format!("`{name}` is a {} parameter", p.kind.name())),
+                );
+                d.notes.push(format!(
+                    "make `{name}` `type = \"int\"`, or give `instances` a fixed count"
+                ));
+            }
+            None => {
+                let ints: Vec<&str> = m
+                    .params
+                    .iter()
+                    .filter(|p| p.kind == ParamKind::Int)
+                    .map(|p| p.name.as_str())
+                    .collect();
+                let d = diags.error(
+                    "unknown-param",
+                    format!("pass `{}` takes its instance count from `{name}`, which is not a parameter", pass.name),
+                    pass.decl.file,
+                    span,
+                    "no such parameter",
+                );
+                d.notes
+                    .push(match did_you_mean(name, ints.iter().copied()) {
+                    Some(s) => format!("did you mean `{s}`?"),
+                    None => {
+                        "declare an int parameter (e.g. a shell count) and name it in `instances`"
+                            .into()
+                    }
+                });
             }
         }
     }
@@ -193,7 +512,14 @@ fn check_budget(m: &Material, diags: &mut Diagnostics) {
         for k in m.static_keywords() {
             parts.push(format!("{}: {} values", k.name, k.values.len()));
         }
-        d.notes.push(format!("{} = {all} combinations, {} excluded by [variants].exclude", parts.join(" x "), all - kept));
-        d.notes.push("raise `max_variants`, exclude combinations, or make a keyword `mode = \"constant\"`".into());
+        d.notes.push(format!(
+            "{} = {all} combinations, {} excluded by [variants].exclude",
+            parts.join(" x "),
+            all - kept
+        ));
+        d.notes.push(
+            "raise `max_variants`, exclude combinations, or make a keyword `mode = \"constant\"`"
+                .into(),
+        );
     }
 }

@@ -51,7 +51,8 @@ mod tests {
 
     #[test]
     fn parses_forms() {
-        let c = parse_condition_text("NORMAL_MAP && SPHERE_MAP != off && tier == fast && !USE").unwrap();
+        let c = parse_condition_text("NORMAL_MAP && SPHERE_MAP != off && tier == fast && !USE")
+            .unwrap();
         assert_eq!(c.len(), 4);
         assert_eq!(c[0].value, "on");
         assert_eq!(c[1].op, ConditionOp::NotEqual);

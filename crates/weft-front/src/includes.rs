@@ -63,13 +63,20 @@ pub struct Resolver<'a> {
 impl<'a> Resolver<'a> {
     pub fn new(db: &'a mut SourceDb, diags: &'a mut Diagnostics, root: &Path) -> Self {
         let root = root.canonicalize().unwrap_or_else(|_| root.to_path_buf());
-        Self { db, diags, root, done: Vec::new(), stack: Vec::new() }
+        Self {
+            db,
+            diags,
+            root,
+            done: Vec::new(),
+            stack: Vec::new(),
+        }
     }
 
     /// Resolves an include path (relative to the root).
     pub fn include(&mut self, rel: &str, origin: Origin) {
         let candidate = self.root.join(rel);
         let Ok(canonical) = candidate.canonicalize() else {
+            let root = self.shown_root();
             let d = self.diags.error(
                 "missing-include",
                 format!("cannot find include `{rel}`"),
@@ -78,12 +85,13 @@ impl<'a> Resolver<'a> {
                 "no such file",
             );
             d.notes.push(format!(
-                "include paths are relative to the materials root `{}`",
-                self.root.display()
+                "include paths are relative to the materials root `{}` (the nearest folder above the material that has a `lib/` folder)",
+                root
             ));
             return;
         };
         if !canonical.starts_with(&self.root) {
+            let root = self.shown_root();
             let d = self.diags.error(
                 "include-outside-root",
                 format!("include `{rel}` is outside the materials root"),
@@ -92,8 +100,8 @@ impl<'a> Resolver<'a> {
                 "leaves the materials folder",
             );
             d.notes.push(format!(
-                "only files under `{}` can be included; move the file into `lib/`",
-                self.root.display()
+                "only files under the materials root `{}` can be included; move the file into its `lib/` folder",
+                root
             ));
             return;
         }
@@ -107,12 +115,13 @@ impl<'a> Resolver<'a> {
             Err(_) => {
                 let d = self.diags.error(
                     "missing-source",
-                    format!("cannot find WGSL source `{}`", path.display()),
+                    format!("cannot find WGSL source `{}`", display_path(path)),
                     origin.file,
                     origin.span,
                     "no such file",
                 );
-                d.notes.push("`source` is relative to the material's TOML file".into());
+                d.notes
+                    .push("`source` is relative to the material's TOML file".into());
             }
         }
     }
@@ -122,8 +131,10 @@ impl<'a> Resolver<'a> {
             let mut d = Diagnostic::error()
                 .with_code("include-cycle")
                 .with_message(format!("include cycle through `{}`", self.rel(&path)))
-                .with_labels(vec![Label::primary(origin.file, origin.span.clone())
-                    .with_message("this include closes the cycle")]);
+                .with_labels(vec![
+                    Label::primary(origin.file, origin.span.clone())
+                        .with_message("this include closes the cycle"),
+                ]);
             let chain: Vec<String> = self.stack[pos..]
                 .iter()
                 .map(|(p, _)| self.rel(p))
@@ -146,7 +157,7 @@ impl<'a> Resolver<'a> {
                 Err(e) => {
                     self.diags.error(
                         "io",
-                        format!("cannot read `{}`: {e}", path.display()),
+                        format!("cannot read `{}`: {e}", display_path(&path)),
                         origin.file,
                         origin.span,
                         "named here",
@@ -157,11 +168,25 @@ impl<'a> Resolver<'a> {
         };
         self.stack.push((path.clone(), origin));
         for dir in directives(self.db.text(id)) {
-            self.include(&dir.path, Origin { file: id, span: dir.span });
+            self.include(
+                &dir.path,
+                Origin {
+                    file: id,
+                    span: dir.span,
+                },
+            );
         }
         self.stack.pop();
         let rel_path = self.rel(&path);
         self.done.push(SourceFile { file: id, rel_path });
+    }
+
+    /// The root as shown in messages (relative to the working directory when inside it).
+    fn shown_root(&self) -> String {
+        match display_path(&self.root) {
+            s if s.is_empty() => ".".into(),
+            s => s,
+        }
     }
 
     fn rel(&self, p: &Path) -> String {
@@ -178,7 +203,9 @@ impl<'a> Resolver<'a> {
 
 /// A path as shown in diagnostics: relative to the working directory when inside it.
 pub fn display_path(path: &Path) -> String {
-    let cwd = std::env::current_dir().ok().and_then(|c| c.canonicalize().ok());
+    let cwd = std::env::current_dir()
+        .ok()
+        .and_then(|c| c.canonicalize().ok());
     match cwd.and_then(|c| path.strip_prefix(&c).ok().map(Path::to_path_buf)) {
         Some(rel) => rel.to_string_lossy().replace('\\', "/"),
         None => path.to_string_lossy().replace('\\', "/"),

@@ -24,7 +24,9 @@ use toml_reader::Cx;
 /// The materials root for a TOML file: the nearest ancestor directory that has
 /// a `lib/` folder, else the file's own directory.
 pub fn find_root(toml_path: &Path) -> PathBuf {
-    let abs = toml_path.canonicalize().unwrap_or_else(|_| toml_path.to_path_buf());
+    let abs = toml_path
+        .canonicalize()
+        .unwrap_or_else(|_| toml_path.to_path_buf());
     let mut dir = abs.parent();
     while let Some(d) = dir {
         if d.join("lib").is_dir() {
@@ -36,7 +38,12 @@ pub fn find_root(toml_path: &Path) -> PathBuf {
 }
 
 /// Loads and checks one material. On error, `None` and the reasons in `diags`.
-pub fn load_material(path: &Path, root: &Path, db: &mut SourceDb, diags: &mut Diagnostics) -> Option<Material> {
+pub fn load_material(
+    path: &Path,
+    root: &Path,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> Option<Material> {
     let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
     let text = match std::fs::read_to_string(&abs) {
         Ok(t) => t,
@@ -59,7 +66,10 @@ pub fn load_material(path: &Path, root: &Path, db: &mut SourceDb, diags: &mut Di
     // WGSL sources: the material's own file last, its includes first.
     let (source, extra) = parse::source_entries(&text);
     let (source_rel, source_span) = source.unwrap_or_else(|| {
-        let stem = abs.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        let stem = abs
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
         (format!("{stem}.wgsl"), material.decl.span.clone())
     });
     let mut resolver = Resolver::new(db, diags, root);
@@ -67,7 +77,13 @@ pub fn load_material(path: &Path, root: &Path, db: &mut SourceDb, diags: &mut Di
         resolver.include(&inc, Origin { file, span });
     }
     let dir = abs.parent().unwrap_or(Path::new("."));
-    resolver.source(&dir.join(&source_rel), Origin { file, span: source_span });
+    resolver.source(
+        &dir.join(&source_rel),
+        Origin {
+            file,
+            span: source_span,
+        },
+    );
     material.sources = resolver.finish();
 
     check::check(&mut material, diags);

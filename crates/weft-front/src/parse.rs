@@ -3,10 +3,13 @@
 //! Cross-references (show-if targets, groups, presets, budget) are checked
 //! afterwards in `check.rs`.
 
+use crate::check::Sites;
 use crate::condition::parse_condition_text;
 use crate::diag::Span;
 use crate::model::*;
-use crate::toml_reader::{Cx, Table, Value, expect_array, expect_number, expect_string, type_error};
+use crate::toml_reader::{
+    Cx, Table, Value, expect_array, expect_number, expect_string, type_error,
+};
 use std::path::Path;
 use toml::de::{DeTable, DeValue};
 use weft_meta::{
@@ -166,7 +169,10 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         name,
     };
 
-    if let Some(g) = top.get("groups").and_then(|v| Table::new(v, "[groups]", cx)) {
+    if let Some(g) = top
+        .get("groups")
+        .and_then(|v| Table::new(v, "[groups]", cx))
+    {
         for (gname, gspan, gv) in g.entries() {
             let Some(t) = Table::new(gv, format!("group `{gname}`"), cx) else {
                 continue;
@@ -181,16 +187,35 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         }
     }
 
-    if let Some(p) = top.get("params").and_then(|v| Table::new(v, "[params]", cx)) {
+    let mut sites = Sites::default();
+    if let Some(p) = top
+        .get("params")
+        .and_then(|v| Table::new(v, "[params]", cx))
+    {
         for (pname, pspan, pv) in p.entries() {
+            if let Some(span) = value_span(pv, "show_if") {
+                sites.param_show_if.insert(pname.to_string(), span);
+            }
+            if let Some(span) = value_span(pv, "group") {
+                sites.param_group.insert(pname.to_string(), span);
+            }
             if let Some(param) = parse_param(pname, pspan, pv, cx) {
                 material.params.push(param);
             }
         }
     }
 
-    if let Some(k) = top.get("keywords").and_then(|v| Table::new(v, "[keywords]", cx)) {
+    if let Some(k) = top
+        .get("keywords")
+        .and_then(|v| Table::new(v, "[keywords]", cx))
+    {
         for (kname, kspan, kv) in k.entries() {
+            if let Some(span) = value_span(kv, "show_if") {
+                sites.keyword_show_if.insert(kname.to_string(), span);
+            }
+            if let Some(span) = value_span(kv, "group") {
+                sites.keyword_group.insert(kname.to_string(), span);
+            }
             if let Some(kw) = parse_keyword(kname, kspan, kv, cx) {
                 material.keywords.push(kw);
             }
@@ -199,7 +224,10 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
 
     parse_tiers(&top, &mut material, cx);
 
-    if let Some(v) = top.get("variants").and_then(|v| Table::new(v, "[variants]", cx)) {
+    if let Some(v) = top
+        .get("variants")
+        .and_then(|v| Table::new(v, "[variants]", cx))
+    {
         v.check_keys(VARIANTS_KEYS, cx);
         if let Some(n) = v.integer("max_variants", cx) {
             if n < 1 {
@@ -217,16 +245,30 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         if let Some(list) = v.strings("exclude", cx) {
             for (text, span) in list {
                 match parse_condition_text(&text) {
-                    Ok(conds) => material.exclude.push(conds),
+                    Ok(conds) => {
+                        material.exclude.push(conds);
+                        sites.exclude.push(span);
+                    }
                     Err(msg) => bad_condition(cx, &msg, span),
                 }
             }
         }
     }
 
-    if let Some(p) = top.get("presets").and_then(|v| Table::new(v, "[presets]", cx)) {
+    if let Some(p) = top
+        .get("presets")
+        .and_then(|v| Table::new(v, "[presets]", cx))
+    {
         for (name, span, pv) in p.entries() {
-            if let Some(preset) = parse_preset(name, span, pv, cx) {
+            if let Some(DeValue::Table(values)) = value_of(pv, "values").map(|v| v.get_ref()) {
+                for (key, value) in values.iter() {
+                    sites.preset_values.insert(
+                        (name.to_string(), key.get_ref().to_string()),
+                        (key.span(), value.span()),
+                    );
+                }
+            }
+            if let Some(preset) = parse_preset(name, span, pv, &material.params, cx) {
                 material.presets.push(preset);
             }
         }
@@ -238,15 +280,32 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
                 for item in items {
                     if let Some(pass) = parse_pass(item, cx) {
                         material.passes.push(pass);
+                        sites.instances.push(value_span(item, "instances"));
                     }
                 }
             }
         }
-        None => material.passes.push(default_pass(cx.file, material.decl.span.clone())),
+        None => material
+            .passes
+            .push(default_pass(cx.file, material.decl.span.clone())),
     }
 
-    // The WGSL source is resolved by `includes.rs`; remember where it was named.
+    // Cross-references, while the spans of what the file wrote are at hand.
+    // The WGSL source is resolved afterwards by `includes.rs`.
+    crate::check::check_references(&mut material, &sites, cx.diags);
     Some(material)
+}
+
+/// `key` of a TOML table value, if it is a table that has it.
+fn value_of<'a, 'i>(table: &'a Value<'i>, key: &str) -> Option<&'a Value<'i>> {
+    match table.get_ref() {
+        DeValue::Table(t) => t.get(key),
+        _ => None,
+    }
+}
+
+fn value_span(table: &Value, key: &str) -> Option<Span> {
+    value_of(table, key).map(|v| v.span())
 }
 
 /// The `source` and `includes` entries of [material], with spans, for `includes.rs`.
@@ -308,12 +367,25 @@ fn parse_requires(mat: &Table, cx: &mut Cx) -> Vec<VertexAttribute> {
     for (name, span) in list {
         match VertexAttribute::ALL.iter().find(|a| a.name() == name) {
             Some(a) if !out.contains(a) => out.push(*a),
-            Some(_) => cx.error("duplicate", format!("`{name}` is listed twice"), span, "again here"),
+            Some(_) => cx.error(
+                "duplicate",
+                format!("`{name}` is listed twice"),
+                span,
+                "again here",
+            ),
             None => {
                 let names: Vec<&str> = VertexAttribute::ALL.iter().map(|a| a.name()).collect();
-                let hint = crate::diag::did_you_mean(&name, names.iter().copied())
-                    .map_or_else(|| format!("expected one of: {}", names.join(", ")), |s| format!("did you mean `{s}`?"));
-                cx.error_with_note("unknown-value", format!("unknown vertex input `{name}`"), span, "not a vertex input", hint);
+                let hint = crate::diag::did_you_mean(&name, names.iter().copied()).map_or_else(
+                    || format!("expected one of: {}", names.join(", ")),
+                    |s| format!("did you mean `{s}`?"),
+                );
+                cx.error_with_note(
+                    "unknown-value",
+                    format!("unknown vertex input `{name}`"),
+                    span,
+                    "not a vertex input",
+                    hint,
+                );
             }
         }
     }
@@ -340,9 +412,17 @@ fn parse_kind(t: &Table, cx: &mut Cx) -> Option<ParamKind> {
         Some(k) => Some(*k),
         None => {
             let names = ParamKind::ALL.map(|k| k.name());
-            let hint = crate::diag::did_you_mean(&name, names.iter().copied())
-                .map_or_else(|| format!("expected one of: {}", names.join(", ")), |s| format!("did you mean `{s}`?"));
-            cx.error_with_note("unknown-value", format!("unknown parameter type `{name}`"), v.span(), "unknown type", hint);
+            let hint = crate::diag::did_you_mean(&name, names.iter().copied()).map_or_else(
+                || format!("expected one of: {}", names.join(", ")),
+                |s| format!("did you mean `{s}`?"),
+            );
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown parameter type `{name}`"),
+                v.span(),
+                "unknown type",
+                hint,
+            );
             None
         }
     }
@@ -380,7 +460,11 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
                 "not used for this type",
                 format!(
                     "`{key}` is for: {}",
-                    kinds.iter().map(|k| k.name()).collect::<Vec<_>>().join(", ")
+                    kinds
+                        .iter()
+                        .map(|k| k.name())
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ),
             );
         }
@@ -406,7 +490,10 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
         if soft[0] < hard[0] || soft[1] > hard[1] {
             cx.error(
                 "out-of-range",
-                format!("`soft_range` of parameter `{name}` is outside its `range` [{}, {}]", hard[0], hard[1]),
+                format!(
+                    "`soft_range` of parameter `{name}` is outside its `range` [{}, {}]",
+                    hard[0], hard[1]
+                ),
                 t.span_of("soft_range"),
                 "must lie inside range",
             );
@@ -415,13 +502,23 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
     let step = t.number("step", cx);
     if let Some(s) = step {
         if s <= 0.0 {
-            cx.error("out-of-range", "`step` must be positive", t.span_of("step"), "here");
+            cx.error(
+                "out-of-range",
+                "`step` must be positive",
+                t.span_of("step"),
+                "here",
+            );
         }
     }
     let power = t.number("power", cx);
     if let Some(p) = power {
         if p <= 0.0 {
-            cx.error("out-of-range", "`power` must be positive", t.span_of("power"), "here");
+            cx.error(
+                "out-of-range",
+                "`power` must be positive",
+                t.span_of("power"),
+                "here",
+            );
         }
     }
     let samples = match kind {
@@ -430,8 +527,17 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
         _ => 0,
     };
     if matches!(kind, ParamKind::Curve | ParamKind::Gradient) && !(2..=4096).contains(&samples) {
-        let key = if kind == ParamKind::Curve { "samples" } else { "width" };
-        cx.error("out-of-range", format!("`{key}` must be between 2 and 4096"), t.span_of(key), "here");
+        let key = if kind == ParamKind::Curve {
+            "samples"
+        } else {
+            "width"
+        };
+        cx.error(
+            "out-of-range",
+            format!("`{key}` must be between 2 and 4096"),
+            t.span_of(key),
+            "here",
+        );
     }
 
     let default = parse_default(&t, kind, hdr, range, cx)?;
@@ -486,7 +592,14 @@ pub fn humanize(name: &str) -> String {
     }
 }
 
-fn out_of_range(cx: &mut Cx, what: &str, value: f64, range: [f64; 2], span: Span, range_span: Span) {
+fn out_of_range(
+    cx: &mut Cx,
+    what: &str,
+    value: f64,
+    range: [f64; 2],
+    span: Span,
+    range_span: Span,
+) {
     let d = cx.diags.error(
         "default-out-of-range",
         format!("default of {what} is outside its range"),
@@ -495,12 +608,19 @@ fn out_of_range(cx: &mut Cx, what: &str, value: f64, range: [f64; 2], span: Span
         format!("{value} is not in [{}, {}]", range[0], range[1]),
     );
     d.labels.push(
-        codespan_reporting::diagnostic::Label::secondary(cx.file, range_span).with_message("range declared here"),
+        codespan_reporting::diagnostic::Label::secondary(cx.file, range_span)
+            .with_message("range declared here"),
     );
     d.notes.push("change the default or widen `range`".into());
 }
 
-fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>, cx: &mut Cx) -> Option<ParamValue> {
+fn parse_default(
+    t: &Table,
+    kind: ParamKind,
+    hdr: bool,
+    range: Option<[f64; 2]>,
+    cx: &mut Cx,
+) -> Option<ParamValue> {
     let what = t.what.clone();
     let range_span = t.span_of("range");
     let Some(v) = t.get("default") else {
@@ -515,12 +635,28 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
             ParamKind::Color => ParamValue::Vector(vec![1.0; 4]),
             ParamKind::Texture2d | ParamKind::Cube => ParamValue::Texture(TextureDefault::White),
             ParamKind::Curve => ParamValue::Curve(vec![
-                Keyframe { time: 0.0, value: 0.0, in_slope: 0.0, out_slope: 0.0 },
-                Keyframe { time: 1.0, value: 0.0, in_slope: 0.0, out_slope: 0.0 },
+                Keyframe {
+                    time: 0.0,
+                    value: 0.0,
+                    in_slope: 0.0,
+                    out_slope: 0.0,
+                },
+                Keyframe {
+                    time: 1.0,
+                    value: 0.0,
+                    in_slope: 0.0,
+                    out_slope: 0.0,
+                },
             ]),
             ParamKind::Gradient => ParamValue::Gradient(vec![
-                GradientStop { position: 0.0, color: [0.0, 0.0, 0.0, 1.0] },
-                GradientStop { position: 1.0, color: [1.0, 1.0, 1.0, 1.0] },
+                GradientStop {
+                    position: 0.0,
+                    color: [0.0, 0.0, 0.0, 1.0],
+                },
+                GradientStop {
+                    position: 1.0,
+                    color: [1.0, 1.0, 1.0, 1.0],
+                },
             ]),
         });
     };
@@ -547,11 +683,22 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
         ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 | ParamKind::Color => {
             let items = expect_array(v, &dwhat, cx)?;
             let n = kind.components().unwrap_or(4);
-            let ok_len = if kind == ParamKind::Color { items.len() == 3 || items.len() == 4 } else { items.len() == n };
+            let ok_len = if kind == ParamKind::Color {
+                items.len() == 3 || items.len() == 4
+            } else {
+                items.len() == n
+            };
             if !ok_len {
                 cx.error(
                     "wrong-type",
-                    format!("{dwhat} must have {} components", if kind == ParamKind::Color { "3 or 4".to_string() } else { n.to_string() }),
+                    format!(
+                        "{dwhat} must have {} components",
+                        if kind == ParamKind::Color {
+                            "3 or 4".to_string()
+                        } else {
+                            n.to_string()
+                        }
+                    ),
                     v.span(),
                     format!("{} components here", items.len()),
                 );
@@ -574,12 +721,22 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
             match TextureDefault::ALL.iter().find(|d| d.name() == name) {
                 Some(d) => Some(ParamValue::Texture(*d)),
                 None => {
+                    let names = TextureDefault::ALL.map(|d| d.name());
+                    let hint = crate::diag::did_you_mean(&name, names.iter().copied()).map_or_else(
+                        || format!("use one of: {}", names.join(", ")),
+                        |x| {
+                            format!(
+                                "did you mean `{x}`? (built-in textures: {})",
+                                names.join(", ")
+                            )
+                        },
+                    );
                     cx.error_with_note(
                         "unknown-value",
                         format!("unknown texture default `{name}`"),
                         v.span(),
                         "not a built-in texture",
-                        "use one of: white, black, gray, normal",
+                        hint,
                     );
                     None
                 }
@@ -591,8 +748,14 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
             for item in items {
                 let k = Table::new(item, "a curve keyframe", cx)?;
                 k.check_keys(KEYFRAME_KEYS, cx);
-                let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx)) else {
-                    cx.error("missing-key", "a keyframe needs `time` and `value`", item.span(), "here");
+                let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx))
+                else {
+                    cx.error(
+                        "missing-key",
+                        "a keyframe needs `time` and `value`",
+                        item.span(),
+                        "here",
+                    );
                     return None;
                 };
                 if let Some(r) = range {
@@ -602,7 +765,12 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
                 }
                 if let Some(prev) = keys.last().map(|k: &Keyframe| k.time) {
                     if time <= prev {
-                        cx.error("unordered-keys", "curve keyframes must have increasing `time`", k.span_of("time"), format!("{time} is not after {prev}"));
+                        cx.error(
+                            "unordered-keys",
+                            "curve keyframes must have increasing `time`",
+                            k.span_of("time"),
+                            format!("{time} is not after {prev}"),
+                        );
                     }
                 }
                 keys.push(Keyframe {
@@ -613,7 +781,12 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
                 });
             }
             if keys.is_empty() {
-                cx.error("wrong-type", "a curve needs at least one keyframe", v.span(), "empty");
+                cx.error(
+                    "wrong-type",
+                    "a curve needs at least one keyframe",
+                    v.span(),
+                    "empty",
+                );
                 return None;
             }
             Some(ParamValue::Curve(keys))
@@ -624,29 +797,63 @@ fn parse_default(t: &Table, kind: ParamKind, hdr: bool, range: Option<[f64; 2]>,
             for item in items {
                 let s = Table::new(item, "a gradient stop", cx)?;
                 s.check_keys(STOP_KEYS, cx);
-                let (Some(position), Some(color)) = (s.number("position", cx), s.numbers("color", cx)) else {
-                    cx.error("missing-key", "a gradient stop needs `position` and `color`", item.span(), "here");
+                let (Some(position), Some(color)) =
+                    (s.number("position", cx), s.numbers("color", cx))
+                else {
+                    cx.error(
+                        "missing-key",
+                        "a gradient stop needs `position` and `color`",
+                        item.span(),
+                        "here",
+                    );
                     return None;
                 };
                 if !(0.0..=1.0).contains(&position) {
-                    cx.error("out-of-range", "gradient stop `position` must be in [0, 1]", s.span_of("position"), "here");
+                    cx.error(
+                        "out-of-range",
+                        "gradient stop `position` must be in [0, 1]",
+                        s.span_of("position"),
+                        "here",
+                    );
                 }
-                if color.len() != 3 && color.len() != 4 || color.iter().any(|c| !(0.0..=1.0).contains(c)) {
-                    cx.error("wrong-type", "gradient stop `color` must be 3 or 4 numbers in [0, 1]", s.span_of("color"), "here");
+                if color.len() != 3 && color.len() != 4
+                    || color.iter().any(|c| !(0.0..=1.0).contains(c))
+                {
+                    cx.error(
+                        "wrong-type",
+                        "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
+                        s.span_of("color"),
+                        "here",
+                    );
                     return None;
                 }
                 if let Some(prev) = stops.last().map(|s: &GradientStop| s.position) {
                     if position < prev {
-                        cx.error("unordered-keys", "gradient stops must have non-decreasing `position`", s.span_of("position"), "out of order");
+                        cx.error(
+                            "unordered-keys",
+                            "gradient stops must have non-decreasing `position`",
+                            s.span_of("position"),
+                            "out of order",
+                        );
                     }
                 }
                 stops.push(GradientStop {
                     position,
-                    color: [color[0], color[1], color[2], color.get(3).copied().unwrap_or(1.0)],
+                    color: [
+                        color[0],
+                        color[1],
+                        color[2],
+                        color.get(3).copied().unwrap_or(1.0),
+                    ],
                 });
             }
             if stops.is_empty() {
-                cx.error("wrong-type", "a gradient needs at least one stop", v.span(), "empty");
+                cx.error(
+                    "wrong-type",
+                    "a gradient needs at least one stop",
+                    v.span(),
+                    "empty",
+                );
                 return None;
             }
             Some(ParamValue::Gradient(stops))
@@ -671,8 +878,17 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
         "toggle" => KeywordKind::Toggle,
         "enum" => KeywordKind::Enum,
         other => {
-            let hint = crate::diag::did_you_mean(other, ["toggle", "enum"]).map_or("use `toggle` or `enum`".to_string(), |s| format!("did you mean `{s}`?"));
-            cx.error_with_note("unknown-value", format!("unknown keyword type `{other}`"), t.span_of("type"), "unknown", hint);
+            let hint = crate::diag::did_you_mean(other, ["toggle", "enum"])
+                .map_or("use `toggle` or `enum`".to_string(), |s| {
+                    format!("did you mean `{s}`?")
+                });
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown keyword type `{other}`"),
+                t.span_of("type"),
+                "unknown",
+                hint,
+            );
             return None;
         }
     };
@@ -680,34 +896,65 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
         None | Some("static") => KeywordMode::Static,
         Some("constant") => KeywordMode::Constant,
         Some(other) => {
-            cx.error_with_note("unknown-value", format!("unknown keyword mode `{other}`"), t.span_of("mode"), "unknown", "use `static` (a variant per value) or `constant` (a pipeline constant)");
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown keyword mode `{other}`"),
+                t.span_of("mode"),
+                "unknown",
+                "use `static` (a variant per value) or `constant` (a pipeline constant)",
+            );
             return None;
         }
     };
     let values: Vec<String> = match kind {
         KeywordKind::Toggle => {
             if t.get("values").is_some() {
-                cx.error("unknown-key", "a toggle keyword has the fixed values off/on", t.key_span("values").unwrap_or(t.span.clone()), "remove `values`, or use type = \"enum\"");
+                cx.error(
+                    "unknown-key",
+                    "a toggle keyword has the fixed values off/on",
+                    t.key_span("values").unwrap_or(t.span.clone()),
+                    "remove `values`, or use type = \"enum\"",
+                );
             }
             vec!["off".into(), "on".into()]
         }
         KeywordKind::Enum => {
             let Some(list) = t.strings("values", cx) else {
-                cx.error("missing-key", format!("enum keyword `{name}` needs `values`"), name_span.clone(), "declared here");
+                cx.error(
+                    "missing-key",
+                    format!("enum keyword `{name}` needs `values`"),
+                    name_span.clone(),
+                    "declared here",
+                );
                 return None;
             };
             let mut out: Vec<String> = Vec::new();
             for (value, span) in list {
                 if !is_snake_ident(&value) {
-                    cx.error("bad-name", format!("keyword value `{value}` is not a lower-case identifier"), span, "becomes a WGSL constant suffix");
+                    cx.error(
+                        "bad-name",
+                        format!("keyword value `{value}` is not a lower-case identifier"),
+                        span,
+                        "becomes a WGSL constant suffix",
+                    );
                 } else if out.contains(&value) {
-                    cx.error("duplicate", format!("keyword value `{value}` is listed twice"), span, "again here");
+                    cx.error(
+                        "duplicate",
+                        format!("keyword value `{value}` is listed twice"),
+                        span,
+                        "again here",
+                    );
                 } else {
                     out.push(value);
                 }
             }
             if out.len() < 2 {
-                cx.error("wrong-type", format!("enum keyword `{name}` needs at least two values"), t.span_of("values"), "here");
+                cx.error(
+                    "wrong-type",
+                    format!("enum keyword `{name}` needs at least two values"),
+                    t.span_of("values"),
+                    "here",
+                );
                 return None;
             }
             out
@@ -717,17 +964,41 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
         None => 0,
         Some(dv) => {
             let value = match (kind, dv.get_ref()) {
-                (KeywordKind::Toggle, DeValue::Boolean(b)) => if *b { "on" } else { "off" }.to_string(),
+                (KeywordKind::Toggle, DeValue::Boolean(b)) => {
+                    if *b { "on" } else { "off" }.to_string()
+                }
                 (_, DeValue::String(s)) => s.to_string(),
                 (_, other) => {
-                    type_error(cx, &format!("`default` of keyword `{name}`"), "a value name (or true/false for a toggle)", other, dv.span());
+                    type_error(
+                        cx,
+                        &format!("`default` of keyword `{name}`"),
+                        "a value name (or true/false for a toggle)",
+                        other,
+                        dv.span(),
+                    );
                     return None;
                 }
             };
             match values.iter().position(|v| *v == value) {
                 Some(i) => i,
                 None => {
-                    cx.error_with_note("unknown-value", format!("`{value}` is not a value of keyword `{name}`"), dv.span(), "unknown value", format!("values: {}", values.join(", ")));
+                    let hint = match crate::diag::did_you_mean(
+                        &value,
+                        values.iter().map(String::as_str),
+                    ) {
+                        Some(s) => format!(
+                            "did you mean `{s}`? values of `{name}`: {}",
+                            values.join(", ")
+                        ),
+                        None => format!("values of `{name}`: {}", values.join(", ")),
+                    };
+                    cx.error_with_note(
+                        "unknown-value",
+                        format!("`{value}` is not a value of keyword `{name}`"),
+                        dv.span(),
+                        "unknown value",
+                        hint,
+                    );
                     0
                 }
             }
@@ -753,13 +1024,18 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
         mode,
         values,
         default,
-        label: t.string("label", cx).unwrap_or_else(|| humanize(&name.to_lowercase())),
+        label: t
+            .string("label", cx)
+            .unwrap_or_else(|| humanize(&name.to_lowercase())),
         label_zh: t.string("label_zh", cx),
         tooltip: t.string("tooltip", cx),
         tooltip_zh: t.string("tooltip_zh", cx),
         group: t.string("group", cx).unwrap_or_else(|| "main".into()),
         show_if,
-        decl: Loc { file: cx.file, span: name_span },
+        decl: Loc {
+            file: cx.file,
+            span: name_span,
+        },
     })
 }
 
@@ -774,26 +1050,50 @@ fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
         );
         return;
     };
-    let Some(items) = expect_array(v, "`tier`", cx) else { return };
+    let Some(items) = expect_array(v, "`tier`", cx) else {
+        return;
+    };
     let mut default = None;
     for item in items {
-        let Some(t) = Table::new(item, "a [[tier]]", cx) else { continue };
+        let Some(t) = Table::new(item, "a [[tier]]", cx) else {
+            continue;
+        };
         t.check_keys(TIER_KEYS, cx);
         let Some(name) = t.string("name", cx) else {
-            cx.error("missing-key", "a [[tier]] needs a `name`", item.span(), "here");
+            cx.error(
+                "missing-key",
+                "a [[tier]] needs a `name`",
+                item.span(),
+                "here",
+            );
             continue;
         };
         if !is_snake_ident(&name) {
-            cx.error("bad-name", format!("tier name `{name}` is not a lower-case identifier"), t.span_of("name"), "becomes TIER_<NAME> in WGSL");
+            cx.error(
+                "bad-name",
+                format!("tier name `{name}` is not a lower-case identifier"),
+                t.span_of("name"),
+                "becomes TIER_<NAME> in WGSL",
+            );
             continue;
         }
         if material.tiers.values.contains(&name) {
-            cx.error("duplicate", format!("tier `{name}` is declared twice"), t.span_of("name"), "again here");
+            cx.error(
+                "duplicate",
+                format!("tier `{name}` is declared twice"),
+                t.span_of("name"),
+                "again here",
+            );
             continue;
         }
         if t.boolean("default", cx) == Some(true) {
             if default.is_some() {
-                cx.error("duplicate", "more than one tier is marked `default = true`", t.span_of("default"), "second default");
+                cx.error(
+                    "duplicate",
+                    "more than one tier is marked `default = true`",
+                    t.span_of("default"),
+                    "second default",
+                );
             }
             default = Some(material.tiers.values.len());
         }
@@ -815,31 +1115,82 @@ fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
             );
         }
     }
-    material.tiers.reference = material.tiers.values.iter().position(|t| t == "reference").unwrap_or(0);
+    material.tiers.reference = material
+        .tiers
+        .values
+        .iter()
+        .position(|t| t == "reference")
+        .unwrap_or(0);
     material.tiers.default = default
         .or_else(|| material.tiers.values.iter().position(|t| t == "fast"))
         .unwrap_or(0);
 }
 
-fn parse_preset(name: &str, span: Span, v: &Value, cx: &mut Cx) -> Option<Preset> {
+fn parse_preset(
+    name: &str,
+    span: Span,
+    v: &Value,
+    params: &[Param],
+    cx: &mut Cx,
+) -> Option<Preset> {
     let t = Table::new(v, format!("preset `{name}`"), cx)?;
     t.check_keys(PRESET_KEYS, cx);
     let mut values = Vec::new();
-    if let Some(vals) = t.get("values").and_then(|v| Table::new(v, format!("values of preset `{name}`"), cx)) {
+    if let Some(vals) = t
+        .get("values")
+        .and_then(|v| Table::new(v, format!("values of preset `{name}`"), cx))
+    {
         for (key, _kspan, val) in vals.entries() {
             let pv = match val.get_ref() {
-                DeValue::String(s) if is_upper_ident(key) || key == "tier" => PresetValue::Keyword(s.to_string()),
-                DeValue::Boolean(b) if is_upper_ident(key) => PresetValue::Keyword(if *b { "on" } else { "off" }.into()),
+                DeValue::String(s) if is_upper_ident(key) || key == "tier" => {
+                    PresetValue::Keyword(s.to_string())
+                }
+                DeValue::Boolean(b) if is_upper_ident(key) => {
+                    PresetValue::Keyword(if *b { "on" } else { "off" }.into())
+                }
                 DeValue::Boolean(b) => PresetValue::Param(ParamValue::Bool(*b)),
                 DeValue::Integer(_) | DeValue::Float(_) => {
                     PresetValue::Param(ParamValue::Float(expect_number(val, "a preset value", cx)?))
                 }
-                DeValue::String(s) => PresetValue::Param(ParamValue::Texture(
-                    TextureDefault::ALL.iter().copied().find(|d| d.name() == s.as_ref()).unwrap_or(TextureDefault::White),
+                DeValue::String(s) => {
+                    let builtin = TextureDefault::ALL
+                        .iter()
+                        .copied()
+                        .find(|d| d.name() == s.as_ref());
+                    let texture = params.iter().any(|p| {
+                        p.name == key && matches!(p.kind, ParamKind::Texture2d | ParamKind::Cube)
+                    });
+                    if builtin.is_none() && texture {
+                        let names = TextureDefault::ALL.map(|d| d.name());
+                        let hint = crate::diag::did_you_mean(s, names.iter().copied()).map_or_else(
+                            || format!("use one of: {}", names.join(", ")),
+                            |x| format!("did you mean `{x}`?"),
+                        );
+                        cx.error_with_note(
+                            "unknown-value",
+                            format!("preset `{name}`: unknown texture `{s}` for `{key}`"),
+                            val.span(),
+                            "not a built-in texture",
+                            hint,
+                        );
+                        continue;
+                    }
+                    // A string for a non-texture parameter is reported by the reference checks.
+                    PresetValue::Param(ParamValue::Texture(
+                        builtin.unwrap_or(TextureDefault::White),
+                    ))
+                }
+                DeValue::Array(_) => PresetValue::Param(ParamValue::Vector(
+                    crate::toml_reader::expect_numbers(val, "a preset value", cx)?,
                 )),
-                DeValue::Array(_) => PresetValue::Param(ParamValue::Vector(crate::toml_reader::expect_numbers(val, "a preset value", cx)?)),
                 other => {
-                    type_error(cx, &format!("preset value `{key}`"), "a number, bool, string or array", other, val.span());
+                    type_error(
+                        cx,
+                        &format!("preset value `{key}`"),
+                        "a number, bool, string or array",
+                        other,
+                        val.span(),
+                    );
                     continue;
                 }
             };
@@ -851,7 +1202,10 @@ fn parse_preset(name: &str, span: Span, v: &Value, cx: &mut Cx) -> Option<Preset
         label: t.string("label", cx).unwrap_or_else(|| humanize(name)),
         label_zh: t.string("label_zh", cx),
         values,
-        decl: Loc { file: cx.file, span },
+        decl: Loc {
+            file: cx.file,
+            span,
+        },
     })
 }
 
@@ -876,9 +1230,17 @@ fn pick<T: Copy>(t: &Table, key: &str, options: &[(&str, T)], cx: &mut Cx) -> Op
         Some((_, v)) => Some(*v),
         None => {
             let names: Vec<&str> = options.iter().map(|(n, _)| *n).collect();
-            let hint = crate::diag::did_you_mean(&s, names.iter().copied())
-                .map_or_else(|| format!("expected one of: {}", names.join(", ")), |x| format!("did you mean `{x}`?"));
-            cx.error_with_note("unknown-value", format!("unknown `{key}` value `{s}` in {}", t.what), t.span_of(key), "unknown", hint);
+            let hint = crate::diag::did_you_mean(&s, names.iter().copied()).map_or_else(
+                || format!("expected one of: {}", names.join(", ")),
+                |x| format!("did you mean `{x}`?"),
+            );
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown `{key}` value `{s}` in {}", t.what),
+                t.span_of(key),
+                "unknown",
+                hint,
+            );
             None
         }
     }
@@ -892,18 +1254,51 @@ fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
     pass.vertex = t.string("vertex", cx).unwrap_or(pass.vertex);
     pass.fragment = t.string("fragment", cx).unwrap_or(pass.fragment);
     use BlendMode as B;
-    if let Some(b) = pick(&t, "blend", &[("opaque", B::Opaque), ("alpha", B::Alpha), ("premultiplied", B::Premultiplied), ("additive", B::Additive), ("multiply", B::Multiply)], cx) {
+    if let Some(b) = pick(
+        &t,
+        "blend",
+        &[
+            ("opaque", B::Opaque),
+            ("alpha", B::Alpha),
+            ("premultiplied", B::Premultiplied),
+            ("additive", B::Additive),
+            ("multiply", B::Multiply),
+        ],
+        cx,
+    ) {
         pass.blend = b;
         if b != B::Opaque {
             pass.depth_write = false;
             pass.queue = 3000;
         }
     }
-    if let Some(c) = pick(&t, "cull", &[("none", CullMode::None), ("front", CullMode::Front), ("back", CullMode::Back)], cx) {
+    if let Some(c) = pick(
+        &t,
+        "cull",
+        &[
+            ("none", CullMode::None),
+            ("front", CullMode::Front),
+            ("back", CullMode::Back),
+        ],
+        cx,
+    ) {
         pass.cull = c;
     }
     use DepthTest as D;
-    if let Some(d) = pick(&t, "depth_test", &[("always", D::Always), ("never", D::Never), ("less", D::Less), ("less_equal", D::LessEqual), ("equal", D::Equal), ("greater", D::Greater), ("greater_equal", D::GreaterEqual)], cx) {
+    if let Some(d) = pick(
+        &t,
+        "depth_test",
+        &[
+            ("always", D::Always),
+            ("never", D::Never),
+            ("less", D::Less),
+            ("less_equal", D::LessEqual),
+            ("equal", D::Equal),
+            ("greater", D::Greater),
+            ("greater_equal", D::GreaterEqual),
+        ],
+        cx,
+    ) {
         pass.depth_test = d;
     }
     pass.depth_write = t.boolean("depth_write", cx).unwrap_or(pass.depth_write);
@@ -913,12 +1308,23 @@ fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
             DeValue::Integer(_) => {
                 let n = crate::toml_reader::expect_integer(iv, "`instances`", cx)?;
                 if !(1..=4096).contains(&n) {
-                    cx.error("out-of-range", "`instances` must be between 1 and 4096", iv.span(), "here");
+                    cx.error(
+                        "out-of-range",
+                        "`instances` must be between 1 and 4096",
+                        iv.span(),
+                        "here",
+                    );
                 }
                 pass.instances = Instances::Fixed(n.clamp(1, 4096) as u32);
             }
             DeValue::String(s) => pass.instances = Instances::Param(s.to_string()),
-            other => type_error(cx, "`instances`", "a count or an int parameter's name", other, iv.span()),
+            other => type_error(
+                cx,
+                "`instances`",
+                "a count or an int parameter's name",
+                other,
+                iv.span(),
+            ),
         }
     }
     Some(pass)

@@ -6,12 +6,20 @@ use weft_meta::{GradientStop, Keyframe};
 
 /// sRGB transfer function, encoded -> linear.
 pub fn srgb_to_linear(c: f64) -> f64 {
-    if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
 }
 
 /// sRGB transfer function, linear -> encoded.
 pub fn linear_to_srgb(c: f64) -> f64 {
-    if c <= 0.0031308 { c * 12.92 } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 }
+    if c <= 0.0031308 {
+        c * 12.92
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    }
 }
 
 /// Evaluates a keyframed curve (cubic Hermite, as Unity's AnimationCurve), clamped at the ends.
@@ -23,7 +31,10 @@ pub fn eval_curve(keys: &[Keyframe], t: f64) -> f64 {
     if t >= last.time {
         return last.value;
     }
-    let i = keys.windows(2).position(|w| t >= w[0].time && t <= w[1].time).unwrap_or(0);
+    let i = keys
+        .windows(2)
+        .position(|w| t >= w[0].time && t <= w[1].time)
+        .unwrap_or(0);
     let (k0, k1) = (keys[i], keys[i + 1]);
     let dt = k1.time - k0.time;
     let s = (t - k0.time) / dt;
@@ -45,7 +56,11 @@ pub fn sample_curve(keys: &[Keyframe], n: u32) -> Vec<f64> {
     let [t0, t1] = curve_time_range(keys);
     (0..n)
         .map(|i| {
-            let t = if n > 1 { t0 + (t1 - t0) * i as f64 / (n - 1) as f64 } else { t0 };
+            let t = if n > 1 {
+                t0 + (t1 - t0) * i as f64 / (n - 1) as f64
+            } else {
+                t0
+            };
             eval_curve(keys, t)
         })
         .collect()
@@ -69,7 +84,12 @@ pub fn bake_gradient(stops: &[GradientStop], width: u32) -> Vec<u8> {
 /// Linear-light colour of a gradient at `x`.
 pub fn gradient_at(stops: &[GradientStop], x: f64) -> [f64; 4] {
     let lin = |s: &GradientStop| {
-        [srgb_to_linear(s.color[0]), srgb_to_linear(s.color[1]), srgb_to_linear(s.color[2]), s.color[3]]
+        [
+            srgb_to_linear(s.color[0]),
+            srgb_to_linear(s.color[1]),
+            srgb_to_linear(s.color[2]),
+            s.color[3],
+        ]
     };
     let (first, last) = (&stops[0], &stops[stops.len() - 1]);
     if x <= first.position {
@@ -78,10 +98,17 @@ pub fn gradient_at(stops: &[GradientStop], x: f64) -> [f64; 4] {
     if x >= last.position {
         return lin(last);
     }
-    let i = stops.windows(2).position(|w| x >= w[0].position && x <= w[1].position).unwrap_or(0);
+    let i = stops
+        .windows(2)
+        .position(|w| x >= w[0].position && x <= w[1].position)
+        .unwrap_or(0);
     let (a, b) = (lin(&stops[i]), lin(&stops[i + 1]));
     let span = stops[i + 1].position - stops[i].position;
-    let t = if span > 0.0 { (x - stops[i].position) / span } else { 0.0 };
+    let t = if span > 0.0 {
+        (x - stops[i].position) / span
+    } else {
+        0.0
+    };
     [0, 1, 2, 3].map(|c| a[c] + (b[c] - a[c]) * t)
 }
 
@@ -92,8 +119,18 @@ mod tests {
     #[test]
     fn curve_hits_keys_and_slopes() {
         let keys = [
-            Keyframe { time: 0.0, value: 0.0, in_slope: 1.0, out_slope: 1.0 },
-            Keyframe { time: 1.0, value: 1.0, in_slope: 1.0, out_slope: 1.0 },
+            Keyframe {
+                time: 0.0,
+                value: 0.0,
+                in_slope: 1.0,
+                out_slope: 1.0,
+            },
+            Keyframe {
+                time: 1.0,
+                value: 1.0,
+                in_slope: 1.0,
+                out_slope: 1.0,
+            },
         ];
         // A Hermite with matching unit slopes is the straight line.
         for s in sample_curve(&keys, 5).iter().enumerate() {
@@ -112,8 +149,14 @@ mod tests {
     #[test]
     fn gradient_ends() {
         let stops = [
-            GradientStop { position: 0.0, color: [0.0, 0.0, 0.0, 1.0] },
-            GradientStop { position: 1.0, color: [1.0, 1.0, 1.0, 1.0] },
+            GradientStop {
+                position: 0.0,
+                color: [0.0, 0.0, 0.0, 1.0],
+            },
+            GradientStop {
+                position: 1.0,
+                color: [1.0, 1.0, 1.0, 1.0],
+            },
         ];
         let ramp = bake_gradient(&stops, 4);
         assert_eq!(ramp.len(), 16);

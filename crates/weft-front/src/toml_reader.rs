@@ -17,7 +17,13 @@ pub struct Cx<'d> {
 }
 
 impl Cx<'_> {
-    pub fn error(&mut self, code: &str, msg: impl Into<String>, span: Span, label: impl Into<String>) {
+    pub fn error(
+        &mut self,
+        code: &str,
+        msg: impl Into<String>,
+        span: Span,
+        label: impl Into<String>,
+    ) {
         self.diags.error(code, msg, self.file, span, label);
     }
     pub fn error_with_note(
@@ -86,12 +92,15 @@ impl<'a, 'i> Table<'a, 'i> {
 
     /// The span of `key = value`, or of the table header when absent.
     pub fn span_of(&self, key: &str) -> Span {
-        self.get(key).map_or_else(|| self.span.clone(), |v| v.span())
+        self.get(key)
+            .map_or_else(|| self.span.clone(), |v| v.span())
     }
 
     /// Entries in file order.
     pub fn entries(&self) -> impl Iterator<Item = (&'a str, Span, &'a Value<'i>)> + '_ {
-        self.map.iter().map(|(k, v)| (k.get_ref().as_ref(), k.span(), v))
+        self.map
+            .iter()
+            .map(|(k, v)| (k.get_ref().as_ref(), k.span(), v))
     }
 
     pub fn string(&self, key: &str, cx: &mut Cx) -> Option<String> {
@@ -203,7 +212,12 @@ pub fn expect_integer(v: &Value, what: &str, cx: &mut Cx) -> Option<i64> {
         DeValue::Integer(i) => match i64::from_str_radix(i.as_str(), i.radix()) {
             Ok(n) => Some(n),
             Err(_) => {
-                cx.error("wrong-type", format!("{what} is out of range"), v.span(), "too large");
+                cx.error(
+                    "wrong-type",
+                    format!("{what} is out of range"),
+                    v.span(),
+                    "too large",
+                );
                 None
             }
         },
@@ -217,7 +231,9 @@ pub fn expect_integer(v: &Value, what: &str, cx: &mut Cx) -> Option<i64> {
 /// A float or an integer, as f64; NaN and infinities are rejected.
 pub fn expect_number(v: &Value, what: &str, cx: &mut Cx) -> Option<f64> {
     let n = match v.get_ref() {
-        DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix()).ok().map(|n| n as f64),
+        DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix())
+            .ok()
+            .map(|n| n as f64),
         DeValue::Float(f) => f.as_str().parse::<f64>().ok(),
         other => {
             type_error(cx, what, "a number", other, v.span());

@@ -64,7 +64,11 @@ pub fn all_variants(m: &Material) -> Vec<VariantKey> {
             }
             combos = next;
         }
-        out.extend(combos.into_iter().map(|keywords| VariantKey { tier, keywords }));
+        out.extend(
+            combos
+                .into_iter()
+                .map(|keywords| VariantKey { tier, keywords }),
+        );
     }
     out
 }

@@ -25,17 +25,19 @@
 pub fn split_sum_lut(size: u32, samples: u32) -> Vec<[f32; 2]> {
     assert!(size > 0, "split-sum LUT size must be non-zero");
     assert!(samples > 0, "split-sum LUT sample count must be non-zero");
-    let n = size as usize;
-    let mut out = Vec::with_capacity(n * n);
-    for row in 0..size {
-        let roughness = (f64::from(row) + 0.5) / f64::from(size);
-        for col in 0..size {
+    // Texels are independent; rayon's indexed collect keeps row-major order,
+    // so the result does not depend on the thread count.
+    use rayon::prelude::*;
+    (0..size * size)
+        .into_par_iter()
+        .map(|i| {
+            let (row, col) = (i / size, i % size);
+            let roughness = (f64::from(row) + 0.5) / f64::from(size);
             let n_dot_v = (f64::from(col) + 0.5) / f64::from(size);
             let (scale, bias) = integrate(n_dot_v, roughness, samples);
-            out.push(clamp_albedo(scale, bias));
-        }
-    }
-    out
+            clamp_albedo(scale, bias)
+        })
+        .collect()
 }
 
 /// Keeps a Monte Carlo estimate inside the physical bounds: scale and bias are

@@ -20,7 +20,9 @@ struct WeftFrame {
     // rgb: main light radiance (linear); a: unused.
     light_color: vec4<f32>,
     // L2 spherical-harmonic irradiance coefficients (rgb in xyz), already
-    // convolved with the clamped cosine and divided by pi: E(n)/pi = sum c_i Y_i(n).
+    // convolved with the clamped cosine and divided by pi: E(n)/pi = sum c_i Y_i(n),
+    // with the orthonormal real basis in the order
+    // Y00, Y1-1 (y), Y10 (z), Y11 (x), Y2-2 (xy), Y2-1 (yz), Y20 (3z^2-1), Y21 (xz), Y22 (x^2-y^2).
     sh: array<vec4<f32>, 9>,
     // x: number of mip levels of the prefiltered environment cube;
     // y: exposure; z: time in seconds; w: unused.

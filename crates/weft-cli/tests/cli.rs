@@ -1,0 +1,114 @@
+//! The `weft` binary as a user runs it: exit codes, output, nothing written on error.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .canonicalize()
+        .unwrap()
+}
+
+fn weft(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(repo())
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn check_accepts_the_shipped_library() {
+    let o = weft(&["check", "materials"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("12 variant(s)") || stdout(&o).contains("variant(s)"));
+}
+
+#[test]
+fn check_rejects_a_bad_material_with_a_located_diagnostic() {
+    let dir = tempfile::tempdir().unwrap();
+    let toml = dir.path().join("bad.toml");
+    std::fs::write(&toml, "[material]\nsource = \"bad.wgsl\"\n\n[params.x]\ntype = \"float\"\nrnage = [0, 1]\n\n[[tier]]\nname = \"fast\"\n").unwrap();
+    std::fs::write(dir.path().join("bad.wgsl"), "").unwrap();
+    let o = weft(&["check", "--color", "never", toml.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert!(err.contains("unknown key `rnage`"), "{err}");
+    assert!(err.contains("did you mean `range`?"), "{err}");
+    assert!(err.contains("bad.toml:6:1"), "file:line:column: {err}");
+    assert!(
+        err.contains("the `reference` tier is missing"),
+        "several errors in one run: {err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn build_writes_nothing_on_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let toml = dir.path().join("bad.toml");
+    std::fs::write(&toml, "[material]\nsource = \"missing.wgsl\"\n[[tier]]\nname = \"fast\"\n[[tier]]\nname = \"reference\"\n").unwrap();
+    let out = dir.path().join("out");
+    let o = weft(&["build", toml.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("cannot find WGSL source"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.exists(), "no output folder on error");
+    // Nothing half-written beside it either.
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn build_then_rebuild_reuses_unchanged_materials() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("gen");
+    let o = weft(&["build", "materials", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(out.join("standard/standard.meta.json").is_file());
+    assert!(out.join("luts/split_sum_ggx_64x64_1024spp.rg16f").is_file());
+    let o = weft(&["build", "materials", "-o", out.to_str().unwrap()]);
+    assert!(stdout(&o).contains("unchanged"), "{}", stdout(&o));
+}
+
+#[test]
+fn inspect_and_variants_print_tables() {
+    let o = weft(&["inspect", "materials/standard/standard.toml"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    for needle in [
+        "Parameters",
+        "roughness",
+        "[0, 1]",
+        "SPHERE_MAP",
+        "off | add | multiply",
+        "Tiers (reference: reference)",
+        "Presets",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in:\n{text}");
+    }
+    let o = weft(&["variants", "materials/standard/standard.toml"]);
+    let text = stdout(&o);
+    assert!(text.contains("standard: 12 variants"), "{text}");
+    assert!(
+        text.contains("reference.normal_map-on.sphere_map-multiply"),
+        "{text}"
+    );
+}
+
+#[test]
+fn help_has_examples() {
+    let o = weft(&["build", "--help"]);
+    assert!(stdout(&o).contains("Examples:"));
+}

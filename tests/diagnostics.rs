@@ -1,0 +1,432 @@
+//! The bad-material corpus (`tests/diagnostics/materials/bad/`): every file
+//! fails with the diagnostic its name says, rendered exactly as the CLI shows
+//! it (snapshots in `tests/snapshots/`). Also: the corpus' `ok` material and
+//! the documentation example build, and the editor schema for material files
+//! lists exactly the keys the parser accepts.
+//!
+//! Cargo runs integration tests with the package folder (`tests/`) as the
+//! working directory, so file names in diagnostics are relative and stable.
+
+use std::path::{Path, PathBuf};
+use weft_compiler::{BuildOptions, build_materials};
+use weft_front::{Diagnostics, SourceDb};
+
+/// Every corpus file and the error codes it must produce (at least these;
+/// no other codes are allowed).
+const EXPECTED: &[(&str, &[&str])] = &[
+    ("bad_condition", &["bad-condition"]),
+    ("bad_name", &["bad-name"]),
+    (
+        "bad_preset",
+        &["unknown-key", "out-of-range", "unknown-value", "wrong-type"],
+    ),
+    ("default_out_of_range", &["default-out-of-range"]),
+    ("duplicate_names", &["duplicate"]),
+    ("include_cycle", &["include-cycle"]),
+    ("include_outside_root", &["include-outside-root"]),
+    ("instances_not_int", &["unknown-param"]),
+    ("min_above_max", &["min-above-max"]),
+    ("missing_entry_point", &["missing-entry-point"]),
+    ("missing_include", &["missing-include"]),
+    ("missing_require", &["missing-require"]),
+    ("missing_source", &["missing-source"]),
+    ("missing_tier", &["missing-tier"]),
+    (
+        "several_errors",
+        &[
+            "unknown-key",
+            "wrong-type",
+            "default-out-of-range",
+            "unknown-keyword",
+            "unknown-value",
+        ],
+    ),
+    ("toml_syntax", &["toml-syntax"]),
+    ("unknown_enum_value", &["unknown-value"]),
+    ("unknown_group", &["unknown-group"]),
+    ("unknown_key", &["unknown-key"]),
+    ("unknown_key_top_level", &["unknown-key"]),
+    ("unknown_keyword_filter", &["unknown-keyword"]),
+    ("unknown_keyword_show_if", &["unknown-keyword"]),
+    ("unknown_param_type", &["unknown-value"]),
+    ("unknown_show_if_value", &["unknown-value"]),
+    ("unknown_texture_default", &["unknown-value"]),
+    ("unordered_keyframes", &["unordered-keys"]),
+    ("variant_budget", &["variant-budget"]),
+    ("wgsl_error_in_include", &["wgsl-parse"]),
+    ("wgsl_parse_error", &["wgsl-parse"]),
+    ("wgsl_reserved_name", &["wgsl-parse"]),
+    ("wgsl_validation_error", &["wgsl-validation"]),
+    ("wrong_type", &["wrong-type"]),
+];
+
+fn corpus() -> PathBuf {
+    Path::new("diagnostics/materials").to_path_buf()
+}
+
+fn build(path: &Path) -> Result<weft_compiler::BuildOutput, (SourceDb, Diagnostics)> {
+    let root = weft_front::find_root(path);
+    assert!(
+        root.ends_with("diagnostics/materials") || root.ends_with("example"),
+        "root {}",
+        root.display()
+    );
+    build_materials(
+        &[path.to_path_buf()],
+        None,
+        &BuildOptions::default(),
+        &|_, _, _| {},
+    )
+}
+
+fn codes(diags: &Diagnostics) -> Vec<String> {
+    diags.iter().filter_map(|d| d.code.clone()).collect()
+}
+
+#[test]
+fn every_bad_material_has_an_expectation() {
+    let mut found: Vec<String> = std::fs::read_dir(corpus().join("bad"))
+        .expect("corpus folder")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .map(|p| p.file_stem().expect("stem").to_string_lossy().into_owned())
+        .collect();
+    found.sort();
+    let expected: Vec<String> = EXPECTED.iter().map(|(n, _)| n.to_string()).collect();
+    assert_eq!(found, expected, "bad/*.toml and EXPECTED differ");
+}
+
+#[test]
+fn bad_materials_report_their_diagnostic() {
+    for (name, want) in EXPECTED {
+        let path = corpus().join("bad").join(format!("{name}.toml"));
+        let Err((db, diags)) = build(&path) else {
+            panic!("{name}: built without errors");
+        };
+        let got = codes(&diags);
+        for code in *want {
+            assert!(
+                got.iter().any(|c| c == code),
+                "{name}: no `{code}` among {got:?}"
+            );
+        }
+        for code in &got {
+            assert!(
+                want.contains(&code.as_str()),
+                "{name}: unexpected `{code}` among {got:?}"
+            );
+        }
+        assert!(
+            diags.iter().all(|d| !d.labels.is_empty()),
+            "{name}: a diagnostic points nowhere"
+        );
+        let rendered = diags.render_plain(&db);
+        let cwd = std::env::current_dir().expect("cwd");
+        let workspace = cwd.parent().expect("workspace");
+        assert!(
+            !rendered.contains(&*workspace.to_string_lossy()),
+            "{name}: an absolute path leaks into the diagnostics:\n{rendered}"
+        );
+        insta::assert_snapshot!(*name, rendered);
+    }
+}
+
+#[test]
+fn several_errors_are_reported_in_one_run() {
+    let Err((_, diags)) = build(&corpus().join("bad/several_errors.toml")) else {
+        panic!("several_errors built");
+    };
+    assert!(
+        diags.error_count() >= 3,
+        "only {} errors",
+        diags.error_count()
+    );
+}
+
+#[test]
+fn wgsl_errors_point_into_the_users_files() {
+    for (name, file) in [
+        ("wgsl_parse_error", "bad/wgsl_parse_error.wgsl"),
+        ("wgsl_validation_error", "bad/wgsl_validation_error.wgsl"),
+        ("wgsl_error_in_include", "lib/broken.wgsl"),
+        ("wgsl_reserved_name", "bad/wgsl_reserved_name.toml"),
+    ] {
+        let Err((db, diags)) = build(&corpus().join(format!("bad/{name}.toml"))) else {
+            panic!("{name} built");
+        };
+        let d = diags.iter().next().expect("a diagnostic");
+        let primary = d.labels.first().expect("a label");
+        let shown = db.name(primary.file_id);
+        assert!(
+            shown.ends_with(file),
+            "{name}: primary label in `{shown}`, expected `{file}`"
+        );
+    }
+}
+
+#[test]
+fn ok_material_builds() {
+    match build(&corpus().join("ok/ok.toml")) {
+        Ok(out) => assert_eq!(out.variant_count, 2),
+        Err((db, diags)) => panic!("ok.toml failed:\n{}", diags.render_plain(&db)),
+    }
+}
+
+// ------------------------------------------------------------ documentation
+
+const EXAMPLE: &str = "../docs/example/velvet_swatch/velvet_swatch.toml";
+const SMALL_EXAMPLE: &str = "../docs/example/tinted/tinted.toml";
+
+/// The complete example in docs/ builds, so the documentation cannot rot.
+#[test]
+fn documentation_example_builds() {
+    let out = weft_compiler::build_library(
+        Path::new("../docs/example"),
+        &BuildOptions::default(),
+        &|_, _, _| {},
+    )
+    .unwrap_or_else(|(db, diags)| panic!("docs/example failed:\n{}", diags.render_plain(&db)));
+    let names: Vec<&str> = out.materials.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(names, ["tinted", "velvet_swatch"]);
+    let velvet = &out.materials[1];
+
+    for kind in weft_meta::ParamKind::ALL {
+        assert!(
+            velvet.parameters.iter().any(|p| p.kind == kind),
+            "the example uses no {} parameter",
+            kind.name()
+        );
+    }
+}
+
+fn prelude_text(path: &str) -> String {
+    let path = Path::new(path);
+    let root = weft_front::find_root(path);
+    let (mut db, mut diags) = (SourceDb::new(), Diagnostics::new());
+    let m = weft_front::load_material(path, &root, &mut db, &mut diags)
+        .unwrap_or_else(|| panic!("{}:\n{}", path.display(), diags.render_plain(&db)));
+    let p = weft_compiler::prelude::generate(&m);
+    p.lines.iter().map(|(l, _)| format!("{l}\n")).collect()
+}
+
+/// Text between `<!-- begin NAME -->` and `<!-- end NAME -->`, inside its code fence.
+fn doc_block(doc: &str, name: &str) -> String {
+    let begin = format!("<!-- begin {name} -->");
+    let end = format!("<!-- end {name} -->");
+    let start = doc.find(&begin).unwrap_or_else(|| panic!("no {begin}")) + begin.len();
+    let stop = doc[start..]
+        .find(&end)
+        .unwrap_or_else(|| panic!("no {end}"))
+        + start;
+    let block = doc[start..stop].trim();
+    let block = block
+        .strip_prefix("```wgsl")
+        .or_else(|| block.strip_prefix("```toml"))
+        .expect("fenced block");
+    let block = block.strip_suffix("```").expect("closing fence");
+    block.trim_start_matches('\n').to_string()
+}
+
+/// The prelude shown in docs/material-format.md is the one the toolchain generates.
+#[test]
+fn documented_prelude_is_current() {
+    let doc =
+        std::fs::read_to_string("../docs/material-format.md").expect("docs/material-format.md");
+    let prelude = prelude_text(SMALL_EXAMPLE);
+    assert!(
+        doc_block(&doc, "tinted-prelude") == prelude,
+        "docs/material-format.md shows a stale prelude for tinted.toml; the current one is:\n{prelude}"
+    );
+    let toml = std::fs::read_to_string(SMALL_EXAMPLE).expect("tinted.toml");
+    assert!(
+        doc_block(&doc, "tinted-toml") == toml,
+        "docs/material-format.md shows a stale tinted.toml"
+    );
+    // The curve and gradient accessors shown are what velvet_swatch generates.
+    let velvet = prelude_text(EXAMPLE);
+    for line in doc_block(&doc, "velvet-accessors").lines() {
+        assert!(
+            velvet.lines().any(|l| l == line),
+            "not in velvet_swatch's prelude: {line}\ncurrent prelude:\n{velvet}"
+        );
+    }
+}
+
+// ------------------------------------------------------------ editor schema
+
+fn schema() -> serde_json::Value {
+    let text = std::fs::read_to_string("../schemas/material.schema.json")
+        .expect("schemas/material.schema.json");
+    serde_json::from_str(&text).expect("schema is JSON")
+}
+
+/// Resolves `{"$ref": "#/$defs/x"}`.
+fn resolve<'a>(schema: &'a serde_json::Value, v: &'a serde_json::Value) -> &'a serde_json::Value {
+    match v.get("$ref").and_then(|r| r.as_str()) {
+        Some(r) => {
+            let pointer = r.strip_prefix('#').expect("local $ref");
+            resolve(
+                schema,
+                schema
+                    .pointer(pointer)
+                    .unwrap_or_else(|| panic!("dangling {r}")),
+            )
+        }
+        None => v,
+    }
+}
+
+fn property_names(schema: &serde_json::Value, v: &serde_json::Value, what: &str) -> Vec<String> {
+    let v = resolve(schema, v);
+    assert_eq!(
+        v.get("additionalProperties"),
+        Some(&serde_json::Value::Bool(false)),
+        "{what}: additionalProperties must be false"
+    );
+    let mut names: Vec<String> = v
+        .get("properties")
+        .and_then(|p| p.as_object())
+        .unwrap_or_else(|| panic!("{what}: no properties"))
+        .keys()
+        .cloned()
+        .collect();
+    names.sort();
+    names
+}
+
+fn sorted(keys: &[&str]) -> Vec<String> {
+    let mut v: Vec<String> = keys.iter().map(|s| s.to_string()).collect();
+    v.sort();
+    v
+}
+
+/// For each table, the schema's property names are the parser's key list.
+#[test]
+fn schema_matches_parser_keys() {
+    use weft_front::parse::*;
+    let s = schema();
+    let top = &s;
+    let prop = |parent: &serde_json::Value, key: &str| -> serde_json::Value {
+        resolve(&s, parent)
+            .get("properties")
+            .and_then(|p| p.get(key))
+            .unwrap_or_else(|| panic!("no property {key}"))
+            .clone()
+    };
+    // Map-like tables: their values are the schema under additionalProperties / items.
+    let map_values = |v: &serde_json::Value| -> serde_json::Value {
+        resolve(&s, v)
+            .get("additionalProperties")
+            .cloned()
+            .expect("map of tables")
+    };
+    let items = |v: &serde_json::Value| -> serde_json::Value {
+        resolve(&s, v)
+            .get("items")
+            .cloned()
+            .expect("array of tables")
+    };
+
+    assert_eq!(property_names(&s, top, "top level"), sorted(TOP_KEYS));
+    assert_eq!(
+        property_names(&s, &prop(top, "material"), "[material]"),
+        sorted(MATERIAL_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &map_values(&prop(top, "groups")), "[groups.*]"),
+        sorted(GROUP_KEYS)
+    );
+    let param = map_values(&prop(top, "params"));
+    assert_eq!(property_names(&s, &param, "[params.*]"), sorted(PARAM_KEYS));
+    assert_eq!(
+        property_names(&s, &map_values(&prop(top, "keywords")), "[keywords.*]"),
+        sorted(KEYWORD_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &items(&prop(top, "tier")), "[[tier]]"),
+        sorted(TIER_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &prop(top, "variants"), "[variants]"),
+        sorted(VARIANTS_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &map_values(&prop(top, "presets")), "[presets.*]"),
+        sorted(PRESET_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &items(&prop(top, "pass")), "[[pass]]"),
+        sorted(PASS_KEYS)
+    );
+    let defs = s.get("$defs").expect("$defs");
+    assert_eq!(
+        property_names(&s, &defs["keyframe"], "curve keyframe"),
+        sorted(KEYFRAME_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &defs["gradient_stop"], "gradient stop"),
+        sorted(STOP_KEYS)
+    );
+
+    // Enumerated values match the model's.
+    let type_enum: Vec<String> = resolve(&s, &prop(&param, "type"))["enum"]
+        .as_array()
+        .expect("type enum")
+        .iter()
+        .map(|v| v.as_str().expect("string").to_string())
+        .collect();
+    let kinds: Vec<String> = weft_meta::ParamKind::ALL
+        .iter()
+        .map(|k| k.name().to_string())
+        .collect();
+    assert_eq!(type_enum, kinds);
+    let tex: Vec<String> = defs["texture_default"]["enum"]
+        .as_array()
+        .expect("texture enum")
+        .iter()
+        .map(|v| v.as_str().expect("string").to_string())
+        .collect();
+    let builtin: Vec<String> = weft_meta::TextureDefault::ALL
+        .iter()
+        .map(|d| d.name().to_string())
+        .collect();
+    assert_eq!(tex, builtin);
+    let requires: Vec<String> =
+        resolve(&s, &prop(&prop(top, "material"), "requires"))["items"]["enum"]
+            .as_array()
+            .expect("requires enum")
+            .iter()
+            .map(|v| v.as_str().expect("string").to_string())
+            .collect();
+    let attrs: Vec<String> = weft_front::model::VertexAttribute::ALL
+        .iter()
+        .map(|a| a.name().to_string())
+        .collect();
+    assert_eq!(requires, attrs);
+}
+
+/// Every material file in the repository parses with the schema directive on its first line.
+#[test]
+fn schema_directive_is_accepted() {
+    for path in [
+        "../materials/standard/standard.toml",
+        EXAMPLE,
+        "diagnostics/materials/ok/ok.toml",
+    ] {
+        let text = std::fs::read_to_string(path).expect("material file");
+        let first = text.lines().next().unwrap_or_default();
+        assert!(
+            first.starts_with("#:schema "),
+            "{path}: first line is not a #:schema directive"
+        );
+        let target = Path::new(path)
+            .parent()
+            .expect("dir")
+            .join(first.trim_start_matches("#:schema ").trim());
+        assert!(
+            target.is_file(),
+            "{path}: schema directive points at {}",
+            target.display()
+        );
+    }
+}
