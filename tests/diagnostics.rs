@@ -260,7 +260,7 @@ fn schema() -> serde_json::Value {
     serde_json::from_str(&text).expect("schema is JSON")
 }
 
-/// Resolves `{"$ref": "#/$defs/x"}`.
+/// Resolves `{"$ref": "#/definitions/x"}`.
 fn resolve<'a>(schema: &'a serde_json::Value, v: &'a serde_json::Value) -> &'a serde_json::Value {
     match v.get("$ref").and_then(|r| r.as_str()) {
         Some(r) => {
@@ -358,7 +358,7 @@ fn schema_matches_parser_keys() {
         property_names(&s, &items(&prop(top, "pass")), "[[pass]]"),
         sorted(PASS_KEYS)
     );
-    let defs = s.get("$defs").expect("$defs");
+    let defs = s.get("definitions").expect("definitions");
     assert_eq!(
         property_names(&s, &defs["keyframe"], "curve keyframe"),
         sorted(KEYFRAME_KEYS)

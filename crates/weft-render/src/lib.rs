@@ -1,0 +1,1 @@
+//! weft render runtime (work in progress).
