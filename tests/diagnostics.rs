@@ -22,6 +22,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ),
     ("default_out_of_range", &["default-out-of-range"]),
     ("duplicate_names", &["duplicate"]),
+    ("exclude_constant_keyword", &["bad-condition"]),
     ("include_cycle", &["include-cycle"]),
     ("include_outside_root", &["include-outside-root"]),
     ("instances_not_int", &["unknown-param"]),

@@ -176,15 +176,22 @@ pub fn validation_diagnostic(
     m: &Material,
 ) -> Diagnostic<FileId> {
     let labels: Vec<(naga::Span, String)> = e.spans().map(|(s, l)| (*s, l.clone())).collect();
-    let mut notes = Vec::new();
+    // naga nests errors (function -> expression -> cause); the innermost one
+    // says what is wrong, the outer ones say where.
+    let mut chain = vec![e.as_inner().to_string()];
     let mut source: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
     while let Some(s) = source {
-        notes.push(s.to_string());
+        chain.push(s.to_string());
         source = s.source();
     }
+    let message = chain.last().cloned().unwrap_or_default();
+    let notes = chain[..chain.len() - 1]
+        .iter()
+        .map(|c| format!("in: {c}"))
+        .collect();
     naga_diagnostic(
         "wgsl-validation",
-        e.as_inner().to_string(),
+        message,
         labels,
         notes,
         &composed.map,

@@ -169,28 +169,53 @@ pub fn compile_material(
 fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics) -> bool {
     let before = diags.error_count();
     for pass in &m.passes {
-        for (name, stage) in [
-            (&pass.vertex, naga::ShaderStage::Vertex),
-            (&pass.fragment, naga::ShaderStage::Fragment),
-        ] {
-            if !module
+        let wanted = [
+            (
+                &pass.vertex,
+                naga::ShaderStage::Vertex,
+                "vertex",
+                &pass.vertex_span,
+            ),
+            (
+                &pass.fragment,
+                naga::ShaderStage::Fragment,
+                "fragment",
+                &pass.fragment_span,
+            ),
+        ];
+        for (name, stage, stage_name, span) in wanted {
+            if module
                 .entry_points
                 .iter()
                 .any(|ep| &ep.name == name && ep.stage == stage)
             {
-                let found: Vec<String> = module
-                    .entry_points
-                    .iter()
-                    .map(|e| format!("{} ({:?})", e.name, e.stage))
-                    .collect();
-                diags.push(
-                    Diagnostic::error()
-                        .with_code("missing-entry-point")
-                        .with_message(format!("pass `{}` names {:?} entry point `{name}`, which the WGSL does not define", pass.name, stage))
-                        .with_labels(vec![Label::primary(pass.decl.file, pass.decl.span.clone()).with_message("in this pass")])
-                        .with_notes(vec![format!("entry points found: {}", found.join(", "))]),
-                );
+                continue;
             }
+            let candidates: Vec<&str> = module
+                .entry_points
+                .iter()
+                .filter(|ep| ep.stage == stage)
+                .map(|ep| ep.name.as_str())
+                .collect();
+            let mut notes = Vec::new();
+            if let Some(s) = weft_front::diag::did_you_mean(name, candidates.iter().copied()) {
+                notes.push(format!("did you mean `{s}`?"));
+            }
+            notes.push(if candidates.is_empty() {
+                format!("the WGSL defines no @{stage_name} entry point")
+            } else {
+                format!(
+                    "@{stage_name} entry points in the WGSL: {}",
+                    candidates.join(", ")
+                )
+            });
+            diags.push(
+                Diagnostic::error()
+                    .with_code("missing-entry-point")
+                    .with_message(format!("pass `{}` names {stage_name} entry point `{name}`, which the WGSL does not define", pass.name))
+                    .with_labels(vec![Label::primary(pass.decl.file, span.clone()).with_message(format!("no @{stage_name} fn `{name}`"))])
+                    .with_notes(notes),
+            );
         }
     }
     let locations = crate::reflect::vertex_locations(module);
@@ -203,13 +228,8 @@ fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics)
             diags.push(
                 Diagnostic::error()
                     .with_code("missing-require")
-                    .with_message(format!(
-                        "the vertex stage reads `{name}` but the material does not require it"
-                    ))
-                    .with_labels(vec![
-                        Label::primary(m.decl.file, m.decl.span.clone())
-                            .with_message("material declared here"),
-                    ])
+                    .with_message(format!("the vertex stage reads `{name}` (@location({loc})) but the material does not require it"))
+                    .with_labels(vec![Label::primary(m.file, m.requires_span.clone()).with_message(format!("`{name}` missing here"))])
                     .with_notes(vec![format!("add \"{name}\" to `requires` in [material]")]),
             );
         }

@@ -165,6 +165,12 @@ pub fn presets(m: &Material) -> Vec<Preset> {
                 .iter()
                 .map(|(k, v)| {
                     let j = match v {
+                        // Presets read numbers as floats; int parameters show as ints.
+                        PresetValue::Param(ParamValue::Float(x))
+                            if m.param(k).is_some_and(|p| p.kind == ParamKind::Int) =>
+                        {
+                            json!(*x as i64)
+                        }
                         PresetValue::Param(pv) => value_json(pv),
                         PresetValue::Keyword(s) => json!(s),
                     };

@@ -190,6 +190,21 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
     let values: Option<Vec<String>> = if c.subject == "tier" {
         Some(m.tiers.values.clone())
     } else if let Some(k) = m.keyword(&c.subject) {
+        if what == "exclude" && k.mode == weft_meta::KeywordMode::Constant {
+            let d = diags.error(
+                "bad-condition",
+                format!("`exclude` names `{}`, a `constant` keyword", c.subject),
+                loc.file,
+                loc.span.clone(),
+                "in this filter",
+            );
+            d.labels.push(
+                Label::secondary(k.decl.file, k.decl.span.clone())
+                    .with_message("declared with mode = \"constant\""),
+            );
+            d.notes.push("a constant keyword does not create variants (one variant serves all its values), so there is nothing to exclude; make it `mode = \"static\"` or drop it from the filter".into());
+            return;
+        }
         Some(k.values.clone())
     } else if m
         .param(&c.subject)
@@ -306,23 +321,23 @@ fn check_presets(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
                                 .with_message(format!("`{key}` is a {}", p.kind.name())),
                         );
                         d.notes.push(preset_value_hint(p.kind).into());
-                    } else if let Some(r) = p.range {
-                        if nums.iter().any(|x| *x < r[0] || *x > r[1]) {
-                            let d = diags.error(
-                                "out-of-range",
-                                format!(
-                                    "preset `{}` sets `{key}` outside its range [{}, {}]",
-                                    preset.name, r[0], r[1]
-                                ),
-                                file,
-                                value_span,
-                                format!("not in [{}, {}]", r[0], r[1]),
-                            );
-                            d.labels.push(
-                                Label::secondary(p.decl.file, p.decl.span.clone())
-                                    .with_message(format!("`{key}` declared here")),
-                            );
-                        }
+                    } else if let Some(r) = p.range
+                        && nums.iter().any(|x| *x < r[0] || *x > r[1])
+                    {
+                        let d = diags.error(
+                            "out-of-range",
+                            format!(
+                                "preset `{}` sets `{key}` outside its range [{}, {}]",
+                                preset.name, r[0], r[1]
+                            ),
+                            file,
+                            value_span,
+                            format!("not in [{}, {}]", r[0], r[1]),
+                        );
+                        d.labels.push(
+                            Label::secondary(p.decl.file, p.decl.span.clone())
+                                .with_message(format!("`{key}` declared here")),
+                        );
                     }
                 }
                 (_, Some(k), PresetValue::Keyword(v)) => {

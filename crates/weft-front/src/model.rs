@@ -32,6 +32,8 @@ pub struct Material {
     /// WGSL files in composition order: includes (dependencies first), then the material source.
     pub sources: Vec<SourceFile>,
     pub requires: Vec<VertexAttribute>,
+    /// Where `requires` is written (or [material] when absent).
+    pub requires_span: Span,
     pub groups: Vec<Group>,
     pub params: Vec<Param>,
     pub keywords: Vec<Keyword>,
@@ -192,6 +194,9 @@ pub struct Pass {
     pub queue: i64,
     pub instances: Instances,
     pub decl: Loc,
+    /// Where `vertex` / `fragment` are written (the pass itself when absent).
+    pub vertex_span: Span,
+    pub fragment_span: Span,
 }
 
 #[derive(Clone, Debug)]

@@ -151,6 +151,7 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         root: root.to_path_buf(),
         sources: Vec::new(),
         requires,
+        requires_span: mat.span_of("requires"),
         groups: Vec::new(),
         params: Vec::new(),
         keywords: Vec::new(),
@@ -1220,6 +1221,8 @@ fn default_pass(file: usize, span: Span) -> Pass {
         depth_test: DepthTest::LessEqual,
         queue: 2000,
         instances: Instances::Fixed(1),
+        vertex_span: span.clone(),
+        fragment_span: span.clone(),
         decl: Loc { file, span },
     }
 }
@@ -1253,6 +1256,8 @@ fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
     pass.name = t.string("name", cx).unwrap_or(pass.name);
     pass.vertex = t.string("vertex", cx).unwrap_or(pass.vertex);
     pass.fragment = t.string("fragment", cx).unwrap_or(pass.fragment);
+    pass.vertex_span = t.span_of("vertex");
+    pass.fragment_span = t.span_of("fragment");
     use BlendMode as B;
     if let Some(b) = pick(
         &t,
