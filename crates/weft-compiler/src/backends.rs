@@ -14,8 +14,8 @@ pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
 /// …and each group's sampler-index buffer is `t<this>` in the group's space.
 pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
 
-pub struct Emitted {
-    pub wgsl: String,
+/// The non-WGSL outputs of one module.
+pub struct OtherLanguages {
     pub spirv: Vec<u8>,
     pub hlsl: String,
     pub msl: String,
@@ -30,10 +30,7 @@ pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
 
 /// Every language but WGSL needs the overrides resolved (naga has no SPIR-V
 /// specialisation constants), so these take a module without overrides.
-pub fn emit_others(
-    module: &Module,
-    info: &ModuleInfo,
-) -> Result<(Vec<u8>, String, String, Vec<(String, ShaderStage, String)>), String> {
+pub fn emit_others(module: &Module, info: &ModuleInfo) -> Result<OtherLanguages, String> {
     let spirv = emit_spirv(module, info)?;
     let hlsl = emit_hlsl(module, info)?;
     let msl = emit_msl(module, info)?;
@@ -45,7 +42,12 @@ pub fn emit_others(
             emit_glsl(module, info, &ep.name, ep.stage)?,
         ));
     }
-    Ok((spirv, hlsl, msl, glsl_out))
+    Ok(OtherLanguages {
+        spirv,
+        hlsl,
+        msl,
+        glsl: glsl_out,
+    })
 }
 
 pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String> {
@@ -76,7 +78,7 @@ pub fn hlsl_options(module: &Module) -> hlsl::Options {
         if let Some(rb) = &var.binding {
             options
                 .binding_map
-                .insert(rb.clone(), bind_target(rb.group as u8, rb.binding));
+                .insert(*rb, bind_target(rb.group as u8, rb.binding));
             options.sampler_buffer_binding_map.insert(
                 hlsl::SamplerIndexBufferKey { group: rb.group },
                 bind_target(rb.group as u8, HLSL_SAMPLER_INDEX_REGISTER),

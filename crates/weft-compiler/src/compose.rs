@@ -1,6 +1,6 @@
-//! Composition: engine interface + generated prelude + included library files
-//! + the material's source, concatenated into one WGSL module, with a source
-//! map from composed byte offsets back to the user's files.
+//! Composition: the engine interface, the generated prelude, the included
+//! library files and the material's source, concatenated into one WGSL module
+//! with a source map from composed byte offsets back to the user's files.
 //!
 //! WGSL needs no declaration order at module scope, so plain concatenation is
 //! enough; no identifier is mangled and the output stays readable.

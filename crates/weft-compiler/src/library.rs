@@ -23,6 +23,9 @@ pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
 /// Size and sample count are in the name, so a reused file is never a stale bake.
 pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
 
+/// A material's metadata and its files (paths relative to its folder).
+pub type CompiledMaterial = (MaterialMetadata, Vec<(String, Vec<u8>)>);
+
 #[derive(Clone, Debug, Default)]
 pub struct BuildOptions {
     /// Worker threads (None: rayon's default).
@@ -80,7 +83,7 @@ pub fn compile_material(
     m: &Material,
     db: &mut SourceDb,
     diags: &mut Diagnostics,
-) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
+) -> Option<CompiledMaterial> {
     let prelude = prelude::generate(m);
     let composed = compose::compose(m, &prelude, db);
     let (module, _info) = compose::parse_and_validate(&composed, m, diags)?;
@@ -238,11 +241,7 @@ fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics)
 }
 
 /// Reads a previous build's files for a material if its inputs are unchanged.
-fn reuse(
-    out_dir: &Path,
-    m: &Material,
-    hash: &str,
-) -> Option<(MaterialMetadata, Vec<(String, Vec<u8>)>)> {
+fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<CompiledMaterial> {
     let dir = out_dir.join(&m.name);
     let meta_bytes = std::fs::read(dir.join(format!("{}.meta.json", m.name))).ok()?;
     let meta: MaterialMetadata = serde_json::from_slice(&meta_bytes).ok()?;

@@ -197,10 +197,10 @@ pub fn vertex_locations(module: &Module) -> Vec<u32> {
     {
         for arg in &ep.function.arguments {
             let mut push = |b: &Option<naga::Binding>| {
-                if let Some(naga::Binding::Location { location, .. }) = b {
-                    if !out.contains(location) {
-                        out.push(*location);
-                    }
+                if let Some(naga::Binding::Location { location, .. }) = b
+                    && !out.contains(location)
+                {
+                    out.push(*location);
                 }
             };
             push(&arg.binding);

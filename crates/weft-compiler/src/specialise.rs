@@ -32,10 +32,10 @@ pub fn specialise(module: &Module, values: &Bindings) -> Module {
         .collect();
 
     for (_, expr) in module.global_expressions.iter_mut() {
-        if let Expression::Override(h) = *expr {
-            if let Some(lit) = replace.get(&h) {
-                *expr = Expression::Literal(*lit);
-            }
+        if let Expression::Override(h) = *expr
+            && let Some(lit) = replace.get(&h)
+        {
+            *expr = Expression::Literal(*lit);
         }
     }
     let mut functions = std::mem::take(&mut module.functions);
@@ -66,10 +66,10 @@ fn specialise_function(
     replace: &HashMap<Handle<naga::Override>, Literal>,
 ) {
     for (_, expr) in f.expressions.iter_mut() {
-        if let Expression::Override(h) = *expr {
-            if let Some(lit) = replace.get(&h) {
-                *expr = Expression::Literal(*lit);
-            }
+        if let Expression::Override(h) = *expr
+            && let Some(lit) = replace.get(&h)
+        {
+            *expr = Expression::Literal(*lit);
         }
     }
     let body = std::mem::take(&mut f.body);

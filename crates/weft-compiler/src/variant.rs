@@ -123,7 +123,12 @@ pub fn compile_variant(
         let rinfo = validator()
             .validate(&resolved)
             .map_err(|e| format!("variant `{id}{suffix}` fails validation: {}", e.as_inner()))?;
-        let (spirv, hlsl, msl, glsl) = backends::emit_others(&resolved, &rinfo)
+        let backends::OtherLanguages {
+            spirv,
+            hlsl,
+            msl,
+            glsl,
+        } = backends::emit_others(&resolved, &rinfo)
             .map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
         let stem = format!("{id}{suffix}");
         let mut add = |lang: &str, name: String, bytes: Vec<u8>, entry: Option<String>| {

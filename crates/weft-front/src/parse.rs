@@ -310,7 +310,10 @@ fn value_span(table: &Value, key: &str) -> Option<Span> {
 }
 
 /// The `source` and `includes` entries of [material], with spans, for `includes.rs`.
-pub fn source_entries(text: &str) -> (Option<(String, Span)>, Vec<(String, Span)>) {
+/// A string value and where it is written.
+pub type NamedSpan = (String, Span);
+
+pub fn source_entries(text: &str) -> (Option<NamedSpan>, Vec<NamedSpan>) {
     let Ok(doc) = DeTable::parse(text) else {
         return (None, Vec::new());
     };
@@ -487,40 +490,40 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
         range = Some([0.0, 1.0]);
     }
     let soft_range = t.range("soft_range", cx);
-    if let (Some(soft), Some(hard)) = (soft_range, range) {
-        if soft[0] < hard[0] || soft[1] > hard[1] {
-            cx.error(
-                "out-of-range",
-                format!(
-                    "`soft_range` of parameter `{name}` is outside its `range` [{}, {}]",
-                    hard[0], hard[1]
-                ),
-                t.span_of("soft_range"),
-                "must lie inside range",
-            );
-        }
+    if let (Some(soft), Some(hard)) = (soft_range, range)
+        && (soft[0] < hard[0] || soft[1] > hard[1])
+    {
+        cx.error(
+            "out-of-range",
+            format!(
+                "`soft_range` of parameter `{name}` is outside its `range` [{}, {}]",
+                hard[0], hard[1]
+            ),
+            t.span_of("soft_range"),
+            "must lie inside range",
+        );
     }
     let step = t.number("step", cx);
-    if let Some(s) = step {
-        if s <= 0.0 {
-            cx.error(
-                "out-of-range",
-                "`step` must be positive",
-                t.span_of("step"),
-                "here",
-            );
-        }
+    if let Some(s) = step
+        && s <= 0.0
+    {
+        cx.error(
+            "out-of-range",
+            "`step` must be positive",
+            t.span_of("step"),
+            "here",
+        );
     }
     let power = t.number("power", cx);
-    if let Some(p) = power {
-        if p <= 0.0 {
-            cx.error(
-                "out-of-range",
-                "`power` must be positive",
-                t.span_of("power"),
-                "here",
-            );
-        }
+    if let Some(p) = power
+        && p <= 0.0
+    {
+        cx.error(
+            "out-of-range",
+            "`power` must be positive",
+            t.span_of("power"),
+            "here",
+        );
     }
     let samples = match kind {
         ParamKind::Curve => t.integer("samples", cx).unwrap_or(16),
@@ -663,10 +666,10 @@ fn parse_default(
     };
     let dwhat = format!("`default` of {what}");
     let check = |cx: &mut Cx, x: f64, span: Span| {
-        if let Some(r) = range {
-            if x < r[0] || x > r[1] {
-                out_of_range(cx, &what, x, r, span, range_span.clone());
-            }
+        if let Some(r) = range
+            && (x < r[0] || x > r[1])
+        {
+            out_of_range(cx, &what, x, r, span, range_span.clone());
         }
     };
     match kind {
@@ -759,20 +762,20 @@ fn parse_default(
                     );
                     return None;
                 };
-                if let Some(r) = range {
-                    if value < r[0] || value > r[1] {
-                        out_of_range(cx, &what, value, r, k.span_of("value"), range_span.clone());
-                    }
+                if let Some(r) = range
+                    && (value < r[0] || value > r[1])
+                {
+                    out_of_range(cx, &what, value, r, k.span_of("value"), range_span.clone());
                 }
-                if let Some(prev) = keys.last().map(|k: &Keyframe| k.time) {
-                    if time <= prev {
-                        cx.error(
-                            "unordered-keys",
-                            "curve keyframes must have increasing `time`",
-                            k.span_of("time"),
-                            format!("{time} is not after {prev}"),
-                        );
-                    }
+                if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
+                    && time <= prev
+                {
+                    cx.error(
+                        "unordered-keys",
+                        "curve keyframes must have increasing `time`",
+                        k.span_of("time"),
+                        format!("{time} is not after {prev}"),
+                    );
                 }
                 keys.push(Keyframe {
                     time,
@@ -828,15 +831,15 @@ fn parse_default(
                     );
                     return None;
                 }
-                if let Some(prev) = stops.last().map(|s: &GradientStop| s.position) {
-                    if position < prev {
-                        cx.error(
-                            "unordered-keys",
-                            "gradient stops must have non-decreasing `position`",
-                            s.span_of("position"),
-                            "out of order",
-                        );
-                    }
+                if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
+                    && position < prev
+                {
+                    cx.error(
+                        "unordered-keys",
+                        "gradient stops must have non-decreasing `position`",
+                        s.span_of("position"),
+                        "out of order",
+                    );
                 }
                 stops.push(GradientStop {
                     position,
