@@ -22,6 +22,14 @@ pub const SPLIT_SUM_LUT_SIZE: u32 = 64;
 pub const SPLIT_SUM_LUT_SAMPLES: u32 = 1024;
 /// Size and sample count are in the name, so a reused file is never a stale bake.
 pub const SPLIT_SUM_LUT_PATH: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
+/// Size and quadrature of the baked Charlie sheen albedo table (bake/sheen.rs):
+/// `SHEEN_LUT_SIZE`^2 texels, `THETA_STEPS * PHI_STEPS` = 8192 points each.
+pub const SHEEN_LUT_SIZE: u32 = 32;
+pub const SHEEN_LUT_PATH: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
+const _: () = assert!(
+    SHEEN_LUT_SIZE == 32 && bake::sheen::THETA_STEPS * bake::sheen::PHI_STEPS == 8192,
+    "SHEEN_LUT_PATH must name the table's size and quadrature"
+);
 
 /// A material's metadata and its files (paths relative to its folder).
 pub type CompiledMaterial = (MaterialMetadata, Vec<(String, Vec<u8>)>);
@@ -361,6 +369,15 @@ pub fn add_library_files(files: &mut BTreeMap<String, Vec<u8>>, reuse_from: Opti
         bake::split_sum::encode_rg16f(&lut)
     });
     files.insert(SPLIT_SUM_LUT_PATH.into(), lut);
+    let sheen_len = (SHEEN_LUT_SIZE * SHEEN_LUT_SIZE * 2) as usize;
+    let sheen = reuse_from
+        .and_then(|dir| std::fs::read(dir.join(SHEEN_LUT_PATH)).ok())
+        .filter(|b| b.len() == sheen_len)
+        .unwrap_or_else(|| {
+            let (t, p) = (bake::sheen::THETA_STEPS, bake::sheen::PHI_STEPS);
+            bake::sheen::encode_r16f(&bake::sheen::charlie_albedo_lut(SHEEN_LUT_SIZE, t, p))
+        });
+    files.insert(SHEEN_LUT_PATH.into(), sheen);
     files.insert(
         "metadata.schema.json".into(),
         weft_meta::metadata_json_schema().into_bytes(),

@@ -1,4 +1,5 @@
 //! Lookup tables the toolchain computes at build time (pure Rust, deterministic),
 //! written under `generated/luts/` and bound through the engine interface.
 
+pub mod sheen;
 pub mod split_sum;

@@ -44,5 +44,10 @@ struct WeftObject {
 // u = N.V, v = perceptual roughness; rg = (scale, bias) applied to F0.
 @group(0) @binding(3) var weft_brdf_lut: texture_2d<f32>;
 @group(0) @binding(4) var weft_lut_sampler: sampler;
+// Directional albedo E of the Charlie sheen BRDF (sheen colour 1), baked by the
+// toolchain (generated/luts/charlie_albedo_*.r16f, R16Float): u = N.V, v = sheen
+// roughness (Charlie r, clamped to >= 0.07 as in lib/sheen.wgsl), texel centres;
+// r = E. Sample with weft_lut_sampler (linear, clamp to edge).
+@group(0) @binding(5) var weft_sheen_lut: texture_2d<f32>;
 
 @group(2) @binding(0) var<uniform> weft_object: WeftObject;

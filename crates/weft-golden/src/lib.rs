@@ -1,0 +1,194 @@
+//! Image tests for weft materials, in the style of wgpu's own: render a fixed
+//! set of cases per material on lavapipe from the generated files alone, tone
+//! map to sRGB8 and compare with committed goldens using FLIP (`nv-flip`).
+//!
+//! Shared by the render tests (`tests/render.rs`), `cargo xtask bless` (which
+//! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
+
+use std::path::{Path, PathBuf};
+use weft_meta::{KeywordMode, MaterialMetadata};
+use weft_render::{
+    EnvironmentMaps, HdrImage, Luts, Material, MaterialOptions, PreviewOptions, RenderOptions,
+    Renderer, SceneKind, ShaderLanguage, Tonemap,
+};
+
+/// Goldens are small: enough to see every lobe, cheap on 2 cores.
+pub const GOLDEN_SIZE: u32 = 96;
+/// Tone mapping of goldens and gallery images.
+pub const TONEMAP: Tonemap = Tonemap::Aces;
+/// A case passes when the FLIP mean against its golden is at most this.
+/// lavapipe renders bit-identically run to run; the margin absorbs LLVM/CPU
+/// differences between machines. The perturbation test shows a wrong sign,
+/// a missing 1/pi or swapped channels all land far above it.
+pub const FLIP_MEAN_THRESHOLD: f32 = 0.01;
+
+/// One render of one material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Case {
+    pub material: String,
+    /// File stem of the golden, unique within the material.
+    pub name: String,
+    pub options: MaterialOptions,
+    pub scene: SceneKind,
+}
+
+/// The cases of a material: its default variant on the sphere and the cloth
+/// patch, every non-default tier, every non-default value of every keyword
+/// (others at their defaults), and every preset.
+pub fn cases(meta: &MaterialMetadata) -> Vec<Case> {
+    let case = |name: String, options: MaterialOptions, scene: SceneKind| Case {
+        material: meta.name.clone(),
+        name,
+        options,
+        scene,
+    };
+    let mut out = vec![
+        case("default".into(), MaterialOptions::default(), SceneKind::Sphere),
+        case("default.cloth".into(), MaterialOptions::default(), SceneKind::Cloth),
+    ];
+    for tier in meta.tiers.values.iter().filter(|t| **t != meta.tiers.default) {
+        let options = MaterialOptions { tier: Some(tier.clone()), ..Default::default() };
+        out.push(case(format!("tier-{tier}"), options.clone(), SceneKind::Sphere));
+        out.push(case(format!("tier-{tier}.cloth"), options, SceneKind::Cloth));
+    }
+    for k in &meta.keywords {
+        for v in k.values.iter().filter(|v| **v != k.default) {
+            let options = MaterialOptions { keywords: vec![(k.name.clone(), v.clone())], ..Default::default() };
+            let mode = if k.mode == KeywordMode::Constant { "const-" } else { "" };
+            out.push(case(format!("{mode}{}-{v}", k.name.to_lowercase()), options, SceneKind::Sphere));
+        }
+    }
+    for p in &meta.presets {
+        let options = MaterialOptions { preset: Some(p.name.clone()), ..Default::default() };
+        out.push(case(format!("preset-{}", p.name), options, SceneKind::Sphere));
+    }
+    out
+}
+
+/// Every `<generated>/<name>/<name>.meta.json`, sorted by name.
+pub fn materials(generated: &Path) -> Result<Vec<(PathBuf, MaterialMetadata)>, String> {
+    let mut out = Vec::new();
+    let entries = std::fs::read_dir(generated).map_err(|e| format!("cannot read {}: {e}", generated.display()))?;
+    for entry in entries {
+        let dir = entry.map_err(|e| e.to_string())?.path();
+        let Some(name) = dir.file_name().map(|n| n.to_string_lossy().into_owned()) else { continue };
+        let meta_path = dir.join(format!("{name}.meta.json"));
+        if !meta_path.is_file() {
+            continue;
+        }
+        let bytes = std::fs::read(&meta_path).map_err(|e| format!("{}: {e}", meta_path.display()))?;
+        let meta: MaterialMetadata =
+            serde_json::from_slice(&bytes).map_err(|e| format!("{}: {e}", meta_path.display()))?;
+        out.push((meta_path, meta));
+    }
+    out.sort_by(|a, b| a.1.name.cmp(&b.1.name));
+    Ok(out)
+}
+
+/// One renderer (one device, one environment) reused for every case.
+pub struct Harness {
+    renderer: Renderer,
+}
+
+impl Harness {
+    /// Fails (never skips) when no Vulkan adapter exists: the error says to
+    /// install lavapipe (`mesa-vulkan-drivers`).
+    pub fn new(generated: &Path) -> weft_render::Result<Harness> {
+        let gpu = weft_render::Gpu::new()?;
+        let luts = Luts::load_dir(generated)?;
+        let env = EnvironmentMaps::sky(&PreviewOptions::default().sky_params());
+        Ok(Harness { renderer: Renderer::new(gpu, &env, &luts)? })
+    }
+
+    pub fn adapter(&self) -> String {
+        self.renderer.gpu().describe()
+    }
+
+    /// Renders a case from `<meta dir>` at `size`x`size` in `language`.
+    pub fn render(&mut self, meta_path: &Path, case: &Case, size: u32, language: ShaderLanguage) -> weft_render::Result<HdrImage> {
+        let mut material = Material::load(meta_path)?;
+        case.options.apply(&mut material)?;
+        let preview = PreviewOptions { scene: case.scene, ..Default::default() };
+        let options = RenderOptions { width: size, height: size, language, ..preview.render_options() };
+        self.renderer.render(&material, &preview.scene(), &options)
+    }
+}
+
+/// The sRGB8 RGBA pixels a golden holds.
+pub fn to_ldr(image: &HdrImage) -> Vec<u8> {
+    image.to_srgb8(TONEMAP, 1.0)
+}
+
+/// Where a case's golden lives: `<goldens>/<material>/<case>.png`.
+pub fn golden_path(goldens: &Path, case: &Case) -> PathBuf {
+    goldens.join(&case.material).join(format!("{}.png", case.name))
+}
+
+/// FLIP between two sRGB8 RGBA images of the same size.
+pub struct FlipResult {
+    pub mean: f32,
+    pub p99: f32,
+    /// The error map coloured with FLIP's magma LUT, RGB8.
+    pub error_map_rgb: Vec<u8>,
+}
+
+fn rgb(rgba: &[u8]) -> Vec<u8> {
+    rgba.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect()
+}
+
+pub fn flip(reference_rgba: &[u8], test_rgba: &[u8], width: u32, height: u32) -> FlipResult {
+    let reference = nv_flip::FlipImageRgb8::with_data(width, height, &rgb(reference_rgba));
+    let test = nv_flip::FlipImageRgb8::with_data(width, height, &rgb(test_rgba));
+    let error = nv_flip::flip(reference, test, nv_flip::DEFAULT_PIXELS_PER_DEGREE);
+    let mut pool = nv_flip::FlipPool::from_image(&error);
+    let mean = pool.mean();
+    let p99 = pool.get_percentile(0.99, true);
+    let error_map_rgb = error.apply_color_lut(&nv_flip::magma_lut()).to_vec();
+    FlipResult { mean, p99, error_map_rgb }
+}
+
+/// Decodes an RGBA8 PNG (as written by `weft_render::encode_png`).
+pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
+    let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::ALPHA);
+    let mut reader = decoder.read_info().map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut buf = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
+    let info = reader.next_frame(&mut buf).map_err(|e| format!("{}: {e}", path.display()))?;
+    buf.truncate(info.buffer_size());
+    let rgba = match info.color_type {
+        png::ColorType::Rgba => buf,
+        png::ColorType::Rgb => buf.chunks_exact(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect(),
+        other => return Err(format!("{}: unsupported PNG colour type {other:?}", path.display())),
+    };
+    Ok((info.width, info.height, rgba))
+}
+
+pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
+    }
+    let bytes = weft_render::encode_png(width, height, rgba).map_err(|e| e.to_string())?;
+    std::fs::write(path, bytes).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Tiles equally sized RGBA images into a sheet `columns` wide, with a gap.
+pub fn contact_sheet(tiles: &[Vec<u8>], tile: u32, columns: u32) -> (u32, u32, Vec<u8>) {
+    let gap = 4;
+    let rows = (tiles.len() as u32).div_ceil(columns.max(1));
+    let (w, h) = (columns * (tile + gap) + gap, rows * (tile + gap) + gap);
+    let mut sheet = vec![0u8; (w * h * 4) as usize];
+    for px in sheet.chunks_exact_mut(4) {
+        px.copy_from_slice(&[24, 24, 28, 255]);
+    }
+    for (i, t) in tiles.iter().enumerate() {
+        let (cx, cy) = (i as u32 % columns, i as u32 / columns);
+        let (x0, y0) = (gap + cx * (tile + gap), gap + cy * (tile + gap));
+        for y in 0..tile {
+            let src = (y * tile * 4) as usize;
+            let dst = (((y0 + y) * w + x0) * 4) as usize;
+            sheet[dst..dst + (tile * 4) as usize].copy_from_slice(&t[src..src + (tile * 4) as usize]);
+        }
+    }
+    (w, h, sheet)
+}

@@ -1,0 +1,147 @@
+//! The wgpu device: Vulkan only (lavapipe on machines without a GPU).
+
+use crate::error::{Error, Result};
+use std::sync::{Arc, Mutex};
+
+/// An adapter, device and queue on the Vulkan backend.
+pub struct Gpu {
+    pub adapter: wgpu::Adapter,
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+    uncaptured: Arc<Mutex<Vec<String>>>,
+}
+
+impl Gpu {
+    /// Requests a Vulkan adapter and a device. Fails (never skips) with an
+    /// [`Error::NoAdapter`] that says to install `mesa-vulkan-drivers` when
+    /// there is none.
+    pub fn new() -> Result<Gpu> {
+        pollster::block_on(Gpu::new_async())
+    }
+
+    async fn new_async() -> Result<Gpu> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::VULKAN;
+        let instance = wgpu::Instance::new(desc);
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::None,
+                force_fallback_adapter: false,
+                compatible_surface: None,
+                apply_limit_buckets: false,
+            })
+            .await
+            .map_err(|e| Error::NoAdapter(e.to_string()))?;
+        let info = adapter.get_info();
+        // Blending into an Rgba32Float target needs FLOAT32_BLENDABLE.
+        let wanted = wgpu::Features::FLOAT32_BLENDABLE;
+        let required_features = adapter.features() & wanted;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("weft-render"),
+                required_features,
+                required_limits: wgpu::Limits::default().using_resolution(adapter.limits()),
+                experimental_features: wgpu::ExperimentalFeatures::disabled(),
+                memory_hints: wgpu::MemoryHints::Performance,
+                trace: wgpu::Trace::Off,
+            })
+            .await
+            .map_err(|e| Error::Gpu(format!("cannot create a device on {}: {e}", info.name)))?;
+        let uncaptured = Arc::new(Mutex::new(Vec::new()));
+        let sink = uncaptured.clone();
+        device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut v) = sink.lock() {
+                v.push(e.to_string());
+            }
+        }));
+        Ok(Gpu {
+            adapter,
+            device,
+            queue,
+            info,
+            uncaptured,
+        })
+    }
+
+    pub fn adapter_info(&self) -> &wgpu::AdapterInfo {
+        &self.info
+    }
+
+    /// One line: name, driver, backend and device type.
+    pub fn describe(&self) -> String {
+        let i = &self.info;
+        format!(
+            "{} ({} {}; {:?}, {:?})",
+            i.name, i.driver, i.driver_info, i.backend, i.device_type
+        )
+    }
+
+    /// Runs `f` inside a validation error scope and turns a captured error
+    /// (or any uncaptured one reported meanwhile) into [`Error::Gpu`].
+    pub(crate) fn checked<T>(&self, what: &str, f: impl FnOnce() -> T) -> Result<T> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let out = f();
+        let err = pollster::block_on(scope.pop());
+        if let Some(e) = err {
+            return Err(Error::Gpu(format!("{what}: {e}")));
+        }
+        self.take_uncaptured(what)?;
+        Ok(out)
+    }
+
+    pub(crate) fn take_uncaptured(&self, what: &str) -> Result<()> {
+        let mut v = self
+            .uncaptured
+            .lock()
+            .map_err(|_| Error::Gpu("poisoned".into()))?;
+        if v.is_empty() {
+            Ok(())
+        } else {
+            let msg = v.join("; ");
+            v.clear();
+            Err(Error::Gpu(format!("{what}: {msg}")))
+        }
+    }
+
+    pub(crate) fn wait(&self) -> Result<()> {
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map(|_| ())
+            .map_err(|e| Error::Gpu(format!("poll: {e}")))
+    }
+
+    /// Reads a whole buffer (it needs `COPY_SRC`) back to the CPU.
+    pub fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
+        let size = buffer.size();
+        let staging = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("weft readback"),
+            size,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut enc = self.device.create_command_encoder(&Default::default());
+        enc.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+        self.queue.submit([enc.finish()]);
+        self.map_read(&staging)
+    }
+
+    pub(crate) fn map_read(&self, staging: &wgpu::Buffer) -> Result<Vec<u8>> {
+        let (tx, rx) = std::sync::mpsc::channel();
+        staging.map_async(wgpu::MapMode::Read, .., move |r| {
+            let _ = tx.send(r);
+        });
+        self.wait()?;
+        rx.recv()
+            .map_err(|_| Error::Gpu("readback never completed".into()))?
+            .map_err(|e| Error::Gpu(format!("readback: {e}")))?;
+        let bytes = {
+            let view = staging
+                .get_mapped_range(..)
+                .map_err(|e| Error::Gpu(format!("readback: {e}")))?;
+            view.to_vec()
+        };
+        staging.unmap();
+        Ok(bytes)
+    }
+}

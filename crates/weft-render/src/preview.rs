@@ -1,0 +1,127 @@
+//! One-call previews: configure a material from textual options (as the
+//! `weft preview` command and a gallery take them) and render a built-in scene.
+
+use crate::environment::{EnvironmentMaps, Luts, SkyParams};
+use crate::error::{Error, Result};
+use crate::gpu::Gpu;
+use crate::image::HdrImage;
+use crate::material::Material;
+use crate::math::{self, Vec3};
+use crate::renderer::{Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage};
+use crate::scene::{Scene, SceneKind};
+
+/// Material selection and values, applied in this order: preset, variant,
+/// tier, keywords, parameter values.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MaterialOptions {
+    pub preset: Option<String>,
+    pub variant: Option<String>,
+    pub tier: Option<String>,
+    /// `(keyword, value)` pairs.
+    pub keywords: Vec<(String, String)>,
+    /// `(parameter, text)` pairs, parsed per the parameter's kind.
+    pub sets: Vec<(String, String)>,
+}
+
+impl MaterialOptions {
+    pub fn apply(&self, material: &mut Material) -> Result<()> {
+        if let Some(p) = &self.preset {
+            material.apply_preset(p)?;
+        }
+        if let Some(v) = &self.variant {
+            material.select_variant(v)?;
+        }
+        if let Some(t) = &self.tier {
+            material.set_tier(t)?;
+        }
+        for (k, v) in &self.keywords {
+            material.set_keyword(k, v)?;
+        }
+        for (name, text) in &self.sets {
+            material.set_from_str(name, text)?;
+        }
+        // Fail early on a combination that has no compiled variant.
+        material.current_variant()?;
+        Ok(())
+    }
+}
+
+/// Scene, light, image size and formats of a preview.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PreviewOptions {
+    pub scene: SceneKind,
+    pub width: u32,
+    pub height: u32,
+    /// Direction towards the light (and the sky's sun); None: the default.
+    pub light_direction: Option<Vec3>,
+    pub format: ColorFormat,
+    pub language: ShaderLanguage,
+    pub sky: SkyParams,
+}
+
+impl Default for PreviewOptions {
+    fn default() -> Self {
+        PreviewOptions {
+            scene: SceneKind::Sphere,
+            width: 256,
+            height: 256,
+            light_direction: None,
+            format: ColorFormat::Rgba16Float,
+            language: ShaderLanguage::Wgsl,
+            sky: SkyParams::default(),
+        }
+    }
+}
+
+impl PreviewOptions {
+    /// The scene with the requested light direction.
+    pub fn scene(&self) -> Scene {
+        let mut scene = Scene::new(self.scene);
+        if let Some(d) = self.light_direction {
+            scene.light.direction = math::normalize(d);
+        }
+        scene
+    }
+
+    /// The sky with its sun where the light is.
+    pub fn sky_params(&self) -> SkyParams {
+        let mut sky = self.sky;
+        sky.sun_direction = self.scene().light.direction;
+        sky
+    }
+
+    pub fn render_options(&self) -> RenderOptions {
+        RenderOptions {
+            width: self.width,
+            height: self.height,
+            format: self.format,
+            language: self.language,
+            background: Background::Sky { mip: 0.0 },
+            ..RenderOptions::default()
+        }
+    }
+}
+
+/// Renders `material` (already configured) in a fresh renderer with the
+/// engine LUTs `luts`. Returns the linear image and the adapter description.
+pub fn render_preview(
+    material: &Material,
+    luts: &Luts,
+    options: &PreviewOptions,
+) -> Result<(HdrImage, String)> {
+    if options.width == 0 || options.height == 0 || options.width > 8192 || options.height > 8192 {
+        return Err(Error::InvalidValue {
+            name: "size".into(),
+            message: format!(
+                "{}x{} is not a usable image size",
+                options.width, options.height
+            ),
+        });
+    }
+    let gpu = Gpu::new()?;
+    let adapter = gpu.describe();
+    let env = EnvironmentMaps::sky(&options.sky_params());
+    let mut renderer = Renderer::new(gpu, &env, luts)?;
+    let image = renderer.render(material, &options.scene(), &options.render_options())?;
+    Ok((image, adapter))
+}

@@ -1,0 +1,571 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_3 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_3 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 color_1_;
+    float coverage_1_;
+    float ior_1_;
+    float gamma_s_1_;
+    float gamma_v_1_;
+    float isotropy_1_;
+    char _pad6[12];
+    type_3 tangent_curve_1_;
+    metal::float4 offsets_1_;
+    metal::float4 offsets_1b;
+    int offset_count_1_;
+    char _pad10[12];
+    metal::float4 color_2_;
+    float coverage_2_;
+    float ior_2_;
+    float gamma_s_2_;
+    float gamma_v_2_;
+    float isotropy_2_;
+    char _pad16[12];
+    type_3 tangent_curve_2_;
+    metal::float4 offsets_2_;
+    metal::float4 offsets_2b;
+    int offset_count_2_;
+    float brightness;
+    char _pad21[8];
+    metal::float4 albedo_map_st;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct McThread {
+    metal::packed_float3 albedo;
+    float eta;
+    float kd;
+    float gamma_s;
+    float gamma_v;
+    char _pad5[4];
+};
+struct McFrame {
+    metal::float3 u;
+    metal::float3 v;
+    metal::float3 n;
+};
+struct McPsi {
+    metal::float3 pi;
+    metal::packed_float3 pr;
+    float u;
+    float ok;
+    char _pad4[12];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TANGENT_OFFSETS_CURVE = 0u;
+constant uint TANGENT_OFFSETS_LIST = 1u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant uint MC_CURVE_SAMPLES = 33u;
+constant uint MC_CURVE_SEGMENTS = 32u;
+constant uint MC_FAST_CHORDS = 4u;
+constant int MC_MAX_OFFSETS = 8;
+constant float MC_REF_STEP_DEG = 1.0;
+constant float MC_REF_MAX_SUBDIV = 64.0;
+constant float MC_U_INV_TWO_SIGMA2_ = 4.1035185;
+constant float MC_SQRT_TWO_PI = 2.5066283;
+constant float MC_DEG = 0.017453292;
+constant float MC_MIN_GAMMA = 0.0017453292;
+constant float MC_MIN_PROJ2_ = 0.00000001;
+constant float MC_MIN_COS2_THETA_D = 0.0001;
+constant float MC_MIN_Q = 0.000001;
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a_1 = -1.0 / (s + n.z);
+    float b_1 = (n.x * n.y) * a_1;
+    return metal::float3(1.0 + (((s * n.x) * n.x) * a_1), s * b_1, -(s) * n.x);
+}
+
+float weft_f_dielectric(
+    float cos_i,
+    float eta
+) {
+    float c = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = ((eta * eta) - 1.0) + (c * c);
+    float g = metal::sqrt(metal::max(g2_, 0.0));
+    float gmc = g - c;
+    float gpc = metal::max(g + c, 0.0000001);
+    float a_2 = gmc / gpc;
+    float b_2 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
+    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2)));
+    return (g2_ < 0.0) ? 1.0 : f;
+}
+
+float weft_f0_from_ior(
+    float ior
+) {
+    float q = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q * q;
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_3 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_3 = metal::cross(n_2, t) * s_1;
+    return metal::float3x3(t, b_3, n_2);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+float mc_gauss(
+    float gamma,
+    float x
+) {
+    float g_1 = metal::max(gamma, MC_MIN_GAMMA);
+    return metal::exp((-(x) * x) / ((2.0 * g_1) * g_1)) / (MC_SQRT_TWO_PI * g_1);
+}
+
+float mc_correlate(
+    float ci,
+    float cr,
+    float u
+) {
+    float mi = metal::max(ci, 0.0);
+    float mr = metal::max(cr, 0.0);
+    return (((1.0 - u) * mi) * mr) + (u * metal::min(mi, mr));
+}
+
+McPsi mc_psi_reference(
+    metal::float3 v_1,
+    metal::float3 wi,
+    metal::float3 wr
+) {
+    metal::float3 pi = wi - (v_1 * metal::dot(wi, v_1));
+    metal::float3 pr = wr - (v_1 * metal::dot(wr, v_1));
+    float li2_ = metal::dot(pi, pi);
+    float lr2_ = metal::dot(pr, pr);
+    bool ok_1 = metal::min(li2_, lr2_) >= MC_MIN_PROJ2_;
+    metal::float3 hi = pi * metal::rsqrt(metal::max(li2_, MC_MIN_PROJ2_));
+    metal::float3 hr = pr * metal::rsqrt(metal::max(lr2_, MC_MIN_PROJ2_));
+    float psi_d = metal::atan2(metal::length(metal::cross(hi, hr)), metal::dot(hi, hr));
+    float u_1 = metal::exp((-(psi_d) * psi_d) * MC_U_INV_TWO_SIGMA2_);
+    return McPsi {hi, hr, u_1, ok_1 ? 1.0 : 0.0};
+}
+
+metal::float4 mc_lobe_reference(
+    McFrame fr,
+    McPsi psi,
+    metal::float3 wi_1,
+    metal::float3 wr_1,
+    float ca,
+    float sa,
+    McThread th
+) {
+    bool local = {};
+    metal::float3 u_2 = (fr.u * ca) + (fr.n * sa);
+    metal::float3 np = (fr.n * ca) - (fr.u * sa);
+    float si = metal::clamp(metal::dot(wi_1, u_2), -1.0, 1.0);
+    float sr = metal::clamp(metal::dot(wr_1, u_2), -1.0, 1.0);
+    metal::float3 pi_1 = wi_1 - (u_2 * si);
+    metal::float3 pr_1 = wr_1 - (u_2 * sr);
+    float ci2_ = metal::dot(pi_1, pi_1);
+    float cr2_ = metal::dot(pr_1, pr_1);
+    if (!((metal::min(ci2_, cr2_) < MC_MIN_PROJ2_))) {
+        local = psi.ok == 0.0;
+    } else {
+        local = true;
+    }
+    bool _e41 = local;
+    if (_e41) {
+        return metal::float4(0.0);
+    }
+    float ci_1 = metal::sqrt(ci2_);
+    float cr_1 = metal::sqrt(cr2_);
+    metal::float3 hi_1 = pi_1 / metal::float3(ci_1);
+    metal::float3 hr_1 = pr_1 / metal::float3(cr_1);
+    float theta_i = metal::atan2(si, ci_1);
+    float theta_r = metal::atan2(sr, cr_1);
+    float theta_h = 0.5 * (theta_i + theta_r);
+    float theta_d = 0.5 * (theta_i - theta_r);
+    float phi_d = metal::atan2(metal::length(metal::cross(hi_1, hr_1)), metal::dot(hi_1, hr_1));
+    float cos_half_phi = metal::cos(0.5 * phi_d);
+    float u_phi = metal::exp((-(phi_d) * phi_d) * MC_U_INV_TWO_SIGMA2_);
+    float _e72 = mc_correlate(metal::dot(np, hi_1), metal::dot(np, hr_1), u_phi);
+    float _e78 = mc_correlate(metal::dot(np, psi.pi), metal::dot(np, psi.pr), psi.u);
+    float cd = metal::cos(theta_d);
+    float cd2_ = metal::max(cd * cd, MC_MIN_COS2_THETA_D);
+    float _e85 = weft_f_dielectric(cd * cos_half_phi, th.eta);
+    float _e88 = mc_gauss(th.gamma_s, theta_h);
+    float surface = (_e85 * cos_half_phi) * _e88;
+    float _e91 = weft_f_dielectric(ci_1, th.eta);
+    float _e95 = weft_f_dielectric(cr_1, th.eta);
+    float f_t = (1.0 - _e91) * (1.0 - _e95);
+    float _e103 = mc_gauss(th.gamma_v, theta_h);
+    float volume = (f_t * (((1.0 - th.kd) * _e103) + th.kd)) / (ci_1 + cr_1);
+    metal::float3 fs = (metal::float3(surface) + (volume * th.albedo)) / metal::float3(cd2_);
+    return metal::float4(fs * ((_e72 * _e78) * ci_1), _e78);
+}
+
+float mc_offset_at(
+    metal::float4 a,
+    metal::float4 b,
+    int k
+) {
+    return ((k >= 4) ? b : a)[k & 3];
+}
+
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float4 mc_thread_list_reference(
+    McFrame fr_1,
+    metal::float3 wi_2,
+    metal::float3 wr_2,
+    McThread th_1,
+    metal::float4 offsets_a,
+    metal::float4 offsets_b,
+    int count
+) {
+    metal::float4 acc = metal::float4(0.0);
+    int k_1 = 0;
+    metal::float4 seg = {};
+    int j = {};
+    int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
+    McPsi _e11 = mc_psi_reference(fr_1.v, wi_2, wr_2);
+    if (n_3 == 1) {
+        float a_3 = offsets_a.x * MC_DEG;
+        metal::float4 _e19 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, metal::cos(a_3), metal::sin(a_3), th_1);
+        return _e19;
+    }
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e75 = k_1;
+            k_1 = as_type<int>(as_type<uint>(_e75) + as_type<uint>(1));
+        }
+        loop_init = false;
+        int _e25 = k_1;
+        if (_e25 < as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) {
+        } else {
+            break;
+        }
+        {
+            int _e29 = k_1;
+            float _e30 = mc_offset_at(offsets_a, offsets_b, _e29);
+            int _e31 = k_1;
+            float _e34 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(_e31) + as_type<uint>(1)));
+            float m = metal::clamp(metal::ceil((metal::abs(_e34 - _e30) / MC_REF_STEP_DEG) - 0.001), 1.0, MC_REF_MAX_SUBDIV);
+            int mi_1 = naga_f2i32(m);
+            seg = metal::float4(0.0);
+            j = 0;
+            uint2 loop_bound_1 = uint2(4294967295u);
+            bool loop_init_1 = true;
+            while(true) {
+                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                if (!loop_init_1) {
+                    int _e67 = j;
+                    j = as_type<int>(as_type<uint>(_e67) + as_type<uint>(1));
+                }
+                loop_init_1 = false;
+                int _e51 = j;
+                if (_e51 < mi_1) {
+                } else {
+                    break;
+                }
+                {
+                    int _e53 = j;
+                    float a_4 = metal::mix(_e30, _e34, (static_cast<float>(_e53) + 0.5) / m) * MC_DEG;
+                    metal::float4 _e61 = seg;
+                    metal::float4 _e64 = mc_lobe_reference(fr_1, _e11, wi_2, wr_2, metal::cos(a_4), metal::sin(a_4), th_1);
+                    seg = _e61 + _e64;
+                }
+            }
+            metal::float4 _e69 = acc;
+            metal::float4 _e70 = seg;
+            acc = _e69 + (_e70 / metal::float4(m));
+        }
+    }
+    metal::float4 _e77 = acc;
+    return _e77 / metal::float4(static_cast<float>(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))));
+}
+
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_1 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_2 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local_1 = n_dot_wr > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        local_2 = q_1 > MC_MIN_Q;
+    } else {
+        local_2 = false;
+    }
+    bool lit = local_2;
+    return lit ? (s_2 / metal::float3(metal::max(q_1, MC_MIN_Q))) : metal::float3(0.0);
+}
+
+McThread microcylinder_thread(
+    metal::float3 color,
+    float ior_1,
+    float isotropy,
+    float gamma_s_deg,
+    float gamma_v_deg,
+    metal::float3 tint
+) {
+    return McThread {metal::saturate(color * tint), metal::clamp(ior_1, 1.0, 4.0), metal::saturate(isotropy), metal::max(gamma_s_deg, 0.0) * MC_DEG, metal::max(gamma_v_deg, 0.0) * MC_DEG};
+}
+
+float microcylinder_mean_fresnel(
+    float eta_1
+) {
+    float _e1 = weft_f0_from_ior(eta_1);
+    return _e1 + ((1.0 - _e1) / 21.0);
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[user(fake0)]]
+, constant WeftObject& weft_object [[user(fake0)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[user(fake0)]]
+, constant WeftMaterial& material [[user(fake0)]]
+, metal::sampler material_sampler [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> albedo_map [[user(fake0)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float4 s1_ = metal::float4(0.0);
+    metal::float4 s2_ = metal::float4(0.0);
+    metal::float4 _e4 = material.albedo_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = albedo_map.sample(material_sampler, _e5);
+    metal::float3 tint_1 = metal::max(_e8.xyz, metal::float3(0.0));
+    metal::float4 _e15 = material.color_1_;
+    float _e19 = material.ior_1_;
+    float _e22 = material.isotropy_1_;
+    float _e25 = material.gamma_s_1_;
+    float _e28 = material.gamma_v_1_;
+    McThread _e29 = microcylinder_thread(_e15.xyz, _e19, _e22, _e25, _e28, tint_1);
+    metal::float4 _e32 = material.color_2_;
+    float _e36 = material.ior_2_;
+    float _e39 = material.isotropy_2_;
+    float _e42 = material.gamma_s_2_;
+    float _e45 = material.gamma_v_2_;
+    McThread _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
+    float _e49 = material.coverage_1_;
+    float a1_1 = metal::saturate(_e49);
+    float _e53 = material.coverage_2_;
+    float a2_1 = true ? metal::saturate(_e53) : 0.0;
+    float _e60 = material.brightness;
+    float brightness = metal::max(_e60, 0.0);
+    metal::float3 _e68 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
+    metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
+    metal::float3 t_1 = _e72[0];
+    metal::float3 b_4 = _e72[1];
+    metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
+    metal::float3 _e83 = weft_main_light_direction(weft_frame);
+    McFrame warp = McFrame {t_1, b_4, _e70};
+    McFrame weft = McFrame {b_4, t_1, _e70};
+    {
+        {
+            metal::float4 _e94 = material.offsets_1_;
+            metal::float4 _e97 = material.offsets_1b;
+            int _e100 = material.offset_count_1_;
+            metal::float4 _e101 = mc_thread_list_reference(warp, _e83, _e82, _e29, _e94, _e97, _e100);
+            s1_ = _e101;
+            {
+                metal::float4 _e104 = material.offsets_2_;
+                metal::float4 _e107 = material.offsets_2b;
+                int _e110 = material.offset_count_2_;
+                metal::float4 _e111 = mc_thread_list_reference(weft, _e83, _e82, _e46, _e104, _e107, _e110);
+                s2_ = _e111;
+            }
+        }
+    }
+    metal::float4 _e112 = s1_;
+    metal::float4 _e113 = s2_;
+    metal::float3 _e116 = mc_combine(_e112, _e113, a1_1, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
+    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e116 * _e117;
+    float _e121 = microcylinder_mean_fresnel(_e29.eta);
+    metal::float3 amb1_ = _e29.albedo + metal::float3(_e121);
+    float _e126 = microcylinder_mean_fresnel(_e46.eta);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(_e126);
+    float cov = a1_1 + a2_1;
+    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
+    metal::float3 _e140 = weft_sh_irradiance(_e70, weft_frame);
+    metal::float3 ambient = _e140 * ambient_albedo;
+    metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, 1.0) };
+}

@@ -1,0 +1,126 @@
+// @include "lib/forward.wgsl"
+// @include "lib/microcylinder.wgsl"
+//
+// microcylinder: woven cloth from two thread sets (seed 000; Sadeghi,
+// Bisker, De Deken, Jensen 2013). Returns linear HDR radiance.
+//
+// Thread set 1 (warp) runs along the mesh tangent, thread set 2 (weft) along
+// the bitangent; each is tilted about the other by its tangent offsets. The
+// BSDF itself is the pure code of lib/microcylinder.wgsl (see its header for
+// the formulas); this file reads the uniforms and sums over the main light:
+//
+// Tiers (WEFT_TIER):
+//   fast      = control points only (offset list) or 4 curve chords;
+//               transcendental-free angle forms; Schlick F_r, F = (1 - F_r)^2.
+//   reference = the whole tangent curve integrated (32 arc-length-weighted
+//               segments, or the offset list interpolated in <= 1 deg
+//               sub-steps); exact dielectric Fresnel reflection and
+//               transmission in and out; atan2 angles.
+// Keywords: USE_SECOND_PARA (second thread set; off = a2 = 0),
+// TANGENT_OFFSETS = curve (the seed's curves) | list (Table II lists).
+//
+// Ambient (both tiers, cheap and documented as an approximation): L2 SH
+// irradiance E(n)/pi times the coverage-weighted (A_j + mean Fresnel of
+// eta_j); no environment specular (README "Ambient" compares it with the
+// model's own hemispherical response).
+
+// Thread parameters from the uniforms, clamped to their physical domains so
+// that out-of-range uniforms cannot produce negative or non-finite values.
+fn microcylinder_thread(color: vec3<f32>, ior: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
+    return McThread(
+        saturate(color * tint),
+        clamp(ior, 1.0, 4.0),
+        saturate(isotropy),
+        max(gamma_s_deg, 0.0) * MC_DEG,
+        max(gamma_v_deg, 0.0) * MC_DEG,
+    );
+}
+
+// Cosine-weighted hemispherical mean of Schlick's Fresnel:
+// 2 int_0^1 (f0 + (1 - f0)(1 - mu)^5) mu dmu = f0 + (1 - f0) / 21.
+fn microcylinder_mean_fresnel(eta: f32) -> f32 {
+    let f0 = weft_f0_from_ior(eta);
+    return f0 + (1.0 - f0) / 21.0;
+}
+
+@fragment
+fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+    // ------------------------------------------------------------ inputs
+    let uv = weft_transform_uv(in.uv0, material.albedo_map_st);
+    let tint = max(textureSample(albedo_map, material_sampler, uv).rgb, vec3<f32>(0.0));
+    let th1 = microcylinder_thread(material.thread1_color.rgb, material.thread1_ior, material.thread1_isotropy,
+                                   material.thread1_gamma_s, material.thread1_gamma_v, tint);
+    let th2 = microcylinder_thread(material.thread2_color.rgb, material.thread2_ior, material.thread2_isotropy,
+                                   material.thread2_gamma_s, material.thread2_gamma_v, tint);
+    let a1 = saturate(material.thread1_coverage);
+    let a2 = select(0.0, saturate(material.thread2_coverage), USE_SECOND_PARA);
+    let brightness = max(material.brightness, 0.0);
+
+    // ------------------------------------------------------------ geometry
+    // v falls back to +z if the camera sits on the point; a degenerate normal
+    // falls back to v. weft_tangent_frame handles zero-length and
+    // non-orthogonal tangents (any perpendicular is used).
+    let v_raw = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    let n = weft_safe_normalize(in.world_normal, v_raw);
+    let frame = weft_tangent_frame(n, in.world_tangent);
+    let t = frame[0];
+    let b = frame[1];
+    // Interpolated normals can face slightly away from the camera near
+    // silhouettes: lift v to 1e-3 above the horizon instead of going black
+    // (v = -n lifts to n).
+    let v = weft_safe_normalize(v_raw + n * max(1e-3 - dot(n, v_raw), 0.0), n);
+    let l = weft_main_light_direction();
+
+    let warp = McFrame(t, b, n);
+    let weft = McFrame(b, t, n);
+
+    // ------------------------------------------------------------ direct
+    // Each tier/keyword branch calls only its own functions so the others
+    // vanish from the variant.
+    var s1 = vec4<f32>(0.0);
+    var s2 = vec4<f32>(0.0);
+    if WEFT_TIER == TIER_REFERENCE {
+        if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
+            s1 = mc_thread_list_reference(warp, l, v, th1, material.thread1_offsets_a, material.thread1_offsets_b, material.thread1_offset_count);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_list_reference(weft, l, v, th2, material.thread2_offsets_a, material.thread2_offsets_b, material.thread2_offset_count);
+            }
+        } else {
+            s1 = mc_thread_curve_reference(warp, l, v, th1, material.thread1_curve);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_curve_reference(weft, l, v, th2, material.thread2_curve);
+            }
+        }
+    } else {
+        if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
+            s1 = mc_thread_list_fast(warp, l, v, th1, material.thread1_offsets_a, material.thread1_offsets_b, material.thread1_offset_count);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_list_fast(weft, l, v, th2, material.thread2_offsets_a, material.thread2_offsets_b, material.thread2_offset_count);
+            }
+        } else {
+            s1 = mc_thread_curve_fast(warp, l, v, th1, material.thread1_curve);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_curve_fast(weft, l, v, th2, material.thread2_curve);
+            }
+        }
+    }
+    // L_r / L_i (= BRDF x n.l), zero below either horizon.
+    let direct = mc_combine(s1, s2, a1, a2, dot(n, l), dot(n, v)) * weft_main_light_radiance();
+
+    // ------------------------------------------------------------ ambient
+    // Cheap, documented approximation (README "Ambient"): SH irradiance
+    // E(n)/pi times a per-thread "albedo + mean surface reflectance"
+    // A_j + F_avg(eta_j), F_avg = f0 + (1 - f0)/21 (the cosine-weighted
+    // hemispherical mean of Schlick), coverage-weighted. No environment
+    // specular. With no coverage at all, thread set 1's.
+    let amb1 = th1.albedo + vec3<f32>(microcylinder_mean_fresnel(th1.eta));
+    let amb2 = th2.albedo + vec3<f32>(microcylinder_mean_fresnel(th2.eta));
+    let cov = a1 + a2;
+    let ambient_albedo = select(amb1, (a1 * amb1 + a2 * amb2) / max(cov, 1e-4), cov > 1e-4);
+    let ambient = weft_sh_irradiance(n) * ambient_albedo;
+
+    // Never negative; at most the fp16 maximum (a sharp lobe under a bright
+    // light can exceed it; NaN cannot reach here: every division is guarded).
+    let radiance = clamp((direct + ambient) * brightness, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    return vec4<f32>(radiance, 1.0);
+}
