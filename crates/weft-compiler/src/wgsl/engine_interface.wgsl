@@ -37,7 +37,9 @@ struct WeftObject {
 }
 
 @group(0) @binding(0) var<uniform> weft_frame: WeftFrame;
-// Prefiltered (GGX) radiance cube: mip m holds roughness m / (mip_count - 1).
+// Prefiltered (GGX) radiance cube. Mip m holds radiance prefiltered at the
+// perceptual roughness r with r (1.7 - 0.7 r) (mip_count - 1) = m: the mapping
+// of seed 004 sec. 2.3 that lib/lighting.wgsl (weft_specular_mip) samples with.
 @group(0) @binding(1) var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) var weft_environment_sampler: sampler;
 // Split-sum environment BRDF LUT baked by the toolchain (generated/luts/):
