@@ -6,11 +6,17 @@
 //! With no Vulkan adapter these tests fail with what to install; they never skip.
 
 use std::path::{Path, PathBuf};
-use weft_golden::{Case, FLIP_MEAN_THRESHOLD, GOLDEN_SIZE, Harness, cases, flip, golden_path, materials, read_png, to_ldr, write_png};
+use weft_golden::{
+    Case, FLIP_MEAN_THRESHOLD, GOLDEN_SIZE, Harness, cases, flip, golden_path, materials, read_png,
+    to_ldr, write_png,
+};
 use weft_render::ShaderLanguage;
 
 fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
 }
 
 fn harness(generated: &Path) -> Harness {
@@ -21,12 +27,23 @@ fn harness(generated: &Path) -> Harness {
 /// and `<golden>.diff.png` (FLIP error map) next to it.
 fn compare(goldens: &Path, case: &Case, ldr: &[u8], write_artifacts: bool) -> Result<f32, String> {
     let path = golden_path(goldens, case);
-    let (w, h, golden) = read_png(&path).map_err(|e| format!("{}/{}: no golden ({e}); run `cargo xtask bless`", case.material, case.name))?;
+    let (w, h, golden) = read_png(&path).map_err(|e| {
+        format!(
+            "{}/{}: no golden ({e}); run `cargo xtask bless`",
+            case.material, case.name
+        )
+    })?;
     if (w, h) != (GOLDEN_SIZE, GOLDEN_SIZE) {
-        return Err(format!("{}: golden is {w}x{h}, expected {GOLDEN_SIZE}; run `cargo xtask bless`", path.display()));
+        return Err(format!(
+            "{}: golden is {w}x{h}, expected {GOLDEN_SIZE}; run `cargo xtask bless`",
+            path.display()
+        ));
     }
     let result = flip(&golden, ldr, w, h);
-    println!("{}/{}: FLIP mean {:.5}, p99 {:.4}", case.material, case.name, result.mean, result.p99);
+    println!(
+        "{}/{}: FLIP mean {:.5}, p99 {:.4}",
+        case.material, case.name, result.mean, result.p99
+    );
     if result.mean <= FLIP_MEAN_THRESHOLD {
         return Ok(result.mean);
     }
@@ -34,7 +51,11 @@ fn compare(goldens: &Path, case: &Case, ldr: &[u8], write_artifacts: bool) -> Re
         let actual = path.with_extension("actual.png");
         let diff = path.with_extension("diff.png");
         write_png(&actual, w, h, ldr).unwrap();
-        let diff_rgba: Vec<u8> = result.error_map_rgb.chunks_exact(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect();
+        let diff_rgba: Vec<u8> = result
+            .error_map_rgb
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect();
         write_png(&diff, w, h, &diff_rgba).unwrap();
         return Err(format!(
             "{}/{}: FLIP mean {:.4} > {FLIP_MEAN_THRESHOLD} (p99 {:.3}); wrote {} and {}",
@@ -46,7 +67,10 @@ fn compare(goldens: &Path, case: &Case, ldr: &[u8], write_artifacts: bool) -> Re
             diff.display()
         ));
     }
-    Err(format!("{}/{}: FLIP mean {:.4} > {FLIP_MEAN_THRESHOLD}", case.material, case.name, result.mean))
+    Err(format!(
+        "{}/{}: FLIP mean {:.4} > {FLIP_MEAN_THRESHOLD}",
+        case.material, case.name, result.mean
+    ))
 }
 
 #[test]
@@ -59,16 +83,32 @@ fn every_material_matches_its_goldens() {
     let mut count = 0;
     for (meta_path, meta) in materials(&generated).unwrap() {
         for case in cases(&meta) {
-            let image = h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl).unwrap();
-            assert_eq!(image.non_finite_count(), 0, "{}/{}: NaN or Inf in the render", case.material, case.name);
+            let image = h
+                .render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl)
+                .unwrap();
+            assert_eq!(
+                image.non_finite_count(),
+                0,
+                "{}/{}: NaN or Inf in the render",
+                case.material,
+                case.name
+            );
             if let Err(e) = compare(&goldens, &case, &to_ldr(&image), true) {
                 failures.push(e);
             }
             count += 1;
         }
     }
-    assert!(count >= 9, "expected a case per tier, keyword value and preset, rendered {count}");
-    assert!(failures.is_empty(), "{} of {count} render cases differ from their goldens:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        count >= 9,
+        "expected a case per tier, keyword value and preset, rendered {count}"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} of {count} render cases differ from their goldens:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 /// The WGSL and the SPIR-V of the same variant render the same image.
@@ -78,10 +118,22 @@ fn wgsl_and_spirv_render_the_same_images() {
     let mut h = harness(&generated);
     for (meta_path, meta) in materials(&generated).unwrap() {
         for case in cases(&meta) {
-            let a = to_ldr(&h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl).unwrap());
-            let b = to_ldr(&h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::SpirV).unwrap());
+            let a = to_ldr(
+                &h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl)
+                    .unwrap(),
+            );
+            let b = to_ldr(
+                &h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::SpirV)
+                    .unwrap(),
+            );
             let r = flip(&a, &b, GOLDEN_SIZE, GOLDEN_SIZE);
-            assert!(r.mean <= 1e-3, "{}/{}: WGSL vs SPIR-V FLIP mean {:.5}", case.material, case.name, r.mean);
+            assert!(
+                r.mean <= 1e-3,
+                "{}/{}: WGSL vs SPIR-V FLIP mean {:.5}",
+                case.material,
+                case.name,
+                r.mean
+            );
         }
     }
 }
@@ -108,9 +160,27 @@ fn perturbed_shaders_fail_their_goldens() {
     // (what, file, original text, replacement, case name)
     let perturbations = [
         ("unperturbed", "standard/standard.wgsl", "", "", "default"),
-        ("missing 1/pi in Lambert", "lib/brdf.wgsl", "albedo * WEFT_INV_PI", "albedo", "default"),
-        ("wrong sign of N.L", "standard/standard.wgsl", "saturate(dot(n, l))", "saturate(dot(n, -l))", "default"),
-        ("swapped colour channels", "standard/standard.wgsl", "vec4<f32>(radiance, alpha)", "vec4<f32>(radiance.bgr, alpha)", "preset-plastic"),
+        (
+            "missing 1/pi in Lambert",
+            "lib/brdf.wgsl",
+            "albedo * WEFT_INV_PI",
+            "albedo",
+            "default",
+        ),
+        (
+            "wrong sign of N.L",
+            "standard/standard.wgsl",
+            "saturate(dot(n, l))",
+            "saturate(dot(n, -l))",
+            "default",
+        ),
+        (
+            "swapped colour channels",
+            "standard/standard.wgsl",
+            "vec4<f32>(radiance, alpha)",
+            "vec4<f32>(radiance.bgr, alpha)",
+            "preset-plastic",
+        ),
     ];
     let mut h: Option<Harness> = None;
     for (what, file, from, to, case_name) in perturbations {
@@ -120,7 +190,10 @@ fn perturbed_shaders_fail_their_goldens() {
         if !from.is_empty() {
             let path = root.join(file);
             let text = std::fs::read_to_string(&path).unwrap();
-            assert!(text.contains(from), "perturbation `{what}`: `{from}` not found in {file}");
+            assert!(
+                text.contains(from),
+                "perturbation `{what}`: `{from}` not found in {file}"
+            );
             std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
         }
         let out = weft_compiler::build_library(&root, &Default::default(), &|_, _, _| {})
@@ -129,14 +202,26 @@ fn perturbed_shaders_fail_their_goldens() {
         weft_compiler::output::write_atomically(&generated, &out.files, &[]).unwrap();
         let h = h.get_or_insert_with(|| harness(&generated));
         let meta_path = generated.join("standard/standard.meta.json");
-        let meta = materials(&generated).unwrap().into_iter().find(|(_, m)| m.name == "standard").unwrap().1;
-        let case = cases(&meta).into_iter().find(|c| c.name == case_name).unwrap();
-        let image = h.render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl).unwrap();
+        let meta = materials(&generated)
+            .unwrap()
+            .into_iter()
+            .find(|(_, m)| m.name == "standard")
+            .unwrap()
+            .1;
+        let case = cases(&meta)
+            .into_iter()
+            .find(|c| c.name == case_name)
+            .unwrap();
+        let image = h
+            .render(&meta_path, &case, GOLDEN_SIZE, ShaderLanguage::Wgsl)
+            .unwrap();
         let result = compare(&goldens, &case, &to_ldr(&image), false);
         match (what, result) {
             ("unperturbed", Ok(_)) => {}
             ("unperturbed", Err(e)) => panic!("the unperturbed copy must pass: {e}"),
-            (_, Ok(mean)) => panic!("perturbation `{what}` passed its golden (FLIP mean {mean:.5})"),
+            (_, Ok(mean)) => {
+                panic!("perturbation `{what}` passed its golden (FLIP mean {mean:.5})")
+            }
             (_, Err(e)) => println!("perturbation `{what}` fails as it must: {e}"),
         }
     }

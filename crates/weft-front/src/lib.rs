@@ -10,12 +10,13 @@ pub mod diag;
 pub mod includes;
 pub mod model;
 pub mod parse;
-pub mod samples;
 pub mod toml_reader;
 pub mod variants;
 
 pub use diag::{Diagnostics, FileId, SourceDb, Span};
 pub use model::Material;
+/// Curve, gradient and colour baking (shared with engines through weft-meta).
+pub use weft_meta::bake as samples;
 
 use includes::{Origin, Resolver};
 use std::path::{Path, PathBuf};

@@ -43,24 +43,66 @@ pub fn cases(meta: &MaterialMetadata) -> Vec<Case> {
         scene,
     };
     let mut out = vec![
-        case("default".into(), MaterialOptions::default(), SceneKind::Sphere),
-        case("default.cloth".into(), MaterialOptions::default(), SceneKind::Cloth),
+        case(
+            "default".into(),
+            MaterialOptions::default(),
+            SceneKind::Sphere,
+        ),
+        case(
+            "default.cloth".into(),
+            MaterialOptions::default(),
+            SceneKind::Cloth,
+        ),
     ];
-    for tier in meta.tiers.values.iter().filter(|t| **t != meta.tiers.default) {
-        let options = MaterialOptions { tier: Some(tier.clone()), ..Default::default() };
-        out.push(case(format!("tier-{tier}"), options.clone(), SceneKind::Sphere));
-        out.push(case(format!("tier-{tier}.cloth"), options, SceneKind::Cloth));
+    for tier in meta
+        .tiers
+        .values
+        .iter()
+        .filter(|t| **t != meta.tiers.default)
+    {
+        let options = MaterialOptions {
+            tier: Some(tier.clone()),
+            ..Default::default()
+        };
+        out.push(case(
+            format!("tier-{tier}"),
+            options.clone(),
+            SceneKind::Sphere,
+        ));
+        out.push(case(
+            format!("tier-{tier}.cloth"),
+            options,
+            SceneKind::Cloth,
+        ));
     }
     for k in &meta.keywords {
         for v in k.values.iter().filter(|v| **v != k.default) {
-            let options = MaterialOptions { keywords: vec![(k.name.clone(), v.clone())], ..Default::default() };
-            let mode = if k.mode == KeywordMode::Constant { "const-" } else { "" };
-            out.push(case(format!("{mode}{}-{v}", k.name.to_lowercase()), options, SceneKind::Sphere));
+            let options = MaterialOptions {
+                keywords: vec![(k.name.clone(), v.clone())],
+                ..Default::default()
+            };
+            let mode = if k.mode == KeywordMode::Constant {
+                "const-"
+            } else {
+                ""
+            };
+            out.push(case(
+                format!("{mode}{}-{v}", k.name.to_lowercase()),
+                options,
+                SceneKind::Sphere,
+            ));
         }
     }
     for p in &meta.presets {
-        let options = MaterialOptions { preset: Some(p.name.clone()), ..Default::default() };
-        out.push(case(format!("preset-{}", p.name), options, SceneKind::Sphere));
+        let options = MaterialOptions {
+            preset: Some(p.name.clone()),
+            ..Default::default()
+        };
+        out.push(case(
+            format!("preset-{}", p.name),
+            options,
+            SceneKind::Sphere,
+        ));
     }
     out
 }
@@ -68,15 +110,19 @@ pub fn cases(meta: &MaterialMetadata) -> Vec<Case> {
 /// Every `<generated>/<name>/<name>.meta.json`, sorted by name.
 pub fn materials(generated: &Path) -> Result<Vec<(PathBuf, MaterialMetadata)>, String> {
     let mut out = Vec::new();
-    let entries = std::fs::read_dir(generated).map_err(|e| format!("cannot read {}: {e}", generated.display()))?;
+    let entries = std::fs::read_dir(generated)
+        .map_err(|e| format!("cannot read {}: {e}", generated.display()))?;
     for entry in entries {
         let dir = entry.map_err(|e| e.to_string())?.path();
-        let Some(name) = dir.file_name().map(|n| n.to_string_lossy().into_owned()) else { continue };
+        let Some(name) = dir.file_name().map(|n| n.to_string_lossy().into_owned()) else {
+            continue;
+        };
         let meta_path = dir.join(format!("{name}.meta.json"));
         if !meta_path.is_file() {
             continue;
         }
-        let bytes = std::fs::read(&meta_path).map_err(|e| format!("{}: {e}", meta_path.display()))?;
+        let bytes =
+            std::fs::read(&meta_path).map_err(|e| format!("{}: {e}", meta_path.display()))?;
         let meta: MaterialMetadata =
             serde_json::from_slice(&bytes).map_err(|e| format!("{}: {e}", meta_path.display()))?;
         out.push((meta_path, meta));
@@ -97,7 +143,9 @@ impl Harness {
         let gpu = weft_render::Gpu::new()?;
         let luts = Luts::load_dir(generated)?;
         let env = EnvironmentMaps::sky(&PreviewOptions::default().sky_params());
-        Ok(Harness { renderer: Renderer::new(gpu, &env, &luts)? })
+        Ok(Harness {
+            renderer: Renderer::new(gpu, &env, &luts)?,
+        })
     }
 
     pub fn adapter(&self) -> String {
@@ -105,11 +153,25 @@ impl Harness {
     }
 
     /// Renders a case from `<meta dir>` at `size`x`size` in `language`.
-    pub fn render(&mut self, meta_path: &Path, case: &Case, size: u32, language: ShaderLanguage) -> weft_render::Result<HdrImage> {
+    pub fn render(
+        &mut self,
+        meta_path: &Path,
+        case: &Case,
+        size: u32,
+        language: ShaderLanguage,
+    ) -> weft_render::Result<HdrImage> {
         let mut material = Material::load(meta_path)?;
         case.options.apply(&mut material)?;
-        let preview = PreviewOptions { scene: case.scene, ..Default::default() };
-        let options = RenderOptions { width: size, height: size, language, ..preview.render_options() };
+        let preview = PreviewOptions {
+            scene: case.scene,
+            ..Default::default()
+        };
+        let options = RenderOptions {
+            width: size,
+            height: size,
+            language,
+            ..preview.render_options()
+        };
         self.renderer.render(&material, &preview.scene(), &options)
     }
 }
@@ -121,7 +183,9 @@ pub fn to_ldr(image: &HdrImage) -> Vec<u8> {
 
 /// Where a case's golden lives: `<goldens>/<material>/<case>.png`.
 pub fn golden_path(goldens: &Path, case: &Case) -> PathBuf {
-    goldens.join(&case.material).join(format!("{}.png", case.name))
+    goldens
+        .join(&case.material)
+        .join(format!("{}.png", case.name))
 }
 
 /// FLIP between two sRGB8 RGBA images of the same size.
@@ -133,7 +197,9 @@ pub struct FlipResult {
 }
 
 fn rgb(rgba: &[u8]) -> Vec<u8> {
-    rgba.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect()
+    rgba.chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect()
 }
 
 pub fn flip(reference_rgba: &[u8], test_rgba: &[u8], width: u32, height: u32) -> FlipResult {
@@ -144,7 +210,11 @@ pub fn flip(reference_rgba: &[u8], test_rgba: &[u8], width: u32, height: u32) ->
     let mean = pool.mean();
     let p99 = pool.get_percentile(0.99, true);
     let error_map_rgb = error.apply_color_lut(&nv_flip::magma_lut()).to_vec();
-    FlipResult { mean, p99, error_map_rgb }
+    FlipResult {
+        mean,
+        p99,
+        error_map_rgb,
+    }
 }
 
 /// Decodes an RGBA8 PNG (as written by `weft_render::encode_png`).
@@ -152,14 +222,26 @@ pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
     let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::ALPHA);
-    let mut reader = decoder.read_info().map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut reader = decoder
+        .read_info()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let mut buf = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
-    let info = reader.next_frame(&mut buf).map_err(|e| format!("{}: {e}", path.display()))?;
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     buf.truncate(info.buffer_size());
     let rgba = match info.color_type {
         png::ColorType::Rgba => buf,
-        png::ColorType::Rgb => buf.chunks_exact(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect(),
-        other => return Err(format!("{}: unsupported PNG colour type {other:?}", path.display())),
+        png::ColorType::Rgb => buf
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect(),
+        other => {
+            return Err(format!(
+                "{}: unsupported PNG colour type {other:?}",
+                path.display()
+            ));
+        }
     };
     Ok((info.width, info.height, rgba))
 }
@@ -187,7 +269,8 @@ pub fn contact_sheet(tiles: &[Vec<u8>], tile: u32, columns: u32) -> (u32, u32, V
         for y in 0..tile {
             let src = (y * tile * 4) as usize;
             let dst = (((y0 + y) * w + x0) * 4) as usize;
-            sheet[dst..dst + (tile * 4) as usize].copy_from_slice(&t[src..src + (tile * 4) as usize]);
+            sheet[dst..dst + (tile * 4) as usize]
+                .copy_from_slice(&t[src..src + (tile * 4) as usize]);
         }
     }
     (w, h, sheet)

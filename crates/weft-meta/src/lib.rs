@@ -7,6 +7,8 @@
 //! Versioning: [`SCHEMA_VERSION`] changes whenever a field is removed or its
 //! meaning changes; adding optional fields does not bump it.
 
+pub mod bake;
+
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;

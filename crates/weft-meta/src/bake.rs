@@ -1,8 +1,9 @@
-//! Values the toolchain bakes from parameter defaults: curve samples, gradient
-//! ramps and sRGB -> linear colour conversion. Engines that let users edit
-//! curves and gradients must bake them the same way (docs/material-format.md).
+//! How the toolchain bakes parameter values: curve samples, gradient ramps and
+//! sRGB <-> linear colour. It lives here, in the crate engines link, so that an
+//! engine letting users edit curves and gradients bakes them exactly as the
+//! toolchain does (docs/material-format.md).
 
-use weft_meta::{GradientStop, Keyframe};
+use crate::{GradientStop, Keyframe};
 
 /// sRGB transfer function, encoded -> linear.
 pub fn srgb_to_linear(c: f64) -> f64 {
