@@ -349,6 +349,23 @@ pub fn is_upper_ident(s: &str) -> bool {
         && chars.all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
 }
 
+/// A table's `show_if`: exactly one condition.
+fn parse_show_if(t: &Table, cx: &mut Cx) -> Option<weft_meta::Condition> {
+    let v = t.get("show_if")?;
+    let text = expect_string(v, "`show_if`", cx)?;
+    match parse_condition_text(&text) {
+        Ok(mut c) if c.len() == 1 => c.pop(),
+        Ok(_) => {
+            bad_condition(cx, "show_if takes one condition", v.span());
+            None
+        }
+        Err(msg) => {
+            bad_condition(cx, &msg, v.span());
+            None
+        }
+    }
+}
+
 fn bad_condition(cx: &mut Cx, msg: &str, span: Span) {
     cx.error_with_note(
         "bad-condition",
@@ -545,20 +562,7 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
     }
 
     let default = parse_default(&t, kind, hdr, range, cx)?;
-    let show_if = t.get("show_if").and_then(|v| {
-        let text = expect_string(v, "`show_if`", cx)?;
-        match parse_condition_text(&text) {
-            Ok(mut c) if c.len() == 1 => c.pop(),
-            Ok(_) => {
-                bad_condition(cx, "show_if takes one condition", v.span());
-                None
-            }
-            Err(msg) => {
-                bad_condition(cx, &msg, v.span());
-                None
-            }
-        }
-    });
+    let show_if = parse_show_if(&t, cx);
 
     Some(Param {
         name: name.to_string(),
@@ -1008,20 +1012,7 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
             }
         }
     };
-    let show_if = t.get("show_if").and_then(|v| {
-        let text = expect_string(v, "`show_if`", cx)?;
-        match parse_condition_text(&text) {
-            Ok(mut c) if c.len() == 1 => c.pop(),
-            Ok(_) => {
-                bad_condition(cx, "show_if takes one condition", v.span());
-                None
-            }
-            Err(msg) => {
-                bad_condition(cx, &msg, v.span());
-                None
-            }
-        }
-    });
+    let show_if = parse_show_if(&t, cx);
     Some(Keyword {
         name: name.to_string(),
         kind,
