@@ -43,6 +43,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
         ],
     ),
     ("toml_syntax", &["toml-syntax"]),
+    ("trailing_digit_name", &["bad-name"]),
     ("unknown_enum_value", &["unknown-value"]),
     ("unknown_group", &["unknown-group"]),
     ("unknown_key", &["unknown-key"]),

@@ -337,16 +337,22 @@ pub fn source_entries(text: &str) -> (Option<NamedSpan>, Vec<NamedSpan>) {
     (source, includes)
 }
 
+/// A lower_snake identifier that survives naga's writers unchanged: they
+/// append `_` to names ending in a digit (`color_1` -> `color_1_`), which
+/// would make the metadata disagree with the emitted code.
 pub fn is_snake_ident(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some('a'..='z'))
         && chars.all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+        && !s.ends_with(|c: char| c.is_ascii_digit())
 }
 
+/// An UPPER_SNAKE identifier, with the same trailing-digit rule.
 pub fn is_upper_ident(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some('A'..='Z'))
         && chars.all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+        && !s.ends_with(|c: char| c.is_ascii_digit())
 }
 
 /// A table's `show_if`: exactly one condition.
@@ -458,7 +464,7 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
             format!("parameter name `{name}` is not a lower-case identifier"),
             name_span.clone(),
             "becomes a WGSL struct member",
-            "use lower_snake_case",
+            "use lower_snake_case that does not end in a digit (naga's writers rename such names)",
         );
     }
     let kind = parse_kind(&t, cx)?;
@@ -878,7 +884,7 @@ fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<
             format!("keyword name `{name}` is not an UPPER_SNAKE identifier (or is reserved)"),
             name_span.clone(),
             "becomes a WGSL override",
-            "use UPPER_SNAKE_CASE; WEFT_TIER and TIER_* are reserved for tiers",
+            "use UPPER_SNAKE_CASE not ending in a digit; WEFT_TIER and TIER_* are reserved for tiers",
         );
     }
     let kind_name = t.string("type", cx).unwrap_or_else(|| "toggle".into());
