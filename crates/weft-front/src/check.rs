@@ -303,6 +303,8 @@ fn check_presets(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
                                 || (p.kind == ParamKind::Color && xs.len() == 3)
                         }
                         (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(_)) => true,
+                        (ParamKind::Curve, ParamValue::Curve(_)) => true,
+                        (ParamKind::Gradient, ParamValue::Gradient(_)) => true,
                         _ => false,
                     };
                     if !ok_type {

@@ -757,122 +757,138 @@ fn parse_default(
             }
         }
         ParamKind::Curve => {
-            let items = expect_array(v, &dwhat, cx)?;
-            let mut keys = Vec::new();
-            for item in items {
-                let k = Table::new(item, "a curve keyframe", cx)?;
-                k.check_keys(KEYFRAME_KEYS, cx);
-                let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx))
-                else {
-                    cx.error(
-                        "missing-key",
-                        "a keyframe needs `time` and `value`",
-                        item.span(),
-                        "here",
-                    );
-                    return None;
-                };
-                if let Some(r) = range
-                    && (value < r[0] || value > r[1])
-                {
-                    out_of_range(cx, &what, value, r, k.span_of("value"), range_span.clone());
-                }
-                if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
-                    && time <= prev
-                {
-                    cx.error(
-                        "unordered-keys",
-                        "curve keyframes must have increasing `time`",
-                        k.span_of("time"),
-                        format!("{time} is not after {prev}"),
-                    );
-                }
-                keys.push(Keyframe {
-                    time,
-                    value,
-                    in_slope: k.number("in_slope", cx).unwrap_or(0.0),
-                    out_slope: k.number("out_slope", cx).unwrap_or(0.0),
-                });
-            }
-            if keys.is_empty() {
-                cx.error(
-                    "wrong-type",
-                    "a curve needs at least one keyframe",
-                    v.span(),
-                    "empty",
-                );
-                return None;
-            }
-            Some(ParamValue::Curve(keys))
+            parse_keyframes(v, &dwhat, &what, range, range_span.clone(), cx).map(ParamValue::Curve)
         }
-        ParamKind::Gradient => {
-            let items = expect_array(v, &dwhat, cx)?;
-            let mut stops = Vec::new();
-            for item in items {
-                let s = Table::new(item, "a gradient stop", cx)?;
-                s.check_keys(STOP_KEYS, cx);
-                let (Some(position), Some(color)) =
-                    (s.number("position", cx), s.numbers("color", cx))
-                else {
-                    cx.error(
-                        "missing-key",
-                        "a gradient stop needs `position` and `color`",
-                        item.span(),
-                        "here",
-                    );
-                    return None;
-                };
-                if !(0.0..=1.0).contains(&position) {
-                    cx.error(
-                        "out-of-range",
-                        "gradient stop `position` must be in [0, 1]",
-                        s.span_of("position"),
-                        "here",
-                    );
-                }
-                if color.len() != 3 && color.len() != 4
-                    || color.iter().any(|c| !(0.0..=1.0).contains(c))
-                {
-                    cx.error(
-                        "wrong-type",
-                        "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
-                        s.span_of("color"),
-                        "here",
-                    );
-                    return None;
-                }
-                if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
-                    && position < prev
-                {
-                    cx.error(
-                        "unordered-keys",
-                        "gradient stops must have non-decreasing `position`",
-                        s.span_of("position"),
-                        "out of order",
-                    );
-                }
-                stops.push(GradientStop {
-                    position,
-                    color: [
-                        color[0],
-                        color[1],
-                        color[2],
-                        color.get(3).copied().unwrap_or(1.0),
-                    ],
-                });
-            }
-            if stops.is_empty() {
-                cx.error(
-                    "wrong-type",
-                    "a gradient needs at least one stop",
-                    v.span(),
-                    "empty",
-                );
-                return None;
-            }
-            Some(ParamValue::Gradient(stops))
-        }
+        ParamKind::Gradient => parse_stops(v, &dwhat, cx).map(ParamValue::Gradient),
     }
+}
+
+/// Curve keyframes (`[{ time, value, in_slope, out_slope }, …]`), checked
+/// against the parameter's range; used for defaults and preset values.
+fn parse_keyframes(
+    v: &Value,
+    dwhat: &str,
+    what: &str,
+    range: Option<[f64; 2]>,
+    range_span: Span,
+    cx: &mut Cx,
+) -> Option<Vec<Keyframe>> {
+        let items = expect_array(v, dwhat, cx)?;
+        let mut keys = Vec::new();
+        for item in items {
+            let k = Table::new(item, "a curve keyframe", cx)?;
+            k.check_keys(KEYFRAME_KEYS, cx);
+            let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx))
+            else {
+                cx.error(
+                    "missing-key",
+                    "a keyframe needs `time` and `value`",
+                    item.span(),
+                    "here",
+                );
+                return None;
+            };
+            if let Some(r) = range
+                && (value < r[0] || value > r[1])
+            {
+                out_of_range(cx, what, value, r, k.span_of("value"), range_span.clone());
+            }
+            if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
+                && time <= prev
+            {
+                cx.error(
+                    "unordered-keys",
+                    "curve keyframes must have increasing `time`",
+                    k.span_of("time"),
+                    format!("{time} is not after {prev}"),
+                );
+            }
+            keys.push(Keyframe {
+                time,
+                value,
+                in_slope: k.number("in_slope", cx).unwrap_or(0.0),
+                out_slope: k.number("out_slope", cx).unwrap_or(0.0),
+            });
+        }
+        if keys.is_empty() {
+            cx.error(
+                "wrong-type",
+                "a curve needs at least one keyframe",
+                v.span(),
+                "empty",
+            );
+            return None;
+        }
+        Some(keys)
+}
+
+/// Gradient stops (`[{ position, color }, …]`); used for defaults and preset values.
+fn parse_stops(v: &Value, dwhat: &str, cx: &mut Cx) -> Option<Vec<GradientStop>> {
+        let items = expect_array(v, dwhat, cx)?;
+        let mut stops = Vec::new();
+        for item in items {
+            let s = Table::new(item, "a gradient stop", cx)?;
+            s.check_keys(STOP_KEYS, cx);
+            let (Some(position), Some(color)) =
+                (s.number("position", cx), s.numbers("color", cx))
+            else {
+                cx.error(
+                    "missing-key",
+                    "a gradient stop needs `position` and `color`",
+                    item.span(),
+                    "here",
+                );
+                return None;
+            };
+            if !(0.0..=1.0).contains(&position) {
+                cx.error(
+                    "out-of-range",
+                    "gradient stop `position` must be in [0, 1]",
+                    s.span_of("position"),
+                    "here",
+                );
+            }
+            if color.len() != 3 && color.len() != 4
+                || color.iter().any(|c| !(0.0..=1.0).contains(c))
+            {
+                cx.error(
+                    "wrong-type",
+                    "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
+                    s.span_of("color"),
+                    "here",
+                );
+                return None;
+            }
+            if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
+                && position < prev
+            {
+                cx.error(
+                    "unordered-keys",
+                    "gradient stops must have non-decreasing `position`",
+                    s.span_of("position"),
+                    "out of order",
+                );
+            }
+            stops.push(GradientStop {
+                position,
+                color: [
+                    color[0],
+                    color[1],
+                    color[2],
+                    color.get(3).copied().unwrap_or(1.0),
+                ],
+            });
+        }
+        if stops.is_empty() {
+            cx.error(
+                "wrong-type",
+                "a gradient needs at least one stop",
+                v.span(),
+                "empty",
+            );
+            return None;
+        }
+        Some(stops)
 }
 
 fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Keyword> {
@@ -1181,9 +1197,19 @@ fn parse_preset(
                         builtin.unwrap_or(TextureDefault::White),
                     ))
                 }
-                DeValue::Array(_) => PresetValue::Param(ParamValue::Vector(
-                    crate::toml_reader::expect_numbers(val, "a preset value", cx)?,
-                )),
+                DeValue::Array(_) => {
+                    let what = format!("preset value `{key}`");
+                    match params.iter().find(|p| p.name == key) {
+                        Some(p) if p.kind == ParamKind::Curve => {
+                            let range_span = p.decl.span.clone();
+                            PresetValue::Param(ParamValue::Curve(parse_keyframes(val, &what, &what, p.range, range_span, cx)?))
+                        }
+                        Some(p) if p.kind == ParamKind::Gradient => {
+                            PresetValue::Param(ParamValue::Gradient(parse_stops(val, &what, cx)?))
+                        }
+                        _ => PresetValue::Param(ParamValue::Vector(crate::toml_reader::expect_numbers(val, &what, cx)?)),
+                    }
+                }
                 other => {
                     type_error(
                         cx,
