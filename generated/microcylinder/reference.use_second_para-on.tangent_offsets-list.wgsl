@@ -14,26 +14,26 @@ struct WeftObject {
 }
 
 struct WeftMaterial {
-    color_1_: vec4<f32>,
-    coverage_1_: f32,
-    ior_1_: f32,
-    gamma_s_1_: f32,
-    gamma_v_1_: f32,
-    isotropy_1_: f32,
-    tangent_curve_1_: array<vec4<f32>, 9>,
-    offsets_1_: vec4<f32>,
-    offsets_1b: vec4<f32>,
-    offset_count_1_: i32,
-    color_2_: vec4<f32>,
-    coverage_2_: f32,
-    ior_2_: f32,
-    gamma_s_2_: f32,
-    gamma_v_2_: f32,
-    isotropy_2_: f32,
-    tangent_curve_2_: array<vec4<f32>, 9>,
-    offsets_2_: vec4<f32>,
-    offsets_2b: vec4<f32>,
-    offset_count_2_: i32,
+    thread1_color: vec4<f32>,
+    thread1_coverage: f32,
+    thread1_ior: f32,
+    thread1_gamma_s: f32,
+    thread1_gamma_v: f32,
+    thread1_isotropy: f32,
+    thread1_curve: array<vec4<f32>, 9>,
+    thread1_offsets_a: vec4<f32>,
+    thread1_offsets_b: vec4<f32>,
+    thread1_offset_count: i32,
+    thread2_color: vec4<f32>,
+    thread2_coverage: f32,
+    thread2_ior: f32,
+    thread2_gamma_s: f32,
+    thread2_gamma_v: f32,
+    thread2_isotropy: f32,
+    thread2_curve: array<vec4<f32>, 9>,
+    thread2_offsets_a: vec4<f32>,
+    thread2_offsets_b: vec4<f32>,
+    thread2_offset_count: i32,
     brightness: f32,
     albedo_map_st: vec4<f32>,
 }
@@ -395,21 +395,21 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
     let _e8 = textureSample(albedo_map, material_sampler, _e5);
     let tint_1 = max(_e8.xyz, vec3(0f));
-    let _e15 = material.color_1_;
-    let _e19 = material.ior_1_;
-    let _e22 = material.isotropy_1_;
-    let _e25 = material.gamma_s_1_;
-    let _e28 = material.gamma_v_1_;
+    let _e15 = material.thread1_color;
+    let _e19 = material.thread1_ior;
+    let _e22 = material.thread1_isotropy;
+    let _e25 = material.thread1_gamma_s;
+    let _e28 = material.thread1_gamma_v;
     let _e29 = microcylinder_thread(_e15.xyz, _e19, _e22, _e25, _e28, tint_1);
-    let _e32 = material.color_2_;
-    let _e36 = material.ior_2_;
-    let _e39 = material.isotropy_2_;
-    let _e42 = material.gamma_s_2_;
-    let _e45 = material.gamma_v_2_;
+    let _e32 = material.thread2_color;
+    let _e36 = material.thread2_ior;
+    let _e39 = material.thread2_isotropy;
+    let _e42 = material.thread2_gamma_s;
+    let _e45 = material.thread2_gamma_v;
     let _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
-    let _e49 = material.coverage_1_;
+    let _e49 = material.thread1_coverage;
     let a1_1 = saturate(_e49);
-    let _e53 = material.coverage_2_;
+    let _e53 = material.thread2_coverage;
     let a2_1 = select(0f, saturate(_e53), true);
     let _e60 = material.brightness;
     let brightness = max(_e60, 0f);
@@ -424,15 +424,15 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let weft = McFrame(b_4, t_1, _e70);
     {
         {
-            let _e94 = material.offsets_1_;
-            let _e97 = material.offsets_1b;
-            let _e100 = material.offset_count_1_;
+            let _e94 = material.thread1_offsets_a;
+            let _e97 = material.thread1_offsets_b;
+            let _e100 = material.thread1_offset_count;
             let _e101 = mc_thread_list_reference(warp, _e83, _e82, _e29, _e94, _e97, _e100);
             s1_ = _e101;
             {
-                let _e104 = material.offsets_2_;
-                let _e107 = material.offsets_2b;
-                let _e110 = material.offset_count_2_;
+                let _e104 = material.thread2_offsets_a;
+                let _e107 = material.thread2_offsets_b;
+                let _e110 = material.thread2_offset_count;
                 let _e111 = mc_thread_list_reference(weft, _e83, _e82, _e46, _e104, _e107, _e110);
                 s2_ = _e111;
             }

@@ -99,14 +99,14 @@ fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
-fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
-    let _e2 = weft_clamp_roughness(roughness_1);
-    let a = (_e2 * _e2);
+fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a = (_e3 * _e3);
     let a2_ = (a * a);
-    let noh = saturate(n_dot_h);
-    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
-    let d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    let noh = saturate(dot(n_1, h));
+    let nxh = cross(n_1, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -159,27 +159,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -239,6 +239,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var visibility: f32;
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -271,47 +272,51 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e61 = n;
     let n_dot_l_1 = saturate(dot(_e61, _e54));
     let _e64 = n;
-    let n_dot_h_1 = saturate(dot(_e64, _e57));
+    let n_dot_h = saturate(dot(_e64, _e57));
     let v_dot_h_1 = saturate(dot(_e50, _e57));
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e78 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e78;
-        let _e79 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e79;
-        let _e82 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = (vec3(1f) - _e82);
+        let _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+        visibility = _e79;
+        let _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+        env_brdf = _e80;
+        let _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+        ambient_kd = (vec3(1f) - _e83);
+        let _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = (vec3(1f) - _e87);
     }
-    let _e84 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e85 = weft_d_ggx(n_dot_h_1, roughness_7);
-    let _e86 = visibility;
-    let specular = (((_e85 * _e86) * _e84) * specular_strength);
-    let _e93 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = ((vec3(1f) - _e84) * _e93);
-    let _e96 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e96) * n_dot_l_1);
-    let _e100 = n;
-    let _e102 = weft_prefiltered_radiance(reflect(-(_e50), _e100), roughness_7);
-    let _e103 = env_brdf;
-    let indirect_specular = ((_e102 * _e103) * (ao * specular_strength));
-    let _e107 = n;
-    let _e108 = weft_sh_irradiance(_e107);
-    let _e110 = ambient_kd;
-    let indirect_diffuse = (((_e108 * ao) * _e110) * diffuse_albedo);
+    let _e89 = weft_f_schlick(f0_3, v_dot_h_1);
+    let _e90 = n;
+    let _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
+    let _e92 = visibility;
+    let specular = (((_e91 * _e92) * _e89) * specular_strength);
+    let _e96 = direct_kd;
+    let _e97 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e96 * _e97);
+    let _e100 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e100) * n_dot_l_1);
+    let _e104 = n;
+    let _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_7);
+    let _e107 = env_brdf;
+    let indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
+    let _e111 = n;
+    let _e112 = weft_sh_irradiance(_e111);
+    let _e114 = ambient_kd;
+    let indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-        let _e116 = n;
-        let _e118 = weft_sphere_map_direction(_e116, in_1.world_position);
-        let _e121 = textureSample(sphere_map, material_clamp_sampler, _e118);
-        let sph = max(_e121.xyz, vec3(0f));
-        let _e126 = color;
-        let _e129 = material.sphere_strength;
-        color = (_e126 + (sph * _e129));
+        let _e120 = n;
+        let _e122 = weft_sphere_map_direction(_e120, in_1.world_position);
+        let _e125 = textureSample(sphere_map, material_clamp_sampler, _e122);
+        let sph = max(_e125.xyz, vec3(0f));
+        let _e130 = color;
+        let _e133 = material.sphere_strength;
+        color = (_e130 + (sph * _e133));
     }
     {
     }
-    let _e132 = color;
-    let radiance = clamp(_e132, vec3(0f), vec3(65504f));
+    let _e136 = color;
+    let radiance = clamp(_e136, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -98,17 +98,18 @@ metal::float3 weft_safe_normalize(
     return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
-float weft_d_ggx(
-    float n_dot_h,
+float weft_d_ggx_nh(
+    metal::float3 n_1,
+    metal::float3 h,
     float roughness_1
 ) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a = _e2 * _e2;
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = _e3 * _e3;
     float a2_ = a * a;
-    float noh = metal::saturate(n_dot_h);
-    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
-    float d = one_minus_noh2_ + ((noh * noh) * a2_);
-    return a2_ / ((WEFT_PI * d) * d);
+    float noh = metal::saturate(metal::dot(n_1, h));
+    metal::float3 nxh = metal::cross(n_1, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -187,28 +188,28 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_1,
+    metal::float3 n_2,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_3 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
@@ -323,6 +324,7 @@ fragment fs_mainOutput fs_main(
     float visibility = {};
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
+    metal::float3 direct_kd = {};
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -352,45 +354,49 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e61 = n;
     float n_dot_l_1 = metal::saturate(metal::dot(_e61, _e54));
     metal::float3 _e64 = n;
-    float n_dot_h_1 = metal::saturate(metal::dot(_e64, _e57));
+    float n_dot_h = metal::saturate(metal::dot(_e64, _e57));
     float v_dot_h_1 = metal::saturate(metal::dot(_e50, _e57));
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e78 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e78;
-        metal::float3 _e79 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e79;
-        metal::float3 _e82 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = metal::float3(1.0) - _e82;
+        float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+        visibility = _e79;
+        metal::float3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+        env_brdf = _e80;
+        metal::float3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+        ambient_kd = metal::float3(1.0) - _e83;
+        metal::float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = metal::float3(1.0) - _e87;
     }
-    metal::float3 _e84 = weft_f_schlick(f0_3, v_dot_h_1);
-    float _e85 = weft_d_ggx(n_dot_h_1, roughness_7);
-    float _e86 = visibility;
-    metal::float3 specular = ((_e85 * _e86) * _e84) * specular_strength;
-    metal::float3 _e93 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = (metal::float3(1.0) - _e84) * _e93;
-    metal::float3 _e96 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e96) * n_dot_l_1;
-    metal::float3 _e100 = n;
-    metal::float3 _e102 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e100), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e103 = env_brdf;
-    metal::float3 indirect_specular = (_e102 * _e103) * (ao * specular_strength);
-    metal::float3 _e107 = n;
-    metal::float3 _e108 = weft_sh_irradiance(_e107, weft_frame);
-    metal::float3 _e110 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e108 * ao) * _e110) * diffuse_albedo;
+    metal::float3 _e89 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float3 _e90 = n;
+    float _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
+    float _e92 = visibility;
+    metal::float3 specular = ((_e91 * _e92) * _e89) * specular_strength;
+    metal::float3 _e96 = direct_kd;
+    metal::float3 _e97 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e96 * _e97;
+    metal::float3 _e100 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e100) * n_dot_l_1;
+    metal::float3 _e104 = n;
+    metal::float3 _e106 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e104), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e107 = env_brdf;
+    metal::float3 indirect_specular = (_e106 * _e107) * (ao * specular_strength);
+    metal::float3 _e111 = n;
+    metal::float3 _e112 = weft_sh_irradiance(_e111, weft_frame);
+    metal::float3 _e114 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e112 * ao) * _e114) * diffuse_albedo;
     color = (direct + indirect_specular) + indirect_diffuse;
     {
-        metal::float3 _e116 = n;
-        metal::float3 _e118 = weft_sphere_map_direction(_e116, in_1.world_position, weft_frame);
-        metal::float4 _e121 = sphere_map.sample(material_clamp_sampler, _e118);
-        metal::float3 sph = metal::max(_e121.xyz, metal::float3(0.0));
-        metal::float3 _e126 = color;
-        float _e131 = material.sphere_strength;
-        color = _e126 * metal::max(metal::mix(metal::float3(1.0), sph, _e131), metal::float3(0.0));
+        metal::float3 _e120 = n;
+        metal::float3 _e122 = weft_sphere_map_direction(_e120, in_1.world_position, weft_frame);
+        metal::float4 _e125 = sphere_map.sample(material_clamp_sampler, _e122);
+        metal::float3 sph = metal::max(_e125.xyz, metal::float3(0.0));
+        metal::float3 _e130 = color;
+        float _e135 = material.sphere_strength;
+        color = _e130 * metal::max(metal::mix(metal::float3(1.0), sph, _e135), metal::float3(0.0));
     }
-    metal::float3 _e137 = color;
-    metal::float3 radiance = metal::clamp(_e137, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e141 = color;
+    metal::float3 radiance = metal::clamp(_e141, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

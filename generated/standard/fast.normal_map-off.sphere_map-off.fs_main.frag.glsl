@@ -90,14 +90,14 @@ vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a = (_e2 * _e2);
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
     float a2_ = (a * a);
-    float noh = clamp(n_dot_h, 0.0, 1.0);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -150,26 +150,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n_2) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -197,6 +197,7 @@ void main() {
     float visibility = 0.0;
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
+    vec3 direct_kd = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -228,41 +229,45 @@ void main() {
     vec3 _e61 = n;
     float n_dot_l_1 = clamp(dot(_e61, _e54), 0.0, 1.0);
     vec3 _e64 = n;
-    float n_dot_h_1 = clamp(dot(_e64, _e57), 0.0, 1.0);
+    float n_dot_h = clamp(dot(_e64, _e57), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e50, _e57), 0.0, 1.0);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        float _e78 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e78;
-        vec3 _e79 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e79;
-        vec3 _e82 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = (vec3(1.0) - _e82);
+        float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+        visibility = _e79;
+        vec3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+        env_brdf = _e80;
+        vec3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+        ambient_kd = (vec3(1.0) - _e83);
+        vec3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = (vec3(1.0) - _e87);
     }
-    vec3 _e84 = weft_f_schlick(f0_3, v_dot_h_1);
-    float _e85 = weft_d_ggx(n_dot_h_1, roughness_7);
-    float _e86 = visibility;
-    vec3 specular = (((_e85 * _e86) * _e84) * specular_strength);
-    vec3 _e93 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = ((vec3(1.0) - _e84) * _e93);
-    vec3 _e96 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e96) * n_dot_l_1);
-    vec3 _e100 = n;
-    vec3 _e102 = weft_prefiltered_radiance(reflect(-(_e50), _e100), roughness_7);
-    vec3 _e103 = env_brdf;
-    vec3 indirect_specular = ((_e102 * _e103) * (ao * specular_strength));
-    vec3 _e107 = n;
-    vec3 _e108 = weft_sh_irradiance(_e107);
-    vec3 _e110 = ambient_kd;
-    vec3 indirect_diffuse = (((_e108 * ao) * _e110) * diffuse_albedo);
+    vec3 _e89 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec3 _e90 = n;
+    float _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
+    float _e92 = visibility;
+    vec3 specular = (((_e91 * _e92) * _e89) * specular_strength);
+    vec3 _e96 = direct_kd;
+    vec3 _e97 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e96 * _e97);
+    vec3 _e100 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e100) * n_dot_l_1);
+    vec3 _e104 = n;
+    vec3 _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_7);
+    vec3 _e107 = env_brdf;
+    vec3 indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
+    vec3 _e111 = n;
+    vec3 _e112 = weft_sh_irradiance(_e111);
+    vec3 _e114 = ambient_kd;
+    vec3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
     }
     {
     }
-    vec3 _e116 = color;
-    vec3 radiance = clamp(_e116, vec3(0.0), vec3(65504.0));
+    vec3 _e120 = color;
+    vec3 radiance = clamp(_e120, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

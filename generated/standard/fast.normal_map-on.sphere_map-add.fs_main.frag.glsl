@@ -101,14 +101,14 @@ vec3 weft_any_perpendicular(vec3 n_1) {
     return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
+float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(n_dot_h, 0.0, 1.0);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = clamp(dot(n_2, h), 0.0, 1.0);
+    vec3 nxh = cross(n_2, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -161,26 +161,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_2) {
+vec3 weft_sh_irradiance(vec3 n_3) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -207,16 +207,16 @@ vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
     return reflect(_e26, _e17);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
@@ -239,6 +239,7 @@ void main() {
     float visibility = 0.0;
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
+    vec3 direct_kd = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -278,48 +279,52 @@ void main() {
     vec3 _e73 = n;
     float n_dot_l_1 = clamp(dot(_e73, _e66), 0.0, 1.0);
     vec3 _e76 = n;
-    float n_dot_h_1 = clamp(dot(_e76, _e69), 0.0, 1.0);
+    float n_dot_h = clamp(dot(_e76, _e69), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e50, _e69), 0.0, 1.0);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        float _e90 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e90;
-        vec3 _e91 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e91;
-        vec3 _e94 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = (vec3(1.0) - _e94);
+        float _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
+        visibility = _e91;
+        vec3 _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
+        env_brdf = _e92;
+        vec3 _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
+        ambient_kd = (vec3(1.0) - _e95);
+        vec3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = (vec3(1.0) - _e99);
     }
-    vec3 _e96 = weft_f_schlick(f0_3, v_dot_h_1);
-    float _e97 = weft_d_ggx(n_dot_h_1, roughness_7);
-    float _e98 = visibility;
-    vec3 specular = (((_e97 * _e98) * _e96) * specular_strength);
-    vec3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = ((vec3(1.0) - _e96) * _e105);
-    vec3 _e108 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e108) * n_dot_l_1);
-    vec3 _e112 = n;
-    vec3 _e114 = weft_prefiltered_radiance(reflect(-(_e50), _e112), roughness_7);
-    vec3 _e115 = env_brdf;
-    vec3 indirect_specular = ((_e114 * _e115) * (ao * specular_strength));
-    vec3 _e119 = n;
-    vec3 _e120 = weft_sh_irradiance(_e119);
-    vec3 _e122 = ambient_kd;
-    vec3 indirect_diffuse = (((_e120 * ao) * _e122) * diffuse_albedo);
+    vec3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec3 _e102 = n;
+    float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
+    float _e104 = visibility;
+    vec3 specular = (((_e103 * _e104) * _e101) * specular_strength);
+    vec3 _e108 = direct_kd;
+    vec3 _e109 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e108 * _e109);
+    vec3 _e112 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e112) * n_dot_l_1);
+    vec3 _e116 = n;
+    vec3 _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_7);
+    vec3 _e119 = env_brdf;
+    vec3 indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
+    vec3 _e123 = n;
+    vec3 _e124 = weft_sh_irradiance(_e123);
+    vec3 _e126 = ambient_kd;
+    vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-        vec3 _e128 = n;
-        vec3 _e130 = weft_sphere_map_direction(_e128, in_1.world_position);
-        vec4 _e133 = texture(_group_1_binding_6_fs, vec3(_e130));
-        vec3 sph = max(_e133.xyz, vec3(0.0));
-        vec3 _e138 = color;
-        float _e141 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e138 + (sph * _e141));
+        vec3 _e132 = n;
+        vec3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
+        vec4 _e137 = texture(_group_1_binding_6_fs, vec3(_e134));
+        vec3 sph = max(_e137.xyz, vec3(0.0));
+        vec3 _e142 = color;
+        float _e145 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e142 + (sph * _e145));
     }
     {
     }
-    vec3 _e144 = color;
-    vec3 radiance = clamp(_e144, vec3(0.0), vec3(65504.0));
+    vec3 _e148 = color;
+    vec3 radiance = clamp(_e148, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -126,15 +126,15 @@ float3 weft_any_perpendicular(float3 n_1)
     return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1)
+float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
 {
-    const float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
     float a2_ = (a_1 * a_1);
-    float noh = saturate(n_dot_h);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = saturate(dot(n_2, h));
+    float3 nxh = cross(n_2, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -195,28 +195,28 @@ float3 weft_view_direction(float3 world_position, float3 fallback_1)
     return _e7;
 }
 
-float3 weft_sh_irradiance(float3 n_2)
+float3 weft_sh_irradiance(float3 n_3)
 {
     float3 e = (float3)0;
 
     float4 sh[9] = weft_frame.sh;
     e = (sh[0].xyz * 0.282095);
     float3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
     float3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
     float3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
     float3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
     float3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
     float3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
     float3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
     float3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
 }
@@ -246,17 +246,17 @@ float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
     return reflect(_e26, _e17);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
@@ -308,6 +308,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
+    float3 direct_kd = (float3)0;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -348,47 +349,51 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e73 = n;
     float n_dot_l_1 = saturate(dot(_e73, _e66));
     float3 _e76 = n;
-    float n_dot_h_1 = saturate(dot(_e76, _e69));
+    float n_dot_h = saturate(dot(_e76, _e69));
     float v_dot_h_1 = saturate(dot(_e50, _e69));
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        const float _e90 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e90;
-        const float3 _e91 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e91;
-        const float3 _e94 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = ((1.0).xxx - _e94);
+        const float _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
+        visibility = _e91;
+        const float3 _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
+        env_brdf = _e92;
+        const float3 _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
+        ambient_kd = ((1.0).xxx - _e95);
+        const float3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = ((1.0).xxx - _e99);
     }
-    const float3 _e96 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float _e97 = weft_d_ggx(n_dot_h_1, roughness_7);
-    float _e98 = visibility;
-    float3 specular = (((_e97 * _e98) * _e96) * specular_strength);
-    const float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (((1.0).xxx - _e96) * _e105);
-    const float3 _e108 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e108) * n_dot_l_1);
-    float3 _e112 = n;
-    const float3 _e114 = weft_prefiltered_radiance(reflect(-(_e50), _e112), roughness_7);
-    float3 _e115 = env_brdf;
-    float3 indirect_specular = ((_e114 * _e115) * (ao * specular_strength));
-    float3 _e119 = n;
-    const float3 _e120 = weft_sh_irradiance(_e119);
-    float3 _e122 = ambient_kd;
-    float3 indirect_diffuse = (((_e120 * ao) * _e122) * diffuse_albedo);
+    const float3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
+    float3 _e102 = n;
+    const float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
+    float _e104 = visibility;
+    float3 specular = (((_e103 * _e104) * _e101) * specular_strength);
+    float3 _e108 = direct_kd;
+    const float3 _e109 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e108 * _e109);
+    const float3 _e112 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e112) * n_dot_l_1);
+    float3 _e116 = n;
+    const float3 _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_7);
+    float3 _e119 = env_brdf;
+    float3 indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
+    float3 _e123 = n;
+    const float3 _e124 = weft_sh_irradiance(_e123);
+    float3 _e126 = ambient_kd;
+    float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-        float3 _e128 = n;
-        const float3 _e130 = weft_sphere_map_direction(_e128, in_1.world_position);
-        float4 _e133 = sphere_map.Sample(material_clamp_sampler, _e130);
-        float3 sph = max(_e133.xyz, (0.0).xxx);
-        float3 _e138 = color;
-        float _e141 = material.sphere_strength;
-        color = (_e138 + (sph * _e141));
+        float3 _e132 = n;
+        const float3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
+        float4 _e137 = sphere_map.Sample(material_clamp_sampler, _e134);
+        float3 sph = max(_e137.xyz, (0.0).xxx);
+        float3 _e142 = color;
+        float _e145 = material.sphere_strength;
+        color = (_e142 + (sph * _e145));
     }
     {
     }
-    float3 _e144 = color;
-    float3 radiance = clamp(_e144, (0.0).xxx, (65504.0).xxx);
+    float3 _e148 = color;
+    float3 radiance = clamp(_e148, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -107,17 +107,18 @@ metal::float3 weft_any_perpendicular(
     return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
 }
 
-float weft_d_ggx(
-    float n_dot_h,
+float weft_d_ggx_nh(
+    metal::float3 n_2,
+    metal::float3 h,
     float roughness_1
 ) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = _e2 * _e2;
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e3 * _e3;
     float a2_ = a_1 * a_1;
-    float noh = metal::saturate(n_dot_h);
-    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
-    float d = one_minus_noh2_ + ((noh * noh) * a2_);
-    return a2_ / ((WEFT_PI * d) * d);
+    float noh = metal::saturate(metal::dot(n_2, h));
+    metal::float3 nxh = metal::cross(n_2, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -196,28 +197,28 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_2,
+    metal::float3 n_3,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_3 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
@@ -245,18 +246,18 @@ metal::float3 weft_prefiltered_radiance(
 }
 
 metal::float3x3 weft_tangent_frame(
-    metal::float3 n_3,
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
@@ -349,6 +350,7 @@ fragment fs_mainOutput fs_main(
     float visibility = {};
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
+    metal::float3 direct_kd = {};
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -388,36 +390,40 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e73 = n;
     float n_dot_l_1 = metal::saturate(metal::dot(_e73, _e66));
     metal::float3 _e76 = n;
-    float n_dot_h_1 = metal::saturate(metal::dot(_e76, _e69));
+    float n_dot_h = metal::saturate(metal::dot(_e76, _e69));
     float v_dot_h_1 = metal::saturate(metal::dot(_e50, _e69));
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e90 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e90;
-        metal::float3 _e91 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e91;
-        metal::float3 _e94 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = metal::float3(1.0) - _e94;
+        float _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
+        visibility = _e91;
+        metal::float3 _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
+        env_brdf = _e92;
+        metal::float3 _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
+        ambient_kd = metal::float3(1.0) - _e95;
+        metal::float3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
+        direct_kd = metal::float3(1.0) - _e99;
     }
-    metal::float3 _e96 = weft_f_schlick(f0_3, v_dot_h_1);
-    float _e97 = weft_d_ggx(n_dot_h_1, roughness_7);
-    float _e98 = visibility;
-    metal::float3 specular = ((_e97 * _e98) * _e96) * specular_strength;
-    metal::float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = (metal::float3(1.0) - _e96) * _e105;
-    metal::float3 _e108 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e108) * n_dot_l_1;
-    metal::float3 _e112 = n;
-    metal::float3 _e114 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e112), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e115 = env_brdf;
-    metal::float3 indirect_specular = (_e114 * _e115) * (ao * specular_strength);
-    metal::float3 _e119 = n;
-    metal::float3 _e120 = weft_sh_irradiance(_e119, weft_frame);
-    metal::float3 _e122 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e120 * ao) * _e122) * diffuse_albedo;
+    metal::float3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float3 _e102 = n;
+    float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
+    float _e104 = visibility;
+    metal::float3 specular = ((_e103 * _e104) * _e101) * specular_strength;
+    metal::float3 _e108 = direct_kd;
+    metal::float3 _e109 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e108 * _e109;
+    metal::float3 _e112 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e112) * n_dot_l_1;
+    metal::float3 _e116 = n;
+    metal::float3 _e118 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e116), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e119 = env_brdf;
+    metal::float3 indirect_specular = (_e118 * _e119) * (ao * specular_strength);
+    metal::float3 _e123 = n;
+    metal::float3 _e124 = weft_sh_irradiance(_e123, weft_frame);
+    metal::float3 _e126 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e124 * ao) * _e126) * diffuse_albedo;
     color = (direct + indirect_specular) + indirect_diffuse;
-    metal::float3 _e128 = color;
-    metal::float3 radiance = metal::clamp(_e128, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e132 = color;
+    metal::float3 radiance = metal::clamp(_e132, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

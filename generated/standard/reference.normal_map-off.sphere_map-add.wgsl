@@ -94,14 +94,14 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
-fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
-    let _e2 = weft_clamp_roughness(roughness_1);
-    let a = (_e2 * _e2);
+fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a = (_e3 * _e3);
     let a2_ = (a * a);
-    let noh = saturate(n_dot_h);
-    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
-    let d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    let noh = saturate(dot(n_1, h));
+    let nxh = cross(n_1, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -146,27 +146,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -232,6 +232,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var visibility: f32;
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -264,48 +265,52 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e61 = n;
     let n_dot_l_1 = saturate(dot(_e61, _e54));
     let _e64 = n;
-    let n_dot_h_1 = saturate(dot(_e64, _e57));
+    let n_dot_h = saturate(dot(_e64, _e57));
     let v_dot_h_1 = saturate(dot(_e50, _e57));
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e78 = weft_v_smith_ggx_correlated(_e60, n_dot_l_1, roughness_6);
-        visibility = _e78;
-        let _e79 = weft_env_brdf_lut(_e60, roughness_6);
-        let _e80 = weft_env_brdf_from_lut(f0_2, _e79);
-        env_brdf = _e80;
-        let _e83 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e83), vec3(0f));
+        let _e79 = weft_v_smith_ggx_correlated(_e60, n_dot_l_1, roughness_6);
+        visibility = _e79;
+        let _e80 = weft_env_brdf_lut(_e60, roughness_6);
+        let _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+        env_brdf = _e81;
+        let _e84 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e84), vec3(0f));
+        let _e89 = ambient_kd;
+        direct_kd = _e89;
     }
-    let _e88 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e89 = weft_d_ggx(n_dot_h_1, roughness_6);
-    let _e90 = visibility;
-    let specular = (((_e89 * _e90) * _e88) * specular_strength);
-    let _e97 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = ((vec3(1f) - _e88) * _e97);
-    let _e100 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e100) * n_dot_l_1);
-    let _e104 = n;
-    let _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_6);
-    let _e107 = env_brdf;
-    let indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
-    let _e111 = n;
-    let _e112 = weft_sh_irradiance(_e111);
-    let _e114 = ambient_kd;
-    let indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
+    let _e90 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e91 = n;
+    let _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
+    let _e93 = visibility;
+    let specular = (((_e92 * _e93) * _e90) * specular_strength);
+    let _e97 = direct_kd;
+    let _e98 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e97 * _e98);
+    let _e101 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e101) * n_dot_l_1);
+    let _e105 = n;
+    let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
+    let _e108 = env_brdf;
+    let indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+    let _e112 = n;
+    let _e113 = weft_sh_irradiance(_e112);
+    let _e115 = ambient_kd;
+    let indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-        let _e120 = n;
-        let _e122 = weft_sphere_map_direction(_e120, in_1.world_position);
-        let _e125 = textureSample(sphere_map, material_clamp_sampler, _e122);
-        let sph = max(_e125.xyz, vec3(0f));
-        let _e130 = color;
-        let _e133 = material.sphere_strength;
-        color = (_e130 + (sph * _e133));
+        let _e121 = n;
+        let _e123 = weft_sphere_map_direction(_e121, in_1.world_position);
+        let _e126 = textureSample(sphere_map, material_clamp_sampler, _e123);
+        let sph = max(_e126.xyz, vec3(0f));
+        let _e131 = color;
+        let _e134 = material.sphere_strength;
+        color = (_e131 + (sph * _e134));
     }
     {
     }
-    let _e136 = color;
-    let radiance = clamp(_e136, vec3(0f), vec3(65504f));
+    let _e137 = color;
+    let radiance = clamp(_e137, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

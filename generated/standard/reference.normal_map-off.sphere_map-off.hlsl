@@ -106,15 +106,15 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
     return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1)
+float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
 {
-    const float _e2 = weft_clamp_roughness(roughness_1);
-    float a = (_e2 * _e2);
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
     float a2_ = (a * a);
-    float noh = saturate(n_dot_h);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = saturate(dot(n_1, h));
+    float3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -166,28 +166,28 @@ float3 weft_view_direction(float3 world_position, float3 fallback_1)
     return _e7;
 }
 
-float3 weft_sh_irradiance(float3 n_1)
+float3 weft_sh_irradiance(float3 n_2)
 {
     float3 e = (float3)0;
 
     float4 sh[9] = weft_frame.sh;
     e = (sh[0].xyz * 0.282095);
     float3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     float3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     float3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     float3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     float3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     float3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     float3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     float3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
 }
@@ -251,6 +251,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
+    float3 direct_kd = (float3)0;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -283,41 +284,45 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e61 = n;
     float n_dot_l_1 = saturate(dot(_e61, _e54));
     float3 _e64 = n;
-    float n_dot_h_1 = saturate(dot(_e64, _e57));
+    float n_dot_h = saturate(dot(_e64, _e57));
     float v_dot_h_1 = saturate(dot(_e50, _e57));
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        const float _e78 = weft_v_smith_ggx_correlated(_e60, n_dot_l_1, roughness_6);
-        visibility = _e78;
-        const float2 _e79 = weft_env_brdf_lut(_e60, roughness_6);
-        const float3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
-        env_brdf = _e80;
-        float3 _e83 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e83), (0.0).xxx);
+        const float _e79 = weft_v_smith_ggx_correlated(_e60, n_dot_l_1, roughness_6);
+        visibility = _e79;
+        const float2 _e80 = weft_env_brdf_lut(_e60, roughness_6);
+        const float3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+        env_brdf = _e81;
+        float3 _e84 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e84), (0.0).xxx);
+        float3 _e89 = ambient_kd;
+        direct_kd = _e89;
     }
-    const float3 _e88 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float _e89 = weft_d_ggx(n_dot_h_1, roughness_6);
-    float _e90 = visibility;
-    float3 specular = (((_e89 * _e90) * _e88) * specular_strength);
-    const float3 _e97 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (((1.0).xxx - _e88) * _e97);
-    const float3 _e100 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e100) * n_dot_l_1);
-    float3 _e104 = n;
-    const float3 _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_6);
-    float3 _e107 = env_brdf;
-    float3 indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
-    float3 _e111 = n;
-    const float3 _e112 = weft_sh_irradiance(_e111);
-    float3 _e114 = ambient_kd;
-    float3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
+    const float3 _e90 = weft_f_schlick(f0_2, v_dot_h_1);
+    float3 _e91 = n;
+    const float _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
+    float _e93 = visibility;
+    float3 specular = (((_e92 * _e93) * _e90) * specular_strength);
+    float3 _e97 = direct_kd;
+    const float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e97 * _e98);
+    const float3 _e101 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e101) * n_dot_l_1);
+    float3 _e105 = n;
+    const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
+    float3 _e108 = env_brdf;
+    float3 indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+    float3 _e112 = n;
+    const float3 _e113 = weft_sh_irradiance(_e112);
+    float3 _e115 = ambient_kd;
+    float3 indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
     }
     {
     }
-    float3 _e120 = color;
-    float3 radiance = clamp(_e120, (0.0).xxx, (65504.0).xxx);
+    float3 _e121 = color;
+    float3 radiance = clamp(_e121, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -99,14 +99,14 @@ fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
-    let _e2 = weft_clamp_roughness(roughness_1);
-    let a_1 = (_e2 * _e2);
+fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
     let a2_ = (a_1 * a_1);
-    let noh = saturate(n_dot_h);
-    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
-    let d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    let noh = saturate(dot(n_2, h));
+    let nxh = cross(n_2, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -151,27 +151,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_3.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_3.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_3.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_3.x) * n_3.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_3.y) * n_3.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_3.z) * n_3.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_3.x) * n_3.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -195,16 +195,16 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
@@ -250,6 +250,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var visibility: f32;
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -290,41 +291,45 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e73 = n;
     let n_dot_l_1 = saturate(dot(_e73, _e66));
     let _e76 = n;
-    let n_dot_h_1 = saturate(dot(_e76, _e69));
+    let n_dot_h = saturate(dot(_e76, _e69));
     let v_dot_h_1 = saturate(dot(_e50, _e69));
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e90 = weft_v_smith_ggx_correlated(_e72, n_dot_l_1, roughness_6);
-        visibility = _e90;
-        let _e91 = weft_env_brdf_lut(_e72, roughness_6);
-        let _e92 = weft_env_brdf_from_lut(f0_2, _e91);
-        env_brdf = _e92;
-        let _e95 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e95), vec3(0f));
+        let _e91 = weft_v_smith_ggx_correlated(_e72, n_dot_l_1, roughness_6);
+        visibility = _e91;
+        let _e92 = weft_env_brdf_lut(_e72, roughness_6);
+        let _e93 = weft_env_brdf_from_lut(f0_2, _e92);
+        env_brdf = _e93;
+        let _e96 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e96), vec3(0f));
+        let _e101 = ambient_kd;
+        direct_kd = _e101;
     }
-    let _e100 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e101 = weft_d_ggx(n_dot_h_1, roughness_6);
-    let _e102 = visibility;
-    let specular = (((_e101 * _e102) * _e100) * specular_strength);
-    let _e109 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = ((vec3(1f) - _e100) * _e109);
-    let _e112 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e112) * n_dot_l_1);
-    let _e116 = n;
-    let _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_6);
-    let _e119 = env_brdf;
-    let indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
-    let _e123 = n;
-    let _e124 = weft_sh_irradiance(_e123);
-    let _e126 = ambient_kd;
-    let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
+    let _e102 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e103 = n;
+    let _e104 = weft_d_ggx_nh(_e103, _e69, roughness_6);
+    let _e105 = visibility;
+    let specular = (((_e104 * _e105) * _e102) * specular_strength);
+    let _e109 = direct_kd;
+    let _e110 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e109 * _e110);
+    let _e113 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e113) * n_dot_l_1);
+    let _e117 = n;
+    let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_6);
+    let _e120 = env_brdf;
+    let indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+    let _e124 = n;
+    let _e125 = weft_sh_irradiance(_e124);
+    let _e127 = ambient_kd;
+    let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
     }
     {
     }
-    let _e132 = color;
-    let radiance = clamp(_e132, vec3(0f), vec3(65504f));
+    let _e133 = color;
+    let radiance = clamp(_e133, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -98,6 +98,21 @@ fn weft_d_ggx(n_dot_h: f32, roughness: f32) -> f32 {
     return a2 / (WEFT_PI * d * d);
 }
 
+// The same D from the vectors (Filament's form): 1 - (n.h)^2 = |n x h|^2.
+// Near the peak 1 - n.h ~ alpha^2 / 2 (2e-6 at the roughness floor) is below
+// the f32 rounding of n.h itself, so weft_d_ggx(n.h) over-estimates the peak
+// (the lobe's albedo reached 1.02, docs/energy.md); the cross product keeps
+// it. Prefer this form wherever n and h are at hand.
+fn weft_d_ggx_nh(n: vec3<f32>, h: vec3<f32>, roughness: f32) -> f32 {
+    let r = weft_clamp_roughness(roughness);
+    let a = r * r;
+    let a2 = a * a;
+    let noh = saturate(dot(n, h));
+    let nxh = cross(n, h);
+    let d = dot(nxh, nxh) + noh * noh * a2;
+    return a2 / (WEFT_PI * max(d * d, 1e-30));
+}
+
 // ---------------------------------------------------------------- F
 
 // Schlick 1994: F = F0 + (1 - F0)(1 - v.h)^5 (seed 004 sec. 2.1).

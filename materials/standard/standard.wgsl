@@ -59,24 +59,32 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     var visibility: f32;
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    // Weight of the direct diffuse lobe.
+    var direct_kd: vec3<f32>;
     if WEFT_TIER == TIER_REFERENCE {
         visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
         env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
         // Diffuse ambient gets the energy the specular lobe did not reflect
         // (Filament: Fd * (1 - E)); E <= 1, the max() is for interpolation.
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
+        // Direct diffuse gets the same 1 - E(n.v): with 1 - F(v.h) per light
+        // a white dielectric reflected up to 1.86x the incident light at
+        // grazing view (docs/energy.md); with 1 - E the directional albedo is
+        // E + (1 - E) rho <= 1.
+        direct_kd = ambient_kd;
     } else {
         visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
         env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
         ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
+        direct_kd = vec3<f32>(1.0) - weft_f_schlick(f0, v_dot_h);
     }
 
     // ------------------------------------------------------------ direct
     // Cook-Torrance D * V * F with V = G / (4 n.v n.l) (finite for all
     // cosines, see brdf.wgsl); kd = (1 - F)(1 - metallic), Lambert 1/pi.
     let f = weft_f_schlick(f0, v_dot_h);
-    let specular = weft_d_ggx(n_dot_h, roughness) * visibility * f * specular_strength;
-    let diffuse = (vec3<f32>(1.0) - f) * weft_diffuse_lambert(diffuse_albedo);
+    let specular = weft_d_ggx_nh(n, h, roughness) * visibility * f * specular_strength;
+    let diffuse = direct_kd * weft_diffuse_lambert(diffuse_albedo);
     let direct = (diffuse + specular) * weft_main_light_radiance() * n_dot_l;
 
     // ------------------------------------------------------------ indirect

@@ -23,8 +23,12 @@ enum Command {
     /// Rewrite generated/ from materials/ (atomically, removing stale files).
     Regenerate {
         /// Do not write: fail and list the stale files if generated/ is out of date.
-        #[arg(long)]
+        #[arg(long, conflicts_with = "reports")]
         check: bool,
+        /// Also run the shading benchmark and rewrite its reports in
+        /// generated/reports/ (machine-dependent timings: never done by default).
+        #[arg(long)]
+        reports: bool,
     },
     /// Re-render every golden under tests/goldens/ (removing stale ones).
     Bless,
@@ -46,6 +50,55 @@ enum Bench {
         #[arg(long, default_value_t = 5)]
         runs: usize,
     },
+    /// Every material x tier: GPU time per frame (timestamp queries), ratio to
+    /// standard's fast tier, SPIR-V instructions, error against the reference tier.
+    Shading {
+        #[command(flatten)]
+        args: ShadingArgs,
+        /// Also write generated/reports/ (shading.md, <name>.measurements.json, <name>.pareto.svg).
+        #[arg(long)]
+        write: bool,
+    },
+}
+
+#[derive(clap::Args)]
+struct ShadingArgs {
+    /// Only these materials (repeatable; standard's fast tier is always timed as the baseline).
+    #[arg(long = "material", value_name = "NAME")]
+    materials: Vec<String>,
+    /// Square image size.
+    #[arg(long, default_value_t = 512)]
+    size: u32,
+    /// Timed frames per tier (median reported).
+    #[arg(long, default_value_t = 50)]
+    frames: u32,
+    /// Untimed frames per tier first.
+    #[arg(long, default_value_t = 5)]
+    warmup: u32,
+    /// Rounds over all tiers the timed frames are split into.
+    #[arg(long, default_value_t = 10)]
+    rounds: u32,
+    /// Time on the CPU (submit to completion) even with timestamp queries.
+    #[arg(long)]
+    cpu_timer: bool,
+    /// A tier whose frames would take longer than this gets fewer (at least 5).
+    #[arg(long, default_value_t = 20.0, value_name = "SECONDS")]
+    max_seconds_per_tier: f64,
+}
+
+impl ShadingArgs {
+    fn options(&self) -> weft_golden::shading::ShadingOptions {
+        weft_golden::shading::ShadingOptions {
+            size: self.size.max(1),
+            frames: self.frames.max(1),
+            warmup: self.warmup,
+            rounds: self.rounds.max(1),
+            force_cpu_timer: self.cpu_timer,
+            max_seconds_per_tier: self.max_seconds_per_tier,
+            materials: self.materials.clone(),
+            ..Default::default()
+        }
+    }
 }
 
 fn workspace_root() -> PathBuf {
@@ -59,12 +112,32 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let root = workspace_root();
     match cli.command {
-        Command::Regenerate { check } => regenerate(&root, check),
+        Command::Regenerate { check, reports } => {
+            let status = regenerate(&root, check);
+            if reports && status == ExitCode::SUCCESS {
+                bench_shading(
+                    &root,
+                    &Default::default(),
+                    true,
+                    "cargo xtask regenerate --reports",
+                )
+            } else {
+                status
+            }
+        }
         Command::Bless => bless(&root),
         Command::Gallery => gallery(&root),
         Command::Bench {
             what: Bench::Compile { runs },
         } => bench_compile(&root, runs.max(1)),
+        Command::Bench {
+            what: Bench::Shading { args, write },
+        } => bench_shading(
+            &root,
+            &args.options(),
+            write,
+            "cargo xtask bench shading --write",
+        ),
     }
 }
 
@@ -237,6 +310,38 @@ fn bench_compile(root: &Path, runs: usize) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// Runs the shading benchmark on generated/, prints the table and, with
+/// `write`, rewrites its files in generated/reports/.
+fn bench_shading(
+    root: &Path,
+    options: &weft_golden::shading::ShadingOptions,
+    write: bool,
+    command: &str,
+) -> ExitCode {
+    use weft_golden::shading;
+    let generated = root.join("generated");
+    let report = match shading::run(&generated, options, &mut |s| eprintln!("{s}")) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    println!("{}\n", shading::describe(&report));
+    print!("{}", shading::markdown_table(&report.materials));
+    println!("\nbench shading: {:.1} s", report.seconds);
+    if write {
+        match shading::write_reports(&generated.join("reports"), &report, command) {
+            Ok(files) => println!("wrote {} files in generated/reports/", files.len()),
+            Err(e) => {
+                eprintln!("error: cannot write reports: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    ExitCode::SUCCESS
+}
+
 /// Renders every case of every generated material with `render`.
 fn render_cases(
     root: &Path,
@@ -318,6 +423,15 @@ fn gallery(root: &Path) -> ExitCode {
         weft_render::encode_png(w, h, &sheet).expect("encode PNG"),
     );
     let generated = root.join("generated");
+    // Measured tiers, when `cargo xtask regenerate --reports` left reports.
+    for (m, _) in &mut sections {
+        let meta_path = generated
+            .join(&m.name)
+            .join(format!("{}.meta.json", m.name));
+        if let Err(e) = m.attach_measurements(&meta_path) {
+            eprintln!("warning: ignoring measurements: {e}");
+        }
+    }
     let md = gallery_markdown(&sections, &adapter);
     let write = output::write_atomically(&generated.join("gallery"), &files, &[])
         .and_then(|()| std::fs::write(generated.join("gallery.md"), md));
@@ -424,6 +538,16 @@ fn gallery_markdown(
                 .collect::<Vec<_>>()
                 .join("; ")
         );
+        if let Some(ms) = &m.measurements {
+            let _ = writeln!(
+                md,
+                "Cost and accuracy per tier (from `generated/reports/{}.measurements.json`):\n\n{}\n![{} cost vs error](reports/{}.pareto.svg)\n",
+                m.name,
+                weft_golden::shading::tier_table(ms, &m.inputs_hash),
+                m.name,
+                m.name
+            );
+        }
     }
     md
 }

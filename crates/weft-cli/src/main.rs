@@ -80,6 +80,136 @@ enum Command {
     /// Render a material with the wgpu runtime (Vulkan; lavapipe without a GPU) to a PNG.
     #[command(after_help = PREVIEW_EXAMPLES)]
     Preview(PreviewArgs),
+    /// Sweep materials for NaN, Inf, negative and > 65504 outputs over their parameter grid and
+    /// geometric extremes (Vulkan; lavapipe without a GPU). Exit status 1 on any.
+    #[command(after_help = STABILITY_EXAMPLES)]
+    Stability(StabilityArgs),
+    /// Measure every material x tier of a generated folder: GPU time per frame, ratio to
+    /// standard's fast tier, SPIR-V instructions and error against the reference tier.
+    #[command(after_help = BENCH_EXAMPLES)]
+    Bench(BenchArgs),
+}
+
+const BENCH_EXAMPLES: &str = "Examples:
+  weft bench
+  weft bench generated --material microcylinder --size 256 --frames 20
+  weft bench --write-reports          # generated/reports/: shading.md, <name>.measurements.json, <name>.pareto.svg
+
+GPU time comes from timestamp queries around the render pass (clear + the material's draws, no
+background); an adapter without them is timed on the CPU, and the `timer` line says so. Errors are
+over object pixels, against the material's reference tier with the same keywords and parameters.";
+
+#[derive(clap::Args)]
+struct BenchArgs {
+    /// A generated folder (`weft build` output).
+    #[arg(default_value = "generated")]
+    generated: PathBuf,
+    /// Only these materials (repeatable); standard's fast tier is still timed as the baseline.
+    #[arg(long = "material", value_name = "NAME")]
+    materials: Vec<String>,
+    /// Square image size in pixels.
+    #[arg(long, default_value_t = 512)]
+    size: u32,
+    /// Timed frames per tier (the median is reported).
+    #[arg(long, default_value_t = 50)]
+    frames: u32,
+    /// Untimed warm-up frames per tier.
+    #[arg(long, default_value_t = 5)]
+    warmup: u32,
+    /// Rounds over all tiers the timed frames are split into.
+    #[arg(long, default_value_t = 10)]
+    rounds: u32,
+    /// Time on the CPU (submit to completion) even when timestamp queries exist.
+    #[arg(long)]
+    cpu_timer: bool,
+    /// A tier whose frames would take longer than this gets fewer (at least 5).
+    #[arg(long, default_value_t = 20.0, value_name = "SECONDS")]
+    max_seconds_per_tier: f64,
+    /// Write <generated>/reports/ (read by `weft inspect` and the gallery).
+    #[arg(long)]
+    write_reports: bool,
+}
+
+fn bench(args: &BenchArgs) -> Result<(), String> {
+    use weft_golden::shading;
+    let options = shading::ShadingOptions {
+        size: args.size.max(1),
+        frames: args.frames.max(1),
+        warmup: args.warmup,
+        rounds: args.rounds.max(1),
+        force_cpu_timer: args.cpu_timer,
+        max_seconds_per_tier: args.max_seconds_per_tier,
+        materials: args.materials.clone(),
+        ..Default::default()
+    };
+    let report = shading::run(&args.generated, &options, &mut |s| eprintln!("{s}"))?;
+    println!("{}\n", shading::describe(&report));
+    print!("{}", shading::markdown_table(&report.materials));
+    println!(
+        "\ntimer: {}; total {:.1} s",
+        report.timer.name(),
+        report.seconds
+    );
+    if args.write_reports {
+        let dir = args.generated.join("reports");
+        let files = shading::write_reports(&dir, &report, "weft bench --write-reports")?;
+        println!("wrote {} files in {}", files.len(), dir.display());
+    }
+    Ok(())
+}
+
+/// Prints measured per-tier figures attached from `<generated>/reports/`
+/// (a .meta.json's folder, or `generated/` for a .toml).
+fn print_measurements(m: &mut MaterialMetadata, path: &Path) {
+    let meta_path = if path.extension().is_some_and(|e| e == "json") {
+        path.to_path_buf()
+    } else {
+        Path::new("generated").join(&m.name).join("x.meta.json")
+    };
+    if let Err(e) = m.attach_measurements(&meta_path) {
+        eprintln!("warning: ignoring measurements: {e}");
+    }
+    let Some(ms) = &m.measurements else { return };
+    let stale = if ms.inputs_hash == m.inputs_hash {
+        ""
+    } else {
+        " — measured on an earlier version of the material"
+    };
+    println!(
+        "\nMeasured cost and error ({}x{} {}, {}, {}{stale})",
+        ms.width, ms.height, ms.scene, ms.adapter, ms.timer
+    );
+    let rows: Vec<Vec<String>> = ms
+        .tiers
+        .iter()
+        .map(|t| {
+            vec![
+                t.tier.clone(),
+                format!("{:.3}", t.gpu_ms),
+                t.ratio_to_standard_fast
+                    .map_or("-".into(), |r| format!("{r:.2}")),
+                t.spirv_instructions.to_string(),
+                format!("{:.4}", t.flip_mean),
+                format!("{:.4}", t.flip_p99),
+                format!("{:.4}", t.rel_rmse),
+            ]
+        })
+        .collect();
+    print!(
+        "{}",
+        weft_cli::tables::table(
+            &[
+                "tier",
+                "GPU ms",
+                "x standard fast",
+                "SPIR-V instr.",
+                "FLIP mean",
+                "FLIP p99",
+                "rel. RMSE"
+            ],
+            &rows
+        )
+    );
 }
 
 const PREVIEW_EXAMPLES: &str = "Examples:
@@ -301,6 +431,141 @@ fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), String> 
     Ok(())
 }
 
+const STABILITY_EXAMPLES: &str = "Examples:
+  weft stability                                   compile materials/ and sweep every material
+  weft stability generated
+  weft stability materials/standard/standard.toml --show 100
+  weft stability generated/standard/standard.meta.json
+
+Every canonical variant (and constant-keyword value) is drawn with each parameter at its min, mid
+and max (colours 0 and 1; textures black, white, flat normal; others at their defaults) plus the
+all-min and all-max corners, at 84 geometric cases (N.V and N.L at 1, 1e-4, 0 and negative, L = V,
+L = -V, grazing, H parallel to the tangent, degenerate tangents and normals) into an Rgba32Float
+target. Any NaN, Inf, negative or > 65504 channel is printed with where it happened; exit status 1.";
+
+#[derive(clap::Args)]
+struct StabilityArgs {
+    /// A materials folder or .toml (compiled into a temporary folder), a generated folder or a .meta.json.
+    #[arg(default_value = "materials")]
+    path: PathBuf,
+    /// Only these materials (repeatable).
+    #[arg(long = "material", value_name = "NAME")]
+    materials: Vec<String>,
+    /// Print at most this many failures (every failure is counted).
+    #[arg(long, default_value_t = 50)]
+    show: usize,
+}
+
+/// `weft stability`: Ok(true) when nothing bad was found.
+fn stability(args: &StabilityArgs, quiet: bool, color: Color) -> Result<bool, String> {
+    use weft_render::probe::{
+        Probe, SweepReport, failures_by_case, generated_materials, sweep_material, sweep_renderer,
+    };
+    let started = std::time::Instant::now();
+    let path = &args.path;
+    let is_generated_dir = path.is_dir() && generated_materials(path).is_ok_and(|m| !m.is_empty());
+    let _tmp;
+    let (metas, generated) = if path.extension().is_some_and(|e| e == "json") {
+        let dir = path
+            .parent()
+            .and_then(Path::parent)
+            .unwrap_or(Path::new("."))
+            .to_path_buf();
+        (vec![path.clone()], dir)
+    } else if is_generated_dir {
+        (
+            generated_materials(path).map_err(|e| e.to_string())?,
+            path.clone(),
+        )
+    } else {
+        let out = build(std::slice::from_ref(path), &BuildOptions::default(), true).map_err(
+            |(db, diags)| {
+                report(&db, &diags, color);
+                format!("`{}` does not compile", path.display())
+            },
+        )?;
+        let tmp =
+            tempfile::tempdir().map_err(|e| format!("cannot create a temporary folder: {e}"))?;
+        let dir = tmp.path().join("generated");
+        output::write_atomically(&dir, &out.files, &[])
+            .map_err(|e| format!("cannot write `{}`: {e}", dir.display()))?;
+        _tmp = tmp;
+        (generated_materials(&dir).map_err(|e| e.to_string())?, dir)
+    };
+    let metas: Vec<PathBuf> = metas
+        .into_iter()
+        .filter(|m| {
+            args.materials.is_empty()
+                || m.parent()
+                    .and_then(Path::file_name)
+                    .is_some_and(|n| args.materials.iter().any(|x| *x == *n.to_string_lossy()))
+        })
+        .collect();
+    if metas.is_empty() {
+        return Err(format!("no materials to sweep in `{}`", path.display()));
+    }
+    let luts = weft_render::Luts::load_dir(&generated).map_err(|e| e.to_string())?;
+    let mut renderer = sweep_renderer(&luts).map_err(|e| e.to_string())?;
+    let probe = Probe::stability(weft_render::Light::default().radiance);
+    let mut sweep = SweepReport::default();
+    let show_progress = !quiet && std::io::stderr().is_terminal();
+    for meta in &metas {
+        let t = std::time::Instant::now();
+        let name = meta
+            .file_stem()
+            .map(|s| s.to_string_lossy().trim_end_matches(".meta").to_string())
+            .unwrap_or_default();
+        sweep_material(&mut renderer, &probe, meta, &mut sweep, &mut |i, n| {
+            if show_progress {
+                eprint!("\r\x1b[K[{i}/{n}] {name}");
+            }
+        })
+        .map_err(|e| format!("{}: {e}", meta.display()))?;
+        if show_progress {
+            eprint!("\r\x1b[K");
+        }
+        let m = sweep.materials.last().expect("one per material");
+        if !quiet {
+            println!(
+                "{}: {} variant(s), {} settings, {} draws, {} bad output(s) ({:.1}s)",
+                m.material,
+                m.variants,
+                m.renders,
+                m.draws,
+                m.bad,
+                t.elapsed().as_secs_f64()
+            );
+        }
+    }
+    let bad = sweep.bad();
+    if bad > 0 {
+        println!("\nfailing geometric cases ((variant, setting) pairs, kinds):");
+        for (case, (n, kinds)) in failures_by_case(&sweep.failures) {
+            let kinds: Vec<String> = kinds.iter().map(ToString::to_string).collect();
+            println!("  {case}: {n} ({})", kinds.join(", "));
+        }
+        println!("\nfailures (material variant [parameter values] at `case`: value):");
+        for f in sweep.failures.iter().take(args.show) {
+            println!("  {f}");
+        }
+        if sweep.failures.len() > args.show {
+            println!(
+                "  ... and {} more (--show N)",
+                sweep.failures.len() - args.show
+            );
+        }
+    }
+    if !quiet || bad > 0 {
+        println!(
+            "{} on {} in {:.1}s",
+            sweep.summary(),
+            renderer.gpu().describe(),
+            started.elapsed().as_secs_f64()
+        );
+    }
+    Ok(bad == 0)
+}
+
 fn color_choice(c: Color) -> ColorChoice {
     match c {
         Color::Always => ColorChoice::Always,
@@ -440,9 +705,10 @@ fn main() -> ExitCode {
             }
         },
         Command::Inspect { path } => match load_metadata(&path, cli.color) {
-            Some(ms) => {
-                for m in &ms {
+            Some(mut ms) => {
+                for m in &mut ms {
                     print!("{}", weft_cli::tables::inspect(m));
+                    print_measurements(m, &path);
                 }
                 ExitCode::SUCCESS
             }
@@ -457,7 +723,22 @@ fn main() -> ExitCode {
             }
             None => ExitCode::FAILURE,
         },
+        Command::Stability(args) => match stability(&args, cli.quiet, cli.color) {
+            Ok(true) => ExitCode::SUCCESS,
+            Ok(false) => ExitCode::FAILURE,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::FAILURE
+            }
+        },
         Command::Preview(args) => match preview(&args, cli.quiet, cli.color) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::FAILURE
+            }
+        },
+        Command::Bench(args) => match bench(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("error: {e}");

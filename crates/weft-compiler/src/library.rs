@@ -171,6 +171,8 @@ pub fn compile_material(
         passes: metadata::passes(m),
         vertex_inputs: metadata::vertex_inputs(m),
         variants: variants_meta,
+        // Measured by `weft bench`, attached at load time from reports/, never built in.
+        measurements: None,
     };
     Some((meta, files))
 }

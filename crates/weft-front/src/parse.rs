@@ -773,122 +773,118 @@ fn parse_keyframes(
     range_span: Span,
     cx: &mut Cx,
 ) -> Option<Vec<Keyframe>> {
-        let items = expect_array(v, dwhat, cx)?;
-        let mut keys = Vec::new();
-        for item in items {
-            let k = Table::new(item, "a curve keyframe", cx)?;
-            k.check_keys(KEYFRAME_KEYS, cx);
-            let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx))
-            else {
-                cx.error(
-                    "missing-key",
-                    "a keyframe needs `time` and `value`",
-                    item.span(),
-                    "here",
-                );
-                return None;
-            };
-            if let Some(r) = range
-                && (value < r[0] || value > r[1])
-            {
-                out_of_range(cx, what, value, r, k.span_of("value"), range_span.clone());
-            }
-            if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
-                && time <= prev
-            {
-                cx.error(
-                    "unordered-keys",
-                    "curve keyframes must have increasing `time`",
-                    k.span_of("time"),
-                    format!("{time} is not after {prev}"),
-                );
-            }
-            keys.push(Keyframe {
-                time,
-                value,
-                in_slope: k.number("in_slope", cx).unwrap_or(0.0),
-                out_slope: k.number("out_slope", cx).unwrap_or(0.0),
-            });
-        }
-        if keys.is_empty() {
+    let items = expect_array(v, dwhat, cx)?;
+    let mut keys = Vec::new();
+    for item in items {
+        let k = Table::new(item, "a curve keyframe", cx)?;
+        k.check_keys(KEYFRAME_KEYS, cx);
+        let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx)) else {
             cx.error(
-                "wrong-type",
-                "a curve needs at least one keyframe",
-                v.span(),
-                "empty",
+                "missing-key",
+                "a keyframe needs `time` and `value`",
+                item.span(),
+                "here",
             );
             return None;
+        };
+        if let Some(r) = range
+            && (value < r[0] || value > r[1])
+        {
+            out_of_range(cx, what, value, r, k.span_of("value"), range_span.clone());
         }
-        Some(keys)
+        if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
+            && time <= prev
+        {
+            cx.error(
+                "unordered-keys",
+                "curve keyframes must have increasing `time`",
+                k.span_of("time"),
+                format!("{time} is not after {prev}"),
+            );
+        }
+        keys.push(Keyframe {
+            time,
+            value,
+            in_slope: k.number("in_slope", cx).unwrap_or(0.0),
+            out_slope: k.number("out_slope", cx).unwrap_or(0.0),
+        });
+    }
+    if keys.is_empty() {
+        cx.error(
+            "wrong-type",
+            "a curve needs at least one keyframe",
+            v.span(),
+            "empty",
+        );
+        return None;
+    }
+    Some(keys)
 }
 
 /// Gradient stops (`[{ position, color }, …]`); used for defaults and preset values.
 fn parse_stops(v: &Value, dwhat: &str, cx: &mut Cx) -> Option<Vec<GradientStop>> {
-        let items = expect_array(v, dwhat, cx)?;
-        let mut stops = Vec::new();
-        for item in items {
-            let s = Table::new(item, "a gradient stop", cx)?;
-            s.check_keys(STOP_KEYS, cx);
-            let (Some(position), Some(color)) =
-                (s.number("position", cx), s.numbers("color", cx))
-            else {
-                cx.error(
-                    "missing-key",
-                    "a gradient stop needs `position` and `color`",
-                    item.span(),
-                    "here",
-                );
-                return None;
-            };
-            if !(0.0..=1.0).contains(&position) {
-                cx.error(
-                    "out-of-range",
-                    "gradient stop `position` must be in [0, 1]",
-                    s.span_of("position"),
-                    "here",
-                );
-            }
-            if color.len() != 3 && color.len() != 4
-                || color.iter().any(|c| !(0.0..=1.0).contains(c))
-            {
-                cx.error(
-                    "wrong-type",
-                    "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
-                    s.span_of("color"),
-                    "here",
-                );
-                return None;
-            }
-            if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
-                && position < prev
-            {
-                cx.error(
-                    "unordered-keys",
-                    "gradient stops must have non-decreasing `position`",
-                    s.span_of("position"),
-                    "out of order",
-                );
-            }
-            stops.push(GradientStop {
-                position,
-                color: [
-                    color[0],
-                    color[1],
-                    color[2],
-                    color.get(3).copied().unwrap_or(1.0),
-                ],
-            });
+    let items = expect_array(v, dwhat, cx)?;
+    let mut stops = Vec::new();
+    for item in items {
+        let s = Table::new(item, "a gradient stop", cx)?;
+        s.check_keys(STOP_KEYS, cx);
+        let (Some(position), Some(color)) = (s.number("position", cx), s.numbers("color", cx))
+        else {
+            cx.error(
+                "missing-key",
+                "a gradient stop needs `position` and `color`",
+                item.span(),
+                "here",
+            );
+            return None;
+        };
+        if !(0.0..=1.0).contains(&position) {
+            cx.error(
+                "out-of-range",
+                "gradient stop `position` must be in [0, 1]",
+                s.span_of("position"),
+                "here",
+            );
         }
-        if stops.is_empty() {
+        if color.len() != 3 && color.len() != 4 || color.iter().any(|c| !(0.0..=1.0).contains(c)) {
             cx.error(
                 "wrong-type",
-                "a gradient needs at least one stop",
-                v.span(),
-                "empty",
+                "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
+                s.span_of("color"),
+                "here",
             );
             return None;
         }
-        Some(stops)
+        if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
+            && position < prev
+        {
+            cx.error(
+                "unordered-keys",
+                "gradient stops must have non-decreasing `position`",
+                s.span_of("position"),
+                "out of order",
+            );
+        }
+        stops.push(GradientStop {
+            position,
+            color: [
+                color[0],
+                color[1],
+                color[2],
+                color.get(3).copied().unwrap_or(1.0),
+            ],
+        });
+    }
+    if stops.is_empty() {
+        cx.error(
+            "wrong-type",
+            "a gradient needs at least one stop",
+            v.span(),
+            "empty",
+        );
+        return None;
+    }
+    Some(stops)
 }
 
 fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Keyword> {
@@ -1202,12 +1198,16 @@ fn parse_preset(
                     match params.iter().find(|p| p.name == key) {
                         Some(p) if p.kind == ParamKind::Curve => {
                             let range_span = p.decl.span.clone();
-                            PresetValue::Param(ParamValue::Curve(parse_keyframes(val, &what, &what, p.range, range_span, cx)?))
+                            PresetValue::Param(ParamValue::Curve(parse_keyframes(
+                                val, &what, &what, p.range, range_span, cx,
+                            )?))
                         }
                         Some(p) if p.kind == ParamKind::Gradient => {
                             PresetValue::Param(ParamValue::Gradient(parse_stops(val, &what, cx)?))
                         }
-                        _ => PresetValue::Param(ParamValue::Vector(crate::toml_reader::expect_numbers(val, &what, cx)?)),
+                        _ => PresetValue::Param(ParamValue::Vector(
+                            crate::toml_reader::expect_numbers(val, &what, cx)?,
+                        )),
                     }
                 }
                 other => {

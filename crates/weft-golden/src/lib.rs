@@ -5,6 +5,8 @@
 //! Shared by the render tests (`tests/render.rs`), `cargo xtask bless` (which
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
+pub mod shading;
+
 use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};
 use weft_render::{

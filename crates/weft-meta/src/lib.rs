@@ -44,6 +44,69 @@ pub struct MaterialMetadata {
     pub vertex_inputs: Vec<VertexInput>,
     /// Every variant of the static keyword/tier space, canonical ones first-seen.
     pub variants: Vec<Variant>,
+    /// Measured cost and error per tier. Never written by the compiler (its
+    /// output is deterministic); attached at load time from
+    /// `<generated>/reports/<name>.measurements.json` by [`MaterialMetadata::attach_measurements`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub measurements: Option<Measurements>,
+}
+
+/// Shading cost and accuracy of a material's tiers, measured by
+/// `cargo xtask bench shading` / `weft bench` on one adapter. This is the
+/// content of `generated/reports/<name>.measurements.json`; timings vary by machine.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Measurements {
+    /// The material measured.
+    pub material: String,
+    /// The metadata's `inputs_hash` when measured: a different current hash
+    /// means the figures belong to an earlier version of the material.
+    pub inputs_hash: String,
+    /// The adapter the figures were measured on (name, driver, backend, type).
+    pub adapter: String,
+    /// `gpu-timestamp` (timestamp queries around the render pass) or
+    /// `cpu-wall` (submit to completion on the CPU: the adapter has no timestamp queries).
+    pub timer: String,
+    pub width: u32,
+    pub height: u32,
+    /// Built-in scene (`sphere`, `cloth`, `swatch`).
+    pub scene: String,
+    /// Keywords and parameters: the material's defaults unless stated here.
+    pub setup: String,
+    /// One entry per tier, in the material's tier order.
+    pub tiers: Vec<TierMeasurement>,
+}
+
+/// One tier of [`Measurements`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TierMeasurement {
+    pub tier: String,
+    /// The canonical variant drawn.
+    pub variant: String,
+    /// Timed frames (after warm-up; fewer than asked for when the tier's
+    /// frames would exceed the per-tier time budget).
+    pub frames: u32,
+    /// Median GPU time of the frame's render pass (clear + the material's draws), ms.
+    pub gpu_ms: f64,
+    /// Fastest frame, ms (least disturbed by other work on a shared machine).
+    pub gpu_ms_min: f64,
+    /// (90th − 10th percentile) / median of the frame times: run-to-run noise.
+    pub gpu_ms_spread: f64,
+    /// `gpu_ms` over that of `standard`'s `fast` tier (default keywords) in
+    /// the same run; absent when `standard` was not measured.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ratio_to_standard_fast: Option<f64>,
+    /// Instructions in the variant's SPIR-V module (static cost).
+    pub spirv_instructions: u32,
+    /// Of those, the instructions of the functions the fragment entry point reaches.
+    pub spirv_fragment_instructions: u32,
+    /// FLIP against the reference tier's image (ACES tone-mapped, sRGB8), mean over object pixels.
+    pub flip_mean: f64,
+    /// 99th percentile of the per-pixel FLIP over object pixels.
+    pub flip_p99: f64,
+    /// sqrt(Σ(a−b)² / Σb²) over the RGB of object pixels of the linear HDR images, b the reference.
+    pub rel_rmse: f64,
 }
 
 /// User-facing text in English with an optional Chinese translation.
@@ -550,6 +613,34 @@ pub struct UniformMember {
 }
 
 impl MaterialMetadata {
+    /// Where measurements of the material whose metadata is at `meta_path`
+    /// (`<generated>/<name>/<name>.meta.json`) live: `<generated>/reports/<name>.measurements.json`.
+    pub fn measurements_path(meta_path: &std::path::Path, name: &str) -> std::path::PathBuf {
+        let generated = meta_path
+            .parent()
+            .and_then(|d| d.parent())
+            .unwrap_or(std::path::Path::new("."));
+        generated
+            .join("reports")
+            .join(format!("{name}.measurements.json"))
+    }
+
+    /// Reads [`Measurements`] from [`MaterialMetadata::measurements_path`] into
+    /// `measurements`. Ok(false) when there is no report; an error when there
+    /// is one that does not parse.
+    pub fn attach_measurements(&mut self, meta_path: &std::path::Path) -> Result<bool, String> {
+        let path = Self::measurements_path(meta_path, &self.name);
+        let bytes = match std::fs::read(&path) {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(false),
+            Err(e) => return Err(format!("{}: {e}", path.display())),
+        };
+        let m: Measurements =
+            serde_json::from_slice(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+        self.measurements = Some(m);
+        Ok(true)
+    }
+
     /// The variant an id or alias resolves to, following `alias_of`.
     pub fn resolve_variant(&self, id: &str) -> Option<&Variant> {
         let v = self.variants.iter().find(|v| v.id == id)?;

@@ -34,8 +34,9 @@ impl Gpu {
             .await
             .map_err(|e| Error::NoAdapter(e.to_string()))?;
         let info = adapter.get_info();
-        // Blending into an Rgba32Float target needs FLOAT32_BLENDABLE.
-        let wanted = wgpu::Features::FLOAT32_BLENDABLE;
+        // Blending into an Rgba32Float target needs FLOAT32_BLENDABLE;
+        // `Renderer::time_frames` uses TIMESTAMP_QUERY when the adapter has it.
+        let wanted = wgpu::Features::FLOAT32_BLENDABLE | wgpu::Features::TIMESTAMP_QUERY;
         let required_features = adapter.features() & wanted;
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {

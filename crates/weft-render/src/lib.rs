@@ -26,8 +26,10 @@ mod image;
 mod material;
 pub mod math;
 mod preview;
+pub mod probe;
 mod renderer;
 mod scene;
+mod timing;
 
 pub use environment::{
     BrdfLut, CubeLevel, EnvironmentMaps, Luts, MipRoughness, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE,
@@ -42,8 +44,9 @@ pub use material::{
 };
 pub use preview::{MaterialOptions, PreviewOptions, render_preview};
 pub use renderer::{
-    Background, ColorFormat, PreparedMaterial, RenderOptions, Renderer, ShaderLanguage,
+    Background, ColorFormat, PreparedMaterial, RenderOptions, Renderer, ShaderLanguage, Tile,
 };
 pub use scene::{Camera, Light, Mesh, Scene, SceneKind};
+pub use timing::{FrameTimer, FrameTimes, TimingOptions};
 pub use weft_meta;
 pub use wgpu;

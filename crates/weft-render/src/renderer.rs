@@ -412,6 +412,24 @@ impl Renderer {
         scene: &Scene,
         options: &RenderOptions,
     ) -> Result<HdrImage> {
+        Ok(self
+            .draw_repeated(prepared, scene, options, 1, false, None)?
+            .0)
+    }
+
+    /// Draws `frames` frames into the same targets, one submit each, and
+    /// reads the last one back. With `timed`, every frame is waited for and
+    /// its submit-to-completion CPU time (ms) returned; `timestamps` receives
+    /// pass timestamp writes at 2i and 2i+1 (see timing.rs).
+    pub(crate) fn draw_repeated(
+        &mut self,
+        prepared: &PreparedMaterial,
+        scene: &Scene,
+        options: &RenderOptions,
+        frames: u32,
+        timed: bool,
+        timestamps: Option<&wgpu::QuerySet>,
+    ) -> Result<(HdrImage, Vec<f64>)> {
         if prepared.format != options.format {
             return Err(Error::Gpu(format!(
                 "material prepared for {:?}, render asks for {:?}",
@@ -531,79 +549,97 @@ impl Renderer {
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
-        gpu.checked("drawing", || {
-            let mut enc = device.create_command_encoder(&Default::default());
-            {
-                let mut rp = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("weft render"),
-                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                        view: &color_view,
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(clear),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &depth_view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Discard,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                });
-                if let (Some(bg), Some(p)) =
-                    (&sky_bind_group, self.sky_pipelines.get(&options.format))
+        let frames = frames.max(1);
+        let mut cpu_ms = Vec::new();
+        for frame in 0..frames {
+            let last = frame + 1 == frames;
+            let commands = gpu.checked("drawing", || {
+                let mut enc = device.create_command_encoder(&Default::default());
                 {
-                    rp.set_pipeline(p);
-                    rp.set_bind_group(0, bg, &[]);
-                    rp.draw(0..3, 0..1);
-                }
-                if draw_mesh {
-                    for (i, b) in vertex_buffers.iter().enumerate() {
-                        rp.set_vertex_buffer(i as u32, b.slice(..));
+                    let mut rp = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+                        label: Some("weft render"),
+                        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                            view: &color_view,
+                            depth_slice: None,
+                            resolve_target: None,
+                            ops: wgpu::Operations {
+                                load: wgpu::LoadOp::Clear(clear),
+                                store: wgpu::StoreOp::Store,
+                            },
+                        })],
+                        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                            view: &depth_view,
+                            depth_ops: Some(wgpu::Operations {
+                                load: wgpu::LoadOp::Clear(1.0),
+                                store: wgpu::StoreOp::Discard,
+                            }),
+                            stencil_ops: None,
+                        }),
+                        timestamp_writes: timestamps.map(|q| wgpu::RenderPassTimestampWrites {
+                            query_set: q,
+                            beginning_of_pass_write_index: Some(2 * frame),
+                            end_of_pass_write_index: Some(2 * frame + 1),
+                        }),
+                        occlusion_query_set: None,
+                        multiview_mask: None,
+                    });
+                    if let (Some(bg), Some(p)) =
+                        (&sky_bind_group, self.sky_pipelines.get(&options.format))
+                    {
+                        rp.set_pipeline(p);
+                        rp.set_bind_group(0, bg, &[]);
+                        rp.draw(0..3, 0..1);
                     }
-                    rp.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
-                    for (g, bg) in prepared.bind_groups.iter().enumerate() {
-                        if let Some(bg) = bg {
-                            rp.set_bind_group(g as u32, bg, &[]);
+                    if draw_mesh {
+                        for (i, b) in vertex_buffers.iter().enumerate() {
+                            rp.set_vertex_buffer(i as u32, b.slice(..));
+                        }
+                        rp.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+                        for (g, bg) in prepared.bind_groups.iter().enumerate() {
+                            if let Some(bg) = bg {
+                                rp.set_bind_group(g as u32, bg, &[]);
+                            }
+                        }
+                        let n = scene.mesh.indices.len() as u32;
+                        let passes = prepared.pipelines.passes.iter().zip(&prepared.instances);
+                        for (pp, &instances) in passes {
+                            if instances == 0 {
+                                continue;
+                            }
+                            rp.set_pipeline(&pp.pipeline);
+                            rp.draw_indexed(0..n, 0, 0..instances);
                         }
                     }
-                    let n = scene.mesh.indices.len() as u32;
-                    let passes = prepared.pipelines.passes.iter().zip(&prepared.instances);
-                    for (pp, &instances) in passes {
-                        if instances == 0 {
-                            continue;
-                        }
-                        rp.set_pipeline(&pp.pipeline);
-                        rp.draw_indexed(0..n, 0, 0..instances);
-                    }
                 }
+                if last {
+                    enc.copy_texture_to_buffer(
+                        wgpu::TexelCopyTextureInfo {
+                            texture: &color,
+                            mip_level: 0,
+                            origin: wgpu::Origin3d::ZERO,
+                            aspect: wgpu::TextureAspect::All,
+                        },
+                        wgpu::TexelCopyBufferInfo {
+                            buffer: &staging,
+                            layout: wgpu::TexelCopyBufferLayout {
+                                offset: 0,
+                                bytes_per_row: Some(row),
+                                rows_per_image: Some(h),
+                            },
+                        },
+                        size,
+                    );
+                }
+                enc.finish()
+            })?;
+            let started = std::time::Instant::now();
+            gpu.queue.submit([commands]);
+            if timed {
+                gpu.wait()?;
+                cpu_ms.push(started.elapsed().as_secs_f64() * 1e3);
             }
-            enc.copy_texture_to_buffer(
-                wgpu::TexelCopyTextureInfo {
-                    texture: &color,
-                    mip_level: 0,
-                    origin: wgpu::Origin3d::ZERO,
-                    aspect: wgpu::TextureAspect::All,
-                },
-                wgpu::TexelCopyBufferInfo {
-                    buffer: &staging,
-                    layout: wgpu::TexelCopyBufferLayout {
-                        offset: 0,
-                        bytes_per_row: Some(row),
-                        rows_per_image: Some(h),
-                    },
-                },
-                size,
-            );
-            gpu.queue.submit([enc.finish()]);
-        })?;
+        }
+        gpu.take_uncaptured("drawing")?;
         let bytes = gpu.map_read(&staging)?;
         let mut pixels = Vec::with_capacity((w * h) as usize);
         for y in 0..h {
@@ -624,14 +660,21 @@ impl Renderer {
                 }
             }
         }
-        Ok(HdrImage {
+        let image = HdrImage {
             width: w,
             height: h,
             pixels,
-        })
+        };
+        Ok((image, cpu_ms))
     }
 
-    fn write_frame(&self, scene: &Scene, aspect: f32, options: &RenderOptions) {
+    /// The `weft_frame` and `weft_object` uniform contents (as f32s) of a scene.
+    fn frame_and_object(
+        &self,
+        scene: &Scene,
+        aspect: f32,
+        options: &RenderOptions,
+    ) -> (Vec<f32>, Vec<f32>) {
         let view = scene.camera.view();
         let view_proj = scene.camera.view_proj(aspect);
         let light_dir = math::normalize(scene.light.direction);
@@ -655,17 +698,22 @@ impl Renderer {
             0.0,
         ]);
         debug_assert_eq!(f.len() * 4, FRAME_SIZE as usize);
-        self.gpu
-            .queue
-            .write_buffer(&self.frame_buffer, 0, bytemuck::cast_slice(&f));
-
         let mut o: Vec<f32> = Vec::with_capacity((OBJECT_SIZE / 4) as usize);
         o.extend(scene.model.iter().flatten());
         o.extend(math::normal_matrix(&scene.model).iter().flatten());
+        (f, o)
+    }
+
+    fn write_frame(&self, scene: &Scene, aspect: f32, options: &RenderOptions) {
+        let (f, o) = self.frame_and_object(scene, aspect, options);
+        self.gpu
+            .queue
+            .write_buffer(&self.frame_buffer, 0, bytemuck::cast_slice(&f));
         self.gpu
             .queue
             .write_buffer(&self.object_buffer, 0, bytemuck::cast_slice(&o));
 
+        let view_proj = scene.camera.view_proj(aspect);
         let inv = math::inverse(&view_proj).unwrap_or(math::IDENTITY);
         let mip = match options.background {
             Background::Sky { mip } => mip,
@@ -1035,6 +1083,263 @@ impl Renderer {
             )));
         }
         Ok(groups)
+    }
+}
+
+/// One draw of [`Renderer::render_tiles`]: a mesh drawn with its own frame
+/// uniforms (camera, light) and object uniforms (model matrix) into its own
+/// rectangle of the target.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tile {
+    /// Mesh, model matrix, camera and light of this draw. The projection's
+    /// aspect is the viewport's.
+    pub scene: Scene,
+    /// x, y, width, height in pixels; must lie inside the target. Drawing is
+    /// confined to it (viewport and scissor).
+    pub viewport: [u32; 4],
+}
+
+/// Bytes between the per-tile uniform records of [`Renderer::render_tiles`].
+const TILE_UNIFORM_STRIDE: u64 = 512;
+
+impl Renderer {
+    /// Draws a prepared material once per tile into one target and reads the
+    /// whole target back: each tile gets its own `weft_frame` and
+    /// `weft_object` contents (copied into the frame and object buffers
+    /// between render passes) and its own viewport, so one target holds many
+    /// small, independent renders (the stability probe, `probe.rs`). Every
+    /// pass of the material is drawn per tile with its instance count; the
+    /// depth buffer is cleared per tile. The background is
+    /// `options.background` when it is a colour, black for `Sky` (no sky is drawn).
+    pub fn render_tiles(
+        &mut self,
+        prepared: &PreparedMaterial,
+        tiles: &[Tile],
+        options: &RenderOptions,
+    ) -> Result<HdrImage> {
+        if prepared.format != options.format {
+            return Err(Error::Gpu(format!(
+                "material prepared for {:?}, render asks for {:?}",
+                prepared.format, options.format
+            )));
+        }
+        let (w, h) = (options.width.max(1), options.height.max(1));
+        let gpu = &self.gpu;
+        let device = &gpu.device;
+        // One vertex stream per input and one index buffer for all tiles;
+        // each tile draws its index range with its own base vertex.
+        let mut streams: Vec<Vec<u8>> = vec![Vec::new(); prepared.pipelines.vertex_inputs.len()];
+        let mut indices: Vec<u32> = Vec::new();
+        let mut ranges = Vec::with_capacity(tiles.len());
+        let mut uniforms: Vec<u8> = Vec::with_capacity(tiles.len() * TILE_UNIFORM_STRIDE as usize);
+        let mut base_vertex = 0usize;
+        for (i, tile) in tiles.iter().enumerate() {
+            let [x, y, tw, th] = tile.viewport;
+            if tw == 0 || th == 0 || x + tw > w || y + th > h {
+                return Err(Error::InvalidValue {
+                    name: format!("tile {i}"),
+                    message: format!("viewport {:?} is outside the {w}x{h} target", tile.viewport),
+                });
+            }
+            let mesh = &tile.scene.mesh;
+            let count = mesh.vertex_count();
+            if let Some(bad) = mesh.indices.iter().find(|&&k| k as usize >= count) {
+                return Err(Error::InvalidValue {
+                    name: format!("tile {i}"),
+                    message: format!("index {bad} is out of range ({count} vertices)"),
+                });
+            }
+            for (stream, vi) in streams.iter_mut().zip(&prepared.pipelines.vertex_inputs) {
+                stream.extend(vertex_stream(mesh, vi)?);
+            }
+            let first = indices.len() as u32;
+            indices.extend(&mesh.indices);
+            ranges.push((first..indices.len() as u32, base_vertex as i32));
+            base_vertex += count;
+            let (f, o) = self.frame_and_object(&tile.scene, tw as f32 / th as f32, options);
+            let start = uniforms.len();
+            uniforms.extend_from_slice(bytemuck::cast_slice(&f));
+            uniforms.extend_from_slice(bytemuck::cast_slice(&o));
+            uniforms.resize(start + TILE_UNIFORM_STRIDE as usize, 0);
+        }
+        let vertex_buffers: Vec<wgpu::Buffer> = streams
+            .iter()
+            .zip(&prepared.pipelines.vertex_inputs)
+            .map(|(bytes, vi)| {
+                let contents: &[u8] = if bytes.is_empty() { &[0; 16] } else { bytes };
+                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some(&vi.name),
+                    contents,
+                    usage: wgpu::BufferUsages::VERTEX,
+                })
+            })
+            .collect();
+        let index_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("tile indices"),
+            contents: if indices.is_empty() {
+                &[0; 4]
+            } else {
+                bytemuck::cast_slice(&indices)
+            },
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        let uniform_records = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("tile uniforms"),
+            contents: if uniforms.is_empty() {
+                &[0; 4]
+            } else {
+                &uniforms
+            },
+            usage: wgpu::BufferUsages::COPY_SRC,
+        });
+        let size = wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        };
+        let target = |label, format, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let color = target(
+            "weft tiles colour",
+            options.format.wgpu(),
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
+        let depth = target(
+            "weft tiles depth",
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
+        let color_view = color.create_view(&Default::default());
+        let depth_view = depth.create_view(&Default::default());
+        let clear = match options.background {
+            Background::Color(c) => wgpu::Color {
+                r: f64::from(c[0]),
+                g: f64::from(c[1]),
+                b: f64::from(c[2]),
+                a: f64::from(c[3]),
+            },
+            Background::Sky { .. } => wgpu::Color::BLACK,
+        };
+        let bpp = options.format.bytes_per_pixel();
+        let row = (w * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+            * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("weft tiles readback"),
+            size: u64::from(row) * u64::from(h),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let pass = |enc: &mut wgpu::CommandEncoder, load| {
+            enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("weft tile"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &color_view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load,
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &depth_view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Discard,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            })
+            .forget_lifetime()
+        };
+        gpu.checked("drawing tiles", || {
+            let mut enc = device.create_command_encoder(&Default::default());
+            drop(pass(&mut enc, wgpu::LoadOp::Clear(clear)));
+            for (i, (tile, (range, base))) in tiles.iter().zip(&ranges).enumerate() {
+                let off = i as u64 * TILE_UNIFORM_STRIDE;
+                enc.copy_buffer_to_buffer(&uniform_records, off, &self.frame_buffer, 0, FRAME_SIZE);
+                enc.copy_buffer_to_buffer(
+                    &uniform_records,
+                    off + FRAME_SIZE,
+                    &self.object_buffer,
+                    0,
+                    OBJECT_SIZE,
+                );
+                let mut rp = pass(&mut enc, wgpu::LoadOp::Load);
+                let [x, y, tw, th] = tile.viewport;
+                rp.set_viewport(x as f32, y as f32, tw as f32, th as f32, 0.0, 1.0);
+                rp.set_scissor_rect(x, y, tw, th);
+                for (k, b) in vertex_buffers.iter().enumerate() {
+                    rp.set_vertex_buffer(k as u32, b.slice(..));
+                }
+                rp.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+                for (g, bg) in prepared.bind_groups.iter().enumerate() {
+                    if let Some(bg) = bg {
+                        rp.set_bind_group(g as u32, bg, &[]);
+                    }
+                }
+                if range.is_empty() {
+                    continue;
+                }
+                let passes = prepared.pipelines.passes.iter().zip(&prepared.instances);
+                for (pp, &instances) in passes {
+                    if instances > 0 {
+                        rp.set_pipeline(&pp.pipeline);
+                        rp.draw_indexed(range.clone(), *base, 0..instances);
+                    }
+                }
+            }
+            enc.copy_texture_to_buffer(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &color,
+                    mip_level: 0,
+                    origin: wgpu::Origin3d::ZERO,
+                    aspect: wgpu::TextureAspect::All,
+                },
+                wgpu::TexelCopyBufferInfo {
+                    buffer: &staging,
+                    layout: wgpu::TexelCopyBufferLayout {
+                        offset: 0,
+                        bytes_per_row: Some(row),
+                        rows_per_image: Some(h),
+                    },
+                },
+                size,
+            );
+            gpu.queue.submit([enc.finish()]);
+        })?;
+        let bytes = gpu.map_read(&staging)?;
+        let mut pixels = Vec::with_capacity((w * h) as usize);
+        for y in 0..h {
+            let line = &bytes[(y * row) as usize..(y * row + w * bpp) as usize];
+            match options.format {
+                ColorFormat::Rgba16Float => pixels.extend(line.chunks_exact(8).map(|px| {
+                    [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32())
+                })),
+                ColorFormat::Rgba32Float => pixels.extend(line.chunks_exact(16).map(|px| {
+                    [0, 4, 8, 12]
+                        .map(|i| f32::from_le_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]))
+                })),
+            }
+        }
+        Ok(HdrImage {
+            width: w,
+            height: h,
+            pixels,
+        })
     }
 }
 
