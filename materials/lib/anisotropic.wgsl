@@ -28,8 +28,9 @@
 
 // Smallest axis width. At k = +-1 the linear mapping gives a_b = 0 (a
 // delta lobe): clamp (research/shading-models.md sec. 3; Filament uses the
-// same 0.001 floor). With the 0.045 perceptual floor of lib/brdf.wgsl,
-// a_t * a_b >= 1e-3 * 2.0e-3 = 2e-6, so 1 / (pi a_t a_b) stays ~1.6e5.
+// same 0.001 floor). With the 0.045 perceptual floor of lib/brdf.wgsl
+// (alpha >= 2.0e-3) the linear mapping gives a_t a_b >= 3.0e-6 (at k ~ 0.5,
+// where a_b reaches the floor), so 1 / (pi a_t a_b) <= 1.1e5.
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001;
 
 // ---------------------------------------------------------------- frames
@@ -112,7 +113,8 @@ fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alph
 // Heitz 2014 eq. 85):
 //   D(h) = chi+(N.h) / (pi a_t a_b q^2),   Integral D(h) (N.h) dh = 1.
 // h must be unit (e.g. weft_safe_normalize(l + v, n)). Zero for h below the
-// surface. Peak 1 / (pi a_t a_b) <= 1.6e5 (see WEFT_MIN_ANISO_ALPHA).
+// surface. Peak 1 / (pi a_t a_b): <= 1.1e5 for widths from the mappings below,
+// <= 3.2e5 for any widths >= 0.001 (see WEFT_MIN_ANISO_ALPHA).
 fn weft_d_ggx_aniso(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
     let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);

@@ -107,9 +107,8 @@ pub fn run(
             ));
         }
     }
-    let selected = |m: &MaterialMetadata| {
-        options.materials.is_empty() || options.materials.iter().any(|n| *n == m.name)
-    };
+    let selected =
+        |m: &MaterialMetadata| options.materials.is_empty() || options.materials.contains(&m.name);
     // The baseline is measured even when `standard` is not selected.
     let measured: Vec<(PathBuf, MaterialMetadata)> = all
         .into_iter()
@@ -370,7 +369,7 @@ pub fn image_error(reference: &HdrImage, test: &HdrImage) -> ImageError {
 /// `OpFunction` to `OpFunctionEnd`; module-level types, constants and
 /// decorations are not included).
 pub fn spirv_instruction_counts(bytes: &[u8]) -> Result<(u32, u32), String> {
-    if bytes.len() % 4 != 0 || bytes.len() < 20 {
+    if !bytes.len().is_multiple_of(4) || bytes.len() < 20 {
         return Err("not a SPIR-V module (length)".into());
     }
     let words: Vec<u32> = bytes

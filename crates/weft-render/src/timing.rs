@@ -150,7 +150,7 @@ impl Renderer {
         let ms: Vec<f64> = (frames - timing.frames.max(1) as usize..frames)
             .map(|i| ticks[2 * i + 1].wrapping_sub(ticks[2 * i]) as f64 * period_ns * 1e-6)
             .collect();
-        if ms.iter().any(|&t| !(t.is_finite() && t >= 0.0 && t < 1e6)) {
+        if ms.iter().any(|t| !(0.0..1e6).contains(t)) {
             return Err(Error::Gpu(format!(
                 "timestamp queries returned unusable values ({:?}…)",
                 &ms[..ms.len().min(4)]
