@@ -1,0 +1,189 @@
+// @include "lib/forward.wgsl"
+// @include "lib/anisotropic.wgsl"
+//
+// satin: seed 001 sec. 7. The standard metallic/roughness surface (base, RMO
+// and normal maps handled as materials/standard) whose direct specular is
+// replaced by two anisotropic GGX layers: layer 1 narrow and bright (roughness
+// r), layer 2 wide and dim (roughness min(1, r * second_layer_width)), both
+// with ax = r^2 (1 + k), ay = r^2 (1 - k) (seed 7.2.1). Returns linear HDR
+// radiance.
+//
+// Tiers (WEFT_TIER):
+//   fast      = the seed's form: per layer D = 1 / (pi q^2) (the seed's GGX
+//               without 1/(ax ay)) times Schlick-GGX visibility (seed 004
+//               form); colour c_i blended with the light (seed 7.2.3):
+//                 gray = luminance(light), c_final = lerp(c * gray, light * max3(c), 0.5)
+//               (max3(c) = 1 for any fully bright colour, where this is the
+//               seed's formula exactly; it makes a black colour hide its layer,
+//               as the seed promises); layer 2 dimmed by 1 / width;
+//               specular = (layer 1 + layer 2) * mag * noise, noise = 0.5 + 0.5 n
+//               (seed 7.2.2, 7.2.5); BIDIRECTIONAL sums D(ax, ay) + D(ay, ax)
+//               (seed 7.2.4). Diffuse (1 - F) Lambert, analytic split-sum
+//               environment (the standard material's fast tier).
+//   reference = per layer the normalised anisotropic GGX D with the
+//               height-correlated anisotropic Smith V (Heitz 2014) and Schlick
+//               F(v.h) with the standard F0; each layer's single-scattering
+//               albedo is <= 1. Layer tints t_i = lerp(c_i, max3(c_i), 0.5)
+//               (the seed's blend for a white light; the light's own colour
+//               then multiplies, as physics has it) are normalised so that
+//               t_1 + t_2 <= 1 per channel: w_i = t_i / max(1, max3(t_1 + t_2)),
+//               so the specular albedo is <= 1. BIDIRECTIONAL averages the two
+//               directions. The intensity slider is not applied. Diffuse gets
+//               (1 - w_sum F(n.v)) directly and 1 - sum w_i E_i (split-sum LUT per
+//               layer) from the environment. Measured: directional albedo <= 1
+//               (README, "Energy").
+// Both: Lambert 1/pi, L2 SH ambient, AO, prefiltered environment along the
+// anisotropic bent reflection vector.
+
+struct SatinLayers {
+    narrow: vec2<f32>,
+    wide: vec2<f32>,
+}
+
+// Seed 7.2.3 colour blend with the "black hides the layer" fix (see header).
+fn satin_light_blend(c: vec3<f32>, light: vec3<f32>) -> vec3<f32> {
+    let gray = weft_luminance(light);
+    return mix(c * gray, light * weft_max3(c), 0.5);
+}
+
+// One layer of the seed's D (unnormalised), optionally both directions.
+fn satin_d_seed(hf: vec3<f32>, a: vec2<f32>) -> f32 {
+    var d = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
+    if BIDIRECTIONAL {
+        d += weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.y, a.x);
+    }
+    return d;
+}
+
+// One normalised layer, D V n.l; BIDIRECTIONAL averages the two directions
+// (each has albedo <= 1, so does their mean).
+fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
+    var s = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    if BIDIRECTIONAL {
+        s = 0.5 * (s + weft_spec_ggx_aniso(vf, lf, a.y, a.x));
+    }
+    return s;
+}
+
+// Prefiltered environment for one layer: the bent reflection of its own
+// roughness; BIDIRECTIONAL averages the two bend directions.
+fn satin_env(frame: mat3x3<f32>, v: vec3<f32>, k: f32, roughness: f32) -> vec3<f32> {
+    var bent = weft_aniso_bent_normal(frame, v, k, roughness);
+    var c = weft_prefiltered_radiance(reflect(-v, bent), roughness);
+    if BIDIRECTIONAL {
+        bent = weft_aniso_bent_normal(frame, v, -k, roughness);
+        c = 0.5 * (c + weft_prefiltered_radiance(reflect(-v, bent), roughness));
+    }
+    return c;
+}
+
+@fragment
+fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+    // ------------------------------------------------------------ surface (as standard)
+    let uv = weft_transform_uv(in.uv0, material.base_map_st);
+    let base_rgba = material.base_color * textureSample(base_map, material_sampler, uv);
+    // Physical ranges: albedo > 1 would give F0 > 1 and a negative 1 - F.
+    let base = saturate(base_rgba.rgb);
+    let alpha = saturate(base_rgba.a);
+    let rmo = textureSample(rmo_map, material_sampler, uv).rgb;
+    let roughness = saturate(material.roughness * rmo.r);
+    let metallic = saturate(material.metallic * rmo.g);
+    let ao = saturate(mix(1.0, rmo.b, material.occlusion_strength));
+    let anisotropy = clamp(material.anisotropy, -1.0, 1.0);
+    let width = clamp(material.second_layer_width, 1.0, 4.0);
+    let roughness2 = min(roughness * width, 1.0);
+    // Seed 7.2.5: noise in [0, 1] mapped to [0.5, 1].
+    let nuv = weft_transform_uv(in.uv0, material.noise_map_st);
+    let noise = 0.5 + 0.5 * saturate(textureSample(noise_map, material_sampler, nuv).r);
+
+    // ------------------------------------------------------------ geometry
+    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    var n = weft_safe_normalize(in.world_normal, v);
+    if NORMAL_MAP {
+        let frame0 = weft_tangent_frame(n, in.world_tangent);
+        let texel = textureSample(normal_map, material_sampler, uv).rgb;
+        n = weft_normal_from_tangent_space(frame0, weft_unpack_normal(texel, material.normal_strength));
+    }
+    // Frame of the shading normal (zero / parallel tangents fall back inside).
+    let frame = weft_tangent_frame(n, in.world_tangent);
+    let l = weft_main_light_direction();
+    // l = -v: zero half vector, fall back to n (then n.l <= 0, multiplied out).
+    let h = weft_safe_normalize(l + v, n);
+    // Views below the shading normal are treated as grazing (1e-4).
+    let n_dot_v = weft_clamp_cos(dot(n, v));
+    let n_dot_l = saturate(dot(n, l));
+    let v_dot_h = saturate(dot(v, h));
+    let light = weft_main_light_radiance();
+
+    var layers: SatinLayers;
+    layers.narrow = weft_aniso_alpha_kulla(roughness, anisotropy);
+    layers.wide = weft_aniso_alpha_kulla(roughness2, anisotropy);
+
+    let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
+    let diffuse_albedo = base * (1.0 - metallic);
+    // Colours in their physical range (a negative colour would subtract light).
+    let c1 = saturate(material.specular_color.rgb);
+    let c2 = saturate(material.second_specular_color.rgb);
+    let f = weft_f_schlick(f0, v_dot_h);
+
+    var specular: vec3<f32>;
+    var diffuse_kd: vec3<f32>;
+    var indirect_specular: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    if WEFT_TIER == TIER_REFERENCE {
+        // Layer weights: the seed's blend for a white light, normalised so the
+        // two sum to <= 1 per channel (max(1, .) never divides by < 1).
+        let t1 = mix(c1, vec3<f32>(weft_max3(c1)), 0.5);
+        let t2 = mix(c2, vec3<f32>(weft_max3(c2)), 0.5);
+        let norm = 1.0 / max(1.0, weft_max3(t1 + t2));
+        let w1 = t1 * norm;
+        let w2 = t2 * norm;
+        let vf = weft_aniso_to_frame(frame, v);
+        let lf = weft_aniso_to_frame(frame, l);
+        let lobe1 = satin_lobe_reference(vf, lf, layers.narrow);
+        let lobe2 = satin_lobe_reference(vf, lf, layers.wide);
+        // The lobes already include n.l.
+        specular = (w1 * lobe1 + w2 * lobe2) * f * noise * light;
+        // Diffuse gets what the layers cannot reflect: 1 - w_sum F(n.v). The
+        // (1 - F(v.h)) of the standard material lets the sum reach 1.8 at
+        // grazing views with sharp lobes; with F(n.v) the measured maximum of
+        // the total directional albedo is 1.0007 (README, "Energy").
+        diffuse_kd = max(vec3<f32>(1.0) - (w1 + w2) * weft_f_schlick(f0, n_dot_v), vec3<f32>(0.0));
+        // Environment: each layer's split-sum albedo (isotropic LUT at its
+        // roughness) times its own prefiltered lookup.
+        let e1 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness)) * w1;
+        let e2 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness2)) * w2;
+        indirect_specular = (satin_env(frame, v, anisotropy, roughness) * e1
+            + satin_env(frame, v, anisotropy, roughness2) * e2) * noise;
+        ambient_kd = max(vec3<f32>(1.0) - e1 - e2, vec3<f32>(0.0));
+    } else {
+        let hf = weft_aniso_to_frame(frame, h);
+        let d1 = satin_d_seed(hf, layers.narrow);
+        let d2 = satin_d_seed(hf, layers.wide) / width;
+        let vis1 = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+        let vis2 = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness2);
+        // Seed 7.2.3: the colours already carry the light.
+        let s1 = satin_light_blend(c1, light);
+        let s2 = satin_light_blend(c2, light);
+        let mag = max(material.specular_intensity, 0.0);
+        specular = (d1 * vis1 * s1 + d2 * vis2 * s2) * (mag * noise * n_dot_l);
+        diffuse_kd = vec3<f32>(1.0) - f;
+        // The standard fast tier's environment, along the bent reflection.
+        var bent = weft_aniso_bent_normal(frame, v, anisotropy, roughness);
+        if BIDIRECTIONAL {
+            // Both directions at once: close to isotropic, use the normal.
+            bent = n;
+        }
+        let env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
+        indirect_specular = weft_prefiltered_radiance(reflect(-v, bent), roughness) * env_brdf * noise;
+        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
+    }
+
+    // ------------------------------------------------------------ combine
+    let direct = diffuse_kd * weft_diffuse_lambert(diffuse_albedo) * light * n_dot_l + specular;
+    let indirect = indirect_specular * ao + weft_sh_irradiance(n) * ao * ambient_kd * diffuse_albedo;
+    // Never negative, at most the fp16 maximum (a sharp lobe at grazing under
+    // a bright light can exceed it).
+    let radiance = clamp(direct + indirect, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    return vec4<f32>(radiance, alpha);
+}
