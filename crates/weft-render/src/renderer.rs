@@ -531,24 +531,8 @@ impl Renderer {
             })),
             Background::Color(_) => None,
         };
-        let clear = match options.background {
-            Background::Color(c) => wgpu::Color {
-                r: f64::from(c[0]),
-                g: f64::from(c[1]),
-                b: f64::from(c[2]),
-                a: f64::from(c[3]),
-            },
-            Background::Sky { .. } => wgpu::Color::BLACK,
-        };
-        let bpp = options.format.bytes_per_pixel();
-        let row = (w * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
-            * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let staging = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("weft colour readback"),
-            size: u64::from(row) * u64::from(h),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
+        let clear = clear_color(options.background);
+        let (staging, row) = readback_buffer(device, w, h, options.format, "weft colour readback");
         let frames = frames.max(1);
         let mut cpu_ms = Vec::new();
         for frame in 0..frames {
@@ -641,25 +625,7 @@ impl Renderer {
         }
         gpu.take_uncaptured("drawing")?;
         let bytes = gpu.map_read(&staging)?;
-        let mut pixels = Vec::with_capacity((w * h) as usize);
-        for y in 0..h {
-            let line = &bytes[(y * row) as usize..(y * row + w * bpp) as usize];
-            match options.format {
-                ColorFormat::Rgba16Float => {
-                    for px in line.chunks_exact(8) {
-                        let c = |i: usize| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32();
-                        pixels.push([c(0), c(2), c(4), c(6)]);
-                    }
-                }
-                ColorFormat::Rgba32Float => {
-                    for px in line.chunks_exact(16) {
-                        let c =
-                            |i: usize| f32::from_le_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]);
-                        pixels.push([c(0), c(4), c(8), c(12)]);
-                    }
-                }
-            }
-        }
+        let pixels = decode_rows(&bytes, w, h, row, options.format);
         let image = HdrImage {
             width: w,
             height: h,
@@ -1221,24 +1187,8 @@ impl Renderer {
         );
         let color_view = color.create_view(&Default::default());
         let depth_view = depth.create_view(&Default::default());
-        let clear = match options.background {
-            Background::Color(c) => wgpu::Color {
-                r: f64::from(c[0]),
-                g: f64::from(c[1]),
-                b: f64::from(c[2]),
-                a: f64::from(c[3]),
-            },
-            Background::Sky { .. } => wgpu::Color::BLACK,
-        };
-        let bpp = options.format.bytes_per_pixel();
-        let row = (w * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
-            * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let staging = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("weft tiles readback"),
-            size: u64::from(row) * u64::from(h),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
+        let clear = clear_color(options.background);
+        let (staging, row) = readback_buffer(device, w, h, options.format, "weft tiles readback");
         let pass = |enc: &mut wgpu::CommandEncoder, load| {
             enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("weft tile"),
@@ -1322,19 +1272,7 @@ impl Renderer {
             gpu.queue.submit([enc.finish()]);
         })?;
         let bytes = gpu.map_read(&staging)?;
-        let mut pixels = Vec::with_capacity((w * h) as usize);
-        for y in 0..h {
-            let line = &bytes[(y * row) as usize..(y * row + w * bpp) as usize];
-            match options.format {
-                ColorFormat::Rgba16Float => pixels.extend(line.chunks_exact(8).map(|px| {
-                    [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32())
-                })),
-                ColorFormat::Rgba32Float => pixels.extend(line.chunks_exact(16).map(|px| {
-                    [0, 4, 8, 12]
-                        .map(|i| f32::from_le_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]))
-                })),
-            }
-        }
+        let pixels = decode_rows(&bytes, w, h, row, options.format);
         Ok(HdrImage {
             width: w,
             height: h,
@@ -1344,6 +1282,56 @@ impl Renderer {
 }
 
 /// The SPIR-V file whose baked constants equal the material's keyword values.
+/// What a render pass clears the colour target to (the sky is drawn over black).
+fn clear_color(background: Background) -> wgpu::Color {
+    match background {
+        Background::Color(c) => wgpu::Color {
+            r: f64::from(c[0]),
+            g: f64::from(c[1]),
+            b: f64::from(c[2]),
+            a: f64::from(c[3]),
+        },
+        Background::Sky { .. } => wgpu::Color::BLACK,
+    }
+}
+
+/// A mappable buffer for a `w` x `h` colour readback and its padded row pitch.
+fn readback_buffer(
+    device: &wgpu::Device,
+    w: u32,
+    h: u32,
+    format: ColorFormat,
+    label: &str,
+) -> (wgpu::Buffer, u32) {
+    let row = (w * format.bytes_per_pixel()).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+        * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let staging = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: u64::from(row) * u64::from(h),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    (staging, row)
+}
+
+/// Linear RGBA pixels from a padded readback of an Rgba16Float/Rgba32Float target.
+fn decode_rows(bytes: &[u8], w: u32, h: u32, row: u32, format: ColorFormat) -> Vec<[f32; 4]> {
+    let bpp = format.bytes_per_pixel();
+    let mut pixels = Vec::with_capacity((w * h) as usize);
+    for y in 0..h {
+        let line = &bytes[(y * row) as usize..(y * row + w * bpp) as usize];
+        match format {
+            ColorFormat::Rgba16Float => pixels.extend(line.chunks_exact(8).map(|px| {
+                [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32())
+            })),
+            ColorFormat::Rgba32Float => pixels.extend(line.chunks_exact(16).map(|px| {
+                [0, 4, 8, 12].map(|i| f32::from_le_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]))
+            })),
+        }
+    }
+    pixels
+}
+
 fn spirv_file_for(material: &Material, shader: &VariantShader, id: &str) -> Result<String> {
     let files = shader
         .files
