@@ -42,7 +42,6 @@
 
 use std::path::{Path, PathBuf};
 use weft_render::probe::{GeometricCase, Probe};
-use weft_render::wgpu;
 use weft_render::{CubeLevel, EnvironmentMaps, Gpu, Luts, Material, Renderer};
 
 fn repo() -> PathBuf {
@@ -305,8 +304,6 @@ fn split_sum_e(n_dot_v: f32, roughness: f32, f0: f32) -> f32 {
 
 /// [mean, standard error, max weight] per (lobe, n.v, roughness), in LOBES x NV x ROUGHNESS order.
 fn integrate_on_gpu(gpu: &Gpu) -> Vec<[f32; 3]> {
-    use wgpu::util::DeviceExt;
-    let device = &gpu.device;
     let mut cells: Vec<u32> = Vec::new();
     let chunks = SAMPLES_PER_STRATEGY / CHUNK;
     for (_, id, _) in LOBES {
@@ -320,57 +317,15 @@ fn integrate_on_gpu(gpu: &Gpu) -> Vec<[f32; 3]> {
         }
     }
     let n = cells.len() / 5;
-    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("white furnace"),
-        source: wgpu::ShaderSource::Wgsl(furnace_source().into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("white furnace"),
-        layout: None,
-        module: &module,
-        entry_point: Some("furnace"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    if let Some(e) = pollster::block_on(scope.pop()) {
-        panic!("the furnace kernel does not compile with the library: {e}");
-    }
-    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("cells"),
-        contents: bytemuck::cast_slice(&cells),
-        usage: wgpu::BufferUsages::STORAGE,
-    });
-    let size = (n * 16) as u64;
-    let output = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("results"),
-        size,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        mapped_at_creation: false,
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: input.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: output.as_entire_binding(),
-            },
-        ],
-    });
-    let mut enc = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = enc.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
-        pass.dispatch_workgroups((n as u32).div_ceil(64), 1, 1);
-    }
-    gpu.queue.submit([enc.finish()]);
-    let bytes = gpu.read_buffer(&output).unwrap();
+    let bytes = gpu
+        .run_compute(
+            &furnace_source(),
+            "furnace",
+            bytemuck::cast_slice(&cells),
+            (n * 16) as u64,
+            (n as u32).div_ceil(64),
+        )
+        .unwrap_or_else(|e| panic!("the furnace kernel does not run with the library: {e}"));
     let v: &[f32] = bytemuck::cast_slice(&bytes);
     // Chunks -> cells, in f64.
     let n = f64::from(SAMPLES_PER_STRATEGY);

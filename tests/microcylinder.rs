@@ -898,109 +898,18 @@ fn as_f32(f: &Fabric) -> Fabric {
 }
 
 fn run_gpu(shader: &str, data: &[[f32; 4]], n_cases: usize) -> Vec<[f32; 4]> {
-    pollster::block_on(async {
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::VULKAN;
-        let instance = wgpu::Instance::new(desc);
-        let adapter = instance
-            .request_adapter(&wgpu::RequestAdapterOptions {
-                power_preference: wgpu::PowerPreference::None,
-                force_fallback_adapter: false,
-                compatible_surface: None,
-                apply_limit_buckets: false,
-            })
-            .await
-            .unwrap_or_else(|e| {
-                panic!("no Vulkan adapter ({e}): install mesa-vulkan-drivers (lavapipe)")
-            });
-        let info = adapter.get_info();
-        eprintln!(
-            "adapter: {} ({} {}, {:?})",
-            info.name, info.driver, info.driver_info, info.device_type
-        );
-        let (device, queue) = adapter
-            .request_device(&wgpu::DeviceDescriptor {
-                label: Some("microcylinder test"),
-                required_features: wgpu::Features::empty(),
-                required_limits: wgpu::Limits::default().using_resolution(adapter.limits()),
-                experimental_features: wgpu::ExperimentalFeatures::disabled(),
-                memory_hints: wgpu::MemoryHints::Performance,
-                trace: wgpu::Trace::Off,
-            })
-            .await
-            .expect("device");
-        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("microcylinder probe"),
-            source: wgpu::ShaderSource::Wgsl(shader.into()),
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some("microcylinder probe"),
-            layout: None,
-            module: &module,
-            entry_point: Some("main"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
-        use wgpu::util::DeviceExt;
-        let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("cases"),
-            contents: bytemuck::cast_slice(data),
-            usage: wgpu::BufferUsages::STORAGE,
-        });
-        let out_size = (n_cases * 2 * 16) as u64;
-        let output = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("results"),
-            size: out_size,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let staging = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("readback"),
-            size: out_size,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(0),
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: input.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: output.as_entire_binding(),
-                },
-            ],
-        });
-        let mut enc = device.create_command_encoder(&Default::default());
-        {
-            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: None,
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(&pipeline);
-            pass.set_bind_group(0, &bind, &[]);
-            pass.dispatch_workgroups(n_cases.div_ceil(64) as u32, 1, 1);
-        }
-        enc.copy_buffer_to_buffer(&output, 0, &staging, 0, out_size);
-        queue.submit([enc.finish()]);
-        if let Some(e) = scope.pop().await {
-            panic!("wgpu validation error: {e}");
-        }
-        let (tx, rx) = std::sync::mpsc::channel();
-        staging.map_async(wgpu::MapMode::Read, .., move |r| {
-            let _ = tx.send(r);
-        });
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .expect("poll");
-        rx.recv().unwrap().expect("map");
-        let bytes = staging.get_mapped_range(..).expect("mapped range").to_vec();
-        bytemuck::cast_slice::<u8, [f32; 4]>(&bytes).to_vec()
-    })
+    let gpu = weft_render::Gpu::new().unwrap_or_else(|e| panic!("{e}"));
+    eprintln!("adapter: {}", gpu.describe());
+    let bytes = gpu
+        .run_compute(
+            shader,
+            "main",
+            bytemuck::cast_slice(data),
+            (n_cases * 2 * 16) as u64,
+            n_cases.div_ceil(64) as u32,
+        )
+        .unwrap_or_else(|e| panic!("wgpu: {e}"));
+    bytemuck::cast_slice::<u8, [f32; 4]>(&bytes).to_vec()
 }
 
 // ===========================================================================

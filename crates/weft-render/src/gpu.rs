@@ -112,6 +112,72 @@ impl Gpu {
             .map_err(|e| Error::Gpu(format!("poll: {e}")))
     }
 
+    /// Runs a one-dispatch compute kernel over storage buffers: binding 0 of
+    /// group 0 is `input` (read-only), binding 1 an `output_size`-byte
+    /// read-write buffer that is read back. `workgroups` along x. Used by the
+    /// numerical tests that evaluate library BSDF functions on the GPU.
+    pub fn run_compute(
+        &self,
+        wgsl: &str,
+        entry: &str,
+        input: &[u8],
+        output_size: u64,
+        workgroups: u32,
+    ) -> Result<Vec<u8>> {
+        use wgpu::util::DeviceExt;
+        let device = &self.device;
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(entry),
+            source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: None,
+            module: &module,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(Error::Gpu(format!("compute kernel `{entry}`: {e}")));
+        }
+        let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("compute input"),
+            contents: input,
+            usage: wgpu::BufferUsages::STORAGE,
+        });
+        let output = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("compute output"),
+            size: output_size,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        });
+        let mut enc = device.create_command_encoder(&Default::default());
+        {
+            let mut pass = enc.begin_compute_pass(&Default::default());
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &bind_group, &[]);
+            pass.dispatch_workgroups(workgroups, 1, 1);
+        }
+        self.queue.submit([enc.finish()]);
+        self.read_buffer(&output)
+    }
+
     /// Reads a whole buffer (it needs `COPY_SRC`) back to the CPU.
     pub fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
         let size = buffer.size();
