@@ -12,7 +12,11 @@ fn weft_main_light_direction() -> vec3<f32> {
 }
 
 // Main light radiance (linear rgb); never negative.
+// Zero in a scene without directional lights.
 fn weft_main_light_radiance() -> vec3<f32> {
+    if WEFT_DIRECTIONAL_LIGHTS == 0u {
+        return vec3<f32>(0.0);
+    }
     return max(weft_frame.light_color.rgb, vec3<f32>(0.0));
 }
 
@@ -33,6 +37,9 @@ fn weft_view_direction(world_position: vec3<f32>, fallback: vec3<f32>) -> vec3<f
 // radiance leaving a white Lambertian surface: multiply by the diffuse albedo
 // only, no further 1/pi. Clamped at 0 (ringing of L2 can go negative).
 fn weft_sh_irradiance(n: vec3<f32>) -> vec3<f32> {
+    if !WEFT_SH_AMBIENT {
+        return vec3<f32>(0.0);
+    }
     let sh = weft_frame.sh;
     var e = sh[0].xyz * 0.282095;
     e += sh[1].xyz * (0.488603 * n.y);
@@ -59,7 +66,11 @@ fn weft_specular_mip(roughness: f32) -> f32 {
 
 // Prefiltered (GGX) environment radiance along `dir` (world space, need not be
 // unit but must be non-zero, e.g. reflect(-v, n) of unit vectors).
+// Zero in a scene without an environment cube.
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness: f32) -> vec3<f32> {
+    if !WEFT_ENVIRONMENT {
+        return vec3<f32>(0.0);
+    }
     let c = textureSampleLevel(weft_environment, weft_environment_sampler, dir, weft_specular_mip(roughness));
     return max(c.rgb, vec3<f32>(0.0));
 }

@@ -51,6 +51,18 @@ pub struct Composed {
 
 pub const ENGINE_INTERFACE: &str = include_str!("wgsl/engine_interface.wgsl");
 
+/// The engine-feature overrides of `engine_interface.wgsl` and the values a
+/// library (scene-independent) variant is built with: everything provided.
+/// Scene builds fix them to what the scene provides (`scene::features`).
+pub const FEATURE_ENVIRONMENT: &str = "WEFT_ENVIRONMENT";
+pub const FEATURE_SH_AMBIENT: &str = "WEFT_SH_AMBIENT";
+pub const FEATURE_DIRECTIONAL_LIGHTS: &str = "WEFT_DIRECTIONAL_LIGHTS";
+pub const FEATURE_DEFAULTS: [(&str, naga::Literal); 3] = [
+    (FEATURE_ENVIRONMENT, naga::Literal::Bool(true)),
+    (FEATURE_SH_AMBIENT, naga::Literal::Bool(true)),
+    (FEATURE_DIRECTIONAL_LIGHTS, naga::Literal::U32(1)),
+];
+
 /// Registers the engine interface in the source database (once) so its lines can be shown.
 pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
     let path = std::path::Path::new("<weft>/engine_interface.wgsl");

@@ -17,6 +17,7 @@ pub mod metadata;
 pub mod output;
 pub mod prelude;
 pub mod reflect;
+pub mod scene;
 pub mod specialise;
 pub mod variant;
 

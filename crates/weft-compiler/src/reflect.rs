@@ -214,3 +214,56 @@ pub fn vertex_locations(module: &Module) -> Vec<u32> {
     out.sort();
     out
 }
+
+/// Parameters the module still reads, in declaration order: uniform members
+/// reached from any function (a texture's `_st` member counts for the
+/// texture) and material textures still bound.
+pub fn reads(m: &weft_front::Material, module: &Module, prelude: &crate::prelude::Prelude) -> Vec<String> {
+    let uniform = module.global_variables.iter().find_map(|(h, v)| {
+        v.binding
+            .as_ref()
+            .is_some_and(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_UNIFORM_BINDING)
+            .then_some(h)
+    });
+    let mut member_names = std::collections::BTreeSet::new();
+    if let Some(u) = uniform
+        && let TypeInner::Struct { members, .. } = &module.types[module.global_variables[u].ty].inner
+    {
+        let functions = module
+            .functions
+            .iter()
+            .map(|(_, f)| f)
+            .chain(module.entry_points.iter().map(|ep| &ep.function));
+        for f in functions {
+            for (_, e) in f.expressions.iter() {
+                if let naga::Expression::AccessIndex { base, index } = *e
+                    && matches!(f.expressions[base], naga::Expression::GlobalVariable(g) if g == u)
+                    && let Some(name) = members.get(index as usize).and_then(|m| m.name.clone())
+                {
+                    member_names.insert(name);
+                }
+            }
+        }
+    }
+    let bound: std::collections::BTreeSet<u32> = module
+        .global_variables
+        .iter()
+        .filter_map(|(_, v)| v.binding.as_ref())
+        .filter(|b| b.group == MATERIAL_GROUP)
+        .map(|b| b.binding)
+        .collect();
+    let members = crate::prelude::uniform_members(m);
+    m.params
+        .iter()
+        .filter(|p| {
+            members
+                .iter()
+                .any(|mem| mem.param == p.name && member_names.contains(&mem.name))
+                || prelude
+                    .texture_bindings
+                    .iter()
+                    .any(|(name, b)| *name == p.name && bound.contains(b))
+        })
+        .map(|p| p.name.clone())
+        .collect()
+}

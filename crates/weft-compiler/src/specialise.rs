@@ -72,6 +72,12 @@ fn specialise_function(
             *expr = Expression::Literal(*lit);
         }
     }
+    prune_function(module, f);
+}
+
+/// Replaces constant `if`s by their taken branch and drops the names of
+/// expressions only dead code evaluated. Also used by scene folding.
+pub(crate) fn prune_function(module: &Module, f: &mut naga::Function) {
     let body = std::mem::take(&mut f.body);
     f.body = prune_block(module, &f.expressions, body);
     // Names of expressions that only dead code evaluated would keep them (and
@@ -130,8 +136,11 @@ fn prune_block(module: &Module, exprs: &naga::Arena<Expression>, block: Block) -
                 reject,
             } => match eval(module, exprs, condition) {
                 Some(Value::Bool(taken)) => {
-                    let chosen = if taken { accept } else { reject };
-                    Statement::Block(prune_block(module, exprs, chosen))
+                    let chosen = prune_block(module, exprs, if taken { accept } else { reject });
+                    if chosen.is_empty() {
+                        continue; // e.g. a feature test whose early return is gone
+                    }
+                    Statement::Block(chosen)
                 }
                 _ => Statement::If {
                     condition,
@@ -161,9 +170,27 @@ fn prune_block(module: &Module, exprs: &naga::Arena<Expression>, block: Block) -
             },
             other => other,
         };
+        let ends = diverges(&stmt);
         out.push(stmt, span);
+        // Code after a `return` (e.g. of a feature test that became
+        // `if true { return ...; }`) is dead; it would keep its bindings alive.
+        if ends {
+            break;
+        }
     }
     out
+}
+
+/// Whether control never continues past `stmt`.
+fn diverges(stmt: &Statement) -> bool {
+    match stmt {
+        Statement::Return { .. } | Statement::Kill | Statement::Break | Statement::Continue => true,
+        Statement::Block(b) => b.last().is_some_and(diverges),
+        Statement::If { accept, reject, .. } => {
+            accept.last().is_some_and(diverges) && reject.last().is_some_and(diverges)
+        }
+        _ => false,
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,6 +2,7 @@
 
 use crate::backends::{self, stage_suffix};
 use crate::compose::validator;
+use crate::compose::FEATURE_DEFAULTS;
 use crate::prelude::{Prelude, TIER_OVERRIDE};
 use crate::reflect;
 use crate::specialise::{Bindings, specialise};
@@ -36,7 +37,7 @@ fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
 }
 
 /// All combinations of the `constant`-mode keywords' values (one empty combination if none).
-fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
+pub fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
     let mut combos = vec![Vec::new()];
     for (k, kw) in m
         .keywords
@@ -75,6 +76,9 @@ pub fn compile_variant(
             .values
             .insert(kw.name.clone(), keyword_literal(kw.kind, v));
     }
+    for (name, value) in FEATURE_DEFAULTS {
+        values.values.insert(name.into(), value);
+    }
     let specialised = specialise(module, &values);
     let info = validator().validate(&specialised).map_err(|e| {
         format!(
@@ -82,7 +86,21 @@ pub fn compile_variant(
             e.as_inner()
         )
     })?;
-    let wgsl = backends::emit_wgsl(&specialised, &info)?;
+    emit_shader(m, &specialised, &info, id, prelude, &constant_combinations(m))
+}
+
+/// Emits a specialised, validated module in every language (one set of
+/// non-WGSL files per combination of `constant`-mode keyword values) and
+/// reflects its metadata. Files are named `<id>[+keyword-value...].<ext>`.
+pub fn emit_shader(
+    m: &Material,
+    specialised: &naga::Module,
+    info: &naga::valid::ModuleInfo,
+    id: String,
+    prelude: &Prelude,
+    combos: &[Vec<(usize, usize)>],
+) -> Result<CompiledVariant, String> {
+    let wgsl = backends::emit_wgsl(specialised, info)?;
 
     let mut files: Vec<(String, Vec<u8>)> = vec![(format!("{id}.wgsl"), wgsl.clone().into_bytes())];
     let mut by_lang: BTreeMap<String, Vec<ShaderFile>> = BTreeMap::new();
@@ -94,11 +112,11 @@ pub fn compile_variant(
     });
 
     // Other languages cannot keep overrides: one set of files per constant-keyword combination.
-    for combo in constant_combinations(m) {
+    for combo in combos {
         let mut suffix = String::new();
         let mut constants = BTreeMap::new();
         let mut pc = naga::back::PipelineConstants::default();
-        for &(k, v) in &combo {
+        for &(k, v) in combo {
             let kw = &m.keywords[k];
             suffix.push_str(&format!("+{}-{}", kw.name.to_lowercase(), kw.values[v]));
             constants.insert(kw.name.clone(), kw.values[v].clone());
@@ -112,7 +130,7 @@ pub fn compile_variant(
             );
         }
         let (resolved, _) =
-            naga::back::pipeline_constants::process_overrides(&specialised, &info, None, &pc)
+            naga::back::pipeline_constants::process_overrides(specialised, info, None, &pc)
                 .map_err(|e| format!("variant `{id}`: resolving pipeline constants: {e}"))?;
         let mut resolved = resolved.into_owned();
         for (_, o) in resolved.overrides.iter_mut() {
@@ -171,7 +189,7 @@ pub fn compile_variant(
         })
         .collect();
 
-    let locations = reflect::vertex_locations(&specialised);
+    let locations = reflect::vertex_locations(specialised);
     let vertex_inputs = m
         .requires
         .iter()
@@ -185,11 +203,12 @@ pub fn compile_variant(
 
     let shader = VariantShader {
         files: by_lang,
-        entry_points: reflect::entry_points(&specialised),
+        entry_points: reflect::entry_points(specialised),
         pipeline_constants,
-        bindings: reflect::bindings(&specialised, &info, &prelude.texture_bindings),
-        material_uniform: reflect::material_uniform(&specialised),
+        bindings: reflect::bindings(specialised, info, &prelude.texture_bindings),
+        material_uniform: reflect::material_uniform(specialised),
         vertex_inputs,
+        reads: reflect::reads(m, specialised, prelude),
     };
     Ok(CompiledVariant {
         id,

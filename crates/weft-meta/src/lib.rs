@@ -8,6 +8,7 @@
 //! meaning changes; adding optional fields does not bump it.
 
 pub mod bake;
+pub mod scene;
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -265,6 +266,24 @@ impl TextureDefault {
             TextureDefault::Normal => "normal",
         }
     }
+    /// The RGBA8 bytes of the built-in 1x1 texture.
+    pub fn rgba8(self) -> [u8; 4] {
+        self.texel().map(|c| (c * 255.0).round() as u8)
+    }
+    /// What sampling the built-in texture returns: its RGBA8 bytes decoded,
+    /// through the sRGB curve (RGB only) when the texture is sRGB. Scene
+    /// builds fold a texture left at its default to this constant.
+    pub fn sampled(self, srgb: bool) -> [f32; 4] {
+        let b = self.rgba8();
+        std::array::from_fn(|i| {
+            let unorm = f64::from(b[i]) / 255.0;
+            if srgb && i < 3 {
+                bake::srgb_to_linear(unorm) as f32
+            } else {
+                unorm as f32
+            }
+        })
+    }
     /// The texel value as stored (before any sRGB decode).
     pub fn texel(self) -> [f32; 4] {
         match self {
@@ -510,6 +529,10 @@ pub struct VariantShader {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub material_uniform: Option<UniformLayout>,
     pub vertex_inputs: Vec<VertexInput>,
+    /// Parameters the specialised module still reads (uniform members and
+    /// textures), in declaration order: an inspector hides the others.
+    #[serde(default)]
+    pub reads: Vec<String>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]

@@ -5,6 +5,14 @@
 // parameter list), group 2 per object. Engines bind these; the inspector
 // metadata lists exactly the bindings each variant still uses.
 
+// Engine features. Library variants are built with every feature provided
+// (these defaults); a scene build fixes them to what the scene provides, and
+// code that tests them with an ordinary `if` is removed where a feature is
+// absent (docs/scenes.md). Engine interface v1 has one directional light slot.
+override WEFT_ENVIRONMENT: bool = true;
+override WEFT_SH_AMBIENT: bool = true;
+override WEFT_DIRECTIONAL_LIGHTS: u32 = 1u;
+
 const WEFT_PI: f32 = 3.14159265358979;
 const WEFT_INV_PI: f32 = 0.318309886183791;
 

@@ -1,0 +1,421 @@
+//! Building a resolved scene: one folded shader per distinct instance,
+//! deduplicated by emitted WGSL, plus `<scene>.scene.json`.
+//!
+//! Fail-closed: every instance either gets its own specialised shader or the
+//! build fails with a diagnostic at the scene file's line; nothing is written
+//! on error (the caller writes `SceneOutput::files` atomically).
+
+use super::fold::{Folded, fold};
+use super::instance::{InstanceValues, instance_values, model_matrix};
+use super::tiers::{AutoTierRequest, TierChooser};
+use crate::compose::{self, validator};
+use crate::library::{CompiledMaterial, compile_material};
+use crate::variant::{CompiledVariant, emit_shader, sha256_hex};
+use crate::{metadata, prelude};
+use codespan_reporting::diagnostic::{Diagnostic, Label};
+use rayon::prelude::*;
+use sha2::{Digest, Sha256};
+use std::collections::BTreeMap;
+use weft_front::model::{Material, ParamValue};
+use weft_front::scene::model::{ResolvedInstance, ResolvedScene, TierChoice};
+use weft_front::variants::VariantKey;
+use weft_front::{Diagnostics, SourceDb};
+use weft_meta::scene::{
+    SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneMetadata, SceneShader,
+    SceneTexture, SceneTransform,
+};
+use weft_meta::{ENGINE_INTERFACE_VERSION, ParamKind};
+
+/// A built scene: files relative to the output root (`<scene>/...`).
+pub struct SceneOutput {
+    pub name: String,
+    pub files: BTreeMap<String, Vec<u8>>,
+    pub metadata: SceneMetadata,
+    /// Per instance: the static variant id of the generic library shader.
+    pub generic_variants: Vec<String>,
+}
+
+#[derive(Default)]
+pub struct SceneBuildOptions<'a> {
+    /// Chooses `tier = "auto"` instances' tiers (None: such a scene is an error).
+    pub tier_chooser: Option<&'a dyn TierChooser>,
+}
+
+fn instance_error(
+    scene: &ResolvedScene,
+    inst: &ResolvedInstance,
+    code: &str,
+    msg: String,
+    label: &str,
+) -> Diagnostic<weft_front::FileId> {
+    Diagnostic::error()
+        .with_code(code)
+        .with_message(msg)
+        .with_labels(vec![
+            Label::primary(scene.manifest.file, inst.span.clone()).with_message(label.to_string()),
+        ])
+}
+
+/// The tier every instance is built with; `auto` decided by the chooser.
+fn decide_tiers(
+    scene: &ResolvedScene,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+    chooser: Option<&dyn TierChooser>,
+) -> Option<Vec<(usize, Option<weft_meta::scene::TierChoice>)>> {
+    let mut libraries: BTreeMap<usize, CompiledMaterial> = BTreeMap::new();
+    let mut out = Vec::new();
+    for inst in &scene.instances {
+        match &inst.tier {
+            TierChoice::Fixed(t) => out.push((*t, None)),
+            TierChoice::Auto {
+                error_budget,
+                screen_size,
+            } => {
+                let m = &scene.materials[inst.material];
+                let Some(chooser) = chooser else {
+                    diags.push(
+                        Diagnostic::error()
+                            .with_code("auto-tier")
+                            .with_message(format!(
+                                "instance `{}` asks for `tier = \"auto\"`, which needs tier measurements",
+                                inst.name
+                            ))
+                            .with_labels(vec![Label::primary(
+                                scene.manifest.file,
+                                inst.tier_span.clone(),
+                            )])
+                            .with_notes(vec![
+                                "build the scene with `weft build --scene` (it measures on lavapipe), or pass a tier chooser to `build_scene`".into(),
+                            ]),
+                    );
+                    out.push((0, None));
+                    continue;
+                };
+                if !libraries.contains_key(&inst.material) {
+                    let compiled = compile_material(m, db, diags)?;
+                    libraries.insert(inst.material, compiled);
+                }
+                let values = instance_values(m, inst, m.tiers.default, &scene.manifest.features);
+                let mut request_values = values.uniform.clone();
+                request_values.extend(values.constants.clone());
+                let request = AutoTierRequest {
+                    instance: &inst.name,
+                    material: &libraries[&inst.material],
+                    keywords: keyword_names(m, inst),
+                    values: request_values,
+                    mesh: inst.mesh.name(),
+                    features: scene.manifest.features,
+                    error_budget: *error_budget,
+                    screen_size: *screen_size,
+                };
+                match chooser.choose(&request) {
+                    Ok(decision) => {
+                        match m.tiers.values.iter().position(|t| *t == decision.tier) {
+                            Some(t) => out.push((t, Some(decision.record))),
+                            None => {
+                                diags.push(instance_error(
+                                    scene,
+                                    inst,
+                                    "auto-tier",
+                                    format!("the tier chooser picked `{}`, which `{}` does not have", decision.tier, m.name),
+                                    "this instance",
+                                ));
+                                out.push((0, None));
+                            }
+                        }
+                    }
+                    Err(e) => {
+                        diags.push(
+                            Diagnostic::error()
+                                .with_code("auto-tier")
+                                .with_message(format!("choosing the tier of `{}`: {e}", inst.name))
+                                .with_labels(vec![Label::primary(
+                                    scene.manifest.file,
+                                    inst.tier_span.clone(),
+                                )]),
+                        );
+                        out.push((0, None));
+                    }
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+fn keyword_names(m: &Material, inst: &ResolvedInstance) -> BTreeMap<String, String> {
+    m.keywords
+        .iter()
+        .zip(&inst.keywords)
+        .map(|(k, &v)| (k.name.clone(), k.values[v].clone()))
+        .collect()
+}
+
+/// Hash of everything the scene's output depends on.
+fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
+    let mut h = Sha256::new();
+    h.update(env!("CARGO_PKG_VERSION"));
+    h.update(compose::ENGINE_INTERFACE);
+    h.update(db.text(scene.manifest.file));
+    for m in &scene.materials {
+        h.update(crate::library::inputs_hash(m, db));
+    }
+    h.finalize().iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// One instance folded, validated and emitted.
+struct BuiltInstance {
+    values: InstanceValues,
+    compiled: CompiledVariant,
+}
+
+fn build_instance(
+    m: &Material,
+    module: &naga::Module,
+    prelude: &prelude::Prelude,
+    inst: &ResolvedInstance,
+    tier: usize,
+    features: &weft_front::scene::model::SceneFeatures,
+) -> Result<BuiltInstance, String> {
+    let values = instance_values(m, inst, tier, features);
+    let Folded { module, .. } = fold(module, &values.fold)?;
+    let info = validator()
+        .validate(&module)
+        .map_err(|e| format!("the folded shader fails validation: {}", e.as_inner()))?;
+    // The id is the content hash, known only after emitting: emit under a
+    // placeholder stem and rename.
+    let wgsl = crate::backends::emit_wgsl(&module, &info)?;
+    let id = format!("{}.{}", m.name, &sha256_hex(wgsl.as_bytes())[..12]);
+    let compiled = emit_shader(m, &module, &info, id, prelude, &[Vec::new()])?;
+    Ok(BuiltInstance { values, compiled })
+}
+
+/// Builds a resolved scene. Diagnostics point into the scene file.
+pub fn build_resolved_scene(
+    scene: &ResolvedScene,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+    options: &SceneBuildOptions,
+) -> Option<SceneOutput> {
+    let before = diags.error_count();
+    let manifest = &scene.manifest;
+    let tiers = decide_tiers(scene, db, diags, options.tier_chooser)?;
+    if diags.error_count() > before {
+        return None;
+    }
+
+    // Each material composed, parsed and validated once.
+    let mut modules = Vec::new();
+    for m in &scene.materials {
+        let prelude = prelude::generate(m);
+        let composed = compose::compose(m, &prelude, db);
+        let (module, _) = compose::parse_and_validate(&composed, m, diags)?;
+        modules.push((prelude, module));
+    }
+
+    let features = manifest.features;
+    let results: Vec<Result<BuiltInstance, String>> = scene
+        .instances
+        .par_iter()
+        .zip(&tiers)
+        .map(|(inst, (tier, _))| {
+            let m = &scene.materials[inst.material];
+            let (prelude, module) = &modules[inst.material];
+            build_instance(m, module, prelude, inst, *tier, &features)
+        })
+        .collect();
+
+    let mut files = BTreeMap::new();
+    let mut shaders: Vec<SceneShader> = Vec::new();
+    let mut instances = Vec::new();
+    let mut generic_variants = Vec::new();
+    for ((inst, (tier, choice)), result) in scene.instances.iter().zip(tiers).zip(results) {
+        let m = &scene.materials[inst.material];
+        let built = match result {
+            Ok(b) => b,
+            Err(e) => {
+                diags.push(instance_error(
+                    scene,
+                    inst,
+                    "scene-fold",
+                    format!("specialising instance `{}` ({}): {e}", inst.name, m.name),
+                    "this instance",
+                ));
+                continue;
+            }
+        };
+        let static_key = VariantKey {
+            tier,
+            keywords: m
+                .keywords
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| k.mode == weft_meta::KeywordMode::Static)
+                .map(|(i, _)| (i, inst.keywords[i]))
+                .collect(),
+        };
+        let variant = static_key.id(m);
+        let shader = &built.compiled.shader;
+
+        // The mesh must feed every input the specialised shader reads.
+        let missing: Vec<&str> = shader
+            .vertex_inputs
+            .iter()
+            .filter(|vi| !inst.vertex_inputs.iter().any(|a| a.name() == vi.name))
+            .map(|vi| vi.name.as_str())
+            .collect();
+        if !missing.is_empty() {
+            diags.push(
+                Diagnostic::error()
+                    .with_code("missing-vertex-input")
+                    .with_message(format!(
+                        "instance `{}`: its shader ({} `{variant}`) reads vertex input{} {} that the mesh does not have",
+                        inst.name,
+                        m.name,
+                        if missing.len() > 1 { "s" } else { "" },
+                        missing.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>().join(", ")
+                    ))
+                    .with_labels(vec![
+                        Label::primary(manifest.file, inst.vertex_inputs_span.clone())
+                            .with_message("the mesh's vertex inputs"),
+                        Label::secondary(manifest.file, inst.span.clone())
+                            .with_message("this instance"),
+                    ])
+                    .with_notes(vec![format!(
+                        "add {} to `vertex_inputs`, or choose keyword values whose variant does not read {}",
+                        missing.join(", "),
+                        if missing.len() > 1 { "them" } else { "it" }
+                    )]),
+            );
+            continue;
+        }
+
+        // Identical specialised instances share one shader.
+        let id = built.compiled.id.clone();
+        if !shaders.iter().any(|s| s.id == id) {
+            for (name, bytes) in built.compiled.files {
+                files.insert(format!("{}/{name}", manifest.name), bytes);
+            }
+            shaders.push(SceneShader {
+                id: id.clone(),
+                material: m.name.clone(),
+                variant: variant.clone(),
+                shader: built.compiled.shader.clone(),
+            });
+        }
+        let shader = &shaders.iter().find(|s| s.id == id).expect("just added").shader;
+        let uniform_values = shader
+            .material_uniform
+            .as_ref()
+            .map(|layout| {
+                layout
+                    .members
+                    .iter()
+                    .filter_map(|mem| Some((mem.name.clone(), built.values.uniform.get(&mem.name)?.clone())))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let textures = shader
+            .bindings
+            .iter()
+            .filter_map(|b| {
+                let pname = b.parameter.as_ref()?;
+                let pi = m.params.iter().position(|p| p.name == *pname)?;
+                let p = &m.params[pi];
+                let texture = match (&p.kind, &inst.values[pi]) {
+                    (ParamKind::Gradient, ParamValue::Gradient(stops)) => SceneTexture {
+                        parameter: pname.clone(),
+                        builtin: None,
+                        ramp_rgba8: Some(weft_front::samples::bake_gradient(stops, p.samples)),
+                        srgb: true,
+                    },
+                    (_, ParamValue::Texture(t)) => SceneTexture {
+                        parameter: pname.clone(),
+                        builtin: Some(*t),
+                        ramp_rgba8: None,
+                        srgb: p.srgb,
+                    },
+                    _ => return None,
+                };
+                Some((b.name.clone(), texture))
+            })
+            .collect();
+        instances.push(SceneInstance {
+            name: inst.name.clone(),
+            material: m.name.clone(),
+            preset: inst.preset.clone(),
+            tier: m.tiers.values[tier].clone(),
+            keywords: keyword_names(m, inst),
+            variant: variant.clone(),
+            shader: id,
+            constants: built.values.constants,
+            dynamic: inst.dynamic.iter().map(|&i| m.params[i].name.clone()).collect(),
+            uniform_values,
+            textures,
+            passes: metadata::passes(m),
+            mesh: inst.mesh.name().into(),
+            transform: SceneTransform {
+                translation: inst.transform.translation,
+                rotation_degrees: inst.transform.rotation_degrees,
+                scale: inst.transform.scale,
+                model: model_matrix(&inst.transform),
+            },
+            tier_choice: choice,
+        });
+        generic_variants.push(variant);
+    }
+
+    if let Some(budget) = &manifest.max_shaders
+        && shaders.len() > budget.value
+    {
+        diags.push(
+            Diagnostic::error()
+                .with_code("shader-budget")
+                .with_message(format!(
+                    "the scene needs {} distinct shaders; `max_shaders` allows {}",
+                    shaders.len(),
+                    budget.value
+                ))
+                .with_labels(vec![Label::primary(manifest.file, budget.span.clone())])
+                .with_notes(vec![
+                    "raise `max_shaders`, or make instances share a shader: same material, tier, keywords and constant values (or make the differing parameters `dynamic`)".into(),
+                ]),
+        );
+    }
+    if diags.error_count() > before {
+        return None;
+    }
+
+    let metadata = SceneMetadata {
+        schema_version: SCENE_SCHEMA_VERSION,
+        engine_interface_version: ENGINE_INTERFACE_VERSION,
+        name: manifest.name.clone(),
+        description: manifest.description.clone(),
+        inputs_hash: scene_inputs_hash(scene, db),
+        features: SceneFeatures {
+            environment: features.environment,
+            sh_ambient: features.sh_ambient,
+            directional_lights: features.directional_lights,
+        },
+        camera: SceneCamera {
+            position: manifest.camera.position,
+            target: manifest.camera.target,
+            fov_degrees: manifest.camera.fov_degrees,
+        },
+        shaders,
+        instances,
+    };
+    let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");
+    json.push('\n');
+    files.insert(
+        format!("{0}/{0}.scene.json", manifest.name),
+        json.into_bytes(),
+    );
+    Some(SceneOutput {
+        name: manifest.name.clone(),
+        files,
+        metadata,
+        generic_variants,
+    })
+}

@@ -1,0 +1,670 @@
+//! Folding a scene instance's constants into its shader (naga IR).
+//!
+//! The generic variant reads every parameter from the material uniform. For a
+//! scene instance most parameters are constants of the scene, so:
+//! 1. loads of folded uniform members (and of components of them) become
+//!    module constants; samples of textures left at a built-in default become
+//!    the constant texel the sample would return;
+//! 2. naga's `process_overrides` resolves every override (tier, every keyword,
+//!    the engine features) and constant-evaluates every expression whose
+//!    operands are now constant — through the whole function body;
+//! 3. `if`s on now-constant conditions keep only the taken branch (naga keeps
+//!    them), and compaction drops what only dead code used: textures, LUTs,
+//!    helper functions;
+//! 4. the material uniform shrinks to the members still read (the `dynamic`
+//!    parameters, curves), re-laid out by WGSL's rules; with none left, the
+//!    binding disappears.
+//!
+//! Constants do not cross function calls (naga keeps calls opaque), so the
+//! materials test scene constants and engine features where they read them,
+//! in the entry point (docs/scenes.md, "Writing foldable materials").
+
+use crate::specialise::prune_function;
+use naga::{
+    AddressSpace, Constant, Expression, Handle, Literal, Module, Range, Span, Statement,
+    StructMember, Type, TypeInner,
+};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+
+/// A scalar or vector constant, as the uniform would have held it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConstValue {
+    F32(Vec<f32>),
+    I32(i32),
+    U32(u32),
+}
+
+/// What to fold into one instance's shader.
+#[derive(Clone, Debug, Default)]
+pub struct FoldRequest {
+    /// Every override's value (tier, keywords, engine features).
+    pub overrides: BTreeMap<String, Literal>,
+    /// Uniform member -> the value to fold in its place.
+    pub members: BTreeMap<String, ConstValue>,
+    /// Texture global -> the constant texel sampling it returns.
+    pub textures: BTreeMap<String, [f32; 4]>,
+    /// The material uniform variable's name.
+    pub uniform_var: String,
+}
+
+/// The folded module and what folding left in the uniform.
+pub struct Folded {
+    pub module: Module,
+    /// Members asked to be folded that the code reads in a way that cannot
+    /// be folded (a dynamic index): they stay in the uniform with their value.
+    pub kept_in_uniform: BTreeSet<String>,
+}
+
+pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
+    let mut module = module.clone();
+    let uniform = module.global_variables.iter().find_map(|(h, g)| {
+        (g.space == AddressSpace::Uniform && g.name.as_deref() == Some(&request.uniform_var))
+            .then_some(h)
+    });
+    let members: Vec<StructMember> = match uniform.map(|h| &module.types[module.global_variables[h].ty].inner) {
+        Some(TypeInner::Struct { members, .. }) => members.clone(),
+        _ => Vec::new(),
+    };
+    let member_index = |name: &str| members.iter().position(|m| m.name.as_deref() == Some(name));
+
+    // Members read through a path `fold` cannot see (a dynamic index, the
+    // whole struct) are kept in the uniform.
+    let mut unfoldable = BTreeSet::new();
+    if let Some(u) = uniform {
+        for f in functions(&module) {
+            unfoldable.extend(unfoldable_members(f, u));
+        }
+    }
+    let folded_members: BTreeMap<u32, &ConstValue> = request
+        .members
+        .iter()
+        .filter_map(|(name, v)| {
+            let i = member_index(name)? as u32;
+            (!unfoldable.contains(&i)).then_some((i, v))
+        })
+        .collect();
+    let kept_in_uniform = request
+        .members
+        .keys()
+        .filter(|n| member_index(n).is_some_and(|i| unfoldable.contains(&(i as u32))))
+        .cloned()
+        .collect();
+
+    let textures: HashMap<Handle<naga::GlobalVariable>, [f32; 4]> = module
+        .global_variables
+        .iter()
+        .filter_map(|(h, g)| Some((h, *request.textures.get(g.name.as_deref()?)?)))
+        .collect();
+
+    // 1. Loads and samples -> constants.
+    let mut constants = ConstantPool::default();
+    let mut fns = std::mem::take(&mut module.functions);
+    for (_, f) in fns.iter_mut() {
+        replace_reads(&mut module, f, uniform, &members, &folded_members, &textures, &mut constants)?;
+    }
+    module.functions = fns;
+    let mut eps = std::mem::take(&mut module.entry_points);
+    for ep in eps.iter_mut() {
+        replace_reads(&mut module, &mut ep.function, uniform, &members, &folded_members, &textures, &mut constants)?;
+    }
+    module.entry_points = eps;
+
+    // 2. Overrides -> literals, and the constant `if`s that alone decide pruned.
+    let bindings = crate::specialise::Bindings {
+        values: request.overrides.iter().map(|(k, v)| (k.clone(), *v)).collect(),
+    };
+    let module = crate::specialise::specialise(&module, &bindings);
+
+    // 3. Constant evaluation through the function bodies (naga's evaluator,
+    // driven expression by expression), then the `if`s that became constant.
+    let info = crate::compose::validator()
+        .validate(&module)
+        .map_err(|e| format!("after folding uniform reads: {}", error_chain(e.as_inner())))?;
+    let mut module = module;
+    evaluate_constants(&mut module, &info);
+    let mut fns = std::mem::take(&mut module.functions);
+    for (_, f) in fns.iter_mut() {
+        prune_function(&module, f);
+    }
+    module.functions = fns;
+    let mut eps = std::mem::take(&mut module.entry_points);
+    for ep in eps.iter_mut() {
+        prune_function(&module, &mut ep.function);
+    }
+    module.entry_points = eps;
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+
+    // 4. The uniform keeps only the members still read.
+    shrink_uniform(&mut module, &request.uniform_var)?;
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    Ok(Folded {
+        module,
+        kept_in_uniform,
+    })
+}
+
+fn functions(module: &Module) -> impl Iterator<Item = &naga::Function> {
+    module
+        .functions
+        .iter()
+        .map(|(_, f)| f)
+        .chain(module.entry_points.iter().map(|ep| &ep.function))
+}
+
+/// The chain of constant member/component indices from `h` up to the
+/// uniform global, outermost first; None when `h` is not such a chain.
+fn access_path(
+    exprs: &naga::Arena<Expression>,
+    uniform: Handle<naga::GlobalVariable>,
+    mut h: Handle<Expression>,
+) -> Option<Vec<u32>> {
+    let mut path = Vec::new();
+    loop {
+        match exprs[h] {
+            Expression::AccessIndex { base, index } => {
+                path.push(index);
+                h = base;
+            }
+            Expression::GlobalVariable(g) if g == uniform => {
+                path.reverse();
+                return Some(path);
+            }
+            _ => return None,
+        }
+    }
+}
+
+/// Members reached through anything other than constant indices.
+fn unfoldable_members(f: &naga::Function, uniform: Handle<naga::GlobalVariable>) -> BTreeSet<u32> {
+    let mut out = BTreeSet::new();
+    for (_, e) in f.expressions.iter() {
+        match *e {
+            // `material.m[i]` with a run-time `i`: member m is data.
+            Expression::Access { base, .. } => {
+                if let Some(p) = access_path(&f.expressions, uniform, base)
+                    && let Some(&m) = p.first()
+                {
+                    out.insert(m);
+                }
+            }
+            // The whole struct loaded (or passed as a pointer): keep everything.
+            Expression::Load { pointer } => {
+                if matches!(f.expressions[pointer], Expression::GlobalVariable(g) if g == uniform) {
+                    out.insert(u32::MAX);
+                }
+            }
+            _ => {}
+        }
+    }
+    if out.contains(&u32::MAX) {
+        out.extend(0..1024);
+    }
+    out
+}
+
+/// Module constants created for folded values, one per (member, component path).
+#[derive(Default)]
+struct ConstantPool {
+    by_path: HashMap<Vec<u32>, Handle<Constant>>,
+    texels: HashMap<[u32; 4], Handle<Constant>>,
+}
+
+fn scalar_literal(v: &ConstValue, component: usize) -> Option<Literal> {
+    match v {
+        ConstValue::F32(c) => c.get(component).map(|x| Literal::F32(*x)),
+        ConstValue::I32(i) if component == 0 => Some(Literal::I32(*i)),
+        ConstValue::U32(u) if component == 0 => Some(Literal::U32(*u)),
+        _ => None,
+    }
+}
+
+/// A global expression of type `ty` holding `v` (or one component of it).
+fn const_expr(
+    module: &mut Module,
+    ty: Handle<Type>,
+    v: &ConstValue,
+    component: Option<u32>,
+) -> Result<Handle<Expression>, String> {
+    let mut lit = |c: usize| -> Result<Handle<Expression>, String> {
+        let l = scalar_literal(v, c).ok_or_else(|| format!("value {v:?} has no component {c}"))?;
+        Ok(module.global_expressions.append(Expression::Literal(l), Span::UNDEFINED))
+    };
+    match (&module.types[ty].inner, component) {
+        (TypeInner::Scalar(_), Some(c)) => lit(c as usize),
+        (TypeInner::Scalar(_), None) => lit(0),
+        (TypeInner::Vector { size, .. }, None) => {
+            let n = *size as usize;
+            let components = (0..n).map(&mut lit).collect::<Result<Vec<_>, _>>()?;
+            Ok(module
+                .global_expressions
+                .append(Expression::Compose { ty, components }, Span::UNDEFINED))
+        }
+        (inner, _) => Err(format!("cannot fold a uniform member of type {inner:?}")),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn replace_reads(
+    module: &mut Module,
+    f: &mut naga::Function,
+    uniform: Option<Handle<naga::GlobalVariable>>,
+    members: &[StructMember],
+    folded: &BTreeMap<u32, &ConstValue>,
+    textures: &HashMap<Handle<naga::GlobalVariable>, [f32; 4]>,
+    pool: &mut ConstantPool,
+) -> Result<(), String> {
+    let handles: Vec<Handle<Expression>> = f.expressions.iter().map(|(h, _)| h).collect();
+    for h in handles {
+        let replacement = match f.expressions[h] {
+            Expression::Load { pointer } => {
+                let Some(u) = uniform else { continue };
+                let Some(path) = access_path(&f.expressions, u, pointer) else {
+                    continue;
+                };
+                let Some((&member, rest)) = path.split_first() else {
+                    continue;
+                };
+                let Some(value) = folded.get(&member) else {
+                    continue;
+                };
+                if rest.len() > 1 {
+                    return Err(format!("unexpected access depth into uniform member {member}"));
+                }
+                if let Some(&c) = pool.by_path.get(&path) {
+                    Expression::Constant(c)
+                } else {
+                    let member_ty = members[member as usize].ty;
+                    let ty = match (&module.types[member_ty].inner, rest.first()) {
+                        (TypeInner::Vector { scalar, .. }, Some(_)) => module.types.insert(
+                            Type {
+                                name: None,
+                                inner: TypeInner::Scalar(*scalar),
+                            },
+                            Span::UNDEFINED,
+                        ),
+                        _ => member_ty,
+                    };
+                    let init = const_expr(module, ty, value, rest.first().copied())?;
+                    let c = module.constants.append(
+                        Constant {
+                            name: None,
+                            ty,
+                            init,
+                        },
+                        Span::UNDEFINED,
+                    );
+                    pool.by_path.insert(path, c);
+                    Expression::Constant(c)
+                }
+            }
+            Expression::ImageSample {
+                image,
+                depth_ref: None,
+                ..
+            } => {
+                let Expression::GlobalVariable(g) = f.expressions[image] else {
+                    continue;
+                };
+                let Some(texel) = textures.get(&g) else {
+                    continue;
+                };
+                let key = texel.map(f32::to_bits);
+                let c = match pool.texels.get(&key) {
+                    Some(&c) => c,
+                    None => {
+                        let ty = module.types.insert(
+                            Type {
+                                name: None,
+                                inner: TypeInner::Vector {
+                                    size: naga::VectorSize::Quad,
+                                    scalar: naga::Scalar::F32,
+                                },
+                            },
+                            Span::UNDEFINED,
+                        );
+                        let init = const_expr(module, ty, &ConstValue::F32(texel.to_vec()), None)?;
+                        let c = module.constants.append(
+                            Constant {
+                                name: None,
+                                ty,
+                                init,
+                            },
+                            Span::UNDEFINED,
+                        );
+                        pool.texels.insert(key, c);
+                        c
+                    }
+                };
+                Expression::Constant(c)
+            }
+            _ => continue,
+        };
+        f.expressions[h] = replacement;
+    }
+    let body = std::mem::take(&mut f.body);
+    f.body = filter_emits(body, &f.expressions);
+    Ok(())
+}
+
+/// `Emit` ranges may not cover pre-emitted expressions (constants): split them.
+fn filter_emits(block: naga::Block, exprs: &naga::Arena<Expression>) -> naga::Block {
+    let mut out = naga::Block::with_capacity(block.len());
+    for (stmt, span) in block.span_into_iter() {
+        let stmt = match stmt {
+            Statement::Emit(range) => {
+                let mut run: Option<(Handle<Expression>, Handle<Expression>)> = None;
+                for h in range {
+                    if exprs[h].needs_pre_emit() {
+                        if let Some((a, b)) = run.take() {
+                            out.push(Statement::Emit(Range::new_from_bounds(a, b)), span);
+                        }
+                    } else {
+                        run = Some(match run {
+                            Some((a, _)) => (a, h),
+                            None => (h, h),
+                        });
+                    }
+                }
+                match run {
+                    Some((a, b)) => Statement::Emit(Range::new_from_bounds(a, b)),
+                    None => continue,
+                }
+            }
+            Statement::Block(b) => Statement::Block(filter_emits(b, exprs)),
+            Statement::If {
+                condition,
+                accept,
+                reject,
+            } => Statement::If {
+                condition,
+                accept: filter_emits(accept, exprs),
+                reject: filter_emits(reject, exprs),
+            },
+            Statement::Loop {
+                body,
+                continuing,
+                break_if,
+            } => Statement::Loop {
+                body: filter_emits(body, exprs),
+                continuing: filter_emits(continuing, exprs),
+                break_if,
+            },
+            Statement::Switch { selector, cases } => Statement::Switch {
+                selector,
+                cases: cases
+                    .into_iter()
+                    .map(|mut c| {
+                        c.body = filter_emits(c.body, exprs);
+                        c
+                    })
+                    .collect(),
+            },
+            other => other,
+        };
+        out.push(stmt, span);
+    }
+    out
+}
+
+/// Rebuilds the material uniform struct with only the members some function
+/// still reaches, laid out by WGSL's rules, and renumbers the accesses.
+fn shrink_uniform(module: &mut Module, uniform_var: &str) -> Result<(), String> {
+    let Some(u) = module.global_variables.iter().find_map(|(h, g)| {
+        (g.space == AddressSpace::Uniform && g.name.as_deref() == Some(uniform_var)).then_some(h)
+    }) else {
+        return Ok(());
+    };
+    let ty = module.global_variables[u].ty;
+    let (name, members) = match &module.types[ty] {
+        Type {
+            name,
+            inner: TypeInner::Struct { members, .. },
+        } => (name.clone(), members.clone()),
+        _ => return Ok(()),
+    };
+    let mut used = BTreeSet::new();
+    for f in functions(module) {
+        for (_, e) in f.expressions.iter() {
+            match *e {
+                Expression::AccessIndex { base, index }
+                    if matches!(f.expressions[base], Expression::GlobalVariable(g) if g == u) =>
+                {
+                    used.insert(index);
+                }
+                Expression::Load { pointer }
+                    if matches!(f.expressions[pointer], Expression::GlobalVariable(g) if g == u) =>
+                {
+                    return Ok(()); // the whole struct is read: keep its layout
+                }
+                _ => {}
+            }
+        }
+    }
+    if used.len() == members.len() {
+        return Ok(());
+    }
+    let mut layouter = naga::proc::Layouter::default();
+    layouter
+        .update(module.to_ctx())
+        .map_err(|e| format!("laying out the material uniform: {e}"))?;
+    let mut new_members = Vec::new();
+    let mut remap = HashMap::new();
+    let mut offset = 0u32;
+    let mut align = 16u32;
+    for (new_i, &old_i) in used.iter().enumerate() {
+        let m = &members[old_i as usize];
+        let layout = layouter[m.ty];
+        let a = layout.alignment.round_up(1);
+        offset = offset.div_ceil(a) * a;
+        new_members.push(StructMember {
+            name: m.name.clone(),
+            ty: m.ty,
+            binding: None,
+            offset,
+        });
+        offset += layout.size;
+        align = align.max(a);
+        remap.insert(old_i, new_i as u32);
+    }
+    let span = offset.div_ceil(align).max(1) * align;
+    let new_ty = module.types.insert(
+        Type {
+            name,
+            inner: TypeInner::Struct {
+                members: new_members,
+                span,
+            },
+        },
+        Span::UNDEFINED,
+    );
+    module.global_variables[u].ty = new_ty;
+    let renumber = |f: &mut naga::Function| {
+        let handles: Vec<_> = f.expressions.iter().map(|(h, _)| h).collect();
+        for h in handles {
+            if let Expression::AccessIndex { base, index } = f.expressions[h]
+                && matches!(f.expressions[base], Expression::GlobalVariable(g) if g == u)
+            {
+                f.expressions[h] = Expression::AccessIndex {
+                    base,
+                    index: remap[&index],
+                };
+            }
+        }
+    };
+    for (_, f) in module.functions.iter_mut() {
+        renumber(f);
+    }
+    for ep in module.entry_points.iter_mut() {
+        renumber(&mut ep.function);
+    }
+    Ok(())
+}
+
+/// An error and its sources, innermost last (naga nests "entry point invalid" around the cause).
+fn error_chain(e: &dyn std::error::Error) -> String {
+    let mut out = e.to_string();
+    let mut source = e.source();
+    while let Some(s) = source {
+        out.push_str(": ");
+        out.push_str(&s.to_string());
+        source = s.source();
+    }
+    out
+}
+
+/// Replaces every function expression whose operands are all constant by its
+/// value, evaluated by naga's constant evaluator in the module's global
+/// arena (so WGSL's rules and errors apply; an expression it cannot or may
+/// not evaluate, e.g. a division by zero, is left to run time).
+fn evaluate_constants(module: &mut Module, info: &naga::valid::ModuleInfo) {
+    let mut tracker = naga::proc::ExpressionKindTracker::from_arena(&module.global_expressions);
+    let mut layouter = naga::proc::Layouter::default();
+    let mut fns = std::mem::take(&mut module.functions);
+    for (h, f) in fns.iter_mut() {
+        evaluate_function(module, f, &info[h], &mut tracker, &mut layouter);
+    }
+    module.functions = fns;
+    let mut eps = std::mem::take(&mut module.entry_points);
+    for (i, ep) in eps.iter_mut().enumerate() {
+        evaluate_function(module, &mut ep.function, info.get_entry_point(i), &mut tracker, &mut layouter);
+    }
+    module.entry_points = eps;
+}
+
+/// The operands of a side-effect-free expression the evaluator understands.
+fn pure_operands(e: &Expression) -> Option<Vec<Handle<Expression>>> {
+    Some(match e {
+        Expression::Binary { left, right, .. } => vec![*left, *right],
+        Expression::Unary { expr, .. } | Expression::As { expr, .. } => vec![*expr],
+        Expression::Splat { value, .. } => vec![*value],
+        Expression::Swizzle { vector, .. } => vec![*vector],
+        Expression::AccessIndex { base, .. } => vec![*base],
+        Expression::Access { base, index } => vec![*base, *index],
+        Expression::Compose { components, .. } => components.clone(),
+        Expression::Select {
+            condition,
+            accept,
+            reject,
+        } => vec![*condition, *accept, *reject],
+        Expression::Relational { argument, .. } => vec![*argument],
+        Expression::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => std::iter::once(*arg)
+            .chain(arg1.iter().chain(arg2).chain(arg3).copied())
+            .collect(),
+        _ => return None,
+    })
+}
+
+fn evaluate_function(
+    module: &mut Module,
+    f: &mut naga::Function,
+    info: &naga::valid::FunctionInfo,
+    tracker: &mut naga::proc::ExpressionKindTracker,
+    layouter: &mut naga::proc::Layouter,
+) {
+    // Function expression -> the global expression holding its value.
+    let mut known: HashMap<Handle<Expression>, Handle<Expression>> = HashMap::new();
+    let handles: Vec<Handle<Expression>> = f.expressions.iter().map(|(h, _)| h).collect();
+    for h in handles {
+        let expr = f.expressions[h].clone();
+        let global = match &expr {
+            Expression::Constant(c) => Some(module.constants[*c].init),
+            Expression::Literal(_) | Expression::ZeroValue(_) => {
+                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
+                    .try_eval_and_append(expr.clone(), Span::UNDEFINED)
+                    .ok()
+            }
+            e => pure_operands(e).and_then(|ops| {
+                let mapped: HashMap<Handle<Expression>, Handle<Expression>> = ops
+                    .iter()
+                    .map(|op| known.get(op).map(|g| (*op, *g)))
+                    .collect::<Option<_>>()?;
+                let mut g = expr.clone();
+                remap_operands(&mut g, &mapped);
+                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
+                    .try_eval_and_append(g, Span::UNDEFINED)
+                    .ok()
+            }),
+        };
+        let Some(g) = global else { continue };
+        known.insert(h, g);
+        if f.expressions[h].needs_pre_emit() {
+            continue;
+        }
+        f.expressions[h] = match module.global_expressions[g] {
+            Expression::Literal(l) => Expression::Literal(l),
+            _ => {
+                let ty = match &info[h].ty {
+                    naga::proc::TypeResolution::Handle(t) => *t,
+                    naga::proc::TypeResolution::Value(inner) => module.types.insert(
+                        Type {
+                            name: None,
+                            inner: inner.clone(),
+                        },
+                        Span::UNDEFINED,
+                    ),
+                };
+                let c = module.constants.append(
+                    Constant {
+                        name: None,
+                        ty,
+                        init: g,
+                    },
+                    Span::UNDEFINED,
+                );
+                Expression::Constant(c)
+            }
+        };
+    }
+    let body = std::mem::take(&mut f.body);
+    f.body = filter_emits(body, &f.expressions);
+}
+
+fn remap_operands(e: &mut Expression, map: &HashMap<Handle<Expression>, Handle<Expression>>) {
+    let m = |h: &mut Handle<Expression>| {
+        if let Some(g) = map.get(h) {
+            *h = *g;
+        }
+    };
+    match e {
+        Expression::Binary { left, right, .. } => {
+            m(left);
+            m(right);
+        }
+        Expression::Unary { expr, .. } | Expression::As { expr, .. } => m(expr),
+        Expression::Splat { value, .. } => m(value),
+        Expression::Swizzle { vector, .. } => m(vector),
+        Expression::AccessIndex { base, .. } => m(base),
+        Expression::Access { base, index } => {
+            m(base);
+            m(index);
+        }
+        Expression::Compose { components, .. } => components.iter_mut().for_each(m),
+        Expression::Select {
+            condition,
+            accept,
+            reject,
+        } => {
+            m(condition);
+            m(accept);
+            m(reject);
+        }
+        Expression::Relational { argument, .. } => m(argument),
+        Expression::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => {
+            m(arg);
+            arg1.iter_mut().chain(arg2.iter_mut()).chain(arg3.iter_mut()).for_each(m);
+        }
+        _ => {}
+    }
+}

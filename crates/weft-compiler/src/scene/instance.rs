@@ -1,0 +1,148 @@
+//! From a resolved instance to what folding needs and what the engine uploads:
+//! which uniform members and textures are scene constants (and their values,
+//! exactly as the runtime would have uploaded them), and which stay data.
+
+use super::fold::{ConstValue, FoldRequest};
+use crate::compose::{FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT, FEATURE_SH_AMBIENT};
+use crate::prelude::{TIER_OVERRIDE, UNIFORM_VAR, uniform_members};
+use naga::Literal;
+use serde_json::{Value, json};
+use std::collections::BTreeMap;
+use weft_front::model::{Material, Param, ParamValue};
+use weft_front::samples;
+use weft_front::scene::model::{ResolvedInstance, SceneFeatures};
+use weft_meta::{KeywordKind, ParamKind};
+
+/// The default texture transform (Unity's `_ST`: scale xy, offset zw).
+const DEFAULT_ST: [f64; 4] = [1.0, 1.0, 0.0, 0.0];
+
+/// The value a uniform member holds for this instance, as uploaded
+/// (colours linear, curves baked), or None for non-uniform parameters.
+fn member_value(p: &Param, v: &ParamValue) -> Option<(ConstValue, Value)> {
+    Some(match (p.kind, v) {
+        (ParamKind::Float, ParamValue::Float(x)) => (ConstValue::F32(vec![*x as f32]), json!(x)),
+        (ParamKind::Int, ParamValue::Int(i)) => {
+            let i = i32::try_from(*i).ok()?;
+            (ConstValue::I32(i), json!(i))
+        }
+        (ParamKind::Bool, ParamValue::Bool(b)) => (ConstValue::U32(u32::from(*b)), json!(u32::from(*b))),
+        (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4, ParamValue::Vector(xs)) => (
+            ConstValue::F32(xs.iter().map(|x| *x as f32).collect()),
+            json!(xs),
+        ),
+        (ParamKind::Color, ParamValue::Vector(xs)) => {
+            let c: Vec<f64> = (0..4)
+                .map(|i| {
+                    let x = xs.get(i).copied().unwrap_or(1.0);
+                    if i < 3 && !p.hdr { samples::srgb_to_linear(x) } else { x }
+                })
+                .collect();
+            (ConstValue::F32(c.iter().map(|x| *x as f32).collect()), json!(c))
+        }
+        (ParamKind::Curve, ParamValue::Curve(keys)) => {
+            let s = samples::sample_curve(keys, p.samples);
+            (ConstValue::F32(Vec::new()), json!(s))
+        }
+        _ => return None,
+    })
+}
+
+/// What one instance folds and what it still uploads.
+pub struct InstanceValues {
+    pub fold: FoldRequest,
+    /// Folded parameter -> its value (as uploaded).
+    pub constants: BTreeMap<String, Value>,
+    /// Every uniform member -> its value (as uploaded); the shader's layout
+    /// says which of them the engine still writes.
+    pub uniform: BTreeMap<String, Value>,
+}
+
+pub fn instance_values(
+    m: &Material,
+    inst: &ResolvedInstance,
+    tier: usize,
+    features: &SceneFeatures,
+) -> InstanceValues {
+    let mut fold = FoldRequest {
+        uniform_var: UNIFORM_VAR.into(),
+        ..Default::default()
+    };
+    fold.overrides
+        .insert(TIER_OVERRIDE.into(), Literal::U32(tier as u32));
+    for (kw, &v) in m.keywords.iter().zip(&inst.keywords) {
+        let x = match kw.kind {
+            KeywordKind::Toggle => Literal::Bool(v == 1),
+            KeywordKind::Enum => Literal::U32(v as u32),
+        };
+        fold.overrides.insert(kw.name.clone(), x);
+    }
+    fold.overrides
+        .insert(FEATURE_ENVIRONMENT.into(), Literal::Bool(features.environment));
+    fold.overrides
+        .insert(FEATURE_SH_AMBIENT.into(), Literal::Bool(features.sh_ambient));
+    fold.overrides.insert(
+        FEATURE_DIRECTIONAL_LIGHTS.into(),
+        Literal::U32(features.directional_lights),
+    );
+
+    let is_dynamic = |i: usize| inst.dynamic.contains(&i);
+    let members = uniform_members(m);
+    let mut constants = BTreeMap::new();
+    let mut uniform = BTreeMap::new();
+    for (i, (p, v)) in m.params.iter().zip(&inst.values).enumerate() {
+        let dynamic = is_dynamic(i);
+        if let Some((c, json)) = member_value(p, v) {
+            uniform.insert(p.name.clone(), json.clone());
+            // Curves are read with a run-time index: they stay data.
+            if !dynamic && p.kind != ParamKind::Curve {
+                fold.members.insert(p.name.clone(), c);
+                constants.insert(p.name.clone(), json);
+            }
+        }
+        if let Some(st) = members.iter().find(|mem| mem.param == p.name && mem.name != p.name) {
+            uniform.insert(st.name.clone(), json!(DEFAULT_ST));
+            if !dynamic {
+                fold.members.insert(
+                    st.name.clone(),
+                    ConstValue::F32(DEFAULT_ST.iter().map(|x| *x as f32).collect()),
+                );
+            }
+        }
+        if let (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) = (p.kind, v)
+            && !dynamic
+        {
+            fold.textures.insert(p.name.clone(), t.sampled(p.srgb));
+            constants.insert(p.name.clone(), json!(t.name()));
+        }
+    }
+    InstanceValues {
+        fold,
+        constants,
+        uniform,
+    }
+}
+
+/// Object -> world, column-major: translate * rotate(Z * Y * X) * scale.
+pub fn model_matrix(t: &weft_front::scene::model::Transform) -> [f32; 16] {
+    let [rx, ry, rz] = t.rotation_degrees.map(f64::to_radians);
+    let (sx, cx) = rx.sin_cos();
+    let (sy, cy) = ry.sin_cos();
+    let (sz, cz) = rz.sin_cos();
+    // Rows of R = Rz * Ry * Rx.
+    let r = [
+        [cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx],
+        [sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx],
+        [-sy, cy * sx, cy * cx],
+    ];
+    let mut m = [0f32; 16];
+    for col in 0..3 {
+        for row in 0..3 {
+            m[col * 4 + row] = (r[row][col] * t.scale[col]) as f32;
+        }
+    }
+    m[12] = t.translation[0] as f32;
+    m[13] = t.translation[1] as f32;
+    m[14] = t.translation[2] as f32;
+    m[15] = 1.0;
+    m
+}

@@ -1,0 +1,120 @@
+//! Folding scene constants into the shipped standard material: what must
+//! disappear (uniform members, default textures, dead lobes) and what must stay.
+
+use std::path::Path;
+use weft_compiler::scene::fold::{FoldRequest, fold};
+use weft_compiler::scene::instance::instance_values;
+use weft_compiler::{backends, compose, prelude};
+use weft_front::model::ParamValue;
+use weft_front::scene::model::{
+    BuiltinMesh, ResolvedInstance, SceneFeatures, TierChoice, Transform,
+};
+use weft_front::{Diagnostics, SourceDb};
+
+fn load(name: &str) -> (weft_front::Material, naga::Module, prelude::Prelude) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials");
+    let mut db = SourceDb::new();
+    let mut diags = Diagnostics::new();
+    let m = weft_front::load_material(&root.join(format!("{name}/{name}.toml")), &root, &mut db, &mut diags)
+        .unwrap_or_else(|| panic!("{}", diags.render_plain(&db)));
+    let prelude = prelude::generate(&m);
+    let composed = compose::compose(&m, &prelude, &mut db);
+    let (module, _) = compose::parse_and_validate(&composed, &m, &mut diags).expect("valid");
+    (m, module, prelude)
+}
+
+fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
+    ResolvedInstance {
+        name: "test".into(),
+        material: 0,
+        preset: None,
+        tier: TierChoice::Fixed(m.tiers.default),
+        keywords: m.keywords.iter().map(|k| k.default).collect(),
+        values: m.params.iter().map(|p| p.default.clone()).collect(),
+        dynamic: dynamic
+            .iter()
+            .map(|d| m.params.iter().position(|p| p.name == *d).expect("param"))
+            .collect(),
+        dynamic_spans: Vec::new(),
+        mesh: BuiltinMesh::Sphere,
+        vertex_inputs: Vec::new(),
+        vertex_inputs_span: 0..0,
+        transform: Transform::default(),
+        span: 0..0,
+        tier_span: 0..0,
+    }
+}
+
+fn folded_wgsl(module: &naga::Module, request: &FoldRequest) -> (naga::Module, String) {
+    let folded = fold(module, request).expect("folds").module;
+    let info = compose::validator().validate(&folded).expect("folded module validates");
+    let wgsl = backends::emit_wgsl(&folded, &info).expect("emits");
+    (folded, wgsl)
+}
+
+#[test]
+fn all_constant_standard_loses_its_uniform_and_default_textures() {
+    let (m, module, _) = load("standard");
+    let inst = instance(&m, &[]);
+    let values = instance_values(&m, &inst, inst.keywords.len(), &SceneFeatures::default());
+    let (folded, wgsl) = folded_wgsl(&module, &values.fold);
+    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
+    assert!(!names.contains(&"material".to_string()), "uniform still bound: {names:?}");
+    assert!(!names.contains(&"base_map".to_string()), "default base map still sampled");
+    assert!(!names.contains(&"rmo_map".to_string()), "default rmo map still sampled");
+    assert!(!wgsl.contains("override"), "scene shaders keep no overrides:\n{wgsl}");
+    // The environment is provided: its cube stays.
+    assert!(names.contains(&"weft_environment".to_string()));
+}
+
+#[test]
+fn dynamic_parameters_stay_in_a_shrunk_uniform() {
+    let (m, module, _) = load("standard");
+    let inst = instance(&m, &["roughness", "base_color"]);
+    let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
+    let (folded, _) = folded_wgsl(&module, &values.fold);
+    let layout = weft_compiler::reflect::material_uniform(&folded).expect("uniform kept");
+    let members: Vec<_> = layout.members.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(members, ["base_color", "roughness"]);
+    assert_eq!(layout.members[0].offset, 0);
+    assert_eq!(layout.members[1].offset, 16);
+    assert_eq!(layout.size, 32);
+}
+
+#[test]
+fn absent_engine_features_remove_their_bindings() {
+    let (m, module, _) = load("standard");
+    let inst = instance(&m, &[]);
+    let features = SceneFeatures {
+        environment: false,
+        sh_ambient: true,
+        directional_lights: 1,
+    };
+    let values = instance_values(&m, &inst, m.tiers.default, &features);
+    let (folded, _) = folded_wgsl(&module, &values.fold);
+    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
+    assert!(!names.contains(&"weft_environment".to_string()), "{names:?}");
+}
+
+#[test]
+fn a_non_default_texture_value_folds_to_its_texel() {
+    let (m, module, _) = load("standard");
+    let mut inst = instance(&m, &[]);
+    let i = m.params.iter().position(|p| p.name == "base_map").expect("base_map");
+    inst.values[i] = ParamValue::Texture(weft_meta::TextureDefault::Gray);
+    let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
+    let texel = values.fold.textures["base_map"];
+    // sRGB-decoded 128/255.
+    assert!((texel[0] - 0.2158605).abs() < 1e-5, "{texel:?}");
+    assert_eq!(texel[3], 1.0);
+}
+
+#[test]
+#[ignore]
+fn dump_folded_standard() {
+    let (m, module, _) = load("standard");
+    let inst = instance(&m, &["base_color"]);
+    let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
+    let (_, wgsl) = folded_wgsl(&module, &values.fold);
+    std::fs::write("/tmp/folded_standard.wgsl", wgsl).unwrap();
+}

@@ -1,0 +1,193 @@
+//! The scene manifest model: what `scenes/<name>.scene.toml` asks for.
+//!
+//! Two stages, data flowing one way:
+//! - [`SceneManifest`] is the file as written (parsed and locally checked by
+//!   `scene::parse`), spans kept for every value a later check may reject
+//!   (parameter values are typed by `resolve` straight from the TOML tree);
+//! - [`ResolvedScene`] is the manifest checked against the materials it names
+//!   (`scene::resolve`): every instance has one static variant, a full set of
+//!   parameter values and its `dynamic` list. The compiler only ever sees this.
+
+use crate::diag::{FileId, Span};
+use crate::model::{ParamValue, VertexAttribute};
+use std::path::PathBuf;
+
+/// Built-in meshes the runtime and the tests can draw an instance on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum BuiltinMesh {
+    Sphere,
+    Cloth,
+    Swatch,
+}
+
+impl BuiltinMesh {
+    pub const ALL: [BuiltinMesh; 3] = [BuiltinMesh::Sphere, BuiltinMesh::Cloth, BuiltinMesh::Swatch];
+    pub fn name(self) -> &'static str {
+        match self {
+            BuiltinMesh::Sphere => "sphere",
+            BuiltinMesh::Cloth => "cloth",
+            BuiltinMesh::Swatch => "swatch",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<BuiltinMesh> {
+        Self::ALL.into_iter().find(|m| m.name() == s)
+    }
+}
+
+/// What the scene's renderer provides to every material (engine features).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SceneFeatures {
+    /// The prefiltered environment cube (specular image-based lighting).
+    pub environment: bool,
+    /// L2 spherical-harmonic ambient (diffuse image-based lighting).
+    pub sh_ambient: bool,
+    /// Directional lights; engine interface v1 has one slot, so 0 or 1.
+    pub directional_lights: u32,
+}
+
+impl Default for SceneFeatures {
+    fn default() -> Self {
+        SceneFeatures {
+            environment: true,
+            sh_ambient: true,
+            directional_lights: 1,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    pub position: [f64; 3],
+    pub target: [f64; 3],
+    pub fov_degrees: f64,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            position: [0.0, 0.0, 3.0],
+            target: [0.0, 0.0, 0.0],
+            fov_degrees: 35.0,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Transform {
+    pub translation: [f64; 3],
+    /// Euler angles in degrees, applied X, then Y, then Z (R = Rz * Ry * Rx).
+    pub rotation_degrees: [f64; 3],
+    pub scale: [f64; 3],
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Transform {
+            translation: [0.0; 3],
+            rotation_degrees: [0.0; 3],
+            scale: [1.0; 3],
+        }
+    }
+}
+
+/// A value with the span it was written at.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spanned<T> {
+    pub value: T,
+    pub span: Span,
+}
+
+/// The tier an instance asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TierRequest {
+    /// The material's default tier (no `tier` key).
+    Default,
+    Named(String),
+    /// `tier = "auto"`: the cheapest tier whose FLIP mean against the
+    /// reference tier stays within `error_budget` at `screen_size` pixels.
+    Auto { error_budget: f64, screen_size: u32 },
+}
+
+/// One `[[instances]]` entry as written.
+#[derive(Clone, Debug)]
+pub struct InstanceDecl {
+    pub name: String,
+    /// The whole `[[instances]]` table.
+    pub span: Span,
+    pub name_span: Span,
+    pub material: Spanned<String>,
+    pub preset: Option<Spanned<String>>,
+    pub tier: Spanned<TierRequest>,
+    /// keyword name -> value name (`true`/`false` read as `on`/`off`), in file order.
+    pub keywords: Vec<(Spanned<String>, Spanned<String>)>,
+    /// The `params` values are not kept here: `scene::resolve` types them
+    /// against the material from the TOML tree (`scene::parse::WrittenParam`)
+    /// and the result is [`ResolvedInstance::values`].
+    pub dynamic: Vec<Spanned<String>>,
+    pub mesh: Spanned<BuiltinMesh>,
+    /// The mesh's vertex inputs when they differ from the scene's.
+    pub vertex_inputs: Option<Spanned<Vec<VertexAttribute>>>,
+    pub transform: Transform,
+}
+
+/// `scenes/<name>.scene.toml` as written.
+#[derive(Clone, Debug)]
+pub struct SceneManifest {
+    pub name: String,
+    pub description: Option<String>,
+    pub file: FileId,
+    pub path: PathBuf,
+    /// The materials root the instances' materials are looked up in.
+    pub materials_root: PathBuf,
+    pub features: SceneFeatures,
+    /// Span of the `[scene]` table (features are reported there).
+    pub scene_span: Span,
+    pub vertex_inputs: Spanned<Vec<VertexAttribute>>,
+    pub camera: Camera,
+    /// Fails the build when the scene needs more unique shaders.
+    pub max_shaders: Option<Spanned<usize>>,
+    pub instances: Vec<InstanceDecl>,
+}
+
+/// How an instance's tier was chosen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TierChoice {
+    /// Written (or the material's default).
+    Fixed(usize),
+    /// `auto`: chosen by the build from measurements.
+    Auto { error_budget: f64, screen_size: u32 },
+}
+
+/// One instance checked against its material.
+#[derive(Clone, Debug)]
+pub struct ResolvedInstance {
+    pub name: String,
+    /// Index into [`ResolvedScene::materials`].
+    pub material: usize,
+    pub preset: Option<String>,
+    pub tier: TierChoice,
+    /// Value index of every keyword of the material (static and constant mode), in declaration order.
+    pub keywords: Vec<usize>,
+    /// Every parameter of the material, in declaration order: default, then
+    /// preset, then the instance's own value.
+    pub values: Vec<ParamValue>,
+    /// Parameters the engine still sets at run time (indices into the material's params).
+    pub dynamic: Vec<usize>,
+    pub dynamic_spans: Vec<Span>,
+    pub mesh: BuiltinMesh,
+    pub vertex_inputs: Vec<VertexAttribute>,
+    /// Where the mesh's inputs are declared (scene or instance), for the compiler's check.
+    pub vertex_inputs_span: Span,
+    pub transform: Transform,
+    /// The `[[instances]]` table, for diagnostics the compiler raises.
+    pub span: Span,
+    pub tier_span: Span,
+}
+
+/// A scene whose every instance resolves to a variant its material can build.
+#[derive(Clone, Debug)]
+pub struct ResolvedScene {
+    pub manifest: SceneManifest,
+    pub materials: Vec<crate::model::Material>,
+    pub instances: Vec<ResolvedInstance>,
+}

@@ -1,0 +1,166 @@
+//! Scene metadata: `<scene>.scene.json`, what an engine reads to draw a scene
+//! built by `weft build --scene`.
+//!
+//! A scene build compiles one shader per distinct specialised instance
+//! (instances that specialise to the same module share it). Each instance
+//! names its shader, the values folded into it, the `dynamic` parameters it
+//! still reads from its (shrunk) material uniform, the textures to bind, its
+//! passes, mesh and transform. Nothing here needs the material metadata.
+
+use crate::{Pass, TextureDefault, VariantShader};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// Version of the scene metadata layout.
+pub const SCENE_SCHEMA_VERSION: u32 = 1;
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneMetadata {
+    pub schema_version: u32,
+    pub engine_interface_version: u32,
+    pub name: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    /// Hash of every input (scene file, materials, toolchain version).
+    pub inputs_hash: String,
+    /// Engine features the scene provides; shaders were specialised for exactly these.
+    pub features: SceneFeatures,
+    /// Camera for previews and tests.
+    pub camera: SceneCamera,
+    /// Unique specialised shaders, in first-use order.
+    pub shaders: Vec<SceneShader>,
+    /// Instances in manifest order (draw them by pass queue, then this order).
+    pub instances: Vec<SceneInstance>,
+}
+
+/// The engine features a scene provides. Engine interface v1: group 0 is
+/// always bound in full; a feature that is off is never read by the scene's shaders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFeatures {
+    /// Prefiltered environment cube (specular image-based lighting).
+    pub environment: bool,
+    /// L2 spherical-harmonic ambient (diffuse image-based lighting).
+    pub sh_ambient: bool,
+    /// Directional lights (0 or 1 in engine interface v1).
+    pub directional_lights: u32,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneCamera {
+    pub position: [f64; 3],
+    pub target: [f64; 3],
+    pub fov_degrees: f64,
+}
+
+/// One specialised shader.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneShader {
+    /// `<material>.<first 12 hex digits of the WGSL's SHA-256>`; also the file stem.
+    pub id: String,
+    pub material: String,
+    /// The library variant this shader specialises (tier and keywords).
+    pub variant: String,
+    /// Files, entry points, bindings, the shrunk material uniform, vertex inputs.
+    pub shader: VariantShader,
+}
+
+/// One drawable instance.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneInstance {
+    pub name: String,
+    pub material: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preset: Option<String>,
+    /// The tier built (after `auto` was decided).
+    pub tier: String,
+    /// Every keyword's value (static and constant mode).
+    pub keywords: BTreeMap<String, String>,
+    /// The library variant id with the same tier and static keywords (the
+    /// generic shader this instance specialises).
+    pub variant: String,
+    /// Id of the entry of [`SceneMetadata::shaders`] to draw with.
+    pub shader: String,
+    /// Parameter values folded into the shader as literals (as uploaded:
+    /// colours linear), by parameter name. Curves and gradients are never
+    /// folded: they stay in the uniform / ramp texture and are listed in `uniform_values`.
+    pub constants: BTreeMap<String, serde_json::Value>,
+    /// Parameters the engine may still change at run time, in manifest order.
+    pub dynamic: Vec<String>,
+    /// Initial bytes of the material uniform by member: what to upload at
+    /// the shader's `material_uniform` offsets (colours linear; curves as
+    /// their baked samples; booleans as 0/1).
+    pub uniform_values: BTreeMap<String, serde_json::Value>,
+    /// Material textures still bound, by binding name.
+    pub textures: BTreeMap<String, SceneTexture>,
+    /// Passes with their render state, in the material's order.
+    pub passes: Vec<Pass>,
+    pub mesh: String,
+    pub transform: SceneTransform,
+    /// How `tier = "auto"` was decided.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tier_choice: Option<TierChoice>,
+}
+
+/// A texture to bind for a material texture binding.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneTexture {
+    pub parameter: String,
+    /// A built-in 1x1 texture (the parameter's default, read at run time
+    /// because the parameter is `dynamic`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub builtin: Option<TextureDefault>,
+    /// For gradients: the baked ramp, RGBA8 sRGB-encoded, row-major (`width` x 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ramp_rgba8: Option<Vec<u8>>,
+    /// sRGB-encoded texels (sample through an sRGB view).
+    pub srgb: bool,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneTransform {
+    pub translation: [f64; 3],
+    /// Degrees, applied X then Y then Z.
+    pub rotation_degrees: [f64; 3],
+    pub scale: [f64; 3],
+    /// Object -> world, column-major (the engine interface's `weft_object.model`).
+    pub model: [f32; 16],
+}
+
+/// The record of an automatic tier choice.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TierChoice {
+    pub error_budget: f64,
+    pub screen_size: u32,
+    /// Where the costs came from: `lavapipe timing` or the `--tier-costs` file.
+    pub cost_source: String,
+    /// Every candidate tier with its figures, cheapest first.
+    pub candidates: Vec<TierCandidate>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TierCandidate {
+    pub tier: String,
+    /// Cost relative to the cheapest candidate's (or as supplied).
+    pub cost: f64,
+    /// FLIP mean against the reference tier at the instance's values, mesh and screen size.
+    pub flip_mean: f64,
+    pub within_budget: bool,
+}
+
+/// The JSON Schema of [`SceneMetadata`], pretty-printed.
+pub fn scene_metadata_json_schema() -> String {
+    let schema = schemars::schema_for!(SceneMetadata);
+    let mut s = serde_json::to_string_pretty(&schema).expect("schema serialises");
+    s.push('\n');
+    s
+}
