@@ -22,3 +22,4 @@ pub mod specialise;
 pub mod variant;
 
 pub use library::{BuildOptions, BuildOutput, build_library, build_materials, compile_material};
+pub use scene::{SceneBuildOptions, SceneOutput, build_scene};

@@ -1,0 +1,55 @@
+//! `weft build --scene`: one scene's shaders, specialised per instance, and
+//! its `<scene>.scene.json`, written atomically (nothing on error).
+
+use crate::{Color, report};
+use std::path::{Path, PathBuf};
+use weft_compiler::{SceneBuildOptions, output};
+
+/// Builds the scene and writes it into `out` (which then holds `<scene>/`).
+pub fn build_scene_command(
+    scene: &Path,
+    out: &Path,
+    tier_costs: Option<&PathBuf>,
+    quiet: bool,
+    color: Color,
+) -> bool {
+    let started = std::time::Instant::now();
+    let chooser = match weft_golden::auto_tier::LavapipeTierChooser::new(tier_costs.map(PathBuf::as_path)) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return false;
+        }
+    };
+    let options = SceneBuildOptions {
+        tier_chooser: Some(&chooser),
+    };
+    let result = match weft_compiler::build_scene(scene, &options) {
+        Ok(r) => r,
+        Err((db, diags)) => {
+            report(&db, &diags, color);
+            return false;
+        }
+    };
+    if let Err(e) = output::write_atomically(out, &result.files, &[]) {
+        eprintln!("error: cannot write `{}`: {e}", out.display());
+        return false;
+    }
+    if !quiet {
+        for inst in &result.metadata.instances {
+            if let Some(choice) = &inst.tier_choice {
+                println!("{}", weft_golden::auto_tier::describe_choice(&inst.name, &inst.tier, choice));
+            }
+        }
+        println!(
+            "built scene `{}`: {} instance(s), {} shader(s), {} file(s) into {} in {:.2}s",
+            result.name,
+            result.metadata.instances.len(),
+            result.metadata.shaders.len(),
+            result.files.len(),
+            out.join(&result.name).display(),
+            started.elapsed().as_secs_f64()
+        );
+    }
+    true
+}
