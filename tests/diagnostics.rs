@@ -7,6 +7,13 @@
 //! Cargo runs integration tests with the package folder (`tests/`) as the
 //! working directory, so file names in diagnostics are relative and stable.
 
+#[path = "support/docs.rs"]
+mod docs;
+#[path = "support/schema.rs"]
+mod schema;
+
+use docs::doc_block;
+use schema::{assert_schema_directive, enum_values, property_names, resolve, sorted};
 use std::path::{Path, PathBuf};
 use weft_compiler::{BuildOptions, build_materials};
 use weft_front::{Diagnostics, SourceDb};
@@ -211,24 +218,6 @@ fn prelude_text(path: &str) -> String {
     p.lines.iter().map(|(l, _)| format!("{l}\n")).collect()
 }
 
-/// Text between `<!-- begin NAME -->` and `<!-- end NAME -->`, inside its code fence.
-fn doc_block(doc: &str, name: &str) -> String {
-    let begin = format!("<!-- begin {name} -->");
-    let end = format!("<!-- end {name} -->");
-    let start = doc.find(&begin).unwrap_or_else(|| panic!("no {begin}")) + begin.len();
-    let stop = doc[start..]
-        .find(&end)
-        .unwrap_or_else(|| panic!("no {end}"))
-        + start;
-    let block = doc[start..stop].trim();
-    let block = block
-        .strip_prefix("```wgsl")
-        .or_else(|| block.strip_prefix("```toml"))
-        .expect("fenced block");
-    let block = block.strip_suffix("```").expect("closing fence");
-    block.trim_start_matches('\n').to_string()
-}
-
 /// The prelude shown in docs/material-format.md is the one the toolchain generates.
 #[test]
 fn documented_prelude_is_current() {
@@ -257,49 +246,7 @@ fn documented_prelude_is_current() {
 // ------------------------------------------------------------ editor schema
 
 fn schema() -> serde_json::Value {
-    let text = std::fs::read_to_string("../schemas/material.schema.json")
-        .expect("schemas/material.schema.json");
-    serde_json::from_str(&text).expect("schema is JSON")
-}
-
-/// Resolves `{"$ref": "#/definitions/x"}`.
-fn resolve<'a>(schema: &'a serde_json::Value, v: &'a serde_json::Value) -> &'a serde_json::Value {
-    match v.get("$ref").and_then(|r| r.as_str()) {
-        Some(r) => {
-            let pointer = r.strip_prefix('#').expect("local $ref");
-            resolve(
-                schema,
-                schema
-                    .pointer(pointer)
-                    .unwrap_or_else(|| panic!("dangling {r}")),
-            )
-        }
-        None => v,
-    }
-}
-
-fn property_names(schema: &serde_json::Value, v: &serde_json::Value, what: &str) -> Vec<String> {
-    let v = resolve(schema, v);
-    assert_eq!(
-        v.get("additionalProperties"),
-        Some(&serde_json::Value::Bool(false)),
-        "{what}: additionalProperties must be false"
-    );
-    let mut names: Vec<String> = v
-        .get("properties")
-        .and_then(|p| p.as_object())
-        .unwrap_or_else(|| panic!("{what}: no properties"))
-        .keys()
-        .cloned()
-        .collect();
-    names.sort();
-    names
-}
-
-fn sorted(keys: &[&str]) -> Vec<String> {
-    let mut v: Vec<String> = keys.iter().map(|s| s.to_string()).collect();
-    v.sort();
-    v
+    schema::load("../schemas/material.schema.json")
 }
 
 /// For each table, the schema's property names are the parser's key list.
@@ -371,40 +318,33 @@ fn schema_matches_parser_keys() {
     );
 
     // Enumerated values match the model's.
-    let type_enum: Vec<String> = resolve(&s, &prop(&param, "type"))["enum"]
-        .as_array()
-        .expect("type enum")
-        .iter()
-        .map(|v| v.as_str().expect("string").to_string())
-        .collect();
     let kinds: Vec<String> = weft_meta::ParamKind::ALL
         .iter()
         .map(|k| k.name().to_string())
         .collect();
-    assert_eq!(type_enum, kinds);
-    let tex: Vec<String> = defs["texture_default"]["enum"]
-        .as_array()
-        .expect("texture enum")
-        .iter()
-        .map(|v| v.as_str().expect("string").to_string())
-        .collect();
+    assert_eq!(
+        enum_values(resolve(&s, &prop(&param, "type")), "type"),
+        kinds
+    );
     let builtin: Vec<String> = weft_meta::TextureDefault::ALL
         .iter()
         .map(|d| d.name().to_string())
         .collect();
-    assert_eq!(tex, builtin);
-    let requires: Vec<String> =
-        resolve(&s, &prop(&prop(top, "material"), "requires"))["items"]["enum"]
-            .as_array()
-            .expect("requires enum")
-            .iter()
-            .map(|v| v.as_str().expect("string").to_string())
-            .collect();
+    assert_eq!(
+        enum_values(&defs["texture_default"], "texture_default"),
+        builtin
+    );
     let attrs: Vec<String> = weft_front::model::VertexAttribute::ALL
         .iter()
         .map(|a| a.name().to_string())
         .collect();
-    assert_eq!(requires, attrs);
+    assert_eq!(
+        enum_values(
+            &resolve(&s, &prop(&prop(top, "material"), "requires"))["items"],
+            "requires"
+        ),
+        attrs
+    );
 }
 
 /// Every material file in the repository parses with the schema directive on its first line.
@@ -415,20 +355,6 @@ fn schema_directive_is_accepted() {
         EXAMPLE,
         "diagnostics/materials/ok/ok.toml",
     ] {
-        let text = std::fs::read_to_string(path).expect("material file");
-        let first = text.lines().next().unwrap_or_default();
-        assert!(
-            first.starts_with("#:schema "),
-            "{path}: first line is not a #:schema directive"
-        );
-        let target = Path::new(path)
-            .parent()
-            .expect("dir")
-            .join(first.trim_start_matches("#:schema ").trim());
-        assert!(
-            target.is_file(),
-            "{path}: schema directive points at {}",
-            target.display()
-        );
+        assert_schema_directive(path);
     }
 }

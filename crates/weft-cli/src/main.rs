@@ -11,6 +11,7 @@ use weft_meta::MaterialMetadata;
 
 mod bench;
 mod preview;
+mod scene_build;
 mod stability;
 
 use bench::{BENCH_EXAMPLES, BenchArgs, bench, print_measurements};
@@ -40,7 +41,7 @@ struct Cli {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
-enum Color {
+pub(crate) enum Color {
     Auto,
     Always,
     Never,
@@ -50,7 +51,7 @@ enum Color {
 enum Command {
     /// Compile materials (folders or .toml files) into an output folder, atomically.
     #[command(
-        after_help = "Examples:\n  weft build\n  weft build materials -o generated --jobs 2\n  weft build materials/standard/standard.toml -o /tmp/out --force"
+        after_help = "Examples:\n  weft build\n  weft build materials -o generated --jobs 2\n  weft build materials/standard/standard.toml -o /tmp/out --force\n  weft build --scene scenes/fitting_room.scene.toml -o out"
     )]
     Build {
         /// A materials folder (with lib/ and one folder per material) or material .toml files.
@@ -65,6 +66,14 @@ enum Command {
         /// Recompile materials whose inputs are unchanged instead of reusing their files.
         #[arg(long)]
         force: bool,
+        /// Build exactly the shaders this scene manifest needs (`scenes/<name>.scene.toml`),
+        /// each specialised for its instance, into `<out>/<scene>/`.
+        #[arg(long, conflicts_with = "paths")]
+        scene: Option<PathBuf>,
+        /// With --scene: per-tier costs measured on your own GPU (JSON, see docs/scenes.md)
+        /// for `tier = "auto"` instead of the committed lavapipe bench figures.
+        #[arg(long, requires = "scene")]
+        tier_costs: Option<PathBuf>,
     },
     /// Report diagnostics only; writes nothing. Exit status 1 on any error.
     #[command(
@@ -107,7 +116,7 @@ fn color_choice(c: Color) -> ColorChoice {
     }
 }
 
-fn report(db: &SourceDb, diags: &Diagnostics, color: Color) {
+pub(crate) fn report(db: &SourceDb, diags: &Diagnostics, color: Color) {
     let mut stderr = StandardStream::stderr(color_choice(color));
     diags.emit(db, &mut stderr);
     let n = diags.error_count();
@@ -181,10 +190,23 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Build {
+            scene: Some(scene),
+            out,
+            tier_costs,
+            ..
+        } => {
+            if scene_build::build_scene_command(&scene, &out, tier_costs.as_ref(), cli.quiet, cli.color) {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::FAILURE
+            }
+        }
+        Command::Build {
             paths,
             out,
             jobs,
             force,
+            ..
         } => {
             let started = std::time::Instant::now();
             let options = BuildOptions {
@@ -193,6 +215,9 @@ fn main() -> ExitCode {
             };
             match build(&paths, &options, cli.quiet) {
                 Ok(result) => {
+                    if let Some((db, warnings)) = &result.warnings {
+                        report(db, warnings, cli.color);
+                    }
                     if let Err(e) = output::write_atomically(&out, &result.files, PRESERVED) {
                         eprintln!("error: cannot write `{}`: {e}", out.display());
                         return ExitCode::FAILURE;
@@ -222,6 +247,9 @@ fn main() -> ExitCode {
         }
         Command::Check { paths } => match build(&paths, &BuildOptions::default(), cli.quiet) {
             Ok(result) => {
+                if let Some((db, warnings)) = &result.warnings {
+                    report(db, warnings, cli.color);
+                }
                 if !cli.quiet {
                     println!(
                         "ok: {} material(s), {} variant(s)",

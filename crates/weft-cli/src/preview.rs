@@ -1,8 +1,8 @@
-//! `weft preview`: render one material variant to a PNG.
+//! `weft preview`: render one material variant, or a whole scene, to a PNG.
 
 use crate::{Color, build, report};
 use clap::ValueEnum;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use weft_compiler::{BuildOptions, output};
 
 pub(crate) const PREVIEW_EXAMPLES: &str = "Examples:
@@ -12,16 +12,30 @@ pub(crate) const PREVIEW_EXAMPLES: &str = "Examples:
   weft preview generated/standard/standard.meta.json -o p.png --variant fast.normal_map-off.sphere_map-add
   weft preview materials/standard/standard.toml -o p.png --set base_color=0.9,0.2,0.1 --set roughness=0.2
   weft preview materials/standard/standard.toml -o p.png --size 512x384 --light-dir -1,1,0.5 --tonemap neutral --hdr-out p.pfm
+  weft preview --scene-file scenes/fitting_room.scene.toml -o room.png --width 640 --height 400
+  weft preview --scene-dir generated/scenes/swatch_book -o book.png --spirv
+  weft preview --scene-dir generated/scenes/swatch_book -o generic.png --library generated
 
 The scene has a directional light (direction towards the light, also the sky's sun) and a procedural
 sky: prefiltered cube, L2 SH irradiance and the baked split-sum LUT. Colours given with --set are
-as edited (sRGB unless the parameter is an HDR colour). Needs a Vulkan driver: on Debian/Ubuntu
-`apt-get install mesa-vulkan-drivers`.";
+as edited (sRGB unless the parameter is an HDR colour). A scene is drawn whole from its built
+`.scene.json` (--scene-file builds the manifest into a temporary folder first), every instance with its
+specialised shader, or with the library's generic variants (--library). Needs a Vulkan driver: on
+Debian/Ubuntu `apt-get install mesa-vulkan-drivers`.";
+
+/// What a scene preview does not take: a material and its options.
+const NOT_WITH_A_SCENE: [&str; 7] = [
+    "path", "variant", "tier", "keywords", "sets", "preset", "scene",
+];
 
 #[derive(clap::Args)]
 pub(crate) struct PreviewArgs {
     /// A material .toml (built in memory into a temporary folder) or a generated .meta.json.
-    path: PathBuf,
+    #[arg(required_unless_present_any = ["scene_file", "scene_dir"])]
+    path: Option<PathBuf>,
+    // Boxed: keeps `Command` (main.rs) small.
+    #[command(flatten)]
+    scene_mode: Box<SceneArgs>,
     /// Output PNG (tone-mapped sRGB8).
     #[arg(long, short, default_value = "preview.png")]
     out: PathBuf,
@@ -46,6 +60,12 @@ pub(crate) struct PreviewArgs {
     /// Image size, WxH.
     #[arg(long, default_value = "256x256", value_name = "WxH")]
     size: String,
+    /// Image width (with --height; instead of --size).
+    #[arg(long, requires = "height", conflicts_with = "size")]
+    width: Option<u32>,
+    /// Image height (with --width).
+    #[arg(long, requires = "width", conflicts_with = "size")]
+    height: Option<u32>,
     /// Direction towards the light, x,y,z (world +Y up, camera on +Z).
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     light_dir: Option<String>,
@@ -61,12 +81,32 @@ pub(crate) struct PreviewArgs {
     /// Draw from the WGSL or the SPIR-V file of the variant.
     #[arg(long, value_enum, default_value_t = ShaderArg::Wgsl)]
     shader: ShaderArg,
+    /// Draw from the SPIR-V files (same as --shader spirv).
+    #[arg(long, conflicts_with = "shader")]
+    spirv: bool,
     /// Render into an Rgba32Float target instead of Rgba16Float.
     #[arg(long)]
     f32: bool,
     /// Print the Vulkan adapter's details (name, vendor/device ids, driver, type).
     #[arg(long)]
     adapter_info: bool,
+}
+
+/// The scene mode of `weft preview`.
+#[derive(clap::Args)]
+#[command(group = clap::ArgGroup::new("scene_source").args(["scene_file", "scene_dir"]))]
+struct SceneArgs {
+    /// A scene manifest (`scenes/<name>.scene.toml`): built into a temporary folder and drawn whole.
+    #[arg(long, value_name = "FILE", conflicts_with = "scene_dir", conflicts_with_all = NOT_WITH_A_SCENE)]
+    scene_file: Option<PathBuf>,
+    /// An already built scene: the folder holding `<scene>.scene.json`, that file, or the output
+    /// folder of `weft build --scene` (holding one `<scene>/`).
+    #[arg(long, value_name = "DIR", conflicts_with_all = NOT_WITH_A_SCENE)]
+    scene_dir: Option<PathBuf>,
+    /// With a scene: draw every instance with the generic library variant from this generated
+    /// folder (its values set as parameters) instead of the specialised shaders.
+    #[arg(long, value_name = "GENERATED", requires = "scene_source")]
+    library: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -97,28 +137,16 @@ fn split_pair(s: &str, flag: &str) -> Result<(String, String), String> {
 }
 
 pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), String> {
+    if args.scene_mode.scene_file.is_some() || args.scene_mode.scene_dir.is_some() {
+        return preview_scene(args, quiet, color);
+    }
     use weft_render::*;
     let started = std::time::Instant::now();
-    let (w, h) = args
-        .size
-        .split_once(['x', 'X'])
-        .and_then(|(w, h)| Some((w.trim().parse::<u32>().ok()?, h.trim().parse::<u32>().ok()?)))
-        .filter(|&(w, h)| w > 0 && h > 0)
-        .ok_or_else(|| format!("--size expects WxH, e.g. 256x256, got `{}`", args.size))?;
-    let light_direction = match &args.light_dir {
-        Some(s) => {
-            let v: Vec<f32> = s
-                .split(',')
-                .map(|x| x.trim().parse::<f32>())
-                .collect::<std::result::Result<_, _>>()
-                .map_err(|_| format!("--light-dir expects x,y,z, got `{s}`"))?;
-            match v[..] {
-                [x, y, z] if x * x + y * y + z * z > 0.0 => Some([x, y, z]),
-                _ => return Err(format!("--light-dir expects a non-zero x,y,z, got `{s}`")),
-            }
-        }
-        None => None,
-    };
+    let path = args
+        .path
+        .as_ref()
+        .ok_or("give a material, --scene-file or --scene-dir")?;
+    let options = preview_options(args)?;
     let mut mopts = MaterialOptions {
         preset: args.preset.clone(),
         variant: args.variant.clone(),
@@ -134,17 +162,13 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
 
     // A .toml is compiled into a temporary folder; a .meta.json is used as is.
     let _tmp;
-    let meta_path = if args.path.extension().is_some_and(|e| e == "toml") {
-        let result = build(
-            std::slice::from_ref(&args.path),
-            &BuildOptions::default(),
-            true,
-        );
+    let meta_path = if path.extension().is_some_and(|e| e == "toml") {
+        let result = build(std::slice::from_ref(path), &BuildOptions::default(), true);
         let out = match result {
             Ok(out) => out,
             Err((db, diags)) => {
                 report(&db, &diags, color);
-                return Err(format!("`{}` does not compile", args.path.display()));
+                return Err(format!("`{}` does not compile", path.display()));
             }
         };
         let tmp =
@@ -157,40 +181,97 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
         _tmp = tmp;
         meta
     } else {
-        args.path.clone()
+        path.clone()
     };
     let mut material = Material::load(&meta_path).map_err(|e| e.to_string())?;
     mopts.apply(&mut material).map_err(|e| e.to_string())?;
     let luts = Luts::for_metadata(&meta_path).map_err(|e| e.to_string())?;
-    let options = PreviewOptions {
+    print_adapter_info(args)?;
+    let (image, adapter) = render_preview(&material, &luts, &options).map_err(|e| e.to_string())?;
+    save(args, &image)?;
+    if !quiet {
+        let variant = material
+            .current_variant()
+            .map(|v| v.requested.id.clone())
+            .unwrap_or_default();
+        println!(
+            "rendered {} variant {variant} ({}, {}x{}) on {adapter} in {:.2}s -> {}{}",
+            material.name(),
+            options.scene.name(),
+            options.width,
+            options.height,
+            started.elapsed().as_secs_f64(),
+            args.out.display(),
+            non_finite_note(&image)
+        );
+    }
+    Ok(())
+}
+
+/// Size, light, format and language from the arguments (both modes).
+fn preview_options(args: &PreviewArgs) -> Result<weft_render::PreviewOptions, String> {
+    use weft_render::*;
+    let (width, height) = match (args.width, args.height) {
+        (Some(w), Some(h)) if w > 0 && h > 0 => (w, h),
+        (Some(_), Some(_)) => return Err("--width and --height must be positive".into()),
+        _ => args
+            .size
+            .split_once(['x', 'X'])
+            .and_then(|(w, h)| Some((w.trim().parse::<u32>().ok()?, h.trim().parse::<u32>().ok()?)))
+            .filter(|&(w, h)| w > 0 && h > 0)
+            .ok_or_else(|| format!("--size expects WxH, e.g. 256x256, got `{}`", args.size))?,
+    };
+    let light_direction = match &args.light_dir {
+        Some(s) => {
+            let v: Vec<f32> = s
+                .split(',')
+                .map(|x| x.trim().parse::<f32>())
+                .collect::<std::result::Result<_, _>>()
+                .map_err(|_| format!("--light-dir expects x,y,z, got `{s}`"))?;
+            match v[..] {
+                [x, y, z] if x * x + y * y + z * z > 0.0 => Some([x, y, z]),
+                _ => return Err(format!("--light-dir expects a non-zero x,y,z, got `{s}`")),
+            }
+        }
+        None => None,
+    };
+    Ok(PreviewOptions {
         scene: match args.scene {
             SceneArg::Sphere => SceneKind::Sphere,
             SceneArg::Cloth => SceneKind::Cloth,
             SceneArg::Swatch => SceneKind::Swatch,
         },
-        width: w,
-        height: h,
+        width,
+        height,
         light_direction,
         format: if args.f32 {
             ColorFormat::Rgba32Float
         } else {
             ColorFormat::Rgba16Float
         },
-        language: match args.shader {
-            ShaderArg::Wgsl => ShaderLanguage::Wgsl,
-            ShaderArg::Spirv => ShaderLanguage::SpirV,
+        language: match (args.spirv, args.shader) {
+            (true, _) | (_, ShaderArg::Spirv) => ShaderLanguage::SpirV,
+            _ => ShaderLanguage::Wgsl,
         },
         ..PreviewOptions::default()
-    };
+    })
+}
+
+fn print_adapter_info(args: &PreviewArgs) -> Result<(), String> {
     if args.adapter_info {
-        let gpu = Gpu::new().map_err(|e| e.to_string())?;
+        let gpu = weft_render::Gpu::new().map_err(|e| e.to_string())?;
         let i = gpu.adapter_info();
         println!(
             "adapter: {}\n  vendor 0x{:04x}, device 0x{:04x}, type {:?}, backend {:?}\n  driver: {} {}",
             i.name, i.vendor, i.device, i.device_type, i.backend, i.driver, i.driver_info
         );
     }
-    let (image, adapter) = render_preview(&material, &luts, &options).map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// Writes the tone-mapped PNG and, when asked, the linear PFM.
+fn save(args: &PreviewArgs, image: &weft_render::HdrImage) -> Result<(), String> {
+    use weft_render::Tonemap;
     let tonemap = match args.tonemap {
         TonemapArg::Aces => Tonemap::Aces,
         TonemapArg::Neutral => Tonemap::Neutral,
@@ -202,24 +283,143 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
     if let Some(p) = &args.hdr_out {
         image.save_pfm(p).map_err(|e| e.to_string())?;
     }
+    Ok(())
+}
+
+fn non_finite_note(image: &weft_render::HdrImage) -> String {
+    match image.non_finite_count() {
+        0 => String::new(),
+        bad => format!(" ({bad} non-finite pixels)"),
+    }
+}
+
+/// `--scene-file` / `--scene-dir`: the whole scene, from its `.scene.json`.
+fn preview_scene(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), String> {
+    use weft_render::*;
+    let started = std::time::Instant::now();
+    let options = preview_options(args)?;
+    // A manifest is built into a temporary folder with the LUTs beside it,
+    // as `weft build` lays a project out; a built scene is read in place.
+    let tmp = tempfile::tempdir().map_err(|e| format!("cannot create a temporary folder: {e}"))?;
+    let scene_json = match (&args.scene_mode.scene_file, &args.scene_mode.scene_dir) {
+        (Some(manifest), _) => build_scene_into(manifest, tmp.path(), color)?,
+        (None, Some(dir)) => find_scene_json(dir)?,
+        (None, None) => return Err("give --scene-file or --scene-dir".into()),
+    };
+    let luts = match Luts::for_scene(&scene_json) {
+        Ok(l) => l,
+        // A scene built on its own (`weft build --scene -o out`) has no LUTs: bake them.
+        Err(_) => {
+            let dir = tmp.path().join("baked");
+            let mut files = std::collections::BTreeMap::new();
+            weft_compiler::library::add_library_files(&mut files, None);
+            output::write_atomically(&dir, &files, &[])
+                .map_err(|e| format!("cannot write `{}`: {e}", dir.display()))?;
+            Luts::load_dir(&dir).map_err(|e| e.to_string())?
+        }
+    };
+    let scene = SceneFile::load(&scene_json).map_err(|e| e.to_string())?;
+    let shaders = match &args.scene_mode.library {
+        Some(generated) => SceneShaders::Library(generated.clone()),
+        None => SceneShaders::Specialised,
+    };
+    print_adapter_info(args)?;
+    let (image, adapter) =
+        render_scene_preview(&scene, &shaders, &luts, &options).map_err(|e| e.to_string())?;
+    save(args, &image)?;
     if !quiet {
-        let variant = material
-            .current_variant()
-            .map(|v| v.requested.id.clone())
-            .unwrap_or_default();
-        let bad = image.non_finite_count();
+        let meta = &scene.metadata;
         println!(
-            "rendered {} variant {variant} ({}, {w}x{h}) on {adapter} in {:.2}s -> {}{}",
-            material.name(),
-            options.scene.name(),
+            "rendered scene {} ({} instance(s), {} {} shader(s), {:?}, {}x{}) on {adapter} in {:.2}s -> {}{}",
+            meta.name,
+            meta.instances.len(),
+            meta.shaders.len(),
+            if args.scene_mode.library.is_some() {
+                "library"
+            } else {
+                "specialised"
+            },
+            options.language,
+            options.width,
+            options.height,
             started.elapsed().as_secs_f64(),
             args.out.display(),
-            if bad > 0 {
-                format!(" ({bad} non-finite pixels)")
-            } else {
-                String::new()
-            }
+            non_finite_note(&image)
         );
     }
     Ok(())
+}
+
+/// Builds the manifest into `out` (scene files under `<scene>/`, LUTs under
+/// `luts/`, reused from the project's `generated/` when it has them) and
+/// returns the `.scene.json`.
+fn build_scene_into(manifest: &Path, out: &Path, color: Color) -> Result<PathBuf, String> {
+    let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)?;
+    let options = weft_compiler::SceneBuildOptions {
+        tier_chooser: Some(&chooser),
+    };
+    let built = match weft_compiler::build_scene(manifest, &options) {
+        Ok(b) => b,
+        Err((db, diags)) => {
+            report(&db, &diags, color);
+            return Err(format!("`{}` does not build", manifest.display()));
+        }
+    };
+    if let Some((db, warnings)) = &built.warnings {
+        report(db, warnings, color);
+    }
+    let mut files = built.files.clone();
+    let project = manifest
+        .parent()
+        .map(|d| d.join("../generated"))
+        .filter(|d| d.is_dir());
+    weft_compiler::library::add_library_files(&mut files, project.as_deref());
+    let dir = out.join("scenes");
+    output::write_atomically(&dir, &files, &[])
+        .map_err(|e| format!("cannot write `{}`: {e}", dir.display()))?;
+    Ok(dir
+        .join(&built.name)
+        .join(format!("{}.scene.json", built.name)))
+}
+
+/// The `.scene.json` of a built scene: the file itself, the scene's folder,
+/// or an output folder holding exactly one scene folder (`<out>/<scene>/`).
+fn find_scene_json(path: &Path) -> Result<PathBuf, String> {
+    if path.is_file() {
+        return Ok(path.to_path_buf());
+    }
+    let listed = |dir: &Path| -> Result<Vec<PathBuf>, String> {
+        let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        paths.sort();
+        Ok(paths)
+    };
+    let is_scene = |p: &Path| p.is_file() && p.to_string_lossy().ends_with(".scene.json");
+    let entries = listed(path)?;
+    let mut found: Vec<PathBuf> = entries.iter().filter(|p| is_scene(p)).cloned().collect();
+    if found.is_empty() {
+        for dir in entries.iter().filter(|p| p.is_dir()) {
+            let name = dir.file_name().unwrap_or_default().to_string_lossy();
+            let json = dir.join(format!("{name}.scene.json"));
+            if is_scene(&json) {
+                found.push(json);
+            }
+        }
+    }
+    match found.len() {
+        1 => Ok(found.remove(0)),
+        0 => Err(format!(
+            "`{}` holds no built scene (`<scene>.scene.json`); build one with `weft build --scene`",
+            path.display()
+        )),
+        _ => Err(format!(
+            "`{}` holds several scenes ({}); name one",
+            path.display(),
+            found
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )),
+    }
 }

@@ -31,6 +31,9 @@ pub fn build_scene_command(
             return false;
         }
     };
+    if let Some((db, warnings)) = &result.warnings {
+        report(db, warnings, color);
+    }
     if let Err(e) = output::write_atomically(out, &result.files, &[]) {
         eprintln!("error: cannot write `{}`: {e}", out.display());
         return false;

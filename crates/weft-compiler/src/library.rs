@@ -50,6 +50,8 @@ pub struct BuildOutput {
     /// Materials whose files were reused unchanged.
     pub reused: Vec<String>,
     pub variant_count: usize,
+    /// Warnings (e.g. parameters no variant reads), with the files they point into.
+    pub warnings: Option<(SourceDb, Diagnostics)>,
 }
 
 /// Material TOML files in a materials folder: `<dir>/<name>/*.toml`, sorted.
@@ -121,6 +123,7 @@ pub fn compile_material(
     if compiled.len() != keys.len() {
         return None;
     }
+    warn_unread_parameters(m, &compiled, diags);
     let aliases = variant::find_aliases(&compiled);
     let mut files = Vec::new();
     let mut variants_meta = Vec::new();
@@ -175,6 +178,30 @@ pub fn compile_material(
         measurements: None,
     };
     Some((meta, files))
+}
+
+/// A parameter that no variant reads does nothing: say so at its declaration.
+fn warn_unread_parameters(m: &Material, compiled: &[CompiledVariant], diags: &mut Diagnostics) {
+    for p in &m.params {
+        if compiled.iter().any(|v| v.shader.reads.contains(&p.name)) {
+            continue;
+        }
+        diags.push(
+            Diagnostic::warning()
+                .with_code("unread-param")
+                .with_message(format!(
+                    "parameter `{}` is read by no variant of `{}`",
+                    p.name, m.name
+                ))
+                .with_labels(vec![
+                    Label::primary(p.decl.file, p.decl.span.clone())
+                        .with_message("changing this value changes nothing"),
+                ])
+                .with_notes(vec![
+                    "use it in the shading code, or remove it from the material".into(),
+                ]),
+        );
+    }
 }
 
 /// Passes name entry points that exist with the right stage; vertex stages
@@ -355,6 +382,9 @@ pub fn build_materials(
     }
     progress(paths.len(), paths.len(), "");
     add_library_files(&mut out.files, options.reuse_from.as_deref());
+    if !diags.is_empty() {
+        out.warnings = Some((db, diags));
+    }
     Ok(out)
 }
 
@@ -383,5 +413,9 @@ pub fn add_library_files(files: &mut BTreeMap<String, Vec<u8>>, reuse_from: Opti
     files.insert(
         "metadata.schema.json".into(),
         weft_meta::metadata_json_schema().into_bytes(),
+    );
+    files.insert(
+        crate::scene::SCENE_METADATA_SCHEMA_PATH.into(),
+        weft_meta::scene::scene_metadata_json_schema().into_bytes(),
     );
 }

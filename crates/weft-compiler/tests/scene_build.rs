@@ -32,3 +32,12 @@ fn dump_swatch_book() {
     let out = build_scene(&scene("swatch_book"), &SceneBuildOptions::default()).ok().unwrap();
     weft_compiler::output::write_atomically(Path::new("/tmp/scene_out"), &out.files, &[]).unwrap();
 }
+
+#[test]
+#[ignore]
+fn dump_scene_from_env() {
+    let p = std::env::var("WEFT_SCENE").unwrap();
+    let out = build_scene(Path::new(&p), &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
+    weft_compiler::output::write_atomically(Path::new("/tmp/scene_out"), &out.files, &[]).unwrap();
+}

@@ -26,8 +26,6 @@ pub struct Sites {
     pub param_group: HashMap<String, Span>,
     /// Keyword name -> its `group` string.
     pub keyword_group: HashMap<String, Span>,
-    /// One per entry of `Material::exclude`: the filter string.
-    pub exclude: Vec<Span>,
     /// (preset, key) -> (span of the key, span of the value).
     pub preset_values: HashMap<(String, String), (Span, Span)>,
     /// One per entry of `Material::passes`: the `instances` value, if written.
@@ -75,7 +73,7 @@ pub fn check_references(m: &mut Material, sites: &Sites, diags: &mut Diagnostics
         span: m.max_variants_span.clone().unwrap_or(m.decl.span.clone()),
     };
     for (i, e) in m.exclude.iter().enumerate() {
-        let loc = at(sites.exclude.get(i), &decl);
+        let loc = at(m.exclude_spans.get(i), &decl);
         for c in e {
             check_condition(m, c, &loc, "exclude", diags);
         }
@@ -322,7 +320,7 @@ fn check_presets(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
                             Label::secondary(p.decl.file, p.decl.span.clone())
                                 .with_message(format!("`{key}` is a {}", p.kind.name())),
                         );
-                        d.notes.push(preset_value_hint(p.kind).into());
+                        d.notes.push(crate::values::how_to_write(p.kind).into());
                     } else if let Some(r) = p.range
                         && nums.iter().any(|x| *x < r[0] || *x > r[1])
                     {
@@ -416,22 +414,6 @@ fn check_presets(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
                 }
             }
         }
-    }
-}
-
-fn preset_value_hint(kind: ParamKind) -> &'static str {
-    match kind {
-        ParamKind::Float => "write a number",
-        ParamKind::Int => "write a whole number",
-        ParamKind::Bool => "write true or false",
-        ParamKind::Vec2 => "write 2 numbers: [x, y]",
-        ParamKind::Vec3 => "write 3 numbers: [x, y, z]",
-        ParamKind::Vec4 => "write 4 numbers: [x, y, z, w]",
-        ParamKind::Color => "write 3 or 4 numbers: [r, g, b] or [r, g, b, a]",
-        ParamKind::Texture2d | ParamKind::Cube => {
-            "write a built-in texture: \"white\", \"black\", \"gray\" or \"normal\""
-        }
-        ParamKind::Curve | ParamKind::Gradient => "presets cannot set curves or gradients",
     }
 }
 

@@ -118,6 +118,16 @@ impl Diagnostics {
         self.list.is_empty()
     }
 
+    /// How many diagnostics there are: a mark for [`Diagnostics::since_mut`].
+    pub fn len(&self) -> usize {
+        self.list.len()
+    }
+
+    /// The diagnostics pushed since `mark`, to add context (labels, notes) to them.
+    pub fn since_mut(&mut self, mark: usize) -> &mut [Diagnostic<FileId>] {
+        self.list.get_mut(mark..).unwrap_or_default()
+    }
+
     pub fn iter(&self) -> impl Iterator<Item = &Diagnostic<FileId>> {
         self.list.iter()
     }
@@ -150,6 +160,29 @@ pub fn did_you_mean<'a>(
         .filter(|(score, _)| *score > 0.8)
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, c)| c)
+}
+
+/// "did you mean `x`?" for the closest of `names`, else `"{list}: a, b, c"`.
+pub fn suggestion(word: &str, names: &[&str], list: &str) -> String {
+    match did_you_mean(word, names.iter().copied()) {
+        Some(s) => format!("did you mean `{s}`?"),
+        None if names.is_empty() => format!("{list}: none"),
+        None => format!("{list}: {}", names.join(", ")),
+    }
+}
+
+/// `"did you mean `x`? {list}: a, b, c"`: the closest of `names` (if any is
+/// close), then all of them, for short lists (presets, tiers, values).
+pub fn suggestion_listing(word: &str, names: &[&str], list: &str) -> String {
+    let all = if names.is_empty() {
+        format!("{list}: none")
+    } else {
+        format!("{list}: {}", names.join(", "))
+    };
+    match did_you_mean(word, names.iter().copied()) {
+        Some(s) => format!("did you mean `{s}`? {all}"),
+        None => all,
+    }
 }
 
 /// Adds a note with a hint to the last diagnostic.

@@ -10,7 +10,9 @@ pub mod diag;
 pub mod includes;
 pub mod model;
 pub mod parse;
+pub mod scene;
 pub mod toml_reader;
+pub mod values;
 pub mod variants;
 
 pub use diag::{Diagnostics, FileId, SourceDb, Span};
@@ -38,6 +40,30 @@ pub fn find_root(toml_path: &Path) -> PathBuf {
     abs.parent().map(Path::to_path_buf).unwrap_or_default()
 }
 
+/// Reads a TOML file into `db` (canonical path; named relative to the working
+/// directory); an unreadable file is an `io` error.
+pub(crate) fn read_source(
+    path: &Path,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> Option<(PathBuf, FileId, String)> {
+    let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    match std::fs::read_to_string(&abs) {
+        Ok(text) => {
+            let file = db.add(&abs, includes::display_path(&abs), text.clone());
+            Some((abs, file, text))
+        }
+        Err(e) => {
+            diags.push(
+                codespan_reporting::diagnostic::Diagnostic::error()
+                    .with_code("io")
+                    .with_message(format!("cannot read `{}`: {e}", path.display())),
+            );
+            None
+        }
+    }
+}
+
 /// Loads and checks one material. On error, `None` and the reasons in `diags`.
 pub fn load_material(
     path: &Path,
@@ -45,19 +71,7 @@ pub fn load_material(
     db: &mut SourceDb,
     diags: &mut Diagnostics,
 ) -> Option<Material> {
-    let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-    let text = match std::fs::read_to_string(&abs) {
-        Ok(t) => t,
-        Err(e) => {
-            diags.push(
-                codespan_reporting::diagnostic::Diagnostic::error()
-                    .with_code("io")
-                    .with_message(format!("cannot read `{}`: {e}", path.display())),
-            );
-            return None;
-        }
-    };
-    let file = db.add(&abs, includes::display_path(&abs), text.clone());
+    let (abs, file, text) = read_source(path, db, diags)?;
     let before = diags.error_count();
     let mut material = {
         let mut cx = Cx { file, diags };

@@ -43,6 +43,8 @@ pub struct Material {
     pub max_variants_span: Option<Span>,
     /// Excluded combinations: a variant matching every condition of one entry is dropped.
     pub exclude: Vec<Vec<Condition>>,
+    /// Where each entry of `exclude` is written (the filter string), in `file`.
+    pub exclude_spans: Vec<Span>,
     pub presets: Vec<Preset>,
     pub passes: Vec<Pass>,
     pub decl: Loc,

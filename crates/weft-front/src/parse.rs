@@ -10,11 +10,11 @@ use crate::model::*;
 use crate::toml_reader::{
     Cx, Table, Value, expect_array, expect_number, expect_string, type_error,
 };
+use crate::values;
 use std::path::Path;
 use toml::de::{DeTable, DeValue};
 use weft_meta::{
-    BlendMode, CullMode, DepthTest, GradientStop, Keyframe, KeywordKind, KeywordMode, ParamKind,
-    TextureDefault,
+    BlendMode, CullMode, DepthTest, KeywordKind, KeywordMode, ParamKind, TextureDefault,
 };
 
 pub const TOP_KEYS: &[&str] = &[
@@ -77,8 +77,7 @@ pub const PASS_KEYS: &[&str] = &[
     "queue",
     "instances",
 ];
-pub const KEYFRAME_KEYS: &[&str] = &["time", "value", "in_slope", "out_slope"];
-pub const STOP_KEYS: &[&str] = &["position", "color"];
+pub use crate::values::{KEYFRAME_KEYS, STOP_KEYS};
 
 /// Default budget when a material sets no `max_variants`.
 pub const DEFAULT_MAX_VARIANTS: usize = 64;
@@ -139,7 +138,13 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         span: mat.key_span("name").unwrap_or_else(|| mat.span.clone()),
     };
 
-    let requires = parse_requires(&mat, cx);
+    let requires = parse_vertex_inputs(&mat, "requires", cx).unwrap_or_else(|| {
+        vec![
+            VertexAttribute::Position,
+            VertexAttribute::Normal,
+            VertexAttribute::Uv0,
+        ]
+    });
 
     let mut material = Material {
         label,
@@ -164,6 +169,7 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         max_variants: DEFAULT_MAX_VARIANTS,
         max_variants_span: None,
         exclude: Vec::new(),
+        exclude_spans: Vec::new(),
         presets: Vec::new(),
         passes: Vec::new(),
         decl,
@@ -248,7 +254,7 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
                 match parse_condition_text(&text) {
                     Ok(conds) => {
                         material.exclude.push(conds);
-                        sites.exclude.push(span);
+                        material.exclude_spans.push(span);
                     }
                     Err(msg) => bad_condition(cx, &msg, span),
                 }
@@ -382,14 +388,10 @@ fn bad_condition(cx: &mut Cx, msg: &str, span: Span) {
     );
 }
 
-fn parse_requires(mat: &Table, cx: &mut Cx) -> Vec<VertexAttribute> {
-    let Some(list) = mat.strings("requires", cx) else {
-        return vec![
-            VertexAttribute::Position,
-            VertexAttribute::Normal,
-            VertexAttribute::Uv0,
-        ];
-    };
+/// A list of vertex input names (`requires`, a scene's `vertex_inputs`):
+/// sorted, duplicates and unknown names reported. `None` when `key` is absent.
+pub fn parse_vertex_inputs(t: &Table, key: &str, cx: &mut Cx) -> Option<Vec<VertexAttribute>> {
+    let list = t.strings(key, cx)?;
     let mut out = Vec::new();
     for (name, span) in list {
         match VertexAttribute::ALL.iter().find(|a| a.name() == name) {
@@ -417,7 +419,7 @@ fn parse_requires(mat: &Table, cx: &mut Cx) -> Vec<VertexAttribute> {
         }
     }
     out.sort();
-    out
+    Some(out)
 }
 
 fn parse_kind(t: &Table, cx: &mut Cx) -> Option<ParamKind> {
@@ -567,7 +569,7 @@ fn parse_param(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Pa
         );
     }
 
-    let default = parse_default(&t, kind, hdr, range, cx)?;
+    let default = parse_default(&t, kind, range, cx)?;
     let show_if = parse_show_if(&t, cx);
 
     Some(Param {
@@ -606,285 +608,29 @@ pub fn humanize(name: &str) -> String {
     }
 }
 
-fn out_of_range(
-    cx: &mut Cx,
-    what: &str,
-    value: f64,
-    range: [f64; 2],
-    span: Span,
-    range_span: Span,
-) {
-    let d = cx.diags.error(
-        "default-out-of-range",
-        format!("default of {what} is outside its range"),
-        cx.file,
-        span,
-        format!("{value} is not in [{}, {}]", range[0], range[1]),
-    );
-    d.labels.push(
-        codespan_reporting::diagnostic::Label::secondary(cx.file, range_span)
-            .with_message("range declared here"),
-    );
-    d.notes.push("change the default or widen `range`".into());
-}
-
+/// The `default` of a parameter table, or the kind's built-in default.
 fn parse_default(
     t: &Table,
     kind: ParamKind,
-    hdr: bool,
     range: Option<[f64; 2]>,
     cx: &mut Cx,
 ) -> Option<ParamValue> {
-    let what = t.what.clone();
-    let range_span = t.span_of("range");
     let Some(v) = t.get("default") else {
         // Sensible defaults so a material renders without any value set.
-        return Some(match kind {
-            ParamKind::Float => ParamValue::Float(range.map_or(0.0, |r| r[0].max(0.0).min(r[1]))),
-            ParamKind::Int => ParamValue::Int(range.map_or(0, |r| r[0].max(0.0).min(r[1]) as i64)),
-            ParamKind::Bool => ParamValue::Bool(false),
-            ParamKind::Vec2 => ParamValue::Vector(vec![0.0; 2]),
-            ParamKind::Vec3 => ParamValue::Vector(vec![0.0; 3]),
-            ParamKind::Vec4 => ParamValue::Vector(vec![0.0; 4]),
-            ParamKind::Color => ParamValue::Vector(vec![1.0; 4]),
-            ParamKind::Texture2d | ParamKind::Cube => ParamValue::Texture(TextureDefault::White),
-            ParamKind::Curve => ParamValue::Curve(vec![
-                Keyframe {
-                    time: 0.0,
-                    value: 0.0,
-                    in_slope: 0.0,
-                    out_slope: 0.0,
-                },
-                Keyframe {
-                    time: 1.0,
-                    value: 0.0,
-                    in_slope: 0.0,
-                    out_slope: 0.0,
-                },
-            ]),
-            ParamKind::Gradient => ParamValue::Gradient(vec![
-                GradientStop {
-                    position: 0.0,
-                    color: [0.0, 0.0, 0.0, 1.0],
-                },
-                GradientStop {
-                    position: 1.0,
-                    color: [1.0, 1.0, 1.0, 1.0],
-                },
-            ]),
-        });
+        return Some(values::builtin_default(kind, range));
     };
-    let dwhat = format!("`default` of {what}");
-    let check = |cx: &mut Cx, x: f64, span: Span| {
-        if let Some(r) = range
-            && (x < r[0] || x > r[1])
-        {
-            out_of_range(cx, &what, x, r, span, range_span.clone());
-        }
+    let site = values::Site {
+        what: format!("`default` of {}", t.what),
+        texture: "texture default",
+        range: values::RangeReport::default_of(
+            &t.what,
+            Loc {
+                file: cx.file,
+                span: t.span_of("range"),
+            },
+        ),
     };
-    match kind {
-        ParamKind::Float => {
-            let x = expect_number(v, &dwhat, cx)?;
-            check(cx, x, v.span());
-            Some(ParamValue::Float(x))
-        }
-        ParamKind::Int => {
-            let x = crate::toml_reader::expect_integer(v, &dwhat, cx)?;
-            check(cx, x as f64, v.span());
-            Some(ParamValue::Int(x))
-        }
-        ParamKind::Bool => crate::toml_reader::expect_bool(v, &dwhat, cx).map(ParamValue::Bool),
-        ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 | ParamKind::Color => {
-            let items = expect_array(v, &dwhat, cx)?;
-            let n = kind.components().unwrap_or(4);
-            let ok_len = if kind == ParamKind::Color {
-                items.len() == 3 || items.len() == 4
-            } else {
-                items.len() == n
-            };
-            if !ok_len {
-                cx.error(
-                    "wrong-type",
-                    format!(
-                        "{dwhat} must have {} components",
-                        if kind == ParamKind::Color {
-                            "3 or 4".to_string()
-                        } else {
-                            n.to_string()
-                        }
-                    ),
-                    v.span(),
-                    format!("{} components here", items.len()),
-                );
-                return None;
-            }
-            let mut out = Vec::new();
-            for item in items {
-                let x = expect_number(item, &dwhat, cx)?;
-                check(cx, x, item.span());
-                out.push(x);
-            }
-            if kind == ParamKind::Color && out.len() == 3 {
-                out.push(1.0);
-            }
-            let _ = hdr;
-            Some(ParamValue::Vector(out))
-        }
-        ParamKind::Texture2d | ParamKind::Cube => {
-            let name = expect_string(v, &dwhat, cx)?;
-            match TextureDefault::ALL.iter().find(|d| d.name() == name) {
-                Some(d) => Some(ParamValue::Texture(*d)),
-                None => {
-                    let names = TextureDefault::ALL.map(|d| d.name());
-                    let hint = crate::diag::did_you_mean(&name, names.iter().copied()).map_or_else(
-                        || format!("use one of: {}", names.join(", ")),
-                        |x| {
-                            format!(
-                                "did you mean `{x}`? (built-in textures: {})",
-                                names.join(", ")
-                            )
-                        },
-                    );
-                    cx.error_with_note(
-                        "unknown-value",
-                        format!("unknown texture default `{name}`"),
-                        v.span(),
-                        "not a built-in texture",
-                        hint,
-                    );
-                    None
-                }
-            }
-        }
-        ParamKind::Curve => {
-            parse_keyframes(v, &dwhat, &what, range, range_span.clone(), cx).map(ParamValue::Curve)
-        }
-        ParamKind::Gradient => parse_stops(v, &dwhat, cx).map(ParamValue::Gradient),
-    }
-}
-
-/// Curve keyframes (`[{ time, value, in_slope, out_slope }, …]`), checked
-/// against the parameter's range; used for defaults and preset values.
-fn parse_keyframes(
-    v: &Value,
-    dwhat: &str,
-    what: &str,
-    range: Option<[f64; 2]>,
-    range_span: Span,
-    cx: &mut Cx,
-) -> Option<Vec<Keyframe>> {
-    let items = expect_array(v, dwhat, cx)?;
-    let mut keys = Vec::new();
-    for item in items {
-        let k = Table::new(item, "a curve keyframe", cx)?;
-        k.check_keys(KEYFRAME_KEYS, cx);
-        let (Some(time), Some(value)) = (k.number("time", cx), k.number("value", cx)) else {
-            cx.error(
-                "missing-key",
-                "a keyframe needs `time` and `value`",
-                item.span(),
-                "here",
-            );
-            return None;
-        };
-        if let Some(r) = range
-            && (value < r[0] || value > r[1])
-        {
-            out_of_range(cx, what, value, r, k.span_of("value"), range_span.clone());
-        }
-        if let Some(prev) = keys.last().map(|k: &Keyframe| k.time)
-            && time <= prev
-        {
-            cx.error(
-                "unordered-keys",
-                "curve keyframes must have increasing `time`",
-                k.span_of("time"),
-                format!("{time} is not after {prev}"),
-            );
-        }
-        keys.push(Keyframe {
-            time,
-            value,
-            in_slope: k.number("in_slope", cx).unwrap_or(0.0),
-            out_slope: k.number("out_slope", cx).unwrap_or(0.0),
-        });
-    }
-    if keys.is_empty() {
-        cx.error(
-            "wrong-type",
-            "a curve needs at least one keyframe",
-            v.span(),
-            "empty",
-        );
-        return None;
-    }
-    Some(keys)
-}
-
-/// Gradient stops (`[{ position, color }, …]`); used for defaults and preset values.
-fn parse_stops(v: &Value, dwhat: &str, cx: &mut Cx) -> Option<Vec<GradientStop>> {
-    let items = expect_array(v, dwhat, cx)?;
-    let mut stops = Vec::new();
-    for item in items {
-        let s = Table::new(item, "a gradient stop", cx)?;
-        s.check_keys(STOP_KEYS, cx);
-        let (Some(position), Some(color)) = (s.number("position", cx), s.numbers("color", cx))
-        else {
-            cx.error(
-                "missing-key",
-                "a gradient stop needs `position` and `color`",
-                item.span(),
-                "here",
-            );
-            return None;
-        };
-        if !(0.0..=1.0).contains(&position) {
-            cx.error(
-                "out-of-range",
-                "gradient stop `position` must be in [0, 1]",
-                s.span_of("position"),
-                "here",
-            );
-        }
-        if color.len() != 3 && color.len() != 4 || color.iter().any(|c| !(0.0..=1.0).contains(c)) {
-            cx.error(
-                "wrong-type",
-                "gradient stop `color` must be 3 or 4 numbers in [0, 1]",
-                s.span_of("color"),
-                "here",
-            );
-            return None;
-        }
-        if let Some(prev) = stops.last().map(|s: &GradientStop| s.position)
-            && position < prev
-        {
-            cx.error(
-                "unordered-keys",
-                "gradient stops must have non-decreasing `position`",
-                s.span_of("position"),
-                "out of order",
-            );
-        }
-        stops.push(GradientStop {
-            position,
-            color: [
-                color[0],
-                color[1],
-                color[2],
-                color.get(3).copied().unwrap_or(1.0),
-            ],
-        });
-    }
-    if stops.is_empty() {
-        cx.error(
-            "wrong-type",
-            "a gradient needs at least one stop",
-            v.span(),
-            "empty",
-        );
-        return None;
-    }
-    Some(stops)
+    values::parse_value(v, kind, range, &site, cx)
 }
 
 fn parse_keyword(name: &str, name_span: Span, v: &Value, cx: &mut Cx) -> Option<Keyword> {
@@ -1197,14 +943,14 @@ fn parse_preset(
                     let what = format!("preset value `{key}`");
                     match params.iter().find(|p| p.name == key) {
                         Some(p) if p.kind == ParamKind::Curve => {
-                            let range_span = p.decl.span.clone();
-                            PresetValue::Param(ParamValue::Curve(parse_keyframes(
-                                val, &what, &what, p.range, range_span, cx,
+                            let report = values::RangeReport::default_of(&what, p.decl.clone());
+                            PresetValue::Param(ParamValue::Curve(values::parse_keyframes(
+                                val, &what, p.range, &report, cx,
                             )?))
                         }
-                        Some(p) if p.kind == ParamKind::Gradient => {
-                            PresetValue::Param(ParamValue::Gradient(parse_stops(val, &what, cx)?))
-                        }
+                        Some(p) if p.kind == ParamKind::Gradient => PresetValue::Param(
+                            ParamValue::Gradient(values::parse_stops(val, &what, cx)?),
+                        ),
                         _ => PresetValue::Param(ParamValue::Vector(
                             crate::toml_reader::expect_numbers(val, &what, cx)?,
                         )),

@@ -33,6 +33,8 @@ pub struct SceneOutput {
     pub metadata: SceneMetadata,
     /// Per instance: the static variant id of the generic library shader.
     pub generic_variants: Vec<String>,
+    /// Warnings (e.g. a `dynamic` parameter the shader does not read).
+    pub warnings: Option<(SourceDb, Diagnostics)>,
 }
 
 #[derive(Default)]
@@ -291,6 +293,28 @@ pub fn build_resolved_scene(
             continue;
         }
 
+        // A `dynamic` parameter the shader does not read does nothing at run time.
+        for (k, &pi) in inst.dynamic.iter().enumerate() {
+            let name = &m.params[pi].name;
+            if shader.reads.contains(name) {
+                continue;
+            }
+            let span = inst.dynamic_spans.get(k).cloned().unwrap_or(inst.span.clone());
+            diags.push(
+                Diagnostic::warning()
+                    .with_code("unread-dynamic")
+                    .with_message(format!(
+                        "instance `{}`: dynamic parameter `{name}` is not read by its shader ({} `{variant}`)",
+                        inst.name, m.name
+                    ))
+                    .with_labels(vec![Label::primary(manifest.file, span)
+                        .with_message("changing this at run time changes nothing")])
+                    .with_notes(vec![format!(
+                        "`{name}` only matters with other keyword values or tiers; remove it from `dynamic`"
+                    )]),
+            );
+        }
+
         // Identical specialised instances share one shader.
         let id = built.compiled.id.clone();
         if !shaders.iter().any(|s| s.id == id) {
@@ -417,5 +441,6 @@ pub fn build_resolved_scene(
         files,
         metadata,
         generic_variants,
+        warnings: None,
     })
 }

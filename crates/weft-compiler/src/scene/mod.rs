@@ -15,8 +15,55 @@ pub mod tiers;
 pub use build::{SceneBuildOptions, SceneOutput, build_resolved_scene};
 pub use tiers::{AutoTierDecision, AutoTierRequest, TierChooser};
 
-use std::path::Path;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 use weft_front::{Diagnostics, SourceDb};
+
+/// Where a library build puts the scene metadata's JSON Schema.
+pub const SCENE_METADATA_SCHEMA_PATH: &str = "scene-metadata.schema.json";
+/// Where a project build (`cargo xtask regenerate`) puts built scenes, under the output root.
+pub const SCENES_OUTPUT_DIR: &str = "scenes";
+
+/// Scene manifests in a folder: `<dir>/*.scene.toml`, sorted.
+pub fn discover_scenes(dir: &Path) -> std::io::Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
+        let p = entry?.path();
+        if p.is_file() && p.to_string_lossy().ends_with(".scene.toml") {
+            out.push(p);
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Builds every scene manifest in `dir` and returns their files under
+/// `scenes/<scene>/`, ready to merge into a library build's files. Stops at
+/// the first scene with errors.
+pub fn build_scene_folder(
+    dir: &Path,
+    options: &SceneBuildOptions,
+) -> Result<(BTreeMap<String, Vec<u8>>, Vec<SceneOutput>), (SourceDb, Diagnostics)> {
+    let paths = discover_scenes(dir).map_err(|e| {
+        let mut diags = Diagnostics::new();
+        diags.push(
+            codespan_reporting::diagnostic::Diagnostic::error()
+                .with_code("io")
+                .with_message(format!("cannot read scenes folder `{}`: {e}", dir.display())),
+        );
+        (SourceDb::new(), diags)
+    })?;
+    let mut files = BTreeMap::new();
+    let mut outputs = Vec::new();
+    for p in paths {
+        let out = build_scene(&p, options)?;
+        for (name, bytes) in &out.files {
+            files.insert(format!("{SCENES_OUTPUT_DIR}/{name}"), bytes.clone());
+        }
+        outputs.push(out);
+    }
+    Ok((files, outputs))
+}
 
 /// Builds the scene manifest at `scene_toml`: the `build.rs` entry point next
 /// to [`crate::build_library`]. Returns every file (relative to the output
@@ -31,7 +78,12 @@ pub fn build_scene(
         return Err((db, diags));
     };
     match build_resolved_scene(&scene, &mut db, &mut diags, options) {
-        Some(out) if !diags.has_errors() => Ok(out),
+        Some(mut out) if !diags.has_errors() => {
+            if !diags.is_empty() {
+                out.warnings = Some((db, diags));
+            }
+            Ok(out)
+        }
         _ => Err((db, diags)),
     }
 }

@@ -21,7 +21,8 @@ pub enum BuiltinMesh {
 }
 
 impl BuiltinMesh {
-    pub const ALL: [BuiltinMesh; 3] = [BuiltinMesh::Sphere, BuiltinMesh::Cloth, BuiltinMesh::Swatch];
+    pub const ALL: [BuiltinMesh; 3] =
+        [BuiltinMesh::Sphere, BuiltinMesh::Cloth, BuiltinMesh::Swatch];
     pub fn name(self) -> &'static str {
         match self {
             BuiltinMesh::Sphere => "sphere",
@@ -105,7 +106,10 @@ pub enum TierRequest {
     Named(String),
     /// `tier = "auto"`: the cheapest tier whose FLIP mean against the
     /// reference tier stays within `error_budget` at `screen_size` pixels.
-    Auto { error_budget: f64, screen_size: u32 },
+    Auto {
+        error_budget: f64,
+        screen_size: u32,
+    },
 }
 
 /// One `[[instances]]` entry as written.

@@ -1,0 +1,122 @@
+//! `weft preview --scene-file / --scene-dir`: whole scenes to a PNG, as a
+//! user runs it (needs a Vulkan driver: lavapipe without a GPU).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .canonicalize()
+        .unwrap()
+}
+
+fn weft(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(repo())
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Width and height from a PNG's IHDR chunk.
+fn png_size(path: &Path) -> (u32, u32) {
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(&bytes[1..4], b"PNG", "{} is not a PNG", path.display());
+    let be = |o: usize| u32::from_be_bytes(bytes[o..o + 4].try_into().unwrap());
+    (be(16), be(20))
+}
+
+#[test]
+fn previews_a_scene_manifest_and_a_built_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("book.png");
+    let o = weft(&[
+        "preview",
+        "--scene-file",
+        "scenes/swatch_book.scene.toml",
+        "-o",
+        png.to_str().unwrap(),
+        "--width",
+        "96",
+        "--height",
+        "64",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("rendered scene swatch_book"));
+    assert_eq!(png_size(&png), (96, 64));
+
+    // Built on its own (no LUTs beside it), previewed from its output folder
+    // and from the scene folder, through the SPIR-V files.
+    let out = dir.path().join("out");
+    let o = weft(&[
+        "build",
+        "--scene",
+        "scenes/swatch_book.scene.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for source in [out.clone(), out.join("swatch_book")] {
+        let png = dir.path().join("built.png");
+        let o = weft(&[
+            "preview",
+            "--scene-dir",
+            source.to_str().unwrap(),
+            "-o",
+            png.to_str().unwrap(),
+            "--size",
+            "48x32",
+            "--spirv",
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert_eq!(png_size(&png), (48, 32));
+    }
+}
+
+#[test]
+fn scene_preview_errors_are_reported_not_panics() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("x.png");
+    let o = weft(&[
+        "preview",
+        "--scene-dir",
+        dir.path().to_str().unwrap(),
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("holds no built scene"), "{}", stderr(&o));
+
+    let manifest = dir.path().join("broken.scene.toml");
+    std::fs::write(&manifest, "[scene]\nname = \"broken\"\n").unwrap();
+    let o = weft(&[
+        "preview",
+        "--color",
+        "never",
+        "--scene-file",
+        manifest.to_str().unwrap(),
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("does not build"), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
+    assert!(!png.exists());
+
+    // A scene is not drawn with material options.
+    let o = weft(&[
+        "preview",
+        "--scene-file",
+        "scenes/swatch_book.scene.toml",
+        "--preset",
+        "gold",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}

@@ -1,0 +1,718 @@
+//! `scenes/<name>.scene.toml` -> [`SceneManifest`]: keys, types and every
+//! check that needs no material (names, the materials root, features, camera,
+//! tier requests, meshes, transforms). Parameter values stay in the TOML tree
+//! ([`WrittenParam`]) until `resolve` types them against their material.
+
+use super::model::*;
+use crate::diag::{Span, suggestion_listing};
+use crate::parse::parse_vertex_inputs;
+use crate::toml_reader::{Cx, Table, Value, expect_array, expect_string, type_error};
+use codespan_reporting::diagnostic::Label;
+use std::path::{Path, PathBuf};
+use toml::de::{DeTable, DeValue};
+
+pub const TOP_KEYS: &[&str] = &["scene", "camera", "instances"];
+pub const SCENE_KEYS: &[&str] = &[
+    "name",
+    "description",
+    "materials",
+    "environment",
+    "sh_ambient",
+    "directional_lights",
+    "vertex_inputs",
+    "max_shaders",
+];
+pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
+pub const INSTANCE_KEYS: &[&str] = &[
+    "name",
+    "material",
+    "preset",
+    "tier",
+    "error_budget",
+    "screen_size",
+    "keywords",
+    "params",
+    "dynamic",
+    "mesh",
+    "vertex_inputs",
+    "translation",
+    "rotation",
+    "scale",
+];
+
+/// The materials root when `[scene]` sets no `materials`, relative to the scene file.
+pub const DEFAULT_MATERIALS: &str = "../materials";
+/// The `tier` value that lets the build choose the tier.
+pub const AUTO_TIER: &str = "auto";
+/// `screen_size` limits (pixels) for `tier = "auto"`.
+pub const SCREEN_SIZE_RANGE: std::ops::RangeInclusive<i64> = 16..=4096;
+/// Engine interface v1 has one directional light slot.
+pub const MAX_DIRECTIONAL_LIGHTS: i64 = 1;
+/// A scene file's name ends with this; the scene's name is what comes before it.
+pub const SCENE_SUFFIX: &str = ".scene.toml";
+
+/// One `params` entry of an instance as written, borrowed from the TOML tree.
+pub struct WrittenParam<'a, 'i> {
+    pub name: &'a str,
+    pub name_span: Span,
+    pub value: &'a Value<'i>,
+}
+
+/// What `parse` hands `resolve`.
+pub struct Parsed<'a, 'i> {
+    pub manifest: SceneManifest,
+    /// One list per entry of `manifest.instances`, in the same order.
+    pub params: Vec<Vec<WrittenParam<'a, 'i>>>,
+}
+
+/// The TOML tree of a scene file; `None` (and a `toml-syntax` error) when it does not parse.
+pub fn parse_document<'i>(text: &'i str, cx: &mut Cx) -> Option<toml::Spanned<DeTable<'i>>> {
+    match DeTable::parse(text) {
+        Ok(doc) => Some(doc),
+        Err(e) => {
+            cx.error_with_note(
+                "toml-syntax",
+                format!("invalid TOML: {}", e.message().trim()),
+                e.span().unwrap_or(0..0),
+                "here",
+                "see docs/scenes.md for the file format",
+            );
+            None
+        }
+    }
+}
+
+/// A scene or instance name: lower case letters, digits and underscores, starting with a letter.
+pub fn is_scene_name(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some('a'..='z'))
+        && chars.all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+}
+
+/// The scene name a file's name implies: `fitting_room.scene.toml` -> `fitting_room`.
+pub fn file_scene_name(path: &Path) -> String {
+    let file = path
+        .file_name()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    match file.strip_suffix(SCENE_SUFFIX) {
+        Some(stem) => stem.to_string(),
+        None => path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default(),
+    }
+}
+
+/// Reads the manifest from the TOML tree. `None` without a `[scene]` table;
+/// otherwise every problem found is in `cx.diags` and the manifest holds the
+/// instances that have a name and a material (the others cannot be resolved).
+pub fn parse_manifest<'a, 'i>(
+    doc: &'a DeTable<'i>,
+    path: &Path,
+    cx: &mut Cx,
+) -> Option<Parsed<'a, 'i>> {
+    let top = Table {
+        map: doc,
+        span: 0..0,
+        what: "the scene file".into(),
+    };
+    top.check_keys(TOP_KEYS, cx);
+    let Some(scene_v) = top.get("scene") else {
+        cx.error_with_note(
+            "missing-key",
+            "missing [scene] table",
+            0..0,
+            "the file starts here",
+            "add a [scene] table with at least `name` and `vertex_inputs` (docs/scenes.md)",
+        );
+        return None;
+    };
+    let scene = Table::new(scene_v, "[scene]", cx)?;
+    scene.check_keys(SCENE_KEYS, cx);
+
+    let stem = file_scene_name(path);
+    let name = match scene.get("name") {
+        None => {
+            cx.error_with_note(
+                "missing-key",
+                "[scene] has no `name`",
+                scene.span.clone(),
+                "in this table",
+                format!("add `name = \"{stem}\"` (the file name before `{SCENE_SUFFIX}`)"),
+            );
+            stem
+        }
+        Some(v) => {
+            let name = expect_string(v, "`name` of [scene]", cx).unwrap_or_else(|| stem.clone());
+            check_scene_name(&name, &stem, v.span(), cx);
+            name
+        }
+    };
+
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let materials_root = materials_root(&scene, dir, cx);
+    let features = parse_features(&scene, cx);
+    let vertex_inputs = match parse_vertex_inputs(&scene, "vertex_inputs", cx) {
+        Some(list) => list,
+        None => {
+            if scene.get("vertex_inputs").is_none() {
+                cx.error_with_note(
+                    "missing-key",
+                    "[scene] has no `vertex_inputs`",
+                    scene.span.clone(),
+                    "in this table",
+                    "list what every instance's mesh provides, e.g. `vertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]`",
+                );
+            }
+            Vec::new()
+        }
+    };
+    let max_shaders = scene.integer("max_shaders", cx).and_then(|n| {
+        let span = scene.span_of("max_shaders");
+        match usize::try_from(n) {
+            Ok(n) if n >= 1 => Some(Spanned { value: n, span }),
+            _ => {
+                cx.error(
+                    "out-of-range",
+                    "`max_shaders` must be at least 1",
+                    span,
+                    format!("{n} is below 1"),
+                );
+                None
+            }
+        }
+    });
+    let camera = top
+        .get("camera")
+        .and_then(|v| Table::new(v, "[camera]", cx))
+        .map(|t| parse_camera(&t, cx))
+        .unwrap_or_default();
+
+    let mut manifest = SceneManifest {
+        name,
+        description: scene.string("description", cx),
+        file: cx.file,
+        path: path.to_path_buf(),
+        materials_root,
+        features,
+        scene_span: scene.span.clone(),
+        vertex_inputs: Spanned {
+            value: vertex_inputs,
+            span: scene.span_of("vertex_inputs"),
+        },
+        camera,
+        max_shaders,
+        instances: Vec::new(),
+    };
+    let mut params = Vec::new();
+    let items = match top.get("instances") {
+        Some(v) => expect_array(v, "`instances`", cx).map(|items| (items, v.span())),
+        None => Some((&[][..], scene.span.clone())),
+    };
+    if let Some((items, span)) = items {
+        if items.is_empty() {
+            cx.error_with_note(
+                "empty-scene",
+                "the scene has no instances",
+                span,
+                "nothing to draw",
+                "add an [[instances]] table per object, with at least `name`, `material` and `mesh`",
+            );
+        }
+        let mut names = Vec::new();
+        for item in items {
+            let (name, instance) = parse_instance(item, cx);
+            names.extend(name);
+            if let Some((decl, written)) = instance {
+                manifest.instances.push(decl);
+                params.push(written);
+            }
+        }
+        check_unique_names(&names, cx);
+    }
+    Some(Parsed { manifest, params })
+}
+
+fn check_scene_name(name: &str, stem: &str, span: Span, cx: &mut Cx) {
+    if !is_scene_name(name) {
+        cx.error_with_note(
+            "bad-name",
+            format!("scene name `{name}` is not a lower_snake_case name"),
+            span,
+            "names the build's output files",
+            "use lower case letters, digits and underscores, starting with a letter",
+        );
+    } else if name != stem {
+        cx.error_with_note(
+            "bad-name",
+            format!("scene name `{name}` does not match the file name `{stem}{SCENE_SUFFIX}`"),
+            span,
+            format!("expected `{stem}`"),
+            format!("rename the file to `{name}{SCENE_SUFFIX}`, or write `name = \"{stem}\"`"),
+        );
+    }
+}
+
+/// The materials root, canonical when it exists; a missing folder is reported.
+fn materials_root(scene: &Table, dir: &Path, cx: &mut Cx) -> PathBuf {
+    let written = scene.string("materials", cx);
+    let rel = written.as_deref().unwrap_or(DEFAULT_MATERIALS);
+    let root = dir.join(rel);
+    match root.canonicalize() {
+        Ok(abs) if abs.is_dir() => abs,
+        _ => {
+            let (span, label, note) = match written {
+                Some(_) => (
+                    scene.span_of("materials"),
+                    "no such folder (relative to this scene file)".to_string(),
+                    "materials are looked up as `<root>/<name>/<name>.toml`".to_string(),
+                ),
+                None => (
+                    scene.span.clone(),
+                    format!("no `materials`, so the root is `{DEFAULT_MATERIALS}`"),
+                    "set `materials = \"<folder>\"` (relative to this file) under [scene]"
+                        .to_string(),
+                ),
+            };
+            cx.error_with_note(
+                "missing-root",
+                format!("the materials root `{rel}` does not exist"),
+                span,
+                label,
+                note,
+            );
+            root
+        }
+    }
+}
+
+fn parse_features(scene: &Table, cx: &mut Cx) -> SceneFeatures {
+    let mut features = SceneFeatures::default();
+    features.environment = scene
+        .boolean("environment", cx)
+        .unwrap_or(features.environment);
+    features.sh_ambient = scene
+        .boolean("sh_ambient", cx)
+        .unwrap_or(features.sh_ambient);
+    if let Some(n) = scene.integer("directional_lights", cx) {
+        let span = scene.span_of("directional_lights");
+        if n < 0 {
+            cx.error(
+                "out-of-range",
+                "`directional_lights` cannot be negative",
+                span,
+                format!("{n} lights"),
+            );
+        } else if n > MAX_DIRECTIONAL_LIGHTS {
+            cx.error_with_note(
+                "unsupported-feature",
+                format!("{n} directional lights: engine interface v1 has one light slot"),
+                span,
+                format!("at most {MAX_DIRECTIONAL_LIGHTS}"),
+                "write 0 (no direct light) or 1; more lights need a new engine interface version (docs/engine-interface.md)",
+            );
+        } else {
+            features.directional_lights = n as u32;
+        }
+    }
+    features
+}
+
+/// `[x, y, z]` under `key`; `None` when absent or malformed (reported).
+fn vec3(t: &Table, key: &str, cx: &mut Cx) -> Option<[f64; 3]> {
+    let span = t.get(key)?.span();
+    let nums = t.numbers(key, cx)?;
+    match <[f64; 3]>::try_from(nums) {
+        Ok(v) => Some(v),
+        Err(nums) => {
+            cx.error(
+                "wrong-type",
+                format!("`{key}` of {} must be 3 numbers [x, y, z]", t.what),
+                span,
+                format!("{} numbers here", nums.len()),
+            );
+            None
+        }
+    }
+}
+
+fn parse_camera(t: &Table, cx: &mut Cx) -> Camera {
+    t.check_keys(CAMERA_KEYS, cx);
+    let mut camera = Camera::default();
+    camera.position = vec3(t, "position", cx).unwrap_or(camera.position);
+    camera.target = vec3(t, "target", cx).unwrap_or(camera.target);
+    if let Some(fov) = t.number("fov_degrees", cx) {
+        if fov > 0.0 && fov < 180.0 {
+            camera.fov_degrees = fov;
+        } else {
+            cx.error(
+                "out-of-range",
+                "`fov_degrees` of [camera] must be between 0 and 180 (exclusive)",
+                t.span_of("fov_degrees"),
+                format!("{fov} is not in (0, 180)"),
+            );
+        }
+    }
+    camera
+}
+
+/// A required string key; reports it missing at `at`.
+fn required_string(
+    t: &Table,
+    key: &str,
+    at: &Span,
+    note: &str,
+    cx: &mut Cx,
+) -> Option<Spanned<String>> {
+    match t.get(key) {
+        None => {
+            cx.error_with_note(
+                "missing-key",
+                format!("{} has no `{key}`", t.what),
+                at.clone(),
+                format!("`{key}` missing in this instance"),
+                note,
+            );
+            None
+        }
+        Some(v) => expect_string(v, &format!("`{key}` of {}", t.what), cx).map(|value| Spanned {
+            value,
+            span: v.span(),
+        }),
+    }
+}
+
+/// The instance's name (for the duplicate check) and, when it has a name
+/// and a material, the instance.
+type ParsedInstance<'a, 'i> = (
+    Option<Spanned<String>>,
+    Option<(InstanceDecl, Vec<WrittenParam<'a, 'i>>)>,
+);
+
+fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a, 'i> {
+    let Some(mut t) = Table::new(item, "an [[instances]] entry", cx) else {
+        return (None, None);
+    };
+    let name = t.string("name", cx);
+    if let Some(n) = &name {
+        t.what = format!("instance `{n}`");
+    }
+    t.check_keys(INSTANCE_KEYS, cx);
+    // Errors about the instance as a whole point at its name, or its first key.
+    let at = t.get("name").map_or_else(
+        || {
+            t.entries()
+                .next()
+                .map_or_else(|| t.span.clone(), |(_, span, _)| span)
+        },
+        |v| v.span(),
+    );
+    match &name {
+        None if t.get("name").is_none() => cx.error_with_note(
+            "missing-key",
+            "an [[instances]] entry has no `name`",
+            at.clone(),
+            "in this instance",
+            "give every instance a unique lower_snake_case `name`",
+        ),
+        Some(n) if !is_scene_name(n) => cx.error_with_note(
+            "bad-name",
+            format!("instance name `{n}` is not a lower_snake_case name"),
+            at.clone(),
+            "names the instance in the scene metadata",
+            "use lower case letters, digits and underscores, starting with a letter",
+        ),
+        _ => {}
+    }
+    let material = required_string(
+        &t,
+        "material",
+        &at,
+        "name a material folder of the materials root, e.g. `material = \"standard\"`",
+        cx,
+    );
+    let preset = t.string("preset", cx).map(|value| Spanned {
+        value,
+        span: t.span_of("preset"),
+    });
+    let tier = parse_tier(&t, cx);
+    let keywords = parse_keywords(&t, cx);
+    let params = written_params(&t, cx);
+    let dynamic = parse_dynamic(&t, cx);
+    let mesh = parse_mesh(&t, &at, cx);
+    let vertex_inputs = parse_vertex_inputs(&t, "vertex_inputs", cx).map(|value| Spanned {
+        value,
+        span: t.span_of("vertex_inputs"),
+    });
+    let transform = parse_transform(&t, cx);
+    let Some(name) = name else {
+        return (None, None);
+    };
+    let written_name = Spanned {
+        value: name.clone(),
+        span: at.clone(),
+    };
+    let Some(material) = material else {
+        return (Some(written_name), None);
+    };
+    let decl = InstanceDecl {
+        name,
+        span: t.span.clone(),
+        name_span: at,
+        material,
+        preset,
+        tier,
+        keywords,
+        dynamic,
+        // A missing or unknown mesh is reported; the instance is still
+        // resolved (the scene fails anyway) so that one run shows everything.
+        mesh: mesh.unwrap_or(Spanned {
+            value: BuiltinMesh::Sphere,
+            span: t.span.clone(),
+        }),
+        vertex_inputs,
+        transform,
+    };
+    (Some(written_name), Some((decl, params)))
+}
+
+/// `tier`, with `error_budget` and `screen_size` for `auto` (and only then).
+fn parse_tier(t: &Table, cx: &mut Cx) -> Spanned<TierRequest> {
+    let span = t.span_of("tier");
+    let tier = t.string("tier", cx);
+    let budget = t.number("error_budget", cx);
+    let size = t.integer("screen_size", cx);
+    if tier.as_deref() != Some(AUTO_TIER) {
+        for key in ["error_budget", "screen_size"] {
+            if let Some(key_span) = t.key_span(key) {
+                cx.error_with_note(
+                    "unknown-key",
+                    format!("`{key}` only applies to `tier = \"{AUTO_TIER}\"`"),
+                    key_span,
+                    "not used with this tier",
+                    format!(
+                        "write `tier = \"{AUTO_TIER}\"` to let the build choose the tier, or remove `{key}`"
+                    ),
+                );
+            }
+        }
+        let value = tier.map_or(TierRequest::Default, TierRequest::Named);
+        return Spanned { value, span };
+    }
+    let missing = |cx: &mut Cx, key: &str, note: &str| {
+        cx.error_with_note(
+            "missing-key",
+            format!("`tier = \"{AUTO_TIER}\"` needs `{key}` in {}", t.what),
+            span.clone(),
+            format!("`{key}` missing"),
+            note,
+        );
+    };
+    if t.get("error_budget").is_none() {
+        missing(
+            cx,
+            "error_budget",
+            "the largest mean FLIP error against the reference tier the instance may show, in (0, 1], e.g. `error_budget = 0.05`",
+        );
+    }
+    if t.get("screen_size").is_none() {
+        missing(
+            cx,
+            "screen_size",
+            "the instance's size on screen in pixels (16 to 4096), e.g. `screen_size = 256`",
+        );
+    }
+    let budget = budget.filter(|b| {
+        let ok = *b > 0.0 && *b <= 1.0;
+        if !ok {
+            cx.error_with_note(
+                "out-of-range",
+                format!("`error_budget` of {} must be in (0, 1]", t.what),
+                t.span_of("error_budget"),
+                format!("{b} is not in (0, 1]"),
+                "a mean FLIP error: 0 would allow no difference at all, 1 any",
+            );
+        }
+        ok
+    });
+    let size = size.filter(|s| {
+        let ok = SCREEN_SIZE_RANGE.contains(s);
+        if !ok {
+            cx.error(
+                "out-of-range",
+                format!(
+                    "`screen_size` of {} must be between {} and {} pixels",
+                    t.what,
+                    SCREEN_SIZE_RANGE.start(),
+                    SCREEN_SIZE_RANGE.end()
+                ),
+                t.span_of("screen_size"),
+                format!("{s} is outside that range"),
+            );
+        }
+        ok
+    });
+    let value = match (budget, size) {
+        (Some(error_budget), Some(size)) => TierRequest::Auto {
+            error_budget,
+            screen_size: size as u32,
+        },
+        // Already reported; the scene does not resolve.
+        _ => TierRequest::Default,
+    };
+    Spanned { value, span }
+}
+
+/// `keywords = { NAME = "value" }`; `true`/`false` read as `on`/`off`, as in presets.
+fn parse_keywords(t: &Table, cx: &mut Cx) -> Vec<(Spanned<String>, Spanned<String>)> {
+    let Some(table) = t
+        .get("keywords")
+        .and_then(|v| Table::new(v, format!("`keywords` of {}", t.what), cx))
+    else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for (name, name_span, v) in table.entries() {
+        let value = match v.get_ref() {
+            DeValue::String(s) => s.to_string(),
+            DeValue::Boolean(b) => if *b { "on" } else { "off" }.to_string(),
+            other => {
+                type_error(
+                    cx,
+                    &format!("keyword `{name}` of {}", t.what),
+                    "a value name (or true/false for a toggle)",
+                    other,
+                    v.span(),
+                );
+                continue;
+            }
+        };
+        out.push((
+            Spanned {
+                value: name.to_string(),
+                span: name_span,
+            },
+            Spanned {
+                value,
+                span: v.span(),
+            },
+        ));
+    }
+    out
+}
+
+fn written_params<'a, 'i>(t: &Table<'a, 'i>, cx: &mut Cx) -> Vec<WrittenParam<'a, 'i>> {
+    t.get("params")
+        .and_then(|v| Table::new(v, format!("`params` of {}", t.what), cx))
+        .map(|table| {
+            table
+                .entries()
+                .map(|(name, name_span, value)| WrittenParam {
+                    name,
+                    name_span,
+                    value,
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// `dynamic`, each name once.
+fn parse_dynamic(t: &Table, cx: &mut Cx) -> Vec<Spanned<String>> {
+    let mut out: Vec<Spanned<String>> = Vec::new();
+    for (value, span) in t.strings("dynamic", cx).unwrap_or_default() {
+        if let Some(first) = out.iter().find(|d| d.value == value) {
+            let first = first.span.clone();
+            let d = cx.diags.error(
+                "duplicate",
+                format!("`{value}` is listed twice in `dynamic` of {}", t.what),
+                cx.file,
+                span,
+                "again here",
+            );
+            d.labels
+                .push(Label::secondary(cx.file, first).with_message("first listed here"));
+            continue;
+        }
+        out.push(Spanned { value, span });
+    }
+    out
+}
+
+fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<BuiltinMesh>> {
+    let names = BuiltinMesh::ALL.map(BuiltinMesh::name);
+    let note = format!("built-in meshes: {}", names.join(", "));
+    let name = required_string(t, "mesh", at, &note, cx)?;
+    match BuiltinMesh::from_name(&name.value) {
+        Some(value) => Some(Spanned {
+            value,
+            span: name.span,
+        }),
+        None => {
+            cx.error_with_note(
+                "unknown-mesh",
+                format!("unknown mesh `{}`", name.value),
+                name.span,
+                "not a built-in mesh",
+                suggestion_listing(&name.value, &names, "built-in meshes"),
+            );
+            None
+        }
+    }
+}
+
+fn parse_transform(t: &Table, cx: &mut Cx) -> Transform {
+    let mut transform = Transform::default();
+    transform.translation = vec3(t, "translation", cx).unwrap_or(transform.translation);
+    transform.rotation_degrees = vec3(t, "rotation", cx).unwrap_or(transform.rotation_degrees);
+    let scale = match t.get("scale").map(|v| v.get_ref()) {
+        None => None,
+        Some(DeValue::Array(_)) => vec3(t, "scale", cx),
+        Some(DeValue::Integer(_) | DeValue::Float(_)) => t.number("scale", cx).map(|s| [s; 3]),
+        Some(other) => {
+            type_error(
+                cx,
+                &format!("`scale` of {}", t.what),
+                "a number or 3 numbers [x, y, z]",
+                other,
+                t.span_of("scale"),
+            );
+            None
+        }
+    };
+    if let Some(scale) = scale {
+        if scale.iter().all(|s| *s > 0.0) {
+            transform.scale = scale;
+        } else {
+            cx.error(
+                "out-of-range",
+                format!("`scale` of {} must be positive", t.what),
+                t.span_of("scale"),
+                "every component must be > 0",
+            );
+        }
+    }
+    transform
+}
+
+fn check_unique_names(names: &[Spanned<String>], cx: &mut Cx) {
+    for (i, name) in names.iter().enumerate() {
+        let Some(first) = names.iter().take(i).find(|x| x.value == name.value) else {
+            continue;
+        };
+        let d = cx.diags.error(
+            "duplicate",
+            format!("two instances are named `{}`", name.value),
+            cx.file,
+            name.span.clone(),
+            "second instance with this name",
+        );
+        d.labels
+            .push(Label::secondary(cx.file, first.span.clone()).with_message("first one here"));
+        d.notes.push(
+            "instance names are unique in a scene: they name the instance in the scene metadata"
+                .into(),
+        );
+    }
+}

@@ -1,0 +1,1 @@
+// Never composed: broken.toml fails before the WGSL is compiled.
