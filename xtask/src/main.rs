@@ -144,21 +144,23 @@ fn main() -> ExitCode {
 /// The whole project: every material, then every scene under `scenes/`
 /// (files under `scenes/<scene>/`), `auto` tiers measured on lavapipe.
 fn build(root: &Path, options: &BuildOptions) -> Option<weft_compiler::BuildOutput> {
-    let result = build_library(&root.join("materials"), options, &|_, _, _| {}).and_then(|mut out| {
-        let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)
-            .map(|c| c.with_reports_dir(root.join("generated/reports")))
-            .map_err(|e| {
-                let mut d = weft_front::Diagnostics::new();
-                d.push(codespan_reporting::diagnostic::Diagnostic::error().with_message(e));
-                (weft_front::SourceDb::new(), d)
-            })?;
-        let options = weft_compiler::SceneBuildOptions {
-            tier_chooser: Some(&chooser),
-        };
-        let (files, _) = weft_compiler::scene::build_scene_folder(&root.join("scenes"), &options)?;
-        out.files.extend(files);
-        Ok(out)
-    });
+    let result =
+        build_library(&root.join("materials"), options, &|_, _, _| {}).and_then(|mut out| {
+            let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)
+                .map(|c| c.with_reports_dir(root.join("generated/reports")))
+                .map_err(|e| {
+                    let mut d = weft_front::Diagnostics::new();
+                    d.push(codespan_reporting::diagnostic::Diagnostic::error().with_message(e));
+                    (weft_front::SourceDb::new(), d)
+                })?;
+            let options = weft_compiler::SceneBuildOptions {
+                tier_chooser: Some(&chooser),
+            };
+            let (files, _) =
+                weft_compiler::scene::build_scene_folder(&root.join("scenes"), &options)?;
+            out.files.extend(files);
+            Ok(out)
+        });
     match result {
         Ok(out) => Some(out),
         Err((db, diags)) => {

@@ -195,7 +195,13 @@ fn main() -> ExitCode {
             tier_costs,
             ..
         } => {
-            if scene_build::build_scene_command(&scene, &out, tier_costs.as_ref(), cli.quiet, cli.color) {
+            if scene_build::build_scene_command(
+                &scene,
+                &out,
+                tier_costs.as_ref(),
+                cli.quiet,
+                cli.color,
+            ) {
                 ExitCode::SUCCESS
             } else {
                 ExitCode::FAILURE

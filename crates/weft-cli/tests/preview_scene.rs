@@ -90,7 +90,11 @@ fn scene_preview_errors_are_reported_not_panics() {
         png.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(stderr(&o).contains("holds no built scene"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("holds no built scene"),
+        "{}",
+        stderr(&o)
+    );
 
     let manifest = dir.path().join("broken.scene.toml");
     std::fs::write(&manifest, "[scene]\nname = \"broken\"\n").unwrap();

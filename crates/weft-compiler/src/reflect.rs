@@ -218,7 +218,11 @@ pub fn vertex_locations(module: &Module) -> Vec<u32> {
 /// Parameters the module still reads, in declaration order: uniform members
 /// reached from any function (a texture's `_st` member counts for the
 /// texture) and material textures still bound.
-pub fn reads(m: &weft_front::Material, module: &Module, prelude: &crate::prelude::Prelude) -> Vec<String> {
+pub fn reads(
+    m: &weft_front::Material,
+    module: &Module,
+    prelude: &crate::prelude::Prelude,
+) -> Vec<String> {
     let uniform = module.global_variables.iter().find_map(|(h, v)| {
         v.binding
             .as_ref()
@@ -227,7 +231,8 @@ pub fn reads(m: &weft_front::Material, module: &Module, prelude: &crate::prelude
     });
     let mut member_names = std::collections::BTreeSet::new();
     if let Some(u) = uniform
-        && let TypeInner::Struct { members, .. } = &module.types[module.global_variables[u].ty].inner
+        && let TypeInner::Struct { members, .. } =
+            &module.types[module.global_variables[u].ty].inner
     {
         let functions = module
             .functions

@@ -1,8 +1,8 @@
 //! Compiling one variant: specialise, validate, emit every language, reflect.
 
 use crate::backends::{self, stage_suffix};
-use crate::compose::validator;
 use crate::compose::FEATURE_DEFAULTS;
+use crate::compose::validator;
 use crate::prelude::{Prelude, TIER_OVERRIDE};
 use crate::reflect;
 use crate::specialise::{Bindings, specialise};
@@ -86,7 +86,14 @@ pub fn compile_variant(
             e.as_inner()
         )
     })?;
-    emit_shader(m, &specialised, &info, id, prelude, &constant_combinations(m))
+    emit_shader(
+        m,
+        &specialised,
+        &info,
+        id,
+        prelude,
+        &constant_combinations(m),
+    )
 }
 
 /// Emits a specialised, validated module in every language (one set of

@@ -13,23 +13,40 @@ fn swatch_book_builds_one_shader_per_preset() {
     let out = build_scene(&scene("swatch_book"), &SceneBuildOptions::default())
         .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
     assert_eq!(out.metadata.instances.len(), 6);
-    assert_eq!(out.metadata.shaders.len(), 6, "each preset folds differently");
+    assert_eq!(
+        out.metadata.shaders.len(),
+        6,
+        "each preset folds differently"
+    );
     for inst in &out.metadata.instances {
-        let shader = out.metadata.shaders.iter().find(|s| s.id == inst.shader).expect("shader");
+        let shader = out
+            .metadata
+            .shaders
+            .iter()
+            .find(|s| s.id == inst.shader)
+            .expect("shader");
         // No dynamic parameters: only curves (read with a run-time index) may stay.
         if let Some(u) = &shader.shader.material_uniform {
-            assert!(u.members.iter().all(|m| m.name.ends_with("_curve")), "{:?}", u.members);
+            assert!(
+                u.members.iter().all(|m| m.name.ends_with("_curve")),
+                "{:?}",
+                u.members
+            );
         }
         assert!(inst.dynamic.is_empty());
     }
-    let again = build_scene(&scene("swatch_book"), &SceneBuildOptions::default()).ok().unwrap();
+    let again = build_scene(&scene("swatch_book"), &SceneBuildOptions::default())
+        .ok()
+        .unwrap();
     assert_eq!(out.files, again.files, "scene builds are deterministic");
 }
 
 #[test]
 #[ignore]
 fn dump_swatch_book() {
-    let out = build_scene(&scene("swatch_book"), &SceneBuildOptions::default()).ok().unwrap();
+    let out = build_scene(&scene("swatch_book"), &SceneBuildOptions::default())
+        .ok()
+        .unwrap();
     weft_compiler::output::write_atomically(Path::new("/tmp/scene_out"), &out.files, &[]).unwrap();
 }
 

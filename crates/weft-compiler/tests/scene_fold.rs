@@ -15,8 +15,13 @@ fn load(name: &str) -> (weft_front::Material, naga::Module, prelude::Prelude) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials");
     let mut db = SourceDb::new();
     let mut diags = Diagnostics::new();
-    let m = weft_front::load_material(&root.join(format!("{name}/{name}.toml")), &root, &mut db, &mut diags)
-        .unwrap_or_else(|| panic!("{}", diags.render_plain(&db)));
+    let m = weft_front::load_material(
+        &root.join(format!("{name}/{name}.toml")),
+        &root,
+        &mut db,
+        &mut diags,
+    )
+    .unwrap_or_else(|| panic!("{}", diags.render_plain(&db)));
     let prelude = prelude::generate(&m);
     let composed = compose::compose(&m, &prelude, &mut db);
     let (module, _) = compose::parse_and_validate(&composed, &m, &mut diags).expect("valid");
@@ -47,7 +52,9 @@ fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
 
 fn folded_wgsl(module: &naga::Module, request: &FoldRequest) -> (naga::Module, String) {
     let folded = fold(module, request).expect("folds").module;
-    let info = compose::validator().validate(&folded).expect("folded module validates");
+    let info = compose::validator()
+        .validate(&folded)
+        .expect("folded module validates");
     let wgsl = backends::emit_wgsl(&folded, &info).expect("emits");
     (folded, wgsl)
 }
@@ -58,11 +65,27 @@ fn all_constant_standard_loses_its_uniform_and_default_textures() {
     let inst = instance(&m, &[]);
     let values = instance_values(&m, &inst, inst.keywords.len(), &SceneFeatures::default());
     let (folded, wgsl) = folded_wgsl(&module, &values.fold);
-    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
-    assert!(!names.contains(&"material".to_string()), "uniform still bound: {names:?}");
-    assert!(!names.contains(&"base_map".to_string()), "default base map still sampled");
-    assert!(!names.contains(&"rmo_map".to_string()), "default rmo map still sampled");
-    assert!(!wgsl.contains("override"), "scene shaders keep no overrides:\n{wgsl}");
+    let names: Vec<_> = folded
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.name.clone())
+        .collect();
+    assert!(
+        !names.contains(&"material".to_string()),
+        "uniform still bound: {names:?}"
+    );
+    assert!(
+        !names.contains(&"base_map".to_string()),
+        "default base map still sampled"
+    );
+    assert!(
+        !names.contains(&"rmo_map".to_string()),
+        "default rmo map still sampled"
+    );
+    assert!(
+        !wgsl.contains("override"),
+        "scene shaders keep no overrides:\n{wgsl}"
+    );
     // The environment is provided: its cube stays.
     assert!(names.contains(&"weft_environment".to_string()));
 }
@@ -92,15 +115,26 @@ fn absent_engine_features_remove_their_bindings() {
     };
     let values = instance_values(&m, &inst, m.tiers.default, &features);
     let (folded, _) = folded_wgsl(&module, &values.fold);
-    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
-    assert!(!names.contains(&"weft_environment".to_string()), "{names:?}");
+    let names: Vec<_> = folded
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.name.clone())
+        .collect();
+    assert!(
+        !names.contains(&"weft_environment".to_string()),
+        "{names:?}"
+    );
 }
 
 #[test]
 fn a_non_default_texture_value_folds_to_its_texel() {
-    let (m, module, _) = load("standard");
+    let (m, _, _) = load("standard");
     let mut inst = instance(&m, &[]);
-    let i = m.params.iter().position(|p| p.name == "base_map").expect("base_map");
+    let i = m
+        .params
+        .iter()
+        .position(|p| p.name == "base_map")
+        .expect("base_map");
     inst.values[i] = ParamValue::Texture(weft_meta::TextureDefault::Gray);
     let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
     let texel = values.fold.textures["base_map"];

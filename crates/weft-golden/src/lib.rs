@@ -5,6 +5,7 @@
 //! Shared by the render tests (`tests/render.rs`), `cargo xtask bless` (which
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
+pub mod auto_tier;
 pub mod shading;
 
 use std::path::{Path, PathBuf};

@@ -1,6 +1,6 @@
 //! The lighting environment of the engine interface, computed on the CPU:
 //! a procedural HDR sky cube (gradient, sun disc, ground), its GGX-prefiltered
-//! mip chain, its L2 SH irradiance and the toolchain's split-sum LUT.
+//! mip chain and its L2 SH irradiance (the toolchain's LUTs: `luts.rs`).
 //!
 //! Everything is deterministic: fixed sample sets (Hammersley), f64
 //! accumulation, no threads.
@@ -8,10 +8,10 @@
 //! Cube faces follow the Vulkan/WebGPU convention (+X, -X, +Y, -Y, +Z, -Z;
 //! texel row 0 at the top of each face). World +Y is up.
 
-use crate::error::{Error, Result};
 use crate::math::Vec3;
 use std::f64::consts::PI;
-use std::path::Path;
+// The probe (probe.rs) takes the tables from here with the environment.
+pub(crate) use crate::luts::Luts;
 
 /// One mip level of a cube: 6 faces of `size * size` linear RGB texels.
 #[derive(Clone, Debug, PartialEq)]
@@ -571,143 +571,6 @@ fn cross64(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
         a[2] * b[0] - a[0] * b[2],
         a[0] * b[1] - a[1] * b[0],
     ]
-}
-
-/// Location of the split-sum LUT under a generated folder (weft-compiler's
-/// `SPLIT_SUM_LUT_PATH`).
-pub const SPLIT_SUM_LUT_FILE: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
-/// Location of the Charlie sheen albedo LUT under a generated folder
-/// (weft-compiler's `SHEEN_LUT_PATH`).
-pub const SHEEN_LUT_FILE: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
-
-/// The generated folder of a material's metadata: `<meta dir>/..`.
-fn generated_dir(meta_path: &Path) -> &Path {
-    meta_path
-        .parent()
-        .and_then(Path::parent)
-        .unwrap_or(Path::new("."))
-}
-
-fn read_lut(path: &Path) -> Result<Vec<u8>> {
-    std::fs::read(path).map_err(|e| {
-        let hint = if e.kind() == std::io::ErrorKind::NotFound {
-            " (run `cargo xtask regenerate` or `weft build` to bake it)"
-        } else {
-            ""
-        };
-        Error::Io {
-            path: path.to_path_buf(),
-            source: std::io::Error::new(e.kind(), format!("{e}{hint}")),
-        }
-    })
-}
-
-fn square_size(len: usize, bytes_per_texel: usize) -> std::result::Result<u32, String> {
-    let texels = len / bytes_per_texel;
-    let size = (texels as f64).sqrt().round() as u32;
-    if !len.is_multiple_of(bytes_per_texel) || (size * size) as usize != texels || size == 0 {
-        return Err(format!(
-            "{len} bytes is not a square table of {bytes_per_texel}-byte texels"
-        ));
-    }
-    Ok(size)
-}
-
-fn half_at(bytes: &[u8], i: usize) -> f32 {
-    half::f16::from_le_bytes([bytes[i], bytes[i + 1]]).to_f32()
-}
-
-/// The toolchain-baked split-sum LUT: `size * size` little-endian f16 (scale,
-/// bias) pairs, row = roughness, column = N.V (an `Rg16Float` texture).
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrdfLut {
-    pub size: u32,
-    pub bytes: Vec<u8>,
-}
-
-impl BrdfLut {
-    pub fn load(path: impl AsRef<Path>) -> Result<BrdfLut> {
-        let path = path.as_ref();
-        BrdfLut::from_bytes(read_lut(path)?)
-            .map_err(|m| Error::Metadata(format!("{}: {m}", path.display())))
-    }
-
-    pub fn from_bytes(bytes: Vec<u8>) -> std::result::Result<BrdfLut, String> {
-        Ok(BrdfLut {
-            size: square_size(bytes.len(), 4)?,
-            bytes,
-        })
-    }
-
-    /// The LUT next to a material's metadata: `<meta dir>/../luts/...`.
-    pub fn for_metadata(meta_path: impl AsRef<Path>) -> Result<BrdfLut> {
-        BrdfLut::load(generated_dir(meta_path.as_ref()).join(SPLIT_SUM_LUT_FILE))
-    }
-
-    /// (scale, bias) at texel (column = N.V index, row = roughness index).
-    pub fn texel(&self, col: u32, row: u32) -> [f32; 2] {
-        let i = ((row * self.size + col) * 4) as usize;
-        [half_at(&self.bytes, i), half_at(&self.bytes, i + 2)]
-    }
-}
-
-/// The toolchain-baked Charlie sheen albedo LUT: `size * size` little-endian
-/// f16, row = sheen roughness, column = N.V (an `R16Float` texture).
-#[derive(Clone, Debug, PartialEq)]
-pub struct SheenLut {
-    pub size: u32,
-    pub bytes: Vec<u8>,
-}
-
-impl SheenLut {
-    pub fn load(path: impl AsRef<Path>) -> Result<SheenLut> {
-        let path = path.as_ref();
-        let bytes = read_lut(path)?;
-        let size = square_size(bytes.len(), 2)
-            .map_err(|m| Error::Metadata(format!("{}: {m}", path.display())))?;
-        Ok(SheenLut { size, bytes })
-    }
-
-    /// E at texel (column = N.V index, row = roughness index).
-    pub fn texel(&self, col: u32, row: u32) -> f32 {
-        half_at(&self.bytes, ((row * self.size + col) * 2) as usize)
-    }
-}
-
-/// The lookup tables group 0 of the engine interface binds.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Luts {
-    /// `weft_brdf_lut` (required).
-    pub brdf: BrdfLut,
-    /// `weft_sheen_lut`; only variants that bind it need it.
-    pub sheen: Option<SheenLut>,
-}
-
-impl Luts {
-    /// The tables of a generated folder (`generated/luts/...`); the sheen
-    /// table is optional (toolchains before it did not bake one).
-    pub fn load_dir(generated: impl AsRef<Path>) -> Result<Luts> {
-        let dir = generated.as_ref();
-        let brdf = BrdfLut::load(dir.join(SPLIT_SUM_LUT_FILE))?;
-        let sheen_path = dir.join(SHEEN_LUT_FILE);
-        let sheen = if sheen_path.exists() {
-            Some(SheenLut::load(sheen_path)?)
-        } else {
-            None
-        };
-        Ok(Luts { brdf, sheen })
-    }
-
-    /// The tables next to a material's metadata (`<meta dir>/../luts/`).
-    pub fn for_metadata(meta_path: impl AsRef<Path>) -> Result<Luts> {
-        Luts::load_dir(generated_dir(meta_path.as_ref()))
-    }
-}
-
-impl From<BrdfLut> for Luts {
-    fn from(brdf: BrdfLut) -> Luts {
-        Luts { brdf, sheen: None }
-    }
 }
 
 #[cfg(test)]

@@ -30,6 +30,13 @@ pub enum Error {
     Metadata(String),
     /// wgpu reported an error (device creation, shader, pipeline, readback).
     Gpu(String),
+    /// An error loading or drawing a scene: the scene file and, when one is
+    /// to blame, the instance.
+    Scene {
+        file: std::path::PathBuf,
+        instance: Option<String>,
+        source: Box<Error>,
+    },
 }
 
 pub type Result<T> = std::result::Result<T, Error>;
@@ -56,6 +63,17 @@ impl fmt::Display for Error {
             Error::Io { path, source } => write!(f, "{}: {source}", path.display()),
             Error::Metadata(m) => write!(f, "metadata: {m}"),
             Error::Gpu(m) => write!(f, "gpu: {m}"),
+            Error::Scene {
+                file,
+                instance,
+                source,
+            } => {
+                write!(f, "{}: ", file.display())?;
+                if let Some(i) = instance {
+                    write!(f, "instance `{i}`: ")?;
+                }
+                write!(f, "{source}")
+            }
         }
     }
 }
@@ -64,6 +82,7 @@ impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             Error::Io { source, .. } => Some(source),
+            Error::Scene { source, .. } => Some(source.as_ref()),
             _ => None,
         }
     }

@@ -1,5 +1,6 @@
-//! weft render runtime: draws generated material variants through wgpu from
-//! their metadata alone (`<name>.meta.json` plus the files it lists).
+//! weft render runtime: draws generated material variants and built scenes
+//! through wgpu from their metadata alone (`<name>.meta.json` or
+//! `<scene>.scene.json` plus the files it lists).
 //!
 //! ```no_run
 //! use weft_render::*;
@@ -13,40 +14,74 @@
 //! # Ok::<(), weft_render::Error>(())
 //! ```
 //!
+//! A built scene (`weft build --scene`) is drawn from its `.scene.json`
+//! alone, every instance with its specialised shader; the same scene drawn
+//! with the library's generic variants ([`SceneShaders::Library`]) is the
+//! comparison:
+//!
+//! ```no_run
+//! use weft_render::*;
+//! let scene = SceneFile::load("generated/scenes/fitting_room/fitting_room.scene.json")?;
+//! let luts = Luts::for_scene(&scene.path)?;
+//! let mut renderer = Renderer::new(Gpu::new()?, &EnvironmentMaps::sky(&SkyParams::default()), &luts)?;
+//! let options = RenderOptions::default();
+//! let prepared = renderer.prepare_scene(&scene, &SceneShaders::Specialised, &options)?;
+//! let image = renderer.render_scene(&prepared, &options)?; // builds no pipeline
+//! # Ok::<(), weft_render::Error>(())
+//! ```
+//!
 //! Conventions: world +Y up, right-handed, counter-clockwise front faces,
 //! WebGPU clip space. The environment cube's mip m holds GGX-prefiltered
 //! radiance for the roughness that `weft_specular_mip` (lighting.wgsl) maps
 //! to m (see [`MipRoughness`]). Output is linear HDR ([`HdrImage`]); tone
 //! mapping happens on the CPU.
 
+mod draw;
 mod environment;
 mod error;
 mod gpu;
 mod image;
+mod luts;
 mod material;
 pub mod math;
+mod pipelines;
 mod preview;
 pub mod probe;
 mod renderer;
+mod resources;
 mod scene;
+mod scene_draw;
+mod scene_library;
+mod tiles;
 mod timing;
+mod uniform;
+mod values;
 
 pub use environment::{
-    BrdfLut, CubeLevel, EnvironmentMaps, Luts, MipRoughness, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE,
-    SheenLut, SkyParams, cube_direction, cube_face_uv, project_sh, sh_basis, texel_solid_angle,
+    CubeLevel, EnvironmentMaps, MipRoughness, SkyParams, cube_direction, cube_face_uv, project_sh,
+    sh_basis, texel_solid_angle,
 };
 pub use error::{Error, NO_ADAPTER_HINT, Result};
 pub use gpu::Gpu;
 pub use image::{HdrImage, Tonemap, encode_png, encode_srgb};
-pub use material::{
-    CurveValue, Material, ResolvedVariant, StoredValue, TextureValue, Value, bake_gradient,
-    eval_curve, linear_to_srgb, sample_curve, srgb_to_linear,
-};
-pub use preview::{MaterialOptions, PreviewOptions, render_preview};
+pub use luts::{BrdfLut, Luts, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE, SheenLut};
+pub use material::{Material, ResolvedVariant};
+pub use preview::{MaterialOptions, PreviewOptions, render_preview, render_scene_preview};
 pub use renderer::{
     Background, ColorFormat, PreparedMaterial, RenderOptions, Renderer, ShaderLanguage, Tile,
 };
+pub use resources::object_uniform;
 pub use scene::{Camera, Light, Mesh, Scene, SceneKind};
+pub use scene_draw::{
+    DrawRef, PreparedScene, SceneFile, SceneLighting, SceneShaders, instance_model, scene_camera,
+    scene_draw_order, scene_instance_count,
+};
+pub use scene_library::configure_instance_material;
 pub use timing::{FrameTimer, FrameTimes, TimingOptions};
+pub use uniform::pack_uniform_values;
+pub use values::{
+    CurveValue, StoredValue, TextureValue, Value, bake_gradient, eval_curve, linear_to_srgb,
+    sample_curve, srgb_to_linear,
+};
 pub use weft_meta;
 pub use wgpu;

@@ -1,14 +1,17 @@
 //! One-call previews: configure a material from textual options (as the
-//! `weft preview` command and a gallery take them) and render a built-in scene.
+//! `weft preview` command and a gallery take them) and render a built-in
+//! scene, or render a whole built scene.
 
-use crate::environment::{EnvironmentMaps, Luts, SkyParams};
+use crate::environment::{EnvironmentMaps, SkyParams};
 use crate::error::{Error, Result};
 use crate::gpu::Gpu;
 use crate::image::HdrImage;
+use crate::luts::Luts;
 use crate::material::Material;
 use crate::math::{self, Vec3};
 use crate::renderer::{Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage};
 use crate::scene::{Scene, SceneKind};
+use crate::scene_draw::{SceneFile, SceneShaders};
 
 /// Material selection and values, applied in this order: preset, variant,
 /// tier, keywords, parameter values.
@@ -109,6 +112,40 @@ pub fn render_preview(
     luts: &Luts,
     options: &PreviewOptions,
 ) -> Result<(HdrImage, String)> {
+    let (mut renderer, adapter) = preview_renderer(luts, options, &options.sky_params())?;
+    let image = renderer.render(material, &options.scene(), &options.render_options())?;
+    Ok((image, adapter))
+}
+
+/// Renders a whole built scene (every instance, `shaders` choosing the
+/// specialised or the library shaders) in a fresh renderer, under the sky
+/// with its sun where the scene's light is (`options.light_direction`
+/// overrides it; `options.scene` is not used). Returns the linear image and
+/// the adapter description.
+pub fn render_scene_preview(
+    scene: &SceneFile,
+    shaders: &SceneShaders,
+    luts: &Luts,
+    options: &PreviewOptions,
+) -> Result<(HdrImage, String)> {
+    let mut scene = scene.clone();
+    if let Some(d) = options.light_direction {
+        scene.lighting.light.direction = math::normalize(d);
+    }
+    let mut sky = options.sky;
+    sky.sun_direction = scene.lighting.light.direction;
+    let (mut renderer, adapter) = preview_renderer(luts, options, &sky)?;
+    let render = options.render_options();
+    let prepared = renderer.prepare_scene(&scene, shaders, &render)?;
+    let image = renderer.render_scene(&prepared, &render)?;
+    Ok((image, adapter))
+}
+
+fn preview_renderer(
+    luts: &Luts,
+    options: &PreviewOptions,
+    sky: &SkyParams,
+) -> Result<(Renderer, String)> {
     if options.width == 0 || options.height == 0 || options.width > 8192 || options.height > 8192 {
         return Err(Error::InvalidValue {
             name: "size".into(),
@@ -120,8 +157,6 @@ pub fn render_preview(
     }
     let gpu = Gpu::new()?;
     let adapter = gpu.describe();
-    let env = EnvironmentMaps::sky(&options.sky_params());
-    let mut renderer = Renderer::new(gpu, &env, luts)?;
-    let image = renderer.render(material, &options.scene(), &options.render_options())?;
-    Ok((image, adapter))
+    let env = EnvironmentMaps::sky(sky);
+    Ok((Renderer::new(gpu, &env, luts)?, adapter))
 }

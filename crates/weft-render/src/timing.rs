@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::image::HdrImage;
 use crate::renderer::{PreparedMaterial, RenderOptions, Renderer};
 use crate::scene::Scene;
+use crate::scene_draw::PreparedScene;
 
 /// What measured the frame times.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -104,6 +105,36 @@ impl Renderer {
         options: &RenderOptions,
         timing: &TimingOptions,
     ) -> Result<FrameTimes> {
+        self.time_draws(timing, |r, frames, timestamps| {
+            r.draw_repeated(prepared, scene, options, frames, true, timestamps)
+        })
+    }
+
+    /// [`Renderer::time_frames`] for a prepared scene: every frame draws all
+    /// of its instances.
+    pub fn time_scene_frames(
+        &mut self,
+        prepared: &PreparedScene,
+        options: &RenderOptions,
+        timing: &TimingOptions,
+    ) -> Result<FrameTimes> {
+        self.time_draws(timing, |r, frames, timestamps| {
+            r.draw_scene(prepared, options, frames, true, timestamps)
+        })
+    }
+
+    /// Times `draw(renderer, frames, timestamps)`, which draws that many
+    /// timed frames (waiting for each; CPU times returned) and writes pass
+    /// timestamps at 2i and 2i+1 when given a query set.
+    fn time_draws(
+        &mut self,
+        timing: &TimingOptions,
+        mut draw: impl FnMut(
+            &mut Renderer,
+            u32,
+            Option<&wgpu::QuerySet>,
+        ) -> Result<(HdrImage, Vec<f64>)>,
+    ) -> Result<FrameTimes> {
         let total = timing.warmup + timing.frames.max(1);
         if 2 * total > MAX_QUERIES {
             return Err(Error::InvalidValue {
@@ -112,7 +143,7 @@ impl Renderer {
             });
         }
         if timing.force_cpu_timer || !self.has_timestamp_queries() {
-            let (image, ms) = self.draw_repeated(prepared, scene, options, total, true, None)?;
+            let (image, ms) = draw(self, total, None)?;
             let ms = ms[ms.len() - timing.frames.max(1) as usize..].to_vec();
             return Ok(FrameTimes {
                 timer: FrameTimer::CpuWall,
@@ -134,8 +165,7 @@ impl Renderer {
             usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
             mapped_at_creation: false,
         });
-        let (image, _) =
-            self.draw_repeated(prepared, scene, options, total, true, Some(&query_set))?;
+        let (image, _) = draw(self, total, Some(&query_set))?;
         let gpu = self.gpu();
         let mut enc = gpu.device.create_command_encoder(&Default::default());
         enc.resolve_query_set(&query_set, 0..count, &resolve, 0);

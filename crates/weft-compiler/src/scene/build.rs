@@ -94,9 +94,10 @@ fn decide_tiers(
                     out.push((0, None));
                     continue;
                 };
-                if !libraries.contains_key(&inst.material) {
-                    let compiled = compile_material(m, db, diags)?;
-                    libraries.insert(inst.material, compiled);
+                if let std::collections::btree_map::Entry::Vacant(e) =
+                    libraries.entry(inst.material)
+                {
+                    e.insert(compile_material(m, db, diags)?);
                 }
                 let values = instance_values(m, inst, m.tiers.default, &scene.manifest.features);
                 let mut request_values = values.uniform.clone();
@@ -112,21 +113,22 @@ fn decide_tiers(
                     screen_size: *screen_size,
                 };
                 match chooser.choose(&request) {
-                    Ok(decision) => {
-                        match m.tiers.values.iter().position(|t| *t == decision.tier) {
-                            Some(t) => out.push((t, Some(decision.record))),
-                            None => {
-                                diags.push(instance_error(
-                                    scene,
-                                    inst,
-                                    "auto-tier",
-                                    format!("the tier chooser picked `{}`, which `{}` does not have", decision.tier, m.name),
-                                    "this instance",
-                                ));
-                                out.push((0, None));
-                            }
+                    Ok(decision) => match m.tiers.values.iter().position(|t| *t == decision.tier) {
+                        Some(t) => out.push((t, Some(decision.record))),
+                        None => {
+                            diags.push(instance_error(
+                                scene,
+                                inst,
+                                "auto-tier",
+                                format!(
+                                    "the tier chooser picked `{}`, which `{}` does not have",
+                                    decision.tier, m.name
+                                ),
+                                "this instance",
+                            ));
+                            out.push((0, None));
                         }
-                    }
+                    },
                     Err(e) => {
                         diags.push(
                             Diagnostic::error()
@@ -299,7 +301,11 @@ pub fn build_resolved_scene(
             if shader.reads.contains(name) {
                 continue;
             }
-            let span = inst.dynamic_spans.get(k).cloned().unwrap_or(inst.span.clone());
+            let span = inst
+                .dynamic_spans
+                .get(k)
+                .cloned()
+                .unwrap_or(inst.span.clone());
             diags.push(
                 Diagnostic::warning()
                     .with_code("unread-dynamic")
@@ -328,7 +334,11 @@ pub fn build_resolved_scene(
                 shader: built.compiled.shader.clone(),
             });
         }
-        let shader = &shaders.iter().find(|s| s.id == id).expect("just added").shader;
+        let shader = &shaders
+            .iter()
+            .find(|s| s.id == id)
+            .expect("just added")
+            .shader;
         let uniform_values = shader
             .material_uniform
             .as_ref()
@@ -336,7 +346,12 @@ pub fn build_resolved_scene(
                 layout
                     .members
                     .iter()
-                    .filter_map(|mem| Some((mem.name.clone(), built.values.uniform.get(&mem.name)?.clone())))
+                    .filter_map(|mem| {
+                        Some((
+                            mem.name.clone(),
+                            built.values.uniform.get(&mem.name)?.clone(),
+                        ))
+                    })
                     .collect()
             })
             .unwrap_or_default();
@@ -374,7 +389,11 @@ pub fn build_resolved_scene(
             variant: variant.clone(),
             shader: id,
             constants: built.values.constants,
-            dynamic: inst.dynamic.iter().map(|&i| m.params[i].name.clone()).collect(),
+            dynamic: inst
+                .dynamic
+                .iter()
+                .map(|&i| m.params[i].name.clone())
+                .collect(),
             uniform_values,
             textures,
             passes: metadata::passes(m),

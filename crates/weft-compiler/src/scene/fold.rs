@@ -61,10 +61,11 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
         (g.space == AddressSpace::Uniform && g.name.as_deref() == Some(&request.uniform_var))
             .then_some(h)
     });
-    let members: Vec<StructMember> = match uniform.map(|h| &module.types[module.global_variables[h].ty].inner) {
-        Some(TypeInner::Struct { members, .. }) => members.clone(),
-        _ => Vec::new(),
-    };
+    let members: Vec<StructMember> =
+        match uniform.map(|h| &module.types[module.global_variables[h].ty].inner) {
+            Some(TypeInner::Struct { members, .. }) => members.clone(),
+            _ => Vec::new(),
+        };
     let member_index = |name: &str| members.iter().position(|m| m.name.as_deref() == Some(name));
 
     // Members read through a path `fold` cannot see (a dynamic index, the
@@ -100,18 +101,38 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     let mut constants = ConstantPool::default();
     let mut fns = std::mem::take(&mut module.functions);
     for (_, f) in fns.iter_mut() {
-        replace_reads(&mut module, f, uniform, &members, &folded_members, &textures, &mut constants)?;
+        replace_reads(
+            &mut module,
+            f,
+            uniform,
+            &members,
+            &folded_members,
+            &textures,
+            &mut constants,
+        )?;
     }
     module.functions = fns;
     let mut eps = std::mem::take(&mut module.entry_points);
     for ep in eps.iter_mut() {
-        replace_reads(&mut module, &mut ep.function, uniform, &members, &folded_members, &textures, &mut constants)?;
+        replace_reads(
+            &mut module,
+            &mut ep.function,
+            uniform,
+            &members,
+            &folded_members,
+            &textures,
+            &mut constants,
+        )?;
     }
     module.entry_points = eps;
 
     // 2. Overrides -> literals, and the constant `if`s that alone decide pruned.
     let bindings = crate::specialise::Bindings {
-        values: request.overrides.iter().map(|(k, v)| (k.clone(), *v)).collect(),
+        values: request
+            .overrides
+            .iter()
+            .map(|(k, v)| (k.clone(), *v))
+            .collect(),
     };
     let module = crate::specialise::specialise(&module, &bindings);
 
@@ -227,7 +248,9 @@ fn const_expr(
 ) -> Result<Handle<Expression>, String> {
     let mut lit = |c: usize| -> Result<Handle<Expression>, String> {
         let l = scalar_literal(v, c).ok_or_else(|| format!("value {v:?} has no component {c}"))?;
-        Ok(module.global_expressions.append(Expression::Literal(l), Span::UNDEFINED))
+        Ok(module
+            .global_expressions
+            .append(Expression::Literal(l), Span::UNDEFINED))
     };
     match (&module.types[ty].inner, component) {
         (TypeInner::Scalar(_), Some(c)) => lit(c as usize),
@@ -268,7 +291,9 @@ fn replace_reads(
                     continue;
                 };
                 if rest.len() > 1 {
-                    return Err(format!("unexpected access depth into uniform member {member}"));
+                    return Err(format!(
+                        "unexpected access depth into uniform member {member}"
+                    ));
                 }
                 if let Some(&c) = pool.by_path.get(&path) {
                     Expression::Constant(c)
@@ -426,13 +451,11 @@ fn shrink_uniform(module: &mut Module, uniform_var: &str) -> Result<(), String> 
     for f in functions(module) {
         for (_, e) in f.expressions.iter() {
             match *e {
-                Expression::AccessIndex { base, index }
-                    if matches!(f.expressions[base], Expression::GlobalVariable(g) if g == u) =>
+                Expression::AccessIndex { base, index } if matches!(f.expressions[base], Expression::GlobalVariable(g) if g == u) =>
                 {
                     used.insert(index);
                 }
-                Expression::Load { pointer }
-                    if matches!(f.expressions[pointer], Expression::GlobalVariable(g) if g == u) =>
+                Expression::Load { pointer } if matches!(f.expressions[pointer], Expression::GlobalVariable(g) if g == u) =>
                 {
                     return Ok(()); // the whole struct is read: keep its layout
                 }
@@ -526,7 +549,13 @@ fn evaluate_constants(module: &mut Module, info: &naga::valid::ModuleInfo) {
     module.functions = fns;
     let mut eps = std::mem::take(&mut module.entry_points);
     for (i, ep) in eps.iter_mut().enumerate() {
-        evaluate_function(module, &mut ep.function, info.get_entry_point(i), &mut tracker, &mut layouter);
+        evaluate_function(
+            module,
+            &mut ep.function,
+            info.get_entry_point(i),
+            &mut tracker,
+            &mut layouter,
+        );
     }
     module.entry_points = eps;
 }
@@ -663,7 +692,10 @@ fn remap_operands(e: &mut Expression, map: &HashMap<Handle<Expression>, Handle<E
             ..
         } => {
             m(arg);
-            arg1.iter_mut().chain(arg2.iter_mut()).chain(arg3.iter_mut()).for_each(m);
+            arg1.iter_mut()
+                .chain(arg2.iter_mut())
+                .chain(arg3.iter_mut())
+                .for_each(m);
         }
         _ => {}
     }

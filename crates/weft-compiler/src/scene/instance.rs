@@ -25,7 +25,9 @@ fn member_value(p: &Param, v: &ParamValue) -> Option<(ConstValue, Value)> {
             let i = i32::try_from(*i).ok()?;
             (ConstValue::I32(i), json!(i))
         }
-        (ParamKind::Bool, ParamValue::Bool(b)) => (ConstValue::U32(u32::from(*b)), json!(u32::from(*b))),
+        (ParamKind::Bool, ParamValue::Bool(b)) => {
+            (ConstValue::U32(u32::from(*b)), json!(u32::from(*b)))
+        }
         (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4, ParamValue::Vector(xs)) => (
             ConstValue::F32(xs.iter().map(|x| *x as f32).collect()),
             json!(xs),
@@ -34,10 +36,17 @@ fn member_value(p: &Param, v: &ParamValue) -> Option<(ConstValue, Value)> {
             let c: Vec<f64> = (0..4)
                 .map(|i| {
                     let x = xs.get(i).copied().unwrap_or(1.0);
-                    if i < 3 && !p.hdr { samples::srgb_to_linear(x) } else { x }
+                    if i < 3 && !p.hdr {
+                        samples::srgb_to_linear(x)
+                    } else {
+                        x
+                    }
                 })
                 .collect();
-            (ConstValue::F32(c.iter().map(|x| *x as f32).collect()), json!(c))
+            (
+                ConstValue::F32(c.iter().map(|x| *x as f32).collect()),
+                json!(c),
+            )
         }
         (ParamKind::Curve, ParamValue::Curve(keys)) => {
             let s = samples::sample_curve(keys, p.samples);
@@ -76,10 +85,14 @@ pub fn instance_values(
         };
         fold.overrides.insert(kw.name.clone(), x);
     }
-    fold.overrides
-        .insert(FEATURE_ENVIRONMENT.into(), Literal::Bool(features.environment));
-    fold.overrides
-        .insert(FEATURE_SH_AMBIENT.into(), Literal::Bool(features.sh_ambient));
+    fold.overrides.insert(
+        FEATURE_ENVIRONMENT.into(),
+        Literal::Bool(features.environment),
+    );
+    fold.overrides.insert(
+        FEATURE_SH_AMBIENT.into(),
+        Literal::Bool(features.sh_ambient),
+    );
     fold.overrides.insert(
         FEATURE_DIRECTIONAL_LIGHTS.into(),
         Literal::U32(features.directional_lights),
@@ -99,7 +112,10 @@ pub fn instance_values(
                 constants.insert(p.name.clone(), json);
             }
         }
-        if let Some(st) = members.iter().find(|mem| mem.param == p.name && mem.name != p.name) {
+        if let Some(st) = members
+            .iter()
+            .find(|mem| mem.param == p.name && mem.name != p.name)
+        {
             uniform.insert(st.name.clone(), json!(DEFAULT_ST));
             if !dynamic {
                 fold.members.insert(

@@ -37,19 +37,25 @@ pub fn discover_scenes(dir: &Path) -> std::io::Result<Vec<PathBuf>> {
     Ok(out)
 }
 
+/// Every built scene's files under `scenes/<scene>/`, and the scenes themselves.
+pub type SceneFolderOutput = (BTreeMap<String, Vec<u8>>, Vec<SceneOutput>);
+
 /// Builds every scene manifest in `dir` and returns their files under
 /// `scenes/<scene>/`, ready to merge into a library build's files. Stops at
 /// the first scene with errors.
 pub fn build_scene_folder(
     dir: &Path,
     options: &SceneBuildOptions,
-) -> Result<(BTreeMap<String, Vec<u8>>, Vec<SceneOutput>), (SourceDb, Diagnostics)> {
+) -> Result<SceneFolderOutput, (SourceDb, Diagnostics)> {
     let paths = discover_scenes(dir).map_err(|e| {
         let mut diags = Diagnostics::new();
         diags.push(
             codespan_reporting::diagnostic::Diagnostic::error()
                 .with_code("io")
-                .with_message(format!("cannot read scenes folder `{}`: {e}", dir.display())),
+                .with_message(format!(
+                    "cannot read scenes folder `{}`: {e}",
+                    dir.display()
+                )),
         );
         (SourceDb::new(), diags)
     })?;

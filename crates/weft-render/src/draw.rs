@@ -1,0 +1,362 @@
+//! Recording draws into the offscreen HDR target and reading it back: the
+//! frame uniforms, the sky, the render pass, the colour readback. Materials
+//! and scenes both come here as a list of [`DrawCall`]s.
+
+use crate::error::Result;
+use crate::gpu::Gpu;
+use crate::image::HdrImage;
+use crate::math;
+use crate::renderer::{Background, ColorFormat, DEPTH_FORMAT, RenderOptions, Renderer};
+use crate::resources::{FRAME_SIZE, GpuEnvironment, GpuMesh};
+use crate::scene::{Camera, Light};
+
+const SKY_UNIFORM_SIZE: u64 = 96;
+
+pub(crate) fn sky_uniform_buffer(gpu: &Gpu) -> wgpu::Buffer {
+    crate::resources::uniform_buffer(gpu, "weft sky", SKY_UNIFORM_SIZE)
+}
+
+/// One pass of one object: a pipeline with its bind groups, mesh and
+/// instance count.
+pub(crate) struct DrawCall<'a> {
+    pub pipeline: &'a wgpu::RenderPipeline,
+    pub bind_groups: &'a [Option<wgpu::BindGroup>],
+    pub mesh: &'a GpuMesh,
+    pub instances: u32,
+}
+
+/// Records `draws` in order, setting bind groups and buffers only when
+/// they change. Draws with no instances or no indices are skipped.
+pub(crate) fn record_draws(rp: &mut wgpu::RenderPass, draws: &[DrawCall]) {
+    let mut bound_groups: Option<*const [Option<wgpu::BindGroup>]> = None;
+    let mut bound_mesh: Option<*const GpuMesh> = None;
+    for d in draws {
+        if d.instances == 0 || d.mesh.index_count == 0 {
+            continue;
+        }
+        let mesh: *const GpuMesh = d.mesh;
+        if bound_mesh != Some(mesh) {
+            for (i, b) in d.mesh.vertex_buffers.iter().enumerate() {
+                rp.set_vertex_buffer(i as u32, b.slice(..));
+            }
+            rp.set_index_buffer(d.mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+            bound_mesh = Some(mesh);
+        }
+        let groups: *const [Option<wgpu::BindGroup>] = d.bind_groups;
+        if bound_groups != Some(groups) {
+            for (g, bg) in d.bind_groups.iter().enumerate() {
+                if let Some(bg) = bg {
+                    rp.set_bind_group(g as u32, bg, &[]);
+                }
+            }
+            bound_groups = Some(groups);
+        }
+        rp.set_pipeline(d.pipeline);
+        rp.draw_indexed(0..d.mesh.index_count, 0, 0..d.instances);
+    }
+}
+
+/// Camera, light and environment of one frame (`weft_frame`, and the sky).
+pub(crate) struct FrameView<'a> {
+    pub camera: &'a Camera,
+    pub light: &'a Light,
+    pub env: &'a GpuEnvironment,
+}
+
+/// The `weft_frame` uniform contents (as f32s).
+pub(crate) fn frame_uniform(view: &FrameView, aspect: f32, options: &RenderOptions) -> Vec<f32> {
+    let camera = view.camera;
+    let light_dir = math::normalize(view.light.direction);
+    let mut f: Vec<f32> = Vec::with_capacity((FRAME_SIZE / 4) as usize);
+    f.extend(camera.view_proj(aspect).iter().flatten());
+    f.extend(camera.view().iter().flatten());
+    f.extend(camera.eye);
+    f.push(1.0);
+    f.extend(light_dir);
+    f.push(0.0);
+    f.extend(view.light.radiance);
+    f.push(0.0);
+    for c in &view.env.sh {
+        f.extend(c);
+        f.push(0.0);
+    }
+    f.extend([
+        view.env.mip_count as f32,
+        options.exposure,
+        options.time,
+        0.0,
+    ]);
+    debug_assert_eq!(f.len() * 4, FRAME_SIZE as usize);
+    f
+}
+
+/// What a render pass clears the colour target to (the sky is drawn over black).
+pub(crate) fn clear_color(background: Background) -> wgpu::Color {
+    match background {
+        Background::Color(c) => wgpu::Color {
+            r: f64::from(c[0]),
+            g: f64::from(c[1]),
+            b: f64::from(c[2]),
+            a: f64::from(c[3]),
+        },
+        Background::Sky { .. } => wgpu::Color::BLACK,
+    }
+}
+
+/// A colour and a depth target of one size, and the buffer the colour is
+/// read back through.
+pub(crate) struct RenderTargets {
+    pub width: u32,
+    pub height: u32,
+    format: ColorFormat,
+    color: wgpu::Texture,
+    pub color_view: wgpu::TextureView,
+    pub depth_view: wgpu::TextureView,
+    staging: wgpu::Buffer,
+    row: u32,
+}
+
+impl RenderTargets {
+    pub fn new(device: &wgpu::Device, w: u32, h: u32, format: ColorFormat, label: &str) -> Self {
+        let size = wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        };
+        let target = |label: String, format, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(&label),
+                size,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let color = target(
+            format!("{label} colour"),
+            format.wgpu(),
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
+        let depth = target(
+            format!("{label} depth"),
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
+        let row = (w * format.bytes_per_pixel()).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+            * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(&format!("{label} readback")),
+            size: u64::from(row) * u64::from(h),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        RenderTargets {
+            width: w,
+            height: h,
+            format,
+            color_view: color.create_view(&Default::default()),
+            depth_view: depth.create_view(&Default::default()),
+            color,
+            staging,
+            row,
+        }
+    }
+
+    /// A render pass over both targets: colour `load`, depth cleared to 1.
+    pub fn pass<'e>(
+        &self,
+        enc: &'e mut wgpu::CommandEncoder,
+        label: &str,
+        load: wgpu::LoadOp<wgpu::Color>,
+        timestamp_writes: Option<wgpu::RenderPassTimestampWrites>,
+    ) -> wgpu::RenderPass<'e> {
+        enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &self.color_view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load,
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &self.depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+    }
+
+    /// Copies the colour target into the readback buffer.
+    pub fn copy_out(&self, enc: &mut wgpu::CommandEncoder) {
+        enc.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.color,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &self.staging,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(self.row),
+                    rows_per_image: Some(self.height),
+                },
+            },
+            wgpu::Extent3d {
+                width: self.width,
+                height: self.height,
+                depth_or_array_layers: 1,
+            },
+        );
+    }
+
+    /// Maps the readback buffer (after [`RenderTargets::copy_out`] was submitted).
+    pub fn read(&self, gpu: &Gpu) -> Result<HdrImage> {
+        let bytes = gpu.map_read(&self.staging)?;
+        Ok(HdrImage {
+            width: self.width,
+            height: self.height,
+            pixels: decode_rows(&bytes, self.width, self.height, self.row, self.format),
+        })
+    }
+}
+
+/// Linear RGBA pixels from a padded readback of an Rgba16Float/Rgba32Float target.
+fn decode_rows(bytes: &[u8], w: u32, h: u32, row: u32, format: ColorFormat) -> Vec<[f32; 4]> {
+    let bpp = format.bytes_per_pixel();
+    let mut pixels = Vec::with_capacity((w * h) as usize);
+    for y in 0..h {
+        let line = &bytes[(y * row) as usize..(y * row + w * bpp) as usize];
+        match format {
+            ColorFormat::Rgba16Float => pixels.extend(line.chunks_exact(8).map(|px| {
+                [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32())
+            })),
+            ColorFormat::Rgba32Float => pixels.extend(line.chunks_exact(16).map(|px| {
+                [0, 4, 8, 12].map(|i| f32::from_le_bytes([px[i], px[i + 1], px[i + 2], px[i + 3]]))
+            })),
+        }
+    }
+    pixels
+}
+
+impl Renderer {
+    /// Draws `frames` frames of `draws` over the background into the same
+    /// targets, one submit each, and reads the last one back. With `timed`,
+    /// every frame is waited for and its submit-to-completion CPU time (ms)
+    /// returned; `timestamps` receives pass timestamp writes at 2i and 2i+1
+    /// (see timing.rs). The sky pipeline must exist for a sky background
+    /// ([`Renderer::ensure_sky_pipeline`]): nothing is built here.
+    pub(crate) fn draw_frames(
+        &self,
+        view: &FrameView,
+        draws: &[DrawCall],
+        options: &RenderOptions,
+        frames: u32,
+        timed: bool,
+        timestamps: Option<&wgpu::QuerySet>,
+    ) -> Result<(HdrImage, Vec<f64>)> {
+        let (w, h) = (options.width.max(1), options.height.max(1));
+        self.write_frame(view, w as f32 / h as f32, options);
+        let gpu = &self.gpu;
+        let device = &gpu.device;
+        let targets = RenderTargets::new(device, w, h, options.format, "weft");
+        let sky = match options.background {
+            Background::Sky { .. } => Some(self.sky_bind_group(&view.env.view)),
+            Background::Color(_) => None,
+        };
+        let clear = clear_color(options.background);
+        let frames = frames.max(1);
+        let mut cpu_ms = Vec::new();
+        for frame in 0..frames {
+            let last = frame + 1 == frames;
+            let commands = gpu.checked("drawing", || {
+                let mut enc = device.create_command_encoder(&Default::default());
+                {
+                    let writes = timestamps.map(|q| wgpu::RenderPassTimestampWrites {
+                        query_set: q,
+                        beginning_of_pass_write_index: Some(2 * frame),
+                        end_of_pass_write_index: Some(2 * frame + 1),
+                    });
+                    let mut rp =
+                        targets.pass(&mut enc, "weft render", wgpu::LoadOp::Clear(clear), writes);
+                    if let (Some(bg), Some(p)) = (&sky, self.sky_pipelines.get(&options.format)) {
+                        rp.set_pipeline(p);
+                        rp.set_bind_group(0, bg, &[]);
+                        rp.draw(0..3, 0..1);
+                    }
+                    record_draws(&mut rp, draws);
+                }
+                if last {
+                    targets.copy_out(&mut enc);
+                }
+                enc.finish()
+            })?;
+            let started = std::time::Instant::now();
+            gpu.queue.submit([commands]);
+            if timed {
+                gpu.wait()?;
+                cpu_ms.push(started.elapsed().as_secs_f64() * 1e3);
+            }
+        }
+        gpu.take_uncaptured("drawing")?;
+        Ok((targets.read(gpu)?, cpu_ms))
+    }
+
+    /// Writes `weft_frame` and the sky's uniform for one frame.
+    fn write_frame(&self, view: &FrameView, aspect: f32, options: &RenderOptions) {
+        let f = frame_uniform(view, aspect, options);
+        self.gpu
+            .queue
+            .write_buffer(&self.frame_buffer, 0, bytemuck::cast_slice(&f));
+        let view_proj = view.camera.view_proj(aspect);
+        let inv = math::inverse(&view_proj).unwrap_or(math::IDENTITY);
+        let mip = match options.background {
+            Background::Sky { mip } => mip,
+            Background::Color(_) => 0.0,
+        };
+        let mut s: Vec<f32> = Vec::with_capacity((SKY_UNIFORM_SIZE / 4) as usize);
+        s.extend(inv.iter().flatten());
+        s.extend(view.camera.eye);
+        s.push(1.0);
+        s.extend([mip, 0.0, 0.0, 0.0]);
+        self.gpu
+            .queue
+            .write_buffer(&self.sky_buffer, 0, bytemuck::cast_slice(&s));
+    }
+
+    fn sky_bind_group(&self, env: &wgpu::TextureView) -> wgpu::BindGroup {
+        self.gpu
+            .device
+            .create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("weft sky"),
+                layout: &self.sky_layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: self.sky_buffer.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(env),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::Sampler(&self.env_sampler),
+                    },
+                ],
+            })
+    }
+}

@@ -1,0 +1,468 @@
+//! Shader modules, bind group layouts, vertex layouts and render pipelines
+//! built from a `VariantShader` (a library variant's or a scene shader's)
+//! and the render state of its passes. Nothing here knows where the
+//! shader's values come from.
+
+use crate::error::{Error, Result, io_err};
+use crate::gpu::Gpu;
+use crate::renderer::{ColorFormat, DEPTH_FORMAT, Renderer, ShaderLanguage};
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::sync::Arc;
+use weft_meta::{
+    BindingKind, BlendMode, CullMode, DepthTest, Pass, Stage, VariantShader, VertexInput,
+};
+
+/// Which shader to build pipelines from, and how.
+pub(crate) struct ShaderInput<'a> {
+    /// The variant id or scene shader id (labels, error messages).
+    pub label: &'a str,
+    /// Folder the shader's file paths are relative to.
+    pub dir: &'a Path,
+    pub shader: &'a VariantShader,
+    /// `Some`: this SPIR-V file (relative to `dir`); `None`: the WGSL file.
+    pub spirv_file: Option<String>,
+    /// Values of the WGSL `override`s.
+    pub constants: Vec<(String, f64)>,
+    /// Identifies the module's contents for the pipeline cache (the
+    /// language, format, constants and passes are added to it).
+    pub cache_id: String,
+}
+
+impl ShaderInput<'_> {
+    pub fn language(&self) -> ShaderLanguage {
+        match self.spirv_file {
+            Some(_) => ShaderLanguage::SpirV,
+            None => ShaderLanguage::Wgsl,
+        }
+    }
+}
+
+pub(crate) struct PassPipeline {
+    pub pass: Pass,
+    pub pipeline: wgpu::RenderPipeline,
+}
+
+/// Pipelines (one per pass, in the order given) and layouts of one shader
+/// for one language, format and set of constants.
+pub(crate) struct VariantPipelines {
+    pub layouts: Vec<Option<wgpu::BindGroupLayout>>,
+    pub passes: Vec<PassPipeline>,
+    pub vertex_inputs: Vec<VertexInput>,
+}
+
+impl Renderer {
+    /// The pipelines of `input` for `passes` (in that order), from the cache
+    /// or built now (counted in [`Renderer::pipelines_created`]).
+    pub(crate) fn variant_pipelines(
+        &mut self,
+        input: &ShaderInput,
+        passes: &[Pass],
+        format: ColorFormat,
+    ) -> Result<Arc<VariantPipelines>> {
+        let states: Vec<_> = passes
+            .iter()
+            .map(|p| (&p.name, &p.vertex_entry, &p.fragment_entry, &p.render_state))
+            .collect();
+        let key = format!(
+            "{}|{:?}|{:?}|{:?}|{:?}|{:?}",
+            input.cache_id,
+            input.language(),
+            format,
+            input.constants,
+            input.spirv_file,
+            states
+        );
+        if let Some(p) = self.cache.get(&key) {
+            return Ok(p.clone());
+        }
+        let p = Arc::new(build_pipelines(&self.gpu, input, passes, format)?);
+        self.pipelines_created += p.passes.len() as u64;
+        self.cache.insert(key, p.clone());
+        Ok(p)
+    }
+
+    /// Builds the sky pipeline for `format` unless it exists.
+    pub(crate) fn ensure_sky_pipeline(&mut self, format: ColorFormat) -> Result<()> {
+        if !self.sky_pipelines.contains_key(&format) {
+            let p = build_sky_pipeline(&self.gpu, &self.sky_layout, &self.sky_module, format)?;
+            self.pipelines_created += 1;
+            self.sky_pipelines.insert(format, p);
+        }
+        Ok(())
+    }
+}
+
+/// The shader source of `input`: the WGSL text, or the SPIR-V module read
+/// through naga with weft's Vulkan y flip undone.
+fn shader_source(input: &ShaderInput) -> Result<wgpu::ShaderSource<'static>> {
+    Ok(match &input.spirv_file {
+        None => {
+            let rel = &input
+                .shader
+                .files
+                .get("wgsl")
+                .and_then(|f| f.first())
+                .ok_or_else(|| {
+                    Error::Metadata(format!("variant `{}` lists no WGSL file", input.label))
+                })?
+                .path;
+            let path = input.dir.join(rel);
+            let text = std::fs::read_to_string(&path).map_err(io_err(&path))?;
+            wgpu::ShaderSource::Wgsl(text.into())
+        }
+        Some(rel) => {
+            let path = input.dir.join(rel);
+            let bytes = std::fs::read(&path).map_err(io_err(&path))?;
+            if bytes.len() % 4 != 0 || bytes.len() < 20 {
+                return Err(Error::Metadata(format!(
+                    "{} is not a SPIR-V module",
+                    path.display()
+                )));
+            }
+            // weft's SPIR-V is Vulkan-native: the compiler negates the
+            // clip-space y (naga's ADJUST_COORDINATE_SPACE), while wgpu
+            // expects y up (its own SPIR-V path parses with
+            // `adjust_coordinate_space: false`). naga's SPIR-V front end
+            // with the adjustment on undoes exactly that negation, so the
+            // module rasterises like the WGSL file.
+            let options = wgpu::naga::front::spv::Options {
+                adjust_coordinate_space: true,
+                strict_capabilities: true,
+                block_ctx_dump_prefix: None,
+            };
+            let module = wgpu::naga::front::spv::parse_u8_slice(&bytes, &options).map_err(|e| {
+                Error::Gpu(format!("{}: SPIR-V does not parse: {e}", path.display()))
+            })?;
+            wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module))
+        }
+    })
+}
+
+fn build_pipelines(
+    gpu: &Gpu,
+    input: &ShaderInput,
+    passes: &[Pass],
+    format: ColorFormat,
+) -> Result<VariantPipelines> {
+    let device = &gpu.device;
+    let (shader, label) = (input.shader, input.label);
+    let source = shader_source(input)?;
+    let module = gpu.checked(&format!("shader module of `{label}`"), || {
+        device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(label),
+            source,
+        })
+    })?;
+
+    // Bind group layouts from the reflected bindings.
+    let max_group = shader.bindings.iter().map(|b| b.group).max();
+    let mut layouts: Vec<Option<wgpu::BindGroupLayout>> = Vec::new();
+    if let Some(max_group) = max_group {
+        for g in 0..=max_group {
+            let entries = shader
+                .bindings
+                .iter()
+                .filter(|b| b.group == g)
+                .map(|b| layout_entry(b.binding, stages(&b.stages), b.kind))
+                .collect::<Result<Vec<_>>>()?;
+            let layout = gpu.checked("bind group layout", || {
+                device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                    label: Some(&format!("group {g}")),
+                    entries: &entries,
+                })
+            })?;
+            layouts.push(Some(layout));
+        }
+    }
+    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> =
+        layouts.iter().map(Option::as_ref).collect();
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: &layout_refs,
+        immediate_size: 0,
+    });
+
+    // One vertex buffer per input, at slot = position in the list.
+    let attributes = shader
+        .vertex_inputs
+        .iter()
+        .map(|vi| {
+            Ok([wgpu::VertexAttribute {
+                format: vertex_format(&vi.format)?,
+                offset: 0,
+                shader_location: vi.location,
+            }])
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let buffers: Vec<Option<wgpu::VertexBufferLayout>> = attributes
+        .iter()
+        .map(|a| {
+            Some(wgpu::VertexBufferLayout {
+                array_stride: a[0].format.size(),
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: a,
+            })
+        })
+        .collect();
+
+    let constant_refs: Vec<(&str, f64)> = input
+        .constants
+        .iter()
+        .map(|(k, v)| (k.as_str(), *v))
+        .collect();
+    let mut out = Vec::new();
+    for pass in passes {
+        let rs = &pass.render_state;
+        let pipeline = gpu.checked(
+            &format!("pipeline of pass `{}` of `{label}`", pass.name),
+            || {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some(&pass.name),
+                    layout: Some(&pipeline_layout),
+                    vertex: wgpu::VertexState {
+                        module: &module,
+                        entry_point: Some(&pass.vertex_entry),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &constant_refs,
+                            ..Default::default()
+                        },
+                        buffers: &buffers,
+                    },
+                    primitive: wgpu::PrimitiveState {
+                        topology: wgpu::PrimitiveTopology::TriangleList,
+                        front_face: wgpu::FrontFace::Ccw,
+                        cull_mode: match rs.cull {
+                            CullMode::None => None,
+                            CullMode::Front => Some(wgpu::Face::Front),
+                            CullMode::Back => Some(wgpu::Face::Back),
+                        },
+                        ..Default::default()
+                    },
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(rs.depth_write),
+                        depth_compare: Some(compare(rs.depth_test)),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module: &module,
+                        entry_point: Some(&pass.fragment_entry),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &constant_refs,
+                            ..Default::default()
+                        },
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format: format.wgpu(),
+                            blend: blend(rs.blend),
+                            write_mask: wgpu::ColorWrites::ALL,
+                        })],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                })
+            },
+        )?;
+        out.push(PassPipeline {
+            pass: pass.clone(),
+            pipeline,
+        });
+    }
+    Ok(VariantPipelines {
+        layouts,
+        passes: out,
+        vertex_inputs: shader.vertex_inputs.clone(),
+    })
+}
+
+fn build_sky_pipeline(
+    gpu: &Gpu,
+    sky_layout: &wgpu::BindGroupLayout,
+    sky_module: &wgpu::ShaderModule,
+    format: ColorFormat,
+) -> Result<wgpu::RenderPipeline> {
+    let device = &gpu.device;
+    gpu.checked("sky pipeline", || {
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("weft sky"),
+            bind_group_layouts: &[Some(sky_layout)],
+            immediate_size: 0,
+        });
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("weft sky"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: sky_module,
+                entry_point: Some("vs_sky"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(false),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: sky_module,
+                entry_point: Some("fs_sky"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: format.wgpu(),
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    })
+}
+
+/// The SPIR-V file whose baked constants equal `keywords`' values.
+pub(crate) fn spirv_file_for(
+    shader: &VariantShader,
+    id: &str,
+    keywords: &BTreeMap<String, String>,
+) -> Result<String> {
+    let files = shader
+        .files
+        .get("spirv")
+        .ok_or_else(|| Error::Metadata(format!("variant `{id}` lists no SPIR-V file")))?;
+    files
+        .iter()
+        .find(|f| f.constants.iter().all(|(k, v)| keywords.get(k) == Some(v)))
+        .map(|f| f.path.clone())
+        .ok_or_else(|| {
+            Error::Metadata(format!(
+                "variant `{id}` has no SPIR-V file for keywords {keywords:?}"
+            ))
+        })
+}
+
+pub(crate) fn is_texture(k: BindingKind) -> bool {
+    matches!(
+        k,
+        BindingKind::Texture2d
+            | BindingKind::TextureCube
+            | BindingKind::Texture2dArray
+            | BindingKind::Texture3d
+            | BindingKind::DepthTexture2d
+    )
+}
+
+fn stages(s: &[Stage]) -> wgpu::ShaderStages {
+    let mut out = wgpu::ShaderStages::NONE;
+    for st in s {
+        out |= match st {
+            Stage::Vertex => wgpu::ShaderStages::VERTEX,
+            Stage::Fragment => wgpu::ShaderStages::FRAGMENT,
+            Stage::Compute => wgpu::ShaderStages::COMPUTE,
+        };
+    }
+    out
+}
+
+pub(crate) fn layout_entry(
+    binding: u32,
+    visibility: wgpu::ShaderStages,
+    kind: BindingKind,
+) -> Result<wgpu::BindGroupLayoutEntry> {
+    let tex = |view_dimension, sample_type| wgpu::BindingType::Texture {
+        sample_type,
+        view_dimension,
+        multisampled: false,
+    };
+    let float = wgpu::TextureSampleType::Float { filterable: true };
+    let ty = match kind {
+        BindingKind::UniformBuffer => wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        BindingKind::StorageBuffer => wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: true },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        BindingKind::Sampler => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+        BindingKind::ComparisonSampler => {
+            wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison)
+        }
+        BindingKind::Texture2d => tex(wgpu::TextureViewDimension::D2, float),
+        BindingKind::TextureCube => tex(wgpu::TextureViewDimension::Cube, float),
+        BindingKind::Texture2dArray => tex(wgpu::TextureViewDimension::D2Array, float),
+        BindingKind::Texture3d => tex(wgpu::TextureViewDimension::D3, float),
+        BindingKind::DepthTexture2d => tex(
+            wgpu::TextureViewDimension::D2,
+            wgpu::TextureSampleType::Depth,
+        ),
+    };
+    Ok(wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty,
+        count: None,
+    })
+}
+
+fn compare(d: DepthTest) -> wgpu::CompareFunction {
+    match d {
+        DepthTest::Always => wgpu::CompareFunction::Always,
+        DepthTest::Never => wgpu::CompareFunction::Never,
+        DepthTest::Less => wgpu::CompareFunction::Less,
+        DepthTest::LessEqual => wgpu::CompareFunction::LessEqual,
+        DepthTest::Equal => wgpu::CompareFunction::Equal,
+        DepthTest::Greater => wgpu::CompareFunction::Greater,
+        DepthTest::GreaterEqual => wgpu::CompareFunction::GreaterEqual,
+    }
+}
+
+fn blend(b: BlendMode) -> Option<wgpu::BlendState> {
+    use wgpu::{BlendComponent as C, BlendFactor as F, BlendOperation as O};
+    let comp = |src, dst| C {
+        src_factor: src,
+        dst_factor: dst,
+        operation: O::Add,
+    };
+    let keep_dst_alpha = comp(F::Zero, F::One);
+    match b {
+        BlendMode::Opaque => None,
+        BlendMode::Alpha => Some(wgpu::BlendState {
+            color: comp(F::SrcAlpha, F::OneMinusSrcAlpha),
+            alpha: comp(F::One, F::OneMinusSrcAlpha),
+        }),
+        BlendMode::Premultiplied => Some(wgpu::BlendState {
+            color: comp(F::One, F::OneMinusSrcAlpha),
+            alpha: comp(F::One, F::OneMinusSrcAlpha),
+        }),
+        BlendMode::Additive => Some(wgpu::BlendState {
+            color: comp(F::SrcAlpha, F::One),
+            alpha: keep_dst_alpha,
+        }),
+        BlendMode::Multiply => Some(wgpu::BlendState {
+            color: comp(F::Dst, F::Zero),
+            alpha: keep_dst_alpha,
+        }),
+    }
+}
+
+/// WebGPU vertex format names (the float formats the engine interface uses).
+pub(crate) fn vertex_format(name: &str) -> Result<wgpu::VertexFormat> {
+    Ok(match name {
+        "float32" => wgpu::VertexFormat::Float32,
+        "float32x2" => wgpu::VertexFormat::Float32x2,
+        "float32x3" => wgpu::VertexFormat::Float32x3,
+        "float32x4" => wgpu::VertexFormat::Float32x4,
+        other => {
+            return Err(Error::Metadata(format!(
+                "vertex format `{other}` is not supported (float32, float32x2/3/4)"
+            )));
+        }
+    })
+}

@@ -1,0 +1,548 @@
+//! Whole scenes drawn from `<scene>.scene.json` and the files it lists:
+//! every instance with its specialised shader, values, textures, passes,
+//! built-in mesh and transform, in one render pass over one depth buffer.
+//!
+//! Data flows one way: metadata -> per-instance resources ([`PreparedScene`],
+//! built once; no pipeline is created while drawing) -> draws in
+//! [`scene_draw_order`]. The same scene can instead be drawn with the
+//! generic library variants ([`SceneShaders::Library`], `scene_library.rs`):
+//! only where an instance's shader, uniform bytes and textures come from
+//! differs; pipelines, bind groups, meshes, transforms, lighting and the
+//! draw itself are shared.
+
+use crate::draw::{DrawCall, FrameView};
+use crate::error::{Error, Result, io_err};
+use crate::image::HdrImage;
+use crate::material::{constant_default, instance_count_of};
+use crate::math::{self, Mat4};
+use crate::pipelines::{ShaderInput, spirv_file_for};
+use crate::renderer::{
+    Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage, check_format,
+};
+use crate::resources::{
+    BoundShader, GpuEnvironment, GpuMesh, OBJECT_SIZE, ObjectResources, TextureSource,
+    material_texture_views, object_uniform, uniform_buffer,
+};
+use crate::scene::{Camera, Light, Scene, SceneKind};
+use crate::scene_library::Library;
+use crate::uniform::pack_uniform_values;
+use crate::values::TextureValue;
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use weft_meta::scene::{SCENE_SCHEMA_VERSION, SceneFeatures, SceneInstance, SceneMetadata};
+use weft_meta::{Binding, BindingKind, InstanceCount, Pass};
+
+/// A scene's metadata and the folder its shader files are relative to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneFile {
+    /// The `.scene.json` (named in errors).
+    pub path: PathBuf,
+    pub dir: PathBuf,
+    pub metadata: SceneMetadata,
+    /// What group 0 provides; from `metadata.features` unless changed.
+    pub lighting: SceneLighting,
+}
+
+impl SceneFile {
+    /// Reads `<out>/<scene>/<scene>.scene.json`.
+    pub fn load(path: impl AsRef<Path>) -> Result<SceneFile> {
+        let path = path.as_ref();
+        let bytes = std::fs::read(path).map_err(io_err(path))?;
+        let metadata: SceneMetadata = serde_json::from_slice(&bytes).map_err(|e| {
+            Error::Metadata(format!(
+                "`{}` is not weft scene metadata: {e}",
+                path.display()
+            ))
+        })?;
+        SceneFile::from_metadata(metadata, path)
+    }
+
+    /// Scene metadata already parsed; `path` is where it lives (its folder
+    /// holds the shader files).
+    pub fn from_metadata(metadata: SceneMetadata, path: impl AsRef<Path>) -> Result<SceneFile> {
+        let path = path.as_ref().to_path_buf();
+        let versions = [
+            (
+                "scene schema",
+                metadata.schema_version,
+                SCENE_SCHEMA_VERSION,
+            ),
+            (
+                "engine interface",
+                metadata.engine_interface_version,
+                weft_meta::ENGINE_INTERFACE_VERSION,
+            ),
+        ];
+        for (what, got, ours) in versions {
+            if got != ours {
+                return Err(scene_error(
+                    &path,
+                    None,
+                    Error::Metadata(format!(
+                        "scene `{}` has {what} version {got}, this runtime reads {ours}",
+                        metadata.name
+                    )),
+                ));
+            }
+        }
+        Ok(SceneFile {
+            dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
+            lighting: SceneLighting::from_features(&metadata.features),
+            path,
+            metadata,
+        })
+    }
+}
+
+/// What group 0 gives a scene's shaders. A feature that is off is bound
+/// but black/zero: the specialised shaders do not read it, and a generic
+/// shader drawn for comparison must see the same lighting.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneLighting {
+    /// The prefiltered environment cube (else a black cube).
+    pub environment: bool,
+    /// The SH irradiance (else zero).
+    pub sh_ambient: bool,
+    /// The main light (radiance zero when the scene has no directional light).
+    pub light: Light,
+}
+
+impl SceneLighting {
+    pub fn from_features(features: &SceneFeatures) -> SceneLighting {
+        let mut light = Light::default();
+        if features.directional_lights == 0 {
+            light.radiance = [0.0; 3];
+        }
+        SceneLighting {
+            environment: features.environment,
+            sh_ambient: features.sh_ambient,
+            light,
+        }
+    }
+}
+
+/// Which shaders draw a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneShaders {
+    /// The scene's specialised shaders: what an engine ships.
+    Specialised,
+    /// The generic library variants of this `generated/` folder
+    /// (`<material>/<material>.meta.json`), each instance's values set as
+    /// parameters: for comparisons and benchmarks.
+    Library(PathBuf),
+}
+
+/// One (instance, pass) draw of a scene: indices into
+/// `SceneMetadata::instances` and that instance's `passes`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct DrawRef {
+    pub instance: usize,
+    pub pass: usize,
+}
+
+/// The order a scene's passes are drawn in: by queue, then instance order,
+/// then the material's pass order (a stable sort).
+pub fn scene_draw_order(instances: &[SceneInstance]) -> Vec<DrawRef> {
+    let mut order: Vec<(i64, DrawRef)> = instances
+        .iter()
+        .enumerate()
+        .flat_map(|(i, inst)| {
+            inst.passes.iter().enumerate().map(move |(p, pass)| {
+                (
+                    pass.render_state.queue,
+                    DrawRef {
+                        instance: i,
+                        pass: p,
+                    },
+                )
+            })
+        })
+        .collect();
+    order.sort_by_key(|(queue, _)| *queue);
+    order.into_iter().map(|(_, d)| d).collect()
+}
+
+/// An instance's `weft_object.model` (its `transform.model`, column-major).
+pub fn instance_model(instance: &SceneInstance) -> Mat4 {
+    let m = &instance.transform.model;
+    std::array::from_fn(|c| std::array::from_fn(|r| m[4 * c + r]))
+}
+
+/// The scene's camera: its position, target and vertical field of view,
+/// +Y up, near 0.1 and a far plane past every instance.
+pub fn scene_camera(meta: &SceneMetadata) -> Camera {
+    let c = &meta.camera;
+    let eye = c.position.map(|x| x as f32);
+    // Every built-in mesh fits in a sphere of radius sqrt(2) around its origin.
+    let reach = meta
+        .instances
+        .iter()
+        .map(|i| {
+            let t = i.transform.translation.map(|x| x as f32);
+            let s = i.transform.scale.iter().fold(0.0f64, |a, x| a.max(x.abs())) as f32;
+            math::length(math::sub(t, eye)) + 1.5 * s
+        })
+        .fold(0.0f32, f32::max);
+    Camera {
+        eye,
+        target: c.target.map(|x| x as f32),
+        up: [0.0, 1.0, 0.0],
+        fov_y_degrees: c.fov_degrees as f32,
+        near: 0.1,
+        far: (2.0 * reach).max(100.0),
+    }
+}
+
+/// One instance ready to draw.
+struct PreparedInstance {
+    name: String,
+    bound: BoundShader,
+    mesh: Arc<GpuMesh>,
+    /// Instances per pass of `SceneInstance::passes`.
+    instances: Vec<u32>,
+    pass_names: Vec<String>,
+}
+
+/// A scene ready to draw: per instance pipelines, bind groups, uniform,
+/// object buffer and mesh, and the draw order.
+pub struct PreparedScene {
+    name: String,
+    format: ColorFormat,
+    camera: Camera,
+    light: Light,
+    env: GpuEnvironment,
+    instances: Vec<PreparedInstance>,
+    order: Vec<DrawRef>,
+}
+
+impl PreparedScene {
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The draws in order: (instance, pass, instance count).
+    pub fn draws(&self) -> Vec<(&str, &str, u32)> {
+        self.order
+            .iter()
+            .map(|d| {
+                let i = &self.instances[d.instance];
+                (
+                    i.name.as_str(),
+                    i.pass_names[d.pass].as_str(),
+                    i.instances[d.pass],
+                )
+            })
+            .collect()
+    }
+
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The material uniform buffer of instance `index` (`COPY_SRC`), if it has one.
+    pub fn uniform_buffer(&self, index: usize) -> Option<&wgpu::Buffer> {
+        self.instances.get(index)?.bound.uniform.as_ref()
+    }
+}
+
+fn scene_error(path: &Path, instance: Option<&str>, e: Error) -> Error {
+    Error::Scene {
+        file: path.to_path_buf(),
+        instance: instance.map(str::to_string),
+        source: Box::new(e),
+    }
+}
+
+impl Renderer {
+    /// Builds everything `scene` draws with: pipelines (cached across
+    /// instances sharing a shader), bind groups, uniforms, object buffers,
+    /// meshes, and the sky pipeline. Errors name the scene file and the instance.
+    pub fn prepare_scene(
+        &mut self,
+        scene: &SceneFile,
+        shaders: &SceneShaders,
+        options: &RenderOptions,
+    ) -> Result<PreparedScene> {
+        let meta = &scene.metadata;
+        let fail = |instance: Option<&str>, e| scene_error(&scene.path, instance, e);
+        self.ensure_sky_pipeline(options.format)
+            .map_err(|e| fail(None, e))?;
+        let lighting = &scene.lighting;
+        let cube = if lighting.environment {
+            &self.env
+        } else {
+            &self.black_env
+        };
+        let env = GpuEnvironment {
+            view: cube.view.clone(),
+            mip_count: cube.mip_count,
+            sh: if lighting.sh_ambient {
+                self.env.sh
+            } else {
+                [[0.0; 3]; 9]
+            },
+        };
+        let mut library = match shaders {
+            SceneShaders::Specialised => None,
+            SceneShaders::Library(generated) => Some(Library::new(generated)),
+        };
+        let mut meshes: HashMap<(SceneKind, String), Arc<GpuMesh>> = HashMap::new();
+        let mut instances = Vec::with_capacity(meta.instances.len());
+        for inst in &meta.instances {
+            let prepared = self
+                .prepare_instance(scene, inst, library.as_mut(), &env, &mut meshes, options)
+                .map_err(|e| fail(Some(&inst.name), e))?;
+            instances.push(prepared);
+        }
+        Ok(PreparedScene {
+            name: meta.name.clone(),
+            format: options.format,
+            camera: scene_camera(meta),
+            light: lighting.light,
+            env,
+            instances,
+            order: scene_draw_order(&meta.instances),
+        })
+    }
+
+    fn prepare_instance(
+        &mut self,
+        scene: &SceneFile,
+        inst: &SceneInstance,
+        library: Option<&mut Library>,
+        env: &GpuEnvironment,
+        meshes: &mut HashMap<(SceneKind, String), Arc<GpuMesh>>,
+        options: &RenderOptions,
+    ) -> Result<PreparedInstance> {
+        let kind = SceneKind::from_name(&inst.mesh).ok_or_else(|| Error::UnknownName {
+            what: "mesh",
+            name: inst.mesh.clone(),
+            valid: SceneKind::ALL.map(|k| k.name().to_string()).to_vec(),
+        })?;
+        let object = uniform_buffer(
+            &self.gpu,
+            &format!("weft_object {}", inst.name),
+            OBJECT_SIZE,
+        );
+        let o = object_uniform(&instance_model(inst));
+        self.gpu
+            .queue
+            .write_buffer(&object, 0, bytemuck::cast_slice(&o));
+        let (bound, instances) = match library {
+            None => {
+                let bound = self.bind_scene_shader(scene, inst, env, object, options)?;
+                let counts = inst
+                    .passes
+                    .iter()
+                    .map(|p| scene_instance_count(inst, p))
+                    .collect::<Result<Vec<_>>>()?;
+                (bound, counts)
+            }
+            Some(lib) => {
+                let material = lib.instance_material(inst)?;
+                let (bound, _) =
+                    self.bind_material(&material, &inst.passes, options, object, env.clone())?;
+                let counts = inst
+                    .passes
+                    .iter()
+                    .map(|p| material.instance_count(p))
+                    .collect::<Result<Vec<_>>>()?;
+                (bound, counts)
+            }
+        };
+        let inputs = &bound.pipelines.vertex_inputs;
+        let key = (
+            kind,
+            format!(
+                "{:?}",
+                inputs
+                    .iter()
+                    .map(|v| (&v.name, &v.format))
+                    .collect::<Vec<_>>()
+            ),
+        );
+        let mesh = match meshes.get(&key) {
+            Some(m) => m.clone(),
+            None => {
+                let m = Arc::new(GpuMesh::upload(&self.gpu, &Scene::new(kind).mesh, inputs)?);
+                meshes.insert(key, m.clone());
+                m
+            }
+        };
+        Ok(PreparedInstance {
+            name: inst.name.clone(),
+            bound,
+            mesh,
+            instances,
+            pass_names: inst.passes.iter().map(|p| p.name.clone()).collect(),
+        })
+    }
+
+    /// The instance's specialised shader bound with its uniform values and textures.
+    fn bind_scene_shader(
+        &mut self,
+        scene: &SceneFile,
+        inst: &SceneInstance,
+        env: &GpuEnvironment,
+        object: wgpu::Buffer,
+        options: &RenderOptions,
+    ) -> Result<BoundShader> {
+        let meta = &scene.metadata;
+        let entry = meta
+            .shaders
+            .iter()
+            .find(|s| s.id == inst.shader)
+            .ok_or_else(|| {
+                Error::Metadata(format!(
+                    "names shader `{}`, which the scene does not list (shaders: {})",
+                    inst.shader,
+                    meta.shaders
+                        .iter()
+                        .map(|s| s.id.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ))
+            })?;
+        let shader = &entry.shader;
+        let input = ShaderInput {
+            label: &entry.id,
+            dir: &scene.dir,
+            shader,
+            spirv_file: match options.language {
+                ShaderLanguage::Wgsl => None,
+                ShaderLanguage::SpirV => Some(spirv_file_for(shader, &entry.id, &inst.keywords)?),
+            },
+            // A scene shader folds its keywords; an `override` left in it
+            // is drawn at its default (the scene has no keyword value lists).
+            constants: match options.language {
+                ShaderLanguage::Wgsl => shader
+                    .pipeline_constants
+                    .iter()
+                    .map(|c| Ok((c.name.clone(), constant_default(c)?)))
+                    .collect::<Result<Vec<_>>>()?,
+                ShaderLanguage::SpirV => Vec::new(),
+            },
+            cache_id: format!(
+                "scene|{}|{}|{}",
+                scene.dir.display(),
+                meta.inputs_hash,
+                entry.id
+            ),
+        };
+        let uniform_bytes = shader
+            .material_uniform
+            .as_ref()
+            .map(|layout| pack_uniform_values(layout, &inst.uniform_values))
+            .transpose()?;
+        let textures = self.gpu.checked("scene textures", || {
+            material_texture_views(&self.gpu, shader, |b| scene_texture(inst, b))
+        })??;
+        let resources = ObjectResources {
+            uniform_bytes,
+            textures,
+            object,
+            env: env.clone(),
+        };
+        self.bind_shader(&input, &inst.passes, options.format, resources)
+    }
+
+    /// Draws a prepared scene over the background and reads the linear image back.
+    pub fn render_scene(
+        &mut self,
+        prepared: &PreparedScene,
+        options: &RenderOptions,
+    ) -> Result<HdrImage> {
+        Ok(self.draw_scene(prepared, options, 1, false, None)?.0)
+    }
+
+    /// [`Renderer::draw_frames`] of a prepared scene (also timing.rs).
+    pub(crate) fn draw_scene(
+        &self,
+        prepared: &PreparedScene,
+        options: &RenderOptions,
+        frames: u32,
+        timed: bool,
+        timestamps: Option<&wgpu::QuerySet>,
+    ) -> Result<(HdrImage, Vec<f64>)> {
+        check_format("scene", prepared.format, options)?;
+        let draws: Vec<DrawCall> = prepared
+            .order
+            .iter()
+            .map(|d| {
+                let i = &prepared.instances[d.instance];
+                DrawCall {
+                    pipeline: &i.bound.pipelines.passes[d.pass].pipeline,
+                    bind_groups: &i.bound.bind_groups,
+                    mesh: &i.mesh,
+                    instances: i.instances[d.pass],
+                }
+            })
+            .collect();
+        let view = FrameView {
+            camera: &prepared.camera,
+            light: &prepared.light,
+            env: &prepared.env,
+        };
+        if matches!(options.background, Background::Sky { .. })
+            && !self.sky_pipelines.contains_key(&options.format)
+        {
+            return Err(Error::Gpu("the sky pipeline was not prepared".into()));
+        }
+        self.draw_frames(&view, &draws, options, frames, timed, timestamps)
+    }
+}
+
+/// A pass's instance count: fixed, or the value of the int parameter named,
+/// folded (`constants`) or still uploaded (`uniform_values`).
+pub fn scene_instance_count(inst: &SceneInstance, pass: &Pass) -> Result<u32> {
+    match &pass.instances {
+        InstanceCount::Fixed(n) => Ok(*n),
+        InstanceCount::Parameter(p) => {
+            let v = inst.constants.get(p).or_else(|| inst.uniform_values.get(p));
+            match v.and_then(serde_json::Value::as_f64) {
+                Some(x) if x.is_finite() => Ok(instance_count_of(x)),
+                _ => Err(Error::Metadata(format!(
+                    "pass `{}` takes its instance count from `{p}`, which has no numeric value \
+                     in the instance's constants or uniform_values",
+                    pass.name
+                ))),
+            }
+        }
+    }
+}
+
+/// What a group-1 texture binding of a scene shader samples: the
+/// instance's `textures` entry for the binding.
+fn scene_texture<'a>(inst: &'a SceneInstance, b: &Binding) -> Result<TextureSource<'a>> {
+    let t = inst.textures.get(&b.name).ok_or_else(|| {
+        Error::Metadata(format!(
+            "the shader binds texture `{}` (group 1, binding {}) but the instance's `textures` \
+             has no entry for it (entries: {})",
+            b.name,
+            b.binding,
+            inst.textures.keys().cloned().collect::<Vec<_>>().join(", ")
+        ))
+    })?;
+    let srgb = t.srgb;
+    match (&t.builtin, &t.ramp_rgba8, b.kind) {
+        (Some(d), None, BindingKind::Texture2d) => Ok(TextureSource::Texture2d {
+            value: Cow::Owned(TextureValue::Builtin(*d)),
+            srgb,
+        }),
+        (Some(d), None, BindingKind::TextureCube) => Ok(TextureSource::Cube {
+            value: Cow::Owned(TextureValue::Builtin(*d)),
+            srgb,
+        }),
+        (None, Some(ramp), BindingKind::Texture2d) => Ok(TextureSource::Ramp { rgba8: ramp, srgb }),
+        (Some(_), Some(_), _) | (None, None, _) => Err(Error::Metadata(format!(
+            "texture `{}` (parameter `{}`) must give exactly one of `builtin` and `ramp_rgba8`",
+            b.name, t.parameter
+        ))),
+        (_, _, kind) => Err(Error::Metadata(format!(
+            "binding `{}` ({kind:?}) cannot carry the texture given for parameter `{}`",
+            b.name, t.parameter
+        ))),
+    }
+}
