@@ -304,8 +304,6 @@ void main() {
     float face = (front_facing ? 1.0 : -1.0);
     vec3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
     n = _e65;
-    {
-    }
     vec3 _e67 = n;
     mat3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
     float cos_v = min(abs(dot(_e65, _e59)), 1.0);

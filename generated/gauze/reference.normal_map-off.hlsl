@@ -380,8 +380,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float face = (front_facing ? 1.0 : -1.0);
     const float3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
     n = _e65;
-    {
-    }
     float3 _e67 = n;
     const float3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
     float cos_v = min(abs(dot(_e65, _e59)), 1.0);

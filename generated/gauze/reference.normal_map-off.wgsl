@@ -335,8 +335,6 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let face = select(-1f, 1f, front_facing);
     let _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
     n = _e65;
-    {
-    }
     let _e67 = n;
     let _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
     let cos_v = min(abs(dot(_e65, _e59)), 1f);

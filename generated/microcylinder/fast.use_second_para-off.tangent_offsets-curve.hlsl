@@ -509,8 +509,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             float4 _e94[9] = material.thread1_curve;
             const float4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
             s1_ = _e95;
-            {
-            }
         }
     }
     float4 _e96 = s1_;

@@ -4,7 +4,7 @@
 
 using metal::uint;
 
-struct type_3 {
+struct type_5 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +13,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_3 sh;
+    type_5 sh;
     metal::float4 params;
 };
 struct WeftObject {
@@ -28,7 +28,7 @@ struct WeftMaterial {
     float thread1_gamma_v;
     float thread1_isotropy;
     char _pad6[12];
-    type_3 thread1_curve;
+    type_5 thread1_curve;
     metal::float4 thread1_offsets_a;
     metal::float4 thread1_offsets_b;
     int thread1_offset_count;
@@ -40,7 +40,7 @@ struct WeftMaterial {
     float thread2_gamma_v;
     float thread2_isotropy;
     char _pad16[12];
-    type_3 thread2_curve;
+    type_5 thread2_curve;
     metal::float4 thread2_offsets_a;
     metal::float4 thread2_offsets_b;
     int thread2_offset_count;
@@ -168,7 +168,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_3 sh = weft_frame.sh;
+    type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
@@ -327,7 +327,7 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 float mc_curve_at(
-    type_3 h,
+    type_5 h,
     uint i
 ) {
     return h.inner[naga_div(i, 4u)][naga_mod(i, 4u)];
@@ -338,7 +338,7 @@ metal::float4 mc_thread_curve_fast(
     metal::float3 wi_2,
     metal::float3 wr_2,
     McThread th_1,
-    type_3 heights
+    type_5 heights
 ) {
     metal::float4 acc = metal::float4(0.0);
     float wsum = 0.0;
@@ -521,7 +521,7 @@ fragment fs_mainOutput fs_main(
     McFrame weft = McFrame {b_2, t_1, _e70};
     {
         {
-            type_3 _e94 = material.thread1_curve;
+            type_5 _e94 = material.thread1_curve;
             metal::float4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
             s1_ = _e95;
         }

@@ -373,8 +373,6 @@ void main() {
             int _e100 = _group_1_binding_0_fs.thread1_offset_count;
             vec4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
             s1_ = _e101;
-            {
-            }
         }
     }
     vec4 _e102 = s1_;

@@ -496,8 +496,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             int _e100 = material.thread1_offset_count;
             const float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
             s1_ = _e101;
-            {
-            }
         }
     }
     float4 _e102 = s1_;

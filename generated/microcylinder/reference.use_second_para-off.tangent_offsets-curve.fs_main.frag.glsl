@@ -371,8 +371,6 @@ void main() {
             vec4 _e94[9] = _group_1_binding_0_fs.thread1_curve;
             vec4 _e95 = mc_thread_curve_reference(warp, _e83, _e82, _e29, _e94);
             s1_ = _e95;
-            {
-            }
         }
     }
     vec4 _e96 = s1_;

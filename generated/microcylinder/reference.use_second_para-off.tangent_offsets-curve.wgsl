@@ -403,8 +403,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e94 = material.thread1_curve;
             let _e95 = mc_thread_curve_reference(warp, _e83, _e82, _e29, _e94);
             s1_ = _e95;
-            {
-            }
         }
     }
     let _e96 = s1_;

@@ -429,8 +429,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e100 = material.thread1_offset_count;
             let _e101 = mc_thread_list_reference(warp, _e83, _e82, _e29, _e94, _e97, _e100);
             s1_ = _e101;
-            {
-            }
         }
     }
     let _e102 = s1_;

@@ -258,8 +258,6 @@ float satin_d_seed(vec3 hf, vec2 a) {
     float d = 0.0;
     float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     float _e9 = d;
     return _e9;
 }
@@ -300,8 +298,6 @@ void main() {
     vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     vec3 _e78 = n;
     mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     vec3 _e81 = weft_main_light_direction();
@@ -341,8 +337,6 @@ void main() {
         diffuse_kd = (vec3(1.0) - _e115);
         vec3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
         bent = _e148;
-        {
-        }
         vec3 _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
         vec3 _e152 = bent;
         vec3 _e154 = weft_prefiltered_radiance(reflect(-(_e74), _e152), roughness_8);

@@ -314,8 +314,6 @@ float satin_d_seed(float3 hf, float2 a)
 
     const float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     float _e9 = d;
     return _e9;
 }
@@ -383,8 +381,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     float3 _e78 = n;
     const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     const float3 _e81 = weft_main_light_direction();
@@ -424,8 +420,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         diffuse_kd = ((1.0).xxx - _e115);
         const float3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
         bent = _e148;
-        {
-        }
         const float3 _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
         float3 _e152 = bent;
         const float3 _e154 = weft_prefiltered_radiance(reflect(-(_e74), _e152), roughness_8);

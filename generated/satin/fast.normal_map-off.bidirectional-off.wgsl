@@ -266,8 +266,6 @@ fn satin_d_seed(hf: vec3<f32>, a: vec2<f32>) -> f32 {
 
     let _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     let _e9 = d;
     return _e9;
 }
@@ -332,8 +330,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     let _e78 = n;
     let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     let _e81 = weft_main_light_direction();
@@ -373,8 +369,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         diffuse_kd = (vec3(1f) - _e115);
         let _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
         bent = _e148;
-        {
-        }
         let _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
         let _e152 = bent;
         let _e154 = weft_prefiltered_radiance(reflect(-(_e74), _e152), roughness_8);

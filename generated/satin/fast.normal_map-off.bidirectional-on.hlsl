@@ -386,8 +386,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     float3 _e78 = n;
     const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     const float3 _e81 = weft_main_light_direction();

@@ -270,8 +270,6 @@ float satin_d_seed(vec3 hf, vec2 a) {
     float d = 0.0;
     float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     float _e9 = d;
     return _e9;
 }
@@ -361,8 +359,6 @@ void main() {
         diffuse_kd = (vec3(1.0) - _e127);
         vec3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
         bent = _e160;
-        {
-        }
         vec3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
         vec3 _e164 = bent;
         vec3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);

@@ -327,8 +327,6 @@ float satin_d_seed(float3 hf, float2 a)
 
     const float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     float _e9 = d;
     return _e9;
 }
@@ -445,8 +443,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         diffuse_kd = ((1.0).xxx - _e127);
         const float3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
         bent = _e160;
-        {
-        }
         const float3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
         float3 _e164 = bent;
         const float3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);

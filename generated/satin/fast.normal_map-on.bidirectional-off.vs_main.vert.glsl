@@ -257,8 +257,6 @@ float satin_d_seed(vec3 hf, vec2 a) {
     float d = 0.0;
     float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     float _e9 = d;
     return _e9;
 }

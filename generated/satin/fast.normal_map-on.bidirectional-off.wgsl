@@ -278,8 +278,6 @@ fn satin_d_seed(hf: vec3<f32>, a: vec2<f32>) -> f32 {
 
     let _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
     d = _e7;
-    {
-    }
     let _e9 = d;
     return _e9;
 }
@@ -393,8 +391,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         diffuse_kd = (vec3(1f) - _e127);
         let _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
         bent = _e160;
-        {
-        }
         let _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
         let _e164 = bent;
         let _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);

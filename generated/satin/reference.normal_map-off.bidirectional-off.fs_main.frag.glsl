@@ -249,8 +249,6 @@ float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
     float s = 0.0;
     float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     float _e7 = s;
     return _e7;
 }
@@ -263,8 +261,6 @@ vec3 satin_env(mat3x3 frame_2, vec3 v_5, float k, float roughness_6) {
     vec3 _e7 = bent_1;
     vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     vec3 _e11 = c_1;
     return _e11;
 }
@@ -305,8 +301,6 @@ void main() {
     vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     vec3 _e78 = n;
     mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     vec3 _e81 = weft_main_light_direction();

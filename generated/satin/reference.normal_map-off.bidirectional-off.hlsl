@@ -303,8 +303,6 @@ float satin_lobe_reference(float3 vf, float3 lf, float2 a)
 
     const float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     float _e7 = s;
     return _e7;
 }
@@ -319,8 +317,6 @@ float3 satin_env(float3x3 frame_2, float3 v_5, float k, float roughness_6)
     float3 _e7 = bent_1;
     const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     float3 _e11 = c_1;
     return _e11;
 }
@@ -388,8 +384,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     float3 _e78 = n;
     const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     const float3 _e81 = weft_main_light_direction();

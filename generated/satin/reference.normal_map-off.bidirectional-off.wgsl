@@ -259,8 +259,6 @@ fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
 
     let _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     let _e7 = s;
     return _e7;
 }
@@ -274,8 +272,6 @@ fn satin_env(frame_2: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> 
     let _e7 = bent_1;
     let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     let _e11 = c_1;
     return _e11;
 }
@@ -340,8 +336,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     let _e78 = n;
     let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     let _e81 = weft_main_light_direction();

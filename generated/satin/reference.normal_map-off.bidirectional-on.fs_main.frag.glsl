@@ -314,8 +314,6 @@ void main() {
     vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     vec3 _e78 = n;
     mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     vec3 _e81 = weft_main_light_direction();

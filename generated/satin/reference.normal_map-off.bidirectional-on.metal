@@ -4,7 +4,7 @@
 
 using metal::uint;
 
-struct type_3 {
+struct type_4 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +13,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_3 sh;
+    type_4 sh;
     metal::float4 params;
 };
 struct WeftObject {
@@ -161,7 +161,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_3 sh = weft_frame.sh;
+    type_4 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));

@@ -349,8 +349,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
     n = _e76;
-    {
-    }
     let _e78 = n;
     let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
     let _e81 = weft_main_light_direction();

@@ -261,8 +261,6 @@ float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
     float s = 0.0;
     float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     float _e7 = s;
     return _e7;
 }
@@ -275,8 +273,6 @@ vec3 satin_env(mat3x3 frame_3, vec3 v_5, float k, float roughness_6) {
     vec3 _e7 = bent_1;
     vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     vec3 _e11 = c_1;
     return _e11;
 }

@@ -316,8 +316,6 @@ float satin_lobe_reference(float3 vf, float3 lf, float2 a)
 
     const float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     float _e7 = s;
     return _e7;
 }
@@ -332,8 +330,6 @@ float3 satin_env(float3x3 frame_3, float3 v_5, float k, float roughness_6)
     float3 _e7 = bent_1;
     const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     float3 _e11 = c_1;
     return _e11;
 }

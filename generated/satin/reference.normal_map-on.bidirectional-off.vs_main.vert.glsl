@@ -240,8 +240,6 @@ float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
     float s = 0.0;
     float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     float _e7 = s;
     return _e7;
 }

@@ -271,8 +271,6 @@ fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
 
     let _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
     s = _e5;
-    {
-    }
     let _e7 = s;
     return _e7;
 }
@@ -286,8 +284,6 @@ fn satin_env(frame_3: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> 
     let _e7 = bent_1;
     let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
     c_1 = _e9;
-    {
-    }
     let _e11 = c_1;
     return _e11;
 }

@@ -295,8 +295,6 @@ void main() {
     vec3 _e55 = weft_unpack_normal(texel_1, _e54);
     vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
-    {
-    }
     vec3 _e59 = fibre;
     mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
     uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;

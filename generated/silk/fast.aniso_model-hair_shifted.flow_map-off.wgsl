@@ -326,8 +326,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e55 = weft_unpack_normal(texel_1, _e54);
     let _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
-    {
-    }
     let _e59 = fibre;
     let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
     let _e66 = material.diffuse_uses_aniso_normal;

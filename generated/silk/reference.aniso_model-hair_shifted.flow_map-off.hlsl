@@ -399,8 +399,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e55 = weft_unpack_normal(texel_1, _e54);
     const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
-    {
-    }
     float3 _e59 = fibre;
     const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
     uint _e66 = material.diffuse_uses_aniso_normal;

@@ -230,8 +230,6 @@ void main() {
     vec3 _e50 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     vec3 _e54 = weft_main_light_direction();
     vec3 _e56 = n;
     vec3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -281,8 +279,6 @@ void main() {
         vec3 _e130 = color;
         float _e133 = _group_1_binding_0_fs.sphere_strength;
         color = (_e130 + (sph * _e133));
-    }
-    {
     }
     vec3 _e136 = color;
     vec3 radiance = clamp(_e136, vec3(0.0), vec3(65504.0));

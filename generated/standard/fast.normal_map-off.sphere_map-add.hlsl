@@ -297,8 +297,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e50 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     const float3 _e54 = weft_main_light_direction();
     float3 _e56 = n;
     const float3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -348,8 +346,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e130 = color;
         float _e133 = material.sphere_strength;
         color = (_e130 + (sph * _e133));
-    }
-    {
     }
     float3 _e136 = color;
     float3 radiance = clamp(_e136, (0.0).xxx, (65504.0).xxx);

@@ -262,8 +262,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     let _e54 = weft_main_light_direction();
     let _e56 = n;
     let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -313,8 +311,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e130 = color;
         let _e133 = material.sphere_strength;
         color = (_e130 + (sph * _e133));
-    }
-    {
     }
     let _e136 = color;
     let radiance = clamp(_e136, vec3(0f), vec3(65504f));

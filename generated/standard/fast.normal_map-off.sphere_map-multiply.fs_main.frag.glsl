@@ -230,8 +230,6 @@ void main() {
     vec3 _e50 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     vec3 _e54 = weft_main_light_direction();
     vec3 _e56 = n;
     vec3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -273,8 +271,6 @@ void main() {
     vec3 _e114 = ambient_kd;
     vec3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
     {
         vec3 _e120 = n;
         vec3 _e122 = weft_sphere_map_direction(_e120, in_1.world_position);

@@ -285,8 +285,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e50 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     const float3 _e54 = weft_main_light_direction();
     float3 _e56 = n;
     const float3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -328,10 +326,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e114 = ambient_kd;
     float3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     float3 _e120 = color;
     float3 radiance = clamp(_e120, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -249,8 +249,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     let _e54 = weft_main_light_direction();
     let _e56 = n;
     let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -292,10 +290,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e114 = ambient_kd;
     let indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     let _e120 = color;
     let radiance = clamp(_e120, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

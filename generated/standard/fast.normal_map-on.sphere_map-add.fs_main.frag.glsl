@@ -321,8 +321,6 @@ void main() {
         float _e145 = _group_1_binding_0_fs.sphere_strength;
         color = (_e142 + (sph * _e145));
     }
-    {
-    }
     vec3 _e148 = color;
     vec3 radiance = clamp(_e148, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

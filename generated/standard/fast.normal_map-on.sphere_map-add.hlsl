@@ -391,8 +391,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float _e145 = material.sphere_strength;
         color = (_e142 + (sph * _e145));
     }
-    {
-    }
     float3 _e148 = color;
     float3 radiance = clamp(_e148, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -353,8 +353,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e145 = material.sphere_strength;
         color = (_e142 + (sph * _e145));
     }
-    {
-    }
     let _e148 = color;
     let radiance = clamp(_e148, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -313,8 +313,6 @@ void main() {
     vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         vec3 _e132 = n;
         vec3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
         vec4 _e137 = texture(_group_1_binding_6_fs, vec3(_e134));

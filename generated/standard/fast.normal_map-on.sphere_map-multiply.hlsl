@@ -383,8 +383,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         float3 _e132 = n;
         const float3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
         float4 _e137 = sphere_map.Sample(material_clamp_sampler, _e134);

@@ -345,8 +345,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         let _e132 = n;
         let _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
         let _e137 = textureSample(sphere_map, material_clamp_sampler, _e134);

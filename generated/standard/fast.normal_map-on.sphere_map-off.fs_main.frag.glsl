@@ -301,10 +301,6 @@ void main() {
     vec3 _e126 = ambient_kd;
     vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     vec3 _e132 = color;
     vec3 radiance = clamp(_e132, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

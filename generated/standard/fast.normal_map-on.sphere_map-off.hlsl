@@ -370,10 +370,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e126 = ambient_kd;
     float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     float3 _e132 = color;
     float3 radiance = clamp(_e132, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

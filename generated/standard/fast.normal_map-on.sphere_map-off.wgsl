@@ -331,10 +331,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e126 = ambient_kd;
     let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     let _e132 = color;
     let radiance = clamp(_e132, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

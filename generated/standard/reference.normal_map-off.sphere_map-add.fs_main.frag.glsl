@@ -221,8 +221,6 @@ void main() {
     vec3 _e50 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     vec3 _e54 = weft_main_light_direction();
     vec3 _e56 = n;
     vec3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -273,8 +271,6 @@ void main() {
         vec3 _e131 = color;
         float _e134 = _group_1_binding_0_fs.sphere_strength;
         color = (_e131 + (sph * _e134));
-    }
-    {
     }
     vec3 _e137 = color;
     vec3 radiance = clamp(_e137, vec3(0.0), vec3(65504.0));

@@ -286,8 +286,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e50 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     const float3 _e54 = weft_main_light_direction();
     float3 _e56 = n;
     const float3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -338,8 +336,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e131 = color;
         float _e134 = material.sphere_strength;
         color = (_e131 + (sph * _e134));
-    }
-    {
     }
     float3 _e137 = color;
     float3 radiance = clamp(_e137, (0.0).xxx, (65504.0).xxx);

@@ -255,8 +255,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     let _e54 = weft_main_light_direction();
     let _e56 = n;
     let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -307,8 +305,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e131 = color;
         let _e134 = material.sphere_strength;
         color = (_e131 + (sph * _e134));
-    }
-    {
     }
     let _e137 = color;
     let radiance = clamp(_e137, vec3(0f), vec3(65504f));

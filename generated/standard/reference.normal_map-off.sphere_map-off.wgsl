@@ -242,8 +242,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
     n = _e52;
-    {
-    }
     let _e54 = weft_main_light_direction();
     let _e56 = n;
     let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
@@ -286,10 +284,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e115 = ambient_kd;
     let indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     let _e121 = color;
     let radiance = clamp(_e121, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -313,8 +313,6 @@ void main() {
         float _e146 = _group_1_binding_0_fs.sphere_strength;
         color = (_e143 + (sph * _e146));
     }
-    {
-    }
     vec3 _e149 = color;
     vec3 radiance = clamp(_e149, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

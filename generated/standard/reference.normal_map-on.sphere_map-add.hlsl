@@ -381,8 +381,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float _e146 = material.sphere_strength;
         color = (_e143 + (sph * _e146));
     }
-    {
-    }
     float3 _e149 = color;
     float3 radiance = clamp(_e149, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -347,8 +347,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e146 = material.sphere_strength;
         color = (_e143 + (sph * _e146));
     }
-    {
-    }
     let _e149 = color;
     let radiance = clamp(_e149, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -305,8 +305,6 @@ void main() {
     vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         vec3 _e133 = n;
         vec3 _e135 = weft_sphere_map_direction(_e133, in_1.world_position);
         vec4 _e138 = texture(_group_1_binding_6_fs, vec3(_e135));

@@ -373,8 +373,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         float3 _e133 = n;
         const float3 _e135 = weft_sphere_map_direction(_e133, in_1.world_position);
         float4 _e138 = sphere_map.Sample(material_clamp_sampler, _e135);

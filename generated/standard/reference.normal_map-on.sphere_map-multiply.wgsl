@@ -339,8 +339,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
     {
-    }
-    {
         let _e133 = n;
         let _e135 = weft_sphere_map_direction(_e133, in_1.world_position);
         let _e138 = textureSample(sphere_map, material_clamp_sampler, _e135);

@@ -293,10 +293,6 @@ void main() {
     vec3 _e127 = ambient_kd;
     vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     vec3 _e133 = color;
     vec3 radiance = clamp(_e133, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

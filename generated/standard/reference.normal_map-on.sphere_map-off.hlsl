@@ -360,10 +360,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e127 = ambient_kd;
     float3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     float3 _e133 = color;
     float3 radiance = clamp(_e133, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -325,10 +325,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e127 = ambient_kd;
     let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
     color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-    }
-    {
-    }
     let _e133 = color;
     let radiance = clamp(_e133, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -252,8 +252,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e42 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
     n = _e44;
-    {
-    }
     const float3 _e46 = weft_main_light_direction();
     float3 _e48 = n;
     const float3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);

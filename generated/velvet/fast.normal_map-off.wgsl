@@ -213,8 +213,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e42 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e44 = weft_safe_normalize(in_1.world_normal, _e42);
     n = _e44;
-    {
-    }
     let _e46 = weft_main_light_direction();
     let _e48 = n;
     let _e49 = weft_safe_normalize((_e46 + _e42), _e48);

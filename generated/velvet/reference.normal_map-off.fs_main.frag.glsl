@@ -228,8 +228,6 @@ void main() {
     vec3 _e42 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
     n = _e44;
-    {
-    }
     vec3 _e46 = weft_main_light_direction();
     vec3 _e48 = n;
     vec3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
