@@ -150,7 +150,8 @@ pub struct TierChoice {
 #[serde(deny_unknown_fields)]
 pub struct TierCandidate {
     pub tier: String,
-    /// Cost relative to the cheapest candidate's (or as supplied).
+    /// Cost as measured: the bench's ratio to `standard`'s `fast` tier, or the
+    /// `--tier-costs` figure (any unit; only ratios within a material matter).
     pub cost: f64,
     /// FLIP mean against the reference tier at the instance's values, mesh and screen size.
     pub flip_mean: f64,
