@@ -41,20 +41,73 @@ fn swatch_book_builds_one_shader_per_preset() {
     assert_eq!(out.files, again.files, "scene builds are deterministic");
 }
 
-#[test]
-#[ignore]
-fn dump_swatch_book() {
-    let out = build_scene(&scene("swatch_book"), &SceneBuildOptions::default())
-        .ok()
+fn temp_scene(body: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let materials = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../materials")
+        .canonicalize()
         .unwrap();
-    weft_compiler::output::write_atomically(Path::new("/tmp/scene_out"), &out.files, &[]).unwrap();
+    let text = format!(
+        "[scene]\nname = \"probe\"\nmaterials = {:?}\nvertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]\n\n{body}",
+        materials.to_string_lossy()
+    );
+    let path = dir.path().join("probe.scene.toml");
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
 }
 
 #[test]
-#[ignore]
-fn dump_scene_from_env() {
-    let p = std::env::var("WEFT_SCENE").unwrap();
-    let out = build_scene(Path::new(&p), &SceneBuildOptions::default())
+fn a_dynamic_parameter_the_shader_does_not_read_is_a_warning() {
+    // normal_strength is only read with NORMAL_MAP on.
+    let (_dir, path) = temp_scene(
+        "[[instances]]\nname = \"ball\"\nmaterial = \"standard\"\nmesh = \"sphere\"\nkeywords = { NORMAL_MAP = \"off\" }\ndynamic = [\"normal_strength\", \"roughness\"]\n",
+    );
+    let out = build_scene(&path, &SceneBuildOptions::default())
         .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
-    weft_compiler::output::write_atomically(Path::new("/tmp/scene_out"), &out.files, &[]).unwrap();
+    let (db, warnings) = out.warnings.expect("a warning");
+    let text = warnings.render_plain(&db);
+    assert!(text.contains("warning[unread-dynamic]"), "{text}");
+    assert!(text.contains("`normal_strength`"), "{text}");
+    assert!(!text.contains("`roughness` is not read"), "{text}");
+    let inst = &out.metadata.instances[0];
+    assert_eq!(inst.dynamic, ["normal_strength", "roughness"]);
+    assert_eq!(
+        inst.uniform_values.keys().collect::<Vec<_>>(),
+        ["roughness"]
+    );
+}
+
+#[test]
+fn identical_instances_share_one_shader_and_differing_constants_do_not() {
+    let (_dir, path) = temp_scene(
+        "[[instances]]\nname = \"a\"\nmaterial = \"standard\"\nmesh = \"sphere\"\nparams = { roughness = 0.3 }\n\n\
+         [[instances]]\nname = \"b\"\nmaterial = \"standard\"\nmesh = \"cloth\"\nparams = { roughness = 0.3 }\ntranslation = [1.0, 0.0, 0.0]\n\n\
+         [[instances]]\nname = \"c\"\nmaterial = \"standard\"\nmesh = \"sphere\"\nparams = { roughness = 0.7 }\n",
+    );
+    let out = build_scene(&path, &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
+    let ids: Vec<_> = out
+        .metadata
+        .instances
+        .iter()
+        .map(|i| i.shader.as_str())
+        .collect();
+    assert_eq!(ids[0], ids[1]);
+    assert_ne!(ids[0], ids[2]);
+    assert_eq!(out.metadata.shaders.len(), 2);
+}
+
+#[test]
+fn auto_tier_without_a_chooser_fails_at_the_tier_line() {
+    let (_dir, path) = temp_scene(
+        "[[instances]]\nname = \"a\"\nmaterial = \"silk\"\nmesh = \"cloth\"\ntier = \"auto\"\nerror_budget = 0.05\nscreen_size = 128\n",
+    );
+    let Err((db, diags)) = build_scene(&path, &SceneBuildOptions::default()) else {
+        panic!("an auto tier cannot be decided without measurements");
+    };
+    let text = diags.render_plain(&db);
+    assert!(
+        text.contains("error[auto-tier]") && text.contains("probe.scene.toml:10"),
+        "{text}"
+    );
 }

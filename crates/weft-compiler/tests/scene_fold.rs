@@ -142,13 +142,3 @@ fn a_non_default_texture_value_folds_to_its_texel() {
     assert!((texel[0] - 0.2158605).abs() < 1e-5, "{texel:?}");
     assert_eq!(texel[3], 1.0);
 }
-
-#[test]
-#[ignore]
-fn dump_folded_standard() {
-    let (m, module, _) = load("standard");
-    let inst = instance(&m, &["base_color"]);
-    let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
-    let (_, wgsl) = folded_wgsl(&module, &values.fold);
-    std::fs::write("/tmp/folded_standard.wgsl", wgsl).unwrap();
-}
