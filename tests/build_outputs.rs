@@ -1,14 +1,23 @@
-//! The compiled shader library, checked by consumers no one here wrote:
-//! naga (re-parse + validate), `spirv-val`, glslang's HLSL front end; plus
-//! metadata-vs-module agreement, determinism, aliasing and staleness of the
-//! committed `generated/` tree.
+//! The compiled shader library and the shipped scenes' shaders, checked by
+//! consumers no one here wrote: naga (re-parse + validate), `spirv-val`,
+//! glslang's HLSL front end; plus metadata-vs-module agreement, determinism,
+//! aliasing and staleness of the committed `generated/` tree.
+//!
+//! The project is built the way `cargo xtask regenerate` builds it
+//! (`weft_golden::project::build_project`: materials, then every scene under
+//! `scenes/`), so every check covers scene shaders too.
 
+#[path = "support/shaders.rs"]
+mod shaders;
+
+use shaders::ShaderRef;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 use weft_compiler::{BuildOptions, BuildOutput, build_library, output};
-use weft_meta::{MaterialMetadata, Stage};
+use weft_meta::scene::SceneMetadata;
+use weft_meta::{Pass, Stage, VariantShader};
 
 fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -35,12 +44,25 @@ fn build_dir(dir: &Path, jobs: Option<usize>) -> BuildOutput {
     }
 }
 
-/// The shipped library and the test fixtures, built once per test binary.
+/// The whole project (materials and scenes) as `cargo xtask regenerate` builds it.
+fn build_project(jobs: Option<usize>) -> BuildOutput {
+    let options = BuildOptions {
+        jobs,
+        ..Default::default()
+    };
+    match weft_golden::project::build_project(&repo(), &options) {
+        Ok(out) => out,
+        Err((db, diags)) => panic!("the project does not build:\n{}", diags.render_plain(&db)),
+    }
+}
+
+/// The shipped project (materials and scenes) and the test fixtures, built
+/// once per test binary.
 fn builds() -> &'static [BuildOutput] {
     static CELL: OnceLock<Vec<BuildOutput>> = OnceLock::new();
     CELL.get_or_init(|| {
         vec![
-            build_dir(&repo().join("materials"), None),
+            build_project(None),
             build_dir(&repo().join("tests/fixtures/materials"), None),
         ]
     })
@@ -50,8 +72,26 @@ fn all_files() -> impl Iterator<Item = (&'static String, &'static Vec<u8>)> {
     builds().iter().flat_map(|b| b.files.iter())
 }
 
-fn all_materials() -> impl Iterator<Item = &'static MaterialMetadata> {
-    builds().iter().flat_map(|b| b.materials.iter())
+/// The scene metadata of each build (the fixtures have none).
+fn scenes() -> &'static [Vec<SceneMetadata>] {
+    static CELL: OnceLock<Vec<Vec<SceneMetadata>>> = OnceLock::new();
+    CELL.get_or_init(|| builds().iter().map(|b| shaders::scenes(&b.files)).collect())
+}
+
+/// Every canonical material variant and every scene shader of every build.
+fn all_shaders() -> Vec<ShaderRef<'static>> {
+    builds()
+        .iter()
+        .zip(scenes())
+        .flat_map(|(b, s)| shaders::shaders(&b.materials, s))
+        .collect()
+}
+
+fn file(name: &str) -> &'static [u8] {
+    all_files()
+        .find(|(n, _)| *n == name)
+        .unwrap_or_else(|| panic!("{name} is in the metadata but not in the build"))
+        .1
 }
 
 /// An external validator, or a failure saying what to install.
@@ -64,6 +104,26 @@ fn tool(name: &str, package: &str) -> PathBuf {
     found.unwrap_or_else(|| {
         panic!("`{name}` not found: install it with `apt-get install -y {package}` (see .ci/run)")
     })
+}
+
+/// Every manifest in `scenes/` is built into the project's files (and the
+/// checks below see its shaders).
+#[test]
+fn every_shipped_scene_is_in_the_project_build() {
+    let names: Vec<&str> = scenes()[0].iter().map(|s| s.name.as_str()).collect();
+    let shipped = weft_golden::scenes::shipped_scenes(&repo()).unwrap();
+    assert!(!shipped.is_empty(), "no scenes/*.scene.toml");
+    assert_eq!(names, shipped);
+    for s in &scenes()[0] {
+        assert!(!s.shaders.is_empty(), "scene {} has no shader", s.name);
+        for entry in &s.shaders {
+            for files in entry.shader.files.values() {
+                for f in files {
+                    file(&format!("scenes/{}/{}", s.name, f.path));
+                }
+            }
+        }
+    }
 }
 
 #[test]
@@ -110,39 +170,34 @@ fn every_spirv_passes_spirv_val() {
 fn every_hlsl_compiles_with_glslang_for_each_stage() {
     let glslang = tool("glslangValidator", "glslang-tools");
     let dir = tempfile::tempdir().unwrap();
-    let mut count = 0;
-    for m in all_materials() {
-        for v in &m.variants {
-            let Some(shader) = &v.shader else { continue };
-            for file in &shader.files["hlsl"] {
-                let bytes = all_files()
-                    .find(|(n, _)| **n == format!("{}/{}", m.name, file.path))
-                    .unwrap()
-                    .1;
-                let path = dir.path().join(&file.path);
-                std::fs::write(&path, bytes).unwrap();
-                for ep in &shader.entry_points {
-                    let stage = match ep.stage {
-                        Stage::Vertex => "vert",
-                        Stage::Fragment => "frag",
-                        Stage::Compute => "comp",
-                    };
-                    let out = Command::new(&glslang)
-                        .args(["-D", "-V", "-S", stage, "-e", &ep.name])
-                        .arg(&path)
-                        .arg("-o")
-                        .arg(dir.path().join("out.spv"))
-                        .output()
-                        .unwrap();
-                    assert!(
-                        out.status.success(),
-                        "glslang rejects {}/{} ({stage} {}):\n{}",
-                        m.name,
-                        file.path,
-                        ep.name,
-                        String::from_utf8_lossy(&out.stdout)
-                    );
-                    count += 1;
+    let (mut count, mut scene_count) = (0, 0);
+    for s in all_shaders() {
+        for hlsl in &s.shader.files["hlsl"] {
+            let name = s.file(&hlsl.path);
+            let path = dir.path().join(name.replace('/', "__"));
+            std::fs::write(&path, file(&name)).unwrap();
+            for ep in &s.shader.entry_points {
+                let stage = match ep.stage {
+                    Stage::Vertex => "vert",
+                    Stage::Fragment => "frag",
+                    Stage::Compute => "comp",
+                };
+                let out = Command::new(&glslang)
+                    .args(["-D", "-V", "-S", stage, "-e", &ep.name])
+                    .arg(&path)
+                    .arg("-o")
+                    .arg(dir.path().join("out.spv"))
+                    .output()
+                    .unwrap();
+                assert!(
+                    out.status.success(),
+                    "glslang rejects {name} ({stage} {}):\n{}",
+                    ep.name,
+                    String::from_utf8_lossy(&out.stdout)
+                );
+                count += 1;
+                if s.material.is_none() {
+                    scene_count += 1;
                 }
             }
         }
@@ -150,6 +205,10 @@ fn every_hlsl_compiles_with_glslang_for_each_stage() {
     assert!(
         count >= 24,
         "expected every HLSL entry point checked, got {count}"
+    );
+    assert!(
+        scene_count >= 2,
+        "expected the scene shaders' HLSL checked, got {scene_count}"
     );
 }
 
@@ -174,98 +233,196 @@ fn every_wgsl_reparses_and_validates_in_naga() {
         count += 1;
     }
     assert!(count >= 12);
+    let scene_wgsl = all_files()
+        .filter(|(n, _)| n.starts_with("scenes/") && n.ends_with(".wgsl"))
+        .count();
+    let scene_shaders: usize = scenes()[0].iter().map(|s| s.shaders.len()).sum();
+    assert_eq!(
+        scene_wgsl, scene_shaders,
+        "one WGSL module per scene shader"
+    );
 }
 
-/// Offsets, bindings and entry points in the metadata equal what naga finds
-/// in the emitted WGSL, computed independently of the compiler's reflection.
-#[test]
-fn metadata_matches_the_emitted_modules() {
-    for m in all_materials() {
-        for v in &m.variants {
-            let Some(shader) = &v.shader else { continue };
-            let wgsl = &shader.files["wgsl"][0];
-            let name = format!("{}/{}", m.name, wgsl.path);
-            let bytes = all_files().find(|(n, _)| **n == name).unwrap().1;
-            assert_eq!(
-                weft_compiler::variant::sha256_hex(bytes),
-                wgsl.sha256,
-                "{name}: hash"
-            );
-            let (module, _) = reparse(&name, bytes);
-
-            let mut layouter = naga::proc::Layouter::default();
-            layouter.update(module.to_ctx()).unwrap();
-            let ubo = module.global_variables.iter().find(|(_, g)| {
-                g.binding
-                    .as_ref()
-                    .is_some_and(|b| b.group == 1 && b.binding == 0)
-            });
-            match (&shader.material_uniform, ubo) {
-                (Some(meta), Some((_, g))) => {
-                    let naga::TypeInner::Struct { members, span } = &module.types[g.ty].inner
-                    else {
-                        panic!("{name}: uniform is not a struct")
-                    };
-                    assert_eq!(meta.size, *span, "{name}: uniform size");
-                    assert_eq!(meta.members.len(), members.len(), "{name}: member count");
-                    for (mm, nm) in meta.members.iter().zip(members) {
-                        assert_eq!(Some(&mm.name), nm.name.as_ref(), "{name}: member order");
-                        assert_eq!(mm.offset, nm.offset, "{name}: offset of {}", mm.name);
-                        assert_eq!(mm.size, layouter[nm.ty].size, "{name}: size of {}", mm.name);
-                    }
-                }
-                (None, None) => {}
-                (meta, naga) => panic!(
-                    "{name}: metadata uniform {:?} vs module uniform {:?}",
-                    meta.is_some(),
-                    naga.is_some()
-                ),
-            }
-
-            let mut found: Vec<(u32, u32, String)> = module
-                .global_variables
-                .iter()
-                .filter_map(|(_, g)| {
-                    g.binding
-                        .as_ref()
-                        .map(|b| (b.group, b.binding, g.name.clone().unwrap_or_default()))
-                })
-                .collect();
-            found.sort();
-            let listed: Vec<(u32, u32, String)> = shader
-                .bindings
-                .iter()
-                .map(|b| (b.group, b.binding, b.name.clone()))
-                .collect();
-            assert_eq!(found, listed, "{name}: bindings");
-
-            let eps: Vec<&str> = module
-                .entry_points
-                .iter()
-                .map(|e| e.name.as_str())
-                .collect();
-            let listed: Vec<&str> = shader
-                .entry_points
-                .iter()
-                .map(|e| e.name.as_str())
-                .collect();
-            assert_eq!(eps, listed, "{name}: entry points");
-            for pass in &m.passes {
-                assert!(
-                    eps.contains(&pass.vertex_entry.as_str())
-                        && eps.contains(&pass.fragment_entry.as_str()),
-                    "{name}: pass {}",
-                    pass.name
-                );
-            }
-        }
+/// WebGPU vertex format of a vertex input's WGSL type.
+fn vertex_format(module: &naga::Module, ty: naga::Handle<naga::Type>) -> String {
+    let (scalar, n) = match module.types[ty].inner {
+        naga::TypeInner::Scalar(s) => (s, 1),
+        naga::TypeInner::Vector { size, scalar } => (scalar, size as u32),
+        ref other => panic!("vertex input of type {other:?}"),
+    };
+    let base = match scalar.kind {
+        naga::ScalarKind::Float => "float",
+        naga::ScalarKind::Sint => "sint",
+        naga::ScalarKind::Uint => "uint",
+        other => panic!("vertex input of kind {other:?}"),
+    };
+    let bits = u32::from(scalar.width) * 8;
+    if n == 1 {
+        format!("{base}{bits}")
+    } else {
+        format!("{base}{bits}x{n}")
     }
 }
 
+/// (location, format) of every `@location` input of the vertex entry points.
+fn module_vertex_inputs(module: &naga::Module) -> Vec<(u32, String)> {
+    let mut out = Vec::new();
+    for ep in module
+        .entry_points
+        .iter()
+        .filter(|e| e.stage == naga::ShaderStage::Vertex)
+    {
+        for arg in &ep.function.arguments {
+            let mut inputs = vec![(arg.binding.clone(), arg.ty)];
+            if let naga::TypeInner::Struct { members, .. } = &module.types[arg.ty].inner {
+                inputs.extend(members.iter().map(|m| (m.binding.clone(), m.ty)));
+            }
+            for (binding, ty) in inputs {
+                if let Some(naga::Binding::Location { location, .. }) = binding {
+                    let input = (location, vertex_format(module, ty));
+                    if !out.contains(&input) {
+                        out.push(input);
+                    }
+                }
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The metadata of one compiled shader (`name` is its WGSL file) agrees with
+/// what naga finds in the emitted module: hash, material uniform layout,
+/// bindings, entry points (every pass's among them) and vertex inputs
+/// (locations, formats and the engine interface's names for them).
+fn assert_metadata_matches_module(name: &str, shader: &VariantShader, passes: &[&Pass]) {
+    let wgsl = &shader.files["wgsl"][0];
+    let bytes = file(name);
+    assert_eq!(
+        weft_compiler::variant::sha256_hex(bytes),
+        wgsl.sha256,
+        "{name}: hash"
+    );
+    let (module, _) = reparse(name, bytes);
+
+    let mut layouter = naga::proc::Layouter::default();
+    layouter.update(module.to_ctx()).unwrap();
+    let ubo = module.global_variables.iter().find(|(_, g)| {
+        g.binding
+            .as_ref()
+            .is_some_and(|b| b.group == 1 && b.binding == 0)
+    });
+    match (&shader.material_uniform, ubo) {
+        (Some(meta), Some((_, g))) => {
+            let naga::TypeInner::Struct { members, span } = &module.types[g.ty].inner else {
+                panic!("{name}: uniform is not a struct")
+            };
+            assert_eq!(meta.size, *span, "{name}: uniform size");
+            assert_eq!(meta.members.len(), members.len(), "{name}: member count");
+            for (mm, nm) in meta.members.iter().zip(members) {
+                assert_eq!(Some(&mm.name), nm.name.as_ref(), "{name}: member order");
+                assert_eq!(mm.offset, nm.offset, "{name}: offset of {}", mm.name);
+                assert_eq!(mm.size, layouter[nm.ty].size, "{name}: size of {}", mm.name);
+            }
+        }
+        (None, None) => {}
+        (meta, naga) => panic!(
+            "{name}: metadata uniform {:?} vs module uniform {:?}",
+            meta.is_some(),
+            naga.is_some()
+        ),
+    }
+
+    let mut found: Vec<(u32, u32, String)> = module
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| {
+            g.binding
+                .as_ref()
+                .map(|b| (b.group, b.binding, g.name.clone().unwrap_or_default()))
+        })
+        .collect();
+    found.sort();
+    let listed: Vec<(u32, u32, String)> = shader
+        .bindings
+        .iter()
+        .map(|b| (b.group, b.binding, b.name.clone()))
+        .collect();
+    assert_eq!(found, listed, "{name}: bindings");
+
+    let eps: Vec<&str> = module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect();
+    let listed: Vec<&str> = shader
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect();
+    assert_eq!(eps, listed, "{name}: entry points");
+    for pass in passes {
+        assert!(
+            eps.contains(&pass.vertex_entry.as_str())
+                && eps.contains(&pass.fragment_entry.as_str()),
+            "{name}: pass {}",
+            pass.name
+        );
+    }
+
+    let listed: Vec<(u32, String)> = shader
+        .vertex_inputs
+        .iter()
+        .map(|v| (v.location, v.format.clone()))
+        .collect();
+    assert_eq!(
+        module_vertex_inputs(&module),
+        listed,
+        "{name}: vertex inputs"
+    );
+    for v in &shader.vertex_inputs {
+        let attribute = weft_front::model::VertexAttribute::ALL
+            .into_iter()
+            .find(|a| a.location() == v.location)
+            .unwrap_or_else(|| panic!("{name}: no vertex attribute at location {}", v.location));
+        assert_eq!(
+            v.name,
+            attribute.name(),
+            "{name}: the input at location {}",
+            v.location
+        );
+    }
+}
+
+/// Offsets, bindings, entry points and vertex inputs in the metadata equal
+/// what naga finds in the emitted WGSL, computed independently of the
+/// compiler's reflection: every material variant and every scene shader.
+#[test]
+fn metadata_matches_the_emitted_modules() {
+    let (mut materials, mut scene_shaders) = (0, 0);
+    for s in all_shaders() {
+        let name = s.file(&s.shader.files["wgsl"][0].path);
+        assert_metadata_matches_module(&name, s.shader, &s.passes);
+        match s.material {
+            Some(_) => materials += 1,
+            None => scene_shaders += 1,
+        }
+    }
+    assert!(materials >= 12, "checked {materials} material variants");
+    let expected: usize = scenes().iter().flatten().map(|s| s.shaders.len()).sum();
+    assert!(expected >= 2, "the shipped scenes have {expected} shaders");
+    assert_eq!(scene_shaders, expected, "every scene shader checked");
+}
+
+/// Materials and scenes (scenes on a rayon pool of the same size).
 #[test]
 fn output_is_identical_across_runs_and_thread_counts() {
-    let a = build_dir(&repo().join("materials"), Some(1));
-    let b = build_dir(&repo().join("materials"), Some(4));
+    let a = build_project(Some(1));
+    let b = build_project(Some(4));
+    assert!(
+        a.files.keys().any(|k| k.starts_with("scenes/")),
+        "the scenes are part of the comparison"
+    );
     let keys_a: Vec<&String> = a.files.keys().collect();
     let keys_b: Vec<&String> = b.files.keys().collect();
     assert_eq!(keys_a, keys_b);

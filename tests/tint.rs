@@ -1,7 +1,10 @@
 //! Every generated WGSL module compiles in a real browser's WebGPU (Chromium's
 //! Tint, on SwiftShader), and every pass of every canonical variant makes a
 //! render pipeline there (`layout: 'auto'`, vertex buffers from the metadata,
-//! each value of each pipeline constant).
+//! each value of each pipeline constant). The project is built as `cargo
+//! xtask regenerate` builds it, so the shipped scenes' specialised shaders
+//! are checked too, each with the passes (render state) of the instances
+//! drawn with it and its own vertex inputs.
 //!
 //! One headless Chromium loads a page served on 127.0.0.1 by a tiny HTTP
 //! responder in this process; the page compiles everything, writes the
@@ -15,8 +18,12 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
+#[path = "support/shaders.rs"]
+mod shaders;
+
+use shaders::ShaderRef;
 use weft_compiler::{BuildOptions, BuildOutput, build_library};
-use weft_meta::{BlendMode, CullMode, DepthTest, MaterialMetadata};
+use weft_meta::{BlendMode, CullMode, DepthTest};
 
 /// The browser process is killed after this long.
 const BROWSER_TIMEOUT: Duration = Duration::from_secs(120);
@@ -46,7 +53,15 @@ fn build_dir(dir: &Path) -> BuildOutput {
 // ---------------------------------------------------------------------------
 // What the page is asked to compile
 
-/// One WGSL module, named `<material>/<file>`.
+/// The whole project (materials and scenes) as `cargo xtask regenerate` builds it.
+fn build_project() -> BuildOutput {
+    match weft_golden::project::build_project(&repo(), &BuildOptions::default()) {
+        Ok(out) => out,
+        Err((db, diags)) => panic!("the project does not build:\n{}", diags.render_plain(&db)),
+    }
+}
+
+/// One WGSL module, named `<material>/<file>` or `scenes/<scene>/<file>`.
 struct Module {
     name: String,
     code: String,
@@ -158,94 +173,101 @@ fn color_targets(module: &naga::Module, entry: &str, blend: &Value) -> Vec<Value
     targets
 }
 
-/// Every canonical WGSL module of a build, and a pipeline per pass, variant
-/// and pipeline-constant value.
-fn add_build(job: &mut Job, out: &BuildOutput) {
-    for m in &out.materials {
-        add_material(job, m, out);
+/// Every canonical WGSL module of a build and every scene shader in it, and
+/// a pipeline per pass, shader and pipeline-constant value. Returns how many
+/// scene shaders were added.
+fn add_build(job: &mut Job, out: &BuildOutput) -> usize {
+    let scenes = shaders::scenes(&out.files);
+    let all = shaders::shaders(&out.materials, &scenes);
+    for s in &all {
+        add_shader(job, s, out);
     }
+    all.iter().filter(|s| s.material.is_none()).count()
 }
 
-fn add_material(job: &mut Job, m: &MaterialMetadata, out: &BuildOutput) {
-    for v in &m.variants {
-        let Some(shader) = &v.shader else { continue };
-        for file in &shader.files["wgsl"] {
-            let name = format!("{}/{}", m.name, file.path);
-            let code = String::from_utf8(
-                out.files
-                    .get(&name)
-                    .unwrap_or_else(|| panic!("{name} is in the metadata but not in the build"))
-                    .clone(),
-            )
-            .unwrap();
-            let parsed = naga::front::wgsl::parse_str(&code).unwrap_or_else(|e| {
-                panic!("naga cannot parse {name}: {}", e.emit_to_string(&code))
-            });
-            let index = job.modules.len();
+/// The shader's WGSL module(s), and a pipeline per pass and constant set.
+fn add_shader(job: &mut Job, s: &ShaderRef, out: &BuildOutput) {
+    let shader = s.shader;
+    for file in &shader.files["wgsl"] {
+        let name = s.file(&file.path);
+        let code = String::from_utf8(
+            out.files
+                .get(&name)
+                .unwrap_or_else(|| panic!("{name} is in the metadata but not in the build"))
+                .clone(),
+        )
+        .unwrap();
+        let parsed = naga::front::wgsl::parse_str(&code)
+            .unwrap_or_else(|e| panic!("naga cannot parse {name}: {}", e.emit_to_string(&code)));
+        let index = job.modules.len();
 
-            // Constant sets: all defaults, then each other value of each constant.
-            let mut constant_sets: Vec<(String, Value)> = vec![(String::new(), json!({}))];
-            for c in &shader.pipeline_constants {
-                let values: Vec<String> = match m.keywords.iter().find(|k| k.name == c.name) {
-                    Some(k) => k.values.clone(),
-                    None if c.ty == "bool" => vec!["off".into(), "on".into()],
-                    None => panic!("{name}: pipeline constant {} names no keyword", c.name),
-                };
-                for (i, value) in values.iter().enumerate() {
-                    if *value == c.default {
-                        continue;
-                    }
-                    // WebGPU constants are numbers: an enum's value index, a bool's 0/1.
-                    constant_sets.push((
-                        format!(" {}={value}", c.name),
-                        json!({ c.name.clone(): i as f64 }),
-                    ));
+        // Constant sets: all defaults, then each other value of each constant
+        // (a library variant's keyword values; a scene draws its defaults).
+        let mut constant_sets: Vec<(String, Value)> = vec![(String::new(), json!({}))];
+        for c in &shader.pipeline_constants {
+            let values: Vec<String> = match s
+                .material
+                .and_then(|m| m.keywords.iter().find(|k| k.name == c.name))
+            {
+                Some(k) => k.values.clone(),
+                None if s.material.is_none() => continue,
+                None if c.ty == "bool" => vec!["off".into(), "on".into()],
+                None => panic!("{name}: pipeline constant {} names no keyword", c.name),
+            };
+            for (i, value) in values.iter().enumerate() {
+                if *value == c.default {
+                    continue;
                 }
+                // WebGPU constants are numbers: an enum's value index, a bool's 0/1.
+                constant_sets.push((
+                    format!(" {}={value}", c.name),
+                    json!({ c.name.clone(): i as f64 }),
+                ));
             }
-
-            let buffers: Vec<Value> = shader
-                .vertex_inputs
-                .iter()
-                .map(|a| {
-                    json!({
-                        "arrayStride": vertex_format_size(&a.format),
-                        "attributes": [{ "shaderLocation": a.location, "offset": 0, "format": a.format }],
-                    })
-                })
-                .collect();
-            for pass in &m.passes {
-                let rs = &pass.render_state;
-                let targets = color_targets(&parsed, &pass.fragment_entry, &blend_state(rs.blend));
-                let cull = match rs.cull {
-                    CullMode::None => "none",
-                    CullMode::Front => "front",
-                    CullMode::Back => "back",
-                };
-                for (label, constants) in &constant_sets {
-                    job.pipelines.push(json!({
-                        "name": format!("{name} pass `{}`{label}", pass.name),
-                        "module": index,
-                        "vertex": {
-                            "entryPoint": pass.vertex_entry,
-                            "buffers": buffers,
-                            "constants": constants,
-                        },
-                        "fragment": {
-                            "entryPoint": pass.fragment_entry,
-                            "targets": targets,
-                            "constants": constants,
-                        },
-                        "primitive": { "topology": "triangle-list", "cullMode": cull },
-                        "depthStencil": {
-                            "format": "depth32float",
-                            "depthWriteEnabled": rs.depth_write,
-                            "depthCompare": depth_compare(rs.depth_test),
-                        },
-                    }));
-                }
-            }
-            job.modules.push(Module { name, code });
         }
+
+        let buffers: Vec<Value> = shader
+            .vertex_inputs
+            .iter()
+            .map(|a| {
+                json!({
+                    "arrayStride": vertex_format_size(&a.format),
+                    "attributes": [{ "shaderLocation": a.location, "offset": 0, "format": a.format }],
+                })
+            })
+            .collect();
+        for pass in &s.passes {
+            let rs = &pass.render_state;
+            let targets = color_targets(&parsed, &pass.fragment_entry, &blend_state(rs.blend));
+            let cull = match rs.cull {
+                CullMode::None => "none",
+                CullMode::Front => "front",
+                CullMode::Back => "back",
+            };
+            for (label, constants) in &constant_sets {
+                job.pipelines.push(json!({
+                    "name": format!("{name} pass `{}`{label}", pass.name),
+                    "module": index,
+                    "vertex": {
+                        "entryPoint": pass.vertex_entry,
+                        "buffers": buffers,
+                        "constants": constants,
+                    },
+                    "fragment": {
+                        "entryPoint": pass.fragment_entry,
+                        "targets": targets,
+                        "constants": constants,
+                    },
+                    "primitive": { "topology": "triangle-list", "cullMode": cull },
+                    "depthStencil": {
+                        "format": "depth32float",
+                        "depthWriteEnabled": rs.depth_write,
+                        "depthCompare": depth_compare(rs.depth_test),
+                    },
+                }));
+            }
+        }
+        job.modules.push(Module { name, code });
     }
 }
 
@@ -628,13 +650,19 @@ fn findings(job: &Job, report: &Value) -> (Vec<String>, Vec<String>) {
 #[test]
 fn every_generated_wgsl_compiles_in_chromium_tint() {
     let mut job = Job::default();
-    for dir in ["materials", "tests/fixtures/materials"] {
-        add_build(&mut job, &build_dir(&repo().join(dir)));
-    }
+    let scene_shaders = add_build(&mut job, &build_project());
+    add_build(
+        &mut job,
+        &build_dir(&repo().join("tests/fixtures/materials")),
+    );
     assert!(
         job.modules.len() >= 12,
         "expected a WGSL module per canonical variant, found {}",
         job.modules.len()
+    );
+    assert!(
+        scene_shaders >= 2,
+        "expected the shipped scenes' shaders, found {scene_shaders}"
     );
     let report = check_in_browser(&job);
     let (errors, warnings) = findings(&job, &report);
@@ -653,7 +681,7 @@ fn every_generated_wgsl_compiles_in_chromium_tint() {
         eprintln!("Tint warnings (allowed):\n{}", warnings.join("\n\n"));
     }
     eprintln!(
-        "Tint accepted {} modules and {} pipelines (adapter {})",
+        "Tint accepted {} modules ({scene_shaders} of them scene shaders) and {} pipelines (adapter {})",
         job.modules.len(),
         job.pipelines.len(),
         report["adapter"]

@@ -5,7 +5,7 @@ use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
-use weft_compiler::{BuildOptions, build_library, output};
+use weft_compiler::{BuildOptions, output};
 
 /// Paths under `generated/` that `regenerate` keeps: measured reports and
 /// the gallery have their own commands (timings vary by machine).
@@ -30,8 +30,14 @@ enum Command {
         #[arg(long)]
         reports: bool,
     },
-    /// Re-render every golden under tests/goldens/ (removing stale ones).
-    Bless,
+    /// Re-render every golden under tests/goldens/ (materials' cases and
+    /// shipped scenes, removing stale ones); a golden the new render matches
+    /// within the tests' FLIP threshold is kept as it is.
+    Bless {
+        /// Rewrite every golden, even those the new render matches.
+        #[arg(long)]
+        force: bool,
+    },
     /// Render every material, tier and preset: generated/gallery/ (a contact
     /// sheet and one image per case) and generated/gallery.md.
     Gallery,
@@ -56,6 +62,16 @@ enum Bench {
         #[command(flatten)]
         args: ShadingArgs,
         /// Also write generated/reports/ (shading.md, <name>.measurements.json, <name>.pareto.svg).
+        #[arg(long)]
+        write: bool,
+    },
+    /// Every shipped scene, generic library variants vs scene-specialised
+    /// shaders: GPU time per frame (interleaved rounds), FLIP between the
+    /// images, SPIR-V instructions, shaders/files/bytes, build time.
+    Scene {
+        #[command(flatten)]
+        args: SceneArgs,
+        /// Also write generated/reports/scenes.md and scenes.json.
         #[arg(long)]
         write: bool,
     },
@@ -101,6 +117,63 @@ impl ShadingArgs {
     }
 }
 
+#[derive(clap::Args)]
+struct SceneArgs {
+    /// Image width and height.
+    #[arg(long, num_args = 2, value_names = ["W", "H"], default_values_t = [640, 400])]
+    size: Vec<u32>,
+    /// Rounds of (generic, specialised) draws.
+    #[arg(long, default_value_t = 10)]
+    rounds: u32,
+    /// Timed frames per arm and round (the round's figure is their median).
+    #[arg(long, default_value_t = 10)]
+    frames: u32,
+    /// Only these scenes (repeatable; default: every scenes/*.scene.toml).
+    #[arg(long = "scene", value_name = "NAME")]
+    scenes: Vec<String>,
+    /// Time on the CPU (submit to completion) even with timestamp queries.
+    #[arg(long)]
+    cpu_timer: bool,
+    /// Do not time each instance alone.
+    #[arg(long)]
+    no_per_instance: bool,
+}
+
+impl SceneArgs {
+    fn options(&self) -> weft_golden::scene_bench::SceneBenchOptions {
+        weft_golden::scene_bench::SceneBenchOptions {
+            width: self.size[0].max(1),
+            height: self.size[1].max(1),
+            rounds: self.rounds.max(1),
+            frames: self.frames.max(1),
+            force_cpu_timer: self.cpu_timer,
+            per_instance: !self.no_per_instance,
+            ..Default::default()
+        }
+    }
+
+    /// The command line that reproduces the run.
+    fn command(&self) -> String {
+        let o = self.options();
+        let mut c = format!(
+            "cargo xtask bench scene --write --size {} {} --rounds {} --frames {}",
+            o.width, o.height, o.rounds, o.frames
+        );
+        for s in &self.scenes {
+            c.push_str(&format!(" --scene {s}"));
+        }
+        for (on, flag) in [
+            (self.cpu_timer, " --cpu-timer"),
+            (self.no_per_instance, " --no-per-instance"),
+        ] {
+            if on {
+                c.push_str(flag);
+            }
+        }
+        c
+    }
+}
+
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
@@ -125,7 +198,7 @@ fn main() -> ExitCode {
                 status
             }
         }
-        Command::Bless => bless(&root),
+        Command::Bless { force } => bless(&root, force),
         Command::Gallery => gallery(&root),
         Command::Bench {
             what: Bench::Compile { runs },
@@ -138,30 +211,16 @@ fn main() -> ExitCode {
             write,
             "cargo xtask bench shading --write",
         ),
+        Command::Bench {
+            what: Bench::Scene { args, write },
+        } => bench_scene(&root, &args, write),
     }
 }
 
 /// The whole project: every material, then every scene under `scenes/`
 /// (files under `scenes/<scene>/`), `auto` tiers measured on lavapipe.
 fn build(root: &Path, options: &BuildOptions) -> Option<weft_compiler::BuildOutput> {
-    let result =
-        build_library(&root.join("materials"), options, &|_, _, _| {}).and_then(|mut out| {
-            let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)
-                .map(|c| c.with_reports_dir(root.join("generated/reports")))
-                .map_err(|e| {
-                    let mut d = weft_front::Diagnostics::new();
-                    d.push(codespan_reporting::diagnostic::Diagnostic::error().with_message(e));
-                    (weft_front::SourceDb::new(), d)
-                })?;
-            let options = weft_compiler::SceneBuildOptions {
-                tier_chooser: Some(&chooser),
-            };
-            let (files, _) =
-                weft_compiler::scene::build_scene_folder(&root.join("scenes"), &options)?;
-            out.files.extend(files);
-            Ok(out)
-        });
-    match result {
+    match weft_golden::project::build_project(root, options) {
         Ok(out) => Some(out),
         Err((db, diags)) => {
             let mut stderr = codespan_reporting::term::termcolor::StandardStream::stderr(
@@ -361,6 +420,75 @@ fn bench_shading(
     ExitCode::SUCCESS
 }
 
+/// The scene manifests under scenes/ (only `names` when given), resolved
+/// by the front end for the materials they use.
+fn scene_inputs(
+    root: &Path,
+    names: &[String],
+) -> Result<Vec<weft_golden::scene_bench::SceneInput>, String> {
+    let dir = root.join("scenes");
+    let paths = weft_compiler::scene::discover_scenes(&dir)
+        .map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
+    let mut inputs = Vec::new();
+    for manifest in paths {
+        let input = weft_golden::scene_bench::SceneInput {
+            manifest,
+            materials_root: PathBuf::new(),
+            material_tomls: Vec::new(),
+        };
+        if !names.is_empty() && !names.contains(&input.name()) {
+            continue;
+        }
+        let (mut db, mut diags) = (weft_front::SourceDb::new(), weft_front::Diagnostics::new());
+        let Some(scene) = weft_front::scene::load_scene(&input.manifest, &mut db, &mut diags)
+        else {
+            return Err(diags.render_plain(&db));
+        };
+        inputs.push(weft_golden::scene_bench::SceneInput {
+            materials_root: scene.manifest.materials_root.clone(),
+            material_tomls: scene.materials.iter().map(|m| m.path.clone()).collect(),
+            ..input
+        });
+    }
+    if let Some(missing) = names
+        .iter()
+        .find(|n| !inputs.iter().any(|i| &i.name() == *n))
+    {
+        return Err(format!("no scene `{missing}` in {}", dir.display()));
+    }
+    Ok(inputs)
+}
+
+/// Runs the scene benchmark on generated/, prints the tables and, with
+/// `write`, rewrites generated/reports/scenes.md and scenes.json.
+fn bench_scene(root: &Path, args: &SceneArgs, write: bool) -> ExitCode {
+    use weft_golden::scene_bench;
+    let generated = root.join("generated");
+    let command = args.command();
+    let result = scene_inputs(root, &args.scenes)
+        .and_then(|inputs| {
+            scene_bench::run(&generated, &inputs, &args.options(), &mut |s| {
+                eprintln!("{s}")
+            })
+        })
+        .and_then(|report| {
+            print!("{}", scene_bench::markdown_report(&report, &command));
+            if write {
+                let files =
+                    scene_bench::write_reports(&generated.join("reports"), &report, &command)?;
+                println!("wrote {} files in generated/reports/", files.len());
+            }
+            Ok(())
+        });
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
 /// Renders every case of every generated material with `render`.
 fn render_cases(
     root: &Path,
@@ -384,15 +512,68 @@ fn png_bytes(size: u32, rgba: &[u8]) -> Vec<u8> {
     weft_render::encode_png(size, size, rgba).expect("encode PNG")
 }
 
-fn bless(root: &Path) -> ExitCode {
+/// Every shipped scene as built into generated/scenes/, drawn whole with its
+/// specialised shaders over the sky at `size`: (metadata, sRGB8 RGBA) by name.
+#[allow(clippy::type_complexity)]
+fn render_scenes(
+    root: &Path,
+    size: (u32, u32),
+) -> Result<Vec<(String, weft_meta::scene::SceneMetadata, Vec<u8>)>, String> {
+    use weft_golden::scenes;
+    let generated = root.join("generated");
+    let mut h = scenes::SceneHarness::new(&generated).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    for name in scenes::shipped_scenes(root)? {
+        let path = scenes::built_scene_path(&generated, &name);
+        let scene = weft_render::SceneFile::load(&path)
+            .map_err(|e| format!("{name}: {e} (run `cargo xtask regenerate`)"))?;
+        let image = h
+            .render(
+                &scene,
+                &weft_render::SceneShaders::Specialised,
+                size,
+                weft_render::Background::Sky { mip: 0.0 },
+            )
+            .map_err(|e| format!("scene {name}: {e}"))?;
+        out.push((name, scene.metadata, weft_golden::to_ldr(&image)));
+    }
+    Ok(out)
+}
+
+fn bless(root: &Path, force: bool) -> ExitCode {
     let goldens = root.join("tests/goldens");
     let mut files = std::collections::BTreeMap::new();
-    let result = render_cases(root, weft_golden::GOLDEN_SIZE, |case, _, ldr| {
+    // (kept, largest FLIP mean among them)
+    let mut kept = (0usize, 0.0f32);
+    // A golden the new render matches within the tests' threshold keeps its
+    // bytes (re-blessing on another machine does not churn every PNG).
+    let mut add = |rel: String, (w, h): (u32, u32), ldr: &[u8]| {
+        let old = goldens.join(&rel);
+        if !force
+            && let Ok((ow, oh, rgba)) = weft_golden::read_png(&old)
+            && (ow, oh) == (w, h)
+            && let mean = weft_golden::flip(&rgba, ldr, w, h).mean
+            && mean <= weft_golden::FLIP_MEAN_THRESHOLD
+            && let Ok(bytes) = std::fs::read(&old)
+        {
+            kept = (kept.0 + 1, kept.1.max(mean));
+            files.insert(rel, bytes);
+            return;
+        }
+        files.insert(rel, weft_render::encode_png(w, h, ldr).expect("encode PNG"));
+    };
+    let size = weft_golden::GOLDEN_SIZE;
+    let result = render_cases(root, size, |case, _, ldr| {
         let rel = weft_golden::golden_path(Path::new(""), case);
-        files.insert(
-            rel.to_string_lossy().replace('\\', "/"),
-            png_bytes(weft_golden::GOLDEN_SIZE, &ldr),
-        );
+        add(rel.to_string_lossy().replace('\\', "/"), (size, size), &ldr);
+    })
+    .and_then(|adapter| {
+        let size = weft_golden::scenes::SCENE_GOLDEN_SIZE;
+        for (name, _, ldr) in render_scenes(root, size)? {
+            let rel = weft_golden::scenes::scene_golden_path(Path::new(""), &name);
+            add(rel.to_string_lossy().replace('\\', "/"), size, &ldr);
+        }
+        Ok(adapter)
     });
     match result.and_then(|adapter| {
         output::write_atomically(&goldens, &files, &[]).map_err(|e| e.to_string())?;
@@ -403,6 +584,14 @@ fn bless(root: &Path) -> ExitCode {
                 "blessed {} goldens in tests/goldens/ on {adapter}",
                 files.len()
             );
+            if kept.0 > 0 {
+                println!(
+                    "kept {} of them unchanged: their new renders match within FLIP mean {} (largest {:.5}); `--force` rewrites them",
+                    kept.0,
+                    weft_golden::FLIP_MEAN_THRESHOLD,
+                    kept.1
+                );
+            }
             ExitCode::SUCCESS
         }
         Err(e) => {
@@ -413,6 +602,8 @@ fn bless(root: &Path) -> ExitCode {
 }
 
 const GALLERY_SIZE: u32 = 160;
+/// Size of a scene's image in the gallery.
+const SCENE_GALLERY_SIZE: (u32, u32) = (480, 360);
 
 fn gallery(root: &Path) -> ExitCode {
     let mut files = std::collections::BTreeMap::new();
@@ -436,6 +627,20 @@ fn gallery(root: &Path) -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
+    let scenes = match render_scenes(root, SCENE_GALLERY_SIZE) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    for (name, _, ldr) in &scenes {
+        let (w, h) = SCENE_GALLERY_SIZE;
+        files.insert(
+            format!("scenes/{name}.png"),
+            weft_render::encode_png(w, h, ldr).expect("encode PNG"),
+        );
+    }
     let (w, h, sheet) = weft_golden::contact_sheet(&tiles, GALLERY_SIZE, 8);
     files.insert(
         "contact_sheet.png".into(),
@@ -451,7 +656,8 @@ fn gallery(root: &Path) -> ExitCode {
             eprintln!("warning: ignoring measurements: {e}");
         }
     }
-    let md = gallery_markdown(&sections, &adapter);
+    let mut md = gallery_markdown(&sections, &adapter);
+    md.push_str(&scenes_markdown(&scenes));
     let write = output::write_atomically(&generated.join("gallery"), &files, &[])
         .and_then(|()| std::fs::write(generated.join("gallery.md"), md));
     match write {
@@ -467,6 +673,54 @@ fn gallery(root: &Path) -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// The gallery's scene section: each shipped scene's image and its instances.
+fn scenes_markdown(scenes: &[(String, weft_meta::scene::SceneMetadata, Vec<u8>)]) -> String {
+    use std::fmt::Write;
+    let (w, h) = SCENE_GALLERY_SIZE;
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "## Scenes\n\nEvery scene under `scenes/` as `cargo xtask regenerate` builds it (`generated/scenes/<scene>/`): each instance drawn with its specialised shader, {w}x{h}, same sky, light and tone mapping.\n"
+    );
+    for (name, meta, _) in scenes {
+        let _ = writeln!(md, "### {name}\n");
+        if let Some(d) = &meta.description {
+            let _ = writeln!(md, "{d}\n");
+        }
+        let _ = writeln!(
+            md,
+            "<img src=\"gallery/scenes/{name}.png\" width=\"{w}\" title=\"{name}\" alt=\"{name}\">\n"
+        );
+        let _ = writeln!(
+            md,
+            "{} instances, {} shaders.\n",
+            meta.instances.len(),
+            meta.shaders.len()
+        );
+        let _ = writeln!(
+            md,
+            "| instance | material | preset | tier | shader |\n|---|---|---|---|---|"
+        );
+        for i in &meta.instances {
+            let tier = if i.tier_choice.is_some() {
+                format!("auto → {}", i.tier)
+            } else {
+                i.tier.clone()
+            };
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {tier} | `{}` |",
+                i.name,
+                i.material,
+                i.preset.as_deref().unwrap_or("—"),
+                i.shader
+            );
+        }
+        let _ = writeln!(md);
+    }
+    md
 }
 
 fn gallery_markdown(

@@ -6,6 +6,9 @@
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
 pub mod auto_tier;
+pub mod project;
+pub mod scene_bench;
+pub mod scenes;
 pub mod shading;
 
 use std::path::{Path, PathBuf};

@@ -322,9 +322,11 @@ fn replace_reads(
                     Expression::Constant(c)
                 }
             }
+            // (A gather returns one channel of four texels: not the texel; leave it.)
             Expression::ImageSample {
                 image,
                 depth_ref: None,
+                gather: None,
                 ..
             } => {
                 let Expression::GlobalVariable(g) = f.expressions[image] else {

@@ -1,0 +1,38 @@
+//! `weft build --scene` as a user runs it: a scene that only the compiler can
+//! reject (its front end accepts it) exits 1 with the diagnostic and writes nothing.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .canonicalize()
+        .unwrap()
+}
+
+#[test]
+fn build_scene_writes_nothing_when_the_compiler_rejects_the_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(repo())
+        .args([
+            "build",
+            "--color",
+            "never",
+            "--scene",
+            "tests/diagnostics/scenes/bad/shader_budget.scene.toml",
+            "-o",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[shader-budget]"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(!out.exists(), "no output folder on error");
+    // Nothing half-written beside it either.
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
