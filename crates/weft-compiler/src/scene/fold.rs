@@ -5,9 +5,9 @@
 //! 1. loads of folded uniform members (and of components of them) become
 //!    module constants; samples of textures left at a built-in default become
 //!    the constant texel the sample would return;
-//! 2. naga's `process_overrides` resolves every override (tier, every keyword,
-//!    the engine features) and constant-evaluates every expression whose
-//!    operands are now constant — through the whole function body;
+//! 2. every override (tier, every keyword, the engine features) becomes a
+//!    literal, and every expression whose operands are now constant is
+//!    evaluated (`evaluate.rs`) — through the whole function body;
 //! 3. `if`s on now-constant conditions keep only the taken branch (naga keeps
 //!    them), and compaction drops what only dead code used: textures, LUTs,
 //!    helper functions;
@@ -19,10 +19,11 @@
 //! materials test scene constants and engine features where they read them,
 //! in the entry point (docs/scenes.md, "Writing foldable materials").
 
+use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use crate::specialise::prune_function;
 use naga::{
-    AddressSpace, Constant, Expression, Handle, Literal, Module, Range, Span, Statement,
-    StructMember, Type, TypeInner,
+    AddressSpace, Constant, Expression, Handle, Literal, Module, Span, StructMember, Type,
+    TypeInner,
 };
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -310,14 +311,7 @@ fn replace_reads(
                         _ => member_ty,
                     };
                     let init = const_expr(module, ty, value, rest.first().copied())?;
-                    let c = module.constants.append(
-                        Constant {
-                            name: None,
-                            ty,
-                            init,
-                        },
-                        Span::UNDEFINED,
-                    );
+                    let c = anonymous_constant(module, ty, init);
                     pool.by_path.insert(path, c);
                     Expression::Constant(c)
                 }
@@ -350,14 +344,7 @@ fn replace_reads(
                             Span::UNDEFINED,
                         );
                         let init = const_expr(module, ty, &ConstValue::F32(texel.to_vec()), None)?;
-                        let c = module.constants.append(
-                            Constant {
-                                name: None,
-                                ty,
-                                init,
-                            },
-                            Span::UNDEFINED,
-                        );
+                        let c = anonymous_constant(module, ty, init);
                         pool.texels.insert(key, c);
                         c
                     }
@@ -371,66 +358,6 @@ fn replace_reads(
     let body = std::mem::take(&mut f.body);
     f.body = filter_emits(body, &f.expressions);
     Ok(())
-}
-
-/// `Emit` ranges may not cover pre-emitted expressions (constants): split them.
-fn filter_emits(block: naga::Block, exprs: &naga::Arena<Expression>) -> naga::Block {
-    let mut out = naga::Block::with_capacity(block.len());
-    for (stmt, span) in block.span_into_iter() {
-        let stmt = match stmt {
-            Statement::Emit(range) => {
-                let mut run: Option<(Handle<Expression>, Handle<Expression>)> = None;
-                for h in range {
-                    if exprs[h].needs_pre_emit() {
-                        if let Some((a, b)) = run.take() {
-                            out.push(Statement::Emit(Range::new_from_bounds(a, b)), span);
-                        }
-                    } else {
-                        run = Some(match run {
-                            Some((a, _)) => (a, h),
-                            None => (h, h),
-                        });
-                    }
-                }
-                match run {
-                    Some((a, b)) => Statement::Emit(Range::new_from_bounds(a, b)),
-                    None => continue,
-                }
-            }
-            Statement::Block(b) => Statement::Block(filter_emits(b, exprs)),
-            Statement::If {
-                condition,
-                accept,
-                reject,
-            } => Statement::If {
-                condition,
-                accept: filter_emits(accept, exprs),
-                reject: filter_emits(reject, exprs),
-            },
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => Statement::Loop {
-                body: filter_emits(body, exprs),
-                continuing: filter_emits(continuing, exprs),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases
-                    .into_iter()
-                    .map(|mut c| {
-                        c.body = filter_emits(c.body, exprs);
-                        c
-                    })
-                    .collect(),
-            },
-            other => other,
-        };
-        out.push(stmt, span);
-    }
-    out
 }
 
 /// Rebuilds the material uniform struct with only the members some function
@@ -535,170 +462,4 @@ fn error_chain(e: &dyn std::error::Error) -> String {
         source = s.source();
     }
     out
-}
-
-/// Replaces every function expression whose operands are all constant by its
-/// value, evaluated by naga's constant evaluator in the module's global
-/// arena (so WGSL's rules and errors apply; an expression it cannot or may
-/// not evaluate, e.g. a division by zero, is left to run time).
-fn evaluate_constants(module: &mut Module, info: &naga::valid::ModuleInfo) {
-    let mut tracker = naga::proc::ExpressionKindTracker::from_arena(&module.global_expressions);
-    let mut layouter = naga::proc::Layouter::default();
-    let mut fns = std::mem::take(&mut module.functions);
-    for (h, f) in fns.iter_mut() {
-        evaluate_function(module, f, &info[h], &mut tracker, &mut layouter);
-    }
-    module.functions = fns;
-    let mut eps = std::mem::take(&mut module.entry_points);
-    for (i, ep) in eps.iter_mut().enumerate() {
-        evaluate_function(
-            module,
-            &mut ep.function,
-            info.get_entry_point(i),
-            &mut tracker,
-            &mut layouter,
-        );
-    }
-    module.entry_points = eps;
-}
-
-/// The operands of a side-effect-free expression the evaluator understands.
-fn pure_operands(e: &Expression) -> Option<Vec<Handle<Expression>>> {
-    Some(match e {
-        Expression::Binary { left, right, .. } => vec![*left, *right],
-        Expression::Unary { expr, .. } | Expression::As { expr, .. } => vec![*expr],
-        Expression::Splat { value, .. } => vec![*value],
-        Expression::Swizzle { vector, .. } => vec![*vector],
-        Expression::AccessIndex { base, .. } => vec![*base],
-        Expression::Access { base, index } => vec![*base, *index],
-        Expression::Compose { components, .. } => components.clone(),
-        Expression::Select {
-            condition,
-            accept,
-            reject,
-        } => vec![*condition, *accept, *reject],
-        Expression::Relational { argument, .. } => vec![*argument],
-        Expression::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => std::iter::once(*arg)
-            .chain(arg1.iter().chain(arg2).chain(arg3).copied())
-            .collect(),
-        _ => return None,
-    })
-}
-
-fn evaluate_function(
-    module: &mut Module,
-    f: &mut naga::Function,
-    info: &naga::valid::FunctionInfo,
-    tracker: &mut naga::proc::ExpressionKindTracker,
-    layouter: &mut naga::proc::Layouter,
-) {
-    // Function expression -> the global expression holding its value.
-    let mut known: HashMap<Handle<Expression>, Handle<Expression>> = HashMap::new();
-    let handles: Vec<Handle<Expression>> = f.expressions.iter().map(|(h, _)| h).collect();
-    for h in handles {
-        let expr = f.expressions[h].clone();
-        let global = match &expr {
-            Expression::Constant(c) => Some(module.constants[*c].init),
-            Expression::Literal(_) | Expression::ZeroValue(_) => {
-                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
-                    .try_eval_and_append(expr.clone(), Span::UNDEFINED)
-                    .ok()
-            }
-            e => pure_operands(e).and_then(|ops| {
-                let mapped: HashMap<Handle<Expression>, Handle<Expression>> = ops
-                    .iter()
-                    .map(|op| known.get(op).map(|g| (*op, *g)))
-                    .collect::<Option<_>>()?;
-                let mut g = expr.clone();
-                remap_operands(&mut g, &mapped);
-                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
-                    .try_eval_and_append(g, Span::UNDEFINED)
-                    .ok()
-            }),
-        };
-        let Some(g) = global else { continue };
-        known.insert(h, g);
-        if f.expressions[h].needs_pre_emit() {
-            continue;
-        }
-        f.expressions[h] = match module.global_expressions[g] {
-            Expression::Literal(l) => Expression::Literal(l),
-            _ => {
-                let ty = match &info[h].ty {
-                    naga::proc::TypeResolution::Handle(t) => *t,
-                    naga::proc::TypeResolution::Value(inner) => module.types.insert(
-                        Type {
-                            name: None,
-                            inner: inner.clone(),
-                        },
-                        Span::UNDEFINED,
-                    ),
-                };
-                let c = module.constants.append(
-                    Constant {
-                        name: None,
-                        ty,
-                        init: g,
-                    },
-                    Span::UNDEFINED,
-                );
-                Expression::Constant(c)
-            }
-        };
-    }
-    let body = std::mem::take(&mut f.body);
-    f.body = filter_emits(body, &f.expressions);
-}
-
-fn remap_operands(e: &mut Expression, map: &HashMap<Handle<Expression>, Handle<Expression>>) {
-    let m = |h: &mut Handle<Expression>| {
-        if let Some(g) = map.get(h) {
-            *h = *g;
-        }
-    };
-    match e {
-        Expression::Binary { left, right, .. } => {
-            m(left);
-            m(right);
-        }
-        Expression::Unary { expr, .. } | Expression::As { expr, .. } => m(expr),
-        Expression::Splat { value, .. } => m(value),
-        Expression::Swizzle { vector, .. } => m(vector),
-        Expression::AccessIndex { base, .. } => m(base),
-        Expression::Access { base, index } => {
-            m(base);
-            m(index);
-        }
-        Expression::Compose { components, .. } => components.iter_mut().for_each(m),
-        Expression::Select {
-            condition,
-            accept,
-            reject,
-        } => {
-            m(condition);
-            m(accept);
-            m(reject);
-        }
-        Expression::Relational { argument, .. } => m(argument),
-        Expression::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => {
-            m(arg);
-            arg1.iter_mut()
-                .chain(arg2.iter_mut())
-                .chain(arg3.iter_mut())
-                .for_each(m);
-        }
-        _ => {}
-    }
 }
