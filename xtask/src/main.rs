@@ -463,6 +463,11 @@ fn scene_inputs(
 /// `write`, rewrites generated/reports/scenes.md and scenes.json.
 fn bench_scene(root: &Path, args: &SceneArgs, write: bool) -> ExitCode {
     use weft_golden::scene_bench;
+    if std::env::var_os(scene_bench::LAVAPIPE_THREADS).is_none() {
+        // SAFETY: no other thread runs yet (nothing has touched the GPU,
+        // rayon or the compiler); lavapipe reads it when the device is made.
+        unsafe { std::env::set_var(scene_bench::LAVAPIPE_THREADS, "1") };
+    }
     let generated = root.join("generated");
     let command = args.command();
     let result = scene_inputs(root, &args.scenes)

@@ -41,6 +41,14 @@ pub const FLIP_BOUND: f64 = crate::scenes::FOLD_FLIP_MEAN_THRESHOLD;
 /// The issue's target: at least this much less GPU time than the generic draw.
 pub const TARGET_SAVING: f64 = 0.30;
 
+/// The variable that sets lavapipe's rasterizer threads. On a machine with
+/// few cores its workers compete with the submitting thread and the frame
+/// times of an A/B pair stop being comparable (on 2 cores, per-round savings
+/// of one scene ranged over −15%…+47% with 2 workers and 30%…42% with 1), so
+/// `cargo xtask bench scene` sets it to 1 unless it is set; the report
+/// records it. Other adapters ignore it.
+pub const LAVAPIPE_THREADS: &str = "LP_NUM_THREADS";
+
 /// One scene to measure: its manifest and the material TOML files its
 /// instances use (as the front end resolved them), for the generic build.
 #[derive(Clone, Debug, PartialEq)]
@@ -177,6 +185,7 @@ impl AbTiming {
             "specialised_spread": round(s.spread, 4),
             "rounds_specialised_faster": self.rounds_faster(),
             "round_savings_pct": self.round_savings_pct().iter().map(|x| round(*x, 2)).collect::<Vec<_>>(),
+            "round_saving_median_pct": round(quantile(&self.round_savings_pct(), 0.5), 2),
             "rounds": self.generic.len(),
             "generic_round_medians_ms": self.generic.iter().map(|x| round(*x, 4)).collect::<Vec<_>>(),
             "specialised_round_medians_ms": self.specialised.iter().map(|x| round(*x, 4)).collect::<Vec<_>>(),
@@ -317,6 +326,8 @@ pub struct SceneBenchReport {
     pub options: SceneBenchOptions,
     /// `debug` or `release`: the build times depend on it.
     pub profile: String,
+    /// `LP_NUM_THREADS` (lavapipe's rasterizer threads) when set.
+    pub lavapipe_threads: Option<String>,
     pub scenes: Vec<SceneBench>,
     /// Wall time of the whole run, seconds.
     pub seconds: f64,
@@ -366,6 +377,7 @@ pub fn run(
             "release"
         }
         .into(),
+        lavapipe_threads: std::env::var(LAVAPIPE_THREADS).ok(),
         scenes,
         seconds: started.elapsed().as_secs_f64(),
     })
@@ -400,22 +412,12 @@ impl Bench<'_> {
         let dir = file.dir.clone();
         let meta = &file.metadata;
         let libraries = load_libraries(self.generated, meta)?;
-
-        log(&format!("{name}: timing the whole scene"));
-        let (gpu, images) = self.time_pair(&file)?;
-        let flip = image_error(&images[0], &images[1]);
-
         let mut instances = Vec::new();
         for inst in &meta.instances {
             instances.push(instance_figures(self.generated, &file, inst, &libraries)?);
         }
-        let empty_pass = if self.options.per_instance {
-            log(&format!("{name}: timing each instance alone"));
-            Some(self.time_instances(&file, &mut instances)?)
-        } else {
-            None
-        };
 
+        // Builds first: a scene that does not build fails before the long part.
         log(&format!("{name}: timing builds"));
         let (build, current) = time_builds(input, &dir, self.generated, self.options.build_runs)?;
         if !current {
@@ -423,6 +425,16 @@ impl Bench<'_> {
                 "warning: generated/scenes/{name}/ differs from a fresh build; run `cargo xtask regenerate`"
             ));
         }
+
+        log(&format!("{name}: timing the whole scene"));
+        let (gpu, images) = self.time_pair(&file)?;
+        let flip = image_error(&images[0], &images[1]);
+        let empty_pass = if self.options.per_instance {
+            log(&format!("{name}: timing each instance alone"));
+            Some(self.time_instances(&file, &mut instances)?)
+        } else {
+            None
+        };
         Ok(SceneBench {
             name,
             inputs_hash: meta.inputs_hash.clone(),
@@ -767,13 +779,17 @@ fn timer_text(timer: FrameTimer) -> &'static str {
 pub fn describe(report: &SceneBenchReport) -> String {
     let o = &report.options;
     format!(
-        "Adapter: {}. Timer: {}. Image: {}x{} Rgba16Float, WGSL shaders, cleared to transparent black (no sky: object pixels are those drawn), the scene's camera and lighting (sky environment cube and SH, one sun, as its features say). \
+        "Adapter: {}{}. Timer: {}. Image: {}x{} Rgba16Float, WGSL shaders, cleared to transparent black (no sky: object pixels are those drawn), the scene's camera and lighting (sky environment cube and SH, one sun, as its features say). \
          Generic: the library variants in `generated/<material>/` drawn with every instance's values (`SceneShaders::Library`); specialised: `generated/scenes/<scene>/`. \
-         GPU time: {} rounds, each drawing generic then specialised for {} timed frames (after {} warm-up frames in the first round); reported: the median of the per-round medians; spread = (p90 − p10) / median of the per-round medians; `faster` = rounds whose specialised median is below the generic median of the same round, with the lowest and highest per-round saving. \
+         GPU time: {} rounds, each drawing generic then specialised for {} timed frames (after {} warm-up frames in the first round); reported: the median of the per-round medians; spread = (p90 − p10) / median of the per-round medians; `rounds faster` = rounds whose specialised median is below the generic median of the same round; per-round saving = 1 − specialised / generic within a round (median, lowest…highest), a paired figure that drift between rounds cannot bias. \
          FLIP: mean over object pixels of the specialised image against the generic one (ACES tone-mapped sRGB8; bound {FLIP_BOUND}). \
          SPIR-V: instructions in the fragment entry point's functions (module total in parentheses), generic variant file vs scene shader file. \
          Build: median of {} interleaved runs ({} profile), the scene's materials with `build_materials` vs `build_scene` with a fresh `LavapipeTierChooser` per run (device creation and the `auto` tier renders on the adapter included).",
         report.adapter,
+        report
+            .lavapipe_threads
+            .as_ref()
+            .map_or(String::new(), |n| format!(", {LAVAPIPE_THREADS}={n}")),
         timer_text(report.timer),
         o.width.max(1),
         o.height.max(1),
@@ -789,13 +805,14 @@ fn pct(x: f64) -> String {
     format!("{x:.1}%")
 }
 
-/// "faster in k/n rounds, per-round saving lowest…highest".
+/// "k/n, median m% (lowest…highest)": rounds faster, and the per-round savings.
 fn rounds_text(t: &AbTiming) -> String {
     let savings = t.round_savings_pct();
     format!(
-        "{}/{}, {:.1}…{}",
+        "{}/{}, median {} ({:.1}…{})",
         t.rounds_faster(),
         t.generic.len(),
+        pct(quantile(&savings, 0.5)),
         quantile(&savings, 0.0),
         pct(quantile(&savings, 1.0))
     )
@@ -804,7 +821,7 @@ fn rounds_text(t: &AbTiming) -> String {
 /// The summary table: one row per scene.
 pub fn summary_table(scenes: &[SceneBench]) -> String {
     let mut md = String::from(
-        "| scene | GPU ms generic | GPU ms specialised | ratio | saving | spread (gen. / spec.) | faster (rounds), saving per round | FLIP mean | within bound | SPIR-V fragment instr. (mean reduction) | shaders | files | bytes | build ms generic | build ms scene |\n\
+        "| scene | GPU ms generic | GPU ms specialised | ratio | saving | spread (gen. / spec.) | rounds faster, per-round saving | FLIP mean | within bound | SPIR-V fragment instr. (mean reduction) | shaders | files | bytes | build ms generic | build ms scene |\n\
          | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
     );
     for s in scenes {
@@ -812,7 +829,7 @@ pub fn summary_table(scenes: &[SceneBench]) -> String {
         let (gf, sf) = (&s.generic_files, &s.scene_files);
         let _ = writeln!(
             md,
-            "| {} | {:.3} | {:.3} | {:.3} | {} | {} / {} | {} | {:.5} | {} | {} | {} → {} | {} → {} | {} → {} | {:.0} | {:.0} |",
+            "| {} | {:.3} | {:.3} | {:.3} | {} | {} / {} | {} | {:.6} | {} | {} | {} → {} | {} → {} | {} → {} | {:.0} | {:.0} |",
             s.name,
             g.median,
             sp.median,
@@ -862,7 +879,7 @@ pub fn scene_section(s: &SceneBench) -> String {
             Spread::of(empty).median
         );
     }
-    md.push_str("| instance | material | tier | generic variant → scene shader | GPU ms generic | specialised | saving | shading ms (gen. → spec.) | faster (rounds), saving per round | FLIP mean | SPIR-V fragment instr. | reduction | uniform bytes |\n");
+    md.push_str("| instance | material | tier | generic variant → scene shader | GPU ms alone, generic | specialised | saving | shading ms (gen. → spec.) | rounds faster, per-round saving | FLIP mean | SPIR-V fragment instr. | reduction | uniform bytes |\n");
     md.push_str("| --- | --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     let empty = s.empty_pass.as_deref().map(|e| Spread::of(e).median);
     for i in &s.instances {
@@ -887,7 +904,7 @@ pub fn scene_section(s: &SceneBench) -> String {
             i.tier,
             i.generic_variant,
             i.shader,
-            i.flip.map_or("—".into(), |f| format!("{:.5}", f.flip_mean)),
+            i.flip.map_or("—".into(), |f| format!("{:.6}", f.flip_mean)),
             i.spirv_generic.1,
             i.spirv_specialised.1,
             i.spirv_generic.0,
@@ -1014,6 +1031,7 @@ pub fn json_report(report: &SceneBenchReport, command: &str) -> serde_json::Valu
         "adapter": report.adapter,
         "timer": report.timer.name(),
         "profile": report.profile,
+        "lavapipe_threads": report.lavapipe_threads,
         "options": {
             "width": o.width.max(1),
             "height": o.height.max(1),
@@ -1111,6 +1129,7 @@ mod tests {
             timer: FrameTimer::GpuTimestamp,
             options: SceneBenchOptions::default(),
             profile: "debug".into(),
+            lavapipe_threads: Some("1".into()),
             scenes: vec![SceneBench {
                 name: "fitting_room".into(),
                 inputs_hash: "abc123".into(),
@@ -1193,14 +1212,14 @@ mod tests {
         let md = markdown_report(&report(), "cargo xtask bench scene --write");
         assert!(md.starts_with("# Scene-specialised vs generic shaders\n"));
         assert!(md.contains("Generated by `cargo xtask bench scene --write`"));
-        assert!(md.contains("Adapter: llvmpipe (test)."));
+        assert!(md.contains("Adapter: llvmpipe (test), LP_NUM_THREADS=1."));
         assert!(md.contains(
-            "| fitting_room | 11.000 | 6.500 | 0.591 | 40.9% | 18.2% / 15.4% | 3/3, 40.0…41.7% | 0.00120 | yes | 25.0% | 2 → 2 | 13 → 13 | 12500 → 12500 | 300 | 210 |"
+            "| fitting_room | 11.000 | 6.500 | 0.591 | 40.9% | 18.2% / 15.4% | 3/3, median 40.9% (40.0…41.7%) | 0.001200 | yes | 25.0% | 2 → 2 | 13 → 13 | 12500 → 12500 | 300 | 210 |"
         ), "{md}");
         assert!(md.contains("inputs_hash` abc123 (generated/ matches a fresh build)"));
         assert!(md.contains("An empty pass (the clear alone) takes 0.250 ms"));
         assert!(md.contains(
-            "| dress | satin | reference | `reference.normal_map-off` → `satin.0123456789ab` | 4.000 | 3.000 | 25.0% | 3.750 → 2.750 | 2/2, 25.0…25.0% | 0.00120 | 800 → 600 (1000 → 900) | 25.0% | 144 → 16 |"
+            "| dress | satin | reference | `reference.normal_map-off` → `satin.0123456789ab` | 4.000 | 3.000 | 25.0% | 3.750 → 2.750 | 2/2, median 25.0% (25.0…25.0%) | 0.001200 | 800 → 600 (1000 → 900) | 25.0% | 144 → 16 |"
         ), "{md}");
         assert!(md.contains("| skin | satin | reference |"));
         assert!(md.contains("| — | — | — | — | — | — |"));
@@ -1215,7 +1234,7 @@ mod tests {
         r.scenes[0].flip.flip_mean = 0.02;
         let md = markdown_report(&r, "c");
         assert!(md.contains("rerun `cargo xtask regenerate`"));
-        assert!(md.contains("| 0.02000 | **no** |"));
+        assert!(md.contains("| 0.020000 | **no** |"));
         let json = json_report(&r, "c");
         assert_eq!(json["scenes"][0]["flip_within_bound"], false);
         assert_eq!(json["scenes"][0]["generated_current"], false);
@@ -1226,6 +1245,7 @@ mod tests {
         let j = json_report(&report(), "cargo xtask bench scene --write");
         assert_eq!(j["command"], "cargo xtask bench scene --write");
         assert_eq!(j["timer"], "gpu-timestamp");
+        assert_eq!(j["lavapipe_threads"], "1");
         assert_eq!(j["options"]["width"], 640);
         assert_eq!(j["options"]["format"], "Rgba16Float");
         let s = &j["scenes"][0];
