@@ -98,6 +98,13 @@ fn evaluate_function(
                     .try_eval_and_append(expr.clone(), Span::UNDEFINED)
                     .ok()
             }
+            // The derivative of a constant is zero.
+            Expression::Derivative { expr: inner, .. } if known.contains_key(inner) => {
+                let ty = type_handle(module, info, h);
+                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
+                    .try_eval_and_append(Expression::ZeroValue(ty), Span::UNDEFINED)
+                    .ok()
+            }
             e => pure_operands(e).and_then(|ops| {
                 let mapped: HashMap<Handle<Expression>, Handle<Expression>> = ops
                     .iter()
@@ -105,9 +112,32 @@ fn evaluate_function(
                     .collect::<Option<_>>()?;
                 let mut g = expr.clone();
                 remap_operands(&mut g, &mapped);
-                naga::proc::ConstantEvaluator::for_wgsl_module(module, tracker, layouter, false)
-                    .try_eval_and_append(g, Span::UNDEFINED)
-                    .ok()
+                let mut evaluator = naga::proc::ConstantEvaluator::for_wgsl_module(
+                    module, tracker, layouter, false,
+                );
+                match g {
+                    // naga's evaluator has no `mix`: a + (b - a) t, which it has.
+                    Expression::Math {
+                        fun: naga::MathFunction::Mix,
+                        arg: a,
+                        arg1: Some(b),
+                        arg2: Some(t),
+                        ..
+                    } => {
+                        let mut bin = |op, left, right| {
+                            evaluator
+                                .try_eval_and_append(
+                                    Expression::Binary { op, left, right },
+                                    Span::UNDEFINED,
+                                )
+                                .ok()
+                        };
+                        let d = bin(naga::BinaryOperator::Subtract, b, a)?;
+                        let p = bin(naga::BinaryOperator::Multiply, d, t)?;
+                        bin(naga::BinaryOperator::Add, a, p)
+                    }
+                    g => evaluator.try_eval_and_append(g, Span::UNDEFINED).ok(),
+                }
             }),
         };
         let Some(g) = global else { continue };
@@ -118,22 +148,31 @@ fn evaluate_function(
         f.expressions[h] = match module.global_expressions[g] {
             Expression::Literal(l) => Expression::Literal(l),
             _ => {
-                let ty = match &info[h].ty {
-                    naga::proc::TypeResolution::Handle(t) => *t,
-                    naga::proc::TypeResolution::Value(inner) => module.types.insert(
-                        Type {
-                            name: None,
-                            inner: inner.clone(),
-                        },
-                        Span::UNDEFINED,
-                    ),
-                };
+                let ty = type_handle(module, info, h);
                 Expression::Constant(anonymous_constant(module, ty, g))
             }
         };
     }
     let body = std::mem::take(&mut f.body);
     f.body = filter_emits(body, &f.expressions);
+}
+
+/// The type of a function expression, as a handle.
+fn type_handle(
+    module: &mut Module,
+    info: &naga::valid::FunctionInfo,
+    h: Handle<Expression>,
+) -> Handle<Type> {
+    match &info[h].ty {
+        naga::proc::TypeResolution::Handle(t) => *t,
+        naga::proc::TypeResolution::Value(inner) => module.types.insert(
+            Type {
+                name: None,
+                inner: inner.clone(),
+            },
+            Span::UNDEFINED,
+        ),
+    }
 }
 
 fn remap_operands(e: &mut Expression, map: &HashMap<Handle<Expression>, Handle<Expression>>) {

@@ -28,6 +28,15 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
+struct SatinLayers {
+    float2 narrow;
+    float2 wide;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
@@ -37,7 +46,6 @@ static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
-static const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -48,6 +56,7 @@ static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0S
 Texture2D<float4> weft_brdf_lut : register(t3);
 static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
 
 struct VertexOutput_vs_main {
     float3 world_position_1 : LOC0;
@@ -63,13 +72,17 @@ struct FragmentInput_fs_main {
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
 };
 
 float weft_pow5_(float x)
 {
     float x2_ = (x * x);
     return ((x2_ * x2_) * x);
+}
+
+float weft_max3_(float3 v)
+{
+    return max(v.x, max(v.y, v.z));
 }
 
 float weft_clamp_cos(float c)
@@ -82,18 +95,18 @@ float weft_clamp_roughness(float roughness)
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v, float3 fallback)
+float3 weft_safe_normalize(float3 v_1, float3 fallback)
 {
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n_1)
 {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a);
-    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+    float a_1 = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a_1);
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -204,29 +217,12 @@ float3 weft_aniso_to_frame(float3x3 frame, float3 x_1)
     return float3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-float3x3 weft_rotate_tangent_frame_cs(float3x3 frame_1, float c_1, float s)
-{
-    float len2_2 = ((c_1 * c_1) + (s * s));
-    float inv = rsqrt(max(len2_2, 1e-20));
-    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
-    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
-    float3 t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
-    float3 b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
-    return float3x3(t_1, b_2, frame_1[2]);
-}
-
-float3x3 weft_rotate_tangent_frame(float3x3 frame_2, float angle)
-{
-    const float3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
-    return _e4;
-}
-
 float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
 {
     const float _e2 = weft_clamp_roughness(roughness_4);
-    float a_1 = (_e2 * _e2);
-    float k = clamp(anisotropy, -1.0, 1.0);
-    return max(float2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), (0.001).xx);
+    float a_2 = (_e2 * _e2);
+    float k_1 = clamp(anisotropy, -1.0, 1.0);
+    return max(float2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), (0.001).xx);
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
@@ -247,44 +243,57 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e5 = weft_clamp_cos(v_2.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(float3 v_2, float3 l_1, float alpha_t_3, float alpha_b_3)
+float weft_spec_ggx_aniso(float3 v_3, float3 l_1, float alpha_t_3, float alpha_b_3)
 {
-    const float3 _e6 = weft_safe_normalize((v_2 + l_1), float3(0.0, 0.0, 1.0));
+    const float3 _e6 = weft_safe_normalize((v_3 + l_1), float3(0.0, 0.0, 1.0));
     const float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
-    const float _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    const float _e11 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e10 * _e11) * saturate(l_1.z));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_3, float anisotropy_1, float roughness_5)
+float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_4, float anisotropy_1, float roughness_5)
 {
-    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_3[2];
-    float3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
-    float3 aniso_t = cross(dir_1, v_3);
+    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    float3 n_4 = frame_1[2];
+    float3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
+    float3 aniso_t = cross(dir_1, v_4);
     float3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
+    float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_5))));
     const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-float gauze_grid_coverage(float2 cell, float2 w, float gap)
+float satin_lobe_reference(float3 vf, float3 lf, float2 a)
 {
-    float g = clamp(gap, 0.0, 1.0);
-    float2 d_1 = abs((frac(cell) - (0.5).xx));
-    float2 ww = max(w, (0.0001).xx);
-    float2 ramp = saturate((((((0.5 * g)).xx - d_1) / ww) + (0.5).xx));
-    float2 open = lerp(ramp, (g).xx, saturate(((ww * 2.0) - (1.0).xx)));
-    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
-    return (1.0 - open_xy);
+    float s = (float)0;
+
+    const float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    float _e7 = s;
+    return _e7;
+}
+
+float3 satin_env(float3x3 frame_2, float3 v_5, float k, float roughness_6)
+{
+    float3 bent_1 = (float3)0;
+    float3 c_1 = (float3)0;
+
+    const float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    float3 _e7 = bent_1;
+    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
+    float3 _e11 = c_1;
+    return _e11;
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -315,73 +324,79 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
     float3 n = (float3)0;
-    float3 spec_direct = (float3)0;
-    float3 env_brdf = (float3)0;
+    SatinLayers layers = (SatinLayers)0;
+    float3 specular = (float3)0;
     float3 diffuse_kd = (float3)0;
+    float3 indirect_specular = (float3)0;
     float3 ambient_kd = (float3)0;
+    float3 bent = (float3)0;
 
-    const float2 _e4 = weft_transform_uv(in_1.uv0_, float4(1.0, 1.0, 0.0, 0.0));
-    float2 uv_s = (in_1.uv0_ * 60.0);
-    float2 grid_w = fwidth(uv_s);
-    float pattern_w = fwidth(0.0);
-    const float _e19 = gauze_grid_coverage(uv_s, grid_w, 0.0);
-    float mesh = (1.0 * _e19);
-    const float3 _e23 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    const float3 _e29 = weft_safe_normalize((in_1.world_normal * face), _e23);
-    n = _e29;
-    float3 _e31 = n;
-    const float3x3 _e33 = weft_tangent_frame(_e31, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e29, _e23)), 1.0);
-    float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float s_3 = pow(max(sin_v, 1e-8), 3.0);
-    float alpha = saturate(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * 0.3069396)))) * 1.0));
-    float coverage = saturate(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * 1.0));
-    const float3x3 _e70 = weft_rotate_tangent_frame(_e33, 1.5707964);
-    float above_aa = saturate(((-0.5 / max(pattern_w, 0.0001)) + 0.5));
-    const float3 _e79 = weft_main_light_direction();
-    float3 _e81 = n;
-    const float3 _e82 = weft_safe_normalize((_e79 + _e23), _e81);
-    float3 _e83 = n;
-    const float _e85 = weft_clamp_cos(dot(_e83, _e23));
-    float3 _e86 = n;
-    float n_dot_l = saturate(dot(_e86, _e79));
-    float v_dot_h_1 = saturate(dot(_e23, _e82));
-    const float2 _e91 = weft_aniso_alpha_kulla(0.45, 0.8);
-    const float3 _e92 = weft_main_light_radiance();
+    const float2 _e3 = weft_transform_uv(in_1.uv0_, float4(1.0, 1.0, 0.0, 0.0));
+    float4 _e6 = material.base_color;
+    float4 base_rgba = (_e6 * float4(1.0, 1.0, 1.0, 1.0));
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    const float2 _e22 = weft_transform_uv(in_1.uv0_, float4(1.0, 1.0, 0.0, 0.0));
+    const float3 _e26 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
+    n = _e28;
+    float3 _e30 = n;
+    const float3x3 _e32 = weft_tangent_frame(_e30, in_1.world_tangent);
+    const float3 _e33 = weft_main_light_direction();
+    float3 _e35 = n;
+    const float3 _e36 = weft_safe_normalize((_e33 + _e26), _e35);
+    float3 _e37 = n;
+    const float _e39 = weft_clamp_cos(dot(_e37, _e26));
+    float3 _e40 = n;
+    float n_dot_l = saturate(dot(_e40, _e33));
+    float v_dot_h_1 = saturate(dot(_e26, _e36));
+    const float3 _e45 = weft_main_light_radiance();
+    const float2 _e48 = weft_aniso_alpha_kulla(0.4, 0.85);
+    layers.narrow = _e48;
+    const float2 _e50 = weft_aniso_alpha_kulla(0.8, 0.85);
+    layers.wide = _e50;
+    float3 f0_2 = lerp((0.04).xxx, base, 0.0);
+    float3 diffuse_albedo = (base * 1.0);
+    const float3 _e57 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        const float3 _e100 = weft_aniso_to_frame(_e33, _e23);
-        const float3 _e101 = weft_aniso_to_frame(_e33, _e79);
-        const float3 _e102 = weft_aniso_to_frame(_e70, _e23);
-        const float3 _e103 = weft_aniso_to_frame(_e70, _e79);
-        const float _e106 = weft_spec_ggx_aniso(_e100, _e101, _e91.x, _e91.y);
-        const float _e109 = weft_spec_ggx_aniso(_e102, _e103, _e91.x, _e91.y);
-        float lobe = lerp(_e106, _e109, above_aa);
-        const float3 _e111 = weft_f_schlick((0.04).xxx, v_dot_h_1);
-        spec_direct = ((((lobe * _e111) * float3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e92);
-        const float3 _e117 = weft_f_schlick((0.04).xxx, _e85);
-        diffuse_kd = ((1.0).xxx - (float3(1.0, 0.8900054, 0.93310684) * _e117));
-        const float2 _e120 = weft_env_brdf_lut(_e85, 0.45);
-        const float3 _e121 = weft_env_brdf_from_lut((0.04).xxx, _e120);
-        env_brdf = (_e121 * float3(1.0, 0.8900054, 0.93310684));
-        float3 _e124 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e124), (0.0).xxx);
+        const float _e62 = weft_max3_(float3(1.0, 0.60382736, 0.6382832));
+        float3 t1_ = lerp(float3(1.0, 0.60382736, 0.6382832), (_e62).xxx, 0.5);
+        const float _e66 = weft_max3_(float3(0.31854677, 0.033104766, 0.05087609));
+        float3 t2_ = lerp(float3(0.31854677, 0.033104766, 0.05087609), (_e66).xxx, 0.5);
+        const float _e71 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e71));
+        float3 w1_ = (t1_ * norm);
+        float3 w2_ = (t2_ * norm);
+        const float3 _e78 = weft_aniso_to_frame(_e32, _e26);
+        const float3 _e79 = weft_aniso_to_frame(_e32, _e33);
+        float2 _e81 = layers.narrow;
+        const float _e82 = satin_lobe_reference(_e78, _e79, _e81);
+        float2 _e84 = layers.wide;
+        const float _e85 = satin_lobe_reference(_e78, _e79, _e84);
+        specular = (((((w1_ * _e82) + (w2_ * _e85)) * _e57) * 1.0) * _e45);
+        const float3 _e94 = weft_f_schlick(f0_2, _e39);
+        diffuse_kd = max(((1.0).xxx - ((w1_ + w2_) * _e94)), (0.0).xxx);
+        const float2 _e99 = weft_env_brdf_lut(_e39, 0.4);
+        const float3 _e100 = weft_env_brdf_from_lut(f0_2, _e99);
+        float3 e1_ = (_e100 * w1_);
+        const float2 _e102 = weft_env_brdf_lut(_e39, 0.8);
+        const float3 _e103 = weft_env_brdf_from_lut(f0_2, _e102);
+        float3 e2_ = (_e103 * w2_);
+        const float3 _e105 = satin_env(_e32, _e26, 0.85, 0.4);
+        const float3 _e107 = satin_env(_e32, _e26, 0.85, 0.8);
+        indirect_specular = (((_e105 * e1_) + (_e107 * e2_)) * 1.0);
+        ambient_kd = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     }
-    float3 _e128 = diffuse_kd;
-    const float3 _e129 = weft_diffuse_lambert(float3(0.84808826, 0.71056646, 0.7484141));
-    float3 diffuse_direct = (((_e128 * _e129) * _e92) * n_dot_l);
-    float3 _e133 = n;
-    const float3 _e134 = weft_sh_irradiance(_e133);
-    float3 _e135 = ambient_kd;
-    float3 diffuse_indirect = ((_e134 * _e135) * float3(0.84808826, 0.71056646, 0.7484141));
-    const float3 _e138 = weft_aniso_bent_normal(_e33, _e23, 0.8, 0.45);
-    const float3 _e141 = weft_prefiltered_radiance(reflect(-(_e23), _e138), 0.45);
-    float3 _e142 = env_brdf;
-    float3 spec_indirect = ((_e141 * _e142) * 1.0);
-    float3 _e147 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e147 + spec_indirect)));
-    float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
+    float3 _e116 = diffuse_kd;
+    const float3 _e117 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e121 = specular;
+    float3 direct = ((((_e116 * _e117) * _e45) * n_dot_l) + _e121);
+    float3 _e123 = indirect_specular;
+    float3 _e125 = n;
+    const float3 _e126 = weft_sh_irradiance(_e125);
+    float3 _e128 = ambient_kd;
+    float3 indirect = ((_e123 * 1.0) + (((_e126 * 1.0) * _e128) * diffuse_albedo));
+    float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }
