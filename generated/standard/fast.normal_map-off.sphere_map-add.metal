@@ -325,6 +325,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -368,35 +370,39 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = metal::float3(1.0) - _e87;
     }
-    metal::float3 _e89 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e90 = n;
-    float _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
-    float _e92 = visibility;
-    metal::float3 specular = ((_e91 * _e92) * _e89) * specular_strength;
-    metal::float3 _e96 = direct_kd;
-    metal::float3 _e97 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e96 * _e97;
-    metal::float3 _e100 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e100) * n_dot_l_1;
-    metal::float3 _e104 = n;
-    metal::float3 _e106 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e104), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e107 = env_brdf;
-    metal::float3 indirect_specular = (_e106 * _e107) * (ao * specular_strength);
-    metal::float3 _e111 = n;
-    metal::float3 _e112 = weft_sh_irradiance(_e111, weft_frame);
-    metal::float3 _e114 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e112 * ao) * _e114) * diffuse_albedo;
-    color = (direct + indirect_specular) + indirect_diffuse;
-    {
-        metal::float3 _e120 = n;
-        metal::float3 _e122 = weft_sphere_map_direction(_e120, in_1.world_position, weft_frame);
-        metal::float4 _e125 = sphere_map.sample(material_clamp_sampler, _e122);
-        metal::float3 sph = metal::max(_e125.xyz, metal::float3(0.0));
-        metal::float3 _e130 = color;
-        float _e133 = material.sphere_strength;
-        color = _e130 + (sph * _e133);
+    if (specular_strength > 0.0) {
+        metal::float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        metal::float3 _e98 = n;
+        float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        float _e100 = visibility;
+        specular = ((_e99 * _e100) * _e97) * specular_strength;
+        metal::float3 _e105 = n;
+        metal::float3 _e107 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e105), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e108 = env_brdf;
+        indirect_specular = (_e107 * _e108) * (ao * specular_strength);
     }
-    metal::float3 _e136 = color;
-    metal::float3 radiance = metal::clamp(_e136, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e112 = direct_kd;
+    metal::float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e112 * _e113;
+    metal::float3 _e115 = specular;
+    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e115) * _e117) * n_dot_l_1;
+    metal::float3 _e120 = n;
+    metal::float3 _e121 = weft_sh_irradiance(_e120, weft_frame);
+    metal::float3 _e123 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e121 * ao) * _e123) * diffuse_albedo;
+    metal::float3 _e126 = indirect_specular;
+    color = (direct + _e126) + indirect_diffuse;
+    {
+        metal::float3 _e130 = n;
+        metal::float3 _e132 = weft_sphere_map_direction(_e130, in_1.world_position, weft_frame);
+        metal::float4 _e135 = sphere_map.sample(material_clamp_sampler, _e132);
+        metal::float3 sph = metal::max(_e135.xyz, metal::float3(0.0));
+        metal::float3 _e140 = color;
+        float _e143 = material.sphere_strength;
+        color = _e140 + (sph * _e143);
+    }
+    metal::float3 _e146 = color;
+    metal::float3 radiance = metal::clamp(_e146, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

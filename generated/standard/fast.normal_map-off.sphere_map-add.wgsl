@@ -240,6 +240,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -284,35 +286,39 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e87 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1f) - _e87);
     }
-    let _e89 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e90 = n;
-    let _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
-    let _e92 = visibility;
-    let specular = (((_e91 * _e92) * _e89) * specular_strength);
-    let _e96 = direct_kd;
-    let _e97 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e96 * _e97);
-    let _e100 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e100) * n_dot_l_1);
-    let _e104 = n;
-    let _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_7);
-    let _e107 = env_brdf;
-    let indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
-    let _e111 = n;
-    let _e112 = weft_sh_irradiance(_e111);
-    let _e114 = ambient_kd;
-    let indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        let _e120 = n;
-        let _e122 = weft_sphere_map_direction(_e120, in_1.world_position);
-        let _e125 = textureSample(sphere_map, material_clamp_sampler, _e122);
-        let sph = max(_e125.xyz, vec3(0f));
-        let _e130 = color;
-        let _e133 = material.sphere_strength;
-        color = (_e130 + (sph * _e133));
+    if (specular_strength > 0f) {
+        let _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e98 = n;
+        let _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        let _e100 = visibility;
+        specular = (((_e99 * _e100) * _e97) * specular_strength);
+        let _e105 = n;
+        let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
+        let _e108 = env_brdf;
+        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
     }
-    let _e136 = color;
-    let radiance = clamp(_e136, vec3(0f), vec3(65504f));
+    let _e112 = direct_kd;
+    let _e113 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e112 * _e113);
+    let _e115 = specular;
+    let _e117 = weft_main_light_radiance();
+    let direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
+    let _e120 = n;
+    let _e121 = weft_sh_irradiance(_e120);
+    let _e123 = ambient_kd;
+    let indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
+    let _e126 = indirect_specular;
+    color = ((direct + _e126) + indirect_diffuse);
+    {
+        let _e130 = n;
+        let _e132 = weft_sphere_map_direction(_e130, in_1.world_position);
+        let _e135 = textureSample(sphere_map, material_clamp_sampler, _e132);
+        let sph = max(_e135.xyz, vec3(0f));
+        let _e140 = color;
+        let _e143 = material.sphere_strength;
+        color = (_e140 + (sph * _e143));
+    }
+    let _e146 = color;
+    let radiance = clamp(_e146, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

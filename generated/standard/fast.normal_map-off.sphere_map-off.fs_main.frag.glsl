@@ -198,6 +198,8 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -241,27 +243,31 @@ void main() {
         vec3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1.0) - _e87);
     }
-    vec3 _e89 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e90 = n;
-    float _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
-    float _e92 = visibility;
-    vec3 specular = (((_e91 * _e92) * _e89) * specular_strength);
-    vec3 _e96 = direct_kd;
-    vec3 _e97 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e96 * _e97);
-    vec3 _e100 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e100) * n_dot_l_1);
-    vec3 _e104 = n;
-    vec3 _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_7);
-    vec3 _e107 = env_brdf;
-    vec3 indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
-    vec3 _e111 = n;
-    vec3 _e112 = weft_sh_irradiance(_e111);
-    vec3 _e114 = ambient_kd;
-    vec3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    vec3 _e120 = color;
-    vec3 radiance = clamp(_e120, vec3(0.0), vec3(65504.0));
+    if ((specular_strength > 0.0)) {
+        vec3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        vec3 _e98 = n;
+        float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        float _e100 = visibility;
+        specular = (((_e99 * _e100) * _e97) * specular_strength);
+        vec3 _e105 = n;
+        vec3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
+        vec3 _e108 = env_brdf;
+        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+    }
+    vec3 _e112 = direct_kd;
+    vec3 _e113 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e112 * _e113);
+    vec3 _e115 = specular;
+    vec3 _e117 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
+    vec3 _e120 = n;
+    vec3 _e121 = weft_sh_irradiance(_e120);
+    vec3 _e123 = ambient_kd;
+    vec3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
+    vec3 _e126 = indirect_specular;
+    color = ((direct + _e126) + indirect_diffuse);
+    vec3 _e130 = color;
+    vec3 radiance = clamp(_e130, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

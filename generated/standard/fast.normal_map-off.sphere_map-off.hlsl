@@ -263,6 +263,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -307,26 +309,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = ((1.0).xxx - _e87);
     }
-    const float3 _e89 = weft_f_schlick(f0_3, v_dot_h_1);
-    float3 _e90 = n;
-    const float _e91 = weft_d_ggx_nh(_e90, _e57, roughness_7);
-    float _e92 = visibility;
-    float3 specular = (((_e91 * _e92) * _e89) * specular_strength);
-    float3 _e96 = direct_kd;
-    const float3 _e97 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e96 * _e97);
-    const float3 _e100 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e100) * n_dot_l_1);
-    float3 _e104 = n;
-    const float3 _e106 = weft_prefiltered_radiance(reflect(-(_e50), _e104), roughness_7);
-    float3 _e107 = env_brdf;
-    float3 indirect_specular = ((_e106 * _e107) * (ao * specular_strength));
-    float3 _e111 = n;
-    const float3 _e112 = weft_sh_irradiance(_e111);
-    float3 _e114 = ambient_kd;
-    float3 indirect_diffuse = (((_e112 * ao) * _e114) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    float3 _e120 = color;
-    float3 radiance = clamp(_e120, (0.0).xxx, (65504.0).xxx);
+    if ((specular_strength > 0.0)) {
+        const float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        float3 _e98 = n;
+        const float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        float _e100 = visibility;
+        specular = (((_e99 * _e100) * _e97) * specular_strength);
+        float3 _e105 = n;
+        const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
+        float3 _e108 = env_brdf;
+        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+    }
+    float3 _e112 = direct_kd;
+    const float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e112 * _e113);
+    float3 _e115 = specular;
+    const float3 _e117 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
+    float3 _e120 = n;
+    const float3 _e121 = weft_sh_irradiance(_e120);
+    float3 _e123 = ambient_kd;
+    float3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
+    float3 _e126 = indirect_specular;
+    color = ((direct + _e126) + indirect_diffuse);
+    float3 _e130 = color;
+    float3 radiance = clamp(_e130, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -240,6 +240,8 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -293,36 +295,40 @@ void main() {
         vec3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1.0) - _e99);
     }
-    vec3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e102 = n;
-    float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
-    float _e104 = visibility;
-    vec3 specular = (((_e103 * _e104) * _e101) * specular_strength);
-    vec3 _e108 = direct_kd;
-    vec3 _e109 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e108 * _e109);
-    vec3 _e112 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e112) * n_dot_l_1);
-    vec3 _e116 = n;
-    vec3 _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_7);
-    vec3 _e119 = env_brdf;
-    vec3 indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
-    vec3 _e123 = n;
-    vec3 _e124 = weft_sh_irradiance(_e123);
-    vec3 _e126 = ambient_kd;
-    vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        vec3 _e132 = n;
-        vec3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
-        vec4 _e137 = texture(_group_1_binding_6_fs, vec3(_e134));
-        vec3 sph = max(_e137.xyz, vec3(0.0));
-        vec3 _e142 = color;
-        float _e145 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e142 + (sph * _e145));
+    if ((specular_strength > 0.0)) {
+        vec3 _e109 = weft_f_schlick(f0_3, v_dot_h_1);
+        vec3 _e110 = n;
+        float _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
+        float _e112 = visibility;
+        specular = (((_e111 * _e112) * _e109) * specular_strength);
+        vec3 _e117 = n;
+        vec3 _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
+        vec3 _e120 = env_brdf;
+        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
     }
-    vec3 _e148 = color;
-    vec3 radiance = clamp(_e148, vec3(0.0), vec3(65504.0));
+    vec3 _e124 = direct_kd;
+    vec3 _e125 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e124 * _e125);
+    vec3 _e127 = specular;
+    vec3 _e129 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
+    vec3 _e132 = n;
+    vec3 _e133 = weft_sh_irradiance(_e132);
+    vec3 _e135 = ambient_kd;
+    vec3 indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
+    vec3 _e138 = indirect_specular;
+    color = ((direct + _e138) + indirect_diffuse);
+    {
+        vec3 _e142 = n;
+        vec3 _e144 = weft_sphere_map_direction(_e142, in_1.world_position);
+        vec4 _e147 = texture(_group_1_binding_6_fs, vec3(_e144));
+        vec3 sph = max(_e147.xyz, vec3(0.0));
+        vec3 _e152 = color;
+        float _e155 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e152 + (sph * _e155));
+    }
+    vec3 _e158 = color;
+    vec3 radiance = clamp(_e158, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -366,6 +366,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -419,35 +421,39 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = metal::float3(1.0) - _e99;
     }
-    metal::float3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e102 = n;
-    float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
-    float _e104 = visibility;
-    metal::float3 specular = ((_e103 * _e104) * _e101) * specular_strength;
-    metal::float3 _e108 = direct_kd;
-    metal::float3 _e109 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e108 * _e109;
-    metal::float3 _e112 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e112) * n_dot_l_1;
-    metal::float3 _e116 = n;
-    metal::float3 _e118 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e116), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e119 = env_brdf;
-    metal::float3 indirect_specular = (_e118 * _e119) * (ao * specular_strength);
-    metal::float3 _e123 = n;
-    metal::float3 _e124 = weft_sh_irradiance(_e123, weft_frame);
-    metal::float3 _e126 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e124 * ao) * _e126) * diffuse_albedo;
-    color = (direct + indirect_specular) + indirect_diffuse;
-    {
-        metal::float3 _e132 = n;
-        metal::float3 _e134 = weft_sphere_map_direction(_e132, in_1.world_position, weft_frame);
-        metal::float4 _e137 = sphere_map.sample(material_clamp_sampler, _e134);
-        metal::float3 sph = metal::max(_e137.xyz, metal::float3(0.0));
-        metal::float3 _e142 = color;
-        float _e145 = material.sphere_strength;
-        color = _e142 + (sph * _e145);
+    if (specular_strength > 0.0) {
+        metal::float3 _e109 = weft_f_schlick(f0_3, v_dot_h_1);
+        metal::float3 _e110 = n;
+        float _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
+        float _e112 = visibility;
+        specular = ((_e111 * _e112) * _e109) * specular_strength;
+        metal::float3 _e117 = n;
+        metal::float3 _e119 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e117), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e120 = env_brdf;
+        indirect_specular = (_e119 * _e120) * (ao * specular_strength);
     }
-    metal::float3 _e148 = color;
-    metal::float3 radiance = metal::clamp(_e148, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e124 = direct_kd;
+    metal::float3 _e125 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e124 * _e125;
+    metal::float3 _e127 = specular;
+    metal::float3 _e129 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e127) * _e129) * n_dot_l_1;
+    metal::float3 _e132 = n;
+    metal::float3 _e133 = weft_sh_irradiance(_e132, weft_frame);
+    metal::float3 _e135 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e133 * ao) * _e135) * diffuse_albedo;
+    metal::float3 _e138 = indirect_specular;
+    color = (direct + _e138) + indirect_diffuse;
+    {
+        metal::float3 _e142 = n;
+        metal::float3 _e144 = weft_sphere_map_direction(_e142, in_1.world_position, weft_frame);
+        metal::float4 _e147 = sphere_map.sample(material_clamp_sampler, _e144);
+        metal::float3 sph = metal::max(_e147.xyz, metal::float3(0.0));
+        metal::float3 _e152 = color;
+        float _e155 = material.sphere_strength;
+        color = _e152 + (sph * _e155);
+    }
+    metal::float3 _e158 = color;
+    metal::float3 radiance = metal::clamp(_e158, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -271,6 +271,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -325,35 +327,39 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e99 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1f) - _e99);
     }
-    let _e101 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e102 = n;
-    let _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
-    let _e104 = visibility;
-    let specular = (((_e103 * _e104) * _e101) * specular_strength);
-    let _e108 = direct_kd;
-    let _e109 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e108 * _e109);
-    let _e112 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e112) * n_dot_l_1);
-    let _e116 = n;
-    let _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_7);
-    let _e119 = env_brdf;
-    let indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
-    let _e123 = n;
-    let _e124 = weft_sh_irradiance(_e123);
-    let _e126 = ambient_kd;
-    let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        let _e132 = n;
-        let _e134 = weft_sphere_map_direction(_e132, in_1.world_position);
-        let _e137 = textureSample(sphere_map, material_clamp_sampler, _e134);
-        let sph = max(_e137.xyz, vec3(0f));
-        let _e142 = color;
-        let _e147 = material.sphere_strength;
-        color = (_e142 * max(mix(vec3(1f), sph, _e147), vec3(0f)));
+    if (specular_strength > 0f) {
+        let _e109 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e110 = n;
+        let _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
+        let _e112 = visibility;
+        specular = (((_e111 * _e112) * _e109) * specular_strength);
+        let _e117 = n;
+        let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
+        let _e120 = env_brdf;
+        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
     }
-    let _e153 = color;
-    let radiance = clamp(_e153, vec3(0f), vec3(65504f));
+    let _e124 = direct_kd;
+    let _e125 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e124 * _e125);
+    let _e127 = specular;
+    let _e129 = weft_main_light_radiance();
+    let direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
+    let _e132 = n;
+    let _e133 = weft_sh_irradiance(_e132);
+    let _e135 = ambient_kd;
+    let indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
+    let _e138 = indirect_specular;
+    color = ((direct + _e138) + indirect_diffuse);
+    {
+        let _e142 = n;
+        let _e144 = weft_sphere_map_direction(_e142, in_1.world_position);
+        let _e147 = textureSample(sphere_map, material_clamp_sampler, _e144);
+        let sph = max(_e147.xyz, vec3(0f));
+        let _e152 = color;
+        let _e157 = material.sphere_strength;
+        color = (_e152 * max(mix(vec3(1f), sph, _e157), vec3(0f)));
+    }
+    let _e163 = color;
+    let radiance = clamp(_e163, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

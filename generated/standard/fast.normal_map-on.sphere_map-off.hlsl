@@ -297,6 +297,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -351,26 +353,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const float3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = ((1.0).xxx - _e99);
     }
-    const float3 _e101 = weft_f_schlick(f0_3, v_dot_h_1);
-    float3 _e102 = n;
-    const float _e103 = weft_d_ggx_nh(_e102, _e69, roughness_7);
-    float _e104 = visibility;
-    float3 specular = (((_e103 * _e104) * _e101) * specular_strength);
-    float3 _e108 = direct_kd;
-    const float3 _e109 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e108 * _e109);
-    const float3 _e112 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e112) * n_dot_l_1);
-    float3 _e116 = n;
-    const float3 _e118 = weft_prefiltered_radiance(reflect(-(_e50), _e116), roughness_7);
-    float3 _e119 = env_brdf;
-    float3 indirect_specular = ((_e118 * _e119) * (ao * specular_strength));
-    float3 _e123 = n;
-    const float3 _e124 = weft_sh_irradiance(_e123);
-    float3 _e126 = ambient_kd;
-    float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    float3 _e132 = color;
-    float3 radiance = clamp(_e132, (0.0).xxx, (65504.0).xxx);
+    if ((specular_strength > 0.0)) {
+        const float3 _e109 = weft_f_schlick(f0_3, v_dot_h_1);
+        float3 _e110 = n;
+        const float _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
+        float _e112 = visibility;
+        specular = (((_e111 * _e112) * _e109) * specular_strength);
+        float3 _e117 = n;
+        const float3 _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
+        float3 _e120 = env_brdf;
+        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+    }
+    float3 _e124 = direct_kd;
+    const float3 _e125 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e124 * _e125);
+    float3 _e127 = specular;
+    const float3 _e129 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
+    float3 _e132 = n;
+    const float3 _e133 = weft_sh_irradiance(_e132);
+    float3 _e135 = ambient_kd;
+    float3 indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
+    float3 _e138 = indirect_specular;
+    color = ((direct + _e138) + indirect_diffuse);
+    float3 _e142 = color;
+    float3 radiance = clamp(_e142, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -312,6 +312,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -356,35 +358,39 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e89 = ambient_kd;
         direct_kd = _e89;
     }
-    metal::float3 _e90 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
-    float _e93 = visibility;
-    metal::float3 specular = ((_e92 * _e93) * _e90) * specular_strength;
-    metal::float3 _e97 = direct_kd;
-    metal::float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e97 * _e98;
-    metal::float3 _e101 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e101) * n_dot_l_1;
-    metal::float3 _e105 = n;
-    metal::float3 _e107 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e105), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e108 = env_brdf;
-    metal::float3 indirect_specular = (_e107 * _e108) * (ao * specular_strength);
-    metal::float3 _e112 = n;
-    metal::float3 _e113 = weft_sh_irradiance(_e112, weft_frame);
-    metal::float3 _e115 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e113 * ao) * _e115) * diffuse_albedo;
-    color = (direct + indirect_specular) + indirect_diffuse;
-    {
-        metal::float3 _e121 = n;
-        metal::float3 _e123 = weft_sphere_map_direction(_e121, in_1.world_position, weft_frame);
-        metal::float4 _e126 = sphere_map.sample(material_clamp_sampler, _e123);
-        metal::float3 sph = metal::max(_e126.xyz, metal::float3(0.0));
-        metal::float3 _e131 = color;
-        float _e134 = material.sphere_strength;
-        color = _e131 + (sph * _e134);
+    if (specular_strength > 0.0) {
+        metal::float3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        metal::float3 _e99 = n;
+        float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = ((_e100 * _e101) * _e98) * specular_strength;
+        metal::float3 _e106 = n;
+        metal::float3 _e108 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e106), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e109 = env_brdf;
+        indirect_specular = (_e108 * _e109) * (ao * specular_strength);
     }
-    metal::float3 _e137 = color;
-    metal::float3 radiance = metal::clamp(_e137, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e113 = direct_kd;
+    metal::float3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e113 * _e114;
+    metal::float3 _e116 = specular;
+    metal::float3 _e118 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e116) * _e118) * n_dot_l_1;
+    metal::float3 _e121 = n;
+    metal::float3 _e122 = weft_sh_irradiance(_e121, weft_frame);
+    metal::float3 _e124 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e122 * ao) * _e124) * diffuse_albedo;
+    metal::float3 _e127 = indirect_specular;
+    color = (direct + _e127) + indirect_diffuse;
+    {
+        metal::float3 _e131 = n;
+        metal::float3 _e133 = weft_sphere_map_direction(_e131, in_1.world_position, weft_frame);
+        metal::float4 _e136 = sphere_map.sample(material_clamp_sampler, _e133);
+        metal::float3 sph = metal::max(_e136.xyz, metal::float3(0.0));
+        metal::float3 _e141 = color;
+        float _e144 = material.sphere_strength;
+        color = _e141 + (sph * _e144);
+    }
+    metal::float3 _e147 = color;
+    metal::float3 radiance = metal::clamp(_e147, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -233,6 +233,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -278,35 +280,39 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e89 = ambient_kd;
         direct_kd = _e89;
     }
-    let _e90 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e91 = n;
-    let _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
-    let _e93 = visibility;
-    let specular = (((_e92 * _e93) * _e90) * specular_strength);
-    let _e97 = direct_kd;
-    let _e98 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e97 * _e98);
-    let _e101 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e101) * n_dot_l_1);
-    let _e105 = n;
-    let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
-    let _e108 = env_brdf;
-    let indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
-    let _e112 = n;
-    let _e113 = weft_sh_irradiance(_e112);
-    let _e115 = ambient_kd;
-    let indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        let _e121 = n;
-        let _e123 = weft_sphere_map_direction(_e121, in_1.world_position);
-        let _e126 = textureSample(sphere_map, material_clamp_sampler, _e123);
-        let sph = max(_e126.xyz, vec3(0f));
-        let _e131 = color;
-        let _e134 = material.sphere_strength;
-        color = (_e131 + (sph * _e134));
+    if (specular_strength > 0f) {
+        let _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e99 = n;
+        let _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        let _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        let _e106 = n;
+        let _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        let _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
     }
-    let _e137 = color;
-    let radiance = clamp(_e137, vec3(0f), vec3(65504f));
+    let _e113 = direct_kd;
+    let _e114 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e113 * _e114);
+    let _e116 = specular;
+    let _e118 = weft_main_light_radiance();
+    let direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    let _e121 = n;
+    let _e122 = weft_sh_irradiance(_e121);
+    let _e124 = ambient_kd;
+    let indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    let _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
+    {
+        let _e131 = n;
+        let _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
+        let _e136 = textureSample(sphere_map, material_clamp_sampler, _e133);
+        let sph = max(_e136.xyz, vec3(0f));
+        let _e141 = color;
+        let _e144 = material.sphere_strength;
+        color = (_e141 + (sph * _e144));
+    }
+    let _e147 = color;
+    let radiance = clamp(_e147, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -200,6 +200,8 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -244,36 +246,40 @@ void main() {
         vec3 _e89 = ambient_kd;
         direct_kd = _e89;
     }
-    vec3 _e90 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
-    float _e93 = visibility;
-    vec3 specular = (((_e92 * _e93) * _e90) * specular_strength);
-    vec3 _e97 = direct_kd;
-    vec3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e97 * _e98);
-    vec3 _e101 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e101) * n_dot_l_1);
-    vec3 _e105 = n;
-    vec3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
-    vec3 _e108 = env_brdf;
-    vec3 indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
-    vec3 _e112 = n;
-    vec3 _e113 = weft_sh_irradiance(_e112);
-    vec3 _e115 = ambient_kd;
-    vec3 indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        vec3 _e121 = n;
-        vec3 _e123 = weft_sphere_map_direction(_e121, in_1.world_position);
-        vec4 _e126 = texture(_group_1_binding_6_fs, vec3(_e123));
-        vec3 sph = max(_e126.xyz, vec3(0.0));
-        vec3 _e131 = color;
-        float _e136 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e131 * max(mix(vec3(1.0), sph, _e136), vec3(0.0)));
+    if ((specular_strength > 0.0)) {
+        vec3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        vec3 _e99 = n;
+        float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        vec3 _e106 = n;
+        vec3 _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        vec3 _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
     }
-    vec3 _e142 = color;
-    vec3 radiance = clamp(_e142, vec3(0.0), vec3(65504.0));
+    vec3 _e113 = direct_kd;
+    vec3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e113 * _e114);
+    vec3 _e116 = specular;
+    vec3 _e118 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    vec3 _e121 = n;
+    vec3 _e122 = weft_sh_irradiance(_e121);
+    vec3 _e124 = ambient_kd;
+    vec3 indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    vec3 _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
+    {
+        vec3 _e131 = n;
+        vec3 _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
+        vec4 _e136 = texture(_group_1_binding_6_fs, vec3(_e133));
+        vec3 sph = max(_e136.xyz, vec3(0.0));
+        vec3 _e141 = color;
+        float _e146 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e141 * max(mix(vec3(1.0), sph, _e146), vec3(0.0)));
+    }
+    vec3 _e152 = color;
+    vec3 radiance = clamp(_e152, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -252,6 +252,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -297,26 +299,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e89 = ambient_kd;
         direct_kd = _e89;
     }
-    const float3 _e90 = weft_f_schlick(f0_2, v_dot_h_1);
-    float3 _e91 = n;
-    const float _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
-    float _e93 = visibility;
-    float3 specular = (((_e92 * _e93) * _e90) * specular_strength);
-    float3 _e97 = direct_kd;
-    const float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e97 * _e98);
-    const float3 _e101 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e101) * n_dot_l_1);
-    float3 _e105 = n;
-    const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
-    float3 _e108 = env_brdf;
-    float3 indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
-    float3 _e112 = n;
-    const float3 _e113 = weft_sh_irradiance(_e112);
-    float3 _e115 = ambient_kd;
-    float3 indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    float3 _e121 = color;
-    float3 radiance = clamp(_e121, (0.0).xxx, (65504.0).xxx);
+    if ((specular_strength > 0.0)) {
+        const float3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        float3 _e99 = n;
+        const float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        float3 _e106 = n;
+        const float3 _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        float3 _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
+    }
+    float3 _e113 = direct_kd;
+    const float3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e113 * _e114);
+    float3 _e116 = specular;
+    const float3 _e118 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    float3 _e121 = n;
+    const float3 _e122 = weft_sh_irradiance(_e121);
+    float3 _e124 = ambient_kd;
+    float3 indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    float3 _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
+    float3 _e131 = color;
+    float3 radiance = clamp(_e131, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

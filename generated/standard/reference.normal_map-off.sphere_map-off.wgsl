@@ -220,6 +220,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -265,26 +267,30 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e89 = ambient_kd;
         direct_kd = _e89;
     }
-    let _e90 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e91 = n;
-    let _e92 = weft_d_ggx_nh(_e91, _e57, roughness_6);
-    let _e93 = visibility;
-    let specular = (((_e92 * _e93) * _e90) * specular_strength);
-    let _e97 = direct_kd;
-    let _e98 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e97 * _e98);
-    let _e101 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e101) * n_dot_l_1);
-    let _e105 = n;
-    let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_6);
-    let _e108 = env_brdf;
-    let indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
-    let _e112 = n;
-    let _e113 = weft_sh_irradiance(_e112);
-    let _e115 = ambient_kd;
-    let indirect_diffuse = (((_e113 * ao) * _e115) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    let _e121 = color;
-    let radiance = clamp(_e121, vec3(0f), vec3(65504f));
+    if (specular_strength > 0f) {
+        let _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e99 = n;
+        let _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        let _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        let _e106 = n;
+        let _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        let _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
+    }
+    let _e113 = direct_kd;
+    let _e114 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e113 * _e114);
+    let _e116 = specular;
+    let _e118 = weft_main_light_radiance();
+    let direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    let _e121 = n;
+    let _e122 = weft_sh_irradiance(_e121);
+    let _e124 = ambient_kd;
+    let indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    let _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
+    let _e131 = color;
+    let radiance = clamp(_e131, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

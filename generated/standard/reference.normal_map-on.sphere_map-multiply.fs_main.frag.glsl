@@ -231,6 +231,8 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -285,36 +287,40 @@ void main() {
         vec3 _e101 = ambient_kd;
         direct_kd = _e101;
     }
-    vec3 _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e103 = n;
-    float _e104 = weft_d_ggx_nh(_e103, _e69, roughness_6);
-    float _e105 = visibility;
-    vec3 specular = (((_e104 * _e105) * _e102) * specular_strength);
-    vec3 _e109 = direct_kd;
-    vec3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e109 * _e110);
-    vec3 _e113 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e113) * n_dot_l_1);
-    vec3 _e117 = n;
-    vec3 _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_6);
-    vec3 _e120 = env_brdf;
-    vec3 indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
-    vec3 _e124 = n;
-    vec3 _e125 = weft_sh_irradiance(_e124);
-    vec3 _e127 = ambient_kd;
-    vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        vec3 _e133 = n;
-        vec3 _e135 = weft_sphere_map_direction(_e133, in_1.world_position);
-        vec4 _e138 = texture(_group_1_binding_6_fs, vec3(_e135));
-        vec3 sph = max(_e138.xyz, vec3(0.0));
-        vec3 _e143 = color;
-        float _e148 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e143 * max(mix(vec3(1.0), sph, _e148), vec3(0.0)));
+    if ((specular_strength > 0.0)) {
+        vec3 _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        vec3 _e111 = n;
+        float _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        float _e113 = visibility;
+        specular = (((_e112 * _e113) * _e110) * specular_strength);
+        vec3 _e118 = n;
+        vec3 _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
+        vec3 _e121 = env_brdf;
+        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
     }
-    vec3 _e154 = color;
-    vec3 radiance = clamp(_e154, vec3(0.0), vec3(65504.0));
+    vec3 _e125 = direct_kd;
+    vec3 _e126 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e125 * _e126);
+    vec3 _e128 = specular;
+    vec3 _e130 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
+    vec3 _e133 = n;
+    vec3 _e134 = weft_sh_irradiance(_e133);
+    vec3 _e136 = ambient_kd;
+    vec3 indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
+    vec3 _e139 = indirect_specular;
+    color = ((direct + _e139) + indirect_diffuse);
+    {
+        vec3 _e143 = n;
+        vec3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
+        vec4 _e148 = texture(_group_1_binding_6_fs, vec3(_e145));
+        vec3 sph = max(_e148.xyz, vec3(0.0));
+        vec3 _e153 = color;
+        float _e158 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e153 * max(mix(vec3(1.0), sph, _e158), vec3(0.0)));
+    }
+    vec3 _e164 = color;
+    vec3 radiance = clamp(_e164, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

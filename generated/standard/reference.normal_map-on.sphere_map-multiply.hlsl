@@ -298,6 +298,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
@@ -353,35 +355,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e101 = ambient_kd;
         direct_kd = _e101;
     }
-    const float3 _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    float3 _e103 = n;
-    const float _e104 = weft_d_ggx_nh(_e103, _e69, roughness_6);
-    float _e105 = visibility;
-    float3 specular = (((_e104 * _e105) * _e102) * specular_strength);
-    float3 _e109 = direct_kd;
-    const float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e109 * _e110);
-    const float3 _e113 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e113) * n_dot_l_1);
-    float3 _e117 = n;
-    const float3 _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_6);
-    float3 _e120 = env_brdf;
-    float3 indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
-    float3 _e124 = n;
-    const float3 _e125 = weft_sh_irradiance(_e124);
-    float3 _e127 = ambient_kd;
-    float3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    {
-        float3 _e133 = n;
-        const float3 _e135 = weft_sphere_map_direction(_e133, in_1.world_position);
-        float4 _e138 = sphere_map.Sample(material_clamp_sampler, _e135);
-        float3 sph = max(_e138.xyz, (0.0).xxx);
-        float3 _e143 = color;
-        float _e148 = material.sphere_strength;
-        color = (_e143 * max(lerp((1.0).xxx, sph, _e148), (0.0).xxx));
+    if ((specular_strength > 0.0)) {
+        const float3 _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        float3 _e111 = n;
+        const float _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        float _e113 = visibility;
+        specular = (((_e112 * _e113) * _e110) * specular_strength);
+        float3 _e118 = n;
+        const float3 _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
+        float3 _e121 = env_brdf;
+        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
     }
-    float3 _e154 = color;
-    float3 radiance = clamp(_e154, (0.0).xxx, (65504.0).xxx);
+    float3 _e125 = direct_kd;
+    const float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e125 * _e126);
+    float3 _e128 = specular;
+    const float3 _e130 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
+    float3 _e133 = n;
+    const float3 _e134 = weft_sh_irradiance(_e133);
+    float3 _e136 = ambient_kd;
+    float3 indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
+    float3 _e139 = indirect_specular;
+    color = ((direct + _e139) + indirect_diffuse);
+    {
+        float3 _e143 = n;
+        const float3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
+        float4 _e148 = sphere_map.Sample(material_clamp_sampler, _e145);
+        float3 sph = max(_e148.xyz, (0.0).xxx);
+        float3 _e153 = color;
+        float _e158 = material.sphere_strength;
+        color = (_e153 * max(lerp((1.0).xxx, sph, _e158), (0.0).xxx));
+    }
+    float3 _e164 = color;
+    float3 radiance = clamp(_e164, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -353,6 +353,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -407,35 +409,39 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e101 = ambient_kd;
         direct_kd = _e101;
     }
-    metal::float3 _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e103 = n;
-    float _e104 = weft_d_ggx_nh(_e103, _e69, roughness_6);
-    float _e105 = visibility;
-    metal::float3 specular = ((_e104 * _e105) * _e102) * specular_strength;
-    metal::float3 _e109 = direct_kd;
-    metal::float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e109 * _e110;
-    metal::float3 _e113 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e113) * n_dot_l_1;
-    metal::float3 _e117 = n;
-    metal::float3 _e119 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e117), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e120 = env_brdf;
-    metal::float3 indirect_specular = (_e119 * _e120) * (ao * specular_strength);
-    metal::float3 _e124 = n;
-    metal::float3 _e125 = weft_sh_irradiance(_e124, weft_frame);
-    metal::float3 _e127 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e125 * ao) * _e127) * diffuse_albedo;
-    color = (direct + indirect_specular) + indirect_diffuse;
-    {
-        metal::float3 _e133 = n;
-        metal::float3 _e135 = weft_sphere_map_direction(_e133, in_1.world_position, weft_frame);
-        metal::float4 _e138 = sphere_map.sample(material_clamp_sampler, _e135);
-        metal::float3 sph = metal::max(_e138.xyz, metal::float3(0.0));
-        metal::float3 _e143 = color;
-        float _e148 = material.sphere_strength;
-        color = _e143 * metal::max(metal::mix(metal::float3(1.0), sph, _e148), metal::float3(0.0));
+    if (specular_strength > 0.0) {
+        metal::float3 _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        metal::float3 _e111 = n;
+        float _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        float _e113 = visibility;
+        specular = ((_e112 * _e113) * _e110) * specular_strength;
+        metal::float3 _e118 = n;
+        metal::float3 _e120 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e118), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e121 = env_brdf;
+        indirect_specular = (_e120 * _e121) * (ao * specular_strength);
     }
-    metal::float3 _e154 = color;
-    metal::float3 radiance = metal::clamp(_e154, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e125 = direct_kd;
+    metal::float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e125 * _e126;
+    metal::float3 _e128 = specular;
+    metal::float3 _e130 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e128) * _e130) * n_dot_l_1;
+    metal::float3 _e133 = n;
+    metal::float3 _e134 = weft_sh_irradiance(_e133, weft_frame);
+    metal::float3 _e136 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e134 * ao) * _e136) * diffuse_albedo;
+    metal::float3 _e139 = indirect_specular;
+    color = (direct + _e139) + indirect_diffuse;
+    {
+        metal::float3 _e143 = n;
+        metal::float3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position, weft_frame);
+        metal::float4 _e148 = sphere_map.sample(material_clamp_sampler, _e145);
+        metal::float3 sph = metal::max(_e148.xyz, metal::float3(0.0));
+        metal::float3 _e153 = color;
+        float _e158 = material.sphere_strength;
+        color = _e153 * metal::max(metal::mix(metal::float3(1.0), sph, _e158), metal::float3(0.0));
+    }
+    metal::float3 _e164 = color;
+    metal::float3 radiance = metal::clamp(_e164, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

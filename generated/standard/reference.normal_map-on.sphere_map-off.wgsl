@@ -251,6 +251,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
@@ -306,26 +308,30 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e101 = ambient_kd;
         direct_kd = _e101;
     }
-    let _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e103 = n;
-    let _e104 = weft_d_ggx_nh(_e103, _e69, roughness_6);
-    let _e105 = visibility;
-    let specular = (((_e104 * _e105) * _e102) * specular_strength);
-    let _e109 = direct_kd;
-    let _e110 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e109 * _e110);
-    let _e113 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e113) * n_dot_l_1);
-    let _e117 = n;
-    let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_6);
-    let _e120 = env_brdf;
-    let indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
-    let _e124 = n;
-    let _e125 = weft_sh_irradiance(_e124);
-    let _e127 = ambient_kd;
-    let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    let _e133 = color;
-    let radiance = clamp(_e133, vec3(0f), vec3(65504f));
+    if (specular_strength > 0f) {
+        let _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e111 = n;
+        let _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        let _e113 = visibility;
+        specular = (((_e112 * _e113) * _e110) * specular_strength);
+        let _e118 = n;
+        let _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
+        let _e121 = env_brdf;
+        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
+    }
+    let _e125 = direct_kd;
+    let _e126 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e125 * _e126);
+    let _e128 = specular;
+    let _e130 = weft_main_light_radiance();
+    let direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
+    let _e133 = n;
+    let _e134 = weft_sh_irradiance(_e133);
+    let _e136 = ambient_kd;
+    let indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
+    let _e139 = indirect_specular;
+    color = ((direct + _e139) + indirect_diffuse);
+    let _e143 = color;
+    let radiance = clamp(_e143, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

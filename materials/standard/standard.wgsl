@@ -82,16 +82,24 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // ------------------------------------------------------------ direct
     // Cook-Torrance D * V * F with V = G / (4 n.v n.l) (finite for all
     // cosines, see brdf.wgsl); kd = (1 - F)(1 - metallic), Lambert 1/pi.
-    let f = weft_f_schlick(f0, v_dot_h);
-    let specular = weft_d_ggx_nh(n, h, roughness) * visibility * f * specular_strength;
+    // Indirect specular: split sum, prefiltered radiance along reflect(-v, n)
+    // times the environment BRDF; AO applied as in the seed.
+    // Both specular terms are skipped at zero strength: a uniform branch in a
+    // library variant, decided at build time in a scene that fixes the
+    // strength (docs/scenes.md, "Writing foldable materials").
+    var specular = vec3<f32>(0.0);
+    var indirect_specular = vec3<f32>(0.0);
+    if specular_strength > 0.0 {
+        let f = weft_f_schlick(f0, v_dot_h);
+        specular = weft_d_ggx_nh(n, h, roughness) * visibility * f * specular_strength;
+        let prefiltered = weft_prefiltered_radiance(reflect(-v, n), roughness);
+        indirect_specular = prefiltered * env_brdf * (ao * specular_strength);
+    }
     let diffuse = direct_kd * weft_diffuse_lambert(diffuse_albedo);
     let direct = (diffuse + specular) * weft_main_light_radiance() * n_dot_l;
 
     // ------------------------------------------------------------ indirect
-    // Split sum: prefiltered radiance along reflect(-v, n) times the
-    // environment BRDF; AO applied as in the seed. SH already returns E / pi.
-    let prefiltered = weft_prefiltered_radiance(reflect(-v, n), roughness);
-    let indirect_specular = prefiltered * env_brdf * (ao * specular_strength);
+    // SH already returns E / pi.
     let indirect_diffuse = weft_sh_irradiance(n) * ao * ambient_kd * diffuse_albedo;
 
     var color = direct + indirect_specular + indirect_diffuse;

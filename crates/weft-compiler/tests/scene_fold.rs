@@ -146,3 +146,21 @@ fn a_non_default_texture_value_folds_to_its_texel() {
     assert!((texel[0] - 0.2158605).abs() < 1e-5, "{texel:?}");
     assert_eq!(texel[3], 1.0);
 }
+
+#[test]
+fn a_zero_specular_strength_removes_the_specular_code() {
+    let (m, module, _) = load("standard");
+    let mut inst = instance(&m, &[]);
+    let i = m.params.iter().position(|p| p.name == "specular_strength").expect("param");
+    let lit = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
+    let (_, lit_wgsl) = folded_wgsl(&module, &lit.fold);
+    assert!(lit_wgsl.contains("weft_d_ggx_nh("), "the lobe is there at strength 1");
+    inst.values[i] = ParamValue::Float(0.0);
+    let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
+    let (folded, wgsl) = folded_wgsl(&module, &values.fold);
+    assert!(!wgsl.contains("weft_d_ggx_nh"), "GGX D still evaluated:\n{wgsl}");
+    assert!(!wgsl.contains("weft_prefiltered_radiance"), "{wgsl}");
+    // Nothing else samples the environment cube in standard's fast tier.
+    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
+    assert!(!names.contains(&"weft_environment".to_string()), "{names:?}");
+}

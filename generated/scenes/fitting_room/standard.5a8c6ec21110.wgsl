@@ -214,6 +214,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
     let _e3 = weft_transform_uv(in_1.uv0_, vec4<f32>(1f, 1f, 0f, 0f));
@@ -246,26 +248,30 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e53 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1f) - _e53);
     }
-    let _e55 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e56 = n;
-    let _e57 = weft_d_ggx_nh(_e56, _e27, 0.55f);
-    let _e58 = visibility;
-    let specular = (((_e57 * _e58) * _e55) * 0.5f);
-    let _e62 = direct_kd;
-    let _e63 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e62 * _e63);
-    let _e66 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e66) * n_dot_l_1);
-    let _e70 = n;
-    let _e72 = weft_prefiltered_radiance(reflect(-(_e20), _e70), 0.55f);
-    let _e73 = env_brdf;
-    let indirect_specular = ((_e72 * _e73) * 0.5f);
-    let _e77 = n;
-    let _e78 = weft_sh_irradiance(_e77);
-    let _e80 = ambient_kd;
-    let indirect_diffuse = (((_e78 * 1f) * _e80) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    let _e86 = color;
-    let radiance = clamp(_e86, vec3(0f), vec3(65504f));
+    {
+        let _e59 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e60 = n;
+        let _e61 = weft_d_ggx_nh(_e60, _e27, 0.55f);
+        let _e62 = visibility;
+        specular = (((_e61 * _e62) * _e59) * 0.5f);
+        let _e67 = n;
+        let _e69 = weft_prefiltered_radiance(reflect(-(_e20), _e67), 0.55f);
+        let _e70 = env_brdf;
+        indirect_specular = ((_e69 * _e70) * 0.5f);
+    }
+    let _e74 = direct_kd;
+    let _e75 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e74 * _e75);
+    let _e77 = specular;
+    let _e79 = weft_main_light_radiance();
+    let direct = (((diffuse + _e77) * _e79) * n_dot_l_1);
+    let _e82 = n;
+    let _e83 = weft_sh_irradiance(_e82);
+    let _e85 = ambient_kd;
+    let indirect_diffuse = (((_e83 * 1f) * _e85) * diffuse_albedo);
+    let _e88 = indirect_specular;
+    color = ((direct + _e88) + indirect_diffuse);
+    let _e92 = color;
+    let radiance = clamp(_e92, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

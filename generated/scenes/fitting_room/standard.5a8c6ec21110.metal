@@ -299,6 +299,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
     metal::float2 _e3 = weft_transform_uv(in_1.uv0_, metal::float4(1.0, 1.0, 0.0, 0.0));
     metal::float4 _e6 = material.base_color;
@@ -330,26 +332,30 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e53 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = metal::float3(1.0) - _e53;
     }
-    metal::float3 _e55 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e56 = n;
-    float _e57 = weft_d_ggx_nh(_e56, _e27, 0.55);
-    float _e58 = visibility;
-    metal::float3 specular = ((_e57 * _e58) * _e55) * 0.5;
-    metal::float3 _e62 = direct_kd;
-    metal::float3 _e63 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e62 * _e63;
-    metal::float3 _e66 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e66) * n_dot_l_1;
-    metal::float3 _e70 = n;
-    metal::float3 _e72 = weft_prefiltered_radiance(metal::reflect(-(_e20), _e70), 0.55, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e73 = env_brdf;
-    metal::float3 indirect_specular = (_e72 * _e73) * 0.5;
-    metal::float3 _e77 = n;
-    metal::float3 _e78 = weft_sh_irradiance(_e77, weft_frame);
-    metal::float3 _e80 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e78 * 1.0) * _e80) * diffuse_albedo;
-    color = (direct + indirect_specular) + indirect_diffuse;
-    metal::float3 _e86 = color;
-    metal::float3 radiance = metal::clamp(_e86, metal::float3(0.0), metal::float3(65504.0));
+    {
+        metal::float3 _e59 = weft_f_schlick(f0_3, v_dot_h_1);
+        metal::float3 _e60 = n;
+        float _e61 = weft_d_ggx_nh(_e60, _e27, 0.55);
+        float _e62 = visibility;
+        specular = ((_e61 * _e62) * _e59) * 0.5;
+        metal::float3 _e67 = n;
+        metal::float3 _e69 = weft_prefiltered_radiance(metal::reflect(-(_e20), _e67), 0.55, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e70 = env_brdf;
+        indirect_specular = (_e69 * _e70) * 0.5;
+    }
+    metal::float3 _e74 = direct_kd;
+    metal::float3 _e75 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e74 * _e75;
+    metal::float3 _e77 = specular;
+    metal::float3 _e79 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e77) * _e79) * n_dot_l_1;
+    metal::float3 _e82 = n;
+    metal::float3 _e83 = weft_sh_irradiance(_e82, weft_frame);
+    metal::float3 _e85 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e83 * 1.0) * _e85) * diffuse_albedo;
+    metal::float3 _e88 = indirect_specular;
+    color = (direct + _e88) + indirect_diffuse;
+    metal::float3 _e92 = color;
+    metal::float3 radiance = metal::clamp(_e92, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

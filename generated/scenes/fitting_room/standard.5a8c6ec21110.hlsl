@@ -250,6 +250,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
     const float2 _e3 = weft_transform_uv(in_1.uv0_, float4(1.0, 1.0, 0.0, 0.0));
@@ -282,26 +284,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const float3 _e53 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = ((1.0).xxx - _e53);
     }
-    const float3 _e55 = weft_f_schlick(f0_3, v_dot_h_1);
-    float3 _e56 = n;
-    const float _e57 = weft_d_ggx_nh(_e56, _e27, 0.55);
-    float _e58 = visibility;
-    float3 specular = (((_e57 * _e58) * _e55) * 0.5);
-    float3 _e62 = direct_kd;
-    const float3 _e63 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e62 * _e63);
-    const float3 _e66 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e66) * n_dot_l_1);
-    float3 _e70 = n;
-    const float3 _e72 = weft_prefiltered_radiance(reflect(-(_e20), _e70), 0.55);
-    float3 _e73 = env_brdf;
-    float3 indirect_specular = ((_e72 * _e73) * 0.5);
-    float3 _e77 = n;
-    const float3 _e78 = weft_sh_irradiance(_e77);
-    float3 _e80 = ambient_kd;
-    float3 indirect_diffuse = (((_e78 * 1.0) * _e80) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    float3 _e86 = color;
-    float3 radiance = clamp(_e86, (0.0).xxx, (65504.0).xxx);
+    {
+        const float3 _e59 = weft_f_schlick(f0_3, v_dot_h_1);
+        float3 _e60 = n;
+        const float _e61 = weft_d_ggx_nh(_e60, _e27, 0.55);
+        float _e62 = visibility;
+        specular = (((_e61 * _e62) * _e59) * 0.5);
+        float3 _e67 = n;
+        const float3 _e69 = weft_prefiltered_radiance(reflect(-(_e20), _e67), 0.55);
+        float3 _e70 = env_brdf;
+        indirect_specular = ((_e69 * _e70) * 0.5);
+    }
+    float3 _e74 = direct_kd;
+    const float3 _e75 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e74 * _e75);
+    float3 _e77 = specular;
+    const float3 _e79 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e77) * _e79) * n_dot_l_1);
+    float3 _e82 = n;
+    const float3 _e83 = weft_sh_irradiance(_e82);
+    float3 _e85 = ambient_kd;
+    float3 indirect_diffuse = (((_e83 * 1.0) * _e85) * diffuse_albedo);
+    float3 _e88 = indirect_specular;
+    color = ((direct + _e88) + indirect_diffuse);
+    float3 _e92 = color;
+    float3 radiance = clamp(_e92, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

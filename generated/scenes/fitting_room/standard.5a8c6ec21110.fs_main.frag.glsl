@@ -187,6 +187,8 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 color = vec3(0.0);
     vec2 _e3 = weft_transform_uv(in_1.uv0_, vec4(1.0, 1.0, 0.0, 0.0));
     vec4 _e6 = _group_1_binding_0_fs.base_color;
@@ -218,27 +220,31 @@ void main() {
         vec3 _e53 = weft_f_schlick(f0_3, v_dot_h_1);
         direct_kd = (vec3(1.0) - _e53);
     }
-    vec3 _e55 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e56 = n;
-    float _e57 = weft_d_ggx_nh(_e56, _e27, 0.55);
-    float _e58 = visibility;
-    vec3 specular = (((_e57 * _e58) * _e55) * 0.5);
-    vec3 _e62 = direct_kd;
-    vec3 _e63 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e62 * _e63);
-    vec3 _e66 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e66) * n_dot_l_1);
-    vec3 _e70 = n;
-    vec3 _e72 = weft_prefiltered_radiance(reflect(-(_e20), _e70), 0.55);
-    vec3 _e73 = env_brdf;
-    vec3 indirect_specular = ((_e72 * _e73) * 0.5);
-    vec3 _e77 = n;
-    vec3 _e78 = weft_sh_irradiance(_e77);
-    vec3 _e80 = ambient_kd;
-    vec3 indirect_diffuse = (((_e78 * 1.0) * _e80) * diffuse_albedo);
-    color = ((direct + indirect_specular) + indirect_diffuse);
-    vec3 _e86 = color;
-    vec3 radiance = clamp(_e86, vec3(0.0), vec3(65504.0));
+    {
+        vec3 _e59 = weft_f_schlick(f0_3, v_dot_h_1);
+        vec3 _e60 = n;
+        float _e61 = weft_d_ggx_nh(_e60, _e27, 0.55);
+        float _e62 = visibility;
+        specular = (((_e61 * _e62) * _e59) * 0.5);
+        vec3 _e67 = n;
+        vec3 _e69 = weft_prefiltered_radiance(reflect(-(_e20), _e67), 0.55);
+        vec3 _e70 = env_brdf;
+        indirect_specular = ((_e69 * _e70) * 0.5);
+    }
+    vec3 _e74 = direct_kd;
+    vec3 _e75 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e74 * _e75);
+    vec3 _e77 = specular;
+    vec3 _e79 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e77) * _e79) * n_dot_l_1);
+    vec3 _e82 = n;
+    vec3 _e83 = weft_sh_irradiance(_e82);
+    vec3 _e85 = ambient_kd;
+    vec3 indirect_diffuse = (((_e83 * 1.0) * _e85) * diffuse_albedo);
+    vec3 _e88 = indirect_specular;
+    color = ((direct + _e88) + indirect_diffuse);
+    vec3 _e92 = color;
+    vec3 radiance = clamp(_e92, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }
