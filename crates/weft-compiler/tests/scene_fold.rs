@@ -151,16 +151,92 @@ fn a_non_default_texture_value_folds_to_its_texel() {
 fn a_zero_specular_strength_removes_the_specular_code() {
     let (m, module, _) = load("standard");
     let mut inst = instance(&m, &[]);
-    let i = m.params.iter().position(|p| p.name == "specular_strength").expect("param");
+    let i = m
+        .params
+        .iter()
+        .position(|p| p.name == "specular_strength")
+        .expect("param");
     let lit = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
     let (_, lit_wgsl) = folded_wgsl(&module, &lit.fold);
-    assert!(lit_wgsl.contains("weft_d_ggx_nh("), "the lobe is there at strength 1");
+    assert!(
+        lit_wgsl.contains("weft_d_ggx_nh("),
+        "the lobe is there at strength 1"
+    );
     inst.values[i] = ParamValue::Float(0.0);
     let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
     let (folded, wgsl) = folded_wgsl(&module, &values.fold);
-    assert!(!wgsl.contains("weft_d_ggx_nh"), "GGX D still evaluated:\n{wgsl}");
+    assert!(
+        !wgsl.contains("weft_d_ggx_nh"),
+        "GGX D still evaluated:\n{wgsl}"
+    );
     assert!(!wgsl.contains("weft_prefiltered_radiance"), "{wgsl}");
     // Nothing else samples the environment cube in standard's fast tier.
-    let names: Vec<_> = folded.global_variables.iter().filter_map(|(_, g)| g.name.clone()).collect();
-    assert!(!names.contains(&"weft_environment".to_string()), "{names:?}");
+    let names: Vec<_> = folded
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.name.clone())
+        .collect();
+    assert!(
+        !names.contains(&"weft_environment".to_string()),
+        "{names:?}"
+    );
+}
+
+/// Every parameter at its range's low or high end (`at_max`), or its default.
+fn values_at(m: &weft_front::Material, bound: Option<bool>) -> Vec<ParamValue> {
+    m.params
+        .iter()
+        .map(|p| {
+            let (Some(at_max), Some([lo, hi])) = (bound, p.range) else {
+                return p.default.clone();
+            };
+            let x = if at_max { hi } else { lo };
+            match &p.default {
+                ParamValue::Float(_) => ParamValue::Float(x),
+                ParamValue::Int(_) => ParamValue::Int(x as i64),
+                ParamValue::Vector(v) => {
+                    let mut v2 = vec![x; v.len()];
+                    if p.kind == weft_meta::ParamKind::Color && v.len() == 4 {
+                        v2[3] = x.clamp(0.0, 1.0);
+                    }
+                    ParamValue::Vector(v2)
+                }
+                ParamValue::Bool(_) => ParamValue::Bool(at_max),
+                other => other.clone(),
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn every_variant_folds_at_every_range_end_and_emits_every_language() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials");
+    let mut folded = 0;
+    for toml in weft_compiler::library::discover(&root).unwrap() {
+        let name = toml.file_stem().unwrap().to_string_lossy().into_owned();
+        let (m, module, prelude) = load(&name);
+        for key in weft_front::variants::variants(&m) {
+            for bound in [None, Some(false), Some(true)] {
+                let mut inst = instance(&m, &[]);
+                inst.values = values_at(&m, bound);
+                for &(k, v) in &key.keywords {
+                    inst.keywords[k] = v;
+                }
+                let values = instance_values(&m, &inst, key.tier, &SceneFeatures::default());
+                let (f, _) = folded_wgsl(&module, &values.fold);
+                let info = compose::validator().validate(&f).unwrap();
+                weft_compiler::variant::emit_shader(
+                    &m,
+                    &f,
+                    &info,
+                    format!("{name}.test"),
+                    &prelude,
+                    &[Vec::new()],
+                )
+                .unwrap_or_else(|e| panic!("{name} {} at {bound:?}: {e}", key.id(&m)));
+                folded += 1;
+            }
+        }
+    }
+    assert!(folded >= 48 * 3, "{folded}");
 }

@@ -183,6 +183,15 @@ fn build_instance(
     features: &weft_front::scene::model::SceneFeatures,
 ) -> Result<BuiltInstance, String> {
     let values = instance_values(m, inst, tier, features);
+    // A literal WGSL cannot spell (inf, NaN) would make every backend's output
+    // invalid; ranges normally stop such values in the front end.
+    for (name, v) in &values.fold.members {
+        if let super::fold::ConstValue::F32(xs) = v
+            && xs.iter().any(|x| !x.is_finite())
+        {
+            return Err(format!("the value of `{name}` does not fit a 32-bit float"));
+        }
+    }
     let Folded { module, .. } = fold(module, &values.fold)?;
     let info = validator()
         .validate(&module)
