@@ -90,6 +90,8 @@ fn all_constant_standard_loses_its_uniform_and_default_textures() {
     // strength 1: `mix`, which naga's evaluator lacks, is folded too.
     assert!(!wgsl.contains("mix(1f, 1f, 1f)"), "{wgsl}");
     assert!(!wgsl.contains("let ao"), "{wgsl}");
+    // The UV transform only fed the default textures: the call and the helper go.
+    assert!(!wgsl.contains("weft_transform_uv"), "{wgsl}");
     // The environment is provided: its cube stays.
     assert!(names.contains(&"weft_environment".to_string()));
 }

@@ -9,8 +9,9 @@
 //!    literal, and every expression whose operands are now constant is
 //!    evaluated (`evaluate.rs`) — through the whole function body;
 //! 3. `if`s on now-constant conditions keep only the taken branch (naga keeps
-//!    them), and compaction drops what only dead code used: textures, LUTs,
-//!    helper functions;
+//!    them), calls to side-effect-free helpers whose result nothing uses go
+//!    (`dead_calls.rs`), and compaction drops what only dead code used:
+//!    textures, LUTs, helper functions;
 //! 4. the material uniform shrinks to the members still read (the `dynamic`
 //!    parameters, curves), re-laid out by WGSL's rules; with none left, the
 //!    binding disappears.
@@ -19,6 +20,7 @@
 //! materials test scene constants and engine features where they read them,
 //! in the entry point (docs/scenes.md, "Writing foldable materials").
 
+use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use crate::specialise::prune_function;
 use naga::{
@@ -155,6 +157,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     }
     module.entry_points = eps;
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    remove_dead_calls(&mut module);
 
     // 4. The uniform keeps only the members still read.
     shrink_uniform(&mut module, &request.uniform_var)?;

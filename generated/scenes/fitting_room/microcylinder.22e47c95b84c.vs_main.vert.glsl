@@ -1,0 +1,334 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct McThread {
+    vec3 albedo;
+    float eta;
+    float kd;
+    float gamma_s;
+    float gamma_v;
+};
+struct McFrame {
+    vec3 u;
+    vec3 v;
+    vec3 n;
+};
+struct McPsi {
+    vec3 pi;
+    vec3 pr;
+    float u;
+    float ok;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TANGENT_OFFSETS_CURVE = 0u;
+const uint TANGENT_OFFSETS_LIST = 1u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const uint MC_CURVE_SAMPLES = 33u;
+const uint MC_CURVE_SEGMENTS = 32u;
+const uint MC_FAST_CHORDS = 4u;
+const int MC_MAX_OFFSETS = 8;
+const float MC_REF_STEP_DEG = 1.0;
+const float MC_REF_MAX_SUBDIV = 64.0;
+const float MC_U_INV_TWO_SIGMA2_ = 4.1035185;
+const float MC_SQRT_TWO_PI = 2.5066283;
+const float MC_DEG = 0.017453292;
+const float MC_MIN_GAMMA = 0.0017453292;
+const float MC_MIN_PROJ2_ = 1e-8;
+const float MC_MIN_COS2_THETA_D = 0.0001;
+const float MC_MIN_Q = 1e-6;
+
+layout(std140) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s + n.z));
+    float b_1 = ((n.x * n.y) * a_1);
+    return vec3((1.0 + (((s * n.x) * n.x) * a_1)), (s * b_1), (-(s) * n.x));
+}
+
+float weft_f0_from_ior(float ior) {
+    float q = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q * q);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_2, t) * s_1);
+    return mat3x3(t, b_2, n_2);
+}
+
+float mc_gauss(float gamma, float x_1) {
+    float g = max(gamma, MC_MIN_GAMMA);
+    return (exp(((-(x_1) * x_1) / ((2.0 * g) * g))) / (MC_SQRT_TWO_PI * g));
+}
+
+float mc_correlate(float ci, float cr, float u) {
+    float mi = max(ci, 0.0);
+    float mr = max(cr, 0.0);
+    return ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
+}
+
+float mc_acos_fast(float x_2) {
+    float ax = min(abs(x_2), 1.0);
+    float r = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
+    return ((x_2 < 0.0) ? (WEFT_PI - r) : r);
+}
+
+float mc_asin_fast(float x_3) {
+    float _e2 = mc_acos_fast(x_3);
+    return (1.5707964 - _e2);
+}
+
+McPsi mc_psi_fast(vec3 v_1, vec3 wi, vec3 wr) {
+    vec3 pi = (wi - (v_1 * dot(wi, v_1)));
+    vec3 pr = (wr - (v_1 * dot(wr, v_1)));
+    float li2_ = dot(pi, pi);
+    float lr2_ = dot(pr, pr);
+    bool ok_1 = (min(li2_, lr2_) >= MC_MIN_PROJ2_);
+    vec3 hi = (pi * inversesqrt(max(li2_, MC_MIN_PROJ2_)));
+    vec3 hr = (pr * inversesqrt(max(lr2_, MC_MIN_PROJ2_)));
+    float _e23 = mc_acos_fast(dot(hi, hr));
+    float u_1 = exp(((-(_e23) * _e23) * MC_U_INV_TWO_SIGMA2_));
+    return McPsi(hi, hr, u_1, (ok_1 ? 1.0 : 0.0));
+}
+
+vec4 mc_lobe_fast(McFrame fr, McPsi psi, vec3 wi_1, vec3 wr_1, float ca, float sa, McThread th) {
+    bool local = false;
+    vec3 u_2 = ((fr.u * ca) + (fr.n * sa));
+    vec3 np = ((fr.n * ca) - (fr.u * sa));
+    float si = clamp(dot(wi_1, u_2), -1.0, 1.0);
+    float sr = clamp(dot(wr_1, u_2), -1.0, 1.0);
+    vec3 pi_1 = (wi_1 - (u_2 * si));
+    vec3 pr_1 = (wr_1 - (u_2 * sr));
+    float ci2_ = dot(pi_1, pi_1);
+    float cr2_ = dot(pr_1, pr_1);
+    if (!((min(ci2_, cr2_) < MC_MIN_PROJ2_))) {
+        local = (psi.ok == 0.0);
+    } else {
+        local = true;
+    }
+    bool _e41 = local;
+    if (_e41) {
+        return vec4(0.0);
+    }
+    float inv_ci = inversesqrt(ci2_);
+    float inv_cr = inversesqrt(cr2_);
+    float ci_1 = (ci2_ * inv_ci);
+    float cr_1 = (cr2_ * inv_cr);
+    vec3 hi_1 = (pi_1 * inv_ci);
+    vec3 hr_1 = (pr_1 * inv_cr);
+    float cos_phi_d = clamp(dot(hi_1, hr_1), -1.0, 1.0);
+    float cos_half_phi = sqrt(max((0.5 + (0.5 * cos_phi_d)), 0.0));
+    float _e60 = mc_acos_fast(cos_phi_d);
+    float _e61 = mc_asin_fast(si);
+    float _e62 = mc_asin_fast(sr);
+    float theta_h = (0.5 * (_e61 + _e62));
+    float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
+    float u_phi = exp(((-(_e60) * _e60) * MC_U_INV_TWO_SIGMA2_));
+    float _e82 = mc_correlate(dot(np, hi_1), dot(np, hr_1), u_phi);
+    float _e88 = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
+    float _e90 = weft_f0_from_ior(th.eta);
+    float c_eff = (sqrt(cd2_) * cos_half_phi);
+    float _e98 = weft_pow5_((1.0 - clamp(c_eff, 0.0, 1.0)));
+    float f_r = (_e90 + ((1.0 - _e90) * _e98));
+    float f_t = ((1.0 - f_r) * (1.0 - f_r));
+    float _e108 = mc_gauss(th.gamma_s, theta_h);
+    float surface = ((f_r * cos_half_phi) * _e108);
+    float _e114 = mc_gauss(th.gamma_v, theta_h);
+    float volume = ((f_t * (((1.0 - th.kd) * _e114) + th.kd)) / (ci_1 + cr_1));
+    vec3 fs = ((vec3(surface) + (volume * th.albedo)) / vec3(cd2_));
+    return vec4((fs * ((_e82 * _e88) * ci_1)), _e88);
+}
+
+float mc_offset_at(vec4 a, vec4 b, int k) {
+    return ((k >= 4) ? b : a)[(k & 3)];
+}
+
+vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_2, vec3 wr_2, McThread th_1, vec4 offsets_a, vec4 offsets_b, int count) {
+    vec4 acc = vec4(0.0);
+    int k_1 = 0;
+    int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
+    McPsi _e11 = mc_psi_fast(fr_1.v, wi_2, wr_2);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e28 = k_1;
+            k_1 = (_e28 + 1);
+        }
+        loop_init = false;
+        int _e16 = k_1;
+        if ((_e16 < n_3)) {
+        } else {
+            break;
+        }
+        {
+            int _e18 = k_1;
+            float _e19 = mc_offset_at(offsets_a, offsets_b, _e18);
+            float a_2 = (_e19 * MC_DEG);
+            vec4 _e22 = acc;
+            vec4 _e25 = mc_lobe_fast(fr_1, _e11, wi_2, wr_2, cos(a_2), sin(a_2), th_1);
+            acc = (_e22 + _e25);
+        }
+    }
+    vec4 _e30 = acc;
+    return (_e30 / vec4(float(n_3)));
+}
+
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local_1 = false;
+    bool local_2 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_1 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local_1 = (n_dot_wr > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e36 = local_1;
+    if (_e36) {
+        local_2 = (q_1 > MC_MIN_Q);
+    } else {
+        local_2 = false;
+    }
+    bool lit = local_2;
+    return (lit ? (s_2 / vec3(max(q_1, MC_MIN_Q))) : vec3(0.0));
+}
+
+McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
+    return McThread(clamp((color * tint), vec3(0.0), vec3(1.0)), clamp(ior_1, 1.0, 4.0), clamp(isotropy, 0.0, 1.0), (max(gamma_s_deg, 0.0) * MC_DEG), (max(gamma_v_deg, 0.0) * MC_DEG));
+}
+
+float microcylinder_mean_fresnel(float eta) {
+    float _e1 = weft_f0_from_ior(eta);
+    return (_e1 + ((1.0 - _e1) / 21.0));
+}
+
+void main() {
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e54 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e54;
+    vec3 _e60 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e60, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e64 = out_;
+    gl_Position = _e64.clip_position;
+    _vs2fs_location0 = _e64.world_position;
+    _vs2fs_location1 = _e64.world_normal;
+    _vs2fs_location2 = _e64.world_tangent;
+    _vs2fs_location3 = _e64.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+
