@@ -142,33 +142,16 @@ fn prune_block(module: &Module, exprs: &naga::Arena<Expression>, block: Block) -
                     }
                     Statement::Block(chosen)
                 }
-                _ => Statement::If {
-                    condition,
-                    accept: prune_block(module, exprs, accept),
-                    reject: prune_block(module, exprs, reject),
-                },
+                _ => map_child_blocks(
+                    Statement::If {
+                        condition,
+                        accept,
+                        reject,
+                    },
+                    &mut |b| prune_block(module, exprs, b),
+                ),
             },
-            Statement::Block(b) => Statement::Block(prune_block(module, exprs, b)),
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => Statement::Loop {
-                body: prune_block(module, exprs, body),
-                continuing: prune_block(module, exprs, continuing),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases
-                    .into_iter()
-                    .map(|mut c| {
-                        c.body = prune_block(module, exprs, c.body);
-                        c
-                    })
-                    .collect(),
-            },
-            other => other,
+            other => map_child_blocks(other, &mut |b| prune_block(module, exprs, b)),
         };
         let ends = diverges(&stmt);
         out.push(stmt, span);
@@ -179,6 +162,43 @@ fn prune_block(module: &Module, exprs: &naga::Arena<Expression>, block: Block) -
         }
     }
     out
+}
+
+/// Rebuilds a statement with `f` applied to each block it holds (a block,
+/// both branches of an `if`, a loop's body and continuing, every case).
+pub(crate) fn map_child_blocks(stmt: Statement, f: &mut dyn FnMut(Block) -> Block) -> Statement {
+    match stmt {
+        Statement::Block(b) => Statement::Block(f(b)),
+        Statement::If {
+            condition,
+            accept,
+            reject,
+        } => Statement::If {
+            condition,
+            accept: f(accept),
+            reject: f(reject),
+        },
+        Statement::Loop {
+            body,
+            continuing,
+            break_if,
+        } => Statement::Loop {
+            body: f(body),
+            continuing: f(continuing),
+            break_if,
+        },
+        Statement::Switch { selector, cases } => Statement::Switch {
+            selector,
+            cases: cases
+                .into_iter()
+                .map(|mut c| {
+                    c.body = f(c.body);
+                    c
+                })
+                .collect(),
+        },
+        other => other,
+    }
 }
 
 /// Whether control never continues past `stmt`.

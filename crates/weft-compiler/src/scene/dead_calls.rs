@@ -3,6 +3,7 @@
 //! only consumer was pruned (e.g. a UV transform for a texture that became a
 //! constant) would still run; compaction then drops the helper itself.
 
+use crate::specialise::map_child_blocks;
 use naga::{Block, Expression, Function, Handle, Module, Statement};
 use std::collections::HashSet;
 
@@ -66,38 +67,7 @@ fn filter_block(block: Block, keep: &mut dyn FnMut(&Statement) -> bool) -> Block
         if !keep(&stmt) {
             continue;
         }
-        let stmt = match stmt {
-            Statement::Block(b) => Statement::Block(filter_block(b, keep)),
-            Statement::If {
-                condition,
-                accept,
-                reject,
-            } => Statement::If {
-                condition,
-                accept: filter_block(accept, keep),
-                reject: filter_block(reject, keep),
-            },
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => Statement::Loop {
-                body: filter_block(body, keep),
-                continuing: filter_block(continuing, keep),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases
-                    .into_iter()
-                    .map(|mut c| {
-                        c.body = filter_block(c.body, keep);
-                        c
-                    })
-                    .collect(),
-            },
-            other => other,
-        };
+        let stmt = map_child_blocks(stmt, &mut |b| filter_block(b, keep));
         out.push(stmt, span);
     }
     out

@@ -6,6 +6,7 @@
 //! WGSL front end treats `let` bindings as run-time values, so weft drives
 //! the evaluator itself, expression by expression.
 
+use crate::specialise::map_child_blocks;
 use naga::{Constant, Expression, Handle, Module, Range, Span, Statement, Type};
 use std::collections::HashMap;
 
@@ -246,36 +247,7 @@ pub(super) fn filter_emits(block: naga::Block, exprs: &naga::Arena<Expression>) 
                     None => continue,
                 }
             }
-            Statement::Block(b) => Statement::Block(filter_emits(b, exprs)),
-            Statement::If {
-                condition,
-                accept,
-                reject,
-            } => Statement::If {
-                condition,
-                accept: filter_emits(accept, exprs),
-                reject: filter_emits(reject, exprs),
-            },
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => Statement::Loop {
-                body: filter_emits(body, exprs),
-                continuing: filter_emits(continuing, exprs),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases
-                    .into_iter()
-                    .map(|mut c| {
-                        c.body = filter_emits(c.body, exprs);
-                        c
-                    })
-                    .collect(),
-            },
-            other => other,
+            other => map_child_blocks(other, &mut |b| filter_emits(b, exprs)),
         };
         out.push(stmt, span);
     }
