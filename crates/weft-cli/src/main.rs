@@ -58,8 +58,10 @@ enum Command {
         #[arg(default_value = "materials")]
         paths: Vec<PathBuf>,
         /// Output folder; replaced atomically (reports/ and the gallery are kept).
-        #[arg(long, short, default_value = "generated")]
-        out: PathBuf,
+        /// Default: generated. With --scene, only `<out>/<scene>/` is replaced
+        /// (default out: generated/scenes), its siblings are left alone.
+        #[arg(long, short)]
+        out: Option<PathBuf>,
         /// Worker threads (default: all cores). Output bytes do not depend on it.
         #[arg(long, short)]
         jobs: Option<usize>,
@@ -195,6 +197,7 @@ fn main() -> ExitCode {
             tier_costs,
             ..
         } => {
+            let out = out.unwrap_or_else(|| PathBuf::from("generated/scenes"));
             if scene_build::build_scene_command(
                 &scene,
                 &out,
@@ -214,6 +217,7 @@ fn main() -> ExitCode {
             force,
             ..
         } => {
+            let out = out.unwrap_or_else(|| PathBuf::from("generated"));
             let started = std::time::Instant::now();
             let options = BuildOptions {
                 jobs,

@@ -35,8 +35,17 @@ pub fn build_scene_command(
     if let Some((db, warnings)) = &result.warnings {
         report(db, warnings, color);
     }
-    if let Err(e) = output::write_atomically(out, &result.files, &[]) {
-        eprintln!("error: cannot write `{}`: {e}", out.display());
+    // Only the scene's own folder is replaced: other scenes (and anything
+    // else) in `out` stay.
+    let prefix = format!("{}/", result.name);
+    let files: std::collections::BTreeMap<String, Vec<u8>> = result
+        .files
+        .iter()
+        .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes.clone())))
+        .collect();
+    let dir = out.join(&result.name);
+    if let Err(e) = output::write_atomically(&dir, &files, &[]) {
+        eprintln!("error: cannot write `{}`: {e}", dir.display());
         return false;
     }
     if !quiet {

@@ -36,3 +36,34 @@ fn build_scene_writes_nothing_when_the_compiler_rejects_the_scene() {
     // Nothing half-written beside it either.
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
+
+#[test]
+fn build_scene_replaces_only_its_own_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(out.join("other_scene")).unwrap();
+    std::fs::write(out.join("other_scene/keep.txt"), "kept").unwrap();
+    std::fs::create_dir_all(out.join("swatch_book")).unwrap();
+    std::fs::write(out.join("swatch_book/stale.wgsl"), "old").unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(repo())
+        .args(["build", "--scene", "scenes/swatch_book.scene.toml", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(out.join("other_scene/keep.txt")).unwrap(),
+        "kept"
+    );
+    assert!(
+        !out.join("swatch_book/stale.wgsl").exists(),
+        "the scene folder is replaced whole"
+    );
+    // Byte-identical to the committed build.
+    let built = std::fs::read(out.join("swatch_book/swatch_book.scene.json")).unwrap();
+    let committed =
+        std::fs::read(repo().join("generated/scenes/swatch_book/swatch_book.scene.json")).unwrap();
+    assert_eq!(built, committed);
+}
