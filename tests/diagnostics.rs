@@ -28,6 +28,12 @@ const EXPECTED: &[(&str, &[&str])] = &[
         &["unknown-key", "out-of-range", "unknown-value", "wrong-type"],
     ),
     ("default_out_of_range", &["default-out-of-range"]),
+    ("default_when_bad_texture", &["unknown-value"]),
+    ("default_when_bool_param", &["bad-condition"]),
+    ("default_when_constant_keyword", &["bad-condition"]),
+    ("default_when_on_float", &["unknown-key"]),
+    ("default_when_unknown_key", &["unknown-key"]),
+    ("default_when_unknown_value", &["unknown-value"]),
     ("duplicate_names", &["duplicate"]),
     ("exclude_constant_keyword", &["bad-condition"]),
     ("include_cycle", &["include-cycle"]),
@@ -315,6 +321,10 @@ fn schema_matches_parser_keys() {
     assert_eq!(
         property_names(&s, &defs["gradient_stop"], "gradient stop"),
         sorted(STOP_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &defs["default_when_entry"], "default_when entry"),
+        sorted(DEFAULT_WHEN_KEYS)
     );
 
     // Enumerated values match the model's.

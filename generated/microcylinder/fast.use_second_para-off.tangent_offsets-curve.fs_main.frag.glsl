@@ -91,11 +91,11 @@ const float MC_MIN_PROJ2_ = 1e-8;
 const float MC_MIN_COS2_THETA_D = 0.0001;
 const float MC_MIN_Q = 1e-6;
 
-layout(std140) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
-layout(std140) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 0) uniform sampler2D _group_1_binding_3_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;

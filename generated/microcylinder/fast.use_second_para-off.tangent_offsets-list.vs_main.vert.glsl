@@ -91,9 +91,9 @@ const float MC_MIN_PROJ2_ = 1e-8;
 const float MC_MIN_COS2_THETA_D = 0.0001;
 const float MC_MIN_Q = 1e-6;
 
-layout(std140) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(std140) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;

@@ -47,17 +47,17 @@ const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 
-layout(std140) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
-uniform samplerCube _group_0_binding_1_fs;
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
-uniform sampler2D _group_0_binding_3_fs;
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
 
-layout(std140) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;

@@ -19,8 +19,8 @@ pub struct OtherLanguages {
     pub spirv: Vec<u8>,
     pub hlsl: String,
     pub msl: String,
-    /// (entry point, stage, source) per entry point.
-    pub glsl: Vec<(String, ShaderStage, String)>,
+    /// (entry point, stage, source, binding table) per entry point.
+    pub glsl: Vec<(String, ShaderStage, String, weft_meta::GlslReflection)>,
 }
 
 pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
@@ -36,11 +36,8 @@ pub fn emit_others(module: &Module, info: &ModuleInfo) -> Result<OtherLanguages,
     let msl = emit_msl(module, info)?;
     let mut glsl_out = Vec::new();
     for ep in &module.entry_points {
-        glsl_out.push((
-            ep.name.clone(),
-            ep.stage,
-            emit_glsl(module, info, &ep.name, ep.stage)?,
-        ));
+        let (source, table) = emit_glsl(module, info, &ep.name, ep.stage)?;
+        glsl_out.push((ep.name.clone(), ep.stage, source, table));
     }
     Ok(OtherLanguages {
         spirv,
@@ -119,15 +116,20 @@ pub fn emit_msl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
         .map_err(|e| format!("MSL backend: {e}"))
 }
 
+/// One entry point as GLSL 4.50 with explicit binding points
+/// (`engine_binding::glsl_binding_points`), and the table that maps them
+/// back to the WGSL bindings.
 pub fn emit_glsl(
     module: &Module,
     info: &ModuleInfo,
     entry: &str,
     stage: ShaderStage,
-) -> Result<String, String> {
+) -> Result<(String, weft_meta::GlslReflection), String> {
+    let points = crate::engine_binding::glsl_binding_points(module);
     let options = glsl::Options {
         version: glsl::Version::Desktop(450),
         writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE,
+        binding_map: points.iter().map(|(rb, b)| (*rb, *b)).collect(),
         ..glsl::Options::default()
     };
     let pipeline = glsl::PipelineOptions {
@@ -145,9 +147,49 @@ pub fn emit_glsl(
         naga::proc::BoundsCheckPolicies::default(),
     )
     .map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
-    w.write()
+    let reflection = w
+        .write()
         .map_err(|e| format!("GLSL backend ({entry}): {e}"))?;
-    Ok(out)
+    let binding_of = |h: naga::Handle<naga::GlobalVariable>| {
+        module.global_variables[h]
+            .binding
+            .map(|rb| weft_meta::BindingRef {
+                group: rb.group,
+                binding: rb.binding,
+            })
+    };
+    let mut table = weft_meta::GlslReflection::default();
+    for (handle, block) in &reflection.uniforms {
+        let rb = module.global_variables[*handle]
+            .binding
+            .ok_or_else(|| format!("GLSL backend ({entry}): uniform `{block}` has no binding"))?;
+        table.uniform_blocks.push(weft_meta::GlslUniformBlock {
+            block: block.clone(),
+            source: weft_meta::BindingRef {
+                group: rb.group,
+                binding: rb.binding,
+            },
+            binding: u32::from(points[&rb]),
+        });
+    }
+    for (name, mapping) in &reflection.texture_mapping {
+        let rb = module.global_variables[mapping.texture]
+            .binding
+            .ok_or_else(|| format!("GLSL backend ({entry}): texture `{name}` has no binding"))?;
+        table.samplers.push(weft_meta::GlslSampler {
+            name: name.clone(),
+            texture: weft_meta::BindingRef {
+                group: rb.group,
+                binding: rb.binding,
+            },
+            sampler: mapping.sampler.and_then(binding_of),
+            unit: u32::from(points[&rb]),
+        });
+    }
+    // naga's reflection maps are hash maps: sort for deterministic metadata.
+    table.uniform_blocks.sort_by_key(|b| b.binding);
+    table.samplers.sort_by_key(|s| s.unit);
+    Ok((out, table))
 }
 
 pub fn stage_suffix(stage: ShaderStage) -> &'static str {

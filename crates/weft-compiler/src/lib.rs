@@ -12,6 +12,7 @@
 pub mod backends;
 pub mod bake;
 pub mod compose;
+pub mod engine_binding;
 pub mod library;
 pub mod metadata;
 pub mod output;

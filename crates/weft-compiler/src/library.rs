@@ -174,6 +174,7 @@ pub fn compile_material(
         passes: metadata::passes(m),
         vertex_inputs: metadata::vertex_inputs(m),
         variants: variants_meta,
+        languages: crate::engine_binding::languages(),
         // Measured by `weft bench`, attached at load time from reports/, never built in.
         measurements: None,
     };

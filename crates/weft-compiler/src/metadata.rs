@@ -67,6 +67,14 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
                 (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) => {
                     Some(TextureInfo {
                         default: *t,
+                        default_when: p
+                            .default_when
+                            .iter()
+                            .map(|(condition, default)| ConditionalTextureDefault {
+                                condition: condition.clone(),
+                                default: *default,
+                            })
+                            .collect(),
                         srgb: p.srgb,
                         tiling_member: p.tiling.then(|| format!("{}_st", p.name)),
                         tiling_default: p.tiling.then_some([1.0, 1.0, 0.0, 0.0]),
@@ -80,6 +88,7 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
                     samples: p.samples,
                     baked_default: samples::sample_curve(keys, p.samples),
                     time_range: samples::curve_time_range(keys),
+                    encoding: CurveEncoding::F32x4PackedV1,
                 }),
                 _ => None,
             };
@@ -87,6 +96,7 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
                 ParamValue::Gradient(stops) => Some(GradientInfo {
                     stops: stops.clone(),
                     width: p.samples,
+                    encoding: GradientEncoding::Rgba8SrgbRampV1,
                     baked_default: samples::bake_gradient(stops, p.samples),
                 }),
                 _ => None,
@@ -199,8 +209,74 @@ pub fn passes(m: &Material) -> Vec<Pass> {
                 Instances::Fixed(n) => InstanceCount::Fixed(*n),
                 Instances::Param(s) => InstanceCount::Parameter(s.clone()),
             },
+            primitive: PrimitiveState {
+                topology: PrimitiveTopology::TriangleList,
+                front_face: FrontFace::Ccw,
+                cull_mode: p.cull,
+            },
+            color_targets: vec![ColorTarget {
+                location: 0,
+                format: COLOR_TARGET_FORMAT.into(),
+                output: match p.blend {
+                    BlendMode::Premultiplied => ColorOutput::PremultipliedLinearRadiance,
+                    _ => ColorOutput::LinearRadiance,
+                },
+                exposure_applied: false,
+                tone_mapped: false,
+                blend: blend_state(p.blend),
+                write_mask: vec![
+                    ColorChannel::Red,
+                    ColorChannel::Green,
+                    ColorChannel::Blue,
+                    ColorChannel::Alpha,
+                ],
+            }],
+            depth: (p.depth_write || p.depth_test != DepthTest::Always).then(|| DepthState {
+                format: DEPTH_FORMAT.into(),
+                write_enabled: p.depth_write,
+                compare: p.depth_test,
+                clear_value: 1.0,
+            }),
         })
         .collect()
+}
+
+/// The colour target format of the goldens and `weft-render`.
+pub const COLOR_TARGET_FORMAT: &str = "rgba16float";
+/// The depth format `weft-render` uses.
+pub const DEPTH_FORMAT: &str = "depth32float";
+
+/// Each blend mode's colour and alpha equations. Alpha accumulates coverage
+/// the same way in `alpha` and `premultiplied` ("over"), and `additive` and
+/// `multiply` leave the target's alpha as it was.
+pub fn blend_state(mode: BlendMode) -> Option<BlendState> {
+    use BlendFactor::*;
+    let c = |src_factor, dst_factor| BlendComponent {
+        src_factor,
+        dst_factor,
+        operation: BlendOperation::Add,
+    };
+    let over_alpha = c(One, OneMinusSrcAlpha);
+    let keep_alpha = c(Zero, One);
+    match mode {
+        BlendMode::Opaque => None,
+        BlendMode::Alpha => Some(BlendState {
+            color: c(SrcAlpha, OneMinusSrcAlpha),
+            alpha: over_alpha,
+        }),
+        BlendMode::Premultiplied => Some(BlendState {
+            color: c(One, OneMinusSrcAlpha),
+            alpha: over_alpha,
+        }),
+        BlendMode::Additive => Some(BlendState {
+            color: c(SrcAlpha, One),
+            alpha: keep_alpha,
+        }),
+        BlendMode::Multiply => Some(BlendState {
+            color: c(Dst, Zero),
+            alpha: keep_alpha,
+        }),
+    }
 }
 
 pub fn groups(m: &Material) -> Vec<Group> {

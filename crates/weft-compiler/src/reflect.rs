@@ -3,12 +3,49 @@
 //! layout as naga's layouter computes it, and vertex inputs.
 
 use crate::backends::{HLSL_SAMPLER_INDEX_REGISTER, hlsl_options};
+use crate::engine_binding;
 use crate::prelude::{MATERIAL_GROUP, MATERIAL_UNIFORM_BINDING, UNIFORM_STRUCT};
 use naga::valid::ModuleInfo;
 use naga::{AddressSpace, ImageClass, ImageDimension, Module, ShaderStage, TypeInner};
 use weft_meta::{
-    Binding, BindingKind, EntryPoint, HlslBinding, Stage, UniformLayout, UniformMember,
+    Binding, BindingKind, BufferBinding, BufferBindingType, EntryPoint, HlslBinding,
+    MemberEncoding, ParamKind, Stage, TextureBinding, TextureDefault, TextureSampleType,
+    TextureViewDimension, UniformLayout, UniformMember,
 };
+
+/// A group-1 texture binding of the variant: the parameter it carries, the
+/// format its data comes in and the built-in default the variant binds.
+pub struct MaterialTexture {
+    pub param: String,
+    pub binding: u32,
+    pub format: String,
+    /// None for gradient ramps (their default is the baked ramp).
+    pub default: Option<TextureDefault>,
+}
+
+/// What the material's uniform members hold: member name -> (parameter, encoding).
+pub type MemberParams = std::collections::BTreeMap<String, (String, MemberEncoding)>;
+
+/// The encoding of each generated uniform member of `m`.
+pub fn member_params(m: &weft_front::Material) -> MemberParams {
+    crate::prelude::uniform_members(m)
+        .into_iter()
+        .filter_map(|mem| {
+            let p = m.param(&mem.param)?;
+            let encoding = match p.kind {
+                _ if mem.name != p.name => MemberEncoding::TilingOffset,
+                ParamKind::Float => MemberEncoding::F32,
+                ParamKind::Int => MemberEncoding::I32,
+                ParamKind::Bool => MemberEncoding::BoolU32,
+                ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 => MemberEncoding::Vector,
+                ParamKind::Color => MemberEncoding::Color,
+                ParamKind::Curve => MemberEncoding::Curve,
+                _ => return None,
+            };
+            Some((mem.name, (mem.param, encoding)))
+        })
+        .collect()
+}
 
 pub fn stage(s: ShaderStage) -> Stage {
     match s {
@@ -29,17 +66,20 @@ pub fn entry_points(module: &Module) -> Vec<EntryPoint> {
         .collect()
 }
 
-/// Every resource binding, sorted by (group, binding), with the stages that use it.
+/// Every resource binding, sorted by (group, binding), with the stages that
+/// use it and its layout entry in full.
 pub fn bindings(
     module: &Module,
     info: &ModuleInfo,
-    texture_params: &[(String, u32)],
+    textures: &[MaterialTexture],
+    members: &MemberParams,
 ) -> Vec<Binding> {
     let hlsl = hlsl_options(module);
     let mut out = Vec::new();
     for (handle, var) in module.global_variables.iter() {
         let Some(rb) = &var.binding else { continue };
-        let kind = match (&module.types[var.ty].inner, var.space) {
+        let inner = &module.types[var.ty].inner;
+        let kind = match (inner, var.space) {
             (TypeInner::Sampler { comparison: false }, _) => BindingKind::Sampler,
             (TypeInner::Sampler { comparison: true }, _) => BindingKind::ComparisonSampler,
             (
@@ -84,22 +124,104 @@ pub fn bindings(
             },
         };
         let name = var.name.clone().unwrap_or_default();
-        let parameter = (rb.group == MATERIAL_GROUP)
-            .then(|| {
-                texture_params
-                    .iter()
-                    .find(|(_, b)| *b == rb.binding)
-                    .map(|(p, _)| p.clone())
-            })
+        let material_texture = (rb.group == MATERIAL_GROUP)
+            .then(|| textures.iter().find(|t| t.binding == rb.binding))
+            .flatten();
+        let buffer = match var.space {
+            AddressSpace::Uniform | AddressSpace::Storage { .. } => {
+                let layout = if rb.group == MATERIAL_GROUP {
+                    struct_layout(module, var.ty, |member| {
+                        members
+                            .get(member)
+                            .map(|(p, e)| (Some(p.clone()), Some(*e), None))
+                    })
+                } else {
+                    struct_layout(module, var.ty, |member| {
+                        let s = module.types[var.ty].name.as_deref().unwrap_or_default();
+                        engine_binding::member_description(s, member)
+                            .map(|d| (None, None, Some(d.to_string())))
+                    })
+                };
+                layout.map(|layout| BufferBinding {
+                    ty: match var.space {
+                        AddressSpace::Uniform => BufferBindingType::Uniform,
+                        AddressSpace::Storage { access }
+                            if !access.contains(naga::StorageAccess::STORE) =>
+                        {
+                            BufferBindingType::ReadOnlyStorage
+                        }
+                        _ => BufferBindingType::Storage,
+                    },
+                    has_dynamic_offset: false,
+                    min_binding_size: u64::from(layout.size),
+                    layout,
+                })
+            }
+            _ => None,
+        };
+        let texture = match inner {
+            TypeInner::Image {
+                dim,
+                arrayed,
+                class,
+            } => Some(TextureBinding {
+                sample_type: match class {
+                    ImageClass::Depth { .. } => TextureSampleType::Depth,
+                    ImageClass::Sampled {
+                        kind: naga::ScalarKind::Sint,
+                        ..
+                    } => TextureSampleType::Sint,
+                    ImageClass::Sampled {
+                        kind: naga::ScalarKind::Uint,
+                        ..
+                    } => TextureSampleType::Uint,
+                    _ => TextureSampleType::Float,
+                },
+                view_dimension: match (dim, arrayed) {
+                    (ImageDimension::D1, _) => TextureViewDimension::D1,
+                    (ImageDimension::D2, false) => TextureViewDimension::D2,
+                    (ImageDimension::D2, true) => TextureViewDimension::D2Array,
+                    (ImageDimension::Cube, false) => TextureViewDimension::Cube,
+                    (ImageDimension::Cube, true) => TextureViewDimension::CubeArray,
+                    (ImageDimension::D3, _) => TextureViewDimension::D3,
+                },
+                multisampled: matches!(
+                    class,
+                    ImageClass::Sampled { multi: true, .. } | ImageClass::Depth { multi: true }
+                ),
+                format: match (material_texture, name.as_str()) {
+                    (Some(t), _) => t.format.clone(),
+                    (None, "weft_environment") => engine_binding::ENVIRONMENT_FORMAT.into(),
+                    (None, n) => engine_binding::engine_resource(n)
+                        .and_then(|r| r.file)
+                        .map(|f| f.format)
+                        .unwrap_or_default(),
+                },
+                default: material_texture.and_then(|t| t.default),
+            }),
+            _ => None,
+        };
+        let sampler = match inner {
+            TypeInner::Sampler { comparison } => {
+                Some(engine_binding::sampler(rb.group, rb.binding, *comparison))
+            }
+            _ => None,
+        };
+        let resource = (rb.group != MATERIAL_GROUP)
+            .then(|| engine_binding::engine_resource(&name))
             .flatten();
         out.push(Binding {
             group: rb.group,
             binding: rb.binding,
+            parameter: material_texture.map(|t| t.param.clone()),
             name,
             kind,
-            parameter,
             stages,
             hlsl: hlsl_binding,
+            buffer,
+            texture,
+            sampler,
+            resource,
         });
     }
     out.sort_by_key(|b| (b.group, b.binding));
@@ -151,17 +273,28 @@ fn scalar_or_compound(module: &Module, inner: &TypeInner) -> String {
 }
 
 /// Layout of the group-1 uniform block, if the variant still has it.
-pub fn material_uniform(module: &Module) -> Option<UniformLayout> {
+pub fn material_uniform(module: &Module, members: &MemberParams) -> Option<UniformLayout> {
     let var = module.global_variables.iter().find(|(_, v)| {
         v.binding
             .as_ref()
             .is_some_and(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_UNIFORM_BINDING)
     })?;
-    struct_layout(module, var.1.ty)
+    struct_layout(module, var.1.ty, |member| {
+        members
+            .get(member)
+            .map(|(p, e)| (Some(p.clone()), Some(*e), None))
+    })
 }
 
-/// Layout of any struct type, by naga's layouter.
-pub fn struct_layout(module: &Module, ty: naga::Handle<naga::Type>) -> Option<UniformLayout> {
+/// What a member holds: (parameter, encoding, description).
+type MemberNotes = (Option<String>, Option<MemberEncoding>, Option<String>);
+
+/// Layout of any struct type, by naga's layouter; `notes` annotates members by name.
+pub fn struct_layout(
+    module: &Module,
+    ty: naga::Handle<naga::Type>,
+    notes: impl Fn(&str) -> Option<MemberNotes>,
+) -> Option<UniformLayout> {
     let TypeInner::Struct { members, span } = &module.types[ty].inner else {
         return None;
     };
@@ -176,12 +309,19 @@ pub fn struct_layout(module: &Module, ty: naga::Handle<naga::Type>) -> Option<Un
         align: layouter[ty].alignment.round_up(1),
         members: members
             .iter()
-            .map(|m| UniformMember {
-                name: m.name.clone().unwrap_or_default(),
-                ty: type_name(module, m.ty),
-                offset: m.offset,
-                size: layouter[m.ty].size,
-                align: layouter[m.ty].alignment.round_up(1),
+            .map(|m| {
+                let name = m.name.clone().unwrap_or_default();
+                let (parameter, encoding, description) = notes(&name).unwrap_or_default();
+                UniformMember {
+                    ty: type_name(module, m.ty),
+                    offset: m.offset,
+                    size: layouter[m.ty].size,
+                    align: layouter[m.ty].alignment.round_up(1),
+                    parameter,
+                    encoding,
+                    description,
+                    name,
+                }
             })
             .collect(),
     })

@@ -86,14 +86,63 @@ pub fn compile_variant(
             e.as_inner()
         )
     })?;
+    let keyword_values: BTreeMap<&str, &str> = key
+        .keywords
+        .iter()
+        .map(|&(k, v)| {
+            (
+                m.keywords[k].name.as_str(),
+                m.keywords[k].values[v].as_str(),
+            )
+        })
+        .collect();
+    let textures = material_textures(m, prelude, m.tiers.values[key.tier].as_str(), |k| {
+        keyword_values.get(k).copied()
+    });
     emit_shader(
         m,
         &specialised,
         &info,
         id,
         prelude,
+        &textures,
         &constant_combinations(m),
     )
+}
+
+/// The group-1 textures of `m` for one variant (its tier and the values of
+/// its static keywords): formats, and defaults with `default_when` resolved.
+pub fn material_textures<'a>(
+    m: &Material,
+    prelude: &Prelude,
+    tier: &str,
+    keyword: impl Fn(&str) -> Option<&'a str>,
+) -> Vec<reflect::MaterialTexture> {
+    prelude
+        .texture_bindings
+        .iter()
+        .filter_map(|(name, binding)| {
+            let p = m.param(name)?;
+            let format = if p.srgb || p.kind == weft_meta::ParamKind::Gradient {
+                "rgba8unorm_srgb"
+            } else {
+                "rgba8unorm"
+            };
+            Some(reflect::MaterialTexture {
+                param: name.clone(),
+                binding: *binding,
+                format: format.into(),
+                // None for gradients: their default is the baked ramp.
+                default: p.texture_default_where(|subject| {
+                    if subject == "tier" {
+                        Some(tier)
+                    } else {
+                        keyword(subject)
+                    }
+                }),
+            })
+        })
+        .collect()
 }
 
 /// Emits a specialised, validated module in every language (one set of
@@ -105,6 +154,7 @@ pub fn emit_shader(
     info: &naga::valid::ModuleInfo,
     id: String,
     prelude: &Prelude,
+    textures: &[reflect::MaterialTexture],
     combos: &[Vec<(usize, usize)>],
 ) -> Result<CompiledVariant, String> {
     let wgsl = backends::emit_wgsl(specialised, info)?;
@@ -116,6 +166,7 @@ pub fn emit_shader(
         sha256: sha256_hex(wgsl.as_bytes()),
         entry_point: None,
         constants: BTreeMap::new(),
+        glsl: None,
     });
 
     // Other languages cannot keep overrides: one set of files per constant-keyword combination.
@@ -156,24 +207,36 @@ pub fn emit_shader(
         } = backends::emit_others(&resolved, &rinfo)
             .map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
         let stem = format!("{id}{suffix}");
-        let mut add = |lang: &str, name: String, bytes: Vec<u8>, entry: Option<String>| {
+        let mut add = |lang: &str,
+                       name: String,
+                       bytes: Vec<u8>,
+                       entry: Option<String>,
+                       glsl: Option<weft_meta::GlslReflection>| {
             by_lang.entry(lang.into()).or_default().push(ShaderFile {
                 path: name.clone(),
                 sha256: sha256_hex(&bytes),
                 entry_point: entry,
                 constants: constants.clone(),
+                glsl,
             });
             files.push((name, bytes));
         };
-        add("spirv", format!("{stem}.spv"), spirv, None);
-        add("hlsl", format!("{stem}.hlsl"), hlsl.into_bytes(), None);
-        add("msl", format!("{stem}.metal"), msl.into_bytes(), None);
-        for (entry, stage, src) in glsl {
+        add("spirv", format!("{stem}.spv"), spirv, None, None);
+        add(
+            "hlsl",
+            format!("{stem}.hlsl"),
+            hlsl.into_bytes(),
+            None,
+            None,
+        );
+        add("msl", format!("{stem}.metal"), msl.into_bytes(), None, None);
+        for (entry, stage, src, table) in glsl {
             add(
                 "glsl",
                 format!("{stem}.{entry}.{}.glsl", stage_suffix(stage)),
                 src.into_bytes(),
                 Some(entry),
+                Some(table),
             );
         }
     }
@@ -184,18 +247,22 @@ pub fn emit_shader(
         .filter_map(|(_, o)| {
             let name = o.name.clone()?;
             let kw = m.keyword(&name)?;
+            let toggle = kw.kind == KeywordKind::Toggle;
             Some(PipelineConstant {
-                ty: if kw.kind == KeywordKind::Toggle {
-                    "bool".into()
-                } else {
-                    "u32".into()
-                },
+                ty: if toggle { "bool".into() } else { "u32".into() },
+                values: kw.values.clone(),
                 default: kw.values[kw.default].clone(),
+                default_value: if toggle {
+                    serde_json::json!(kw.default == 1)
+                } else {
+                    serde_json::json!(kw.default)
+                },
                 name,
             })
         })
         .collect();
 
+    let members = reflect::member_params(m);
     let locations = reflect::vertex_locations(specialised);
     let vertex_inputs = m
         .requires
@@ -212,8 +279,8 @@ pub fn emit_shader(
         files: by_lang,
         entry_points: reflect::entry_points(specialised),
         pipeline_constants,
-        bindings: reflect::bindings(specialised, info, &prelude.texture_bindings),
-        material_uniform: reflect::material_uniform(specialised),
+        bindings: reflect::bindings(specialised, info, textures, &members),
+        material_uniform: reflect::material_uniform(specialised, &members),
         vertex_inputs,
         reads: reflect::reads(m, specialised, prelude),
     };

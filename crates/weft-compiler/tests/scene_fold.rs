@@ -36,6 +36,7 @@ fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
         tier: TierChoice::Fixed(m.tiers.default),
         keywords: m.keywords.iter().map(|k| k.default).collect(),
         values: m.params.iter().map(|p| p.default.clone()).collect(),
+        set: vec![false; m.params.len()],
         dynamic: dynamic
             .iter()
             .map(|d| m.params.iter().position(|p| p.name == *d).expect("param"))
@@ -102,7 +103,11 @@ fn dynamic_parameters_stay_in_a_shrunk_uniform() {
     let inst = instance(&m, &["roughness", "base_color"]);
     let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
     let (folded, _) = folded_wgsl(&module, &values.fold);
-    let layout = weft_compiler::reflect::material_uniform(&folded).expect("uniform kept");
+    let layout = weft_compiler::reflect::material_uniform(
+        &folded,
+        &weft_compiler::reflect::member_params(&m),
+    )
+    .expect("uniform kept");
     let members: Vec<_> = layout.members.iter().map(|m| m.name.as_str()).collect();
     assert_eq!(members, ["base_color", "roughness"]);
     assert_eq!(layout.members[0].offset, 0);
@@ -142,11 +147,41 @@ fn a_non_default_texture_value_folds_to_its_texel() {
         .position(|p| p.name == "base_map")
         .expect("base_map");
     inst.values[i] = ParamValue::Texture(weft_meta::TextureDefault::Gray);
+    inst.set[i] = true;
     let values = instance_values(&m, &inst, m.tiers.default, &SceneFeatures::default());
     let texel = values.fold.textures["base_map"];
     // sRGB-decoded 128/255.
     assert!((texel[0] - 0.2158605).abs() < 1e-5, "{texel:?}");
     assert_eq!(texel[3], 1.0);
+}
+
+#[test]
+fn an_unset_texture_folds_to_its_keyword_dependent_default() {
+    let (m, _, _) = load("standard");
+    let mut inst = instance(&m, &[]);
+    let k = m
+        .keywords
+        .iter()
+        .position(|k| k.name == "SPHERE_MAP")
+        .expect("SPHERE_MAP");
+    let value = |name: &str| m.keywords[k].values.iter().position(|v| v == name).unwrap();
+    let sphere = |inst: &ResolvedInstance| {
+        instance_values(&m, inst, m.tiers.default, &SceneFeatures::default())
+            .fold
+            .textures["sphere_map"]
+    };
+    inst.keywords[k] = value("add");
+    assert_eq!(sphere(&inst), [0.0, 0.0, 0.0, 1.0], "black under ADD");
+    inst.keywords[k] = value("multiply");
+    assert_eq!(sphere(&inst), [1.0, 1.0, 1.0, 1.0], "white under MULTIPLY");
+    // A value the instance wrote is kept whatever the keywords.
+    let i = m
+        .params
+        .iter()
+        .position(|p| p.name == "sphere_map")
+        .unwrap();
+    inst.set[i] = true;
+    assert_eq!(sphere(&inst), [0.0, 0.0, 0.0, 1.0], "written black kept");
 }
 
 #[test]
@@ -233,6 +268,12 @@ fn every_variant_folds_at_every_range_end_and_emits_every_language() {
                     &info,
                     format!("{name}.test"),
                     &prelude,
+                    &weft_compiler::variant::material_textures(
+                        &m,
+                        &prelude,
+                        &m.tiers.values[key.tier],
+                        |_| None,
+                    ),
                     &[Vec::new()],
                 )
                 .unwrap_or_else(|e| panic!("{name} {} at {bound:?}: {e}", key.id(&m)));

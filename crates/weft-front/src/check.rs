@@ -2,10 +2,11 @@
 //! names that must not collide, preset values, instance sources and the
 //! variant budget.
 //!
-//! References written in the TOML (`show_if`, `group`, `[variants].exclude`,
-//! preset values, `instances`) are checked by [`check_references`], which the
-//! parser calls once the whole file is read, with the [`Sites`] where each
-//! reference was written so errors point at it. [`check`] covers the rest.
+//! References written in the TOML (`show_if`, `default_when`, `group`,
+//! `[variants].exclude`, preset values, `instances`) are checked by
+//! [`check_references`], which the parser calls once the whole file is read,
+//! with the [`Sites`] where each reference was written so errors point at it.
+//! [`check`] covers the rest.
 
 use crate::diag::{Diagnostics, Span, did_you_mean};
 use crate::model::*;
@@ -20,6 +21,9 @@ use weft_meta::{Condition, KeywordKind, ParamKind};
 pub struct Sites {
     /// Parameter name -> its `show_if` string.
     pub param_show_if: HashMap<String, Span>,
+    /// Parameter name -> the `if` string of each entry of its `default_when`
+    /// that was kept (parallel to `Param::default_when`).
+    pub param_default_when: HashMap<String, Vec<Span>>,
     /// Keyword name -> its `show_if` string.
     pub keyword_show_if: HashMap<String, Span>,
     /// Parameter name -> its `group` string.
@@ -55,6 +59,13 @@ pub fn check_references(m: &mut Material, sites: &Sites, diags: &mut Diagnostics
                 "show_if",
                 diags,
             );
+        }
+    }
+    for p in &m.params {
+        let spans = sites.param_default_when.get(&p.name);
+        for (i, (c, _)) in p.default_when.iter().enumerate() {
+            let loc = at(spans.and_then(|s| s.get(i)), &p.decl);
+            check_condition(m, c, &loc, "default_when", diags);
         }
     }
     for k in &m.keywords {
@@ -184,10 +195,30 @@ fn check_groups(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
     }
 }
 
+/// One condition of `what` (`show_if`, `exclude` or `default_when`): its
+/// subject exists and may be named there, and its value is one of the
+/// subject's. `exclude` and `default_when` select variants, so they may only
+/// name `tier` and `static` keywords.
 fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &mut Diagnostics) {
+    let per_variant = what == "default_when";
     let values: Option<Vec<String>> = if c.subject == "tier" {
         Some(m.tiers.values.clone())
     } else if let Some(k) = m.keyword(&c.subject) {
+        if per_variant && k.mode == weft_meta::KeywordMode::Constant {
+            let d = diags.error(
+                "bad-condition",
+                format!("`default_when` names `{}`, a `constant` keyword", c.subject),
+                loc.file,
+                loc.span.clone(),
+                "in this condition",
+            );
+            d.labels.push(
+                Label::secondary(k.decl.file, k.decl.span.clone())
+                    .with_message("declared with mode = \"constant\""),
+            );
+            d.notes.push("a texture default is fixed per compiled variant, and one variant serves every value of a constant keyword; make it `mode = \"static\"` or test a static keyword or `tier`".into());
+            return;
+        }
         if what == "exclude" && k.mode == weft_meta::KeywordMode::Constant {
             let d = diags.error(
                 "bad-condition",
@@ -222,28 +253,46 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
             d.notes.push("parameters do not create variants".into());
             return;
         }
+        if per_variant {
+            let d = diags.error(
+                "bad-condition",
+                format!(
+                    "`default_when` can only name static keywords and `tier`, not parameter `{}`",
+                    c.subject
+                ),
+                loc.file,
+                loc.span.clone(),
+                "in this condition",
+            );
+            d.notes.push("a texture default is fixed per compiled variant, and parameters change at run time; use a static keyword".into());
+            return;
+        }
         Some(vec!["off".into(), "on".into()])
     } else {
         None
     };
     let Some(values) = values else {
-        let mut names: Vec<&str> = m.keywords.iter().map(|k| k.name.as_str()).collect();
-        names.push("tier");
-        names.extend(
-            m.params
-                .iter()
-                .filter(|p| p.kind == ParamKind::Bool)
-                .map(|p| p.name.as_str()),
-        );
+        // `default_when` can name only static keywords and `tier`: suggest only those.
+        let (names, is_not): (Vec<&str>, &str) = if per_variant {
+            let names = m.static_keywords().map(|k| k.name.as_str());
+            (
+                names.chain(["tier"]).collect(),
+                "a static keyword or `tier`",
+            )
+        } else {
+            let names = m.keywords.iter().map(|k| k.name.as_str()).chain(["tier"]);
+            let bools = m.params.iter().filter(|p| p.kind == ParamKind::Bool);
+            (
+                names.chain(bools.map(|p| p.name.as_str())).collect(),
+                "a keyword, `tier` or a bool parameter",
+            )
+        };
         let d = diags.error(
             "unknown-keyword",
             format!("unknown keyword `{}` in {what}", c.subject),
             loc.file,
             loc.span.clone(),
-            format!(
-                "`{}` is not a keyword, `tier` or a bool parameter",
-                c.subject
-            ),
+            format!("`{}` is not {is_not}", c.subject),
         );
         d.notes
             .push(match did_you_mean(&c.subject, names.iter().copied()) {

@@ -1,6 +1,7 @@
-//! Conditions used by `show_if` and `[variants].exclude`:
+//! Conditions used by `show_if`, `default_when` and `[variants].exclude`:
 //! `NAME`, `!NAME`, `NAME == value`, `NAME != value`, joined with `&&`.
 //! `NAME` is a keyword, `tier`, or a bool parameter; bare `NAME` means `NAME == on`.
+//! Which names each use may take is checked in `check.rs`.
 
 use weft_meta::{Condition, ConditionOp};
 
@@ -43,6 +44,12 @@ pub fn parse_condition_text(text: &str) -> Result<Vec<Condition>, String> {
         });
     }
     Ok(out)
+}
+
+/// Whether `c` holds where its subject has the value `value` (`None`: the
+/// subject has no value there, and no condition on it holds).
+pub fn holds(c: &Condition, value: Option<&str>) -> bool {
+    value.is_some_and(|v| (v == c.value) == (c.op == ConditionOp::Equal))
 }
 
 #[cfg(test)]

@@ -4,6 +4,8 @@
 //! compiler can still point back into the TOML (e.g. for a prelude error).
 
 use crate::diag::{FileId, Span};
+use crate::variants::VariantKey;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 use weft_meta::{
     BlendMode, Condition, CullMode, DepthTest, GradientStop, Keyframe, KeywordKind, KeywordMode,
@@ -123,6 +125,10 @@ pub struct Param {
     pub step: Option<f64>,
     pub power: Option<f64>,
     pub show_if: Option<Condition>,
+    /// Textures: keyword-dependent defaults, tried in order; the first whose
+    /// condition (on a static keyword or `tier`) holds for a variant replaces
+    /// `default` there. Empty when absent (and for other kinds).
+    pub default_when: Vec<(Condition, TextureDefault)>,
     /// Colours: HDR (edited linear, may exceed 1).
     pub hdr: bool,
     /// Textures.
@@ -207,7 +213,60 @@ pub enum Instances {
     Param(String),
 }
 
+impl Param {
+    /// The built-in texture a texture parameter starts from in one variant:
+    /// the first entry of `default_when` whose condition holds, else
+    /// `default`. `value_of` gives the value a condition subject has there (a
+    /// keyword's value name; the tier's name for `tier`), `None` when it has
+    /// none (such a condition does not hold). `None` for parameters that are
+    /// not textures.
+    pub fn texture_default_where<'a>(
+        &self,
+        value_of: impl Fn(&str) -> Option<&'a str>,
+    ) -> Option<TextureDefault> {
+        let ParamValue::Texture(default) = self.default else {
+            return None;
+        };
+        Some(
+            self.default_when
+                .iter()
+                .find(|(c, _)| crate::condition::holds(c, value_of(&c.subject)))
+                .map_or(default, |(_, d)| *d),
+        )
+    }
+}
+
 impl Material {
+    /// [`Param::texture_default_where`] for the variant with static keyword
+    /// values `keywords` (keyword name -> value name; a keyword missing from
+    /// the map has its default value) and tier `tier` (a tier name).
+    pub fn texture_default_for(
+        &self,
+        param: &Param,
+        keywords: &BTreeMap<String, String>,
+        tier: &str,
+    ) -> Option<TextureDefault> {
+        param.texture_default_where(|subject| {
+            if subject == "tier" {
+                return Some(tier);
+            }
+            keywords.get(subject).map(String::as_str).or_else(|| {
+                self.keyword(subject)
+                    .and_then(|k| k.values.get(k.default))
+                    .map(String::as_str)
+            })
+        })
+    }
+
+    /// [`Param::texture_default_where`] for one point of the variant space.
+    pub fn texture_default_in(
+        &self,
+        param: &Param,
+        variant: &VariantKey,
+    ) -> Option<TextureDefault> {
+        param.texture_default_where(|subject| variant.value_of(self, subject))
+    }
+
     pub fn param(&self, name: &str) -> Option<&Param> {
         self.params.iter().find(|p| p.name == name)
     }
@@ -219,5 +278,174 @@ impl Material {
         self.keywords
             .iter()
             .filter(|k| k.mode == KeywordMode::Static)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::{Diagnostics, SourceDb};
+    use crate::toml_reader::Cx;
+    use std::path::Path;
+
+    const MATERIAL: &str = r#"
+[material]
+name = "m"
+
+[params.sphere_map]
+type = "cube"
+default = "black"
+default_when = [
+    { if = "SPHERE_MAP == multiply", default = "white" },
+    { if = "tier == reference", default = "gray" },
+]
+
+[params.mask]
+type = "texture2d"
+default = "gray"
+
+[params.amount]
+type = "float"
+
+[keywords.SPHERE_MAP]
+type = "enum"
+values = ["off", "add", "multiply"]
+default = "multiply"
+
+[keywords.WEAVE]
+type = "enum"
+values = ["plain", "twill"]
+mode = "constant"
+
+[[tier]]
+name = "fast"
+
+[[tier]]
+name = "reference"
+"#;
+
+    fn material() -> Material {
+        let mut db = SourceDb::new();
+        let mut diags = Diagnostics::new();
+        let file = db.add(Path::new("m.toml"), "m.toml".into(), MATERIAL.into());
+        let m = crate::parse::parse_material(
+            MATERIAL,
+            Path::new("m.toml"),
+            Path::new("."),
+            &mut Cx {
+                file,
+                diags: &mut diags,
+            },
+        );
+        assert!(diags.is_empty(), "{}", diags.render_plain(&db));
+        m.expect("parses")
+    }
+
+    fn kw(pairs: &[(&str, &str)]) -> BTreeMap<String, String> {
+        pairs
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn default_when_is_read_in_order() {
+        let m = material();
+        let p = m.param("sphere_map").unwrap();
+        assert_eq!(p.default, ParamValue::Texture(TextureDefault::Black));
+        let got: Vec<(String, TextureDefault)> = p
+            .default_when
+            .iter()
+            .map(|(c, d)| (format!("{} {:?} {}", c.subject, c.op, c.value), *d))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("SPHERE_MAP Equal multiply".into(), TextureDefault::White),
+                ("tier Equal reference".into(), TextureDefault::Gray),
+            ]
+        );
+        assert!(m.param("mask").unwrap().default_when.is_empty());
+    }
+
+    #[test]
+    fn first_holding_entry_wins_else_default() {
+        let m = material();
+        let p = m.param("sphere_map").unwrap();
+        let at = |sphere: &str, tier: &str| {
+            m.texture_default_for(p, &kw(&[("SPHERE_MAP", sphere)]), tier)
+        };
+        assert_eq!(at("add", "fast"), Some(TextureDefault::Black));
+        assert_eq!(at("off", "fast"), Some(TextureDefault::Black));
+        assert_eq!(at("multiply", "fast"), Some(TextureDefault::White));
+        assert_eq!(at("add", "reference"), Some(TextureDefault::Gray));
+        // Both hold: the first entry wins.
+        assert_eq!(at("multiply", "reference"), Some(TextureDefault::White));
+        // A keyword left out of the map has its default value (multiply).
+        assert_eq!(
+            m.texture_default_for(p, &BTreeMap::new(), "fast"),
+            Some(TextureDefault::White)
+        );
+        // Unconditional textures, and parameters that are not textures.
+        let mask = m.param("mask").unwrap();
+        assert_eq!(
+            m.texture_default_for(mask, &kw(&[("SPHERE_MAP", "multiply")]), "reference"),
+            Some(TextureDefault::Gray)
+        );
+        let amount = m.param("amount").unwrap();
+        assert_eq!(
+            m.texture_default_for(amount, &BTreeMap::new(), "fast"),
+            None
+        );
+    }
+
+    #[test]
+    fn resolves_per_variant_key() {
+        let m = material();
+        let p = m.param("sphere_map").unwrap();
+        let mut seen = Vec::new();
+        for v in crate::variants::variants(&m) {
+            let by_key = m.texture_default_in(p, &v);
+            let names: BTreeMap<String, String> = v
+                .keywords
+                .iter()
+                .map(|&(k, i)| (m.keywords[k].name.clone(), m.keywords[k].values[i].clone()))
+                .collect();
+            let tier = &m.tiers.values[v.tier];
+            assert_eq!(
+                by_key,
+                m.texture_default_for(p, &names, tier),
+                "{}",
+                v.id(&m)
+            );
+            seen.push((v.id(&m), by_key.unwrap().name()));
+        }
+        assert_eq!(
+            seen,
+            [
+                ("fast.sphere_map-off".to_string(), "black"),
+                ("fast.sphere_map-add".into(), "black"),
+                ("fast.sphere_map-multiply".into(), "white"),
+                ("reference.sphere_map-off".into(), "gray"),
+                ("reference.sphere_map-add".into(), "gray"),
+                ("reference.sphere_map-multiply".into(), "white"),
+            ]
+        );
+    }
+
+    #[test]
+    fn not_equal_conditions() {
+        let mut m = material();
+        let (c, _) = &mut m.params[0].default_when[0];
+        c.op = weft_meta::ConditionOp::NotEqual;
+        let p = m.params[0].clone();
+        let at = |sphere: &str| m.texture_default_for(&p, &kw(&[("SPHERE_MAP", sphere)]), "fast");
+        assert_eq!(at("multiply"), Some(TextureDefault::Black));
+        assert_eq!(at("add"), Some(TextureDefault::White));
+        // A subject with no value in the variant never holds, even with `!=`.
+        assert_eq!(
+            p.texture_default_where(|s| (s == "tier").then_some("fast")),
+            Some(TextureDefault::Black)
+        );
     }
 }

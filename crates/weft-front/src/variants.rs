@@ -2,7 +2,7 @@
 //! `static` keyword, minus the combinations `[variants].exclude` removes.
 
 use crate::model::Material;
-use weft_meta::{Condition, ConditionOp, KeywordMode};
+use weft_meta::{Condition, KeywordMode};
 
 /// One point of the variant space.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -38,10 +38,9 @@ impl VariantKey {
     }
 
     pub fn matches(&self, m: &Material, conds: &[Condition]) -> bool {
-        conds.iter().all(|c| match self.value_of(m, &c.subject) {
-            Some(v) => (v == c.value) == (c.op == ConditionOp::Equal),
-            None => false,
-        })
+        conds
+            .iter()
+            .all(|c| crate::condition::holds(c, self.value_of(m, &c.subject)))
     }
 }
 

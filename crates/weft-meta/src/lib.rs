@@ -8,14 +8,17 @@
 //! meaning changes; adding optional fields does not bump it.
 
 pub mod bake;
+pub mod pipeline;
 pub mod scene;
+
+pub use pipeline::*;
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Version of the metadata layout written into every file.
-pub const SCHEMA_VERSION: u32 = 1;
+pub const SCHEMA_VERSION: u32 = 2;
 
 /// Version of the engine interface (group 0 frame, group 2 object, vertex inputs).
 pub const ENGINE_INTERFACE_VERSION: u32 = 1;
@@ -45,6 +48,9 @@ pub struct MaterialMetadata {
     pub vertex_inputs: Vec<VertexInput>,
     /// Every variant of the static keyword/tier space, canonical ones first-seen.
     pub variants: Vec<Variant>,
+    /// Per emitted language (`wgsl`, `spirv`, `hlsl`, `msl`, `glsl`): the
+    /// coordinate conventions to draw its files with.
+    pub languages: BTreeMap<String, LanguageConventions>,
     /// Measured cost and error per tier. Never written by the compiler (its
     /// output is deterministic); attached at load time from
     /// `<generated>/reports/<name>.measurements.json` by [`MaterialMetadata::attach_measurements`].
@@ -298,7 +304,13 @@ impl TextureDefault {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TextureInfo {
+    /// The built-in texture bound while the parameter is unset, unless an
+    /// entry of `default_when` holds for the variant.
     pub default: TextureDefault,
+    /// Keyword-dependent defaults, tried in order; each variant's binding
+    /// states the resolved one (`bindings[].texture.default`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub default_when: Vec<ConditionalTextureDefault>,
     /// Colour data: bind an `*Srgb` format so sampling returns linear values.
     pub srgb: bool,
     /// Uniform member (vec4: xy tiling, zw offset) when the texture has tiling/offset.
@@ -306,6 +318,15 @@ pub struct TextureInfo {
     pub tiling_member: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tiling_default: Option<[f64; 4]>,
+}
+
+/// `default` replaces the texture default in variants where `condition` holds.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ConditionalTextureDefault {
+    /// On a static keyword or `tier`.
+    pub condition: Condition,
+    pub default: TextureDefault,
 }
 
 /// A curve keyframe: cubic Hermite between keys, slopes per unit time.
@@ -326,7 +347,22 @@ pub struct CurveInfo {
     pub samples: u32,
     /// The default curve sampled at `time_min + i (time_max - time_min)/(samples-1)`.
     pub baked_default: Vec<f64>,
+    /// [time_min, time_max]: the span the shader maps its argument onto.
+    /// Fixed at build time: a re-baked curve must be sampled over this span.
     pub time_range: [f64; 2],
+    /// How the samples are laid out in the uniform member.
+    pub encoding: CurveEncoding,
+}
+
+/// The uniform encoding of a curve: `samples` f32 values packed four per
+/// `vec4<f32>` (sample i in element i / 4, component i % 4), the last
+/// element's unused components zero. The shader interpolates linearly
+/// between neighbouring samples and clamps outside `time_range`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CurveEncoding {
+    /// Named and versioned: a different packing gets a new name.
+    F32x4PackedV1,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -343,8 +379,22 @@ pub struct GradientInfo {
     pub stops: Vec<GradientStop>,
     /// Width in texels of the 1-D ramp (a `width` x 1 Rgba8UnormSrgb texture).
     pub width: u32,
+    /// How the ramp's texels are made from the stops.
+    pub encoding: GradientEncoding,
     /// The default ramp, sRGB8 RGBA texels, `width` * 4 bytes as numbers.
     pub baked_default: Vec<u8>,
+}
+
+/// The texel encoding of a gradient ramp.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum GradientEncoding {
+    /// Texel i samples the stops at t = i / (width − 1), interpolating the
+    /// sRGB-encoded colours linearly between neighbouring stops (constant
+    /// outside the first and last), rounded to 8 bits; bound as
+    /// `rgba8unorm_srgb`, width × 1, sampled at texel centres with the
+    /// clamp sampler. `weft_meta::bake` is the reference implementation.
+    Rgba8SrgbRampV1,
 }
 
 /// A show-if condition on a keyword or a bool parameter.
@@ -484,8 +534,16 @@ pub struct Pass {
     pub name: String,
     pub vertex_entry: String,
     pub fragment_entry: String,
+    /// The state as the material author wrote it.
     pub render_state: RenderState,
     pub instances: InstanceCount,
+    /// The pipeline state that follows from it, in full.
+    pub primitive: PrimitiveState,
+    /// Colour attachments in fragment-output location order.
+    pub color_targets: Vec<ColorTarget>,
+    /// None when the pass neither tests nor writes depth (no depth
+    /// attachment needed).
+    pub depth: Option<DepthState>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -547,6 +605,9 @@ pub struct ShaderFile {
     /// Values of `constant`-mode keywords baked into this file (non-WGSL languages).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub constants: BTreeMap<String, String>,
+    /// GLSL files: the uniform-block binding points and texture units.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub glsl: Option<GlslReflection>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
@@ -567,10 +628,18 @@ pub struct EntryPoint {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PipelineConstant {
+    /// The WGSL `override` (a keyword's name).
     pub name: String,
-    /// `bool` or `u32`.
+    /// `bool` (toggles) or `u32` (enums).
     pub ty: String,
+    /// The keyword's values in order: value i is the constant `i` (toggles:
+    /// off = false = 0, on = true = 1).
+    pub values: Vec<String>,
+    /// The keyword's default value, as a name.
     pub default: String,
+    /// The default as the constant: `false`/`true` or the value's index.
+    /// APIs that take pipeline constants as numbers (WebGPU) pass 0/1 for bools.
+    pub default_value: serde_json::Value,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
@@ -600,6 +669,18 @@ pub struct Binding {
     pub parameter: Option<String>,
     pub stages: Vec<Stage>,
     pub hlsl: HlslBinding,
+    /// Buffer bindings: the layout entry and the struct's layout.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub buffer: Option<BufferBinding>,
+    /// Texture bindings: the layout entry, the format and the default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<TextureBinding>,
+    /// Sampler bindings: the layout entry and the sampler to create.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler: Option<SamplerBinding>,
+    /// Groups 0 and 2: which engine data the binding carries.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resource: Option<EngineResource>,
 }
 
 /// Where a binding lives in the HLSL output (see docs/hlsl-registers.md).
@@ -628,11 +709,43 @@ pub struct UniformLayout {
 #[serde(deny_unknown_fields)]
 pub struct UniformMember {
     pub name: String,
-    /// WGSL type, e.g. `vec4<f32>`, `array<vec4<f32>, 4>`.
+    /// WGSL type, e.g. `vec4<f32>`, `array<vec4<f32>, 4>`. Matrices are
+    /// column-major; `vec3` members occupy 12 bytes at a 16-byte alignment.
     pub ty: String,
     pub offset: u32,
     pub size: u32,
     pub align: u32,
+    /// Material members: the parameter whose value the member holds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub parameter: Option<String>,
+    /// Material members: how the parameter's value becomes these bytes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub encoding: Option<MemberEncoding>,
+    /// Engine members (frame, object): what to write.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+}
+
+/// How a parameter's value is written into its uniform member.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum MemberEncoding {
+    /// `float`: the value as f32.
+    F32,
+    /// `int`: the value as i32.
+    I32,
+    /// `bool`: u32 0 (false) or 1 (true).
+    BoolU32,
+    /// `vec2`/`vec3`/`vec4`: the components as f32.
+    Vector,
+    /// `color`: four f32, RGB converted from the sRGB-encoded value to
+    /// linear (`color.hdr` false) or written as is (HDR colours are edited
+    /// linear); alpha as is.
+    Color,
+    /// `curve`: the baked samples, see `curve.encoding`.
+    Curve,
+    /// A texture's tiling and offset (`texture.tiling_member`): xy tiling, zw offset.
+    TilingOffset,
 }
 
 impl MaterialMetadata {

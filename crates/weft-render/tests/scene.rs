@@ -9,7 +9,8 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 use weft_render::weft_meta::scene::{SceneInstance, SceneMetadata, SceneTransform, TierChoice};
 use weft_render::weft_meta::{
-    Binding, BindingKind, BlendMode, CullMode, DepthTest, HlslBinding, InstanceCount, Pass,
+    Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode, DepthState,
+    DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState, PrimitiveTopology,
     RenderState, Stage, UniformLayout, UniformMember,
 };
 use weft_render::*;
@@ -29,6 +30,9 @@ fn member(name: &str, ty: &str, offset: u32, size: u32) -> UniformMember {
         offset,
         size,
         align: 16,
+        parameter: None,
+        encoding: None,
+        description: None,
     }
 }
 
@@ -168,6 +172,31 @@ fn pass(name: &str, queue: i64, instances: InstanceCount) -> Pass {
             queue,
         },
         instances,
+        primitive: PrimitiveState {
+            topology: PrimitiveTopology::TriangleList,
+            front_face: FrontFace::Ccw,
+            cull_mode: CullMode::Back,
+        },
+        color_targets: vec![ColorTarget {
+            location: 0,
+            format: "rgba16float".into(),
+            output: ColorOutput::LinearRadiance,
+            exposure_applied: false,
+            tone_mapped: false,
+            blend: None,
+            write_mask: vec![
+                ColorChannel::Red,
+                ColorChannel::Green,
+                ColorChannel::Blue,
+                ColorChannel::Alpha,
+            ],
+        }],
+        depth: Some(DepthState {
+            format: "depth32float".into(),
+            write_enabled: true,
+            compare: DepthTest::LessEqual,
+            clear_value: 1.0,
+        }),
     }
 }
 
@@ -649,6 +678,10 @@ fn bad_scene_metadata_is_an_error_naming_the_file_and_instance() {
                 space: 3,
                 sampler_index_slot: None,
             },
+            buffer: None,
+            texture: None,
+            sampler: None,
+            resource: None,
         });
     }));
     assert!(
@@ -670,6 +703,10 @@ fn bad_scene_metadata_is_an_error_naming_the_file_and_instance() {
                 space: 1,
                 sampler_index_slot: None,
             },
+            buffer: None,
+            texture: None,
+            sampler: None,
+            resource: None,
         });
     }));
     assert!(e.contains("detail_map") && e.contains("textures"), "{e}");

@@ -10,7 +10,7 @@ use super::instance::{InstanceValues, instance_values, model_matrix};
 use super::tiers::{AutoTierRequest, TierChooser};
 use crate::compose::{self, validator};
 use crate::library::{CompiledMaterial, compile_material};
-use crate::variant::{CompiledVariant, emit_shader, sha256_hex};
+use crate::variant::{CompiledVariant, emit_shader, material_textures, sha256_hex};
 use crate::{metadata, prelude};
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use rayon::prelude::*;
@@ -200,7 +200,11 @@ fn build_instance(
     // placeholder stem and rename.
     let wgsl = crate::backends::emit_wgsl(&module, &info)?;
     let id = format!("{}.{}", m.name, &sha256_hex(wgsl.as_bytes())[..12]);
-    let compiled = emit_shader(m, &module, &info, id, prelude, &[Vec::new()])?;
+    let keywords = keyword_names(m, inst);
+    let textures = material_textures(m, prelude, &m.tiers.values[tier], |k| {
+        keywords.get(k).map(String::as_str)
+    });
+    let compiled = emit_shader(m, &module, &info, id, prelude, &textures, &[Vec::new()])?;
     Ok(BuiltInstance { values, compiled })
 }
 

@@ -127,6 +127,23 @@ pub fn instance_values(
         if let (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) = (p.kind, v)
             && !dynamic
         {
+            // An unset texture starts from its keyword-dependent default.
+            let t = if inst.set.get(i).copied().unwrap_or(true) {
+                *t
+            } else {
+                p.texture_default_where(|subject| {
+                    if subject == "tier" {
+                        m.tiers.values.get(tier).map(String::as_str)
+                    } else {
+                        m.keywords
+                            .iter()
+                            .zip(&inst.keywords)
+                            .find(|(k, _)| k.name == subject)
+                            .map(|(k, &v)| k.values[v].as_str())
+                    }
+                })
+                .unwrap_or(*t)
+            };
             fold.textures.insert(p.name.clone(), t.sampled(p.srgb));
             constants.insert(p.name.clone(), json!(t.name()));
         }

@@ -175,6 +175,10 @@ pub struct ResolvedInstance {
     /// Every parameter of the material, in declaration order: default, then
     /// preset, then the instance's own value.
     pub values: Vec<ParamValue>,
+    /// Per parameter: whether the preset or the instance wrote its value.
+    /// An unset texture takes its keyword-dependent default
+    /// (`Param::texture_default_where`) once the tier is chosen.
+    pub set: Vec<bool>,
     /// Parameters the engine still sets at run time (indices into the material's params).
     pub dynamic: Vec<usize>,
     pub dynamic_spans: Vec<Span>,

@@ -165,6 +165,8 @@ struct Resolving<'r> {
 /// Values and keywords as they resolve, with where each keyword and the tier came from.
 struct State {
     values: Vec<ParamValue>,
+    /// Which values the preset or the instance wrote.
+    set: Vec<bool>,
     keywords: Vec<usize>,
     keyword_from: Vec<Source>,
     tier: usize,
@@ -176,6 +178,7 @@ impl Resolving<'_> {
         let (decl, m) = (self.decl, self.m);
         let mut state = State {
             values: m.params.iter().map(|p| p.default.clone()).collect(),
+            set: vec![false; m.params.len()],
             keywords: m.keywords.iter().map(|k| k.default).collect(),
             keyword_from: vec![Source::Default; m.keywords.len()],
             tier: m.tiers.default,
@@ -206,6 +209,7 @@ impl Resolving<'_> {
             tier: tier?,
             keywords: state.keywords,
             values: state.values,
+            set: state.set,
             dynamic,
             dynamic_spans,
             mesh: decl.mesh.value,
@@ -242,9 +246,15 @@ impl Resolving<'_> {
         for (key, value) in &preset.values {
             match value {
                 PresetValue::Param(v) => {
-                    for (p, slot) in m.params.iter().zip(state.values.iter_mut()) {
+                    for ((p, slot), set) in m
+                        .params
+                        .iter()
+                        .zip(state.values.iter_mut())
+                        .zip(state.set.iter_mut())
+                    {
                         if p.name == *key {
                             *slot = values::conform(p.kind, v);
+                            *set = true;
                         }
                     }
                 }
@@ -389,6 +399,7 @@ impl Resolving<'_> {
             let (Some(p), Some(slot)) = (m.params.get(i), state.values.get_mut(i)) else {
                 continue;
             };
+            state.set[i] = true;
             let range = p
                 .range
                 .map_or_else(String::new, |r| format!(" [{}, {}]", r[0], r[1]));

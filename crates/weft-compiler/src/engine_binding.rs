@@ -1,0 +1,334 @@
+//! The binding details an engine needs beyond what naga's reflection says:
+//! the sampler objects weft's code expects, the texture formats of the data,
+//! which engine data each group-0/group-2 binding carries (with the baked
+//! LUT files' layout), what each frame/object uniform member holds, and the
+//! coordinate conventions of every emitted language.
+//!
+//! This is the one place that describes `wgsl/engine_interface.wgsl` and the
+//! prelude's group-1 samplers to engines; `reflect.rs` attaches it to the
+//! bindings a variant keeps.
+
+use crate::library::{SHEEN_LUT_PATH, SHEEN_LUT_SIZE, SPLIT_SUM_LUT_PATH, SPLIT_SUM_LUT_SIZE};
+use crate::prelude::{MATERIAL_CLAMP_SAMPLER_BINDING, MATERIAL_GROUP, MATERIAL_SAMPLER_BINDING};
+use std::collections::BTreeMap;
+use weft_meta::{
+    AddressMode, ClipSpaceY, ConstantKeywords, DepthRange, EngineResource, FilterMode, FrontFace,
+    LanguageConventions, ResourceFile, SamplerBinding, SamplerBindingType,
+};
+
+pub const FRAME_GROUP: u32 = 0;
+pub const OBJECT_GROUP: u32 = 2;
+
+/// The format of the prefiltered environment cube `weft-render` binds.
+pub const ENVIRONMENT_FORMAT: &str = "rgba16float";
+
+/// The sampler object a sampler binding expects: every weft sampler filters
+/// linearly (trilinear where there are mips); they differ in addressing.
+pub fn sampler(group: u32, binding: u32, comparison: bool) -> SamplerBinding {
+    let repeat = group == MATERIAL_GROUP && binding == MATERIAL_SAMPLER_BINDING;
+    let address = if repeat {
+        AddressMode::Repeat
+    } else {
+        AddressMode::ClampToEdge
+    };
+    SamplerBinding {
+        binding_type: if comparison {
+            SamplerBindingType::Comparison
+        } else {
+            SamplerBindingType::Filtering
+        },
+        mag_filter: FilterMode::Linear,
+        min_filter: FilterMode::Linear,
+        mipmap_filter: FilterMode::Linear,
+        address_mode_u: address,
+        address_mode_v: address,
+        address_mode_w: address,
+        lod_min_clamp: 0.0,
+        lod_max_clamp: 32.0,
+        anisotropy_clamp: 1,
+        compare: None,
+    }
+}
+
+/// Material samplers are in the prelude; keep the two constants in view here.
+const _: () = assert!(MATERIAL_SAMPLER_BINDING == 1 && MATERIAL_CLAMP_SAMPLER_BINDING == 2);
+
+fn resource(id: &str, description: &str, file: Option<ResourceFile>) -> EngineResource {
+    EngineResource {
+        id: id.into(),
+        description: description.into(),
+        file,
+    }
+}
+
+/// Which engine data a group-0 or group-2 binding carries, by the WGSL name.
+pub fn engine_resource(name: &str) -> Option<EngineResource> {
+    Some(match name {
+        "weft_frame" => resource(
+            "frame",
+            "Per-frame constants: camera, main light, SH ambient, environment mip count, \
+             exposure and time (the members' descriptions say what to write). Update once a frame.",
+            None,
+        ),
+        "weft_object" => resource(
+            "object",
+            "Per-object transforms (the members' descriptions say what to write).",
+            None,
+        ),
+        "weft_environment" => resource(
+            "environment",
+            "The engine's environment as a GGX-prefiltered radiance cube (linear HDR, any \
+             filterable float format; weft-render uses rgba16float), standard cube face order \
+             (+x, −x, +y, −y, +z, −z) with WebGPU/Vulkan face orientation. Mip m holds radiance \
+             prefiltered at perceptual roughness r with r (1.7 − 0.7 r) (mip_count − 1) = m; \
+             mip_count goes in weft_frame.params.x.",
+            None,
+        ),
+        "weft_environment_sampler" => resource(
+            "environment_sampler",
+            "Trilinear, clamp to edge (the sampler entry states it in full).",
+            None,
+        ),
+        "weft_brdf_lut" => resource(
+            "split_sum_lut",
+            "Split-sum environment BRDF (scale, bias) for GGX with Smith height-correlated \
+             visibility: specular = prefiltered × (F0 × scale + bias). Bind the file's texels.",
+            Some(ResourceFile {
+                path: SPLIT_SUM_LUT_PATH.into(),
+                format: "rg16float".into(),
+                width: SPLIT_SUM_LUT_SIZE,
+                height: SPLIT_SUM_LUT_SIZE,
+                layout: "width × height texels, rows in order (row 0 first), texels in a row \
+                         left to right; each texel two little-endian IEEE half floats (r, g); \
+                         no header, no padding"
+                    .into(),
+                u: "N·V, 0 at the left edge, 1 at the right; sampled at texel centres".into(),
+                v: "perceptual roughness, 0 at row 0, 1 at the last row; sampled at texel centres"
+                    .into(),
+                channels: "r: scale, g: bias".into(),
+            }),
+        ),
+        "weft_lut_sampler" => resource(
+            "lut_sampler",
+            "Bilinear, clamp to edge (the sampler entry states it in full).",
+            None,
+        ),
+        "weft_sheen_lut" => resource(
+            "sheen_albedo_lut",
+            "Directional albedo E of the Charlie sheen BRDF with sheen colour 1 (velvet's energy \
+             compensation). Bind the file's texels.",
+            Some(ResourceFile {
+                path: SHEEN_LUT_PATH.into(),
+                format: "r16float".into(),
+                width: SHEEN_LUT_SIZE,
+                height: SHEEN_LUT_SIZE,
+                layout: "width × height texels, rows in order (row 0 first), texels in a row \
+                         left to right; each texel one little-endian IEEE half float; no \
+                         header, no padding"
+                    .into(),
+                u: "N·V, 0 at the left edge, 1 at the right; sampled at texel centres".into(),
+                v: "Charlie sheen roughness (clamped to ≥ 0.07 by the shader), 0 at row 0, 1 at \
+                    the last row; sampled at texel centres"
+                    .into(),
+                channels: "r: E".into(),
+            }),
+        ),
+        _ => return None,
+    })
+}
+
+/// What to write into a member of `WeftFrame` or `WeftObject`.
+pub fn member_description(struct_name: &str, member: &str) -> Option<&'static str> {
+    Some(match (struct_name, member) {
+        ("WeftFrame", "view_proj") => {
+            "World → clip (projection × view), column-major, for WebGPU clip space (y up, z in \
+             [0, w]); the same matrix serves every language (each file adjusts its own clip space)"
+        }
+        ("WeftFrame", "view") => "World → view (rotation and translation), column-major",
+        ("WeftFrame", "camera_position") => "xyz: camera position in world space; w: 1",
+        ("WeftFrame", "light_direction") => {
+            "xyz: unit vector from the surface towards the main directional light; w: 0"
+        }
+        ("WeftFrame", "light_color") => "rgb: the main light's linear radiance; a: 1",
+        ("WeftFrame", "sh") => {
+            "L2 spherical-harmonic irradiance, rgb in xyz (w unused): Σ c_i Y_i(n) = E(n)/π, \
+             orthonormal real basis in the order Y00, Y1−1 (y), Y10 (z), Y11 (x), Y2−2 (xy), \
+             Y2−1 (yz), Y20 (3z²−1), Y21 (xz), Y22 (x²−y²)"
+        }
+        ("WeftFrame", "params") => {
+            "x: mip count of weft_environment; y: exposure (informational: shaders do not apply \
+             it, the engine does after the passes); z: time in seconds; w: unused"
+        }
+        ("WeftObject", "model") => "Object → world, column-major",
+        ("WeftObject", "normal_matrix") => {
+            "Inverse transpose of the model's upper 3×3, in the upper 3×3 of a column-major \
+             mat4 (the rest identity)"
+        }
+        _ => return None,
+    })
+}
+
+/// The conventions of every emitted language (backends.rs sets the options
+/// these follow from; tests/conventions.rs draws them).
+pub fn languages() -> BTreeMap<String, LanguageConventions> {
+    let entry = |y, depth, front_face, constants, notes: &str| LanguageConventions {
+        clip_space_y: y,
+        depth_range: depth,
+        front_face,
+        top_row_first: true,
+        constant_keywords: constants,
+        notes: notes.into(),
+    };
+    use ClipSpaceY::{Down, Up};
+    use ConstantKeywords::{FilePerValue, PipelineConstants};
+    use DepthRange::{MinusOneToOne, ZeroToOne};
+    BTreeMap::from([
+        (
+            "wgsl".into(),
+            entry(
+                Up,
+                ZeroToOne,
+                FrontFace::Ccw,
+                PipelineConstants,
+                "WebGPU (wgpu, Dawn, browsers). Bind as the bindings say; `constant`-mode keywords \
+                 are the pipeline constants.",
+            ),
+        ),
+        (
+            "spirv".into(),
+            entry(
+                Down,
+                ZeroToOne,
+                FrontFace::Ccw,
+                FilePerValue,
+                "Vulkan 1.0, SPIR-V 1.0: descriptor set = group, binding = binding. The vertex \
+                 stage negates clip-space y, so with a positive viewport height the picture \
+                 is upright and counter-clockwise faces are front faces, as in WGSL. Through a \
+                 layer that itself maps WebGPU's y-up clip space to Vulkan with a negative \
+                 viewport height (wgpu's passthrough shaders), y is flipped twice: set front \
+                 face clockwise and read the rows bottom to top.",
+            ),
+        ),
+        (
+            "hlsl".into(),
+            entry(
+                Up,
+                ZeroToOne,
+                FrontFace::Ccw,
+                FilePerValue,
+                "Shader model 5.1 (D3D12): registers and spaces as `bindings[].hlsl` says \
+                 (docs/hlsl-registers.md); samplers through naga's sampler heap. Set \
+                 FrontCounterClockwise = TRUE.",
+            ),
+        ),
+        (
+            "msl".into(),
+            entry(
+                Up,
+                ZeroToOne,
+                FrontFace::Ccw,
+                FilePerValue,
+                "Metal Shading Language 2.1, naga's default argument slots. Set \
+                 MTLWindingCounterClockwise.",
+            ),
+        ),
+        (
+            "glsl".into(),
+            entry(
+                Down,
+                MinusOneToOne,
+                FrontFace::Cw,
+                FilePerValue,
+                "GLSL 4.50 core, one file per stage. The vertex stage writes \
+                 gl_Position.yz = (−y, 2z − w): with GL's default clip control the picture's \
+                 top lands in row 0 of the target (as in every other language) and, because y \
+                 is mirrored in GL's y-up window coordinates, glFrontFace(GL_CW) keeps the \
+                 faces WGSL calls front. Uniform blocks and combined samplers carry \
+                 `layout(binding = N)`; `files.glsl[].glsl` maps each to its WGSL binding.",
+            ),
+        ),
+    ])
+}
+
+/// The GL binding points of one variant: uniform blocks and textures are
+/// numbered densely, each in (group, binding) order, so they fit GL ES 3.1's
+/// minimum limits. The same numbering serves every stage's file.
+pub fn glsl_binding_points(module: &naga::Module) -> BTreeMap<naga::ResourceBinding, u8> {
+    let mut blocks = Vec::new();
+    let mut textures = Vec::new();
+    for (_, var) in module.global_variables.iter() {
+        let Some(rb) = var.binding else { continue };
+        match (&module.types[var.ty].inner, var.space) {
+            (naga::TypeInner::Image { .. }, _) => textures.push(rb),
+            (_, naga::AddressSpace::Uniform | naga::AddressSpace::Storage { .. }) => {
+                blocks.push(rb)
+            }
+            _ => {}
+        }
+    }
+    let key = |rb: &naga::ResourceBinding| (rb.group, rb.binding);
+    blocks.sort_by_key(key);
+    textures.sort_by_key(key);
+    let mut map = BTreeMap::new();
+    for list in [blocks, textures] {
+        for (i, rb) in list.into_iter().enumerate() {
+            map.insert(rb, i as u8);
+        }
+    }
+    map
+}
+
+/// Every group-0 and group-2 binding name has a description (checked by a test).
+pub const ENGINE_BINDING_NAMES: [&str; 7] = [
+    "weft_frame",
+    "weft_environment",
+    "weft_environment_sampler",
+    "weft_brdf_lut",
+    "weft_lut_sampler",
+    "weft_sheen_lut",
+    "weft_object",
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_engine_binding_is_described() {
+        for name in ENGINE_BINDING_NAMES {
+            assert!(engine_resource(name).is_some(), "{name}");
+        }
+        let src = crate::compose::ENGINE_INTERFACE;
+        let declared = src
+            .lines()
+            .filter(|l| l.starts_with("@group("))
+            .filter_map(|l| l.split("var").nth(1))
+            .filter_map(|rest| {
+                let rest = rest.trim_start_matches(|c| c != ' ').trim();
+                rest.split(':').next().map(|n| n.trim().to_string())
+            })
+            .collect::<Vec<_>>();
+        assert_eq!(declared.len(), ENGINE_BINDING_NAMES.len(), "{declared:?}");
+        for name in &declared {
+            assert!(ENGINE_BINDING_NAMES.contains(&name.as_str()), "{name}");
+        }
+    }
+
+    #[test]
+    fn every_engine_member_is_described() {
+        for m in [
+            "view_proj",
+            "view",
+            "camera_position",
+            "light_direction",
+            "light_color",
+            "sh",
+            "params",
+        ] {
+            assert!(member_description("WeftFrame", m).is_some(), "{m}");
+        }
+        for m in ["model", "normal_matrix"] {
+            assert!(member_description("WeftObject", m).is_some(), "{m}");
+        }
+    }
+}

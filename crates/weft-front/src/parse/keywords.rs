@@ -1,0 +1,266 @@
+//! `[keywords.<NAME>]` tables -> [`Keyword`] and the `[[tier]]` list ->
+//! [`Tiers`]: the axes of the variant space.
+
+use super::{KEYWORD_KEYS, TIER_KEYS, humanize, is_snake_ident, is_upper_ident, parse_show_if};
+use crate::diag::Span;
+use crate::model::*;
+use crate::toml_reader::{Cx, Table, Value, expect_array, type_error};
+use toml::de::DeValue;
+use weft_meta::{KeywordKind, KeywordMode};
+
+pub(super) fn parse_keyword(
+    name: &str,
+    name_span: Span,
+    v: &Value,
+    cx: &mut Cx,
+) -> Option<Keyword> {
+    let t = Table::new(v, format!("keyword `{name}`"), cx)?;
+    t.check_keys(KEYWORD_KEYS, cx);
+    if !is_upper_ident(name) || name == "WEFT_TIER" || name.starts_with("TIER_") {
+        cx.error_with_note(
+            "bad-name",
+            format!("keyword name `{name}` is not an UPPER_SNAKE identifier (or is reserved)"),
+            name_span.clone(),
+            "becomes a WGSL override",
+            "use UPPER_SNAKE_CASE not ending in a digit; WEFT_TIER and TIER_* are reserved for tiers",
+        );
+    }
+    let kind_name = t.string("type", cx).unwrap_or_else(|| "toggle".into());
+    let kind = match kind_name.as_str() {
+        "toggle" => KeywordKind::Toggle,
+        "enum" => KeywordKind::Enum,
+        other => {
+            let hint = crate::diag::did_you_mean(other, ["toggle", "enum"])
+                .map_or("use `toggle` or `enum`".to_string(), |s| {
+                    format!("did you mean `{s}`?")
+                });
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown keyword type `{other}`"),
+                t.span_of("type"),
+                "unknown",
+                hint,
+            );
+            return None;
+        }
+    };
+    let mode = match t.string("mode", cx).as_deref() {
+        None | Some("static") => KeywordMode::Static,
+        Some("constant") => KeywordMode::Constant,
+        Some(other) => {
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown keyword mode `{other}`"),
+                t.span_of("mode"),
+                "unknown",
+                "use `static` (a variant per value) or `constant` (a pipeline constant)",
+            );
+            return None;
+        }
+    };
+    let values: Vec<String> = match kind {
+        KeywordKind::Toggle => {
+            if t.get("values").is_some() {
+                cx.error(
+                    "unknown-key",
+                    "a toggle keyword has the fixed values off/on",
+                    t.key_span("values").unwrap_or(t.span.clone()),
+                    "remove `values`, or use type = \"enum\"",
+                );
+            }
+            vec!["off".into(), "on".into()]
+        }
+        KeywordKind::Enum => {
+            let Some(list) = t.strings("values", cx) else {
+                cx.error(
+                    "missing-key",
+                    format!("enum keyword `{name}` needs `values`"),
+                    name_span.clone(),
+                    "declared here",
+                );
+                return None;
+            };
+            let mut out: Vec<String> = Vec::new();
+            for (value, span) in list {
+                if !is_snake_ident(&value) {
+                    cx.error(
+                        "bad-name",
+                        format!("keyword value `{value}` is not a lower-case identifier"),
+                        span,
+                        "becomes a WGSL constant suffix",
+                    );
+                } else if out.contains(&value) {
+                    cx.error(
+                        "duplicate",
+                        format!("keyword value `{value}` is listed twice"),
+                        span,
+                        "again here",
+                    );
+                } else {
+                    out.push(value);
+                }
+            }
+            if out.len() < 2 {
+                cx.error(
+                    "wrong-type",
+                    format!("enum keyword `{name}` needs at least two values"),
+                    t.span_of("values"),
+                    "here",
+                );
+                return None;
+            }
+            out
+        }
+    };
+    let default = match t.get("default") {
+        None => 0,
+        Some(dv) => {
+            let value = match (kind, dv.get_ref()) {
+                (KeywordKind::Toggle, DeValue::Boolean(b)) => {
+                    if *b { "on" } else { "off" }.to_string()
+                }
+                (_, DeValue::String(s)) => s.to_string(),
+                (_, other) => {
+                    type_error(
+                        cx,
+                        &format!("`default` of keyword `{name}`"),
+                        "a value name (or true/false for a toggle)",
+                        other,
+                        dv.span(),
+                    );
+                    return None;
+                }
+            };
+            match values.iter().position(|v| *v == value) {
+                Some(i) => i,
+                None => {
+                    let hint = match crate::diag::did_you_mean(
+                        &value,
+                        values.iter().map(String::as_str),
+                    ) {
+                        Some(s) => format!(
+                            "did you mean `{s}`? values of `{name}`: {}",
+                            values.join(", ")
+                        ),
+                        None => format!("values of `{name}`: {}", values.join(", ")),
+                    };
+                    cx.error_with_note(
+                        "unknown-value",
+                        format!("`{value}` is not a value of keyword `{name}`"),
+                        dv.span(),
+                        "unknown value",
+                        hint,
+                    );
+                    0
+                }
+            }
+        }
+    };
+    let show_if = parse_show_if(&t, cx);
+    Some(Keyword {
+        name: name.to_string(),
+        kind,
+        mode,
+        values,
+        default,
+        label: t
+            .string("label", cx)
+            .unwrap_or_else(|| humanize(&name.to_lowercase())),
+        label_zh: t.string("label_zh", cx),
+        tooltip: t.string("tooltip", cx),
+        tooltip_zh: t.string("tooltip_zh", cx),
+        group: t.string("group", cx).unwrap_or_else(|| "main".into()),
+        show_if,
+        decl: Loc {
+            file: cx.file,
+            span: name_span,
+        },
+    })
+}
+
+pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
+    let Some(v) = top.get("tier") else {
+        cx.error_with_note(
+            "missing-key",
+            "no quality tiers declared",
+            material.decl.span.clone(),
+            "material declared here",
+            "add [[tier]] tables named `fast` and `reference` (the reference is what other tiers are measured against)",
+        );
+        return;
+    };
+    let Some(items) = expect_array(v, "`tier`", cx) else {
+        return;
+    };
+    let mut default = None;
+    for item in items {
+        let Some(t) = Table::new(item, "a [[tier]]", cx) else {
+            continue;
+        };
+        t.check_keys(TIER_KEYS, cx);
+        let Some(name) = t.string("name", cx) else {
+            cx.error(
+                "missing-key",
+                "a [[tier]] needs a `name`",
+                item.span(),
+                "here",
+            );
+            continue;
+        };
+        if !is_snake_ident(&name) {
+            cx.error(
+                "bad-name",
+                format!("tier name `{name}` is not a lower-case identifier"),
+                t.span_of("name"),
+                "becomes TIER_<NAME> in WGSL",
+            );
+            continue;
+        }
+        if material.tiers.values.contains(&name) {
+            cx.error(
+                "duplicate",
+                format!("tier `{name}` is declared twice"),
+                t.span_of("name"),
+                "again here",
+            );
+            continue;
+        }
+        if t.boolean("default", cx) == Some(true) {
+            if default.is_some() {
+                cx.error(
+                    "duplicate",
+                    "more than one tier is marked `default = true`",
+                    t.span_of("default"),
+                    "second default",
+                );
+            }
+            default = Some(material.tiers.values.len());
+        }
+        material.tiers.descriptions.push((
+            name.clone(),
+            t.string("description", cx).unwrap_or_default(),
+            t.string("description_zh", cx),
+        ));
+        material.tiers.values.push(name);
+    }
+    for required in ["fast", "reference"] {
+        if !material.tiers.values.iter().any(|t| t == required) {
+            cx.error_with_note(
+                "missing-tier",
+                format!("the `{required}` tier is missing"),
+                v.span(),
+                "tiers declared here",
+                "every material has at least `fast` and `reference` tiers",
+            );
+        }
+    }
+    material.tiers.reference = material
+        .tiers
+        .values
+        .iter()
+        .position(|t| t == "reference")
+        .unwrap_or(0);
+    material.tiers.default = default
+        .or_else(|| material.tiers.values.iter().position(|t| t == "fast"))
+        .unwrap_or(0);
+}
