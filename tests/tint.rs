@@ -1,7 +1,9 @@
 //! Every generated WGSL module compiles in a real browser's WebGPU (Chromium's
 //! Tint, on SwiftShader), and every pass of every canonical variant makes a
-//! render pipeline there (`layout: 'auto'`, vertex buffers from the metadata,
-//! each value of each pipeline constant). The project is built as `cargo
+//! render pipeline there from the metadata alone (explicit bind group layouts
+//! from `bindings[]`, colour targets, blend, primitive and depth state from
+//! `passes[]`, vertex buffers from `vertex_inputs`, each value of each
+//! pipeline constant), so Tint checks the metadata against the shader. The project is built as `cargo
 //! xtask regenerate` builds it, so the shipped scenes' specialised shaders
 //! are checked too, each with the passes (render state) of the instances
 //! drawn with it and its own vertex inputs.
@@ -23,7 +25,6 @@ mod shaders;
 
 use shaders::ShaderRef;
 use weft_compiler::{BuildOptions, BuildOutput, build_library};
-use weft_meta::{BlendMode, CullMode, DepthTest};
 
 /// The browser process is killed after this long.
 const BROWSER_TIMEOUT: Duration = Duration::from_secs(120);
@@ -99,78 +100,100 @@ fn vertex_format_size(format: &str) -> u64 {
     bits / 8 * n
 }
 
-fn blend_state(mode: BlendMode) -> Value {
-    let (src, dst) = match mode {
-        BlendMode::Opaque => return Value::Null,
-        BlendMode::Alpha => ("src-alpha", "one-minus-src-alpha"),
-        BlendMode::Premultiplied => ("one", "one-minus-src-alpha"),
-        BlendMode::Additive => ("src-alpha", "one"),
-        BlendMode::Multiply => ("dst", "zero"),
-    };
-    let c = json!({ "operation": "add", "srcFactor": src, "dstFactor": dst });
-    json!({ "color": c, "alpha": c })
-}
-
-fn depth_compare(t: DepthTest) -> &'static str {
-    match t {
-        DepthTest::Always => "always",
-        DepthTest::Never => "never",
-        DepthTest::Less => "less",
-        DepthTest::LessEqual => "less-equal",
-        DepthTest::Equal => "equal",
-        DepthTest::Greater => "greater",
-        DepthTest::GreaterEqual => "greater-equal",
+/// A metadata enum value as WebGPU spells it: metadata names are WebGPU's
+/// in snake_case (`one_minus_src_alpha` -> `one-minus-src-alpha`).
+fn webgpu<T: serde::Serialize>(v: &T) -> Value {
+    match serde_json::to_value(v).unwrap() {
+        Value::String(s) => json!(s.replace('_', "-")),
+        other => panic!("not a unit enum: {other}"),
     }
 }
 
-/// Colour targets for a fragment entry point, by `@location` (holes are null):
-/// float outputs get a blendable format, integer outputs an integer format.
-fn color_targets(module: &naga::Module, entry: &str, blend: &Value) -> Vec<Value> {
-    let ep = module
-        .entry_points
-        .iter()
-        .find(|e| e.name == entry && e.stage == naga::ShaderStage::Fragment)
-        .unwrap_or_else(|| panic!("no fragment entry point `{entry}`"));
-    let mut outputs: Vec<(u32, naga::Handle<naga::Type>)> = Vec::new();
-    if let Some(result) = &ep.function.result {
-        match (&result.binding, &module.types[result.ty].inner) {
-            (Some(naga::Binding::Location { location, .. }), _) => {
-                outputs.push((*location, result.ty))
-            }
-            (None, naga::TypeInner::Struct { members, .. }) => {
-                for m in members {
-                    if let Some(naga::Binding::Location {
-                        location,
-                        blend_src: None,
-                        ..
-                    }) = &m.binding
-                    {
-                        outputs.push((*location, m.ty));
-                    }
-                }
-            }
-            _ => {}
-        }
-    }
+fn blend_component(c: &weft_meta::BlendComponent) -> Value {
+    json!({
+        "operation": webgpu(&c.operation),
+        "srcFactor": webgpu(&c.src_factor),
+        "dstFactor": webgpu(&c.dst_factor),
+    })
+}
+
+/// The pass's colour targets, from the metadata alone.
+fn color_targets(pass: &weft_meta::Pass) -> Vec<Value> {
     let mut targets = Vec::new();
-    for (location, ty) in outputs {
-        let kind = match module.types[ty].inner {
-            naga::TypeInner::Scalar(s) | naga::TypeInner::Vector { scalar: s, .. } => s.kind,
-            ref other => panic!("fragment output of type {other:?}"),
-        };
-        let target = match kind {
-            naga::ScalarKind::Sint => json!({ "format": "rgba32sint" }),
-            naga::ScalarKind::Uint => json!({ "format": "rgba32uint" }),
-            _ if blend.is_null() => json!({ "format": "rgba16float" }),
-            _ => json!({ "format": "rgba16float", "blend": blend }),
-        };
-        let i = location as usize;
+    for t in &pass.color_targets {
+        let mask: u32 = t
+            .write_mask
+            .iter()
+            .map(|c| match c {
+                weft_meta::ColorChannel::Red => 1,
+                weft_meta::ColorChannel::Green => 2,
+                weft_meta::ColorChannel::Blue => 4,
+                weft_meta::ColorChannel::Alpha => 8,
+            })
+            .sum();
+        let mut target = json!({ "format": t.format, "writeMask": mask });
+        if let Some(b) = &t.blend {
+            target["blend"] = json!({
+                "color": blend_component(&b.color),
+                "alpha": blend_component(&b.alpha),
+            });
+        }
+        let i = t.location as usize;
         if targets.len() <= i {
             targets.resize(i + 1, Value::Null);
         }
         targets[i] = target;
     }
     targets
+}
+
+/// Explicit bind group layouts (one per group up to the highest used) from
+/// the metadata's binding entries, so Tint checks them against the shader.
+fn bind_group_layouts(shader: &weft_meta::VariantShader) -> Vec<Vec<Value>> {
+    let groups = shader
+        .bindings
+        .iter()
+        .map(|b| b.group + 1)
+        .max()
+        .unwrap_or(0);
+    let mut layouts = vec![Vec::new(); groups as usize];
+    for b in &shader.bindings {
+        let visibility: u32 = b
+            .stages
+            .iter()
+            .map(|s| match s {
+                weft_meta::Stage::Vertex => 1,
+                weft_meta::Stage::Fragment => 2,
+                weft_meta::Stage::Compute => 4,
+            })
+            .sum();
+        let mut entry = json!({ "binding": b.binding, "visibility": visibility });
+        match (&b.buffer, &b.texture, &b.sampler) {
+            (Some(buf), None, None) => {
+                entry["buffer"] = json!({
+                    "type": webgpu(&buf.ty),
+                    "hasDynamicOffset": buf.has_dynamic_offset,
+                    "minBindingSize": buf.min_binding_size,
+                })
+            }
+            (None, Some(t), None) => {
+                entry["texture"] = json!({
+                    "sampleType": webgpu(&t.sample_type),
+                    "viewDimension": webgpu(&t.view_dimension),
+                    "multisampled": t.multisampled,
+                })
+            }
+            (None, None, Some(smp)) => {
+                entry["sampler"] = json!({ "type": webgpu(&smp.binding_type) })
+            }
+            _ => panic!(
+                "binding {} must have exactly one of buffer/texture/sampler",
+                b.name
+            ),
+        }
+        layouts[b.group as usize].push(entry);
+    }
+    layouts
 }
 
 /// Every canonical WGSL module of a build and every scene shader in it, and
@@ -197,7 +220,7 @@ fn add_shader(job: &mut Job, s: &ShaderRef, out: &BuildOutput) {
                 .clone(),
         )
         .unwrap();
-        let parsed = naga::front::wgsl::parse_str(&code)
+        naga::front::wgsl::parse_str(&code)
             .unwrap_or_else(|e| panic!("naga cannot parse {name}: {}", e.emit_to_string(&code)));
         let index = job.modules.len();
 
@@ -236,18 +259,26 @@ fn add_shader(job: &mut Job, s: &ShaderRef, out: &BuildOutput) {
                 })
             })
             .collect();
+        let layouts = bind_group_layouts(shader);
         for pass in &s.passes {
-            let rs = &pass.render_state;
-            let targets = color_targets(&parsed, &pass.fragment_entry, &blend_state(rs.blend));
-            let cull = match rs.cull {
-                CullMode::None => "none",
-                CullMode::Front => "front",
-                CullMode::Back => "back",
-            };
+            let targets = color_targets(pass);
+            let primitive = json!({
+                "topology": webgpu(&pass.primitive.topology),
+                "frontFace": webgpu(&pass.primitive.front_face),
+                "cullMode": webgpu(&pass.primitive.cull_mode),
+            });
+            let depth = pass.depth.as_ref().map(|d| {
+                json!({
+                    "format": d.format,
+                    "depthWriteEnabled": d.write_enabled,
+                    "depthCompare": webgpu(&d.compare),
+                })
+            });
             for (label, constants) in &constant_sets {
                 job.pipelines.push(json!({
                     "name": format!("{name} pass `{}`{label}", pass.name),
                     "module": index,
+                    "bindGroupLayouts": layouts,
                     "vertex": {
                         "entryPoint": pass.vertex_entry,
                         "buffers": buffers,
@@ -258,12 +289,8 @@ fn add_shader(job: &mut Job, s: &ShaderRef, out: &BuildOutput) {
                         "targets": targets,
                         "constants": constants,
                     },
-                    "primitive": { "topology": "triangle-list", "cullMode": cull },
-                    "depthStencil": {
-                        "format": "depth32float",
-                        "depthWriteEnabled": rs.depth_write,
-                        "depthCompare": depth_compare(rs.depth_test),
-                    },
+                    "primitive": primitive,
+                    "depthStencil": depth,
                 }));
             }
         }
@@ -311,14 +338,18 @@ const HARNESS_JS: &str = r#"
 
     report.pipelines = await Promise.all(payload.pipelines.map(async (p) => {
       const module = modules[p.module];
+      // The pipeline layout comes from the metadata's binding entries alone.
+      const layout = device.createPipelineLayout({
+        bindGroupLayouts: p.bindGroupLayouts.map((entries) => device.createBindGroupLayout({ entries })),
+      });
       const desc = {
         label: p.name,
-        layout: 'auto',
+        layout,
         vertex: Object.assign({}, p.vertex, { module }),
         fragment: Object.assign({}, p.fragment, { module }),
         primitive: p.primitive,
-        depthStencil: p.depthStencil,
       };
+      if (p.depthStencil) desc.depthStencil = p.depthStencil;
       try {
         await device.createRenderPipelineAsync(desc);
         return { name: p.name, error: null };
@@ -693,11 +724,13 @@ fn every_generated_wgsl_compiles_in_chromium_tint() {
 /// missing a vertex buffer the shader reads fails while the complete one passes.
 #[test]
 fn the_tint_harness_reports_broken_modules_and_pipelines() {
-    const STAGES: &str = "@vertex fn vs(@location(0) p: vec3<f32>) -> @builtin(position) vec4<f32> {\n    return vec4<f32>(p, 1.0);\n}\n@fragment fn fs() -> @location(0) vec4<f32> {\n    return vec4<f32>(1.0);\n}\n";
-    let pipeline = |name: &str, buffers: Value| {
+    const STAGES: &str = "@group(0) @binding(0) var<uniform> tint: vec4<f32>;\n@vertex fn vs(@location(0) p: vec3<f32>) -> @builtin(position) vec4<f32> {\n    return vec4<f32>(p, 1.0);\n}\n@fragment fn fs() -> @location(0) vec4<f32> {\n    return tint;\n}\n";
+    let uniform_layout = |min_binding_size: u64| json!([[{ "binding": 0, "visibility": 2, "buffer": { "type": "uniform", "hasDynamicOffset": false, "minBindingSize": min_binding_size } }]]);
+    let pipeline = |name: &str, buffers: Value, layouts: Value| {
         json!({
             "name": name,
             "module": 2,
+            "bindGroupLayouts": layouts,
             "vertex": { "entryPoint": "vs", "buffers": buffers, "constants": {} },
             "fragment": { "entryPoint": "fs", "targets": [{ "format": "rgba16float" }], "constants": {} },
             "primitive": { "topology": "triangle-list", "cullMode": "back" },
@@ -723,13 +756,21 @@ fn the_tint_harness_reports_broken_modules_and_pipelines() {
             pipeline(
                 "complete",
                 json!([{ "arrayStride": 12, "attributes": [{ "shaderLocation": 0, "offset": 0, "format": "float32x3" }] }]),
+                uniform_layout(16),
             ),
-            pipeline("no vertex buffer", json!([])),
+            pipeline("no vertex buffer", json!([]), uniform_layout(16)),
+            // A layout entry smaller than the shader's uniform: metadata that
+            // disagrees with the shader is caught.
+            pipeline(
+                "layout too small",
+                json!([{ "arrayStride": 12, "attributes": [{ "shaderLocation": 0, "offset": 0, "format": "float32x3" }] }]),
+                uniform_layout(4),
+            ),
         ],
     };
     let report = check_in_browser(&job);
     let (errors, _) = findings(&job, &report);
-    assert_eq!(errors.len(), 2, "expected two errors, got {errors:#?}");
+    assert_eq!(errors.len(), 3, "expected three errors, got {errors:#?}");
     assert!(
         errors[0].starts_with("broken.wgsl:2:")
             && errors[0].contains("return statement type must match its function return type"),
@@ -740,5 +781,10 @@ fn the_tint_harness_reports_broken_modules_and_pipelines() {
         errors[1].starts_with("pipeline no vertex buffer:"),
         "unexpected pipeline error: {}",
         errors[1]
+    );
+    assert!(
+        errors[2].starts_with("pipeline layout too small:"),
+        "unexpected pipeline error: {}",
+        errors[2]
     );
 }
