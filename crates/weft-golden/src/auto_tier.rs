@@ -524,6 +524,7 @@ fn instance_scene(
             fov_degrees: f64::from(camera.fov_y_degrees),
         },
         shaders: Vec::new(),
+        languages: meta.languages.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),
             material: meta.name.clone(),

@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Version of the scene metadata layout.
-pub const SCENE_SCHEMA_VERSION: u32 = 1;
+pub const SCENE_SCHEMA_VERSION: u32 = 2;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -33,6 +33,9 @@ pub struct SceneMetadata {
     pub shaders: Vec<SceneShader>,
     /// Instances in manifest order (draw them by pass queue, then this order).
     pub instances: Vec<SceneInstance>,
+    /// Per emitted language: the coordinate conventions to draw its files
+    /// with (as in the material metadata).
+    pub languages: std::collections::BTreeMap<String, crate::LanguageConventions>,
 }
 
 /// The engine features a scene provides. Engine interface v1: group 0 is

@@ -461,6 +461,7 @@ pub fn build_resolved_scene(
         },
         shaders,
         instances,
+        languages: crate::engine_binding::languages(),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");
     json.push('\n');
