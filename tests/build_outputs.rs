@@ -212,6 +212,43 @@ fn every_hlsl_compiles_with_glslang_for_each_stage() {
     );
 }
 
+/// Every MSL file declares each resource its entry points use at the
+/// argument slot the metadata's `bindings[].msl` states (no Metal compiler
+/// runs here, so this is the check that a Metal engine can bind the file:
+/// naga's unbindable `[[user(fake…)]]` placeholder never appears).
+#[test]
+fn every_msl_resource_sits_at_its_metadata_slot() {
+    let mut checked = 0;
+    for s in all_shaders() {
+        for f in &s.shader.files["msl"] {
+            let name = s.file(&f.path);
+            let text = std::str::from_utf8(file(&name)).unwrap();
+            assert!(!text.contains("[[user(fake"), "{name}: a resource without a slot");
+            for b in &s.shader.bindings {
+                let slot = b
+                    .msl
+                    .unwrap_or_else(|| panic!("{name}: binding {} has no msl slot", b.name));
+                let attr = match slot.kind {
+                    weft_meta::MslSlotKind::Buffer => format!("[[buffer({})]]", slot.index),
+                    weft_meta::MslSlotKind::Texture => format!("[[texture({})]]", slot.index),
+                    weft_meta::MslSlotKind::Sampler => format!("[[sampler({})]]", slot.index),
+                };
+                // Entry-point arguments read `<type> <name> [[<table>(<n>)]]`.
+                let declared = text
+                    .lines()
+                    .filter(|l| l.contains(&format!(" {} [[", b.name)))
+                    .collect::<Vec<_>>();
+                assert!(!declared.is_empty(), "{name}: `{}` is not an argument", b.name);
+                for l in declared {
+                    assert!(l.ends_with(&attr), "{name}: `{l}` is not at {attr}");
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 400, "{checked}");
+}
+
 fn reparse(name: &str, bytes: &[u8]) -> (naga::Module, naga::valid::ModuleInfo) {
     let text = std::str::from_utf8(bytes).unwrap();
     let module = naga::front::wgsl::parse_str(text)

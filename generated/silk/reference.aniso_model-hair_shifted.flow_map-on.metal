@@ -395,8 +395,8 @@ struct vs_mainOutput {
 };
 vertex vs_mainOutput vs_main(
   vs_mainInput varyings [[stage_in]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
-, constant WeftObject& weft_object [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
     WeftVaryings out = {};
@@ -433,16 +433,16 @@ struct fs_mainOutput {
 fragment fs_mainOutput fs_main(
   fs_mainInput varyings_1 [[stage_in]]
 , metal::float4 clip_position [[position]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
-, metal::texturecube<float, metal::access::sample> weft_environment [[user(fake0)]]
-, metal::sampler weft_environment_sampler [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[user(fake0)]]
-, metal::sampler weft_lut_sampler [[user(fake0)]]
-, constant WeftMaterial& material [[user(fake0)]]
-, metal::sampler material_sampler [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> base_map [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> aniso_normal_map [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> flow_map [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> flow_map [[texture(4)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};

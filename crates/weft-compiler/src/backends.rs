@@ -106,8 +106,47 @@ pub fn emit_hlsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
 }
 
 pub fn emit_msl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    // Explicit argument slots (engine_binding::msl_slots); a resource
+    // without one is an error rather than naga's unbindable placeholder.
+    let slots = crate::engine_binding::msl_slots(module);
+    let resources: msl::BindingMap = slots
+        .iter()
+        .map(|(rb, slot)| {
+            let index = slot.index as u8;
+            let target = match slot.kind {
+                weft_meta::MslSlotKind::Buffer => msl::BindTarget {
+                    buffer: Some(index),
+                    ..Default::default()
+                },
+                weft_meta::MslSlotKind::Texture => msl::BindTarget {
+                    texture: Some(index),
+                    ..Default::default()
+                },
+                weft_meta::MslSlotKind::Sampler => msl::BindTarget {
+                    sampler: Some(msl::BindSamplerTarget::Resource(index)),
+                    ..Default::default()
+                },
+            };
+            (*rb, target)
+        })
+        .collect();
+    let per_entry_point_map = module
+        .entry_points
+        .iter()
+        .map(|ep| {
+            (
+                ep.name.clone(),
+                msl::EntryPointResources {
+                    resources: resources.clone(),
+                    ..Default::default()
+                },
+            )
+        })
+        .collect();
     let options = msl::Options {
         lang_version: (2, 1),
+        per_entry_point_map,
+        fake_missing_bindings: false,
         ..msl::Options::default()
     };
     let pipeline = msl::PipelineOptions::default();

@@ -228,7 +228,10 @@ pub fn languages() -> BTreeMap<String, LanguageConventions> {
                 ZeroToOne,
                 FrontFace::Ccw,
                 FilePerValue,
-                "Metal Shading Language 2.1, naga's default argument slots. Set \
+                "Metal Shading Language 2.1. Each binding's `msl` gives its argument table \
+                 and index (the same in both stages); resource buffers take the lowest \
+                 buffer indices, so put vertex buffers at index 16 and above \
+                 (MTLVertexDescriptor; attributes at the vertex input locations). Set \
                  MTLWindingCounterClockwise.",
             ),
         ),
@@ -273,6 +276,42 @@ pub fn glsl_binding_points(module: &naga::Module) -> BTreeMap<naga::ResourceBind
     for list in [blocks, textures] {
         for (i, rb) in list.into_iter().enumerate() {
             map.insert(rb, i as u8);
+        }
+    }
+    map
+}
+
+/// The Metal argument slots of one variant: buffers, textures and samplers
+/// numbered densely, each table in (group, binding) order, the same in every
+/// stage (limits: 31 buffers, 128 textures, 16 samplers per stage).
+pub fn msl_slots(module: &naga::Module) -> BTreeMap<naga::ResourceBinding, weft_meta::MslBinding> {
+    use weft_meta::MslSlotKind;
+    let mut by_kind: BTreeMap<u8, Vec<naga::ResourceBinding>> = BTreeMap::new();
+    for (_, var) in module.global_variables.iter() {
+        let Some(rb) = var.binding else { continue };
+        let kind = match &module.types[var.ty].inner {
+            naga::TypeInner::Image { .. } => 1,
+            naga::TypeInner::Sampler { .. } => 2,
+            _ => 0,
+        };
+        by_kind.entry(kind).or_default().push(rb);
+    }
+    let mut map = BTreeMap::new();
+    for (kind, mut list) in by_kind {
+        list.sort_by_key(|rb| (rb.group, rb.binding));
+        for (i, rb) in list.into_iter().enumerate() {
+            let kind = match kind {
+                0 => MslSlotKind::Buffer,
+                1 => MslSlotKind::Texture,
+                _ => MslSlotKind::Sampler,
+            };
+            map.insert(
+                rb,
+                weft_meta::MslBinding {
+                    kind,
+                    index: i as u32,
+                },
+            );
         }
     }
     map

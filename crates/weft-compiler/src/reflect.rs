@@ -75,6 +75,7 @@ pub fn bindings(
     members: &MemberParams,
 ) -> Vec<Binding> {
     let hlsl = hlsl_options(module);
+    let msl = engine_binding::msl_slots(module);
     let mut out = Vec::new();
     for (handle, var) in module.global_variables.iter() {
         let Some(rb) = &var.binding else { continue };
@@ -218,6 +219,7 @@ pub fn bindings(
             kind,
             stages,
             hlsl: hlsl_binding,
+            msl: msl.get(rb).copied(),
             buffer,
             texture,
             sampler,

@@ -326,6 +326,30 @@ pub struct GlslReflection {
     pub samplers: Vec<GlslSampler>,
 }
 
+// ---------------------------------------------------------------- MSL
+
+/// The argument table a Metal resource lives in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum MslSlotKind {
+    /// `[[buffer(n)]]`: set with `setVertexBuffer`/`setFragmentBuffer`.
+    Buffer,
+    /// `[[texture(n)]]`.
+    Texture,
+    /// `[[sampler(n)]]`.
+    Sampler,
+}
+
+/// Where a binding lives in the MSL output; the same index in every stage.
+/// Indices are dense per table in (group, binding) order, so vertex buffers
+/// are free from index 16 up (`languages.msl.notes`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MslBinding {
+    pub kind: MslSlotKind,
+    pub index: u32,
+}
+
 // ---------------------------------------------------------------- languages
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]

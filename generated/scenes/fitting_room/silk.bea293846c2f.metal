@@ -315,8 +315,8 @@ struct vs_mainOutput {
 };
 vertex vs_mainOutput vs_main(
   vs_mainInput varyings [[stage_in]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
-, constant WeftObject& weft_object [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
     WeftVaryings out = {};
@@ -353,11 +353,11 @@ struct fs_mainOutput {
 fragment fs_mainOutput fs_main(
   fs_mainInput varyings_1 [[stage_in]]
 , metal::float4 clip_position [[position]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
-, metal::texturecube<float, metal::access::sample> weft_environment [[user(fake0)]]
-, metal::sampler weft_environment_sampler [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[user(fake0)]]
-, metal::sampler weft_lut_sampler [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};

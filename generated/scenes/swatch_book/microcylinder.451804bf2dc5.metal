@@ -395,8 +395,8 @@ struct vs_mainOutput {
 };
 vertex vs_mainOutput vs_main(
   vs_mainInput varyings [[stage_in]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
-, constant WeftObject& weft_object [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
     WeftVaryings out = {};
@@ -433,7 +433,7 @@ struct fs_mainOutput {
 fragment fs_mainOutput fs_main(
   fs_mainInput varyings_1 [[stage_in]]
 , metal::float4 clip_position [[position]]
-, constant WeftFrame& weft_frame [[user(fake0)]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float4 s1_ = metal::float4(0.0);
