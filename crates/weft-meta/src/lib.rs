@@ -669,6 +669,9 @@ pub struct Binding {
     pub parameter: Option<String>,
     pub stages: Vec<Stage>,
     pub hlsl: HlslBinding,
+    /// Where the binding lives in the MSL output.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub msl: Option<MslBinding>,
     /// Buffer bindings: the layout entry and the struct's layout.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub buffer: Option<BufferBinding>,
