@@ -2,12 +2,13 @@
 //! frame uniforms, the sky, the render pass, the colour readback. Materials
 //! and scenes both come here as a list of [`DrawCall`]s.
 
+use crate::engine_uniforms::frame_bytes;
 use crate::error::Result;
 use crate::gpu::Gpu;
 use crate::image::HdrImage;
 use crate::math;
 use crate::renderer::{Background, ColorFormat, DEPTH_FORMAT, RenderOptions, Renderer};
-use crate::resources::{FRAME_SIZE, GpuEnvironment, GpuMesh};
+use crate::resources::{GpuEnvironment, GpuMesh};
 use crate::scene::{Camera, Light};
 
 const SKY_UNIFORM_SIZE: u64 = 96;
@@ -61,33 +62,6 @@ pub(crate) struct FrameView<'a> {
     pub camera: &'a Camera,
     pub light: &'a Light,
     pub env: &'a GpuEnvironment,
-}
-
-/// The `weft_frame` uniform contents (as f32s).
-pub(crate) fn frame_uniform(view: &FrameView, aspect: f32, options: &RenderOptions) -> Vec<f32> {
-    let camera = view.camera;
-    let light_dir = math::normalize(view.light.direction);
-    let mut f: Vec<f32> = Vec::with_capacity((FRAME_SIZE / 4) as usize);
-    f.extend(camera.view_proj(aspect).iter().flatten());
-    f.extend(camera.view().iter().flatten());
-    f.extend(camera.eye);
-    f.push(1.0);
-    f.extend(light_dir);
-    f.push(0.0);
-    f.extend(view.light.radiance);
-    f.push(0.0);
-    for c in &view.env.sh {
-        f.extend(c);
-        f.push(0.0);
-    }
-    f.extend([
-        view.env.mip_count as f32,
-        options.exposure,
-        options.time,
-        0.0,
-    ]);
-    debug_assert_eq!(f.len() * 4, FRAME_SIZE as usize);
-    f
 }
 
 /// What a render pass clears the colour target to (the sky is drawn over black).
@@ -269,7 +243,7 @@ impl Renderer {
         timestamps: Option<&wgpu::QuerySet>,
     ) -> Result<(HdrImage, Vec<f64>)> {
         let (w, h) = (options.width.max(1), options.height.max(1));
-        self.write_frame(view, w as f32 / h as f32, options);
+        self.write_frame(view, w as f32 / h as f32, options)?;
         let gpu = &self.gpu;
         let device = &gpu.device;
         let targets = RenderTargets::new(device, w, h, options.format, "weft");
@@ -315,12 +289,13 @@ impl Renderer {
         Ok((targets.read(gpu)?, cpu_ms))
     }
 
-    /// Writes `weft_frame` and the sky's uniform for one frame.
-    fn write_frame(&self, view: &FrameView, aspect: f32, options: &RenderOptions) {
-        let f = frame_uniform(view, aspect, options);
-        self.gpu
-            .queue
-            .write_buffer(&self.frame_buffer, 0, bytemuck::cast_slice(&f));
+    /// Writes `weft_frame` (every layout's buffer) and the sky's uniform
+    /// for one frame.
+    fn write_frame(&self, view: &FrameView, aspect: f32, options: &RenderOptions) -> Result<()> {
+        for block in &self.frame_blocks {
+            let bytes = frame_bytes(block, view, aspect, options)?;
+            self.gpu.queue.write_buffer(&block.buffer, 0, &bytes);
+        }
         let view_proj = view.camera.view_proj(aspect);
         let inv = math::inverse(&view_proj).unwrap_or(math::IDENTITY);
         let mip = match options.background {
@@ -335,6 +310,7 @@ impl Renderer {
         self.gpu
             .queue
             .write_buffer(&self.sky_buffer, 0, bytemuck::cast_slice(&s));
+        Ok(())
     }
 
     fn sky_bind_group(&self, env: &wgpu::TextureView) -> wgpu::BindGroup {
@@ -354,7 +330,7 @@ impl Renderer {
                     },
                     wgpu::BindGroupEntry {
                         binding: 2,
-                        resource: wgpu::BindingResource::Sampler(&self.env_sampler),
+                        resource: wgpu::BindingResource::Sampler(&self.sky_sampler),
                     },
                 ],
             })

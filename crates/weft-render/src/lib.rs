@@ -36,7 +36,9 @@
 //! to m (see [`MipRoughness`]). Output is linear HDR ([`HdrImage`]); tone
 //! mapping happens on the CPU.
 
+mod bindings;
 mod draw;
+mod engine_uniforms;
 mod environment;
 mod error;
 mod gpu;
@@ -44,6 +46,7 @@ mod image;
 mod luts;
 mod material;
 pub mod math;
+mod meta_wgpu;
 mod pipelines;
 mod preview;
 pub mod probe;

@@ -1,15 +1,27 @@
 //! The lookup tables group 0 of the engine interface binds, baked by the
 //! toolchain into `generated/luts/` and read here.
+//!
+//! What a variant binds is found from its metadata: a LUT binding's
+//! `resource.file` names the file (relative to the library root), its
+//! format and size ([`Luts::texels`]). The CPU-side tables ([`Luts::brdf`],
+//! [`Luts::sheen`], for tests and measurements that evaluate them directly)
+//! are read from the toolchain's file names below.
 
 use crate::error::{Error, Result};
-use std::path::Path;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
+use weft_meta::ResourceFile;
 
 /// Location of the split-sum LUT under a generated folder (weft-compiler's
-/// `SPLIT_SUM_LUT_PATH`).
+/// `SPLIT_SUM_LUT_PATH`): where [`Luts::load_dir`] reads [`Luts::brdf`].
 pub const SPLIT_SUM_LUT_FILE: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
 /// Location of the Charlie sheen albedo LUT under a generated folder
-/// (weft-compiler's `SHEEN_LUT_PATH`).
+/// (weft-compiler's `SHEEN_LUT_PATH`): where [`Luts::load_dir`] reads [`Luts::sheen`].
 pub const SHEEN_LUT_FILE: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
+
+/// The `resource.id`s of the baked tables.
+pub(crate) const SPLIT_SUM_LUT_ID: &str = "split_sum_lut";
+pub(crate) const SHEEN_LUT_ID: &str = "sheen_albedo_lut";
 
 /// The generated folder of a material's metadata: `<meta dir>/..`.
 fn generated_dir(meta_path: &Path) -> &Path {
@@ -112,6 +124,11 @@ pub struct Luts {
     pub brdf: BrdfLut,
     /// `weft_sheen_lut`; only variants that bind it need it.
     pub sheen: Option<SheenLut>,
+    /// The library root the tables were read from (the folder holding
+    /// `luts/`). With a root, a variant's LUT is read from the file its
+    /// metadata names; without one (tables built in memory) the table of
+    /// the binding's `resource.id` is bound.
+    pub root: Option<PathBuf>,
 }
 
 impl Luts {
@@ -126,7 +143,58 @@ impl Luts {
         } else {
             None
         };
-        Ok(Luts { brdf, sheen })
+        Ok(Luts {
+            brdf,
+            sheen,
+            root: Some(dir.to_path_buf()),
+        })
+    }
+
+    /// The texels of the LUT a binding names (`resource.id`, `resource.file`):
+    /// the file at `file.path` under [`Luts::root`], else the in-memory
+    /// table for `id`; checked against the metadata's format, width and height.
+    pub fn texels(&self, id: &str, file: &ResourceFile) -> Result<Cow<'_, [u8]>> {
+        let bytes: Cow<[u8]> = match &self.root {
+            Some(root) => Cow::Owned(read_lut(&root.join(&file.path))?),
+            None => match id {
+                SPLIT_SUM_LUT_ID => Cow::Borrowed(&self.brdf.bytes),
+                SHEEN_LUT_ID => match &self.sheen {
+                    Some(s) => Cow::Borrowed(&s.bytes),
+                    None => {
+                        return Err(Error::Metadata(format!(
+                            "the variant binds LUT `{id}` (`{}`), which was not loaded",
+                            file.path
+                        )));
+                    }
+                },
+                other => {
+                    return Err(Error::Metadata(format!(
+                        "LUT `{other}` (`{}`) is none that weft-render holds in memory \
+                         (`{SPLIT_SUM_LUT_ID}`, `{SHEEN_LUT_ID}`); load the tables from a folder",
+                        file.path
+                    )));
+                }
+            },
+        };
+        let texel = texel_bytes(&file.format).ok_or_else(|| {
+            Error::Metadata(format!(
+                "LUT `{}` has format `{}`; weft-render reads rg16float and r16float tables",
+                file.path, file.format
+            ))
+        })?;
+        let expected = u64::from(file.width) * u64::from(file.height) * texel;
+        if bytes.len() as u64 != expected || file.width == 0 || file.height == 0 {
+            return Err(Error::Metadata(format!(
+                "LUT `{}` holds {} bytes, but the metadata describes a {}x{} `{}` table \
+                 ({expected} bytes); rebuild the library (`cargo xtask regenerate` or `weft build`)",
+                file.path,
+                bytes.len(),
+                file.width,
+                file.height,
+                file.format
+            )));
+        }
+        Ok(bytes)
     }
 
     /// The tables next to a material's metadata (`<meta dir>/../luts/`).
@@ -152,6 +220,19 @@ impl Luts {
 
 impl From<BrdfLut> for Luts {
     fn from(brdf: BrdfLut) -> Luts {
-        Luts { brdf, sheen: None }
+        Luts {
+            brdf,
+            sheen: None,
+            root: None,
+        }
+    }
+}
+
+/// Bytes per texel of the LUT formats weft bakes.
+fn texel_bytes(format: &str) -> Option<u64> {
+    match format {
+        "rg16float" => Some(4),
+        "r16float" => Some(2),
+        _ => None,
     }
 }

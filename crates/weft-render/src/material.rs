@@ -10,7 +10,7 @@ use crate::uniform::{put, write_f32s};
 // The value types are part of this module's API (`crate::material::Value`, ...).
 pub(crate) use crate::values::{CurveValue, StoredValue, Value};
 use crate::values::{Ranges, default_value, normalise};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use weft_meta::{
     InstanceCount, KeywordKind, MaterialMetadata, ParamKind, Parameter, Pass, PipelineConstant,
@@ -34,6 +34,9 @@ pub struct Material {
     /// Folder the metadata's relative shader paths resolve against.
     dir: PathBuf,
     values: BTreeMap<String, StoredValue>,
+    /// Texture and cube parameters given a value since the last reset;
+    /// the others bind their variant's default (`bindings[].texture.default`).
+    set_textures: BTreeSet<String>,
     tiling: BTreeMap<String, [f64; 4]>,
     keywords: BTreeMap<String, String>,
     tier: String,
@@ -64,6 +67,7 @@ impl Material {
         let mut m = Material {
             dir: dir.into(),
             values: BTreeMap::new(),
+            set_textures: BTreeSet::new(),
             tiling: BTreeMap::new(),
             keywords: meta
                 .keywords
@@ -80,6 +84,7 @@ impl Material {
     /// Every parameter back to its metadata default (keywords and tier unchanged).
     pub fn reset(&mut self) -> Result<()> {
         self.values.clear();
+        self.set_textures.clear();
         self.tiling.clear();
         let params = self.meta.parameters.clone();
         for p in &params {
@@ -133,8 +138,23 @@ impl Material {
         let value = value.into();
         let p = self.parameter(name)?.clone();
         let stored = normalise(&p, value, Ranges::Check)?;
-        self.values.insert(p.name.clone(), stored);
+        self.store(&p, stored);
         Ok(())
+    }
+
+    fn store(&mut self, p: &Parameter, stored: StoredValue) {
+        if matches!(p.kind, ParamKind::Texture2d | ParamKind::Cube) {
+            self.set_textures.insert(p.name.clone());
+        }
+        self.values.insert(p.name.clone(), stored);
+    }
+
+    /// Whether a texture or cube parameter was given a value since the
+    /// last reset. An unset one binds the built-in texture its variant's
+    /// binding names (`texture.default`: the keyword-dependent default
+    /// resolved), which [`Material::get`]'s declared default may not be.
+    pub fn texture_is_set(&self, name: &str) -> bool {
+        self.set_textures.contains(name)
     }
 
     /// Sets a parameter to a value as a scene build uploaded it (colours
@@ -142,7 +162,7 @@ impl Material {
     pub(crate) fn set_as_uploaded(&mut self, name: &str, value: Value) -> Result<()> {
         let p = self.parameter(name)?.clone();
         let stored = normalise(&p, value, Ranges::Skip)?;
-        self.values.insert(p.name.clone(), stored);
+        self.store(&p, stored);
         Ok(())
     }
 
@@ -338,23 +358,21 @@ impl Material {
     }
 
     /// Values for the variant's WGSL `override`s (constant-mode keywords):
-    /// toggles 0/1, enums the value's index.
+    /// the current keyword value's index in the constant's `values` (value
+    /// i is the constant i; toggles off = 0, on = 1); a constant no keyword
+    /// sets takes its `default_value`.
     pub fn pipeline_constants(&self, shader: &VariantShader) -> Result<Vec<(String, f64)>> {
-        let mut out = Vec::new();
-        for c in &shader.pipeline_constants {
-            let value = match self.meta.keywords.iter().find(|k| k.name == c.name) {
-                Some(k) => {
-                    let v = self.keywords.get(&k.name).unwrap_or(&k.default);
-                    let idx = k.values.iter().position(|x| x == v).ok_or_else(|| {
-                        Error::Metadata(format!("keyword `{}` has no value `{v}`", k.name))
-                    })?;
-                    idx as f64
-                }
-                None => constant_default(c)?,
-            };
-            out.push((c.name.clone(), value));
-        }
-        Ok(out)
+        shader
+            .pipeline_constants
+            .iter()
+            .map(|c| {
+                let value = match self.keywords.get(&c.name) {
+                    Some(v) => constant_value(c, v)?,
+                    None => constant_default(c)?,
+                };
+                Ok((c.name.clone(), value))
+            })
+            .collect()
     }
 
     /// Instances a pass draws (a fixed count or an int parameter's value, at least 0).
@@ -450,18 +468,36 @@ pub(crate) fn instance_count_of(x: f64) -> u32 {
     x.round().clamp(0.0, f64::from(u32::MAX)) as u32
 }
 
-/// The value of a pipeline constant's WGSL default (`true`/`false`, a
-/// number, `3u`): what a constant no keyword sets is drawn with.
-pub(crate) fn constant_default(c: &PipelineConstant) -> Result<f64> {
-    match c.default.as_str() {
-        "true" => Ok(1.0),
-        "false" => Ok(0.0),
-        s => s.trim_end_matches('u').parse::<f64>().map_err(|_| {
+/// The constant for keyword value `value`: its index in `c.values`.
+pub(crate) fn constant_value(c: &PipelineConstant, value: &str) -> Result<f64> {
+    c.values
+        .iter()
+        .position(|x| x == value)
+        .map(|i| i as f64)
+        .ok_or_else(|| {
             Error::Metadata(format!(
-                "pipeline constant `{}` has no keyword and an unreadable default `{s}`",
+                "pipeline constant `{}` has no value `{value}` (values: {})",
+                c.name,
+                c.values.join(", ")
+            ))
+        })
+}
+
+/// A pipeline constant's `default_value` as the number WebGPU takes
+/// (bools 0/1): what a constant no keyword sets is drawn with.
+pub(crate) fn constant_default(c: &PipelineConstant) -> Result<f64> {
+    match &c.default_value {
+        serde_json::Value::Bool(b) => Ok(f64::from(u8::from(*b))),
+        serde_json::Value::Number(n) => n.as_f64().ok_or_else(|| {
+            Error::Metadata(format!(
+                "pipeline constant `{}` has an unreadable default_value {n}",
                 c.name
             ))
         }),
+        other => Err(Error::Metadata(format!(
+            "pipeline constant `{}` has default_value {other}; expected a bool or a number",
+            c.name
+        ))),
     }
 }
 

@@ -1,17 +1,19 @@
 //! Shader modules, bind group layouts, vertex layouts and render pipelines
 //! built from a `VariantShader` (a library variant's or a scene shader's)
-//! and the render state of its passes. Nothing here knows where the
+//! and the pipeline state its passes state (`primitive`, `color_targets`,
+//! `depth`; converted in `meta_wgpu.rs`). Nothing here knows where the
 //! shader's values come from.
 
 use crate::error::{Error, Result, io_err};
 use crate::gpu::Gpu;
+use crate::meta_wgpu::{
+    binding_layout_entry, color_target_state, depth_stencil_state, primitive_state,
+};
 use crate::renderer::{ColorFormat, DEPTH_FORMAT, Renderer, ShaderLanguage};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::Arc;
-use weft_meta::{
-    BindingKind, BlendMode, CullMode, DepthTest, Pass, Stage, VariantShader, VertexInput,
-};
+use weft_meta::{BindingKind, Pass, VariantShader, VertexInput};
 
 /// Which shader to build pipelines from, and how.
 pub(crate) struct ShaderInput<'a> {
@@ -62,7 +64,16 @@ impl Renderer {
     ) -> Result<Arc<VariantPipelines>> {
         let states: Vec<_> = passes
             .iter()
-            .map(|p| (&p.name, &p.vertex_entry, &p.fragment_entry, &p.render_state))
+            .map(|p| {
+                (
+                    &p.name,
+                    &p.vertex_entry,
+                    &p.fragment_entry,
+                    &p.primitive,
+                    &p.color_targets,
+                    &p.depth,
+                )
+            })
             .collect();
         let key = format!(
             "{}|{:?}|{:?}|{:?}|{:?}|{:?}",
@@ -164,7 +175,7 @@ fn build_pipelines(
                 .bindings
                 .iter()
                 .filter(|b| b.group == g)
-                .map(|b| layout_entry(b.binding, stages(&b.stages), b.kind))
+                .map(binding_layout_entry)
                 .collect::<Result<Vec<_>>>()?;
             let layout = gpu.checked("bind group layout", || {
                 device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -213,7 +224,9 @@ fn build_pipelines(
         .collect();
     let mut out = Vec::new();
     for pass in passes {
-        let rs = &pass.render_state;
+        let primitive = primitive_state(pass);
+        let depth_stencil = depth_stencil_state(pass)?;
+        let target = color_target_state(pass, format)?;
         let pipeline = gpu.checked(
             &format!("pipeline of pass `{}` of `{label}`", pass.name),
             || {
@@ -229,23 +242,8 @@ fn build_pipelines(
                         },
                         buffers: &buffers,
                     },
-                    primitive: wgpu::PrimitiveState {
-                        topology: wgpu::PrimitiveTopology::TriangleList,
-                        front_face: wgpu::FrontFace::Ccw,
-                        cull_mode: match rs.cull {
-                            CullMode::None => None,
-                            CullMode::Front => Some(wgpu::Face::Front),
-                            CullMode::Back => Some(wgpu::Face::Back),
-                        },
-                        ..Default::default()
-                    },
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(rs.depth_write),
-                        depth_compare: Some(compare(rs.depth_test)),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
+                    primitive,
+                    depth_stencil: Some(depth_stencil),
                     multisample: Default::default(),
                     fragment: Some(wgpu::FragmentState {
                         module: &module,
@@ -254,11 +252,7 @@ fn build_pipelines(
                             constants: &constant_refs,
                             ..Default::default()
                         },
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format: format.wgpu(),
-                            blend: blend(rs.blend),
-                            write_mask: wgpu::ColorWrites::ALL,
-                        })],
+                        targets: &[Some(target)],
                     }),
                     multiview_mask: None,
                     cache: None,
@@ -345,63 +339,31 @@ pub(crate) fn spirv_file_for(
         })
 }
 
-pub(crate) fn is_texture(k: BindingKind) -> bool {
-    matches!(
-        k,
-        BindingKind::Texture2d
-            | BindingKind::TextureCube
-            | BindingKind::Texture2dArray
-            | BindingKind::Texture3d
-            | BindingKind::DepthTexture2d
-    )
-}
-
-fn stages(s: &[Stage]) -> wgpu::ShaderStages {
-    let mut out = wgpu::ShaderStages::NONE;
-    for st in s {
-        out |= match st {
-            Stage::Vertex => wgpu::ShaderStages::VERTEX,
-            Stage::Fragment => wgpu::ShaderStages::FRAGMENT,
-            Stage::Compute => wgpu::ShaderStages::COMPUTE,
-        };
-    }
-    out
-}
-
-pub(crate) fn layout_entry(
+/// A layout entry from a binding kind alone: only for weft-render's own
+/// sky pipeline (variants' entries come from their metadata:
+/// `meta_wgpu::binding_layout_entry`).
+pub(crate) fn kind_layout_entry(
     binding: u32,
     visibility: wgpu::ShaderStages,
     kind: BindingKind,
 ) -> Result<wgpu::BindGroupLayoutEntry> {
-    let tex = |view_dimension, sample_type| wgpu::BindingType::Texture {
-        sample_type,
-        view_dimension,
-        multisampled: false,
-    };
-    let float = wgpu::TextureSampleType::Float { filterable: true };
     let ty = match kind {
         BindingKind::UniformBuffer => wgpu::BindingType::Buffer {
             ty: wgpu::BufferBindingType::Uniform,
             has_dynamic_offset: false,
             min_binding_size: None,
         },
-        BindingKind::StorageBuffer => wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only: true },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
         BindingKind::Sampler => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-        BindingKind::ComparisonSampler => {
-            wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison)
+        BindingKind::TextureCube => wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: wgpu::TextureViewDimension::Cube,
+            multisampled: false,
+        },
+        other => {
+            return Err(Error::Metadata(format!(
+                "the sky pipeline does not bind a {other:?}"
+            )));
         }
-        BindingKind::Texture2d => tex(wgpu::TextureViewDimension::D2, float),
-        BindingKind::TextureCube => tex(wgpu::TextureViewDimension::Cube, float),
-        BindingKind::Texture2dArray => tex(wgpu::TextureViewDimension::D2Array, float),
-        BindingKind::Texture3d => tex(wgpu::TextureViewDimension::D3, float),
-        BindingKind::DepthTexture2d => tex(
-            wgpu::TextureViewDimension::D2,
-            wgpu::TextureSampleType::Depth,
-        ),
     };
     Ok(wgpu::BindGroupLayoutEntry {
         binding,
@@ -409,47 +371,6 @@ pub(crate) fn layout_entry(
         ty,
         count: None,
     })
-}
-
-fn compare(d: DepthTest) -> wgpu::CompareFunction {
-    match d {
-        DepthTest::Always => wgpu::CompareFunction::Always,
-        DepthTest::Never => wgpu::CompareFunction::Never,
-        DepthTest::Less => wgpu::CompareFunction::Less,
-        DepthTest::LessEqual => wgpu::CompareFunction::LessEqual,
-        DepthTest::Equal => wgpu::CompareFunction::Equal,
-        DepthTest::Greater => wgpu::CompareFunction::Greater,
-        DepthTest::GreaterEqual => wgpu::CompareFunction::GreaterEqual,
-    }
-}
-
-fn blend(b: BlendMode) -> Option<wgpu::BlendState> {
-    use wgpu::{BlendComponent as C, BlendFactor as F, BlendOperation as O};
-    let comp = |src, dst| C {
-        src_factor: src,
-        dst_factor: dst,
-        operation: O::Add,
-    };
-    let keep_dst_alpha = comp(F::Zero, F::One);
-    match b {
-        BlendMode::Opaque => None,
-        BlendMode::Alpha => Some(wgpu::BlendState {
-            color: comp(F::SrcAlpha, F::OneMinusSrcAlpha),
-            alpha: comp(F::One, F::OneMinusSrcAlpha),
-        }),
-        BlendMode::Premultiplied => Some(wgpu::BlendState {
-            color: comp(F::One, F::OneMinusSrcAlpha),
-            alpha: comp(F::One, F::OneMinusSrcAlpha),
-        }),
-        BlendMode::Additive => Some(wgpu::BlendState {
-            color: comp(F::SrcAlpha, F::One),
-            alpha: keep_dst_alpha,
-        }),
-        BlendMode::Multiply => Some(wgpu::BlendState {
-            color: comp(F::Dst, F::Zero),
-            alpha: keep_dst_alpha,
-        }),
-    }
 }
 
 /// WebGPU vertex format names (the float formats the engine interface uses).

@@ -5,29 +5,32 @@
 //! (crates/weft-compiler/src/wgsl/engine_interface.wgsl); group 1 is the
 //! material, bound by parameter name from the metadata's `bindings`. The
 //! jobs live in their own modules: `pipelines.rs` (layouts and pipelines from
-//! metadata), `resources.rs` (textures, buffers, bind groups), `draw.rs`
-//! (frame uniforms, render pass, readback), `tiles.rs` (probe tiles) and
-//! `scene_draw.rs` (whole scenes).
+//! metadata, `meta_wgpu.rs` the state conversions), `resources.rs`
+//! (textures, buffers), `bindings.rs` (bind groups, samplers, LUTs),
+//! `engine_uniforms.rs` (`weft_frame`, `weft_object`), `draw.rs` (render
+//! pass, readback), `tiles.rs` (probe tiles) and `scene_draw.rs` (whole scenes).
 
+use crate::bindings::{BoundShader, ObjectResources};
 use crate::draw::{DrawCall, FrameView, sky_uniform_buffer};
+use crate::engine_uniforms::{UniformBlock, object_bytes};
 use crate::environment::EnvironmentMaps;
 use crate::error::{Error, Result};
 use crate::gpu::Gpu;
 use crate::image::HdrImage;
 use crate::luts::Luts;
 use crate::material::Material;
-use crate::pipelines::{ShaderInput, VariantPipelines, layout_entry, spirv_file_for};
+use crate::math::{self, Mat4};
+use crate::pipelines::{ShaderInput, VariantPipelines, kind_layout_entry, spirv_file_for};
 use crate::resources::{
-    BoundShader, FRAME_SIZE, GpuEnvironment, GpuMesh, OBJECT_SIZE, ObjectResources, TextureSource,
-    black_environment, material_texture_views, object_uniform, uniform_buffer, upload_environment,
+    GpuEnvironment, GpuMesh, TextureSource, black_environment, material_texture_views,
+    upload_environment,
 };
 use crate::scene::Scene;
-use crate::values::StoredValue;
+use crate::values::{StoredValue, TextureValue};
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::Arc;
 use weft_meta::{Binding, BindingKind, ParamKind, Pass};
-use wgpu::util::DeviceExt;
 
 // Probe tiles are drawn by `tiles.rs`; `Tile` stays reachable here too.
 pub use crate::tiles::Tile;
@@ -170,15 +173,17 @@ pub struct Renderer {
     pub(crate) env: GpuEnvironment,
     /// Group 0's environment where a scene provides none (black, SH zero).
     pub(crate) black_env: GpuEnvironment,
-    pub(crate) lut_view: wgpu::TextureView,
-    pub(crate) sheen_view: Option<wgpu::TextureView>,
-    pub(crate) env_sampler: wgpu::Sampler,
-    pub(crate) lut_sampler: wgpu::Sampler,
-    pub(crate) repeat_sampler: wgpu::Sampler,
-    pub(crate) clamp_sampler: wgpu::Sampler,
-    pub(crate) frame_buffer: wgpu::Buffer,
-    /// `weft_object` of the material path (scene instances have their own).
-    pub(crate) object_buffer: wgpu::Buffer,
+    /// The tables LUT bindings are filled from (by their `resource.file`).
+    pub(crate) luts: Luts,
+    /// LUT textures by `resource.file.path`.
+    pub(crate) lut_views: HashMap<String, wgpu::TextureView>,
+    /// Samplers by description (`meta_wgpu::sampler_key`).
+    pub(crate) samplers: HashMap<String, wgpu::Sampler>,
+    /// `weft_frame` buffers, one per distinct layout; all written each frame.
+    pub(crate) frame_blocks: Vec<UniformBlock>,
+    /// The sky's own sampler (trilinear, clamp): the sky is weft-render's
+    /// pipeline, not a weft variant.
+    pub(crate) sky_sampler: wgpu::Sampler,
     pub(crate) sky_buffer: wgpu::Buffer,
     pub(crate) sky_layout: wgpu::BindGroupLayout,
     pub(crate) sky_module: wgpu::ShaderModule,
@@ -190,44 +195,20 @@ pub struct Renderer {
 impl Renderer {
     pub fn new(gpu: Gpu, env: &EnvironmentMaps, luts: &Luts) -> Result<Renderer> {
         let device = &gpu.device;
-        let linear = |label, mode| {
-            device.create_sampler(&wgpu::SamplerDescriptor {
-                label: Some(label),
-                address_mode_u: mode,
-                address_mode_v: mode,
-                address_mode_w: mode,
-                mag_filter: wgpu::FilterMode::Linear,
-                min_filter: wgpu::FilterMode::Linear,
-                mipmap_filter: wgpu::MipmapFilterMode::Linear,
-                ..Default::default()
-            })
-        };
-        let env_sampler = linear("weft_environment_sampler", wgpu::AddressMode::ClampToEdge);
-        let lut_sampler = linear("weft_lut_sampler", wgpu::AddressMode::ClampToEdge);
-        let repeat_sampler = linear("material_sampler", wgpu::AddressMode::Repeat);
-        let clamp_sampler = linear("material_clamp_sampler", wgpu::AddressMode::ClampToEdge);
-        let lut_view = lut_texture(
-            &gpu,
-            "weft_brdf_lut",
-            luts.brdf.size,
-            wgpu::TextureFormat::Rg16Float,
-            &luts.brdf.bytes,
-        );
-        let sheen_view = luts.sheen.as_ref().map(|sheen| {
-            lut_texture(
-                &gpu,
-                "weft_sheen_lut",
-                sheen.size,
-                wgpu::TextureFormat::R16Float,
-                &sheen.bytes,
-            )
+        let sky_sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("weft sky"),
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            mipmap_filter: wgpu::MipmapFilterMode::Linear,
+            ..Default::default()
         });
+        const FRAGMENT: wgpu::ShaderStages = wgpu::ShaderStages::FRAGMENT;
         let sky_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("weft sky"),
             entries: &[
-                layout_entry(0, wgpu::ShaderStages::FRAGMENT, BindingKind::UniformBuffer)?,
-                layout_entry(1, wgpu::ShaderStages::FRAGMENT, BindingKind::TextureCube)?,
-                layout_entry(2, wgpu::ShaderStages::FRAGMENT, BindingKind::Sampler)?,
+                kind_layout_entry(0, FRAGMENT, BindingKind::UniformBuffer)?,
+                kind_layout_entry(1, FRAGMENT, BindingKind::TextureCube)?,
+                kind_layout_entry(2, FRAGMENT, BindingKind::Sampler)?,
             ],
         });
         let sky_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -237,14 +218,11 @@ impl Renderer {
         let renderer = Renderer {
             env: upload_environment(&gpu, env),
             black_env: black_environment(&gpu),
-            lut_view,
-            sheen_view,
-            env_sampler,
-            lut_sampler,
-            repeat_sampler,
-            clamp_sampler,
-            frame_buffer: uniform_buffer(&gpu, "weft_frame", FRAME_SIZE),
-            object_buffer: uniform_buffer(&gpu, "weft_object", OBJECT_SIZE),
+            luts: luts.clone(),
+            lut_views: HashMap::new(),
+            samplers: HashMap::new(),
+            frame_blocks: Vec::new(),
+            sky_sampler,
             sky_buffer: sky_uniform_buffer(&gpu),
             sky_layout,
             sky_module,
@@ -285,7 +263,7 @@ impl Renderer {
             material,
             &material_passes(material),
             options,
-            self.object_buffer.clone(),
+            math::IDENTITY,
             self.env.clone(),
         )?;
         let uniform_layout = material.current_variant()?.shader.material_uniform.clone();
@@ -312,7 +290,7 @@ impl Renderer {
         material: &Material,
         passes: &[Pass],
         options: &RenderOptions,
-        object: wgpu::Buffer,
+        model: Mat4,
         env: GpuEnvironment,
     ) -> Result<(BoundShader, String)> {
         let resolved = material.current_variant()?;
@@ -350,7 +328,7 @@ impl Renderer {
         let resources = ObjectResources {
             uniform_bytes,
             textures,
-            object,
+            model,
             env,
         };
         let bound = self.bind_shader(&input, passes, options.format, resources)?;
@@ -420,10 +398,10 @@ impl Renderer {
         if matches!(options.background, crate::Background::Sky { .. }) {
             self.ensure_sky_pipeline(options.format)?;
         }
-        let o = object_uniform(&scene.model);
-        self.gpu
-            .queue
-            .write_buffer(&self.object_buffer, 0, bytemuck::cast_slice(&o));
+        if let Some(object) = &prepared.bound.object {
+            let bytes = object_bytes(object, &scene.model)?;
+            self.gpu.queue.write_buffer(&object.buffer, 0, &bytes);
+        }
         let pipelines = &prepared.bound.pipelines;
         let mesh = GpuMesh::upload(&self.gpu, &scene.mesh, &pipelines.vertex_inputs)?;
         let draws: Vec<DrawCall> = pipelines
@@ -454,7 +432,9 @@ fn material_passes(material: &Material) -> Vec<Pass> {
 }
 
 /// What a group-1 texture binding of the material's variant samples: the
-/// value of the parameter it carries.
+/// value of the parameter it carries; a texture left unset binds the
+/// built-in texture its binding names (`texture.default`, resolved for the
+/// variant's keywords), not the parameter's declared default.
 fn material_texture<'m>(material: &'m Material, b: &Binding) -> Result<TextureSource<'m>> {
     let pname = b.parameter.as_ref().ok_or_else(|| {
         Error::Metadata(format!(
@@ -466,26 +446,15 @@ fn material_texture<'m>(material: &'m Material, b: &Binding) -> Result<TextureSo
     let value = material
         .get(pname)
         .ok_or_else(|| Error::Metadata(format!("parameter `{pname}` has no value")))?;
-    let srgb = param.texture.as_ref().is_some_and(|t| t.srgb);
-    Ok(match (b.kind, param.kind, value) {
-        (BindingKind::Texture2d, ParamKind::Texture2d, StoredValue::Texture(t)) => {
-            TextureSource::Texture2d {
-                value: Cow::Borrowed(t),
-                srgb,
-            }
-        }
-        (BindingKind::Texture2d, ParamKind::Gradient, StoredValue::Gradient(bytes)) => {
-            TextureSource::Ramp {
-                rgba8: bytes,
-                srgb: true,
-            }
-        }
-        (BindingKind::TextureCube, ParamKind::Cube, StoredValue::Texture(t)) => {
-            TextureSource::Cube {
-                value: Cow::Borrowed(t),
-                srgb,
-            }
-        }
+    let binding_default = b.texture.as_ref().and_then(|t| t.default);
+    let texture = |t: &'m TextureValue| match binding_default {
+        Some(d) if !material.texture_is_set(pname) => Cow::Owned(TextureValue::Builtin(d)),
+        _ => Cow::Borrowed(t),
+    };
+    Ok(match (param.kind, value) {
+        (ParamKind::Texture2d, StoredValue::Texture(t)) => TextureSource::Texture2d(texture(t)),
+        (ParamKind::Gradient, StoredValue::Gradient(bytes)) => TextureSource::Ramp(bytes),
+        (ParamKind::Cube, StoredValue::Texture(t)) => TextureSource::Cube(texture(t)),
         _ => {
             return Err(Error::Metadata(format!(
                 "binding `{}` ({:?}) cannot carry {} parameter `{pname}`",
@@ -495,34 +464,4 @@ fn material_texture<'m>(material: &'m Material, b: &Binding) -> Result<TextureSo
             )));
         }
     })
-}
-
-fn lut_texture(
-    gpu: &Gpu,
-    label: &str,
-    size: u32,
-    format: wgpu::TextureFormat,
-    bytes: &[u8],
-) -> wgpu::TextureView {
-    gpu.device
-        .create_texture_with_data(
-            &gpu.queue,
-            &wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d {
-                    width: size,
-                    height: size,
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage: wgpu::TextureUsages::TEXTURE_BINDING,
-                view_formats: &[],
-            },
-            wgpu::util::TextureDataOrder::LayerMajor,
-            bytes,
-        )
-        .create_view(&Default::default())
 }

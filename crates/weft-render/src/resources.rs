@@ -1,27 +1,19 @@
 //! GPU resources a draw binds: the environment, material textures, uniform
-//! and object buffers, mesh buffers, and the bind groups that tie them to a
-//! shader's reflected bindings (engine interface groups 0 and 2, material
-//! group 1).
+//! buffers and mesh buffers (`bindings.rs` ties them to a shader's
+//! reflected bindings).
 
 use crate::environment::EnvironmentMaps;
 use crate::error::{Error, Result};
 use crate::gpu::Gpu;
-use crate::luts::SHEEN_LUT_FILE;
 use crate::math::{self, Mat4};
-use crate::pipelines::{ShaderInput, VariantPipelines, is_texture, vertex_format};
-use crate::renderer::{ColorFormat, Renderer};
+use crate::meta_wgpu::texture_view_dimension;
+use crate::pipelines::vertex_format;
 use crate::scene::Mesh;
 use crate::values::TextureValue;
 use std::borrow::Cow;
 use std::collections::BTreeMap;
-use std::sync::Arc;
-use weft_meta::{Binding, BindingKind, Pass, TextureDefault, VariantShader, VertexInput};
+use weft_meta::{Binding, BindingKind, TextureDefault, VariantShader, VertexInput};
 use wgpu::util::DeviceExt;
-
-/// Bytes of the `weft_frame` uniform.
-pub(crate) const FRAME_SIZE: u64 = 336;
-/// Bytes of the `weft_object` uniform.
-pub(crate) const OBJECT_SIZE: u64 = 128;
 
 /// Group 0's environment: the prefiltered cube, its mip count and the SH
 /// irradiance written into `weft_frame`.
@@ -101,19 +93,34 @@ fn cube_view(texture: &wgpu::Texture) -> wgpu::TextureView {
 }
 
 /// What a material texture binding samples, whichever path supplied it.
+/// The binding's `texture.format` says how RGBA8 texels are read (an
+/// `rgba8unorm_srgb` view for colour data).
 pub(crate) enum TextureSource<'a> {
-    /// A 2D texture parameter (sampled through an sRGB view when `srgb`).
-    Texture2d {
-        value: Cow<'a, TextureValue>,
-        srgb: bool,
-    },
+    /// A 2D texture parameter.
+    Texture2d(Cow<'a, TextureValue>),
     /// A cube parameter.
-    Cube {
-        value: Cow<'a, TextureValue>,
-        srgb: bool,
-    },
+    Cube(Cow<'a, TextureValue>),
     /// A gradient ramp: RGBA8 texels, `width` = len / 4, 1 row.
-    Ramp { rgba8: &'a [u8], srgb: bool },
+    Ramp(&'a [u8]),
+}
+
+/// Whether RGBA8 texels bound to `b` are sRGB-encoded, from the binding's
+/// `texture.format`.
+fn rgba8_is_srgb(b: &Binding) -> Result<bool> {
+    let format = b.texture.as_ref().map(|t| t.format.as_str());
+    match format {
+        Some("rgba8unorm_srgb") => Ok(true),
+        Some("rgba8unorm") => Ok(false),
+        Some(other) => Err(Error::Metadata(format!(
+            "texture binding `{}` has format `{other}`; weft-render binds material textures \
+             as rgba8unorm or rgba8unorm_srgb",
+            b.name
+        ))),
+        None => Err(Error::Metadata(format!(
+            "texture binding `{}` (group {}, binding {}) has no `texture` entry",
+            b.name, b.group, b.binding
+        ))),
+    }
 }
 
 /// Creates the views of a shader's group-1 textures, by binding number;
@@ -125,15 +132,17 @@ pub(crate) fn material_texture_views<'a>(
 ) -> Result<BTreeMap<u32, wgpu::TextureView>> {
     let mut views = BTreeMap::new();
     for b in &shader.bindings {
-        if b.group != 1 || !is_texture(b.kind) {
+        if b.group != 1 || b.resource.is_some() || !is_texture_binding(b) {
             continue;
         }
         let label = b.parameter.as_deref().unwrap_or(&b.name);
-        let texture = match (b.kind, source(b)?) {
-            (BindingKind::Texture2d, TextureSource::Texture2d { value, srgb }) => {
+        let dim = texture_view_dimension(b)?;
+        let srgb = rgba8_is_srgb(b)?;
+        let texture = match (dim, source(b)?) {
+            (wgpu::TextureViewDimension::D2, TextureSource::Texture2d(value)) => {
                 texture_2d(gpu, label, &value, srgb)?
             }
-            (BindingKind::Texture2d, TextureSource::Ramp { rgba8, srgb }) => {
+            (wgpu::TextureViewDimension::D2, TextureSource::Ramp(rgba8)) => {
                 if rgba8.is_empty() || !rgba8.len().is_multiple_of(4) {
                     return Err(Error::InvalidValue {
                         name: label.into(),
@@ -142,19 +151,15 @@ pub(crate) fn material_texture_views<'a>(
                 }
                 rgba8_texture(gpu, label, (rgba8.len() / 4) as u32, 1, 1, rgba8, srgb)
             }
-            (BindingKind::TextureCube, TextureSource::Cube { value, srgb }) => {
+            (wgpu::TextureViewDimension::Cube, TextureSource::Cube(value)) => {
                 cube_texture(gpu, label, &value, srgb)?
             }
-            (kind, _) => {
+            (dim, _) => {
                 return Err(Error::Metadata(format!(
-                    "binding `{}` ({kind:?}) cannot carry the texture given for `{label}`",
+                    "binding `{}` ({dim:?}) cannot carry the texture given for `{label}`",
                     b.name
                 )));
             }
-        };
-        let dim = match b.kind {
-            BindingKind::TextureCube => wgpu::TextureViewDimension::Cube,
-            _ => wgpu::TextureViewDimension::D2,
         };
         views.insert(
             b.binding,
@@ -165,6 +170,20 @@ pub(crate) fn material_texture_views<'a>(
         );
     }
     Ok(views)
+}
+
+/// A texture binding: described by a `texture` entry (or, in metadata
+/// without one, by its kind; [`rgba8_is_srgb`] then reports it).
+pub(crate) fn is_texture_binding(b: &Binding) -> bool {
+    b.texture.is_some()
+        || matches!(
+            b.kind,
+            BindingKind::Texture2d
+                | BindingKind::TextureCube
+                | BindingKind::Texture2dArray
+                | BindingKind::Texture3d
+                | BindingKind::DepthTexture2d
+        )
 }
 
 fn rgba8_texture(
@@ -246,10 +265,12 @@ fn cube_texture(gpu: &Gpu, label: &str, t: &TextureValue, srgb: bool) -> Result<
     })
 }
 
-/// The `weft_object` contents: model, then the normal matrix
-/// (inverse-transpose of the model's upper 3x3), column-major.
+/// The `weft_object` members of engine interface 1 in declaration order:
+/// model, then the normal matrix (inverse-transpose of the model's upper
+/// 3x3), column-major. (Draws write each member at the offset the
+/// binding's layout gives: `engine_uniforms.rs`.)
 pub fn object_uniform(model: &Mat4) -> Vec<f32> {
-    let mut o: Vec<f32> = Vec::with_capacity((OBJECT_SIZE / 4) as usize);
+    let mut o: Vec<f32> = Vec::with_capacity(32);
     o.extend(model.iter().flatten());
     o.extend(math::normal_matrix(model).iter().flatten());
     o
@@ -368,143 +389,4 @@ pub(crate) fn vertex_stream(mesh: &Mesh, vi: &VertexInput) -> Result<Vec<u8>> {
         }
     }
     Ok(out)
-}
-
-/// What one shader's draws bind: its pipelines, bind groups and the
-/// material uniform buffer behind group 1 (also what the material path's
-/// [`crate::PreparedMaterial`] holds).
-pub(crate) struct BoundShader {
-    pub pipelines: Arc<VariantPipelines>,
-    pub bind_groups: Vec<Option<wgpu::BindGroup>>,
-    pub uniform: Option<wgpu::Buffer>,
-}
-
-/// The per-object inputs of [`Renderer::bind_shader`] (wgpu handles are
-/// reference-counted: these are shared, not copied).
-pub(crate) struct ObjectResources {
-    /// The packed material uniform (`None` when the shader has no layout).
-    pub uniform_bytes: Option<Vec<u8>>,
-    /// Group-1 texture views by binding number.
-    pub textures: BTreeMap<u32, wgpu::TextureView>,
-    /// The `weft_object` buffer group 2 binds.
-    pub object: wgpu::Buffer,
-    /// Group 0's cube.
-    pub env: GpuEnvironment,
-}
-
-impl Renderer {
-    /// Pipelines for `passes` plus bind groups over `resources`: the one
-    /// place a draw's resources meet a shader's reflected bindings.
-    pub(crate) fn bind_shader(
-        &mut self,
-        input: &ShaderInput,
-        passes: &[Pass],
-        format: ColorFormat,
-        resources: ObjectResources,
-    ) -> Result<BoundShader> {
-        let pipelines = self.variant_pipelines(input, passes, format)?;
-        let uniform = resources.uniform_bytes.as_ref().map(|bytes| {
-            self.gpu
-                .device
-                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("material"),
-                    contents: bytes,
-                    usage: wgpu::BufferUsages::UNIFORM
-                        | wgpu::BufferUsages::COPY_DST
-                        | wgpu::BufferUsages::COPY_SRC,
-                })
-        });
-        let bind_groups = self.gpu.checked("binding material resources", || {
-            self.bind_groups(input.shader, &pipelines, uniform.as_ref(), &resources)
-        })??;
-        Ok(BoundShader {
-            pipelines,
-            bind_groups,
-            uniform,
-        })
-    }
-
-    fn bind_groups(
-        &self,
-        shader: &VariantShader,
-        pipelines: &VariantPipelines,
-        uniform: Option<&wgpu::Buffer>,
-        res: &ObjectResources,
-    ) -> Result<Vec<Option<wgpu::BindGroup>>> {
-        let mut groups = Vec::new();
-        for (g, layout) in pipelines.layouts.iter().enumerate() {
-            let g = g as u32;
-            let Some(layout) = layout else {
-                groups.push(None);
-                continue;
-            };
-            let mut entries = Vec::new();
-            for b in shader.bindings.iter().filter(|b| b.group == g) {
-                let mismatch = || {
-                    Error::Metadata(format!(
-                        "binding `{}` (group {g}, binding {}, {:?}) is not part of engine interface {}",
-                        b.name,
-                        b.binding,
-                        b.kind,
-                        weft_meta::ENGINE_INTERFACE_VERSION
-                    ))
-                };
-                let resource = match (g, b.binding, b.kind) {
-                    (0, 0, BindingKind::UniformBuffer) => self.frame_buffer.as_entire_binding(),
-                    (0, 1, BindingKind::TextureCube) => {
-                        wgpu::BindingResource::TextureView(&res.env.view)
-                    }
-                    (0, 2, BindingKind::Sampler) => {
-                        wgpu::BindingResource::Sampler(&self.env_sampler)
-                    }
-                    (0, 3, BindingKind::Texture2d) => {
-                        wgpu::BindingResource::TextureView(&self.lut_view)
-                    }
-                    (0, 4, BindingKind::Sampler) => {
-                        wgpu::BindingResource::Sampler(&self.lut_sampler)
-                    }
-                    (0, 5, BindingKind::Texture2d) => wgpu::BindingResource::TextureView(
-                        self.sheen_view.as_ref().ok_or_else(|| {
-                            Error::Metadata(format!(
-                                "the variant binds `{}` but no sheen LUT was loaded \
-                                     (expected `{SHEEN_LUT_FILE}` in the generated folder)",
-                                b.name
-                            ))
-                        })?,
-                    ),
-                    (1, 0, BindingKind::UniformBuffer) => uniform
-                        .ok_or_else(|| {
-                            Error::Metadata(
-                                "the variant binds `material` but has no material_uniform layout"
-                                    .into(),
-                            )
-                        })?
-                        .as_entire_binding(),
-                    (1, 1, BindingKind::Sampler) => {
-                        wgpu::BindingResource::Sampler(&self.repeat_sampler)
-                    }
-                    (1, 2, BindingKind::Sampler) => {
-                        wgpu::BindingResource::Sampler(&self.clamp_sampler)
-                    }
-                    (1, _, k) if is_texture(k) => wgpu::BindingResource::TextureView(
-                        res.textures.get(&b.binding).ok_or_else(mismatch)?,
-                    ),
-                    (2, 0, BindingKind::UniformBuffer) => res.object.as_entire_binding(),
-                    _ => return Err(mismatch()),
-                };
-                entries.push(wgpu::BindGroupEntry {
-                    binding: b.binding,
-                    resource,
-                });
-            }
-            groups.push(Some(self.gpu.device.create_bind_group(
-                &wgpu::BindGroupDescriptor {
-                    label: Some(&format!("group {g}")),
-                    layout,
-                    entries: &entries,
-                },
-            )));
-        }
-        Ok(groups)
-    }
 }

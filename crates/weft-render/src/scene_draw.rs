@@ -10,19 +10,17 @@
 //! differs; pipelines, bind groups, meshes, transforms, lighting and the
 //! draw itself are shared.
 
+use crate::bindings::{BoundShader, ObjectResources};
 use crate::draw::{DrawCall, FrameView};
 use crate::error::{Error, Result, io_err};
 use crate::image::HdrImage;
-use crate::material::{constant_default, instance_count_of};
+use crate::material::{constant_default, constant_value, instance_count_of};
 use crate::math::{self, Mat4};
 use crate::pipelines::{ShaderInput, spirv_file_for};
 use crate::renderer::{
     Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage, check_format,
 };
-use crate::resources::{
-    BoundShader, GpuEnvironment, GpuMesh, OBJECT_SIZE, ObjectResources, TextureSource,
-    material_texture_views, object_uniform, uniform_buffer,
-};
+use crate::resources::{GpuEnvironment, GpuMesh, TextureSource, material_texture_views};
 use crate::scene::{Camera, Light, Scene, SceneKind};
 use crate::scene_library::Library;
 use crate::uniform::pack_uniform_values;
@@ -32,7 +30,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use weft_meta::scene::{SCENE_SCHEMA_VERSION, SceneFeatures, SceneInstance, SceneMetadata};
-use weft_meta::{Binding, BindingKind, InstanceCount, Pass};
+use weft_meta::{Binding, InstanceCount, Pass};
 
 /// A scene's metadata and the folder its shader files are relative to.
 #[derive(Clone, Debug, PartialEq)]
@@ -321,18 +319,10 @@ impl Renderer {
             name: inst.mesh.clone(),
             valid: SceneKind::ALL.map(|k| k.name().to_string()).to_vec(),
         })?;
-        let object = uniform_buffer(
-            &self.gpu,
-            &format!("weft_object {}", inst.name),
-            OBJECT_SIZE,
-        );
-        let o = object_uniform(&instance_model(inst));
-        self.gpu
-            .queue
-            .write_buffer(&object, 0, bytemuck::cast_slice(&o));
+        let model = instance_model(inst);
         let (bound, instances) = match library {
             None => {
-                let bound = self.bind_scene_shader(scene, inst, env, object, options)?;
+                let bound = self.bind_scene_shader(scene, inst, env, model, options)?;
                 let counts = inst
                     .passes
                     .iter()
@@ -343,7 +333,7 @@ impl Renderer {
             Some(lib) => {
                 let material = lib.instance_material(inst)?;
                 let (bound, _) =
-                    self.bind_material(&material, &inst.passes, options, object, env.clone())?;
+                    self.bind_material(&material, &inst.passes, options, model, env.clone())?;
                 let counts = inst
                     .passes
                     .iter()
@@ -386,7 +376,7 @@ impl Renderer {
         scene: &SceneFile,
         inst: &SceneInstance,
         env: &GpuEnvironment,
-        object: wgpu::Buffer,
+        model: Mat4,
         options: &RenderOptions,
     ) -> Result<BoundShader> {
         let meta = &scene.metadata;
@@ -415,12 +405,19 @@ impl Renderer {
                 ShaderLanguage::SpirV => Some(spirv_file_for(shader, &entry.id, &inst.keywords)?),
             },
             // A scene shader folds its keywords; an `override` left in it
-            // is drawn at its default (the scene has no keyword value lists).
+            // takes the instance's value of its keyword (the index in the
+            // constant's `values`), else its `default_value`.
             constants: match options.language {
                 ShaderLanguage::Wgsl => shader
                     .pipeline_constants
                     .iter()
-                    .map(|c| Ok((c.name.clone(), constant_default(c)?)))
+                    .map(|c| {
+                        let v = match inst.keywords.get(&c.name) {
+                            Some(value) => constant_value(c, value)?,
+                            None => constant_default(c)?,
+                        };
+                        Ok((c.name.clone(), v))
+                    })
                     .collect::<Result<Vec<_>>>()?,
                 ShaderLanguage::SpirV => Vec::new(),
             },
@@ -442,7 +439,7 @@ impl Renderer {
         let resources = ObjectResources {
             uniform_bytes,
             textures,
-            object,
+            model,
             env: env.clone(),
         };
         self.bind_shader(&input, &inst.passes, options.format, resources)
@@ -514,7 +511,10 @@ pub fn scene_instance_count(inst: &SceneInstance, pass: &Pass) -> Result<u32> {
 }
 
 /// What a group-1 texture binding of a scene shader samples: the
-/// instance's `textures` entry for the binding.
+/// instance's `textures` entry for the binding (a texture left at its
+/// default is listed with the built-in texture the build resolved for the
+/// instance's keywords). The binding's `texture.format` says whether its
+/// texels are sRGB (`material_texture_views`).
 fn scene_texture<'a>(inst: &'a SceneInstance, b: &Binding) -> Result<TextureSource<'a>> {
     let t = inst.textures.get(&b.name).ok_or_else(|| {
         Error::Metadata(format!(
@@ -525,23 +525,18 @@ fn scene_texture<'a>(inst: &'a SceneInstance, b: &Binding) -> Result<TextureSour
             inst.textures.keys().cloned().collect::<Vec<_>>().join(", ")
         ))
     })?;
-    let srgb = t.srgb;
-    match (&t.builtin, &t.ramp_rgba8, b.kind) {
-        (Some(d), None, BindingKind::Texture2d) => Ok(TextureSource::Texture2d {
-            value: Cow::Owned(TextureValue::Builtin(*d)),
-            srgb,
-        }),
-        (Some(d), None, BindingKind::TextureCube) => Ok(TextureSource::Cube {
-            value: Cow::Owned(TextureValue::Builtin(*d)),
-            srgb,
-        }),
-        (None, Some(ramp), BindingKind::Texture2d) => Ok(TextureSource::Ramp { rgba8: ramp, srgb }),
-        (Some(_), Some(_), _) | (None, None, _) => Err(Error::Metadata(format!(
+    let cube = b
+        .texture
+        .as_ref()
+        .is_some_and(|t| t.view_dimension == weft_meta::TextureViewDimension::Cube);
+    match (&t.builtin, &t.ramp_rgba8) {
+        (Some(d), None) if cube => Ok(TextureSource::Cube(Cow::Owned(TextureValue::Builtin(*d)))),
+        (Some(d), None) => Ok(TextureSource::Texture2d(Cow::Owned(TextureValue::Builtin(
+            *d,
+        )))),
+        (None, Some(ramp)) => Ok(TextureSource::Ramp(ramp)),
+        (Some(_), Some(_)) | (None, None) => Err(Error::Metadata(format!(
             "texture `{}` (parameter `{}`) must give exactly one of `builtin` and `ramp_rgba8`",
-            b.name, t.parameter
-        ))),
-        (_, _, kind) => Err(Error::Metadata(format!(
-            "binding `{}` ({kind:?}) cannot carry the texture given for parameter `{}`",
             b.name, t.parameter
         ))),
     }

@@ -1,11 +1,12 @@
 //! Many small independent renders of one prepared material in one target
 //! (the stability probe's tiles, `probe.rs`).
 
-use crate::draw::{FrameView, RenderTargets, clear_color, frame_uniform};
+use crate::draw::{FrameView, RenderTargets, clear_color};
+use crate::engine_uniforms::{frame_bytes, object_bytes};
 use crate::error::{Error, Result};
 use crate::image::HdrImage;
 use crate::renderer::{PreparedMaterial, RenderOptions, Renderer};
-use crate::resources::{FRAME_SIZE, OBJECT_SIZE, object_uniform, vertex_stream};
+use crate::resources::vertex_stream;
 use crate::scene::Scene;
 use wgpu::util::DeviceExt;
 
@@ -21,9 +22,6 @@ pub struct Tile {
     /// confined to it (viewport and scissor).
     pub viewport: [u32; 4],
 }
-
-/// Bytes between the per-tile uniform records of [`Renderer::render_tiles`].
-const TILE_UNIFORM_STRIDE: u64 = 512;
 
 impl Renderer {
     /// Draws a prepared material once per tile into one target and reads the
@@ -45,12 +43,18 @@ impl Renderer {
         let gpu = &self.gpu;
         let device = &gpu.device;
         let pipelines = &prepared.bound.pipelines;
+        let (frame, object) = (&prepared.bound.frame, &prepared.bound.object);
+        // Per tile: the frame block, then the object block, at 256-byte
+        // aligned offsets (copies need 4).
+        let frame_size = frame.as_ref().map_or(0, |b| b.size);
+        let object_size = object.as_ref().map_or(0, |b| b.size);
+        let stride = (frame_size + object_size).next_multiple_of(256).max(256);
         // One vertex stream per input and one index buffer for all tiles;
         // each tile draws its index range with its own base vertex.
         let mut streams: Vec<Vec<u8>> = vec![Vec::new(); pipelines.vertex_inputs.len()];
         let mut indices: Vec<u32> = Vec::new();
         let mut ranges = Vec::with_capacity(tiles.len());
-        let mut uniforms: Vec<u8> = Vec::with_capacity(tiles.len() * TILE_UNIFORM_STRIDE as usize);
+        let mut uniforms: Vec<u8> = Vec::with_capacity(tiles.len() * stride as usize);
         let mut base_vertex = 0usize;
         for (i, tile) in tiles.iter().enumerate() {
             let [x, y, tw, th] = tile.viewport;
@@ -80,12 +84,14 @@ impl Renderer {
                 light: &tile.scene.light,
                 env: &self.env,
             };
-            let f = frame_uniform(&view, tw as f32 / th as f32, options);
-            let o = object_uniform(&tile.scene.model);
             let start = uniforms.len();
-            uniforms.extend_from_slice(bytemuck::cast_slice(&f));
-            uniforms.extend_from_slice(bytemuck::cast_slice(&o));
-            uniforms.resize(start + TILE_UNIFORM_STRIDE as usize, 0);
+            if let Some(block) = frame {
+                uniforms.extend(frame_bytes(block, &view, tw as f32 / th as f32, options)?);
+            }
+            if let Some(block) = object {
+                uniforms.extend(object_bytes(block, &tile.scene.model)?);
+            }
+            uniforms.resize(start + stride as usize, 0);
         }
         let vertex_buffers: Vec<wgpu::Buffer> = streams
             .iter()
@@ -123,15 +129,14 @@ impl Renderer {
             let mut enc = device.create_command_encoder(&Default::default());
             drop(targets.pass(&mut enc, "weft tile", wgpu::LoadOp::Clear(clear), None));
             for (i, (tile, (range, base))) in tiles.iter().zip(&ranges).enumerate() {
-                let off = i as u64 * TILE_UNIFORM_STRIDE;
-                enc.copy_buffer_to_buffer(&uniform_records, off, &self.frame_buffer, 0, FRAME_SIZE);
-                enc.copy_buffer_to_buffer(
-                    &uniform_records,
-                    off + FRAME_SIZE,
-                    &self.object_buffer,
-                    0,
-                    OBJECT_SIZE,
-                );
+                let off = i as u64 * stride;
+                if let Some(block) = frame {
+                    enc.copy_buffer_to_buffer(&uniform_records, off, &block.buffer, 0, block.size);
+                }
+                if let Some(block) = object {
+                    let at = off + frame_size;
+                    enc.copy_buffer_to_buffer(&uniform_records, at, &block.buffer, 0, block.size);
+                }
                 let mut rp = targets.pass(&mut enc, "weft tile", wgpu::LoadOp::Load, None);
                 let [x, y, tw, th] = tile.viewport;
                 rp.set_viewport(x as f32, y as f32, tw as f32, th as f32, 0.0, 1.0);

@@ -11,7 +11,8 @@ use weft_render::weft_meta::scene::{SceneInstance, SceneMetadata, SceneTransform
 use weft_render::weft_meta::{
     Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode, DepthState,
     DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState, PrimitiveTopology,
-    RenderState, Stage, UniformLayout, UniformMember,
+    RenderState, Stage, TextureBinding, TextureDefault, TextureSampleType, TextureViewDimension,
+    UniformLayout, UniformMember,
 };
 use weft_render::*;
 
@@ -706,7 +707,13 @@ fn bad_scene_metadata_is_an_error_naming_the_file_and_instance() {
             },
             msl: None,
             buffer: None,
-            texture: None,
+            texture: Some(TextureBinding {
+                sample_type: TextureSampleType::Float,
+                view_dimension: TextureViewDimension::D2,
+                multisampled: false,
+                format: "rgba8unorm".into(),
+                default: Some(TextureDefault::White),
+            }),
             sampler: None,
             resource: None,
         });

@@ -1,0 +1,167 @@
+//! The engine's uniform blocks, `weft_frame` (group 0) and `weft_object`
+//! (group 2), written member by member at the offsets of the binding's
+//! `buffer.layout`, into buffers of its `min_binding_size`. A member
+//! weft-render does not know is a metadata error naming it.
+
+use crate::draw::FrameView;
+use crate::error::{Error, Result};
+use crate::gpu::Gpu;
+use crate::math::{self, Mat4};
+use crate::renderer::RenderOptions;
+use crate::uniform::write_f32s;
+use weft_meta::{Binding, UniformLayout, UniformMember};
+
+/// A uniform buffer and the layout its contents are written by.
+#[derive(Clone)]
+pub(crate) struct UniformBlock {
+    pub layout: UniformLayout,
+    pub buffer: wgpu::Buffer,
+    /// Bytes of the buffer (`min_binding_size`, at least the layout's size).
+    pub size: u64,
+}
+
+impl UniformBlock {
+    /// A buffer for `binding` (a uniform buffer binding with a layout),
+    /// after checking that every member of the layout is one `known`
+    /// knows how to fill.
+    pub fn new(
+        gpu: &Gpu,
+        binding: &Binding,
+        known: fn(&str) -> Option<&'static str>,
+    ) -> Result<UniformBlock> {
+        let buf = binding.buffer.as_ref().ok_or_else(|| {
+            Error::Metadata(format!(
+                "binding `{}` (group {}, binding {}) has no `buffer` entry",
+                binding.name, binding.group, binding.binding
+            ))
+        })?;
+        check_members(&binding.name, &buf.layout, known)?;
+        let size = buf
+            .min_binding_size
+            .max(u64::from(buf.layout.size))
+            .next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT);
+        Ok(UniformBlock {
+            layout: buf.layout.clone(),
+            buffer: crate::resources::uniform_buffer(gpu, &binding.name, size),
+            size,
+        })
+    }
+}
+
+/// The WGSL type weft-render writes for each `weft_frame` member.
+pub(crate) fn frame_member_type(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "view_proj" | "view" => "mat4x4<f32>",
+        "camera_position" | "light_direction" | "light_color" | "params" => "vec4<f32>",
+        "sh" => "array<vec4<f32>,9>",
+        _ => return None,
+    })
+}
+
+/// The WGSL type weft-render writes for each `weft_object` member.
+pub(crate) fn object_member_type(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "model" | "normal_matrix" => "mat4x4<f32>",
+        _ => return None,
+    })
+}
+
+fn check_members(
+    block: &str,
+    layout: &UniformLayout,
+    known: fn(&str) -> Option<&'static str>,
+) -> Result<()> {
+    for m in &layout.members {
+        let Some(ty) = known(&m.name) else {
+            return Err(Error::Metadata(format!(
+                "`{block}` has a member `{}` ({}) that weft-render does not know how to fill \
+                 (engine interface {})",
+                m.name,
+                m.ty,
+                weft_meta::ENGINE_INTERFACE_VERSION
+            )));
+        };
+        let actual: String = m.ty.chars().filter(|c| !c.is_whitespace()).collect();
+        if actual != ty {
+            return Err(Error::Metadata(format!(
+                "`{block}` member `{}` has type `{}`; weft-render writes `{ty}`",
+                m.name, m.ty
+            )));
+        }
+    }
+    Ok(())
+}
+
+fn write_member(bytes: &mut [u8], m: &UniformMember, values: &[f32]) -> Result<()> {
+    if values.len() * 4 != m.size as usize {
+        return Err(Error::Metadata(format!(
+            "member `{}` ({}) is {} bytes; weft-render writes {}",
+            m.name,
+            m.ty,
+            m.size,
+            values.len() * 4
+        )));
+    }
+    let v: Vec<f64> = values.iter().map(|x| f64::from(*x)).collect();
+    write_f32s(bytes, m.offset, &v)
+}
+
+fn flat(m: &Mat4) -> Vec<f32> {
+    m.iter().flatten().copied().collect()
+}
+
+fn vec4(v: [f32; 3], w: f32) -> Vec<f32> {
+    vec![v[0], v[1], v[2], w]
+}
+
+/// `weft_frame` as the block's layout lays it out.
+pub(crate) fn frame_bytes(
+    block: &UniformBlock,
+    view: &FrameView,
+    aspect: f32,
+    options: &RenderOptions,
+) -> Result<Vec<u8>> {
+    let camera = view.camera;
+    let mut bytes = vec![0u8; block.size as usize];
+    for m in &block.layout.members {
+        let values = match m.name.as_str() {
+            "view_proj" => flat(&camera.view_proj(aspect)),
+            "view" => flat(&camera.view()),
+            "camera_position" => vec4(camera.eye, 1.0),
+            "light_direction" => vec4(math::normalize(view.light.direction), 0.0),
+            "light_color" => vec4(view.light.radiance, 0.0),
+            "sh" => view.env.sh.iter().flat_map(|c| vec4(*c, 0.0)).collect(),
+            "params" => vec![
+                view.env.mip_count as f32,
+                options.exposure,
+                options.time,
+                0.0,
+            ],
+            other => {
+                return Err(Error::Metadata(format!(
+                    "`weft_frame` member `{other}` is not one weft-render fills"
+                )));
+            }
+        };
+        write_member(&mut bytes, m, &values)?;
+    }
+    Ok(bytes)
+}
+
+/// `weft_object` for `model` as the block's layout lays it out.
+pub(crate) fn object_bytes(block: &UniformBlock, model: &Mat4) -> Result<Vec<u8>> {
+    let mut bytes = vec![0u8; block.size as usize];
+    for m in &block.layout.members {
+        let values = match m.name.as_str() {
+            "model" => flat(model),
+            "normal_matrix" => flat(&math::normal_matrix(model)),
+            other => {
+                return Err(Error::Metadata(format!(
+                    "`weft_object` member `{other}` is not one weft-render fills"
+                )));
+            }
+        };
+        write_member(&mut bytes, m, &values)?;
+    }
+    Ok(bytes)
+}
