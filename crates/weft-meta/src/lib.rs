@@ -27,11 +27,19 @@ pub const ENGINE_INTERFACE_VERSION: u32 = 1;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialMetadata {
+    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 2). It changes
+    /// when a field is removed or changes meaning: a reader must not guess at a version it does
+    /// not know.
     pub schema_version: u32,
+    /// Version of the engine interface the shaders were composed with
+    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 1): the group-0 frame and group-2
+    /// object bindings and the fixed vertex locations (docs/engine-interface.md).
     pub engine_interface_version: u32,
     /// Material name (the folder name under `generated/`).
     pub name: String,
+    /// Display name of the material (`[material].label`; the name when not given).
     pub label: Text,
+    /// One-paragraph description for the inspector; absent when the material has none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<Text>,
     /// Hash of every input (TOML, WGSL sources, toolchain version): unchanged inputs skip the rebuild.
@@ -40,9 +48,15 @@ pub struct MaterialMetadata {
     pub groups: Vec<Group>,
     /// Parameters in declaration order (display order is `group` then `order`).
     pub parameters: Vec<Parameter>,
+    /// Keywords (compile-time switches), in declaration order.
     pub keywords: Vec<Keyword>,
+    /// Quality tiers: their names, the default and the reference.
     pub tiers: Tiers,
+    /// Named sets of parameter, keyword and tier values, in declaration order.
     pub presets: Vec<Preset>,
+    /// The draws of a mesh with this material, in declaration order (draw by
+    /// `render_state.queue`, then this order), each with its entry points and full pipeline
+    /// state.
     pub passes: Vec<Pass>,
     /// Vertex inputs the material requires, with the engine interface's locations.
     pub vertex_inputs: Vec<VertexInput>,
@@ -74,7 +88,9 @@ pub struct Measurements {
     /// `gpu-timestamp` (timestamp queries around the render pass) or
     /// `cpu-wall` (submit to completion on the CPU: the adapter has no timestamp queries).
     pub timer: String,
+    /// Width of the render target the figures were measured at, in pixels.
     pub width: u32,
+    /// Height of the render target the figures were measured at, in pixels.
     pub height: u32,
     /// Built-in scene (`sphere`, `cloth`, `swatch`).
     pub scene: String,
@@ -88,6 +104,7 @@ pub struct Measurements {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TierMeasurement {
+    /// The tier measured (one of the material's `tiers.values`).
     pub tier: String,
     /// The canonical variant drawn.
     pub variant: String,
@@ -120,15 +137,20 @@ pub struct TierMeasurement {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Text {
+    /// English text (always present).
     pub en: String,
+    /// Chinese translation; absent when none was given (show `en`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub zh: Option<String>,
 }
 
+/// An inspector section.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Group {
+    /// Section id (lower_snake_case) that `parameters[].group` and `keywords[].group` name.
     pub name: String,
+    /// Section title.
     pub label: Text,
 }
 
@@ -136,16 +158,31 @@ pub struct Group {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum ParamKind {
+    /// A number: uniform member `f32` (encoding `f32`).
     Float,
+    /// An integer: uniform member `i32` (encoding `i32`).
     Int,
+    /// A run-time switch: uniform member `u32`, 0 or 1 (encoding `bool_u32`).
     Bool,
+    /// Two numbers: uniform member `vec2<f32>` (encoding `vector`).
     Vec2,
+    /// Three numbers: uniform member `vec3<f32>` (encoding `vector`; 12 bytes at 16-byte
+    /// alignment).
     Vec3,
+    /// Four numbers: uniform member `vec4<f32>` (encoding `vector`).
     Vec4,
+    /// An RGBA colour edited in sRGB (linear when `color.hdr`): uniform member `vec4<f32>`
+    /// (encoding `color`).
     Color,
+    /// A 2-D texture (`texture_2d<f32>`) at its own group-1 `binding`; no uniform member unless
+    /// tiled (`texture.tiling_member`).
     Texture2d,
+    /// A cube texture (`texture_cube<f32>`) at its own group-1 `binding`.
     Cube,
+    /// A keyframed curve baked into uniform samples (encoding `curve`; see `curve`).
     Curve,
+    /// A colour ramp baked into a `width` × 1 `rgba8unorm_srgb` texture at its own group-1
+    /// `binding` (see `gradient`).
     Gradient,
 }
 
@@ -196,34 +233,53 @@ impl ParamKind {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Parameter {
+    /// Parameter name (lower_snake_case): the key in presets and scene values, and the uniform
+    /// member's name for uniform-backed kinds.
     pub name: String,
+    /// Value kind: decides how the value is stored and which of `color`, `texture`, `curve` and
+    /// `gradient` is present.
     pub kind: ParamKind,
+    /// Display name.
     pub label: Text,
+    /// Hover help; absent when none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tooltip: Option<Text>,
+    /// The `groups[].name` of the section the parameter is shown in.
     pub group: String,
+    /// Sort key within the group, ascending (default 0).
     pub order: i64,
     /// Default value as the inspector shows it: a number, bool, array of
     /// numbers (vectors; colours in sRGB-encoded space unless `hdr`), or a
     /// texture default name.
     pub default: serde_json::Value,
+    /// Hard limits [min, max], inclusive: values outside are invalid and the inspector clamps
+    /// to them. Per component for vectors and colours, keyframe values for curves. Non-HDR
+    /// colours get [0, 1]; absent: unbounded.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub range: Option<[f64; 2]>,
+    /// The slider's span [min, max], inside `range`; values outside it (but inside `range`) may
+    /// still be typed in. Absent: the slider spans `range`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub soft_range: Option<[f64; 2]>,
+    /// Slider increment (> 0); absent: the inspector chooses.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub step: Option<f64>,
     /// Power-slider exponent: slider position p maps to value min + (max-min) p^power.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub power: Option<f64>,
+    /// Show the parameter only while this condition holds; absent: always shown.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub show_if: Option<Condition>,
+    /// Present for `color` parameters: the HDR flag and the linear default.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color: Option<ColorInfo>,
+    /// Present for `texture2d` and `cube` parameters: defaults, sRGB flag and tiling.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub texture: Option<TextureInfo>,
+    /// Present for `curve` parameters: keyframes and how they are baked into the uniform.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub curve: Option<CurveInfo>,
+    /// Present for `gradient` parameters: stops and how they are baked into the ramp texture.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient: Option<GradientInfo>,
     /// Where the value lives in the material uniform (numeric kinds, curves, texture tiling).
@@ -234,6 +290,7 @@ pub struct Parameter {
     pub binding: Option<u32>,
 }
 
+/// Colour details of a `color` parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ColorInfo {
@@ -301,6 +358,7 @@ impl TextureDefault {
     }
 }
 
+/// Details of a `texture2d` or `cube` parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TextureInfo {
@@ -316,6 +374,8 @@ pub struct TextureInfo {
     /// Uniform member (vec4: xy tiling, zw offset) when the texture has tiling/offset.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tiling_member: Option<String>,
+    /// Default of `tiling_member`, [tiling x, tiling y, offset x, offset y] = [1, 1, 0, 0];
+    /// present exactly when `tiling_member` is.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tiling_default: Option<[f64; 4]>,
 }
@@ -326,6 +386,7 @@ pub struct TextureInfo {
 pub struct ConditionalTextureDefault {
     /// On a static keyword or `tier`.
     pub condition: Condition,
+    /// The built-in texture bound in variants where `condition` holds.
     pub default: TextureDefault,
 }
 
@@ -333,15 +394,22 @@ pub struct ConditionalTextureDefault {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Keyframe {
+    /// Position on the curve's axis; strictly increasing along `keyframes`.
     pub time: f64,
+    /// Curve value at `time` (inside the parameter's `range`, when it has one).
     pub value: f64,
+    /// Slope (value per unit time) entering the key, from the previous key.
     pub in_slope: f64,
+    /// Slope (value per unit time) leaving the key, towards the next key.
     pub out_slope: f64,
 }
 
+/// How a `curve` parameter is edited and baked into the material uniform.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CurveInfo {
+    /// The default curve's keys, times strictly increasing; the curve is constant before the
+    /// first and after the last (`weft_meta::bake::eval_curve` evaluates it).
     pub keyframes: Vec<Keyframe>,
     /// Number of samples the toolchain bakes into the uniform array.
     pub samples: u32,
@@ -365,17 +433,22 @@ pub enum CurveEncoding {
     F32x4PackedV1,
 }
 
+/// One stop of a gradient.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct GradientStop {
+    /// Where the stop sits, in [0, 1]; positions never decrease along `stops`.
     pub position: f64,
     /// sRGB-encoded colour as edited.
     pub color: [f64; 4],
 }
 
+/// How a `gradient` parameter is edited and baked into its ramp texture.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct GradientInfo {
+    /// The default gradient's stops, positions non-decreasing; the colour is constant before
+    /// the first and after the last.
     pub stops: Vec<GradientStop>,
     /// Width in texels of the 1-D ramp (a `width` x 1 Rgba8UnormSrgb texture).
     pub width: u32,
@@ -389,11 +462,12 @@ pub struct GradientInfo {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum GradientEncoding {
-    /// Texel i samples the stops at t = i / (width − 1), interpolating the
-    /// sRGB-encoded colours linearly between neighbouring stops (constant
-    /// outside the first and last), rounded to 8 bits; bound as
-    /// `rgba8unorm_srgb`, width × 1, sampled at texel centres with the
-    /// clamp sampler. `weft_meta::bake` is the reference implementation.
+    /// Texel i holds the gradient at x = (i + 0.5) / width (texel centres):
+    /// the stops' colours decoded from sRGB to linear, interpolated linearly
+    /// between neighbouring stops (alpha linearly too; constant outside the
+    /// first and last stop), then sRGB-encoded and rounded to 8 bits. Bound
+    /// as `rgba8unorm_srgb`, width × 1, and sampled with the clamp sampler.
+    /// `weft_meta::bake::bake_gradient` is the reference implementation.
     Rgba8SrgbRampV1,
 }
 
@@ -403,18 +477,23 @@ pub enum GradientEncoding {
 pub struct Condition {
     /// A keyword, `tier`, or a bool parameter.
     pub subject: String,
+    /// The comparison of the subject's current value with `value`.
     pub op: ConditionOp,
     /// Keyword value, tier name, or "on"/"off" for toggles and bool parameters.
     pub value: String,
 }
 
+/// How a condition compares its subject's current value with `value`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum ConditionOp {
+    /// Holds when the subject's value is `value`.
     Equal,
+    /// Holds when the subject's value is not `value`.
     NotEqual,
 }
 
+/// The values a keyword has.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum KeywordKind {
@@ -424,6 +503,7 @@ pub enum KeywordKind {
     Enum,
 }
 
+/// How a keyword's values become compiled code.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum KeywordMode {
@@ -435,29 +515,41 @@ pub enum KeywordMode {
     Constant,
 }
 
+/// A keyword: a compile-time switch shown in the inspector.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Keyword {
     /// The WGSL `override` name (UPPER_SNAKE).
     pub name: String,
+    /// Toggle (values `off`, `on`) or enum (values as listed).
     pub kind: KeywordKind,
+    /// `static`: a variant per value; `constant`: one variant, the value set as a pipeline
+    /// constant (WGSL) or by choosing a file (other languages).
     pub mode: KeywordMode,
     /// Values in order; the WGSL constant `<NAME>_<VALUE>` equals the index.
     pub values: Vec<String>,
+    /// The value (one of `values`) the inspector starts from.
     pub default: String,
+    /// Display name.
     pub label: Text,
+    /// Hover help; absent when none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tooltip: Option<Text>,
+    /// The `groups[].name` of the section the keyword is shown in.
     pub group: String,
+    /// Show the keyword only while this condition holds; absent: always shown.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub show_if: Option<Condition>,
 }
 
+/// The material's quality tiers: the same material at different cost, each tier its own
+/// variant.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Tiers {
     /// Tier names; the WGSL constant `TIER_<NAME>` equals the index.
     pub values: Vec<String>,
+    /// The tier (one of `values`) the inspector starts from.
     pub default: String,
     /// The most accurate tier every other tier is measured against.
     pub reference: String,
@@ -465,18 +557,25 @@ pub struct Tiers {
     pub descriptions: BTreeMap<String, Text>,
 }
 
+/// A named set of values for the inspector.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Preset {
+    /// Preset id (lower_snake_case), as scene manifests name it.
     pub name: String,
+    /// Display name.
     pub label: Text,
-    /// Parameter values (as in `Parameter::default`) and keyword values.
+    /// Values by name: parameters (as in `Parameter::default`), keywords (a
+    /// value name) and `tier` (a tier name).
     pub values: BTreeMap<String, serde_json::Value>,
 }
 
+/// How a pass's output is combined with the colour target; `color_targets[].blend` spells out
+/// the colour and alpha equations.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BlendMode {
+    /// No blending: the output replaces the target.
     Opaque,
     /// src * a + dst * (1 - a)
     Alpha,
@@ -488,32 +587,52 @@ pub enum BlendMode {
     Multiply,
 }
 
+/// Which faces are culled; which face is front is `primitive.front_face` (counter-clockwise in
+/// WGSL).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum CullMode {
+    /// Cull nothing: both faces are drawn.
     None,
+    /// Cull front faces.
     Front,
+    /// Cull back faces.
     Back,
 }
 
+/// A comparison function (WebGPU `GPUCompareFunction`): the incoming value (a fragment's depth,
+/// or a comparison sampler's reference) against the stored one. Depth 0 is near, 1 far.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum DepthTest {
+    /// Always passes.
     Always,
+    /// Never passes.
     Never,
+    /// Passes when incoming < stored.
     Less,
+    /// Passes when incoming ≤ stored.
     LessEqual,
+    /// Passes when incoming = stored.
     Equal,
+    /// Passes when incoming > stored.
     Greater,
+    /// Passes when incoming ≥ stored.
     GreaterEqual,
 }
 
+/// A pass's render state as the material author wrote it (`[[pass]]`); `primitive`,
+/// `color_targets` and `depth` are the pipeline state it implies.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RenderState {
+    /// Blend mode of the colour output.
     pub blend: BlendMode,
+    /// Faces culled.
     pub cull: CullMode,
+    /// Whether the pass writes depth (as `depth.write_enabled`).
     pub depth_write: bool,
+    /// Depth comparison (as `depth.compare`).
     pub depth_test: DepthTest,
     /// Draw order (Unity-style: 2000 geometry, 3000 transparent).
     pub queue: i64,
@@ -523,19 +642,25 @@ pub struct RenderState {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum InstanceCount {
+    /// A fixed number of instances, 1..=4096.
     Fixed(u32),
     /// The value of an int parameter (e.g. a shell count).
     Parameter(String),
 }
 
+/// One draw of the mesh: entry points, instance count and pipeline state.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Pass {
+    /// Pass name, distinct within the material.
     pub name: String,
+    /// Name of the vertex entry point (listed in every variant's `entry_points`).
     pub vertex_entry: String,
+    /// Name of the fragment entry point (listed in every variant's `entry_points`).
     pub fragment_entry: String,
     /// The state as the material author wrote it.
     pub render_state: RenderState,
+    /// How many instances to draw (the shader reads `@builtin(instance_index)`).
     pub instances: InstanceCount,
     /// The pipeline state that follows from it, in full.
     pub primitive: PrimitiveState,
@@ -546,11 +671,14 @@ pub struct Pass {
     pub depth: Option<DepthState>,
 }
 
+/// A vertex attribute the mesh provides.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct VertexInput {
     /// position, normal, tangent, uv0, uv1 or color.
     pub name: String,
+    /// Shader location (`@location`), fixed by the engine interface: position 0, normal 1,
+    /// tangent 2, uv0 3, uv1 4, color 5.
     pub location: u32,
     /// WebGPU vertex format name, e.g. `float32x3`.
     pub format: String,
@@ -562,6 +690,7 @@ pub struct VertexInput {
 pub struct Variant {
     /// Stable id, also the file stem: `<tier>.<keyword>-<value>...` (lower case).
     pub id: String,
+    /// The variant's tier (one of `tiers.values`).
     pub tier: String,
     /// Static keyword values.
     pub keywords: BTreeMap<String, String>,
@@ -569,6 +698,7 @@ pub struct Variant {
     /// use that variant's files and reflection.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub alias_of: Option<String>,
+    /// Files and reflection; absent for an alias (`alias_of`), which uses its target's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shader: Option<VariantShader>,
 }
@@ -579,13 +709,18 @@ pub struct Variant {
 pub struct VariantShader {
     /// Language -> files (paths relative to the metadata file).
     pub files: BTreeMap<String, Vec<ShaderFile>>,
+    /// Every entry point of the module, with its stage.
     pub entry_points: Vec<EntryPoint>,
     /// WGSL `override`s left in the WGSL output (keywords in `constant` mode).
     pub pipeline_constants: Vec<PipelineConstant>,
+    /// The resource bindings the variant still uses, sorted by (group, binding), each with its
+    /// layout entry in full.
     pub bindings: Vec<Binding>,
     /// The group 1 uniform block, when the variant still reads it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub material_uniform: Option<UniformLayout>,
+    /// The vertex inputs the variant's vertex stage reads: a subset of the material's
+    /// `vertex_inputs`.
     pub vertex_inputs: Vec<VertexInput>,
     /// Parameters the specialised module still reads (uniform members and
     /// textures), in declaration order: an inspector hides the others.
@@ -593,9 +728,11 @@ pub struct VariantShader {
     pub reads: Vec<String>,
 }
 
+/// One emitted shader file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ShaderFile {
+    /// File name, relative to the folder of the metadata file.
     pub path: String,
     /// SHA-256 of the file's bytes, hex.
     pub sha256: String,
@@ -610,21 +747,30 @@ pub struct ShaderFile {
     pub glsl: Option<GlslReflection>,
 }
 
+/// A shader stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Stage {
+    /// The vertex stage.
     Vertex,
+    /// The fragment stage.
     Fragment,
+    /// The compute stage.
     Compute,
 }
 
+/// An entry point of a shader module.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct EntryPoint {
+    /// The entry point's function name.
     pub name: String,
+    /// The stage it runs in.
     pub stage: Stage,
 }
 
+/// A WGSL `override` left in the WGSL output: a `constant`-mode keyword, set when the engine
+/// creates the pipeline.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PipelineConstant {
@@ -642,32 +788,50 @@ pub struct PipelineConstant {
     pub default_value: serde_json::Value,
 }
 
+/// What a binding holds: the WGSL type of its global.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BindingKind {
+    /// A uniform buffer, `var<uniform>` (details in `buffer`).
     UniformBuffer,
+    /// A storage buffer, `var<storage>` (details in `buffer`).
     StorageBuffer,
+    /// A `sampler` (details in `sampler`).
     Sampler,
+    /// A `sampler_comparison` (details in `sampler`).
     ComparisonSampler,
+    /// A sampled 2-D texture, `texture_2d<T>` (details in `texture`).
     Texture2d,
+    /// A sampled cube texture, `texture_cube<T>` (details in `texture`).
     TextureCube,
+    /// A sampled 2-D array texture, `texture_2d_array<T>` (details in `texture`).
     Texture2dArray,
+    /// A sampled 3-D texture, `texture_3d<T>` (details in `texture`).
     Texture3d,
+    /// A depth texture, `texture_depth_*` (details in `texture`).
     DepthTexture2d,
 }
 
+/// One resource binding of a variant, with its layout entry in full.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Binding {
+    /// The WGSL `@group` (Vulkan descriptor set; HLSL register space): 0 frame, 1 material, 2
+    /// object.
     pub group: u32,
+    /// The WGSL `@binding` within the group (the Vulkan binding number); the HLSL, MSL and
+    /// GLSL slots are given separately (`hlsl`, `msl`, `files.glsl[].glsl`).
     pub binding: u32,
     /// The WGSL global's name.
     pub name: String,
+    /// What the binding holds; says which of `buffer`, `texture` and `sampler` is present.
     pub kind: BindingKind,
     /// The parameter this binding carries, for material textures.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub parameter: Option<String>,
+    /// The stages that use the binding: the layout entry's visibility.
     pub stages: Vec<Stage>,
+    /// Where the binding lives in the HLSL output.
     pub hlsl: HlslBinding,
     /// Where the binding lives in the MSL output.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -692,6 +856,7 @@ pub struct Binding {
 pub struct HlslBinding {
     /// `b3`, `t2`, … For samplers: the sampler-index buffer's register.
     pub register: String,
+    /// Register space (`space<N>`): the binding's WGSL group.
     pub space: u32,
     /// Samplers only: the slot of the group's sampler-index buffer that holds
     /// this sampler's index into `nagaSamplerHeap`.
@@ -699,24 +864,35 @@ pub struct HlslBinding {
     pub sampler_index_slot: Option<u32>,
 }
 
+/// A buffer struct's layout by WGSL's uniform-buffer rules (naga's layouter;
+/// std140-compatible).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct UniformLayout {
+    /// The WGSL struct's name (`WeftFrame`, `WeftMaterial`, `WeftObject`).
     pub struct_name: String,
+    /// Size of the struct in bytes, trailing padding included: the least buffer size to bind.
     pub size: u32,
+    /// Alignment of the struct in bytes.
     pub align: u32,
+    /// The struct's members in declaration order (offsets increasing).
     pub members: Vec<UniformMember>,
 }
 
+/// One member of a buffer struct.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct UniformMember {
+    /// The member's name in the WGSL struct.
     pub name: String,
     /// WGSL type, e.g. `vec4<f32>`, `array<vec4<f32>, 4>`. Matrices are
     /// column-major; `vec3` members occupy 12 bytes at a 16-byte alignment.
     pub ty: String,
+    /// Byte offset from the start of the buffer.
     pub offset: u32,
+    /// Size in bytes (arrays: element stride × count).
     pub size: u32,
+    /// Alignment in bytes (WGSL uniform rules).
     pub align: u32,
     /// Material members: the parameter whose value the member holds.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -14,9 +14,11 @@ use serde::{Deserialize, Serialize};
 
 // ---------------------------------------------------------------- passes
 
+/// How vertices form primitives.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum PrimitiveTopology {
+    /// Independent triangles: vertices (or indices) 3i, 3i + 1, 3i + 2 form triangle i.
     TriangleList,
 }
 
@@ -34,11 +36,13 @@ pub enum FrontFace {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PrimitiveState {
+    /// How the pass's vertices form primitives.
     pub topology: PrimitiveTopology,
     /// The front face in the WGSL convention (meshes wind their front faces
     /// counter-clockwise). Other languages may need the opposite setting:
     /// `languages.<lang>.front_face` is the value for drawing that language.
     pub front_face: FrontFace,
+    /// Faces culled, front and back judged by `front_face`.
     pub cull_mode: CullMode,
 }
 
@@ -53,28 +57,46 @@ pub enum ColorOutput {
     PremultipliedLinearRadiance,
 }
 
+/// What a blend term is multiplied by (WebGPU `GPUBlendFactor`): src is the fragment output,
+/// dst the target's current value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BlendFactor {
+    /// 0.
     Zero,
+    /// 1.
     One,
+    /// The source: its rgb in the colour equation, its alpha in the alpha equation.
     Src,
+    /// 1 − the source (rgb in the colour equation, alpha in the alpha equation).
     OneMinusSrc,
+    /// The source's alpha.
     SrcAlpha,
+    /// 1 − the source's alpha.
     OneMinusSrcAlpha,
+    /// The target: its rgb in the colour equation, its alpha in the alpha equation.
     Dst,
+    /// 1 − the target (rgb in the colour equation, alpha in the alpha equation).
     OneMinusDst,
+    /// The target's alpha.
     DstAlpha,
+    /// 1 − the target's alpha.
     OneMinusDstAlpha,
 }
 
+/// How the two weighted terms combine (WebGPU `GPUBlendOperation`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BlendOperation {
+    /// src × src_factor + dst × dst_factor.
     Add,
+    /// src × src_factor − dst × dst_factor.
     Subtract,
+    /// dst × dst_factor − src × src_factor.
     ReverseSubtract,
+    /// min(src, dst): the factors are not applied (WebGPU requires them to be `one`).
     Min,
+    /// max(src, dst): the factors are not applied (WebGPU requires them to be `one`).
     Max,
 }
 
@@ -82,8 +104,11 @@ pub enum BlendOperation {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BlendComponent {
+    /// Factor the fragment output is multiplied by.
     pub src_factor: BlendFactor,
+    /// Factor the target's current value is multiplied by.
     pub dst_factor: BlendFactor,
+    /// How the two products combine.
     pub operation: BlendOperation,
 }
 
@@ -91,16 +116,23 @@ pub struct BlendComponent {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BlendState {
+    /// Equation of the rgb channels.
     pub color: BlendComponent,
+    /// Equation of the alpha channel.
     pub alpha: BlendComponent,
 }
 
+/// A channel of a colour target's write mask.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum ColorChannel {
+    /// The red channel.
     Red,
+    /// The green channel.
     Green,
+    /// The blue channel.
     Blue,
+    /// The alpha channel.
     Alpha,
 }
 
@@ -113,6 +145,7 @@ pub struct ColorTarget {
     /// The format the goldens and `weft-render` use. Any float format with
     /// these channels works; a unorm target clamps the HDR output to [0, 1].
     pub format: String,
+    /// What the fragment output holds.
     pub output: ColorOutput,
     /// False: the shader does not multiply by `weft_frame.params.y`; the
     /// engine applies exposure (and tone mapping) after the passes.
@@ -122,6 +155,7 @@ pub struct ColorTarget {
     pub tone_mapped: bool,
     /// None: blending disabled (the output replaces the target).
     pub blend: Option<BlendState>,
+    /// The channels the pass writes; the others keep the target's value.
     pub write_mask: Vec<ColorChannel>,
 }
 
@@ -131,7 +165,9 @@ pub struct ColorTarget {
 pub struct DepthState {
     /// The format `weft-render` uses; any depth format works.
     pub format: String,
+    /// Write the fragment's depth into the attachment.
     pub write_enabled: bool,
+    /// Depth test: a fragment passes when its depth compares so with the stored depth.
     pub compare: DepthTest,
     /// Depth values: 0 near, 1 far (WGSL/SPIR-V/HLSL/MSL clip-space z in
     /// [0, w]); see `languages.glsl.depth_range` for GLSL.
@@ -140,11 +176,15 @@ pub struct DepthState {
 
 // ---------------------------------------------------------------- bindings
 
+/// A buffer layout entry's type (WebGPU `GPUBufferBindingType`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BufferBindingType {
+    /// Uniform buffer (`var<uniform>`).
     Uniform,
+    /// Read-only storage buffer (`var<storage, read>`).
     ReadOnlyStorage,
+    /// Read-write storage buffer (`var<storage, read_write>`).
     Storage,
 }
 
@@ -152,8 +192,11 @@ pub enum BufferBindingType {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BufferBinding {
+    /// Buffer type of the layout entry.
     #[serde(rename = "type")]
     pub ty: BufferBindingType,
+    /// Whether the layout entry takes a dynamic offset (WebGPU `hasDynamicOffset`); false for
+    /// every weft binding.
     pub has_dynamic_offset: bool,
     /// Bytes: the struct's size (std140-compatible layout; WGSL uniform rules).
     pub min_binding_size: u64,
@@ -161,28 +204,40 @@ pub struct BufferBinding {
     pub layout: UniformLayout,
 }
 
+/// A texture layout entry's sample type (WebGPU `GPUTextureSampleType`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum TextureSampleType {
     /// Filterable float (bind with a filtering sampler).
     Float,
+    /// Float that is not filtered (bind with a non-filtering sampler).
     UnfilterableFloat,
+    /// Depth texture.
     Depth,
+    /// Signed-integer texels.
     Sint,
+    /// Unsigned-integer texels.
     Uint,
 }
 
+/// A texture layout entry's view dimension (WebGPU `GPUTextureViewDimension`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum TextureViewDimension {
+    /// 1-D texture.
     #[serde(rename = "1d")]
     D1,
+    /// 2-D texture.
     #[serde(rename = "2d")]
     D2,
+    /// Array of 2-D layers.
     #[serde(rename = "2d_array")]
     D2Array,
+    /// Cube map: six square 2-D faces.
     Cube,
+    /// Array of cube maps.
     CubeArray,
+    /// 3-D texture.
     #[serde(rename = "3d")]
     D3,
 }
@@ -191,8 +246,11 @@ pub enum TextureViewDimension {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TextureBinding {
+    /// Sample type of the layout entry.
     pub sample_type: TextureSampleType,
+    /// View dimension of the layout entry and of the view to bind.
     pub view_dimension: TextureViewDimension,
+    /// Whether the texture is multisampled (WebGPU `multisampled`).
     pub multisampled: bool,
     /// The format of the data weft provides or `weft-render` uses (e.g.
     /// `rgba8unorm_srgb` for a colour map: sampling must return linear values).
@@ -203,26 +261,37 @@ pub struct TextureBinding {
     pub default: Option<TextureDefault>,
 }
 
+/// A sampler layout entry's type (WebGPU `GPUSamplerBindingType`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum SamplerBindingType {
+    /// May filter linearly; pairs with filterable float textures.
     Filtering,
+    /// Nearest filtering only; pairs with unfilterable textures.
     NonFiltering,
+    /// Depth-comparison sampler (`sampler_comparison`).
     Comparison,
 }
 
+/// How neighbouring texels (or mip levels) are combined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum FilterMode {
+    /// The nearest texel (mip level).
     Nearest,
+    /// Linear interpolation between the neighbouring texels (mip levels).
     Linear,
 }
 
+/// What sampling outside [0, 1] reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum AddressMode {
+    /// Coordinates are clamped: the edge texels extend outward.
     ClampToEdge,
+    /// The texture tiles (the coordinate's fractional part is used).
     Repeat,
+    /// The texture tiles, every other tile mirrored.
     MirrorRepeat,
 }
 
@@ -230,14 +299,23 @@ pub enum AddressMode {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SamplerBinding {
+    /// Sampler type of the layout entry.
     pub binding_type: SamplerBindingType,
+    /// Filter when the texture is magnified (a texel covers more than a pixel).
     pub mag_filter: FilterMode,
+    /// Filter when the texture is minified.
     pub min_filter: FilterMode,
+    /// Filter between mip levels.
     pub mipmap_filter: FilterMode,
+    /// Addressing of u, the horizontal coordinate.
     pub address_mode_u: AddressMode,
+    /// Addressing of v, the vertical coordinate.
     pub address_mode_v: AddressMode,
+    /// Addressing of w, the third coordinate (3-D textures).
     pub address_mode_w: AddressMode,
+    /// Lowest level of detail (mip level) sampled; 0 is the full-resolution level.
     pub lod_min_clamp: f32,
+    /// Highest level of detail (mip level) sampled; 32 leaves every mip level reachable.
     pub lod_max_clamp: f32,
     /// 1: no anisotropic filtering (the goldens are made without it).
     pub anisotropy_clamp: u16,
@@ -263,16 +341,21 @@ pub struct EngineResource {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ResourceFile {
-    /// Relative to the metadata file.
+    /// Relative to the library root (the folder holding
+    /// `metadata.schema.json` and `luts/`): material metadata lives one folder
+    /// below it, scene metadata two (`scenes/<scene>/`).
     pub path: String,
     /// Texture format of the texels (`rg16float`, `r16float`).
     pub format: String,
+    /// Width in texels (along u).
     pub width: u32,
+    /// Height in texels: the number of rows (along v).
     pub height: u32,
     /// Byte layout: texel order, endianness.
     pub layout: String,
     /// What the texture coordinates mean.
     pub u: String,
+    /// What the v coordinate (rows) means.
     pub v: String,
     /// What the channels hold.
     pub channels: String,
@@ -284,7 +367,9 @@ pub struct ResourceFile {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BindingRef {
+    /// The WGSL `@group`.
     pub group: u32,
+    /// The WGSL `@binding` within the group.
     pub binding: u32,
 }
 
@@ -322,7 +407,9 @@ pub struct GlslSampler {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct GlslReflection {
+    /// Each uniform block of the file with its binding point.
     pub uniform_blocks: Vec<GlslUniformBlock>,
+    /// Each combined image-sampler uniform of the file with its texture unit.
     pub samplers: Vec<GlslSampler>,
 }
 
@@ -346,12 +433,16 @@ pub enum MslSlotKind {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MslBinding {
+    /// The argument table the resource lives in.
     pub kind: MslSlotKind,
+    /// Index in that table (`[[buffer(n)]]`, `[[texture(n)]]` or `[[sampler(n)]]`), the same in
+    /// every stage.
     pub index: u32,
 }
 
 // ---------------------------------------------------------------- languages
 
+/// Which way clip-space +y points in a language's vertex output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum ClipSpaceY {
@@ -362,6 +453,7 @@ pub enum ClipSpaceY {
     Down,
 }
 
+/// The clip-space depth range of a language's vertex output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum DepthRange {
@@ -386,7 +478,9 @@ pub enum ConstantKeywords {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LanguageConventions {
+    /// Direction of clip-space +y in this language's vertex output.
     pub clip_space_y: ClipSpaceY,
+    /// Clip-space z range of this language's vertex output.
     pub depth_range: DepthRange,
     /// The front face to set in this API's pipeline (native viewport, no
     /// y flip of its own) for a pass's `cull_mode` to keep the faces meant.
@@ -394,6 +488,7 @@ pub struct LanguageConventions {
     /// Row 0 of the colour target holds the top of the picture when drawn
     /// with this API's native conventions.
     pub top_row_first: bool,
+    /// How `constant`-mode keywords are chosen in this language.
     pub constant_keywords: ConstantKeywords,
     /// The target API and anything else an engine must know.
     pub notes: String,

@@ -15,12 +15,20 @@ use std::collections::BTreeMap;
 /// Version of the scene metadata layout.
 pub const SCENE_SCHEMA_VERSION: u32 = 2;
 
+/// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
+/// `<scene>.scene.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SceneMetadata {
+    /// Version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_VERSION`,
+    /// currently 1).
     pub schema_version: u32,
+    /// Version of the engine interface the shaders were composed with
+    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 1).
     pub engine_interface_version: u32,
+    /// Scene name: the manifest's file name before `.scene.toml`.
     pub name: String,
+    /// What the scene shows; absent when the manifest says nothing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
     /// Hash of every input (scene file, materials, toolchain version).
@@ -51,11 +59,15 @@ pub struct SceneFeatures {
     pub directional_lights: u32,
 }
 
+/// The camera for previews and tests: perspective, +y up.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SceneCamera {
+    /// Eye position in world space.
     pub position: [f64; 3],
+    /// The world-space point looked at.
     pub target: [f64; 3],
+    /// Vertical field of view in degrees, in (0, 180).
     pub fov_degrees: f64,
 }
 
@@ -65,6 +77,7 @@ pub struct SceneCamera {
 pub struct SceneShader {
     /// `<material>.<first 12 hex digits of the WGSL's SHA-256>`; also the file stem.
     pub id: String,
+    /// Name of the material the shader was built from.
     pub material: String,
     /// The library variant this shader specialises (tier and keywords).
     pub variant: String,
@@ -76,8 +89,11 @@ pub struct SceneShader {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SceneInstance {
+    /// Instance name, unique in the scene.
     pub name: String,
+    /// Name of the instance's material.
     pub material: String,
+    /// The material preset the instance's values start from; absent when none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub preset: Option<String>,
     /// The tier built (after `auto` was decided).
@@ -103,7 +119,9 @@ pub struct SceneInstance {
     pub textures: BTreeMap<String, SceneTexture>,
     /// Passes with their render state, in the material's order.
     pub passes: Vec<Pass>,
+    /// The built-in mesh to draw: `sphere`, `cloth` or `swatch`.
     pub mesh: String,
+    /// Placement in world space (`transform.model` is the matrix to use).
     pub transform: SceneTransform,
     /// How `tier = "auto"` was decided.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -114,6 +132,7 @@ pub struct SceneInstance {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SceneTexture {
+    /// The material parameter (`texture2d`, `cube` or `gradient`) this texture carries.
     pub parameter: String,
     /// A built-in 1x1 texture (the parameter's default, read at run time
     /// because the parameter is `dynamic`).
@@ -126,12 +145,16 @@ pub struct SceneTexture {
     pub srgb: bool,
 }
 
+/// An instance's placement in world space: `model` = translation × rotation (Z · Y · X) ×
+/// scale.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SceneTransform {
+    /// World-space position of the object's origin (x, y, z).
     pub translation: [f64; 3],
     /// Degrees, applied X then Y then Z.
     pub rotation_degrees: [f64; 3],
+    /// Scale along the object's x, y and z axes (each > 0), applied before rotation.
     pub scale: [f64; 3],
     /// Object -> world, column-major (the engine interface's `weft_object.model`).
     pub model: [f32; 16],
@@ -141,7 +164,10 @@ pub struct SceneTransform {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TierChoice {
+    /// The largest mean FLIP against the reference tier the choice may accept, in (0, 1].
     pub error_budget: f64,
+    /// The instance's size on screen in pixels: the tiers were rendered at `screen_size` ×
+    /// `screen_size` for the choice.
     pub screen_size: u32,
     /// Where the costs came from: `lavapipe timing` or the `--tier-costs` file.
     pub cost_source: String,
@@ -149,15 +175,19 @@ pub struct TierChoice {
     pub candidates: Vec<TierCandidate>,
 }
 
+/// One tier considered by an automatic choice.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TierCandidate {
+    /// The tier's name.
     pub tier: String,
     /// Cost as measured: the bench's ratio to `standard`'s `fast` tier, or the
     /// `--tier-costs` figure (any unit; only ratios within a material matter).
     pub cost: f64,
     /// FLIP mean against the reference tier at the instance's values, mesh and screen size.
     pub flip_mean: f64,
+    /// Whether `flip_mean` ≤ `error_budget` (the reference tier always is); the first candidate
+    /// within budget is chosen.
     pub within_budget: bool,
 }
 

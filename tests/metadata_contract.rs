@@ -1,0 +1,262 @@
+//! "Nothing to guess" as a tested property of the metadata contract: every
+//! property of the published JSON Schemas (`generated/metadata.schema.json`,
+//! `generated/scene-metadata.schema.json`) says what it means, every type
+//! says what it is, and every enum value is documented.
+//!
+//! The descriptions are the `///` doc comments of `weft_meta`'s types, which
+//! schemars copies into the schema. A failure lists every gap; fix it with a
+//! doc comment on the field or variant and `cargo xtask regenerate`.
+
+use serde_json::{Map, Value};
+use std::path::{Path, PathBuf};
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+/// A committed schema file, checked to be what `weft_meta` generates now.
+fn load(name: &str, current: &str) -> Value {
+    let path = repo().join("generated").join(name);
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("{}: {e} (run `cargo xtask regenerate`)", path.display()));
+    assert!(
+        text == current,
+        "generated/{name} is stale: run `cargo xtask regenerate`"
+    );
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("generated/{name}: {e}"))
+}
+
+fn has_description(schema: &Value) -> bool {
+    schema
+        .get("description")
+        .and_then(Value::as_str)
+        .is_some_and(|d| !d.trim().is_empty())
+}
+
+/// What one schema leaves to guess.
+struct Report {
+    /// `Type.property` (or `Type[variant].property`) and what is missing.
+    gaps: Vec<String>,
+    /// Properties and enum values looked at (so an empty walk cannot pass).
+    checked: usize,
+}
+
+struct Checker<'a> {
+    defs: &'a Map<String, Value>,
+    report: Report,
+}
+
+impl Checker<'_> {
+    /// The definition a `$ref` names (`#/$defs/X` or `#/definitions/X`).
+    fn target(&self, schema: &Value) -> Option<&Value> {
+        let r = schema.get("$ref")?.as_str()?;
+        let name = r
+            .strip_prefix("#/$defs/")
+            .or_else(|| r.strip_prefix("#/definitions/"))?;
+        self.defs.get(name)
+    }
+
+    /// A property is described by its own description, or, when it is a
+    /// plain `$ref`, by the description of the definition it names.
+    fn described(&self, property: &Value) -> bool {
+        has_description(property) || self.target(property).is_some_and(has_description)
+    }
+
+    fn gap(&mut self, what: String) {
+        self.report.gaps.push(what);
+    }
+
+    /// Checks the properties and enum alternatives of `schema` and of every
+    /// schema nested in it. `tagged` is set inside a documented alternative of
+    /// an externally tagged enum, whose single property (the variant's name)
+    /// the alternative's description covers.
+    fn walk(&mut self, path: &str, schema: &Value, tagged: bool) {
+        if let Some(properties) = schema.get("properties").and_then(Value::as_object) {
+            let single = properties.len() == 1;
+            for (name, property) in properties {
+                self.report.checked += 1;
+                if !(self.described(property) || (tagged && single)) {
+                    self.gap(format!("{path}.{name}: no description"));
+                }
+                self.walk(&format!("{path}.{name}"), property, false);
+            }
+        }
+        // Enums: schemars writes a documented unit or tagged variant as one
+        // `oneOf` alternative carrying the variant's doc comment; an
+        // undocumented one has none (or, if no variant of the enum is
+        // documented, the enum becomes a bare `enum` array, see `check`).
+        if let Some(alternatives) = schema.get("oneOf").and_then(Value::as_array) {
+            for alternative in alternatives {
+                let variant = variant_name(alternative);
+                self.report.checked += 1;
+                let documented = has_description(alternative);
+                if !documented {
+                    self.gap(format!("{path}: variant `{variant}` has no description"));
+                }
+                self.walk(&format!("{path}[{variant}]"), alternative, documented);
+            }
+        }
+        for key in ["anyOf", "allOf"] {
+            for alternative in schema
+                .get(key)
+                .and_then(Value::as_array)
+                .into_iter()
+                .flatten()
+            {
+                self.walk(path, alternative, false);
+            }
+        }
+        for key in ["items", "additionalProperties"] {
+            if let Some(inner) = schema.get(key).filter(|v| v.is_object()) {
+                self.walk(&format!("{path}[]"), inner, false);
+            }
+        }
+        if let Some(items) = schema.get("prefixItems").and_then(Value::as_array) {
+            for inner in items {
+                self.walk(&format!("{path}[]"), inner, false);
+            }
+        }
+    }
+}
+
+fn variant_name(alternative: &Value) -> String {
+    if let Some(c) = alternative.get("const") {
+        return c.as_str().map_or_else(|| c.to_string(), str::to_string);
+    }
+    if let Some(values) = alternative.get("enum").and_then(Value::as_array) {
+        return values
+            .iter()
+            .map(|v| v.as_str().map_or_else(|| v.to_string(), str::to_string))
+            .collect::<Vec<_>>()
+            .join("|");
+    }
+    alternative
+        .get("properties")
+        .and_then(Value::as_object)
+        .and_then(|p| p.keys().next().cloned())
+        .unwrap_or_else(|| "?".into())
+}
+
+/// Every gap in one schema: the root and every definition must describe
+/// themselves, their properties and their enum values.
+fn check(schema: &Value) -> Report {
+    let empty = Map::new();
+    let defs = schema
+        .get("$defs")
+        .or_else(|| schema.get("definitions"))
+        .and_then(Value::as_object)
+        .unwrap_or(&empty);
+    let mut c = Checker {
+        defs,
+        report: Report {
+            gaps: Vec::new(),
+            checked: 0,
+        },
+    };
+    let root = schema
+        .get("title")
+        .and_then(Value::as_str)
+        .unwrap_or("root")
+        .to_string();
+    if !has_description(schema) {
+        c.gap(format!("{root}: the type has no description"));
+    }
+    c.walk(&root, schema, false);
+    for (name, def) in defs {
+        if !has_description(def) {
+            c.gap(format!("{name}: the type has no description"));
+        }
+        if let Some(values) = def.get("enum").and_then(Value::as_array) {
+            // No variant has a doc comment: schemars emits the bare values.
+            c.report.checked += values.len();
+            c.gap(format!(
+                "{name}: values {} have no descriptions (document every variant)",
+                Value::Array(values.clone())
+            ));
+        }
+        c.walk(name, def, false);
+    }
+    c.report
+}
+
+#[test]
+fn every_schema_property_and_enum_value_is_described() {
+    let schemas = [
+        ("metadata.schema.json", weft_meta::metadata_json_schema()),
+        (
+            "scene-metadata.schema.json",
+            weft_meta::scene::scene_metadata_json_schema(),
+        ),
+    ];
+    let mut failures = Vec::new();
+    for (name, current) in &schemas {
+        let report = check(&load(name, current));
+        assert!(
+            report.checked > 100,
+            "generated/{name}: only {} properties and values found: has the schema layout changed?",
+            report.checked
+        );
+        failures.extend(report.gaps.iter().map(|g| format!("generated/{name}: {g}")));
+    }
+    assert!(
+        failures.is_empty(),
+        "{} gaps in the metadata contract; add a `///` doc comment to each field, variant or \
+         type in crates/weft-meta/src/ and run `cargo xtask regenerate`:\n  {}",
+        failures.len(),
+        failures.join("\n  ")
+    );
+}
+
+/// The checker itself finds each kind of gap (so the test above cannot pass
+/// by looking at nothing).
+#[test]
+fn undescribed_properties_and_values_are_reported() {
+    let schema: Value = serde_json::from_str(
+        r##"{
+            "title": "Root",
+            "description": "root",
+            "properties": {
+                "plain": { "type": "integer" },
+                "described": { "type": "integer", "description": "ok" },
+                "via_ref": { "$ref": "#/$defs/Described" },
+                "via_bare_ref": { "$ref": "#/$defs/Bare" },
+                "optional_ref": { "anyOf": [{ "$ref": "#/$defs/Described" }, { "type": "null" }] }
+            },
+            "$defs": {
+                "Described": { "description": "a type", "type": "object", "properties": {} },
+                "Bare": { "type": "object", "properties": { "inner": { "type": "string" } } },
+                "Plain": { "description": "an enum", "type": "string", "enum": ["a", "b"] },
+                "Mixed": {
+                    "description": "an enum",
+                    "oneOf": [
+                        { "type": "string", "enum": ["x"] },
+                        { "type": "string", "const": "y", "description": "y" },
+                        { "description": "tagged", "type": "object",
+                          "properties": { "z": { "type": "integer" } } },
+                        { "type": "object", "properties": { "w": { "type": "integer" } } }
+                    ]
+                }
+            }
+        }"##,
+    )
+    .unwrap();
+    let mut gaps = check(&schema).gaps;
+    gaps.sort();
+    assert_eq!(
+        gaps,
+        [
+            "Bare.inner: no description",
+            "Bare: the type has no description",
+            "Mixed: variant `w` has no description",
+            "Mixed: variant `x` has no description",
+            "Mixed[w].w: no description",
+            "Plain: values [\"a\",\"b\"] have no descriptions (document every variant)",
+            "Root.optional_ref: no description",
+            "Root.plain: no description",
+            "Root.via_bare_ref: no description",
+        ]
+    );
+}
