@@ -223,7 +223,10 @@ fn every_msl_resource_sits_at_its_metadata_slot() {
         for f in &s.shader.files["msl"] {
             let name = s.file(&f.path);
             let text = std::str::from_utf8(file(&name)).unwrap();
-            assert!(!text.contains("[[user(fake"), "{name}: a resource without a slot");
+            assert!(
+                !text.contains("[[user(fake"),
+                "{name}: a resource without a slot"
+            );
             for b in &s.shader.bindings {
                 let slot = b
                     .msl
@@ -238,7 +241,11 @@ fn every_msl_resource_sits_at_its_metadata_slot() {
                     .lines()
                     .filter(|l| l.contains(&format!(" {} [[", b.name)))
                     .collect::<Vec<_>>();
-                assert!(!declared.is_empty(), "{name}: `{}` is not an argument", b.name);
+                assert!(
+                    !declared.is_empty(),
+                    "{name}: `{}` is not an argument",
+                    b.name
+                );
                 for l in declared {
                     assert!(l.ends_with(&attr), "{name}: `{l}` is not at {attr}");
                 }

@@ -145,11 +145,11 @@ pub fn member_description(struct_name: &str, member: &str) -> Option<&'static st
              [0, w]); the same matrix serves every language (each file adjusts its own clip space)"
         }
         ("WeftFrame", "view") => "World → view (rotation and translation), column-major",
-        ("WeftFrame", "camera_position") => "xyz: camera position in world space; w: 1",
+        ("WeftFrame", "camera_position") => "xyz: camera position in world space; w: unused",
         ("WeftFrame", "light_direction") => {
-            "xyz: unit vector from the surface towards the main directional light; w: 0"
+            "xyz: unit vector from the surface towards the main directional light; w: unused"
         }
-        ("WeftFrame", "light_color") => "rgb: the main light's linear radiance; a: 1",
+        ("WeftFrame", "light_color") => "rgb: the main light's linear radiance; a: unused",
         ("WeftFrame", "sh") => {
             "L2 spherical-harmonic irradiance, rgb in xyz (w unused): Σ c_i Y_i(n) = E(n)/π, \
              orthonormal real basis in the order Y00, Y1−1 (y), Y10 (z), Y11 (x), Y2−2 (xy), \
