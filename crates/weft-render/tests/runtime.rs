@@ -7,43 +7,25 @@ use std::sync::OnceLock;
 use weft_render::weft_meta::{Keyframe, TextureDefault};
 use weft_render::*;
 
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+mod support;
+use support::{ok, repo};
 
-fn ok<T>(r: Result<T>) -> T {
-    r.unwrap_or_else(|e| panic!("{e}"))
-}
-
-/// The materials roots this suite draws, built once per run from their TOML
-/// (so the tests do not depend on generated/ being current).
+/// The materials roots this suite draws, built once per run.
 fn built() -> &'static Path {
     static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
-        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("weft-render-tests");
-        for (root, name) in [
+    support::built(
+        &DIR,
+        "weft-render-tests",
+        &[
             ("materials", "materials"),
             ("docs/example", "example"),
             ("tests/fixtures/materials", "fixtures"),
-        ] {
-            let built = weft_compiler::build_library(
-                &repo().join(root),
-                &weft_compiler::BuildOptions::default(),
-                &|_, _, _| {},
-            )
-            .unwrap_or_else(|_| panic!("{root} does not build"));
-            weft_compiler::output::write_atomically(&out.join(name), &built.files, &[])
-                .expect("write the build");
-        }
-        out
-    })
+        ],
+    )
 }
 
 fn meta(root: &str, material: &str) -> PathBuf {
-    built()
-        .join(root)
-        .join(material)
-        .join(format!("{material}.meta.json"))
+    support::meta_path(built(), root, material)
 }
 
 fn standard() -> (Material, PathBuf) {

@@ -16,13 +16,8 @@ use weft_render::weft_meta::{
 };
 use weft_render::*;
 
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn ok<T>(r: Result<T>) -> T {
-    r.unwrap_or_else(|e| panic!("{e}"))
-}
+mod support;
+use support::{ok, repo};
 
 fn member(name: &str, ty: &str, offset: u32, size: u32) -> UniformMember {
     UniformMember {
