@@ -27,6 +27,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
         "bad_preset",
         &["unknown-key", "out-of-range", "unknown-value", "wrong-type"],
     ),
+    ("constant_combinations", &["variant-space"]),
     ("default_out_of_range", &["default-out-of-range"]),
     ("default_when_bad_texture", &["unknown-value"]),
     ("default_when_bool_param", &["bad-condition"]),
@@ -36,9 +37,13 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("default_when_unknown_value", &["unknown-value"]),
     ("duplicate_names", &["duplicate"]),
     ("exclude_constant_keyword", &["bad-condition"]),
+    ("exclude_removes_all", &["no-variants"]),
+    ("float_beyond_f32_range", &["type-range"]),
     ("include_cycle", &["include-cycle"]),
     ("include_outside_root", &["include-outside-root"]),
     ("instances_not_int", &["unknown-param"]),
+    ("int_beyond_i32_range", &["type-range"]),
+    ("limits_below_default", &["unknown-key", "out-of-range"]),
     ("min_above_max", &["min-above-max"]),
     ("missing_entry_point", &["missing-entry-point"]),
     ("missing_include", &["missing-include"]),
@@ -55,8 +60,13 @@ const EXPECTED: &[(&str, &[&str])] = &[
             "unknown-value",
         ],
     ),
+    ("source_outside_root", &["source-outside-root"]),
+    ("stage_mismatch", &["stage-mismatch"]),
     ("toml_syntax", &["toml-syntax"]),
+    ("too_many_textures", &["gpu-limit"]),
+    ("too_many_varyings", &["gpu-limit"]),
     ("trailing_digit_name", &["bad-name"]),
+    ("uniform_too_large", &["gpu-limit"]),
     ("unknown_enum_value", &["unknown-value"]),
     ("unknown_group", &["unknown-group"]),
     ("unknown_key", &["unknown-key"]),
@@ -68,7 +78,10 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("unknown_texture_default", &["unknown-value"]),
     ("unordered_keyframes", &["unordered-keys"]),
     ("variant_budget", &["variant-budget"]),
+    ("variant_space_too_large", &["variant-space"]),
     ("wgsl_error_in_include", &["wgsl-parse"]),
+    ("wgsl_expression_too_deep", &["wgsl-nesting"]),
+    ("wgsl_nested_too_deep", &["wgsl-parse"]),
     ("wgsl_parse_error", &["wgsl-parse"]),
     ("wgsl_reserved_name", &["wgsl-parse"]),
     ("wgsl_validation_error", &["wgsl-validation"]),
@@ -165,6 +178,12 @@ fn wgsl_errors_point_into_the_users_files() {
         ("wgsl_validation_error", "bad/wgsl_validation_error.wgsl"),
         ("wgsl_error_in_include", "lib/broken.wgsl"),
         ("wgsl_reserved_name", "bad/wgsl_reserved_name.toml"),
+        ("wgsl_nested_too_deep", "bad/wgsl_nested_too_deep.wgsl"),
+        (
+            "wgsl_expression_too_deep",
+            "bad/wgsl_expression_too_deep.wgsl",
+        ),
+        ("stage_mismatch", "bad/stage_mismatch.toml"),
     ] {
         let Err((db, diags)) = build(&corpus().join(format!("bad/{name}.toml"))) else {
             panic!("{name} built");
@@ -312,6 +331,10 @@ fn schema_matches_parser_keys() {
     assert_eq!(
         property_names(&s, &items(&prop(top, "pass")), "[[pass]]"),
         sorted(PASS_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &prop(top, "limits"), "[limits]"),
+        sorted(LIMITS_KEYS)
     );
     let defs = s.get("definitions").expect("definitions");
     assert_eq!(

@@ -46,6 +46,8 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("empty_scene", &["empty-scene"]),
     ("excluded_variant", &["excluded-variant"]),
     ("excluded_variant_preset", &["excluded-variant"]),
+    ("gpu_limit", &["gpu-limit"]),
+    ("material_outside_root", &["material-outside-root"]),
     ("missing_mesh", &["missing-key"]),
     ("missing_root", &["missing-root"]),
     ("missing_scene_table", &["missing-key"]),

@@ -5,6 +5,7 @@ use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
 use weft_compiler::{BuildOptions, BuildOutput, output};
 use weft_front::{Diagnostics, SourceDb};
 use weft_meta::MaterialMetadata;
@@ -76,6 +77,10 @@ enum Command {
         /// for `tier = "auto"` instead of the committed lavapipe bench figures.
         #[arg(long, requires = "scene")]
         tier_costs: Option<PathBuf>,
+        /// Seconds to wait for another build writing into the same output folder
+        /// (they are serialised by a lock file, `.<out>.lock`); 0 fails at once.
+        #[arg(long, value_name = "SECONDS", default_value_t = 120.0)]
+        lock_timeout: f64,
     },
     /// Report diagnostics only; writes nothing. Exit status 1 on any error.
     #[command(
@@ -130,6 +135,32 @@ pub(crate) fn report(db: &SourceDb, diags: &Diagnostics, color: Color) {
     }
 }
 
+/// Locks the output folder `dir` for this build (see `weft_compiler::output`),
+/// waiting up to `wait` for another build writing into it; prints why not.
+pub(crate) fn lock_output(dir: &Path, wait: Duration, quiet: bool) -> Option<output::OutputLock> {
+    let on_wait = &mut |holder: &str| {
+        if !quiet {
+            eprintln!(
+                "waiting up to {:.0} s (--lock-timeout) for another build writing into `{}` ({holder})",
+                wait.as_secs_f64(),
+                dir.display()
+            );
+        }
+    };
+    match output::OutputLock::acquire(dir, wait, on_wait) {
+        Ok(lock) => Some(lock),
+        Err(e) => {
+            let hint = if e.kind() == std::io::ErrorKind::ResourceBusy {
+                "; wait for it, or give a longer --lock-timeout"
+            } else {
+                ""
+            };
+            eprintln!("error: cannot write `{}`: {e}{hint}", dir.display());
+            None
+        }
+    }
+}
+
 /// Builds from folders and/or files.
 fn build(
     paths: &[PathBuf],
@@ -146,6 +177,9 @@ fn build(
             }
         }
     };
+    if let Some(empty) = no_material(paths) {
+        return Err(empty);
+    }
     if let [dir] = paths
         && dir.is_dir()
     {
@@ -160,6 +194,45 @@ fn build(
         }
     }
     weft_compiler::build_materials(&files, None, options, &progress)
+}
+
+/// A `no-material` error for each folder that holds no material
+/// (`<folder>/<name>/<name>.toml`); None when every path names some.
+fn no_material(paths: &[PathBuf]) -> Option<(SourceDb, Diagnostics)> {
+    let mut diags = Diagnostics::new();
+    for p in paths.iter().filter(|p| p.is_file()) {
+        let name = p
+            .file_name()
+            .map(|n| n.to_string_lossy())
+            .unwrap_or_default();
+        let hint = if name.ends_with(".scene.toml") {
+            "this is a scene manifest: build it with `weft build --scene <file>`"
+        } else if !name.ends_with(".toml") {
+            "a material is a .toml file (its WGSL is named by `source`)"
+        } else {
+            continue;
+        };
+        diags.push(
+            codespan_reporting::diagnostic::Diagnostic::error()
+                .with_code("no-material")
+                .with_message(format!("`{}` is not a material", p.display()))
+                .with_notes(vec![hint.into()]),
+        );
+    }
+    for p in paths.iter().filter(|p| p.is_dir()) {
+        // An unreadable folder is reported by the build itself.
+        if weft_compiler::library::discover(p).is_ok_and(|found| found.is_empty()) {
+            diags.push(
+                codespan_reporting::diagnostic::Diagnostic::error()
+                    .with_code("no-material")
+                    .with_message(format!("no material in `{}`", p.display()))
+                    .with_notes(vec![
+                        "a materials folder holds one folder per material, `<name>/<name>.toml` (and `lib/` for shared WGSL); or name material .toml files".into(),
+                    ]),
+            );
+        }
+    }
+    (!diags.is_empty()).then(|| (SourceDb::new(), diags))
 }
 
 fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
@@ -191,10 +264,17 @@ fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
+        Command::Build { lock_timeout, .. }
+            if !(lock_timeout.is_finite() && lock_timeout >= 0.0) =>
+        {
+            eprintln!("error: --lock-timeout must be a number of seconds, 0 or more");
+            ExitCode::FAILURE
+        }
         Command::Build {
             scene: Some(scene),
             out,
             tier_costs,
+            lock_timeout,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated/scenes"));
@@ -202,6 +282,7 @@ fn main() -> ExitCode {
                 &scene,
                 &out,
                 tier_costs.as_ref(),
+                Duration::from_secs_f64(lock_timeout),
                 cli.quiet,
                 cli.color,
             ) {
@@ -215,29 +296,66 @@ fn main() -> ExitCode {
             out,
             jobs,
             force,
+            lock_timeout,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated"));
             let started = std::time::Instant::now();
+            let lock_wait = Duration::from_secs_f64(lock_timeout);
+            // An existing output folder is locked for the whole build, so that
+            // no other build replaces it while unchanged files are read from
+            // it; a new one only for the write (nothing is created on error).
+            let mut lock = None;
+            if out.exists() {
+                lock = lock_output(&out, lock_wait, cli.quiet);
+                if lock.is_none() {
+                    return ExitCode::FAILURE;
+                }
+            }
+            // Unchanged materials' files stay in `out`, unread (weft_compiler::unchanged).
             let options = BuildOptions {
                 jobs,
                 reuse_from: (!force).then(|| out.clone()),
+                keep_unchanged: true,
             };
             match build(&paths, &options, cli.quiet) {
-                Ok(result) => {
+                Ok(mut result) => {
                     if let Some((db, warnings)) = &result.warnings {
                         report(db, warnings, cli.color);
                     }
-                    if let Err(e) = output::write_atomically(&out, &result.files, PRESERVED) {
-                        eprintln!("error: cannot write `{}`: {e}", out.display());
+                    let Some(lock) = lock.or_else(|| lock_output(&out, lock_wait, cli.quiet))
+                    else {
+                        return ExitCode::FAILURE;
+                    };
+                    // Nothing to write when `out` already holds exactly this build.
+                    let current = result.up_to_date(&out, PRESERVED).unwrap_or(false);
+                    if !current && result.load_kept().is_err() {
+                        // A kept file changed since it was built: recompile its material.
+                        let options = BuildOptions {
+                            keep_unchanged: false,
+                            ..options
+                        };
+                        match build(&paths, &options, true) {
+                            Ok(r) => result = r,
+                            Err((db, diags)) => {
+                                report(&db, &diags, cli.color);
+                                return ExitCode::FAILURE;
+                            }
+                        }
+                    }
+                    if !current && let Err(e) = lock.write(&result.files, PRESERVED) {
+                        eprintln!(
+                            "error: cannot write `{}`: {e}; the old output is unchanged",
+                            out.display()
+                        );
                         return ExitCode::FAILURE;
                     }
                     if !cli.quiet {
                         println!(
                             "built {} material(s), {} variant(s), {} file(s) into {} in {:.2}s{}",
-                            result.materials.len(),
+                            result.material_count(),
                             result.variant_count,
-                            result.files.len(),
+                            result.file_count(),
                             out.display(),
                             started.elapsed().as_secs_f64(),
                             if result.reused.is_empty() {

@@ -1,15 +1,17 @@
 //! `weft build --scene`: one scene's shaders, specialised per instance, and
 //! its `<scene>.scene.json`, written atomically (nothing on error).
 
-use crate::{Color, report};
+use crate::{Color, lock_output, report};
 use std::path::{Path, PathBuf};
-use weft_compiler::{SceneBuildOptions, output};
+use std::time::Duration;
+use weft_compiler::SceneBuildOptions;
 
 /// Builds the scene and writes it into `out` (which then holds `<scene>/`).
 pub fn build_scene_command(
     scene: &Path,
     out: &Path,
     tier_costs: Option<&PathBuf>,
+    lock_wait: Duration,
     quiet: bool,
     color: Color,
 ) -> bool {
@@ -43,9 +45,16 @@ pub fn build_scene_command(
         .iter()
         .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes.clone())))
         .collect();
+    // Same machinery as a library build: `<out>/.<scene>.lock`, atomic swap.
     let dir = out.join(&result.name);
-    if let Err(e) = output::write_atomically(&dir, &files, &[]) {
-        eprintln!("error: cannot write `{}`: {e}", dir.display());
+    let Some(lock) = lock_output(&dir, lock_wait, quiet) else {
+        return false;
+    };
+    if let Err(e) = lock.write(&files, &[]) {
+        eprintln!(
+            "error: cannot write `{}`: {e}; the old output is unchanged",
+            dir.display()
+        );
         return false;
     }
     if !quiet {

@@ -53,6 +53,31 @@ fn check_rejects_a_bad_material_with_a_located_diagnostic() {
 }
 
 #[test]
+fn check_says_when_there_is_no_material() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("lib")).unwrap();
+    let o = weft(&["check", "--color", "never", dir.path().to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let err = stderr(&o);
+    assert!(err.contains("error[no-material]: no material in"), "{err}");
+    let wgsl = dir.path().join("lib/shared.wgsl");
+    std::fs::write(&wgsl, "fn f() {}\n").unwrap();
+    let o = weft(&["check", "--color", "never", wgsl.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("is not a material"), "{}", stderr(&o));
+    // `build` too: nothing is written.
+    let out = dir.path().join("out");
+    let o = weft(&[
+        "build",
+        dir.path().to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(!out.exists());
+}
+
+#[test]
 fn build_writes_nothing_on_error() {
     let dir = tempfile::tempdir().unwrap();
     let toml = dir.path().join("bad.toml");

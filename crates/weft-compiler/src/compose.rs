@@ -154,25 +154,82 @@ pub fn parse_and_validate(
         Err(e) => {
             let labels: Vec<(naga::Span, String)> =
                 e.labels().map(|(s, m)| (s, m.to_string())).collect();
-            let notes = e.notes().map(|n| n.to_string()).collect();
-            diags.push(naga_diagnostic(
-                "wgsl-parse",
-                e.message().to_string(),
-                labels,
-                notes,
-                &composed.map,
-                &m.decl,
-            ));
+            let notes: Vec<String> = e.notes().map(|n| n.to_string()).collect();
+            let d = match labels.is_empty() {
+                // naga's recursion limit says nothing about where: find the deepest nesting.
+                true => parse_limit_diagnostic(composed, e.message(), &notes),
+                false => None,
+            };
+            diags.push(d.unwrap_or_else(|| {
+                naga_diagnostic(
+                    "wgsl-parse",
+                    e.message().to_string(),
+                    labels,
+                    notes,
+                    &composed.map,
+                    &m.decl,
+                )
+            }));
             return None;
         }
     };
-    match validator().validate(&module) {
-        Ok(info) => Some((module, info)),
+    if let Some((depth, span)) = crate::nesting::too_deep(&module) {
+        let limit = crate::nesting::MAX_EXPRESSION_DEPTH;
+        diags.push(naga_diagnostic(
+            "wgsl-nesting",
+            format!("an expression is nested {depth} levels deep, more than weft's limit of {limit}"),
+            [(span, format!("{depth} levels of operations"))],
+            vec![
+                "naga's shader writers recurse once per level of an expression, so weft bounds the depth (long chains such as `a + b + c + …` count one level per operator)".into(),
+                "split the expression with `let` bindings: each named value starts again at one level".into(),
+            ],
+            &composed.map,
+            &m.decl,
+        ));
+        return None;
+    }
+    let info = match validator().validate(&module) {
+        Ok(info) => info,
         Err(e) => {
             diags.push(validation_diagnostic(&e, composed, m));
-            None
+            return None;
         }
+    };
+    if !crate::stage_io::check_passes(m, &module, composed, diags) {
+        return None;
     }
+    Some((module, info))
+}
+
+/// naga's WGSL parser gives up at its recursion limit without a location;
+/// the most deeply nested bracket of the user's WGSL is shown instead.
+fn parse_limit_diagnostic(
+    composed: &Composed,
+    message: &str,
+    notes: &[String],
+) -> Option<Diagnostic<FileId>> {
+    if !notes.iter().any(|n| n.contains("recursion limit")) && !message.contains("recursion limit")
+    {
+        return None;
+    }
+    let (file, range, depth) = crate::nesting::deepest_bracket(composed)?;
+    let limit = crate::nesting::NAGA_PARSER_RECURSION_LIMIT;
+    Some(
+        Diagnostic::error()
+            .with_code("wgsl-parse")
+            .with_message(format!(
+                "the WGSL nests too deeply for naga's parser (its recursion limit is {limit})"
+            ))
+            .with_labels(vec![
+                Label::primary(file, range).with_message(format!("{depth} brackets deep here")),
+            ])
+            .with_notes(vec![
+                "each nested parenthesis, call, block or statement counts towards naga's limit"
+                    .into(),
+                "flatten the expression with `let` bindings, or move nested code into functions"
+                    .into(),
+            ]),
+    )
 }
 
 pub fn validator() -> naga::valid::Validator {

@@ -13,14 +13,23 @@ pub mod backends;
 pub mod bake;
 pub mod compose;
 pub mod engine_binding;
+pub mod in_memory;
 pub mod library;
+pub mod limits;
 pub mod metadata;
+pub mod nesting;
 pub mod output;
 pub mod prelude;
 pub mod reflect;
 pub mod scene;
 pub mod specialise;
+pub mod stage_io;
+pub mod unchanged;
 pub mod variant;
 
-pub use library::{BuildOptions, BuildOutput, build_library, build_materials, compile_material};
+pub use in_memory::{InMemoryBuild, compile_in_memory};
+pub use library::{
+    BuildOptions, BuildOutput, build_library, build_materials, build_materials_streaming,
+    compile_material,
+};
 pub use scene::{SceneBuildOptions, SceneOutput, build_scene};

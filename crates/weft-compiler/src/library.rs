@@ -40,15 +40,23 @@ pub struct BuildOptions {
     pub jobs: Option<usize>,
     /// Reuse a material's files from this output folder when its inputs are unchanged.
     pub reuse_from: Option<PathBuf>,
+    /// With `reuse_from`: leave an unchanged material's files where they are,
+    /// unread (listed in [`BuildOutput::kept`], not in `files`); see
+    /// [`BuildOutput::up_to_date`] and [`BuildOutput::load_kept`].
+    pub keep_unchanged: bool,
 }
 
 /// Everything a build produced: files relative to the output folder.
 #[derive(Default)]
 pub struct BuildOutput {
     pub files: BTreeMap<String, Vec<u8>>,
+    /// Metadata of every material, except those `kept` on disk.
     pub materials: Vec<MaterialMetadata>,
     /// Materials whose files were reused unchanged.
     pub reused: Vec<String>,
+    /// With `keep_unchanged`: the files of reused materials, left in
+    /// `reuse_from` (not in `files`).
+    pub kept: Option<crate::unchanged::KeptFiles>,
     pub variant_count: usize,
     /// Warnings (e.g. parameters no variant reads), with the files they point into.
     pub warnings: Option<(SourceDb, Diagnostics)>,
@@ -123,6 +131,16 @@ pub fn compile_material(
     if compiled.len() != keys.len() {
         return None;
     }
+    let engine = compose::engine_interface_file(db);
+    let shown: Vec<String> = compiled
+        .iter()
+        .map(|v| format!("variant `{}`", v.id))
+        .collect();
+    if !crate::limits::check_variants(
+        m, &shown, &composed, &module, engine, &keys, &compiled, diags,
+    ) {
+        return None;
+    }
     warn_unread_parameters(m, &compiled, diags);
     let aliases = variant::find_aliases(&compiled);
     let mut files = Vec::new();
@@ -173,6 +191,7 @@ pub fn compile_material(
         presets: metadata::presets(m),
         passes: metadata::passes(m),
         vertex_inputs: metadata::vertex_inputs(m),
+        limits: (!m.limits.is_default()).then(|| m.limits.clone()),
         variants: variants_meta,
         languages: crate::engine_binding::languages(),
         // Measured by `weft bench`, attached at load time from reports/, never built in.
@@ -207,7 +226,11 @@ fn warn_unread_parameters(m: &Material, compiled: &[CompiledVariant], diags: &mu
 
 /// Passes name entry points that exist with the right stage; vertex stages
 /// read only the inputs the material `requires`.
-fn check_interface(m: &Material, module: &naga::Module, diags: &mut Diagnostics) -> bool {
+pub(crate) fn check_interface(
+    m: &Material,
+    module: &naga::Module,
+    diags: &mut Diagnostics,
+) -> bool {
     let before = diags.error_count();
     for pass in &m.passes {
         let wanted = [
@@ -329,19 +352,56 @@ pub fn build_materials(
     options: &BuildOptions,
     progress: &(dyn Fn(usize, usize, &str) + Sync),
 ) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
+    let mut files = BTreeMap::new();
+    let mut out = build_materials_streaming(paths, root, options, progress, &mut |rel, bytes| {
+        files.insert(rel, bytes);
+        Ok(())
+    })?;
+    out.files = files;
+    Ok(out)
+}
+
+/// As [`build_materials`], but hands every file to `sink` (path relative to
+/// the output folder, bytes) as soon as its material is compiled instead of
+/// collecting them in [`BuildOutput::files`], which stays empty: a sink that
+/// writes them to disk holds one material's files at a time, not the
+/// library's. Files come material by material, in `paths` order, then the
+/// library-wide files (LUTs, schemas). On any error the build stops and the
+/// files already handed over belong to a failed build (discard them); an
+/// error from `sink` is reported as an `io` diagnostic.
+pub fn build_materials_streaming(
+    paths: &[PathBuf],
+    root: Option<&Path>,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize, &str) + Sync),
+    sink: &mut dyn FnMut(String, Vec<u8>) -> std::io::Result<()>,
+) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
     let mut db = SourceDb::new();
     let mut diags = Diagnostics::new();
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(options.jobs.unwrap_or(0))
-        .build()
-        .expect("thread pool");
+    let pool = crate::nesting::compiler_pool(options.jobs);
     let mut out = BuildOutput::default();
+    let mut previous = crate::unchanged::Previous::read(paths, options, &pool);
+    let mut names = std::collections::HashSet::new();
+    let mut put = |rel: String, bytes: Vec<u8>, diags: &mut Diagnostics| -> bool {
+        let message = format!("cannot write `{rel}`");
+        match sink(rel, bytes) {
+            Ok(()) => true,
+            Err(e) => {
+                diags.push(
+                    Diagnostic::error()
+                        .with_code("io")
+                        .with_message(format!("{message}: {e}")),
+                );
+                false
+            }
+        }
+    };
     for (i, path) in paths.iter().enumerate() {
         let root = root.map_or_else(|| weft_front::find_root(path), Path::to_path_buf);
         let Some(m) = weft_front::load_material(path, &root, &mut db, &mut diags) else {
             continue;
         };
-        if out.materials.iter().any(|x| x.name == m.name) {
+        if !names.insert(m.name.clone()) {
             diags.push(
                 Diagnostic::error()
                     .with_code("duplicate")
@@ -355,6 +415,24 @@ pub fn build_materials(
         }
         progress(i, paths.len(), &m.name);
         let hash = inputs_hash(&m, &db);
+        if let Some(dir) = options
+            .reuse_from
+            .as_deref()
+            .filter(|_| options.keep_unchanged)
+            && let Some(k) = previous.keep(dir, &m.name, &hash)
+        {
+            let kept = out.kept.get_or_insert_with(|| crate::unchanged::KeptFiles {
+                dir: dir.to_path_buf(),
+                ..Default::default()
+            });
+            for (name, sha) in k.files {
+                kept.files.insert(format!("{}/{name}", m.name), sha);
+            }
+            kept.materials.push(m.name.clone());
+            out.reused.push(m.name.clone());
+            out.variant_count += k.variants;
+            continue;
+        }
         let reused = options
             .reuse_from
             .as_deref()
@@ -366,15 +444,20 @@ pub fn build_materials(
             }
             None => pool.install(|| compile_material(&m, &mut db, &mut diags)),
         };
-        if let Some((meta, files)) = result {
+        // Nothing more is handed over once the build has failed.
+        if let Some((meta, files)) = result.filter(|_| !diags.has_errors()) {
             out.variant_count += meta.variants.len();
             for (name, bytes) in files {
-                out.files.insert(format!("{}/{name}", m.name), bytes);
+                if !put(format!("{}/{name}", m.name), bytes, &mut diags) {
+                    return Err((db, diags));
+                }
             }
             let mut json = serde_json::to_string_pretty(&meta).expect("metadata serialises");
             json.push('\n');
-            out.files
-                .insert(format!("{0}/{0}.meta.json", m.name), json.into_bytes());
+            let rel = format!("{0}/{0}.meta.json", m.name);
+            if !put(rel, json.into_bytes(), &mut diags) {
+                return Err((db, diags));
+            }
             out.materials.push(meta);
         }
     }
@@ -382,7 +465,13 @@ pub fn build_materials(
         return Err((db, diags));
     }
     progress(paths.len(), paths.len(), "");
-    add_library_files(&mut out.files, options.reuse_from.as_deref());
+    let mut library = BTreeMap::new();
+    add_library_files(&mut library, options.reuse_from.as_deref());
+    for (rel, bytes) in library {
+        if !put(rel, bytes, &mut diags) {
+            return Err((db, diags));
+        }
+    }
     if !diags.is_empty() {
         out.warnings = Some((db, diags));
     }

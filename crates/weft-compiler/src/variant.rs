@@ -178,6 +178,14 @@ pub fn emit_shader(
             let kw = &m.keywords[k];
             suffix.push_str(&format!("+{}-{}", kw.name.to_lowercase(), kw.values[v]));
             constants.insert(kw.name.clone(), kw.values[v].clone());
+            // A keyword the module no longer reads has no override left to set.
+            let read = specialised
+                .overrides
+                .iter()
+                .any(|(_, o)| o.name.as_deref() == Some(kw.name.as_str()));
+            if !read {
+                continue;
+            }
             pc.insert(
                 kw.name.clone(),
                 if kw.kind == KeywordKind::Toggle {

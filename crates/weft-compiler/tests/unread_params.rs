@@ -39,3 +39,32 @@ fn a_parameter_no_variant_reads_is_a_warning() {
         }
     }
 }
+
+/// A `constant` keyword no code reads leaves no override to set: the other
+/// languages' files are still emitted, one per value.
+#[test]
+fn a_constant_keyword_no_code_reads_still_builds() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path();
+    let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/diagnostics/materials");
+    std::fs::create_dir_all(root.join("lib")).unwrap();
+    std::fs::copy(corpus.join("lib/common.wgsl"), root.join("lib/common.wgsl")).unwrap();
+    std::fs::create_dir_all(root.join("ok")).unwrap();
+    std::fs::copy(corpus.join("ok/ok.wgsl"), root.join("ok/ok.wgsl")).unwrap();
+    let toml = std::fs::read_to_string(corpus.join("ok/ok.toml")).unwrap()
+        + "\n[keywords.UNUSED_OPT]\ntype = \"toggle\"\nmode = \"constant\"\n";
+    std::fs::write(root.join("ok/ok.toml"), toml).unwrap();
+    let out = build_materials(
+        &[root.join("ok/ok.toml")],
+        Some(root),
+        &BuildOptions::default(),
+        &|_, _, _| {},
+    )
+    .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
+    let spirv = out
+        .files
+        .keys()
+        .filter(|f| f.ends_with(".spv") && f.contains("+unused_opt-"))
+        .count();
+    assert!(spirv >= 2, "one SPIR-V file per value: {spirv}");
+}

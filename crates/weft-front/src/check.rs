@@ -497,7 +497,34 @@ fn check_instances(m: &Material, sites: &Sites, diags: &mut Diagnostics) {
             .flatten()
             .unwrap_or(pass.decl.span.clone());
         match m.param(name) {
-            Some(p) if p.kind == ParamKind::Int => {}
+            Some(p) if p.kind == ParamKind::Int => {
+                let lowest = match (&p.default, p.range) {
+                    (ParamValue::Int(d), Some(r)) => r[0].min(*d as f64),
+                    (ParamValue::Int(d), None) => *d as f64,
+                    _ => 0.0,
+                };
+                if lowest < 0.0 {
+                    let d = diags.error(
+                        "type-range",
+                        format!(
+                            "pass `{}` draws `{name}` instances, which can be {} and does not fit in a u32",
+                            pass.name,
+                            crate::gpu_numbers::show(lowest)
+                        ),
+                        p.decl.file,
+                        p.decl.span.clone(),
+                        format!("`{name}` can be negative"),
+                    );
+                    d.labels.push(
+                        Label::secondary(pass.decl.file, span)
+                            .with_message("used as the instance count here"),
+                    );
+                    d.notes.push(format!(
+                        "an instance count is a u32 ({}); give `{name}` a default and a `range` of 0 or more",
+                        crate::gpu_numbers::GpuType::U32.range_text()
+                    ));
+                }
+            }
             Some(p) => {
                 let d = diags.error(
                     "unknown-param",
@@ -545,8 +572,16 @@ fn check_budget(m: &Material, diags: &mut Diagnostics) {
     if m.tiers.values.is_empty() {
         return;
     }
+    // Counted first, so a space too large to enumerate fails at once.
+    if !crate::variant_space::check_space(m, diags) {
+        return;
+    }
     let all = variants::all_variants(m).len();
     let kept = variants::variants(m).len();
+    if kept == 0 {
+        crate::variant_space::report_all_excluded(m, diags);
+        return;
+    }
     if kept > m.max_variants {
         let span = m.max_variants_span.clone().unwrap_or(m.decl.span.clone());
         let d = diags.error(

@@ -58,6 +58,8 @@ pub struct Resolver<'a> {
     done: Vec<SourceFile>,
     /// DFS stack for cycle reporting: (canonical path, file id, origin).
     stack: Vec<(PathBuf, Origin)>,
+    /// Files come only from `db` (added beforehand), never the file system.
+    in_memory: bool,
 }
 
 impl<'a> Resolver<'a> {
@@ -69,13 +71,39 @@ impl<'a> Resolver<'a> {
             root,
             done: Vec::new(),
             stack: Vec::new(),
+            in_memory: false,
+        }
+    }
+
+    /// A resolver that reads nothing from disk: every file it may include
+    /// must already be in `db`, under its path lexically normalised (see
+    /// [`normalize`]); `root` is taken as written.
+    pub fn in_memory(db: &'a mut SourceDb, diags: &'a mut Diagnostics, root: &Path) -> Self {
+        Self {
+            db,
+            diags,
+            root: normalize(root),
+            done: Vec::new(),
+            stack: Vec::new(),
+            in_memory: true,
+        }
+    }
+
+    /// The canonical path of an existing file: the file system's, or in
+    /// memory the normalised path of a file in `db`.
+    fn locate(&self, path: &Path) -> Option<PathBuf> {
+        if self.in_memory {
+            let p = normalize(path);
+            self.db.find(&p).map(|_| p)
+        } else {
+            path.canonicalize().ok()
         }
     }
 
     /// Resolves an include path (relative to the root).
     pub fn include(&mut self, rel: &str, origin: Origin) {
         let candidate = self.root.join(rel);
-        let Ok(canonical) = candidate.canonicalize() else {
+        let Some(canonical) = self.locate(&candidate) else {
             let root = self.shown_root();
             let d = self.diags.error(
                 "missing-include",
@@ -92,6 +120,7 @@ impl<'a> Resolver<'a> {
         };
         if !canonical.starts_with(&self.root) {
             let root = self.shown_root();
+            let how = self.escape(rel, &candidate);
             let d = self.diags.error(
                 "include-outside-root",
                 format!("include `{rel}` is outside the materials root"),
@@ -99,6 +128,7 @@ impl<'a> Resolver<'a> {
                 origin.span,
                 "leaves the materials folder",
             );
+            d.notes.extend(how);
             d.notes.push(format!(
                 "only files under the materials root `{}` can be included; move the file into its `lib/` folder",
                 root
@@ -108,11 +138,43 @@ impl<'a> Resolver<'a> {
         self.visit(canonical, origin);
     }
 
-    /// Resolves a file given by absolute path (the material's own source).
-    pub fn source(&mut self, path: &Path, origin: Origin) {
-        match path.canonicalize() {
-            Ok(c) => self.visit(c, origin),
-            Err(_) => {
+    /// How a path that resolved outside the root got there, when it is not
+    /// plain `..`: an absolute path, or a symbolic link.
+    fn escape(&self, written: &str, candidate: &Path) -> Option<String> {
+        if Path::new(written).is_absolute() {
+            Some(format!(
+                "`{written}` is an absolute path; write it relative to the materials root"
+            ))
+        } else if normalize(candidate).starts_with(&self.root) {
+            Some(format!(
+                "`{written}` is inside the root as written, but a symbolic link on the way leads out of it"
+            ))
+        } else {
+            None
+        }
+    }
+
+    /// Resolves the material's own source: `written` (its `source`, relative
+    /// to the TOML file) at `path`. Like includes, it must be under the root.
+    pub fn source(&mut self, written: &str, path: &Path, origin: Origin) {
+        match self.locate(path) {
+            Some(c) if !c.starts_with(&self.root) => {
+                let root = self.shown_root();
+                let how = self.escape(written, path);
+                let d = self.diags.error(
+                    "source-outside-root",
+                    format!("WGSL source `{written}` is outside the materials root"),
+                    origin.file,
+                    origin.span,
+                    "leaves the materials folder",
+                );
+                d.notes.extend(how);
+                d.notes.push(format!(
+                    "a material's files must be under its materials root `{root}`; move the WGSL next to the TOML file"
+                ));
+            }
+            Some(c) => self.visit(c, origin),
+            None => {
                 let d = self.diags.error(
                     "missing-source",
                     format!("cannot find WGSL source `{}`", display_path(path)),
@@ -201,6 +263,56 @@ impl<'a> Resolver<'a> {
     }
 }
 
+/// Whether a material's TOML file (canonical path `abs`) lies under the
+/// materials `root`; reports it when not (a material folder that is a
+/// symbolic link out of the root, for one).
+pub fn material_inside_root(
+    abs: &Path,
+    root: &Path,
+    file: FileId,
+    diags: &mut Diagnostics,
+) -> bool {
+    let root = root.canonicalize().unwrap_or_else(|_| root.to_path_buf());
+    if abs.starts_with(&root) {
+        return true;
+    }
+    let shown = match display_path(&root) {
+        s if s.is_empty() => ".".into(),
+        s => s,
+    };
+    let d = diags.error(
+        "material-outside-root",
+        format!(
+            "material `{}` is outside the materials root",
+            display_path(abs)
+        ),
+        file,
+        0..0,
+        "this file",
+    );
+    d.notes.push(format!(
+        "a material is `<root>/<name>/<name>.toml` under the materials root `{shown}`; its folder (or a symbolic link on the way) leads out of the root"
+    ));
+    false
+}
+
+/// `path` with `.` and `..` components resolved lexically (no file system
+/// access, links not followed): how in-memory files are named.
+pub fn normalize(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut out = PathBuf::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
 /// A path as shown in diagnostics: relative to the working directory when inside it.
 pub fn display_path(path: &Path) -> String {
     let cwd = std::env::current_dir()
@@ -215,6 +327,48 @@ pub fn display_path(path: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The codes a material `<root>/m/m.toml` whose source is written
+    /// `source` gets, and whether the source was resolved.
+    fn resolve_source(root: &Path, source: &str) -> (Vec<String>, usize) {
+        let mut db = SourceDb::new();
+        let mut diags = Diagnostics::new();
+        let toml = db.add(&root.join("m/m.toml"), "m.toml".into(), String::new());
+        let mut r = Resolver::new(&mut db, &mut diags, root);
+        r.source(
+            source,
+            &root.join("m").join(source),
+            Origin {
+                file: toml,
+                span: 0..0,
+            },
+        );
+        let n = r.finish().len();
+        (diags.iter().filter_map(|d| d.code.clone()).collect(), n)
+    }
+
+    #[test]
+    fn sources_stay_under_the_root() {
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path().join("materials");
+        std::fs::create_dir_all(root.join("m")).unwrap();
+        std::fs::write(root.join("m/m.wgsl"), "").unwrap();
+        std::fs::write(tmp.path().join("outside.wgsl"), "").unwrap();
+        assert_eq!(resolve_source(&root, "m.wgsl"), (vec![], 1));
+        let out = || (vec!["source-outside-root".to_string()], 0);
+        assert_eq!(resolve_source(&root, "../../outside.wgsl"), out());
+        let abs = tmp.path().join("outside.wgsl");
+        assert_eq!(resolve_source(&root, abs.to_str().unwrap()), out());
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(tmp.path().join("outside.wgsl"), root.join("m/link.wgsl"))
+                .unwrap();
+            assert_eq!(resolve_source(&root, "link.wgsl"), out());
+            // A link that stays inside the root is fine.
+            std::os::unix::fs::symlink(root.join("m/m.wgsl"), root.join("m/inside.wgsl")).unwrap();
+            assert_eq!(resolve_source(&root, "inside.wgsl"), (vec![], 1));
+        }
+    }
     #[test]
     fn finds_directives() {
         let text = "// @include \"lib/a.wgsl\"\nfn f() {}\n  //@include \"b.wgsl\"\n";

@@ -7,12 +7,14 @@
 pub mod check;
 pub mod condition;
 pub mod diag;
+pub mod gpu_numbers;
 pub mod includes;
 pub mod model;
 pub mod parse;
 pub mod scene;
 pub mod toml_reader;
 pub mod values;
+pub mod variant_space;
 pub mod variants;
 
 pub use diag::{Diagnostics, FileId, SourceDb, Span};
@@ -72,14 +74,59 @@ pub fn load_material(
     diags: &mut Diagnostics,
 ) -> Option<Material> {
     let (abs, file, text) = read_source(path, db, diags)?;
+    load_loaded(&abs, file, &text, root, false, db, diags)
+}
+
+/// Loads and checks one material held in memory, reading nothing from disk
+/// (for fuzzing and tools that keep sources in memory). `toml_path` and the
+/// paths in `files` (WGSL text by path) are relative to `root`, as in
+/// `"silk/silk.toml"` and `"lib/brdf.wgsl"`; a source or include not in
+/// `files` is missing. Diagnostics name the files by those relative paths.
+pub fn load_material_in_memory(
+    toml_path: &str,
+    toml_text: &str,
+    files: &[(String, String)],
+    root: &Path,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> Option<Material> {
+    let add = |db: &mut SourceDb, rel: &str, text: &str| {
+        db.add(
+            &includes::normalize(&root.join(rel)),
+            rel.to_string(),
+            text.to_string(),
+        )
+    };
+    for (rel, text) in files {
+        add(db, rel, text);
+    }
+    let abs = includes::normalize(&root.join(toml_path));
+    let file = add(db, toml_path, toml_text);
+    load_loaded(&abs, file, toml_text, root, true, db, diags)
+}
+
+/// Parses an already-read material TOML, resolves its WGSL sources (from
+/// `db` alone when `in_memory`) and checks the result.
+fn load_loaded(
+    abs: &Path,
+    file: FileId,
+    text: &str,
+    root: &Path,
+    in_memory: bool,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> Option<Material> {
     let before = diags.error_count();
+    if !in_memory && !includes::material_inside_root(abs, root, file, diags) {
+        return None;
+    }
     let mut material = {
         let mut cx = Cx { file, diags };
-        parse::parse_material(&text, &abs, root, &mut cx)?
+        parse::parse_material(text, abs, root, &mut cx)?
     };
 
     // WGSL sources: the material's own file last, its includes first.
-    let (source, extra) = parse::source_entries(&text);
+    let (source, extra) = parse::source_entries(text);
     let (source_rel, source_span) = source.unwrap_or_else(|| {
         let stem = abs
             .file_stem()
@@ -87,12 +134,17 @@ pub fn load_material(
             .unwrap_or_default();
         (format!("{stem}.wgsl"), material.decl.span.clone())
     });
-    let mut resolver = Resolver::new(db, diags, root);
+    let mut resolver = if in_memory {
+        Resolver::in_memory(db, diags, root)
+    } else {
+        Resolver::new(db, diags, root)
+    };
     for (inc, span) in extra {
         resolver.include(&inc, Origin { file, span });
     }
     let dir = abs.parent().unwrap_or(Path::new("."));
     resolver.source(
+        &source_rel,
         &dir.join(&source_rel),
         Origin {
             file,

@@ -49,6 +49,10 @@ pub struct Material {
     pub exclude_spans: Vec<Span>,
     pub presets: Vec<Preset>,
     pub passes: Vec<Pass>,
+    /// WebGPU limits raised by `[limits]` (the rest are WebGPU's defaults).
+    pub limits: weft_meta::DeviceLimits,
+    /// Where each declared limit is written, in `file`.
+    pub limit_spans: Vec<(&'static str, Span)>,
     pub decl: Loc,
 }
 

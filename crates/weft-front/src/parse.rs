@@ -8,6 +8,7 @@
 //! table readers share; each kind of table has its own submodule.
 
 mod keywords;
+mod limits;
 mod params;
 mod passes;
 mod presets;
@@ -21,7 +22,7 @@ use std::path::Path;
 use toml::de::{DeTable, DeValue};
 
 pub const TOP_KEYS: &[&str] = &[
-    "material", "groups", "params", "keywords", "tier", "variants", "presets", "pass",
+    "material", "groups", "params", "keywords", "tier", "variants", "presets", "pass", "limits",
 ];
 pub const MATERIAL_KEYS: &[&str] = &[
     "name",
@@ -82,6 +83,17 @@ pub const PASS_KEYS: &[&str] = &[
     "depth_test",
     "queue",
     "instances",
+];
+/// Keys of `[limits]`: WebGPU's limits in snake_case (`weft_meta::limits::LIMITS`).
+pub const LIMITS_KEYS: &[&str] = &[
+    "max_bind_groups",
+    "max_bindings_per_bind_group",
+    "max_uniform_buffer_binding_size",
+    "max_uniform_buffers_per_shader_stage",
+    "max_sampled_textures_per_shader_stage",
+    "max_samplers_per_shader_stage",
+    "max_vertex_attributes",
+    "max_inter_stage_shader_variables",
 ];
 pub use crate::values::{KEYFRAME_KEYS, STOP_KEYS};
 
@@ -178,6 +190,8 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         exclude_spans: Vec::new(),
         presets: Vec::new(),
         passes: Vec::new(),
+        limits: weft_meta::DeviceLimits::default(),
+        limit_spans: Vec::new(),
         decl,
         name,
     };
@@ -236,6 +250,7 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
     }
 
     keywords::parse_tiers(&top, &mut material, cx);
+    limits::parse_limits(&top, &mut material, cx);
 
     if let Some(v) = top
         .get("variants")

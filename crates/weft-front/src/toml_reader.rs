@@ -243,11 +243,15 @@ pub fn expect_number(v: &Value, what: &str, cx: &mut Cx) -> Option<f64> {
     match n {
         Some(n) if n.is_finite() => Some(n),
         _ => {
-            cx.error(
-                "wrong-type",
+            cx.error_with_note(
+                "type-range",
                 format!("{what} must be a finite number"),
                 v.span(),
                 "not finite",
+                format!(
+                    "numbers are stored on the GPU as f32 or i32, which hold no infinities or NaN (an f32: {})",
+                    crate::gpu_numbers::GpuType::F32.range_text()
+                ),
             );
             None
         }

@@ -4,6 +4,7 @@
 //! rules (components, ranges, built-in textures, keyframes, stops) cannot drift.
 
 use crate::diag::Span;
+use crate::gpu_numbers::{self, GpuType};
 use crate::model::{Loc, ParamValue};
 use crate::toml_reader::{Cx, Table, Value, expect_array, expect_number, expect_string};
 use codespan_reporting::diagnostic::Label;
@@ -153,12 +154,16 @@ pub fn parse_value(
     match kind {
         ParamKind::Float => {
             let x = expect_number(v, what, cx)?;
-            check(cx, x, v.span());
+            if gpu_numbers::check(cx, GpuType::F32, x, v.span(), what) {
+                check(cx, x, v.span());
+            }
             Some(ParamValue::Float(x))
         }
         ParamKind::Int => {
             let x = crate::toml_reader::expect_integer(v, what, cx)?;
-            check(cx, x as f64, v.span());
+            if gpu_numbers::check(cx, GpuType::I32, x as f64, v.span(), what) {
+                check(cx, x as f64, v.span());
+            }
             Some(ParamValue::Int(x))
         }
         ParamKind::Bool => crate::toml_reader::expect_bool(v, what, cx).map(ParamValue::Bool),
@@ -189,7 +194,9 @@ pub fn parse_value(
             let mut out = Vec::new();
             for item in items {
                 let x = expect_number(item, what, cx)?;
-                check(cx, x, item.span());
+                if gpu_numbers::check(cx, GpuType::F32, x, item.span(), what) {
+                    check(cx, x, item.span());
+                }
                 out.push(x);
             }
             if kind == ParamKind::Color && out.len() == 3 {
@@ -251,7 +258,19 @@ pub fn parse_keyframes(
             );
             return None;
         };
+        let mut fits = true;
+        for key in KEYFRAME_KEYS {
+            if let Some(kv) = k.get(key) {
+                fits &= gpu_numbers::check_value(
+                    cx,
+                    GpuType::F32,
+                    kv,
+                    &format!("`{key}` of a keyframe of {what}"),
+                );
+            }
+        }
         if let Some(r) = range
+            && fits
             && (value < r[0] || value > r[1])
         {
             out_of_range(cx, report, value, r, k.span_of("value"));
@@ -282,7 +301,41 @@ pub fn parse_keyframes(
         );
         return None;
     }
+    if !curve_fits_f32(&keys) {
+        cx.error_with_note(
+            "type-range",
+            format!("{what} does not fit in an f32 once baked"),
+            v.span(),
+            "this curve's time span or baked samples exceed f32's range",
+            format!(
+                "the curve is baked into f32 samples over t, and its time span is an f32 too (an f32: {}); bring the keys' times, values or slopes closer together",
+                GpuType::F32.range_text()
+            ),
+        );
+    }
     Some(keys)
+}
+
+/// The baked form of a curve fits f32: its time span (the prelude divides
+/// by it) and its values at the most samples a curve may have.
+fn curve_fits_f32(keys: &[Keyframe]) -> bool {
+    let [t0, t1] = weft_meta::bake::curve_time_range(keys);
+    let fits = |x: f64| GpuType::F32.fits(x);
+    // Keys that do not fit are reported one by one, not again here.
+    if keys
+        .iter()
+        .any(|k| !(fits(k.time) && fits(k.value) && fits(k.in_slope) && fits(k.out_slope)))
+    {
+        return true;
+    }
+    // Keys out of order are reported as such; the curve is not baked.
+    if keys.windows(2).any(|w| w[1].time <= w[0].time) {
+        return true;
+    }
+    fits(t1 - t0)
+        && weft_meta::bake::sample_curve(keys, 4096)
+            .into_iter()
+            .all(fits)
 }
 
 /// Gradient stops (`[{ position, color }, …]`).

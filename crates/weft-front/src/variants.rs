@@ -44,8 +44,39 @@ impl VariantKey {
     }
 }
 
-/// Every variant before exclusion, tier outermost, then keywords in declaration order.
+/// The most points of the static variant space (tiers × static keyword
+/// values, before `exclude`) weft enumerates; a larger space is an error
+/// found by counting, without enumerating (`check.rs`).
+pub const ENUMERATION_LIMIT: u128 = 1 << 16;
+
+/// The most combinations of `constant` keyword values per variant: each is
+/// emitted as SPIR-V, HLSL, MSL and GLSL files of its own.
+pub const CONSTANT_COMBINATION_LIMIT: u128 = 256;
+
+/// The size of the static variant space (tiers × values of each static
+/// keyword), counted without enumerating; `None` if it overflows a u128.
+pub fn space_size(m: &Material) -> Option<u128> {
+    m.static_keywords()
+        .try_fold(m.tiers.values.len() as u128, |n, k| {
+            n.checked_mul(k.values.len() as u128)
+        })
+}
+
+/// How many combinations of `constant` keyword values there are; `None` on overflow.
+pub fn constant_combination_count(m: &Material) -> Option<u128> {
+    m.keywords
+        .iter()
+        .filter(|k| k.mode == KeywordMode::Constant)
+        .try_fold(1u128, |n, k| n.checked_mul(k.values.len() as u128))
+}
+
+/// Every variant before exclusion, tier outermost, then keywords in
+/// declaration order. Empty for a space larger than [`ENUMERATION_LIMIT`]
+/// (which the checks report), so nothing ever enumerates one.
 pub fn all_variants(m: &Material) -> Vec<VariantKey> {
+    if space_size(m).is_none_or(|n| n > ENUMERATION_LIMIT) {
+        return Vec::new();
+    }
     let statics: Vec<usize> = (0..m.keywords.len())
         .filter(|&k| m.keywords[k].mode == KeywordMode::Static)
         .collect();

@@ -525,6 +525,7 @@ fn instance_scene(
         },
         shaders: Vec::new(),
         languages: meta.languages.clone(),
+        limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),
             material: meta.name.clone(),

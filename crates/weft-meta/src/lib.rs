@@ -8,9 +8,11 @@
 //! meaning changes; adding optional fields does not bump it.
 
 pub mod bake;
+pub mod limits;
 pub mod pipeline;
 pub mod scene;
 
+pub use limits::DeviceLimits;
 pub use pipeline::*;
 
 use schemars::JsonSchema;
@@ -60,6 +62,11 @@ pub struct MaterialMetadata {
     pub passes: Vec<Pass>,
     /// Vertex inputs the material requires, with the engine interface's locations.
     pub vertex_inputs: Vec<VertexInput>,
+    /// WebGPU device limits above the defaults that the material declares (its
+    /// `[limits]` table) and its variants may need: request at least these when creating
+    /// the device. Absent when every variant fits WebGPU's default limits.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limits: Option<DeviceLimits>,
     /// Every variant of the static keyword/tier space, canonical ones first-seen.
     pub variants: Vec<Variant>,
     /// Per emitted language (`wgsl`, `spirv`, `hlsl`, `msl`, `glsl`): the

@@ -44,6 +44,11 @@ pub struct SceneMetadata {
     /// Per emitted language: the coordinate conventions to draw its files
     /// with (as in the material metadata).
     pub languages: std::collections::BTreeMap<String, crate::LanguageConventions>,
+    /// WebGPU device limits above the defaults that the scene's materials declare
+    /// (for each limit, the highest): request at least these when creating the device.
+    /// Absent when every shader fits WebGPU's default limits.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limits: Option<crate::DeviceLimits>,
 }
 
 /// The engine features a scene provides. Engine interface v1: group 0 is

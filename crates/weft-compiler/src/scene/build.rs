@@ -168,6 +168,15 @@ fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     h.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
 
+/// The raised limits of the scene's materials, each at its highest.
+fn scene_limits(scene: &ResolvedScene) -> Option<weft_meta::DeviceLimits> {
+    let mut limits = weft_meta::DeviceLimits::default();
+    for m in &scene.materials {
+        limits.raise_to(&m.limits);
+    }
+    (!limits.is_default()).then_some(limits)
+}
+
 /// One instance folded, validated and emitted.
 struct BuiltInstance {
     values: InstanceValues,
@@ -228,8 +237,9 @@ pub fn build_resolved_scene(
         let prelude = prelude::generate(m);
         let composed = compose::compose(m, &prelude, db);
         let (module, _) = compose::parse_and_validate(&composed, m, diags)?;
-        modules.push((prelude, module));
+        modules.push((prelude, module, composed));
     }
+    let engine = compose::engine_interface_file(db);
 
     let features = manifest.features;
     let results: Vec<Result<BuiltInstance, String>> = scene
@@ -238,7 +248,7 @@ pub fn build_resolved_scene(
         .zip(&tiers)
         .map(|(inst, (tier, _))| {
             let m = &scene.materials[inst.material];
-            let (prelude, module) = &modules[inst.material];
+            let (prelude, module, _) = &modules[inst.material];
             build_instance(m, module, prelude, inst, *tier, &features)
         })
         .collect();
@@ -305,6 +315,29 @@ pub fn build_resolved_scene(
                         if missing.len() > 1 { "them" } else { "it" }
                     )]),
             );
+            continue;
+        }
+
+        // The shader fits WebGPU's limits (or the material's `[limits]`).
+        let mark = diags.len();
+        let (_, module, composed) = &modules[inst.material];
+        let fits = crate::limits::check_variants(
+            m,
+            &[format!("the shader of instance `{}`", inst.name)],
+            composed,
+            module,
+            engine,
+            std::slice::from_ref(&static_key),
+            std::slice::from_ref(&built.compiled),
+            diags,
+        );
+        if !fits {
+            for d in diags.since_mut(mark) {
+                d.labels.push(
+                    Label::secondary(manifest.file, inst.span.clone())
+                        .with_message(format!("instance `{}`", inst.name)),
+                );
+            }
             continue;
         }
 
@@ -462,6 +495,7 @@ pub fn build_resolved_scene(
         shaders,
         instances,
         languages: crate::engine_binding::languages(),
+        limits: scene_limits(scene),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");
     json.push('\n');

@@ -85,7 +85,11 @@ pub fn build_scene(
     let Some(scene) = weft_front::scene::load_scene(scene_toml, &mut db, &mut diags) else {
         return Err((db, diags));
     };
-    match build_resolved_scene(&scene, &mut db, &mut diags, options) {
+    // On compiler threads (naga's writers need deep stacks, see `nesting`),
+    // as many as the caller's pool has.
+    let built = crate::nesting::compiler_pool(Some(rayon::current_num_threads()))
+        .install(|| build_resolved_scene(&scene, &mut db, &mut diags, options));
+    match built {
         Some(mut out) if !diags.has_errors() => {
             if !diags.is_empty() {
                 out.warnings = Some((db, diags));

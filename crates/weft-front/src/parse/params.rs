@@ -4,6 +4,7 @@
 use super::{DEFAULT_WHEN_KEYS, PARAM_KEYS, humanize, is_snake_ident, parse_show_if};
 use crate::check::Sites;
 use crate::diag::Span;
+use crate::gpu_numbers::{self, GpuType};
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_array, expect_string};
 use crate::values;
@@ -107,10 +108,26 @@ pub(super) fn parse_param(
         );
         range = None;
     }
+    let number_type = if kind == ParamKind::Int {
+        GpuType::I32
+    } else {
+        GpuType::F32
+    };
+    let fits_as = |ty: GpuType, key: &str, cx: &mut Cx| {
+        t.get(key)
+            .is_none_or(|v| gpu_numbers::check_value(cx, ty, v, &format!("`{key}` of {}", t.what)))
+    };
+    let fits = |key: &str, cx: &mut Cx| fits_as(number_type, key, cx);
+    if range.is_some() && !fits("range", cx) {
+        range = None;
+    }
     if kind == ParamKind::Color && range.is_none() && !hdr {
         range = Some([0.0, 1.0]);
     }
-    let soft_range = t.range("soft_range", cx);
+    let mut soft_range = t.range("soft_range", cx);
+    if soft_range.is_some() && !fits("soft_range", cx) {
+        soft_range = None;
+    }
     if let (Some(soft), Some(hard)) = (soft_range, range)
         && (soft[0] < hard[0] || soft[1] > hard[1])
     {
@@ -124,7 +141,9 @@ pub(super) fn parse_param(
             "must lie inside range",
         );
     }
-    let step = t.number("step", cx);
+    let step = t
+        .number("step", cx)
+        .filter(|_| fits_as(GpuType::F32, "step", cx));
     if let Some(s) = step
         && s <= 0.0
     {
@@ -135,7 +154,9 @@ pub(super) fn parse_param(
             "here",
         );
     }
-    let power = t.number("power", cx);
+    let power = t
+        .number("power", cx)
+        .filter(|_| fits_as(GpuType::F32, "power", cx));
     if let Some(p) = power
         && p <= 0.0
     {

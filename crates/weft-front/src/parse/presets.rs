@@ -3,6 +3,7 @@
 
 use super::{PRESET_KEYS, humanize, is_upper_ident};
 use crate::diag::Span;
+use crate::gpu_numbers::{self, GpuType};
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_number, type_error};
 use crate::values;
@@ -24,6 +25,29 @@ pub(super) fn parse_preset(
         .and_then(|v| Table::new(v, format!("values of preset `{name}`"), cx))
     {
         for (key, _kspan, val) in vals.entries() {
+            // Numbers must fit the parameter's GPU type (curves: per keyframe, below).
+            let number_type = params
+                .iter()
+                .find(|p| p.name == key)
+                .and_then(|p| match p.kind {
+                    ParamKind::Int => Some(GpuType::I32),
+                    ParamKind::Float
+                    | ParamKind::Vec2
+                    | ParamKind::Vec3
+                    | ParamKind::Vec4
+                    | ParamKind::Color => Some(GpuType::F32),
+                    _ => None,
+                });
+            if let Some(ty) = number_type
+                && !gpu_numbers::check_value(
+                    cx,
+                    ty,
+                    val,
+                    &format!("preset `{name}`'s value for `{key}`"),
+                )
+            {
+                continue;
+            }
             let pv = match val.get_ref() {
                 DeValue::String(s) if is_upper_ident(key) || key == "tier" => {
                     PresetValue::Keyword(s.to_string())

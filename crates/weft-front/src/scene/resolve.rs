@@ -120,6 +120,10 @@ impl Library {
                     .root
                     .join(&name.value)
                     .join(format!("{}.toml", name.value));
+                if !self.inside_root(&path, name, file, diags) {
+                    self.loaded.push((name.value.clone(), None));
+                    return None;
+                }
                 let loaded = crate::load_material(&path, &self.root, db, diags).map(|m| {
                     self.materials.push(m);
                     self.materials.len() - 1
@@ -142,6 +146,39 @@ impl Library {
             );
         }
         loaded
+    }
+
+    /// Whether the material file `path` an instance names really lies under
+    /// the root (its folder may be a symbolic link out of it); reported at
+    /// the instance's `material` when not.
+    fn inside_root(
+        &self,
+        path: &Path,
+        name: &Spanned<String>,
+        file: FileId,
+        diags: &mut Diagnostics,
+    ) -> bool {
+        let canonical = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if canonical.starts_with(&self.root) {
+            return true;
+        }
+        let shown = crate::includes::display_path(&self.root);
+        let d = diags.error(
+            "material-outside-root",
+            format!("material `{}` is outside the materials root", name.value),
+            file,
+            name.span.clone(),
+            format!(
+                "`{0}/{0}.toml` leads to `{1}`",
+                name.value,
+                crate::includes::display_path(&canonical)
+            ),
+        );
+        d.notes.push(format!(
+            "a scene's materials must lie under its materials root `{shown}`; the folder `{}` (or a symbolic link on the way) leads out of it: copy the material into the root",
+            name.value
+        ));
+        false
     }
 }
 
