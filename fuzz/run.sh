@@ -2,8 +2,9 @@
 # Runs one fuzz target with libFuzzer on stable Rust (docs/fuzzing.md):
 #   fuzz/run.sh <material_front|material_compile|scene> <seconds> [libFuzzer flags...]
 # The working corpus is fuzz/work/<target>/ (started from the committed
-# fuzz/corpus/<target>/ the first time; new inputs are added there), crashes
-# and hangs go to fuzz/artifacts/<target>/, the log to fuzz/work/<target>.log.
+# fuzz/corpus/<target>/ and fuzz/seeds/<target>/ the first time; new inputs
+# are added there), crashes and hangs go to fuzz/artifacts/<target>/, the
+# log to fuzz/work/<target>.log.
 # Needs cargo-fuzz (`cargo install cargo-fuzz --locked`).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -19,6 +20,8 @@ esac
 mkdir -p work artifacts/"$target"
 if [ ! -d work/"$target" ]; then
     cp -r corpus/"$target" work/"$target"
+    # The seeds too, when fuzz/seed.sh has written them.
+    if [ -d seeds/"$target" ]; then cp seeds/"$target"/* work/"$target"/; fi
 fi
 # -s none: no sanitizer, so no -Z flag and no nightly toolchain; -a: debug
 # assertions and overflow checks on, as in the test suite's builds.

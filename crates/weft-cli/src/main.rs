@@ -81,6 +81,26 @@ enum Command {
         /// (they are serialised by a lock file, `.<out>.lock`); 0 fails at once.
         #[arg(long, value_name = "SECONDS", default_value_t = 120.0)]
         lock_timeout: f64,
+        /// Compile only the materials of shard K of N (by a hash of their names) into
+        /// this output folder; join the N folders with `weft merge` (docs/scaling.md).
+        #[arg(long, value_name = "K/N", conflicts_with = "scene")]
+        shard: Option<weft_compiler::shard::Shard>,
+    },
+    /// Join the output folders of `weft build --shard k/n` (all n of them) into one,
+    /// byte-identical to an unsharded build; replaced atomically like `build`'s.
+    #[command(
+        after_help = "Examples:\n  weft build --shard 1/2 -o out-1 && weft build --shard 2/2 -o out-2\n  weft merge out-1 out-2 -o generated"
+    )]
+    Merge {
+        /// The shards' output folders.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// Output folder (reports/ and the gallery are kept). Default: generated.
+        #[arg(long, short)]
+        out: Option<PathBuf>,
+        /// Seconds to wait for another build writing into the same output folder.
+        #[arg(long, value_name = "SECONDS", default_value_t = 120.0)]
+        lock_timeout: f64,
     },
     /// Report diagnostics only; writes nothing. Exit status 1 on any error.
     #[command(
@@ -297,6 +317,7 @@ fn main() -> ExitCode {
             jobs,
             force,
             lock_timeout,
+            shard,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated"));
@@ -317,9 +338,18 @@ fn main() -> ExitCode {
                 jobs,
                 reuse_from: (!force).then(|| out.clone()),
                 keep_unchanged: true,
+                shard,
+            };
+            // A shard's folder says which shard it is, for `weft merge`.
+            let mark = |result: &mut BuildOutput| {
+                if let Some(s) = shard {
+                    let marker = weft_compiler::shard::SHARD_MARKER;
+                    result.files.insert(marker.into(), s.marker());
+                }
             };
             match build(&paths, &options, cli.quiet) {
                 Ok(mut result) => {
+                    mark(&mut result);
                     if let Some((db, warnings)) = &result.warnings {
                         report(db, warnings, cli.color);
                     }
@@ -336,7 +366,10 @@ fn main() -> ExitCode {
                             ..options
                         };
                         match build(&paths, &options, true) {
-                            Ok(r) => result = r,
+                            Ok(r) => {
+                                result = r;
+                                mark(&mut result);
+                            }
                             Err((db, diags)) => {
                                 report(&db, &diags, cli.color);
                                 return ExitCode::FAILURE;
@@ -426,6 +459,44 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+        Command::Merge {
+            shards,
+            out,
+            lock_timeout,
+        } => {
+            if !(lock_timeout.is_finite() && lock_timeout >= 0.0) {
+                eprintln!("error: --lock-timeout must be a number of seconds, 0 or more");
+                return ExitCode::FAILURE;
+            }
+            let out = out.unwrap_or_else(|| PathBuf::from("generated"));
+            let files = match weft_compiler::shard::merge(&shards) {
+                Ok(f) => f,
+                Err(e) => {
+                    eprintln!("error: {e}; nothing was written");
+                    return ExitCode::FAILURE;
+                }
+            };
+            let wait = Duration::from_secs_f64(lock_timeout);
+            let Some(lock) = lock_output(&out, wait, cli.quiet) else {
+                return ExitCode::FAILURE;
+            };
+            if let Err(e) = lock.write(&files, PRESERVED) {
+                eprintln!(
+                    "error: cannot write `{}`: {e}; the old output is unchanged",
+                    out.display()
+                );
+                return ExitCode::FAILURE;
+            }
+            if !cli.quiet {
+                println!(
+                    "merged {} shard folder(s), {} file(s) into {}",
+                    shards.len(),
+                    files.len(),
+                    out.display()
+                );
+            }
+            ExitCode::SUCCESS
+        }
         Command::Bench(args) => match bench(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -22,6 +22,7 @@ pub mod output;
 pub mod prelude;
 pub mod reflect;
 pub mod scene;
+pub mod shard;
 pub mod specialise;
 pub mod stage_io;
 pub mod unchanged;

@@ -44,6 +44,9 @@ pub struct BuildOptions {
     /// unread (listed in [`BuildOutput::kept`], not in `files`); see
     /// [`BuildOutput::up_to_date`] and [`BuildOutput::load_kept`].
     pub keep_unchanged: bool,
+    /// Compile only the materials of this shard (every material is still
+    /// loaded and checked); see [`crate::shard`].
+    pub shard: Option<crate::shard::Shard>,
 }
 
 /// Everything a build produced: files relative to the output folder.
@@ -411,6 +414,9 @@ pub fn build_materials_streaming(
                             .with_message("second material with this name"),
                     ]),
             );
+            continue;
+        }
+        if options.shard.is_some_and(|s| !s.contains(&m.name)) {
             continue;
         }
         progress(i, paths.len(), &m.name);
