@@ -20,7 +20,11 @@ fn main() {
         let start = std::time::Instant::now();
         let diags = run(&data);
         let time = start.elapsed();
-        let verdict = if diags.is_empty() { "clean" } else { "diagnostics" };
+        let verdict = if diags.is_empty() {
+            "clean"
+        } else {
+            "diagnostics"
+        };
         println!("== {path}: {verdict} in {time:.1?}");
         print!("{diags}");
     }
