@@ -1,7 +1,9 @@
 //! `cargo xtask bench scale`: builds synthetic libraries of growing size
 //! (see `scale.rs`) with the release `weft` binary as a child process and
 //! reports full build time, cost per variant, peak memory (the child's
-//! maximum resident set, from `wait4`) and no-change rebuild time.
+//! maximum resident set, from `wait4`), no-change and one-edit rebuild
+//! times, and builds through a shared `--cache-dir` (cold, then warm into
+//! a fresh folder, checked byte-identical).
 
 use crate::scale;
 use std::path::{Path, PathBuf};
@@ -38,9 +40,9 @@ pub struct ScaleArgs {
     /// Use this `weft` binary instead of building crates/weft-cli (release).
     #[arg(long)]
     weft: Option<PathBuf>,
-    /// Skip the streamed library builds.
+    /// Skip the builds through a shared cache (`--cache-dir`).
     #[arg(long)]
-    no_streamed: bool,
+    no_cache: bool,
 }
 
 impl ScaleArgs {
@@ -65,78 +67,13 @@ impl ScaleArgs {
         if let Some(j) = self.jobs {
             c.push_str(&format!(" --jobs {j}"));
         }
-        if self.no_streamed {
-            c.push_str(" --no-streamed");
+        if self.no_cache {
+            c.push_str(" --no-cache");
         }
         if let Some(w) = &self.weft {
             c.push_str(&format!(" --weft {}", w.display()));
         }
         c
-    }
-}
-
-#[derive(clap::Args)]
-pub struct StreamArgs {
-    /// A materials folder.
-    materials: PathBuf,
-    /// Output folder (must not exist).
-    out: PathBuf,
-    #[arg(long)]
-    jobs: Option<usize>,
-}
-
-/// `bench scale-stream-child`: builds `materials` with
-/// `build_materials_streaming`, writing each file into `out` as it comes
-/// (no atomic swap: this measures the library side of a streamed build),
-/// then prints the same `built …` line as `weft build`.
-pub fn stream_child(args: &StreamArgs) -> ExitCode {
-    let started = Instant::now();
-    if args.out.exists() {
-        eprintln!("error: {} exists", args.out.display());
-        return ExitCode::FAILURE;
-    }
-    let paths = match weft_compiler::library::discover(&args.materials) {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("error: {}: {e}", args.materials.display());
-            return ExitCode::FAILURE;
-        }
-    };
-    let options = weft_compiler::BuildOptions {
-        jobs: args.jobs,
-        ..Default::default()
-    };
-    let mut files = 0usize;
-    let mut write = |rel: String, bytes: Vec<u8>| -> std::io::Result<()> {
-        let path = args.out.join(&rel);
-        if let Some(p) = path.parent() {
-            std::fs::create_dir_all(p)?;
-        }
-        files += 1;
-        std::fs::write(path, bytes)
-    };
-    let built = weft_compiler::build_materials_streaming(
-        &paths,
-        Some(&args.materials),
-        &options,
-        &|_, _, _| {},
-        &mut write,
-    );
-    match built {
-        Ok(out) => {
-            println!(
-                "built {} material(s), {} variant(s), {files} file(s) into {} in {:.2}s",
-                out.material_count(),
-                out.variant_count,
-                args.out.display(),
-                started.elapsed().as_secs_f64()
-            );
-            ExitCode::SUCCESS
-        }
-        Err((db, diags)) => {
-            eprint!("{}", diags.render_plain(&db));
-            ExitCode::FAILURE
-        }
     }
 }
 
@@ -279,8 +216,11 @@ struct Row {
     no_change_ms: f64,
     no_change_cpu_ms: f64,
     no_change_rss_kib: u64,
-    /// The streamed library build (`build_materials_streaming`): wall s, peak RSS KiB.
-    streamed: Option<(f64, u64)>,
+    /// Rebuild after editing one material's TOML: wall s, peak RSS KiB.
+    one_edit: (f64, u64),
+    /// Through `--cache-dir`: cold cache (filled) wall s, then warm cache
+    /// into a fresh folder wall s and peak RSS KiB.
+    cache: Option<(f64, f64, u64)>,
 }
 
 impl Row {
@@ -319,7 +259,7 @@ fn measure(
     args: &ScaleArgs,
     generate_s: f64,
 ) -> Result<Row, String> {
-    let build = || {
+    let mut build = || {
         let mut c = Command::new(weft);
         c.arg("build").arg(materials_dir).arg("-o").arg(out);
         if let Some(j) = args.jobs {
@@ -358,6 +298,7 @@ fn measure(
         no_change_cpu.push((r.cpu.0 + r.cpu.1).as_secs_f64() * 1e3);
         no_change_rss = no_change_rss.max(r.max_rss_kib);
     }
+    let one_edit = measure_one_edit(&mut build, materials_dir, library, materials)?;
     let row = Row {
         library: library.into(),
         materials,
@@ -376,10 +317,11 @@ fn measure(
         no_change_ms: median(no_change),
         no_change_cpu_ms: median(no_change_cpu),
         no_change_rss_kib: no_change_rss,
-        streamed: None,
+        one_edit,
+        cache: None,
     };
     eprintln!(
-        "  {library}: {} materials, {} variants, {} files, {:.1} MiB; full build {:.2} s, {:.2} + {:.2} s user + system CPU ({:.2} ms/variant, peak RSS {:.0} MiB); no-change rebuild {:.1} ms (peak RSS {:.0} MiB)",
+        "  {library}: {} materials, {} variants, {} files, {:.1} MiB; full build {:.2} s, {:.2} + {:.2} s user + system CPU ({:.2} ms/variant, peak RSS {:.0} MiB); no-change rebuild {:.1} ms (peak RSS {:.0} MiB); one edit {:.2} s (peak RSS {:.0} MiB)",
         row.materials,
         row.variants,
         row.files,
@@ -390,47 +332,122 @@ fn measure(
         row.per_variant_ms(),
         row.full_rss_kib as f64 / 1024.0,
         row.no_change_ms,
-        row.no_change_rss_kib as f64 / 1024.0
+        row.no_change_rss_kib as f64 / 1024.0,
+        row.one_edit.0,
+        row.one_edit.1 as f64 / 1024.0
     );
     Ok(row)
 }
 
-/// The same library built by `bench scale-stream-child` (this binary) into
-/// a fresh folder next to `out`, which must come out byte-identical.
-fn measure_streamed(
+/// Appends a comment to the first material's TOML (its inputs change, the
+/// others' do not), rebuilds, and puts the file back.
+fn measure_one_edit(
+    build: &mut dyn FnMut() -> Command,
+    materials_dir: &Path,
+    library: &str,
+    materials: usize,
+) -> Result<(f64, u64), String> {
+    let first = weft_compiler::library::discover(materials_dir)
+        .map_err(|e| format!("{}: {e}", materials_dir.display()))?
+        .into_iter()
+        .next()
+        .ok_or_else(|| format!("{library}: no material"))?;
+    let text = std::fs::read_to_string(&first).map_err(|e| format!("{}: {e}", first.display()))?;
+    let write =
+        |t: &str| std::fs::write(&first, t).map_err(|e| format!("{}: {e}", first.display()));
+    write(&format!("{text}\n# edited by bench scale\n"))?;
+    let r = run_child(&mut build());
+    write(&text)?;
+    let r = r?;
+    let (_, _, _, unchanged) =
+        parse_built(&r.stdout).ok_or_else(|| format!("unexpected output: {}", r.stdout))?;
+    if unchanged + 1 != materials {
+        return Err(format!(
+            "{library}: after one edit {unchanged} of {materials} materials were unchanged"
+        ));
+    }
+    Ok((r.wall.as_secs_f64(), r.max_rss_kib))
+}
+
+/// Builds the library through a fresh `--cache-dir` into a fresh folder
+/// (cold: every unit compiled and stored), then again into another fresh
+/// folder (warm: every unit from the cache), which must come out
+/// byte-identical to `out`.
+fn measure_cache(
+    weft: &Path,
     row: &mut Row,
     materials_dir: &Path,
     out: &Path,
     args: &ScaleArgs,
 ) -> Result<(), String> {
-    let streamed = out.with_file_name("out-streamed");
-    remove_output(&streamed)?;
-    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
-    let mut c = Command::new(exe);
-    c.args(["bench", "scale-stream-child"])
-        .arg(materials_dir)
-        .arg(&streamed);
-    if let Some(j) = args.jobs {
-        c.arg("--jobs").arg(j.to_string());
+    let cache = out.with_file_name("cache");
+    let _ = std::fs::remove_dir_all(&cache);
+    let mut times = Vec::new();
+    for name in ["out-cold", "out-warm"] {
+        let dest = out.with_file_name(name);
+        remove_output(&dest)?;
+        let mut c = Command::new(weft);
+        c.arg("build")
+            .arg(materials_dir)
+            .arg("-o")
+            .arg(&dest)
+            .arg("--cache-dir")
+            .arg(&cache);
+        if let Some(j) = args.jobs {
+            c.arg("--jobs").arg(j.to_string());
+        }
+        let r = run_child(&mut c)?;
+        let (hits, compiled) =
+            parse_units(&r.stdout).ok_or_else(|| format!("unexpected output: {}", r.stdout))?;
+        let expected = if name == "out-cold" {
+            (0, row.variants)
+        } else {
+            (row.variants, 0)
+        };
+        // Aliased variants are compiled (then found identical), so every
+        // variant is one unit.
+        if (hits, compiled) != expected {
+            return Err(format!(
+                "{}: {name}: {hits} units from the cache, {compiled} compiled; expected {expected:?}",
+                row.library
+            ));
+        }
+        if !same_tree(out, &dest)? {
+            return Err(format!(
+                "{}: the build through the cache ({}) differs from `weft build`'s ({})",
+                row.library,
+                dest.display(),
+                out.display()
+            ));
+        }
+        remove_output(&dest)?;
+        times.push(r);
     }
-    let r = run_child(&mut c)?;
-    if !same_tree(out, &streamed)? {
-        return Err(format!(
-            "{}: the streamed build differs from `weft build`'s ({} vs {})",
-            row.library,
-            streamed.display(),
-            out.display()
-        ));
-    }
-    remove_output(&streamed)?;
-    row.streamed = Some((r.wall.as_secs_f64(), r.max_rss_kib));
+    let _ = std::fs::remove_dir_all(&cache);
+    let (cold, warm) = (&times[0], &times[1]);
+    row.cache = Some((
+        cold.wall.as_secs_f64(),
+        warm.wall.as_secs_f64(),
+        warm.max_rss_kib,
+    ));
     eprintln!(
-        "  {}: streamed library build {:.2} s, peak RSS {:.0} MiB (byte-identical output)",
+        "  {}: through a fresh cache {:.2} s; warm cache into a fresh folder {:.2} s, peak RSS {:.0} MiB (byte-identical output)",
         row.library,
-        r.wall.as_secs_f64(),
-        r.max_rss_kib as f64 / 1024.0
+        cold.wall.as_secs_f64(),
+        warm.wall.as_secs_f64(),
+        warm.max_rss_kib as f64 / 1024.0
     );
     Ok(())
+}
+
+/// `compile units: H from the cache, C compiled`.
+fn parse_units(stdout: &str) -> Option<(usize, usize)> {
+    let line = stdout.lines().find(|l| l.starts_with("compile units: "))?;
+    let mut nums = line
+        .split(|c: char| !c.is_ascii_digit())
+        .filter(|w| !w.is_empty())
+        .map(|w| w.parse::<usize>());
+    Some((nums.next()?.ok()?, nums.next()?.ok()?))
 }
 
 /// Removes an output folder and the lock file beside it.
@@ -439,7 +456,9 @@ fn remove_output(out: &Path) -> Result<(), String> {
         std::fs::remove_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
     }
     if let (Some(parent), Some(name)) = (out.parent(), out.file_name()) {
-        let _ = std::fs::remove_file(parent.join(format!(".{}.lock", name.to_string_lossy())));
+        for ext in ["lock", "stamp"] {
+            let _ = std::fs::remove_file(parent.join(format!(".{}.{ext}", name.to_string_lossy())));
+        }
     }
     Ok(())
 }
@@ -464,12 +483,13 @@ fn markdown(rows: &[Row], command: &str, threads: usize, load: &str) -> String {
          peak RSS is the child's maximum resident set (`wait4`); every run starts after a `sync`. \"full\" builds into a missing output folder; \
          \"no-change\" rebuilds the same inputs into it again (median of the runs). The synthetic libraries are \
          derived from materials/ by `xtask/src/scale.rs` (deterministic). \
-         \"streamed\" is the same library built in a child of xtask with `weft_compiler::build_materials_streaming`, \
-         each file written to disk as its material finishes (no atomic swap); its output is checked byte-identical to `weft build`'s.\n"
+         \"one edit\" rebuilds after a comment is appended to one material's TOML (that material recompiles, the others' files are hard-linked from the old folder). \
+         \"cold cache\" builds into a fresh folder through a fresh `--cache-dir` (every unit compiled and stored); \"warm cache\" then builds into another fresh folder through it \
+         (every unit from the cache); both are checked byte-identical to the full build.\n"
     );
     let _ = writeln!(
         md,
-        "| library | materials | variants | files | output MiB | full build s | user + system CPU s | ms / variant | marginal ms / variant | user CPU ms / variant | peak RSS MiB | no-change ms (CPU ms) | no-change peak RSS MiB | streamed build s | streamed peak RSS MiB |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+        "| library | materials | variants | files | output MiB | full build s | user + system CPU s | ms / variant | marginal ms / variant | user CPU ms / variant | peak RSS MiB | no-change ms (CPU ms) | no-change peak RSS MiB | one edit s | one edit peak RSS MiB | cold cache s | warm cache s | warm cache peak RSS MiB |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
     );
     let mut prev: Option<&Row> = None;
     for r in rows {
@@ -486,7 +506,7 @@ fn markdown(rows: &[Row], command: &str, threads: usize, load: &str) -> String {
         };
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} | {:.1} | {:.2} | {:.2} + {:.2} | {:.2} | {marginal} | {:.2} | {:.0} | {:.1} ({:.1}) | {:.0} | {} | {} |",
+            "| {} | {} | {} | {} | {:.1} | {:.2} | {:.2} + {:.2} | {:.2} | {marginal} | {:.2} | {:.0} | {:.1} ({:.1}) | {:.0} | {:.2} | {:.0} | {} | {} | {} |",
             r.library,
             r.materials,
             r.variants,
@@ -501,9 +521,14 @@ fn markdown(rows: &[Row], command: &str, threads: usize, load: &str) -> String {
             r.no_change_ms,
             r.no_change_cpu_ms,
             r.no_change_rss_kib as f64 / 1024.0,
-            r.streamed.map_or("—".into(), |(t, _)| format!("{t:.2}")),
-            r.streamed
-                .map_or("—".into(), |(_, k)| format!("{:.0}", k as f64 / 1024.0)),
+            r.one_edit.0,
+            r.one_edit.1 as f64 / 1024.0,
+            r.cache.map_or("—".into(), |(c, _, _)| format!("{c:.2}")),
+            r.cache.map_or("—".into(), |(_, w, _)| format!("{w:.2}")),
+            r.cache.map_or("—".into(), |(_, _, k)| format!(
+                "{:.0}",
+                k as f64 / 1024.0
+            )),
         );
         if r.library != "shipped" {
             prev = Some(r);
@@ -531,8 +556,11 @@ fn json(rows: &[Row], command: &str, threads: usize, load: &str) -> String {
                 "no_change_ms": r.no_change_ms,
                 "no_change_cpu_ms": r.no_change_cpu_ms,
                 "no_change_peak_rss_kib": r.no_change_rss_kib,
-                "streamed_build_s": r.streamed.map(|s| s.0),
-                "streamed_peak_rss_kib": r.streamed.map(|s| s.1),
+                "one_edit_s": r.one_edit.0,
+                "one_edit_peak_rss_kib": r.one_edit.1,
+                "cold_cache_s": r.cache.map(|c| c.0),
+                "warm_cache_s": r.cache.map(|c| c.1),
+                "warm_cache_peak_rss_kib": r.cache.map(|c| c.2),
             })
         })
         .collect();
@@ -566,16 +594,20 @@ fn run(root: &Path, args: &ScaleArgs) -> Result<(), String> {
     let load_before = load_average();
     eprintln!("bench scale: {}", weft.display());
     let shipped_out = work.join("shipped/out");
+    // A copy: the one-edit rebuild edits a material.
+    let shipped_materials = work.join("shipped/materials");
+    let _ = std::fs::remove_dir_all(&shipped_materials);
+    scale::copy_dir(&root.join("materials"), &shipped_materials)?;
     let mut shipped = measure(
         &weft,
         "shipped",
-        &root.join("materials"),
+        &shipped_materials,
         &shipped_out,
         args,
         0.0,
     )?;
-    if !args.no_streamed {
-        measure_streamed(&mut shipped, &root.join("materials"), &shipped_out, args)?;
+    if !args.no_cache {
+        measure_cache(&weft, &mut shipped, &shipped_materials, &shipped_out, args)?;
     }
     rows.push(shipped);
     if !args.keep {
@@ -595,8 +627,8 @@ fn run(root: &Path, args: &ScaleArgs) -> Result<(), String> {
         let generate_s = t.elapsed().as_secs_f64();
         let out = dir.join("out");
         let mut row = measure(&weft, &label, &lib.dir, &out, args, generate_s)?;
-        if !args.no_streamed {
-            measure_streamed(&mut row, &lib.dir, &out, args)?;
+        if !args.no_cache {
+            measure_cache(&weft, &mut row, &lib.dir, &out, args)?;
         }
         if row.variants != lib.variants {
             return Err(format!(

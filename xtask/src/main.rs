@@ -61,13 +61,9 @@ enum Bench {
     },
     /// Synthetic libraries of growing size (≈ 50 to 10 000 variants, derived
     /// from materials/): full build time, cost per variant, peak memory of the
-    /// `weft build` process and no-change rebuild time (release binary).
+    /// `weft build` process, no-change and one-edit rebuild times, and builds
+    /// from a shared cache (release binary).
     Scale(bench_scale::ScaleArgs),
-    /// (Run by `bench scale`.) One library build through
-    /// `build_materials_streaming`, each material's files written to a fresh
-    /// folder as soon as it is compiled.
-    #[command(hide = true)]
-    ScaleStreamChild(bench_scale::StreamArgs),
     /// Every material x tier: GPU time per frame (timestamp queries), ratio to
     /// standard's fast tier, SPIR-V instructions, error against the reference tier.
     Shading {
@@ -219,9 +215,6 @@ fn main() -> ExitCode {
             what: Bench::Scale(args),
         } => bench_scale::bench_scale(&root, &args),
         Command::Bench {
-            what: Bench::ScaleStreamChild(args),
-        } => bench_scale::stream_child(&args),
-        Command::Bench {
             what: Bench::Shading { args, write },
         } => bench_shading(
             &root,
@@ -349,24 +342,32 @@ fn bench_compile(root: &Path, runs: usize) -> ExitCode {
     let library = weft_compiler::build_library(&materials, &BuildOptions::default(), &|_, _, _| {})
         .unwrap_or_else(|_| panic!("materials/ built once already"));
     output::write_atomically(&out_dir, &library.files, &[]).expect("write temp output");
+    drop(library);
+    let lock = output::OutputLock::acquire(&out_dir, output::DEFAULT_LOCK_WAIT, &mut |_| {})
+        .expect("lock temp output");
+    let paths = weft_compiler::library::discover(&materials).expect("materials/");
     let mut unchanged = Vec::new();
     for _ in 0..runs {
         let t = Instant::now();
         let options = BuildOptions {
             reuse_from: Some(out_dir.clone()),
-            keep_unchanged: true,
             ..Default::default()
         };
-        let mut out = weft_compiler::build_library(&materials, &options, &|_, _, _| {})
-            .unwrap_or_else(|_| panic!("materials/ built once already"));
-        if !out.up_to_date(&out_dir, &[]).expect("read temp output") {
-            out.load_kept().expect("kept files");
-            output::write_atomically(&out_dir, &out.files, &[]).expect("write");
-        }
+        let built = weft_compiler::folder_build::build_into(
+            &paths,
+            Some(&materials),
+            &lock,
+            &options,
+            &[],
+            &[],
+            &|_, _, _| {},
+        )
+        .unwrap_or_else(|_| panic!("materials/ built once already"));
         unchanged.push(t.elapsed());
+        assert!(!built.wrote, "nothing to write");
         assert_eq!(
-            out.reused.len(),
-            out.material_count(),
+            built.output.reused.len(),
+            built.output.material_count(),
             "every material reused"
         );
     }

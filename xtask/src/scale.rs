@@ -756,7 +756,7 @@ pub fn generate(
     })
 }
 
-fn copy_dir(from: &Path, to: &Path) -> Result<(), String> {
+pub fn copy_dir(from: &Path, to: &Path) -> Result<(), String> {
     std::fs::create_dir_all(to).map_err(|e| format!("{}: {e}", to.display()))?;
     let mut entries: Vec<_> = std::fs::read_dir(from)
         .map_err(|e| format!("{}: {e}", from.display()))?

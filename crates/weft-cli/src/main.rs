@@ -6,6 +6,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
+use weft_compiler::folder_build::{self, FolderBuildError};
 use weft_compiler::{BuildOptions, BuildOutput, output};
 use weft_front::{Diagnostics, SourceDb};
 use weft_meta::MaterialMetadata;
@@ -85,6 +86,16 @@ enum Command {
         /// this output folder; join the N folders with `weft merge` (docs/scaling.md).
         #[arg(long, value_name = "K/N", conflicts_with = "scene")]
         shard: Option<weft_compiler::shard::Shard>,
+        /// A shared cache of compiled units (material × variant), addressed by
+        /// their inputs; any checkout or machine may share it (docs/scaling.md).
+        /// Default: $WEFT_CACHE_DIR when set.
+        #[arg(
+            long,
+            value_name = "DIR",
+            env = "WEFT_CACHE_DIR",
+            conflicts_with = "scene"
+        )]
+        cache_dir: Option<PathBuf>,
     },
     /// Join the output folders of `weft build --shard k/n` (all n of them) into one,
     /// byte-identical to an unsharded build; replaced atomically like `build`'s.
@@ -181,29 +192,39 @@ pub(crate) fn lock_output(dir: &Path, wait: Duration, quiet: bool) -> Option<out
     }
 }
 
-/// Builds from folders and/or files.
-fn build(
-    paths: &[PathBuf],
-    options: &BuildOptions,
-    quiet: bool,
-) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
-    let show = !quiet && std::io::stderr().is_terminal();
-    let progress = move |i: usize, n: usize, name: &str| {
-        if show {
-            if name.is_empty() {
-                eprint!("\r\x1b[K");
-            } else {
-                eprint!("\r\x1b[K[{}/{n}] compiling {name}", i + 1);
-            }
-        }
-    };
+/// The material files a build's paths name, and the materials root they
+/// share (None: found per file).
+struct MaterialFiles {
+    paths: Vec<PathBuf>,
+    root: Option<PathBuf>,
+}
+
+/// Resolves folders and files given on the command line to material files.
+fn material_files(paths: &[PathBuf]) -> Result<MaterialFiles, (SourceDb, Diagnostics)> {
     if let Some(empty) = no_material(paths) {
         return Err(empty);
     }
     if let [dir] = paths
         && dir.is_dir()
     {
-        return weft_compiler::build_library(dir, options, &progress);
+        return match weft_compiler::library::discover(dir) {
+            Ok(found) => Ok(MaterialFiles {
+                paths: found,
+                root: Some(dir.clone()),
+            }),
+            Err(e) => {
+                let mut diags = Diagnostics::new();
+                diags.push(
+                    codespan_reporting::diagnostic::Diagnostic::error()
+                        .with_code("io")
+                        .with_message(format!(
+                            "cannot read materials folder `{}`: {e}",
+                            dir.display()
+                        )),
+                );
+                Err((SourceDb::new(), diags))
+            }
+        };
     }
     let mut files = Vec::new();
     for p in paths {
@@ -213,7 +234,35 @@ fn build(
             files.push(p.clone());
         }
     }
-    weft_compiler::build_materials(&files, None, options, &progress)
+    Ok(MaterialFiles {
+        paths: files,
+        root: None,
+    })
+}
+
+/// Prints `[i/n] compiling <name>` on a terminal.
+fn progress_printer(quiet: bool) -> impl Fn(usize, usize, &str) + Sync {
+    let show = !quiet && std::io::stderr().is_terminal();
+    move |i: usize, n: usize, name: &str| {
+        if show {
+            if name.is_empty() {
+                eprint!("\r\x1b[K");
+            } else {
+                eprint!("\r\x1b[K[{}/{n}] compiling {name}", i + 1);
+            }
+        }
+    }
+}
+
+/// Builds from folders and/or files, in memory (`weft check` and others).
+fn build(
+    paths: &[PathBuf],
+    options: &BuildOptions,
+    quiet: bool,
+) -> Result<BuildOutput, (SourceDb, Diagnostics)> {
+    let files = material_files(paths)?;
+    let progress = progress_printer(quiet);
+    weft_compiler::build_materials(&files.paths, files.root.as_deref(), options, &progress)
 }
 
 /// A `no-material` error for each folder that holds no material
@@ -318,90 +367,89 @@ fn main() -> ExitCode {
             force,
             lock_timeout,
             shard,
+            cache_dir,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated"));
             let started = std::time::Instant::now();
-            let lock_wait = Duration::from_secs_f64(lock_timeout);
-            // An existing output folder is locked for the whole build, so that
-            // no other build replaces it while unchanged files are read from
-            // it; a new one only for the write (nothing is created on error).
-            let mut lock = None;
-            if out.exists() {
-                lock = lock_output(&out, lock_wait, cli.quiet);
-                if lock.is_none() {
+            let files = match material_files(&paths) {
+                Ok(f) => f,
+                Err((db, diags)) => {
+                    report(&db, &diags, cli.color);
                     return ExitCode::FAILURE;
                 }
-            }
-            // Unchanged materials' files stay in `out`, unread (weft_compiler::unchanged).
+            };
+            // Locked for the whole build, so that no other build replaces the
+            // folder while unchanged files are kept from it.
+            let Some(lock) = lock_output(&out, Duration::from_secs_f64(lock_timeout), cli.quiet)
+            else {
+                return ExitCode::FAILURE;
+            };
             let options = BuildOptions {
                 jobs,
                 reuse_from: (!force).then(|| out.clone()),
-                keep_unchanged: true,
                 shard,
+                cache_dir,
+                ..Default::default()
             };
             // A shard's folder says which shard it is, for `weft merge`.
-            let mark = |result: &mut BuildOutput| {
-                if let Some(s) = shard {
-                    let marker = weft_compiler::shard::SHARD_MARKER;
-                    result.files.insert(marker.into(), s.marker());
-                }
-            };
-            match build(&paths, &options, cli.quiet) {
-                Ok(mut result) => {
-                    mark(&mut result);
+            let marker: Vec<(String, Vec<u8>)> = shard
+                .map(|s| (weft_compiler::shard::SHARD_MARKER.to_string(), s.marker()))
+                .into_iter()
+                .collect();
+            let root = files.root.as_deref();
+            let progress = progress_printer(cli.quiet);
+            match folder_build::build_into(
+                &files.paths,
+                root,
+                &lock,
+                &options,
+                &marker,
+                PRESERVED,
+                &progress,
+            ) {
+                Ok(built) => {
+                    let result = &built.output;
                     if let Some((db, warnings)) = &result.warnings {
                         report(db, warnings, cli.color);
                     }
-                    let Some(lock) = lock.or_else(|| lock_output(&out, lock_wait, cli.quiet))
-                    else {
-                        return ExitCode::FAILURE;
-                    };
-                    // Nothing to write when `out` already holds exactly this build.
-                    let current = result.up_to_date(&out, PRESERVED).unwrap_or(false);
-                    if !current && result.load_kept().is_err() {
-                        // A kept file changed since it was built: recompile its material.
-                        let options = BuildOptions {
-                            keep_unchanged: false,
-                            ..options
-                        };
-                        match build(&paths, &options, true) {
-                            Ok(r) => {
-                                result = r;
-                                mark(&mut result);
-                            }
-                            Err((db, diags)) => {
-                                report(&db, &diags, cli.color);
-                                return ExitCode::FAILURE;
-                            }
-                        }
-                    }
-                    if !current && let Err(e) = lock.write(&result.files, PRESERVED) {
-                        eprintln!(
-                            "error: cannot write `{}`: {e}; the old output is unchanged",
-                            out.display()
-                        );
-                        return ExitCode::FAILURE;
-                    }
                     if !cli.quiet {
                         println!(
-                            "built {} material(s), {} variant(s), {} file(s) into {} in {:.2}s{}",
+                            "built {} material(s), {} variant(s), {} file(s) into {} in {:.2}s{}{}",
                             result.material_count(),
                             result.variant_count,
-                            result.file_count(),
+                            built.file_count,
                             out.display(),
                             started.elapsed().as_secs_f64(),
                             if result.reused.is_empty() {
                                 String::new()
                             } else {
                                 format!(" ({} unchanged)", result.reused.len())
-                            }
+                            },
+                            if built.wrote {
+                                ""
+                            } else {
+                                "; already up to date"
+                            },
                         );
+                        if options.cache_dir.is_some() {
+                            println!(
+                                "compile units: {} from the cache, {} compiled",
+                                result.cache_hits, result.cache_misses
+                            );
+                        }
                     }
                     ExitCode::SUCCESS
                 }
-                Err((db, diags)) => {
+                Err(FolderBuildError::Diagnostics(db, diags)) => {
                     report(&db, &diags, cli.color);
+                    ExitCode::FAILURE
+                }
+                Err(FolderBuildError::Io(e)) => {
+                    eprintln!(
+                        "error: cannot write `{}`: {e}; the old output is unchanged",
+                        out.display()
+                    );
                     ExitCode::FAILURE
                 }
             }
@@ -480,7 +528,14 @@ fn main() -> ExitCode {
             let Some(lock) = lock_output(&out, wait, cli.quiet) else {
                 return ExitCode::FAILURE;
             };
-            if let Err(e) = lock.write(&files, PRESERVED) {
+            let write = || -> std::io::Result<()> {
+                let mut staging = lock.stage()?;
+                for (rel, from) in &files {
+                    staging.link(rel, from)?;
+                }
+                staging.commit(PRESERVED)
+            };
+            if let Err(e) = write() {
                 eprintln!(
                     "error: cannot write `{}`: {e}; the old output is unchanged",
                     out.display()

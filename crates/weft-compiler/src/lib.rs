@@ -11,8 +11,10 @@
 
 pub mod backends;
 pub mod bake;
+pub mod cache;
 pub mod compose;
 pub mod engine_binding;
+pub mod folder_build;
 pub mod in_memory;
 pub mod library;
 pub mod limits;
@@ -25,6 +27,8 @@ pub mod scene;
 pub mod shard;
 pub mod specialise;
 pub mod stage_io;
+pub mod staging;
+pub mod stamp;
 pub mod unchanged;
 pub mod variant;
 

@@ -5,6 +5,7 @@
 //! Output is a map of relative path -> bytes; `output.rs` writes or checks it.
 //! Results are collected in a fixed order, so bytes do not depend on thread count.
 
+use crate::cache::UnitCache;
 use crate::compose::{self, ENGINE_INTERFACE};
 use crate::variant::{self, CompiledVariant, sha256_hex};
 use crate::{bake, metadata, prelude};
@@ -47,20 +48,34 @@ pub struct BuildOptions {
     /// Compile only the materials of this shard (every material is still
     /// loaded and checked); see [`crate::shard`].
     pub shard: Option<crate::shard::Shard>,
+    /// A shared cache of compile units (material × variant); see [`crate::cache`].
+    pub cache_dir: Option<PathBuf>,
+    /// For a streaming build whose sink writes the files: do not keep each
+    /// material's metadata in [`BuildOutput::materials`] as well (it is in
+    /// the `.meta.json` handed over); only [`BuildOutput::dropped_metadata`]
+    /// counts them. Keeps memory to one material's worth.
+    pub drop_metadata: bool,
 }
 
 /// Everything a build produced: files relative to the output folder.
 #[derive(Default)]
 pub struct BuildOutput {
     pub files: BTreeMap<String, Vec<u8>>,
-    /// Metadata of every material, except those `kept` on disk.
+    /// Metadata of every material, except those `kept` on disk (and all,
+    /// with [`BuildOptions::drop_metadata`]).
     pub materials: Vec<MaterialMetadata>,
+    /// Materials compiled whose metadata was not kept ([`BuildOptions::drop_metadata`]).
+    pub dropped_metadata: usize,
     /// Materials whose files were reused unchanged.
     pub reused: Vec<String>,
     /// With `keep_unchanged`: the files of reused materials, left in
     /// `reuse_from` (not in `files`).
     pub kept: Option<crate::unchanged::KeptFiles>,
     pub variant_count: usize,
+    /// With `cache_dir`: compile units served from the cache, and compiled
+    /// (then stored).
+    pub cache_hits: usize,
+    pub cache_misses: usize,
     /// Warnings (e.g. parameters no variant reads), with the files they point into.
     pub warnings: Option<(SourceDb, Diagnostics)>,
 }
@@ -105,6 +120,18 @@ pub fn compile_material(
     db: &mut SourceDb,
     diags: &mut Diagnostics,
 ) -> Option<CompiledMaterial> {
+    compile_material_cached(m, db, diags, None)
+}
+
+/// As [`compile_material`], taking each variant (compile unit) from `cache`
+/// when it is there and storing those it compiles (see [`crate::cache`]).
+pub fn compile_material_cached(
+    m: &Material,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+    cache: Option<&UnitCache>,
+) -> Option<CompiledMaterial> {
+    let inputs = inputs_hash(m, db);
     let prelude = prelude::generate(m);
     let composed = compose::compose(m, &prelude, db);
     let (module, _info) = compose::parse_and_validate(&composed, m, diags)?;
@@ -114,7 +141,19 @@ pub fn compile_material(
     let keys = variants::variants(m);
     let results: Vec<Result<CompiledVariant, String>> = keys
         .par_iter()
-        .map(|k| variant::compile_variant(m, &module, k, &prelude))
+        .map(|k| {
+            let Some(cache) = cache else {
+                return variant::compile_variant(m, &module, k, &prelude);
+            };
+            let key = UnitCache::unit_key(&inputs, &k.id(m));
+            if let Some(v) = cache.load(&key) {
+                return Ok(v);
+            }
+            let v = variant::compile_variant(m, &module, k, &prelude)?;
+            // A cache that cannot be written only costs the next build time.
+            let _ = cache.store(&key, &v);
+            Ok(v)
+        })
         .collect();
     let mut compiled = Vec::new();
     for r in results {
@@ -186,7 +225,7 @@ pub fn compile_material(
             en: d.clone(),
             zh: m.description_zh.clone(),
         }),
-        inputs_hash: inputs_hash(m, db),
+        inputs_hash: inputs,
         groups: metadata::groups(m),
         parameters: metadata::parameters(m, &prelude),
         keywords: metadata::keywords(m),
@@ -384,6 +423,21 @@ pub fn build_materials_streaming(
     let pool = crate::nesting::compiler_pool(options.jobs);
     let mut out = BuildOutput::default();
     let mut previous = crate::unchanged::Previous::read(paths, options, &pool);
+    let cache = match options.cache_dir.as_deref().map(UnitCache::open) {
+        None => None,
+        Some(Ok(c)) => Some(c),
+        Some(Err(e)) => {
+            diags.push(
+                Diagnostic::error()
+                    .with_code("io")
+                    .with_message(format!("cannot use the cache folder: {e}"))
+                    .with_notes(vec![
+                        "give --cache-dir a folder this user can create and write".into(),
+                    ]),
+            );
+            return Err((db, diags));
+        }
+    };
     let mut names = std::collections::HashSet::new();
     let mut put = |rel: String, bytes: Vec<u8>, diags: &mut Diagnostics| -> bool {
         let message = format!("cannot write `{rel}`");
@@ -448,7 +502,9 @@ pub fn build_materials_streaming(
                 out.reused.push(m.name.clone());
                 Some(r)
             }
-            None => pool.install(|| compile_material(&m, &mut db, &mut diags)),
+            None => {
+                pool.install(|| compile_material_cached(&m, &mut db, &mut diags, cache.as_ref()))
+            }
         };
         // Nothing more is handed over once the build has failed.
         if let Some((meta, files)) = result.filter(|_| !diags.has_errors()) {
@@ -464,8 +520,16 @@ pub fn build_materials_streaming(
             if !put(rel, json.into_bytes(), &mut diags) {
                 return Err((db, diags));
             }
-            out.materials.push(meta);
+            if options.drop_metadata {
+                out.dropped_metadata += 1;
+            } else {
+                out.materials.push(meta);
+            }
         }
+    }
+    if let Some(c) = &cache {
+        out.cache_hits = c.hits();
+        out.cache_misses = c.misses();
     }
     if diags.has_errors() {
         return Err((db, diags));

@@ -48,6 +48,8 @@ use std::io::{self, Seek, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+pub use crate::staging::Staging;
+
 /// How long [`write_atomically`] waits for another build writing into the
 /// same folder before giving up.
 pub const DEFAULT_LOCK_WAIT: Duration = Duration::from_secs(120);
@@ -70,7 +72,7 @@ impl Staleness {
     }
 }
 
-fn is_preserved(rel: &str, preserve: &[&str]) -> bool {
+pub(crate) fn is_preserved(rel: &str, preserve: &[&str]) -> bool {
     preserve
         .iter()
         .any(|p| rel == *p || rel.starts_with(&format!("{p}/")))
@@ -85,7 +87,10 @@ fn is_internal_name(file_name: &str) -> bool {
     let Some(rest) = file_name.strip_prefix('.') else {
         return false;
     };
-    if rest.len() > ".lock".len() && rest.ends_with(".lock") {
+    if [".lock", ".stamp"]
+        .iter()
+        .any(|ext| rest.len() > ext.len() && rest.ends_with(ext))
+    {
         return true;
     }
     [".tmp-", ".old-"].iter().any(|tag| {
@@ -164,7 +169,7 @@ pub fn write_atomically(
 }
 
 /// Adds the path an operation failed on to an I/O error.
-fn at(path: &Path, what: &str) -> impl FnOnce(io::Error) -> io::Error {
+pub(crate) fn at(path: &Path, what: &str) -> impl FnOnce(io::Error) -> io::Error {
     let msg = format!("{what} `{}`", path.display());
     move |e| io::Error::new(e.kind(), format!("{msg}: {e}"))
 }
@@ -212,24 +217,20 @@ impl OutputLock {
             .to_path_buf();
         std::fs::create_dir_all(&parent).map_err(at(&parent, "cannot create folder"))?;
         let lock_path = parent.join(format!(".{name}.lock"));
-        // Read-only where the file is someone else's: locking works on it,
-        // only the holder's description is not written.
-        let (mut file, writable) = match std::fs::OpenOptions::new()
-            .read(true)
-            .write(true)
-            .create(true)
-            .truncate(false)
-            .open(&lock_path)
-        {
-            Ok(f) => (f, true),
-            Err(e) => match File::open(&lock_path) {
-                Ok(f) => (f, false),
-                Err(_) => return Err(at(&lock_path, "cannot open lock file")(e)),
-            },
-        };
+        let (mut file, writable) = open_lock_file(&lock_path)?;
         let started = Instant::now();
         let mut waited = false;
-        while !try_lock(&file).map_err(at(&lock_path, "cannot lock"))? {
+        loop {
+            if try_lock(&file).map_err(at(&lock_path, "cannot lock"))? {
+                if still_linked(&file, &lock_path) {
+                    break;
+                }
+                // The holder we waited for removed the file (its build into
+                // a missing folder failed): lock the file now at that path.
+                drop(file);
+                file = open_lock_file(&lock_path)?.0;
+                continue;
+            }
             let holder = std::fs::read_to_string(&lock_path)
                 .ok()
                 .map(|s| s.trim().to_string())
@@ -307,58 +308,76 @@ impl OutputLock {
             let _ = std::fs::rename(&newest, &self.dir);
         }
         for path in stale.into_iter().chain(olds.into_iter().map(|(_, p)| p)) {
-            let _ = std::fs::remove_dir_all(path);
+            // A stamp's temporary file, or a tree.
+            if path.is_file() {
+                let _ = std::fs::remove_file(path);
+            } else {
+                let _ = std::fs::remove_dir_all(path);
+            }
         }
     }
 
     /// Replaces the folder with exactly `files` (plus preserved paths from
     /// the old folder). On any error the old folder is left as it was.
     pub fn write(&self, files: &BTreeMap<String, Vec<u8>>, preserve: &[&str]) -> io::Result<()> {
+        let mut staging = self.stage()?;
+        for (rel, bytes) in files {
+            staging.put_ref(rel, bytes)?;
+        }
+        staging.commit(preserve)
+    }
+
+    /// Starts a new tree for this folder that files are added to one at a
+    /// time ([`Staging::put`], [`Staging::link`]) and that replaces the
+    /// folder on [`Staging::commit`]; dropped uncommitted, it vanishes.
+    pub fn stage(&self) -> io::Result<Staging<'_>> {
+        Staging::new(self)
+    }
+
+    /// Where the folder exists, whether it may be replaced.
+    pub(crate) fn existing(&self) -> io::Result<bool> {
         let dir = &self.dir;
-        let exists = match std::fs::metadata(dir) {
-            Ok(m) if !m.is_dir() => {
-                return Err(io::Error::new(
-                    io::ErrorKind::AlreadyExists,
-                    format!("`{}` exists and is not a folder", dir.display()),
-                ));
-            }
-            Ok(m) if m.permissions().readonly() => {
-                return Err(io::Error::new(
-                    io::ErrorKind::PermissionDenied,
-                    format!(
-                        "`{}` is read-only (no write permission); not replacing it",
-                        dir.display()
-                    ),
-                ));
-            }
-            Ok(_) => true,
-            Err(e) if e.kind() == io::ErrorKind::NotFound => false,
-            Err(e) => return Err(at(dir, "cannot read")(e)),
-        };
-        let tmp = tempfile::Builder::new()
+        match std::fs::metadata(dir) {
+            Ok(m) if !m.is_dir() => Err(io::Error::new(
+                io::ErrorKind::AlreadyExists,
+                format!("`{}` exists and is not a folder", dir.display()),
+            )),
+            Ok(m) if m.permissions().readonly() => Err(io::Error::new(
+                io::ErrorKind::PermissionDenied,
+                format!(
+                    "`{}` is read-only (no write permission); not replacing it",
+                    dir.display()
+                ),
+            )),
+            Ok(_) => Ok(true),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(false),
+            Err(e) => Err(at(dir, "cannot read")(e)),
+        }
+    }
+
+    /// A temporary folder beside the output folder, for a new tree.
+    pub(crate) fn temp_dir(&self) -> io::Result<tempfile::TempDir> {
+        tempfile::Builder::new()
             .prefix(&format!(".{}.tmp-", self.name))
             .rand_bytes(RAND_LEN)
             .tempdir_in(&self.parent)
-            .map_err(at(&self.parent, "cannot create a temporary folder in"))?;
-        for (rel, bytes) in files {
-            let path = tmp.path().join(rel);
-            if let Some(p) = path.parent() {
-                std::fs::create_dir_all(p).map_err(at(&path, "cannot write"))?;
-            }
-            std::fs::write(&path, bytes).map_err(at(&path, "cannot write"))?;
-        }
-        if exists {
-            for rel in list_files(dir).map_err(at(dir, "cannot read"))? {
-                if is_preserved(&rel, preserve) && !files.contains_key(&rel) {
-                    let to = tmp.path().join(&rel);
-                    if let Some(p) = to.parent() {
-                        std::fs::create_dir_all(p).map_err(at(&to, "cannot write"))?;
-                    }
-                    std::fs::copy(dir.join(&rel), &to).map_err(at(&to, "cannot write"))?;
-                }
-            }
-        }
-        if !exists {
+            .map_err(at(&self.parent, "cannot create a temporary folder in"))
+    }
+
+    /// A temporary file beside the output folder, named like its temporary
+    /// folders (so a killed build's is removed by the next).
+    pub(crate) fn temp_file(&self) -> io::Result<tempfile::NamedTempFile> {
+        tempfile::Builder::new()
+            .prefix(&format!(".{}.tmp-", self.name))
+            .rand_bytes(RAND_LEN)
+            .tempfile_in(&self.parent)
+    }
+
+    /// Puts the complete tree `tmp` in place of the folder (see the module
+    /// documentation); on error the old folder is left as it was.
+    pub(crate) fn swap_in(&self, tmp: tempfile::TempDir, existed: bool) -> io::Result<()> {
+        let dir = &self.dir;
+        if !existed {
             // Dropping `tmp` on error removes the new tree.
             std::fs::rename(tmp.path(), dir).map_err(at(dir, "cannot replace"))?;
             let _ = tmp.keep();
@@ -371,6 +390,11 @@ impl OutputLock {
             return Ok(());
         }
         self.replace_by_renames(tmp)
+    }
+
+    /// `.<name>.stamp` beside the folder (see [`crate::stamp`]).
+    pub(crate) fn stamp_path(&self) -> PathBuf {
+        self.parent.join(format!(".{}.stamp", self.name))
     }
 
     /// The fallback swap: two renames, between which `dir` does not exist
@@ -392,6 +416,52 @@ impl OutputLock {
         let _ = std::fs::remove_dir_all(&old);
         Ok(())
     }
+}
+
+impl Drop for OutputLock {
+    /// A build into a missing folder that failed leaves nothing beside it:
+    /// the lock file is removed while still held. Builds waiting on it notice
+    /// (see [`still_linked`]) and lock a new one.
+    fn drop(&mut self) {
+        if cfg!(unix) && std::fs::symlink_metadata(&self.dir).is_err() {
+            let _ = std::fs::remove_file(self.parent.join(format!(".{}.lock", self.name)));
+        }
+    }
+}
+
+/// Opens (creating) a lock file; read-only where it is someone else's
+/// (locking works on it, only the holder's description is not written).
+fn open_lock_file(lock_path: &Path) -> io::Result<(File, bool)> {
+    match std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(lock_path)
+    {
+        Ok(f) => Ok((f, true)),
+        Err(e) => match File::open(lock_path) {
+            Ok(f) => Ok((f, false)),
+            Err(_) => Err(at(lock_path, "cannot open lock file")(e)),
+        },
+    }
+}
+
+/// Whether the locked `file` is still the one at `path` (not removed by
+/// the holder before us).
+#[cfg(unix)]
+fn still_linked(file: &File, path: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (file.metadata(), std::fs::metadata(path)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+#[cfg(not(unix))]
+fn still_linked(_: &File, _: &Path) -> bool {
+    // Lock files are never removed there (see `Drop for OutputLock`).
+    true
 }
 
 /// Takes an exclusive lock on `file` if nobody holds one; `Ok(false)` if

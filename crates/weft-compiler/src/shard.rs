@@ -73,10 +73,12 @@ impl Shard {
 
 /// The files of the shards' output folders `dirs`, joined: one of each
 /// shard `1..=n` (told by its [`SHARD_MARKER`], which is left out), files
-/// present in several (the library-wide ones) identical in all. Reads every
-/// file into memory.
-pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, Vec<u8>>, String> {
-    let mut files: BTreeMap<String, (Vec<u8>, &Path)> = BTreeMap::new();
+/// present in several (the library-wide ones) identical in all. Returns
+/// where each file is (relative path -> the file in one shard's folder), so
+/// that the merged folder can link rather than copy them; only files present
+/// in several shards are read.
+pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, PathBuf>, String> {
+    let mut files: BTreeMap<String, PathBuf> = BTreeMap::new();
     let mut seen: BTreeMap<usize, &Path> = BTreeMap::new();
     let mut count = None;
     for dir in dirs {
@@ -110,18 +112,20 @@ pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, Vec<u8>>, String> {
                 continue;
             }
             let path = dir.join(&rel);
-            let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
             match files.get(&rel) {
-                Some((b, _)) if *b == bytes => {}
-                Some((_, other)) => {
-                    return Err(format!(
-                        "`{rel}` differs between `{}` and `{}` (shards of different sources or toolchains?)",
-                        other.display(),
-                        dir.display()
-                    ));
+                Some(other) => {
+                    let read =
+                        |p: &Path| std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()));
+                    if read(other)? != read(&path)? {
+                        return Err(format!(
+                            "`{rel}` differs between `{}` and `{}` (shards of different sources or toolchains?)",
+                            other.display(),
+                            path.display()
+                        ));
+                    }
                 }
                 None => {
-                    files.insert(rel, (bytes, dir));
+                    files.insert(rel, path);
                 }
             }
         }
@@ -134,7 +138,7 @@ pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, Vec<u8>>, String> {
     if !missing.is_empty() {
         return Err(format!("missing shard(s) {}", missing.join(", ")));
     }
-    Ok(files.into_iter().map(|(k, (b, _))| (k, b)).collect())
+    Ok(files)
 }
 
 #[cfg(test)]

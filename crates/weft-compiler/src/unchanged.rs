@@ -16,6 +16,9 @@
 
 use crate::BuildOptions;
 use crate::library::BuildOutput;
+use crate::output::is_preserved;
+use crate::staging::Staging;
+use crate::stamp::Stamp;
 use rayon::prelude::*;
 use serde::Deserialize;
 use std::collections::{BTreeMap, HashMap};
@@ -132,7 +135,9 @@ pub struct KeptFiles {
 impl BuildOutput {
     /// Materials the build produced: those in `materials` and those kept on disk.
     pub fn material_count(&self) -> usize {
-        self.materials.len() + self.kept.as_ref().map_or(0, |k| k.materials.len())
+        self.materials.len()
+            + self.dropped_metadata
+            + self.kept.as_ref().map_or(0, |k| k.materials.len())
     }
 
     /// Files the build produced: those in `files` and those kept on disk.
@@ -141,18 +146,31 @@ impl BuildOutput {
     }
 
     /// Whether `dir` already holds exactly this build's files (apart from
-    /// `preserve`d paths), so that nothing needs writing: every material was
-    /// kept from `dir`, every other file (LUTs, schemas, recompiled
-    /// materials) has the same bytes there, and `dir` holds no other file.
-    /// Kept files are judged by name (see the module documentation).
-    pub fn up_to_date(&self, dir: &Path, preserve: &[&str]) -> io::Result<bool> {
-        let kept = match &self.kept {
-            Some(k) if k.dir == dir => &k.files,
-            Some(_) => return Ok(false),
-            None if dir.exists() => &BTreeMap::new(),
-            None => return Ok(false),
+    /// `preserve`d paths), so that nothing needs writing: `files` (what the
+    /// build handed over: LUTs, schemas, recompiled materials) have the same
+    /// bytes there, every kept file is still the one `stamp` recorded when
+    /// it was written (same size and modification time), and `dir` holds no
+    /// other file. Without a stamp, kept files cannot be vouched for unread:
+    /// not up to date.
+    pub fn up_to_date(
+        &self,
+        files: &BTreeMap<String, Vec<u8>>,
+        dir: &Path,
+        preserve: &[&str],
+        stamp: Option<&Stamp>,
+    ) -> io::Result<bool> {
+        let kept = match (&self.kept, stamp) {
+            (Some(k), Some(stamp)) if k.dir == dir => {
+                if !k.files.keys().all(|rel| stamp.matches(dir, rel)) {
+                    return Ok(false);
+                }
+                &k.files
+            }
+            (Some(_), _) => return Ok(false),
+            (None, _) if dir.exists() => &BTreeMap::new(),
+            (None, _) => return Ok(false),
         };
-        for (rel, bytes) in &self.files {
+        for (rel, bytes) in files {
             match std::fs::read(dir.join(rel)) {
                 Ok(disk) if disk == *bytes => {}
                 Ok(_) => return Ok(false),
@@ -163,19 +181,47 @@ impl BuildOutput {
         let mut found = 0usize;
         let mut extra = false;
         walk(dir, String::new(), preserve, &mut |rel| {
-            if self.files.contains_key(rel) || kept.contains_key(rel) {
+            if files.contains_key(rel) || kept.contains_key(rel) {
                 found += 1;
             } else {
                 extra = true;
             }
         })?;
-        Ok(!extra && found == self.files.len() + kept.len())
+        Ok(!extra && found == files.len() + kept.len())
     }
 
-    /// Reads the kept files into `files` (for a build that must rewrite the
-    /// output folder). Fails if one is missing, or (`InvalidData`) no longer
-    /// has the SHA-256 its metadata records: build again without
-    /// `keep_unchanged` to recompile its material.
+    /// Adds the kept files to `staging` without copying their bytes (hard
+    /// links into the new tree). Each must still be the file its material's
+    /// metadata lists: the one `stamp` recorded, or else one whose SHA-256
+    /// matches (read and hashed; a metadata file, which has no recorded
+    /// hash, must match the stamp). Fails if one is missing (`NotFound`) or
+    /// changed (`InvalidData`): build again without `keep_unchanged` to
+    /// recompile its material.
+    pub fn link_kept(&self, staging: &mut Staging, stamp: Option<&Stamp>) -> io::Result<()> {
+        let Some(kept) = &self.kept else {
+            return Ok(());
+        };
+        for (rel, sha) in &kept.files {
+            let path = kept.dir.join(rel);
+            if !stamp.is_some_and(|s| s.matches(&kept.dir, rel)) {
+                // A metadata file has no recorded hash to check it against.
+                let Some(sha) = sha else {
+                    return Err(changed(&path));
+                };
+                let bytes = std::fs::read(&path)
+                    .map_err(|e| io::Error::new(e.kind(), format!("`{}`: {e}", path.display())))?;
+                if crate::variant::sha256_hex(&bytes) != *sha {
+                    return Err(changed(&path));
+                }
+            }
+            staging.link(rel, &path)?;
+        }
+        Ok(())
+    }
+
+    /// Reads the kept files into `files` (for a caller that holds the whole
+    /// build in memory). Fails as [`BuildOutput::link_kept`] does; every
+    /// file with a recorded SHA-256 is read and checked.
     pub fn load_kept(&mut self) -> io::Result<()> {
         let Some(kept) = self.kept.as_mut() else {
             return Ok(());
@@ -188,13 +234,7 @@ impl BuildOutput {
             if let Some(sha) = sha
                 && crate::variant::sha256_hex(&bytes) != *sha
             {
-                return Err(io::Error::new(
-                    io::ErrorKind::InvalidData,
-                    format!(
-                        "`{}` is not the file its metadata lists (changed since it was built)",
-                        path.display()
-                    ),
-                ));
+                return Err(changed(&path));
             }
             loaded.push((rel.clone(), bytes));
         }
@@ -205,19 +245,20 @@ impl BuildOutput {
     }
 }
 
-fn is_preserved(rel: &str, preserve: &[&str]) -> bool {
-    preserve.iter().any(|p| {
-        rel == *p
-            || rel
-                .strip_prefix(p)
-                .is_some_and(|rest| rest.starts_with('/'))
-    })
+fn changed(path: &Path) -> io::Error {
+    io::Error::new(
+        io::ErrorKind::InvalidData,
+        format!(
+            "`{}` is not the file its metadata lists (changed since it was built)",
+            path.display()
+        ),
+    )
 }
 
 /// Calls `each` with every file under `dir` (relative, `/`-separated),
 /// not descending into preserved paths. Uses the directory entries' types,
 /// so one `getdents` per folder and no `stat` per file on most systems.
-fn walk(
+pub(crate) fn walk(
     dir: &Path,
     prefix: String,
     preserve: &[&str],
@@ -237,93 +278,4 @@ fn walk(
         }
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::build_library;
-
-    fn materials() -> PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials")
-    }
-
-    fn build(out: &Path, keep: bool) -> BuildOutput {
-        let options = BuildOptions {
-            reuse_from: Some(out.to_path_buf()),
-            keep_unchanged: keep,
-            ..Default::default()
-        };
-        match build_library(&materials(), &options, &|_, _, _| {}) {
-            Ok(b) => b,
-            Err((db, d)) => panic!("{}", d.render_plain(&db)),
-        }
-    }
-
-    #[test]
-    fn an_unchanged_tree_is_up_to_date_and_a_touched_one_is_not() {
-        let tmp = tempfile::tempdir().unwrap();
-        let out = tmp.path().join("out");
-        let full = build(&out, true);
-        assert!(full.kept.is_none() && full.reused.is_empty());
-        assert!(!full.up_to_date(&out, &[]).unwrap(), "nothing written yet");
-        crate::output::write_atomically(&out, &full.files, &["reports"]).unwrap();
-
-        let again = build(&out, true);
-        assert_eq!(again.reused.len(), full.materials.len());
-        assert_eq!(again.material_count(), full.materials.len());
-        assert!(again.materials.is_empty());
-        assert_eq!(again.file_count(), full.files.len());
-        assert_eq!(again.variant_count, full.variant_count);
-        assert!(again.up_to_date(&out, &["reports"]).unwrap());
-
-        // Preserved paths are ignored; any other extra file is not.
-        std::fs::create_dir_all(out.join("reports")).unwrap();
-        std::fs::write(out.join("reports/x.md"), "kept").unwrap();
-        assert!(again.up_to_date(&out, &["reports"]).unwrap());
-        std::fs::write(out.join("standard/stray.txt"), "x").unwrap();
-        assert!(!again.up_to_date(&out, &["reports"]).unwrap());
-        std::fs::remove_file(out.join("standard/stray.txt")).unwrap();
-
-        // The kept files read back are the full build's bytes.
-        let mut loaded = again.clone_kept_for_test();
-        loaded.load_kept().unwrap();
-        assert_eq!(loaded.files, full.files);
-
-        // A changed output file: still kept by name, but caught when read.
-        let victim = full
-            .files
-            .keys()
-            .find(|k| k.starts_with("standard/") && k.ends_with(".wgsl"))
-            .unwrap()
-            .clone();
-        std::fs::write(out.join(&victim), "// edited\n").unwrap();
-        let mut tampered = build(&out, true);
-        let err = tampered.load_kept().unwrap_err();
-        assert_eq!(err.kind(), io::ErrorKind::InvalidData);
-        // Without keep_unchanged the material is recompiled.
-        let healed = build(&out, false);
-        assert!(!healed.reused.contains(&"standard".to_string()));
-        assert_eq!(healed.files, full.files);
-
-        // A missing output file: not up to date, and caught when read.
-        std::fs::remove_file(out.join(&victim)).unwrap();
-        let mut missing = build(&out, true);
-        assert!(!missing.up_to_date(&out, &["reports"]).unwrap());
-        let err = missing.load_kept().unwrap_err();
-        assert_eq!(err.kind(), io::ErrorKind::NotFound);
-        let rebuilt = build(&out, false);
-        assert!(!rebuilt.reused.contains(&"standard".to_string()));
-        assert_eq!(rebuilt.files, full.files);
-    }
-
-    impl BuildOutput {
-        fn clone_kept_for_test(&self) -> BuildOutput {
-            BuildOutput {
-                files: self.files.clone(),
-                kept: self.kept.clone(),
-                ..Default::default()
-            }
-        }
-    }
 }
