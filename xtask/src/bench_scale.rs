@@ -340,7 +340,7 @@ fn measure(
 }
 
 /// Appends a comment to the first material's TOML (its inputs change, the
-/// others' do not), rebuilds, and puts the file back.
+/// others' do not), rebuilds, and puts the file and the output back.
 fn measure_one_edit(
     build: &mut dyn FnMut() -> Command,
     materials_dir: &Path,
@@ -359,6 +359,8 @@ fn measure_one_edit(
     let r = run_child(&mut build());
     write(&text)?;
     let r = r?;
+    // Back to the unedited build (not measured), for the comparisons after.
+    run_child(&mut build())?;
     let (_, _, _, unchanged) =
         parse_built(&r.stdout).ok_or_else(|| format!("unexpected output: {}", r.stdout))?;
     if unchanged + 1 != materials {

@@ -161,7 +161,8 @@ impl BuildOutput {
     ) -> io::Result<bool> {
         let kept = match (&self.kept, stamp) {
             (Some(k), Some(stamp)) if k.dir == dir => {
-                if !k.files.keys().all(|rel| stamp.matches(dir, rel)) {
+                // One `stat` per kept file, spread over the cores.
+                if !k.files.par_iter().all(|(rel, _)| stamp.matches(dir, rel)) {
                     return Ok(false);
                 }
                 &k.files
