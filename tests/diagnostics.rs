@@ -62,6 +62,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ),
     ("source_outside_root", &["source-outside-root"]),
     ("stage_mismatch", &["stage-mismatch"]),
+    ("tier_relations", &["tier-relation"]),
     ("toml_syntax", &["toml-syntax"]),
     ("too_many_textures", &["gpu-limit"]),
     ("too_many_varyings", &["gpu-limit"]),

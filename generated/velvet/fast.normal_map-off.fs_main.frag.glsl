@@ -39,6 +39,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -47,11 +48,15 @@ const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_5_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 0) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 1) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -59,41 +64,17 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
-    float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
 }
 
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(float roughness) {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
-vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
-}
-
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
-    float k = (((a + 1.0) * (a + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
@@ -141,31 +122,90 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
+float weft_specular_mip(float roughness) {
+    float r_2 = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float weft_fabric_d(float n_dot_h) {
-    float x_2 = (1.0 - clamp(n_dot_h, 0.0, 1.0));
-    return (((0.96 * x_2) * x_2) + 0.057);
+float weft_sheen_clamp_roughness(float sheen_roughness) {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
 }
 
-float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale) {
-    float x_3 = (1.0 - clamp(n_dot_v_1, 0.0, 1.0));
-    float _e5 = weft_pow4_(x_3);
-    return mix(_e5, (0.4 * x_3), clamp(scale, 0.0, 1.0));
+float weft_d_charlie(float n_dot_h, float sheen_roughness_1) {
+    float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = (1.0 / _e2);
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float sin2_ = max(((1.0 - noh) * (1.0 + noh)), 0.0);
+    return (((2.0 + inv_r) * pow(sin2_, (0.5 * inv_r))) * 0.15915494);
 }
 
-vec3 weft_fabric_scatter(vec3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1) {
-    float wrap = ((clamp(n_dot_l_1, 0.0, 1.0) * 0.5) + 0.5);
-    float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return (max(scatter_color, vec3(0.0)) * (wrap * _e12));
+float weft_sheen_l(float x, float r) {
+    float t = ((1.0 - r) * (1.0 - r));
+    float a = mix(21.5473, 25.3245, t);
+    float b = mix(3.82987, 3.32435, t);
+    float c_2 = mix(0.19823, 0.16801, t);
+    float d = mix(-1.9776, -1.27393, t);
+    float e_1 = mix(-4.32054, -4.85967, t);
+    return (((a / (1.0 + (b * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
+}
+
+float weft_sheen_lambda(float cos_theta, float r_1) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = exp(_e3);
+    float _e6 = weft_sheen_l(0.5, r_1);
+    float _e11 = weft_sheen_l((1.0 - _e2), r_1);
+    float hi = exp(((2.0 * _e6) - _e11));
+    return ((_e2 < 0.5) ? lo : hi);
+}
+
+float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda(_e4, _e3);
+    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = ((1.0 + _e6) + _e9);
+    return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
+}
+
+vec3 weft_sheen_charlie(vec3 sheen_color, float n_dot_h_1, float n_dot_v_1, float n_dot_l_1, float sheen_roughness_3) {
+    float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = (_e5 * _e6);
+    return (max(sheen_color, vec3(0.0)) * (lobe * clamp(n_dot_l_1, 0.0, 1.0)));
+}
+
+float weft_sheen_albedo_scaling_view(vec3 sheen_color_1, float e_v) {
+    float _e2 = weft_max3_(sheen_color_1);
+    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v, 0.0, 1.0))), 0.0, 1.0);
+}
+
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e3);
+    vec4 _e8 = textureLod(_group_0_binding_5_fs, vec2(uv_1), 0.0);
+    return clamp(_e8.x, 0.0, 1.0);
 }
 
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
     vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -193,28 +233,37 @@ void main() {
     vec3 _e53 = n;
     float n_dot_l_2 = clamp(dot(_e53, _e46), 0.0, 1.0);
     vec3 _e56 = n;
-    float n_dot_h_1 = clamp(dot(_e56, _e49), 0.0, 1.0);
+    float n_dot_h_2 = clamp(dot(_e56, _e49), 0.0, 1.0);
     float l_dot_h = clamp(dot(_e46, _e49), 0.0, 1.0);
-    vec3 f0_1 = mix(vec3(0.04), base, metallic);
+    vec3 f0_ = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     vec3 _e67 = weft_main_light_radiance();
     vec3 _e68 = n;
     vec3 _e69 = weft_sh_irradiance(_e68);
     vec3 ambient = (_e69 * ao);
     {
-        float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-        float _e74 = weft_fabric_d(n_dot_h_1);
-        vec3 specular = ((_e74 * _e72) * _e73);
-        vec3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-        vec3 direct = (((_e77 + specular) * _e67) * n_dot_l_2);
-        vec4 _e83 = _group_1_binding_0_fs.scatter_color;
-        float _e87 = _group_1_binding_0_fs.scatter_scale;
-        vec3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-        color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        vec4 _e74 = _group_1_binding_0_fs.scatter_color;
+        vec3 sheen_color_2 = clamp((f0_ + max(_e74.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+        float _e81 = weft_sheen_clamp_roughness(roughness_2);
+        float _e82 = weft_sheen_albedo(_e52, _e81);
+        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+        {
+            vec3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e86;
+            scaling = _e83;
+        }
+        vec3 _e87 = weft_diffuse_lambert(diffuse_albedo);
+        float _e88 = scaling;
+        vec3 base_direct = (_e87 * (_e88 * n_dot_l_2));
+        vec3 _e91 = sheen;
+        vec3 direct = ((_e91 + base_direct) * _e67);
+        vec3 _e95 = n;
+        vec3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
+        vec3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
-    vec3 _e92 = color;
-    vec3 radiance = clamp(_e92, vec3(0.0), vec3(65504.0));
+    vec3 _e105 = color;
+    vec3 radiance = clamp(_e105, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

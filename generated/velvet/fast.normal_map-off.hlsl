@@ -50,6 +50,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -57,10 +58,15 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
-cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
-cbuffer material : register(b0, space1) { WeftMaterial material; }
+TextureCube<float4> weft_environment : register(t1);
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+Texture2D<float4> weft_sheen_lut : register(t5);
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
 Texture2D<float4> base_map : register(t3, space1);
@@ -82,16 +88,9 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_max3_(float3 v)
 {
-    float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return max(v.x, max(v.y, v.z));
 }
 
 float weft_clamp_cos(float c)
@@ -99,31 +98,10 @@ float weft_clamp_cos(float c)
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(float roughness)
+float3 weft_safe_normalize(float3 v_1, float3 fallback)
 {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
-float3 weft_safe_normalize(float3 v, float3 fallback)
-{
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
-}
-
-float3 weft_f_schlick(float3 f0_, float v_dot_h)
-{
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
-    return (f0_ + (((1.0).xxx - f0_) * _e5));
-}
-
-float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1)
-{
-    const float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
-    float k = (((a + 1.0) * (a + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -177,29 +155,93 @@ float3 weft_sh_irradiance(float3 n_1)
     return max(_e91, (0.0).xxx);
 }
 
+float weft_specular_mip(float roughness)
+{
+    float r_2 = saturate(roughness);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
+{
+    const float _e4 = weft_specular_mip(roughness_1);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
 }
 
-float weft_fabric_d(float n_dot_h)
+float weft_sheen_clamp_roughness(float sheen_roughness)
 {
-    float x_2 = (1.0 - saturate(n_dot_h));
-    return (((0.96 * x_2) * x_2) + 0.057);
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
 }
 
-float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale)
+float weft_d_charlie(float n_dot_h, float sheen_roughness_1)
 {
-    float x_3 = (1.0 - saturate(n_dot_v_1));
-    const float _e5 = weft_pow4_(x_3);
-    return lerp(_e5, (0.4 * x_3), saturate(scale));
+    const float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = (1.0 / _e2);
+    float noh = saturate(n_dot_h);
+    float sin2_ = max(((1.0 - noh) * (1.0 + noh)), 0.0);
+    return (((2.0 + inv_r) * pow(sin2_, (0.5 * inv_r))) * 0.15915494);
 }
 
-float3 weft_fabric_scatter(float3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1)
+float weft_sheen_l(float x, float r)
 {
-    float wrap = ((saturate(n_dot_l_1) * 0.5) + 0.5);
-    const float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return (max(scatter_color, (0.0).xxx) * (wrap * _e12));
+    float t = ((1.0 - r) * (1.0 - r));
+    float a = lerp(21.5473, 25.3245, t);
+    float b = lerp(3.82987, 3.32435, t);
+    float c_2 = lerp(0.19823, 0.16801, t);
+    float d = lerp(-1.9776, -1.27393, t);
+    float e_1 = lerp(-4.32054, -4.85967, t);
+    return (((a / (1.0 + (b * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
+}
+
+float weft_sheen_lambda(float cos_theta, float r_1)
+{
+    const float _e2 = weft_clamp_cos(cos_theta);
+    const float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = exp(_e3);
+    const float _e6 = weft_sheen_l(0.5, r_1);
+    const float _e11 = weft_sheen_l((1.0 - _e2), r_1);
+    float hi = exp(((2.0 * _e6) - _e11));
+    return ((_e2 < 0.5) ? lo : hi);
+}
+
+float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
+{
+    const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    const float _e4 = weft_clamp_cos(n_dot_v);
+    const float _e5 = weft_clamp_cos(n_dot_l);
+    const float _e6 = weft_sheen_lambda(_e4, _e3);
+    const float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = ((1.0 + _e6) + _e9);
+    return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
+}
+
+float3 weft_sheen_charlie(float3 sheen_color, float n_dot_h_1, float n_dot_v_1, float n_dot_l_1, float sheen_roughness_3)
+{
+    const float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    const float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = (_e5 * _e6);
+    return (max(sheen_color, (0.0).xxx) * (lobe * saturate(n_dot_l_1)));
+}
+
+float weft_sheen_albedo_scaling_view(float3 sheen_color_1, float e_v)
+{
+    const float _e2 = weft_max3_(sheen_color_1);
+    return saturate((1.0 - (saturate(_e2) * saturate(e_v))));
+}
+
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4)
+{
+    const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    float2 uv_1 = float2(saturate(n_dot_x), _e3);
+    float4 _e8 = weft_sheen_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return saturate(_e8.x);
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -232,6 +274,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -260,27 +304,36 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e53 = n;
     float n_dot_l_2 = saturate(dot(_e53, _e46));
     float3 _e56 = n;
-    float n_dot_h_1 = saturate(dot(_e56, _e49));
+    float n_dot_h_2 = saturate(dot(_e56, _e49));
     float l_dot_h = saturate(dot(_e46, _e49));
-    float3 f0_1 = lerp((0.04).xxx, base, metallic);
+    float3 f0_ = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     const float3 _e67 = weft_main_light_radiance();
     float3 _e68 = n;
     const float3 _e69 = weft_sh_irradiance(_e68);
     float3 ambient = (_e69 * ao);
     {
-        const float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        const float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-        const float _e74 = weft_fabric_d(n_dot_h_1);
-        float3 specular = ((_e74 * _e72) * _e73);
-        const float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-        float3 direct = (((_e77 + specular) * _e67) * n_dot_l_2);
-        float4 _e83 = material.scatter_color;
-        float _e87 = material.scatter_scale;
-        const float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-        color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        float4 _e74 = material.scatter_color;
+        float3 sheen_color_2 = saturate((f0_ + max(_e74.xyz, (0.0).xxx)));
+        const float _e81 = weft_sheen_clamp_roughness(roughness_2);
+        const float _e82 = weft_sheen_albedo(_e52, _e81);
+        const float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+        {
+            const float3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e86;
+            scaling = _e83;
+        }
+        const float3 _e87 = weft_diffuse_lambert(diffuse_albedo);
+        float _e88 = scaling;
+        float3 base_direct = (_e87 * (_e88 * n_dot_l_2));
+        float3 _e91 = sheen;
+        float3 direct = ((_e91 + base_direct) * _e67);
+        float3 _e95 = n;
+        const float3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
+        float3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
-    float3 _e92 = color;
-    float3 radiance = clamp(_e92, (0.0).xxx, (65504.0).xxx);
+    float3 _e105 = color;
+    float3 radiance = clamp(_e105, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

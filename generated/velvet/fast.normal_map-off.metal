@@ -52,24 +52,17 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 
-float weft_pow4_(
-    float x
+float weft_max3_(
+    metal::float3 v
 ) {
-    float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
+    return metal::max(v.x, metal::max(v.y, v.z));
 }
 
 float weft_clamp_cos(
@@ -78,39 +71,12 @@ float weft_clamp_cos(
     return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(
-    float roughness
-) {
-    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
 metal::float3 weft_safe_normalize(
-    metal::float3 v,
+    metal::float3 v_1,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v, v);
-    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
-}
-
-metal::float3 weft_f_schlick(
-    metal::float3 f0_,
-    float v_dot_h
-) {
-    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
-    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v,
-    float n_dot_l,
-    float roughness_1
-) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = _e3 * _e3;
-    float k = ((a + 1.0) * (a + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
+    float len2_ = metal::dot(v_1, v_1);
+    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -171,6 +137,28 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
+float weft_specular_mip(
+    float roughness,
+    constant WeftFrame& weft_frame
+) {
+    float r_2 = metal::saturate(roughness);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r_2 * (1.7 - (0.7 * r_2))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_1,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_1, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -178,31 +166,94 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
-float weft_fabric_d(
-    float n_dot_h
+float weft_sheen_clamp_roughness(
+    float sheen_roughness
 ) {
-    float x_2 = 1.0 - metal::saturate(n_dot_h);
-    return ((0.96 * x_2) * x_2) + 0.057;
+    return metal::clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
 }
 
-float weft_fabric_scatter_fresnel_lerp(
+float weft_d_charlie(
+    float n_dot_h,
+    float sheen_roughness_1
+) {
+    float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = 1.0 / _e2;
+    float noh = metal::saturate(n_dot_h);
+    float sin2_ = metal::max((1.0 - noh) * (1.0 + noh), 0.0);
+    return ((2.0 + inv_r) * metal::pow(sin2_, 0.5 * inv_r)) * 0.15915494;
+}
+
+float weft_sheen_l(
+    float x,
+    float r
+) {
+    float t = (1.0 - r) * (1.0 - r);
+    float a = metal::mix(21.5473, 25.3245, t);
+    float b = metal::mix(3.82987, 3.32435, t);
+    float c_2 = metal::mix(0.19823, 0.16801, t);
+    float d = metal::mix(-1.9776, -1.27393, t);
+    float e_1 = metal::mix(-4.32054, -4.85967, t);
+    return ((a / (1.0 + (b * metal::pow(metal::max(x, 0.0), c_2)))) + (d * x)) + e_1;
+}
+
+float weft_sheen_lambda(
+    float cos_theta,
+    float r_1
+) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = metal::exp(_e3);
+    float _e6 = weft_sheen_l(0.5, r_1);
+    float _e11 = weft_sheen_l(1.0 - _e2, r_1);
+    float hi = metal::exp((2.0 * _e6) - _e11);
+    return (_e2 < 0.5) ? lo : hi;
+}
+
+float weft_v_charlie(
+    float n_dot_v,
+    float n_dot_l,
+    float sheen_roughness_2
+) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda(_e4, _e3);
+    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = (1.0 + _e6) + _e9;
+    return 1.0 / (((g_inv * 4.0) * _e4) * _e5);
+}
+
+metal::float3 weft_sheen_charlie(
+    metal::float3 sheen_color,
+    float n_dot_h_1,
     float n_dot_v_1,
-    float scale
+    float n_dot_l_1,
+    float sheen_roughness_3
 ) {
-    float x_3 = 1.0 - metal::saturate(n_dot_v_1);
-    float _e5 = weft_pow4_(x_3);
-    return metal::mix(_e5, 0.4 * x_3, metal::saturate(scale));
+    float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = _e5 * _e6;
+    return metal::max(sheen_color, metal::float3(0.0)) * (lobe * metal::saturate(n_dot_l_1));
 }
 
-metal::float3 weft_fabric_scatter(
-    metal::float3 scatter_color,
-    float n_dot_l_1,
-    float n_dot_v_2,
-    float scale_1
+float weft_sheen_albedo_scaling_view(
+    metal::float3 sheen_color_1,
+    float e_v
 ) {
-    float wrap = (metal::saturate(n_dot_l_1) * 0.5) + 0.5;
-    float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return metal::max(scatter_color, metal::float3(0.0)) * (wrap * _e12);
+    float _e2 = weft_max3_(sheen_color_1);
+    return metal::saturate(1.0 - (metal::saturate(_e2) * metal::saturate(e_v)));
+}
+
+float weft_sheen_albedo(
+    float n_dot_x,
+    float sheen_roughness_4,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut
+) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e3);
+    metal::float4 _e8 = weft_sheen_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return metal::saturate(_e8.x);
 }
 
 struct vs_mainInput {
@@ -259,14 +310,20 @@ fragment fs_mainOutput fs_main(
   fs_mainInput varyings_1 [[stage_in]]
 , metal::float4 clip_position [[position]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(0)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
-, metal::texture2d<float, metal::access::sample> occlusion_map [[texture(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
+    metal::float3 sheen = {};
+    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -294,27 +351,36 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e53 = n;
     float n_dot_l_2 = metal::saturate(metal::dot(_e53, _e46));
     metal::float3 _e56 = n;
-    float n_dot_h_1 = metal::saturate(metal::dot(_e56, _e49));
+    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e49));
     float l_dot_h = metal::saturate(metal::dot(_e46, _e49));
-    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_ = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     metal::float3 _e67 = weft_main_light_radiance(weft_frame);
     metal::float3 _e68 = n;
     metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
     metal::float3 ambient = _e69 * ao;
     {
-        float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        metal::float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-        float _e74 = weft_fabric_d(n_dot_h_1);
-        metal::float3 specular = (_e74 * _e72) * _e73;
-        metal::float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float3 direct = ((_e77 + specular) * _e67) * n_dot_l_2;
-        metal::float4 _e83 = material.scatter_color;
-        float _e87 = material.scatter_scale;
-        metal::float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-        color = (direct + (ambient * diffuse_albedo)) + _e88;
+        metal::float4 _e74 = material.scatter_color;
+        metal::float3 sheen_color_2 = metal::saturate(f0_ + metal::max(_e74.xyz, metal::float3(0.0)));
+        float _e81 = weft_sheen_clamp_roughness(roughness_2);
+        float _e82 = weft_sheen_albedo(_e52, _e81, weft_lut_sampler, weft_sheen_lut);
+        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+        {
+            metal::float3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e86;
+            scaling = _e83;
+        }
+        metal::float3 _e87 = weft_diffuse_lambert(diffuse_albedo);
+        float _e88 = scaling;
+        metal::float3 base_direct = _e87 * (_e88 * n_dot_l_2);
+        metal::float3 _e91 = sheen;
+        metal::float3 direct = (_e91 + base_direct) * _e67;
+        metal::float3 _e95 = n;
+        metal::float3 _e97 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e95), _e81, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e97 * sheen_color_2) * (_e82 * ao);
+        color = (direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen;
     }
-    metal::float3 _e92 = color;
-    metal::float3 radiance = metal::clamp(_e92, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e105 = color;
+    metal::float3 radiance = metal::clamp(_e105, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -39,6 +39,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -47,13 +48,17 @@ const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_5_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 0) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 1) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -61,27 +66,17 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
-    float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
 }
 
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(float roughness) {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
-vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
@@ -89,20 +84,6 @@ vec3 weft_any_perpendicular(vec3 n_1) {
     float a = (-1.0 / (s + n_1.z));
     float b = ((n_1.x * n_1.y) * a);
     return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
-}
-
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
@@ -150,6 +131,19 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
+float weft_specular_mip(float roughness) {
+    float r_2 = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
     vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
@@ -163,8 +157,8 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -176,27 +170,73 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float weft_fabric_d(float n_dot_h) {
-    float x_2 = (1.0 - clamp(n_dot_h, 0.0, 1.0));
-    return (((0.96 * x_2) * x_2) + 0.057);
+float weft_sheen_clamp_roughness(float sheen_roughness) {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
 }
 
-float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale) {
-    float x_3 = (1.0 - clamp(n_dot_v_1, 0.0, 1.0));
-    float _e5 = weft_pow4_(x_3);
-    return mix(_e5, (0.4 * x_3), clamp(scale, 0.0, 1.0));
+float weft_d_charlie(float n_dot_h, float sheen_roughness_1) {
+    float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = (1.0 / _e2);
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float sin2_ = max(((1.0 - noh) * (1.0 + noh)), 0.0);
+    return (((2.0 + inv_r) * pow(sin2_, (0.5 * inv_r))) * 0.15915494);
 }
 
-vec3 weft_fabric_scatter(vec3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1) {
-    float wrap = ((clamp(n_dot_l_1, 0.0, 1.0) * 0.5) + 0.5);
-    float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return (max(scatter_color, vec3(0.0)) * (wrap * _e12));
+float weft_sheen_l(float x, float r) {
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a_1 = mix(21.5473, 25.3245, t_1);
+    float b_2 = mix(3.82987, 3.32435, t_1);
+    float c_2 = mix(0.19823, 0.16801, t_1);
+    float d = mix(-1.9776, -1.27393, t_1);
+    float e_1 = mix(-4.32054, -4.85967, t_1);
+    return (((a_1 / (1.0 + (b_2 * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
+}
+
+float weft_sheen_lambda(float cos_theta, float r_1) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = exp(_e3);
+    float _e6 = weft_sheen_l(0.5, r_1);
+    float _e11 = weft_sheen_l((1.0 - _e2), r_1);
+    float hi = exp(((2.0 * _e6) - _e11));
+    return ((_e2 < 0.5) ? lo : hi);
+}
+
+float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda(_e4, _e3);
+    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = ((1.0 + _e6) + _e9);
+    return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
+}
+
+vec3 weft_sheen_charlie(vec3 sheen_color, float n_dot_h_1, float n_dot_v_1, float n_dot_l_1, float sheen_roughness_3) {
+    float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = (_e5 * _e6);
+    return (max(sheen_color, vec3(0.0)) * (lobe * clamp(n_dot_l_1, 0.0, 1.0)));
+}
+
+float weft_sheen_albedo_scaling_view(vec3 sheen_color_1, float e_v) {
+    float _e2 = weft_max3_(sheen_color_1);
+    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v, 0.0, 1.0))), 0.0, 1.0);
+}
+
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e3);
+    vec4 _e8 = textureLod(_group_0_binding_5_fs, vec2(uv_1), 0.0);
+    return clamp(_e8.x, 0.0, 1.0);
 }
 
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
     vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -234,28 +274,37 @@ void main() {
     vec3 _e65 = n;
     float n_dot_l_2 = clamp(dot(_e65, _e58), 0.0, 1.0);
     vec3 _e68 = n;
-    float n_dot_h_1 = clamp(dot(_e68, _e61), 0.0, 1.0);
+    float n_dot_h_2 = clamp(dot(_e68, _e61), 0.0, 1.0);
     float l_dot_h = clamp(dot(_e58, _e61), 0.0, 1.0);
-    vec3 f0_1 = mix(vec3(0.04), base, metallic);
+    vec3 f0_ = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     vec3 _e79 = weft_main_light_radiance();
     vec3 _e80 = n;
     vec3 _e81 = weft_sh_irradiance(_e80);
     vec3 ambient = (_e81 * ao);
     {
-        float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        vec3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-        float _e86 = weft_fabric_d(n_dot_h_1);
-        vec3 specular = ((_e86 * _e84) * _e85);
-        vec3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        vec3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-        vec4 _e95 = _group_1_binding_0_fs.scatter_color;
-        float _e99 = _group_1_binding_0_fs.scatter_scale;
-        vec3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        vec4 _e86 = _group_1_binding_0_fs.scatter_color;
+        vec3 sheen_color_2 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+        float _e93 = weft_sheen_clamp_roughness(roughness_2);
+        float _e94 = weft_sheen_albedo(_e64, _e93);
+        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
+        {
+            vec3 _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e98;
+            scaling = _e95;
+        }
+        vec3 _e99 = weft_diffuse_lambert(diffuse_albedo);
+        float _e100 = scaling;
+        vec3 base_direct = (_e99 * (_e100 * n_dot_l_2));
+        vec3 _e103 = sheen;
+        vec3 direct = ((_e103 + base_direct) * _e79);
+        vec3 _e107 = n;
+        vec3 _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
+        vec3 env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
-    vec3 _e104 = color;
-    vec3 radiance = clamp(_e104, vec3(0.0), vec3(65504.0));
+    vec3 _e117 = color;
+    vec3 radiance = clamp(_e117, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

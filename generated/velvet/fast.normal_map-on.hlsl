@@ -50,6 +50,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -57,10 +58,15 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
-cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
-cbuffer material : register(b0, space1) { WeftMaterial material; }
+TextureCube<float4> weft_environment : register(t1);
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+Texture2D<float4> weft_sheen_lut : register(t5);
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
 Texture2D<float4> base_map : register(t3, space1);
@@ -83,16 +89,9 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_max3_(float3 v)
 {
-    float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return max(v.x, max(v.y, v.z));
 }
 
 float weft_clamp_cos(float c)
@@ -100,15 +99,10 @@ float weft_clamp_cos(float c)
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(float roughness)
+float3 weft_safe_normalize(float3 v_1, float3 fallback)
 {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
-float3 weft_safe_normalize(float3 v, float3 fallback)
-{
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n_1)
@@ -117,22 +111,6 @@ float3 weft_any_perpendicular(float3 n_1)
     float a = (-1.0 / (s + n_1.z));
     float b = ((n_1.x * n_1.y) * a);
     return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
-}
-
-float3 weft_f_schlick(float3 f0_, float v_dot_h)
-{
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
-    return (f0_ + (((1.0).xxx - f0_) * _e5));
-}
-
-float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1)
-{
-    const float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -186,6 +164,21 @@ float3 weft_sh_irradiance(float3 n_2)
     return max(_e91, (0.0).xxx);
 }
 
+float weft_specular_mip(float roughness)
+{
+    float r_2 = saturate(roughness);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
+{
+    const float _e4 = weft_specular_mip(roughness_1);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
 float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
@@ -201,8 +194,8 @@ float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -216,24 +209,73 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float weft_fabric_d(float n_dot_h)
+float weft_sheen_clamp_roughness(float sheen_roughness)
 {
-    float x_2 = (1.0 - saturate(n_dot_h));
-    return (((0.96 * x_2) * x_2) + 0.057);
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
 }
 
-float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale)
+float weft_d_charlie(float n_dot_h, float sheen_roughness_1)
 {
-    float x_3 = (1.0 - saturate(n_dot_v_1));
-    const float _e5 = weft_pow4_(x_3);
-    return lerp(_e5, (0.4 * x_3), saturate(scale));
+    const float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = (1.0 / _e2);
+    float noh = saturate(n_dot_h);
+    float sin2_ = max(((1.0 - noh) * (1.0 + noh)), 0.0);
+    return (((2.0 + inv_r) * pow(sin2_, (0.5 * inv_r))) * 0.15915494);
 }
 
-float3 weft_fabric_scatter(float3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1)
+float weft_sheen_l(float x, float r)
 {
-    float wrap = ((saturate(n_dot_l_1) * 0.5) + 0.5);
-    const float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return (max(scatter_color, (0.0).xxx) * (wrap * _e12));
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a_1 = lerp(21.5473, 25.3245, t_1);
+    float b_2 = lerp(3.82987, 3.32435, t_1);
+    float c_2 = lerp(0.19823, 0.16801, t_1);
+    float d = lerp(-1.9776, -1.27393, t_1);
+    float e_1 = lerp(-4.32054, -4.85967, t_1);
+    return (((a_1 / (1.0 + (b_2 * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
+}
+
+float weft_sheen_lambda(float cos_theta, float r_1)
+{
+    const float _e2 = weft_clamp_cos(cos_theta);
+    const float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = exp(_e3);
+    const float _e6 = weft_sheen_l(0.5, r_1);
+    const float _e11 = weft_sheen_l((1.0 - _e2), r_1);
+    float hi = exp(((2.0 * _e6) - _e11));
+    return ((_e2 < 0.5) ? lo : hi);
+}
+
+float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2)
+{
+    const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    const float _e4 = weft_clamp_cos(n_dot_v);
+    const float _e5 = weft_clamp_cos(n_dot_l);
+    const float _e6 = weft_sheen_lambda(_e4, _e3);
+    const float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = ((1.0 + _e6) + _e9);
+    return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
+}
+
+float3 weft_sheen_charlie(float3 sheen_color, float n_dot_h_1, float n_dot_v_1, float n_dot_l_1, float sheen_roughness_3)
+{
+    const float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    const float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = (_e5 * _e6);
+    return (max(sheen_color, (0.0).xxx) * (lobe * saturate(n_dot_l_1)));
+}
+
+float weft_sheen_albedo_scaling_view(float3 sheen_color_1, float e_v)
+{
+    const float _e2 = weft_max3_(sheen_color_1);
+    return saturate((1.0 - (saturate(_e2) * saturate(e_v))));
+}
+
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4)
+{
+    const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    float2 uv_1 = float2(saturate(n_dot_x), _e3);
+    float4 _e8 = weft_sheen_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return saturate(_e8.x);
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -266,6 +308,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -304,27 +348,36 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e65 = n;
     float n_dot_l_2 = saturate(dot(_e65, _e58));
     float3 _e68 = n;
-    float n_dot_h_1 = saturate(dot(_e68, _e61));
+    float n_dot_h_2 = saturate(dot(_e68, _e61));
     float l_dot_h = saturate(dot(_e58, _e61));
-    float3 f0_1 = lerp((0.04).xxx, base, metallic);
+    float3 f0_ = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     const float3 _e79 = weft_main_light_radiance();
     float3 _e80 = n;
     const float3 _e81 = weft_sh_irradiance(_e80);
     float3 ambient = (_e81 * ao);
     {
-        const float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        const float3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-        const float _e86 = weft_fabric_d(n_dot_h_1);
-        float3 specular = ((_e86 * _e84) * _e85);
-        const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        float3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-        float4 _e95 = material.scatter_color;
-        float _e99 = material.scatter_scale;
-        const float3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        float4 _e86 = material.scatter_color;
+        float3 sheen_color_2 = saturate((f0_ + max(_e86.xyz, (0.0).xxx)));
+        const float _e93 = weft_sheen_clamp_roughness(roughness_2);
+        const float _e94 = weft_sheen_albedo(_e64, _e93);
+        const float _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
+        {
+            const float3 _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e98;
+            scaling = _e95;
+        }
+        const float3 _e99 = weft_diffuse_lambert(diffuse_albedo);
+        float _e100 = scaling;
+        float3 base_direct = (_e99 * (_e100 * n_dot_l_2));
+        float3 _e103 = sheen;
+        float3 direct = ((_e103 + base_direct) * _e79);
+        float3 _e107 = n;
+        const float3 _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
+        float3 env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
-    float3 _e104 = color;
-    float3 radiance = clamp(_e104, (0.0).xxx, (65504.0).xxx);
+    float3 _e117 = color;
+    float3 radiance = clamp(_e117, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

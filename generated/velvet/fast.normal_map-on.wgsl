@@ -43,6 +43,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -51,6 +52,14 @@ const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(0) @binding(5) 
+var weft_sheen_lut: texture_2d<f32>;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -64,27 +73,17 @@ var normal_map: texture_2d<f32>;
 @group(1) @binding(5) 
 var occlusion_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
-    let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
     return clamp(c, WEFT_MIN_N_DOT, 1f);
 }
 
-fn weft_clamp_roughness(roughness: f32) -> f32 {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
-}
-
-fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v, v);
-    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
@@ -92,20 +91,6 @@ fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     let a = (-1f / (s + n_1.z));
     let b = ((n_1.x * n_1.y) * a);
     return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
-}
-
-fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
-    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
-    return (f0_ + ((vec3(1f) - f0_) * _e5));
-}
-
-fn weft_v_schlick_ggx(n_dot_v: f32, n_dot_l: f32, roughness_1: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_1);
-    let a_1 = (_e3 * _e3);
-    let k = (((a_1 + 1f) * (a_1 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
@@ -154,6 +139,19 @@ fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
+fn weft_specular_mip(roughness: f32) -> f32 {
+    let r_2 = saturate(roughness);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_2 * (1.7f - (0.7f * r_2))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_1);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
 fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
     let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
@@ -167,8 +165,8 @@ fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -180,21 +178,65 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_fabric_d(n_dot_h: f32) -> f32 {
-    let x_2 = (1f - saturate(n_dot_h));
-    return (((0.96f * x_2) * x_2) + 0.057f);
+fn weft_sheen_clamp_roughness(sheen_roughness: f32) -> f32 {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_fabric_scatter_fresnel_lerp(n_dot_v_1: f32, scale: f32) -> f32 {
-    let x_3 = (1f - saturate(n_dot_v_1));
-    let _e5 = weft_pow4_(x_3);
-    return mix(_e5, (0.4f * x_3), saturate(scale));
+fn weft_d_charlie(n_dot_h: f32, sheen_roughness_1: f32) -> f32 {
+    let _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    let inv_r = (1f / _e2);
+    let noh = saturate(n_dot_h);
+    let sin2_ = max(((1f - noh) * (1f + noh)), 0f);
+    return (((2f + inv_r) * pow(sin2_, (0.5f * inv_r))) * 0.15915494f);
 }
 
-fn weft_fabric_scatter(scatter_color: vec3<f32>, n_dot_l_1: f32, n_dot_v_2: f32, scale_1: f32) -> vec3<f32> {
-    let wrap = ((saturate(n_dot_l_1) * 0.5f) + 0.5f);
-    let _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
-    return (max(scatter_color, vec3(0f)) * (wrap * _e12));
+fn weft_sheen_l(x: f32, r: f32) -> f32 {
+    let t_1 = ((1f - r) * (1f - r));
+    let a_1 = mix(21.5473f, 25.3245f, t_1);
+    let b_2 = mix(3.82987f, 3.32435f, t_1);
+    let c_2 = mix(0.19823f, 0.16801f, t_1);
+    let d = mix(-1.9776f, -1.27393f, t_1);
+    let e_1 = mix(-4.32054f, -4.85967f, t_1);
+    return (((a_1 / (1f + (b_2 * pow(max(x, 0f), c_2)))) + (d * x)) + e_1);
+}
+
+fn weft_sheen_lambda(cos_theta: f32, r_1: f32) -> f32 {
+    let _e2 = weft_clamp_cos(cos_theta);
+    let _e3 = weft_sheen_l(_e2, r_1);
+    let lo = exp(_e3);
+    let _e6 = weft_sheen_l(0.5f, r_1);
+    let _e11 = weft_sheen_l((1f - _e2), r_1);
+    let hi = exp(((2f * _e6) - _e11));
+    return select(hi, lo, (_e2 < 0.5f));
+}
+
+fn weft_v_charlie(n_dot_v: f32, n_dot_l: f32, sheen_roughness_2: f32) -> f32 {
+    let _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    let _e4 = weft_clamp_cos(n_dot_v);
+    let _e5 = weft_clamp_cos(n_dot_l);
+    let _e6 = weft_sheen_lambda(_e4, _e3);
+    let _e9 = weft_sheen_lambda(_e5, _e3);
+    let g_inv = ((1f + _e6) + _e9);
+    return (1f / (((g_inv * 4f) * _e4) * _e5));
+}
+
+fn weft_sheen_charlie(sheen_color: vec3<f32>, n_dot_h_1: f32, n_dot_v_1: f32, n_dot_l_1: f32, sheen_roughness_3: f32) -> vec3<f32> {
+    let _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    let _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    let lobe = (_e5 * _e6);
+    return (max(sheen_color, vec3(0f)) * (lobe * saturate(n_dot_l_1)));
+}
+
+fn weft_sheen_albedo_scaling_view(sheen_color_1: vec3<f32>, e_v: f32) -> f32 {
+    let _e2 = weft_max3_(sheen_color_1);
+    return saturate((1f - (saturate(_e2) * saturate(e_v))));
+}
+
+fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_4: f32) -> f32 {
+    let _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    let uv_1 = vec2<f32>(saturate(n_dot_x), _e3);
+    let _e8 = textureSampleLevel(weft_sheen_lut, weft_lut_sampler, uv_1, 0f);
+    return saturate(_e8.x);
 }
 
 @vertex 
@@ -224,6 +266,8 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var color: vec3<f32>;
+    var sheen: vec3<f32>;
+    var scaling: f32;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -262,27 +306,36 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e65 = n;
     let n_dot_l_2 = saturate(dot(_e65, _e58));
     let _e68 = n;
-    let n_dot_h_1 = saturate(dot(_e68, _e61));
+    let n_dot_h_2 = saturate(dot(_e68, _e61));
     let l_dot_h = saturate(dot(_e58, _e61));
-    let f0_1 = mix(vec3(0.04f), base, metallic);
+    let f0_ = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     let _e79 = weft_main_light_radiance();
     let _e80 = n;
     let _e81 = weft_sh_irradiance(_e80);
     let ambient = (_e81 * ao);
     {
-        let _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        let _e85 = weft_f_schlick(f0_1, l_dot_h);
-        let _e86 = weft_fabric_d(n_dot_h_1);
-        let specular = ((_e86 * _e84) * _e85);
-        let _e89 = weft_diffuse_lambert(diffuse_albedo);
-        let direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-        let _e95 = material.scatter_color;
-        let _e99 = material.scatter_scale;
-        let _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        let _e86 = material.scatter_color;
+        let sheen_color_2 = saturate((f0_ + max(_e86.xyz, vec3(0f))));
+        let _e93 = weft_sheen_clamp_roughness(roughness_2);
+        let _e94 = weft_sheen_albedo(_e64, _e93);
+        let _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
+        {
+            let _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e98;
+            scaling = _e95;
+        }
+        let _e99 = weft_diffuse_lambert(diffuse_albedo);
+        let _e100 = scaling;
+        let base_direct = (_e99 * (_e100 * n_dot_l_2));
+        let _e103 = sheen;
+        let direct = ((_e103 + base_direct) * _e79);
+        let _e107 = n;
+        let _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
+        let env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
-    let _e104 = color;
-    let radiance = clamp(_e104, vec3(0f), vec3(65504f));
+    let _e117 = color;
+    let radiance = clamp(_e117, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

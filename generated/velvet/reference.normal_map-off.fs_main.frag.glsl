@@ -39,6 +39,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -209,6 +210,8 @@ void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
     vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -249,20 +252,26 @@ void main() {
         vec3 sheen_color_3 = clamp((f0_ + max(_e74.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
         float _e81 = weft_sheen_clamp_roughness(roughness_2);
         float _e82 = weft_sheen_albedo(_e52, _e81);
-        float _e83 = weft_sheen_albedo(n_dot_l_2, _e81);
-        vec3 _e84 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-        float _e85 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e83);
-        vec3 _e86 = weft_diffuse_lambert(diffuse_albedo);
-        vec3 base_direct = (_e86 * (_e85 * n_dot_l_2));
-        vec3 direct = ((_e84 + base_direct) * _e67);
-        float _e91 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
-        vec3 _e93 = n;
-        vec3 _e95 = weft_prefiltered_radiance(reflect(-(_e42), _e93), _e81);
-        vec3 env_sheen = ((_e95 * sheen_color_3) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e91)) + env_sheen);
+        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+        {
+            float _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
+            vec3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e87;
+            float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+            scaling = _e88;
+        }
+        vec3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+        float _e90 = scaling;
+        vec3 base_direct = (_e89 * (_e90 * n_dot_l_2));
+        vec3 _e93 = sheen;
+        vec3 direct = ((_e93 + base_direct) * _e67);
+        vec3 _e97 = n;
+        vec3 _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
+        vec3 env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
-    vec3 _e103 = color;
-    vec3 radiance = clamp(_e103, vec3(0.0), vec3(65504.0));
+    vec3 _e107 = color;
+    vec3 radiance = clamp(_e107, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

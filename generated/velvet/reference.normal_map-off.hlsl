@@ -50,6 +50,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -280,6 +281,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -321,19 +324,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 sheen_color_3 = saturate((f0_ + max(_e74.xyz, (0.0).xxx)));
         const float _e81 = weft_sheen_clamp_roughness(roughness_2);
         const float _e82 = weft_sheen_albedo(_e52, _e81);
-        const float _e83 = weft_sheen_albedo(n_dot_l_2, _e81);
-        const float3 _e84 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-        const float _e85 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e83);
-        const float3 _e86 = weft_diffuse_lambert(diffuse_albedo);
-        float3 base_direct = (_e86 * (_e85 * n_dot_l_2));
-        float3 direct = ((_e84 + base_direct) * _e67);
-        const float _e91 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
-        float3 _e93 = n;
-        const float3 _e95 = weft_prefiltered_radiance(reflect(-(_e42), _e93), _e81);
-        float3 env_sheen = ((_e95 * sheen_color_3) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e91)) + env_sheen);
+        const float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+        {
+            const float _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
+            const float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e87;
+            const float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+            scaling = _e88;
+        }
+        const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+        float _e90 = scaling;
+        float3 base_direct = (_e89 * (_e90 * n_dot_l_2));
+        float3 _e93 = sheen;
+        float3 direct = ((_e93 + base_direct) * _e67);
+        float3 _e97 = n;
+        const float3 _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
+        float3 env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
-    float3 _e103 = color;
-    float3 radiance = clamp(_e103, (0.0).xxx, (65504.0).xxx);
+    float3 _e107 = color;
+    float3 radiance = clamp(_e107, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

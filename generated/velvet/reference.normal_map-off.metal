@@ -52,6 +52,7 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -331,6 +332,8 @@ fragment fs_mainOutput fs_main(
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
+    metal::float3 sheen = {};
+    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -371,19 +374,25 @@ fragment fs_mainOutput fs_main(
         metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e74.xyz, metal::float3(0.0)));
         float _e81 = weft_sheen_clamp_roughness(roughness_2);
         float _e82 = weft_sheen_albedo(_e52, _e81, weft_lut_sampler, weft_sheen_lut);
-        float _e83 = weft_sheen_albedo(n_dot_l_2, _e81, weft_lut_sampler, weft_sheen_lut);
-        metal::float3 _e84 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-        float _e85 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e83);
-        metal::float3 _e86 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float3 base_direct = _e86 * (_e85 * n_dot_l_2);
-        metal::float3 direct = (_e84 + base_direct) * _e67;
-        float _e91 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
-        metal::float3 _e93 = n;
-        metal::float3 _e95 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e93), _e81, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e95 * sheen_color_3) * (_e82 * ao);
-        color = (direct + ((ambient * diffuse_albedo) * _e91)) + env_sheen;
+        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+        {
+            float _e86 = weft_sheen_albedo(n_dot_l_2, _e81, weft_lut_sampler, weft_sheen_lut);
+            metal::float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e87;
+            float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+            scaling = _e88;
+        }
+        metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+        float _e90 = scaling;
+        metal::float3 base_direct = _e89 * (_e90 * n_dot_l_2);
+        metal::float3 _e93 = sheen;
+        metal::float3 direct = (_e93 + base_direct) * _e67;
+        metal::float3 _e97 = n;
+        metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e97), _e81, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e99 * sheen_color_3) * (_e82 * ao);
+        color = (direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen;
     }
-    metal::float3 _e103 = color;
-    metal::float3 radiance = metal::clamp(_e103, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e107 = color;
+    metal::float3 radiance = metal::clamp(_e107, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

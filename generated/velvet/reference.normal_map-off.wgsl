@@ -43,6 +43,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -240,6 +241,8 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var color: vec3<f32>;
+    var sheen: vec3<f32>;
+    var scaling: f32;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -281,19 +284,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let sheen_color_3 = saturate((f0_ + max(_e74.xyz, vec3(0f))));
         let _e81 = weft_sheen_clamp_roughness(roughness_2);
         let _e82 = weft_sheen_albedo(_e52, _e81);
-        let _e83 = weft_sheen_albedo(n_dot_l_2, _e81);
-        let _e84 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-        let _e85 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e83);
-        let _e86 = weft_diffuse_lambert(diffuse_albedo);
-        let base_direct = (_e86 * (_e85 * n_dot_l_2));
-        let direct = ((_e84 + base_direct) * _e67);
-        let _e91 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
-        let _e93 = n;
-        let _e95 = weft_prefiltered_radiance(reflect(-(_e42), _e93), _e81);
-        let env_sheen = ((_e95 * sheen_color_3) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e91)) + env_sheen);
+        let _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+        {
+            let _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
+            let _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+            sheen = _e87;
+            let _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+            scaling = _e88;
+        }
+        let _e89 = weft_diffuse_lambert(diffuse_albedo);
+        let _e90 = scaling;
+        let base_direct = (_e89 * (_e90 * n_dot_l_2));
+        let _e93 = sheen;
+        let direct = ((_e93 + base_direct) * _e67);
+        let _e97 = n;
+        let _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
+        let env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
-    let _e103 = color;
-    let radiance = clamp(_e103, vec3(0f), vec3(65504f));
+    let _e107 = color;
+    let radiance = clamp(_e107, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

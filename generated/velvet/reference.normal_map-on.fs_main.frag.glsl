@@ -39,6 +39,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -240,6 +241,8 @@ void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
     vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -290,20 +293,26 @@ void main() {
         vec3 sheen_color_3 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
         float _e93 = weft_sheen_clamp_roughness(roughness_2);
         float _e94 = weft_sheen_albedo(_e64, _e93);
-        float _e95 = weft_sheen_albedo(n_dot_l_2, _e93);
-        vec3 _e96 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-        float _e97 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e95);
-        vec3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-        vec3 base_direct = (_e98 * (_e97 * n_dot_l_2));
-        vec3 direct = ((_e96 + base_direct) * _e79);
-        float _e103 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
-        vec3 _e105 = n;
-        vec3 _e107 = weft_prefiltered_radiance(reflect(-(_e42), _e105), _e93);
-        vec3 env_sheen = ((_e107 * sheen_color_3) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e103)) + env_sheen);
+        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+        {
+            float _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
+            vec3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e99;
+            float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+            scaling = _e100;
+        }
+        vec3 _e101 = weft_diffuse_lambert(diffuse_albedo);
+        float _e102 = scaling;
+        vec3 base_direct = (_e101 * (_e102 * n_dot_l_2));
+        vec3 _e105 = sheen;
+        vec3 direct = ((_e105 + base_direct) * _e79);
+        vec3 _e109 = n;
+        vec3 _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
+        vec3 env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
-    vec3 _e115 = color;
-    vec3 radiance = clamp(_e115, vec3(0.0), vec3(65504.0));
+    vec3 _e119 = color;
+    vec3 radiance = clamp(_e119, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -50,6 +50,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -314,6 +315,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -365,19 +368,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 sheen_color_3 = saturate((f0_ + max(_e86.xyz, (0.0).xxx)));
         const float _e93 = weft_sheen_clamp_roughness(roughness_2);
         const float _e94 = weft_sheen_albedo(_e64, _e93);
-        const float _e95 = weft_sheen_albedo(n_dot_l_2, _e93);
-        const float3 _e96 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-        const float _e97 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e95);
-        const float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-        float3 base_direct = (_e98 * (_e97 * n_dot_l_2));
-        float3 direct = ((_e96 + base_direct) * _e79);
-        const float _e103 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
-        float3 _e105 = n;
-        const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e42), _e105), _e93);
-        float3 env_sheen = ((_e107 * sheen_color_3) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e103)) + env_sheen);
+        const float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+        {
+            const float _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
+            const float3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e99;
+            const float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+            scaling = _e100;
+        }
+        const float3 _e101 = weft_diffuse_lambert(diffuse_albedo);
+        float _e102 = scaling;
+        float3 base_direct = (_e101 * (_e102 * n_dot_l_2));
+        float3 _e105 = sheen;
+        float3 direct = ((_e105 + base_direct) * _e79);
+        float3 _e109 = n;
+        const float3 _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
+        float3 env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
+        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
-    float3 _e115 = color;
-    float3 radiance = clamp(_e115, (0.0).xxx, (65504.0).xxx);
+    float3 _e119 = color;
+    float3 radiance = clamp(_e119, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

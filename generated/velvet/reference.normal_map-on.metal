@@ -52,6 +52,7 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -372,6 +373,8 @@ fragment fs_mainOutput fs_main(
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
+    metal::float3 sheen = {};
+    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -422,19 +425,25 @@ fragment fs_mainOutput fs_main(
         metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e86.xyz, metal::float3(0.0)));
         float _e93 = weft_sheen_clamp_roughness(roughness_2);
         float _e94 = weft_sheen_albedo(_e64, _e93, weft_lut_sampler, weft_sheen_lut);
-        float _e95 = weft_sheen_albedo(n_dot_l_2, _e93, weft_lut_sampler, weft_sheen_lut);
-        metal::float3 _e96 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-        float _e97 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e95);
-        metal::float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float3 base_direct = _e98 * (_e97 * n_dot_l_2);
-        metal::float3 direct = (_e96 + base_direct) * _e79;
-        float _e103 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
-        metal::float3 _e105 = n;
-        metal::float3 _e107 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e105), _e93, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e107 * sheen_color_3) * (_e94 * ao);
-        color = (direct + ((ambient * diffuse_albedo) * _e103)) + env_sheen;
+        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+        {
+            float _e98 = weft_sheen_albedo(n_dot_l_2, _e93, weft_lut_sampler, weft_sheen_lut);
+            metal::float3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+            sheen = _e99;
+            float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+            scaling = _e100;
+        }
+        metal::float3 _e101 = weft_diffuse_lambert(diffuse_albedo);
+        float _e102 = scaling;
+        metal::float3 base_direct = _e101 * (_e102 * n_dot_l_2);
+        metal::float3 _e105 = sheen;
+        metal::float3 direct = (_e105 + base_direct) * _e79;
+        metal::float3 _e109 = n;
+        metal::float3 _e111 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e109), _e93, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e111 * sheen_color_3) * (_e94 * ao);
+        color = (direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen;
     }
-    metal::float3 _e115 = color;
-    metal::float3 radiance = metal::clamp(_e115, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e119 = color;
+    metal::float3 radiance = metal::clamp(_e119, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

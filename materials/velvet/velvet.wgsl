@@ -6,13 +6,6 @@
 // radiance. See README.md for the derivations and deviations.
 //
 // Tiers (WEFT_TIER):
-//   fast      = the seed's BRDF1 extension: specular D = FabricD
-//               (0.96 (1 - n.h)^2 + 0.057) in place of GGX, with Schlick F on
-//               the metallic-workflow specular colour and the Schlick-GGX
-//               visibility of lib/brdf.wgsl; Lambert diffuse; the fabric
-//               scatter term lerp(pow4(1 - n.v), 0.4 (1 - n.v), scale) x
-//               scatter colour x (n.l 0.5 + 0.5), added unlit as the seed
-//               does; SH ambient diffuse; no indirect specular (seed).
 //   reference = Charlie sheen (Conty Estevez & Kulla 2017): D_Charlie with
 //               its fitted Smith visibility (KHR_materials_sheen), sheen
 //               colour C = saturate(F0 + scatter colour), sheen roughness
@@ -21,6 +14,20 @@
 //               toolchain-baked table (weft_sheen_lut); ambient: diffuse
 //               scaled by 1 - max3(C) E(n.v), plus environment sheen
 //               C E(n.v) x prefiltered radiance.
+//   fast      = an approximation of the reference: the same sheen lobe,
+//               colour and ambient, with the view-only albedo scaling
+//               1 - max3(C) E(n.v) for the direct light too (one table
+//               fetch instead of two). Neubelt & Pettineo's visibility in
+//               place of the fitted Smith one was measured and rejected
+//               (worst FLIP 0.147 over the error grid; README).
+//   seed      = a look, not an approximation: the seed's BRDF1 extension,
+//               specular D = FabricD (0.96 (1 - n.h)^2 + 0.057) in place of
+//               GGX, with Schlick F on the metallic-workflow specular colour
+//               and the Schlick-GGX visibility of lib/brdf.wgsl; Lambert
+//               diffuse; the fabric scatter term lerp(pow4(1 - n.v),
+//               0.4 (1 - n.v), scale) x scatter colour x (n.l 0.5 + 0.5),
+//               added unlit as the seed does; SH ambient diffuse; no
+//               indirect specular (seed).
 
 @fragment
 fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
@@ -63,30 +70,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let ambient = weft_sh_irradiance(n) * ao;
 
     var color: vec3<f32>;
-    if WEFT_TIER == TIER_REFERENCE {
-        // -------------------------------------------------------- reference
-        // Sheen colour: the seed's two fibre tints (F0 on the FabricD lobe and
-        // the scatter colour on the rim) become one lobe; saturate keeps
-        // max3(C) <= 1 so the albedo scaling stays in [0, 1].
-        let sheen_color = saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0)));
-        let sheen_r = weft_sheen_clamp_roughness(roughness);
-        let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
-        let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
-        let sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
-        let scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
-        let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
-        let direct = (sheen + base_direct) * light;
-
-        // Ambient: the base gets the energy the sheen did not reflect
-        // (view-only scaling); the sheen reflects C E(n.v) of the incident
-        // radiance, approximated by the prefiltered environment along the
-        // mirror direction at the sheen roughness (the engine has no
-        // Charlie-prefiltered cube; see README).
-        let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
-        let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * (e_v * ao);
-        color = direct + ambient * diffuse_albedo * ambient_scaling + env_sheen;
-    } else {
-        // -------------------------------------------------------- fast (seed)
+    if WEFT_TIER == TIER_SEED {
+        // -------------------------------------------------------- seed (look)
         // BRDF1 with GGXTerm -> FabricD. In weft's units (Lambert with 1/pi)
         // Unity's specularTerm = V D pi becomes D V; FabricD is used as the
         // seed writes it (no 1/pi), so lobe and diffuse keep the seed's ratio.
@@ -99,6 +84,36 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // light colour). No indirect specular (seed: "去掉标准PBR的间接光反射").
         let scatter = weft_fabric_scatter(material.scatter_color.rgb, n_dot_l, n_dot_v, material.scatter_scale);
         color = direct + ambient * diffuse_albedo + scatter;
+    } else {
+        // Sheen colour: the seed's two fibre tints (F0 on the FabricD lobe and
+        // the scatter colour on the rim) become one lobe; saturate keeps
+        // max3(C) <= 1 so the albedo scaling stays in [0, 1].
+        let sheen_color = saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0)));
+        let sheen_r = weft_sheen_clamp_roughness(roughness);
+        let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
+        let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
+        var sheen: vec3<f32>;
+        var scaling: f32;
+        if WEFT_TIER == TIER_REFERENCE {
+            // ---------------------------------------------------- reference
+            let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
+            sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
+        } else {
+            // ---------------------------------------------------- fast
+            sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            scaling = ambient_scaling;
+        }
+        let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
+        let direct = (sheen + base_direct) * light;
+
+        // Ambient: the base gets the energy the sheen did not reflect
+        // (view-only scaling); the sheen reflects C E(n.v) of the incident
+        // radiance, approximated by the prefiltered environment along the
+        // mirror direction at the sheen roughness (the engine has no
+        // Charlie-prefiltered cube; see README).
+        let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * (e_v * ao);
+        color = direct + ambient * diffuse_albedo * ambient_scaling + env_sheen;
     }
 
     // Never negative, at most the fp16 maximum (Rgba16Float targets).

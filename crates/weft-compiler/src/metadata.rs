@@ -147,6 +147,21 @@ pub fn tiers(m: &Material) -> Tiers {
         values: m.tiers.values.clone(),
         default: m.tiers.values[m.tiers.default].clone(),
         reference: m.tiers.values[m.tiers.reference].clone(),
+        approximates: m
+            .tiers
+            .approximates
+            .iter()
+            .enumerate()
+            .filter_map(|(i, a)| a.map(|j| (m.tiers.values[i].clone(), m.tiers.values[j].clone())))
+            .collect(),
+        looks: m
+            .tiers
+            .values
+            .iter()
+            .zip(&m.tiers.looks)
+            .filter(|(_, look)| **look)
+            .map(|(t, _)| t.clone())
+            .collect(),
         descriptions: m
             .tiers
             .descriptions

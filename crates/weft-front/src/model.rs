@@ -177,6 +177,12 @@ pub struct Tiers {
     pub reference: usize,
     /// (tier, English, Chinese) descriptions.
     pub descriptions: Vec<(String, String, Option<String>)>,
+    /// Per tier (by index): the tier it approximates (its error is measured
+    /// against that one). None for the reference and for looks.
+    pub approximates: Vec<Option<usize>>,
+    /// Per tier (by index): a different model (e.g. the seed's formula), not
+    /// an approximation of anything (`look = true`).
+    pub looks: Vec<bool>,
 }
 
 #[derive(Clone, Debug)]

@@ -70,7 +70,14 @@ pub const KEYWORD_KEYS: &[&str] = &[
 ];
 /// Keys of one entry of a texture parameter's `default_when` array.
 pub const DEFAULT_WHEN_KEYS: &[&str] = &["if", "default"];
-pub const TIER_KEYS: &[&str] = &["name", "description", "description_zh", "default"];
+pub const TIER_KEYS: &[&str] = &[
+    "name",
+    "description",
+    "description_zh",
+    "default",
+    "approximates",
+    "look",
+];
 pub const VARIANTS_KEYS: &[&str] = &["max_variants", "exclude"];
 pub const PRESET_KEYS: &[&str] = &["label", "label_zh", "values"];
 pub const PASS_KEYS: &[&str] = &[
@@ -183,6 +190,8 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
             default: 0,
             reference: 0,
             descriptions: Vec::new(),
+            approximates: Vec::new(),
+            looks: Vec::new(),
         },
         max_variants: DEFAULT_MAX_VARIANTS,
         max_variants_span: None,

@@ -279,12 +279,15 @@ impl TierChooser for LavapipeTierChooser {
                 request.error_budget
             ));
         }
-        // Tiers that have a variant with the instance's keywords (others are excluded).
+        // Tiers that have a variant with the instance's keywords (others are
+        // excluded), looks excluded too: a different model is chosen by
+        // name, never as an approximation within an error budget.
         let tiers: Vec<(usize, &Variant)> = meta
             .tiers
             .values
             .iter()
             .enumerate()
+            .filter(|(_, t)| !meta.tiers.looks.contains(t))
             .filter_map(|(i, t)| variant_for(meta, t, &request.keywords).map(|v| (i, v)))
             .collect();
         let reference = &meta.tiers.reference;

@@ -6,6 +6,7 @@
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
 pub mod auto_tier;
+pub mod error_grid;
 pub mod project;
 pub mod scene_bench;
 pub mod scenes;

@@ -43,6 +43,9 @@ pub struct ShadingOptions {
     pub max_seconds_per_tier: f64,
     /// Materials to measure (empty: every material under the generated folder).
     pub materials: Vec<String>,
+    /// Each tier's error over presets × scenes × lights
+    /// ([`crate::error_grid`]); None measures only at the defaults.
+    pub grid: Option<crate::error_grid::GridOptions>,
 }
 
 impl Default for ShadingOptions {
@@ -56,6 +59,7 @@ impl Default for ShadingOptions {
             force_cpu_timer: false,
             max_seconds_per_tier: 20.0,
             materials: Vec::new(),
+            grid: Some(crate::error_grid::GridOptions::default()),
         }
     }
 }
@@ -235,8 +239,24 @@ pub fn run(
             .find(|j| j.material == i && j.tier == meta.tiers.reference)
             .and_then(|j| j.image.as_ref())
             .ok_or_else(|| format!("{}: reference tier was not rendered", meta.name))?;
+        let grid = match &options.grid {
+            Some(g) => {
+                log(&format!("{}: error grid", meta.name));
+                let meta_path = &measured[i].0;
+                crate::error_grid::tier_errors(&mut renderer, meta_path, meta, g)?
+            }
+            None => Vec::new(),
+        };
         let mut tiers = Vec::new();
         for job in jobs.iter().filter(|j| j.material == i) {
+            let cell = grid.iter().find(|g| g.tier == job.tier);
+            let kind = if job.tier == meta.tiers.reference {
+                "reference"
+            } else if meta.tiers.looks.contains(&job.tier) {
+                "look"
+            } else {
+                "approximation"
+            };
             let image = job.image.as_ref().expect("every job rendered");
             let err = image_error(reference, image);
             let median = quantile(&job.ms, 0.5);
@@ -254,6 +274,11 @@ pub fn run(
                 flip_mean: round(err.flip_mean, 5),
                 flip_p99: round(err.flip_p99, 5),
                 rel_rmse: round(err.rel_rmse, 5),
+                kind: Some(kind.into()),
+                flip_worst: cell.map(|c| round(c.worst, 5)),
+                flip_grid_mean: cell.map(|c| round(c.mean, 5)),
+                flip_worst_cell: cell.map(|c| c.worst_cell.clone()),
+                grid_cells: cell.map(|c| c.cells),
             });
         }
         materials.push(Measurements {
@@ -482,30 +507,50 @@ pub fn describe(report: &ShadingReport) -> String {
     )
 }
 
-/// The table of every material × tier, Markdown.
+/// The tables of every material × tier, Markdown: the reference and its
+/// approximations (whose difference from the reference is their error),
+/// then the looks (different models, whose difference is not an error).
 pub fn markdown_table(materials: &[Measurements]) -> String {
     let mut md = String::new();
-    md.push_str("| material | tier | GPU ms (median) | min | spread | frames | × standard fast | SPIR-V instr. (fragment) | FLIP mean | FLIP p99 | rel. RMSE |\n");
-    md.push_str("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    let header = "| material | tier | GPU ms (median) | min | spread | frames | × standard fast | SPIR-V instr. (fragment) | FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) | FLIP grid mean | worst cell |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+    let is_look = |t: &TierMeasurement| t.kind.as_deref() == Some("look");
+    let row = |md: &mut String, m: &Measurements, t: &TierMeasurement| {
+        let opt = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.4}"));
+        let _ = writeln!(
+            md,
+            "| {} | {} | {:.3} | {:.3} | {:.1}% | {} | {} | {} ({}) | {:.4} | {:.4} | {:.4} | {} | {} | {} |",
+            m.material,
+            t.tier,
+            t.gpu_ms,
+            t.gpu_ms_min,
+            t.gpu_ms_spread * 100.0,
+            t.frames,
+            t.ratio_to_standard_fast
+                .map_or("—".to_string(), |r| format!("{r:.2}")),
+            t.spirv_instructions,
+            t.spirv_fragment_instructions,
+            t.flip_mean,
+            t.flip_p99,
+            t.rel_rmse,
+            opt(t.flip_worst),
+            opt(t.flip_grid_mean),
+            t.flip_worst_cell.as_deref().unwrap_or("—"),
+        );
+    };
+    md.push_str("Reference tiers and their approximations (FLIP against the reference is the approximation's error):\n\n");
+    md.push_str(header);
     for m in materials {
-        for t in &m.tiers {
-            let _ = writeln!(
-                md,
-                "| {} | {} | {:.3} | {:.3} | {:.1}% | {} | {} | {} ({}) | {:.4} | {:.4} | {:.4} |",
-                m.material,
-                t.tier,
-                t.gpu_ms,
-                t.gpu_ms_min,
-                t.gpu_ms_spread * 100.0,
-                t.frames,
-                t.ratio_to_standard_fast
-                    .map_or("—".to_string(), |r| format!("{r:.2}")),
-                t.spirv_instructions,
-                t.spirv_fragment_instructions,
-                t.flip_mean,
-                t.flip_p99,
-                t.rel_rmse
-            );
+        for t in m.tiers.iter().filter(|t| !is_look(t)) {
+            row(&mut md, m, t);
+        }
+    }
+    if materials.iter().any(|m| m.tiers.iter().any(is_look)) {
+        md.push_str("\nLooks: different models kept for their look (a source document's formula), not approximations; the FLIP columns say how far the look is from the reference, not an error:\n\n");
+        md.push_str(header);
+        for m in materials {
+            for t in m.tiers.iter().filter(|t| is_look(t)) {
+                row(&mut md, m, t);
+            }
         }
     }
     md
@@ -527,20 +572,22 @@ pub fn tier_table(m: &Measurements, current_inputs_hash: &str) -> String {
     let mut md = String::new();
     let _ = writeln!(
         md,
-        "| tier | GPU ms | × standard fast | SPIR-V instr. | FLIP mean | FLIP p99 | rel. RMSE |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |"
+        "| tier | kind | GPU ms | × standard fast | SPIR-V instr. | FLIP mean | FLIP p99 | rel. RMSE | FLIP worst (grid) |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
     );
     for t in &m.tiers {
         let _ = writeln!(
             md,
-            "| {} | {:.3} | {} | {} | {:.4} | {:.4} | {:.4} |",
+            "| {} | {} | {:.3} | {} | {} | {:.4} | {:.4} | {:.4} | {} |",
             t.tier,
+            t.kind.as_deref().unwrap_or("—"),
             t.gpu_ms,
             t.ratio_to_standard_fast
                 .map_or("—".to_string(), |r| format!("{r:.2}")),
             t.spirv_instructions,
             t.flip_mean,
             t.flip_p99,
-            t.rel_rmse
+            t.rel_rmse,
+            t.flip_worst.map_or("—".to_string(), |v| format!("{v:.4}")),
         );
     }
     let stale = if m.inputs_hash != current_inputs_hash {
@@ -612,7 +659,11 @@ pub fn pareto_svg(m: &Measurements) -> String {
             t.gpu_ms
         }
     };
-    let points: Vec<(f64, f64)> = m.tiers.iter().map(|t| (cost(t), t.flip_mean)).collect();
+    // The worst cell of the error grid where it was measured.
+    let grid = m.tiers.iter().any(|t| t.flip_worst.is_some());
+    let error = |t: &TierMeasurement| t.flip_worst.unwrap_or(t.flip_mean);
+    let is_look = |t: &TierMeasurement| t.kind.as_deref() == Some("look");
+    let points: Vec<(f64, f64)> = m.tiers.iter().map(|t| (cost(t), error(t))).collect();
     let max_x = points.iter().map(|p| p.0).fold(0.0, f64::max).max(1e-9) * 1.15;
     let max_y = points.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-4) * 1.2;
     let (sx, sy) = (tick_step(max_x, 5.0), tick_step(max_y, 5.0));
@@ -685,13 +736,26 @@ pub fn pareto_svg(m: &Measurements) -> String {
         left + pw / 2.0,
         h - 14.0
     );
+    let ylabel = if grid {
+        "error: worst FLIP mean over presets × scenes × lights"
+    } else {
+        "error: FLIP mean vs reference tier"
+    };
     let _ = writeln!(
         s,
-        r#"<text transform="translate(20 {:.1}) rotate(-90)" text-anchor="middle">error: FLIP mean vs reference tier</text>"#,
+        r#"<text transform="translate(20 {:.1}) rotate(-90)" text-anchor="middle">{ylabel}</text>"#,
         top + ph / 2.0
     );
-    // The front: a staircase through the optimal points.
-    let front = pareto_front(&points);
+    // The front: a staircase through the optimal points; looks are not
+    // approximations and take no part in it.
+    let candidates: Vec<usize> = (0..points.len())
+        .filter(|&i| !is_look(&m.tiers[i]))
+        .collect();
+    let front: Vec<usize> =
+        pareto_front(&candidates.iter().map(|&i| points[i]).collect::<Vec<_>>())
+            .into_iter()
+            .map(|k| candidates[k])
+            .collect();
     if !front.is_empty() {
         let mut d = String::new();
         for (k, &i) in front.iter().enumerate() {
@@ -710,17 +774,34 @@ pub fn pareto_svg(m: &Measurements) -> String {
     }
     for (i, t) in m.tiers.iter().enumerate() {
         let (cx, cy) = (px(points[i].0), py(points[i].1));
-        let on_front = front.contains(&i);
-        let fill = if on_front { "#d9480f" } else { "white" };
-        let _ = writeln!(
-            s,
-            r##"<circle cx="{cx:.1}" cy="{cy:.1}" r="5" fill="{fill}" stroke="#d9480f" stroke-width="1.5"><title>{}: {:.3} ms, FLIP {:.4}, RMSE {:.4}, {} SPIR-V instructions</title></circle>"##,
+        let title = format!(
+            "{}{}: {:.3} ms, FLIP {:.4} at the defaults, worst {:.4}, RMSE {:.4}, {} SPIR-V instructions",
             xml(&t.tier),
+            if is_look(t) { " (look)" } else { "" },
             t.gpu_ms,
             t.flip_mean,
+            error(t),
             t.rel_rmse,
             t.spirv_instructions
         );
+        if is_look(t) {
+            let _ = writeln!(
+                s,
+                r##"<rect x="{:.1}" y="{:.1}" width="10" height="10" fill="#adb5bd" stroke="#495057"><title>{title}</title></rect>"##,
+                cx - 5.0,
+                cy - 5.0
+            );
+        } else {
+            let fill = if front.contains(&i) {
+                "#d9480f"
+            } else {
+                "white"
+            };
+            let _ = writeln!(
+                s,
+                r##"<circle cx="{cx:.1}" cy="{cy:.1}" r="5" fill="{fill}" stroke="#d9480f" stroke-width="1.5"><title>{title}</title></circle>"##
+            );
+        }
         // Labels of points in the right half go to their left.
         let (lx, anchor) = if cx > left + pw * 0.55 {
             (cx - 8.0, "end")
@@ -729,11 +810,12 @@ pub fn pareto_svg(m: &Measurements) -> String {
         };
         let _ = writeln!(
             s,
-            r#"<text x="{lx:.1}" y="{:.1}" text-anchor="{anchor}">{} ({:.2} ms, FLIP {:.3})</text>"#,
+            r#"<text x="{lx:.1}" y="{:.1}" text-anchor="{anchor}">{}{} ({:.2} ms, FLIP {:.3})</text>"#,
             cy - 7.0,
             xml(&t.tier),
+            if is_look(t) { " — look" } else { "" },
             t.gpu_ms,
-            t.flip_mean
+            error(t)
         );
     }
     let (lx, ly) = (left + 10.0, top - 18.0);
@@ -750,6 +832,16 @@ pub fn pareto_svg(m: &Measurements) -> String {
         lx + 160.0,
         ly + 4.0
     );
+    if m.tiers.iter().any(is_look) {
+        let _ = writeln!(
+            s,
+            r##"<rect x="{}" y="{}" width="10" height="10" fill="#adb5bd" stroke="#495057"/><text x="{}" y="{}">look: a different model, not an approximation</text>"##,
+            lx + 245.0,
+            ly - 5.0,
+            lx + 260.0,
+            ly + 4.0
+        );
+    }
     if relative && 1.0 <= max_x {
         let _ = writeln!(
             s,

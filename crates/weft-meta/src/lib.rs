@@ -138,6 +138,25 @@ pub struct TierMeasurement {
     pub flip_p99: f64,
     /// sqrt(Σ(a−b)² / Σb²) over the RGB of object pixels of the linear HDR images, b the reference.
     pub rel_rmse: f64,
+    /// What the tier is: `reference`, `approximation` (its error is an
+    /// approximation error) or `look` (a different model: its difference is
+    /// not an error).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kind: Option<String>,
+    /// The error grid (every preset and the defaults × sphere and cloth ×
+    /// three light directions, one a grazing rim light), FLIP mean against
+    /// the reference per cell: the worst cell. Absent for the reference.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flip_worst: Option<f64>,
+    /// The mean over the error grid's cells.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flip_grid_mean: Option<f64>,
+    /// The worst cell, as `preset/scene/light`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flip_worst_cell: Option<String>,
+    /// Cells of the error grid this tier was measured in.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grid_cells: Option<u32>,
 }
 
 /// User-facing text in English with an optional Chinese translation.
@@ -562,6 +581,17 @@ pub struct Tiers {
     pub reference: String,
     /// Per tier: what it changes, for people choosing one.
     pub descriptions: BTreeMap<String, Text>,
+    /// Per tier that approximates another: the tier it approximates (its
+    /// error is measured against that one; `reference` unless the material
+    /// says otherwise). The reference and the looks are not listed.
+    #[serde(default)]
+    pub approximates: BTreeMap<String, String>,
+    /// Tiers that are a different model, not an approximation (e.g. `seed`:
+    /// a source document's formula kept for its look). Their difference from
+    /// the reference is reported apart, never as an error, and automatic
+    /// tier choice never picks them.
+    #[serde(default)]
+    pub looks: Vec<String>,
 }
 
 /// A named set of values for the inspector.

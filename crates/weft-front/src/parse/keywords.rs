@@ -193,6 +193,8 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
         return;
     };
     let mut default = None;
+    // Per tier: the `approximates` value and its span, and `look`'s span.
+    let mut declared: Vec<(Option<(String, Span)>, Option<Span>)> = Vec::new();
     for item in items {
         let Some(t) = Table::new(item, "a [[tier]]", cx) else {
             continue;
@@ -241,6 +243,11 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
             t.string("description", cx).unwrap_or_default(),
             t.string("description_zh", cx),
         ));
+        let approximates = t
+            .string("approximates", cx)
+            .map(|a| (a, t.span_of("approximates")));
+        let look = (t.boolean("look", cx) == Some(true)).then(|| t.span_of("look"));
+        declared.push((approximates, look));
         material.tiers.values.push(name);
     }
     for required in ["fast", "reference"] {
@@ -263,4 +270,122 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
     material.tiers.default = default
         .or_else(|| material.tiers.values.iter().position(|t| t == "fast"))
         .unwrap_or(0);
+    tier_relations(material, &declared, cx);
+}
+
+/// What each tier approximates, and which are looks: a look approximates
+/// nothing and nothing approximates it; the reference approximates nothing;
+/// every other tier approximates the reference unless it names another
+/// tier, and following `approximates` always reaches the reference.
+fn tier_relations(
+    material: &mut Material,
+    declared: &[(Option<(String, Span)>, Option<Span>)],
+    cx: &mut Cx,
+) {
+    let tiers = &material.tiers;
+    let n = tiers.values.len();
+    let looks: Vec<bool> = declared.iter().map(|(_, l)| l.is_some()).collect();
+    let mut approximates = vec![None; n];
+    for (i, (target, look)) in declared.iter().enumerate() {
+        let name = &tiers.values[i];
+        if name == "reference" {
+            if let Some((_, span)) = target {
+                cx.error(
+                    "tier-relation",
+                    "the `reference` tier approximates nothing: it is what the others are measured against",
+                    span.clone(),
+                    "remove this",
+                );
+            }
+            if let Some(span) = look {
+                cx.error(
+                    "tier-relation",
+                    "the `reference` tier cannot be a look: it is the most accurate model",
+                    span.clone(),
+                    "remove this",
+                );
+            }
+            continue;
+        }
+        if look.is_some() {
+            if let Some((_, span)) = target {
+                cx.error_with_note(
+                    "tier-relation",
+                    format!("tier `{name}` is a look and cannot approximate another tier"),
+                    span.clone(),
+                    "a look is a different model",
+                    "keep `look = true` for a different model (its difference is reported apart), or `approximates` for an approximation (its error is measured)",
+                );
+            }
+            continue;
+        }
+        let Some((target, span)) = target else {
+            approximates[i] = Some(tiers.reference);
+            continue;
+        };
+        let Some(j) = tiers.values.iter().position(|t| t == target) else {
+            let mut note = format!("tiers: {}", tiers.values.join(", "));
+            if let Some(s) =
+                crate::diag::did_you_mean(target, tiers.values.iter().map(String::as_str))
+            {
+                note = format!("did you mean `{s}`? {note}");
+            }
+            cx.error_with_note(
+                "tier-relation",
+                format!(
+                    "tier `{name}` approximates `{target}`, which is not a tier of this material"
+                ),
+                span.clone(),
+                "unknown tier",
+                note,
+            );
+            continue;
+        };
+        if j == i || looks[j] {
+            cx.error_with_note(
+                "tier-relation",
+                format!(
+                    "tier `{name}` cannot approximate {}",
+                    if j == i {
+                        "itself".to_string()
+                    } else {
+                        format!("`{target}`, a look")
+                    }
+                ),
+                span.clone(),
+                "here",
+                "an approximation is measured against a more accurate tier: usually `reference`",
+            );
+            continue;
+        }
+        approximates[i] = Some(j);
+    }
+    // Chains end at the reference (no cycles).
+    for (i, (target, _)) in declared.iter().enumerate() {
+        let mut at = i;
+        let mut steps = 0;
+        while let Some(next) = approximates[at] {
+            at = next;
+            steps += 1;
+            if steps > n {
+                break;
+            }
+        }
+        if steps > n
+            && let Some((_, span)) = target
+        {
+            cx.error(
+                "tier-relation",
+                format!(
+                    "tier `{}` approximates in a cycle that never reaches the reference",
+                    tiers.values[i]
+                ),
+                span.clone(),
+                "part of the cycle",
+            );
+            approximates[i] = None;
+        }
+    }
+    material.tiers.approximates = approximates;
+    material.tiers.looks = looks;
 }

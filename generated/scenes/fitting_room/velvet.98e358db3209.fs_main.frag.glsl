@@ -29,6 +29,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -218,6 +219,8 @@ void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
     vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
     vec3 _e11 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
     n = _e13;
@@ -245,20 +248,26 @@ void main() {
     {
         float _e45 = weft_sheen_clamp_roughness(0.39999998);
         float _e46 = weft_sheen_albedo(_e28, _e45);
-        float _e47 = weft_sheen_albedo(n_dot_l_2, _e45);
-        vec3 _e48 = weft_sheen_charlie(vec3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
-        float _e49 = weft_sheen_albedo_scaling(vec3(0.46167183, 0.07633493, 0.16470811), _e46, _e47);
-        vec3 _e50 = weft_diffuse_lambert(vec3(0.0, 0.0, 0.0));
-        vec3 base_direct = (_e50 * (_e49 * n_dot_l_2));
-        vec3 direct = ((_e48 + base_direct) * _e39);
-        float _e55 = weft_sheen_albedo_scaling_view(vec3(0.46167183, 0.07633493, 0.16470811), _e46);
-        vec3 _e57 = n;
-        vec3 _e59 = weft_prefiltered_radiance(reflect(-(_e11), _e57), _e45);
-        vec3 env_sheen = ((_e59 * vec3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0));
-        color = ((direct + ((ambient * vec3(0.0, 0.0, 0.0)) * _e55)) + env_sheen);
+        float _e47 = weft_sheen_albedo_scaling_view(vec3(0.46167183, 0.07633493, 0.16470811), _e46);
+        {
+            float _e50 = weft_sheen_albedo(n_dot_l_2, _e45);
+            vec3 _e51 = weft_sheen_charlie(vec3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
+            sheen = _e51;
+            float _e52 = weft_sheen_albedo_scaling(vec3(0.46167183, 0.07633493, 0.16470811), _e46, _e50);
+            scaling = _e52;
+        }
+        vec3 _e53 = weft_diffuse_lambert(vec3(0.0, 0.0, 0.0));
+        float _e54 = scaling;
+        vec3 base_direct = (_e53 * (_e54 * n_dot_l_2));
+        vec3 _e57 = sheen;
+        vec3 direct = ((_e57 + base_direct) * _e39);
+        vec3 _e61 = n;
+        vec3 _e63 = weft_prefiltered_radiance(reflect(-(_e11), _e61), _e45);
+        vec3 env_sheen = ((_e63 * vec3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0));
+        color = ((direct + ((ambient * vec3(0.0, 0.0, 0.0)) * _e47)) + env_sheen);
     }
-    vec3 _e67 = color;
-    vec3 radiance = clamp(_e67, vec3(0.0), vec3(65504.0));
+    vec3 _e71 = color;
+    vec3 radiance = clamp(_e71, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }

@@ -32,6 +32,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -285,6 +286,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
 
     const float3 _e11 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
@@ -313,19 +316,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         const float _e45 = weft_sheen_clamp_roughness(0.39999998);
         const float _e46 = weft_sheen_albedo(_e28, _e45);
-        const float _e47 = weft_sheen_albedo(n_dot_l_2, _e45);
-        const float3 _e48 = weft_sheen_charlie(float3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
-        const float _e49 = weft_sheen_albedo_scaling(float3(0.46167183, 0.07633493, 0.16470811), _e46, _e47);
-        const float3 _e50 = weft_diffuse_lambert(float3(0.0, 0.0, 0.0));
-        float3 base_direct = (_e50 * (_e49 * n_dot_l_2));
-        float3 direct = ((_e48 + base_direct) * _e39);
-        const float _e55 = weft_sheen_albedo_scaling_view(float3(0.46167183, 0.07633493, 0.16470811), _e46);
-        float3 _e57 = n;
-        const float3 _e59 = weft_prefiltered_radiance(reflect(-(_e11), _e57), _e45);
-        float3 env_sheen = ((_e59 * float3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0));
-        color = ((direct + ((ambient * float3(0.0, 0.0, 0.0)) * _e55)) + env_sheen);
+        const float _e47 = weft_sheen_albedo_scaling_view(float3(0.46167183, 0.07633493, 0.16470811), _e46);
+        {
+            const float _e50 = weft_sheen_albedo(n_dot_l_2, _e45);
+            const float3 _e51 = weft_sheen_charlie(float3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
+            sheen = _e51;
+            const float _e52 = weft_sheen_albedo_scaling(float3(0.46167183, 0.07633493, 0.16470811), _e46, _e50);
+            scaling = _e52;
+        }
+        const float3 _e53 = weft_diffuse_lambert(float3(0.0, 0.0, 0.0));
+        float _e54 = scaling;
+        float3 base_direct = (_e53 * (_e54 * n_dot_l_2));
+        float3 _e57 = sheen;
+        float3 direct = ((_e57 + base_direct) * _e39);
+        float3 _e61 = n;
+        const float3 _e63 = weft_prefiltered_radiance(reflect(-(_e11), _e61), _e45);
+        float3 env_sheen = ((_e63 * float3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0));
+        color = ((direct + ((ambient * float3(0.0, 0.0, 0.0)) * _e47)) + env_sheen);
     }
-    float3 _e67 = color;
-    float3 radiance = clamp(_e67, (0.0).xxx, (65504.0).xxx);
+    float3 _e71 = color;
+    float3 radiance = clamp(_e71, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

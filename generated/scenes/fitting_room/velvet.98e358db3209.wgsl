@@ -32,6 +32,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -246,6 +247,8 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var color: vec3<f32>;
+    var sheen: vec3<f32>;
+    var scaling: f32;
 
     let _e11 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e13 = weft_safe_normalize(in_1.world_normal, _e11);
@@ -274,19 +277,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         let _e45 = weft_sheen_clamp_roughness(0.39999998f);
         let _e46 = weft_sheen_albedo(_e28, _e45);
-        let _e47 = weft_sheen_albedo(n_dot_l_2, _e45);
-        let _e48 = weft_sheen_charlie(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), n_dot_h_2, _e28, n_dot_l_2, _e45);
-        let _e49 = weft_sheen_albedo_scaling(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), _e46, _e47);
-        let _e50 = weft_diffuse_lambert(vec3<f32>(0f, 0f, 0f));
-        let base_direct = (_e50 * (_e49 * n_dot_l_2));
-        let direct = ((_e48 + base_direct) * _e39);
-        let _e55 = weft_sheen_albedo_scaling_view(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), _e46);
-        let _e57 = n;
-        let _e59 = weft_prefiltered_radiance(reflect(-(_e11), _e57), _e45);
-        let env_sheen = ((_e59 * vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f)) * (_e46 * 1f));
-        color = ((direct + ((ambient * vec3<f32>(0f, 0f, 0f)) * _e55)) + env_sheen);
+        let _e47 = weft_sheen_albedo_scaling_view(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), _e46);
+        {
+            let _e50 = weft_sheen_albedo(n_dot_l_2, _e45);
+            let _e51 = weft_sheen_charlie(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), n_dot_h_2, _e28, n_dot_l_2, _e45);
+            sheen = _e51;
+            let _e52 = weft_sheen_albedo_scaling(vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f), _e46, _e50);
+            scaling = _e52;
+        }
+        let _e53 = weft_diffuse_lambert(vec3<f32>(0f, 0f, 0f));
+        let _e54 = scaling;
+        let base_direct = (_e53 * (_e54 * n_dot_l_2));
+        let _e57 = sheen;
+        let direct = ((_e57 + base_direct) * _e39);
+        let _e61 = n;
+        let _e63 = weft_prefiltered_radiance(reflect(-(_e11), _e61), _e45);
+        let env_sheen = ((_e63 * vec3<f32>(0.46167183f, 0.07633493f, 0.16470811f)) * (_e46 * 1f));
+        color = ((direct + ((ambient * vec3<f32>(0f, 0f, 0f)) * _e47)) + env_sheen);
     }
-    let _e67 = color;
-    let radiance = clamp(_e67, vec3(0f), vec3(65504f));
+    let _e71 = color;
+    let radiance = clamp(_e71, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

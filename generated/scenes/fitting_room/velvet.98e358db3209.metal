@@ -39,6 +39,7 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -347,6 +348,8 @@ fragment fs_mainOutput fs_main(
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
+    metal::float3 sheen = {};
+    float scaling = {};
     metal::float3 _e11 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
     n = _e13;
@@ -374,19 +377,25 @@ fragment fs_mainOutput fs_main(
     {
         float _e45 = weft_sheen_clamp_roughness(0.39999998);
         float _e46 = weft_sheen_albedo(_e28, _e45, weft_lut_sampler, weft_sheen_lut);
-        float _e47 = weft_sheen_albedo(n_dot_l_2, _e45, weft_lut_sampler, weft_sheen_lut);
-        metal::float3 _e48 = weft_sheen_charlie(metal::float3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
-        float _e49 = weft_sheen_albedo_scaling(metal::float3(0.46167183, 0.07633493, 0.16470811), _e46, _e47);
-        metal::float3 _e50 = weft_diffuse_lambert(metal::float3(0.0, 0.0, 0.0));
-        metal::float3 base_direct = _e50 * (_e49 * n_dot_l_2);
-        metal::float3 direct = (_e48 + base_direct) * _e39;
-        float _e55 = weft_sheen_albedo_scaling_view(metal::float3(0.46167183, 0.07633493, 0.16470811), _e46);
-        metal::float3 _e57 = n;
-        metal::float3 _e59 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e57), _e45, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e59 * metal::float3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0);
-        color = (direct + ((ambient * metal::float3(0.0, 0.0, 0.0)) * _e55)) + env_sheen;
+        float _e47 = weft_sheen_albedo_scaling_view(metal::float3(0.46167183, 0.07633493, 0.16470811), _e46);
+        {
+            float _e50 = weft_sheen_albedo(n_dot_l_2, _e45, weft_lut_sampler, weft_sheen_lut);
+            metal::float3 _e51 = weft_sheen_charlie(metal::float3(0.46167183, 0.07633493, 0.16470811), n_dot_h_2, _e28, n_dot_l_2, _e45);
+            sheen = _e51;
+            float _e52 = weft_sheen_albedo_scaling(metal::float3(0.46167183, 0.07633493, 0.16470811), _e46, _e50);
+            scaling = _e52;
+        }
+        metal::float3 _e53 = weft_diffuse_lambert(metal::float3(0.0, 0.0, 0.0));
+        float _e54 = scaling;
+        metal::float3 base_direct = _e53 * (_e54 * n_dot_l_2);
+        metal::float3 _e57 = sheen;
+        metal::float3 direct = (_e57 + base_direct) * _e39;
+        metal::float3 _e61 = n;
+        metal::float3 _e63 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e61), _e45, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e63 * metal::float3(0.46167183, 0.07633493, 0.16470811)) * (_e46 * 1.0);
+        color = (direct + ((ambient * metal::float3(0.0, 0.0, 0.0)) * _e47)) + env_sheen;
     }
-    metal::float3 _e67 = color;
-    metal::float3 radiance = metal::clamp(_e67, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e71 = color;
+    metal::float3 radiance = metal::clamp(_e71, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

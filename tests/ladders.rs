@@ -1,0 +1,109 @@
+//! Tier ladders (issue 10): an approximation tier's worst-case FLIP against
+//! the tier it approximates, over a reduced error grid (every preset and the
+//! defaults × sphere and cloth × key, side and rim light, 96 px; the
+//! benchmark's grid at 160 px is `crates/weft-golden/src/error_grid.rs`),
+//! stays within the target, so a change that breaks an approximation fails.
+//!
+//! Materials whose `fast` tier already approximates its reference within the
+//! target are listed in `HONEST_LADDERS`. The others' fast tiers are, today,
+//! further than 0.05 from their reference somewhere on the grid (figures in
+//! docs/performance.md and each material's README); they join the list as
+//! their ladders are fixed, never by a looser bound.
+
+use std::path::{Path, PathBuf};
+use weft_golden::error_grid::{GridOptions, LIGHTS, tier_errors};
+use weft_render::{EnvironmentMaps, Gpu, Luts, PreviewOptions, Renderer, SceneKind};
+
+/// FLIP mean, worst cell: the issue's target for every approximation.
+const MAX_WORST_FLIP: f64 = 0.05;
+
+const HONEST_LADDERS: &[&str] = &["velvet"];
+
+fn generated() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated")
+}
+
+#[test]
+fn approximation_tiers_stay_within_the_target_over_the_grid() {
+    let generated = generated();
+    let luts = Luts::load_dir(&generated).expect("generated/ LUTs");
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
+    let env = EnvironmentMaps::sky(&PreviewOptions::default().sky_params());
+    let mut renderer = Renderer::new(gpu, &env, &luts).expect("renderer");
+    let options = GridOptions {
+        size: 96,
+        scenes: vec![SceneKind::Sphere, SceneKind::Cloth],
+        lights: LIGHTS.to_vec(),
+        presets: true,
+    };
+    let materials = weft_golden::materials(&generated).expect("generated/");
+    let mut failures = Vec::new();
+    for name in HONEST_LADDERS {
+        let (path, meta) = materials
+            .iter()
+            .find(|(_, m)| &m.name == name)
+            .unwrap_or_else(|| panic!("no material `{name}` in generated/"));
+        let errors = tier_errors(&mut renderer, path, meta, &options).expect("grid renders");
+        let approximations: Vec<&String> = meta.tiers.approximates.keys().collect();
+        assert!(!approximations.is_empty(), "{name}: no approximation tier");
+        for tier in approximations {
+            let e = errors
+                .iter()
+                .find(|e| &e.tier == tier)
+                .unwrap_or_else(|| panic!("{name}/{tier}: not measured"));
+            // Every preset × scene × light that has a variant was measured.
+            assert!(e.cells >= 2 * 3, "{name}/{tier}: {} cells", e.cells);
+            eprintln!(
+                "{name}/{tier}: worst FLIP {:.4} ({}), mean {:.4} over {} cells",
+                e.worst, e.worst_cell, e.mean, e.cells
+            );
+            if e.worst > MAX_WORST_FLIP {
+                failures.push(format!(
+                    "{name}/{tier}: worst FLIP {:.4} at {} > {MAX_WORST_FLIP}",
+                    e.worst, e.worst_cell
+                ));
+            }
+        }
+        // A look is measured too, and is far from the reference: it is a
+        // different model, which is why it is not an approximation.
+        for look in &meta.tiers.looks {
+            let e = errors
+                .iter()
+                .find(|e| &e.tier == look)
+                .expect("look measured");
+            assert!(
+                e.worst > MAX_WORST_FLIP,
+                "{name}/{look}: within {MAX_WORST_FLIP} of the reference ({:.4}): an approximation, not a look?",
+                e.worst
+            );
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn every_tier_is_the_reference_an_approximation_or_a_look() {
+    for (_, meta) in weft_golden::materials(&generated()).expect("generated/") {
+        let t = &meta.tiers;
+        for tier in &t.values {
+            let roles = [
+                *tier == t.reference,
+                t.approximates.contains_key(tier),
+                t.looks.contains(tier),
+            ];
+            assert_eq!(
+                roles.iter().filter(|r| **r).count(),
+                1,
+                "{}/{tier}: {roles:?}",
+                meta.name
+            );
+        }
+        for (tier, of) in &t.approximates {
+            assert!(
+                t.values.contains(of) && !t.looks.contains(of),
+                "{}/{tier} approximates {of}",
+                meta.name
+            );
+        }
+    }
+}
