@@ -178,6 +178,10 @@ pub(super) fn parse_keyword(
     })
 }
 
+/// Per tier as written: the `approximates` value with its span, and the
+/// span of `look = true`.
+type DeclaredRelation = (Option<(String, Span)>, Option<Span>);
+
 pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
     let Some(v) = top.get("tier") else {
         cx.error_with_note(
@@ -193,8 +197,7 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
         return;
     };
     let mut default = None;
-    // Per tier: the `approximates` value and its span, and `look`'s span.
-    let mut declared: Vec<(Option<(String, Span)>, Option<Span>)> = Vec::new();
+    let mut declared: Vec<DeclaredRelation> = Vec::new();
     for item in items {
         let Some(t) = Table::new(item, "a [[tier]]", cx) else {
             continue;
@@ -277,11 +280,7 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
 /// nothing and nothing approximates it; the reference approximates nothing;
 /// every other tier approximates the reference unless it names another
 /// tier, and following `approximates` always reaches the reference.
-fn tier_relations(
-    material: &mut Material,
-    declared: &[(Option<(String, Span)>, Option<Span>)],
-    cx: &mut Cx,
-) {
+fn tier_relations(material: &mut Material, declared: &[DeclaredRelation], cx: &mut Cx) {
     let tiers = &material.tiers;
     let n = tiers.values.len();
     let looks: Vec<bool> = declared.iter().map(|(_, l)| l.is_some()).collect();
