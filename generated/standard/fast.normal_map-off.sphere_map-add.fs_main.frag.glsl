@@ -42,6 +42,7 @@ const uint SPHERE_MAP_ADD = 1u;
 const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -51,13 +52,15 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
 
-layout(binding = 3) uniform samplerCube _group_1_binding_6_fs;
+layout(binding = 4) uniform samplerCube _group_1_binding_6_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -65,18 +68,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -87,9 +81,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
@@ -107,32 +101,21 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5 / mix(((2.0 * _e6) * _e5), (_e6 + _e5), a_1));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -176,17 +159,23 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
-    float _e4 = weft_specular_mip(roughness_6);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -222,7 +211,7 @@ void main() {
     vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
     vec3 rmo = _e19.xyz;
     float _e23 = _group_1_binding_0_fs.roughness;
-    float roughness_7 = clamp((_e23 * rmo.x), 0.0, 1.0);
+    float roughness_6 = clamp((_e23 * rmo.x), 0.0, 1.0);
     float _e29 = _group_1_binding_0_fs.metallic;
     float metallic = clamp((_e29 * rmo.y), 0.0, 1.0);
     float _e36 = _group_1_binding_0_fs.occlusion_strength;
@@ -242,52 +231,55 @@ void main() {
     vec3 _e64 = n;
     float n_dot_h = clamp(dot(_e64, _e57), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e50, _e57), 0.0, 1.0);
-    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e79;
-        vec3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e80;
-        vec3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = (vec3(1.0) - _e83);
-        vec3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1.0) - _e87);
+        {
+            float _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            visibility = _e79;
+            vec2 _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            vec3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+            env_brdf = _e81;
+            vec3 _e84 = env_brdf;
+            ambient_kd = max((vec3(1.0) - _e84), vec3(0.0));
+            vec3 _e89 = ambient_kd;
+            direct_kd = _e89;
+        }
     }
     if ((specular_strength > 0.0)) {
-        vec3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
-        vec3 _e98 = n;
-        float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
-        float _e100 = visibility;
-        specular = (((_e99 * _e100) * _e97) * specular_strength);
-        vec3 _e105 = n;
-        vec3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
-        vec3 _e108 = env_brdf;
-        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+        vec3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        vec3 _e99 = n;
+        float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        vec3 _e106 = n;
+        vec3 _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        vec3 _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
     }
-    vec3 _e112 = direct_kd;
-    vec3 _e113 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e112 * _e113);
-    vec3 _e115 = specular;
-    vec3 _e117 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
-    vec3 _e120 = n;
-    vec3 _e121 = weft_sh_irradiance(_e120);
-    vec3 _e123 = ambient_kd;
-    vec3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
-    vec3 _e126 = indirect_specular;
-    color = ((direct + _e126) + indirect_diffuse);
+    vec3 _e113 = direct_kd;
+    vec3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e113 * _e114);
+    vec3 _e116 = specular;
+    vec3 _e118 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    vec3 _e121 = n;
+    vec3 _e122 = weft_sh_irradiance(_e121);
+    vec3 _e124 = ambient_kd;
+    vec3 indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    vec3 _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
     {
-        vec3 _e130 = n;
-        vec3 _e132 = weft_sphere_map_direction(_e130, in_1.world_position);
-        vec4 _e135 = texture(_group_1_binding_6_fs, vec3(_e132));
-        vec3 sph = max(_e135.xyz, vec3(0.0));
-        vec3 _e140 = color;
-        float _e143 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e140 + (sph * _e143));
+        vec3 _e131 = n;
+        vec3 _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
+        vec4 _e136 = texture(_group_1_binding_6_fs, vec3(_e133));
+        vec3 sph = max(_e136.xyz, vec3(0.0));
+        vec3 _e141 = color;
+        float _e144 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e141 + (sph * _e144));
     }
-    vec3 _e146 = color;
-    vec3 radiance = clamp(_e146, vec3(0.0), vec3(65504.0));
+    vec3 _e147 = color;
+    vec3 radiance = clamp(_e147, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

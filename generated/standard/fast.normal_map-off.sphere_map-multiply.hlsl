@@ -48,6 +48,7 @@ static const uint SPHERE_MAP_ADD = 1u;
 static const uint SPHERE_MAP_MULTIPLY = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -59,6 +60,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -84,21 +87,10 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(float3 v)
-{
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c)
@@ -111,10 +103,10 @@ float weft_clamp_roughness(float roughness)
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v_1, float3 fallback)
+float3 weft_safe_normalize(float3 v, float3 fallback)
 {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
@@ -134,21 +126,13 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_2)
+float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2)
 {
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness_2))).xxx, f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3)
-{
-    const float _e3 = weft_clamp_roughness(roughness_3);
+    const float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    const float _e5 = weft_clamp_cos(n_dot_v);
+    const float _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5 / lerp(((2.0 * _e6) * _e5), (_e6 + _e5), a_1));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -156,14 +140,10 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_4)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_4);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_2);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
-    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -212,19 +192,26 @@ float3 weft_sh_irradiance(float3 n_2)
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_5)
+float weft_specular_mip(float roughness_3)
 {
-    float r_1 = saturate(roughness_5);
+    float r = saturate(roughness_3);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_6)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
 {
-    const float _e4 = weft_specular_mip(roughness_6);
+    const float _e4 = weft_specular_mip(roughness_4);
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+{
+    float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
@@ -289,7 +276,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e19 = rmo_map.Sample(material_sampler, _e5);
     float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
-    float roughness_7 = saturate((_e23 * rmo.x));
+    float roughness_6 = saturate((_e23 * rmo.x));
     float _e29 = material.metallic;
     float metallic = saturate((_e29 * rmo.y));
     float _e36 = material.occlusion_strength;
@@ -309,51 +296,54 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e64 = n;
     float n_dot_h = saturate(dot(_e64, _e57));
     float v_dot_h_1 = saturate(dot(_e50, _e57));
-    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        const float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e79;
-        const float3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e80;
-        const float3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = ((1.0).xxx - _e83);
-        const float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = ((1.0).xxx - _e87);
+        {
+            const float _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            visibility = _e79;
+            const float2 _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            const float3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+            env_brdf = _e81;
+            float3 _e84 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e84), (0.0).xxx);
+            float3 _e89 = ambient_kd;
+            direct_kd = _e89;
+        }
     }
     if ((specular_strength > 0.0)) {
-        const float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
-        float3 _e98 = n;
-        const float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
-        float _e100 = visibility;
-        specular = (((_e99 * _e100) * _e97) * specular_strength);
-        float3 _e105 = n;
-        const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
-        float3 _e108 = env_brdf;
-        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+        const float3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        float3 _e99 = n;
+        const float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        float3 _e106 = n;
+        const float3 _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        float3 _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
     }
-    float3 _e112 = direct_kd;
-    const float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e112 * _e113);
-    float3 _e115 = specular;
-    const float3 _e117 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
-    float3 _e120 = n;
-    const float3 _e121 = weft_sh_irradiance(_e120);
-    float3 _e123 = ambient_kd;
-    float3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
-    float3 _e126 = indirect_specular;
-    color = ((direct + _e126) + indirect_diffuse);
+    float3 _e113 = direct_kd;
+    const float3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e113 * _e114);
+    float3 _e116 = specular;
+    const float3 _e118 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    float3 _e121 = n;
+    const float3 _e122 = weft_sh_irradiance(_e121);
+    float3 _e124 = ambient_kd;
+    float3 indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    float3 _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
     {
-        float3 _e130 = n;
-        const float3 _e132 = weft_sphere_map_direction(_e130, in_1.world_position);
-        float4 _e135 = sphere_map.Sample(material_clamp_sampler, _e132);
-        float3 sph = max(_e135.xyz, (0.0).xxx);
-        float3 _e140 = color;
-        float _e145 = material.sphere_strength;
-        color = (_e140 * max(lerp((1.0).xxx, sph, _e145), (0.0).xxx));
+        float3 _e131 = n;
+        const float3 _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
+        float4 _e136 = sphere_map.Sample(material_clamp_sampler, _e133);
+        float3 sph = max(_e136.xyz, (0.0).xxx);
+        float3 _e141 = color;
+        float _e146 = material.sphere_strength;
+        color = (_e141 * max(lerp((1.0).xxx, sph, _e146), (0.0).xxx));
     }
-    float3 _e151 = color;
-    float3 radiance = clamp(_e151, (0.0).xxx, (65504.0).xxx);
+    float3 _e152 = color;
+    float3 radiance = clamp(_e152, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

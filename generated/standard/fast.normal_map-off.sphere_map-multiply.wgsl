@@ -46,6 +46,7 @@ const SPHERE_MAP_ADD: u32 = 1u;
 const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -57,6 +58,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -72,18 +77,9 @@ var rmo_map: texture_2d<f32>;
 @group(1) @binding(6) 
 var sphere_map: texture_cube<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -94,9 +90,9 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
@@ -114,32 +110,21 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_2: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_2))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_3: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_3);
+fn weft_v_smith_ggx_correlated_fast(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
     let a_1 = (_e3 * _e3);
-    let k = (((a_1 + 1f) * (a_1 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
+    let _e5 = weft_clamp_cos(n_dot_v);
+    let _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5f / mix(((2f * _e6) * _e5), (_e6 + _e5), a_1));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_4: f32) -> vec3<f32> {
-    let r = saturate(roughness_4);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -184,17 +169,23 @@ fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_5: f32) -> f32 {
-    let r_1 = saturate(roughness_5);
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_6);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
@@ -254,7 +245,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e19 = textureSample(rmo_map, material_sampler, _e5);
     let rmo = _e19.xyz;
     let _e23 = material.roughness;
-    let roughness_7 = saturate((_e23 * rmo.x));
+    let roughness_6 = saturate((_e23 * rmo.x));
     let _e29 = material.metallic;
     let metallic = saturate((_e29 * rmo.y));
     let _e36 = material.occlusion_strength;
@@ -274,51 +265,54 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e64 = n;
     let n_dot_h = saturate(dot(_e64, _e57));
     let v_dot_h_1 = saturate(dot(_e50, _e57));
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e79;
-        let _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e80;
-        let _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = (vec3(1f) - _e83);
-        let _e87 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1f) - _e87);
+        {
+            let _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            visibility = _e79;
+            let _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            let _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+            env_brdf = _e81;
+            let _e84 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e84), vec3(0f));
+            let _e89 = ambient_kd;
+            direct_kd = _e89;
+        }
     }
     if (specular_strength > 0f) {
-        let _e97 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e98 = n;
-        let _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
-        let _e100 = visibility;
-        specular = (((_e99 * _e100) * _e97) * specular_strength);
-        let _e105 = n;
-        let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
-        let _e108 = env_brdf;
-        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+        let _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e99 = n;
+        let _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        let _e101 = visibility;
+        specular = (((_e100 * _e101) * _e98) * specular_strength);
+        let _e106 = n;
+        let _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
+        let _e109 = env_brdf;
+        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
     }
-    let _e112 = direct_kd;
-    let _e113 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e112 * _e113);
-    let _e115 = specular;
-    let _e117 = weft_main_light_radiance();
-    let direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
-    let _e120 = n;
-    let _e121 = weft_sh_irradiance(_e120);
-    let _e123 = ambient_kd;
-    let indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
-    let _e126 = indirect_specular;
-    color = ((direct + _e126) + indirect_diffuse);
+    let _e113 = direct_kd;
+    let _e114 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e113 * _e114);
+    let _e116 = specular;
+    let _e118 = weft_main_light_radiance();
+    let direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
+    let _e121 = n;
+    let _e122 = weft_sh_irradiance(_e121);
+    let _e124 = ambient_kd;
+    let indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
+    let _e127 = indirect_specular;
+    color = ((direct + _e127) + indirect_diffuse);
     {
-        let _e130 = n;
-        let _e132 = weft_sphere_map_direction(_e130, in_1.world_position);
-        let _e135 = textureSample(sphere_map, material_clamp_sampler, _e132);
-        let sph = max(_e135.xyz, vec3(0f));
-        let _e140 = color;
-        let _e145 = material.sphere_strength;
-        color = (_e140 * max(mix(vec3(1f), sph, _e145), vec3(0f)));
+        let _e131 = n;
+        let _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
+        let _e136 = textureSample(sphere_map, material_clamp_sampler, _e133);
+        let sph = max(_e136.xyz, vec3(0f));
+        let _e141 = color;
+        let _e146 = material.sphere_strength;
+        color = (_e141 * max(mix(vec3(1f), sph, _e146), vec3(0f)));
     }
-    let _e151 = color;
-    let radiance = clamp(_e151, vec3(0f), vec3(65504f));
+    let _e152 = color;
+    let radiance = clamp(_e152, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

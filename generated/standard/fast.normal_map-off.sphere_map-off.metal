@@ -53,29 +53,17 @@ constant uint SPHERE_MAP_ADD = 1u;
 constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -91,11 +79,11 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 float weft_d_ggx_nh(
@@ -120,27 +108,16 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
+float weft_v_smith_ggx_correlated_fast(
     float n_dot_v,
+    float n_dot_l,
     float roughness_2
 ) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_2)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_3
-) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = _e3 * _e3;
-    float k = ((a_1 + 1.0) * (a_1 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return 0.5 / metal::mix((2.0 * _e6) * _e5, _e6 + _e5, a_1);
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -149,17 +126,12 @@ metal::float3 weft_diffuse_lambert(
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_2,
-    float roughness_4
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_4);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -215,25 +187,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_5,
+    float roughness_3,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_5);
+    float r = metal::saturate(roughness_3);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_6,
+    float roughness_4,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_6, weft_frame);
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float2 weft_transform_uv(
@@ -299,10 +282,12 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> rmo_map [[texture(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -323,7 +308,7 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
     metal::float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
-    float roughness_7 = metal::saturate(_e23 * rmo.x);
+    float roughness_6 = metal::saturate(_e23 * rmo.x);
     float _e29 = material.metallic;
     float metallic = metal::saturate(_e29 * rmo.y);
     float _e36 = material.occlusion_strength;
@@ -343,42 +328,45 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e64 = n;
     float n_dot_h = metal::saturate(metal::dot(_e64, _e57));
     float v_dot_h_1 = metal::saturate(metal::dot(_e50, _e57));
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-        visibility = _e79;
-        metal::float3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-        env_brdf = _e80;
-        metal::float3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-        ambient_kd = metal::float3(1.0) - _e83;
-        metal::float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = metal::float3(1.0) - _e87;
+        {
+            float _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            visibility = _e79;
+            metal::float2 _e80 = weft_env_brdf_lut(_e60, roughness_6, weft_brdf_lut, weft_lut_sampler);
+            metal::float3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
+            env_brdf = _e81;
+            metal::float3 _e84 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e84, metal::float3(0.0));
+            metal::float3 _e89 = ambient_kd;
+            direct_kd = _e89;
+        }
     }
     if (specular_strength > 0.0) {
-        metal::float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
-        metal::float3 _e98 = n;
-        float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
-        float _e100 = visibility;
-        specular = ((_e99 * _e100) * _e97) * specular_strength;
-        metal::float3 _e105 = n;
-        metal::float3 _e107 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e105), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e108 = env_brdf;
-        indirect_specular = (_e107 * _e108) * (ao * specular_strength);
+        metal::float3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
+        metal::float3 _e99 = n;
+        float _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
+        float _e101 = visibility;
+        specular = ((_e100 * _e101) * _e98) * specular_strength;
+        metal::float3 _e106 = n;
+        metal::float3 _e108 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e106), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e109 = env_brdf;
+        indirect_specular = (_e108 * _e109) * (ao * specular_strength);
     }
-    metal::float3 _e112 = direct_kd;
-    metal::float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e112 * _e113;
-    metal::float3 _e115 = specular;
-    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e115) * _e117) * n_dot_l_1;
-    metal::float3 _e120 = n;
-    metal::float3 _e121 = weft_sh_irradiance(_e120, weft_frame);
-    metal::float3 _e123 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e121 * ao) * _e123) * diffuse_albedo;
-    metal::float3 _e126 = indirect_specular;
-    color = (direct + _e126) + indirect_diffuse;
-    metal::float3 _e130 = color;
-    metal::float3 radiance = metal::clamp(_e130, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e113 = direct_kd;
+    metal::float3 _e114 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e113 * _e114;
+    metal::float3 _e116 = specular;
+    metal::float3 _e118 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e116) * _e118) * n_dot_l_1;
+    metal::float3 _e121 = n;
+    metal::float3 _e122 = weft_sh_irradiance(_e121, weft_frame);
+    metal::float3 _e124 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e122 * ao) * _e124) * diffuse_albedo;
+    metal::float3 _e127 = indirect_specular;
+    color = (direct + _e127) + indirect_diffuse;
+    metal::float3 _e131 = color;
+    metal::float3 radiance = metal::clamp(_e131, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -42,6 +42,7 @@ const uint SPHERE_MAP_ADD = 1u;
 const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -51,15 +52,17 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
-layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
 
-layout(binding = 4) uniform samplerCube _group_1_binding_6_fs;
+layout(binding = 5) uniform samplerCube _group_1_binding_6_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -67,18 +70,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -89,9 +83,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
@@ -116,32 +110,21 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5 / mix(((2.0 * _e6) * _e5), (_e6 + _e5), a_2));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -185,17 +168,23 @@ vec3 weft_sh_irradiance(vec3 n_3) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
-    float _e4 = weft_specular_mip(roughness_6);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -220,8 +209,8 @@ mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -253,7 +242,7 @@ void main() {
     vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
     vec3 rmo = _e19.xyz;
     float _e23 = _group_1_binding_0_fs.roughness;
-    float roughness_7 = clamp((_e23 * rmo.x), 0.0, 1.0);
+    float roughness_6 = clamp((_e23 * rmo.x), 0.0, 1.0);
     float _e29 = _group_1_binding_0_fs.metallic;
     float metallic = clamp((_e29 * rmo.y), 0.0, 1.0);
     float _e36 = _group_1_binding_0_fs.occlusion_strength;
@@ -283,52 +272,55 @@ void main() {
     vec3 _e76 = n;
     float n_dot_h = clamp(dot(_e76, _e69), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e50, _e69), 0.0, 1.0);
-    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        float _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e91;
-        vec3 _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e92;
-        vec3 _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = (vec3(1.0) - _e95);
-        vec3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1.0) - _e99);
+        {
+            float _e91 = weft_v_smith_ggx_correlated_fast(_e72, n_dot_l_1, roughness_6);
+            visibility = _e91;
+            vec2 _e92 = weft_env_brdf_lut(_e72, roughness_6);
+            vec3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);
+            env_brdf = _e93;
+            vec3 _e96 = env_brdf;
+            ambient_kd = max((vec3(1.0) - _e96), vec3(0.0));
+            vec3 _e101 = ambient_kd;
+            direct_kd = _e101;
+        }
     }
     if ((specular_strength > 0.0)) {
-        vec3 _e109 = weft_f_schlick(f0_3, v_dot_h_1);
-        vec3 _e110 = n;
-        float _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
-        float _e112 = visibility;
-        specular = (((_e111 * _e112) * _e109) * specular_strength);
-        vec3 _e117 = n;
-        vec3 _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
-        vec3 _e120 = env_brdf;
-        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+        vec3 _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        vec3 _e111 = n;
+        float _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        float _e113 = visibility;
+        specular = (((_e112 * _e113) * _e110) * specular_strength);
+        vec3 _e118 = n;
+        vec3 _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
+        vec3 _e121 = env_brdf;
+        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
     }
-    vec3 _e124 = direct_kd;
-    vec3 _e125 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e124 * _e125);
-    vec3 _e127 = specular;
-    vec3 _e129 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
-    vec3 _e132 = n;
-    vec3 _e133 = weft_sh_irradiance(_e132);
-    vec3 _e135 = ambient_kd;
-    vec3 indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
-    vec3 _e138 = indirect_specular;
-    color = ((direct + _e138) + indirect_diffuse);
+    vec3 _e125 = direct_kd;
+    vec3 _e126 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e125 * _e126);
+    vec3 _e128 = specular;
+    vec3 _e130 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
+    vec3 _e133 = n;
+    vec3 _e134 = weft_sh_irradiance(_e133);
+    vec3 _e136 = ambient_kd;
+    vec3 indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
+    vec3 _e139 = indirect_specular;
+    color = ((direct + _e139) + indirect_diffuse);
     {
-        vec3 _e142 = n;
-        vec3 _e144 = weft_sphere_map_direction(_e142, in_1.world_position);
-        vec4 _e147 = texture(_group_1_binding_6_fs, vec3(_e144));
-        vec3 sph = max(_e147.xyz, vec3(0.0));
-        vec3 _e152 = color;
-        float _e155 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e152 + (sph * _e155));
+        vec3 _e143 = n;
+        vec3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
+        vec4 _e148 = texture(_group_1_binding_6_fs, vec3(_e145));
+        vec3 sph = max(_e148.xyz, vec3(0.0));
+        vec3 _e153 = color;
+        float _e156 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e153 + (sph * _e156));
     }
-    vec3 _e158 = color;
-    vec3 radiance = clamp(_e158, vec3(0.0), vec3(65504.0));
+    vec3 _e159 = color;
+    vec3 radiance = clamp(_e159, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

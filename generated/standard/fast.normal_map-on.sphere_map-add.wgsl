@@ -46,6 +46,7 @@ const SPHERE_MAP_ADD: u32 = 1u;
 const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -57,6 +58,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -74,18 +79,9 @@ var rmo_map: texture_2d<f32>;
 @group(1) @binding(6) 
 var sphere_map: texture_cube<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -96,9 +92,9 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
@@ -123,32 +119,21 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_2: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_2))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_3: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_3);
+fn weft_v_smith_ggx_correlated_fast(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
     let a_2 = (_e3 * _e3);
-    let k = (((a_2 + 1f) * (a_2 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
+    let _e5 = weft_clamp_cos(n_dot_v);
+    let _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5f / mix(((2f * _e6) * _e5), (_e6 + _e5), a_2));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_4: f32) -> vec3<f32> {
-    let r = saturate(roughness_4);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -193,17 +178,23 @@ fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_5: f32) -> f32 {
-    let r_1 = saturate(roughness_5);
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_6);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
@@ -228,8 +219,8 @@ fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_1 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -285,7 +276,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e19 = textureSample(rmo_map, material_sampler, _e5);
     let rmo = _e19.xyz;
     let _e23 = material.roughness;
-    let roughness_7 = saturate((_e23 * rmo.x));
+    let roughness_6 = saturate((_e23 * rmo.x));
     let _e29 = material.metallic;
     let metallic = saturate((_e29 * rmo.y));
     let _e36 = material.occlusion_strength;
@@ -315,51 +306,54 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e76 = n;
     let n_dot_h = saturate(dot(_e76, _e69));
     let v_dot_h_1 = saturate(dot(_e50, _e69));
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e91;
-        let _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e92;
-        let _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = (vec3(1f) - _e95);
-        let _e99 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1f) - _e99);
+        {
+            let _e91 = weft_v_smith_ggx_correlated_fast(_e72, n_dot_l_1, roughness_6);
+            visibility = _e91;
+            let _e92 = weft_env_brdf_lut(_e72, roughness_6);
+            let _e93 = weft_env_brdf_from_lut(f0_2, _e92);
+            env_brdf = _e93;
+            let _e96 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e96), vec3(0f));
+            let _e101 = ambient_kd;
+            direct_kd = _e101;
+        }
     }
     if (specular_strength > 0f) {
-        let _e109 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e110 = n;
-        let _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
-        let _e112 = visibility;
-        specular = (((_e111 * _e112) * _e109) * specular_strength);
-        let _e117 = n;
-        let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
-        let _e120 = env_brdf;
-        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+        let _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e111 = n;
+        let _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        let _e113 = visibility;
+        specular = (((_e112 * _e113) * _e110) * specular_strength);
+        let _e118 = n;
+        let _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
+        let _e121 = env_brdf;
+        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
     }
-    let _e124 = direct_kd;
-    let _e125 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e124 * _e125);
-    let _e127 = specular;
-    let _e129 = weft_main_light_radiance();
-    let direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
-    let _e132 = n;
-    let _e133 = weft_sh_irradiance(_e132);
-    let _e135 = ambient_kd;
-    let indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
-    let _e138 = indirect_specular;
-    color = ((direct + _e138) + indirect_diffuse);
+    let _e125 = direct_kd;
+    let _e126 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e125 * _e126);
+    let _e128 = specular;
+    let _e130 = weft_main_light_radiance();
+    let direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
+    let _e133 = n;
+    let _e134 = weft_sh_irradiance(_e133);
+    let _e136 = ambient_kd;
+    let indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
+    let _e139 = indirect_specular;
+    color = ((direct + _e139) + indirect_diffuse);
     {
-        let _e142 = n;
-        let _e144 = weft_sphere_map_direction(_e142, in_1.world_position);
-        let _e147 = textureSample(sphere_map, material_clamp_sampler, _e144);
-        let sph = max(_e147.xyz, vec3(0f));
-        let _e152 = color;
-        let _e155 = material.sphere_strength;
-        color = (_e152 + (sph * _e155));
+        let _e143 = n;
+        let _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
+        let _e148 = textureSample(sphere_map, material_clamp_sampler, _e145);
+        let sph = max(_e148.xyz, vec3(0f));
+        let _e153 = color;
+        let _e156 = material.sphere_strength;
+        color = (_e153 + (sph * _e156));
     }
-    let _e158 = color;
-    let radiance = clamp(_e158, vec3(0f), vec3(65504f));
+    let _e159 = color;
+    let radiance = clamp(_e159, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -53,29 +53,17 @@ constant uint SPHERE_MAP_ADD = 1u;
 constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -91,11 +79,11 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
@@ -129,27 +117,16 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
+float weft_v_smith_ggx_correlated_fast(
     float n_dot_v,
+    float n_dot_l,
     float roughness_2
 ) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_2)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_3
-) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = _e3 * _e3;
-    float k = ((a_2 + 1.0) * (a_2 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return 0.5 / metal::mix((2.0 * _e6) * _e5, _e6 + _e5, a_2);
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -158,17 +135,12 @@ metal::float3 weft_diffuse_lambert(
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_2,
-    float roughness_4
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_4);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -224,25 +196,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_5,
+    float roughness_3,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_5);
+    float r = metal::saturate(roughness_3);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_6,
+    float roughness_4,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_6, weft_frame);
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -264,8 +247,8 @@ metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_1 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_1.xy * strength, metal::max(v_1.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -339,11 +322,13 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> normal_map [[texture(2)]]
-, metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -364,7 +349,7 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
     metal::float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
-    float roughness_7 = metal::saturate(_e23 * rmo.x);
+    float roughness_6 = metal::saturate(_e23 * rmo.x);
     float _e29 = material.metallic;
     float metallic = metal::saturate(_e29 * rmo.y);
     float _e36 = material.occlusion_strength;
@@ -394,42 +379,45 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e76 = n;
     float n_dot_h = metal::saturate(metal::dot(_e76, _e69));
     float v_dot_h_1 = metal::saturate(metal::dot(_e50, _e69));
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-        visibility = _e91;
-        metal::float3 _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-        env_brdf = _e92;
-        metal::float3 _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-        ambient_kd = metal::float3(1.0) - _e95;
-        metal::float3 _e99 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = metal::float3(1.0) - _e99;
+        {
+            float _e91 = weft_v_smith_ggx_correlated_fast(_e72, n_dot_l_1, roughness_6);
+            visibility = _e91;
+            metal::float2 _e92 = weft_env_brdf_lut(_e72, roughness_6, weft_brdf_lut, weft_lut_sampler);
+            metal::float3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);
+            env_brdf = _e93;
+            metal::float3 _e96 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e96, metal::float3(0.0));
+            metal::float3 _e101 = ambient_kd;
+            direct_kd = _e101;
+        }
     }
     if (specular_strength > 0.0) {
-        metal::float3 _e109 = weft_f_schlick(f0_3, v_dot_h_1);
-        metal::float3 _e110 = n;
-        float _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
-        float _e112 = visibility;
-        specular = ((_e111 * _e112) * _e109) * specular_strength;
-        metal::float3 _e117 = n;
-        metal::float3 _e119 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e117), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e120 = env_brdf;
-        indirect_specular = (_e119 * _e120) * (ao * specular_strength);
+        metal::float3 _e110 = weft_f_schlick(f0_2, v_dot_h_1);
+        metal::float3 _e111 = n;
+        float _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
+        float _e113 = visibility;
+        specular = ((_e112 * _e113) * _e110) * specular_strength;
+        metal::float3 _e118 = n;
+        metal::float3 _e120 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e118), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e121 = env_brdf;
+        indirect_specular = (_e120 * _e121) * (ao * specular_strength);
     }
-    metal::float3 _e124 = direct_kd;
-    metal::float3 _e125 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e124 * _e125;
-    metal::float3 _e127 = specular;
-    metal::float3 _e129 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e127) * _e129) * n_dot_l_1;
-    metal::float3 _e132 = n;
-    metal::float3 _e133 = weft_sh_irradiance(_e132, weft_frame);
-    metal::float3 _e135 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e133 * ao) * _e135) * diffuse_albedo;
-    metal::float3 _e138 = indirect_specular;
-    color = (direct + _e138) + indirect_diffuse;
-    metal::float3 _e142 = color;
-    metal::float3 radiance = metal::clamp(_e142, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e125 = direct_kd;
+    metal::float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e125 * _e126;
+    metal::float3 _e128 = specular;
+    metal::float3 _e130 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e128) * _e130) * n_dot_l_1;
+    metal::float3 _e133 = n;
+    metal::float3 _e134 = weft_sh_irradiance(_e133, weft_frame);
+    metal::float3 _e136 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e134 * ao) * _e136) * diffuse_albedo;
+    metal::float3 _e139 = indirect_specular;
+    color = (direct + _e139) + indirect_diffuse;
+    metal::float3 _e143 = color;
+    metal::float3 radiance = metal::clamp(_e143, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -42,6 +42,7 @@ const uint SPHERE_MAP_ADD = 1u;
 const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -60,18 +61,9 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -82,9 +74,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
@@ -109,32 +101,21 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5 / mix(((2.0 * _e6) * _e5), (_e6 + _e5), a_2));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -178,11 +159,11 @@ vec3 weft_sh_irradiance(vec3 n_3) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
@@ -198,8 +179,8 @@ mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {

@@ -53,6 +53,7 @@ constant uint SPHERE_MAP_ADD = 1u;
 constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;

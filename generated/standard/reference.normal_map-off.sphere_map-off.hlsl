@@ -48,6 +48,7 @@ static const uint SPHERE_MAP_ADD = 1u;
 static const uint SPHERE_MAP_MULTIPLY = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;

@@ -42,6 +42,7 @@ const uint SPHERE_MAP_ADD = 1u;
 const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;

@@ -46,6 +46,7 @@ const SPHERE_MAP_ADD: u32 = 1u;
 const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;

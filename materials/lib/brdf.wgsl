@@ -199,6 +199,20 @@ fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness: f32) -> f3
     return 0.5 / (lv + ll);
 }
 
+// Hammon 2017 ("PBR Diffuse Lighting for GGX+Smith Microsurfaces", GDC)
+// approximation of the height-correlated Smith visibility above: each
+// sqrt(x^2 (1 - a^2) + a^2) replaced by x (1 - a) + a, which gives
+// V = 0.5 / mix(2 n.l n.v, n.l + n.v, a) (no square root). Exact at a = 0
+// and a = 1; cosines floored at 1e-4 as above, so the denominator is
+// >= 2e-4 * a > 0.
+fn weft_v_smith_ggx_correlated_fast(n_dot_v: f32, n_dot_l: f32, roughness: f32) -> f32 {
+    let r = weft_clamp_roughness(roughness);
+    let a = r * r;
+    let nv = weft_clamp_cos(n_dot_v);
+    let nl = weft_clamp_cos(n_dot_l);
+    return 0.5 / mix(2.0 * nl * nv, nl + nv, a);
+}
+
 // ---------------------------------------------------------------- diffuse
 
 // Lambert: f = albedo / pi (MATERIALS.md: the seed's missing 1/pi is not used).

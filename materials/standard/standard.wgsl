@@ -4,12 +4,18 @@
 // view-space sphere map (seed 004 sec. 6). Returns linear HDR radiance.
 //
 // Tiers (WEFT_TIER):
-//   fast      = the seed's form: GGX D, Schlick F, Schlick-GGX G with
-//               k = (alpha + 1)^2 / 8, analytic split-sum fit (Unity's) for the
-//               environment BRDF, roughness-aware Schlick for ambient kd.
 //   reference = GGX D, Schlick F, height-correlated Smith visibility, the
 //               toolchain-baked split-sum LUT, ambient kd = 1 - E_spec.
-// Both: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube.
+//   fast      = an approximation of the reference: Hammon's linear form of
+//               the correlated visibility (no square roots), the rest as the
+//               reference.
+//   seed      = a look: the seed's form, GGX D, Schlick F, Schlick-GGX G with
+//               k = (alpha + 1)^2 / 8, analytic split-sum fit (Unity's) for the
+//               environment BRDF, roughness-aware Schlick for ambient kd. That
+//               fit is far from the split-sum integral the reference bakes
+//               (at roughness 0.35 and n.v = 1 it gives 0.89 F0 against
+//               0.98 F0), hence a look rather than an approximation.
+// All: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube.
 // The material uniform, textures and keyword overrides come from the
 // generated prelude (standard.toml).
 
@@ -72,11 +78,19 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // grazing view (docs/energy.md); with 1 - E the directional albedo is
         // E + (1 - E) rho <= 1.
         direct_kd = ambient_kd;
-    } else {
+    } else if WEFT_TIER == TIER_SEED {
         visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
         env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
         ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
         direct_kd = vec3<f32>(1.0) - weft_f_schlick(f0, v_dot_h);
+    } else {
+        // The reference without its square roots: Hammon's linear form of
+        // the correlated visibility; the same split-sum table and 1 - E
+        // diffuse weighting.
+        visibility = weft_v_smith_ggx_correlated_fast(n_dot_v, n_dot_l, roughness);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+        ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
+        direct_kd = ambient_kd;
     }
 
     // ------------------------------------------------------------ direct

@@ -13,6 +13,17 @@ struct WeftObject {
     normal_matrix: mat4x4<f32>,
 }
 
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    normal_strength: f32,
+    specular_strength: f32,
+    sphere_strength: f32,
+    base_map_st: vec4<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -28,10 +39,6 @@ struct WeftVaryings {
     @location(3) uv0_: vec2<f32>,
 }
 
-struct WeftMaterial {
-    base_color: vec4<f32>,
-}
-
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const SPHERE_MAP_OFF: u32 = 0u;
@@ -39,6 +46,7 @@ const SPHERE_MAP_ADD: u32 = 1u;
 const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -54,6 +62,12 @@ var weft_environment_sampler: sampler;
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
 var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
 
 fn weft_pow4_(x: f32) -> f32 {
     let x2_ = (x * x);
@@ -127,8 +141,8 @@ fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_4: f32) -> ve
 
 fn weft_main_light_direction() -> vec3<f32> {
     let _e2 = weft_frame.light_direction;
-    let _e5 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
-    return _e5;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
 }
 
 fn weft_main_light_radiance() -> vec3<f32> {
@@ -180,6 +194,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
 @vertex 
 fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     var out: WeftVaryings;
@@ -194,13 +212,13 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     let _e43 = weft_frame.view_proj;
     out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
     out.world_position = world.xyz;
-    let _e54 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e54;
-    let _e60 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e60, bitangent_sign);
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
     out.uv0_ = in.uv0_;
-    let _e64 = out;
-    return _e64;
+    let _e66 = out;
+    return _e66;
 }
 
 @fragment 
@@ -214,59 +232,74 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var indirect_specular: vec3<f32> = vec3(0f);
     var color: vec3<f32>;
 
-    let _e3 = material.base_color;
-    let base_rgba = (_e3 * vec4<f32>(1f, 1f, 1f, 1f));
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
-    let _e17 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e19 = weft_safe_normalize(in_1.world_normal, _e17);
-    n = _e19;
-    let _e21 = weft_main_light_direction();
-    let _e23 = n;
-    let _e24 = weft_safe_normalize((_e21 + _e17), _e23);
-    let _e25 = n;
-    let _e27 = weft_clamp_cos(dot(_e25, _e17));
-    let _e28 = n;
-    let n_dot_l_1 = saturate(dot(_e28, _e21));
-    let _e31 = n;
-    let n_dot_h = saturate(dot(_e31, _e24));
-    let v_dot_h_1 = saturate(dot(_e17, _e24));
-    let f0_3 = mix(vec3(0.04f), base, 0f);
-    let diffuse_albedo = (base * 1f);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_7 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e36));
+    let _e42 = material.specular_strength;
+    let specular_strength = max(_e42, 0f);
+    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
+    n = _e52;
+    let _e54 = weft_main_light_direction();
+    let _e56 = n;
+    let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
+    let _e58 = n;
+    let _e60 = weft_clamp_cos(dot(_e58, _e50));
+    let _e61 = n;
+    let n_dot_l_1 = saturate(dot(_e61, _e54));
+    let _e64 = n;
+    let n_dot_h = saturate(dot(_e64, _e57));
+    let v_dot_h_1 = saturate(dot(_e50, _e57));
+    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
     {
-        let _e44 = weft_v_schlick_ggx(_e27, n_dot_l_1, 0.55f);
-        visibility = _e44;
-        let _e45 = weft_env_brdf_approx(f0_3, _e27, 0.55f);
-        env_brdf = _e45;
-        let _e47 = weft_f_schlick_roughness(f0_3, _e27, 0.55f);
-        ambient_kd = (vec3(1f) - _e47);
-        let _e50 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1f) - _e50);
+        {
+            let _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+            visibility = _e79;
+            let _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+            env_brdf = _e80;
+            let _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+            ambient_kd = (vec3(1f) - _e83);
+            let _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = (vec3(1f) - _e87);
+        }
     }
-    {
-        let _e56 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e57 = n;
-        let _e58 = weft_d_ggx_nh(_e57, _e24, 0.55f);
-        let _e59 = visibility;
-        specular = (((_e58 * _e59) * _e56) * 0.5f);
-        let _e64 = n;
-        let _e66 = weft_prefiltered_radiance(reflect(-(_e17), _e64), 0.55f);
-        let _e67 = env_brdf;
-        indirect_specular = ((_e66 * _e67) * 0.5f);
+    if (specular_strength > 0f) {
+        let _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e98 = n;
+        let _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        let _e100 = visibility;
+        specular = (((_e99 * _e100) * _e97) * specular_strength);
+        let _e105 = n;
+        let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
+        let _e108 = env_brdf;
+        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
     }
-    let _e71 = direct_kd;
-    let _e72 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e71 * _e72);
-    let _e74 = specular;
-    let _e76 = weft_main_light_radiance();
-    let direct = (((diffuse + _e74) * _e76) * n_dot_l_1);
-    let _e79 = n;
-    let _e80 = weft_sh_irradiance(_e79);
-    let _e82 = ambient_kd;
-    let indirect_diffuse = (((_e80 * 1f) * _e82) * diffuse_albedo);
-    let _e85 = indirect_specular;
-    color = ((direct + _e85) + indirect_diffuse);
-    let _e89 = color;
-    let radiance = clamp(_e89, vec3(0f), vec3(65504f));
+    let _e112 = direct_kd;
+    let _e113 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e112 * _e113);
+    let _e115 = specular;
+    let _e117 = weft_main_light_radiance();
+    let direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
+    let _e120 = n;
+    let _e121 = weft_sh_irradiance(_e120);
+    let _e123 = ambient_kd;
+    let indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
+    let _e126 = indirect_specular;
+    color = ((direct + _e126) + indirect_diffuse);
+    let _e130 = color;
+    let radiance = clamp(_e130, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

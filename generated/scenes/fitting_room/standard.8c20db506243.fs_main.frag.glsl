@@ -35,6 +35,7 @@ const uint SPHERE_MAP_ADD = 1u;
 const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -44,6 +45,8 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
@@ -52,18 +55,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -74,9 +68,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
@@ -94,32 +88,21 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float _e5 = weft_clamp_cos(n_dot_v);
+    float _e6 = weft_clamp_cos(n_dot_l);
+    return (0.5 / mix(((2.0 * _e6) * _e5), (_e6 + _e5), a_1));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -163,17 +146,23 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
-    float _e4 = weft_specular_mip(roughness_6);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
 }
 
 void main() {
@@ -203,43 +192,46 @@ void main() {
     vec3 _e31 = n;
     float n_dot_h = clamp(dot(_e31, _e24), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e17, _e24), 0.0, 1.0);
-    vec3 f0_3 = mix(vec3(0.04), base, 0.0);
+    vec3 f0_2 = mix(vec3(0.04), base, 0.0);
     vec3 diffuse_albedo = (base * 1.0);
     {
-        float _e44 = weft_v_schlick_ggx(_e27, n_dot_l_1, 0.55);
-        visibility = _e44;
-        vec3 _e45 = weft_env_brdf_approx(f0_3, _e27, 0.55);
-        env_brdf = _e45;
-        vec3 _e47 = weft_f_schlick_roughness(f0_3, _e27, 0.55);
-        ambient_kd = (vec3(1.0) - _e47);
-        vec3 _e50 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = (vec3(1.0) - _e50);
+        {
+            float _e44 = weft_v_smith_ggx_correlated_fast(_e27, n_dot_l_1, 0.55);
+            visibility = _e44;
+            vec2 _e45 = weft_env_brdf_lut(_e27, 0.55);
+            vec3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
+            env_brdf = _e46;
+            vec3 _e48 = env_brdf;
+            ambient_kd = max((vec3(1.0) - _e48), vec3(0.0));
+            vec3 _e52 = ambient_kd;
+            direct_kd = _e52;
+        }
     }
     {
-        vec3 _e56 = weft_f_schlick(f0_3, v_dot_h_1);
-        vec3 _e57 = n;
-        float _e58 = weft_d_ggx_nh(_e57, _e24, 0.55);
-        float _e59 = visibility;
-        specular = (((_e58 * _e59) * _e56) * 0.5);
-        vec3 _e64 = n;
-        vec3 _e66 = weft_prefiltered_radiance(reflect(-(_e17), _e64), 0.55);
-        vec3 _e67 = env_brdf;
-        indirect_specular = ((_e66 * _e67) * 0.5);
+        vec3 _e57 = weft_f_schlick(f0_2, v_dot_h_1);
+        vec3 _e58 = n;
+        float _e59 = weft_d_ggx_nh(_e58, _e24, 0.55);
+        float _e60 = visibility;
+        specular = (((_e59 * _e60) * _e57) * 0.5);
+        vec3 _e65 = n;
+        vec3 _e67 = weft_prefiltered_radiance(reflect(-(_e17), _e65), 0.55);
+        vec3 _e68 = env_brdf;
+        indirect_specular = ((_e67 * _e68) * 0.5);
     }
-    vec3 _e71 = direct_kd;
-    vec3 _e72 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e71 * _e72);
-    vec3 _e74 = specular;
-    vec3 _e76 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e74) * _e76) * n_dot_l_1);
-    vec3 _e79 = n;
-    vec3 _e80 = weft_sh_irradiance(_e79);
-    vec3 _e82 = ambient_kd;
-    vec3 indirect_diffuse = (((_e80 * 1.0) * _e82) * diffuse_albedo);
-    vec3 _e85 = indirect_specular;
-    color = ((direct + _e85) + indirect_diffuse);
-    vec3 _e89 = color;
-    vec3 radiance = clamp(_e89, vec3(0.0), vec3(65504.0));
+    vec3 _e72 = direct_kd;
+    vec3 _e73 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e72 * _e73);
+    vec3 _e75 = specular;
+    vec3 _e77 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e75) * _e77) * n_dot_l_1);
+    vec3 _e80 = n;
+    vec3 _e81 = weft_sh_irradiance(_e80);
+    vec3 _e83 = ambient_kd;
+    vec3 indirect_diffuse = (((_e81 * 1.0) * _e83) * diffuse_albedo);
+    vec3 _e86 = indirect_specular;
+    color = ((direct + _e86) + indirect_diffuse);
+    vec3 _e90 = color;
+    vec3 radiance = clamp(_e90, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

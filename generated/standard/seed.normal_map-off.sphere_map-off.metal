@@ -20,6 +20,17 @@ struct WeftObject {
     metal::float4x4 model;
     metal::float4x4 normal_matrix;
 };
+struct WeftMaterial {
+    metal::float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    float sphere_strength;
+    char _pad7[8];
+    metal::float4 base_map_st;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -35,9 +46,6 @@ struct WeftVaryings {
     metal::float2 uv0_;
     char _pad5[8];
 };
-struct WeftMaterial {
-    metal::float4 base_color;
-};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint SPHERE_MAP_OFF = 0u;
@@ -45,6 +53,7 @@ constant uint SPHERE_MAP_ADD = 1u;
 constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -158,8 +167,8 @@ metal::float3 weft_main_light_direction(
     constant WeftFrame& weft_frame
 ) {
     metal::float4 _e2 = weft_frame.light_direction;
-    metal::float3 _e5 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
-    return _e5;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
 }
 
 metal::float3 weft_main_light_radiance(
@@ -228,6 +237,13 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -258,13 +274,13 @@ vertex vs_mainOutput vs_main(
     metal::float4x4 _e43 = weft_frame.view_proj;
     out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
     out.world_position = world.xyz;
-    metal::float3 _e54 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e54;
-    metal::float3 _e60 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e60, bitangent_sign);
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
     out.uv0_ = in.uv0_;
-    WeftVaryings _e64 = out;
-    const auto _tmp = _e64;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
     return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
 }
 
@@ -285,6 +301,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(2)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -295,59 +314,74 @@ fragment fs_mainOutput fs_main(
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
     metal::float3 color = {};
-    metal::float4 _e3 = material.base_color;
-    metal::float4 base_rgba = _e3 * metal::float4(1.0, 1.0, 1.0, 1.0);
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
-    metal::float3 _e17 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e19 = weft_safe_normalize(in_1.world_normal, _e17);
-    n = _e19;
-    metal::float3 _e21 = weft_main_light_direction(weft_frame);
-    metal::float3 _e23 = n;
-    metal::float3 _e24 = weft_safe_normalize(_e21 + _e17, _e23);
-    metal::float3 _e25 = n;
-    float _e27 = weft_clamp_cos(metal::dot(_e25, _e17));
-    metal::float3 _e28 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e28, _e21));
-    metal::float3 _e31 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e31, _e24));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e17, _e24));
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, 0.0);
-    metal::float3 diffuse_albedo = base * 1.0;
+    metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
+    metal::float3 rmo = _e19.xyz;
+    float _e23 = material.roughness;
+    float roughness_7 = metal::saturate(_e23 * rmo.x);
+    float _e29 = material.metallic;
+    float metallic = metal::saturate(_e29 * rmo.y);
+    float _e36 = material.occlusion_strength;
+    float ao = metal::saturate(metal::mix(1.0, rmo.z, _e36));
+    float _e42 = material.specular_strength;
+    float specular_strength = metal::max(_e42, 0.0);
+    metal::float3 _e50 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
+    n = _e52;
+    metal::float3 _e54 = weft_main_light_direction(weft_frame);
+    metal::float3 _e56 = n;
+    metal::float3 _e57 = weft_safe_normalize(_e54 + _e50, _e56);
+    metal::float3 _e58 = n;
+    float _e60 = weft_clamp_cos(metal::dot(_e58, _e50));
+    metal::float3 _e61 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e61, _e54));
+    metal::float3 _e64 = n;
+    float n_dot_h = metal::saturate(metal::dot(_e64, _e57));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e50, _e57));
+    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e44 = weft_v_schlick_ggx(_e27, n_dot_l_1, 0.55);
-        visibility = _e44;
-        metal::float3 _e45 = weft_env_brdf_approx(f0_3, _e27, 0.55);
-        env_brdf = _e45;
-        metal::float3 _e47 = weft_f_schlick_roughness(f0_3, _e27, 0.55);
-        ambient_kd = metal::float3(1.0) - _e47;
-        metal::float3 _e50 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = metal::float3(1.0) - _e50;
+        {
+            float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+            visibility = _e79;
+            metal::float3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+            env_brdf = _e80;
+            metal::float3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+            ambient_kd = metal::float3(1.0) - _e83;
+            metal::float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = metal::float3(1.0) - _e87;
+        }
     }
-    {
-        metal::float3 _e56 = weft_f_schlick(f0_3, v_dot_h_1);
-        metal::float3 _e57 = n;
-        float _e58 = weft_d_ggx_nh(_e57, _e24, 0.55);
-        float _e59 = visibility;
-        specular = ((_e58 * _e59) * _e56) * 0.5;
-        metal::float3 _e64 = n;
-        metal::float3 _e66 = weft_prefiltered_radiance(metal::reflect(-(_e17), _e64), 0.55, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e67 = env_brdf;
-        indirect_specular = (_e66 * _e67) * 0.5;
+    if (specular_strength > 0.0) {
+        metal::float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        metal::float3 _e98 = n;
+        float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        float _e100 = visibility;
+        specular = ((_e99 * _e100) * _e97) * specular_strength;
+        metal::float3 _e105 = n;
+        metal::float3 _e107 = weft_prefiltered_radiance(metal::reflect(-(_e50), _e105), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e108 = env_brdf;
+        indirect_specular = (_e107 * _e108) * (ao * specular_strength);
     }
-    metal::float3 _e71 = direct_kd;
-    metal::float3 _e72 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e71 * _e72;
-    metal::float3 _e74 = specular;
-    metal::float3 _e76 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e74) * _e76) * n_dot_l_1;
-    metal::float3 _e79 = n;
-    metal::float3 _e80 = weft_sh_irradiance(_e79, weft_frame);
-    metal::float3 _e82 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e80 * 1.0) * _e82) * diffuse_albedo;
-    metal::float3 _e85 = indirect_specular;
-    color = (direct + _e85) + indirect_diffuse;
-    metal::float3 _e89 = color;
-    metal::float3 radiance = metal::clamp(_e89, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e112 = direct_kd;
+    metal::float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e112 * _e113;
+    metal::float3 _e115 = specular;
+    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e115) * _e117) * n_dot_l_1;
+    metal::float3 _e120 = n;
+    metal::float3 _e121 = weft_sh_irradiance(_e120, weft_frame);
+    metal::float3 _e123 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e121 * ao) * _e123) * diffuse_albedo;
+    metal::float3 _e126 = indirect_specular;
+    color = (direct + _e126) + indirect_diffuse;
+    metal::float3 _e130 = color;
+    metal::float3 radiance = metal::clamp(_e130, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -13,6 +13,19 @@ struct WeftObject {
     row_major float4x4 normal_matrix;
 };
 
+struct WeftMaterial {
+    float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    float sphere_strength;
+    int _pad7_0;
+    int _pad7_1;
+    float4 base_map_st;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -28,10 +41,6 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
-struct WeftMaterial {
-    float4 base_color;
-};
-
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint SPHERE_MAP_OFF = 0u;
@@ -39,6 +48,7 @@ static const uint SPHERE_MAP_ADD = 1u;
 static const uint SPHERE_MAP_MULTIPLY = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -52,6 +62,10 @@ StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> rmo_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
     float3 world_position_1 : LOC0;
@@ -154,8 +168,8 @@ float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_4)
 float3 weft_main_light_direction()
 {
     float4 _e2 = weft_frame.light_direction;
-    const float3 _e5 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
-    return _e5;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
 }
 
 float3 weft_main_light_radiance()
@@ -212,6 +226,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_6)
     return max(c_1.xyz, (0.0).xxx);
 }
 
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
 {
     WeftVaryings out_ = (WeftVaryings)0;
@@ -226,13 +245,13 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
     float4x4 _e43 = weft_frame.view_proj;
     out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
     out_.world_position = world.xyz;
-    const float3 _e54 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e54;
-    const float3 _e60 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e60, bitangent_sign);
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
     out_.uv0_ = in_.uv0_;
-    WeftVaryings _e64 = out_;
-    const WeftVaryings weftvaryings = _e64;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
     const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
     return weftvaryings_1;
 }
@@ -249,59 +268,74 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 indirect_specular = (0.0).xxx;
     float3 color = (float3)0;
 
-    float4 _e3 = material.base_color;
-    float4 base_rgba = (_e3 * float4(1.0, 1.0, 1.0, 1.0));
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
-    const float3 _e17 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e19 = weft_safe_normalize(in_1.world_normal, _e17);
-    n = _e19;
-    const float3 _e21 = weft_main_light_direction();
-    float3 _e23 = n;
-    const float3 _e24 = weft_safe_normalize((_e21 + _e17), _e23);
-    float3 _e25 = n;
-    const float _e27 = weft_clamp_cos(dot(_e25, _e17));
-    float3 _e28 = n;
-    float n_dot_l_1 = saturate(dot(_e28, _e21));
-    float3 _e31 = n;
-    float n_dot_h = saturate(dot(_e31, _e24));
-    float v_dot_h_1 = saturate(dot(_e17, _e24));
-    float3 f0_3 = lerp((0.04).xxx, base, 0.0);
-    float3 diffuse_albedo = (base * 1.0);
+    float4 _e19 = rmo_map.Sample(material_sampler, _e5);
+    float3 rmo = _e19.xyz;
+    float _e23 = material.roughness;
+    float roughness_7 = saturate((_e23 * rmo.x));
+    float _e29 = material.metallic;
+    float metallic = saturate((_e29 * rmo.y));
+    float _e36 = material.occlusion_strength;
+    float ao = saturate(lerp(1.0, rmo.z, _e36));
+    float _e42 = material.specular_strength;
+    float specular_strength = max(_e42, 0.0);
+    const float3 _e50 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e52 = weft_safe_normalize(in_1.world_normal, _e50);
+    n = _e52;
+    const float3 _e54 = weft_main_light_direction();
+    float3 _e56 = n;
+    const float3 _e57 = weft_safe_normalize((_e54 + _e50), _e56);
+    float3 _e58 = n;
+    const float _e60 = weft_clamp_cos(dot(_e58, _e50));
+    float3 _e61 = n;
+    float n_dot_l_1 = saturate(dot(_e61, _e54));
+    float3 _e64 = n;
+    float n_dot_h = saturate(dot(_e64, _e57));
+    float v_dot_h_1 = saturate(dot(_e50, _e57));
+    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        const float _e44 = weft_v_schlick_ggx(_e27, n_dot_l_1, 0.55);
-        visibility = _e44;
-        const float3 _e45 = weft_env_brdf_approx(f0_3, _e27, 0.55);
-        env_brdf = _e45;
-        const float3 _e47 = weft_f_schlick_roughness(f0_3, _e27, 0.55);
-        ambient_kd = ((1.0).xxx - _e47);
-        const float3 _e50 = weft_f_schlick(f0_3, v_dot_h_1);
-        direct_kd = ((1.0).xxx - _e50);
+        {
+            const float _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
+            visibility = _e79;
+            const float3 _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
+            env_brdf = _e80;
+            const float3 _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
+            ambient_kd = ((1.0).xxx - _e83);
+            const float3 _e87 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = ((1.0).xxx - _e87);
+        }
     }
-    {
-        const float3 _e56 = weft_f_schlick(f0_3, v_dot_h_1);
-        float3 _e57 = n;
-        const float _e58 = weft_d_ggx_nh(_e57, _e24, 0.55);
-        float _e59 = visibility;
-        specular = (((_e58 * _e59) * _e56) * 0.5);
-        float3 _e64 = n;
-        const float3 _e66 = weft_prefiltered_radiance(reflect(-(_e17), _e64), 0.55);
-        float3 _e67 = env_brdf;
-        indirect_specular = ((_e66 * _e67) * 0.5);
+    if ((specular_strength > 0.0)) {
+        const float3 _e97 = weft_f_schlick(f0_3, v_dot_h_1);
+        float3 _e98 = n;
+        const float _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
+        float _e100 = visibility;
+        specular = (((_e99 * _e100) * _e97) * specular_strength);
+        float3 _e105 = n;
+        const float3 _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
+        float3 _e108 = env_brdf;
+        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
     }
-    float3 _e71 = direct_kd;
-    const float3 _e72 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e71 * _e72);
-    float3 _e74 = specular;
-    const float3 _e76 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e74) * _e76) * n_dot_l_1);
-    float3 _e79 = n;
-    const float3 _e80 = weft_sh_irradiance(_e79);
-    float3 _e82 = ambient_kd;
-    float3 indirect_diffuse = (((_e80 * 1.0) * _e82) * diffuse_albedo);
-    float3 _e85 = indirect_specular;
-    color = ((direct + _e85) + indirect_diffuse);
-    float3 _e89 = color;
-    float3 radiance = clamp(_e89, (0.0).xxx, (65504.0).xxx);
+    float3 _e112 = direct_kd;
+    const float3 _e113 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e112 * _e113);
+    float3 _e115 = specular;
+    const float3 _e117 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
+    float3 _e120 = n;
+    const float3 _e121 = weft_sh_irradiance(_e120);
+    float3 _e123 = ambient_kd;
+    float3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
+    float3 _e126 = indirect_specular;
+    color = ((direct + _e126) + indirect_diffuse);
+    float3 _e130 = color;
+    float3 radiance = clamp(_e130, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

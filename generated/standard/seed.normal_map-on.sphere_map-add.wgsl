@@ -1,0 +1,368 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    normal_strength: f32,
+    specular_strength: f32,
+    sphere_strength: f32,
+    base_map_st: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const SPHERE_MAP_OFF: u32 = 0u;
+const SPHERE_MAP_ADD: u32 = 1u;
+const SPHERE_MAP_MULTIPLY: u32 = 2u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(2) 
+var material_clamp_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var normal_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var sphere_map: texture_cube<f32>;
+
+fn weft_pow4_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+fn weft_pow5_(x_1: f32) -> f32 {
+    let x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s = select(-1f, 1f, (n_1.z >= 0f));
+    let a = (-1f / (s + n_1.z));
+    let b = ((n_1.x * n_1.y) * a);
+    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
+    let a2_ = (a_1 * a_1);
+    let noh = saturate(dot(n_2, h));
+    let nxh = cross(n_2, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_2: f32) -> vec3<f32> {
+    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
+    let f90_ = max(vec3((1f - saturate(roughness_2))), f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_3: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_3);
+    let a_2 = (_e3 * _e3);
+    let k = (((a_2 + 1f) * (a_2 + 1f)) * 0.125f);
+    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
+    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
+    return (0.25f / (gv * gl));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_4: f32) -> vec3<f32> {
+    let r = saturate(roughness_4);
+    let surface_reduction = (1f / ((r * r) + 1f));
+    let _e9 = weft_max3_(f0_2);
+    let grazing = saturate((_e9 + (1f - r)));
+    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
+    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_3.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_3.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_3.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_3.x) * n_3.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_3.y) * n_3.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_3.z) * n_3.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_3.x) * n_3.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_5: f32) -> f32 {
+    let r_1 = saturate(roughness_5);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_6);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
+    let view = weft_frame.view;
+    let view3_ = mat3x3<f32>(view[0].xyz, view[1].xyz, view[2].xyz);
+    let _e17 = weft_safe_normalize((view3_ * world_normal), vec3<f32>(0f, 0f, 1f));
+    let p_vs = (view * vec4<f32>(world_position_1, 1f)).xyz;
+    let _e26 = weft_safe_normalize(p_vs, vec3<f32>(0f, 0f, -1f));
+    return reflect(_e26, _e17);
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_4);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
+}
+
+fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+}
+
+fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var visibility: f32;
+    var env_brdf: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
+    var color: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_7 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e36));
+    let _e42 = material.specular_strength;
+    let specular_strength = max(_e42, 0f);
+    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
+    n = _e52;
+    {
+        let _e54 = n;
+        let _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
+        let _e59 = textureSample(normal_map, material_sampler, _e5);
+        let texel_1 = _e59.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_unpack_normal(texel_1, _e63);
+        let _e65 = weft_normal_from_tangent_space(_e56, _e64);
+        n = _e65;
+    }
+    let _e66 = weft_main_light_direction();
+    let _e68 = n;
+    let _e69 = weft_safe_normalize((_e66 + _e50), _e68);
+    let _e70 = n;
+    let _e72 = weft_clamp_cos(dot(_e70, _e50));
+    let _e73 = n;
+    let n_dot_l_1 = saturate(dot(_e73, _e66));
+    let _e76 = n;
+    let n_dot_h = saturate(dot(_e76, _e69));
+    let v_dot_h_1 = saturate(dot(_e50, _e69));
+    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
+    {
+        {
+            let _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
+            visibility = _e91;
+            let _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
+            env_brdf = _e92;
+            let _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
+            ambient_kd = (vec3(1f) - _e95);
+            let _e99 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = (vec3(1f) - _e99);
+        }
+    }
+    if (specular_strength > 0f) {
+        let _e109 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e110 = n;
+        let _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
+        let _e112 = visibility;
+        specular = (((_e111 * _e112) * _e109) * specular_strength);
+        let _e117 = n;
+        let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
+        let _e120 = env_brdf;
+        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+    }
+    let _e124 = direct_kd;
+    let _e125 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e124 * _e125);
+    let _e127 = specular;
+    let _e129 = weft_main_light_radiance();
+    let direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
+    let _e132 = n;
+    let _e133 = weft_sh_irradiance(_e132);
+    let _e135 = ambient_kd;
+    let indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
+    let _e138 = indirect_specular;
+    color = ((direct + _e138) + indirect_diffuse);
+    {
+        let _e142 = n;
+        let _e144 = weft_sphere_map_direction(_e142, in_1.world_position);
+        let _e147 = textureSample(sphere_map, material_clamp_sampler, _e144);
+        let sph = max(_e147.xyz, vec3(0f));
+        let _e152 = color;
+        let _e155 = material.sphere_strength;
+        color = (_e152 + (sph * _e155));
+    }
+    let _e158 = color;
+    let radiance = clamp(_e158, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}
