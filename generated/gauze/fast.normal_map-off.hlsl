@@ -55,6 +55,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -68,6 +69,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -94,21 +97,10 @@ struct FragmentInput_fs_main {
     bool front_facing_1 : SV_IsFrontFace;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(float3 v)
-{
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c)
@@ -121,10 +113,10 @@ float weft_clamp_roughness(float roughness)
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v_1, float3 fallback)
+float3 weft_safe_normalize(float3 v, float3 fallback)
 {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n_1)
@@ -135,21 +127,10 @@ float3 weft_any_perpendicular(float3 n_1)
     return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_, float n_dot_v, float roughness_1)
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
 {
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness_1))).xxx, f0_);
-    return (f0_ + ((f90_ - f0_) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2)
-{
-    const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -157,14 +138,10 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_1, float n_dot_v_2, float roughness_3)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_3);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_1);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
-    return (lerp(f0_1, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -213,19 +190,26 @@ float3 weft_sh_irradiance(float3 n_2)
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_4)
+float weft_specular_mip(float roughness_1)
 {
-    float r_1 = saturate(roughness_4);
+    float r = saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
 {
-    const float _e4 = weft_specular_mip(roughness_5);
+    const float _e4 = weft_specular_mip(roughness_2);
     float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_2.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
+{
+    float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
@@ -246,9 +230,9 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame, float3 x_2)
+float3 weft_aniso_to_frame(float3x3 frame, float3 x_1)
 {
-    return float3(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+    return float3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
 float3x3 weft_rotate_tangent_frame_cs(float3x3 frame_1, float c_1, float s)
@@ -268,38 +252,57 @@ float3x3 weft_rotate_tangent_frame(float3x3 frame_2, float angle)
     return _e4;
 }
 
-float2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy)
+float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
 {
-    const float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = (_e2 * _e2);
-    float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(float2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), (0.001).xx);
+    const float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    return max(float2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), (0.001).xx);
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
 {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
 {
-    const float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d = (1.0 / ((WEFT_PI * _e5) * _e5));
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    const float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_2, float anisotropy_1, float roughness_7)
+float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(float3 v_2, float3 l_1, float alpha_t_3, float alpha_b_3)
+{
+    const float3 _e9 = weft_safe_normalize((v_2 + l_1), float3(0.0, 0.0, 1.0));
+    const float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * saturate(l_1.z));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_3, float anisotropy_1, float roughness_5)
+{
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
     float3 n_4 = frame_3[2];
-    float3 dir_1 = ((k_2 >= 0.0) ? frame_3[1] : frame_3[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
+    float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
     const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
@@ -349,6 +352,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 diffuse_kd = (float3)0;
     float3 ambient_kd = (float3)0;
+    float lobe = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -358,7 +362,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 base = saturate(base_rgba.xyz);
     float base_alpha = saturate(base_rgba.w);
     float _e20 = material.roughness;
-    float roughness_8 = saturate(_e20);
+    float roughness_6 = saturate(_e20);
     float _e24 = material.anisotropy;
     float anisotropy_2 = clamp(_e24, -1.0, 1.0);
     float _e31 = material.sampling_density;
@@ -403,42 +407,46 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e146 = n;
     const float _e148 = weft_clamp_cos(dot(_e146, _e59));
     float3 _e149 = n;
-    float n_dot_l_1 = saturate(dot(_e149, _e142));
-    float v_dot_h = saturate(dot(_e59, _e145));
-    const float2 _e154 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    float n_dot_l = saturate(dot(_e149, _e142));
+    float v_dot_h_1 = saturate(dot(_e59, _e145));
+    const float2 _e154 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
     const float3 _e155 = weft_main_light_radiance();
     float4 _e158 = material.scatter_color;
     float3 scatter = max(_e158.xyz, (0.0).xxx);
     float3 tint = saturate(scatter);
     float3 f0_2 = (0.04).xxx;
     {
-        const float3x3 _e171 = weft_rotate_tangent_frame(_e69, (rot * above_hard));
-        const float3 _e172 = weft_aniso_to_frame(_e171, _e145);
-        const float _e178 = weft_d_ggx_aniso_unnormalized(_e172.x, _e172.y, _e172.z, _e154.x, _e154.y);
-        const float _e179 = weft_v_schlick_ggx(_e148, n_dot_l_1, roughness_8);
-        float _e182 = material.anisotropic_intensity;
-        float _e187 = material.scatter_intensity;
-        float gain = (max(_e182, 0.0) * max(_e187, 0.0));
-        spec_direct = ((((((_e178 * _e179) * n_dot_l_1) * gain) * noise_) * scatter) * _e155);
-        diffuse_kd = (1.0).xxx;
-        const float3 _e199 = weft_env_brdf_approx(f0_2, _e148, roughness_8);
-        env_brdf = _e199;
-        const float3 _e202 = weft_f_schlick_roughness(f0_2, _e148, roughness_8);
-        ambient_kd = ((1.0).xxx - _e202);
+        {
+            const float3x3 _e172 = weft_rotate_tangent_frame(_e69, (rot * above_aa));
+            const float3 _e173 = weft_aniso_to_frame(_e172, _e59);
+            const float3 _e174 = weft_aniso_to_frame(_e172, _e142);
+            const float _e177 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
+            lobe = _e177;
+        }
+        const float3 _e178 = weft_f_schlick(f0_2, v_dot_h_1);
+        float _e179 = lobe;
+        spec_direct = ((((_e179 * _e178) * tint) * noise_) * _e155);
+        const float3 _e186 = weft_f_schlick(f0_2, _e148);
+        diffuse_kd = ((1.0).xxx - (tint * _e186));
+        const float2 _e189 = weft_env_brdf_lut(_e148, roughness_6);
+        const float3 _e190 = weft_env_brdf_from_lut(f0_2, _e189);
+        env_brdf = (_e190 * tint);
+        float3 _e194 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e194), (0.0).xxx);
     }
-    float3 _e204 = diffuse_kd;
-    const float3 _e205 = weft_diffuse_lambert(base);
-    float3 diffuse_direct = (((_e204 * _e205) * _e155) * n_dot_l_1);
-    float3 _e209 = n;
-    const float3 _e210 = weft_sh_irradiance(_e209);
-    float3 _e211 = ambient_kd;
-    float3 diffuse_indirect = ((_e210 * _e211) * base);
-    const float3 _e214 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_8);
-    const float3 _e217 = weft_prefiltered_radiance(reflect(-(_e59), _e214), roughness_8);
-    float3 _e218 = env_brdf;
-    float3 spec_indirect = ((_e217 * _e218) * noise_);
-    float3 _e223 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e223 + spec_indirect)));
+    float3 _e199 = diffuse_kd;
+    const float3 _e200 = weft_diffuse_lambert(base);
+    float3 diffuse_direct = (((_e199 * _e200) * _e155) * n_dot_l);
+    float3 _e204 = n;
+    const float3 _e205 = weft_sh_irradiance(_e204);
+    float3 _e206 = ambient_kd;
+    float3 diffuse_indirect = ((_e205 * _e206) * base);
+    const float3 _e209 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
+    const float3 _e212 = weft_prefiltered_radiance(reflect(-(_e59), _e209), roughness_6);
+    float3 _e213 = env_brdf;
+    float3 spec_indirect = ((_e212 * _e213) * noise_);
+    float3 _e218 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e218 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

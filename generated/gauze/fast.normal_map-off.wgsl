@@ -50,6 +50,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -63,6 +64,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -78,18 +83,9 @@ var noise_map: texture_2d<f32>;
 @group(1) @binding(7) 
 var pattern_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -100,9 +96,9 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
@@ -112,32 +108,18 @@ fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
-fn weft_f_schlick_roughness(f0_: vec3<f32>, n_dot_v: f32, roughness_1: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_1))), f0_);
-    return (f0_ + ((f90_ - f0_) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_2);
-    let a_1 = (_e3 * _e3);
-    let k = (((a_1 + 1f) * (a_1 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_1: vec3<f32>, n_dot_v_2: f32, roughness_3: f32) -> vec3<f32> {
-    let r = saturate(roughness_3);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_1);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_1, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -182,17 +164,23 @@ fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_4: f32) -> f32 {
-    let r_1 = saturate(roughness_4);
+fn weft_specular_mip(roughness_1: f32) -> f32 {
+    let r = saturate(roughness_1);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_5);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_2);
     let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_2.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -211,8 +199,8 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_aniso_to_frame(frame: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
 fn weft_rotate_tangent_frame_cs(frame_1: mat3x3<f32>, c_1: f32, s: f32) -> mat3x3<f32> {
@@ -230,34 +218,51 @@ fn weft_rotate_tangent_frame(frame_2: mat3x3<f32>, angle: f32) -> mat3x3<f32> {
     return _e4;
 }
 
-fn weft_aniso_alpha_kulla(roughness_6: f32, anisotropy: f32) -> vec2<f32> {
-    let _e2 = weft_clamp_roughness(roughness_6);
-    let a_2 = (_e2 * _e2);
-    let k_1 = clamp(anisotropy, -1f, 1f);
-    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
+fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_4);
+    let a_1 = (_e2 * _e2);
+    let k = clamp(anisotropy, -1f, 1f);
+    return max(vec2<f32>((a_1 * (1f + k)), (a_1 * (1f - k))), vec2(0.001f));
 }
 
 fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
     let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    let x_3 = (t_dot_h / at);
+    let x_2 = (t_dot_h / at);
     let y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
 }
 
-fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
-    let _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    let d = (1f / ((WEFT_PI * _e5) * _e5));
+fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
+    let at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    let ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    let _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    let d = (1f / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
-    let k_2 = clamp(anisotropy_1, -1f, 1f);
+fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_1.z);
+    let _e7 = weft_clamp_cos(l.z);
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_spec_ggx_aniso(v_2: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_2 + l_1), vec3<f32>(0f, 0f, 1f));
+    let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * saturate(l_1.z));
+}
+
+fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+    let k_1 = clamp(anisotropy_1, -1f, 1f);
     let n_4 = frame_3[2];
-    let dir_1 = select(frame_3[0], frame_3[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let dir_1 = select(frame_3[0], frame_3[1], (k_1 >= 0f));
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
-    let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
+    let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
     let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
@@ -302,6 +307,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var env_brdf: vec3<f32>;
     var diffuse_kd: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var lobe: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -311,7 +317,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let base = saturate(base_rgba.xyz);
     let base_alpha = saturate(base_rgba.w);
     let _e20 = material.roughness;
-    let roughness_8 = saturate(_e20);
+    let roughness_6 = saturate(_e20);
     let _e24 = material.anisotropy;
     let anisotropy_2 = clamp(_e24, -1f, 1f);
     let _e31 = material.sampling_density;
@@ -356,42 +362,46 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let _e146 = n;
     let _e148 = weft_clamp_cos(dot(_e146, _e59));
     let _e149 = n;
-    let n_dot_l_1 = saturate(dot(_e149, _e142));
-    let v_dot_h = saturate(dot(_e59, _e145));
-    let _e154 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    let n_dot_l = saturate(dot(_e149, _e142));
+    let v_dot_h_1 = saturate(dot(_e59, _e145));
+    let _e154 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
     let _e155 = weft_main_light_radiance();
     let _e158 = material.scatter_color;
     let scatter = max(_e158.xyz, vec3(0f));
     let tint = saturate(scatter);
     let f0_2 = vec3(0.04f);
     {
-        let _e171 = weft_rotate_tangent_frame(_e69, (rot * above_hard));
-        let _e172 = weft_aniso_to_frame(_e171, _e145);
-        let _e178 = weft_d_ggx_aniso_unnormalized(_e172.x, _e172.y, _e172.z, _e154.x, _e154.y);
-        let _e179 = weft_v_schlick_ggx(_e148, n_dot_l_1, roughness_8);
-        let _e182 = material.anisotropic_intensity;
-        let _e187 = material.scatter_intensity;
-        let gain = (max(_e182, 0f) * max(_e187, 0f));
-        spec_direct = ((((((_e178 * _e179) * n_dot_l_1) * gain) * noise) * scatter) * _e155);
-        diffuse_kd = vec3(1f);
-        let _e199 = weft_env_brdf_approx(f0_2, _e148, roughness_8);
-        env_brdf = _e199;
-        let _e202 = weft_f_schlick_roughness(f0_2, _e148, roughness_8);
-        ambient_kd = (vec3(1f) - _e202);
+        {
+            let _e172 = weft_rotate_tangent_frame(_e69, (rot * above_aa));
+            let _e173 = weft_aniso_to_frame(_e172, _e59);
+            let _e174 = weft_aniso_to_frame(_e172, _e142);
+            let _e177 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
+            lobe = _e177;
+        }
+        let _e178 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e179 = lobe;
+        spec_direct = ((((_e179 * _e178) * tint) * noise) * _e155);
+        let _e186 = weft_f_schlick(f0_2, _e148);
+        diffuse_kd = (vec3(1f) - (tint * _e186));
+        let _e189 = weft_env_brdf_lut(_e148, roughness_6);
+        let _e190 = weft_env_brdf_from_lut(f0_2, _e189);
+        env_brdf = (_e190 * tint);
+        let _e194 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e194), vec3(0f));
     }
-    let _e204 = diffuse_kd;
-    let _e205 = weft_diffuse_lambert(base);
-    let diffuse_direct = (((_e204 * _e205) * _e155) * n_dot_l_1);
-    let _e209 = n;
-    let _e210 = weft_sh_irradiance(_e209);
-    let _e211 = ambient_kd;
-    let diffuse_indirect = ((_e210 * _e211) * base);
-    let _e214 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_8);
-    let _e217 = weft_prefiltered_radiance(reflect(-(_e59), _e214), roughness_8);
-    let _e218 = env_brdf;
-    let spec_indirect = ((_e217 * _e218) * noise);
-    let _e223 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e223 + spec_indirect)));
+    let _e199 = diffuse_kd;
+    let _e200 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e199 * _e200) * _e155) * n_dot_l);
+    let _e204 = n;
+    let _e205 = weft_sh_irradiance(_e204);
+    let _e206 = ambient_kd;
+    let diffuse_indirect = ((_e205 * _e206) * base);
+    let _e209 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
+    let _e212 = weft_prefiltered_radiance(reflect(-(_e59), _e209), roughness_6);
+    let _e213 = env_brdf;
+    let spec_indirect = ((_e212 * _e213) * noise);
+    let _e218 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e218 + spec_indirect)));
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

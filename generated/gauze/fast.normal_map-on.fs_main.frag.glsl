@@ -46,6 +46,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -57,17 +58,19 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
-layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
 
-layout(binding = 4) uniform sampler2D _group_1_binding_6_fs;
+layout(binding = 5) uniform sampler2D _group_1_binding_6_fs;
 
-layout(binding = 5) uniform sampler2D _group_1_binding_7_fs;
+layout(binding = 6) uniform sampler2D _group_1_binding_7_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -75,18 +78,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -97,9 +91,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
@@ -109,32 +103,18 @@ vec3 weft_any_perpendicular(vec3 n_1) {
     return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_, float n_dot_v, float roughness_1) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_);
-    return (f0_ + ((f90_ - f0_) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_1, float n_dot_v_2, float roughness_3) {
-    float r = clamp(roughness_3, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_1);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_1, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -178,17 +158,23 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_4) {
-    float r_1 = clamp(roughness_4, 0.0, 1.0);
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
-    float _e4 = weft_specular_mip(roughness_5);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
+    float _e4 = weft_specular_mip(roughness_2);
     vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_2.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
+    vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
@@ -204,8 +190,8 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -217,8 +203,8 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
 mat3x3 weft_rotate_tangent_frame_cs(mat3x3 frame_2, float c_1, float s) {
@@ -236,34 +222,51 @@ mat3x3 weft_rotate_tangent_frame(mat3x3 frame_3, float angle) {
     return _e4;
 }
 
-vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = (_e2 * _e2);
-    float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
+vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    return max(vec2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), vec2(0.001));
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
-    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d = (1.0 / ((WEFT_PI * _e5) * _e5));
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_2, float anisotropy_1, float roughness_7) {
-    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+    float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_3, float anisotropy_1, float roughness_5) {
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
     vec3 n_4 = frame_4[2];
-    vec3 dir_1 = ((k_2 >= 0.0) ? frame_4[1] : frame_4[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 dir_1 = ((k_1 >= 0.0) ? frame_4[1] : frame_4[0]);
+    vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
@@ -286,6 +289,7 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 diffuse_kd = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
+    float lobe = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -294,7 +298,7 @@ void main() {
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
     float base_alpha = clamp(base_rgba.w, 0.0, 1.0);
     float _e20 = _group_1_binding_0_fs.roughness;
-    float roughness_8 = clamp(_e20, 0.0, 1.0);
+    float roughness_6 = clamp(_e20, 0.0, 1.0);
     float _e24 = _group_1_binding_0_fs.anisotropy;
     float anisotropy_2 = clamp(_e24, -1.0, 1.0);
     float _e31 = _group_1_binding_0_fs.sampling_density;
@@ -350,42 +354,46 @@ void main() {
     vec3 _e162 = n;
     float _e164 = weft_clamp_cos(dot(_e162, _e59));
     vec3 _e165 = n;
-    float n_dot_l_1 = clamp(dot(_e165, _e158), 0.0, 1.0);
-    float v_dot_h = clamp(dot(_e59, _e161), 0.0, 1.0);
-    vec2 _e170 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    float n_dot_l = clamp(dot(_e165, _e158), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e59, _e161), 0.0, 1.0);
+    vec2 _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
     vec3 _e171 = weft_main_light_radiance();
     vec4 _e174 = _group_1_binding_0_fs.scatter_color;
     vec3 scatter = max(_e174.xyz, vec3(0.0));
     vec3 tint = clamp(scatter, vec3(0.0), vec3(1.0));
     vec3 f0_2 = vec3(0.04);
     {
-        mat3x3 _e187 = weft_rotate_tangent_frame(_e85, (rot * above_hard));
-        vec3 _e188 = weft_aniso_to_frame(_e187, _e161);
-        float _e194 = weft_d_ggx_aniso_unnormalized(_e188.x, _e188.y, _e188.z, _e170.x, _e170.y);
-        float _e195 = weft_v_schlick_ggx(_e164, n_dot_l_1, roughness_8);
-        float _e198 = _group_1_binding_0_fs.anisotropic_intensity;
-        float _e203 = _group_1_binding_0_fs.scatter_intensity;
-        float gain = (max(_e198, 0.0) * max(_e203, 0.0));
-        spec_direct = ((((((_e194 * _e195) * n_dot_l_1) * gain) * noise) * scatter) * _e171);
-        diffuse_kd = vec3(1.0);
-        vec3 _e215 = weft_env_brdf_approx(f0_2, _e164, roughness_8);
-        env_brdf = _e215;
-        vec3 _e218 = weft_f_schlick_roughness(f0_2, _e164, roughness_8);
-        ambient_kd = (vec3(1.0) - _e218);
+        {
+            mat3x3 _e188 = weft_rotate_tangent_frame(_e85, (rot * above_aa));
+            vec3 _e189 = weft_aniso_to_frame(_e188, _e59);
+            vec3 _e190 = weft_aniso_to_frame(_e188, _e158);
+            float _e193 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
+            lobe = _e193;
+        }
+        vec3 _e194 = weft_f_schlick(f0_2, v_dot_h_1);
+        float _e195 = lobe;
+        spec_direct = ((((_e195 * _e194) * tint) * noise) * _e171);
+        vec3 _e202 = weft_f_schlick(f0_2, _e164);
+        diffuse_kd = (vec3(1.0) - (tint * _e202));
+        vec2 _e205 = weft_env_brdf_lut(_e164, roughness_6);
+        vec3 _e206 = weft_env_brdf_from_lut(f0_2, _e205);
+        env_brdf = (_e206 * tint);
+        vec3 _e210 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e210), vec3(0.0));
     }
-    vec3 _e220 = diffuse_kd;
-    vec3 _e221 = weft_diffuse_lambert(base);
-    vec3 diffuse_direct = (((_e220 * _e221) * _e171) * n_dot_l_1);
-    vec3 _e225 = n;
-    vec3 _e226 = weft_sh_irradiance(_e225);
-    vec3 _e227 = ambient_kd;
-    vec3 diffuse_indirect = ((_e226 * _e227) * base);
-    vec3 _e230 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_8);
-    vec3 _e233 = weft_prefiltered_radiance(reflect(-(_e59), _e230), roughness_8);
-    vec3 _e234 = env_brdf;
-    vec3 spec_indirect = ((_e233 * _e234) * noise);
-    vec3 _e239 = spec_direct;
-    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e239 + spec_indirect)));
+    vec3 _e215 = diffuse_kd;
+    vec3 _e216 = weft_diffuse_lambert(base);
+    vec3 diffuse_direct = (((_e215 * _e216) * _e171) * n_dot_l);
+    vec3 _e220 = n;
+    vec3 _e221 = weft_sh_irradiance(_e220);
+    vec3 _e222 = ambient_kd;
+    vec3 diffuse_indirect = ((_e221 * _e222) * base);
+    vec3 _e225 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
+    vec3 _e228 = weft_prefiltered_radiance(reflect(-(_e59), _e225), roughness_6);
+    vec3 _e229 = env_brdf;
+    vec3 spec_indirect = ((_e228 * _e229) * noise);
+    vec3 _e234 = spec_direct;
+    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e234 + spec_indirect)));
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

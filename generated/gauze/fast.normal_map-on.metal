@@ -58,6 +58,7 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -65,24 +66,11 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -98,11 +86,11 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
@@ -114,27 +102,12 @@ metal::float3 weft_any_perpendicular(
     return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a), s_1 * b, -(s_1) * n_1.x);
 }
 
-metal::float3 weft_f_schlick_roughness(
+metal::float3 weft_f_schlick(
     metal::float3 f0_,
-    float n_dot_v,
-    float roughness_1
+    float v_dot_h
 ) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_1)), f0_);
-    return f0_ + ((f90_ - f0_) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_2
-) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = _e3 * _e3;
-    float k = ((a_1 + 1.0) * (a_1 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -143,17 +116,12 @@ metal::float3 weft_diffuse_lambert(
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
+metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    float n_dot_v_2,
-    float roughness_3
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_3);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_1);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_1, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -209,25 +177,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_4,
+    float roughness_1,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_4);
+    float r = metal::saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_5,
+    float roughness_2,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_5, weft_frame);
+    float _e4 = weft_specular_mip(roughness_2, weft_frame);
     metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_2.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v,
+    float roughness_3,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -249,8 +228,8 @@ metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -270,9 +249,9 @@ metal::float2 weft_transform_uv(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame_1,
-    metal::float3 x_2
+    metal::float3 x_1
 ) {
-    return metal::float3(metal::dot(frame_1[0], x_2), metal::dot(frame_1[1], x_2), metal::dot(frame_1[2], x_2));
+    return metal::float3(metal::dot(frame_1[0], x_1), metal::dot(frame_1[1], x_1), metal::dot(frame_1[2], x_1));
 }
 
 metal::float3x3 weft_rotate_tangent_frame_cs(
@@ -298,13 +277,13 @@ metal::float3x3 weft_rotate_tangent_frame(
 }
 
 metal::float2 weft_aniso_alpha_kulla(
-    float roughness_6,
+    float roughness_4,
     float anisotropy
 ) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = _e2 * _e2;
-    float k_1 = metal::clamp(anisotropy, -1.0, 1.0);
-    return metal::max(metal::float2(a_2 * (1.0 + k_1), a_2 * (1.0 - k_1)), metal::float2(0.001));
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = _e2 * _e2;
+    float k = metal::clamp(anisotropy, -1.0, 1.0);
+    return metal::max(metal::float2(a_1 * (1.0 + k), a_1 * (1.0 - k)), metal::float2(0.001));
 }
 
 float weft_aniso_ggx_q(
@@ -316,35 +295,62 @@ float weft_aniso_ggx_q(
 ) {
     float at = metal::max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = metal::max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = t_dot_h / at;
+    float x_2 = t_dot_h / at;
     float y = b_dot_h / ab;
-    return metal::max(((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
+    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
 }
 
-float weft_d_ggx_aniso_unnormalized(
+float weft_d_ggx_aniso(
     float t_dot_h_1,
     float b_dot_h_1,
     float n_dot_h_1,
     float alpha_t_1,
     float alpha_b_1
 ) {
-    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d = 1.0 / ((WEFT_PI * _e5) * _e5);
+    float at_1 = metal::max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = metal::max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = 1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9);
     return (n_dot_h_1 > 0.0) ? d : 0.0;
+}
+
+float weft_v_smith_ggx_aniso_correlated(
+    metal::float3 v_1,
+    metal::float3 l,
+    float alpha_t_2,
+    float alpha_b_2
+) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
+    return 0.5 / (lv + ll);
+}
+
+float weft_spec_ggx_aniso(
+    metal::float3 v_2,
+    metal::float3 l_1,
+    float alpha_t_3,
+    float alpha_b_3
+) {
+    metal::float3 _e9 = weft_safe_normalize(v_2 + l_1, metal::float3(0.0, 0.0, 1.0));
+    float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_4,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
-    float roughness_7
+    float roughness_5
 ) {
-    float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
+    float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
     metal::float3 n_4 = frame_4[2];
-    metal::float3 dir_1 = (k_2 >= 0.0) ? frame_4[1] : frame_4[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 dir_1 = (k_1 >= 0.0) ? frame_4[1] : frame_4[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
-    float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_7));
+    float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
     metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
@@ -420,13 +426,15 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> normal_map [[texture(2)]]
-, metal::texture2d<float, metal::access::sample> mesh_map [[texture(3)]]
-, metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
-, metal::texture2d<float, metal::access::sample> pattern_map [[texture(5)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> mesh_map [[texture(4)]]
+, metal::texture2d<float, metal::access::sample> noise_map [[texture(5)]]
+, metal::texture2d<float, metal::access::sample> pattern_map [[texture(6)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -434,6 +442,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 diffuse_kd = {};
     metal::float3 ambient_kd = {};
+    float lobe = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -442,7 +451,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float base_alpha = metal::saturate(base_rgba.w);
     float _e20 = material.roughness;
-    float roughness_8 = metal::saturate(_e20);
+    float roughness_6 = metal::saturate(_e20);
     float _e24 = material.anisotropy;
     float anisotropy_2 = metal::clamp(_e24, -1.0, 1.0);
     float _e31 = material.sampling_density;
@@ -498,42 +507,46 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e162 = n;
     float _e164 = weft_clamp_cos(metal::dot(_e162, _e59));
     metal::float3 _e165 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e165, _e158));
-    float v_dot_h = metal::saturate(metal::dot(_e59, _e161));
-    metal::float2 _e170 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    float n_dot_l = metal::saturate(metal::dot(_e165, _e158));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e59, _e161));
+    metal::float2 _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
     metal::float3 _e171 = weft_main_light_radiance(weft_frame);
     metal::float4 _e174 = material.scatter_color;
     metal::float3 scatter = metal::max(_e174.xyz, metal::float3(0.0));
     metal::float3 tint = metal::saturate(scatter);
     metal::float3 f0_2 = metal::float3(0.04);
     {
-        metal::float3x3 _e187 = weft_rotate_tangent_frame(_e85, rot * above_hard);
-        metal::float3 _e188 = weft_aniso_to_frame(_e187, _e161);
-        float _e194 = weft_d_ggx_aniso_unnormalized(_e188.x, _e188.y, _e188.z, _e170.x, _e170.y);
-        float _e195 = weft_v_schlick_ggx(_e164, n_dot_l_1, roughness_8);
-        float _e198 = material.anisotropic_intensity;
-        float _e203 = material.scatter_intensity;
-        float gain = metal::max(_e198, 0.0) * metal::max(_e203, 0.0);
-        spec_direct = (((((_e194 * _e195) * n_dot_l_1) * gain) * noise) * scatter) * _e171;
-        diffuse_kd = metal::float3(1.0);
-        metal::float3 _e215 = weft_env_brdf_approx(f0_2, _e164, roughness_8);
-        env_brdf = _e215;
-        metal::float3 _e218 = weft_f_schlick_roughness(f0_2, _e164, roughness_8);
-        ambient_kd = metal::float3(1.0) - _e218;
+        {
+            metal::float3x3 _e188 = weft_rotate_tangent_frame(_e85, rot * above_aa);
+            metal::float3 _e189 = weft_aniso_to_frame(_e188, _e59);
+            metal::float3 _e190 = weft_aniso_to_frame(_e188, _e158);
+            float _e193 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
+            lobe = _e193;
+        }
+        metal::float3 _e194 = weft_f_schlick(f0_2, v_dot_h_1);
+        float _e195 = lobe;
+        spec_direct = (((_e195 * _e194) * tint) * noise) * _e171;
+        metal::float3 _e202 = weft_f_schlick(f0_2, _e164);
+        diffuse_kd = metal::float3(1.0) - (tint * _e202);
+        metal::float2 _e205 = weft_env_brdf_lut(_e164, roughness_6, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e206 = weft_env_brdf_from_lut(f0_2, _e205);
+        env_brdf = _e206 * tint;
+        metal::float3 _e210 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e210, metal::float3(0.0));
     }
-    metal::float3 _e220 = diffuse_kd;
-    metal::float3 _e221 = weft_diffuse_lambert(base);
-    metal::float3 diffuse_direct = ((_e220 * _e221) * _e171) * n_dot_l_1;
-    metal::float3 _e225 = n;
-    metal::float3 _e226 = weft_sh_irradiance(_e225, weft_frame);
-    metal::float3 _e227 = ambient_kd;
-    metal::float3 diffuse_indirect = (_e226 * _e227) * base;
-    metal::float3 _e230 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_8);
-    metal::float3 _e233 = weft_prefiltered_radiance(metal::reflect(-(_e59), _e230), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e234 = env_brdf;
-    metal::float3 spec_indirect = (_e233 * _e234) * noise;
-    metal::float3 _e239 = spec_direct;
-    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e239 + spec_indirect));
+    metal::float3 _e215 = diffuse_kd;
+    metal::float3 _e216 = weft_diffuse_lambert(base);
+    metal::float3 diffuse_direct = ((_e215 * _e216) * _e171) * n_dot_l;
+    metal::float3 _e220 = n;
+    metal::float3 _e221 = weft_sh_irradiance(_e220, weft_frame);
+    metal::float3 _e222 = ambient_kd;
+    metal::float3 diffuse_indirect = (_e221 * _e222) * base;
+    metal::float3 _e225 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
+    metal::float3 _e228 = weft_prefiltered_radiance(metal::reflect(-(_e59), _e225), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e229 = env_brdf;
+    metal::float3 spec_indirect = (_e228 * _e229) * noise;
+    metal::float3 _e234 = spec_direct;
+    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e234 + spec_indirect));
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -55,6 +55,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -351,6 +352,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 diffuse_kd = (float3)0;
     float3 ambient_kd = (float3)0;
+    float lobe = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -414,36 +416,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 tint = saturate(scatter);
     float3 f0_2 = (0.04).xxx;
     {
-        const float3 _e170 = weft_aniso_to_frame(_e69, _e59);
-        const float3 _e171 = weft_aniso_to_frame(_e69, _e142);
-        const float3 _e172 = weft_aniso_to_frame(_e124, _e59);
-        const float3 _e173 = weft_aniso_to_frame(_e124, _e142);
-        const float _e176 = weft_spec_ggx_aniso(_e170, _e171, _e154.x, _e154.y);
-        const float _e179 = weft_spec_ggx_aniso(_e172, _e173, _e154.x, _e154.y);
-        float lobe = lerp(_e176, _e179, above_aa);
-        const float3 _e181 = weft_f_schlick(f0_2, v_dot_h_1);
-        spec_direct = ((((lobe * _e181) * tint) * noise_) * _e155);
-        const float3 _e188 = weft_f_schlick(f0_2, _e148);
-        diffuse_kd = ((1.0).xxx - (tint * _e188));
-        const float2 _e191 = weft_env_brdf_lut(_e148, roughness_6);
-        const float3 _e192 = weft_env_brdf_from_lut(f0_2, _e191);
-        env_brdf = (_e192 * tint);
-        float3 _e196 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e196), (0.0).xxx);
+        {
+            const float3 _e171 = weft_aniso_to_frame(_e69, _e59);
+            const float3 _e172 = weft_aniso_to_frame(_e69, _e142);
+            const float3 _e173 = weft_aniso_to_frame(_e124, _e59);
+            const float3 _e174 = weft_aniso_to_frame(_e124, _e142);
+            const float _e177 = weft_spec_ggx_aniso(_e171, _e172, _e154.x, _e154.y);
+            const float _e180 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
+            lobe = lerp(_e177, _e180, above_aa);
+        }
+        const float3 _e182 = weft_f_schlick(f0_2, v_dot_h_1);
+        float _e183 = lobe;
+        spec_direct = ((((_e183 * _e182) * tint) * noise_) * _e155);
+        const float3 _e190 = weft_f_schlick(f0_2, _e148);
+        diffuse_kd = ((1.0).xxx - (tint * _e190));
+        const float2 _e193 = weft_env_brdf_lut(_e148, roughness_6);
+        const float3 _e194 = weft_env_brdf_from_lut(f0_2, _e193);
+        env_brdf = (_e194 * tint);
+        float3 _e198 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e198), (0.0).xxx);
     }
-    float3 _e201 = diffuse_kd;
-    const float3 _e202 = weft_diffuse_lambert(base);
-    float3 diffuse_direct = (((_e201 * _e202) * _e155) * n_dot_l);
-    float3 _e206 = n;
-    const float3 _e207 = weft_sh_irradiance(_e206);
-    float3 _e208 = ambient_kd;
-    float3 diffuse_indirect = ((_e207 * _e208) * base);
-    const float3 _e211 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
-    const float3 _e214 = weft_prefiltered_radiance(reflect(-(_e59), _e211), roughness_6);
-    float3 _e215 = env_brdf;
-    float3 spec_indirect = ((_e214 * _e215) * noise_);
-    float3 _e220 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e220 + spec_indirect)));
+    float3 _e203 = diffuse_kd;
+    const float3 _e204 = weft_diffuse_lambert(base);
+    float3 diffuse_direct = (((_e203 * _e204) * _e155) * n_dot_l);
+    float3 _e208 = n;
+    const float3 _e209 = weft_sh_irradiance(_e208);
+    float3 _e210 = ambient_kd;
+    float3 diffuse_indirect = ((_e209 * _e210) * base);
+    const float3 _e213 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
+    const float3 _e216 = weft_prefiltered_radiance(reflect(-(_e59), _e213), roughness_6);
+    float3 _e217 = env_brdf;
+    float3 spec_indirect = ((_e216 * _e217) * noise_);
+    float3 _e222 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e222 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -50,6 +50,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -306,6 +307,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var env_brdf: vec3<f32>;
     var diffuse_kd: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var lobe: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -369,36 +371,39 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let tint = saturate(scatter);
     let f0_2 = vec3(0.04f);
     {
-        let _e170 = weft_aniso_to_frame(_e69, _e59);
-        let _e171 = weft_aniso_to_frame(_e69, _e142);
-        let _e172 = weft_aniso_to_frame(_e124, _e59);
-        let _e173 = weft_aniso_to_frame(_e124, _e142);
-        let _e176 = weft_spec_ggx_aniso(_e170, _e171, _e154.x, _e154.y);
-        let _e179 = weft_spec_ggx_aniso(_e172, _e173, _e154.x, _e154.y);
-        let lobe = mix(_e176, _e179, above_aa);
-        let _e181 = weft_f_schlick(f0_2, v_dot_h_1);
-        spec_direct = ((((lobe * _e181) * tint) * noise) * _e155);
-        let _e188 = weft_f_schlick(f0_2, _e148);
-        diffuse_kd = (vec3(1f) - (tint * _e188));
-        let _e191 = weft_env_brdf_lut(_e148, roughness_6);
-        let _e192 = weft_env_brdf_from_lut(f0_2, _e191);
-        env_brdf = (_e192 * tint);
-        let _e196 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e196), vec3(0f));
+        {
+            let _e171 = weft_aniso_to_frame(_e69, _e59);
+            let _e172 = weft_aniso_to_frame(_e69, _e142);
+            let _e173 = weft_aniso_to_frame(_e124, _e59);
+            let _e174 = weft_aniso_to_frame(_e124, _e142);
+            let _e177 = weft_spec_ggx_aniso(_e171, _e172, _e154.x, _e154.y);
+            let _e180 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
+            lobe = mix(_e177, _e180, above_aa);
+        }
+        let _e182 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e183 = lobe;
+        spec_direct = ((((_e183 * _e182) * tint) * noise) * _e155);
+        let _e190 = weft_f_schlick(f0_2, _e148);
+        diffuse_kd = (vec3(1f) - (tint * _e190));
+        let _e193 = weft_env_brdf_lut(_e148, roughness_6);
+        let _e194 = weft_env_brdf_from_lut(f0_2, _e193);
+        env_brdf = (_e194 * tint);
+        let _e198 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e198), vec3(0f));
     }
-    let _e201 = diffuse_kd;
-    let _e202 = weft_diffuse_lambert(base);
-    let diffuse_direct = (((_e201 * _e202) * _e155) * n_dot_l);
-    let _e206 = n;
-    let _e207 = weft_sh_irradiance(_e206);
-    let _e208 = ambient_kd;
-    let diffuse_indirect = ((_e207 * _e208) * base);
-    let _e211 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
-    let _e214 = weft_prefiltered_radiance(reflect(-(_e59), _e211), roughness_6);
-    let _e215 = env_brdf;
-    let spec_indirect = ((_e214 * _e215) * noise);
-    let _e220 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e220 + spec_indirect)));
+    let _e203 = diffuse_kd;
+    let _e204 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e203 * _e204) * _e155) * n_dot_l);
+    let _e208 = n;
+    let _e209 = weft_sh_irradiance(_e208);
+    let _e210 = ambient_kd;
+    let diffuse_indirect = ((_e209 * _e210) * base);
+    let _e213 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
+    let _e216 = weft_prefiltered_radiance(reflect(-(_e59), _e213), roughness_6);
+    let _e217 = env_brdf;
+    let spec_indirect = ((_e216 * _e217) * noise);
+    let _e222 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e222 + spec_indirect)));
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

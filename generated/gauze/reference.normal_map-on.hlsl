@@ -55,6 +55,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -364,6 +365,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 diffuse_kd = (float3)0;
     float3 ambient_kd = (float3)0;
+    float lobe = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -438,36 +440,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 tint = saturate(scatter);
     float3 f0_2 = (0.04).xxx;
     {
-        const float3 _e186 = weft_aniso_to_frame(_e85, _e59);
-        const float3 _e187 = weft_aniso_to_frame(_e85, _e158);
-        const float3 _e188 = weft_aniso_to_frame(_e140, _e59);
-        const float3 _e189 = weft_aniso_to_frame(_e140, _e158);
-        const float _e192 = weft_spec_ggx_aniso(_e186, _e187, _e170.x, _e170.y);
-        const float _e195 = weft_spec_ggx_aniso(_e188, _e189, _e170.x, _e170.y);
-        float lobe = lerp(_e192, _e195, above_aa);
-        const float3 _e197 = weft_f_schlick(f0_2, v_dot_h_1);
-        spec_direct = ((((lobe * _e197) * tint) * noise_) * _e171);
-        const float3 _e204 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = ((1.0).xxx - (tint * _e204));
-        const float2 _e207 = weft_env_brdf_lut(_e164, roughness_6);
-        const float3 _e208 = weft_env_brdf_from_lut(f0_2, _e207);
-        env_brdf = (_e208 * tint);
-        float3 _e212 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e212), (0.0).xxx);
+        {
+            const float3 _e187 = weft_aniso_to_frame(_e85, _e59);
+            const float3 _e188 = weft_aniso_to_frame(_e85, _e158);
+            const float3 _e189 = weft_aniso_to_frame(_e140, _e59);
+            const float3 _e190 = weft_aniso_to_frame(_e140, _e158);
+            const float _e193 = weft_spec_ggx_aniso(_e187, _e188, _e170.x, _e170.y);
+            const float _e196 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
+            lobe = lerp(_e193, _e196, above_aa);
+        }
+        const float3 _e198 = weft_f_schlick(f0_2, v_dot_h_1);
+        float _e199 = lobe;
+        spec_direct = ((((_e199 * _e198) * tint) * noise_) * _e171);
+        const float3 _e206 = weft_f_schlick(f0_2, _e164);
+        diffuse_kd = ((1.0).xxx - (tint * _e206));
+        const float2 _e209 = weft_env_brdf_lut(_e164, roughness_6);
+        const float3 _e210 = weft_env_brdf_from_lut(f0_2, _e209);
+        env_brdf = (_e210 * tint);
+        float3 _e214 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e214), (0.0).xxx);
     }
-    float3 _e217 = diffuse_kd;
-    const float3 _e218 = weft_diffuse_lambert(base);
-    float3 diffuse_direct = (((_e217 * _e218) * _e171) * n_dot_l);
-    float3 _e222 = n;
-    const float3 _e223 = weft_sh_irradiance(_e222);
-    float3 _e224 = ambient_kd;
-    float3 diffuse_indirect = ((_e223 * _e224) * base);
-    const float3 _e227 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    const float3 _e230 = weft_prefiltered_radiance(reflect(-(_e59), _e227), roughness_6);
-    float3 _e231 = env_brdf;
-    float3 spec_indirect = ((_e230 * _e231) * noise_);
-    float3 _e236 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e236 + spec_indirect)));
+    float3 _e219 = diffuse_kd;
+    const float3 _e220 = weft_diffuse_lambert(base);
+    float3 diffuse_direct = (((_e219 * _e220) * _e171) * n_dot_l);
+    float3 _e224 = n;
+    const float3 _e225 = weft_sh_irradiance(_e224);
+    float3 _e226 = ambient_kd;
+    float3 diffuse_indirect = ((_e225 * _e226) * base);
+    const float3 _e229 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
+    const float3 _e232 = weft_prefiltered_radiance(reflect(-(_e59), _e229), roughness_6);
+    float3 _e233 = env_brdf;
+    float3 spec_indirect = ((_e232 * _e233) * noise_);
+    float3 _e238 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e238 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -50,6 +50,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -318,6 +319,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var env_brdf: vec3<f32>;
     var diffuse_kd: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var lobe: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -392,36 +394,39 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let tint = saturate(scatter);
     let f0_2 = vec3(0.04f);
     {
-        let _e186 = weft_aniso_to_frame(_e85, _e59);
-        let _e187 = weft_aniso_to_frame(_e85, _e158);
-        let _e188 = weft_aniso_to_frame(_e140, _e59);
-        let _e189 = weft_aniso_to_frame(_e140, _e158);
-        let _e192 = weft_spec_ggx_aniso(_e186, _e187, _e170.x, _e170.y);
-        let _e195 = weft_spec_ggx_aniso(_e188, _e189, _e170.x, _e170.y);
-        let lobe = mix(_e192, _e195, above_aa);
-        let _e197 = weft_f_schlick(f0_2, v_dot_h_1);
-        spec_direct = ((((lobe * _e197) * tint) * noise) * _e171);
-        let _e204 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = (vec3(1f) - (tint * _e204));
-        let _e207 = weft_env_brdf_lut(_e164, roughness_6);
-        let _e208 = weft_env_brdf_from_lut(f0_2, _e207);
-        env_brdf = (_e208 * tint);
-        let _e212 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e212), vec3(0f));
+        {
+            let _e187 = weft_aniso_to_frame(_e85, _e59);
+            let _e188 = weft_aniso_to_frame(_e85, _e158);
+            let _e189 = weft_aniso_to_frame(_e140, _e59);
+            let _e190 = weft_aniso_to_frame(_e140, _e158);
+            let _e193 = weft_spec_ggx_aniso(_e187, _e188, _e170.x, _e170.y);
+            let _e196 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
+            lobe = mix(_e193, _e196, above_aa);
+        }
+        let _e198 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e199 = lobe;
+        spec_direct = ((((_e199 * _e198) * tint) * noise) * _e171);
+        let _e206 = weft_f_schlick(f0_2, _e164);
+        diffuse_kd = (vec3(1f) - (tint * _e206));
+        let _e209 = weft_env_brdf_lut(_e164, roughness_6);
+        let _e210 = weft_env_brdf_from_lut(f0_2, _e209);
+        env_brdf = (_e210 * tint);
+        let _e214 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e214), vec3(0f));
     }
-    let _e217 = diffuse_kd;
-    let _e218 = weft_diffuse_lambert(base);
-    let diffuse_direct = (((_e217 * _e218) * _e171) * n_dot_l);
-    let _e222 = n;
-    let _e223 = weft_sh_irradiance(_e222);
-    let _e224 = ambient_kd;
-    let diffuse_indirect = ((_e223 * _e224) * base);
-    let _e227 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    let _e230 = weft_prefiltered_radiance(reflect(-(_e59), _e227), roughness_6);
-    let _e231 = env_brdf;
-    let spec_indirect = ((_e230 * _e231) * noise);
-    let _e236 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e236 + spec_indirect)));
+    let _e219 = diffuse_kd;
+    let _e220 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e219 * _e220) * _e171) * n_dot_l);
+    let _e224 = n;
+    let _e225 = weft_sh_irradiance(_e224);
+    let _e226 = ambient_kd;
+    let diffuse_indirect = ((_e225 * _e226) * base);
+    let _e229 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
+    let _e232 = weft_prefiltered_radiance(reflect(-(_e59), _e229), roughness_6);
+    let _e233 = env_brdf;
+    let spec_indirect = ((_e232 * _e233) * noise);
+    let _e238 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e238 + spec_indirect)));
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -52,6 +52,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -64,6 +65,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -77,14 +82,9 @@ var rmo_map: texture_2d<f32>;
 @group(1) @binding(6) 
 var noise_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_max3_(v: vec3<f32>) -> f32 {
@@ -105,14 +105,10 @@ fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
-    let s = select(-1f, 1f, (n_1.z >= 0f));
-    let a_1 = (-1f / (s + n_1.z));
+    let s_1 = select(-1f, 1f, (n_1.z >= 0f));
+    let a_1 = (-1f / (s_1 + n_1.z));
     let b = ((n_1.x * n_1.y) * a_1);
-    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
-}
-
-fn weft_luminance(c_1: vec3<f32>) -> f32 {
-    return dot(c_1, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -120,32 +116,13 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_1: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_1))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_2);
-    let a_2 = (_e3 * _e3);
-    let k = (((a_2 + 1f) * (a_2 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
-}
-
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_3: f32) -> vec3<f32> {
-    let r = saturate(roughness_3);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -190,17 +167,23 @@ fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_4: f32) -> f32 {
-    let r_1 = saturate(roughness_4);
+fn weft_specular_mip(roughness_1: f32) -> f32 {
+    let r = saturate(roughness_1);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_5);
-    let c_3 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_3.xyz, vec3(0f));
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_2);
+    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -210,8 +193,8 @@ fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
-    let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
+    let s_2 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_3, t) * s_2);
     return mat3x3<f32>(t, b_1, n_3);
 }
 
@@ -219,55 +202,79 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_aniso_to_frame(frame: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-fn weft_aniso_alpha_kulla(roughness_6: f32, anisotropy: f32) -> vec2<f32> {
-    let _e2 = weft_clamp_roughness(roughness_6);
-    let a_3 = (_e2 * _e2);
+fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_4);
+    let a_2 = (_e2 * _e2);
     let k_1 = clamp(anisotropy, -1f, 1f);
-    return max(vec2<f32>((a_3 * (1f + k_1)), (a_3 * (1f - k_1))), vec2(0.001f));
+    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
 }
 
 fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
     let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    let x_3 = (t_dot_h / at);
+    let x_2 = (t_dot_h / at);
     let y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
 }
 
-fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
-    let _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    let d_1 = (1f / ((WEFT_PI * _e5) * _e5));
-    return select(0f, d_1, (n_dot_h_1 > 0f));
+fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
+    let at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    let ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    let _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    let d = (1f / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
+    let _e7 = weft_clamp_cos(l.z);
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
+    let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * saturate(l_1.z));
+}
+
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
     let n_4 = frame_1[2];
     let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_4);
     let aniso_n = cross(aniso_t, dir_1);
-    let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
+    let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
     let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-fn satin_light_blend(c_2: vec3<f32>, light: vec3<f32>) -> vec3<f32> {
-    let _e2 = weft_luminance(light);
-    let _e4 = weft_max3_(c_2);
-    return mix((c_2 * _e2), (light * _e4), 0.5f);
+fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
+    var s: f32;
+
+    let _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    let _e7 = s;
+    return _e7;
 }
 
-fn satin_d_seed(hf: vec3<f32>, a: vec2<f32>) -> f32 {
-    var d: f32;
+fn satin_env(frame_2: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+    var bent_1: vec3<f32>;
+    var c_1: vec3<f32>;
 
-    let _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
-    d = _e7;
-    let _e9 = d;
-    return _e9;
+    let _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    let _e7 = bent_1;
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
+    let _e11 = c_1;
+    return _e11;
 }
 
 @vertex 
@@ -313,7 +320,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e19 = textureSample(rmo_map, material_sampler, _e5);
     let rmo = _e19.xyz;
     let _e23 = material.roughness;
-    let roughness_8 = saturate((_e23 * rmo.x));
+    let roughness_7 = saturate((_e23 * rmo.x));
     let _e29 = material.metallic;
     let metallic = saturate((_e29 * rmo.y));
     let _e36 = material.occlusion_strength;
@@ -322,7 +329,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let anisotropy_2 = clamp(_e42, -1f, 1f);
     let _e48 = material.second_layer_width;
     let width = clamp(_e48, 1f, 4f);
-    let roughness2_ = min((roughness_8 * width), 1f);
+    let roughness2_ = min((roughness_7 * width), 1f);
     let _e58 = material.noise_map_st;
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
@@ -338,53 +345,62 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e85 = n;
     let _e87 = weft_clamp_cos(dot(_e85, _e74));
     let _e88 = n;
-    let n_dot_l_1 = saturate(dot(_e88, _e81));
+    let n_dot_l = saturate(dot(_e88, _e81));
     let v_dot_h_1 = saturate(dot(_e74, _e84));
     let _e93 = weft_main_light_radiance();
-    let _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    let _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
     layers.narrow = _e96;
     let _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
     layers.wide = _e98;
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     let _e107 = material.specular_color;
     let c1_ = saturate(_e107.xyz);
     let _e112 = material.second_specular_color;
     let c2_ = saturate(_e112.xyz);
-    let _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    let _e115 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        let _e120 = weft_aniso_to_frame(_e80, _e84);
-        let _e122 = layers.narrow;
-        let _e123 = satin_d_seed(_e120, _e122);
-        let _e125 = layers.wide;
-        let _e126 = satin_d_seed(_e120, _e125);
-        let d2_ = (_e126 / width);
-        let _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        let _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        let _e130 = satin_light_blend(c1_, _e93);
-        let _e131 = satin_light_blend(c2_, _e93);
-        let _e134 = material.specular_intensity;
-        let mag = max(_e134, 0f);
-        specular = ((((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1f) - _e115);
-        let _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
-        let _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        let _e152 = bent;
-        let _e154 = weft_prefiltered_radiance(reflect(-(_e74), _e152), roughness_8);
-        indirect_specular = ((_e154 * _e150) * noise);
-        let _e159 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = (vec3(1f) - _e159);
+        let _e120 = weft_max3_(c1_);
+        let t1_ = mix(c1_, vec3(_e120), 0.5f);
+        let _e124 = weft_max3_(c2_);
+        let t2_ = mix(c2_, vec3(_e124), 0.5f);
+        let _e129 = weft_max3_((t1_ + t2_));
+        let norm = (1f / max(1f, _e129));
+        let w1_ = (t1_ * norm);
+        let w2_ = (t2_ * norm);
+        let _e136 = weft_aniso_to_frame(_e80, _e74);
+        let _e137 = weft_aniso_to_frame(_e80, _e81);
+        let _e139 = layers.narrow;
+        let _e140 = satin_lobe_reference(_e136, _e137, _e139);
+        let _e142 = layers.wide;
+        let _e143 = satin_lobe_reference(_e136, _e137, _e142);
+        specular = (((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise) * _e93);
+        let _e153 = weft_f_schlick(f0_2, _e87);
+        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e153)), vec3(0f));
+        let _e159 = weft_env_brdf_lut(_e87, roughness_7);
+        let _e160 = weft_env_brdf_from_lut(f0_2, _e159);
+        let e1_ = (_e160 * w1_);
+        let _e162 = weft_env_brdf_lut(_e87, roughness2_);
+        let _e163 = weft_env_brdf_from_lut(f0_2, _e162);
+        let e2_ = (_e163 * w2_);
+        {
+            let _e165 = weft_max3_(e1_);
+            let _e166 = weft_max3_(e2_);
+            let r_env = select(roughness2_, roughness_7, (_e165 >= _e166));
+            let _e169 = satin_env(_e80, _e74, anisotropy_2, r_env);
+            indirect_specular = ((_e169 * (e1_ + e2_)) * noise);
+        }
+        ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
-    let _e161 = diffuse_kd;
-    let _e162 = weft_diffuse_lambert(diffuse_albedo);
-    let _e166 = specular;
-    let direct = ((((_e161 * _e162) * _e93) * n_dot_l_1) + _e166);
-    let _e168 = indirect_specular;
-    let _e170 = n;
-    let _e171 = weft_sh_irradiance(_e170);
-    let _e173 = ambient_kd;
-    let indirect = ((_e168 * ao) + (((_e171 * ao) * _e173) * diffuse_albedo));
+    let _e180 = diffuse_kd;
+    let _e181 = weft_diffuse_lambert(diffuse_albedo);
+    let _e185 = specular;
+    let direct = ((((_e180 * _e181) * _e93) * n_dot_l) + _e185);
+    let _e187 = indirect_specular;
+    let _e189 = n;
+    let _e190 = weft_sh_irradiance(_e189);
+    let _e192 = ambient_kd;
+    let indirect = ((_e187 * ao) + (((_e190 * ao) * _e192) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -61,6 +61,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -73,6 +74,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -97,16 +100,10 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return ((x2_ * x2_) * x);
 }
 
 float weft_max3_(float3 v)
@@ -132,15 +129,10 @@ float3 weft_safe_normalize(float3 v_1, float3 fallback)
 
 float3 weft_any_perpendicular(float3 n_1)
 {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a_1);
-    return float3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
-}
-
-float weft_luminance(float3 c_1)
-{
-    return dot(c_1, float3(0.2126, 0.7152, 0.0722));
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -149,36 +141,15 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_1)
-{
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness_1))).xxx, f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2)
-{
-    const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
-}
-
 float3 weft_diffuse_lambert(float3 albedo)
 {
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_3)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_3);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_2);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
-    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -227,19 +198,26 @@ float3 weft_sh_irradiance(float3 n_2)
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_4)
+float weft_specular_mip(float roughness_1)
 {
-    float r_1 = saturate(roughness_4);
+    float r = saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
 {
-    const float _e4 = weft_specular_mip(roughness_5);
-    float4 c_3 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_3.xyz, (0.0).xxx);
+    const float _e4 = weft_specular_mip(roughness_2);
+    float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
+{
+    float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
@@ -250,8 +228,8 @@ float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_3, t) * s_2);
     return float3x3(t, b_1, n_3);
 }
 
@@ -260,67 +238,101 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame, float3 x_2)
+float3 weft_aniso_to_frame(float3x3 frame, float3 x_1)
 {
-    return float3(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+    return float3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-float2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy)
+float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
 {
-    const float _e2 = weft_clamp_roughness(roughness_6);
-    float a_3 = (_e2 * _e2);
+    const float _e2 = weft_clamp_roughness(roughness_4);
+    float a_2 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(float2((a_3 * (1.0 + k_1)), (a_3 * (1.0 - k_1))), (0.001).xx);
+    return max(float2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), (0.001).xx);
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
 {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
 {
-    const float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d_1 = (1.0 / ((WEFT_PI * _e5) * _e5));
-    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    const float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_2, float anisotropy_1, float roughness_7)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
+{
+    const float _e5 = weft_clamp_cos(v_2.z);
+    const float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(float3 v_3, float3 l_1, float alpha_t_3, float alpha_b_3)
+{
+    const float3 _e9 = weft_safe_normalize((v_3 + l_1), float3(0.0, 0.0, 1.0));
+    const float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * saturate(l_1.z));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_4, float anisotropy_1, float roughness_5)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
     float3 n_4 = frame_1[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_4);
     float3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
+    float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_5))));
     const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-float3 satin_light_blend(float3 c_2, float3 light)
+float satin_lobe_reference(float3 vf, float3 lf, float2 a)
 {
-    const float _e2 = weft_luminance(light);
-    const float _e4 = weft_max3_(c_2);
-    return lerp((c_2 * _e2), (light * _e4), 0.5);
+    float s = (float)0;
+
+    const float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    {
+        float _e7 = s;
+        const float _e10 = weft_spec_ggx_aniso(vf, lf, a.y, a.x);
+        s = (0.5 * (_e7 + _e10));
+    }
+    float _e14 = s;
+    return _e14;
 }
 
-float satin_d_seed(float3 hf, float2 a)
+float3 satin_env(float3x3 frame_2, float3 v_5, float k, float roughness_6)
 {
-    float d = (float)0;
+    float3 bent_1 = (float3)0;
+    float3 c_1 = (float3)0;
 
-    const float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
-    d = _e7;
+    const float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    float3 _e7 = bent_1;
+    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
     {
-        float _e9 = d;
-        const float _e15 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.y, a.x);
-        d = (_e9 + _e15);
+        const float3 _e12 = weft_aniso_bent_normal(frame_2, v_5, -(k), roughness_6);
+        bent_1 = _e12;
+        float3 _e13 = c_1;
+        float3 _e15 = bent_1;
+        const float3 _e17 = weft_prefiltered_radiance(reflect(-(v_5), _e15), roughness_6);
+        c_1 = (0.5 * (_e13 + _e17));
     }
-    float _e17 = d;
-    return _e17;
+    float3 _e21 = c_1;
+    return _e21;
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -369,7 +381,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e19 = rmo_map.Sample(material_sampler, _e5);
     float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
-    float roughness_8 = saturate((_e23 * rmo.x));
+    float roughness_7 = saturate((_e23 * rmo.x));
     float _e29 = material.metallic;
     float metallic = saturate((_e29 * rmo.y));
     float _e36 = material.occlusion_strength;
@@ -378,7 +390,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float anisotropy_2 = clamp(_e42, -1.0, 1.0);
     float _e48 = material.second_layer_width;
     float width = clamp(_e48, 1.0, 4.0);
-    float roughness2_ = min((roughness_8 * width), 1.0);
+    float roughness2_ = min((roughness_7 * width), 1.0);
     float4 _e58 = material.noise_map_st;
     const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     float4 _e62 = noise_map.Sample(material_sampler, _e59);
@@ -394,57 +406,62 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e85 = n;
     const float _e87 = weft_clamp_cos(dot(_e85, _e74));
     float3 _e88 = n;
-    float n_dot_l_1 = saturate(dot(_e88, _e81));
+    float n_dot_l = saturate(dot(_e88, _e81));
     float v_dot_h_1 = saturate(dot(_e74, _e84));
     const float3 _e93 = weft_main_light_radiance();
-    const float2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    const float2 _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
     layers.narrow = _e96;
     const float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
     layers.wide = _e98;
-    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     float4 _e107 = material.specular_color;
     float3 c1_ = saturate(_e107.xyz);
     float4 _e112 = material.second_specular_color;
     float3 c2_ = saturate(_e112.xyz);
-    const float3 _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    const float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        const float3 _e120 = weft_aniso_to_frame(_e80, _e84);
-        float2 _e122 = layers.narrow;
-        const float _e123 = satin_d_seed(_e120, _e122);
-        float2 _e125 = layers.wide;
-        const float _e126 = satin_d_seed(_e120, _e125);
-        float d2_ = (_e126 / width);
-        const float _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        const float _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        const float3 _e130 = satin_light_blend(c1_, _e93);
-        const float3 _e131 = satin_light_blend(c2_, _e93);
-        float _e134 = material.specular_intensity;
-        float mag = max(_e134, 0.0);
-        specular = ((((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise_) * n_dot_l_1));
-        diffuse_kd = ((1.0).xxx - _e115);
-        const float3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
+        const float _e120 = weft_max3_(c1_);
+        float3 t1_ = lerp(c1_, (_e120).xxx, 0.5);
+        const float _e124 = weft_max3_(c2_);
+        float3 t2_ = lerp(c2_, (_e124).xxx, 0.5);
+        const float _e129 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e129));
+        float3 w1_ = (t1_ * norm);
+        float3 w2_ = (t2_ * norm);
+        const float3 _e136 = weft_aniso_to_frame(_e80, _e74);
+        const float3 _e137 = weft_aniso_to_frame(_e80, _e81);
+        float2 _e139 = layers.narrow;
+        const float _e140 = satin_lobe_reference(_e136, _e137, _e139);
+        float2 _e142 = layers.wide;
+        const float _e143 = satin_lobe_reference(_e136, _e137, _e142);
+        specular = (((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise_) * _e93);
+        const float3 _e153 = weft_f_schlick(f0_2, _e87);
+        diffuse_kd = max(((1.0).xxx - ((w1_ + w2_) * _e153)), (0.0).xxx);
+        const float2 _e159 = weft_env_brdf_lut(_e87, roughness_7);
+        const float3 _e160 = weft_env_brdf_from_lut(f0_2, _e159);
+        float3 e1_ = (_e160 * w1_);
+        const float2 _e162 = weft_env_brdf_lut(_e87, roughness2_);
+        const float3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
+        float3 e2_ = (_e163 * w2_);
         {
-            float3 _e150 = n;
-            bent = _e150;
+            const float _e165 = weft_max3_(e1_);
+            const float _e166 = weft_max3_(e2_);
+            float r_env = ((_e165 >= _e166) ? roughness_7 : roughness2_);
+            const float3 _e169 = satin_env(_e80, _e74, anisotropy_2, r_env);
+            indirect_specular = ((_e169 * (e1_ + e2_)) * noise_);
         }
-        const float3 _e151 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        float3 _e153 = bent;
-        const float3 _e155 = weft_prefiltered_radiance(reflect(-(_e74), _e153), roughness_8);
-        indirect_specular = ((_e155 * _e151) * noise_);
-        const float3 _e160 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = ((1.0).xxx - _e160);
+        ambient_kd = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     }
-    float3 _e162 = diffuse_kd;
-    const float3 _e163 = weft_diffuse_lambert(diffuse_albedo);
-    float3 _e167 = specular;
-    float3 direct = ((((_e162 * _e163) * _e93) * n_dot_l_1) + _e167);
-    float3 _e169 = indirect_specular;
-    float3 _e171 = n;
-    const float3 _e172 = weft_sh_irradiance(_e171);
-    float3 _e174 = ambient_kd;
-    float3 indirect = ((_e169 * ao) + (((_e172 * ao) * _e174) * diffuse_albedo));
+    float3 _e180 = diffuse_kd;
+    const float3 _e181 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e185 = specular;
+    float3 direct = ((((_e180 * _e181) * _e93) * n_dot_l) + _e185);
+    float3 _e187 = indirect_specular;
+    float3 _e189 = n;
+    const float3 _e190 = weft_sh_irradiance(_e189);
+    float3 _e192 = ambient_kd;
+    float3 indirect = ((_e187 * ao) + (((_e190 * ao) * _e192) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

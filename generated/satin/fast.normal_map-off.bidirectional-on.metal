@@ -61,24 +61,18 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
+    return (x2_ * x2_) * x;
 }
 
 float weft_max3_(
@@ -110,16 +104,10 @@ metal::float3 weft_safe_normalize(
 metal::float3 weft_any_perpendicular(
     metal::float3 n_1
 ) {
-    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a_1 = -1.0 / (s + n_1.z);
+    float s_1 = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a_1 = -1.0 / (s_1 + n_1.z);
     float b = (n_1.x * n_1.y) * a_1;
-    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a_1), s * b, -(s) * n_1.x);
-}
-
-float weft_luminance(
-    metal::float3 c_1
-) {
-    return metal::dot(c_1, metal::float3(0.2126, 0.7152, 0.0722));
+    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a_1), s_1 * b, -(s_1) * n_1.x);
 }
 
 metal::float3 weft_f_schlick(
@@ -130,46 +118,18 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
-    float n_dot_v,
-    float roughness_1
-) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_1)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_2
-) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = _e3 * _e3;
-    float k = ((a_2 + 1.0) * (a_2 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
-}
-
 metal::float3 weft_diffuse_lambert(
     metal::float3 albedo
 ) {
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_2,
-    float roughness_3
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_3);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -225,25 +185,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_4,
+    float roughness_1,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_4);
+    float r = metal::saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_5,
+    float roughness_2,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_5, weft_frame);
-    metal::float4 c_3 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
-    return metal::max(c_3.xyz, metal::float3(0.0));
+    float _e4 = weft_specular_mip(roughness_2, weft_frame);
+    metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_2.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v,
+    float roughness_3,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -256,8 +227,8 @@ metal::float3x3 weft_tangent_frame(
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
-    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
     return metal::float3x3(t, b_1, n_3);
 }
 
@@ -270,19 +241,19 @@ metal::float2 weft_transform_uv(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame,
-    metal::float3 x_2
+    metal::float3 x_1
 ) {
-    return metal::float3(metal::dot(frame[0], x_2), metal::dot(frame[1], x_2), metal::dot(frame[2], x_2));
+    return metal::float3(metal::dot(frame[0], x_1), metal::dot(frame[1], x_1), metal::dot(frame[2], x_1));
 }
 
 metal::float2 weft_aniso_alpha_kulla(
-    float roughness_6,
+    float roughness_4,
     float anisotropy
 ) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_3 = _e2 * _e2;
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_2 = _e2 * _e2;
     float k_1 = metal::clamp(anisotropy, -1.0, 1.0);
-    return metal::max(metal::float2(a_3 * (1.0 + k_1), a_3 * (1.0 - k_1)), metal::float2(0.001));
+    return metal::max(metal::float2(a_2 * (1.0 + k_1), a_2 * (1.0 - k_1)), metal::float2(0.001));
 }
 
 float weft_aniso_ggx_q(
@@ -294,62 +265,109 @@ float weft_aniso_ggx_q(
 ) {
     float at = metal::max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = metal::max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = t_dot_h / at;
+    float x_2 = t_dot_h / at;
     float y = b_dot_h / ab;
-    return metal::max(((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
+    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
 }
 
-float weft_d_ggx_aniso_unnormalized(
+float weft_d_ggx_aniso(
     float t_dot_h_1,
     float b_dot_h_1,
     float n_dot_h_1,
     float alpha_t_1,
     float alpha_b_1
 ) {
-    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d_1 = 1.0 / ((WEFT_PI * _e5) * _e5);
-    return (n_dot_h_1 > 0.0) ? d_1 : 0.0;
+    float at_1 = metal::max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = metal::max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = 1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9);
+    return (n_dot_h_1 > 0.0) ? d : 0.0;
+}
+
+float weft_v_smith_ggx_aniso_correlated(
+    metal::float3 v_2,
+    metal::float3 l,
+    float alpha_t_2,
+    float alpha_b_2
+) {
+    float _e5 = weft_clamp_cos(v_2.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
+    float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
+    return 0.5 / (lv + ll);
+}
+
+float weft_spec_ggx_aniso(
+    metal::float3 v_3,
+    metal::float3 l_1,
+    float alpha_t_3,
+    float alpha_b_3
+) {
+    metal::float3 _e9 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
+    float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_1,
-    metal::float3 v_2,
+    metal::float3 v_4,
     float anisotropy_1,
-    float roughness_7
+    float roughness_5
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
     metal::float3 n_4 = frame_1[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_1[1] : frame_1[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_4);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
-    float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_7));
+    float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_5));
     metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-metal::float3 satin_light_blend(
-    metal::float3 c_2,
-    metal::float3 light
-) {
-    float _e2 = weft_luminance(light);
-    float _e4 = weft_max3_(c_2);
-    return metal::mix(c_2 * _e2, light * _e4, 0.5);
-}
-
-float satin_d_seed(
-    metal::float3 hf,
+float satin_lobe_reference(
+    metal::float3 vf,
+    metal::float3 lf,
     metal::float2 a
 ) {
-    float d = {};
-    float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
-    d = _e7;
+    float s = {};
+    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
     {
-        float _e9 = d;
-        float _e15 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.y, a.x);
-        d = _e9 + _e15;
+        float _e7 = s;
+        float _e10 = weft_spec_ggx_aniso(vf, lf, a.y, a.x);
+        s = 0.5 * (_e7 + _e10);
     }
-    float _e17 = d;
-    return _e17;
+    float _e14 = s;
+    return _e14;
+}
+
+metal::float3 satin_env(
+    metal::float3x3 frame_2,
+    metal::float3 v_5,
+    float k,
+    float roughness_6,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    metal::float3 bent_1 = {};
+    metal::float3 c_1 = {};
+    metal::float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    metal::float3 _e7 = bent_1;
+    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    c_1 = _e9;
+    {
+        metal::float3 _e12 = weft_aniso_bent_normal(frame_2, v_5, -(k), roughness_6);
+        bent_1 = _e12;
+        metal::float3 _e13 = c_1;
+        metal::float3 _e15 = bent_1;
+        metal::float3 _e17 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e15), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        c_1 = 0.5 * (_e13 + _e17);
+    }
+    metal::float3 _e21 = c_1;
+    return _e21;
 }
 
 struct vs_mainInput {
@@ -408,11 +426,13 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> rmo_map [[texture(2)]]
-, metal::texture2d<float, metal::access::sample> noise_map [[texture(3)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -432,7 +452,7 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
     metal::float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
-    float roughness_8 = metal::saturate(_e23 * rmo.x);
+    float roughness_7 = metal::saturate(_e23 * rmo.x);
     float _e29 = material.metallic;
     float metallic = metal::saturate(_e29 * rmo.y);
     float _e36 = material.occlusion_strength;
@@ -441,7 +461,7 @@ fragment fs_mainOutput fs_main(
     float anisotropy_2 = metal::clamp(_e42, -1.0, 1.0);
     float _e48 = material.second_layer_width;
     float width = metal::clamp(_e48, 1.0, 4.0);
-    float roughness2_ = metal::min(roughness_8 * width, 1.0);
+    float roughness2_ = metal::min(roughness_7 * width, 1.0);
     metal::float4 _e58 = material.noise_map_st;
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
@@ -457,57 +477,62 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e85 = n;
     float _e87 = weft_clamp_cos(metal::dot(_e85, _e74));
     metal::float3 _e88 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e88, _e81));
+    float n_dot_l = metal::saturate(metal::dot(_e88, _e81));
     float v_dot_h_1 = metal::saturate(metal::dot(_e74, _e84));
     metal::float3 _e93 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    metal::float2 _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
     layers.narrow = _e96;
     metal::float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
     layers.wide = _e98;
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     metal::float4 _e107 = material.specular_color;
     metal::float3 c1_ = metal::saturate(_e107.xyz);
     metal::float4 _e112 = material.second_specular_color;
     metal::float3 c2_ = metal::saturate(_e112.xyz);
-    metal::float3 _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        metal::float3 _e120 = weft_aniso_to_frame(_e80, _e84);
-        metal::float2 _e122 = layers.narrow;
-        float _e123 = satin_d_seed(_e120, _e122);
-        metal::float2 _e125 = layers.wide;
-        float _e126 = satin_d_seed(_e120, _e125);
-        float d2_ = _e126 / width;
-        float _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        float _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        metal::float3 _e130 = satin_light_blend(c1_, _e93);
-        metal::float3 _e131 = satin_light_blend(c2_, _e93);
-        float _e134 = material.specular_intensity;
-        float mag = metal::max(_e134, 0.0);
-        specular = (((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise) * n_dot_l_1);
-        diffuse_kd = metal::float3(1.0) - _e115;
-        metal::float3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
+        float _e120 = weft_max3_(c1_);
+        metal::float3 t1_ = metal::mix(c1_, metal::float3(_e120), 0.5);
+        float _e124 = weft_max3_(c2_);
+        metal::float3 t2_ = metal::mix(c2_, metal::float3(_e124), 0.5);
+        float _e129 = weft_max3_(t1_ + t2_);
+        float norm = 1.0 / metal::max(1.0, _e129);
+        metal::float3 w1_ = t1_ * norm;
+        metal::float3 w2_ = t2_ * norm;
+        metal::float3 _e136 = weft_aniso_to_frame(_e80, _e74);
+        metal::float3 _e137 = weft_aniso_to_frame(_e80, _e81);
+        metal::float2 _e139 = layers.narrow;
+        float _e140 = satin_lobe_reference(_e136, _e137, _e139);
+        metal::float2 _e142 = layers.wide;
+        float _e143 = satin_lobe_reference(_e136, _e137, _e142);
+        specular = ((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise) * _e93;
+        metal::float3 _e153 = weft_f_schlick(f0_2, _e87);
+        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e153), metal::float3(0.0));
+        metal::float2 _e159 = weft_env_brdf_lut(_e87, roughness_7, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e160 = weft_env_brdf_from_lut(f0_2, _e159);
+        metal::float3 e1_ = _e160 * w1_;
+        metal::float2 _e162 = weft_env_brdf_lut(_e87, roughness2_, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
+        metal::float3 e2_ = _e163 * w2_;
         {
-            metal::float3 _e150 = n;
-            bent = _e150;
+            float _e165 = weft_max3_(e1_);
+            float _e166 = weft_max3_(e2_);
+            float r_env = (_e165 >= _e166) ? roughness_7 : roughness2_;
+            metal::float3 _e169 = satin_env(_e80, _e74, anisotropy_2, r_env, weft_frame, weft_environment, weft_environment_sampler);
+            indirect_specular = (_e169 * (e1_ + e2_)) * noise;
         }
-        metal::float3 _e151 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        metal::float3 _e153 = bent;
-        metal::float3 _e155 = weft_prefiltered_radiance(metal::reflect(-(_e74), _e153), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular = (_e155 * _e151) * noise;
-        metal::float3 _e160 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = metal::float3(1.0) - _e160;
+        ambient_kd = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     }
-    metal::float3 _e162 = diffuse_kd;
-    metal::float3 _e163 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 _e167 = specular;
-    metal::float3 direct = (((_e162 * _e163) * _e93) * n_dot_l_1) + _e167;
-    metal::float3 _e169 = indirect_specular;
-    metal::float3 _e171 = n;
-    metal::float3 _e172 = weft_sh_irradiance(_e171, weft_frame);
-    metal::float3 _e174 = ambient_kd;
-    metal::float3 indirect = (_e169 * ao) + (((_e172 * ao) * _e174) * diffuse_albedo);
+    metal::float3 _e180 = diffuse_kd;
+    metal::float3 _e181 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e185 = specular;
+    metal::float3 direct = (((_e180 * _e181) * _e93) * n_dot_l) + _e185;
+    metal::float3 _e187 = indirect_specular;
+    metal::float3 _e189 = n;
+    metal::float3 _e190 = weft_sh_irradiance(_e189, weft_frame);
+    metal::float3 _e192 = ambient_kd;
+    metal::float3 indirect = (_e187 * ao) + (((_e190 * ao) * _e192) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

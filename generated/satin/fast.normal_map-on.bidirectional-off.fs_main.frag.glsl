@@ -47,6 +47,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -57,15 +58,17 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
-layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
 
-layout(binding = 4) uniform sampler2D _group_1_binding_6_fs;
+layout(binding = 5) uniform sampler2D _group_1_binding_6_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -73,14 +76,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return ((x2_ * x2_) * x);
 }
 
 float weft_max3_(vec3 v) {
@@ -101,14 +99,10 @@ vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a_1);
-    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
-}
-
-float weft_luminance(vec3 c_1) {
-    return dot(c_1, vec3(0.2126, 0.7152, 0.0722));
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -116,32 +110,13 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_1) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
-}
-
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_3) {
-    float r = clamp(roughness_3, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -185,17 +160,23 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_4) {
-    float r_1 = clamp(roughness_4, 0.0, 1.0);
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
-    float _e4 = weft_specular_mip(roughness_5);
-    vec4 c_3 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_3.xyz, vec3(0.0));
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
+    float _e4 = weft_specular_mip(roughness_2);
+    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_2.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
+    vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
@@ -205,14 +186,14 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_2);
     return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_6 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -224,54 +205,77 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_3 = (_e2 * _e2);
+vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_2 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_3 * (1.0 + k_1)), (a_3 * (1.0 - k_1))), vec2(0.001));
+    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
-    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d_1 = (1.0 / ((WEFT_PI * _e5) * _e5));
-    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_7) {
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
+    float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_4, float anisotropy_1, float roughness_5) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
     vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-vec3 satin_light_blend(vec3 c_2, vec3 light) {
-    float _e2 = weft_luminance(light);
-    float _e4 = weft_max3_(c_2);
-    return mix((c_2 * _e2), (light * _e4), 0.5);
+float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
+    float s = 0.0;
+    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    float _e7 = s;
+    return _e7;
 }
 
-float satin_d_seed(vec3 hf, vec2 a) {
-    float d = 0.0;
-    float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
-    d = _e7;
-    float _e9 = d;
-    return _e9;
+vec3 satin_env(mat3x3 frame_3, vec3 v_5, float k, float roughness_6) {
+    vec3 bent_1 = vec3(0.0);
+    vec3 c_1 = vec3(0.0);
+    vec3 _e4 = weft_aniso_bent_normal(frame_3, v_5, k, roughness_6);
+    bent_1 = _e4;
+    vec3 _e7 = bent_1;
+    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
+    vec3 _e11 = c_1;
+    return _e11;
 }
 
 void main() {
@@ -293,7 +297,7 @@ void main() {
     vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
     vec3 rmo = _e19.xyz;
     float _e23 = _group_1_binding_0_fs.roughness;
-    float roughness_8 = clamp((_e23 * rmo.x), 0.0, 1.0);
+    float roughness_7 = clamp((_e23 * rmo.x), 0.0, 1.0);
     float _e29 = _group_1_binding_0_fs.metallic;
     float metallic = clamp((_e29 * rmo.y), 0.0, 1.0);
     float _e36 = _group_1_binding_0_fs.occlusion_strength;
@@ -302,7 +306,7 @@ void main() {
     float anisotropy_2 = clamp(_e42, -1.0, 1.0);
     float _e48 = _group_1_binding_0_fs.second_layer_width;
     float width = clamp(_e48, 1.0, 4.0);
-    float roughness2_ = min((roughness_8 * width), 1.0);
+    float roughness2_ = min((roughness_7 * width), 1.0);
     vec4 _e58 = _group_1_binding_0_fs.noise_map_st;
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
@@ -328,53 +332,62 @@ void main() {
     vec3 _e97 = n;
     float _e99 = weft_clamp_cos(dot(_e97, _e74));
     vec3 _e100 = n;
-    float n_dot_l_1 = clamp(dot(_e100, _e93), 0.0, 1.0);
+    float n_dot_l = clamp(dot(_e100, _e93), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e74, _e96), 0.0, 1.0);
     vec3 _e105 = weft_main_light_radiance();
-    vec2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    vec2 _e108 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
     layers.narrow = _e108;
     vec2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
     layers.wide = _e110;
-    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     vec4 _e119 = _group_1_binding_0_fs.specular_color;
     vec3 c1_ = clamp(_e119.xyz, vec3(0.0), vec3(1.0));
     vec4 _e124 = _group_1_binding_0_fs.second_specular_color;
     vec3 c2_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec3 _e127 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        vec3 _e132 = weft_aniso_to_frame(_e92, _e96);
-        vec2 _e134 = layers.narrow;
-        float _e135 = satin_d_seed(_e132, _e134);
-        vec2 _e137 = layers.wide;
-        float _e138 = satin_d_seed(_e132, _e137);
-        float d2_ = (_e138 / width);
-        float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
-        float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
-        vec3 _e142 = satin_light_blend(c1_, _e105);
-        vec3 _e143 = satin_light_blend(c2_, _e105);
-        float _e146 = _group_1_binding_0_fs.specular_intensity;
-        float mag = max(_e146, 0.0);
-        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1.0) - _e127);
-        vec3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
-        bent = _e160;
-        vec3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
-        vec3 _e164 = bent;
-        vec3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);
-        indirect_specular = ((_e166 * _e162) * noise);
-        vec3 _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
-        ambient_kd = (vec3(1.0) - _e171);
+        float _e132 = weft_max3_(c1_);
+        vec3 t1_ = mix(c1_, vec3(_e132), 0.5);
+        float _e136 = weft_max3_(c2_);
+        vec3 t2_ = mix(c2_, vec3(_e136), 0.5);
+        float _e141 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e141));
+        vec3 w1_ = (t1_ * norm);
+        vec3 w2_ = (t2_ * norm);
+        vec3 _e148 = weft_aniso_to_frame(_e92, _e74);
+        vec3 _e149 = weft_aniso_to_frame(_e92, _e93);
+        vec2 _e151 = layers.narrow;
+        float _e152 = satin_lobe_reference(_e148, _e149, _e151);
+        vec2 _e154 = layers.wide;
+        float _e155 = satin_lobe_reference(_e148, _e149, _e154);
+        specular = (((((w1_ * _e152) + (w2_ * _e155)) * _e127) * noise) * _e105);
+        vec3 _e165 = weft_f_schlick(f0_2, _e99);
+        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e165)), vec3(0.0));
+        vec2 _e171 = weft_env_brdf_lut(_e99, roughness_7);
+        vec3 _e172 = weft_env_brdf_from_lut(f0_2, _e171);
+        vec3 e1_ = (_e172 * w1_);
+        vec2 _e174 = weft_env_brdf_lut(_e99, roughness2_);
+        vec3 _e175 = weft_env_brdf_from_lut(f0_2, _e174);
+        vec3 e2_ = (_e175 * w2_);
+        {
+            float _e177 = weft_max3_(e1_);
+            float _e178 = weft_max3_(e2_);
+            float r_env = ((_e177 >= _e178) ? roughness_7 : roughness2_);
+            vec3 _e181 = satin_env(_e92, _e74, anisotropy_2, r_env);
+            indirect_specular = ((_e181 * (e1_ + e2_)) * noise);
+        }
+        ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
-    vec3 _e173 = diffuse_kd;
-    vec3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 _e178 = specular;
-    vec3 direct = ((((_e173 * _e174) * _e105) * n_dot_l_1) + _e178);
-    vec3 _e180 = indirect_specular;
-    vec3 _e182 = n;
-    vec3 _e183 = weft_sh_irradiance(_e182);
-    vec3 _e185 = ambient_kd;
-    vec3 indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
+    vec3 _e192 = diffuse_kd;
+    vec3 _e193 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e197 = specular;
+    vec3 direct = ((((_e192 * _e193) * _e105) * n_dot_l) + _e197);
+    vec3 _e199 = indirect_specular;
+    vec3 _e201 = n;
+    vec3 _e202 = weft_sh_irradiance(_e201);
+    vec3 _e204 = ambient_kd;
+    vec3 indirect = ((_e199 * ao) + (((_e202 * ao) * _e204) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

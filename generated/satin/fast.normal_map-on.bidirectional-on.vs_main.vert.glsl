@@ -47,6 +47,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -66,14 +67,9 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
+    return ((x2_ * x2_) * x);
 }
 
 float weft_max3_(vec3 v) {
@@ -94,14 +90,10 @@ vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a_1);
-    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
-}
-
-float weft_luminance(vec3 c_1) {
-    return dot(c_1, vec3(0.2126, 0.7152, 0.0722));
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -109,32 +101,13 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_1) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
-}
-
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_3) {
-    float r = clamp(roughness_3, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -178,11 +151,11 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_4) {
-    float r_1 = clamp(roughness_4, 0.0, 1.0);
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
@@ -192,14 +165,14 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_2);
     return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_6 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -211,59 +184,70 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_3 = (_e2 * _e2);
+vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_2 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_3 * (1.0 + k_1)), (a_3 * (1.0 - k_1))), vec2(0.001));
+    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
-    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
-    float d_1 = (1.0 / ((WEFT_PI * _e5) * _e5));
-    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_7) {
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
+    float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_4, float anisotropy_1, float roughness_5) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
     vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-vec3 satin_light_blend(vec3 c_2, vec3 light) {
-    float _e2 = weft_luminance(light);
-    float _e4 = weft_max3_(c_2);
-    return mix((c_2 * _e2), (light * _e4), 0.5);
-}
-
-float satin_d_seed(vec3 hf, vec2 a) {
-    float d = 0.0;
-    float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
-    d = _e7;
+float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
+    float s = 0.0;
+    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
     {
-        float _e9 = d;
-        float _e15 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.y, a.x);
-        d = (_e9 + _e15);
+        float _e7 = s;
+        float _e10 = weft_spec_ggx_aniso(vf, lf, a.y, a.x);
+        s = (0.5 * (_e7 + _e10));
     }
-    float _e17 = d;
-    return _e17;
+    float _e14 = s;
+    return _e14;
 }
 
 void main() {

@@ -47,6 +47,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -347,9 +348,11 @@ void main() {
         vec2 _e162 = weft_env_brdf_lut(_e87, roughness2_);
         vec3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
         vec3 e2_ = (_e163 * w2_);
-        vec3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
-        vec3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
-        indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise);
+        {
+            vec3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
+            vec3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
+            indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise);
+        }
         ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
     vec3 _e178 = diffuse_kd;

@@ -61,6 +61,7 @@ constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -501,9 +502,11 @@ fragment fs_mainOutput fs_main(
         metal::float2 _e162 = weft_env_brdf_lut(_e87, roughness2_, weft_brdf_lut, weft_lut_sampler);
         metal::float3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
         metal::float3 e2_ = _e163 * w2_;
-        metal::float3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular = ((_e165 * e1_) + (_e167 * e2_)) * noise;
+        {
+            metal::float3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
+            indirect_specular = ((_e165 * e1_) + (_e167 * e2_)) * noise;
+        }
         ambient_kd = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     }
     metal::float3 _e178 = diffuse_kd;

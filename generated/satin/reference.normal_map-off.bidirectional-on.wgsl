@@ -52,6 +52,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -395,9 +396,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e162 = weft_env_brdf_lut(_e87, roughness2_);
         let _e163 = weft_env_brdf_from_lut(f0_2, _e162);
         let e2_ = (_e163 * w2_);
-        let _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
-        let _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
-        indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise);
+        {
+            let _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
+            let _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
+            indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise);
+        }
         ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
     let _e178 = diffuse_kd;

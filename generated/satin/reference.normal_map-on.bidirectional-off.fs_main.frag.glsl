@@ -47,6 +47,7 @@ const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -369,9 +370,11 @@ void main() {
         vec2 _e174 = weft_env_brdf_lut(_e99, roughness2_);
         vec3 _e175 = weft_env_brdf_from_lut(f0_2, _e174);
         vec3 e2_ = (_e175 * w2_);
-        vec3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
-        vec3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
-        indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+        {
+            vec3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
+            vec3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
+            indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+        }
         ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
     vec3 _e190 = diffuse_kd;

@@ -52,6 +52,7 @@ const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -404,9 +405,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e174 = weft_env_brdf_lut(_e99, roughness2_);
         let _e175 = weft_env_brdf_from_lut(f0_2, _e174);
         let e2_ = (_e175 * w2_);
-        let _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
-        let _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
-        indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+        {
+            let _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
+            let _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
+            indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+        }
         ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
     let _e190 = diffuse_kd;

@@ -61,6 +61,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -466,9 +467,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const float2 _e174 = weft_env_brdf_lut(_e99, roughness2_);
         const float3 _e175 = weft_env_brdf_from_lut(f0_2, _e174);
         float3 e2_ = (_e175 * w2_);
-        const float3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
-        const float3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
-        indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise_);
+        {
+            const float3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
+            const float3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
+            indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise_);
+        }
         ambient_kd = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     }
     float3 _e190 = diffuse_kd;

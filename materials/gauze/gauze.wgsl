@@ -14,7 +14,7 @@
 // ay = r^2 (1 - k) in a tangent frame rotated by `pattern_rotation` where the
 // thread-pattern map exceeds the threshold, times the highlight noise.
 // Tiers (WEFT_TIER):
-//   fast      = the seed's form: D = 1 / (pi q^2) (no 1/(ax ay)), Schlick-GGX
+//   seed      = a look, the seed's form: D = 1 / (pi q^2) (no 1/(ax ay)), Schlick-GGX
 //               visibility (seed 004 form), times anisotropic intensity,
 //               scatter colour and scatter intensity; hard threshold; analytic
 //               split-sum fit for the environment.
@@ -24,7 +24,11 @@
 //               sliders are not applied; the rotation is anti-aliased (the two
 //               lobes blended by the sub-pixel fraction above the threshold);
 //               the toolchain's split-sum LUT, ambient kd = 1 - E_spec.
-// Both: Lambert diffuse (1/pi), L2 SH ambient, prefiltered environment
+//   fast      = an approximation of the reference: one lobe instead of two,
+//               in the frame turned by the blended angle rot * above_aa (the
+//               reference's own frames wherever above_aa is 0 or 1, i.e.
+//               outside the one-pixel anti-aliasing band of the threshold).
+// All: Lambert diffuse (1/pi), L2 SH ambient, prefiltered environment
 // sampled along the anisotropic bent reflection vector.
 
 // ln(1000): thread transmittance 1..1000 maps to opacity 1..0 on a log scale.
@@ -106,7 +110,7 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     // Seed 4.2.6: above the threshold the highlight turns by pattern_rotation.
     let rot = radians(material.pattern_rotation);
     let frame_rot = weft_rotate_tangent_frame(frame, rot);
-    // fast: a hard threshold (the seed). reference: the fraction of the pixel
+    // seed: a hard threshold (the seed). fast, reference: the fraction of the pixel
     // footprint above the threshold (linear ramp over fwidth), so the two lobes
     // blend instead of aliasing. fwidth floored against division by zero.
     let above_hard = select(0.0, 1.0, pattern > material.pattern_threshold);
@@ -132,15 +136,23 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     var env_brdf: vec3<f32>;
     var diffuse_kd: vec3<f32>;
     var ambient_kd: vec3<f32>;
-    if WEFT_TIER == TIER_REFERENCE {
-        let vf = weft_aniso_to_frame(frame, v);
-        let lf = weft_aniso_to_frame(frame, l);
-        let vr = weft_aniso_to_frame(frame_rot, v);
-        let lr = weft_aniso_to_frame(frame_rot, l);
-        // D V n.l of each frame (finite; 0 below the horizon).
-        let lobe0 = weft_spec_ggx_aniso(vf, lf, alphas.x, alphas.y);
-        let lobe1 = weft_spec_ggx_aniso(vr, lr, alphas.x, alphas.y);
-        let lobe = mix(lobe0, lobe1, above_aa);
+    if WEFT_TIER != TIER_SEED {
+        var lobe: f32;
+        if WEFT_TIER == TIER_REFERENCE {
+            let vf = weft_aniso_to_frame(frame, v);
+            let lf = weft_aniso_to_frame(frame, l);
+            let vr = weft_aniso_to_frame(frame_rot, v);
+            let lr = weft_aniso_to_frame(frame_rot, l);
+            // D V n.l of each frame (finite; 0 below the horizon).
+            let lobe0 = weft_spec_ggx_aniso(vf, lf, alphas.x, alphas.y);
+            let lobe1 = weft_spec_ggx_aniso(vr, lr, alphas.x, alphas.y);
+            lobe = mix(lobe0, lobe1, above_aa);
+        } else {
+            // fast: one lobe, in the frame turned by the blended angle (the
+            // same as the reference away from the threshold's AA band).
+            let fb = weft_rotate_tangent_frame(frame, rot * above_aa);
+            lobe = weft_spec_ggx_aniso(weft_aniso_to_frame(fb, v), weft_aniso_to_frame(fb, l), alphas.x, alphas.y);
+        }
         let f = weft_f_schlick(f0, v_dot_h);
         // Tint <= 1 and F <= 1: directional albedo <= 1 (lib/anisotropic.wgsl).
         spec_direct = lobe * f * tint * noise * light;

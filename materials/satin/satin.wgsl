@@ -9,7 +9,7 @@
 // radiance.
 //
 // Tiers (WEFT_TIER):
-//   fast      = the seed's form: per layer D = 1 / (pi q^2) (the seed's GGX
+//   seed      = a look, the seed's form: per layer D = 1 / (pi q^2) (the seed's GGX
 //               without 1/(ax ay)) times Schlick-GGX visibility (seed 004
 //               form); colour c_i blended with the light (seed 7.2.3):
 //                 gray = luminance(light), c_final = lerp(c * gray, light * max3(c), 0.5)
@@ -19,7 +19,7 @@
 //               specular = (layer 1 + layer 2) * mag * noise, noise = 0.5 + 0.5 n
 //               (seed 7.2.2, 7.2.5); BIDIRECTIONAL sums D(ax, ay) + D(ay, ax)
 //               (seed 7.2.4). Diffuse (1 - F) Lambert, analytic split-sum
-//               environment (the standard material's fast tier).
+//               environment (the standard material's seed tier).
 //   reference = per layer the normalised anisotropic GGX D with the
 //               height-correlated anisotropic Smith V (Heitz 2014) and Schlick
 //               F(v.h) with the standard F0; each layer's single-scattering
@@ -32,7 +32,12 @@
 //               (1 - w_sum F(n.v)) directly and 1 - sum w_i E_i (split-sum LUT per
 //               layer) from the environment. Measured: directional albedo <= 1
 //               (README, "Energy").
-// Both: Lambert 1/pi, L2 SH ambient, AO, prefiltered environment along the
+//   fast      = an approximation of the reference: the same lobes, weights
+//               and split-sum albedos, one prefiltered environment lookup for
+//               both layers (at the roughness of the layer that reflects
+//               more) instead of one per layer (two per layer with
+//               BIDIRECTIONAL).
+// All: Lambert 1/pi, L2 SH ambient, AO, prefiltered environment along the
 // anisotropic bent reflection vector.
 
 struct SatinLayers {
@@ -130,7 +135,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     var diffuse_kd: vec3<f32>;
     var indirect_specular: vec3<f32>;
     var ambient_kd: vec3<f32>;
-    if WEFT_TIER == TIER_REFERENCE {
+    if WEFT_TIER != TIER_SEED {
         // Layer weights: the seed's blend for a white light, normalised so the
         // two sum to <= 1 per channel (max(1, .) never divides by < 1).
         let t1 = mix(c1, vec3<f32>(weft_max3(c1)), 0.5);
@@ -153,8 +158,15 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // roughness) times its own prefiltered lookup.
         let e1 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness)) * w1;
         let e2 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness2)) * w2;
-        indirect_specular = (satin_env(frame, v, anisotropy, roughness) * e1
-            + satin_env(frame, v, anisotropy, roughness2) * e2) * noise;
+        if WEFT_TIER == TIER_REFERENCE {
+            indirect_specular = (satin_env(frame, v, anisotropy, roughness) * e1
+                + satin_env(frame, v, anisotropy, roughness2) * e2) * noise;
+        } else {
+            // fast: one prefiltered lookup for both layers, at the roughness
+            // of the layer that reflects more.
+            let r_env = select(roughness2, roughness, weft_max3(e1) >= weft_max3(e2));
+            indirect_specular = satin_env(frame, v, anisotropy, r_env) * (e1 + e2) * noise;
+        }
         ambient_kd = max(vec3<f32>(1.0) - e1 - e2, vec3<f32>(0.0));
     } else {
         let hf = weft_aniso_to_frame(frame, h);
@@ -168,7 +180,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let mag = max(material.specular_intensity, 0.0);
         specular = (d1 * vis1 * s1 + d2 * vis2 * s2) * (mag * noise * n_dot_l);
         diffuse_kd = vec3<f32>(1.0) - f;
-        // The standard fast tier's environment, along the bent reflection.
+        // The standard seed tier's environment, along the bent reflection.
         var bent = weft_aniso_bent_normal(frame, v, anisotropy, roughness);
         if BIDIRECTIONAL {
             // Both directions at once: close to isotropic, use the normal.

@@ -12,6 +12,23 @@ struct WeftObject {
     mat4x4 model;
     mat4x4 normal_matrix;
 };
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    vec4 base_map_st;
+    vec4 normal_map_st;
+    float normal_strength;
+    float thread_density;
+    float thread_transmittance;
+    float mesh_gap;
+    float anisotropy;
+    float anisotropic_intensity;
+    vec4 scatter_color;
+    float scatter_intensity;
+    float pattern_threshold;
+    float pattern_rotation;
+    float sampling_density;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -25,22 +42,17 @@ struct WeftVaryings {
     vec4 world_tangent;
     vec2 uv0_;
 };
-struct SatinLayers {
-    vec2 narrow;
-    vec2 wide;
-};
-struct WeftMaterial {
-    vec4 base_color;
-};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
+const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -55,9 +67,14 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow5_(float x) {
+float weft_pow4_(float x) {
     float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
 }
 
 float weft_max3_(vec3 v) {
@@ -79,29 +96,43 @@ vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
 
 vec3 weft_any_perpendicular(vec3 n_1) {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a_1);
-    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+vec3 weft_f_schlick_roughness(vec3 f0_, float n_dot_v, float roughness_1) {
+    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
+    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_);
+    return (f0_ + ((f90_ - f0_) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_1 = (_e3 * _e3);
+    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((f0_1 * sb.x) + vec3(sb.y));
+vec3 weft_env_brdf_approx(vec3 f0_1, float n_dot_v_2, float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    float _e9 = weft_max3_(f0_1);
+    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
+    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
+    return (mix(f0_1, vec3(grazing), _e17) * surface_reduction);
 }
 
 vec3 weft_main_light_direction() {
     vec4 _e2 = _group_0_binding_0_vs.light_direction;
-    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e5;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
 }
 
 vec3 weft_main_light_radiance() {
@@ -139,11 +170,11 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_1) {
-    float r = clamp(roughness_1, 0.0, 1.0);
+float weft_specular_mip(float roughness_4) {
+    float r_1 = clamp(roughness_4, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r * (1.7 - (0.7 * r))) * max_mip);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
@@ -158,12 +189,41 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     return mat3x3(t, b_1, n_3);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
-    return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
-vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_4);
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
+    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+}
+
+mat3x3 weft_rotate_tangent_frame_cs(mat3x3 frame_2, float c_1, float s) {
+    float len2_2 = ((c_1 * c_1) + (s * s));
+    float inv = inversesqrt(max(len2_2, 1e-20));
+    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
+    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
+    vec3 t_1 = ((frame_2[0] * cc) + (frame_2[1] * ss));
+    vec3 b_2 = ((frame_2[1] * cc) - (frame_2[0] * ss));
+    return mat3x3(t_1, b_2, frame_2[2]);
+}
+
+mat3x3 weft_rotate_tangent_frame(mat3x3 frame_3, float angle) {
+    mat3x3 _e4 = weft_rotate_tangent_frame_cs(frame_3, cos(angle), sin(angle));
+    return _e4;
+}
+
+vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_6);
     float a_2 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
     return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
@@ -172,51 +232,36 @@ vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_2 = (t_dot_h / at);
+    float x_3 = (t_dot_h / at);
     float y = (b_dot_h / ab);
-    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
-float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
-    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
-    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
-    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
-    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    float d = (1.0 / ((WEFT_PI * _e5) * _e5));
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_2.z);
-    float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
-    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
-    return (0.5 / (lv + ll));
-}
-
-float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e6 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
-    float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
-    float _e11 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
-    return ((_e10 * _e11) * clamp(l_1.z, 0.0, 1.0));
-}
-
-vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_4, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_2, float anisotropy_1, float roughness_7) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_1[2];
-    vec3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    vec3 aniso_t = cross(dir_1, v_4);
+    vec3 n_4 = frame_4[2];
+    vec3 dir_1 = ((k_2 >= 0.0) ? frame_4[1] : frame_4[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
-    float s = 0.0;
-    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
-    s = _e5;
-    float _e7 = s;
-    return _e7;
+float gauze_grid_coverage(vec2 cell, vec2 w, float gap) {
+    float g = clamp(gap, 0.0, 1.0);
+    vec2 d_1 = abs((fract(cell) - vec2(0.5)));
+    vec2 ww = max(w, vec2(0.0001));
+    vec2 ramp = clamp((((vec2((0.5 * g)) - d_1) / ww) + vec2(0.5)), vec2(0.0), vec2(1.0));
+    vec2 open = mix(ramp, vec2(g), clamp(((ww * 2.0) - vec2(1.0)), vec2(0.0), vec2(1.0)));
+    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
+    return (1.0 - open_xy);
 }
 
 void main() {
@@ -232,17 +277,17 @@ void main() {
     mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
     out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
     out_.world_position = world.xyz;
-    vec3 _e54 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
-    out_.world_normal = _e54;
-    vec3 _e60 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
-    out_.world_tangent = vec4(_e60, bitangent_sign);
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
     out_.uv0_ = in_.uv0_;
-    WeftVaryings _e64 = out_;
-    gl_Position = _e64.clip_position;
-    _vs2fs_location0 = _e64.world_position;
-    _vs2fs_location1 = _e64.world_normal;
-    _vs2fs_location2 = _e64.world_tangent;
-    _vs2fs_location3 = _e64.uv0_;
+    WeftVaryings _e66 = out_;
+    gl_Position = _e66.clip_position;
+    _vs2fs_location0 = _e66.world_position;
+    _vs2fs_location1 = _e66.world_normal;
+    _vs2fs_location2 = _e66.world_tangent;
+    _vs2fs_location3 = _e66.uv0_;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

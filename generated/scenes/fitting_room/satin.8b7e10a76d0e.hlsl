@@ -41,6 +41,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -376,9 +377,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const float2 _e96 = weft_env_brdf_lut(_e33, 0.8);
         const float3 _e97 = weft_env_brdf_from_lut(f0_2, _e96);
         float3 e2_ = (_e97 * w2_);
-        const float3 _e99 = satin_env(_e26, _e20, 0.85, 0.4);
-        const float3 _e101 = satin_env(_e26, _e20, 0.85, 0.8);
-        indirect_specular = (((_e99 * e1_) + (_e101 * e2_)) * 1.0);
+        {
+            const float3 _e99 = satin_env(_e26, _e20, 0.85, 0.4);
+            const float3 _e101 = satin_env(_e26, _e20, 0.85, 0.8);
+            indirect_specular = (((_e99 * e1_) + (_e101 * e2_)) * 1.0);
+        }
         ambient_kd = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     }
     float3 _e110 = diffuse_kd;

@@ -4,7 +4,7 @@
 
 using metal::uint;
 
-struct type_5 {
+struct type_4 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +13,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_5 sh;
+    type_4 sh;
     metal::float4 params;
 };
 struct WeftObject {
@@ -35,22 +35,35 @@ struct WeftVaryings {
     metal::float2 uv0_;
     char _pad5[8];
 };
+struct SatinLayers {
+    metal::float2 narrow;
+    metal::float2 wide;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
-constant float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
 
 float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
     return (x2_ * x2_) * x;
+}
+
+float weft_max3_(
+    metal::float3 v
+) {
+    return metal::max(v.x, metal::max(v.y, v.z));
 }
 
 float weft_clamp_cos(
@@ -66,20 +79,20 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v,
+    metal::float3 v_1,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v, v);
-    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v_1, v_1);
+    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
     metal::float3 n_1
 ) {
     float s_1 = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a = -1.0 / (s_1 + n_1.z);
-    float b = (n_1.x * n_1.y) * a;
-    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a), s_1 * b, -(s_1) * n_1.x);
+    float a_1 = -1.0 / (s_1 + n_1.z);
+    float b = (n_1.x * n_1.y) * a_1;
+    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a_1), s_1 * b, -(s_1) * n_1.x);
 }
 
 metal::float3 weft_f_schlick(
@@ -134,7 +147,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_5 sh = weft_frame.sh;
+    type_4 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
@@ -211,36 +224,14 @@ metal::float3 weft_aniso_to_frame(
     return metal::float3(metal::dot(frame[0], x_1), metal::dot(frame[1], x_1), metal::dot(frame[2], x_1));
 }
 
-metal::float3x3 weft_rotate_tangent_frame_cs(
-    metal::float3x3 frame_1,
-    float c_1,
-    float s
-) {
-    float len2_2 = (c_1 * c_1) + (s * s);
-    float inv = metal::rsqrt(metal::max(len2_2, 0.00000000000000000001));
-    float cc = (len2_2 > 0.00000000000000000001) ? (c_1 * inv) : 1.0;
-    float ss = (len2_2 > 0.00000000000000000001) ? (s * inv) : 0.0;
-    metal::float3 t_1 = (frame_1[0] * cc) + (frame_1[1] * ss);
-    metal::float3 b_2 = (frame_1[1] * cc) - (frame_1[0] * ss);
-    return metal::float3x3(t_1, b_2, frame_1[2]);
-}
-
-metal::float3x3 weft_rotate_tangent_frame(
-    metal::float3x3 frame_2,
-    float angle
-) {
-    metal::float3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, metal::cos(angle), metal::sin(angle));
-    return _e4;
-}
-
 metal::float2 weft_aniso_alpha_kulla(
     float roughness_4,
     float anisotropy
 ) {
     float _e2 = weft_clamp_roughness(roughness_4);
-    float a_1 = _e2 * _e2;
-    float k = metal::clamp(anisotropy, -1.0, 1.0);
-    return metal::max(metal::float2(a_1 * (1.0 + k), a_1 * (1.0 - k)), metal::float2(0.001));
+    float a_2 = _e2 * _e2;
+    float k_1 = metal::clamp(anisotropy, -1.0, 1.0);
+    return metal::max(metal::float2(a_2 * (1.0 + k_1), a_2 * (1.0 - k_1)), metal::float2(0.001));
 }
 
 float weft_aniso_ggx_q(
@@ -272,58 +263,76 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 float weft_spec_ggx_aniso(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l_1,
     float alpha_t_3,
     float alpha_b_3
 ) {
-    metal::float3 _e6 = weft_safe_normalize(v_2 + l_1, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e6 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
     float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
-    float _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e11 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return (_e10 * _e11) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
-    metal::float3x3 frame_3,
-    metal::float3 v_3,
+    metal::float3x3 frame_1,
+    metal::float3 v_4,
     float anisotropy_1,
     float roughness_5
 ) {
-    float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_3[2];
-    metal::float3 dir_1 = (k_1 >= 0.0) ? frame_3[1] : frame_3[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_3);
+    float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
+    metal::float3 n_4 = frame_1[2];
+    metal::float3 dir_1 = (k_2 >= 0.0) ? frame_1[1] : frame_1[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_4);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
-    float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
+    float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_5));
     metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-float gauze_grid_coverage(
-    metal::float2 cell,
-    metal::float2 w,
-    float gap
+float satin_lobe_reference(
+    metal::float3 vf,
+    metal::float3 lf,
+    metal::float2 a
 ) {
-    float g = metal::clamp(gap, 0.0, 1.0);
-    metal::float2 d_1 = metal::abs(metal::fract(cell) - metal::float2(0.5));
-    metal::float2 ww = metal::max(w, metal::float2(0.0001));
-    metal::float2 ramp = metal::saturate(((metal::float2(0.5 * g) - d_1) / ww) + metal::float2(0.5));
-    metal::float2 open = metal::mix(ramp, metal::float2(g), metal::saturate((ww * 2.0) - metal::float2(1.0)));
-    float open_xy = (g > 0.0) ? (open.x * open.y) : 0.0;
-    return 1.0 - open_xy;
+    float s = {};
+    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    float _e7 = s;
+    return _e7;
+}
+
+metal::float3 satin_env(
+    metal::float3x3 frame_2,
+    metal::float3 v_5,
+    float k,
+    float roughness_6,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    metal::float3 bent_1 = {};
+    metal::float3 c_1 = {};
+    metal::float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    metal::float3 _e7 = bent_1;
+    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    c_1 = _e9;
+    metal::float3 _e11 = c_1;
+    return _e11;
 }
 
 struct vs_mainInput {
@@ -342,7 +351,7 @@ struct vs_mainOutput {
 vertex vs_mainOutput vs_main(
   vs_mainInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
-, constant WeftObject& weft_object [[buffer(1)]]
+, constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
     WeftVaryings out = {};
@@ -379,76 +388,86 @@ struct fs_mainOutput {
 fragment fs_mainOutput fs_main(
   fs_mainInput varyings_1 [[stage_in]]
 , metal::float4 clip_position [[position]]
-, bool front_facing [[front_facing]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
 , metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
-    metal::float3 spec_direct = {};
-    metal::float3 env_brdf = {};
+    SatinLayers layers = {};
+    metal::float3 specular = {};
     metal::float3 diffuse_kd = {};
+    metal::float3 indirect_specular = {};
     metal::float3 ambient_kd = {};
-    metal::float2 uv_s = in_1.uv0_ * 60.0;
-    metal::float2 grid_w = metal::fwidth(uv_s);
-    float _e16 = gauze_grid_coverage(uv_s, grid_w, 0.0);
-    float mesh = 1.0 * _e16;
+    metal::float3 bent = {};
+    metal::float4 _e3 = material.base_color;
+    metal::float4 base_rgba = _e3 * metal::float4(1.0, 1.0, 1.0, 1.0);
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
     metal::float3 _e20 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    float face = front_facing ? 1.0 : -1.0;
-    metal::float3 _e26 = weft_safe_normalize(in_1.world_normal * face, _e20);
-    n = _e26;
-    metal::float3 _e28 = n;
-    metal::float3x3 _e30 = weft_tangent_frame(_e28, in_1.world_tangent);
-    float cos_v = metal::min(metal::abs(metal::dot(_e26, _e20)), 1.0);
-    float sin_v = metal::sqrt(metal::max(1.0 - (cos_v * cos_v), 0.0));
-    float s_3 = metal::pow(metal::max(sin_v, 0.00000001), 3.0);
-    float alpha = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - (mesh * 0.3069396)))) * 1.0);
-    float coverage = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * 1.0);
-    metal::float3x3 _e67 = weft_rotate_tangent_frame(_e30, 1.5707964);
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = n;
-    metal::float3 _e73 = weft_safe_normalize(_e70 + _e20, _e72);
-    metal::float3 _e74 = n;
-    float _e76 = weft_clamp_cos(metal::dot(_e74, _e20));
-    metal::float3 _e77 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e77, _e70));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e20, _e73));
-    metal::float2 _e82 = weft_aniso_alpha_kulla(0.45, 0.8);
-    metal::float3 _e83 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e22 = weft_safe_normalize(in_1.world_normal, _e20);
+    n = _e22;
+    metal::float3 _e24 = n;
+    metal::float3x3 _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
+    metal::float3 _e27 = weft_main_light_direction(weft_frame);
+    metal::float3 _e29 = n;
+    metal::float3 _e30 = weft_safe_normalize(_e27 + _e20, _e29);
+    metal::float3 _e31 = n;
+    float _e33 = weft_clamp_cos(metal::dot(_e31, _e20));
+    metal::float3 _e34 = n;
+    float n_dot_l = metal::saturate(metal::dot(_e34, _e27));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e20, _e30));
+    metal::float3 _e39 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e42 = weft_aniso_alpha_kulla(0.4, 0.85);
+    layers.narrow = _e42;
+    metal::float2 _e44 = weft_aniso_alpha_kulla(0.8, 0.85);
+    layers.wide = _e44;
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, 0.0);
+    metal::float3 diffuse_albedo = base * 1.0;
+    metal::float3 _e51 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        metal::float3 _e91 = weft_aniso_to_frame(_e30, _e20);
-        metal::float3 _e92 = weft_aniso_to_frame(_e30, _e70);
-        metal::float3 _e93 = weft_aniso_to_frame(_e67, _e20);
-        metal::float3 _e94 = weft_aniso_to_frame(_e67, _e70);
-        float _e97 = weft_spec_ggx_aniso(_e91, _e92, _e82.x, _e82.y);
-        float _e100 = weft_spec_ggx_aniso(_e93, _e94, _e82.x, _e82.y);
-        float lobe = metal::mix(_e97, _e100, 0.0);
-        metal::float3 _e102 = weft_f_schlick(metal::float3(0.04), v_dot_h_1);
-        spec_direct = (((lobe * _e102) * metal::float3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83;
-        metal::float3 _e108 = weft_f_schlick(metal::float3(0.04), _e76);
-        diffuse_kd = metal::float3(1.0) - (metal::float3(1.0, 0.8900054, 0.93310684) * _e108);
-        metal::float2 _e111 = weft_env_brdf_lut(_e76, 0.45, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e112 = weft_env_brdf_from_lut(metal::float3(0.04), _e111);
-        env_brdf = _e112 * metal::float3(1.0, 0.8900054, 0.93310684);
-        metal::float3 _e115 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e115, metal::float3(0.0));
+        float _e56 = weft_max3_(metal::float3(1.0, 0.60382736, 0.6382832));
+        metal::float3 t1_ = metal::mix(metal::float3(1.0, 0.60382736, 0.6382832), metal::float3(_e56), 0.5);
+        float _e60 = weft_max3_(metal::float3(0.31854677, 0.033104766, 0.05087609));
+        metal::float3 t2_ = metal::mix(metal::float3(0.31854677, 0.033104766, 0.05087609), metal::float3(_e60), 0.5);
+        float _e65 = weft_max3_(t1_ + t2_);
+        float norm = 1.0 / metal::max(1.0, _e65);
+        metal::float3 w1_ = t1_ * norm;
+        metal::float3 w2_ = t2_ * norm;
+        metal::float3 _e72 = weft_aniso_to_frame(_e26, _e20);
+        metal::float3 _e73 = weft_aniso_to_frame(_e26, _e27);
+        metal::float2 _e75 = layers.narrow;
+        float _e76 = satin_lobe_reference(_e72, _e73, _e75);
+        metal::float2 _e78 = layers.wide;
+        float _e79 = satin_lobe_reference(_e72, _e73, _e78);
+        specular = ((((w1_ * _e76) + (w2_ * _e79)) * _e51) * 1.0) * _e39;
+        metal::float3 _e88 = weft_f_schlick(f0_2, _e33);
+        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e88), metal::float3(0.0));
+        metal::float2 _e93 = weft_env_brdf_lut(_e33, 0.4, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e94 = weft_env_brdf_from_lut(f0_2, _e93);
+        metal::float3 e1_ = _e94 * w1_;
+        metal::float2 _e96 = weft_env_brdf_lut(_e33, 0.8, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e97 = weft_env_brdf_from_lut(f0_2, _e96);
+        metal::float3 e2_ = _e97 * w2_;
+        {
+            metal::float3 _e99 = satin_env(_e26, _e20, 0.85, 0.4, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 _e101 = satin_env(_e26, _e20, 0.85, 0.8, weft_frame, weft_environment, weft_environment_sampler);
+            indirect_specular = ((_e99 * e1_) + (_e101 * e2_)) * 1.0;
+        }
+        ambient_kd = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     }
-    metal::float3 _e119 = diffuse_kd;
-    metal::float3 _e120 = weft_diffuse_lambert(metal::float3(0.84808826, 0.71056646, 0.7484141));
-    metal::float3 diffuse_direct = ((_e119 * _e120) * _e83) * n_dot_l;
-    metal::float3 _e124 = n;
-    metal::float3 _e125 = weft_sh_irradiance(_e124, weft_frame);
-    metal::float3 _e126 = ambient_kd;
-    metal::float3 diffuse_indirect = (_e125 * _e126) * metal::float3(0.84808826, 0.71056646, 0.7484141);
-    metal::float3 _e129 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
-    metal::float3 _e132 = weft_prefiltered_radiance(metal::reflect(-(_e20), _e129), 0.45, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e133 = env_brdf;
-    metal::float3 spec_indirect = (_e132 * _e133) * 1.0;
-    metal::float3 _e138 = spec_direct;
-    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e138 + spec_indirect));
-    metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e110 = diffuse_kd;
+    metal::float3 _e111 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e115 = specular;
+    metal::float3 direct = (((_e110 * _e111) * _e39) * n_dot_l) + _e115;
+    metal::float3 _e117 = indirect_specular;
+    metal::float3 _e119 = n;
+    metal::float3 _e120 = weft_sh_irradiance(_e119, weft_frame);
+    metal::float3 _e122 = ambient_kd;
+    metal::float3 indirect = (_e117 * 1.0) + (((_e120 * 1.0) * _e122) * diffuse_albedo);
+    metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

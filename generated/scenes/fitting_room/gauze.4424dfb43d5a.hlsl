@@ -36,6 +36,7 @@ static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -320,6 +321,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 diffuse_kd = (float3)0;
     float3 ambient_kd = (float3)0;
+    float lobe = (float)0;
 
     float2 uv_s = (in_1.uv0_ * 60.0);
     float2 grid_w = fwidth(uv_s);
@@ -348,36 +350,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e82 = weft_aniso_alpha_kulla(0.45, 0.8);
     const float3 _e83 = weft_main_light_radiance();
     {
-        const float3 _e91 = weft_aniso_to_frame(_e30, _e20);
-        const float3 _e92 = weft_aniso_to_frame(_e30, _e70);
-        const float3 _e93 = weft_aniso_to_frame(_e67, _e20);
-        const float3 _e94 = weft_aniso_to_frame(_e67, _e70);
-        const float _e97 = weft_spec_ggx_aniso(_e91, _e92, _e82.x, _e82.y);
-        const float _e100 = weft_spec_ggx_aniso(_e93, _e94, _e82.x, _e82.y);
-        float lobe = lerp(_e97, _e100, 0.0);
-        const float3 _e102 = weft_f_schlick((0.04).xxx, v_dot_h_1);
-        spec_direct = ((((lobe * _e102) * float3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83);
-        const float3 _e108 = weft_f_schlick((0.04).xxx, _e76);
-        diffuse_kd = ((1.0).xxx - (float3(1.0, 0.8900054, 0.93310684) * _e108));
-        const float2 _e111 = weft_env_brdf_lut(_e76, 0.45);
-        const float3 _e112 = weft_env_brdf_from_lut((0.04).xxx, _e111);
-        env_brdf = (_e112 * float3(1.0, 0.8900054, 0.93310684));
-        float3 _e115 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e115), (0.0).xxx);
+        {
+            const float3 _e92 = weft_aniso_to_frame(_e30, _e20);
+            const float3 _e93 = weft_aniso_to_frame(_e30, _e70);
+            const float3 _e94 = weft_aniso_to_frame(_e67, _e20);
+            const float3 _e95 = weft_aniso_to_frame(_e67, _e70);
+            const float _e98 = weft_spec_ggx_aniso(_e92, _e93, _e82.x, _e82.y);
+            const float _e101 = weft_spec_ggx_aniso(_e94, _e95, _e82.x, _e82.y);
+            lobe = lerp(_e98, _e101, 0.0);
+        }
+        const float3 _e103 = weft_f_schlick((0.04).xxx, v_dot_h_1);
+        float _e104 = lobe;
+        spec_direct = ((((_e104 * _e103) * float3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83);
+        const float3 _e110 = weft_f_schlick((0.04).xxx, _e76);
+        diffuse_kd = ((1.0).xxx - (float3(1.0, 0.8900054, 0.93310684) * _e110));
+        const float2 _e113 = weft_env_brdf_lut(_e76, 0.45);
+        const float3 _e114 = weft_env_brdf_from_lut((0.04).xxx, _e113);
+        env_brdf = (_e114 * float3(1.0, 0.8900054, 0.93310684));
+        float3 _e117 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e117), (0.0).xxx);
     }
-    float3 _e119 = diffuse_kd;
-    const float3 _e120 = weft_diffuse_lambert(float3(0.84808826, 0.71056646, 0.7484141));
-    float3 diffuse_direct = (((_e119 * _e120) * _e83) * n_dot_l);
-    float3 _e124 = n;
-    const float3 _e125 = weft_sh_irradiance(_e124);
-    float3 _e126 = ambient_kd;
-    float3 diffuse_indirect = ((_e125 * _e126) * float3(0.84808826, 0.71056646, 0.7484141));
-    const float3 _e129 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
-    const float3 _e132 = weft_prefiltered_radiance(reflect(-(_e20), _e129), 0.45);
-    float3 _e133 = env_brdf;
-    float3 spec_indirect = ((_e132 * _e133) * 1.0);
-    float3 _e138 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e138 + spec_indirect)));
+    float3 _e121 = diffuse_kd;
+    const float3 _e122 = weft_diffuse_lambert(float3(0.84808826, 0.71056646, 0.7484141));
+    float3 diffuse_direct = (((_e121 * _e122) * _e83) * n_dot_l);
+    float3 _e126 = n;
+    const float3 _e127 = weft_sh_irradiance(_e126);
+    float3 _e128 = ambient_kd;
+    float3 diffuse_indirect = ((_e127 * _e128) * float3(0.84808826, 0.71056646, 0.7484141));
+    const float3 _e131 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
+    const float3 _e134 = weft_prefiltered_radiance(reflect(-(_e20), _e131), 0.45);
+    float3 _e135 = env_brdf;
+    float3 spec_indirect = ((_e134 * _e135) * 1.0);
+    float3 _e140 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e140 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -25,22 +25,31 @@ struct WeftVaryings {
     vec4 world_tangent;
     vec2 uv0_;
 };
+struct SatinLayers {
+    vec2 narrow;
+    vec2 wide;
+};
+struct WeftMaterial {
+    vec4 base_color;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
-const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
 layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -53,6 +62,10 @@ float weft_pow5_(float x) {
     return ((x2_ * x2_) * x);
 }
 
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
@@ -61,16 +74,16 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
-    float len2_ = dot(v, v);
-    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a);
-    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+    float a_1 = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a_1);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -163,26 +176,11 @@ vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
     return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-mat3x3 weft_rotate_tangent_frame_cs(mat3x3 frame_1, float c_1, float s) {
-    float len2_2 = ((c_1 * c_1) + (s * s));
-    float inv = inversesqrt(max(len2_2, 1e-20));
-    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
-    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
-    vec3 t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
-    vec3 b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
-    return mat3x3(t_1, b_2, frame_1[2]);
-}
-
-mat3x3 weft_rotate_tangent_frame(mat3x3 frame_2, float angle) {
-    mat3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
-    return _e4;
-}
-
 vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
     float _e2 = weft_clamp_roughness(roughness_4);
-    float a_1 = (_e2 * _e2);
-    float k = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), vec2(0.001));
+    float a_2 = (_e2 * _e2);
+    float k_1 = clamp(anisotropy, -1.0, 1.0);
+    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
@@ -201,108 +199,127 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e6 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e6 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
     float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
-    float _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e11 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e10 * _e11) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_3, vec3 v_3, float anisotropy_1, float roughness_5) {
-    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_3[2];
-    vec3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
-    vec3 aniso_t = cross(dir_1, v_3);
+vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_4, float anisotropy_1, float roughness_5) {
+    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    vec3 n_4 = frame_1[2];
+    vec3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-float gauze_grid_coverage(vec2 cell, vec2 w, float gap) {
-    float g = clamp(gap, 0.0, 1.0);
-    vec2 d_1 = abs((fract(cell) - vec2(0.5)));
-    vec2 ww = max(w, vec2(0.0001));
-    vec2 ramp = clamp((((vec2((0.5 * g)) - d_1) / ww) + vec2(0.5)), vec2(0.0), vec2(1.0));
-    vec2 open = mix(ramp, vec2(g), clamp(((ww * 2.0) - vec2(1.0)), vec2(0.0), vec2(1.0)));
-    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
-    return (1.0 - open_xy);
+float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
+    float s = 0.0;
+    float _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    float _e7 = s;
+    return _e7;
+}
+
+vec3 satin_env(mat3x3 frame_2, vec3 v_5, float k, float roughness_6) {
+    vec3 bent_1 = vec3(0.0);
+    vec3 c_1 = vec3(0.0);
+    vec3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    vec3 _e7 = bent_1;
+    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
+    vec3 _e11 = c_1;
+    return _e11;
 }
 
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
-    bool front_facing = gl_FrontFacing;
     vec3 n = vec3(0.0);
-    vec3 spec_direct = vec3(0.0);
-    vec3 env_brdf = vec3(0.0);
+    SatinLayers layers = SatinLayers(vec2(0.0), vec2(0.0));
+    vec3 specular = vec3(0.0);
     vec3 diffuse_kd = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
-    vec2 uv_s = (in_1.uv0_ * 60.0);
-    vec2 grid_w = fwidth(uv_s);
-    float _e16 = gauze_grid_coverage(uv_s, grid_w, 0.0);
-    float mesh = (1.0 * _e16);
+    vec3 bent = vec3(0.0);
+    vec4 _e3 = _group_1_binding_0_fs.base_color;
+    vec4 base_rgba = (_e3 * vec4(1.0, 1.0, 1.0, 1.0));
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
     vec3 _e20 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    vec3 _e26 = weft_safe_normalize((in_1.world_normal * face), _e20);
-    n = _e26;
-    vec3 _e28 = n;
-    mat3x3 _e30 = weft_tangent_frame(_e28, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e26, _e20)), 1.0);
-    float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float s_3 = pow(max(sin_v, 1e-8), 3.0);
-    float alpha = clamp(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * 0.3069396)))) * 1.0), 0.0, 1.0);
-    float coverage = clamp(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * 1.0), 0.0, 1.0);
-    mat3x3 _e67 = weft_rotate_tangent_frame(_e30, 1.5707964);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = n;
-    vec3 _e73 = weft_safe_normalize((_e70 + _e20), _e72);
-    vec3 _e74 = n;
-    float _e76 = weft_clamp_cos(dot(_e74, _e20));
-    vec3 _e77 = n;
-    float n_dot_l = clamp(dot(_e77, _e70), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e20, _e73), 0.0, 1.0);
-    vec2 _e82 = weft_aniso_alpha_kulla(0.45, 0.8);
-    vec3 _e83 = weft_main_light_radiance();
+    vec3 _e22 = weft_safe_normalize(in_1.world_normal, _e20);
+    n = _e22;
+    vec3 _e24 = n;
+    mat3x3 _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
+    vec3 _e27 = weft_main_light_direction();
+    vec3 _e29 = n;
+    vec3 _e30 = weft_safe_normalize((_e27 + _e20), _e29);
+    vec3 _e31 = n;
+    float _e33 = weft_clamp_cos(dot(_e31, _e20));
+    vec3 _e34 = n;
+    float n_dot_l = clamp(dot(_e34, _e27), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e20, _e30), 0.0, 1.0);
+    vec3 _e39 = weft_main_light_radiance();
+    vec2 _e42 = weft_aniso_alpha_kulla(0.4, 0.85);
+    layers.narrow = _e42;
+    vec2 _e44 = weft_aniso_alpha_kulla(0.8, 0.85);
+    layers.wide = _e44;
+    vec3 f0_2 = mix(vec3(0.04), base, 0.0);
+    vec3 diffuse_albedo = (base * 1.0);
+    vec3 _e51 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        vec3 _e91 = weft_aniso_to_frame(_e30, _e20);
-        vec3 _e92 = weft_aniso_to_frame(_e30, _e70);
-        vec3 _e93 = weft_aniso_to_frame(_e67, _e20);
-        vec3 _e94 = weft_aniso_to_frame(_e67, _e70);
-        float _e97 = weft_spec_ggx_aniso(_e91, _e92, _e82.x, _e82.y);
-        float _e100 = weft_spec_ggx_aniso(_e93, _e94, _e82.x, _e82.y);
-        float lobe = mix(_e97, _e100, 0.0);
-        vec3 _e102 = weft_f_schlick(vec3(0.04), v_dot_h_1);
-        spec_direct = ((((lobe * _e102) * vec3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83);
-        vec3 _e108 = weft_f_schlick(vec3(0.04), _e76);
-        diffuse_kd = (vec3(1.0) - (vec3(1.0, 0.8900054, 0.93310684) * _e108));
-        vec2 _e111 = weft_env_brdf_lut(_e76, 0.45);
-        vec3 _e112 = weft_env_brdf_from_lut(vec3(0.04), _e111);
-        env_brdf = (_e112 * vec3(1.0, 0.8900054, 0.93310684));
-        vec3 _e115 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e115), vec3(0.0));
+        float _e56 = weft_max3_(vec3(1.0, 0.60382736, 0.6382832));
+        vec3 t1_ = mix(vec3(1.0, 0.60382736, 0.6382832), vec3(_e56), 0.5);
+        float _e60 = weft_max3_(vec3(0.31854677, 0.033104766, 0.05087609));
+        vec3 t2_ = mix(vec3(0.31854677, 0.033104766, 0.05087609), vec3(_e60), 0.5);
+        float _e65 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e65));
+        vec3 w1_ = (t1_ * norm);
+        vec3 w2_ = (t2_ * norm);
+        vec3 _e72 = weft_aniso_to_frame(_e26, _e20);
+        vec3 _e73 = weft_aniso_to_frame(_e26, _e27);
+        vec2 _e75 = layers.narrow;
+        float _e76 = satin_lobe_reference(_e72, _e73, _e75);
+        vec2 _e78 = layers.wide;
+        float _e79 = satin_lobe_reference(_e72, _e73, _e78);
+        specular = (((((w1_ * _e76) + (w2_ * _e79)) * _e51) * 1.0) * _e39);
+        vec3 _e88 = weft_f_schlick(f0_2, _e33);
+        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e88)), vec3(0.0));
+        vec2 _e93 = weft_env_brdf_lut(_e33, 0.4);
+        vec3 _e94 = weft_env_brdf_from_lut(f0_2, _e93);
+        vec3 e1_ = (_e94 * w1_);
+        vec2 _e96 = weft_env_brdf_lut(_e33, 0.8);
+        vec3 _e97 = weft_env_brdf_from_lut(f0_2, _e96);
+        vec3 e2_ = (_e97 * w2_);
+        {
+            vec3 _e99 = satin_env(_e26, _e20, 0.85, 0.4);
+            vec3 _e101 = satin_env(_e26, _e20, 0.85, 0.8);
+            indirect_specular = (((_e99 * e1_) + (_e101 * e2_)) * 1.0);
+        }
+        ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
-    vec3 _e119 = diffuse_kd;
-    vec3 _e120 = weft_diffuse_lambert(vec3(0.84808826, 0.71056646, 0.7484141));
-    vec3 diffuse_direct = (((_e119 * _e120) * _e83) * n_dot_l);
-    vec3 _e124 = n;
-    vec3 _e125 = weft_sh_irradiance(_e124);
-    vec3 _e126 = ambient_kd;
-    vec3 diffuse_indirect = ((_e125 * _e126) * vec3(0.84808826, 0.71056646, 0.7484141));
-    vec3 _e129 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
-    vec3 _e132 = weft_prefiltered_radiance(reflect(-(_e20), _e129), 0.45);
-    vec3 _e133 = env_brdf;
-    vec3 spec_indirect = ((_e132 * _e133) * 1.0);
-    vec3 _e138 = spec_direct;
-    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e138 + spec_indirect)));
-    vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
+    vec3 _e110 = diffuse_kd;
+    vec3 _e111 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e115 = specular;
+    vec3 direct = ((((_e110 * _e111) * _e39) * n_dot_l) + _e115);
+    vec3 _e117 = indirect_specular;
+    vec3 _e119 = n;
+    vec3 _e120 = weft_sh_irradiance(_e119);
+    vec3 _e122 = ambient_kd;
+    vec3 indirect = ((_e117 * 1.0) + (((_e120 * 1.0) * _e122) * diffuse_albedo));
+    vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -28,16 +28,25 @@ struct WeftVaryings {
     @location(3) uv0_: vec2<f32>,
 }
 
+struct SatinLayers {
+    narrow: vec2<f32>,
+    wide: vec2<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
-const GAUZE_LN_MAX_TRANSMITTANCE: f32 = 6.9077554f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -51,10 +60,16 @@ var weft_brdf_lut: texture_2d<f32>;
 var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
 
 fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
     return ((x2_ * x2_) * x);
+}
+
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -65,16 +80,16 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v, v);
-    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     let s_1 = select(-1f, 1f, (n_1.z >= 0f));
-    let a = (-1f / (s_1 + n_1.z));
-    let b = ((n_1.x * n_1.y) * a);
-    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+    let a_1 = (-1f / (s_1 + n_1.z));
+    let b = ((n_1.x * n_1.y) * a_1);
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -168,26 +183,11 @@ fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-fn weft_rotate_tangent_frame_cs(frame_1: mat3x3<f32>, c_1: f32, s: f32) -> mat3x3<f32> {
-    let len2_2 = ((c_1 * c_1) + (s * s));
-    let inv = inverseSqrt(max(len2_2, 0.00000000000000000001f));
-    let cc = select(1f, (c_1 * inv), (len2_2 > 0.00000000000000000001f));
-    let ss = select(0f, (s * inv), (len2_2 > 0.00000000000000000001f));
-    let t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
-    let b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
-    return mat3x3<f32>(t_1, b_2, frame_1[2]);
-}
-
-fn weft_rotate_tangent_frame(frame_2: mat3x3<f32>, angle: f32) -> mat3x3<f32> {
-    let _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
-    return _e4;
-}
-
 fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
     let _e2 = weft_clamp_roughness(roughness_4);
-    let a_1 = (_e2 * _e2);
-    let k = clamp(anisotropy, -1f, 1f);
-    return max(vec2<f32>((a_1 * (1f + k)), (a_1 * (1f - k))), vec2(0.001f));
+    let a_2 = (_e2 * _e2);
+    let k_1 = clamp(anisotropy, -1f, 1f);
+    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
 }
 
 fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
@@ -206,40 +206,52 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_spec_ggx_aniso(v_2: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
-    let _e6 = weft_safe_normalize((v_2 + l_1), vec3<f32>(0f, 0f, 1f));
+fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e6 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
     let _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
-    let _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    let _e11 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e10 * _e11) * saturate(l_1.z));
 }
 
-fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
-    let k_1 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_3[2];
-    let dir_1 = select(frame_3[0], frame_3[1], (k_1 >= 0f));
-    let aniso_t = cross(dir_1, v_3);
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+    let k_2 = clamp(anisotropy_1, -1f, 1f);
+    let n_4 = frame_1[2];
+    let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
+    let aniso_t = cross(dir_1, v_4);
     let aniso_n = cross(aniso_t, dir_1);
-    let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
+    let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
     let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
-fn gauze_grid_coverage(cell: vec2<f32>, w: vec2<f32>, gap: f32) -> f32 {
-    let g = clamp(gap, 0f, 1f);
-    let d_1 = abs((fract(cell) - vec2(0.5f)));
-    let ww = max(w, vec2(0.0001f));
-    let ramp = saturate((((vec2((0.5f * g)) - d_1) / ww) + vec2(0.5f)));
-    let open = mix(ramp, vec2(g), saturate(((ww * 2f) - vec2(1f))));
-    let open_xy = select(0f, (open.x * open.y), (g > 0f));
-    return (1f - open_xy);
+fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
+    var s: f32;
+
+    let _e5 = weft_spec_ggx_aniso(vf, lf, a.x, a.y);
+    s = _e5;
+    let _e7 = s;
+    return _e7;
+}
+
+fn satin_env(frame_2: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+    var bent_1: vec3<f32>;
+    var c_1: vec3<f32>;
+
+    let _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    bent_1 = _e4;
+    let _e7 = bent_1;
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    c_1 = _e9;
+    let _e11 = c_1;
+    return _e11;
 }
 
 @vertex 
@@ -266,70 +278,80 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
-    var spec_direct: vec3<f32>;
-    var env_brdf: vec3<f32>;
+    var layers: SatinLayers;
+    var specular: vec3<f32>;
     var diffuse_kd: vec3<f32>;
+    var indirect_specular: vec3<f32>;
     var ambient_kd: vec3<f32>;
+    var bent: vec3<f32>;
 
-    let uv_s = (in_1.uv0_ * 60f);
-    let grid_w = fwidth(uv_s);
-    let _e16 = gauze_grid_coverage(uv_s, grid_w, 0f);
-    let mesh = (1f * _e16);
+    let _e3 = material.base_color;
+    let base_rgba = (_e3 * vec4<f32>(1f, 1f, 1f, 1f));
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
     let _e20 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let face = select(-1f, 1f, front_facing);
-    let _e26 = weft_safe_normalize((in_1.world_normal * face), _e20);
-    n = _e26;
-    let _e28 = n;
-    let _e30 = weft_tangent_frame(_e28, in_1.world_tangent);
-    let cos_v = min(abs(dot(_e26, _e20)), 1f);
-    let sin_v = sqrt(max((1f - (cos_v * cos_v)), 0f));
-    let s_3 = pow(max(sin_v, 0.00000001f), 3f);
-    let alpha = saturate(((1f - ((1f - s_3) * (1f - (mesh * 0.3069396f)))) * 1f));
-    let coverage = saturate(((1f - ((1f - s_3) * (1f - mesh))) * 1f));
-    let _e67 = weft_rotate_tangent_frame(_e30, 1.5707964f);
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e20), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e20));
-    let _e77 = n;
-    let n_dot_l = saturate(dot(_e77, _e70));
-    let v_dot_h_1 = saturate(dot(_e20, _e73));
-    let _e82 = weft_aniso_alpha_kulla(0.45f, 0.8f);
-    let _e83 = weft_main_light_radiance();
+    let _e22 = weft_safe_normalize(in_1.world_normal, _e20);
+    n = _e22;
+    let _e24 = n;
+    let _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
+    let _e27 = weft_main_light_direction();
+    let _e29 = n;
+    let _e30 = weft_safe_normalize((_e27 + _e20), _e29);
+    let _e31 = n;
+    let _e33 = weft_clamp_cos(dot(_e31, _e20));
+    let _e34 = n;
+    let n_dot_l = saturate(dot(_e34, _e27));
+    let v_dot_h_1 = saturate(dot(_e20, _e30));
+    let _e39 = weft_main_light_radiance();
+    let _e42 = weft_aniso_alpha_kulla(0.4f, 0.85f);
+    layers.narrow = _e42;
+    let _e44 = weft_aniso_alpha_kulla(0.8f, 0.85f);
+    layers.wide = _e44;
+    let f0_2 = mix(vec3(0.04f), base, 0f);
+    let diffuse_albedo = (base * 1f);
+    let _e51 = weft_f_schlick(f0_2, v_dot_h_1);
     {
-        let _e91 = weft_aniso_to_frame(_e30, _e20);
-        let _e92 = weft_aniso_to_frame(_e30, _e70);
-        let _e93 = weft_aniso_to_frame(_e67, _e20);
-        let _e94 = weft_aniso_to_frame(_e67, _e70);
-        let _e97 = weft_spec_ggx_aniso(_e91, _e92, _e82.x, _e82.y);
-        let _e100 = weft_spec_ggx_aniso(_e93, _e94, _e82.x, _e82.y);
-        let lobe = mix(_e97, _e100, 0f);
-        let _e102 = weft_f_schlick(vec3(0.04f), v_dot_h_1);
-        spec_direct = ((((lobe * _e102) * vec3<f32>(1f, 0.8900054f, 0.93310684f)) * 1f) * _e83);
-        let _e108 = weft_f_schlick(vec3(0.04f), _e76);
-        diffuse_kd = (vec3(1f) - (vec3<f32>(1f, 0.8900054f, 0.93310684f) * _e108));
-        let _e111 = weft_env_brdf_lut(_e76, 0.45f);
-        let _e112 = weft_env_brdf_from_lut(vec3(0.04f), _e111);
-        env_brdf = (_e112 * vec3<f32>(1f, 0.8900054f, 0.93310684f));
-        let _e115 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e115), vec3(0f));
+        let _e56 = weft_max3_(vec3<f32>(1f, 0.60382736f, 0.6382832f));
+        let t1_ = mix(vec3<f32>(1f, 0.60382736f, 0.6382832f), vec3(_e56), 0.5f);
+        let _e60 = weft_max3_(vec3<f32>(0.31854677f, 0.033104766f, 0.05087609f));
+        let t2_ = mix(vec3<f32>(0.31854677f, 0.033104766f, 0.05087609f), vec3(_e60), 0.5f);
+        let _e65 = weft_max3_((t1_ + t2_));
+        let norm = (1f / max(1f, _e65));
+        let w1_ = (t1_ * norm);
+        let w2_ = (t2_ * norm);
+        let _e72 = weft_aniso_to_frame(_e26, _e20);
+        let _e73 = weft_aniso_to_frame(_e26, _e27);
+        let _e75 = layers.narrow;
+        let _e76 = satin_lobe_reference(_e72, _e73, _e75);
+        let _e78 = layers.wide;
+        let _e79 = satin_lobe_reference(_e72, _e73, _e78);
+        specular = (((((w1_ * _e76) + (w2_ * _e79)) * _e51) * 1f) * _e39);
+        let _e88 = weft_f_schlick(f0_2, _e33);
+        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e88)), vec3(0f));
+        let _e93 = weft_env_brdf_lut(_e33, 0.4f);
+        let _e94 = weft_env_brdf_from_lut(f0_2, _e93);
+        let e1_ = (_e94 * w1_);
+        let _e96 = weft_env_brdf_lut(_e33, 0.8f);
+        let _e97 = weft_env_brdf_from_lut(f0_2, _e96);
+        let e2_ = (_e97 * w2_);
+        {
+            let _e99 = satin_env(_e26, _e20, 0.85f, 0.4f);
+            let _e101 = satin_env(_e26, _e20, 0.85f, 0.8f);
+            indirect_specular = (((_e99 * e1_) + (_e101 * e2_)) * 1f);
+        }
+        ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
-    let _e119 = diffuse_kd;
-    let _e120 = weft_diffuse_lambert(vec3<f32>(0.84808826f, 0.71056646f, 0.7484141f));
-    let diffuse_direct = (((_e119 * _e120) * _e83) * n_dot_l);
-    let _e124 = n;
-    let _e125 = weft_sh_irradiance(_e124);
-    let _e126 = ambient_kd;
-    let diffuse_indirect = ((_e125 * _e126) * vec3<f32>(0.84808826f, 0.71056646f, 0.7484141f));
-    let _e129 = weft_aniso_bent_normal(_e30, _e20, 0.8f, 0.45f);
-    let _e132 = weft_prefiltered_radiance(reflect(-(_e20), _e129), 0.45f);
-    let _e133 = env_brdf;
-    let spec_indirect = ((_e132 * _e133) * 1f);
-    let _e138 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e138 + spec_indirect)));
-    let radiance = clamp(color, vec3(0f), vec3(65504f));
+    let _e110 = diffuse_kd;
+    let _e111 = weft_diffuse_lambert(diffuse_albedo);
+    let _e115 = specular;
+    let direct = ((((_e110 * _e111) * _e39) * n_dot_l) + _e115);
+    let _e117 = indirect_specular;
+    let _e119 = n;
+    let _e120 = weft_sh_irradiance(_e119);
+    let _e122 = ambient_kd;
+    let indirect = ((_e117 * 1f) + (((_e120 * 1f) * _e122) * diffuse_albedo));
+    let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

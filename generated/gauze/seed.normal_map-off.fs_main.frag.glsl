@@ -1,0 +1,372 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    vec4 base_map_st;
+    vec4 normal_map_st;
+    float normal_strength;
+    float thread_density;
+    float thread_transmittance;
+    float mesh_gap;
+    float anisotropy;
+    float anisotropic_intensity;
+    vec4 scatter_color;
+    float scatter_intensity;
+    float pattern_threshold;
+    float pattern_rotation;
+    float sampling_density;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ANISO_ALPHA = 0.001;
+const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 2) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_6_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_7_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow4_(float x) {
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+}
+
+vec3 weft_f_schlick_roughness(vec3 f0_, float n_dot_v, float roughness_1) {
+    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
+    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_);
+    return (f0_ + ((f90_ - f0_) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_1 = (_e3 * _e3);
+    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_approx(vec3 f0_1, float n_dot_v_2, float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    float _e9 = weft_max3_(f0_1);
+    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
+    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
+    return (mix(f0_1, vec3(grazing), _e17) * surface_reduction);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_4) {
+    float r_1 = clamp(roughness_4, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
+    float _e4 = weft_specular_mip(roughness_5);
+    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_2.xyz, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_2);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_2) {
+    return vec3(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+}
+
+mat3x3 weft_rotate_tangent_frame_cs(mat3x3 frame_1, float c_1, float s) {
+    float len2_2 = ((c_1 * c_1) + (s * s));
+    float inv = inversesqrt(max(len2_2, 1e-20));
+    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
+    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
+    vec3 t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
+    vec3 b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
+    return mat3x3(t_1, b_2, frame_1[2]);
+}
+
+mat3x3 weft_rotate_tangent_frame(mat3x3 frame_2, float angle) {
+    mat3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
+    return _e4;
+}
+
+vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_6);
+    float a_2 = (_e2 * _e2);
+    float k_1 = clamp(anisotropy, -1.0, 1.0);
+    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
+}
+
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_3 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    float d = (1.0 / ((WEFT_PI * _e5) * _e5));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_3, vec3 v_2, float anisotropy_1, float roughness_7) {
+    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    vec3 n_4 = frame_3[2];
+    vec3 dir_1 = ((k_2 >= 0.0) ? frame_3[1] : frame_3[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+float gauze_grid_coverage(vec2 cell, vec2 w, float gap) {
+    float g = clamp(gap, 0.0, 1.0);
+    vec2 d_1 = abs((fract(cell) - vec2(0.5)));
+    vec2 ww = max(w, vec2(0.0001));
+    vec2 ramp = clamp((((vec2((0.5 * g)) - d_1) / ww) + vec2(0.5)), vec2(0.0), vec2(1.0));
+    vec2 open = mix(ramp, vec2(g), clamp(((ww * 2.0) - vec2(1.0)), vec2(0.0), vec2(1.0)));
+    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
+    return (1.0 - open_xy);
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    bool front_facing = gl_FrontFacing;
+    vec3 n = vec3(0.0);
+    vec3 spec_direct = vec3(0.0);
+    vec3 env_brdf = vec3(0.0);
+    vec3 diffuse_kd = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    float lobe = 0.0;
+    vec4 _e5 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    vec4 _e9 = _group_1_binding_0_fs.base_color;
+    vec4 _e12 = texture(_group_1_binding_3_fs, vec2(_e6));
+    vec4 base_rgba = (_e9 * _e12);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float base_alpha = clamp(base_rgba.w, 0.0, 1.0);
+    float _e20 = _group_1_binding_0_fs.roughness;
+    float roughness_8 = clamp(_e20, 0.0, 1.0);
+    float _e24 = _group_1_binding_0_fs.anisotropy;
+    float anisotropy_2 = clamp(_e24, -1.0, 1.0);
+    float _e31 = _group_1_binding_0_fs.sampling_density;
+    vec2 uv_s = (in_1.uv0_ * _e31);
+    vec4 _e35 = texture(_group_1_binding_5_fs, vec2(uv_s));
+    float mesh_tex = clamp(_e35.x, 0.0, 1.0);
+    vec4 _e40 = texture(_group_1_binding_6_fs, vec2(uv_s));
+    float noise = clamp(_e40.x, 0.0, 1.0);
+    vec4 _e45 = texture(_group_1_binding_7_fs, vec2(uv_s));
+    float pattern = _e45.x;
+    vec2 grid_w = fwidth(uv_s);
+    float pattern_w = fwidth(pattern);
+    float _e51 = _group_1_binding_0_fs.mesh_gap;
+    float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
+    float mesh = (mesh_tex * _e52);
+    vec3 _e59 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    float face = (front_facing ? 1.0 : -1.0);
+    vec3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
+    n = _e65;
+    vec3 _e67 = n;
+    mat3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
+    float cos_v = min(abs(dot(_e65, _e59)), 1.0);
+    float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
+    float _e82 = _group_1_binding_0_fs.thread_density;
+    float density = clamp(_e82, 0.0, 200.0);
+    float s_3 = pow(max(sin_v, 1e-8), density);
+    float _e91 = _group_1_binding_0_fs.thread_transmittance;
+    float transmittance = clamp(_e91, 1.0, 1000.0);
+    float thread_opacity = clamp((1.0 - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)), 0.0, 1.0);
+    float alpha = clamp(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha), 0.0, 1.0);
+    float coverage = clamp(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha), 0.0, 1.0);
+    float _e122 = _group_1_binding_0_fs.pattern_rotation;
+    float rot = radians(_e122);
+    mat3x3 _e124 = weft_rotate_tangent_frame(_e69, rot);
+    float _e127 = _group_1_binding_0_fs.pattern_threshold;
+    float above_hard = ((pattern > _e127) ? 1.0 : 0.0);
+    float _e134 = _group_1_binding_0_fs.pattern_threshold;
+    float above_aa = clamp((((pattern - _e134) / max(pattern_w, 0.0001)) + 0.5), 0.0, 1.0);
+    vec3 _e142 = weft_main_light_direction();
+    vec3 _e144 = n;
+    vec3 _e145 = weft_safe_normalize((_e142 + _e59), _e144);
+    vec3 _e146 = n;
+    float _e148 = weft_clamp_cos(dot(_e146, _e59));
+    vec3 _e149 = n;
+    float n_dot_l_1 = clamp(dot(_e149, _e142), 0.0, 1.0);
+    float v_dot_h = clamp(dot(_e59, _e145), 0.0, 1.0);
+    vec2 _e154 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    vec3 _e155 = weft_main_light_radiance();
+    vec4 _e158 = _group_1_binding_0_fs.scatter_color;
+    vec3 scatter = max(_e158.xyz, vec3(0.0));
+    vec3 tint = clamp(scatter, vec3(0.0), vec3(1.0));
+    vec3 f0_2 = vec3(0.04);
+    {
+        mat3x3 _e171 = weft_rotate_tangent_frame(_e69, (rot * above_hard));
+        vec3 _e172 = weft_aniso_to_frame(_e171, _e145);
+        float _e178 = weft_d_ggx_aniso_unnormalized(_e172.x, _e172.y, _e172.z, _e154.x, _e154.y);
+        float _e179 = weft_v_schlick_ggx(_e148, n_dot_l_1, roughness_8);
+        float _e182 = _group_1_binding_0_fs.anisotropic_intensity;
+        float _e187 = _group_1_binding_0_fs.scatter_intensity;
+        float gain = (max(_e182, 0.0) * max(_e187, 0.0));
+        spec_direct = ((((((_e178 * _e179) * n_dot_l_1) * gain) * noise) * scatter) * _e155);
+        diffuse_kd = vec3(1.0);
+        vec3 _e199 = weft_env_brdf_approx(f0_2, _e148, roughness_8);
+        env_brdf = _e199;
+        vec3 _e202 = weft_f_schlick_roughness(f0_2, _e148, roughness_8);
+        ambient_kd = (vec3(1.0) - _e202);
+    }
+    vec3 _e204 = diffuse_kd;
+    vec3 _e205 = weft_diffuse_lambert(base);
+    vec3 diffuse_direct = (((_e204 * _e205) * _e155) * n_dot_l_1);
+    vec3 _e209 = n;
+    vec3 _e210 = weft_sh_irradiance(_e209);
+    vec3 _e211 = ambient_kd;
+    vec3 diffuse_indirect = ((_e210 * _e211) * base);
+    vec3 _e214 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_8);
+    vec3 _e217 = weft_prefiltered_radiance(reflect(-(_e59), _e214), roughness_8);
+    vec3 _e218 = env_brdf;
+    vec3 spec_indirect = ((_e217 * _e218) * noise);
+    vec3 _e223 = spec_direct;
+    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e223 + spec_indirect)));
+    vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

@@ -1,0 +1,399 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    base_map_st: vec4<f32>,
+    normal_map_st: vec4<f32>,
+    normal_strength: f32,
+    thread_density: f32,
+    thread_transmittance: f32,
+    mesh_gap: f32,
+    anisotropy: f32,
+    anisotropic_intensity: f32,
+    scatter_color: vec4<f32>,
+    scatter_intensity: f32,
+    pattern_threshold: f32,
+    pattern_rotation: f32,
+    sampling_density: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
+const GAUZE_LN_MAX_TRANSMITTANCE: f32 = 6.9077554f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var mesh_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var noise_map: texture_2d<f32>;
+@group(1) @binding(7) 
+var pattern_map: texture_2d<f32>;
+
+fn weft_pow4_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+fn weft_pow5_(x_1: f32) -> f32 {
+    let x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s_1 = select(-1f, 1f, (n_1.z >= 0f));
+    let a = (-1f / (s_1 + n_1.z));
+    let b = ((n_1.x * n_1.y) * a);
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+}
+
+fn weft_f_schlick_roughness(f0_: vec3<f32>, n_dot_v: f32, roughness_1: f32) -> vec3<f32> {
+    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
+    let f90_ = max(vec3((1f - saturate(roughness_1))), f0_);
+    return (f0_ + ((f90_ - f0_) * _e6));
+}
+
+fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_1 = (_e3 * _e3);
+    let k = (((a_1 + 1f) * (a_1 + 1f)) * 0.125f);
+    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
+    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
+    return (0.25f / (gv * gl));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_approx(f0_1: vec3<f32>, n_dot_v_2: f32, roughness_3: f32) -> vec3<f32> {
+    let r = saturate(roughness_3);
+    let surface_reduction = (1f / ((r * r) + 1f));
+    let _e9 = weft_max3_(f0_1);
+    let grazing = saturate((_e9 + (1f - r)));
+    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
+    return (mix(f0_1, vec3(grazing), _e17) * surface_reduction);
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_4: f32) -> f32 {
+    let r_1 = saturate(roughness_4);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_5);
+    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, vec3(0f));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_3);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_2 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_3, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_3);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_aniso_to_frame(frame: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame[0], x_2), dot(frame[1], x_2), dot(frame[2], x_2));
+}
+
+fn weft_rotate_tangent_frame_cs(frame_1: mat3x3<f32>, c_1: f32, s: f32) -> mat3x3<f32> {
+    let len2_2 = ((c_1 * c_1) + (s * s));
+    let inv = inverseSqrt(max(len2_2, 0.00000000000000000001f));
+    let cc = select(1f, (c_1 * inv), (len2_2 > 0.00000000000000000001f));
+    let ss = select(0f, (s * inv), (len2_2 > 0.00000000000000000001f));
+    let t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
+    let b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
+    return mat3x3<f32>(t_1, b_2, frame_1[2]);
+}
+
+fn weft_rotate_tangent_frame(frame_2: mat3x3<f32>, angle: f32) -> mat3x3<f32> {
+    let _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
+    return _e4;
+}
+
+fn weft_aniso_alpha_kulla(roughness_6: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_6);
+    let a_2 = (_e2 * _e2);
+    let k_1 = clamp(anisotropy, -1f, 1f);
+    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
+}
+
+fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
+    let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    let x_3 = (t_dot_h / at);
+    let y = (b_dot_h / ab);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+}
+
+fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
+    let _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    let d = (1f / ((WEFT_PI * _e5) * _e5));
+    return select(0f, d, (n_dot_h_1 > 0f));
+}
+
+fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
+    let k_2 = clamp(anisotropy_1, -1f, 1f);
+    let n_4 = frame_3[2];
+    let dir_1 = select(frame_3[0], frame_3[1], (k_2 >= 0f));
+    let aniso_t = cross(dir_1, v_2);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+fn gauze_grid_coverage(cell: vec2<f32>, w: vec2<f32>, gap: f32) -> f32 {
+    let g = clamp(gap, 0f, 1f);
+    let d_1 = abs((fract(cell) - vec2(0.5f)));
+    let ww = max(w, vec2(0.0001f));
+    let ramp = saturate((((vec2((0.5f * g)) - d_1) / ww) + vec2(0.5f)));
+    let open = mix(ramp, vec2(g), saturate(((ww * 2f) - vec2(1f))));
+    let open_xy = select(0f, (open.x * open.y), (g > 0f));
+    return (1f - open_xy);
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var spec_direct: vec3<f32>;
+    var env_brdf: vec3<f32>;
+    var diffuse_kd: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var lobe: f32;
+
+    let _e5 = material.base_map_st;
+    let _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    let _e9 = material.base_color;
+    let _e12 = textureSample(base_map, material_sampler, _e6);
+    let base_rgba = (_e9 * _e12);
+    let base = saturate(base_rgba.xyz);
+    let base_alpha = saturate(base_rgba.w);
+    let _e20 = material.roughness;
+    let roughness_8 = saturate(_e20);
+    let _e24 = material.anisotropy;
+    let anisotropy_2 = clamp(_e24, -1f, 1f);
+    let _e31 = material.sampling_density;
+    let uv_s = (in_1.uv0_ * _e31);
+    let _e35 = textureSample(mesh_map, material_sampler, uv_s);
+    let mesh_tex = saturate(_e35.x);
+    let _e40 = textureSample(noise_map, material_sampler, uv_s);
+    let noise = saturate(_e40.x);
+    let _e45 = textureSample(pattern_map, material_sampler, uv_s);
+    let pattern = _e45.x;
+    let grid_w = fwidth(uv_s);
+    let pattern_w = fwidth(pattern);
+    let _e51 = material.mesh_gap;
+    let _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
+    let mesh = (mesh_tex * _e52);
+    let _e59 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let face = select(-1f, 1f, front_facing);
+    let _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
+    n = _e65;
+    let _e67 = n;
+    let _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
+    let cos_v = min(abs(dot(_e65, _e59)), 1f);
+    let sin_v = sqrt(max((1f - (cos_v * cos_v)), 0f));
+    let _e82 = material.thread_density;
+    let density = clamp(_e82, 0f, 200f);
+    let s_3 = pow(max(sin_v, 0.00000001f), density);
+    let _e91 = material.thread_transmittance;
+    let transmittance = clamp(_e91, 1f, 1000f);
+    let thread_opacity = saturate((1f - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)));
+    let alpha = saturate(((1f - ((1f - s_3) * (1f - (mesh * thread_opacity)))) * base_alpha));
+    let coverage = saturate(((1f - ((1f - s_3) * (1f - mesh))) * base_alpha));
+    let _e122 = material.pattern_rotation;
+    let rot = radians(_e122);
+    let _e124 = weft_rotate_tangent_frame(_e69, rot);
+    let _e127 = material.pattern_threshold;
+    let above_hard = select(0f, 1f, (pattern > _e127));
+    let _e134 = material.pattern_threshold;
+    let above_aa = saturate((((pattern - _e134) / max(pattern_w, 0.0001f)) + 0.5f));
+    let _e142 = weft_main_light_direction();
+    let _e144 = n;
+    let _e145 = weft_safe_normalize((_e142 + _e59), _e144);
+    let _e146 = n;
+    let _e148 = weft_clamp_cos(dot(_e146, _e59));
+    let _e149 = n;
+    let n_dot_l_1 = saturate(dot(_e149, _e142));
+    let v_dot_h = saturate(dot(_e59, _e145));
+    let _e154 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    let _e155 = weft_main_light_radiance();
+    let _e158 = material.scatter_color;
+    let scatter = max(_e158.xyz, vec3(0f));
+    let tint = saturate(scatter);
+    let f0_2 = vec3(0.04f);
+    {
+        let _e171 = weft_rotate_tangent_frame(_e69, (rot * above_hard));
+        let _e172 = weft_aniso_to_frame(_e171, _e145);
+        let _e178 = weft_d_ggx_aniso_unnormalized(_e172.x, _e172.y, _e172.z, _e154.x, _e154.y);
+        let _e179 = weft_v_schlick_ggx(_e148, n_dot_l_1, roughness_8);
+        let _e182 = material.anisotropic_intensity;
+        let _e187 = material.scatter_intensity;
+        let gain = (max(_e182, 0f) * max(_e187, 0f));
+        spec_direct = ((((((_e178 * _e179) * n_dot_l_1) * gain) * noise) * scatter) * _e155);
+        diffuse_kd = vec3(1f);
+        let _e199 = weft_env_brdf_approx(f0_2, _e148, roughness_8);
+        env_brdf = _e199;
+        let _e202 = weft_f_schlick_roughness(f0_2, _e148, roughness_8);
+        ambient_kd = (vec3(1f) - _e202);
+    }
+    let _e204 = diffuse_kd;
+    let _e205 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e204 * _e205) * _e155) * n_dot_l_1);
+    let _e209 = n;
+    let _e210 = weft_sh_irradiance(_e209);
+    let _e211 = ambient_kd;
+    let diffuse_indirect = ((_e210 * _e211) * base);
+    let _e214 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_8);
+    let _e217 = weft_prefiltered_radiance(reflect(-(_e59), _e214), roughness_8);
+    let _e218 = env_brdf;
+    let spec_indirect = ((_e217 * _e218) * noise);
+    let _e223 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e223 + spec_indirect)));
+    let radiance = clamp(color, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}

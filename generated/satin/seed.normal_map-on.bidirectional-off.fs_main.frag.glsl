@@ -1,0 +1,383 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    vec4 base_map_st;
+    float normal_strength;
+    vec4 noise_map_st;
+    float specular_intensity;
+    vec4 specular_color;
+    vec4 second_specular_color;
+    float second_layer_width;
+    float anisotropy;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct SatinLayers {
+    vec2 narrow;
+    vec2 wide;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ANISO_ALPHA = 0.001;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_6_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow4_(float x) {
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a_1);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_luminance(vec3 c_1) {
+    return dot(c_1, vec3(0.2126, 0.7152, 0.0722));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_1) {
+    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
+    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = (_e3 * _e3);
+    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    float _e9 = weft_max3_(f0_2);
+    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
+    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
+    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_4) {
+    float r_1 = clamp(roughness_4, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
+    float _e4 = weft_specular_mip(roughness_5);
+    vec4 c_3 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_3.xyz, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
+    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+}
+
+vec2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_6);
+    float a_3 = (_e2 * _e2);
+    float k_1 = clamp(anisotropy, -1.0, 1.0);
+    return max(vec2((a_3 * (1.0 + k_1)), (a_3 * (1.0 - k_1))), vec2(0.001));
+}
+
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_3 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    float d_1 = (1.0 / ((WEFT_PI * _e5) * _e5));
+    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_7) {
+    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    vec3 n_4 = frame_2[2];
+    vec3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+vec3 satin_light_blend(vec3 c_2, vec3 light) {
+    float _e2 = weft_luminance(light);
+    float _e4 = weft_max3_(c_2);
+    return mix((c_2 * _e2), (light * _e4), 0.5);
+}
+
+float satin_d_seed(vec3 hf, vec2 a) {
+    float d = 0.0;
+    float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
+    d = _e7;
+    float _e9 = d;
+    return _e9;
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 n = vec3(0.0);
+    SatinLayers layers = SatinLayers(vec2(0.0), vec2(0.0));
+    vec3 specular = vec3(0.0);
+    vec3 diffuse_kd = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    vec3 bent = vec3(0.0);
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
+    vec3 rmo = _e19.xyz;
+    float _e23 = _group_1_binding_0_fs.roughness;
+    float roughness_8 = clamp((_e23 * rmo.x), 0.0, 1.0);
+    float _e29 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp((_e29 * rmo.y), 0.0, 1.0);
+    float _e36 = _group_1_binding_0_fs.occlusion_strength;
+    float ao = clamp(mix(1.0, rmo.z, _e36), 0.0, 1.0);
+    float _e42 = _group_1_binding_0_fs.anisotropy;
+    float anisotropy_2 = clamp(_e42, -1.0, 1.0);
+    float _e48 = _group_1_binding_0_fs.second_layer_width;
+    float width = clamp(_e48, 1.0, 4.0);
+    float roughness2_ = min((roughness_8 * width), 1.0);
+    vec4 _e58 = _group_1_binding_0_fs.noise_map_st;
+    vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
+    vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
+    float noise = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
+    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
+    n = _e76;
+    {
+        vec3 _e78 = n;
+        mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
+        vec4 _e83 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_1 = _e83.xyz;
+        float _e87 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e88 = weft_unpack_normal(texel_1, _e87);
+        vec3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
+        n = _e89;
+    }
+    vec3 _e90 = n;
+    mat3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
+    vec3 _e93 = weft_main_light_direction();
+    vec3 _e95 = n;
+    vec3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
+    vec3 _e97 = n;
+    float _e99 = weft_clamp_cos(dot(_e97, _e74));
+    vec3 _e100 = n;
+    float n_dot_l_1 = clamp(dot(_e100, _e93), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e74, _e96), 0.0, 1.0);
+    vec3 _e105 = weft_main_light_radiance();
+    vec2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e108;
+    vec2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e110;
+    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo = (base * (1.0 - metallic));
+    vec4 _e119 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_ = clamp(_e119.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e124 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    {
+        vec3 _e132 = weft_aniso_to_frame(_e92, _e96);
+        vec2 _e134 = layers.narrow;
+        float _e135 = satin_d_seed(_e132, _e134);
+        vec2 _e137 = layers.wide;
+        float _e138 = satin_d_seed(_e132, _e137);
+        float d2_ = (_e138 / width);
+        float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
+        float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
+        vec3 _e142 = satin_light_blend(c1_, _e105);
+        vec3 _e143 = satin_light_blend(c2_, _e105);
+        float _e146 = _group_1_binding_0_fs.specular_intensity;
+        float mag = max(_e146, 0.0);
+        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1));
+        diffuse_kd = (vec3(1.0) - _e127);
+        vec3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
+        bent = _e160;
+        vec3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
+        vec3 _e164 = bent;
+        vec3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);
+        indirect_specular = ((_e166 * _e162) * noise);
+        vec3 _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
+        ambient_kd = (vec3(1.0) - _e171);
+    }
+    vec3 _e173 = diffuse_kd;
+    vec3 _e174 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e178 = specular;
+    vec3 direct = ((((_e173 * _e174) * _e105) * n_dot_l_1) + _e178);
+    vec3 _e180 = indirect_specular;
+    vec3 _e182 = n;
+    vec3 _e183 = weft_sh_irradiance(_e182);
+    vec3 _e185 = ambient_kd;
+    vec3 indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
+    vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

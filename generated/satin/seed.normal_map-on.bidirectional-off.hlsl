@@ -1,0 +1,465 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    int _pad4_0;
+    float4 base_map_st;
+    float normal_strength;
+    int _pad6_0;
+    int _pad6_1;
+    int _pad6_2;
+    float4 noise_map_st;
+    float specular_intensity;
+    int _pad8_0;
+    int _pad8_1;
+    int _pad8_2;
+    float4 specular_color;
+    float4 second_specular_color;
+    float second_layer_width;
+    float anisotropy;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct SatinLayers {
+    float2 narrow;
+    float2 wide;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ANISO_ALPHA = 0.001;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> normal_map : register(t4, space1);
+Texture2D<float4> rmo_map : register(t5, space1);
+Texture2D<float4> noise_map : register(t6, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float weft_pow4_(float x)
+{
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1)
+{
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(float3 v)
+{
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v_1, float3 fallback)
+{
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n_1)
+{
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a_1);
+    return float3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_luminance(float3 c_1)
+{
+    return dot(c_1, float3(0.2126, 0.7152, 0.0722));
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_1)
+{
+    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
+    float3 f90_ = max(((1.0 - saturate(roughness_1))).xxx, f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2)
+{
+    const float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = (_e3 * _e3);
+    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
+    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
+    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_3)
+{
+    float r = saturate(roughness_3);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    const float _e9 = weft_max3_(f0_2);
+    float grazing = saturate((_e9 + (1.0 - r)));
+    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
+    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_2)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_4)
+{
+    float r_1 = saturate(roughness_4);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
+{
+    const float _e4 = weft_specular_mip(roughness_5);
+    float4 c_3 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, (0.0).xxx);
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_3);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
+}
+
+float3 weft_unpack_normal(float3 texel, float strength)
+{
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+}
+
+float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
+{
+    const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
+    return _e4;
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_2)
+{
+    return float3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+}
+
+float2 weft_aniso_alpha_kulla(float roughness_6, float anisotropy)
+{
+    const float _e2 = weft_clamp_roughness(roughness_6);
+    float a_3 = (_e2 * _e2);
+    float k_1 = clamp(anisotropy, -1.0, 1.0);
+    return max(float2((a_3 * (1.0 + k_1)), (a_3 * (1.0 - k_1))), (0.001).xx);
+}
+
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
+{
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_3 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
+{
+    const float _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    float d_1 = (1.0 / ((WEFT_PI * _e5) * _e5));
+    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_7)
+{
+    float k_2 = clamp(anisotropy_1, -1.0, 1.0);
+    float3 n_4 = frame_2[2];
+    float3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
+    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+float3 satin_light_blend(float3 c_2, float3 light)
+{
+    const float _e2 = weft_luminance(light);
+    const float _e4 = weft_max3_(c_2);
+    return lerp((c_2 * _e2), (light * _e4), 0.5);
+}
+
+float satin_d_seed(float3 hf, float2 a)
+{
+    float d = (float)0;
+
+    const float _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
+    d = _e7;
+    float _e9 = d;
+    return _e9;
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float3 n = (float3)0;
+    SatinLayers layers = (SatinLayers)0;
+    float3 specular = (float3)0;
+    float3 diffuse_kd = (float3)0;
+    float3 indirect_specular = (float3)0;
+    float3 ambient_kd = (float3)0;
+    float3 bent = (float3)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    float4 _e19 = rmo_map.Sample(material_sampler, _e5);
+    float3 rmo = _e19.xyz;
+    float _e23 = material.roughness;
+    float roughness_8 = saturate((_e23 * rmo.x));
+    float _e29 = material.metallic;
+    float metallic = saturate((_e29 * rmo.y));
+    float _e36 = material.occlusion_strength;
+    float ao = saturate(lerp(1.0, rmo.z, _e36));
+    float _e42 = material.anisotropy;
+    float anisotropy_2 = clamp(_e42, -1.0, 1.0);
+    float _e48 = material.second_layer_width;
+    float width = clamp(_e48, 1.0, 4.0);
+    float roughness2_ = min((roughness_8 * width), 1.0);
+    float4 _e58 = material.noise_map_st;
+    const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
+    float4 _e62 = noise_map.Sample(material_sampler, _e59);
+    float noise_ = (0.5 + (0.5 * saturate(_e62.x)));
+    const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
+    n = _e76;
+    {
+        float3 _e78 = n;
+        const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
+        float4 _e83 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_1 = _e83.xyz;
+        float _e87 = material.normal_strength;
+        const float3 _e88 = weft_unpack_normal(texel_1, _e87);
+        const float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
+        n = _e89;
+    }
+    float3 _e90 = n;
+    const float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
+    const float3 _e93 = weft_main_light_direction();
+    float3 _e95 = n;
+    const float3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
+    float3 _e97 = n;
+    const float _e99 = weft_clamp_cos(dot(_e97, _e74));
+    float3 _e100 = n;
+    float n_dot_l_1 = saturate(dot(_e100, _e93));
+    float v_dot_h_1 = saturate(dot(_e74, _e96));
+    const float3 _e105 = weft_main_light_radiance();
+    const float2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e108;
+    const float2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e110;
+    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
+    float4 _e119 = material.specular_color;
+    float3 c1_ = saturate(_e119.xyz);
+    float4 _e124 = material.second_specular_color;
+    float3 c2_ = saturate(_e124.xyz);
+    const float3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    {
+        const float3 _e132 = weft_aniso_to_frame(_e92, _e96);
+        float2 _e134 = layers.narrow;
+        const float _e135 = satin_d_seed(_e132, _e134);
+        float2 _e137 = layers.wide;
+        const float _e138 = satin_d_seed(_e132, _e137);
+        float d2_ = (_e138 / width);
+        const float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
+        const float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
+        const float3 _e142 = satin_light_blend(c1_, _e105);
+        const float3 _e143 = satin_light_blend(c2_, _e105);
+        float _e146 = material.specular_intensity;
+        float mag = max(_e146, 0.0);
+        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise_) * n_dot_l_1));
+        diffuse_kd = ((1.0).xxx - _e127);
+        const float3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
+        bent = _e160;
+        const float3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
+        float3 _e164 = bent;
+        const float3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);
+        indirect_specular = ((_e166 * _e162) * noise_);
+        const float3 _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
+        ambient_kd = ((1.0).xxx - _e171);
+    }
+    float3 _e173 = diffuse_kd;
+    const float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e178 = specular;
+    float3 direct = ((((_e173 * _e174) * _e105) * n_dot_l_1) + _e178);
+    float3 _e180 = indirect_specular;
+    float3 _e182 = n;
+    const float3 _e183 = weft_sh_irradiance(_e182);
+    float3 _e185 = ambient_kd;
+    float3 indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
+    float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}

@@ -1,0 +1,413 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    noise_map_st: vec4<f32>,
+    specular_intensity: f32,
+    specular_color: vec4<f32>,
+    second_specular_color: vec4<f32>,
+    second_layer_width: f32,
+    anisotropy: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct SatinLayers {
+    narrow: vec2<f32>,
+    wide: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var normal_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var noise_map: texture_2d<f32>;
+
+fn weft_pow4_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+fn weft_pow5_(x_1: f32) -> f32 {
+    let x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s = select(-1f, 1f, (n_1.z >= 0f));
+    let a_1 = (-1f / (s + n_1.z));
+    let b = ((n_1.x * n_1.y) * a_1);
+    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a_1)), (s * b), (-(s) * n_1.x));
+}
+
+fn weft_luminance(c_1: vec3<f32>) -> f32 {
+    return dot(c_1, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_1: f32) -> vec3<f32> {
+    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
+    let f90_ = max(vec3((1f - saturate(roughness_1))), f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_2 = (_e3 * _e3);
+    let k = (((a_2 + 1f) * (a_2 + 1f)) * 0.125f);
+    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
+    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
+    return (0.25f / (gv * gl));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_3: f32) -> vec3<f32> {
+    let r = saturate(roughness_3);
+    let surface_reduction = (1f / ((r * r) + 1f));
+    let _e9 = weft_max3_(f0_2);
+    let grazing = saturate((_e9 + (1f - r)));
+    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
+    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_4: f32) -> f32 {
+    let r_1 = saturate(roughness_4);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_5);
+    let c_3 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, vec3(0f));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_3);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
+}
+
+fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+}
+
+fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+}
+
+fn weft_aniso_alpha_kulla(roughness_6: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_6);
+    let a_3 = (_e2 * _e2);
+    let k_1 = clamp(anisotropy, -1f, 1f);
+    return max(vec2<f32>((a_3 * (1f + k_1)), (a_3 * (1f - k_1))), vec2(0.001f));
+}
+
+fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
+    let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    let x_3 = (t_dot_h / at);
+    let y = (b_dot_h / ab);
+    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+}
+
+fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
+    let _e5 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, alpha_t_1, alpha_b_1);
+    let d_1 = (1f / ((WEFT_PI * _e5) * _e5));
+    return select(0f, d_1, (n_dot_h_1 > 0f));
+}
+
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
+    let k_2 = clamp(anisotropy_1, -1f, 1f);
+    let n_4 = frame_2[2];
+    let dir_1 = select(frame_2[0], frame_2[1], (k_2 >= 0f));
+    let aniso_t = cross(dir_1, v_2);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+fn satin_light_blend(c_2: vec3<f32>, light: vec3<f32>) -> vec3<f32> {
+    let _e2 = weft_luminance(light);
+    let _e4 = weft_max3_(c_2);
+    return mix((c_2 * _e2), (light * _e4), 0.5f);
+}
+
+fn satin_d_seed(hf: vec3<f32>, a: vec2<f32>) -> f32 {
+    var d: f32;
+
+    let _e7 = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, a.x, a.y);
+    d = _e7;
+    let _e9 = d;
+    return _e9;
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var layers: SatinLayers;
+    var specular: vec3<f32>;
+    var diffuse_kd: vec3<f32>;
+    var indirect_specular: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var bent: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_8 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e36));
+    let _e42 = material.anisotropy;
+    let anisotropy_2 = clamp(_e42, -1f, 1f);
+    let _e48 = material.second_layer_width;
+    let width = clamp(_e48, 1f, 4f);
+    let roughness2_ = min((roughness_8 * width), 1f);
+    let _e58 = material.noise_map_st;
+    let _e59 = weft_transform_uv(in_1.uv0_, _e58);
+    let _e62 = textureSample(noise_map, material_sampler, _e59);
+    let noise = (0.5f + (0.5f * saturate(_e62.x)));
+    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
+    n = _e76;
+    {
+        let _e78 = n;
+        let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
+        let _e83 = textureSample(normal_map, material_sampler, _e5);
+        let texel_1 = _e83.xyz;
+        let _e87 = material.normal_strength;
+        let _e88 = weft_unpack_normal(texel_1, _e87);
+        let _e89 = weft_normal_from_tangent_space(_e80, _e88);
+        n = _e89;
+    }
+    let _e90 = n;
+    let _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
+    let _e93 = weft_main_light_direction();
+    let _e95 = n;
+    let _e96 = weft_safe_normalize((_e93 + _e74), _e95);
+    let _e97 = n;
+    let _e99 = weft_clamp_cos(dot(_e97, _e74));
+    let _e100 = n;
+    let n_dot_l_1 = saturate(dot(_e100, _e93));
+    let v_dot_h_1 = saturate(dot(_e74, _e96));
+    let _e105 = weft_main_light_radiance();
+    let _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e108;
+    let _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e110;
+    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
+    let _e119 = material.specular_color;
+    let c1_ = saturate(_e119.xyz);
+    let _e124 = material.second_specular_color;
+    let c2_ = saturate(_e124.xyz);
+    let _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    {
+        let _e132 = weft_aniso_to_frame(_e92, _e96);
+        let _e134 = layers.narrow;
+        let _e135 = satin_d_seed(_e132, _e134);
+        let _e137 = layers.wide;
+        let _e138 = satin_d_seed(_e132, _e137);
+        let d2_ = (_e138 / width);
+        let _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
+        let _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
+        let _e142 = satin_light_blend(c1_, _e105);
+        let _e143 = satin_light_blend(c2_, _e105);
+        let _e146 = material.specular_intensity;
+        let mag = max(_e146, 0f);
+        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1));
+        diffuse_kd = (vec3(1f) - _e127);
+        let _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
+        bent = _e160;
+        let _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
+        let _e164 = bent;
+        let _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);
+        indirect_specular = ((_e166 * _e162) * noise);
+        let _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
+        ambient_kd = (vec3(1f) - _e171);
+    }
+    let _e173 = diffuse_kd;
+    let _e174 = weft_diffuse_lambert(diffuse_albedo);
+    let _e178 = specular;
+    let direct = ((((_e173 * _e174) * _e105) * n_dot_l_1) + _e178);
+    let _e180 = indirect_specular;
+    let _e182 = n;
+    let _e183 = weft_sh_irradiance(_e182);
+    let _e185 = ambient_kd;
+    let indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
+    let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}
