@@ -202,6 +202,9 @@ export class Renderer {
   constructor(canvas, device, adapter, base) {
     this.canvas = canvas;
     this.device = device;
+    // Held for the page's lifetime: Chromium drops the WebGPU instance (and
+    // destroys the device) once the adapter is garbage-collected.
+    this.adapter = adapter;
     const info = adapter.info || {};
     this.adapterInfo = [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ');
     this.base = base;
@@ -210,9 +213,16 @@ export class Renderer {
       this.errors.push(String(e.error && e.error.message));
       if (this.onError) this.onError(String(e.error && e.error.message));
     });
-    this.context = canvas.getContext('webgpu');
-    this.format = navigator.gpu.getPreferredCanvasFormat();
-    this.context.configure({ device, format: this.format, alphaMode: 'opaque' });
+    device.lost.then((info) => {
+      this.lost = `the WebGPU device was lost (${info.reason}): ${info.message}`;
+      if (this.onError) this.onError(this.lost);
+    });
+    // The tone-mapped picture is read back and put into a 2D canvas: no
+    // WebGPU canvas presentation (headless Chromium's SwiftShader loses the
+    // device when a page's WebGPU canvas is composited), and what is shown
+    // is exactly the bytes a screenshot or a test reads.
+    this.context = canvas.getContext('2d');
+    this.format = 'rgba8unorm';
     this.meshes = {};
     this.luts = {};
     this.exposure = 1.0;
@@ -498,13 +508,25 @@ export class Renderer {
     new Uint32Array(u, 4, 1)[0] = Math.max(0, TONEMAPS.indexOf(this.tonemap));
     d.queue.writeBuffer(this.tonemapUniform, 0, u);
     const bg = d.createBindGroup({ layout: this.tonemapPipeline.getBindGroupLayout(0), entries: [{ binding: 0, resource: hdr.createView() }, { binding: 1, resource: { buffer: this.tonemapUniform } }] });
+    const ldr = d.createTexture({ size: [w, h], format: this.format, usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+    const row = Math.ceil(w * 4 / 256) * 256;
+    const buf = d.createBuffer({ size: row * h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
     const enc = d.createCommandEncoder();
-    const rp = enc.beginRenderPass({ colorAttachments: [{ view: this.context.getCurrentTexture().createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 1] }] });
+    const rp = enc.beginRenderPass({ colorAttachments: [{ view: ldr.createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 1] }] });
     rp.setPipeline(this.tonemapPipeline);
     rp.setBindGroup(0, bg);
     rp.draw(3);
     rp.end();
+    enc.copyTextureToBuffer({ texture: ldr }, { buffer: buf, bytesPerRow: row, rowsPerImage: h }, [w, h]);
     d.queue.submit([enc.finish()]);
+    await buf.mapAsync(GPUMapMode.READ);
+    const src = new Uint8Array(buf.getMappedRange());
+    const img = new ImageData(w, h);
+    for (let y = 0; y < h; y++) img.data.set(src.subarray(y * row, y * row + w * 4), y * w * 4);
+    buf.unmap();
+    buf.destroy();
+    ldr.destroy();
+    this.context.putImageData(img, 0, 0);
     await d.queue.onSubmittedWorkDone();
     hdr.destroy();
   }
