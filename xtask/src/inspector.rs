@@ -89,7 +89,10 @@ fn run(root: &Path) -> Result<(), String> {
     if status != "ready" {
         return Err(format!(
             "the inspector is not ready ({status}): {}",
-            eval(&tab, "window.weftInspector.state.webgpuError || window.weftInspector.state.error")?
+            eval(
+                &tab,
+                "window.weftInspector.state.webgpuError || window.weftInspector.state.error"
+            )?
         ));
     }
     let dir = root.join("docs/inspector");
@@ -98,7 +101,10 @@ fn run(root: &Path) -> Result<(), String> {
         eval(&tab, &format!("window.weftInspector.select('{material}')"))?;
         eval(&tab, &format!("window.weftInspector.setLanguage('{lang}')"))?;
         if !preset.is_empty() {
-            eval(&tab, &format!("window.weftInspector.applyPreset('{preset}')"))?;
+            eval(
+                &tab,
+                &format!("window.weftInspector.applyPreset('{preset}')"),
+            )?;
         }
         eval(&tab, "window.weftInspector.idle()")?;
         let png = tab

@@ -84,7 +84,10 @@ impl Builder {
     pub fn new(options: ServeOptions) -> Builder {
         Builder {
             options,
-            cache: tempfile::Builder::new().prefix("weft-serve-").tempdir().ok(),
+            cache: tempfile::Builder::new()
+                .prefix("weft-serve-")
+                .tempdir()
+                .ok(),
         }
     }
 

@@ -263,7 +263,10 @@ fn event_stream(request: tiny_http::Request, shared: &Shared) {
                 }
             }
             Err(RecvTimeoutError::Timeout) => {
-                if w.write_all(b": keepalive\n\n").and_then(|_| w.flush()).is_err() {
+                if w.write_all(b": keepalive\n\n")
+                    .and_then(|_| w.flush())
+                    .is_err()
+                {
                     return;
                 }
             }

@@ -29,7 +29,11 @@ pub const PAGE: &[(&str, &str, &str)] = &[
         "text/html; charset=utf-8",
         include_str!("page/index.html"),
     ),
-    ("style.css", "text/css; charset=utf-8", include_str!("page/style.css")),
+    (
+        "style.css",
+        "text/css; charset=utf-8",
+        include_str!("page/style.css"),
+    ),
     (
         "app.js",
         "text/javascript; charset=utf-8",
@@ -79,11 +83,14 @@ pub struct Reply {
     pub body: Body,
 }
 
+/// A built-in mesh: its kind, JSON and binary.
+type MeshFiles = (SceneKind, Arc<Vec<u8>>, Arc<Vec<u8>>);
+
 /// Engine data computed once, on first use (the prefilter takes a moment).
 #[derive(Default)]
 pub struct Assets {
     environment: OnceLock<Environment>,
-    meshes: OnceLock<Vec<(SceneKind, Arc<Vec<u8>>, Arc<Vec<u8>>)>>,
+    meshes: OnceLock<Vec<MeshFiles>>,
 }
 
 impl Assets {
@@ -91,7 +98,7 @@ impl Assets {
         self.environment.get_or_init(assets::environment)
     }
 
-    fn meshes(&self) -> &[(SceneKind, Arc<Vec<u8>>, Arc<Vec<u8>>)] {
+    fn meshes(&self) -> &[MeshFiles] {
         self.meshes.get_or_init(|| {
             SceneKind::ALL
                 .iter()
@@ -204,7 +211,14 @@ pub fn route(path: &str, status: &BuildStatus, assets: &Assets, live: bool) -> O
 pub fn export_files(snapshot: &crate::Snapshot, status: &BuildStatus) -> BTreeMap<String, Vec<u8>> {
     let assets = Assets::default();
     let mut paths: Vec<String> = PAGE.iter().map(|(p, _, _)| p.to_string()).collect();
-    paths.extend(["api/library.json", "api/environment.json", "api/environment.bin"].map(String::from));
+    paths.extend(
+        [
+            "api/library.json",
+            "api/environment.json",
+            "api/environment.bin",
+        ]
+        .map(String::from),
+    );
     for k in SceneKind::ALL {
         paths.push(format!("api/meshes/{}.json", k.name()));
         paths.push(format!("api/meshes/{}.bin", k.name()));

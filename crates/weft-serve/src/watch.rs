@@ -37,9 +37,7 @@ pub fn scan(dir: &Path) -> BTreeMap<PathBuf, Stamp> {
                     stack.push(path);
                 }
             } else if ft.is_file()
-                && path
-                    .extension()
-                    .is_some_and(|x| x == "toml" || x == "wgsl")
+                && path.extension().is_some_and(|x| x == "toml" || x == "wgsl")
                 && let Ok(md) = e.metadata()
             {
                 out.insert(path, (md.modified().ok(), md.len()));
