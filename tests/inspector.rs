@@ -597,3 +597,131 @@ fn copy_dir(from: &Path, to: &Path) {
         }
     }
 }
+
+/// The controls the shipped materials do not exercise, on the `switches`
+/// fixture: a constant-mode keyword (same variant, pipeline constants
+/// swapped), the gradient editor (ramp re-baked and re-uploaded), the curve
+/// editor (uniform samples equal to the Rust bake) and a texture's
+/// tiling/offset member.
+#[test]
+fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
+    let page = Page::open(&repo().join("tests/fixtures/materials"));
+    page.select("switches");
+    let flat = page.capture();
+    let variant = page.eval("window.weftInspector.variantId()");
+    let swaps = |p: &Page| {
+        p.eval("window.weftInspector.state.pipelineSwaps")
+            .as_u64()
+            .unwrap()
+    };
+    let s0 = swaps(&page);
+
+    // Constant keyword: the same variant, new pipeline constants.
+    page.eval(
+        "(() => { const s = document.querySelector('[data-keyword=\"STYLE\"] select'); \
+         s.value = 'ramp'; s.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    assert_eq!(page.eval("window.weftInspector.variantId()"), variant);
+    assert!(
+        swaps(&page) > s0,
+        "a constant keyword must swap the pipeline"
+    );
+    let ramp = page.capture();
+    assert!(
+        flip_mean(&flat, &ramp) > 0.01,
+        "STYLE = ramp did not change the picture"
+    );
+
+    // Gradient: the first stop turned green re-bakes the ramp.
+    page.eval(
+        "(() => { const c = document.querySelector('[data-param=\"ramp\"] .stop input[type=color]'); \
+         c.value = '#00ff00'; c.dispatchEvent(new Event('input')); return window.weftInspector.idle(); })()",
+    );
+    assert!(
+        flip_mean(&ramp, &page.capture()) > 0.01,
+        "editing a gradient stop did not change the picture"
+    );
+
+    // Curve: the uniform holds the Rust bake of the edited keys.
+    page.eval(
+        "(() => { \
+         const rows = document.querySelectorAll('[data-param=\"falloff\"] .keyrow'); \
+         const v = rows[0].querySelectorAll('input')[1]; v.value = '0.5'; v.dispatchEvent(new Event('change')); \
+         return window.weftInspector.idle(); })()",
+    );
+    let status = page.server.status();
+    let snapshot = status.snapshot.unwrap();
+    let meta = &snapshot.material("switches").unwrap().metadata;
+    let p = meta
+        .parameters
+        .iter()
+        .find(|p| p.name == "falloff")
+        .unwrap();
+    let curve = p.curve.as_ref().unwrap();
+    let mut keys = curve.keyframes.clone();
+    keys[0].value = 0.5;
+    let samples = weft_meta::bake::sample_curve(&keys, curve.samples);
+    let layout = meta
+        .resolve_variant(variant.as_str().unwrap())
+        .unwrap()
+        .shader
+        .as_ref()
+        .unwrap()
+        .material_uniform
+        .clone()
+        .unwrap();
+    let bytes: Vec<u8> = page
+        .eval("window.weftInspector.materialBytes()")
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap() as u8)
+        .collect();
+    let m = layout.members.iter().find(|m| m.name == "falloff").unwrap();
+    for (i, s) in samples.iter().enumerate() {
+        let o = m.offset as usize + i * 4;
+        assert_eq!(
+            bytes[o..o + 4],
+            (*s as f32).to_le_bytes(),
+            "curve sample {i} in the uniform"
+        );
+    }
+
+    // Tiling/offset of a texture slot: its member in the uniform.
+    page.eval(
+        "(() => { const f = document.querySelectorAll('[data-param=\"mask\"] .vector input')[0]; \
+         f.value = '3'; f.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    let bytes: Vec<u8> = page
+        .eval("window.weftInspector.materialBytes()")
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap() as u8)
+        .collect();
+    let st = layout.members.iter().find(|m| m.name == "mask_st").unwrap();
+    let o = st.offset as usize;
+    assert_eq!(bytes[o..o + 4], 3.0f32.to_le_bytes(), "mask tiling x");
+
+    // The file picker: the user's own image replaces the built-in default.
+    let before = page.capture();
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("black.png");
+    std::fs::write(
+        &png,
+        weft_render::encode_png(4, 4, &[0, 0, 0, 255].repeat(16)).unwrap(),
+    )
+    .unwrap();
+    page.tab
+        .find_element("[data-param=\"mask\"] input[type=file]")
+        .and_then(|e| e.set_input_files(&[png.to_str().unwrap()]).map(|_| ()))
+        .expect("the mask's file picker takes a file");
+    page.wait_for(
+        "document.querySelector('[data-param=\"mask\"] .texname').textContent === 'black.png'",
+    );
+    page.idle();
+    assert!(
+        flip_mean(&before, &page.capture()) > 0.01,
+        "a black mask image did not change the picture"
+    );
+}
