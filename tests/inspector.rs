@@ -58,7 +58,8 @@ struct Page {
     tab: Arc<Tab>,
     _browser: Browser,
     _profile: tempfile::TempDir,
-    server: Server,
+    /// None for a static export served by [`serve_static`].
+    server: Option<Server>,
 }
 
 impl Page {
@@ -68,6 +69,11 @@ impl Page {
             ..ServeOptions::new(materials)
         })
         .expect("weft serve starts");
+        let url = server.url();
+        Page::open_url(&url, Some(server))
+    }
+
+    fn open_url(url: &str, server: Option<Server>) -> Page {
         let profile = tempfile::tempdir().unwrap();
         let args: Vec<&OsStr> = [
             "--disable-gpu-sandbox",
@@ -107,7 +113,7 @@ impl Page {
         });
         let tab = browser.new_tab().expect("a tab");
         tab.set_default_timeout(Duration::from_secs(180));
-        tab.navigate_to(&server.url())
+        tab.navigate_to(url)
             .and_then(|t| t.wait_until_navigated())
             .expect("the inspector loads");
         let page = Page {
@@ -244,6 +250,8 @@ fn default_render_matches_weft_preview_for_every_material() {
     let page = Page::open(&repo().join("materials"));
     let names: Vec<String> = page
         .server
+        .as_ref()
+        .unwrap()
         .status()
         .snapshot
         .unwrap()
@@ -649,7 +657,7 @@ fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
          const v = rows[0].querySelectorAll('input')[1]; v.value = '0.5'; v.dispatchEvent(new Event('change')); \
          return window.weftInspector.idle(); })()",
     );
-    let status = page.server.status();
+    let status = page.server.as_ref().unwrap().status();
     let snapshot = status.snapshot.unwrap();
     let meta = &snapshot.material("switches").unwrap().metadata;
     let p = meta
@@ -723,5 +731,87 @@ fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
     assert!(
         flip_mean(&before, &page.capture()) > 0.01,
         "a black mask image did not change the picture"
+    );
+}
+
+/// Serves the files under `root` on 127.0.0.1 (GET only), as any static
+/// web server would; returns the port.
+fn serve_static(root: PathBuf) -> u16 {
+    use std::io::{BufRead, BufReader, Write};
+    let listener = std::net::TcpListener::bind(("127.0.0.1", 0)).unwrap();
+    let port = listener.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming().flatten() {
+            let root = root.clone();
+            std::thread::spawn(move || {
+                let mut reader = BufReader::new(stream.try_clone().unwrap());
+                let mut line = String::new();
+                if reader.read_line(&mut line).is_err() {
+                    return;
+                }
+                // Skip the headers.
+                let mut h = String::new();
+                while reader.read_line(&mut h).is_ok_and(|n| n > 2) {
+                    h.clear();
+                }
+                let target = line.split_whitespace().nth(1).unwrap_or("/");
+                let path = target
+                    .split('?')
+                    .next()
+                    .unwrap_or("/")
+                    .trim_start_matches('/');
+                let path = if path.is_empty() || path.ends_with('/') {
+                    format!("{path}index.html")
+                } else {
+                    path.to_string()
+                };
+                let file = root.join(&path);
+                let (status, body) = match std::fs::read(&file) {
+                    Ok(b) if !path.contains("..") => ("200 OK", b),
+                    _ => ("404 Not Found", b"not found".to_vec()),
+                };
+                let ctype = match path.rsplit('.').next() {
+                    Some("html") => "text/html; charset=utf-8",
+                    Some("js") => "text/javascript",
+                    Some("css") => "text/css",
+                    Some("json") => "application/json",
+                    _ => "application/octet-stream",
+                };
+                let mut s = stream;
+                let _ = write!(
+                    s,
+                    "HTTP/1.1 {status}\r\nContent-Type: {ctype}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+                    body.len()
+                );
+                let _ = s.write_all(&body);
+            });
+        }
+    });
+    port
+}
+
+/// `weft serve --export`: the static files work without the server (no
+/// event stream), under a sub-folder of a site.
+#[test]
+fn exported_inspector_works_from_a_static_server() {
+    let site = tempfile::tempdir().unwrap();
+    let options = ServeOptions {
+        reports: Some(repo().join("generated/reports")),
+        ..ServeOptions::new(repo().join("materials"))
+    };
+    weft_serve::export(&options, &site.path().join("docs/inspector")).unwrap();
+    let port = serve_static(site.path().to_path_buf());
+    let page = Page::open_url(&format!("http://127.0.0.1:{port}/docs/inspector/"), None);
+    assert_eq!(
+        page.eval("window.weftInspector.state.library.live"),
+        json!(false)
+    );
+    page.select("velvet");
+    let image = page.capture();
+    let lavapipe = preview("velvet");
+    let mean = flip_mean(&lavapipe, &image);
+    assert!(
+        mean <= FLIP_BOUND,
+        "exported page vs weft preview: FLIP mean {mean}"
     );
 }
