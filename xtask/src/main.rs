@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use weft_compiler::{BuildOptions, output};
 
 mod bench_scale;
+mod inspector;
 mod scale;
 
 /// Paths under `generated/` that `regenerate` keeps: measured reports and
@@ -44,6 +45,9 @@ enum Command {
     /// Render every material, tier and preset: generated/gallery/ (a contact
     /// sheet and one image per case) and generated/gallery.md.
     Gallery,
+    /// Screenshots of the live inspector (`weft serve`) in headless Chromium:
+    /// docs/inspector/inspector-en.png and inspector-zh.png.
+    Inspector,
     /// Benchmarks (reports, not tests).
     Bench {
         #[command(subcommand)]
@@ -208,6 +212,7 @@ fn main() -> ExitCode {
         }
         Command::Bless { force } => bless(&root, force),
         Command::Gallery => gallery(&root),
+        Command::Inspector => inspector::inspector(&root),
         Command::Bench {
             what: Bench::Compile { runs },
         } => bench_compile(&root, runs.max(1)),

@@ -143,6 +143,10 @@ enum Command {
     /// standard's fast tier, SPIR-V instructions and error against the reference tier.
     #[command(after_help = BENCH_EXAMPLES)]
     Bench(BenchArgs),
+    /// Live inspector: serve a browser material editor (panel from the metadata, WebGPU
+    /// preview) on 127.0.0.1, rebuilt and pushed to the page on every change; or --export it.
+    #[command(after_help = weft_serve::EXAMPLES)]
+    Serve(weft_serve::ServeArgs),
 }
 
 fn color_choice(c: Color) -> ColorChoice {
@@ -333,6 +337,7 @@ fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
+        Command::Serve(args) => weft_serve::command(&args, cli.quiet),
         Command::Build { lock_timeout, .. }
             if !(lock_timeout.is_finite() && lock_timeout >= 0.0) =>
         {

@@ -1,0 +1,817 @@
+//! `weft serve` in a real browser: headless Chromium (Debian's package,
+//! WebGPU on SwiftShader, the flags `tint.rs` uses) driven over the DevTools
+//! protocol by `headless_chrome`. The page is served by `weft_serve::Server`
+//! in this process, exactly as `weft serve` serves it.
+//!
+//! - every shipped material's default render in the page matches `weft
+//!   preview`'s (weft-render on lavapipe) within [`FLIP_BOUND`];
+//! - moving a slider changes the picture (uniform rewritten, no pipeline
+//!   swap), a keyword switches the variant (pipeline swapped), a preset
+//!   applies, the Chinese switch changes labels;
+//! - a TOML edit on disk reaches the page; a broken edit shows the CLI's
+//!   diagnostic while the last good build stays; the fix clears it;
+//! - the page's curve and gradient bakes equal `weft_meta::bake`'s bytes.
+//!
+//! A missing browser or WebGPU adapter fails (never skips) with what to install.
+
+use base64::Engine;
+use headless_chrome::{Browser, LaunchOptions, Tab};
+use serde_json::{Value, json};
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+use weft_render::{HdrImage, Tonemap};
+use weft_serve::{ServeOptions, Server};
+
+/// FLIP mean between the page's picture (Chromium's Tint on SwiftShader) and
+/// `weft preview`'s (naga + lavapipe), 256×256 sphere, ACES, exposure 1.
+/// Measured 0.0019 (velvet) to 0.0036 (gauze) on Chromium 156's SwiftShader
+/// against Mesa's lavapipe; the bound is the goldens' threshold, about 3× that.
+const FLIP_BOUND: f32 = 0.01;
+const SIZE: u32 = 256;
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+fn chromium() -> PathBuf {
+    std::env::var_os("PATH")
+        .and_then(|paths| {
+            std::env::split_paths(&paths)
+                .map(|p| p.join("chromium"))
+                .find(|p| p.is_file())
+        })
+        .unwrap_or_else(|| {
+            panic!(
+                "`chromium` not found: the inspector tests need a real browser's WebGPU; \
+                 install it with `apt-get install -y chromium` (see .ci/run)"
+            )
+        })
+}
+
+/// The inspector served from `materials` and open in a fresh headless Chromium.
+struct Page {
+    tab: Arc<Tab>,
+    _browser: Browser,
+    _profile: tempfile::TempDir,
+    /// None for a static export served by [`serve_static`].
+    server: Option<Server>,
+}
+
+impl Page {
+    fn open(materials: &Path) -> Page {
+        let server = Server::start(ServeOptions {
+            reports: Some(repo().join("generated/reports")),
+            ..ServeOptions::new(materials)
+        })
+        .expect("weft serve starts");
+        let url = server.url();
+        Page::open_url(&url, Some(server))
+    }
+
+    fn open_url(url: &str, server: Option<Server>) -> Page {
+        let profile = tempfile::tempdir().unwrap();
+        let args: Vec<&OsStr> = [
+            "--disable-gpu-sandbox",
+            "--disable-quic",
+            "--no-first-run",
+            "--no-default-browser-check",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--enable-unsafe-webgpu",
+            "--enable-features=Vulkan",
+            "--use-webgpu-adapter=swiftshader",
+        ]
+        .iter()
+        .map(OsStr::new)
+        .collect();
+        let options = LaunchOptions::default_builder()
+            .path(Some(chromium()))
+            .headless(true)
+            .sandbox(false)
+            // headless_chrome adds --disable-gpu otherwise, which takes WebGPU's device away.
+            .enable_gpu(true)
+            .ignore_default_args(vec![OsStr::new(
+                "--enable-features=NetworkService,NetworkServiceInProcess",
+            )])
+            .window_size(Some((1400, 1000)))
+            .user_data_dir(Some(profile.path().to_path_buf()))
+            .idle_browser_timeout(Duration::from_secs(600))
+            .args(args)
+            .build()
+            .unwrap();
+        let browser = Browser::new(options).unwrap_or_else(|e| {
+            panic!(
+                "cannot start headless chromium ({}): {e}",
+                chromium().display()
+            )
+        });
+        let tab = browser.new_tab().expect("a tab");
+        tab.set_default_timeout(Duration::from_secs(180));
+        tab.navigate_to(url)
+            .and_then(|t| t.wait_until_navigated())
+            .expect("the inspector loads");
+        let page = Page {
+            tab,
+            _browser: browser,
+            _profile: profile,
+            server,
+        };
+        page.eval("window.weftInspector.ready");
+        let status = page.eval("window.weftInspector.state.status");
+        match status.as_str() {
+            Some("ready") => {}
+            Some("no-webgpu") => panic!(
+                "WebGPU is unavailable in headless Chromium: {}; install Debian's `chromium` \
+                 (SwiftShader ships with it) and `mesa-vulkan-drivers` (see .ci/run)",
+                page.eval("window.weftInspector.state.webgpuError")
+            ),
+            _ => panic!(
+                "the inspector did not start ({status}): {}",
+                page.eval("window.weftInspector.state.error")
+            ),
+        }
+        page
+    }
+
+    /// Evaluates an expression (awaited if it is a promise) in the page; its
+    /// value comes back through JSON.
+    fn eval(&self, expr: &str) -> Value {
+        let wrapped = format!(
+            "(async () => {{ try {{ return JSON.stringify({{ ok: (await ({expr})) ?? null }}); }} \
+             catch (e) {{ return JSON.stringify({{ error: String((e && e.stack) || e) }}); }} }})()"
+        );
+        let result = self
+            .tab
+            .evaluate(&wrapped, true)
+            .unwrap_or_else(|e| panic!("evaluating `{expr}`: {e}"));
+        let text = result
+            .value
+            .and_then(|v| v.as_str().map(String::from))
+            .unwrap_or_else(|| panic!("`{expr}` returned no value"));
+        let mut v: Value = serde_json::from_str(&text).unwrap();
+        if let Some(e) = v.get("error") {
+            panic!(
+                "`{expr}` threw in the page: {}",
+                e.as_str().unwrap_or_default()
+            );
+        }
+        v["ok"].take()
+    }
+
+    fn idle(&self) {
+        self.eval("window.weftInspector.idle()");
+    }
+
+    fn select(&self, name: &str) {
+        self.eval(&format!(
+            "document.querySelector('[data-material=\"{name}\"]').click(), window.weftInspector.idle()"
+        ));
+        // The click starts the swap; wait for it and everything queued after.
+        self.wait_for(&format!(
+            "window.weftInspector.state.name === '{name}' && !!window.weftInspector.variantId()"
+        ));
+        self.idle();
+    }
+
+    /// The picture as weft-render would read it back: linear HDR, 256².
+    fn capture(&self) -> HdrImage {
+        let b64 = self.eval(&format!(
+            "window.weftInspector.capture({SIZE}, {SIZE}, 'sphere')"
+        ));
+        let bytes = base64::engine::general_purpose::STANDARD
+            .decode(b64.as_str().unwrap())
+            .unwrap();
+        assert_eq!(bytes.len(), (SIZE * SIZE * 8) as usize);
+        let pixels = bytes
+            .chunks_exact(8)
+            .map(|px| [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([px[i], px[i + 1]]).to_f32()))
+            .collect();
+        HdrImage {
+            width: SIZE,
+            height: SIZE,
+            pixels,
+        }
+    }
+
+    /// Polls `condition` (a JS expression) until it is true.
+    fn wait_for(&self, condition: &str) {
+        let start = Instant::now();
+        while start.elapsed() < Duration::from_secs(60) {
+            if self.eval(condition) == json!(true) {
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(200));
+        }
+        panic!(
+            "the page never satisfied `{condition}` within 60 s (status: {})",
+            self.eval("{ error: window.weftInspector.state.error, preview: document.getElementById('preview-error').textContent }")
+        );
+    }
+}
+
+fn ldr(image: &HdrImage) -> Vec<u8> {
+    image.to_srgb8(Tonemap::Aces, 1.0)
+}
+
+fn flip_mean(a: &HdrImage, b: &HdrImage) -> f32 {
+    weft_golden::flip(&ldr(a), &ldr(b), a.width, a.height).mean
+}
+
+fn preview(material: &str) -> HdrImage {
+    let meta = repo().join(format!("generated/{material}/{material}.meta.json"));
+    let m = weft_render::Material::load(&meta).unwrap();
+    let luts = weft_render::Luts::for_metadata(&meta).unwrap();
+    let options = weft_render::PreviewOptions {
+        width: SIZE,
+        height: SIZE,
+        ..Default::default()
+    };
+    weft_render::render_preview(&m, &luts, &options)
+        .unwrap_or_else(|e| panic!("weft preview {material}: {e}"))
+        .0
+}
+
+fn save(image: &HdrImage, name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join("weft-inspector-test");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    image.save_png(&path, Tonemap::Aces, 1.0).unwrap();
+    path
+}
+
+#[test]
+fn default_render_matches_weft_preview_for_every_material() {
+    let page = Page::open(&repo().join("materials"));
+    let names: Vec<String> = page
+        .server
+        .as_ref()
+        .unwrap()
+        .status()
+        .snapshot
+        .unwrap()
+        .materials
+        .iter()
+        .map(|m| m.metadata.name.clone())
+        .collect();
+    assert!(
+        names.len() >= 6,
+        "expected the shipped materials, got {names:?}"
+    );
+    let mut report = Vec::new();
+    let mut failures = Vec::new();
+    for name in &names {
+        page.select(name);
+        let variant = page.eval("window.weftInspector.variantId()");
+        let browser = page.capture();
+        let lavapipe = preview(name);
+        let mean = flip_mean(&lavapipe, &browser);
+        report.push(format!(
+            "{name} ({}): FLIP mean {mean:.5}",
+            variant.as_str().unwrap()
+        ));
+        if mean.is_nan() || mean > FLIP_BOUND {
+            failures.push(format!(
+                "{name}: FLIP mean {mean:.4} > {FLIP_BOUND} (page {}, weft preview {})",
+                save(&browser, &format!("{name}.page.png")).display(),
+                save(&lavapipe, &format!("{name}.preview.png")).display()
+            ));
+        }
+    }
+    eprintln!("page vs weft preview:\n  {}", report.join("\n  "));
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn panel_controls_drive_the_preview() {
+    let page = Page::open(&repo().join("materials"));
+    page.select("standard");
+    let before = page.capture();
+    let swaps = |p: &Page| {
+        p.eval("window.weftInspector.state.pipelineSwaps")
+            .as_u64()
+            .unwrap()
+    };
+    let writes = |p: &Page| {
+        p.eval("window.weftInspector.state.uniformWrites")
+            .as_u64()
+            .unwrap()
+    };
+
+    // Slider: rewrites the uniform only.
+    let (s0, w0) = (swaps(&page), writes(&page));
+    page.eval(
+        "(() => { const s = document.querySelector('[data-param=\"roughness\"] input[type=range]'); \
+         s.value = 1000; s.dispatchEvent(new Event('input')); return window.weftInspector.idle(); })()",
+    );
+    let rough = page.capture();
+    assert!(
+        flip_mean(&before, &rough) > 0.01,
+        "moving the roughness slider to 1 did not change the picture"
+    );
+    assert_eq!(swaps(&page), s0, "a slider must not swap the pipeline");
+    assert!(writes(&page) > w0, "a slider must rewrite the uniform");
+    let bytes = page.eval("window.weftInspector.materialBytes()");
+    let meta: weft_meta::MaterialMetadata = serde_json::from_slice(
+        &std::fs::read(repo().join("generated/standard/standard.meta.json")).unwrap(),
+    )
+    .unwrap();
+    let layout = meta.variants[0]
+        .shader
+        .as_ref()
+        .unwrap()
+        .material_uniform
+        .clone()
+        .unwrap();
+    let member = layout
+        .members
+        .iter()
+        .find(|m| m.name == "roughness")
+        .unwrap();
+    let o = member.offset as usize;
+    let b: Vec<u8> = bytes.as_array().unwrap()[o..o + 4]
+        .iter()
+        .map(|x| x.as_u64().unwrap() as u8)
+        .collect();
+    assert_eq!(
+        f32::from_le_bytes(b.try_into().unwrap()),
+        1.0,
+        "roughness at its offset"
+    );
+
+    // Keyword: an enum value switches to that variant (pipeline swapped).
+    assert_eq!(
+        page.eval("window.weftInspector.variantId()"),
+        json!("fast.normal_map-off.sphere_map-off")
+    );
+    page.eval(
+        "(() => { const s = document.querySelector('[data-keyword=\"SPHERE_MAP\"] select'); \
+         s.value = 'multiply'; s.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    assert_eq!(
+        page.eval("window.weftInspector.variantId()"),
+        json!("fast.normal_map-off.sphere_map-multiply")
+    );
+    assert!(swaps(&page) > s0, "a keyword must swap the pipeline");
+    // Its show_if'd parameters appear.
+    assert_eq!(
+        page.eval("document.querySelector('[data-param=\"sphere_strength\"]') ? document.querySelector('[data-param=\"sphere_strength\"]').hidden : 'absent'"),
+        json!(false)
+    );
+
+    // Tier: swaps the variant too.
+    page.eval(
+        "(() => { const s = document.querySelector('[data-tier]'); s.value = 'reference'; \
+         s.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    assert_eq!(
+        page.eval("window.weftInspector.variantId()"),
+        json!("reference.normal_map-off.sphere_map-multiply")
+    );
+
+    // Preset: values, keywords and the controls follow.
+    let plain = page.capture();
+    page.eval(
+        "document.querySelector('[data-preset=\"gold\"]').click(), window.weftInspector.idle()",
+    );
+    page.idle();
+    assert_eq!(
+        page.eval("window.weftInspector.state.values.metallic")
+            .as_f64(),
+        Some(1.0)
+    );
+    assert_eq!(
+        page.eval("document.querySelector('[data-param=\"metallic\"] input[type=number]').value"),
+        json!("1")
+    );
+    assert!(
+        flip_mean(&plain, &page.capture()) > 0.01,
+        "the gold preset did not change the picture"
+    );
+
+    // Chinese switch: labels and tooltips come from the metadata's zh text.
+    let en = page.eval("document.querySelector('[data-param=\"roughness\"] .label').textContent");
+    page.eval(
+        "document.querySelector('[data-lang-switch=\"zh\"]').click(), window.weftInspector.idle()",
+    );
+    let zh = page.eval("document.querySelector('[data-param=\"roughness\"] .label').textContent");
+    assert_eq!(en, json!("Roughness"));
+    let zh_label = meta
+        .parameters
+        .iter()
+        .find(|p| p.name == "roughness")
+        .unwrap()
+        .label
+        .zh
+        .clone();
+    assert_eq!(zh.as_str(), zh_label.as_deref(), "the Chinese label");
+    assert_eq!(
+        page.eval("document.querySelector('[data-material=\"standard\"] .mname').textContent"),
+        json!(meta.label.zh.clone().unwrap())
+    );
+}
+
+#[test]
+fn edits_on_disk_reach_the_page_and_broken_edits_show_their_diagnostic() {
+    let dir = tempfile::tempdir().unwrap();
+    copy_dir(&repo().join("materials"), dir.path());
+    let page = Page::open(dir.path());
+    page.select("standard");
+    let toml = dir.path().join("standard/standard.toml");
+    let original = std::fs::read_to_string(&toml).unwrap();
+
+    // A label edit reaches the page.
+    assert!(original.contains("\"Roughness\""));
+    std::fs::write(
+        &toml,
+        original.replacen("\"Roughness\"", "\"Roughness (edited)\"", 1),
+    )
+    .unwrap();
+    page.wait_for(
+        "document.querySelector('[data-param=\"roughness\"] .label').textContent === 'Roughness (edited)'",
+    );
+
+    // A broken edit: the CLI's diagnostic, the last good build still shown.
+    let broken = original.replacen("\"Roughness\"", "\"Roughness (edited)\"", 1)
+        + "\n[parameters.oops]\ntype = \"flaot\"\n";
+    std::fs::write(&toml, &broken).unwrap();
+    page.wait_for("!document.getElementById('diagnostics').hidden");
+    let shown = page.eval("document.getElementById('diagnostics-text').textContent");
+    let shown = shown.as_str().unwrap();
+    let cli = match weft_compiler::build_library(dir.path(), &Default::default(), &|_, _, _| {}) {
+        Ok(_) => panic!("the broken edit builds"),
+        Err((db, diags)) => diags.render_plain(&db),
+    };
+    assert!(
+        shown.starts_with(&cli),
+        "the page must show the CLI's diagnostic text:\n--- page ---\n{shown}\n--- cli ---\n{cli}"
+    );
+    assert!(shown.contains("standard.toml:"), "file:line in {shown}");
+    assert_eq!(
+        page.eval("document.querySelector('[data-param=\"roughness\"] .label').textContent"),
+        json!("Roughness (edited)"),
+        "the last good build stays visible"
+    );
+    assert!(page.capture().pixels.iter().any(|p| p[0] > 0.0));
+
+    // Fixed: the banner goes.
+    std::fs::write(&toml, &original).unwrap();
+    page.wait_for(
+        "document.getElementById('diagnostics').hidden && document.querySelector('[data-param=\"roughness\"] .label').textContent === 'Roughness'",
+    );
+}
+
+#[test]
+fn page_bakes_curves_and_gradients_byte_for_byte_like_weft_meta() {
+    let page = Page::open(&repo().join("materials"));
+    // A fixed pseudo-random set of curves and gradients, plus edge cases.
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for case in 0..40 {
+        let n_keys = 1 + (rnd() * 5.0) as usize;
+        let mut t = rnd() * 2.0 - 1.0;
+        let keys: Vec<weft_meta::Keyframe> = (0..n_keys)
+            .map(|_| {
+                t += 0.01 + rnd();
+                weft_meta::Keyframe {
+                    time: t,
+                    value: rnd() * 4.0 - 2.0,
+                    in_slope: rnd() * 6.0 - 3.0,
+                    out_slope: rnd() * 6.0 - 3.0,
+                }
+            })
+            .collect();
+        let samples = 1 + (rnd() * 64.0) as u32;
+        let floats = samples.div_ceil(4) * 4;
+        let rust: Vec<u8> = {
+            let s = weft_meta::bake::sample_curve(&keys, samples);
+            let mut out = vec![0u8; floats as usize * 4];
+            for (i, v) in s.iter().enumerate() {
+                out[i * 4..i * 4 + 4].copy_from_slice(&(*v as f32).to_le_bytes());
+            }
+            out
+        };
+        let js = page.eval(&format!(
+            "window.weftInspector.bakeCurve({}, {samples}, {floats})",
+            serde_json::to_string(&keys).unwrap()
+        ));
+        let js: Vec<u8> = js
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap() as u8)
+            .collect();
+        assert_eq!(js, rust, "curve case {case}: {keys:?}");
+
+        let n_stops = 1 + (rnd() * 5.0) as usize;
+        let mut stops: Vec<weft_meta::GradientStop> = (0..n_stops)
+            .map(|_| weft_meta::GradientStop {
+                position: if case % 7 == 0 { 0.5 } else { rnd() },
+                color: [rnd(), rnd(), rnd(), rnd()],
+            })
+            .collect();
+        stops.sort_by(|a, b| a.position.total_cmp(&b.position));
+        let width = 1 + (rnd() * 300.0) as u32;
+        let rust = weft_meta::bake::bake_gradient(&stops, width);
+        let js = page.eval(&format!(
+            "window.weftInspector.bakeGradient({}, {width})",
+            serde_json::to_string(&stops).unwrap()
+        ));
+        let js: Vec<u8> = js
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap() as u8)
+            .collect();
+        assert_eq!(js, rust, "gradient case {case}: {stops:?} width {width}");
+    }
+}
+
+#[test]
+fn export_is_deterministic_and_complete() {
+    let a = tempfile::tempdir().unwrap();
+    let b = tempfile::tempdir().unwrap();
+    let options = ServeOptions {
+        reports: Some(repo().join("generated/reports")),
+        ..ServeOptions::new(repo().join("materials"))
+    };
+    let out_a = a.path().join("site");
+    let out_b = b.path().join("site");
+    let n = weft_serve::export(&options, &out_a).unwrap();
+    weft_serve::export(&options, &out_b).unwrap();
+    let list = |d: &Path| {
+        let mut v = Vec::new();
+        walk(d, d, &mut v);
+        v.sort();
+        v
+    };
+    let (fa, fb) = (list(&out_a), list(&out_b));
+    assert_eq!(fa.len(), n);
+    assert_eq!(fa, fb, "two exports differ");
+    for must in [
+        "index.html",
+        "app.js",
+        "api/library.json",
+        "api/environment.bin",
+        "api/meshes/cloth.bin",
+        "api/materials/standard.json",
+        "api/spirv/standard/fast.normal_map-off.sphere_map-off.spv.txt",
+    ] {
+        assert!(
+            fa.iter().any(|(p, _)| p == must),
+            "{must} missing from the export"
+        );
+    }
+    let lib: Value =
+        serde_json::from_slice(&std::fs::read(out_a.join("api/library.json")).unwrap()).unwrap();
+    assert_eq!(lib["live"], json!(false));
+}
+
+fn walk(root: &Path, dir: &Path, out: &mut Vec<(String, Vec<u8>)>) {
+    for e in std::fs::read_dir(dir).unwrap().flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            walk(root, &p, out);
+        } else {
+            let rel = p
+                .strip_prefix(root)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            out.push((rel, std::fs::read(&p).unwrap()));
+        }
+    }
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for e in std::fs::read_dir(from).unwrap().flatten() {
+        let p = e.path();
+        let dest = to.join(e.file_name());
+        if p.is_dir() {
+            copy_dir(&p, &dest);
+        } else {
+            std::fs::copy(&p, &dest).unwrap();
+        }
+    }
+}
+
+/// The controls the shipped materials do not exercise, on the `switches`
+/// fixture: a constant-mode keyword (same variant, pipeline constants
+/// swapped), the gradient editor (ramp re-baked and re-uploaded), the curve
+/// editor (uniform samples equal to the Rust bake) and a texture's
+/// tiling/offset member.
+#[test]
+fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
+    let page = Page::open(&repo().join("tests/fixtures/materials"));
+    page.select("switches");
+    let flat = page.capture();
+    let variant = page.eval("window.weftInspector.variantId()");
+    let swaps = |p: &Page| {
+        p.eval("window.weftInspector.state.pipelineSwaps")
+            .as_u64()
+            .unwrap()
+    };
+    let s0 = swaps(&page);
+
+    // Constant keyword: the same variant, new pipeline constants.
+    page.eval(
+        "(() => { const s = document.querySelector('[data-keyword=\"STYLE\"] select'); \
+         s.value = 'ramp'; s.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    assert_eq!(page.eval("window.weftInspector.variantId()"), variant);
+    assert!(
+        swaps(&page) > s0,
+        "a constant keyword must swap the pipeline"
+    );
+    let ramp = page.capture();
+    assert!(
+        flip_mean(&flat, &ramp) > 0.01,
+        "STYLE = ramp did not change the picture"
+    );
+
+    // Gradient: the first stop turned green re-bakes the ramp.
+    page.eval(
+        "(() => { const c = document.querySelector('[data-param=\"ramp\"] .stop input[type=color]'); \
+         c.value = '#00ff00'; c.dispatchEvent(new Event('input')); return window.weftInspector.idle(); })()",
+    );
+    assert!(
+        flip_mean(&ramp, &page.capture()) > 0.01,
+        "editing a gradient stop did not change the picture"
+    );
+
+    // Curve: the uniform holds the Rust bake of the edited keys.
+    page.eval(
+        "(() => { \
+         const rows = document.querySelectorAll('[data-param=\"falloff\"] .keyrow'); \
+         const v = rows[0].querySelectorAll('input')[1]; v.value = '0.5'; v.dispatchEvent(new Event('change')); \
+         return window.weftInspector.idle(); })()",
+    );
+    let status = page.server.as_ref().unwrap().status();
+    let snapshot = status.snapshot.unwrap();
+    let meta = &snapshot.material("switches").unwrap().metadata;
+    let p = meta
+        .parameters
+        .iter()
+        .find(|p| p.name == "falloff")
+        .unwrap();
+    let curve = p.curve.as_ref().unwrap();
+    let mut keys = curve.keyframes.clone();
+    keys[0].value = 0.5;
+    let samples = weft_meta::bake::sample_curve(&keys, curve.samples);
+    let layout = meta
+        .resolve_variant(variant.as_str().unwrap())
+        .unwrap()
+        .shader
+        .as_ref()
+        .unwrap()
+        .material_uniform
+        .clone()
+        .unwrap();
+    let bytes: Vec<u8> = page
+        .eval("window.weftInspector.materialBytes()")
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap() as u8)
+        .collect();
+    let m = layout.members.iter().find(|m| m.name == "falloff").unwrap();
+    for (i, s) in samples.iter().enumerate() {
+        let o = m.offset as usize + i * 4;
+        assert_eq!(
+            bytes[o..o + 4],
+            (*s as f32).to_le_bytes(),
+            "curve sample {i} in the uniform"
+        );
+    }
+
+    // Tiling/offset of a texture slot: its member in the uniform.
+    page.eval(
+        "(() => { const f = document.querySelectorAll('[data-param=\"mask\"] .vector input')[0]; \
+         f.value = '3'; f.dispatchEvent(new Event('change')); return window.weftInspector.idle(); })()",
+    );
+    let bytes: Vec<u8> = page
+        .eval("window.weftInspector.materialBytes()")
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap() as u8)
+        .collect();
+    let st = layout.members.iter().find(|m| m.name == "mask_st").unwrap();
+    let o = st.offset as usize;
+    assert_eq!(bytes[o..o + 4], 3.0f32.to_le_bytes(), "mask tiling x");
+
+    // The file picker: the user's own image replaces the built-in default.
+    let before = page.capture();
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("black.png");
+    std::fs::write(
+        &png,
+        weft_render::encode_png(4, 4, &[0, 0, 0, 255].repeat(16)).unwrap(),
+    )
+    .unwrap();
+    page.tab
+        .find_element("[data-param=\"mask\"] input[type=file]")
+        .and_then(|e| e.set_input_files(&[png.to_str().unwrap()]).map(|_| ()))
+        .expect("the mask's file picker takes a file");
+    page.wait_for(
+        "document.querySelector('[data-param=\"mask\"] .texname').textContent === 'black.png'",
+    );
+    page.idle();
+    assert!(
+        flip_mean(&before, &page.capture()) > 0.01,
+        "a black mask image did not change the picture"
+    );
+}
+
+/// Serves the files under `root` on 127.0.0.1 (GET only), as any static
+/// web server would; returns the port.
+fn serve_static(root: PathBuf) -> u16 {
+    use std::io::{BufRead, BufReader, Write};
+    let listener = std::net::TcpListener::bind(("127.0.0.1", 0)).unwrap();
+    let port = listener.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming().flatten() {
+            let root = root.clone();
+            std::thread::spawn(move || {
+                let mut reader = BufReader::new(stream.try_clone().unwrap());
+                let mut line = String::new();
+                if reader.read_line(&mut line).is_err() {
+                    return;
+                }
+                // Skip the headers.
+                let mut h = String::new();
+                while reader.read_line(&mut h).is_ok_and(|n| n > 2) {
+                    h.clear();
+                }
+                let target = line.split_whitespace().nth(1).unwrap_or("/");
+                let path = target
+                    .split('?')
+                    .next()
+                    .unwrap_or("/")
+                    .trim_start_matches('/');
+                let path = if path.is_empty() || path.ends_with('/') {
+                    format!("{path}index.html")
+                } else {
+                    path.to_string()
+                };
+                let file = root.join(&path);
+                let (status, body) = match std::fs::read(&file) {
+                    Ok(b) if !path.contains("..") => ("200 OK", b),
+                    _ => ("404 Not Found", b"not found".to_vec()),
+                };
+                let ctype = match path.rsplit('.').next() {
+                    Some("html") => "text/html; charset=utf-8",
+                    Some("js") => "text/javascript",
+                    Some("css") => "text/css",
+                    Some("json") => "application/json",
+                    _ => "application/octet-stream",
+                };
+                let mut s = stream;
+                let _ = write!(
+                    s,
+                    "HTTP/1.1 {status}\r\nContent-Type: {ctype}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+                    body.len()
+                );
+                let _ = s.write_all(&body);
+            });
+        }
+    });
+    port
+}
+
+/// `weft serve --export`: the static files work without the server (no
+/// event stream), under a sub-folder of a site.
+#[test]
+fn exported_inspector_works_from_a_static_server() {
+    let site = tempfile::tempdir().unwrap();
+    let options = ServeOptions {
+        reports: Some(repo().join("generated/reports")),
+        ..ServeOptions::new(repo().join("materials"))
+    };
+    weft_serve::export(&options, &site.path().join("docs/inspector")).unwrap();
+    let port = serve_static(site.path().to_path_buf());
+    let page = Page::open_url(&format!("http://127.0.0.1:{port}/docs/inspector/"), None);
+    assert_eq!(
+        page.eval("window.weftInspector.state.library.live"),
+        json!(false)
+    );
+    page.select("velvet");
+    let image = page.capture();
+    let lavapipe = preview("velvet");
+    let mean = flip_mean(&lavapipe, &image);
+    assert!(
+        mean <= FLIP_BOUND,
+        "exported page vs weft preview: FLIP mean {mean}"
+    );
+}
