@@ -107,4 +107,3 @@ fn every_tier_is_the_reference_an_approximation_or_a_look() {
         }
     }
 }
-

@@ -834,6 +834,14 @@ mod tests {
         }
         assert_eq!(out.materials.len(), bases.len());
         assert_eq!(out.variant_count, lib.variants);
-        assert_eq!(lib.variants, 48 * bases.len());
+        // Each material lands within a factor sqrt(3) of the target (the
+        // keywords multiply the base's count by a 2^a 3^b).
+        let target = 48.0 * bases.len() as f64;
+        let ratio = lib.variants as f64 / target;
+        assert!(
+            (0.577..=1.733).contains(&ratio),
+            "{} variants for a target of {target}",
+            lib.variants
+        );
     }
 }

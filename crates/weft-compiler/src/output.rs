@@ -538,7 +538,10 @@ mod tests {
         );
         assert!(!dir.join("a/stale.txt").exists());
         // No temporary folders left behind, only the lock file.
-        assert_eq!(entries(root.path()), [".generated.lock", "generated"]);
+        assert_eq!(
+            entries(root.path()),
+            [".generated.lock", ".generated.stamp", "generated"]
+        );
     }
 
     #[test]
@@ -562,7 +565,13 @@ mod tests {
         assert_eq!(std::fs::read_to_string(dir.join("x.txt")).unwrap(), "new");
         assert_eq!(
             entries(root.path()),
-            [".other.tmp-abc123", ".out.lock", ".out.tmp-toolong1", "out"]
+            [
+                ".other.tmp-abc123",
+                ".out.lock",
+                ".out.stamp",
+                ".out.tmp-toolong1",
+                "out"
+            ]
         );
     }
 
@@ -612,7 +621,7 @@ mod tests {
         perms.set_readonly(false);
         std::fs::set_permissions(&dir, perms).unwrap();
         assert!(check(&dir, &old, &[]).unwrap().is_clean());
-        assert_eq!(entries(root.path()), [".out.lock", "out"]);
+        assert_eq!(entries(root.path()), [".out.lock", ".out.stamp", "out"]);
     }
 
     #[test]
@@ -631,7 +640,7 @@ mod tests {
         std::fs::write(tmp.path().join("y.txt"), "new").unwrap();
         lock.replace_by_renames(tmp).unwrap();
         assert_eq!(list_files(&dir).unwrap(), ["y.txt"]);
-        assert_eq!(entries(root.path()), [".out.lock", "out"]);
+        assert_eq!(entries(root.path()), [".out.lock", ".out.stamp", "out"]);
     }
 
     #[test]
