@@ -107,3 +107,34 @@ fn every_tier_is_the_reference_an_approximation_or_a_look() {
         }
     }
 }
+
+#[test]
+fn measured_tier_tables_are_the_reports() {
+    use weft_golden::shading::{choosing_tables, ladder_table, replace_marked};
+    let repo = generated().parent().unwrap().to_path_buf();
+    let reports = generated().join("reports");
+    let mut all = Vec::new();
+    for (_, meta) in weft_golden::materials(&generated()).expect("generated/") {
+        let path = reports.join(format!("{}.measurements.json", meta.name));
+        let m: weft_meta::Measurements =
+            serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+        let readme = repo.join("materials").join(&meta.name).join("README.md");
+        let text = std::fs::read_to_string(&readme).unwrap();
+        if let Some(expected) = replace_marked(&text, "ladder", &ladder_table(&m)) {
+            assert!(
+                expected == text,
+                "{}: its measured ladder table is not the report's: run `cargo xtask regenerate --reports`",
+                readme.display()
+            );
+        }
+        all.push(m);
+    }
+    let readme = repo.join("README.md");
+    let text = std::fs::read_to_string(&readme).unwrap();
+    let expected = replace_marked(&text, "tiers", &choosing_tables(&all))
+        .expect("README has the tier table markers");
+    assert!(
+        expected == text,
+        "README.md's tier tables are not the reports': run `cargo xtask regenerate --reports`"
+    );
+}

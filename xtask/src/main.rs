@@ -448,8 +448,47 @@ fn bench_shading(
                 return ExitCode::FAILURE;
             }
         }
+        if let Err(e) = write_tier_tables(root, &report.materials) {
+            eprintln!("error: cannot update the tier tables: {e}");
+            return ExitCode::FAILURE;
+        }
     }
     ExitCode::SUCCESS
+}
+
+/// Rewrites the measured tier tables between their markers: the README's
+/// "Choosing a tier" (`<!-- weft:tiers:… -->`, every material, when all were
+/// measured) and each measured material's README (`<!-- weft:ladder:… -->`).
+fn write_tier_tables(root: &Path, materials: &[weft_meta::Measurements]) -> Result<(), String> {
+    use weft_golden::shading::{choosing_tables, ladder_table, replace_marked};
+    let update = |path: &Path, name: &str, content: &str| -> Result<(), String> {
+        let Ok(text) = std::fs::read_to_string(path) else {
+            return Ok(());
+        };
+        if let Some(new) = replace_marked(&text, name, content)
+            && new != text
+        {
+            std::fs::write(path, new).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("updated the measured tier table in {}", path.display());
+        }
+        Ok(())
+    };
+    let all = weft_golden::materials(&root.join("generated"))?;
+    if all
+        .iter()
+        .all(|(_, m)| materials.iter().any(|x| x.material == m.name))
+    {
+        update(
+            &root.join("README.md"),
+            "tiers",
+            &choosing_tables(materials),
+        )?;
+    }
+    for m in materials {
+        let readme = root.join("materials").join(&m.material).join("README.md");
+        update(&readme, "ladder", &ladder_table(m))?;
+    }
+    Ok(())
 }
 
 /// The scene manifests under scenes/ (only `names` when given), resolved

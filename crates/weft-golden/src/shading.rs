@@ -556,6 +556,82 @@ pub fn markdown_table(materials: &[Measurements]) -> String {
     md
 }
 
+/// Rows of the compact tier tables: approximations (and references) or looks.
+fn compact_rows(md: &mut String, materials: &[Measurements], looks: bool, with_material: bool) {
+    let opt = |v: Option<f64>| match v {
+        None => "—".to_string(),
+        Some(v) if v == 0.0 => "0".to_string(),
+        Some(v) => format!("{v:.3}"),
+    };
+    for m in materials {
+        for t in &m.tiers {
+            if (t.kind.as_deref() == Some("look")) != looks {
+                continue;
+            }
+            let material = if with_material {
+                format!("| {} ", m.material)
+            } else {
+                String::new()
+            };
+            let _ = writeln!(
+                md,
+                "{material}| {} | {} | {:.1} | {} | {} | {} | {} |",
+                t.tier,
+                t.kind.as_deref().unwrap_or("—"),
+                t.gpu_ms,
+                t.ratio_to_standard_fast
+                    .map_or("—".to_string(), |r| format!("{r:.2}")),
+                opt(Some(t.flip_mean)),
+                opt(t.flip_worst),
+                t.flip_worst_cell.as_deref().unwrap_or("—"),
+            );
+        }
+    }
+}
+
+const COMPACT_HEADER: &str = "| tier | kind | GPU ms | × standard fast | FLIP at defaults | worst FLIP over the grid | worst cell |\n| --- | --- | ---: | ---: | ---: | ---: | --- |\n";
+
+/// The README's "Choosing a tier" tables, from the measurements: the
+/// references and their approximations, then the looks.
+pub fn choosing_tables(materials: &[Measurements]) -> String {
+    let header = format!("| material {COMPACT_HEADER}").replace("\n| ---", "\n| --- | ---");
+    let mut md =
+        String::from("Approximations (their difference from the reference is their error):\n\n");
+    md.push_str(&header);
+    compact_rows(&mut md, materials, false, true);
+    md.push_str(
+        "\nLooks (different models; the FLIP says how far the look is from the reference):\n\n",
+    );
+    md.push_str(&header);
+    compact_rows(&mut md, materials, true, true);
+    md
+}
+
+/// One material's tier ladder (for its README), from its measurements.
+pub fn ladder_table(m: &Measurements) -> String {
+    let mut md = String::from(COMPACT_HEADER);
+    let one = std::slice::from_ref(m);
+    compact_rows(&mut md, one, false, false);
+    compact_rows(&mut md, one, true, false);
+    let _ = write!(
+        md,
+        "\nMeasured by `cargo xtask regenerate --reports` on {} ({}): cost on a {}x{} {} at the defaults; error against the reference, FLIP mean over object pixels, at the defaults and over the error grid (every preset and the defaults × sphere and cloth × key, side and rim light).\n",
+        m.adapter, m.timer, m.width, m.height, m.scene
+    );
+    md
+}
+
+/// Replaces the text between `<!-- weft:<name>:begin -->` and
+/// `<!-- weft:<name>:end -->` in `text` with `content`; None when the
+/// markers are absent.
+pub fn replace_marked(text: &str, name: &str, content: &str) -> Option<String> {
+    let begin = format!("<!-- weft:{name}:begin -->");
+    let end = format!("<!-- weft:{name}:end -->");
+    let a = text.find(&begin)? + begin.len();
+    let b = a + text[a..].find(&end)?;
+    Some(format!("{}\n{}{}", &text[..a], content, &text[b..]))
+}
+
 /// `shading.md`: the description, the command and the table.
 pub fn markdown_report(report: &ShadingReport, command: &str) -> String {
     format!(
