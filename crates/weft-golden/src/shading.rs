@@ -560,7 +560,7 @@ pub fn markdown_table(materials: &[Measurements]) -> String {
 fn compact_rows(md: &mut String, materials: &[Measurements], looks: bool, with_material: bool) {
     let opt = |v: Option<f64>| match v {
         None => "—".to_string(),
-        Some(v) if v == 0.0 => "0".to_string(),
+        Some(0.0) => "0".to_string(),
         Some(v) => format!("{v:.3}"),
     };
     for m in materials {
