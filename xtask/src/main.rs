@@ -430,6 +430,11 @@ fn bench_shading(
 ) -> ExitCode {
     use weft_golden::shading;
     let generated = root.join("generated");
+    // The cost floor (an unlit fill) is timed in the same run.
+    let options = &shading::ShadingOptions {
+        floor: Some(root.join("materials")),
+        ..options.clone()
+    };
     let report = match shading::run(&generated, options, &mut |s| eprintln!("{s}")) {
         Ok(r) => r,
         Err(e) => {
@@ -439,6 +444,7 @@ fn bench_shading(
     };
     println!("{}\n", shading::describe(&report));
     print!("{}", shading::markdown_table(&report.materials));
+    print!("{}", shading::floor_line(&report));
     println!("\nbench shading: {:.1} s", report.seconds);
     if write {
         match shading::write_reports(&generated.join("reports"), &report, command) {
