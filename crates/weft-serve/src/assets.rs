@@ -5,12 +5,13 @@
 //! matrices. The LUTs come from the build itself (`luts/…`).
 
 use serde_json::{Value, json};
+use std::sync::Arc;
 use weft_render::{EnvironmentMaps, PreviewOptions, Scene, SceneKind};
 
 /// `environment.json` (layout and SH) and `environment.bin` (texels).
 pub struct Environment {
-    pub json: Vec<u8>,
-    pub bin: Vec<u8>,
+    pub json: Arc<Vec<u8>>,
+    pub bin: Arc<Vec<u8>>,
 }
 
 /// The sky `weft preview` renders under by default (sun where the default
@@ -18,7 +19,17 @@ pub struct Environment {
 /// first, RGBA half floats (alpha 1) — ready for `writeTexture` per mip
 /// and face of an `rgba16float` cube.
 pub fn environment() -> Environment {
-    let options = PreviewOptions::default();
+    environment_for(None)
+}
+
+/// The sky `weft preview --light x,y,z` renders under: the direct light
+/// and the sky's sun both along `light` (None: the default light), computed
+/// by the same `PreviewOptions::sky_params` and `EnvironmentMaps::sky`.
+pub fn environment_for(light: Option<[f32; 3]>) -> Environment {
+    let options = PreviewOptions {
+        light_direction: light,
+        ..PreviewOptions::default()
+    };
     let sky = options.sky_params();
     let env = EnvironmentMaps::sky(&sky);
     let light = options.scene().light;
@@ -58,8 +69,8 @@ pub fn environment() -> Environment {
         },
     });
     Environment {
-        json: serde_json::to_vec(&json).unwrap_or_default(),
-        bin,
+        json: Arc::new(serde_json::to_vec(&json).unwrap_or_default()),
+        bin: Arc::new(bin),
     }
 }
 

@@ -4,7 +4,7 @@
 
 use crate::ServeOptions;
 use crate::build::{BuildStatus, Builder};
-use crate::routes::{self, Assets};
+use crate::routes::{self, Assets, RouteError};
 use crate::watch::Watcher;
 use std::io::Write;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, channel};
@@ -215,15 +215,16 @@ fn handle(request: tiny_http::Request, shared: &Shared) {
         return;
     }
     let url = request.url().to_string();
-    let path = url.split(['?', '#']).next().unwrap_or("");
+    let url = url.split('#').next().unwrap_or("");
+    let (path, query) = url.split_once('?').unwrap_or((url, ""));
     let path = path.trim_start_matches('/');
     if path == "api/events" {
         event_stream(request, shared);
         return;
     }
     let status = shared.status();
-    match routes::route(path, &status, &shared.assets, true) {
-        Some(reply) => {
+    match routes::route(path, query, &status, &shared.assets, true) {
+        Ok(reply) => {
             let mut response = Response::from_data(reply.body.bytes().to_vec())
                 .with_header(header("Content-Type", reply.content_type).unwrap())
                 .with_header(header("Cache-Control", "no-store").unwrap());
@@ -232,7 +233,10 @@ fn handle(request: tiny_http::Request, shared: &Shared) {
             }
             let _ = request.respond(response);
         }
-        None => {
+        Err(RouteError::BadRequest(why)) => {
+            let _ = request.respond(text(400, &why));
+        }
+        Err(RouteError::NotFound) => {
             let _ = request.respond(text(404, &format!("not found: /{path}")));
         }
     }

@@ -12,14 +12,15 @@
 //! | `api/files/<path>` | a generated file (`<material>/<file>`, `luts/…`) |
 //! | `api/spirv/<material>/<file>.spv.txt` | a SPIR-V file disassembled |
 //! | `api/environment.json`, `.bin` | the prefiltered sky cube, SH, default light |
+//! | `api/environment.json?sun=x,y,z`, `.bin?sun=…` | (server only) the same with the light and the sky's sun along x,y,z, as `weft preview --light x,y,z` |
 //! | `api/meshes/<sphere\|cloth\|swatch>.json`, `.bin` | built-in meshes and cameras |
 //! | `api/events` | (server only) server-sent events: one `build` event per build |
 
 use crate::assets::{self, Environment};
 use crate::build::BuildStatus;
 use serde_json::json;
-use std::collections::BTreeMap;
-use std::sync::{Arc, OnceLock};
+use std::collections::{BTreeMap, VecDeque};
+use std::sync::{Arc, Mutex, OnceLock};
 use weft_render::SceneKind;
 
 /// The page's files, embedded.
@@ -86,16 +87,58 @@ pub struct Reply {
 /// A built-in mesh: its kind, JSON and binary.
 type MeshFiles = (SceneKind, Arc<Vec<u8>>, Arc<Vec<u8>>);
 
+/// How many recently requested sun directions keep their environment
+/// (dragging the light back and forth does not recompute).
+const RECENT_SUNS: usize = 8;
+
+/// An environment being computed or computed, shared by every request for it.
+type EnvSlot = Arc<OnceLock<Environment>>;
+
 /// Engine data computed once, on first use (the prefilter takes a moment).
 #[derive(Default)]
 pub struct Assets {
     environment: OnceLock<Environment>,
     meshes: OnceLock<Vec<MeshFiles>>,
+    /// Environments of recently requested sun directions (normalised f32
+    /// bits), most recent first.
+    recent: Mutex<VecDeque<([u32; 3], EnvSlot)>>,
+    /// One sun-direction prefilter at a time (the machine's cores are few;
+    /// two at once would only slow each other down).
+    computing: Mutex<()>,
 }
 
 impl Assets {
     pub fn environment(&self) -> &Environment {
         self.environment.get_or_init(assets::environment)
+    }
+
+    /// The environment with the sun (and the light) along `sun` (a unit
+    /// vector, see [`parse_sun`]), from the cache of recent directions or
+    /// computed now. Concurrent requests for one direction share one
+    /// computation.
+    pub fn environment_towards(&self, sun: [f32; 3]) -> EnvSlot {
+        let key = sun.map(f32::to_bits);
+        let slot = {
+            let mut recent = match self.recent.lock() {
+                Ok(r) => r,
+                Err(poisoned) => poisoned.into_inner(),
+            };
+            let slot = match recent.iter().position(|(k, _)| *k == key) {
+                Some(i) => recent.remove(i).map(|(_, s)| s).unwrap_or_default(),
+                None => EnvSlot::default(),
+            };
+            recent.push_front((key, slot.clone()));
+            recent.truncate(RECENT_SUNS);
+            slot
+        };
+        if slot.get().is_none() {
+            let _one_at_a_time = match self.computing.lock() {
+                Ok(g) => g,
+                Err(poisoned) => poisoned.into_inner(),
+            };
+            slot.get_or_init(|| assets::environment_for(Some(sun)));
+        }
+        slot
     }
 
     fn meshes(&self) -> &[MeshFiles] {
@@ -109,6 +152,52 @@ impl Assets {
                 .collect()
         })
     }
+}
+
+/// The `sun` parameter of a query (`sun=x,y,z`, commas plain or `%2C`;
+/// other parameters ignored): None when absent, else the direction
+/// normalised. Errors (a 400) name what is wrong: not three numbers, not
+/// finite, zero length.
+pub fn parse_sun(query: &str) -> Result<Option<[f32; 3]>, String> {
+    let Some(value) = query
+        .split('&')
+        .filter_map(|kv| kv.split_once('=').or(Some((kv, ""))))
+        .find(|(k, _)| *k == "sun")
+        .map(|(_, v)| v)
+    else {
+        return Ok(None);
+    };
+    let text = value.replace("%2C", ",").replace("%2c", ",");
+    let parts: Vec<&str> = text.split(',').collect();
+    let bad = || {
+        let shown: String = value.chars().take(60).collect();
+        format!(
+            "bad sun direction `{shown}`: expected sun=x,y,z, three finite numbers not all zero (the direction towards the sun, as `weft preview --light x,y,z`)"
+        )
+    };
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let mut d = [0f64; 3];
+    for (i, p) in parts.iter().enumerate() {
+        let v: f64 = p.trim().parse().map_err(|_| bad())?;
+        if !v.is_finite() {
+            return Err(bad());
+        }
+        d[i] = v;
+    }
+    // Scale first so huge components do not overflow the length.
+    let m = d.iter().fold(0f64, |m, v| m.max(v.abs()));
+    if m.is_nan() || m <= 0.0 || !m.is_finite() {
+        return Err(bad());
+    }
+    let d = d.map(|v| v / m);
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    let unit = d.map(|v| (v / len) as f32);
+    if unit.iter().any(|v| !v.is_finite()) {
+        return Err(bad());
+    }
+    Ok(Some(unit))
 }
 
 fn content_type(path: &str) -> &'static str {
@@ -146,8 +235,46 @@ pub fn library_json(status: &BuildStatus, live: bool) -> Vec<u8> {
     serde_json::to_vec(&v).unwrap_or_default()
 }
 
-/// The reply for `path` (no leading slash, no query), or None (404).
-pub fn route(path: &str, status: &BuildStatus, assets: &Assets, live: bool) -> Option<Reply> {
+/// Why a path has no reply.
+#[derive(Debug, PartialEq)]
+pub enum RouteError {
+    /// 404.
+    NotFound,
+    /// 400, with what is wrong with the request.
+    BadRequest(String),
+}
+
+/// The reply for `path` (no leading slash) and its `query` (the part after
+/// `?`, empty when none).
+pub fn route(
+    path: &str,
+    query: &str,
+    status: &BuildStatus,
+    assets: &Assets,
+    live: bool,
+) -> Result<Reply, RouteError> {
+    if let Some(which) = path.strip_prefix("api/environment.")
+        && let Some(sun) = parse_sun(query).map_err(RouteError::BadRequest)?
+    {
+        let slot = assets.environment_towards(sun);
+        let env = slot.get().ok_or(RouteError::NotFound)?;
+        return match which {
+            "json" => Ok(Reply {
+                content_type: "application/json",
+                body: Body::Shared(env.json.clone()),
+            }),
+            "bin" => Ok(Reply {
+                content_type: "application/octet-stream",
+                body: Body::Shared(env.bin.clone()),
+            }),
+            _ => Err(RouteError::NotFound),
+        };
+    }
+    route_plain(path, status, assets, live).ok_or(RouteError::NotFound)
+}
+
+/// The reply for `path` without a query, or None (404).
+fn route_plain(path: &str, status: &BuildStatus, assets: &Assets, live: bool) -> Option<Reply> {
     let path = if path.is_empty() { "index.html" } else { path };
     if let Some((_, ct, text)) = PAGE.iter().find(|(p, _, _)| *p == path) {
         return Some(Reply {
@@ -170,11 +297,9 @@ pub fn route(path: &str, status: &BuildStatus, assets: &Assets, live: bool) -> O
     };
     match api {
         "library.json" => return owned("application/json", library_json(status, live)),
-        "environment.json" => {
-            return owned("application/json", assets.environment().json.clone());
-        }
+        "environment.json" => return shared("application/json", &assets.environment().json),
         "environment.bin" => {
-            return owned("application/octet-stream", assets.environment().bin.clone());
+            return shared("application/octet-stream", &assets.environment().bin);
         }
         _ => {}
     }
@@ -234,7 +359,7 @@ pub fn export_files(snapshot: &crate::Snapshot, status: &BuildStatus) -> BTreeMa
     }
     let mut out = BTreeMap::new();
     for p in paths {
-        if let Some(reply) = route(&p, status, &assets, false) {
+        if let Ok(reply) = route(&p, "", status, &assets, false) {
             out.insert(p, reply.body.bytes().to_vec());
         }
     }

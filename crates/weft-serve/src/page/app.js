@@ -2,7 +2,7 @@
 // api/library.json and each material's metadata alone.
 
 import * as bake from './bake.js';
-import { Renderer, TONEMAPS, normalize } from './render.js';
+import { Renderer, TONEMAPS, normalize, equirectToCube, cubeFaceSize } from './render.js';
 import { el, numberControl, boolControl, colorControl, vectorControl, textureControl, curveControl, gradientControl } from './panel.js';
 
 const BASE = new URL('.', document.baseURI).href;
@@ -12,13 +12,15 @@ const ZH = {
   'Materials': '材质', 'Tier': '质量档', 'Keywords': '关键字', 'Presets': '预设', 'Reset': '重置',
   'Preview': '预览', 'Mesh': '网格', 'Tone mapping': '色调映射', 'Exposure': '曝光', 'Light azimuth': '光源方位角',
   'Light elevation': '光源仰角', 'Code': '代码', 'Copy': '复制', 'Copied': '已复制', 'Variant': '变体',
-  'default': '默认', 'use the default': '使用默认', 'cube: built-in default': '立方体贴图：内置默认',
+  'default': '默认', 'use the default': '使用默认',
   'tiling / offset': '平铺 / 偏移', 'time': '时间', 'value': '值', 'in': '入斜率', 'out': '出斜率', 'key': '关键帧',
   'remove key': '删除关键帧', 'stop': '色标', 'remove stop': '删除色标', 'Build failed: the last good build stays visible': '构建失败：仍显示上一次成功的构建',
   'measured': '实测', 'GPU ms': 'GPU 毫秒', 'FLIP mean vs reference': '相对参考档的 FLIP 均值', 'no measurements': '无实测数据',
   'measured on an earlier version of this material': '实测数据来自此材质的旧版本', 'not compiled': '未编译',
   'static export: no live rebuilds': '静态导出：不会实时重建', 'live': '实时', 'Reset view': '重置视角',
   'sphere': '球体', 'cloth': '布料', 'swatch': '样片', 'variants': '个变体', 'Warnings': '警告',
+  'static export: the sky keeps the default sun': '静态导出：天空保持默认太阳方向',
+  'panorama (equirectangular)': '全景图（等距柱状投影）',
 };
 
 const state = {
@@ -198,12 +200,26 @@ async function uploadTextures() {
     const p = state.meta.parameters.find((x) => x.name === b.parameter);
     if (p && p.kind === 'gradient') {
       r.setTexture(b.binding, r.rampTexture(bake.bakeGradient(state.values[p.name], p.gradient.width), b.texture.format));
+    } else if (p && state.textures[p.name] && state.textures[p.name].kind === 'image' && b.texture.view_dimension === 'cube') {
+      r.setTexture(b.binding, await panoramaCube(r, state.textures[p.name], b.texture.format));
     } else if (p && state.textures[p.name] && state.textures[p.name].kind === 'image') {
       r.setTexture(b.binding, r.imageTexture(state.textures[p.name].bitmap, b.texture.format));
     } else {
       r.setTexture(b.binding, r.builtinTexture(b.texture.default || 'white', b.texture.format, b.texture.view_dimension === 'cube'));
     }
   }
+}
+
+// A cube parameter's panorama as the engine's six faces, converted once per
+// image and encoding (kept on the value: a variant swap re-binds it as is).
+async function panoramaCube(r, value, format) {
+  const srgb = /_srgb$/.test(format);
+  if (!value.cube || value.cube.srgb !== srgb) {
+    if (!value.pixels) value.pixels = await r.imagePixels(value.bitmap);
+    const size = cubeFaceSize(value.bitmap.width, Math.min(1024, r.device.limits.maxTextureDimension2D));
+    value.cube = { srgb, size, faces: equirectToCube(value.pixels, value.bitmap.width, value.bitmap.height, size, srgb) };
+  }
+  return r.cubeTexture(value.cube.faces, value.cube.size, format);
 }
 
 async function render() {
@@ -482,6 +498,8 @@ function previewControls() {
   const dir = r ? normalize(r.light.direction) : [0, 1, 0];
   const az = numberControl({ kind: 'float', range: [-180, 180], step: 1 }, Math.round(Math.atan2(dir[0], dir[2]) * 180 / Math.PI), (x) => setLight(x, null));
   const elev = numberControl({ kind: 'float', range: [-89, 89], step: 1 }, Math.round(Math.asin(dir[1]) * 180 / Math.PI), (x) => setLight(null, x));
+  az.dataset.light = 'azimuth';
+  elev.dataset.light = 'elevation';
   box.append(
     el('label', {}, t('Mesh'), mesh), el('label', {}, t('Tone mapping'), tm),
     el('label', {}, t('Exposure'), exposure), el('label', {}, t('Light azimuth'), az), el('label', {}, t('Light elevation'), elev),
@@ -500,6 +518,39 @@ function setLight(az, elev) {
   const [a, e] = lightAngles.map((x) => x * Math.PI / 180);
   r.light.direction = [Math.cos(e) * Math.sin(a), Math.sin(e), Math.cos(e) * Math.cos(a)];
   queue(render);
+  refreshEnvironment();
+}
+
+// The sky's sun follows the light, as `weft preview --light` does: the
+// server computes the environment (cube, SH) for the new sun. While the
+// light is dragged, at most one request is in flight and only the latest
+// direction is fetched next; the direct light moves at once.
+let envWanted = null;
+function refreshEnvironment() {
+  const r = state.renderer;
+  if (!r || !state.library || !state.library.live) {
+    // A static export has only the default sky: the direct light moves alone.
+    $('env-note').hidden = !(r && state.library && !state.library.live);
+    return;
+  }
+  envWanted = r.light.direction.slice();
+  if (state.envBusy) return;
+  state.envBusy = (async () => {
+    try {
+      while (envWanted) {
+        const d = envWanted;
+        envWanted = null;
+        const got = await r.fetchEnvironment(d);
+        if (!got) { $('env-note').hidden = false; break; }
+        if (envWanted) continue; // already stale: fetch the latest instead
+        await queue(async () => { r.uploadEnvironment(got.env, got.bin); state.envLoads = (state.envLoads || 0) + 1; await render(); });
+      }
+    } catch (e) {
+      showPreviewError(e);
+    } finally {
+      state.envBusy = null;
+    }
+  })();
 }
 
 function orbitControls(canvas) {
@@ -549,7 +600,11 @@ async function main() {
 window.weftInspector = {
   state,
   ready: main().catch((e) => { state.status = 'error'; state.error = String((e && e.stack) || e); document.body.dataset.status = 'error'; }),
-  idle: async () => { let p; do { p = state.pending; await p; } while (p !== state.pending); return state.renders; },
+  idle: async () => {
+    let p;
+    do { p = state.pending; await p; if (state.envBusy) await state.envBusy; } while (p !== state.pending || state.envBusy);
+    return state.renders;
+  },
   select: (name) => selectMaterial(name),
   setLanguage,
   applyPreset,
@@ -558,4 +613,13 @@ window.weftInspector = {
   materialBytes: () => Array.from(materialBytes(state.variant.shader.material_uniform)),
   bakeCurve: (keys, n, floats) => Array.from(new Uint8Array(bake.packCurve(bake.sampleCurve(keys, n), floats).buffer)),
   bakeGradient: (stops, width) => Array.from(bake.bakeGradient(stops, width)),
+  equirectToCube: (rgba, w, h, size, srgb) => Array.from(equirectToCube(Uint8Array.from(rgba), w, h, size, srgb)),
+  // The six faces a cube parameter's panorama was converted to: { size, srgb, faces (base64) }.
+  cubeFaces: (name) => {
+    const c = state.textures[name] && state.textures[name].cube;
+    if (!c) return null;
+    let s = '';
+    for (let i = 0; i < c.faces.length; i += 0x8000) s += String.fromCharCode.apply(null, c.faces.subarray(i, i + 0x8000));
+    return { size: c.size, srgb: c.srgb, faces: btoa(s) };
+  },
 };

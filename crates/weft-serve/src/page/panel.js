@@ -149,7 +149,9 @@ export function vectorControl(p, value, onChange) {
 // Texture slots: the built-in default the variant binds (a texture's
 // default can depend on keywords: the binding's `texture.default` says
 // which, `defaultName` passes it), a file picker for the user's own image
-// (2D textures), and tiling/offset when the metadata has a member for it.
+// (2D textures: the image; cubes: an equirectangular panorama, converted to
+// the six faces when bound), and tiling/offset when the metadata has a
+// member for it.
 export function textureControl(p, value, defaultName, tiling, t, onChange, onTiling) {
   const wrap = el('div', { class: 'texture' });
   const label = el('span', { class: 'texname' });
@@ -158,25 +160,28 @@ export function textureControl(p, value, defaultName, tiling, t, onChange, onTil
   };
   show();
   wrap.append(label);
-  if (p.kind === 'texture2d') {
-    const input = el('input', { type: 'file', accept: 'image/*' });
-    input.addEventListener('change', async () => {
-      const f = input.files && input.files[0];
-      if (!f) return;
-      try {
-        const bitmap = await createImageBitmap(f, { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
-        value = { kind: 'image', bitmap, file: f.name };
-        show();
-        onChange(value);
-      } catch (e) {
-        label.textContent = `${f.name}: ${e.message}`;
+  const cube = p.kind === 'cube';
+  const input = el('input', { type: 'file', accept: 'image/*', title: cube ? t('panorama (equirectangular)') : undefined });
+  input.addEventListener('change', async () => {
+    const f = input.files && input.files[0];
+    if (!f) return;
+    try {
+      let bitmap = await createImageBitmap(f, { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
+      const k = 8192 / Math.max(bitmap.width, bitmap.height);
+      if (cube && k < 1) {
+        // More than a 1024² face needs; keeps the copy within WebGPU's limits.
+        bitmap = await createImageBitmap(bitmap, { resizeWidth: Math.max(1, Math.round(bitmap.width * k)), resizeHeight: Math.max(1, Math.round(bitmap.height * k)), resizeQuality: 'high', colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
       }
-    });
-    const reset = el('button', { type: 'button', text: '×', title: t('use the default'), onclick: () => { value = { kind: 'builtin', name: p.default }; input.value = ''; show(); onChange(value); } });
-    wrap.append(input, reset);
-  } else {
-    wrap.append(el('span', { class: 'unit', text: t('cube: built-in default') }));
-  }
+      value = { kind: 'image', bitmap, file: f.name };
+      show();
+      onChange(value);
+    } catch (e) {
+      label.textContent = `${f.name}: ${e.message}`;
+    }
+  });
+  const reset = el('button', { type: 'button', text: '×', title: t('use the default'), onclick: () => { value = { kind: 'builtin', name: p.default }; input.value = ''; show(); onChange(value); } });
+  wrap.append(input, reset);
+  if (cube) wrap.append(el('span', { class: 'unit', text: t('panorama (equirectangular)') }));
   if (tiling) {
     wrap.append(el('span', { class: 'unit', text: t('tiling / offset') }), vectorControl({ step: null }, tiling, onTiling));
   }

@@ -182,6 +182,85 @@ fn encode(x: f32) -> f32 { if (x <= 0.0031308) { return x * 12.92; } return 1.05
 
 export const TONEMAPS = ['aces', 'neutral', 'clamp'];
 
+// ---------------------------------------------------------------------------
+// Equirectangular panorama -> cube faces
+
+// The engine's cube faces (crates/weft-render/src/environment.rs
+// `cube_direction`, the WebGPU/D3D/Vulkan convention): layers +X, −X, +Y,
+// −Y, +Z, −Z; texel (x, y) of an n×n face, rows top first, looks along
+// cubeDirection(face, (x + 0.5) / n * 2 − 1, (y + 0.5) / n * 2 − 1).
+export function cubeDirection(face, u, v) {
+  const d = [[1, -v, -u], [-1, -v, u], [u, 1, v], [u, -1, -v], [u, -v, 1], [-u, -v, -1]][face];
+  return normalize(d);
+}
+
+// Where a direction lands on an equirectangular panorama, in [0, 1]²: the
+// top row looks up (+Y), the bottom row down; the centre column looks
+// along −Z, a quarter to its right +X, a quarter to its left −X (the
+// panorama is seen unmirrored from inside, facing −Z); the side edges
+// meet at +Z.
+export function equirectUv(d) {
+  const u = 0.5 + Math.atan2(d[0], -d[2]) / (2 * Math.PI);
+  const v = Math.acos(Math.min(1, Math.max(-1, d[1]))) / Math.PI;
+  return [u, v];
+}
+
+// The face size for a panorama `width` texels wide: a face spans a quarter
+// of the longitudes, so width / 4, as a power of two in [8, max].
+export function cubeFaceSize(width, max = 1024) {
+  let n = 8;
+  while (n * 2 <= width / 4 && n * 2 <= max) n *= 2;
+  return n;
+}
+
+const SRGB_TO_LINEAR = Array.from({ length: 256 }, (_, i) => {
+  const c = i / 255;
+  return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
+});
+function linearToSrgb8(x) {
+  const c = x <= 0.0031308 ? x * 12.92 : 1.055 * Math.pow(x, 1 / 2.4) - 0.055;
+  return Math.round(Math.min(1, Math.max(0, c)) * 255);
+}
+
+// RGBA8 texels of a `w`×`h` panorama (rows top first) resampled onto six
+// `size`² faces (face-major, rows top first: ready for one writeTexture of
+// a 6-layer texture), bilinear, wrapping in longitude and clamped in
+// latitude. `srgb`: the texels are sRGB-encoded (the parameter's `srgb`,
+// bound as rgba8unorm_srgb), so colour is filtered in linear and encoded
+// again, as sampling a 2D sRGB texture filters; alpha is always linear.
+export function equirectToCube(src, w, h, size, srgb) {
+  const out = new Uint8Array(size * size * 4 * 6);
+  const val = new Float64Array(w * h * 4);
+  for (let i = 0; i < w * h * 4; i++) val[i] = srgb && (i & 3) !== 3 ? SRGB_TO_LINEAR[src[i]] : src[i] / 255;
+  let o = 0;
+  for (let face = 0; face < 6; face++) {
+    for (let y = 0; y < size; y++) {
+      for (let x = 0; x < size; x++) {
+        const d = cubeDirection(face, (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1);
+        const [u, v] = equirectUv(d);
+        const fx = u * w - 0.5;
+        const fy = Math.min(h - 1, Math.max(0, v * h - 0.5));
+        const x0 = Math.floor(fx);
+        const y0 = Math.floor(fy);
+        const tx = fx - x0;
+        const ty = fy - y0;
+        const xa = ((x0 % w) + w) % w;
+        const xb = (xa + 1) % w;
+        const ya = y0;
+        const yb = Math.min(h - 1, y0 + 1);
+        for (let c = 0; c < 4; c++) {
+          const a = val[(ya * w + xa) * 4 + c] * (1 - tx) + val[(ya * w + xb) * 4 + c] * tx;
+          const b = val[(yb * w + xa) * 4 + c] * (1 - tx) + val[(yb * w + xb) * 4 + c] * tx;
+          const m = a * (1 - ty) + b * ty;
+          out[o + c] = srgb && c !== 3 ? linearToSrgb8(m) : Math.round(Math.min(1, Math.max(0, m)) * 255);
+        }
+        o += 4;
+      }
+    }
+  }
+  return out;
+}
+
 async function fetchOk(url, kind) {
   const r = await fetch(url, { cache: 'no-store' });
   if (!r.ok) throw new Error(`${url}: HTTP ${r.status}`);
@@ -235,15 +314,8 @@ export class Renderer {
     const d = this.device;
     const env = await fetchOk(this.base + 'api/environment.json', 'json');
     const bin = await fetchOk(this.base + 'api/environment.bin', 'bin');
-    this.env = env;
     this.light = { direction: env.light.direction.slice(), radiance: env.light.radiance.slice() };
-    const cube = d.createTexture({ label: 'weft_environment', size: [env.size, env.size, 6], mipLevelCount: env.mip_count, format: 'rgba16float', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-    env.mips.forEach((m, level) => {
-      for (let face = 0; face < 6; face++) {
-        d.queue.writeTexture({ texture: cube, mipLevel: level, origin: [0, 0, face] }, bin, { offset: m.offset + face * m.face_bytes, bytesPerRow: m.size * 8, rowsPerImage: m.size }, [m.size, m.size, 1]);
-      }
-    });
-    this.envView = cube.createView({ dimension: 'cube' });
+    this.uploadEnvironment(env, bin);
     this.frameBuffers = new Map();
     // Background: weft-render's sky shader.
     const skyCode = await fetchOk(this.base + 'sky.wgsl', 'text');
@@ -255,12 +327,58 @@ export class Renderer {
       primitive: { topology: 'triangle-list' },
       depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: false, depthCompare: 'always' },
     });
-    const skySampler = d.createSampler({ magFilter: 'linear', minFilter: 'linear', mipmapFilter: 'linear' });
-    this.skyGroup = d.createBindGroup({ layout: this.skyPipeline.getBindGroupLayout(0), entries: [
-      { binding: 0, resource: { buffer: this.skyUniform } }, { binding: 1, resource: this.envView }, { binding: 2, resource: skySampler }] });
+    this.skySampler = d.createSampler({ magFilter: 'linear', minFilter: 'linear', mipmapFilter: 'linear' });
+    this.rebindSky();
     const tm = d.createShaderModule({ code: TONEMAP_WGSL, label: 'tonemap' });
     this.tonemapUniform = d.createBuffer({ size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
     this.tonemapPipeline = d.createRenderPipeline({ layout: 'auto', vertex: { module: tm, entryPoint: 'vs' }, fragment: { module: tm, entryPoint: 'fs', targets: [{ format: this.format }] }, primitive: { topology: 'triangle-list' } });
+  }
+
+  // Uploads an environment (api/environment.json and .bin) into a new cube;
+  // the variant's group 0 and the background are rebound to it.
+  uploadEnvironment(env, bin) {
+    const d = this.device;
+    const cube = d.createTexture({ label: 'weft_environment', size: [env.size, env.size, 6], mipLevelCount: env.mip_count, format: 'rgba16float', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    env.mips.forEach((m, level) => {
+      for (let face = 0; face < 6; face++) {
+        d.queue.writeTexture({ texture: cube, mipLevel: level, origin: [0, 0, face] }, bin, { offset: m.offset + face * m.face_bytes, bytesPerRow: m.size * 8, rowsPerImage: m.size }, [m.size, m.size, 1]);
+      }
+    });
+    const old = this.envView;
+    this.env = env;
+    this.envView = cube.createView({ dimension: 'cube' });
+    this.envSun = env.sky.sun_direction.slice();
+    if (!old) return;
+    this.rebindSky();
+    const v = this.variant;
+    if (v) {
+      for (const b of v.variant.shader.bindings) {
+        if (b.resource && b.resource.id === 'environment') {
+          const e = v.groupEntries[b.group].find((x) => x.binding === b.binding);
+          if (e) e.resource = this.envView;
+        }
+      }
+      this.rebindGroups();
+    }
+  }
+
+  rebindSky() {
+    this.skyGroup = this.device.createBindGroup({ layout: this.skyPipeline.getBindGroupLayout(0), entries: [
+      { binding: 0, resource: { buffer: this.skyUniform } }, { binding: 1, resource: this.envView }, { binding: 2, resource: this.skySampler }] });
+  }
+
+  // Fetches the environment with the sky's sun along `direction` (what
+  // `weft preview --light` renders under). Returns it (not yet uploaded),
+  // or null when the server ignored the request (a static export answers
+  // every query with the default sky).
+  async fetchEnvironment(direction) {
+    const n = normalize(direction);
+    const q = `?sun=${n.map((x) => x.toPrecision(9)).join(',')}`;
+    const env = await fetchOk(this.base + 'api/environment.json' + q, 'json');
+    const s = normalize(env.sky.sun_direction);
+    if (dot(s, n) < 0.99999) return null;
+    const bin = await fetchOk(this.base + 'api/environment.bin' + q, 'bin');
+    return { env, bin };
   }
 
   async mesh(name) {
@@ -306,6 +424,37 @@ export class Renderer {
     const t = this.device.createTexture({ label: 'user image', size: [bitmap.width, bitmap.height], format: gpuName(format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
     this.device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: t }, [bitmap.width, bitmap.height]);
     return t.createView();
+  }
+
+  // The RGBA8 texels of an image (rows top first), exactly as the 2D path
+  // uploads them (copyExternalImageToTexture of the same bitmap).
+  async imagePixels(bitmap) {
+    const d = this.device;
+    const w = bitmap.width;
+    const h = bitmap.height;
+    const t = d.createTexture({ label: 'panorama', size: [w, h], format: 'rgba8unorm', usage: GPUTextureUsage.COPY_SRC | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.TEXTURE_BINDING });
+    d.queue.copyExternalImageToTexture({ source: bitmap }, { texture: t }, [w, h]);
+    const row = Math.ceil(w * 4 / 256) * 256;
+    const buf = d.createBuffer({ size: row * h, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    const enc = d.createCommandEncoder();
+    enc.copyTextureToBuffer({ texture: t }, { buffer: buf, bytesPerRow: row, rowsPerImage: h }, [w, h]);
+    d.queue.submit([enc.finish()]);
+    await buf.mapAsync(GPUMapMode.READ);
+    const src = new Uint8Array(buf.getMappedRange());
+    const out = new Uint8Array(w * h * 4);
+    for (let y = 0; y < h; y++) out.set(src.subarray(y * row, y * row + w * 4), y * w * 4);
+    buf.unmap();
+    buf.destroy();
+    t.destroy();
+    return out;
+  }
+
+  // A cube of six size² faces of RGBA8 texels (face-major, as
+  // equirectToCube returns them) in the binding's format.
+  cubeTexture(faces, size, format) {
+    const t = this.device.createTexture({ label: 'user cube', size: [size, size, 6], format: gpuName(format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    this.device.queue.writeTexture({ texture: t }, faces, { bytesPerRow: size * 4, rowsPerImage: size }, [size, size, 6]);
+    return t.createView({ dimension: 'cube' });
   }
 
   rampTexture(rgba8, format) {
