@@ -90,9 +90,10 @@ impl UnitCache {
         self.misses.load(Ordering::Relaxed)
     }
 
-    /// The unit `key`, if it is in the cache whole.
-    pub fn load(&self, key: &str) -> Option<CompiledVariant> {
-        let found = self.read_unit(key);
+    /// The unit `key` (of variant `variant_id`), if it is in the cache whole
+    /// and well formed.
+    pub fn load(&self, key: &str, variant_id: &str) -> Option<CompiledVariant> {
+        let found = self.read_unit(key).filter(|v| is_sound(v, variant_id));
         let counter = if found.is_some() {
             &self.hits
         } else {
@@ -158,6 +159,20 @@ impl UnitCache {
         (sha.len() == 64 && sha.bytes().all(|b| b.is_ascii_hexdigit()))
             .then(|| self.root.join("blobs").join(&sha[..2]).join(sha))
     }
+}
+
+/// A unit read from a shared folder is trusted no further than this: it is
+/// the variant asked for, and its files are plain names of that variant
+/// (`<variant id>…`, no path separators), so a damaged or hostile cache can
+/// never make a build write outside the material's folder.
+fn is_sound(v: &CompiledVariant, variant_id: &str) -> bool {
+    v.id == variant_id
+        && !v.files.is_empty()
+        && v.files.iter().all(|(name, _)| {
+            name.starts_with(variant_id)
+                && !name.contains(['/', '\\', '\0'])
+                && !name.contains("..")
+        })
 }
 
 /// Writes `path` under a temporary name beside it, then renames it into place.

@@ -335,5 +335,32 @@ mod tests {
         assert!(healed.output.cache_misses >= 1);
         assert_eq!(healed.output.cache_hits + healed.output.cache_misses, units);
         assert_holds(&tmp.path().join("c"), &full);
+
+        // A hostile unit naming a file outside its folder is not used.
+        let units_dir = cache.join("v1/units");
+        let sub = std::fs::read_dir(&units_dir)
+            .unwrap()
+            .next()
+            .unwrap()
+            .unwrap()
+            .path();
+        let unit = std::fs::read_dir(&sub)
+            .unwrap()
+            .next()
+            .unwrap()
+            .unwrap()
+            .path();
+        let text = std::fs::read_to_string(&unit).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let first = v["files"][0][0].as_str().unwrap().to_string();
+        std::fs::write(
+            &unit,
+            text.replacen(&format!("\"{first}\""), "\"../../escaped.wgsl\"", 1),
+        )
+        .unwrap();
+        let guarded = build(&tmp.path().join("d"), &options);
+        assert!(guarded.output.cache_misses >= 1);
+        assert_holds(&tmp.path().join("d"), &full);
+        assert!(!tmp.path().join("escaped.wgsl").exists());
     }
 }

@@ -145,8 +145,9 @@ pub fn compile_material_cached(
             let Some(cache) = cache else {
                 return variant::compile_variant(m, &module, k, &prelude);
             };
-            let key = UnitCache::unit_key(&inputs, &k.id(m));
-            if let Some(v) = cache.load(&key) {
+            let id = k.id(m);
+            let key = UnitCache::unit_key(&inputs, &id);
+            if let Some(v) = cache.load(&key, &id) {
                 return Ok(v);
             }
             let v = variant::compile_variant(m, &module, k, &prelude)?;
