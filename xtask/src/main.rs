@@ -186,7 +186,12 @@ impl SceneArgs {
     }
 }
 
+/// The checkout xtask works on: its own, or `WEFT_ROOT` when set (a prebuilt
+/// xtask run against another worktree of the repository).
 fn workspace_root() -> PathBuf {
+    if let Some(root) = std::env::var_os("WEFT_ROOT") {
+        return PathBuf::from(root);
+    }
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("xtask is in the workspace")
