@@ -39,6 +39,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("exclude_constant_keyword", &["bad-condition"]),
     ("exclude_removes_all", &["no-variants"]),
     ("float_beyond_f32_range", &["type-range"]),
+    ("half_spelled_directly", &["wgsl-parse"]),
     ("include_cycle", &["include-cycle"]),
     ("include_outside_root", &["include-outside-root"]),
     ("instances_not_int", &["unknown-param"]),

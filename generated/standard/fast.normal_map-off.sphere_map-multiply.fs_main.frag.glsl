@@ -43,10 +43,13 @@ const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -191,6 +194,21 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_2) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    {
+        vec3 _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        vec4 _e7 = texture(_group_1_binding_6_fs, vec3(_e4));
+        vec3 sph = max(_e7.xyz, vec3(0.0));
+        vec3 _e12 = color;
+        float _e17 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e12 * max(mix(vec3(1.0), sph, _e17), vec3(0.0)));
+    }
+    vec3 _e23 = color;
+    return _e23;
+}
+
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
@@ -200,7 +218,6 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
-    vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -268,18 +285,10 @@ void main() {
     vec3 _e124 = ambient_kd;
     vec3 indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
     vec3 _e127 = indirect_specular;
-    color = ((direct + _e127) + indirect_diffuse);
-    {
-        vec3 _e131 = n;
-        vec3 _e133 = weft_sphere_map_direction(_e131, in_1.world_position);
-        vec4 _e136 = texture(_group_1_binding_6_fs, vec3(_e133));
-        vec3 sph = max(_e136.xyz, vec3(0.0));
-        vec3 _e141 = color;
-        float _e146 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e141 * max(mix(vec3(1.0), sph, _e146), vec3(0.0)));
-    }
-    vec3 _e152 = color;
-    vec3 radiance = clamp(_e152, vec3(0.0), vec3(65504.0));
+    vec3 color_1 = ((direct + _e127) + indirect_diffuse);
+    vec3 _e130 = n;
+    vec3 _e132 = standard_sphere_map(color_1, _e130, in_1.world_position);
+    vec3 radiance = clamp(_e132, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

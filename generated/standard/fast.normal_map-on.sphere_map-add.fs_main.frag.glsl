@@ -43,10 +43,13 @@ const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -222,6 +225,21 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position_2) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    {
+        vec3 _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        vec4 _e7 = texture(_group_1_binding_6_fs, vec3(_e4));
+        vec3 sph = max(_e7.xyz, vec3(0.0));
+        vec3 _e12 = color;
+        float _e15 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e12 + (sph * _e15));
+    }
+    vec3 _e18 = color;
+    return _e18;
+}
+
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
@@ -231,7 +249,6 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
-    vec3 color = vec3(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -309,18 +326,10 @@ void main() {
     vec3 _e136 = ambient_kd;
     vec3 indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
     vec3 _e139 = indirect_specular;
-    color = ((direct + _e139) + indirect_diffuse);
-    {
-        vec3 _e143 = n;
-        vec3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
-        vec4 _e148 = texture(_group_1_binding_6_fs, vec3(_e145));
-        vec3 sph = max(_e148.xyz, vec3(0.0));
-        vec3 _e153 = color;
-        float _e156 = _group_1_binding_0_fs.sphere_strength;
-        color = (_e153 + (sph * _e156));
-    }
-    vec3 _e159 = color;
-    vec3 radiance = clamp(_e159, vec3(0.0), vec3(65504.0));
+    vec3 color_1 = ((direct + _e139) + indirect_diffuse);
+    vec3 _e142 = n;
+    vec3 _e144 = standard_sphere_map(color_1, _e142, in_1.world_position);
+    vec3 radiance = clamp(_e144, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

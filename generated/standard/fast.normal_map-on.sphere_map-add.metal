@@ -54,10 +54,13 @@ constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
 
 float weft_pow5_(
     float x
@@ -279,6 +282,29 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_5,
+    metal::float3 world_position_2,
+    constant WeftFrame& weft_frame,
+    constant WeftMaterial& material,
+    metal::sampler material_clamp_sampler,
+    metal::texturecube<float, metal::access::sample> sphere_map
+) {
+    metal::float3 color = {};
+    color = color_in;
+    {
+        metal::float3 _e4 = weft_sphere_map_direction(n_5, world_position_2, weft_frame);
+        metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
+        metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
+        metal::float3 _e12 = color;
+        float _e15 = material.sphere_strength;
+        color = _e12 + (sph * _e15);
+    }
+    metal::float3 _e18 = color;
+    return _e18;
+}
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -321,7 +347,7 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_position_3 [[user(loc0), center_perspective]];
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
@@ -345,7 +371,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texturecube<float, metal::access::sample> sphere_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -353,7 +379,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -431,17 +456,9 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e136 = ambient_kd;
     metal::float3 indirect_diffuse = ((_e134 * ao) * _e136) * diffuse_albedo;
     metal::float3 _e139 = indirect_specular;
-    color = (direct + _e139) + indirect_diffuse;
-    {
-        metal::float3 _e143 = n;
-        metal::float3 _e145 = weft_sphere_map_direction(_e143, in_1.world_position, weft_frame);
-        metal::float4 _e148 = sphere_map.sample(material_clamp_sampler, _e145);
-        metal::float3 sph = metal::max(_e148.xyz, metal::float3(0.0));
-        metal::float3 _e153 = color;
-        float _e156 = material.sphere_strength;
-        color = _e153 + (sph * _e156);
-    }
-    metal::float3 _e159 = color;
-    metal::float3 radiance = metal::clamp(_e159, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 color_1 = (direct + _e139) + indirect_diffuse;
+    metal::float3 _e142 = n;
+    metal::float3 _e144 = standard_sphere_map(color_1, _e142, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e144, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

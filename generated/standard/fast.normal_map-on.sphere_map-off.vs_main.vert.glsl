@@ -43,10 +43,13 @@ const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -190,6 +193,13 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
+}
+
+vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position_1) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    vec3 _e4 = color;
+    return _e4;
 }
 
 void main() {

@@ -47,10 +47,13 @@ const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -235,6 +238,22 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+    var color: vec3<f32>;
+
+    color = color_in;
+    {
+        let _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        let _e7 = textureSample(sphere_map, material_clamp_sampler, _e4);
+        let sph = max(_e7.xyz, vec3(0f));
+        let _e12 = color;
+        let _e17 = material.sphere_strength;
+        color = (_e12 * max(mix(vec3(1f), sph, _e17), vec3(0f)));
+    }
+    let _e23 = color;
+    return _e23;
+}
+
 @vertex 
 fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     var out: WeftVaryings;
@@ -267,7 +286,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
-    var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -344,17 +362,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e136 = ambient_kd;
     let indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
     let _e139 = indirect_specular;
-    color = ((direct + _e139) + indirect_diffuse);
-    {
-        let _e143 = n;
-        let _e145 = weft_sphere_map_direction(_e143, in_1.world_position);
-        let _e148 = textureSample(sphere_map, material_clamp_sampler, _e145);
-        let sph = max(_e148.xyz, vec3(0f));
-        let _e153 = color;
-        let _e158 = material.sphere_strength;
-        color = (_e153 * max(mix(vec3(1f), sph, _e158), vec3(0f)));
-    }
-    let _e164 = color;
-    let radiance = clamp(_e164, vec3(0f), vec3(65504f));
+    let color_1 = ((direct + _e139) + indirect_diffuse);
+    let _e142 = n;
+    let _e144 = standard_sphere_map(color_1, _e142, in_1.world_position);
+    let radiance = clamp(_e144, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

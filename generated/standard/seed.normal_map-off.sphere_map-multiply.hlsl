@@ -49,10 +49,13 @@ static const uint SPHERE_MAP_MULTIPLY = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -70,7 +73,7 @@ Texture2D<float4> rmo_map : register(t5, space1);
 TextureCube<float4> sphere_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_2 : LOC0;
+    float3 world_position_3 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
@@ -78,7 +81,7 @@ struct VertexOutput_vs_main {
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_3 : LOC0;
+    float3 world_position_4 : LOC0;
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
@@ -243,6 +246,23 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
+float3 standard_sphere_map(float3 color_in, float3 n_3, float3 world_position_2)
+{
+    float3 color = (float3)0;
+
+    color = color_in;
+    {
+        const float3 _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        float4 _e7 = sphere_map.Sample(material_clamp_sampler, _e4);
+        float3 sph = max(_e7.xyz, (0.0).xxx);
+        float3 _e12 = color;
+        float _e17 = material.sphere_strength;
+        color = (_e12 * max(lerp((1.0).xxx, sph, _e17), (0.0).xxx));
+    }
+    float3 _e23 = color;
+    return _e23;
+}
+
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
 {
     WeftVaryings out_ = (WeftVaryings)0;
@@ -270,7 +290,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -278,7 +298,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
-    float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -346,17 +365,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e123 = ambient_kd;
     float3 indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
     float3 _e126 = indirect_specular;
-    color = ((direct + _e126) + indirect_diffuse);
-    {
-        float3 _e130 = n;
-        const float3 _e132 = weft_sphere_map_direction(_e130, in_1.world_position);
-        float4 _e135 = sphere_map.Sample(material_clamp_sampler, _e132);
-        float3 sph = max(_e135.xyz, (0.0).xxx);
-        float3 _e140 = color;
-        float _e145 = material.sphere_strength;
-        color = (_e140 * max(lerp((1.0).xxx, sph, _e145), (0.0).xxx));
-    }
-    float3 _e151 = color;
-    float3 radiance = clamp(_e151, (0.0).xxx, (65504.0).xxx);
+    float3 color_1 = ((direct + _e126) + indirect_diffuse);
+    float3 _e129 = n;
+    const float3 _e131 = standard_sphere_map(color_1, _e129, in_1.world_position);
+    float3 radiance = clamp(_e131, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

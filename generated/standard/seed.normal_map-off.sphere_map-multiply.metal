@@ -54,10 +54,13 @@ constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
 
 float weft_pow4_(
     float x
@@ -257,6 +260,29 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_3,
+    metal::float3 world_position_2,
+    constant WeftFrame& weft_frame,
+    constant WeftMaterial& material,
+    metal::sampler material_clamp_sampler,
+    metal::texturecube<float, metal::access::sample> sphere_map
+) {
+    metal::float3 color = {};
+    color = color_in;
+    {
+        metal::float3 _e4 = weft_sphere_map_direction(n_3, world_position_2, weft_frame);
+        metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
+        metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
+        metal::float3 _e12 = color;
+        float _e17 = material.sphere_strength;
+        color = _e12 * metal::max(metal::mix(metal::float3(1.0), sph, _e17), metal::float3(0.0));
+    }
+    metal::float3 _e23 = color;
+    return _e23;
+}
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -299,7 +325,7 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_position_3 [[user(loc0), center_perspective]];
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
@@ -320,7 +346,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(2)]]
 , metal::texturecube<float, metal::access::sample> sphere_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -328,7 +354,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -395,17 +420,9 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e123 = ambient_kd;
     metal::float3 indirect_diffuse = ((_e121 * ao) * _e123) * diffuse_albedo;
     metal::float3 _e126 = indirect_specular;
-    color = (direct + _e126) + indirect_diffuse;
-    {
-        metal::float3 _e130 = n;
-        metal::float3 _e132 = weft_sphere_map_direction(_e130, in_1.world_position, weft_frame);
-        metal::float4 _e135 = sphere_map.sample(material_clamp_sampler, _e132);
-        metal::float3 sph = metal::max(_e135.xyz, metal::float3(0.0));
-        metal::float3 _e140 = color;
-        float _e145 = material.sphere_strength;
-        color = _e140 * metal::max(metal::mix(metal::float3(1.0), sph, _e145), metal::float3(0.0));
-    }
-    metal::float3 _e151 = color;
-    metal::float3 radiance = metal::clamp(_e151, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 color_1 = (direct + _e126) + indirect_diffuse;
+    metal::float3 _e129 = n;
+    metal::float3 _e131 = standard_sphere_map(color_1, _e129, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e131, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -47,10 +47,13 @@ const SPHERE_MAP_MULTIPLY: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -198,6 +201,14 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
+    var color: vec3<f32>;
+
+    color = color_in;
+    let _e4 = color;
+    return _e4;
+}
+
 @vertex 
 fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     var out: WeftVaryings;
@@ -230,7 +241,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
-    var color: vec3<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -298,8 +308,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e123 = ambient_kd;
     let indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
     let _e126 = indirect_specular;
-    color = ((direct + _e126) + indirect_diffuse);
-    let _e130 = color;
-    let radiance = clamp(_e130, vec3(0f), vec3(65504f));
+    let color_1 = ((direct + _e126) + indirect_diffuse);
+    let _e129 = n;
+    let _e131 = standard_sphere_map(color_1, _e129, in_1.world_position);
+    let radiance = clamp(_e131, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

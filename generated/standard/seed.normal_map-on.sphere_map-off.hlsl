@@ -49,10 +49,13 @@ static const uint SPHERE_MAP_MULTIPLY = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -69,7 +72,7 @@ Texture2D<float4> normal_map : register(t4, space1);
 Texture2D<float4> rmo_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
+    float3 world_position_2 : LOC0;
     float3 world_normal : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
@@ -77,7 +80,7 @@ struct VertexOutput_vs_main {
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
+    float3 world_position_3 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
@@ -265,6 +268,15 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
+float3 standard_sphere_map(float3 color_in, float3 n_5, float3 world_position_1)
+{
+    float3 color = (float3)0;
+
+    color = color_in;
+    float3 _e4 = color;
+    return _e4;
+}
+
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
 {
     WeftVaryings out_ = (WeftVaryings)0;
@@ -292,7 +304,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -300,7 +312,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
-    float3 color = (float3)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -378,8 +389,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 _e135 = ambient_kd;
     float3 indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
     float3 _e138 = indirect_specular;
-    color = ((direct + _e138) + indirect_diffuse);
-    float3 _e142 = color;
-    float3 radiance = clamp(_e142, (0.0).xxx, (65504.0).xxx);
+    float3 color_1 = ((direct + _e138) + indirect_diffuse);
+    float3 _e141 = n;
+    const float3 _e143 = standard_sphere_map(color_1, _e141, in_1.world_position);
+    float3 radiance = clamp(_e143, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -54,10 +54,13 @@ constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
 
 float weft_pow4_(
     float x
@@ -284,6 +287,17 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_5,
+    metal::float3 world_position_1
+) {
+    metal::float3 color = {};
+    color = color_in;
+    metal::float3 _e4 = color;
+    return _e4;
+}
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -326,7 +340,7 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
@@ -346,7 +360,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -354,7 +368,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float3 color = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -431,8 +444,9 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e135 = ambient_kd;
     metal::float3 indirect_diffuse = ((_e133 * ao) * _e135) * diffuse_albedo;
     metal::float3 _e138 = indirect_specular;
-    color = (direct + _e138) + indirect_diffuse;
-    metal::float3 _e142 = color;
-    metal::float3 radiance = metal::clamp(_e142, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 color_1 = (direct + _e138) + indirect_diffuse;
+    metal::float3 _e141 = n;
+    metal::float3 _e143 = standard_sphere_map(color_1, _e141, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e143, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -1,4 +1,5 @@
 // @include "lib/forward.wgsl"
+// @include "lib/half.wgsl"
 //
 // standard: metallic/roughness PBR (seed 004 sec. 2) with an optional
 // view-space sphere map (seed 004 sec. 6). Returns linear HDR radiance.
@@ -15,6 +16,10 @@
 //               fit is far from the split-sum integral the reference bakes
 //               (at roughness 0.35 and n.v = 1 it gives 0.89 F0 against
 //               0.98 F0), hence a look rather than an approximation.
+//   low       = an approximation of the reference in half precision: the
+//               fast tier's terms in weft_half (f16 with shader-f16; the
+//               f32 fallback otherwise), roughness floored at 0.089
+//               (standard_low below, lib/half.wgsl).
 // All: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube.
 // The material uniform, textures and keyword overrides come from the
 // generated prelude (standard.toml).
@@ -60,6 +65,12 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 
     let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
     let diffuse_albedo = base * (1.0 - metallic);
+
+    if WEFT_TIER == TIER_LOW {
+        let color = standard_low(n, v, l, h, f0, diffuse_albedo, roughness, ao, specular_strength);
+        let radiance = clamp(standard_sphere_map(color, n, in.world_position), vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+        return vec4<f32>(radiance, alpha);
+    }
 
     // ------------------------------------------------------------ tier terms
     var visibility: f32;
@@ -116,26 +127,76 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // SH already returns E / pi.
     let indirect_diffuse = weft_sh_irradiance(n) * ao * ambient_kd * diffuse_albedo;
 
-    var color = direct + indirect_specular + indirect_diffuse;
-
-    // ------------------------------------------------------------ sphere map
-    // Each branch samples sphere_map itself so the texture vanishes from the
-    // OFF variant once the toolchain drops dead branches.
-    if SPHERE_MAP == SPHERE_MAP_ADD {
-        let dir = weft_sphere_map_direction(n, in.world_position);
-        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
-        color += sph * material.sphere_strength;
-    }
-    if SPHERE_MAP == SPHERE_MAP_MULTIPLY {
-        let dir = weft_sphere_map_direction(n, in.world_position);
-        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
-        // mix() extrapolates for strength > 1 and could turn negative.
-        color *= max(mix(vec3<f32>(1.0), sph, material.sphere_strength), vec3<f32>(0.0));
-    }
+    let color = direct + indirect_specular + indirect_diffuse;
 
     // Never negative (e.g. a negative ADD strength); at most the fp16 maximum
     // so an Rgba16Float target never stores Inf (a sharp lobe at grazing under
     // a bright light can exceed it).
-    let radiance = clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    let radiance = clamp(standard_sphere_map(color, n, in.world_position), vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     return vec4<f32>(radiance, alpha);
+}
+
+// ---------------------------------------------------------------- sphere map
+// Each branch samples sphere_map itself so the texture vanishes from the
+// OFF variant once the toolchain drops dead branches.
+fn standard_sphere_map(color_in: vec3<f32>, n: vec3<f32>, world_position: vec3<f32>) -> vec3<f32> {
+    var color = color_in;
+    if SPHERE_MAP == SPHERE_MAP_ADD {
+        let dir = weft_sphere_map_direction(n, world_position);
+        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
+        color += sph * material.sphere_strength;
+    }
+    if SPHERE_MAP == SPHERE_MAP_MULTIPLY {
+        let dir = weft_sphere_map_direction(n, world_position);
+        let sph = max(textureSample(sphere_map, material_clamp_sampler, dir).rgb, vec3<f32>(0.0));
+        // mix() extrapolates for strength > 1 and could turn negative.
+        color *= max(mix(vec3<f32>(1.0), sph, material.sphere_strength), vec3<f32>(0.0));
+    }
+    return color;
+}
+
+// ---------------------------------------------------------------- low
+// The reference's model with Hammon's visibility (as fast) and every BRDF
+// term in half precision (weft_half: f16 where the device has shader-f16,
+// else the f32 fallback). Lighting (light radiance, SH, prefiltered
+// environment) and the table fetch stay f32; the half terms are
+// dimensionless and bounded (lib/half.wgsl), so a bright light cannot
+// overflow them. Roughness is floored at 0.089 (f16's GGX peak limit).
+fn standard_low(
+    n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, h: vec3<f32>,
+    f0_in: vec3<f32>, diffuse_albedo: vec3<f32>,
+    roughness_in: f32, ao: f32, specular_strength: f32,
+) -> vec3<f32> {
+    let n_dot_v = weft_half(weft_clamp_cos(dot(n, v)));
+    let n_dot_l = weft_half(saturate(dot(n, l)));
+    let n_dot_h = weft_half(saturate(dot(n, h)));
+    let v_dot_h = weft_half(saturate(dot(v, h)));
+    let n_cross_h = cross(n, h);
+    let one_minus_n_dot_h2 = weft_half(dot(n_cross_h, n_cross_h));
+    let roughness = weft_half(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
+    let alpha = roughness * roughness;
+    let f0 = vec3<weft_half>(f0_in);
+    // The split-sum table (f32 fetch, a dimensionless pair): Karis's analytic
+    // fit in its place was measured at worst FLIP 0.25 against 0.063 (README).
+    let lut = weft_env_brdf_lut(weft_clamp_cos(dot(n, v)), roughness_in);
+    let env_brdf = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, lut));
+    let kd = max(vec3<weft_half>(1.0) - env_brdf, vec3<weft_half>(0.0));
+    // Direct diffuse BRDF times n.l: kd / pi n.l (half), times the albedo.
+    var direct_n_dot_l = vec3<f32>(kd * (n_dot_l * weft_half(WEFT_INV_PI))) * diffuse_albedo;
+    var indirect_specular = vec3<f32>(0.0);
+    if specular_strength > 0.0 {
+        let d = weft_half_d_ggx(one_minus_n_dot_h2, n_dot_h, alpha);
+        let v_n_dot_l = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v, n_dot_l, alpha);
+        let f = weft_half_f_schlick(f0, v_dot_h);
+        // D (V n.l) can exceed the f16 range at a sharp grazing peak:
+        // clamped before F (the final radiance is clamped there anyway).
+        let lobe = weft_half_min_max(d * v_n_dot_l);
+        // The strength is a user factor: applied in f32, never in f16.
+        direct_n_dot_l += vec3<f32>(f * lobe) * specular_strength;
+        let prefiltered = weft_prefiltered_radiance(reflect(-v, n), roughness_in);
+        indirect_specular = prefiltered * vec3<f32>(env_brdf) * (ao * specular_strength);
+    }
+    let direct = direct_n_dot_l * weft_main_light_radiance();
+    let indirect_diffuse = weft_sh_irradiance(n) * ao * vec3<f32>(kd) * diffuse_albedo;
+    return direct + indirect_specular + indirect_diffuse;
 }

@@ -14,39 +14,13 @@ pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
 /// …and each group's sampler-index buffer is `t<this>` in the group's space.
 pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
 
-/// The non-WGSL outputs of one module.
-pub struct OtherLanguages {
-    pub spirv: Vec<u8>,
-    pub hlsl: String,
-    pub msl: String,
-    /// (entry point, stage, source, binding table) per entry point.
-    pub glsl: Vec<(String, ShaderStage, String, weft_meta::GlslReflection)>,
-}
-
 pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
     wgsl::write_string(module, info, wgsl::WriterFlags::empty())
         .map_err(|e| format!("WGSL backend: {e}"))
 }
 
 /// Every language but WGSL needs the overrides resolved (naga has no SPIR-V
-/// specialisation constants), so these take a module without overrides.
-pub fn emit_others(module: &Module, info: &ModuleInfo) -> Result<OtherLanguages, String> {
-    let spirv = emit_spirv(module, info)?;
-    let hlsl = emit_hlsl(module, info)?;
-    let msl = emit_msl(module, info)?;
-    let mut glsl_out = Vec::new();
-    for ep in &module.entry_points {
-        let (source, table) = emit_glsl(module, info, &ep.name, ep.stage)?;
-        glsl_out.push((ep.name.clone(), ep.stage, source, table));
-    }
-    Ok(OtherLanguages {
-        spirv,
-        hlsl,
-        msl,
-        glsl: glsl_out,
-    })
-}
-
+/// specialisation constants): the callers pass a module without overrides.
 pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String> {
     let options = spv::Options {
         lang_version: (1, 0),

@@ -75,9 +75,32 @@ pub fn engine_interface_file(db: &mut SourceDb) -> FileId {
     })
 }
 
+/// How `weft_half`, the type of half-precision code, is spelled in a composed
+/// module (crate::half): `f16` in the module every language but HLSL and GLSL
+/// is written from, `f32` in the fallback module they are written from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HalfAs {
+    F16,
+    F32,
+}
+
+/// The material composed with `weft_half = f16` (the module of record).
 pub fn compose(m: &Material, prelude: &Prelude, db: &mut SourceDb) -> Composed {
+    compose_with(m, prelude, db, HalfAs::F16)
+}
+
+pub fn compose_with(m: &Material, prelude: &Prelude, db: &mut SourceDb, half: HalfAs) -> Composed {
     let mut text = String::new();
     let mut map = SourceMap::default();
+    // `enable` must precede every declaration; a variant that keeps no f16
+    // value is written without it (naga writes it only when a type needs it).
+    let preamble = match half {
+        HalfAs::F16 => "enable f16;\nalias weft_half = f16;\n",
+        HalfAs::F32 => "alias weft_half = f32;\n",
+    };
+    text.push_str(preamble);
+    map.segments
+        .push((0..preamble.len(), Target::Decl(m.decl.clone())));
     let mut push_file = |text: &mut String, file: FileId, src: &str| {
         let start = text.len();
         text.push_str(src);

@@ -42,6 +42,8 @@ pub fn compile_in_memory(
     if !library::check_interface(&m, &module, diags) {
         return None;
     }
+    let fallback = crate::half::fallback_module(&m, &prelude, db, diags)?;
+    let fallback = fallback.as_ref().map(|(_, f)| f);
     // The material-level metadata (what `compile_material` records).
     let _ = (
         metadata::groups(&m),
@@ -55,7 +57,7 @@ pub fn compile_in_memory(
     let keys = variants::variants(&m);
     let mut compiled = Vec::new();
     for key in spread(&keys, max_variants) {
-        match variant::compile_variant(&m, &module, key, &prelude) {
+        match variant::compile_variant(&m, &module, fallback, key, &prelude) {
             Ok(v) => compiled.push(v),
             Err(msg) => {
                 diags.push(

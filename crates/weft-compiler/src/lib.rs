@@ -15,6 +15,7 @@ pub mod cache;
 pub mod compose;
 pub mod engine_binding;
 pub mod folder_build;
+pub mod half;
 pub mod in_memory;
 pub mod library;
 pub mod limits;

@@ -138,19 +138,21 @@ pub fn compile_material_cached(
     if !check_interface(m, &module, diags) {
         return None;
     }
+    let fallback = crate::half::fallback_module(m, &prelude, db, diags)?;
+    let fallback = fallback.as_ref().map(|(_, f)| f);
     let keys = variants::variants(m);
     let results: Vec<Result<CompiledVariant, String>> = keys
         .par_iter()
         .map(|k| {
             let Some(cache) = cache else {
-                return variant::compile_variant(m, &module, k, &prelude);
+                return variant::compile_variant(m, &module, fallback, k, &prelude);
             };
             let id = k.id(m);
             let key = UnitCache::unit_key(&inputs, &id);
             if let Some(v) = cache.load(&key, &id) {
                 return Ok(v);
             }
-            let v = variant::compile_variant(m, &module, k, &prelude)?;
+            let v = variant::compile_variant(m, &module, fallback, k, &prelude)?;
             // A cache that cannot be written only costs the next build time.
             let _ = cache.store(&key, &v);
             Ok(v)

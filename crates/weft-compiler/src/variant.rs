@@ -62,6 +62,7 @@ pub fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
 pub fn compile_variant(
     m: &Material,
     module: &naga::Module,
+    fallback: Option<&naga::Module>,
     key: &VariantKey,
     prelude: &Prelude,
 ) -> Result<CompiledVariant, String> {
@@ -79,13 +80,25 @@ pub fn compile_variant(
     for (name, value) in FEATURE_DEFAULTS {
         values.values.insert(name.into(), value);
     }
+    let validate = |module: &naga::Module, what: &str| {
+        validator().validate(module).map_err(|e| {
+            format!(
+                "variant `{id}`{what} fails validation after specialisation: {}",
+                e.as_inner()
+            )
+        })
+    };
     let specialised = specialise(module, &values);
-    let info = validator().validate(&specialised).map_err(|e| {
-        format!(
-            "variant `{id}` fails validation after specialisation: {}",
-            e.as_inner()
-        )
-    })?;
+    let info = validate(&specialised, "")?;
+    // Half-precision code: the same variant of the f32 composition (crate::half).
+    let specialised_fallback = match fallback {
+        Some(f) if crate::half::uses_f16(&specialised) => {
+            let f = specialise(f, &values);
+            let finfo = validate(&f, " (its f32 fallback)")?;
+            Some((f, finfo))
+        }
+        _ => None,
+    };
     let keyword_values: BTreeMap<&str, &str> = key
         .keywords
         .iter()
@@ -101,8 +114,8 @@ pub fn compile_variant(
     });
     emit_shader(
         m,
-        &specialised,
-        &info,
+        (&specialised, &info),
+        specialised_fallback.as_ref().map(|(f, i)| (f, i)),
         id,
         prelude,
         &textures,
@@ -148,106 +161,103 @@ pub fn material_textures<'a>(
 /// Emits a specialised, validated module in every language (one set of
 /// non-WGSL files per combination of `constant`-mode keyword values) and
 /// reflects its metadata. Files are named `<id>[+keyword-value...].<ext>`.
+///
+/// A module that keeps f16 values needs `portable`, the same variant with
+/// `weft_half` = f32 (crate::half): every language's files are written from
+/// it, so they run on any device, and the f16 module adds `<stem>.f16.*`
+/// WGSL, SPIR-V and MSL files (`f16_files`) for devices with `shader-f16`.
 pub fn emit_shader(
     m: &Material,
-    specialised: &naga::Module,
-    info: &naga::valid::ModuleInfo,
+    (specialised, info): (&naga::Module, &naga::valid::ModuleInfo),
+    portable: Option<(&naga::Module, &naga::valid::ModuleInfo)>,
     id: String,
     prelude: &Prelude,
     textures: &[reflect::MaterialTexture],
     combos: &[Vec<(usize, usize)>],
 ) -> Result<CompiledVariant, String> {
-    let wgsl = backends::emit_wgsl(specialised, info)?;
-
-    let mut files: Vec<(String, Vec<u8>)> = vec![(format!("{id}.wgsl"), wgsl.clone().into_bytes())];
-    let mut by_lang: BTreeMap<String, Vec<ShaderFile>> = BTreeMap::new();
-    by_lang.entry("wgsl".into()).or_default().push(ShaderFile {
-        path: format!("{id}.wgsl"),
-        sha256: sha256_hex(wgsl.as_bytes()),
-        entry_point: None,
-        constants: BTreeMap::new(),
-        glsl: None,
+    // (main module, its f16 original when the main one is the f32 fallback)
+    let (main, half) = match (crate::half::uses_f16(specialised), portable) {
+        (false, _) => ((specialised, info), None),
+        (true, Some(p)) => (p, Some((specialised, info))),
+        (true, None) => {
+            return Err(format!(
+                "variant `{id}` computes in f16 but has no f32 fallback (write half-precision code with `weft_half`)"
+            ));
+        }
+    };
+    let mut out = Emitted::default();
+    let wgsl = backends::emit_wgsl(main.0, main.1)?;
+    out.add(LanguageFile {
+        lang: "wgsl",
+        name: format!("{id}.wgsl"),
+        bytes: wgsl.clone().into_bytes(),
+        ..Default::default()
     });
+    if let Some((h, hinfo)) = half {
+        let text = backends::emit_wgsl(h, hinfo)?;
+        out.add_f16(LanguageFile {
+            lang: "wgsl",
+            name: format!("{id}.f16.wgsl"),
+            bytes: text.into_bytes(),
+            ..Default::default()
+        });
+    }
 
     // Other languages cannot keep overrides: one set of files per constant-keyword combination.
     for combo in combos {
         let mut suffix = String::new();
         let mut constants = BTreeMap::new();
-        let mut pc = naga::back::PipelineConstants::default();
         for &(k, v) in combo {
             let kw = &m.keywords[k];
             suffix.push_str(&format!("+{}-{}", kw.name.to_lowercase(), kw.values[v]));
             constants.insert(kw.name.clone(), kw.values[v].clone());
-            // A keyword the module no longer reads has no override left to set.
-            let read = specialised
-                .overrides
-                .iter()
-                .any(|(_, o)| o.name.as_deref() == Some(kw.name.as_str()));
-            if !read {
-                continue;
-            }
-            pc.insert(
-                kw.name.clone(),
-                if kw.kind == KeywordKind::Toggle {
-                    (v == 1) as u8 as f64
-                } else {
-                    v as f64
-                },
-            );
         }
-        let (resolved, _) =
-            naga::back::pipeline_constants::process_overrides(specialised, info, None, &pc)
-                .map_err(|e| format!("variant `{id}`: resolving pipeline constants: {e}"))?;
-        let mut resolved = resolved.into_owned();
-        for (_, o) in resolved.overrides.iter_mut() {
-            o.name = None;
-            o.id = None;
-        }
-        naga::compact::compact(&mut resolved, naga::compact::KeepUnused::No);
-        let rinfo = validator()
-            .validate(&resolved)
-            .map_err(|e| format!("variant `{id}{suffix}` fails validation: {}", e.as_inner()))?;
-        let backends::OtherLanguages {
-            spirv,
-            hlsl,
-            msl,
-            glsl,
-        } = backends::emit_others(&resolved, &rinfo)
-            .map_err(|e| format!("variant `{id}{suffix}`: {e}"))?;
         let stem = format!("{id}{suffix}");
-        let mut add = |lang: &str,
-                       name: String,
-                       bytes: Vec<u8>,
-                       entry: Option<String>,
-                       glsl: Option<weft_meta::GlslReflection>| {
-            by_lang.entry(lang.into()).or_default().push(ShaderFile {
-                path: name.clone(),
-                sha256: sha256_hex(&bytes),
-                entry_point: entry,
-                constants: constants.clone(),
-                glsl,
-            });
-            files.push((name, bytes));
+        let err = |e: String| format!("variant `{stem}`: {e}");
+        let file = |lang: &'static str, name: String, bytes: Vec<u8>| LanguageFile {
+            lang,
+            name,
+            bytes,
+            constants: constants.clone(),
+            ..Default::default()
         };
-        add("spirv", format!("{stem}.spv"), spirv, None, None);
-        add(
-            "hlsl",
-            format!("{stem}.hlsl"),
-            hlsl.into_bytes(),
-            None,
-            None,
-        );
-        add("msl", format!("{stem}.metal"), msl.into_bytes(), None, None);
-        for (entry, stage, src, table) in glsl {
-            add(
-                "glsl",
-                format!("{stem}.{entry}.{}.glsl", stage_suffix(stage)),
-                src.into_bytes(),
-                Some(entry),
-                Some(table),
-            );
+        let (resolved, rinfo) = resolve_constants(m, main.0, main.1, combo).map_err(err)?;
+        let spirv = backends::emit_spirv(&resolved, &rinfo).map_err(err)?;
+        out.add(file("spirv", format!("{stem}.spv"), spirv));
+        let hlsl = backends::emit_hlsl(&resolved, &rinfo).map_err(err)?;
+        out.add(file("hlsl", format!("{stem}.hlsl"), hlsl.into_bytes()));
+        let msl = backends::emit_msl(&resolved, &rinfo).map_err(err)?;
+        out.add(file("msl", format!("{stem}.metal"), msl.into_bytes()));
+        for ep in &resolved.entry_points {
+            let (src, table) =
+                backends::emit_glsl(&resolved, &rinfo, &ep.name, ep.stage).map_err(err)?;
+            out.add(LanguageFile {
+                entry_point: Some(ep.name.clone()),
+                glsl: Some(table),
+                ..file(
+                    "glsl",
+                    format!("{stem}.{}.{}.glsl", ep.name, stage_suffix(ep.stage)),
+                    src.into_bytes(),
+                )
+            });
+        }
+        // Half precision: the languages that can carry f16 (naga's GLSL
+        // writer cannot; HLSL SM 5.1 has no 16-bit float).
+        if let Some((h, hinfo)) = half {
+            let (resolved, rinfo) = resolve_constants(m, h, hinfo, combo).map_err(err)?;
+            let spirv = backends::emit_spirv(&resolved, &rinfo).map_err(err)?;
+            out.add_f16(file("spirv", format!("{stem}.f16.spv"), spirv));
+            let msl = backends::emit_msl(&resolved, &rinfo).map_err(err)?;
+            out.add_f16(file("msl", format!("{stem}.f16.metal"), msl.into_bytes()));
         }
     }
+    let Emitted {
+        files,
+        by_lang,
+        f16_by_lang,
+    } = out;
+    let specialised = main.0;
+    let info = main.1;
 
     let pipeline_constants = specialised
         .overrides
@@ -285,6 +295,7 @@ pub fn emit_shader(
 
     let shader = VariantShader {
         files: by_lang,
+        f16_files: f16_by_lang,
         entry_points: reflect::entry_points(specialised),
         pipeline_constants,
         bindings: reflect::bindings(specialised, info, textures, &members),
@@ -298,6 +309,94 @@ pub fn emit_shader(
         shader,
         wgsl,
     })
+}
+
+/// One emitted file before it is listed in the metadata.
+#[derive(Default)]
+struct LanguageFile {
+    lang: &'static str,
+    name: String,
+    bytes: Vec<u8>,
+    entry_point: Option<String>,
+    constants: BTreeMap<String, String>,
+    glsl: Option<weft_meta::GlslReflection>,
+}
+
+/// The files of a variant and their metadata listings (main and f16).
+#[derive(Default)]
+struct Emitted {
+    files: Vec<(String, Vec<u8>)>,
+    by_lang: BTreeMap<String, Vec<ShaderFile>>,
+    f16_by_lang: BTreeMap<String, Vec<ShaderFile>>,
+}
+
+impl Emitted {
+    fn listing(f: &LanguageFile) -> ShaderFile {
+        ShaderFile {
+            path: f.name.clone(),
+            sha256: sha256_hex(&f.bytes),
+            entry_point: f.entry_point.clone(),
+            constants: f.constants.clone(),
+            glsl: f.glsl.clone(),
+        }
+    }
+
+    fn add(&mut self, f: LanguageFile) {
+        let listing = Self::listing(&f);
+        self.by_lang.entry(f.lang.into()).or_default().push(listing);
+        self.files.push((f.name, f.bytes));
+    }
+
+    fn add_f16(&mut self, f: LanguageFile) {
+        let listing = Self::listing(&f);
+        self.f16_by_lang
+            .entry(f.lang.into())
+            .or_default()
+            .push(listing);
+        self.files.push((f.name, f.bytes));
+    }
+}
+
+/// `module` with the `constant`-mode keywords of `combo` resolved (naga has
+/// no SPIR-V specialisation constants), anonymised, compacted and validated.
+fn resolve_constants(
+    m: &Material,
+    module: &naga::Module,
+    info: &naga::valid::ModuleInfo,
+    combo: &[(usize, usize)],
+) -> Result<(naga::Module, naga::valid::ModuleInfo), String> {
+    let mut pc = naga::back::PipelineConstants::default();
+    for &(k, v) in combo {
+        let kw = &m.keywords[k];
+        // A keyword the module no longer reads has no override left to set.
+        let read = module
+            .overrides
+            .iter()
+            .any(|(_, o)| o.name.as_deref() == Some(kw.name.as_str()));
+        if !read {
+            continue;
+        }
+        pc.insert(
+            kw.name.clone(),
+            if kw.kind == KeywordKind::Toggle {
+                (v == 1) as u8 as f64
+            } else {
+                v as f64
+            },
+        );
+    }
+    let (resolved, _) = naga::back::pipeline_constants::process_overrides(module, info, None, &pc)
+        .map_err(|e| format!("resolving pipeline constants: {e}"))?;
+    let mut resolved = resolved.into_owned();
+    for (_, o) in resolved.overrides.iter_mut() {
+        o.name = None;
+        o.id = None;
+    }
+    naga::compact::compact(&mut resolved, naga::compact::KeepUnused::No);
+    let rinfo = validator()
+        .validate(&resolved)
+        .map_err(|e| format!("fails validation: {}", e.as_inner()))?;
+    Ok((resolved, rinfo))
 }
 
 /// Maps each variant to the first earlier variant with identical WGSL.

@@ -28,6 +28,19 @@ fn load(name: &str) -> (weft_front::Material, naga::Module, prelude::Prelude) {
     (m, module, prelude)
 }
 
+/// The f32 composition of a material with half-precision code (None without).
+fn load_portable(name: &str) -> Option<naga::Module> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials");
+    let mut db = SourceDb::new();
+    let mut diags = Diagnostics::new();
+    let toml = root.join(format!("{name}/{name}.toml"));
+    let m = weft_front::load_material(&toml, &root, &mut db, &mut diags).expect("loads");
+    let prelude = prelude::generate(&m);
+    weft_compiler::half::fallback_module(&m, &prelude, &mut db, &mut diags)
+        .expect("valid")
+        .map(|(_, module)| module)
+}
+
 fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
     ResolvedInstance {
         name: "test".into(),
@@ -252,6 +265,7 @@ fn every_variant_folds_at_every_range_end_and_emits_every_language() {
     for toml in weft_compiler::library::discover(&root).unwrap() {
         let name = toml.file_stem().unwrap().to_string_lossy().into_owned();
         let (m, module, prelude) = load(&name);
+        let portable = load_portable(&name);
         for key in weft_front::variants::variants(&m) {
             for bound in [None, Some(false), Some(true)] {
                 let mut inst = instance(&m, &[]);
@@ -262,10 +276,15 @@ fn every_variant_folds_at_every_range_end_and_emits_every_language() {
                 let values = instance_values(&m, &inst, key.tier, &SceneFeatures::default());
                 let (f, _) = folded_wgsl(&module, &values.fold);
                 let info = compose::validator().validate(&f).unwrap();
+                let portable = portable.as_ref().map(|p| {
+                    let (p, _) = folded_wgsl(p, &values.fold);
+                    let info = compose::validator().validate(&p).unwrap();
+                    (p, info)
+                });
                 weft_compiler::variant::emit_shader(
                     &m,
-                    &f,
-                    &info,
+                    (&f, &info),
+                    portable.as_ref().map(|(p, i)| (p, i)),
                     format!("{name}.test"),
                     &prelude,
                     &weft_compiler::variant::material_textures(

@@ -746,6 +746,15 @@ pub struct Variant {
 pub struct VariantShader {
     /// Language -> files (paths relative to the metadata file).
     pub files: BTreeMap<String, Vec<ShaderFile>>,
+    /// The same variant computing in half precision, for devices with the
+    /// WebGPU feature `shader-f16` (Vulkan `shaderFloat16`; Metal always):
+    /// `wgsl`, `spirv` and `msl` files `<stem>.f16.*`, with the same entry
+    /// points, bindings and uniform layout as `files`. Present only for
+    /// variants whose code computes in `weft_half`; `files` then holds the
+    /// same code in f32, which runs everywhere (HLSL SM 5.1 and GLSL have no
+    /// 16-bit float, so they have no f16 files).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub f16_files: BTreeMap<String, Vec<ShaderFile>>,
     /// Every entry point of the module, with its stage.
     pub entry_points: Vec<EntryPoint>,
     /// WGSL `override`s left in the WGSL output (keywords in `constant` mode).

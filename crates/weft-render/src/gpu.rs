@@ -35,8 +35,12 @@ impl Gpu {
             .map_err(|e| Error::NoAdapter(e.to_string()))?;
         let info = adapter.get_info();
         // Blending into an Rgba32Float target needs FLOAT32_BLENDABLE;
-        // `Renderer::time_frames` uses TIMESTAMP_QUERY when the adapter has it.
-        let wanted = wgpu::Features::FLOAT32_BLENDABLE | wgpu::Features::TIMESTAMP_QUERY;
+        // `Renderer::time_frames` uses TIMESTAMP_QUERY when the adapter has it;
+        // half-precision variants' f16 files need SHADER_F16 (without it
+        // their f32 files are drawn: pipelines::draws_f16).
+        let wanted = wgpu::Features::FLOAT32_BLENDABLE
+            | wgpu::Features::TIMESTAMP_QUERY
+            | wgpu::Features::SHADER_F16;
         let required_features = adapter.features() & wanted;
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {

@@ -22,6 +22,8 @@ pub(crate) struct ShaderInput<'a> {
     /// Folder the shader's file paths are relative to.
     pub dir: &'a Path,
     pub shader: &'a VariantShader,
+    /// Draw a half-precision shader's f32 files even when the device has `shader-f16`.
+    pub f32_fallback: bool,
     /// `Some`: this SPIR-V file (relative to `dir`); `None`: the WGSL file.
     pub spirv_file: Option<String>,
     /// Values of the WGSL `override`s.
@@ -76,9 +78,10 @@ impl Renderer {
             })
             .collect();
         let key = format!(
-            "{}|{:?}|{:?}|{:?}|{:?}|{:?}",
+            "{}|{:?}|{}|{:?}|{:?}|{:?}|{:?}",
             input.cache_id,
             input.language(),
+            input.f32_fallback,
             format,
             input.constants,
             input.spirv_file,
@@ -104,16 +107,58 @@ impl Renderer {
     }
 }
 
+/// Whether to draw the shader's half-precision files (`f16_files`): when it
+/// has them, the device has `shader-f16` and the f32 files were not asked for.
+fn draws_f16(gpu: &Gpu, input: &ShaderInput) -> bool {
+    !input.shader.f16_files.is_empty()
+        && !input.f32_fallback
+        && gpu.device.features().contains(wgpu::Features::SHADER_F16)
+}
+
 /// The shader source of `input`: the WGSL text, or the SPIR-V module read
-/// through naga with weft's Vulkan y flip undone.
-fn shader_source(input: &ShaderInput) -> Result<wgpu::ShaderSource<'static>> {
-    Ok(match &input.spirv_file {
-        None => {
-            let rel = &input
+/// through naga with weft's Vulkan y flip undone; from the half-precision
+/// files when [`draws_f16`].
+fn shader_source(gpu: &Gpu, input: &ShaderInput) -> Result<wgpu::ShaderSource<'static>> {
+    let f16 = draws_f16(gpu, input);
+    let files = |lang: &str| {
+        let listed = match f16 {
+            true => input.shader.f16_files.get(lang),
+            false => input.shader.files.get(lang),
+        };
+        listed.ok_or_else(|| {
+            Error::Metadata(format!(
+                "variant `{}` lists no {}{lang} file",
+                input.label,
+                if f16 { "f16 " } else { "" }
+            ))
+        })
+    };
+    let spirv_file = match (&input.spirv_file, f16) {
+        (Some(rel), true) => {
+            // The f16 file with the same baked constants.
+            let constants = input
                 .shader
                 .files
-                .get("wgsl")
-                .and_then(|f| f.first())
+                .get("spirv")
+                .and_then(|l| l.iter().find(|f| &f.path == rel))
+                .map(|f| &f.constants);
+            let f = files("spirv")?
+                .iter()
+                .find(|f| Some(&f.constants) == constants)
+                .ok_or_else(|| {
+                    Error::Metadata(format!(
+                        "variant `{}`: no f16 file for `{rel}`",
+                        input.label
+                    ))
+                })?;
+            Some(f.path.clone())
+        }
+        (other, _) => other.clone(),
+    };
+    Ok(match &spirv_file {
+        None => {
+            let rel = &files("wgsl")?
+                .first()
                 .ok_or_else(|| {
                     Error::Metadata(format!("variant `{}` lists no WGSL file", input.label))
                 })?
@@ -158,7 +203,7 @@ fn build_pipelines(
 ) -> Result<VariantPipelines> {
     let device = &gpu.device;
     let (shader, label) = (input.shader, input.label);
-    let source = shader_source(input)?;
+    let source = shader_source(gpu, input)?;
     let module = gpu.checked(&format!("shader module of `{label}`"), || {
         device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(label),

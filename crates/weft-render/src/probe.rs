@@ -21,6 +21,10 @@
 //!
 //! Outputs are read from an `Rgba32Float` target (nothing is hidden by f16
 //! rounding) and every channel of every pixel is classified by [`classify`].
+//! A half-precision variant (metadata `f16_files`) is drawn from its f16
+//! files and from its f32 files, and the two are compared by
+//! [`classify_half`]: an f16 overflow the shader's final clamp would hide,
+//! and an underflow to 0 where the f32 value is visible.
 
 use crate::environment::{EnvironmentMaps, Luts, SkyParams};
 use crate::error::{Error, Result};
@@ -377,6 +381,27 @@ pub enum BadKind {
     Negative,
     /// Finite but above [`MAX_HALF`].
     Huge,
+    /// A half-precision variant saturates at the f16 maximum (or overflows to
+    /// Inf) where its f32 fallback stays below it.
+    HalfOverflow,
+    /// A half-precision variant gives 0 where its f32 fallback is visible
+    /// (at least [`VISIBLE`]): an f16 underflow that changes the picture.
+    HalfUnderflow,
+}
+
+/// The smallest linear value an 8-bit sRGB display shows as non-black (1/255
+/// after the sRGB curve): below it an underflow to 0 cannot be seen.
+pub const VISIBLE: f32 = 1.0 / 255.0 / 12.92;
+
+/// Compares a half-precision render's channel with its f32 fallback's.
+pub fn classify_half(half: f32, full: f32) -> Option<BadKind> {
+    if (half >= MAX_HALF || half.is_infinite()) && full < MAX_HALF {
+        Some(BadKind::HalfOverflow)
+    } else if half == 0.0 && full >= VISIBLE {
+        Some(BadKind::HalfUnderflow)
+    } else {
+        None
+    }
 }
 
 impl fmt::Display for BadKind {
@@ -386,6 +411,8 @@ impl fmt::Display for BadKind {
             BadKind::Inf => "Inf",
             BadKind::Negative => "negative",
             BadKind::Huge => "> 65504",
+            BadKind::HalfOverflow => "f16 overflow (the f32 fallback stays below 65504)",
+            BadKind::HalfUnderflow => "f16 underflow to 0 (the f32 fallback is visible)",
         })
     }
 }
@@ -655,6 +682,11 @@ pub struct MaterialSweep {
     pub outputs: u64,
     /// Bad channels.
     pub bad: u64,
+    /// Renders of half-precision variants compared with their f32 fallback.
+    pub half_compared: usize,
+    /// Renders of half-precision variants that could not be compared: the
+    /// device has no `shader-f16`, so only the f32 files were drawn.
+    pub half_unchecked: usize,
 }
 
 /// The result of a sweep over one or more materials.
@@ -688,8 +720,17 @@ impl SweepReport {
 
     /// One line of totals.
     pub fn summary(&self) -> String {
+        let compared: usize = self.materials.iter().map(|m| m.half_compared).sum();
+        let unchecked: usize = self.materials.iter().map(|m| m.half_unchecked).sum();
+        let half = match (compared, unchecked) {
+            (0, 0) => String::new(),
+            (c, 0) => format!("; {c} half-precision renders compared with their f32 fallback"),
+            (c, u) => format!(
+                "; {c} half-precision renders compared with their f32 fallback, {u} NOT compared (the device has no shader-f16)"
+            ),
+        };
         format!(
-            "{} material(s), {} variant(s) ({} aliases skipped), {} parameter settings x {} geometric cases = {} draws, {} outputs checked: {} bad",
+            "{} material(s), {} variant(s) ({} aliases skipped), {} parameter settings x {} geometric cases = {} draws, {} outputs checked: {} bad{half}",
             self.materials.len(),
             self.materials.iter().map(|m| m.variants).sum::<usize>(),
             self.materials.iter().map(|m| m.aliases).sum::<usize>(),
@@ -782,13 +823,19 @@ pub fn sweep_material(
         }
         let Some(shader) = &v.shader else { continue };
         let settings = parameter_settings(&meta, shader);
+        let half = !shader.f16_files.is_empty();
         for combo in constant_combinations(&meta) {
-            jobs.push((v.id.clone(), combo, settings.clone()));
+            jobs.push((v.id.clone(), combo, settings.clone(), half));
         }
     }
     summary.variants = jobs.len();
     let total: usize = jobs.iter().map(|j| j.2.len()).sum();
-    for (id, combo, settings) in jobs {
+    let has_f16 = renderer
+        .gpu()
+        .device
+        .features()
+        .contains(wgpu::Features::SHADER_F16);
+    for (id, combo, settings, half) in jobs {
         let variant_label = std::iter::once(id.clone())
             .chain(combo.iter().map(|(k, v)| format!("+{k}={v}")))
             .collect::<String>();
@@ -808,15 +855,36 @@ pub fn sweep_material(
             }
             let prepared = renderer.prepare(&material, &options)?;
             let tiles = probe.evaluate(renderer, &prepared)?;
+            // A half-precision variant is also drawn in f32 (its fallback):
+            // where they disagree by an overflow or a visible underflow, f16
+            // changed the picture.
+            let fallback_tiles = match half && has_f16 {
+                true => {
+                    let options = RenderOptions {
+                        f32_fallback: true,
+                        ..options
+                    };
+                    let prepared = renderer.prepare(&material, &options)?;
+                    summary.half_compared += 1;
+                    Some(probe.evaluate(renderer, &prepared)?)
+                }
+                false => {
+                    summary.half_unchecked += half as usize;
+                    None
+                }
+            };
             summary.renders += 1;
             summary.draws += tiles.len();
-            for (case, pixels) in probe.cases.iter().zip(&tiles) {
+            for (i, (case, pixels)) in probe.cases.iter().zip(&tiles).enumerate() {
                 let mut first: Option<([f32; 4], BadKind)> = None;
                 let mut count = 0;
-                for px in pixels {
+                let full = fallback_tiles.as_ref().map(|t| &t[i]);
+                for (j, px) in pixels.iter().enumerate() {
                     summary.outputs += 4;
-                    for &x in px {
-                        if let Some(kind) = classify(x) {
+                    for (c, &x) in px.iter().enumerate() {
+                        let kind =
+                            classify(x).or_else(|| full.and_then(|f| classify_half(x, f[j][c])));
+                        if let Some(kind) = kind {
                             count += 1;
                             first.get_or_insert((*px, kind));
                         }
@@ -863,6 +931,20 @@ pub fn failures_by_case(failures: &[Failure]) -> BTreeMap<String, (usize, Vec<Ba
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn half_precision_outputs_are_held_against_their_f32_fallback() {
+        use super::{BadKind, VISIBLE, classify_half};
+        assert_eq!(classify_half(65504.0, 7e4), None); // both saturate
+        assert_eq!(classify_half(65504.0, 1.2e3), Some(BadKind::HalfOverflow));
+        assert_eq!(
+            classify_half(f32::INFINITY, 10.0),
+            Some(BadKind::HalfOverflow)
+        );
+        assert_eq!(classify_half(0.0, VISIBLE), Some(BadKind::HalfUnderflow));
+        assert_eq!(classify_half(0.0, VISIBLE * 0.5), None); // invisible either way
+        assert_eq!(classify_half(0.2, 0.2001), None); // rounding is not a failure
+    }
 
     #[test]
     fn cases_have_the_cosines_they_are_named_after() {

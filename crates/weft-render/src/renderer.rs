@@ -94,6 +94,10 @@ pub struct RenderOptions {
     pub exposure: f32,
     /// `weft_frame.params.z`, seconds.
     pub time: f32,
+    /// Draw a half-precision variant's f32 files (`files`) even on a device
+    /// with `shader-f16`, where its `f16_files` are drawn by default (the
+    /// stability sweep compares the two).
+    pub f32_fallback: bool,
 }
 
 impl Default for RenderOptions {
@@ -106,6 +110,7 @@ impl Default for RenderOptions {
             background: Background::Sky { mip: 0.0 },
             exposure: 1.0,
             time: 0.0,
+            f32_fallback: false,
         }
     }
 }
@@ -300,6 +305,7 @@ impl Renderer {
             label: &variant_id,
             dir: material.dir(),
             shader,
+            f32_fallback: options.f32_fallback,
             spirv_file: match options.language {
                 ShaderLanguage::Wgsl => None,
                 ShaderLanguage::SpirV => {

@@ -400,6 +400,7 @@ impl Renderer {
             label: &entry.id,
             dir: &scene.dir,
             shader,
+            f32_fallback: options.f32_fallback,
             spirv_file: match options.language {
                 ShaderLanguage::Wgsl => None,
                 ShaderLanguage::SpirV => Some(spirv_file_for(shader, &entry.id, &inst.keywords)?),

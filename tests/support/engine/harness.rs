@@ -95,6 +95,7 @@ pub fn options() -> RenderOptions {
         background: Background::Color(CLEAR.map(|c| c as f32)),
         exposure: 1.0,
         time: 0.0,
+        f32_fallback: false,
     }
 }
 

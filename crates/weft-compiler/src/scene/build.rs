@@ -185,7 +185,7 @@ struct BuiltInstance {
 
 fn build_instance(
     m: &Material,
-    module: &naga::Module,
+    (module, fallback): (&naga::Module, Option<&naga::Module>),
     prelude: &prelude::Prelude,
     inst: &ResolvedInstance,
     tier: usize,
@@ -202,9 +202,21 @@ fn build_instance(
         }
     }
     let Folded { module, .. } = fold(module, &values.fold)?;
-    let info = validator()
-        .validate(&module)
-        .map_err(|e| format!("the folded shader fails validation: {}", e.as_inner()))?;
+    let validate = |module: &naga::Module, what: &str| {
+        validator()
+            .validate(module)
+            .map_err(|e| format!("the folded shader{what} fails validation: {}", e.as_inner()))
+    };
+    let info = validate(&module, "")?;
+    // Half-precision code: the same fold of the f32 composition (crate::half).
+    let fallback = match fallback {
+        Some(f) if crate::half::uses_f16(&module) => {
+            let Folded { module: f, .. } = fold(f, &values.fold)?;
+            let finfo = validate(&f, " (its f32 fallback)")?;
+            Some((f, finfo))
+        }
+        _ => None,
+    };
     // The id is the content hash, known only after emitting: emit under a
     // placeholder stem and rename.
     let wgsl = crate::backends::emit_wgsl(&module, &info)?;
@@ -213,7 +225,15 @@ fn build_instance(
     let textures = material_textures(m, prelude, &m.tiers.values[tier], |k| {
         keywords.get(k).map(String::as_str)
     });
-    let compiled = emit_shader(m, &module, &info, id, prelude, &textures, &[Vec::new()])?;
+    let compiled = emit_shader(
+        m,
+        (&module, &info),
+        fallback.as_ref().map(|(f, i)| (f, i)),
+        id,
+        prelude,
+        &textures,
+        &[Vec::new()],
+    )?;
     Ok(BuiltInstance { values, compiled })
 }
 
@@ -237,7 +257,8 @@ pub fn build_resolved_scene(
         let prelude = prelude::generate(m);
         let composed = compose::compose(m, &prelude, db);
         let (module, _) = compose::parse_and_validate(&composed, m, diags)?;
-        modules.push((prelude, module, composed));
+        let fallback = crate::half::fallback_module(m, &prelude, db, diags)?.map(|(_, f)| f);
+        modules.push((prelude, module, composed, fallback));
     }
     let engine = compose::engine_interface_file(db);
 
@@ -248,8 +269,15 @@ pub fn build_resolved_scene(
         .zip(&tiers)
         .map(|(inst, (tier, _))| {
             let m = &scene.materials[inst.material];
-            let (prelude, module, _) = &modules[inst.material];
-            build_instance(m, module, prelude, inst, *tier, &features)
+            let (prelude, module, _, fallback) = &modules[inst.material];
+            build_instance(
+                m,
+                (module, fallback.as_ref()),
+                prelude,
+                inst,
+                *tier,
+                &features,
+            )
         })
         .collect();
 
@@ -320,7 +348,7 @@ pub fn build_resolved_scene(
 
         // The shader fits WebGPU's limits (or the material's `[limits]`).
         let mark = diags.len();
-        let (_, module, composed) = &modules[inst.material];
+        let (_, module, composed, _) = &modules[inst.material];
         let fits = crate::limits::check_variants(
             m,
             &[format!("the shader of instance `{}`", inst.name)],

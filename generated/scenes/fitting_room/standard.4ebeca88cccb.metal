@@ -46,10 +46,13 @@ constant uint SPHERE_MAP_MULTIPLY = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
 
 float weft_pow5_(
     float x
@@ -211,6 +214,17 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_3,
+    metal::float3 world_position_1
+) {
+    metal::float3 color = {};
+    color = color_in;
+    metal::float3 _e4 = color;
+    return _e4;
+}
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -253,7 +267,7 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
@@ -271,7 +285,7 @@ fragment fs_mainOutput fs_main(
 , metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -279,7 +293,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float3 color = {};
     metal::float4 _e3 = material.base_color;
     metal::float4 base_rgba = _e3 * metal::float4(1.0, 1.0, 1.0, 1.0);
     metal::float3 base = metal::saturate(base_rgba.xyz);
@@ -334,8 +347,9 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e83 = ambient_kd;
     metal::float3 indirect_diffuse = ((_e81 * 1.0) * _e83) * diffuse_albedo;
     metal::float3 _e86 = indirect_specular;
-    color = (direct + _e86) + indirect_diffuse;
-    metal::float3 _e90 = color;
-    metal::float3 radiance = metal::clamp(_e90, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 color_1 = (direct + _e86) + indirect_diffuse;
+    metal::float3 _e89 = n;
+    metal::float3 _e91 = standard_sphere_map(color_1, _e89, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e91, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -36,10 +36,13 @@ const uint SPHERE_MAP_MULTIPLY = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -165,6 +168,13 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_1) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    vec3 _e4 = color;
+    return _e4;
+}
+
 void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 n = vec3(0.0);
@@ -174,7 +184,6 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
-    vec3 color = vec3(0.0);
     vec4 _e3 = _group_1_binding_0_fs.base_color;
     vec4 base_rgba = (_e3 * vec4(1.0, 1.0, 1.0, 1.0));
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
@@ -229,9 +238,10 @@ void main() {
     vec3 _e83 = ambient_kd;
     vec3 indirect_diffuse = (((_e81 * 1.0) * _e83) * diffuse_albedo);
     vec3 _e86 = indirect_specular;
-    color = ((direct + _e86) + indirect_diffuse);
-    vec3 _e90 = color;
-    vec3 radiance = clamp(_e90, vec3(0.0), vec3(65504.0));
+    vec3 color_1 = ((direct + _e86) + indirect_diffuse);
+    vec3 _e89 = n;
+    vec3 _e91 = standard_sphere_map(color_1, _e89, in_1.world_position);
+    vec3 radiance = clamp(_e91, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -1,0 +1,305 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    normal_strength: f32,
+    specular_strength: f32,
+    sphere_strength: f32,
+    base_map_st: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const SPHERE_MAP_OFF: u32 = 0u;
+const SPHERE_MAP_ADD: u32 = 1u;
+const SPHERE_MAP_MULTIPLY: u32 = 2u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_env_brdf_from_lut(f0_: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness: f32) -> f32 {
+    let r = saturate(roughness);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_1);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_half_min_max(x: f32) -> f32 {
+    return min(x, 65504f);
+}
+
+fn weft_half_pow5_(x_1: f32) -> f32 {
+    let x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
+fn weft_half_d_ggx(one_minus_n_dot_h2_: f32, n_dot_h: f32, alpha: f32) -> f32 {
+    let a = (n_dot_h * alpha);
+    let k = (alpha / (one_minus_n_dot_h2_ + (a * a)));
+    let _e10 = weft_half_min_max(((k * k) * 0.31830987f));
+    return _e10;
+}
+
+fn weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_1: f32, n_dot_l: f32, alpha_1: f32) -> f32 {
+    let nv = max(n_dot_v_1, 0.001f);
+    let denominator = mix(((2f * n_dot_l) * nv), (n_dot_l + nv), alpha_1);
+    return ((0.5f * n_dot_l) / max(denominator, 0.0001f));
+}
+
+fn weft_half_f_schlick(f0_1: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e7 = weft_half_pow5_((1f - v_dot_h));
+    return (f0_1 + ((vec3(1f) - f0_1) * _e7));
+}
+
+fn standard_low(n_2: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_in: f32, ao: f32, specular_strength: f32) -> vec3<f32> {
+    var direct_n_dot_l: vec3<f32>;
+    var indirect_specular_1: vec3<f32> = vec3(0f);
+
+    let _e10 = weft_clamp_cos(dot(n_2, v_1));
+    let n_dot_v_2 = f32(_e10);
+    let n_dot_l_1 = f32(saturate(dot(n_2, l)));
+    let n_dot_h_1 = f32(saturate(dot(n_2, h)));
+    let v_dot_h_1 = f32(saturate(dot(v_1, h)));
+    let n_cross_h = cross(n_2, h);
+    let one_minus_n_dot_h2_1 = f32(dot(n_cross_h, n_cross_h));
+    let roughness_3 = f32(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
+    let alpha_2 = (roughness_3 * roughness_3);
+    let f0_2 = vec3<f32>(f0_in);
+    let _e30 = weft_clamp_cos(dot(n_2, v_1));
+    let _e31 = weft_env_brdf_lut(_e30, roughness_in);
+    let _e32 = weft_env_brdf_from_lut(f0_in, _e31);
+    let env_brdf_1 = vec3<f32>(_e32);
+    let kd = max((vec3(1f) - env_brdf_1), vec3(0f));
+    direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31830987f))) * diffuse_albedo);
+    if (specular_strength > 0f) {
+        let _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_2);
+        let _e52 = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_2, n_dot_l_1, alpha_2);
+        let _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        let _e55 = weft_half_min_max((_e51 * _e52));
+        let _e56 = direct_n_dot_l;
+        direct_n_dot_l = (_e56 + (vec3<f32>((_e53 * _e55)) * specular_strength));
+        let _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_2), roughness_in);
+        indirect_specular_1 = ((_e63 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
+    }
+    let _e68 = direct_n_dot_l;
+    let _e69 = weft_main_light_radiance();
+    let direct = (_e68 * _e69);
+    let _e71 = weft_sh_irradiance(n_2);
+    let indirect_diffuse = (((_e71 * ao) * vec3<f32>(kd)) * diffuse_albedo);
+    let _e76 = indirect_specular_1;
+    return ((direct + _e76) + indirect_diffuse);
+}
+
+fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
+    var color: vec3<f32>;
+
+    color = color_in;
+    let _e4 = color;
+    return _e4;
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var visibility: f32;
+    var env_brdf: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha_3 = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_4 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao_1 = saturate(mix(1f, rmo.z, _e36));
+    let _e42 = material.specular_strength;
+    let specular_strength_1 = max(_e42, 0f);
+    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
+    n = _e52;
+    let _e54 = weft_main_light_direction();
+    let _e56 = n;
+    let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
+    let _e58 = n;
+    let _e60 = weft_clamp_cos(dot(_e58, _e50));
+    let _e61 = n;
+    let n_dot_l_2 = saturate(dot(_e61, _e54));
+    let _e64 = n;
+    let n_dot_h_2 = saturate(dot(_e64, _e57));
+    let v_dot_h_2 = saturate(dot(_e50, _e57));
+    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo_1 = (base * (1f - metallic));
+    {
+        let _e75 = n;
+        let _e76 = standard_low(_e75, _e50, _e54, _e57, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        let _e77 = n;
+        let _e79 = standard_sphere_map(_e76, _e77, in_1.world_position);
+        let radiance = clamp(_e79, vec3(0f), vec3(65504f));
+        return vec4<f32>(radiance, alpha_3);
+    }
+}
