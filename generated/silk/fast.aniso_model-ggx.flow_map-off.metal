@@ -65,6 +65,7 @@ constant uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -72,24 +73,11 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -105,11 +93,11 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
@@ -129,46 +117,18 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
-    float n_dot_v,
-    float roughness_1
-) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_1)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_2
-) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = _e3 * _e3;
-    float k = ((a_1 + 1.0) * (a_1 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
-}
-
 metal::float3 weft_diffuse_lambert(
     metal::float3 albedo
 ) {
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_2,
-    float roughness_3
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_3);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -224,25 +184,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_4,
+    float roughness_1,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_4);
+    float r = metal::saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_5,
+    float roughness_2,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_5, weft_frame);
+    float _e4 = weft_specular_mip(roughness_2, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v,
+    float roughness_3,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -264,8 +235,8 @@ metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -285,22 +256,22 @@ metal::float2 weft_transform_uv(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame_1,
-    metal::float3 x_2
+    metal::float3 x_1
 ) {
-    return metal::float3(metal::dot(frame_1[0], x_2), metal::dot(frame_1[1], x_2), metal::dot(frame_1[2], x_2));
+    return metal::float3(metal::dot(frame_1[0], x_1), metal::dot(frame_1[1], x_1), metal::dot(frame_1[2], x_1));
 }
 
 metal::float2 weft_aniso_alpha_burley(
-    float roughness_6,
+    float roughness_4,
     float anisotropy
 ) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = _e2 * _e2;
-    float k_1 = metal::clamp(anisotropy, -1.0, 1.0);
-    float aspect = metal::sqrt(1.0 - (0.9 * metal::abs(k_1)));
-    float wide = a_2 / aspect;
-    float narrow = a_2 * aspect;
-    metal::float2 ab = (k_1 >= 0.0) ? metal::float2(wide, narrow) : metal::float2(narrow, wide);
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = _e2 * _e2;
+    float k = metal::clamp(anisotropy, -1.0, 1.0);
+    float aspect = metal::sqrt(1.0 - (0.9 * metal::abs(k)));
+    float wide = a_1 / aspect;
+    float narrow = a_1 * aspect;
+    metal::float2 ab = (k >= 0.0) ? metal::float2(wide, narrow) : metal::float2(narrow, wide);
     return metal::max(ab, metal::float2(0.001));
 }
 
@@ -313,9 +284,9 @@ float weft_aniso_ggx_q(
 ) {
     float at = metal::max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab_1 = metal::max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = t_dot_h / at;
+    float x_2 = t_dot_h / at;
     float y = b_dot_h / ab_1;
-    return metal::max(((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
+    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
 }
 
 float weft_d_ggx_aniso(
@@ -330,6 +301,43 @@ float weft_d_ggx_aniso(
     float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
     float d = 1.0 / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9);
     return (n_dot_h_1 > 0.0) ? d : 0.0;
+}
+
+float weft_v_smith_ggx_aniso_correlated(
+    metal::float3 v_1,
+    metal::float3 l,
+    float alpha_t_2,
+    float alpha_b_2
+) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_aniso_bent_normal(
+    metal::float3x3 frame_2,
+    metal::float3 v_2,
+    float anisotropy_1,
+    float roughness_5
+) {
+    float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
+    metal::float3 n_3 = frame_2[2];
+    metal::float3 dir_1 = (k_1 >= 0.0) ? frame_2[1] : frame_2[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
+    float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_lobe_anisotropy(
+    metal::float2 alpha
+) {
+    float at_2 = metal::max(alpha.x, SILK_MIN_ALPHA);
+    float ab_3 = metal::max(alpha.y, SILK_MIN_ALPHA);
+    return (at_2 - ab_3) / (at_2 + ab_3);
 }
 
 struct vs_mainInput {
@@ -388,10 +396,12 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
@@ -409,10 +419,10 @@ fragment fs_mainOutput fs_main(
     float alpha_out = metal::saturate(base_rgba.w);
     float _e19 = material.smoothness;
     float smoothness = metal::saturate(_e19);
-    float roughness_7 = 1.0 - smoothness;
+    float roughness_6 = 1.0 - smoothness;
     float _e25 = material.metallic;
     float metallic = metal::saturate(_e25);
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -432,7 +442,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e70 = weft_main_light_direction(weft_frame);
     metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
     float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e70));
+    float n_dot_l = metal::saturate(metal::dot(_e56, _e70));
     float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e72));
     float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
     metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
@@ -441,41 +451,46 @@ fragment fs_mainOutput fs_main(
     float k_2 = material.anisotropy;
     {
         {
-            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_7, k_2);
+            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
             lobe.alpha = _e88;
-            lobe.ibl_roughness = roughness_7;
+            lobe.ibl_roughness = roughness_6;
             {
-                float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
+                vis = _e94;
             }
-            float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            float _e100 = vis;
-            lobe.value = (_e99 * _e100) * n_dot_l_1;
+            float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+            float _e102 = vis;
+            lobe.value = (_e101 * _e102) * n_dot_l;
         }
     }
-    metal::float3 _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e104 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e105 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float3 _e106 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
-    metal::float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e103) * _e110) * n_dot_l_diffuse;
-    float _e114 = lobe.value;
-    metal::float3 direct = (diffuse + (_e103 * _e114)) * _e104;
+    metal::float3 _e112 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e105) * _e112) * n_dot_l_diffuse;
+    float _e116 = lobe.value;
+    metal::float3 direct = (diffuse + (_e105 * _e116)) * _e106;
     reflect_n = _e56;
     {
-        float _e122 = lobe.ibl_roughness;
-        metal::float3 _e123 = weft_env_brdf_approx(f0_3, _e74, _e122);
-        env_brdf = _e123;
-        float _e127 = lobe.ibl_roughness;
-        metal::float3 _e128 = weft_f_schlick_roughness(f0_3, _e74, _e127);
-        ambient_kd = metal::float3(1.0) - _e128;
+        float _e124 = lobe.ibl_roughness;
+        metal::float2 _e125 = weft_env_brdf_lut(_e74, _e124, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e126 = weft_env_brdf_from_lut(f0_2, _e125);
+        env_brdf = _e126;
+        metal::float3 _e129 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e129, metal::float3(0.0));
+        metal::float2 _e135 = lobe.alpha;
+        float _e136 = silk_lobe_anisotropy(_e135);
+        float _e138 = lobe.ibl_roughness;
+        metal::float3 _e139 = weft_aniso_bent_normal(_e63, _e38, _e136, _e138);
+        reflect_n = _e139;
     }
-    metal::float3 _e131 = reflect_n;
-    float _e134 = lobe.ibl_roughness;
-    metal::float3 _e135 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e131), _e134, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e136 = env_brdf;
-    metal::float3 _e138 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e139 = ambient_kd;
-    metal::float3 indirect = (_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo);
+    metal::float3 _e141 = reflect_n;
+    float _e144 = lobe.ibl_roughness;
+    metal::float3 _e145 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e141), _e144, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e146 = env_brdf;
+    metal::float3 _e148 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e149 = ambient_kd;
+    metal::float3 indirect = (_e145 * _e146) + ((_e148 * _e149) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -52,6 +52,7 @@ const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -72,18 +73,9 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -94,9 +86,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
@@ -111,32 +103,13 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_1) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_1, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2) {
-    float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
-}
-
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_3) {
-    float r = clamp(roughness_3, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -180,11 +153,11 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_4) {
-    float r_1 = clamp(roughness_4, 0.0, 1.0);
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -200,8 +173,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -213,27 +186,27 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec2 weft_aniso_alpha_burley(float roughness_6, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = (_e2 * _e2);
-    float k_1 = clamp(anisotropy, -1.0, 1.0);
-    float aspect = sqrt((1.0 - (0.9 * abs(k_1))));
-    float wide = (a_2 / aspect);
-    float narrow = (a_2 * aspect);
-    vec2 ab = ((k_1 >= 0.0) ? vec2(wide, narrow) : vec2(narrow, wide));
+vec2 weft_aniso_alpha_burley(float roughness_4, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    float aspect = sqrt((1.0 - (0.9 * abs(k))));
+    float wide = (a_1 / aspect);
+    float narrow = (a_1 * aspect);
+    vec2 ab = ((k >= 0.0) ? vec2(wide, narrow) : vec2(narrow, wide));
     return max(ab, vec2(0.001));
 }
 
 float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab_1 = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab_1);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
 float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
@@ -242,6 +215,31 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
     float d = (1.0 / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9));
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_5) {
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
+    vec3 n_3 = frame_2[2];
+    vec3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_lobe_anisotropy(vec2 alpha) {
+    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    float ab_3 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_3) / (at_2 + ab_3));
 }
 
 void main() {

@@ -57,6 +57,7 @@ const ANISO_MODEL_HAIR_SHIFTED: u32 = 1u;
 const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -70,6 +71,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -81,18 +86,9 @@ var base_map: texture_2d<f32>;
 @group(1) @binding(4) 
 var aniso_normal_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -103,9 +99,9 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
@@ -120,32 +116,13 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_1: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_1))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_2);
-    let a_1 = (_e3 * _e3);
-    let k = (((a_1 + 1f) * (a_1 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
-}
-
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_3: f32) -> vec3<f32> {
-    let r = saturate(roughness_3);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -190,17 +167,23 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_4: f32) -> f32 {
-    let r_1 = saturate(roughness_4);
+fn weft_specular_mip(roughness_1: f32) -> f32 {
+    let r = saturate(roughness_1);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_5);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_2);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -216,8 +199,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -229,27 +212,27 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-fn weft_aniso_alpha_burley(roughness_6: f32, anisotropy: f32) -> vec2<f32> {
-    let _e2 = weft_clamp_roughness(roughness_6);
-    let a_2 = (_e2 * _e2);
-    let k_1 = clamp(anisotropy, -1f, 1f);
-    let aspect = sqrt((1f - (0.9f * abs(k_1))));
-    let wide = (a_2 / aspect);
-    let narrow = (a_2 * aspect);
-    let ab = select(vec2<f32>(narrow, wide), vec2<f32>(wide, narrow), (k_1 >= 0f));
+fn weft_aniso_alpha_burley(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_4);
+    let a_1 = (_e2 * _e2);
+    let k = clamp(anisotropy, -1f, 1f);
+    let aspect = sqrt((1f - (0.9f * abs(k))));
+    let wide = (a_1 / aspect);
+    let narrow = (a_1 * aspect);
+    let ab = select(vec2<f32>(narrow, wide), vec2<f32>(wide, narrow), (k >= 0f));
     return max(ab, vec2(0.001f));
 }
 
 fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
     let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     let ab_1 = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    let x_3 = (t_dot_h / at);
+    let x_2 = (t_dot_h / at);
     let y = (b_dot_h / ab_1);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
 }
 
 fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
@@ -258,6 +241,31 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     let _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
     let d = (1f / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9));
     return select(0f, d, (n_dot_h_1 > 0f));
+}
+
+fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_1.z);
+    let _e7 = weft_clamp_cos(l.z);
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+    let k_1 = clamp(anisotropy_1, -1f, 1f);
+    let n_3 = frame_2[2];
+    let dir_1 = select(frame_2[0], frame_2[1], (k_1 >= 0f));
+    let aniso_t = cross(dir_1, v_2);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
+    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+fn silk_lobe_anisotropy(alpha: vec2<f32>) -> f32 {
+    let at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    let ab_3 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_3) / (at_2 + ab_3));
 }
 
 @vertex 
@@ -301,10 +309,10 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let alpha_out = saturate(base_rgba.w);
     let _e19 = material.smoothness;
     let smoothness = saturate(_e19);
-    let roughness_7 = (1f - smoothness);
+    let roughness_6 = (1f - smoothness);
     let _e25 = material.metallic;
     let metallic = saturate(_e25);
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -324,7 +332,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e70 = weft_main_light_direction();
     let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
     let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e70));
+    let n_dot_l = saturate(dot(_e56, _e70));
     let n_dot_h_2 = saturate(dot(_e56, _e72));
     let v_dot_h_1 = saturate(dot(_e38, _e72));
     let _e81 = weft_aniso_to_frame(_e63, _e38);
@@ -333,41 +341,46 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let k_2 = material.anisotropy;
     {
         {
-            let _e88 = weft_aniso_alpha_burley(roughness_7, k_2);
+            let _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
             lobe.alpha = _e88;
-            lobe.ibl_roughness = roughness_7;
+            lobe.ibl_roughness = roughness_6;
             {
-                let _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                let _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
+                vis = _e94;
             }
-            let _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            let _e100 = vis;
-            lobe.value = ((_e99 * _e100) * n_dot_l_1);
+            let _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+            let _e102 = vis;
+            lobe.value = ((_e101 * _e102) * n_dot_l);
         }
     }
-    let _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e104 = weft_main_light_radiance();
+    let _e105 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e106 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e110 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e103) * _e110) * n_dot_l_diffuse);
-    let _e114 = lobe.value;
-    let direct = ((diffuse + (_e103 * _e114)) * _e104);
+    let _e112 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e105) * _e112) * n_dot_l_diffuse);
+    let _e116 = lobe.value;
+    let direct = ((diffuse + (_e105 * _e116)) * _e106);
     reflect_n = _e56;
     {
-        let _e122 = lobe.ibl_roughness;
-        let _e123 = weft_env_brdf_approx(f0_3, _e74, _e122);
-        env_brdf = _e123;
-        let _e127 = lobe.ibl_roughness;
-        let _e128 = weft_f_schlick_roughness(f0_3, _e74, _e127);
-        ambient_kd = (vec3(1f) - _e128);
+        let _e124 = lobe.ibl_roughness;
+        let _e125 = weft_env_brdf_lut(_e74, _e124);
+        let _e126 = weft_env_brdf_from_lut(f0_2, _e125);
+        env_brdf = _e126;
+        let _e129 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e129), vec3(0f));
+        let _e135 = lobe.alpha;
+        let _e136 = silk_lobe_anisotropy(_e135);
+        let _e138 = lobe.ibl_roughness;
+        let _e139 = weft_aniso_bent_normal(_e63, _e38, _e136, _e138);
+        reflect_n = _e139;
     }
-    let _e131 = reflect_n;
-    let _e134 = lobe.ibl_roughness;
-    let _e135 = weft_prefiltered_radiance(reflect(-(_e38), _e131), _e134);
-    let _e136 = env_brdf;
-    let _e138 = weft_sh_irradiance(n_diff);
-    let _e139 = ambient_kd;
-    let indirect = ((_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo));
+    let _e141 = reflect_n;
+    let _e144 = lobe.ibl_roughness;
+    let _e145 = weft_prefiltered_radiance(reflect(-(_e38), _e141), _e144);
+    let _e146 = env_brdf;
+    let _e148 = weft_sh_irradiance(n_diff);
+    let _e149 = ambient_kd;
+    let indirect = ((_e145 * _e146) + ((_e148 * _e149) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

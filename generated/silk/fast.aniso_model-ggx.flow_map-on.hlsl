@@ -61,6 +61,7 @@ static const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -74,6 +75,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -98,21 +101,10 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(float3 v)
-{
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c)
@@ -125,10 +117,10 @@ float weft_clamp_roughness(float roughness)
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v_1, float3 fallback)
+float3 weft_safe_normalize(float3 v, float3 fallback)
 {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n)
@@ -145,36 +137,15 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_1)
-{
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness_1))).xxx, f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_2)
-{
-    const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_1 = (_e3 * _e3);
-    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
-}
-
 float3 weft_diffuse_lambert(float3 albedo)
 {
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_3)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_3);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_2);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
-    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -223,19 +194,26 @@ float3 weft_sh_irradiance(float3 n_1)
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_4)
+float weft_specular_mip(float roughness_1)
 {
-    float r_1 = saturate(roughness_4);
+    float r = saturate(roughness_1);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
 {
-    const float _e4 = weft_specular_mip(roughness_5);
+    const float _e4 = weft_specular_mip(roughness_2);
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
+{
+    float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -253,8 +231,8 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -268,20 +246,20 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_2)
+float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_1)
 {
-    return float3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+    return float3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-float2 weft_aniso_alpha_burley(float roughness_6, float anisotropy)
+float2 weft_aniso_alpha_burley(float roughness_4, float anisotropy)
 {
-    const float _e2 = weft_clamp_roughness(roughness_6);
-    float a_2 = (_e2 * _e2);
-    float k_1 = clamp(anisotropy, -1.0, 1.0);
-    float aspect = sqrt((1.0 - (0.9 * abs(k_1))));
-    float wide = (a_2 / aspect);
-    float narrow = (a_2 * aspect);
-    float2 ab = ((k_1 >= 0.0) ? float2(wide, narrow) : float2(narrow, wide));
+    const float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    float aspect = sqrt((1.0 - (0.9 * abs(k))));
+    float wide = (a_1 / aspect);
+    float narrow = (a_1 * aspect);
+    float2 ab = ((k >= 0.0) ? float2(wide, narrow) : float2(narrow, wide));
     return max(ab, (0.001).xx);
 }
 
@@ -289,9 +267,9 @@ float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_
 {
     float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
     float ab_1 = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_3 = (t_dot_h / at);
+    float x_2 = (t_dot_h / at);
     float y = (b_dot_h / ab_1);
-    return max((((x_3 * x_3) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
 }
 
 float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
@@ -301,6 +279,34 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     const float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
     float d = (1.0 / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9));
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+{
+    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_5)
+{
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
+    float3 n_3 = frame_2[2];
+    float3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
+    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_lobe_anisotropy(float2 alpha)
+{
+    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    float ab_3 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_3) / (at_2 + ab_3));
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -347,10 +353,10 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float alpha_out = saturate(base_rgba.w);
     float _e19 = material.smoothness;
     float smoothness = saturate(_e19);
-    float roughness_7 = (1.0 - smoothness);
+    float roughness_6 = (1.0 - smoothness);
     float _e25 = material.metallic;
     float metallic = saturate(_e25);
-    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -366,9 +372,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         float4 _e61 = flow_map.Sample(material_sampler, _e5);
         float2 flow = ((_e61.xy * 2.0) - (1.0).xx);
-        float3 dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
+        float3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
         float _e78 = material.flow_strength;
-        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_1, saturate(_e78)), _e42[0]);
+        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_2, saturate(_e78)), _e42[0]);
         fibre = _e82;
     }
     float3 _e83 = fibre;
@@ -378,7 +384,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e94 = weft_main_light_direction();
     const float3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
     const float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e94));
+    float n_dot_l = saturate(dot(_e56, _e94));
     float n_dot_h_2 = saturate(dot(_e56, _e96));
     float v_dot_h_1 = saturate(dot(_e38, _e96));
     const float3 _e105 = weft_aniso_to_frame(_e87, _e38);
@@ -387,41 +393,46 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float k_2 = material.anisotropy;
     {
         {
-            const float2 _e112 = weft_aniso_alpha_burley(roughness_7, k_2);
+            const float2 _e112 = weft_aniso_alpha_burley(roughness_6, k_2);
             lobe.alpha = _e112;
-            lobe.ibl_roughness = roughness_7;
+            lobe.ibl_roughness = roughness_6;
             {
-                const float _e116 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
-                vis = _e116;
+                const float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
+                vis = _e118;
             }
-            const float _e123 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-            float _e124 = vis;
-            lobe.value = ((_e123 * _e124) * n_dot_l_1);
+            const float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
+            float _e126 = vis;
+            lobe.value = ((_e125 * _e126) * n_dot_l);
         }
     }
-    const float3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e128 = weft_main_light_radiance();
+    const float3 _e129 = weft_f_schlick(f0_2, v_dot_h_1);
+    const float3 _e130 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    const float3 _e134 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e127) * _e134) * n_dot_l_diffuse);
-    float _e138 = lobe.value;
-    float3 direct = ((diffuse + (_e127 * _e138)) * _e128);
+    const float3 _e136 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e129) * _e136) * n_dot_l_diffuse);
+    float _e140 = lobe.value;
+    float3 direct = ((diffuse + (_e129 * _e140)) * _e130);
     reflect_n = _e56;
     {
-        float _e146 = lobe.ibl_roughness;
-        const float3 _e147 = weft_env_brdf_approx(f0_3, _e98, _e146);
-        env_brdf = _e147;
-        float _e151 = lobe.ibl_roughness;
-        const float3 _e152 = weft_f_schlick_roughness(f0_3, _e98, _e151);
-        ambient_kd = ((1.0).xxx - _e152);
+        float _e148 = lobe.ibl_roughness;
+        const float2 _e149 = weft_env_brdf_lut(_e98, _e148);
+        const float3 _e150 = weft_env_brdf_from_lut(f0_2, _e149);
+        env_brdf = _e150;
+        float3 _e153 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e153), (0.0).xxx);
+        float2 _e159 = lobe.alpha;
+        const float _e160 = silk_lobe_anisotropy(_e159);
+        float _e162 = lobe.ibl_roughness;
+        const float3 _e163 = weft_aniso_bent_normal(_e87, _e38, _e160, _e162);
+        reflect_n = _e163;
     }
-    float3 _e155 = reflect_n;
-    float _e158 = lobe.ibl_roughness;
-    const float3 _e159 = weft_prefiltered_radiance(reflect(-(_e38), _e155), _e158);
-    float3 _e160 = env_brdf;
-    const float3 _e162 = weft_sh_irradiance(n_diff);
-    float3 _e163 = ambient_kd;
-    float3 indirect = ((_e159 * _e160) + ((_e162 * _e163) * diffuse_albedo));
+    float3 _e165 = reflect_n;
+    float _e168 = lobe.ibl_roughness;
+    const float3 _e169 = weft_prefiltered_radiance(reflect(-(_e38), _e165), _e168);
+    float3 _e170 = env_brdf;
+    const float3 _e172 = weft_sh_irradiance(n_diff);
+    float3 _e173 = ambient_kd;
+    float3 indirect = ((_e169 * _e170) + ((_e172 * _e173) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

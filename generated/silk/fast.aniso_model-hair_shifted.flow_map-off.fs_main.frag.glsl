@@ -52,6 +52,7 @@ const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -63,11 +64,13 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -75,18 +78,9 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -97,9 +91,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
@@ -109,14 +103,14 @@ vec3 weft_any_perpendicular(vec3 n) {
     return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(n_dot_h, 0.0, 1.0);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -124,32 +118,24 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float a2_1 = (a_2 * a_2);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -169,58 +155,64 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n_2) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
-    float _e4 = weft_specular_mip(roughness_6);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
-    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3(t_1, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -232,13 +224,43 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec3 silk_jitter_tangent(vec3 t, vec3 n_3, float shift) {
-    vec3 _e5 = weft_safe_normalize((t + (shift * n_3)), t);
-    return _e5;
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d_1 = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv_1 = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll_1 = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv_1 + ll_1));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_6) {
+    float k = clamp(anisotropy, -1.0, 1.0);
+    vec3 n_4 = frame_2[2];
+    vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * clamp((5.0 * clamp(roughness_6, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
 }
 
 float silk_hair_mx_seed(float smoothness, float gloss) {
@@ -248,18 +270,21 @@ float silk_hair_mx_seed(float smoothness, float gloss) {
     return (rx_safe * rx_safe);
 }
 
-float silk_hair_d_seed(vec3 x_axis, vec3 n_4, vec3 h, float mx) {
-    float m = max(mx, 1e-8);
-    vec3 y_axis = cross(n_4, x_axis);
-    float xh = dot(x_axis, h);
-    float yh = dot(y_axis, h);
-    float nh = clamp(dot(n_4, h), 0.0, 1.0);
-    float d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001);
-    return (1.0 / (((WEFT_PI * m) * d_1) * d_1));
+mat3x3 silk_tilt_frame(mat3x3 frame_3, float shift) {
+    float s_2 = clamp(shift, -1.0, 1.0);
+    vec3 _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    vec3 _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return mat3x3(_e10, frame_3[1], _e16);
 }
 
-float silk_ibl_roughness(vec2 alpha) {
-    return clamp(sqrt(sqrt(max((alpha.x * alpha.y), 0.0))), 0.0, 1.0);
+float silk_lobe_anisotropy(vec2 alpha) {
+    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    float ab_2 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_2) / (at_2 + ab_2));
+}
+
+float silk_ibl_roughness(vec2 alpha_1) {
+    return clamp(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0.0))), 0.0, 1.0);
 }
 
 void main() {
@@ -282,7 +307,7 @@ void main() {
     float roughness_7 = (1.0 - smoothness_1);
     float _e25 = _group_1_binding_0_fs.metallic;
     float metallic = clamp(_e25, 0.0, 1.0);
-    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -303,7 +328,7 @@ void main() {
     vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
     float _e74 = weft_clamp_cos(dot(_e56, _e38));
     float n_dot_l_1 = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h_1 = clamp(dot(_e56, _e72), 0.0, 1.0);
+    float n_dot_h_2 = clamp(dot(_e56, _e72), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
     vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
     vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
@@ -325,39 +350,49 @@ void main() {
             float _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e114, roughness_7, mask);
             {
-                float _e120 = _group_1_binding_0_fs.tangent_shift;
-                vec3 _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                float _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                float _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = (mix(_e123, _e124, mask) * spec_scale);
-                float _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e128) * n_dot_l_1);
+                float _e118 = _group_1_binding_0_fs.tangent_shift;
+                mat3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                vec3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                vec3 _e121 = weft_aniso_to_frame(_e119, _e70);
+                vec3 _e122 = weft_aniso_to_frame(_e119, _e72);
+                float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                float aniso = ((_e128 * _e131) * clamp(_e121.z, 0.0, 1.0));
+                float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                float iso = ((_e136 * _e137) * n_dot_l_1);
+                lobe.value = (mix(aniso, iso, mask) * spec_scale);
             }
         }
     }
-    vec3 _e131 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e132 = weft_main_light_radiance();
+    vec3 _e143 = weft_f_schlick(f0_2, v_dot_h_1);
+    vec3 _e144 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
-    vec3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e131) * _e138) * n_dot_l_diffuse);
-    float _e142 = lobe.value;
-    vec3 direct = ((diffuse + (_e131 * _e142)) * _e132);
+    vec3 _e150 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e143) * _e150) * n_dot_l_diffuse);
+    float _e154 = lobe.value;
+    vec3 direct = ((diffuse + (_e143 * _e154)) * _e144);
     reflect_n = _e56;
     {
-        float _e150 = lobe.ibl_roughness;
-        vec3 _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        float _e155 = lobe.ibl_roughness;
-        vec3 _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = (vec3(1.0) - _e156);
+        float _e162 = lobe.ibl_roughness;
+        vec2 _e163 = weft_env_brdf_lut(_e74, _e162);
+        vec3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
+        env_brdf = _e164;
+        vec3 _e167 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e167), vec3(0.0));
+        vec2 _e173 = lobe.alpha;
+        float _e174 = silk_lobe_anisotropy(_e173);
+        float _e176 = lobe.ibl_roughness;
+        vec3 _e177 = weft_aniso_bent_normal(_e63, _e38, _e174, _e176);
+        reflect_n = _e177;
     }
-    vec3 _e159 = reflect_n;
-    float _e162 = lobe.ibl_roughness;
-    vec3 _e163 = weft_prefiltered_radiance(reflect(-(_e38), _e159), _e162);
-    vec3 _e164 = env_brdf;
-    vec3 _e166 = weft_sh_irradiance(n_diff);
-    vec3 _e167 = ambient_kd;
-    vec3 indirect = ((_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo));
+    vec3 _e179 = reflect_n;
+    float _e182 = lobe.ibl_roughness;
+    vec3 _e183 = weft_prefiltered_radiance(reflect(-(_e38), _e179), _e182);
+    vec3 _e184 = env_brdf;
+    vec3 _e186 = weft_sh_irradiance(n_diff);
+    vec3 _e187 = ambient_kd;
+    vec3 indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -65,6 +65,7 @@ constant uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -72,24 +73,11 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -105,11 +93,11 @@ float weft_clamp_roughness(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
@@ -121,17 +109,18 @@ metal::float3 weft_any_perpendicular(
     return metal::float3(1.0 + (((s * n.x) * n.x) * a), s * b, -(s) * n.x);
 }
 
-float weft_d_ggx(
-    float n_dot_h,
+float weft_d_ggx_nh(
+    metal::float3 n_1,
+    metal::float3 h,
     float roughness_1
 ) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = _e2 * _e2;
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e3 * _e3;
     float a2_ = a_1 * a_1;
-    float noh = metal::saturate(n_dot_h);
-    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
-    float d = one_minus_noh2_ + ((noh * noh) * a2_);
-    return a2_ / ((WEFT_PI * d) * d);
+    float noh = metal::saturate(metal::dot(n_1, h));
+    metal::float3 nxh = metal::cross(n_1, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -142,27 +131,19 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
+float weft_v_smith_ggx_correlated(
     float n_dot_v,
+    float n_dot_l,
     float roughness_2
 ) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness_2)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
-float weft_v_schlick_ggx(
-    float n_dot_v_1,
-    float n_dot_l,
-    float roughness_3
-) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = _e3 * _e3;
-    float k = ((a_2 + 1.0) * (a_2 + 1.0)) * 0.125;
-    float gv = (metal::saturate(n_dot_v_1) * (1.0 - k)) + k;
-    float gl = (metal::saturate(n_dot_l) * (1.0 - k)) + k;
-    return 0.25 / (gv * gl);
+    float a2_1 = a_2 * a_2;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
+    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
+    return 0.5 / (lv + ll);
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -171,17 +152,12 @@ metal::float3 weft_diffuse_lambert(
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_2,
-    float roughness_4
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_4);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_2));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -210,75 +186,86 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_1,
+    metal::float3 n_2,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_4 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
 
 float weft_specular_mip(
-    float roughness_5,
+    float roughness_3,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_5);
+    float r = metal::saturate(roughness_3);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_6,
+    float roughness_4,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_6, weft_frame);
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
+}
+
 metal::float3x3 weft_tangent_frame(
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
-    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t_1) * s_1;
-    return metal::float3x3(t_1, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    return metal::float3x3(t, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -298,18 +285,66 @@ metal::float2 weft_transform_uv(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame_1,
-    metal::float3 x_2
+    metal::float3 x_1
 ) {
-    return metal::float3(metal::dot(frame_1[0], x_2), metal::dot(frame_1[1], x_2), metal::dot(frame_1[2], x_2));
+    return metal::float3(metal::dot(frame_1[0], x_1), metal::dot(frame_1[1], x_1), metal::dot(frame_1[2], x_1));
 }
 
-metal::float3 silk_jitter_tangent(
-    metal::float3 t,
-    metal::float3 n_3,
-    float shift
+float weft_aniso_ggx_q(
+    float t_dot_h,
+    float b_dot_h,
+    float n_dot_h,
+    float alpha_t,
+    float alpha_b
 ) {
-    metal::float3 _e5 = weft_safe_normalize(t + (shift * n_3), t);
-    return _e5;
+    float at = metal::max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = metal::max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = t_dot_h / at;
+    float y = b_dot_h / ab;
+    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
+}
+
+float weft_d_ggx_aniso(
+    float t_dot_h_1,
+    float b_dot_h_1,
+    float n_dot_h_1,
+    float alpha_t_1,
+    float alpha_b_1
+) {
+    float at_1 = metal::max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = metal::max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d_1 = 1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9);
+    return (n_dot_h_1 > 0.0) ? d_1 : 0.0;
+}
+
+float weft_v_smith_ggx_aniso_correlated(
+    metal::float3 v_1,
+    metal::float3 l,
+    float alpha_t_2,
+    float alpha_b_2
+) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv_1 = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float ll_1 = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
+    return 0.5 / (lv_1 + ll_1);
+}
+
+metal::float3 weft_aniso_bent_normal(
+    metal::float3x3 frame_2,
+    metal::float3 v_2,
+    float anisotropy,
+    float roughness_6
+) {
+    float k = metal::clamp(anisotropy, -1.0, 1.0);
+    metal::float3 n_4 = frame_2[2];
+    metal::float3 dir_1 = (k >= 0.0) ? frame_2[1] : frame_2[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
+    float bend = metal::abs(k) * metal::saturate(5.0 * metal::saturate(roughness_6));
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    return _e22;
 }
 
 float silk_hair_mx_seed(
@@ -322,25 +357,28 @@ float silk_hair_mx_seed(
     return rx_safe * rx_safe;
 }
 
-float silk_hair_d_seed(
-    metal::float3 x_axis,
-    metal::float3 n_4,
-    metal::float3 h,
-    float mx
+metal::float3x3 silk_tilt_frame(
+    metal::float3x3 frame_3,
+    float shift
 ) {
-    float m = metal::max(mx, 0.00000001);
-    metal::float3 y_axis = metal::cross(n_4, x_axis);
-    float xh = metal::dot(x_axis, h);
-    float yh = metal::dot(y_axis, h);
-    float nh = metal::saturate(metal::dot(n_4, h));
-    float d_1 = metal::max((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh), 0.0001);
-    return 1.0 / (((WEFT_PI * m) * d_1) * d_1);
+    float s_2 = metal::clamp(shift, -1.0, 1.0);
+    metal::float3 _e10 = weft_safe_normalize(frame_3[0] + (s_2 * frame_3[2]), frame_3[0]);
+    metal::float3 _e16 = weft_safe_normalize(frame_3[2] - (s_2 * frame_3[0]), frame_3[2]);
+    return metal::float3x3(_e10, frame_3[1], _e16);
+}
+
+float silk_lobe_anisotropy(
+    metal::float2 alpha
+) {
+    float at_2 = metal::max(alpha.x, SILK_MIN_ALPHA);
+    float ab_2 = metal::max(alpha.y, SILK_MIN_ALPHA);
+    return (at_2 - ab_2) / (at_2 + ab_2);
 }
 
 float silk_ibl_roughness(
-    metal::float2 alpha
+    metal::float2 alpha_1
 ) {
-    return metal::saturate(metal::sqrt(metal::sqrt(metal::max(alpha.x * alpha.y, 0.0))));
+    return metal::saturate(metal::sqrt(metal::sqrt(metal::max(alpha_1.x * alpha_1.y, 0.0))));
 }
 
 struct vs_mainInput {
@@ -399,10 +437,12 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
@@ -423,7 +463,7 @@ fragment fs_mainOutput fs_main(
     float roughness_7 = 1.0 - smoothness_1;
     float _e25 = material.metallic;
     float metallic = metal::saturate(_e25);
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -444,7 +484,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
     float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
     float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e70));
-    float n_dot_h_1 = metal::saturate(metal::dot(_e56, _e72));
+    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e72));
     float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
     metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
     metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
@@ -466,39 +506,49 @@ fragment fs_mainOutput fs_main(
             float _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = metal::mix(_e114, roughness_7, mask);
             {
-                float _e120 = material.tangent_shift;
-                metal::float3 _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                float _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                float _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = metal::mix(_e123, _e124, mask) * spec_scale;
-                float _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = (d_2 * _e128) * n_dot_l_1;
+                float _e118 = material.tangent_shift;
+                metal::float3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                metal::float3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                metal::float3 _e121 = weft_aniso_to_frame(_e119, _e70);
+                metal::float3 _e122 = weft_aniso_to_frame(_e119, _e72);
+                float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                float aniso = (_e128 * _e131) * metal::saturate(_e121.z);
+                float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                float iso = (_e136 * _e137) * n_dot_l_1;
+                lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
             }
         }
     }
-    metal::float3 _e131 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e132 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e143 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float3 _e144 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
-    metal::float3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e131) * _e138) * n_dot_l_diffuse;
-    float _e142 = lobe.value;
-    metal::float3 direct = (diffuse + (_e131 * _e142)) * _e132;
+    metal::float3 _e150 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e143) * _e150) * n_dot_l_diffuse;
+    float _e154 = lobe.value;
+    metal::float3 direct = (diffuse + (_e143 * _e154)) * _e144;
     reflect_n = _e56;
     {
-        float _e150 = lobe.ibl_roughness;
-        metal::float3 _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        float _e155 = lobe.ibl_roughness;
-        metal::float3 _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = metal::float3(1.0) - _e156;
+        float _e162 = lobe.ibl_roughness;
+        metal::float2 _e163 = weft_env_brdf_lut(_e74, _e162, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
+        env_brdf = _e164;
+        metal::float3 _e167 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e167, metal::float3(0.0));
+        metal::float2 _e173 = lobe.alpha;
+        float _e174 = silk_lobe_anisotropy(_e173);
+        float _e176 = lobe.ibl_roughness;
+        metal::float3 _e177 = weft_aniso_bent_normal(_e63, _e38, _e174, _e176);
+        reflect_n = _e177;
     }
-    metal::float3 _e159 = reflect_n;
-    float _e162 = lobe.ibl_roughness;
-    metal::float3 _e163 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e159), _e162, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e164 = env_brdf;
-    metal::float3 _e166 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e167 = ambient_kd;
-    metal::float3 indirect = (_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo);
+    metal::float3 _e179 = reflect_n;
+    float _e182 = lobe.ibl_roughness;
+    metal::float3 _e183 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e179), _e182, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e184 = env_brdf;
+    metal::float3 _e186 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e187 = ambient_kd;
+    metal::float3 indirect = (_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -57,6 +57,7 @@ const ANISO_MODEL_HAIR_SHIFTED: u32 = 1u;
 const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -70,6 +71,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -81,18 +86,9 @@ var base_map: texture_2d<f32>;
 @group(1) @binding(4) 
 var aniso_normal_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
@@ -103,9 +99,9 @@ fn weft_clamp_roughness(roughness: f32) -> f32 {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
@@ -115,14 +111,14 @@ fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
     return vec3<f32>((1f + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
-fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
-    let _e2 = weft_clamp_roughness(roughness_1);
-    let a_1 = (_e2 * _e2);
+fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
     let a2_ = (a_1 * a_1);
-    let noh = saturate(n_dot_h);
-    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
-    let d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    let noh = saturate(dot(n_1, h));
+    let nxh = cross(n_1, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -130,32 +126,24 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness_2: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness_2))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-fn weft_v_schlick_ggx(n_dot_v_1: f32, n_dot_l: f32, roughness_3: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_3);
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
     let a_2 = (_e3 * _e3);
-    let k = (((a_2 + 1f) * (a_2 + 1f)) * 0.125f);
-    let gv = ((saturate(n_dot_v_1) * (1f - k)) + k);
-    let gl = ((saturate(n_dot_l) * (1f - k)) + k);
-    return (0.25f / (gv * gl));
+    let a2_1 = (a_2 * a_2);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_2: f32, roughness_4: f32) -> vec3<f32> {
-    let r = saturate(roughness_4);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_2)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -175,59 +163,65 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_5: f32) -> f32 {
-    let r_1 = saturate(roughness_5);
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_6);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
-    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let _e13 = weft_any_perpendicular(n_3);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3<f32>(t_1, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -239,13 +233,43 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-fn silk_jitter_tangent(t: vec3<f32>, n_3: vec3<f32>, shift: f32) -> vec3<f32> {
-    let _e5 = weft_safe_normalize((t + (shift * n_3)), t);
-    return _e5;
+fn weft_aniso_ggx_q(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32, alpha_t: f32, alpha_b: f32) -> f32 {
+    let at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    let ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    let x_2 = (t_dot_h / at);
+    let y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+}
+
+fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f32, alpha_b_1: f32) -> f32 {
+    let at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    let ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    let _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    let d_1 = (1f / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return select(0f, d_1, (n_dot_h_1 > 0f));
+}
+
+fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_1.z);
+    let _e7 = weft_clamp_cos(l.z);
+    let lv_1 = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let ll_1 = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5f / (lv_1 + ll_1));
+}
+
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_6: f32) -> vec3<f32> {
+    let k = clamp(anisotropy, -1f, 1f);
+    let n_4 = frame_2[2];
+    let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
+    let aniso_t = cross(dir_1, v_2);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k) * saturate((5f * saturate(roughness_6))));
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
 }
 
 fn silk_hair_mx_seed(smoothness: f32, gloss: f32) -> f32 {
@@ -255,18 +279,21 @@ fn silk_hair_mx_seed(smoothness: f32, gloss: f32) -> f32 {
     return (rx_safe * rx_safe);
 }
 
-fn silk_hair_d_seed(x_axis: vec3<f32>, n_4: vec3<f32>, h: vec3<f32>, mx: f32) -> f32 {
-    let m = max(mx, 0.00000001f);
-    let y_axis = cross(n_4, x_axis);
-    let xh = dot(x_axis, h);
-    let yh = dot(y_axis, h);
-    let nh = saturate(dot(n_4, h));
-    let d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001f);
-    return (1f / (((WEFT_PI * m) * d_1) * d_1));
+fn silk_tilt_frame(frame_3: mat3x3<f32>, shift: f32) -> mat3x3<f32> {
+    let s_2 = clamp(shift, -1f, 1f);
+    let _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    let _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return mat3x3<f32>(_e10, frame_3[1], _e16);
 }
 
-fn silk_ibl_roughness(alpha: vec2<f32>) -> f32 {
-    return saturate(sqrt(sqrt(max((alpha.x * alpha.y), 0f))));
+fn silk_lobe_anisotropy(alpha: vec2<f32>) -> f32 {
+    let at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    let ab_2 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_2) / (at_2 + ab_2));
+}
+
+fn silk_ibl_roughness(alpha_1: vec2<f32>) -> f32 {
+    return saturate(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0f))));
 }
 
 @vertex 
@@ -313,7 +340,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let roughness_7 = (1f - smoothness_1);
     let _e25 = material.metallic;
     let metallic = saturate(_e25);
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -334,7 +361,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
     let _e74 = weft_clamp_cos(dot(_e56, _e38));
     let n_dot_l_1 = saturate(dot(_e56, _e70));
-    let n_dot_h_1 = saturate(dot(_e56, _e72));
+    let n_dot_h_2 = saturate(dot(_e56, _e72));
     let v_dot_h_1 = saturate(dot(_e38, _e72));
     let _e81 = weft_aniso_to_frame(_e63, _e38);
     let _e82 = weft_aniso_to_frame(_e63, _e70);
@@ -356,39 +383,49 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e114, roughness_7, mask);
             {
-                let _e120 = material.tangent_shift;
-                let _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                let _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                let _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                let d_2 = (mix(_e123, _e124, mask) * spec_scale);
-                let _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e128) * n_dot_l_1);
+                let _e118 = material.tangent_shift;
+                let _e119 = silk_tilt_frame(_e63, _e118);
+                let _e120 = weft_aniso_to_frame(_e119, _e38);
+                let _e121 = weft_aniso_to_frame(_e119, _e70);
+                let _e122 = weft_aniso_to_frame(_e119, _e72);
+                let _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                let _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                let aniso = ((_e128 * _e131) * saturate(_e121.z));
+                let _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                let _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                let iso = ((_e136 * _e137) * n_dot_l_1);
+                lobe.value = (mix(aniso, iso, mask) * spec_scale);
             }
         }
     }
-    let _e131 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e132 = weft_main_light_radiance();
+    let _e143 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e144 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e138 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e131) * _e138) * n_dot_l_diffuse);
-    let _e142 = lobe.value;
-    let direct = ((diffuse + (_e131 * _e142)) * _e132);
+    let _e150 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e143) * _e150) * n_dot_l_diffuse);
+    let _e154 = lobe.value;
+    let direct = ((diffuse + (_e143 * _e154)) * _e144);
     reflect_n = _e56;
     {
-        let _e150 = lobe.ibl_roughness;
-        let _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        let _e155 = lobe.ibl_roughness;
-        let _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = (vec3(1f) - _e156);
+        let _e162 = lobe.ibl_roughness;
+        let _e163 = weft_env_brdf_lut(_e74, _e162);
+        let _e164 = weft_env_brdf_from_lut(f0_2, _e163);
+        env_brdf = _e164;
+        let _e167 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e167), vec3(0f));
+        let _e173 = lobe.alpha;
+        let _e174 = silk_lobe_anisotropy(_e173);
+        let _e176 = lobe.ibl_roughness;
+        let _e177 = weft_aniso_bent_normal(_e63, _e38, _e174, _e176);
+        reflect_n = _e177;
     }
-    let _e159 = reflect_n;
-    let _e162 = lobe.ibl_roughness;
-    let _e163 = weft_prefiltered_radiance(reflect(-(_e38), _e159), _e162);
-    let _e164 = env_brdf;
-    let _e166 = weft_sh_irradiance(n_diff);
-    let _e167 = ambient_kd;
-    let indirect = ((_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo));
+    let _e179 = reflect_n;
+    let _e182 = lobe.ibl_roughness;
+    let _e183 = weft_prefiltered_radiance(reflect(-(_e38), _e179), _e182);
+    let _e184 = env_brdf;
+    let _e186 = weft_sh_irradiance(n_diff);
+    let _e187 = ambient_kd;
+    let indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

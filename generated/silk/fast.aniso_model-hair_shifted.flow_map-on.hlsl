@@ -61,6 +61,7 @@ static const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -74,6 +75,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -98,21 +101,10 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(float3 v)
-{
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c)
@@ -125,10 +117,10 @@ float weft_clamp_roughness(float roughness)
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v_1, float3 fallback)
+float3 weft_safe_normalize(float3 v, float3 fallback)
 {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n)
@@ -139,15 +131,15 @@ float3 weft_any_perpendicular(float3 n)
     return float3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1)
+float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
 {
-    const float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
     float a2_ = (a_1 * a_1);
-    float noh = saturate(n_dot_h);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = saturate(dot(n_1, h));
+    float3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -156,21 +148,16 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_2)
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2)
 {
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness_2))).xxx, f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3)
-{
-    const float _e3 = weft_clamp_roughness(roughness_3);
+    const float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
-    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float a2_1 = (a_2 * a_2);
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -178,14 +165,10 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_4)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_4);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_2);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
-    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -208,64 +191,71 @@ float3 weft_view_direction(float3 world_position, float3 fallback_1)
     return _e7;
 }
 
-float3 weft_sh_irradiance(float3 n_1)
+float3 weft_sh_irradiance(float3 n_2)
 {
     float3 e = (float3)0;
 
     float4 sh[9] = weft_frame.sh;
     e = (sh[0].xyz * 0.282095);
     float3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     float3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     float3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     float3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     float3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     float3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     float3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     float3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_5)
+float weft_specular_mip(float roughness_3)
 {
-    float r_1 = saturate(roughness_5);
+    float r = saturate(roughness_3);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_6)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
 {
-    const float _e4 = weft_specular_mip(roughness_6);
+    const float _e4 = weft_specular_mip(roughness_4);
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+{
+    float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
-    float3 t_1 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    const float3 _e13 = weft_any_perpendicular(n_3);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t_1) * s_1);
-    return float3x3(t_1, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -279,15 +269,48 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_2)
+float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_1)
 {
-    return float3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+    return float3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-float3 silk_jitter_tangent(float3 t, float3 n_3, float shift)
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
 {
-    const float3 _e5 = weft_safe_normalize((t + (shift * n_3)), t);
-    return _e5;
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
+{
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    const float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d_1 = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+{
+    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e7 = weft_clamp_cos(l.z);
+    float lv_1 = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll_1 = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv_1 + ll_1));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_6)
+{
+    float k = clamp(anisotropy, -1.0, 1.0);
+    float3 n_4 = frame_2[2];
+    float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * saturate((5.0 * saturate(roughness_6))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    return _e22;
 }
 
 float silk_hair_mx_seed(float smoothness, float gloss)
@@ -298,20 +321,24 @@ float silk_hair_mx_seed(float smoothness, float gloss)
     return (rx_safe * rx_safe);
 }
 
-float silk_hair_d_seed(float3 x_axis, float3 n_4, float3 h, float mx)
+float3x3 silk_tilt_frame(float3x3 frame_3, float shift)
 {
-    float m = max(mx, 1e-8);
-    float3 y_axis = cross(n_4, x_axis);
-    float xh = dot(x_axis, h);
-    float yh = dot(y_axis, h);
-    float nh = saturate(dot(n_4, h));
-    float d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001);
-    return (1.0 / (((WEFT_PI * m) * d_1) * d_1));
+    float s_2 = clamp(shift, -1.0, 1.0);
+    const float3 _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    const float3 _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return float3x3(_e10, frame_3[1], _e16);
 }
 
-float silk_ibl_roughness(float2 alpha)
+float silk_lobe_anisotropy(float2 alpha)
 {
-    return saturate(sqrt(sqrt(max((alpha.x * alpha.y), 0.0))));
+    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    float ab_2 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_2) / (at_2 + ab_2));
+}
+
+float silk_ibl_roughness(float2 alpha_1)
+{
+    return saturate(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0.0))));
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -361,7 +388,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float roughness_7 = (1.0 - smoothness_1);
     float _e25 = material.metallic;
     float metallic = saturate(_e25);
-    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -377,9 +404,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         float4 _e61 = flow_map.Sample(material_sampler, _e5);
         float2 flow = ((_e61.xy * 2.0) - (1.0).xx);
-        float3 dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
+        float3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
         float _e78 = material.flow_strength;
-        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_1, saturate(_e78)), _e42[0]);
+        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_2, saturate(_e78)), _e42[0]);
         fibre = _e82;
     }
     float3 _e83 = fibre;
@@ -390,7 +417,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
     const float _e98 = weft_clamp_cos(dot(_e56, _e38));
     float n_dot_l_1 = saturate(dot(_e56, _e94));
-    float n_dot_h_1 = saturate(dot(_e56, _e96));
+    float n_dot_h_2 = saturate(dot(_e56, _e96));
     float v_dot_h_1 = saturate(dot(_e38, _e96));
     const float3 _e105 = weft_aniso_to_frame(_e87, _e38);
     const float3 _e106 = weft_aniso_to_frame(_e87, _e94);
@@ -412,39 +439,49 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const float _e138 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = lerp(_e138, roughness_7, mask);
             {
-                float _e144 = material.tangent_shift;
-                const float3 _e145 = silk_jitter_tangent(_e87[0], _e87[2], _e144);
-                const float _e147 = silk_hair_d_seed(_e145, _e87[2], _e96, _e115);
-                const float _e148 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = (lerp(_e147, _e148, mask) * spec_scale);
-                const float _e152 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e152) * n_dot_l_1);
+                float _e142 = material.tangent_shift;
+                const float3x3 _e143 = silk_tilt_frame(_e87, _e142);
+                const float3 _e144 = weft_aniso_to_frame(_e143, _e38);
+                const float3 _e145 = weft_aniso_to_frame(_e143, _e94);
+                const float3 _e146 = weft_aniso_to_frame(_e143, _e96);
+                const float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
+                const float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
+                float aniso = ((_e152 * _e155) * saturate(_e145.z));
+                const float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
+                const float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
+                float iso = ((_e160 * _e161) * n_dot_l_1);
+                lobe.value = (lerp(aniso, iso, mask) * spec_scale);
             }
         }
     }
-    const float3 _e155 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e156 = weft_main_light_radiance();
+    const float3 _e167 = weft_f_schlick(f0_2, v_dot_h_1);
+    const float3 _e168 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    const float3 _e162 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e155) * _e162) * n_dot_l_diffuse);
-    float _e166 = lobe.value;
-    float3 direct = ((diffuse + (_e155 * _e166)) * _e156);
+    const float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e167) * _e174) * n_dot_l_diffuse);
+    float _e178 = lobe.value;
+    float3 direct = ((diffuse + (_e167 * _e178)) * _e168);
     reflect_n = _e56;
     {
-        float _e174 = lobe.ibl_roughness;
-        const float3 _e175 = weft_env_brdf_approx(f0_3, _e98, _e174);
-        env_brdf = _e175;
-        float _e179 = lobe.ibl_roughness;
-        const float3 _e180 = weft_f_schlick_roughness(f0_3, _e98, _e179);
-        ambient_kd = ((1.0).xxx - _e180);
+        float _e186 = lobe.ibl_roughness;
+        const float2 _e187 = weft_env_brdf_lut(_e98, _e186);
+        const float3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
+        env_brdf = _e188;
+        float3 _e191 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e191), (0.0).xxx);
+        float2 _e197 = lobe.alpha;
+        const float _e198 = silk_lobe_anisotropy(_e197);
+        float _e200 = lobe.ibl_roughness;
+        const float3 _e201 = weft_aniso_bent_normal(_e87, _e38, _e198, _e200);
+        reflect_n = _e201;
     }
-    float3 _e183 = reflect_n;
-    float _e186 = lobe.ibl_roughness;
-    const float3 _e187 = weft_prefiltered_radiance(reflect(-(_e38), _e183), _e186);
-    float3 _e188 = env_brdf;
-    const float3 _e190 = weft_sh_irradiance(n_diff);
-    float3 _e191 = ambient_kd;
-    float3 indirect = ((_e187 * _e188) + ((_e190 * _e191) * diffuse_albedo));
+    float3 _e203 = reflect_n;
+    float _e206 = lobe.ibl_roughness;
+    const float3 _e207 = weft_prefiltered_radiance(reflect(-(_e38), _e203), _e206);
+    float3 _e208 = env_brdf;
+    const float3 _e210 = weft_sh_irradiance(n_diff);
+    float3 _e211 = ambient_kd;
+    float3 indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

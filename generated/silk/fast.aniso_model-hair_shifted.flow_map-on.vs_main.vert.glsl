@@ -52,6 +52,7 @@ const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -72,18 +73,9 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
@@ -94,9 +86,9 @@ float weft_clamp_roughness(float roughness) {
     return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
@@ -106,14 +98,14 @@ vec3 weft_any_perpendicular(vec3 n) {
     return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
-float weft_d_ggx(float n_dot_h, float roughness_1) {
-    float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(n_dot_h, 0.0, 1.0);
-    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d) * d));
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -121,32 +113,24 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
-float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
-    float _e3 = weft_clamp_roughness(roughness_3);
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
-    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
-    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
-    return (0.25 / (gv * gl));
+    float a2_1 = (a_2 * a_2);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
-    float r = clamp(roughness_4, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -166,52 +150,52 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n_2) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_5) {
-    float r_1 = clamp(roughness_5, 0.0, 1.0);
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
-    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3(t_1, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -223,13 +207,43 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec3 silk_jitter_tangent(vec3 t, vec3 n_3, float shift) {
-    vec3 _e5 = weft_safe_normalize((t + (shift * n_3)), t);
-    return _e5;
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d_1 = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv_1 = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll_1 = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv_1 + ll_1));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_6) {
+    float k = clamp(anisotropy, -1.0, 1.0);
+    vec3 n_4 = frame_2[2];
+    vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * clamp((5.0 * clamp(roughness_6, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
 }
 
 float silk_hair_mx_seed(float smoothness, float gloss) {
@@ -239,18 +253,21 @@ float silk_hair_mx_seed(float smoothness, float gloss) {
     return (rx_safe * rx_safe);
 }
 
-float silk_hair_d_seed(vec3 x_axis, vec3 n_4, vec3 h, float mx) {
-    float m = max(mx, 1e-8);
-    vec3 y_axis = cross(n_4, x_axis);
-    float xh = dot(x_axis, h);
-    float yh = dot(y_axis, h);
-    float nh = clamp(dot(n_4, h), 0.0, 1.0);
-    float d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001);
-    return (1.0 / (((WEFT_PI * m) * d_1) * d_1));
+mat3x3 silk_tilt_frame(mat3x3 frame_3, float shift) {
+    float s_2 = clamp(shift, -1.0, 1.0);
+    vec3 _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    vec3 _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return mat3x3(_e10, frame_3[1], _e16);
 }
 
-float silk_ibl_roughness(vec2 alpha) {
-    return clamp(sqrt(sqrt(max((alpha.x * alpha.y), 0.0))), 0.0, 1.0);
+float silk_lobe_anisotropy(vec2 alpha) {
+    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
+    float ab_2 = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at_2 - ab_2) / (at_2 + ab_2));
+}
+
+float silk_ibl_roughness(vec2 alpha_1) {
+    return clamp(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0.0))), 0.0, 1.0);
 }
 
 void main() {

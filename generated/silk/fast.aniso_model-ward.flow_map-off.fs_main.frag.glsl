@@ -52,6 +52,7 @@ const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
@@ -63,11 +64,13 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group
 
 layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
 layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
 
-layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
 
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
@@ -75,27 +78,18 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float weft_pow4_(float x) {
+float weft_pow5_(float x) {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1) {
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(vec3 v) {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
@@ -110,23 +104,13 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness) {
-    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
-    vec3 f90_ = max(vec3((1.0 - clamp(roughness, 0.0, 1.0))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
 vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_1, float roughness_1) {
-    float r = clamp(roughness_1, 0.0, 1.0);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    float _e9 = weft_max3_(f0_2);
-    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
-    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_1, 0.0, 1.0)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -170,17 +154,23 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_2) {
-    float r_1 = clamp(roughness_2, 0.0, 1.0);
+float weft_specular_mip(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_3) {
-    float _e4 = weft_specular_mip(roughness_3);
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+    vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -196,8 +186,8 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -209,33 +199,59 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
-    return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
+    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-float silk_aspect(float anisotropy) {
-    return sqrt((1.0 - (0.9 * clamp(anisotropy, -1.0, 1.0))));
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_3) {
+    float k = clamp(anisotropy, -1.0, 1.0);
+    vec3 n_3 = frame_2[2];
+    vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * clamp((5.0 * clamp(roughness_3, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    return _e22;
 }
 
-vec2 silk_ward_alpha_seed(float smoothness, float anisotropy_1) {
-    float r_2 = (1.0 - clamp(smoothness, 0.0, 1.0));
-    float a_1 = (r_2 * r_2);
-    float _e6 = silk_aspect(anisotropy_1);
+float silk_aspect(float anisotropy_1) {
+    return sqrt((1.0 - (0.9 * clamp(anisotropy_1, -1.0, 1.0))));
+}
+
+vec2 silk_ward_alpha_seed(float smoothness, float anisotropy_2) {
+    float r_1 = (1.0 - clamp(smoothness, 0.0, 1.0));
+    float a_1 = (r_1 * r_1);
+    float _e6 = silk_aspect(anisotropy_2);
     return (vec2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_seed(vec3 h, float n_dot_l, float n_dot_v_2, vec2 alpha) {
+float silk_ward_bounded(vec3 v_2, vec3 l, vec2 alpha) {
+    bool local = false;
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    float x_3 = (h.x / ax);
-    float y = (h.y / ay);
-    float exponent = (-(((x_3 * x_3) + (y * y))) / max((h.z * h.z), 1e-8));
-    float nlnv = max((clamp(n_dot_l, 0.0, 1.0) * clamp(n_dot_v_2, 0.0, 1.0)), 1e-8);
-    return (exp(exponent) / (((12.566371 * ax) * ay) * sqrt(nlnv)));
+    vec3 hv = (v_2 + l);
+    float hn = max(hv.z, 0.0001);
+    float hn2_ = (hn * hn);
+    float x_2 = (hv.x / ax);
+    float y = (hv.y / ay);
+    float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
+    if ((v_2.z > 0.0)) {
+        local = (l.z > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e41 = local;
+    return (_e41 ? f : 0.0);
 }
 
-float silk_ibl_roughness(vec2 alpha_1) {
-    return clamp(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0.0))), 0.0, 1.0);
+float silk_lobe_anisotropy(vec2 alpha_1) {
+    float at = max(alpha_1.x, SILK_MIN_ALPHA);
+    float ab = max(alpha_1.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+float silk_ibl_roughness(vec2 alpha_2) {
+    return clamp(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))), 0.0, 1.0);
 }
 
 void main() {
@@ -258,7 +274,7 @@ void main() {
     float roughness_4 = (1.0 - smoothness_1);
     float _e25 = _group_1_binding_0_fs.metallic;
     float metallic = clamp(_e25, 0.0, 1.0);
-    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -278,24 +294,24 @@ void main() {
     vec3 _e70 = weft_main_light_direction();
     vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
     float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = clamp(dot(_e56, _e70), 0.0, 1.0);
+    float n_dot_l = clamp(dot(_e56, _e70), 0.0, 1.0);
     float n_dot_h = clamp(dot(_e56, _e72), 0.0, 1.0);
     float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
     vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
     vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
     vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
-    float k = _group_1_binding_0_fs.anisotropy;
+    float k_1 = _group_1_binding_0_fs.anisotropy;
     {
-        vec2 _e88 = silk_ward_alpha_seed(smoothness_1, k);
+        vec2 _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
         lobe.alpha = _e88;
         float _e91 = silk_ibl_roughness(_e88);
         lobe.ibl_roughness = _e91;
         {
-            float _e93 = silk_ward_seed(_e83, n_dot_l_1, _e74, _e88);
-            lobe.value = (_e93 * n_dot_l_1);
+            float _e93 = silk_ward_bounded(_e81, _e82, _e88);
+            lobe.value = (_e93 * n_dot_l);
         }
     }
-    vec3 _e95 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec3 _e95 = weft_f_schlick(f0_2, v_dot_h_1);
     vec3 _e96 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
     vec3 _e102 = weft_diffuse_lambert(diffuse_albedo);
@@ -305,19 +321,24 @@ void main() {
     reflect_n = _e56;
     {
         float _e114 = lobe.ibl_roughness;
-        vec3 _e115 = weft_env_brdf_approx(f0_3, _e74, _e114);
-        env_brdf = _e115;
-        float _e119 = lobe.ibl_roughness;
-        vec3 _e120 = weft_f_schlick_roughness(f0_3, _e74, _e119);
-        ambient_kd = (vec3(1.0) - _e120);
+        vec2 _e115 = weft_env_brdf_lut(_e74, _e114);
+        vec3 _e116 = weft_env_brdf_from_lut(f0_2, _e115);
+        env_brdf = _e116;
+        vec3 _e119 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e119), vec3(0.0));
+        vec2 _e125 = lobe.alpha;
+        float _e126 = silk_lobe_anisotropy(_e125);
+        float _e128 = lobe.ibl_roughness;
+        vec3 _e129 = weft_aniso_bent_normal(_e63, _e38, _e126, _e128);
+        reflect_n = _e129;
     }
-    vec3 _e123 = reflect_n;
-    float _e126 = lobe.ibl_roughness;
-    vec3 _e127 = weft_prefiltered_radiance(reflect(-(_e38), _e123), _e126);
-    vec3 _e128 = env_brdf;
-    vec3 _e130 = weft_sh_irradiance(n_diff);
-    vec3 _e131 = ambient_kd;
-    vec3 indirect = ((_e127 * _e128) + ((_e130 * _e131) * diffuse_albedo));
+    vec3 _e131 = reflect_n;
+    float _e134 = lobe.ibl_roughness;
+    vec3 _e135 = weft_prefiltered_radiance(reflect(-(_e38), _e131), _e134);
+    vec3 _e136 = env_brdf;
+    vec3 _e138 = weft_sh_irradiance(n_diff);
+    vec3 _e139 = ambient_kd;
+    vec3 indirect = ((_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -61,6 +61,7 @@ static const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
@@ -74,6 +75,8 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -97,21 +100,10 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow4_(float x)
+float weft_pow5_(float x)
 {
     float x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-float weft_pow5_(float x_1)
-{
-    float x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-float weft_max3_(float3 v)
-{
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 float weft_clamp_cos(float c)
@@ -119,10 +111,10 @@ float weft_clamp_cos(float c)
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float3 weft_safe_normalize(float3 v_1, float3 fallback)
+float3 weft_safe_normalize(float3 v, float3 fallback)
 {
-    float len2_ = dot(v_1, v_1);
-    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
 float3 weft_any_perpendicular(float3 n)
@@ -139,26 +131,15 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness)
-{
-    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
-    float3 f90_ = max(((1.0 - saturate(roughness))).xxx, f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
 float3 weft_diffuse_lambert(float3 albedo)
 {
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_1, float roughness_1)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float r = saturate(roughness_1);
-    float surface_reduction = (1.0 / ((r * r) + 1.0));
-    const float _e9 = weft_max3_(f0_2);
-    float grazing = saturate((_e9 + (1.0 - r)));
-    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_1)));
-    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -207,19 +188,26 @@ float3 weft_sh_irradiance(float3 n_1)
     return max(_e91, (0.0).xxx);
 }
 
-float weft_specular_mip(float roughness_2)
+float weft_specular_mip(float roughness)
 {
-    float r_1 = saturate(roughness_2);
+    float r = saturate(roughness);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-float3 weft_prefiltered_radiance(float3 dir, float roughness_3)
+float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
 {
-    const float _e4 = weft_specular_mip(roughness_3);
+    const float _e4 = weft_specular_mip(roughness_1);
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
+{
+    float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_2));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -237,8 +225,8 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -252,38 +240,67 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_2)
+float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_1)
 {
-    return float3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+    return float3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-float silk_aspect(float anisotropy)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy, float roughness_3)
 {
-    return sqrt((1.0 - (0.9 * clamp(anisotropy, -1.0, 1.0))));
+    float k = clamp(anisotropy, -1.0, 1.0);
+    float3 n_3 = frame_2[2];
+    float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * saturate((5.0 * saturate(roughness_3))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    return _e22;
 }
 
-float2 silk_ward_alpha_seed(float smoothness, float anisotropy_1)
+float silk_aspect(float anisotropy_1)
 {
-    float r_2 = (1.0 - saturate(smoothness));
-    float a_1 = (r_2 * r_2);
-    const float _e6 = silk_aspect(anisotropy_1);
+    return sqrt((1.0 - (0.9 * clamp(anisotropy_1, -1.0, 1.0))));
+}
+
+float2 silk_ward_alpha_seed(float smoothness, float anisotropy_2)
+{
+    float r_1 = (1.0 - saturate(smoothness));
+    float a_1 = (r_1 * r_1);
+    const float _e6 = silk_aspect(anisotropy_2);
     return (float2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_seed(float3 h, float n_dot_l, float n_dot_v_2, float2 alpha)
+float silk_ward_bounded(float3 v_2, float3 l, float2 alpha)
 {
+    bool local = (bool)0;
+
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    float x_3 = (h.x / ax);
-    float y = (h.y / ay);
-    float exponent = (-(((x_3 * x_3) + (y * y))) / max((h.z * h.z), 1e-8));
-    float nlnv = max((saturate(n_dot_l) * saturate(n_dot_v_2)), 1e-8);
-    return (exp(exponent) / (((12.566371 * ax) * ay) * sqrt(nlnv)));
+    float3 hv = (v_2 + l);
+    float hn = max(hv.z, 0.0001);
+    float hn2_ = (hn * hn);
+    float x_2 = (hv.x / ax);
+    float y = (hv.y / ay);
+    float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
+    if ((v_2.z > 0.0)) {
+        local = (l.z > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e41 = local;
+    return (_e41 ? f : 0.0);
 }
 
-float silk_ibl_roughness(float2 alpha_1)
+float silk_lobe_anisotropy(float2 alpha_1)
 {
-    return saturate(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0.0))));
+    float at = max(alpha_1.x, SILK_MIN_ALPHA);
+    float ab = max(alpha_1.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+float silk_ibl_roughness(float2 alpha_2)
+{
+    return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))));
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -333,7 +350,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float roughness_4 = (1.0 - smoothness_1);
     float _e25 = material.metallic;
     float metallic = saturate(_e25);
-    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -353,24 +370,24 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e70 = weft_main_light_direction();
     const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
     const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e70));
+    float n_dot_l = saturate(dot(_e56, _e70));
     float n_dot_h = saturate(dot(_e56, _e72));
     float v_dot_h_1 = saturate(dot(_e38, _e72));
     const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
     const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
     const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
-    float k = material.anisotropy;
+    float k_1 = material.anisotropy;
     {
-        const float2 _e88 = silk_ward_alpha_seed(smoothness_1, k);
+        const float2 _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
         lobe.alpha = _e88;
         const float _e91 = silk_ibl_roughness(_e88);
         lobe.ibl_roughness = _e91;
         {
-            const float _e93 = silk_ward_seed(_e83, n_dot_l_1, _e74, _e88);
-            lobe.value = (_e93 * n_dot_l_1);
+            const float _e93 = silk_ward_bounded(_e81, _e82, _e88);
+            lobe.value = (_e93 * n_dot_l);
         }
     }
-    const float3 _e95 = weft_f_schlick(f0_3, v_dot_h_1);
+    const float3 _e95 = weft_f_schlick(f0_2, v_dot_h_1);
     const float3 _e96 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
     const float3 _e102 = weft_diffuse_lambert(diffuse_albedo);
@@ -380,19 +397,24 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     reflect_n = _e56;
     {
         float _e114 = lobe.ibl_roughness;
-        const float3 _e115 = weft_env_brdf_approx(f0_3, _e74, _e114);
-        env_brdf = _e115;
-        float _e119 = lobe.ibl_roughness;
-        const float3 _e120 = weft_f_schlick_roughness(f0_3, _e74, _e119);
-        ambient_kd = ((1.0).xxx - _e120);
+        const float2 _e115 = weft_env_brdf_lut(_e74, _e114);
+        const float3 _e116 = weft_env_brdf_from_lut(f0_2, _e115);
+        env_brdf = _e116;
+        float3 _e119 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e119), (0.0).xxx);
+        float2 _e125 = lobe.alpha;
+        const float _e126 = silk_lobe_anisotropy(_e125);
+        float _e128 = lobe.ibl_roughness;
+        const float3 _e129 = weft_aniso_bent_normal(_e63, _e38, _e126, _e128);
+        reflect_n = _e129;
     }
-    float3 _e123 = reflect_n;
-    float _e126 = lobe.ibl_roughness;
-    const float3 _e127 = weft_prefiltered_radiance(reflect(-(_e38), _e123), _e126);
-    float3 _e128 = env_brdf;
-    const float3 _e130 = weft_sh_irradiance(n_diff);
-    float3 _e131 = ambient_kd;
-    float3 indirect = ((_e127 * _e128) + ((_e130 * _e131) * diffuse_albedo));
+    float3 _e131 = reflect_n;
+    float _e134 = lobe.ibl_roughness;
+    const float3 _e135 = weft_prefiltered_radiance(reflect(-(_e38), _e131), _e134);
+    float3 _e136 = env_brdf;
+    const float3 _e138 = weft_sh_irradiance(n_diff);
+    float3 _e139 = ambient_kd;
+    float3 indirect = ((_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -4,7 +4,7 @@
 
 using metal::uint;
 
-struct type_4 {
+struct type_5 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +13,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_4 sh;
+    type_5 sh;
     metal::float4 params;
 };
 struct WeftObject {
@@ -65,6 +65,7 @@ constant uint ANISO_MODEL_HAIR_SHIFTED = 1u;
 constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
@@ -72,24 +73,11 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
 
-float weft_pow4_(
+float weft_pow5_(
     float x
 ) {
     float x2_ = x * x;
-    return x2_ * x2_;
-}
-
-float weft_pow5_(
-    float x_1
-) {
-    float x2_1 = x_1 * x_1;
-    return (x2_1 * x2_1) * x_1;
-}
-
-float weft_max3_(
-    metal::float3 v
-) {
-    return metal::max(v.x, metal::max(v.y, v.z));
+    return (x2_ * x2_) * x;
 }
 
 float weft_clamp_cos(
@@ -99,11 +87,11 @@ float weft_clamp_cos(
 }
 
 metal::float3 weft_safe_normalize(
-    metal::float3 v_1,
+    metal::float3 v,
     metal::float3 fallback
 ) {
-    float len2_ = metal::dot(v_1, v_1);
-    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
 metal::float3 weft_any_perpendicular(
@@ -123,33 +111,18 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-metal::float3 weft_f_schlick_roughness(
-    metal::float3 f0_1,
-    float n_dot_v,
-    float roughness
-) {
-    float _e6 = weft_pow5_(1.0 - metal::saturate(n_dot_v));
-    metal::float3 f90_ = metal::max(metal::float3(1.0 - metal::saturate(roughness)), f0_1);
-    return f0_1 + ((f90_ - f0_1) * _e6);
-}
-
 metal::float3 weft_diffuse_lambert(
     metal::float3 albedo
 ) {
     return albedo * WEFT_INV_PI;
 }
 
-metal::float3 weft_env_brdf_approx(
-    metal::float3 f0_2,
-    float n_dot_v_1,
-    float roughness_1
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
 ) {
-    float r = metal::saturate(roughness_1);
-    float surface_reduction = 1.0 / ((r * r) + 1.0);
-    float _e9 = weft_max3_(f0_2);
-    float grazing = metal::saturate(_e9 + (1.0 - r));
-    float _e17 = weft_pow4_(1.0 - metal::saturate(n_dot_v_1));
-    return metal::mix(f0_2, metal::float3(grazing), _e17) * surface_reduction;
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -182,7 +155,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_4 sh = weft_frame.sh;
+    type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
@@ -205,25 +178,36 @@ metal::float3 weft_sh_irradiance(
 }
 
 float weft_specular_mip(
-    float roughness_2,
+    float roughness,
     constant WeftFrame& weft_frame
 ) {
-    float r_1 = metal::saturate(roughness_2);
+    float r = metal::saturate(roughness);
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+    return (r * (1.7 - (0.7 * r))) * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance(
     metal::float3 dir,
-    float roughness_3,
+    float roughness_1,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip(roughness_3, weft_frame);
+    float _e4 = weft_specular_mip(roughness_1, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v,
+    float roughness_2,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -245,8 +229,8 @@ metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -266,46 +250,78 @@ metal::float2 weft_transform_uv(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame_1,
-    metal::float3 x_2
+    metal::float3 x_1
 ) {
-    return metal::float3(metal::dot(frame_1[0], x_2), metal::dot(frame_1[1], x_2), metal::dot(frame_1[2], x_2));
+    return metal::float3(metal::dot(frame_1[0], x_1), metal::dot(frame_1[1], x_1), metal::dot(frame_1[2], x_1));
+}
+
+metal::float3 weft_aniso_bent_normal(
+    metal::float3x3 frame_2,
+    metal::float3 v_1,
+    float anisotropy,
+    float roughness_3
+) {
+    float k = metal::clamp(anisotropy, -1.0, 1.0);
+    metal::float3 n_3 = frame_2[2];
+    metal::float3 dir_1 = (k >= 0.0) ? frame_2[1] : frame_2[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_1);
+    metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
+    float bend = metal::abs(k) * metal::saturate(5.0 * metal::saturate(roughness_3));
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    return _e22;
 }
 
 float silk_aspect(
-    float anisotropy
+    float anisotropy_1
 ) {
-    return metal::sqrt(1.0 - (0.9 * metal::clamp(anisotropy, -1.0, 1.0)));
+    return metal::sqrt(1.0 - (0.9 * metal::clamp(anisotropy_1, -1.0, 1.0)));
 }
 
 metal::float2 silk_ward_alpha_seed(
     float smoothness,
-    float anisotropy_1
+    float anisotropy_2
 ) {
-    float r_2 = 1.0 - metal::saturate(smoothness);
-    float a_1 = r_2 * r_2;
-    float _e6 = silk_aspect(anisotropy_1);
+    float r_1 = 1.0 - metal::saturate(smoothness);
+    float a_1 = r_1 * r_1;
+    float _e6 = silk_aspect(anisotropy_2);
     return metal::float2(metal::max(SILK_MIN_ALPHA, a_1 / _e6), metal::max(SILK_MIN_ALPHA, a_1 * _e6)) * 5.0;
 }
 
-float silk_ward_seed(
-    metal::float3 h,
-    float n_dot_l,
-    float n_dot_v_2,
+float silk_ward_bounded(
+    metal::float3 v_2,
+    metal::float3 l,
     metal::float2 alpha
 ) {
+    bool local = {};
     float ax = metal::max(alpha.x, SILK_MIN_ALPHA);
     float ay = metal::max(alpha.y, SILK_MIN_ALPHA);
-    float x_3 = h.x / ax;
-    float y = h.y / ay;
-    float exponent = -(((x_3 * x_3) + (y * y))) / metal::max(h.z * h.z, 0.00000001);
-    float nlnv = metal::max(metal::saturate(n_dot_l) * metal::saturate(n_dot_v_2), 0.00000001);
-    return metal::exp(exponent) / (((12.566371 * ax) * ay) * metal::sqrt(nlnv));
+    metal::float3 hv = v_2 + l;
+    float hn = metal::max(hv.z, 0.0001);
+    float hn2_ = hn * hn;
+    float x_2 = hv.x / ax;
+    float y = hv.y / ay;
+    float f = (metal::dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * metal::exp(-(((x_2 * x_2) + (y * y))) / hn2_);
+    if (v_2.z > 0.0) {
+        local = l.z > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e41 = local;
+    return _e41 ? f : 0.0;
+}
+
+float silk_lobe_anisotropy(
+    metal::float2 alpha_1
+) {
+    float at = metal::max(alpha_1.x, SILK_MIN_ALPHA);
+    float ab = metal::max(alpha_1.y, SILK_MIN_ALPHA);
+    return (at - ab) / (at + ab);
 }
 
 float silk_ibl_roughness(
-    metal::float2 alpha_1
+    metal::float2 alpha_2
 ) {
-    return metal::saturate(metal::sqrt(metal::sqrt(metal::max(alpha_1.x * alpha_1.y, 0.0))));
+    return metal::saturate(metal::sqrt(metal::sqrt(metal::max(alpha_2.x * alpha_2.y, 0.0))));
 }
 
 struct vs_mainInput {
@@ -364,10 +380,12 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
-, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
@@ -388,7 +406,7 @@ fragment fs_mainOutput fs_main(
     float roughness_4 = 1.0 - smoothness_1;
     float _e25 = material.metallic;
     float metallic = metal::saturate(_e25);
-    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -408,24 +426,24 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e70 = weft_main_light_direction(weft_frame);
     metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
     float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e70));
+    float n_dot_l = metal::saturate(metal::dot(_e56, _e70));
     float n_dot_h = metal::saturate(metal::dot(_e56, _e72));
     float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
     metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
     metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
     metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
-    float k = material.anisotropy;
+    float k_1 = material.anisotropy;
     {
-        metal::float2 _e88 = silk_ward_alpha_seed(smoothness_1, k);
+        metal::float2 _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
         lobe.alpha = _e88;
         float _e91 = silk_ibl_roughness(_e88);
         lobe.ibl_roughness = _e91;
         {
-            float _e93 = silk_ward_seed(_e83, n_dot_l_1, _e74, _e88);
-            lobe.value = _e93 * n_dot_l_1;
+            float _e93 = silk_ward_bounded(_e81, _e82, _e88);
+            lobe.value = _e93 * n_dot_l;
         }
     }
-    metal::float3 _e95 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float3 _e95 = weft_f_schlick(f0_2, v_dot_h_1);
     metal::float3 _e96 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
     metal::float3 _e102 = weft_diffuse_lambert(diffuse_albedo);
@@ -435,19 +453,24 @@ fragment fs_mainOutput fs_main(
     reflect_n = _e56;
     {
         float _e114 = lobe.ibl_roughness;
-        metal::float3 _e115 = weft_env_brdf_approx(f0_3, _e74, _e114);
-        env_brdf = _e115;
-        float _e119 = lobe.ibl_roughness;
-        metal::float3 _e120 = weft_f_schlick_roughness(f0_3, _e74, _e119);
-        ambient_kd = metal::float3(1.0) - _e120;
+        metal::float2 _e115 = weft_env_brdf_lut(_e74, _e114, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e116 = weft_env_brdf_from_lut(f0_2, _e115);
+        env_brdf = _e116;
+        metal::float3 _e119 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e119, metal::float3(0.0));
+        metal::float2 _e125 = lobe.alpha;
+        float _e126 = silk_lobe_anisotropy(_e125);
+        float _e128 = lobe.ibl_roughness;
+        metal::float3 _e129 = weft_aniso_bent_normal(_e63, _e38, _e126, _e128);
+        reflect_n = _e129;
     }
-    metal::float3 _e123 = reflect_n;
-    float _e126 = lobe.ibl_roughness;
-    metal::float3 _e127 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e123), _e126, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e128 = env_brdf;
-    metal::float3 _e130 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e131 = ambient_kd;
-    metal::float3 indirect = (_e127 * _e128) + ((_e130 * _e131) * diffuse_albedo);
+    metal::float3 _e131 = reflect_n;
+    float _e134 = lobe.ibl_roughness;
+    metal::float3 _e135 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e131), _e134, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e136 = env_brdf;
+    metal::float3 _e138 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e139 = ambient_kd;
+    metal::float3 indirect = (_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -57,6 +57,7 @@ const ANISO_MODEL_HAIR_SHIFTED: u32 = 1u;
 const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
@@ -70,6 +71,10 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -83,27 +88,18 @@ var aniso_normal_map: texture_2d<f32>;
 @group(1) @binding(5) 
 var flow_map: texture_2d<f32>;
 
-fn weft_pow4_(x: f32) -> f32 {
+fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
-    return (x2_ * x2_);
-}
-
-fn weft_pow5_(x_1: f32) -> f32 {
-    let x2_1 = (x_1 * x_1);
-    return ((x2_1 * x2_1) * x_1);
-}
-
-fn weft_max3_(v: vec3<f32>) -> f32 {
-    return max(v.x, max(v.y, v.z));
+    return ((x2_ * x2_) * x);
 }
 
 fn weft_clamp_cos(c: f32) -> f32 {
     return clamp(c, WEFT_MIN_N_DOT, 1f);
 }
 
-fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len2_ = dot(v_1, v_1);
-    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
 fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
@@ -118,23 +114,13 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_f_schlick_roughness(f0_1: vec3<f32>, n_dot_v: f32, roughness: f32) -> vec3<f32> {
-    let _e6 = weft_pow5_((1f - saturate(n_dot_v)));
-    let f90_ = max(vec3((1f - saturate(roughness))), f0_1);
-    return (f0_1 + ((f90_ - f0_1) * _e6));
-}
-
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_approx(f0_2: vec3<f32>, n_dot_v_1: f32, roughness_1: f32) -> vec3<f32> {
-    let r = saturate(roughness_1);
-    let surface_reduction = (1f / ((r * r) + 1f));
-    let _e9 = weft_max3_(f0_2);
-    let grazing = saturate((_e9 + (1f - r)));
-    let _e17 = weft_pow4_((1f - saturate(n_dot_v_1)));
-    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -179,17 +165,23 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_specular_mip(roughness_2: f32) -> f32 {
-    let r_1 = saturate(roughness_2);
+fn weft_specular_mip(roughness: f32) -> f32 {
+    let r = saturate(roughness);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
-fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_3: f32) -> vec3<f32> {
-    let _e4 = weft_specular_mip(roughness_3);
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_1);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -205,8 +197,8 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -218,33 +210,60 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
+fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-fn silk_aspect(anisotropy: f32) -> f32 {
-    return sqrt((1f - (0.9f * clamp(anisotropy, -1f, 1f))));
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_1: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
+    let k = clamp(anisotropy, -1f, 1f);
+    let n_3 = frame_2[2];
+    let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
+    let aniso_t = cross(dir_1, v_1);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k) * saturate((5f * saturate(roughness_3))));
+    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    return _e22;
 }
 
-fn silk_ward_alpha_seed(smoothness: f32, anisotropy_1: f32) -> vec2<f32> {
-    let r_2 = (1f - saturate(smoothness));
-    let a_1 = (r_2 * r_2);
-    let _e6 = silk_aspect(anisotropy_1);
+fn silk_aspect(anisotropy_1: f32) -> f32 {
+    return sqrt((1f - (0.9f * clamp(anisotropy_1, -1f, 1f))));
+}
+
+fn silk_ward_alpha_seed(smoothness: f32, anisotropy_2: f32) -> vec2<f32> {
+    let r_1 = (1f - saturate(smoothness));
+    let a_1 = (r_1 * r_1);
+    let _e6 = silk_aspect(anisotropy_2);
     return (vec2<f32>(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5f);
 }
 
-fn silk_ward_seed(h: vec3<f32>, n_dot_l: f32, n_dot_v_2: f32, alpha: vec2<f32>) -> f32 {
+fn silk_ward_bounded(v_2: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>) -> f32 {
+    var local: bool;
+
     let ax = max(alpha.x, SILK_MIN_ALPHA);
     let ay = max(alpha.y, SILK_MIN_ALPHA);
-    let x_3 = (h.x / ax);
-    let y = (h.y / ay);
-    let exponent = (-(((x_3 * x_3) + (y * y))) / max((h.z * h.z), 0.00000001f));
-    let nlnv = max((saturate(n_dot_l) * saturate(n_dot_v_2)), 0.00000001f);
-    return (exp(exponent) / (((12.566371f * ax) * ay) * sqrt(nlnv)));
+    let hv = (v_2 + l);
+    let hn = max(hv.z, 0.0001f);
+    let hn2_ = (hn * hn);
+    let x_2 = (hv.x / ax);
+    let y = (hv.y / ay);
+    let f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
+    if (v_2.z > 0f) {
+        local = (l.z > 0f);
+    } else {
+        local = false;
+    }
+    let _e41 = local;
+    return select(0f, f, _e41);
 }
 
-fn silk_ibl_roughness(alpha_1: vec2<f32>) -> f32 {
-    return saturate(sqrt(sqrt(max((alpha_1.x * alpha_1.y), 0f))));
+fn silk_lobe_anisotropy(alpha_1: vec2<f32>) -> f32 {
+    let at = max(alpha_1.x, SILK_MIN_ALPHA);
+    let ab = max(alpha_1.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+fn silk_ibl_roughness(alpha_2: vec2<f32>) -> f32 {
+    return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0f))));
 }
 
 @vertex 
@@ -291,7 +310,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let roughness_4 = (1f - smoothness_1);
     let _e25 = material.metallic;
     let metallic = saturate(_e25);
-    let f0_3 = mix(vec3(0.04f), base, metallic);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
@@ -307,9 +326,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         let _e61 = textureSample(flow_map, material_sampler, _e5);
         let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
+        let dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
         let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_1, saturate(_e78)), _e42[0]);
+        let _e82 = weft_safe_normalize(mix(_e42[0], dir_2, saturate(_e78)), _e42[0]);
         fibre = _e82;
     }
     let _e83 = fibre;
@@ -319,24 +338,24 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e94 = weft_main_light_direction();
     let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
     let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e94));
+    let n_dot_l = saturate(dot(_e56, _e94));
     let n_dot_h = saturate(dot(_e56, _e96));
     let v_dot_h_1 = saturate(dot(_e38, _e96));
     let _e105 = weft_aniso_to_frame(_e87, _e38);
     let _e106 = weft_aniso_to_frame(_e87, _e94);
     let _e107 = weft_aniso_to_frame(_e87, _e96);
-    let k = material.anisotropy;
+    let k_1 = material.anisotropy;
     {
-        let _e112 = silk_ward_alpha_seed(smoothness_1, k);
+        let _e112 = silk_ward_alpha_seed(smoothness_1, k_1);
         lobe.alpha = _e112;
         let _e115 = silk_ibl_roughness(_e112);
         lobe.ibl_roughness = _e115;
         {
-            let _e117 = silk_ward_seed(_e107, n_dot_l_1, _e98, _e112);
-            lobe.value = (_e117 * n_dot_l_1);
+            let _e117 = silk_ward_bounded(_e105, _e106, _e112);
+            lobe.value = (_e117 * n_dot_l);
         }
     }
-    let _e119 = weft_f_schlick(f0_3, v_dot_h_1);
+    let _e119 = weft_f_schlick(f0_2, v_dot_h_1);
     let _e120 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
     let _e126 = weft_diffuse_lambert(diffuse_albedo);
@@ -346,19 +365,24 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     reflect_n = _e56;
     {
         let _e138 = lobe.ibl_roughness;
-        let _e139 = weft_env_brdf_approx(f0_3, _e98, _e138);
-        env_brdf = _e139;
-        let _e143 = lobe.ibl_roughness;
-        let _e144 = weft_f_schlick_roughness(f0_3, _e98, _e143);
-        ambient_kd = (vec3(1f) - _e144);
+        let _e139 = weft_env_brdf_lut(_e98, _e138);
+        let _e140 = weft_env_brdf_from_lut(f0_2, _e139);
+        env_brdf = _e140;
+        let _e143 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e143), vec3(0f));
+        let _e149 = lobe.alpha;
+        let _e150 = silk_lobe_anisotropy(_e149);
+        let _e152 = lobe.ibl_roughness;
+        let _e153 = weft_aniso_bent_normal(_e87, _e38, _e150, _e152);
+        reflect_n = _e153;
     }
-    let _e147 = reflect_n;
-    let _e150 = lobe.ibl_roughness;
-    let _e151 = weft_prefiltered_radiance(reflect(-(_e38), _e147), _e150);
-    let _e152 = env_brdf;
-    let _e154 = weft_sh_irradiance(n_diff);
-    let _e155 = ambient_kd;
-    let indirect = ((_e151 * _e152) + ((_e154 * _e155) * diffuse_albedo));
+    let _e155 = reflect_n;
+    let _e158 = lobe.ibl_roughness;
+    let _e159 = weft_prefiltered_radiance(reflect(-(_e38), _e155), _e158);
+    let _e160 = env_brdf;
+    let _e162 = weft_sh_irradiance(n_diff);
+    let _e163 = ambient_kd;
+    let indirect = ((_e159 * _e160) + ((_e162 * _e163) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -97,12 +97,17 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
-float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2) {
+float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = (_e3 * _e3);
-    float _e5 = weft_clamp_cos(n_dot_v);
-    float _e6 = weft_clamp_cos(n_dot_l);
-    return (0.5 / mix(((2.0 * _e6) * _e5), (_e6 + _e5), a_1));
+    float a2_1 = (a_1 * a_1);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = ((_e6 * (1.0 - a_1)) + a_1);
+    float gl = ((_e7 * (1.0 - a_1)) + a_1);
+    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
+    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
+    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {

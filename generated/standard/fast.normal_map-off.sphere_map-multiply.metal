@@ -111,16 +111,21 @@ metal::float3 weft_f_schlick(
     return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
-float weft_v_smith_ggx_correlated_fast(
+float weft_v_smith_ggx_correlated_newton(
     float n_dot_v,
     float n_dot_l,
     float roughness_2
 ) {
     float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = _e3 * _e3;
-    float _e5 = weft_clamp_cos(n_dot_v);
-    float _e6 = weft_clamp_cos(n_dot_l);
-    return 0.5 / metal::mix((2.0 * _e6) * _e5, _e6 + _e5, a_1);
+    float a2_1 = a_1 * a_1;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = (_e6 * (1.0 - a_1)) + a_1;
+    float gl = (_e7 * (1.0 - a_1)) + a_1;
+    float fv2_ = ((_e6 * _e6) * (1.0 - a2_1)) + a2_1;
+    float fl2_ = ((_e7 * _e7) * (1.0 - a2_1)) + a2_1;
+    return (gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_)));
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -372,7 +377,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
         {
-            float _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            float _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
             visibility = _e79;
             metal::float2 _e80 = weft_env_brdf_lut(_e60, roughness_6, weft_brdf_lut, weft_lut_sampler);
             metal::float3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);

@@ -109,12 +109,17 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
-fn weft_v_smith_ggx_correlated_fast(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_2);
     let a_1 = (_e3 * _e3);
-    let _e5 = weft_clamp_cos(n_dot_v);
-    let _e6 = weft_clamp_cos(n_dot_l);
-    return (0.5f / mix(((2f * _e6) * _e5), (_e6 + _e5), a_1));
+    let a2_1 = (a_1 * a_1);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let gv = ((_e6 * (1f - a_1)) + a_1);
+    let gl = ((_e7 * (1f - a_1)) + a_1);
+    let fv2_ = (((_e6 * _e6) * (1f - a2_1)) + a2_1);
+    let fl2_ = (((_e7 * _e7) * (1f - a2_1)) + a2_1);
+    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
@@ -266,7 +271,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e79 = weft_v_smith_ggx_correlated_fast(_e60, n_dot_l_1, roughness_6);
+            let _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
             visibility = _e79;
             let _e80 = weft_env_brdf_lut(_e60, roughness_6);
             let _e81 = weft_env_brdf_from_lut(f0_2, _e80);

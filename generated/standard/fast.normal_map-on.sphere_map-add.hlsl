@@ -138,13 +138,18 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
-float weft_v_smith_ggx_correlated_fast(float n_dot_v, float n_dot_l, float roughness_2)
+float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float roughness_2)
 {
     const float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
-    const float _e5 = weft_clamp_cos(n_dot_v);
-    const float _e6 = weft_clamp_cos(n_dot_l);
-    return (0.5 / lerp(((2.0 * _e6) * _e5), (_e6 + _e5), a_2));
+    float a2_1 = (a_2 * a_2);
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = ((_e6 * (1.0 - a_2)) + a_2);
+    float gl = ((_e7 * (1.0 - a_2)) + a_2);
+    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
+    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
+    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -363,7 +368,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
         {
-            const float _e91 = weft_v_smith_ggx_correlated_fast(_e72, n_dot_l_1, roughness_6);
+            const float _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
             visibility = _e91;
             const float2 _e92 = weft_env_brdf_lut(_e72, roughness_6);
             const float3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);

@@ -213,6 +213,31 @@ fn weft_v_smith_ggx_correlated_fast(n_dot_v: f32, n_dot_l: f32, roughness: f32) 
     return 0.5 / mix(2.0 * nl * nv, nl + nv, a);
 }
 
+// The height-correlated Smith visibility without square roots, to within 6 %
+// (Hammon's form above is up to 29 % low where a cosine is near alpha, i.e.
+// at grazing light or view). Each root f(x) = sqrt(x^2 (1 - a^2) + a^2) gets
+// one Newton step from Hammon's chord g(x) = x (1 - a) + a, which lies above
+// the convex f: f ~ (g + f^2 / g) / 2, whose relative error
+// (g - f)^2 / (2 g f) is <= 0.061 (worst at x = a, a -> 0) and 0 at x = 0, 1
+// and at a = 1. Putting the two Newton quotients over one denominator keeps a
+// single division, as Hammon's:
+//   V = g_v g_l / (n.l g_l (g_v^2 + f_v^2) + n.v g_v (g_l^2 + f_l^2)).
+// Never above the exact V (the Newton value is >= f), >= 0.94 of it (measured
+// on a 2001^2 grid of cosines for r = 0.045 ... 1). Cosines floored at 1e-4 as
+// above: g >= a >= 2e-3 and the denominator >= 1e-4 * 2 a^3 > 1.6e-12.
+fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness: f32) -> f32 {
+    let r = weft_clamp_roughness(roughness);
+    let a = r * r;
+    let a2 = a * a;
+    let nv = weft_clamp_cos(n_dot_v);
+    let nl = weft_clamp_cos(n_dot_l);
+    let gv = nv * (1.0 - a) + a;
+    let gl = nl * (1.0 - a) + a;
+    let fv2 = nv * nv * (1.0 - a2) + a2;
+    let fl2 = nl * nl * (1.0 - a2) + a2;
+    return gv * gl / (nl * gl * (gv * gv + fv2) + nv * gv * (gl * gl + fl2));
+}
+
 // ---------------------------------------------------------------- diffuse
 
 // Lambert: f = albedo / pi (MATERIALS.md: the seed's missing 1/pi is not used).
