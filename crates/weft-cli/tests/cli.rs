@@ -125,7 +125,7 @@ fn inspect_and_variants_print_tables() {
     }
     let o = weft(&["variants", "materials/standard/standard.toml"]);
     let text = stdout(&o);
-    assert!(text.contains("standard: 18 variants"), "{text}");
+    assert!(text.contains("standard: 24 variants"), "{text}");
     assert!(
         text.contains("reference.normal_map-on.sphere_map-multiply"),
         "{text}"
