@@ -196,7 +196,7 @@ pub fn variants(m: &MaterialMetadata) -> String {
                     .iter()
                     .filter(|b| b.group == 1 && b.parameter.is_some())
                     .count();
-                let files: usize = s.files.values().map(|f| f.len()).sum();
+                let files: usize = s.all_files().count();
                 let ubo = s
                     .material_uniform
                     .as_ref()

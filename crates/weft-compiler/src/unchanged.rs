@@ -105,7 +105,7 @@ impl Previous {
         let mut files: Vec<(String, Option<String>)> = meta
             .variants
             .iter()
-            .flat_map(|v| v.shader.iter().flat_map(|s| s.files.values().flatten()))
+            .flat_map(|v| v.shader.iter().flat_map(|s| s.all_files()))
             .map(|f| (f.path.clone(), Some(f.sha256.clone())))
             .collect();
         files.push((format!("{name}.meta.json"), None));

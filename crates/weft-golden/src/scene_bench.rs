@@ -665,7 +665,7 @@ fn generic_file_stats(
         if !variants.insert((inst.material.clone(), v.id.clone())) {
             continue;
         }
-        for f in shader.files.values().flatten() {
+        for f in shader.all_files() {
             stats.shader_files += 1;
             stats.shader_bytes += file_len(&generated.join(&inst.material).join(&f.path))?;
         }

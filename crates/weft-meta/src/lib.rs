@@ -774,6 +774,16 @@ pub struct VariantShader {
     pub reads: Vec<String>,
 }
 
+impl VariantShader {
+    /// Every file the variant lists: `files`, then `f16_files`.
+    pub fn all_files(&self) -> impl Iterator<Item = &ShaderFile> {
+        self.files
+            .values()
+            .flatten()
+            .chain(self.f16_files.values().flatten())
+    }
+}
+
 /// One emitted shader file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
