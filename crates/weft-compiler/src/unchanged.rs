@@ -49,6 +49,19 @@ struct VariantFiles {
 #[derive(Deserialize)]
 struct ShaderFiles {
     files: BTreeMap<String, Vec<FileEntry>>,
+    /// Half-precision files beside the portable ones (absent when none).
+    #[serde(default)]
+    f16_files: BTreeMap<String, Vec<FileEntry>>,
+}
+
+impl ShaderFiles {
+    /// Every file the variant lists, as `VariantShader::all_files` does.
+    fn all_files(&self) -> impl Iterator<Item = &FileEntry> {
+        self.files
+            .values()
+            .flatten()
+            .chain(self.f16_files.values().flatten())
+    }
 }
 
 #[derive(Deserialize)]
