@@ -101,9 +101,9 @@ fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f
     let _e7 = weft_clamp_cos(n_dot_l);
     let gv = ((_e6 * (1f - a_1)) + a_1);
     let gl = ((_e7 * (1f - a_1)) + a_1);
-    let fv2_ = (((_e6 * _e6) * (1f - a2_1)) + a2_1);
-    let fl2_ = (((_e7 * _e7) * (1f - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    let pv = ((gv * _e6) + (a2_1 * (1f - _e6)));
+    let pl = ((gl * _e7) + (a2_1 * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
