@@ -16,12 +16,14 @@
 //             ggx          normalised anisotropic GGX + height-correlated Smith
 //             + split-sum LUT along reflect(-v, bent normal).
 //   fast      (default, approximates reference) the reference's computation:
-//             every cheaper substitution measured was either no cheaper on
-//             the benchmark (fewer divisions / square roots in the lobes,
-//             skipping half of the hair mix) or further than FLIP 0.05 (no
-//             bent normal: 0.21; analytic environment-BRDF fits instead of
-//             the LUT). Figures in README.md. Its own tier so that a cheaper
-//             form can land here without touching the reference.
+//             the substitutions measured were no cheaper on the benchmark
+//             (fewer divisions / square roots in the lobes, skipping half of
+//             the hair mix), further than FLIP 0.05 (no bent normal: 0.21;
+//             GGX for Ward's Beckmann: 0.09; analytic environment-BRDF fits),
+//             or cheaper on llvmpipe only (a nearest-texel LUT read saves
+//             its software filtering, free on a GPU, and bands). Figures in
+//             README.md. Its own tier so that a cheaper form can land here
+//             without touching the reference.
 //   seed      a look (look = true), not an approximation: the seed's lobes,
 //             ward         the seed's AnisoD_Ward (Ward 1992, the seed's widths
 //                          5 (1 - s)^2 / aspect, 5 (1 - s)^2 aspect) x Schlick F
