@@ -177,10 +177,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel, 0);
+    return _e16.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -242,7 +244,7 @@ void main() {
         {
             float _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
             visibility = _e79;
-            vec2 _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            vec2 _e80 = weft_env_brdf_lut_nearest(_e60, roughness_6);
             vec3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
             env_brdf = _e81;
             vec3 _e84 = env_brdf;

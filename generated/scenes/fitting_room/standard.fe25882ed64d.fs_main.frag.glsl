@@ -164,10 +164,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
-    return _e8.xy;
+    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
+    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
+    return _e15.xy;
 }
 
 void main() {
@@ -203,7 +205,7 @@ void main() {
         {
             float _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55);
             visibility = _e44;
-            vec2 _e45 = weft_env_brdf_lut(_e27, 0.55);
+            vec2 _e45 = weft_env_brdf_lut_nearest(_e27, 0.55);
             vec3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             vec3 _e48 = env_brdf;

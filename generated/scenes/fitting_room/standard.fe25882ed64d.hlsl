@@ -52,7 +52,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 
@@ -197,11 +196,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
-    return _e8.xy;
+    int2 texel = naga_f2i32(min((uv * size), (size - (1.0).xx)));
+    float4 _e15 = weft_brdf_lut.Load(int3(texel, int(0)));
+    return _e15.xy;
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -264,7 +276,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55);
             visibility = _e44;
-            const float2 _e45 = weft_env_brdf_lut(_e27, 0.55);
+            const float2 _e45 = weft_env_brdf_lut_nearest(_e27, 0.55);
             const float3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             float3 _e48 = env_brdf;

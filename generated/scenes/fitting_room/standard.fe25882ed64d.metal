@@ -205,15 +205,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
+    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel), 0);
+    return _e15.xy;
 }
 
 struct vs_mainInput {
@@ -273,7 +278,6 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
@@ -308,7 +312,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55);
             visibility = _e44;
-            metal::float2 _e45 = weft_env_brdf_lut(_e27, 0.55, weft_brdf_lut, weft_lut_sampler);
+            metal::float2 _e45 = weft_env_brdf_lut_nearest(_e27, 0.55, weft_brdf_lut);
             metal::float3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             metal::float3 _e48 = env_brdf;
