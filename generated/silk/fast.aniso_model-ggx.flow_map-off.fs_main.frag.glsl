@@ -112,8 +112,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
+    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -171,10 +171,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    return _e16.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -267,6 +269,7 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
+    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -287,9 +290,9 @@ void main() {
     vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_1 = _e50.xyz;
+    vec3 texel_2 = _e50.xyz;
     float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_1, _e54);
+    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
     vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     vec3 _e59 = fibre;
@@ -329,25 +332,29 @@ void main() {
     vec3 direct = ((diffuse + (_e105 * _e116)) * _e106);
     reflect_n = _e56;
     {
-        float _e124 = lobe.ibl_roughness;
-        vec2 _e125 = weft_env_brdf_lut(_e74, _e124);
-        vec3 _e126 = weft_env_brdf_from_lut(f0_2, _e125);
-        env_brdf = _e126;
-        vec3 _e129 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e129), vec3(0.0));
-        vec2 _e135 = lobe.alpha;
-        float _e136 = silk_lobe_anisotropy(_e135);
-        float _e138 = lobe.ibl_roughness;
-        vec3 _e139 = weft_aniso_bent_normal(_e63, _e38, _e136, _e138);
-        reflect_n = _e139;
+        {
+            float _e125 = lobe.ibl_roughness;
+            vec2 _e126 = weft_env_brdf_lut_nearest(_e74, _e125);
+            scale_bias = _e126;
+        }
+        vec2 _e127 = scale_bias;
+        vec3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
+        env_brdf = _e128;
+        vec3 _e131 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e131), vec3(0.0));
+        vec2 _e137 = lobe.alpha;
+        float _e138 = silk_lobe_anisotropy(_e137);
+        float _e140 = lobe.ibl_roughness;
+        vec3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
+        reflect_n = _e141;
     }
-    vec3 _e141 = reflect_n;
-    float _e144 = lobe.ibl_roughness;
-    vec3 _e145 = weft_prefiltered_radiance(reflect(-(_e38), _e141), _e144);
-    vec3 _e146 = env_brdf;
-    vec3 _e148 = weft_sh_irradiance(n_diff);
-    vec3 _e149 = ambient_kd;
-    vec3 indirect = ((_e145 * _e146) + ((_e148 * _e149) * diffuse_albedo));
+    vec3 _e143 = reflect_n;
+    float _e146 = lobe.ibl_roughness;
+    vec3 _e147 = weft_prefiltered_radiance(reflect(-(_e38), _e143), _e146);
+    vec3 _e148 = env_brdf;
+    vec3 _e150 = weft_sh_irradiance(n_diff);
+    vec3 _e151 = ambient_kd;
+    vec3 indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -125,9 +125,9 @@ metal::float3 weft_diffuse_lambert(
 
 metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    metal::float2 scale_bias
+    metal::float2 scale_bias_1
 ) {
-    metal::float2 sb = metal::saturate(scale_bias);
+    metal::float2 sb = metal::saturate(scale_bias_1);
     return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
@@ -205,15 +205,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v,
     float roughness_3,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e16.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -397,9 +402,8 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_sampler [[sampler(1)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
@@ -410,6 +414,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
+    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -430,9 +435,9 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e46 = material.aniso_normal_map_st;
     metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
+    metal::float3 texel_2 = _e50.xyz;
     float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
     metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     metal::float3 _e59 = fibre;
@@ -472,25 +477,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct = (diffuse + (_e105 * _e116)) * _e106;
     reflect_n = _e56;
     {
-        float _e124 = lobe.ibl_roughness;
-        metal::float2 _e125 = weft_env_brdf_lut(_e74, _e124, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e126 = weft_env_brdf_from_lut(f0_2, _e125);
-        env_brdf = _e126;
-        metal::float3 _e129 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e129, metal::float3(0.0));
-        metal::float2 _e135 = lobe.alpha;
-        float _e136 = silk_lobe_anisotropy(_e135);
-        float _e138 = lobe.ibl_roughness;
-        metal::float3 _e139 = weft_aniso_bent_normal(_e63, _e38, _e136, _e138);
-        reflect_n = _e139;
+        {
+            float _e125 = lobe.ibl_roughness;
+            metal::float2 _e126 = weft_env_brdf_lut_nearest(_e74, _e125, weft_brdf_lut);
+            scale_bias = _e126;
+        }
+        metal::float2 _e127 = scale_bias;
+        metal::float3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
+        env_brdf = _e128;
+        metal::float3 _e131 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e131, metal::float3(0.0));
+        metal::float2 _e137 = lobe.alpha;
+        float _e138 = silk_lobe_anisotropy(_e137);
+        float _e140 = lobe.ibl_roughness;
+        metal::float3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
+        reflect_n = _e141;
     }
-    metal::float3 _e141 = reflect_n;
-    float _e144 = lobe.ibl_roughness;
-    metal::float3 _e145 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e141), _e144, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e146 = env_brdf;
-    metal::float3 _e148 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e149 = ambient_kd;
-    metal::float3 indirect = (_e145 * _e146) + ((_e148 * _e149) * diffuse_albedo);
+    metal::float3 _e143 = reflect_n;
+    float _e146 = lobe.ibl_roughness;
+    metal::float3 _e147 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e143), _e146, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e148 = env_brdf;
+    metal::float3 _e150 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e151 = ambient_kd;
+    metal::float3 indirect = (_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -73,8 +73,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -120,8 +118,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -180,10 +178,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -299,6 +300,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
+    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -320,9 +322,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = material.aniso_normal_map_st;
     let _e47 = weft_transform_uv(in_1.uv0_, _e46);
     let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
+    let texel_2 = _e50.xyz;
     let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
+    let _e55 = weft_unpack_normal(texel_2, _e54);
     let _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     let _e59 = fibre;
@@ -362,25 +364,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e105 * _e116)) * _e106);
     reflect_n = _e56;
     {
-        let _e124 = lobe.ibl_roughness;
-        let _e125 = weft_env_brdf_lut(_e74, _e124);
-        let _e126 = weft_env_brdf_from_lut(f0_2, _e125);
-        env_brdf = _e126;
-        let _e129 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e129), vec3(0f));
-        let _e135 = lobe.alpha;
-        let _e136 = silk_lobe_anisotropy(_e135);
-        let _e138 = lobe.ibl_roughness;
-        let _e139 = weft_aniso_bent_normal(_e63, _e38, _e136, _e138);
-        reflect_n = _e139;
+        {
+            let _e125 = lobe.ibl_roughness;
+            let _e126 = weft_env_brdf_lut_nearest(_e74, _e125);
+            scale_bias = _e126;
+        }
+        let _e127 = scale_bias;
+        let _e128 = weft_env_brdf_from_lut(f0_2, _e127);
+        env_brdf = _e128;
+        let _e131 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e131), vec3(0f));
+        let _e137 = lobe.alpha;
+        let _e138 = silk_lobe_anisotropy(_e137);
+        let _e140 = lobe.ibl_roughness;
+        let _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
+        reflect_n = _e141;
     }
-    let _e141 = reflect_n;
-    let _e144 = lobe.ibl_roughness;
-    let _e145 = weft_prefiltered_radiance(reflect(-(_e38), _e141), _e144);
-    let _e146 = env_brdf;
-    let _e148 = weft_sh_irradiance(n_diff);
-    let _e149 = ambient_kd;
-    let indirect = ((_e145 * _e146) + ((_e148 * _e149) * diffuse_albedo));
+    let _e143 = reflect_n;
+    let _e146 = lobe.ibl_roughness;
+    let _e147 = weft_prefiltered_radiance(reflect(-(_e38), _e143), _e146);
+    let _e148 = env_brdf;
+    let _e150 = weft_sh_irradiance(n_diff);
+    let _e151 = ambient_kd;
+    let indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

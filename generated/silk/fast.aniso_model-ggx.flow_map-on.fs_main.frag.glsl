@@ -114,8 +114,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
+    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -173,10 +173,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    return _e16.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -269,6 +271,7 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
+    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -289,9 +292,9 @@ void main() {
     vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_1 = _e50.xyz;
+    vec3 texel_2 = _e50.xyz;
     float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_1, _e54);
+    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
     vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -339,25 +342,29 @@ void main() {
     vec3 direct = ((diffuse + (_e129 * _e140)) * _e130);
     reflect_n = _e56;
     {
-        float _e148 = lobe.ibl_roughness;
-        vec2 _e149 = weft_env_brdf_lut(_e98, _e148);
-        vec3 _e150 = weft_env_brdf_from_lut(f0_2, _e149);
-        env_brdf = _e150;
-        vec3 _e153 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e153), vec3(0.0));
-        vec2 _e159 = lobe.alpha;
-        float _e160 = silk_lobe_anisotropy(_e159);
-        float _e162 = lobe.ibl_roughness;
-        vec3 _e163 = weft_aniso_bent_normal(_e87, _e38, _e160, _e162);
-        reflect_n = _e163;
+        {
+            float _e149 = lobe.ibl_roughness;
+            vec2 _e150 = weft_env_brdf_lut_nearest(_e98, _e149);
+            scale_bias = _e150;
+        }
+        vec2 _e151 = scale_bias;
+        vec3 _e152 = weft_env_brdf_from_lut(f0_2, _e151);
+        env_brdf = _e152;
+        vec3 _e155 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e155), vec3(0.0));
+        vec2 _e161 = lobe.alpha;
+        float _e162 = silk_lobe_anisotropy(_e161);
+        float _e164 = lobe.ibl_roughness;
+        vec3 _e165 = weft_aniso_bent_normal(_e87, _e38, _e162, _e164);
+        reflect_n = _e165;
     }
-    vec3 _e165 = reflect_n;
-    float _e168 = lobe.ibl_roughness;
-    vec3 _e169 = weft_prefiltered_radiance(reflect(-(_e38), _e165), _e168);
-    vec3 _e170 = env_brdf;
-    vec3 _e172 = weft_sh_irradiance(n_diff);
-    vec3 _e173 = ambient_kd;
-    vec3 indirect = ((_e169 * _e170) + ((_e172 * _e173) * diffuse_albedo));
+    vec3 _e167 = reflect_n;
+    float _e170 = lobe.ibl_roughness;
+    vec3 _e171 = weft_prefiltered_radiance(reflect(-(_e38), _e167), _e170);
+    vec3 _e172 = env_brdf;
+    vec3 _e174 = weft_sh_irradiance(n_diff);
+    vec3 _e175 = ambient_kd;
+    vec3 indirect = ((_e171 * _e172) + ((_e174 * _e175) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

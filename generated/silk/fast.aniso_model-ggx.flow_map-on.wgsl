@@ -73,8 +73,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -122,8 +120,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -182,10 +180,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -301,6 +302,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
+    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -322,9 +324,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = material.aniso_normal_map_st;
     let _e47 = weft_transform_uv(in_1.uv0_, _e46);
     let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
+    let texel_2 = _e50.xyz;
     let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
+    let _e55 = weft_unpack_normal(texel_2, _e54);
     let _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -372,25 +374,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e129 * _e140)) * _e130);
     reflect_n = _e56;
     {
-        let _e148 = lobe.ibl_roughness;
-        let _e149 = weft_env_brdf_lut(_e98, _e148);
-        let _e150 = weft_env_brdf_from_lut(f0_2, _e149);
-        env_brdf = _e150;
-        let _e153 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e153), vec3(0f));
-        let _e159 = lobe.alpha;
-        let _e160 = silk_lobe_anisotropy(_e159);
-        let _e162 = lobe.ibl_roughness;
-        let _e163 = weft_aniso_bent_normal(_e87, _e38, _e160, _e162);
-        reflect_n = _e163;
+        {
+            let _e149 = lobe.ibl_roughness;
+            let _e150 = weft_env_brdf_lut_nearest(_e98, _e149);
+            scale_bias = _e150;
+        }
+        let _e151 = scale_bias;
+        let _e152 = weft_env_brdf_from_lut(f0_2, _e151);
+        env_brdf = _e152;
+        let _e155 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e155), vec3(0f));
+        let _e161 = lobe.alpha;
+        let _e162 = silk_lobe_anisotropy(_e161);
+        let _e164 = lobe.ibl_roughness;
+        let _e165 = weft_aniso_bent_normal(_e87, _e38, _e162, _e164);
+        reflect_n = _e165;
     }
-    let _e165 = reflect_n;
-    let _e168 = lobe.ibl_roughness;
-    let _e169 = weft_prefiltered_radiance(reflect(-(_e38), _e165), _e168);
-    let _e170 = env_brdf;
-    let _e172 = weft_sh_irradiance(n_diff);
-    let _e173 = ambient_kd;
-    let indirect = ((_e169 * _e170) + ((_e172 * _e173) * diffuse_albedo));
+    let _e167 = reflect_n;
+    let _e170 = lobe.ibl_roughness;
+    let _e171 = weft_prefiltered_radiance(reflect(-(_e38), _e167), _e170);
+    let _e172 = env_brdf;
+    let _e174 = weft_sh_irradiance(n_diff);
+    let _e175 = ambient_kd;
+    let indirect = ((_e171 * _e172) + ((_e174 * _e175) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -73,8 +73,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -141,8 +139,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -201,10 +199,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -327,6 +328,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
+    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -348,9 +350,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = material.aniso_normal_map_st;
     let _e47 = weft_transform_uv(in_1.uv0_, _e46);
     let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
+    let texel_2 = _e50.xyz;
     let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
+    let _e55 = weft_unpack_normal(texel_2, _e54);
     let _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     let _e59 = fibre;
@@ -407,25 +409,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e143 * _e154)) * _e144);
     reflect_n = _e56;
     {
-        let _e162 = lobe.ibl_roughness;
-        let _e163 = weft_env_brdf_lut(_e74, _e162);
-        let _e164 = weft_env_brdf_from_lut(f0_2, _e163);
-        env_brdf = _e164;
-        let _e167 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e167), vec3(0f));
-        let _e173 = lobe.alpha;
-        let _e174 = silk_lobe_anisotropy(_e173);
-        let _e176 = lobe.ibl_roughness;
-        let _e177 = weft_aniso_bent_normal(_e63, _e38, _e174, _e176);
-        reflect_n = _e177;
+        {
+            let _e163 = lobe.ibl_roughness;
+            let _e164 = weft_env_brdf_lut_nearest(_e74, _e163);
+            scale_bias = _e164;
+        }
+        let _e165 = scale_bias;
+        let _e166 = weft_env_brdf_from_lut(f0_2, _e165);
+        env_brdf = _e166;
+        let _e169 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e169), vec3(0f));
+        let _e175 = lobe.alpha;
+        let _e176 = silk_lobe_anisotropy(_e175);
+        let _e178 = lobe.ibl_roughness;
+        let _e179 = weft_aniso_bent_normal(_e63, _e38, _e176, _e178);
+        reflect_n = _e179;
     }
-    let _e179 = reflect_n;
-    let _e182 = lobe.ibl_roughness;
-    let _e183 = weft_prefiltered_radiance(reflect(-(_e38), _e179), _e182);
-    let _e184 = env_brdf;
-    let _e186 = weft_sh_irradiance(n_diff);
-    let _e187 = ambient_kd;
-    let indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
+    let _e181 = reflect_n;
+    let _e184 = lobe.ibl_roughness;
+    let _e185 = weft_prefiltered_radiance(reflect(-(_e38), _e181), _e184);
+    let _e186 = env_brdf;
+    let _e188 = weft_sh_irradiance(n_diff);
+    let _e189 = ambient_kd;
+    let indirect = ((_e185 * _e186) + ((_e188 * _e189) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

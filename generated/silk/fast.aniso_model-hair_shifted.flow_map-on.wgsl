@@ -73,8 +73,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -143,8 +141,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -203,10 +201,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -329,6 +330,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
+    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -350,9 +352,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = material.aniso_normal_map_st;
     let _e47 = weft_transform_uv(in_1.uv0_, _e46);
     let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
+    let texel_2 = _e50.xyz;
     let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
+    let _e55 = weft_unpack_normal(texel_2, _e54);
     let _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -417,25 +419,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e167 * _e178)) * _e168);
     reflect_n = _e56;
     {
-        let _e186 = lobe.ibl_roughness;
-        let _e187 = weft_env_brdf_lut(_e98, _e186);
-        let _e188 = weft_env_brdf_from_lut(f0_2, _e187);
-        env_brdf = _e188;
-        let _e191 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e191), vec3(0f));
-        let _e197 = lobe.alpha;
-        let _e198 = silk_lobe_anisotropy(_e197);
-        let _e200 = lobe.ibl_roughness;
-        let _e201 = weft_aniso_bent_normal(_e87, _e38, _e198, _e200);
-        reflect_n = _e201;
+        {
+            let _e187 = lobe.ibl_roughness;
+            let _e188 = weft_env_brdf_lut_nearest(_e98, _e187);
+            scale_bias = _e188;
+        }
+        let _e189 = scale_bias;
+        let _e190 = weft_env_brdf_from_lut(f0_2, _e189);
+        env_brdf = _e190;
+        let _e193 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e193), vec3(0f));
+        let _e199 = lobe.alpha;
+        let _e200 = silk_lobe_anisotropy(_e199);
+        let _e202 = lobe.ibl_roughness;
+        let _e203 = weft_aniso_bent_normal(_e87, _e38, _e200, _e202);
+        reflect_n = _e203;
     }
-    let _e203 = reflect_n;
-    let _e206 = lobe.ibl_roughness;
-    let _e207 = weft_prefiltered_radiance(reflect(-(_e38), _e203), _e206);
-    let _e208 = env_brdf;
-    let _e210 = weft_sh_irradiance(n_diff);
-    let _e211 = ambient_kd;
-    let indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
+    let _e205 = reflect_n;
+    let _e208 = lobe.ibl_roughness;
+    let _e209 = weft_prefiltered_radiance(reflect(-(_e38), _e205), _e208);
+    let _e210 = env_brdf;
+    let _e212 = weft_sh_irradiance(n_diff);
+    let _e213 = ambient_kd;
+    let indirect = ((_e209 * _e210) + ((_e212 * _e213) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -76,7 +76,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -136,9 +135,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
 {
-    float2 sb = saturate(scale_bias);
+    float2 sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -203,11 +202,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_2));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
-    return _e8.xy;
+    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    return _e16.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -337,6 +349,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
+    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -358,9 +371,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e46 = material.aniso_normal_map_st;
     const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_1 = _e50.xyz;
+    float3 texel_2 = _e50.xyz;
     float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
     const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     float3 _e59 = fibre;
@@ -396,25 +409,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e95 * _e106)) * _e96);
     reflect_n = _e56;
     {
-        float _e114 = lobe.ibl_roughness;
-        const float2 _e115 = weft_env_brdf_lut(_e74, _e114);
-        const float3 _e116 = weft_env_brdf_from_lut(f0_2, _e115);
-        env_brdf = _e116;
-        float3 _e119 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e119), (0.0).xxx);
-        float2 _e125 = lobe.alpha;
-        const float _e126 = silk_lobe_anisotropy(_e125);
-        float _e128 = lobe.ibl_roughness;
-        const float3 _e129 = weft_aniso_bent_normal(_e63, _e38, _e126, _e128);
-        reflect_n = _e129;
+        {
+            float _e115 = lobe.ibl_roughness;
+            const float2 _e116 = weft_env_brdf_lut_nearest(_e74, _e115);
+            scale_bias = _e116;
+        }
+        float2 _e117 = scale_bias;
+        const float3 _e118 = weft_env_brdf_from_lut(f0_2, _e117);
+        env_brdf = _e118;
+        float3 _e121 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e121), (0.0).xxx);
+        float2 _e127 = lobe.alpha;
+        const float _e128 = silk_lobe_anisotropy(_e127);
+        float _e130 = lobe.ibl_roughness;
+        const float3 _e131 = weft_aniso_bent_normal(_e63, _e38, _e128, _e130);
+        reflect_n = _e131;
     }
-    float3 _e131 = reflect_n;
-    float _e134 = lobe.ibl_roughness;
-    const float3 _e135 = weft_prefiltered_radiance(reflect(-(_e38), _e131), _e134);
-    float3 _e136 = env_brdf;
-    const float3 _e138 = weft_sh_irradiance(n_diff);
-    float3 _e139 = ambient_kd;
-    float3 indirect = ((_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo));
+    float3 _e133 = reflect_n;
+    float _e136 = lobe.ibl_roughness;
+    const float3 _e137 = weft_prefiltered_radiance(reflect(-(_e38), _e133), _e136);
+    float3 _e138 = env_brdf;
+    const float3 _e140 = weft_sh_irradiance(n_diff);
+    float3 _e141 = ambient_kd;
+    float3 indirect = ((_e137 * _e138) + ((_e140 * _e141) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -119,9 +119,9 @@ metal::float3 weft_diffuse_lambert(
 
 metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    metal::float2 scale_bias
+    metal::float2 scale_bias_1
 ) {
-    metal::float2 sb = metal::saturate(scale_bias);
+    metal::float2 sb = metal::saturate(scale_bias_1);
     return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
@@ -199,15 +199,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e16.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -381,9 +386,8 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_sampler [[sampler(1)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
@@ -394,6 +398,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
+    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -414,9 +419,9 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e46 = material.aniso_normal_map_st;
     metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
+    metal::float3 texel_2 = _e50.xyz;
     float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
     metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     metal::float3 _e59 = fibre;
@@ -452,25 +457,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct = (diffuse + (_e95 * _e106)) * _e96;
     reflect_n = _e56;
     {
-        float _e114 = lobe.ibl_roughness;
-        metal::float2 _e115 = weft_env_brdf_lut(_e74, _e114, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e116 = weft_env_brdf_from_lut(f0_2, _e115);
-        env_brdf = _e116;
-        metal::float3 _e119 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e119, metal::float3(0.0));
-        metal::float2 _e125 = lobe.alpha;
-        float _e126 = silk_lobe_anisotropy(_e125);
-        float _e128 = lobe.ibl_roughness;
-        metal::float3 _e129 = weft_aniso_bent_normal(_e63, _e38, _e126, _e128);
-        reflect_n = _e129;
+        {
+            float _e115 = lobe.ibl_roughness;
+            metal::float2 _e116 = weft_env_brdf_lut_nearest(_e74, _e115, weft_brdf_lut);
+            scale_bias = _e116;
+        }
+        metal::float2 _e117 = scale_bias;
+        metal::float3 _e118 = weft_env_brdf_from_lut(f0_2, _e117);
+        env_brdf = _e118;
+        metal::float3 _e121 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e121, metal::float3(0.0));
+        metal::float2 _e127 = lobe.alpha;
+        float _e128 = silk_lobe_anisotropy(_e127);
+        float _e130 = lobe.ibl_roughness;
+        metal::float3 _e131 = weft_aniso_bent_normal(_e63, _e38, _e128, _e130);
+        reflect_n = _e131;
     }
-    metal::float3 _e131 = reflect_n;
-    float _e134 = lobe.ibl_roughness;
-    metal::float3 _e135 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e131), _e134, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e136 = env_brdf;
-    metal::float3 _e138 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e139 = ambient_kd;
-    metal::float3 indirect = (_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo);
+    metal::float3 _e133 = reflect_n;
+    float _e136 = lobe.ibl_roughness;
+    metal::float3 _e137 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e133), _e136, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e138 = env_brdf;
+    metal::float3 _e140 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e141 = ambient_kd;
+    metal::float3 indirect = (_e137 * _e138) + ((_e140 * _e141) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -110,8 +110,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
+    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -169,10 +169,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    return _e16.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -264,6 +266,7 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
+    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -284,9 +287,9 @@ void main() {
     vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_1 = _e50.xyz;
+    vec3 texel_2 = _e50.xyz;
     float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_1, _e54);
+    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
     vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -330,25 +333,29 @@ void main() {
     vec3 direct = ((diffuse + (_e119 * _e130)) * _e120);
     reflect_n = _e56;
     {
-        float _e138 = lobe.ibl_roughness;
-        vec2 _e139 = weft_env_brdf_lut(_e98, _e138);
-        vec3 _e140 = weft_env_brdf_from_lut(f0_2, _e139);
-        env_brdf = _e140;
-        vec3 _e143 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e143), vec3(0.0));
-        vec2 _e149 = lobe.alpha;
-        float _e150 = silk_lobe_anisotropy(_e149);
-        float _e152 = lobe.ibl_roughness;
-        vec3 _e153 = weft_aniso_bent_normal(_e87, _e38, _e150, _e152);
-        reflect_n = _e153;
+        {
+            float _e139 = lobe.ibl_roughness;
+            vec2 _e140 = weft_env_brdf_lut_nearest(_e98, _e139);
+            scale_bias = _e140;
+        }
+        vec2 _e141 = scale_bias;
+        vec3 _e142 = weft_env_brdf_from_lut(f0_2, _e141);
+        env_brdf = _e142;
+        vec3 _e145 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e145), vec3(0.0));
+        vec2 _e151 = lobe.alpha;
+        float _e152 = silk_lobe_anisotropy(_e151);
+        float _e154 = lobe.ibl_roughness;
+        vec3 _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
+        reflect_n = _e155;
     }
-    vec3 _e155 = reflect_n;
-    float _e158 = lobe.ibl_roughness;
-    vec3 _e159 = weft_prefiltered_radiance(reflect(-(_e38), _e155), _e158);
-    vec3 _e160 = env_brdf;
-    vec3 _e162 = weft_sh_irradiance(n_diff);
-    vec3 _e163 = ambient_kd;
-    vec3 indirect = ((_e159 * _e160) + ((_e162 * _e163) * diffuse_albedo));
+    vec3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    vec3 _e161 = weft_prefiltered_radiance(reflect(-(_e38), _e157), _e160);
+    vec3 _e162 = env_brdf;
+    vec3 _e164 = weft_sh_irradiance(n_diff);
+    vec3 _e165 = ambient_kd;
+    vec3 indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -76,7 +76,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -137,9 +136,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
 {
-    float2 sb = saturate(scale_bias);
+    float2 sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -204,11 +203,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_2));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
-    return _e8.xy;
+    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    return _e16.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -338,6 +350,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
+    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -359,9 +372,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e46 = material.aniso_normal_map_st;
     const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_1 = _e50.xyz;
+    float3 texel_2 = _e50.xyz;
     float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
     const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -405,25 +418,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e119 * _e130)) * _e120);
     reflect_n = _e56;
     {
-        float _e138 = lobe.ibl_roughness;
-        const float2 _e139 = weft_env_brdf_lut(_e98, _e138);
-        const float3 _e140 = weft_env_brdf_from_lut(f0_2, _e139);
-        env_brdf = _e140;
-        float3 _e143 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e143), (0.0).xxx);
-        float2 _e149 = lobe.alpha;
-        const float _e150 = silk_lobe_anisotropy(_e149);
-        float _e152 = lobe.ibl_roughness;
-        const float3 _e153 = weft_aniso_bent_normal(_e87, _e38, _e150, _e152);
-        reflect_n = _e153;
+        {
+            float _e139 = lobe.ibl_roughness;
+            const float2 _e140 = weft_env_brdf_lut_nearest(_e98, _e139);
+            scale_bias = _e140;
+        }
+        float2 _e141 = scale_bias;
+        const float3 _e142 = weft_env_brdf_from_lut(f0_2, _e141);
+        env_brdf = _e142;
+        float3 _e145 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e145), (0.0).xxx);
+        float2 _e151 = lobe.alpha;
+        const float _e152 = silk_lobe_anisotropy(_e151);
+        float _e154 = lobe.ibl_roughness;
+        const float3 _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
+        reflect_n = _e155;
     }
-    float3 _e155 = reflect_n;
-    float _e158 = lobe.ibl_roughness;
-    const float3 _e159 = weft_prefiltered_radiance(reflect(-(_e38), _e155), _e158);
-    float3 _e160 = env_brdf;
-    const float3 _e162 = weft_sh_irradiance(n_diff);
-    float3 _e163 = ambient_kd;
-    float3 indirect = ((_e159 * _e160) + ((_e162 * _e163) * diffuse_albedo));
+    float3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    const float3 _e161 = weft_prefiltered_radiance(reflect(-(_e38), _e157), _e160);
+    float3 _e162 = env_brdf;
+    const float3 _e164 = weft_sh_irradiance(n_diff);
+    float3 _e165 = ambient_kd;
+    float3 indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -119,9 +119,9 @@ metal::float3 weft_diffuse_lambert(
 
 metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    metal::float2 scale_bias
+    metal::float2 scale_bias_1
 ) {
-    metal::float2 sb = metal::saturate(scale_bias);
+    metal::float2 sb = metal::saturate(scale_bias_1);
     return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
@@ -199,15 +199,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e16.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -381,9 +386,8 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_sampler [[sampler(1)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> flow_map [[texture(4)]]
@@ -395,6 +399,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
+    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -415,9 +420,9 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e46 = material.aniso_normal_map_st;
     metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
     metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
+    metal::float3 texel_2 = _e50.xyz;
     float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
     metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
     fibre = _e42[0];
     {
@@ -461,25 +466,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct = (diffuse + (_e119 * _e130)) * _e120;
     reflect_n = _e56;
     {
-        float _e138 = lobe.ibl_roughness;
-        metal::float2 _e139 = weft_env_brdf_lut(_e98, _e138, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e140 = weft_env_brdf_from_lut(f0_2, _e139);
-        env_brdf = _e140;
-        metal::float3 _e143 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e143, metal::float3(0.0));
-        metal::float2 _e149 = lobe.alpha;
-        float _e150 = silk_lobe_anisotropy(_e149);
-        float _e152 = lobe.ibl_roughness;
-        metal::float3 _e153 = weft_aniso_bent_normal(_e87, _e38, _e150, _e152);
-        reflect_n = _e153;
+        {
+            float _e139 = lobe.ibl_roughness;
+            metal::float2 _e140 = weft_env_brdf_lut_nearest(_e98, _e139, weft_brdf_lut);
+            scale_bias = _e140;
+        }
+        metal::float2 _e141 = scale_bias;
+        metal::float3 _e142 = weft_env_brdf_from_lut(f0_2, _e141);
+        env_brdf = _e142;
+        metal::float3 _e145 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e145, metal::float3(0.0));
+        metal::float2 _e151 = lobe.alpha;
+        float _e152 = silk_lobe_anisotropy(_e151);
+        float _e154 = lobe.ibl_roughness;
+        metal::float3 _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
+        reflect_n = _e155;
     }
-    metal::float3 _e155 = reflect_n;
-    float _e158 = lobe.ibl_roughness;
-    metal::float3 _e159 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e155), _e158, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e160 = env_brdf;
-    metal::float3 _e162 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e163 = ambient_kd;
-    metal::float3 indirect = (_e159 * _e160) + ((_e162 * _e163) * diffuse_albedo);
+    metal::float3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    metal::float3 _e161 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e157), _e160, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e162 = env_brdf;
+    metal::float3 _e164 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e165 = ambient_kd;
+    metal::float3 indirect = (_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

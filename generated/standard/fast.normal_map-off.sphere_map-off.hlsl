@@ -64,7 +64,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -136,9 +135,9 @@ float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float rou
     const float _e7 = weft_clamp_cos(n_dot_l);
     float gv = ((_e6 * (1.0 - a_1)) + a_1);
     float gl = ((_e7 * (1.0 - a_1)) + a_1);
-    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -213,11 +212,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
-    return _e8.xy;
+    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel, int(0)));
+    return _e16.xy;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -306,7 +318,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
             visibility = _e79;
-            const float2 _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            const float2 _e80 = weft_env_brdf_lut_nearest(_e60, roughness_6);
             const float3 _e81 = weft_env_brdf_from_lut(f0_2, _e80);
             env_brdf = _e81;
             float3 _e84 = env_brdf;

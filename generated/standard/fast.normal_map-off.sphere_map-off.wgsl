@@ -63,8 +63,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -117,9 +115,9 @@ fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f
     let _e7 = weft_clamp_cos(n_dot_l);
     let gv = ((_e6 * (1f - a_1)) + a_1);
     let gl = ((_e7 * (1f - a_1)) + a_1);
-    let fv2_ = (((_e6 * _e6) * (1f - a2_1)) + a2_1);
-    let fl2_ = (((_e7 * _e7) * (1f - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    let pv = ((gv * _e6) + (a2_1 * (1f - _e6)));
+    let pl = ((gl * _e7) + (a2_1 * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
@@ -186,10 +184,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel, 0i);
+    return _e16.xy;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -273,7 +274,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         {
             let _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
             visibility = _e79;
-            let _e80 = weft_env_brdf_lut(_e60, roughness_6);
+            let _e80 = weft_env_brdf_lut_nearest(_e60, roughness_6);
             let _e81 = weft_env_brdf_from_lut(f0_2, _e80);
             env_brdf = _e81;
             let _e84 = env_brdf;

@@ -64,7 +64,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -147,9 +146,9 @@ float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float rou
     const float _e7 = weft_clamp_cos(n_dot_l);
     float gv = ((_e6 * (1.0 - a_2)) + a_2);
     float gl = ((_e7 * (1.0 - a_2)) + a_2);
-    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 float3 weft_diffuse_lambert(float3 albedo)
@@ -224,11 +223,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
-    return _e8.xy;
+    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    return _e16.xy;
 }
 
 float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
@@ -348,9 +360,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e54 = n;
         const float3x3 _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         float4 _e59 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e59.xyz;
+        float3 texel_2 = _e59.xyz;
         float _e63 = material.normal_strength;
-        const float3 _e64 = weft_unpack_normal(texel_1, _e63);
+        const float3 _e64 = weft_unpack_normal(texel_2, _e63);
         const float3 _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
@@ -370,7 +382,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
             visibility = _e91;
-            const float2 _e92 = weft_env_brdf_lut(_e72, roughness_6);
+            const float2 _e92 = weft_env_brdf_lut_nearest(_e72, roughness_6);
             const float3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);
             env_brdf = _e93;
             float3 _e96 = env_brdf;

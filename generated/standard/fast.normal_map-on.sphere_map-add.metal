@@ -132,9 +132,9 @@ float weft_v_smith_ggx_correlated_newton(
     float _e7 = weft_clamp_cos(n_dot_l);
     float gv = (_e6 * (1.0 - a_2)) + a_2;
     float gl = (_e7 * (1.0 - a_2)) + a_2;
-    float fv2_ = ((_e6 * _e6) * (1.0 - a2_1)) + a2_1;
-    float fl2_ = ((_e7 * _e7) * (1.0 - a2_1)) + a2_1;
-    return (gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_)));
+    float pv = (gv * _e6) + (a2_1 * (1.0 - _e6));
+    float pl = (gl * _e7) + (a2_1 * (1.0 - _e7));
+    return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -225,15 +225,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e16.xy;
 }
 
 metal::float3 weft_sphere_map_direction(
@@ -367,10 +372,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(2)]]
-, metal::sampler material_clamp_sampler [[sampler(3)]]
+, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_clamp_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
@@ -408,9 +412,9 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e54 = n;
         metal::float3x3 _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         metal::float4 _e59 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e59.xyz;
+        metal::float3 texel_2 = _e59.xyz;
         float _e63 = material.normal_strength;
-        metal::float3 _e64 = weft_unpack_normal(texel_1, _e63);
+        metal::float3 _e64 = weft_unpack_normal(texel_2, _e63);
         metal::float3 _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
@@ -430,7 +434,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
             visibility = _e91;
-            metal::float2 _e92 = weft_env_brdf_lut(_e72, roughness_6, weft_brdf_lut, weft_lut_sampler);
+            metal::float2 _e92 = weft_env_brdf_lut_nearest(_e72, roughness_6, weft_brdf_lut);
             metal::float3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);
             env_brdf = _e93;
             metal::float3 _e96 = env_brdf;

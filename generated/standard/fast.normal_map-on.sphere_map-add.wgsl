@@ -63,8 +63,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -130,9 +128,9 @@ fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f
     let _e7 = weft_clamp_cos(n_dot_l);
     let gv = ((_e6 * (1f - a_2)) + a_2);
     let gl = ((_e7 * (1f - a_2)) + a_2);
-    let fv2_ = (((_e6 * _e6) * (1f - a2_1)) + a2_1);
-    let fl2_ = (((_e7 * _e7) * (1f - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    let pv = ((gv * _e6) + (a2_1 * (1f - _e6)));
+    let pl = ((gl * _e7) + (a2_1 * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
@@ -199,10 +197,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
@@ -313,9 +314,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e54 = n;
         let _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         let _e59 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e59.xyz;
+        let texel_2 = _e59.xyz;
         let _e63 = material.normal_strength;
-        let _e64 = weft_unpack_normal(texel_1, _e63);
+        let _e64 = weft_unpack_normal(texel_2, _e63);
         let _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
@@ -335,7 +336,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         {
             let _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
             visibility = _e91;
-            let _e92 = weft_env_brdf_lut(_e72, roughness_6);
+            let _e92 = weft_env_brdf_lut_nearest(_e72, roughness_6);
             let _e93 = weft_env_brdf_from_lut(f0_2, _e92);
             env_brdf = _e93;
             let _e96 = env_brdf;

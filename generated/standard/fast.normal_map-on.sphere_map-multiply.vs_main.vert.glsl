@@ -112,9 +112,9 @@ float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float rou
     float _e7 = weft_clamp_cos(n_dot_l);
     float gv = ((_e6 * (1.0 - a_2)) + a_2);
     float gl = ((_e7 * (1.0 - a_2)) + a_2);
-    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {

@@ -119,9 +119,9 @@ float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float rou
     float _e7 = weft_clamp_cos(n_dot_l);
     float gv = ((_e6 * (1.0 - a_2)) + a_2);
     float gl = ((_e7 * (1.0 - a_2)) + a_2);
-    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
@@ -187,10 +187,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    return _e16.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
@@ -259,9 +261,9 @@ void main() {
         vec3 _e54 = n;
         mat3x3 _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         vec4 _e59 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e59.xyz;
+        vec3 texel_2 = _e59.xyz;
         float _e63 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e64 = weft_unpack_normal(texel_1, _e63);
+        vec3 _e64 = weft_unpack_normal(texel_2, _e63);
         vec3 _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
@@ -281,7 +283,7 @@ void main() {
         {
             float _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
             visibility = _e91;
-            vec2 _e92 = weft_env_brdf_lut(_e72, roughness_6);
+            vec2 _e92 = weft_env_brdf_lut_nearest(_e72, roughness_6);
             vec3 _e93 = weft_env_brdf_from_lut(f0_2, _e92);
             env_brdf = _e93;
             vec3 _e96 = env_brdf;

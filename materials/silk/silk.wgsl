@@ -15,13 +15,13 @@
 //                          lerp with isotropic GGX + Smith by the mask
 //             ggx          normalised anisotropic GGX + height-correlated Smith
 //             + split-sum LUT along reflect(-v, bent normal).
-//   fast      (default, approximates reference) the reference's computation:
-//             every cheaper substitution measured was either no cheaper on
-//             the benchmark (fewer divisions / square roots in the lobes,
-//             skipping half of the hair mix) or further than FLIP 0.05 (no
-//             bent normal: 0.21; analytic environment-BRDF fits instead of
-//             the LUT). Figures in README.md. Its own tier so that a cheaper
-//             form can land here without touching the reference.
+//   fast      (default, approximates reference) the reference with the
+//             split-sum LUT read at its nearest texel (no bilinear filter,
+//             weft_env_brdf_lut_nearest). Other substitutions measured were
+//             no cheaper on the benchmark (fewer divisions / square roots in
+//             the lobes, skipping half of the hair mix) or further than FLIP
+//             0.05 (no bent normal: 0.21; GGX for Ward's Beckmann: 0.09;
+//             analytic environment-BRDF fits). Figures in README.md.
 //   seed      a look (look = true), not an approximation: the seed's lobes,
 //             ward         the seed's AnisoD_Ward (Ward 1992, the seed's widths
 //                          5 (1 - s)^2 / aspect, 5 (1 - s)^2 aspect) x Schlick F
@@ -167,7 +167,14 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         env_brdf = weft_env_brdf_approx(f0, n_dot_v, lobe.ibl_roughness);
         ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, lobe.ibl_roughness);
     } else {
-        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, lobe.ibl_roughness));
+        // fast: the table at its nearest texel (no bilinear filter).
+        var scale_bias: vec2<f32>;
+        if WEFT_TIER == TIER_FAST {
+            scale_bias = weft_env_brdf_lut_nearest(n_dot_v, lobe.ibl_roughness);
+        } else {
+            scale_bias = weft_env_brdf_lut(n_dot_v, lobe.ibl_roughness);
+        }
+        env_brdf = weft_env_brdf_from_lut(f0, scale_bias);
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
         reflect_n = weft_aniso_bent_normal(frame, v, silk_lobe_anisotropy(lobe.alpha), lobe.ibl_roughness);
     }

@@ -9,8 +9,10 @@
 //               toolchain-baked split-sum LUT, ambient kd = 1 - E_spec.
 //   fast      = an approximation of the reference: the correlated visibility
 //               without square roots (Hammon's linear form refined by one
-//               Newton step, weft_v_smith_ggx_correlated_newton: within 6 %),
-//               the rest as the reference.
+//               Newton step, weft_v_smith_ggx_correlated_newton: within 6 %)
+//               and the split-sum LUT at its nearest texel
+//               (weft_env_brdf_lut_nearest: no bilinear filter), the rest as
+//               the reference.
 //   seed      = a look: the seed's form, GGX D, Schlick F, Schlick-GGX G with
 //               k = (alpha + 1)^2 / 8, analytic split-sum fit (Unity's) for the
 //               environment BRDF, roughness-aware Schlick for ambient kd. That
@@ -99,9 +101,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // The reference without its square roots: Hammon's linear form of
         // the correlated visibility refined by one Newton step (Hammon's
         // alone is up to 29 % low at grazing light); the same split-sum table
-        // and 1 - E diffuse weighting.
+        // read at its nearest texel, and 1 - E diffuse weighting.
         visibility = weft_v_smith_ggx_correlated_newton(n_dot_v, n_dot_l, roughness);
-        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut_nearest(n_dot_v, roughness));
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
         direct_kd = ambient_kd;
     }

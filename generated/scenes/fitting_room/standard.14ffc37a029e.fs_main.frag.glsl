@@ -99,9 +99,9 @@ float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float rou
     float _e7 = weft_clamp_cos(n_dot_l);
     float gv = ((_e6 * (1.0 - a_1)) + a_1);
     float gl = ((_e7 * (1.0 - a_1)) + a_1);
-    float fv2_ = (((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float fl2_ = (((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec3 weft_diffuse_lambert(vec3 albedo) {
@@ -167,10 +167,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
-    return _e8.xy;
+    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
+    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
+    return _e15.xy;
 }
 
 vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_1) {
@@ -212,7 +214,7 @@ void main() {
         {
             float _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55);
             visibility = _e44;
-            vec2 _e45 = weft_env_brdf_lut(_e27, 0.55);
+            vec2 _e45 = weft_env_brdf_lut_nearest(_e27, 0.55);
             vec3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             vec3 _e48 = env_brdf;

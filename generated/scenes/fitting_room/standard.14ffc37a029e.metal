@@ -115,9 +115,9 @@ float weft_v_smith_ggx_correlated_newton(
     float _e7 = weft_clamp_cos(n_dot_l);
     float gv = (_e6 * (1.0 - a_1)) + a_1;
     float gl = (_e7 * (1.0 - a_1)) + a_1;
-    float fv2_ = ((_e6 * _e6) * (1.0 - a2_1)) + a2_1;
-    float fl2_ = ((_e7 * _e7) * (1.0 - a2_1)) + a2_1;
-    return (gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_)));
+    float pv = (gv * _e6) + (a2_1 * (1.0 - _e6));
+    float pl = (gl * _e7) + (a2_1 * (1.0 - _e7));
+    return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
 metal::float3 weft_diffuse_lambert(
@@ -208,15 +208,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
+    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel), 0);
+    return _e15.xy;
 }
 
 metal::float3 standard_sphere_map(
@@ -287,7 +292,6 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
@@ -321,7 +325,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55);
             visibility = _e44;
-            metal::float2 _e45 = weft_env_brdf_lut(_e27, 0.55, weft_brdf_lut, weft_lut_sampler);
+            metal::float2 _e45 = weft_env_brdf_lut_nearest(_e27, 0.55, weft_brdf_lut);
             metal::float3 _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             metal::float3 _e48 = env_brdf;

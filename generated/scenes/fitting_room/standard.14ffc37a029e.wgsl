@@ -56,8 +56,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -104,9 +102,9 @@ fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f
     let _e7 = weft_clamp_cos(n_dot_l);
     let gv = ((_e6 * (1f - a_1)) + a_1);
     let gl = ((_e7 * (1f - a_1)) + a_1);
-    let fv2_ = (((_e6 * _e6) * (1f - a2_1)) + a2_1);
-    let fl2_ = (((_e7 * _e7) * (1f - a2_1)) + a2_1);
-    return ((gv * gl) / (((_e7 * gl) * ((gv * gv) + fv2_)) + ((_e6 * gv) * ((gl * gl) + fl2_))));
+    let pv = ((gv * _e6) + (a2_1 * (1f - _e6)));
+    let pl = ((gl * _e7) + (a2_1 * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
@@ -173,10 +171,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
-    return _e8.xy;
+    let texel = vec2<i32>(min((uv * size), (size - vec2(1f))));
+    let _e15 = textureLoad(weft_brdf_lut, texel, 0i);
+    return _e15.xy;
 }
 
 fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
@@ -243,7 +244,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         {
             let _e44 = weft_v_smith_ggx_correlated_newton(_e27, n_dot_l_1, 0.55f);
             visibility = _e44;
-            let _e45 = weft_env_brdf_lut(_e27, 0.55f);
+            let _e45 = weft_env_brdf_lut_nearest(_e27, 0.55f);
             let _e46 = weft_env_brdf_from_lut(f0_2, _e45);
             env_brdf = _e46;
             let _e48 = env_brdf;

@@ -13,6 +13,22 @@ struct WeftObject {
     normal_matrix: mat4x4<f32>,
 }
 
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    base_map_st: vec4<f32>,
+    smoothness: f32,
+    metallic: f32,
+    diffuse_uses_aniso_normal: u32,
+    anisotropy: f32,
+    aniso_normal_map_st: vec4<f32>,
+    aniso_normal_strength: f32,
+    tangent_shift: f32,
+    aniso_gloss: f32,
+    aniso_spec: f32,
+    aniso_mask: f32,
+    flow_strength: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -61,6 +77,16 @@ var weft_brdf_lut: texture_2d<f32>;
 var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var aniso_normal_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var flow_map: texture_2d<f32>;
 
 fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
@@ -92,15 +118,15 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
     let _e2 = weft_frame.light_direction;
-    let _e5 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
-    return _e5;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
 }
 
 fn weft_main_light_radiance() -> vec3<f32> {
@@ -153,8 +179,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
 }
 
 fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let uv = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
     return _e8.xy;
 }
 
@@ -178,6 +204,10 @@ fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
 }
 
 fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
@@ -250,13 +280,13 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     let _e43 = weft_frame.view_proj;
     out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
     out.world_position = world.xyz;
-    let _e54 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e54;
-    let _e60 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e60, bitangent_sign);
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
     out.uv0_ = in.uv0_;
-    let _e64 = out;
-    return _e64;
+    let _e66 = out;
+    return _e66;
 }
 
 @fragment 
@@ -267,62 +297,97 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
+    var scale_bias: vec2<f32>;
 
-    let _e11 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e13 = weft_safe_normalize(in_1.world_normal, _e11);
-    let _e15 = weft_tangent_frame(_e13, in_1.world_tangent);
-    let _e18 = weft_unpack_normal(vec3<f32>(0.5019608f, 0.5019608f, 1f), 0.6f);
-    let _e19 = weft_normal_from_tangent_space(_e15, _e18);
-    fibre = _e15[0];
-    let _e22 = fibre;
-    let _e26 = weft_tangent_frame(_e19, vec4<f32>(_e22, in_1.world_tangent.w));
-    let n_diff = select(_e13, _e19, false);
-    let _e29 = weft_main_light_direction();
-    let _e31 = weft_safe_normalize((_e29 + _e11), _e19);
-    let _e33 = weft_clamp_cos(dot(_e19, _e11));
-    let n_dot_l = saturate(dot(_e19, _e29));
-    let n_dot_h = saturate(dot(_e19, _e31));
-    let v_dot_h_1 = saturate(dot(_e11, _e31));
-    let _e40 = weft_aniso_to_frame(_e26, _e11);
-    let _e41 = weft_aniso_to_frame(_e26, _e29);
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha_out = saturate(base_rgba.w);
+    let _e19 = material.smoothness;
+    let smoothness_1 = saturate(_e19);
+    let roughness_4 = (1f - smoothness_1);
+    let _e25 = material.metallic;
+    let metallic = saturate(_e25);
+    let f0_2 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
+    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
+    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
+    let _e46 = material.aniso_normal_map_st;
+    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
+    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
+    let texel_1 = _e50.xyz;
+    let _e54 = material.aniso_normal_strength;
+    let _e55 = weft_unpack_normal(texel_1, _e54);
+    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
+    fibre = _e42[0];
     {
-        let _e44 = silk_ward_alpha_seed(0.86f, 0.85f);
-        lobe.alpha = _e44;
-        let _e47 = silk_ibl_roughness(_e44);
-        lobe.ibl_roughness = _e47;
+        let _e61 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e61.xy * 2f) - vec2(1f));
+        let dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
+        let _e78 = material.flow_strength;
+        let _e82 = weft_safe_normalize(mix(_e42[0], dir_2, saturate(_e78)), _e42[0]);
+        fibre = _e82;
+    }
+    let _e83 = fibre;
+    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
+    let _e90 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(_e40, _e56, (_e90 != 0u));
+    let _e94 = weft_main_light_direction();
+    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
+    let _e98 = weft_clamp_cos(dot(_e56, _e38));
+    let n_dot_l = saturate(dot(_e56, _e94));
+    let n_dot_h = saturate(dot(_e56, _e96));
+    let v_dot_h_1 = saturate(dot(_e38, _e96));
+    let _e105 = weft_aniso_to_frame(_e87, _e38);
+    let _e106 = weft_aniso_to_frame(_e87, _e94);
+    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let k_1 = material.anisotropy;
+    {
+        let _e112 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e112;
+        let _e115 = silk_ibl_roughness(_e112);
+        lobe.ibl_roughness = _e115;
         {
-            let _e49 = silk_ward_bounded(_e40, _e41, _e44);
-            lobe.value = (_e49 * n_dot_l);
+            let _e117 = silk_ward_bounded(_e105, _e106, _e112);
+            lobe.value = (_e117 * n_dot_l);
         }
     }
-    let _e51 = weft_f_schlick(vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f), v_dot_h_1);
-    let _e52 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e29));
-    let _e57 = weft_diffuse_lambert(vec3<f32>(0.45638528f, 0.27391332f, 0.3144985f));
-    let diffuse = (((vec3(1f) - _e51) * _e57) * n_dot_l_diffuse);
-    let _e61 = lobe.value;
-    let direct = ((diffuse + (_e51 * _e61)) * _e52);
-    reflect_n = _e19;
+    let _e119 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e120 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    let _e126 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e119) * _e126) * n_dot_l_diffuse);
+    let _e130 = lobe.value;
+    let direct = ((diffuse + (_e119 * _e130)) * _e120);
+    reflect_n = _e56;
     {
-        let _e69 = lobe.ibl_roughness;
-        let _e70 = weft_env_brdf_lut(_e33, _e69);
-        let _e71 = weft_env_brdf_from_lut(vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f), _e70);
-        env_brdf = _e71;
-        let _e73 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e73), vec3(0f));
-        let _e78 = lobe.alpha;
-        let _e79 = silk_lobe_anisotropy(_e78);
-        let _e81 = lobe.ibl_roughness;
-        let _e82 = weft_aniso_bent_normal(_e26, _e11, _e79, _e81);
-        reflect_n = _e82;
+        {
+            let _e139 = lobe.ibl_roughness;
+            let _e140 = weft_env_brdf_lut(_e98, _e139);
+            scale_bias = _e140;
+        }
+        let _e141 = scale_bias;
+        let _e142 = weft_env_brdf_from_lut(f0_2, _e141);
+        env_brdf = _e142;
+        let _e145 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e145), vec3(0f));
+        let _e151 = lobe.alpha;
+        let _e152 = silk_lobe_anisotropy(_e151);
+        let _e154 = lobe.ibl_roughness;
+        let _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
+        reflect_n = _e155;
     }
-    let _e84 = reflect_n;
-    let _e87 = lobe.ibl_roughness;
-    let _e88 = weft_prefiltered_radiance(reflect(-(_e11), _e84), _e87);
-    let _e89 = env_brdf;
-    let _e91 = weft_sh_irradiance(n_diff);
-    let _e92 = ambient_kd;
-    let indirect = ((_e88 * _e89) + ((_e91 * _e92) * vec3<f32>(0.45638528f, 0.27391332f, 0.3144985f)));
+    let _e157 = reflect_n;
+    let _e160 = lobe.ibl_roughness;
+    let _e161 = weft_prefiltered_radiance(reflect(-(_e38), _e157), _e160);
+    let _e162 = env_brdf;
+    let _e164 = weft_sh_irradiance(n_diff);
+    let _e165 = ambient_kd;
+    let indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, 1f);
+    return vec4<f32>(radiance, alpha_out);
 }

@@ -103,9 +103,9 @@ metal::float3 weft_diffuse_lambert(
 
 metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    metal::float2 scale_bias
+    metal::float2 scale_bias_1
 ) {
-    metal::float2 sb = metal::saturate(scale_bias);
+    metal::float2 sb = metal::saturate(scale_bias_1);
     return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
@@ -183,15 +183,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
+    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e15.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -358,7 +363,6 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
@@ -367,6 +371,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
+    metal::float2 scale_bias = {};
     metal::float3 _e11 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
     metal::float3x3 _e15 = weft_tangent_frame(_e13, in_1.world_tangent);
@@ -403,25 +408,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct = (diffuse + (_e51 * _e61)) * _e52;
     reflect_n = _e19;
     {
-        float _e69 = lobe.ibl_roughness;
-        metal::float2 _e70 = weft_env_brdf_lut(_e33, _e69, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e71 = weft_env_brdf_from_lut(metal::float3(0.14609632, 0.10047833, 0.11062463), _e70);
-        env_brdf = _e71;
-        metal::float3 _e73 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e73, metal::float3(0.0));
-        metal::float2 _e78 = lobe.alpha;
-        float _e79 = silk_lobe_anisotropy(_e78);
-        float _e81 = lobe.ibl_roughness;
-        metal::float3 _e82 = weft_aniso_bent_normal(_e26, _e11, _e79, _e81);
-        reflect_n = _e82;
+        {
+            float _e70 = lobe.ibl_roughness;
+            metal::float2 _e71 = weft_env_brdf_lut_nearest(_e33, _e70, weft_brdf_lut);
+            scale_bias = _e71;
+        }
+        metal::float2 _e72 = scale_bias;
+        metal::float3 _e73 = weft_env_brdf_from_lut(metal::float3(0.14609632, 0.10047833, 0.11062463), _e72);
+        env_brdf = _e73;
+        metal::float3 _e75 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e75, metal::float3(0.0));
+        metal::float2 _e80 = lobe.alpha;
+        float _e81 = silk_lobe_anisotropy(_e80);
+        float _e83 = lobe.ibl_roughness;
+        metal::float3 _e84 = weft_aniso_bent_normal(_e26, _e11, _e81, _e83);
+        reflect_n = _e84;
     }
-    metal::float3 _e84 = reflect_n;
-    float _e87 = lobe.ibl_roughness;
-    metal::float3 _e88 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e84), _e87, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e89 = env_brdf;
-    metal::float3 _e91 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e92 = ambient_kd;
-    metal::float3 indirect = (_e88 * _e89) + ((_e91 * _e92) * metal::float3(0.45638528, 0.27391332, 0.3144985));
+    metal::float3 _e86 = reflect_n;
+    float _e89 = lobe.ibl_roughness;
+    metal::float3 _e90 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e86), _e89, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e91 = env_brdf;
+    metal::float3 _e93 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e94 = ambient_kd;
+    metal::float3 indirect = (_e90 * _e91) + ((_e93 * _e94) * metal::float3(0.45638528, 0.27391332, 0.3144985));
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

@@ -45,17 +45,18 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
-layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
-
-layout(location = 0) smooth in vec3 _vs2fs_location0;
-layout(location = 1) smooth in vec3 _vs2fs_location1;
-layout(location = 2) smooth in vec4 _vs2fs_location2;
-layout(location = 3) smooth in vec2 _vs2fs_location3;
-layout(location = 0) out vec4 _fs2p_location0;
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -87,31 +88,31 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
+    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
     vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
     return _e5;
 }
 
 vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
     return max(_e2.xyz, vec3(0.0));
 }
 
 vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
     vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
     return _e7;
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
     e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
@@ -135,21 +136,9 @@ vec3 weft_sh_irradiance(vec3 n_1) {
 
 float weft_specular_mip(float roughness) {
     float r = clamp(roughness, 0.0, 1.0);
-    float _e5 = _group_0_binding_0_fs.params.x;
+    float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return ((r * (1.7 - (0.7 * r))) * max_mip);
-}
-
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
-    float _e4 = weft_specular_mip(roughness_1);
-    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_1.xyz, vec3(0.0));
-}
-
-vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
-    vec2 uv = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
-    return _e8.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -230,70 +219,30 @@ float silk_ibl_roughness(vec2 alpha_2) {
 }
 
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
-    vec3 fibre = vec3(0.0);
-    SilkLobe lobe = SilkLobe(0.0, vec2(0.0), 0.0);
-    float vis = 0.0;
-    vec3 env_brdf = vec3(0.0);
-    vec3 ambient_kd = vec3(0.0);
-    vec3 reflect_n = vec3(0.0);
-    vec3 _e11 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
-    mat3x3 _e15 = weft_tangent_frame(_e13, in_1.world_tangent);
-    vec3 _e18 = weft_unpack_normal(vec3(0.5019608, 0.5019608, 1.0), 0.6);
-    vec3 _e19 = weft_normal_from_tangent_space(_e15, _e18);
-    fibre = _e15[0];
-    vec3 _e22 = fibre;
-    mat3x3 _e26 = weft_tangent_frame(_e19, vec4(_e22, in_1.world_tangent.w));
-    vec3 n_diff = (false ? _e19 : _e13);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e31 = weft_safe_normalize((_e29 + _e11), _e19);
-    float _e33 = weft_clamp_cos(dot(_e19, _e11));
-    float n_dot_l = clamp(dot(_e19, _e29), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e19, _e31), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e11, _e31), 0.0, 1.0);
-    vec3 _e40 = weft_aniso_to_frame(_e26, _e11);
-    vec3 _e41 = weft_aniso_to_frame(_e26, _e29);
-    {
-        vec2 _e44 = silk_ward_alpha_seed(0.86, 0.85);
-        lobe.alpha = _e44;
-        float _e47 = silk_ibl_roughness(_e44);
-        lobe.ibl_roughness = _e47;
-        {
-            float _e49 = silk_ward_bounded(_e40, _e41, _e44);
-            lobe.value = (_e49 * n_dot_l);
-        }
-    }
-    vec3 _e51 = weft_f_schlick(vec3(0.14609632, 0.10047833, 0.11062463), v_dot_h_1);
-    vec3 _e52 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e29), 0.0, 1.0);
-    vec3 _e57 = weft_diffuse_lambert(vec3(0.45638528, 0.27391332, 0.3144985));
-    vec3 diffuse = (((vec3(1.0) - _e51) * _e57) * n_dot_l_diffuse);
-    float _e61 = lobe.value;
-    vec3 direct = ((diffuse + (_e51 * _e61)) * _e52);
-    reflect_n = _e19;
-    {
-        float _e69 = lobe.ibl_roughness;
-        vec2 _e70 = weft_env_brdf_lut(_e33, _e69);
-        vec3 _e71 = weft_env_brdf_from_lut(vec3(0.14609632, 0.10047833, 0.11062463), _e70);
-        env_brdf = _e71;
-        vec3 _e73 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e73), vec3(0.0));
-        vec2 _e78 = lobe.alpha;
-        float _e79 = silk_lobe_anisotropy(_e78);
-        float _e81 = lobe.ibl_roughness;
-        vec3 _e82 = weft_aniso_bent_normal(_e26, _e11, _e79, _e81);
-        reflect_n = _e82;
-    }
-    vec3 _e84 = reflect_n;
-    float _e87 = lobe.ibl_roughness;
-    vec3 _e88 = weft_prefiltered_radiance(reflect(-(_e11), _e84), _e87);
-    vec3 _e89 = env_brdf;
-    vec3 _e91 = weft_sh_irradiance(n_diff);
-    vec3 _e92 = ambient_kd;
-    vec3 indirect = ((_e88 * _e89) + ((_e91 * _e92) * vec3(0.45638528, 0.27391332, 0.3144985)));
-    vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
-    _fs2p_location0 = vec4(radiance, 1.0);
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e54 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e54;
+    vec3 _e60 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e60, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e64 = out_;
+    gl_Position = _e64.clip_position;
+    _vs2fs_location0 = _e64.world_position;
+    _vs2fs_location1 = _e64.world_normal;
+    _vs2fs_location2 = _e64.world_tangent;
+    _vs2fs_location3 = _e64.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }
 

@@ -58,7 +58,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 
 struct VertexOutput_vs_main {
@@ -113,9 +112,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
 {
-    float2 sb = saturate(scale_bias);
+    float2 sb = saturate(scale_bias_1);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -180,11 +179,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv = float2(saturate(n_dot_v), saturate(roughness_2));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
-    return _e8.xy;
+    int2 texel_1 = naga_f2i32(min((uv * size), (size - (1.0).xx)));
+    float4 _e15 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    return _e15.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -309,6 +321,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
+    float2 scale_bias = (float2)0;
 
     const float3 _e11 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e13 = weft_safe_normalize(in_1.world_normal, _e11);
@@ -346,25 +359,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e51 * _e61)) * _e52);
     reflect_n = _e19;
     {
-        float _e69 = lobe.ibl_roughness;
-        const float2 _e70 = weft_env_brdf_lut(_e33, _e69);
-        const float3 _e71 = weft_env_brdf_from_lut(float3(0.14609632, 0.10047833, 0.11062463), _e70);
-        env_brdf = _e71;
-        float3 _e73 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e73), (0.0).xxx);
-        float2 _e78 = lobe.alpha;
-        const float _e79 = silk_lobe_anisotropy(_e78);
-        float _e81 = lobe.ibl_roughness;
-        const float3 _e82 = weft_aniso_bent_normal(_e26, _e11, _e79, _e81);
-        reflect_n = _e82;
+        {
+            float _e70 = lobe.ibl_roughness;
+            const float2 _e71 = weft_env_brdf_lut_nearest(_e33, _e70);
+            scale_bias = _e71;
+        }
+        float2 _e72 = scale_bias;
+        const float3 _e73 = weft_env_brdf_from_lut(float3(0.14609632, 0.10047833, 0.11062463), _e72);
+        env_brdf = _e73;
+        float3 _e75 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e75), (0.0).xxx);
+        float2 _e80 = lobe.alpha;
+        const float _e81 = silk_lobe_anisotropy(_e80);
+        float _e83 = lobe.ibl_roughness;
+        const float3 _e84 = weft_aniso_bent_normal(_e26, _e11, _e81, _e83);
+        reflect_n = _e84;
     }
-    float3 _e84 = reflect_n;
-    float _e87 = lobe.ibl_roughness;
-    const float3 _e88 = weft_prefiltered_radiance(reflect(-(_e11), _e84), _e87);
-    float3 _e89 = env_brdf;
-    const float3 _e91 = weft_sh_irradiance(n_diff);
-    float3 _e92 = ambient_kd;
-    float3 indirect = ((_e88 * _e89) + ((_e91 * _e92) * float3(0.45638528, 0.27391332, 0.3144985)));
+    float3 _e86 = reflect_n;
+    float _e89 = lobe.ibl_roughness;
+    const float3 _e90 = weft_prefiltered_radiance(reflect(-(_e11), _e86), _e89);
+    float3 _e91 = env_brdf;
+    const float3 _e93 = weft_sh_irradiance(n_diff);
+    float3 _e94 = ambient_kd;
+    float3 indirect = ((_e90 * _e91) + ((_e93 * _e94) * float3(0.45638528, 0.27391332, 0.3144985)));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

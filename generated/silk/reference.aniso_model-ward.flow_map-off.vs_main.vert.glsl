@@ -12,6 +12,21 @@ struct WeftObject {
     mat4x4 model;
     mat4x4 normal_matrix;
 };
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    float smoothness;
+    float metallic;
+    uint diffuse_uses_aniso_normal;
+    float anisotropy;
+    vec4 aniso_normal_map_st;
+    float aniso_normal_strength;
+    float tangent_shift;
+    float aniso_gloss;
+    float aniso_spec;
+    float aniso_mask;
+    float flow_strength;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -47,7 +62,7 @@ const float SILK_MIN_ALPHA = 0.001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;
@@ -88,15 +103,15 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
+    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
     vec4 _e2 = _group_0_binding_0_vs.light_direction;
-    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e5;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
 }
 
 vec3 weft_main_light_radiance() {
@@ -161,6 +176,10 @@ vec3 weft_unpack_normal(vec3 texel, float strength) {
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
 }
 
 vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
@@ -231,17 +250,17 @@ void main() {
     mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
     out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
     out_.world_position = world.xyz;
-    vec3 _e54 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
-    out_.world_normal = _e54;
-    vec3 _e60 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
-    out_.world_tangent = vec4(_e60, bitangent_sign);
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
     out_.uv0_ = in_.uv0_;
-    WeftVaryings _e64 = out_;
-    gl_Position = _e64.clip_position;
-    _vs2fs_location0 = _e64.world_position;
-    _vs2fs_location1 = _e64.world_normal;
-    _vs2fs_location2 = _e64.world_tangent;
-    _vs2fs_location3 = _e64.uv0_;
+    WeftVaryings _e66 = out_;
+    gl_Position = _e66.clip_position;
+    _vs2fs_location0 = _e66.world_position;
+    _vs2fs_location1 = _e66.world_normal;
+    _vs2fs_location2 = _e66.world_tangent;
+    _vs2fs_location3 = _e66.uv0_;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

@@ -1,0 +1,501 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_4 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_4 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    metal::float4 base_map_st;
+    float smoothness;
+    float metallic;
+    uint diffuse_uses_aniso_normal;
+    float anisotropy;
+    metal::float4 aniso_normal_map_st;
+    float aniso_normal_strength;
+    float tangent_shift;
+    float aniso_gloss;
+    float aniso_spec;
+    float aniso_mask;
+    float flow_strength;
+    char _pad13[8];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct SilkLobe {
+    float value;
+    char _pad1[4];
+    metal::float2 alpha;
+    float ibl_roughness;
+    char _pad3[4];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint ANISO_MODEL_WARD = 0u;
+constant uint ANISO_MODEL_HAIR_SHIFTED = 1u;
+constant uint ANISO_MODEL_GGX = 2u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ANISO_ALPHA = 0.001;
+constant float SILK_MIN_ALPHA = 0.001;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = (n.x * n.y) * a;
+    return metal::float3(1.0 + (((s * n.x) * n.x) * a), s * b, -(s) * n.x);
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias_1
+) {
+    metal::float2 sb = metal::saturate(scale_bias_1);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_4 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_1,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness_1);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_2,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_2, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v,
+    float roughness_3,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
+    return metal::float3x3(t, b_1, n_2);
+}
+
+metal::float3 weft_unpack_normal(
+    metal::float3 texel,
+    float strength
+) {
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+}
+
+metal::float3 weft_normal_from_tangent_space(
+    metal::float3x3 frame,
+    metal::float3 n_ts
+) {
+    metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
+    return _e4;
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+metal::float3 weft_aniso_to_frame(
+    metal::float3x3 frame_1,
+    metal::float3 x_1
+) {
+    return metal::float3(metal::dot(frame_1[0], x_1), metal::dot(frame_1[1], x_1), metal::dot(frame_1[2], x_1));
+}
+
+metal::float2 weft_aniso_alpha_burley(
+    float roughness_4,
+    float anisotropy
+) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = _e2 * _e2;
+    float k = metal::clamp(anisotropy, -1.0, 1.0);
+    float aspect = metal::sqrt(1.0 - (0.9 * metal::abs(k)));
+    float wide = a_1 / aspect;
+    float narrow = a_1 * aspect;
+    metal::float2 ab = (k >= 0.0) ? metal::float2(wide, narrow) : metal::float2(narrow, wide);
+    return metal::max(ab, metal::float2(0.001));
+}
+
+float weft_aniso_ggx_q(
+    float t_dot_h,
+    float b_dot_h,
+    float n_dot_h,
+    float alpha_t,
+    float alpha_b
+) {
+    float at = metal::max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = metal::max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = t_dot_h / at;
+    float y = b_dot_h / ab_1;
+    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
+}
+
+float weft_d_ggx_aniso(
+    float t_dot_h_1,
+    float b_dot_h_1,
+    float n_dot_h_1,
+    float alpha_t_1,
+    float alpha_b_1
+) {
+    float at_1 = metal::max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_2 = metal::max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
+    float d = 1.0 / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9);
+    return (n_dot_h_1 > 0.0) ? d : 0.0;
+}
+
+float weft_v_smith_ggx_aniso_correlated(
+    metal::float3 v_1,
+    metal::float3 l,
+    float alpha_t_2,
+    float alpha_b_2
+) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_aniso_bent_normal(
+    metal::float3x3 frame_2,
+    metal::float3 v_2,
+    float anisotropy_1,
+    float roughness_5
+) {
+    float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
+    metal::float3 n_3 = frame_2[2];
+    metal::float3 dir_1 = (k_1 >= 0.0) ? frame_2[1] : frame_2[0];
+    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
+    float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_lobe_anisotropy(
+    metal::float2 alpha
+) {
+    float at_2 = metal::max(alpha.x, SILK_MIN_ALPHA);
+    float ab_3 = metal::max(alpha.y, SILK_MIN_ALPHA);
+    return (at_2 - ab_3) / (at_2 + ab_3);
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 fibre = {};
+    SilkLobe lobe = {};
+    float vis = {};
+    metal::float3 env_brdf = {};
+    metal::float3 ambient_kd = {};
+    metal::float3 reflect_n = {};
+    metal::float2 scale_bias = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha_out = metal::saturate(base_rgba.w);
+    float _e19 = material.smoothness;
+    float smoothness = metal::saturate(_e19);
+    float roughness_6 = 1.0 - smoothness;
+    float _e25 = material.metallic;
+    float metallic = metal::saturate(_e25);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
+    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
+    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
+    metal::float4 _e46 = material.aniso_normal_map_st;
+    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
+    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
+    metal::float3 texel_1 = _e50.xyz;
+    float _e54 = material.aniso_normal_strength;
+    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
+    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
+    fibre = _e42[0];
+    metal::float3 _e59 = fibre;
+    metal::float3x3 _e63 = weft_tangent_frame(_e56, metal::float4(_e59, in_1.world_tangent.w));
+    uint _e66 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e66 != 0u) ? _e56 : _e40;
+    metal::float3 _e70 = weft_main_light_direction(weft_frame);
+    metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
+    float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
+    float n_dot_l = metal::saturate(metal::dot(_e56, _e70));
+    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e72));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
+    metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
+    metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
+    metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    float k_2 = material.anisotropy;
+    {
+        {
+            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e88;
+            lobe.ibl_roughness = roughness_6;
+            {
+                float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
+                vis = _e94;
+            }
+            float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+            float _e102 = vis;
+            lobe.value = (_e101 * _e102) * n_dot_l;
+        }
+    }
+    metal::float3 _e105 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float3 _e106 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
+    metal::float3 _e112 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e105) * _e112) * n_dot_l_diffuse;
+    float _e116 = lobe.value;
+    metal::float3 direct = (diffuse + (_e105 * _e116)) * _e106;
+    reflect_n = _e56;
+    {
+        {
+            float _e125 = lobe.ibl_roughness;
+            metal::float2 _e126 = weft_env_brdf_lut(_e74, _e125, weft_brdf_lut, weft_lut_sampler);
+            scale_bias = _e126;
+        }
+        metal::float2 _e127 = scale_bias;
+        metal::float3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
+        env_brdf = _e128;
+        metal::float3 _e131 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e131, metal::float3(0.0));
+        metal::float2 _e137 = lobe.alpha;
+        float _e138 = silk_lobe_anisotropy(_e137);
+        float _e140 = lobe.ibl_roughness;
+        metal::float3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
+        reflect_n = _e141;
+    }
+    metal::float3 _e143 = reflect_n;
+    float _e146 = lobe.ibl_roughness;
+    metal::float3 _e147 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e143), _e146, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e148 = env_brdf;
+    metal::float3 _e150 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e151 = ambient_kd;
+    metal::float3 indirect = (_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo);
+    metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha_out) };
+}
