@@ -458,7 +458,7 @@ fn every_standard_variant_renders_finite() {
     let (mut m, path) = standard();
     let mut r = renderer(&path);
     let ids: Vec<String> = m.metadata().variants.iter().map(|v| v.id.clone()).collect();
-    assert_eq!(ids.len(), 18);
+    assert_eq!(ids.len(), 24);
     let cube = env().sky_cube_rgba();
     for id in ids {
         ok(m.select_variant(&id));
