@@ -116,6 +116,16 @@ static const float MC_MIN_GAMMA = 0.0017453292;
 static const float MC_MIN_PROJ2_ = 1e-8;
 static const float MC_MIN_COS2_THETA_D = 0.0001;
 static const float MC_MIN_Q = 1e-6;
+static const float MC_INV_SQRT_TWO_PI = 0.3989423;
+static const float MC_FAST_MIN_DT = 0.1;
+static const float MC_GL3_T = 0.11270166;
+static const float MC_GL3_W0_ = 0.2777778;
+static const float MC_GL3_W1_ = 0.44444445;
+static const float MC_GL3_E0_ = -0.29099444;
+static const float MC_GL3_E1_ = 0.42621785;
+static const float MC_FAST_MIN_DSLOPE = 0.001;
+static const float MC_FAST_MIN_SPAN = 0.0001;
+static const float MC_FAST_SPLIT_DEG = 60.0;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }

@@ -106,6 +106,16 @@ constant float MC_MIN_GAMMA = 0.0017453292;
 constant float MC_MIN_PROJ2_ = 0.00000001;
 constant float MC_MIN_COS2_THETA_D = 0.0001;
 constant float MC_MIN_Q = 0.000001;
+constant float MC_INV_SQRT_TWO_PI = 0.3989423;
+constant float MC_FAST_MIN_DT = 0.1;
+constant float MC_GL3_T = 0.11270166;
+constant float MC_GL3_W0_ = 0.2777778;
+constant float MC_GL3_W1_ = 0.44444445;
+constant float MC_GL3_E0_ = -0.29099444;
+constant float MC_GL3_E1_ = 0.42621785;
+constant float MC_FAST_MIN_DSLOPE = 0.001;
+constant float MC_FAST_MIN_SPAN = 0.0001;
+constant float MC_FAST_SPLIT_DEG = 60.0;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,

@@ -158,19 +158,6 @@ fn mc_psi_reference(v: vec3<f32>, wi: vec3<f32>, wr: vec3<f32>) -> McPsi {
     return McPsi(hi, hr, u, select(0.0, 1.0, ok));
 }
 
-fn mc_psi_fast(v: vec3<f32>, wi: vec3<f32>, wr: vec3<f32>) -> McPsi {
-    let pi = wi - v * dot(wi, v);
-    let pr = wr - v * dot(wr, v);
-    let li2 = dot(pi, pi);
-    let lr2 = dot(pr, pr);
-    let ok = min(li2, lr2) >= MC_MIN_PROJ2;
-    let hi = pi * inverseSqrt(max(li2, MC_MIN_PROJ2));
-    let hr = pr * inverseSqrt(max(lr2, MC_MIN_PROJ2));
-    let psi_d = mc_acos_fast(dot(hi, hr));
-    let u = exp(-psi_d * psi_d * MC_U_INV_TWO_SIGMA2);
-    return McPsi(hi, hr, u, select(0.0, 1.0, ok));
-}
-
 // ---------------------------------------------------------------- lobes
 
 // One tangent-offset sample, reference form. (ca, sa) = (cos, sin) of the
@@ -218,48 +205,6 @@ fn mc_lobe_reference(fr: McFrame, psi: McPsi, wi: vec3<f32>, wr: vec3<f32>, ca: 
     return vec4<f32>(fs * (m * p * ci), p);
 }
 
-// One tangent-offset sample, fast form: no atan/acos/cos (half-angle
-// identities and mc_acos_fast), Schlick F_r, F = (1 - F_r)^2.
-fn mc_lobe_fast(fr: McFrame, psi: McPsi, wi: vec3<f32>, wr: vec3<f32>, ca: f32, sa: f32, th: McThread) -> vec4<f32> {
-    let u = fr.u * ca + fr.n * sa;
-    let np = fr.n * ca - fr.u * sa;
-    let si = clamp(dot(wi, u), -1.0, 1.0);
-    let sr = clamp(dot(wr, u), -1.0, 1.0);
-    let pi = wi - u * si;
-    let pr = wr - u * sr;
-    let ci2 = dot(pi, pi);
-    let cr2 = dot(pr, pr);
-    if min(ci2, cr2) < MC_MIN_PROJ2 || psi.ok == 0.0 {
-        return vec4<f32>(0.0);
-    }
-    let inv_ci = inverseSqrt(ci2);
-    let inv_cr = inverseSqrt(cr2);
-    let ci = ci2 * inv_ci;
-    let cr = cr2 * inv_cr;
-    let hi = pi * inv_ci;
-    let hr = pr * inv_cr;
-    let cos_phi_d = clamp(dot(hi, hr), -1.0, 1.0);
-    // cos(phi_d / 2) = sqrt((1 + cos phi_d) / 2), phi_d in [0, pi].
-    let cos_half_phi = sqrt(max(0.5 + 0.5 * cos_phi_d, 0.0));
-    let phi_d = mc_acos_fast(cos_phi_d);
-    let theta_h = 0.5 * (mc_asin_fast(si) + mc_asin_fast(sr));
-    // cos^2(theta_d) = (1 + cos(theta_i - theta_r)) / 2.
-    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
-
-    let u_phi = exp(-phi_d * phi_d * MC_U_INV_TWO_SIGMA2);
-    let m = mc_correlate(dot(np, hi), dot(np, hr), u_phi);
-    let p = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
-
-    let f0 = weft_f0_from_ior(th.eta);
-    let c_eff = sqrt(cd2) * cos_half_phi;
-    let f_r = f0 + (1.0 - f0) * weft_pow5(1.0 - saturate(c_eff));
-    let f_t = (1.0 - f_r) * (1.0 - f_r);
-    let surface = f_r * cos_half_phi * mc_gauss(th.gamma_s, theta_h);
-    let volume = f_t * ((1.0 - th.kd) * mc_gauss(th.gamma_v, theta_h) + th.kd) / (ci + cr);
-    let fs = (vec3<f32>(surface) + volume * th.albedo) / cd2;
-    return vec4<f32>(fs * (m * p * ci), p);
-}
-
 // ---------------------------------------------------------------- thread sets
 // Each returns the offset-weighted means (S_j, P_j) of a thread set.
 
@@ -288,24 +233,6 @@ fn mc_thread_curve_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McTh
         let dh = mc_curve_at(heights, k + 1u) - mc_curve_at(heights, k);
         let len = sqrt(dt * dt + dh * dh);
         acc += len * mc_lobe_reference(fr, psi, wi, wr, dt / len, dh / len, th);
-        wsum += len;
-    }
-    return acc / wsum;
-}
-
-// Fast, tangent curve: 4 chords over t in [0, 1/4, 1/2, 3/4, 1] (their slope
-// is the mean slope over each quarter), weighted by chord length.
-fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let psi = mc_psi_fast(fr.v, wi, wr);
-    let dt = 1.0 / f32(MC_FAST_CHORDS);
-    let stride = MC_CURVE_SEGMENTS / MC_FAST_CHORDS;
-    var acc = vec4<f32>(0.0);
-    var wsum = 0.0;
-    for (var k = 0u; k < MC_FAST_CHORDS; k++) {
-        let dh = mc_curve_at(heights, (k + 1u) * stride) - mc_curve_at(heights, k * stride);
-        let inv_len = inverseSqrt(dt * dt + dh * dh);
-        let len = 1.0 / inv_len;
-        acc += len * mc_lobe_fast(fr, psi, wi, wr, dt * inv_len, dh * inv_len, th);
         wsum += len;
     }
     return acc / wsum;
@@ -341,17 +268,287 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
     return acc / f32(n - 1);
 }
 
-// Fast, offset list: the control points only, equally weighted (what the
-// seed and the public ports evaluate).
+// ---------------------------------------------------------------- fast tier
+// The fast tier integrates the same tangent-offset distribution as the
+// reference with three nodes per range of offsets instead of one lobe per
+// degree:
+//   1. Support: every term carries M and P, which vanish unless
+//      cos(beta_i + alpha) > 0 and cos(beta_r + alpha) > 0 (beta = azimuth of
+//      w in the u-n plane, measured from n towards u; the tilt alpha adds to
+//      it). The offsets outside (lo, hi) contribute nothing, so each range is
+//      clipped to it first: the integrand then has no kinks at the ends and
+//      falls to 0 there.
+//   2. Three-point Gauss-Legendre rule on the clipped range for the slowly
+//      varying factors (F, cos(phi_d/2), M, P, cos(theta), 1/cos^2(theta_d)).
+//   3. The narrow Gaussians in theta_h are not sampled but averaged over each
+//      node's cell of the rule (cells of widths 5/18, 8/18, 5/18), with
+//      theta_h linear across the cell: mean g = (cdf(x_b/gamma) -
+//      cdf(x_a/gamma)) / (x_b - x_a) (cdf by Abramowitz & Stegun 7.1.26).
+//      theta_h at the cell edges is interpolated from the nodes.
+// Every node is straight-line code (no early return, no loop, no array).
+
+// Per thread set: the components of w_i and w_r in the thread frame before
+// the offset (x along u, y along v, z along n), psi (offset-independent),
+// the support and the constants of the thread.
+struct McFastPre {
+    wi: vec3<f32>,
+    wr: vec3<f32>,
+    // 1 / |projection onto the u-n plane| of w_i, w_r (psi's azimuth).
+    inv_ri: f32,
+    inv_rr: f32,
+    // Correlation weight u(psi_d); 1/0 whether psi is defined.
+    u_psi: f32,
+    ok: f32,
+    f0: f32,
+    inv_gamma_s: f32,
+    inv_gamma_v: f32,
+    // Offsets with a non-zero integrand: alpha in (lo, hi) (radians).
+    lo: f32,
+    hi: f32,
+    eta: f32,
+}
+
+// The slowly varying factors at one offset.
+struct McFastNode {
+    // theta_h.
+    x: f32,
+    // F_r cos(phi_d/2) M P cos(theta_i) / cos^2(theta_d): multiplies
+    // g(gamma_s, theta_h).
+    s: f32,
+    // F_t M P cos(theta_i) / ((cos theta_i + cos theta_r) cos^2(theta_d)):
+    // multiplies A ((1 - k_d) g(gamma_v, theta_h) + k_d).
+    v: f32,
+    // The reweighting P.
+    p: f32,
+}
+
+// 1 / sqrt(2 pi).
+const MC_INV_SQRT_TWO_PI: f32 = 0.398942280401;
+// Below this cell width (in units of gamma) the mean of the Gaussian over a
+// cell is the mean of its edge values (relative error < 1e-3 there) instead
+// of the cdf difference, which cancels.
+const MC_FAST_MIN_DT: f32 = 0.1;
+// Three-point Gauss-Legendre rule on [0, 1]: nodes 1/2 -+ sqrt(15)/10,
+// weights 5/18, 8/18, 5/18; cell edges 0, 5/18, 13/18, 1.
+const MC_GL3_T: f32 = 0.112701665379;
+const MC_GL3_W0: f32 = 0.277777777778;
+const MC_GL3_W1: f32 = 0.444444444444;
+// theta_h at the cell edges, linear through the nodes: edge 0 and 5/18 from
+// nodes 0 and 1, 13/18 and 1 from nodes 1 and 2 (fractions of the node step).
+const MC_GL3_E0: f32 = -0.290994448736;
+const MC_GL3_E1: f32 = 0.426217847263;
+
+// Standard normal at each t: (pdf, cdf - 1/2). cdf by Abramowitz & Stegun
+// 7.1.26 (|error of erf| < 1.5e-7), sharing the exponential with the pdf.
+fn mc_normal4(t: vec4<f32>) -> array<vec4<f32>, 2> {
+    let e = exp(-0.5 * t * t);
+    let z = abs(t) * 0.707106781187;
+    let k = 1.0 / (1.0 + 0.3275911 * z);
+    let poly = k * (0.254829592 + k * (-0.284496736 + k * (1.421413741 + k * (-1.453152027 + k * 1.061405429))));
+    // Upper tail 1 - cdf(|t|) = erfc(z) / 2.
+    let half = 0.5 - 0.5 * poly * e;
+    return array<vec4<f32>, 2>(e * MC_INV_SQRT_TWO_PI, select(-half, half, t >= vec4<f32>(0.0)));
+}
+
+// Mean of g(gamma, x) over the three cells whose edges are x_e (x linear in
+// each cell).
+fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t = xe * inv_gamma;
+    let nd = mc_normal4(t);
+    let dt = t.yzw - t.xyz;
+    let wide = abs(dt) >= vec3<f32>(MC_FAST_MIN_DT);
+    let exact = (nd[1].yzw - nd[1].xyz) / select(vec3<f32>(1.0), dt, wide);
+    let trap = 0.5 * (nd[0].xyz + nd[0].yzw);
+    return max(select(trap, exact, wide), vec3<f32>(0.0)) * inv_gamma;
+}
+
+// atan2(y, x) for x > 0 up to ~1e-5 rad (odd minimax polynomial of atan on
+// [-1, 1] with the reciprocal for |y| > x); the support's ends need no more.
+fn mc_atan_fast(y: f32, x: f32) -> f32 {
+    let ax = max(abs(x), 1e-20);
+    let ay = abs(y);
+    let r = min(ax, ay) / max(ax, ay);
+    let r2 = r * r;
+    let a = r * (0.99997726 + r2 * (-0.33262347 + r2 * (0.19354346 + r2 * (-0.11643287 + r2 * (0.05265332 - 0.01172120 * r2)))));
+    let b = select(a, 0.5 * WEFT_PI - a, ay > ax);
+    let c = select(b, WEFT_PI - b, x < 0.0);
+    return select(c, -c, y < 0.0);
+}
+
+fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+    let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    let ri2 = li.x * li.x + li.z * li.z;
+    let rr2 = lr.x * lr.x + lr.z * lr.z;
+    let ok = min(ri2, rr2) >= MC_MIN_PROJ2;
+    let inv_ri = inverseSqrt(max(ri2, MC_MIN_PROJ2));
+    let inv_rr = inverseSqrt(max(rr2, MC_MIN_PROJ2));
+    let cos_psi_d = (li.x * lr.x + li.z * lr.z) * inv_ri * inv_rr;
+    let psi_d = mc_acos_fast(cos_psi_d);
+    let u_psi = exp(-psi_d * psi_d * MC_U_INV_TWO_SIGMA2);
+    // beta = atan2(x, z); with w above the surface (z > 0) beta is in
+    // (-pi/2, pi/2) and (lo, hi) = (-pi/2 - min beta, pi/2 - max beta).
+    let bi = mc_atan_fast(li.x, li.z);
+    let br = mc_atan_fast(lr.x, lr.z);
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok), weft_f0_from_ior(th.eta),
+                     1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
+                     -0.5 * WEFT_PI - min(bi, br), 0.5 * WEFT_PI - max(bi, br), th.eta);
+}
+
+fn mc_schlick(f0: f32, c: f32) -> f32 {
+    return f0 + (1.0 - f0) * weft_pow5(1.0 - saturate(c));
+}
+
+// The factors at offset alpha. Tilting about v rotates the (x, z)
+// components: sin(theta) = x cos(alpha) + z sin(alpha), n'.w = z cos(alpha)
+// - x sin(alpha), cos^2(theta) = y^2 + (n'.w)^2.
+fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
+    let ca = cos(alpha);
+    let sa = sin(alpha);
+    let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
+    let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
+    let ni = q.wi.z * ca - q.wi.x * sa;
+    let nr = q.wr.z * ca - q.wr.x * sa;
+    let ci2 = q.wi.y * q.wi.y + ni * ni;
+    let cr2 = q.wr.y * q.wr.y + nr * nr;
+    let ok = min(ci2, cr2) >= MC_MIN_PROJ2 && q.ok != 0.0;
+    let inv_ci = inverseSqrt(max(ci2, MC_MIN_PROJ2));
+    let inv_cr = inverseSqrt(max(cr2, MC_MIN_PROJ2));
+    let ci = ci2 * inv_ci;
+    let cr = cr2 * inv_cr;
+    let cos_phi_d = clamp((q.wi.y * q.wr.y + ni * nr) * inv_ci * inv_cr, -1.0, 1.0);
+    let cos_half_phi = sqrt(0.5 + 0.5 * cos_phi_d);
+    let phi_d = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(-phi_d * phi_d * MC_U_INV_TWO_SIGMA2);
+    let m = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
+    let p = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    let x = 0.5 * (mc_asin_fast(si) + mc_asin_fast(sr));
+    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
+    let f_r = weft_f_dielectric(sqrt(cd2) * cos_half_phi, q.eta);
+    let f_t = (1.0 - weft_f_dielectric(ci, q.eta)) * (1.0 - weft_f_dielectric(cr, q.eta));
+    let base = select(0.0, m * p * ci / cd2, ok);
+    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / (ci + cr), select(0.0, p, ok));
+}
+
+// A single offset: the lobe itself, (S rgb, P).
+fn mc_fast_point(q: McFastPre, th: McThread, alpha: f32) -> vec4<f32> {
+    let a = mc_fast_node(q, alpha);
+    let ts = a.x * q.inv_gamma_s;
+    let tv = a.x * q.inv_gamma_v;
+    let gs = exp(-0.5 * ts * ts) * MC_INV_SQRT_TWO_PI * q.inv_gamma_s;
+    let gv = exp(-0.5 * tv * tv) * MC_INV_SQRT_TWO_PI * q.inv_gamma_v;
+    return vec4<f32>(vec3<f32>(gs * a.s) + ((1.0 - th.kd) * gv + th.kd) * a.v * th.albedo, a.p);
+}
+
+// Integral of rho(alpha) (S rgb, P) over the offsets alpha in [a0, a1]
+// (either order) by the rule above: rho = 1 when `arc` is false; otherwise
+// rho = (alpha < split ? rate_lo : rate_hi) / cos^3(alpha) (a tangent curve
+// whose slope runs linearly in t: see mc_thread_curve_fast).
+fn mc_fast_range(q: McFastPre, th: McThread, a0: f32, a1: f32, arc: bool, split: f32, rate_lo: f32, rate_hi: f32) -> vec4<f32> {
+    let lo = clamp(q.lo, min(a0, a1), max(a0, a1));
+    let hi = clamp(q.hi, lo, max(a0, a1));
+    let w = hi - lo;
+    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
+    let n0 = mc_fast_node(q, al.x);
+    let n1 = mc_fast_node(q, al.y);
+    let n2 = mc_fast_node(q, al.z);
+    var r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w;
+    if arc {
+        let c = cos(al);
+        r *= select(vec3<f32>(rate_hi), vec3<f32>(rate_lo), al < vec3<f32>(split)) / (c * c * c);
+    }
+    let xe = vec4<f32>(n0.x + MC_GL3_E0 * (n1.x - n0.x), n0.x + MC_GL3_E1 * (n1.x - n0.x),
+                       n2.x - MC_GL3_E1 * (n2.x - n1.x), n2.x - MC_GL3_E0 * (n2.x - n1.x));
+    let gs = mc_cell_means(xe, q.inv_gamma_s);
+    let gv = mc_cell_means(xe, q.inv_gamma_v);
+    let s = r * vec3<f32>(n0.s, n1.s, n2.s);
+    let v = r * vec3<f32>(n0.v, n1.v, n2.v);
+    let surface = dot(gs, s);
+    let volume = (1.0 - th.kd) * dot(gv, v) + th.kd * (v.x + v.y + v.z);
+    return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
+}
+
+// int sqrt(1 + s^2) ds = (s sqrt(1 + s^2) + asinh(s)) / 2.
+fn mc_arc_primitive(s: f32) -> f32 {
+    let h = sqrt(1.0 + s * s);
+    return 0.5 * (s * h + log(abs(s) + h) * sign(s));
+}
+
+// Fast, tangent curve. The profile's slope at t = 0, 1/2, 1 (second-order
+// one-sided differences of the baked samples at the ends, the central
+// difference at 1/2), taken as linear in t on each half (exact for a
+// quadratic profile such as the default). A half whose slope runs from s_a
+// to s_b has arc length (G(s_b) - G(s_a)) / (2 (s_b - s_a)), G the primitive
+// of sqrt(1 + s^2), and its offsets alpha = atan(s) have the arc-length
+// density 1 / (2 |s_b - s_a| cos^3(alpha)). Monotone curves (the slope at
+// 1/2 between the end slopes) are one range of offsets with that piecewise
+// density; otherwise each half is its own range; a half of constant slope is
+// a single offset. Normalised by the total arc length.
+const MC_FAST_MIN_DSLOPE: f32 = 1e-3;
+fn mc_fast_half(q: McFastPre, th: McThread, sa: f32, sb: f32) -> vec4<f32> {
+    let ds = sb - sa;
+    if abs(ds) < MC_FAST_MIN_DSLOPE {
+        let s = 0.5 * (sa + sb);
+        return mc_fast_point(q, th, atan(s)) * (0.5 * sqrt(1.0 + s * s));
+    }
+    let rate = 0.5 / abs(ds);
+    return mc_fast_range(q, th, atan(sa), atan(sb), true, 0.0, rate, rate);
+}
+
+fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let q = mc_fast_pre(fr, wi, wr, th);
+    let n = f32(MC_CURVE_SEGMENTS);
+    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
+    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
+    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
+    let d01 = s1 - s0;
+    let d12 = s2 - s1;
+    // Arc length of each half (the limit sqrt(1 + s^2) / 2 for a constant slope).
+    let len01 = select(0.5 * sqrt(1.0 + s0 * s0), 0.5 * (mc_arc_primitive(s1) - mc_arc_primitive(s0)) / d01, abs(d01) >= MC_FAST_MIN_DSLOPE);
+    let len12 = select(0.5 * sqrt(1.0 + s2 * s2), 0.5 * (mc_arc_primitive(s2) - mc_arc_primitive(s1)) / d12, abs(d12) >= MC_FAST_MIN_DSLOPE);
+    var acc = vec4<f32>(0.0);
+    if d01 * d12 > 0.0 && min(abs(d01), abs(d12)) >= MC_FAST_MIN_DSLOPE {
+        // Monotone: one range; the half nearer the lower offsets has its rate
+        // below alpha(s1).
+        let r01 = 0.5 / abs(d01);
+        let r12 = 0.5 / abs(d12);
+        let rise = d01 > 0.0;
+        acc = mc_fast_range(q, th, atan(s0), atan(s2), true, atan(s1), select(r12, r01, rise), select(r01, r12, rise));
+    } else {
+        acc = mc_fast_half(q, th, s0, s1) + mc_fast_half(q, th, s1, s2);
+    }
+    return acc / max(len01 + len12, 1e-6);
+}
+
+// Fast, offset list: the same piecewise-linear tangent curve as the
+// reference, each segment's offsets (uniform from one control point to the
+// next) integrated by mc_fast_range, a flat segment (or a single control
+// point) evaluated as that one offset; segments weighted equally.
+const MC_FAST_MIN_SPAN: f32 = 1e-4;
+const MC_FAST_SPLIT_DEG: f32 = 60.0;
 fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
     let n = clamp(count, 1, MC_MAX_OFFSETS);
-    let psi = mc_psi_fast(fr.v, wi, wr);
-    var acc = vec4<f32>(0.0);
-    for (var k = 0; k < n; k++) {
-        let a = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        acc += mc_lobe_fast(fr, psi, wi, wr, cos(a), sin(a), th);
+    let q = mc_fast_pre(fr, wi, wr, th);
+    if n == 1 {
+        return mc_fast_point(q, th, offsets_a.x * MC_DEG);
     }
-    return acc / f32(n);
+    var acc = vec4<f32>(0.0);
+    for (var k = 0; k < n - 1; k++) {
+        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
+        let d1 = mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG;
+        let span = abs(d1 - d0);
+        if span < MC_FAST_MIN_SPAN {
+            acc += mc_fast_point(q, th, d0);
+        } else {
+            if span > MC_FAST_SPLIT_DEG * MC_DEG {
+                let dm = 0.5 * (d0 + d1);
+                acc += (mc_fast_range(q, th, d0, dm, false, 0.0, 1.0, 1.0) + mc_fast_range(q, th, dm, d1, false, 0.0, 1.0, 1.0)) / span;
+            } else {
+                acc += mc_fast_range(q, th, d0, d1, false, 0.0, 1.0, 1.0) / span;
+            }
+        }
+    }
+    return acc / f32(n - 1);
 }
 
 // ---------------------------------------------------------------- cloth
