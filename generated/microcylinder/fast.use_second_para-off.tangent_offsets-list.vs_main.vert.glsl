@@ -68,11 +68,10 @@ struct McFastPre {
     float inv_rr;
     float u_psi;
     float ok;
-    float f0_;
     float inv_gamma_s;
     float inv_gamma_v;
-    float lo;
-    float hi;
+    float s_lo;
+    float s_hi;
     float eta;
 };
 struct McFastNode {
@@ -111,9 +110,10 @@ const float MC_GL3_W0_ = 0.2777778;
 const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
-const float MC_FAST_MIN_DSLOPE = 0.001;
+const float MC_FAST_BIG = 1000000.0;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -153,8 +153,8 @@ float weft_f_dielectric(float cos_i, float eta) {
 }
 
 float weft_f0_from_ior(float ior) {
-    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q_3 * q_3);
+    float q_4 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_4 * q_4);
 }
 
 vec3 weft_main_light_direction() {
@@ -254,17 +254,6 @@ vec3 mc_cell_means(vec4 xe, float inv_gamma) {
     return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
 }
 
-float mc_atan_fast(float y, float x_2) {
-    float ax_1 = max(abs(x_2), 1e-20);
-    float ay = abs(y);
-    float r_2 = (min(ax_1, ay) / max(ax_1, ay));
-    float r2_ = (r_2 * r_2);
-    float a_3 = (r_2 * (0.99997723 + (r2_ * (-0.33262348 + (r2_ * (0.19354346 + (r2_ * (-0.11643287 + (r2_ * (0.05265332 - (0.0117212 * r2_)))))))))));
-    float b_4 = ((ay > ax_1) ? (1.5707964 - a_3) : a_3);
-    float c_1 = ((x_2 < 0.0) ? (WEFT_PI - b_4) : b_4);
-    return ((y < 0.0) ? -(c_1) : c_1);
-}
-
 McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
@@ -276,16 +265,15 @@ McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     float _e50 = mc_acos_fast(cos_psi_d);
     float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
-    float _e58 = mc_atan_fast(li.x, li.z);
-    float _e61 = mc_atan_fast(lr.x, lr.z);
-    float _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), _e66, (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (-1.5707964 - min(_e58, _e61)), (1.5707964 - max(_e58, _e61)), th.eta);
+    float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
+    float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
+    float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
+    float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
 }
 
-McFastNode mc_fast_node(McFastPre q, float alpha) {
+McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
     bool local = false;
-    float ca = cos(alpha);
-    float sa = sin(alpha);
     float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
     float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
     float ni = ((q.wi.z * ca) - (q.wi.x * sa));
@@ -304,73 +292,71 @@ McFastNode mc_fast_node(McFastPre q, float alpha) {
     float cr_1 = (cr2_ * inv_cr);
     float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
     float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
-    float _e87 = mc_acos_fast(cos_phi_d);
-    float u_phi = exp(((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_));
-    float _e95 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    float _e101 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    float _e102 = mc_asin_fast(si);
-    float _e103 = mc_asin_fast(sr);
-    float x_3 = (0.5 * (_e102 + _e103));
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = (0.5 * (_e101 + _e102));
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float _e119 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    float _e121 = weft_f_dielectric(ci_1, q.eta);
-    float _e125 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = ((1.0 - _e121) * (1.0 - _e125));
-    float base = (ok_2 ? (((_e95 * _e101) * ci_1) / cd2_) : 0.0);
-    return McFastNode(x_3, ((_e119 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e101 : 0.0));
+    float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = ((1.0 - _e120) * (1.0 - _e124));
+    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e100 : 0.0));
 }
 
-vec4 mc_fast_point(McFastPre q_1, McThread th_1, float alpha_1) {
-    McFastNode _e3 = mc_fast_node(q_1, alpha_1);
-    float ts = (_e3.x * q_1.inv_gamma_s);
-    float tv = (_e3.x * q_1.inv_gamma_v);
+vec4 mc_fast_point(McFastPre q_1, McThread th_1, float alpha) {
+    McFastNode _e5 = mc_fast_node(q_1, cos(alpha), sin(alpha));
+    float ts = (_e5.x * q_1.inv_gamma_s);
+    float tv = (_e5.x * q_1.inv_gamma_v);
     float gs = ((exp(((-0.5 * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
     float gv = ((exp(((-0.5 * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4((vec3((gs * _e3.s)) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo)), _e3.p);
+    return vec4((vec3((gs * _e5.s)) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo)), _e5.p);
 }
 
-vec4 mc_fast_range(McFastPre q_2, McThread th_2, float a0_, float a1_, bool arc, float split, float rate_lo, float rate_hi) {
-    vec3 r = vec3(0.0);
-    float lo = clamp(q_2.lo, min(a0_, a1_), max(a0_, a1_));
-    float hi = clamp(q_2.hi, lo, max(a0_, a1_));
+vec4 mc_fast_gl3_(McFastPre q_2, McThread th_2, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
+    vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    vec3 _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
+    vec3 _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    vec3 s_2 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
+    float surface = dot(_e36, s_2);
+    float volume = (((1.0 - th_2.kd) * dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4((vec3(surface) + (volume * th_2.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
+}
+
+vec4 mc_fast_segment(McFastPre q_3, McThread th_3, float a0_, float a1_) {
+    float lo = clamp(atan(q_3.s_lo), min(a0_, a1_), max(a0_, a1_));
+    float hi = clamp(atan(q_3.s_hi), lo, max(a0_, a1_));
     float w = (hi - lo);
     vec3 al = vec3((lo + (MC_GL3_T * w)), (lo + (0.5 * w)), (hi - (MC_GL3_T * w)));
-    McFastNode _e27 = mc_fast_node(q_2, al.x);
-    McFastNode _e29 = mc_fast_node(q_2, al.y);
-    McFastNode _e31 = mc_fast_node(q_2, al.z);
-    r = (vec3(0.2777778, 0.44444445, 0.2777778) * w);
-    if (arc) {
-        vec3 c_2 = cos(al);
-        vec3 _e39 = r;
-        r = (_e39 * (mix(vec3(rate_hi), vec3(rate_lo), lessThan(al, vec3(split))) / ((c_2 * c_2) * c_2)));
-    }
-    vec4 xe_1 = vec4((_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x))), (_e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x))), (_e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x))), (_e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x))));
-    vec3 _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    vec3 _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    vec3 _e82 = r;
-    vec3 s_2 = (_e82 * vec3(_e27.s, _e29.s, _e31.s));
-    vec3 _e88 = r;
-    vec3 v_1 = (_e88 * vec3(_e27.v, _e29.v, _e31.v));
-    float surface = dot(_e79, s_2);
-    float volume = (((1.0 - th_2.kd) * dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    vec3 _e112 = r;
-    return vec4((vec3(surface) + (volume * th_2.albedo)), dot(_e112, vec3(_e27.p, _e29.p, _e31.p)));
+    vec3 ca_1 = cos(al);
+    vec3 sa_1 = sin(al);
+    McFastNode _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
+    McFastNode _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
+    McFastNode _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
+    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (w / abs((a1_ - a0_))));
+    vec4 _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
+    return _e43;
 }
 
-vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a, vec4 offsets_b, int count) {
+vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_4, vec4 offsets_a, vec4 offsets_b, int count) {
     vec4 acc = vec4(0.0);
     int k_1 = 0;
     int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
     if ((n_3 == 1)) {
-        vec4 _e16 = mc_fast_point(_e10, th_3, (offsets_a.x * MC_DEG));
+        vec4 _e16 = mc_fast_point(_e10, th_4, (offsets_a.x * MC_DEG));
         return _e16;
     }
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e73 = k_1;
-            k_1 = (_e73 + 1);
+            int _e59 = k_1;
+            k_1 = (_e59 + 1);
         }
         loop_init = false;
         int _e22 = k_1;
@@ -388,25 +374,25 @@ vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4
             float span = abs((d1_ - d0_));
             if ((span < MC_FAST_MIN_SPAN)) {
                 vec4 _e40 = acc;
-                vec4 _e41 = mc_fast_point(_e10, th_3, d0_);
+                vec4 _e41 = mc_fast_point(_e10, th_4, d0_);
                 acc = (_e40 + _e41);
             } else {
                 if ((span > 1.0471976)) {
                     float dm = (0.5 * (d0_ + d1_));
                     vec4 _e48 = acc;
-                    vec4 _e53 = mc_fast_range(_e10, th_3, d0_, dm, false, 0.0, 1.0, 1.0);
-                    vec4 _e58 = mc_fast_range(_e10, th_3, dm, d1_, false, 0.0, 1.0, 1.0);
-                    acc = (_e48 + ((_e53 + _e58) / vec4(span)));
+                    vec4 _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
+                    vec4 _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
+                    acc = (_e48 + (0.5 * (_e49 + _e50)));
                 } else {
-                    vec4 _e63 = acc;
-                    vec4 _e68 = mc_fast_range(_e10, th_3, d0_, d1_, false, 0.0, 1.0, 1.0);
-                    acc = (_e63 + (_e68 / vec4(span)));
+                    vec4 _e55 = acc;
+                    vec4 _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
+                    acc = (_e55 + _e56);
                 }
             }
         }
     }
-    vec4 _e75 = acc;
-    return (_e75 / vec4(float((n_3 - 1))));
+    vec4 _e61 = acc;
+    return (_e61 / vec4(float((n_3 - 1))));
 }
 
 vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float n_dot_wr) {
@@ -415,7 +401,7 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float
     float c1_ = clamp(a1_1, 0.0, 1.0);
     float c2_ = clamp(a2_, 0.0, 1.0);
     float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
     vec3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
     if ((n_dot_wi > 0.0)) {
         local_1 = (n_dot_wr > 0.0);
@@ -424,12 +410,12 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = (q_4 > MC_MIN_Q);
+        local_2 = (q_5 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     bool lit = local_2;
-    return (lit ? (s_3 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+    return (lit ? (s_3 / vec3(max(q_5, MC_MIN_Q))) : vec3(0.0));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {

@@ -68,11 +68,10 @@ struct McFastPre {
     float inv_rr;
     float u_psi;
     float ok;
-    float f0_;
     float inv_gamma_s;
     float inv_gamma_v;
-    float lo;
-    float hi;
+    float s_lo;
+    float s_hi;
     float eta;
 };
 struct McFastNode {
@@ -111,9 +110,10 @@ const float MC_GL3_W0_ = 0.2777778;
 const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
-const float MC_FAST_MIN_DSLOPE = 0.001;
+const float MC_FAST_BIG = 1000000.0;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -152,8 +152,8 @@ float weft_f_dielectric(float cos_i, float eta) {
 }
 
 float weft_f0_from_ior(float ior) {
-    float q_4 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q_4 * q_4);
+    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_3 * q_3);
 }
 
 vec3 weft_main_light_direction() {
@@ -203,10 +203,10 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_2);
-    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_1) * s_2);
-    return mat3x3(t_1, b_2, n_2);
+    vec3 b_2 = (cross(n_2, t_2) * s_2);
+    return mat3x3(t_2, b_2, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -240,24 +240,13 @@ vec4[2] mc_normal4_(vec4 t) {
 }
 
 vec3 mc_cell_means(vec4 xe, float inv_gamma) {
-    vec4 t_2 = (xe * inv_gamma);
-    vec4 _e3[2] = mc_normal4_(t_2);
-    vec3 dt = (t_2.yzw - t_2.xyz);
+    vec4 t_3 = (xe * inv_gamma);
+    vec4 _e3[2] = mc_normal4_(t_3);
+    vec3 dt = (t_3.yzw - t_3.xyz);
     bvec3 wide = greaterThanEqual(abs(dt), vec3(0.1));
     vec3 exact = ((_e3[1].yzw - _e3[1].xyz) / mix(vec3(1.0), dt, wide));
     vec3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
     return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
-}
-
-float mc_atan_fast(float y, float x_2) {
-    float ax_1 = max(abs(x_2), 1e-20);
-    float ay = abs(y);
-    float r_2 = (min(ax_1, ay) / max(ax_1, ay));
-    float r2_ = (r_2 * r_2);
-    float a_2 = (r_2 * (0.99997723 + (r2_ * (-0.33262348 + (r2_ * (0.19354346 + (r2_ * (-0.11643287 + (r2_ * (0.05265332 - (0.0117212 * r2_)))))))))));
-    float b_3 = ((ay > ax_1) ? (1.5707964 - a_2) : a_2);
-    float c_1 = ((x_2 < 0.0) ? (WEFT_PI - b_3) : b_3);
-    return ((y < 0.0) ? -(c_1) : c_1);
 }
 
 McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
@@ -271,20 +260,19 @@ McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     float _e50 = mc_acos_fast(cos_psi_d);
     float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
-    float _e58 = mc_atan_fast(li.x, li.z);
-    float _e61 = mc_atan_fast(lr.x, lr.z);
-    float _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), _e66, (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (-1.5707964 - min(_e58, _e61)), (1.5707964 - max(_e58, _e61)), th.eta);
+    float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
+    float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
+    float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
+    float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
 }
 
-McFastNode mc_fast_node(McFastPre q, float alpha) {
+McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
     bool local = false;
-    float ca = cos(alpha);
-    float sa_1 = sin(alpha);
-    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa_1)), -1.0, 1.0);
-    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa_1)), -1.0, 1.0);
-    float ni = ((q.wi.z * ca) - (q.wi.x * sa_1));
-    float nr = ((q.wr.z * ca) - (q.wr.x * sa_1));
+    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
+    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
+    float ni = ((q.wi.z * ca) - (q.wi.x * sa));
+    float nr = ((q.wr.z * ca) - (q.wr.x * sa));
     float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
@@ -299,120 +287,103 @@ McFastNode mc_fast_node(McFastPre q, float alpha) {
     float cr_1 = (cr2_ * inv_cr);
     float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
     float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
-    float _e87 = mc_acos_fast(cos_phi_d);
-    float u_phi = exp(((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_));
-    float _e95 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    float _e101 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    float _e102 = mc_asin_fast(si);
-    float _e103 = mc_asin_fast(sr);
-    float x_3 = (0.5 * (_e102 + _e103));
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = (0.5 * (_e101 + _e102));
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float _e119 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    float _e121 = weft_f_dielectric(ci_1, q.eta);
-    float _e125 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = ((1.0 - _e121) * (1.0 - _e125));
-    float base = (ok_2 ? (((_e95 * _e101) * ci_1) / cd2_) : 0.0);
-    return McFastNode(x_3, ((_e119 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e101 : 0.0));
+    float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = ((1.0 - _e120) * (1.0 - _e124));
+    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e100 : 0.0));
 }
 
-vec4 mc_fast_point(McFastPre q_1, McThread th_1, float alpha_1) {
-    McFastNode _e3 = mc_fast_node(q_1, alpha_1);
-    float ts = (_e3.x * q_1.inv_gamma_s);
-    float tv = (_e3.x * q_1.inv_gamma_v);
-    float gs = ((exp(((-0.5 * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
-    float gv = ((exp(((-0.5 * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4((vec3((gs * _e3.s)) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo)), _e3.p);
+vec4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
+    vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    vec3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    vec3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
+    float surface = dot(_e36, s_3);
+    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
-vec4 mc_fast_range(McFastPre q_2, McThread th_2, float a0_, float a1_, bool arc, float split, float rate_lo, float rate_hi) {
-    vec3 r = vec3(0.0);
-    float lo = clamp(q_2.lo, min(a0_, a1_), max(a0_, a1_));
-    float hi = clamp(q_2.hi, lo, max(a0_, a1_));
-    float w = (hi - lo);
-    vec3 al = vec3((lo + (MC_GL3_T * w)), (lo + (0.5 * w)), (hi - (MC_GL3_T * w)));
-    McFastNode _e27 = mc_fast_node(q_2, al.x);
-    McFastNode _e29 = mc_fast_node(q_2, al.y);
-    McFastNode _e31 = mc_fast_node(q_2, al.z);
-    r = (vec3(0.2777778, 0.44444445, 0.2777778) * w);
-    if (arc) {
-        vec3 c_2 = cos(al);
-        vec3 _e39 = r;
-        r = (_e39 * (mix(vec3(rate_hi), vec3(rate_lo), lessThan(al, vec3(split))) / ((c_2 * c_2) * c_2)));
+vec2 mc_fast_half_clip(McFastPre q_2, float sa_1, float sb, float ta) {
+    bool local_1 = false;
+    float ds = (sb - sa_1);
+    bool flat_ = (abs(ds) < MC_FAST_MIN_DSLOPE);
+    float inv = (1.0 / (flat_ ? 1.0 : ds));
+    float u0_ = ((q_2.s_lo - sa_1) * inv);
+    float u1_ = ((q_2.s_hi - sa_1) * inv);
+    if ((sa_1 > q_2.s_lo)) {
+        local_1 = (sa_1 < q_2.s_hi);
+    } else {
+        local_1 = false;
     }
-    vec4 xe_1 = vec4((_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x))), (_e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x))), (_e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x))), (_e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x))));
-    vec3 _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    vec3 _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    vec3 _e82 = r;
-    vec3 s_3 = (_e82 * vec3(_e27.s, _e29.s, _e31.s));
-    vec3 _e88 = r;
-    vec3 v_1 = (_e88 * vec3(_e27.v, _e29.v, _e31.v));
-    float surface = dot(_e79, s_3);
-    float volume = (((1.0 - th_2.kd) * dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    vec3 _e112 = r;
-    return vec4((vec3(surface) + (volume * th_2.albedo)), dot(_e112, vec3(_e27.p, _e29.p, _e31.p)));
+    bool _e31 = local_1;
+    vec2 uf = (_e31 ? vec2(0.0, 1.0) : vec2(1.0, 0.0));
+    vec2 u_1 = (flat_ ? uf : vec2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
+    return ((u_1.x < u_1.y) ? (vec2(ta) + (0.5 * u_1)) : vec2(2.0, -1.0));
+}
+
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t_1) {
+    return ((t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0))));
 }
 
 float mc_arc_primitive(float s) {
     float h = sqrt((1.0 + (s * s)));
-    return (0.5 * ((s * h) + (log((abs(s) + h)) * sign(s))));
+    return (0.5 * ((s * h) + (sign(s) * log((abs(s) + h)))));
 }
 
-vec4 mc_fast_half(McFastPre q_3, McThread th_3, float sa, float sb) {
-    float ds = (sb - sa);
-    if ((abs(ds) < MC_FAST_MIN_DSLOPE)) {
-        float s_4 = (0.5 * (sa + sb));
-        vec4 _e12 = mc_fast_point(q_3, th_3, atan(s_4));
-        return (_e12 * (0.5 * sqrt((1.0 + (s_4 * s_4)))));
-    }
-    float rate = (0.5 / abs(ds));
-    vec4 _e27 = mc_fast_range(q_3, th_3, atan(sa), atan(sb), true, 0.0, rate, rate);
-    return _e27;
+float mc_fast_half_length(float sa_2, float sb_1) {
+    float ds_1 = (sb_1 - sa_2);
+    float sm = (0.5 * (sa_2 + sb_1));
+    float _e6 = mc_arc_primitive(sb_1);
+    float _e7 = mc_arc_primitive(sa_2);
+    return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
 }
 
-vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_4, vec4 heights[9]) {
-    vec4 acc = vec4(0.0);
-    bool local_1 = false;
-    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    float s0_ = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
-    float s1_1 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
-    float s2_1 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
-    float d01_ = (s1_1 - s0_);
-    float d12_ = (s2_1 - s1_1);
-    float _e53 = mc_arc_primitive(s1_1);
-    float _e54 = mc_arc_primitive(s0_);
-    float len01_ = ((abs(d01_) >= MC_FAST_MIN_DSLOPE) ? ((0.5 * (_e53 - _e54)) / d01_) : (0.5 * sqrt((1.0 + (s0_ * s0_)))));
-    float _e69 = mc_arc_primitive(s2_1);
-    float _e70 = mc_arc_primitive(s1_1);
-    float len12_ = ((abs(d12_) >= MC_FAST_MIN_DSLOPE) ? ((0.5 * (_e69 - _e70)) / d12_) : (0.5 * sqrt((1.0 + (s2_1 * s2_1)))));
-    if (((d01_ * d12_) > 0.0)) {
-        local_1 = (min(abs(d01_), abs(d12_)) >= MC_FAST_MIN_DSLOPE);
-    } else {
-        local_1 = false;
-    }
-    bool _e93 = local_1;
-    if (_e93) {
-        float r01_ = (0.5 / abs(d01_));
-        float r12_ = (0.5 / abs(d12_));
-        bool rise = (d01_ > 0.0);
-        vec4 _e108 = mc_fast_range(_e5, th_4, atan(s0_), atan(s2_1), true, atan(s1_1), (rise ? r01_ : r12_), (rise ? r12_ : r01_));
-        acc = _e108;
-    } else {
-        vec4 _e109 = mc_fast_half(_e5, th_4, s0_, s1_1);
-        vec4 _e110 = mc_fast_half(_e5, th_4, s1_1, s2_1);
-        acc = (_e109 + _e110);
-    }
-    vec4 _e112 = acc;
-    return (_e112 / vec4(max((len01_ + len12_), 1e-6)));
+vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec4 heights[9]) {
+    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
+    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
+    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
+    vec2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
+    vec2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
+    float t0_ = min(_e46.x, _e48.x);
+    float t1_1 = max(max(_e46.y, _e48.y), t0_);
+    float w = (t1_1 - t0_);
+    vec3 t_4 = vec3((t0_ + (MC_GL3_T * w)), (t0_ + (0.5 * w)), (t1_1 - (MC_GL3_T * w)));
+    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    vec3 sl = vec3(_e68, _e70, _e72);
+    vec3 inv_len = inversesqrt((vec3(1.0) + (sl * sl)));
+    McFastNode _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    McFastNode _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    McFastNode _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
+    vec3 r_2 = ((vec3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len);
+    float _e100 = mc_fast_half_length(s0_1, s1_2);
+    float _e101 = mc_fast_half_length(s1_2, s2_2);
+    float total = (_e100 + _e101);
+    vec4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return (_e103 / vec4(max(total, 1e-6)));
 }
 
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float n_dot_wr) {
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
     bool local_2 = false;
     bool local_3 = false;
-    float c1_ = clamp(a1_1, 0.0, 1.0);
+    float c1_ = clamp(a1_, 0.0, 1.0);
     float c2_ = clamp(a2_, 0.0, 1.0);
     float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_5 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
     if ((n_dot_wi > 0.0)) {
         local_2 = (n_dot_wr > 0.0);
     } else {
@@ -420,12 +391,12 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float
     }
     bool _e37 = local_2;
     if (_e37) {
-        local_3 = (q_5 > MC_MIN_Q);
+        local_3 = (q_4 > MC_MIN_Q);
     } else {
         local_3 = false;
     }
     bool lit = local_3;
-    return (lit ? (s_5 / vec3(max(q_5, MC_MIN_Q))) : vec3(0.0));
+    return (lit ? (s_4 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
@@ -458,7 +429,7 @@ void main() {
     float _e45 = _group_1_binding_0_fs.thread2_gamma_v;
     McThread _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
     float _e49 = _group_1_binding_0_fs.thread1_coverage;
-    float a1_2 = clamp(_e49, 0.0, 1.0);
+    float a1_1 = clamp(_e49, 0.0, 1.0);
     float _e53 = _group_1_binding_0_fs.thread2_coverage;
     float a2_1 = (true ? clamp(_e53, 0.0, 1.0) : 0.0);
     float _e60 = _group_1_binding_0_fs.brightness;
@@ -466,12 +437,12 @@ void main() {
     vec3 _e68 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
     vec3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     mat3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    vec3 t_3 = _e72[0];
-    vec3 b_4 = _e72[1];
+    vec3 t_5 = _e72[0];
+    vec3 b_3 = _e72[1];
     vec3 _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001 - dot(_e70, _e68)), 0.0))), _e70);
     vec3 _e83 = weft_main_light_direction();
-    McFrame warp = McFrame(t_3, b_4, _e70);
-    McFrame weft = McFrame(b_4, t_3, _e70);
+    McFrame warp = McFrame(t_5, b_3, _e70);
+    McFrame weft = McFrame(b_3, t_5, _e70);
     {
         {
             vec4 _e94[9] = _group_1_binding_0_fs.thread1_curve;
@@ -486,15 +457,15 @@ void main() {
     }
     vec4 _e100 = s1_;
     vec4 _e101 = s2_;
-    vec3 _e104 = mc_combine(_e100, _e101, a1_2, a2_1, dot(_e70, _e83), dot(_e70, _e82));
+    vec3 _e104 = mc_combine(_e100, _e101, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
     vec3 _e105 = weft_main_light_radiance();
     vec3 direct = (_e104 * _e105);
     float _e109 = microcylinder_mean_fresnel(_e29.eta);
     vec3 amb1_ = (_e29.albedo + vec3(_e109));
     float _e114 = microcylinder_mean_fresnel(_e46.eta);
     vec3 amb2_ = (_e46.albedo + vec3(_e114));
-    float cov = (a1_2 + a2_1);
-    vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
+    float cov = (a1_1 + a2_1);
+    vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
     vec3 _e128 = weft_sh_irradiance(_e70);
     vec3 ambient = (_e128 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));

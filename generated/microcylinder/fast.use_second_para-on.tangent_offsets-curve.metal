@@ -83,13 +83,11 @@ struct McFastPre {
     float inv_rr;
     float u_psi;
     float ok;
-    float f0_;
     float inv_gamma_s;
     float inv_gamma_v;
-    float lo;
-    float hi;
+    float s_lo;
+    float s_hi;
     float eta;
-    char _pad12[12];
 };
 struct McFastNode {
     float x;
@@ -130,9 +128,10 @@ constant float MC_GL3_W0_ = 0.2777778;
 constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
-constant float MC_FAST_MIN_DSLOPE = 0.001;
+constant float MC_FAST_BIG = 1000000.0;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -169,8 +168,8 @@ float weft_f_dielectric(
 float weft_f0_from_ior(
     float ior
 ) {
-    float q_4 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
-    return q_4 * q_4;
+    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_3 * q_3;
 }
 
 metal::float3 weft_main_light_direction(
@@ -234,10 +233,10 @@ metal::float3x3 weft_tangent_frame(
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_2);
-    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    metal::float3 t_2 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t_1) * s_2;
-    return metal::float3x3(t_1, b_2, n_2);
+    metal::float3 b_2 = metal::cross(n_2, t_2) * s_2;
+    return metal::float3x3(t_2, b_2, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -287,27 +286,13 @@ metal::float3 mc_cell_means(
     metal::float4 xe,
     float inv_gamma
 ) {
-    metal::float4 t_2 = xe * inv_gamma;
-    type_12 _e3 = mc_normal4_(t_2);
-    metal::float3 dt = t_2.yzw - t_2.xyz;
+    metal::float4 t_3 = xe * inv_gamma;
+    type_12 _e3 = mc_normal4_(t_3);
+    metal::float3 dt = t_3.yzw - t_3.xyz;
     metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
     metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
     metal::float3 trap = 0.5 * (_e3.inner[0].xyz + _e3.inner[0].yzw);
     return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
-}
-
-float mc_atan_fast(
-    float y,
-    float x_2
-) {
-    float ax_1 = metal::max(metal::abs(x_2), 0.00000000000000000001);
-    float ay = metal::abs(y);
-    float r_2 = metal::min(ax_1, ay) / metal::max(ax_1, ay);
-    float r2_ = r_2 * r_2;
-    float a_2 = r_2 * (0.99997723 + (r2_ * (-0.33262348 + (r2_ * (0.19354346 + (r2_ * (-0.11643287 + (r2_ * (0.05265332 - (0.0117212 * r2_))))))))));
-    float b_3 = (ay > ax_1) ? (1.5707964 - a_2) : a_2;
-    float c_1 = (x_2 < 0.0) ? (WEFT_PI - b_3) : b_3;
-    return (y < 0.0) ? -(c_1) : c_1;
 }
 
 McFastPre mc_fast_pre(
@@ -326,23 +311,23 @@ McFastPre mc_fast_pre(
     float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
     float _e50 = mc_acos_fast(cos_psi_d);
     float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
-    float _e58 = mc_atan_fast(li.x, li.z);
-    float _e61 = mc_atan_fast(lr.x, lr.z);
-    float _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, _e66, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), -1.5707964 - metal::min(_e58, _e61), 1.5707964 - metal::max(_e58, _e61), th.eta};
+    float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
+    float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
+    float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
+    float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
+    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
 }
 
 McFastNode mc_fast_node(
     McFastPre q,
-    float alpha
+    float ca,
+    float sa
 ) {
     bool local = {};
-    float ca = metal::cos(alpha);
-    float sa_1 = metal::sin(alpha);
-    float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa_1), -1.0, 1.0);
-    float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa_1), -1.0, 1.0);
-    float ni = (q.wi.z * ca) - (q.wi.x * sa_1);
-    float nr = (q.wr[2] * ca) - (q.wr[0] * sa_1);
+    float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa), -1.0, 1.0);
+    float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa), -1.0, 1.0);
+    float ni = (q.wi.z * ca) - (q.wi.x * sa);
+    float nr = (q.wr[2] * ca) - (q.wr[0] * sa);
     float ci2_ = (q.wi.y * q.wi.y) + (ni * ni);
     float cr2_ = (q.wr[1] * q.wr[1]) + (nr * nr);
     if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
@@ -357,153 +342,138 @@ McFastNode mc_fast_node(
     float cr_1 = cr2_ * inv_cr;
     float cos_phi_d = metal::clamp((((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
     float cos_half_phi = metal::sqrt(0.5 + (0.5 * cos_phi_d));
-    float _e87 = mc_acos_fast(cos_phi_d);
-    float u_phi = metal::exp((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_);
-    float _e95 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
-    float _e101 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
-    float _e102 = mc_asin_fast(si);
-    float _e103 = mc_asin_fast(sr);
-    float x_3 = 0.5 * (_e102 + _e103);
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = metal::exp((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_);
+    float _e94 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
+    float _e100 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = 0.5 * (_e101 + _e102);
     float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
-    float _e119 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
-    float _e121 = weft_f_dielectric(ci_1, q.eta);
-    float _e125 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = (1.0 - _e121) * (1.0 - _e125);
-    float base = ok_2 ? (((_e95 * _e101) * ci_1) / cd2_) : 0.0;
-    return McFastNode {x_3, (_e119 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e101 : 0.0};
+    float _e118 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = (1.0 - _e120) * (1.0 - _e124);
+    float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
+    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e100 : 0.0};
 }
 
-metal::float4 mc_fast_point(
+metal::float4 mc_fast_gl3_(
     McFastPre q_1,
     McThread th_1,
-    float alpha_1
+    McFastNode n0_,
+    McFastNode n1_,
+    McFastNode n2_,
+    metal::float3 r
 ) {
-    McFastNode _e3 = mc_fast_node(q_1, alpha_1);
-    float ts = _e3.x * q_1.inv_gamma_s;
-    float tv = _e3.x * q_1.inv_gamma_v;
-    float gs = (metal::exp((-0.5 * ts) * ts) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s;
-    float gv = (metal::exp((-0.5 * tv) * tv) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v;
-    return metal::float4(metal::float3(gs * _e3.s) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo), _e3.p);
+    metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
+    metal::float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    metal::float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
+    float surface = metal::dot(_e36, s_3);
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
+    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
 }
 
-metal::float4 mc_fast_range(
+metal::float2 mc_fast_half_clip(
     McFastPre q_2,
-    McThread th_2,
-    float a0_,
-    float a1_,
-    bool arc,
-    float split,
-    float rate_lo,
-    float rate_hi
+    float sa_1,
+    float sb,
+    float ta
 ) {
-    metal::float3 r = {};
-    float lo = metal::clamp(q_2.lo, metal::min(a0_, a1_), metal::max(a0_, a1_));
-    float hi = metal::clamp(q_2.hi, lo, metal::max(a0_, a1_));
-    float w = hi - lo;
-    metal::float3 al = metal::float3(lo + (MC_GL3_T * w), lo + (0.5 * w), hi - (MC_GL3_T * w));
-    McFastNode _e27 = mc_fast_node(q_2, al.x);
-    McFastNode _e29 = mc_fast_node(q_2, al.y);
-    McFastNode _e31 = mc_fast_node(q_2, al.z);
-    r = metal::float3(0.2777778, 0.44444445, 0.2777778) * w;
-    if (arc) {
-        metal::float3 c_2 = metal::cos(al);
-        metal::float3 _e39 = r;
-        r = _e39 * (metal::select(metal::float3(rate_hi), metal::float3(rate_lo), al < metal::float3(split)) / ((c_2 * c_2) * c_2));
+    bool local_1 = {};
+    float ds = sb - sa_1;
+    bool flat = metal::abs(ds) < MC_FAST_MIN_DSLOPE;
+    float inv = 1.0 / (flat ? 1.0 : ds);
+    float u0_ = (q_2.s_lo - sa_1) * inv;
+    float u1_ = (q_2.s_hi - sa_1) * inv;
+    if (sa_1 > q_2.s_lo) {
+        local_1 = sa_1 < q_2.s_hi;
+    } else {
+        local_1 = false;
     }
-    metal::float4 xe_1 = metal::float4(_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x)), _e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x)), _e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x)), _e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x)));
-    metal::float3 _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    metal::float3 _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    metal::float3 _e82 = r;
-    metal::float3 s_3 = _e82 * metal::float3(_e27.s, _e29.s, _e31.s);
-    metal::float3 _e88 = r;
-    metal::float3 v_1 = _e88 * metal::float3(_e27.v, _e29.v, _e31.v);
-    float surface = metal::dot(_e79, s_3);
-    float volume = ((1.0 - th_2.kd) * metal::dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z));
-    metal::float3 _e112 = r;
-    return metal::float4(metal::float3(surface) + (volume * th_2.albedo), metal::dot(_e112, metal::float3(_e27.p, _e29.p, _e31.p)));
+    bool _e31 = local_1;
+    metal::float2 uf = _e31 ? metal::float2(0.0, 1.0) : metal::float2(1.0, 0.0);
+    metal::float2 u_1 = flat ? uf : metal::float2(metal::max(metal::min(u0_, u1_), 0.0), metal::min(metal::max(u0_, u1_), 1.0));
+    return (u_1.x < u_1.y) ? (metal::float2(ta) + (0.5 * u_1)) : metal::float2(2.0, -1.0);
+}
+
+float mc_fast_slope(
+    float s0_,
+    float s1_1,
+    float s2_1,
+    float t_1
+) {
+    return (t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0)));
 }
 
 float mc_arc_primitive(
     float s
 ) {
     float h = metal::sqrt(1.0 + (s * s));
-    return 0.5 * ((s * h) + (metal::log(metal::abs(s) + h) * metal::sign(s)));
+    return 0.5 * ((s * h) + (metal::sign(s) * metal::log(metal::abs(s) + h)));
 }
 
-metal::float4 mc_fast_half(
-    McFastPre q_3,
-    McThread th_3,
-    float sa,
-    float sb
+float mc_fast_half_length(
+    float sa_2,
+    float sb_1
 ) {
-    float ds = sb - sa;
-    if (metal::abs(ds) < MC_FAST_MIN_DSLOPE) {
-        float s_4 = 0.5 * (sa + sb);
-        metal::float4 _e12 = mc_fast_point(q_3, th_3, metal::atan(s_4));
-        return _e12 * (0.5 * metal::sqrt(1.0 + (s_4 * s_4)));
-    }
-    float rate = 0.5 / metal::abs(ds);
-    metal::float4 _e27 = mc_fast_range(q_3, th_3, metal::atan(sa), metal::atan(sb), true, 0.0, rate, rate);
-    return _e27;
+    float ds_1 = sb_1 - sa_2;
+    float sm = 0.5 * (sa_2 + sb_1);
+    float _e6 = mc_arc_primitive(sb_1);
+    float _e7 = mc_arc_primitive(sa_2);
+    return (metal::abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * metal::sqrt(1.0 + (sm * sm))) : ((0.5 * (_e6 - _e7)) / ds_1);
 }
 
 metal::float4 mc_thread_curve_fast(
     McFrame fr_1,
     metal::float3 wi_1,
     metal::float3 wr_1,
-    McThread th_4,
+    McThread th_2,
     type_5 heights
 ) {
-    metal::float4 acc = metal::float4(0.0);
-    bool local_1 = {};
-    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    float s0_ = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
-    float s1_1 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
-    float s2_1 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
-    float d01_ = s1_1 - s0_;
-    float d12_ = s2_1 - s1_1;
-    float _e53 = mc_arc_primitive(s1_1);
-    float _e54 = mc_arc_primitive(s0_);
-    float len01_ = (metal::abs(d01_) >= MC_FAST_MIN_DSLOPE) ? ((0.5 * (_e53 - _e54)) / d01_) : (0.5 * metal::sqrt(1.0 + (s0_ * s0_)));
-    float _e69 = mc_arc_primitive(s2_1);
-    float _e70 = mc_arc_primitive(s1_1);
-    float len12_ = (metal::abs(d12_) >= MC_FAST_MIN_DSLOPE) ? ((0.5 * (_e69 - _e70)) / d12_) : (0.5 * metal::sqrt(1.0 + (s2_1 * s2_1)));
-    if ((d01_ * d12_) > 0.0) {
-        local_1 = metal::min(metal::abs(d01_), metal::abs(d12_)) >= MC_FAST_MIN_DSLOPE;
-    } else {
-        local_1 = false;
-    }
-    bool _e93 = local_1;
-    if (_e93) {
-        float r01_ = 0.5 / metal::abs(d01_);
-        float r12_ = 0.5 / metal::abs(d12_);
-        bool rise = d01_ > 0.0;
-        metal::float4 _e108 = mc_fast_range(_e5, th_4, metal::atan(s0_), metal::atan(s2_1), true, metal::atan(s1_1), rise ? r01_ : r12_, rise ? r12_ : r01_);
-        acc = _e108;
-    } else {
-        metal::float4 _e109 = mc_fast_half(_e5, th_4, s0_, s1_1);
-        metal::float4 _e110 = mc_fast_half(_e5, th_4, s1_1, s2_1);
-        acc = _e109 + _e110;
-    }
-    metal::float4 _e112 = acc;
-    return _e112 / metal::float4(metal::max(len01_ + len12_, 0.000001));
+    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    float s0_1 = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
+    float s1_2 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
+    float s2_2 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
+    metal::float2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
+    metal::float2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
+    float t0_ = metal::min(_e46.x, _e48.x);
+    float t1_1 = metal::max(metal::max(_e46.y, _e48.y), t0_);
+    float w = t1_1 - t0_;
+    metal::float3 t_4 = metal::float3(t0_ + (MC_GL3_T * w), t0_ + (0.5 * w), t1_1 - (MC_GL3_T * w));
+    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    metal::float3 sl = metal::float3(_e68, _e70, _e72);
+    metal::float3 inv_len = metal::rsqrt(metal::float3(1.0) + (sl * sl));
+    McFastNode _e83 = mc_fast_node(_e5, inv_len.x, sl.x * inv_len.x);
+    McFastNode _e88 = mc_fast_node(_e5, inv_len.y, sl.y * inv_len.y);
+    McFastNode _e93 = mc_fast_node(_e5, inv_len.z, sl.z * inv_len.z);
+    metal::float3 r_2 = (metal::float3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len;
+    float _e100 = mc_fast_half_length(s0_1, s1_2);
+    float _e101 = mc_fast_half_length(s1_2, s2_2);
+    float total = _e100 + _e101;
+    metal::float4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return _e103 / metal::float4(metal::max(total, 0.000001));
 }
 
 metal::float3 mc_combine(
     metal::float4 t1_,
     metal::float4 t2_,
-    float a1_1,
+    float a1_,
     float a2_,
     float n_dot_wi,
     float n_dot_wr
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    float c1_ = metal::saturate(a1_1);
+    float c1_ = metal::saturate(a1_);
     float c2_ = metal::saturate(a2_);
     float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_5 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_5 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_4 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
     if (n_dot_wi > 0.0) {
         local_2 = n_dot_wr > 0.0;
     } else {
@@ -511,12 +481,12 @@ metal::float3 mc_combine(
     }
     bool _e37 = local_2;
     if (_e37) {
-        local_3 = q_5 > MC_MIN_Q;
+        local_3 = q_4 > MC_MIN_Q;
     } else {
         local_3 = false;
     }
     bool lit = local_3;
-    return lit ? (s_5 / metal::float3(metal::max(q_5, MC_MIN_Q))) : metal::float3(0.0);
+    return lit ? (s_4 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McThread microcylinder_thread(
@@ -615,7 +585,7 @@ fragment fs_mainOutput fs_main(
     float _e45 = material.thread2_gamma_v;
     McThread _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
     float _e49 = material.thread1_coverage;
-    float a1_2 = metal::saturate(_e49);
+    float a1_1 = metal::saturate(_e49);
     float _e53 = material.thread2_coverage;
     float a2_1 = true ? metal::saturate(_e53) : 0.0;
     float _e60 = material.brightness;
@@ -623,12 +593,12 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e68 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    metal::float3 t_3 = _e72[0];
-    metal::float3 b_4 = _e72[1];
+    metal::float3 t_5 = _e72[0];
+    metal::float3 b_3 = _e72[1];
     metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
     metal::float3 _e83 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_3, b_4, _e70};
-    McFrame weft = McFrame {b_4, t_3, _e70};
+    McFrame warp = McFrame {t_5, b_3, _e70};
+    McFrame weft = McFrame {b_3, t_5, _e70};
     {
         {
             type_5 _e94 = material.thread1_curve;
@@ -643,15 +613,15 @@ fragment fs_mainOutput fs_main(
     }
     metal::float4 _e100 = s1_;
     metal::float4 _e101 = s2_;
-    metal::float3 _e104 = mc_combine(_e100, _e101, a1_2, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
+    metal::float3 _e104 = mc_combine(_e100, _e101, a1_1, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
     metal::float3 _e105 = weft_main_light_radiance(weft_frame);
     metal::float3 direct = _e104 * _e105;
     float _e109 = microcylinder_mean_fresnel(_e29.eta);
     metal::float3 amb1_ = _e29.albedo + metal::float3(_e109);
     float _e114 = microcylinder_mean_fresnel(_e46.eta);
     metal::float3 amb2_ = _e46.albedo + metal::float3(_e114);
-    float cov = a1_2 + a2_1;
-    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
+    float cov = a1_1 + a2_1;
+    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
     metal::float3 _e128 = weft_sh_irradiance(_e70, weft_frame);
     metal::float3 ambient = _e128 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));

@@ -74,11 +74,10 @@ struct McFastPre {
     inv_rr: f32,
     u_psi: f32,
     ok: f32,
-    f0_: f32,
     inv_gamma_s: f32,
     inv_gamma_v: f32,
-    lo: f32,
-    hi: f32,
+    s_lo: f32,
+    s_hi: f32,
     eta: f32,
 }
 
@@ -119,9 +118,10 @@ const MC_GL3_W0_: f32 = 0.2777778f;
 const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.001f;
+const MC_FAST_BIG: f32 = 1000000f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -159,8 +159,8 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
-    let q_4 = ((ior - 1f) / max((ior + 1f), 0.0001f));
-    return (q_4 * q_4);
+    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_3 * q_3);
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -211,10 +211,10 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_2);
-    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let t_2 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t_1) * s_2);
-    return mat3x3<f32>(t_1, b_2, n_2);
+    let b_2 = (cross(n_2, t_2) * s_2);
+    return mat3x3<f32>(t_2, b_2, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -248,24 +248,13 @@ fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
 }
 
 fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
-    let t_2 = (xe * inv_gamma);
-    let _e3 = mc_normal4_(t_2);
-    let dt = (t_2.yzw - t_2.xyz);
+    let t_3 = (xe * inv_gamma);
+    let _e3 = mc_normal4_(t_3);
+    let dt = (t_3.yzw - t_3.xyz);
     let wide = (abs(dt) >= vec3(0.1f));
     let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
     let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
     return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
-}
-
-fn mc_atan_fast(y: f32, x_2: f32) -> f32 {
-    let ax_1 = max(abs(x_2), 0.00000000000000000001f);
-    let ay = abs(y);
-    let r_2 = (min(ax_1, ay) / max(ax_1, ay));
-    let r2_ = (r_2 * r_2);
-    let a_2 = (r_2 * (0.99997723f + (r2_ * (-0.33262348f + (r2_ * (0.19354346f + (r2_ * (-0.11643287f + (r2_ * (0.05265332f - (0.0117212f * r2_)))))))))));
-    let b_3 = select(a_2, (1.5707964f - a_2), (ay > ax_1));
-    let c_1 = select(b_3, (WEFT_PI - b_3), (x_2 < 0f));
-    return select(c_1, -(c_1), (y < 0f));
 }
 
 fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
@@ -279,21 +268,20 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
     let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     let _e50 = mc_acos_fast(cos_psi_d);
     let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
-    let _e58 = mc_atan_fast(li.x, li.z);
-    let _e61 = mc_atan_fast(lr.x, lr.z);
-    let _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), _e66, (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), (-1.5707964f - min(_e58, _e61)), (1.5707964f - max(_e58, _e61)), th.eta);
+    let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
+    let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
+    let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
+    let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
 }
 
-fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
+fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     var local: bool;
 
-    let ca = cos(alpha);
-    let sa_1 = sin(alpha);
-    let si = clamp(((q.wi.x * ca) + (q.wi.z * sa_1)), -1f, 1f);
-    let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa_1)), -1f, 1f);
-    let ni = ((q.wi.z * ca) - (q.wi.x * sa_1));
-    let nr = ((q.wr.z * ca) - (q.wr.x * sa_1));
+    let si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1f, 1f);
+    let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1f, 1f);
+    let ni = ((q.wi.z * ca) - (q.wi.x * sa));
+    let nr = ((q.wr.z * ca) - (q.wr.x * sa));
     let ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     let cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
@@ -308,123 +296,105 @@ fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
     let cr_1 = (cr2_ * inv_cr);
     let cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
     let cos_half_phi = sqrt((0.5f + (0.5f * cos_phi_d)));
-    let _e87 = mc_acos_fast(cos_phi_d);
-    let u_phi = exp(((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_));
-    let _e95 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    let _e101 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    let _e102 = mc_asin_fast(si);
-    let _e103 = mc_asin_fast(sr);
-    let x_3 = (0.5f * (_e102 + _e103));
+    let _e86 = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    let _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    let _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    let _e101 = mc_asin_fast(si);
+    let _e102 = mc_asin_fast(sr);
+    let x_2 = (0.5f * (_e101 + _e102));
     let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    let _e119 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    let _e121 = weft_f_dielectric(ci_1, q.eta);
-    let _e125 = weft_f_dielectric(cr_1, q.eta);
-    let f_t = ((1f - _e121) * (1f - _e125));
-    let base = select(0f, (((_e95 * _e101) * ci_1) / cd2_), ok_2);
-    return McFastNode(x_3, ((_e119 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e101, ok_2));
+    let _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    let _e120 = weft_f_dielectric(ci_1, q.eta);
+    let _e124 = weft_f_dielectric(cr_1, q.eta);
+    let f_t = ((1f - _e120) * (1f - _e124));
+    let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e100, ok_2));
 }
 
-fn mc_fast_point(q_1: McFastPre, th_1: McThread, alpha_1: f32) -> vec4<f32> {
-    let _e3 = mc_fast_node(q_1, alpha_1);
-    let ts = (_e3.x * q_1.inv_gamma_s);
-    let tv = (_e3.x * q_1.inv_gamma_v);
-    let gs = ((exp(((-0.5f * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
-    let gv = ((exp(((-0.5f * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4<f32>((vec3((gs * _e3.s)) + (((((1f - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo)), _e3.p);
+fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    let _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    let _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
+    let surface = dot(_e36, s_3);
+    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
 }
 
-fn mc_fast_range(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, arc: bool, split: f32, rate_lo: f32, rate_hi: f32) -> vec4<f32> {
-    var r: vec3<f32>;
+fn mc_fast_half_clip(q_2: McFastPre, sa_1: f32, sb: f32, ta: f32) -> vec2<f32> {
+    var local_1: bool;
 
-    let lo = clamp(q_2.lo, min(a0_, a1_), max(a0_, a1_));
-    let hi = clamp(q_2.hi, lo, max(a0_, a1_));
-    let w = (hi - lo);
-    let al = vec3<f32>((lo + (MC_GL3_T * w)), (lo + (0.5f * w)), (hi - (MC_GL3_T * w)));
-    let _e27 = mc_fast_node(q_2, al.x);
-    let _e29 = mc_fast_node(q_2, al.y);
-    let _e31 = mc_fast_node(q_2, al.z);
-    r = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * w);
-    if arc {
-        let c_2 = cos(al);
-        let _e39 = r;
-        r = (_e39 * (select(vec3(rate_hi), vec3(rate_lo), (al < vec3(split))) / ((c_2 * c_2) * c_2)));
+    let ds = (sb - sa_1);
+    let flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
+    let inv = (1f / select(ds, 1f, flat));
+    let u0_ = ((q_2.s_lo - sa_1) * inv);
+    let u1_ = ((q_2.s_hi - sa_1) * inv);
+    if (sa_1 > q_2.s_lo) {
+        local_1 = (sa_1 < q_2.s_hi);
+    } else {
+        local_1 = false;
     }
-    let xe_1 = vec4<f32>((_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x))), (_e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x))), (_e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x))), (_e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x))));
-    let _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    let _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    let _e82 = r;
-    let s_3 = (_e82 * vec3<f32>(_e27.s, _e29.s, _e31.s));
-    let _e88 = r;
-    let v_1 = (_e88 * vec3<f32>(_e27.v, _e29.v, _e31.v));
-    let surface = dot(_e79, s_3);
-    let volume = (((1f - th_2.kd) * dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    let _e112 = r;
-    return vec4<f32>((vec3(surface) + (volume * th_2.albedo)), dot(_e112, vec3<f32>(_e27.p, _e29.p, _e31.p)));
+    let _e31 = local_1;
+    let uf = select(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f), _e31);
+    let u_1 = select(vec2<f32>(max(min(u0_, u1_), 0f), min(max(u0_, u1_), 1f)), uf, flat);
+    return select(vec2<f32>(2f, -1f), (vec2(ta) + (0.5f * u_1)), (u_1.x < u_1.y));
+}
+
+fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t_1: f32) -> f32 {
+    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t_1) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t_1))), (t_1 < 0.5f));
 }
 
 fn mc_arc_primitive(s: f32) -> f32 {
     let h = sqrt((1f + (s * s)));
-    return (0.5f * ((s * h) + (log((abs(s) + h)) * sign(s))));
+    return (0.5f * ((s * h) + (sign(s) * log((abs(s) + h)))));
 }
 
-fn mc_fast_half(q_3: McFastPre, th_3: McThread, sa: f32, sb: f32) -> vec4<f32> {
-    let ds = (sb - sa);
-    if (abs(ds) < MC_FAST_MIN_DSLOPE) {
-        let s_4 = (0.5f * (sa + sb));
-        let _e12 = mc_fast_point(q_3, th_3, atan(s_4));
-        return (_e12 * (0.5f * sqrt((1f + (s_4 * s_4)))));
-    }
-    let rate = (0.5f / abs(ds));
-    let _e27 = mc_fast_range(q_3, th_3, atan(sa), atan(sb), true, 0f, rate, rate);
-    return _e27;
+fn mc_fast_half_length(sa_2: f32, sb_1: f32) -> f32 {
+    let ds_1 = (sb_1 - sa_2);
+    let sm = (0.5f * (sa_2 + sb_1));
+    let _e6 = mc_arc_primitive(sb_1);
+    let _e7 = mc_arc_primitive(sa_2);
+    return select(((0.5f * (_e6 - _e7)) / ds_1), (0.5f * sqrt((1f + (sm * sm)))), (abs(ds_1) < MC_FAST_MIN_DSLOPE));
 }
 
-fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_4: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    var acc: vec4<f32> = vec4(0f);
-    var local_1: bool;
-
-    let _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    let s0_ = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
-    let s1_1 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
-    let s2_1 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
-    let d01_ = (s1_1 - s0_);
-    let d12_ = (s2_1 - s1_1);
-    let _e53 = mc_arc_primitive(s1_1);
-    let _e54 = mc_arc_primitive(s0_);
-    let len01_ = select((0.5f * sqrt((1f + (s0_ * s0_)))), ((0.5f * (_e53 - _e54)) / d01_), (abs(d01_) >= MC_FAST_MIN_DSLOPE));
-    let _e69 = mc_arc_primitive(s2_1);
-    let _e70 = mc_arc_primitive(s1_1);
-    let len12_ = select((0.5f * sqrt((1f + (s2_1 * s2_1)))), ((0.5f * (_e69 - _e70)) / d12_), (abs(d12_) >= MC_FAST_MIN_DSLOPE));
-    if ((d01_ * d12_) > 0f) {
-        local_1 = (min(abs(d01_), abs(d12_)) >= MC_FAST_MIN_DSLOPE);
-    } else {
-        local_1 = false;
-    }
-    let _e93 = local_1;
-    if _e93 {
-        let r01_ = (0.5f / abs(d01_));
-        let r12_ = (0.5f / abs(d12_));
-        let rise = (d01_ > 0f);
-        let _e108 = mc_fast_range(_e5, th_4, atan(s0_), atan(s2_1), true, atan(s1_1), select(r12_, r01_, rise), select(r01_, r12_, rise));
-        acc = _e108;
-    } else {
-        let _e109 = mc_fast_half(_e5, th_4, s0_, s1_1);
-        let _e110 = mc_fast_half(_e5, th_4, s1_1, s2_1);
-        acc = (_e109 + _e110);
-    }
-    let _e112 = acc;
-    return (_e112 / vec4(max((len01_ + len12_), 0.000001f)));
+fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    let s0_1 = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
+    let s1_2 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
+    let s2_2 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
+    let _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0f);
+    let _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5f);
+    let t0_ = min(_e46.x, _e48.x);
+    let t1_1 = max(max(_e46.y, _e48.y), t0_);
+    let w = (t1_1 - t0_);
+    let t_4 = vec3<f32>((t0_ + (MC_GL3_T * w)), (t0_ + (0.5f * w)), (t1_1 - (MC_GL3_T * w)));
+    let _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    let _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    let _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    let sl = vec3<f32>(_e68, _e70, _e72);
+    let inv_len = inverseSqrt((vec3(1f) + (sl * sl)));
+    let _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    let _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    let _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
+    let r_2 = ((vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * w) / inv_len);
+    let _e100 = mc_fast_half_length(s0_1, s1_2);
+    let _e101 = mc_fast_half_length(s1_2, s2_2);
+    let total = (_e100 + _e101);
+    let _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return (_e103 / vec4(max(total, 0.000001f)));
 }
 
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
     var local_2: bool;
     var local_3: bool;
 
-    let c1_ = saturate(a1_1);
+    let c1_ = saturate(a1_);
     let c2_ = saturate(a2_);
     let gap = max(((1f - c1_) - c2_), 0f);
-    let q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_5 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
     if (n_dot_wi > 0f) {
         local_2 = (n_dot_wr > 0f);
     } else {
@@ -432,12 +402,12 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32
     }
     let _e37 = local_2;
     if _e37 {
-        local_3 = (q_5 > MC_MIN_Q);
+        local_3 = (q_4 > MC_MIN_Q);
     } else {
         local_3 = false;
     }
     let lit = local_3;
-    return select(vec3(0f), (s_5 / vec3(max(q_5, MC_MIN_Q))), lit);
+    return select(vec3(0f), (s_4 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
@@ -494,7 +464,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e45 = material.thread2_gamma_v;
     let _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
     let _e49 = material.thread1_coverage;
-    let a1_2 = saturate(_e49);
+    let a1_1 = saturate(_e49);
     let _e53 = material.thread2_coverage;
     let a2_1 = select(0f, saturate(_e53), true);
     let _e60 = material.brightness;
@@ -502,12 +472,12 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e68 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    let t_3 = _e72[0];
-    let b_4 = _e72[1];
+    let t_5 = _e72[0];
+    let b_3 = _e72[1];
     let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
     let _e83 = weft_main_light_direction();
-    let warp = McFrame(t_3, b_4, _e70);
-    let weft = McFrame(b_4, t_3, _e70);
+    let warp = McFrame(t_5, b_3, _e70);
+    let weft = McFrame(b_3, t_5, _e70);
     {
         {
             let _e94 = material.thread1_curve;
@@ -522,15 +492,15 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     }
     let _e100 = s1_;
     let _e101 = s2_;
-    let _e104 = mc_combine(_e100, _e101, a1_2, a2_1, dot(_e70, _e83), dot(_e70, _e82));
+    let _e104 = mc_combine(_e100, _e101, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
     let _e105 = weft_main_light_radiance();
     let direct = (_e104 * _e105);
     let _e109 = microcylinder_mean_fresnel(_e29.eta);
     let amb1_ = (_e29.albedo + vec3(_e109));
     let _e114 = microcylinder_mean_fresnel(_e46.eta);
     let amb2_ = (_e46.albedo + vec3(_e114));
-    let cov = (a1_2 + a2_1);
-    let ambient_albedo = select(amb1_, (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
+    let cov = (a1_1 + a2_1);
+    let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
     let _e128 = weft_sh_irradiance(_e70);
     let ambient = (_e128 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));

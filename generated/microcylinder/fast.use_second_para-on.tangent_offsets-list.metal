@@ -83,13 +83,11 @@ struct McFastPre {
     float inv_rr;
     float u_psi;
     float ok;
-    float f0_;
     float inv_gamma_s;
     float inv_gamma_v;
-    float lo;
-    float hi;
+    float s_lo;
+    float s_hi;
     float eta;
-    char _pad12[12];
 };
 struct McFastNode {
     float x;
@@ -130,9 +128,10 @@ constant float MC_GL3_W0_ = 0.2777778;
 constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
-constant float MC_FAST_MIN_DSLOPE = 0.001;
+constant float MC_FAST_BIG = 1000000.0;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -169,8 +168,8 @@ float weft_f_dielectric(
 float weft_f0_from_ior(
     float ior
 ) {
-    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
-    return q_3 * q_3;
+    float q_4 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_4 * q_4;
 }
 
 metal::float3 weft_main_light_direction(
@@ -304,20 +303,6 @@ metal::float3 mc_cell_means(
     return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
 }
 
-float mc_atan_fast(
-    float y,
-    float x_2
-) {
-    float ax_1 = metal::max(metal::abs(x_2), 0.00000000000000000001);
-    float ay = metal::abs(y);
-    float r_2 = metal::min(ax_1, ay) / metal::max(ax_1, ay);
-    float r2_ = r_2 * r_2;
-    float a_3 = r_2 * (0.99997723 + (r2_ * (-0.33262348 + (r2_ * (0.19354346 + (r2_ * (-0.11643287 + (r2_ * (0.05265332 - (0.0117212 * r2_))))))))));
-    float b_4 = (ay > ax_1) ? (1.5707964 - a_3) : a_3;
-    float c_1 = (x_2 < 0.0) ? (WEFT_PI - b_4) : b_4;
-    return (y < 0.0) ? -(c_1) : c_1;
-}
-
 McFastPre mc_fast_pre(
     McFrame fr,
     metal::float3 wi,
@@ -334,19 +319,19 @@ McFastPre mc_fast_pre(
     float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
     float _e50 = mc_acos_fast(cos_psi_d);
     float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
-    float _e58 = mc_atan_fast(li.x, li.z);
-    float _e61 = mc_atan_fast(lr.x, lr.z);
-    float _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, _e66, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), -1.5707964 - metal::min(_e58, _e61), 1.5707964 - metal::max(_e58, _e61), th.eta};
+    float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
+    float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
+    float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
+    float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
+    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
 }
 
 McFastNode mc_fast_node(
     McFastPre q,
-    float alpha
+    float ca,
+    float sa
 ) {
     bool local = {};
-    float ca = metal::cos(alpha);
-    float sa = metal::sin(alpha);
     float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa), -1.0, 1.0);
     float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa), -1.0, 1.0);
     float ni = (q.wi.z * ca) - (q.wi.x * sa);
@@ -365,77 +350,78 @@ McFastNode mc_fast_node(
     float cr_1 = cr2_ * inv_cr;
     float cos_phi_d = metal::clamp((((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
     float cos_half_phi = metal::sqrt(0.5 + (0.5 * cos_phi_d));
-    float _e87 = mc_acos_fast(cos_phi_d);
-    float u_phi = metal::exp((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_);
-    float _e95 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
-    float _e101 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
-    float _e102 = mc_asin_fast(si);
-    float _e103 = mc_asin_fast(sr);
-    float x_3 = 0.5 * (_e102 + _e103);
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = metal::exp((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_);
+    float _e94 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
+    float _e100 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = 0.5 * (_e101 + _e102);
     float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
-    float _e119 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
-    float _e121 = weft_f_dielectric(ci_1, q.eta);
-    float _e125 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = (1.0 - _e121) * (1.0 - _e125);
-    float base = ok_2 ? (((_e95 * _e101) * ci_1) / cd2_) : 0.0;
-    return McFastNode {x_3, (_e119 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e101 : 0.0};
+    float _e118 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = (1.0 - _e120) * (1.0 - _e124);
+    float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
+    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e100 : 0.0};
 }
 
 metal::float4 mc_fast_point(
     McFastPre q_1,
     McThread th_1,
-    float alpha_1
+    float alpha
 ) {
-    McFastNode _e3 = mc_fast_node(q_1, alpha_1);
-    float ts = _e3.x * q_1.inv_gamma_s;
-    float tv = _e3.x * q_1.inv_gamma_v;
+    McFastNode _e5 = mc_fast_node(q_1, metal::cos(alpha), metal::sin(alpha));
+    float ts = _e5.x * q_1.inv_gamma_s;
+    float tv = _e5.x * q_1.inv_gamma_v;
     float gs = (metal::exp((-0.5 * ts) * ts) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s;
     float gv = (metal::exp((-0.5 * tv) * tv) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v;
-    return metal::float4(metal::float3(gs * _e3.s) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo), _e3.p);
+    return metal::float4(metal::float3(gs * _e5.s) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo), _e5.p);
 }
 
-metal::float4 mc_fast_range(
+metal::float4 mc_fast_gl3_(
     McFastPre q_2,
     McThread th_2,
-    float a0_,
-    float a1_,
-    bool arc,
-    float split,
-    float rate_lo,
-    float rate_hi
+    McFastNode n0_,
+    McFastNode n1_,
+    McFastNode n2_,
+    metal::float3 r
 ) {
-    metal::float3 r = {};
-    float lo = metal::clamp(q_2.lo, metal::min(a0_, a1_), metal::max(a0_, a1_));
-    float hi = metal::clamp(q_2.hi, lo, metal::max(a0_, a1_));
+    metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
+    metal::float3 _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
+    metal::float3 _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    metal::float3 s_2 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
+    float surface = metal::dot(_e36, s_2);
+    float volume = ((1.0 - th_2.kd) * metal::dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z));
+    return metal::float4(metal::float3(surface) + (volume * th_2.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
+}
+
+metal::float4 mc_fast_segment(
+    McFastPre q_3,
+    McThread th_3,
+    float a0_,
+    float a1_
+) {
+    float lo = metal::clamp(metal::atan(q_3.s_lo), metal::min(a0_, a1_), metal::max(a0_, a1_));
+    float hi = metal::clamp(metal::atan(q_3.s_hi), lo, metal::max(a0_, a1_));
     float w = hi - lo;
     metal::float3 al = metal::float3(lo + (MC_GL3_T * w), lo + (0.5 * w), hi - (MC_GL3_T * w));
-    McFastNode _e27 = mc_fast_node(q_2, al.x);
-    McFastNode _e29 = mc_fast_node(q_2, al.y);
-    McFastNode _e31 = mc_fast_node(q_2, al.z);
-    r = metal::float3(0.2777778, 0.44444445, 0.2777778) * w;
-    if (arc) {
-        metal::float3 c_2 = metal::cos(al);
-        metal::float3 _e39 = r;
-        r = _e39 * (metal::select(metal::float3(rate_hi), metal::float3(rate_lo), al < metal::float3(split)) / ((c_2 * c_2) * c_2));
-    }
-    metal::float4 xe_1 = metal::float4(_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x)), _e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x)), _e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x)), _e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x)));
-    metal::float3 _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    metal::float3 _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    metal::float3 _e82 = r;
-    metal::float3 s_2 = _e82 * metal::float3(_e27.s, _e29.s, _e31.s);
-    metal::float3 _e88 = r;
-    metal::float3 v_1 = _e88 * metal::float3(_e27.v, _e29.v, _e31.v);
-    float surface = metal::dot(_e79, s_2);
-    float volume = ((1.0 - th_2.kd) * metal::dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z));
-    metal::float3 _e112 = r;
-    return metal::float4(metal::float3(surface) + (volume * th_2.albedo), metal::dot(_e112, metal::float3(_e27.p, _e29.p, _e31.p)));
+    metal::float3 ca_1 = metal::cos(al);
+    metal::float3 sa_1 = metal::sin(al);
+    McFastNode _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
+    McFastNode _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
+    McFastNode _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
+    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (w / metal::abs(a1_ - a0_));
+    metal::float4 _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
+    return _e43;
 }
 
 metal::float4 mc_thread_list_fast(
     McFrame fr_1,
     metal::float3 wi_1,
     metal::float3 wr_1,
-    McThread th_3,
+    McThread th_4,
     metal::float4 offsets_a,
     metal::float4 offsets_b,
     int count
@@ -443,9 +429,9 @@ metal::float4 mc_thread_list_fast(
     metal::float4 acc = metal::float4(0.0);
     int k_1 = 0;
     int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
     if (n_3 == 1) {
-        metal::float4 _e16 = mc_fast_point(_e10, th_3, offsets_a.x * MC_DEG);
+        metal::float4 _e16 = mc_fast_point(_e10, th_4, offsets_a.x * MC_DEG);
         return _e16;
     }
     uint2 loop_bound = uint2(4294967295u);
@@ -454,8 +440,8 @@ metal::float4 mc_thread_list_fast(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e73 = k_1;
-            k_1 = as_type<int>(as_type<uint>(_e73) + as_type<uint>(1));
+            int _e59 = k_1;
+            k_1 = as_type<int>(as_type<uint>(_e59) + as_type<uint>(1));
         }
         loop_init = false;
         int _e22 = k_1;
@@ -473,25 +459,25 @@ metal::float4 mc_thread_list_fast(
             float span = metal::abs(d1_ - d0_);
             if (span < MC_FAST_MIN_SPAN) {
                 metal::float4 _e40 = acc;
-                metal::float4 _e41 = mc_fast_point(_e10, th_3, d0_);
+                metal::float4 _e41 = mc_fast_point(_e10, th_4, d0_);
                 acc = _e40 + _e41;
             } else {
                 if (span > 1.0471976) {
                     float dm = 0.5 * (d0_ + d1_);
                     metal::float4 _e48 = acc;
-                    metal::float4 _e53 = mc_fast_range(_e10, th_3, d0_, dm, false, 0.0, 1.0, 1.0);
-                    metal::float4 _e58 = mc_fast_range(_e10, th_3, dm, d1_, false, 0.0, 1.0, 1.0);
-                    acc = _e48 + ((_e53 + _e58) / metal::float4(span));
+                    metal::float4 _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
+                    metal::float4 _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
+                    acc = _e48 + (0.5 * (_e49 + _e50));
                 } else {
-                    metal::float4 _e63 = acc;
-                    metal::float4 _e68 = mc_fast_range(_e10, th_3, d0_, d1_, false, 0.0, 1.0, 1.0);
-                    acc = _e63 + (_e68 / metal::float4(span));
+                    metal::float4 _e55 = acc;
+                    metal::float4 _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
+                    acc = _e55 + _e56;
                 }
             }
         }
     }
-    metal::float4 _e75 = acc;
-    return _e75 / metal::float4(static_cast<float>(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))));
+    metal::float4 _e61 = acc;
+    return _e61 / metal::float4(static_cast<float>(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))));
 }
 
 metal::float3 mc_combine(
@@ -507,7 +493,7 @@ metal::float3 mc_combine(
     float c1_ = metal::saturate(a1_1);
     float c2_ = metal::saturate(a2_);
     float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    float q_5 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
     metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
     if (n_dot_wi > 0.0) {
         local_1 = n_dot_wr > 0.0;
@@ -516,12 +502,12 @@ metal::float3 mc_combine(
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = q_4 > MC_MIN_Q;
+        local_2 = q_5 > MC_MIN_Q;
     } else {
         local_2 = false;
     }
     bool lit = local_2;
-    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+    return lit ? (s_3 / metal::float3(metal::max(q_5, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McThread microcylinder_thread(
@@ -629,11 +615,11 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
     metal::float3 t_3 = _e72[0];
-    metal::float3 b_5 = _e72[1];
+    metal::float3 b_4 = _e72[1];
     metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
     metal::float3 _e83 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_3, b_5, _e70};
-    McFrame weft = McFrame {b_5, t_3, _e70};
+    McFrame warp = McFrame {t_3, b_4, _e70};
+    McFrame weft = McFrame {b_4, t_3, _e70};
     {
         {
             metal::float4 _e94 = material.thread1_offsets_a;

@@ -74,11 +74,10 @@ struct McFastPre {
     inv_rr: f32,
     u_psi: f32,
     ok: f32,
-    f0_: f32,
     inv_gamma_s: f32,
     inv_gamma_v: f32,
-    lo: f32,
-    hi: f32,
+    s_lo: f32,
+    s_hi: f32,
     eta: f32,
 }
 
@@ -119,9 +118,10 @@ const MC_GL3_W0_: f32 = 0.2777778f;
 const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.001f;
+const MC_FAST_BIG: f32 = 1000000f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -159,8 +159,8 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
-    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
-    return (q_3 * q_3);
+    let q_4 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_4 * q_4);
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -261,17 +261,6 @@ fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
     return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
 }
 
-fn mc_atan_fast(y: f32, x_2: f32) -> f32 {
-    let ax_1 = max(abs(x_2), 0.00000000000000000001f);
-    let ay = abs(y);
-    let r_2 = (min(ax_1, ay) / max(ax_1, ay));
-    let r2_ = (r_2 * r_2);
-    let a_3 = (r_2 * (0.99997723f + (r2_ * (-0.33262348f + (r2_ * (0.19354346f + (r2_ * (-0.11643287f + (r2_ * (0.05265332f - (0.0117212f * r2_)))))))))));
-    let b_4 = select(a_3, (1.5707964f - a_3), (ay > ax_1));
-    let c_1 = select(b_4, (WEFT_PI - b_4), (x_2 < 0f));
-    return select(c_1, -(c_1), (y < 0f));
-}
-
 fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
@@ -283,17 +272,16 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
     let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     let _e50 = mc_acos_fast(cos_psi_d);
     let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
-    let _e58 = mc_atan_fast(li.x, li.z);
-    let _e61 = mc_atan_fast(lr.x, lr.z);
-    let _e66 = weft_f0_from_ior(th.eta);
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), _e66, (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), (-1.5707964f - min(_e58, _e61)), (1.5707964f - max(_e58, _e61)), th.eta);
+    let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
+    let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
+    let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
+    let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
 }
 
-fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
+fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     var local: bool;
 
-    let ca = cos(alpha);
-    let sa = sin(alpha);
     let si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1f, 1f);
     let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1f, 1f);
     let ni = ((q.wi.z * ca) - (q.wi.x * sa));
@@ -312,68 +300,65 @@ fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
     let cr_1 = (cr2_ * inv_cr);
     let cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
     let cos_half_phi = sqrt((0.5f + (0.5f * cos_phi_d)));
-    let _e87 = mc_acos_fast(cos_phi_d);
-    let u_phi = exp(((-(_e87) * _e87) * MC_U_INV_TWO_SIGMA2_));
-    let _e95 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    let _e101 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    let _e102 = mc_asin_fast(si);
-    let _e103 = mc_asin_fast(sr);
-    let x_3 = (0.5f * (_e102 + _e103));
+    let _e86 = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    let _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    let _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    let _e101 = mc_asin_fast(si);
+    let _e102 = mc_asin_fast(sr);
+    let x_2 = (0.5f * (_e101 + _e102));
     let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    let _e119 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    let _e121 = weft_f_dielectric(ci_1, q.eta);
-    let _e125 = weft_f_dielectric(cr_1, q.eta);
-    let f_t = ((1f - _e121) * (1f - _e125));
-    let base = select(0f, (((_e95 * _e101) * ci_1) / cd2_), ok_2);
-    return McFastNode(x_3, ((_e119 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e101, ok_2));
+    let _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    let _e120 = weft_f_dielectric(ci_1, q.eta);
+    let _e124 = weft_f_dielectric(cr_1, q.eta);
+    let f_t = ((1f - _e120) * (1f - _e124));
+    let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e100, ok_2));
 }
 
-fn mc_fast_point(q_1: McFastPre, th_1: McThread, alpha_1: f32) -> vec4<f32> {
-    let _e3 = mc_fast_node(q_1, alpha_1);
-    let ts = (_e3.x * q_1.inv_gamma_s);
-    let tv = (_e3.x * q_1.inv_gamma_v);
+fn mc_fast_point(q_1: McFastPre, th_1: McThread, alpha: f32) -> vec4<f32> {
+    let _e5 = mc_fast_node(q_1, cos(alpha), sin(alpha));
+    let ts = (_e5.x * q_1.inv_gamma_s);
+    let tv = (_e5.x * q_1.inv_gamma_v);
     let gs = ((exp(((-0.5f * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
     let gv = ((exp(((-0.5f * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4<f32>((vec3((gs * _e3.s)) + (((((1f - th_1.kd) * gv) + th_1.kd) * _e3.v) * th_1.albedo)), _e3.p);
+    return vec4<f32>((vec3((gs * _e5.s)) + (((((1f - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo)), _e5.p);
 }
 
-fn mc_fast_range(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, arc: bool, split: f32, rate_lo: f32, rate_hi: f32) -> vec4<f32> {
-    var r: vec3<f32>;
+fn mc_fast_gl3_(q_2: McFastPre, th_2: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    let _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
+    let _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    let s_2 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
+    let surface = dot(_e36, s_2);
+    let volume = (((1f - th_2.kd) * dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4<f32>((vec3(surface) + (volume * th_2.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
+}
 
-    let lo = clamp(q_2.lo, min(a0_, a1_), max(a0_, a1_));
-    let hi = clamp(q_2.hi, lo, max(a0_, a1_));
+fn mc_fast_segment(q_3: McFastPre, th_3: McThread, a0_: f32, a1_: f32) -> vec4<f32> {
+    let lo = clamp(atan(q_3.s_lo), min(a0_, a1_), max(a0_, a1_));
+    let hi = clamp(atan(q_3.s_hi), lo, max(a0_, a1_));
     let w = (hi - lo);
     let al = vec3<f32>((lo + (MC_GL3_T * w)), (lo + (0.5f * w)), (hi - (MC_GL3_T * w)));
-    let _e27 = mc_fast_node(q_2, al.x);
-    let _e29 = mc_fast_node(q_2, al.y);
-    let _e31 = mc_fast_node(q_2, al.z);
-    r = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * w);
-    if arc {
-        let c_2 = cos(al);
-        let _e39 = r;
-        r = (_e39 * (select(vec3(rate_hi), vec3(rate_lo), (al < vec3(split))) / ((c_2 * c_2) * c_2)));
-    }
-    let xe_1 = vec4<f32>((_e27.x + (MC_GL3_E0_ * (_e29.x - _e27.x))), (_e27.x + (MC_GL3_E1_ * (_e29.x - _e27.x))), (_e31.x - (MC_GL3_E1_ * (_e31.x - _e29.x))), (_e31.x - (MC_GL3_E0_ * (_e31.x - _e29.x))));
-    let _e79 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    let _e81 = mc_cell_means(xe_1, q_2.inv_gamma_v);
-    let _e82 = r;
-    let s_2 = (_e82 * vec3<f32>(_e27.s, _e29.s, _e31.s));
-    let _e88 = r;
-    let v_1 = (_e88 * vec3<f32>(_e27.v, _e29.v, _e31.v));
-    let surface = dot(_e79, s_2);
-    let volume = (((1f - th_2.kd) * dot(_e81, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    let _e112 = r;
-    return vec4<f32>((vec3(surface) + (volume * th_2.albedo)), dot(_e112, vec3<f32>(_e27.p, _e29.p, _e31.p)));
+    let ca_1 = cos(al);
+    let sa_1 = sin(al);
+    let _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
+    let _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
+    let _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
+    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * (w / abs((a1_ - a0_))));
+    let _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
+    return _e43;
 }
 
-fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
+fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_4: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
     var acc: vec4<f32> = vec4(0f);
     var k_1: i32 = 0i;
 
     let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
-    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
     if (n_3 == 1i) {
-        let _e16 = mc_fast_point(_e10, th_3, (offsets_a.x * MC_DEG));
+        let _e16 = mc_fast_point(_e10, th_4, (offsets_a.x * MC_DEG));
         return _e16;
     }
     loop {
@@ -392,29 +377,29 @@ fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: Mc
             let span = abs((d1_ - d0_));
             if (span < MC_FAST_MIN_SPAN) {
                 let _e40 = acc;
-                let _e41 = mc_fast_point(_e10, th_3, d0_);
+                let _e41 = mc_fast_point(_e10, th_4, d0_);
                 acc = (_e40 + _e41);
             } else {
                 if (span > 1.0471976f) {
                     let dm = (0.5f * (d0_ + d1_));
                     let _e48 = acc;
-                    let _e53 = mc_fast_range(_e10, th_3, d0_, dm, false, 0f, 1f, 1f);
-                    let _e58 = mc_fast_range(_e10, th_3, dm, d1_, false, 0f, 1f, 1f);
-                    acc = (_e48 + ((_e53 + _e58) / vec4(span)));
+                    let _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
+                    let _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
+                    acc = (_e48 + (0.5f * (_e49 + _e50)));
                 } else {
-                    let _e63 = acc;
-                    let _e68 = mc_fast_range(_e10, th_3, d0_, d1_, false, 0f, 1f, 1f);
-                    acc = (_e63 + (_e68 / vec4(span)));
+                    let _e55 = acc;
+                    let _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
+                    acc = (_e55 + _e56);
                 }
             }
         }
         continuing {
-            let _e73 = k_1;
-            k_1 = (_e73 + 1i);
+            let _e59 = k_1;
+            k_1 = (_e59 + 1i);
         }
     }
-    let _e75 = acc;
-    return (_e75 / vec4(f32((n_3 - 1i))));
+    let _e61 = acc;
+    return (_e61 / vec4(f32((n_3 - 1i))));
 }
 
 fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
@@ -424,7 +409,7 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32
     let c1_ = saturate(a1_1);
     let c2_ = saturate(a2_);
     let gap = max(((1f - c1_) - c2_), 0f);
-    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
     let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
     if (n_dot_wi > 0f) {
         local_1 = (n_dot_wr > 0f);
@@ -433,12 +418,12 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32
     }
     let _e37 = local_1;
     if _e37 {
-        local_2 = (q_4 > MC_MIN_Q);
+        local_2 = (q_5 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     let lit = local_2;
-    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
+    return select(vec3(0f), (s_3 / vec3(max(q_5, MC_MIN_Q))), lit);
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
@@ -504,11 +489,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
     let t_3 = _e72[0];
-    let b_5 = _e72[1];
+    let b_4 = _e72[1];
     let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
     let _e83 = weft_main_light_direction();
-    let warp = McFrame(t_3, b_5, _e70);
-    let weft = McFrame(b_5, t_3, _e70);
+    let warp = McFrame(t_3, b_4, _e70);
+    let weft = McFrame(b_4, t_3, _e70);
     {
         {
             let _e94 = material.thread1_offsets_a;

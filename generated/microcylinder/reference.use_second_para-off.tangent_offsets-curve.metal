@@ -113,9 +113,10 @@ constant float MC_GL3_W0_ = 0.2777778;
 constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
-constant float MC_FAST_MIN_DSLOPE = 0.001;
+constant float MC_FAST_BIG = 1000000.0;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,

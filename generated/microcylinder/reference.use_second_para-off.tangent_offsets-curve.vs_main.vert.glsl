@@ -97,9 +97,10 @@ const float MC_GL3_W0_ = 0.2777778;
 const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
-const float MC_FAST_MIN_DSLOPE = 0.001;
+const float MC_FAST_BIG = 1000000.0;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

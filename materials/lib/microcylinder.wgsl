@@ -299,12 +299,11 @@ struct McFastPre {
     // Correlation weight u(psi_d); 1/0 whether psi is defined.
     u_psi: f32,
     ok: f32,
-    f0: f32,
     inv_gamma_s: f32,
     inv_gamma_v: f32,
-    // Offsets with a non-zero integrand: alpha in (lo, hi) (radians).
-    lo: f32,
-    hi: f32,
+    // Offsets with a non-zero integrand: tan(alpha) in (s_lo, s_hi).
+    s_lo: f32,
+    s_hi: f32,
     eta: f32,
 }
 
@@ -362,19 +361,10 @@ fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
     return max(select(trap, exact, wide), vec3<f32>(0.0)) * inv_gamma;
 }
 
-// atan2(y, x) for x > 0 up to ~1e-5 rad (odd minimax polynomial of atan on
-// [-1, 1] with the reciprocal for |y| > x); the support's ends need no more.
-fn mc_atan_fast(y: f32, x: f32) -> f32 {
-    let ax = max(abs(x), 1e-20);
-    let ay = abs(y);
-    let r = min(ax, ay) / max(ax, ay);
-    let r2 = r * r;
-    let a = r * (0.99997726 + r2 * (-0.33262347 + r2 * (0.19354346 + r2 * (-0.11643287 + r2 * (0.05265332 - 0.01172120 * r2)))));
-    let b = select(a, 0.5 * WEFT_PI - a, ay > ax);
-    let c = select(b, WEFT_PI - b, x < 0.0);
-    return select(c, -c, y < 0.0);
-}
-
+// The support in slope space: with s = tan(alpha) (alpha in (-pi/2, pi/2)),
+// n'.w = cos(alpha) (z - x s) > 0 <=> x s < z, so each direction bounds s
+// from above (x > 0) or below (x < 0). MC_FAST_BIG stands for no bound.
+const MC_FAST_BIG: f32 = 1e6;
 fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
@@ -386,13 +376,14 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
     let cos_psi_d = (li.x * lr.x + li.z * lr.z) * inv_ri * inv_rr;
     let psi_d = mc_acos_fast(cos_psi_d);
     let u_psi = exp(-psi_d * psi_d * MC_U_INV_TWO_SIGMA2);
-    // beta = atan2(x, z); with w above the surface (z > 0) beta is in
-    // (-pi/2, pi/2) and (lo, hi) = (-pi/2 - min beta, pi/2 - max beta).
-    let bi = mc_atan_fast(li.x, li.z);
-    let br = mc_atan_fast(lr.x, lr.z);
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok), weft_f0_from_ior(th.eta),
+    // z / x with |x| floored: a tiny |x| gives a bound beyond MC_FAST_BIG.
+    let bi = li.z / select(max(li.x, 1e-12), min(li.x, -1e-12), li.x < 0.0);
+    let br = lr.z / select(max(lr.x, 1e-12), min(lr.x, -1e-12), lr.x < 0.0);
+    let s_lo = max(select(-MC_FAST_BIG, bi, li.x < 0.0), select(-MC_FAST_BIG, br, lr.x < 0.0));
+    let s_hi = min(select(MC_FAST_BIG, bi, li.x > 0.0), select(MC_FAST_BIG, br, lr.x > 0.0));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok),
                      1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
-                     -0.5 * WEFT_PI - min(bi, br), 0.5 * WEFT_PI - max(bi, br), th.eta);
+                     clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG), th.eta);
 }
 
 fn mc_schlick(f0: f32, c: f32) -> f32 {
@@ -402,9 +393,7 @@ fn mc_schlick(f0: f32, c: f32) -> f32 {
 // The factors at offset alpha. Tilting about v rotates the (x, z)
 // components: sin(theta) = x cos(alpha) + z sin(alpha), n'.w = z cos(alpha)
 // - x sin(alpha), cos^2(theta) = y^2 + (n'.w)^2.
-fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
-    let ca = cos(alpha);
-    let sa = sin(alpha);
+fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
     let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
     let ni = q.wi.z * ca - q.wi.x * sa;
@@ -432,7 +421,7 @@ fn mc_fast_node(q: McFastPre, alpha: f32) -> McFastNode {
 
 // A single offset: the lobe itself, (S rgb, P).
 fn mc_fast_point(q: McFastPre, th: McThread, alpha: f32) -> vec4<f32> {
-    let a = mc_fast_node(q, alpha);
+    let a = mc_fast_node(q, cos(alpha), sin(alpha));
     let ts = a.x * q.inv_gamma_s;
     let tv = a.x * q.inv_gamma_v;
     let gs = exp(-0.5 * ts * ts) * MC_INV_SQRT_TWO_PI * q.inv_gamma_s;
@@ -440,23 +429,10 @@ fn mc_fast_point(q: McFastPre, th: McThread, alpha: f32) -> vec4<f32> {
     return vec4<f32>(vec3<f32>(gs * a.s) + ((1.0 - th.kd) * gv + th.kd) * a.v * th.albedo, a.p);
 }
 
-// Integral of rho(alpha) (S rgb, P) over the offsets alpha in [a0, a1]
-// (either order) by the rule above: rho = 1 when `arc` is false; otherwise
-// rho = (alpha < split ? rate_lo : rate_hi) / cos^3(alpha) (a tangent curve
-// whose slope runs linearly in t: see mc_thread_curve_fast).
-fn mc_fast_range(q: McFastPre, th: McThread, a0: f32, a1: f32, arc: bool, split: f32, rate_lo: f32, rate_hi: f32) -> vec4<f32> {
-    let lo = clamp(q.lo, min(a0, a1), max(a0, a1));
-    let hi = clamp(q.hi, lo, max(a0, a1));
-    let w = hi - lo;
-    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
-    let n0 = mc_fast_node(q, al.x);
-    let n1 = mc_fast_node(q, al.y);
-    let n2 = mc_fast_node(q, al.z);
-    var r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w;
-    if arc {
-        let c = cos(al);
-        r *= select(vec3<f32>(rate_hi), vec3<f32>(rate_lo), al < vec3<f32>(split)) / (c * c * c);
-    }
+// The rule on one range, given its three nodes and their weights r (the
+// Gauss-Legendre weight times the range's width times any density):
+// (sum r S rgb, sum r P).
+fn mc_fast_gl3(q: McFastPre, th: McThread, n0: McFastNode, n1: McFastNode, n2: McFastNode, r: vec3<f32>) -> vec4<f32> {
     let xe = vec4<f32>(n0.x + MC_GL3_E0 * (n1.x - n0.x), n0.x + MC_GL3_E1 * (n1.x - n0.x),
                        n2.x - MC_GL3_E1 * (n2.x - n1.x), n2.x - MC_GL3_E0 * (n2.x - n1.x));
     let gs = mc_cell_means(xe, q.inv_gamma_s);
@@ -468,62 +444,27 @@ fn mc_fast_range(q: McFastPre, th: McThread, a0: f32, a1: f32, arc: bool, split:
     return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
 }
 
-// int sqrt(1 + s^2) ds = (s sqrt(1 + s^2) + asinh(s)) / 2.
-fn mc_arc_primitive(s: f32) -> f32 {
-    let h = sqrt(1.0 + s * s);
-    return 0.5 * (s * h + log(abs(s) + h) * sign(s));
-}
-
-// Fast, tangent curve. The profile's slope at t = 0, 1/2, 1 (second-order
-// one-sided differences of the baked samples at the ends, the central
-// difference at 1/2), taken as linear in t on each half (exact for a
-// quadratic profile such as the default). A half whose slope runs from s_a
-// to s_b has arc length (G(s_b) - G(s_a)) / (2 (s_b - s_a)), G the primitive
-// of sqrt(1 + s^2), and its offsets alpha = atan(s) have the arc-length
-// density 1 / (2 |s_b - s_a| cos^3(alpha)). Monotone curves (the slope at
-// 1/2 between the end slopes) are one range of offsets with that piecewise
-// density; otherwise each half is its own range; a half of constant slope is
-// a single offset. Normalised by the total arc length.
-const MC_FAST_MIN_DSLOPE: f32 = 1e-3;
-fn mc_fast_half(q: McFastPre, th: McThread, sa: f32, sb: f32) -> vec4<f32> {
-    let ds = sb - sa;
-    if abs(ds) < MC_FAST_MIN_DSLOPE {
-        let s = 0.5 * (sa + sb);
-        return mc_fast_point(q, th, atan(s)) * (0.5 * sqrt(1.0 + s * s));
-    }
-    let rate = 0.5 / abs(ds);
-    return mc_fast_range(q, th, atan(sa), atan(sb), true, 0.0, rate, rate);
-}
-
-fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let q = mc_fast_pre(fr, wi, wr, th);
-    let n = f32(MC_CURVE_SEGMENTS);
-    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
-    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
-    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
-    let d01 = s1 - s0;
-    let d12 = s2 - s1;
-    // Arc length of each half (the limit sqrt(1 + s^2) / 2 for a constant slope).
-    let len01 = select(0.5 * sqrt(1.0 + s0 * s0), 0.5 * (mc_arc_primitive(s1) - mc_arc_primitive(s0)) / d01, abs(d01) >= MC_FAST_MIN_DSLOPE);
-    let len12 = select(0.5 * sqrt(1.0 + s2 * s2), 0.5 * (mc_arc_primitive(s2) - mc_arc_primitive(s1)) / d12, abs(d12) >= MC_FAST_MIN_DSLOPE);
-    var acc = vec4<f32>(0.0);
-    if d01 * d12 > 0.0 && min(abs(d01), abs(d12)) >= MC_FAST_MIN_DSLOPE {
-        // Monotone: one range; the half nearer the lower offsets has its rate
-        // below alpha(s1).
-        let r01 = 0.5 / abs(d01);
-        let r12 = 0.5 / abs(d12);
-        let rise = d01 > 0.0;
-        acc = mc_fast_range(q, th, atan(s0), atan(s2), true, atan(s1), select(r12, r01, rise), select(r01, r12, rise));
-    } else {
-        acc = mc_fast_half(q, th, s0, s1) + mc_fast_half(q, th, s1, s2);
-    }
-    return acc / max(len01 + len12, 1e-6);
+// Offset list segment: the mean over the offsets uniform in [a0, a1] (either
+// order, radians, a0 != a1), clipped to the support first (the clipped-off
+// part contributes 0).
+fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32) -> vec4<f32> {
+    let lo = clamp(atan(q.s_lo), min(a0, a1), max(a0, a1));
+    let hi = clamp(atan(q.s_hi), lo, max(a0, a1));
+    let w = hi - lo;
+    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
+    let ca = cos(al);
+    let sa = sin(al);
+    let n0 = mc_fast_node(q, ca.x, sa.x);
+    let n1 = mc_fast_node(q, ca.y, sa.y);
+    let n2 = mc_fast_node(q, ca.z, sa.z);
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * (w / abs(a1 - a0));
+    return mc_fast_gl3(q, th, n0, n1, n2, r);
 }
 
 // Fast, offset list: the same piecewise-linear tangent curve as the
-// reference, each segment's offsets (uniform from one control point to the
-// next) integrated by mc_fast_range, a flat segment (or a single control
-// point) evaluated as that one offset; segments weighted equally.
+// reference; each segment by mc_fast_segment, split in two halves when it
+// spans more than MC_FAST_SPLIT_DEG; a flat segment (or a single control
+// point) is that one offset; segments weighted equally.
 const MC_FAST_MIN_SPAN: f32 = 1e-4;
 const MC_FAST_SPLIT_DEG: f32 = 60.0;
 fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
@@ -539,16 +480,78 @@ fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
         let span = abs(d1 - d0);
         if span < MC_FAST_MIN_SPAN {
             acc += mc_fast_point(q, th, d0);
+        } else if span > MC_FAST_SPLIT_DEG * MC_DEG {
+            let dm = 0.5 * (d0 + d1);
+            acc += 0.5 * (mc_fast_segment(q, th, d0, dm) + mc_fast_segment(q, th, dm, d1));
         } else {
-            if span > MC_FAST_SPLIT_DEG * MC_DEG {
-                let dm = 0.5 * (d0 + d1);
-                acc += (mc_fast_range(q, th, d0, dm, false, 0.0, 1.0, 1.0) + mc_fast_range(q, th, dm, d1, false, 0.0, 1.0, 1.0)) / span;
-            } else {
-                acc += mc_fast_range(q, th, d0, d1, false, 0.0, 1.0, 1.0) / span;
-            }
+            acc += mc_fast_segment(q, th, d0, d1);
         }
     }
     return acc / f32(n - 1);
+}
+
+// Curve, one half of the profile (t from ta to ta + 1/2, slope linear from
+// sa to sb): the sub-interval of t whose slope lies in the support
+// (s_lo, s_hi), as (t0, t1); empty as (2, -1).
+fn mc_fast_half_clip(q: McFastPre, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
+    let ds = sb - sa;
+    let flat = abs(ds) < MC_FAST_MIN_DSLOPE;
+    let inv = 1.0 / select(ds, 1.0, flat);
+    let u0 = (q.s_lo - sa) * inv;
+    let u1 = (q.s_hi - sa) * inv;
+    let uf = select(vec2<f32>(1.0, 0.0), vec2<f32>(0.0, 1.0), sa > q.s_lo && sa < q.s_hi);
+    let u = select(vec2<f32>(max(min(u0, u1), 0.0), min(max(u0, u1), 1.0)), uf, flat);
+    return select(vec2<f32>(2.0, -1.0), ta + 0.5 * u, u.x < u.y);
+}
+
+// Slope of the profile at t (linear on each half through s0, s1, s2).
+fn mc_fast_slope(s0: f32, s1: f32, s2: f32, t: f32) -> f32 {
+    return select(s1 + (s2 - s1) * (2.0 * t - 1.0), s0 + (s1 - s0) * (2.0 * t), t < 0.5);
+}
+
+// int sqrt(1 + s^2) ds = (s sqrt(1 + s^2) + asinh(s)) / 2.
+fn mc_arc_primitive(s: f32) -> f32 {
+    let h = sqrt(1.0 + s * s);
+    return 0.5 * (s * h + sign(s) * log(abs(s) + h));
+}
+
+// Arc length of a half (t over 1/2) whose slope runs linearly from sa to sb.
+fn mc_fast_half_length(sa: f32, sb: f32) -> f32 {
+    let ds = sb - sa;
+    let sm = 0.5 * (sa + sb);
+    return select(0.5 * (mc_arc_primitive(sb) - mc_arc_primitive(sa)) / ds, 0.5 * sqrt(1.0 + sm * sm), abs(ds) < MC_FAST_MIN_DSLOPE);
+}
+
+// Fast, tangent curve. The profile's slope at t = 0, 1/2, 1 (second-order
+// one-sided differences of the baked samples at the ends, the central
+// difference at 1/2), taken as linear in t on each half (exact for a
+// quadratic profile such as the default). The rule runs in t over the hull
+// of the two halves' support intervals, each node weighted by its arc length
+// sqrt(1 + s^2), offset alpha = atan(s) (cos = 1 / sqrt(1 + s^2)); the sum is
+// divided by the whole profile's arc length. One range for any profile: a
+// profile whose slope is not monotone (a gap inside the hull) is integrated
+// less accurately, never by more nodes.
+const MC_FAST_MIN_DSLOPE: f32 = 1e-4;
+fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let q = mc_fast_pre(fr, wi, wr, th);
+    let n = f32(MC_CURVE_SEGMENTS);
+    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
+    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
+    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
+    let h0 = mc_fast_half_clip(q, s0, s1, 0.0);
+    let h1 = mc_fast_half_clip(q, s1, s2, 0.5);
+    let t0 = min(h0.x, h1.x);
+    let t1 = max(max(h0.y, h1.y), t0);
+    let w = t1 - t0;
+    let t = vec3<f32>(t0 + MC_GL3_T * w, t0 + 0.5 * w, t1 - MC_GL3_T * w);
+    let sl = vec3<f32>(mc_fast_slope(s0, s1, s2, t.x), mc_fast_slope(s0, s1, s2, t.y), mc_fast_slope(s0, s1, s2, t.z));
+    let inv_len = inverseSqrt(1.0 + sl * sl);
+    let n0 = mc_fast_node(q, inv_len.x, sl.x * inv_len.x);
+    let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
+    let n2 = mc_fast_node(q, inv_len.z, sl.z * inv_len.z);
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w / inv_len;
+    let total = mc_fast_half_length(s0, s1) + mc_fast_half_length(s1, s2);
+    return mc_fast_gl3(q, th, n0, n1, n2, r) / max(total, 1e-6);
 }
 
 // ---------------------------------------------------------------- cloth
