@@ -193,8 +193,8 @@ float weft_f_dielectric(float cos_i, float eta)
 
 float weft_f0_from_ior(float ior)
 {
-    float q_4 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q_4 * q_4);
+    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_3 * q_3);
 }
 
 float3 weft_main_light_direction()
@@ -297,8 +297,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
 {
     float4 e_1 = exp(((-0.5 * t) * t));
     float4 z = (abs(t) * 0.70710677);
-    float4 k_2 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
-    float4 poly = (k_2 * ((0.2548296).xxxx + (k_2 * ((-0.28449672).xxxx + (k_2 * ((1.4214138).xxxx + (k_2 * ((-1.4531521).xxxx + (k_2 * 1.0614054)))))))));
+    float4 k_3 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
+    float4 poly = (k_3 * ((0.2548296).xxxx + (k_3 * ((-0.28449672).xxxx + (k_3 * ((1.4214138).xxxx + (k_3 * ((-1.4531521).xxxx + (k_3 * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
     return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), ((t >= (0.0).xxxx) ? half_ : -(half_)));
 }
@@ -398,99 +398,107 @@ McFastNode mc_fast_node(McFastPre q, float ca, float sa)
     return mcfastnode;
 }
 
-float4 mc_fast_point(McFastPre q_1, McThread th_1, float alpha)
-{
-    const McFastNode _e5 = mc_fast_node(q_1, cos(alpha), sin(alpha));
-    float ts = (_e5.x * q_1.inv_gamma_s);
-    float tv = (_e5.x * q_1.inv_gamma_v);
-    float gs = ((exp(((-0.5 * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
-    float gv = ((exp(((-0.5 * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return float4((((gs * _e5.s)).xxx + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo)), _e5.p);
-}
-
-float4 mc_fast_gl3_(McFastPre q_2, McThread th_2, McFastNode n0_, McFastNode n1_, McFastNode n2_, float3 r)
+float4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, float3 r)
 {
     float4 xe_1 = float4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
-    const float3 _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    const float3 _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    const float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    const float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
     float3 s_2 = (r * float3(n0_.s, n1_.s, n2_.s));
     float3 v_1 = (r * float3(n0_.v, n1_.v, n2_.v));
     float surface = dot(_e36, s_2);
-    float volume = (((1.0 - th_2.kd) * dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    return float4(((surface).xxx + (volume * th_2.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
+    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
 }
 
-float4 mc_fast_segment(McFastPre q_3, McThread th_3, float a0_, float a1_)
+float4 mc_fast_segment(McFastPre q_2, McThread th_2, float a0_, float a1_, float lo_s, float hi_s)
 {
-    float lo = clamp(atan(q_3.s_lo), min(a0_, a1_), max(a0_, a1_));
-    float hi = clamp(atan(q_3.s_hi), lo, max(a0_, a1_));
+    float span = abs((a1_ - a0_));
+    bool flat = (span < MC_FAST_MIN_SPAN);
+    float lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
+    float hi = clamp(hi_s, lo, max(a0_, a1_));
     float w = (hi - lo);
     float3 al = float3((lo + (MC_GL3_T * w)), (lo + (0.5 * w)), (hi - (MC_GL3_T * w)));
     float3 ca_1 = cos(al);
     float3 sa_1 = sin(al);
-    const McFastNode _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
-    const McFastNode _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
-    const McFastNode _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
-    float3 r_2 = (float3(0.2777778, 0.44444445, 0.2777778) * (w / abs((a1_ - a0_))));
-    const float4 _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
-    return _e43;
+    const McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    const McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    const McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    float3 r_2 = (float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / max(span, MC_FAST_MIN_SPAN))));
+    const float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
 }
 
-float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_4, float4 offsets_a, float4 offsets_b, int count)
+int mc_fast_pieces(float4 offsets_a, float4 offsets_b, int k_1)
+{
+    const float _e5 = mc_offset_at(offsets_a, offsets_b, asint(asuint(k_1) + asuint(int(1))));
+    const float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = abs((_e5 - _e6));
+    return ((span_1 > MC_FAST_SPLIT_DEG) ? int(2) : int(1));
+}
+
+float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 offsets_a_1, float4 offsets_b_1, int count)
 {
     float4 acc = (0.0).xxxx;
-    int k_1 = int(0);
+    int k_2 = int(0);
+    int h = int(0);
+    int i = int(0);
 
     int n_3 = clamp(count, int(1), MC_MAX_OFFSETS);
-    const McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    if ((n_3 == int(1))) {
-        const float4 _e16 = mc_fast_point(_e10, th_4, (offsets_a.x * MC_DEG));
-        return _e16;
-    }
+    const McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    float lo_s_1 = atan(_e10.s_lo);
+    float hi_s_1 = atan(_e10.s_hi);
+    int segments = max(asint(asuint(n_3) - asuint(int(1))), int(1));
+    float4 spans = abs((float4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
+    float3 spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
+    bool4 live = (int4(int(0), int(1), int(2), int(3)) < (asint(asuint(n_3) - asuint(int(1)))).xxxx);
+    bool3 live_b = (int3(int(4), int(5), int(6)) < (asint(asuint(n_3) - asuint(int(1)))).xxx);
+    int4 per = (live ? ((spans > (60.0).xxxx) ? (int(2)).xxxx : (int(1)).xxxx) : (int(0)).xxxx);
+    int3 per_b = (live_b ? ((spans_b > (60.0).xxx) ? (int(2)).xxx : (int(1)).xxx) : (int(0)).xxx);
+    int pieces = max(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(per.x) + asuint(per.y))) + asuint(per.z))) + asuint(per.w))) + asuint(per_b.x))) + asuint(per_b.y))) + asuint(per_b.z)), int(1));
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e59 = k_1;
-            k_1 = asint(asuint(_e59) + asuint(int(1)));
+            int _e144 = i;
+            i = asint(asuint(_e144) + asuint(int(1)));
         }
         loop_init = false;
-        int _e22 = k_1;
-        if ((_e22 < asint(asuint(n_3) - asuint(int(1))))) {
+        int _e91 = i;
+        if ((_e91 < pieces)) {
         } else {
             break;
         }
         {
-            int _e26 = k_1;
-            const float _e27 = mc_offset_at(offsets_a, offsets_b, _e26);
-            float d0_ = (_e27 * MC_DEG);
-            int _e30 = k_1;
-            const float _e33 = mc_offset_at(offsets_a, offsets_b, asint(asuint(_e30) + asuint(int(1))));
-            float d1_ = (_e33 * MC_DEG);
-            float span = abs((d1_ - d0_));
-            if ((span < MC_FAST_MIN_SPAN)) {
-                float4 _e40 = acc;
-                const float4 _e41 = mc_fast_point(_e10, th_4, d0_);
-                acc = (_e40 + _e41);
-            } else {
-                if ((span > 1.0471976)) {
-                    float dm = (0.5 * (d0_ + d1_));
-                    float4 _e48 = acc;
-                    const float4 _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
-                    const float4 _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
-                    acc = (_e48 + (0.5 * (_e49 + _e50)));
-                } else {
-                    float4 _e55 = acc;
-                    const float4 _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
-                    acc = (_e55 + _e56);
-                }
-            }
+            int _e93 = k_2;
+            const float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            float d0_ = (_e94 * MC_DEG);
+            int _e97 = k_2;
+            const float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, asint(asuint(_e97) + asuint(int(1))));
+            float d1_ = ((n_3 > int(1)) ? (_e100 * MC_DEG) : d0_);
+            int _e106 = k_2;
+            const int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            int m = ((n_3 > int(1)) ? _e107 : int(1));
+            float fm = float(m);
+            float4 _e113 = acc;
+            int _e114 = h;
+            int _e118 = h;
+            const float4 _e124 = mc_fast_segment(_e10, th_3, lerp(d0_, d1_, (float(_e114) / fm)), lerp(d0_, d1_, (float(asint(asuint(_e118) + asuint(int(1)))) / fm)), lo_s_1, hi_s_1);
+            acc = (_e113 + (_e124 / (fm).xxxx));
+            int _e128 = h;
+            h = asint(asuint(_e128) + asuint(int(1)));
+            int _e131 = k_2;
+            int _e132 = k_2;
+            int _e135 = h;
+            k_2 = ((_e135 >= m) ? asint(asuint(_e132) + asuint(int(1))) : _e131);
+            int _e138 = h;
+            int _e139 = h;
+            h = ((_e139 >= m) ? int(0) : _e138);
         }
     }
-    float4 _e61 = acc;
-    return (_e61 / (float(asint(asuint(n_3) - asuint(int(1))))).xxxx);
+    float4 _e146 = acc;
+    return (_e146 / (float(segments)).xxxx);
 }
 
 float3 mc_combine(float4 t1_, float4 t2_, float a1_1, float a2_, float n_dot_wi, float n_dot_wr)
@@ -501,7 +509,7 @@ float3 mc_combine(float4 t1_, float4 t2_, float a1_1, float a2_, float n_dot_wi,
     float c1_ = saturate(a1_1);
     float c2_ = saturate(a2_);
     float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
     float3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
     if ((n_dot_wi > 0.0)) {
         local_1 = (n_dot_wr > 0.0);
@@ -510,12 +518,12 @@ float3 mc_combine(float4 t1_, float4 t2_, float a1_1, float a2_, float n_dot_wi,
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = (q_5 > MC_MIN_Q);
+        local_2 = (q_4 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     bool lit_ = local_2;
-    return (lit_ ? (s_3 / (max(q_5, MC_MIN_Q)).xxx) : (0.0).xxx);
+    return (lit_ ? (s_3 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {

@@ -168,8 +168,8 @@ float weft_f_dielectric(
 float weft_f0_from_ior(
     float ior
 ) {
-    float q_4 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
-    return q_4 * q_4;
+    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_3 * q_3;
 }
 
 metal::float3 weft_main_light_direction(
@@ -284,8 +284,8 @@ type_12 mc_normal4_(
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
     metal::float4 z = metal::abs(t) * 0.70710677;
-    metal::float4 k_2 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
-    metal::float4 poly = k_2 * (metal::float4(0.2548296) + (k_2 * (metal::float4(-0.28449672) + (k_2 * (metal::float4(1.4214138) + (k_2 * (metal::float4(-1.4531521) + (k_2 * 1.0614054))))))));
+    metal::float4 k_3 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
+    metal::float4 poly = k_3 * (metal::float4(0.2548296) + (k_3 * (metal::float4(-0.28449672) + (k_3 * (metal::float4(1.4214138) + (k_3 * (metal::float4(-1.4531521) + (k_3 * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
     return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
@@ -366,118 +366,128 @@ McFastNode mc_fast_node(
     return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e100 : 0.0};
 }
 
-metal::float4 mc_fast_point(
+metal::float4 mc_fast_gl3_(
     McFastPre q_1,
     McThread th_1,
-    float alpha
-) {
-    McFastNode _e5 = mc_fast_node(q_1, metal::cos(alpha), metal::sin(alpha));
-    float ts = _e5.x * q_1.inv_gamma_s;
-    float tv = _e5.x * q_1.inv_gamma_v;
-    float gs = (metal::exp((-0.5 * ts) * ts) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s;
-    float gv = (metal::exp((-0.5 * tv) * tv) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v;
-    return metal::float4(metal::float3(gs * _e5.s) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo), _e5.p);
-}
-
-metal::float4 mc_fast_gl3_(
-    McFastPre q_2,
-    McThread th_2,
     McFastNode n0_,
     McFastNode n1_,
     McFastNode n2_,
     metal::float3 r
 ) {
     metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
-    metal::float3 _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    metal::float3 _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    metal::float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    metal::float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
     metal::float3 s_2 = r * metal::float3(n0_.s, n1_.s, n2_.s);
     metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
     float surface = metal::dot(_e36, s_2);
-    float volume = ((1.0 - th_2.kd) * metal::dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z));
-    return metal::float4(metal::float3(surface) + (volume * th_2.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
+    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
 }
 
 metal::float4 mc_fast_segment(
-    McFastPre q_3,
-    McThread th_3,
+    McFastPre q_2,
+    McThread th_2,
     float a0_,
-    float a1_
+    float a1_,
+    float lo_s,
+    float hi_s
 ) {
-    float lo = metal::clamp(metal::atan(q_3.s_lo), metal::min(a0_, a1_), metal::max(a0_, a1_));
-    float hi = metal::clamp(metal::atan(q_3.s_hi), lo, metal::max(a0_, a1_));
+    float span = metal::abs(a1_ - a0_);
+    bool flat = span < MC_FAST_MIN_SPAN;
+    float lo = metal::clamp(lo_s, metal::min(a0_, a1_), metal::max(a0_, a1_));
+    float hi = metal::clamp(hi_s, lo, metal::max(a0_, a1_));
     float w = hi - lo;
     metal::float3 al = metal::float3(lo + (MC_GL3_T * w), lo + (0.5 * w), hi - (MC_GL3_T * w));
     metal::float3 ca_1 = metal::cos(al);
     metal::float3 sa_1 = metal::sin(al);
-    McFastNode _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
-    McFastNode _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
-    McFastNode _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
-    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (w / metal::abs(a1_ - a0_));
-    metal::float4 _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
-    return _e43;
+    McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span, MC_FAST_MIN_SPAN)));
+    metal::float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
+}
+
+int mc_fast_pieces(
+    metal::float4 offsets_a,
+    metal::float4 offsets_b,
+    int k_1
+) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = metal::abs(_e5 - _e6);
+    return (span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1;
 }
 
 metal::float4 mc_thread_list_fast(
     McFrame fr_1,
     metal::float3 wi_1,
     metal::float3 wr_1,
-    McThread th_4,
-    metal::float4 offsets_a,
-    metal::float4 offsets_b,
+    McThread th_3,
+    metal::float4 offsets_a_1,
+    metal::float4 offsets_b_1,
     int count
 ) {
     metal::float4 acc = metal::float4(0.0);
-    int k_1 = 0;
+    int k_2 = 0;
+    int h = 0;
+    int i = 0;
     int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    if (n_3 == 1) {
-        metal::float4 _e16 = mc_fast_point(_e10, th_4, offsets_a.x * MC_DEG);
-        return _e16;
-    }
+    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    float lo_s_1 = metal::atan(_e10.s_lo);
+    float hi_s_1 = metal::atan(_e10.s_hi);
+    int segments = metal::max(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)), 1);
+    metal::float4 spans = metal::abs(metal::float4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1);
+    metal::float3 spans_b = metal::abs(offsets_b_1.yzw - offsets_b_1.xyz);
+    metal::bool4 live = metal::int4(0, 1, 2, 3) < metal::int4(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::bool3 live_b = metal::int3(4, 5, 6) < metal::int3(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::int4 per = metal::select(metal::int4(0), metal::select(metal::int4(1), metal::int4(2), spans > metal::float4(60.0)), live);
+    metal::int3 per_b = metal::select(metal::int3(0), metal::select(metal::int3(1), metal::int3(2), spans_b > metal::float3(60.0)), live_b);
+    int pieces = metal::max(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(per.x) + as_type<uint>(per.y))) + as_type<uint>(per.z))) + as_type<uint>(per.w))) + as_type<uint>(per_b.x))) + as_type<uint>(per_b.y))) + as_type<uint>(per_b.z)), 1);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e59 = k_1;
-            k_1 = as_type<int>(as_type<uint>(_e59) + as_type<uint>(1));
+            int _e144 = i;
+            i = as_type<int>(as_type<uint>(_e144) + as_type<uint>(1));
         }
         loop_init = false;
-        int _e22 = k_1;
-        if (_e22 < as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) {
+        int _e91 = i;
+        if (_e91 < pieces) {
         } else {
             break;
         }
         {
-            int _e26 = k_1;
-            float _e27 = mc_offset_at(offsets_a, offsets_b, _e26);
-            float d0_ = _e27 * MC_DEG;
-            int _e30 = k_1;
-            float _e33 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(_e30) + as_type<uint>(1)));
-            float d1_ = _e33 * MC_DEG;
-            float span = metal::abs(d1_ - d0_);
-            if (span < MC_FAST_MIN_SPAN) {
-                metal::float4 _e40 = acc;
-                metal::float4 _e41 = mc_fast_point(_e10, th_4, d0_);
-                acc = _e40 + _e41;
-            } else {
-                if (span > 1.0471976) {
-                    float dm = 0.5 * (d0_ + d1_);
-                    metal::float4 _e48 = acc;
-                    metal::float4 _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
-                    metal::float4 _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
-                    acc = _e48 + (0.5 * (_e49 + _e50));
-                } else {
-                    metal::float4 _e55 = acc;
-                    metal::float4 _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
-                    acc = _e55 + _e56;
-                }
-            }
+            int _e93 = k_2;
+            float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            float d0_ = _e94 * MC_DEG;
+            int _e97 = k_2;
+            float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, as_type<int>(as_type<uint>(_e97) + as_type<uint>(1)));
+            float d1_ = (n_3 > 1) ? (_e100 * MC_DEG) : d0_;
+            int _e106 = k_2;
+            int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            int m = (n_3 > 1) ? _e107 : 1;
+            float fm = static_cast<float>(m);
+            metal::float4 _e113 = acc;
+            int _e114 = h;
+            int _e118 = h;
+            metal::float4 _e124 = mc_fast_segment(_e10, th_3, metal::mix(d0_, d1_, static_cast<float>(_e114) / fm), metal::mix(d0_, d1_, static_cast<float>(as_type<int>(as_type<uint>(_e118) + as_type<uint>(1))) / fm), lo_s_1, hi_s_1);
+            acc = _e113 + (_e124 / metal::float4(fm));
+            int _e128 = h;
+            h = as_type<int>(as_type<uint>(_e128) + as_type<uint>(1));
+            int _e131 = k_2;
+            int _e132 = k_2;
+            int _e135 = h;
+            k_2 = (_e135 >= m) ? as_type<int>(as_type<uint>(_e132) + as_type<uint>(1)) : _e131;
+            int _e138 = h;
+            int _e139 = h;
+            h = (_e139 >= m) ? 0 : _e138;
         }
     }
-    metal::float4 _e61 = acc;
-    return _e61 / metal::float4(static_cast<float>(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))));
+    metal::float4 _e146 = acc;
+    return _e146 / metal::float4(static_cast<float>(segments));
 }
 
 metal::float3 mc_combine(
@@ -493,7 +503,7 @@ metal::float3 mc_combine(
     float c1_ = metal::saturate(a1_1);
     float c2_ = metal::saturate(a2_);
     float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_5 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
     metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
     if (n_dot_wi > 0.0) {
         local_1 = n_dot_wr > 0.0;
@@ -502,12 +512,12 @@ metal::float3 mc_combine(
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = q_5 > MC_MIN_Q;
+        local_2 = q_4 > MC_MIN_Q;
     } else {
         local_2 = false;
     }
     bool lit = local_2;
-    return lit ? (s_3 / metal::float3(metal::max(q_5, MC_MIN_Q))) : metal::float3(0.0);
+    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McThread microcylinder_thread(

@@ -159,8 +159,8 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
-    let q_4 = ((ior - 1f) / max((ior + 1f), 0.0001f));
-    return (q_4 * q_4);
+    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_3 * q_3);
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -245,8 +245,8 @@ fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
-    let k_2 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k_2 * (vec4(0.2548296f) + (k_2 * (vec4(-0.28449672f) + (k_2 * (vec4(1.4214138f) + (k_2 * (vec4(-1.4531521f) + (k_2 * 1.0614054f)))))))));
+    let k_3 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_3 * (vec4(0.2548296f) + (k_3 * (vec4(-0.28449672f) + (k_3 * (vec4(1.4214138f) + (k_3 * (vec4(-1.4531521f) + (k_3 * 1.0614054f)))))))));
     let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
     return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
 }
@@ -316,90 +316,98 @@ fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e100, ok_2));
 }
 
-fn mc_fast_point(q_1: McFastPre, th_1: McThread, alpha: f32) -> vec4<f32> {
-    let _e5 = mc_fast_node(q_1, cos(alpha), sin(alpha));
-    let ts = (_e5.x * q_1.inv_gamma_s);
-    let tv = (_e5.x * q_1.inv_gamma_v);
-    let gs = ((exp(((-0.5f * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
-    let gv = ((exp(((-0.5f * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4<f32>((vec3((gs * _e5.s)) + (((((1f - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo)), _e5.p);
-}
-
-fn mc_fast_gl3_(q_2: McFastPre, th_2: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
     let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
-    let _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    let _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    let _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    let _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
     let s_2 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
     let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
     let surface = dot(_e36, s_2);
-    let volume = (((1f - th_2.kd) * dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    return vec4<f32>((vec3(surface) + (volume * th_2.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
+    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
 }
 
-fn mc_fast_segment(q_3: McFastPre, th_3: McThread, a0_: f32, a1_: f32) -> vec4<f32> {
-    let lo = clamp(atan(q_3.s_lo), min(a0_, a1_), max(a0_, a1_));
-    let hi = clamp(atan(q_3.s_hi), lo, max(a0_, a1_));
+fn mc_fast_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span = abs((a1_ - a0_));
+    let flat = (span < MC_FAST_MIN_SPAN);
+    let lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
+    let hi = clamp(hi_s, lo, max(a0_, a1_));
     let w = (hi - lo);
     let al = vec3<f32>((lo + (MC_GL3_T * w)), (lo + (0.5f * w)), (hi - (MC_GL3_T * w)));
     let ca_1 = cos(al);
     let sa_1 = sin(al);
-    let _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
-    let _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
-    let _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
-    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * (w / abs((a1_ - a0_))));
-    let _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
-    return _e43;
+    let _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    let _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    let _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span, MC_FAST_MIN_SPAN)), 1f, flat));
+    let _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
 }
 
-fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_4: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
+    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
+    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    let span_1 = abs((_e5 - _e6));
+    return select(1i, 2i, (span_1 > MC_FAST_SPLIT_DEG));
+}
+
+fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, count: i32) -> vec4<f32> {
     var acc: vec4<f32> = vec4(0f);
-    var k_1: i32 = 0i;
+    var k_2: i32 = 0i;
+    var h: i32 = 0i;
+    var i: i32 = 0i;
 
     let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
-    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    if (n_3 == 1i) {
-        let _e16 = mc_fast_point(_e10, th_4, (offsets_a.x * MC_DEG));
-        return _e16;
-    }
+    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    let lo_s_1 = atan(_e10.s_lo);
+    let hi_s_1 = atan(_e10.s_hi);
+    let segments = max((n_3 - 1i), 1i);
+    let spans = abs((vec4<f32>(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
+    let spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
+    let live = (vec4<i32>(0i, 1i, 2i, 3i) < vec4((n_3 - 1i)));
+    let live_b = (vec3<i32>(4i, 5i, 6i) < vec3((n_3 - 1i)));
+    let per = select(vec4(0i), select(vec4(1i), vec4(2i), (spans > vec4(60f))), live);
+    let per_b = select(vec3(0i), select(vec3(1i), vec3(2i), (spans_b > vec3(60f))), live_b);
+    let pieces = max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1i);
     loop {
-        let _e22 = k_1;
-        if (_e22 < (n_3 - 1i)) {
+        let _e91 = i;
+        if (_e91 < pieces) {
         } else {
             break;
         }
         {
-            let _e26 = k_1;
-            let _e27 = mc_offset_at(offsets_a, offsets_b, _e26);
-            let d0_ = (_e27 * MC_DEG);
-            let _e30 = k_1;
-            let _e33 = mc_offset_at(offsets_a, offsets_b, (_e30 + 1i));
-            let d1_ = (_e33 * MC_DEG);
-            let span = abs((d1_ - d0_));
-            if (span < MC_FAST_MIN_SPAN) {
-                let _e40 = acc;
-                let _e41 = mc_fast_point(_e10, th_4, d0_);
-                acc = (_e40 + _e41);
-            } else {
-                if (span > 1.0471976f) {
-                    let dm = (0.5f * (d0_ + d1_));
-                    let _e48 = acc;
-                    let _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
-                    let _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
-                    acc = (_e48 + (0.5f * (_e49 + _e50)));
-                } else {
-                    let _e55 = acc;
-                    let _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
-                    acc = (_e55 + _e56);
-                }
-            }
+            let _e93 = k_2;
+            let _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            let d0_ = (_e94 * MC_DEG);
+            let _e97 = k_2;
+            let _e100 = mc_offset_at(offsets_a_1, offsets_b_1, (_e97 + 1i));
+            let d1_ = select(d0_, (_e100 * MC_DEG), (n_3 > 1i));
+            let _e106 = k_2;
+            let _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            let m = select(1i, _e107, (n_3 > 1i));
+            let fm = f32(m);
+            let _e113 = acc;
+            let _e114 = h;
+            let _e118 = h;
+            let _e124 = mc_fast_segment(_e10, th_3, mix(d0_, d1_, (f32(_e114) / fm)), mix(d0_, d1_, (f32((_e118 + 1i)) / fm)), lo_s_1, hi_s_1);
+            acc = (_e113 + (_e124 / vec4(fm)));
+            let _e128 = h;
+            h = (_e128 + 1i);
+            let _e131 = k_2;
+            let _e132 = k_2;
+            let _e135 = h;
+            k_2 = select(_e131, (_e132 + 1i), (_e135 >= m));
+            let _e138 = h;
+            let _e139 = h;
+            h = select(_e138, 0i, (_e139 >= m));
         }
         continuing {
-            let _e59 = k_1;
-            k_1 = (_e59 + 1i);
+            let _e144 = i;
+            i = (_e144 + 1i);
         }
     }
-    let _e61 = acc;
-    return (_e61 / vec4(f32((n_3 - 1i))));
+    let _e146 = acc;
+    return (_e146 / vec4(f32(segments)));
 }
 
 fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
@@ -409,7 +417,7 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32
     let c1_ = saturate(a1_1);
     let c2_ = saturate(a2_);
     let gap = max(((1f - c1_) - c2_), 0f);
-    let q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
     let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
     if (n_dot_wi > 0f) {
         local_1 = (n_dot_wr > 0f);
@@ -418,12 +426,12 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32
     }
     let _e37 = local_1;
     if _e37 {
-        local_2 = (q_5 > MC_MIN_Q);
+        local_2 = (q_4 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     let lit = local_2;
-    return select(vec3(0f), (s_3 / vec3(max(q_5, MC_MIN_Q))), lit);
+    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {

@@ -153,8 +153,8 @@ float weft_f_dielectric(float cos_i, float eta) {
 }
 
 float weft_f0_from_ior(float ior) {
-    float q_4 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q_4 * q_4);
+    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_3 * q_3);
 }
 
 vec3 weft_main_light_direction() {
@@ -238,8 +238,8 @@ float mc_offset_at(vec4 a, vec4 b, int k) {
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
-    vec4 k_2 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k_2 * (vec4(0.2548296) + (k_2 * (vec4(-0.28449672) + (k_2 * (vec4(1.4214138) + (k_2 * (vec4(-1.4531521) + (k_2 * 1.0614054)))))))));
+    vec4 k_3 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k_3 * (vec4(0.2548296) + (k_3 * (vec4(-0.28449672) + (k_3 * (vec4(1.4214138) + (k_3 * (vec4(-1.4531521) + (k_3 * 1.0614054)))))))));
     vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
     return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
 }
@@ -308,91 +308,99 @@ McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
     return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e100 : 0.0));
 }
 
-vec4 mc_fast_point(McFastPre q_1, McThread th_1, float alpha) {
-    McFastNode _e5 = mc_fast_node(q_1, cos(alpha), sin(alpha));
-    float ts = (_e5.x * q_1.inv_gamma_s);
-    float tv = (_e5.x * q_1.inv_gamma_v);
-    float gs = ((exp(((-0.5 * ts) * ts)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_s);
-    float gv = ((exp(((-0.5 * tv) * tv)) * MC_INV_SQRT_TWO_PI) * q_1.inv_gamma_v);
-    return vec4((vec3((gs * _e5.s)) + (((((1.0 - th_1.kd) * gv) + th_1.kd) * _e5.v) * th_1.albedo)), _e5.p);
-}
-
-vec4 mc_fast_gl3_(McFastPre q_2, McThread th_2, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
+vec4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
     vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
-    vec3 _e36 = mc_cell_means(xe_1, q_2.inv_gamma_s);
-    vec3 _e38 = mc_cell_means(xe_1, q_2.inv_gamma_v);
+    vec3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    vec3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
     vec3 s_2 = (r * vec3(n0_.s, n1_.s, n2_.s));
     vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
     float surface = dot(_e36, s_2);
-    float volume = (((1.0 - th_2.kd) * dot(_e38, v_1)) + (th_2.kd * ((v_1.x + v_1.y) + v_1.z)));
-    return vec4((vec3(surface) + (volume * th_2.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
+    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
-vec4 mc_fast_segment(McFastPre q_3, McThread th_3, float a0_, float a1_) {
-    float lo = clamp(atan(q_3.s_lo), min(a0_, a1_), max(a0_, a1_));
-    float hi = clamp(atan(q_3.s_hi), lo, max(a0_, a1_));
+vec4 mc_fast_segment(McFastPre q_2, McThread th_2, float a0_, float a1_, float lo_s, float hi_s) {
+    float span = abs((a1_ - a0_));
+    bool flat_ = (span < MC_FAST_MIN_SPAN);
+    float lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
+    float hi = clamp(hi_s, lo, max(a0_, a1_));
     float w = (hi - lo);
     vec3 al = vec3((lo + (MC_GL3_T * w)), (lo + (0.5 * w)), (hi - (MC_GL3_T * w)));
     vec3 ca_1 = cos(al);
     vec3 sa_1 = sin(al);
-    McFastNode _e28 = mc_fast_node(q_3, ca_1.x, sa_1.x);
-    McFastNode _e31 = mc_fast_node(q_3, ca_1.y, sa_1.y);
-    McFastNode _e34 = mc_fast_node(q_3, ca_1.z, sa_1.z);
-    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (w / abs((a1_ - a0_))));
-    vec4 _e43 = mc_fast_gl3_(q_3, th_3, _e28, _e31, _e34, r_2);
-    return _e43;
+    McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (flat_ ? 1.0 : (w / max(span, MC_FAST_MIN_SPAN))));
+    vec4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
 }
 
-vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_4, vec4 offsets_a, vec4 offsets_b, int count) {
+int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = abs((_e5 - _e6));
+    return ((span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1);
+}
+
+vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_1, vec4 offsets_b_1, int count) {
     vec4 acc = vec4(0.0);
-    int k_1 = 0;
+    int k_2 = 0;
+    int h = 0;
+    int i = 0;
     int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_4);
-    if ((n_3 == 1)) {
-        vec4 _e16 = mc_fast_point(_e10, th_4, (offsets_a.x * MC_DEG));
-        return _e16;
-    }
+    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    float lo_s_1 = atan(_e10.s_lo);
+    float hi_s_1 = atan(_e10.s_hi);
+    int segments = max((n_3 - 1), 1);
+    vec4 spans = abs((vec4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
+    vec3 spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
+    bvec4 live = lessThan(ivec4(0, 1, 2, 3), ivec4((n_3 - 1)));
+    bvec3 live_b = lessThan(ivec3(4, 5, 6), ivec3((n_3 - 1)));
+    ivec4 per = mix(ivec4(0), mix(ivec4(1), ivec4(2), greaterThan(spans, vec4(60.0))), live);
+    ivec3 per_b = mix(ivec3(0), mix(ivec3(1), ivec3(2), greaterThan(spans_b, vec3(60.0))), live_b);
+    int pieces = max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e59 = k_1;
-            k_1 = (_e59 + 1);
+            int _e144 = i;
+            i = (_e144 + 1);
         }
         loop_init = false;
-        int _e22 = k_1;
-        if ((_e22 < (n_3 - 1))) {
+        int _e91 = i;
+        if ((_e91 < pieces)) {
         } else {
             break;
         }
         {
-            int _e26 = k_1;
-            float _e27 = mc_offset_at(offsets_a, offsets_b, _e26);
-            float d0_ = (_e27 * MC_DEG);
-            int _e30 = k_1;
-            float _e33 = mc_offset_at(offsets_a, offsets_b, (_e30 + 1));
-            float d1_ = (_e33 * MC_DEG);
-            float span = abs((d1_ - d0_));
-            if ((span < MC_FAST_MIN_SPAN)) {
-                vec4 _e40 = acc;
-                vec4 _e41 = mc_fast_point(_e10, th_4, d0_);
-                acc = (_e40 + _e41);
-            } else {
-                if ((span > 1.0471976)) {
-                    float dm = (0.5 * (d0_ + d1_));
-                    vec4 _e48 = acc;
-                    vec4 _e49 = mc_fast_segment(_e10, th_4, d0_, dm);
-                    vec4 _e50 = mc_fast_segment(_e10, th_4, dm, d1_);
-                    acc = (_e48 + (0.5 * (_e49 + _e50)));
-                } else {
-                    vec4 _e55 = acc;
-                    vec4 _e56 = mc_fast_segment(_e10, th_4, d0_, d1_);
-                    acc = (_e55 + _e56);
-                }
-            }
+            int _e93 = k_2;
+            float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            float d0_ = (_e94 * MC_DEG);
+            int _e97 = k_2;
+            float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, (_e97 + 1));
+            float d1_ = ((n_3 > 1) ? (_e100 * MC_DEG) : d0_);
+            int _e106 = k_2;
+            int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            int m = ((n_3 > 1) ? _e107 : 1);
+            float fm = float(m);
+            vec4 _e113 = acc;
+            int _e114 = h;
+            int _e118 = h;
+            vec4 _e124 = mc_fast_segment(_e10, th_3, mix(d0_, d1_, (float(_e114) / fm)), mix(d0_, d1_, (float((_e118 + 1)) / fm)), lo_s_1, hi_s_1);
+            acc = (_e113 + (_e124 / vec4(fm)));
+            int _e128 = h;
+            h = (_e128 + 1);
+            int _e131 = k_2;
+            int _e132 = k_2;
+            int _e135 = h;
+            k_2 = ((_e135 >= m) ? (_e132 + 1) : _e131);
+            int _e138 = h;
+            int _e139 = h;
+            h = ((_e139 >= m) ? 0 : _e138);
         }
     }
-    vec4 _e61 = acc;
-    return (_e61 / vec4(float((n_3 - 1))));
+    vec4 _e146 = acc;
+    return (_e146 / vec4(float(segments)));
 }
 
 vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float n_dot_wr) {
@@ -401,7 +409,7 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float
     float c1_ = clamp(a1_1, 0.0, 1.0);
     float c2_ = clamp(a2_, 0.0, 1.0);
     float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_5 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
     vec3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
     if ((n_dot_wi > 0.0)) {
         local_1 = (n_dot_wr > 0.0);
@@ -410,12 +418,12 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = (q_5 > MC_MIN_Q);
+        local_2 = (q_4 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     bool lit = local_2;
-    return (lit ? (s_3 / vec3(max(q_5, MC_MIN_Q))) : vec3(0.0));
+    return (lit ? (s_3 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {

@@ -419,16 +419,6 @@ fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     return McFastNode(x, f_r * cos_half_phi * base, f_t * base / (ci + cr), select(0.0, p, ok));
 }
 
-// A single offset: the lobe itself, (S rgb, P).
-fn mc_fast_point(q: McFastPre, th: McThread, alpha: f32) -> vec4<f32> {
-    let a = mc_fast_node(q, cos(alpha), sin(alpha));
-    let ts = a.x * q.inv_gamma_s;
-    let tv = a.x * q.inv_gamma_v;
-    let gs = exp(-0.5 * ts * ts) * MC_INV_SQRT_TWO_PI * q.inv_gamma_s;
-    let gv = exp(-0.5 * tv * tv) * MC_INV_SQRT_TWO_PI * q.inv_gamma_v;
-    return vec4<f32>(vec3<f32>(gs * a.s) + ((1.0 - th.kd) * gv + th.kd) * a.v * th.albedo, a.p);
-}
-
 // The rule on one range, given its three nodes and their weights r (the
 // Gauss-Legendre weight times the range's width times any density):
 // (sum r S rgb, sum r P).
@@ -444,12 +434,17 @@ fn mc_fast_gl3(q: McFastPre, th: McThread, n0: McFastNode, n1: McFastNode, n2: M
     return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
 }
 
-// Offset list segment: the mean over the offsets uniform in [a0, a1] (either
-// order, radians, a0 != a1), clipped to the support first (the clipped-off
-// part contributes 0).
-fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32) -> vec4<f32> {
-    let lo = clamp(atan(q.s_lo), min(a0, a1), max(a0, a1));
-    let hi = clamp(atan(q.s_hi), lo, max(a0, a1));
+// Offset list piece: the mean over the offsets uniform in [a0, a1] (either
+// order, radians), clipped to the support (lo, hi) first (the clipped-off
+// part contributes 0). A flat piece (|a1 - a0| < MC_FAST_MIN_SPAN) puts all
+// three nodes on its one offset with weights summing to 1, and its cells have
+// zero width: the point lobe, by the same code.
+const MC_FAST_MIN_SPAN: f32 = 1e-4;
+fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span = abs(a1 - a0);
+    let flat = span < MC_FAST_MIN_SPAN;
+    let lo = clamp(lo_s, min(a0, a1), max(a0, a1));
+    let hi = clamp(hi_s, lo, max(a0, a1));
     let w = hi - lo;
     let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
     let ca = cos(al);
@@ -457,37 +452,49 @@ fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32) -> vec4<f32> {
     let n0 = mc_fast_node(q, ca.x, sa.x);
     let n1 = mc_fast_node(q, ca.y, sa.y);
     let n2 = mc_fast_node(q, ca.z, sa.z);
-    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * (w / abs(a1 - a0));
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * select(w / max(span, MC_FAST_MIN_SPAN), 1.0, flat);
     return mc_fast_gl3(q, th, n0, n1, n2, r);
 }
 
 // Fast, offset list: the same piecewise-linear tangent curve as the
-// reference; each segment by mc_fast_segment, split in two halves when it
-// spans more than MC_FAST_SPLIT_DEG; a flat segment (or a single control
-// point) is that one offset; segments weighted equally.
-const MC_FAST_MIN_SPAN: f32 = 1e-4;
+// reference; each segment is one piece, or two halves when it spans more
+// than MC_FAST_SPLIT_DEG, each by mc_fast_segment; segments weighted equally.
+// One loop over the pieces, no branches (a CPU rasteriser runs both sides
+// of a branch).
 const MC_FAST_SPLIT_DEG: f32 = 60.0;
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k: i32) -> i32 {
+    let span = abs(mc_offset_at(offsets_a, offsets_b, k + 1) - mc_offset_at(offsets_a, offsets_b, k));
+    return select(1, 2, span > MC_FAST_SPLIT_DEG);
+}
 fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
     let n = clamp(count, 1, MC_MAX_OFFSETS);
     let q = mc_fast_pre(fr, wi, wr, th);
-    if n == 1 {
-        return mc_fast_point(q, th, offsets_a.x * MC_DEG);
-    }
+    let lo_s = atan(q.s_lo);
+    let hi_s = atan(q.s_hi);
+    // A single control point: one flat piece on it.
+    let segments = max(n - 1, 1);
+    // Pieces over the n - 1 segments (straight-line: a loop costs more).
+    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
+    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
+    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
+    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
+    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
+    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
+    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
     var acc = vec4<f32>(0.0);
-    for (var k = 0; k < n - 1; k++) {
+    var k = 0;
+    var h = 0;
+    for (var i = 0; i < pieces; i++) {
         let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        let d1 = mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG;
-        let span = abs(d1 - d0);
-        if span < MC_FAST_MIN_SPAN {
-            acc += mc_fast_point(q, th, d0);
-        } else if span > MC_FAST_SPLIT_DEG * MC_DEG {
-            let dm = 0.5 * (d0 + d1);
-            acc += 0.5 * (mc_fast_segment(q, th, d0, dm) + mc_fast_segment(q, th, dm, d1));
-        } else {
-            acc += mc_fast_segment(q, th, d0, d1);
-        }
+        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
+        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
+        let fm = f32(m);
+        acc += mc_fast_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
+        h += 1;
+        k = select(k, k + 1, h >= m);
+        h = select(h, 0, h >= m);
     }
-    return acc / f32(n - 1);
+    return acc / f32(segments);
 }
 
 // Curve, one half of the profile (t from ta to ta + 1/2, slope linear from
