@@ -110,7 +110,6 @@ constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant uint MC_CURVE_SAMPLES = 33u;
 constant uint MC_CURVE_SEGMENTS = 32u;
-constant uint MC_FAST_CHORDS = 4u;
 constant int MC_MAX_OFFSETS = 8;
 constant float MC_REF_STEP_DEG = 1.0;
 constant float MC_REF_MAX_SUBDIV = 64.0;
@@ -363,7 +362,7 @@ McFastNode mc_fast_node(
     float _e124 = weft_f_dielectric(cr_1, q.eta);
     float f_t = (1.0 - _e120) * (1.0 - _e124);
     float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
-    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / (ci_1 + cr_1), ok_2 ? _e100 : 0.0};
+    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e100 : 0.0};
 }
 
 metal::float4 mc_fast_gl3_(

@@ -100,7 +100,6 @@ const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-const MC_FAST_CHORDS: u32 = 4u;
 const MC_MAX_OFFSETS: i32 = 8i;
 const MC_REF_STEP_DEG: f32 = 1f;
 const MC_REF_MAX_SUBDIV: f32 = 64f;
@@ -309,7 +308,7 @@ fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     let _e124 = weft_f_dielectric(cr_1, q.eta);
     let f_t = ((1f - _e120) * (1f - _e124));
     let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
-    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), select(0f, _e100, ok_2));
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e100, ok_2));
 }
 
 fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {

@@ -116,7 +116,6 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
-static const uint MC_FAST_CHORDS = 4u;
 static const int MC_MAX_OFFSETS = int(8);
 static const float MC_REF_STEP_DEG = 1.0;
 static const float MC_REF_MAX_SUBDIV = 64.0;
@@ -394,7 +393,7 @@ McFastNode mc_fast_node(McFastPre q, float ca, float sa)
     const float _e124 = weft_f_dielectric(cr_1, q.eta);
     float f_t = ((1.0 - _e120) * (1.0 - _e124));
     float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
-    const McFastNode mcfastnode = ConstructMcFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / (ci_1 + cr_1)), (ok_2 ? _e100 : 0.0));
+    const McFastNode mcfastnode = ConstructMcFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e100 : 0.0));
     return mcfastnode;
 }
 

@@ -79,7 +79,6 @@ const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const uint MC_CURVE_SAMPLES = 33u;
 const uint MC_CURVE_SEGMENTS = 32u;
-const uint MC_FAST_CHORDS = 4u;
 const int MC_MAX_OFFSETS = 8;
 const float MC_REF_STEP_DEG = 1.0;
 const float MC_REF_MAX_SUBDIV = 64.0;

@@ -86,7 +86,6 @@ const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-const MC_FAST_CHORDS: u32 = 4u;
 const MC_MAX_OFFSETS: i32 = 8i;
 const MC_REF_STEP_DEG: f32 = 1f;
 const MC_REF_MAX_SUBDIV: f32 = 64f;

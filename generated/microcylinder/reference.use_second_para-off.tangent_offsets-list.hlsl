@@ -105,7 +105,6 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
-static const uint MC_FAST_CHORDS = 4u;
 static const int MC_MAX_OFFSETS = int(8);
 static const float MC_REF_STEP_DEG = 1.0;
 static const float MC_REF_MAX_SUBDIV = 64.0;

@@ -95,7 +95,6 @@ constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant uint MC_CURVE_SAMPLES = 33u;
 constant uint MC_CURVE_SEGMENTS = 32u;
-constant uint MC_FAST_CHORDS = 4u;
 constant int MC_MAX_OFFSETS = 8;
 constant float MC_REF_STEP_DEG = 1.0;
 constant float MC_REF_MAX_SUBDIV = 64.0;

@@ -43,11 +43,17 @@
 //     weighted by its arc length; offset lists linearly interpolated with
 //     midpoint sub-steps <= 1 deg, at most 64 per segment: relative error
 //     < 3e-3 against a 0.02 deg quadrature for Table II, measured in the test).
-//   fast: control points only (offset list) or 4 chords of the curve; angle
-//     forms without transcendentals (half-angle identities, a 4-term
-//     polynomial acos/asin with |error| < 6.8e-5 rad); Schlick F_r at the
-//     effective angle and F = (1 - F_r)^2 (the seed's form). exp() stays
-//     (one hardware instruction).
+//   fast: the same offset distribution and the same lobe, integrated with
+//     three nodes per range of offsets instead of one lobe per degree (see
+//     "fast tier" below): each range clipped to the offsets where M P > 0
+//     (an interval, found in closed form), a 3-point Gauss-Legendre rule for
+//     the slowly varying factors, and the Gaussians in theta_h averaged
+//     exactly (erf) over each node's cell instead of sampled. Offset lists:
+//     every segment is one range (two halves beyond 60 deg); curves: one
+//     range in t over the whole profile (slope taken as linear in t through
+//     its values at t = 0, 1/2, 1), arc-length weighted. Angle forms without
+//     transcendentals (half-angle identities, a 4-term polynomial acos/asin,
+//     |error| < 6.8e-5 rad); exact dielectric Fresnel as in the reference.
 //
 // Guards (the same constants are used by the f64 model in the test):
 //   - a sample whose w_i or w_r lies within 0.0057 deg of u' (or of v for
@@ -62,8 +68,6 @@
 // samples over t in [0, 1] (`samples = 33` in microcylinder.toml).
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-// Fast tier: the curve is reduced to this many chords (8 segments each).
-const MC_FAST_CHORDS: u32 = 4u;
 // Offset lists hold at most 8 control points (two vec4).
 const MC_MAX_OFFSETS: i32 = 8;
 // Reference tier: largest sub-step along an offset-list segment (degrees) and
@@ -272,20 +276,38 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
 // The fast tier integrates the same tangent-offset distribution as the
 // reference with three nodes per range of offsets instead of one lobe per
 // degree:
-//   1. Support: every term carries M and P, which vanish unless
-//      cos(beta_i + alpha) > 0 and cos(beta_r + alpha) > 0 (beta = azimuth of
-//      w in the u-n plane, measured from n towards u; the tilt alpha adds to
-//      it). The offsets outside (lo, hi) contribute nothing, so each range is
-//      clipped to it first: the integrand then has no kinks at the ends and
-//      falls to 0 there.
-//   2. Three-point Gauss-Legendre rule on the clipped range for the slowly
-//      varying factors (F, cos(phi_d/2), M, P, cos(theta), 1/cos^2(theta_d)).
-//   3. The narrow Gaussians in theta_h are not sampled but averaged over each
-//      node's cell of the rule (cells of widths 5/18, 8/18, 5/18), with
-//      theta_h linear across the cell: mean g = (cdf(x_b/gamma) -
-//      cdf(x_a/gamma)) / (x_b - x_a) (cdf by Abramowitz & Stegun 7.1.26).
-//      theta_h at the cell edges is interpolated from the nodes.
-// Every node is straight-line code (no early return, no loop, no array).
+//   1. Support: every term of S and P carries M and P, which vanish unless
+//      n'.w_i > 0 and n'.w_r > 0. With w = (x, y, z) along (u, v, n) and
+//      s = tan(alpha), n'.w = cos(alpha) (z - x s): each direction bounds the
+//      slope s from one side, so the offsets that contribute form one
+//      interval (s_lo, s_hi). Each range is clipped to it first: the
+//      integrand then has no kinks (max(cos, 0)) inside the range and falls
+//      smoothly to 0 at a clipped end. Without this, rim light (w_i, w_r on
+//      opposite sides, a support of 10-30 deg inside a 50-110 deg segment)
+//      needs many nodes.
+//   2. A 3-point Gauss-Legendre rule on the clipped range for the slowly
+//      varying factors (Fresnel, cos(phi_d/2), M, P, cos(theta),
+//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_fast_node.
+//   3. The narrow Gaussians in theta_h are not sampled but averaged over
+//      each node's cell of the rule (cell widths 5/18, 8/18, 5/18), theta_h
+//      linear across a cell: mean g = (cdf(x_b/gamma) - cdf(x_a/gamma)) /
+//      (x_b - x_a) (erf by Abramowitz & Stegun 7.1.26, sharing the pdf's
+//      exp). theta_h at the cell edges is interpolated linearly from the
+//      nodes. This is what sampling at control points gets wrong: a 2.5-12
+//      deg lobe swept by a 50 deg range of tilts is a band of width ~50 deg
+//      in theta_h, not a few spikes.
+// Offset lists: each segment is one range (uniform offsets from one control
+// point to the next), two halves when it spans more than 60 deg (velvet's
+// -55..55); a flat segment or single control point is the point lobe by the
+// same code (all nodes on one offset, zero-width cells). Curves: one range in
+// t over the whole profile, the slope taken as linear in t on each half
+// through its values at t = 0, 1/2, 1 (exact for a quadratic profile such as
+// the default), nodes weighted by arc length sqrt(1 + s^2).
+// The code is straight-line (no early return; the list path has one loop
+// over its pieces): llvmpipe runs both sides of every branch and a loop
+// around the nodes costs as much again as the nodes (measured: the same
+// curve code inside a one-iteration loop went from 1.6x to 3.1x standard
+// fast).
 
 // Per thread set: the components of w_i and w_r in the thread frame before
 // the offset (x along u, y along v, z along n), psi (offset-independent),
@@ -386,13 +408,13 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
                      clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG), th.eta);
 }
 
-fn mc_schlick(f0: f32, c: f32) -> f32 {
-    return f0 + (1.0 - f0) * weft_pow5(1.0 - saturate(c));
-}
-
-// The factors at offset alpha. Tilting about v rotates the (x, z)
-// components: sin(theta) = x cos(alpha) + z sin(alpha), n'.w = z cos(alpha)
-// - x sin(alpha), cos^2(theta) = y^2 + (n'.w)^2.
+// The factors at the offset with (cos, sin) = (ca, sa): the reference lobe's
+// terms without its Gaussians. Tilting about v rotates the (x, z)
+// components: sin(theta) = x ca + z sa, n'.w = z ca - x sa, and
+// cos^2(theta) = y^2 + (n'.w)^2 (the projection normal to u', exact where
+// 1 - sin^2 cancels). theta_h and cos^2(theta_d) from half-angle identities
+// and the polynomial asin/acos; Fresnel exact (weft_f_dielectric), as in the
+// reference. Skipped (zero) as the reference skips a sample.
 fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
     let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
@@ -416,7 +438,7 @@ fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     let f_r = weft_f_dielectric(sqrt(cd2) * cos_half_phi, q.eta);
     let f_t = (1.0 - weft_f_dielectric(ci, q.eta)) * (1.0 - weft_f_dielectric(cr, q.eta));
     let base = select(0.0, m * p * ci / cd2, ok);
-    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / (ci + cr), select(0.0, p, ok));
+    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / max(ci + cr, 2e-4), select(0.0, p, ok));
 }
 
 // The rule on one range, given its three nodes and their weights r (the
