@@ -76,12 +76,27 @@ struct McFrame {
     metal::float3 v;
     metal::float3 n;
 };
-struct McPsi {
-    metal::float3 pi;
-    metal::packed_float3 pr;
-    float u;
+struct McFastPre {
+    metal::float3 wi;
+    metal::packed_float3 wr;
+    float inv_ri;
+    float inv_rr;
+    float u_psi;
     float ok;
-    char _pad4[12];
+    float inv_gamma_s;
+    float inv_gamma_v;
+    float s_lo;
+    float s_hi;
+    float eta;
+};
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct type_12 {
+    metal::float4 inner[2];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -95,7 +110,6 @@ constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant uint MC_CURVE_SAMPLES = 33u;
 constant uint MC_CURVE_SEGMENTS = 32u;
-constant uint MC_FAST_CHORDS = 4u;
 constant int MC_MAX_OFFSETS = 8;
 constant float MC_REF_STEP_DEG = 1.0;
 constant float MC_REF_MAX_SUBDIV = 64.0;
@@ -106,13 +120,17 @@ constant float MC_MIN_GAMMA = 0.0017453292;
 constant float MC_MIN_PROJ2_ = 0.00000001;
 constant float MC_MIN_COS2_THETA_D = 0.0001;
 constant float MC_MIN_Q = 0.000001;
-
-float weft_pow5_(
-    float x
-) {
-    float x2_ = x * x;
-    return (x2_ * x2_) * x;
-}
+constant float MC_INV_SQRT_TWO_PI = 0.3989423;
+constant float MC_FAST_MIN_DT = 0.1;
+constant float MC_GL3_T = 0.11270166;
+constant float MC_GL3_W0_ = 0.2777778;
+constant float MC_GL3_W1_ = 0.44444445;
+constant float MC_GL3_E0_ = -0.29099444;
+constant float MC_GL3_E1_ = 0.42621785;
+constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_SPAN = 0.0001;
+constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -131,11 +149,26 @@ metal::float3 weft_any_perpendicular(
     return metal::float3(1.0 + (((s * n.x) * n.x) * a_1), s * b_1, -(s) * n.x);
 }
 
+float weft_f_dielectric(
+    float cos_i,
+    float eta
+) {
+    float c = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = ((eta * eta) - 1.0) + (c * c);
+    float g = metal::sqrt(metal::max(g2_, 0.0));
+    float gmc = g - c;
+    float gpc = metal::max(g + c, 0.0000001);
+    float a_2 = gmc / gpc;
+    float b_2 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
+    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2)));
+    return (g2_ < 0.0) ? 1.0 : f;
+}
+
 float weft_f0_from_ior(
     float ior
 ) {
-    float q = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
-    return q * q;
+    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_3 * q_3;
 }
 
 metal::float3 weft_main_light_direction(
@@ -199,10 +232,10 @@ metal::float3x3 weft_tangent_frame(
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_2);
-    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_2, n_2);
+    metal::float3 b_3 = metal::cross(n_2, t_1) * s_1;
+    return metal::float3x3(t_1, b_3, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -210,14 +243,6 @@ metal::float2 weft_transform_uv(
     metal::float4 st
 ) {
     return (uv * st.xy) + st.zw;
-}
-
-float mc_gauss(
-    float gamma,
-    float x_1
-) {
-    float g = metal::max(gamma, MC_MIN_GAMMA);
-    return metal::exp((-(x_1) * x_1) / ((2.0 * g) * g)) / (MC_SQRT_TWO_PI * g);
 }
 
 float mc_correlate(
@@ -231,91 +256,18 @@ float mc_correlate(
 }
 
 float mc_acos_fast(
-    float x_2
+    float x
 ) {
-    float ax = metal::min(metal::abs(x_2), 1.0);
-    float r = metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))));
-    return (x_2 < 0.0) ? (WEFT_PI - r) : r;
+    float ax = metal::min(metal::abs(x), 1.0);
+    float r_1 = metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))));
+    return (x < 0.0) ? (WEFT_PI - r_1) : r_1;
 }
 
 float mc_asin_fast(
-    float x_3
+    float x_1
 ) {
-    float _e2 = mc_acos_fast(x_3);
+    float _e2 = mc_acos_fast(x_1);
     return 1.5707964 - _e2;
-}
-
-McPsi mc_psi_fast(
-    metal::float3 v_1,
-    metal::float3 wi,
-    metal::float3 wr
-) {
-    metal::float3 pi = wi - (v_1 * metal::dot(wi, v_1));
-    metal::float3 pr = wr - (v_1 * metal::dot(wr, v_1));
-    float li2_ = metal::dot(pi, pi);
-    float lr2_ = metal::dot(pr, pr);
-    bool ok_1 = metal::min(li2_, lr2_) >= MC_MIN_PROJ2_;
-    metal::float3 hi = pi * metal::rsqrt(metal::max(li2_, MC_MIN_PROJ2_));
-    metal::float3 hr = pr * metal::rsqrt(metal::max(lr2_, MC_MIN_PROJ2_));
-    float _e23 = mc_acos_fast(metal::dot(hi, hr));
-    float u_1 = metal::exp((-(_e23) * _e23) * MC_U_INV_TWO_SIGMA2_);
-    return McPsi {hi, hr, u_1, ok_1 ? 1.0 : 0.0};
-}
-
-metal::float4 mc_lobe_fast(
-    McFrame fr,
-    McPsi psi,
-    metal::float3 wi_1,
-    metal::float3 wr_1,
-    float ca,
-    float sa,
-    McThread th
-) {
-    bool local = {};
-    metal::float3 u_2 = (fr.u * ca) + (fr.n * sa);
-    metal::float3 np = (fr.n * ca) - (fr.u * sa);
-    float si = metal::clamp(metal::dot(wi_1, u_2), -1.0, 1.0);
-    float sr = metal::clamp(metal::dot(wr_1, u_2), -1.0, 1.0);
-    metal::float3 pi_1 = wi_1 - (u_2 * si);
-    metal::float3 pr_1 = wr_1 - (u_2 * sr);
-    float ci2_ = metal::dot(pi_1, pi_1);
-    float cr2_ = metal::dot(pr_1, pr_1);
-    if (!((metal::min(ci2_, cr2_) < MC_MIN_PROJ2_))) {
-        local = psi.ok == 0.0;
-    } else {
-        local = true;
-    }
-    bool _e41 = local;
-    if (_e41) {
-        return metal::float4(0.0);
-    }
-    float inv_ci = metal::rsqrt(ci2_);
-    float inv_cr = metal::rsqrt(cr2_);
-    float ci_1 = ci2_ * inv_ci;
-    float cr_1 = cr2_ * inv_cr;
-    metal::float3 hi_1 = pi_1 * inv_ci;
-    metal::float3 hr_1 = pr_1 * inv_cr;
-    float cos_phi_d = metal::clamp(metal::dot(hi_1, hr_1), -1.0, 1.0);
-    float cos_half_phi = metal::sqrt(metal::max(0.5 + (0.5 * cos_phi_d), 0.0));
-    float _e61 = mc_acos_fast(cos_phi_d);
-    float _e62 = mc_asin_fast(si);
-    float _e63 = mc_asin_fast(sr);
-    float theta_h = 0.5 * (_e62 + _e63);
-    float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
-    float u_phi = metal::exp((-(_e61) * _e61) * MC_U_INV_TWO_SIGMA2_);
-    float _e83 = mc_correlate(metal::dot(np, hi_1), metal::dot(np, hr_1), u_phi);
-    float _e89 = mc_correlate(metal::dot(np, psi.pi), metal::dot(np, psi.pr), psi.u);
-    float _e91 = weft_f0_from_ior(th.eta);
-    float c_eff = metal::sqrt(cd2_) * cos_half_phi;
-    float _e99 = weft_pow5_(1.0 - metal::saturate(c_eff));
-    float f_r = _e91 + ((1.0 - _e91) * _e99);
-    float f_t = (1.0 - f_r) * (1.0 - f_r);
-    float _e109 = mc_gauss(th.gamma_s, theta_h);
-    float surface = (f_r * cos_half_phi) * _e109;
-    float _e115 = mc_gauss(th.gamma_v, theta_h);
-    float volume = (f_t * (((1.0 - th.kd) * _e115) + th.kd)) / (ci_1 + cr_1);
-    metal::float3 fs = (metal::float3(surface) + (volume * th.albedo)) / metal::float3(cd2_);
-    return metal::float4(fs * ((_e83 * _e89) * ci_1), _e89);
 }
 
 float mc_offset_at(
@@ -326,62 +278,232 @@ float mc_offset_at(
     return ((k >= 4) ? b : a)[k & 3];
 }
 
-metal::float4 mc_thread_list_fast(
-    McFrame fr_1,
-    metal::float3 wi_2,
-    metal::float3 wr_2,
+type_12 mc_normal4_(
+    metal::float4 t
+) {
+    metal::float4 e_1 = metal::exp((-0.5 * t) * t);
+    metal::float4 z = metal::abs(t) * 0.70710677;
+    metal::float4 k_3 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
+    metal::float4 poly = k_3 * (metal::float4(0.2548296) + (k_3 * (metal::float4(-0.28449672) + (k_3 * (metal::float4(1.4214138) + (k_3 * (metal::float4(-1.4531521) + (k_3 * 1.0614054))))))));
+    metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
+    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+}
+
+metal::float3 mc_cell_means(
+    metal::float4 xe,
+    float inv_gamma
+) {
+    metal::float4 t_2 = xe * inv_gamma;
+    type_12 _e3 = mc_normal4_(t_2);
+    metal::float3 dt = t_2.yzw - t_2.xyz;
+    metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
+    metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
+    metal::float3 trap = 0.5 * (_e3.inner[0].xyz + _e3.inner[0].yzw);
+    return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
+}
+
+McFastPre mc_fast_pre(
+    McFrame fr,
+    metal::float3 wi,
+    metal::float3 wr,
+    McThread th
+) {
+    metal::float3 li = metal::float3(metal::dot(wi, fr.u), metal::dot(wi, fr.v), metal::dot(wi, fr.n));
+    metal::float3 lr = metal::float3(metal::dot(wr, fr.u), metal::dot(wr, fr.v), metal::dot(wr, fr.n));
+    float ri2_ = (li.x * li.x) + (li.z * li.z);
+    float rr2_ = (lr.x * lr.x) + (lr.z * lr.z);
+    bool ok_1 = metal::min(ri2_, rr2_) >= MC_MIN_PROJ2_;
+    float inv_ri = metal::rsqrt(metal::max(ri2_, MC_MIN_PROJ2_));
+    float inv_rr = metal::rsqrt(metal::max(rr2_, MC_MIN_PROJ2_));
+    float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
+    float _e50 = mc_acos_fast(cos_psi_d);
+    float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
+    float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
+    float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
+    float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
+    float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
+    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
+}
+
+McFastNode mc_fast_node(
+    McFastPre q,
+    float ca,
+    float sa
+) {
+    bool local = {};
+    float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa), -1.0, 1.0);
+    float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa), -1.0, 1.0);
+    float ni = (q.wi.z * ca) - (q.wi.x * sa);
+    float nr = (q.wr[2] * ca) - (q.wr[0] * sa);
+    float ci2_ = (q.wi.y * q.wi.y) + (ni * ni);
+    float cr2_ = (q.wr[1] * q.wr[1]) + (nr * nr);
+    if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
+        local = q.ok != 0.0;
+    } else {
+        local = false;
+    }
+    bool ok_2 = local;
+    float inv_ci = metal::rsqrt(metal::max(ci2_, MC_MIN_PROJ2_));
+    float inv_cr = metal::rsqrt(metal::max(cr2_, MC_MIN_PROJ2_));
+    float ci_1 = ci2_ * inv_ci;
+    float cr_1 = cr2_ * inv_cr;
+    float cos_phi_d = metal::clamp((((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
+    float cos_half_phi = metal::sqrt(0.5 + (0.5 * cos_phi_d));
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = metal::exp((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_);
+    float _e94 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
+    float _e100 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = 0.5 * (_e101 + _e102);
+    float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
+    float _e118 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = (1.0 - _e120) * (1.0 - _e124);
+    float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
+    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e100 : 0.0};
+}
+
+metal::float4 mc_fast_gl3_(
+    McFastPre q_1,
     McThread th_1,
+    McFastNode n0_,
+    McFastNode n1_,
+    McFastNode n2_,
+    metal::float3 r
+) {
+    metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
+    metal::float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    metal::float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    metal::float3 s_2 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
+    float surface = metal::dot(_e36, s_2);
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
+    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
+}
+
+metal::float4 mc_fast_segment(
+    McFastPre q_2,
+    McThread th_2,
+    float a0_,
+    float a1_,
+    float lo_s,
+    float hi_s
+) {
+    float span = metal::abs(a1_ - a0_);
+    bool flat = span < MC_FAST_MIN_SPAN;
+    float lo = metal::clamp(lo_s, metal::min(a0_, a1_), metal::max(a0_, a1_));
+    float hi = metal::clamp(hi_s, lo, metal::max(a0_, a1_));
+    float w = hi - lo;
+    metal::float3 al = metal::float3(lo + (MC_GL3_T * w), lo + (0.5 * w), hi - (MC_GL3_T * w));
+    metal::float3 ca_1 = metal::cos(al);
+    metal::float3 sa_1 = metal::sin(al);
+    McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span, MC_FAST_MIN_SPAN)));
+    metal::float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
+}
+
+int mc_fast_pieces(
     metal::float4 offsets_a,
     metal::float4 offsets_b,
+    int k_1
+) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = metal::abs(_e5 - _e6);
+    return (span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1;
+}
+
+metal::float4 mc_thread_list_fast(
+    McFrame fr_1,
+    metal::float3 wi_1,
+    metal::float3 wr_1,
+    McThread th_3,
+    metal::float4 offsets_a_1,
+    metal::float4 offsets_b_1,
     int count
 ) {
     metal::float4 acc = metal::float4(0.0);
-    int k_1 = 0;
+    int k_2 = 0;
+    int h = 0;
+    int i = 0;
     int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
-    McPsi _e11 = mc_psi_fast(fr_1.v, wi_2, wr_2);
+    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    float lo_s_1 = metal::atan(_e10.s_lo);
+    float hi_s_1 = metal::atan(_e10.s_hi);
+    int segments = metal::max(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)), 1);
+    metal::float4 spans = metal::abs(metal::float4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1);
+    metal::float3 spans_b = metal::abs(offsets_b_1.yzw - offsets_b_1.xyz);
+    metal::bool4 live = metal::int4(0, 1, 2, 3) < metal::int4(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::bool3 live_b = metal::int3(4, 5, 6) < metal::int3(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::int4 per = metal::select(metal::int4(0), metal::select(metal::int4(1), metal::int4(2), spans > metal::float4(60.0)), live);
+    metal::int3 per_b = metal::select(metal::int3(0), metal::select(metal::int3(1), metal::int3(2), spans_b > metal::float3(60.0)), live_b);
+    int pieces = metal::max(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(per.x) + as_type<uint>(per.y))) + as_type<uint>(per.z))) + as_type<uint>(per.w))) + as_type<uint>(per_b.x))) + as_type<uint>(per_b.y))) + as_type<uint>(per_b.z)), 1);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e29 = k_1;
-            k_1 = as_type<int>(as_type<uint>(_e29) + as_type<uint>(1));
+            int _e144 = i;
+            i = as_type<int>(as_type<uint>(_e144) + as_type<uint>(1));
         }
         loop_init = false;
-        int _e17 = k_1;
-        if (_e17 < n_3) {
+        int _e91 = i;
+        if (_e91 < pieces) {
         } else {
             break;
         }
         {
-            int _e19 = k_1;
-            float _e20 = mc_offset_at(offsets_a, offsets_b, _e19);
-            float a_2 = _e20 * MC_DEG;
-            metal::float4 _e23 = acc;
-            metal::float4 _e26 = mc_lobe_fast(fr_1, _e11, wi_2, wr_2, metal::cos(a_2), metal::sin(a_2), th_1);
-            acc = _e23 + _e26;
+            int _e93 = k_2;
+            float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            float d0_ = _e94 * MC_DEG;
+            int _e97 = k_2;
+            float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, as_type<int>(as_type<uint>(_e97) + as_type<uint>(1)));
+            float d1_ = (n_3 > 1) ? (_e100 * MC_DEG) : d0_;
+            int _e106 = k_2;
+            int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            int m = (n_3 > 1) ? _e107 : 1;
+            float fm = static_cast<float>(m);
+            metal::float4 _e113 = acc;
+            int _e114 = h;
+            int _e118 = h;
+            metal::float4 _e124 = mc_fast_segment(_e10, th_3, metal::mix(d0_, d1_, static_cast<float>(_e114) / fm), metal::mix(d0_, d1_, static_cast<float>(as_type<int>(as_type<uint>(_e118) + as_type<uint>(1))) / fm), lo_s_1, hi_s_1);
+            acc = _e113 + (_e124 / metal::float4(fm));
+            int _e128 = h;
+            h = as_type<int>(as_type<uint>(_e128) + as_type<uint>(1));
+            int _e131 = k_2;
+            int _e132 = k_2;
+            int _e135 = h;
+            k_2 = (_e135 >= m) ? as_type<int>(as_type<uint>(_e132) + as_type<uint>(1)) : _e131;
+            int _e138 = h;
+            int _e139 = h;
+            h = (_e139 >= m) ? 0 : _e138;
         }
     }
-    metal::float4 _e31 = acc;
-    return _e31 / metal::float4(static_cast<float>(n_3));
+    metal::float4 _e146 = acc;
+    return _e146 / metal::float4(static_cast<float>(segments));
 }
 
 metal::float3 mc_combine(
     metal::float4 t1_,
     metal::float4 t2_,
-    float a1_,
+    float a1_1,
     float a2_,
     float n_dot_wi,
     float n_dot_wr
 ) {
     bool local_1 = {};
     bool local_2 = {};
-    float c1_ = metal::saturate(a1_);
+    float c1_ = metal::saturate(a1_1);
     float c2_ = metal::saturate(a2_);
     float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_1 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_2 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
     if (n_dot_wi > 0.0) {
         local_1 = n_dot_wr > 0.0;
     } else {
@@ -389,12 +511,12 @@ metal::float3 mc_combine(
     }
     bool _e37 = local_1;
     if (_e37) {
-        local_2 = q_1 > MC_MIN_Q;
+        local_2 = q_4 > MC_MIN_Q;
     } else {
         local_2 = false;
     }
     bool lit = local_2;
-    return lit ? (s_2 / metal::float3(metal::max(q_1, MC_MIN_Q))) : metal::float3(0.0);
+    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McThread microcylinder_thread(
@@ -409,9 +531,9 @@ McThread microcylinder_thread(
 }
 
 float microcylinder_mean_fresnel(
-    float eta
+    float eta_1
 ) {
-    float _e1 = weft_f0_from_ior(eta);
+    float _e1 = weft_f0_from_ior(eta_1);
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
@@ -493,7 +615,7 @@ fragment fs_mainOutput fs_main(
     float _e45 = material.thread2_gamma_v;
     McThread _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
     float _e49 = material.thread1_coverage;
-    float a1_1 = metal::saturate(_e49);
+    float a1_2 = metal::saturate(_e49);
     float _e53 = material.thread2_coverage;
     float a2_1 = false ? metal::saturate(_e53) : 0.0;
     float _e60 = material.brightness;
@@ -501,12 +623,12 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e68 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    metal::float3 t_1 = _e72[0];
-    metal::float3 b_3 = _e72[1];
+    metal::float3 t_3 = _e72[0];
+    metal::float3 b_4 = _e72[1];
     metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
     metal::float3 _e83 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_1, b_3, _e70};
-    McFrame weft = McFrame {b_3, t_1, _e70};
+    McFrame warp = McFrame {t_3, b_4, _e70};
+    McFrame weft = McFrame {b_4, t_3, _e70};
     {
         {
             metal::float4 _e94 = material.thread1_offsets_a;
@@ -518,15 +640,15 @@ fragment fs_mainOutput fs_main(
     }
     metal::float4 _e102 = s1_;
     metal::float4 _e103 = s2_;
-    metal::float3 _e106 = mc_combine(_e102, _e103, a1_1, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
+    metal::float3 _e106 = mc_combine(_e102, _e103, a1_2, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
     metal::float3 _e107 = weft_main_light_radiance(weft_frame);
     metal::float3 direct = _e106 * _e107;
     float _e111 = microcylinder_mean_fresnel(_e29.eta);
     metal::float3 amb1_ = _e29.albedo + metal::float3(_e111);
     float _e116 = microcylinder_mean_fresnel(_e46.eta);
     metal::float3 amb2_ = _e46.albedo + metal::float3(_e116);
-    float cov = a1_1 + a2_1;
-    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
+    float cov = a1_2 + a2_1;
+    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
     metal::float3 _e130 = weft_sh_irradiance(_e70, weft_frame);
     metal::float3 ambient = _e130 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));

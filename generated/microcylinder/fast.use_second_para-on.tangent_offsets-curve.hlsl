@@ -82,15 +82,26 @@ struct McFrame {
     int _end_pad_0;
 };
 
-struct McPsi {
-    float3 pi;
+struct McFastPre {
+    float3 wi;
     int _pad1_0;
-    float3 pr;
-    float u;
+    float3 wr;
+    float inv_ri;
+    float inv_rr;
+    float u_psi;
     float ok;
-    int _end_pad_0;
-    int _end_pad_1;
-    int _end_pad_2;
+    float inv_gamma_s;
+    float inv_gamma_v;
+    float s_lo;
+    float s_hi;
+    float eta;
+};
+
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -105,7 +116,6 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
-static const uint MC_FAST_CHORDS = 4u;
 static const int MC_MAX_OFFSETS = int(8);
 static const float MC_REF_STEP_DEG = 1.0;
 static const float MC_REF_MAX_SUBDIV = 64.0;
@@ -116,6 +126,17 @@ static const float MC_MIN_GAMMA = 0.0017453292;
 static const float MC_MIN_PROJ2_ = 1e-8;
 static const float MC_MIN_COS2_THETA_D = 0.0001;
 static const float MC_MIN_Q = 1e-6;
+static const float MC_INV_SQRT_TWO_PI = 0.3989423;
+static const float MC_FAST_MIN_DT = 0.1;
+static const float MC_GL3_T = 0.11270166;
+static const float MC_GL3_W0_ = 0.2777778;
+static const float MC_GL3_W1_ = 0.44444445;
+static const float MC_GL3_E0_ = -0.29099444;
+static const float MC_GL3_E1_ = 0.42621785;
+static const float MC_FAST_BIG = 1000000.0;
+static const float MC_FAST_MIN_SPAN = 0.0001;
+static const float MC_FAST_SPLIT_DEG = 60.0;
+static const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
@@ -142,12 +163,6 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow5_(float x)
-{
-    float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
-
 float3 weft_safe_normalize(float3 v, float3 fallback)
 {
     float len2_ = dot(v, v);
@@ -156,16 +171,29 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 
 float3 weft_any_perpendicular(float3 n)
 {
-    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n.z));
+    float s_1 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n.z));
     float b = ((n.x * n.y) * a);
-    return float3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+    return float3((1.0 + (((s_1 * n.x) * n.x) * a)), (s_1 * b), (-(s_1) * n.x));
+}
+
+float weft_f_dielectric(float cos_i, float eta)
+{
+    float c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c * c));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c);
+    float gpc = max((g + c), 1e-7);
+    float a_1 = (gmc / gpc);
+    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
+    float f = saturate((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))));
+    return ((g2_ < 0.0) ? 1.0 : f);
 }
 
 float weft_f0_from_ior(float ior)
 {
-    float q = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q * q);
+    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_3 * q_3);
 }
 
 float3 weft_main_light_direction()
@@ -221,21 +249,15 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     const float3 _e13 = weft_any_perpendicular(n_2);
-    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 t_2 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_2 = (cross(n_2, t_2) * s_2);
+    return float3x3(t_2, b_2, n_2);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
-}
-
-float mc_gauss(float gamma, float x_1)
-{
-    float g = max(gamma, MC_MIN_GAMMA);
-    return (exp(((-(x_1) * x_1) / ((2.0 * g) * g))) / (MC_SQRT_TWO_PI * g));
 }
 
 float mc_correlate(float ci, float cr, float u)
@@ -245,171 +267,234 @@ float mc_correlate(float ci, float cr, float u)
     return ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
 }
 
-float mc_acos_fast(float x_2)
+float mc_acos_fast(float x)
 {
-    float ax = min(abs(x_2), 1.0);
-    float r = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
-    return ((x_2 < 0.0) ? (WEFT_PI - r) : r);
+    float ax = min(abs(x), 1.0);
+    float r_1 = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
+    return ((x < 0.0) ? (WEFT_PI - r_1) : r_1);
 }
 
-float mc_asin_fast(float x_3)
+float mc_asin_fast(float x_1)
 {
-    const float _e2 = mc_acos_fast(x_3);
+    const float _e2 = mc_acos_fast(x_1);
     return (1.5707964 - _e2);
 }
 
-McPsi ConstructMcPsi(float3 arg0, float3 arg1, float arg2, float arg3) {
-    McPsi ret = (McPsi)0;
-    ret.pi = arg0;
-    ret.pr = arg1;
-    ret.u = arg2;
-    ret.ok = arg3;
+typedef float4 ret_Constructarray2_float4_[2];
+ret_Constructarray2_float4_ Constructarray2_float4_(float4 arg0, float4 arg1) {
+    float4 ret[2] = { arg0, arg1 };
     return ret;
 }
 
-McPsi mc_psi_fast(float3 v_1, float3 wi, float3 wr)
+typedef float4 ret_mc_normal4_[2];
+ret_mc_normal4_ mc_normal4_(float4 t)
 {
-    float3 pi = (wi - (v_1 * dot(wi, v_1)));
-    float3 pr = (wr - (v_1 * dot(wr, v_1)));
-    float li2_ = dot(pi, pi);
-    float lr2_ = dot(pr, pr);
-    bool ok_1 = (min(li2_, lr2_) >= MC_MIN_PROJ2_);
-    float3 hi = (pi * rsqrt(max(li2_, MC_MIN_PROJ2_)));
-    float3 hr = (pr * rsqrt(max(lr2_, MC_MIN_PROJ2_)));
-    const float _e23 = mc_acos_fast(dot(hi, hr));
-    float u_1 = exp(((-(_e23) * _e23) * MC_U_INV_TWO_SIGMA2_));
-    const McPsi mcpsi = ConstructMcPsi(hi, hr, u_1, (ok_1 ? 1.0 : 0.0));
-    return mcpsi;
+    float4 e_1 = exp(((-0.5 * t) * t));
+    float4 z = (abs(t) * 0.70710677);
+    float4 k = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
+    float4 poly = (k * ((0.2548296).xxxx + (k * ((-0.28449672).xxxx + (k * ((1.4214138).xxxx + (k * ((-1.4531521).xxxx + (k * 1.0614054)))))))));
+    float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
+    return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), ((t >= (0.0).xxxx) ? half_ : -(half_)));
 }
 
-float4 mc_lobe_fast(McFrame fr, McPsi psi, float3 wi_1, float3 wr_1, float ca, float sa, McThread th)
+float3 mc_cell_means(float4 xe, float inv_gamma)
+{
+    float4 t_3 = (xe * inv_gamma);
+    const float4 _e3[2] = mc_normal4_(t_3);
+    float3 dt = (t_3.yzw - t_3.xyz);
+    bool3 wide = (abs(dt) >= (0.1).xxx);
+    float3 exact = ((_e3[1].yzw - _e3[1].xyz) / (wide ? dt : (1.0).xxx));
+    float3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
+    return (max((wide ? exact : trap), (0.0).xxx) * inv_gamma);
+}
+
+McFastPre ConstructMcFastPre(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10) {
+    McFastPre ret = (McFastPre)0;
+    ret.wi = arg0;
+    ret.wr = arg1;
+    ret.inv_ri = arg2;
+    ret.inv_rr = arg3;
+    ret.u_psi = arg4;
+    ret.ok = arg5;
+    ret.inv_gamma_s = arg6;
+    ret.inv_gamma_v = arg7;
+    ret.s_lo = arg8;
+    ret.s_hi = arg9;
+    ret.eta = arg10;
+    return ret;
+}
+
+McFastPre mc_fast_pre(McFrame fr, float3 wi, float3 wr, McThread th)
+{
+    float3 li = float3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    float3 lr = float3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    float ri2_ = ((li.x * li.x) + (li.z * li.z));
+    float rr2_ = ((lr.x * lr.x) + (lr.z * lr.z));
+    bool ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
+    float inv_ri = rsqrt(max(ri2_, MC_MIN_PROJ2_));
+    float inv_rr = rsqrt(max(rr2_, MC_MIN_PROJ2_));
+    float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
+    const float _e50 = mc_acos_fast(cos_psi_d);
+    float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
+    float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
+    float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
+    float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
+    const McFastPre mcfastpre = ConstructMcFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
+    return mcfastpre;
+}
+
+McFastNode ConstructMcFastNode(float arg0, float arg1, float arg2, float arg3) {
+    McFastNode ret = (McFastNode)0;
+    ret.x = arg0;
+    ret.s = arg1;
+    ret.v = arg2;
+    ret.p = arg3;
+    return ret;
+}
+
+McFastNode mc_fast_node(McFastPre q, float ca, float sa)
 {
     bool local = (bool)0;
 
-    float3 u_2 = ((fr.u * ca) + (fr.n * sa));
-    float3 np = ((fr.n * ca) - (fr.u * sa));
-    float si = clamp(dot(wi_1, u_2), -1.0, 1.0);
-    float sr = clamp(dot(wr_1, u_2), -1.0, 1.0);
-    float3 pi_1 = (wi_1 - (u_2 * si));
-    float3 pr_1 = (wr_1 - (u_2 * sr));
-    float ci2_ = dot(pi_1, pi_1);
-    float cr2_ = dot(pr_1, pr_1);
-    if (!((min(ci2_, cr2_) < MC_MIN_PROJ2_))) {
-        local = (psi.ok == 0.0);
+    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
+    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
+    float ni = ((q.wi.z * ca) - (q.wi.x * sa));
+    float nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
+    float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
+    if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
+        local = (q.ok != 0.0);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e41 = local;
-    if (_e41) {
-        return (0.0).xxxx;
-    }
-    float inv_ci = rsqrt(ci2_);
-    float inv_cr = rsqrt(cr2_);
+    bool ok_2 = local;
+    float inv_ci = rsqrt(max(ci2_, MC_MIN_PROJ2_));
+    float inv_cr = rsqrt(max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = (ci2_ * inv_ci);
     float cr_1 = (cr2_ * inv_cr);
-    float3 hi_1 = (pi_1 * inv_ci);
-    float3 hr_1 = (pr_1 * inv_cr);
-    float cos_phi_d = clamp(dot(hi_1, hr_1), -1.0, 1.0);
-    float cos_half_phi = sqrt(max((0.5 + (0.5 * cos_phi_d)), 0.0));
-    const float _e61 = mc_acos_fast(cos_phi_d);
-    const float _e62 = mc_asin_fast(si);
-    const float _e63 = mc_asin_fast(sr);
-    float theta_h = (0.5 * (_e62 + _e63));
+    float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
+    float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
+    const float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    const float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    const float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    const float _e101 = mc_asin_fast(si);
+    const float _e102 = mc_asin_fast(sr);
+    float x_2 = (0.5 * (_e101 + _e102));
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float u_phi = exp(((-(_e61) * _e61) * MC_U_INV_TWO_SIGMA2_));
-    const float _e83 = mc_correlate(dot(np, hi_1), dot(np, hr_1), u_phi);
-    const float _e89 = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
-    const float _e91 = weft_f0_from_ior(th.eta);
-    float c_eff = (sqrt(cd2_) * cos_half_phi);
-    const float _e99 = weft_pow5_((1.0 - saturate(c_eff)));
-    float f_r = (_e91 + ((1.0 - _e91) * _e99));
-    float f_t = ((1.0 - f_r) * (1.0 - f_r));
-    const float _e109 = mc_gauss(th.gamma_s, theta_h);
-    float surface = ((f_r * cos_half_phi) * _e109);
-    const float _e115 = mc_gauss(th.gamma_v, theta_h);
-    float volume = ((f_t * (((1.0 - th.kd) * _e115) + th.kd)) / (ci_1 + cr_1));
-    float3 fs = (((surface).xxx + (volume * th.albedo)) / (cd2_).xxx);
-    return float4((fs * ((_e83 * _e89) * ci_1)), _e89);
+    const float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    const float _e120 = weft_f_dielectric(ci_1, q.eta);
+    const float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = ((1.0 - _e120) * (1.0 - _e124));
+    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
+    const McFastNode mcfastnode = ConstructMcFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e100 : 0.0));
+    return mcfastnode;
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
-}
-
-float mc_curve_at(float4 h[9], uint i)
+float4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, float3 r)
 {
-    return h[min(uint(naga_div(i, 4u)), 8u)][min(uint(naga_mod(i, 4u)), 3u)];
+    float4 xe_1 = float4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    const float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    const float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    float3 s_3 = (r * float3(n0_.s, n1_.s, n2_.s));
+    float3 v_1 = (r * float3(n0_.v, n1_.v, n2_.v));
+    float surface = dot(_e36, s_3);
+    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
 }
 
-float4 mc_thread_curve_fast(McFrame fr_1, float3 wi_2, float3 wr_2, McThread th_1, float4 heights[9])
+float2 mc_fast_half_clip(McFastPre q_2, float sa_1, float sb, float ta)
 {
-    float4 acc = (0.0).xxxx;
-    float wsum = 0.0;
-    uint k = 0u;
+    bool local_1 = (bool)0;
 
-    const McPsi _e6 = mc_psi_fast(fr_1.v, wi_2, wr_2);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e43 = k;
-            k = (_e43 + 1u);
-        }
-        loop_init = false;
-        uint _e16 = k;
-        if ((_e16 < MC_FAST_CHORDS)) {
-        } else {
-            break;
-        }
-        {
-            uint _e19 = k;
-            const float _e23 = mc_curve_at(heights, ((_e19 + 1u) * 8u));
-            uint _e24 = k;
-            const float _e26 = mc_curve_at(heights, (_e24 * 8u));
-            float dh = (_e23 - _e26);
-            float inv_len = rsqrt(((0.25 * 0.25) + (dh * dh)));
-            float len = (1.0 / inv_len);
-            float4 _e34 = acc;
-            const float4 _e37 = mc_lobe_fast(fr_1, _e6, wi_2, wr_2, (0.25 * inv_len), (dh * inv_len), th_1);
-            acc = (_e34 + (len * _e37));
-            float _e40 = wsum;
-            wsum = (_e40 + len);
-        }
+    float ds = (sb - sa_1);
+    bool flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
+    float inv = (1.0 / (flat ? 1.0 : ds));
+    float u0_ = ((q_2.s_lo - sa_1) * inv);
+    float u1_ = ((q_2.s_hi - sa_1) * inv);
+    if ((sa_1 > q_2.s_lo)) {
+        local_1 = (sa_1 < q_2.s_hi);
+    } else {
+        local_1 = false;
     }
-    float4 _e45 = acc;
-    float _e46 = wsum;
-    return (_e45 / (_e46).xxxx);
+    bool _e31 = local_1;
+    float2 uf = (_e31 ? float2(0.0, 1.0) : float2(1.0, 0.0));
+    float2 u_1 = (flat ? uf : float2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
+    return ((u_1.x < u_1.y) ? ((ta).xx + (0.5 * u_1)) : float2(2.0, -1.0));
+}
+
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t_1)
+{
+    return ((t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0))));
+}
+
+float mc_arc_primitive(float s)
+{
+    float h = sqrt((1.0 + (s * s)));
+    return (0.5 * ((s * h) + (sign(s) * log((abs(s) + h)))));
+}
+
+float mc_fast_half_length(float sa_2, float sb_1)
+{
+    float ds_1 = (sb_1 - sa_2);
+    float sm = (0.5 * (sa_2 + sb_1));
+    const float _e6 = mc_arc_primitive(sb_1);
+    const float _e7 = mc_arc_primitive(sa_2);
+    return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
+}
+
+float4 mc_thread_curve_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_2, float4 heights[9])
+{
+    const McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
+    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
+    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
+    const float2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
+    const float2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
+    float t0_ = min(_e46.x, _e48.x);
+    float t1_1 = max(max(_e46.y, _e48.y), t0_);
+    float w = (t1_1 - t0_);
+    float3 t_4 = float3((t0_ + (MC_GL3_T * w)), (t0_ + (0.5 * w)), (t1_1 - (MC_GL3_T * w)));
+    const float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    const float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    const float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    float3 sl = float3(_e68, _e70, _e72);
+    float3 inv_len = rsqrt(((1.0).xxx + (sl * sl)));
+    const McFastNode _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    const McFastNode _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    const McFastNode _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
+    float3 r_2 = ((float3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len);
+    const float _e100 = mc_fast_half_length(s0_1, s1_2);
+    const float _e101 = mc_fast_half_length(s1_2, s2_2);
+    float total = (_e100 + _e101);
+    const float4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return (_e103 / (max(total, 1e-6)).xxxx);
 }
 
 float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
 {
-    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
 
     float c1_ = saturate(a1_);
     float c2_ = saturate(a2_);
     float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_1 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    float3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
     if ((n_dot_wi > 0.0)) {
-        local_1 = (n_dot_wr > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = (q_1 > MC_MIN_Q);
+        local_2 = (n_dot_wr > 0.0);
     } else {
         local_2 = false;
     }
-    bool lit_ = local_2;
-    return (lit_ ? (s_2 / (max(q_1, MC_MIN_Q)).xxx) : (0.0).xxx);
+    bool _e37 = local_2;
+    if (_e37) {
+        local_3 = (q_4 > MC_MIN_Q);
+    } else {
+        local_3 = false;
+    }
+    bool lit_ = local_3;
+    return (lit_ ? (s_4 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -428,9 +513,9 @@ McThread microcylinder_thread(float3 color, float ior_1, float isotropy, float g
     return mcthread;
 }
 
-float microcylinder_mean_fresnel(float eta)
+float microcylinder_mean_fresnel(float eta_1)
 {
-    const float _e1 = weft_f0_from_ior(eta);
+    const float _e1 = weft_f0_from_ior(eta_1);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
@@ -498,12 +583,12 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e68 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
     const float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     const float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    float3 t_1 = _e72[0];
-    float3 b_2 = _e72[1];
+    float3 t_5 = _e72[0];
+    float3 b_3 = _e72[1];
     const float3 _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001 - dot(_e70, _e68)), 0.0))), _e70);
     const float3 _e83 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_1, b_2, _e70);
-    McFrame weft = ConstructMcFrame(b_2, t_1, _e70);
+    McFrame warp = ConstructMcFrame(t_5, b_3, _e70);
+    McFrame weft = ConstructMcFrame(b_3, t_5, _e70);
     {
         {
             float4 _e94[9] = material.thread1_curve;

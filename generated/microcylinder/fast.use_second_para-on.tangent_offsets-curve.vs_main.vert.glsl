@@ -61,11 +61,24 @@ struct McFrame {
     vec3 v;
     vec3 n;
 };
-struct McPsi {
-    vec3 pi;
-    vec3 pr;
-    float u;
+struct McFastPre {
+    vec3 wi;
+    vec3 wr;
+    float inv_ri;
+    float inv_rr;
+    float u_psi;
     float ok;
+    float inv_gamma_s;
+    float inv_gamma_v;
+    float s_lo;
+    float s_hi;
+    float eta;
+};
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -79,7 +92,6 @@ const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const uint MC_CURVE_SAMPLES = 33u;
 const uint MC_CURVE_SEGMENTS = 32u;
-const uint MC_FAST_CHORDS = 4u;
 const int MC_MAX_OFFSETS = 8;
 const float MC_REF_STEP_DEG = 1.0;
 const float MC_REF_MAX_SUBDIV = 64.0;
@@ -90,6 +102,17 @@ const float MC_MIN_GAMMA = 0.0017453292;
 const float MC_MIN_PROJ2_ = 1e-8;
 const float MC_MIN_COS2_THETA_D = 0.0001;
 const float MC_MIN_Q = 1e-6;
+const float MC_INV_SQRT_TWO_PI = 0.3989423;
+const float MC_FAST_MIN_DT = 0.1;
+const float MC_GL3_T = 0.11270166;
+const float MC_GL3_W0_ = 0.2777778;
+const float MC_GL3_W1_ = 0.44444445;
+const float MC_GL3_E0_ = -0.29099444;
+const float MC_GL3_E1_ = 0.42621785;
+const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_SPAN = 0.0001;
+const float MC_FAST_SPLIT_DEG = 60.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -104,26 +127,33 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow5_(float x) {
-    float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
-
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
-    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n.z));
+    float s_1 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n.z));
     float b = ((n.x * n.y) * a);
-    return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+    return vec3((1.0 + (((s_1 * n.x) * n.x) * a)), (s_1 * b), (-(s_1) * n.x));
+}
+
+float weft_f_dielectric(float cos_i, float eta) {
+    float c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c * c));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c);
+    float gpc = max((g + c), 1e-7);
+    float a_1 = (gmc / gpc);
+    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
+    float f = clamp((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    return ((g2_ < 0.0) ? 1.0 : f);
 }
 
 float weft_f0_from_ior(float ior) {
-    float q = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q * q);
+    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_3 * q_3);
 }
 
 vec3 weft_main_light_direction() {
@@ -173,19 +203,14 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_2);
-    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_2, t_2) * s_2);
+    return mat3x3(t_2, b_2, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
-}
-
-float mc_gauss(float gamma, float x_1) {
-    float g = max(gamma, MC_MIN_GAMMA);
-    return (exp(((-(x_1) * x_1) / ((2.0 * g) * g))) / (MC_SQRT_TWO_PI * g));
 }
 
 float mc_correlate(float ci, float cr, float u) {
@@ -194,148 +219,192 @@ float mc_correlate(float ci, float cr, float u) {
     return ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
 }
 
-float mc_acos_fast(float x_2) {
-    float ax = min(abs(x_2), 1.0);
-    float r = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
-    return ((x_2 < 0.0) ? (WEFT_PI - r) : r);
+float mc_acos_fast(float x) {
+    float ax = min(abs(x), 1.0);
+    float r_1 = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
+    return ((x < 0.0) ? (WEFT_PI - r_1) : r_1);
 }
 
-float mc_asin_fast(float x_3) {
-    float _e2 = mc_acos_fast(x_3);
+float mc_asin_fast(float x_1) {
+    float _e2 = mc_acos_fast(x_1);
     return (1.5707964 - _e2);
 }
 
-McPsi mc_psi_fast(vec3 v_1, vec3 wi, vec3 wr) {
-    vec3 pi = (wi - (v_1 * dot(wi, v_1)));
-    vec3 pr = (wr - (v_1 * dot(wr, v_1)));
-    float li2_ = dot(pi, pi);
-    float lr2_ = dot(pr, pr);
-    bool ok_1 = (min(li2_, lr2_) >= MC_MIN_PROJ2_);
-    vec3 hi = (pi * inversesqrt(max(li2_, MC_MIN_PROJ2_)));
-    vec3 hr = (pr * inversesqrt(max(lr2_, MC_MIN_PROJ2_)));
-    float _e23 = mc_acos_fast(dot(hi, hr));
-    float u_1 = exp(((-(_e23) * _e23) * MC_U_INV_TWO_SIGMA2_));
-    return McPsi(hi, hr, u_1, (ok_1 ? 1.0 : 0.0));
+vec4[2] mc_normal4_(vec4 t) {
+    vec4 e_1 = exp(((-0.5 * t) * t));
+    vec4 z = (abs(t) * 0.70710677);
+    vec4 k = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k * (vec4(0.2548296) + (k * (vec4(-0.28449672) + (k * (vec4(1.4214138) + (k * (vec4(-1.4531521) + (k * 1.0614054)))))))));
+    vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
+    return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
 }
 
-vec4 mc_lobe_fast(McFrame fr, McPsi psi, vec3 wi_1, vec3 wr_1, float ca, float sa, McThread th) {
+vec3 mc_cell_means(vec4 xe, float inv_gamma) {
+    vec4 t_3 = (xe * inv_gamma);
+    vec4 _e3[2] = mc_normal4_(t_3);
+    vec3 dt = (t_3.yzw - t_3.xyz);
+    bvec3 wide = greaterThanEqual(abs(dt), vec3(0.1));
+    vec3 exact = ((_e3[1].yzw - _e3[1].xyz) / mix(vec3(1.0), dt, wide));
+    vec3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
+    return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
+}
+
+McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
+    vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    float ri2_ = ((li.x * li.x) + (li.z * li.z));
+    float rr2_ = ((lr.x * lr.x) + (lr.z * lr.z));
+    bool ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
+    float inv_ri = inversesqrt(max(ri2_, MC_MIN_PROJ2_));
+    float inv_rr = inversesqrt(max(rr2_, MC_MIN_PROJ2_));
+    float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
+    float _e50 = mc_acos_fast(cos_psi_d);
+    float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
+    float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
+    float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
+    float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
+}
+
+McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
     bool local = false;
-    vec3 u_2 = ((fr.u * ca) + (fr.n * sa));
-    vec3 np = ((fr.n * ca) - (fr.u * sa));
-    float si = clamp(dot(wi_1, u_2), -1.0, 1.0);
-    float sr = clamp(dot(wr_1, u_2), -1.0, 1.0);
-    vec3 pi_1 = (wi_1 - (u_2 * si));
-    vec3 pr_1 = (wr_1 - (u_2 * sr));
-    float ci2_ = dot(pi_1, pi_1);
-    float cr2_ = dot(pr_1, pr_1);
-    if (!((min(ci2_, cr2_) < MC_MIN_PROJ2_))) {
-        local = (psi.ok == 0.0);
+    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
+    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
+    float ni = ((q.wi.z * ca) - (q.wi.x * sa));
+    float nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
+    float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
+    if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
+        local = (q.ok != 0.0);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e41 = local;
-    if (_e41) {
-        return vec4(0.0);
-    }
-    float inv_ci = inversesqrt(ci2_);
-    float inv_cr = inversesqrt(cr2_);
+    bool ok_2 = local;
+    float inv_ci = inversesqrt(max(ci2_, MC_MIN_PROJ2_));
+    float inv_cr = inversesqrt(max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = (ci2_ * inv_ci);
     float cr_1 = (cr2_ * inv_cr);
-    vec3 hi_1 = (pi_1 * inv_ci);
-    vec3 hr_1 = (pr_1 * inv_cr);
-    float cos_phi_d = clamp(dot(hi_1, hr_1), -1.0, 1.0);
-    float cos_half_phi = sqrt(max((0.5 + (0.5 * cos_phi_d)), 0.0));
-    float _e61 = mc_acos_fast(cos_phi_d);
-    float _e62 = mc_asin_fast(si);
-    float _e63 = mc_asin_fast(sr);
-    float theta_h = (0.5 * (_e62 + _e63));
+    float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
+    float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
+    float _e86 = mc_acos_fast(cos_phi_d);
+    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    float _e101 = mc_asin_fast(si);
+    float _e102 = mc_asin_fast(sr);
+    float x_2 = (0.5 * (_e101 + _e102));
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float u_phi = exp(((-(_e61) * _e61) * MC_U_INV_TWO_SIGMA2_));
-    float _e83 = mc_correlate(dot(np, hi_1), dot(np, hr_1), u_phi);
-    float _e89 = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
-    float _e91 = weft_f0_from_ior(th.eta);
-    float c_eff = (sqrt(cd2_) * cos_half_phi);
-    float _e99 = weft_pow5_((1.0 - clamp(c_eff, 0.0, 1.0)));
-    float f_r = (_e91 + ((1.0 - _e91) * _e99));
-    float f_t = ((1.0 - f_r) * (1.0 - f_r));
-    float _e109 = mc_gauss(th.gamma_s, theta_h);
-    float surface = ((f_r * cos_half_phi) * _e109);
-    float _e115 = mc_gauss(th.gamma_v, theta_h);
-    float volume = ((f_t * (((1.0 - th.kd) * _e115) + th.kd)) / (ci_1 + cr_1));
-    vec3 fs = ((vec3(surface) + (volume * th.albedo)) / vec3(cd2_));
-    return vec4((fs * ((_e83 * _e89) * ci_1)), _e89);
+    float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    float _e120 = weft_f_dielectric(ci_1, q.eta);
+    float _e124 = weft_f_dielectric(cr_1, q.eta);
+    float f_t = ((1.0 - _e120) * (1.0 - _e124));
+    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e100 : 0.0));
 }
 
-float mc_curve_at(vec4 h[9], uint i) {
-    return h[(i / 4u)][(i % 4u)];
+vec4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
+    vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    vec3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    vec3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
+    float surface = dot(_e36, s_3);
+    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
-vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_2, vec3 wr_2, McThread th_1, vec4 heights[9]) {
-    vec4 acc = vec4(0.0);
-    float wsum = 0.0;
-    uint k = 0u;
-    McPsi _e6 = mc_psi_fast(fr_1.v, wi_2, wr_2);
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e43 = k;
-            k = (_e43 + 1u);
-        }
-        loop_init = false;
-        uint _e16 = k;
-        if ((_e16 < MC_FAST_CHORDS)) {
-        } else {
-            break;
-        }
-        {
-            uint _e19 = k;
-            float _e23 = mc_curve_at(heights, ((_e19 + 1u) * 8u));
-            uint _e24 = k;
-            float _e26 = mc_curve_at(heights, (_e24 * 8u));
-            float dh = (_e23 - _e26);
-            float inv_len = inversesqrt(((0.25 * 0.25) + (dh * dh)));
-            float len = (1.0 / inv_len);
-            vec4 _e34 = acc;
-            vec4 _e37 = mc_lobe_fast(fr_1, _e6, wi_2, wr_2, (0.25 * inv_len), (dh * inv_len), th_1);
-            acc = (_e34 + (len * _e37));
-            float _e40 = wsum;
-            wsum = (_e40 + len);
-        }
-    }
-    vec4 _e45 = acc;
-    float _e46 = wsum;
-    return (_e45 / vec4(_e46));
-}
-
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+vec2 mc_fast_half_clip(McFastPre q_2, float sa_1, float sb, float ta) {
     bool local_1 = false;
-    bool local_2 = false;
-    float c1_ = clamp(a1_, 0.0, 1.0);
-    float c2_ = clamp(a2_, 0.0, 1.0);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_1 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
-    if ((n_dot_wi > 0.0)) {
-        local_1 = (n_dot_wr > 0.0);
+    float ds = (sb - sa_1);
+    bool flat_ = (abs(ds) < MC_FAST_MIN_DSLOPE);
+    float inv = (1.0 / (flat_ ? 1.0 : ds));
+    float u0_ = ((q_2.s_lo - sa_1) * inv);
+    float u1_ = ((q_2.s_hi - sa_1) * inv);
+    if ((sa_1 > q_2.s_lo)) {
+        local_1 = (sa_1 < q_2.s_hi);
     } else {
         local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = (q_1 > MC_MIN_Q);
+    bool _e31 = local_1;
+    vec2 uf = (_e31 ? vec2(0.0, 1.0) : vec2(1.0, 0.0));
+    vec2 u_1 = (flat_ ? uf : vec2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
+    return ((u_1.x < u_1.y) ? (vec2(ta) + (0.5 * u_1)) : vec2(2.0, -1.0));
+}
+
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t_1) {
+    return ((t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0))));
+}
+
+float mc_arc_primitive(float s) {
+    float h = sqrt((1.0 + (s * s)));
+    return (0.5 * ((s * h) + (sign(s) * log((abs(s) + h)))));
+}
+
+float mc_fast_half_length(float sa_2, float sb_1) {
+    float ds_1 = (sb_1 - sa_2);
+    float sm = (0.5 * (sa_2 + sb_1));
+    float _e6 = mc_arc_primitive(sb_1);
+    float _e7 = mc_arc_primitive(sa_2);
+    return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
+}
+
+vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec4 heights[9]) {
+    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
+    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
+    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
+    vec2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
+    vec2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
+    float t0_ = min(_e46.x, _e48.x);
+    float t1_1 = max(max(_e46.y, _e48.y), t0_);
+    float w = (t1_1 - t0_);
+    vec3 t_4 = vec3((t0_ + (MC_GL3_T * w)), (t0_ + (0.5 * w)), (t1_1 - (MC_GL3_T * w)));
+    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    vec3 sl = vec3(_e68, _e70, _e72);
+    vec3 inv_len = inversesqrt((vec3(1.0) + (sl * sl)));
+    McFastNode _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    McFastNode _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    McFastNode _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
+    vec3 r_2 = ((vec3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len);
+    float _e100 = mc_fast_half_length(s0_1, s1_2);
+    float _e101 = mc_fast_half_length(s1_2, s2_2);
+    float total = (_e100 + _e101);
+    vec4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return (_e103 / vec4(max(total, 1e-6)));
+}
+
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local_2 = false;
+    bool local_3 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local_2 = (n_dot_wr > 0.0);
     } else {
         local_2 = false;
     }
-    bool lit = local_2;
-    return (lit ? (s_2 / vec3(max(q_1, MC_MIN_Q))) : vec3(0.0));
+    bool _e37 = local_2;
+    if (_e37) {
+        local_3 = (q_4 > MC_MIN_Q);
+    } else {
+        local_3 = false;
+    }
+    bool lit = local_3;
+    return (lit ? (s_4 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
     return McThread(clamp((color * tint), vec3(0.0), vec3(1.0)), clamp(ior_1, 1.0, 4.0), clamp(isotropy, 0.0, 1.0), (max(gamma_s_deg, 0.0) * MC_DEG), (max(gamma_v_deg, 0.0) * MC_DEG));
 }
 
-float microcylinder_mean_fresnel(float eta) {
-    float _e1 = weft_f0_from_ior(eta);
+float microcylinder_mean_fresnel(float eta_1) {
+    float _e1 = weft_f0_from_ior(eta_1);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 

@@ -67,11 +67,25 @@ struct McFrame {
     n: vec3<f32>,
 }
 
-struct McPsi {
-    pi: vec3<f32>,
-    pr: vec3<f32>,
-    u: f32,
+struct McFastPre {
+    wi: vec3<f32>,
+    wr: vec3<f32>,
+    inv_ri: f32,
+    inv_rr: f32,
+    u_psi: f32,
     ok: f32,
+    inv_gamma_s: f32,
+    inv_gamma_v: f32,
+    s_lo: f32,
+    s_hi: f32,
+    eta: f32,
+}
+
+struct McFastNode {
+    x: f32,
+    s: f32,
+    v: f32,
+    p: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -86,7 +100,6 @@ const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-const MC_FAST_CHORDS: u32 = 4u;
 const MC_MAX_OFFSETS: i32 = 8i;
 const MC_REF_STEP_DEG: f32 = 1f;
 const MC_REF_MAX_SUBDIV: f32 = 64f;
@@ -97,6 +110,17 @@ const MC_MIN_GAMMA: f32 = 0.0017453292f;
 const MC_MIN_PROJ2_: f32 = 0.00000001f;
 const MC_MIN_COS2_THETA_D: f32 = 0.0001f;
 const MC_MIN_Q: f32 = 0.000001f;
+const MC_INV_SQRT_TWO_PI: f32 = 0.3989423f;
+const MC_FAST_MIN_DT: f32 = 0.1f;
+const MC_GL3_T: f32 = 0.11270166f;
+const MC_GL3_W0_: f32 = 0.2777778f;
+const MC_GL3_W1_: f32 = 0.44444445f;
+const MC_GL3_E0_: f32 = -0.29099444f;
+const MC_GL3_E1_: f32 = 0.42621785f;
+const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_SPAN: f32 = 0.0001f;
+const MC_FAST_SPLIT_DEG: f32 = 60f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -108,11 +132,6 @@ var<uniform> material: WeftMaterial;
 var material_sampler: sampler;
 @group(1) @binding(3) 
 var albedo_map: texture_2d<f32>;
-
-fn weft_pow5_(x: f32) -> f32 {
-    let x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
 
 fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     let len2_ = dot(v, v);
@@ -126,9 +145,21 @@ fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
     return vec3<f32>((1f + (((s * n.x) * n.x) * a_1)), (s * b_1), (-(s) * n.x));
 }
 
+fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
+    let c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
+    let g2_ = (((eta * eta) - 1f) + (c * c));
+    let g = sqrt(max(g2_, 0f));
+    let gmc = (g - c);
+    let gpc = max((g + c), 0.0000001f);
+    let a_2 = (gmc / gpc);
+    let b_2 = (((c * gpc) - 1f) / max(((c * gmc) + 1f), 0.0000001f));
+    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_2 * b_2))));
+    return select(f, 1f, (g2_ < 0f));
+}
+
 fn weft_f0_from_ior(ior: f32) -> f32 {
-    let q = ((ior - 1f) / max((ior + 1f), 0.0001f));
-    return (q * q);
+    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_3 * q_3);
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -179,19 +210,14 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_2);
-    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_2, n_2);
+    let b_3 = (cross(n_2, t_1) * s_1);
+    return mat3x3<f32>(t_1, b_3, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
-}
-
-fn mc_gauss(gamma: f32, x_1: f32) -> f32 {
-    let g = max(gamma, MC_MIN_GAMMA);
-    return (exp(((-(x_1) * x_1) / ((2f * g) * g))) / (MC_SQRT_TWO_PI * g));
 }
 
 fn mc_correlate(ci: f32, cr: f32, u: f32) -> f32 {
@@ -200,121 +226,198 @@ fn mc_correlate(ci: f32, cr: f32, u: f32) -> f32 {
     return ((((1f - u) * mi) * mr) + (u * min(mi, mr)));
 }
 
-fn mc_acos_fast(x_2: f32) -> f32 {
-    let ax = min(abs(x_2), 1f);
-    let r = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
-    return select(r, (WEFT_PI - r), (x_2 < 0f));
+fn mc_acos_fast(x: f32) -> f32 {
+    let ax = min(abs(x), 1f);
+    let r_1 = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
+    return select(r_1, (WEFT_PI - r_1), (x < 0f));
 }
 
-fn mc_asin_fast(x_3: f32) -> f32 {
-    let _e2 = mc_acos_fast(x_3);
+fn mc_asin_fast(x_1: f32) -> f32 {
+    let _e2 = mc_acos_fast(x_1);
     return (1.5707964f - _e2);
-}
-
-fn mc_psi_fast(v_1: vec3<f32>, wi: vec3<f32>, wr: vec3<f32>) -> McPsi {
-    let pi = (wi - (v_1 * dot(wi, v_1)));
-    let pr = (wr - (v_1 * dot(wr, v_1)));
-    let li2_ = dot(pi, pi);
-    let lr2_ = dot(pr, pr);
-    let ok_1 = (min(li2_, lr2_) >= MC_MIN_PROJ2_);
-    let hi = (pi * inverseSqrt(max(li2_, MC_MIN_PROJ2_)));
-    let hr = (pr * inverseSqrt(max(lr2_, MC_MIN_PROJ2_)));
-    let _e23 = mc_acos_fast(dot(hi, hr));
-    let u_1 = exp(((-(_e23) * _e23) * MC_U_INV_TWO_SIGMA2_));
-    return McPsi(hi, hr, u_1, select(0f, 1f, ok_1));
-}
-
-fn mc_lobe_fast(fr: McFrame, psi: McPsi, wi_1: vec3<f32>, wr_1: vec3<f32>, ca: f32, sa: f32, th: McThread) -> vec4<f32> {
-    var local: bool;
-
-    let u_2 = ((fr.u * ca) + (fr.n * sa));
-    let np = ((fr.n * ca) - (fr.u * sa));
-    let si = clamp(dot(wi_1, u_2), -1f, 1f);
-    let sr = clamp(dot(wr_1, u_2), -1f, 1f);
-    let pi_1 = (wi_1 - (u_2 * si));
-    let pr_1 = (wr_1 - (u_2 * sr));
-    let ci2_ = dot(pi_1, pi_1);
-    let cr2_ = dot(pr_1, pr_1);
-    if !((min(ci2_, cr2_) < MC_MIN_PROJ2_)) {
-        local = (psi.ok == 0f);
-    } else {
-        local = true;
-    }
-    let _e41 = local;
-    if _e41 {
-        return vec4(0f);
-    }
-    let inv_ci = inverseSqrt(ci2_);
-    let inv_cr = inverseSqrt(cr2_);
-    let ci_1 = (ci2_ * inv_ci);
-    let cr_1 = (cr2_ * inv_cr);
-    let hi_1 = (pi_1 * inv_ci);
-    let hr_1 = (pr_1 * inv_cr);
-    let cos_phi_d = clamp(dot(hi_1, hr_1), -1f, 1f);
-    let cos_half_phi = sqrt(max((0.5f + (0.5f * cos_phi_d)), 0f));
-    let _e61 = mc_acos_fast(cos_phi_d);
-    let _e62 = mc_asin_fast(si);
-    let _e63 = mc_asin_fast(sr);
-    let theta_h = (0.5f * (_e62 + _e63));
-    let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    let u_phi = exp(((-(_e61) * _e61) * MC_U_INV_TWO_SIGMA2_));
-    let _e83 = mc_correlate(dot(np, hi_1), dot(np, hr_1), u_phi);
-    let _e89 = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
-    let _e91 = weft_f0_from_ior(th.eta);
-    let c_eff = (sqrt(cd2_) * cos_half_phi);
-    let _e99 = weft_pow5_((1f - saturate(c_eff)));
-    let f_r = (_e91 + ((1f - _e91) * _e99));
-    let f_t = ((1f - f_r) * (1f - f_r));
-    let _e109 = mc_gauss(th.gamma_s, theta_h);
-    let surface = ((f_r * cos_half_phi) * _e109);
-    let _e115 = mc_gauss(th.gamma_v, theta_h);
-    let volume = ((f_t * (((1f - th.kd) * _e115) + th.kd)) / (ci_1 + cr_1));
-    let fs = ((vec3(surface) + (volume * th.albedo)) / vec3(cd2_));
-    return vec4<f32>((fs * ((_e83 * _e89) * ci_1)), _e89);
 }
 
 fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
     return select(a, b, (k >= 4i))[(k & 3i)];
 }
 
-fn mc_thread_list_fast(fr_1: McFrame, wi_2: vec3<f32>, wr_2: vec3<f32>, th_1: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
+fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
+    let e_1 = exp(((-0.5f * t) * t));
+    let z = (abs(t) * 0.70710677f);
+    let k_3 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_3 * (vec4(0.2548296f) + (k_3 * (vec4(-0.28449672f) + (k_3 * (vec4(1.4214138f) + (k_3 * (vec4(-1.4531521f) + (k_3 * 1.0614054f)))))))));
+    let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
+    return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
+}
+
+fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t_2 = (xe * inv_gamma);
+    let _e3 = mc_normal4_(t_2);
+    let dt = (t_2.yzw - t_2.xyz);
+    let wide = (abs(dt) >= vec3(0.1f));
+    let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
+    let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
+    return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
+}
+
+fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+    let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    let ri2_ = ((li.x * li.x) + (li.z * li.z));
+    let rr2_ = ((lr.x * lr.x) + (lr.z * lr.z));
+    let ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
+    let inv_ri = inverseSqrt(max(ri2_, MC_MIN_PROJ2_));
+    let inv_rr = inverseSqrt(max(rr2_, MC_MIN_PROJ2_));
+    let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
+    let _e50 = mc_acos_fast(cos_psi_d);
+    let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
+    let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
+    let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
+    let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
+}
+
+fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
+    var local: bool;
+
+    let si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1f, 1f);
+    let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1f, 1f);
+    let ni = ((q.wi.z * ca) - (q.wi.x * sa));
+    let nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    let ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
+    let cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
+    if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
+        local = (q.ok != 0f);
+    } else {
+        local = false;
+    }
+    let ok_2 = local;
+    let inv_ci = inverseSqrt(max(ci2_, MC_MIN_PROJ2_));
+    let inv_cr = inverseSqrt(max(cr2_, MC_MIN_PROJ2_));
+    let ci_1 = (ci2_ * inv_ci);
+    let cr_1 = (cr2_ * inv_cr);
+    let cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
+    let cos_half_phi = sqrt((0.5f + (0.5f * cos_phi_d)));
+    let _e86 = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
+    let _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
+    let _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
+    let _e101 = mc_asin_fast(si);
+    let _e102 = mc_asin_fast(sr);
+    let x_2 = (0.5f * (_e101 + _e102));
+    let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
+    let _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
+    let _e120 = weft_f_dielectric(ci_1, q.eta);
+    let _e124 = weft_f_dielectric(cr_1, q.eta);
+    let f_t = ((1f - _e120) * (1f - _e124));
+    let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
+    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e100, ok_2));
+}
+
+fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    let _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
+    let _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
+    let s_2 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
+    let surface = dot(_e36, s_2);
+    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
+}
+
+fn mc_fast_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span = abs((a1_ - a0_));
+    let flat = (span < MC_FAST_MIN_SPAN);
+    let lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
+    let hi = clamp(hi_s, lo, max(a0_, a1_));
+    let w = (hi - lo);
+    let al = vec3<f32>((lo + (MC_GL3_T * w)), (lo + (0.5f * w)), (hi - (MC_GL3_T * w)));
+    let ca_1 = cos(al);
+    let sa_1 = sin(al);
+    let _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
+    let _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
+    let _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
+    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span, MC_FAST_MIN_SPAN)), 1f, flat));
+    let _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    return _e47;
+}
+
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
+    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
+    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    let span_1 = abs((_e5 - _e6));
+    return select(1i, 2i, (span_1 > MC_FAST_SPLIT_DEG));
+}
+
+fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, count: i32) -> vec4<f32> {
     var acc: vec4<f32> = vec4(0f);
-    var k_1: i32 = 0i;
+    var k_2: i32 = 0i;
+    var h: i32 = 0i;
+    var i: i32 = 0i;
 
     let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
-    let _e11 = mc_psi_fast(fr_1.v, wi_2, wr_2);
+    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    let lo_s_1 = atan(_e10.s_lo);
+    let hi_s_1 = atan(_e10.s_hi);
+    let segments = max((n_3 - 1i), 1i);
+    let spans = abs((vec4<f32>(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
+    let spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
+    let live = (vec4<i32>(0i, 1i, 2i, 3i) < vec4((n_3 - 1i)));
+    let live_b = (vec3<i32>(4i, 5i, 6i) < vec3((n_3 - 1i)));
+    let per = select(vec4(0i), select(vec4(1i), vec4(2i), (spans > vec4(60f))), live);
+    let per_b = select(vec3(0i), select(vec3(1i), vec3(2i), (spans_b > vec3(60f))), live_b);
+    let pieces = max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1i);
     loop {
-        let _e17 = k_1;
-        if (_e17 < n_3) {
+        let _e91 = i;
+        if (_e91 < pieces) {
         } else {
             break;
         }
         {
-            let _e19 = k_1;
-            let _e20 = mc_offset_at(offsets_a, offsets_b, _e19);
-            let a_2 = (_e20 * MC_DEG);
-            let _e23 = acc;
-            let _e26 = mc_lobe_fast(fr_1, _e11, wi_2, wr_2, cos(a_2), sin(a_2), th_1);
-            acc = (_e23 + _e26);
+            let _e93 = k_2;
+            let _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
+            let d0_ = (_e94 * MC_DEG);
+            let _e97 = k_2;
+            let _e100 = mc_offset_at(offsets_a_1, offsets_b_1, (_e97 + 1i));
+            let d1_ = select(d0_, (_e100 * MC_DEG), (n_3 > 1i));
+            let _e106 = k_2;
+            let _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
+            let m = select(1i, _e107, (n_3 > 1i));
+            let fm = f32(m);
+            let _e113 = acc;
+            let _e114 = h;
+            let _e118 = h;
+            let _e124 = mc_fast_segment(_e10, th_3, mix(d0_, d1_, (f32(_e114) / fm)), mix(d0_, d1_, (f32((_e118 + 1i)) / fm)), lo_s_1, hi_s_1);
+            acc = (_e113 + (_e124 / vec4(fm)));
+            let _e128 = h;
+            h = (_e128 + 1i);
+            let _e131 = k_2;
+            let _e132 = k_2;
+            let _e135 = h;
+            k_2 = select(_e131, (_e132 + 1i), (_e135 >= m));
+            let _e138 = h;
+            let _e139 = h;
+            h = select(_e138, 0i, (_e139 >= m));
         }
         continuing {
-            let _e29 = k_1;
-            k_1 = (_e29 + 1i);
+            let _e144 = i;
+            i = (_e144 + 1i);
         }
     }
-    let _e31 = acc;
-    return (_e31 / vec4(f32(n_3)));
+    let _e146 = acc;
+    return (_e146 / vec4(f32(segments)));
 }
 
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
     var local_1: bool;
     var local_2: bool;
 
-    let c1_ = saturate(a1_);
+    let c1_ = saturate(a1_1);
     let c2_ = saturate(a2_);
     let gap = max(((1f - c1_) - c2_), 0f);
-    let q_1 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
     if (n_dot_wi > 0f) {
         local_1 = (n_dot_wr > 0f);
     } else {
@@ -322,20 +425,20 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
     }
     let _e37 = local_1;
     if _e37 {
-        local_2 = (q_1 > MC_MIN_Q);
+        local_2 = (q_4 > MC_MIN_Q);
     } else {
         local_2 = false;
     }
     let lit = local_2;
-    return select(vec3(0f), (s_2 / vec3(max(q_1, MC_MIN_Q))), lit);
+    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
     return McThread(saturate((color * tint)), clamp(ior_1, 1f, 4f), saturate(isotropy), (max(gamma_s_deg, 0f) * MC_DEG), (max(gamma_v_deg, 0f) * MC_DEG));
 }
 
-fn microcylinder_mean_fresnel(eta: f32) -> f32 {
-    let _e1 = weft_f0_from_ior(eta);
+fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
+    let _e1 = weft_f0_from_ior(eta_1);
     return (_e1 + ((1f - _e1) / 21f));
 }
 
@@ -384,7 +487,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e45 = material.thread2_gamma_v;
     let _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
     let _e49 = material.thread1_coverage;
-    let a1_1 = saturate(_e49);
+    let a1_2 = saturate(_e49);
     let _e53 = material.thread2_coverage;
     let a2_1 = select(0f, saturate(_e53), true);
     let _e60 = material.brightness;
@@ -392,12 +495,12 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e68 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
     let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
     let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    let t_1 = _e72[0];
-    let b_3 = _e72[1];
+    let t_3 = _e72[0];
+    let b_4 = _e72[1];
     let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
     let _e83 = weft_main_light_direction();
-    let warp = McFrame(t_1, b_3, _e70);
-    let weft = McFrame(b_3, t_1, _e70);
+    let warp = McFrame(t_3, b_4, _e70);
+    let weft = McFrame(b_4, t_3, _e70);
     {
         {
             let _e94 = material.thread1_offsets_a;
@@ -416,15 +519,15 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     }
     let _e112 = s1_;
     let _e113 = s2_;
-    let _e116 = mc_combine(_e112, _e113, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
+    let _e116 = mc_combine(_e112, _e113, a1_2, a2_1, dot(_e70, _e83), dot(_e70, _e82));
     let _e117 = weft_main_light_radiance();
     let direct = (_e116 * _e117);
     let _e121 = microcylinder_mean_fresnel(_e29.eta);
     let amb1_ = (_e29.albedo + vec3(_e121));
     let _e126 = microcylinder_mean_fresnel(_e46.eta);
     let amb2_ = (_e46.albedo + vec3(_e126));
-    let cov = (a1_1 + a2_1);
-    let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
+    let cov = (a1_2 + a2_1);
+    let ambient_albedo = select(amb1_, (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
     let _e140 = weft_sh_irradiance(_e70);
     let ambient = (_e140 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));

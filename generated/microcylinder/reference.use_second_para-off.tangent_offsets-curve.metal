@@ -95,7 +95,6 @@ constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant uint MC_CURVE_SAMPLES = 33u;
 constant uint MC_CURVE_SEGMENTS = 32u;
-constant uint MC_FAST_CHORDS = 4u;
 constant int MC_MAX_OFFSETS = 8;
 constant float MC_REF_STEP_DEG = 1.0;
 constant float MC_REF_MAX_SUBDIV = 64.0;
@@ -106,6 +105,17 @@ constant float MC_MIN_GAMMA = 0.0017453292;
 constant float MC_MIN_PROJ2_ = 0.00000001;
 constant float MC_MIN_COS2_THETA_D = 0.0001;
 constant float MC_MIN_Q = 0.000001;
+constant float MC_INV_SQRT_TWO_PI = 0.3989423;
+constant float MC_FAST_MIN_DT = 0.1;
+constant float MC_GL3_T = 0.11270166;
+constant float MC_GL3_W0_ = 0.2777778;
+constant float MC_GL3_W1_ = 0.44444445;
+constant float MC_GL3_E0_ = -0.29099444;
+constant float MC_GL3_E1_ = 0.42621785;
+constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_SPAN = 0.0001;
+constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,

@@ -86,7 +86,6 @@ const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-const MC_FAST_CHORDS: u32 = 4u;
 const MC_MAX_OFFSETS: i32 = 8i;
 const MC_REF_STEP_DEG: f32 = 1f;
 const MC_REF_MAX_SUBDIV: f32 = 64f;
@@ -97,6 +96,17 @@ const MC_MIN_GAMMA: f32 = 0.0017453292f;
 const MC_MIN_PROJ2_: f32 = 0.00000001f;
 const MC_MIN_COS2_THETA_D: f32 = 0.0001f;
 const MC_MIN_Q: f32 = 0.000001f;
+const MC_INV_SQRT_TWO_PI: f32 = 0.3989423f;
+const MC_FAST_MIN_DT: f32 = 0.1f;
+const MC_GL3_T: f32 = 0.11270166f;
+const MC_GL3_W0_: f32 = 0.2777778f;
+const MC_GL3_W1_: f32 = 0.44444445f;
+const MC_GL3_E0_: f32 = -0.29099444f;
+const MC_GL3_E1_: f32 = 0.42621785f;
+const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_SPAN: f32 = 0.0001f;
+const MC_FAST_SPLIT_DEG: f32 = 60f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;

@@ -79,7 +79,6 @@ const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const uint MC_CURVE_SAMPLES = 33u;
 const uint MC_CURVE_SEGMENTS = 32u;
-const uint MC_FAST_CHORDS = 4u;
 const int MC_MAX_OFFSETS = 8;
 const float MC_REF_STEP_DEG = 1.0;
 const float MC_REF_MAX_SUBDIV = 64.0;
@@ -90,6 +89,17 @@ const float MC_MIN_GAMMA = 0.0017453292;
 const float MC_MIN_PROJ2_ = 1e-8;
 const float MC_MIN_COS2_THETA_D = 0.0001;
 const float MC_MIN_Q = 1e-6;
+const float MC_INV_SQRT_TWO_PI = 0.3989423;
+const float MC_FAST_MIN_DT = 0.1;
+const float MC_GL3_T = 0.11270166;
+const float MC_GL3_W0_ = 0.2777778;
+const float MC_GL3_W1_ = 0.44444445;
+const float MC_GL3_E0_ = -0.29099444;
+const float MC_GL3_E1_ = 0.42621785;
+const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_SPAN = 0.0001;
+const float MC_FAST_SPLIT_DEG = 60.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

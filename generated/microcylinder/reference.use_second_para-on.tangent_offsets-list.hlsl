@@ -105,7 +105,6 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
-static const uint MC_FAST_CHORDS = 4u;
 static const int MC_MAX_OFFSETS = int(8);
 static const float MC_REF_STEP_DEG = 1.0;
 static const float MC_REF_MAX_SUBDIV = 64.0;
@@ -116,6 +115,17 @@ static const float MC_MIN_GAMMA = 0.0017453292;
 static const float MC_MIN_PROJ2_ = 1e-8;
 static const float MC_MIN_COS2_THETA_D = 0.0001;
 static const float MC_MIN_Q = 1e-6;
+static const float MC_INV_SQRT_TWO_PI = 0.3989423;
+static const float MC_FAST_MIN_DT = 0.1;
+static const float MC_GL3_T = 0.11270166;
+static const float MC_GL3_W0_ = 0.2777778;
+static const float MC_GL3_W1_ = 0.44444445;
+static const float MC_GL3_E0_ = -0.29099444;
+static const float MC_GL3_E1_ = 0.42621785;
+static const float MC_FAST_BIG = 1000000.0;
+static const float MC_FAST_MIN_SPAN = 0.0001;
+static const float MC_FAST_SPLIT_DEG = 60.0;
+static const float MC_FAST_MIN_DSLOPE = 0.0001;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }

@@ -43,11 +43,17 @@
 //     weighted by its arc length; offset lists linearly interpolated with
 //     midpoint sub-steps <= 1 deg, at most 64 per segment: relative error
 //     < 3e-3 against a 0.02 deg quadrature for Table II, measured in the test).
-//   fast: control points only (offset list) or 4 chords of the curve; angle
-//     forms without transcendentals (half-angle identities, a 4-term
-//     polynomial acos/asin with |error| < 6.8e-5 rad); Schlick F_r at the
-//     effective angle and F = (1 - F_r)^2 (the seed's form). exp() stays
-//     (one hardware instruction).
+//   fast: the same offset distribution and the same lobe, integrated with
+//     three nodes per range of offsets instead of one lobe per degree (see
+//     "fast tier" below): each range clipped to the offsets where M P > 0
+//     (an interval, found in closed form), a 3-point Gauss-Legendre rule for
+//     the slowly varying factors, and the Gaussians in theta_h averaged
+//     exactly (erf) over each node's cell instead of sampled. Offset lists:
+//     every segment is one range (two halves beyond 60 deg); curves: one
+//     range in t over the whole profile (slope taken as linear in t through
+//     its values at t = 0, 1/2, 1), arc-length weighted. Angle forms without
+//     transcendentals (half-angle identities, a 4-term polynomial acos/asin,
+//     |error| < 6.8e-5 rad); exact dielectric Fresnel as in the reference.
 //
 // Guards (the same constants are used by the f64 model in the test):
 //   - a sample whose w_i or w_r lies within 0.0057 deg of u' (or of v for
@@ -62,8 +68,6 @@
 // samples over t in [0, 1] (`samples = 33` in microcylinder.toml).
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
-// Fast tier: the curve is reduced to this many chords (8 segments each).
-const MC_FAST_CHORDS: u32 = 4u;
 // Offset lists hold at most 8 control points (two vec4).
 const MC_MAX_OFFSETS: i32 = 8;
 // Reference tier: largest sub-step along an offset-list segment (degrees) and
@@ -158,19 +162,6 @@ fn mc_psi_reference(v: vec3<f32>, wi: vec3<f32>, wr: vec3<f32>) -> McPsi {
     return McPsi(hi, hr, u, select(0.0, 1.0, ok));
 }
 
-fn mc_psi_fast(v: vec3<f32>, wi: vec3<f32>, wr: vec3<f32>) -> McPsi {
-    let pi = wi - v * dot(wi, v);
-    let pr = wr - v * dot(wr, v);
-    let li2 = dot(pi, pi);
-    let lr2 = dot(pr, pr);
-    let ok = min(li2, lr2) >= MC_MIN_PROJ2;
-    let hi = pi * inverseSqrt(max(li2, MC_MIN_PROJ2));
-    let hr = pr * inverseSqrt(max(lr2, MC_MIN_PROJ2));
-    let psi_d = mc_acos_fast(dot(hi, hr));
-    let u = exp(-psi_d * psi_d * MC_U_INV_TWO_SIGMA2);
-    return McPsi(hi, hr, u, select(0.0, 1.0, ok));
-}
-
 // ---------------------------------------------------------------- lobes
 
 // One tangent-offset sample, reference form. (ca, sa) = (cos, sin) of the
@@ -218,48 +209,6 @@ fn mc_lobe_reference(fr: McFrame, psi: McPsi, wi: vec3<f32>, wr: vec3<f32>, ca: 
     return vec4<f32>(fs * (m * p * ci), p);
 }
 
-// One tangent-offset sample, fast form: no atan/acos/cos (half-angle
-// identities and mc_acos_fast), Schlick F_r, F = (1 - F_r)^2.
-fn mc_lobe_fast(fr: McFrame, psi: McPsi, wi: vec3<f32>, wr: vec3<f32>, ca: f32, sa: f32, th: McThread) -> vec4<f32> {
-    let u = fr.u * ca + fr.n * sa;
-    let np = fr.n * ca - fr.u * sa;
-    let si = clamp(dot(wi, u), -1.0, 1.0);
-    let sr = clamp(dot(wr, u), -1.0, 1.0);
-    let pi = wi - u * si;
-    let pr = wr - u * sr;
-    let ci2 = dot(pi, pi);
-    let cr2 = dot(pr, pr);
-    if min(ci2, cr2) < MC_MIN_PROJ2 || psi.ok == 0.0 {
-        return vec4<f32>(0.0);
-    }
-    let inv_ci = inverseSqrt(ci2);
-    let inv_cr = inverseSqrt(cr2);
-    let ci = ci2 * inv_ci;
-    let cr = cr2 * inv_cr;
-    let hi = pi * inv_ci;
-    let hr = pr * inv_cr;
-    let cos_phi_d = clamp(dot(hi, hr), -1.0, 1.0);
-    // cos(phi_d / 2) = sqrt((1 + cos phi_d) / 2), phi_d in [0, pi].
-    let cos_half_phi = sqrt(max(0.5 + 0.5 * cos_phi_d, 0.0));
-    let phi_d = mc_acos_fast(cos_phi_d);
-    let theta_h = 0.5 * (mc_asin_fast(si) + mc_asin_fast(sr));
-    // cos^2(theta_d) = (1 + cos(theta_i - theta_r)) / 2.
-    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
-
-    let u_phi = exp(-phi_d * phi_d * MC_U_INV_TWO_SIGMA2);
-    let m = mc_correlate(dot(np, hi), dot(np, hr), u_phi);
-    let p = mc_correlate(dot(np, psi.pi), dot(np, psi.pr), psi.u);
-
-    let f0 = weft_f0_from_ior(th.eta);
-    let c_eff = sqrt(cd2) * cos_half_phi;
-    let f_r = f0 + (1.0 - f0) * weft_pow5(1.0 - saturate(c_eff));
-    let f_t = (1.0 - f_r) * (1.0 - f_r);
-    let surface = f_r * cos_half_phi * mc_gauss(th.gamma_s, theta_h);
-    let volume = f_t * ((1.0 - th.kd) * mc_gauss(th.gamma_v, theta_h) + th.kd) / (ci + cr);
-    let fs = (vec3<f32>(surface) + volume * th.albedo) / cd2;
-    return vec4<f32>(fs * (m * p * ci), p);
-}
-
 // ---------------------------------------------------------------- thread sets
 // Each returns the offset-weighted means (S_j, P_j) of a thread set.
 
@@ -288,24 +237,6 @@ fn mc_thread_curve_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McTh
         let dh = mc_curve_at(heights, k + 1u) - mc_curve_at(heights, k);
         let len = sqrt(dt * dt + dh * dh);
         acc += len * mc_lobe_reference(fr, psi, wi, wr, dt / len, dh / len, th);
-        wsum += len;
-    }
-    return acc / wsum;
-}
-
-// Fast, tangent curve: 4 chords over t in [0, 1/4, 1/2, 3/4, 1] (their slope
-// is the mean slope over each quarter), weighted by chord length.
-fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let psi = mc_psi_fast(fr.v, wi, wr);
-    let dt = 1.0 / f32(MC_FAST_CHORDS);
-    let stride = MC_CURVE_SEGMENTS / MC_FAST_CHORDS;
-    var acc = vec4<f32>(0.0);
-    var wsum = 0.0;
-    for (var k = 0u; k < MC_FAST_CHORDS; k++) {
-        let dh = mc_curve_at(heights, (k + 1u) * stride) - mc_curve_at(heights, k * stride);
-        let inv_len = inverseSqrt(dt * dt + dh * dh);
-        let len = 1.0 / inv_len;
-        acc += len * mc_lobe_fast(fr, psi, wi, wr, dt * inv_len, dh * inv_len, th);
         wsum += len;
     }
     return acc / wsum;
@@ -341,17 +272,315 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
     return acc / f32(n - 1);
 }
 
-// Fast, offset list: the control points only, equally weighted (what the
-// seed and the public ports evaluate).
+// ---------------------------------------------------------------- fast tier
+// The fast tier integrates the same tangent-offset distribution as the
+// reference with three nodes per range of offsets instead of one lobe per
+// degree:
+//   1. Support: every term of S and P carries M and P, which vanish unless
+//      n'.w_i > 0 and n'.w_r > 0. With w = (x, y, z) along (u, v, n) and
+//      s = tan(alpha), n'.w = cos(alpha) (z - x s): each direction bounds the
+//      slope s from one side, so the offsets that contribute form one
+//      interval (s_lo, s_hi). Each range is clipped to it first: the
+//      integrand then has no kinks (max(cos, 0)) inside the range and falls
+//      smoothly to 0 at a clipped end. Without this, rim light (w_i, w_r on
+//      opposite sides, a support of 10-30 deg inside a 50-110 deg segment)
+//      needs many nodes.
+//   2. A 3-point Gauss-Legendre rule on the clipped range for the slowly
+//      varying factors (Fresnel, cos(phi_d/2), M, P, cos(theta),
+//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_fast_node.
+//   3. The narrow Gaussians in theta_h are not sampled but averaged over
+//      each node's cell of the rule (cell widths 5/18, 8/18, 5/18), theta_h
+//      linear across a cell: mean g = (cdf(x_b/gamma) - cdf(x_a/gamma)) /
+//      (x_b - x_a) (erf by Abramowitz & Stegun 7.1.26, sharing the pdf's
+//      exp). theta_h at the cell edges is interpolated linearly from the
+//      nodes. This is what sampling at control points gets wrong: a 2.5-12
+//      deg lobe swept by a 50 deg range of tilts is a band of width ~50 deg
+//      in theta_h, not a few spikes.
+// Offset lists: each segment is one range (uniform offsets from one control
+// point to the next), two halves when it spans more than 60 deg (velvet's
+// -55..55); a flat segment or single control point is the point lobe by the
+// same code (all nodes on one offset, zero-width cells). Curves: one range in
+// t over the whole profile, the slope taken as linear in t on each half
+// through its values at t = 0, 1/2, 1 (exact for a quadratic profile such as
+// the default), nodes weighted by arc length sqrt(1 + s^2).
+// The code is straight-line (no early return; the list path has one loop
+// over its pieces): llvmpipe runs both sides of every branch and a loop
+// around the nodes costs as much again as the nodes (measured: the same
+// curve code inside a one-iteration loop went from 1.6x to 3.1x standard
+// fast).
+
+// Per thread set: the components of w_i and w_r in the thread frame before
+// the offset (x along u, y along v, z along n), psi (offset-independent),
+// the support and the constants of the thread.
+struct McFastPre {
+    wi: vec3<f32>,
+    wr: vec3<f32>,
+    // 1 / |projection onto the u-n plane| of w_i, w_r (psi's azimuth).
+    inv_ri: f32,
+    inv_rr: f32,
+    // Correlation weight u(psi_d); 1/0 whether psi is defined.
+    u_psi: f32,
+    ok: f32,
+    inv_gamma_s: f32,
+    inv_gamma_v: f32,
+    // Offsets with a non-zero integrand: tan(alpha) in (s_lo, s_hi).
+    s_lo: f32,
+    s_hi: f32,
+    eta: f32,
+}
+
+// The slowly varying factors at one offset.
+struct McFastNode {
+    // theta_h.
+    x: f32,
+    // F_r cos(phi_d/2) M P cos(theta_i) / cos^2(theta_d): multiplies
+    // g(gamma_s, theta_h).
+    s: f32,
+    // F_t M P cos(theta_i) / ((cos theta_i + cos theta_r) cos^2(theta_d)):
+    // multiplies A ((1 - k_d) g(gamma_v, theta_h) + k_d).
+    v: f32,
+    // The reweighting P.
+    p: f32,
+}
+
+// 1 / sqrt(2 pi).
+const MC_INV_SQRT_TWO_PI: f32 = 0.398942280401;
+// Below this cell width (in units of gamma) the mean of the Gaussian over a
+// cell is the mean of its edge values (relative error < 1e-3 there) instead
+// of the cdf difference, which cancels.
+const MC_FAST_MIN_DT: f32 = 0.1;
+// Three-point Gauss-Legendre rule on [0, 1]: nodes 1/2 -+ sqrt(15)/10,
+// weights 5/18, 8/18, 5/18; cell edges 0, 5/18, 13/18, 1.
+const MC_GL3_T: f32 = 0.112701665379;
+const MC_GL3_W0: f32 = 0.277777777778;
+const MC_GL3_W1: f32 = 0.444444444444;
+// theta_h at the cell edges, linear through the nodes: edge 0 and 5/18 from
+// nodes 0 and 1, 13/18 and 1 from nodes 1 and 2 (fractions of the node step).
+const MC_GL3_E0: f32 = -0.290994448736;
+const MC_GL3_E1: f32 = 0.426217847263;
+
+// Standard normal at each t: (pdf, cdf - 1/2). cdf by Abramowitz & Stegun
+// 7.1.26 (|error of erf| < 1.5e-7), sharing the exponential with the pdf.
+fn mc_normal4(t: vec4<f32>) -> array<vec4<f32>, 2> {
+    let e = exp(-0.5 * t * t);
+    let z = abs(t) * 0.707106781187;
+    let k = 1.0 / (1.0 + 0.3275911 * z);
+    let poly = k * (0.254829592 + k * (-0.284496736 + k * (1.421413741 + k * (-1.453152027 + k * 1.061405429))));
+    // Upper tail 1 - cdf(|t|) = erfc(z) / 2.
+    let half = 0.5 - 0.5 * poly * e;
+    return array<vec4<f32>, 2>(e * MC_INV_SQRT_TWO_PI, select(-half, half, t >= vec4<f32>(0.0)));
+}
+
+// Mean of g(gamma, x) over the three cells whose edges are x_e (x linear in
+// each cell).
+fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t = xe * inv_gamma;
+    let nd = mc_normal4(t);
+    let dt = t.yzw - t.xyz;
+    let wide = abs(dt) >= vec3<f32>(MC_FAST_MIN_DT);
+    let exact = (nd[1].yzw - nd[1].xyz) / select(vec3<f32>(1.0), dt, wide);
+    let trap = 0.5 * (nd[0].xyz + nd[0].yzw);
+    return max(select(trap, exact, wide), vec3<f32>(0.0)) * inv_gamma;
+}
+
+// The support in slope space: with s = tan(alpha) (alpha in (-pi/2, pi/2)),
+// n'.w = cos(alpha) (z - x s) > 0 <=> x s < z, so each direction bounds s
+// from above (x > 0) or below (x < 0). MC_FAST_BIG stands for no bound.
+const MC_FAST_BIG: f32 = 1e6;
+fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+    let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    let ri2 = li.x * li.x + li.z * li.z;
+    let rr2 = lr.x * lr.x + lr.z * lr.z;
+    let ok = min(ri2, rr2) >= MC_MIN_PROJ2;
+    let inv_ri = inverseSqrt(max(ri2, MC_MIN_PROJ2));
+    let inv_rr = inverseSqrt(max(rr2, MC_MIN_PROJ2));
+    let cos_psi_d = (li.x * lr.x + li.z * lr.z) * inv_ri * inv_rr;
+    let psi_d = mc_acos_fast(cos_psi_d);
+    let u_psi = exp(-psi_d * psi_d * MC_U_INV_TWO_SIGMA2);
+    // z / x with |x| floored: a tiny |x| gives a bound beyond MC_FAST_BIG.
+    let bi = li.z / select(max(li.x, 1e-12), min(li.x, -1e-12), li.x < 0.0);
+    let br = lr.z / select(max(lr.x, 1e-12), min(lr.x, -1e-12), lr.x < 0.0);
+    let s_lo = max(select(-MC_FAST_BIG, bi, li.x < 0.0), select(-MC_FAST_BIG, br, lr.x < 0.0));
+    let s_hi = min(select(MC_FAST_BIG, bi, li.x > 0.0), select(MC_FAST_BIG, br, lr.x > 0.0));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok),
+                     1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
+                     clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG), th.eta);
+}
+
+// The factors at the offset with (cos, sin) = (ca, sa): the reference lobe's
+// terms without its Gaussians. Tilting about v rotates the (x, z)
+// components: sin(theta) = x ca + z sa, n'.w = z ca - x sa, and
+// cos^2(theta) = y^2 + (n'.w)^2 (the projection normal to u', exact where
+// 1 - sin^2 cancels). theta_h and cos^2(theta_d) from half-angle identities
+// and the polynomial asin/acos; Fresnel exact (weft_f_dielectric), as in the
+// reference. Skipped (zero) as the reference skips a sample.
+fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
+    let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
+    let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
+    let ni = q.wi.z * ca - q.wi.x * sa;
+    let nr = q.wr.z * ca - q.wr.x * sa;
+    let ci2 = q.wi.y * q.wi.y + ni * ni;
+    let cr2 = q.wr.y * q.wr.y + nr * nr;
+    let ok = min(ci2, cr2) >= MC_MIN_PROJ2 && q.ok != 0.0;
+    let inv_ci = inverseSqrt(max(ci2, MC_MIN_PROJ2));
+    let inv_cr = inverseSqrt(max(cr2, MC_MIN_PROJ2));
+    let ci = ci2 * inv_ci;
+    let cr = cr2 * inv_cr;
+    let cos_phi_d = clamp((q.wi.y * q.wr.y + ni * nr) * inv_ci * inv_cr, -1.0, 1.0);
+    let cos_half_phi = sqrt(0.5 + 0.5 * cos_phi_d);
+    let phi_d = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(-phi_d * phi_d * MC_U_INV_TWO_SIGMA2);
+    let m = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
+    let p = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    let x = 0.5 * (mc_asin_fast(si) + mc_asin_fast(sr));
+    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
+    let f_r = weft_f_dielectric(sqrt(cd2) * cos_half_phi, q.eta);
+    let f_t = (1.0 - weft_f_dielectric(ci, q.eta)) * (1.0 - weft_f_dielectric(cr, q.eta));
+    let base = select(0.0, m * p * ci / cd2, ok);
+    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / max(ci + cr, 2e-4), select(0.0, p, ok));
+}
+
+// The rule on one range, given its three nodes and their weights r (the
+// Gauss-Legendre weight times the range's width times any density):
+// (sum r S rgb, sum r P).
+fn mc_fast_gl3(q: McFastPre, th: McThread, n0: McFastNode, n1: McFastNode, n2: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe = vec4<f32>(n0.x + MC_GL3_E0 * (n1.x - n0.x), n0.x + MC_GL3_E1 * (n1.x - n0.x),
+                       n2.x - MC_GL3_E1 * (n2.x - n1.x), n2.x - MC_GL3_E0 * (n2.x - n1.x));
+    let gs = mc_cell_means(xe, q.inv_gamma_s);
+    let gv = mc_cell_means(xe, q.inv_gamma_v);
+    let s = r * vec3<f32>(n0.s, n1.s, n2.s);
+    let v = r * vec3<f32>(n0.v, n1.v, n2.v);
+    let surface = dot(gs, s);
+    let volume = (1.0 - th.kd) * dot(gv, v) + th.kd * (v.x + v.y + v.z);
+    return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
+}
+
+// Offset list piece: the mean over the offsets uniform in [a0, a1] (either
+// order, radians), clipped to the support (lo, hi) first (the clipped-off
+// part contributes 0). A flat piece (|a1 - a0| < MC_FAST_MIN_SPAN) puts all
+// three nodes on its one offset with weights summing to 1, and its cells have
+// zero width: the point lobe, by the same code.
+const MC_FAST_MIN_SPAN: f32 = 1e-4;
+fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span = abs(a1 - a0);
+    let flat = span < MC_FAST_MIN_SPAN;
+    let lo = clamp(lo_s, min(a0, a1), max(a0, a1));
+    let hi = clamp(hi_s, lo, max(a0, a1));
+    let w = hi - lo;
+    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
+    let ca = cos(al);
+    let sa = sin(al);
+    let n0 = mc_fast_node(q, ca.x, sa.x);
+    let n1 = mc_fast_node(q, ca.y, sa.y);
+    let n2 = mc_fast_node(q, ca.z, sa.z);
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * select(w / max(span, MC_FAST_MIN_SPAN), 1.0, flat);
+    return mc_fast_gl3(q, th, n0, n1, n2, r);
+}
+
+// Fast, offset list: the same piecewise-linear tangent curve as the
+// reference; each segment is one piece, or two halves when it spans more
+// than MC_FAST_SPLIT_DEG, each by mc_fast_segment; segments weighted equally.
+// One loop over the pieces, no branches (a CPU rasteriser runs both sides
+// of a branch).
+const MC_FAST_SPLIT_DEG: f32 = 60.0;
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k: i32) -> i32 {
+    let span = abs(mc_offset_at(offsets_a, offsets_b, k + 1) - mc_offset_at(offsets_a, offsets_b, k));
+    return select(1, 2, span > MC_FAST_SPLIT_DEG);
+}
 fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
     let n = clamp(count, 1, MC_MAX_OFFSETS);
-    let psi = mc_psi_fast(fr.v, wi, wr);
+    let q = mc_fast_pre(fr, wi, wr, th);
+    let lo_s = atan(q.s_lo);
+    let hi_s = atan(q.s_hi);
+    // A single control point: one flat piece on it.
+    let segments = max(n - 1, 1);
+    // Pieces over the n - 1 segments (straight-line: a loop costs more).
+    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
+    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
+    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
+    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
+    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
+    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
+    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
     var acc = vec4<f32>(0.0);
-    for (var k = 0; k < n; k++) {
-        let a = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        acc += mc_lobe_fast(fr, psi, wi, wr, cos(a), sin(a), th);
+    var k = 0;
+    var h = 0;
+    for (var i = 0; i < pieces; i++) {
+        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
+        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
+        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
+        let fm = f32(m);
+        acc += mc_fast_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
+        h += 1;
+        k = select(k, k + 1, h >= m);
+        h = select(h, 0, h >= m);
     }
-    return acc / f32(n);
+    return acc / f32(segments);
+}
+
+// Curve, one half of the profile (t from ta to ta + 1/2, slope linear from
+// sa to sb): the sub-interval of t whose slope lies in the support
+// (s_lo, s_hi), as (t0, t1); empty as (2, -1).
+fn mc_fast_half_clip(q: McFastPre, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
+    let ds = sb - sa;
+    let flat = abs(ds) < MC_FAST_MIN_DSLOPE;
+    let inv = 1.0 / select(ds, 1.0, flat);
+    let u0 = (q.s_lo - sa) * inv;
+    let u1 = (q.s_hi - sa) * inv;
+    let uf = select(vec2<f32>(1.0, 0.0), vec2<f32>(0.0, 1.0), sa > q.s_lo && sa < q.s_hi);
+    let u = select(vec2<f32>(max(min(u0, u1), 0.0), min(max(u0, u1), 1.0)), uf, flat);
+    return select(vec2<f32>(2.0, -1.0), ta + 0.5 * u, u.x < u.y);
+}
+
+// Slope of the profile at t (linear on each half through s0, s1, s2).
+fn mc_fast_slope(s0: f32, s1: f32, s2: f32, t: f32) -> f32 {
+    return select(s1 + (s2 - s1) * (2.0 * t - 1.0), s0 + (s1 - s0) * (2.0 * t), t < 0.5);
+}
+
+// int sqrt(1 + s^2) ds = (s sqrt(1 + s^2) + asinh(s)) / 2.
+fn mc_arc_primitive(s: f32) -> f32 {
+    let h = sqrt(1.0 + s * s);
+    return 0.5 * (s * h + sign(s) * log(abs(s) + h));
+}
+
+// Arc length of a half (t over 1/2) whose slope runs linearly from sa to sb.
+fn mc_fast_half_length(sa: f32, sb: f32) -> f32 {
+    let ds = sb - sa;
+    let sm = 0.5 * (sa + sb);
+    return select(0.5 * (mc_arc_primitive(sb) - mc_arc_primitive(sa)) / ds, 0.5 * sqrt(1.0 + sm * sm), abs(ds) < MC_FAST_MIN_DSLOPE);
+}
+
+// Fast, tangent curve. The profile's slope at t = 0, 1/2, 1 (second-order
+// one-sided differences of the baked samples at the ends, the central
+// difference at 1/2), taken as linear in t on each half (exact for a
+// quadratic profile such as the default). The rule runs in t over the hull
+// of the two halves' support intervals, each node weighted by its arc length
+// sqrt(1 + s^2), offset alpha = atan(s) (cos = 1 / sqrt(1 + s^2)); the sum is
+// divided by the whole profile's arc length. One range for any profile: a
+// profile whose slope is not monotone (a gap inside the hull) is integrated
+// less accurately, never by more nodes.
+const MC_FAST_MIN_DSLOPE: f32 = 1e-4;
+fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let q = mc_fast_pre(fr, wi, wr, th);
+    let n = f32(MC_CURVE_SEGMENTS);
+    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
+    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
+    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
+    let h0 = mc_fast_half_clip(q, s0, s1, 0.0);
+    let h1 = mc_fast_half_clip(q, s1, s2, 0.5);
+    let t0 = min(h0.x, h1.x);
+    let t1 = max(max(h0.y, h1.y), t0);
+    let w = t1 - t0;
+    let t = vec3<f32>(t0 + MC_GL3_T * w, t0 + 0.5 * w, t1 - MC_GL3_T * w);
+    let sl = vec3<f32>(mc_fast_slope(s0, s1, s2, t.x), mc_fast_slope(s0, s1, s2, t.y), mc_fast_slope(s0, s1, s2, t.z));
+    let inv_len = inverseSqrt(1.0 + sl * sl);
+    let n0 = mc_fast_node(q, inv_len.x, sl.x * inv_len.x);
+    let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
+    let n2 = mc_fast_node(q, inv_len.z, sl.z * inv_len.z);
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w / inv_len;
+    let total = mc_fast_half_length(s0, s1) + mc_fast_half_length(s1, s2);
+    return mc_fast_gl3(q, th, n0, n1, n2, r) / max(total, 1e-6);
 }
 
 // ---------------------------------------------------------------- cloth

@@ -10,8 +10,14 @@
 // the formulas); this file reads the uniforms and sums over the main light:
 //
 // Tiers (WEFT_TIER):
-//   fast      = control points only (offset list) or 4 curve chords;
-//               transcendental-free angle forms; Schlick F_r, F = (1 - F_r)^2.
+//   fast      = the same offset distribution with 3 nodes per range of
+//               offsets: each range clipped to the offsets where M P > 0, a
+//               3-point Gauss-Legendre rule for the slowly varying factors,
+//               the theta_h Gaussians averaged exactly (erf) over each
+//               node's cell; offset-list segments are ranges (halved beyond
+//               60 deg), a curve is one range in t (slope linear through
+//               t = 0, 1/2, 1), arc-length weighted; transcendental-free
+//               angle forms; exact dielectric Fresnel as in the reference.
 //   reference = the whole tangent curve integrated (32 arc-length-weighted
 //               segments, or the offset list interpolated in <= 1 deg
 //               sub-steps); exact dielectric Fresnel reflection and
