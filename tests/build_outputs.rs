@@ -117,10 +117,8 @@ fn every_shipped_scene_is_in_the_project_build() {
     for s in &scenes()[0] {
         assert!(!s.shaders.is_empty(), "scene {} has no shader", s.name);
         for entry in &s.shaders {
-            for files in entry.shader.files.values() {
-                for f in files {
-                    file(&format!("scenes/{}/{}", s.name, f.path));
-                }
+            for f in entry.shader.all_files() {
+                file(&format!("scenes/{}/{}", s.name, f.path));
             }
         }
     }

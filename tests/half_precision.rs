@@ -12,8 +12,16 @@ fn standard() -> (PathBuf, MaterialMetadata) {
     (dir, serde_json::from_str(&text).expect("metadata"))
 }
 
-/// SPIR-V `OpCapability Float16` (capability 9) among the module's capabilities.
+/// SPIR-V capability numbers (SPIR-V specification, "Capability").
+const FLOAT16: u32 = 9;
+const STORAGE_INPUT_OUTPUT16: u32 = 4436;
+
 fn declares_float16(spirv: &[u8]) -> bool {
+    declares_capability(spirv, FLOAT16)
+}
+
+/// `OpCapability <capability>` among the module's instructions.
+fn declares_capability(spirv: &[u8], capability: u32) -> bool {
     let words: Vec<u32> = spirv
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
@@ -21,7 +29,7 @@ fn declares_float16(spirv: &[u8]) -> bool {
     let mut at = 5;
     while at < words.len() {
         let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
-        if op == 17 && words.get(at + 1) == Some(&9) {
+        if op == 17 && words.get(at + 1) == Some(&capability) {
             return true;
         }
         at += count.max(1);
@@ -117,6 +125,14 @@ fn half_precision_variants_add_f16_files_to_portable_f32_ones() {
             assert!(
                 declares_float16(&spirv),
                 "{}: f16 SPIR-V without Float16",
+                v.id
+            );
+            // f16 inputs and outputs need storageInputOutput16, which wgpu's
+            // shader-f16 does not require and many desktop GPUs lack: the
+            // interface stays f32.
+            assert!(
+                !declares_capability(&spirv, STORAGE_INPUT_OUTPUT16),
+                "{}: f16 SPIR-V declares StorageInputOutput16",
                 v.id
             );
         }

@@ -49,6 +49,27 @@ fn weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v: weft_half, n_dot_l: weft_ha
     return weft_half(0.5) * n_dot_l / max(denominator, weft_half(1e-4));
 }
 
+// The height-correlated Smith visibility as `fast` computes it in f32
+// (lib/brdf.wgsl, weft_v_smith_ggx_correlated_newton: Hammon's chord
+// g = mix(x, 1, alpha) refined by one Newton step, P = g x + alpha^2 (1 - x)),
+// times n.l, in a form whose intermediates stay in f16's range: dividing
+// V = 0.5 g_v g_l / (n.l g_l P_v + n.v g_v P_l) through by g_v g_l gives
+// V n.l = 0.5 n.l / (n.l q_v + n.v q_l) with q = P / g in [x, x + alpha]
+// (g >= alpha >= 7.9e-3, a normal f16 number), so no product of three small
+// factors (alpha^3 would be an f16 subnormal) is ever formed. The
+// denominator is ~alpha (n.l + n.v) near zero, as Hammon's: floored at 1e-4
+// for the same reason.
+fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v: weft_half, n_dot_l: weft_half, alpha: weft_half) -> weft_half {
+    let nv = max(n_dot_v, weft_half(WEFT_MIN_N_DOT_HALF));
+    let alpha2 = alpha * alpha;
+    let g_v = mix(nv, weft_half(1.0), alpha);
+    let g_l = mix(n_dot_l, weft_half(1.0), alpha);
+    let q_v = nv + alpha2 * (weft_half(1.0) - nv) / g_v;
+    let q_l = n_dot_l + alpha2 * (weft_half(1.0) - n_dot_l) / g_l;
+    let denominator = n_dot_l * q_v + nv * q_l;
+    return weft_half(0.5) * n_dot_l / max(denominator, weft_half(1e-4));
+}
+
 // Schlick 1994: F = F0 + (1 - F0)(1 - v.h)^5.
 fn weft_half_f_schlick(f0: vec3<weft_half>, v_dot_h: weft_half) -> vec3<weft_half> {
     return f0 + (vec3<weft_half>(1.0) - f0) * weft_half_pow5(weft_half(1.0) - v_dot_h);

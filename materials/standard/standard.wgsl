@@ -180,9 +180,10 @@ fn standard_low(
     let roughness = weft_half(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha = roughness * roughness;
     let f0 = vec3<weft_half>(f0_in);
-    // The split-sum table (f32 fetch, a dimensionless pair): Karis's analytic
-    // fit in its place was measured at worst FLIP 0.25 against 0.063 (README).
-    let lut = weft_env_brdf_lut(weft_clamp_cos(dot(n, v)), roughness_in);
+    // The split-sum table at its nearest texel, as fast reads it (f32 fetch,
+    // a dimensionless pair): Karis's analytic fit in its place was measured
+    // at worst FLIP 0.25 (README).
+    let lut = weft_env_brdf_lut_nearest(weft_clamp_cos(dot(n, v)), roughness_in);
     let env_brdf = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, lut));
     let kd = max(vec3<weft_half>(1.0) - env_brdf, vec3<weft_half>(0.0));
     // Direct diffuse BRDF times n.l: kd / pi n.l (half), times the albedo.
@@ -190,7 +191,7 @@ fn standard_low(
     var indirect_specular = vec3<f32>(0.0);
     if specular_strength > 0.0 {
         let d = weft_half_d_ggx(one_minus_n_dot_h2, n_dot_h, alpha);
-        let v_n_dot_l = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v, n_dot_l, alpha);
+        let v_n_dot_l = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v, n_dot_l, alpha);
         let f = weft_half_f_schlick(f0, v_dot_h);
         // D (V n.l) can exceed the f16 range at a sharp grazing peak:
         // clamped before F (the final radiance is clamped there anyway).

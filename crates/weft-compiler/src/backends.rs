@@ -27,6 +27,10 @@ pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String>
         flags: spv::WriterFlags::ADJUST_COORDINATE_SPACE
             | spv::WriterFlags::LABEL_VARYINGS
             | spv::WriterFlags::CLAMP_FRAG_DEPTH,
+        // No `StorageInputOutput16`: Vulkan's storageInputOutput16 is not
+        // part of wgpu's shader-f16 and many desktop GPUs lack it. weft's
+        // stage interfaces are f32; naga converts any f16 one.
+        use_storage_input_output_16: false,
         ..spv::Options::default()
     };
     let words =

@@ -356,7 +356,7 @@ fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<CompiledMaterial> {
     }
     let mut files = Vec::new();
     for v in &meta.variants {
-        for f in v.shader.iter().flat_map(|s| s.files.values().flatten()) {
+        for f in v.shader.iter().flat_map(|s| s.all_files()) {
             let bytes = std::fs::read(dir.join(&f.path)).ok()?;
             if sha256_hex(&bytes) != f.sha256 {
                 return None;

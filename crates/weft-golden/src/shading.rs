@@ -13,7 +13,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use weft_meta::{MaterialMetadata, Measurements, TierMeasurement};
+use weft_meta::{F32FilesCost, MaterialMetadata, Measurements, TierMeasurement};
 use weft_render::{
     Background, EnvironmentMaps, FrameTimer, HdrImage, Luts, Material, PreparedMaterial,
     PreviewOptions, RenderOptions, Renderer, SceneKind, TimingOptions,
@@ -85,6 +85,9 @@ pub struct ShadingReport {
 struct Job {
     material: usize,
     tier: String,
+    /// A half-precision variant timed from its portable f32 files (its
+    /// `f16_files` job is the tier's own).
+    f32_files: bool,
     variant: String,
     spirv: (u32, u32),
     prepared: PreparedMaterial,
@@ -164,16 +167,39 @@ pub fn run(
             material.set_tier(tier).map_err(what)?;
             let prepared = renderer.prepare(&material, &render_options).map_err(what)?;
             let spirv = spirv_counts_for(&material)?;
+            let half = renderer.gpu().has_shader_f16()
+                && material
+                    .current_variant()
+                    .is_ok_and(|v| !v.shader.f16_files.is_empty());
+            let variant = prepared.variant_id().to_string();
             jobs.push(Job {
                 material: i,
                 tier: tier.clone(),
-                variant: prepared.variant_id().to_string(),
+                f32_files: false,
+                variant: variant.clone(),
                 spirv,
                 prepared,
                 planned: 0,
                 ms: Vec::new(),
                 image: None,
             });
+            if half {
+                let f32_options = RenderOptions {
+                    f32_fallback: true,
+                    ..render_options.clone()
+                };
+                jobs.push(Job {
+                    material: i,
+                    tier: tier.clone(),
+                    f32_files: true,
+                    variant,
+                    spirv,
+                    prepared: renderer.prepare(&material, &f32_options).map_err(what)?,
+                    planned: 0,
+                    ms: Vec::new(),
+                    image: None,
+                });
+            }
         }
     }
 
@@ -188,6 +214,7 @@ pub fn run(
         jobs.push(Job {
             material: measured.len(),
             tier: BASELINE_TIER.into(),
+            f32_files: false,
             variant: prepared.variant_id().to_string(),
             spirv: spirv_counts_for(&material)?,
             prepared,
@@ -255,7 +282,7 @@ pub fn run(
 
     let baseline_ms = jobs
         .iter()
-        .find(|j| name_of(j) == BASELINE_MATERIAL && j.tier == BASELINE_TIER)
+        .find(|j| name_of(j) == BASELINE_MATERIAL && j.tier == BASELINE_TIER && !j.f32_files)
         .map(|j| quantile(&j.ms, 0.5));
     let mut materials = Vec::new();
     for (i, (_, meta)) in measured.iter().enumerate() {
@@ -264,7 +291,7 @@ pub fn run(
         }
         let reference = jobs
             .iter()
-            .find(|j| j.material == i && j.tier == meta.tiers.reference)
+            .find(|j| j.material == i && j.tier == meta.tiers.reference && !j.f32_files)
             .and_then(|j| j.image.as_ref())
             .ok_or_else(|| format!("{}: reference tier was not rendered", meta.name))?;
         let grid = match &options.grid {
@@ -276,7 +303,17 @@ pub fn run(
             None => Vec::new(),
         };
         let mut tiers = Vec::new();
-        for job in jobs.iter().filter(|j| j.material == i) {
+        for job in jobs.iter().filter(|j| j.material == i && !j.f32_files) {
+            let f32_files = jobs
+                .iter()
+                .find(|j| j.material == i && j.tier == job.tier && j.f32_files)
+                .map(|j| {
+                    let median = quantile(&j.ms, 0.5);
+                    F32FilesCost {
+                        gpu_ms: round(median, 4),
+                        ratio_to_standard_fast: baseline_ms.map(|b| round(median / b, 3)),
+                    }
+                });
             let cell = grid.iter().find(|g| g.tier == job.tier);
             let kind = if job.tier == meta.tiers.reference {
                 "reference"
@@ -307,6 +344,7 @@ pub fn run(
                 flip_grid_mean: cell.map(|c| round(c.mean, 5)),
                 flip_worst_cell: cell.map(|c| c.worst_cell.clone()),
                 grid_cells: cell.map(|c| c.cells),
+                f32_files,
             });
         }
         materials.push(Measurements {
@@ -527,7 +565,7 @@ pub fn describe(report: &ShadingReport) -> String {
         }
     };
     format!(
-        "Adapter: {}. Timer: {timer}. Scene: {}x{} {}, {SETUP}. Time: median of {} frames per tier (fewer, at least {}, for a tier that would take over {} s; column `frames`), after 1 + up to {} warm-up frames, taken in {} rounds over all tiers so that changing machine load affects all alike; spread = (p90 − p10) / median. Cost ratio: against `{BASELINE_MATERIAL}` tier `{BASELINE_TIER}` in the same run. SPIR-V: instructions in the module (in the fragment entry point's functions). Error against the material's reference tier: FLIP mean and 99th percentile on the ACES tone-mapped sRGB8 image, relative RMSE sqrt(Σ(a−b)²/Σb²) on the linear HDR image.",
+        "Adapter: {}. Timer: {timer}. Scene: {}x{} {}, {SETUP}. Time: median of {} frames per tier (fewer, at least {}, for a tier that would take over {} s; column `frames`), after 1 + up to {} warm-up frames, taken in {} rounds over all tiers so that changing machine load affects all alike; spread = (p90 − p10) / median. Cost ratio: against `{BASELINE_MATERIAL}` tier `{BASELINE_TIER}` in the same run; a half-precision tier is drawn from its f16 files where the adapter has shader-f16, and its portable f32 files' ratio follows in brackets. SPIR-V: instructions in the module (in the fragment entry point's functions). Error against the material's reference tier: FLIP mean and 99th percentile on the ACES tone-mapped sRGB8 image, relative RMSE sqrt(Σ(a−b)²/Σb²) on the linear HDR image.",
         report.adapter,
         o.size,
         o.size,
@@ -558,8 +596,7 @@ pub fn markdown_table(materials: &[Measurements]) -> String {
             t.gpu_ms_min,
             t.gpu_ms_spread * 100.0,
             t.frames,
-            t.ratio_to_standard_fast
-                .map_or("—".to_string(), |r| format!("{r:.2}")),
+            cost_cell(t),
             t.spirv_instructions,
             t.spirv_fragment_instructions,
             t.flip_mean,
@@ -589,6 +626,19 @@ pub fn markdown_table(materials: &[Measurements]) -> String {
     md
 }
 
+/// The "× standard fast" cell: a half-precision tier's f32 files beside it.
+fn cost_cell(t: &TierMeasurement) -> String {
+    let ratio = |r: Option<f64>| r.map_or("—".to_string(), |r| format!("{r:.2}"));
+    match &t.f32_files {
+        Some(f) => format!(
+            "{} (f32 files: {})",
+            ratio(t.ratio_to_standard_fast),
+            ratio(f.ratio_to_standard_fast)
+        ),
+        None => ratio(t.ratio_to_standard_fast),
+    }
+}
+
 /// Rows of the compact tier tables: approximations (and references) or looks.
 fn compact_rows(md: &mut String, materials: &[Measurements], looks: bool, with_material: bool) {
     let opt = |v: Option<f64>| match v {
@@ -612,8 +662,7 @@ fn compact_rows(md: &mut String, materials: &[Measurements], looks: bool, with_m
                 t.tier,
                 t.kind.as_deref().unwrap_or("—"),
                 t.gpu_ms,
-                t.ratio_to_standard_fast
-                    .map_or("—".to_string(), |r| format!("{r:.2}")),
+                cost_cell(t),
                 opt(Some(t.flip_mean)),
                 opt(t.flip_worst),
                 t.flip_worst_cell.as_deref().unwrap_or("—"),
@@ -707,8 +756,7 @@ pub fn tier_table(m: &Measurements, current_inputs_hash: &str) -> String {
             t.tier,
             t.kind.as_deref().unwrap_or("—"),
             t.gpu_ms,
-            t.ratio_to_standard_fast
-                .map_or("—".to_string(), |r| format!("{r:.2}")),
+            cost_cell(t),
             t.spirv_instructions,
             t.flip_mean,
             t.flip_p99,

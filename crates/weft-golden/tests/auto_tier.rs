@@ -127,11 +127,29 @@ fn report_costs(material: &str) -> BTreeMap<String, f64> {
     let m: Measurements = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
     m.tiers
         .iter()
+        // Looks are never candidates: a different model is chosen by name.
+        .filter(|t| t.kind.as_deref() != Some("look"))
         .map(|t| {
             let c = t.ratio_to_standard_fast.unwrap();
             (t.tier.clone(), (c * 1e3).round() / 1e3)
         })
         .collect()
+}
+
+/// The tier a budget that admits every silk tier gets by the committed
+/// report: the cheapest, a tie going to the reference (the more accurate;
+/// silk's fast differs from it at the defaults). The figures come from a
+/// timed run, so which of silk's two close tiers is cheaper is the report's
+/// to say, not this test's.
+fn silk_cheapest_by_report() -> (String, BTreeMap<String, f64>) {
+    let costs = report_costs("silk");
+    let (fast, reference) = (costs["fast"], costs["reference"]);
+    let tier = if fast < reference {
+        "fast"
+    } else {
+        "reference"
+    };
+    (tier.to_string(), costs)
 }
 
 /// Everything a decision must satisfy, checked against the record alone:
@@ -144,9 +162,15 @@ fn check_decision(meta: &MaterialMetadata, r: &AutoTierRequest, d: &AutoTierDeci
     assert_eq!(rec.screen_size, r.screen_size);
     let mut tiers: Vec<&str> = rec.candidates.iter().map(|c| c.tier.as_str()).collect();
     tiers.sort();
-    let mut expected: Vec<&str> = meta.tiers.values.iter().map(String::as_str).collect();
+    let mut expected: Vec<&str> = meta
+        .tiers
+        .values
+        .iter()
+        .filter(|t| !meta.tiers.looks.contains(t))
+        .map(String::as_str)
+        .collect();
     expected.sort();
-    assert_eq!(tiers, expected, "one candidate per tier");
+    assert_eq!(tiers, expected, "one candidate per tier that is not a look");
     for c in &rec.candidates {
         assert_eq!((c.flip_mean * 1e4).round() / 1e4, c.flip_mean, "{c:?}");
         assert_eq!((c.cost * 1e3).round() / 1e3, c.cost, "{c:?}");
@@ -195,12 +219,7 @@ fn a_huge_budget_picks_the_cheapest_tier() {
     let r = request(silk, "sphere", 1.0, 64);
     let d = choose(report_chooser(), &r);
     check_decision(&silk.0, &r, &d);
-    let costs = report_costs("silk");
-    let cheapest = costs
-        .iter()
-        .min_by(|a, b| a.1.total_cmp(b.1))
-        .map(|(t, _)| t.clone())
-        .unwrap();
+    let (cheapest, costs) = silk_cheapest_by_report();
     assert_eq!(d.tier, cheapest);
     assert_eq!(d.record.candidates[0].tier, cheapest);
     for c in &d.record.candidates {
@@ -236,7 +255,10 @@ fn a_huge_budget_picks_the_cheapest_tier() {
         line.starts_with(&format!("scarf: auto tier -> {cheapest} (cost ")),
         "{line}"
     );
-    assert!(line.contains("; candidates: fast "), "{line}");
+    assert!(
+        line.contains(&format!("; candidates: {cheapest} ")),
+        "{line}"
+    );
 }
 
 #[test]
@@ -357,8 +379,11 @@ fn a_tier_costs_file_overrides_the_report_and_can_flip_the_choice() {
     let silk = silk();
     let dir = tempfile::tempdir().unwrap();
     let r = request(silk, "sphere", 1.0, 64);
-    // The report makes `fast` the cheaper tier.
-    assert_eq!(choose(report_chooser(), &r).tier, "fast");
+    // Without a costs file, the report decides.
+    assert_eq!(
+        choose(report_chooser(), &r).tier,
+        silk_cheapest_by_report().0
+    );
     let cases = [
         // Reference cheaper: chosen even though fast is within budget.
         ((2.0, 1.0), "reference"),
@@ -563,7 +588,8 @@ fov_degrees = 40.0
     let by_name = |n: &str| out.metadata.instances.iter().find(|i| i.name == n).unwrap();
     let loose = by_name("loose");
     let strict = by_name("strict");
-    assert_eq!(loose.tier, "fast");
+    let (cheapest, costs) = silk_cheapest_by_report();
+    assert_eq!(loose.tier, cheapest);
     assert_eq!(strict.tier, "reference");
     let choice = loose.tier_choice.as_ref().expect("recorded");
     assert_eq!(choice.error_budget, 1.0);
@@ -585,8 +611,11 @@ fov_degrees = 40.0
             .collect::<Vec<_>>()
     );
     let line = describe_choice(&loose.name, &loose.tier, choice);
+    let of_reference = costs[&cheapest] / costs["reference"];
     assert!(
-        line.starts_with("loose: auto tier -> fast (cost 0.92 of reference, FLIP "),
+        line.starts_with(&format!(
+            "loose: auto tier -> {cheapest} (cost {of_reference:.2} of reference, FLIP "
+        )),
         "{line}"
     );
 }

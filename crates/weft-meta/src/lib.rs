@@ -157,6 +157,23 @@ pub struct TierMeasurement {
     /// Cells of the error grid this tier was measured in.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub grid_cells: Option<u32>,
+    /// A half-precision variant drawn from its f16 files (the figures
+    /// above) is timed from its portable f32 files too, in the same run:
+    /// what an engine without `shader-f16` pays. Absent for other variants
+    /// and on adapters without `shader-f16`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub f32_files: Option<F32FilesCost>,
+}
+
+/// The cost of a half-precision variant's f32 files ([`TierMeasurement::f32_files`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct F32FilesCost {
+    /// Median GPU time of the frame's render pass, ms.
+    pub gpu_ms: f64,
+    /// `gpu_ms` over that of `standard`'s `fast` tier in the same run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ratio_to_standard_fast: Option<f64>,
 }
 
 /// User-facing text in English with an optional Chinese translation.

@@ -13,6 +13,11 @@ pub struct Gpu {
 }
 
 impl Gpu {
+    /// Whether the device draws half-precision files (`shader-f16`).
+    pub fn has_shader_f16(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SHADER_F16)
+    }
+
     /// Requests a Vulkan adapter and a device. Fails (never skips) with an
     /// [`Error::NoAdapter`] that says to install `mesa-vulkan-drivers` when
     /// there is none.

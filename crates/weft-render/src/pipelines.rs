@@ -110,9 +110,7 @@ impl Renderer {
 /// Whether to draw the shader's half-precision files (`f16_files`): when it
 /// has them, the device has `shader-f16` and the f32 files were not asked for.
 fn draws_f16(gpu: &Gpu, input: &ShaderInput) -> bool {
-    !input.shader.f16_files.is_empty()
-        && !input.f32_fallback
-        && gpu.device.features().contains(wgpu::Features::SHADER_F16)
+    !input.shader.f16_files.is_empty() && !input.f32_fallback && gpu.has_shader_f16()
 }
 
 /// The shader source of `input`: the WGSL text, or the SPIR-V module read
