@@ -221,6 +221,27 @@ fn glslang() -> PathBuf {
 struct Compiled {
     blocks: BTreeMap<String, i64>,
     samplers: BTreeMap<String, i64>,
+    /// The file's text.
+    source: String,
+}
+
+/// Whether `source` uses the sampler uniform `name` only where no sampler
+/// state applies: its declaration, `texelFetch` and `textureSize` (from
+/// WGSL's textureLoad and textureDimensions).
+fn fetched_only(source: &str, name: &str) -> bool {
+    let is_ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    source.match_indices(name).all(|(at, _)| {
+        let after = source[at + name.len()..].chars().next();
+        let before = source[..at].chars().next_back();
+        if after.is_some_and(is_ident) || before.is_some_and(is_ident) {
+            return true; // part of another identifier
+        }
+        let head = source[..at].trim_end();
+        head.ends_with("texelFetch(")
+            || head.ends_with("textureSize(")
+            || head.ends_with("sampler2D")
+            || head.ends_with("samplerCube")
+    })
 }
 
 /// Compiles `path` as a `stage` shader with OpenGL semantics (`-G`, as a GL
@@ -242,7 +263,10 @@ fn compile(glslang: &Path, path: &Path, stage: Stage, out_dir: &Path) -> Result<
     if !out.status.success() {
         return Err(format!("glslang rejects {}:\n{text}", path.display()));
     }
-    let mut compiled = Compiled::default();
+    let mut compiled = Compiled {
+        source: std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?,
+        ..Compiled::default()
+    };
     let mut section = "";
     for line in text.lines() {
         if line.ends_with("reflection:") {
@@ -369,7 +393,12 @@ fn check_file(
             Some(r) => failures.extend(refers(&format!("sampler `{}` sampler", s.name), r, &|k| {
                 matches!(k, BindingKind::Sampler | BindingKind::ComparisonSampler)
             })),
-            None => failures.push(format!("{label}: sampler `{}` names no sampler", s.name)),
+            // A texture read only by texel fetches needs no sampler state.
+            None if fetched_only(&compiled.source, &s.name) => {}
+            None => failures.push(format!(
+                "{label}: sampler `{}` names no sampler but is sampled",
+                s.name
+            )),
         }
     }
     failures

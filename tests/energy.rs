@@ -557,14 +557,23 @@ fn standard_white_furnace() {
                 .unwrap();
             let tiles = probe.evaluate(&mut renderer, &prepared).unwrap();
             for (i, px) in tiles.iter().enumerate() {
-                // Grey in, grey out: every pixel and channel must agree.
-                let e = px[0][0];
+                // Grey in, grey out: every pixel's channels agree. Pixels of
+                // one tile agree within rounding, except where the fast
+                // tier's nearest-texel table steps from one texel to the
+                // next inside the tile (n.v varies a little across it): the
+                // table's value is the tile's mean then.
                 for p in px {
                     for c in &p[..3] {
-                        assert!((c - e).abs() < 1e-5, "{tier}: channels differ: {p:?}");
+                        assert!((c - p[0]).abs() < 1e-5, "{tier}: channels differ: {p:?}");
                     }
                 }
-                out[i][j] = e;
+                let mean = px.iter().map(|p| p[0]).sum::<f32>() / px.len() as f32;
+                let spread = px.iter().map(|p| (p[0] - mean).abs()).fold(0.0, f32::max);
+                assert!(
+                    spread < if tier == "reference" { 1e-5 } else { 5e-3 },
+                    "{tier}: pixels of one tile differ by {spread}"
+                );
+                out[i][j] = mean;
             }
         }
         out

@@ -395,7 +395,9 @@ pub struct GlslSampler {
     /// The WGSL texture binding it samples.
     pub texture: BindingRef,
     /// The WGSL sampler binding whose state (filter, address modes) the
-    /// texture unit needs.
+    /// texture unit needs. Absent when the file reads the texture only with
+    /// `texelFetch`/`textureSize` (WGSL `textureLoad`), where no sampler
+    /// state applies: bind the texture to the unit, with any sampler.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sampler: Option<BindingRef>,
     /// The texture unit written in the file.
