@@ -19,13 +19,36 @@ use weft_front::{Diagnostics, SourceDb};
 pub const SHADER_F16: &str = "shader-f16";
 
 /// True when the module keeps any f16 value (after specialisation and
-/// compaction only live code's types remain).
+/// compaction only live code's types remain). Besides the type arena, the
+/// functions' expressions are scanned: an f16 scalar or vector made by a
+/// conversion (`weft_half(x)`, `vec3<weft_half>(v)` of an f32 value) or an
+/// f16 literal needs no type handle, so code whose only f16 values are such
+/// has no f16 type in the arena.
 pub fn uses_f16(module: &Module) -> bool {
-    module.types.iter().any(|(_, ty)| match ty.inner {
+    let f16_type = module.types.iter().any(|(_, ty)| match ty.inner {
         TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } => s == Scalar::F16,
         TypeInner::Matrix { scalar, .. } => scalar == Scalar::F16,
         _ => false,
-    })
+    });
+    f16_type
+        || module
+            .functions
+            .iter()
+            .map(|(_, f)| f)
+            .chain(module.entry_points.iter().map(|e| &e.function))
+            .any(|f| f.expressions.iter().any(|(_, e)| is_f16_expression(e)))
+}
+
+fn is_f16_expression(e: &naga::Expression) -> bool {
+    match *e {
+        naga::Expression::As {
+            kind: naga::ScalarKind::Float,
+            convert: Some(2),
+            ..
+        } => true,
+        naga::Expression::Literal(naga::Literal::F16(_)) => true,
+        _ => false,
+    }
 }
 
 /// True when the material's own sources (not the prelude) name `weft_half`
@@ -83,7 +106,26 @@ pub fn fallback_module(
 
 #[cfg(test)]
 mod tests {
-    use super::has_identifier;
+    use super::{has_identifier, uses_f16};
+
+    fn parse(src: &str) -> naga::Module {
+        naga::front::wgsl::parse_str(src).expect("test WGSL parses")
+    }
+
+    #[test]
+    fn f16_values_made_by_conversions_alone_count() {
+        // No f16 type in the arena: the only f16 values are conversions.
+        let half = parse(
+            "enable f16;\n@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = f16(x) * f16(x);\n    return vec4<f32>(f32(h));\n}\n",
+        );
+        assert!(uses_f16(&half));
+        let single = parse(
+            "@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = x * x;\n    return vec4<f32>(h);\n}\n",
+        );
+        assert!(!uses_f16(&single));
+    }
 
     #[test]
     fn identifiers_are_whole_words() {
