@@ -30,9 +30,9 @@
 //               added unlit as the seed does; SH ambient diffuse; no
 //               indirect specular (seed).
 //   low       = an approximation of the reference in half precision: the
-//               fast tier's model with the Charlie D, the visibility's
-//               1 / (4 n.v) factor, the sheen colour and the albedo scaling
-//               in weft_half (f16 with shader-f16, the f32 fallback
+//               fast tier's model with the Charlie D (its power
+//               sin^(1/r) in f32), G2 / (4 n.v), the sheen colour and the
+//               albedo scaling in weft_half (f16 with shader-f16, the f32 fallback
 //               otherwise); the Lambdas in f32 (they reach ~8e8) with one
 //               exp each instead of two (weft_sheen_lambda_one_exp: the
 //               same value), and the albedo table read at its nearest texel
