@@ -15,15 +15,8 @@ pub const HLSL_COMPARISON_SAMPLER_HEAP_SPACE: u8 = 9;
 pub const HLSL_SAMPLER_INDEX_REGISTER: u32 = 64;
 
 pub fn emit_wgsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
-    let text = wgsl::write_string(module, info, wgsl::WriterFlags::empty())
-        .map_err(|e| format!("WGSL backend: {e}"))?;
-    // naga's writer enables f16 only for an f16 type in the type arena; code
-    // whose f16 values all come from conversions or literals has none there
-    // (crate::half::uses_f16), and its WGSL would not parse without it.
-    if crate::half::uses_f16(module) && !text.contains("enable f16;") {
-        return Ok(format!("enable f16;\n\n{text}"));
-    }
-    Ok(text)
+    wgsl::write_string(module, info, wgsl::WriterFlags::empty())
+        .map_err(|e| format!("WGSL backend: {e}"))
 }
 
 /// Every language but WGSL needs the overrides resolved (naga has no SPIR-V

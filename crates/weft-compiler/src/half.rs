@@ -39,6 +39,30 @@ pub fn uses_f16(module: &Module) -> bool {
             .any(|f| f.expressions.iter().any(|(_, e)| is_f16_expression(e)))
 }
 
+/// Adds the f16 scalar type to the arena of a module that computes in f16
+/// but has none there (its f16 values all come from conversions or
+/// literals: `uses_f16`). naga's writers decide from the arena alone whether
+/// a module needs `enable f16;` (WGSL) and the `SPV_KHR_16bit_storage`
+/// extension that declares the 16-bit capabilities (SPIR-V); without the
+/// type, such a module's WGSL does not parse and its SPIR-V fails
+/// `spirv-val --target-env vulkan1.0`. Call after compaction (which would
+/// drop the unused type again), before validation.
+pub fn declare_f16(module: &mut Module) {
+    let in_arena = module
+        .types
+        .iter()
+        .any(|(_, ty)| matches!(ty.inner, TypeInner::Scalar(Scalar::F16)));
+    if !in_arena && uses_f16(module) {
+        module.types.insert(
+            naga::Type {
+                name: None,
+                inner: TypeInner::Scalar(Scalar::F16),
+            },
+            naga::Span::UNDEFINED,
+        );
+    }
+}
+
 fn is_f16_expression(e: &naga::Expression) -> bool {
     match *e {
         naga::Expression::As {
@@ -125,6 +149,25 @@ mod tests {
              let h = x * x;\n    return vec4<f32>(h);\n}\n",
         );
         assert!(!uses_f16(&single));
+    }
+
+    #[test]
+    fn declared_f16_reaches_the_writers() {
+        let mut half = parse(
+            "enable f16;\n@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = f16(x) * f16(x);\n    return vec4<f32>(f32(h));\n}\n",
+        );
+        super::declare_f16(&mut half);
+        let info = naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::all(),
+        )
+        .validate(&half)
+        .expect("valid");
+        let text =
+            naga::back::wgsl::write_string(&half, &info, naga::back::wgsl::WriterFlags::empty())
+                .expect("WGSL");
+        assert!(text.starts_with("enable f16;"), "{text}");
     }
 
     #[test]
