@@ -87,3 +87,21 @@ fn weft_half_spec_ggx_aniso(v: vec3<weft_half>, l: vec3<weft_half>, h: vec3<weft
     let v_n_dot_l = weft_half(0.5) * nl / max(lv + ll, weft_half(1e-4));
     return select(weft_half(0.0), weft_half_min_max(d * v_n_dot_l), h.z > weft_half(0.0));
 }
+
+// ---------------------------------------------------------------- Fresnel
+// Exact unpolarised Fresnel reflectance of a dielectric (lib/brdf.wgsl's
+// weft_f_dielectric) in half precision, for eta in [1, 4] (the caller
+// clamps it): g^2 = eta^2 - 1 + c^2 <= 16, c floored at 1e-3, a and b
+// bounded by 1 in magnitude, the denominators at least 1 for eta >= 1
+// (floored at 1e-3 for safety). In [0, 1].
+fn weft_half_f_dielectric(cos_i: weft_half, eta: weft_half) -> weft_half {
+    let c = clamp(abs(cos_i), weft_half(WEFT_MIN_N_DOT_HALF), weft_half(1.0));
+    let g2 = eta * eta - weft_half(1.0) + c * c;
+    let g = sqrt(max(g2, weft_half(0.0)));
+    let gmc = g - c;
+    let gpc = max(g + c, weft_half(1e-3));
+    let a = gmc / gpc;
+    let b = (c * gpc - weft_half(1.0)) / max(c * gmc + weft_half(1.0), weft_half(1e-3));
+    let f = saturate(weft_half(0.5) * a * a * (weft_half(1.0) + b * b));
+    return select(f, weft_half(1.0), g2 < weft_half(0.0));
+}
