@@ -215,14 +215,18 @@ weft_half weft_half_d_ggx(
     return _e10;
 }
 
-weft_half weft_half_v_smith_ggx_correlated_fast_nl(
+weft_half weft_half_v_smith_ggx_correlated_newton_nl(
     weft_half n_dot_v_1,
     weft_half n_dot_l,
     weft_half alpha_1
 ) {
     float nv = metal::max(n_dot_v_1, 0.001);
-    float denominator = metal::mix((2.0 * n_dot_l) * nv, n_dot_l + nv, alpha_1);
-    return (0.5 * n_dot_l) / metal::max(denominator, 0.0001);
+    weft_half a2_ = alpha_1 * alpha_1;
+    float gv = (nv * (1.0 - alpha_1)) + alpha_1;
+    float gl = (n_dot_l * (1.0 - alpha_1)) + alpha_1;
+    float pv = (gv * nv) + (a2_ * (1.0 - nv));
+    weft_half pl = (gl * n_dot_l) + (a2_ * (1.0 - n_dot_l));
+    return (((0.5 * gv) * gl) * n_dot_l) / metal::max(((n_dot_l * gl) * pv) + ((nv * gv) * pl), 0.0001);
 }
 
 metal::float3 weft_half_f_schlick(
@@ -269,7 +273,7 @@ metal::float3 standard_low(
     direct_n_dot_l = static_cast<metal::float3>(kd * (n_dot_l_1 * 0.31830987)) * diffuse_albedo;
     if (specular_strength > 0.0) {
         weft_half _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_2);
-        weft_half _e52 = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_2, n_dot_l_1, alpha_2);
+        weft_half _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_2);
         metal::float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
         weft_half _e55 = weft_half_min_max(_e51 * _e52);
         metal::float3 _e56 = direct_n_dot_l;

@@ -198,11 +198,15 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha)
     return _e10;
 }
 
-float weft_half_v_smith_ggx_correlated_fast_nl(float n_dot_v_1, float n_dot_l, float alpha_1)
+float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1)
 {
     float nv = max(n_dot_v_1, 0.001);
-    float denominator = lerp(((2.0 * n_dot_l) * nv), (n_dot_l + nv), alpha_1);
-    return ((0.5 * n_dot_l) / max(denominator, 0.0001));
+    float a2_ = (alpha_1 * alpha_1);
+    float gv = ((nv * (1.0 - alpha_1)) + alpha_1);
+    float gl = ((n_dot_l * (1.0 - alpha_1)) + alpha_1);
+    float pv = ((gv * nv) + (a2_ * (1.0 - nv)));
+    float pl = ((gl * n_dot_l) + (a2_ * (1.0 - n_dot_l)));
+    return ((((0.5 * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001));
 }
 
 float3 weft_half_f_schlick(float3 f0_1, float v_dot_h)
@@ -234,7 +238,7 @@ float3 standard_low(float3 n_2, float3 v_1, float3 l, float3 h, float3 f0_in, fl
     direct_n_dot_l = (float3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
         const float _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_2);
-        const float _e52 = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_2, n_dot_l_1, alpha_2);
+        const float _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_2);
         const float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
         const float _e55 = weft_half_min_max((_e51 * _e52));
         float3 _e56 = direct_n_dot_l;

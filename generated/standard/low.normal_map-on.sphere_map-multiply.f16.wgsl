@@ -218,10 +218,14 @@ fn weft_half_d_ggx(one_minus_n_dot_h2_: f16, n_dot_h: f16, alpha: f16) -> f16 {
     return _e10;
 }
 
-fn weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_1: f16, n_dot_l: f16, alpha_1: f16) -> f16 {
+fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f16, n_dot_l: f16, alpha_1: f16) -> f16 {
     let nv = max(n_dot_v_1, 0.0010004044h);
-    let denominator = mix(((2h * n_dot_l) * nv), (n_dot_l + nv), alpha_1);
-    return ((0.5h * n_dot_l) / max(denominator, 0.000100016594h));
+    let a2_ = (alpha_1 * alpha_1);
+    let gv = ((nv * (1h - alpha_1)) + alpha_1);
+    let gl = ((n_dot_l * (1h - alpha_1)) + alpha_1);
+    let pv = ((gv * nv) + (a2_ * (1h - nv)));
+    let pl = ((gl * n_dot_l) + (a2_ * (1h - n_dot_l)));
+    return ((((0.5h * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.000100016594h));
 }
 
 fn weft_half_f_schlick(f0_1: vec3<f16>, v_dot_h: f16) -> vec3<f16> {
@@ -251,7 +255,7 @@ fn standard_low(n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_i
     direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31835938h))) * diffuse_albedo);
     if (specular_strength > 0f) {
         let _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_2);
-        let _e52 = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_2, n_dot_l_1, alpha_2);
+        let _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_2);
         let _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
         let _e55 = weft_half_min_max((_e51 * _e52));
         let _e56 = direct_n_dot_l;

@@ -203,10 +203,14 @@ fn weft_half_d_ggx(one_minus_n_dot_h2_: f32, n_dot_h: f32, alpha: f32) -> f32 {
     return _e10;
 }
 
-fn weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_1: f32, n_dot_l: f32, alpha_1: f32) -> f32 {
+fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f32, n_dot_l: f32, alpha_1: f32) -> f32 {
     let nv = max(n_dot_v_1, 0.001f);
-    let denominator = mix(((2f * n_dot_l) * nv), (n_dot_l + nv), alpha_1);
-    return ((0.5f * n_dot_l) / max(denominator, 0.0001f));
+    let a2_ = (alpha_1 * alpha_1);
+    let gv = ((nv * (1f - alpha_1)) + alpha_1);
+    let gl = ((n_dot_l * (1f - alpha_1)) + alpha_1);
+    let pv = ((gv * nv) + (a2_ * (1f - nv)));
+    let pl = ((gl * n_dot_l) + (a2_ * (1f - n_dot_l)));
+    return ((((0.5f * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001f));
 }
 
 fn weft_half_f_schlick(f0_1: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -236,7 +240,7 @@ fn standard_low(n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_i
     direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31830987f))) * diffuse_albedo);
     if (specular_strength > 0f) {
         let _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_2);
-        let _e52 = weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v_2, n_dot_l_1, alpha_2);
+        let _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_2);
         let _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
         let _e55 = weft_half_min_max((_e51 * _e52));
         let _e56 = direct_n_dot_l;
