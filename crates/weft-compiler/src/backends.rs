@@ -27,6 +27,12 @@ pub fn emit_spirv(module: &Module, info: &ModuleInfo) -> Result<Vec<u8>, String>
         flags: spv::WriterFlags::ADJUST_COORDINATE_SPACE
             | spv::WriterFlags::LABEL_VARYINGS
             | spv::WriterFlags::CLAMP_FRAG_DEPTH,
+        // weft's f16 never crosses a stage interface (varyings and outputs
+        // are f32), and naga's default declares `StorageInputOutput16` for
+        // every f16 module: a Vulkan feature of its own
+        // (`storageInputOutput16`, absent on many devices that have
+        // `shaderFloat16`), which naga's SPIR-V reader (wgpu) also rejects.
+        use_storage_input_output_16: false,
         ..spv::Options::default()
     };
     let words =
