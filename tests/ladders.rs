@@ -17,7 +17,14 @@ use weft_render::{EnvironmentMaps, Gpu, Luts, PreviewOptions, Renderer, SceneKin
 /// FLIP mean, worst cell: the target for every approximation.
 const MAX_WORST_FLIP: f64 = 0.05;
 
-const HONEST_LADDERS: &[&str] = &["gauze", "microcylinder", "satin", "silk", "standard", "velvet"];
+const HONEST_LADDERS: &[&str] = &[
+    "gauze",
+    "microcylinder",
+    "satin",
+    "silk",
+    "standard",
+    "velvet",
+];
 
 fn generated() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated")
