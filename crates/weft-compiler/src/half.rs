@@ -64,15 +64,14 @@ pub fn declare_f16(module: &mut Module) {
 }
 
 fn is_f16_expression(e: &naga::Expression) -> bool {
-    match *e {
+    matches!(
+        *e,
         naga::Expression::As {
             kind: naga::ScalarKind::Float,
             convert: Some(2),
             ..
-        } => true,
-        naga::Expression::Literal(naga::Literal::F16(_)) => true,
-        _ => false,
-    }
+        } | naga::Expression::Literal(naga::Literal::F16(_))
+    )
 }
 
 /// True when the material's own sources (not the prelude) name `weft_half`
