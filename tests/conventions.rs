@@ -365,14 +365,13 @@ fn check_file(
                 )
             },
         ));
-        match &s.sampler {
-            Some(r) => failures.extend(refers(&format!("sampler `{}` sampler", s.name), r, &|k| {
+        // A texture read only by textureLoad (texelFetch in GLSL: the
+        // nearest-texel table reads of the fast and low tiers) is paired with
+        // no sampler, and needs no sampler state.
+        if let Some(r) = &s.sampler {
+            failures.extend(refers(&format!("sampler `{}` sampler", s.name), r, &|k| {
                 matches!(k, BindingKind::Sampler | BindingKind::ComparisonSampler)
-            })),
-            // A texture read only by textureLoad (texelFetch in GLSL: the
-            // nearest-texel table reads of the fast and low tiers) is paired
-            // with no sampler, and needs no sampler state.
-            None => {}
+            }));
         }
     }
     failures
