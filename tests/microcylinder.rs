@@ -779,7 +779,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
 "#;
 
 /// The compute module: the engine-interface constants the library uses, then
-/// lib/brdf.wgsl, lib/microcylinder.wgsl and the entry point.
+/// lib/brdf.wgsl, lib/half.wgsl (with `weft_half` = f32), lib/microcylinder.wgsl
+/// and the entry point.
 fn compose_shader() -> String {
     let root = materials_root();
     let read = |p: &str| {
@@ -810,9 +811,12 @@ fn compose_shader() -> String {
             "lib/microcylinder.wgsl uses `{forbidden}`"
         );
     }
+    // The low tier's code in the library computes in `weft_half`
+    // (lib/half.wgsl): composed here in f32, as a material's f32 fallback.
     format!(
-        "const WEFT_PI: f32 = 3.14159265358979;\nconst WEFT_INV_PI: f32 = 0.318309886183791;\n{}\n{}\n{}",
+        "const WEFT_PI: f32 = 3.14159265358979;\nconst WEFT_INV_PI: f32 = 0.318309886183791;\nalias weft_half = f32;\n{}\n{}\n{}\n{}",
         read("lib/brdf.wgsl"),
+        read("lib/half.wgsl"),
         lib,
         ENTRY
     )

@@ -110,10 +110,14 @@ static const uint TANGENT_OFFSETS_CURVE = 0u;
 static const uint TANGENT_OFFSETS_LIST = 1u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_LOW = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
 static const int MC_MAX_OFFSETS = int(8);
@@ -591,9 +595,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     McFrame weft = ConstructMcFrame(b_3, t_5, _e70);
     {
         {
-            float4 _e94[9] = material.thread1_curve;
-            const float4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
-            s1_ = _e95;
+            {
+                float4 _e94[9] = material.thread1_curve;
+                const float4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
+                s1_ = _e95;
+            }
         }
     }
     float4 _e96 = s1_;

@@ -94,10 +94,14 @@ const TANGENT_OFFSETS_CURVE: u32 = 0u;
 const TANGENT_OFFSETS_LIST: u32 = 1u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
+const TIER_LOW: u32 = 2u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 const MC_CURVE_SAMPLES: u32 = 33u;
 const MC_CURVE_SEGMENTS: u32 = 32u;
 const MC_MAX_OFFSETS: i32 = 8i;
@@ -479,9 +483,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let weft = McFrame(b_3, t_5, _e70);
     {
         {
-            let _e94 = material.thread1_curve;
-            let _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
-            s1_ = _e95;
+            {
+                let _e94 = material.thread1_curve;
+                let _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
+                s1_ = _e95;
+            }
         }
     }
     let _e96 = s1_;

@@ -104,10 +104,14 @@ constant uint TANGENT_OFFSETS_CURVE = 0u;
 constant uint TANGENT_OFFSETS_LIST = 1u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
+constant uint TIER_LOW = 2u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 constant uint MC_CURVE_SAMPLES = 33u;
 constant uint MC_CURVE_SEGMENTS = 32u;
 constant int MC_MAX_OFFSETS = 8;
@@ -631,11 +635,13 @@ fragment fs_mainOutput fs_main(
     McFrame weft = McFrame {b_4, t_3, _e70};
     {
         {
-            metal::float4 _e94 = material.thread1_offsets_a;
-            metal::float4 _e97 = material.thread1_offsets_b;
-            int _e100 = material.thread1_offset_count;
-            metal::float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
-            s1_ = _e101;
+            {
+                metal::float4 _e94 = material.thread1_offsets_a;
+                metal::float4 _e97 = material.thread1_offsets_b;
+                int _e100 = material.thread1_offset_count;
+                metal::float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
+                s1_ = _e101;
+            }
         }
     }
     metal::float4 _e102 = s1_;

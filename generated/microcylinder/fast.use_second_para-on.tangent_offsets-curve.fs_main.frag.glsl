@@ -86,10 +86,14 @@ const uint TANGENT_OFFSETS_CURVE = 0u;
 const uint TANGENT_OFFSETS_LIST = 1u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_LOW = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 const uint MC_CURVE_SAMPLES = 33u;
 const uint MC_CURVE_SEGMENTS = 32u;
 const int MC_MAX_OFFSETS = 8;
@@ -444,13 +448,15 @@ void main() {
     McFrame weft = McFrame(b_3, t_5, _e70);
     {
         {
-            vec4 _e94[9] = _group_1_binding_0_fs.thread1_curve;
-            vec4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
-            s1_ = _e95;
             {
-                vec4 _e98[9] = _group_1_binding_0_fs.thread2_curve;
-                vec4 _e99 = mc_thread_curve_fast(weft, _e83, _e82, _e46, _e98);
-                s2_ = _e99;
+                vec4 _e94[9] = _group_1_binding_0_fs.thread1_curve;
+                vec4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
+                s1_ = _e95;
+                {
+                    vec4 _e98[9] = _group_1_binding_0_fs.thread2_curve;
+                    vec4 _e99 = mc_thread_curve_fast(weft, _e83, _e82, _e46, _e98);
+                    s2_ = _e99;
+                }
             }
         }
     }

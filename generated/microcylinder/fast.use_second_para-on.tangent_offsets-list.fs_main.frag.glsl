@@ -86,10 +86,14 @@ const uint TANGENT_OFFSETS_CURVE = 0u;
 const uint TANGENT_OFFSETS_LIST = 1u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
+const uint TIER_LOW = 2u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 const uint MC_CURVE_SAMPLES = 33u;
 const uint MC_CURVE_SEGMENTS = 32u;
 const int MC_MAX_OFFSETS = 8;
@@ -470,17 +474,19 @@ void main() {
     McFrame weft = McFrame(b_4, t_3, _e70);
     {
         {
-            vec4 _e94 = _group_1_binding_0_fs.thread1_offsets_a;
-            vec4 _e97 = _group_1_binding_0_fs.thread1_offsets_b;
-            int _e100 = _group_1_binding_0_fs.thread1_offset_count;
-            vec4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
-            s1_ = _e101;
             {
-                vec4 _e104 = _group_1_binding_0_fs.thread2_offsets_a;
-                vec4 _e107 = _group_1_binding_0_fs.thread2_offsets_b;
-                int _e110 = _group_1_binding_0_fs.thread2_offset_count;
-                vec4 _e111 = mc_thread_list_fast(weft, _e83, _e82, _e46, _e104, _e107, _e110);
-                s2_ = _e111;
+                vec4 _e94 = _group_1_binding_0_fs.thread1_offsets_a;
+                vec4 _e97 = _group_1_binding_0_fs.thread1_offsets_b;
+                int _e100 = _group_1_binding_0_fs.thread1_offset_count;
+                vec4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
+                s1_ = _e101;
+                {
+                    vec4 _e104 = _group_1_binding_0_fs.thread2_offsets_a;
+                    vec4 _e107 = _group_1_binding_0_fs.thread2_offsets_b;
+                    int _e110 = _group_1_binding_0_fs.thread2_offset_count;
+                    vec4 _e111 = mc_thread_list_fast(weft, _e83, _e82, _e46, _e104, _e107, _e110);
+                    s2_ = _e111;
+                }
             }
         }
     }

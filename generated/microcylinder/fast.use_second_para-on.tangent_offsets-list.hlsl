@@ -110,10 +110,14 @@ static const uint TANGENT_OFFSETS_CURVE = 0u;
 static const uint TANGENT_OFFSETS_LIST = 1u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
+static const uint TIER_LOW = 2u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 static const uint MC_CURVE_SAMPLES = 33u;
 static const uint MC_CURVE_SEGMENTS = 32u;
 static const int MC_MAX_OFFSETS = int(8);
@@ -619,17 +623,19 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     McFrame weft = ConstructMcFrame(b_4, t_3, _e70);
     {
         {
-            float4 _e94 = material.thread1_offsets_a;
-            float4 _e97 = material.thread1_offsets_b;
-            int _e100 = material.thread1_offset_count;
-            const float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
-            s1_ = _e101;
             {
-                float4 _e104 = material.thread2_offsets_a;
-                float4 _e107 = material.thread2_offsets_b;
-                int _e110 = material.thread2_offset_count;
-                const float4 _e111 = mc_thread_list_fast(weft, _e83, _e82, _e46, _e104, _e107, _e110);
-                s2_ = _e111;
+                float4 _e94 = material.thread1_offsets_a;
+                float4 _e97 = material.thread1_offsets_b;
+                int _e100 = material.thread1_offset_count;
+                const float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
+                s1_ = _e101;
+                {
+                    float4 _e104 = material.thread2_offsets_a;
+                    float4 _e107 = material.thread2_offsets_b;
+                    int _e110 = material.thread2_offset_count;
+                    const float4 _e111 = mc_thread_list_fast(weft, _e83, _e82, _e46, _e104, _e107, _e110);
+                    s2_ = _e111;
+                }
             }
         }
     }

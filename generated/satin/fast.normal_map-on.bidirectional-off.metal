@@ -62,11 +62,15 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow5_(
     float x

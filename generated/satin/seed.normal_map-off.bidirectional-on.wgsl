@@ -53,11 +53,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;

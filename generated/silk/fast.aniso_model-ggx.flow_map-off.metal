@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow5_(
     float x
@@ -460,21 +464,23 @@ fragment fs_mainOutput fs_main(
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_6;
             {
-                float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                vis = _e94;
+                {
+                    float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
+                    vis = _e94;
+                }
+                float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                float _e102 = vis;
+                lobe.value = (_e101 * _e102) * n_dot_l;
             }
-            float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            float _e102 = vis;
-            lobe.value = (_e101 * _e102) * n_dot_l;
         }
     }
-    metal::float3 _e105 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e106 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
+    metal::float3 _e108 = weft_f_schlick(f0_2, v_dot_h_1);
     metal::float3 _e112 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e105) * _e112) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e108) * _e112) * n_dot_l_diffuse;
     float _e116 = lobe.value;
-    metal::float3 direct = (diffuse + (_e105 * _e116)) * _e106;
+    metal::float3 direct = (diffuse + (_e108 * _e116)) * _e105;
     reflect_n = _e56;
     {
         {

@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -347,21 +351,23 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_6;
             {
-                let _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                vis = _e94;
+                {
+                    let _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
+                    vis = _e94;
+                }
+                let _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                let _e102 = vis;
+                lobe.value = ((_e101 * _e102) * n_dot_l);
             }
-            let _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            let _e102 = vis;
-            lobe.value = ((_e101 * _e102) * n_dot_l);
         }
     }
-    let _e105 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e106 = weft_main_light_radiance();
+    let _e105 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    let _e108 = weft_f_schlick(f0_2, v_dot_h_1);
     let _e112 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e105) * _e112) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e108) * _e112) * n_dot_l_diffuse);
     let _e116 = lobe.value;
-    let direct = ((diffuse + (_e105 * _e116)) * _e106);
+    let direct = ((diffuse + (_e108 * _e116)) * _e105);
     reflect_n = _e56;
     {
         {

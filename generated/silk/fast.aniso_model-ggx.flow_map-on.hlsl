@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -410,21 +414,23 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             lobe.alpha = _e112;
             lobe.ibl_roughness = roughness_6;
             {
-                const float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
-                vis = _e118;
+                {
+                    const float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
+                    vis = _e118;
+                }
+                const float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
+                float _e126 = vis;
+                lobe.value = ((_e125 * _e126) * n_dot_l);
             }
-            const float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-            float _e126 = vis;
-            lobe.value = ((_e125 * _e126) * n_dot_l);
         }
     }
-    const float3 _e129 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e130 = weft_main_light_radiance();
+    const float3 _e129 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    const float3 _e132 = weft_f_schlick(f0_2, v_dot_h_1);
     const float3 _e136 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e129) * _e136) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e132) * _e136) * n_dot_l_diffuse);
     float _e140 = lobe.value;
-    float3 direct = ((diffuse + (_e129 * _e140)) * _e130);
+    float3 direct = ((diffuse + (_e132 * _e140)) * _e129);
     reflect_n = _e56;
     {
         {

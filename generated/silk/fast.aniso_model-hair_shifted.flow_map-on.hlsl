@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -452,28 +456,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const float _e138 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = lerp(_e138, roughness_7, mask);
             {
-                float _e142 = material.tangent_shift;
-                const float3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                const float3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                const float3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                const float3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                const float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                const float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                float aniso = ((_e152 * _e155) * saturate(_e145.z));
-                const float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                const float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                float iso = ((_e160 * _e161) * n_dot_l_1);
-                lobe.value = (lerp(aniso, iso, mask) * spec_scale);
+                {
+                    float _e142 = material.tangent_shift;
+                    const float3x3 _e143 = silk_tilt_frame(_e87, _e142);
+                    const float3 _e144 = weft_aniso_to_frame(_e143, _e38);
+                    const float3 _e145 = weft_aniso_to_frame(_e143, _e94);
+                    const float3 _e146 = weft_aniso_to_frame(_e143, _e96);
+                    const float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
+                    const float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
+                    float aniso = ((_e152 * _e155) * saturate(_e145.z));
+                    const float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
+                    const float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
+                    float iso = ((_e160 * _e161) * n_dot_l_1);
+                    lobe.value = (lerp(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    const float3 _e167 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e168 = weft_main_light_radiance();
+    const float3 _e167 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    const float3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
     const float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e167) * _e174) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e170) * _e174) * n_dot_l_diffuse);
     float _e178 = lobe.value;
-    float3 direct = ((diffuse + (_e167 * _e178)) * _e168);
+    float3 direct = ((diffuse + (_e170 * _e178)) * _e167);
     reflect_n = _e56;
     {
         {

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -314,13 +318,13 @@ void main() {
             lobe.value = (_e93 * n_dot_l);
         }
     }
-    vec3 _e95 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e96 = weft_main_light_radiance();
+    vec3 _e95 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
+    vec3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
     vec3 _e102 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e95) * _e102) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e98) * _e102) * n_dot_l_diffuse);
     float _e106 = lobe.value;
-    vec3 direct = ((diffuse + (_e95 * _e106)) * _e96);
+    vec3 direct = ((diffuse + (_e98 * _e106)) * _e95);
     reflect_n = _e56;
     {
         {

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -323,21 +327,23 @@ void main() {
             lobe.alpha = _e112;
             lobe.ibl_roughness = roughness_6;
             {
-                float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
-                vis = _e118;
+                {
+                    float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
+                    vis = _e118;
+                }
+                float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
+                float _e126 = vis;
+                lobe.value = ((_e125 * _e126) * n_dot_l);
             }
-            float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-            float _e126 = vis;
-            lobe.value = ((_e125 * _e126) * n_dot_l);
         }
     }
-    vec3 _e129 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e130 = weft_main_light_radiance();
+    vec3 _e129 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e94), 0.0, 1.0);
+    vec3 _e132 = weft_f_schlick(f0_2, v_dot_h_1);
     vec3 _e136 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e129) * _e136) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e132) * _e136) * n_dot_l_diffuse);
     float _e140 = lobe.value;
-    vec3 direct = ((diffuse + (_e129 * _e140)) * _e130);
+    vec3 direct = ((diffuse + (_e132 * _e140)) * _e129);
     reflect_n = _e56;
     {
         {

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -351,28 +355,30 @@ void main() {
             float _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e114, roughness_7, mask);
             {
-                float _e118 = _group_1_binding_0_fs.tangent_shift;
-                mat3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                vec3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                vec3 _e121 = weft_aniso_to_frame(_e119, _e70);
-                vec3 _e122 = weft_aniso_to_frame(_e119, _e72);
-                float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                float aniso = ((_e128 * _e131) * clamp(_e121.z, 0.0, 1.0));
-                float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                float iso = ((_e136 * _e137) * n_dot_l_1);
-                lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                {
+                    float _e118 = _group_1_binding_0_fs.tangent_shift;
+                    mat3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                    vec3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                    vec3 _e121 = weft_aniso_to_frame(_e119, _e70);
+                    vec3 _e122 = weft_aniso_to_frame(_e119, _e72);
+                    float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                    float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                    float aniso = ((_e128 * _e131) * clamp(_e121.z, 0.0, 1.0));
+                    float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                    float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                    float iso = ((_e136 * _e137) * n_dot_l_1);
+                    lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    vec3 _e143 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e144 = weft_main_light_radiance();
+    vec3 _e143 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
+    vec3 _e146 = weft_f_schlick(f0_2, v_dot_h_1);
     vec3 _e150 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e143) * _e150) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e146) * _e150) * n_dot_l_diffuse);
     float _e154 = lobe.value;
-    vec3 direct = ((diffuse + (_e143 * _e154)) * _e144);
+    vec3 direct = ((diffuse + (_e146 * _e154)) * _e143);
     reflect_n = _e56;
     {
         {

@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -431,28 +435,30 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const float _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = lerp(_e114, roughness_7, mask);
             {
-                float _e118 = material.tangent_shift;
-                const float3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                const float3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                const float3 _e121 = weft_aniso_to_frame(_e119, _e70);
-                const float3 _e122 = weft_aniso_to_frame(_e119, _e72);
-                const float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                const float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                float aniso = ((_e128 * _e131) * saturate(_e121.z));
-                const float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                const float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                float iso = ((_e136 * _e137) * n_dot_l_1);
-                lobe.value = (lerp(aniso, iso, mask) * spec_scale);
+                {
+                    float _e118 = material.tangent_shift;
+                    const float3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                    const float3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                    const float3 _e121 = weft_aniso_to_frame(_e119, _e70);
+                    const float3 _e122 = weft_aniso_to_frame(_e119, _e72);
+                    const float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                    const float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                    float aniso = ((_e128 * _e131) * saturate(_e121.z));
+                    const float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                    const float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                    float iso = ((_e136 * _e137) * n_dot_l_1);
+                    lobe.value = (lerp(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    const float3 _e143 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e144 = weft_main_light_radiance();
+    const float3 _e143 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    const float3 _e146 = weft_f_schlick(f0_2, v_dot_h_1);
     const float3 _e150 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e143) * _e150) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e146) * _e150) * n_dot_l_diffuse);
     float _e154 = lobe.value;
-    float3 direct = ((diffuse + (_e143 * _e154)) * _e144);
+    float3 direct = ((diffuse + (_e146 * _e154)) * _e143);
     reflect_n = _e56;
     {
         {

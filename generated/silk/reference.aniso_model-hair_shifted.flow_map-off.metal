@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow5_(
     float x
@@ -507,28 +511,30 @@ fragment fs_mainOutput fs_main(
             float _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = metal::mix(_e114, roughness_7, mask);
             {
-                float _e118 = material.tangent_shift;
-                metal::float3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                metal::float3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                metal::float3 _e121 = weft_aniso_to_frame(_e119, _e70);
-                metal::float3 _e122 = weft_aniso_to_frame(_e119, _e72);
-                float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                float aniso = (_e128 * _e131) * metal::saturate(_e121.z);
-                float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                float iso = (_e136 * _e137) * n_dot_l_1;
-                lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
+                {
+                    float _e118 = material.tangent_shift;
+                    metal::float3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                    metal::float3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                    metal::float3 _e121 = weft_aniso_to_frame(_e119, _e70);
+                    metal::float3 _e122 = weft_aniso_to_frame(_e119, _e72);
+                    float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                    float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                    float aniso = (_e128 * _e131) * metal::saturate(_e121.z);
+                    float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                    float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                    float iso = (_e136 * _e137) * n_dot_l_1;
+                    lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
+                }
             }
         }
     }
-    metal::float3 _e143 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e144 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e143 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
+    metal::float3 _e146 = weft_f_schlick(f0_2, v_dot_h_1);
     metal::float3 _e150 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e143) * _e150) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e146) * _e150) * n_dot_l_diffuse;
     float _e154 = lobe.value;
-    metal::float3 direct = (diffuse + (_e143 * _e154)) * _e144;
+    metal::float3 direct = (diffuse + (_e146 * _e154)) * _e143;
     reflect_n = _e56;
     {
         {

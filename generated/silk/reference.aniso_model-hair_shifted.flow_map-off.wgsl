@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -384,28 +388,30 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e114 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e114, roughness_7, mask);
             {
-                let _e118 = material.tangent_shift;
-                let _e119 = silk_tilt_frame(_e63, _e118);
-                let _e120 = weft_aniso_to_frame(_e119, _e38);
-                let _e121 = weft_aniso_to_frame(_e119, _e70);
-                let _e122 = weft_aniso_to_frame(_e119, _e72);
-                let _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                let _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                let aniso = ((_e128 * _e131) * saturate(_e121.z));
-                let _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                let _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                let iso = ((_e136 * _e137) * n_dot_l_1);
-                lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                {
+                    let _e118 = material.tangent_shift;
+                    let _e119 = silk_tilt_frame(_e63, _e118);
+                    let _e120 = weft_aniso_to_frame(_e119, _e38);
+                    let _e121 = weft_aniso_to_frame(_e119, _e70);
+                    let _e122 = weft_aniso_to_frame(_e119, _e72);
+                    let _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
+                    let _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
+                    let aniso = ((_e128 * _e131) * saturate(_e121.z));
+                    let _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
+                    let _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
+                    let iso = ((_e136 * _e137) * n_dot_l_1);
+                    lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    let _e143 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e144 = weft_main_light_radiance();
+    let _e143 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    let _e146 = weft_f_schlick(f0_2, v_dot_h_1);
     let _e150 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e143) * _e150) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e146) * _e150) * n_dot_l_diffuse);
     let _e154 = lobe.value;
-    let direct = ((diffuse + (_e143 * _e154)) * _e144);
+    let direct = ((diffuse + (_e146 * _e154)) * _e143);
     reflect_n = _e56;
     {
         {

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -361,28 +365,30 @@ void main() {
             float _e138 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e138, roughness_7, mask);
             {
-                float _e142 = _group_1_binding_0_fs.tangent_shift;
-                mat3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                vec3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                vec3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                vec3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                float aniso = ((_e152 * _e155) * clamp(_e145.z, 0.0, 1.0));
-                float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                float iso = ((_e160 * _e161) * n_dot_l_1);
-                lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                {
+                    float _e142 = _group_1_binding_0_fs.tangent_shift;
+                    mat3x3 _e143 = silk_tilt_frame(_e87, _e142);
+                    vec3 _e144 = weft_aniso_to_frame(_e143, _e38);
+                    vec3 _e145 = weft_aniso_to_frame(_e143, _e94);
+                    vec3 _e146 = weft_aniso_to_frame(_e143, _e96);
+                    float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
+                    float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
+                    float aniso = ((_e152 * _e155) * clamp(_e145.z, 0.0, 1.0));
+                    float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
+                    float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
+                    float iso = ((_e160 * _e161) * n_dot_l_1);
+                    lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    vec3 _e167 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e168 = weft_main_light_radiance();
+    vec3 _e167 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e94), 0.0, 1.0);
+    vec3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
     vec3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e167) * _e174) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e170) * _e174) * n_dot_l_diffuse);
     float _e178 = lobe.value;
-    vec3 direct = ((diffuse + (_e167 * _e178)) * _e168);
+    vec3 direct = ((diffuse + (_e170 * _e178)) * _e167);
     reflect_n = _e56;
     {
         {

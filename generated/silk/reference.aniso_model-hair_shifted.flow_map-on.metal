@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow5_(
     float x
@@ -516,28 +520,30 @@ fragment fs_mainOutput fs_main(
             float _e138 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = metal::mix(_e138, roughness_7, mask);
             {
-                float _e142 = material.tangent_shift;
-                metal::float3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                metal::float3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                metal::float3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                metal::float3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                float aniso = (_e152 * _e155) * metal::saturate(_e145.z);
-                float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                float iso = (_e160 * _e161) * n_dot_l_1;
-                lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
+                {
+                    float _e142 = material.tangent_shift;
+                    metal::float3x3 _e143 = silk_tilt_frame(_e87, _e142);
+                    metal::float3 _e144 = weft_aniso_to_frame(_e143, _e38);
+                    metal::float3 _e145 = weft_aniso_to_frame(_e143, _e94);
+                    metal::float3 _e146 = weft_aniso_to_frame(_e143, _e96);
+                    float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
+                    float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
+                    float aniso = (_e152 * _e155) * metal::saturate(_e145.z);
+                    float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
+                    float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
+                    float iso = (_e160 * _e161) * n_dot_l_1;
+                    lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
+                }
             }
         }
     }
-    metal::float3 _e167 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e168 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e94));
+    metal::float3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
     metal::float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e167) * _e174) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e170) * _e174) * n_dot_l_diffuse;
     float _e178 = lobe.value;
-    metal::float3 direct = (diffuse + (_e167 * _e178)) * _e168;
+    metal::float3 direct = (diffuse + (_e170 * _e178)) * _e167;
     reflect_n = _e56;
     {
         {

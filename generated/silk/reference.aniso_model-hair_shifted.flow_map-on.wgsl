@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -394,28 +398,30 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e138 = silk_ibl_roughness(a_hair);
             lobe.ibl_roughness = mix(_e138, roughness_7, mask);
             {
-                let _e142 = material.tangent_shift;
-                let _e143 = silk_tilt_frame(_e87, _e142);
-                let _e144 = weft_aniso_to_frame(_e143, _e38);
-                let _e145 = weft_aniso_to_frame(_e143, _e94);
-                let _e146 = weft_aniso_to_frame(_e143, _e96);
-                let _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                let _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                let aniso = ((_e152 * _e155) * saturate(_e145.z));
-                let _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                let _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                let iso = ((_e160 * _e161) * n_dot_l_1);
-                lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                {
+                    let _e142 = material.tangent_shift;
+                    let _e143 = silk_tilt_frame(_e87, _e142);
+                    let _e144 = weft_aniso_to_frame(_e143, _e38);
+                    let _e145 = weft_aniso_to_frame(_e143, _e94);
+                    let _e146 = weft_aniso_to_frame(_e143, _e96);
+                    let _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
+                    let _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
+                    let aniso = ((_e152 * _e155) * saturate(_e145.z));
+                    let _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
+                    let _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
+                    let iso = ((_e160 * _e161) * n_dot_l_1);
+                    lobe.value = (mix(aniso, iso, mask) * spec_scale);
+                }
             }
         }
     }
-    let _e167 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e168 = weft_main_light_radiance();
+    let _e167 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    let _e170 = weft_f_schlick(f0_2, v_dot_h_1);
     let _e174 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e167) * _e174) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e170) * _e174) * n_dot_l_diffuse);
     let _e178 = lobe.value;
-    let direct = ((diffuse + (_e167 * _e178)) * _e168);
+    let direct = ((diffuse + (_e170 * _e178)) * _e167);
     reflect_n = _e56;
     {
         {

@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -397,13 +401,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             lobe.value = (_e117 * n_dot_l);
         }
     }
-    const float3 _e119 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e120 = weft_main_light_radiance();
+    const float3 _e119 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    const float3 _e122 = weft_f_schlick(f0_2, v_dot_h_1);
     const float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e119) * _e126) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e122) * _e126) * n_dot_l_diffuse);
     float _e130 = lobe.value;
-    float3 direct = ((diffuse + (_e119 * _e130)) * _e120);
+    float3 direct = ((diffuse + (_e122 * _e130)) * _e119);
     reflect_n = _e56;
     {
         {

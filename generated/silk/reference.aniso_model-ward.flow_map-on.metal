@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow5_(
     float x
@@ -453,13 +457,13 @@ fragment fs_mainOutput fs_main(
             lobe.value = _e117 * n_dot_l;
         }
     }
-    metal::float3 _e119 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e120 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e119 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e94));
+    metal::float3 _e122 = weft_f_schlick(f0_2, v_dot_h_1);
     metal::float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e119) * _e126) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e122) * _e126) * n_dot_l_diffuse;
     float _e130 = lobe.value;
-    metal::float3 direct = (diffuse + (_e119 * _e130)) * _e120;
+    metal::float3 direct = (diffuse + (_e122 * _e130)) * _e119;
     reflect_n = _e56;
     {
         {

@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -356,13 +360,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             lobe.value = (_e117 * n_dot_l);
         }
     }
-    let _e119 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e120 = weft_main_light_radiance();
+    let _e119 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
+    let _e122 = weft_f_schlick(f0_2, v_dot_h_1);
     let _e126 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e119) * _e126) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e122) * _e126) * n_dot_l_diffuse);
     let _e130 = lobe.value;
-    let direct = ((diffuse + (_e119 * _e130)) * _e120);
+    let direct = ((diffuse + (_e122 * _e130)) * _e119);
     reflect_n = _e56;
     {
         {

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -308,21 +312,23 @@ void main() {
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_7;
             {
-                float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                {
+                    float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
+                    vis = _e92;
+                }
+                float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                float _e100 = vis;
+                lobe.value = ((_e99 * _e100) * n_dot_l_1);
             }
-            float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            float _e100 = vis;
-            lobe.value = ((_e99 * _e100) * n_dot_l_1);
         }
     }
-    vec3 _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e104 = weft_main_light_radiance();
+    vec3 _e103 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
+    vec3 _e106 = weft_f_schlick(f0_3, v_dot_h_1);
     vec3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e103) * _e110) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e106) * _e110) * n_dot_l_diffuse);
     float _e114 = lobe.value;
-    vec3 direct = ((diffuse + (_e103 * _e114)) * _e104);
+    vec3 direct = ((diffuse + (_e106 * _e114)) * _e103);
     reflect_n = _e56;
     {
         float _e122 = lobe.ibl_roughness;

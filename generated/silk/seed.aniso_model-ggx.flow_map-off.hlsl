@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -384,21 +388,23 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_7;
             {
-                const float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                {
+                    const float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
+                    vis = _e92;
+                }
+                const float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                float _e100 = vis;
+                lobe.value = ((_e99 * _e100) * n_dot_l_1);
             }
-            const float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            float _e100 = vis;
-            lobe.value = ((_e99 * _e100) * n_dot_l_1);
         }
     }
-    const float3 _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e104 = weft_main_light_radiance();
+    const float3 _e103 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    const float3 _e106 = weft_f_schlick(f0_3, v_dot_h_1);
     const float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e103) * _e110) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e106) * _e110) * n_dot_l_diffuse);
     float _e114 = lobe.value;
-    float3 direct = ((diffuse + (_e103 * _e114)) * _e104);
+    float3 direct = ((diffuse + (_e106 * _e114)) * _e103);
     reflect_n = _e56;
     {
         float _e122 = lobe.ibl_roughness;

@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow4_(
     float x
@@ -447,21 +451,23 @@ fragment fs_mainOutput fs_main(
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_7;
             {
-                float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                {
+                    float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
+                    vis = _e92;
+                }
+                float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                float _e100 = vis;
+                lobe.value = (_e99 * _e100) * n_dot_l_1;
             }
-            float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            float _e100 = vis;
-            lobe.value = (_e99 * _e100) * n_dot_l_1;
         }
     }
-    metal::float3 _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e104 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e103 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
+    metal::float3 _e106 = weft_f_schlick(f0_3, v_dot_h_1);
     metal::float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e103) * _e110) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e106) * _e110) * n_dot_l_diffuse;
     float _e114 = lobe.value;
-    metal::float3 direct = (diffuse + (_e103 * _e114)) * _e104;
+    metal::float3 direct = (diffuse + (_e106 * _e114)) * _e103;
     reflect_n = _e56;
     {
         float _e122 = lobe.ibl_roughness;

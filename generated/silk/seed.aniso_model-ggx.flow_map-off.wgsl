@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -339,21 +343,23 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             lobe.alpha = _e88;
             lobe.ibl_roughness = roughness_7;
             {
-                let _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                vis = _e92;
+                {
+                    let _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
+                    vis = _e92;
+                }
+                let _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
+                let _e100 = vis;
+                lobe.value = ((_e99 * _e100) * n_dot_l_1);
             }
-            let _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-            let _e100 = vis;
-            lobe.value = ((_e99 * _e100) * n_dot_l_1);
         }
     }
-    let _e103 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e104 = weft_main_light_radiance();
+    let _e103 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    let _e106 = weft_f_schlick(f0_3, v_dot_h_1);
     let _e110 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e103) * _e110) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e106) * _e110) * n_dot_l_diffuse);
     let _e114 = lobe.value;
-    let direct = ((diffuse + (_e103 * _e114)) * _e104);
+    let direct = ((diffuse + (_e106 * _e114)) * _e103);
     reflect_n = _e56;
     {
         let _e122 = lobe.ibl_roughness;

@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -318,21 +322,23 @@ void main() {
             lobe.alpha = _e112;
             lobe.ibl_roughness = roughness_7;
             {
-                float _e116 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
-                vis = _e116;
+                {
+                    float _e116 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
+                    vis = _e116;
+                }
+                float _e123 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
+                float _e124 = vis;
+                lobe.value = ((_e123 * _e124) * n_dot_l_1);
             }
-            float _e123 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-            float _e124 = vis;
-            lobe.value = ((_e123 * _e124) * n_dot_l_1);
         }
     }
-    vec3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e128 = weft_main_light_radiance();
+    vec3 _e127 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e94), 0.0, 1.0);
+    vec3 _e130 = weft_f_schlick(f0_3, v_dot_h_1);
     vec3 _e134 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e127) * _e134) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e130) * _e134) * n_dot_l_diffuse);
     float _e138 = lobe.value;
-    vec3 direct = ((diffuse + (_e127 * _e138)) * _e128);
+    vec3 direct = ((diffuse + (_e130 * _e138)) * _e127);
     reflect_n = _e56;
     {
         float _e146 = lobe.ibl_roughness;

@@ -66,12 +66,16 @@ constant uint ANISO_MODEL_GGX = 2u;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_MIN_ANISO_ALPHA = 0.001;
 constant float SILK_MIN_ALPHA = 0.001;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow4_(
     float x
@@ -456,21 +460,23 @@ fragment fs_mainOutput fs_main(
             lobe.alpha = _e112;
             lobe.ibl_roughness = roughness_7;
             {
-                float _e116 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
-                vis = _e116;
+                {
+                    float _e116 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
+                    vis = _e116;
+                }
+                float _e123 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
+                float _e124 = vis;
+                lobe.value = (_e123 * _e124) * n_dot_l_1;
             }
-            float _e123 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-            float _e124 = vis;
-            lobe.value = (_e123 * _e124) * n_dot_l_1;
         }
     }
-    metal::float3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e128 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e127 = weft_main_light_radiance(weft_frame);
     float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e94));
+    metal::float3 _e130 = weft_f_schlick(f0_3, v_dot_h_1);
     metal::float3 _e134 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e127) * _e134) * n_dot_l_diffuse;
+    metal::float3 diffuse = ((metal::float3(1.0) - _e130) * _e134) * n_dot_l_diffuse;
     float _e138 = lobe.value;
-    metal::float3 direct = (diffuse + (_e127 * _e138)) * _e128;
+    metal::float3 direct = (diffuse + (_e130 * _e138)) * _e127;
     reflect_n = _e56;
     {
         float _e146 = lobe.ibl_roughness;

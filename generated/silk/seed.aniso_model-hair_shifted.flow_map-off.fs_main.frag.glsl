@@ -53,12 +53,16 @@ const uint ANISO_MODEL_GGX = 2u;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_MIN_ANISO_ALPHA = 0.001;
 const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -337,13 +341,13 @@ void main() {
             }
         }
     }
-    vec3 _e131 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e132 = weft_main_light_radiance();
+    vec3 _e131 = weft_main_light_radiance();
     float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
+    vec3 _e134 = weft_f_schlick(f0_3, v_dot_h_1);
     vec3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e131) * _e138) * n_dot_l_diffuse);
+    vec3 diffuse = (((vec3(1.0) - _e134) * _e138) * n_dot_l_diffuse);
     float _e142 = lobe.value;
-    vec3 direct = ((diffuse + (_e131 * _e142)) * _e132);
+    vec3 direct = ((diffuse + (_e134 * _e142)) * _e131);
     reflect_n = _e56;
     {
         float _e150 = lobe.ibl_roughness;

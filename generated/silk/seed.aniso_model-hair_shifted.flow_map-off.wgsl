@@ -58,12 +58,16 @@ const ANISO_MODEL_GGX: u32 = 2u;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
 const SILK_MIN_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -368,13 +372,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             }
         }
     }
-    let _e131 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e132 = weft_main_light_radiance();
+    let _e131 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    let _e134 = weft_f_schlick(f0_3, v_dot_h_1);
     let _e138 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e131) * _e138) * n_dot_l_diffuse);
+    let diffuse = (((vec3(1f) - _e134) * _e138) * n_dot_l_diffuse);
     let _e142 = lobe.value;
-    let direct = ((diffuse + (_e131 * _e142)) * _e132);
+    let direct = ((diffuse + (_e134 * _e142)) * _e131);
     reflect_n = _e56;
     {
         let _e150 = lobe.ibl_roughness;

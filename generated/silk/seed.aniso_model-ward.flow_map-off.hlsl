@@ -62,12 +62,16 @@ static const uint ANISO_MODEL_GGX = 2u;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ANISO_ALPHA = 0.001;
 static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -372,13 +376,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             lobe.value = (_e93 * n_dot_l_1);
         }
     }
-    const float3 _e95 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e96 = weft_main_light_radiance();
+    const float3 _e95 = weft_main_light_radiance();
     float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
+    const float3 _e98 = weft_f_schlick(f0_3, v_dot_h_1);
     const float3 _e102 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e95) * _e102) * n_dot_l_diffuse);
+    float3 diffuse = ((((1.0).xxx - _e98) * _e102) * n_dot_l_diffuse);
     float _e106 = lobe.value;
-    float3 direct = ((diffuse + (_e95 * _e106)) * _e96);
+    float3 direct = ((diffuse + (_e98 * _e106)) * _e95);
     reflect_n = _e56;
     {
         float _e114 = lobe.ibl_roughness;

@@ -56,6 +56,7 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);

@@ -40,11 +40,15 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -242,25 +246,27 @@ void main() {
     vec3 _e69 = weft_sh_irradiance(_e68);
     vec3 ambient = (_e69 * ao);
     {
-        vec4 _e74 = _group_1_binding_0_fs.scatter_color;
-        vec3 sheen_color_2 = clamp((f0_ + max(_e74.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-        float _e81 = weft_sheen_clamp_roughness(roughness_2);
-        float _e82 = weft_sheen_albedo(_e52, _e81);
-        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
         {
-            vec3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
-            sheen = _e86;
-            scaling = _e83;
+            vec4 _e74 = _group_1_binding_0_fs.scatter_color;
+            vec3 sheen_color_2 = clamp((f0_ + max(_e74.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e81 = weft_sheen_clamp_roughness(roughness_2);
+            float _e82 = weft_sheen_albedo(_e52, _e81);
+            float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+            {
+                vec3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
+                sheen = _e86;
+                scaling = _e83;
+            }
+            vec3 _e87 = weft_diffuse_lambert(diffuse_albedo);
+            float _e88 = scaling;
+            vec3 base_direct = (_e87 * (_e88 * n_dot_l_2));
+            vec3 _e91 = sheen;
+            vec3 direct = ((_e91 + base_direct) * _e67);
+            vec3 _e95 = n;
+            vec3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
+            vec3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
         }
-        vec3 _e87 = weft_diffuse_lambert(diffuse_albedo);
-        float _e88 = scaling;
-        vec3 base_direct = (_e87 * (_e88 * n_dot_l_2));
-        vec3 _e91 = sheen;
-        vec3 direct = ((_e91 + base_direct) * _e67);
-        vec3 _e95 = n;
-        vec3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
-        vec3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
     vec3 _e105 = color;
     vec3 radiance = clamp(_e105, vec3(0.0), vec3(65504.0));

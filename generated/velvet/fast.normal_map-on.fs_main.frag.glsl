@@ -40,11 +40,15 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -283,25 +287,27 @@ void main() {
     vec3 _e81 = weft_sh_irradiance(_e80);
     vec3 ambient = (_e81 * ao);
     {
-        vec4 _e86 = _group_1_binding_0_fs.scatter_color;
-        vec3 sheen_color_2 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-        float _e93 = weft_sheen_clamp_roughness(roughness_2);
-        float _e94 = weft_sheen_albedo(_e64, _e93);
-        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
         {
-            vec3 _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
-            sheen = _e98;
-            scaling = _e95;
+            vec4 _e86 = _group_1_binding_0_fs.scatter_color;
+            vec3 sheen_color_2 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e93 = weft_sheen_clamp_roughness(roughness_2);
+            float _e94 = weft_sheen_albedo(_e64, _e93);
+            float _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
+            {
+                vec3 _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
+                sheen = _e98;
+                scaling = _e95;
+            }
+            vec3 _e99 = weft_diffuse_lambert(diffuse_albedo);
+            float _e100 = scaling;
+            vec3 base_direct = (_e99 * (_e100 * n_dot_l_2));
+            vec3 _e103 = sheen;
+            vec3 direct = ((_e103 + base_direct) * _e79);
+            vec3 _e107 = n;
+            vec3 _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
+            vec3 env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
         }
-        vec3 _e99 = weft_diffuse_lambert(diffuse_albedo);
-        float _e100 = scaling;
-        vec3 base_direct = (_e99 * (_e100 * n_dot_l_2));
-        vec3 _e103 = sheen;
-        vec3 direct = ((_e103 + base_direct) * _e79);
-        vec3 _e107 = n;
-        vec3 _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
-        vec3 env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
     vec3 _e117 = color;
     vec3 radiance = clamp(_e117, vec3(0.0), vec3(65504.0));

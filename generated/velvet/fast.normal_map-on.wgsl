@@ -44,11 +44,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -315,25 +319,27 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e81 = weft_sh_irradiance(_e80);
     let ambient = (_e81 * ao);
     {
-        let _e86 = material.scatter_color;
-        let sheen_color_2 = saturate((f0_ + max(_e86.xyz, vec3(0f))));
-        let _e93 = weft_sheen_clamp_roughness(roughness_2);
-        let _e94 = weft_sheen_albedo(_e64, _e93);
-        let _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
         {
-            let _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
-            sheen = _e98;
-            scaling = _e95;
+            let _e86 = material.scatter_color;
+            let sheen_color_2 = saturate((f0_ + max(_e86.xyz, vec3(0f))));
+            let _e93 = weft_sheen_clamp_roughness(roughness_2);
+            let _e94 = weft_sheen_albedo(_e64, _e93);
+            let _e95 = weft_sheen_albedo_scaling_view(sheen_color_2, _e94);
+            {
+                let _e98 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e64, n_dot_l_2, _e93);
+                sheen = _e98;
+                scaling = _e95;
+            }
+            let _e99 = weft_diffuse_lambert(diffuse_albedo);
+            let _e100 = scaling;
+            let base_direct = (_e99 * (_e100 * n_dot_l_2));
+            let _e103 = sheen;
+            let direct = ((_e103 + base_direct) * _e79);
+            let _e107 = n;
+            let _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
+            let env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
         }
-        let _e99 = weft_diffuse_lambert(diffuse_albedo);
-        let _e100 = scaling;
-        let base_direct = (_e99 * (_e100 * n_dot_l_2));
-        let _e103 = sheen;
-        let direct = ((_e103 + base_direct) * _e79);
-        let _e107 = n;
-        let _e109 = weft_prefiltered_radiance(reflect(-(_e42), _e107), _e93);
-        let env_sheen = ((_e109 * sheen_color_2) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
     let _e117 = color;
     let radiance = clamp(_e117, vec3(0f), vec3(65504f));

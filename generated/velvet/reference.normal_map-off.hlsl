@@ -51,11 +51,15 @@ static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;
 static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
 static const float WEFT_MIN_ROUGHNESS = 0.045;
 static const float WEFT_MIN_N_DOT = 0.0001;
 static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -320,27 +324,29 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e69 = weft_sh_irradiance(_e68);
     float3 ambient = (_e69 * ao);
     {
-        float4 _e74 = material.scatter_color;
-        float3 sheen_color_3 = saturate((f0_ + max(_e74.xyz, (0.0).xxx)));
-        const float _e81 = weft_sheen_clamp_roughness(roughness_2);
-        const float _e82 = weft_sheen_albedo(_e52, _e81);
-        const float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
         {
-            const float _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
-            const float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-            sheen = _e87;
-            const float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
-            scaling = _e88;
+            float4 _e74 = material.scatter_color;
+            float3 sheen_color_3 = saturate((f0_ + max(_e74.xyz, (0.0).xxx)));
+            const float _e81 = weft_sheen_clamp_roughness(roughness_2);
+            const float _e82 = weft_sheen_albedo(_e52, _e81);
+            const float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+            {
+                const float _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
+                const float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+                sheen = _e87;
+                const float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+                scaling = _e88;
+            }
+            const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+            float _e90 = scaling;
+            float3 base_direct = (_e89 * (_e90 * n_dot_l_2));
+            float3 _e93 = sheen;
+            float3 direct = ((_e93 + base_direct) * _e67);
+            float3 _e97 = n;
+            const float3 _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
+            float3 env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
         }
-        const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        float _e90 = scaling;
-        float3 base_direct = (_e89 * (_e90 * n_dot_l_2));
-        float3 _e93 = sheen;
-        float3 direct = ((_e93 + base_direct) * _e67);
-        float3 _e97 = n;
-        const float3 _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
-        float3 env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
     float3 _e107 = color;
     float3 radiance = clamp(_e107, (0.0).xxx, (65504.0).xxx);

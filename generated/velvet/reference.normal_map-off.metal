@@ -53,11 +53,15 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_max3_(
     metal::float3 v
@@ -370,27 +374,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
     metal::float3 ambient = _e69 * ao;
     {
-        metal::float4 _e74 = material.scatter_color;
-        metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e74.xyz, metal::float3(0.0)));
-        float _e81 = weft_sheen_clamp_roughness(roughness_2);
-        float _e82 = weft_sheen_albedo(_e52, _e81, weft_lut_sampler, weft_sheen_lut);
-        float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
         {
-            float _e86 = weft_sheen_albedo(n_dot_l_2, _e81, weft_lut_sampler, weft_sheen_lut);
-            metal::float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-            sheen = _e87;
-            float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
-            scaling = _e88;
+            metal::float4 _e74 = material.scatter_color;
+            metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e74.xyz, metal::float3(0.0)));
+            float _e81 = weft_sheen_clamp_roughness(roughness_2);
+            float _e82 = weft_sheen_albedo(_e52, _e81, weft_lut_sampler, weft_sheen_lut);
+            float _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+            {
+                float _e86 = weft_sheen_albedo(n_dot_l_2, _e81, weft_lut_sampler, weft_sheen_lut);
+                metal::float3 _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+                sheen = _e87;
+                float _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+                scaling = _e88;
+            }
+            metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+            float _e90 = scaling;
+            metal::float3 base_direct = _e89 * (_e90 * n_dot_l_2);
+            metal::float3 _e93 = sheen;
+            metal::float3 direct = (_e93 + base_direct) * _e67;
+            metal::float3 _e97 = n;
+            metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e97), _e81, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 env_sheen = (_e99 * sheen_color_3) * (_e82 * ao);
+            color = (direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen;
         }
-        metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        float _e90 = scaling;
-        metal::float3 base_direct = _e89 * (_e90 * n_dot_l_2);
-        metal::float3 _e93 = sheen;
-        metal::float3 direct = (_e93 + base_direct) * _e67;
-        metal::float3 _e97 = n;
-        metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e97), _e81, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e99 * sheen_color_3) * (_e82 * ao);
-        color = (direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen;
     }
     metal::float3 _e107 = color;
     metal::float3 radiance = metal::clamp(_e107, metal::float3(0.0), metal::float3(65504.0));

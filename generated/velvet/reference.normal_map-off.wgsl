@@ -44,11 +44,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -280,27 +284,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e69 = weft_sh_irradiance(_e68);
     let ambient = (_e69 * ao);
     {
-        let _e74 = material.scatter_color;
-        let sheen_color_3 = saturate((f0_ + max(_e74.xyz, vec3(0f))));
-        let _e81 = weft_sheen_clamp_roughness(roughness_2);
-        let _e82 = weft_sheen_albedo(_e52, _e81);
-        let _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
         {
-            let _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
-            let _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
-            sheen = _e87;
-            let _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
-            scaling = _e88;
+            let _e74 = material.scatter_color;
+            let sheen_color_3 = saturate((f0_ + max(_e74.xyz, vec3(0f))));
+            let _e81 = weft_sheen_clamp_roughness(roughness_2);
+            let _e82 = weft_sheen_albedo(_e52, _e81);
+            let _e83 = weft_sheen_albedo_scaling_view(sheen_color_3, _e82);
+            {
+                let _e86 = weft_sheen_albedo(n_dot_l_2, _e81);
+                let _e87 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e81);
+                sheen = _e87;
+                let _e88 = weft_sheen_albedo_scaling(sheen_color_3, _e82, _e86);
+                scaling = _e88;
+            }
+            let _e89 = weft_diffuse_lambert(diffuse_albedo);
+            let _e90 = scaling;
+            let base_direct = (_e89 * (_e90 * n_dot_l_2));
+            let _e93 = sheen;
+            let direct = ((_e93 + base_direct) * _e67);
+            let _e97 = n;
+            let _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
+            let env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
         }
-        let _e89 = weft_diffuse_lambert(diffuse_albedo);
-        let _e90 = scaling;
-        let base_direct = (_e89 * (_e90 * n_dot_l_2));
-        let _e93 = sheen;
-        let direct = ((_e93 + base_direct) * _e67);
-        let _e97 = n;
-        let _e99 = weft_prefiltered_radiance(reflect(-(_e42), _e97), _e81);
-        let env_sheen = ((_e99 * sheen_color_3) * (_e82 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
     }
     let _e107 = color;
     let radiance = clamp(_e107, vec3(0f), vec3(65504f));

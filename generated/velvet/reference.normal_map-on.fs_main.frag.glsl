@@ -40,11 +40,15 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -289,27 +293,29 @@ void main() {
     vec3 _e81 = weft_sh_irradiance(_e80);
     vec3 ambient = (_e81 * ao);
     {
-        vec4 _e86 = _group_1_binding_0_fs.scatter_color;
-        vec3 sheen_color_3 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-        float _e93 = weft_sheen_clamp_roughness(roughness_2);
-        float _e94 = weft_sheen_albedo(_e64, _e93);
-        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
         {
-            float _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
-            vec3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-            sheen = _e99;
-            float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
-            scaling = _e100;
+            vec4 _e86 = _group_1_binding_0_fs.scatter_color;
+            vec3 sheen_color_3 = clamp((f0_ + max(_e86.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e93 = weft_sheen_clamp_roughness(roughness_2);
+            float _e94 = weft_sheen_albedo(_e64, _e93);
+            float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+            {
+                float _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
+                vec3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+                sheen = _e99;
+                float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+                scaling = _e100;
+            }
+            vec3 _e101 = weft_diffuse_lambert(diffuse_albedo);
+            float _e102 = scaling;
+            vec3 base_direct = (_e101 * (_e102 * n_dot_l_2));
+            vec3 _e105 = sheen;
+            vec3 direct = ((_e105 + base_direct) * _e79);
+            vec3 _e109 = n;
+            vec3 _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
+            vec3 env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
         }
-        vec3 _e101 = weft_diffuse_lambert(diffuse_albedo);
-        float _e102 = scaling;
-        vec3 base_direct = (_e101 * (_e102 * n_dot_l_2));
-        vec3 _e105 = sheen;
-        vec3 direct = ((_e105 + base_direct) * _e79);
-        vec3 _e109 = n;
-        vec3 _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
-        vec3 env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
     vec3 _e119 = color;
     vec3 radiance = clamp(_e119, vec3(0.0), vec3(65504.0));

@@ -53,11 +53,15 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_max3_(
     metal::float3 v
@@ -421,27 +425,29 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e81 = weft_sh_irradiance(_e80, weft_frame);
     metal::float3 ambient = _e81 * ao;
     {
-        metal::float4 _e86 = material.scatter_color;
-        metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e86.xyz, metal::float3(0.0)));
-        float _e93 = weft_sheen_clamp_roughness(roughness_2);
-        float _e94 = weft_sheen_albedo(_e64, _e93, weft_lut_sampler, weft_sheen_lut);
-        float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
         {
-            float _e98 = weft_sheen_albedo(n_dot_l_2, _e93, weft_lut_sampler, weft_sheen_lut);
-            metal::float3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-            sheen = _e99;
-            float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
-            scaling = _e100;
+            metal::float4 _e86 = material.scatter_color;
+            metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e86.xyz, metal::float3(0.0)));
+            float _e93 = weft_sheen_clamp_roughness(roughness_2);
+            float _e94 = weft_sheen_albedo(_e64, _e93, weft_lut_sampler, weft_sheen_lut);
+            float _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+            {
+                float _e98 = weft_sheen_albedo(n_dot_l_2, _e93, weft_lut_sampler, weft_sheen_lut);
+                metal::float3 _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+                sheen = _e99;
+                float _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+                scaling = _e100;
+            }
+            metal::float3 _e101 = weft_diffuse_lambert(diffuse_albedo);
+            float _e102 = scaling;
+            metal::float3 base_direct = _e101 * (_e102 * n_dot_l_2);
+            metal::float3 _e105 = sheen;
+            metal::float3 direct = (_e105 + base_direct) * _e79;
+            metal::float3 _e109 = n;
+            metal::float3 _e111 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e109), _e93, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 env_sheen = (_e111 * sheen_color_3) * (_e94 * ao);
+            color = (direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen;
         }
-        metal::float3 _e101 = weft_diffuse_lambert(diffuse_albedo);
-        float _e102 = scaling;
-        metal::float3 base_direct = _e101 * (_e102 * n_dot_l_2);
-        metal::float3 _e105 = sheen;
-        metal::float3 direct = (_e105 + base_direct) * _e79;
-        metal::float3 _e109 = n;
-        metal::float3 _e111 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e109), _e93, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e111 * sheen_color_3) * (_e94 * ao);
-        color = (direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen;
     }
     metal::float3 _e119 = color;
     metal::float3 radiance = metal::clamp(_e119, metal::float3(0.0), metal::float3(65504.0));

@@ -44,11 +44,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -321,27 +325,29 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e81 = weft_sh_irradiance(_e80);
     let ambient = (_e81 * ao);
     {
-        let _e86 = material.scatter_color;
-        let sheen_color_3 = saturate((f0_ + max(_e86.xyz, vec3(0f))));
-        let _e93 = weft_sheen_clamp_roughness(roughness_2);
-        let _e94 = weft_sheen_albedo(_e64, _e93);
-        let _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
         {
-            let _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
-            let _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
-            sheen = _e99;
-            let _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
-            scaling = _e100;
+            let _e86 = material.scatter_color;
+            let sheen_color_3 = saturate((f0_ + max(_e86.xyz, vec3(0f))));
+            let _e93 = weft_sheen_clamp_roughness(roughness_2);
+            let _e94 = weft_sheen_albedo(_e64, _e93);
+            let _e95 = weft_sheen_albedo_scaling_view(sheen_color_3, _e94);
+            {
+                let _e98 = weft_sheen_albedo(n_dot_l_2, _e93);
+                let _e99 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e64, n_dot_l_2, _e93);
+                sheen = _e99;
+                let _e100 = weft_sheen_albedo_scaling(sheen_color_3, _e94, _e98);
+                scaling = _e100;
+            }
+            let _e101 = weft_diffuse_lambert(diffuse_albedo);
+            let _e102 = scaling;
+            let base_direct = (_e101 * (_e102 * n_dot_l_2));
+            let _e105 = sheen;
+            let direct = ((_e105 + base_direct) * _e79);
+            let _e109 = n;
+            let _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
+            let env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
         }
-        let _e101 = weft_diffuse_lambert(diffuse_albedo);
-        let _e102 = scaling;
-        let base_direct = (_e101 * (_e102 * n_dot_l_2));
-        let _e105 = sheen;
-        let direct = ((_e105 + base_direct) * _e79);
-        let _e109 = n;
-        let _e111 = weft_prefiltered_radiance(reflect(-(_e42), _e109), _e93);
-        let env_sheen = ((_e111 * sheen_color_3) * (_e94 * ao));
-        color = ((direct + ((ambient * diffuse_albedo) * _e95)) + env_sheen);
     }
     let _e119 = color;
     let radiance = clamp(_e119, vec3(0f), vec3(65504f));

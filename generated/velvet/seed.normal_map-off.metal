@@ -53,11 +53,15 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow4_(
     float x
@@ -306,16 +310,18 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
     metal::float3 ambient = _e69 * ao;
     {
-        float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        metal::float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-        float _e74 = weft_fabric_d(n_dot_h_1);
-        metal::float3 specular = (_e74 * _e72) * _e73;
-        metal::float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float3 direct = ((_e77 + specular) * _e67) * n_dot_l_2;
-        metal::float4 _e83 = material.scatter_color;
-        float _e87 = material.scatter_scale;
-        metal::float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-        color = (direct + (ambient * diffuse_albedo)) + _e88;
+        {
+            float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
+            metal::float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            float _e74 = weft_fabric_d(n_dot_h_1);
+            metal::float3 specular = (_e74 * _e72) * _e73;
+            metal::float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 direct = ((_e77 + specular) * _e67) * n_dot_l_2;
+            metal::float4 _e83 = material.scatter_color;
+            float _e87 = material.scatter_scale;
+            metal::float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
+            color = (direct + (ambient * diffuse_albedo)) + _e88;
+        }
     }
     metal::float3 _e92 = color;
     metal::float3 radiance = metal::clamp(_e92, metal::float3(0.0), metal::float3(65504.0));

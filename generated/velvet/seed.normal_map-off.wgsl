@@ -44,11 +44,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -233,16 +237,18 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e69 = weft_sh_irradiance(_e68);
     let ambient = (_e69 * ao);
     {
-        let _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        let _e73 = weft_f_schlick(f0_1, l_dot_h);
-        let _e74 = weft_fabric_d(n_dot_h_1);
-        let specular = ((_e74 * _e72) * _e73);
-        let _e77 = weft_diffuse_lambert(diffuse_albedo);
-        let direct = (((_e77 + specular) * _e67) * n_dot_l_2);
-        let _e83 = material.scatter_color;
-        let _e87 = material.scatter_scale;
-        let _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-        color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        {
+            let _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
+            let _e73 = weft_f_schlick(f0_1, l_dot_h);
+            let _e74 = weft_fabric_d(n_dot_h_1);
+            let specular = ((_e74 * _e72) * _e73);
+            let _e77 = weft_diffuse_lambert(diffuse_albedo);
+            let direct = (((_e77 + specular) * _e67) * n_dot_l_2);
+            let _e83 = material.scatter_color;
+            let _e87 = material.scatter_scale;
+            let _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
+            color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        }
     }
     let _e92 = color;
     let radiance = clamp(_e92, vec3(0f), vec3(65504f));

@@ -40,11 +40,15 @@ const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;
 const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
 const float WEFT_MIN_ROUGHNESS = 0.045;
 const float WEFT_MIN_N_DOT = 0.0001;
 const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -246,16 +250,18 @@ void main() {
     vec3 _e81 = weft_sh_irradiance(_e80);
     vec3 ambient = (_e81 * ao);
     {
-        float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        vec3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-        float _e86 = weft_fabric_d(n_dot_h_1);
-        vec3 specular = ((_e86 * _e84) * _e85);
-        vec3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        vec3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-        vec4 _e95 = _group_1_binding_0_fs.scatter_color;
-        float _e99 = _group_1_binding_0_fs.scatter_scale;
-        vec3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        {
+            float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
+            vec3 _e85 = weft_f_schlick(f0_1, l_dot_h);
+            float _e86 = weft_fabric_d(n_dot_h_1);
+            vec3 specular = ((_e86 * _e84) * _e85);
+            vec3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
+            vec4 _e95 = _group_1_binding_0_fs.scatter_color;
+            float _e99 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
+            color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        }
     }
     vec3 _e104 = color;
     vec3 radiance = clamp(_e104, vec3(0.0), vec3(65504.0));

@@ -53,11 +53,15 @@ constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
 constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
 constant float WEFT_MIN_ROUGHNESS = 0.045;
 constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 float weft_pow4_(
     float x
@@ -357,16 +361,18 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e81 = weft_sh_irradiance(_e80, weft_frame);
     metal::float3 ambient = _e81 * ao;
     {
-        float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        metal::float3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-        float _e86 = weft_fabric_d(n_dot_h_1);
-        metal::float3 specular = (_e86 * _e84) * _e85;
-        metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float3 direct = ((_e89 + specular) * _e79) * n_dot_l_2;
-        metal::float4 _e95 = material.scatter_color;
-        float _e99 = material.scatter_scale;
-        metal::float3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = (direct + (ambient * diffuse_albedo)) + _e100;
+        {
+            float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
+            metal::float3 _e85 = weft_f_schlick(f0_1, l_dot_h);
+            float _e86 = weft_fabric_d(n_dot_h_1);
+            metal::float3 specular = (_e86 * _e84) * _e85;
+            metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 direct = ((_e89 + specular) * _e79) * n_dot_l_2;
+            metal::float4 _e95 = material.scatter_color;
+            float _e99 = material.scatter_scale;
+            metal::float3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
+            color = (direct + (ambient * diffuse_albedo)) + _e100;
+        }
     }
     metal::float3 _e104 = color;
     metal::float3 radiance = metal::clamp(_e104, metal::float3(0.0), metal::float3(65504.0));

@@ -44,11 +44,15 @@ const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;
 const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
 const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
 const WEFT_MIN_N_DOT: f32 = 0.0001f;
 const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -274,16 +278,18 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e81 = weft_sh_irradiance(_e80);
     let ambient = (_e81 * ao);
     {
-        let _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-        let _e85 = weft_f_schlick(f0_1, l_dot_h);
-        let _e86 = weft_fabric_d(n_dot_h_1);
-        let specular = ((_e86 * _e84) * _e85);
-        let _e89 = weft_diffuse_lambert(diffuse_albedo);
-        let direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-        let _e95 = material.scatter_color;
-        let _e99 = material.scatter_scale;
-        let _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-        color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        {
+            let _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
+            let _e85 = weft_f_schlick(f0_1, l_dot_h);
+            let _e86 = weft_fabric_d(n_dot_h_1);
+            let specular = ((_e86 * _e84) * _e85);
+            let _e89 = weft_diffuse_lambert(diffuse_albedo);
+            let direct = (((_e89 + specular) * _e79) * n_dot_l_2);
+            let _e95 = material.scatter_color;
+            let _e99 = material.scatter_scale;
+            let _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
+            color = ((direct + (ambient * diffuse_albedo)) + _e100);
+        }
     }
     let _e104 = color;
     let radiance = clamp(_e104, vec3(0f), vec3(65504f));

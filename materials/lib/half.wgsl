@@ -74,3 +74,55 @@ fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v: weft_half, n_dot_l: weft_
 fn weft_half_f_schlick(f0: vec3<weft_half>, v_dot_h: weft_half) -> vec3<weft_half> {
     return f0 + (vec3<weft_half>(1.0) - f0) * weft_half_pow5(weft_half(1.0) - v_dot_h);
 }
+
+// ---------------------------------------------------------------- anisotropic GGX
+// Smallest anisotropic GGX width in half precision: the square of
+// WEFT_MIN_ROUGHNESS_HALF. The widths enter only through their reciprocals
+// (<= 126.2, formed in f32), so a_t a_b (>= 6.3e-5, barely a normal f16
+// number) is never formed; the peak 1 / (pi a_t a_b) <= 5.1e3.
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921;
+
+// Normalised anisotropic GGX D times the height-correlated anisotropic Smith
+// visibility times n.l (lib/anisotropic.wgsl's weft_spec_ggx_aniso) in half
+// precision. v, l, h: frame components (T, B, N) of the unit view, light and
+// half vectors; alpha: (a_t, a_b), floored at WEFT_MIN_ALPHA_HALF here.
+// Bounds for unit h: x = T.h / a_t and y = B.h / a_b give x^2 + y^2 <= 1.6e4,
+// q = x^2 + y^2 + (N.h)^2 >= 1/4 (floored at 1e-2 for a degenerate h),
+// D pi = (1 / (a_t a_b)) / q^2 <= 1.6e4, formed as ((1/a_t)(1/a_b) / q) / q,
+// each step <= 1.6e4. V n.l = 0.5 n.l / (n.l |(a_t v_t, a_b v_b, n.v)| +
+// n.v |(a_t l_t, a_b l_b, n.l)|), n.v floored at 1e-3 and the denominator
+// at 1e-4 (as weft_half_v_smith_ggx_correlated_fast_nl). D V n.l is clamped
+// to 65504.
+fn weft_half_spec_ggx_aniso(v: vec3<weft_half>, l: vec3<weft_half>, h: vec3<weft_half>, alpha: vec2<f32>) -> weft_half {
+    let a = max(alpha, vec2<f32>(WEFT_MIN_ALPHA_HALF));
+    let inv_a = vec2<weft_half>(vec2<f32>(1.0) / a);
+    let ah = vec2<weft_half>(a);
+    let x = h.x * inv_a.x;
+    let y = h.y * inv_a.y;
+    let q = max(x * x + y * y + h.z * h.z, weft_half(1e-2));
+    let d = inv_a.x * inv_a.y / q / q * weft_half(WEFT_INV_PI);
+    let nv = max(v.z, weft_half(WEFT_MIN_N_DOT_HALF));
+    let nl = saturate(l.z);
+    let lv = nl * length(vec3<weft_half>(ah.x * v.x, ah.y * v.y, nv));
+    let ll = nv * length(vec3<weft_half>(ah.x * l.x, ah.y * l.y, nl));
+    let v_n_dot_l = weft_half(0.5) * nl / max(lv + ll, weft_half(1e-4));
+    return select(weft_half(0.0), weft_half_min_max(d * v_n_dot_l), h.z > weft_half(0.0));
+}
+
+// ---------------------------------------------------------------- Fresnel
+// Exact unpolarised Fresnel reflectance of a dielectric (lib/brdf.wgsl's
+// weft_f_dielectric) in half precision, for eta in [1, 4] (the caller
+// clamps it): g^2 = eta^2 - 1 + c^2 <= 16, c floored at 1e-3, a and b
+// bounded by 1 in magnitude, the denominators at least 1 for eta >= 1
+// (floored at 1e-3 for safety). In [0, 1].
+fn weft_half_f_dielectric(cos_i: weft_half, eta: weft_half) -> weft_half {
+    let c = clamp(abs(cos_i), weft_half(WEFT_MIN_N_DOT_HALF), weft_half(1.0));
+    let g2 = eta * eta - weft_half(1.0) + c * c;
+    let g = sqrt(max(g2, weft_half(0.0)));
+    let gmc = g - c;
+    let gpc = max(g + c, weft_half(1e-3));
+    let a = gmc / gpc;
+    let b = (c * gpc - weft_half(1.0)) / max(c * gmc + weft_half(1.0), weft_half(1e-3));
+    let f = saturate(weft_half(0.5) * a * a * (weft_half(1.0) + b * b));
+    return select(f, weft_half(1.0), g2 < weft_half(0.0));
+}

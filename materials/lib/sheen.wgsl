@@ -91,6 +91,18 @@ fn weft_sheen_lambda(cos_theta: f32, r: f32) -> f32 {
     return select(hi, lo, c < 0.5);
 }
 
+// The same Lambda with one exp and two evaluations of L instead of two exps
+// and three: the branch is chosen on the cosine first, then only its
+// exponent is formed (L(c) below 1/2, 2 L(1/2) - L(1 - c) above), the same
+// value as weft_sheen_lambda (which computes both sides and selects; a GPU
+// or llvmpipe evaluates both). f32: Lambda reaches ~8e8.
+fn weft_sheen_lambda_one_exp(cos_theta: f32, r: f32) -> f32 {
+    let c = weft_clamp_cos(cos_theta);
+    let low = c < 0.5;
+    let lx = weft_sheen_l(select(1.0 - c, c, low), r);
+    return exp(select(2.0 * weft_sheen_l(0.5, r) - lx, lx, low));
+}
+
 // Charlie visibility V = G2 / (4 n.v n.l), G2 = 1 / (1 + Lambda(v) + Lambda(l))
 // (height-correlated form). Cosines floored at 1e-4, so the denominator is
 // >= 4e-8 and V is finite: 0.25 at n.v = n.l = 1, at most ~1.5e3 at

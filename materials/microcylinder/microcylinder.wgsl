@@ -18,6 +18,13 @@
 //               60 deg), a curve is one range in t (slope linear through
 //               t = 0, 1/2, 1), arc-length weighted; transcendental-free
 //               angle forms; exact dielectric Fresnel as in the reference.
+//   low       = an approximation of the reference: the fast tier's rule
+//               (the same ranges, clipping, 3 nodes, erf-exact cell means)
+//               with each node's slowly varying factors (masking and
+//               reweighting blends, cos(phi_d/2), cos^2(theta_d), the three
+//               exact Fresnel terms) in weft_half (f16 with shader-f16, the
+//               f32 fallback otherwise); theta_h, the support and the
+//               Gaussians in f32 (mc_thread_*_low, lib/microcylinder.wgsl).
 //   reference = the whole tangent curve integrated (32 arc-length-weighted
 //               segments, or the offset list interpolated in <= 1 deg
 //               sub-steps); exact dielectric Fresnel reflection and
@@ -95,6 +102,18 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             s1 = mc_thread_curve_reference(warp, l, v, th1, material.thread1_curve);
             if USE_SECOND_PARA {
                 s2 = mc_thread_curve_reference(weft, l, v, th2, material.thread2_curve);
+            }
+        }
+    } else if WEFT_TIER == TIER_LOW {
+        if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
+            s1 = mc_thread_list_low(warp, l, v, th1, material.thread1_offsets_a, material.thread1_offsets_b, material.thread1_offset_count);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_list_low(weft, l, v, th2, material.thread2_offsets_a, material.thread2_offsets_b, material.thread2_offset_count);
+            }
+        } else {
+            s1 = mc_thread_curve_low(warp, l, v, th1, material.thread1_curve);
+            if USE_SECOND_PARA {
+                s2 = mc_thread_curve_low(weft, l, v, th2, material.thread2_curve);
             }
         }
     } else {

@@ -1,5 +1,6 @@
 // @include "lib/forward.wgsl"
 // @include "lib/anisotropic.wgsl"
+// @include "lib/half.wgsl"
 //
 // satin: seed 001 sec. 7. The standard metallic/roughness surface (base, RMO
 // and normal maps handled as materials/standard) whose direct specular is
@@ -37,6 +38,13 @@
 //               both layers (at the roughness of the layer that reflects
 //               more) instead of one per layer (two per layer with
 //               BIDIRECTIONAL).
+//   low       = an approximation of the reference in half precision: the
+//               fast tier's lobes, weights, Fresnel and diffuse weights in
+//               weft_half (f16 with shader-f16, the f32 fallback
+//               otherwise; weft_half_spec_ggx_aniso in lib/half.wgsl),
+//               roughness floored at 0.089 and each width at 0.089^2 for
+//               the lobes; the split-sum table read at its nearest texel;
+//               one prefiltered lookup as fast, lighting in f32 (satin_low).
 // All: Lambert 1/pi, L2 SH ambient, AO, prefiltered environment along the
 // anisotropic bent reflection vector.
 
@@ -131,6 +139,11 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let c2 = saturate(material.second_specular_color.rgb);
     let f = weft_f_schlick(f0, v_dot_h);
 
+    if WEFT_TIER == TIER_LOW {
+        let color = satin_low(frame, n, v, l, h, f0, diffuse_albedo, roughness, roughness2, anisotropy, c1, c2, noise, ao, light);
+        return vec4<f32>(clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF)), alpha);
+    }
+
     var specular: vec3<f32>;
     var diffuse_kd: vec3<f32>;
     var indirect_specular: vec3<f32>;
@@ -198,4 +211,60 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // a bright light can exceed it).
     let radiance = clamp(direct + indirect, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     return vec4<f32>(radiance, alpha);
+}
+
+// ---------------------------------------------------------------- low
+// The fast tier with every dimensionless term in half precision (weft_half:
+// f16 where the device has shader-f16, else the f32 fallback): the two
+// lobes' D V n.l (weft_half_spec_ggx_aniso), Schlick F, the layer weights,
+// the split-sum albedos and the diffuse weights. Light radiance, SH, the
+// prefiltered environment and the table fetch stay f32; the noise factor is
+// applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
+// limit) and each width at 0.089^2; the table and the environment keep the
+// material's roughness. The table is read at its nearest texel (no filter).
+fn satin_lobe_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a: vec2<f32>) -> weft_half {
+    var s = weft_half_spec_ggx_aniso(vf, lf, hf, a);
+    if BIDIRECTIONAL {
+        s = weft_half(0.5) * (s + weft_half_spec_ggx_aniso(vf, lf, hf, a.yx));
+    }
+    return s;
+}
+
+fn satin_low(
+    frame: mat3x3<f32>, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, h: vec3<f32>,
+    f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness: f32, roughness2: f32,
+    anisotropy: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>,
+) -> vec3<f32> {
+    let n_dot_v = weft_clamp_cos(dot(n, v));
+    let n_dot_l = weft_half(saturate(dot(n, l)));
+    let v_dot_h = weft_half(saturate(dot(v, h)));
+    let f0 = vec3<weft_half>(f0_in);
+    let c1 = vec3<weft_half>(c1_in);
+    let c2 = vec3<weft_half>(c2_in);
+    let t1 = mix(c1, vec3<weft_half>(max(c1.x, max(c1.y, c1.z))), weft_half(0.5));
+    let t2 = mix(c2, vec3<weft_half>(max(c2.x, max(c2.y, c2.z))), weft_half(0.5));
+    let t = t1 + t2;
+    let norm = weft_half(1.0) / max(weft_half(1.0), max(t.x, max(t.y, t.z)));
+    let w1 = t1 * norm;
+    let w2 = t2 * norm;
+    let r_low = max(roughness, WEFT_MIN_ROUGHNESS_HALF);
+    let r2_low = max(roughness2, WEFT_MIN_ROUGHNESS_HALF);
+    let vf = vec3<weft_half>(weft_aniso_to_frame(frame, v));
+    let lf = vec3<weft_half>(weft_aniso_to_frame(frame, l));
+    let hf = vec3<weft_half>(weft_aniso_to_frame(frame, h));
+    let lobe1 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r_low, anisotropy));
+    let lobe2 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r2_low, anisotropy));
+    let f = weft_half_f_schlick(f0, v_dot_h);
+    // The lobes include n.l. Each weighted lobe is <= 65504; their sum could
+    // round past it, so it is formed in f32, with the noise (a texel).
+    let specular = (vec3<f32>(w1 * f) * f32(lobe1) + vec3<f32>(w2 * f) * f32(lobe2)) * (noise * light);
+    let diffuse_kd = max(vec3<weft_half>(1.0) - (w1 + w2) * weft_half_f_schlick(f0, weft_half(n_dot_v)), vec3<weft_half>(0.0));
+    let e1 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut_nearest(n_dot_v, roughness))) * w1;
+    let e2 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut_nearest(n_dot_v, roughness2))) * w2;
+    let r_env = select(roughness2, roughness, max(e1.x, max(e1.y, e1.z)) >= max(e2.x, max(e2.y, e2.z)));
+    let indirect_specular = satin_env(frame, v, anisotropy, r_env) * vec3<f32>(e1 + e2) * noise;
+    let ambient_kd = max(vec3<weft_half>(1.0) - e1 - e2, vec3<weft_half>(0.0));
+    let direct = diffuse_albedo * vec3<f32>(diffuse_kd * (n_dot_l * weft_half(WEFT_INV_PI))) * light + specular;
+    let indirect = indirect_specular * ao + weft_sh_irradiance(n) * ao * vec3<f32>(ambient_kd) * diffuse_albedo;
+    return direct + indirect;
 }

@@ -1,6 +1,7 @@
 // @include "lib/forward.wgsl"
 // @include "lib/silk_brdf.wgsl"
 // (which includes lib/anisotropic.wgsl)
+// @include "lib/half.wgsl"
 //
 // silk: anisotropic weave highlights (seed 002). Diffuse: standard PBR on the
 // vertex normal (optionally the anisotropic one); specular: an anisotropic
@@ -30,6 +31,14 @@
 //                          Schlick-GGX V (lib/brdf.wgsl), Schlick F
 //             ggx          anisotropic GGX (Burley widths), Schlick-GGX V
 //             + Unity's analytic environment BRDF along reflect(-v, n).
+//   low       (approximates reference) the fast tier in half precision:
+//             the GGX lobes (ggx, and both lobes of hair_shifted) as
+//             D V n.l in weft_half (weft_half_spec_ggx_aniso, lib/half.wgsl;
+//             f16 with shader-f16, the f32 fallback otherwise) with the
+//             roughness floored at 0.089 and each width at 0.089^2; Ward's
+//             lobe stays f32 (its prefactor reaches 1e22); Schlick F, the
+//             diffuse weight and the environment BRDF in weft_half; the
+//             split-sum table at its nearest texel as fast; lighting f32.
 // All: Lambert diffuse x (1 - F), L2 SH ambient, metallic workflow.
 
 struct SilkLobe {
@@ -129,6 +138,18 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             let da = silk_hair_d_seed(x_axis, frame[2], h, mx);
             let d = mix(da, weft_d_ggx(n_dot_h, roughness), mask) * spec_scale;
             lobe.value = d * weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness) * n_dot_l;
+        } else if WEFT_TIER == TIER_LOW {
+            // Both lobes in half: the hair lobe in the tilted frame, the
+            // isotropic one as the anisotropic form with equal widths (the
+            // same GGX D and correlated Smith V) in the fibre frame.
+            let tilted = silk_tilt_frame(frame, material.tangent_shift);
+            let tv = vec3<weft_half>(weft_aniso_to_frame(tilted, v));
+            let tl = vec3<weft_half>(weft_aniso_to_frame(tilted, l));
+            let th = vec3<weft_half>(weft_aniso_to_frame(tilted, h));
+            let aniso = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+            let r_low = max(roughness, WEFT_MIN_ROUGHNESS_HALF);
+            let iso = weft_half_spec_ggx_aniso(vec3<weft_half>(v_f), vec3<weft_half>(l_f), vec3<weft_half>(h_f), vec2<f32>(r_low * r_low));
+            lobe.value = f32(mix(aniso, iso, weft_half(mask))) * spec_scale;
         } else {
             let tilted = silk_tilt_frame(frame, material.tangent_shift);
             let tv = weft_aniso_to_frame(tilted, v);
@@ -143,19 +164,27 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let a = weft_aniso_alpha_burley(roughness, k);
         lobe.alpha = a;
         lobe.ibl_roughness = roughness;
-        var vis: f32;
-        if WEFT_TIER == TIER_SEED {
-            vis = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+        if WEFT_TIER == TIER_LOW {
+            let a_low = weft_aniso_alpha_burley(max(roughness, WEFT_MIN_ROUGHNESS_HALF), k);
+            lobe.value = f32(weft_half_spec_ggx_aniso(vec3<weft_half>(v_f), vec3<weft_half>(l_f), vec3<weft_half>(h_f), a_low));
         } else {
-            vis = weft_v_smith_ggx_aniso_correlated(v_f, l_f, a.x, a.y);
+            var vis: f32;
+            if WEFT_TIER == TIER_SEED {
+                vis = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+            } else {
+                vis = weft_v_smith_ggx_aniso_correlated(v_f, l_f, a.x, a.y);
+            }
+            lobe.value = weft_d_ggx_aniso(h_f.x, h_f.y, h_f.z, a.x, a.y) * vis * n_dot_l;
         }
-        lobe.value = weft_d_ggx_aniso(h_f.x, h_f.y, h_f.z, a.x, a.y) * vis * n_dot_l;
     }
 
     // ------------------------------------------------------------ direct
-    let f = weft_f_schlick(f0, v_dot_h);
     let light = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_diff, l));
+    if WEFT_TIER == TIER_LOW {
+        return vec4<f32>(silk_low(frame, n_spec, n_diff, v, n_dot_v, v_dot_h, n_dot_l_diffuse, f0, diffuse_albedo, lobe, light), alpha_out);
+    }
+    let f = weft_f_schlick(f0, v_dot_h);
     let diffuse = (vec3<f32>(1.0) - f) * weft_diffuse_lambert(diffuse_albedo) * n_dot_l_diffuse;
     let direct = (diffuse + f * lobe.value) * light;
 
@@ -185,4 +214,29 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // a bright light exceed it).
     let radiance = clamp(direct + indirect, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     return vec4<f32>(radiance, alpha_out);
+}
+
+// ---------------------------------------------------------------- low
+// The fast tier's shading with its dimensionless terms in half precision
+// (weft_half): Schlick F, the diffuse weight 1 - F and n.l / pi, the
+// environment BRDF from the split-sum table (nearest texel, as fast) and
+// 1 - E. The lobe value comes in f32 (Ward's can exceed f16; the GGX lobes
+// were formed in half and are <= 65504), so F x lobe is formed in f32.
+// Light, SH and the prefiltered environment stay f32.
+fn silk_low(
+    frame: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v: vec3<f32>,
+    n_dot_v: f32, v_dot_h: f32, n_dot_l_diffuse: f32,
+    f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, lobe: SilkLobe, light: vec3<f32>,
+) -> vec3<f32> {
+    let f0 = vec3<weft_half>(f0_in);
+    let f = weft_half_f_schlick(f0, weft_half(v_dot_h));
+    let kd = (vec3<weft_half>(1.0) - f) * (weft_half(n_dot_l_diffuse) * weft_half(WEFT_INV_PI));
+    let direct = (diffuse_albedo * vec3<f32>(kd) + vec3<f32>(f) * lobe.value) * light;
+    let lut = saturate(weft_env_brdf_lut_nearest(n_dot_v, lobe.ibl_roughness));
+    let env_brdf = f0 * weft_half(lut.x) + vec3<weft_half>(weft_half(lut.y));
+    let ambient_kd = max(vec3<weft_half>(1.0) - env_brdf, vec3<weft_half>(0.0));
+    let reflect_n = weft_aniso_bent_normal(frame, v, silk_lobe_anisotropy(lobe.alpha), lobe.ibl_roughness);
+    let prefiltered = weft_prefiltered_radiance(reflect(-v, reflect_n), lobe.ibl_roughness);
+    let indirect = prefiltered * vec3<f32>(env_brdf) + weft_sh_irradiance(n_diff) * vec3<f32>(ambient_kd) * diffuse_albedo;
+    return clamp(direct + indirect, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
 }

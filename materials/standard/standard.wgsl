@@ -160,7 +160,8 @@ fn standard_sphere_map(color_in: vec3<f32>, n: vec3<f32>, world_position: vec3<f
 }
 
 // ---------------------------------------------------------------- low
-// The reference's model with Hammon's visibility (as fast) and every BRDF
+// The reference's model with fast's visibility (Hammon's chord refined by
+// one Newton step; the chord alone was 0.063 worst FLIP) and every BRDF
 // term in half precision (weft_half: f16 where the device has shader-f16,
 // else the f32 fallback). Lighting (light radiance, SH, prefiltered
 // environment) and the table fetch stay f32; the half terms are

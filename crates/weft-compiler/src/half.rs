@@ -19,13 +19,59 @@ use weft_front::{Diagnostics, SourceDb};
 pub const SHADER_F16: &str = "shader-f16";
 
 /// True when the module keeps any f16 value (after specialisation and
-/// compaction only live code's types remain).
+/// compaction only live code's types remain). Besides the type arena, the
+/// functions' expressions are scanned: an f16 scalar or vector made by a
+/// conversion (`weft_half(x)`, `vec3<weft_half>(v)` of an f32 value) or an
+/// f16 literal needs no type handle, so code whose only f16 values are such
+/// has no f16 type in the arena.
 pub fn uses_f16(module: &Module) -> bool {
-    module.types.iter().any(|(_, ty)| match ty.inner {
+    let f16_type = module.types.iter().any(|(_, ty)| match ty.inner {
         TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } => s == Scalar::F16,
         TypeInner::Matrix { scalar, .. } => scalar == Scalar::F16,
         _ => false,
-    })
+    });
+    f16_type
+        || module
+            .functions
+            .iter()
+            .map(|(_, f)| f)
+            .chain(module.entry_points.iter().map(|e| &e.function))
+            .any(|f| f.expressions.iter().any(|(_, e)| is_f16_expression(e)))
+}
+
+/// Adds the f16 scalar type to the arena of a module that computes in f16
+/// but has none there (its f16 values all come from conversions or
+/// literals: `uses_f16`). naga's writers decide from the arena alone whether
+/// a module needs `enable f16;` (WGSL) and the `SPV_KHR_16bit_storage`
+/// extension that declares the 16-bit capabilities (SPIR-V); without the
+/// type, such a module's WGSL does not parse and its SPIR-V fails
+/// `spirv-val --target-env vulkan1.0`. Call after compaction (which would
+/// drop the unused type again), before validation.
+pub fn declare_f16(module: &mut Module) {
+    let in_arena = module
+        .types
+        .iter()
+        .any(|(_, ty)| matches!(ty.inner, TypeInner::Scalar(Scalar::F16)));
+    if !in_arena && uses_f16(module) {
+        module.types.insert(
+            naga::Type {
+                name: None,
+                inner: TypeInner::Scalar(Scalar::F16),
+            },
+            naga::Span::UNDEFINED,
+        );
+    }
+}
+
+fn is_f16_expression(e: &naga::Expression) -> bool {
+    matches!(
+        *e,
+        naga::Expression::As {
+            kind: naga::ScalarKind::Float,
+            convert: Some(2),
+            ..
+        } | naga::Expression::Literal(naga::Literal::F16(_))
+    )
 }
 
 /// True when the material's own sources (not the prelude) name `weft_half`
@@ -83,7 +129,45 @@ pub fn fallback_module(
 
 #[cfg(test)]
 mod tests {
-    use super::has_identifier;
+    use super::{has_identifier, uses_f16};
+
+    fn parse(src: &str) -> naga::Module {
+        naga::front::wgsl::parse_str(src).expect("test WGSL parses")
+    }
+
+    #[test]
+    fn f16_values_made_by_conversions_alone_count() {
+        // No f16 type in the arena: the only f16 values are conversions.
+        let half = parse(
+            "enable f16;\n@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = f16(x) * f16(x);\n    return vec4<f32>(f32(h));\n}\n",
+        );
+        assert!(uses_f16(&half));
+        let single = parse(
+            "@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = x * x;\n    return vec4<f32>(h);\n}\n",
+        );
+        assert!(!uses_f16(&single));
+    }
+
+    #[test]
+    fn declared_f16_reaches_the_writers() {
+        let mut half = parse(
+            "enable f16;\n@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let h = f16(x) * f16(x);\n    return vec4<f32>(f32(h));\n}\n",
+        );
+        super::declare_f16(&mut half);
+        let info = naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::all(),
+        )
+        .validate(&half)
+        .expect("valid");
+        let text =
+            naga::back::wgsl::write_string(&half, &info, naga::back::wgsl::WriterFlags::empty())
+                .expect("WGSL");
+        assert!(text.starts_with("enable f16;"), "{text}");
+    }
 
     #[test]
     fn identifiers_are_whole_words() {

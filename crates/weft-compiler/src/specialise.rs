@@ -57,6 +57,7 @@ pub fn specialise(module: &Module, values: &Bindings) -> Module {
         }
     }
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    crate::half::declare_f16(&mut module);
     module
 }
 

@@ -393,6 +393,7 @@ fn resolve_constants(
         o.id = None;
     }
     naga::compact::compact(&mut resolved, naga::compact::KeepUnused::No);
+    crate::half::declare_f16(&mut resolved);
     let rinfo = validator()
         .validate(&resolved)
         .map_err(|e| format!("fails validation: {}", e.as_inner()))?;

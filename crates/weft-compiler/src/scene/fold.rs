@@ -162,6 +162,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     // 4. The uniform keeps only the members still read.
     shrink_uniform(&mut module, &request.uniform_var)?;
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    crate::half::declare_f16(&mut module);
     Ok(Folded {
         module,
         kept_in_uniform,

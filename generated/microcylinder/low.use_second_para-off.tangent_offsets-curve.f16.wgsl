@@ -1,0 +1,515 @@
+enable f16;
+
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    thread1_color: vec4<f32>,
+    thread1_coverage: f32,
+    thread1_ior: f32,
+    thread1_gamma_s: f32,
+    thread1_gamma_v: f32,
+    thread1_isotropy: f32,
+    thread1_curve: array<vec4<f32>, 9>,
+    thread1_offsets_a: vec4<f32>,
+    thread1_offsets_b: vec4<f32>,
+    thread1_offset_count: i32,
+    thread2_color: vec4<f32>,
+    thread2_coverage: f32,
+    thread2_ior: f32,
+    thread2_gamma_s: f32,
+    thread2_gamma_v: f32,
+    thread2_isotropy: f32,
+    thread2_curve: array<vec4<f32>, 9>,
+    thread2_offsets_a: vec4<f32>,
+    thread2_offsets_b: vec4<f32>,
+    thread2_offset_count: i32,
+    brightness: f32,
+    albedo_map_st: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct McThread {
+    albedo: vec3<f32>,
+    eta: f32,
+    kd: f32,
+    gamma_s: f32,
+    gamma_v: f32,
+}
+
+struct McFrame {
+    u: vec3<f32>,
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct McFastPre {
+    wi: vec3<f32>,
+    wr: vec3<f32>,
+    inv_ri: f32,
+    inv_rr: f32,
+    u_psi: f32,
+    ok: f32,
+    inv_gamma_s: f32,
+    inv_gamma_v: f32,
+    s_lo: f32,
+    s_hi: f32,
+    eta: f32,
+}
+
+struct McFastNode {
+    x: f32,
+    s: f32,
+    v: f32,
+    p: f32,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TANGENT_OFFSETS_CURVE: u32 = 0u;
+const TANGENT_OFFSETS_LIST: u32 = 1u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_LOW: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
+const MC_CURVE_SAMPLES: u32 = 33u;
+const MC_CURVE_SEGMENTS: u32 = 32u;
+const MC_MAX_OFFSETS: i32 = 8i;
+const MC_REF_STEP_DEG: f32 = 1f;
+const MC_REF_MAX_SUBDIV: f32 = 64f;
+const MC_U_INV_TWO_SIGMA2_: f32 = 4.1035185f;
+const MC_SQRT_TWO_PI: f32 = 2.5066283f;
+const MC_DEG: f32 = 0.017453292f;
+const MC_MIN_GAMMA: f32 = 0.0017453292f;
+const MC_MIN_PROJ2_: f32 = 0.00000001f;
+const MC_MIN_COS2_THETA_D: f32 = 0.0001f;
+const MC_MIN_Q: f32 = 0.000001f;
+const MC_INV_SQRT_TWO_PI: f32 = 0.3989423f;
+const MC_FAST_MIN_DT: f32 = 0.1f;
+const MC_GL3_T: f32 = 0.11270166f;
+const MC_GL3_W0_: f32 = 0.2777778f;
+const MC_GL3_W1_: f32 = 0.44444445f;
+const MC_GL3_E0_: f32 = -0.29099444f;
+const MC_GL3_E1_: f32 = 0.42621785f;
+const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_SPAN: f32 = 0.0001f;
+const MC_FAST_SPLIT_DEG: f32 = 60f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var albedo_map: texture_2d<f32>;
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
+    let s_1 = select(-1f, 1f, (n.z >= 0f));
+    let a = (-1f / (s_1 + n.z));
+    let b = ((n.x * n.y) * a);
+    return vec3<f32>((1f + (((s_1 * n.x) * n.x) * a)), (s_1 * b), (-(s_1) * n.x));
+}
+
+fn weft_f0_from_ior(ior: f32) -> f32 {
+    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_3 * q_3);
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_2);
+    let t_2 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_2 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_2, t_2) * s_2);
+    return mat3x3<f32>(t_2, b_1, n_2);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_half_f_dielectric(cos_i: f16, eta: f16) -> f16 {
+    let c = clamp(abs(cos_i), 0.0010004044h, 1h);
+    let g2_ = (((eta * eta) - 1h) + (c * c));
+    let g = sqrt(max(g2_, 0h));
+    let gmc = (g - c);
+    let gpc = max((g + c), 0.0010004044h);
+    let a_1 = (gmc / gpc);
+    let b_2 = (((c * gpc) - 1h) / max(((c * gmc) + 1h), 0.0010004044h));
+    let f = saturate((((0.5h * a_1) * a_1) * (1h + (b_2 * b_2))));
+    return select(f, 1h, (g2_ < 0h));
+}
+
+fn mc_acos_fast(x: f32) -> f32 {
+    let ax = min(abs(x), 1f);
+    let r_1 = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
+    return select(r_1, (WEFT_PI - r_1), (x < 0f));
+}
+
+fn mc_asin_fast(x_1: f32) -> f32 {
+    let _e2 = mc_acos_fast(x_1);
+    return (1.5707964f - _e2);
+}
+
+fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
+    let e_1 = exp(((-0.5f * t) * t));
+    let z = (abs(t) * 0.70710677f);
+    let k = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k * (vec4(0.2548296f) + (k * (vec4(-0.28449672f) + (k * (vec4(1.4214138f) + (k * (vec4(-1.4531521f) + (k * 1.0614054f)))))))));
+    let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
+    return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
+}
+
+fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t_3 = (xe * inv_gamma);
+    let _e3 = mc_normal4_(t_3);
+    let dt = (t_3.yzw - t_3.xyz);
+    let wide = (abs(dt) >= vec3(0.1f));
+    let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
+    let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
+    return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
+}
+
+fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+    let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    let ri2_ = ((li.x * li.x) + (li.z * li.z));
+    let rr2_ = ((lr.x * lr.x) + (lr.z * lr.z));
+    let ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
+    let inv_ri = inverseSqrt(max(ri2_, MC_MIN_PROJ2_));
+    let inv_rr = inverseSqrt(max(rr2_, MC_MIN_PROJ2_));
+    let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
+    let _e50 = mc_acos_fast(cos_psi_d);
+    let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
+    let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
+    let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
+    let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
+    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
+}
+
+fn mc_fast_gl3_(q: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
+    let _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
+    let _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
+    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
+    let surface = dot(_e36, s_3);
+    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
+}
+
+fn mc_fast_half_clip(q_1: McFastPre, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
+    var local: bool;
+
+    let ds = (sb - sa);
+    let flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
+    let inv = (1f / select(ds, 1f, flat));
+    let u0_ = ((q_1.s_lo - sa) * inv);
+    let u1_ = ((q_1.s_hi - sa) * inv);
+    if (sa > q_1.s_lo) {
+        local = (sa < q_1.s_hi);
+    } else {
+        local = false;
+    }
+    let _e31 = local;
+    let uf = select(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f), _e31);
+    let u = select(vec2<f32>(max(min(u0_, u1_), 0f), min(max(u0_, u1_), 1f)), uf, flat);
+    return select(vec2<f32>(2f, -1f), (vec2(ta) + (0.5f * u)), (u.x < u.y));
+}
+
+fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t_1: f32) -> f32 {
+    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t_1) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t_1))), (t_1 < 0.5f));
+}
+
+fn mc_arc_primitive(s: f32) -> f32 {
+    let h = sqrt((1f + (s * s)));
+    return (0.5f * ((s * h) + (sign(s) * log((abs(s) + h)))));
+}
+
+fn mc_fast_half_length(sa_1: f32, sb_1: f32) -> f32 {
+    let ds_1 = (sb_1 - sa_1);
+    let sm = (0.5f * (sa_1 + sb_1));
+    let _e6 = mc_arc_primitive(sb_1);
+    let _e7 = mc_arc_primitive(sa_1);
+    return select(((0.5f * (_e6 - _e7)) / ds_1), (0.5f * sqrt((1f + (sm * sm)))), (abs(ds_1) < MC_FAST_MIN_DSLOPE));
+}
+
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+    var local_1: bool;
+    var local_2: bool;
+
+    let c1_ = saturate(a1_);
+    let c2_ = saturate(a2_);
+    let gap = max(((1f - c1_) - c2_), 0f);
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    if (n_dot_wi > 0f) {
+        local_1 = (n_dot_wr > 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        local_2 = (q_4 > MC_MIN_Q);
+    } else {
+        local_2 = false;
+    }
+    let lit = local_2;
+    return select(vec3(0f), (s_4 / vec3(max(q_4, MC_MIN_Q))), lit);
+}
+
+fn mc_low_node(q_2: McFastPre, ca: f32, sa_2: f32) -> McFastNode {
+    var local_3: bool;
+
+    let si = clamp(((q_2.wi.x * ca) + (q_2.wi.z * sa_2)), -1f, 1f);
+    let sr = clamp(((q_2.wr.x * ca) + (q_2.wr.z * sa_2)), -1f, 1f);
+    let ni = ((q_2.wi.z * ca) - (q_2.wi.x * sa_2));
+    let nr = ((q_2.wr.z * ca) - (q_2.wr.x * sa_2));
+    let ci2_ = ((q_2.wi.y * q_2.wi.y) + (ni * ni));
+    let cr2_ = ((q_2.wr.y * q_2.wr.y) + (nr * nr));
+    if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
+        local_3 = (q_2.ok != 0f);
+    } else {
+        local_3 = false;
+    }
+    let ok_2 = local_3;
+    let inv_ci = inverseSqrt(max(ci2_, MC_MIN_PROJ2_));
+    let inv_cr = inverseSqrt(max(cr2_, MC_MIN_PROJ2_));
+    let ci_f = (ci2_ * inv_ci);
+    let cr_f = (cr2_ * inv_cr);
+    let cos_phi_d = clamp(((((q_2.wi.y * q_2.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
+    let _e81 = mc_acos_fast(cos_phi_d);
+    let u_phi = exp(((-(_e81) * _e81) * MC_U_INV_TWO_SIGMA2_));
+    let _e87 = mc_asin_fast(si);
+    let _e88 = mc_asin_fast(sr);
+    let x_2 = (0.5f * (_e87 + _e88));
+    let ci = f16(ci_f);
+    let cr = f16(cr_f);
+    let eta_2 = f16(q_2.eta);
+    let cos_half_phi = sqrt((0.5h + (0.5h * f16(cos_phi_d))));
+    let mi = max(f16((ni * inv_ci)), 0h);
+    let mr = max(f16((nr * inv_cr)), 0h);
+    let u_1 = f16(u_phi);
+    let m = ((((1h - u_1) * mi) * mr) + (u_1 * min(mi, mr)));
+    let p_i = max(f16((ni * q_2.inv_ri)), 0h);
+    let pr = max(f16((nr * q_2.inv_rr)), 0h);
+    let up = f16(q_2.u_psi);
+    let p = ((((1h - up) * p_i) * pr) + (up * min(p_i, pr)));
+    let cd2_ = max((0.5h + (0.5h * f16(((ci_f * cr_f) + (si * sr))))), 0.000100016594h);
+    let _e149 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_2);
+    let _e151 = weft_half_f_dielectric(ci, eta_2);
+    let _e154 = weft_half_f_dielectric(cr, eta_2);
+    let f_t = ((1h - _e151) * (1h - _e154));
+    let mp = ((m * p) / cd2_);
+    let s_5 = (((_e149 * cos_half_phi) * mp) * ci);
+    let v_2 = ((f_t * mp) * (ci / max((ci + cr), 0.00020003319h)));
+    return McFastNode(x_2, select(0f, f32(s_5), ok_2), select(0f, f32(v_2), ok_2), select(0f, f32(p), ok_2));
+}
+
+fn mc_thread_curve_low(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    let s0_1 = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
+    let s1_2 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
+    let s2_2 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
+    let _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0f);
+    let _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5f);
+    let t0_ = min(_e46.x, _e48.x);
+    let t1_1 = max(max(_e46.y, _e48.y), t0_);
+    let w = (t1_1 - t0_);
+    let t_4 = vec3<f32>((t0_ + (MC_GL3_T * w)), (t0_ + (0.5f * w)), (t1_1 - (MC_GL3_T * w)));
+    let _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    let _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    let _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    let sl = vec3<f32>(_e68, _e70, _e72);
+    let inv_len = inverseSqrt((vec3(1f) + (sl * sl)));
+    let _e83 = mc_low_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    let _e88 = mc_low_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    let _e93 = mc_low_node(_e5, inv_len.z, (sl.z * inv_len.z));
+    let r_2 = ((vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * w) / inv_len);
+    let _e100 = mc_fast_half_length(s0_1, s1_2);
+    let _e101 = mc_fast_half_length(s1_2, s2_2);
+    let total = (_e100 + _e101);
+    let _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return (_e103 / vec4(max(total, 0.000001f)));
+}
+
+fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
+    return McThread(saturate((color * tint)), clamp(ior_1, 1f, 4f), saturate(isotropy), (max(gamma_s_deg, 0f) * MC_DEG), (max(gamma_v_deg, 0f) * MC_DEG));
+}
+
+fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
+    let _e1 = weft_f0_from_ior(eta_1);
+    return (_e1 + ((1f - _e1) / 21f));
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var s1_: vec4<f32> = vec4(0f);
+    var s2_: vec4<f32> = vec4(0f);
+
+    let _e4 = material.albedo_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = textureSample(albedo_map, material_sampler, _e5);
+    let tint_1 = max(_e8.xyz, vec3(0f));
+    let _e15 = material.thread1_color;
+    let _e19 = material.thread1_ior;
+    let _e22 = material.thread1_isotropy;
+    let _e25 = material.thread1_gamma_s;
+    let _e28 = material.thread1_gamma_v;
+    let _e29 = microcylinder_thread(_e15.xyz, _e19, _e22, _e25, _e28, tint_1);
+    let _e32 = material.thread2_color;
+    let _e36 = material.thread2_ior;
+    let _e39 = material.thread2_isotropy;
+    let _e42 = material.thread2_gamma_s;
+    let _e45 = material.thread2_gamma_v;
+    let _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
+    let _e49 = material.thread1_coverage;
+    let a1_1 = saturate(_e49);
+    let _e53 = material.thread2_coverage;
+    let a2_1 = select(0f, saturate(_e53), false);
+    let _e60 = material.brightness;
+    let brightness = max(_e60, 0f);
+    let _e68 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
+    let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
+    let t_5 = _e72[0];
+    let b_3 = _e72[1];
+    let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
+    let _e83 = weft_main_light_direction();
+    let warp = McFrame(t_5, b_3, _e70);
+    let weft = McFrame(b_3, t_5, _e70);
+    {
+        {
+            {
+                let _e94 = material.thread1_curve;
+                let _e95 = mc_thread_curve_low(warp, _e83, _e82, _e29, _e94);
+                s1_ = _e95;
+            }
+        }
+    }
+    let _e96 = s1_;
+    let _e97 = s2_;
+    let _e100 = mc_combine(_e96, _e97, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
+    let _e101 = weft_main_light_radiance();
+    let direct = (_e100 * _e101);
+    let _e105 = microcylinder_mean_fresnel(_e29.eta);
+    let amb1_ = (_e29.albedo + vec3(_e105));
+    let _e110 = microcylinder_mean_fresnel(_e46.eta);
+    let amb2_ = (_e46.albedo + vec3(_e110));
+    let cov = (a1_1 + a2_1);
+    let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
+    let _e124 = weft_sh_irradiance(_e70);
+    let ambient = (_e124 * ambient_albedo);
+    let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, 1f);
+}

@@ -1,0 +1,636 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+typedef float weft_half;
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 thread1_color;
+    float thread1_coverage;
+    float thread1_ior;
+    float thread1_gamma_s;
+    float thread1_gamma_v;
+    float thread1_isotropy;
+    char _pad6[12];
+    type_5 thread1_curve;
+    metal::float4 thread1_offsets_a;
+    metal::float4 thread1_offsets_b;
+    int thread1_offset_count;
+    char _pad10[12];
+    metal::float4 thread2_color;
+    float thread2_coverage;
+    float thread2_ior;
+    float thread2_gamma_s;
+    float thread2_gamma_v;
+    float thread2_isotropy;
+    char _pad16[12];
+    type_5 thread2_curve;
+    metal::float4 thread2_offsets_a;
+    metal::float4 thread2_offsets_b;
+    int thread2_offset_count;
+    float brightness;
+    char _pad21[8];
+    metal::float4 albedo_map_st;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct McThread {
+    metal::packed_float3 albedo;
+    float eta;
+    float kd;
+    float gamma_s;
+    float gamma_v;
+    char _pad5[4];
+};
+struct McFrame {
+    metal::float3 u;
+    metal::float3 v;
+    metal::float3 n;
+};
+struct McFastPre {
+    metal::float3 wi;
+    metal::packed_float3 wr;
+    float inv_ri;
+    float inv_rr;
+    float u_psi;
+    float ok;
+    float inv_gamma_s;
+    float inv_gamma_v;
+    float s_lo;
+    float s_hi;
+    float eta;
+};
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct type_12 {
+    metal::float4 inner[2];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TANGENT_OFFSETS_CURVE = 0u;
+constant uint TANGENT_OFFSETS_LIST = 1u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_LOW = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
+constant uint MC_CURVE_SAMPLES = 33u;
+constant uint MC_CURVE_SEGMENTS = 32u;
+constant int MC_MAX_OFFSETS = 8;
+constant float MC_REF_STEP_DEG = 1.0;
+constant float MC_REF_MAX_SUBDIV = 64.0;
+constant float MC_U_INV_TWO_SIGMA2_ = 4.1035185;
+constant float MC_SQRT_TWO_PI = 2.5066283;
+constant float MC_DEG = 0.017453292;
+constant float MC_MIN_GAMMA = 0.0017453292;
+constant float MC_MIN_PROJ2_ = 0.00000001;
+constant float MC_MIN_COS2_THETA_D = 0.0001;
+constant float MC_MIN_Q = 0.000001;
+constant float MC_INV_SQRT_TWO_PI = 0.3989423;
+constant float MC_FAST_MIN_DT = 0.1;
+constant float MC_GL3_T = 0.11270166;
+constant float MC_GL3_W0_ = 0.2777778;
+constant float MC_GL3_W1_ = 0.44444445;
+constant float MC_GL3_E0_ = -0.29099444;
+constant float MC_GL3_E1_ = 0.42621785;
+constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_SPAN = 0.0001;
+constant float MC_FAST_SPLIT_DEG = 60.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s_1 = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s_1 + n.z);
+    float b = (n.x * n.y) * a;
+    return metal::float3(1.0 + (((s_1 * n.x) * n.x) * a), s_1 * b, -(s_1) * n.x);
+}
+
+float weft_f0_from_ior(
+    float ior
+) {
+    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_3 * q_3;
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t_2 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_2, t_2) * s_2;
+    return metal::float3x3(t_2, b_1, n_2);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+weft_half weft_half_f_dielectric(
+    weft_half cos_i,
+    weft_half eta
+) {
+    float c = metal::clamp(metal::abs(cos_i), 0.001, 1.0);
+    weft_half g2_ = ((eta * eta) - 1.0) + (c * c);
+    float g = metal::sqrt(metal::max(g2_, 0.0));
+    float gmc = g - c;
+    float gpc = metal::max(g + c, 0.001);
+    float a_1 = gmc / gpc;
+    float b_2 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.001);
+    float f = metal::saturate(((0.5 * a_1) * a_1) * (1.0 + (b_2 * b_2)));
+    return (g2_ < 0.0) ? 1.0 : f;
+}
+
+float mc_acos_fast(
+    float x
+) {
+    float ax = metal::min(metal::abs(x), 1.0);
+    float r_1 = metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))));
+    return (x < 0.0) ? (WEFT_PI - r_1) : r_1;
+}
+
+float mc_asin_fast(
+    float x_1
+) {
+    float _e2 = mc_acos_fast(x_1);
+    return 1.5707964 - _e2;
+}
+
+type_12 mc_normal4_(
+    metal::float4 t
+) {
+    metal::float4 e_1 = metal::exp((-0.5 * t) * t);
+    metal::float4 z = metal::abs(t) * 0.70710677;
+    metal::float4 k = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
+    metal::float4 poly = k * (metal::float4(0.2548296) + (k * (metal::float4(-0.28449672) + (k * (metal::float4(1.4214138) + (k * (metal::float4(-1.4531521) + (k * 1.0614054))))))));
+    metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
+    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+}
+
+metal::float3 mc_cell_means(
+    metal::float4 xe,
+    float inv_gamma
+) {
+    metal::float4 t_3 = xe * inv_gamma;
+    type_12 _e3 = mc_normal4_(t_3);
+    metal::float3 dt = t_3.yzw - t_3.xyz;
+    metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
+    metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
+    metal::float3 trap = 0.5 * (_e3.inner[0].xyz + _e3.inner[0].yzw);
+    return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
+}
+
+McFastPre mc_fast_pre(
+    McFrame fr,
+    metal::float3 wi,
+    metal::float3 wr,
+    McThread th
+) {
+    metal::float3 li = metal::float3(metal::dot(wi, fr.u), metal::dot(wi, fr.v), metal::dot(wi, fr.n));
+    metal::float3 lr = metal::float3(metal::dot(wr, fr.u), metal::dot(wr, fr.v), metal::dot(wr, fr.n));
+    float ri2_ = (li.x * li.x) + (li.z * li.z);
+    float rr2_ = (lr.x * lr.x) + (lr.z * lr.z);
+    bool ok_1 = metal::min(ri2_, rr2_) >= MC_MIN_PROJ2_;
+    float inv_ri = metal::rsqrt(metal::max(ri2_, MC_MIN_PROJ2_));
+    float inv_rr = metal::rsqrt(metal::max(rr2_, MC_MIN_PROJ2_));
+    float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
+    float _e50 = mc_acos_fast(cos_psi_d);
+    float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
+    float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
+    float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
+    float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
+    float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
+    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
+}
+
+metal::float4 mc_fast_gl3_(
+    McFastPre q,
+    McThread th_1,
+    McFastNode n0_,
+    McFastNode n1_,
+    McFastNode n2_,
+    metal::float3 r
+) {
+    metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
+    metal::float3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
+    metal::float3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
+    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
+    float surface = metal::dot(_e36, s_3);
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
+    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
+}
+
+metal::float2 mc_fast_half_clip(
+    McFastPre q_1,
+    float sa,
+    float sb,
+    float ta
+) {
+    bool local = {};
+    float ds = sb - sa;
+    bool flat = metal::abs(ds) < MC_FAST_MIN_DSLOPE;
+    float inv = 1.0 / (flat ? 1.0 : ds);
+    float u0_ = (q_1.s_lo - sa) * inv;
+    float u1_ = (q_1.s_hi - sa) * inv;
+    if (sa > q_1.s_lo) {
+        local = sa < q_1.s_hi;
+    } else {
+        local = false;
+    }
+    bool _e31 = local;
+    metal::float2 uf = _e31 ? metal::float2(0.0, 1.0) : metal::float2(1.0, 0.0);
+    metal::float2 u = flat ? uf : metal::float2(metal::max(metal::min(u0_, u1_), 0.0), metal::min(metal::max(u0_, u1_), 1.0));
+    return (u.x < u.y) ? (metal::float2(ta) + (0.5 * u)) : metal::float2(2.0, -1.0);
+}
+
+float mc_fast_slope(
+    float s0_,
+    float s1_1,
+    float s2_1,
+    float t_1
+) {
+    return (t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0)));
+}
+
+float mc_arc_primitive(
+    float s
+) {
+    float h = metal::sqrt(1.0 + (s * s));
+    return 0.5 * ((s * h) + (metal::sign(s) * metal::log(metal::abs(s) + h)));
+}
+
+float mc_fast_half_length(
+    float sa_1,
+    float sb_1
+) {
+    float ds_1 = sb_1 - sa_1;
+    float sm = 0.5 * (sa_1 + sb_1);
+    float _e6 = mc_arc_primitive(sb_1);
+    float _e7 = mc_arc_primitive(sa_1);
+    return (metal::abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * metal::sqrt(1.0 + (sm * sm))) : ((0.5 * (_e6 - _e7)) / ds_1);
+}
+
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_4 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local_1 = n_dot_wr > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        local_2 = q_4 > MC_MIN_Q;
+    } else {
+        local_2 = false;
+    }
+    bool lit = local_2;
+    return lit ? (s_4 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+}
+
+McFastNode mc_low_node(
+    McFastPre q_2,
+    float ca,
+    float sa_2
+) {
+    bool local_3 = {};
+    float si = metal::clamp((q_2.wi.x * ca) + (q_2.wi.z * sa_2), -1.0, 1.0);
+    float sr = metal::clamp((q_2.wr[0] * ca) + (q_2.wr[2] * sa_2), -1.0, 1.0);
+    float ni = (q_2.wi.z * ca) - (q_2.wi.x * sa_2);
+    float nr = (q_2.wr[2] * ca) - (q_2.wr[0] * sa_2);
+    float ci2_ = (q_2.wi.y * q_2.wi.y) + (ni * ni);
+    float cr2_ = (q_2.wr[1] * q_2.wr[1]) + (nr * nr);
+    if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
+        local_3 = q_2.ok != 0.0;
+    } else {
+        local_3 = false;
+    }
+    bool ok_2 = local_3;
+    float inv_ci = metal::rsqrt(metal::max(ci2_, MC_MIN_PROJ2_));
+    float inv_cr = metal::rsqrt(metal::max(cr2_, MC_MIN_PROJ2_));
+    float ci_f = ci2_ * inv_ci;
+    float cr_f = cr2_ * inv_cr;
+    float cos_phi_d = metal::clamp((((q_2.wi.y * q_2.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
+    float _e81 = mc_acos_fast(cos_phi_d);
+    float u_phi = metal::exp((-(_e81) * _e81) * MC_U_INV_TWO_SIGMA2_);
+    float _e87 = mc_asin_fast(si);
+    float _e88 = mc_asin_fast(sr);
+    float x_2 = 0.5 * (_e87 + _e88);
+    float ci = static_cast<float>(ci_f);
+    float cr = static_cast<float>(cr_f);
+    float eta_2 = static_cast<float>(q_2.eta);
+    float cos_half_phi = metal::sqrt(0.5 + (0.5 * static_cast<float>(cos_phi_d)));
+    float mi = metal::max(static_cast<float>(ni * inv_ci), 0.0);
+    float mr = metal::max(static_cast<float>(nr * inv_cr), 0.0);
+    float u_1 = static_cast<float>(u_phi);
+    float m = (((1.0 - u_1) * mi) * mr) + (u_1 * metal::min(mi, mr));
+    float p_i = metal::max(static_cast<float>(ni * q_2.inv_ri), 0.0);
+    float pr = metal::max(static_cast<float>(nr * q_2.inv_rr), 0.0);
+    float up = static_cast<float>(q_2.u_psi);
+    float p = (((1.0 - up) * p_i) * pr) + (up * metal::min(p_i, pr));
+    float cd2_ = metal::max(0.5 + (0.5 * static_cast<float>((ci_f * cr_f) + (si * sr))), 0.0001);
+    weft_half _e149 = weft_half_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, eta_2);
+    weft_half _e151 = weft_half_f_dielectric(ci, eta_2);
+    weft_half _e154 = weft_half_f_dielectric(cr, eta_2);
+    float f_t = (1.0 - _e151) * (1.0 - _e154);
+    float mp = (m * p) / cd2_;
+    float s_5 = ((_e149 * cos_half_phi) * mp) * ci;
+    float v_2 = (f_t * mp) * (ci / metal::max(ci + cr, 0.0002));
+    return McFastNode {x_2, ok_2 ? static_cast<float>(s_5) : 0.0, ok_2 ? static_cast<float>(v_2) : 0.0, ok_2 ? static_cast<float>(p) : 0.0};
+}
+
+metal::float4 mc_thread_curve_low(
+    McFrame fr_1,
+    metal::float3 wi_1,
+    metal::float3 wr_1,
+    McThread th_2,
+    type_5 heights
+) {
+    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    float s0_1 = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
+    float s1_2 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
+    float s2_2 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
+    metal::float2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
+    metal::float2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
+    float t0_ = metal::min(_e46.x, _e48.x);
+    float t1_1 = metal::max(metal::max(_e46.y, _e48.y), t0_);
+    float w = t1_1 - t0_;
+    metal::float3 t_4 = metal::float3(t0_ + (MC_GL3_T * w), t0_ + (0.5 * w), t1_1 - (MC_GL3_T * w));
+    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
+    metal::float3 sl = metal::float3(_e68, _e70, _e72);
+    metal::float3 inv_len = metal::rsqrt(metal::float3(1.0) + (sl * sl));
+    McFastNode _e83 = mc_low_node(_e5, inv_len.x, sl.x * inv_len.x);
+    McFastNode _e88 = mc_low_node(_e5, inv_len.y, sl.y * inv_len.y);
+    McFastNode _e93 = mc_low_node(_e5, inv_len.z, sl.z * inv_len.z);
+    metal::float3 r_2 = (metal::float3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len;
+    float _e100 = mc_fast_half_length(s0_1, s1_2);
+    float _e101 = mc_fast_half_length(s1_2, s2_2);
+    float total = _e100 + _e101;
+    metal::float4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
+    return _e103 / metal::float4(metal::max(total, 0.000001));
+}
+
+McThread microcylinder_thread(
+    metal::float3 color,
+    float ior_1,
+    float isotropy,
+    float gamma_s_deg,
+    float gamma_v_deg,
+    metal::float3 tint
+) {
+    return McThread {metal::saturate(color * tint), metal::clamp(ior_1, 1.0, 4.0), metal::saturate(isotropy), metal::max(gamma_s_deg, 0.0) * MC_DEG, metal::max(gamma_v_deg, 0.0) * MC_DEG};
+}
+
+float microcylinder_mean_fresnel(
+    float eta_1
+) {
+    float _e1 = weft_f0_from_ior(eta_1);
+    return _e1 + ((1.0 - _e1) / 21.0);
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> albedo_map [[texture(0)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float4 s1_ = metal::float4(0.0);
+    metal::float4 s2_ = metal::float4(0.0);
+    metal::float4 _e4 = material.albedo_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = albedo_map.sample(material_sampler, _e5);
+    metal::float3 tint_1 = metal::max(_e8.xyz, metal::float3(0.0));
+    metal::float4 _e15 = material.thread1_color;
+    float _e19 = material.thread1_ior;
+    float _e22 = material.thread1_isotropy;
+    float _e25 = material.thread1_gamma_s;
+    float _e28 = material.thread1_gamma_v;
+    McThread _e29 = microcylinder_thread(_e15.xyz, _e19, _e22, _e25, _e28, tint_1);
+    metal::float4 _e32 = material.thread2_color;
+    float _e36 = material.thread2_ior;
+    float _e39 = material.thread2_isotropy;
+    float _e42 = material.thread2_gamma_s;
+    float _e45 = material.thread2_gamma_v;
+    McThread _e46 = microcylinder_thread(_e32.xyz, _e36, _e39, _e42, _e45, tint_1);
+    float _e49 = material.thread1_coverage;
+    float a1_1 = metal::saturate(_e49);
+    float _e53 = material.thread2_coverage;
+    float a2_1 = true ? metal::saturate(_e53) : 0.0;
+    float _e60 = material.brightness;
+    float brightness = metal::max(_e60, 0.0);
+    metal::float3 _e68 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
+    metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
+    metal::float3 t_5 = _e72[0];
+    metal::float3 b_3 = _e72[1];
+    metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
+    metal::float3 _e83 = weft_main_light_direction(weft_frame);
+    McFrame warp = McFrame {t_5, b_3, _e70};
+    McFrame weft = McFrame {b_3, t_5, _e70};
+    {
+        {
+            {
+                type_5 _e94 = material.thread1_curve;
+                metal::float4 _e95 = mc_thread_curve_low(warp, _e83, _e82, _e29, _e94);
+                s1_ = _e95;
+                {
+                    type_5 _e98 = material.thread2_curve;
+                    metal::float4 _e99 = mc_thread_curve_low(weft, _e83, _e82, _e46, _e98);
+                    s2_ = _e99;
+                }
+            }
+        }
+    }
+    metal::float4 _e100 = s1_;
+    metal::float4 _e101 = s2_;
+    metal::float3 _e104 = mc_combine(_e100, _e101, a1_1, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
+    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e104 * _e105;
+    float _e109 = microcylinder_mean_fresnel(_e29.eta);
+    metal::float3 amb1_ = _e29.albedo + metal::float3(_e109);
+    float _e114 = microcylinder_mean_fresnel(_e46.eta);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(_e114);
+    float cov = a1_1 + a2_1;
+    metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
+    metal::float3 _e128 = weft_sh_irradiance(_e70, weft_frame);
+    metal::float3 ambient = _e128 * ambient_albedo;
+    metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, 1.0) };
+}

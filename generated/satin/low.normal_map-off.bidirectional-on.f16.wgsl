@@ -1,0 +1,424 @@
+enable f16;
+
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    noise_map_st: vec4<f32>,
+    specular_intensity: f32,
+    specular_color: vec4<f32>,
+    second_specular_color: vec4<f32>,
+    second_layer_width: f32,
+    anisotropy: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct SatinLayers {
+    narrow: vec2<f32>,
+    wide: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ANISO_ALPHA: f32 = 0.001f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var noise_map: texture_2d<f32>;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s_1 = select(-1f, 1f, (n_1.z >= 0f));
+    let a_1 = (-1f / (s_1 + n_1.z));
+    let b = ((n_1.x * n_1.y) * a_1);
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_1: f32) -> f32 {
+    let r = saturate(roughness_1);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_2);
+    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
+    let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
+    let texel = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel, 0i);
+    return _e16.xy;
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_3);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_2 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_3, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_3);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+}
+
+fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
+    let _e2 = weft_clamp_roughness(roughness_4);
+    let a_2 = (_e2 * _e2);
+    let k_1 = clamp(anisotropy, -1f, 1f);
+    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
+}
+
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_1: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+    let k_2 = clamp(anisotropy_1, -1f, 1f);
+    let n_5 = frame_1[2];
+    let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
+    let aniso_t = cross(dir_1, v_1);
+    let aniso_n = cross(aniso_t, dir_1);
+    let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
+    return _e22;
+}
+
+fn weft_half_min_max(x_2: f16) -> f16 {
+    return min(x_2, 65504h);
+}
+
+fn weft_half_pow5_(x_3: f16) -> f16 {
+    let x2_1 = (x_3 * x_3);
+    return ((x2_1 * x2_1) * x_3);
+}
+
+fn weft_half_f_schlick(f0_2: vec3<f16>, v_dot_h_1: f16) -> vec3<f16> {
+    let _e7 = weft_half_pow5_((1h - v_dot_h_1));
+    return (f0_2 + ((vec3(1h) - f0_2) * _e7));
+}
+
+fn weft_half_spec_ggx_aniso(v_2: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha: vec2<f32>) -> f16 {
+    let a_3 = max(alpha, vec2(0.007921f));
+    let inv_a = vec2<f16>((vec2(1f) / a_3));
+    let ah = vec2<f16>(a_3);
+    let x_4 = (h.x * inv_a.x);
+    let y = (h.y * inv_a.y);
+    let q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.010002136h);
+    let d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31835938h);
+    let nv = max(v_2.z, 0.0010004044h);
+    let nl = saturate(l.z);
+    let lv = (nl * length(vec3<f16>((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    let ll = (nv * length(vec3<f16>((ah.x * l.x), (ah.y * l.y), nl)));
+    let v_n_dot_l = ((0.5h * nl) / max((lv + ll), 0.000100016594h));
+    let _e65 = weft_half_min_max((d * v_n_dot_l));
+    return select(0h, _e65, (h.z > 0h));
+}
+
+fn satin_env(frame_2: mat3x3<f32>, v_3: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+    var bent_1: vec3<f32>;
+    var c_1: vec3<f32>;
+
+    let _e4 = weft_aniso_bent_normal(frame_2, v_3, k, roughness_6);
+    bent_1 = _e4;
+    let _e7 = bent_1;
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_3), _e7), roughness_6);
+    c_1 = _e9;
+    {
+        let _e12 = weft_aniso_bent_normal(frame_2, v_3, -(k), roughness_6);
+        bent_1 = _e12;
+        let _e13 = c_1;
+        let _e15 = bent_1;
+        let _e17 = weft_prefiltered_radiance(reflect(-(v_3), _e15), roughness_6);
+        c_1 = (0.5f * (_e13 + _e17));
+    }
+    let _e21 = c_1;
+    return _e21;
+}
+
+fn satin_lobe_low(vf: vec3<f16>, lf: vec3<f16>, hf: vec3<f16>, a: vec2<f32>) -> f16 {
+    var s: f16;
+
+    let _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
+    s = _e4;
+    {
+        let _e7 = s;
+        let _e9 = weft_half_spec_ggx_aniso(vf, lf, hf, a.yx);
+        s = (0.5h * (_e7 + _e9));
+    }
+    let _e12 = s;
+    return _e12;
+}
+
+fn satin_low(frame_3: mat3x3<f32>, n_4: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>, h_1: vec3<f32>, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_7: f32, roughness2_: f32, anisotropy_2: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>) -> vec3<f32> {
+    let _e16 = weft_clamp_cos(dot(n_4, v_4));
+    let n_dot_l = f16(saturate(dot(n_4, l_1)));
+    let v_dot_h_2 = f16(saturate(dot(v_4, h_1)));
+    let f0_3 = vec3<f16>(f0_in);
+    let c1_ = vec3<f16>(c1_in);
+    let c2_ = vec3<f16>(c2_in);
+    let t1_ = mix(c1_, vec3(max(c1_.x, max(c1_.y, c1_.z))), 0.5h);
+    let t2_ = mix(c2_, vec3(max(c2_.x, max(c2_.y, c2_.z))), 0.5h);
+    let t_1 = (t1_ + t2_);
+    let norm = (1h / max(1h, max(t_1.x, max(t_1.y, t_1.z))));
+    let w1_ = (t1_ * norm);
+    let w2_ = (t2_ * norm);
+    let r_low = max(roughness_7, WEFT_MIN_ROUGHNESS_HALF);
+    let r2_low = max(roughness2_, WEFT_MIN_ROUGHNESS_HALF);
+    let _e58 = weft_aniso_to_frame(frame_3, v_4);
+    let vf_1 = vec3<f16>(_e58);
+    let _e60 = weft_aniso_to_frame(frame_3, l_1);
+    let lf_1 = vec3<f16>(_e60);
+    let _e62 = weft_aniso_to_frame(frame_3, h_1);
+    let hf_1 = vec3<f16>(_e62);
+    let _e64 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    let _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
+    let _e66 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
+    let _e67 = satin_lobe_low(vf_1, lf_1, hf_1, _e66);
+    let _e68 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    let specular_1 = (((vec3<f32>((w1_ * _e68)) * f32(_e65)) + (vec3<f32>((w2_ * _e68)) * f32(_e67))) * (noise * light));
+    let _e84 = weft_half_f_schlick(f0_3, f16(_e16));
+    let diffuse_kd_1 = max((vec3(1h) - ((w1_ + w2_) * _e84)), vec3(0h));
+    let _e90 = weft_env_brdf_lut_nearest(_e16, roughness_7);
+    let _e91 = weft_env_brdf_from_lut(f0_in, _e90);
+    let e1_ = (vec3<f16>(_e91) * w1_);
+    let _e94 = weft_env_brdf_lut_nearest(_e16, roughness2_);
+    let _e95 = weft_env_brdf_from_lut(f0_in, _e94);
+    let e2_ = (vec3<f16>(_e95) * w2_);
+    let r_env = select(roughness2_, roughness_7, (max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))));
+    let _e110 = satin_env(frame_3, v_4, anisotropy_2, r_env);
+    let indirect_specular_1 = ((_e110 * vec3<f32>((e1_ + e2_))) * noise);
+    let ambient_kd_1 = max(((vec3(1h) - e1_) - e2_), vec3(0h));
+    let direct = (((diffuse_albedo * vec3<f32>((diffuse_kd_1 * (n_dot_l * 0.31835938h)))) * light) + specular_1);
+    let _e130 = weft_sh_irradiance(n_4);
+    let indirect = ((indirect_specular_1 * ao) + (((_e130 * ao) * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
+    return (direct + indirect);
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var layers: SatinLayers;
+    var specular: vec3<f32>;
+    var diffuse_kd: vec3<f32>;
+    var indirect_specular: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var bent: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha_1 = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_8 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao_1 = saturate(mix(1f, rmo.z, _e36));
+    let _e42 = material.anisotropy;
+    let anisotropy_3 = clamp(_e42, -1f, 1f);
+    let _e48 = material.second_layer_width;
+    let width = clamp(_e48, 1f, 4f);
+    let roughness2_1 = min((roughness_8 * width), 1f);
+    let _e58 = material.noise_map_st;
+    let _e59 = weft_transform_uv(in_1.uv0_, _e58);
+    let _e62 = textureSample(noise_map, material_sampler, _e59);
+    let noise_1 = (0.5f + (0.5f * saturate(_e62.x)));
+    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
+    n = _e76;
+    let _e78 = n;
+    let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
+    let _e81 = weft_main_light_direction();
+    let _e83 = n;
+    let _e84 = weft_safe_normalize((_e81 + _e74), _e83);
+    let _e85 = n;
+    let _e87 = weft_clamp_cos(dot(_e85, _e74));
+    let _e88 = n;
+    let n_dot_l_1 = saturate(dot(_e88, _e81));
+    let v_dot_h_3 = saturate(dot(_e74, _e84));
+    let _e93 = weft_main_light_radiance();
+    let _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
+    layers.narrow = _e96;
+    let _e98 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
+    layers.wide = _e98;
+    let f0_4 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo_1 = (base * (1f - metallic));
+    let _e107 = material.specular_color;
+    let c1_1 = saturate(_e107.xyz);
+    let _e112 = material.second_specular_color;
+    let c2_1 = saturate(_e112.xyz);
+    let _e115 = weft_f_schlick(f0_4, v_dot_h_3);
+    {
+        let _e116 = n;
+        let _e117 = satin_low(_e80, _e116, _e74, _e81, _e84, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e93);
+        return vec4<f32>(clamp(_e117, vec3(0f), vec3(65504f)), alpha_1);
+    }
+}

@@ -1,0 +1,370 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    float smoothness;
+    float metallic;
+    uint diffuse_uses_aniso_normal;
+    float anisotropy;
+    vec4 aniso_normal_map_st;
+    float aniso_normal_strength;
+    float tangent_shift;
+    float aniso_gloss;
+    float aniso_spec;
+    float aniso_mask;
+    float flow_strength;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct SilkLobe {
+    float value;
+    vec2 alpha;
+    float ibl_roughness;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint ANISO_MODEL_WARD = 0u;
+const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
+const uint ANISO_MODEL_GGX = 2u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ANISO_ALPHA = 0.001;
+const float SILK_MIN_ALPHA = 0.001;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
+    float b = ((n.x * n.y) * a);
+    return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
+    float _e4 = weft_specular_mip(roughness_2);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+    vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    return _e16.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_2, t) * s_1);
+    return mat3x3(t, b_1, n_2);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x) {
+    return vec3(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_4) {
+    float k = clamp(anisotropy, -1.0, 1.0);
+    vec3 n_3 = frame_2[2];
+    vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * clamp((5.0 * clamp(roughness_4, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_hair_mx_seed(float smoothness, float gloss) {
+    float p = (1.0 - clamp((smoothness * gloss), 0.0, 1.0));
+    float rx = (p * p);
+    float rx_safe = ((rx == 0.0) ? 0.0001 : rx);
+    return (rx_safe * rx_safe);
+}
+
+mat3x3 silk_tilt_frame(mat3x3 frame_3, float shift) {
+    float s_2 = clamp(shift, -1.0, 1.0);
+    vec3 _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    vec3 _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return mat3x3(_e10, frame_3[1], _e16);
+}
+
+float silk_lobe_anisotropy(vec2 alpha) {
+    float at = max(alpha.x, SILK_MIN_ALPHA);
+    float ab = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+float weft_half_min_max(float x_1) {
+    return min(x_1, 65504.0);
+}
+
+float weft_half_pow5_(float x_2) {
+    float x2_ = (x_2 * x_2);
+    return ((x2_ * x2_) * x_2);
+}
+
+vec3 weft_half_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e7 = weft_half_pow5_((1.0 - v_dot_h));
+    return (f0_ + ((vec3(1.0) - f0_) * _e7));
+}
+
+float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha_1) {
+    vec2 a_1 = max(alpha_1, vec2(0.007921));
+    vec2 inv_a = vec2((vec2(1.0) / a_1));
+    vec2 ah = vec2(a_1);
+    float x_3 = (h.x * inv_a.x);
+    float y = (h.y * inv_a.y);
+    float q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01);
+    float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
+    float nv = max(v_2.z, 0.001);
+    float nl = clamp(l.z, 0.0, 1.0);
+    float lv = (nl * length(vec3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
+    float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
+    float _e65 = weft_half_min_max((d * v_n_dot_l));
+    return ((h.z > 0.0) ? _e65 : 0.0);
+}
+
+float silk_ibl_roughness(vec2 alpha_2) {
+    return clamp(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))), 0.0, 1.0);
+}
+
+vec3 silk_low(mat3x3 frame_4, vec3 n_spec, vec3 n_diff, vec3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, vec3 f0_in, vec3 diffuse_albedo, SilkLobe lobe_1, vec3 light) {
+    vec3 f0_1 = vec3(f0_in);
+    vec3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
+    vec3 kd = ((vec3(1.0) - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
+    vec3 direct = (((diffuse_albedo * vec3(kd)) + (vec3(_e13) * lobe_1.value)) * light);
+    vec2 _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness);
+    vec2 lut = clamp(_e29, vec2(0.0), vec2(1.0));
+    vec3 env_brdf_1 = ((f0_1 * float(lut.x)) + vec3(float(lut.y)));
+    vec3 ambient_kd_1 = max((vec3(1.0) - env_brdf_1), vec3(0.0));
+    float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
+    vec3 _e47 = weft_aniso_bent_normal(frame_4, v_3, _e45, lobe_1.ibl_roughness);
+    vec3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    vec3 _e54 = weft_sh_irradiance(n_diff);
+    vec3 indirect = ((_e51 * vec3(env_brdf_1)) + ((_e54 * vec3(ambient_kd_1)) * diffuse_albedo));
+    return clamp((direct + indirect), vec3(0.0), vec3(65504.0));
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 fibre = vec3(0.0);
+    SilkLobe lobe = SilkLobe(0.0, vec2(0.0), 0.0);
+    float vis = 0.0;
+    vec3 env_brdf = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    vec3 reflect_n = vec3(0.0);
+    vec2 scale_bias = vec2(0.0);
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha_out = clamp(base_rgba.w, 0.0, 1.0);
+    float _e19 = _group_1_binding_0_fs.smoothness;
+    float smoothness_1 = clamp(_e19, 0.0, 1.0);
+    float roughness_5 = (1.0 - smoothness_1);
+    float _e25 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp(_e25, 0.0, 1.0);
+    vec3 f0_2 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
+    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
+    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
+    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
+    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
+    vec3 texel_2 = _e50.xyz;
+    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
+    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
+    fibre = _e42[0];
+    vec3 _e59 = fibre;
+    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
+    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff_1 = ((_e66 != 0u) ? _e56 : _e40);
+    vec3 _e70 = weft_main_light_direction();
+    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
+    float _e74 = weft_clamp_cos(dot(_e56, _e38));
+    float n_dot_l = clamp(dot(_e56, _e70), 0.0, 1.0);
+    float n_dot_h = clamp(dot(_e56, _e72), 0.0, 1.0);
+    float v_dot_h_2 = clamp(dot(_e38, _e72), 0.0, 1.0);
+    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
+    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
+    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    float k_1 = _group_1_binding_0_fs.anisotropy;
+    {
+        {
+            float _e90 = _group_1_binding_0_fs.aniso_gloss;
+            float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
+            float _e94 = _group_1_binding_0_fs.aniso_mask;
+            float mask = clamp(_e94, 0.0, 1.0);
+            float _e98 = _group_1_binding_0_fs.aniso_spec;
+            float spec_scale = mix(max(_e98, 0.0), 1.0, mask);
+            vec2 a_hair = vec2(max(_e91, SILK_MIN_ALPHA), 1.0);
+            float _e107 = weft_clamp_roughness(roughness_5);
+            float _e108 = weft_clamp_roughness(roughness_5);
+            float a_iso = (_e107 * _e108);
+            lobe.alpha = mix(a_hair, vec2(a_iso), mask);
+            float _e114 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e114, roughness_5, mask);
+            {
+                {
+                    float _e118 = _group_1_binding_0_fs.tangent_shift;
+                    mat3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                    vec3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                    vec3 tv = vec3(_e120);
+                    vec3 _e122 = weft_aniso_to_frame(_e119, _e70);
+                    vec3 tl = vec3(_e122);
+                    vec3 _e124 = weft_aniso_to_frame(_e119, _e72);
+                    vec3 th = vec3(_e124);
+                    float _e126 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+                    float r_low = max(roughness_5, WEFT_MIN_ROUGHNESS_HALF);
+                    float _e134 = weft_half_spec_ggx_aniso(vec3(_e81), vec3(_e82), vec3(_e83), vec2((r_low * r_low)));
+                    lobe.value = (float(mix(_e126, _e134, float(mask))) * spec_scale);
+                }
+            }
+        }
+    }
+    vec3 _e140 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = clamp(dot(n_diff_1, _e70), 0.0, 1.0);
+    {
+        SilkLobe _e143 = lobe;
+        vec3 _e144 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e143, _e140);
+        _fs2p_location0 = vec4(_e144, alpha_out);
+        return;
+    }
+}
+

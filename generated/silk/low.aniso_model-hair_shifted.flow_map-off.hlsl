@@ -1,0 +1,454 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float4 base_map_st;
+    float smoothness;
+    float metallic;
+    uint diffuse_uses_aniso_normal;
+    float anisotropy;
+    float4 aniso_normal_map_st;
+    float aniso_normal_strength;
+    float tangent_shift;
+    float aniso_gloss;
+    float aniso_spec;
+    float aniso_mask;
+    float flow_strength;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct SilkLobe {
+    float value;
+    int _pad1_0;
+    float2 alpha;
+    float ibl_roughness;
+    int _end_pad_0;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint ANISO_MODEL_WARD = 0u;
+static const uint ANISO_MODEL_HAIR_SHIFTED = 1u;
+static const uint ANISO_MODEL_GGX = 2u;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ANISO_ALPHA = 0.001;
+static const float SILK_MIN_ALPHA = 0.001;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> aniso_normal_map : register(t4, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n)
+{
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
+    float b = ((n.x * n.y) * a);
+    return float3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_1)
+{
+    float r = saturate(roughness_1);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
+{
+    const float _e4 = weft_specular_mip(roughness_2);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
+{
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
+    float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
+    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    return _e16.xy;
+}
+
+float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_2);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_2, t) * s_1);
+    return float3x3(t, b_1, n_2);
+}
+
+float3 weft_unpack_normal(float3 texel, float strength)
+{
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
+}
+
+float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
+{
+    const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
+    return _e4;
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float3 weft_aniso_to_frame(float3x3 frame_1, float3 x)
+{
+    return float3(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy, float roughness_4)
+{
+    float k = clamp(anisotropy, -1.0, 1.0);
+    float3 n_3 = frame_2[2];
+    float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
+    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k) * saturate((5.0 * saturate(roughness_4))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    return _e22;
+}
+
+float silk_hair_mx_seed(float smoothness, float gloss)
+{
+    float p = (1.0 - saturate((smoothness * gloss)));
+    float rx = (p * p);
+    float rx_safe = ((rx == 0.0) ? 0.0001 : rx);
+    return (rx_safe * rx_safe);
+}
+
+float3x3 silk_tilt_frame(float3x3 frame_3, float shift)
+{
+    float s_2 = clamp(shift, -1.0, 1.0);
+    const float3 _e10 = weft_safe_normalize((frame_3[0] + (s_2 * frame_3[2])), frame_3[0]);
+    const float3 _e16 = weft_safe_normalize((frame_3[2] - (s_2 * frame_3[0])), frame_3[2]);
+    return float3x3(_e10, frame_3[1], _e16);
+}
+
+float silk_lobe_anisotropy(float2 alpha)
+{
+    float at = max(alpha.x, SILK_MIN_ALPHA);
+    float ab = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+float weft_half_min_max(float x_1)
+{
+    return min(x_1, 65504.0);
+}
+
+float weft_half_pow5_(float x_2)
+{
+    float x2_ = (x_2 * x_2);
+    return ((x2_ * x2_) * x_2);
+}
+
+float3 weft_half_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e7 = weft_half_pow5_((1.0 - v_dot_h));
+    return (f0_ + (((1.0).xxx - f0_) * _e7));
+}
+
+float weft_half_spec_ggx_aniso(float3 v_2, float3 l, float3 h, float2 alpha_1)
+{
+    float2 a_1 = max(alpha_1, (0.007921).xx);
+    float2 inv_a = float2(((1.0).xx / a_1));
+    float2 ah = float2(a_1);
+    float x_3 = (h.x * inv_a.x);
+    float y = (h.y * inv_a.y);
+    float q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01);
+    float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
+    float nv = max(v_2.z, 0.001);
+    float nl = saturate(l.z);
+    float lv = (nl * length(float3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float ll = (nv * length(float3((ah.x * l.x), (ah.y * l.y), nl)));
+    float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
+    const float _e65 = weft_half_min_max((d * v_n_dot_l));
+    return ((h.z > 0.0) ? _e65 : 0.0);
+}
+
+float silk_ibl_roughness(float2 alpha_2)
+{
+    return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))));
+}
+
+float3 silk_low(float3x3 frame_4, float3 n_spec, float3 n_diff, float3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, float3 f0_in, float3 diffuse_albedo, SilkLobe lobe_1, float3 light)
+{
+    float3 f0_1 = float3(f0_in);
+    const float3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
+    float3 kd = (((1.0).xxx - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
+    float3 direct = (((diffuse_albedo * float3(kd)) + (float3(_e13) * lobe_1.value)) * light);
+    const float2 _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness);
+    float2 lut = saturate(_e29);
+    float3 env_brdf_1 = ((f0_1 * float(lut.x)) + (float(lut.y)).xxx);
+    float3 ambient_kd_1 = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
+    const float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
+    const float3 _e47 = weft_aniso_bent_normal(frame_4, v_3, _e45, lobe_1.ibl_roughness);
+    const float3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    const float3 _e54 = weft_sh_irradiance(n_diff);
+    float3 indirect = ((_e51 * float3(env_brdf_1)) + ((_e54 * float3(ambient_kd_1)) * diffuse_albedo));
+    return clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float3 fibre = (float3)0;
+    SilkLobe lobe = (SilkLobe)0;
+    float vis = (float)0;
+    float3 env_brdf = (float3)0;
+    float3 ambient_kd = (float3)0;
+    float3 reflect_n = (float3)0;
+    float2 scale_bias = (float2)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha_out = saturate(base_rgba.w);
+    float _e19 = material.smoothness;
+    float smoothness_1 = saturate(_e19);
+    float roughness_5 = (1.0 - smoothness_1);
+    float _e25 = material.metallic;
+    float metallic = saturate(_e25);
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo_1 = (base * (1.0 - metallic));
+    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
+    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
+    float4 _e46 = material.aniso_normal_map_st;
+    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
+    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
+    float3 texel_2 = _e50.xyz;
+    float _e54 = material.aniso_normal_strength;
+    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
+    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
+    fibre = _e42[0];
+    float3 _e59 = fibre;
+    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
+    uint _e66 = material.diffuse_uses_aniso_normal;
+    float3 n_diff_1 = ((_e66 != 0u) ? _e56 : _e40);
+    const float3 _e70 = weft_main_light_direction();
+    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
+    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
+    float n_dot_l = saturate(dot(_e56, _e70));
+    float n_dot_h = saturate(dot(_e56, _e72));
+    float v_dot_h_2 = saturate(dot(_e38, _e72));
+    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
+    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
+    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    float k_1 = material.anisotropy;
+    {
+        {
+            float _e90 = material.aniso_gloss;
+            const float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
+            float _e94 = material.aniso_mask;
+            float mask = saturate(_e94);
+            float _e98 = material.aniso_spec;
+            float spec_scale = lerp(max(_e98, 0.0), 1.0, mask);
+            float2 a_hair = float2(max(_e91, SILK_MIN_ALPHA), 1.0);
+            const float _e107 = weft_clamp_roughness(roughness_5);
+            const float _e108 = weft_clamp_roughness(roughness_5);
+            float a_iso = (_e107 * _e108);
+            lobe.alpha = lerp(a_hair, (a_iso).xx, mask);
+            const float _e114 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = lerp(_e114, roughness_5, mask);
+            {
+                {
+                    float _e118 = material.tangent_shift;
+                    const float3x3 _e119 = silk_tilt_frame(_e63, _e118);
+                    const float3 _e120 = weft_aniso_to_frame(_e119, _e38);
+                    float3 tv = float3(_e120);
+                    const float3 _e122 = weft_aniso_to_frame(_e119, _e70);
+                    float3 tl = float3(_e122);
+                    const float3 _e124 = weft_aniso_to_frame(_e119, _e72);
+                    float3 th = float3(_e124);
+                    const float _e126 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+                    float r_low = max(roughness_5, WEFT_MIN_ROUGHNESS_HALF);
+                    const float _e134 = weft_half_spec_ggx_aniso(float3(_e81), float3(_e82), float3(_e83), ((r_low * r_low)).xx);
+                    lobe.value = (float(lerp(_e126, _e134, float(mask))) * spec_scale);
+                }
+            }
+        }
+    }
+    const float3 _e140 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e70));
+    {
+        SilkLobe _e143 = lobe;
+        const float3 _e144 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e143, _e140);
+        return float4(_e144, alpha_out);
+    }
+}
