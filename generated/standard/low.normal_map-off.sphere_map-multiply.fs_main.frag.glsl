@@ -140,10 +140,12 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
-    return _e8.xy;
+    ivec2 texel = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel, 0);
+    return _e16.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -177,12 +179,13 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha) {
 
 float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1) {
     float nv = max(n_dot_v_1, 0.001);
-    float a2_ = (alpha_1 * alpha_1);
-    float gv = ((nv * (1.0 - alpha_1)) + alpha_1);
-    float gl = ((n_dot_l * (1.0 - alpha_1)) + alpha_1);
-    float pv = ((gv * nv) + (a2_ * (1.0 - nv)));
-    float pl = ((gl * n_dot_l) + (a2_ * (1.0 - n_dot_l)));
-    return ((((0.5 * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001));
+    float alpha2_ = (alpha_1 * alpha_1);
+    float g_v = mix(nv, 1.0, alpha_1);
+    float g_l = mix(n_dot_l, 1.0, alpha_1);
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
 
 vec3 weft_half_f_schlick(vec3 f0_1, float v_dot_h) {
@@ -204,7 +207,7 @@ vec3 standard_low(vec3 n_2, vec3 v_1, vec3 l, vec3 h, vec3 f0_in, vec3 diffuse_a
     float alpha_2 = (roughness_3 * roughness_3);
     vec3 f0_2 = vec3(f0_in);
     float _e30 = weft_clamp_cos(dot(n_2, v_1));
-    vec2 _e31 = weft_env_brdf_lut(_e30, roughness_in);
+    vec2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
     vec3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
     vec3 env_brdf_1 = vec3(_e32);
     vec3 kd = max((vec3(1.0) - env_brdf_1), vec3(0.0));

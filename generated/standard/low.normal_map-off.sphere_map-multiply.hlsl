@@ -65,7 +65,6 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -169,11 +168,24 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
 {
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_2));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
-    return _e8.xy;
+    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel, int(0)));
+    return _e16.xy;
 }
 
 float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
@@ -213,12 +225,13 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha)
 float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1)
 {
     float nv = max(n_dot_v_1, 0.001);
-    float a2_ = (alpha_1 * alpha_1);
-    float gv = ((nv * (1.0 - alpha_1)) + alpha_1);
-    float gl = ((n_dot_l * (1.0 - alpha_1)) + alpha_1);
-    float pv = ((gv * nv) + (a2_ * (1.0 - nv)));
-    float pl = ((gl * n_dot_l) + (a2_ * (1.0 - n_dot_l)));
-    return ((((0.5 * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001));
+    float alpha2_ = (alpha_1 * alpha_1);
+    float g_v = lerp(nv, 1.0, alpha_1);
+    float g_l = lerp(n_dot_l, 1.0, alpha_1);
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
 
 float3 weft_half_f_schlick(float3 f0_1, float v_dot_h)
@@ -243,7 +256,7 @@ float3 standard_low(float3 n_2, float3 v_1, float3 l, float3 h, float3 f0_in, fl
     float alpha_2 = (roughness_3 * roughness_3);
     float3 f0_2 = float3(f0_in);
     const float _e30 = weft_clamp_cos(dot(n_2, v_1));
-    const float2 _e31 = weft_env_brdf_lut(_e30, roughness_in);
+    const float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
     const float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
     float3 env_brdf_1 = float3(_e32);
     float3 kd = max(((1.0).xxx - env_brdf_1), (0.0).xxx);

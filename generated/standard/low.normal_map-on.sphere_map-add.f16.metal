@@ -169,15 +169,20 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut(
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
-    return _e8.xy;
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e16.xy;
 }
 
 metal::float3 weft_sphere_map_direction(
@@ -261,12 +266,13 @@ weft_half weft_half_v_smith_ggx_correlated_newton_nl(
     weft_half alpha_1
 ) {
     half nv = metal::max(n_dot_v_1, 0.0010004044h);
-    weft_half a2_ = alpha_1 * alpha_1;
-    half gv = (nv * (1.0h - alpha_1)) + alpha_1;
-    half gl = (n_dot_l * (1.0h - alpha_1)) + alpha_1;
-    half pv = (gv * nv) + (a2_ * (1.0h - nv));
-    weft_half pl = (gl * n_dot_l) + (a2_ * (1.0h - n_dot_l));
-    return (((0.5h * gv) * gl) * n_dot_l) / metal::max(((n_dot_l * gl) * pv) + ((nv * gv) * pl), 0.000100016594h);
+    weft_half alpha2_ = alpha_1 * alpha_1;
+    half g_v = metal::mix(nv, 1.0h, alpha_1);
+    half g_l = metal::mix(n_dot_l, 1.0h, alpha_1);
+    half q_v = nv + ((alpha2_ * (1.0h - nv)) / g_v);
+    weft_half q_l = n_dot_l + ((alpha2_ * (1.0h - n_dot_l)) / g_l);
+    half denominator = (n_dot_l * q_v) + (nv * q_l);
+    return (0.5h * n_dot_l) / metal::max(denominator, 0.000100016594h);
 }
 
 metal::half3 weft_half_f_schlick(
@@ -290,8 +296,7 @@ metal::float3 standard_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
-    metal::sampler weft_lut_sampler
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
     metal::float3 direct_n_dot_l = {};
     metal::float3 indirect_specular_1 = metal::float3(0.0);
@@ -306,7 +311,7 @@ metal::float3 standard_low(
     half alpha_2 = roughness_3 * roughness_3;
     metal::half3 f0_2 = static_cast<metal::half3>(f0_in);
     float _e30 = weft_clamp_cos(metal::dot(n_4, v_1));
-    metal::float2 _e31 = weft_env_brdf_lut(_e30, roughness_in, weft_brdf_lut, weft_lut_sampler);
+    metal::float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in, weft_brdf_lut);
     metal::float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
     metal::half3 env_brdf_1 = static_cast<metal::half3>(_e32);
     metal::half3 kd = metal::max(metal::half3(1.0h) - env_brdf_1, metal::half3(0.0h));
@@ -410,10 +415,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(2)]]
-, metal::sampler material_clamp_sampler [[sampler(3)]]
+, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_clamp_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
@@ -451,9 +455,9 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e54 = n;
         metal::float3x3 _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         metal::float4 _e59 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e59.xyz;
+        metal::float3 texel_2 = _e59.xyz;
         float _e63 = material.normal_strength;
-        metal::float3 _e64 = weft_unpack_normal(texel_1, _e63);
+        metal::float3 _e64 = weft_unpack_normal(texel_2, _e63);
         metal::float3 _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
@@ -471,7 +475,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
     {
         metal::float3 _e87 = n;
-        metal::float3 _e88 = standard_low(_e87, _e50, _e66, _e69, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e88 = standard_low(_e87, _e50, _e66, _e69, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
         metal::float3 _e89 = n;
         metal::float3 _e91 = standard_sphere_map(_e88, _e89, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
         metal::float3 radiance = metal::clamp(_e91, metal::float3(0.0), metal::float3(65504.0));

@@ -187,12 +187,13 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha) {
 
 float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1) {
     float nv = max(n_dot_v_1, 0.001);
-    float a2_ = (alpha_1 * alpha_1);
-    float gv = ((nv * (1.0 - alpha_1)) + alpha_1);
-    float gl = ((n_dot_l * (1.0 - alpha_1)) + alpha_1);
-    float pv = ((gv * nv) + (a2_ * (1.0 - nv)));
-    float pl = ((gl * n_dot_l) + (a2_ * (1.0 - n_dot_l)));
-    return ((((0.5 * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001));
+    float alpha2_ = (alpha_1 * alpha_1);
+    float g_v = mix(nv, 1.0, alpha_1);
+    float g_l = mix(n_dot_l, 1.0, alpha_1);
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
 
 vec3 weft_half_f_schlick(vec3 f0_1, float v_dot_h) {

@@ -64,8 +64,6 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
-@group(0) @binding(4) 
-var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -159,10 +157,13 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
-    return _e8.xy;
+    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    return _e16.xy;
 }
 
 fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
@@ -218,12 +219,13 @@ fn weft_half_d_ggx(one_minus_n_dot_h2_: f32, n_dot_h: f32, alpha: f32) -> f32 {
 
 fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f32, n_dot_l: f32, alpha_1: f32) -> f32 {
     let nv = max(n_dot_v_1, 0.001f);
-    let a2_ = (alpha_1 * alpha_1);
-    let gv = ((nv * (1f - alpha_1)) + alpha_1);
-    let gl = ((n_dot_l * (1f - alpha_1)) + alpha_1);
-    let pv = ((gv * nv) + (a2_ * (1f - nv)));
-    let pl = ((gl * n_dot_l) + (a2_ * (1f - n_dot_l)));
-    return ((((0.5f * gv) * gl) * n_dot_l) / max((((n_dot_l * gl) * pv) + ((nv * gv) * pl)), 0.0001f));
+    let alpha2_ = (alpha_1 * alpha_1);
+    let g_v = mix(nv, 1f, alpha_1);
+    let g_l = mix(n_dot_l, 1f, alpha_1);
+    let q_v = (nv + ((alpha2_ * (1f - nv)) / g_v));
+    let q_l = (n_dot_l + ((alpha2_ * (1f - n_dot_l)) / g_l));
+    let denominator = ((n_dot_l * q_v) + (nv * q_l));
+    return ((0.5f * n_dot_l) / max(denominator, 0.0001f));
 }
 
 fn weft_half_f_schlick(f0_1: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -246,7 +248,7 @@ fn standard_low(n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_i
     let alpha_2 = (roughness_3 * roughness_3);
     let f0_2 = vec3<f32>(f0_in);
     let _e30 = weft_clamp_cos(dot(n_4, v_1));
-    let _e31 = weft_env_brdf_lut(_e30, roughness_in);
+    let _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
     let _e32 = weft_env_brdf_from_lut(f0_in, _e31);
     let env_brdf_1 = vec3<f32>(_e32);
     let kd = max((vec3(1f) - env_brdf_1), vec3(0f));
@@ -343,9 +345,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e54 = n;
         let _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
         let _e59 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e59.xyz;
+        let texel_2 = _e59.xyz;
         let _e63 = material.normal_strength;
-        let _e64 = weft_unpack_normal(texel_1, _e63);
+        let _e64 = weft_unpack_normal(texel_2, _e63);
         let _e65 = weft_normal_from_tangent_space(_e56, _e64);
         n = _e65;
     }
