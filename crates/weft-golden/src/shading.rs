@@ -186,7 +186,7 @@ pub fn run(
             if half {
                 let f32_options = RenderOptions {
                     f32_fallback: true,
-                    ..render_options.clone()
+                    ..render_options
                 };
                 jobs.push(Job {
                     material: i,
