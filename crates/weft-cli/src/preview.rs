@@ -11,6 +11,7 @@ pub(crate) const PREVIEW_EXAMPLES: &str = "Examples:
   weft preview generated/standard/standard.meta.json -o p.png --tier reference --keyword NORMAL_MAP=on
   weft preview generated/standard/standard.meta.json -o p.png --variant fast.normal_map-off.sphere_map-add
   weft preview materials/standard/standard.toml -o p.png --set base_color=0.9,0.2,0.1 --set roughness=0.2
+  weft preview materials/standard/standard.toml -o p.png --texture base_map=my_albedo.png --keyword NORMAL_MAP=on --texture normal_map=my_normal.png
   weft preview materials/standard/standard.toml -o p.png --size 512x384 --light-dir -1,1,0.5 --tonemap neutral --hdr-out p.pfm
   weft preview --scene-file scenes/fitting_room.scene.toml -o room.png --width 640 --height 400
   weft preview --scene-dir generated/scenes/swatch_book -o book.png --spirv
@@ -24,8 +25,8 @@ specialised shader, or with the library's generic variants (--library). Needs a 
 Debian/Ubuntu `apt-get install mesa-vulkan-drivers`.";
 
 /// What a scene preview does not take: a material and its options.
-const NOT_WITH_A_SCENE: [&str; 7] = [
-    "path", "variant", "tier", "keywords", "sets", "preset", "scene",
+const NOT_WITH_A_SCENE: [&str; 8] = [
+    "path", "variant", "tier", "keywords", "sets", "textures", "preset", "scene",
 ];
 
 #[derive(clap::Args)]
@@ -51,6 +52,11 @@ pub(crate) struct PreviewArgs {
     /// Parameter value, NAME=VALUE (vectors and colours as comma lists); repeatable.
     #[arg(long = "set", value_name = "NAME=VALUE")]
     sets: Vec<String>,
+    /// A texture parameter from a PNG file, NAME=PATH (any colour type; texels
+    /// as stored: sRGB when the parameter declares `srgb`; up to 8192x8192;
+    /// a 1-pixel-high PNG for a gradient); repeatable.
+    #[arg(long = "texture", value_name = "NAME=PATH")]
+    textures: Vec<String>,
     /// Apply a preset first (then --variant/--tier/--keyword/--set).
     #[arg(long)]
     preset: Option<String>,
@@ -158,6 +164,10 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
     }
     for s in &args.sets {
         mopts.sets.push(split_pair(s, "--set")?);
+    }
+    for t in &args.textures {
+        let (name, path) = split_pair(t, "--texture")?;
+        mopts.textures.push((name, PathBuf::from(path)));
     }
 
     // A .toml is compiled into a temporary folder; a .meta.json is used as is.

@@ -137,3 +137,95 @@ fn help_has_examples() {
     let o = weft(&["build", "--help"]);
     assert!(stdout(&o).contains("Examples:"));
 }
+
+/// `weft preview --texture NAME=PATH`: an artist's own map, from a PNG of
+/// any colour type, reaches the picture; bad names and files get a clear
+/// error and no output.
+#[test]
+fn preview_takes_a_texture_parameter_from_a_png() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, bytes: &[u8]| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, bytes).unwrap();
+        path.display().to_string()
+    };
+    // A red RGBA map, and a mid-grey one written as an 8-bit grey PNG.
+    let red = write(
+        "red.png",
+        &weft_render::encode_png(2, 2, &[255, 0, 0, 255].repeat(4)).unwrap(),
+    );
+    let mut grey_png = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut grey_png, 2, 2);
+        enc.set_color(png::ColorType::Grayscale);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.write_header()
+            .unwrap()
+            .write_image_data(&[128; 4])
+            .unwrap();
+    }
+    let grey = write("grey.png", &grey_png);
+    let material = "generated/standard/standard.meta.json";
+    let preview = |extra: &[&str], out: &str| {
+        let out = dir.path().join(out);
+        let mut args = vec![
+            "preview",
+            material,
+            "-q",
+            "--size",
+            "32x32",
+            "--set",
+            "base_color=1,1,1",
+            "-o",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        (weft(&args), out)
+    };
+    let centre = |path: &Path| {
+        let img = weft_render::decode_png(&std::fs::read(path).unwrap(), "out").unwrap();
+        let at = ((16 * 32 + 16) * 4) as usize;
+        [img.2[at], img.2[at + 1], img.2[at + 2]]
+    };
+    let (o, red_out) = preview(&["--texture", &format!("base_map={red}")], "red_out.png");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let [r, g, b] = centre(&red_out);
+    assert!(
+        r > 2 * g.max(b) && r > 60,
+        "a red base map gives a red sphere: {r},{g},{b}"
+    );
+    let (o, grey_out) = preview(&["--texture", &format!("base_map={grey}")], "grey_out.png");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (o, white_out) = preview(&[], "white_out.png");
+    assert!(o.status.success(), "{}", stderr(&o));
+    // The default map is white: a mid-grey map (a grey PNG, replicated to
+    // RGB) darkens every channel.
+    let (grey, white) = (centre(&grey_out), centre(&white_out));
+    for c in 0..3 {
+        assert!(
+            grey[c] + 20 < white[c],
+            "grey {grey:?} against white {white:?}"
+        );
+    }
+
+    // Errors: an unknown parameter, a file that is not a PNG, a 2D map for
+    // a cube parameter. Nothing is written.
+    let not_png = write("notes.png", b"not an image");
+    for (arg, expected) in [
+        (format!("base_mpa={red}"), "base_mpa"),
+        (format!("base_map={not_png}"), "not a PNG"),
+        (
+            format!("base_map={}", dir.path().join("absent.png").display()),
+            "absent.png",
+        ),
+        (format!("sphere_map={red}"), "sphere_map"),
+    ] {
+        let (o, out) = preview(
+            &["--keyword", "SPHERE_MAP=add", "--texture", &arg],
+            "bad.png",
+        );
+        assert!(!o.status.success(), "{arg}: accepted");
+        assert!(stderr(&o).contains(expected), "{arg}: {}", stderr(&o));
+        assert!(!out.exists(), "{arg}: wrote an image");
+    }
+}

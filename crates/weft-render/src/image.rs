@@ -212,9 +212,117 @@ pub fn encode_png(width: u32, height: u32, rgba: &[u8]) -> Result<Vec<u8>> {
     Ok(out)
 }
 
+/// Largest width or height [`decode_png`] accepts: wgpu's default
+/// `max_texture_dimension_2d`, the size every device can sample.
+pub const MAX_TEXTURE_SIZE: u32 = 8192;
+
+/// Decodes a PNG of any colour type and bit depth into RGBA8 texels as
+/// stored (no colour conversion: an sRGB parameter reads them as sRGB).
+/// Grey is replicated to RGB, a missing alpha is 255, 16-bit channels keep
+/// their high byte. `what` names the source in errors.
+pub fn decode_png(bytes: &[u8], what: &str) -> Result<(u32, u32, Vec<u8>)> {
+    let bad = |message: String| Error::InvalidValue {
+        name: what.to_string(),
+        message,
+    };
+    // Allocation capped at the largest texture accepted (plus slack), so a
+    // hostile header cannot make the decoder reserve gigabytes.
+    let limits = png::Limits {
+        bytes: (MAX_TEXTURE_SIZE as usize).pow(2) * 8 + (1 << 20),
+    };
+    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
+    decoder.set_transformations(png::Transformations::normalize_to_color8());
+    let mut reader = decoder
+        .read_info()
+        .map_err(|e| bad(format!("not a PNG this decoder reads: {e}")))?;
+    let (width, height) = {
+        let info = reader.info();
+        (info.width, info.height)
+    };
+    if width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
+        return Err(bad(format!(
+            "{width}x{height} is larger than {MAX_TEXTURE_SIZE}x{MAX_TEXTURE_SIZE}, the largest texture every device can sample: scale it down"
+        )));
+    }
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| bad("image too large".into()))?;
+    let mut buf = vec![0; size];
+    let frame = reader
+        .next_frame(&mut buf)
+        .map_err(|e| bad(format!("cannot decode: {e}")))?;
+    buf.truncate(frame.buffer_size());
+    let rgba = match frame.color_type {
+        png::ColorType::Rgba => buf,
+        png::ColorType::Rgb => buf
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect(),
+        png::ColorType::GrayscaleAlpha => buf
+            .chunks_exact(2)
+            .flat_map(|p| [p[0], p[0], p[0], p[1]])
+            .collect(),
+        png::ColorType::Grayscale => buf.iter().flat_map(|&g| [g, g, g, 255]).collect(),
+        png::ColorType::Indexed => {
+            return Err(bad("indexed PNG left unexpanded".into()));
+        }
+    };
+    Ok((width, height, rgba))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn png_of(
+        width: u32,
+        height: u32,
+        color: png::ColorType,
+        depth: png::BitDepth,
+        data: &[u8],
+    ) -> Vec<u8> {
+        let mut out = Vec::new();
+        let mut enc = png::Encoder::new(&mut out, width, height);
+        enc.set_color(color);
+        enc.set_depth(depth);
+        enc.write_header().unwrap().write_image_data(data).unwrap();
+        out
+    }
+
+    #[test]
+    fn any_png_decodes_to_rgba8_as_stored() {
+        use png::{BitDepth, ColorType};
+        let rgb16 = png_of(
+            1,
+            1,
+            ColorType::Rgb,
+            BitDepth::Sixteen,
+            &[0x12, 0x34, 0xab, 0xcd, 0xff, 0x00],
+        );
+        assert_eq!(
+            decode_png(&rgb16, "t").unwrap(),
+            (1, 1, vec![0x12, 0xab, 0xff, 255])
+        );
+        let grey_alpha = png_of(1, 1, ColorType::GrayscaleAlpha, BitDepth::Eight, &[7, 9]);
+        assert_eq!(
+            decode_png(&grey_alpha, "t").unwrap(),
+            (1, 1, vec![7, 7, 7, 9])
+        );
+        // A texture no device must sample: refused with the limit named.
+        let wide = png_of(
+            MAX_TEXTURE_SIZE + 1,
+            1,
+            ColorType::Grayscale,
+            BitDepth::Eight,
+            &vec![0; MAX_TEXTURE_SIZE as usize + 1],
+        );
+        let e = decode_png(&wide, "wide").unwrap_err().to_string();
+        assert!(e.contains("wide") && e.contains("8192"), "{e}");
+        let e = decode_png(b"\x89PNG but not", "junk")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("junk"), "{e}");
+    }
 
     #[test]
     fn tonemaps_are_monotonic_and_bounded() {

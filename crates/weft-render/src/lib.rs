@@ -66,7 +66,7 @@ pub use environment::{
 };
 pub use error::{Error, NO_ADAPTER_HINT, Result};
 pub use gpu::Gpu;
-pub use image::{HdrImage, Tonemap, encode_png, encode_srgb};
+pub use image::{HdrImage, MAX_TEXTURE_SIZE, Tonemap, decode_png, encode_png, encode_srgb};
 pub use luts::{BrdfLut, Luts, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE, SheenLut};
 pub use material::{Material, ResolvedVariant};
 pub use preview::{MaterialOptions, PreviewOptions, render_preview, render_scene_preview};

@@ -24,6 +24,9 @@ pub struct MaterialOptions {
     pub keywords: Vec<(String, String)>,
     /// `(parameter, text)` pairs, parsed per the parameter's kind.
     pub sets: Vec<(String, String)>,
+    /// `(texture parameter, PNG file)` pairs: the user's own maps, texels
+    /// as stored (sRGB when the parameter declares `srgb`).
+    pub textures: Vec<(String, std::path::PathBuf)>,
 }
 
 impl MaterialOptions {
@@ -42,6 +45,24 @@ impl MaterialOptions {
         }
         for (name, text) in &self.sets {
             material.set_from_str(name, text)?;
+        }
+        for (name, path) in &self.textures {
+            // The name first: a typo is reported before the file is read.
+            material.parameter(name)?;
+            let bytes = std::fs::read(path).map_err(|source| Error::Io {
+                path: path.clone(),
+                source,
+            })?;
+            let (width, height, data) =
+                crate::image::decode_png(&bytes, &format!("{name} ({})", path.display()))?;
+            material.set(
+                name,
+                crate::values::TextureValue::Rgba8 {
+                    width,
+                    height,
+                    data,
+                },
+            )?;
         }
         // Fail early on a combination that has no compiled variant.
         material.current_variant()?;
