@@ -225,33 +225,10 @@ pub fn flip(reference_rgba: &[u8], test_rgba: &[u8], width: u32, height: u32) ->
     }
 }
 
-/// Decodes an RGBA8 PNG (as written by `weft_render::encode_png`).
+/// Decodes a PNG (as written by `weft_render::encode_png`) into RGBA8.
 pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
-    let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::ALPHA);
-    let mut reader = decoder
-        .read_info()
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut buf = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
-    let info = reader
-        .next_frame(&mut buf)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    buf.truncate(info.buffer_size());
-    let rgba = match info.color_type {
-        png::ColorType::Rgba => buf,
-        png::ColorType::Rgb => buf
-            .chunks_exact(3)
-            .flat_map(|p| [p[0], p[1], p[2], 255])
-            .collect(),
-        other => {
-            return Err(format!(
-                "{}: unsupported PNG colour type {other:?}",
-                path.display()
-            ));
-        }
-    };
-    Ok((info.width, info.height, rgba))
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    weft_render::decode_png(&bytes, &path.display().to_string()).map_err(|e| e.to_string())
 }
 
 pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
