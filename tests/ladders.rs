@@ -17,6 +17,7 @@ const MAX_WORST_FLIP: f64 = 0.05;
 
 const HONEST_LADDERS: &[&str] = &[
     "gauze",
+    "laser",
     "microcylinder",
     "satin",
     "silk",

@@ -77,6 +77,13 @@ enum Bench {
         #[arg(long)]
         write: bool,
     },
+    /// The laser film's fast form against its spectral reference over
+    /// thickness x cos θ (CIELAB ΔE2000, chart FLIP), evaluated on the GPU.
+    Film {
+        /// Also write generated/reports/laser-film.md and the table in materials/laser/README.md.
+        #[arg(long)]
+        write: bool,
+    },
     /// Every shipped scene, generic library variants vs scene-specialised
     /// shaders: GPU time per frame (interleaved rounds), FLIP between the
     /// images, SPIR-V instructions, shaders/files/bytes, build time.
@@ -216,6 +223,10 @@ fn main() -> ExitCode {
             if measured != ExitCode::SUCCESS {
                 return measured;
             }
+            let film = bench_film(&root, true, "cargo xtask regenerate --reports");
+            if film != ExitCode::SUCCESS {
+                return film;
+            }
             // Scene builds read the reports (`tier = "auto"` costs): build
             // again on the new ones so generated/ is current.
             regenerate(&root, false)
@@ -229,6 +240,9 @@ fn main() -> ExitCode {
         Command::Bench {
             what: Bench::Scale(args),
         } => bench_scale::bench_scale(&root, &args),
+        Command::Bench {
+            what: Bench::Film { write },
+        } => bench_film(&root, write, "cargo xtask bench film --write"),
         Command::Bench {
             what: Bench::Shading { args, write },
         } => bench_shading(
@@ -470,6 +484,56 @@ fn bench_shading(
         }
     }
     ExitCode::SUCCESS
+}
+
+/// Measures the laser film (`weft_golden::film`), prints the table and, with
+/// `write`, rewrites generated/reports/laser-film.md and the table between
+/// `<!-- weft:film:… -->` in materials/laser/README.md.
+fn bench_film(root: &Path, write: bool, command: &str) -> ExitCode {
+    use weft_golden::film;
+    let run = || -> Result<(), String> {
+        let lib = root.join("materials/lib/thin_film.wgsl");
+        let source =
+            std::fs::read_to_string(&lib).map_err(|e| format!("{}: {e}", lib.display()))?;
+        let gpu = weft_render::Gpu::new().map_err(|e| e.to_string())?;
+        let measurements = film::CASES
+            .iter()
+            .map(|case| film::measure(&gpu, &source, case))
+            .collect::<Result<Vec<_>, _>>()?;
+        print!("{}", film::markdown_table(&measurements));
+        if write {
+            let report = root.join("generated/reports/laser-film.md");
+            let text = film::markdown_report(&measurements, &gpu.describe(), command);
+            std::fs::write(&report, text).map_err(|e| format!("{}: {e}", report.display()))?;
+            println!("wrote {}", report.display());
+            let readme = root.join("materials/laser/README.md");
+            let text = std::fs::read_to_string(&readme)
+                .map_err(|e| format!("{}: {e}", readme.display()))?;
+            let new = weft_golden::shading::replace_marked(
+                &text,
+                "film",
+                &film::markdown_table(&measurements),
+            )
+            .ok_or_else(|| {
+                format!(
+                    "{}: no <!-- weft:film:begin/end --> markers",
+                    readme.display()
+                )
+            })?;
+            if new != text {
+                std::fs::write(&readme, new).map_err(|e| format!("{}: {e}", readme.display()))?;
+                println!("updated the film table in {}", readme.display());
+            }
+        }
+        Ok(())
+    };
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
 }
 
 /// Rewrites the measured tier tables between their markers: the README's

@@ -7,6 +7,7 @@
 
 pub mod auto_tier;
 pub mod error_grid;
+pub mod film;
 pub mod floor;
 pub mod project;
 pub mod scene_bench;

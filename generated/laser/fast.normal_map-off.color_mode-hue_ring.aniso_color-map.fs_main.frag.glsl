@@ -1,0 +1,476 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    vec4 base_map_st;
+    float normal_strength;
+    float saturation;
+    float brightness;
+    float span;
+    float view_offset;
+    vec4 offset_map_st;
+    uint sin_mapping;
+    float color_direction;
+    float film_strength;
+    float film_ior;
+    float thickness_min;
+    float thickness_max;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct WeftFilmSeries {
+    vec3 dc;
+    vec3 first;
+    vec3 ratio;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint COLOR_MODE_HUE_RING = 0u;
+const uint COLOR_MODE_CUSTOM = 1u;
+const uint ANISO_COLOR_OFF = 0u;
+const uint ANISO_COLOR_VALUE = 1u;
+const uint ANISO_COLOR_MAP = 2u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_FILM_PI = 3.1415927;
+const uint WEFT_FILM_SAMPLES = 101u;
+const float WEFT_FILM_LAMBDA_MIN = 380.0;
+const float WEFT_FILM_LAMBDA_MAX = 780.0;
+const float WEFT_FILM_FADE_NM = 30.0;
+const mat3x3 WEFT_XYZ_TO_REC709_ = mat3x3(vec3(3.2404542, -0.969266, 0.0556434), vec3(-1.5371385, 1.8760108, -0.2040259), vec3(-0.4985314, 0.041556, 1.0572252));
+const vec4 WEFT_FILM_LOBE_WEIGHT_A = vec4(112.289, 17.9875, -22.8564, 14.636);
+const vec4 WEFT_FILM_LOBE_WEIGHT_B = vec4(27.8908, 64.448, 5.9984, 99.7587);
+const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
+const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
+const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
+const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
+const uint WEFT_FILM_ORDERS = 4u;
+const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_6_fs;
+
+layout(binding = 5) uniform sampler2D _group_1_binding_8_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
+    float a2_ = (a_1 * a_1);
+    float noh = clamp(dot(n_2, h), 0.0, 1.0);
+    vec3 nxh = cross(n_2, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_3) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 weft_ior_from_f0_(vec3 f0_2) {
+    vec3 s_2 = sqrt(clamp(f0_2, vec3(0.0), vec3(0.9999)));
+    return ((vec3(1.0) + s_2) / (vec3(1.0) - s_2));
+}
+
+float weft_film_ior(float film_ior, float thickness_nm) {
+    return mix(1.0, max(film_ior, 1.0), smoothstep(0.0, WEFT_FILM_FADE_NM, thickness_nm));
+}
+
+vec2 weft_fresnel_amplitudes(float n_i, float n_t, float cos_i, float cos_t) {
+    float rs = (((n_i * cos_i) - (n_t * cos_t)) / max(((n_i * cos_i) + (n_t * cos_t)), 1e-12));
+    float rp = (((n_t * cos_i) - (n_i * cos_t)) / max(((n_t * cos_i) + (n_i * cos_t)), 1e-12));
+    return vec2(rs, rp);
+}
+
+vec3[2] weft_film_base_amplitudes(float n2_, float cos2_, vec3 n3_, float sin1_sq) {
+    vec3 cos3_ = sqrt(max((vec3(1.0) - (vec3(sin1_sq) / (n3_ * n3_))), vec3(0.0)));
+    vec3 s_3 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(1e-12)));
+    vec3 p = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(1e-12)));
+    return vec3[2](s_3, p);
+}
+
+vec3 weft_film_sensitivity(float opd_nm) {
+    float phase = ((6.2831855 * opd_nm) * 0.001);
+    vec4 sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
+    vec4 sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
+    vec4 ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5 * sa) * sa)));
+    vec4 tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5 * sb_1) * sb_1)));
+    vec3 xyz = vec3(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
+    return ((WEFT_XYZ_TO_REC709_ * xyz) / vec3(130.93048, 100.96242, 95.96065));
+}
+
+WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
+    float big_r12_ = (r12_ * r12_);
+    float t121_ = (1.0 - big_r12_);
+    vec3 big_r23_ = (r23_ * r23_);
+    vec3 big_r123_ = min((big_r12_ * big_r23_), vec3(0.9999));
+    vec3 rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1.0) - big_r123_));
+    vec3 sign_ = mix(vec3(1.0), vec3(-1.0), lessThan((-(r12_) * r23_), vec3(0.0)));
+    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
+}
+
+vec3 weft_film_fourier(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
+    vec3 reflectance = vec3(0.0);
+    vec3 c_s = vec3(0.0);
+    vec3 c_p = vec3(0.0);
+    uint m = 1u;
+    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
+    if ((cos2_sq <= 0.0)) {
+        return vec3(1.0);
+    }
+    float cos2_1 = sqrt(cos2_sq);
+    float opd = (((2.0 * _e10) * max(thickness_nm_1, 0.0)) * cos2_1);
+    vec2 _e27 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    vec3 _e28 = weft_ior_from_f0_(base_f0_);
+    vec3 _e29[2] = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
+    WeftFilmSeries _e32 = weft_film_series(_e27.x, _e29[0]);
+    WeftFilmSeries _e35 = weft_film_series(_e27.y, _e29[1]);
+    reflectance = (_e32.dc + _e35.dc);
+    c_s = _e32.first;
+    c_p = _e35.first;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e68 = m;
+            m = (_e68 + 1u);
+        }
+        loop_init = false;
+        uint _e46 = m;
+        if ((_e46 <= WEFT_FILM_ORDERS)) {
+        } else {
+            break;
+        }
+        {
+            vec3 _e49 = c_s;
+            c_s = (_e49 * _e32.ratio);
+            vec3 _e52 = c_p;
+            c_p = (_e52 * _e35.ratio);
+            vec3 _e55 = reflectance;
+            vec3 _e56 = c_s;
+            vec3 _e57 = c_p;
+            uint _e61 = m;
+            vec3 _e64 = weft_film_sensitivity((float(_e61) * opd));
+            reflectance = (_e55 + ((2.0 * (_e56 + _e57)) * _e64));
+        }
+    }
+    vec3 _e70 = reflectance;
+    return clamp((0.5 * _e70), vec3(0.0), vec3(1.0));
+}
+
+float laser_cos_in_plane(vec3 n_5, vec3 v_1, vec3 direction) {
+    vec3 p_1 = cross(direction, n_5);
+    float p_len = length(p_1);
+    if ((p_len < 0.0001)) {
+        float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        return _e8;
+    }
+    vec3 p_unit = (p_1 / vec3(p_len));
+    vec3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    float len = length(v_in_plane);
+    float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    return _e19;
+}
+
+vec3 laser_film_fast(float cos_theta, float d1_, float d2_, vec3 f0_3) {
+    float _e6 = _group_1_binding_0_fs.film_ior;
+    vec3 _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
+    if ((abs((d1_ - d2_)) < 0.5)) {
+        return _e7;
+    }
+    float _e14 = _group_1_binding_0_fs.film_ior;
+    vec3 _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
+    return (0.5 * (_e7 + _e15));
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 n = vec3(0.0);
+    float film_cos = 0.0;
+    vec2 direction_ts = vec2(1.0, 0.0);
+    vec3 surface_base = vec3(0.0);
+    vec3 f_light = vec3(0.0);
+    vec3 e_spec = vec3(0.0);
+    float light_cos = 0.0;
+    vec3 film_view = vec3(0.0);
+    vec3 film_light = vec3(0.0);
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
+    vec3 rmo = _e19.xyz;
+    float _e23 = _group_1_binding_0_fs.roughness;
+    float roughness_6 = clamp((_e23 * rmo.x), 0.0, 1.0);
+    float _e29 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp((_e29 * rmo.y), 0.0, 1.0);
+    float _e36 = _group_1_binding_0_fs.occlusion_strength;
+    float ao = clamp(mix(1.0, rmo.z, _e36), 0.0, 1.0);
+    vec4 _e45 = _group_1_binding_0_fs.offset_map_st;
+    vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
+    vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
+    vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
+    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
+    n = _e57;
+    vec3 _e59 = weft_main_light_direction();
+    vec3 _e61 = n;
+    vec3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
+    vec3 _e63 = n;
+    float _e65 = weft_clamp_cos(dot(_e63, _e55));
+    vec3 _e66 = n;
+    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
+    vec3 _e69 = n;
+    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e55, _e62), 0.0, 1.0);
+    film_cos = _e65;
+    {
+        mat3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        {
+            vec4 _e83 = texture(_group_1_binding_8_fs, vec2(_e5));
+            vec2 flow = ((_e83.xy * 2.0) - vec2(1.0));
+            direction_ts = ((dot(flow, flow) > 1e-6) ? flow : vec2(1.0, 0.0));
+        }
+        float _e99 = direction_ts.x;
+        float _e103 = direction_ts.y;
+        vec3 direction_1 = ((_e76[0] * _e99) + (_e76[1] * _e103));
+        vec3 _e106 = n;
+        float _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
+        film_cos = _e107;
+    }
+    surface_base = base;
+    vec3 _e111 = surface_base;
+    vec3 f0_4 = mix(vec3(0.04), _e111, metallic);
+    vec3 _e113 = surface_base;
+    vec3 diffuse_albedo = (_e113 * (1.0 - metallic));
+    vec2 _e117 = weft_env_brdf_lut(_e65, roughness_6);
+    vec3 _e118 = weft_f_schlick(f0_4, v_dot_h_1);
+    f_light = _e118;
+    vec3 _e120 = weft_env_brdf_from_lut(f0_4, _e117);
+    e_spec = _e120;
+    {
+        float _e124 = _group_1_binding_0_fs.thickness_min;
+        float _e127 = _group_1_binding_0_fs.thickness_max;
+        float d1_1 = mix(_e124, _e127, offsets.x);
+        float _e132 = _group_1_binding_0_fs.thickness_min;
+        float _e135 = _group_1_binding_0_fs.thickness_max;
+        float d2_1 = mix(_e132, _e135, offsets.y);
+        float _e140 = _group_1_binding_0_fs.film_strength;
+        float strength = clamp(_e140, 0.0, 1.0);
+        light_cos = v_dot_h_1;
+        {
+            float _e143 = film_cos;
+            light_cos = _e143;
+        }
+        {
+            float _e146 = film_cos;
+            vec3 _e147 = laser_film_fast(_e146, d1_1, d2_1, f0_4);
+            film_view = _e147;
+            float _e148 = light_cos;
+            vec3 _e149 = laser_film_fast(_e148, d1_1, d2_1, f0_4);
+            film_light = _e149;
+        }
+        vec3 _e150 = f_light;
+        vec3 _e151 = film_light;
+        f_light = mix(_e150, _e151, strength);
+        vec3 _e153 = e_spec;
+        vec3 _e154 = film_view;
+        e_spec = mix(_e153, (_e154 * (_e117.x + _e117.y)), strength);
+    }
+    vec3 _e162 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e162), vec3(0.0));
+    float _e167 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
+    vec3 _e168 = n;
+    float _e169 = weft_d_ggx_nh(_e168, _e62, roughness_6);
+    vec3 _e171 = f_light;
+    vec3 specular = ((_e169 * _e167) * _e171);
+    vec3 _e173 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e173);
+    vec3 _e176 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e176) * n_dot_l_1);
+    vec3 _e180 = n;
+    vec3 _e182 = weft_prefiltered_radiance(reflect(-(_e55), _e180), roughness_6);
+    vec3 _e183 = e_spec;
+    vec3 indirect_specular = ((_e182 * _e183) * ao);
+    vec3 _e186 = n;
+    vec3 _e187 = weft_sh_irradiance(_e186);
+    vec3 indirect_diffuse = (((_e187 * ao) * kd) * diffuse_albedo);
+    vec3 color = ((direct + indirect_specular) + indirect_diffuse);
+    _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
+    return;
+}
+

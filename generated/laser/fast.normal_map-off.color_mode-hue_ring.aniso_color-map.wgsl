@@ -1,0 +1,506 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    saturation: f32,
+    brightness: f32,
+    span: f32,
+    view_offset: f32,
+    offset_map_st: vec4<f32>,
+    sin_mapping: u32,
+    color_direction: f32,
+    film_strength: f32,
+    film_ior: f32,
+    thickness_min: f32,
+    thickness_max: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftFilmSeries {
+    dc: vec3<f32>,
+    first: vec3<f32>,
+    ratio: vec3<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const COLOR_MODE_HUE_RING: u32 = 0u;
+const COLOR_MODE_CUSTOM: u32 = 1u;
+const ANISO_COLOR_OFF: u32 = 0u;
+const ANISO_COLOR_VALUE: u32 = 1u;
+const ANISO_COLOR_MAP: u32 = 2u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_FILM_PI: f32 = 3.1415927f;
+const WEFT_FILM_SAMPLES: u32 = 101u;
+const WEFT_FILM_LAMBDA_MIN: f32 = 380f;
+const WEFT_FILM_LAMBDA_MAX: f32 = 780f;
+const WEFT_FILM_FADE_NM: f32 = 30f;
+const WEFT_XYZ_TO_REC709_: mat3x3<f32> = mat3x3<f32>(vec3<f32>(3.2404542f, -0.969266f, 0.0556434f), vec3<f32>(-1.5371385f, 1.8760108f, -0.2040259f), vec3<f32>(-0.4985314f, 0.041556f, 1.0572252f));
+const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289f, 17.9875f, -22.8564f, 14.636f);
+const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908f, 64.448f, 5.9984f, 99.7587f);
+const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1.95281f);
+const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
+const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
+const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
+const WEFT_FILM_ORDERS: u32 = 4u;
+const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var offset_map: texture_2d<f32>;
+@group(1) @binding(8) 
+var direction_map: texture_2d<f32>;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s = select(-1f, 1f, (n_1.z >= 0f));
+    let a = (-1f / (s + n_1.z));
+    let b = ((n_1.x * n_1.y) * a);
+    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
+    let a2_ = (a_1 * a_1);
+    let noh = saturate(dot(n_2, h));
+    let nxh = cross(n_2, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_2 = (_e3 * _e3);
+    let a2_1 = (a_2 * a_2);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_3.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_3.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_3.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_3.x) * n_3.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_3.y) * n_3.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_3.z) * n_3.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_3.x) * n_3.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_4);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_ior_from_f0_(f0_2: vec3<f32>) -> vec3<f32> {
+    let s_2 = sqrt(clamp(f0_2, vec3(0f), vec3(0.9999f)));
+    return ((vec3(1f) + s_2) / (vec3(1f) - s_2));
+}
+
+fn weft_film_ior(film_ior: f32, thickness_nm: f32) -> f32 {
+    return mix(1f, max(film_ior, 1f), smoothstep(0f, WEFT_FILM_FADE_NM, thickness_nm));
+}
+
+fn weft_fresnel_amplitudes(n_i: f32, n_t: f32, cos_i: f32, cos_t: f32) -> vec2<f32> {
+    let rs = (((n_i * cos_i) - (n_t * cos_t)) / max(((n_i * cos_i) + (n_t * cos_t)), 0.000000000001f));
+    let rp = (((n_t * cos_i) - (n_i * cos_t)) / max(((n_t * cos_i) + (n_i * cos_t)), 0.000000000001f));
+    return vec2<f32>(rs, rp);
+}
+
+fn weft_film_base_amplitudes(n2_: f32, cos2_: f32, n3_: vec3<f32>, sin1_sq: f32) -> array<vec3<f32>, 2> {
+    let cos3_ = sqrt(max((vec3(1f) - (vec3(sin1_sq) / (n3_ * n3_))), vec3(0f)));
+    let s_3 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(0.000000000001f)));
+    let p = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
+    return array<vec3<f32>, 2>(s_3, p);
+}
+
+fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
+    let phase = ((6.2831855f * opd_nm) * 0.001f);
+    let sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
+    let sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
+    let ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5f * sa) * sa)));
+    let tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5f * sb_1) * sb_1)));
+    let xyz = vec3<f32>(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
+    return ((WEFT_XYZ_TO_REC709_ * xyz) / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+}
+
+fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
+    let big_r12_ = (r12_ * r12_);
+    let t121_ = (1f - big_r12_);
+    let big_r23_ = (r23_ * r23_);
+    let big_r123_ = min((big_r12_ * big_r23_), vec3(0.9999f));
+    let rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1f) - big_r123_));
+    let sign_ = select(vec3(1f), vec3(-1f), ((-(r12_) * r23_) < vec3(0f)));
+    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
+}
+
+fn weft_film_fourier(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> vec3<f32> {
+    var reflectance: vec3<f32>;
+    var c_s: vec3<f32>;
+    var c_p: vec3<f32>;
+    var m: u32 = 1u;
+
+    let cos1_ = clamp(cos_theta1_, 0f, 1f);
+    let sin1_sq_1 = (1f - (cos1_ * cos1_));
+    let _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
+    if (cos2_sq <= 0f) {
+        return vec3(1f);
+    }
+    let cos2_1 = sqrt(cos2_sq);
+    let opd = (((2f * _e10) * max(thickness_nm_1, 0f)) * cos2_1);
+    let _e27 = weft_fresnel_amplitudes(1f, _e10, cos1_, cos2_1);
+    let _e28 = weft_ior_from_f0_(base_f0_);
+    let _e29 = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
+    let _e32 = weft_film_series(_e27.x, _e29[0]);
+    let _e35 = weft_film_series(_e27.y, _e29[1]);
+    reflectance = (_e32.dc + _e35.dc);
+    c_s = _e32.first;
+    c_p = _e35.first;
+    loop {
+        let _e46 = m;
+        if (_e46 <= WEFT_FILM_ORDERS) {
+        } else {
+            break;
+        }
+        {
+            let _e49 = c_s;
+            c_s = (_e49 * _e32.ratio);
+            let _e52 = c_p;
+            c_p = (_e52 * _e35.ratio);
+            let _e55 = reflectance;
+            let _e56 = c_s;
+            let _e57 = c_p;
+            let _e61 = m;
+            let _e64 = weft_film_sensitivity((f32(_e61) * opd));
+            reflectance = (_e55 + ((2f * (_e56 + _e57)) * _e64));
+        }
+        continuing {
+            let _e68 = m;
+            m = (_e68 + 1u);
+        }
+    }
+    let _e70 = reflectance;
+    return clamp((0.5f * _e70), vec3(0f), vec3(1f));
+}
+
+fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p_1 = cross(direction, n_5);
+    let p_len = length(p_1);
+    if (p_len < 0.0001f) {
+        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        return _e8;
+    }
+    let p_unit = (p_1 / vec3(p_len));
+    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let len = length(v_in_plane);
+    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    return _e19;
+}
+
+fn laser_film_fast(cos_theta: f32, d1_: f32, d2_: f32, f0_3: vec3<f32>) -> vec3<f32> {
+    let _e6 = material.film_ior;
+    let _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
+    if (abs((d1_ - d2_)) < 0.5f) {
+        return _e7;
+    }
+    let _e14 = material.film_ior;
+    let _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
+    return (0.5f * (_e7 + _e15));
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var film_cos: f32;
+    var direction_ts: vec2<f32> = vec2<f32>(1f, 0f);
+    var surface_base: vec3<f32>;
+    var f_light: vec3<f32>;
+    var e_spec: vec3<f32>;
+    var light_cos: f32;
+    var film_view: vec3<f32>;
+    var film_light: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_6 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e36));
+    let _e45 = material.offset_map_st;
+    let _e46 = weft_transform_uv(in_1.uv0_, _e45);
+    let _e47 = textureSample(offset_map, material_sampler, _e46);
+    let offsets = saturate(_e47.xy);
+    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
+    n = _e57;
+    let _e59 = weft_main_light_direction();
+    let _e61 = n;
+    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
+    let _e63 = n;
+    let _e65 = weft_clamp_cos(dot(_e63, _e55));
+    let _e66 = n;
+    let n_dot_l_1 = saturate(dot(_e66, _e59));
+    let _e69 = n;
+    let n_dot_h = saturate(dot(_e69, _e62));
+    let v_dot_h_1 = saturate(dot(_e55, _e62));
+    film_cos = _e65;
+    {
+        let _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        {
+            let _e83 = textureSample(direction_map, material_sampler, _e5);
+            let flow = ((_e83.xy * 2f) - vec2(1f));
+            direction_ts = select(vec2<f32>(1f, 0f), flow, (dot(flow, flow) > 0.000001f));
+        }
+        let _e99 = direction_ts.x;
+        let _e103 = direction_ts.y;
+        let direction_1 = ((_e76[0] * _e99) + (_e76[1] * _e103));
+        let _e106 = n;
+        let _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
+        film_cos = _e107;
+    }
+    surface_base = base;
+    let _e111 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e111, metallic);
+    let _e113 = surface_base;
+    let diffuse_albedo = (_e113 * (1f - metallic));
+    let _e117 = weft_env_brdf_lut(_e65, roughness_6);
+    let _e118 = weft_f_schlick(f0_4, v_dot_h_1);
+    f_light = _e118;
+    let _e120 = weft_env_brdf_from_lut(f0_4, _e117);
+    e_spec = _e120;
+    {
+        let _e124 = material.thickness_min;
+        let _e127 = material.thickness_max;
+        let d1_1 = mix(_e124, _e127, offsets.x);
+        let _e132 = material.thickness_min;
+        let _e135 = material.thickness_max;
+        let d2_1 = mix(_e132, _e135, offsets.y);
+        let _e140 = material.film_strength;
+        let strength = saturate(_e140);
+        light_cos = v_dot_h_1;
+        {
+            let _e143 = film_cos;
+            light_cos = _e143;
+        }
+        {
+            let _e146 = film_cos;
+            let _e147 = laser_film_fast(_e146, d1_1, d2_1, f0_4);
+            film_view = _e147;
+            let _e148 = light_cos;
+            let _e149 = laser_film_fast(_e148, d1_1, d2_1, f0_4);
+            film_light = _e149;
+        }
+        let _e150 = f_light;
+        let _e151 = film_light;
+        f_light = mix(_e150, _e151, strength);
+        let _e153 = e_spec;
+        let _e154 = film_view;
+        e_spec = mix(_e153, (_e154 * (_e117.x + _e117.y)), strength);
+    }
+    let _e162 = e_spec;
+    let kd = max((vec3(1f) - _e162), vec3(0f));
+    let _e167 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
+    let _e168 = n;
+    let _e169 = weft_d_ggx_nh(_e168, _e62, roughness_6);
+    let _e171 = f_light;
+    let specular = ((_e169 * _e167) * _e171);
+    let _e173 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e173);
+    let _e176 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e176) * n_dot_l_1);
+    let _e180 = n;
+    let _e182 = weft_prefiltered_radiance(reflect(-(_e55), _e180), roughness_6);
+    let _e183 = e_spec;
+    let indirect_specular = ((_e182 * _e183) * ao);
+    let _e186 = n;
+    let _e187 = weft_sh_irradiance(_e186);
+    let indirect_diffuse = (((_e187 * ao) * kd) * diffuse_albedo);
+    let color = ((direct + indirect_specular) + indirect_diffuse);
+    return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
+}

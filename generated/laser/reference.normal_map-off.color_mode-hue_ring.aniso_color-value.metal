@@ -1,0 +1,651 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    char _pad4[4];
+    metal::float4 base_map_st;
+    float normal_strength;
+    float saturation;
+    float brightness;
+    float span;
+    float view_offset;
+    char _pad10[12];
+    metal::float4 offset_map_st;
+    uint sin_mapping;
+    float color_direction;
+    float film_strength;
+    float film_ior;
+    float thickness_min;
+    float thickness_max;
+    char _pad17[8];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct type_12 {
+    metal::float3 inner[2];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint COLOR_MODE_HUE_RING = 0u;
+constant uint COLOR_MODE_CUSTOM = 1u;
+constant uint ANISO_COLOR_OFF = 0u;
+constant uint ANISO_COLOR_VALUE = 1u;
+constant uint ANISO_COLOR_MAP = 2u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_FILM_PI = 3.1415927;
+constant uint WEFT_FILM_SAMPLES = 101u;
+constant float WEFT_FILM_LAMBDA_MIN = 380.0;
+constant float WEFT_FILM_LAMBDA_MAX = 780.0;
+constant float WEFT_FILM_FADE_NM = 30.0;
+constant metal::float3x3 WEFT_XYZ_TO_REC709_ = metal::float3x3(metal::float3(3.2404542, -0.969266, 0.0556434), metal::float3(-1.5371385, 1.8760108, -0.2040259), metal::float3(-0.4985314, 0.041556, 1.0572252));
+constant metal::float4 WEFT_FILM_LOBE_WEIGHT_A = metal::float4(112.289, 17.9875, -22.8564, 14.636);
+constant metal::float4 WEFT_FILM_LOBE_WEIGHT_B = metal::float4(27.8908, 64.448, 5.9984, 99.7587);
+constant metal::float4 WEFT_FILM_LOBE_MU_A = metal::float4(1.64821, 2.23783, 1.51945, 1.95281);
+constant metal::float4 WEFT_FILM_LOBE_MU_B = metal::float4(1.87261, 1.72342, 2.31367, 2.20514);
+constant metal::float4 WEFT_FILM_LOBE_SIGMA_A = metal::float4(0.112563, 0.097781, 0.0710853, 0.142693);
+constant metal::float4 WEFT_FILM_LOBE_SIGMA_B = metal::float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
+constant uint WEFT_FILM_ORDERS = 4u;
+constant metal::float3 WEFT_FILM_SENSITIVITY_AT_ZERO = metal::float3(107.41976, 106.97481, 105.7571);
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n_1
+) {
+    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n_1.z);
+    float b = (n_1.x * n_1.y) * a;
+    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
+}
+
+float weft_d_ggx_nh(
+    metal::float3 n_2,
+    metal::float3 h,
+    float roughness_1
+) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e3 * _e3;
+    float a2_ = a_1 * a_1;
+    float noh = metal::saturate(metal::dot(n_2, h));
+    metal::float3 nxh = metal::cross(n_2, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+float weft_v_smith_ggx_correlated(
+    float n_dot_v,
+    float n_dot_l,
+    float roughness_2
+) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = _e3 * _e3;
+    float a2_1 = a_2 * a_2;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
+    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_3,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_3,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness_3);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_4,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+metal::float3 weft_ior_from_f0_(
+    metal::float3 f0_2
+) {
+    metal::float3 s_2 = metal::sqrt(metal::clamp(f0_2, metal::float3(0.0), metal::float3(0.9999)));
+    return (metal::float3(1.0) + s_2) / (metal::float3(1.0) - s_2);
+}
+
+float weft_film_ior(
+    float film_ior,
+    float thickness_nm
+) {
+    return metal::mix(1.0, metal::max(film_ior, 1.0), metal::smoothstep(0.0, WEFT_FILM_FADE_NM, thickness_nm));
+}
+
+float weft_cmf_lobe(
+    float lambda,
+    float mu,
+    float sigma_left,
+    float sigma_right
+) {
+    float t_1 = (lambda - mu) / ((lambda < mu) ? sigma_left : sigma_right);
+    return metal::exp((-0.5 * t_1) * t_1);
+}
+
+metal::float3 weft_cie_xyz(
+    float lambda_1
+) {
+    float _e4 = weft_cmf_lobe(lambda_1, 599.8, 37.9, 31.0);
+    float _e10 = weft_cmf_lobe(lambda_1, 442.0, 16.0, 26.7);
+    float _e17 = weft_cmf_lobe(lambda_1, 501.1, 20.4, 26.2);
+    float x_1 = ((1.056 * _e4) + (0.362 * _e10)) - (0.065 * _e17);
+    float _e24 = weft_cmf_lobe(lambda_1, 568.8, 46.9, 40.5);
+    float _e30 = weft_cmf_lobe(lambda_1, 530.9, 16.3, 31.1);
+    float y = (0.821 * _e24) + (0.286 * _e30);
+    float _e37 = weft_cmf_lobe(lambda_1, 437.0, 11.8, 36.0);
+    float _e43 = weft_cmf_lobe(lambda_1, 459.0, 26.0, 13.8);
+    float z = (1.217 * _e37) + (0.681 * _e43);
+    return metal::float3(x_1, y, z);
+}
+
+metal::float2 weft_fresnel_amplitudes(
+    float n_i,
+    float n_t,
+    float cos_i,
+    float cos_t
+) {
+    float rs = ((n_i * cos_i) - (n_t * cos_t)) / metal::max((n_i * cos_i) + (n_t * cos_t), 0.000000000001);
+    float rp = ((n_t * cos_i) - (n_i * cos_t)) / metal::max((n_t * cos_i) + (n_i * cos_t), 0.000000000001);
+    return metal::float2(rs, rp);
+}
+
+metal::float3 weft_airy(
+    float r12_,
+    metal::float3 r23_,
+    float cos_delta
+) {
+    metal::float3 cross_term = ((2.0 * r12_) * r23_) * cos_delta;
+    metal::float3 numerator = (metal::float3(r12_ * r12_) + (r23_ * r23_)) + cross_term;
+    metal::float3 denominator = (metal::float3(1.0) + (((r12_ * r12_) * r23_) * r23_)) + cross_term;
+    return numerator / metal::max(denominator, metal::float3(0.000000000001));
+}
+
+type_12 weft_film_base_amplitudes(
+    float n2_,
+    float cos2_,
+    metal::float3 n3_,
+    float sin1_sq
+) {
+    metal::float3 cos3_ = metal::sqrt(metal::max(metal::float3(1.0) - (metal::float3(sin1_sq) / (n3_ * n3_)), metal::float3(0.0)));
+    metal::float3 s_3 = (metal::float3(n2_ * cos2_) - (n3_ * cos3_)) / metal::max(metal::float3(n2_ * cos2_) + (n3_ * cos3_), metal::float3(0.000000000001));
+    metal::float3 p = ((n3_ * cos2_) - (metal::float3(n2_) * cos3_)) / metal::max((n3_ * cos2_) + (metal::float3(n2_) * cos3_), metal::float3(0.000000000001));
+    return type_12 {{s_3, p}};
+}
+
+metal::float3 weft_film_spectral(
+    float cos_theta1_,
+    float thickness_nm_1,
+    float film_ior_1,
+    metal::float3 base_f0_
+) {
+    metal::float3 xyz_r = metal::float3(0.0);
+    metal::float3 xyz_g = metal::float3(0.0);
+    metal::float3 xyz_b = metal::float3(0.0);
+    metal::float3 white = metal::float3(0.0);
+    uint i = 0u;
+    bool local = {};
+    float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
+    if (cos2_sq <= 0.0) {
+        return metal::float3(1.0);
+    }
+    float cos2_1 = metal::sqrt(cos2_sq);
+    metal::float2 _e21 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    metal::float3 _e22 = weft_ior_from_f0_(base_f0_);
+    type_12 _e23 = weft_film_base_amplitudes(_e10, cos2_1, _e22, sin1_sq_1);
+    float d_1 = metal::max(thickness_nm_1, 0.0);
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e95 = i;
+            i = _e95 + 1u;
+        }
+        loop_init = false;
+        uint _e41 = i;
+        if (_e41 < WEFT_FILM_SAMPLES) {
+        } else {
+            break;
+        }
+        {
+            uint _e45 = i;
+            float lambda_2 = WEFT_FILM_LAMBDA_MIN + (4.0 * static_cast<float>(_e45));
+            uint _e49 = i;
+            if (!((_e49 == 0u))) {
+                uint _e55 = i;
+                local = _e55 == 100u;
+            } else {
+                local = true;
+            }
+            bool _e59 = local;
+            float w = _e59 ? 0.5 : 1.0;
+            float cos_delta_1 = metal::cos((((12.566371 * _e10) * d_1) * cos2_1) / lambda_2);
+            metal::float3 _e71 = weft_airy(_e21.x, _e23.inner[0], cos_delta_1);
+            metal::float3 _e74 = weft_airy(_e21.y, _e23.inner[1], cos_delta_1);
+            metal::float3 r_1 = 0.5 * (_e71 + _e74);
+            metal::float3 _e78 = weft_cie_xyz(lambda_2);
+            metal::float3 cmf = _e78 * w;
+            metal::float3 _e80 = xyz_r;
+            xyz_r = _e80 + (r_1.x * cmf);
+            metal::float3 _e84 = xyz_g;
+            xyz_g = _e84 + (r_1.y * cmf);
+            metal::float3 _e88 = xyz_b;
+            xyz_b = _e88 + (r_1.z * cmf);
+            metal::float3 _e92 = white;
+            white = _e92 + cmf;
+        }
+    }
+    metal::float3 _e98 = white;
+    metal::float3 rgb_white = WEFT_XYZ_TO_REC709_ * _e98;
+    metal::float3 _e101 = xyz_r;
+    metal::float3 _e105 = xyz_g;
+    metal::float3 _e109 = xyz_b;
+    metal::float3 rgb = metal::float3((WEFT_XYZ_TO_REC709_ * _e101).x, (WEFT_XYZ_TO_REC709_ * _e105).y, (WEFT_XYZ_TO_REC709_ * _e109).z);
+    return metal::clamp(rgb / rgb_white, metal::float3(0.0), metal::float3(1.0));
+}
+
+float laser_cos_in_plane(
+    metal::float3 n_5,
+    metal::float3 v_1,
+    metal::float3 direction
+) {
+    metal::float3 p_1 = metal::cross(direction, n_5);
+    float p_len = metal::length(p_1);
+    if (p_len < 0.0001) {
+        float _e8 = weft_clamp_cos(metal::dot(n_5, v_1));
+        return _e8;
+    }
+    metal::float3 p_unit = p_1 / metal::float3(p_len);
+    metal::float3 v_in_plane = v_1 - (metal::dot(v_1, p_unit) * p_unit);
+    float len = metal::length(v_in_plane);
+    float _e19 = weft_clamp_cos(metal::dot(n_5, v_in_plane) / metal::max(len, 0.0001));
+    return _e19;
+}
+
+metal::float3 laser_film_reference(
+    float cos_theta,
+    float d1_,
+    float d2_,
+    metal::float3 f0_3,
+    constant WeftMaterial& material
+) {
+    float _e6 = material.film_ior;
+    metal::float3 _e7 = weft_film_spectral(cos_theta, d1_, _e6, f0_3);
+    if (metal::abs(d1_ - d2_) < 0.5) {
+        return _e7;
+    }
+    float _e14 = material.film_ior;
+    metal::float3 _e15 = weft_film_spectral(cos_theta, d2_, _e14, f0_3);
+    return 0.5 * (_e7 + _e15);
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    float film_cos = {};
+    metal::float2 direction_ts = metal::float2(1.0, 0.0);
+    metal::float3 surface_base = {};
+    metal::float3 f_light = {};
+    metal::float3 e_spec = {};
+    float light_cos = {};
+    metal::float3 film_view = {};
+    metal::float3 film_light = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
+    metal::float3 rmo = _e19.xyz;
+    float _e23 = material.roughness;
+    float roughness_6 = metal::saturate(_e23 * rmo.x);
+    float _e29 = material.metallic;
+    float metallic = metal::saturate(_e29 * rmo.y);
+    float _e36 = material.occlusion_strength;
+    float ao = metal::saturate(metal::mix(1.0, rmo.z, _e36));
+    metal::float4 _e45 = material.offset_map_st;
+    metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
+    metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
+    metal::float2 offsets = metal::saturate(_e47.xy);
+    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
+    n = _e57;
+    metal::float3 _e59 = weft_main_light_direction(weft_frame);
+    metal::float3 _e61 = n;
+    metal::float3 _e62 = weft_safe_normalize(_e59 + _e55, _e61);
+    metal::float3 _e63 = n;
+    float _e65 = weft_clamp_cos(metal::dot(_e63, _e55));
+    metal::float3 _e66 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
+    metal::float3 _e69 = n;
+    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e62));
+    film_cos = _e65;
+    {
+        metal::float3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        {
+            float _e83 = material.color_direction;
+            float angle = ((_e83) * 0.017453292519943295474);
+            direction_ts = metal::float2(metal::cos(angle), metal::sin(angle));
+        }
+        float _e90 = direction_ts.x;
+        float _e94 = direction_ts.y;
+        metal::float3 direction_1 = (_e76[0] * _e90) + (_e76[1] * _e94);
+        metal::float3 _e97 = n;
+        float _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
+        film_cos = _e98;
+    }
+    surface_base = base;
+    metal::float3 _e102 = surface_base;
+    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e102, metallic);
+    metal::float3 _e104 = surface_base;
+    metal::float3 diffuse_albedo = _e104 * (1.0 - metallic);
+    metal::float2 _e108 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e109 = weft_f_schlick(f0_4, v_dot_h_1);
+    f_light = _e109;
+    metal::float3 _e111 = weft_env_brdf_from_lut(f0_4, _e108);
+    e_spec = _e111;
+    {
+        float _e115 = material.thickness_min;
+        float _e118 = material.thickness_max;
+        float d1_1 = metal::mix(_e115, _e118, offsets.x);
+        float _e123 = material.thickness_min;
+        float _e126 = material.thickness_max;
+        float d2_1 = metal::mix(_e123, _e126, offsets.y);
+        float _e131 = material.film_strength;
+        float strength = metal::saturate(_e131);
+        light_cos = v_dot_h_1;
+        {
+            float _e134 = film_cos;
+            light_cos = _e134;
+        }
+        {
+            float _e137 = film_cos;
+            metal::float3 _e138 = laser_film_reference(_e137, d1_1, d2_1, f0_4, material);
+            film_view = _e138;
+            float _e139 = light_cos;
+            metal::float3 _e140 = laser_film_reference(_e139, d1_1, d2_1, f0_4, material);
+            film_light = _e140;
+        }
+        metal::float3 _e141 = f_light;
+        metal::float3 _e142 = film_light;
+        f_light = metal::mix(_e141, _e142, strength);
+        metal::float3 _e144 = e_spec;
+        metal::float3 _e145 = film_view;
+        e_spec = metal::mix(_e144, _e145 * (_e108.x + _e108.y), strength);
+    }
+    metal::float3 _e153 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e153, metal::float3(0.0));
+    float _e158 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
+    metal::float3 _e159 = n;
+    float _e160 = weft_d_ggx_nh(_e159, _e62, roughness_6);
+    metal::float3 _e162 = f_light;
+    metal::float3 specular = (_e160 * _e158) * _e162;
+    metal::float3 _e164 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e164;
+    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e167) * n_dot_l_1;
+    metal::float3 _e171 = n;
+    metal::float3 _e173 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e171), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e174 = e_spec;
+    metal::float3 indirect_specular = (_e173 * _e174) * ao;
+    metal::float3 _e177 = n;
+    metal::float3 _e178 = weft_sh_irradiance(_e177, weft_frame);
+    metal::float3 indirect_diffuse = ((_e178 * ao) * kd) * diffuse_albedo;
+    metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
+    return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
+}

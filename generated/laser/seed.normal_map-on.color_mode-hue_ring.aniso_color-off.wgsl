@@ -1,0 +1,395 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    roughness: f32,
+    metallic: f32,
+    occlusion_strength: f32,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    saturation: f32,
+    brightness: f32,
+    span: f32,
+    view_offset: f32,
+    offset_map_st: vec4<f32>,
+    sin_mapping: u32,
+    color_direction: f32,
+    film_strength: f32,
+    film_ior: f32,
+    thickness_min: f32,
+    thickness_max: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const COLOR_MODE_HUE_RING: u32 = 0u;
+const COLOR_MODE_CUSTOM: u32 = 1u;
+const ANISO_COLOR_OFF: u32 = 0u;
+const ANISO_COLOR_VALUE: u32 = 1u;
+const ANISO_COLOR_MAP: u32 = 2u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_FILM_PI: f32 = 3.1415927f;
+const WEFT_FILM_SAMPLES: u32 = 101u;
+const WEFT_FILM_LAMBDA_MIN: f32 = 380f;
+const WEFT_FILM_LAMBDA_MAX: f32 = 780f;
+const WEFT_FILM_FADE_NM: f32 = 30f;
+const WEFT_XYZ_TO_REC709_: mat3x3<f32> = mat3x3<f32>(vec3<f32>(3.2404542f, -0.969266f, 0.0556434f), vec3<f32>(-1.5371385f, 1.8760108f, -0.2040259f), vec3<f32>(-0.4985314f, 0.041556f, 1.0572252f));
+const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289f, 17.9875f, -22.8564f, 14.636f);
+const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908f, 64.448f, 5.9984f, 99.7587f);
+const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1.95281f);
+const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
+const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
+const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
+const WEFT_FILM_ORDERS: u32 = 4u;
+const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var normal_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var offset_map: texture_2d<f32>;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
+    let s = select(-1f, 1f, (n_1.z >= 0f));
+    let a = (-1f / (s + n_1.z));
+    let b = ((n_1.x * n_1.y) * a);
+    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
+    let a2_ = (a_1 * a_1);
+    let noh = saturate(dot(n_2, h));
+    let nxh = cross(n_2, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_2 = (_e3 * _e3);
+    let a2_1 = (a_2 * a_2);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_3.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_3.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_3.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_3.x) * n_3.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_3.y) * n_3.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_3.z) * n_3.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_3.x) * n_3.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_4);
+    let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
+}
+
+fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
+    let v_1 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+}
+
+fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn laser_hsv_to_rgb(hsv: vec3<f32>) -> vec3<f32> {
+    let k = vec3<f32>(0f, 0.6666667f, 0.33333334f);
+    let p = abs(((fract((vec3(hsv.x) + k)) * 6f) - vec3(3f)));
+    let ring = saturate((p - vec3(1f)));
+    return (hsv.z * mix(vec3(1f), ring, hsv.y));
+}
+
+fn laser_seed_color(cos_theta: f32, layer_offsets: vec2<f32>) -> vec3<f32> {
+    var hsv_1: vec3<f32>;
+
+    let c_2 = saturate(cos_theta);
+    let _e13 = material.sin_mapping;
+    let x_1 = select((1f - c_2), sqrt(max((1f - (c_2 * c_2)), 0f)), (_e13 != 0u));
+    let _e19 = material.saturation;
+    let saturation = saturate(_e19);
+    let _e23 = material.brightness;
+    let brightness = saturate(_e23);
+    let _e27 = material.span;
+    hsv_1 = vec3<f32>((x_1 * _e27), saturation, brightness);
+    let _e32 = hsv_1.x;
+    let _e35 = material.view_offset;
+    let hue = (_e32 + _e35);
+    let _e41 = hsv_1.y;
+    let _e43 = hsv_1.z;
+    let _e45 = laser_hsv_to_rgb(vec3<f32>(fract((hue + layer_offsets.x)), _e41, _e43));
+    let _e50 = hsv_1.y;
+    let _e52 = hsv_1.z;
+    let _e54 = laser_hsv_to_rgb(vec3<f32>(fract((hue + layer_offsets.y)), _e50, _e52));
+    return (0.5f * (_e45 + _e54));
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var film_cos: f32;
+    var direction_ts: vec2<f32> = vec2<f32>(1f, 0f);
+    var surface_base: vec3<f32>;
+    var f_light: vec3<f32>;
+    var e_spec: vec3<f32>;
+    var light_cos: f32;
+    var film_view: vec3<f32>;
+    var film_light: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = textureSample(rmo_map, material_sampler, _e5);
+    let rmo = _e19.xyz;
+    let _e23 = material.roughness;
+    let roughness_6 = saturate((_e23 * rmo.x));
+    let _e29 = material.metallic;
+    let metallic = saturate((_e29 * rmo.y));
+    let _e36 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e36));
+    let _e45 = material.offset_map_st;
+    let _e46 = weft_transform_uv(in_1.uv0_, _e45);
+    let _e47 = textureSample(offset_map, material_sampler, _e46);
+    let offsets = saturate(_e47.xy);
+    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
+    n = _e57;
+    {
+        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e63 = textureSample(normal_map, material_sampler, _e5);
+        let texel_1 = _e63.xyz;
+        let _e67 = material.normal_strength;
+        let _e68 = weft_unpack_normal(texel_1, _e67);
+        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
+        n = _e69;
+    }
+    let _e70 = weft_main_light_direction();
+    let _e72 = n;
+    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
+    let _e74 = n;
+    let _e76 = weft_clamp_cos(dot(_e74, _e55));
+    let _e77 = n;
+    let n_dot_l_1 = saturate(dot(_e77, _e70));
+    let _e80 = n;
+    let n_dot_h = saturate(dot(_e80, _e73));
+    let v_dot_h_1 = saturate(dot(_e55, _e73));
+    film_cos = _e76;
+    surface_base = base;
+    {
+        let _e90 = film_cos;
+        let _e91 = laser_seed_color(_e90, offsets);
+        surface_base = (base * _e91);
+    }
+    let _e95 = surface_base;
+    let f0_2 = mix(vec3(0.04f), _e95, metallic);
+    let _e97 = surface_base;
+    let diffuse_albedo = (_e97 * (1f - metallic));
+    let _e101 = weft_env_brdf_lut(_e76, roughness_6);
+    let _e102 = weft_f_schlick(f0_2, v_dot_h_1);
+    f_light = _e102;
+    let _e104 = weft_env_brdf_from_lut(f0_2, _e101);
+    e_spec = _e104;
+    let _e108 = e_spec;
+    let kd = max((vec3(1f) - _e108), vec3(0f));
+    let _e113 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
+    let _e114 = n;
+    let _e115 = weft_d_ggx_nh(_e114, _e73, roughness_6);
+    let _e117 = f_light;
+    let specular = ((_e115 * _e113) * _e117);
+    let _e119 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e119);
+    let _e122 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e122) * n_dot_l_1);
+    let _e126 = n;
+    let _e128 = weft_prefiltered_radiance(reflect(-(_e55), _e126), roughness_6);
+    let _e129 = e_spec;
+    let indirect_specular = ((_e128 * _e129) * ao);
+    let _e132 = n;
+    let _e133 = weft_sh_irradiance(_e132);
+    let indirect_diffuse = (((_e133 * ao) * kd) * diffuse_albedo);
+    let color = ((direct + indirect_specular) + indirect_diffuse);
+    return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
+}
