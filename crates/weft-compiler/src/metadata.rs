@@ -176,6 +176,7 @@ pub fn tiers(m: &Material) -> Tiers {
                 )
             })
             .collect(),
+        stylised: m.stylised,
     }
 }
 

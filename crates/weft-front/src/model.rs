@@ -40,6 +40,10 @@ pub struct Material {
     pub params: Vec<Param>,
     pub keywords: Vec<Keyword>,
     pub tiers: Tiers,
+    /// `[material] stylised = true`: no physical ground truth (a stylised
+    /// look such as an SDF face shadow); it may ship a single tier, which is
+    /// then its reference (docs/material-format.md, `[[tier]]`).
+    pub stylised: bool,
     pub max_variants: usize,
     /// Span of `max_variants` when set (budget errors point there).
     pub max_variants_span: Option<Span>,

@@ -33,6 +33,7 @@ pub const MATERIAL_KEYS: &[&str] = &[
     "source",
     "includes",
     "requires",
+    "stylised",
 ];
 pub const GROUP_KEYS: &[&str] = &["label", "label_zh"];
 pub const PARAM_KEYS: &[&str] = &[
@@ -193,6 +194,7 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
             approximates: Vec::new(),
             looks: Vec::new(),
         },
+        stylised: mat.boolean("stylised", cx) == Some(true),
         max_variants: DEFAULT_MAX_VARIANTS,
         max_variants_span: None,
         exclude: Vec::new(),

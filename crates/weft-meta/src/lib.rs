@@ -609,6 +609,11 @@ pub struct Tiers {
     /// tier choice never picks them.
     #[serde(default)]
     pub looks: Vec<String>,
+    /// The material declares itself stylised (no physical ground truth,
+    /// `[material] stylised = true`). With a single tier, that tier is
+    /// `reference` here and nothing is measured against it.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub stylised: bool,
 }
 
 /// A named set of values for the inspector.

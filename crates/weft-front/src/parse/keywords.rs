@@ -253,14 +253,24 @@ pub(super) fn parse_tiers(top: &Table, material: &mut Material, cx: &mut Cx) {
         declared.push((approximates, look));
         material.tiers.values.push(name);
     }
+    // A stylised material may ship one tier of any name: it is the
+    // reference (nothing is measured against it).
+    let single_stylised = material.stylised && material.tiers.values.len() == 1;
     for required in ["fast", "reference"] {
+        if single_stylised {
+            break;
+        }
         if !material.tiers.values.iter().any(|t| t == required) {
             cx.error_with_note(
                 "missing-tier",
                 format!("the `{required}` tier is missing"),
                 v.span(),
                 "tiers declared here",
-                "every material has at least `fast` and `reference` tiers",
+                if material.stylised {
+                    "a stylised material declares one tier, or at least `fast` and `reference`"
+                } else {
+                    "every material has at least `fast` and `reference` tiers; one with no physical ground truth may declare `stylised = true` in [material] and ship a single tier"
+                },
             );
         }
     }
@@ -287,11 +297,19 @@ fn tier_relations(material: &mut Material, declared: &[DeclaredRelation], cx: &m
     let mut approximates = vec![None; n];
     for (i, (target, look)) in declared.iter().enumerate() {
         let name = &tiers.values[i];
-        if name == "reference" {
+        // A stylised material's only tier stands as its reference.
+        if name == "reference" || (material.stylised && n == 1) {
+            let what = if name == "reference" {
+                "the `reference` tier".to_string()
+            } else {
+                format!("tier `{name}`, a stylised material's only tier, is its reference: it")
+            };
             if let Some((_, span)) = target {
                 cx.error(
                     "tier-relation",
-                    "the `reference` tier approximates nothing: it is what the others are measured against",
+                    format!(
+                        "{what} approximates nothing: it is what the others are measured against"
+                    ),
                     span.clone(),
                     "remove this",
                 );
@@ -299,7 +317,7 @@ fn tier_relations(material: &mut Material, declared: &[DeclaredRelation], cx: &m
             if let Some(span) = look {
                 cx.error(
                     "tier-relation",
-                    "the `reference` tier cannot be a look: it is the most accurate model",
+                    format!("{what} cannot be a look: it is the most accurate model"),
                     span.clone(),
                     "remove this",
                 );
@@ -387,4 +405,82 @@ fn tier_relations(material: &mut Material, declared: &[DeclaredRelation], cx: &m
     }
     material.tiers.approximates = approximates;
     material.tiers.looks = looks;
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Diagnostics, SourceDb, load_material_in_memory};
+    use std::path::Path;
+
+    /// Loads `[material]` + `tiers` (TOML text) and returns the material and
+    /// the plain-text diagnostics.
+    fn load(material_keys: &str, tiers: &str) -> (Option<crate::model::Material>, String) {
+        let toml =
+            format!("[material]\nname = \"m\"\nsource = \"m.wgsl\"\n{material_keys}\n{tiers}");
+        let wgsl = "@fragment fn fs_main() -> @location(0) vec4<f32> { return vec4<f32>(1.0); }\n";
+        let (mut db, mut diags) = (SourceDb::new(), Diagnostics::new());
+        let m = load_material_in_memory(
+            "m/m.toml",
+            &toml,
+            &[("m/m.wgsl".into(), wgsl.into())],
+            Path::new("/materials"),
+            &mut db,
+            &mut diags,
+        );
+        (m, diags.render_plain(&db))
+    }
+
+    #[test]
+    fn a_stylised_material_may_ship_one_tier_which_is_its_reference() {
+        let (m, text) = load("stylised = true", "[[tier]]\nname = \"toon\"\n");
+        let m = m.unwrap_or_else(|| panic!("{text}"));
+        assert!(m.stylised);
+        assert_eq!(m.tiers.values, ["toon"]);
+        assert_eq!((m.tiers.reference, m.tiers.default), (0, 0));
+        assert_eq!(m.tiers.approximates, [None]);
+    }
+
+    #[test]
+    fn one_tier_without_stylised_is_an_error_that_names_the_key() {
+        let (m, text) = load("", "[[tier]]\nname = \"toon\"\n");
+        assert!(m.is_none());
+        assert!(
+            text.contains("missing-tier") && text.contains("stylised = true"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_stylised_materials_only_tier_cannot_be_a_look_or_approximate() {
+        let (m, text) = load(
+            "stylised = true",
+            "[[tier]]\nname = \"seed\"\nlook = true\n",
+        );
+        assert!(m.is_none());
+        assert!(
+            text.contains("stylised material's only tier") && text.contains("look"),
+            "{text}"
+        );
+        let (m, text) = load(
+            "stylised = true",
+            "[[tier]]\nname = \"seed\"\napproximates = \"seed\"\n",
+        );
+        assert!(m.is_none());
+        assert!(text.contains("approximates nothing"), "{text}");
+    }
+
+    #[test]
+    fn a_stylised_material_with_several_tiers_keeps_the_usual_rule() {
+        let (m, text) = load(
+            "stylised = true",
+            "[[tier]]\nname = \"fast\"\n[[tier]]\nname = \"seed\"\nlook = true\n",
+        );
+        assert!(m.is_none());
+        assert!(text.contains("the `reference` tier is missing"), "{text}");
+        let (m, text) = load(
+            "stylised = true",
+            "[[tier]]\nname = \"fast\"\n[[tier]]\nname = \"reference\"\n",
+        );
+        assert!(m.is_some(), "{text}");
+    }
 }
