@@ -120,6 +120,8 @@ enum SceneArg {
     Sphere,
     Cloth,
     Swatch,
+    /// The character bust: head (face UVs), eyes, hair cards, shoulders.
+    Bust,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -250,6 +252,7 @@ fn preview_options(args: &PreviewArgs) -> Result<weft_render::PreviewOptions, St
             SceneArg::Sphere => SceneKind::Sphere,
             SceneArg::Cloth => SceneKind::Cloth,
             SceneArg::Swatch => SceneKind::Swatch,
+            SceneArg::Bust => SceneKind::Bust,
         },
         width,
         height,

@@ -229,3 +229,55 @@ fn preview_takes_a_texture_parameter_from_a_png() {
         assert!(!out.exists(), "{arg}: wrote an image");
     }
 }
+
+#[test]
+fn preview_draws_the_bust_with_the_maps_on_the_face() {
+    // A map whose left half (u < 0.5) is red and right half blue: on the
+    // bust's face UVs (u = 0.5 + φ/π) the character's right cheek, on the
+    // image's left, is red and the left cheek blue.
+    let dir = tempfile::tempdir().unwrap();
+    let map = dir.path().join("halves.png");
+    let mut texels = Vec::new();
+    for _ in 0..8 {
+        for x in 0..8 {
+            texels.extend(if x < 4 {
+                [255, 0, 0, 255]
+            } else {
+                [0, 0, 255, 255]
+            });
+        }
+    }
+    std::fs::write(&map, weft_render::encode_png(8, 8, &texels).unwrap()).unwrap();
+    let out = dir.path().join("bust.png");
+    let o = weft(&[
+        "preview",
+        "generated/standard/standard.meta.json",
+        "-q",
+        "--scene",
+        "bust",
+        "--size",
+        "64x64",
+        "--set",
+        "base_color=1,1,1",
+        "--texture",
+        &format!("base_map={}", map.display()),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (w, _, img) = weft_render::decode_png(&std::fs::read(&out).unwrap(), "bust").unwrap();
+    let at = |x: u32, y: u32| {
+        let i = ((y * w + x) * 4) as usize;
+        [img[i], img[i + 1], img[i + 2]]
+    };
+    // Cheeks, below the eyes and either side of the nose.
+    let (left, right) = (at(26, 30), at(38, 30));
+    assert!(
+        left[0] > 2 * left[2].max(left[1]),
+        "image-left cheek {left:?} is not red"
+    );
+    assert!(
+        right[2] > 2 * right[0].max(right[1]),
+        "image-right cheek {right:?} is not blue"
+    );
+}

@@ -37,6 +37,7 @@
 //! mapping happens on the CPU.
 
 mod bindings;
+mod bust;
 mod draw;
 mod engine_uniforms;
 mod environment;
@@ -60,6 +61,7 @@ mod timing;
 mod uniform;
 mod values;
 
+pub use bust::{BustPart, bust_parts};
 pub use environment::{
     CubeLevel, EnvironmentMaps, MipRoughness, SkyParams, cube_direction, cube_face_uv, project_sh,
     sh_basis, texel_solid_angle,

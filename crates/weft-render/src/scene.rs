@@ -253,16 +253,24 @@ pub enum SceneKind {
     Sphere,
     Cloth,
     Swatch,
+    /// The character bust (`bust.rs`): head, eyes, hair cards, shoulders.
+    Bust,
 }
 
 impl SceneKind {
-    pub const ALL: [SceneKind; 3] = [SceneKind::Sphere, SceneKind::Cloth, SceneKind::Swatch];
+    pub const ALL: [SceneKind; 4] = [
+        SceneKind::Sphere,
+        SceneKind::Cloth,
+        SceneKind::Swatch,
+        SceneKind::Bust,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             SceneKind::Sphere => "sphere",
             SceneKind::Cloth => "cloth",
             SceneKind::Swatch => "swatch",
+            SceneKind::Bust => "bust",
         }
     }
 
@@ -286,6 +294,7 @@ impl Scene {
             SceneKind::Sphere => Scene::sphere(),
             SceneKind::Cloth => Scene::cloth(),
             SceneKind::Swatch => Scene::swatch(),
+            SceneKind::Bust => Scene::bust(),
         }
     }
 
@@ -331,6 +340,25 @@ impl Scene {
             camera: Camera {
                 eye: [0.0, 0.0, 3.4],
                 target: [0.0, 0.0, 0.0],
+                up: [0.0, 1.0, 0.0],
+                fov_y_degrees: 40.0,
+                near: 0.1,
+                far: 100.0,
+            },
+            light: Light::default(),
+        }
+    }
+}
+
+impl Scene {
+    /// The character bust, three-quarter height, face towards the camera.
+    pub fn bust() -> Scene {
+        Scene {
+            mesh: Mesh::bust(),
+            model: math::IDENTITY,
+            camera: Camera {
+                eye: [0.0, 0.55, 4.4],
+                target: [0.0, 0.3, 0.0],
                 up: [0.0, 1.0, 0.0],
                 fov_y_degrees: 40.0,
                 near: 0.1,

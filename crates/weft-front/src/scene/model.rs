@@ -18,16 +18,23 @@ pub enum BuiltinMesh {
     Sphere,
     Cloth,
     Swatch,
+    /// The character bust (head, eyes, hair cards, shoulders) as one mesh.
+    Bust,
 }
 
 impl BuiltinMesh {
-    pub const ALL: [BuiltinMesh; 3] =
-        [BuiltinMesh::Sphere, BuiltinMesh::Cloth, BuiltinMesh::Swatch];
+    pub const ALL: [BuiltinMesh; 4] = [
+        BuiltinMesh::Sphere,
+        BuiltinMesh::Cloth,
+        BuiltinMesh::Swatch,
+        BuiltinMesh::Bust,
+    ];
     pub fn name(self) -> &'static str {
         match self {
             BuiltinMesh::Sphere => "sphere",
             BuiltinMesh::Cloth => "cloth",
             BuiltinMesh::Swatch => "swatch",
+            BuiltinMesh::Bust => "bust",
         }
     }
     pub fn from_name(s: &str) -> Option<BuiltinMesh> {

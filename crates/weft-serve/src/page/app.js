@@ -18,7 +18,7 @@ const ZH = {
   'measured': '实测', 'GPU ms': 'GPU 毫秒', 'FLIP mean vs reference': '相对参考档的 FLIP 均值', 'no measurements': '无实测数据',
   'measured on an earlier version of this material': '实测数据来自此材质的旧版本', 'not compiled': '未编译',
   'static export: no live rebuilds': '静态导出：不会实时重建', 'live': '实时', 'Reset view': '重置视角',
-  'sphere': '球体', 'cloth': '布料', 'swatch': '样片', 'variants': '个变体', 'Warnings': '警告',
+  'sphere': '球体', 'cloth': '布料', 'swatch': '样片', 'bust': '半身像', 'variants': '个变体', 'Warnings': '警告',
   'static export: the sky keeps the default sun': '静态导出：天空保持默认太阳方向',
   'panorama (equirectangular)': '全景图（等距柱状投影）',
 };
@@ -487,7 +487,7 @@ function setLanguage(lang) {
 function previewControls() {
   const box = $('preview-controls');
   box.replaceChildren();
-  const mesh = el('select', { id: 'mesh' }, ...['sphere', 'cloth', 'swatch'].map((m) => el('option', { value: m, text: t(m) })));
+  const mesh = el('select', { id: 'mesh' }, ...['sphere', 'cloth', 'swatch', 'bust'].map((m) => el('option', { value: m, text: t(m) })));
   mesh.value = state.mesh;
   mesh.addEventListener('change', () => queue(async () => { state.mesh = mesh.value; await resetOrbit(); await render(); }));
   const tm = el('select', { id: 'tonemap' }, ...TONEMAPS.map((x) => el('option', { value: x, text: x })));
