@@ -156,7 +156,7 @@ fn hair_card(k: u32) -> Mesh {
     // 30 % overlap with the neighbours, so no scalp shows between cards.
     let half_width = 1.3 * PI / HAIR_CARDS as f32;
     // Alternate cards sit on two layers, so overlaps do not z-fight.
-    let lift = if k % 2 == 0 { 1.05 } else { 1.075 };
+    let lift = if k.is_multiple_of(2) { 1.05 } else { 1.075 };
     // The fringe ends at the brow (θ ≈ 0.42π) at the front, the back hair at
     // the nape (θ ≈ 0.78π).
     let end = 0.42 * PI + 0.36 * PI * (0.5 - 0.5 * centre_phi.cos());
