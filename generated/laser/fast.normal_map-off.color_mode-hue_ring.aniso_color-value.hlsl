@@ -54,6 +54,18 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    float2 r12_;
+    float3 r23_[2];
+    int _pad4_0;
+    bool total_internal_reflection;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct WeftFilmSeries {
     float3 dc;
     int _pad1_0;
@@ -313,6 +325,34 @@ ret_weft_film_base_amplitudes weft_film_base_amplitudes(float n2_, float cos2_, 
     return Constructarray2_float3_(s_3, p);
 }
 
+WeftFilmStack ConstructWeftFilmStack(float arg0, float arg1, float2 arg2, float3 arg3[2], bool arg4) {
+    WeftFilmStack ret = (WeftFilmStack)0;
+    ret.n2_ = arg0;
+    ret.cos2_ = arg1;
+    ret.r12_ = arg2;
+    ret.r23_ = arg3;
+    ret.total_internal_reflection = arg4;
+    return ret;
+}
+
+WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float film_ior_1, float3 base_f0_)
+{
+    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
+    const float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
+    if ((cos2_sq <= 0.0)) {
+        const WeftFilmStack weftfilmstack = ConstructWeftFilmStack(_e10, 0.0, (1.0).xx, Constructarray2_float3_((1.0).xxx, (1.0).xxx), true);
+        return weftfilmstack;
+    }
+    float cos2_1 = sqrt(cos2_sq);
+    const float2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    const float3 _e30 = weft_ior_from_f0_(base_f0_);
+    const float3 _e31[2] = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    const WeftFilmStack weftfilmstack_1 = ConstructWeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+    return weftfilmstack_1;
+}
+
 float3 weft_film_sensitivity(float opd_nm)
 {
     float phase = ((6.2831855 * opd_nm) * 0.001);
@@ -344,60 +384,57 @@ WeftFilmSeries weft_film_series(float r12_, float3 r23_)
     return weftfilmseries;
 }
 
-float3 weft_film_fourier(float cos_theta1_, float thickness_nm_1, float film_ior_1, float3 base_f0_)
+float3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_2, float3 base_f0_1)
 {
     float3 reflectance = (float3)0;
     float3 c_s = (float3)0;
     float3 c_p = (float3)0;
     uint m = 1u;
 
-    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
-    const float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
-    if ((cos2_sq <= 0.0)) {
+    const WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return (1.0).xxx;
     }
-    float cos2_1 = sqrt(cos2_sq);
-    float opd = (((2.0 * _e10) * max(thickness_nm_1, 0.0)) * cos2_1);
-    const float2 _e27 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    const float3 _e28 = weft_ior_from_f0_(base_f0_);
-    const float3 _e29[2] = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
-    const WeftFilmSeries _e32 = weft_film_series(_e27.x, _e29[0]);
-    const WeftFilmSeries _e35 = weft_film_series(_e27.y, _e29[1]);
-    reflectance = (_e32.dc + _e35.dc);
-    c_s = _e32.first;
-    c_p = _e35.first;
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    float2 a12_ = _e4.r12_;
+    float3 a23_[2] = _e4.r23_;
+    float opd = (((2.0 * n2_1) * max(thickness_nm_2, 0.0)) * cos2_2);
+    const WeftFilmSeries _e20 = weft_film_series(a12_.x, a23_[0]);
+    const WeftFilmSeries _e23 = weft_film_series(a12_.y, a23_[1]);
+    reflectance = (_e20.dc + _e23.dc);
+    c_s = _e20.first;
+    c_p = _e23.first;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e68 = m;
-            m = (_e68 + 1u);
+            uint _e56 = m;
+            m = (_e56 + 1u);
         }
         loop_init = false;
-        uint _e46 = m;
-        if ((_e46 <= WEFT_FILM_ORDERS)) {
+        uint _e34 = m;
+        if ((_e34 <= WEFT_FILM_ORDERS)) {
         } else {
             break;
         }
         {
-            float3 _e49 = c_s;
-            c_s = (_e49 * _e32.ratio);
-            float3 _e52 = c_p;
-            c_p = (_e52 * _e35.ratio);
-            float3 _e55 = reflectance;
-            float3 _e56 = c_s;
-            float3 _e57 = c_p;
-            uint _e61 = m;
-            const float3 _e64 = weft_film_sensitivity((float(_e61) * opd));
-            reflectance = (_e55 + ((2.0 * (_e56 + _e57)) * _e64));
+            float3 _e37 = c_s;
+            c_s = (_e37 * _e20.ratio);
+            float3 _e40 = c_p;
+            c_p = (_e40 * _e23.ratio);
+            float3 _e43 = reflectance;
+            float3 _e44 = c_s;
+            float3 _e45 = c_p;
+            uint _e49 = m;
+            const float3 _e52 = weft_film_sensitivity((float(_e49) * opd));
+            reflectance = (_e43 + ((2.0 * (_e44 + _e45)) * _e52));
         }
     }
-    float3 _e70 = reflectance;
-    return clamp((0.5 * _e70), (0.0).xxx, (1.0).xxx);
+    float3 _e58 = reflectance;
+    return clamp((0.5 * _e58), (0.0).xxx, (1.0).xxx);
 }
 
 float laser_cos_in_plane(float3 n_5, float3 v_1, float3 direction)

@@ -4,7 +4,7 @@
 
 using metal::uint;
 
-struct type_4 {
+struct type_5 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +13,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_4 sh;
+    type_5 sh;
     metal::float4 params;
 };
 struct WeftObject {
@@ -57,8 +57,16 @@ struct WeftVaryings {
     metal::float2 uv0_;
     char _pad5[8];
 };
-struct type_11 {
+struct type_12 {
     metal::float3 inner[2];
+};
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    metal::float2 r12_;
+    type_12 r23_;
+    bool total_internal_reflection;
+    char _pad5[15];
 };
 struct WeftFilmSeries {
     metal::float3 dc;
@@ -211,7 +219,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_4 sh = weft_frame.sh;
+    type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
@@ -329,7 +337,7 @@ metal::float2 weft_fresnel_amplitudes(
     return metal::float2(rs, rp);
 }
 
-type_11 weft_film_base_amplitudes(
+type_12 weft_film_base_amplitudes(
     float n2_,
     float cos2_,
     metal::float3 n3_,
@@ -338,7 +346,27 @@ type_11 weft_film_base_amplitudes(
     metal::float3 cos3_ = metal::sqrt(metal::max(metal::float3(1.0) - (metal::float3(sin1_sq) / (n3_ * n3_)), metal::float3(0.0)));
     metal::float3 s_3 = (metal::float3(n2_ * cos2_) - (n3_ * cos3_)) / metal::max(metal::float3(n2_ * cos2_) + (n3_ * cos3_), metal::float3(0.000000000001));
     metal::float3 p = ((n3_ * cos2_) - (metal::float3(n2_) * cos3_)) / metal::max((n3_ * cos2_) + (metal::float3(n2_) * cos3_), metal::float3(0.000000000001));
-    return type_11 {{s_3, p}};
+    return type_12 {{s_3, p}};
+}
+
+WeftFilmStack weft_film_stack(
+    float cos_theta1_,
+    float thickness_nm_1,
+    float film_ior_1,
+    metal::float3 base_f0_
+) {
+    float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
+    if (cos2_sq <= 0.0) {
+        return WeftFilmStack {_e10, 0.0, metal::float2(1.0), type_12 {{metal::float3(1.0), metal::float3(1.0)}}, true};
+    }
+    float cos2_1 = metal::sqrt(cos2_sq);
+    metal::float2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    metal::float3 _e30 = weft_ior_from_f0_(base_f0_);
+    type_12 _e31 = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack {_e10, cos2_1, _e29, _e31, false};
 }
 
 metal::float3 weft_film_sensitivity(
@@ -367,62 +395,59 @@ WeftFilmSeries weft_film_series(
 }
 
 metal::float3 weft_film_fourier(
-    float cos_theta1_,
-    float thickness_nm_1,
-    float film_ior_1,
-    metal::float3 base_f0_
+    float cos_theta1_1,
+    float thickness_nm_2,
+    float film_ior_2,
+    metal::float3 base_f0_1
 ) {
     metal::float3 reflectance = {};
     metal::float3 c_s = {};
     metal::float3 c_p = {};
     uint m = 1u;
-    float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
-    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
-    if (cos2_sq <= 0.0) {
+    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return metal::float3(1.0);
     }
-    float cos2_1 = metal::sqrt(cos2_sq);
-    float opd = ((2.0 * _e10) * metal::max(thickness_nm_1, 0.0)) * cos2_1;
-    metal::float2 _e27 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    metal::float3 _e28 = weft_ior_from_f0_(base_f0_);
-    type_11 _e29 = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
-    WeftFilmSeries _e32 = weft_film_series(_e27.x, _e29.inner[0]);
-    WeftFilmSeries _e35 = weft_film_series(_e27.y, _e29.inner[1]);
-    reflectance = _e32.dc + _e35.dc;
-    c_s = _e32.first;
-    c_p = _e35.first;
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    metal::float2 a12_ = _e4.r12_;
+    type_12 a23_ = _e4.r23_;
+    float opd = ((2.0 * n2_1) * metal::max(thickness_nm_2, 0.0)) * cos2_2;
+    WeftFilmSeries _e20 = weft_film_series(_e4.r12_.x, _e4.r23_.inner[0]);
+    WeftFilmSeries _e23 = weft_film_series(_e4.r12_.y, _e4.r23_.inner[1]);
+    reflectance = _e20.dc + _e23.dc;
+    c_s = _e20.first;
+    c_p = _e23.first;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e68 = m;
-            m = _e68 + 1u;
+            uint _e56 = m;
+            m = _e56 + 1u;
         }
         loop_init = false;
-        uint _e46 = m;
-        if (_e46 <= WEFT_FILM_ORDERS) {
+        uint _e34 = m;
+        if (_e34 <= WEFT_FILM_ORDERS) {
         } else {
             break;
         }
         {
-            metal::float3 _e49 = c_s;
-            c_s = _e49 * _e32.ratio;
-            metal::float3 _e52 = c_p;
-            c_p = _e52 * _e35.ratio;
-            metal::float3 _e55 = reflectance;
-            metal::float3 _e56 = c_s;
-            metal::float3 _e57 = c_p;
-            uint _e61 = m;
-            metal::float3 _e64 = weft_film_sensitivity(static_cast<float>(_e61) * opd);
-            reflectance = _e55 + ((2.0 * (_e56 + _e57)) * _e64);
+            metal::float3 _e37 = c_s;
+            c_s = _e37 * _e20.ratio;
+            metal::float3 _e40 = c_p;
+            c_p = _e40 * _e23.ratio;
+            metal::float3 _e43 = reflectance;
+            metal::float3 _e44 = c_s;
+            metal::float3 _e45 = c_p;
+            uint _e49 = m;
+            metal::float3 _e52 = weft_film_sensitivity(static_cast<float>(_e49) * opd);
+            reflectance = _e43 + ((2.0 * (_e44 + _e45)) * _e52);
         }
     }
-    metal::float3 _e70 = reflectance;
-    return metal::clamp(0.5 * _e70, metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e58 = reflectance;
+    return metal::clamp(0.5 * _e58, metal::float3(0.0), metal::float3(1.0));
 }
 
 metal::float3 laser_film_fast(

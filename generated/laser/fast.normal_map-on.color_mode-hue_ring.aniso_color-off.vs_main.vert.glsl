@@ -44,6 +44,13 @@ struct WeftVaryings {
     vec4 world_tangent;
     vec2 uv0_;
 };
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    vec2 r12_;
+    vec3 r23_[2];
+    bool total_internal_reflection;
+};
 struct WeftFilmSeries {
     vec3 dc;
     vec3 first;
@@ -247,6 +254,21 @@ vec3[2] weft_film_base_amplitudes(float n2_, float cos2_, vec3 n3_, float sin1_s
     return vec3[2](s_3, p);
 }
 
+WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
+    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
+    if ((cos2_sq <= 0.0)) {
+        return WeftFilmStack(_e10, 0.0, vec2(1.0), vec3[2](vec3(1.0), vec3(1.0)), true);
+    }
+    float cos2_1 = sqrt(cos2_sq);
+    vec2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    vec3 _e30 = weft_ior_from_f0_(base_f0_);
+    vec3 _e31[2] = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+}
+
 vec3 weft_film_sensitivity(float opd_nm) {
     float phase = ((6.2831855 * opd_nm) * 0.001);
     vec4 sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
@@ -267,55 +289,52 @@ WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
     return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
 }
 
-vec3 weft_film_fourier(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
+vec3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_2, vec3 base_f0_1) {
     vec3 reflectance = vec3(0.0);
     vec3 c_s = vec3(0.0);
     vec3 c_p = vec3(0.0);
     uint m = 1u;
-    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
-    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
-    if ((cos2_sq <= 0.0)) {
+    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return vec3(1.0);
     }
-    float cos2_1 = sqrt(cos2_sq);
-    float opd = (((2.0 * _e10) * max(thickness_nm_1, 0.0)) * cos2_1);
-    vec2 _e27 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    vec3 _e28 = weft_ior_from_f0_(base_f0_);
-    vec3 _e29[2] = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
-    WeftFilmSeries _e32 = weft_film_series(_e27.x, _e29[0]);
-    WeftFilmSeries _e35 = weft_film_series(_e27.y, _e29[1]);
-    reflectance = (_e32.dc + _e35.dc);
-    c_s = _e32.first;
-    c_p = _e35.first;
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    vec2 a12_ = _e4.r12_;
+    vec3 a23_[2] = _e4.r23_;
+    float opd = (((2.0 * n2_1) * max(thickness_nm_2, 0.0)) * cos2_2);
+    WeftFilmSeries _e20 = weft_film_series(a12_.x, a23_[0]);
+    WeftFilmSeries _e23 = weft_film_series(a12_.y, a23_[1]);
+    reflectance = (_e20.dc + _e23.dc);
+    c_s = _e20.first;
+    c_p = _e23.first;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e68 = m;
-            m = (_e68 + 1u);
+            uint _e56 = m;
+            m = (_e56 + 1u);
         }
         loop_init = false;
-        uint _e46 = m;
-        if ((_e46 <= WEFT_FILM_ORDERS)) {
+        uint _e34 = m;
+        if ((_e34 <= WEFT_FILM_ORDERS)) {
         } else {
             break;
         }
         {
-            vec3 _e49 = c_s;
-            c_s = (_e49 * _e32.ratio);
-            vec3 _e52 = c_p;
-            c_p = (_e52 * _e35.ratio);
-            vec3 _e55 = reflectance;
-            vec3 _e56 = c_s;
-            vec3 _e57 = c_p;
-            uint _e61 = m;
-            vec3 _e64 = weft_film_sensitivity((float(_e61) * opd));
-            reflectance = (_e55 + ((2.0 * (_e56 + _e57)) * _e64));
+            vec3 _e37 = c_s;
+            c_s = (_e37 * _e20.ratio);
+            vec3 _e40 = c_p;
+            c_p = (_e40 * _e23.ratio);
+            vec3 _e43 = reflectance;
+            vec3 _e44 = c_s;
+            vec3 _e45 = c_p;
+            uint _e49 = m;
+            vec3 _e52 = weft_film_sensitivity((float(_e49) * opd));
+            reflectance = (_e43 + ((2.0 * (_e44 + _e45)) * _e52));
         }
     }
-    vec3 _e70 = reflectance;
-    return clamp((0.5 * _e70), vec3(0.0), vec3(1.0));
+    vec3 _e58 = reflectance;
+    return clamp((0.5 * _e58), vec3(0.0), vec3(1.0));
 }
 
 void main() {

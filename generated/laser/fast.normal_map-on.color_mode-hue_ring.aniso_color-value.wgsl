@@ -48,6 +48,14 @@ struct WeftVaryings {
     @location(3) uv0_: vec2<f32>,
 }
 
+struct WeftFilmStack {
+    n2_: f32,
+    cos2_: f32,
+    r12_: vec2<f32>,
+    r23_: array<vec3<f32>, 2>,
+    total_internal_reflection: bool,
+}
+
 struct WeftFilmSeries {
     dc: vec3<f32>,
     first: vec3<f32>,
@@ -277,6 +285,21 @@ fn weft_film_base_amplitudes(n2_: f32, cos2_: f32, n3_: vec3<f32>, sin1_sq: f32)
     return array<vec3<f32>, 2>(s_3, p);
 }
 
+fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> WeftFilmStack {
+    let cos1_ = clamp(cos_theta1_, 0f, 1f);
+    let sin1_sq_1 = (1f - (cos1_ * cos1_));
+    let _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
+    if (cos2_sq <= 0f) {
+        return WeftFilmStack(_e10, 0f, vec2(1f), array<vec3<f32>, 2>(vec3(1f), vec3(1f)), true);
+    }
+    let cos2_1 = sqrt(cos2_sq);
+    let _e29 = weft_fresnel_amplitudes(1f, _e10, cos1_, cos2_1);
+    let _e30 = weft_ior_from_f0_(base_f0_);
+    let _e31 = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+}
+
 fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
     let phase = ((6.2831855f * opd_nm) * 0.001f);
     let sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
@@ -297,54 +320,51 @@ fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
     return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
 }
 
-fn weft_film_fourier(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> vec3<f32> {
+fn weft_film_fourier(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
     var reflectance: vec3<f32>;
     var c_s: vec3<f32>;
     var c_p: vec3<f32>;
     var m: u32 = 1u;
 
-    let cos1_ = clamp(cos_theta1_, 0f, 1f);
-    let sin1_sq_1 = (1f - (cos1_ * cos1_));
-    let _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
-    if (cos2_sq <= 0f) {
+    let _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if _e4.total_internal_reflection {
         return vec3(1f);
     }
-    let cos2_1 = sqrt(cos2_sq);
-    let opd = (((2f * _e10) * max(thickness_nm_1, 0f)) * cos2_1);
-    let _e27 = weft_fresnel_amplitudes(1f, _e10, cos1_, cos2_1);
-    let _e28 = weft_ior_from_f0_(base_f0_);
-    let _e29 = weft_film_base_amplitudes(_e10, cos2_1, _e28, sin1_sq_1);
-    let _e32 = weft_film_series(_e27.x, _e29[0]);
-    let _e35 = weft_film_series(_e27.y, _e29[1]);
-    reflectance = (_e32.dc + _e35.dc);
-    c_s = _e32.first;
-    c_p = _e35.first;
+    let n2_1 = _e4.n2_;
+    let cos2_2 = _e4.cos2_;
+    let a12_ = _e4.r12_;
+    let a23_ = _e4.r23_;
+    let opd = (((2f * n2_1) * max(thickness_nm_2, 0f)) * cos2_2);
+    let _e20 = weft_film_series(a12_.x, a23_[0]);
+    let _e23 = weft_film_series(a12_.y, a23_[1]);
+    reflectance = (_e20.dc + _e23.dc);
+    c_s = _e20.first;
+    c_p = _e23.first;
     loop {
-        let _e46 = m;
-        if (_e46 <= WEFT_FILM_ORDERS) {
+        let _e34 = m;
+        if (_e34 <= WEFT_FILM_ORDERS) {
         } else {
             break;
         }
         {
-            let _e49 = c_s;
-            c_s = (_e49 * _e32.ratio);
-            let _e52 = c_p;
-            c_p = (_e52 * _e35.ratio);
-            let _e55 = reflectance;
-            let _e56 = c_s;
-            let _e57 = c_p;
-            let _e61 = m;
-            let _e64 = weft_film_sensitivity((f32(_e61) * opd));
-            reflectance = (_e55 + ((2f * (_e56 + _e57)) * _e64));
+            let _e37 = c_s;
+            c_s = (_e37 * _e20.ratio);
+            let _e40 = c_p;
+            c_p = (_e40 * _e23.ratio);
+            let _e43 = reflectance;
+            let _e44 = c_s;
+            let _e45 = c_p;
+            let _e49 = m;
+            let _e52 = weft_film_sensitivity((f32(_e49) * opd));
+            reflectance = (_e43 + ((2f * (_e44 + _e45)) * _e52));
         }
         continuing {
-            let _e68 = m;
-            m = (_e68 + 1u);
+            let _e56 = m;
+            m = (_e56 + 1u);
         }
     }
-    let _e70 = reflectance;
-    return clamp((0.5f * _e70), vec3(0f), vec3(1f));
+    let _e58 = reflectance;
+    return clamp((0.5f * _e58), vec3(0f), vec3(1f));
 }
 
 fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {

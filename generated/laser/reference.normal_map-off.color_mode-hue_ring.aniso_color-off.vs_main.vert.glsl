@@ -44,6 +44,13 @@ struct WeftVaryings {
     vec4 world_tangent;
     vec2 uv0_;
 };
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    vec2 r12_;
+    vec3 r23_[2];
+    bool total_internal_reflection;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint COLOR_MODE_HUE_RING = 0u;
@@ -239,71 +246,83 @@ vec3[2] weft_film_base_amplitudes(float n2_, float cos2_, vec3 n3_, float sin1_s
     return vec3[2](s_1, p);
 }
 
-vec3 weft_film_spectral(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
+WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
+    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
+    if ((cos2_sq <= 0.0)) {
+        return WeftFilmStack(_e10, 0.0, vec2(1.0), vec3[2](vec3(1.0), vec3(1.0)), true);
+    }
+    float cos2_1 = sqrt(cos2_sq);
+    vec2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    vec3 _e30 = weft_ior_from_f0_(base_f0_);
+    vec3 _e31[2] = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+}
+
+vec3 weft_film_spectral(float cos_theta1_1, float thickness_nm_2, float film_ior_2, vec3 base_f0_1) {
     vec3 xyz_r = vec3(0.0);
     vec3 xyz_g = vec3(0.0);
     vec3 xyz_b = vec3(0.0);
     vec3 white = vec3(0.0);
     uint i = 0u;
     bool local = false;
-    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
-    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
-    if ((cos2_sq <= 0.0)) {
+    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return vec3(1.0);
     }
-    float cos2_1 = sqrt(cos2_sq);
-    vec2 _e21 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    vec3 _e22 = weft_ior_from_f0_(base_f0_);
-    vec3 _e23[2] = weft_film_base_amplitudes(_e10, cos2_1, _e22, sin1_sq_1);
-    float d_1 = max(thickness_nm_1, 0.0);
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    vec2 r12_1 = _e4.r12_;
+    vec3 r23_1[2] = _e4.r23_;
+    float d_1 = max(thickness_nm_2, 0.0);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e95 = i;
-            i = (_e95 + 1u);
+            uint _e83 = i;
+            i = (_e83 + 1u);
         }
         loop_init = false;
-        uint _e41 = i;
-        if ((_e41 < WEFT_FILM_SAMPLES)) {
+        uint _e29 = i;
+        if ((_e29 < WEFT_FILM_SAMPLES)) {
         } else {
             break;
         }
         {
-            uint _e45 = i;
-            float lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4.0 * float(_e45)));
-            uint _e49 = i;
-            if (!((_e49 == 0u))) {
-                uint _e55 = i;
-                local = (_e55 == 100u);
+            uint _e33 = i;
+            float lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4.0 * float(_e33)));
+            uint _e37 = i;
+            if (!((_e37 == 0u))) {
+                uint _e43 = i;
+                local = (_e43 == 100u);
             } else {
                 local = true;
             }
-            bool _e59 = local;
-            float w = (_e59 ? 0.5 : 1.0);
-            float cos_delta_1 = cos(((((12.566371 * _e10) * d_1) * cos2_1) / lambda_2));
-            vec3 _e71 = weft_airy(_e21.x, _e23[0], cos_delta_1);
-            vec3 _e74 = weft_airy(_e21.y, _e23[1], cos_delta_1);
-            vec3 r_1 = (0.5 * (_e71 + _e74));
-            vec3 _e78 = weft_cie_xyz(lambda_2);
-            vec3 cmf = (_e78 * w);
-            vec3 _e80 = xyz_r;
-            xyz_r = (_e80 + (r_1.x * cmf));
-            vec3 _e84 = xyz_g;
-            xyz_g = (_e84 + (r_1.y * cmf));
-            vec3 _e88 = xyz_b;
-            xyz_b = (_e88 + (r_1.z * cmf));
-            vec3 _e92 = white;
-            white = (_e92 + cmf);
+            bool _e47 = local;
+            float w = (_e47 ? 0.5 : 1.0);
+            float cos_delta_1 = cos(((((12.566371 * n2_1) * d_1) * cos2_2) / lambda_2));
+            vec3 _e59 = weft_airy(r12_1.x, r23_1[0], cos_delta_1);
+            vec3 _e62 = weft_airy(r12_1.y, r23_1[1], cos_delta_1);
+            vec3 r_1 = (0.5 * (_e59 + _e62));
+            vec3 _e66 = weft_cie_xyz(lambda_2);
+            vec3 cmf = (_e66 * w);
+            vec3 _e68 = xyz_r;
+            xyz_r = (_e68 + (r_1.x * cmf));
+            vec3 _e72 = xyz_g;
+            xyz_g = (_e72 + (r_1.y * cmf));
+            vec3 _e76 = xyz_b;
+            xyz_b = (_e76 + (r_1.z * cmf));
+            vec3 _e80 = white;
+            white = (_e80 + cmf);
         }
     }
-    vec3 _e98 = white;
-    vec3 rgb_white = (WEFT_XYZ_TO_REC709_ * _e98);
-    vec3 _e101 = xyz_r;
-    vec3 _e105 = xyz_g;
-    vec3 _e109 = xyz_b;
-    vec3 rgb = vec3((WEFT_XYZ_TO_REC709_ * _e101).x, (WEFT_XYZ_TO_REC709_ * _e105).y, (WEFT_XYZ_TO_REC709_ * _e109).z);
+    vec3 _e86 = white;
+    vec3 rgb_white = (WEFT_XYZ_TO_REC709_ * _e86);
+    vec3 _e89 = xyz_r;
+    vec3 _e93 = xyz_g;
+    vec3 _e97 = xyz_b;
+    vec3 rgb = vec3((WEFT_XYZ_TO_REC709_ * _e89).x, (WEFT_XYZ_TO_REC709_ * _e93).y, (WEFT_XYZ_TO_REC709_ * _e97).z);
     return clamp((rgb / rgb_white), vec3(0.0), vec3(1.0));
 }
 

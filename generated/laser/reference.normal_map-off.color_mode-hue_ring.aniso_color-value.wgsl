@@ -48,6 +48,14 @@ struct WeftVaryings {
     @location(3) uv0_: vec2<f32>,
 }
 
+struct WeftFilmStack {
+    n2_: f32,
+    cos2_: f32,
+    r12_: vec2<f32>,
+    r23_: array<vec3<f32>, 2>,
+    total_internal_reflection: bool,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const COLOR_MODE_HUE_RING: u32 = 0u;
@@ -285,7 +293,22 @@ fn weft_film_base_amplitudes(n2_: f32, cos2_: f32, n3_: vec3<f32>, sin1_sq: f32)
     return array<vec3<f32>, 2>(s_3, p);
 }
 
-fn weft_film_spectral(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> vec3<f32> {
+fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> WeftFilmStack {
+    let cos1_ = clamp(cos_theta1_, 0f, 1f);
+    let sin1_sq_1 = (1f - (cos1_ * cos1_));
+    let _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
+    if (cos2_sq <= 0f) {
+        return WeftFilmStack(_e10, 0f, vec2(1f), array<vec3<f32>, 2>(vec3(1f), vec3(1f)), true);
+    }
+    let cos2_1 = sqrt(cos2_sq);
+    let _e29 = weft_fresnel_amplitudes(1f, _e10, cos1_, cos2_1);
+    let _e30 = weft_ior_from_f0_(base_f0_);
+    let _e31 = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+}
+
+fn weft_film_spectral(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
     var xyz_r: vec3<f32> = vec3(0f);
     var xyz_g: vec3<f32> = vec3(0f);
     var xyz_b: vec3<f32> = vec3(0f);
@@ -293,62 +316,59 @@ fn weft_film_spectral(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, ba
     var i: u32 = 0u;
     var local: bool;
 
-    let cos1_ = clamp(cos_theta1_, 0f, 1f);
-    let sin1_sq_1 = (1f - (cos1_ * cos1_));
-    let _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
-    if (cos2_sq <= 0f) {
+    let _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if _e4.total_internal_reflection {
         return vec3(1f);
     }
-    let cos2_1 = sqrt(cos2_sq);
-    let _e21 = weft_fresnel_amplitudes(1f, _e10, cos1_, cos2_1);
-    let _e22 = weft_ior_from_f0_(base_f0_);
-    let _e23 = weft_film_base_amplitudes(_e10, cos2_1, _e22, sin1_sq_1);
-    let d_1 = max(thickness_nm_1, 0f);
+    let n2_1 = _e4.n2_;
+    let cos2_2 = _e4.cos2_;
+    let r12_1 = _e4.r12_;
+    let r23_1 = _e4.r23_;
+    let d_1 = max(thickness_nm_2, 0f);
     loop {
-        let _e41 = i;
-        if (_e41 < WEFT_FILM_SAMPLES) {
+        let _e29 = i;
+        if (_e29 < WEFT_FILM_SAMPLES) {
         } else {
             break;
         }
         {
-            let _e45 = i;
-            let lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4f * f32(_e45)));
-            let _e49 = i;
-            if !((_e49 == 0u)) {
-                let _e55 = i;
-                local = (_e55 == 100u);
+            let _e33 = i;
+            let lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4f * f32(_e33)));
+            let _e37 = i;
+            if !((_e37 == 0u)) {
+                let _e43 = i;
+                local = (_e43 == 100u);
             } else {
                 local = true;
             }
-            let _e59 = local;
-            let w = select(1f, 0.5f, _e59);
-            let cos_delta_1 = cos(((((12.566371f * _e10) * d_1) * cos2_1) / lambda_2));
-            let _e71 = weft_airy(_e21.x, _e23[0], cos_delta_1);
-            let _e74 = weft_airy(_e21.y, _e23[1], cos_delta_1);
-            let r_1 = (0.5f * (_e71 + _e74));
-            let _e78 = weft_cie_xyz(lambda_2);
-            let cmf = (_e78 * w);
-            let _e80 = xyz_r;
-            xyz_r = (_e80 + (r_1.x * cmf));
-            let _e84 = xyz_g;
-            xyz_g = (_e84 + (r_1.y * cmf));
-            let _e88 = xyz_b;
-            xyz_b = (_e88 + (r_1.z * cmf));
-            let _e92 = white;
-            white = (_e92 + cmf);
+            let _e47 = local;
+            let w = select(1f, 0.5f, _e47);
+            let cos_delta_1 = cos(((((12.566371f * n2_1) * d_1) * cos2_2) / lambda_2));
+            let _e59 = weft_airy(r12_1.x, r23_1[0], cos_delta_1);
+            let _e62 = weft_airy(r12_1.y, r23_1[1], cos_delta_1);
+            let r_1 = (0.5f * (_e59 + _e62));
+            let _e66 = weft_cie_xyz(lambda_2);
+            let cmf = (_e66 * w);
+            let _e68 = xyz_r;
+            xyz_r = (_e68 + (r_1.x * cmf));
+            let _e72 = xyz_g;
+            xyz_g = (_e72 + (r_1.y * cmf));
+            let _e76 = xyz_b;
+            xyz_b = (_e76 + (r_1.z * cmf));
+            let _e80 = white;
+            white = (_e80 + cmf);
         }
         continuing {
-            let _e95 = i;
-            i = (_e95 + 1u);
+            let _e83 = i;
+            i = (_e83 + 1u);
         }
     }
-    let _e98 = white;
-    let rgb_white = (WEFT_XYZ_TO_REC709_ * _e98);
-    let _e101 = xyz_r;
-    let _e105 = xyz_g;
-    let _e109 = xyz_b;
-    let rgb = vec3<f32>((WEFT_XYZ_TO_REC709_ * _e101).x, (WEFT_XYZ_TO_REC709_ * _e105).y, (WEFT_XYZ_TO_REC709_ * _e109).z);
+    let _e86 = white;
+    let rgb_white = (WEFT_XYZ_TO_REC709_ * _e86);
+    let _e89 = xyz_r;
+    let _e93 = xyz_g;
+    let _e97 = xyz_b;
+    let rgb = vec3<f32>((WEFT_XYZ_TO_REC709_ * _e89).x, (WEFT_XYZ_TO_REC709_ * _e93).y, (WEFT_XYZ_TO_REC709_ * _e97).z);
     return clamp((rgb / rgb_white), vec3(0f), vec3(1f));
 }
 

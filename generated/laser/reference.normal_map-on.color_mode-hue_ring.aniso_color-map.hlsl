@@ -54,6 +54,18 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    float2 r12_;
+    float3 r23_[2];
+    int _pad4_0;
+    bool total_internal_reflection;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint COLOR_MODE_HUE_RING = 0u;
@@ -347,7 +359,35 @@ ret_weft_film_base_amplitudes weft_film_base_amplitudes(float n2_, float cos2_, 
     return Constructarray2_float3_(s_3, p);
 }
 
-float3 weft_film_spectral(float cos_theta1_, float thickness_nm_1, float film_ior_1, float3 base_f0_)
+WeftFilmStack ConstructWeftFilmStack(float arg0, float arg1, float2 arg2, float3 arg3[2], bool arg4) {
+    WeftFilmStack ret = (WeftFilmStack)0;
+    ret.n2_ = arg0;
+    ret.cos2_ = arg1;
+    ret.r12_ = arg2;
+    ret.r23_ = arg3;
+    ret.total_internal_reflection = arg4;
+    return ret;
+}
+
+WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float film_ior_1, float3 base_f0_)
+{
+    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
+    const float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
+    if ((cos2_sq <= 0.0)) {
+        const WeftFilmStack weftfilmstack = ConstructWeftFilmStack(_e10, 0.0, (1.0).xx, Constructarray2_float3_((1.0).xxx, (1.0).xxx), true);
+        return weftfilmstack;
+    }
+    float cos2_1 = sqrt(cos2_sq);
+    const float2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    const float3 _e30 = weft_ior_from_f0_(base_f0_);
+    const float3 _e31[2] = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    const WeftFilmStack weftfilmstack_1 = ConstructWeftFilmStack(_e10, cos2_1, _e29, _e31, false);
+    return weftfilmstack_1;
+}
+
+float3 weft_film_spectral(float cos_theta1_1, float thickness_nm_2, float film_ior_2, float3 base_f0_1)
 {
     float3 xyz_r = (0.0).xxx;
     float3 xyz_g = (0.0).xxx;
@@ -356,67 +396,64 @@ float3 weft_film_spectral(float cos_theta1_, float thickness_nm_1, float film_io
     uint i = 0u;
     bool local = (bool)0;
 
-    float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
-    const float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
-    if ((cos2_sq <= 0.0)) {
+    const WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return (1.0).xxx;
     }
-    float cos2_1 = sqrt(cos2_sq);
-    const float2 _e21 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    const float3 _e22 = weft_ior_from_f0_(base_f0_);
-    const float3 _e23[2] = weft_film_base_amplitudes(_e10, cos2_1, _e22, sin1_sq_1);
-    float d_1 = max(thickness_nm_1, 0.0);
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    float2 r12_1 = _e4.r12_;
+    float3 r23_1[2] = _e4.r23_;
+    float d_1 = max(thickness_nm_2, 0.0);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e95 = i;
-            i = (_e95 + 1u);
+            uint _e83 = i;
+            i = (_e83 + 1u);
         }
         loop_init = false;
-        uint _e41 = i;
-        if ((_e41 < WEFT_FILM_SAMPLES)) {
+        uint _e29 = i;
+        if ((_e29 < WEFT_FILM_SAMPLES)) {
         } else {
             break;
         }
         {
-            uint _e45 = i;
-            float lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4.0 * float(_e45)));
-            uint _e49 = i;
-            if (!((_e49 == 0u))) {
-                uint _e55 = i;
-                local = (_e55 == 100u);
+            uint _e33 = i;
+            float lambda_2 = (WEFT_FILM_LAMBDA_MIN + (4.0 * float(_e33)));
+            uint _e37 = i;
+            if (!((_e37 == 0u))) {
+                uint _e43 = i;
+                local = (_e43 == 100u);
             } else {
                 local = true;
             }
-            bool _e59 = local;
-            float w = (_e59 ? 0.5 : 1.0);
-            float cos_delta_1 = cos(((((12.566371 * _e10) * d_1) * cos2_1) / lambda_2));
-            const float3 _e71 = weft_airy(_e21.x, _e23[0], cos_delta_1);
-            const float3 _e74 = weft_airy(_e21.y, _e23[1], cos_delta_1);
-            float3 r_1 = (0.5 * (_e71 + _e74));
-            const float3 _e78 = weft_cie_xyz(lambda_2);
-            float3 cmf = (_e78 * w);
-            float3 _e80 = xyz_r;
-            xyz_r = (_e80 + (r_1.x * cmf));
-            float3 _e84 = xyz_g;
-            xyz_g = (_e84 + (r_1.y * cmf));
-            float3 _e88 = xyz_b;
-            xyz_b = (_e88 + (r_1.z * cmf));
-            float3 _e92 = white;
-            white = (_e92 + cmf);
+            bool _e47 = local;
+            float w = (_e47 ? 0.5 : 1.0);
+            float cos_delta_1 = cos(((((12.566371 * n2_1) * d_1) * cos2_2) / lambda_2));
+            const float3 _e59 = weft_airy(r12_1.x, r23_1[0], cos_delta_1);
+            const float3 _e62 = weft_airy(r12_1.y, r23_1[1], cos_delta_1);
+            float3 r_1 = (0.5 * (_e59 + _e62));
+            const float3 _e66 = weft_cie_xyz(lambda_2);
+            float3 cmf = (_e66 * w);
+            float3 _e68 = xyz_r;
+            xyz_r = (_e68 + (r_1.x * cmf));
+            float3 _e72 = xyz_g;
+            xyz_g = (_e72 + (r_1.y * cmf));
+            float3 _e76 = xyz_b;
+            xyz_b = (_e76 + (r_1.z * cmf));
+            float3 _e80 = white;
+            white = (_e80 + cmf);
         }
     }
-    float3 _e98 = white;
-    float3 rgb_white = mul(_e98, WEFT_XYZ_TO_REC709_);
-    float3 _e101 = xyz_r;
-    float3 _e105 = xyz_g;
-    float3 _e109 = xyz_b;
-    float3 rgb = float3(mul(_e101, WEFT_XYZ_TO_REC709_).x, mul(_e105, WEFT_XYZ_TO_REC709_).y, mul(_e109, WEFT_XYZ_TO_REC709_).z);
+    float3 _e86 = white;
+    float3 rgb_white = mul(_e86, WEFT_XYZ_TO_REC709_);
+    float3 _e89 = xyz_r;
+    float3 _e93 = xyz_g;
+    float3 _e97 = xyz_b;
+    float3 rgb = float3(mul(_e89, WEFT_XYZ_TO_REC709_).x, mul(_e93, WEFT_XYZ_TO_REC709_).y, mul(_e97, WEFT_XYZ_TO_REC709_).z);
     return clamp((rgb / rgb_white), (0.0).xxx, (1.0).xxx);
 }
 

@@ -60,6 +60,14 @@ struct WeftVaryings {
 struct type_12 {
     metal::float3 inner[2];
 };
+struct WeftFilmStack {
+    float n2_;
+    float cos2_;
+    metal::float2 r12_;
+    type_12 r23_;
+    bool total_internal_reflection;
+    char _pad5[15];
+};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint COLOR_MODE_HUE_RING = 0u;
@@ -373,11 +381,31 @@ type_12 weft_film_base_amplitudes(
     return type_12 {{s_3, p}};
 }
 
-metal::float3 weft_film_spectral(
+WeftFilmStack weft_film_stack(
     float cos_theta1_,
     float thickness_nm_1,
     float film_ior_1,
     metal::float3 base_f0_
+) {
+    float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
+    float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
+    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
+    float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
+    if (cos2_sq <= 0.0) {
+        return WeftFilmStack {_e10, 0.0, metal::float2(1.0), type_12 {{metal::float3(1.0), metal::float3(1.0)}}, true};
+    }
+    float cos2_1 = metal::sqrt(cos2_sq);
+    metal::float2 _e29 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
+    metal::float3 _e30 = weft_ior_from_f0_(base_f0_);
+    type_12 _e31 = weft_film_base_amplitudes(_e10, cos2_1, _e30, sin1_sq_1);
+    return WeftFilmStack {_e10, cos2_1, _e29, _e31, false};
+}
+
+metal::float3 weft_film_spectral(
+    float cos_theta1_1,
+    float thickness_nm_2,
+    float film_ior_2,
+    metal::float3 base_f0_1
 ) {
     metal::float3 xyz_r = metal::float3(0.0);
     metal::float3 xyz_g = metal::float3(0.0);
@@ -385,67 +413,64 @@ metal::float3 weft_film_spectral(
     metal::float3 white = metal::float3(0.0);
     uint i = 0u;
     bool local = {};
-    float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
-    float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
-    float _e10 = weft_film_ior(film_ior_1, thickness_nm_1);
-    float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
-    if (cos2_sq <= 0.0) {
+    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
+    if (_e4.total_internal_reflection) {
         return metal::float3(1.0);
     }
-    float cos2_1 = metal::sqrt(cos2_sq);
-    metal::float2 _e21 = weft_fresnel_amplitudes(1.0, _e10, cos1_, cos2_1);
-    metal::float3 _e22 = weft_ior_from_f0_(base_f0_);
-    type_12 _e23 = weft_film_base_amplitudes(_e10, cos2_1, _e22, sin1_sq_1);
-    float d_1 = metal::max(thickness_nm_1, 0.0);
+    float n2_1 = _e4.n2_;
+    float cos2_2 = _e4.cos2_;
+    metal::float2 r12_1 = _e4.r12_;
+    type_12 r23_1 = _e4.r23_;
+    float d_1 = metal::max(thickness_nm_2, 0.0);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e95 = i;
-            i = _e95 + 1u;
+            uint _e83 = i;
+            i = _e83 + 1u;
         }
         loop_init = false;
-        uint _e41 = i;
-        if (_e41 < WEFT_FILM_SAMPLES) {
+        uint _e29 = i;
+        if (_e29 < WEFT_FILM_SAMPLES) {
         } else {
             break;
         }
         {
-            uint _e45 = i;
-            float lambda_2 = WEFT_FILM_LAMBDA_MIN + (4.0 * static_cast<float>(_e45));
-            uint _e49 = i;
-            if (!((_e49 == 0u))) {
-                uint _e55 = i;
-                local = _e55 == 100u;
+            uint _e33 = i;
+            float lambda_2 = WEFT_FILM_LAMBDA_MIN + (4.0 * static_cast<float>(_e33));
+            uint _e37 = i;
+            if (!((_e37 == 0u))) {
+                uint _e43 = i;
+                local = _e43 == 100u;
             } else {
                 local = true;
             }
-            bool _e59 = local;
-            float w = _e59 ? 0.5 : 1.0;
-            float cos_delta_1 = metal::cos((((12.566371 * _e10) * d_1) * cos2_1) / lambda_2);
-            metal::float3 _e71 = weft_airy(_e21.x, _e23.inner[0], cos_delta_1);
-            metal::float3 _e74 = weft_airy(_e21.y, _e23.inner[1], cos_delta_1);
-            metal::float3 r_1 = 0.5 * (_e71 + _e74);
-            metal::float3 _e78 = weft_cie_xyz(lambda_2);
-            metal::float3 cmf = _e78 * w;
-            metal::float3 _e80 = xyz_r;
-            xyz_r = _e80 + (r_1.x * cmf);
-            metal::float3 _e84 = xyz_g;
-            xyz_g = _e84 + (r_1.y * cmf);
-            metal::float3 _e88 = xyz_b;
-            xyz_b = _e88 + (r_1.z * cmf);
-            metal::float3 _e92 = white;
-            white = _e92 + cmf;
+            bool _e47 = local;
+            float w = _e47 ? 0.5 : 1.0;
+            float cos_delta_1 = metal::cos((((12.566371 * n2_1) * d_1) * cos2_2) / lambda_2);
+            metal::float3 _e59 = weft_airy(_e4.r12_.x, _e4.r23_.inner[0], cos_delta_1);
+            metal::float3 _e62 = weft_airy(_e4.r12_.y, _e4.r23_.inner[1], cos_delta_1);
+            metal::float3 r_1 = 0.5 * (_e59 + _e62);
+            metal::float3 _e66 = weft_cie_xyz(lambda_2);
+            metal::float3 cmf = _e66 * w;
+            metal::float3 _e68 = xyz_r;
+            xyz_r = _e68 + (r_1.x * cmf);
+            metal::float3 _e72 = xyz_g;
+            xyz_g = _e72 + (r_1.y * cmf);
+            metal::float3 _e76 = xyz_b;
+            xyz_b = _e76 + (r_1.z * cmf);
+            metal::float3 _e80 = white;
+            white = _e80 + cmf;
         }
     }
-    metal::float3 _e98 = white;
-    metal::float3 rgb_white = WEFT_XYZ_TO_REC709_ * _e98;
-    metal::float3 _e101 = xyz_r;
-    metal::float3 _e105 = xyz_g;
-    metal::float3 _e109 = xyz_b;
-    metal::float3 rgb = metal::float3((WEFT_XYZ_TO_REC709_ * _e101).x, (WEFT_XYZ_TO_REC709_ * _e105).y, (WEFT_XYZ_TO_REC709_ * _e109).z);
+    metal::float3 _e86 = white;
+    metal::float3 rgb_white = WEFT_XYZ_TO_REC709_ * _e86;
+    metal::float3 _e89 = xyz_r;
+    metal::float3 _e93 = xyz_g;
+    metal::float3 _e97 = xyz_b;
+    metal::float3 rgb = metal::float3((WEFT_XYZ_TO_REC709_ * _e89).x, (WEFT_XYZ_TO_REC709_ * _e93).y, (WEFT_XYZ_TO_REC709_ * _e97).z);
     return metal::clamp(rgb / rgb_white, metal::float3(0.0), metal::float3(1.0));
 }
 

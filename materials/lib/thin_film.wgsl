@@ -107,21 +107,48 @@ fn weft_film_base_amplitudes(n2: f32, cos2: f32, n3: vec3<f32>, sin1_sq: f32) ->
     return array<vec3<f32>, 2>(s, p);
 }
 
-// The reference: spectral Airy reflectance, unpolarised light, as linear
-// RGB. Each RGB channel of the result is the film over a base of that
-// channel's IOR (the convention of KHR_materials_iridescence and of the fast
-// form), so a zero-thickness film returns the base's own Fresnel colour.
-fn weft_film_spectral(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
+// The stack at one angle, shared by both evaluations: the film's IOR (faded
+// in over the first nanometres), the cosine inside the film, and the signed
+// amplitudes (s, p) of both interfaces (per base channel at the second).
+struct WeftFilmStack {
+    n2: f32,
+    cos2: f32,
+    r12: vec2<f32>,
+    r23: array<vec3<f32>, 2>,
+    total_internal_reflection: bool,
+}
+
+fn weft_film_stack(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> WeftFilmStack {
     let cos1 = clamp(cos_theta1, 0.0, 1.0);
     let sin1_sq = 1.0 - cos1 * cos1;
     let n2 = weft_film_ior(film_ior, thickness_nm);
     let cos2_sq = 1.0 - sin1_sq / (n2 * n2);
     if cos2_sq <= 0.0 {
-        return vec3<f32>(1.0);
+        return WeftFilmStack(n2, 0.0, vec2<f32>(1.0), array<vec3<f32>, 2>(vec3<f32>(1.0), vec3<f32>(1.0)), true);
     }
     let cos2 = sqrt(cos2_sq);
-    let r12 = weft_fresnel_amplitudes(1.0, n2, cos1, cos2);
-    let r23 = weft_film_base_amplitudes(n2, cos2, weft_ior_from_f0(base_f0), sin1_sq);
+    return WeftFilmStack(
+        n2,
+        cos2,
+        weft_fresnel_amplitudes(1.0, n2, cos1, cos2),
+        weft_film_base_amplitudes(n2, cos2, weft_ior_from_f0(base_f0), sin1_sq),
+        false,
+    );
+}
+
+// The reference: spectral Airy reflectance, unpolarised light, as linear
+// RGB. Each RGB channel of the result is the film over a base of that
+// channel's IOR (the convention of KHR_materials_iridescence and of the fast
+// form), so a zero-thickness film returns the base's own Fresnel colour.
+fn weft_film_spectral(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
+    let stack = weft_film_stack(cos_theta1, thickness_nm, film_ior, base_f0);
+    if stack.total_internal_reflection {
+        return vec3<f32>(1.0);
+    }
+    let n2 = stack.n2;
+    let cos2 = stack.cos2;
+    let r12 = stack.r12;
+    let r23 = stack.r23;
     let d = max(thickness_nm, 0.0);
     let lambda_step = (WEFT_FILM_LAMBDA_MAX - WEFT_FILM_LAMBDA_MIN) / f32(WEFT_FILM_SAMPLES - 1u);
     // XYZ of the reflected light, one accumulator per base channel.
@@ -199,17 +226,15 @@ const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976, 106.97481,
 // one spectral sensitivity per order serves every channel and both
 // polarisations; orders 1 to WEFT_FILM_ORDERS of the series.
 fn weft_film_fourier(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
-    let cos1 = clamp(cos_theta1, 0.0, 1.0);
-    let sin1_sq = 1.0 - cos1 * cos1;
-    let n2 = weft_film_ior(film_ior, thickness_nm);
-    let cos2_sq = 1.0 - sin1_sq / (n2 * n2);
-    if cos2_sq <= 0.0 {
+    let stack = weft_film_stack(cos_theta1, thickness_nm, film_ior, base_f0);
+    if stack.total_internal_reflection {
         return vec3<f32>(1.0);
     }
-    let cos2 = sqrt(cos2_sq);
+    let n2 = stack.n2;
+    let cos2 = stack.cos2;
+    let a12 = stack.r12;
+    let a23 = stack.r23;
     let opd = 2.0 * n2 * max(thickness_nm, 0.0) * cos2;
-    let a12 = weft_fresnel_amplitudes(1.0, n2, cos1, cos2);
-    let a23 = weft_film_base_amplitudes(n2, cos2, weft_ior_from_f0(base_f0), sin1_sq);
 
     let s = weft_film_series(a12.x, a23[0]);
     let p = weft_film_series(a12.y, a23[1]);

@@ -59,7 +59,8 @@ const EYE_CENTRES: [[f32; 3]; 2] = [[-0.27, 0.62, 0.72], [0.27, 0.62, 0.72]];
 const HAIR_CARDS: u32 = 48;
 const HAIR_ROWS: u32 = 12;
 
-/// A surface over (θ, φ) on a `rows` x `columns` grid: `at(θ, φ)` gives the
+/// A surface over (θ, φ) on a `rows` x `columns` grid (θ may be any
+/// parameter that runs down the rows): `at(θ, φ)` gives the
 /// position and uv0. θ runs down the rows, φ east along the columns, which
 /// winds the triangles counter-clockwise seen from outside. Normals from the
 /// triangles, tangents from the uvs.
@@ -198,35 +199,18 @@ fn shoulders() -> Mesh {
     m
 }
 
-/// An open cylinder along +Y from `base`, `height` tall.
+/// An open cylinder along +Y from `base`, `height` tall (rows run down, as
+/// on the other parts).
 fn cylinder(base: [f32; 3], radius: f32, height: f32) -> Mesh {
-    let rows = 8;
-    let columns = 48;
-    let mut m = Mesh::default();
-    for r in 0..=rows {
-        let v = r as f32 / rows as f32;
-        // Rows run down, as on the other parts.
-        let y = base[1] + height * (1.0 - v);
-        for c in 0..=columns {
-            let u = c as f32 / columns as f32;
-            let phi = -PI + 2.0 * PI * u;
-            let (sp, cp) = phi.sin_cos();
-            m.positions
-                .push([base[0] + radius * sp, y, base[2] + radius * cp]);
-            m.uv0.push([u, v]);
-        }
-    }
-    let stride = columns + 1;
-    for r in 0..rows {
-        for c in 0..columns {
-            let a = r * stride + c;
-            let b = a + stride;
-            m.indices.extend([a, b, a + 1, a + 1, b, b + 1]);
-        }
-    }
-    m.compute_normals();
-    m.compute_tangents();
-    m
+    surface(8, 48, (0.0, 1.0), (-PI, PI), |v, phi| {
+        let (sp, cp) = phi.sin_cos();
+        let p = [
+            base[0] + radius * sp,
+            base[1] + height * (1.0 - v),
+            base[2] + radius * cp,
+        ];
+        (p, [0.5 + phi / (2.0 * PI), v])
+    })
 }
 
 /// Appends `other` to `m` (every stream; empty optional streams stay empty
