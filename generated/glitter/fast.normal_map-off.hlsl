@@ -78,6 +78,13 @@ struct GlintEllipse {
     float minor;
 };
 
+struct GlintGrids {
+    GlintGrid g0_;
+    GlintGrid g1_;
+    GlintGrid g2_;
+    GlintGrid g3_;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
@@ -150,31 +157,31 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 float3 weft_any_perpendicular(float3 n_1)
 {
     float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n_1.z));
-    float b = ((n_1.x * n_1.y) * a);
-    return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    float a_1 = (-1.0 / (s + n_1.z));
+    float b_1 = ((n_1.x * n_1.y) * a_1);
+    return float3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b_1), (-(s) * n_1.x));
 }
 
 float weft_d_ggx(float n_dot_h, float roughness_1)
 {
     const float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
-    float a2_ = (a_1 * a_1);
+    float a_2 = (_e2 * _e2);
+    float a2_ = (a_2 * a_2);
     float noh = saturate(n_dot_h);
     float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d_1) * d_1));
+    float d_2 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_2) * d_2));
 }
 
 float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_2)
 {
     const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float a2_1 = (a_2 * a_2);
+    float a_3 = (_e3 * _e3);
+    float a2_1 = (a_3 * a_3);
     float noh_1 = saturate(dot(n_2, h));
     float3 nxh = cross(n_2, h);
-    float d_2 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
-    return (a2_1 / (WEFT_PI * max((d_2 * d_2), 1e-30)));
+    float d_3 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
+    return (a2_1 / (WEFT_PI * max((d_3 * d_3), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -186,8 +193,8 @@ float3 weft_f_schlick(float3 f0_, float v_dot_h)
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_3)
 {
     const float _e3 = weft_clamp_roughness(roughness_3);
-    float a_3 = (_e3 * _e3);
-    float a2_2 = (a_3 * a_3);
+    float a_4 = (_e3 * _e3);
+    float a2_2 = (a_4 * a_4);
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_2)) + a2_2)));
@@ -263,14 +270,14 @@ float weft_specular_mip(float roughness_4)
 float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
 {
     const float _e4 = weft_specular_mip(roughness_5);
-    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_1.xyz, (0.0).xxx);
+    float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, (0.0).xxx);
 }
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
 {
-    float2 uv_4 = float2(saturate(n_dot_v_1), saturate(roughness_6));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_4, 0.0);
+    float2 uv_5 = float2(saturate(n_dot_v_1), saturate(roughness_6));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_5, 0.0);
     return _e8.xy;
 }
 
@@ -283,8 +290,8 @@ float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
     const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_2 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_2, n_4);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -558,11 +565,11 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     float3 log_density = clamp(((_e97 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
     float3 count_1 = max((1e-8).xxx, (grid.cell_area * exp(log_density)));
     float3 blended = (count_1 * grid.weight);
-    float p_2 = (params.micro_roughness * target_ndf);
-    float3 one_hit_1 = ((1.0).xxx - pow(((1.0 - p_2)).xxx, blended));
+    float p_4 = (params.micro_roughness * target_ndf);
+    float3 one_hit_1 = ((1.0).xxx - pow(((1.0 - p_4)).xxx, blended));
     float3 others = max((blended - (1.0).xxx), (0.0).xxx);
-    float3 mean_1 = (others * p_2);
-    float3 deviation_1 = sqrt((others * (p_2 * (1.0 - p_2))));
+    float3 mean_1 = (others * p_4);
+    float3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     float3 smooth_width_1 = ((0.1 * saturate((one_hit_1 * 10.0))) * saturate((((1.0).xxx - one_hit_1) * 10.0)));
     const float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
     const float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
@@ -574,15 +581,15 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
 {
     GlintEllipse out_2 = (GlintEllipse)0;
 
-    float a_4 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
-    float b_2 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
-    float d_3 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
-    float half_trace = (0.5 * (a_4 + d_3));
-    float disc = sqrt(max((((0.25 * (a_4 - d_3)) * (a_4 - d_3)) + (b_2 * b_2)), 0.0));
+    float a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
+    float b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
+    float d_4 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
+    float half_trace = (0.5 * (a_5 + d_4));
+    float disc = sqrt(max((((0.25 * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3)), 0.0));
     float l1_ = (half_trace + disc);
     float l2_ = max((half_trace - disc), 0.0);
-    float2 e_a = float2(b_2, (l1_ - a_4));
-    float2 e_b = float2((l1_ - d_3), b_2);
+    float2 e_a = float2(b_3, (l1_ - a_5));
+    float2 e_b = float2((l1_ - d_4), b_3);
     float2 e_3 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
     float e_len2_ = dot(e_3, e_3);
     out_2.major_dir = ((e_len2_ > 1e-37) ? (e_3 * rsqrt(max(e_len2_, 1e-37))) : float2(1.0, 0.0));
@@ -596,9 +603,9 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
 
 float2 glint_rotate(float2 uv_1, float angle)
 {
-    float c_2 = cos(angle);
+    float c_3 = cos(angle);
     float s_4 = sin(angle);
-    return float2(((c_2 * uv_1.x) + (s_4 * uv_1.y)), ((c_2 * uv_1.y) - (s_4 * uv_1.x)));
+    return float2(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 uint naga_f2u32(float value) {
@@ -627,37 +634,263 @@ GlintGrid glint_make_grid(float2 uv_2, float lod_1, float theta_1, float ratio_1
     return glintgrid;
 }
 
+float4 glint_tetra_weights(float3 p_1, float3 a, float3 b, float3 c_1, float3 d)
+{
+    float3 c1_1 = (a - d);
+    float3 c2_1 = (b - d);
+    float3 c3_ = (c_1 - d);
+    float3 q = (p_1 - d);
+    float det = dot(c1_1, cross(c2_1, c3_));
+    float inv = (1.0 / det);
+    float w1_ = (dot(q, cross(c2_1, c3_)) * inv);
+    float w2_ = (dot(c1_1, cross(q, c3_)) * inv);
+    float w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    return float4(w1_, w2_, w3_, (((1.0 - w1_) - w2_) - w3_));
+}
+
 float glint_lod(GlintEllipse e_1, float screen_scale)
 {
     return clamp(log2(((e_1.minor * screen_scale) * 0.5)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-GlintGrid glint_nearest_grid(float2 uv_3, GlintEllipse e_2, float screen_scale_1)
+GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
 {
-    const float _e3 = glint_lod(e_2, screen_scale_1);
-    float lod_2 = floor((_e3 + 0.5));
-    const GlintGrid _e10 = glint_make_grid(uv_3, lod_2, 0.0, 1.0, 1.0);
-    const GlintGrid glintgrid_1 = _e10;
+    float theta_2 = (float)0;
+    bool local_1 = (bool)0;
+
+    float rot_index = (p_2.x * 2.0);
+    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
+    if (center_) {
+        local_1 = (p_2.y == 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
+    float lod_2 = (lod0_ + p_2.z);
+    float _e35 = theta_2;
+    const GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    const GlintGrid glintgrid_1 = _e36;
     return glintgrid_1;
 }
 
-float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, float2 slope_2, float d, float d_max)
+GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
 {
-    const float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d / d_max));
+    float theta_bin0_ = (float)0;
+    float theta_lerp = (float)0;
+    float3 p0_ = (float3)0;
+    float3 p1_ = (float3)0;
+    float3 p2_ = (float3)0;
+    float3 p3_1 = (float3)0;
+    bool local_2 = (bool)0;
+    GlintGrids out_3 = (GlintGrids)0;
+
+    float ratio_e = min((e_2.major / (e_2.minor + (1e-8 * e_2.major))), GLINT_MAX_RATIO);
+    const float _e12 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = floor(_e12);
+    float lod_lerp = (_e12 - lod0_1);
+    float ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = (ratio0_1 * 2.0);
+    float ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
+    float theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_grid = (GLINT_HALF_PI / max(ratio0_1, 2.0));
+    float theta_mid = ((floor((theta_3 / theta_grid)) * theta_grid) + (0.5 * theta_grid));
+    theta_bin0_ = ((theta_3 < theta_mid) ? (theta_mid - (0.5 * theta_grid)) : theta_mid);
+    float _e50 = theta_bin0_;
+    float theta_bin_h = (_e50 + (0.25 * theta_grid));
+    float _e54 = theta_bin0_;
+    float theta_bin1_ = (_e54 + (0.5 * theta_grid));
+    float _e58 = theta_bin0_;
+    float _e60 = theta_bin0_;
+    theta_lerp = saturate(((theta_3 - _e58) / (theta_bin1_ - _e60)));
+    float _e65 = theta_bin0_;
+    float _e67 = theta_bin0_;
+    float _e69 = theta_bin0_;
+    theta_bin0_ = ((_e69 <= 0.0) ? (3.1415927 + _e67) : _e65);
+    bool center_1 = (ratio0_1 == 1.0);
+    if (center_1) {
+        float3 a_6 = float3(0.0, 1.0, 0.0);
+        float3 b_4 = float3(0.0, 0.0, 0.0);
+        float3 c_4 = float3(1.0, 1.0, 0.0);
+        float3 d_5 = float3(0.0, 1.0, 1.0);
+        float3 ee = float3(0.0, 0.0, 1.0);
+        float3 f_1 = float3(1.0, 1.0, 1.0);
+        if ((lod_lerp > (1.0 - ratio_lerp))) {
+            float _e112 = theta_lerp;
+            if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > _e112)) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_4;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_4;
+            p3_1 = ee;
+        }
+        float _e114 = theta_lerp;
+        theta_lerp = (_e114 * ratio_lerp);
+    } else {
+        float3 a_7 = float3(0.0, 1.0, 0.0);
+        float3 b_5 = float3(0.0, 0.0, 0.0);
+        float3 c_5 = float3(0.5, 1.0, 0.0);
+        float3 d_6 = float3(1.0, 0.0, 0.0);
+        float3 ee_1 = float3(1.0, 1.0, 0.0);
+        float3 f_2 = float3(0.0, 1.0, 1.0);
+        float3 g_2 = float3(0.0, 0.0, 1.0);
+        float3 h_1 = float3(0.5, 1.0, 1.0);
+        float3 i = float3(1.0, 0.0, 1.0);
+        float3 j = float3(1.0, 1.0, 1.0);
+        float _e156 = theta_lerp;
+        if ((_e156 < 0.5)) {
+            float _e161 = theta_lerp;
+            local_2 = ((_e161 * 2.0) < ratio_lerp);
+        } else {
+            local_2 = false;
+        }
+        bool _e166 = local_2;
+        if (_e166) {
+            if ((lod_lerp > (1.0 - ratio_lerp))) {
+                float _e176 = theta_lerp;
+                if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((_e176 * 2.0) / max(ratio_lerp, 1e-8)))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                } else {
+                    p0_ = c_5;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_5;
+                p3_1 = g_2;
+            }
+        } else {
+            float _e183 = theta_lerp;
+            if (((1.0 - ((_e183 - 0.5) * 2.0)) > ratio_lerp)) {
+                if ((lod_lerp < (1.0 - ratio_lerp))) {
+                    float half_width = (0.5 * (1.0 - ratio_lerp));
+                    float _e203 = theta_lerp;
+                    if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e203 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
+                        p0_ = b_5;
+                        p1_ = g_2;
+                        p2_ = i;
+                        p3_1 = c_5;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_5;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_5;
+                    p1_ = g_2;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if ((lod_lerp > (1.0 - ratio_lerp))) {
+                    float _e222 = theta_lerp;
+                    if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
+                        p0_ = c_5;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_5;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_5;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    float _e234 = theta_lerp;
+    float3 _e236 = p0_;
+    float3 _e237 = p1_;
+    float3 _e238 = p2_;
+    float3 _e239 = p3_1;
+    const float4 _e240 = glint_tetra_weights(float3(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
+    float3 _e243 = p0_;
+    float _e245 = theta_bin0_;
+    const GlintGrid _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e246;
+    float3 _e248 = p1_;
+    float _e250 = theta_bin0_;
+    const GlintGrid _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e251;
+    float3 _e253 = p2_;
+    float _e255 = theta_bin0_;
+    const GlintGrid _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e256;
+    float3 _e258 = p3_1;
+    float _e260 = theta_bin0_;
+    const GlintGrid _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e261;
+    GlintGrids _e262 = out_3;
+    const GlintGrids glintgrids = _e262;
+    return glintgrids;
+}
+
+GlintGrid glint_dominant_grid(GlintGrids grids)
+{
+    GlintGrid g_1 = (GlintGrid)0;
+
+    g_1 = grids.g0_;
+    float _e6 = g_1.weight;
+    if ((grids.g1_.weight > _e6)) {
+        g_1 = grids.g1_;
+    }
+    float _e12 = g_1.weight;
+    if ((grids.g2_.weight > _e12)) {
+        g_1 = grids.g2_;
+    }
+    float _e18 = g_1.weight;
+    if ((grids.g3_.weight > _e18)) {
+        g_1 = grids.g3_;
+    }
+    g_1.weight = 1.0;
+    GlintGrid _e23 = g_1;
+    const GlintGrid glintgrid_2 = _e23;
+    return glintgrid_2;
+}
+
+float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, float2 slope_2, float d_1, float d_max)
+{
+    const float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
     return (min((_e6 / params_1.micro_roughness), 20.0) * d_max);
 }
 
 GlintParams glitter_params()
 {
-    GlintParams p_1 = (GlintParams)0;
+    GlintParams p_3 = (GlintParams)0;
 
     float _e4 = material.flake_density;
-    p_1.log_density = (4.0 + (28.0 * saturate(_e4)));
+    p_3.log_density = (4.0 + (28.0 * saturate(_e4)));
     float _e13 = material.twinkle;
-    p_1.micro_roughness = exp2(lerp(-4.321928, -8.965784, saturate(_e13)));
+    p_3.micro_roughness = exp2(lerp(-4.321928, -8.965784, saturate(_e13)));
     float _e22 = material.density_variation;
-    p_1.density_randomization = clamp(_e22, 0.0, 4.0);
-    GlintParams _e26 = p_1;
+    p_3.density_randomization = clamp(_e22, 0.0, 4.0);
+    GlintParams _e26 = p_3;
     const GlintParams glintparams = _e26;
     return glintparams;
 }
@@ -764,21 +997,22 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const GlintEllipse _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e136 = material.flake_size;
             float screen_scale_2 = clamp(_e136, 0.5, 8.0);
+            const GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
-                const GlintGrid _e140 = glint_nearest_grid(_e5, _e133, screen_scale_2);
-                const float _e141 = glint_ndf_single(_e132, _e140, slope_3, _e123, _e125);
-                d_flakes = _e141;
+                const GlintGrid _e141 = glint_dominant_grid(_e140);
+                const float _e142 = glint_ndf_single(_e132, _e141, slope_3, _e123, _e125);
+                d_flakes = _e142;
             }
         }
-        float4 _e144 = material.flake_color;
-        float3 flake_f0_ = saturate(_e144.xyz);
-        const float _e147 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        float3 _e148 = color;
-        float _e149 = d_flakes;
-        const float3 _e152 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e148 + (((((intensity * _e149) * _e147) * _e152) * _e63) * n_dot_l_1));
+        float4 _e145 = material.flake_color;
+        float3 flake_f0_ = saturate(_e145.xyz);
+        const float _e148 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        float3 _e149 = color;
+        float _e150 = d_flakes;
+        const float3 _e153 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e149 + (((((intensity * _e150) * _e148) * _e153) * _e63) * n_dot_l_1));
     }
-    float3 _e157 = color;
-    float3 radiance = clamp(_e157, (0.0).xxx, (65504.0).xxx);
+    float3 _e158 = color;
+    float3 radiance = clamp(_e158, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -69,6 +69,13 @@ struct GlintEllipse {
     minor: f32,
 }
 
+struct GlintGrids {
+    g0_: GlintGrid,
+    g1_: GlintGrid,
+    g2_: GlintGrid,
+    g3_: GlintGrid,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
@@ -126,29 +133,29 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     let s = select(-1f, 1f, (n_1.z >= 0f));
-    let a = (-1f / (s + n_1.z));
-    let b = ((n_1.x * n_1.y) * a);
-    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    let a_1 = (-1f / (s + n_1.z));
+    let b_1 = ((n_1.x * n_1.y) * a_1);
+    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a_1)), (s * b_1), (-(s) * n_1.x));
 }
 
 fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
     let _e2 = weft_clamp_roughness(roughness_1);
-    let a_1 = (_e2 * _e2);
-    let a2_ = (a_1 * a_1);
+    let a_2 = (_e2 * _e2);
+    let a2_ = (a_2 * a_2);
     let noh = saturate(n_dot_h);
     let one_minus_noh2_ = ((1f - noh) * (1f + noh));
-    let d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d_1) * d_1));
+    let d_2 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_2) * d_2));
 }
 
 fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_2: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_2);
-    let a_2 = (_e3 * _e3);
-    let a2_1 = (a_2 * a_2);
+    let a_3 = (_e3 * _e3);
+    let a2_1 = (a_3 * a_3);
     let noh_1 = saturate(dot(n_2, h));
     let nxh = cross(n_2, h);
-    let d_2 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
-    return (a2_1 / (WEFT_PI * max((d_2 * d_2), 0.000000000000000000000000000001f)));
+    let d_3 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
+    return (a2_1 / (WEFT_PI * max((d_3 * d_3), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -158,8 +165,8 @@ fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
 
 fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_3: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_3);
-    let a_3 = (_e3 * _e3);
-    let a2_2 = (a_3 * a_3);
+    let a_4 = (_e3 * _e3);
+    let a2_2 = (a_4 * a_4);
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
     let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_2)) + a2_2)));
@@ -227,13 +234,13 @@ fn weft_specular_mip(roughness_4: f32) -> f32 {
 
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_5);
-    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_1.xyz, vec3(0f));
+    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, vec3(0f));
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
-    let uv_4 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_4, 0f);
+    let uv_5 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_5, 0f);
     return _e8.xy;
 }
 
@@ -245,8 +252,8 @@ fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_2 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_2, n_4);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -495,11 +502,11 @@ fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, t
     let log_density = clamp(((_e97 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
     let count_1 = max(vec3(0.00000001f), (grid.cell_area * exp(log_density)));
     let blended = (count_1 * grid.weight);
-    let p_2 = (params.micro_roughness * target_ndf);
-    let one_hit_1 = (vec3(1f) - pow(vec3((1f - p_2)), blended));
+    let p_4 = (params.micro_roughness * target_ndf);
+    let one_hit_1 = (vec3(1f) - pow(vec3((1f - p_4)), blended));
     let others = max((blended - vec3(1f)), vec3(0f));
-    let mean_1 = (others * p_2);
-    let deviation_1 = sqrt((others * (p_2 * (1f - p_2))));
+    let mean_1 = (others * p_4);
+    let deviation_1 = sqrt((others * (p_4 * (1f - p_4))));
     let smooth_width_1 = ((0.1f * saturate((one_hit_1 * 10f))) * saturate(((vec3(1f) - one_hit_1) * 10f)));
     let _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
     let _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
@@ -510,15 +517,15 @@ fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, t
 fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     var out_2: GlintEllipse;
 
-    let a_4 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
-    let b_2 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
-    let d_3 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
-    let half_trace = (0.5f * (a_4 + d_3));
-    let disc = sqrt(max((((0.25f * (a_4 - d_3)) * (a_4 - d_3)) + (b_2 * b_2)), 0f));
+    let a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
+    let b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
+    let d_4 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
+    let half_trace = (0.5f * (a_5 + d_4));
+    let disc = sqrt(max((((0.25f * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3)), 0f));
     let l1_ = (half_trace + disc);
     let l2_ = max((half_trace - disc), 0f);
-    let e_a = vec2<f32>(b_2, (l1_ - a_4));
-    let e_b = vec2<f32>((l1_ - d_3), b_2);
+    let e_a = vec2<f32>(b_3, (l1_ - a_5));
+    let e_b = vec2<f32>((l1_ - d_4), b_3);
     let e_3 = select(e_b, e_a, (dot(e_a, e_a) > dot(e_b, e_b)));
     let e_len2_ = dot(e_3, e_3);
     out_2.major_dir = select(vec2<f32>(1f, 0f), (e_3 * inverseSqrt(max(e_len2_, 0.0000000000000000000000000000000000001f))), (e_len2_ > 0.0000000000000000000000000000000000001f));
@@ -530,9 +537,9 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
 }
 
 fn glint_rotate(uv_1: vec2<f32>, angle: f32) -> vec2<f32> {
-    let c_2 = cos(angle);
+    let c_3 = cos(angle);
     let s_4 = sin(angle);
-    return vec2<f32>(((c_2 * uv_1.x) + (s_4 * uv_1.y)), ((c_2 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2<f32>(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
@@ -554,32 +561,253 @@ fn glint_make_grid(uv_2: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weig
     return _e22;
 }
 
+fn glint_tetra_weights(p_1: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c_1: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
+    let c1_1 = (a - d);
+    let c2_1 = (b - d);
+    let c3_ = (c_1 - d);
+    let q = (p_1 - d);
+    let det = dot(c1_1, cross(c2_1, c3_));
+    let inv = (1f / det);
+    let w1_ = (dot(q, cross(c2_1, c3_)) * inv);
+    let w2_ = (dot(c1_1, cross(q, c3_)) * inv);
+    let w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    return vec4<f32>(w1_, w2_, w3_, (((1f - w1_) - w2_) - w3_));
+}
+
 fn glint_lod(e_1: GlintEllipse, screen_scale: f32) -> f32 {
     return clamp(log2(((e_1.minor * screen_scale) * 0.5f)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-fn glint_nearest_grid(uv_3: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> GlintGrid {
-    let _e3 = glint_lod(e_2, screen_scale_1);
-    let lod_2 = floor((_e3 + 0.5f));
-    let _e10 = glint_make_grid(uv_3, lod_2, 0f, 1f, 1f);
-    return _e10;
+fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
+    var theta_2: f32;
+    var local_1: bool;
+
+    let rot_index = (p_2.x * 2f);
+    theta_2 = select(select(bin1_, bin_h, (rot_index < 1.5f)), bin0_, (rot_index < 0.5f));
+    if center {
+        local_1 = (p_2.y == 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e25 = local_1;
+    if _e25 {
+        theta_2 = 0f;
+    }
+    let ratio_2 = select(ratio0_, (ratio0_ * 2f), (p_2.y > 0.5f));
+    let lod_2 = (lod0_ + p_2.z);
+    let _e35 = theta_2;
+    let _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
 }
 
-fn glint_ndf_single(params_1: GlintParams, grid_1: GlintGrid, slope_2: vec2<f32>, d: f32, d_max: f32) -> f32 {
-    let _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d / d_max));
+fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> GlintGrids {
+    var theta_bin0_: f32;
+    var theta_lerp: f32;
+    var p0_: vec3<f32>;
+    var p1_: vec3<f32>;
+    var p2_: vec3<f32>;
+    var p3_1: vec3<f32>;
+    var local_2: bool;
+    var out_3: GlintGrids;
+
+    let ratio_e = min((e_2.major / (e_2.minor + (0.00000001f * e_2.major))), GLINT_MAX_RATIO);
+    let _e12 = glint_lod(e_2, screen_scale_1);
+    let lod0_1 = floor(_e12);
+    let lod_lerp = (_e12 - lod0_1);
+    let ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1f)))), 1f);
+    let ratio1_ = (ratio0_1 * 2f);
+    let ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
+    let theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    let theta_grid = (GLINT_HALF_PI / max(ratio0_1, 2f));
+    let theta_mid = ((floor((theta_3 / theta_grid)) * theta_grid) + (0.5f * theta_grid));
+    theta_bin0_ = select(theta_mid, (theta_mid - (0.5f * theta_grid)), (theta_3 < theta_mid));
+    let _e50 = theta_bin0_;
+    let theta_bin_h = (_e50 + (0.25f * theta_grid));
+    let _e54 = theta_bin0_;
+    let theta_bin1_ = (_e54 + (0.5f * theta_grid));
+    let _e58 = theta_bin0_;
+    let _e60 = theta_bin0_;
+    theta_lerp = saturate(((theta_3 - _e58) / (theta_bin1_ - _e60)));
+    let _e65 = theta_bin0_;
+    let _e67 = theta_bin0_;
+    let _e69 = theta_bin0_;
+    theta_bin0_ = select(_e65, (3.1415927f + _e67), (_e69 <= 0f));
+    let center_1 = (ratio0_1 == 1f);
+    if center_1 {
+        let a_6 = vec3<f32>(0f, 1f, 0f);
+        let b_4 = vec3<f32>(0f, 0f, 0f);
+        let c_4 = vec3<f32>(1f, 1f, 0f);
+        let d_5 = vec3<f32>(0f, 1f, 1f);
+        let ee = vec3<f32>(0f, 0f, 1f);
+        let f_1 = vec3<f32>(1f, 1f, 1f);
+        if (lod_lerp > (1f - ratio_lerp)) {
+            let _e112 = theta_lerp;
+            if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > _e112) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_4;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_4;
+            p3_1 = ee;
+        }
+        let _e114 = theta_lerp;
+        theta_lerp = (_e114 * ratio_lerp);
+    } else {
+        let a_7 = vec3<f32>(0f, 1f, 0f);
+        let b_5 = vec3<f32>(0f, 0f, 0f);
+        let c_5 = vec3<f32>(0.5f, 1f, 0f);
+        let d_6 = vec3<f32>(1f, 0f, 0f);
+        let ee_1 = vec3<f32>(1f, 1f, 0f);
+        let f_2 = vec3<f32>(0f, 1f, 1f);
+        let g_2 = vec3<f32>(0f, 0f, 1f);
+        let h_1 = vec3<f32>(0.5f, 1f, 1f);
+        let i = vec3<f32>(1f, 0f, 1f);
+        let j = vec3<f32>(1f, 1f, 1f);
+        let _e156 = theta_lerp;
+        if (_e156 < 0.5f) {
+            let _e161 = theta_lerp;
+            local_2 = ((_e161 * 2f) < ratio_lerp);
+        } else {
+            local_2 = false;
+        }
+        let _e166 = local_2;
+        if _e166 {
+            if (lod_lerp > (1f - ratio_lerp)) {
+                let _e176 = theta_lerp;
+                if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((_e176 * 2f) / max(ratio_lerp, 0.00000001f))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                } else {
+                    p0_ = c_5;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_5;
+                p3_1 = g_2;
+            }
+        } else {
+            let _e183 = theta_lerp;
+            if ((1f - ((_e183 - 0.5f) * 2f)) > ratio_lerp) {
+                if (lod_lerp < (1f - ratio_lerp)) {
+                    let half_width = (0.5f * (1f - ratio_lerp));
+                    let _e203 = theta_lerp;
+                    if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e203 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
+                        p0_ = b_5;
+                        p1_ = g_2;
+                        p2_ = i;
+                        p3_1 = c_5;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_5;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_5;
+                    p1_ = g_2;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if (lod_lerp > (1f - ratio_lerp)) {
+                    let _e222 = theta_lerp;
+                    if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e222 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
+                        p0_ = c_5;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_5;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_5;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    let _e234 = theta_lerp;
+    let _e236 = p0_;
+    let _e237 = p1_;
+    let _e238 = p2_;
+    let _e239 = p3_1;
+    let _e240 = glint_tetra_weights(vec3<f32>(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
+    let _e243 = p0_;
+    let _e245 = theta_bin0_;
+    let _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e246;
+    let _e248 = p1_;
+    let _e250 = theta_bin0_;
+    let _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e251;
+    let _e253 = p2_;
+    let _e255 = theta_bin0_;
+    let _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e256;
+    let _e258 = p3_1;
+    let _e260 = theta_bin0_;
+    let _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e261;
+    let _e262 = out_3;
+    return _e262;
+}
+
+fn glint_dominant_grid(grids: GlintGrids) -> GlintGrid {
+    var g_1: GlintGrid;
+
+    g_1 = grids.g0_;
+    let _e6 = g_1.weight;
+    if (grids.g1_.weight > _e6) {
+        g_1 = grids.g1_;
+    }
+    let _e12 = g_1.weight;
+    if (grids.g2_.weight > _e12) {
+        g_1 = grids.g2_;
+    }
+    let _e18 = g_1.weight;
+    if (grids.g3_.weight > _e18) {
+        g_1 = grids.g3_;
+    }
+    g_1.weight = 1f;
+    let _e23 = g_1;
+    return _e23;
+}
+
+fn glint_ndf_single(params_1: GlintParams, grid_1: GlintGrid, slope_2: vec2<f32>, d_1: f32, d_max: f32) -> f32 {
+    let _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
     return (min((_e6 / params_1.micro_roughness), 20f) * d_max);
 }
 
 fn glitter_params() -> GlintParams {
-    var p_1: GlintParams;
+    var p_3: GlintParams;
 
     let _e4 = material.flake_density;
-    p_1.log_density = (4f + (28f * saturate(_e4)));
+    p_3.log_density = (4f + (28f * saturate(_e4)));
     let _e13 = material.twinkle;
-    p_1.micro_roughness = exp2(mix(-4.321928f, -8.965784f, saturate(_e13)));
+    p_3.micro_roughness = exp2(mix(-4.321928f, -8.965784f, saturate(_e13)));
     let _e22 = material.density_variation;
-    p_1.density_randomization = clamp(_e22, 0f, 4f);
-    let _e26 = p_1;
+    p_3.density_randomization = clamp(_e22, 0f, 4f);
+    let _e26 = p_3;
     return _e26;
 }
 
@@ -682,21 +910,22 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             let _e136 = material.flake_size;
             let screen_scale_2 = clamp(_e136, 0.5f, 8f);
+            let _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
-                let _e140 = glint_nearest_grid(_e5, _e133, screen_scale_2);
-                let _e141 = glint_ndf_single(_e132, _e140, slope_3, _e123, _e125);
-                d_flakes = _e141;
+                let _e141 = glint_dominant_grid(_e140);
+                let _e142 = glint_ndf_single(_e132, _e141, slope_3, _e123, _e125);
+                d_flakes = _e142;
             }
         }
-        let _e144 = material.flake_color;
-        let flake_f0_ = saturate(_e144.xyz);
-        let _e147 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        let _e148 = color;
-        let _e149 = d_flakes;
-        let _e152 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e148 + (((((intensity * _e149) * _e147) * _e152) * _e63) * n_dot_l_1));
+        let _e145 = material.flake_color;
+        let flake_f0_ = saturate(_e145.xyz);
+        let _e148 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        let _e149 = color;
+        let _e150 = d_flakes;
+        let _e153 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e149 + (((((intensity * _e150) * _e148) * _e153) * _e63) * n_dot_l_1));
     }
-    let _e157 = color;
-    let radiance = clamp(_e157, vec3(0f), vec3(65504f));
+    let _e158 = color;
+    let radiance = clamp(_e158, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

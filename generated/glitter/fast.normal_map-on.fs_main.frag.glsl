@@ -61,6 +61,12 @@ struct GlintEllipse {
     float major;
     float minor;
 };
+struct GlintGrids {
+    GlintGrid g0_;
+    GlintGrid g1_;
+    GlintGrid g2_;
+    GlintGrid g3_;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TIER_FAST = 0u;
@@ -117,29 +123,29 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 
 vec3 weft_any_perpendicular(vec3 n_1) {
     float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n_1.z));
-    float b = ((n_1.x * n_1.y) * a);
-    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    float a_1 = (-1.0 / (s + n_1.z));
+    float b_1 = ((n_1.x * n_1.y) * a_1);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b_1), (-(s) * n_1.x));
 }
 
 float weft_d_ggx(float n_dot_h, float roughness_1) {
     float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e2 * _e2);
-    float a2_ = (a_1 * a_1);
+    float a_2 = (_e2 * _e2);
+    float a2_ = (a_2 * a_2);
     float noh = clamp(n_dot_h, 0.0, 1.0);
     float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
-    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
-    return (a2_ / ((WEFT_PI * d_1) * d_1));
+    float d_2 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_2) * d_2));
 }
 
 float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float a2_1 = (a_2 * a_2);
+    float a_3 = (_e3 * _e3);
+    float a2_1 = (a_3 * a_3);
     float noh_1 = clamp(dot(n_2, h), 0.0, 1.0);
     vec3 nxh = cross(n_2, h);
-    float d_2 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
-    return (a2_1 / (WEFT_PI * max((d_2 * d_2), 1e-30)));
+    float d_3 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
+    return (a2_1 / (WEFT_PI * max((d_3 * d_3), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -149,8 +155,8 @@ vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
 
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_3) {
     float _e3 = weft_clamp_roughness(roughness_3);
-    float a_3 = (_e3 * _e3);
-    float a2_2 = (a_3 * a_3);
+    float a_4 = (_e3 * _e3);
+    float a2_2 = (a_4 * a_4);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_2)) + a2_2)));
@@ -217,13 +223,13 @@ float weft_specular_mip(float roughness_4) {
 
 vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
     float _e4 = weft_specular_mip(roughness_5);
-    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_1.xyz, vec3(0.0));
+    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_2.xyz, vec3(0.0));
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
-    vec2 uv_4 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_4), 0.0);
+    vec2 uv_5 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_5), 0.0);
     return _e8.xy;
 }
 
@@ -235,8 +241,8 @@ mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_2 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_2, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
@@ -489,11 +495,11 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float 
     vec3 log_density = clamp(((_e97 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
     vec3 count_1 = max(vec3(1e-8), (grid.cell_area * exp(log_density)));
     vec3 blended = (count_1 * grid.weight);
-    float p_2 = (params.micro_roughness * target_ndf);
-    vec3 one_hit_1 = (vec3(1.0) - pow(vec3((1.0 - p_2)), blended));
+    float p_4 = (params.micro_roughness * target_ndf);
+    vec3 one_hit_1 = (vec3(1.0) - pow(vec3((1.0 - p_4)), blended));
     vec3 others = max((blended - vec3(1.0)), vec3(0.0));
-    vec3 mean_1 = (others * p_2);
-    vec3 deviation_1 = sqrt((others * (p_2 * (1.0 - p_2))));
+    vec3 mean_1 = (others * p_4);
+    vec3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     vec3 smooth_width_1 = ((0.1 * clamp((one_hit_1 * 10.0), vec3(0.0), vec3(1.0))) * clamp(((vec3(1.0) - one_hit_1) * 10.0), vec3(0.0), vec3(1.0)));
     float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
     float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
@@ -503,15 +509,15 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float 
 
 GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
     GlintEllipse out_2 = GlintEllipse(vec2(0.0), 0.0, 0.0);
-    float a_4 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
-    float b_2 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
-    float d_3 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
-    float half_trace = (0.5 * (a_4 + d_3));
-    float disc = sqrt(max((((0.25 * (a_4 - d_3)) * (a_4 - d_3)) + (b_2 * b_2)), 0.0));
+    float a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
+    float b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
+    float d_4 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
+    float half_trace = (0.5 * (a_5 + d_4));
+    float disc = sqrt(max((((0.25 * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3)), 0.0));
     float l1_ = (half_trace + disc);
     float l2_ = max((half_trace - disc), 0.0);
-    vec2 e_a = vec2(b_2, (l1_ - a_4));
-    vec2 e_b = vec2((l1_ - d_3), b_2);
+    vec2 e_a = vec2(b_3, (l1_ - a_5));
+    vec2 e_b = vec2((l1_ - d_4), b_3);
     vec2 e_3 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
     float e_len2_ = dot(e_3, e_3);
     out_2.major_dir = ((e_len2_ > 1e-37) ? (e_3 * inversesqrt(max(e_len2_, 1e-37))) : vec2(1.0, 0.0));
@@ -523,9 +529,9 @@ GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
 }
 
 vec2 glint_rotate(vec2 uv_1, float angle) {
-    float c_2 = cos(angle);
+    float c_3 = cos(angle);
     float s_4 = sin(angle);
-    return vec2(((c_2 * uv_1.x) + (s_4 * uv_1.y)), ((c_2 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 uint glint_grid_seed(float lod, float theta, float ratio) {
@@ -546,31 +552,249 @@ GlintGrid glint_make_grid(vec2 uv_2, float lod_1, float theta_1, float ratio_1, 
     return _e22;
 }
 
+vec4 glint_tetra_weights(vec3 p_1, vec3 a, vec3 b, vec3 c_1, vec3 d) {
+    vec3 c1_1 = (a - d);
+    vec3 c2_1 = (b - d);
+    vec3 c3_ = (c_1 - d);
+    vec3 q = (p_1 - d);
+    float det = dot(c1_1, cross(c2_1, c3_));
+    float inv = (1.0 / det);
+    float w1_ = (dot(q, cross(c2_1, c3_)) * inv);
+    float w2_ = (dot(c1_1, cross(q, c3_)) * inv);
+    float w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    return vec4(w1_, w2_, w3_, (((1.0 - w1_) - w2_) - w3_));
+}
+
 float glint_lod(GlintEllipse e_1, float screen_scale) {
     return clamp(log2(((e_1.minor * screen_scale) * 0.5)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-GlintGrid glint_nearest_grid(vec2 uv_3, GlintEllipse e_2, float screen_scale_1) {
-    float _e3 = glint_lod(e_2, screen_scale_1);
-    float lod_2 = floor((_e3 + 0.5));
-    GlintGrid _e10 = glint_make_grid(uv_3, lod_2, 0.0, 1.0, 1.0);
-    return _e10;
+GlintGrid glint_vertex_grid(vec2 uv_3, vec3 p_2, float weight_1, bool center, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_) {
+    float theta_2 = 0.0;
+    bool local_1 = false;
+    float rot_index = (p_2.x * 2.0);
+    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
+    if (center) {
+        local_1 = (p_2.y == 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
+    float lod_2 = (lod0_ + p_2.z);
+    float _e35 = theta_2;
+    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
 }
 
-float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, vec2 slope_2, float d, float d_max) {
-    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d / d_max));
+GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
+    float theta_bin0_ = 0.0;
+    float theta_lerp = 0.0;
+    vec3 p0_ = vec3(0.0);
+    vec3 p1_ = vec3(0.0);
+    vec3 p2_ = vec3(0.0);
+    vec3 p3_1 = vec3(0.0);
+    bool local_2 = false;
+    GlintGrids out_3 = GlintGrids(GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0));
+    float ratio_e = min((e_2.major / (e_2.minor + (1e-8 * e_2.major))), GLINT_MAX_RATIO);
+    float _e12 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = floor(_e12);
+    float lod_lerp = (_e12 - lod0_1);
+    float ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = (ratio0_1 * 2.0);
+    float ratio_lerp = clamp(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)), 0.0, 1.0);
+    float theta_3 = atan(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_grid = (GLINT_HALF_PI / max(ratio0_1, 2.0));
+    float theta_mid = ((floor((theta_3 / theta_grid)) * theta_grid) + (0.5 * theta_grid));
+    theta_bin0_ = ((theta_3 < theta_mid) ? (theta_mid - (0.5 * theta_grid)) : theta_mid);
+    float _e50 = theta_bin0_;
+    float theta_bin_h = (_e50 + (0.25 * theta_grid));
+    float _e54 = theta_bin0_;
+    float theta_bin1_ = (_e54 + (0.5 * theta_grid));
+    float _e58 = theta_bin0_;
+    float _e60 = theta_bin0_;
+    theta_lerp = clamp(((theta_3 - _e58) / (theta_bin1_ - _e60)), 0.0, 1.0);
+    float _e65 = theta_bin0_;
+    float _e67 = theta_bin0_;
+    float _e69 = theta_bin0_;
+    theta_bin0_ = ((_e69 <= 0.0) ? (3.1415927 + _e67) : _e65);
+    bool center_1 = (ratio0_1 == 1.0);
+    if (center_1) {
+        vec3 a_6 = vec3(0.0, 1.0, 0.0);
+        vec3 b_4 = vec3(0.0, 0.0, 0.0);
+        vec3 c_4 = vec3(1.0, 1.0, 0.0);
+        vec3 d_5 = vec3(0.0, 1.0, 1.0);
+        vec3 ee = vec3(0.0, 0.0, 1.0);
+        vec3 f_1 = vec3(1.0, 1.0, 1.0);
+        if ((lod_lerp > (1.0 - ratio_lerp))) {
+            float _e112 = theta_lerp;
+            if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > _e112)) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_4;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_4;
+            p3_1 = ee;
+        }
+        float _e114 = theta_lerp;
+        theta_lerp = (_e114 * ratio_lerp);
+    } else {
+        vec3 a_7 = vec3(0.0, 1.0, 0.0);
+        vec3 b_5 = vec3(0.0, 0.0, 0.0);
+        vec3 c_5 = vec3(0.5, 1.0, 0.0);
+        vec3 d_6 = vec3(1.0, 0.0, 0.0);
+        vec3 ee_1 = vec3(1.0, 1.0, 0.0);
+        vec3 f_2 = vec3(0.0, 1.0, 1.0);
+        vec3 g_2 = vec3(0.0, 0.0, 1.0);
+        vec3 h_1 = vec3(0.5, 1.0, 1.0);
+        vec3 i = vec3(1.0, 0.0, 1.0);
+        vec3 j = vec3(1.0, 1.0, 1.0);
+        float _e156 = theta_lerp;
+        if ((_e156 < 0.5)) {
+            float _e161 = theta_lerp;
+            local_2 = ((_e161 * 2.0) < ratio_lerp);
+        } else {
+            local_2 = false;
+        }
+        bool _e166 = local_2;
+        if (_e166) {
+            if ((lod_lerp > (1.0 - ratio_lerp))) {
+                float _e176 = theta_lerp;
+                if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((_e176 * 2.0) / max(ratio_lerp, 1e-8)))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                } else {
+                    p0_ = c_5;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_5;
+                p3_1 = g_2;
+            }
+        } else {
+            float _e183 = theta_lerp;
+            if (((1.0 - ((_e183 - 0.5) * 2.0)) > ratio_lerp)) {
+                if ((lod_lerp < (1.0 - ratio_lerp))) {
+                    float half_width = (0.5 * (1.0 - ratio_lerp));
+                    float _e203 = theta_lerp;
+                    if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e203 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
+                        p0_ = b_5;
+                        p1_ = g_2;
+                        p2_ = i;
+                        p3_1 = c_5;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_5;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_5;
+                    p1_ = g_2;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if ((lod_lerp > (1.0 - ratio_lerp))) {
+                    float _e222 = theta_lerp;
+                    if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
+                        p0_ = c_5;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_5;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_5;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    float _e234 = theta_lerp;
+    vec3 _e236 = p0_;
+    vec3 _e237 = p1_;
+    vec3 _e238 = p2_;
+    vec3 _e239 = p3_1;
+    vec4 _e240 = glint_tetra_weights(vec3(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
+    vec3 _e243 = p0_;
+    float _e245 = theta_bin0_;
+    GlintGrid _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e246;
+    vec3 _e248 = p1_;
+    float _e250 = theta_bin0_;
+    GlintGrid _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e251;
+    vec3 _e253 = p2_;
+    float _e255 = theta_bin0_;
+    GlintGrid _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e256;
+    vec3 _e258 = p3_1;
+    float _e260 = theta_bin0_;
+    GlintGrid _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e261;
+    GlintGrids _e262 = out_3;
+    return _e262;
+}
+
+GlintGrid glint_dominant_grid(GlintGrids grids) {
+    GlintGrid g_1 = GlintGrid(vec2(0.0), 0u, 0.0, 0.0);
+    g_1 = grids.g0_;
+    float _e6 = g_1.weight;
+    if ((grids.g1_.weight > _e6)) {
+        g_1 = grids.g1_;
+    }
+    float _e12 = g_1.weight;
+    if ((grids.g2_.weight > _e12)) {
+        g_1 = grids.g2_;
+    }
+    float _e18 = g_1.weight;
+    if ((grids.g3_.weight > _e18)) {
+        g_1 = grids.g3_;
+    }
+    g_1.weight = 1.0;
+    GlintGrid _e23 = g_1;
+    return _e23;
+}
+
+float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, vec2 slope_2, float d_1, float d_max) {
+    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
     return (min((_e6 / params_1.micro_roughness), 20.0) * d_max);
 }
 
 GlintParams glitter_params() {
-    GlintParams p_1 = GlintParams(0.0, 0.0, 0.0);
+    GlintParams p_3 = GlintParams(0.0, 0.0, 0.0);
     float _e4 = _group_1_binding_0_fs.flake_density;
-    p_1.log_density = (4.0 + (28.0 * clamp(_e4, 0.0, 1.0)));
+    p_3.log_density = (4.0 + (28.0 * clamp(_e4, 0.0, 1.0)));
     float _e13 = _group_1_binding_0_fs.twinkle;
-    p_1.micro_roughness = exp2(mix(-4.321928, -8.965784, clamp(_e13, 0.0, 1.0)));
+    p_3.micro_roughness = exp2(mix(-4.321928, -8.965784, clamp(_e13, 0.0, 1.0)));
     float _e22 = _group_1_binding_0_fs.density_variation;
-    p_1.density_randomization = clamp(_e22, 0.0, 4.0);
-    GlintParams _e26 = p_1;
+    p_3.density_randomization = clamp(_e22, 0.0, 4.0);
+    GlintParams _e26 = p_3;
     return _e26;
 }
 
@@ -659,22 +883,23 @@ void main() {
             GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e148 = _group_1_binding_0_fs.flake_size;
             float screen_scale_2 = clamp(_e148, 0.5, 8.0);
+            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
-                GlintGrid _e152 = glint_nearest_grid(_e5, _e145, screen_scale_2);
-                float _e153 = glint_ndf_single(_e144, _e152, slope_3, _e135, _e137);
-                d_flakes = _e153;
+                GlintGrid _e153 = glint_dominant_grid(_e152);
+                float _e154 = glint_ndf_single(_e144, _e153, slope_3, _e135, _e137);
+                d_flakes = _e154;
             }
         }
-        vec4 _e156 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e156.xyz, vec3(0.0), vec3(1.0));
-        float _e159 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        vec3 _e160 = color;
-        float _e161 = d_flakes;
-        vec3 _e164 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e160 + (((((intensity * _e161) * _e159) * _e164) * _e75) * n_dot_l_1));
+        vec4 _e157 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e157.xyz, vec3(0.0), vec3(1.0));
+        float _e160 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        vec3 _e161 = color;
+        float _e162 = d_flakes;
+        vec3 _e165 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e161 + (((((intensity * _e162) * _e160) * _e165) * _e75) * n_dot_l_1));
     }
-    vec3 _e169 = color;
-    vec3 radiance = clamp(_e169, vec3(0.0), vec3(65504.0));
+    vec3 _e170 = color;
+    vec3 radiance = clamp(_e170, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -76,6 +76,12 @@ struct GlintEllipse {
     float major;
     float minor;
 };
+struct GlintGrids {
+    GlintGrid g0_;
+    GlintGrid g1_;
+    GlintGrid g2_;
+    GlintGrid g3_;
+};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TIER_FAST = 0u;
@@ -123,9 +129,9 @@ metal::float3 weft_any_perpendicular(
     metal::float3 n_1
 ) {
     float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a = -1.0 / (s + n_1.z);
-    float b = (n_1.x * n_1.y) * a;
-    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
+    float a_1 = -1.0 / (s + n_1.z);
+    float b_1 = (n_1.x * n_1.y) * a_1;
+    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a_1), s * b_1, -(s) * n_1.x);
 }
 
 float weft_d_ggx(
@@ -133,12 +139,12 @@ float weft_d_ggx(
     float roughness_1
 ) {
     float _e2 = weft_clamp_roughness(roughness_1);
-    float a_1 = _e2 * _e2;
-    float a2_ = a_1 * a_1;
+    float a_2 = _e2 * _e2;
+    float a2_ = a_2 * a_2;
     float noh = metal::saturate(n_dot_h);
     float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
-    float d_1 = one_minus_noh2_ + ((noh * noh) * a2_);
-    return a2_ / ((WEFT_PI * d_1) * d_1);
+    float d_2 = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d_2) * d_2);
 }
 
 float weft_d_ggx_nh(
@@ -147,12 +153,12 @@ float weft_d_ggx_nh(
     float roughness_2
 ) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = _e3 * _e3;
-    float a2_1 = a_2 * a_2;
+    float a_3 = _e3 * _e3;
+    float a2_1 = a_3 * a_3;
     float noh_1 = metal::saturate(metal::dot(n_2, h));
     metal::float3 nxh = metal::cross(n_2, h);
-    float d_2 = metal::dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1);
-    return a2_1 / (WEFT_PI * metal::max(d_2 * d_2, 0.000000000000000000000000000001));
+    float d_3 = metal::dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1);
+    return a2_1 / (WEFT_PI * metal::max(d_3 * d_3, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -169,8 +175,8 @@ float weft_v_smith_ggx_correlated(
     float roughness_3
 ) {
     float _e3 = weft_clamp_roughness(roughness_3);
-    float a_3 = _e3 * _e3;
-    float a2_2 = a_3 * a_3;
+    float a_4 = _e3 * _e3;
+    float a2_2 = a_4 * a_4;
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_2)) + a2_2);
@@ -262,8 +268,8 @@ metal::float3 weft_prefiltered_radiance(
     metal::sampler weft_environment_sampler
 ) {
     float _e4 = weft_specular_mip(roughness_5, weft_frame);
-    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
-    return metal::max(c_1.xyz, metal::float3(0.0));
+    metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_2.xyz, metal::float3(0.0));
 }
 
 metal::float2 weft_env_brdf_lut(
@@ -272,8 +278,8 @@ metal::float2 weft_env_brdf_lut(
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
 ) {
-    metal::float2 uv_4 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_4, metal::level(0.0));
+    metal::float2 uv_5 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_5, metal::level(0.0));
     return _e8.xy;
 }
 
@@ -288,8 +294,8 @@ metal::float3x3 weft_tangent_frame(
     metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_2 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_2, n_4);
 }
 
 metal::float3 weft_unpack_normal(
@@ -595,11 +601,11 @@ float glint_sample_grid(
     metal::float3 log_density = metal::clamp((_e97 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
     metal::float3 count_1 = metal::max(metal::float3(0.00000001), grid.cell_area * metal::exp(log_density));
     metal::float3 blended = count_1 * grid.weight;
-    float p_2 = params.micro_roughness * target_ndf;
-    metal::float3 one_hit_1 = metal::float3(1.0) - metal::pow(metal::float3(1.0 - p_2), blended);
+    float p_4 = params.micro_roughness * target_ndf;
+    metal::float3 one_hit_1 = metal::float3(1.0) - metal::pow(metal::float3(1.0 - p_4), blended);
     metal::float3 others = metal::max(blended - metal::float3(1.0), metal::float3(0.0));
-    metal::float3 mean_1 = others * p_2;
-    metal::float3 deviation_1 = metal::sqrt(others * (p_2 * (1.0 - p_2)));
+    metal::float3 mean_1 = others * p_4;
+    metal::float3 deviation_1 = metal::sqrt(others * (p_4 * (1.0 - p_4)));
     metal::float3 smooth_width_1 = (0.1 * metal::saturate(one_hit_1 * 10.0)) * metal::saturate((metal::float3(1.0) - one_hit_1) * 10.0);
     float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
     float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
@@ -612,15 +618,15 @@ GlintEllipse glint_ellipse(
     metal::float2 duv_dy
 ) {
     GlintEllipse out_2 = {};
-    float a_4 = (duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x);
-    float b_2 = (duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y);
-    float d_3 = (duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y);
-    float half_trace = 0.5 * (a_4 + d_3);
-    float disc = metal::sqrt(metal::max(((0.25 * (a_4 - d_3)) * (a_4 - d_3)) + (b_2 * b_2), 0.0));
+    float a_5 = (duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x);
+    float b_3 = (duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y);
+    float d_4 = (duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y);
+    float half_trace = 0.5 * (a_5 + d_4);
+    float disc = metal::sqrt(metal::max(((0.25 * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3), 0.0));
     float l1_ = half_trace + disc;
     float l2_ = metal::max(half_trace - disc, 0.0);
-    metal::float2 e_a = metal::float2(b_2, l1_ - a_4);
-    metal::float2 e_b = metal::float2(l1_ - d_3, b_2);
+    metal::float2 e_a = metal::float2(b_3, l1_ - a_5);
+    metal::float2 e_b = metal::float2(l1_ - d_4, b_3);
     metal::float2 e_3 = (metal::dot(e_a, e_a) > metal::dot(e_b, e_b)) ? e_a : e_b;
     float e_len2_ = metal::dot(e_3, e_3);
     out_2.major_dir = (e_len2_ > 0.0000000000000000000000000000000000001) ? (e_3 * metal::rsqrt(metal::max(e_len2_, 0.0000000000000000000000000000000000001))) : metal::float2(1.0, 0.0);
@@ -635,9 +641,9 @@ metal::float2 glint_rotate(
     metal::float2 uv_1,
     float angle
 ) {
-    float c_2 = metal::cos(angle);
+    float c_3 = metal::cos(angle);
     float s_4 = metal::sin(angle);
-    return metal::float2((c_2 * uv_1.x) + (s_4 * uv_1.y), (c_2 * uv_1.y) - (s_4 * uv_1.x));
+    return metal::float2((c_3 * uv_1.x) + (s_4 * uv_1.y), (c_3 * uv_1.y) - (s_4 * uv_1.x));
 }
 
 uint naga_f2u32(float value) {
@@ -672,6 +678,25 @@ GlintGrid glint_make_grid(
     return _e22;
 }
 
+metal::float4 glint_tetra_weights(
+    metal::float3 p_1,
+    metal::float3 a,
+    metal::float3 b,
+    metal::float3 c_1,
+    metal::float3 d
+) {
+    metal::float3 c1_1 = a - d;
+    metal::float3 c2_1 = b - d;
+    metal::float3 c3_ = c_1 - d;
+    metal::float3 q = p_1 - d;
+    float det = metal::dot(c1_1, metal::cross(c2_1, c3_));
+    float inv = 1.0 / det;
+    float w1_ = metal::dot(q, metal::cross(c2_1, c3_)) * inv;
+    float w2_ = metal::dot(c1_1, metal::cross(q, c3_)) * inv;
+    float w3_ = metal::dot(c1_1, metal::cross(c2_1, q)) * inv;
+    return metal::float4(w1_, w2_, w3_, ((1.0 - w1_) - w2_) - w3_);
+}
+
 float glint_lod(
     GlintEllipse e_1,
     float screen_scale
@@ -679,39 +704,256 @@ float glint_lod(
     return metal::clamp(metal::log2((e_1.minor * screen_scale) * 0.5), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-GlintGrid glint_nearest_grid(
+GlintGrid glint_vertex_grid(
     metal::float2 uv_3,
+    metal::float3 p_2,
+    float weight_1,
+    bool center,
+    float bin0_,
+    float bin_h,
+    float bin1_,
+    float lod0_,
+    float ratio0_
+) {
+    float theta_2 = {};
+    bool local_1 = {};
+    float rot_index = p_2.x * 2.0;
+    theta_2 = (rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_);
+    if (center) {
+        local_1 = p_2.y == 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = (p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_;
+    float lod_2 = lod0_ + p_2.z;
+    float _e35 = theta_2;
+    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
+}
+
+GlintGrids glint_grids(
+    metal::float2 uv_4,
     GlintEllipse e_2,
     float screen_scale_1
 ) {
-    float _e3 = glint_lod(e_2, screen_scale_1);
-    float lod_2 = metal::floor(_e3 + 0.5);
-    GlintGrid _e10 = glint_make_grid(uv_3, lod_2, 0.0, 1.0, 1.0);
-    return _e10;
+    float theta_bin0_ = {};
+    float theta_lerp = {};
+    metal::float3 p0_ = {};
+    metal::float3 p1_ = {};
+    metal::float3 p2_ = {};
+    metal::float3 p3_1 = {};
+    bool local_2 = {};
+    GlintGrids out_3 = {};
+    float ratio_e = metal::min(e_2.major / (e_2.minor + (0.00000001 * e_2.major)), GLINT_MAX_RATIO);
+    float _e12 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = metal::floor(_e12);
+    float lod_lerp = _e12 - lod0_1;
+    float ratio0_1 = metal::max(metal::exp2(metal::floor(metal::log2(metal::max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = ratio0_1 * 2.0;
+    float ratio_lerp = metal::saturate((ratio_e - ratio0_1) / (ratio1_ - ratio0_1));
+    float theta_3 = metal::atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_grid = GLINT_HALF_PI / metal::max(ratio0_1, 2.0);
+    float theta_mid = (metal::floor(theta_3 / theta_grid) * theta_grid) + (0.5 * theta_grid);
+    theta_bin0_ = (theta_3 < theta_mid) ? (theta_mid - (0.5 * theta_grid)) : theta_mid;
+    float _e50 = theta_bin0_;
+    float theta_bin_h = _e50 + (0.25 * theta_grid);
+    float _e54 = theta_bin0_;
+    float theta_bin1_ = _e54 + (0.5 * theta_grid);
+    float _e58 = theta_bin0_;
+    float _e60 = theta_bin0_;
+    theta_lerp = metal::saturate((theta_3 - _e58) / (theta_bin1_ - _e60));
+    float _e65 = theta_bin0_;
+    float _e67 = theta_bin0_;
+    float _e69 = theta_bin0_;
+    theta_bin0_ = (_e69 <= 0.0) ? (3.1415927 + _e67) : _e65;
+    bool center_1 = ratio0_1 == 1.0;
+    if (center_1) {
+        metal::float3 a_6 = metal::float3(0.0, 1.0, 0.0);
+        metal::float3 b_4 = metal::float3(0.0, 0.0, 0.0);
+        metal::float3 c_4 = metal::float3(1.0, 1.0, 0.0);
+        metal::float3 d_5 = metal::float3(0.0, 1.0, 1.0);
+        metal::float3 ee = metal::float3(0.0, 0.0, 1.0);
+        metal::float3 f_1 = metal::float3(1.0, 1.0, 1.0);
+        if (lod_lerp > (1.0 - ratio_lerp)) {
+            float _e112 = theta_lerp;
+            if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > _e112) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_4;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_4;
+            p3_1 = ee;
+        }
+        float _e114 = theta_lerp;
+        theta_lerp = _e114 * ratio_lerp;
+    } else {
+        metal::float3 a_7 = metal::float3(0.0, 1.0, 0.0);
+        metal::float3 b_5 = metal::float3(0.0, 0.0, 0.0);
+        metal::float3 c_5 = metal::float3(0.5, 1.0, 0.0);
+        metal::float3 d_6 = metal::float3(1.0, 0.0, 0.0);
+        metal::float3 ee_1 = metal::float3(1.0, 1.0, 0.0);
+        metal::float3 f_2 = metal::float3(0.0, 1.0, 1.0);
+        metal::float3 g_2 = metal::float3(0.0, 0.0, 1.0);
+        metal::float3 h_1 = metal::float3(0.5, 1.0, 1.0);
+        metal::float3 i = metal::float3(1.0, 0.0, 1.0);
+        metal::float3 j = metal::float3(1.0, 1.0, 1.0);
+        float _e156 = theta_lerp;
+        if (_e156 < 0.5) {
+            float _e161 = theta_lerp;
+            local_2 = (_e161 * 2.0) < ratio_lerp;
+        } else {
+            local_2 = false;
+        }
+        bool _e166 = local_2;
+        if (_e166) {
+            if (lod_lerp > (1.0 - ratio_lerp)) {
+                float _e176 = theta_lerp;
+                if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((_e176 * 2.0) / metal::max(ratio_lerp, 0.00000001))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                } else {
+                    p0_ = c_5;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_5;
+                p3_1 = g_2;
+            }
+        } else {
+            float _e183 = theta_lerp;
+            if ((1.0 - ((_e183 - 0.5) * 2.0)) > ratio_lerp) {
+                if (lod_lerp < (1.0 - ratio_lerp)) {
+                    float half_width = 0.5 * (1.0 - ratio_lerp);
+                    float _e203 = theta_lerp;
+                    if ((lod_lerp / metal::max(1.0 - ratio_lerp, 0.00000001)) > ((_e203 - (0.5 - half_width)) / metal::max(2.0 * half_width, 0.00000001))) {
+                        p0_ = b_5;
+                        p1_ = g_2;
+                        p2_ = i;
+                        p3_1 = c_5;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_5;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_5;
+                    p1_ = g_2;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if (lod_lerp > (1.0 - ratio_lerp)) {
+                    float _e222 = theta_lerp;
+                    if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001))) {
+                        p0_ = c_5;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_5;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_5;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    float _e234 = theta_lerp;
+    metal::float3 _e236 = p0_;
+    metal::float3 _e237 = p1_;
+    metal::float3 _e238 = p2_;
+    metal::float3 _e239 = p3_1;
+    metal::float4 _e240 = glint_tetra_weights(metal::float3(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
+    metal::float3 _e243 = p0_;
+    float _e245 = theta_bin0_;
+    GlintGrid _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e246;
+    metal::float3 _e248 = p1_;
+    float _e250 = theta_bin0_;
+    GlintGrid _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e251;
+    metal::float3 _e253 = p2_;
+    float _e255 = theta_bin0_;
+    GlintGrid _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e256;
+    metal::float3 _e258 = p3_1;
+    float _e260 = theta_bin0_;
+    GlintGrid _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e261;
+    GlintGrids _e262 = out_3;
+    return _e262;
+}
+
+GlintGrid glint_dominant_grid(
+    GlintGrids grids
+) {
+    GlintGrid g_1 = {};
+    g_1 = grids.g0_;
+    float _e6 = g_1.weight;
+    if (grids.g1_.weight > _e6) {
+        g_1 = grids.g1_;
+    }
+    float _e12 = g_1.weight;
+    if (grids.g2_.weight > _e12) {
+        g_1 = grids.g2_;
+    }
+    float _e18 = g_1.weight;
+    if (grids.g3_.weight > _e18) {
+        g_1 = grids.g3_;
+    }
+    g_1.weight = 1.0;
+    GlintGrid _e23 = g_1;
+    return _e23;
 }
 
 float glint_ndf_single(
     GlintParams params_1,
     GlintGrid grid_1,
     metal::float2 slope_2,
-    float d,
+    float d_1,
     float d_max
 ) {
-    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, d / d_max);
+    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, d_1 / d_max);
     return metal::min(_e6 / params_1.micro_roughness, 20.0) * d_max;
 }
 
 GlintParams glitter_params(
     constant WeftMaterial& material
 ) {
-    GlintParams p_1 = {};
+    GlintParams p_3 = {};
     float _e4 = material.flake_density;
-    p_1.log_density = 4.0 + (28.0 * metal::saturate(_e4));
+    p_3.log_density = 4.0 + (28.0 * metal::saturate(_e4));
     float _e13 = material.twinkle;
-    p_1.micro_roughness = metal::exp2(metal::mix(-4.321928, -8.965784, metal::saturate(_e13)));
+    p_3.micro_roughness = metal::exp2(metal::mix(-4.321928, -8.965784, metal::saturate(_e13)));
     float _e22 = material.density_variation;
-    p_1.density_randomization = metal::clamp(_e22, 0.0, 4.0);
-    GlintParams _e26 = p_1;
+    p_3.density_randomization = metal::clamp(_e22, 0.0, 4.0);
+    GlintParams _e26 = p_3;
     return _e26;
 }
 
@@ -863,21 +1105,22 @@ fragment fs_mainOutput fs_main(
             GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e148 = material.flake_size;
             float screen_scale_2 = metal::clamp(_e148, 0.5, 8.0);
+            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
-                GlintGrid _e152 = glint_nearest_grid(_e5, _e145, screen_scale_2);
-                float _e153 = glint_ndf_single(_e144, _e152, slope_3, _e135, _e137);
-                d_flakes = _e153;
+                GlintGrid _e153 = glint_dominant_grid(_e152);
+                float _e154 = glint_ndf_single(_e144, _e153, slope_3, _e135, _e137);
+                d_flakes = _e154;
             }
         }
-        metal::float4 _e156 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e156.xyz);
-        float _e159 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        metal::float3 _e160 = color;
-        float _e161 = d_flakes;
-        metal::float3 _e164 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = _e160 + (((((intensity * _e161) * _e159) * _e164) * _e75) * n_dot_l_1);
+        metal::float4 _e157 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e157.xyz);
+        float _e160 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        metal::float3 _e161 = color;
+        float _e162 = d_flakes;
+        metal::float3 _e165 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = _e161 + (((((intensity * _e162) * _e160) * _e165) * _e75) * n_dot_l_1);
     }
-    metal::float3 _e169 = color;
-    metal::float3 radiance = metal::clamp(_e169, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e170 = color;
+    metal::float3 radiance = metal::clamp(_e170, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

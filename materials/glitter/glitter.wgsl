@@ -20,10 +20,9 @@
 //               anisotropy, rotation) blended over a tetrahedron, binomial
 //               flake counts per simplex cell; target NDF = GGX(r_f).
 //   fast      = an approximation of the reference: the same glint NDF on
-//               one grid only, isotropic and unrotated at the footprint's
-//               nearest level: the reference's own grid at that level's
-//               isotropic vertex (same cells, seeds and flakes), 3 cells
-//               per pixel instead of 12.
+//               one grid only, the reference's grid of largest weight (same
+//               cells, seeds and flakes) at weight 1, 3 cells per pixel
+//               instead of 12.
 //   smooth    = the glints' expectation, E[D_flakes] = GGX(r_f): the flakes
 //               averaged into a smooth lobe (no sparkle).
 
@@ -92,12 +91,11 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             let params = glitter_params();
             let ellipse = glint_ellipse(duv_dx, duv_dy);
             let screen_scale = clamp(material.flake_size, 0.5, 8.0);
+            let grids = glint_grids(uv, ellipse, screen_scale);
             if WEFT_TIER == TIER_REFERENCE {
-                let grids = glint_grids(uv, ellipse, screen_scale);
                 d_flakes = glint_ndf_reference(params, grids, slope, d, d_max);
             } else {
-                let grid = glint_nearest_grid(uv, ellipse, screen_scale);
-                d_flakes = glint_ndf_single(params, grid, slope, d, d_max);
+                d_flakes = glint_ndf_single(params, glint_dominant_grid(grids), slope, d, d_max);
             }
         }
         let flake_f0 = saturate(material.flake_color.rgb);

@@ -453,12 +453,22 @@ fn glint_vertex_grid(
     return glint_make_grid(uv, lod, theta, ratio, weight);
 }
 
-// The single grid the fast tier reads: isotropic, unrotated, at the nearest
-// level (the reference's own grid at its isotropic vertices of that level:
-// same uv, seed and cells).
-fn glint_nearest_grid(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrid {
-    let lod = floor(glint_lod(e, screen_scale) + 0.5);
-    return glint_make_grid(uv, lod, 0.0, 1.0, 1.0);
+// The single grid the fast tier reads: the reference's grid of largest
+// weight (same uv, seed and cells: the same flakes), given weight 1 so that
+// it alone is an unbiased estimate of the target NDF.
+fn glint_dominant_grid(grids: GlintGrids) -> GlintGrid {
+    var g = grids.g0;
+    if grids.g1.weight > g.weight {
+        g = grids.g1;
+    }
+    if grids.g2.weight > g.weight {
+        g = grids.g2;
+    }
+    if grids.g3.weight > g.weight {
+        g = grids.g3;
+    }
+    g.weight = 1.0;
+    return g;
 }
 
 // ---------------------------------------------------------------- NDF
