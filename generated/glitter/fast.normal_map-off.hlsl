@@ -996,7 +996,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const GlintParams _e132 = glitter_params();
             const GlintEllipse _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e136 = material.flake_size;
-            float screen_scale_2 = clamp(_e136, 0.5, 8.0);
+            float screen_scale_2 = clamp(_e136, 1.0, 8.0);
             const GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
                 const GlintGrid _e141 = glint_dominant_grid(_e140);

@@ -1019,7 +1019,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             const GlintParams _e144 = glitter_params();
             const GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e148 = material.flake_size;
-            float screen_scale_2 = clamp(_e148, 0.5, 8.0);
+            float screen_scale_2 = clamp(_e148, 1.0, 8.0);
             const GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
                 const GlintGrid _e153 = glint_dominant_grid(_e152);

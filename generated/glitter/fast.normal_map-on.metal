@@ -1104,7 +1104,7 @@ fragment fs_mainOutput fs_main(
             GlintParams _e144 = glitter_params(material);
             GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e148 = material.flake_size;
-            float screen_scale_2 = metal::clamp(_e148, 0.5, 8.0);
+            float screen_scale_2 = metal::clamp(_e148, 1.0, 8.0);
             GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
                 GlintGrid _e153 = glint_dominant_grid(_e152);

@@ -931,7 +931,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e144 = glitter_params();
             let _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             let _e148 = material.flake_size;
-            let screen_scale_2 = clamp(_e148, 0.5f, 8f);
+            let screen_scale_2 = clamp(_e148, 1f, 8f);
             let _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
                 let _e153 = glint_dominant_grid(_e152);

@@ -845,7 +845,7 @@ void main() {
             GlintParams _e132 = glitter_params();
             GlintEllipse _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e136 = _group_1_binding_0_fs.flake_size;
-            float screen_scale_2 = clamp(_e136, 0.5, 8.0);
+            float screen_scale_2 = clamp(_e136, 1.0, 8.0);
             GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
                 float _e141 = glint_ndf_reference(_e132, _e140, slope_3, _e123, _e125);

@@ -1060,7 +1060,7 @@ fragment fs_mainOutput fs_main(
             GlintParams _e132 = glitter_params(material);
             GlintEllipse _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e136 = material.flake_size;
-            float screen_scale_2 = metal::clamp(_e136, 0.5, 8.0);
+            float screen_scale_2 = metal::clamp(_e136, 1.0, 8.0);
             GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
                 float _e141 = glint_ndf_reference(_e132, _e140, slope_3, _e123, _e125);

@@ -893,7 +893,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e132 = glitter_params();
             let _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
             let _e136 = material.flake_size;
-            let screen_scale_2 = clamp(_e136, 0.5f, 8f);
+            let screen_scale_2 = clamp(_e136, 1f, 8f);
             let _e140 = glint_grids(_e5, _e133, screen_scale_2);
             {
                 let _e141 = glint_ndf_reference(_e132, _e140, slope_3, _e123, _e125);

@@ -867,7 +867,7 @@ void main() {
             GlintParams _e144 = glitter_params();
             GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
             float _e148 = _group_1_binding_0_fs.flake_size;
-            float screen_scale_2 = clamp(_e148, 0.5, 8.0);
+            float screen_scale_2 = clamp(_e148, 1.0, 8.0);
             GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
             {
                 float _e153 = glint_ndf_reference(_e144, _e152, slope_3, _e135, _e137);

@@ -90,7 +90,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             let slope = vec2<f32>(dot(frame[0], h), dot(frame[1], h));
             let params = glitter_params();
             let ellipse = glint_ellipse(duv_dx, duv_dy);
-            let screen_scale = clamp(material.flake_size, 0.5, 8.0);
+            let screen_scale = clamp(material.flake_size, 1.0, 8.0);
             let grids = glint_grids(uv, ellipse, screen_scale);
             if WEFT_TIER == TIER_REFERENCE {
                 d_flakes = glint_ndf_reference(params, grids, slope, d, d_max);
