@@ -30,7 +30,7 @@ fn meta_path() -> PathBuf {
 }
 
 fn renderer() -> Renderer {
-    let luts = Luts::load_dir(&generated()).expect("generated/ LUTs");
+    let luts = Luts::load_dir(generated()).expect("generated/ LUTs");
     let gpu = Gpu::new().unwrap_or_else(|e| panic!("glint tests need a Vulkan adapter: {e}"));
     let env = EnvironmentMaps::sky(&PreviewOptions::default().sky_params());
     Renderer::new(gpu, &env, &luts).expect("renderer")
