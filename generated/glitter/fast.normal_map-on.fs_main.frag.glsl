@@ -223,8 +223,8 @@ float weft_specular_mip(float roughness_4) {
 
 vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
     float _e4 = weft_specular_mip(roughness_5);
-    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_2.xyz, vec3(0.0));
+    vec4 c_3 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_3.xyz, vec3(0.0));
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
@@ -429,29 +429,27 @@ vec3 glint_gaussian3_(vec3 u) {
     return (1.4142135 * vec3(_e6, _e12, _e18));
 }
 
-vec4 glint_gaussian4_(vec4 u_1) {
-    float _e6 = glint_erfinv(((2.0 * u_1.x) - 1.0));
-    float _e12 = glint_erfinv(((2.0 * u_1.y) - 1.0));
-    float _e18 = glint_erfinv(((2.0 * u_1.z) - 1.0));
-    float _e24 = glint_erfinv(((2.0 * u_1.w) - 1.0));
-    return (1.4142135 * vec4(_e6, _e12, _e18, _e24));
+vec2 glint_corner(vec2 c_1) {
+    uvec2 texel_1 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
+    uvec4 _e12 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
+    vec4 _e13 = glint_unit4_(_e12);
+    float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
+    return vec2(_e13.x, (1.4142135 * _e20));
 }
 
 GlintSlopeRand glint_slope_rand(float micro_roughness, vec2 slope, vec2 offset) {
     GlintSlopeRand out_1 = GlintSlopeRand(vec4(0.0), vec4(0.0), vec2(0.0));
     vec2 s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
     vec2 cell = floor(s_2);
-    uvec2 texel_1 = uvec2((cell - (GLINT_TABLE_SIZE * floor((cell / vec2(64.0))))));
-    uvec4 _e23 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
-    vec4 _e24 = glint_unit4_(_e23);
-    out_1.gate_rand = _e24;
-    uvec4 _e29 = glint_pcg4d(uvec4(texel_1, 1852795251u, 1953785202u));
-    vec4 _e30 = glint_unit4_(_e29);
-    vec4 _e31 = glint_gaussian4_(_e30);
-    out_1.gaussian = _e31;
+    vec2 _e10 = glint_corner(cell);
+    vec2 _e15 = glint_corner((cell + vec2(0.0, 1.0)));
+    vec2 _e20 = glint_corner((cell + vec2(1.0, 0.0)));
+    vec2 _e25 = glint_corner((cell + vec2(1.0, 1.0)));
+    out_1.gate_rand = vec4(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = vec4(_e10.y, _e15.y, _e20.y, _e25.y);
     out_1.lerp = (s_2 - cell);
-    GlintSlopeRand _e34 = out_1;
-    return _e34;
+    GlintSlopeRand _e41 = out_1;
+    return _e41;
 }
 
 float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float mean, float deviation, float count) {
@@ -529,9 +527,9 @@ GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
 }
 
 vec2 glint_rotate(vec2 uv_1, float angle) {
-    float c_3 = cos(angle);
+    float c_4 = cos(angle);
     float s_4 = sin(angle);
-    return vec2(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 uint glint_grid_seed(float lod, float theta, float ratio) {
@@ -552,10 +550,10 @@ GlintGrid glint_make_grid(vec2 uv_2, float lod_1, float theta_1, float ratio_1, 
     return _e22;
 }
 
-vec4 glint_tetra_weights(vec3 p_1, vec3 a, vec3 b, vec3 c_1, vec3 d) {
+vec4 glint_tetra_weights(vec3 p_1, vec3 a, vec3 b, vec3 c_2, vec3 d) {
     vec3 c1_1 = (a - d);
     vec3 c2_1 = (b - d);
-    vec3 c3_ = (c_1 - d);
+    vec3 c3_ = (c_2 - d);
     vec3 q = (p_1 - d);
     float det = dot(c1_1, cross(c2_1, c3_));
     float inv = (1.0 / det);
@@ -625,7 +623,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
     if (center_1) {
         vec3 a_6 = vec3(0.0, 1.0, 0.0);
         vec3 b_4 = vec3(0.0, 0.0, 0.0);
-        vec3 c_4 = vec3(1.0, 1.0, 0.0);
+        vec3 c_5 = vec3(1.0, 1.0, 0.0);
         vec3 d_5 = vec3(0.0, 1.0, 1.0);
         vec3 ee = vec3(0.0, 0.0, 1.0);
         vec3 f_1 = vec3(1.0, 1.0, 1.0);
@@ -639,13 +637,13 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
             } else {
                 p0_ = f_1;
                 p1_ = ee;
-                p2_ = c_4;
+                p2_ = c_5;
                 p3_1 = a_6;
             }
         } else {
             p0_ = b_4;
             p1_ = a_6;
-            p2_ = c_4;
+            p2_ = c_5;
             p3_1 = ee;
         }
         float _e114 = theta_lerp;
@@ -653,7 +651,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
     } else {
         vec3 a_7 = vec3(0.0, 1.0, 0.0);
         vec3 b_5 = vec3(0.0, 0.0, 0.0);
-        vec3 c_5 = vec3(0.5, 1.0, 0.0);
+        vec3 c_6 = vec3(0.5, 1.0, 0.0);
         vec3 d_6 = vec3(1.0, 0.0, 0.0);
         vec3 ee_1 = vec3(1.0, 1.0, 0.0);
         vec3 f_2 = vec3(0.0, 1.0, 1.0);
@@ -678,7 +676,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                     p2_ = h_1;
                     p3_1 = g_2;
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
                     p3_1 = g_2;
@@ -686,7 +684,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
-                p2_ = c_5;
+                p2_ = c_6;
                 p3_1 = g_2;
             }
         } else {
@@ -699,15 +697,15 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                         p0_ = b_5;
                         p1_ = g_2;
                         p2_ = i;
-                        p3_1 = c_5;
+                        p3_1 = c_6;
                     } else {
                         p0_ = d_6;
                         p1_ = b_5;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = i;
                     }
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = g_2;
                     p2_ = h_1;
                     p3_1 = i;
@@ -716,20 +714,20 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                 if ((lod_lerp > (1.0 - ratio_lerp))) {
                     float _e222 = theta_lerp;
                     if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
-                        p0_ = c_5;
+                        p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
                         p3_1 = i;
                     } else {
                         p0_ = ee_1;
                         p1_ = i;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = j;
                     }
                 } else {
                     p0_ = d_6;
                     p1_ = ee_1;
-                    p2_ = c_5;
+                    p2_ = c_6;
                     p3_1 = i;
                 }
             }

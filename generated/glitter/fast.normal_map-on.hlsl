@@ -271,8 +271,8 @@ float weft_specular_mip(float roughness_4)
 float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
 {
     const float _e4 = weft_specular_mip(roughness_5);
-    float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_2.xyz, (0.0).xxx);
+    float4 c_3 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, (0.0).xxx);
 }
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
@@ -493,17 +493,17 @@ float3 glint_gaussian3_(float3 u)
     return (1.4142135 * float3(_e6, _e12, _e18));
 }
 
-float4 glint_gaussian4_(float4 u_1)
-{
-    const float _e6 = glint_erfinv(((2.0 * u_1.x) - 1.0));
-    const float _e12 = glint_erfinv(((2.0 * u_1.y) - 1.0));
-    const float _e18 = glint_erfinv(((2.0 * u_1.z) - 1.0));
-    const float _e24 = glint_erfinv(((2.0 * u_1.w) - 1.0));
-    return (1.4142135 * float4(_e6, _e12, _e18, _e24));
-}
-
 uint2 naga_f2u32(float2 value) {
     return uint2(clamp(value, 0.0, 4294967000.0));
+}
+
+float2 glint_corner(float2 c_1)
+{
+    uint2 texel_1 = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
+    const uint4 _e12 = glint_pcg4d(uint4(texel_1, 6777961u, 1953785202u));
+    const float4 _e13 = glint_unit4_(_e12);
+    const float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
+    return float2(_e13.x, (1.4142135 * _e20));
 }
 
 GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset)
@@ -512,17 +512,15 @@ GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offs
 
     float2 s_2 = ((abs(slope) / (micro_roughness).xx) + (offset * GLINT_TABLE_SIZE));
     float2 cell = floor(s_2);
-    uint2 texel_1 = naga_f2u32((cell - (GLINT_TABLE_SIZE * floor((cell / (64.0).xx)))));
-    const uint4 _e23 = glint_pcg4d(uint4(texel_1, 6777961u, 1953785202u));
-    const float4 _e24 = glint_unit4_(_e23);
-    out_1.gate_rand = _e24;
-    const uint4 _e29 = glint_pcg4d(uint4(texel_1, 1852795251u, 1953785202u));
-    const float4 _e30 = glint_unit4_(_e29);
-    const float4 _e31 = glint_gaussian4_(_e30);
-    out_1.gaussian = _e31;
+    const float2 _e10 = glint_corner(cell);
+    const float2 _e15 = glint_corner((cell + float2(0.0, 1.0)));
+    const float2 _e20 = glint_corner((cell + float2(1.0, 0.0)));
+    const float2 _e25 = glint_corner((cell + float2(1.0, 1.0)));
+    out_1.gate_rand = float4(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = float4(_e10.y, _e15.y, _e20.y, _e25.y);
     out_1.lerp_ = (s_2 - cell);
-    GlintSlopeRand _e34 = out_1;
-    const GlintSlopeRand glintsloperand = _e34;
+    GlintSlopeRand _e41 = out_1;
+    const GlintSlopeRand glintsloperand = _e41;
     return glintsloperand;
 }
 
@@ -616,9 +614,9 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
 
 float2 glint_rotate(float2 uv_1, float angle)
 {
-    float c_3 = cos(angle);
+    float c_4 = cos(angle);
     float s_4 = sin(angle);
-    return float2(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
+    return float2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 uint naga_f2u32(float value) {
@@ -647,11 +645,11 @@ GlintGrid glint_make_grid(float2 uv_2, float lod_1, float theta_1, float ratio_1
     return glintgrid;
 }
 
-float4 glint_tetra_weights(float3 p_1, float3 a, float3 b, float3 c_1, float3 d)
+float4 glint_tetra_weights(float3 p_1, float3 a, float3 b, float3 c_2, float3 d)
 {
     float3 c1_1 = (a - d);
     float3 c2_1 = (b - d);
-    float3 c3_ = (c_1 - d);
+    float3 c3_ = (c_2 - d);
     float3 q = (p_1 - d);
     float det = dot(c1_1, cross(c2_1, c3_));
     float inv = (1.0 / det);
@@ -727,7 +725,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
     if (center_1) {
         float3 a_6 = float3(0.0, 1.0, 0.0);
         float3 b_4 = float3(0.0, 0.0, 0.0);
-        float3 c_4 = float3(1.0, 1.0, 0.0);
+        float3 c_5 = float3(1.0, 1.0, 0.0);
         float3 d_5 = float3(0.0, 1.0, 1.0);
         float3 ee = float3(0.0, 0.0, 1.0);
         float3 f_1 = float3(1.0, 1.0, 1.0);
@@ -741,13 +739,13 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
             } else {
                 p0_ = f_1;
                 p1_ = ee;
-                p2_ = c_4;
+                p2_ = c_5;
                 p3_1 = a_6;
             }
         } else {
             p0_ = b_4;
             p1_ = a_6;
-            p2_ = c_4;
+            p2_ = c_5;
             p3_1 = ee;
         }
         float _e114 = theta_lerp;
@@ -755,7 +753,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
     } else {
         float3 a_7 = float3(0.0, 1.0, 0.0);
         float3 b_5 = float3(0.0, 0.0, 0.0);
-        float3 c_5 = float3(0.5, 1.0, 0.0);
+        float3 c_6 = float3(0.5, 1.0, 0.0);
         float3 d_6 = float3(1.0, 0.0, 0.0);
         float3 ee_1 = float3(1.0, 1.0, 0.0);
         float3 f_2 = float3(0.0, 1.0, 1.0);
@@ -780,7 +778,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                     p2_ = h_1;
                     p3_1 = g_2;
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
                     p3_1 = g_2;
@@ -788,7 +786,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
-                p2_ = c_5;
+                p2_ = c_6;
                 p3_1 = g_2;
             }
         } else {
@@ -801,15 +799,15 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                         p0_ = b_5;
                         p1_ = g_2;
                         p2_ = i;
-                        p3_1 = c_5;
+                        p3_1 = c_6;
                     } else {
                         p0_ = d_6;
                         p1_ = b_5;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = i;
                     }
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = g_2;
                     p2_ = h_1;
                     p3_1 = i;
@@ -818,20 +816,20 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                 if ((lod_lerp > (1.0 - ratio_lerp))) {
                     float _e222 = theta_lerp;
                     if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
-                        p0_ = c_5;
+                        p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
                         p3_1 = i;
                     } else {
                         p0_ = ee_1;
                         p1_ = i;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = j;
                     }
                 } else {
                     p0_ = d_6;
                     p1_ = ee_1;
-                    p2_ = c_5;
+                    p2_ = c_6;
                     p3_1 = i;
                 }
             }

@@ -268,8 +268,8 @@ metal::float3 weft_prefiltered_radiance(
     metal::sampler weft_environment_sampler
 ) {
     float _e4 = weft_specular_mip(roughness_5, weft_frame);
-    metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
-    return metal::max(c_2.xyz, metal::float3(0.0));
+    metal::float4 c_3 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_3.xyz, metal::float3(0.0));
 }
 
 metal::float2 weft_env_brdf_lut(
@@ -505,18 +505,18 @@ metal::float3 glint_gaussian3_(
     return 1.4142135 * metal::float3(_e6, _e12, _e18);
 }
 
-metal::float4 glint_gaussian4_(
-    metal::float4 u_1
-) {
-    float _e6 = glint_erfinv((2.0 * u_1.x) - 1.0);
-    float _e12 = glint_erfinv((2.0 * u_1.y) - 1.0);
-    float _e18 = glint_erfinv((2.0 * u_1.z) - 1.0);
-    float _e24 = glint_erfinv((2.0 * u_1.w) - 1.0);
-    return 1.4142135 * metal::float4(_e6, _e12, _e18, _e24);
-}
-
 metal::uint2 naga_f2u32(metal::float2 value) {
     return static_cast<metal::uint2>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+metal::float2 glint_corner(
+    metal::float2 c_1
+) {
+    metal::uint2 texel_1 = naga_f2u32(c_1 - (GLINT_TABLE_SIZE * metal::floor(c_1 / metal::float2(64.0))));
+    metal::uint4 _e12 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
+    metal::float4 _e13 = glint_unit4_(_e12);
+    float _e20 = glint_erfinv((2.0 * _e13.y) - 1.0);
+    return metal::float2(_e13.x, 1.4142135 * _e20);
 }
 
 GlintSlopeRand glint_slope_rand(
@@ -527,17 +527,15 @@ GlintSlopeRand glint_slope_rand(
     GlintSlopeRand out_1 = {};
     metal::float2 s_2 = (metal::abs(slope) / metal::float2(micro_roughness)) + (offset * GLINT_TABLE_SIZE);
     metal::float2 cell = metal::floor(s_2);
-    metal::uint2 texel_1 = naga_f2u32(cell - (GLINT_TABLE_SIZE * metal::floor(cell / metal::float2(64.0))));
-    metal::uint4 _e23 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
-    metal::float4 _e24 = glint_unit4_(_e23);
-    out_1.gate_rand = _e24;
-    metal::uint4 _e29 = glint_pcg4d(metal::uint4(texel_1, 1852795251u, 1953785202u));
-    metal::float4 _e30 = glint_unit4_(_e29);
-    metal::float4 _e31 = glint_gaussian4_(_e30);
-    out_1.gaussian = _e31;
+    metal::float2 _e10 = glint_corner(cell);
+    metal::float2 _e15 = glint_corner(cell + metal::float2(0.0, 1.0));
+    metal::float2 _e20 = glint_corner(cell + metal::float2(1.0, 0.0));
+    metal::float2 _e25 = glint_corner(cell + metal::float2(1.0, 1.0));
+    out_1.gate_rand = metal::float4(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = metal::float4(_e10.y, _e15.y, _e20.y, _e25.y);
     out_1.lerp = s_2 - cell;
-    GlintSlopeRand _e34 = out_1;
-    return _e34;
+    GlintSlopeRand _e41 = out_1;
+    return _e41;
 }
 
 float glint_cell_hits(
@@ -641,9 +639,9 @@ metal::float2 glint_rotate(
     metal::float2 uv_1,
     float angle
 ) {
-    float c_3 = metal::cos(angle);
+    float c_4 = metal::cos(angle);
     float s_4 = metal::sin(angle);
-    return metal::float2((c_3 * uv_1.x) + (s_4 * uv_1.y), (c_3 * uv_1.y) - (s_4 * uv_1.x));
+    return metal::float2((c_4 * uv_1.x) + (s_4 * uv_1.y), (c_4 * uv_1.y) - (s_4 * uv_1.x));
 }
 
 uint naga_f2u32(float value) {
@@ -682,12 +680,12 @@ metal::float4 glint_tetra_weights(
     metal::float3 p_1,
     metal::float3 a,
     metal::float3 b,
-    metal::float3 c_1,
+    metal::float3 c_2,
     metal::float3 d
 ) {
     metal::float3 c1_1 = a - d;
     metal::float3 c2_1 = b - d;
-    metal::float3 c3_ = c_1 - d;
+    metal::float3 c3_ = c_2 - d;
     metal::float3 q = p_1 - d;
     float det = metal::dot(c1_1, metal::cross(c2_1, c3_));
     float inv = 1.0 / det;
@@ -774,7 +772,7 @@ GlintGrids glint_grids(
     if (center_1) {
         metal::float3 a_6 = metal::float3(0.0, 1.0, 0.0);
         metal::float3 b_4 = metal::float3(0.0, 0.0, 0.0);
-        metal::float3 c_4 = metal::float3(1.0, 1.0, 0.0);
+        metal::float3 c_5 = metal::float3(1.0, 1.0, 0.0);
         metal::float3 d_5 = metal::float3(0.0, 1.0, 1.0);
         metal::float3 ee = metal::float3(0.0, 0.0, 1.0);
         metal::float3 f_1 = metal::float3(1.0, 1.0, 1.0);
@@ -788,13 +786,13 @@ GlintGrids glint_grids(
             } else {
                 p0_ = f_1;
                 p1_ = ee;
-                p2_ = c_4;
+                p2_ = c_5;
                 p3_1 = a_6;
             }
         } else {
             p0_ = b_4;
             p1_ = a_6;
-            p2_ = c_4;
+            p2_ = c_5;
             p3_1 = ee;
         }
         float _e114 = theta_lerp;
@@ -802,7 +800,7 @@ GlintGrids glint_grids(
     } else {
         metal::float3 a_7 = metal::float3(0.0, 1.0, 0.0);
         metal::float3 b_5 = metal::float3(0.0, 0.0, 0.0);
-        metal::float3 c_5 = metal::float3(0.5, 1.0, 0.0);
+        metal::float3 c_6 = metal::float3(0.5, 1.0, 0.0);
         metal::float3 d_6 = metal::float3(1.0, 0.0, 0.0);
         metal::float3 ee_1 = metal::float3(1.0, 1.0, 0.0);
         metal::float3 f_2 = metal::float3(0.0, 1.0, 1.0);
@@ -827,7 +825,7 @@ GlintGrids glint_grids(
                     p2_ = h_1;
                     p3_1 = g_2;
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
                     p3_1 = g_2;
@@ -835,7 +833,7 @@ GlintGrids glint_grids(
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
-                p2_ = c_5;
+                p2_ = c_6;
                 p3_1 = g_2;
             }
         } else {
@@ -848,15 +846,15 @@ GlintGrids glint_grids(
                         p0_ = b_5;
                         p1_ = g_2;
                         p2_ = i;
-                        p3_1 = c_5;
+                        p3_1 = c_6;
                     } else {
                         p0_ = d_6;
                         p1_ = b_5;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = i;
                     }
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = g_2;
                     p2_ = h_1;
                     p3_1 = i;
@@ -865,20 +863,20 @@ GlintGrids glint_grids(
                 if (lod_lerp > (1.0 - ratio_lerp)) {
                     float _e222 = theta_lerp;
                     if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001))) {
-                        p0_ = c_5;
+                        p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
                         p3_1 = i;
                     } else {
                         p0_ = ee_1;
                         p1_ = i;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = j;
                     }
                 } else {
                     p0_ = d_6;
                     p1_ = ee_1;
-                    p2_ = c_5;
+                    p2_ = c_6;
                     p3_1 = i;
                 }
             }

@@ -236,8 +236,8 @@ fn weft_specular_mip(roughness_4: f32) -> f32 {
 
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_5);
-    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_2.xyz, vec3(0f));
+    let c_3 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, vec3(0f));
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
@@ -446,12 +446,12 @@ fn glint_gaussian3_(u: vec3<f32>) -> vec3<f32> {
     return (1.4142135f * vec3<f32>(_e6, _e12, _e18));
 }
 
-fn glint_gaussian4_(u_1: vec4<f32>) -> vec4<f32> {
-    let _e6 = glint_erfinv(((2f * u_1.x) - 1f));
-    let _e12 = glint_erfinv(((2f * u_1.y) - 1f));
-    let _e18 = glint_erfinv(((2f * u_1.z) - 1f));
-    let _e24 = glint_erfinv(((2f * u_1.w) - 1f));
-    return (1.4142135f * vec4<f32>(_e6, _e12, _e18, _e24));
+fn glint_corner(c_1: vec2<f32>) -> vec2<f32> {
+    let texel_1 = vec2<u32>((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64f))))));
+    let _e12 = glint_pcg4d(vec4<u32>(texel_1, 6777961u, 1953785202u));
+    let _e13 = glint_unit4_(_e12);
+    let _e20 = glint_erfinv(((2f * _e13.y) - 1f));
+    return vec2<f32>(_e13.x, (1.4142135f * _e20));
 }
 
 fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>) -> GlintSlopeRand {
@@ -459,17 +459,15 @@ fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>) -
 
     let s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
     let cell = floor(s_2);
-    let texel_1 = vec2<u32>((cell - (GLINT_TABLE_SIZE * floor((cell / vec2(64f))))));
-    let _e23 = glint_pcg4d(vec4<u32>(texel_1, 6777961u, 1953785202u));
-    let _e24 = glint_unit4_(_e23);
-    out_1.gate_rand = _e24;
-    let _e29 = glint_pcg4d(vec4<u32>(texel_1, 1852795251u, 1953785202u));
-    let _e30 = glint_unit4_(_e29);
-    let _e31 = glint_gaussian4_(_e30);
-    out_1.gaussian = _e31;
+    let _e10 = glint_corner(cell);
+    let _e15 = glint_corner((cell + vec2<f32>(0f, 1f)));
+    let _e20 = glint_corner((cell + vec2<f32>(1f, 0f)));
+    let _e25 = glint_corner((cell + vec2<f32>(1f, 1f)));
+    out_1.gate_rand = vec4<f32>(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = vec4<f32>(_e10.y, _e15.y, _e20.y, _e25.y);
     out_1.lerp = (s_2 - cell);
-    let _e34 = out_1;
-    return _e34;
+    let _e41 = out_1;
+    return _e41;
 }
 
 fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32, deviation: f32, count: f32) -> f32 {
@@ -549,9 +547,9 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
 }
 
 fn glint_rotate(uv_1: vec2<f32>, angle: f32) -> vec2<f32> {
-    let c_3 = cos(angle);
+    let c_4 = cos(angle);
     let s_4 = sin(angle);
-    return vec2<f32>(((c_3 * uv_1.x) + (s_4 * uv_1.y)), ((c_3 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2<f32>(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
 }
 
 fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
@@ -573,10 +571,10 @@ fn glint_make_grid(uv_2: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weig
     return _e22;
 }
 
-fn glint_tetra_weights(p_1: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c_1: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
+fn glint_tetra_weights(p_1: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c_2: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
     let c1_1 = (a - d);
     let c2_1 = (b - d);
-    let c3_ = (c_1 - d);
+    let c3_ = (c_2 - d);
     let q = (p_1 - d);
     let det = dot(c1_1, cross(c2_1, c3_));
     let inv = (1f / det);
@@ -648,7 +646,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
     if center_1 {
         let a_6 = vec3<f32>(0f, 1f, 0f);
         let b_4 = vec3<f32>(0f, 0f, 0f);
-        let c_4 = vec3<f32>(1f, 1f, 0f);
+        let c_5 = vec3<f32>(1f, 1f, 0f);
         let d_5 = vec3<f32>(0f, 1f, 1f);
         let ee = vec3<f32>(0f, 0f, 1f);
         let f_1 = vec3<f32>(1f, 1f, 1f);
@@ -662,13 +660,13 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             } else {
                 p0_ = f_1;
                 p1_ = ee;
-                p2_ = c_4;
+                p2_ = c_5;
                 p3_1 = a_6;
             }
         } else {
             p0_ = b_4;
             p1_ = a_6;
-            p2_ = c_4;
+            p2_ = c_5;
             p3_1 = ee;
         }
         let _e114 = theta_lerp;
@@ -676,7 +674,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
     } else {
         let a_7 = vec3<f32>(0f, 1f, 0f);
         let b_5 = vec3<f32>(0f, 0f, 0f);
-        let c_5 = vec3<f32>(0.5f, 1f, 0f);
+        let c_6 = vec3<f32>(0.5f, 1f, 0f);
         let d_6 = vec3<f32>(1f, 0f, 0f);
         let ee_1 = vec3<f32>(1f, 1f, 0f);
         let f_2 = vec3<f32>(0f, 1f, 1f);
@@ -701,7 +699,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                     p2_ = h_1;
                     p3_1 = g_1;
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
                     p3_1 = g_1;
@@ -709,7 +707,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
-                p2_ = c_5;
+                p2_ = c_6;
                 p3_1 = g_1;
             }
         } else {
@@ -722,15 +720,15 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                         p0_ = b_5;
                         p1_ = g_1;
                         p2_ = i;
-                        p3_1 = c_5;
+                        p3_1 = c_6;
                     } else {
                         p0_ = d_6;
                         p1_ = b_5;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = i;
                     }
                 } else {
-                    p0_ = c_5;
+                    p0_ = c_6;
                     p1_ = g_1;
                     p2_ = h_1;
                     p3_1 = i;
@@ -739,20 +737,20 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                 if (lod_lerp > (1f - ratio_lerp)) {
                     let _e222 = theta_lerp;
                     if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e222 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
-                        p0_ = c_5;
+                        p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
                         p3_1 = i;
                     } else {
                         p0_ = ee_1;
                         p1_ = i;
-                        p2_ = c_5;
+                        p2_ = c_6;
                         p3_1 = j;
                     }
                 } else {
                     p0_ = d_6;
                     p1_ = ee_1;
-                    p2_ = c_5;
+                    p2_ = c_6;
                     p3_1 = i;
                 }
             }

@@ -16,13 +16,19 @@
 // and its own table of per-slope-cell random numbers.
 //
 // Differences from the published code (README, "reference"):
-// - The 64 x 64 noise texture (4 uniform + 4 Gaussian numbers per texel) is
-//   replaced by a hash of the texel coordinate: pcg4d (Jarzynski & Olano
-//   2020) gives the 4 uniform numbers and 4 more that become standard normal
-//   numbers by the inverse CDF sqrt(2) erfinv(2u - 1). The texture holds
-//   independent uniform and standard normal numbers per texel, so the
-//   distribution is the same; the table is still addressed as 64 x 64 texels
-//   offset by each cell's random numbers, as the texture was.
+// - The 64 x 64 noise texture is replaced by a hash of the table
+//   coordinate: pcg4d (Jarzynski & Olano 2020) of a lattice point gives its
+//   uniform number (the gate) and one that becomes a standard normal number
+//   by the inverse CDF sqrt(2) erfinv(2u - 1) (the count). The texture holds
+//   independent uniform and standard normal numbers, so every corner value
+//   has the same distribution; the table is still addressed as 64 x 64
+//   points offset by each cell's random numbers, as the texture was.
+// - The four corners of a slope cell are the lattice points around it,
+//   shared with the neighbouring cells (the paper's texel holds its own four
+//   corners, so the hit count jumps at every slope-cell border): the glint
+//   NDF is continuous in h, which halves the sparkles' change under a
+//   half-pixel camera pan on a curved surface (README, "Limits"). Each
+//   corner keeps its distribution, so the expectation is unchanged.
 // - Level of detail and rotation bins use floor, not truncation towards zero
 //   ((int) in HLSL): with truncation a negative level (cells smaller than one
 //   uv unit: every ordinary mapping) interpolates between the wrong two levels.
@@ -161,21 +167,32 @@ fn glint_gaussian4(u: vec4<f32>) -> vec4<f32> {
 
 // The paper's noise texture read: the slope cell around `slope` (cells of
 // width micro_roughness in |h.xy|), offset into the 64 x 64 table by the
-// surface cell's two random numbers. Returns 4 uniform numbers (gating), 4
-// standard normal numbers (counts) and the position inside the slope cell.
+// surface cell's two random numbers. Returns the uniform numbers (gates) and
+// standard normal numbers (counts) of its 4 corners (00, 01, 10, 11: lattice
+// points shared with the neighbouring cells) and the position inside it.
 struct GlintSlopeRand {
     gate_rand: vec4<f32>,
     gaussian: vec4<f32>,
     lerp: vec2<f32>,
 }
 
+// (gate, count) random numbers of one lattice point of the table.
+fn glint_corner(c: vec2<f32>) -> vec2<f32> {
+    let texel = vec2<u32>(c - GLINT_TABLE_SIZE * floor(c / GLINT_TABLE_SIZE));
+    let u = glint_unit4(glint_pcg4d(vec4<u32>(texel, 0x676c69u, 0x74746572u)));
+    return vec2<f32>(u.x, 1.41421356 * glint_erfinv(2.0 * u.y - 1.0));
+}
+
 fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>) -> GlintSlopeRand {
     let s = abs(slope) / micro_roughness + offset * GLINT_TABLE_SIZE;
     let cell = floor(s);
-    let texel = vec2<u32>(cell - GLINT_TABLE_SIZE * floor(cell / GLINT_TABLE_SIZE));
+    let c00 = glint_corner(cell);
+    let c01 = glint_corner(cell + vec2<f32>(0.0, 1.0));
+    let c10 = glint_corner(cell + vec2<f32>(1.0, 0.0));
+    let c11 = glint_corner(cell + vec2<f32>(1.0, 1.0));
     var out: GlintSlopeRand;
-    out.gate_rand = glint_unit4(glint_pcg4d(vec4<u32>(texel, 0x676c69u, 0x74746572u)));
-    out.gaussian = glint_gaussian4(glint_unit4(glint_pcg4d(vec4<u32>(texel, 0x6e6f6973u, 0x74746572u))));
+    out.gate_rand = vec4<f32>(c00.x, c01.x, c10.x, c11.x);
+    out.gaussian = vec4<f32>(c00.y, c01.y, c10.y, c11.y);
     out.lerp = s - cell;
     return out;
 }
