@@ -738,7 +738,6 @@ GlintGrids glint_grids(
     GlintEllipse e_2,
     float screen_scale_1
 ) {
-    float theta_bin0_ = {};
     float theta_lerp = {};
     metal::float3 p0_ = {};
     metal::float3 p1_ = {};
@@ -753,21 +752,17 @@ GlintGrids glint_grids(
     float ratio0_1 = metal::max(metal::exp2(metal::floor(metal::log2(metal::max(ratio_e, 1.0)))), 1.0);
     float ratio1_ = ratio0_1 * 2.0;
     float ratio_lerp = metal::saturate((ratio_e - ratio0_1) / (ratio1_ - ratio0_1));
+    float q_1 = 0.7853982 / metal::max(ratio0_1, 2.0);
+    float per_pi = 4.0 * metal::max(ratio0_1, 2.0);
     float theta_3 = metal::atan2(-(e_2.major_dir.x), e_2.major_dir.y);
-    float theta_grid = GLINT_HALF_PI / metal::max(ratio0_1, 2.0);
-    float theta_mid = (metal::floor(theta_3 / theta_grid) * theta_grid) + (0.5 * theta_grid);
-    theta_bin0_ = (theta_3 < theta_mid) ? (theta_mid - (0.5 * theta_grid)) : theta_mid;
-    float _e50 = theta_bin0_;
-    float theta_bin_h = _e50 + (0.25 * theta_grid);
-    float _e54 = theta_bin0_;
-    float theta_bin1_ = _e54 + (0.5 * theta_grid);
-    float _e58 = theta_bin0_;
-    float _e60 = theta_bin0_;
-    theta_lerp = metal::saturate((theta_3 - _e58) / (theta_bin1_ - _e60));
-    float _e65 = theta_bin0_;
-    float _e67 = theta_bin0_;
-    float _e69 = theta_bin0_;
-    theta_bin0_ = (_e69 <= 0.0) ? (3.1415927 + _e67) : _e65;
+    float theta_q = theta_3 / q_1;
+    float h0_ = metal::floor(theta_q);
+    theta_lerp = metal::saturate(theta_q - h0_);
+    float i0_ = h0_ - (per_pi * metal::floor(h0_ / per_pi));
+    float i1_ = (i0_ + 1.0) - (per_pi * metal::floor((i0_ + 1.0) / per_pi));
+    float theta_bin0_ = i0_ * q_1;
+    float theta_bin_h = (i0_ + 0.5) * q_1;
+    float theta_bin1_ = i1_ * q_1;
     bool center_1 = ratio0_1 == 1.0;
     if (center_1) {
         metal::float3 a_6 = metal::float3(0.0, 1.0, 0.0);
@@ -777,8 +772,8 @@ GlintGrids glint_grids(
         metal::float3 ee = metal::float3(0.0, 0.0, 1.0);
         metal::float3 f_1 = metal::float3(1.0, 1.0, 1.0);
         if (lod_lerp > (1.0 - ratio_lerp)) {
-            float _e112 = theta_lerp;
-            if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > _e112) {
+            float _e103 = theta_lerp;
+            if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > _e103) {
                 p0_ = a_6;
                 p1_ = ee;
                 p2_ = d_5;
@@ -795,8 +790,8 @@ GlintGrids glint_grids(
             p2_ = c_5;
             p3_1 = ee;
         }
-        float _e114 = theta_lerp;
-        theta_lerp = _e114 * ratio_lerp;
+        float _e105 = theta_lerp;
+        theta_lerp = _e105 * ratio_lerp;
     } else {
         metal::float3 a_7 = metal::float3(0.0, 1.0, 0.0);
         metal::float3 b_5 = metal::float3(0.0, 0.0, 0.0);
@@ -808,18 +803,18 @@ GlintGrids glint_grids(
         metal::float3 h_1 = metal::float3(0.5, 1.0, 1.0);
         metal::float3 i = metal::float3(1.0, 0.0, 1.0);
         metal::float3 j = metal::float3(1.0, 1.0, 1.0);
-        float _e156 = theta_lerp;
-        if (_e156 < 0.5) {
-            float _e161 = theta_lerp;
-            local_2 = (_e161 * 2.0) < ratio_lerp;
+        float _e147 = theta_lerp;
+        if (_e147 < 0.5) {
+            float _e152 = theta_lerp;
+            local_2 = (_e152 * 2.0) < ratio_lerp;
         } else {
             local_2 = false;
         }
-        bool _e166 = local_2;
-        if (_e166) {
+        bool _e157 = local_2;
+        if (_e157) {
             if (lod_lerp > (1.0 - ratio_lerp)) {
-                float _e176 = theta_lerp;
-                if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((_e176 * 2.0) / metal::max(ratio_lerp, 0.00000001))) {
+                float _e167 = theta_lerp;
+                if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((_e167 * 2.0) / metal::max(ratio_lerp, 0.00000001))) {
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
@@ -837,12 +832,12 @@ GlintGrids glint_grids(
                 p3_1 = g_2;
             }
         } else {
-            float _e183 = theta_lerp;
-            if ((1.0 - ((_e183 - 0.5) * 2.0)) > ratio_lerp) {
+            float _e174 = theta_lerp;
+            if ((1.0 - ((_e174 - 0.5) * 2.0)) > ratio_lerp) {
                 if (lod_lerp < (1.0 - ratio_lerp)) {
                     float half_width = 0.5 * (1.0 - ratio_lerp);
-                    float _e203 = theta_lerp;
-                    if ((lod_lerp / metal::max(1.0 - ratio_lerp, 0.00000001)) > ((_e203 - (0.5 - half_width)) / metal::max(2.0 * half_width, 0.00000001))) {
+                    float _e194 = theta_lerp;
+                    if ((lod_lerp / metal::max(1.0 - ratio_lerp, 0.00000001)) > ((_e194 - (0.5 - half_width)) / metal::max(2.0 * half_width, 0.00000001))) {
                         p0_ = b_5;
                         p1_ = g_2;
                         p2_ = i;
@@ -861,8 +856,8 @@ GlintGrids glint_grids(
                 }
             } else {
                 if (lod_lerp > (1.0 - ratio_lerp)) {
-                    float _e222 = theta_lerp;
-                    if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((((_e222 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001))) {
+                    float _e213 = theta_lerp;
+                    if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((((_e213 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001))) {
                         p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
@@ -882,30 +877,26 @@ GlintGrids glint_grids(
             }
         }
     }
-    float _e234 = theta_lerp;
-    metal::float3 _e236 = p0_;
-    metal::float3 _e237 = p1_;
-    metal::float3 _e238 = p2_;
-    metal::float3 _e239 = p3_1;
-    metal::float4 _e240 = glint_tetra_weights(metal::float3(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
-    metal::float3 _e243 = p0_;
-    float _e245 = theta_bin0_;
-    GlintGrid _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e246;
-    metal::float3 _e248 = p1_;
-    float _e250 = theta_bin0_;
-    GlintGrid _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e251;
-    metal::float3 _e253 = p2_;
-    float _e255 = theta_bin0_;
-    GlintGrid _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e256;
-    metal::float3 _e258 = p3_1;
-    float _e260 = theta_bin0_;
-    GlintGrid _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e261;
-    GlintGrids _e262 = out_3;
-    return _e262;
+    float _e225 = theta_lerp;
+    metal::float3 _e227 = p0_;
+    metal::float3 _e228 = p1_;
+    metal::float3 _e229 = p2_;
+    metal::float3 _e230 = p3_1;
+    metal::float4 _e231 = glint_tetra_weights(metal::float3(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
+    metal::float3 _e234 = p0_;
+    GlintGrid _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e236;
+    metal::float3 _e238 = p1_;
+    GlintGrid _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e240;
+    metal::float3 _e242 = p2_;
+    GlintGrid _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e244;
+    metal::float3 _e246 = p3_1;
+    GlintGrid _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e248;
+    GlintGrids _e249 = out_3;
+    return _e249;
 }
 
 GlintGrid glint_dominant_grid(

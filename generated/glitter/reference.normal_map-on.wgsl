@@ -611,7 +611,6 @@ fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: boo
 }
 
 fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> GlintGrids {
-    var theta_bin0_: f32;
     var theta_lerp: f32;
     var p0_: vec3<f32>;
     var p1_: vec3<f32>;
@@ -627,21 +626,17 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
     let ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1f)))), 1f);
     let ratio1_ = (ratio0_1 * 2f);
     let ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
+    let q_1 = (0.7853982f / max(ratio0_1, 2f));
+    let per_pi = (4f * max(ratio0_1, 2f));
     let theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
-    let theta_grid = (GLINT_HALF_PI / max(ratio0_1, 2f));
-    let theta_mid = ((floor((theta_3 / theta_grid)) * theta_grid) + (0.5f * theta_grid));
-    theta_bin0_ = select(theta_mid, (theta_mid - (0.5f * theta_grid)), (theta_3 < theta_mid));
-    let _e50 = theta_bin0_;
-    let theta_bin_h = (_e50 + (0.25f * theta_grid));
-    let _e54 = theta_bin0_;
-    let theta_bin1_ = (_e54 + (0.5f * theta_grid));
-    let _e58 = theta_bin0_;
-    let _e60 = theta_bin0_;
-    theta_lerp = saturate(((theta_3 - _e58) / (theta_bin1_ - _e60)));
-    let _e65 = theta_bin0_;
-    let _e67 = theta_bin0_;
-    let _e69 = theta_bin0_;
-    theta_bin0_ = select(_e65, (3.1415927f + _e67), (_e69 <= 0f));
+    let theta_q = (theta_3 / q_1);
+    let h0_ = floor(theta_q);
+    theta_lerp = saturate((theta_q - h0_));
+    let i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
+    let i1_ = ((i0_ + 1f) - (per_pi * floor(((i0_ + 1f) / per_pi))));
+    let theta_bin0_ = (i0_ * q_1);
+    let theta_bin_h = ((i0_ + 0.5f) * q_1);
+    let theta_bin1_ = (i1_ * q_1);
     let center_1 = (ratio0_1 == 1f);
     if center_1 {
         let a_6 = vec3<f32>(0f, 1f, 0f);
@@ -651,8 +646,8 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
         let ee = vec3<f32>(0f, 0f, 1f);
         let f_1 = vec3<f32>(1f, 1f, 1f);
         if (lod_lerp > (1f - ratio_lerp)) {
-            let _e112 = theta_lerp;
-            if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > _e112) {
+            let _e103 = theta_lerp;
+            if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > _e103) {
                 p0_ = a_6;
                 p1_ = ee;
                 p2_ = d_5;
@@ -669,8 +664,8 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             p2_ = c_5;
             p3_1 = ee;
         }
-        let _e114 = theta_lerp;
-        theta_lerp = (_e114 * ratio_lerp);
+        let _e105 = theta_lerp;
+        theta_lerp = (_e105 * ratio_lerp);
     } else {
         let a_7 = vec3<f32>(0f, 1f, 0f);
         let b_5 = vec3<f32>(0f, 0f, 0f);
@@ -682,18 +677,18 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
         let h_1 = vec3<f32>(0.5f, 1f, 1f);
         let i = vec3<f32>(1f, 0f, 1f);
         let j = vec3<f32>(1f, 1f, 1f);
-        let _e156 = theta_lerp;
-        if (_e156 < 0.5f) {
-            let _e161 = theta_lerp;
-            local_2 = ((_e161 * 2f) < ratio_lerp);
+        let _e147 = theta_lerp;
+        if (_e147 < 0.5f) {
+            let _e152 = theta_lerp;
+            local_2 = ((_e152 * 2f) < ratio_lerp);
         } else {
             local_2 = false;
         }
-        let _e166 = local_2;
-        if _e166 {
+        let _e157 = local_2;
+        if _e157 {
             if (lod_lerp > (1f - ratio_lerp)) {
-                let _e176 = theta_lerp;
-                if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((_e176 * 2f) / max(ratio_lerp, 0.00000001f))) {
+                let _e167 = theta_lerp;
+                if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((_e167 * 2f) / max(ratio_lerp, 0.00000001f))) {
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
@@ -711,12 +706,12 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                 p3_1 = g_1;
             }
         } else {
-            let _e183 = theta_lerp;
-            if ((1f - ((_e183 - 0.5f) * 2f)) > ratio_lerp) {
+            let _e174 = theta_lerp;
+            if ((1f - ((_e174 - 0.5f) * 2f)) > ratio_lerp) {
                 if (lod_lerp < (1f - ratio_lerp)) {
                     let half_width = (0.5f * (1f - ratio_lerp));
-                    let _e203 = theta_lerp;
-                    if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e203 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
+                    let _e194 = theta_lerp;
+                    if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e194 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
                         p0_ = b_5;
                         p1_ = g_1;
                         p2_ = i;
@@ -735,8 +730,8 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                 }
             } else {
                 if (lod_lerp > (1f - ratio_lerp)) {
-                    let _e222 = theta_lerp;
-                    if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e222 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
+                    let _e213 = theta_lerp;
+                    if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e213 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
                         p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
@@ -756,30 +751,26 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             }
         }
     }
-    let _e234 = theta_lerp;
-    let _e236 = p0_;
-    let _e237 = p1_;
-    let _e238 = p2_;
-    let _e239 = p3_1;
-    let _e240 = glint_tetra_weights(vec3<f32>(_e234, ratio_lerp, lod_lerp), _e236, _e237, _e238, _e239);
-    let _e243 = p0_;
-    let _e245 = theta_bin0_;
-    let _e246 = glint_vertex_grid(uv_4, _e243, _e240.x, center_1, _e245, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e246;
-    let _e248 = p1_;
-    let _e250 = theta_bin0_;
-    let _e251 = glint_vertex_grid(uv_4, _e248, _e240.y, center_1, _e250, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e251;
-    let _e253 = p2_;
-    let _e255 = theta_bin0_;
-    let _e256 = glint_vertex_grid(uv_4, _e253, _e240.z, center_1, _e255, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e256;
-    let _e258 = p3_1;
-    let _e260 = theta_bin0_;
-    let _e261 = glint_vertex_grid(uv_4, _e258, _e240.w, center_1, _e260, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e261;
-    let _e262 = out_3;
-    return _e262;
+    let _e225 = theta_lerp;
+    let _e227 = p0_;
+    let _e228 = p1_;
+    let _e229 = p2_;
+    let _e230 = p3_1;
+    let _e231 = glint_tetra_weights(vec3<f32>(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
+    let _e234 = p0_;
+    let _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e236;
+    let _e238 = p1_;
+    let _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e240;
+    let _e242 = p2_;
+    let _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e244;
+    let _e246 = p3_1;
+    let _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e248;
+    let _e249 = out_3;
+    return _e249;
 }
 
 fn glint_ndf_reference(params_1: GlintParams, grids: GlintGrids, slope_2: vec2<f32>, d_1: f32, d_max: f32) -> f32 {

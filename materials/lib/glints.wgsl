@@ -32,6 +32,10 @@
 // - Level of detail and rotation bins use floor, not truncation towards zero
 //   ((int) in HLSL): with truncation a negative level (cells smaller than one
 //   uv unit: every ordinary mapping) interpolates between the wrong two levels.
+// - Rotation bins are indexed modulo pi (an ellipse's axis is defined up to
+//   pi): the paper wraps only the first bin, so where the footprint's axis
+//   is aligned with u or v the last bits of the derivatives chose between
+//   two unrelated grids (glint_grids).
 // - The fourth grid uses its own rotated uv (a known porting slip sets it from
 //   the first grid's).
 // - Uniform random numbers lie in the open interval (0, 1) (24-bit, +0.5):
@@ -363,15 +367,26 @@ fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids 
     let ratio0 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
     let ratio1 = ratio0 * 2.0;
     let ratio_lerp = saturate((ratio_e - ratio0) / (ratio1 - ratio0));
-    // Rotation of the major axis from +v, in bins of pi/2 / max(ratio0, 2).
+    // Rotation of the major axis from +v, in bins of pi/2 / max(ratio0, 2),
+    // split in halves: the point lies between the half-bin angles bin0 and
+    // bin1 = bin0 + q (binH between them). An ellipse's axis is defined up
+    // to pi, and its eigenvector's sign flips with the sign of S's
+    // off-diagonal term, so the bins are indexed modulo pi (pi / q = 4
+    // max(ratio0, 2) half-bins, exact): theta and theta + pi select the
+    // same grids. The paper wraps bin0 alone at 0, which leaves a seam of
+    // different grids wherever the axis is aligned with u or v (and lets
+    // the last bits of the derivatives pick the side).
+    let q = 0.5 * GLINT_HALF_PI / max(ratio0, 2.0);
+    let per_pi = 4.0 * max(ratio0, 2.0);
     let theta = atan2(-e.major_dir.x, e.major_dir.y);
-    let theta_grid = GLINT_HALF_PI / max(ratio0, 2.0);
-    let theta_mid = floor(theta / theta_grid) * theta_grid + 0.5 * theta_grid;
-    var theta_bin0 = select(theta_mid, theta_mid - 0.5 * theta_grid, theta < theta_mid);
-    let theta_bin_h = theta_bin0 + 0.25 * theta_grid;
-    let theta_bin1 = theta_bin0 + 0.5 * theta_grid;
-    var theta_lerp = saturate((theta - theta_bin0) / (theta_bin1 - theta_bin0));
-    theta_bin0 = select(theta_bin0, GLINT_TAU * 0.5 + theta_bin0, theta_bin0 <= 0.0);
+    let theta_q = theta / q;
+    let h0 = floor(theta_q);
+    var theta_lerp = saturate(theta_q - h0);
+    let i0 = h0 - per_pi * floor(h0 / per_pi);
+    let i1 = (i0 + 1.0) - per_pi * floor((i0 + 1.0) / per_pi);
+    let theta_bin0 = i0 * q;
+    let theta_bin_h = (i0 + 0.5) * q;
+    let theta_bin1 = i1 * q;
 
     // Tetrahedron of the (rotation, ratio, level) cell holding the point.
     let center = ratio0 == 1.0;
