@@ -1,0 +1,1115 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    float metallic;
+    float smoothness;
+    char _pad3[8];
+    metal::float4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    char _pad6[8];
+    metal::float4 flake_color;
+    float flake_intensity;
+    float flake_density;
+    float flake_size;
+    float flake_roughness;
+    float twinkle;
+    float density_variation;
+    char _pad13[8];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct GlintGrid {
+    metal::float2 uv;
+    uint seed;
+    float cell_area;
+    float weight;
+    char _pad4[4];
+};
+struct GlintParams {
+    float log_density;
+    float micro_roughness;
+    float density_randomization;
+};
+struct GlintSlopeRand {
+    metal::float4 gate_rand;
+    metal::float4 gaussian;
+    metal::float2 lerp;
+    char _pad3[8];
+};
+struct GlintEllipse {
+    metal::float2 major_dir;
+    float major;
+    float minor;
+};
+struct GlintGrids {
+    GlintGrid g0_;
+    GlintGrid g1_;
+    GlintGrid g2_;
+    GlintGrid g3_;
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SMOOTH = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float GLINT_TAU = 6.2831855;
+constant float GLINT_HALF_PI = 1.5707964;
+constant float GLINT_TABLE_SIZE = 64.0;
+constant float GLINT_MIN_LOD = -20.0;
+constant float GLINT_MAX_LOD = 20.0;
+constant float GLINT_MAX_RATIO = 16.0;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n_1
+) {
+    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a_1 = -1.0 / (s + n_1.z);
+    float b_1 = (n_1.x * n_1.y) * a_1;
+    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a_1), s * b_1, -(s) * n_1.x);
+}
+
+float weft_d_ggx(
+    float n_dot_h,
+    float roughness_1
+) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_2 = _e2 * _e2;
+    float a2_ = a_2 * a_2;
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d_2 = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d_2) * d_2);
+}
+
+float weft_d_ggx_nh(
+    metal::float3 n_2,
+    metal::float3 h,
+    float roughness_2
+) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_3 = _e3 * _e3;
+    float a2_1 = a_3 * a_3;
+    float noh_1 = metal::saturate(metal::dot(n_2, h));
+    metal::float3 nxh = metal::cross(n_2, h);
+    float d_3 = metal::dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1);
+    return a2_1 / (WEFT_PI * metal::max(d_3 * d_3, 0.000000000000000000000000000001));
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+float weft_v_smith_ggx_correlated(
+    float n_dot_v,
+    float n_dot_l,
+    float roughness_3
+) {
+    float _e3 = weft_clamp_roughness(roughness_3);
+    float a_4 = _e3 * _e3;
+    float a2_2 = a_4 * a_4;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_2)) + a2_2);
+    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_2)) + a2_2);
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_3,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_4,
+    constant WeftFrame& weft_frame
+) {
+    float r_1 = metal::saturate(roughness_4);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r_1 * (1.7 - (0.7 * r_1))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_5,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_5, weft_frame);
+    metal::float4 c_3 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_3.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_6,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_5 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_5, metal::level(0.0));
+    return _e8.xy;
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_2 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_2, n_4);
+}
+
+metal::float3 weft_unpack_normal(
+    metal::float3 texel,
+    float strength
+) {
+    metal::float3 v_5 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_5.xy * strength, metal::max(v_5.z, 0.001));
+}
+
+metal::float3 weft_normal_from_tangent_space(
+    metal::float3x3 frame,
+    metal::float3 n_ts
+) {
+    metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
+    return _e4;
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+metal::uint4 glint_pcg4d(
+    metal::uint4 v_in
+) {
+    metal::uint4 v_1 = {};
+    v_1 = (v_in * 1664525u) + metal::uint4(1013904223u);
+    uint _e8 = v_1.x;
+    uint _e10 = v_1.y;
+    uint _e12 = v_1.w;
+    v_1.x = _e8 + (_e10 * _e12);
+    uint _e16 = v_1.y;
+    uint _e18 = v_1.z;
+    uint _e20 = v_1.x;
+    v_1.y = _e16 + (_e18 * _e20);
+    uint _e24 = v_1.z;
+    uint _e26 = v_1.x;
+    uint _e28 = v_1.y;
+    v_1.z = _e24 + (_e26 * _e28);
+    uint _e32 = v_1.w;
+    uint _e34 = v_1.y;
+    uint _e36 = v_1.z;
+    v_1.w = _e32 + (_e34 * _e36);
+    metal::uint4 _e39 = v_1;
+    metal::uint4 _e40 = v_1;
+    v_1 = _e39 ^ (_e40 >> metal::uint4(16u));
+    uint _e46 = v_1.x;
+    uint _e48 = v_1.y;
+    uint _e50 = v_1.w;
+    v_1.x = _e46 + (_e48 * _e50);
+    uint _e54 = v_1.y;
+    uint _e56 = v_1.z;
+    uint _e58 = v_1.x;
+    v_1.y = _e54 + (_e56 * _e58);
+    uint _e62 = v_1.z;
+    uint _e64 = v_1.x;
+    uint _e66 = v_1.y;
+    v_1.z = _e62 + (_e64 * _e66);
+    uint _e70 = v_1.w;
+    uint _e72 = v_1.y;
+    uint _e74 = v_1.z;
+    v_1.w = _e70 + (_e72 * _e74);
+    metal::uint4 _e77 = v_1;
+    return _e77;
+}
+
+metal::uint3 glint_pcg3d(
+    metal::uint3 v_in_1
+) {
+    metal::uint3 v_2 = {};
+    v_2 = (v_in_1 * 1664525u) + metal::uint3(1013904223u);
+    uint _e8 = v_2.x;
+    uint _e10 = v_2.y;
+    uint _e12 = v_2.z;
+    v_2.x = _e8 + (_e10 * _e12);
+    uint _e16 = v_2.y;
+    uint _e18 = v_2.z;
+    uint _e20 = v_2.x;
+    v_2.y = _e16 + (_e18 * _e20);
+    uint _e24 = v_2.z;
+    uint _e26 = v_2.x;
+    uint _e28 = v_2.y;
+    v_2.z = _e24 + (_e26 * _e28);
+    metal::uint3 _e31 = v_2;
+    metal::uint3 _e32 = v_2;
+    v_2 = _e31 ^ (_e32 >> metal::uint3(16u));
+    uint _e38 = v_2.x;
+    uint _e40 = v_2.y;
+    uint _e42 = v_2.z;
+    v_2.x = _e38 + (_e40 * _e42);
+    uint _e46 = v_2.y;
+    uint _e48 = v_2.z;
+    uint _e50 = v_2.x;
+    v_2.y = _e46 + (_e48 * _e50);
+    uint _e54 = v_2.z;
+    uint _e56 = v_2.x;
+    uint _e58 = v_2.y;
+    v_2.z = _e54 + (_e56 * _e58);
+    metal::uint3 _e61 = v_2;
+    return _e61;
+}
+
+metal::float3 glint_unit3_(
+    metal::uint3 v_3
+) {
+    return (static_cast<metal::float3>(v_3 >> metal::uint3(8u)) + metal::float3(0.5)) * 0.000000059604645;
+}
+
+metal::float4 glint_unit4_(
+    metal::uint4 v_4
+) {
+    return (static_cast<metal::float4>(v_4 >> metal::uint4(8u)) + metal::float4(0.5)) * 0.000000059604645;
+}
+
+float glint_hash13_(
+    metal::float3 p_in
+) {
+    metal::float3 p3_ = {};
+    p3_ = metal::fract(p_in * 0.1031);
+    metal::float3 _e5 = p3_;
+    metal::float3 _e6 = p3_;
+    metal::float3 _e7 = p3_;
+    p3_ = _e5 + metal::float3(metal::dot(_e6, _e7.yzx + metal::float3(33.33)));
+    float _e16 = p3_.x;
+    float _e18 = p3_.y;
+    float _e21 = p3_.z;
+    return metal::fract((_e16 + _e18) * _e21);
+}
+
+float glint_erfinv(
+    float x_1
+) {
+    float w = {};
+    float p = {};
+    w = -(metal::log(metal::max((1.0 - x_1) * (1.0 + x_1), 0.000000000000000000000000000001)));
+    float _e12 = w;
+    if (_e12 < 5.0) {
+        float _e15 = w;
+        w = _e15 - 2.5;
+        p = 0.000000028102264;
+        float _e19 = p;
+        float _e20 = w;
+        p = 0.00000034327394 + (_e19 * _e20);
+        float _e24 = p;
+        float _e25 = w;
+        p = -0.0000035233877 + (_e24 * _e25);
+        float _e29 = p;
+        float _e30 = w;
+        p = -0.0000043915065 + (_e29 * _e30);
+        float _e34 = p;
+        float _e35 = w;
+        p = 0.00021858087 + (_e34 * _e35);
+        float _e39 = p;
+        float _e40 = w;
+        p = -0.001253725 + (_e39 * _e40);
+        float _e44 = p;
+        float _e45 = w;
+        p = -0.0041776816 + (_e44 * _e45);
+        float _e49 = p;
+        float _e50 = w;
+        p = 0.24664073 + (_e49 * _e50);
+        float _e54 = p;
+        float _e55 = w;
+        p = 1.5014094 + (_e54 * _e55);
+    } else {
+        float _e59 = w;
+        w = metal::sqrt(_e59) - 3.0;
+        p = -0.00020021426;
+        float _e64 = p;
+        float _e65 = w;
+        p = 0.00010095056 + (_e64 * _e65);
+        float _e69 = p;
+        float _e70 = w;
+        p = 0.0013493432 + (_e69 * _e70);
+        float _e74 = p;
+        float _e75 = w;
+        p = -0.0036734284 + (_e74 * _e75);
+        float _e79 = p;
+        float _e80 = w;
+        p = 0.0057395077 + (_e79 * _e80);
+        float _e84 = p;
+        float _e85 = w;
+        p = -0.0076224613 + (_e84 * _e85);
+        float _e89 = p;
+        float _e90 = w;
+        p = 0.0094388705 + (_e89 * _e90);
+        float _e94 = p;
+        float _e95 = w;
+        p = 1.001674 + (_e94 * _e95);
+        float _e99 = p;
+        float _e100 = w;
+        p = 2.8329768 + (_e99 * _e100);
+    }
+    float _e104 = p;
+    return _e104 * x_1;
+}
+
+metal::float3 glint_gaussian3_(
+    metal::float3 u
+) {
+    float _e6 = glint_erfinv((2.0 * u.x) - 1.0);
+    float _e12 = glint_erfinv((2.0 * u.y) - 1.0);
+    float _e18 = glint_erfinv((2.0 * u.z) - 1.0);
+    return 1.4142135 * metal::float3(_e6, _e12, _e18);
+}
+
+metal::uint2 naga_f2u32(metal::float2 value) {
+    return static_cast<metal::uint2>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+metal::float2 glint_corner(
+    metal::float2 c_1
+) {
+    metal::uint2 texel_1 = naga_f2u32(c_1 - (GLINT_TABLE_SIZE * metal::floor(c_1 / metal::float2(64.0))));
+    metal::uint4 _e12 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
+    metal::float4 _e13 = glint_unit4_(_e12);
+    float _e20 = glint_erfinv((2.0 * _e13.y) - 1.0);
+    return metal::float2(_e13.x, 1.4142135 * _e20);
+}
+
+GlintSlopeRand glint_slope_rand(
+    float micro_roughness,
+    metal::float2 slope,
+    metal::float2 offset
+) {
+    GlintSlopeRand out_1 = {};
+    metal::float2 s_2 = (metal::abs(slope) / metal::float2(micro_roughness)) + (offset * GLINT_TABLE_SIZE);
+    metal::float2 cell = metal::floor(s_2);
+    metal::float2 _e10 = glint_corner(cell);
+    metal::float2 _e15 = glint_corner(cell + metal::float2(0.0, 1.0));
+    metal::float2 _e20 = glint_corner(cell + metal::float2(1.0, 0.0));
+    metal::float2 _e25 = glint_corner(cell + metal::float2(1.0, 1.0));
+    out_1.gate_rand = metal::float4(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = metal::float4(_e10.y, _e15.y, _e20.y, _e25.y);
+    out_1.lerp = s_2 - cell;
+    GlintSlopeRand _e41 = out_1;
+    return _e41;
+}
+
+float glint_cell_hits(
+    GlintSlopeRand r,
+    float one_hit,
+    float smooth_width,
+    float mean,
+    float deviation,
+    float count
+) {
+    metal::float4 gate = {};
+    if (smooth_width > 0.0000001) {
+        gate = metal::saturate((r.gate_rand - metal::float4(one_hit + smooth_width)) / metal::float4(-2.0 * smooth_width));
+    } else {
+        gate = metal::select(metal::float4(0.0), metal::float4(1.0), r.gate_rand < metal::float4(one_hit));
+    }
+    metal::float4 gauss = metal::clamp(metal::floor((r.gaussian * deviation) + metal::float4(mean)), metal::float4(0.0), metal::float4(count));
+    metal::float4 _e35 = gate;
+    metal::float4 hits = _e35 * (metal::float4(1.0) + gauss);
+    float x0_ = metal::mix(hits.x, hits.z, r.lerp.x);
+    float x1_ = metal::mix(hits.y, hits.w, r.lerp.x);
+    return metal::mix(x0_, x1_, r.lerp.y);
+}
+
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+float glint_sample_grid(
+    GlintParams params,
+    GlintGrid grid,
+    metal::float2 slope_1,
+    float target_ndf
+) {
+    metal::float2 skewed = metal::float2(grid.uv.x - (0.57735026 * grid.uv.y), 1.1547005 * grid.uv.y);
+    metal::float2 base = metal::floor(skewed);
+    metal::float2 f = skewed - base;
+    float fz = (1.0 - f.x) - f.y;
+    float s_3 = (fz < 0.0) ? 1.0 : 0.0;
+    float s2_ = (2.0 * s_3) - 1.0;
+    metal::int2 id = naga_f2i32(base);
+    int si = naga_f2i32(s_3);
+    metal::int2 c0_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(si, si)));
+    metal::int2 c1_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(si, as_type<int>(as_type<uint>(1) - as_type<uint>(si)))));
+    metal::int2 c2_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(as_type<int>(as_type<uint>(1) - as_type<uint>(si)), si)));
+    metal::float3 bary = metal::float3(-(fz) * s2_, s_3 - (f.y * s2_), s_3 - (f.x * s2_));
+    metal::uint3 _e62 = glint_pcg3d(metal::uint3(as_type<uint>(c0_.x) + 2147483648u, as_type<uint>(c0_.y) + 2147483648u, grid.seed));
+    metal::float3 _e63 = glint_unit3_(_e62);
+    metal::uint3 _e72 = glint_pcg3d(metal::uint3(as_type<uint>(c1_.x) + 2147483648u, as_type<uint>(c1_.y) + 2147483648u, grid.seed));
+    metal::float3 _e73 = glint_unit3_(_e72);
+    metal::uint3 _e82 = glint_pcg3d(metal::uint3(as_type<uint>(c2_.x) + 2147483648u, as_type<uint>(c2_.y) + 2147483648u, grid.seed));
+    metal::float3 _e83 = glint_unit3_(_e82);
+    GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
+    GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
+    GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
+    metal::float3 _e97 = glint_gaussian3_(metal::float3(_e63.x, _e73.x, _e83.x));
+    metal::float3 log_density = metal::clamp((_e97 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
+    metal::float3 count_1 = metal::max(metal::float3(0.00000001), grid.cell_area * metal::exp(log_density));
+    metal::float3 blended = count_1 * grid.weight;
+    float p_4 = params.micro_roughness * target_ndf;
+    metal::float3 one_hit_1 = metal::float3(1.0) - metal::pow(metal::float3(1.0 - p_4), blended);
+    metal::float3 others = metal::max(blended - metal::float3(1.0), metal::float3(0.0));
+    metal::float3 mean_1 = others * p_4;
+    metal::float3 deviation_1 = metal::sqrt(others * (p_4 * (1.0 - p_4)));
+    metal::float3 smooth_width_1 = (0.1 * metal::saturate(one_hit_1 * 10.0)) * metal::saturate((metal::float3(1.0) - one_hit_1) * 10.0);
+    float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return metal::dot(metal::float3(_e154, _e160, _e166) / count_1, bary);
+}
+
+GlintEllipse glint_ellipse(
+    metal::float2 duv_dx,
+    metal::float2 duv_dy
+) {
+    GlintEllipse out_2 = {};
+    float a_5 = (duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x);
+    float b_3 = (duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y);
+    float d_4 = (duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y);
+    float half_trace = 0.5 * (a_5 + d_4);
+    float disc = metal::sqrt(metal::max(((0.25 * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3), 0.0));
+    float l1_ = half_trace + disc;
+    float l2_ = metal::max(half_trace - disc, 0.0);
+    metal::float2 e_a = metal::float2(b_3, l1_ - a_5);
+    metal::float2 e_b = metal::float2(l1_ - d_4, b_3);
+    metal::float2 e_3 = (metal::dot(e_a, e_a) > metal::dot(e_b, e_b)) ? e_a : e_b;
+    float e_len2_ = metal::dot(e_3, e_3);
+    out_2.major_dir = (e_len2_ > 0.0000000000000000000000000000000000001) ? (e_3 * metal::rsqrt(metal::max(e_len2_, 0.0000000000000000000000000000000000001))) : metal::float2(1.0, 0.0);
+    out_2.major = metal::max(metal::sqrt(l1_), 0.000000000001);
+    float _e68 = out_2.major;
+    out_2.minor = metal::max(metal::sqrt(l2_), _e68 / 64.0);
+    GlintEllipse _e72 = out_2;
+    return _e72;
+}
+
+metal::float2 glint_rotate(
+    metal::float2 uv_1,
+    float angle
+) {
+    float c_4 = metal::cos(angle);
+    float s_4 = metal::sin(angle);
+    return metal::float2((c_4 * uv_1.x) + (s_4 * uv_1.y), (c_4 * uv_1.y) - (s_4 * uv_1.x));
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+uint glint_grid_seed(
+    float lod,
+    float theta,
+    float ratio
+) {
+    float t_1 = theta - (GLINT_TAU * metal::trunc(theta / GLINT_TAU));
+    float _e10 = glint_hash13_(metal::float3(lod, t_1, ratio));
+    return naga_f2u32(metal::min(_e10 * 4294967300.0, 4294967000.0));
+}
+
+GlintGrid glint_make_grid(
+    metal::float2 uv_2,
+    float lod_1,
+    float theta_1,
+    float ratio_1,
+    float weight
+) {
+    GlintGrid g = {};
+    metal::float2 _e7 = glint_rotate(uv_2, theta_1);
+    g.uv = (_e7 * metal::exp2(-(lod_1))) / metal::float2(1.0, ratio_1);
+    uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
+    g.seed = _e15;
+    g.cell_area = ratio_1 * metal::exp2(2.0 * lod_1);
+    g.weight = weight;
+    GlintGrid _e22 = g;
+    return _e22;
+}
+
+metal::float4 glint_tetra_weights(
+    metal::float3 p_1,
+    metal::float3 a,
+    metal::float3 b,
+    metal::float3 c_2,
+    metal::float3 d
+) {
+    metal::float3 c1_1 = a - d;
+    metal::float3 c2_1 = b - d;
+    metal::float3 c3_ = c_2 - d;
+    metal::float3 q = p_1 - d;
+    float det = metal::dot(c1_1, metal::cross(c2_1, c3_));
+    float inv = 1.0 / det;
+    float w1_ = metal::dot(q, metal::cross(c2_1, c3_)) * inv;
+    float w2_ = metal::dot(c1_1, metal::cross(q, c3_)) * inv;
+    float w3_ = metal::dot(c1_1, metal::cross(c2_1, q)) * inv;
+    return metal::float4(w1_, w2_, w3_, ((1.0 - w1_) - w2_) - w3_);
+}
+
+float glint_lod(
+    GlintEllipse e_1,
+    float screen_scale
+) {
+    return metal::clamp(metal::log2((e_1.minor * screen_scale) * 0.5), GLINT_MIN_LOD, GLINT_MAX_LOD);
+}
+
+GlintGrid glint_vertex_grid(
+    metal::float2 uv_3,
+    metal::float3 p_2,
+    float weight_1,
+    bool center,
+    float bin0_,
+    float bin_h,
+    float bin1_,
+    float lod0_,
+    float ratio0_
+) {
+    float theta_2 = {};
+    bool local_1 = {};
+    float rot_index = p_2.x * 2.0;
+    theta_2 = (rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_);
+    if (center) {
+        local_1 = p_2.y == 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = (p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_;
+    float lod_2 = lod0_ + p_2.z;
+    float _e35 = theta_2;
+    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
+}
+
+GlintGrids glint_grids(
+    metal::float2 uv_4,
+    GlintEllipse e_2,
+    float screen_scale_1
+) {
+    float theta_lerp = {};
+    metal::float3 p0_ = {};
+    metal::float3 p1_ = {};
+    metal::float3 p2_ = {};
+    metal::float3 p3_1 = {};
+    bool local_2 = {};
+    GlintGrids out_3 = {};
+    float ratio_e = metal::min(e_2.major / (e_2.minor + (0.00000001 * e_2.major)), GLINT_MAX_RATIO);
+    float _e12 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = metal::floor(_e12);
+    float lod_lerp = _e12 - lod0_1;
+    float ratio0_1 = metal::max(metal::exp2(metal::floor(metal::log2(metal::max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = ratio0_1 * 2.0;
+    float ratio_lerp = metal::saturate((ratio_e - ratio0_1) / (ratio1_ - ratio0_1));
+    float q_1 = 0.7853982 / metal::max(ratio0_1, 2.0);
+    float per_pi = 4.0 * metal::max(ratio0_1, 2.0);
+    float theta_3 = metal::atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_q = theta_3 / q_1;
+    float h0_ = metal::floor(theta_q);
+    theta_lerp = metal::saturate(theta_q - h0_);
+    float i0_ = h0_ - (per_pi * metal::floor(h0_ / per_pi));
+    float i1_ = (i0_ + 1.0) - (per_pi * metal::floor((i0_ + 1.0) / per_pi));
+    float theta_bin0_ = i0_ * q_1;
+    float theta_bin_h = (i0_ + 0.5) * q_1;
+    float theta_bin1_ = i1_ * q_1;
+    bool center_1 = ratio0_1 == 1.0;
+    if (center_1) {
+        metal::float3 a_6 = metal::float3(0.0, 1.0, 0.0);
+        metal::float3 b_4 = metal::float3(0.0, 0.0, 0.0);
+        metal::float3 c_5 = metal::float3(1.0, 1.0, 0.0);
+        metal::float3 d_5 = metal::float3(0.0, 1.0, 1.0);
+        metal::float3 ee = metal::float3(0.0, 0.0, 1.0);
+        metal::float3 f_1 = metal::float3(1.0, 1.0, 1.0);
+        if (lod_lerp > (1.0 - ratio_lerp)) {
+            float _e103 = theta_lerp;
+            if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > _e103) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_5;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_5;
+            p3_1 = ee;
+        }
+        float _e105 = theta_lerp;
+        theta_lerp = _e105 * ratio_lerp;
+    } else {
+        metal::float3 a_7 = metal::float3(0.0, 1.0, 0.0);
+        metal::float3 b_5 = metal::float3(0.0, 0.0, 0.0);
+        metal::float3 c_6 = metal::float3(0.5, 1.0, 0.0);
+        metal::float3 d_6 = metal::float3(1.0, 0.0, 0.0);
+        metal::float3 ee_1 = metal::float3(1.0, 1.0, 0.0);
+        metal::float3 f_2 = metal::float3(0.0, 1.0, 1.0);
+        metal::float3 g_2 = metal::float3(0.0, 0.0, 1.0);
+        metal::float3 h_1 = metal::float3(0.5, 1.0, 1.0);
+        metal::float3 i = metal::float3(1.0, 0.0, 1.0);
+        metal::float3 j = metal::float3(1.0, 1.0, 1.0);
+        float _e147 = theta_lerp;
+        if (_e147 < 0.5) {
+            float _e152 = theta_lerp;
+            local_2 = (_e152 * 2.0) < ratio_lerp;
+        } else {
+            local_2 = false;
+        }
+        bool _e157 = local_2;
+        if (_e157) {
+            if (lod_lerp > (1.0 - ratio_lerp)) {
+                float _e167 = theta_lerp;
+                if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((_e167 * 2.0) / metal::max(ratio_lerp, 0.00000001))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                } else {
+                    p0_ = c_6;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_2;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_6;
+                p3_1 = g_2;
+            }
+        } else {
+            float _e174 = theta_lerp;
+            if ((1.0 - ((_e174 - 0.5) * 2.0)) > ratio_lerp) {
+                if (lod_lerp < (1.0 - ratio_lerp)) {
+                    float half_width = 0.5 * (1.0 - ratio_lerp);
+                    float _e194 = theta_lerp;
+                    if ((lod_lerp / metal::max(1.0 - ratio_lerp, 0.00000001)) > ((_e194 - (0.5 - half_width)) / metal::max(2.0 * half_width, 0.00000001))) {
+                        p0_ = b_5;
+                        p1_ = g_2;
+                        p2_ = i;
+                        p3_1 = c_6;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_6;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_6;
+                    p1_ = g_2;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if (lod_lerp > (1.0 - ratio_lerp)) {
+                    float _e213 = theta_lerp;
+                    if (((lod_lerp - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001)) > ((((_e213 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / metal::max(ratio_lerp, 0.00000001))) {
+                        p0_ = c_6;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_6;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_6;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    float _e225 = theta_lerp;
+    metal::float3 _e227 = p0_;
+    metal::float3 _e228 = p1_;
+    metal::float3 _e229 = p2_;
+    metal::float3 _e230 = p3_1;
+    metal::float4 _e231 = glint_tetra_weights(metal::float3(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
+    metal::float3 _e234 = p0_;
+    GlintGrid _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e236;
+    metal::float3 _e238 = p1_;
+    GlintGrid _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e240;
+    metal::float3 _e242 = p2_;
+    GlintGrid _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e244;
+    metal::float3 _e246 = p3_1;
+    GlintGrid _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e248;
+    GlintGrids _e249 = out_3;
+    return _e249;
+}
+
+GlintGrid glint_dominant_grid(
+    GlintGrids grids
+) {
+    GlintGrid g_1 = {};
+    g_1 = grids.g0_;
+    float _e6 = g_1.weight;
+    if (grids.g1_.weight > _e6) {
+        g_1 = grids.g1_;
+    }
+    float _e12 = g_1.weight;
+    if (grids.g2_.weight > _e12) {
+        g_1 = grids.g2_;
+    }
+    float _e18 = g_1.weight;
+    if (grids.g3_.weight > _e18) {
+        g_1 = grids.g3_;
+    }
+    g_1.weight = 1.0;
+    GlintGrid _e23 = g_1;
+    return _e23;
+}
+
+float glint_ndf_single(
+    GlintParams params_1,
+    GlintGrid grid_1,
+    metal::float2 slope_2,
+    float d_1,
+    float d_max
+) {
+    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, d_1 / d_max);
+    return metal::min(_e6 / params_1.micro_roughness, 20.0) * d_max;
+}
+
+GlintParams glitter_params(
+    constant WeftMaterial& material
+) {
+    GlintParams p_3 = {};
+    float _e4 = material.flake_density;
+    p_3.log_density = 4.0 + (28.0 * metal::saturate(_e4));
+    float _e13 = material.twinkle;
+    p_3.micro_roughness = metal::exp2(metal::mix(-4.321928, -8.965784, metal::saturate(_e13)));
+    float _e22 = material.density_variation;
+    p_3.density_randomization = metal::clamp(_e22, 0.0, 4.0);
+    GlintParams _e26 = p_3;
+    return _e26;
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> occlusion_map [[texture(4)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    metal::float3 color = {};
+    bool local = {};
+    float d_flakes = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float2 duv_dx_1 = metal::dfdx(_e5);
+    metal::float2 duv_dy_1 = metal::dfdy(_e5);
+    metal::float4 _e10 = material.base_color;
+    metal::float4 _e13 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e10 * _e13;
+    metal::float3 base_1 = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    float _e21 = material.metallic;
+    float metallic = metal::saturate(_e21);
+    float _e25 = material.smoothness;
+    float roughness_7 = 1.0 - metal::saturate(_e25);
+    metal::float4 _e31 = occlusion_map.sample(material_sampler, _e5);
+    float occlusion = _e31.x;
+    float _e35 = material.occlusion_strength;
+    float ao = metal::saturate(metal::mix(1.0, occlusion, _e35));
+    metal::float3 _e44 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
+    n = _e46;
+    {
+        metal::float4 _e50 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e50.xyz;
+        metal::float3 _e52 = n;
+        metal::float3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
+        float _e57 = material.normal_strength;
+        metal::float3 _e58 = weft_unpack_normal(texel_2, _e57);
+        metal::float3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
+        n = _e59;
+    }
+    metal::float3 _e60 = n;
+    metal::float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    metal::float3 _e63 = weft_main_light_direction(weft_frame);
+    metal::float3 _e65 = n;
+    metal::float3 _e66 = weft_safe_normalize(_e63 + _e44, _e65);
+    metal::float3 _e67 = n;
+    float _e69 = weft_clamp_cos(metal::dot(_e67, _e44));
+    metal::float3 _e70 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e70, _e63));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e44, _e66));
+    metal::float3 _e75 = weft_main_light_radiance(weft_frame);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base_1, metallic);
+    metal::float3 diffuse_albedo = base_1 * (1.0 - metallic);
+    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
+    metal::float2 _e83 = weft_env_brdf_lut(_e69, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e84, metal::float3(0.0));
+    metal::float3 _e91 = n;
+    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
+    metal::float3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float3 specular = (_e92 * _e82) * _e94;
+    metal::float3 _e96 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 direct = (((kd * _e96) + specular) * _e75) * n_dot_l_1;
+    metal::float3 _e102 = n;
+    metal::float3 _e104 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e102), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e107 = n;
+    metal::float3 _e108 = weft_sh_irradiance(_e107, weft_frame);
+    metal::float3 indirect = ((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo);
+    color = direct + indirect;
+    float _e117 = material.flake_intensity;
+    float intensity = metal::max(_e117, 0.0);
+    if (intensity > 0.0) {
+        local = n_dot_l_1 > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e127 = local;
+    if (_e127) {
+        float _e130 = material.flake_roughness;
+        float r_f = metal::clamp(_e130, 0.05, 1.0);
+        metal::float3 _e134 = n;
+        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
+        float _e137 = weft_d_ggx(1.0, r_f);
+        {
+            metal::float2 slope_3 = metal::float2(metal::dot(_e62[0], _e66), metal::dot(_e62[1], _e66));
+            GlintParams _e144 = glitter_params(material);
+            GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e148 = material.flake_size;
+            float screen_scale_2 = metal::clamp(_e148, 1.0, 8.0);
+            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
+            {
+                GlintGrid _e153 = glint_dominant_grid(_e152);
+                float _e154 = glint_ndf_single(_e144, _e153, slope_3, _e135, _e137);
+                d_flakes = _e154;
+            }
+        }
+        metal::float4 _e157 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e157.xyz);
+        float _e160 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        metal::float3 _e161 = color;
+        float _e162 = d_flakes;
+        metal::float3 _e165 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = _e161 + (((((intensity * _e162) * _e160) * _e165) * _e75) * n_dot_l_1);
+    }
+    metal::float3 _e170 = color;
+    metal::float3 radiance = metal::clamp(_e170, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha) };
+}

@@ -1,0 +1,879 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float metallic;
+    float smoothness;
+    vec4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    vec4 flake_color;
+    float flake_intensity;
+    float flake_density;
+    float flake_size;
+    float flake_roughness;
+    float twinkle;
+    float density_variation;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct GlintGrid {
+    vec2 uv;
+    uint seed;
+    float cell_area;
+    float weight;
+};
+struct GlintParams {
+    float log_density;
+    float micro_roughness;
+    float density_randomization;
+};
+struct GlintSlopeRand {
+    vec4 gate_rand;
+    vec4 gaussian;
+    vec2 lerp;
+};
+struct GlintEllipse {
+    vec2 major_dir;
+    float major;
+    float minor;
+};
+struct GlintGrids {
+    GlintGrid g0_;
+    GlintGrid g1_;
+    GlintGrid g2_;
+    GlintGrid g3_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SMOOTH = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float GLINT_TAU = 6.2831855;
+const float GLINT_HALF_PI = 1.5707964;
+const float GLINT_TABLE_SIZE = 64.0;
+const float GLINT_MIN_LOD = -20.0;
+const float GLINT_MAX_LOD = 20.0;
+const float GLINT_MAX_RATIO = 16.0;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s + n_1.z));
+    float b_1 = ((n_1.x * n_1.y) * a_1);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a_1)), (s * b_1), (-(s) * n_1.x));
+}
+
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_2 = (_e2 * _e2);
+    float a2_ = (a_2 * a_2);
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_2 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_2) * d_2));
+}
+
+float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_3 = (_e3 * _e3);
+    float a2_1 = (a_3 * a_3);
+    float noh_1 = clamp(dot(n_2, h), 0.0, 1.0);
+    vec3 nxh = cross(n_2, h);
+    float d_3 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
+    return (a2_1 / (WEFT_PI * max((d_3 * d_3), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_3) {
+    float _e3 = weft_clamp_roughness(roughness_3);
+    float a_4 = (_e3 * _e3);
+    float a2_2 = (a_4 * a_4);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_2)) + a2_2)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_2)) + a2_2)));
+    return (0.5 / (lv + ll));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_3) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_4) {
+    float r_1 = clamp(roughness_4, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
+    float _e4 = weft_specular_mip(roughness_5);
+    vec4 c_3 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_3.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
+    vec2 uv_5 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_5), 0.0);
+    return _e8.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_2, n_4);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+uvec4 glint_pcg4d(uvec4 v_in) {
+    uvec4 v_1 = uvec4(0u);
+    v_1 = ((v_in * 1664525u) + uvec4(1013904223u));
+    uint _e8 = v_1.x;
+    uint _e10 = v_1.y;
+    uint _e12 = v_1.w;
+    v_1.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_1.y;
+    uint _e18 = v_1.z;
+    uint _e20 = v_1.x;
+    v_1.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_1.z;
+    uint _e26 = v_1.x;
+    uint _e28 = v_1.y;
+    v_1.z = (_e24 + (_e26 * _e28));
+    uint _e32 = v_1.w;
+    uint _e34 = v_1.y;
+    uint _e36 = v_1.z;
+    v_1.w = (_e32 + (_e34 * _e36));
+    uvec4 _e39 = v_1;
+    uvec4 _e40 = v_1;
+    v_1 = (_e39 ^ (_e40 >> uvec4(16u)));
+    uint _e46 = v_1.x;
+    uint _e48 = v_1.y;
+    uint _e50 = v_1.w;
+    v_1.x = (_e46 + (_e48 * _e50));
+    uint _e54 = v_1.y;
+    uint _e56 = v_1.z;
+    uint _e58 = v_1.x;
+    v_1.y = (_e54 + (_e56 * _e58));
+    uint _e62 = v_1.z;
+    uint _e64 = v_1.x;
+    uint _e66 = v_1.y;
+    v_1.z = (_e62 + (_e64 * _e66));
+    uint _e70 = v_1.w;
+    uint _e72 = v_1.y;
+    uint _e74 = v_1.z;
+    v_1.w = (_e70 + (_e72 * _e74));
+    uvec4 _e77 = v_1;
+    return _e77;
+}
+
+uvec3 glint_pcg3d(uvec3 v_in_1) {
+    uvec3 v_2 = uvec3(0u);
+    v_2 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uint _e8 = v_2.x;
+    uint _e10 = v_2.y;
+    uint _e12 = v_2.z;
+    v_2.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_2.y;
+    uint _e18 = v_2.z;
+    uint _e20 = v_2.x;
+    v_2.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_2.z;
+    uint _e26 = v_2.x;
+    uint _e28 = v_2.y;
+    v_2.z = (_e24 + (_e26 * _e28));
+    uvec3 _e31 = v_2;
+    uvec3 _e32 = v_2;
+    v_2 = (_e31 ^ (_e32 >> uvec3(16u)));
+    uint _e38 = v_2.x;
+    uint _e40 = v_2.y;
+    uint _e42 = v_2.z;
+    v_2.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_2.y;
+    uint _e48 = v_2.z;
+    uint _e50 = v_2.x;
+    v_2.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.z;
+    uint _e56 = v_2.x;
+    uint _e58 = v_2.y;
+    v_2.z = (_e54 + (_e56 * _e58));
+    uvec3 _e61 = v_2;
+    return _e61;
+}
+
+vec3 glint_unit3_(uvec3 v_3) {
+    return ((vec3((v_3 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
+}
+
+vec4 glint_unit4_(uvec4 v_4) {
+    return ((vec4((v_4 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
+}
+
+float glint_hash13_(vec3 p_in) {
+    vec3 p3_ = vec3(0.0);
+    p3_ = fract((p_in * 0.1031));
+    vec3 _e5 = p3_;
+    vec3 _e6 = p3_;
+    vec3 _e7 = p3_;
+    p3_ = (_e5 + vec3(dot(_e6, (_e7.yzx + vec3(33.33)))));
+    float _e16 = p3_.x;
+    float _e18 = p3_.y;
+    float _e21 = p3_.z;
+    return fract(((_e16 + _e18) * _e21));
+}
+
+float glint_erfinv(float x_1) {
+    float w = 0.0;
+    float p = 0.0;
+    w = -(log(max(((1.0 - x_1) * (1.0 + x_1)), 1e-30)));
+    float _e12 = w;
+    if ((_e12 < 5.0)) {
+        float _e15 = w;
+        w = (_e15 - 2.5);
+        p = 2.8102264e-8;
+        float _e19 = p;
+        float _e20 = w;
+        p = (3.4327394e-7 + (_e19 * _e20));
+        float _e24 = p;
+        float _e25 = w;
+        p = (-3.5233877e-6 + (_e24 * _e25));
+        float _e29 = p;
+        float _e30 = w;
+        p = (-4.3915065e-6 + (_e29 * _e30));
+        float _e34 = p;
+        float _e35 = w;
+        p = (0.00021858087 + (_e34 * _e35));
+        float _e39 = p;
+        float _e40 = w;
+        p = (-0.001253725 + (_e39 * _e40));
+        float _e44 = p;
+        float _e45 = w;
+        p = (-0.0041776816 + (_e44 * _e45));
+        float _e49 = p;
+        float _e50 = w;
+        p = (0.24664073 + (_e49 * _e50));
+        float _e54 = p;
+        float _e55 = w;
+        p = (1.5014094 + (_e54 * _e55));
+    } else {
+        float _e59 = w;
+        w = (sqrt(_e59) - 3.0);
+        p = -0.00020021426;
+        float _e64 = p;
+        float _e65 = w;
+        p = (0.00010095056 + (_e64 * _e65));
+        float _e69 = p;
+        float _e70 = w;
+        p = (0.0013493432 + (_e69 * _e70));
+        float _e74 = p;
+        float _e75 = w;
+        p = (-0.0036734284 + (_e74 * _e75));
+        float _e79 = p;
+        float _e80 = w;
+        p = (0.0057395077 + (_e79 * _e80));
+        float _e84 = p;
+        float _e85 = w;
+        p = (-0.0076224613 + (_e84 * _e85));
+        float _e89 = p;
+        float _e90 = w;
+        p = (0.0094388705 + (_e89 * _e90));
+        float _e94 = p;
+        float _e95 = w;
+        p = (1.001674 + (_e94 * _e95));
+        float _e99 = p;
+        float _e100 = w;
+        p = (2.8329768 + (_e99 * _e100));
+    }
+    float _e104 = p;
+    return (_e104 * x_1);
+}
+
+vec3 glint_gaussian3_(vec3 u) {
+    float _e6 = glint_erfinv(((2.0 * u.x) - 1.0));
+    float _e12 = glint_erfinv(((2.0 * u.y) - 1.0));
+    float _e18 = glint_erfinv(((2.0 * u.z) - 1.0));
+    return (1.4142135 * vec3(_e6, _e12, _e18));
+}
+
+vec2 glint_corner(vec2 c_1) {
+    uvec2 texel_1 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
+    uvec4 _e12 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
+    vec4 _e13 = glint_unit4_(_e12);
+    float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
+    return vec2(_e13.x, (1.4142135 * _e20));
+}
+
+GlintSlopeRand glint_slope_rand(float micro_roughness, vec2 slope, vec2 offset) {
+    GlintSlopeRand out_1 = GlintSlopeRand(vec4(0.0), vec4(0.0), vec2(0.0));
+    vec2 s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
+    vec2 cell = floor(s_2);
+    vec2 _e10 = glint_corner(cell);
+    vec2 _e15 = glint_corner((cell + vec2(0.0, 1.0)));
+    vec2 _e20 = glint_corner((cell + vec2(1.0, 0.0)));
+    vec2 _e25 = glint_corner((cell + vec2(1.0, 1.0)));
+    out_1.gate_rand = vec4(_e10.x, _e15.x, _e20.x, _e25.x);
+    out_1.gaussian = vec4(_e10.y, _e15.y, _e20.y, _e25.y);
+    out_1.lerp = (s_2 - cell);
+    GlintSlopeRand _e41 = out_1;
+    return _e41;
+}
+
+float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float mean, float deviation, float count) {
+    vec4 gate = vec4(0.0);
+    if ((smooth_width > 1e-7)) {
+        gate = clamp(((r.gate_rand - vec4((one_hit + smooth_width))) / vec4((-2.0 * smooth_width))), vec4(0.0), vec4(1.0));
+    } else {
+        gate = mix(vec4(0.0), vec4(1.0), lessThan(r.gate_rand, vec4(one_hit)));
+    }
+    vec4 gauss = clamp(floor(((r.gaussian * deviation) + vec4(mean))), vec4(0.0), vec4(count));
+    vec4 _e35 = gate;
+    vec4 hits = (_e35 * (vec4(1.0) + gauss));
+    float x0_ = mix(hits.x, hits.z, r.lerp.x);
+    float x1_ = mix(hits.y, hits.w, r.lerp.x);
+    return mix(x0_, x1_, r.lerp.y);
+}
+
+float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float target_ndf) {
+    vec2 skewed = vec2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
+    vec2 base = floor(skewed);
+    vec2 f = (skewed - base);
+    float fz = ((1.0 - f.x) - f.y);
+    float s_3 = ((fz < 0.0) ? 1.0 : 0.0);
+    float s2_ = ((2.0 * s_3) - 1.0);
+    ivec2 id = ivec2(base);
+    int si = int(s_3);
+    ivec2 c0_ = (id + ivec2(si, si));
+    ivec2 c1_ = (id + ivec2(si, (1 - si)));
+    ivec2 c2_ = (id + ivec2((1 - si), si));
+    vec3 bary = vec3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
+    uvec3 _e62 = glint_pcg3d(uvec3((uint(c0_.x) + 2147483648u), (uint(c0_.y) + 2147483648u), grid.seed));
+    vec3 _e63 = glint_unit3_(_e62);
+    uvec3 _e72 = glint_pcg3d(uvec3((uint(c1_.x) + 2147483648u), (uint(c1_.y) + 2147483648u), grid.seed));
+    vec3 _e73 = glint_unit3_(_e72);
+    uvec3 _e82 = glint_pcg3d(uvec3((uint(c2_.x) + 2147483648u), (uint(c2_.y) + 2147483648u), grid.seed));
+    vec3 _e83 = glint_unit3_(_e82);
+    GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
+    GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
+    GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
+    vec3 _e97 = glint_gaussian3_(vec3(_e63.x, _e73.x, _e83.x));
+    vec3 log_density = clamp(((_e97 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
+    vec3 count_1 = max(vec3(1e-8), (grid.cell_area * exp(log_density)));
+    vec3 blended = (count_1 * grid.weight);
+    float p_4 = (params.micro_roughness * target_ndf);
+    vec3 one_hit_1 = (vec3(1.0) - pow(vec3((1.0 - p_4)), blended));
+    vec3 others = max((blended - vec3(1.0)), vec3(0.0));
+    vec3 mean_1 = (others * p_4);
+    vec3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
+    vec3 smooth_width_1 = ((0.1 * clamp((one_hit_1 * 10.0), vec3(0.0), vec3(1.0))) * clamp(((vec3(1.0) - one_hit_1) * 10.0), vec3(0.0), vec3(1.0)));
+    float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((vec3(_e154, _e160, _e166) / count_1), bary);
+}
+
+GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
+    GlintEllipse out_2 = GlintEllipse(vec2(0.0), 0.0, 0.0);
+    float a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
+    float b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
+    float d_4 = ((duv_dx.y * duv_dx.y) + (duv_dy.y * duv_dy.y));
+    float half_trace = (0.5 * (a_5 + d_4));
+    float disc = sqrt(max((((0.25 * (a_5 - d_4)) * (a_5 - d_4)) + (b_3 * b_3)), 0.0));
+    float l1_ = (half_trace + disc);
+    float l2_ = max((half_trace - disc), 0.0);
+    vec2 e_a = vec2(b_3, (l1_ - a_5));
+    vec2 e_b = vec2((l1_ - d_4), b_3);
+    vec2 e_3 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
+    float e_len2_ = dot(e_3, e_3);
+    out_2.major_dir = ((e_len2_ > 1e-37) ? (e_3 * inversesqrt(max(e_len2_, 1e-37))) : vec2(1.0, 0.0));
+    out_2.major = max(sqrt(l1_), 1e-12);
+    float _e68 = out_2.major;
+    out_2.minor = max(sqrt(l2_), (_e68 / 64.0));
+    GlintEllipse _e72 = out_2;
+    return _e72;
+}
+
+vec2 glint_rotate(vec2 uv_1, float angle) {
+    float c_4 = cos(angle);
+    float s_4 = sin(angle);
+    return vec2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+}
+
+uint glint_grid_seed(float lod, float theta, float ratio) {
+    float t_1 = (theta - (GLINT_TAU * trunc((theta / GLINT_TAU))));
+    float _e10 = glint_hash13_(vec3(lod, t_1, ratio));
+    return uint(min((_e10 * 4294967300.0), 4294967000.0));
+}
+
+GlintGrid glint_make_grid(vec2 uv_2, float lod_1, float theta_1, float ratio_1, float weight) {
+    GlintGrid g = GlintGrid(vec2(0.0), 0u, 0.0, 0.0);
+    vec2 _e7 = glint_rotate(uv_2, theta_1);
+    g.uv = ((_e7 * exp2(-(lod_1))) / vec2(1.0, ratio_1));
+    uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
+    g.seed = _e15;
+    g.cell_area = (ratio_1 * exp2((2.0 * lod_1)));
+    g.weight = weight;
+    GlintGrid _e22 = g;
+    return _e22;
+}
+
+vec4 glint_tetra_weights(vec3 p_1, vec3 a, vec3 b, vec3 c_2, vec3 d) {
+    vec3 c1_1 = (a - d);
+    vec3 c2_1 = (b - d);
+    vec3 c3_ = (c_2 - d);
+    vec3 q = (p_1 - d);
+    float det = dot(c1_1, cross(c2_1, c3_));
+    float inv = (1.0 / det);
+    float w1_ = (dot(q, cross(c2_1, c3_)) * inv);
+    float w2_ = (dot(c1_1, cross(q, c3_)) * inv);
+    float w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    return vec4(w1_, w2_, w3_, (((1.0 - w1_) - w2_) - w3_));
+}
+
+float glint_lod(GlintEllipse e_1, float screen_scale) {
+    return clamp(log2(((e_1.minor * screen_scale) * 0.5)), GLINT_MIN_LOD, GLINT_MAX_LOD);
+}
+
+GlintGrid glint_vertex_grid(vec2 uv_3, vec3 p_2, float weight_1, bool center, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_) {
+    float theta_2 = 0.0;
+    bool local_1 = false;
+    float rot_index = (p_2.x * 2.0);
+    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
+    if (center) {
+        local_1 = (p_2.y == 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
+    float lod_2 = (lod0_ + p_2.z);
+    float _e35 = theta_2;
+    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
+}
+
+GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
+    float theta_lerp = 0.0;
+    vec3 p0_ = vec3(0.0);
+    vec3 p1_ = vec3(0.0);
+    vec3 p2_ = vec3(0.0);
+    vec3 p3_1 = vec3(0.0);
+    bool local_2 = false;
+    GlintGrids out_3 = GlintGrids(GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0));
+    float ratio_e = min((e_2.major / (e_2.minor + (1e-8 * e_2.major))), GLINT_MAX_RATIO);
+    float _e12 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = floor(_e12);
+    float lod_lerp = (_e12 - lod0_1);
+    float ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = (ratio0_1 * 2.0);
+    float ratio_lerp = clamp(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)), 0.0, 1.0);
+    float q_1 = (0.7853982 / max(ratio0_1, 2.0));
+    float per_pi = (4.0 * max(ratio0_1, 2.0));
+    float theta_3 = atan(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_q = (theta_3 / q_1);
+    float h0_ = floor(theta_q);
+    theta_lerp = clamp((theta_q - h0_), 0.0, 1.0);
+    float i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
+    float i1_ = ((i0_ + 1.0) - (per_pi * floor(((i0_ + 1.0) / per_pi))));
+    float theta_bin0_ = (i0_ * q_1);
+    float theta_bin_h = ((i0_ + 0.5) * q_1);
+    float theta_bin1_ = (i1_ * q_1);
+    bool center_1 = (ratio0_1 == 1.0);
+    if (center_1) {
+        vec3 a_6 = vec3(0.0, 1.0, 0.0);
+        vec3 b_4 = vec3(0.0, 0.0, 0.0);
+        vec3 c_5 = vec3(1.0, 1.0, 0.0);
+        vec3 d_5 = vec3(0.0, 1.0, 1.0);
+        vec3 ee = vec3(0.0, 0.0, 1.0);
+        vec3 f_1 = vec3(1.0, 1.0, 1.0);
+        if ((lod_lerp > (1.0 - ratio_lerp))) {
+            float _e103 = theta_lerp;
+            if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > _e103)) {
+                p0_ = a_6;
+                p1_ = ee;
+                p2_ = d_5;
+                p3_1 = f_1;
+            } else {
+                p0_ = f_1;
+                p1_ = ee;
+                p2_ = c_5;
+                p3_1 = a_6;
+            }
+        } else {
+            p0_ = b_4;
+            p1_ = a_6;
+            p2_ = c_5;
+            p3_1 = ee;
+        }
+        float _e105 = theta_lerp;
+        theta_lerp = (_e105 * ratio_lerp);
+    } else {
+        vec3 a_7 = vec3(0.0, 1.0, 0.0);
+        vec3 b_5 = vec3(0.0, 0.0, 0.0);
+        vec3 c_6 = vec3(0.5, 1.0, 0.0);
+        vec3 d_6 = vec3(1.0, 0.0, 0.0);
+        vec3 ee_1 = vec3(1.0, 1.0, 0.0);
+        vec3 f_2 = vec3(0.0, 1.0, 1.0);
+        vec3 g_1 = vec3(0.0, 0.0, 1.0);
+        vec3 h_1 = vec3(0.5, 1.0, 1.0);
+        vec3 i = vec3(1.0, 0.0, 1.0);
+        vec3 j = vec3(1.0, 1.0, 1.0);
+        float _e147 = theta_lerp;
+        if ((_e147 < 0.5)) {
+            float _e152 = theta_lerp;
+            local_2 = ((_e152 * 2.0) < ratio_lerp);
+        } else {
+            local_2 = false;
+        }
+        bool _e157 = local_2;
+        if (_e157) {
+            if ((lod_lerp > (1.0 - ratio_lerp))) {
+                float _e167 = theta_lerp;
+                if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((_e167 * 2.0) / max(ratio_lerp, 1e-8)))) {
+                    p0_ = a_7;
+                    p1_ = f_2;
+                    p2_ = h_1;
+                    p3_1 = g_1;
+                } else {
+                    p0_ = c_6;
+                    p1_ = a_7;
+                    p2_ = h_1;
+                    p3_1 = g_1;
+                }
+            } else {
+                p0_ = b_5;
+                p1_ = a_7;
+                p2_ = c_6;
+                p3_1 = g_1;
+            }
+        } else {
+            float _e174 = theta_lerp;
+            if (((1.0 - ((_e174 - 0.5) * 2.0)) > ratio_lerp)) {
+                if ((lod_lerp < (1.0 - ratio_lerp))) {
+                    float half_width = (0.5 * (1.0 - ratio_lerp));
+                    float _e194 = theta_lerp;
+                    if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e194 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
+                        p0_ = b_5;
+                        p1_ = g_1;
+                        p2_ = i;
+                        p3_1 = c_6;
+                    } else {
+                        p0_ = d_6;
+                        p1_ = b_5;
+                        p2_ = c_6;
+                        p3_1 = i;
+                    }
+                } else {
+                    p0_ = c_6;
+                    p1_ = g_1;
+                    p2_ = h_1;
+                    p3_1 = i;
+                }
+            } else {
+                if ((lod_lerp > (1.0 - ratio_lerp))) {
+                    float _e213 = theta_lerp;
+                    if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e213 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
+                        p0_ = c_6;
+                        p1_ = j;
+                        p2_ = h_1;
+                        p3_1 = i;
+                    } else {
+                        p0_ = ee_1;
+                        p1_ = i;
+                        p2_ = c_6;
+                        p3_1 = j;
+                    }
+                } else {
+                    p0_ = d_6;
+                    p1_ = ee_1;
+                    p2_ = c_6;
+                    p3_1 = i;
+                }
+            }
+        }
+    }
+    float _e225 = theta_lerp;
+    vec3 _e227 = p0_;
+    vec3 _e228 = p1_;
+    vec3 _e229 = p2_;
+    vec3 _e230 = p3_1;
+    vec4 _e231 = glint_tetra_weights(vec3(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
+    vec3 _e234 = p0_;
+    GlintGrid _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g0_ = _e236;
+    vec3 _e238 = p1_;
+    GlintGrid _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g1_ = _e240;
+    vec3 _e242 = p2_;
+    GlintGrid _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g2_ = _e244;
+    vec3 _e246 = p3_1;
+    GlintGrid _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
+    out_3.g3_ = _e248;
+    GlintGrids _e249 = out_3;
+    return _e249;
+}
+
+float glint_ndf_reference(GlintParams params_1, GlintGrids grids, vec2 slope_2, float d_1, float d_max) {
+    float target_ndf_1 = (d_1 / d_max);
+    float _e7 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1);
+    float _e9 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1);
+    float _e12 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1);
+    float _e15 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1);
+    float sum = (((_e7 + _e9) + _e12) + _e15);
+    return (min((sum / params_1.micro_roughness), 20.0) * d_max);
+}
+
+GlintParams glitter_params() {
+    GlintParams p_3 = GlintParams(0.0, 0.0, 0.0);
+    float _e4 = _group_1_binding_0_fs.flake_density;
+    p_3.log_density = (4.0 + (28.0 * clamp(_e4, 0.0, 1.0)));
+    float _e13 = _group_1_binding_0_fs.twinkle;
+    p_3.micro_roughness = exp2(mix(-4.321928, -8.965784, clamp(_e13, 0.0, 1.0)));
+    float _e22 = _group_1_binding_0_fs.density_variation;
+    p_3.density_randomization = clamp(_e22, 0.0, 4.0);
+    GlintParams _e26 = p_3;
+    return _e26;
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 n = vec3(0.0);
+    vec3 color = vec3(0.0);
+    bool local = false;
+    float d_flakes = 0.0;
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec2 duv_dx_1 = dFdx(_e5);
+    vec2 duv_dy_1 = dFdy(_e5);
+    vec4 _e10 = _group_1_binding_0_fs.base_color;
+    vec4 _e13 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e10 * _e13);
+    vec3 base_1 = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    float _e21 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp(_e21, 0.0, 1.0);
+    float _e25 = _group_1_binding_0_fs.smoothness;
+    float roughness_7 = (1.0 - clamp(_e25, 0.0, 1.0));
+    vec4 _e31 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float occlusion = _e31.x;
+    float _e35 = _group_1_binding_0_fs.occlusion_strength;
+    float ao = clamp(mix(1.0, occlusion, _e35), 0.0, 1.0);
+    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
+    n = _e46;
+    {
+        vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e50.xyz;
+        vec3 _e52 = n;
+        mat3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
+        float _e57 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e58 = weft_unpack_normal(texel_2, _e57);
+        vec3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
+        n = _e59;
+    }
+    vec3 _e60 = n;
+    mat3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    vec3 _e63 = weft_main_light_direction();
+    vec3 _e65 = n;
+    vec3 _e66 = weft_safe_normalize((_e63 + _e44), _e65);
+    vec3 _e67 = n;
+    float _e69 = weft_clamp_cos(dot(_e67, _e44));
+    vec3 _e70 = n;
+    float n_dot_l_1 = clamp(dot(_e70, _e63), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e44, _e66), 0.0, 1.0);
+    vec3 _e75 = weft_main_light_radiance();
+    vec3 f0_2 = mix(vec3(0.04), base_1, metallic);
+    vec3 diffuse_albedo = (base_1 * (1.0 - metallic));
+    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
+    vec2 _e83 = weft_env_brdf_lut(_e69, roughness_7);
+    vec3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
+    vec3 kd = max((vec3(1.0) - _e84), vec3(0.0));
+    vec3 _e91 = n;
+    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
+    vec3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
+    vec3 specular = ((_e92 * _e82) * _e94);
+    vec3 _e96 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
+    vec3 _e102 = n;
+    vec3 _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
+    vec3 _e107 = n;
+    vec3 _e108 = weft_sh_irradiance(_e107);
+    vec3 indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    color = (direct + indirect);
+    float _e117 = _group_1_binding_0_fs.flake_intensity;
+    float intensity = max(_e117, 0.0);
+    if ((intensity > 0.0)) {
+        local = (n_dot_l_1 > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e127 = local;
+    if (_e127) {
+        float _e130 = _group_1_binding_0_fs.flake_roughness;
+        float r_f = clamp(_e130, 0.05, 1.0);
+        vec3 _e134 = n;
+        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
+        float _e137 = weft_d_ggx(1.0, r_f);
+        {
+            vec2 slope_3 = vec2(dot(_e62[0], _e66), dot(_e62[1], _e66));
+            GlintParams _e144 = glitter_params();
+            GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e148 = _group_1_binding_0_fs.flake_size;
+            float screen_scale_2 = clamp(_e148, 1.0, 8.0);
+            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
+            {
+                float _e153 = glint_ndf_reference(_e144, _e152, slope_3, _e135, _e137);
+                d_flakes = _e153;
+            }
+        }
+        vec4 _e156 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e156.xyz, vec3(0.0), vec3(1.0));
+        float _e159 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        vec3 _e160 = color;
+        float _e161 = d_flakes;
+        vec3 _e164 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e160 + (((((intensity * _e161) * _e159) * _e164) * _e75) * n_dot_l_1));
+    }
+    vec3 _e169 = color;
+    vec3 radiance = clamp(_e169, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

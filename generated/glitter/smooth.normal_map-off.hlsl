@@ -1,0 +1,377 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float metallic;
+    float smoothness;
+    int _pad3_0;
+    int _pad3_1;
+    float4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    int _pad6_0;
+    int _pad6_1;
+    float4 flake_color;
+    float flake_intensity;
+    float flake_density;
+    float flake_size;
+    float flake_roughness;
+    float twinkle;
+    float density_variation;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SMOOTH = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float GLINT_TAU = 6.2831855;
+static const float GLINT_HALF_PI = 1.5707964;
+static const float GLINT_TABLE_SIZE = 64.0;
+static const float GLINT_MIN_LOD = -20.0;
+static const float GLINT_MAX_LOD = 20.0;
+static const float GLINT_MAX_RATIO = 16.0;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> occlusion_map : register(t5, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float weft_pow5_(float x)
+{
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n_1)
+{
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_d_ggx(float n_dot_h, float roughness_1)
+{
+    const float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e2 * _e2);
+    float a2_ = (a_1 * a_1);
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d) * d));
+}
+
+float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_2)
+{
+    const float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
+    float noh_1 = saturate(dot(n_2, h));
+    float3 nxh = cross(n_2, h);
+    float d_1 = (dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1));
+    return (a2_1 / (WEFT_PI * max((d_1 * d_1), 1e-30)));
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_3)
+{
+    const float _e3 = weft_clamp_roughness(roughness_3);
+    float a_3 = (_e3 * _e3);
+    float a2_2 = (a_3 * a_3);
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_2)) + a2_2)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_2)) + a2_2)));
+    return (0.5 / (lv + ll));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_3)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_4)
+{
+    float r = saturate(roughness_4);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
+{
+    const float _e4 = weft_specular_mip(roughness_5);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
+{
+    float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_6));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_4);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float3 n = (float3)0;
+    float3 color = (float3)0;
+    bool local = (bool)0;
+    float d_flakes = (float)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float2 duv_dx = ddx(_e5);
+    float2 duv_dy = ddy(_e5);
+    float4 _e10 = material.base_color;
+    float4 _e13 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e10 * _e13);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    float _e21 = material.metallic;
+    float metallic = saturate(_e21);
+    float _e25 = material.smoothness;
+    float roughness_7 = (1.0 - saturate(_e25));
+    float4 _e31 = occlusion_map.Sample(material_sampler, _e5);
+    float occlusion = _e31.x;
+    float _e35 = material.occlusion_strength;
+    float ao = saturate(lerp(1.0, occlusion, _e35));
+    const float3 _e44 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
+    n = _e46;
+    float3 _e48 = n;
+    const float3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
+    const float3 _e51 = weft_main_light_direction();
+    float3 _e53 = n;
+    const float3 _e54 = weft_safe_normalize((_e51 + _e44), _e53);
+    float3 _e55 = n;
+    const float _e57 = weft_clamp_cos(dot(_e55, _e44));
+    float3 _e58 = n;
+    float n_dot_l_1 = saturate(dot(_e58, _e51));
+    float v_dot_h_1 = saturate(dot(_e44, _e54));
+    const float3 _e63 = weft_main_light_radiance();
+    float3 f0_2 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
+    const float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
+    const float2 _e71 = weft_env_brdf_lut(_e57, roughness_7);
+    const float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    float3 kd = max(((1.0).xxx - _e72), (0.0).xxx);
+    float3 _e79 = n;
+    const float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
+    const float3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
+    float3 specular = ((_e80 * _e70) * _e82);
+    const float3 _e84 = weft_diffuse_lambert(diffuse_albedo);
+    float3 direct = ((((kd * _e84) + specular) * _e63) * n_dot_l_1);
+    float3 _e90 = n;
+    const float3 _e92 = weft_prefiltered_radiance(reflect(-(_e44), _e90), roughness_7);
+    float3 _e95 = n;
+    const float3 _e96 = weft_sh_irradiance(_e95);
+    float3 indirect = (((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo));
+    color = (direct + indirect);
+    float _e105 = material.flake_intensity;
+    float intensity = max(_e105, 0.0);
+    if ((intensity > 0.0)) {
+        local = (n_dot_l_1 > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e115 = local;
+    if (_e115) {
+        float _e118 = material.flake_roughness;
+        float r_f = clamp(_e118, 0.05, 1.0);
+        float3 _e122 = n;
+        const float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
+        const float _e125 = weft_d_ggx(1.0, r_f);
+        {
+            d_flakes = _e123;
+        }
+        float4 _e129 = material.flake_color;
+        float3 flake_f0_ = saturate(_e129.xyz);
+        const float _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        float3 _e133 = color;
+        float _e134 = d_flakes;
+        const float3 _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1));
+    }
+    float3 _e142 = color;
+    float3 radiance = clamp(_e142, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}

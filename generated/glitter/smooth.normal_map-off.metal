@@ -1,0 +1,424 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    float metallic;
+    float smoothness;
+    char _pad3[8];
+    metal::float4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    char _pad6[8];
+    metal::float4 flake_color;
+    float flake_intensity;
+    float flake_density;
+    float flake_size;
+    float flake_roughness;
+    float twinkle;
+    float density_variation;
+    char _pad13[8];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SMOOTH = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float GLINT_TAU = 6.2831855;
+constant float GLINT_HALF_PI = 1.5707964;
+constant float GLINT_TABLE_SIZE = 64.0;
+constant float GLINT_MIN_LOD = -20.0;
+constant float GLINT_MAX_LOD = 20.0;
+constant float GLINT_MAX_RATIO = 16.0;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n_1
+) {
+    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n_1.z);
+    float b = (n_1.x * n_1.y) * a;
+    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
+}
+
+float weft_d_ggx(
+    float n_dot_h,
+    float roughness_1
+) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e2 * _e2;
+    float a2_ = a_1 * a_1;
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d) * d);
+}
+
+float weft_d_ggx_nh(
+    metal::float3 n_2,
+    metal::float3 h,
+    float roughness_2
+) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = _e3 * _e3;
+    float a2_1 = a_2 * a_2;
+    float noh_1 = metal::saturate(metal::dot(n_2, h));
+    metal::float3 nxh = metal::cross(n_2, h);
+    float d_1 = metal::dot(nxh, nxh) + ((noh_1 * noh_1) * a2_1);
+    return a2_1 / (WEFT_PI * metal::max(d_1 * d_1, 0.000000000000000000000000000001));
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+float weft_v_smith_ggx_correlated(
+    float n_dot_v,
+    float n_dot_l,
+    float roughness_3
+) {
+    float _e3 = weft_clamp_roughness(roughness_3);
+    float a_3 = _e3 * _e3;
+    float a2_2 = a_3 * a_3;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_2)) + a2_2);
+    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_2)) + a2_2);
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_3,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_4,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness_4);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_5,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_5, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_6,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    metal::float3 color = {};
+    bool local = {};
+    float d_flakes = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float2 duv_dx = metal::dfdx(_e5);
+    metal::float2 duv_dy = metal::dfdy(_e5);
+    metal::float4 _e10 = material.base_color;
+    metal::float4 _e13 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e10 * _e13;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    float _e21 = material.metallic;
+    float metallic = metal::saturate(_e21);
+    float _e25 = material.smoothness;
+    float roughness_7 = 1.0 - metal::saturate(_e25);
+    metal::float4 _e31 = occlusion_map.sample(material_sampler, _e5);
+    float occlusion = _e31.x;
+    float _e35 = material.occlusion_strength;
+    float ao = metal::saturate(metal::mix(1.0, occlusion, _e35));
+    metal::float3 _e44 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
+    n = _e46;
+    metal::float3 _e48 = n;
+    metal::float3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
+    metal::float3 _e51 = weft_main_light_direction(weft_frame);
+    metal::float3 _e53 = n;
+    metal::float3 _e54 = weft_safe_normalize(_e51 + _e44, _e53);
+    metal::float3 _e55 = n;
+    float _e57 = weft_clamp_cos(metal::dot(_e55, _e44));
+    metal::float3 _e58 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e58, _e51));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e44, _e54));
+    metal::float3 _e63 = weft_main_light_radiance(weft_frame);
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
+    float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
+    metal::float2 _e71 = weft_env_brdf_lut(_e57, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e72, metal::float3(0.0));
+    metal::float3 _e79 = n;
+    float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
+    metal::float3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float3 specular = (_e80 * _e70) * _e82;
+    metal::float3 _e84 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 direct = (((kd * _e84) + specular) * _e63) * n_dot_l_1;
+    metal::float3 _e90 = n;
+    metal::float3 _e92 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e90), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e95 = n;
+    metal::float3 _e96 = weft_sh_irradiance(_e95, weft_frame);
+    metal::float3 indirect = ((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo);
+    color = direct + indirect;
+    float _e105 = material.flake_intensity;
+    float intensity = metal::max(_e105, 0.0);
+    if (intensity > 0.0) {
+        local = n_dot_l_1 > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e115 = local;
+    if (_e115) {
+        float _e118 = material.flake_roughness;
+        float r_f = metal::clamp(_e118, 0.05, 1.0);
+        metal::float3 _e122 = n;
+        float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
+        float _e125 = weft_d_ggx(1.0, r_f);
+        {
+            d_flakes = _e123;
+        }
+        metal::float4 _e129 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e129.xyz);
+        float _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        metal::float3 _e133 = color;
+        float _e134 = d_flakes;
+        metal::float3 _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = _e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1);
+    }
+    metal::float3 _e142 = color;
+    metal::float3 radiance = metal::clamp(_e142, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha) };
+}

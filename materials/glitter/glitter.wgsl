@@ -1,0 +1,120 @@
+// @include "lib/forward.wgsl"
+// @include "lib/glints.wgsl"
+//
+// glitter: sparkling flakes over weft's standard surface (seed 001 sec. 6,
+// left "to be completed" by its authors; the design is README.md's).
+// Returns linear HDR radiance.
+//
+// Base (every tier): the standard material's reference model, Unity's
+// metallic/smoothness workflow: GGX D, Schlick F, height-correlated Smith
+// visibility, Lambert diffuse weighted by 1 - E(n.v), the toolchain-baked
+// split-sum table for the environment, L2 SH ambient, occlusion on ambient.
+//
+// Flakes (added on top, main light only): a Cook-Torrance lobe whose NDF is
+// the flakes' glint NDF,
+//   f_flakes = intensity D_flakes(h) V(n.v, n.l; r_f) F_schlick(flake colour, v.h),
+// with V the height-correlated Smith visibility of the flake roughness r_f,
+// and D_flakes by tier (WEFT_TIER):
+//   reference = Deliot & Belcour 2023's glint NDF (lib/glints.wgsl): four
+//               grids chosen by the pixel footprint's ellipse (level,
+//               anisotropy, rotation) blended over a tetrahedron, binomial
+//               flake counts per simplex cell; target NDF = GGX(r_f).
+//   fast      = an approximation of the reference: the same glint NDF on
+//               one grid only, the reference's grid of largest weight (same
+//               cells, seeds and flakes) at weight 1, 3 cells per pixel
+//               instead of 12.
+//   smooth    = the glints' expectation, E[D_flakes] = GGX(r_f): the flakes
+//               averaged into a smooth lobe (no sparkle).
+
+@fragment
+fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+    // ------------------------------------------------------------ surface
+    let uv = weft_transform_uv(in.uv0, material.base_map_st);
+    // Screen derivatives of uv: the pixel footprint the glints integrate
+    // over (taken here, in uniform control flow).
+    let duv_dx = dpdx(uv);
+    let duv_dy = dpdy(uv);
+    let base_rgba = material.base_color * textureSample(base_map, material_sampler, uv);
+    // Clamped to physical ranges (an albedo > 1 gives F0 > 1 and 1 - E < 0).
+    let base = saturate(base_rgba.rgb);
+    let alpha = saturate(base_rgba.a);
+    let metallic = saturate(material.metallic);
+    let roughness = 1.0 - saturate(material.smoothness);
+    let occlusion = textureSample(occlusion_map, material_sampler, uv).r;
+    let ao = saturate(mix(1.0, occlusion, material.occlusion_strength));
+
+    // ------------------------------------------------------------ geometry
+    // Fallbacks: +z view if the camera sits on the point, v for a degenerate
+    // interpolated normal, n for l = -v (zero half vector).
+    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    var n = weft_safe_normalize(in.world_normal, v);
+    if NORMAL_MAP {
+        let texel = textureSample(normal_map, material_sampler, uv).rgb;
+        n = weft_normal_from_tangent_space(weft_tangent_frame(n, in.world_tangent), weft_unpack_normal(texel, material.normal_strength));
+    }
+    // The flakes' tangent frame around the shading normal.
+    let frame = weft_tangent_frame(n, in.world_tangent);
+    let l = weft_main_light_direction();
+    let h = weft_safe_normalize(l + v, n);
+    let n_dot_v = weft_clamp_cos(dot(n, v));
+    let n_dot_l = saturate(dot(n, l));
+    let v_dot_h = saturate(dot(v, h));
+    let light = weft_main_light_radiance();
+
+    // ------------------------------------------------------------ base
+    let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
+    let diffuse_albedo = base * (1.0 - metallic);
+    let visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
+    let env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+    let kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
+    let specular = weft_d_ggx_nh(n, h, roughness) * visibility * weft_f_schlick(f0, v_dot_h);
+    let direct = (kd * weft_diffuse_lambert(diffuse_albedo) + specular) * light * n_dot_l;
+    let indirect = weft_prefiltered_radiance(reflect(-v, n), roughness) * env_brdf * ao
+        + weft_sh_irradiance(n) * ao * kd * diffuse_albedo;
+    var color = direct + indirect;
+
+    // ------------------------------------------------------------ flakes
+    // Skipped at zero intensity or with the light below the horizon (a
+    // uniform branch for the intensity; n.l per pixel).
+    let intensity = max(material.flake_intensity, 0.0);
+    if intensity > 0.0 && n_dot_l > 0.0 {
+        let r_f = clamp(material.flake_roughness, 0.05, 1.0);
+        let d = weft_d_ggx_nh(n, h, r_f);
+        let d_max = weft_d_ggx(1.0, r_f);
+        var d_flakes: f32;
+        if WEFT_TIER == TIER_SMOOTH {
+            d_flakes = d;
+        } else {
+            // Tangent-space half vector: its slope h.xy addresses the
+            // flakes' slope cells.
+            let slope = vec2<f32>(dot(frame[0], h), dot(frame[1], h));
+            let params = glitter_params();
+            let ellipse = glint_ellipse(duv_dx, duv_dy);
+            let screen_scale = clamp(material.flake_size, 1.0, 8.0);
+            let grids = glint_grids(uv, ellipse, screen_scale);
+            if WEFT_TIER == TIER_REFERENCE {
+                d_flakes = glint_ndf_reference(params, grids, slope, d, d_max);
+            } else {
+                d_flakes = glint_ndf_single(params, glint_dominant_grid(grids), slope, d, d_max);
+            }
+        }
+        let flake_f0 = saturate(material.flake_color.rgb);
+        let v_f = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, r_f);
+        color += intensity * d_flakes * v_f * weft_f_schlick(flake_f0, v_dot_h) * light * n_dot_l;
+    }
+
+    // Never negative, at most the fp16 maximum (Rgba16Float targets).
+    let radiance = clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    return vec4<f32>(radiance, alpha);
+}
+
+// The glint NDF's parameters from the panel: ln density = 4 + 28 density
+// (e^4 ~ 55 to e^32 ~ 8e13 flakes per unit uv area), slope-cell size
+// s = 0.05^(1 - twinkle) 0.002^twinkle, log-density deviation.
+fn glitter_params() -> GlintParams {
+    var p: GlintParams;
+    p.log_density = 4.0 + 28.0 * saturate(material.flake_density);
+    p.micro_roughness = exp2(mix(log2(0.05), log2(0.002), saturate(material.twinkle)));
+    p.density_randomization = clamp(material.density_variation, 0.0, 4.0);
+    return p;
+}

@@ -1,0 +1,523 @@
+// weft glint library: a procedural glint NDF after Deliot & Belcour 2023,
+// "Real-Time Rendering of Glinty Appearances using Distributed Binomial Laws
+// on Anisotropic Grids" (CGF 42(8), HPG 2023). Pure functions, no bindings.
+//
+// A glinty surface is a field of flat microfacets ("flakes") whose normals
+// follow a target NDF D. In a pixel footprint holding N flakes, the number of
+// flakes that reflect the half vector h into the eye is binomial:
+// B(N, p) with p = s D(h) / D_max, where s (the "microfacet roughness") is the
+// angular size of one slope cell: the probability that a flake's normal
+// falls in the cell around h. The glint NDF of the footprint is then
+// D_glint(h) = (hits / N) D_max / s, whose expectation is D(h) exactly.
+// The footprint is covered by simplex grids whose cells are about one pixel
+// across (screen-space adaptive: level of detail from the pixel footprint's
+// ellipse in uv), blended over a tetrahedron of (rotation, anisotropy,
+// level) so no grid switches abruptly; each cell draws its own flake count
+// and its own table of per-slope-cell random numbers.
+//
+// Differences from the published code (README, "reference"):
+// - The 64 x 64 noise texture is replaced by a hash of the table
+//   coordinate: pcg4d (Jarzynski & Olano 2020) of a lattice point gives its
+//   uniform number (the gate) and one that becomes a standard normal number
+//   by the inverse CDF sqrt(2) erfinv(2u - 1) (the count). The texture holds
+//   independent uniform and standard normal numbers, so every corner value
+//   has the same distribution; the table is still addressed as 64 x 64
+//   points offset by each cell's random numbers, as the texture was.
+// - The four corners of a slope cell are the lattice points around it,
+//   shared with the neighbouring cells (the paper's texel holds its own four
+//   corners, so the hit count jumps at every slope-cell border): the glint
+//   NDF is continuous in h, which halves the sparkles' change under a
+//   half-pixel camera pan on a curved surface (README, "Limits"). Each
+//   corner keeps its distribution, so the expectation is unchanged.
+// - Level of detail and rotation bins use floor, not truncation towards zero
+//   ((int) in HLSL): with truncation a negative level (cells smaller than one
+//   uv unit: every ordinary mapping) interpolates between the wrong two levels.
+// - Rotation bins are indexed modulo pi (an ellipse's axis is defined up to
+//   pi): the paper wraps only the first bin, so where the footprint's axis
+//   is aligned with u or v the last bits of the derivatives chose between
+//   two unrelated grids (glint_grids).
+// - The fourth grid uses its own rotated uv (a known porting slip sets it from
+//   the first grid's).
+// - Uniform random numbers lie in the open interval (0, 1) (24-bit, +0.5):
+//   erfinv(+-1) is infinite.
+// - The binomial's mean and deviation use max(N - 1, 0): with fewer than one
+//   flake in a blended cell the published sqrt takes a negative argument.
+// - Barycentric weights in the tetrahedron by Cramer's rule.
+// The guards of the paper are kept: log density clamped to [0, 50], flake
+// count >= 1e-8, ellipse ratio over (minor + 1e-8), result <= 20 D_max.
+
+const GLINT_TAU: f32 = 6.28318530717959;
+const GLINT_HALF_PI: f32 = 1.5707963267949;
+// The noise table's size (texels per side), as the published texture's.
+const GLINT_TABLE_SIZE: f32 = 64.0;
+// Levels of detail are clamped so grid coordinates stay well inside f32's
+// integer range (uv / 2^lod with lod >= -20 and |uv| <= 64: < 2^27).
+const GLINT_MIN_LOD: f32 = -20.0;
+const GLINT_MAX_LOD: f32 = 20.0;
+// Largest footprint anisotropy handled by a dedicated grid (2^4); a longer
+// ellipse uses the 16:1 grids with a correspondingly larger cell count.
+const GLINT_MAX_RATIO: f32 = 16.0;
+
+// One grid of the four the footprint blends.
+struct GlintGrid {
+    uv: vec2<f32>,
+    seed: u32,
+    // Area of one grid cell in uv units (the flake count is area x density).
+    cell_area: f32,
+    weight: f32,
+}
+
+// Parameters of the glint NDF.
+struct GlintParams {
+    // ln(flakes per unit uv area).
+    log_density: f32,
+    // Angular size of a slope cell (the paper's microfacet roughness).
+    micro_roughness: f32,
+    // Standard deviation of the log density from cell to cell.
+    density_randomization: f32,
+}
+
+// ---------------------------------------------------------------- random
+
+// pcg4d (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
+fn glint_pcg4d(v_in: vec4<u32>) -> vec4<u32> {
+    var v = v_in * 1664525u + vec4<u32>(1013904223u);
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    v = v ^ (v >> vec4<u32>(16u));
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    return v;
+}
+
+// pcg3d (same source), as the paper seeds its surface cells.
+fn glint_pcg3d(v_in: vec3<u32>) -> vec3<u32> {
+    var v = v_in * 1664525u + vec3<u32>(1013904223u);
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v = v ^ (v >> vec3<u32>(16u));
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return v;
+}
+
+// Uniform numbers in the open interval (0, 1) from the top 24 bits.
+fn glint_unit3(v: vec3<u32>) -> vec3<f32> {
+    return (vec3<f32>(v >> vec3<u32>(8u)) + 0.5) * (1.0 / 16777216.0);
+}
+
+fn glint_unit4(v: vec4<u32>) -> vec4<f32> {
+    return (vec4<f32>(v >> vec4<u32>(8u)) + 0.5) * (1.0 / 16777216.0);
+}
+
+// Dave Hoskins' "hash without sine" (float3 -> float), as the paper seeds
+// its grids.
+fn glint_hash13(p_in: vec3<f32>) -> f32 {
+    var p3 = fract(p_in * 0.1031);
+    p3 += dot(p3, p3.yzx + 33.33);
+    return fract((p3.x + p3.y) * p3.z);
+}
+
+// erfinv for x in (-1, 1) (Giles 2010, "Approximating the erfinv function",
+// single precision).
+fn glint_erfinv(x: f32) -> f32 {
+    var w = -log(max((1.0 - x) * (1.0 + x), 1e-30));
+    var p: f32;
+    if w < 5.0 {
+        w = w - 2.5;
+        p = 2.81022636e-08;
+        p = 3.43273939e-07 + p * w;
+        p = -3.5233877e-06 + p * w;
+        p = -4.39150654e-06 + p * w;
+        p = 0.00021858087 + p * w;
+        p = -0.00125372503 + p * w;
+        p = -0.00417768164 + p * w;
+        p = 0.246640727 + p * w;
+        p = 1.50140941 + p * w;
+    } else {
+        w = sqrt(w) - 3.0;
+        p = -0.000200214257;
+        p = 0.000100950558 + p * w;
+        p = 0.00134934322 + p * w;
+        p = -0.00367342844 + p * w;
+        p = 0.00573950773 + p * w;
+        p = -0.0076224613 + p * w;
+        p = 0.00943887047 + p * w;
+        p = 1.00167406 + p * w;
+        p = 2.83297682 + p * w;
+    }
+    return p * x;
+}
+
+// Standard normal numbers from uniform ones in (0, 1) (inverse CDF).
+fn glint_gaussian3(u: vec3<f32>) -> vec3<f32> {
+    return 1.41421356 * vec3<f32>(glint_erfinv(2.0 * u.x - 1.0), glint_erfinv(2.0 * u.y - 1.0), glint_erfinv(2.0 * u.z - 1.0));
+}
+
+fn glint_gaussian4(u: vec4<f32>) -> vec4<f32> {
+    return 1.41421356 * vec4<f32>(
+        glint_erfinv(2.0 * u.x - 1.0), glint_erfinv(2.0 * u.y - 1.0),
+        glint_erfinv(2.0 * u.z - 1.0), glint_erfinv(2.0 * u.w - 1.0),
+    );
+}
+
+// ---------------------------------------------------------------- slope table
+
+// The paper's noise texture read: the slope cell around `slope` (cells of
+// width micro_roughness in |h.xy|), offset into the 64 x 64 table by the
+// surface cell's two random numbers. Returns the uniform numbers (gates) and
+// standard normal numbers (counts) of its 4 corners (00, 01, 10, 11: lattice
+// points shared with the neighbouring cells) and the position inside it.
+struct GlintSlopeRand {
+    gate_rand: vec4<f32>,
+    gaussian: vec4<f32>,
+    lerp: vec2<f32>,
+}
+
+// (gate, count) random numbers of one lattice point of the table.
+fn glint_corner(c: vec2<f32>) -> vec2<f32> {
+    let texel = vec2<u32>(c - GLINT_TABLE_SIZE * floor(c / GLINT_TABLE_SIZE));
+    let u = glint_unit4(glint_pcg4d(vec4<u32>(texel, 0x676c69u, 0x74746572u)));
+    return vec2<f32>(u.x, 1.41421356 * glint_erfinv(2.0 * u.y - 1.0));
+}
+
+fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>) -> GlintSlopeRand {
+    let s = abs(slope) / micro_roughness + offset * GLINT_TABLE_SIZE;
+    let cell = floor(s);
+    let c00 = glint_corner(cell);
+    let c01 = glint_corner(cell + vec2<f32>(0.0, 1.0));
+    let c10 = glint_corner(cell + vec2<f32>(1.0, 0.0));
+    let c11 = glint_corner(cell + vec2<f32>(1.0, 1.0));
+    var out: GlintSlopeRand;
+    out.gate_rand = vec4<f32>(c00.x, c01.x, c10.x, c11.x);
+    out.gaussian = vec4<f32>(c00.y, c01.y, c10.y, c11.y);
+    out.lerp = s - cell;
+    return out;
+}
+
+// ---------------------------------------------------------------- binomial
+
+// The number of hits in one surface cell at the four corners of the slope
+// cell, bilinearly blended: a cell reflects at least one flake with
+// probability P1 = 1 - (1 - p)^N (smoothed gate of width 0.1 near 0 and 1),
+// then 1 + the count of the N - 1 others, a Gaussian of mean (N - 1) p and
+// deviation sqrt((N - 1) p (1 - p)), floored and clamped to [0, N].
+fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32, deviation: f32, count: f32) -> f32 {
+    var gate: vec4<f32>;
+    if smooth_width > 1e-7 {
+        gate = saturate((r.gate_rand - (one_hit + smooth_width)) / (-2.0 * smooth_width));
+    } else {
+        gate = select(vec4<f32>(0.0), vec4<f32>(1.0), r.gate_rand < vec4<f32>(one_hit));
+    }
+    let gauss = clamp(floor(r.gaussian * deviation + mean), vec4<f32>(0.0), vec4<f32>(count));
+    let hits = gate * (1.0 + gauss);
+    // Corners (00, 01, 10, 11).
+    let x0 = mix(hits.x, hits.z, r.lerp.x);
+    let x1 = mix(hits.y, hits.w, r.lerp.x);
+    return mix(x0, x1, r.lerp.y);
+}
+
+// One grid: the three simplex cells around the point, each with its own
+// flake count (log-normal around the density) and slope table offset; the
+// cells' hit fractions blended by the point's barycentric coordinates.
+// `target_ndf` = D(h) / D_max. Returns sum of weight x hits / N (its
+// expectation is weight x p).
+fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope: vec2<f32>, target_ndf: f32) -> f32 {
+    // Skewed (simplex) grid: equilateral triangles of unit side.
+    let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
+    let base = floor(skewed);
+    let f = skewed - base;
+    let fz = 1.0 - f.x - f.y;
+    let s = select(0.0, 1.0, fz < 0.0);
+    let s2 = 2.0 * s - 1.0;
+    let id = vec2<i32>(base);
+    let si = i32(s);
+    let c0 = id + vec2<i32>(si, si);
+    let c1 = id + vec2<i32>(si, 1 - si);
+    let c2 = id + vec2<i32>(1 - si, si);
+    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+
+    let bias = 2147483648u;
+    let r0 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c0.x) + bias, bitcast<u32>(c0.y) + bias, grid.seed)));
+    let r1 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c1.x) + bias, bitcast<u32>(c1.y) + bias, grid.seed)));
+    let r2 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c2.x) + bias, bitcast<u32>(c2.y) + bias, grid.seed)));
+    let t0 = glint_slope_rand(params.micro_roughness, slope, r0.yz);
+    let t1 = glint_slope_rand(params.micro_roughness, slope, r1.yz);
+    let t2 = glint_slope_rand(params.micro_roughness, slope, r2.yz);
+
+    // Flake counts: log-normal around the density, clamped as the paper.
+    let log_density = clamp(
+        glint_gaussian3(vec3<f32>(r0.x, r1.x, r2.x)) * params.density_randomization + params.log_density,
+        vec3<f32>(0.0), vec3<f32>(50.0));
+    let count = max(vec3<f32>(1e-8), grid.cell_area * exp(log_density));
+    let blended = count * grid.weight;
+
+    // Binomial law of the hits.
+    let p = params.micro_roughness * target_ndf;
+    let one_hit = vec3<f32>(1.0) - pow(vec3<f32>(1.0 - p), blended);
+    let others = max(blended - 1.0, vec3<f32>(0.0));
+    let mean = others * p;
+    let deviation = sqrt(others * (p * (1.0 - p)));
+    let smooth_width = 0.1 * saturate(one_hit * 10.0) * saturate((1.0 - one_hit) * 10.0);
+
+    let h0 = glint_cell_hits(t0, one_hit.x, smooth_width.x, mean.x, deviation.x, blended.x);
+    let h1 = glint_cell_hits(t1, one_hit.y, smooth_width.y, mean.y, deviation.y, blended.y);
+    let h2 = glint_cell_hits(t2, one_hit.z, smooth_width.z, mean.z, deviation.z, blended.z);
+    return dot(vec3<f32>(h0, h1, h2) / count, bary);
+}
+
+// ---------------------------------------------------------------- footprint
+
+// The pixel footprint's ellipse in uv: the eigen-decomposition of the
+// covariance S = du du^T + dv dv^T of the screen derivatives (the paper's
+// inverse-Jacobian construction gives the same axes without the inverse,
+// which a degenerate mapping makes singular). Returns (major axis, minor
+// length) with the minor length floored relative to the major one and
+// absolutely (a constant uv has a zero footprint).
+struct GlintEllipse {
+    major_dir: vec2<f32>,
+    major: f32,
+    minor: f32,
+}
+
+fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
+    let a = duv_dx.x * duv_dx.x + duv_dy.x * duv_dy.x;
+    let b = duv_dx.x * duv_dx.y + duv_dy.x * duv_dy.y;
+    let d = duv_dx.y * duv_dx.y + duv_dy.y * duv_dy.y;
+    let half_trace = 0.5 * (a + d);
+    let disc = sqrt(max(0.25 * (a - d) * (a - d) + b * b, 0.0));
+    let l1 = half_trace + disc;
+    let l2 = max(half_trace - disc, 0.0);
+    // Eigenvector of l1: (b, l1 - a) or (l1 - d, b), whichever is longer.
+    let e_a = vec2<f32>(b, l1 - a);
+    let e_b = vec2<f32>(l1 - d, b);
+    let e = select(e_b, e_a, dot(e_a, e_a) > dot(e_b, e_b));
+    let e_len2 = dot(e, e);
+    var out: GlintEllipse;
+    out.major_dir = select(vec2<f32>(1.0, 0.0), e * inverseSqrt(max(e_len2, 1e-37)), e_len2 > 1e-37);
+    out.major = max(sqrt(l1), 1e-12);
+    out.minor = max(sqrt(l2), out.major / (GLINT_MAX_RATIO * 4.0));
+    return out;
+}
+
+fn glint_rotate(uv: vec2<f32>, angle: f32) -> vec2<f32> {
+    let c = cos(angle);
+    let s = sin(angle);
+    return vec2<f32>(c * uv.x + s * uv.y, c * uv.y - s * uv.x);
+}
+
+// Seed of the grid at (level, rotation, anisotropy), as the paper's.
+fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
+    // HLSL fmod (sign of the dividend).
+    let t = theta - GLINT_TAU * trunc(theta / GLINT_TAU);
+    return u32(min(glint_hash13(vec3<f32>(lod, t, ratio)) * 4294967296.0, 4294967040.0));
+}
+
+fn glint_make_grid(uv: vec2<f32>, lod: f32, theta: f32, ratio: f32, weight: f32) -> GlintGrid {
+    var g: GlintGrid;
+    g.uv = glint_rotate(uv, theta) * exp2(-lod) / vec2<f32>(1.0, ratio);
+    g.seed = glint_grid_seed(lod, theta, ratio);
+    g.cell_area = ratio * exp2(2.0 * lod);
+    g.weight = weight;
+    return g;
+}
+
+// Barycentric weights of p in the tetrahedron (a, b, c, d) (Cramer's rule).
+fn glint_tetra_weights(p: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
+    let c1 = a - d;
+    let c2 = b - d;
+    let c3 = c - d;
+    let q = p - d;
+    let det = dot(c1, cross(c2, c3));
+    let inv = 1.0 / det;
+    let w1 = dot(q, cross(c2, c3)) * inv;
+    let w2 = dot(c1, cross(q, c3)) * inv;
+    let w3 = dot(c1, cross(c2, q)) * inv;
+    return vec4<f32>(w1, w2, w3, 1.0 - w1 - w2 - w3);
+}
+
+// The level of detail of the footprint's minor axis at `screen_scale`
+// pixels per cell.
+fn glint_lod(e: GlintEllipse, screen_scale: f32) -> f32 {
+    return clamp(log2(e.minor * screen_scale * 0.5), GLINT_MIN_LOD, GLINT_MAX_LOD);
+}
+
+// The four grids of the paper's tetrahedralised (rotation bin, anisotropy
+// ratio, level) space, with their weights (summing to 1).
+struct GlintGrids {
+    g0: GlintGrid,
+    g1: GlintGrid,
+    g2: GlintGrid,
+    g3: GlintGrid,
+}
+
+fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids {
+    let ratio_e = min(e.major / (e.minor + 1e-8 * e.major), GLINT_MAX_RATIO);
+    // Level of detail.
+    let lod = glint_lod(e, screen_scale);
+    let lod0 = floor(lod);
+    let lod_lerp = lod - lod0;
+    // Anisotropy ratio.
+    let ratio0 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
+    let ratio1 = ratio0 * 2.0;
+    let ratio_lerp = saturate((ratio_e - ratio0) / (ratio1 - ratio0));
+    // Rotation of the major axis from +v, in bins of pi/2 / max(ratio0, 2),
+    // split in halves: the point lies between the half-bin angles bin0 and
+    // bin1 = bin0 + q (binH between them). An ellipse's axis is defined up
+    // to pi, and its eigenvector's sign flips with the sign of S's
+    // off-diagonal term, so the bins are indexed modulo pi (pi / q = 4
+    // max(ratio0, 2) half-bins, exact): theta and theta + pi select the
+    // same grids. The paper wraps bin0 alone at 0, which leaves a seam of
+    // different grids wherever the axis is aligned with u or v (and lets
+    // the last bits of the derivatives pick the side).
+    let q = 0.5 * GLINT_HALF_PI / max(ratio0, 2.0);
+    let per_pi = 4.0 * max(ratio0, 2.0);
+    let theta = atan2(-e.major_dir.x, e.major_dir.y);
+    let theta_q = theta / q;
+    let h0 = floor(theta_q);
+    var theta_lerp = saturate(theta_q - h0);
+    let i0 = h0 - per_pi * floor(h0 / per_pi);
+    let i1 = (i0 + 1.0) - per_pi * floor((i0 + 1.0) / per_pi);
+    let theta_bin0 = i0 * q;
+    let theta_bin_h = (i0 + 0.5) * q;
+    let theta_bin1 = i1 * q;
+
+    // Tetrahedron of the (rotation, ratio, level) cell holding the point.
+    let center = ratio0 == 1.0;
+    var p0: vec3<f32>;
+    var p1: vec3<f32>;
+    var p2: vec3<f32>;
+    var p3: vec3<f32>;
+    if center {
+        // No anisotropy: the centre of the pattern, another triangulation.
+        let a = vec3<f32>(0.0, 1.0, 0.0);
+        let b = vec3<f32>(0.0, 0.0, 0.0);
+        let c = vec3<f32>(1.0, 1.0, 0.0);
+        let d = vec3<f32>(0.0, 1.0, 1.0);
+        let ee = vec3<f32>(0.0, 0.0, 1.0);
+        let f = vec3<f32>(1.0, 1.0, 1.0);
+        if lod_lerp > 1.0 - ratio_lerp {
+            if (lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8) > theta_lerp {
+                p0 = a; p1 = ee; p2 = d; p3 = f;
+            } else {
+                p0 = f; p1 = ee; p2 = c; p3 = a;
+            }
+        } else {
+            p0 = b; p1 = a; p2 = c; p3 = ee;
+        }
+        theta_lerp = theta_lerp * ratio_lerp;
+    } else {
+        let a = vec3<f32>(0.0, 1.0, 0.0);
+        let b = vec3<f32>(0.0, 0.0, 0.0);
+        let c = vec3<f32>(0.5, 1.0, 0.0);
+        let d = vec3<f32>(1.0, 0.0, 0.0);
+        let ee = vec3<f32>(1.0, 1.0, 0.0);
+        let f = vec3<f32>(0.0, 1.0, 1.0);
+        let g = vec3<f32>(0.0, 0.0, 1.0);
+        let h = vec3<f32>(0.5, 1.0, 1.0);
+        let i = vec3<f32>(1.0, 0.0, 1.0);
+        let j = vec3<f32>(1.0, 1.0, 1.0);
+        if theta_lerp < 0.5 && theta_lerp * 2.0 < ratio_lerp {
+            // Prism A.
+            if lod_lerp > 1.0 - ratio_lerp {
+                if (lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8) > theta_lerp * 2.0 / max(ratio_lerp, 1e-8) {
+                    p0 = a; p1 = f; p2 = h; p3 = g;
+                } else {
+                    p0 = c; p1 = a; p2 = h; p3 = g;
+                }
+            } else {
+                p0 = b; p1 = a; p2 = c; p3 = g;
+            }
+        } else if 1.0 - (theta_lerp - 0.5) * 2.0 > ratio_lerp {
+            // Prism B.
+            if lod_lerp < 1.0 - ratio_lerp {
+                let half_width = 0.5 * (1.0 - ratio_lerp);
+                if lod_lerp / max(1.0 - ratio_lerp, 1e-8) > (theta_lerp - (0.5 - half_width)) / max(2.0 * half_width, 1e-8) {
+                    p0 = b; p1 = g; p2 = i; p3 = c;
+                } else {
+                    p0 = d; p1 = b; p2 = c; p3 = i;
+                }
+            } else {
+                p0 = c; p1 = g; p2 = h; p3 = i;
+            }
+        } else {
+            // Prism C.
+            if lod_lerp > 1.0 - ratio_lerp {
+                if (lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8) > ((theta_lerp - 0.5) * 2.0 - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8) {
+                    p0 = c; p1 = j; p2 = h; p3 = i;
+                } else {
+                    p0 = ee; p1 = i; p2 = c; p3 = j;
+                }
+            } else {
+                p0 = d; p1 = ee; p2 = c; p3 = i;
+            }
+        }
+    }
+    let w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
+
+    // Rotation index 0, 1, 2 = bin0, binH, bin1 (x * 2); the centre's
+    // isotropic vertices (ratio index 0) are not rotated.
+    var out: GlintGrids;
+    out.g0 = glint_vertex_grid(uv, p0, w.x, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    out.g1 = glint_vertex_grid(uv, p1, w.y, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    out.g2 = glint_vertex_grid(uv, p2, w.z, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    out.g3 = glint_vertex_grid(uv, p3, w.w, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    return out;
+}
+
+fn glint_vertex_grid(
+    uv: vec2<f32>, p: vec3<f32>, weight: f32, center: bool,
+    bin0: f32, bin_h: f32, bin1: f32, lod0: f32, ratio0: f32,
+) -> GlintGrid {
+    let rot_index = p.x * 2.0;
+    var theta = select(select(bin1, bin_h, rot_index < 1.5), bin0, rot_index < 0.5);
+    if center && p.y == 0.0 {
+        theta = 0.0;
+    }
+    let ratio = select(ratio0, ratio0 * 2.0, p.y > 0.5);
+    let lod = lod0 + p.z;
+    return glint_make_grid(uv, lod, theta, ratio, weight);
+}
+
+// The single grid the fast tier reads: the reference's grid of largest
+// weight (same uv, seed and cells: the same flakes), given weight 1 so that
+// it alone is an unbiased estimate of the target NDF.
+fn glint_dominant_grid(grids: GlintGrids) -> GlintGrid {
+    var g = grids.g0;
+    if grids.g1.weight > g.weight {
+        g = grids.g1;
+    }
+    if grids.g2.weight > g.weight {
+        g = grids.g2;
+    }
+    if grids.g3.weight > g.weight {
+        g = grids.g3;
+    }
+    g.weight = 1.0;
+    return g;
+}
+
+// ---------------------------------------------------------------- NDF
+
+// The glint NDF at the tangent-space half vector's slope h.xy, for a target
+// NDF value d (D(h)) and its maximum d_max: sum of the grids' hit fractions
+// / s x D_max, at most 20 D_max (the paper's guard at grazing footprints).
+fn glint_ndf_reference(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    let target_ndf = d / d_max;
+    let sum = glint_sample_grid(params, grids.g0, slope, target_ndf)
+        + glint_sample_grid(params, grids.g1, slope, target_ndf)
+        + glint_sample_grid(params, grids.g2, slope, target_ndf)
+        + glint_sample_grid(params, grids.g3, slope, target_ndf);
+    return min(sum / params.micro_roughness, 20.0) * d_max;
+}
+
+fn glint_ndf_single(params: GlintParams, grid: GlintGrid, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    let sum = glint_sample_grid(params, grid, slope, d / d_max);
+    return min(sum / params.micro_roughness, 20.0) * d_max;
+}
