@@ -4,7 +4,9 @@
 //! in this process, exactly as `weft serve` serves it.
 //!
 //! - every shipped material's default render in the page matches `weft
-//!   preview`'s (weft-render on lavapipe) within [`FLIP_BOUND`];
+//!   preview`'s (weft-render on lavapipe) within [`FLIP_BOUND`] (glints, whose
+//!   sparkles move with the last bits of the maths, box-filtered:
+//!   [`STOCHASTIC`]);
 //! - moving a slider changes the picture (uniform rewritten, no pipeline
 //!   swap), a keyword switches the variant (pipeline swapped), a preset
 //!   applies, the Chinese switch changes labels;
@@ -34,6 +36,20 @@ use weft_serve::{ServeOptions, Server};
 /// against Mesa's lavapipe; the bound is the goldens' threshold, about 3× that.
 const FLIP_BOUND: f32 = 0.01;
 const SIZE: u32 = 256;
+
+/// Materials whose picture is a discontinuous function of float inputs:
+/// glints gate each flake on a hashed cell and a random threshold, so the
+/// last-bit differences between SwiftShader's and llvmpipe's transcendental
+/// functions move single sparkles (glitter measured 0.0147 full-resolution
+/// FLIP from 0.7 % of its pixels). They are compared as the eye sees a
+/// sparkle field: box-filtered over [`STOCHASTIC_CELL`] pixels (the default
+/// flake cell is 2 px), held to the same [`FLIP_BOUND`], and at most
+/// [`STOCHASTIC_MOVED`] of the full-resolution pixels may differ by more than
+/// 16/255 in a channel. A wrong binding, uniform or lighting term still
+/// changes the filtered picture and fails.
+const STOCHASTIC: &[&str] = &["glitter"];
+const STOCHASTIC_CELL: u32 = 4;
+const STOCHASTIC_MOVED: f64 = 0.01;
 
 fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -227,6 +243,48 @@ fn flip_mean(a: &HdrImage, b: &HdrImage) -> f32 {
     weft_golden::flip(&ldr(a), &ldr(b), a.width, a.height).mean
 }
 
+/// An sRGB8 image box-filtered over `cell` x `cell` pixels.
+fn box_filtered(rgba: &[u8], width: u32, height: u32, cell: u32) -> Vec<u8> {
+    let (w, h) = (width / cell, height / cell);
+    let mut out = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = [0u32; 4];
+            for dy in 0..cell {
+                for dx in 0..cell {
+                    let i = (((y * cell + dy) * width + x * cell + dx) * 4) as usize;
+                    for c in 0..4 {
+                        sum[c] += u32::from(rgba[i + c]);
+                    }
+                }
+            }
+            out.extend(sum.map(|s| ((s + cell * cell / 2) / (cell * cell)) as u8));
+        }
+    }
+    out
+}
+
+/// For a [`STOCHASTIC`] material: the filtered FLIP and the fraction of
+/// pixels that moved visibly.
+fn stochastic_difference(a: &HdrImage, b: &HdrImage) -> (f32, f64) {
+    let (la, lb) = (ldr(a), ldr(b));
+    let moved = la
+        .chunks_exact(4)
+        .zip(lb.chunks_exact(4))
+        .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 16))
+        .count() as f64
+        / f64::from(a.width * a.height);
+    let cell = STOCHASTIC_CELL;
+    let filtered = weft_golden::flip(
+        &box_filtered(&la, a.width, a.height, cell),
+        &box_filtered(&lb, b.width, b.height, cell),
+        a.width / cell,
+        a.height / cell,
+    )
+    .mean;
+    (filtered, moved)
+}
+
 fn preview(material: &str) -> HdrImage {
     let meta = repo().join(format!("generated/{material}/{material}.meta.json"));
     let m = weft_render::Material::load(&meta).unwrap();
@@ -279,6 +337,23 @@ fn default_render_matches_weft_preview_for_every_material() {
             "{name} ({}): FLIP mean {mean:.5}",
             variant.as_str().unwrap()
         ));
+        if STOCHASTIC.contains(&name.as_str()) {
+            let (filtered, moved) = stochastic_difference(&lavapipe, &browser);
+            report.push(format!(
+                "  {name}: {STOCHASTIC_CELL}x{STOCHASTIC_CELL}-filtered FLIP mean {filtered:.5}, {:.2} % of pixels moved",
+                moved * 100.0
+            ));
+            if filtered.is_nan() || filtered > FLIP_BOUND || moved > STOCHASTIC_MOVED {
+                failures.push(format!(
+                    "{name}: filtered FLIP mean {filtered:.4} (bound {FLIP_BOUND}), {:.2} % of pixels moved (bound {:.0} %) (page {}, weft preview {})",
+                    moved * 100.0,
+                    STOCHASTIC_MOVED * 100.0,
+                    save(&browser, &format!("{name}.page.png")).display(),
+                    save(&lavapipe, &format!("{name}.preview.png")).display()
+                ));
+            }
+            continue;
+        }
         if mean.is_nan() || mean > FLIP_BOUND {
             failures.push(format!(
                 "{name}: FLIP mean {mean:.4} > {FLIP_BOUND} (page {}, weft preview {})",
