@@ -14,8 +14,9 @@
 //               min(1 - max3(C) E(n.v), 1 - max3(C) E(n.l)) (the velvet
 //               library); plus a Kajiya-Kay (1989) strand lobe along the
 //               combed direction T in its exact cone form
-//               (sin_l sin_v - cos_l cos_v)^p sin_l, normalised by
-//               (p + 2) / 2pi; ambient diffuse (SH) scaled by the view-only
+//               (sin_l sin_v - cos_l cos_v)^p sin_l, the longitudinal
+//               lobe normalised (sqrt((2p + 1) / 4pi)), with Schlick
+//               Fresnel on F0; ambient diffuse (SH) scaled by the view-only
 //               form, environment sheen C E(n.v) x prefiltered radiance.
 //   fast      = an approximation of the reference: the same sheen and
 //               ambient; the view-only albedo scaling for direct light too
@@ -208,10 +209,18 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
             let t_dot_h = dot(t, h);
             strand = pow(max(1.0 - t_dot_h * t_dot_h, 0.0), 0.5 * p);
         }
-        // Normalised lobe (p + 2) / 2pi; the body shadows the fibres where
-        // the light is below the skin's horizon (n.l).
-        let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * mix(vec3<f32>(1.0), base, metallic);
-        let strand_lobe = strand_color * (saturate(material.strand_strength) * (p + 2.0) * 0.5 * WEFT_INV_PI * strand * n_dot_l);
+        // The longitudinal lobe cos^p normalised to unit integral over the
+        // angle from the cone, 1 / int cos^p = Gamma(p/2 + 1) / (sqrt(pi)
+        // Gamma(p/2 + 1/2)) ~ sqrt((2p + 1) / 4pi) (within 2% for p >= 2);
+        // the body shadows the fibres where the light is below the skin's
+        // horizon (n.l).
+        let norm = sqrt((2.0 * p + 1.0) * 0.25 * WEFT_INV_PI);
+        // The fibre's surface reflection (the R lobe of hair models): Schlick
+        // Fresnel on the metallic-workflow F0, so dielectric fibres reflect
+        // ~4% at normal incidence; strand colour and strength scale it.
+        let fresnel = weft_f_schlick(f0, l_dot_h);
+        let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * fresnel;
+        let strand_lobe = strand_color * (max(material.strand_strength, 0.0) * norm * strand * n_dot_l);
         let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
         let direct = (sheen + base_direct + strand_lobe) * light;
         let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * e_v;
