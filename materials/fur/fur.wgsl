@@ -18,17 +18,23 @@
 //               lobe normalised (sqrt((2p + 1) / 4pi)), with Schlick
 //               Fresnel on F0; ambient diffuse (SH) scaled by the view-only
 //               form, environment sheen C E(n.v) x prefiltered radiance.
-//   fast      = an approximation of the reference: the same sheen and
-//               ambient; the view-only albedo scaling for direct light too
-//               (one table fetch); the strand lobe in the real-time
-//               half-vector form sin(T, H)^p (no sqrt pair, no sin_l).
+//   fast      = an approximation of the reference: the same sheen, strand
+//               lobe and ambient; the view-only albedo scaling for direct
+//               light too (one table fetch instead of two). The half-vector
+//               strand form was measured and rejected (README).
 //   seed      = a look: seed 003's lighting "put on the fur": BRDF1 with
 //               FabricD in place of GGX (Schlick F, Schlick-GGX V), Lambert
 //               diffuse, the fabric scatter rim added unlit, SH ambient, no
 //               indirect specular, no strand highlight.
 // Shell alpha (all tiers, seed 001 sec. 8.2.6 and seed 003):
-//   step(mix(cut-off start, cut-off end, o or o^2), noise) x (1 - o)
-//   x (1 - edge fade (1 - n.v)), the step antialiased over one pixel.
+//   a = step(mix(cut-off start, cut-off end, o or o^2), noise) x (1 - o)
+//   x (1 - edge fade (1 - n.v)), the step antialiased over one pixel, as
+//   the opacity of 1/20 of the fur (the seed's 20 shells): a shell of 1/n
+//   blends with 1 - (1 - a)^(20/n).
+
+// The seed's shell count (seed 001 sec. 8.2.5: "统一设置 20 层"): the
+// shell opacity is defined per 1/20 of the fur.
+const FUR_SEED_SHELLS: f32 = 20.0;
 
 // Vertex inputs the material requires (position, normal, uv0).
 struct FurInput {
@@ -191,23 +197,19 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
         let t_dot_l = clamp(dot(t, l), -1.0, 1.0);
         let t_dot_v = clamp(dot(t, v), -1.0, 1.0);
         let sin_l = sqrt(max(1.0 - t_dot_l * t_dot_l, 0.0));
-        var scaling: f32;
-        var strand: f32;
+        // Kajiya-Kay: cos of the angle between v and the mirror cone of l
+        // around T, = sin_l sin_v - cos_l cos_v; times sin_l (the fibre's
+        // projected width towards the light). Both tiers: the half-vector
+        // form sin(T, H)^(4p) sin_l (one square root less) was measured
+        // against it and rejected (worst FLIP 0.144 over the error grid;
+        // README).
+        let sin_v = sqrt(max(1.0 - t_dot_v * t_dot_v, 0.0));
+        let cone = max(sin_l * sin_v - t_dot_l * t_dot_v, 0.0);
+        let strand = pow(cone, p) * sin_l;
+        var scaling = ambient_scaling;
         if WEFT_TIER == TIER_REFERENCE {
             let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
             scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
-            // Kajiya-Kay: cos of the angle between v and the mirror cone of l
-            // around T, = sin_l sin_v - cos_l cos_v; times sin_l (the fibre's
-            // projected width towards the light).
-            let sin_v = sqrt(max(1.0 - t_dot_v * t_dot_v, 0.0));
-            let cone = max(sin_l * sin_v - t_dot_l * t_dot_v, 0.0);
-            strand = pow(cone, p) * sin_l;
-        } else {
-            scaling = ambient_scaling;
-            // sin(T, H)^p = (1 - (T.H)^2)^(p / 2): the same peak direction
-            // (T.H = 0 exactly where v lies on the cone), no square roots.
-            let t_dot_h = dot(t, h);
-            strand = pow(max(1.0 - t_dot_h * t_dot_h, 0.0), 0.5 * p);
         }
         // The longitudinal lobe cos^p normalised to unit integral over the
         // angle from the cone, 1 / int cos^p = Gamma(p/2 + 1) / (sqrt(pi)
@@ -253,6 +255,13 @@ fn fs_shell(in: FurVaryings) -> @location(0) vec4<f32> {
     let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
     let n = weft_safe_normalize(in.world_normal, v);
     let fade = 1.0 - saturate(material.edge_fade) * (1.0 - saturate(dot(n, v)));
+    // The seed's alpha is the opacity of one of its 20 shells, a slab of
+    // 1/20 of the fur; a shell of 1/n of it keeps 1 - (1 - a)^(20/n)
+    // (Beer-Lambert), so the look at 20 shells is the seed's and more shells
+    // converge to the same fur instead of piling up opacity.
     let a = saturate(coverage * (1.0 - o) * fade * shaded.a);
-    return vec4<f32>(shaded.rgb, a);
+    let slab = FUR_SEED_SHELLS / f32(max(material.shell_count, 1));
+    let keep = 1.0 - a;
+    let alpha = 1.0 - select(pow(keep, slab), 0.0, keep <= 0.0);
+    return vec4<f32>(shaded.rgb, alpha);
 }

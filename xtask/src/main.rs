@@ -462,20 +462,22 @@ fn bench_shading(
         force_cpu_timer: options.force_cpu_timer,
         ..Default::default()
     };
-    let shells = match weft_golden::shells::run(
-        &generated,
-        &options.materials,
-        &shell_options,
-        &mut |s| eprintln!("{s}"),
-    ) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: shell bench: {e}");
-            return ExitCode::FAILURE;
-        }
-    };
+    let shells =
+        match weft_golden::shells::run(&generated, &options.materials, &shell_options, &mut |s| {
+            eprintln!("{s}")
+        }) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("error: shell bench: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
     for r in &shells {
-        println!("\n{} shells:\n{}", r.material, weft_golden::shells::markdown_table(r));
+        println!(
+            "\n{} shells:\n{}",
+            r.material,
+            weft_golden::shells::markdown_table(r)
+        );
     }
     if write {
         match shading::write_reports(&generated.join("reports"), &report, command) {
