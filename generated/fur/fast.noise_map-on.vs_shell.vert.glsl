@@ -1,6 +1,5 @@
 #version 450 core
-uniform uint naga_vs_first_instance;
-
+#extension GL_ARB_shader_draw_parameters : require
 struct WeftFrame {
     mat4x4 view_proj;
     mat4x4 view;
@@ -257,7 +256,7 @@ float fur_strand_exponent(float smoothness) {
 
 void main() {
     FurInput in_1 = FurInput(_p2vs_location0, _p2vs_location1, _p2vs_location3);
-    uint instance = (uint(gl_InstanceID) + naga_vs_first_instance);
+    uint instance = (uint(gl_InstanceID) + uint(gl_BaseInstanceARB));
     int _e4 = _group_1_binding_0_vs.shell_count;
     float count = float(max(_e4, 1));
     FurVaryings _e12 = fur_vertex(in_1, ((float(instance) + 0.5) / count));
