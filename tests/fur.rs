@@ -51,7 +51,7 @@ fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
         ..PreviewOptions::default()
     };
     let env = EnvironmentMaps::sky(&preview.sky_params());
-    let renderer = Renderer::new(gpu, &env, &luts).expect("renderer");
+    let mut renderer = Renderer::new(gpu, &env, &luts).expect("renderer");
     let options: RenderOptions = preview.render_options();
     let mut material = material;
     let mut prepared = renderer.prepare(&material, &options).expect("prepare");
