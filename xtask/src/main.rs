@@ -470,6 +470,29 @@ fn bench_shading(
     print!("{}", shading::markdown_table(&report.materials));
     print!("{}", shading::floor_line(&report));
     println!("\nbench shading: {:.1} s", report.seconds);
+    // Materials drawing instances from a parameter (shells): the count
+    // against cost and error (weft_golden::shells).
+    let shell_options = weft_golden::shells::ShellOptions {
+        force_cpu_timer: options.force_cpu_timer,
+        ..Default::default()
+    };
+    let shells =
+        match weft_golden::shells::run(&generated, &options.materials, &shell_options, &mut |s| {
+            eprintln!("{s}")
+        }) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("error: shell bench: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
+    for r in &shells {
+        println!(
+            "\n{} shells:\n{}",
+            r.material,
+            weft_golden::shells::markdown_table(r)
+        );
+    }
     if write {
         match shading::write_reports(&generated.join("reports"), &report, command) {
             Ok(files) => println!("wrote {} files in generated/reports/", files.len()),
@@ -477,6 +500,17 @@ fn bench_shading(
                 eprintln!("error: cannot write reports: {e}");
                 return ExitCode::FAILURE;
             }
+        }
+        match weft_golden::shells::write_reports(&generated.join("reports"), &shells, command) {
+            Ok(files) => println!("wrote {} shell reports in generated/reports/", files.len()),
+            Err(e) => {
+                eprintln!("error: cannot write the shell reports: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+        if let Err(e) = write_shell_tables(root, &shells) {
+            eprintln!("error: cannot update the shell tables: {e}");
+            return ExitCode::FAILURE;
         }
         if let Err(e) = write_tier_tables(root, &report.materials) {
             eprintln!("error: cannot update the tier tables: {e}");
@@ -534,6 +568,28 @@ fn bench_film(root: &Path, write: bool, command: &str) -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// Rewrites each measured material README's shell table
+/// (`<!-- weft:shells:… -->`).
+fn write_shell_tables(
+    root: &Path,
+    reports: &[weft_golden::shells::ShellReport],
+) -> Result<(), String> {
+    for r in reports {
+        let path = root.join("materials").join(&r.material).join("README.md");
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        let table = weft_golden::shells::markdown_table(r);
+        if let Some(new) = weft_golden::shading::replace_marked(&text, "shells", &table)
+            && new != text
+        {
+            std::fs::write(&path, new).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("updated the shell table in {}", path.display());
+        }
+    }
+    Ok(())
 }
 
 /// Rewrites the measured tier tables between their markers: the README's

@@ -145,7 +145,14 @@ pub fn emit_glsl(
     let points = crate::engine_binding::glsl_binding_points(module);
     let options = glsl::Options {
         version: glsl::Version::Desktop(450),
-        writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE,
+        // DRAW_PARAMETERS: `@builtin(instance_index)` (instanced passes such
+        // as fur shells) becomes gl_InstanceID + gl_BaseInstanceARB
+        // (GL_ARB_shader_draw_parameters, core in GL 4.6) instead of a
+        // loose `uniform uint naga_vs_first_instance` that has no binding
+        // point, no table entry and that glslang rejects. Shaders without
+        // instance_index are unchanged.
+        writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE
+            | glsl::WriterFlags::DRAW_PARAMETERS,
         binding_map: points.iter().map(|(rb, b)| (*rb, *b)).collect(),
         ..glsl::Options::default()
     };

@@ -13,6 +13,7 @@ pub mod project;
 pub mod scene_bench;
 pub mod scenes;
 pub mod shading;
+pub mod shells;
 
 use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};

@@ -1,0 +1,364 @@
+//! The shell-count bench: for a material whose pass takes its instance count
+//! from an `int` parameter (fur or fuzz shells), the error and cost of
+//! drawing it with fewer instances than a reference count, at several
+//! screen sizes.
+//!
+//! Each count in [`ShellOptions::counts`] is drawn at the material's default
+//! tier and values and compared with [`ShellOptions::reference`] instances
+//! (FLIP mean and 99th percentile over object pixels, as the shading bench);
+//! each frame is timed like the shading bench. The recommended count for a
+//! screen size is the smallest measured count whose FLIP mean is at most
+//! [`ShellOptions::flip_bar`].
+//!
+//! Written by `cargo xtask bench shading --write` and `cargo xtask
+//! regenerate --reports` to `generated/reports/<name>.shells.md`, and into
+//! the material README between `<!-- weft:shells:begin -->` and
+//! `<!-- weft:shells:end -->`.
+
+use crate::shading::{ImageError, image_error, quantile};
+use std::fmt::Write as _;
+use std::path::Path;
+use weft_meta::{InstanceCount, MaterialMetadata};
+use weft_render::{
+    Background, EnvironmentMaps, Luts, Material, PreviewOptions, RenderOptions, Renderer,
+    SceneKind, TimingOptions,
+};
+
+/// What the shell bench draws.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShellOptions {
+    /// Square image sizes in pixels (the sphere spans about 0.85 of it).
+    pub sizes: Vec<u32>,
+    /// Counts compared with the reference.
+    pub counts: Vec<u32>,
+    /// The reference count (clamped to the parameter's range).
+    pub reference: u32,
+    pub scene: SceneKind,
+    /// Timed frames per count and size (the median is reported).
+    pub frames: u32,
+    /// Untimed frames before them.
+    pub warmup: u32,
+    pub force_cpu_timer: bool,
+    /// The FLIP mean a recommended count must not exceed.
+    pub flip_bar: f64,
+    /// The FLIP 99th percentile a recommended count must not exceed (the
+    /// worst pixels: gaps between shells at the rim).
+    pub flip_p99_bar: f64,
+}
+
+impl Default for ShellOptions {
+    fn default() -> Self {
+        ShellOptions {
+            sizes: vec![64, 128, 256, 512],
+            counts: vec![4, 8, 16, 32, 64],
+            reference: 128,
+            scene: SceneKind::Sphere,
+            frames: 5,
+            warmup: 1,
+            force_cpu_timer: false,
+            flip_bar: 0.03,
+            flip_p99_bar: 0.1,
+        }
+    }
+}
+
+/// One count at one size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShellCell {
+    pub size: u32,
+    pub count: u32,
+    /// Median frame time, ms.
+    pub ms: f64,
+    /// Error against the reference count at the same size.
+    pub error: ImageError,
+}
+
+/// The bench of one material.
+#[derive(Clone, Debug)]
+pub struct ShellReport {
+    pub material: String,
+    pub inputs_hash: String,
+    /// The int parameter that sets the instance count.
+    pub parameter: String,
+    pub tier: String,
+    pub reference: u32,
+    pub adapter: String,
+    pub timer: String,
+    pub options: ShellOptions,
+    /// Per size: the reference's median frame time, ms.
+    pub reference_ms: Vec<(u32, f64)>,
+    pub cells: Vec<ShellCell>,
+}
+
+/// The int parameter a pass of `meta` takes its instance count from.
+pub fn instance_parameter(meta: &MaterialMetadata) -> Option<&str> {
+    meta.passes.iter().find_map(|p| match &p.instances {
+        InstanceCount::Parameter(name) => Some(name.as_str()),
+        InstanceCount::Fixed(_) => None,
+    })
+}
+
+/// Measures every material under `generated` that draws instances from a
+/// parameter (only those in `names`, when not empty).
+pub fn run(
+    generated: &Path,
+    names: &[String],
+    options: &ShellOptions,
+    log: &mut dyn FnMut(&str),
+) -> Result<Vec<ShellReport>, String> {
+    let selected: Vec<_> = crate::materials(generated)?
+        .into_iter()
+        .filter(|(_, m)| names.is_empty() || names.contains(&m.name))
+        .filter(|(_, m)| instance_parameter(m).is_some())
+        .collect();
+    if selected.is_empty() {
+        return Ok(Vec::new());
+    }
+    let e = |e: weft_render::Error| e.to_string();
+    let gpu = weft_render::Gpu::new().map_err(e)?;
+    let adapter = gpu.describe();
+    let luts = Luts::load_dir(generated).map_err(e)?;
+    let env = EnvironmentMaps::sky(&PreviewOptions::default().sky_params());
+    let mut renderer = Renderer::new(gpu, &env, &luts).map_err(e)?;
+    let mut reports = Vec::new();
+    for (meta_path, meta) in &selected {
+        let parameter = instance_parameter(meta).expect("filtered").to_string();
+        let what = |err: weft_render::Error| format!("{}: {err}", meta.name);
+        let range = meta
+            .parameters
+            .iter()
+            .find(|p| p.name == parameter)
+            .and_then(|p| p.range)
+            .unwrap_or([1.0, 4096.0]);
+        let clamp = |n: u32| (f64::from(n)).clamp(range[0], range[1]) as u32;
+        let reference = clamp(options.reference);
+        let mut counts: Vec<u32> = options
+            .counts
+            .iter()
+            .map(|&n| clamp(n))
+            .filter(|&n| n < reference)
+            .collect();
+        counts.dedup();
+        let mut material = Material::load(meta_path).map_err(what)?;
+        let tier = material.tier().to_string();
+        let mut report = ShellReport {
+            material: meta.name.clone(),
+            inputs_hash: meta.inputs_hash.clone(),
+            parameter: parameter.clone(),
+            tier,
+            reference,
+            adapter: adapter.clone(),
+            timer: String::new(),
+            options: options.clone(),
+            reference_ms: Vec::new(),
+            cells: Vec::new(),
+        };
+        for &size in &options.sizes {
+            let preview = PreviewOptions {
+                scene: options.scene,
+                width: size,
+                height: size,
+                ..PreviewOptions::default()
+            };
+            let scene = preview.scene();
+            let render_options = RenderOptions {
+                background: Background::Color([0.0; 4]),
+                ..preview.render_options()
+            };
+            let mut prepared = renderer.prepare(&material, &render_options).map_err(what)?;
+            let timing = TimingOptions {
+                warmup: options.warmup,
+                frames: options.frames.max(1),
+                force_cpu_timer: options.force_cpu_timer,
+            };
+            let mut draw = |n: u32, material: &mut Material| -> Result<_, String> {
+                material
+                    .set(&parameter, i64::from(n))
+                    .and_then(|()| renderer.update(&mut prepared, material))
+                    .and_then(|()| {
+                        renderer.time_frames(&prepared, &scene, &render_options, &timing)
+                    })
+                    .map_err(what)
+            };
+            let r = draw(reference, &mut material)?;
+            report.timer = r.timer.name().into();
+            report.reference_ms.push((size, quantile(&r.ms, 0.5)));
+            log(&format!(
+                "{} {size}px: {reference} shells {:.2} ms",
+                meta.name,
+                quantile(&r.ms, 0.5)
+            ));
+            for &count in &counts {
+                let t = draw(count, &mut material)?;
+                let cell = ShellCell {
+                    size,
+                    count,
+                    ms: quantile(&t.ms, 0.5),
+                    error: image_error(&r.image, &t.image),
+                };
+                log(&format!(
+                    "{} {size}px: {count} shells {:.2} ms, FLIP mean {:.4}",
+                    meta.name, cell.ms, cell.error.flip_mean
+                ));
+                report.cells.push(cell);
+            }
+            material.reset().map_err(what)?;
+        }
+        reports.push(report);
+    }
+    Ok(reports)
+}
+
+/// The smallest measured count at `size` whose FLIP mean and 99th
+/// percentile are within their bars; None when none is.
+pub fn recommended(report: &ShellReport, size: u32) -> Option<u32> {
+    report
+        .cells
+        .iter()
+        .filter(|c| {
+            c.size == size
+                && c.error.flip_mean <= report.options.flip_bar
+                && c.error.flip_p99 <= report.options.flip_p99_bar
+        })
+        .map(|c| c.count)
+        .min()
+}
+
+/// The measured table (markdown): one row per size, FLIP mean and cost per
+/// count, the recommended count.
+pub fn markdown_table(report: &ShellReport) -> String {
+    let mut counts: Vec<u32> = report.cells.iter().map(|c| c.count).collect();
+    counts.sort_unstable();
+    counts.dedup();
+    let mut md = String::new();
+    let _ = write!(md, "| image (sphere ≈ 0.85 of it) |");
+    for n in &counts {
+        let _ = write!(md, " {n} shells |");
+    }
+    let _ = writeln!(md, " {} (reference) | recommended |", report.reference);
+    let _ = write!(md, "|---|");
+    for _ in &counts {
+        let _ = write!(md, "---|");
+    }
+    let _ = writeln!(md, "---|---|");
+    for &size in &report.options.sizes {
+        let _ = write!(md, "| {size}² px |");
+        for n in &counts {
+            match report
+                .cells
+                .iter()
+                .find(|c| c.size == size && c.count == *n)
+            {
+                Some(c) => {
+                    let _ = write!(
+                        md,
+                        " FLIP {:.4} (p99 {:.3}), {:.2} ms |",
+                        c.error.flip_mean, c.error.flip_p99, c.ms
+                    );
+                }
+                None => {
+                    let _ = write!(md, " – |");
+                }
+            }
+        }
+        let ms = report
+            .reference_ms
+            .iter()
+            .find(|(s, _)| *s == size)
+            .map_or(f64::NAN, |(_, ms)| *ms);
+        let rec = recommended(report, size).map_or_else(
+            || format!("> {}", counts.last().copied().unwrap_or(0)),
+            |n| n.to_string(),
+        );
+        let _ = writeln!(md, " {ms:.2} ms | {rec} |");
+    }
+    let _ = writeln!(
+        md,
+        "\nMeasured on {} ({}): `{}` at its defaults, tier `{}`, `{}` set to each count, on the {}; FLIP mean (and 99th percentile) over object pixels against {} shells at the same size; median frame time of {} frames. Recommended: the fewest shells with FLIP mean ≤ {} and FLIP p99 ≤ {}. Inputs hash {}.",
+        report.adapter,
+        report.timer,
+        report.material,
+        report.tier,
+        report.parameter,
+        report.options.scene.name(),
+        report.reference,
+        report.options.frames.max(1),
+        report.options.flip_bar,
+        report.options.flip_p99_bar,
+        report.inputs_hash
+    );
+    md
+}
+
+/// `<name>.shells.md`.
+pub fn markdown_report(report: &ShellReport, command: &str) -> String {
+    format!(
+        "# {}: shell count against cost and error\n\nGenerated by `{command}` (timings vary by machine; do not edit).\n\n{}",
+        report.material,
+        markdown_table(report)
+    )
+}
+
+/// Writes `<name>.shells.md` per report into `dir`; returns the paths.
+pub fn write_reports(
+    dir: &Path,
+    reports: &[ShellReport],
+    command: &str,
+) -> Result<Vec<std::path::PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut written = Vec::new();
+    for r in reports {
+        let path = dir.join(format!("{}.shells.md", r.material));
+        std::fs::write(&path, markdown_report(r, command))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cell(size: u32, count: u32, flip: f64) -> ShellCell {
+        ShellCell {
+            size,
+            count,
+            ms: 1.0,
+            error: ImageError {
+                flip_mean: flip,
+                flip_p99: flip,
+                rel_rmse: flip,
+                pixels: 1,
+            },
+        }
+    }
+
+    #[test]
+    fn the_recommendation_is_the_fewest_shells_within_the_bar() {
+        let report = ShellReport {
+            material: "m".into(),
+            inputs_hash: String::new(),
+            parameter: "n".into(),
+            tier: "fast".into(),
+            reference: 128,
+            adapter: String::new(),
+            timer: String::new(),
+            options: ShellOptions::default(),
+            reference_ms: vec![(128, 2.0)],
+            cells: vec![
+                cell(128, 4, 0.2),
+                cell(128, 8, 0.03),
+                cell(128, 16, 0.02),
+                cell(256, 4, 0.3),
+                cell(256, 8, 0.06),
+                cell(256, 16, 0.04),
+            ],
+        };
+        assert_eq!(recommended(&report, 128), Some(8));
+        assert_eq!(recommended(&report, 256), None);
+        let md = markdown_table(&report);
+        assert!(md.contains("| 256² px |"), "{md}");
+        assert!(md.contains("| > 16 |"), "{md}");
+    }
+}

@@ -1,0 +1,605 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_4 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_4 sh;
+    metal::float4 params;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    metal::float4 base_map_st;
+    float metallic;
+    float smoothness;
+    char _pad4[8];
+    metal::float4 spot_color;
+    metal::float4 noise_map_st;
+    metal::float2 strand_density;
+    float fur_length;
+    float height_scale;
+    float fur_occlusion;
+    float cutoff_start;
+    float cutoff_end;
+    float edge_fade;
+    uint tapered_tips;
+    int shell_count;
+    char _pad15[8];
+    metal::packed_float3 force_direction;
+    float force_strength;
+    float force_map_scale;
+    char _pad18[12];
+    metal::float4 sheen_color;
+    float scatter_scale;
+    char _pad20[12];
+    metal::float4 strand_color;
+    float strand_strength;
+    char _pad22[12];
+};
+struct FurInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float2 uv0_;
+    char _pad3[8];
+};
+struct FurVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float3 strand;
+    metal::float2 uv0_;
+    float offset;
+    char _pad6[4];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+constant float FUR_SEED_SHELLS = 20.0;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_max3_(
+    metal::float3 v
+) {
+    return metal::max(v.x, metal::max(v.y, v.z));
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v_1,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v_1, v_1);
+    return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+float weft_sheen_clamp_roughness(
+    float sheen_roughness
+) {
+    return metal::clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
+}
+
+float weft_d_charlie(
+    float n_dot_h,
+    float sheen_roughness_1
+) {
+    float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = 1.0 / _e2;
+    float noh = metal::saturate(n_dot_h);
+    float sin2_ = metal::max((1.0 - noh) * (1.0 + noh), 0.0);
+    return ((2.0 + inv_r) * metal::pow(sin2_, 0.5 * inv_r)) * 0.15915494;
+}
+
+float weft_sheen_l(
+    float x_1,
+    float r
+) {
+    float t = (1.0 - r) * (1.0 - r);
+    float a = metal::mix(21.5473, 25.3245, t);
+    float b = metal::mix(3.82987, 3.32435, t);
+    float c_1 = metal::mix(0.19823, 0.16801, t);
+    float d = metal::mix(-1.9776, -1.27393, t);
+    float e_1 = metal::mix(-4.32054, -4.85967, t);
+    return ((a / (1.0 + (b * metal::pow(metal::max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1;
+}
+
+float weft_sheen_lambda(
+    float cos_theta,
+    float r_1
+) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = metal::exp(_e3);
+    float _e6 = weft_sheen_l(0.5, r_1);
+    float _e11 = weft_sheen_l(1.0 - _e2, r_1);
+    float hi = metal::exp((2.0 * _e6) - _e11);
+    return (_e2 < 0.5) ? lo : hi;
+}
+
+float weft_v_charlie(
+    float n_dot_v,
+    float n_dot_l,
+    float sheen_roughness_2
+) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda(_e4, _e3);
+    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = (1.0 + _e6) + _e9;
+    return 1.0 / (((g_inv * 4.0) * _e4) * _e5);
+}
+
+metal::float3 weft_sheen_charlie(
+    metal::float3 sheen_color,
+    float n_dot_h_1,
+    float n_dot_v_1,
+    float n_dot_l_1,
+    float sheen_roughness_3
+) {
+    float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = _e5 * _e6;
+    return metal::max(sheen_color, metal::float3(0.0)) * (lobe * metal::saturate(n_dot_l_1));
+}
+
+float weft_sheen_albedo_scaling_view(
+    metal::float3 sheen_color_1,
+    float e_v
+) {
+    float _e2 = weft_max3_(sheen_color_1);
+    return metal::saturate(1.0 - (metal::saturate(_e2) * metal::saturate(e_v)));
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_4 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n.x) * n.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n.y) * n.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n.x) * n.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness,
+    constant WeftFrame& weft_frame
+) {
+    float r_2 = metal::saturate(roughness);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r_2 * (1.7 - (0.7 * r_2))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_1,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_1, weft_frame);
+    metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_2.xyz, metal::float3(0.0));
+}
+
+float weft_sheen_albedo(
+    float n_dot_x,
+    float sheen_roughness_4,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut
+) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e3);
+    metal::float4 _e8 = weft_sheen_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return metal::saturate(_e8.x);
+}
+
+metal::float2 fur_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+FurVaryings fur_vertex(
+    FurInput in_4,
+    float offset,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> height_map,
+    metal::texture2d<float, metal::access::sample> force_map
+) {
+    FurVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float3 world = (model * metal::float4(in_4.position, 1.0)).xyz;
+    metal::float3 _e24 = weft_safe_normalize(normal3_ * in_4.normal, metal::float3(0.0));
+    metal::float4 _e28 = material.base_map_st;
+    metal::float2 _e29 = fur_transform_uv(in_4.uv0_, _e28);
+    metal::float4 _e33 = force_map.sample(material_sampler, _e29, metal::level(0.0));
+    metal::float3 force_texel = _e33.xyz;
+    metal::float3 _e37 = material.force_direction;
+    float _e45 = material.force_map_scale;
+    metal::float3 force = _e37 + (((force_texel * 2.0) - metal::float3(1.0)) * _e45);
+    float _e50 = material.force_strength;
+    float s = metal::saturate(_e50);
+    metal::float3 target_dir = (_e24 * (1.0 - s)) + (force * s);
+    metal::float4 _e60 = height_map.sample(material_sampler, _e29, metal::level(0.0));
+    float height = _e60.x;
+    float _e64 = material.height_scale;
+    float hs = metal::saturate(_e64);
+    float _e68 = material.fur_length;
+    float len = metal::max(_e68, 0.0) * metal::max(1.0 + (hs * (metal::saturate(height) - 1.0)), 0.0);
+    metal::float3 dir_1 = metal::mix(_e24, target_dir, offset);
+    metal::float3 p = world + (dir_1 * (len * offset));
+    metal::float4x4 _e88 = weft_frame.view_proj;
+    out.clip_position = _e88 * metal::float4(p, 1.0);
+    out.world_position = p;
+    out.world_normal = _e24;
+    out.strand = _e24 + ((2.0 * offset) * (target_dir - _e24));
+    out.uv0_ = in_4.uv0_;
+    out.offset = offset;
+    FurVaryings _e103 = out;
+    return _e103;
+}
+
+uint fur_pcg(
+    uint x_2
+) {
+    uint state = (x_2 * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+float fur_strand_cell(
+    metal::float2 x_3,
+    uint salt
+) {
+    metal::float2 cell = metal::floor(x_3);
+    metal::uint2 c_3 = static_cast<metal::uint2>(naga_f2i32(cell - (65536.0 * metal::floor(cell / metal::float2(65536.0)))));
+    uint _e15 = fur_pcg(c_3.y + salt);
+    uint _e17 = fur_pcg(c_3.x + _e15);
+    uint _e18 = fur_pcg(_e17);
+    uint _e19 = fur_pcg(_e18);
+    metal::float2 jitter = ((metal::float2(static_cast<float>(_e17 & 65535u), static_cast<float>(_e18 & 65535u)) / metal::float2(65535.0)) - metal::float2(0.5)) * 0.3;
+    float peak = 0.7 + ((0.3 * static_cast<float>(_e19 & 65535u)) / 65535.0);
+    float r_3 = metal::length(metal::fract(x_3) - (metal::float2(0.5) + jitter));
+    return metal::saturate(1.0 - (r_3 / 0.35)) * peak;
+}
+
+float fur_procedural_noise(
+    metal::float2 x_4
+) {
+    metal::float2 rotated = (metal::float2((0.8 * x_4.x) - (0.6 * x_4.y), (0.6 * x_4.x) + (0.8 * x_4.y)) * 1.31) + metal::float2(17.3, 5.9);
+    float _e23 = fur_strand_cell(x_4, 0u);
+    float _e25 = fur_strand_cell(rotated, 2654435769u);
+    return metal::max(_e23, _e25);
+}
+
+float fur_noise(
+    metal::float2 uv0_,
+    constant WeftMaterial& material
+) {
+    metal::float4 _e3 = material.noise_map_st;
+    metal::float2 _e4 = fur_transform_uv(uv0_, _e3);
+    metal::float4 _e7 = material.noise_map_st;
+    metal::float2 _e12 = material.strand_density;
+    metal::float4 _e16 = material.noise_map_st;
+    float _e19 = fur_procedural_noise(((uv0_ * _e7.xy) * _e12) + _e16.zw);
+    return _e19;
+}
+
+float fur_strand_exponent(
+    float smoothness
+) {
+    return metal::exp2(1.0 + (9.0 * metal::saturate(smoothness)));
+}
+
+metal::float4 fur_shade(
+    FurVaryings in_5,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> base_map,
+    metal::texture2d<float, metal::access::sample> spot_map
+) {
+    metal::float3 color = {};
+    float scaling = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float4 _e15 = spot_map.sample(material_sampler, _e5);
+    float spot = metal::saturate(_e15.x);
+    metal::float4 _e22 = material.spot_color;
+    metal::float3 base = metal::mix(metal::saturate(base_rgba.xyz), metal::saturate(_e22.xyz), spot);
+    float alpha = metal::saturate(base_rgba.w);
+    float _e30 = material.metallic;
+    float metallic = metal::saturate(_e30);
+    float _e34 = material.smoothness;
+    float smoothness_1 = metal::saturate(_e34);
+    float roughness_2 = 1.0 - smoothness_1;
+    metal::float3 _e43 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
+    metal::float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
+    metal::float3 _e48 = weft_main_light_direction(weft_frame);
+    metal::float3 _e50 = weft_safe_normalize(_e48 + _e43, _e45);
+    float _e52 = weft_clamp_cos(metal::dot(_e45, _e43));
+    float n_dot_l_2 = metal::saturate(metal::dot(_e45, _e48));
+    float n_dot_h_2 = metal::saturate(metal::dot(_e45, _e50));
+    float l_dot_h = metal::saturate(metal::dot(_e48, _e50));
+    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
+    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e66 = weft_sh_irradiance(_e45, weft_frame);
+    {
+        metal::float4 _e70 = material.sheen_color;
+        metal::float3 sheen_color_2 = metal::saturate(f0_1 + metal::max(_e70.xyz, metal::float3(0.0)));
+        float _e77 = weft_sheen_clamp_roughness(roughness_2);
+        float _e78 = weft_sheen_albedo(_e52, _e77, weft_lut_sampler, weft_sheen_lut);
+        float _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
+        metal::float3 _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
+        float _e81 = fur_strand_exponent(smoothness_1);
+        float t_dot_l = metal::clamp(metal::dot(_e47, _e48), -1.0, 1.0);
+        float t_dot_v = metal::clamp(metal::dot(_e47, _e43), -1.0, 1.0);
+        float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
+        float sin_v = metal::sqrt(metal::max(1.0 - (t_dot_v * t_dot_v), 0.0));
+        float cone = metal::max((sin_l * sin_v) - (t_dot_l * t_dot_v), 0.0);
+        float strand = metal::pow(cone, _e81) * sin_l;
+        scaling = _e79;
+        float norm = metal::sqrt((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI);
+        metal::float3 _e119 = weft_f_schlick(f0_1, l_dot_h);
+        metal::float4 _e122 = material.strand_color;
+        metal::float3 strand_color = metal::max(_e122.xyz, metal::float3(0.0)) * _e119;
+        float _e130 = material.strand_strength;
+        metal::float3 strand_lobe = strand_color * (((metal::max(_e130, 0.0) * norm) * strand) * n_dot_l_2);
+        metal::float3 _e137 = weft_diffuse_lambert(diffuse_albedo);
+        float _e138 = scaling;
+        metal::float3 base_direct = _e137 * (_e138 * n_dot_l_2);
+        metal::float3 direct = ((_e80 + base_direct) + strand_lobe) * _e65;
+        metal::float3 _e146 = weft_prefiltered_radiance(metal::reflect(-(_e43), _e45), _e77, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 env_sheen = (_e146 * sheen_color_2) * _e78;
+        color = (direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen;
+    }
+    float _e155 = material.fur_occlusion;
+    float occlusion = 1.0 - (metal::saturate(_e155) * (1.0 - in_5.offset));
+    metal::float3 _e163 = color;
+    metal::float3 radiance = metal::clamp(_e163 * occlusion, metal::float3(0.0), metal::float3(65504.0));
+    return metal::float4(radiance, alpha);
+}
+
+struct vs_skinInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float2 uv0_1 [[attribute(3)]];
+};
+struct vs_skinOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+    float offset [[user(loc4), center_perspective]];
+};
+vertex vs_skinOutput vs_skin(
+  vs_skinInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> height_map [[texture(4)]]
+, metal::texture2d<float, metal::access::sample> force_map [[texture(5)]]
+) {
+    const FurInput in = { varyings.position, varyings.normal, varyings.uv0_1 };
+    FurVaryings _e2 = fur_vertex(in, 0.0, weft_frame, weft_object, material, material_sampler, height_map, force_map);
+    const auto _tmp = _e2;
+    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset };
+}
+
+
+struct vs_shellInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float2 uv0_1 [[attribute(3)]];
+};
+struct vs_shellOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+    float offset [[user(loc4), center_perspective]];
+};
+vertex vs_shellOutput vs_shell(
+  vs_shellInput varyings_1 [[stage_in]]
+, uint instance [[instance_id]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> height_map [[texture(4)]]
+, metal::texture2d<float, metal::access::sample> force_map [[texture(5)]]
+) {
+    const FurInput in_1 = { varyings_1.position, varyings_1.normal, varyings_1.uv0_1 };
+    int _e4 = material.shell_count;
+    float count = static_cast<float>(metal::max(_e4, 1));
+    FurVaryings _e12 = fur_vertex(in_1, (static_cast<float>(instance) + 0.5) / count, weft_frame, weft_object, material, material_sampler, height_map, force_map);
+    const auto _tmp_1 = _e12;
+    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset };
+}
+
+
+struct fs_skinInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float2 uv0_1 [[user(loc3), center_perspective]];
+    float offset_1 [[user(loc4), center_perspective]];
+};
+struct fs_skinOutput {
+    metal::float4 member_2 [[color(0)]];
+};
+fragment fs_skinOutput fs_skin(
+  fs_skinInput varyings_2 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
+) {
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1 };
+    metal::float4 _e1 = fur_shade(in_2, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
+}
+
+
+struct fs_shellInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float2 uv0_1 [[user(loc3), center_perspective]];
+    float offset_1 [[user(loc4), center_perspective]];
+};
+struct fs_shellOutput {
+    metal::float4 member_3 [[color(0)]];
+};
+fragment fs_shellOutput fs_shell(
+  fs_shellInput varyings_3 [[stage_in]]
+, metal::float4 clip_position_1 [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
+) {
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1 };
+    float _e2 = fur_noise(in_3.uv0_, material);
+    float o = metal::saturate(in_3.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = (_e8 != 0u) ? (o * o) : o;
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
+    float _e21 = metal::fwidth(_e2);
+    float width = metal::max(_e21, 0.001);
+    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
+    metal::float4 _e32 = fur_shade(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    metal::float3 _e38 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
+    float _e43 = material.edge_fade;
+    float fade = 1.0 - (metal::saturate(_e43) * (1.0 - metal::saturate(metal::dot(_e40, _e38))));
+    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
+    int _e62 = material.shell_count;
+    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e62, 1));
+    float keep = 1.0 - a_1;
+    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
+    return fs_shellOutput { metal::float4(_e32.xyz, alpha_1) };
+}

@@ -1,0 +1,403 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    base_map_st: vec4<f32>,
+    metallic: f32,
+    smoothness: f32,
+    spot_color: vec4<f32>,
+    noise_map_st: vec4<f32>,
+    strand_density: vec2<f32>,
+    fur_length: f32,
+    height_scale: f32,
+    fur_occlusion: f32,
+    cutoff_start: f32,
+    cutoff_end: f32,
+    edge_fade: f32,
+    tapered_tips: u32,
+    shell_count: i32,
+    force_direction: vec3<f32>,
+    force_strength: f32,
+    force_map_scale: f32,
+    sheen_color: vec4<f32>,
+    scatter_scale: f32,
+    strand_color: vec4<f32>,
+    strand_strength: f32,
+}
+
+struct FurInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct FurVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) strand: vec3<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) offset: f32,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const FUR_SEED_SHELLS: f32 = 20f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(0) @binding(5) 
+var weft_sheen_lut: texture_2d<f32>;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var spot_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var noise_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var height_map: texture_2d<f32>;
+@group(1) @binding(7) 
+var force_map: texture_2d<f32>;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_max3_(v: vec3<f32>) -> f32 {
+    return max(v.x, max(v.y, v.z));
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v_1, v_1);
+    return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_sheen_clamp_roughness(sheen_roughness: f32) -> f32 {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_d_charlie(n_dot_h: f32, sheen_roughness_1: f32) -> f32 {
+    let _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    let inv_r = (1f / _e2);
+    let noh = saturate(n_dot_h);
+    let sin2_ = max(((1f - noh) * (1f + noh)), 0f);
+    return (((2f + inv_r) * pow(sin2_, (0.5f * inv_r))) * 0.15915494f);
+}
+
+fn weft_sheen_l(x_1: f32, r: f32) -> f32 {
+    let t = ((1f - r) * (1f - r));
+    let a = mix(21.5473f, 25.3245f, t);
+    let b = mix(3.82987f, 3.32435f, t);
+    let c_1 = mix(0.19823f, 0.16801f, t);
+    let d = mix(-1.9776f, -1.27393f, t);
+    let e_1 = mix(-4.32054f, -4.85967f, t);
+    return (((a / (1f + (b * pow(max(x_1, 0f), c_1)))) + (d * x_1)) + e_1);
+}
+
+fn weft_sheen_lambda(cos_theta: f32, r_1: f32) -> f32 {
+    let _e2 = weft_clamp_cos(cos_theta);
+    let _e3 = weft_sheen_l(_e2, r_1);
+    let lo = exp(_e3);
+    let _e6 = weft_sheen_l(0.5f, r_1);
+    let _e11 = weft_sheen_l((1f - _e2), r_1);
+    let hi = exp(((2f * _e6) - _e11));
+    return select(hi, lo, (_e2 < 0.5f));
+}
+
+fn weft_v_charlie(n_dot_v: f32, n_dot_l: f32, sheen_roughness_2: f32) -> f32 {
+    let _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    let _e4 = weft_clamp_cos(n_dot_v);
+    let _e5 = weft_clamp_cos(n_dot_l);
+    let _e6 = weft_sheen_lambda(_e4, _e3);
+    let _e9 = weft_sheen_lambda(_e5, _e3);
+    let g_inv = ((1f + _e6) + _e9);
+    return (1f / (((g_inv * 4f) * _e4) * _e5));
+}
+
+fn weft_sheen_charlie(sheen_color: vec3<f32>, n_dot_h_1: f32, n_dot_v_1: f32, n_dot_l_1: f32, sheen_roughness_3: f32) -> vec3<f32> {
+    let _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    let _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    let lobe = (_e5 * _e6);
+    return (max(sheen_color, vec3(0f)) * (lobe * saturate(n_dot_l_1)));
+}
+
+fn weft_sheen_albedo_scaling_view(sheen_color_1: vec3<f32>, e_v: f32) -> f32 {
+    let _e2 = weft_max3_(sheen_color_1);
+    return saturate((1f - (saturate(_e2) * saturate(e_v))));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n.x) * n.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n.y) * n.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n.z) * n.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n.x) * n.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n.x * n.x) - (n.y * n.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness: f32) -> f32 {
+    let r_2 = saturate(roughness);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_2 * (1.7f - (0.7f * r_2))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_1);
+    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, vec3(0f));
+}
+
+fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_4: f32) -> f32 {
+    let _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    let uv_1 = vec2<f32>(saturate(n_dot_x), _e3);
+    let _e8 = textureSampleLevel(weft_sheen_lut, weft_lut_sampler, uv_1, 0f);
+    return saturate(_e8.x);
+}
+
+fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {
+    var out: FurVaryings;
+
+    let model = weft_object.model;
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_4.position, 1f)).xyz;
+    let _e24 = weft_safe_normalize((normal3_ * in_4.normal), vec3(0f));
+    let _e28 = material.base_map_st;
+    let _e29 = fur_transform_uv(in_4.uv0_, _e28);
+    let _e33 = textureSampleLevel(force_map, material_sampler, _e29, 0f);
+    let force_texel = _e33.xyz;
+    let _e37 = material.force_direction;
+    let _e45 = material.force_map_scale;
+    let force = (_e37 + (((force_texel * 2f) - vec3(1f)) * _e45));
+    let _e50 = material.force_strength;
+    let s = saturate(_e50);
+    let target_dir = ((_e24 * (1f - s)) + (force * s));
+    let _e60 = textureSampleLevel(height_map, material_sampler, _e29, 0f);
+    let height = _e60.x;
+    let _e64 = material.height_scale;
+    let hs = saturate(_e64);
+    let _e68 = material.fur_length;
+    let len = (max(_e68, 0f) * max((1f + (hs * (saturate(height) - 1f))), 0f));
+    let dir_1 = mix(_e24, target_dir, offset);
+    let p = (world + (dir_1 * (len * offset)));
+    let _e88 = weft_frame.view_proj;
+    out.clip_position = (_e88 * vec4<f32>(p, 1f));
+    out.world_position = p;
+    out.world_normal = _e24;
+    out.strand = (_e24 + ((2f * offset) * (target_dir - _e24)));
+    out.uv0_ = in_4.uv0_;
+    out.offset = offset;
+    let _e103 = out;
+    return _e103;
+}
+
+fn fur_noise(uv0_: vec2<f32>) -> f32 {
+    let _e3 = material.noise_map_st;
+    let _e4 = fur_transform_uv(uv0_, _e3);
+    {
+        let _e7 = textureSample(noise_map, material_sampler, _e4);
+        return saturate(_e7.x);
+    }
+}
+
+fn fur_strand_exponent(smoothness: f32) -> f32 {
+    return exp2((1f + (9f * saturate(smoothness))));
+}
+
+fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
+    var color: vec3<f32>;
+    var scaling: f32;
+
+    let _e4 = material.base_map_st;
+    let _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let _e15 = textureSample(spot_map, material_sampler, _e5);
+    let spot = saturate(_e15.x);
+    let _e22 = material.spot_color;
+    let base = mix(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
+    let alpha = saturate(base_rgba.w);
+    let _e30 = material.metallic;
+    let metallic = saturate(_e30);
+    let _e34 = material.smoothness;
+    let smoothness_1 = saturate(_e34);
+    let roughness_2 = (1f - smoothness_1);
+    let _e43 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e45 = weft_safe_normalize(in_5.world_normal, _e43);
+    let _e47 = weft_safe_normalize(in_5.strand, _e45);
+    let _e48 = weft_main_light_direction();
+    let _e50 = weft_safe_normalize((_e48 + _e43), _e45);
+    let _e52 = weft_clamp_cos(dot(_e45, _e43));
+    let n_dot_l_2 = saturate(dot(_e45, _e48));
+    let n_dot_h_2 = saturate(dot(_e45, _e50));
+    let l_dot_h = saturate(dot(_e48, _e50));
+    let f0_1 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
+    let _e65 = weft_main_light_radiance();
+    let _e66 = weft_sh_irradiance(_e45);
+    {
+        let _e70 = material.sheen_color;
+        let sheen_color_2 = saturate((f0_1 + max(_e70.xyz, vec3(0f))));
+        let _e77 = weft_sheen_clamp_roughness(roughness_2);
+        let _e78 = weft_sheen_albedo(_e52, _e77);
+        let _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
+        let _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
+        let _e81 = fur_strand_exponent(smoothness_1);
+        let t_dot_l = clamp(dot(_e47, _e48), -1f, 1f);
+        let t_dot_v = clamp(dot(_e47, _e43), -1f, 1f);
+        let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
+        let sin_v = sqrt(max((1f - (t_dot_v * t_dot_v)), 0f));
+        let cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0f);
+        let strand = (pow(cone, _e81) * sin_l);
+        scaling = _e79;
+        let norm = sqrt(((((2f * _e81) + 1f) * 0.25f) * WEFT_INV_PI));
+        let _e119 = weft_f_schlick(f0_1, l_dot_h);
+        let _e122 = material.strand_color;
+        let strand_color = (max(_e122.xyz, vec3(0f)) * _e119);
+        let _e130 = material.strand_strength;
+        let strand_lobe = (strand_color * (((max(_e130, 0f) * norm) * strand) * n_dot_l_2));
+        let _e137 = weft_diffuse_lambert(diffuse_albedo);
+        let _e138 = scaling;
+        let base_direct = (_e137 * (_e138 * n_dot_l_2));
+        let direct = (((_e80 + base_direct) + strand_lobe) * _e65);
+        let _e146 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
+        let env_sheen = ((_e146 * sheen_color_2) * _e78);
+        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
+    }
+    let _e155 = material.fur_occlusion;
+    let occlusion = (1f - (saturate(_e155) * (1f - in_5.offset)));
+    let _e163 = color;
+    let radiance = clamp((_e163 * occlusion), vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}
+
+@vertex 
+fn vs_skin(in: FurInput) -> FurVaryings {
+    let _e2 = fur_vertex(in, 0f);
+    return _e2;
+}
+
+@vertex 
+fn vs_shell(in_1: FurInput, @builtin(instance_index) instance: u32) -> FurVaryings {
+    let _e4 = material.shell_count;
+    let count = f32(max(_e4, 1i));
+    let _e12 = fur_vertex(in_1, ((f32(instance) + 0.5f) / count));
+    return _e12;
+}
+
+@fragment 
+fn fs_skin(in_2: FurVaryings) -> @location(0) vec4<f32> {
+    let _e1 = fur_shade(in_2);
+    return vec4<f32>(_e1.xyz, 1f);
+}
+
+@fragment 
+fn fs_shell(in_3: FurVaryings) -> @location(0) vec4<f32> {
+    let _e2 = fur_noise(in_3.uv0_);
+    let o = saturate(in_3.offset);
+    let _e8 = material.tapered_tips;
+    let shape = select(o, (o * o), (_e8 != 0u));
+    let _e14 = material.cutoff_start;
+    let _e18 = material.cutoff_end;
+    let threshold = mix(saturate(_e14), saturate(_e18), shape);
+    let _e21 = fwidth(_e2);
+    let width = max(_e21, 0.001f);
+    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
+    let _e32 = fur_shade(in_3);
+    let _e38 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e40 = weft_safe_normalize(in_3.world_normal, _e38);
+    let _e43 = material.edge_fade;
+    let fade = (1f - (saturate(_e43) * (1f - saturate(dot(_e40, _e38)))));
+    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
+    let _e62 = material.shell_count;
+    let slab = (FUR_SEED_SHELLS / f32(max(_e62, 1i)));
+    let keep = (1f - a_1);
+    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
+    return vec4<f32>(_e32.xyz, alpha_1);
+}

@@ -1,0 +1,310 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    float metallic;
+    float smoothness;
+    vec4 spot_color;
+    vec4 noise_map_st;
+    vec2 strand_density;
+    float fur_length;
+    float height_scale;
+    float fur_occlusion;
+    float cutoff_start;
+    float cutoff_end;
+    float edge_fade;
+    uint tapered_tips;
+    int shell_count;
+    vec3 force_direction;
+    float force_strength;
+    float force_map_scale;
+    vec4 sheen_color;
+    float scatter_scale;
+    vec4 strand_color;
+    float strand_strength;
+};
+struct FurInput {
+    vec3 position;
+    vec3 normal;
+    vec2 uv0_;
+};
+struct FurVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec3 strand;
+    vec2 uv0_;
+    float offset;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float FUR_SEED_SHELLS = 20.0;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(std140, binding = 1) uniform WeftMaterial_block_2Vertex { WeftMaterial _group_1_binding_0_vs; };
+
+layout(binding = 4) uniform sampler2D _group_1_binding_6_vs;
+
+layout(binding = 5) uniform sampler2D _group_1_binding_7_vs;
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec3 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+layout(location = 4) smooth out float _vs2fs_location4;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+float weft_sheen_clamp_roughness(float sheen_roughness) {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
+}
+
+float weft_d_charlie(float n_dot_h, float sheen_roughness_1) {
+    float _e2 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float inv_r = (1.0 / _e2);
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float sin2_ = max(((1.0 - noh) * (1.0 + noh)), 0.0);
+    return (((2.0 + inv_r) * pow(sin2_, (0.5 * inv_r))) * 0.15915494);
+}
+
+float weft_sheen_l(float x_1, float r) {
+    float t = ((1.0 - r) * (1.0 - r));
+    float a = mix(21.5473, 25.3245, t);
+    float b = mix(3.82987, 3.32435, t);
+    float c_1 = mix(0.19823, 0.16801, t);
+    float d = mix(-1.9776, -1.27393, t);
+    float e_1 = mix(-4.32054, -4.85967, t);
+    return (((a / (1.0 + (b * pow(max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1);
+}
+
+float weft_sheen_lambda(float cos_theta, float r_1) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    float _e3 = weft_sheen_l(_e2, r_1);
+    float lo = exp(_e3);
+    float _e6 = weft_sheen_l(0.5, r_1);
+    float _e11 = weft_sheen_l((1.0 - _e2), r_1);
+    float hi = exp(((2.0 * _e6) - _e11));
+    return ((_e2 < 0.5) ? lo : hi);
+}
+
+float weft_v_charlie(float n_dot_v, float n_dot_l, float sheen_roughness_2) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_2);
+    float _e4 = weft_clamp_cos(n_dot_v);
+    float _e5 = weft_clamp_cos(n_dot_l);
+    float _e6 = weft_sheen_lambda(_e4, _e3);
+    float _e9 = weft_sheen_lambda(_e5, _e3);
+    float g_inv = ((1.0 + _e6) + _e9);
+    return (1.0 / (((g_inv * 4.0) * _e4) * _e5));
+}
+
+vec3 weft_sheen_charlie(vec3 sheen_color, float n_dot_h_1, float n_dot_v_1, float n_dot_l_1, float sheen_roughness_3) {
+    float _e5 = weft_d_charlie(n_dot_h_1, sheen_roughness_3);
+    float _e6 = weft_v_charlie(n_dot_v_1, n_dot_l_1, sheen_roughness_3);
+    float lobe = (_e5 * _e6);
+    return (max(sheen_color, vec3(0.0)) * (lobe * clamp(n_dot_l_1, 0.0, 1.0)));
+}
+
+float weft_sheen_albedo_scaling(vec3 sheen_color_1, float e_v, float e_l) {
+    float _e3 = weft_max3_(sheen_color_1);
+    float c_2 = clamp(_e3, 0.0, 1.0);
+    return clamp(min((1.0 - (c_2 * clamp(e_v, 0.0, 1.0))), (1.0 - (c_2 * clamp(e_l, 0.0, 1.0)))), 0.0, 1.0);
+}
+
+float weft_sheen_albedo_scaling_view(vec3 sheen_color_2, float e_v_1) {
+    float _e2 = weft_max3_(sheen_color_2);
+    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v_1, 0.0, 1.0))), 0.0, 1.0);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n.x) * n.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n.y) * n.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n.x) * n.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness) {
+    float r_2 = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_vs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+vec2 fur_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+FurVaryings fur_vertex(FurInput in_4, float offset) {
+    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0);
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec3 world = (model * vec4(in_4.position, 1.0)).xyz;
+    vec3 _e24 = weft_safe_normalize((normal3_ * in_4.normal), vec3(0.0));
+    vec4 _e28 = _group_1_binding_0_vs.base_map_st;
+    vec2 _e29 = fur_transform_uv(in_4.uv0_, _e28);
+    vec4 _e33 = textureLod(_group_1_binding_7_vs, vec2(_e29), 0.0);
+    vec3 force_texel = _e33.xyz;
+    vec3 _e37 = _group_1_binding_0_vs.force_direction;
+    float _e45 = _group_1_binding_0_vs.force_map_scale;
+    vec3 force = (_e37 + (((force_texel * 2.0) - vec3(1.0)) * _e45));
+    float _e50 = _group_1_binding_0_vs.force_strength;
+    float s = clamp(_e50, 0.0, 1.0);
+    vec3 target_dir = ((_e24 * (1.0 - s)) + (force * s));
+    vec4 _e60 = textureLod(_group_1_binding_6_vs, vec2(_e29), 0.0);
+    float height = _e60.x;
+    float _e64 = _group_1_binding_0_vs.height_scale;
+    float hs = clamp(_e64, 0.0, 1.0);
+    float _e68 = _group_1_binding_0_vs.fur_length;
+    float len = (max(_e68, 0.0) * max((1.0 + (hs * (clamp(height, 0.0, 1.0) - 1.0))), 0.0));
+    vec3 dir_1 = mix(_e24, target_dir, offset);
+    vec3 p = (world + (dir_1 * (len * offset)));
+    mat4x4 _e88 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e88 * vec4(p, 1.0));
+    out_.world_position = p;
+    out_.world_normal = _e24;
+    out_.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
+    out_.uv0_ = in_4.uv0_;
+    out_.offset = offset;
+    FurVaryings _e103 = out_;
+    return _e103;
+}
+
+uint fur_pcg(uint x_2) {
+    uint state = ((x_2 * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return ((word >> 22u) ^ word);
+}
+
+float fur_strand_cell(vec2 x_3, uint salt) {
+    vec2 cell = floor(x_3);
+    uvec2 c_3 = uvec2(ivec2((cell - (65536.0 * floor((cell / vec2(65536.0)))))));
+    uint _e15 = fur_pcg((c_3.y + salt));
+    uint _e17 = fur_pcg((c_3.x + _e15));
+    uint _e18 = fur_pcg(_e17);
+    uint _e19 = fur_pcg(_e18);
+    vec2 jitter = (((vec2(float((_e17 & 65535u)), float((_e18 & 65535u))) / vec2(65535.0)) - vec2(0.5)) * 0.3);
+    float peak = (0.7 + ((0.3 * float((_e19 & 65535u))) / 65535.0));
+    float r_3 = length((fract(x_3) - (vec2(0.5) + jitter)));
+    return (clamp((1.0 - (r_3 / 0.35)), 0.0, 1.0) * peak);
+}
+
+float fur_procedural_noise(vec2 x_4) {
+    vec2 rotated = ((vec2(((0.8 * x_4.x) - (0.6 * x_4.y)), ((0.6 * x_4.x) + (0.8 * x_4.y))) * 1.31) + vec2(17.3, 5.9));
+    float _e23 = fur_strand_cell(x_4, 0u);
+    float _e25 = fur_strand_cell(rotated, 2654435769u);
+    return max(_e23, _e25);
+}
+
+float fur_noise(vec2 uv0_) {
+    vec4 _e3 = _group_1_binding_0_vs.noise_map_st;
+    vec2 _e4 = fur_transform_uv(uv0_, _e3);
+    vec4 _e7 = _group_1_binding_0_vs.noise_map_st;
+    vec2 _e12 = _group_1_binding_0_vs.strand_density;
+    vec4 _e16 = _group_1_binding_0_vs.noise_map_st;
+    float _e19 = fur_procedural_noise((((uv0_ * _e7.xy) * _e12) + _e16.zw));
+    return _e19;
+}
+
+float fur_strand_exponent(float smoothness) {
+    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+}
+
+void main() {
+    FurInput in_ = FurInput(_p2vs_location0, _p2vs_location1, _p2vs_location3);
+    FurVaryings _e2 = fur_vertex(in_, 0.0);
+    gl_Position = _e2.clip_position;
+    _vs2fs_location0 = _e2.world_position;
+    _vs2fs_location1 = _e2.world_normal;
+    _vs2fs_location2 = _e2.strand;
+    _vs2fs_location3 = _e2.uv0_;
+    _vs2fs_location4 = _e2.offset;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+

@@ -1,0 +1,96 @@
+//! The fur material's shells (issue 11, deliverable 3): one instanced draw
+//! whose count is the `shell_count` parameter, transparent without depth
+//! writes over an opaque skin pass, and a count that converges (the shell
+//! bench, `weft_golden::shells`).
+
+use std::path::{Path, PathBuf};
+use weft_golden::shells::{ShellOptions, instance_parameter, run};
+use weft_meta::{BlendMode, InstanceCount};
+use weft_render::{
+    EnvironmentMaps, Gpu, Luts, Material, PreviewOptions, RenderOptions, Renderer, SceneKind,
+};
+
+fn generated() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated")
+}
+
+fn meta_path() -> PathBuf {
+    generated().join("fur/fur.meta.json")
+}
+
+#[test]
+fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
+    let material = Material::load(meta_path()).expect("generated/fur");
+    let meta = material.metadata();
+    assert_eq!(instance_parameter(meta), Some("shell_count"));
+    let [skin, shells] = meta.passes.as_slice() else {
+        panic!("fur has two passes, got {:?}", meta.passes.len());
+    };
+    assert_eq!(skin.render_state.blend, BlendMode::Opaque);
+    assert!(skin.render_state.depth_write);
+    assert_eq!(skin.instances, InstanceCount::Fixed(1));
+    assert_eq!(shells.render_state.blend, BlendMode::Alpha);
+    assert!(!shells.render_state.depth_write);
+    assert!(shells.render_state.queue > skin.render_state.queue);
+    assert_eq!(
+        shells.instances,
+        InstanceCount::Parameter("shell_count".into())
+    );
+    // The pipeline state an engine sets: no depth write, depth tested.
+    let depth = shells.depth.as_ref().expect("shells test depth");
+    assert!(!depth.write_enabled);
+
+    // The runtime draws the skin once and the shells `shell_count` times,
+    // and follows the parameter without re-preparing.
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("needs a Vulkan adapter: {e}"));
+    let luts = Luts::load_dir(generated()).expect("LUTs");
+    let preview = PreviewOptions {
+        scene: SceneKind::Sphere,
+        width: 32,
+        height: 32,
+        ..PreviewOptions::default()
+    };
+    let env = EnvironmentMaps::sky(&preview.sky_params());
+    let mut renderer = Renderer::new(gpu, &env, &luts).expect("renderer");
+    let options: RenderOptions = preview.render_options();
+    let mut material = material;
+    let mut prepared = renderer.prepare(&material, &options).expect("prepare");
+    assert_eq!(prepared.instances(), &[1, 20]);
+    material.set("shell_count", 7i64).expect("set");
+    renderer.update(&mut prepared, &material).expect("update");
+    assert_eq!(prepared.instances(), &[1, 7]);
+    assert!(material.set("shell_count", 129i64).is_err(), "out of range");
+}
+
+#[test]
+fn more_shells_converge_to_the_reference_count() {
+    let options = ShellOptions {
+        sizes: vec![96],
+        counts: vec![4, 32],
+        reference: 128,
+        frames: 1,
+        warmup: 0,
+        ..ShellOptions::default()
+    };
+    let reports = run(&generated(), &["fur".into()], &options, &mut |_| {}).expect("bench");
+    let [report] = reports.as_slice() else {
+        panic!("one report for fur, got {}", reports.len());
+    };
+    let flip = |n: u32| {
+        report
+            .cells
+            .iter()
+            .find(|c| c.count == n)
+            .unwrap_or_else(|| panic!("{n} shells measured"))
+            .error
+            .flip_mean
+    };
+    println!(
+        "FLIP vs 128 shells: 4 -> {:.4}, 32 -> {:.4}",
+        flip(4),
+        flip(32)
+    );
+    // 4 shells visibly step the strands; 32 are close to 128.
+    assert!(flip(4) > 2.0 * flip(32), "{} vs {}", flip(4), flip(32));
+    assert!(flip(32) < 0.05, "32 shells: FLIP {}", flip(32));
+}
