@@ -411,7 +411,10 @@ pub struct Base {
     pub variants: usize,
 }
 
-/// Loads the shipped materials of `materials_dir` (sorted by name).
+/// Loads the shipped materials of `materials_dir` (sorted by name) that can
+/// be derived: every fragment entry point takes the engine interface's
+/// `WeftVaryings`, which the synthetic features read (fur's shells carry
+/// their own varyings and are left out).
 pub fn load_bases(materials_dir: &Path) -> Result<Vec<Base>, String> {
     let paths = weft_compiler::library::discover(materials_dir)
         .map_err(|e| format!("cannot read {}: {e}", materials_dir.display()))?;
@@ -437,6 +440,12 @@ pub fn load_bases(materials_dir: &Path) -> Result<Vec<Base>, String> {
             if !fragments.contains(&p.fragment) {
                 fragments.push(p.fragment.clone());
             }
+        }
+        if fragments
+            .iter()
+            .any(|entry| wrap_fragment(&wgsl, entry, "").is_err())
+        {
+            continue;
         }
         out.push(Base {
             name: m.name.clone(),

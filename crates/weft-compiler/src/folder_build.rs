@@ -217,7 +217,12 @@ mod tests {
         let stamp = tmp.path().join(".out.stamp");
         std::fs::remove_file(&stamp).unwrap();
         let unstamped = build(&out, &BuildOptions::default());
-        assert!(!unstamped.wrote && unstamped.output.kept.is_none());
+        assert!(
+            !unstamped.wrote && unstamped.output.kept.is_none(),
+            "wrote {}, kept {:?}",
+            unstamped.wrote,
+            unstamped.output.kept.is_some()
+        );
         assert!(stamp.exists());
         let stamped = build(&out, &BuildOptions::default());
         assert!(!stamped.wrote && stamped.output.kept.is_some());
