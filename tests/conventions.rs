@@ -21,7 +21,7 @@ mod engine;
 #[path = "support/engine/harness.rs"]
 mod harness;
 
-use engine::library::canonical_variants;
+use engine::library::{canonical_variants, variant_passes};
 use engine::{Engine, Image, Language, Library, World};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -171,14 +171,14 @@ fn reversing_the_rows_alone_does_not_match() {
     let mut culled = 0;
     let mut failures = Vec::new();
     for (meta_path, meta) in &materials {
-        if !meta
-            .passes
+        let (first, _) = canonical_variants(meta).unwrap()[0];
+        if !variant_passes(meta, first)
             .iter()
             .all(|p| p.primitive.cull_mode == CullMode::Back)
         {
             continue;
         }
-        let variant = canonical_variants(meta).unwrap()[0].0.id.clone();
+        let variant = first.id.clone();
         let wgsl = s.draw(meta_path, meta, &variant, Language::Wgsl).unwrap();
         let flipped = s
             .draw(meta_path, meta, &variant, ROWS_FLIPPED_ONLY)

@@ -51,6 +51,12 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("missing_require", &["missing-require"]),
     ("missing_source", &["missing-source"]),
     ("missing_tier", &["missing-tier"]),
+    ("pass_all_conditional", &["pass-condition"]),
+    ("pass_file_errors", &["unknown-key", "default-out-of-range"]),
+    ("pass_include_extra_key", &["pass-include"]),
+    ("pass_include_missing", &["missing-include"]),
+    ("pass_when_bool_param", &["bad-condition"]),
+    ("pass_when_unknown_keyword", &["unknown-keyword"]),
     (
         "several_errors",
         &[

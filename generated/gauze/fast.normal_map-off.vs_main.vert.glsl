@@ -7,6 +7,7 @@ struct WeftFrame {
     vec4 light_color;
     vec4 sh[9];
     vec4 params;
+    vec4 viewport;
 };
 struct WeftObject {
     mat4x4 model;

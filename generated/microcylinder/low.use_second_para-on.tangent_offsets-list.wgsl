@@ -6,6 +6,7 @@ struct WeftFrame {
     light_color: vec4<f32>,
     sh: array<vec4<f32>, 9>,
     params: vec4<f32>,
+    viewport: vec4<f32>,
 }
 
 struct WeftObject {

@@ -16,6 +16,7 @@ struct WeftFrame {
     metal::float4 light_color;
     type_4 sh;
     metal::float4 params;
+    metal::float4 viewport;
 };
 struct WeftObject {
     metal::float4x4 model;

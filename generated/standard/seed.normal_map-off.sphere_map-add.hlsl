@@ -6,6 +6,7 @@ struct WeftFrame {
     float4 light_color;
     float4 sh[9];
     float4 params;
+    float4 viewport;
 };
 
 struct WeftObject {

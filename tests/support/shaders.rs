@@ -57,7 +57,12 @@ pub fn shaders<'a>(
                 dir: m.name.clone(),
                 label: format!("{} variant {}", m.name, v.id),
                 shader,
-                passes: m.passes.iter().collect(),
+                // The variant's own passes (`Variant::passes`).
+                passes: m
+                    .passes
+                    .iter()
+                    .filter(|p| v.passes.contains(&p.name))
+                    .collect(),
                 material: Some(m),
             });
         }

@@ -159,6 +159,10 @@ pub fn member_description(struct_name: &str, member: &str) -> Option<&'static st
             "x: mip count of weft_environment; y: exposure (informational: shaders do not apply \
              it, the engine does after the passes); z: time in seconds; w: unused"
         }
+        ("WeftFrame", "viewport") => {
+            "xy: width and height of the colour target in pixels; zw: their reciprocals \
+             (engine interface 2; pixel-sized effects such as outlines read it)"
+        }
         ("WeftObject", "model") => "Object → world, column-major",
         ("WeftObject", "normal_matrix") => {
             "Inverse transpose of the model's upper 3×3, in the upper 3×3 of a column-major \
@@ -363,6 +367,7 @@ mod tests {
             "light_color",
             "sh",
             "params",
+            "viewport",
         ] {
             assert!(member_description("WeftFrame", m).is_some(), "{m}");
         }

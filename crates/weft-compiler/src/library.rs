@@ -105,7 +105,7 @@ pub fn inputs_hash(m: &Material, db: &SourceDb) -> String {
     h.update(env!("CARGO_PKG_VERSION"));
     h.update(ENGINE_INTERFACE);
     h.update(db.text(m.file));
-    for s in &m.sources {
+    for s in m.sources.iter().chain(&m.pass_files) {
         h.update(&s.rel_path);
         h.update([0]);
         h.update(db.text(s.file));
@@ -201,7 +201,11 @@ pub fn compile_material_cached(
                 )
             })
             .collect();
-        let (alias_of, shader) = match alias {
+        let passes: Vec<String> = m.passes_of(key).map(|p| p.name.clone()).collect();
+        // An alias shares its target's files, so it must also draw the same
+        // passes (two pass lists over the same entry points stay apart).
+        let same_passes = |j: usize| m.passes_of(&keys[j]).map(|p| &p.name).eq(passes.iter());
+        let (alias_of, shader) = match alias.filter(|&j| same_passes(j)) {
             Some(j) => (Some(keys[j].id(m)), None),
             None => {
                 files.extend(v.files);
@@ -212,6 +216,7 @@ pub fn compile_material_cached(
             id: v.id,
             tier: m.tiers.values[key.tier].clone(),
             keywords,
+            passes,
             alias_of,
             shader,
         });

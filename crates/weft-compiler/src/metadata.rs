@@ -225,6 +225,7 @@ pub fn passes(m: &Material) -> Vec<Pass> {
                 Instances::Fixed(n) => InstanceCount::Fixed(*n),
                 Instances::Param(s) => InstanceCount::Parameter(s.clone()),
             },
+            when: p.when.clone(),
             primitive: PrimitiveState {
                 topology: PrimitiveTopology::TriangleList,
                 front_face: FrontFace::Ccw,

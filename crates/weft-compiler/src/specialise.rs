@@ -17,6 +17,9 @@ use std::collections::{HashMap, HashSet};
 #[derive(Clone, Debug, Default)]
 pub struct Bindings {
     pub values: HashMap<String, Literal>,
+    /// Entry points to remove (those of passes the variant does not have),
+    /// with the code only they reach.
+    pub drop_entry_points: Vec<String>,
 }
 
 /// Returns the specialised module; validation is the caller's.
@@ -44,6 +47,7 @@ pub fn specialise(module: &Module, values: &Bindings) -> Module {
     }
     module.functions = functions;
     let mut entry_points = std::mem::take(&mut module.entry_points);
+    entry_points.retain(|ep| !values.drop_entry_points.contains(&ep.name));
     for ep in entry_points.iter_mut() {
         specialise_function(&module, &mut ep.function, &replace);
     }

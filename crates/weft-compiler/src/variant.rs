@@ -67,7 +67,10 @@ pub fn compile_variant(
     prelude: &Prelude,
 ) -> Result<CompiledVariant, String> {
     let id = key.id(m);
-    let mut values = Bindings::default();
+    let mut values = Bindings {
+        drop_entry_points: m.dropped_entry_points(key),
+        ..Bindings::default()
+    };
     values
         .values
         .insert(TIER_OVERRIDE.into(), Literal::U32(key.tier as u32));

@@ -34,6 +34,9 @@ pub struct Sites {
     pub preset_values: HashMap<(String, String), (Span, Span)>,
     /// One per entry of `Material::passes`: the `instances` value, if written.
     pub instances: Vec<Option<Span>>,
+    /// Whether the material file itself has `[groups]` (a shared pass file's
+    /// groups do not make the material's own group names need declaring).
+    pub material_declares_groups: bool,
 }
 
 /// Checks after the includes are resolved: generated names and the budget.
@@ -91,6 +94,32 @@ pub fn check_references(m: &mut Material, sites: &Sites, diags: &mut Diagnostics
     }
     check_presets(m, sites, diags);
     check_instances(m, sites, diags);
+    check_pass_conditions(m, diags);
+}
+
+/// A pass's `when` names static keywords or `tier` with their values, and
+/// some pass exists in every variant (one without `when`).
+fn check_pass_conditions(m: &Material, diags: &mut Diagnostics) {
+    for pass in &m.passes {
+        let loc = Loc {
+            file: pass.decl.file,
+            span: pass.when_span.clone().unwrap_or(pass.decl.span.clone()),
+        };
+        for c in &pass.when {
+            check_condition(m, c, &loc, "when", diags);
+        }
+    }
+    if !m.passes.is_empty() && m.passes.iter().all(|p| !p.when.is_empty()) {
+        let first = &m.passes[0];
+        let d = diags.error(
+            "pass-condition",
+            "every pass has a `when` condition",
+            first.decl.file,
+            first.when_span.clone().unwrap_or(first.decl.span.clone()),
+            "conditional pass",
+        );
+        d.notes.push("a variant where no condition holds would draw nothing: give the material a pass without `when` (its main pass)".into());
+    }
 }
 
 /// Identifiers the prelude generates must be unique.
@@ -131,7 +160,7 @@ fn check_names(m: &Material, diags: &mut Diagnostics) {
 }
 
 fn check_groups(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
-    let declared = !m.groups.is_empty();
+    let declared = sites.material_declares_groups;
     let mut used: Vec<(String, Loc)> = m
         .params
         .iter()
@@ -195,19 +224,29 @@ fn check_groups(m: &mut Material, sites: &Sites, diags: &mut Diagnostics) {
     }
 }
 
+/// What a per-variant condition decides, for notes.
+fn per_variant_subject(what: &str) -> &'static str {
+    if what == "when" {
+        "whether a pass exists"
+    } else {
+        "a texture default"
+    }
+}
+
 /// One condition of `what` (`show_if`, `exclude` or `default_when`): its
 /// subject exists and may be named there, and its value is one of the
 /// subject's. `exclude` and `default_when` select variants, so they may only
 /// name `tier` and `static` keywords.
 fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &mut Diagnostics) {
-    let per_variant = what == "default_when";
+    // `default_when` and a pass's `when` are decided per compiled variant.
+    let per_variant = what == "default_when" || what == "when";
     let values: Option<Vec<String>> = if c.subject == "tier" {
         Some(m.tiers.values.clone())
     } else if let Some(k) = m.keyword(&c.subject) {
         if per_variant && k.mode == weft_meta::KeywordMode::Constant {
             let d = diags.error(
                 "bad-condition",
-                format!("`default_when` names `{}`, a `constant` keyword", c.subject),
+                format!("`{what}` names `{}`, a `constant` keyword", c.subject),
                 loc.file,
                 loc.span.clone(),
                 "in this condition",
@@ -216,7 +255,7 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
                 Label::secondary(k.decl.file, k.decl.span.clone())
                     .with_message("declared with mode = \"constant\""),
             );
-            d.notes.push("a texture default is fixed per compiled variant, and one variant serves every value of a constant keyword; make it `mode = \"static\"` or test a static keyword or `tier`".into());
+            d.notes.push(format!("{} is fixed per compiled variant, and one variant serves every value of a constant keyword; make it `mode = \"static\"` or test a static keyword or `tier`", per_variant_subject(what)));
             return;
         }
         if what == "exclude" && k.mode == weft_meta::KeywordMode::Constant {
@@ -257,14 +296,14 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
             let d = diags.error(
                 "bad-condition",
                 format!(
-                    "`default_when` can only name static keywords and `tier`, not parameter `{}`",
+                    "`{what}` can only name static keywords and `tier`, not parameter `{}`",
                     c.subject
                 ),
                 loc.file,
                 loc.span.clone(),
                 "in this condition",
             );
-            d.notes.push("a texture default is fixed per compiled variant, and parameters change at run time; use a static keyword".into());
+            d.notes.push(format!("{} is fixed per compiled variant, and parameters change at run time; use a static keyword", per_variant_subject(what)));
             return;
         }
         Some(vec!["off".into(), "on".into()])
@@ -289,7 +328,15 @@ fn check_condition(m: &Material, c: &Condition, loc: &Loc, what: &str, diags: &m
         };
         let d = diags.error(
             "unknown-keyword",
-            format!("unknown keyword `{}` in {what}", c.subject),
+            format!(
+                "unknown keyword `{}` in {}",
+                c.subject,
+                if what == "when" {
+                    "a pass's `when`"
+                } else {
+                    what
+                }
+            ),
             loc.file,
             loc.span.clone(),
             format!("`{}` is not {is_not}", c.subject),

@@ -102,6 +102,36 @@ impl<'a> Resolver<'a> {
 
     /// Resolves an include path (relative to the root).
     pub fn include(&mut self, rel: &str, origin: Origin) {
+        if let Some(canonical) = self.locate_include(rel, &origin) {
+            self.visit(canonical, origin);
+        }
+    }
+
+    /// Reads a file named relative to the root (a shared pass file) into
+    /// `db` without composing it; the same checks as [`Resolver::include`].
+    pub fn read(&mut self, rel: &str, origin: Origin) -> Option<FileId> {
+        let path = self.locate_include(rel, &origin)?;
+        if let Some(id) = self.db.find(&path) {
+            return Some(id);
+        }
+        match std::fs::read_to_string(&path) {
+            Ok(text) => Some(self.db.add(&path, display_path(&path), text)),
+            Err(e) => {
+                self.diags.error(
+                    "io",
+                    format!("cannot read `{}`: {e}", display_path(&path)),
+                    origin.file,
+                    origin.span,
+                    "named here",
+                );
+                None
+            }
+        }
+    }
+
+    /// The canonical path of an include, reported when missing or outside
+    /// the root.
+    fn locate_include(&mut self, rel: &str, origin: &Origin) -> Option<PathBuf> {
         let candidate = self.root.join(rel);
         let Some(canonical) = self.locate(&candidate) else {
             let root = self.shown_root();
@@ -109,14 +139,14 @@ impl<'a> Resolver<'a> {
                 "missing-include",
                 format!("cannot find include `{rel}`"),
                 origin.file,
-                origin.span,
+                origin.span.clone(),
                 "no such file",
             );
             d.notes.push(format!(
                 "include paths are relative to the materials root `{}` (the nearest folder above the material that has a `lib/` folder)",
                 root
             ));
-            return;
+            return None;
         };
         if !canonical.starts_with(&self.root) {
             let root = self.shown_root();
@@ -125,7 +155,7 @@ impl<'a> Resolver<'a> {
                 "include-outside-root",
                 format!("include `{rel}` is outside the materials root"),
                 origin.file,
-                origin.span,
+                origin.span.clone(),
                 "leaves the materials folder",
             );
             d.notes.extend(how);
@@ -133,9 +163,9 @@ impl<'a> Resolver<'a> {
                 "only files under the materials root `{}` can be included; move the file into its `lib/` folder",
                 root
             ));
-            return;
+            return None;
         }
-        self.visit(canonical, origin);
+        Some(canonical)
     }
 
     /// How a path that resolved outside the root got there, when it is not

@@ -120,9 +120,29 @@ fn load_loaded(
     if !in_memory && !includes::material_inside_root(abs, root, file, diags) {
         return None;
     }
+    // Shared pass files first: the parser merges their declarations.
+    let pass_files: Vec<(String, FileId, String)> = {
+        let mut resolver = if in_memory {
+            Resolver::in_memory(db, diags, root)
+        } else {
+            Resolver::new(db, diags, root)
+        };
+        let mut read = Vec::new();
+        for (rel, span) in parse::pass_include_entries(text) {
+            if let Some(id) = resolver.read(&rel, Origin { file, span }) {
+                read.push((rel, id));
+            }
+        }
+        read.into_iter()
+            .map(|(rel, id)| {
+                let text = db.text(id).to_string();
+                (rel, id, text)
+            })
+            .collect()
+    };
     let mut material = {
         let mut cx = Cx { file, diags };
-        parse::parse_material(text, abs, root, &mut cx)?
+        parse::parse_material(text, abs, root, &pass_files, &mut cx)?
     };
 
     // WGSL sources: the material's own file last, its includes first.
@@ -141,6 +161,15 @@ fn load_loaded(
     };
     for (inc, span) in extra {
         resolver.include(&inc, Origin { file, span });
+    }
+    for (inc, loc) in &material.pass_sources {
+        resolver.include(
+            inc,
+            Origin {
+                file: loc.file,
+                span: loc.span.clone(),
+            },
+        );
     }
     let dir = abs.parent().unwrap_or(Path::new("."));
     resolver.source(

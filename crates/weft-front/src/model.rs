@@ -53,6 +53,12 @@ pub struct Material {
     pub exclude_spans: Vec<Span>,
     pub presets: Vec<Preset>,
     pub passes: Vec<Pass>,
+    /// Shared pass files (`[[pass]] include = "lib/x.pass.toml"`) read for
+    /// this material, in include order: their text is an input of the build.
+    pub pass_files: Vec<SourceFile>,
+    /// The WGSL `source` of each shared pass (relative to the root), where
+    /// its file names it: composed like a `[material] includes` entry.
+    pub pass_sources: Vec<(String, Loc)>,
     /// WebGPU limits raised by `[limits]` (the rest are WebGPU's defaults).
     pub limits: weft_meta::DeviceLimits,
     /// Where each declared limit is written, in `file`.
@@ -215,6 +221,11 @@ pub struct Pass {
     pub depth_test: DepthTest,
     pub queue: i64,
     pub instances: Instances,
+    /// `when`: static keyword / tier conditions, all of which must hold for
+    /// the pass to exist in a variant (empty: every variant).
+    pub when: Vec<Condition>,
+    /// Where `when` is written.
+    pub when_span: Option<Span>,
     pub decl: Loc,
     /// Where `vertex` / `fragment` are written (the pass itself when absent).
     pub vertex_span: Span,
@@ -251,6 +262,30 @@ impl Param {
 }
 
 impl Material {
+    /// Entry points named only by passes variant `key` does not have: the
+    /// compiler removes them (and the code only they reach) from its module.
+    pub fn dropped_entry_points(&self, key: &VariantKey) -> Vec<String> {
+        let kept: Vec<&str> = self
+            .passes_of(key)
+            .flat_map(|p| [p.vertex.as_str(), p.fragment.as_str()])
+            .collect();
+        let mut dropped: Vec<String> = Vec::new();
+        for p in &self.passes {
+            for name in [&p.vertex, &p.fragment] {
+                if !kept.contains(&name.as_str()) && !dropped.contains(name) {
+                    dropped.push(name.clone());
+                }
+            }
+        }
+        dropped
+    }
+
+    /// The passes variant `key` has: those whose `when` holds there, in
+    /// declaration order.
+    pub fn passes_of<'a>(&'a self, key: &'a VariantKey) -> impl Iterator<Item = &'a Pass> {
+        self.passes.iter().filter(|p| key.matches(self, &p.when))
+    }
+
     /// [`Param::texture_default_where`] for the variant with static keyword
     /// values `keywords` (keyword name -> value name; a keyword missing from
     /// the map has its default value) and tier `tier` (a tier name).
@@ -346,6 +381,7 @@ name = "reference"
             MATERIAL,
             Path::new("m.toml"),
             Path::new("."),
+            &[],
             &mut Cx {
                 file,
                 diags: &mut diags,

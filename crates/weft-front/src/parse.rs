@@ -10,12 +10,13 @@
 mod keywords;
 mod limits;
 mod params;
+mod pass_files;
 mod passes;
 mod presets;
 
 use crate::check::Sites;
 use crate::condition::parse_condition_text;
-use crate::diag::Span;
+use crate::diag::{FileId, Span};
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, expect_array, expect_string};
 use std::path::Path;
@@ -91,6 +92,25 @@ pub const PASS_KEYS: &[&str] = &[
     "depth_test",
     "queue",
     "instances",
+    "when",
+    "include",
+];
+/// Top-level tables of a shared pass file (`lib/<name>.pass.toml`).
+pub const PASS_FILE_TOP_KEYS: &[&str] = &["pass", "groups", "params", "keywords"];
+/// Keys of a shared pass file's `[pass]`: a `[[pass]]`'s, with the WGSL
+/// `source` it brings instead of `include`.
+pub const PASS_FILE_PASS_KEYS: &[&str] = &[
+    "name",
+    "vertex",
+    "fragment",
+    "blend",
+    "cull",
+    "depth_write",
+    "depth_test",
+    "queue",
+    "instances",
+    "when",
+    "source",
 ];
 /// Keys of `[limits]`: WebGPU's limits in snake_case (`weft_meta::limits::LIMITS`).
 pub const LIMITS_KEYS: &[&str] = &[
@@ -110,7 +130,15 @@ pub const DEFAULT_MAX_VARIANTS: usize = 64;
 
 /// Parses a material file. `None` when the TOML itself does not parse or a
 /// required part is missing; every problem found is in `cx.diags`.
-pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Option<Material> {
+/// `pass_files` are the shared pass files its `[[pass]] include`s name, read
+/// beforehand ([`pass_include_entries`]): (path as written, file, text).
+pub fn parse_material(
+    text: &str,
+    path: &Path,
+    root: &Path,
+    pass_files: &[(String, FileId, String)],
+    cx: &mut Cx,
+) -> Option<Material> {
     let doc = match DeTable::parse(text) {
         Ok(doc) => doc,
         Err(e) => {
@@ -201,64 +229,20 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
         exclude_spans: Vec::new(),
         presets: Vec::new(),
         passes: Vec::new(),
+        pass_files: Vec::new(),
+        pass_sources: Vec::new(),
         limits: weft_meta::DeviceLimits::default(),
         limit_spans: Vec::new(),
         decl,
         name,
     };
 
-    if let Some(g) = top
-        .get("groups")
-        .and_then(|v| Table::new(v, "[groups]", cx))
-    {
-        for (gname, gspan, gv) in g.entries() {
-            let Some(t) = Table::new(gv, format!("group `{gname}`"), cx) else {
-                continue;
-            };
-            t.check_keys(GROUP_KEYS, cx);
-            let _ = gspan;
-            material.groups.push(Group {
-                name: gname.to_string(),
-                label: t.string("label", cx).unwrap_or_else(|| gname.to_string()),
-                label_zh: t.string("label_zh", cx),
-            });
-        }
-    }
-
     let mut sites = Sites::default();
-    if let Some(p) = top
-        .get("params")
-        .and_then(|v| Table::new(v, "[params]", cx))
-    {
-        for (pname, pspan, pv) in p.entries() {
-            if let Some(span) = value_span(pv, "show_if") {
-                sites.param_show_if.insert(pname.to_string(), span);
-            }
-            if let Some(span) = value_span(pv, "group") {
-                sites.param_group.insert(pname.to_string(), span);
-            }
-            if let Some(param) = params::parse_param(pname, pspan, pv, &mut sites, cx) {
-                material.params.push(param);
-            }
-        }
-    }
-
-    if let Some(k) = top
-        .get("keywords")
-        .and_then(|v| Table::new(v, "[keywords]", cx))
-    {
-        for (kname, kspan, kv) in k.entries() {
-            if let Some(span) = value_span(kv, "show_if") {
-                sites.keyword_show_if.insert(kname.to_string(), span);
-            }
-            if let Some(span) = value_span(kv, "group") {
-                sites.keyword_group.insert(kname.to_string(), span);
-            }
-            if let Some(kw) = keywords::parse_keyword(kname, kspan, kv, cx) {
-                material.keywords.push(kw);
-            }
-        }
-    }
+    parse_declarations(&top, &mut material, &mut sites, cx);
+    sites.material_declares_groups = !material.groups.is_empty();
+    // Shared passes bring their own groups, parameters and keywords: read
+    // them before the presets, which may set them.
+    let included = pass_files::parse_included(&top, pass_files, &mut material, &mut sites, cx);
 
     keywords::parse_tiers(&top, &mut material, cx);
     limits::parse_limits(&top, &mut material, cx);
@@ -316,8 +300,14 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
     match top.get("pass") {
         Some(v) => {
             if let Some(items) = expect_array(v, "`pass`", cx) {
-                for item in items {
-                    if let Some(pass) = passes::parse_pass(item, cx) {
+                for (i, item) in items.iter().enumerate() {
+                    if let Some((pass, instances)) = included.get(&i) {
+                        material.passes.push(pass.clone());
+                        sites.instances.push(instances.clone());
+                    } else if value_of(item, "include").is_some() {
+                        // A shared pass that could not be read: reported already.
+                    } else if let Some(pass) = passes::parse_pass(item, PASS_KEYS, "a [[pass]]", cx)
+                    {
                         material.passes.push(pass);
                         sites.instances.push(value_span(item, "instances"));
                     }
@@ -333,6 +323,62 @@ pub fn parse_material(text: &str, path: &Path, root: &Path, cx: &mut Cx) -> Opti
     // The WGSL source is resolved afterwards by `includes.rs`.
     crate::check::check_references(&mut material, &sites, cx.diags);
     Some(material)
+}
+
+/// The `[groups]`, `[params]` and `[keywords]` of a material file or of a
+/// shared pass file (`cx.file`), appended to `material`.
+fn parse_declarations(top: &Table, material: &mut Material, sites: &mut Sites, cx: &mut Cx) {
+    if let Some(g) = top
+        .get("groups")
+        .and_then(|v| Table::new(v, "[groups]", cx))
+    {
+        for (gname, gspan, gv) in g.entries() {
+            let Some(t) = Table::new(gv, format!("group `{gname}`"), cx) else {
+                continue;
+            };
+            t.check_keys(GROUP_KEYS, cx);
+            let _ = gspan;
+            material.groups.push(Group {
+                name: gname.to_string(),
+                label: t.string("label", cx).unwrap_or_else(|| gname.to_string()),
+                label_zh: t.string("label_zh", cx),
+            });
+        }
+    }
+
+    if let Some(p) = top
+        .get("params")
+        .and_then(|v| Table::new(v, "[params]", cx))
+    {
+        for (pname, pspan, pv) in p.entries() {
+            if let Some(span) = value_span(pv, "show_if") {
+                sites.param_show_if.insert(pname.to_string(), span);
+            }
+            if let Some(span) = value_span(pv, "group") {
+                sites.param_group.insert(pname.to_string(), span);
+            }
+            if let Some(param) = params::parse_param(pname, pspan, pv, sites, cx) {
+                material.params.push(param);
+            }
+        }
+    }
+
+    if let Some(k) = top
+        .get("keywords")
+        .and_then(|v| Table::new(v, "[keywords]", cx))
+    {
+        for (kname, kspan, kv) in k.entries() {
+            if let Some(span) = value_span(kv, "show_if") {
+                sites.keyword_show_if.insert(kname.to_string(), span);
+            }
+            if let Some(span) = value_span(kv, "group") {
+                sites.keyword_group.insert(kname.to_string(), span);
+            }
+            if let Some(kw) = keywords::parse_keyword(kname, kspan, kv, cx) {
+                material.keywords.push(kw);
+            }
+        }
+    }
 }
 
 /// `key` of a TOML table value, if it is a table that has it.
@@ -373,6 +419,26 @@ pub fn source_entries(text: &str) -> (Option<NamedSpan>, Vec<NamedSpan>) {
         _ => Vec::new(),
     };
     (source, includes)
+}
+
+/// The `include` of every `[[pass]]` that has one, with its span, for
+/// `lib.rs` to read before parsing.
+pub fn pass_include_entries(text: &str) -> Vec<NamedSpan> {
+    let Ok(doc) = DeTable::parse(text) else {
+        return Vec::new();
+    };
+    let Some(DeValue::Array(items)) = doc.get_ref().get("pass").map(|v| v.get_ref()) else {
+        return Vec::new();
+    };
+    items
+        .iter()
+        .filter_map(
+            |item| match value_of(item, "include").map(|v| (v.get_ref(), v.span())) {
+                Some((DeValue::String(s), span)) => Some((s.to_string(), span)),
+                _ => None,
+            },
+        )
+        .collect()
 }
 
 /// A lower_snake identifier that survives naga's writers unchanged: they

@@ -170,6 +170,7 @@ mod tests {
             &text,
             Path::new("m.toml"),
             Path::new("."),
+            &[],
             &mut Cx {
                 file,
                 diags: &mut diags,

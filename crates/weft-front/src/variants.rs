@@ -13,6 +13,21 @@ pub struct VariantKey {
 }
 
 impl VariantKey {
+    /// The static part of a full assignment of keyword values (value index
+    /// per keyword of `m`, static and constant alike) at tier `tier`.
+    pub fn of_values(m: &Material, tier: usize, keyword_values: &[usize]) -> VariantKey {
+        VariantKey {
+            tier,
+            keywords: m
+                .keywords
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| k.mode == weft_meta::KeywordMode::Static)
+                .map(|(i, _)| (i, keyword_values[i]))
+                .collect(),
+        }
+    }
+
     /// File stem and id: `<tier>.<keyword>-<value>…`, lower case.
     pub fn id(&self, m: &Material) -> String {
         let mut id = m.tiers.values[self.tier].clone();

@@ -20,21 +20,21 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Version of the metadata layout written into every file.
-pub const SCHEMA_VERSION: u32 = 2;
+pub const SCHEMA_VERSION: u32 = 3;
 
 /// Version of the engine interface (group 0 frame, group 2 object, vertex inputs).
-pub const ENGINE_INTERFACE_VERSION: u32 = 1;
+pub const ENGINE_INTERFACE_VERSION: u32 = 2;
 
 /// Everything an engine needs to show, bind and draw one material.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialMetadata {
-    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 2). It changes
+    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 3). It changes
     /// when a field is removed or changes meaning: a reader must not guess at a version it does
     /// not know.
     pub schema_version: u32,
     /// Version of the engine interface the shaders were composed with
-    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 1): the group-0 frame and group-2
+    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 2): the group-0 frame and group-2
     /// object bindings and the fixed vertex locations (docs/engine-interface.md).
     pub engine_interface_version: u32,
     /// Material name (the folder name under `generated/`).
@@ -56,9 +56,10 @@ pub struct MaterialMetadata {
     pub tiers: Tiers,
     /// Named sets of parameter, keyword and tier values, in declaration order.
     pub presets: Vec<Preset>,
-    /// The draws of a mesh with this material, in declaration order (draw by
-    /// `render_state.queue`, then this order), each with its entry points and full pipeline
-    /// state.
+    /// Every pass of the material, in declaration order, each with its entry points and full
+    /// pipeline state. A variant draws the ones its `passes` names (a pass with a `when`
+    /// condition exists only in the variants where it holds), by `render_state.queue`, then
+    /// this order.
     pub passes: Vec<Pass>,
     /// Vertex inputs the material requires, with the engine interface's locations.
     pub vertex_inputs: Vec<VertexInput>,
@@ -721,6 +722,11 @@ pub struct Pass {
     pub render_state: RenderState,
     /// How many instances to draw (the shader reads `@builtin(instance_index)`).
     pub instances: InstanceCount,
+    /// The static keyword (or tier) values the pass exists in, all of which must hold
+    /// (`[[pass]] when`, e.g. an outline pass switched on by `OUTLINE`); empty: every
+    /// variant. Informational: each variant lists its passes (`Variant::passes`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub when: Vec<Condition>,
     /// The pipeline state that follows from it, in full.
     pub primitive: PrimitiveState,
     /// Colour attachments in fragment-output location order.
@@ -753,6 +759,10 @@ pub struct Variant {
     pub tier: String,
     /// Static keyword values.
     pub keywords: BTreeMap<String, String>,
+    /// Names of the passes (`MaterialMetadata::passes`) this variant draws, in declaration
+    /// order: the passes whose `when` holds here. The shader has the entry points of these
+    /// passes only.
+    pub passes: Vec<String>,
     /// Set when the specialised module is identical to an earlier variant's:
     /// use that variant's files and reflection.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -1006,6 +1016,13 @@ pub enum MemberEncoding {
 }
 
 impl MaterialMetadata {
+    /// The passes `variant` draws (its `passes`), in declaration order.
+    pub fn variant_passes<'a>(&'a self, variant: &'a Variant) -> impl Iterator<Item = &'a Pass> {
+        self.passes
+            .iter()
+            .filter(|p| variant.passes.iter().any(|n| *n == p.name))
+    }
+
     /// Where measurements of the material whose metadata is at `meta_path`
     /// (`<generated>/<name>/<name>.meta.json`) live: `<generated>/reports/<name>.measurements.json`.
     pub fn measurements_path(meta_path: &std::path::Path, name: &str) -> std::path::PathBuf {

@@ -243,7 +243,7 @@ impl Renderer {
         timestamps: Option<&wgpu::QuerySet>,
     ) -> Result<(HdrImage, Vec<f64>)> {
         let (w, h) = (options.width.max(1), options.height.max(1));
-        self.write_frame(view, w as f32 / h as f32, options)?;
+        self.write_frame(view, (w, h), options)?;
         let gpu = &self.gpu;
         let device = &gpu.device;
         let targets = RenderTargets::new(device, w, h, options.format, "weft");
@@ -291,9 +291,15 @@ impl Renderer {
 
     /// Writes `weft_frame` (every layout's buffer) and the sky's uniform
     /// for one frame.
-    fn write_frame(&self, view: &FrameView, aspect: f32, options: &RenderOptions) -> Result<()> {
+    fn write_frame(
+        &self,
+        view: &FrameView,
+        size: (u32, u32),
+        options: &RenderOptions,
+    ) -> Result<()> {
+        let aspect = size.0 as f32 / size.1 as f32;
         for block in &self.frame_blocks {
-            let bytes = frame_bytes(block, view, aspect, options)?;
+            let bytes = frame_bytes(block, view, size, options)?;
             self.gpu.queue.write_buffer(&block.buffer, 0, &bytes);
         }
         let view_proj = view.camera.view_proj(aspect);

@@ -52,7 +52,9 @@ impl UniformBlock {
 pub(crate) fn frame_member_type(name: &str) -> Option<&'static str> {
     Some(match name {
         "view_proj" | "view" => "mat4x4<f32>",
-        "camera_position" | "light_direction" | "light_color" | "params" => "vec4<f32>",
+        "camera_position" | "light_direction" | "light_color" | "params" | "viewport" => {
+            "vec4<f32>"
+        }
         "sh" => "array<vec4<f32>,9>",
         _ => return None,
     })
@@ -114,13 +116,16 @@ fn vec4(v: [f32; 3], w: f32) -> Vec<f32> {
     vec![v[0], v[1], v[2], w]
 }
 
-/// `weft_frame` as the block's layout lays it out.
+/// `weft_frame` as the block's layout lays it out, for a viewport of
+/// `size` pixels (the whole target, or one probe tile).
 pub(crate) fn frame_bytes(
     block: &UniformBlock,
     view: &FrameView,
-    aspect: f32,
+    size: (u32, u32),
     options: &RenderOptions,
 ) -> Result<Vec<u8>> {
+    let (w, h) = (size.0.max(1) as f32, size.1.max(1) as f32);
+    let aspect = w / h;
     let camera = view.camera;
     let mut bytes = vec![0u8; block.size as usize];
     for m in &block.layout.members {
@@ -137,6 +142,7 @@ pub(crate) fn frame_bytes(
                 options.time,
                 0.0,
             ],
+            "viewport" => vec![w, h, 1.0 / w, 1.0 / h],
             other => {
                 return Err(Error::Metadata(format!(
                     "`weft_frame` member `{other}` is not one weft-render fills"

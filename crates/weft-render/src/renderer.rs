@@ -266,7 +266,7 @@ impl Renderer {
     ) -> Result<PreparedMaterial> {
         let (bound, variant_id) = self.bind_material(
             material,
-            &material_passes(material),
+            &material_passes(material)?,
             options,
             math::IDENTITY,
             self.env.clone(),
@@ -430,11 +430,17 @@ impl Renderer {
     }
 }
 
-/// The material's passes in draw order: by queue, stable.
-fn material_passes(material: &Material) -> Vec<Pass> {
-    let mut passes = material.metadata().passes.clone();
+/// The passes of the material's current variant (`Variant::passes`) in draw
+/// order: by queue, stable.
+fn material_passes(material: &Material) -> Result<Vec<Pass>> {
+    let variant = material.current_variant()?.requested;
+    let mut passes: Vec<Pass> = material
+        .metadata()
+        .variant_passes(variant)
+        .cloned()
+        .collect();
     passes.sort_by_key(|p| p.render_state.queue);
-    passes
+    Ok(passes)
 }
 
 /// What a group-1 texture binding of the material's variant samples: the

@@ -86,7 +86,7 @@ impl Renderer {
             };
             let start = uniforms.len();
             if let Some(block) = frame {
-                uniforms.extend(frame_bytes(block, &view, tw as f32 / th as f32, options)?);
+                uniforms.extend(frame_bytes(block, &view, (tw, th), options)?);
             }
             if let Some(block) = object {
                 uniforms.extend(object_bytes(block, &tile.scene.model)?);

@@ -168,6 +168,7 @@ fn pass(name: &str, queue: i64, instances: InstanceCount) -> Pass {
             queue,
         },
         instances,
+        when: Vec::new(),
         primitive: PrimitiveState {
             topology: PrimitiveTopology::TriangleList,
             front_face: FrontFace::Ccw,

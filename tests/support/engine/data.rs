@@ -82,6 +82,8 @@ pub struct FrameInputs {
     pub light_color: [f32; 3],
     pub exposure: f32,
     pub time: f32,
+    /// Width and height of the colour target in pixels (`viewport`).
+    pub viewport: [f32; 2],
 }
 
 /// The environment the engine provides: a GGX-prefiltered radiance cube

@@ -8,6 +8,7 @@ use super::device::Engine;
 use super::formats;
 use super::library::{
     MaterialInputs, ShaderRef, TextureData, canonical_variants, library_inputs, queue_order,
+    variant_passes,
 };
 use super::pipeline::{self, Language, Orientation, Pipelines};
 use super::uniforms;
@@ -624,10 +625,11 @@ impl Engine {
         (width, height): (u32, u32),
         clear: [f64; 4],
     ) -> Result<Image, String> {
-        let (_, shader) = canonical_variants(meta)?
+        let (v, shader) = canonical_variants(meta)?
             .into_iter()
             .find(|(v, _)| v.id == variant)
             .ok_or_else(|| format!("{}: no canonical variant `{variant}`", meta.name))?;
+        let passes = variant_passes(meta, v);
         let s = ShaderRef {
             label: format!("{}/{variant}", meta.name),
             dir: meta_path
@@ -636,12 +638,12 @@ impl Engine {
                 .to_path_buf(),
             root: root.to_path_buf(),
             shader,
-            passes: &meta.passes,
+            passes: &passes,
             languages: Some(&meta.languages),
         };
-        let inputs = library_inputs(meta, shader)?;
+        let inputs = library_inputs(meta, &passes, shader)?;
         let prepared = self.prepare(world, &s, language, &inputs, mesh, &IDENTITY)?;
-        let draws: Vec<DrawItem> = queue_order(&meta.passes)
+        let draws: Vec<DrawItem> = queue_order(&passes)
             .into_iter()
             .map(|pass| DrawItem {
                 prepared: &prepared,

@@ -67,7 +67,7 @@ pub fn mesh(m: &weft_render::Mesh) -> Mesh {
     }
 }
 
-/// Camera and light of `camera`/`light` for a square picture.
+/// Camera and light of `camera`/`light` for the square `SIZE` picture.
 pub fn frame(camera: &weft_render::Camera, light: &weft_render::Light) -> FrameInputs {
     FrameInputs {
         view_proj: camera.view_proj(1.0),
@@ -77,6 +77,7 @@ pub fn frame(camera: &weft_render::Camera, light: &weft_render::Light) -> FrameI
         light_color: light.radiance,
         exposure: 1.0,
         time: 0.0,
+        viewport: [SIZE as f32; 2],
     }
 }
 

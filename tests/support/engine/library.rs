@@ -76,6 +76,17 @@ impl Library {
 
 /// The canonical variants of a material (aliases resolve to one of these
 /// through `alias_of`), each with its shader.
+/// The passes a variant draws: those of `passes[]` that its `passes` names
+/// (docs/engine-interface.md: a pass with `when` exists only in some
+/// variants), in declaration order.
+pub fn variant_passes(meta: &MaterialMetadata, variant: &Variant) -> Vec<Pass> {
+    meta.passes
+        .iter()
+        .filter(|p| variant.passes.contains(&p.name))
+        .cloned()
+        .collect()
+}
+
 pub fn canonical_variants(
     meta: &MaterialMetadata,
 ) -> Result<Vec<(&Variant, &VariantShader)>, String> {
@@ -155,9 +166,11 @@ fn count_of(v: f64) -> u32 {
 /// A library variant with every parameter at its declared default: the
 /// material uniform from `parameters[]` (by each member's `parameter` and
 /// `encoding`), textures from `bindings[].texture.default` or the gradient's
-/// `baked_default`, instance counts fixed or the int parameter's default.
+/// `baked_default`, instance counts (per pass of `passes`: the variant's,
+/// [`variant_passes`]) fixed or the int parameter's default.
 pub fn library_inputs(
     meta: &MaterialMetadata,
+    passes: &[Pass],
     shader: &VariantShader,
 ) -> Result<MaterialInputs, String> {
     let uniform = match shader
@@ -212,8 +225,7 @@ pub fn library_inputs(
         };
         textures.insert(b.binding, data);
     }
-    let instances = meta
-        .passes
+    let instances = passes
         .iter()
         .map(|pass| match &pass.instances {
             InstanceCount::Fixed(n) => Ok(*n),

@@ -215,6 +215,10 @@ pub fn frame(
                 .flat_map(|c| [c[0], c[1], c[2], 0.0])
                 .collect(),
             "params" => vec![env.mips.len() as f32, f.exposure, f.time, 0.0],
+            "viewport" => {
+                let [w, h] = f.viewport;
+                vec![w, h, 1.0 / w, 1.0 / h]
+            }
             other => return Err(format!("unknown weft_frame member `{other}`")),
         };
         put(&mut bytes, m, &f32s(&v))?;

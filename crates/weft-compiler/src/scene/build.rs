@@ -300,16 +300,7 @@ pub fn build_resolved_scene(
                 continue;
             }
         };
-        let static_key = VariantKey {
-            tier,
-            keywords: m
-                .keywords
-                .iter()
-                .enumerate()
-                .filter(|(_, k)| k.mode == weft_meta::KeywordMode::Static)
-                .map(|(i, _)| (i, inst.keywords[i]))
-                .collect(),
-        };
+        let static_key = VariantKey::of_values(m, tier, &inst.keywords);
         let variant = static_key.id(m);
         let shader = &built.compiled.shader;
 
@@ -470,7 +461,10 @@ pub fn build_resolved_scene(
                 .collect(),
             uniform_values,
             textures,
-            passes: metadata::passes(m),
+            passes: metadata::passes(m)
+                .into_iter()
+                .filter(|p| static_key.matches(m, &p.when))
+                .collect(),
             mesh: inst.mesh.name().into(),
             transform: SceneTransform {
                 translation: inst.transform.translation,

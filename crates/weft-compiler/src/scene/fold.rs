@@ -48,6 +48,8 @@ pub struct FoldRequest {
     pub textures: BTreeMap<String, [f32; 4]>,
     /// The material uniform variable's name.
     pub uniform_var: String,
+    /// Entry points of the passes the instance does not draw (`when`).
+    pub drop_entry_points: Vec<String>,
 }
 
 /// The folded module and what folding left in the uniform.
@@ -136,6 +138,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
             .iter()
             .map(|(k, v)| (k.clone(), *v))
             .collect(),
+        drop_entry_points: request.drop_entry_points.clone(),
     };
     let module = crate::specialise::specialise(&module, &bindings);
 

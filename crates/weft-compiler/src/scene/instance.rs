@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 use weft_front::model::{Material, Param, ParamValue};
 use weft_front::samples;
 use weft_front::scene::model::{ResolvedInstance, SceneFeatures};
+use weft_front::variants::VariantKey;
 use weft_meta::{KeywordKind, ParamKind};
 
 /// The default texture transform (Unity's `_ST`: scale xy, offset zw).
@@ -74,6 +75,7 @@ pub fn instance_values(
 ) -> InstanceValues {
     let mut fold = FoldRequest {
         uniform_var: UNIFORM_VAR.into(),
+        drop_entry_points: m.dropped_entry_points(&VariantKey::of_values(m, tier, &inst.keywords)),
         ..Default::default()
     };
     fold.overrides

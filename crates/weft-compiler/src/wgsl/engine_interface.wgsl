@@ -1,4 +1,4 @@
-// weft engine interface, version 1.
+// weft engine interface, version 2 (v1 + `WeftFrame.viewport`).
 //
 // Composed ahead of every material by the toolchain (never edited per material).
 // Group 0 is per frame, group 1 per material (generated from the material's
@@ -35,6 +35,10 @@ struct WeftFrame {
     // x: number of mip levels of the prefiltered environment cube;
     // y: exposure; z: time in seconds; w: unused.
     params: vec4<f32>,
+    // xy: size of the colour target in pixels; zw: 1 / xy. For effects sized
+    // in pixels (outlines); all zero when an engine does not know it, which
+    // such code must survive (lib/outline.wgsl draws no outline then).
+    viewport: vec4<f32>,
 }
 
 struct WeftObject {

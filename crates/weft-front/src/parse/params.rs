@@ -369,6 +369,7 @@ name = "reference"
             &text,
             Path::new("m.toml"),
             Path::new("."),
+            &[],
             &mut Cx {
                 file,
                 diags: &mut diags,

@@ -1,7 +1,7 @@
 //! `[[pass]]` tables -> [`Pass`] (entry points, blend, cull, depth, queue,
 //! instance count), and the single default pass of a material without any.
 
-use super::PASS_KEYS;
+use super::{CONDITION_FORMS, bad_condition_with};
 use crate::diag::Span;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, type_error};
@@ -19,6 +19,8 @@ pub(super) fn default_pass(file: usize, span: Span) -> Pass {
         depth_test: DepthTest::LessEqual,
         queue: 2000,
         instances: Instances::Fixed(1),
+        when: Vec::new(),
+        when_span: None,
         vertex_span: span.clone(),
         fragment_span: span.clone(),
         decl: Loc { file, span },
@@ -47,9 +49,10 @@ fn pick<T: Copy>(t: &Table, key: &str, options: &[(&str, T)], cx: &mut Cx) -> Op
     }
 }
 
-pub(super) fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
-    let t = Table::new(v, "a [[pass]]", cx)?;
-    t.check_keys(PASS_KEYS, cx);
+/// A `[[pass]]` table (or a shared pass file's `[pass]`: `keys` differ).
+pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> Option<Pass> {
+    let t = Table::new(v, what, cx)?;
+    t.check_keys(keys, cx);
     let mut pass = default_pass(cx.file, v.span());
     pass.name = t.string("name", cx).unwrap_or(pass.name);
     pass.vertex = t.string("vertex", cx).unwrap_or(pass.vertex);
@@ -106,6 +109,15 @@ pub(super) fn parse_pass(v: &Value, cx: &mut Cx) -> Option<Pass> {
     }
     pass.depth_write = t.boolean("depth_write", cx).unwrap_or(pass.depth_write);
     pass.queue = t.integer("queue", cx).unwrap_or(pass.queue);
+    if let Some(w) = t.get("when") {
+        pass.when_span = Some(w.span());
+        if let Some(text) = crate::toml_reader::expect_string(w, "`when`", cx) {
+            match crate::condition::parse_condition_text(&text) {
+                Ok(conds) => pass.when = conds,
+                Err(msg) => bad_condition_with(cx, &msg, w.span(), CONDITION_FORMS),
+            }
+        }
+    }
     if let Some(iv) = t.get("instances") {
         match iv.get_ref() {
             DeValue::Integer(_) => {

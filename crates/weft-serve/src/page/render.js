@@ -488,7 +488,8 @@ export class Renderer {
       const n = ['position', 'normal'].includes(vi.name) ? 3 : ['uv0', 'uv1'].includes(vi.name) ? 2 : 4;
       return { arrayStride: n * 4, attributes: [{ shaderLocation: vi.location, offset: 0, format: vi.format }] };
     });
-    const passes = meta.passes.map((p, i) => ({ p, i })).sort((a, b) => a.p.render_state.queue - b.p.render_state.queue || a.i - b.i).map((x) => x.p);
+    // The variant's own passes (`variant.passes`: a pass with `when` exists only where it holds).
+    const passes = meta.passes.filter((p) => variant.passes.includes(p.name)).map((p, i) => ({ p, i })).sort((a, b) => a.p.render_state.queue - b.p.render_state.queue || a.i - b.i).map((x) => x.p);
     const pipelines = [];
     for (const pass of passes) {
       const desc = {
@@ -563,7 +564,8 @@ export class Renderer {
     this.device.queue.writeBuffer(v.material.buffer, 0, out);
   }
 
-  frameBytes(block, camera, aspect) {
+  frameBytes(block, camera, w, h) {
+    const aspect = w / h;
     const f = new Float32Array(block.size / 4);
     const view = lookAt(camera.eye, camera.target, camera.up);
     const proj = perspective(camera.fov_y_degrees * Math.PI / 180, aspect, camera.near, camera.far);
@@ -577,6 +579,7 @@ export class Renderer {
         case 'light_color': vals = [...this.light.radiance, 0]; break;
         case 'sh': vals = this.env.sh.flatMap((c) => [...c, 0]); break;
         case 'params': vals = [this.env.mip_count, this.exposure, this.time, 0]; break;
+        case 'viewport': vals = [w, h, 1 / w, 1 / h]; break;
         default: throw new Error(`weft_frame member ${m.name} is not one the page fills`);
       }
       f.set(vals, m.offset / 4);
@@ -612,7 +615,7 @@ export class Renderer {
     d.queue.writeBuffer(this.skyUniform, 0, sky);
     if (v) {
       for (const b of v.blocks) {
-        if (b.kind === 'frame') d.queue.writeBuffer(b.buffer, 0, this.frameBytes(b, camera, aspect));
+        if (b.kind === 'frame') d.queue.writeBuffer(b.buffer, 0, this.frameBytes(b, camera, w, h));
         if (b.kind === 'object') d.queue.writeBuffer(b.buffer, 0, this.objectBytes(b, mesh.info.model));
       }
     }

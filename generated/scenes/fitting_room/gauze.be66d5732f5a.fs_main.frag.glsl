@@ -1,0 +1,315 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ANISO_ALPHA = 0.001;
+const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_1) {
+    float r = clamp(roughness_1, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
+    float _e4 = weft_specular_mip(roughness_2);
+    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_2.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
+    vec2 uv = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_2);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
+    return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+}
+
+mat3x3 weft_rotate_tangent_frame_cs(mat3x3 frame_1, float c_1, float s) {
+    float len2_2 = ((c_1 * c_1) + (s * s));
+    float inv = inversesqrt(max(len2_2, 1e-20));
+    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
+    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
+    vec3 t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
+    vec3 b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
+    return mat3x3(t_1, b_2, frame_1[2]);
+}
+
+mat3x3 weft_rotate_tangent_frame(mat3x3 frame_2, float angle) {
+    mat3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
+    return _e4;
+}
+
+vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
+    float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    return max(vec2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), vec2(0.001));
+}
+
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_1.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e6 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+    float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
+    float _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return ((_e10 * _e11) * clamp(l_1.z, 0.0, 1.0));
+}
+
+vec3 weft_aniso_bent_normal(mat3x3 frame_3, vec3 v_3, float anisotropy_1, float roughness_5) {
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
+    vec3 n_4 = frame_3[2];
+    vec3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
+    vec3 aniso_t = cross(dir_1, v_3);
+    vec3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+float gauze_grid_coverage(vec2 cell, vec2 w, float gap) {
+    float g = clamp(gap, 0.0, 1.0);
+    vec2 d_1 = abs((fract(cell) - vec2(0.5)));
+    vec2 ww = max(w, vec2(0.0001));
+    vec2 ramp = clamp((((vec2((0.5 * g)) - d_1) / ww) + vec2(0.5)), vec2(0.0), vec2(1.0));
+    vec2 open = mix(ramp, vec2(g), clamp(((ww * 2.0) - vec2(1.0)), vec2(0.0), vec2(1.0)));
+    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
+    return (1.0 - open_xy);
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    bool front_facing = gl_FrontFacing;
+    vec3 n = vec3(0.0);
+    vec3 spec_direct = vec3(0.0);
+    vec3 env_brdf = vec3(0.0);
+    vec3 diffuse_kd = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    float lobe = 0.0;
+    vec2 uv_s = (in_1.uv0_ * 60.0);
+    vec2 grid_w = fwidth(uv_s);
+    float _e16 = gauze_grid_coverage(uv_s, grid_w, 0.0);
+    float mesh = (1.0 * _e16);
+    vec3 _e20 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    float face = (front_facing ? 1.0 : -1.0);
+    vec3 _e26 = weft_safe_normalize((in_1.world_normal * face), _e20);
+    n = _e26;
+    vec3 _e28 = n;
+    mat3x3 _e30 = weft_tangent_frame(_e28, in_1.world_tangent);
+    float cos_v = min(abs(dot(_e26, _e20)), 1.0);
+    float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
+    float s_3 = pow(max(sin_v, 1e-8), 3.0);
+    float alpha = clamp(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * 0.3069396)))) * 1.0), 0.0, 1.0);
+    float coverage = clamp(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * 1.0), 0.0, 1.0);
+    mat3x3 _e67 = weft_rotate_tangent_frame(_e30, 1.5707964);
+    vec3 _e70 = weft_main_light_direction();
+    vec3 _e72 = n;
+    vec3 _e73 = weft_safe_normalize((_e70 + _e20), _e72);
+    vec3 _e74 = n;
+    float _e76 = weft_clamp_cos(dot(_e74, _e20));
+    vec3 _e77 = n;
+    float n_dot_l = clamp(dot(_e77, _e70), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e20, _e73), 0.0, 1.0);
+    vec2 _e82 = weft_aniso_alpha_kulla(0.45, 0.8);
+    vec3 _e83 = weft_main_light_radiance();
+    {
+        {
+            vec3 _e92 = weft_aniso_to_frame(_e30, _e20);
+            vec3 _e93 = weft_aniso_to_frame(_e30, _e70);
+            vec3 _e94 = weft_aniso_to_frame(_e67, _e20);
+            vec3 _e95 = weft_aniso_to_frame(_e67, _e70);
+            float _e98 = weft_spec_ggx_aniso(_e92, _e93, _e82.x, _e82.y);
+            float _e101 = weft_spec_ggx_aniso(_e94, _e95, _e82.x, _e82.y);
+            lobe = mix(_e98, _e101, 0.0);
+        }
+        vec3 _e103 = weft_f_schlick(vec3(0.04), v_dot_h_1);
+        float _e104 = lobe;
+        spec_direct = ((((_e104 * _e103) * vec3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83);
+        vec3 _e110 = weft_f_schlick(vec3(0.04), _e76);
+        diffuse_kd = (vec3(1.0) - (vec3(1.0, 0.8900054, 0.93310684) * _e110));
+        vec2 _e113 = weft_env_brdf_lut(_e76, 0.45);
+        vec3 _e114 = weft_env_brdf_from_lut(vec3(0.04), _e113);
+        env_brdf = (_e114 * vec3(1.0, 0.8900054, 0.93310684));
+        vec3 _e117 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e117), vec3(0.0));
+    }
+    vec3 _e121 = diffuse_kd;
+    vec3 _e122 = weft_diffuse_lambert(vec3(0.84808826, 0.71056646, 0.7484141));
+    vec3 diffuse_direct = (((_e121 * _e122) * _e83) * n_dot_l);
+    vec3 _e126 = n;
+    vec3 _e127 = weft_sh_irradiance(_e126);
+    vec3 _e128 = ambient_kd;
+    vec3 diffuse_indirect = ((_e127 * _e128) * vec3(0.84808826, 0.71056646, 0.7484141));
+    vec3 _e131 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
+    vec3 _e134 = weft_prefiltered_radiance(reflect(-(_e20), _e131), 0.45);
+    vec3 _e135 = env_brdf;
+    vec3 spec_indirect = ((_e134 * _e135) * 1.0);
+    vec3 _e140 = spec_direct;
+    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e140 + spec_indirect)));
+    vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

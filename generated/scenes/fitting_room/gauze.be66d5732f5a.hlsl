@@ -1,0 +1,389 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+float ZeroValuefloat() {
+    return (float)0;
+}
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ANISO_ALPHA = 0.001;
+static const float GAUZE_LN_MAX_TRANSMITTANCE = 6.9077554;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+    bool front_facing_1 : SV_IsFrontFace;
+};
+
+float weft_pow5_(float x)
+{
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n_1)
+{
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e5 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_2)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_1)
+{
+    float r = saturate(roughness_1);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
+{
+    const float _e4 = weft_specular_mip(roughness_2);
+    float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_2.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
+{
+    float2 uv = float2(saturate(n_dot_v), saturate(roughness_3));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
+    return _e8.xy;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_3);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_3, t) * s_2);
+    return float3x3(t, b_1, n_3);
+}
+
+float3 weft_aniso_to_frame(float3x3 frame, float3 x_1)
+{
+    return float3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+}
+
+float3x3 weft_rotate_tangent_frame_cs(float3x3 frame_1, float c_1, float s)
+{
+    float len2_2 = ((c_1 * c_1) + (s * s));
+    float inv = rsqrt(max(len2_2, 1e-20));
+    float cc = ((len2_2 > 1e-20) ? (c_1 * inv) : 1.0);
+    float ss = ((len2_2 > 1e-20) ? (s * inv) : 0.0);
+    float3 t_1 = ((frame_1[0] * cc) + (frame_1[1] * ss));
+    float3 b_2 = ((frame_1[1] * cc) - (frame_1[0] * ss));
+    return float3x3(t_1, b_2, frame_1[2]);
+}
+
+float3x3 weft_rotate_tangent_frame(float3x3 frame_2, float angle)
+{
+    const float3x3 _e4 = weft_rotate_tangent_frame_cs(frame_2, cos(angle), sin(angle));
+    return _e4;
+}
+
+float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
+{
+    const float _e2 = weft_clamp_roughness(roughness_4);
+    float a_1 = (_e2 * _e2);
+    float k = clamp(anisotropy, -1.0, 1.0);
+    return max(float2((a_1 * (1.0 + k)), (a_1 * (1.0 - k))), (0.001).xx);
+}
+
+float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b)
+{
+    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
+    float ab = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
+    float x_2 = (t_dot_h / at);
+    float y = (b_dot_h / ab);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1)
+{
+    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
+    float ab_1 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
+    const float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_1);
+    float d = (1.0 / ((((WEFT_PI * at_1) * ab_1) * _e9) * _e9));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
+}
+
+float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+{
+    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_spec_ggx_aniso(float3 v_2, float3 l_1, float alpha_t_3, float alpha_b_3)
+{
+    const float3 _e6 = weft_safe_normalize((v_2 + l_1), float3(0.0, 0.0, 1.0));
+    const float _e10 = weft_d_ggx_aniso(_e6.x, _e6.y, _e6.z, alpha_t_3, alpha_b_3);
+    const float _e11 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    return ((_e10 * _e11) * saturate(l_1.z));
+}
+
+float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_3, float anisotropy_1, float roughness_5)
+{
+    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
+    float3 n_4 = frame_3[2];
+    float3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
+    float3 aniso_t = cross(dir_1, v_3);
+    float3 aniso_n = cross(aniso_t, dir_1);
+    float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    return _e22;
+}
+
+float gauze_grid_coverage(float2 cell, float2 w, float gap)
+{
+    float g = clamp(gap, 0.0, 1.0);
+    float2 d_1 = abs((frac(cell) - (0.5).xx));
+    float2 ww = max(w, (0.0001).xx);
+    float2 ramp = saturate((((((0.5 * g)).xx - d_1) / ww) + (0.5).xx));
+    float2 open = lerp(ramp, (g).xx, saturate(((ww * 2.0) - (1.0).xx)));
+    float open_xy = ((g > 0.0) ? (open.x * open.y) : 0.0);
+    return (1.0 - open_xy);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e54 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e54;
+    const float3 _e60 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e60, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e64 = out_;
+    const WeftVaryings weftvaryings = _e64;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    float3 n = (float3)0;
+    float3 spec_direct = (float3)0;
+    float3 env_brdf = (float3)0;
+    float3 diffuse_kd = (float3)0;
+    float3 ambient_kd = (float3)0;
+    float lobe = (float)0;
+
+    float2 uv_s = (in_1.uv0_ * 60.0);
+    float2 grid_w = fwidth(uv_s);
+    const float _e16 = gauze_grid_coverage(uv_s, grid_w, 0.0);
+    float mesh = (1.0 * _e16);
+    const float3 _e20 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    float face = (front_facing ? 1.0 : -1.0);
+    const float3 _e26 = weft_safe_normalize((in_1.world_normal * face), _e20);
+    n = _e26;
+    float3 _e28 = n;
+    const float3x3 _e30 = weft_tangent_frame(_e28, in_1.world_tangent);
+    float cos_v = min(abs(dot(_e26, _e20)), 1.0);
+    float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
+    float s_3 = pow(max(sin_v, 1e-8), 3.0);
+    float alpha = saturate(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * 0.3069396)))) * 1.0));
+    float coverage = saturate(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * 1.0));
+    const float3x3 _e67 = weft_rotate_tangent_frame(_e30, 1.5707964);
+    const float3 _e70 = weft_main_light_direction();
+    float3 _e72 = n;
+    const float3 _e73 = weft_safe_normalize((_e70 + _e20), _e72);
+    float3 _e74 = n;
+    const float _e76 = weft_clamp_cos(dot(_e74, _e20));
+    float3 _e77 = n;
+    float n_dot_l = saturate(dot(_e77, _e70));
+    float v_dot_h_1 = saturate(dot(_e20, _e73));
+    const float2 _e82 = weft_aniso_alpha_kulla(0.45, 0.8);
+    const float3 _e83 = weft_main_light_radiance();
+    {
+        {
+            const float3 _e92 = weft_aniso_to_frame(_e30, _e20);
+            const float3 _e93 = weft_aniso_to_frame(_e30, _e70);
+            const float3 _e94 = weft_aniso_to_frame(_e67, _e20);
+            const float3 _e95 = weft_aniso_to_frame(_e67, _e70);
+            const float _e98 = weft_spec_ggx_aniso(_e92, _e93, _e82.x, _e82.y);
+            const float _e101 = weft_spec_ggx_aniso(_e94, _e95, _e82.x, _e82.y);
+            lobe = lerp(_e98, _e101, 0.0);
+        }
+        const float3 _e103 = weft_f_schlick((0.04).xxx, v_dot_h_1);
+        float _e104 = lobe;
+        spec_direct = ((((_e104 * _e103) * float3(1.0, 0.8900054, 0.93310684)) * 1.0) * _e83);
+        const float3 _e110 = weft_f_schlick((0.04).xxx, _e76);
+        diffuse_kd = ((1.0).xxx - (float3(1.0, 0.8900054, 0.93310684) * _e110));
+        const float2 _e113 = weft_env_brdf_lut(_e76, 0.45);
+        const float3 _e114 = weft_env_brdf_from_lut((0.04).xxx, _e113);
+        env_brdf = (_e114 * float3(1.0, 0.8900054, 0.93310684));
+        float3 _e117 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e117), (0.0).xxx);
+    }
+    float3 _e121 = diffuse_kd;
+    const float3 _e122 = weft_diffuse_lambert(float3(0.84808826, 0.71056646, 0.7484141));
+    float3 diffuse_direct = (((_e121 * _e122) * _e83) * n_dot_l);
+    float3 _e126 = n;
+    const float3 _e127 = weft_sh_irradiance(_e126);
+    float3 _e128 = ambient_kd;
+    float3 diffuse_indirect = ((_e127 * _e128) * float3(0.84808826, 0.71056646, 0.7484141));
+    const float3 _e131 = weft_aniso_bent_normal(_e30, _e20, 0.8, 0.45);
+    const float3 _e134 = weft_prefiltered_radiance(reflect(-(_e20), _e131), 0.45);
+    float3 _e135 = env_brdf;
+    float3 spec_indirect = ((_e134 * _e135) * 1.0);
+    float3 _e140 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e140 + spec_indirect)));
+    float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}

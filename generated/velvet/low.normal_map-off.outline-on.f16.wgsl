@@ -1,0 +1,338 @@
+enable f16;
+
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    metallic: f32,
+    smoothness: f32,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    occlusion_strength: f32,
+    scatter_color: vec4<f32>,
+    scatter_scale: f32,
+    outline_color: vec4<f32>,
+    outline_width: f32,
+    outline_max_distance: f32,
+}
+
+struct WeftOutlineVertex {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+struct WeftOutlineVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_SHEEN_MIN_ROUGHNESS: f32 = 0.07f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(5) 
+var weft_sheen_lut: texture_2d<f32>;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var occlusion_map: texture_2d<f32>;
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness: f32) -> f32 {
+    let r_2 = saturate(roughness);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r_2 * (1.7f - (0.7f * r_2))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_1);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_sheen_clamp_roughness(sheen_roughness: f32) -> f32 {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_sheen_l(x: f32, r: f32) -> f32 {
+    let t = ((1f - r) * (1f - r));
+    let a = mix(21.5473f, 25.3245f, t);
+    let b = mix(3.82987f, 3.32435f, t);
+    let c_2 = mix(0.19823f, 0.16801f, t);
+    let d = mix(-1.9776f, -1.27393f, t);
+    let e_1 = mix(-4.32054f, -4.85967f, t);
+    return (((a / (1f + (b * pow(max(x, 0f), c_2)))) + (d * x)) + e_1);
+}
+
+fn weft_sheen_lambda_one_exp(cos_theta: f32, r_1: f32) -> f32 {
+    let _e2 = weft_clamp_cos(cos_theta);
+    let low = (_e2 < 0.5f);
+    let _e8 = weft_sheen_l(select((1f - _e2), _e2, low), r_1);
+    let _e10 = weft_sheen_l(0.5f, r_1);
+    return exp(select(((2f * _e10) - _e8), _e8, low));
+}
+
+fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness_1: f32) -> f32 {
+    let _e3 = textureDimensions(weft_sheen_lut);
+    let size = vec2<f32>(_e3);
+    let _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    let uv_1 = vec2<f32>(saturate(n_dot_x), _e6);
+    let texel = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_sheen_lut, texel, 0i);
+    return saturate(_e16.x);
+}
+
+fn velvet_low(n_2: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
+    let _e10 = weft_sheen_clamp_roughness(roughness_2);
+    let _e12 = weft_clamp_cos(dot(n_2, v_1));
+    let n_dot_l = saturate(dot(n_2, l));
+    let _e17 = material.scatter_color;
+    let sheen_color = vec3<f16>(saturate((f0_ + max(_e17.xyz, vec3(0f)))));
+    let _e25 = weft_sheen_albedo_nearest(_e12, _e10);
+    let e_v = f16(_e25);
+    let scaling_1 = saturate((1h - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
+    let inv_r = (1f / _e10);
+    let noh = saturate(dot(n_2, h));
+    let sin_pow = f16(pow(max(((1f - noh) * (1f + noh)), 0f), (0.5f * inv_r)));
+    let d_1 = ((f16((2f + inv_r)) * sin_pow) * 0.15917969h);
+    let _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
+    let _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
+    let g2_ = f16((1f / ((1f + _e57) + _e60)));
+    let nv = max(f16(_e12), 0.0010004044h);
+    let v_n_dot_l = select(0h, (g2_ / (4h * nv)), (n_dot_l > 0f));
+    let sheen_1 = vec3<f32>((sheen_color * (d_1 * v_n_dot_l)));
+    let base_direct = (diffuse_albedo * f32(((scaling_1 * f16(n_dot_l)) * 0.31835938h)));
+    let direct = ((sheen_1 + base_direct) * light);
+    let _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_2), _e10);
+    let env_sheen = ((_e88 * vec3<f32>((sheen_color * e_v))) * ao);
+    return ((direct + ((ambient * diffuse_albedo) * f32(scaling_1))) + env_sheen);
+}
+
+@vertex 
+fn vs_outline(in: WeftOutlineVertex) -> WeftOutlineVaryings {
+    var local: bool;
+    var local_1: bool;
+    var out: WeftOutlineVaryings;
+
+    let _e3 = weft_object.model;
+    let world = (_e3 * vec4<f32>(in.position, 1f));
+    let nm = weft_object.normal_matrix;
+    let normal = (mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal);
+    let _e22 = weft_frame.view_proj;
+    let clip = (_e22 * vec4<f32>(world.xyz, 1f));
+    let _e29 = weft_frame.viewport;
+    let size_1 = _e29.xy;
+    let _e33 = weft_frame.view_proj;
+    let screen_normal = ((_e33 * vec4<f32>(normal, 0f)).xy * size_1);
+    let len = length(screen_normal);
+    if (len > 0.000001f) {
+        let _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0f);
+    } else {
+        local = false;
+    }
+    let _e51 = local;
+    if _e51 {
+        local_1 = (clip.w > 0f);
+    } else {
+        local_1 = false;
+    }
+    let usable = local_1;
+    let direction = select(vec2(0f), (screen_normal / vec2(max(len, 0.000001f))), usable);
+    let _e68 = material.outline_width;
+    let width_px = max(_e68, 0f);
+    let _e74 = material.outline_max_distance;
+    let distance_ = min(clip.w, max(_e74, 0f));
+    let _e83 = weft_frame.viewport;
+    let offset = ((((direction * width_px) * 2f) * _e83.zw) * distance_);
+    out.clip_position = vec4<f32>((clip.xy + offset), clip.zw);
+    let _e93 = out;
+    return _e93;
+}
+
+@fragment 
+fn fs_outline() -> @location(0) vec4<f32> {
+    let _e2 = material.outline_color;
+    return vec4<f32>(max(_e2.xyz, vec3(0f)), 1f);
+}
+
+@vertex 
+fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
+    var out_1: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm_1 = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    let world_1 = (model * vec4<f32>(in_1.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_1.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out_1.clip_position = (_e43 * vec4<f32>(world_1.xyz, 1f));
+    out_1.world_position = world_1.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0f));
+    out_1.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0f));
+    out_1.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    let _e66 = out_1;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var color: vec3<f32>;
+    var sheen: vec3<f32>;
+    var scaling: f32;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = material.metallic;
+    let metallic = saturate(_e19);
+    let _e23 = material.smoothness;
+    let smoothness = saturate(_e23);
+    let roughness_3 = (1f - smoothness);
+    let _e29 = textureSample(occlusion_map, material_sampler, _e5);
+    let occlusion = _e29.x;
+    let _e33 = material.occlusion_strength;
+    let ao_1 = saturate(mix(1f, occlusion, _e33));
+    let _e42 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e44 = weft_safe_normalize(in_2.world_normal, _e42);
+    n = _e44;
+    let _e46 = weft_main_light_direction();
+    let _e48 = n;
+    let _e49 = weft_safe_normalize((_e46 + _e42), _e48);
+    let _e50 = n;
+    let _e52 = weft_clamp_cos(dot(_e50, _e42));
+    let _e53 = n;
+    let n_dot_l_1 = saturate(dot(_e53, _e46));
+    let _e56 = n;
+    let n_dot_h = saturate(dot(_e56, _e49));
+    let l_dot_h = saturate(dot(_e46, _e49));
+    let f0_1 = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo_1 = (base * (1f - metallic));
+    let _e67 = weft_main_light_radiance();
+    let _e68 = n;
+    let _e69 = weft_sh_irradiance(_e68);
+    let ambient_1 = (_e69 * ao_1);
+    {
+        let _e72 = n;
+        let _e73 = velvet_low(_e72, _e42, _e46, _e49, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e67, ambient_1);
+        color = _e73;
+    }
+    let _e74 = color;
+    let radiance = clamp(_e74, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}

@@ -1,0 +1,291 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float metallic;
+    float smoothness;
+    vec4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    vec4 scatter_color;
+    float scatter_scale;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_5_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness) {
+    float r_2 = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_sheen_clamp_roughness(float sheen_roughness) {
+    return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1.0);
+}
+
+float weft_sheen_l(float x, float r) {
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a_1 = mix(21.5473, 25.3245, t_1);
+    float b_2 = mix(3.82987, 3.32435, t_1);
+    float c_2 = mix(0.19823, 0.16801, t_1);
+    float d = mix(-1.9776, -1.27393, t_1);
+    float e_1 = mix(-4.32054, -4.85967, t_1);
+    return (((a_1 / (1.0 + (b_2 * pow(max(x, 0.0), c_2)))) + (d * x)) + e_1);
+}
+
+float weft_sheen_lambda_one_exp(float cos_theta, float r_1) {
+    float _e2 = weft_clamp_cos(cos_theta);
+    bool low = (_e2 < 0.5);
+    float _e8 = weft_sheen_l((low ? _e2 : (1.0 - _e2)), r_1);
+    float _e10 = weft_sheen_l(0.5, r_1);
+    return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
+}
+
+float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1) {
+    vec2 size = vec2(uvec2(textureSize(_group_0_binding_5_fs, 0).xy));
+    float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e6);
+    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_5_fs, texel_1, 0);
+    return clamp(_e16.x, 0.0, 1.0);
+}
+
+vec3 velvet_low(vec3 n_4, vec3 v_1, vec3 l, vec3 h, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
+    float _e10 = weft_sheen_clamp_roughness(roughness_2);
+    float _e12 = weft_clamp_cos(dot(n_4, v_1));
+    float n_dot_l = clamp(dot(n_4, l), 0.0, 1.0);
+    vec4 _e17 = _group_1_binding_0_fs.scatter_color;
+    vec3 sheen_color = vec3(clamp((f0_ + max(_e17.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
+    float _e25 = weft_sheen_albedo_nearest(_e12, _e10);
+    float e_v = float(_e25);
+    float scaling_1 = clamp((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)), 0.0, 1.0);
+    float inv_r = (1.0 / _e10);
+    float noh = clamp(dot(n_4, h), 0.0, 1.0);
+    float sin_pow = float(pow(max(((1.0 - noh) * (1.0 + noh)), 0.0), (0.5 * inv_r)));
+    float d_1 = ((float((2.0 + inv_r)) * sin_pow) * 0.15915494);
+    float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
+    float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
+    float g2_ = float((1.0 / ((1.0 + _e57) + _e60)));
+    float nv = max(float(_e12), 0.001);
+    float v_n_dot_l = ((n_dot_l > 0.0) ? (g2_ / (4.0 * nv)) : 0.0);
+    vec3 sheen_1 = vec3((sheen_color * (d_1 * v_n_dot_l)));
+    vec3 base_direct = (diffuse_albedo * float(((scaling_1 * float(n_dot_l)) * 0.31830987)));
+    vec3 direct = ((sheen_1 + base_direct) * light);
+    vec3 _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_4), _e10);
+    vec3 env_sheen = ((_e88 * vec3((sheen_color * e_v))) * ao);
+    return ((direct + ((ambient * diffuse_albedo) * float(scaling_1))) + env_sheen);
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 n = vec3(0.0);
+    vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    float _e19 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp(_e19, 0.0, 1.0);
+    float _e23 = _group_1_binding_0_fs.smoothness;
+    float smoothness = clamp(_e23, 0.0, 1.0);
+    float roughness_3 = (1.0 - smoothness);
+    vec4 _e29 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float occlusion = _e29.x;
+    float _e33 = _group_1_binding_0_fs.occlusion_strength;
+    float ao_1 = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
+    vec3 _e42 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
+    n = _e44;
+    {
+        vec3 _e46 = n;
+        mat3x3 _e48 = weft_tangent_frame(_e46, in_1.world_tangent);
+        vec4 _e51 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e51.xyz;
+        float _e55 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e56 = weft_unpack_normal(texel_2, _e55);
+        vec3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
+        n = _e57;
+    }
+    vec3 _e58 = weft_main_light_direction();
+    vec3 _e60 = n;
+    vec3 _e61 = weft_safe_normalize((_e58 + _e42), _e60);
+    vec3 _e62 = n;
+    float _e64 = weft_clamp_cos(dot(_e62, _e42));
+    vec3 _e65 = n;
+    float n_dot_l_1 = clamp(dot(_e65, _e58), 0.0, 1.0);
+    vec3 _e68 = n;
+    float n_dot_h = clamp(dot(_e68, _e61), 0.0, 1.0);
+    float l_dot_h = clamp(dot(_e58, _e61), 0.0, 1.0);
+    vec3 f0_1 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
+    vec3 _e79 = weft_main_light_radiance();
+    vec3 _e80 = n;
+    vec3 _e81 = weft_sh_irradiance(_e80);
+    vec3 ambient_1 = (_e81 * ao_1);
+    {
+        vec3 _e84 = n;
+        vec3 _e85 = velvet_low(_e84, _e42, _e58, _e61, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e79, ambient_1);
+        color = _e85;
+    }
+    vec3 _e86 = color;
+    vec3 radiance = clamp(_e86, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

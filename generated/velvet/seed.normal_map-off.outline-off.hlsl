@@ -1,0 +1,301 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float metallic;
+    float smoothness;
+    int _pad3_0;
+    int _pad3_1;
+    float4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    int _pad6_0;
+    int _pad6_1;
+    float4 scatter_color;
+    float scatter_scale;
+    int _pad8_0;
+    int _pad8_1;
+    int _pad8_2;
+    float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> occlusion_map : register(t5, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float weft_pow4_(float x)
+{
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1)
+{
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1)
+{
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float k = (((a + 1.0) * (a + 1.0)) * 0.125);
+    float gv = ((saturate(n_dot_v) * (1.0 - k)) + k);
+    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_fabric_d(float n_dot_h)
+{
+    float x_2 = (1.0 - saturate(n_dot_h));
+    return (((0.96 * x_2) * x_2) + 0.057);
+}
+
+float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale)
+{
+    float x_3 = (1.0 - saturate(n_dot_v_1));
+    const float _e5 = weft_pow4_(x_3);
+    return lerp(_e5, (0.4 * x_3), saturate(scale));
+}
+
+float3 weft_fabric_scatter(float3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1)
+{
+    float wrap = ((saturate(n_dot_l_1) * 0.5) + 0.5);
+    const float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
+    return (max(scatter_color, (0.0).xxx) * (wrap * _e12));
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float3 n = (float3)0;
+    float3 color = (float3)0;
+    float3 sheen = (float3)0;
+    float scaling = (float)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    float _e19 = material.metallic;
+    float metallic = saturate(_e19);
+    float _e23 = material.smoothness;
+    float smoothness = saturate(_e23);
+    float roughness_2 = (1.0 - smoothness);
+    float4 _e29 = occlusion_map.Sample(material_sampler, _e5);
+    float occlusion = _e29.x;
+    float _e33 = material.occlusion_strength;
+    float ao = saturate(lerp(1.0, occlusion, _e33));
+    const float3 _e42 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
+    n = _e44;
+    const float3 _e46 = weft_main_light_direction();
+    float3 _e48 = n;
+    const float3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
+    float3 _e50 = n;
+    const float _e52 = weft_clamp_cos(dot(_e50, _e42));
+    float3 _e53 = n;
+    float n_dot_l_2 = saturate(dot(_e53, _e46));
+    float3 _e56 = n;
+    float n_dot_h_1 = saturate(dot(_e56, _e49));
+    float l_dot_h = saturate(dot(_e46, _e49));
+    float3 f0_1 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
+    const float3 _e67 = weft_main_light_radiance();
+    float3 _e68 = n;
+    const float3 _e69 = weft_sh_irradiance(_e68);
+    float3 ambient = (_e69 * ao);
+    {
+        {
+            const float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
+            const float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            const float _e74 = weft_fabric_d(n_dot_h_1);
+            float3 specular = ((_e74 * _e72) * _e73);
+            const float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
+            float3 direct = (((_e77 + specular) * _e67) * n_dot_l_2);
+            float4 _e83 = material.scatter_color;
+            float _e87 = material.scatter_scale;
+            const float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
+            color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        }
+    }
+    float3 _e92 = color;
+    float3 radiance = clamp(_e92, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}

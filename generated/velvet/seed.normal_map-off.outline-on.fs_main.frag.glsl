@@ -1,0 +1,241 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float metallic;
+    float smoothness;
+    vec4 base_map_st;
+    float normal_strength;
+    float occlusion_strength;
+    vec4 scatter_color;
+    float scatter_scale;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+};
+struct WeftOutlineVertex {
+    vec3 position;
+    vec3 normal;
+};
+struct WeftOutlineVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 0) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 1) uniform sampler2D _group_1_binding_5_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow4_(float x) {
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+float weft_v_schlick_ggx(float n_dot_v, float n_dot_l, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float k = (((a + 1.0) * (a + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_fabric_d(float n_dot_h) {
+    float x_2 = (1.0 - clamp(n_dot_h, 0.0, 1.0));
+    return (((0.96 * x_2) * x_2) + 0.057);
+}
+
+float weft_fabric_scatter_fresnel_lerp(float n_dot_v_1, float scale) {
+    float x_3 = (1.0 - clamp(n_dot_v_1, 0.0, 1.0));
+    float _e5 = weft_pow4_(x_3);
+    return mix(_e5, (0.4 * x_3), clamp(scale, 0.0, 1.0));
+}
+
+vec3 weft_fabric_scatter(vec3 scatter_color, float n_dot_l_1, float n_dot_v_2, float scale_1) {
+    float wrap = ((clamp(n_dot_l_1, 0.0, 1.0) * 0.5) + 0.5);
+    float _e12 = weft_fabric_scatter_fresnel_lerp(n_dot_v_2, scale_1);
+    return (max(scatter_color, vec3(0.0)) * (wrap * _e12));
+}
+
+void main() {
+    WeftVaryings in_2 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 n = vec3(0.0);
+    vec3 color = vec3(0.0);
+    vec3 sheen = vec3(0.0);
+    float scaling = 0.0;
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    float _e19 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp(_e19, 0.0, 1.0);
+    float _e23 = _group_1_binding_0_fs.smoothness;
+    float smoothness = clamp(_e23, 0.0, 1.0);
+    float roughness_2 = (1.0 - smoothness);
+    vec4 _e29 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float occlusion = _e29.x;
+    float _e33 = _group_1_binding_0_fs.occlusion_strength;
+    float ao = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
+    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
+    n = _e44;
+    vec3 _e46 = weft_main_light_direction();
+    vec3 _e48 = n;
+    vec3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
+    vec3 _e50 = n;
+    float _e52 = weft_clamp_cos(dot(_e50, _e42));
+    vec3 _e53 = n;
+    float n_dot_l_2 = clamp(dot(_e53, _e46), 0.0, 1.0);
+    vec3 _e56 = n;
+    float n_dot_h_1 = clamp(dot(_e56, _e49), 0.0, 1.0);
+    float l_dot_h = clamp(dot(_e46, _e49), 0.0, 1.0);
+    vec3 f0_1 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo = (base * (1.0 - metallic));
+    vec3 _e67 = weft_main_light_radiance();
+    vec3 _e68 = n;
+    vec3 _e69 = weft_sh_irradiance(_e68);
+    vec3 ambient = (_e69 * ao);
+    {
+        {
+            float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
+            vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            float _e74 = weft_fabric_d(n_dot_h_1);
+            vec3 specular = ((_e74 * _e72) * _e73);
+            vec3 _e77 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 direct = (((_e77 + specular) * _e67) * n_dot_l_2);
+            vec4 _e83 = _group_1_binding_0_fs.scatter_color;
+            float _e87 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
+            color = ((direct + (ambient * diffuse_albedo)) + _e88);
+        }
+    }
+    vec3 _e92 = color;
+    vec3 radiance = clamp(_e92, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+
