@@ -10,7 +10,8 @@
 //! - [`material_compile`]: a material TOML file, then WGSL files, each after
 //!   a line `%%% <path>` (path relative to the materials root; the TOML is
 //!   `m/m.toml`, so `%%% m/m.wgsl` is its default source). The shipped
-//!   `materials/lib/*.wgsl` are there too unless the input replaces one.
+//!   `materials/lib/*.wgsl` and shared pass files `*.pass.toml` are there
+//!   too unless the input replaces one.
 //! - [`scene`]: a scene manifest, read as if it were
 //!   `tests/diagnostics/scenes/bad/fuzz.scene.toml` (so `materials =
 //!   "../../../../materials"` names the shipped materials, as the bad-scene
@@ -41,7 +42,8 @@ pub fn repo() -> PathBuf {
         .to_path_buf()
 }
 
-/// The shipped `materials/lib/*.wgsl`, as (`lib/<file>`, text), read once.
+/// The shipped `materials/lib/*.wgsl` and `*.pass.toml` (shared passes), as
+/// (`lib/<file>`, text), read once.
 pub fn shipped_lib() -> &'static [(String, String)] {
     static LIB: OnceLock<Vec<(String, String)>> = OnceLock::new();
     LIB.get_or_init(|| {
@@ -49,7 +51,10 @@ pub fn shipped_lib() -> &'static [(String, String)] {
         let mut files: Vec<(String, String)> = std::fs::read_dir(&dir)
             .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
             .map(|e| e.expect("lib entry").path())
-            .filter(|p| p.extension().is_some_and(|e| e == "wgsl"))
+            .filter(|p| {
+                let name = p.file_name().unwrap_or_default().to_string_lossy();
+                name.ends_with(".wgsl") || name.ends_with(".pass.toml")
+            })
             .map(|p| {
                 let name = p.file_name().expect("name").to_string_lossy();
                 let text = std::fs::read_to_string(&p).expect("lib file");
