@@ -428,35 +428,50 @@ fn glint_erfinv(x_1: f32) -> f32 {
     return (_e104 * x_1);
 }
 
-fn glint_gaussian3_(u: vec3<f32>) -> vec3<f32> {
-    let _e6 = glint_erfinv(((2f * u.x) - 1f));
-    let _e12 = glint_erfinv(((2f * u.y) - 1f));
-    let _e18 = glint_erfinv(((2f * u.z) - 1f));
-    return (1.4142135f * vec3<f32>(_e6, _e12, _e18));
+fn glint_erfinv_poly(x_in: f32) -> f32 {
+    let x_3 = clamp(x_in, -0.95f, 0.95f);
+    let x2_1 = (x_3 * x_3);
+    return (x_3 * (0.864441f + (x2_1 * (0.533641f + (x2_1 * (-0.893165f + (x2_1 * 1.108999f)))))));
 }
 
-fn glint_corner(c_1: vec2<f32>) -> vec2<f32> {
+fn glint_erfinv_by(x_2: f32, poly: bool) -> f32 {
+    if poly {
+        let _e2 = glint_erfinv_poly(x_2);
+        return _e2;
+    }
+    let _e3 = glint_erfinv(x_2);
+    return _e3;
+}
+
+fn glint_gaussian3_(u: vec3<f32>, poly_normals: bool) -> vec3<f32> {
+    let _e7 = glint_erfinv_by(((2f * u.x) - 1f), poly_normals);
+    let _e13 = glint_erfinv_by(((2f * u.y) - 1f), poly_normals);
+    let _e19 = glint_erfinv_by(((2f * u.z) - 1f), poly_normals);
+    return (1.4142135f * vec3<f32>(_e7, _e13, _e19));
+}
+
+fn glint_corner(c_1: vec2<f32>, poly_normals_1: bool) -> vec2<f32> {
     let texel = vec2<u32>((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64f))))));
-    let _e12 = glint_pcg4d(vec4<u32>(texel, 6777961u, 1953785202u));
-    let _e13 = glint_unit4_(_e12);
-    let _e20 = glint_erfinv(((2f * _e13.y) - 1f));
-    return vec2<f32>(_e13.x, (1.4142135f * _e20));
+    let _e13 = glint_pcg4d(vec4<u32>(texel, 6777961u, 1953785202u));
+    let _e14 = glint_unit4_(_e13);
+    let _e21 = glint_erfinv_by(((2f * _e14.y) - 1f), poly_normals_1);
+    return vec2<f32>(_e14.x, (1.4142135f * _e21));
 }
 
-fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>) -> GlintSlopeRand {
+fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>, poly_normals_2: bool) -> GlintSlopeRand {
     var out_1: GlintSlopeRand;
 
     let s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
     let cell = floor(s_2);
-    let _e10 = glint_corner(cell);
-    let _e15 = glint_corner((cell + vec2<f32>(0f, 1f)));
-    let _e20 = glint_corner((cell + vec2<f32>(1f, 0f)));
-    let _e25 = glint_corner((cell + vec2<f32>(1f, 1f)));
-    out_1.gate_rand = vec4<f32>(_e10.x, _e15.x, _e20.x, _e25.x);
-    out_1.gaussian = vec4<f32>(_e10.y, _e15.y, _e20.y, _e25.y);
+    let _e11 = glint_corner(cell, poly_normals_2);
+    let _e16 = glint_corner((cell + vec2<f32>(0f, 1f)), poly_normals_2);
+    let _e21 = glint_corner((cell + vec2<f32>(1f, 0f)), poly_normals_2);
+    let _e26 = glint_corner((cell + vec2<f32>(1f, 1f)), poly_normals_2);
+    out_1.gate_rand = vec4<f32>(_e11.x, _e16.x, _e21.x, _e26.x);
+    out_1.gaussian = vec4<f32>(_e11.y, _e16.y, _e21.y, _e26.y);
     out_1.lerp = (s_2 - cell);
-    let _e41 = out_1;
-    return _e41;
+    let _e42 = out_1;
+    return _e42;
 }
 
 fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32, deviation: f32, count: f32) -> f32 {
@@ -475,7 +490,7 @@ fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32
     return mix(x0_, x1_, r.lerp.y);
 }
 
-fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, target_ndf: f32) -> f32 {
+fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, target_ndf: f32, poly_normals_3: bool) -> f32 {
     let skewed = vec2<f32>((grid.uv.x - (0.57735026f * grid.uv.y)), (1.1547005f * grid.uv.y));
     let base = floor(skewed);
     let f = (skewed - base);
@@ -488,17 +503,17 @@ fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, t
     let c1_ = (id + vec2<i32>(si, (1i - si)));
     let c2_ = (id + vec2<i32>((1i - si), si));
     let bary = vec3<f32>((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    let _e62 = glint_pcg3d(vec3<u32>((bitcast<u32>(c0_.x) + 2147483648u), (bitcast<u32>(c0_.y) + 2147483648u), grid.seed));
-    let _e63 = glint_unit3_(_e62);
-    let _e72 = glint_pcg3d(vec3<u32>((bitcast<u32>(c1_.x) + 2147483648u), (bitcast<u32>(c1_.y) + 2147483648u), grid.seed));
-    let _e73 = glint_unit3_(_e72);
-    let _e82 = glint_pcg3d(vec3<u32>((bitcast<u32>(c2_.x) + 2147483648u), (bitcast<u32>(c2_.y) + 2147483648u), grid.seed));
-    let _e83 = glint_unit3_(_e82);
-    let _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
-    let _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
-    let _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
-    let _e97 = glint_gaussian3_(vec3<f32>(_e63.x, _e73.x, _e83.x));
-    let log_density = clamp(((_e97 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
+    let _e63 = glint_pcg3d(vec3<u32>((bitcast<u32>(c0_.x) + 2147483648u), (bitcast<u32>(c0_.y) + 2147483648u), grid.seed));
+    let _e64 = glint_unit3_(_e63);
+    let _e73 = glint_pcg3d(vec3<u32>((bitcast<u32>(c1_.x) + 2147483648u), (bitcast<u32>(c1_.y) + 2147483648u), grid.seed));
+    let _e74 = glint_unit3_(_e73);
+    let _e83 = glint_pcg3d(vec3<u32>((bitcast<u32>(c2_.x) + 2147483648u), (bitcast<u32>(c2_.y) + 2147483648u), grid.seed));
+    let _e84 = glint_unit3_(_e83);
+    let _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
+    let _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
+    let _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
+    let _e98 = glint_gaussian3_(vec3<f32>(_e64.x, _e74.x, _e84.x), poly_normals_3);
+    let log_density = clamp(((_e98 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
     let count_1 = max(vec3(0.00000001f), (grid.cell_area * exp(log_density)));
     let blended = (count_1 * grid.weight);
     let p_4 = (params.micro_roughness * target_ndf);
@@ -507,10 +522,10 @@ fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, t
     let mean_1 = (others * p_4);
     let deviation_1 = sqrt((others * (p_4 * (1f - p_4))));
     let smooth_width_1 = ((0.1f * saturate((one_hit_1 * 10f))) * saturate(((vec3(1f) - one_hit_1) * 10f)));
-    let _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    let _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    let _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((vec3<f32>(_e154, _e160, _e166) / count_1), bary);
+    let _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    let _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    let _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((vec3<f32>(_e155, _e161, _e167) / count_1), bary);
 }
 
 fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
@@ -662,7 +677,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
         let d_6 = vec3<f32>(1f, 0f, 0f);
         let ee_1 = vec3<f32>(1f, 1f, 0f);
         let f_2 = vec3<f32>(0f, 1f, 1f);
-        let g_2 = vec3<f32>(0f, 0f, 1f);
+        let g_1 = vec3<f32>(0f, 0f, 1f);
         let h_1 = vec3<f32>(0.5f, 1f, 1f);
         let i = vec3<f32>(1f, 0f, 1f);
         let j = vec3<f32>(1f, 1f, 1f);
@@ -681,18 +696,18 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 } else {
                     p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 }
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
                 p2_ = c_6;
-                p3_1 = g_2;
+                p3_1 = g_1;
             }
         } else {
             let _e174 = theta_lerp;
@@ -702,7 +717,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                     let _e194 = theta_lerp;
                     if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e194 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
                         p0_ = b_5;
-                        p1_ = g_2;
+                        p1_ = g_1;
                         p2_ = i;
                         p3_1 = c_6;
                     } else {
@@ -713,7 +728,7 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                     }
                 } else {
                     p0_ = c_6;
-                    p1_ = g_2;
+                    p1_ = g_1;
                     p2_ = h_1;
                     p3_1 = i;
                 }
@@ -762,30 +777,14 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
     return _e249;
 }
 
-fn glint_dominant_grid(grids: GlintGrids) -> GlintGrid {
-    var g_1: GlintGrid;
-
-    g_1 = grids.g0_;
-    let _e6 = g_1.weight;
-    if (grids.g1_.weight > _e6) {
-        g_1 = grids.g1_;
-    }
-    let _e12 = g_1.weight;
-    if (grids.g2_.weight > _e12) {
-        g_1 = grids.g2_;
-    }
-    let _e18 = g_1.weight;
-    if (grids.g3_.weight > _e18) {
-        g_1 = grids.g3_;
-    }
-    g_1.weight = 1f;
-    let _e23 = g_1;
-    return _e23;
-}
-
-fn glint_ndf_single(params_1: GlintParams, grid_1: GlintGrid, slope_2: vec2<f32>, d_1: f32, d_max: f32) -> f32 {
-    let _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
-    return (min((_e6 / params_1.micro_roughness), 20f) * d_max);
+fn glint_ndf(params_1: GlintParams, grids: GlintGrids, slope_2: vec2<f32>, d_1: f32, d_max: f32, poly_normals_4: bool) -> f32 {
+    let target_ndf_1 = (d_1 / d_max);
+    let _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
+    let _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
+    let _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
+    let _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
+    let sum = (((_e8 + _e10) + _e13) + _e16);
+    return (min((sum / params_1.micro_roughness), 20f) * d_max);
 }
 
 fn glitter_params() -> GlintParams {
@@ -901,21 +900,18 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             let _e136 = material.flake_size;
             let screen_scale_2 = clamp(_e136, 1f, 8f);
             let _e140 = glint_grids(_e5, _e133, screen_scale_2);
-            {
-                let _e141 = glint_dominant_grid(_e140);
-                let _e142 = glint_ndf_single(_e132, _e141, slope_3, _e123, _e125);
-                d_flakes = _e142;
-            }
+            let _e144 = glint_ndf(_e132, _e140, slope_3, _e123, _e125, (0u == TIER_FAST));
+            d_flakes = _e144;
         }
-        let _e145 = material.flake_color;
-        let flake_f0_ = saturate(_e145.xyz);
-        let _e148 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        let _e149 = color;
-        let _e150 = d_flakes;
-        let _e153 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e149 + (((((intensity * _e150) * _e148) * _e153) * _e63) * n_dot_l_1));
+        let _e147 = material.flake_color;
+        let flake_f0_ = saturate(_e147.xyz);
+        let _e150 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        let _e151 = color;
+        let _e152 = d_flakes;
+        let _e155 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e151 + (((((intensity * _e152) * _e150) * _e155) * _e63) * n_dot_l_1));
     }
-    let _e158 = color;
-    let radiance = clamp(_e158, vec3(0f), vec3(65504f));
+    let _e160 = color;
+    let radiance = clamp(_e160, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

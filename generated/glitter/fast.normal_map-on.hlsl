@@ -486,42 +486,59 @@ float glint_erfinv(float x_1)
     return (_e104 * x_1);
 }
 
-float3 glint_gaussian3_(float3 u)
+float glint_erfinv_poly(float x_in)
 {
-    const float _e6 = glint_erfinv(((2.0 * u.x) - 1.0));
-    const float _e12 = glint_erfinv(((2.0 * u.y) - 1.0));
-    const float _e18 = glint_erfinv(((2.0 * u.z) - 1.0));
-    return (1.4142135 * float3(_e6, _e12, _e18));
+    float x_3 = clamp(x_in, -0.95, 0.95);
+    float x2_1 = (x_3 * x_3);
+    return (x_3 * (0.864441 + (x2_1 * (0.533641 + (x2_1 * (-0.893165 + (x2_1 * 1.108999)))))));
+}
+
+float glint_erfinv_by(float x_2, bool poly)
+{
+    if (poly) {
+        const float _e2 = glint_erfinv_poly(x_2);
+        return _e2;
+    }
+    const float _e3 = glint_erfinv(x_2);
+    return _e3;
+}
+
+float3 glint_gaussian3_(float3 u, bool poly_normals)
+{
+    const float _e7 = glint_erfinv_by(((2.0 * u.x) - 1.0), poly_normals);
+    const float _e13 = glint_erfinv_by(((2.0 * u.y) - 1.0), poly_normals);
+    const float _e19 = glint_erfinv_by(((2.0 * u.z) - 1.0), poly_normals);
+    return (1.4142135 * float3(_e7, _e13, _e19));
 }
 
 uint2 naga_f2u32(float2 value) {
     return uint2(clamp(value, 0.0, 4294967000.0));
 }
 
-float2 glint_corner(float2 c_1)
+float2 glint_corner(float2 c_1, bool poly_normals_1)
 {
     uint2 texel_1 = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
-    const uint4 _e12 = glint_pcg4d(uint4(texel_1, 6777961u, 1953785202u));
-    const float4 _e13 = glint_unit4_(_e12);
-    const float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
-    return float2(_e13.x, (1.4142135 * _e20));
+    const uint4 _e13 = glint_pcg4d(uint4(texel_1, 6777961u, 1953785202u));
+    const float4 _e14 = glint_unit4_(_e13);
+    const float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
+    return float2(_e14.x, (1.4142135 * _e21));
 }
 
-GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset)
+GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset, bool poly_normals_2)
 {
     GlintSlopeRand out_1 = (GlintSlopeRand)0;
 
     float2 s_2 = ((abs(slope) / (micro_roughness).xx) + (offset * GLINT_TABLE_SIZE));
     float2 cell = floor(s_2);
-    const float2 _e10 = glint_corner(cell);
-    const float2 _e15 = glint_corner((cell + float2(0.0, 1.0)));
-    const float2 _e20 = glint_corner((cell + float2(1.0, 0.0)));
-    const float2 _e25 = glint_corner((cell + float2(1.0, 1.0)));
-    out_1.gate_rand = float4(_e10.x, _e15.x, _e20.x, _e25.x);
-    out_1.gaussian = float4(_e10.y, _e15.y, _e20.y, _e25.y);
+    const float2 _e11 = glint_corner(cell, poly_normals_2);
+    const float2 _e16 = glint_corner((cell + float2(0.0, 1.0)), poly_normals_2);
+    const float2 _e21 = glint_corner((cell + float2(1.0, 0.0)), poly_normals_2);
+    const float2 _e26 = glint_corner((cell + float2(1.0, 1.0)), poly_normals_2);
+    out_1.gate_rand = float4(_e11.x, _e16.x, _e21.x, _e26.x);
+    out_1.gaussian = float4(_e11.y, _e16.y, _e21.y, _e26.y);
     out_1.lerp_ = (s_2 - cell);
-    GlintSlopeRand _e41 = out_1;
-    const GlintSlopeRand glintsloperand = _e41;
+    GlintSlopeRand _e42 = out_1;
+    const GlintSlopeRand glintsloperand = _e42;
     return glintsloperand;
 }
 
@@ -550,7 +567,7 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf)
+float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf, bool poly_normals_3)
 {
     float2 skewed = float2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
     float2 base = floor(skewed);
@@ -564,17 +581,17 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     int2 c1_ = asint(asuint(id) + asuint(int2(si, asint(asuint(int(1)) - asuint(si)))));
     int2 c2_ = asint(asuint(id) + asuint(int2(asint(asuint(int(1)) - asuint(si)), si)));
     float3 bary = float3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    const uint3 _e62 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
-    const float3 _e63 = glint_unit3_(_e62);
-    const uint3 _e72 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
-    const float3 _e73 = glint_unit3_(_e72);
-    const uint3 _e82 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
-    const float3 _e83 = glint_unit3_(_e82);
-    const GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
-    const GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
-    const GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
-    const float3 _e97 = glint_gaussian3_(float3(_e63.x, _e73.x, _e83.x));
-    float3 log_density = clamp(((_e97 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
+    const uint3 _e63 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
+    const float3 _e64 = glint_unit3_(_e63);
+    const uint3 _e73 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
+    const float3 _e74 = glint_unit3_(_e73);
+    const uint3 _e83 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
+    const float3 _e84 = glint_unit3_(_e83);
+    const GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
+    const GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
+    const GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
+    const float3 _e98 = glint_gaussian3_(float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
+    float3 log_density = clamp(((_e98 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
     float3 count_1 = max((1e-8).xxx, (grid.cell_area * exp(log_density)));
     float3 blended = (count_1 * grid.weight);
     float p_4 = (params.micro_roughness * target_ndf);
@@ -583,10 +600,10 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     float3 mean_1 = (others * p_4);
     float3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     float3 smooth_width_1 = ((0.1 * saturate((one_hit_1 * 10.0))) * saturate((((1.0).xxx - one_hit_1) * 10.0)));
-    const float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    const float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    const float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((float3(_e154, _e160, _e166) / count_1), bary);
+    const float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    const float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    const float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((float3(_e155, _e161, _e167) / count_1), bary);
 }
 
 GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
@@ -753,7 +770,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
         float3 d_6 = float3(1.0, 0.0, 0.0);
         float3 ee_1 = float3(1.0, 1.0, 0.0);
         float3 f_2 = float3(0.0, 1.0, 1.0);
-        float3 g_2 = float3(0.0, 0.0, 1.0);
+        float3 g_1 = float3(0.0, 0.0, 1.0);
         float3 h_1 = float3(0.5, 1.0, 1.0);
         float3 i = float3(1.0, 0.0, 1.0);
         float3 j = float3(1.0, 1.0, 1.0);
@@ -772,18 +789,18 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 } else {
                     p0_ = c_6;
                     p1_ = a_7;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 }
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
                 p2_ = c_6;
-                p3_1 = g_2;
+                p3_1 = g_1;
             }
         } else {
             float _e174 = theta_lerp;
@@ -793,7 +810,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                     float _e194 = theta_lerp;
                     if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e194 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
                         p0_ = b_5;
-                        p1_ = g_2;
+                        p1_ = g_1;
                         p2_ = i;
                         p3_1 = c_6;
                     } else {
@@ -804,7 +821,7 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                     }
                 } else {
                     p0_ = c_6;
-                    p1_ = g_2;
+                    p1_ = g_1;
                     p2_ = h_1;
                     p3_1 = i;
                 }
@@ -854,33 +871,15 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
     return glintgrids;
 }
 
-GlintGrid glint_dominant_grid(GlintGrids grids)
+float glint_ndf(GlintParams params_1, GlintGrids grids, float2 slope_2, float d_1, float d_max, bool poly_normals_4)
 {
-    GlintGrid g_1 = (GlintGrid)0;
-
-    g_1 = grids.g0_;
-    float _e6 = g_1.weight;
-    if ((grids.g1_.weight > _e6)) {
-        g_1 = grids.g1_;
-    }
-    float _e12 = g_1.weight;
-    if ((grids.g2_.weight > _e12)) {
-        g_1 = grids.g2_;
-    }
-    float _e18 = g_1.weight;
-    if ((grids.g3_.weight > _e18)) {
-        g_1 = grids.g3_;
-    }
-    g_1.weight = 1.0;
-    GlintGrid _e23 = g_1;
-    const GlintGrid glintgrid_2 = _e23;
-    return glintgrid_2;
-}
-
-float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, float2 slope_2, float d_1, float d_max)
-{
-    const float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
-    return (min((_e6 / params_1.micro_roughness), 20.0) * d_max);
+    float target_ndf_1 = (d_1 / d_max);
+    const float _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
+    float sum = (((_e8 + _e10) + _e13) + _e16);
+    return (min((sum / params_1.micro_roughness), 20.0) * d_max);
 }
 
 GlintParams glitter_params()
@@ -1011,21 +1010,18 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             float _e148 = material.flake_size;
             float screen_scale_2 = clamp(_e148, 1.0, 8.0);
             const GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            {
-                const GlintGrid _e153 = glint_dominant_grid(_e152);
-                const float _e154 = glint_ndf_single(_e144, _e153, slope_3, _e135, _e137);
-                d_flakes = _e154;
-            }
+            const float _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, (0u == TIER_FAST));
+            d_flakes = _e156;
         }
-        float4 _e157 = material.flake_color;
-        float3 flake_f0_ = saturate(_e157.xyz);
-        const float _e160 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        float3 _e161 = color;
-        float _e162 = d_flakes;
-        const float3 _e165 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e161 + (((((intensity * _e162) * _e160) * _e165) * _e75) * n_dot_l_1));
+        float4 _e159 = material.flake_color;
+        float3 flake_f0_ = saturate(_e159.xyz);
+        const float _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        float3 _e163 = color;
+        float _e164 = d_flakes;
+        const float3 _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1));
     }
-    float3 _e170 = color;
-    float3 radiance = clamp(_e170, (0.0).xxx, (65504.0).xxx);
+    float3 _e172 = color;
+    float3 radiance = clamp(_e172, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -404,34 +404,49 @@ float glint_erfinv(float x_1) {
     return (_e104 * x_1);
 }
 
-vec3 glint_gaussian3_(vec3 u) {
-    float _e6 = glint_erfinv(((2.0 * u.x) - 1.0));
-    float _e12 = glint_erfinv(((2.0 * u.y) - 1.0));
-    float _e18 = glint_erfinv(((2.0 * u.z) - 1.0));
-    return (1.4142135 * vec3(_e6, _e12, _e18));
+float glint_erfinv_poly(float x_in) {
+    float x_3 = clamp(x_in, -0.95, 0.95);
+    float x2_1 = (x_3 * x_3);
+    return (x_3 * (0.864441 + (x2_1 * (0.533641 + (x2_1 * (-0.893165 + (x2_1 * 1.108999)))))));
 }
 
-vec2 glint_corner(vec2 c_1) {
+float glint_erfinv_by(float x_2, bool poly) {
+    if (poly) {
+        float _e2 = glint_erfinv_poly(x_2);
+        return _e2;
+    }
+    float _e3 = glint_erfinv(x_2);
+    return _e3;
+}
+
+vec3 glint_gaussian3_(vec3 u, bool poly_normals) {
+    float _e7 = glint_erfinv_by(((2.0 * u.x) - 1.0), poly_normals);
+    float _e13 = glint_erfinv_by(((2.0 * u.y) - 1.0), poly_normals);
+    float _e19 = glint_erfinv_by(((2.0 * u.z) - 1.0), poly_normals);
+    return (1.4142135 * vec3(_e7, _e13, _e19));
+}
+
+vec2 glint_corner(vec2 c_1, bool poly_normals_1) {
     uvec2 texel_1 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
-    uvec4 _e12 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
-    vec4 _e13 = glint_unit4_(_e12);
-    float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
-    return vec2(_e13.x, (1.4142135 * _e20));
+    uvec4 _e13 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
+    vec4 _e14 = glint_unit4_(_e13);
+    float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
+    return vec2(_e14.x, (1.4142135 * _e21));
 }
 
-GlintSlopeRand glint_slope_rand(float micro_roughness, vec2 slope, vec2 offset) {
+GlintSlopeRand glint_slope_rand(float micro_roughness, vec2 slope, vec2 offset, bool poly_normals_2) {
     GlintSlopeRand out_1 = GlintSlopeRand(vec4(0.0), vec4(0.0), vec2(0.0));
     vec2 s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
     vec2 cell = floor(s_2);
-    vec2 _e10 = glint_corner(cell);
-    vec2 _e15 = glint_corner((cell + vec2(0.0, 1.0)));
-    vec2 _e20 = glint_corner((cell + vec2(1.0, 0.0)));
-    vec2 _e25 = glint_corner((cell + vec2(1.0, 1.0)));
-    out_1.gate_rand = vec4(_e10.x, _e15.x, _e20.x, _e25.x);
-    out_1.gaussian = vec4(_e10.y, _e15.y, _e20.y, _e25.y);
+    vec2 _e11 = glint_corner(cell, poly_normals_2);
+    vec2 _e16 = glint_corner((cell + vec2(0.0, 1.0)), poly_normals_2);
+    vec2 _e21 = glint_corner((cell + vec2(1.0, 0.0)), poly_normals_2);
+    vec2 _e26 = glint_corner((cell + vec2(1.0, 1.0)), poly_normals_2);
+    out_1.gate_rand = vec4(_e11.x, _e16.x, _e21.x, _e26.x);
+    out_1.gaussian = vec4(_e11.y, _e16.y, _e21.y, _e26.y);
     out_1.lerp = (s_2 - cell);
-    GlintSlopeRand _e41 = out_1;
-    return _e41;
+    GlintSlopeRand _e42 = out_1;
+    return _e42;
 }
 
 float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float mean, float deviation, float count) {
@@ -449,7 +464,7 @@ float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float
     return mix(x0_, x1_, r.lerp.y);
 }
 
-float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float target_ndf) {
+float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float target_ndf, bool poly_normals_3) {
     vec2 skewed = vec2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
     vec2 base = floor(skewed);
     vec2 f = (skewed - base);
@@ -462,17 +477,17 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float 
     ivec2 c1_ = (id + ivec2(si, (1 - si)));
     ivec2 c2_ = (id + ivec2((1 - si), si));
     vec3 bary = vec3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    uvec3 _e62 = glint_pcg3d(uvec3((uint(c0_.x) + 2147483648u), (uint(c0_.y) + 2147483648u), grid.seed));
-    vec3 _e63 = glint_unit3_(_e62);
-    uvec3 _e72 = glint_pcg3d(uvec3((uint(c1_.x) + 2147483648u), (uint(c1_.y) + 2147483648u), grid.seed));
-    vec3 _e73 = glint_unit3_(_e72);
-    uvec3 _e82 = glint_pcg3d(uvec3((uint(c2_.x) + 2147483648u), (uint(c2_.y) + 2147483648u), grid.seed));
-    vec3 _e83 = glint_unit3_(_e82);
-    GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
-    GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
-    GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
-    vec3 _e97 = glint_gaussian3_(vec3(_e63.x, _e73.x, _e83.x));
-    vec3 log_density = clamp(((_e97 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
+    uvec3 _e63 = glint_pcg3d(uvec3((uint(c0_.x) + 2147483648u), (uint(c0_.y) + 2147483648u), grid.seed));
+    vec3 _e64 = glint_unit3_(_e63);
+    uvec3 _e73 = glint_pcg3d(uvec3((uint(c1_.x) + 2147483648u), (uint(c1_.y) + 2147483648u), grid.seed));
+    vec3 _e74 = glint_unit3_(_e73);
+    uvec3 _e83 = glint_pcg3d(uvec3((uint(c2_.x) + 2147483648u), (uint(c2_.y) + 2147483648u), grid.seed));
+    vec3 _e84 = glint_unit3_(_e83);
+    GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
+    GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
+    GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
+    vec3 _e98 = glint_gaussian3_(vec3(_e64.x, _e74.x, _e84.x), poly_normals_3);
+    vec3 log_density = clamp(((_e98 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
     vec3 count_1 = max(vec3(1e-8), (grid.cell_area * exp(log_density)));
     vec3 blended = (count_1 * grid.weight);
     float p_4 = (params.micro_roughness * target_ndf);
@@ -481,10 +496,10 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float 
     vec3 mean_1 = (others * p_4);
     vec3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     vec3 smooth_width_1 = ((0.1 * clamp((one_hit_1 * 10.0), vec3(0.0), vec3(1.0))) * clamp(((vec3(1.0) - one_hit_1) * 10.0), vec3(0.0), vec3(1.0)));
-    float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((vec3(_e154, _e160, _e166) / count_1), bary);
+    float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((vec3(_e155, _e161, _e167) / count_1), bary);
 }
 
 GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
@@ -632,7 +647,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
         vec3 d_6 = vec3(1.0, 0.0, 0.0);
         vec3 ee_1 = vec3(1.0, 1.0, 0.0);
         vec3 f_2 = vec3(0.0, 1.0, 1.0);
-        vec3 g_2 = vec3(0.0, 0.0, 1.0);
+        vec3 g_1 = vec3(0.0, 0.0, 1.0);
         vec3 h_1 = vec3(0.5, 1.0, 1.0);
         vec3 i = vec3(1.0, 0.0, 1.0);
         vec3 j = vec3(1.0, 1.0, 1.0);
@@ -651,18 +666,18 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 } else {
                     p0_ = c_5;
                     p1_ = a_7;
                     p2_ = h_1;
-                    p3_1 = g_2;
+                    p3_1 = g_1;
                 }
             } else {
                 p0_ = b_5;
                 p1_ = a_7;
                 p2_ = c_5;
-                p3_1 = g_2;
+                p3_1 = g_1;
             }
         } else {
             float _e174 = theta_lerp;
@@ -672,7 +687,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                     float _e194 = theta_lerp;
                     if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e194 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
                         p0_ = b_5;
-                        p1_ = g_2;
+                        p1_ = g_1;
                         p2_ = i;
                         p3_1 = c_5;
                     } else {
@@ -683,7 +698,7 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
                     }
                 } else {
                     p0_ = c_5;
-                    p1_ = g_2;
+                    p1_ = g_1;
                     p2_ = h_1;
                     p3_1 = i;
                 }
@@ -732,29 +747,14 @@ GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_2, float screen_scale_1) {
     return _e249;
 }
 
-GlintGrid glint_dominant_grid(GlintGrids grids) {
-    GlintGrid g_1 = GlintGrid(vec2(0.0), 0u, 0.0, 0.0);
-    g_1 = grids.g0_;
-    float _e6 = g_1.weight;
-    if ((grids.g1_.weight > _e6)) {
-        g_1 = grids.g1_;
-    }
-    float _e12 = g_1.weight;
-    if ((grids.g2_.weight > _e12)) {
-        g_1 = grids.g2_;
-    }
-    float _e18 = g_1.weight;
-    if ((grids.g3_.weight > _e18)) {
-        g_1 = grids.g3_;
-    }
-    g_1.weight = 1.0;
-    GlintGrid _e23 = g_1;
-    return _e23;
-}
-
-float glint_ndf_single(GlintParams params_1, GlintGrid grid_1, vec2 slope_2, float d_1, float d_max) {
-    float _e6 = glint_sample_grid(params_1, grid_1, slope_2, (d_1 / d_max));
-    return (min((_e6 / params_1.micro_roughness), 20.0) * d_max);
+float glint_ndf(GlintParams params_1, GlintGrids grids, vec2 slope_2, float d_1, float d_max, bool poly_normals_4) {
+    float target_ndf_1 = (d_1 / d_max);
+    float _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
+    float _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
+    float _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
+    float _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
+    float sum = (((_e8 + _e10) + _e13) + _e16);
+    return (min((sum / params_1.micro_roughness), 20.0) * d_max);
 }
 
 void main() {

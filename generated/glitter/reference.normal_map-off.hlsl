@@ -473,42 +473,59 @@ float glint_erfinv(float x_1)
     return (_e104 * x_1);
 }
 
-float3 glint_gaussian3_(float3 u)
+float glint_erfinv_poly(float x_in)
 {
-    const float _e6 = glint_erfinv(((2.0 * u.x) - 1.0));
-    const float _e12 = glint_erfinv(((2.0 * u.y) - 1.0));
-    const float _e18 = glint_erfinv(((2.0 * u.z) - 1.0));
-    return (1.4142135 * float3(_e6, _e12, _e18));
+    float x_3 = clamp(x_in, -0.95, 0.95);
+    float x2_1 = (x_3 * x_3);
+    return (x_3 * (0.864441 + (x2_1 * (0.533641 + (x2_1 * (-0.893165 + (x2_1 * 1.108999)))))));
+}
+
+float glint_erfinv_by(float x_2, bool poly)
+{
+    if (poly) {
+        const float _e2 = glint_erfinv_poly(x_2);
+        return _e2;
+    }
+    const float _e3 = glint_erfinv(x_2);
+    return _e3;
+}
+
+float3 glint_gaussian3_(float3 u, bool poly_normals)
+{
+    const float _e7 = glint_erfinv_by(((2.0 * u.x) - 1.0), poly_normals);
+    const float _e13 = glint_erfinv_by(((2.0 * u.y) - 1.0), poly_normals);
+    const float _e19 = glint_erfinv_by(((2.0 * u.z) - 1.0), poly_normals);
+    return (1.4142135 * float3(_e7, _e13, _e19));
 }
 
 uint2 naga_f2u32(float2 value) {
     return uint2(clamp(value, 0.0, 4294967000.0));
 }
 
-float2 glint_corner(float2 c_1)
+float2 glint_corner(float2 c_1, bool poly_normals_1)
 {
     uint2 texel = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
-    const uint4 _e12 = glint_pcg4d(uint4(texel, 6777961u, 1953785202u));
-    const float4 _e13 = glint_unit4_(_e12);
-    const float _e20 = glint_erfinv(((2.0 * _e13.y) - 1.0));
-    return float2(_e13.x, (1.4142135 * _e20));
+    const uint4 _e13 = glint_pcg4d(uint4(texel, 6777961u, 1953785202u));
+    const float4 _e14 = glint_unit4_(_e13);
+    const float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
+    return float2(_e14.x, (1.4142135 * _e21));
 }
 
-GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset)
+GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset, bool poly_normals_2)
 {
     GlintSlopeRand out_1 = (GlintSlopeRand)0;
 
     float2 s_2 = ((abs(slope) / (micro_roughness).xx) + (offset * GLINT_TABLE_SIZE));
     float2 cell = floor(s_2);
-    const float2 _e10 = glint_corner(cell);
-    const float2 _e15 = glint_corner((cell + float2(0.0, 1.0)));
-    const float2 _e20 = glint_corner((cell + float2(1.0, 0.0)));
-    const float2 _e25 = glint_corner((cell + float2(1.0, 1.0)));
-    out_1.gate_rand = float4(_e10.x, _e15.x, _e20.x, _e25.x);
-    out_1.gaussian = float4(_e10.y, _e15.y, _e20.y, _e25.y);
+    const float2 _e11 = glint_corner(cell, poly_normals_2);
+    const float2 _e16 = glint_corner((cell + float2(0.0, 1.0)), poly_normals_2);
+    const float2 _e21 = glint_corner((cell + float2(1.0, 0.0)), poly_normals_2);
+    const float2 _e26 = glint_corner((cell + float2(1.0, 1.0)), poly_normals_2);
+    out_1.gate_rand = float4(_e11.x, _e16.x, _e21.x, _e26.x);
+    out_1.gaussian = float4(_e11.y, _e16.y, _e21.y, _e26.y);
     out_1.lerp_ = (s_2 - cell);
-    GlintSlopeRand _e41 = out_1;
-    const GlintSlopeRand glintsloperand = _e41;
+    GlintSlopeRand _e42 = out_1;
+    const GlintSlopeRand glintsloperand = _e42;
     return glintsloperand;
 }
 
@@ -537,7 +554,7 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf)
+float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf, bool poly_normals_3)
 {
     float2 skewed = float2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
     float2 base = floor(skewed);
@@ -551,17 +568,17 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     int2 c1_ = asint(asuint(id) + asuint(int2(si, asint(asuint(int(1)) - asuint(si)))));
     int2 c2_ = asint(asuint(id) + asuint(int2(asint(asuint(int(1)) - asuint(si)), si)));
     float3 bary = float3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    const uint3 _e62 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
-    const float3 _e63 = glint_unit3_(_e62);
-    const uint3 _e72 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
-    const float3 _e73 = glint_unit3_(_e72);
-    const uint3 _e82 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
-    const float3 _e83 = glint_unit3_(_e82);
-    const GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
-    const GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
-    const GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
-    const float3 _e97 = glint_gaussian3_(float3(_e63.x, _e73.x, _e83.x));
-    float3 log_density = clamp(((_e97 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
+    const uint3 _e63 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
+    const float3 _e64 = glint_unit3_(_e63);
+    const uint3 _e73 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
+    const float3 _e74 = glint_unit3_(_e73);
+    const uint3 _e83 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
+    const float3 _e84 = glint_unit3_(_e83);
+    const GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
+    const GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
+    const GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
+    const float3 _e98 = glint_gaussian3_(float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
+    float3 log_density = clamp(((_e98 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
     float3 count_1 = max((1e-8).xxx, (grid.cell_area * exp(log_density)));
     float3 blended = (count_1 * grid.weight);
     float p_4 = (params.micro_roughness * target_ndf);
@@ -570,10 +587,10 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     float3 mean_1 = (others * p_4);
     float3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     float3 smooth_width_1 = ((0.1 * saturate((one_hit_1 * 10.0))) * saturate((((1.0).xxx - one_hit_1) * 10.0)));
-    const float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    const float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    const float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((float3(_e154, _e160, _e166) / count_1), bary);
+    const float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    const float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    const float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((float3(_e155, _e161, _e167) / count_1), bary);
 }
 
 GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
@@ -841,14 +858,14 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
     return glintgrids;
 }
 
-float glint_ndf_reference(GlintParams params_1, GlintGrids grids, float2 slope_2, float d_1, float d_max)
+float glint_ndf(GlintParams params_1, GlintGrids grids, float2 slope_2, float d_1, float d_max, bool poly_normals_4)
 {
     float target_ndf_1 = (d_1 / d_max);
-    const float _e7 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1);
-    const float _e9 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1);
-    const float _e12 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1);
-    const float _e15 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1);
-    float sum = (((_e7 + _e9) + _e12) + _e15);
+    const float _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
+    const float _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
+    float sum = (((_e8 + _e10) + _e13) + _e16);
     return (min((sum / params_1.micro_roughness), 20.0) * d_max);
 }
 
@@ -970,20 +987,18 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             float _e136 = material.flake_size;
             float screen_scale_2 = clamp(_e136, 1.0, 8.0);
             const GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
-            {
-                const float _e141 = glint_ndf_reference(_e132, _e140, slope_3, _e123, _e125);
-                d_flakes = _e141;
-            }
+            const float _e144 = glint_ndf(_e132, _e140, slope_3, _e123, _e125, (1u == TIER_FAST));
+            d_flakes = _e144;
         }
-        float4 _e144 = material.flake_color;
-        float3 flake_f0_ = saturate(_e144.xyz);
-        const float _e147 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        float3 _e148 = color;
-        float _e149 = d_flakes;
-        const float3 _e152 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e148 + (((((intensity * _e149) * _e147) * _e152) * _e63) * n_dot_l_1));
+        float4 _e147 = material.flake_color;
+        float3 flake_f0_ = saturate(_e147.xyz);
+        const float _e150 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
+        float3 _e151 = color;
+        float _e152 = d_flakes;
+        const float3 _e155 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = (_e151 + (((((intensity * _e152) * _e150) * _e155) * _e63) * n_dot_l_1));
     }
-    float3 _e157 = color;
-    float3 radiance = clamp(_e157, (0.0).xxx, (65504.0).xxx);
+    float3 _e160 = color;
+    float3 radiance = clamp(_e160, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -497,13 +497,34 @@ float glint_erfinv(
     return _e104 * x_1;
 }
 
-metal::float3 glint_gaussian3_(
-    metal::float3 u
+float glint_erfinv_poly(
+    float x_in
 ) {
-    float _e6 = glint_erfinv((2.0 * u.x) - 1.0);
-    float _e12 = glint_erfinv((2.0 * u.y) - 1.0);
-    float _e18 = glint_erfinv((2.0 * u.z) - 1.0);
-    return 1.4142135 * metal::float3(_e6, _e12, _e18);
+    float x_3 = metal::clamp(x_in, -0.95, 0.95);
+    float x2_1 = x_3 * x_3;
+    return x_3 * (0.864441 + (x2_1 * (0.533641 + (x2_1 * (-0.893165 + (x2_1 * 1.108999))))));
+}
+
+float glint_erfinv_by(
+    float x_2,
+    bool poly
+) {
+    if (poly) {
+        float _e2 = glint_erfinv_poly(x_2);
+        return _e2;
+    }
+    float _e3 = glint_erfinv(x_2);
+    return _e3;
+}
+
+metal::float3 glint_gaussian3_(
+    metal::float3 u,
+    bool poly_normals
+) {
+    float _e7 = glint_erfinv_by((2.0 * u.x) - 1.0, poly_normals);
+    float _e13 = glint_erfinv_by((2.0 * u.y) - 1.0, poly_normals);
+    float _e19 = glint_erfinv_by((2.0 * u.z) - 1.0, poly_normals);
+    return 1.4142135 * metal::float3(_e7, _e13, _e19);
 }
 
 metal::uint2 naga_f2u32(metal::float2 value) {
@@ -511,32 +532,34 @@ metal::uint2 naga_f2u32(metal::float2 value) {
 }
 
 metal::float2 glint_corner(
-    metal::float2 c_1
+    metal::float2 c_1,
+    bool poly_normals_1
 ) {
     metal::uint2 texel_1 = naga_f2u32(c_1 - (GLINT_TABLE_SIZE * metal::floor(c_1 / metal::float2(64.0))));
-    metal::uint4 _e12 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
-    metal::float4 _e13 = glint_unit4_(_e12);
-    float _e20 = glint_erfinv((2.0 * _e13.y) - 1.0);
-    return metal::float2(_e13.x, 1.4142135 * _e20);
+    metal::uint4 _e13 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
+    metal::float4 _e14 = glint_unit4_(_e13);
+    float _e21 = glint_erfinv_by((2.0 * _e14.y) - 1.0, poly_normals_1);
+    return metal::float2(_e14.x, 1.4142135 * _e21);
 }
 
 GlintSlopeRand glint_slope_rand(
     float micro_roughness,
     metal::float2 slope,
-    metal::float2 offset
+    metal::float2 offset,
+    bool poly_normals_2
 ) {
     GlintSlopeRand out_1 = {};
     metal::float2 s_2 = (metal::abs(slope) / metal::float2(micro_roughness)) + (offset * GLINT_TABLE_SIZE);
     metal::float2 cell = metal::floor(s_2);
-    metal::float2 _e10 = glint_corner(cell);
-    metal::float2 _e15 = glint_corner(cell + metal::float2(0.0, 1.0));
-    metal::float2 _e20 = glint_corner(cell + metal::float2(1.0, 0.0));
-    metal::float2 _e25 = glint_corner(cell + metal::float2(1.0, 1.0));
-    out_1.gate_rand = metal::float4(_e10.x, _e15.x, _e20.x, _e25.x);
-    out_1.gaussian = metal::float4(_e10.y, _e15.y, _e20.y, _e25.y);
+    metal::float2 _e11 = glint_corner(cell, poly_normals_2);
+    metal::float2 _e16 = glint_corner(cell + metal::float2(0.0, 1.0), poly_normals_2);
+    metal::float2 _e21 = glint_corner(cell + metal::float2(1.0, 0.0), poly_normals_2);
+    metal::float2 _e26 = glint_corner(cell + metal::float2(1.0, 1.0), poly_normals_2);
+    out_1.gate_rand = metal::float4(_e11.x, _e16.x, _e21.x, _e26.x);
+    out_1.gaussian = metal::float4(_e11.y, _e16.y, _e21.y, _e26.y);
     out_1.lerp = s_2 - cell;
-    GlintSlopeRand _e41 = out_1;
-    return _e41;
+    GlintSlopeRand _e42 = out_1;
+    return _e42;
 }
 
 float glint_cell_hits(
@@ -573,7 +596,8 @@ float glint_sample_grid(
     GlintParams params,
     GlintGrid grid,
     metal::float2 slope_1,
-    float target_ndf
+    float target_ndf,
+    bool poly_normals_3
 ) {
     metal::float2 skewed = metal::float2(grid.uv.x - (0.57735026 * grid.uv.y), 1.1547005 * grid.uv.y);
     metal::float2 base = metal::floor(skewed);
@@ -587,17 +611,17 @@ float glint_sample_grid(
     metal::int2 c1_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(si, as_type<int>(as_type<uint>(1) - as_type<uint>(si)))));
     metal::int2 c2_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(as_type<int>(as_type<uint>(1) - as_type<uint>(si)), si)));
     metal::float3 bary = metal::float3(-(fz) * s2_, s_3 - (f.y * s2_), s_3 - (f.x * s2_));
-    metal::uint3 _e62 = glint_pcg3d(metal::uint3(as_type<uint>(c0_.x) + 2147483648u, as_type<uint>(c0_.y) + 2147483648u, grid.seed));
-    metal::float3 _e63 = glint_unit3_(_e62);
-    metal::uint3 _e72 = glint_pcg3d(metal::uint3(as_type<uint>(c1_.x) + 2147483648u, as_type<uint>(c1_.y) + 2147483648u, grid.seed));
-    metal::float3 _e73 = glint_unit3_(_e72);
-    metal::uint3 _e82 = glint_pcg3d(metal::uint3(as_type<uint>(c2_.x) + 2147483648u, as_type<uint>(c2_.y) + 2147483648u, grid.seed));
-    metal::float3 _e83 = glint_unit3_(_e82);
-    GlintSlopeRand _e86 = glint_slope_rand(params.micro_roughness, slope_1, _e63.yz);
-    GlintSlopeRand _e89 = glint_slope_rand(params.micro_roughness, slope_1, _e73.yz);
-    GlintSlopeRand _e92 = glint_slope_rand(params.micro_roughness, slope_1, _e83.yz);
-    metal::float3 _e97 = glint_gaussian3_(metal::float3(_e63.x, _e73.x, _e83.x));
-    metal::float3 log_density = metal::clamp((_e97 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
+    metal::uint3 _e63 = glint_pcg3d(metal::uint3(as_type<uint>(c0_.x) + 2147483648u, as_type<uint>(c0_.y) + 2147483648u, grid.seed));
+    metal::float3 _e64 = glint_unit3_(_e63);
+    metal::uint3 _e73 = glint_pcg3d(metal::uint3(as_type<uint>(c1_.x) + 2147483648u, as_type<uint>(c1_.y) + 2147483648u, grid.seed));
+    metal::float3 _e74 = glint_unit3_(_e73);
+    metal::uint3 _e83 = glint_pcg3d(metal::uint3(as_type<uint>(c2_.x) + 2147483648u, as_type<uint>(c2_.y) + 2147483648u, grid.seed));
+    metal::float3 _e84 = glint_unit3_(_e83);
+    GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
+    GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
+    GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
+    metal::float3 _e98 = glint_gaussian3_(metal::float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
+    metal::float3 log_density = metal::clamp((_e98 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
     metal::float3 count_1 = metal::max(metal::float3(0.00000001), grid.cell_area * metal::exp(log_density));
     metal::float3 blended = count_1 * grid.weight;
     float p_4 = params.micro_roughness * target_ndf;
@@ -606,10 +630,10 @@ float glint_sample_grid(
     metal::float3 mean_1 = others * p_4;
     metal::float3 deviation_1 = metal::sqrt(others * (p_4 * (1.0 - p_4)));
     metal::float3 smooth_width_1 = (0.1 * metal::saturate(one_hit_1 * 10.0)) * metal::saturate((metal::float3(1.0) - one_hit_1) * 10.0);
-    float _e154 = glint_cell_hits(_e86, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    float _e160 = glint_cell_hits(_e89, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    float _e166 = glint_cell_hits(_e92, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return metal::dot(metal::float3(_e154, _e160, _e166) / count_1, bary);
+    float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return metal::dot(metal::float3(_e155, _e161, _e167) / count_1, bary);
 }
 
 GlintEllipse glint_ellipse(
@@ -900,19 +924,20 @@ GlintGrids glint_grids(
     return _e249;
 }
 
-float glint_ndf_reference(
+float glint_ndf(
     GlintParams params_1,
     GlintGrids grids,
     metal::float2 slope_2,
     float d_1,
-    float d_max
+    float d_max,
+    bool poly_normals_4
 ) {
     float target_ndf_1 = d_1 / d_max;
-    float _e7 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1);
-    float _e9 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1);
-    float _e12 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1);
-    float _e15 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1);
-    float sum = ((_e7 + _e9) + _e12) + _e15;
+    float _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
+    float _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
+    float _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
+    float _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
+    float sum = ((_e8 + _e10) + _e13) + _e16;
     return metal::min(sum / params_1.micro_roughness, 20.0) * d_max;
 }
 
@@ -1079,20 +1104,18 @@ fragment fs_mainOutput fs_main(
             float _e148 = material.flake_size;
             float screen_scale_2 = metal::clamp(_e148, 1.0, 8.0);
             GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            {
-                float _e153 = glint_ndf_reference(_e144, _e152, slope_3, _e135, _e137);
-                d_flakes = _e153;
-            }
+            float _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, 1u == TIER_FAST);
+            d_flakes = _e156;
         }
-        metal::float4 _e156 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e156.xyz);
-        float _e159 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        metal::float3 _e160 = color;
-        float _e161 = d_flakes;
-        metal::float3 _e164 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = _e160 + (((((intensity * _e161) * _e159) * _e164) * _e75) * n_dot_l_1);
+        metal::float4 _e159 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e159.xyz);
+        float _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
+        metal::float3 _e163 = color;
+        float _e164 = d_flakes;
+        metal::float3 _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
+        color = _e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1);
     }
-    metal::float3 _e169 = color;
-    metal::float3 radiance = metal::clamp(_e169, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e172 = color;
+    metal::float3 radiance = metal::clamp(_e172, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

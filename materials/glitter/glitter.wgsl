@@ -19,10 +19,10 @@
 //               grids chosen by the pixel footprint's ellipse (level,
 //               anisotropy, rotation) blended over a tetrahedron, binomial
 //               flake counts per simplex cell; target NDF = GGX(r_f).
-//   fast      = an approximation of the reference: the same glint NDF on
-//               one grid only, the reference's grid of largest weight (same
-//               cells, seeds and flakes) at weight 1, 3 cells per pixel
-//               instead of 12.
+//   fast      = an approximation of the reference: the same four grids,
+//               twelve cells and gate numbers (the same flakes sparkle), the
+//               standard normal numbers of the flake counts from a
+//               polynomial erfinv instead of Giles' (no log, no branch).
 //   smooth    = the glints' expectation, E[D_flakes] = GGX(r_f): the flakes
 //               averaged into a smooth lobe (no sparkle).
 
@@ -92,11 +92,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             let ellipse = glint_ellipse(duv_dx, duv_dy);
             let screen_scale = clamp(material.flake_size, 1.0, 8.0);
             let grids = glint_grids(uv, ellipse, screen_scale);
-            if WEFT_TIER == TIER_REFERENCE {
-                d_flakes = glint_ndf_reference(params, grids, slope, d, d_max);
-            } else {
-                d_flakes = glint_ndf_single(params, glint_dominant_grid(grids), slope, d, d_max);
-            }
+            // fast: the same grids, cells and gates; the normal numbers of
+            // the flake counts from a polynomial erfinv.
+            d_flakes = glint_ndf(params, grids, slope, d, d_max, WEFT_TIER == TIER_FAST);
         }
         let flake_f0 = saturate(material.flake_color.rgb);
         let v_f = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, r_f);

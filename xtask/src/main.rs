@@ -84,6 +84,13 @@ enum Bench {
         #[arg(long)]
         write: bool,
     },
+    /// The glitter material's glint checks per tier (energy against the
+    /// smooth lobe, extremes, half-pixel pan, distance), and each tier's cost.
+    Glints {
+        /// Also write generated/reports/glitter.glints.md and the table in materials/glitter/README.md.
+        #[arg(long)]
+        write: bool,
+    },
     /// Every shipped scene, generic library variants vs scene-specialised
     /// shaders: GPU time per frame (interleaved rounds), FLIP between the
     /// images, SPIR-V instructions, shaders/files/bytes, build time.
@@ -227,6 +234,10 @@ fn main() -> ExitCode {
             if film != ExitCode::SUCCESS {
                 return film;
             }
+            let glints = bench_glints(&root, true, "cargo xtask regenerate --reports");
+            if glints != ExitCode::SUCCESS {
+                return glints;
+            }
             // Scene builds read the reports (`tier = "auto"` costs): build
             // again on the new ones so generated/ is current.
             regenerate(&root, false)
@@ -243,6 +254,9 @@ fn main() -> ExitCode {
         Command::Bench {
             what: Bench::Film { write },
         } => bench_film(&root, write, "cargo xtask bench film --write"),
+        Command::Bench {
+            what: Bench::Glints { write },
+        } => bench_glints(&root, write, "cargo xtask bench glints --write"),
         Command::Bench {
             what: Bench::Shading { args, write },
         } => bench_shading(
@@ -563,6 +577,56 @@ fn bench_film(root: &Path, write: bool, command: &str) -> ExitCode {
     };
     match run() {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Measures the glitter glints (`weft_golden::glints`), prints the table and,
+/// with `write`, rewrites generated/reports/glitter.glints.md and the table
+/// between `<!-- weft:glints:… -->` in materials/glitter/README.md. Fails
+/// when a bound is broken (after writing: the report says which).
+fn bench_glints(root: &Path, write: bool, command: &str) -> ExitCode {
+    use weft_golden::glints;
+    let run = || -> Result<Vec<String>, String> {
+        let report = glints::measure(&root.join("generated"), &mut |s| eprintln!("{s}"))?;
+        print!("{}", glints::markdown_table(&report));
+        if write {
+            let path = root.join(format!("generated/reports/{}.glints.md", glints::MATERIAL));
+            std::fs::write(&path, glints::markdown_report(&report, command))
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("wrote {}", path.display());
+            let readme = root.join(format!("materials/{}/README.md", glints::MATERIAL));
+            let text = std::fs::read_to_string(&readme)
+                .map_err(|e| format!("{}: {e}", readme.display()))?;
+            let new = weft_golden::shading::replace_marked(
+                &text,
+                "glints",
+                &glints::markdown_table(&report),
+            )
+            .ok_or_else(|| {
+                format!(
+                    "{}: no <!-- weft:glints:begin/end --> markers",
+                    readme.display()
+                )
+            })?;
+            if new != text {
+                std::fs::write(&readme, new).map_err(|e| format!("{}: {e}", readme.display()))?;
+                println!("updated the glint table in {}", readme.display());
+            }
+        }
+        Ok(glints::failures(&report))
+    };
+    match run() {
+        Ok(failures) if failures.is_empty() => ExitCode::SUCCESS,
+        Ok(failures) => {
+            for f in failures {
+                eprintln!("error: glint bound broken: {f}");
+            }
+            ExitCode::FAILURE
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE

@@ -9,6 +9,7 @@ pub mod auto_tier;
 pub mod error_grid;
 pub mod film;
 pub mod floor;
+pub mod glints;
 pub mod project;
 pub mod scene_bench;
 pub mod scenes;
