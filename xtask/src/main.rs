@@ -488,9 +488,10 @@ fn bench_shading(
         };
     for r in &shells {
         println!(
-            "\n{} shells:\n{}",
+            "\n{} shells:\n{}{}",
             r.material,
-            weft_golden::shells::markdown_table(r)
+            weft_golden::shells::markdown_table(r),
+            weft_golden::shells::silhouette_section(r)
         );
     }
     if write {
@@ -581,12 +582,18 @@ fn write_shell_tables(
         let Ok(text) = std::fs::read_to_string(&path) else {
             continue;
         };
-        let table = weft_golden::shells::markdown_table(r);
-        if let Some(new) = weft_golden::shading::replace_marked(&text, "shells", &table)
-            && new != text
-        {
+        let mut new = text.clone();
+        for (marker, table) in [
+            ("shells", weft_golden::shells::markdown_table(r)),
+            ("fins", weft_golden::shells::silhouette_table(r)),
+        ] {
+            if let Some(replaced) = weft_golden::shading::replace_marked(&new, marker, &table) {
+                new = replaced;
+            }
+        }
+        if new != text {
             std::fs::write(&path, new).map_err(|e| format!("{}: {e}", path.display()))?;
-            println!("updated the shell table in {}", path.display());
+            println!("updated the shell tables in {}", path.display());
         }
     }
     Ok(())

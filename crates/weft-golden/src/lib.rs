@@ -14,6 +14,7 @@ pub mod scene_bench;
 pub mod scenes;
 pub mod shading;
 pub mod shells;
+pub mod silhouette;
 
 use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};
