@@ -506,6 +506,30 @@ float fur_fade_n_dot_v(FurVaryings in_6)
     return saturate(dot(_e8, _e6));
 }
 
+float4 fur_shell(FurVaryings in_7)
+{
+    const float _e2 = fur_noise(in_7.uv0_);
+    float o = saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = ((_e8 != 0u) ? (o * o) : o);
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
+    float _e21 = fwidth(_e2);
+    float width = max(_e21, 0.001);
+    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
+    const float4 _e32 = fur_shade(in_7);
+    float _e35 = material.edge_fade;
+    const float _e37 = fur_fade_n_dot_v(in_7);
+    float fade = (1.0 - (saturate(_e35) * (1.0 - _e37)));
+    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
+    int _e53 = material.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, int(1))));
+    float keep = (1.0 - a_1);
+    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
+    return float4(_e32.xyz, alpha_1);
+}
+
 VertexOutput_vs_skin vs_skin(FurInput in_)
 {
     const FurVaryings _e2 = fur_vertex(in_, 0.0);
@@ -534,24 +558,6 @@ float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
     FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
-    const float _e2 = fur_noise(in_3.uv0_);
-    float o = saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = ((_e8 != 0u) ? (o * o) : o);
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
-    float _e21 = fwidth(_e2);
-    float width = max(_e21, 0.001);
-    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
-    const float4 _e32 = fur_shade(in_3);
-    float _e35 = material.edge_fade;
-    const float _e37 = fur_fade_n_dot_v(in_3);
-    float fade = (1.0 - (saturate(_e35) * (1.0 - _e37)));
-    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
-    int _e53 = material.shell_count;
-    float slab = (FUR_SEED_SHELLS / float(max(_e53, int(1))));
-    float keep = (1.0 - a_1);
-    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    return float4(_e32.xyz, alpha_1);
+    const float4 _e1 = fur_shell(in_3);
+    return _e1;
 }

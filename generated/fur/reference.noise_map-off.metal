@@ -507,6 +507,40 @@ float fur_fade_n_dot_v(
     return metal::saturate(metal::dot(_e8, _e6));
 }
 
+metal::float4 fur_shell(
+    FurVaryings in_7,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> base_map,
+    metal::texture2d<float, metal::access::sample> spot_map
+) {
+    float _e2 = fur_noise(in_7.uv0_, material);
+    float o = metal::saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = (_e8 != 0u) ? (o * o) : o;
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
+    float _e21 = metal::fwidth(_e2);
+    float width = metal::max(_e21, 0.001);
+    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
+    metal::float4 _e32 = fur_shade(in_7, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    float _e35 = material.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_7, weft_frame);
+    float fade = 1.0 - (metal::saturate(_e35) * (1.0 - _e37));
+    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
+    int _e53 = material.shell_count;
+    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e53, 1));
+    float keep = 1.0 - a_1;
+    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
+    return metal::float4(_e32.xyz, alpha_1);
+}
+
 struct vs_skinInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -641,24 +675,6 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
     const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
-    float _e2 = fur_noise(in_3.uv0_, material);
-    float o = metal::saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = (_e8 != 0u) ? (o * o) : o;
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
-    float _e21 = metal::fwidth(_e2);
-    float width = metal::max(_e21, 0.001);
-    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
-    metal::float4 _e32 = fur_shade(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
-    float _e35 = material.edge_fade;
-    float _e37 = fur_fade_n_dot_v(in_3, weft_frame);
-    float fade = 1.0 - (metal::saturate(_e35) * (1.0 - _e37));
-    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
-    int _e53 = material.shell_count;
-    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e53, 1));
-    float keep = 1.0 - a_1;
-    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
-    return fs_shellOutput { metal::float4(_e32.xyz, alpha_1) };
+    metal::float4 _e1 = fur_shell(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    return fs_shellOutput { _e1 };
 }

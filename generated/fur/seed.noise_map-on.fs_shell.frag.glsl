@@ -256,10 +256,9 @@ float fur_fade_n_dot_v(FurVaryings in_6) {
     return clamp(dot(_e8, _e6), 0.0, 1.0);
 }
 
-void main() {
-    FurVaryings in_3 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
-    float _e2 = fur_noise(in_3.uv0_);
-    float o = clamp(in_3.offset, 0.0, 1.0);
+vec4 fur_shell(FurVaryings in_7) {
+    float _e2 = fur_noise(in_7.uv0_);
+    float o = clamp(in_7.offset, 0.0, 1.0);
     uint _e8 = _group_1_binding_0_fs.tapered_tips;
     float shape = ((_e8 != 0u) ? (o * o) : o);
     float _e14 = _group_1_binding_0_fs.cutoff_start;
@@ -268,16 +267,22 @@ void main() {
     float _e21 = fwidth(_e2);
     float width = max(_e21, 0.001);
     float coverage = (clamp((((_e2 - threshold) / width) + 0.5), 0.0, 1.0) * step(1e-6, _e2));
-    vec4 _e32 = fur_shade(in_3);
+    vec4 _e32 = fur_shade(in_7);
     float _e35 = _group_1_binding_0_fs.edge_fade;
-    float _e37 = fur_fade_n_dot_v(in_3);
+    float _e37 = fur_fade_n_dot_v(in_7);
     float fade = (1.0 - (clamp(_e35, 0.0, 1.0) * (1.0 - _e37)));
     float a_1 = clamp((((coverage * (1.0 - o)) * fade) * _e32.w), 0.0, 1.0);
     int _e53 = _group_1_binding_0_fs.shell_count;
     float slab = (FUR_SEED_SHELLS / float(max(_e53, 1)));
     float keep = (1.0 - a_1);
     float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    _fs2p_location0 = vec4(_e32.xyz, alpha_1);
+    return vec4(_e32.xyz, alpha_1);
+}
+
+void main() {
+    FurVaryings in_3 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
+    vec4 _e1 = fur_shell(in_3);
+    _fs2p_location0 = _e1;
     return;
 }
 

@@ -296,6 +296,29 @@ fn fur_fade_n_dot_v(in_6: FurVaryings) -> f32 {
     return saturate(dot(_e8, _e6));
 }
 
+fn fur_shell(in_7: FurVaryings) -> vec4<f32> {
+    let _e2 = fur_noise(in_7.uv0_);
+    let o = saturate(in_7.offset);
+    let _e8 = material.tapered_tips;
+    let shape = select(o, (o * o), (_e8 != 0u));
+    let _e14 = material.cutoff_start;
+    let _e18 = material.cutoff_end;
+    let threshold = mix(saturate(_e14), saturate(_e18), shape);
+    let _e21 = fwidth(_e2);
+    let width = max(_e21, 0.001f);
+    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
+    let _e32 = fur_shade(in_7);
+    let _e35 = material.edge_fade;
+    let _e37 = fur_fade_n_dot_v(in_7);
+    let fade = (1f - (saturate(_e35) * (1f - _e37)));
+    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
+    let _e53 = material.shell_count;
+    let slab = (FUR_SEED_SHELLS / f32(max(_e53, 1i)));
+    let keep = (1f - a_1);
+    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
+    return vec4<f32>(_e32.xyz, alpha_1);
+}
+
 @vertex 
 fn vs_skin(in: FurInput) -> FurVaryings {
     let _e2 = fur_vertex(in, 0f);
@@ -318,24 +341,6 @@ fn fs_skin(in_2: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment 
 fn fs_shell(in_3: FurVaryings) -> @location(0) vec4<f32> {
-    let _e2 = fur_noise(in_3.uv0_);
-    let o = saturate(in_3.offset);
-    let _e8 = material.tapered_tips;
-    let shape = select(o, (o * o), (_e8 != 0u));
-    let _e14 = material.cutoff_start;
-    let _e18 = material.cutoff_end;
-    let threshold = mix(saturate(_e14), saturate(_e18), shape);
-    let _e21 = fwidth(_e2);
-    let width = max(_e21, 0.001f);
-    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
-    let _e32 = fur_shade(in_3);
-    let _e35 = material.edge_fade;
-    let _e37 = fur_fade_n_dot_v(in_3);
-    let fade = (1f - (saturate(_e35) * (1f - _e37)));
-    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
-    let _e53 = material.shell_count;
-    let slab = (FUR_SEED_SHELLS / f32(max(_e53, 1i)));
-    let keep = (1f - a_1);
-    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
-    return vec4<f32>(_e32.xyz, alpha_1);
+    let _e1 = fur_shell(in_3);
+    return _e1;
 }

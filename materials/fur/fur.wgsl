@@ -349,6 +349,12 @@ fn fs_skin(in: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment
 fn fs_shell(in: FurVaryings) -> @location(0) vec4<f32> {
+    return fur_shell(in);
+}
+
+// One shell fragment: radiance and blend alpha (the shell bench's fin
+// experiment fades it at the silhouette).
+fn fur_shell(in: FurVaryings) -> vec4<f32> {
     // Coverage first, in uniform control flow (fwidth).
     let noise = fur_noise(in.uv0);
     let o = saturate(in.offset);

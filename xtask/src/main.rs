@@ -474,6 +474,7 @@ fn bench_shading(
     // against cost and error (weft_golden::shells).
     let shell_options = weft_golden::shells::ShellOptions {
         force_cpu_timer: options.force_cpu_timer,
+        fins: Some(root.join("materials")),
         ..Default::default()
     };
     let shells =
@@ -585,7 +586,10 @@ fn write_shell_tables(
         let mut new = text.clone();
         for (marker, table) in [
             ("shells", weft_golden::shells::markdown_table(r)),
-            ("fins", weft_golden::shells::silhouette_table(r)),
+            (
+                "fins",
+                weft_golden::shells::silhouette_table(r) + &weft_golden::shells::fins_table(r),
+            ),
         ] {
             if let Some(replaced) = weft_golden::shading::replace_marked(&new, marker, &table) {
                 new = replaced;

@@ -8,6 +8,7 @@
 pub mod auto_tier;
 pub mod error_grid;
 pub mod film;
+pub mod fins;
 pub mod floor;
 pub mod project;
 pub mod scene_bench;
