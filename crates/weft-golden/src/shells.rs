@@ -615,11 +615,47 @@ mod tests {
                 cell(256, 8, 0.06),
                 cell(256, 16, 0.04),
             ],
+            fins: Vec::new(),
         };
         assert_eq!(recommended(&report, 128), Some(8));
         assert_eq!(recommended(&report, 256), None);
         let md = markdown_table(&report);
         assert!(md.contains("| 256² px |"), "{md}");
         assert!(md.contains("| > 16 |"), "{md}");
+        assert!(fins_table(&report).is_empty());
+        assert!(silhouette_table(&report).is_empty());
+    }
+
+    #[test]
+    fn fins_pay_only_below_the_error_of_the_shells_at_their_cost() {
+        let fin = |with: f64, same: f64| FinCell {
+            plain_ms: 1.0,
+            with_fins: cell(128, 8, with),
+            fin_ms: 0.5,
+            fins: 10,
+            rule: FinRule {
+                opacity: FinOpacity::Slabs(1.0),
+                fade_shells: true,
+            },
+            same_cost: cell(128, 12, same),
+        };
+        let report = ShellReport {
+            material: "m".into(),
+            inputs_hash: String::new(),
+            parameter: "n".into(),
+            tier: "fast".into(),
+            reference: 128,
+            adapter: String::new(),
+            timer: String::new(),
+            options: ShellOptions::default(),
+            reference_ms: vec![(128, 2.0)],
+            cells: vec![cell(128, 8, 0.03)],
+            fins: vec![fin(0.02, 0.025), fin(0.03, 0.025)],
+        };
+        let md = fins_table(&report);
+        let rows: Vec<&str> = md.lines().filter(|l| l.starts_with("| 128² px")).collect();
+        assert_eq!(rows.len(), 2, "{md}");
+        assert!(rows[0].ends_with("| yes |"), "{md}");
+        assert!(rows[1].ends_with("| no |"), "{md}");
     }
 }
