@@ -94,3 +94,77 @@ fn more_shells_converge_to_the_reference_count() {
     assert!(flip(4) > 2.0 * flip(32), "{} vs {}", flip(4), flip(32));
     assert!(flip(32) < 0.05, "32 shells: FLIP {}", flip(32));
 }
+
+/// The shell bench's fin experiment (`weft_golden::fins`) draws what it
+/// claims: with the fins hidden, the body's passes over the shared mesh give
+/// the fur's own image exactly; with fins, the image changes, and in the
+/// silhouette band.
+#[test]
+fn the_fin_experiment_draws_fins_at_the_silhouette_only() {
+    use weft_golden::fins::{FinOpacity, FinRule, build, scene_with_fins};
+    use weft_golden::silhouette::sphere_band;
+    let repo = generated().parent().unwrap().to_path_buf();
+    let work = tempfile::tempdir().expect("temp dir");
+    let rule = |opacity| FinRule {
+        opacity,
+        fade_shells: false,
+    };
+    let hidden = build(
+        &repo.join("materials"),
+        &work.path().join("hidden"),
+        rule(FinOpacity::Hidden),
+    )
+    .expect("fur_fins builds");
+    let shown = build(
+        &repo.join("materials"),
+        &work.path().join("shown"),
+        rule(FinOpacity::Slabs(1.0)),
+    )
+    .expect("fur_fins builds");
+
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("needs a Vulkan adapter: {e}"));
+    let luts = Luts::load_dir(generated()).expect("LUTs");
+    let size = 96;
+    let preview = PreviewOptions {
+        scene: SceneKind::Sphere,
+        width: size,
+        height: size,
+        ..PreviewOptions::default()
+    };
+    let env = EnvironmentMaps::sky(&preview.sky_params());
+    let mut renderer = Renderer::new(gpu, &env, &luts).expect("renderer");
+    let options = RenderOptions {
+        background: weft_render::Background::Color([0.0; 4]),
+        ..preview.render_options()
+    };
+    let scene = preview.scene();
+    let (fin_scene, fins) = scene_with_fins(&scene, 0.3);
+    assert!(fins > 0);
+    let mut draw = |path: PathBuf, scene: &weft_render::Scene| {
+        let mut m = Material::load(path).expect("load");
+        m.set("shell_count", 8i64).expect("set");
+        renderer.render(&m, scene, &options).expect("render")
+    };
+    let plain = draw(meta_path(), &scene);
+    let without = draw(hidden, &fin_scene);
+    assert!(
+        plain.pixels == without.pixels,
+        "hidden fins change the fur's image"
+    );
+    let with = draw(shown, &fin_scene);
+    let band = sphere_band(&scene, size, size, 0.3);
+    let (mut in_band, mut inside) = (0, 0);
+    for ((a, b), in_b) in plain.pixels.iter().zip(&with.pixels).zip(&band) {
+        // Visibly changed (fins fade to alpha 0 at the band's edge).
+        if a.iter().zip(b).any(|(x, y)| (x - y).abs() > 1e-3) {
+            if *in_b {
+                in_band += 1;
+            } else {
+                inside += 1;
+            }
+        }
+    }
+    println!("pixels changed by fins: {in_band} in the band, {inside} inside");
+    assert!(in_band > 50, "fins changed {in_band} band pixels");
+    assert!(inside * 10 < in_band, "{inside} interior pixels changed");
+}

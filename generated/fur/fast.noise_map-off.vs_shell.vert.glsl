@@ -50,6 +50,18 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
+};
+struct FurLight {
+    vec4 diffuse;
+    vec4 ambient;
+    vec4 sheen;
+    vec4 strand;
+    float n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -64,6 +76,10 @@ const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 const float FUR_SEED_SHELLS = 20.0;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_vs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_5_vs;
 
 layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
@@ -81,6 +97,11 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec3 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 layout(location = 4) smooth out float _vs2fs_location4;
+layout(location = 5) smooth out vec4 _vs2fs_location5;
+layout(location = 6) smooth out vec4 _vs2fs_location6;
+layout(location = 7) smooth out vec4 _vs2fs_location7;
+layout(location = 8) smooth out vec4 _vs2fs_location8;
+layout(location = 9) smooth out float _vs2fs_location9;
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -98,15 +119,6 @@ float weft_clamp_cos(float c) {
 vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
     float len2_ = dot(v_1, v_1);
     return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
-}
-
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-vec3 weft_diffuse_lambert(vec3 albedo) {
-    return (albedo * WEFT_INV_PI);
 }
 
 float weft_sheen_clamp_roughness(float sheen_roughness) {
@@ -158,9 +170,15 @@ vec3 weft_sheen_charlie(vec3 sheen_color, float n_dot_h_1, float n_dot_v_1, floa
     return (max(sheen_color, vec3(0.0)) * (lobe * clamp(n_dot_l_1, 0.0, 1.0)));
 }
 
-float weft_sheen_albedo_scaling_view(vec3 sheen_color_1, float e_v) {
-    float _e2 = weft_max3_(sheen_color_1);
-    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v, 0.0, 1.0))), 0.0, 1.0);
+float weft_sheen_albedo_scaling(vec3 sheen_color_1, float e_v, float e_l) {
+    float _e3 = weft_max3_(sheen_color_1);
+    float c_2 = clamp(_e3, 0.0, 1.0);
+    return clamp(min((1.0 - (c_2 * clamp(e_v, 0.0, 1.0))), (1.0 - (c_2 * clamp(e_l, 0.0, 1.0)))), 0.0, 1.0);
+}
+
+float weft_sheen_albedo_scaling_view(vec3 sheen_color_2, float e_v_1) {
+    float _e2 = weft_max3_(sheen_color_2);
+    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v_1, 0.0, 1.0))), 0.0, 1.0);
 }
 
 vec3 weft_main_light_direction() {
@@ -211,12 +229,69 @@ float weft_specular_mip(float roughness) {
     return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
 }
 
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_3 = textureLod(_group_0_binding_1_vs, vec3(dir), _e4);
+    return max(c_3.xyz, vec3(0.0));
+}
+
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
+    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e3);
+    vec4 _e8 = textureLod(_group_0_binding_5_vs, vec2(uv_1), 0.0);
+    return clamp(_e8.x, 0.0, 1.0);
+}
+
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+float fur_strand_exponent(float smoothness) {
+    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+}
+
+float fur_strand_norm(float p) {
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
+FurLight fur_vertex_light(vec3 p_1, vec3 normal, vec3 strand) {
+    FurLight out_ = FurLight(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), 0.0);
+    float _e5 = _group_1_binding_0_vs.smoothness;
+    float smoothness_1 = clamp(_e5, 0.0, 1.0);
+    vec3 _e11 = weft_view_direction(p_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e12 = weft_safe_normalize(normal, _e11);
+    vec3 _e13 = weft_safe_normalize(strand, _e12);
+    vec3 _e14 = weft_main_light_direction();
+    vec3 _e16 = weft_safe_normalize((_e14 + _e11), _e12);
+    float _e18 = weft_clamp_cos(dot(_e12, _e11));
+    float n_dot_l_2 = clamp(dot(_e12, _e14), 0.0, 1.0);
+    vec3 _e21 = weft_main_light_radiance();
+    float _e24 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
+    float _e25 = weft_sheen_albedo(_e18, _e24);
+    float _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
+    vec3 _e31 = weft_sheen_charlie(vec3(1.0), clamp(dot(_e12, _e16), 0.0, 1.0), _e18, n_dot_l_2, _e24);
+    vec3 _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
+    vec3 sheen = ((_e31 * _e21) + (_e35 * _e25));
+    float _e38 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = clamp(dot(_e13, _e14), -1.0, 1.0);
+    float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
+    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI);
+    float _e60 = _group_1_binding_0_vs.strand_strength;
+    float _e63 = fur_strand_norm(_e38);
+    float lobe_1 = (((max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2);
+    out_.diffuse = vec4((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
+    vec3 _e74 = weft_sh_irradiance(_e12);
+    out_.ambient = vec4(_e74, _e26);
+    float _e81 = weft_pow5_((1.0 - clamp(dot(_e14, _e16), 0.0, 1.0)));
+    out_.sheen = vec4(sheen, _e81);
+    out_.strand = vec4((_e21 * lobe_1), cone_angle);
+    out_.n_dot_v = clamp(dot(_e12, _e11), 0.0, 1.0);
+    FurLight _e89 = out_;
+    return _e89;
+}
+
 FurVaryings fur_vertex(FurInput in_4, float offset) {
-    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0);
+    FurVaryings out_1 = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), 0.0);
     mat4x4 model = _group_2_binding_0_vs.model;
     mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
     mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
@@ -239,16 +314,25 @@ FurVaryings fur_vertex(FurInput in_4, float offset) {
     float _e68 = _group_1_binding_0_vs.fur_length;
     float len = (max(_e68, 0.0) * max((1.0 + (hs * (clamp(height, 0.0, 1.0) - 1.0))), 0.0));
     vec3 dir_1 = mix(_e24, target_dir, offset);
-    vec3 p = (world + (dir_1 * (len * offset)));
+    vec3 p_2 = (world + (dir_1 * (len * offset)));
     mat4x4 _e88 = _group_0_binding_0_vs.view_proj;
-    out_.clip_position = (_e88 * vec4(p, 1.0));
-    out_.world_position = p;
-    out_.world_normal = _e24;
-    out_.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
-    out_.uv0_ = in_4.uv0_;
-    out_.offset = offset;
-    FurVaryings _e103 = out_;
-    return _e103;
+    out_1.clip_position = (_e88 * vec4(p_2, 1.0));
+    out_1.world_position = p_2;
+    out_1.world_normal = _e24;
+    out_1.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
+    out_1.uv0_ = in_4.uv0_;
+    out_1.offset = offset;
+    {
+        vec3 _e104 = out_1.strand;
+        FurLight _e105 = fur_vertex_light(p_2, _e24, _e104);
+        out_1.light_diffuse = _e105.diffuse;
+        out_1.light_ambient = _e105.ambient;
+        out_1.light_sheen = _e105.sheen;
+        out_1.light_strand = _e105.strand;
+        out_1.light_n_dot_v = _e105.n_dot_v;
+    }
+    FurVaryings _e116 = out_1;
+    return _e116;
 }
 
 uint fur_pcg(uint x_2) {
@@ -259,9 +343,9 @@ uint fur_pcg(uint x_2) {
 
 float fur_strand_cell(vec2 x_3, uint salt) {
     vec2 cell = floor(x_3);
-    uvec2 c_2 = uvec2(ivec2((cell - (65536.0 * floor((cell / vec2(65536.0)))))));
-    uint _e15 = fur_pcg((c_2.y + salt));
-    uint _e17 = fur_pcg((c_2.x + _e15));
+    uvec2 c_4 = uvec2(ivec2((cell - (65536.0 * floor((cell / vec2(65536.0)))))));
+    uint _e15 = fur_pcg((c_4.y + salt));
+    uint _e17 = fur_pcg((c_4.x + _e15));
     uint _e18 = fur_pcg(_e17);
     uint _e19 = fur_pcg(_e18);
     vec2 jitter = (((vec2(float((_e17 & 65535u)), float((_e18 & 65535u))) / vec2(65535.0)) - vec2(0.5)) * 0.3);
@@ -287,8 +371,28 @@ float fur_noise(vec2 uv0_) {
     return _e19;
 }
 
-float fur_strand_exponent(float smoothness) {
-    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+vec3 fur_shade_fast(FurVaryings in_5, vec3 base) {
+    float _e4 = _group_1_binding_0_vs.metallic;
+    float metallic = clamp(_e4, 0.0, 1.0);
+    vec3 f0_ = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo = (base * (1.0 - metallic));
+    vec4 _e14 = _group_1_binding_0_vs.sheen_color;
+    vec3 sheen_color_3 = clamp((f0_ + max(_e14.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+    float _e25 = weft_sheen_albedo_scaling(sheen_color_3, in_5.light_diffuse.w, in_5.light_ambient.w);
+    float _e28 = weft_sheen_albedo_scaling_view(sheen_color_3, in_5.light_diffuse.w);
+    vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * in_5.light_sheen.w));
+    vec4 _e38 = _group_1_binding_0_vs.strand_color;
+    vec3 strand_color = (max(_e38.xyz, vec3(0.0)) * fresnel);
+    float _e51 = _group_1_binding_0_vs.smoothness;
+    float _e52 = fur_strand_exponent(_e51);
+    float cone_p = pow(max(cos(in_5.light_strand.w), 0.0), _e52);
+    return (((diffuse_albedo * ((in_5.light_diffuse.xyz * _e25) + (in_5.light_ambient.xyz * _e28))) + (sheen_color_3 * in_5.light_sheen.xyz)) + (strand_color * (in_5.light_strand.xyz * cone_p)));
+}
+
+float fur_fade_n_dot_v(FurVaryings in_7) {
+    {
+        return in_7.light_n_dot_v;
+    }
 }
 
 void main() {
@@ -303,6 +407,11 @@ void main() {
     _vs2fs_location2 = _e12.strand;
     _vs2fs_location3 = _e12.uv0_;
     _vs2fs_location4 = _e12.offset;
+    _vs2fs_location5 = _e12.light_diffuse;
+    _vs2fs_location6 = _e12.light_ambient;
+    _vs2fs_location7 = _e12.light_sheen;
+    _vs2fs_location8 = _e12.light_strand;
+    _vs2fs_location9 = _e12.light_n_dot_v;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

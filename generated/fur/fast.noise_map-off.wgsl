@@ -52,6 +52,19 @@ struct FurVaryings {
     @location(2) strand: vec3<f32>,
     @location(3) uv0_: vec2<f32>,
     @location(4) offset: f32,
+    @location(5) light_diffuse: vec4<f32>,
+    @location(6) light_ambient: vec4<f32>,
+    @location(7) light_sheen: vec4<f32>,
+    @location(8) light_strand: vec4<f32>,
+    @location(9) light_n_dot_v: f32,
+}
+
+struct FurLight {
+    diffuse: vec4<f32>,
+    ambient: vec4<f32>,
+    sheen: vec4<f32>,
+    strand: vec4<f32>,
+    n_dot_v: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -109,15 +122,6 @@ fn weft_safe_normalize(v_1: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, (v_1 * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
-fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
-    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
-    return (f0_ + ((vec3(1f) - f0_) * _e5));
-}
-
-fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
-    return (albedo * WEFT_INV_PI);
-}
-
 fn weft_sheen_clamp_roughness(sheen_roughness: f32) -> f32 {
     return clamp(sheen_roughness, WEFT_SHEEN_MIN_ROUGHNESS, 1f);
 }
@@ -167,9 +171,15 @@ fn weft_sheen_charlie(sheen_color: vec3<f32>, n_dot_h_1: f32, n_dot_v_1: f32, n_
     return (max(sheen_color, vec3(0f)) * (lobe * saturate(n_dot_l_1)));
 }
 
-fn weft_sheen_albedo_scaling_view(sheen_color_1: vec3<f32>, e_v: f32) -> f32 {
-    let _e2 = weft_max3_(sheen_color_1);
-    return saturate((1f - (saturate(_e2) * saturate(e_v))));
+fn weft_sheen_albedo_scaling(sheen_color_1: vec3<f32>, e_v: f32, e_l: f32) -> f32 {
+    let _e3 = weft_max3_(sheen_color_1);
+    let c_2 = saturate(_e3);
+    return saturate(min((1f - (c_2 * saturate(e_v))), (1f - (c_2 * saturate(e_l)))));
+}
+
+fn weft_sheen_albedo_scaling_view(sheen_color_2: vec3<f32>, e_v_1: f32) -> f32 {
+    let _e2 = weft_max3_(sheen_color_2);
+    return saturate((1f - (saturate(_e2) * saturate(e_v_1))));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -223,8 +233,8 @@ fn weft_specular_mip(roughness: f32) -> f32 {
 
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_1);
-    let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_2.xyz, vec3(0f));
+    let c_3 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, vec3(0f));
 }
 
 fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_4: f32) -> f32 {
@@ -238,8 +248,53 @@ fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn fur_strand_exponent(smoothness: f32) -> f32 {
+    return exp2((1f + (9f * saturate(smoothness))));
+}
+
+fn fur_strand_norm(p: f32) -> f32 {
+    return sqrt(((((2f * p) + 1f) * 0.25f) * WEFT_INV_PI));
+}
+
+fn fur_vertex_light(p_1: vec3<f32>, normal: vec3<f32>, strand: vec3<f32>) -> FurLight {
+    var out: FurLight;
+
+    let _e5 = material.smoothness;
+    let smoothness_1 = saturate(_e5);
+    let _e11 = weft_view_direction(p_1, vec3<f32>(0f, 0f, 1f));
+    let _e12 = weft_safe_normalize(normal, _e11);
+    let _e13 = weft_safe_normalize(strand, _e12);
+    let _e14 = weft_main_light_direction();
+    let _e16 = weft_safe_normalize((_e14 + _e11), _e12);
+    let _e18 = weft_clamp_cos(dot(_e12, _e11));
+    let n_dot_l_2 = saturate(dot(_e12, _e14));
+    let _e21 = weft_main_light_radiance();
+    let _e24 = weft_sheen_clamp_roughness((1f - smoothness_1));
+    let _e25 = weft_sheen_albedo(_e18, _e24);
+    let _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
+    let _e31 = weft_sheen_charlie(vec3(1f), saturate(dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
+    let _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
+    let sheen = ((_e31 * _e21) + (_e35 * _e25));
+    let _e38 = fur_strand_exponent(smoothness_1);
+    let t_dot_l = clamp(dot(_e13, _e14), -1f, 1f);
+    let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
+    let cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1f, 1f))) - WEFT_PI);
+    let _e60 = material.strand_strength;
+    let _e63 = fur_strand_norm(_e38);
+    let lobe_1 = (((max(_e60, 0f) * _e63) * sin_l) * n_dot_l_2);
+    out.diffuse = vec4<f32>((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
+    let _e74 = weft_sh_irradiance(_e12);
+    out.ambient = vec4<f32>(_e74, _e26);
+    let _e81 = weft_pow5_((1f - saturate(dot(_e14, _e16))));
+    out.sheen = vec4<f32>(sheen, _e81);
+    out.strand = vec4<f32>((_e21 * lobe_1), cone_angle);
+    out.n_dot_v = saturate(dot(_e12, _e11));
+    let _e89 = out;
+    return _e89;
+}
+
 fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {
-    var out: FurVaryings;
+    var out_1: FurVaryings;
 
     let model = weft_object.model;
     let nm = weft_object.normal_matrix;
@@ -263,16 +318,25 @@ fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {
     let _e68 = material.fur_length;
     let len = (max(_e68, 0f) * max((1f + (hs * (saturate(height) - 1f))), 0f));
     let dir_1 = mix(_e24, target_dir, offset);
-    let p = (world + (dir_1 * (len * offset)));
+    let p_2 = (world + (dir_1 * (len * offset)));
     let _e88 = weft_frame.view_proj;
-    out.clip_position = (_e88 * vec4<f32>(p, 1f));
-    out.world_position = p;
-    out.world_normal = _e24;
-    out.strand = (_e24 + ((2f * offset) * (target_dir - _e24)));
-    out.uv0_ = in_4.uv0_;
-    out.offset = offset;
-    let _e103 = out;
-    return _e103;
+    out_1.clip_position = (_e88 * vec4<f32>(p_2, 1f));
+    out_1.world_position = p_2;
+    out_1.world_normal = _e24;
+    out_1.strand = (_e24 + ((2f * offset) * (target_dir - _e24)));
+    out_1.uv0_ = in_4.uv0_;
+    out_1.offset = offset;
+    {
+        let _e104 = out_1.strand;
+        let _e105 = fur_vertex_light(p_2, _e24, _e104);
+        out_1.light_diffuse = _e105.diffuse;
+        out_1.light_ambient = _e105.ambient;
+        out_1.light_sheen = _e105.sheen;
+        out_1.light_strand = _e105.strand;
+        out_1.light_n_dot_v = _e105.n_dot_v;
+    }
+    let _e116 = out_1;
+    return _e116;
 }
 
 fn fur_pcg(x_2: u32) -> u32 {
@@ -283,9 +347,9 @@ fn fur_pcg(x_2: u32) -> u32 {
 
 fn fur_strand_cell(x_3: vec2<f32>, salt: u32) -> f32 {
     let cell = floor(x_3);
-    let c_3 = vec2<u32>(vec2<i32>((cell - (65536f * floor((cell / vec2(65536f)))))));
-    let _e15 = fur_pcg((c_3.y + salt));
-    let _e17 = fur_pcg((c_3.x + _e15));
+    let c_4 = vec2<u32>(vec2<i32>((cell - (65536f * floor((cell / vec2(65536f)))))));
+    let _e15 = fur_pcg((c_4.y + salt));
+    let _e17 = fur_pcg((c_4.x + _e15));
     let _e18 = fur_pcg(_e17);
     let _e19 = fur_pcg(_e18);
     let jitter = (((vec2<f32>(f32((_e17 & 65535u)), f32((_e18 & 65535u))) / vec2(65535f)) - vec2(0.5f)) * 0.3f);
@@ -311,76 +375,75 @@ fn fur_noise(uv0_: vec2<f32>) -> f32 {
     return _e19;
 }
 
-fn fur_strand_exponent(smoothness: f32) -> f32 {
-    return exp2((1f + (9f * saturate(smoothness))));
+fn fur_shade_fast(in_5: FurVaryings, base: vec3<f32>) -> vec3<f32> {
+    let _e4 = material.metallic;
+    let metallic = saturate(_e4);
+    let f0_ = mix(vec3(0.04f), base, metallic);
+    let diffuse_albedo = (base * (1f - metallic));
+    let _e14 = material.sheen_color;
+    let sheen_color_3 = saturate((f0_ + max(_e14.xyz, vec3(0f))));
+    let _e25 = weft_sheen_albedo_scaling(sheen_color_3, in_5.light_diffuse.w, in_5.light_ambient.w);
+    let _e28 = weft_sheen_albedo_scaling_view(sheen_color_3, in_5.light_diffuse.w);
+    let fresnel = (f0_ + ((vec3(1f) - f0_) * in_5.light_sheen.w));
+    let _e38 = material.strand_color;
+    let strand_color = (max(_e38.xyz, vec3(0f)) * fresnel);
+    let _e51 = material.smoothness;
+    let _e52 = fur_strand_exponent(_e51);
+    let cone_p = pow(max(cos(in_5.light_strand.w), 0f), _e52);
+    return (((diffuse_albedo * ((in_5.light_diffuse.xyz * _e25) + (in_5.light_ambient.xyz * _e28))) + (sheen_color_3 * in_5.light_sheen.xyz)) + (strand_color * (in_5.light_strand.xyz * cone_p)));
 }
 
-fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
+fn fur_shade(in_6: FurVaryings) -> vec4<f32> {
     var color: vec3<f32>;
-    var scaling: f32;
 
     let _e4 = material.base_map_st;
-    let _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    let _e5 = fur_transform_uv(in_6.uv0_, _e4);
     let _e8 = material.base_color;
     let _e11 = textureSample(base_map, material_sampler, _e5);
     let base_rgba = (_e8 * _e11);
     let _e15 = textureSample(spot_map, material_sampler, _e5);
     let spot = saturate(_e15.x);
     let _e22 = material.spot_color;
-    let base = mix(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
+    let base_1 = mix(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     let alpha = saturate(base_rgba.w);
-    let _e30 = material.metallic;
-    let metallic = saturate(_e30);
-    let _e34 = material.smoothness;
-    let smoothness_1 = saturate(_e34);
-    let roughness_2 = (1f - smoothness_1);
-    let _e43 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    let _e47 = weft_safe_normalize(in_5.strand, _e45);
-    let _e48 = weft_main_light_direction();
-    let _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    let _e52 = weft_clamp_cos(dot(_e45, _e43));
-    let n_dot_l_2 = saturate(dot(_e45, _e48));
-    let n_dot_h_2 = saturate(dot(_e45, _e50));
-    let l_dot_h = saturate(dot(_e48, _e50));
-    let f0_1 = mix(vec3(0.04f), base, metallic);
-    let diffuse_albedo = (base * (1f - metallic));
-    let _e65 = weft_main_light_radiance();
-    let _e66 = weft_sh_irradiance(_e45);
     {
-        let _e70 = material.sheen_color;
-        let sheen_color_2 = saturate((f0_1 + max(_e70.xyz, vec3(0f))));
-        let _e77 = weft_sheen_clamp_roughness(roughness_2);
-        let _e78 = weft_sheen_albedo(_e52, _e77);
-        let _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
-        let _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        let _e81 = fur_strand_exponent(smoothness_1);
-        let t_dot_l = clamp(dot(_e47, _e48), -1f, 1f);
-        let t_dot_v = clamp(dot(_e47, _e43), -1f, 1f);
-        let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
-        let sin_v = sqrt(max((1f - (t_dot_v * t_dot_v)), 0f));
-        let cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0f);
-        let strand = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
-        let norm = sqrt(((((2f * _e81) + 1f) * 0.25f) * WEFT_INV_PI));
-        let _e119 = weft_f_schlick(f0_1, l_dot_h);
-        let _e122 = material.strand_color;
-        let strand_color = (max(_e122.xyz, vec3(0f)) * _e119);
-        let _e130 = material.strand_strength;
-        let strand_lobe = (strand_color * (((max(_e130, 0f) * norm) * strand) * n_dot_l_2));
-        let _e137 = weft_diffuse_lambert(diffuse_albedo);
-        let _e138 = scaling;
-        let base_direct = (_e137 * (_e138 * n_dot_l_2));
-        let direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        let _e146 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        let env_sheen = ((_e146 * sheen_color_2) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
+        let _e29 = fur_shade_fast(in_6, base_1);
+        color = _e29;
     }
-    let _e155 = material.fur_occlusion;
-    let occlusion = (1f - (saturate(_e155) * (1f - in_5.offset)));
-    let _e163 = color;
-    let radiance = clamp((_e163 * occlusion), vec3(0f), vec3(65504f));
+    let _e32 = material.fur_occlusion;
+    let occlusion = (1f - (saturate(_e32) * (1f - in_6.offset)));
+    let _e40 = color;
+    let radiance = clamp((_e40 * occlusion), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
+}
+
+fn fur_fade_n_dot_v(in_7: FurVaryings) -> f32 {
+    {
+        return in_7.light_n_dot_v;
+    }
+}
+
+fn fur_shell(in_8: FurVaryings) -> vec4<f32> {
+    let _e2 = fur_noise(in_8.uv0_);
+    let o = saturate(in_8.offset);
+    let _e8 = material.tapered_tips;
+    let shape = select(o, (o * o), (_e8 != 0u));
+    let _e14 = material.cutoff_start;
+    let _e18 = material.cutoff_end;
+    let threshold = mix(saturate(_e14), saturate(_e18), shape);
+    let _e21 = fwidth(_e2);
+    let width = max(_e21, 0.001f);
+    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
+    let _e32 = fur_shade(in_8);
+    let _e35 = material.edge_fade;
+    let _e37 = fur_fade_n_dot_v(in_8);
+    let fade = (1f - (saturate(_e35) * (1f - _e37)));
+    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
+    let _e53 = material.shell_count;
+    let slab = (FUR_SEED_SHELLS / f32(max(_e53, 1i)));
+    let keep = (1f - a_1);
+    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
+    return vec4<f32>(_e32.xyz, alpha_1);
 }
 
 @vertex 
@@ -405,25 +468,6 @@ fn fs_skin(in_2: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment 
 fn fs_shell(in_3: FurVaryings) -> @location(0) vec4<f32> {
-    let _e2 = fur_noise(in_3.uv0_);
-    let o = saturate(in_3.offset);
-    let _e8 = material.tapered_tips;
-    let shape = select(o, (o * o), (_e8 != 0u));
-    let _e14 = material.cutoff_start;
-    let _e18 = material.cutoff_end;
-    let threshold = mix(saturate(_e14), saturate(_e18), shape);
-    let _e21 = fwidth(_e2);
-    let width = max(_e21, 0.001f);
-    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
-    let _e32 = fur_shade(in_3);
-    let _e38 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    let _e43 = material.edge_fade;
-    let fade = (1f - (saturate(_e43) * (1f - saturate(dot(_e40, _e38)))));
-    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
-    let _e62 = material.shell_count;
-    let slab = (FUR_SEED_SHELLS / f32(max(_e62, 1i)));
-    let keep = (1f - a_1);
-    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
-    return vec4<f32>(_e32.xyz, alpha_1);
+    let _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -49,6 +49,18 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
+};
+struct FurLight {
+    vec4 diffuse;
+    vec4 ambient;
+    vec4 sheen;
+    vec4 strand;
+    float n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -62,13 +74,7 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_SHEEN_MIN_ROUGHNESS = 0.07;
 const float FUR_SEED_SHELLS = 20.0;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
-
-layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
-
-layout(binding = 1) uniform sampler2D _group_0_binding_5_fs;
-
-layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+layout(std140, binding = 1) uniform WeftMaterial_block_0Fragment { WeftMaterial _group_1_binding_0_fs; };
 
 layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
 
@@ -79,6 +85,11 @@ layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec3 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 4) smooth in float _vs2fs_location4;
+layout(location = 5) smooth in vec4 _vs2fs_location5;
+layout(location = 6) smooth in vec4 _vs2fs_location6;
+layout(location = 7) smooth in vec4 _vs2fs_location7;
+layout(location = 8) smooth in vec4 _vs2fs_location8;
+layout(location = 9) smooth in float _vs2fs_location9;
 layout(location = 0) out vec4 _fs2p_location0;
 
 float weft_pow5_(float x) {
@@ -97,15 +108,6 @@ float weft_clamp_cos(float c) {
 vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
     float len2_ = dot(v_1, v_1);
     return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
-}
-
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-vec3 weft_diffuse_lambert(vec3 albedo) {
-    return (albedo * WEFT_INV_PI);
 }
 
 float weft_sheen_clamp_roughness(float sheen_roughness) {
@@ -157,70 +159,15 @@ vec3 weft_sheen_charlie(vec3 sheen_color, float n_dot_h_1, float n_dot_v_1, floa
     return (max(sheen_color, vec3(0.0)) * (lobe * clamp(n_dot_l_1, 0.0, 1.0)));
 }
 
-float weft_sheen_albedo_scaling_view(vec3 sheen_color_1, float e_v) {
-    float _e2 = weft_max3_(sheen_color_1);
-    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v, 0.0, 1.0))), 0.0, 1.0);
+float weft_sheen_albedo_scaling(vec3 sheen_color_1, float e_v, float e_l) {
+    float _e3 = weft_max3_(sheen_color_1);
+    float c_2 = clamp(_e3, 0.0, 1.0);
+    return clamp(min((1.0 - (c_2 * clamp(e_v, 0.0, 1.0))), (1.0 - (c_2 * clamp(e_l, 0.0, 1.0)))), 0.0, 1.0);
 }
 
-vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_fs.light_direction;
-    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e8;
-}
-
-vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_fs.light_color;
-    return max(_e2.xyz, vec3(0.0));
-}
-
-vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_fs.camera_position;
-    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
-    return _e7;
-}
-
-vec3 weft_sh_irradiance(vec3 n) {
-    vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_fs.sh;
-    e = (sh[0].xyz * 0.282095);
-    vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n.y)));
-    vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n.z)));
-    vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n.x)));
-    vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n.x) * n.y)));
-    vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n.y) * n.z)));
-    vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0))));
-    vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n.x) * n.z)));
-    vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
-    vec3 _e91 = e;
-    return max(_e91, vec3(0.0));
-}
-
-float weft_specular_mip(float roughness) {
-    float r_2 = clamp(roughness, 0.0, 1.0);
-    float _e5 = _group_0_binding_0_fs.params.x;
-    float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
-}
-
-vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
-    float _e4 = weft_specular_mip(roughness_1);
-    vec4 c_2 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_2.xyz, vec3(0.0));
-}
-
-float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
-    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_4);
-    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e3);
-    vec4 _e8 = textureLod(_group_0_binding_5_fs, vec2(uv_1), 0.0);
-    return clamp(_e8.x, 0.0, 1.0);
+float weft_sheen_albedo_scaling_view(vec3 sheen_color_2, float e_v_1) {
+    float _e2 = weft_max3_(sheen_color_2);
+    return clamp((1.0 - (clamp(_e2, 0.0, 1.0) * clamp(e_v_1, 0.0, 1.0))), 0.0, 1.0);
 }
 
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
@@ -231,75 +178,59 @@ float fur_strand_exponent(float smoothness) {
     return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
 }
 
-vec4 fur_shade(FurVaryings in_5) {
+float fur_strand_norm(float p) {
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
+vec3 fur_shade_fast(FurVaryings in_5, vec3 base) {
+    float _e4 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp(_e4, 0.0, 1.0);
+    vec3 f0_ = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo = (base * (1.0 - metallic));
+    vec4 _e14 = _group_1_binding_0_fs.sheen_color;
+    vec3 sheen_color_3 = clamp((f0_ + max(_e14.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+    float _e25 = weft_sheen_albedo_scaling(sheen_color_3, in_5.light_diffuse.w, in_5.light_ambient.w);
+    float _e28 = weft_sheen_albedo_scaling_view(sheen_color_3, in_5.light_diffuse.w);
+    vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * in_5.light_sheen.w));
+    vec4 _e38 = _group_1_binding_0_fs.strand_color;
+    vec3 strand_color = (max(_e38.xyz, vec3(0.0)) * fresnel);
+    float _e51 = _group_1_binding_0_fs.smoothness;
+    float _e52 = fur_strand_exponent(_e51);
+    float cone_p = pow(max(cos(in_5.light_strand.w), 0.0), _e52);
+    return (((diffuse_albedo * ((in_5.light_diffuse.xyz * _e25) + (in_5.light_ambient.xyz * _e28))) + (sheen_color_3 * in_5.light_sheen.xyz)) + (strand_color * (in_5.light_strand.xyz * cone_p)));
+}
+
+vec4 fur_shade(FurVaryings in_6) {
     vec3 color = vec3(0.0);
-    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
-    vec2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    vec2 _e5 = fur_transform_uv(in_6.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
     vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
     vec4 base_rgba = (_e8 * _e11);
     vec4 _e15 = texture(_group_1_binding_4_fs, vec2(_e5));
     float spot = clamp(_e15.x, 0.0, 1.0);
     vec4 _e22 = _group_1_binding_0_fs.spot_color;
-    vec3 base = mix(clamp(base_rgba.xyz, vec3(0.0), vec3(1.0)), clamp(_e22.xyz, vec3(0.0), vec3(1.0)), spot);
+    vec3 base_1 = mix(clamp(base_rgba.xyz, vec3(0.0), vec3(1.0)), clamp(_e22.xyz, vec3(0.0), vec3(1.0)), spot);
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
-    float _e30 = _group_1_binding_0_fs.metallic;
-    float metallic = clamp(_e30, 0.0, 1.0);
-    float _e34 = _group_1_binding_0_fs.smoothness;
-    float smoothness_1 = clamp(_e34, 0.0, 1.0);
-    float roughness_2 = (1.0 - smoothness_1);
-    vec3 _e43 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    vec3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    vec3 _e48 = weft_main_light_direction();
-    vec3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = clamp(dot(_e45, _e48), 0.0, 1.0);
-    float n_dot_h_2 = clamp(dot(_e45, _e50), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e48, _e50), 0.0, 1.0);
-    vec3 f0_1 = mix(vec3(0.04), base, metallic);
-    vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e65 = weft_main_light_radiance();
-    vec3 _e66 = weft_sh_irradiance(_e45);
     {
-        vec4 _e70 = _group_1_binding_0_fs.sheen_color;
-        vec3 sheen_color_2 = clamp((f0_1 + max(_e70.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-        float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        float _e78 = weft_sheen_albedo(_e52, _e77);
-        float _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
-        vec3 _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = clamp(dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = clamp(dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-        float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
-        float cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0);
-        float strand = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
-        float norm = sqrt(((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI));
-        vec3 _e119 = weft_f_schlick(f0_1, l_dot_h);
-        vec4 _e122 = _group_1_binding_0_fs.strand_color;
-        vec3 strand_color = (max(_e122.xyz, vec3(0.0)) * _e119);
-        float _e130 = _group_1_binding_0_fs.strand_strength;
-        vec3 strand_lobe = (strand_color * (((max(_e130, 0.0) * norm) * strand) * n_dot_l_2));
-        vec3 _e137 = weft_diffuse_lambert(diffuse_albedo);
-        float _e138 = scaling;
-        vec3 base_direct = (_e137 * (_e138 * n_dot_l_2));
-        vec3 direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        vec3 _e146 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        vec3 env_sheen = ((_e146 * sheen_color_2) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
+        vec3 _e29 = fur_shade_fast(in_6, base_1);
+        color = _e29;
     }
-    float _e155 = _group_1_binding_0_fs.fur_occlusion;
-    float occlusion = (1.0 - (clamp(_e155, 0.0, 1.0) * (1.0 - in_5.offset)));
-    vec3 _e163 = color;
-    vec3 radiance = clamp((_e163 * occlusion), vec3(0.0), vec3(65504.0));
+    float _e32 = _group_1_binding_0_fs.fur_occlusion;
+    float occlusion = (1.0 - (clamp(_e32, 0.0, 1.0) * (1.0 - in_6.offset)));
+    vec3 _e40 = color;
+    vec3 radiance = clamp((_e40 * occlusion), vec3(0.0), vec3(65504.0));
     return vec4(radiance, alpha);
 }
 
+float fur_fade_n_dot_v(FurVaryings in_7) {
+    {
+        return in_7.light_n_dot_v;
+    }
+}
+
 void main() {
-    FurVaryings in_2 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4);
+    FurVaryings in_2 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
     vec4 _e1 = fur_shade(in_2);
     _fs2p_location0 = vec4(_e1.xyz, 1.0);
     return;

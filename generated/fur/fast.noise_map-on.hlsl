@@ -65,6 +65,22 @@ struct FurVaryings {
     float3 strand : LOC2;
     float2 uv0_ : LOC3;
     float offset : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
+};
+
+struct FurLight {
+    float4 diffuse;
+    float4 ambient;
+    float4 sheen;
+    float4 strand;
+    float n_dot_v;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -100,36 +116,56 @@ Texture2D<float4> force_map : register(t7, space1);
 struct VertexOutput_vs_skin {
     float3 world_position_1 : LOC0;
     float3 world_normal : LOC1;
-    float3 strand : LOC2;
+    float3 strand_1 : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
     float4 clip_position : SV_Position;
 };
 
 struct VertexOutput_vs_shell {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
-    float3 strand_1 : LOC2;
+    float3 strand_2 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
+    float4 light_diffuse_1 : LOC5;
+    float4 light_ambient_1 : LOC6;
+    float4 light_sheen_1 : LOC7;
+    float4 light_strand_1 : LOC8;
+    float light_n_dot_v_1 : LOC9;
     float4 clip_position_1 : SV_Position;
 };
 
 struct FragmentInput_fs_skin {
     float3 world_position_3 : LOC0;
     float3 world_normal_2 : LOC1;
-    float3 strand_2 : LOC2;
+    float3 strand_3 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
+    float4 light_diffuse_2 : LOC5;
+    float4 light_ambient_2 : LOC6;
+    float4 light_sheen_2 : LOC7;
+    float4 light_strand_2 : LOC8;
+    float light_n_dot_v_2 : LOC9;
     float4 clip_position_2 : SV_Position;
 };
 
 struct FragmentInput_fs_shell {
     float3 world_position_4 : LOC0;
     float3 world_normal_3 : LOC1;
-    float3 strand_3 : LOC2;
+    float3 strand_4 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
+    float4 light_diffuse_3 : LOC5;
+    float4 light_ambient_3 : LOC6;
+    float4 light_sheen_3 : LOC7;
+    float4 light_strand_3 : LOC8;
+    float light_n_dot_v_3 : LOC9;
     float4 clip_position_3 : SV_Position;
 };
 
@@ -153,17 +189,6 @@ float3 weft_safe_normalize(float3 v_1, float3 fallback)
 {
     float len2_ = dot(v_1, v_1);
     return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
-}
-
-float3 weft_f_schlick(float3 f0_, float v_dot_h)
-{
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
-    return (f0_ + (((1.0).xxx - f0_) * _e5));
-}
-
-float3 weft_diffuse_lambert(float3 albedo)
-{
-    return (albedo * WEFT_INV_PI);
 }
 
 float weft_sheen_clamp_roughness(float sheen_roughness)
@@ -221,10 +246,17 @@ float3 weft_sheen_charlie(float3 sheen_color, float n_dot_h_1, float n_dot_v_1, 
     return (max(sheen_color, (0.0).xxx) * (lobe * saturate(n_dot_l_1)));
 }
 
-float weft_sheen_albedo_scaling_view(float3 sheen_color_1, float e_v)
+float weft_sheen_albedo_scaling(float3 sheen_color_1, float e_v, float e_l)
 {
-    const float _e2 = weft_max3_(sheen_color_1);
-    return saturate((1.0 - (saturate(_e2) * saturate(e_v))));
+    const float _e3 = weft_max3_(sheen_color_1);
+    float c_2 = saturate(_e3);
+    return saturate(min((1.0 - (c_2 * saturate(e_v))), (1.0 - (c_2 * saturate(e_l)))));
+}
+
+float weft_sheen_albedo_scaling_view(float3 sheen_color_2, float e_v_1)
+{
+    const float _e2 = weft_max3_(sheen_color_2);
+    return saturate((1.0 - (saturate(_e2) * saturate(e_v_1))));
 }
 
 float3 weft_main_light_direction()
@@ -284,8 +316,8 @@ float weft_specular_mip(float roughness)
 float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
 {
     const float _e4 = weft_specular_mip(roughness_1);
-    float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_2.xyz, (0.0).xxx);
+    float4 c_3 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_3.xyz, (0.0).xxx);
 }
 
 float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4)
@@ -301,9 +333,58 @@ float2 fur_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
+float fur_strand_exponent(float smoothness)
+{
+    return exp2((1.0 + (9.0 * saturate(smoothness))));
+}
+
+float fur_strand_norm(float p)
+{
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
+FurLight fur_vertex_light(float3 p_1, float3 normal, float3 strand)
+{
+    FurLight out_ = (FurLight)0;
+
+    float _e5 = material.smoothness;
+    float smoothness_1 = saturate(_e5);
+    const float3 _e11 = weft_view_direction(p_1, float3(0.0, 0.0, 1.0));
+    const float3 _e12 = weft_safe_normalize(normal, _e11);
+    const float3 _e13 = weft_safe_normalize(strand, _e12);
+    const float3 _e14 = weft_main_light_direction();
+    const float3 _e16 = weft_safe_normalize((_e14 + _e11), _e12);
+    const float _e18 = weft_clamp_cos(dot(_e12, _e11));
+    float n_dot_l_2 = saturate(dot(_e12, _e14));
+    const float3 _e21 = weft_main_light_radiance();
+    const float _e24 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
+    const float _e25 = weft_sheen_albedo(_e18, _e24);
+    const float _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
+    const float3 _e31 = weft_sheen_charlie((1.0).xxx, saturate(dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
+    const float3 _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
+    float3 sheen = ((_e31 * _e21) + (_e35 * _e25));
+    const float _e38 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = clamp(dot(_e13, _e14), -1.0, 1.0);
+    float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
+    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI);
+    float _e60 = material.strand_strength;
+    const float _e63 = fur_strand_norm(_e38);
+    float lobe_1 = (((max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2);
+    out_.diffuse = float4((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
+    const float3 _e74 = weft_sh_irradiance(_e12);
+    out_.ambient = float4(_e74, _e26);
+    const float _e81 = weft_pow5_((1.0 - saturate(dot(_e14, _e16))));
+    out_.sheen = float4(sheen, _e81);
+    out_.strand = float4((_e21 * lobe_1), cone_angle);
+    out_.n_dot_v = saturate(dot(_e12, _e11));
+    FurLight _e89 = out_;
+    const FurLight furlight = _e89;
+    return furlight;
+}
+
 FurVaryings fur_vertex(FurInput in_4, float offset)
 {
-    FurVaryings out_ = (FurVaryings)0;
+    FurVaryings out_1 = (FurVaryings)0;
 
     float4x4 model = weft_object.model;
     float4x4 nm = weft_object.normal_matrix;
@@ -327,16 +408,25 @@ FurVaryings fur_vertex(FurInput in_4, float offset)
     float _e68 = material.fur_length;
     float len = (max(_e68, 0.0) * max((1.0 + (hs * (saturate(height) - 1.0))), 0.0));
     float3 dir_1 = lerp(_e24, target_dir, offset);
-    float3 p = (world + (dir_1 * (len * offset)));
+    float3 p_2 = (world + (dir_1 * (len * offset)));
     float4x4 _e88 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(p, 1.0), _e88);
-    out_.world_position = p;
-    out_.world_normal = _e24;
-    out_.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
-    out_.uv0_ = in_4.uv0_;
-    out_.offset = offset;
-    FurVaryings _e103 = out_;
-    const FurVaryings furvaryings = _e103;
+    out_1.clip_position = mul(float4(p_2, 1.0), _e88);
+    out_1.world_position = p_2;
+    out_1.world_normal = _e24;
+    out_1.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
+    out_1.uv0_ = in_4.uv0_;
+    out_1.offset = offset;
+    {
+        float3 _e104 = out_1.strand;
+        const FurLight _e105 = fur_vertex_light(p_2, _e24, _e104);
+        out_1.light_diffuse = _e105.diffuse;
+        out_1.light_ambient = _e105.ambient;
+        out_1.light_sheen = _e105.sheen;
+        out_1.light_strand = _e105.strand;
+        out_1.light_n_dot_v = _e105.n_dot_v;
+    }
+    FurVaryings _e116 = out_1;
+    const FurVaryings furvaryings = _e116;
     return furvaryings;
 }
 
@@ -350,85 +440,86 @@ float fur_noise(float2 uv0_)
     }
 }
 
-float fur_strand_exponent(float smoothness)
+float3 fur_shade_fast(FurVaryings in_5, float3 base)
 {
-    return exp2((1.0 + (9.0 * saturate(smoothness))));
+    float _e4 = material.metallic;
+    float metallic = saturate(_e4);
+    float3 f0_ = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
+    float4 _e14 = material.sheen_color;
+    float3 sheen_color_3 = saturate((f0_ + max(_e14.xyz, (0.0).xxx)));
+    const float _e25 = weft_sheen_albedo_scaling(sheen_color_3, in_5.light_diffuse.w, in_5.light_ambient.w);
+    const float _e28 = weft_sheen_albedo_scaling_view(sheen_color_3, in_5.light_diffuse.w);
+    float3 fresnel = (f0_ + (((1.0).xxx - f0_) * in_5.light_sheen.w));
+    float4 _e38 = material.strand_color;
+    float3 strand_color = (max(_e38.xyz, (0.0).xxx) * fresnel);
+    float _e51 = material.smoothness;
+    const float _e52 = fur_strand_exponent(_e51);
+    float cone_p = pow(max(cos(in_5.light_strand.w), 0.0), _e52);
+    return (((diffuse_albedo * ((in_5.light_diffuse.xyz * _e25) + (in_5.light_ambient.xyz * _e28))) + (sheen_color_3 * in_5.light_sheen.xyz)) + (strand_color * (in_5.light_strand.xyz * cone_p)));
 }
 
-float4 fur_shade(FurVaryings in_5)
+float4 fur_shade(FurVaryings in_6)
 {
     float3 color = (float3)0;
-    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
-    const float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    const float2 _e5 = fur_transform_uv(in_6.uv0_, _e4);
     float4 _e8 = material.base_color;
     float4 _e11 = base_map.Sample(material_sampler, _e5);
     float4 base_rgba = (_e8 * _e11);
     float4 _e15 = spot_map.Sample(material_sampler, _e5);
     float spot = saturate(_e15.x);
     float4 _e22 = material.spot_color;
-    float3 base = lerp(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
+    float3 base_1 = lerp(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     float alpha = saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness_1 = saturate(_e34);
-    float roughness_2 = (1.0 - smoothness_1);
-    const float3 _e43 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    const float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    const float3 _e48 = weft_main_light_direction();
-    const float3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    const float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = saturate(dot(_e45, _e48));
-    float n_dot_h_2 = saturate(dot(_e45, _e50));
-    float l_dot_h = saturate(dot(_e48, _e50));
-    float3 f0_1 = lerp((0.04).xxx, base, metallic);
-    float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e65 = weft_main_light_radiance();
-    const float3 _e66 = weft_sh_irradiance(_e45);
     {
-        float4 _e70 = material.sheen_color;
-        float3 sheen_color_2 = saturate((f0_1 + max(_e70.xyz, (0.0).xxx)));
-        const float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        const float _e78 = weft_sheen_albedo(_e52, _e77);
-        const float _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
-        const float3 _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        const float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = clamp(dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = clamp(dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-        float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
-        float cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0);
-        float strand_4 = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
-        float norm = sqrt(((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI));
-        const float3 _e119 = weft_f_schlick(f0_1, l_dot_h);
-        float4 _e122 = material.strand_color;
-        float3 strand_color = (max(_e122.xyz, (0.0).xxx) * _e119);
-        float _e130 = material.strand_strength;
-        float3 strand_lobe = (strand_color * (((max(_e130, 0.0) * norm) * strand_4) * n_dot_l_2));
-        const float3 _e137 = weft_diffuse_lambert(diffuse_albedo);
-        float _e138 = scaling;
-        float3 base_direct = (_e137 * (_e138 * n_dot_l_2));
-        float3 direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        const float3 _e146 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        float3 env_sheen = ((_e146 * sheen_color_2) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
+        const float3 _e29 = fur_shade_fast(in_6, base_1);
+        color = _e29;
     }
-    float _e155 = material.fur_occlusion;
-    float occlusion = (1.0 - (saturate(_e155) * (1.0 - in_5.offset)));
-    float3 _e163 = color;
-    float3 radiance = clamp((_e163 * occlusion), (0.0).xxx, (65504.0).xxx);
+    float _e32 = material.fur_occlusion;
+    float occlusion = (1.0 - (saturate(_e32) * (1.0 - in_6.offset)));
+    float3 _e40 = color;
+    float3 radiance = clamp((_e40 * occlusion), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
+}
+
+float fur_fade_n_dot_v(FurVaryings in_7)
+{
+    {
+        return in_7.light_n_dot_v;
+    }
+}
+
+float4 fur_shell(FurVaryings in_8)
+{
+    const float _e2 = fur_noise(in_8.uv0_);
+    float o = saturate(in_8.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = ((_e8 != 0u) ? (o * o) : o);
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
+    float _e21 = fwidth(_e2);
+    float width = max(_e21, 0.001);
+    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
+    const float4 _e32 = fur_shade(in_8);
+    float _e35 = material.edge_fade;
+    const float _e37 = fur_fade_n_dot_v(in_8);
+    float fade = (1.0 - (saturate(_e35) * (1.0 - _e37)));
+    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
+    int _e53 = material.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, int(1))));
+    float keep = (1.0 - a_1);
+    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
+    return float4(_e32.xyz, alpha_1);
 }
 
 VertexOutput_vs_skin vs_skin(FurInput in_)
 {
     const FurVaryings _e2 = fur_vertex(in_, 0.0);
     const FurVaryings furvaryings_1 = _e2;
-    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.clip_position };
+    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.light_diffuse, furvaryings_1.light_ambient, furvaryings_1.light_sheen, furvaryings_1.light_strand, furvaryings_1.light_n_dot_v, furvaryings_1.clip_position };
     return furvaryings_1_;
 }
 
@@ -438,39 +529,20 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
     float count = float(max(_e4, int(1)));
     const FurVaryings _e12 = fur_vertex(in_1, ((float(instance) + 0.5) / count));
     const FurVaryings furvaryings_2 = _e12;
-    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.clip_position };
+    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.light_diffuse, furvaryings_2.light_ambient, furvaryings_2.light_sheen, furvaryings_2.light_strand, furvaryings_2.light_n_dot_v, furvaryings_2.clip_position };
     return furvaryings_2_;
 }
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_3, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4 };
-    const float _e2 = fur_noise(in_3.uv0_);
-    float o = saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = ((_e8 != 0u) ? (o * o) : o);
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
-    float _e21 = fwidth(_e2);
-    float width = max(_e21, 0.001);
-    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
-    const float4 _e32 = fur_shade(in_3);
-    const float3 _e38 = weft_view_direction(in_3.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = (1.0 - (saturate(_e43) * (1.0 - saturate(dot(_e40, _e38)))));
-    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
-    int _e62 = material.shell_count;
-    float slab = (FUR_SEED_SHELLS / float(max(_e62, int(1))));
-    float keep = (1.0 - a_1);
-    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    return float4(_e32.xyz, alpha_1);
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_4, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    const float4 _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -64,6 +64,20 @@ struct FurVaryings {
     metal::float2 uv0_;
     float offset;
     char _pad6[4];
+    metal::float4 light_diffuse;
+    metal::float4 light_ambient;
+    metal::float4 light_sheen;
+    metal::float4 light_strand;
+    float light_n_dot_v;
+    char _pad11[12];
+};
+struct FurLight {
+    metal::float4 diffuse;
+    metal::float4 ambient;
+    metal::float4 sheen;
+    metal::float4 strand;
+    float n_dot_v;
+    char _pad5[12];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -102,20 +116,6 @@ metal::float3 weft_safe_normalize(
 ) {
     float len2_ = metal::dot(v_1, v_1);
     return (len2_ > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
-}
-
-metal::float3 weft_f_schlick(
-    metal::float3 f0_,
-    float v_dot_h
-) {
-    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
-    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
-}
-
-metal::float3 weft_diffuse_lambert(
-    metal::float3 albedo
-) {
-    return albedo * WEFT_INV_PI;
 }
 
 float weft_sheen_clamp_roughness(
@@ -188,12 +188,22 @@ metal::float3 weft_sheen_charlie(
     return metal::max(sheen_color, metal::float3(0.0)) * (lobe * metal::saturate(n_dot_l_1));
 }
 
-float weft_sheen_albedo_scaling_view(
+float weft_sheen_albedo_scaling(
     metal::float3 sheen_color_1,
-    float e_v
+    float e_v,
+    float e_l
 ) {
-    float _e2 = weft_max3_(sheen_color_1);
-    return metal::saturate(1.0 - (metal::saturate(_e2) * metal::saturate(e_v)));
+    float _e3 = weft_max3_(sheen_color_1);
+    float c_2 = metal::saturate(_e3);
+    return metal::saturate(metal::min(1.0 - (c_2 * metal::saturate(e_v)), 1.0 - (c_2 * metal::saturate(e_l))));
+}
+
+float weft_sheen_albedo_scaling_view(
+    metal::float3 sheen_color_2,
+    float e_v_1
+) {
+    float _e2 = weft_max3_(sheen_color_2);
+    return metal::saturate(1.0 - (metal::saturate(_e2) * metal::saturate(e_v_1)));
 }
 
 metal::float3 weft_main_light_direction(
@@ -266,8 +276,8 @@ metal::float3 weft_prefiltered_radiance(
     metal::sampler weft_environment_sampler
 ) {
     float _e4 = weft_specular_mip(roughness_1, weft_frame);
-    metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
-    return metal::max(c_2.xyz, metal::float3(0.0));
+    metal::float4 c_3 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_3.xyz, metal::float3(0.0));
 }
 
 float weft_sheen_albedo(
@@ -289,17 +299,79 @@ metal::float2 fur_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+float fur_strand_exponent(
+    float smoothness
+) {
+    return metal::exp2(1.0 + (9.0 * metal::saturate(smoothness)));
+}
+
+float fur_strand_norm(
+    float p
+) {
+    return metal::sqrt((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI);
+}
+
+FurLight fur_vertex_light(
+    metal::float3 p_1,
+    metal::float3 normal,
+    metal::float3 strand,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
+    constant WeftMaterial& material
+) {
+    FurLight out = {};
+    float _e5 = material.smoothness;
+    float smoothness_1 = metal::saturate(_e5);
+    metal::float3 _e11 = weft_view_direction(p_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e12 = weft_safe_normalize(normal, _e11);
+    metal::float3 _e13 = weft_safe_normalize(strand, _e12);
+    metal::float3 _e14 = weft_main_light_direction(weft_frame);
+    metal::float3 _e16 = weft_safe_normalize(_e14 + _e11, _e12);
+    float _e18 = weft_clamp_cos(metal::dot(_e12, _e11));
+    float n_dot_l_2 = metal::saturate(metal::dot(_e12, _e14));
+    metal::float3 _e21 = weft_main_light_radiance(weft_frame);
+    float _e24 = weft_sheen_clamp_roughness(1.0 - smoothness_1);
+    float _e25 = weft_sheen_albedo(_e18, _e24, weft_lut_sampler, weft_sheen_lut);
+    float _e26 = weft_sheen_albedo(n_dot_l_2, _e24, weft_lut_sampler, weft_sheen_lut);
+    metal::float3 _e31 = weft_sheen_charlie(metal::float3(1.0), metal::saturate(metal::dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
+    metal::float3 _e35 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e12), _e24, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 sheen = (_e31 * _e21) + (_e35 * _e25);
+    float _e38 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = metal::clamp(metal::dot(_e13, _e14), -1.0, 1.0);
+    float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
+    float cone_angle = (metal::acos(t_dot_l) + metal::acos(metal::clamp(metal::dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI;
+    float _e60 = material.strand_strength;
+    float _e63 = fur_strand_norm(_e38);
+    float lobe_1 = ((metal::max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2;
+    out.diffuse = metal::float4(_e21 * (WEFT_INV_PI * n_dot_l_2), _e25);
+    metal::float3 _e74 = weft_sh_irradiance(_e12, weft_frame);
+    out.ambient = metal::float4(_e74, _e26);
+    float _e81 = weft_pow5_(1.0 - metal::saturate(metal::dot(_e14, _e16)));
+    out.sheen = metal::float4(sheen, _e81);
+    out.strand = metal::float4(_e21 * lobe_1, cone_angle);
+    out.n_dot_v = metal::saturate(metal::dot(_e12, _e11));
+    FurLight _e89 = out;
+    return _e89;
+}
+
 FurVaryings fur_vertex(
     FurInput in_4,
     float offset,
     constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
     constant WeftObject& weft_object,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> height_map,
     metal::texture2d<float, metal::access::sample> force_map
 ) {
-    FurVaryings out = {};
+    FurVaryings out_1 = {};
     metal::float4x4 model = weft_object.model;
     metal::float4x4 nm = weft_object.normal_matrix;
     metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
@@ -322,16 +394,25 @@ FurVaryings fur_vertex(
     float _e68 = material.fur_length;
     float len = metal::max(_e68, 0.0) * metal::max(1.0 + (hs * (metal::saturate(height) - 1.0)), 0.0);
     metal::float3 dir_1 = metal::mix(_e24, target_dir, offset);
-    metal::float3 p = world + (dir_1 * (len * offset));
+    metal::float3 p_2 = world + (dir_1 * (len * offset));
     metal::float4x4 _e88 = weft_frame.view_proj;
-    out.clip_position = _e88 * metal::float4(p, 1.0);
-    out.world_position = p;
-    out.world_normal = _e24;
-    out.strand = _e24 + ((2.0 * offset) * (target_dir - _e24));
-    out.uv0_ = in_4.uv0_;
-    out.offset = offset;
-    FurVaryings _e103 = out;
-    return _e103;
+    out_1.clip_position = _e88 * metal::float4(p_2, 1.0);
+    out_1.world_position = p_2;
+    out_1.world_normal = _e24;
+    out_1.strand = _e24 + ((2.0 * offset) * (target_dir - _e24));
+    out_1.uv0_ = in_4.uv0_;
+    out_1.offset = offset;
+    {
+        metal::float3 _e104 = out_1.strand;
+        FurLight _e105 = fur_vertex_light(p_2, _e24, _e104, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material);
+        out_1.light_diffuse = _e105.diffuse;
+        out_1.light_ambient = _e105.ambient;
+        out_1.light_sheen = _e105.sheen;
+        out_1.light_strand = _e105.strand;
+        out_1.light_n_dot_v = _e105.n_dot_v;
+    }
+    FurVaryings _e116 = out_1;
+    return _e116;
 }
 
 float fur_noise(
@@ -348,93 +429,98 @@ float fur_noise(
     }
 }
 
-float fur_strand_exponent(
-    float smoothness
+metal::float3 fur_shade_fast(
+    FurVaryings in_5,
+    metal::float3 base,
+    constant WeftMaterial& material
 ) {
-    return metal::exp2(1.0 + (9.0 * metal::saturate(smoothness)));
+    float _e4 = material.metallic;
+    float metallic = metal::saturate(_e4);
+    metal::float3 f0_ = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
+    metal::float4 _e14 = material.sheen_color;
+    metal::float3 sheen_color_3 = metal::saturate(f0_ + metal::max(_e14.xyz, metal::float3(0.0)));
+    float _e25 = weft_sheen_albedo_scaling(sheen_color_3, in_5.light_diffuse.w, in_5.light_ambient.w);
+    float _e28 = weft_sheen_albedo_scaling_view(sheen_color_3, in_5.light_diffuse.w);
+    metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * in_5.light_sheen.w);
+    metal::float4 _e38 = material.strand_color;
+    metal::float3 strand_color = metal::max(_e38.xyz, metal::float3(0.0)) * fresnel;
+    float _e51 = material.smoothness;
+    float _e52 = fur_strand_exponent(_e51);
+    float cone_p = metal::pow(metal::max(metal::cos(in_5.light_strand.w), 0.0), _e52);
+    return ((diffuse_albedo * ((in_5.light_diffuse.xyz * _e25) + (in_5.light_ambient.xyz * _e28))) + (sheen_color_3 * in_5.light_sheen.xyz)) + (strand_color * (in_5.light_strand.xyz * cone_p));
 }
 
 metal::float4 fur_shade(
-    FurVaryings in_5,
-    constant WeftFrame& weft_frame,
-    metal::texturecube<float, metal::access::sample> weft_environment,
-    metal::sampler weft_environment_sampler,
-    metal::sampler weft_lut_sampler,
-    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
+    FurVaryings in_6,
     constant WeftMaterial& material,
     metal::sampler material_sampler,
     metal::texture2d<float, metal::access::sample> base_map,
     metal::texture2d<float, metal::access::sample> spot_map
 ) {
     metal::float3 color = {};
-    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
-    metal::float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
+    metal::float2 _e5 = fur_transform_uv(in_6.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
     metal::float4 _e11 = base_map.sample(material_sampler, _e5);
     metal::float4 base_rgba = _e8 * _e11;
     metal::float4 _e15 = spot_map.sample(material_sampler, _e5);
     float spot = metal::saturate(_e15.x);
     metal::float4 _e22 = material.spot_color;
-    metal::float3 base = metal::mix(metal::saturate(base_rgba.xyz), metal::saturate(_e22.xyz), spot);
+    metal::float3 base_1 = metal::mix(metal::saturate(base_rgba.xyz), metal::saturate(_e22.xyz), spot);
     float alpha = metal::saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = metal::saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness_1 = metal::saturate(_e34);
-    float roughness_2 = 1.0 - smoothness_1;
-    metal::float3 _e43 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    metal::float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    metal::float3 _e48 = weft_main_light_direction(weft_frame);
-    metal::float3 _e50 = weft_safe_normalize(_e48 + _e43, _e45);
-    float _e52 = weft_clamp_cos(metal::dot(_e45, _e43));
-    float n_dot_l_2 = metal::saturate(metal::dot(_e45, _e48));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e45, _e50));
-    float l_dot_h = metal::saturate(metal::dot(_e48, _e50));
-    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
-    metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e66 = weft_sh_irradiance(_e45, weft_frame);
     {
-        metal::float4 _e70 = material.sheen_color;
-        metal::float3 sheen_color_2 = metal::saturate(f0_1 + metal::max(_e70.xyz, metal::float3(0.0)));
-        float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        float _e78 = weft_sheen_albedo(_e52, _e77, weft_lut_sampler, weft_sheen_lut);
-        float _e79 = weft_sheen_albedo_scaling_view(sheen_color_2, _e78);
-        metal::float3 _e80 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = metal::clamp(metal::dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = metal::clamp(metal::dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
-        float sin_v = metal::sqrt(metal::max(1.0 - (t_dot_v * t_dot_v), 0.0));
-        float cone = metal::max((sin_l * sin_v) - (t_dot_l * t_dot_v), 0.0);
-        float strand = metal::pow(cone, _e81) * sin_l;
-        scaling = _e79;
-        float norm = metal::sqrt((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI);
-        metal::float3 _e119 = weft_f_schlick(f0_1, l_dot_h);
-        metal::float4 _e122 = material.strand_color;
-        metal::float3 strand_color = metal::max(_e122.xyz, metal::float3(0.0)) * _e119;
-        float _e130 = material.strand_strength;
-        metal::float3 strand_lobe = strand_color * (((metal::max(_e130, 0.0) * norm) * strand) * n_dot_l_2);
-        metal::float3 _e137 = weft_diffuse_lambert(diffuse_albedo);
-        float _e138 = scaling;
-        metal::float3 base_direct = _e137 * (_e138 * n_dot_l_2);
-        metal::float3 direct = ((_e80 + base_direct) + strand_lobe) * _e65;
-        metal::float3 _e146 = weft_prefiltered_radiance(metal::reflect(-(_e43), _e45), _e77, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e146 * sheen_color_2) * _e78;
-        color = (direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen;
+        metal::float3 _e29 = fur_shade_fast(in_6, base_1, material);
+        color = _e29;
     }
-    float _e155 = material.fur_occlusion;
-    float occlusion = 1.0 - (metal::saturate(_e155) * (1.0 - in_5.offset));
-    metal::float3 _e163 = color;
-    metal::float3 radiance = metal::clamp(_e163 * occlusion, metal::float3(0.0), metal::float3(65504.0));
+    float _e32 = material.fur_occlusion;
+    float occlusion = 1.0 - (metal::saturate(_e32) * (1.0 - in_6.offset));
+    metal::float3 _e40 = color;
+    metal::float3 radiance = metal::clamp(_e40 * occlusion, metal::float3(0.0), metal::float3(65504.0));
     return metal::float4(radiance, alpha);
+}
+
+float fur_fade_n_dot_v(
+    FurVaryings in_7
+) {
+    {
+        return in_7.light_n_dot_v;
+    }
+}
+
+metal::float4 fur_shell(
+    FurVaryings in_8,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> base_map,
+    metal::texture2d<float, metal::access::sample> spot_map,
+    metal::texture2d<float, metal::access::sample> noise_map
+) {
+    float _e2 = fur_noise(in_8.uv0_, material, material_sampler, noise_map);
+    float o = metal::saturate(in_8.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = (_e8 != 0u) ? (o * o) : o;
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
+    float _e21 = metal::fwidth(_e2);
+    float width = metal::max(_e21, 0.001);
+    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
+    metal::float4 _e32 = fur_shade(in_8, material, material_sampler, base_map, spot_map);
+    float _e35 = material.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_8);
+    float fade = 1.0 - (metal::saturate(_e35) * (1.0 - _e37));
+    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
+    int _e53 = material.shell_count;
+    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e53, 1));
+    float keep = 1.0 - a_1;
+    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
+    return metal::float4(_e32.xyz, alpha_1);
 }
 
 struct vs_skinInput {
     metal::float3 position [[attribute(0)]];
-    metal::float3 normal [[attribute(1)]];
+    metal::float3 normal_1 [[attribute(1)]];
     metal::float2 uv0_1 [[attribute(3)]];
 };
 struct vs_skinOutput {
@@ -444,26 +530,35 @@ struct vs_skinOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_skinOutput vs_skin(
   vs_skinInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 , constant WeftMaterial& material [[buffer(1)]]
 , metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> height_map [[texture(5)]]
 , metal::texture2d<float, metal::access::sample> force_map [[texture(6)]]
 ) {
-    const FurInput in = { varyings.position, varyings.normal, varyings.uv0_1 };
-    FurVaryings _e2 = fur_vertex(in, 0.0, weft_frame, weft_object, material, material_sampler, height_map, force_map);
+    const FurInput in = { varyings.position, varyings.normal_1, varyings.uv0_1 };
+    FurVaryings _e2 = fur_vertex(in, 0.0, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp = _e2;
-    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset };
+    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset, _tmp.light_diffuse, _tmp.light_ambient, _tmp.light_sheen, _tmp.light_strand, _tmp.light_n_dot_v };
 }
 
 
 struct vs_shellInput {
     metal::float3 position [[attribute(0)]];
-    metal::float3 normal [[attribute(1)]];
+    metal::float3 normal_1 [[attribute(1)]];
     metal::float2 uv0_1 [[attribute(3)]];
 };
 struct vs_shellOutput {
@@ -473,32 +568,46 @@ struct vs_shellOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_shellOutput vs_shell(
   vs_shellInput varyings_1 [[stage_in]]
 , uint instance [[instance_id]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 , constant WeftMaterial& material [[buffer(1)]]
 , metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> height_map [[texture(5)]]
 , metal::texture2d<float, metal::access::sample> force_map [[texture(6)]]
 ) {
-    const FurInput in_1 = { varyings_1.position, varyings_1.normal, varyings_1.uv0_1 };
+    const FurInput in_1 = { varyings_1.position, varyings_1.normal_1, varyings_1.uv0_1 };
     int _e4 = material.shell_count;
     float count = static_cast<float>(metal::max(_e4, 1));
-    FurVaryings _e12 = fur_vertex(in_1, (static_cast<float>(instance) + 0.5) / count, weft_frame, weft_object, material, material_sampler, height_map, force_map);
+    FurVaryings _e12 = fur_vertex(in_1, (static_cast<float>(instance) + 0.5) / count, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp_1 = _e12;
-    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset };
+    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset, _tmp_1.light_diffuse, _tmp_1.light_ambient, _tmp_1.light_sheen, _tmp_1.light_strand, _tmp_1.light_n_dot_v };
 }
 
 
 struct fs_skinInput {
     metal::float3 world_position_1 [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
-    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float3 strand_1 [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_skinOutput {
     metal::float4 member_2 [[color(0)]];
@@ -506,18 +615,13 @@ struct fs_skinOutput {
 fragment fs_skinOutput fs_skin(
   fs_skinInput varyings_2 [[stage_in]]
 , metal::float4 clip_position [[position]]
-, constant WeftFrame& weft_frame [[buffer(0)]]
-, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
-, metal::sampler weft_environment_sampler [[sampler(0)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 , metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1 };
-    metal::float4 _e1 = fur_shade(in_2, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand_1, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
+    metal::float4 _e1 = fur_shade(in_2, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
 
@@ -525,9 +629,14 @@ fragment fs_skinOutput fs_skin(
 struct fs_shellInput {
     metal::float3 world_position_1 [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
-    metal::float3 strand [[user(loc2), center_perspective]];
+    metal::float3 strand_1 [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_shellOutput {
     metal::float4 member_3 [[color(0)]];
@@ -535,37 +644,13 @@ struct fs_shellOutput {
 fragment fs_shellOutput fs_shell(
   fs_shellInput varyings_3 [[stage_in]]
 , metal::float4 clip_position_1 [[position]]
-, constant WeftFrame& weft_frame [[buffer(0)]]
-, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
-, metal::sampler weft_environment_sampler [[sampler(0)]]
-, metal::sampler weft_lut_sampler [[sampler(1)]]
-, metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 , metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1 };
-    float _e2 = fur_noise(in_3.uv0_, material, material_sampler, noise_map);
-    float o = metal::saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = (_e8 != 0u) ? (o * o) : o;
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
-    float _e21 = metal::fwidth(_e2);
-    float width = metal::max(_e21, 0.001);
-    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
-    metal::float4 _e32 = fur_shade(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
-    metal::float3 _e38 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = 1.0 - (metal::saturate(_e43) * (1.0 - metal::saturate(metal::dot(_e40, _e38))));
-    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
-    int _e62 = material.shell_count;
-    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e62, 1));
-    float keep = 1.0 - a_1;
-    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
-    return fs_shellOutput { metal::float4(_e32.xyz, alpha_1) };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand_1, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    metal::float4 _e1 = fur_shell(in_3, material, material_sampler, base_map, spot_map, noise_map);
+    return fs_shellOutput { _e1 };
 }

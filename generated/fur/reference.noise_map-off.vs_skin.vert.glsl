@@ -49,6 +49,11 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -80,6 +85,11 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec3 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 layout(location = 4) smooth out float _vs2fs_location4;
+layout(location = 5) smooth out vec4 _vs2fs_location5;
+layout(location = 6) smooth out vec4 _vs2fs_location6;
+layout(location = 7) smooth out vec4 _vs2fs_location7;
+layout(location = 8) smooth out vec4 _vs2fs_location8;
+layout(location = 9) smooth out float _vs2fs_location9;
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -121,12 +131,12 @@ float weft_d_charlie(float n_dot_h, float sheen_roughness_1) {
 }
 
 float weft_sheen_l(float x_1, float r) {
-    float t = ((1.0 - r) * (1.0 - r));
-    float a = mix(21.5473, 25.3245, t);
-    float b = mix(3.82987, 3.32435, t);
-    float c_1 = mix(0.19823, 0.16801, t);
-    float d = mix(-1.9776, -1.27393, t);
-    float e_1 = mix(-4.32054, -4.85967, t);
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a = mix(21.5473, 25.3245, t_1);
+    float b = mix(3.82987, 3.32435, t_1);
+    float c_1 = mix(0.19823, 0.16801, t_1);
+    float d = mix(-1.9776, -1.27393, t_1);
+    float e_1 = mix(-4.32054, -4.85967, t_1);
     return (((a / (1.0 + (b * pow(max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1);
 }
 
@@ -220,8 +230,16 @@ vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+float fur_strand_exponent(float smoothness) {
+    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+}
+
+float fur_strand_norm(float p) {
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
 FurVaryings fur_vertex(FurInput in_4, float offset) {
-    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0);
+    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), 0.0);
     mat4x4 model = _group_2_binding_0_vs.model;
     mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
     mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
@@ -244,10 +262,10 @@ FurVaryings fur_vertex(FurInput in_4, float offset) {
     float _e68 = _group_1_binding_0_vs.fur_length;
     float len = (max(_e68, 0.0) * max((1.0 + (hs * (clamp(height, 0.0, 1.0) - 1.0))), 0.0));
     vec3 dir_1 = mix(_e24, target_dir, offset);
-    vec3 p = (world + (dir_1 * (len * offset)));
+    vec3 p_1 = (world + (dir_1 * (len * offset)));
     mat4x4 _e88 = _group_0_binding_0_vs.view_proj;
-    out_.clip_position = (_e88 * vec4(p, 1.0));
-    out_.world_position = p;
+    out_.clip_position = (_e88 * vec4(p_1, 1.0));
+    out_.world_position = p_1;
     out_.world_normal = _e24;
     out_.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
     out_.uv0_ = in_4.uv0_;
@@ -292,8 +310,18 @@ float fur_noise(vec2 uv0_) {
     return _e19;
 }
 
-float fur_strand_exponent(float smoothness) {
-    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_2) {
+    float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
+    float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
+    return vec2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
+}
+
+float fur_fade_n_dot_v(FurVaryings in_6) {
+    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return clamp(dot(_e8, _e6), 0.0, 1.0);
 }
 
 void main() {
@@ -305,6 +333,11 @@ void main() {
     _vs2fs_location2 = _e2.strand;
     _vs2fs_location3 = _e2.uv0_;
     _vs2fs_location4 = _e2.offset;
+    _vs2fs_location5 = _e2.light_diffuse;
+    _vs2fs_location6 = _e2.light_ambient;
+    _vs2fs_location7 = _e2.light_sheen;
+    _vs2fs_location8 = _e2.light_strand;
+    _vs2fs_location9 = _e2.light_n_dot_v;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

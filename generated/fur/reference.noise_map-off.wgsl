@@ -52,6 +52,11 @@ struct FurVaryings {
     @location(2) strand: vec3<f32>,
     @location(3) uv0_: vec2<f32>,
     @location(4) offset: f32,
+    @location(5) light_diffuse: vec4<f32>,
+    @location(6) light_ambient: vec4<f32>,
+    @location(7) light_sheen: vec4<f32>,
+    @location(8) light_strand: vec4<f32>,
+    @location(9) light_n_dot_v: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -131,12 +136,12 @@ fn weft_d_charlie(n_dot_h: f32, sheen_roughness_1: f32) -> f32 {
 }
 
 fn weft_sheen_l(x_1: f32, r: f32) -> f32 {
-    let t = ((1f - r) * (1f - r));
-    let a = mix(21.5473f, 25.3245f, t);
-    let b = mix(3.82987f, 3.32435f, t);
-    let c_1 = mix(0.19823f, 0.16801f, t);
-    let d = mix(-1.9776f, -1.27393f, t);
-    let e_1 = mix(-4.32054f, -4.85967f, t);
+    let t_1 = ((1f - r) * (1f - r));
+    let a = mix(21.5473f, 25.3245f, t_1);
+    let b = mix(3.82987f, 3.32435f, t_1);
+    let c_1 = mix(0.19823f, 0.16801f, t_1);
+    let d = mix(-1.9776f, -1.27393f, t_1);
+    let e_1 = mix(-4.32054f, -4.85967f, t_1);
     return (((a / (1f + (b * pow(max(x_1, 0f), c_1)))) + (d * x_1)) + e_1);
 }
 
@@ -244,6 +249,14 @@ fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn fur_strand_exponent(smoothness: f32) -> f32 {
+    return exp2((1f + (9f * saturate(smoothness))));
+}
+
+fn fur_strand_norm(p: f32) -> f32 {
+    return sqrt(((((2f * p) + 1f) * 0.25f) * WEFT_INV_PI));
+}
+
 fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {
     var out: FurVaryings;
 
@@ -269,10 +282,10 @@ fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {
     let _e68 = material.fur_length;
     let len = (max(_e68, 0f) * max((1f + (hs * (saturate(height) - 1f))), 0f));
     let dir_1 = mix(_e24, target_dir, offset);
-    let p = (world + (dir_1 * (len * offset)));
+    let p_1 = (world + (dir_1 * (len * offset)));
     let _e88 = weft_frame.view_proj;
-    out.clip_position = (_e88 * vec4<f32>(p, 1f));
-    out.world_position = p;
+    out.clip_position = (_e88 * vec4<f32>(p_1, 1f));
+    out.world_position = p_1;
     out.world_normal = _e24;
     out.strand = (_e24 + ((2f * offset) * (target_dir - _e24)));
     out.uv0_ = in_4.uv0_;
@@ -317,13 +330,16 @@ fn fur_noise(uv0_: vec2<f32>) -> f32 {
     return _e19;
 }
 
-fn fur_strand_exponent(smoothness: f32) -> f32 {
-    return exp2((1f + (9f * saturate(smoothness))));
+fn fur_kajiya_kay_cone(t: vec3<f32>, l: vec3<f32>, v_2: vec3<f32>) -> vec2<f32> {
+    let t_dot_l = clamp(dot(t, l), -1f, 1f);
+    let t_dot_v = clamp(dot(t, v_2), -1f, 1f);
+    let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
+    let sin_v = sqrt(max((1f - (t_dot_v * t_dot_v)), 0f));
+    return vec2<f32>(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0f), sin_l);
 }
 
 fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
     var color: vec3<f32>;
-    var scaling: f32;
 
     let _e4 = material.base_map_st;
     let _e5 = fur_transform_uv(in_5.uv0_, _e4);
@@ -335,63 +351,85 @@ fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
     let _e22 = material.spot_color;
     let base = mix(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     let alpha = saturate(base_rgba.w);
-    let _e30 = material.metallic;
-    let metallic = saturate(_e30);
-    let _e34 = material.smoothness;
-    let smoothness_1 = saturate(_e34);
-    let roughness_2 = (1f - smoothness_1);
-    let _e43 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    let _e47 = weft_safe_normalize(in_5.strand, _e45);
-    let _e48 = weft_main_light_direction();
-    let _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    let _e52 = weft_clamp_cos(dot(_e45, _e43));
-    let n_dot_l_2 = saturate(dot(_e45, _e48));
-    let n_dot_h_2 = saturate(dot(_e45, _e50));
-    let l_dot_h = saturate(dot(_e48, _e50));
-    let f0_1 = mix(vec3(0.04f), base, metallic);
-    let diffuse_albedo = (base * (1f - metallic));
-    let _e65 = weft_main_light_radiance();
-    let _e66 = weft_sh_irradiance(_e45);
     {
-        let _e70 = material.sheen_color;
-        let sheen_color_3 = saturate((f0_1 + max(_e70.xyz, vec3(0f))));
-        let _e77 = weft_sheen_clamp_roughness(roughness_2);
-        let _e78 = weft_sheen_albedo(_e52, _e77);
-        let _e79 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-        let _e80 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        let _e81 = fur_strand_exponent(smoothness_1);
-        let t_dot_l = clamp(dot(_e47, _e48), -1f, 1f);
-        let t_dot_v = clamp(dot(_e47, _e43), -1f, 1f);
-        let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
-        let sin_v = sqrt(max((1f - (t_dot_v * t_dot_v)), 0f));
-        let cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0f);
-        let strand = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
+        let _e31 = material.metallic;
+        let metallic = saturate(_e31);
+        let _e35 = material.smoothness;
+        let smoothness_1 = saturate(_e35);
+        let roughness_2 = (1f - smoothness_1);
+        let _e44 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
+        let _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        let _e48 = weft_safe_normalize(in_5.strand, _e46);
+        let _e49 = weft_main_light_direction();
+        let _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        let _e53 = weft_clamp_cos(dot(_e46, _e44));
+        let n_dot_l_2 = saturate(dot(_e46, _e49));
+        let n_dot_h_2 = saturate(dot(_e46, _e51));
+        let l_dot_h = saturate(dot(_e49, _e51));
+        let f0_1 = mix(vec3(0.04f), base, metallic);
+        let diffuse_albedo = (base * (1f - metallic));
+        let _e66 = weft_main_light_radiance();
+        let _e67 = weft_sh_irradiance(_e46);
         {
-            let _e110 = weft_sheen_albedo(n_dot_l_2, _e77);
-            let _e111 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e110);
-            scaling = _e111;
+            let _e70 = material.sheen_color;
+            let sheen_color_3 = saturate((f0_1 + max(_e70.xyz, vec3(0f))));
+            let _e77 = weft_sheen_clamp_roughness(roughness_2);
+            let _e78 = weft_sheen_albedo(_e53, _e77);
+            let _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
+            let _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
+            let _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
+            let _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
+            let _e83 = fur_strand_exponent(smoothness_1);
+            let _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
+            let strand = (pow(_e84.x, _e83) * _e84.y);
+            let _e89 = weft_f_schlick(f0_1, l_dot_h);
+            let _e92 = material.strand_color;
+            let strand_color = (max(_e92.xyz, vec3(0f)) * _e89);
+            let _e100 = material.strand_strength;
+            let _e103 = fur_strand_norm(_e83);
+            let strand_lobe = (strand_color * (((max(_e100, 0f) * _e103) * strand) * n_dot_l_2));
+            let _e108 = weft_diffuse_lambert(diffuse_albedo);
+            let base_direct = (_e108 * (_e81 * n_dot_l_2));
+            let direct = (((_e82 + base_direct) + strand_lobe) * _e66);
+            let _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
+            let env_sheen = ((_e116 * sheen_color_3) * _e78);
+            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
         }
-        let norm = sqrt(((((2f * _e81) + 1f) * 0.25f) * WEFT_INV_PI));
-        let _e121 = weft_f_schlick(f0_1, l_dot_h);
-        let _e124 = material.strand_color;
-        let strand_color = (max(_e124.xyz, vec3(0f)) * _e121);
-        let _e132 = material.strand_strength;
-        let strand_lobe = (strand_color * (((max(_e132, 0f) * norm) * strand) * n_dot_l_2));
-        let _e139 = weft_diffuse_lambert(diffuse_albedo);
-        let _e140 = scaling;
-        let base_direct = (_e139 * (_e140 * n_dot_l_2));
-        let direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        let _e148 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        let env_sheen = ((_e148 * sheen_color_3) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
     }
-    let _e157 = material.fur_occlusion;
-    let occlusion = (1f - (saturate(_e157) * (1f - in_5.offset)));
-    let _e165 = color;
-    let radiance = clamp((_e165 * occlusion), vec3(0f), vec3(65504f));
+    let _e125 = material.fur_occlusion;
+    let occlusion = (1f - (saturate(_e125) * (1f - in_5.offset)));
+    let _e133 = color;
+    let radiance = clamp((_e133 * occlusion), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
+}
+
+fn fur_fade_n_dot_v(in_6: FurVaryings) -> f32 {
+    let _e6 = weft_view_direction(in_6.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return saturate(dot(_e8, _e6));
+}
+
+fn fur_shell(in_7: FurVaryings) -> vec4<f32> {
+    let _e2 = fur_noise(in_7.uv0_);
+    let o = saturate(in_7.offset);
+    let _e8 = material.tapered_tips;
+    let shape = select(o, (o * o), (_e8 != 0u));
+    let _e14 = material.cutoff_start;
+    let _e18 = material.cutoff_end;
+    let threshold = mix(saturate(_e14), saturate(_e18), shape);
+    let _e21 = fwidth(_e2);
+    let width = max(_e21, 0.001f);
+    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
+    let _e32 = fur_shade(in_7);
+    let _e35 = material.edge_fade;
+    let _e37 = fur_fade_n_dot_v(in_7);
+    let fade = (1f - (saturate(_e35) * (1f - _e37)));
+    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
+    let _e53 = material.shell_count;
+    let slab = (FUR_SEED_SHELLS / f32(max(_e53, 1i)));
+    let keep = (1f - a_1);
+    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
+    return vec4<f32>(_e32.xyz, alpha_1);
 }
 
 @vertex 
@@ -416,25 +454,6 @@ fn fs_skin(in_2: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment 
 fn fs_shell(in_3: FurVaryings) -> @location(0) vec4<f32> {
-    let _e2 = fur_noise(in_3.uv0_);
-    let o = saturate(in_3.offset);
-    let _e8 = material.tapered_tips;
-    let shape = select(o, (o * o), (_e8 != 0u));
-    let _e14 = material.cutoff_start;
-    let _e18 = material.cutoff_end;
-    let threshold = mix(saturate(_e14), saturate(_e18), shape);
-    let _e21 = fwidth(_e2);
-    let width = max(_e21, 0.001f);
-    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
-    let _e32 = fur_shade(in_3);
-    let _e38 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    let _e43 = material.edge_fade;
-    let fade = (1f - (saturate(_e43) * (1f - saturate(dot(_e40, _e38)))));
-    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
-    let _e62 = material.shell_count;
-    let slab = (FUR_SEED_SHELLS / f32(max(_e62, 1i)));
-    let keep = (1f - a_1);
-    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
-    return vec4<f32>(_e32.xyz, alpha_1);
+    let _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -49,6 +49,11 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -81,6 +86,11 @@ layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec3 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 4) smooth in float _vs2fs_location4;
+layout(location = 5) smooth in vec4 _vs2fs_location5;
+layout(location = 6) smooth in vec4 _vs2fs_location6;
+layout(location = 7) smooth in vec4 _vs2fs_location7;
+layout(location = 8) smooth in vec4 _vs2fs_location8;
+layout(location = 9) smooth in float _vs2fs_location9;
 layout(location = 0) out vec4 _fs2p_location0;
 
 float weft_pow5_(float x) {
@@ -123,12 +133,12 @@ float weft_d_charlie(float n_dot_h, float sheen_roughness_1) {
 }
 
 float weft_sheen_l(float x_1, float r) {
-    float t = ((1.0 - r) * (1.0 - r));
-    float a = mix(21.5473, 25.3245, t);
-    float b = mix(3.82987, 3.32435, t);
-    float c_1 = mix(0.19823, 0.16801, t);
-    float d = mix(-1.9776, -1.27393, t);
-    float e_1 = mix(-4.32054, -4.85967, t);
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a = mix(21.5473, 25.3245, t_1);
+    float b = mix(3.82987, 3.32435, t_1);
+    float c_1 = mix(0.19823, 0.16801, t_1);
+    float d = mix(-1.9776, -1.27393, t_1);
+    float e_1 = mix(-4.32054, -4.85967, t_1);
     return (((a / (1.0 + (b * pow(max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1);
 }
 
@@ -235,6 +245,14 @@ vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
+float fur_strand_exponent(float smoothness) {
+    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+}
+
+float fur_strand_norm(float p) {
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
 float fur_noise(vec2 uv0_) {
     vec4 _e3 = _group_1_binding_0_fs.noise_map_st;
     vec2 _e4 = fur_transform_uv(uv0_, _e3);
@@ -244,13 +262,16 @@ float fur_noise(vec2 uv0_) {
     }
 }
 
-float fur_strand_exponent(float smoothness) {
-    return exp2((1.0 + (9.0 * clamp(smoothness, 0.0, 1.0))));
+vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_2) {
+    float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
+    float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
+    return vec2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
 }
 
 vec4 fur_shade(FurVaryings in_5) {
     vec3 color = vec3(0.0);
-    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -261,69 +282,67 @@ vec4 fur_shade(FurVaryings in_5) {
     vec4 _e22 = _group_1_binding_0_fs.spot_color;
     vec3 base = mix(clamp(base_rgba.xyz, vec3(0.0), vec3(1.0)), clamp(_e22.xyz, vec3(0.0), vec3(1.0)), spot);
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
-    float _e30 = _group_1_binding_0_fs.metallic;
-    float metallic = clamp(_e30, 0.0, 1.0);
-    float _e34 = _group_1_binding_0_fs.smoothness;
-    float smoothness_1 = clamp(_e34, 0.0, 1.0);
-    float roughness_2 = (1.0 - smoothness_1);
-    vec3 _e43 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    vec3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    vec3 _e48 = weft_main_light_direction();
-    vec3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = clamp(dot(_e45, _e48), 0.0, 1.0);
-    float n_dot_h_2 = clamp(dot(_e45, _e50), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e48, _e50), 0.0, 1.0);
-    vec3 f0_1 = mix(vec3(0.04), base, metallic);
-    vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e65 = weft_main_light_radiance();
-    vec3 _e66 = weft_sh_irradiance(_e45);
     {
-        vec4 _e70 = _group_1_binding_0_fs.sheen_color;
-        vec3 sheen_color_3 = clamp((f0_1 + max(_e70.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-        float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        float _e78 = weft_sheen_albedo(_e52, _e77);
-        float _e79 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-        vec3 _e80 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = clamp(dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = clamp(dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-        float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
-        float cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0);
-        float strand = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
+        float _e31 = _group_1_binding_0_fs.metallic;
+        float metallic = clamp(_e31, 0.0, 1.0);
+        float _e35 = _group_1_binding_0_fs.smoothness;
+        float smoothness_1 = clamp(_e35, 0.0, 1.0);
+        float roughness_2 = (1.0 - smoothness_1);
+        vec3 _e44 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
+        vec3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        vec3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        vec3 _e49 = weft_main_light_direction();
+        vec3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        float _e53 = weft_clamp_cos(dot(_e46, _e44));
+        float n_dot_l_2 = clamp(dot(_e46, _e49), 0.0, 1.0);
+        float n_dot_h_2 = clamp(dot(_e46, _e51), 0.0, 1.0);
+        float l_dot_h = clamp(dot(_e49, _e51), 0.0, 1.0);
+        vec3 f0_1 = mix(vec3(0.04), base, metallic);
+        vec3 diffuse_albedo = (base * (1.0 - metallic));
+        vec3 _e66 = weft_main_light_radiance();
+        vec3 _e67 = weft_sh_irradiance(_e46);
         {
-            float _e110 = weft_sheen_albedo(n_dot_l_2, _e77);
-            float _e111 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e110);
-            scaling = _e111;
+            vec4 _e70 = _group_1_binding_0_fs.sheen_color;
+            vec3 sheen_color_3 = clamp((f0_1 + max(_e70.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e77 = weft_sheen_clamp_roughness(roughness_2);
+            float _e78 = weft_sheen_albedo(_e53, _e77);
+            float _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
+            float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
+            float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
+            vec3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
+            float _e83 = fur_strand_exponent(smoothness_1);
+            vec2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
+            float strand = (pow(_e84.x, _e83) * _e84.y);
+            vec3 _e89 = weft_f_schlick(f0_1, l_dot_h);
+            vec4 _e92 = _group_1_binding_0_fs.strand_color;
+            vec3 strand_color = (max(_e92.xyz, vec3(0.0)) * _e89);
+            float _e100 = _group_1_binding_0_fs.strand_strength;
+            float _e103 = fur_strand_norm(_e83);
+            vec3 strand_lobe = (strand_color * (((max(_e100, 0.0) * _e103) * strand) * n_dot_l_2));
+            vec3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 base_direct = (_e108 * (_e81 * n_dot_l_2));
+            vec3 direct = (((_e82 + base_direct) + strand_lobe) * _e66);
+            vec3 _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
+            vec3 env_sheen = ((_e116 * sheen_color_3) * _e78);
+            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
         }
-        float norm = sqrt(((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI));
-        vec3 _e121 = weft_f_schlick(f0_1, l_dot_h);
-        vec4 _e124 = _group_1_binding_0_fs.strand_color;
-        vec3 strand_color = (max(_e124.xyz, vec3(0.0)) * _e121);
-        float _e132 = _group_1_binding_0_fs.strand_strength;
-        vec3 strand_lobe = (strand_color * (((max(_e132, 0.0) * norm) * strand) * n_dot_l_2));
-        vec3 _e139 = weft_diffuse_lambert(diffuse_albedo);
-        float _e140 = scaling;
-        vec3 base_direct = (_e139 * (_e140 * n_dot_l_2));
-        vec3 direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        vec3 _e148 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        vec3 env_sheen = ((_e148 * sheen_color_3) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
     }
-    float _e157 = _group_1_binding_0_fs.fur_occlusion;
-    float occlusion = (1.0 - (clamp(_e157, 0.0, 1.0) * (1.0 - in_5.offset)));
-    vec3 _e165 = color;
-    vec3 radiance = clamp((_e165 * occlusion), vec3(0.0), vec3(65504.0));
+    float _e125 = _group_1_binding_0_fs.fur_occlusion;
+    float occlusion = (1.0 - (clamp(_e125, 0.0, 1.0) * (1.0 - in_5.offset)));
+    vec3 _e133 = color;
+    vec3 radiance = clamp((_e133 * occlusion), vec3(0.0), vec3(65504.0));
     return vec4(radiance, alpha);
 }
 
-void main() {
-    FurVaryings in_3 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4);
-    float _e2 = fur_noise(in_3.uv0_);
-    float o = clamp(in_3.offset, 0.0, 1.0);
+float fur_fade_n_dot_v(FurVaryings in_6) {
+    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return clamp(dot(_e8, _e6), 0.0, 1.0);
+}
+
+vec4 fur_shell(FurVaryings in_7) {
+    float _e2 = fur_noise(in_7.uv0_);
+    float o = clamp(in_7.offset, 0.0, 1.0);
     uint _e8 = _group_1_binding_0_fs.tapered_tips;
     float shape = ((_e8 != 0u) ? (o * o) : o);
     float _e14 = _group_1_binding_0_fs.cutoff_start;
@@ -332,17 +351,22 @@ void main() {
     float _e21 = fwidth(_e2);
     float width = max(_e21, 0.001);
     float coverage = (clamp((((_e2 - threshold) / width) + 0.5), 0.0, 1.0) * step(1e-6, _e2));
-    vec4 _e32 = fur_shade(in_3);
-    vec3 _e38 = weft_view_direction(in_3.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = _group_1_binding_0_fs.edge_fade;
-    float fade = (1.0 - (clamp(_e43, 0.0, 1.0) * (1.0 - clamp(dot(_e40, _e38), 0.0, 1.0))));
+    vec4 _e32 = fur_shade(in_7);
+    float _e35 = _group_1_binding_0_fs.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_7);
+    float fade = (1.0 - (clamp(_e35, 0.0, 1.0) * (1.0 - _e37)));
     float a_1 = clamp((((coverage * (1.0 - o)) * fade) * _e32.w), 0.0, 1.0);
-    int _e62 = _group_1_binding_0_fs.shell_count;
-    float slab = (FUR_SEED_SHELLS / float(max(_e62, 1)));
+    int _e53 = _group_1_binding_0_fs.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, 1)));
     float keep = (1.0 - a_1);
     float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    _fs2p_location0 = vec4(_e32.xyz, alpha_1);
+    return vec4(_e32.xyz, alpha_1);
+}
+
+void main() {
+    FurVaryings in_3 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
+    vec4 _e1 = fur_shell(in_3);
+    _fs2p_location0 = _e1;
     return;
 }
 

@@ -65,6 +65,11 @@ struct FurVaryings {
     float3 strand : LOC2;
     float2 uv0_ : LOC3;
     float offset : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -103,6 +108,11 @@ struct VertexOutput_vs_skin {
     float3 strand : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
     float4 clip_position : SV_Position;
 };
 
@@ -112,6 +122,11 @@ struct VertexOutput_vs_shell {
     float3 strand_1 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
+    float4 light_diffuse_1 : LOC5;
+    float4 light_ambient_1 : LOC6;
+    float4 light_sheen_1 : LOC7;
+    float4 light_strand_1 : LOC8;
+    float light_n_dot_v_1 : LOC9;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -121,6 +136,11 @@ struct FragmentInput_fs_skin {
     float3 strand_2 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
+    float4 light_diffuse_2 : LOC5;
+    float4 light_ambient_2 : LOC6;
+    float4 light_sheen_2 : LOC7;
+    float4 light_strand_2 : LOC8;
+    float light_n_dot_v_2 : LOC9;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -130,6 +150,11 @@ struct FragmentInput_fs_shell {
     float3 strand_3 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
+    float4 light_diffuse_3 : LOC5;
+    float4 light_ambient_3 : LOC6;
+    float4 light_sheen_3 : LOC7;
+    float4 light_strand_3 : LOC8;
+    float light_n_dot_v_3 : LOC9;
     float4 clip_position_3 : SV_Position;
 };
 
@@ -182,12 +207,12 @@ float weft_d_charlie(float n_dot_h, float sheen_roughness_1)
 
 float weft_sheen_l(float x_1, float r)
 {
-    float t = ((1.0 - r) * (1.0 - r));
-    float a = lerp(21.5473, 25.3245, t);
-    float b = lerp(3.82987, 3.32435, t);
-    float c_1 = lerp(0.19823, 0.16801, t);
-    float d = lerp(-1.9776, -1.27393, t);
-    float e_1 = lerp(-4.32054, -4.85967, t);
+    float t_1 = ((1.0 - r) * (1.0 - r));
+    float a = lerp(21.5473, 25.3245, t_1);
+    float b = lerp(3.82987, 3.32435, t_1);
+    float c_1 = lerp(0.19823, 0.16801, t_1);
+    float d = lerp(-1.9776, -1.27393, t_1);
+    float e_1 = lerp(-4.32054, -4.85967, t_1);
     return (((a / (1.0 + (b * pow(max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1);
 }
 
@@ -308,6 +333,16 @@ float2 fur_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
+float fur_strand_exponent(float smoothness)
+{
+    return exp2((1.0 + (9.0 * saturate(smoothness))));
+}
+
+float fur_strand_norm(float p)
+{
+    return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
+}
+
 FurVaryings fur_vertex(FurInput in_4, float offset)
 {
     FurVaryings out_ = (FurVaryings)0;
@@ -334,10 +369,10 @@ FurVaryings fur_vertex(FurInput in_4, float offset)
     float _e68 = material.fur_length;
     float len = (max(_e68, 0.0) * max((1.0 + (hs * (saturate(height) - 1.0))), 0.0));
     float3 dir_1 = lerp(_e24, target_dir, offset);
-    float3 p = (world + (dir_1 * (len * offset)));
+    float3 p_1 = (world + (dir_1 * (len * offset)));
     float4x4 _e88 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(p, 1.0), _e88);
-    out_.world_position = p;
+    out_.clip_position = mul(float4(p_1, 1.0), _e88);
+    out_.world_position = p_1;
     out_.world_normal = _e24;
     out_.strand = (_e24 + ((2.0 * offset) * (target_dir - _e24)));
     out_.uv0_ = in_4.uv0_;
@@ -357,15 +392,18 @@ float fur_noise(float2 uv0_)
     }
 }
 
-float fur_strand_exponent(float smoothness)
+float2 fur_kajiya_kay_cone(float3 t, float3 l, float3 v_2)
 {
-    return exp2((1.0 + (9.0 * saturate(smoothness))));
+    float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
+    float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
+    return float2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
 }
 
 float4 fur_shade(FurVaryings in_5)
 {
     float3 color = (float3)0;
-    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
@@ -377,70 +415,94 @@ float4 fur_shade(FurVaryings in_5)
     float4 _e22 = material.spot_color;
     float3 base = lerp(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     float alpha = saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness_1 = saturate(_e34);
-    float roughness_2 = (1.0 - smoothness_1);
-    const float3 _e43 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    const float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    const float3 _e48 = weft_main_light_direction();
-    const float3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    const float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = saturate(dot(_e45, _e48));
-    float n_dot_h_2 = saturate(dot(_e45, _e50));
-    float l_dot_h = saturate(dot(_e48, _e50));
-    float3 f0_1 = lerp((0.04).xxx, base, metallic);
-    float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e65 = weft_main_light_radiance();
-    const float3 _e66 = weft_sh_irradiance(_e45);
     {
-        float4 _e70 = material.sheen_color;
-        float3 sheen_color_3 = saturate((f0_1 + max(_e70.xyz, (0.0).xxx)));
-        const float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        const float _e78 = weft_sheen_albedo(_e52, _e77);
-        const float _e79 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-        const float3 _e80 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        const float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = clamp(dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = clamp(dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-        float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
-        float cone = max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0);
-        float strand_4 = (pow(cone, _e81) * sin_l);
-        scaling = _e79;
+        float _e31 = material.metallic;
+        float metallic = saturate(_e31);
+        float _e35 = material.smoothness;
+        float smoothness_1 = saturate(_e35);
+        float roughness_2 = (1.0 - smoothness_1);
+        const float3 _e44 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
+        const float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        const float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        const float3 _e49 = weft_main_light_direction();
+        const float3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        const float _e53 = weft_clamp_cos(dot(_e46, _e44));
+        float n_dot_l_2 = saturate(dot(_e46, _e49));
+        float n_dot_h_2 = saturate(dot(_e46, _e51));
+        float l_dot_h = saturate(dot(_e49, _e51));
+        float3 f0_1 = lerp((0.04).xxx, base, metallic);
+        float3 diffuse_albedo = (base * (1.0 - metallic));
+        const float3 _e66 = weft_main_light_radiance();
+        const float3 _e67 = weft_sh_irradiance(_e46);
         {
-            const float _e110 = weft_sheen_albedo(n_dot_l_2, _e77);
-            const float _e111 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e110);
-            scaling = _e111;
+            float4 _e70 = material.sheen_color;
+            float3 sheen_color_3 = saturate((f0_1 + max(_e70.xyz, (0.0).xxx)));
+            const float _e77 = weft_sheen_clamp_roughness(roughness_2);
+            const float _e78 = weft_sheen_albedo(_e53, _e77);
+            const float _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
+            const float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
+            const float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
+            const float3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
+            const float _e83 = fur_strand_exponent(smoothness_1);
+            const float2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
+            float strand_4 = (pow(_e84.x, _e83) * _e84.y);
+            const float3 _e89 = weft_f_schlick(f0_1, l_dot_h);
+            float4 _e92 = material.strand_color;
+            float3 strand_color = (max(_e92.xyz, (0.0).xxx) * _e89);
+            float _e100 = material.strand_strength;
+            const float _e103 = fur_strand_norm(_e83);
+            float3 strand_lobe = (strand_color * (((max(_e100, 0.0) * _e103) * strand_4) * n_dot_l_2));
+            const float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+            float3 base_direct = (_e108 * (_e81 * n_dot_l_2));
+            float3 direct = (((_e82 + base_direct) + strand_lobe) * _e66);
+            const float3 _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
+            float3 env_sheen = ((_e116 * sheen_color_3) * _e78);
+            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
         }
-        float norm = sqrt(((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI));
-        const float3 _e121 = weft_f_schlick(f0_1, l_dot_h);
-        float4 _e124 = material.strand_color;
-        float3 strand_color = (max(_e124.xyz, (0.0).xxx) * _e121);
-        float _e132 = material.strand_strength;
-        float3 strand_lobe = (strand_color * (((max(_e132, 0.0) * norm) * strand_4) * n_dot_l_2));
-        const float3 _e139 = weft_diffuse_lambert(diffuse_albedo);
-        float _e140 = scaling;
-        float3 base_direct = (_e139 * (_e140 * n_dot_l_2));
-        float3 direct = (((_e80 + base_direct) + strand_lobe) * _e65);
-        const float3 _e148 = weft_prefiltered_radiance(reflect(-(_e43), _e45), _e77);
-        float3 env_sheen = ((_e148 * sheen_color_3) * _e78);
-        color = ((direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen);
     }
-    float _e157 = material.fur_occlusion;
-    float occlusion = (1.0 - (saturate(_e157) * (1.0 - in_5.offset)));
-    float3 _e165 = color;
-    float3 radiance = clamp((_e165 * occlusion), (0.0).xxx, (65504.0).xxx);
+    float _e125 = material.fur_occlusion;
+    float occlusion = (1.0 - (saturate(_e125) * (1.0 - in_5.offset)));
+    float3 _e133 = color;
+    float3 radiance = clamp((_e133 * occlusion), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
+}
+
+float fur_fade_n_dot_v(FurVaryings in_6)
+{
+    const float3 _e6 = weft_view_direction(in_6.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return saturate(dot(_e8, _e6));
+}
+
+float4 fur_shell(FurVaryings in_7)
+{
+    const float _e2 = fur_noise(in_7.uv0_);
+    float o = saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = ((_e8 != 0u) ? (o * o) : o);
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
+    float _e21 = fwidth(_e2);
+    float width = max(_e21, 0.001);
+    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
+    const float4 _e32 = fur_shade(in_7);
+    float _e35 = material.edge_fade;
+    const float _e37 = fur_fade_n_dot_v(in_7);
+    float fade = (1.0 - (saturate(_e35) * (1.0 - _e37)));
+    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
+    int _e53 = material.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, int(1))));
+    float keep = (1.0 - a_1);
+    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
+    return float4(_e32.xyz, alpha_1);
 }
 
 VertexOutput_vs_skin vs_skin(FurInput in_)
 {
     const FurVaryings _e2 = fur_vertex(in_, 0.0);
     const FurVaryings furvaryings_1 = _e2;
-    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.clip_position };
+    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.light_diffuse, furvaryings_1.light_ambient, furvaryings_1.light_sheen, furvaryings_1.light_strand, furvaryings_1.light_n_dot_v, furvaryings_1.clip_position };
     return furvaryings_1_;
 }
 
@@ -450,39 +512,20 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
     float count = float(max(_e4, int(1)));
     const FurVaryings _e12 = fur_vertex(in_1, ((float(instance) + 0.5) / count));
     const FurVaryings furvaryings_2 = _e12;
-    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.clip_position };
+    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.light_diffuse, furvaryings_2.light_ambient, furvaryings_2.light_sheen, furvaryings_2.light_strand, furvaryings_2.light_n_dot_v, furvaryings_2.clip_position };
     return furvaryings_2_;
 }
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4 };
-    const float _e2 = fur_noise(in_3.uv0_);
-    float o = saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = ((_e8 != 0u) ? (o * o) : o);
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
-    float _e21 = fwidth(_e2);
-    float width = max(_e21, 0.001);
-    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
-    const float4 _e32 = fur_shade(in_3);
-    const float3 _e38 = weft_view_direction(in_3.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = (1.0 - (saturate(_e43) * (1.0 - saturate(dot(_e40, _e38)))));
-    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
-    int _e62 = material.shell_count;
-    float slab = (FUR_SEED_SHELLS / float(max(_e62, int(1))));
-    float keep = (1.0 - a_1);
-    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    return float4(_e32.xyz, alpha_1);
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    const float4 _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -64,6 +64,12 @@ struct FurVaryings {
     metal::float2 uv0_;
     float offset;
     char _pad6[4];
+    metal::float4 light_diffuse;
+    metal::float4 light_ambient;
+    metal::float4 light_sheen;
+    metal::float4 light_strand;
+    float light_n_dot_v;
+    char _pad11[12];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -139,12 +145,12 @@ float weft_sheen_l(
     float x_1,
     float r
 ) {
-    float t = (1.0 - r) * (1.0 - r);
-    float a = metal::mix(21.5473, 25.3245, t);
-    float b = metal::mix(3.82987, 3.32435, t);
-    float c_1 = metal::mix(0.19823, 0.16801, t);
-    float d = metal::mix(-1.9776, -1.27393, t);
-    float e_1 = metal::mix(-4.32054, -4.85967, t);
+    float t_1 = (1.0 - r) * (1.0 - r);
+    float a = metal::mix(21.5473, 25.3245, t_1);
+    float b = metal::mix(3.82987, 3.32435, t_1);
+    float c_1 = metal::mix(0.19823, 0.16801, t_1);
+    float d = metal::mix(-1.9776, -1.27393, t_1);
+    float e_1 = metal::mix(-4.32054, -4.85967, t_1);
     return ((a / (1.0 + (b * metal::pow(metal::max(x_1, 0.0), c_1)))) + (d * x_1)) + e_1;
 }
 
@@ -299,6 +305,18 @@ metal::float2 fur_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
+float fur_strand_exponent(
+    float smoothness
+) {
+    return metal::exp2(1.0 + (9.0 * metal::saturate(smoothness)));
+}
+
+float fur_strand_norm(
+    float p
+) {
+    return metal::sqrt((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI);
+}
+
 FurVaryings fur_vertex(
     FurInput in_4,
     float offset,
@@ -332,10 +350,10 @@ FurVaryings fur_vertex(
     float _e68 = material.fur_length;
     float len = metal::max(_e68, 0.0) * metal::max(1.0 + (hs * (metal::saturate(height) - 1.0)), 0.0);
     metal::float3 dir_1 = metal::mix(_e24, target_dir, offset);
-    metal::float3 p = world + (dir_1 * (len * offset));
+    metal::float3 p_1 = world + (dir_1 * (len * offset));
     metal::float4x4 _e88 = weft_frame.view_proj;
-    out.clip_position = _e88 * metal::float4(p, 1.0);
-    out.world_position = p;
+    out.clip_position = _e88 * metal::float4(p_1, 1.0);
+    out.world_position = p_1;
     out.world_normal = _e24;
     out.strand = _e24 + ((2.0 * offset) * (target_dir - _e24));
     out.uv0_ = in_4.uv0_;
@@ -358,10 +376,16 @@ float fur_noise(
     }
 }
 
-float fur_strand_exponent(
-    float smoothness
+metal::float2 fur_kajiya_kay_cone(
+    metal::float3 t,
+    metal::float3 l,
+    metal::float3 v_2
 ) {
-    return metal::exp2(1.0 + (9.0 * metal::saturate(smoothness)));
+    float t_dot_l = metal::clamp(metal::dot(t, l), -1.0, 1.0);
+    float t_dot_v = metal::clamp(metal::dot(t, v_2), -1.0, 1.0);
+    float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
+    float sin_v = metal::sqrt(metal::max(1.0 - (t_dot_v * t_dot_v), 0.0));
+    return metal::float2(metal::max((sin_l * sin_v) - (t_dot_l * t_dot_v), 0.0), sin_l);
 }
 
 metal::float4 fur_shade(
@@ -377,7 +401,6 @@ metal::float4 fur_shade(
     metal::texture2d<float, metal::access::sample> spot_map
 ) {
     metal::float3 color = {};
-    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -388,63 +411,100 @@ metal::float4 fur_shade(
     metal::float4 _e22 = material.spot_color;
     metal::float3 base = metal::mix(metal::saturate(base_rgba.xyz), metal::saturate(_e22.xyz), spot);
     float alpha = metal::saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = metal::saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness_1 = metal::saturate(_e34);
-    float roughness_2 = 1.0 - smoothness_1;
-    metal::float3 _e43 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    metal::float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    metal::float3 _e48 = weft_main_light_direction(weft_frame);
-    metal::float3 _e50 = weft_safe_normalize(_e48 + _e43, _e45);
-    float _e52 = weft_clamp_cos(metal::dot(_e45, _e43));
-    float n_dot_l_2 = metal::saturate(metal::dot(_e45, _e48));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e45, _e50));
-    float l_dot_h = metal::saturate(metal::dot(_e48, _e50));
-    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
-    metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e66 = weft_sh_irradiance(_e45, weft_frame);
     {
-        metal::float4 _e70 = material.sheen_color;
-        metal::float3 sheen_color_3 = metal::saturate(f0_1 + metal::max(_e70.xyz, metal::float3(0.0)));
-        float _e77 = weft_sheen_clamp_roughness(roughness_2);
-        float _e78 = weft_sheen_albedo(_e52, _e77, weft_lut_sampler, weft_sheen_lut);
-        float _e79 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-        metal::float3 _e80 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e52, n_dot_l_2, _e77);
-        float _e81 = fur_strand_exponent(smoothness_1);
-        float t_dot_l = metal::clamp(metal::dot(_e47, _e48), -1.0, 1.0);
-        float t_dot_v = metal::clamp(metal::dot(_e47, _e43), -1.0, 1.0);
-        float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
-        float sin_v = metal::sqrt(metal::max(1.0 - (t_dot_v * t_dot_v), 0.0));
-        float cone = metal::max((sin_l * sin_v) - (t_dot_l * t_dot_v), 0.0);
-        float strand = metal::pow(cone, _e81) * sin_l;
-        scaling = _e79;
+        float _e31 = material.metallic;
+        float metallic = metal::saturate(_e31);
+        float _e35 = material.smoothness;
+        float smoothness_1 = metal::saturate(_e35);
+        float roughness_2 = 1.0 - smoothness_1;
+        metal::float3 _e44 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+        metal::float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        metal::float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        metal::float3 _e49 = weft_main_light_direction(weft_frame);
+        metal::float3 _e51 = weft_safe_normalize(_e49 + _e44, _e46);
+        float _e53 = weft_clamp_cos(metal::dot(_e46, _e44));
+        float n_dot_l_2 = metal::saturate(metal::dot(_e46, _e49));
+        float n_dot_h_2 = metal::saturate(metal::dot(_e46, _e51));
+        float l_dot_h = metal::saturate(metal::dot(_e49, _e51));
+        metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
+        metal::float3 diffuse_albedo = base * (1.0 - metallic);
+        metal::float3 _e66 = weft_main_light_radiance(weft_frame);
+        metal::float3 _e67 = weft_sh_irradiance(_e46, weft_frame);
         {
-            float _e110 = weft_sheen_albedo(n_dot_l_2, _e77, weft_lut_sampler, weft_sheen_lut);
-            float _e111 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e110);
-            scaling = _e111;
+            metal::float4 _e70 = material.sheen_color;
+            metal::float3 sheen_color_3 = metal::saturate(f0_1 + metal::max(_e70.xyz, metal::float3(0.0)));
+            float _e77 = weft_sheen_clamp_roughness(roughness_2);
+            float _e78 = weft_sheen_albedo(_e53, _e77, weft_lut_sampler, weft_sheen_lut);
+            float _e79 = weft_sheen_albedo(n_dot_l_2, _e77, weft_lut_sampler, weft_sheen_lut);
+            float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
+            float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
+            metal::float3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
+            float _e83 = fur_strand_exponent(smoothness_1);
+            metal::float2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
+            float strand = metal::pow(_e84.x, _e83) * _e84.y;
+            metal::float3 _e89 = weft_f_schlick(f0_1, l_dot_h);
+            metal::float4 _e92 = material.strand_color;
+            metal::float3 strand_color = metal::max(_e92.xyz, metal::float3(0.0)) * _e89;
+            float _e100 = material.strand_strength;
+            float _e103 = fur_strand_norm(_e83);
+            metal::float3 strand_lobe = strand_color * (((metal::max(_e100, 0.0) * _e103) * strand) * n_dot_l_2);
+            metal::float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 base_direct = _e108 * (_e81 * n_dot_l_2);
+            metal::float3 direct = ((_e82 + base_direct) + strand_lobe) * _e66;
+            metal::float3 _e116 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e46), _e77, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 env_sheen = (_e116 * sheen_color_3) * _e78;
+            color = (direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen;
         }
-        float norm = metal::sqrt((((2.0 * _e81) + 1.0) * 0.25) * WEFT_INV_PI);
-        metal::float3 _e121 = weft_f_schlick(f0_1, l_dot_h);
-        metal::float4 _e124 = material.strand_color;
-        metal::float3 strand_color = metal::max(_e124.xyz, metal::float3(0.0)) * _e121;
-        float _e132 = material.strand_strength;
-        metal::float3 strand_lobe = strand_color * (((metal::max(_e132, 0.0) * norm) * strand) * n_dot_l_2);
-        metal::float3 _e139 = weft_diffuse_lambert(diffuse_albedo);
-        float _e140 = scaling;
-        metal::float3 base_direct = _e139 * (_e140 * n_dot_l_2);
-        metal::float3 direct = ((_e80 + base_direct) + strand_lobe) * _e65;
-        metal::float3 _e148 = weft_prefiltered_radiance(metal::reflect(-(_e43), _e45), _e77, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 env_sheen = (_e148 * sheen_color_3) * _e78;
-        color = (direct + ((_e66 * diffuse_albedo) * _e79)) + env_sheen;
     }
-    float _e157 = material.fur_occlusion;
-    float occlusion = 1.0 - (metal::saturate(_e157) * (1.0 - in_5.offset));
-    metal::float3 _e165 = color;
-    metal::float3 radiance = metal::clamp(_e165 * occlusion, metal::float3(0.0), metal::float3(65504.0));
+    float _e125 = material.fur_occlusion;
+    float occlusion = 1.0 - (metal::saturate(_e125) * (1.0 - in_5.offset));
+    metal::float3 _e133 = color;
+    metal::float3 radiance = metal::clamp(_e133 * occlusion, metal::float3(0.0), metal::float3(65504.0));
     return metal::float4(radiance, alpha);
+}
+
+float fur_fade_n_dot_v(
+    FurVaryings in_6,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(in_6.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return metal::saturate(metal::dot(_e8, _e6));
+}
+
+metal::float4 fur_shell(
+    FurVaryings in_7,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
+    metal::texture2d<float, metal::access::sample> weft_sheen_lut,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> base_map,
+    metal::texture2d<float, metal::access::sample> spot_map,
+    metal::texture2d<float, metal::access::sample> noise_map
+) {
+    float _e2 = fur_noise(in_7.uv0_, material, material_sampler, noise_map);
+    float o = metal::saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = (_e8 != 0u) ? (o * o) : o;
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
+    float _e21 = metal::fwidth(_e2);
+    float width = metal::max(_e21, 0.001);
+    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
+    metal::float4 _e32 = fur_shade(in_7, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
+    float _e35 = material.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_7, weft_frame);
+    float fade = 1.0 - (metal::saturate(_e35) * (1.0 - _e37));
+    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
+    int _e53 = material.shell_count;
+    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e53, 1));
+    float keep = 1.0 - a_1;
+    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
+    return metal::float4(_e32.xyz, alpha_1);
 }
 
 struct vs_skinInput {
@@ -459,6 +519,11 @@ struct vs_skinOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_skinOutput vs_skin(
   vs_skinInput varyings [[stage_in]]
@@ -472,7 +537,7 @@ vertex vs_skinOutput vs_skin(
     const FurInput in = { varyings.position, varyings.normal, varyings.uv0_1 };
     FurVaryings _e2 = fur_vertex(in, 0.0, weft_frame, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp = _e2;
-    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset };
+    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset, _tmp.light_diffuse, _tmp.light_ambient, _tmp.light_sheen, _tmp.light_strand, _tmp.light_n_dot_v };
 }
 
 
@@ -488,6 +553,11 @@ struct vs_shellOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_shellOutput vs_shell(
   vs_shellInput varyings_1 [[stage_in]]
@@ -504,7 +574,7 @@ vertex vs_shellOutput vs_shell(
     float count = static_cast<float>(metal::max(_e4, 1));
     FurVaryings _e12 = fur_vertex(in_1, (static_cast<float>(instance) + 0.5) / count, weft_frame, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp_1 = _e12;
-    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset };
+    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset, _tmp_1.light_diffuse, _tmp_1.light_ambient, _tmp_1.light_sheen, _tmp_1.light_strand, _tmp_1.light_n_dot_v };
 }
 
 
@@ -514,6 +584,11 @@ struct fs_skinInput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_skinOutput {
     metal::float4 member_2 [[color(0)]];
@@ -531,7 +606,7 @@ fragment fs_skinOutput fs_skin(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1 };
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
     metal::float4 _e1 = fur_shade(in_2, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
@@ -543,6 +618,11 @@ struct fs_shellInput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_shellOutput {
     metal::float4 member_3 [[color(0)]];
@@ -561,26 +641,7 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1 };
-    float _e2 = fur_noise(in_3.uv0_, material, material_sampler, noise_map);
-    float o = metal::saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = (_e8 != 0u) ? (o * o) : o;
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
-    float _e21 = metal::fwidth(_e2);
-    float width = metal::max(_e21, 0.001);
-    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
-    metal::float4 _e32 = fur_shade(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
-    metal::float3 _e38 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = 1.0 - (metal::saturate(_e43) * (1.0 - metal::saturate(metal::dot(_e40, _e38))));
-    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
-    int _e62 = material.shell_count;
-    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e62, 1));
-    float keep = 1.0 - a_1;
-    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
-    return fs_shellOutput { metal::float4(_e32.xyz, alpha_1) };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    metal::float4 _e1 = fur_shell(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map, noise_map);
+    return fs_shellOutput { _e1 };
 }

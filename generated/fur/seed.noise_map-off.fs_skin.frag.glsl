@@ -49,6 +49,11 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -75,6 +80,11 @@ layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec3 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 4) smooth in float _vs2fs_location4;
+layout(location = 5) smooth in vec4 _vs2fs_location5;
+layout(location = 6) smooth in vec4 _vs2fs_location6;
+layout(location = 7) smooth in vec4 _vs2fs_location7;
+layout(location = 8) smooth in vec4 _vs2fs_location8;
+layout(location = 9) smooth in float _vs2fs_location9;
 layout(location = 0) out vec4 _fs2p_location0;
 
 float weft_pow4_(float x) {
@@ -218,7 +228,6 @@ float fur_noise(vec2 uv0_) {
 
 vec4 fur_shade(FurVaryings in_5) {
     vec3 color = vec3(0.0);
-    float scaling = 0.0;
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -229,34 +238,36 @@ vec4 fur_shade(FurVaryings in_5) {
     vec4 _e22 = _group_1_binding_0_fs.spot_color;
     vec3 base = mix(clamp(base_rgba.xyz, vec3(0.0), vec3(1.0)), clamp(_e22.xyz, vec3(0.0), vec3(1.0)), spot);
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
-    float _e30 = _group_1_binding_0_fs.metallic;
-    float metallic = clamp(_e30, 0.0, 1.0);
-    float _e34 = _group_1_binding_0_fs.smoothness;
-    float smoothness = clamp(_e34, 0.0, 1.0);
-    float roughness_2 = (1.0 - smoothness);
-    vec3 _e43 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    vec3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    vec3 _e48 = weft_main_light_direction();
-    vec3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = clamp(dot(_e45, _e48), 0.0, 1.0);
-    float n_dot_h_1 = clamp(dot(_e45, _e50), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e48, _e50), 0.0, 1.0);
-    vec3 f0_1 = mix(vec3(0.04), base, metallic);
-    vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e65 = weft_main_light_radiance();
-    vec3 _e66 = weft_sh_irradiance(_e45);
     {
-        float _e68 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        vec3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-        float _e70 = weft_fabric_d(n_dot_h_1);
-        vec3 specular = ((_e70 * _e68) * _e69);
-        vec3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-        vec4 _e76 = _group_1_binding_0_fs.sheen_color;
-        float _e80 = _group_1_binding_0_fs.scatter_scale;
-        vec3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e52, _e80);
-        color = (((((_e73 + specular) * _e65) * n_dot_l_2) + (_e66 * diffuse_albedo)) + _e81);
+        float _e31 = _group_1_binding_0_fs.metallic;
+        float metallic = clamp(_e31, 0.0, 1.0);
+        float _e35 = _group_1_binding_0_fs.smoothness;
+        float smoothness = clamp(_e35, 0.0, 1.0);
+        float roughness_2 = (1.0 - smoothness);
+        vec3 _e44 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
+        vec3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        vec3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        vec3 _e49 = weft_main_light_direction();
+        vec3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        float _e53 = weft_clamp_cos(dot(_e46, _e44));
+        float n_dot_l_2 = clamp(dot(_e46, _e49), 0.0, 1.0);
+        float n_dot_h_1 = clamp(dot(_e46, _e51), 0.0, 1.0);
+        float l_dot_h = clamp(dot(_e49, _e51), 0.0, 1.0);
+        vec3 f0_1 = mix(vec3(0.04), base, metallic);
+        vec3 diffuse_albedo = (base * (1.0 - metallic));
+        vec3 _e66 = weft_main_light_radiance();
+        vec3 _e67 = weft_sh_irradiance(_e46);
+        {
+            float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
+            vec3 _e69 = weft_f_schlick(f0_1, l_dot_h);
+            float _e70 = weft_fabric_d(n_dot_h_1);
+            vec3 specular = ((_e70 * _e68) * _e69);
+            vec3 _e73 = weft_diffuse_lambert(diffuse_albedo);
+            vec4 _e76 = _group_1_binding_0_fs.sheen_color;
+            float _e80 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
+            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+        }
     }
     float _e90 = _group_1_binding_0_fs.fur_occlusion;
     float occlusion = (1.0 - (clamp(_e90, 0.0, 1.0) * (1.0 - in_5.offset)));
@@ -265,8 +276,37 @@ vec4 fur_shade(FurVaryings in_5) {
     return vec4(radiance, alpha);
 }
 
+float fur_fade_n_dot_v(FurVaryings in_6) {
+    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return clamp(dot(_e8, _e6), 0.0, 1.0);
+}
+
+vec4 fur_shell(FurVaryings in_7) {
+    float _e2 = fur_noise(in_7.uv0_);
+    float o = clamp(in_7.offset, 0.0, 1.0);
+    uint _e8 = _group_1_binding_0_fs.tapered_tips;
+    float shape = ((_e8 != 0u) ? (o * o) : o);
+    float _e14 = _group_1_binding_0_fs.cutoff_start;
+    float _e18 = _group_1_binding_0_fs.cutoff_end;
+    float threshold = mix(clamp(_e14, 0.0, 1.0), clamp(_e18, 0.0, 1.0), shape);
+    float _e21 = fwidth(_e2);
+    float width = max(_e21, 0.001);
+    float coverage = (clamp((((_e2 - threshold) / width) + 0.5), 0.0, 1.0) * step(1e-6, _e2));
+    vec4 _e32 = fur_shade(in_7);
+    float _e35 = _group_1_binding_0_fs.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_7);
+    float fade = (1.0 - (clamp(_e35, 0.0, 1.0) * (1.0 - _e37)));
+    float a_1 = clamp((((coverage * (1.0 - o)) * fade) * _e32.w), 0.0, 1.0);
+    int _e53 = _group_1_binding_0_fs.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, 1)));
+    float keep = (1.0 - a_1);
+    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
+    return vec4(_e32.xyz, alpha_1);
+}
+
 void main() {
-    FurVaryings in_2 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4);
+    FurVaryings in_2 = FurVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9);
     vec4 _e1 = fur_shade(in_2);
     _fs2p_location0 = vec4(_e1.xyz, 1.0);
     return;

@@ -65,6 +65,11 @@ struct FurVaryings {
     float3 strand : LOC2;
     float2 uv0_ : LOC3;
     float offset : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -97,6 +102,11 @@ struct VertexOutput_vs_skin {
     float3 strand : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
+    float4 light_diffuse : LOC5;
+    float4 light_ambient : LOC6;
+    float4 light_sheen : LOC7;
+    float4 light_strand : LOC8;
+    float light_n_dot_v : LOC9;
     float4 clip_position : SV_Position;
 };
 
@@ -106,6 +116,11 @@ struct VertexOutput_vs_shell {
     float3 strand_1 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
+    float4 light_diffuse_1 : LOC5;
+    float4 light_ambient_1 : LOC6;
+    float4 light_sheen_1 : LOC7;
+    float4 light_strand_1 : LOC8;
+    float light_n_dot_v_1 : LOC9;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -115,6 +130,11 @@ struct FragmentInput_fs_skin {
     float3 strand_2 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
+    float4 light_diffuse_2 : LOC5;
+    float4 light_ambient_2 : LOC6;
+    float4 light_sheen_2 : LOC7;
+    float4 light_strand_2 : LOC8;
+    float light_n_dot_v_2 : LOC9;
     float4 clip_position_2 : SV_Position;
 };
 
@@ -124,6 +144,11 @@ struct FragmentInput_fs_shell {
     float3 strand_3 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
+    float4 light_diffuse_3 : LOC5;
+    float4 light_ambient_3 : LOC6;
+    float4 light_sheen_3 : LOC7;
+    float4 light_strand_3 : LOC8;
+    float light_n_dot_v_3 : LOC9;
     float4 clip_position_3 : SV_Position;
 };
 
@@ -333,7 +358,6 @@ float fur_noise(float2 uv0_)
 float4 fur_shade(FurVaryings in_5)
 {
     float3 color = (float3)0;
-    float scaling = (float)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
@@ -345,34 +369,36 @@ float4 fur_shade(FurVaryings in_5)
     float4 _e22 = material.spot_color;
     float3 base = lerp(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     float alpha = saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness = saturate(_e34);
-    float roughness_2 = (1.0 - smoothness);
-    const float3 _e43 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    const float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    const float3 _e48 = weft_main_light_direction();
-    const float3 _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    const float _e52 = weft_clamp_cos(dot(_e45, _e43));
-    float n_dot_l_2 = saturate(dot(_e45, _e48));
-    float n_dot_h_1 = saturate(dot(_e45, _e50));
-    float l_dot_h = saturate(dot(_e48, _e50));
-    float3 f0_1 = lerp((0.04).xxx, base, metallic);
-    float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e65 = weft_main_light_radiance();
-    const float3 _e66 = weft_sh_irradiance(_e45);
     {
-        const float _e68 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        const float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-        const float _e70 = weft_fabric_d(n_dot_h_1);
-        float3 specular = ((_e70 * _e68) * _e69);
-        const float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-        float4 _e76 = material.sheen_color;
-        float _e80 = material.scatter_scale;
-        const float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e52, _e80);
-        color = (((((_e73 + specular) * _e65) * n_dot_l_2) + (_e66 * diffuse_albedo)) + _e81);
+        float _e31 = material.metallic;
+        float metallic = saturate(_e31);
+        float _e35 = material.smoothness;
+        float smoothness = saturate(_e35);
+        float roughness_2 = (1.0 - smoothness);
+        const float3 _e44 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
+        const float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        const float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        const float3 _e49 = weft_main_light_direction();
+        const float3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        const float _e53 = weft_clamp_cos(dot(_e46, _e44));
+        float n_dot_l_2 = saturate(dot(_e46, _e49));
+        float n_dot_h_1 = saturate(dot(_e46, _e51));
+        float l_dot_h = saturate(dot(_e49, _e51));
+        float3 f0_1 = lerp((0.04).xxx, base, metallic);
+        float3 diffuse_albedo = (base * (1.0 - metallic));
+        const float3 _e66 = weft_main_light_radiance();
+        const float3 _e67 = weft_sh_irradiance(_e46);
+        {
+            const float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
+            const float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
+            const float _e70 = weft_fabric_d(n_dot_h_1);
+            float3 specular = ((_e70 * _e68) * _e69);
+            const float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
+            float4 _e76 = material.sheen_color;
+            float _e80 = material.scatter_scale;
+            const float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
+            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+        }
     }
     float _e90 = material.fur_occlusion;
     float occlusion = (1.0 - (saturate(_e90) * (1.0 - in_5.offset)));
@@ -381,11 +407,42 @@ float4 fur_shade(FurVaryings in_5)
     return float4(radiance, alpha);
 }
 
+float fur_fade_n_dot_v(FurVaryings in_6)
+{
+    const float3 _e6 = weft_view_direction(in_6.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return saturate(dot(_e8, _e6));
+}
+
+float4 fur_shell(FurVaryings in_7)
+{
+    const float _e2 = fur_noise(in_7.uv0_);
+    float o = saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = ((_e8 != 0u) ? (o * o) : o);
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
+    float _e21 = fwidth(_e2);
+    float width = max(_e21, 0.001);
+    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
+    const float4 _e32 = fur_shade(in_7);
+    float _e35 = material.edge_fade;
+    const float _e37 = fur_fade_n_dot_v(in_7);
+    float fade = (1.0 - (saturate(_e35) * (1.0 - _e37)));
+    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
+    int _e53 = material.shell_count;
+    float slab = (FUR_SEED_SHELLS / float(max(_e53, int(1))));
+    float keep = (1.0 - a_1);
+    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
+    return float4(_e32.xyz, alpha_1);
+}
+
 VertexOutput_vs_skin vs_skin(FurInput in_)
 {
     const FurVaryings _e2 = fur_vertex(in_, 0.0);
     const FurVaryings furvaryings_1 = _e2;
-    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.clip_position };
+    const VertexOutput_vs_skin furvaryings_1_ = { furvaryings_1.world_position, furvaryings_1.world_normal, furvaryings_1.strand, furvaryings_1.uv0_, furvaryings_1.offset, furvaryings_1.light_diffuse, furvaryings_1.light_ambient, furvaryings_1.light_sheen, furvaryings_1.light_strand, furvaryings_1.light_n_dot_v, furvaryings_1.clip_position };
     return furvaryings_1_;
 }
 
@@ -395,39 +452,20 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
     float count = float(max(_e4, int(1)));
     const FurVaryings _e12 = fur_vertex(in_1, ((float(instance) + 0.5) / count));
     const FurVaryings furvaryings_2 = _e12;
-    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.clip_position };
+    const VertexOutput_vs_shell furvaryings_2_ = { furvaryings_2.world_position, furvaryings_2.world_normal, furvaryings_2.strand, furvaryings_2.uv0_, furvaryings_2.offset, furvaryings_2.light_diffuse, furvaryings_2.light_ambient, furvaryings_2.light_sheen, furvaryings_2.light_strand, furvaryings_2.light_n_dot_v, furvaryings_2.clip_position };
     return furvaryings_2_;
 }
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4 };
-    const float _e2 = fur_noise(in_3.uv0_);
-    float o = saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = ((_e8 != 0u) ? (o * o) : o);
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = lerp(saturate(_e14), saturate(_e18), shape);
-    float _e21 = fwidth(_e2);
-    float width = max(_e21, 0.001);
-    float coverage = (saturate((((_e2 - threshold) / width) + 0.5)) * step(1e-6, _e2));
-    const float4 _e32 = fur_shade(in_3);
-    const float3 _e38 = weft_view_direction(in_3.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = (1.0 - (saturate(_e43) * (1.0 - saturate(dot(_e40, _e38)))));
-    float a_1 = saturate((((coverage * (1.0 - o)) * fade) * _e32.w));
-    int _e62 = material.shell_count;
-    float slab = (FUR_SEED_SHELLS / float(max(_e62, int(1))));
-    float keep = (1.0 - a_1);
-    float alpha_1 = (1.0 - ((keep <= 0.0) ? 0.0 : pow(keep, slab)));
-    return float4(_e32.xyz, alpha_1);
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    const float4 _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -49,6 +49,11 @@ struct FurVaryings {
     vec3 strand;
     vec2 uv0_;
     float offset;
+    vec4 light_diffuse;
+    vec4 light_ambient;
+    vec4 light_sheen;
+    vec4 light_strand;
+    float light_n_dot_v;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -80,6 +85,11 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec3 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 layout(location = 4) smooth out float _vs2fs_location4;
+layout(location = 5) smooth out vec4 _vs2fs_location5;
+layout(location = 6) smooth out vec4 _vs2fs_location6;
+layout(location = 7) smooth out vec4 _vs2fs_location7;
+layout(location = 8) smooth out vec4 _vs2fs_location8;
+layout(location = 9) smooth out float _vs2fs_location9;
 
 float weft_pow4_(float x) {
     float x2_ = (x * x);
@@ -185,7 +195,7 @@ vec2 fur_transform_uv(vec2 uv, vec4 st) {
 }
 
 FurVaryings fur_vertex(FurInput in_4, float offset) {
-    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0);
+    FurVaryings out_ = FurVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec2(0.0), 0.0, vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), 0.0);
     mat4x4 model = _group_2_binding_0_vs.model;
     mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
     mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
@@ -256,6 +266,12 @@ float fur_noise(vec2 uv0_) {
     return _e19;
 }
 
+float fur_fade_n_dot_v(FurVaryings in_6) {
+    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return clamp(dot(_e8, _e6), 0.0, 1.0);
+}
+
 void main() {
     FurInput in_ = FurInput(_p2vs_location0, _p2vs_location1, _p2vs_location3);
     FurVaryings _e2 = fur_vertex(in_, 0.0);
@@ -265,6 +281,11 @@ void main() {
     _vs2fs_location2 = _e2.strand;
     _vs2fs_location3 = _e2.uv0_;
     _vs2fs_location4 = _e2.offset;
+    _vs2fs_location5 = _e2.light_diffuse;
+    _vs2fs_location6 = _e2.light_ambient;
+    _vs2fs_location7 = _e2.light_sheen;
+    _vs2fs_location8 = _e2.light_strand;
+    _vs2fs_location9 = _e2.light_n_dot_v;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

@@ -52,6 +52,11 @@ struct FurVaryings {
     @location(2) strand: vec3<f32>,
     @location(3) uv0_: vec2<f32>,
     @location(4) offset: f32,
+    @location(5) light_diffuse: vec4<f32>,
+    @location(6) light_ambient: vec4<f32>,
+    @location(7) light_sheen: vec4<f32>,
+    @location(8) light_strand: vec4<f32>,
+    @location(9) light_n_dot_v: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -262,7 +267,6 @@ fn fur_noise(uv0_: vec2<f32>) -> f32 {
 
 fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
     var color: vec3<f32>;
-    var scaling: f32;
 
     let _e4 = material.base_map_st;
     let _e5 = fur_transform_uv(in_5.uv0_, _e4);
@@ -274,40 +278,71 @@ fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
     let _e22 = material.spot_color;
     let base = mix(saturate(base_rgba.xyz), saturate(_e22.xyz), spot);
     let alpha = saturate(base_rgba.w);
-    let _e30 = material.metallic;
-    let metallic = saturate(_e30);
-    let _e34 = material.smoothness;
-    let smoothness = saturate(_e34);
-    let roughness_2 = (1f - smoothness);
-    let _e43 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    let _e47 = weft_safe_normalize(in_5.strand, _e45);
-    let _e48 = weft_main_light_direction();
-    let _e50 = weft_safe_normalize((_e48 + _e43), _e45);
-    let _e52 = weft_clamp_cos(dot(_e45, _e43));
-    let n_dot_l_2 = saturate(dot(_e45, _e48));
-    let n_dot_h_1 = saturate(dot(_e45, _e50));
-    let l_dot_h = saturate(dot(_e48, _e50));
-    let f0_1 = mix(vec3(0.04f), base, metallic);
-    let diffuse_albedo = (base * (1f - metallic));
-    let _e65 = weft_main_light_radiance();
-    let _e66 = weft_sh_irradiance(_e45);
     {
-        let _e68 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        let _e69 = weft_f_schlick(f0_1, l_dot_h);
-        let _e70 = weft_fabric_d(n_dot_h_1);
-        let specular = ((_e70 * _e68) * _e69);
-        let _e73 = weft_diffuse_lambert(diffuse_albedo);
-        let _e76 = material.sheen_color;
-        let _e80 = material.scatter_scale;
-        let _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e52, _e80);
-        color = (((((_e73 + specular) * _e65) * n_dot_l_2) + (_e66 * diffuse_albedo)) + _e81);
+        let _e31 = material.metallic;
+        let metallic = saturate(_e31);
+        let _e35 = material.smoothness;
+        let smoothness = saturate(_e35);
+        let roughness_2 = (1f - smoothness);
+        let _e44 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
+        let _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        let _e48 = weft_safe_normalize(in_5.strand, _e46);
+        let _e49 = weft_main_light_direction();
+        let _e51 = weft_safe_normalize((_e49 + _e44), _e46);
+        let _e53 = weft_clamp_cos(dot(_e46, _e44));
+        let n_dot_l_2 = saturate(dot(_e46, _e49));
+        let n_dot_h_1 = saturate(dot(_e46, _e51));
+        let l_dot_h = saturate(dot(_e49, _e51));
+        let f0_1 = mix(vec3(0.04f), base, metallic);
+        let diffuse_albedo = (base * (1f - metallic));
+        let _e66 = weft_main_light_radiance();
+        let _e67 = weft_sh_irradiance(_e46);
+        {
+            let _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
+            let _e69 = weft_f_schlick(f0_1, l_dot_h);
+            let _e70 = weft_fabric_d(n_dot_h_1);
+            let specular = ((_e70 * _e68) * _e69);
+            let _e73 = weft_diffuse_lambert(diffuse_albedo);
+            let _e76 = material.sheen_color;
+            let _e80 = material.scatter_scale;
+            let _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
+            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+        }
     }
     let _e90 = material.fur_occlusion;
     let occlusion = (1f - (saturate(_e90) * (1f - in_5.offset)));
     let _e98 = color;
     let radiance = clamp((_e98 * occlusion), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
+}
+
+fn fur_fade_n_dot_v(in_6: FurVaryings) -> f32 {
+    let _e6 = weft_view_direction(in_6.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return saturate(dot(_e8, _e6));
+}
+
+fn fur_shell(in_7: FurVaryings) -> vec4<f32> {
+    let _e2 = fur_noise(in_7.uv0_);
+    let o = saturate(in_7.offset);
+    let _e8 = material.tapered_tips;
+    let shape = select(o, (o * o), (_e8 != 0u));
+    let _e14 = material.cutoff_start;
+    let _e18 = material.cutoff_end;
+    let threshold = mix(saturate(_e14), saturate(_e18), shape);
+    let _e21 = fwidth(_e2);
+    let width = max(_e21, 0.001f);
+    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
+    let _e32 = fur_shade(in_7);
+    let _e35 = material.edge_fade;
+    let _e37 = fur_fade_n_dot_v(in_7);
+    let fade = (1f - (saturate(_e35) * (1f - _e37)));
+    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
+    let _e53 = material.shell_count;
+    let slab = (FUR_SEED_SHELLS / f32(max(_e53, 1i)));
+    let keep = (1f - a_1);
+    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
+    return vec4<f32>(_e32.xyz, alpha_1);
 }
 
 @vertex 
@@ -332,25 +367,6 @@ fn fs_skin(in_2: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment 
 fn fs_shell(in_3: FurVaryings) -> @location(0) vec4<f32> {
-    let _e2 = fur_noise(in_3.uv0_);
-    let o = saturate(in_3.offset);
-    let _e8 = material.tapered_tips;
-    let shape = select(o, (o * o), (_e8 != 0u));
-    let _e14 = material.cutoff_start;
-    let _e18 = material.cutoff_end;
-    let threshold = mix(saturate(_e14), saturate(_e18), shape);
-    let _e21 = fwidth(_e2);
-    let width = max(_e21, 0.001f);
-    let coverage = (saturate((((_e2 - threshold) / width) + 0.5f)) * step(0.000001f, _e2));
-    let _e32 = fur_shade(in_3);
-    let _e38 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    let _e43 = material.edge_fade;
-    let fade = (1f - (saturate(_e43) * (1f - saturate(dot(_e40, _e38)))));
-    let a_1 = saturate((((coverage * (1f - o)) * fade) * _e32.w));
-    let _e62 = material.shell_count;
-    let slab = (FUR_SEED_SHELLS / f32(max(_e62, 1i)));
-    let keep = (1f - a_1);
-    let alpha_1 = (1f - select(pow(keep, slab), 0f, (keep <= 0f)));
-    return vec4<f32>(_e32.xyz, alpha_1);
+    let _e1 = fur_shell(in_3);
+    return _e1;
 }

@@ -64,6 +64,12 @@ struct FurVaryings {
     metal::float2 uv0_;
     float offset;
     char _pad6[4];
+    metal::float4 light_diffuse;
+    metal::float4 light_ambient;
+    metal::float4 light_sheen;
+    metal::float4 light_strand;
+    float light_n_dot_v;
+    char _pad11[12];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -292,7 +298,6 @@ metal::float4 fur_shade(
     metal::texture2d<float, metal::access::sample> spot_map
 ) {
     metal::float3 color = {};
-    float scaling = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = fur_transform_uv(in_5.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -303,40 +308,82 @@ metal::float4 fur_shade(
     metal::float4 _e22 = material.spot_color;
     metal::float3 base = metal::mix(metal::saturate(base_rgba.xyz), metal::saturate(_e22.xyz), spot);
     float alpha = metal::saturate(base_rgba.w);
-    float _e30 = material.metallic;
-    float metallic = metal::saturate(_e30);
-    float _e34 = material.smoothness;
-    float smoothness = metal::saturate(_e34);
-    float roughness_2 = 1.0 - smoothness;
-    metal::float3 _e43 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e45 = weft_safe_normalize(in_5.world_normal, _e43);
-    metal::float3 _e47 = weft_safe_normalize(in_5.strand, _e45);
-    metal::float3 _e48 = weft_main_light_direction(weft_frame);
-    metal::float3 _e50 = weft_safe_normalize(_e48 + _e43, _e45);
-    float _e52 = weft_clamp_cos(metal::dot(_e45, _e43));
-    float n_dot_l_2 = metal::saturate(metal::dot(_e45, _e48));
-    float n_dot_h_1 = metal::saturate(metal::dot(_e45, _e50));
-    float l_dot_h = metal::saturate(metal::dot(_e48, _e50));
-    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
-    metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e66 = weft_sh_irradiance(_e45, weft_frame);
     {
-        float _e68 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-        metal::float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-        float _e70 = weft_fabric_d(n_dot_h_1);
-        metal::float3 specular = (_e70 * _e68) * _e69;
-        metal::float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-        metal::float4 _e76 = material.sheen_color;
-        float _e80 = material.scatter_scale;
-        metal::float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e52, _e80);
-        color = ((((_e73 + specular) * _e65) * n_dot_l_2) + (_e66 * diffuse_albedo)) + _e81;
+        float _e31 = material.metallic;
+        float metallic = metal::saturate(_e31);
+        float _e35 = material.smoothness;
+        float smoothness = metal::saturate(_e35);
+        float roughness_2 = 1.0 - smoothness;
+        metal::float3 _e44 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+        metal::float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
+        metal::float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
+        metal::float3 _e49 = weft_main_light_direction(weft_frame);
+        metal::float3 _e51 = weft_safe_normalize(_e49 + _e44, _e46);
+        float _e53 = weft_clamp_cos(metal::dot(_e46, _e44));
+        float n_dot_l_2 = metal::saturate(metal::dot(_e46, _e49));
+        float n_dot_h_1 = metal::saturate(metal::dot(_e46, _e51));
+        float l_dot_h = metal::saturate(metal::dot(_e49, _e51));
+        metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
+        metal::float3 diffuse_albedo = base * (1.0 - metallic);
+        metal::float3 _e66 = weft_main_light_radiance(weft_frame);
+        metal::float3 _e67 = weft_sh_irradiance(_e46, weft_frame);
+        {
+            float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
+            metal::float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
+            float _e70 = weft_fabric_d(n_dot_h_1);
+            metal::float3 specular = (_e70 * _e68) * _e69;
+            metal::float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float4 _e76 = material.sheen_color;
+            float _e80 = material.scatter_scale;
+            metal::float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
+            color = ((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81;
+        }
     }
     float _e90 = material.fur_occlusion;
     float occlusion = 1.0 - (metal::saturate(_e90) * (1.0 - in_5.offset));
     metal::float3 _e98 = color;
     metal::float3 radiance = metal::clamp(_e98 * occlusion, metal::float3(0.0), metal::float3(65504.0));
     return metal::float4(radiance, alpha);
+}
+
+float fur_fade_n_dot_v(
+    FurVaryings in_6,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(in_6.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
+    return metal::saturate(metal::dot(_e8, _e6));
+}
+
+metal::float4 fur_shell(
+    FurVaryings in_7,
+    constant WeftFrame& weft_frame,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> base_map,
+    metal::texture2d<float, metal::access::sample> spot_map,
+    metal::texture2d<float, metal::access::sample> noise_map
+) {
+    float _e2 = fur_noise(in_7.uv0_, material, material_sampler, noise_map);
+    float o = metal::saturate(in_7.offset);
+    uint _e8 = material.tapered_tips;
+    float shape = (_e8 != 0u) ? (o * o) : o;
+    float _e14 = material.cutoff_start;
+    float _e18 = material.cutoff_end;
+    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
+    float _e21 = metal::fwidth(_e2);
+    float width = metal::max(_e21, 0.001);
+    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
+    metal::float4 _e32 = fur_shade(in_7, weft_frame, material, material_sampler, base_map, spot_map);
+    float _e35 = material.edge_fade;
+    float _e37 = fur_fade_n_dot_v(in_7, weft_frame);
+    float fade = 1.0 - (metal::saturate(_e35) * (1.0 - _e37));
+    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
+    int _e53 = material.shell_count;
+    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e53, 1));
+    float keep = 1.0 - a_1;
+    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
+    return metal::float4(_e32.xyz, alpha_1);
 }
 
 struct vs_skinInput {
@@ -351,6 +398,11 @@ struct vs_skinOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_skinOutput vs_skin(
   vs_skinInput varyings [[stage_in]]
@@ -364,7 +416,7 @@ vertex vs_skinOutput vs_skin(
     const FurInput in = { varyings.position, varyings.normal, varyings.uv0_1 };
     FurVaryings _e2 = fur_vertex(in, 0.0, weft_frame, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp = _e2;
-    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset };
+    return vs_skinOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.strand, _tmp.uv0_, _tmp.offset, _tmp.light_diffuse, _tmp.light_ambient, _tmp.light_sheen, _tmp.light_strand, _tmp.light_n_dot_v };
 }
 
 
@@ -380,6 +432,11 @@ struct vs_shellOutput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
     float offset [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 vertex vs_shellOutput vs_shell(
   vs_shellInput varyings_1 [[stage_in]]
@@ -396,7 +453,7 @@ vertex vs_shellOutput vs_shell(
     float count = static_cast<float>(metal::max(_e4, 1));
     FurVaryings _e12 = fur_vertex(in_1, (static_cast<float>(instance) + 0.5) / count, weft_frame, weft_object, material, material_sampler, height_map, force_map);
     const auto _tmp_1 = _e12;
-    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset };
+    return vs_shellOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.strand, _tmp_1.uv0_, _tmp_1.offset, _tmp_1.light_diffuse, _tmp_1.light_ambient, _tmp_1.light_sheen, _tmp_1.light_strand, _tmp_1.light_n_dot_v };
 }
 
 
@@ -406,6 +463,11 @@ struct fs_skinInput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_skinOutput {
     metal::float4 member_2 [[color(0)]];
@@ -419,7 +481,7 @@ fragment fs_skinOutput fs_skin(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(1)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1 };
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
     metal::float4 _e1 = fur_shade(in_2, weft_frame, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
@@ -431,6 +493,11 @@ struct fs_shellInput {
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
+    metal::float4 light_diffuse [[user(loc5), center_perspective]];
+    metal::float4 light_ambient [[user(loc6), center_perspective]];
+    metal::float4 light_sheen [[user(loc7), center_perspective]];
+    metal::float4 light_strand [[user(loc8), center_perspective]];
+    float light_n_dot_v [[user(loc9), center_perspective]];
 };
 struct fs_shellOutput {
     metal::float4 member_3 [[color(0)]];
@@ -445,26 +512,7 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(2)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1 };
-    float _e2 = fur_noise(in_3.uv0_, material, material_sampler, noise_map);
-    float o = metal::saturate(in_3.offset);
-    uint _e8 = material.tapered_tips;
-    float shape = (_e8 != 0u) ? (o * o) : o;
-    float _e14 = material.cutoff_start;
-    float _e18 = material.cutoff_end;
-    float threshold = metal::mix(metal::saturate(_e14), metal::saturate(_e18), shape);
-    float _e21 = metal::fwidth(_e2);
-    float width = metal::max(_e21, 0.001);
-    float coverage = metal::saturate(((_e2 - threshold) / width) + 0.5) * metal::step(0.000001, _e2);
-    metal::float4 _e32 = fur_shade(in_3, weft_frame, material, material_sampler, base_map, spot_map);
-    metal::float3 _e38 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_3.world_normal, _e38);
-    float _e43 = material.edge_fade;
-    float fade = 1.0 - (metal::saturate(_e43) * (1.0 - metal::saturate(metal::dot(_e40, _e38))));
-    float a_1 = metal::saturate(((coverage * (1.0 - o)) * fade) * _e32.w);
-    int _e62 = material.shell_count;
-    float slab = FUR_SEED_SHELLS / static_cast<float>(metal::max(_e62, 1));
-    float keep = 1.0 - a_1;
-    float alpha_1 = 1.0 - ((keep <= 0.0) ? 0.0 : metal::pow(keep, slab));
-    return fs_shellOutput { metal::float4(_e32.xyz, alpha_1) };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    metal::float4 _e1 = fur_shell(in_3, weft_frame, material, material_sampler, base_map, spot_map, noise_map);
+    return fs_shellOutput { _e1 };
 }

@@ -18,10 +18,13 @@
 //               lobe normalised (sqrt((2p + 1) / 4pi)), with Schlick
 //               Fresnel on F0; ambient diffuse (SH) scaled by the view-only
 //               form, environment sheen C E(n.v) x prefiltered radiance.
-//   fast      = an approximation of the reference: the same sheen, strand
-//               lobe and ambient; the view-only albedo scaling for direct
-//               light too (one table fetch instead of two). The half-vector
-//               strand form was measured and rejected (README).
+//   fast      = an approximation of the reference: the same model, its
+//               lighting evaluated per vertex (Gouraud) and interpolated
+//               (fur_vertex_light): light, sheen lobe, albedo table, SH,
+//               environment, Fresnel weight and the strand lobe's signed
+//               angle from its cone; the fragment keeps the albedo and F0
+//               (per pixel) and the strand's cos^p. The half-vector strand
+//               form was measured and rejected (README).
 //   seed      = a look: seed 003's lighting "put on the fur": BRDF1 with
 //               FabricD in place of GGX (Schlick F, Schlick-GGX V), Lambert
 //               diffuse, the fabric scatter rim added unlit, SH ambient, no
@@ -53,6 +56,13 @@ struct FurVaryings {
     @location(3) uv0: vec2<f32>,
     // Shell offset: 0 on the skin, (i + 1/2) / n on shell i of n.
     @location(4) offset: f32,
+    // `fast` only (zero in the other tiers): the lighting's angular terms,
+    // evaluated per vertex (fur_vertex_light) and interpolated.
+    @location(5) light_diffuse: vec4<f32>,
+    @location(6) light_ambient: vec4<f32>,
+    @location(7) light_sheen: vec4<f32>,
+    @location(8) light_strand: vec4<f32>,
+    @location(9) light_n_dot_v: f32,
 }
 
 fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -90,6 +100,14 @@ fn fur_vertex(in: FurInput, offset: f32) -> FurVaryings {
     out.strand = n + 2.0 * offset * (target_dir - n);
     out.uv0 = in.uv0;
     out.offset = offset;
+    if WEFT_TIER == TIER_FAST {
+        let lit = fur_vertex_light(p, n, out.strand);
+        out.light_diffuse = lit.diffuse;
+        out.light_ambient = lit.ambient;
+        out.light_sheen = lit.sheen;
+        out.light_strand = lit.strand;
+        out.light_n_dot_v = lit.n_dot_v;
+    }
     return out;
 }
 
@@ -152,6 +170,97 @@ fn fur_strand_exponent(smoothness: f32) -> f32 {
     return exp2(1.0 + 9.0 * saturate(smoothness));
 }
 
+// Kajiya-Kay (1989) in its exact cone form: (cone, sin_l), cone the cos of
+// the angle between v and the mirror cone of l around the unit strand t,
+// = sin_l sin_v - cos_l cos_v; the lobe is cone^p sin_l (sin_l: the
+// fibre's projected width towards the light). The half-vector form
+// sin(T, H)^(4p) sin_l (one square root less) was measured against it and
+// rejected (worst FLIP 0.144 over the error grid; README).
+fn fur_kajiya_kay_cone(t: vec3<f32>, l: vec3<f32>, v: vec3<f32>) -> vec2<f32> {
+    let t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    let t_dot_v = clamp(dot(t, v), -1.0, 1.0);
+    let sin_l = sqrt(max(1.0 - t_dot_l * t_dot_l, 0.0));
+    let sin_v = sqrt(max(1.0 - t_dot_v * t_dot_v, 0.0));
+    return vec2<f32>(max(sin_l * sin_v - t_dot_l * t_dot_v, 0.0), sin_l);
+}
+
+// The longitudinal lobe cos^p normalised to unit integral over the angle
+// from the cone, 1 / int cos^p = Gamma(p/2 + 1) / (sqrt(pi) Gamma(p/2 +
+// 1/2)) ~ sqrt((2p + 1) / 4pi) (within 2% for p >= 2).
+fn fur_strand_norm(p: f32) -> f32 {
+    return sqrt((2.0 * p + 1.0) * 0.25 * WEFT_INV_PI);
+}
+
+// The reference's lighting with everything that does not depend on the
+// albedo (light, sheen lobe, strand lobe, Fresnel weight, sheen albedo
+// table, SH, environment), for `fast` to evaluate per vertex. What the
+// albedo multiplies is kept apart, so textured albedo stays per pixel.
+struct FurLight {
+    // Main light x n.l / pi (Lambert); w = E(n.v).
+    diffuse: vec4<f32>,
+    // SH irradiance; w = E(n.l).
+    ambient: vec4<f32>,
+    // Sheen with colour 1: Charlie lobe x light + environment x E(n.v);
+    // w = Schlick's weight (1 - l.h)^5.
+    sheen: vec4<f32>,
+    // Strand lobe x light with Fresnel 1 and strand colour 1, but for its
+    // cone^p; w = the signed angle from the cone, a + b - pi (a, b: the
+    // angles of l and v from t), cone = cos(a + b - pi). The angle is
+    // smooth across the peak and interpolates well; the cone^p (p up to
+    // 1024) is not, nor is the cone (flat at its peak), so the fragment
+    // takes cos and pow.
+    strand: vec4<f32>,
+    // n.v for the edge fade.
+    n_dot_v: f32,
+}
+
+fn fur_vertex_light(p: vec3<f32>, normal: vec3<f32>, strand: vec3<f32>) -> FurLight {
+    let smoothness = saturate(material.smoothness);
+    let v = weft_view_direction(p, vec3<f32>(0.0, 0.0, 1.0));
+    let n = weft_safe_normalize(normal, v);
+    let t = weft_safe_normalize(strand, n);
+    let l = weft_main_light_direction();
+    let h = weft_safe_normalize(l + v, n);
+    let n_dot_v = weft_clamp_cos(dot(n, v));
+    let n_dot_l = saturate(dot(n, l));
+    let light = weft_main_light_radiance();
+    let sheen_r = weft_sheen_clamp_roughness(1.0 - smoothness);
+    let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
+    let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
+    let sheen = weft_sheen_charlie(vec3<f32>(1.0), saturate(dot(n, h)), n_dot_v, n_dot_l, sheen_r) * light
+        + weft_prefiltered_radiance(reflect(-v, n), sheen_r) * e_v;
+    let p_exp = fur_strand_exponent(smoothness);
+    let t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    let sin_l = sqrt(max(1.0 - t_dot_l * t_dot_l, 0.0));
+    let cone_angle = acos(t_dot_l) + acos(clamp(dot(t, v), -1.0, 1.0)) - WEFT_PI;
+    let lobe = max(material.strand_strength, 0.0) * fur_strand_norm(p_exp) * sin_l * n_dot_l;
+    var out: FurLight;
+    out.diffuse = vec4<f32>(light * (WEFT_INV_PI * n_dot_l), e_v);
+    out.ambient = vec4<f32>(weft_sh_irradiance(n), e_l);
+    out.sheen = vec4<f32>(sheen, weft_pow5(1.0 - saturate(dot(l, h))));
+    out.strand = vec4<f32>(light * lobe, cone_angle);
+    out.n_dot_v = saturate(dot(n, v));
+    return out;
+}
+
+// `fast`: the reference's terms from the interpolated per-vertex light,
+// times this pixel's albedo and F0 (the algebra of the reference's sum:
+// Schlick's F0 + (1 - F0) w and the sheen colour are linear in F0, the
+// albedo scaling takes the pixel's sheen colour).
+fn fur_shade_fast(in: FurVaryings, base: vec3<f32>) -> vec3<f32> {
+    let metallic = saturate(material.metallic);
+    let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
+    let diffuse_albedo = base * (1.0 - metallic);
+    let sheen_color = saturate(f0 + max(material.sheen_color.rgb, vec3<f32>(0.0)));
+    let direct_scaling = weft_sheen_albedo_scaling(sheen_color, in.light_diffuse.w, in.light_ambient.w);
+    let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, in.light_diffuse.w);
+    let fresnel = f0 + (vec3<f32>(1.0) - f0) * in.light_sheen.w;
+    let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * fresnel;
+    let cone_p = pow(max(cos(in.light_strand.w), 0.0), fur_strand_exponent(material.smoothness));
+    return diffuse_albedo * (in.light_diffuse.rgb * direct_scaling + in.light_ambient.rgb * ambient_scaling)
+        + sheen_color * in.light_sheen.rgb + strand_color * (in.light_strand.rgb * cone_p);
+}
+
 // Radiance of one fur fragment at shell offset `offset` (0: skin).
 fn fur_shade(in: FurVaryings) -> vec4<f32> {
     let uv = fur_transform_uv(in.uv0, material.base_map_st);
@@ -159,80 +268,78 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
     let spot = saturate(textureSample(spot_map, material_sampler, uv).r);
     let base = mix(saturate(base_rgba.rgb), saturate(material.spot_color.rgb), spot);
     let alpha = saturate(base_rgba.a);
-    let metallic = saturate(material.metallic);
-    let smoothness = saturate(material.smoothness);
-    let roughness = 1.0 - smoothness;
-
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
-    let t = weft_safe_normalize(in.strand, n);
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let n_dot_h = saturate(dot(n, h));
-    let l_dot_h = saturate(dot(l, h));
-
-    let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
-    let diffuse_albedo = base * (1.0 - metallic);
-    let light = weft_main_light_radiance();
-    let ambient = weft_sh_irradiance(n);
 
     var color: vec3<f32>;
-    if WEFT_TIER == TIER_SEED {
-        // Seed 003: velvet's look on the shells (materials/velvet seed tier).
-        let visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
-        let f = weft_f_schlick(f0, l_dot_h);
-        let specular = weft_fabric_d(n_dot_h) * visibility * f;
-        let diffuse = weft_diffuse_lambert(diffuse_albedo);
-        let scatter = weft_fabric_scatter(material.sheen_color.rgb, n_dot_l, n_dot_v, material.scatter_scale);
-        color = (diffuse + specular) * light * n_dot_l + ambient * diffuse_albedo + scatter;
+    if WEFT_TIER == TIER_FAST {
+        color = fur_shade_fast(in, base);
     } else {
-        let sheen_color = saturate(f0 + max(material.sheen_color.rgb, vec3<f32>(0.0)));
-        let sheen_r = weft_sheen_clamp_roughness(roughness);
-        let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
-        let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
-        let sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
-        let p = fur_strand_exponent(smoothness);
-        let t_dot_l = clamp(dot(t, l), -1.0, 1.0);
-        let t_dot_v = clamp(dot(t, v), -1.0, 1.0);
-        let sin_l = sqrt(max(1.0 - t_dot_l * t_dot_l, 0.0));
-        // Kajiya-Kay: cos of the angle between v and the mirror cone of l
-        // around T, = sin_l sin_v - cos_l cos_v; times sin_l (the fibre's
-        // projected width towards the light). Both tiers: the half-vector
-        // form sin(T, H)^(4p) sin_l (one square root less) was measured
-        // against it and rejected (worst FLIP 0.144 over the error grid;
-        // README).
-        let sin_v = sqrt(max(1.0 - t_dot_v * t_dot_v, 0.0));
-        let cone = max(sin_l * sin_v - t_dot_l * t_dot_v, 0.0);
-        let strand = pow(cone, p) * sin_l;
-        var scaling = ambient_scaling;
-        if WEFT_TIER == TIER_REFERENCE {
+        let metallic = saturate(material.metallic);
+        let smoothness = saturate(material.smoothness);
+        let roughness = 1.0 - smoothness;
+
+        let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+        let n = weft_safe_normalize(in.world_normal, v);
+        let t = weft_safe_normalize(in.strand, n);
+        let l = weft_main_light_direction();
+        let h = weft_safe_normalize(l + v, n);
+        let n_dot_v = weft_clamp_cos(dot(n, v));
+        let n_dot_l = saturate(dot(n, l));
+        let n_dot_h = saturate(dot(n, h));
+        let l_dot_h = saturate(dot(l, h));
+
+        let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
+        let diffuse_albedo = base * (1.0 - metallic);
+        let light = weft_main_light_radiance();
+        let ambient = weft_sh_irradiance(n);
+
+        if WEFT_TIER == TIER_SEED {
+            // Seed 003: velvet's look on the shells (materials/velvet seed tier).
+            let visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+            let f = weft_f_schlick(f0, l_dot_h);
+            let specular = weft_fabric_d(n_dot_h) * visibility * f;
+            let diffuse = weft_diffuse_lambert(diffuse_albedo);
+            let scatter = weft_fabric_scatter(material.sheen_color.rgb, n_dot_l, n_dot_v, material.scatter_scale);
+            color = (diffuse + specular) * light * n_dot_l + ambient * diffuse_albedo + scatter;
+        } else {
+            let sheen_color = saturate(f0 + max(material.sheen_color.rgb, vec3<f32>(0.0)));
+            let sheen_r = weft_sheen_clamp_roughness(roughness);
+            let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
             let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
-            scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
+            let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
+            let scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
+            let sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            let p = fur_strand_exponent(smoothness);
+            let kk = fur_kajiya_kay_cone(t, l, v);
+            let strand = pow(kk.x, p) * kk.y;
+            // The fibre's surface reflection (the R lobe of hair models):
+            // Schlick Fresnel on the metallic-workflow F0, so dielectric
+            // fibres reflect ~4% at normal incidence; strand colour and
+            // strength scale it. The body shadows the fibres where the
+            // light is below the skin's horizon (n.l).
+            let fresnel = weft_f_schlick(f0, l_dot_h);
+            let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * fresnel;
+            let strand_lobe = strand_color * (max(material.strand_strength, 0.0) * fur_strand_norm(p) * strand * n_dot_l);
+            let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
+            let direct = (sheen + base_direct + strand_lobe) * light;
+            let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * e_v;
+            color = direct + ambient * diffuse_albedo * ambient_scaling + env_sheen;
         }
-        // The longitudinal lobe cos^p normalised to unit integral over the
-        // angle from the cone, 1 / int cos^p = Gamma(p/2 + 1) / (sqrt(pi)
-        // Gamma(p/2 + 1/2)) ~ sqrt((2p + 1) / 4pi) (within 2% for p >= 2);
-        // the body shadows the fibres where the light is below the skin's
-        // horizon (n.l).
-        let norm = sqrt((2.0 * p + 1.0) * 0.25 * WEFT_INV_PI);
-        // The fibre's surface reflection (the R lobe of hair models): Schlick
-        // Fresnel on the metallic-workflow F0, so dielectric fibres reflect
-        // ~4% at normal incidence; strand colour and strength scale it.
-        let fresnel = weft_f_schlick(f0, l_dot_h);
-        let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * fresnel;
-        let strand_lobe = strand_color * (max(material.strand_strength, 0.0) * norm * strand * n_dot_l);
-        let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
-        let direct = (sheen + base_direct + strand_lobe) * light;
-        let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * e_v;
-        color = direct + ambient * diffuse_albedo * ambient_scaling + env_sheen;
     }
 
     // Fur occlusion (seed 001 sec. 8.2.5): darker towards the roots.
     let occlusion = 1.0 - saturate(material.fur_occlusion) * (1.0 - in.offset);
     let radiance = clamp(color * occlusion, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     return vec4<f32>(radiance, alpha);
+}
+
+// n.v for the edge fade: per pixel, or `fast`'s per-vertex value.
+fn fur_fade_n_dot_v(in: FurVaryings) -> f32 {
+    if WEFT_TIER == TIER_FAST {
+        return in.light_n_dot_v;
+    }
+    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    let n = weft_safe_normalize(in.world_normal, v);
+    return saturate(dot(n, v));
 }
 
 @fragment
@@ -242,6 +349,12 @@ fn fs_skin(in: FurVaryings) -> @location(0) vec4<f32> {
 
 @fragment
 fn fs_shell(in: FurVaryings) -> @location(0) vec4<f32> {
+    return fur_shell(in);
+}
+
+// One shell fragment: radiance and blend alpha (the shell bench's fin
+// experiment fades it at the silhouette).
+fn fur_shell(in: FurVaryings) -> vec4<f32> {
     // Coverage first, in uniform control flow (fwidth).
     let noise = fur_noise(in.uv0);
     let o = saturate(in.offset);
@@ -252,9 +365,7 @@ fn fs_shell(in: FurVaryings) -> @location(0) vec4<f32> {
     let coverage = saturate((noise - threshold) / width + 0.5) * step(1e-6, noise);
 
     let shaded = fur_shade(in);
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
-    let fade = 1.0 - saturate(material.edge_fade) * (1.0 - saturate(dot(n, v)));
+    let fade = 1.0 - saturate(material.edge_fade) * (1.0 - fur_fade_n_dot_v(in));
     // The seed's alpha is the opacity of one of its 20 shells, a slab of
     // 1/20 of the fur; a shell of 1/n of it keeps 1 - (1 - a)^(20/n)
     // (Beer-Lambert), so the look at 20 shells is the seed's and more shells

@@ -488,6 +488,7 @@ fn bench_shading(
     // against cost and error (weft_golden::shells).
     let shell_options = weft_golden::shells::ShellOptions {
         force_cpu_timer: options.force_cpu_timer,
+        fins: Some(root.join("materials")),
         ..Default::default()
     };
     let shells =
@@ -502,9 +503,10 @@ fn bench_shading(
         };
     for r in &shells {
         println!(
-            "\n{} shells:\n{}",
+            "\n{} shells:\n{}{}",
             r.material,
-            weft_golden::shells::markdown_table(r)
+            weft_golden::shells::markdown_table(r),
+            weft_golden::shells::silhouette_section(r)
         );
     }
     if write {
@@ -645,12 +647,21 @@ fn write_shell_tables(
         let Ok(text) = std::fs::read_to_string(&path) else {
             continue;
         };
-        let table = weft_golden::shells::markdown_table(r);
-        if let Some(new) = weft_golden::shading::replace_marked(&text, "shells", &table)
-            && new != text
-        {
+        let mut new = text.clone();
+        for (marker, table) in [
+            ("shells", weft_golden::shells::markdown_table(r)),
+            (
+                "fins",
+                weft_golden::shells::silhouette_table(r) + &weft_golden::shells::fins_table(r),
+            ),
+        ] {
+            if let Some(replaced) = weft_golden::shading::replace_marked(&new, marker, &table) {
+                new = replaced;
+            }
+        }
+        if new != text {
             std::fs::write(&path, new).map_err(|e| format!("{}: {e}", path.display()))?;
-            println!("updated the shell table in {}", path.display());
+            println!("updated the shell tables in {}", path.display());
         }
     }
     Ok(())

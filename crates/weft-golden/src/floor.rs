@@ -64,7 +64,7 @@ pub fn build(materials_dir: &Path, work: &Path) -> Result<PathBuf, String> {
         .join(format!("{FLOOR_MATERIAL}.meta.json")))
 }
 
-fn copy_dir(from: &Path, to: &Path) -> Result<(), String> {
+pub(crate) fn copy_dir(from: &Path, to: &Path) -> Result<(), String> {
     std::fs::create_dir_all(to).map_err(|e| format!("{}: {e}", to.display()))?;
     let entries = std::fs::read_dir(from).map_err(|e| format!("{}: {e}", from.display()))?;
     for e in entries {

@@ -8,6 +8,7 @@
 pub mod auto_tier;
 pub mod error_grid;
 pub mod film;
+pub mod fins;
 pub mod floor;
 pub mod glints;
 pub mod project;
@@ -15,6 +16,7 @@ pub mod scene_bench;
 pub mod scenes;
 pub mod shading;
 pub mod shells;
+pub mod silhouette;
 
 use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};

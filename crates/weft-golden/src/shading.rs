@@ -401,9 +401,10 @@ pub struct ImageError {
     pub pixels: usize,
 }
 
-/// Object pixels: those not left at the transparent-black clear colour in
-/// either image.
-pub fn image_error(reference: &HdrImage, test: &HdrImage) -> ImageError {
+/// Per-pixel FLIP of `test` against `reference` (ACES tone mapping, sRGB8,
+/// row-major) and the object mask: pixels not left at the transparent-black
+/// clear colour in either image.
+pub fn flip_map(reference: &HdrImage, test: &HdrImage) -> (Vec<f32>, Vec<bool>) {
     assert_eq!(
         (reference.width, reference.height),
         (test.width, test.height)
@@ -427,6 +428,13 @@ pub fn image_error(reference: &HdrImage, test: &HdrImage) -> ImageError {
         nv_flip::DEFAULT_PIXELS_PER_DEGREE,
     )
     .to_vec();
+    (flip, mask)
+}
+
+/// Object pixels: those not left at the transparent-black clear colour in
+/// either image.
+pub fn image_error(reference: &HdrImage, test: &HdrImage) -> ImageError {
+    let (flip, mask) = flip_map(reference, test);
     let values: Vec<f64> = flip
         .iter()
         .zip(&mask)
