@@ -69,6 +69,10 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ),
     ("source_outside_root", &["source-outside-root"]),
     ("stage_mismatch", &["stage-mismatch"]),
+    (
+        "table_errors",
+        &["unknown-value", "out-of-range", "missing-key", "duplicate"],
+    ),
     ("tier_relations", &["tier-relation"]),
     ("toml_syntax", &["toml-syntax"]),
     ("too_many_textures", &["gpu-limit"]),

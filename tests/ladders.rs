@@ -23,6 +23,7 @@ const HONEST_LADDERS: &[&str] = &[
     "microcylinder",
     "satin",
     "silk",
+    "skin",
     "standard",
     "velvet",
 ];

@@ -30,6 +30,7 @@ pub mod specialise;
 pub mod stage_io;
 pub mod staging;
 pub mod stamp;
+pub mod tables;
 pub mod unchanged;
 pub mod variant;
 

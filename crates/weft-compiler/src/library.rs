@@ -188,7 +188,12 @@ pub fn compile_material_cached(
     }
     warn_unread_parameters(m, &compiled, diags);
     let aliases = variant::find_aliases(&compiled);
-    let mut files = Vec::new();
+    // Baked tables first: files of the material whatever its variants read.
+    let mut files: Vec<(String, Vec<u8>)> = m
+        .tables
+        .iter()
+        .map(|t| (crate::tables::file_name(t), crate::tables::bake(t)))
+        .collect();
     let mut variants_meta = Vec::new();
     for ((key, v), alias) in keys.iter().zip(compiled).zip(aliases) {
         let keywords = key

@@ -26,6 +26,8 @@ pub struct Prelude {
     pub lines: Vec<(String, Target)>,
     /// Texture-like parameter -> its group-1 binding.
     pub texture_bindings: Vec<(String, u32)>,
+    /// Baked table (`[tables]`) -> its group-1 binding.
+    pub table_bindings: Vec<(String, u32)>,
 }
 
 /// A uniform member generated for a parameter.
@@ -131,6 +133,48 @@ pub fn generate(m: &Material) -> Prelude {
             binding += 1;
         }
     }
+    // Baked tables after the parameters' textures: the binding, its recipe's
+    // values as constants (a reference tier integrates the same function),
+    // and an accessor that samples at texel centres.
+    let mut table_bindings = Vec::new();
+    for t in &m.tables {
+        let here = decl(&t.decl);
+        let n = &t.name;
+        let [w, h] = t.size;
+        let mut body = vec![
+            format!("@group({MATERIAL_GROUP}) @binding({binding}) var {n}: texture_2d<f32>;"),
+            format!("// `{n}`: a {w}x{h} table baked by weft; uv in [0, 1] maps to texel centres."),
+            format!("fn table_{n}(uv: vec2<f32>) -> vec4<f32> {{"),
+            format!(
+                "    let size = vec2<f32>({}, {});",
+                f32_lit(w.into()),
+                f32_lit(h.into())
+            ),
+            "    let st = (clamp(uv, vec2<f32>(0.0), vec2<f32>(1.0)) * (size - 1.0) + 0.5) / size;"
+                .into(),
+            format!("    return textureSampleLevel({n}, material_clamp_sampler, st, 0.0);"),
+            "}".into(),
+        ];
+        match &t.recipe {
+            weft_front::model::TableRecipe::PreintegratedSkin { shape, half_ring } => {
+                body.push(format!(
+                    "const {n}_shape: vec3<f32> = vec3<f32>({}, {}, {});",
+                    f32_lit(shape[0]),
+                    f32_lit(shape[1]),
+                    f32_lit(shape[2])
+                ));
+                let x_max = if *half_ring {
+                    "1.5707963267948966"
+                } else {
+                    "3.141592653589793"
+                };
+                body.push(format!("const {n}_ring: f32 = {x_max};"));
+            }
+        }
+        lines.extend(body.into_iter().map(|l| (l, here.clone())));
+        table_bindings.push((n.clone(), binding));
+        binding += 1;
+    }
 
     for k in &m.keywords {
         let (ty, default) = match k.kind {
@@ -220,5 +264,6 @@ pub fn generate(m: &Material) -> Prelude {
     Prelude {
         lines,
         texture_bindings,
+        table_bindings,
     }
 }

@@ -16,7 +16,10 @@ use weft_meta::{
 /// A group-1 texture binding of the variant: the parameter it carries, the
 /// format its data comes in and the built-in default the variant binds.
 pub struct MaterialTexture {
+    /// The parameter, or for a baked table (`table`) its name.
     pub param: String,
+    /// Set for a baked table: what the binding carries (no parameter).
+    pub table: Option<weft_meta::EngineResource>,
     pub binding: u32,
     pub format: String,
     /// None for gradient ramps (their default is the baked ramp).
@@ -208,13 +211,17 @@ pub fn bindings(
             }
             _ => None,
         };
+        let table = material_texture.and_then(|t| t.table.clone());
         let resource = (rb.group != MATERIAL_GROUP)
             .then(|| engine_binding::engine_resource(&name))
-            .flatten();
+            .flatten()
+            .or(table.clone());
         out.push(Binding {
             group: rb.group,
             binding: rb.binding,
-            parameter: material_texture.map(|t| t.param.clone()),
+            parameter: material_texture
+                .filter(|t| t.table.is_none())
+                .map(|t| t.param.clone()),
             name,
             kind,
             stages,

@@ -145,6 +145,7 @@ pub fn material_textures<'a>(
                 "rgba8unorm"
             };
             Some(reflect::MaterialTexture {
+                table: None,
                 param: name.clone(),
                 binding: *binding,
                 format: format.into(),
@@ -158,6 +159,16 @@ pub fn material_textures<'a>(
                 }),
             })
         })
+        .chain(prelude.table_bindings.iter().filter_map(|(name, binding)| {
+            let t = m.tables.iter().find(|t| &t.name == name)?;
+            Some(reflect::MaterialTexture {
+                table: Some(crate::tables::resource(m, t)),
+                param: name.clone(),
+                binding: *binding,
+                format: crate::tables::TABLE_FORMAT.into(),
+                default: None,
+            })
+        }))
         .collect()
 }
 

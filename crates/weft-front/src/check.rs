@@ -131,6 +131,16 @@ fn check_names(m: &Material, diags: &mut Diagnostics) {
             names.push((format!("{}_st", p.name), &p.decl));
         }
     }
+    for t in &m.tables {
+        for n in [
+            t.name.clone(),
+            format!("table_{}", t.name),
+            format!("{}_shape", t.name),
+            format!("{}_ring", t.name),
+        ] {
+            names.push((n, &t.decl));
+        }
+    }
     for k in &m.keywords {
         names.push((k.name.clone(), &k.decl));
         if k.kind == KeywordKind::Enum {

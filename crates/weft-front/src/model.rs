@@ -59,6 +59,8 @@ pub struct Material {
     /// The WGSL `source` of each shared pass (relative to the root), where
     /// its file names it: composed like a `[material] includes` entry.
     pub pass_sources: Vec<(String, Loc)>,
+    /// Lookup tables the toolchain bakes for this material (`[tables]`).
+    pub tables: Vec<BakedTable>,
     /// WebGPU limits raised by `[limits]` (the rest are WebGPU's defaults).
     pub limits: weft_meta::DeviceLimits,
     /// Where each declared limit is written, in `file`.
@@ -230,6 +232,27 @@ pub struct Pass {
     /// Where `vertex` / `fragment` are written (the pass itself when absent).
     pub vertex_span: Span,
     pub fragment_span: Span,
+}
+
+/// A `[tables.<name>]` entry: a 2-D table the toolchain bakes at build time
+/// (a texture file beside the variants, bound in group 1).
+#[derive(Clone, Debug)]
+pub struct BakedTable {
+    pub name: String,
+    pub recipe: TableRecipe,
+    /// Texels along u and v.
+    pub size: [u32; 2],
+    pub decl: Loc,
+}
+
+/// What a baked table holds.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TableRecipe {
+    /// Pre-integrated skin diffuse (Penner & Borshukov 2011) over the Burley
+    /// normalised diffusion profile with shape `shape` (s per RGB channel):
+    /// u = N·L · 0.5 + 0.5, v = curvature 1/r. `half_ring`: the seed's
+    /// integral over ±π/2 instead of the whole ring.
+    PreintegratedSkin { shape: [f64; 3], half_ring: bool },
 }
 
 #[derive(Clone, Debug)]

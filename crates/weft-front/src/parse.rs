@@ -13,6 +13,7 @@ mod params;
 mod pass_files;
 mod passes;
 mod presets;
+mod tables;
 
 use crate::check::Sites;
 use crate::condition::parse_condition_text;
@@ -24,7 +25,10 @@ use toml::de::{DeTable, DeValue};
 
 pub const TOP_KEYS: &[&str] = &[
     "material", "groups", "params", "keywords", "tier", "variants", "presets", "pass", "limits",
+    "tables",
 ];
+/// Keys of a `[tables.<name>]` entry.
+pub const TABLE_KEYS: &[&str] = &["recipe", "size", "shape", "ring"];
 pub const MATERIAL_KEYS: &[&str] = &[
     "name",
     "label",
@@ -231,6 +235,7 @@ pub fn parse_material(
         passes: Vec::new(),
         pass_files: Vec::new(),
         pass_sources: Vec::new(),
+        tables: Vec::new(),
         limits: weft_meta::DeviceLimits::default(),
         limit_spans: Vec::new(),
         decl,
@@ -246,6 +251,7 @@ pub fn parse_material(
 
     keywords::parse_tiers(&top, &mut material, cx);
     limits::parse_limits(&top, &mut material, cx);
+    tables::parse_tables(&top, &mut material, cx);
 
     if let Some(v) = top
         .get("variants")

@@ -7,7 +7,6 @@
 
 use crate::engine_uniforms::{UniformBlock, frame_member_type, object_bytes, object_member_type};
 use crate::error::{Error, Result};
-use crate::luts::{SHEEN_LUT_ID, SPLIT_SUM_LUT_ID};
 use crate::math::Mat4;
 use crate::meta_wgpu::{sampler_descriptor, sampler_key, texture_format};
 use crate::pipelines::{ShaderInput, VariantPipelines};
@@ -177,7 +176,9 @@ impl Renderer {
             let Some(r) = engine_resource(b) else {
                 continue;
             };
-            if r.id != SPLIT_SUM_LUT_ID && r.id != SHEEN_LUT_ID {
+            // The engine interface's LUTs and a material's baked tables
+            // (`[tables]`): any resource that ships its texels in a file.
+            if r.file.is_none() {
                 continue;
             }
             let file = lut_file(b, r)?;
@@ -272,7 +273,7 @@ impl Renderer {
                 "frame" => block(frame),
                 "object" => block(object),
                 "environment" => Ok(wgpu::BindingResource::TextureView(&res.env.view)),
-                SPLIT_SUM_LUT_ID | SHEEN_LUT_ID => {
+                _ if r.file.is_some() => {
                     let file = lut_file(b, r)?;
                     let view = self.lut_views.get(&file.path).ok_or_else(|| {
                         Error::Gpu(format!("LUT `{}` was not created", file.path))

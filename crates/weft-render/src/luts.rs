@@ -178,7 +178,7 @@ impl Luts {
         };
         let texel = texel_bytes(&file.format).ok_or_else(|| {
             Error::Metadata(format!(
-                "LUT `{}` has format `{}`; weft-render reads rg16float and r16float tables",
+                "LUT `{}` has format `{}`; weft-render reads rgba16float, rg16float and r16float tables",
                 file.path, file.format
             ))
         })?;
@@ -231,6 +231,7 @@ impl From<BrdfLut> for Luts {
 /// Bytes per texel of the LUT formats weft bakes.
 fn texel_bytes(format: &str) -> Option<u64> {
     match format {
+        "rgba16float" => Some(8),
         "rg16float" => Some(4),
         "r16float" => Some(2),
         _ => None,

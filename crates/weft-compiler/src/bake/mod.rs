@@ -2,4 +2,5 @@
 //! written under `generated/luts/` and bound through the engine interface.
 
 pub mod sheen;
+pub mod skin;
 pub mod split_sum;

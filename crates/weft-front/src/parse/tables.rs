@@ -1,0 +1,168 @@
+//! `[tables.<name>]`: lookup tables the toolchain bakes at build time, as it
+//! bakes the split-sum LUT, from parameters written here (the bake itself is
+//! weft-compiler's `bake/`). Each becomes a group-1 texture of the material
+//! and a file beside its variants (docs/material-format.md, `[tables]`).
+
+use super::{TABLE_KEYS, is_snake_ident};
+use crate::model::*;
+use crate::toml_reader::{Cx, Table};
+
+/// Recipes and what each is for (the hint of an unknown recipe).
+pub const RECIPES: &[(&str, &str)] = &[(
+    "preintegrated_skin",
+    "Penner & Borshukov's pre-integrated skin diffuse over the Burley profile",
+)];
+
+/// Texels per axis a table may have.
+pub const TABLE_SIZE_RANGE: [u32; 2] = [2, 512];
+
+pub(super) fn parse_tables(top: &Table, material: &mut Material, cx: &mut Cx) {
+    let Some(tables) = top
+        .get("tables")
+        .and_then(|v| Table::new(v, "[tables]", cx))
+    else {
+        return;
+    };
+    for (name, span, v) in tables.entries() {
+        let Some(t) = Table::new(v, format!("table `{name}`"), cx) else {
+            continue;
+        };
+        t.check_keys(TABLE_KEYS, cx);
+        if !is_snake_ident(name) {
+            cx.error_with_note(
+                "bad-name",
+                format!("table name `{name}` is not a lower-case identifier"),
+                span.clone(),
+                "used as a WGSL name and a file name",
+                "use lower_snake_case letters, digits and underscores",
+            );
+            continue;
+        }
+        let size = match t.numbers("size", cx) {
+            Some(s) if s.len() == 2 && s.iter().all(|n| n.fract() == 0.0) => {
+                let ok = |n: f64| {
+                    (f64::from(TABLE_SIZE_RANGE[0])..=f64::from(TABLE_SIZE_RANGE[1])).contains(&n)
+                };
+                if !ok(s[0]) || !ok(s[1]) {
+                    cx.error(
+                        "out-of-range",
+                        format!(
+                            "a table has {} to {} texels per axis",
+                            TABLE_SIZE_RANGE[0], TABLE_SIZE_RANGE[1]
+                        ),
+                        t.span_of("size"),
+                        "here",
+                    );
+                    continue;
+                }
+                [s[0] as u32, s[1] as u32]
+            }
+            Some(_) => {
+                cx.error(
+                    "wrong-type",
+                    "`size` is two whole numbers: texels along u and v",
+                    t.span_of("size"),
+                    "here",
+                );
+                continue;
+            }
+            None => {
+                cx.error_with_note(
+                    "missing-key",
+                    format!("table `{name}` has no `size`"),
+                    span.clone(),
+                    "in this table",
+                    "add `size = [64, 64]` (texels along u and v)",
+                );
+                continue;
+            }
+        };
+        let recipe = match t.string("recipe", cx).as_deref() {
+            Some("preintegrated_skin") => {
+                let Some(shape) = skin_shape(&t, cx) else {
+                    continue;
+                };
+                let half_ring = match t.string("ring", cx).as_deref() {
+                    None | Some("full") => false,
+                    Some("half") => true,
+                    Some(other) => {
+                        cx.error_with_note(
+                            "unknown-value",
+                            format!("unknown `ring` value `{other}`"),
+                            t.span_of("ring"),
+                            "unknown",
+                            "`full` (Penner & Borshukov: the whole ring) or `half` (the seed: ±π/2)",
+                        );
+                        continue;
+                    }
+                };
+                TableRecipe::PreintegratedSkin { shape, half_ring }
+            }
+            Some(other) => {
+                let names: Vec<&str> = RECIPES.iter().map(|(n, _)| *n).collect();
+                let hint = crate::diag::did_you_mean(other, names.iter().copied()).map_or_else(
+                    || {
+                        let list: Vec<String> = RECIPES
+                            .iter()
+                            .map(|(n, w)| format!("`{n}` ({w})"))
+                            .collect();
+                        format!("known recipes: {}", list.join(", "))
+                    },
+                    |s| format!("did you mean `{s}`?"),
+                );
+                cx.error_with_note(
+                    "unknown-value",
+                    format!("unknown table recipe `{other}`"),
+                    t.span_of("recipe"),
+                    "unknown",
+                    hint,
+                );
+                continue;
+            }
+            None => {
+                cx.error_with_note(
+                    "missing-key",
+                    format!("table `{name}` has no `recipe`"),
+                    span.clone(),
+                    "in this table",
+                    "add `recipe = \"preintegrated_skin\"`",
+                );
+                continue;
+            }
+        };
+        material.tables.push(BakedTable {
+            name: name.to_string(),
+            recipe,
+            size,
+            decl: Loc {
+                file: cx.file,
+                span: span.clone(),
+            },
+        });
+    }
+}
+
+/// The Burley shape s per channel: three positive numbers (1 / the
+/// scattering distance, in the units of the curvature radius).
+fn skin_shape(t: &Table, cx: &mut Cx) -> Option<[f64; 3]> {
+    let Some(s) = t.numbers("shape", cx) else {
+        cx.error_with_note(
+            "missing-key",
+            "a `preintegrated_skin` table needs `shape`",
+            t.span.clone(),
+            "in this table",
+            "add `shape = [r, g, b]`: the Burley profile's s per channel (1 / scattering distance), e.g. [1.0, 2.5, 4.0]",
+        );
+        return None;
+    };
+    if s.len() != 3 || s.iter().any(|x| !(x.is_finite() && *x > 0.0 && *x <= 1e4)) {
+        cx.error(
+            "out-of-range",
+            "`shape` is three numbers in (0, 10000]: s per RGB channel",
+            t.span_of("shape"),
+            "here",
+        );
+        return None;
+    }
+    Some([s[0], s[1], s[2]])
+}

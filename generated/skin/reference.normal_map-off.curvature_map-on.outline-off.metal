@@ -1,0 +1,468 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_4 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_4 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    metal::float4 base_map_st;
+    float normal_strength;
+    float roughness;
+    float specular;
+    float curvature_factor;
+    float dark_bound;
+    float bright_bound;
+    float lobe_weight;
+    char _pad9[4];
+    metal::float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    char _pad12[8];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant metal::float3 skin_lut_shape = metal::float3(1.0, 2.5, 5.0);
+constant float skin_lut_ring = 3.1415927;
+constant metal::float3 seed_lut_shape = metal::float3(1.0, 2.5, 5.0);
+constant float seed_lut_ring = 1.5707964;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+float weft_d_ggx_nh(
+    metal::float3 n_1,
+    metal::float3 h,
+    float roughness_1
+) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = _e3 * _e3;
+    float a2_ = a * a;
+    float noh = metal::saturate(metal::dot(n_1, h));
+    metal::float3 nxh = metal::cross(n_1, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+float weft_v_smith_ggx_correlated(
+    float n_dot_v,
+    float n_dot_l,
+    float roughness_2
+) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_1 = _e3 * _e3;
+    float a2_1 = a_1 * a_1;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
+    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
+    return 0.5 / (lv + ll);
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_4 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_3,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness_3);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_4,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::float2 weft_env_brdf_lut(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
+) {
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+metal::float3 skin_preintegrated(
+    float cos_theta,
+    float curvature_1,
+    metal::float3 shape,
+    float x_max
+) {
+    metal::float3 num = metal::float3(0.0);
+    metal::float3 den = metal::float3(0.0);
+    uint k = 0u;
+    float g = {};
+    float dg = {};
+    float flat = metal::max(cos_theta, 0.0);
+    if (curvature_1 <= 0.0) {
+        return metal::float3(flat);
+    }
+    float r_1 = 1.0 / curvature_1;
+    float theta = metal::acos(metal::clamp(cos_theta, -1.0, 1.0));
+    float s_max = metal::max(shape.x, metal::max(shape.y, shape.z));
+    float a_2 = metal::min(metal::log(1.0 + ((x_max * s_max) * r_1)), 40.0);
+    float e_1 = metal::exp(a_2) - 1.0;
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e100 = k;
+            k = _e100 + 1u;
+        }
+        loop_init = false;
+        uint _e38 = k;
+        if (_e38 < 64u) {
+        } else {
+            break;
+        }
+        {
+            uint _e41 = k;
+            float t = (static_cast<float>(_e41) + 0.5) / 64.0;
+            g = t;
+            dg = 1.0;
+            if (a_2 >= 0.0001) {
+                g = (metal::exp(a_2 * t) - 1.0) / e_1;
+                dg = (a_2 * metal::exp(a_2 * t)) / e_1;
+            }
+            float _e61 = g;
+            float x_1 = x_max * _e61;
+            float _e63 = dg;
+            float jac = x_max * _e63;
+            float d_1 = (2.0 * r_1) * metal::abs(metal::sin(0.5 * x_1));
+            float light = metal::max(metal::cos(theta + x_1), 0.0) + metal::max(metal::cos(theta - x_1), 0.0);
+            metal::float3 w_1 = (metal::exp(-(shape) * d_1) + metal::exp((-(shape) * d_1) / metal::float3(3.0))) * jac;
+            metal::float3 _e92 = num;
+            num = _e92 + (light * w_1);
+            metal::float3 _e95 = den;
+            den = _e95 + (2.0 * w_1);
+        }
+    }
+    metal::float3 _e103 = num;
+    metal::float3 _e104 = den;
+    metal::float3 _e109 = den;
+    return metal::select(metal::float3(flat), _e103 / metal::max(_e104, metal::float3(0.000000000000000000000000000001)), _e109 > metal::float3(0.0));
+}
+
+float skin_dual_ggx(
+    metal::float3 n_3,
+    metal::float3 h_1,
+    float n_dot_v_2,
+    float n_dot_l_1,
+    float v_dot_h_1,
+    float roughness_6,
+    float w,
+    float f0_2
+) {
+    float r0_ = metal::clamp(roughness_6 * 0.75, 0.0, 1.0);
+    float r1_ = metal::clamp(roughness_6 * 1.3, 0.0, 1.0);
+    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
+    float lobe0_ = _e18 * _e19;
+    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
+    float lobe1_ = _e21 * _e22;
+    metal::float3 _e25 = weft_f_schlick(metal::float3(f0_2), v_dot_h_1);
+    float f = _e25.x;
+    return metal::mix(lobe0_, lobe1_, metal::saturate(w)) * f;
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> curvature_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> specular_mask [[texture(4)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    float curvature = {};
+    metal::float3 n = {};
+    metal::float3 falloff = {};
+    float specular = {};
+    metal::float3 kd = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float3 albedo_1 = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    float _e19 = material.roughness;
+    float roughness_7 = metal::clamp(_e19, 0.05, 1.0);
+    float _e25 = material.specular;
+    float f0_3 = metal::clamp(_e25, 0.0, 1.0);
+    metal::float4 _e31 = specular_mask.sample(material_sampler, _e5);
+    float mask = metal::saturate(_e31.x);
+    metal::float3 _e39 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
+    metal::float3 _e42 = metal::fwidth(_e41);
+    float dn = metal::length(_e42);
+    metal::float3 _e45 = metal::fwidth(in_1.world_position);
+    float dp = metal::length(_e45);
+    float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
+    metal::float4 _e54 = curvature_map.sample(material_sampler, _e5);
+    float mapped = _e54.x;
+    float _e58 = material.curvature_factor;
+    float factor = metal::max(_e58, 0.0);
+    curvature = metal::saturate(factor * estimated);
+    {
+        curvature = metal::saturate(factor * mapped);
+    }
+    n = _e41;
+    metal::float3 _e67 = weft_main_light_direction(weft_frame);
+    metal::float3 _e69 = n;
+    metal::float3 _e70 = weft_safe_normalize(_e67 + _e39, _e69);
+    metal::float3 _e71 = n;
+    float _e73 = weft_clamp_cos(metal::dot(_e71, _e39));
+    metal::float3 _e74 = n;
+    float n_dot_l_2 = metal::saturate(metal::dot(_e74, _e67));
+    float v_dot_h_2 = metal::saturate(metal::dot(_e39, _e70));
+    metal::float3 _e79 = n;
+    float _e87 = material.dark_bound;
+    float _e90 = material.bright_bound;
+    float u = metal::clamp((metal::dot(_e79, _e67) * 0.5) + 0.5, _e87, _e90);
+    {
+        float _e97 = curvature;
+        metal::float3 _e100 = skin_preintegrated((2.0 * u) - 1.0, _e97, skin_lut_shape, skin_lut_ring);
+        falloff = _e100;
+    }
+    metal::float3 _e101 = falloff;
+    falloff = metal::max(_e101, metal::float3(0.0));
+    metal::float2 _e106 = weft_env_brdf_lut(_e73, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e107 = weft_env_brdf_from_lut(metal::float3(f0_3), _e106);
+    {
+        metal::float3 _e110 = n;
+        float _e113 = material.lobe_weight;
+        float _e114 = skin_dual_ggx(_e110, _e70, _e73, n_dot_l_2, v_dot_h_2, roughness_7, _e113, f0_3);
+        specular = (_e114 * n_dot_l_2) * mask;
+        kd = metal::max(metal::float3(1.0) - _e107, metal::float3(0.0));
+    }
+    metal::float3 _e123 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e124 = kd;
+    metal::float3 _e125 = weft_diffuse_lambert(albedo_1);
+    metal::float3 _e127 = falloff;
+    float _e129 = specular;
+    metal::float3 direct = (((_e124 * _e125) * _e127) + metal::float3(_e129)) * _e123;
+    metal::float3 _e133 = n;
+    metal::float3 _e134 = weft_sh_irradiance(_e133, weft_frame);
+    metal::float3 _e135 = kd;
+    metal::float3 indirect_diffuse = (_e134 * _e135) * albedo_1;
+    metal::float3 _e139 = n;
+    metal::float3 _e141 = weft_prefiltered_radiance(metal::reflect(-(_e39), _e139), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e141 * _e107) * mask;
+    metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
+    metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha) };
+}

@@ -1,0 +1,374 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    base_map_st: vec4<f32>,
+    normal_strength: f32,
+    roughness: f32,
+    specular: f32,
+    curvature_factor: f32,
+    dark_bound: f32,
+    bright_bound: f32,
+    lobe_weight: f32,
+    outline_color: vec4<f32>,
+    outline_width: f32,
+    outline_max_distance: f32,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const skin_lut_shape: vec3<f32> = vec3<f32>(1f, 2.5f, 5f);
+const skin_lut_ring: f32 = 3.1415927f;
+const seed_lut_shape: vec3<f32> = vec3<f32>(1f, 2.5f, 5f);
+const seed_lut_ring: f32 = 1.5707964f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var curvature_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var specular_mask: texture_2d<f32>;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a = (_e3 * _e3);
+    let a2_ = (a * a);
+    let noh = saturate(dot(n_1, h));
+    let nxh = cross(n_1, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_1 = (_e3 * _e3);
+    let a2_1 = (a_1 * a_1);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn skin_preintegrated(cos_theta: f32, curvature_1: f32, shape: vec3<f32>, x_max: f32) -> vec3<f32> {
+    var num: vec3<f32> = vec3(0f);
+    var den: vec3<f32> = vec3(0f);
+    var k: u32 = 0u;
+    var g: f32;
+    var dg: f32;
+
+    let flat = max(cos_theta, 0f);
+    if (curvature_1 <= 0f) {
+        return vec3(flat);
+    }
+    let r_1 = (1f / curvature_1);
+    let theta = acos(clamp(cos_theta, -1f, 1f));
+    let s_max = max(shape.x, max(shape.y, shape.z));
+    let a_2 = min(log((1f + ((x_max * s_max) * r_1))), 40f);
+    let e_1 = (exp(a_2) - 1f);
+    loop {
+        let _e38 = k;
+        if (_e38 < 64u) {
+        } else {
+            break;
+        }
+        {
+            let _e41 = k;
+            let t = ((f32(_e41) + 0.5f) / 64f);
+            g = t;
+            dg = 1f;
+            if (a_2 >= 0.0001f) {
+                g = ((exp((a_2 * t)) - 1f) / e_1);
+                dg = ((a_2 * exp((a_2 * t))) / e_1);
+            }
+            let _e61 = g;
+            let x_1 = (x_max * _e61);
+            let _e63 = dg;
+            let jac = (x_max * _e63);
+            let d_1 = ((2f * r_1) * abs(sin((0.5f * x_1))));
+            let light = (max(cos((theta + x_1)), 0f) + max(cos((theta - x_1)), 0f));
+            let w_1 = ((exp((-(shape) * d_1)) + exp(((-(shape) * d_1) / vec3(3f)))) * jac);
+            let _e92 = num;
+            num = (_e92 + (light * w_1));
+            let _e95 = den;
+            den = (_e95 + (2f * w_1));
+        }
+        continuing {
+            let _e100 = k;
+            k = (_e100 + 1u);
+        }
+    }
+    let _e103 = num;
+    let _e104 = den;
+    let _e109 = den;
+    return select(vec3(flat), (_e103 / max(_e104, vec3(0.000000000000000000000000000001f))), (_e109 > vec3(0f)));
+}
+
+fn skin_dual_ggx(n_3: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+    let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
+    let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
+    let _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
+    let lobe0_ = (_e18 * _e19);
+    let _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
+    let lobe1_ = (_e21 * _e22);
+    let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
+    let f = _e25.x;
+    return (mix(lobe0_, lobe1_, saturate(w)) * f);
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var curvature: f32;
+    var n: vec3<f32>;
+    var falloff: vec3<f32>;
+    var specular: f32;
+    var kd: vec3<f32>;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let albedo_1 = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e19 = material.roughness;
+    let roughness_7 = clamp(_e19, 0.05f, 1f);
+    let _e25 = material.specular;
+    let f0_3 = clamp(_e25, 0f, 1f);
+    let _e31 = textureSample(specular_mask, material_sampler, _e5);
+    let mask = saturate(_e31.x);
+    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
+    let _e42 = fwidth(_e41);
+    let dn = length(_e42);
+    let _e45 = fwidth(in_1.world_position);
+    let dp = length(_e45);
+    let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
+    let _e54 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e54.x;
+    let _e58 = material.curvature_factor;
+    let factor = max(_e58, 0f);
+    curvature = saturate((factor * estimated));
+    {
+        curvature = saturate((factor * mapped));
+    }
+    n = _e41;
+    let _e67 = weft_main_light_direction();
+    let _e69 = n;
+    let _e70 = weft_safe_normalize((_e67 + _e39), _e69);
+    let _e71 = n;
+    let _e73 = weft_clamp_cos(dot(_e71, _e39));
+    let _e74 = n;
+    let n_dot_l_2 = saturate(dot(_e74, _e67));
+    let v_dot_h_2 = saturate(dot(_e39, _e70));
+    let _e79 = n;
+    let _e87 = material.dark_bound;
+    let _e90 = material.bright_bound;
+    let u = clamp(((dot(_e79, _e67) * 0.5f) + 0.5f), _e87, _e90);
+    {
+        let _e97 = curvature;
+        let _e100 = skin_preintegrated(((2f * u) - 1f), _e97, skin_lut_shape, skin_lut_ring);
+        falloff = _e100;
+    }
+    let _e101 = falloff;
+    falloff = max(_e101, vec3(0f));
+    let _e106 = weft_env_brdf_lut(_e73, roughness_7);
+    let _e107 = weft_env_brdf_from_lut(vec3(f0_3), _e106);
+    {
+        let _e110 = n;
+        let _e113 = material.lobe_weight;
+        let _e114 = skin_dual_ggx(_e110, _e70, _e73, n_dot_l_2, v_dot_h_2, roughness_7, _e113, f0_3);
+        specular = ((_e114 * n_dot_l_2) * mask);
+        kd = max((vec3(1f) - _e107), vec3(0f));
+    }
+    let _e123 = weft_main_light_radiance();
+    let _e124 = kd;
+    let _e125 = weft_diffuse_lambert(albedo_1);
+    let _e127 = falloff;
+    let _e129 = specular;
+    let direct = ((((_e124 * _e125) * _e127) + vec3(_e129)) * _e123);
+    let _e133 = n;
+    let _e134 = weft_sh_irradiance(_e133);
+    let _e135 = kd;
+    let indirect_diffuse = ((_e134 * _e135) * albedo_1);
+    let _e139 = n;
+    let _e141 = weft_prefiltered_radiance(reflect(-(_e39), _e139), roughness_7);
+    let indirect_specular = ((_e141 * _e107) * mask);
+    let color = ((direct + indirect_diffuse) + indirect_specular);
+    let radiance = clamp(color, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}

@@ -1,0 +1,308 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    float normal_strength;
+    float roughness;
+    float specular;
+    float curvature_factor;
+    float dark_bound;
+    float bright_bound;
+    float lobe_weight;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const vec3 skin_lut_shape = vec3(1.0, 2.5, 5.0);
+const float skin_lut_ring = 3.1415927;
+const vec3 seed_lut_shape = vec3(1.0, 2.5, 5.0);
+const float seed_lut_ring = 1.5707964;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 5) uniform sampler2D _group_1_binding_6_fs;
+
+layout(binding = 6) uniform sampler2D _group_1_binding_8_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec4 table_seed_lut(vec2 uv) {
+    vec2 size = vec2(64.0, 64.0);
+    vec2 st_1 = (((clamp(uv, vec2(0.0), vec2(1.0)) * (size - vec2(1.0))) + vec2(0.5)) / size);
+    vec4 _e20 = textureLod(_group_1_binding_8_fs, vec2(st_1), 0.0);
+    return _e20;
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+    vec2 uv_2 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_2), 0.0);
+    return _e8.xy;
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
+    return ((uv_1 * st.xy) + st.zw);
+}
+
+float skin_seed_specular(vec3 n_4, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_4, h), 0.0, 1.0);
+    float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
+    float r2_ = (roughness_3 * roughness_3);
+    float normalization = ((roughness_3 * 4.0) + 2.0);
+    float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
+    float nl = clamp(dot(n_4, l), 0.0, 1.0);
+    float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
+    float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
+    float ggx = (r2_ / denom);
+    float second = ((((2.0 * r2_) / denom) * lobe_weight) * mask);
+    return ((((ggx / 2.0) + second) * s_ao) / WEFT_PI);
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    float curvature = 0.0;
+    vec3 n = vec3(0.0);
+    vec3 falloff = vec3(0.0);
+    float specular = 0.0;
+    vec3 kd = vec3(0.0);
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 albedo_1 = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    float _e19 = _group_1_binding_0_fs.roughness;
+    float roughness_4 = clamp(_e19, 0.05, 1.0);
+    float _e25 = _group_1_binding_0_fs.specular;
+    float f0_1 = clamp(_e25, 0.0, 1.0);
+    vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
+    float mask_1 = clamp(_e31.x, 0.0, 1.0);
+    vec3 _e39 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
+    vec3 _e42 = fwidth(_e41);
+    float dn = length(_e42);
+    vec3 _e45 = fwidth(in_1.world_position);
+    float dp = length(_e45);
+    float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
+    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e54.x;
+    float _e58 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e58, 0.0);
+    curvature = clamp((factor * estimated), 0.0, 1.0);
+    {
+        curvature = clamp((factor * mapped), 0.0, 1.0);
+    }
+    n = _e41;
+    {
+        vec3 _e67 = n;
+        mat3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
+        vec4 _e72 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_1 = _e72.xyz;
+        float _e76 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e77 = weft_unpack_normal(texel_1, _e76);
+        vec3 _e78 = weft_normal_from_tangent_space(_e69, _e77);
+        n = _e78;
+    }
+    vec3 _e79 = weft_main_light_direction();
+    vec3 _e81 = n;
+    vec3 _e82 = weft_safe_normalize((_e79 + _e39), _e81);
+    vec3 _e83 = n;
+    float _e85 = weft_clamp_cos(dot(_e83, _e39));
+    vec3 _e86 = n;
+    float n_dot_l = clamp(dot(_e86, _e79), 0.0, 1.0);
+    float v_dot_h = clamp(dot(_e39, _e82), 0.0, 1.0);
+    vec3 _e91 = n;
+    float _e99 = _group_1_binding_0_fs.dark_bound;
+    float _e102 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e91, _e79) * 0.5) + 0.5), _e99, _e102);
+    {
+        {
+            float _e105 = curvature;
+            vec4 _e107 = table_seed_lut(vec2(u, _e105));
+            falloff = _e107.xyz;
+        }
+    }
+    vec3 _e109 = falloff;
+    falloff = max(_e109, vec3(0.0));
+    vec2 _e114 = weft_env_brdf_lut(_e85, roughness_4);
+    vec3 _e115 = weft_env_brdf_from_lut(vec3(f0_1), _e114);
+    {
+        float linear_roughness = (roughness_4 * roughness_4);
+        vec3 _e119 = n;
+        float _e122 = _group_1_binding_0_fs.lobe_weight;
+        float _e123 = skin_seed_specular(_e119, _e79, _e82, linear_roughness, mask_1, _e122);
+        specular = ((_e123 * f0_1) * n_dot_l);
+        kd = vec3((1.0 - f0_1));
+    }
+    vec3 _e129 = weft_main_light_radiance();
+    vec3 _e130 = kd;
+    vec3 _e131 = weft_diffuse_lambert(albedo_1);
+    vec3 _e133 = falloff;
+    float _e135 = specular;
+    vec3 direct = ((((_e130 * _e131) * _e133) + vec3(_e135)) * _e129);
+    vec3 _e139 = n;
+    vec3 _e140 = weft_sh_irradiance(_e139);
+    vec3 _e141 = kd;
+    vec3 indirect_diffuse = ((_e140 * _e141) * albedo_1);
+    vec3 _e145 = n;
+    vec3 _e147 = weft_prefiltered_radiance(reflect(-(_e39), _e145), roughness_4);
+    vec3 indirect_specular = ((_e147 * _e115) * mask_1);
+    vec3 color = ((direct + indirect_diffuse) + indirect_specular);
+    vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+
