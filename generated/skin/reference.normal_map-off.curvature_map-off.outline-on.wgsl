@@ -55,9 +55,9 @@ struct WeftVaryings {
 
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
-const skin_lut_shape: vec3<f32> = vec3<f32>(1f, 2.5f, 5f);
+const skin_lut_shape: vec3<f32> = vec3<f32>(4f, 10f, 20f);
 const skin_lut_ring: f32 = 3.1415927f;
-const seed_lut_shape: vec3<f32> = vec3<f32>(1f, 2.5f, 5f);
+const seed_lut_shape: vec3<f32> = vec3<f32>(4f, 10f, 20f);
 const seed_lut_ring: f32 = 1.5707964f;
 const TIER_FAST: u32 = 0u;
 const TIER_REFERENCE: u32 = 1u;

@@ -49,9 +49,9 @@ struct WeftVaryings {
 
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
-static const float3 skin_lut_shape = float3(1.0, 2.5, 5.0);
+static const float3 skin_lut_shape = float3(4.0, 10.0, 20.0);
 static const float skin_lut_ring = 3.1415927;
-static const float3 seed_lut_shape = float3(1.0, 2.5, 5.0);
+static const float3 seed_lut_shape = float3(4.0, 10.0, 20.0);
 static const float seed_lut_ring = 1.5707964;
 static const uint TIER_FAST = 0u;
 static const uint TIER_REFERENCE = 1u;

@@ -49,9 +49,9 @@ struct WeftVaryings {
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
-const vec3 skin_lut_shape = vec3(1.0, 2.5, 5.0);
+const vec3 skin_lut_shape = vec3(4.0, 10.0, 20.0);
 const float skin_lut_ring = 3.1415927;
-const vec3 seed_lut_shape = vec3(1.0, 2.5, 5.0);
+const vec3 seed_lut_shape = vec3(4.0, 10.0, 20.0);
 const float seed_lut_ring = 1.5707964;
 const uint TIER_FAST = 0u;
 const uint TIER_REFERENCE = 1u;

@@ -61,9 +61,9 @@ struct WeftVaryings {
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
-constant metal::float3 skin_lut_shape = metal::float3(1.0, 2.5, 5.0);
+constant metal::float3 skin_lut_shape = metal::float3(4.0, 10.0, 20.0);
 constant float skin_lut_ring = 3.1415927;
-constant metal::float3 seed_lut_shape = metal::float3(1.0, 2.5, 5.0);
+constant metal::float3 seed_lut_shape = metal::float3(4.0, 10.0, 20.0);
 constant float seed_lut_ring = 1.5707964;
 constant uint TIER_FAST = 0u;
 constant uint TIER_REFERENCE = 1u;
