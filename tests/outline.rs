@@ -34,9 +34,10 @@ fn the_outline_pass_exists_exactly_where_its_keyword_is_on() {
     assert_eq!(outline.when.len(), 1, "{:?}", outline.when);
     assert_eq!(outline.when[0].subject, "OUTLINE");
     assert_eq!(outline.primitive.cull_mode, weft_meta::CullMode::Front);
-    for kw in ["OUTLINE"] {
-        assert!(meta.keywords.iter().any(|k| k.name == kw), "keyword {kw}");
-    }
+    assert!(
+        meta.keywords.iter().any(|k| k.name == "OUTLINE"),
+        "keyword OUTLINE"
+    );
     for p in ["outline_color", "outline_width", "outline_max_distance"] {
         assert!(meta.parameters.iter().any(|x| x.name == p), "parameter {p}");
     }

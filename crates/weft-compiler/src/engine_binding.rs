@@ -106,6 +106,7 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
                 v: "perceptual roughness, 0 at row 0, 1 at the last row; sampled at texel centres"
                     .into(),
                 channels: "r: scale, g: bias".into(),
+                sha256: None,
             }),
         ),
         "weft_lut_sampler" => resource(
@@ -131,6 +132,7 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
                     the last row; sampled at texel centres"
                     .into(),
                 channels: "r: E".into(),
+                sha256: None,
             }),
         ),
         _ => return None,

@@ -192,7 +192,7 @@ pub fn compile_material_cached(
     let mut files: Vec<(String, Vec<u8>)> = m
         .tables
         .iter()
-        .map(|t| (crate::tables::file_name(t), crate::tables::bake(t)))
+        .map(|t| (crate::tables::file_name(t), crate::tables::bake(t).to_vec()))
         .collect();
     let mut variants_meta = Vec::new();
     for ((key, v), alias) in keys.iter().zip(compiled).zip(aliases) {
@@ -373,6 +373,10 @@ fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<CompiledMaterial> {
             }
             files.push((f.path.clone(), bytes));
         }
+    }
+    // Baked tables are no variant's files; they follow from the TOML.
+    for t in &m.tables {
+        files.push((crate::tables::file_name(t), crate::tables::bake(t).to_vec()));
     }
     Some((meta, files))
 }

@@ -4,6 +4,8 @@
 //! engine interface's LUTs).
 
 use crate::bake;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 use weft_front::model::{BakedTable, Material, TableRecipe};
 use weft_meta::{EngineResource, ResourceFile};
 
@@ -16,12 +18,26 @@ pub fn file_name(t: &BakedTable) -> String {
 }
 
 /// The table's texels (RGBA16Float, row 0 first), computed from the TOML.
-pub fn bake(t: &BakedTable) -> Vec<u8> {
-    match &t.recipe {
+/// Baked once per recipe and size in a process: every variant's metadata
+/// needs the bytes' hash, and a table is the same for all of them.
+pub fn bake(t: &BakedTable) -> Arc<Vec<u8>> {
+    static BAKED: OnceLock<Mutex<HashMap<String, Arc<Vec<u8>>>>> = OnceLock::new();
+    let key = format!("{:?} {:?}", t.recipe, t.size);
+    let cache = BAKED.get_or_init(Default::default);
+    if let Some(bytes) = cache.lock().expect("table cache").get(&key) {
+        return bytes.clone();
+    }
+    let bytes = Arc::new(match &t.recipe {
         TableRecipe::PreintegratedSkin { shape, half_ring } => {
             bake::skin::preintegrated_table(t.size, *shape, *half_ring)
         }
-    }
+    });
+    cache
+        .lock()
+        .expect("table cache")
+        .entry(key)
+        .or_insert(bytes)
+        .clone()
 }
 
 /// The `resource` of the table's binding: an id unique in a library
@@ -63,6 +79,7 @@ pub fn resource(m: &Material, t: &BakedTable) -> EngineResource {
             u: u.into(),
             v: v.into(),
             channels: channels.into(),
+            sha256: Some(crate::variant::sha256_hex(&bake(t))),
         }),
     }
 }

@@ -49,6 +49,9 @@ struct VariantFiles {
 #[derive(Deserialize)]
 struct ShaderFiles {
     files: BTreeMap<String, Vec<FileEntry>>,
+    /// Bindings, for the baked tables' files (`resource.file`).
+    #[serde(default)]
+    bindings: Vec<BindingFiles>,
     /// Half-precision files beside the portable ones (absent when none).
     #[serde(default)]
     f16_files: BTreeMap<String, Vec<FileEntry>>,
@@ -62,6 +65,27 @@ impl ShaderFiles {
             .flatten()
             .chain(self.f16_files.values().flatten())
     }
+}
+
+#[derive(Deserialize)]
+struct BindingFiles {
+    #[serde(default)]
+    resource: Option<ResourceFiles>,
+}
+
+#[derive(Deserialize)]
+struct ResourceFiles {
+    #[serde(default)]
+    file: Option<TableFile>,
+}
+
+/// A `resource.file` with a checksum: a baked table in the material's folder
+/// (`<material>/<table>.rgba16f`, relative to the library root).
+#[derive(Deserialize)]
+struct TableFile {
+    path: String,
+    #[serde(default)]
+    sha256: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -121,6 +145,18 @@ impl Previous {
             .flat_map(|v| v.shader.iter().flat_map(|s| s.all_files()))
             .map(|f| (f.path.clone(), Some(f.sha256.clone())))
             .collect();
+        // Baked tables: files of the material's folder that its bindings name.
+        let prefix = format!("{name}/");
+        for v in &meta.variants {
+            let bindings = v.shader.iter().flat_map(|s| &s.bindings);
+            for f in bindings.filter_map(|b| b.resource.as_ref()?.file.as_ref()) {
+                if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
+                    && !files.iter().any(|(p, _)| p == rel)
+                {
+                    files.push((rel.to_string(), Some(sha.clone())));
+                }
+            }
+        }
         files.push((format!("{name}.meta.json"), None));
         Some(Kept {
             variants: meta.variants.len(),

@@ -1020,7 +1020,7 @@ impl MaterialMetadata {
     pub fn variant_passes<'a>(&'a self, variant: &'a Variant) -> impl Iterator<Item = &'a Pass> {
         self.passes
             .iter()
-            .filter(|p| variant.passes.iter().any(|n| *n == p.name))
+            .filter(|p| variant.passes.contains(&p.name))
     }
 
     /// Where measurements of the material whose metadata is at `meta_path`

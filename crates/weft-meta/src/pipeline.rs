@@ -359,6 +359,10 @@ pub struct ResourceFile {
     pub v: String,
     /// What the channels hold.
     pub channels: String,
+    /// SHA-256 of the file's bytes, hex: set for a material's baked tables
+    /// (`[tables]`), whose file lies beside its variants.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sha256: Option<String>,
 }
 
 // ---------------------------------------------------------------- GLSL

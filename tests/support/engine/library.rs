@@ -191,7 +191,9 @@ pub fn library_inputs(
     let mut textures = BTreeMap::new();
     for b in &shader.bindings {
         let Some(t) = &b.texture else { continue };
-        if b.group != 1 {
+        // A group-1 texture with a `resource` is baked data (a material's
+        // table, docs/engine-interface.md): bound from its file.
+        if b.group != 1 || b.resource.is_some() {
             continue;
         }
         let pname = b
@@ -279,7 +281,7 @@ pub fn scene_inputs(
     };
     let mut textures = BTreeMap::new();
     for b in &shader.bindings {
-        if b.group != 1 || b.texture.is_none() {
+        if b.group != 1 || b.texture.is_none() || b.resource.is_some() {
             continue;
         }
         let t = inst.textures.get(&b.name).ok_or_else(|| {
