@@ -18,6 +18,7 @@ const MAX_WORST_FLIP: f64 = 0.05;
 const HONEST_LADDERS: &[&str] = &[
     "fur",
     "gauze",
+    "hair",
     "laser",
     "microcylinder",
     "satin",

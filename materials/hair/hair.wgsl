@@ -26,7 +26,7 @@
 // reference's count is converged (tests/hair_furnace.rs: within 0.6 % of 2048; 32 are 3.4 % off at β_n 0.15), fast's is the
 // smallest whose worst FLIP stays within the ladder's 0.05.
 const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 6u;
+const HAIR_FAST_OFFSETS: u32 = 8u;
 // Body shadow: light more than this far below the surface (in n.l) is
 // blocked by the head behind the hair; the band up to +this is the thin
 // layer at the terminator where light still passes (README).
