@@ -92,6 +92,7 @@ struct WeftHairAttenuation {
 struct WeftHairLobes {
     metal::float3 s;
     metal::float3 albedo;
+    metal::float3 back;
 };
 struct WeftHairAngles {
     metal::float4 theta;
@@ -110,7 +111,7 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_HAIR_MIN_BETA_M = 0.05;
 constant float WEFT_HAIR_MIN_BETA_N = 0.05;
 constant uint HAIR_REFERENCE_OFFSETS = 64u;
-constant uint HAIR_FAST_OFFSETS = 8u;
+constant uint HAIR_FAST_OFFSETS = 12u;
 constant float HAIR_TERMINATOR = 0.25;
 
 metal::float3 weft_safe_normalize(
@@ -502,6 +503,7 @@ WeftHairLobes weft_hair_mean(
 ) {
     metal::float3 s_5 = metal::float3(0.0);
     metal::float3 albedo = metal::float3(0.0);
+    metal::float3 back = metal::float3(0.0);
     float weights = 0.0;
     float g0_ = -1.5707964;
     metal::float3 d0_1 = {};
@@ -512,58 +514,63 @@ WeftHairLobes weft_hair_mean(
     float _e11 = weft_hair_etap(hair_4, angles.theta.x, angles.theta.y);
     uint cells = metal::max(count, 1u);
     float step = WEFT_PI / static_cast<float>(cells);
-    float _e32 = g0_;
-    float _e40 = g0_;
-    d0_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * metal::asin(metal::clamp(metal::sin(_e32) / _e11, -1.0, 1.0))) - metal::float3(2.0 * _e40)) + metal::float3(0.0, 3.1415927, 6.2831855));
+    float _e35 = g0_;
+    float _e43 = g0_;
+    d0_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * metal::asin(metal::clamp(metal::sin(_e35) / _e11, -1.0, 1.0))) - metal::float3(2.0 * _e43)) + metal::float3(0.0, 3.1415927, 6.2831855));
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e143 = k;
-            k = _e143 + 1u;
+            uint _e153 = k;
+            k = _e153 + 1u;
         }
         loop_init_1 = false;
-        uint _e55 = k;
-        if (_e55 < cells) {
+        uint _e58 = k;
+        if (_e58 < cells) {
         } else {
             break;
         }
         {
-            float _e57 = g0_;
-            float g1_ = _e57 + step;
+            float _e60 = g0_;
+            float g1_ = _e60 + step;
             float gamma_t1_ = metal::asin(metal::clamp(metal::sin(g1_) / _e11, -1.0, 1.0));
             metal::float3 d1_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * gamma_t1_) - metal::float3(2.0 * g1_)) + metal::float3(0.0, 3.1415927, 6.2831855));
-            float _e82 = g0_;
-            float gm = _e82 + (0.5 * step);
+            float _e85 = g0_;
+            float gm = _e85 + (0.5 * step);
             float w = metal::cos(gm);
-            WeftHairAttenuation _e90 = weft_hair_attenuation(hair_4, angles.theta.x, angles.theta.y, metal::sin(gm));
-            float _e95 = d0_1.x;
-            float _e98 = weft_hair_np_cell(_e95, d1_1.x, hair_4.s);
-            float _e104 = d0_1.y;
-            float _e107 = weft_hair_np_cell(_e104, d1_1.y, hair_4.s);
-            float _e115 = d0_1.z;
-            float _e118 = weft_hair_np_cell(_e115, d1_1.z, hair_4.s);
-            metal::float3 lobes_1 = ((metal::float3((_e8.x * _e90.a0_) * _e98) + ((_e8.y * _e90.a1_) * _e107)) + ((_e8.z * _e90.a2_) * _e118)) + ((_e8.w * _e90.a3_) * 0.15915494);
-            metal::float3 _e127 = s_5;
-            s_5 = _e127 + (w * lobes_1);
-            metal::float3 _e130 = albedo;
-            albedo = _e130 + (w * (((metal::float3(_e90.a0_) + _e90.a1_) + _e90.a2_) + _e90.a3_));
-            float _e141 = weights;
-            weights = _e141 + w;
+            WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, angles.theta.x, angles.theta.y, metal::sin(gm));
+            float _e98 = d0_1.x;
+            float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            float _e107 = d0_1.y;
+            float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            float _e118 = d0_1.z;
+            float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            metal::float3 lobes_1 = ((metal::float3((_e8.x * _e93.a0_) * _e101) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494);
+            metal::float3 _e130 = s_5;
+            s_5 = _e130 + (w * lobes_1);
+            metal::float3 _e133 = albedo;
+            albedo = _e133 + (w * (((metal::float3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_));
+            metal::float3 _e144 = back;
+            back = _e144 + (w * (metal::float3(_e93.a0_) + _e93.a2_));
+            float _e151 = weights;
+            weights = _e151 + w;
             g0_ = g1_;
             d0_1 = d1_1;
         }
     }
-    metal::float3 _e148 = s_5;
-    float _e149 = weights;
-    out_3.s = _e148 / metal::float3(_e149);
-    metal::float3 _e153 = albedo;
-    float _e154 = weights;
-    out_3.albedo = _e153 / metal::float3(_e154);
-    WeftHairLobes _e157 = out_3;
-    return _e157;
+    metal::float3 _e158 = s_5;
+    float _e159 = weights;
+    out_3.s = _e158 / metal::float3(_e159);
+    metal::float3 _e163 = albedo;
+    float _e164 = weights;
+    out_3.albedo = _e163 / metal::float3(_e164);
+    metal::float3 _e168 = back;
+    float _e169 = weights;
+    out_3.back = _e168 / metal::float3(_e169);
+    WeftHairLobes _e172 = out_3;
+    return _e172;
 }
 
 metal::float3 hair_strand(
@@ -597,19 +604,22 @@ float hair_hash(
     return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
 }
 
-int naga_f2i32(float value) {
-    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
 }
 
 float hair_value_noise(
-    float x_8
+    float x_8,
+    float period
 ) {
+    float p = metal::max(metal::rint(period), 1.0);
     float cell = metal::floor(x_8);
     float f_2 = x_8 - cell;
-    uint i_2 = static_cast<uint>(as_type<int>(as_type<uint>(naga_f2i32(metal::clamp(cell, -1000000.0, 1000000.0))) + as_type<uint>(1048576)));
-    float _e10 = hair_hash(i_2);
-    float _e13 = hair_hash(i_2 + 1u);
-    return metal::mix(_e10, _e13, (f_2 * f_2) * (3.0 - (2.0 * f_2))) - 0.5;
+    float c0_ = cell - (p * metal::floor(cell / p));
+    float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
+    float _e19 = hair_hash(naga_f2u32(c0_));
+    float _e21 = hair_hash(naga_f2u32(c1_1));
+    return metal::mix(_e19, _e21, (f_2 * f_2) * (3.0 - (2.0 * f_2))) - 0.5;
 }
 
 float hair_jitter(
@@ -635,8 +645,9 @@ float hair_jitter(
     float _e46 = material.jitter_strength;
     float _e50 = material.strand_noise;
     float _e53 = material.strand_density;
-    float _e55 = hair_value_noise(across * _e53);
-    return (_e46 * j) + (_e50 * _e55);
+    float _e57 = material.strand_density;
+    float _e58 = hair_value_noise(across * _e53, _e57);
+    return (_e46 * j) + (_e50 * _e58);
 }
 
 struct vs_outlineInput {
@@ -800,11 +811,14 @@ fragment fs_mainOutput fs_main(
             lobes = _e59;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e64 = lobes.s;
-        metal::float3 _e68 = lobes.albedo;
-        color = ((_e64 * _e32) * body) + (_e33 * _e68);
+        metal::float3 _e66 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e66);
+        metal::float3 _e70 = lobes.s;
+        metal::float3 direct = (_e70 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e79 = lobes.back;
+        color = (direct * _e32) + (_e33 * (multiple + _e79));
     }
-    metal::float3 _e71 = color;
-    metal::float3 radiance = metal::clamp(_e71, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e83 = color;
+    metal::float3 radiance = metal::clamp(_e83, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

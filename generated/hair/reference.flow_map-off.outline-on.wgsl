@@ -84,6 +84,7 @@ struct WeftHairAttenuation {
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
+    back: vec3<f32>,
 }
 
 struct WeftHairAngles {
@@ -103,7 +104,7 @@ const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
 const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
 const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 8u;
+const HAIR_FAST_OFFSETS: u32 = 12u;
 const HAIR_TERMINATOR: f32 = 0.25f;
 
 @group(0) @binding(0) 
@@ -419,6 +420,7 @@ fn weft_hair_np_cell(d0_: f32, d1_: f32, s_4: f32) -> f32 {
 fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHairLobes {
     var s_5: vec3<f32> = vec3(0f);
     var albedo: vec3<f32> = vec3(0f);
+    var back: vec3<f32> = vec3(0f);
     var weights: f32 = 0f;
     var g0_: f32 = -1.5707964f;
     var d0_1: vec3<f32>;
@@ -430,53 +432,58 @@ fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftH
     let _e11 = weft_hair_etap(hair_4, th.x, th.y);
     let cells = max(count, 1u);
     let step_ = (WEFT_PI / f32(cells));
-    let _e32 = g0_;
-    let _e40 = g0_;
-    d0_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * asin(clamp((sin(_e32) / _e11), -1f, 1f))) - vec3((2f * _e40))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
+    let _e35 = g0_;
+    let _e43 = g0_;
+    d0_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * asin(clamp((sin(_e35) / _e11), -1f, 1f))) - vec3((2f * _e43))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
     loop {
-        let _e55 = k;
-        if (_e55 < cells) {
+        let _e58 = k;
+        if (_e58 < cells) {
         } else {
             break;
         }
         {
-            let _e57 = g0_;
-            let g1_ = (_e57 + step_);
+            let _e60 = g0_;
+            let g1_ = (_e60 + step_);
             let gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1f, 1f));
             let d1_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * gamma_t1_) - vec3((2f * g1_))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
-            let _e82 = g0_;
-            let gm = (_e82 + (0.5f * step_));
+            let _e85 = g0_;
+            let gm = (_e85 + (0.5f * step_));
             let w = cos(gm);
-            let _e90 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            let _e95 = d0_1.x;
-            let _e98 = weft_hair_np_cell(_e95, d1_1.x, hair_4.s);
-            let _e104 = d0_1.y;
-            let _e107 = weft_hair_np_cell(_e104, d1_1.y, hair_4.s);
-            let _e115 = d0_1.z;
-            let _e118 = weft_hair_np_cell(_e115, d1_1.z, hair_4.s);
-            let lobes_1 = (((vec3(((_e8.x * _e90.a0_) * _e98)) + ((_e8.y * _e90.a1_) * _e107)) + ((_e8.z * _e90.a2_) * _e118)) + ((_e8.w * _e90.a3_) * 0.15915494f));
-            let _e127 = s_5;
-            s_5 = (_e127 + (w * lobes_1));
-            let _e130 = albedo;
-            albedo = (_e130 + (w * (((vec3(_e90.a0_) + _e90.a1_) + _e90.a2_) + _e90.a3_)));
-            let _e141 = weights;
-            weights = (_e141 + w);
+            let _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            let _e98 = d0_1.x;
+            let _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            let _e107 = d0_1.y;
+            let _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            let _e118 = d0_1.z;
+            let _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            let lobes_1 = (((vec3(((_e8.x * _e93.a0_) * _e101)) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494f));
+            let _e130 = s_5;
+            s_5 = (_e130 + (w * lobes_1));
+            let _e133 = albedo;
+            albedo = (_e133 + (w * (((vec3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_)));
+            let _e144 = back;
+            back = (_e144 + (w * (vec3(_e93.a0_) + _e93.a2_)));
+            let _e151 = weights;
+            weights = (_e151 + w);
             g0_ = g1_;
             d0_1 = d1_1;
         }
         continuing {
-            let _e143 = k;
-            k = (_e143 + 1u);
+            let _e153 = k;
+            k = (_e153 + 1u);
         }
     }
-    let _e148 = s_5;
-    let _e149 = weights;
-    out_3.s = (_e148 / vec3(_e149));
-    let _e153 = albedo;
-    let _e154 = weights;
-    out_3.albedo = (_e153 / vec3(_e154));
-    let _e157 = out_3;
-    return _e157;
+    let _e158 = s_5;
+    let _e159 = weights;
+    out_3.s = (_e158 / vec3(_e159));
+    let _e163 = albedo;
+    let _e164 = weights;
+    out_3.albedo = (_e163 / vec3(_e164));
+    let _e168 = back;
+    let _e169 = weights;
+    out_3.back = (_e168 / vec3(_e169));
+    let _e172 = out_3;
+    return _e172;
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -496,13 +503,15 @@ fn hair_hash(x_7: u32) -> f32 {
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_8: f32) -> f32 {
+fn hair_value_noise(x_8: f32, period: f32) -> f32 {
+    let p = max(round(period), 1f);
     let cell = floor(x_8);
     let f_1 = (x_8 - cell);
-    let i_2 = u32((i32(clamp(cell, -1000000f, 1000000f)) + 1048576i));
-    let _e10 = hair_hash(i_2);
-    let _e13 = hair_hash((i_2 + 1u));
-    return (mix(_e10, _e13, ((f_1 * f_1) * (3f - (2f * f_1)))) - 0.5f);
+    let c0_ = (cell - (p * floor((cell / p))));
+    let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
+    let _e19 = hair_hash(u32(c0_));
+    let _e21 = hair_hash(u32(c1_1));
+    return (mix(_e19, _e21, ((f_1 * f_1) * (3f - (2f * f_1)))) - 0.5f);
 }
 
 fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
@@ -522,8 +531,9 @@ fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
     let _e46 = material.jitter_strength;
     let _e50 = material.strand_noise;
     let _e53 = material.strand_density;
-    let _e55 = hair_value_noise((across * _e53));
-    return ((_e46 * j) + (_e50 * _e55));
+    let _e57 = material.strand_density;
+    let _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
 }
 
 @vertex 
@@ -633,11 +643,14 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
             lobes = _e59;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e64 = lobes.s;
-        let _e68 = lobes.albedo;
-        color = (((_e64 * _e32) * body) + (_e33 * _e68));
+        let _e66 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e66));
+        let _e70 = lobes.s;
+        let direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e79 = lobes.back;
+        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
     }
-    let _e71 = color;
-    let radiance = clamp(_e71, vec3(0f), vec3(65504f));
+    let _e83 = color;
+    let radiance = clamp(_e83, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

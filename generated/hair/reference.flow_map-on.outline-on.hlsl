@@ -102,6 +102,8 @@ struct WeftHairLobes {
     float3 s;
     int _pad1_0;
     float3 albedo;
+    int _pad2_0;
+    float3 back;
     int _end_pad_0;
 };
 
@@ -125,7 +127,7 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_HAIR_MIN_BETA_M = 0.05;
 static const float WEFT_HAIR_MIN_BETA_N = 0.05;
 static const uint HAIR_REFERENCE_OFFSETS = 64u;
-static const uint HAIR_FAST_OFFSETS = 8u;
+static const uint HAIR_FAST_OFFSETS = 12u;
 static const float HAIR_TERMINATOR = 0.25;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
@@ -494,6 +496,7 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
 {
     float3 s_5 = (0.0).xxx;
     float3 albedo = (0.0).xxx;
+    float3 back = (0.0).xxx;
     float weights = 0.0;
     float g0_ = -1.5707964;
     float3 d0_1 = (float3)0;
@@ -505,58 +508,63 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     const float _e11 = weft_hair_etap(hair_4, th.x, th.y);
     uint cells = max(count, 1u);
     float step_ = (WEFT_PI / float(cells));
-    float _e32 = g0_;
-    float _e40 = g0_;
-    d0_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * asin(clamp((sin(_e32) / _e11), -1.0, 1.0))) - ((2.0 * _e40)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
+    float _e35 = g0_;
+    float _e43 = g0_;
+    d0_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * asin(clamp((sin(_e35) / _e11), -1.0, 1.0))) - ((2.0 * _e43)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e143 = k;
-            k = (_e143 + 1u);
+            uint _e153 = k;
+            k = (_e153 + 1u);
         }
         loop_init_1 = false;
-        uint _e55 = k;
-        if ((_e55 < cells)) {
+        uint _e58 = k;
+        if ((_e58 < cells)) {
         } else {
             break;
         }
         {
-            float _e57 = g0_;
-            float g1_ = (_e57 + step_);
+            float _e60 = g0_;
+            float g1_ = (_e60 + step_);
             float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
             float3 d1_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * gamma_t1_) - ((2.0 * g1_)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
-            float _e82 = g0_;
-            float gm = (_e82 + (0.5 * step_));
+            float _e85 = g0_;
+            float gm = (_e85 + (0.5 * step_));
             float w = cos(gm);
-            const WeftHairAttenuation _e90 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            float _e95 = d0_1.x;
-            const float _e98 = weft_hair_np_cell(_e95, d1_1.x, hair_4.s);
-            float _e104 = d0_1.y;
-            const float _e107 = weft_hair_np_cell(_e104, d1_1.y, hair_4.s);
-            float _e115 = d0_1.z;
-            const float _e118 = weft_hair_np_cell(_e115, d1_1.z, hair_4.s);
-            float3 lobes_1 = ((((((_e8.x * _e90.a0_) * _e98)).xxx + ((_e8.y * _e90.a1_) * _e107)) + ((_e8.z * _e90.a2_) * _e118)) + ((_e8.w * _e90.a3_) * 0.15915494));
-            float3 _e127 = s_5;
-            s_5 = (_e127 + (w * lobes_1));
-            float3 _e130 = albedo;
-            albedo = (_e130 + (w * ((((_e90.a0_).xxx + _e90.a1_) + _e90.a2_) + _e90.a3_)));
-            float _e141 = weights;
-            weights = (_e141 + w);
+            const WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            float _e98 = d0_1.x;
+            const float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            float _e107 = d0_1.y;
+            const float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            float _e118 = d0_1.z;
+            const float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            float3 lobes_1 = ((((((_e8.x * _e93.a0_) * _e101)).xxx + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494));
+            float3 _e130 = s_5;
+            s_5 = (_e130 + (w * lobes_1));
+            float3 _e133 = albedo;
+            albedo = (_e133 + (w * ((((_e93.a0_).xxx + _e93.a1_) + _e93.a2_) + _e93.a3_)));
+            float3 _e144 = back;
+            back = (_e144 + (w * ((_e93.a0_).xxx + _e93.a2_)));
+            float _e151 = weights;
+            weights = (_e151 + w);
             g0_ = g1_;
             d0_1 = d1_1;
         }
     }
-    float3 _e148 = s_5;
-    float _e149 = weights;
-    out_3.s = (_e148 / (_e149).xxx);
-    float3 _e153 = albedo;
-    float _e154 = weights;
-    out_3.albedo = (_e153 / (_e154).xxx);
-    WeftHairLobes _e157 = out_3;
-    const WeftHairLobes wefthairlobes = _e157;
+    float3 _e158 = s_5;
+    float _e159 = weights;
+    out_3.s = (_e158 / (_e159).xxx);
+    float3 _e163 = albedo;
+    float _e164 = weights;
+    out_3.albedo = (_e163 / (_e164).xxx);
+    float3 _e168 = back;
+    float _e169 = weights;
+    out_3.back = (_e168 / (_e169).xxx);
+    WeftHairLobes _e172 = out_3;
+    const WeftHairLobes wefthairlobes = _e172;
     return wefthairlobes;
 }
 
@@ -586,18 +594,20 @@ float hair_hash(uint x_7)
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-int naga_f2i32(float value) {
-    return int(clamp(value, -2147483600.0, 2147483500.0));
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_8)
+float hair_value_noise(float x_8, float period)
 {
+    float p = max(round(period), 1.0);
     float cell = floor(x_8);
     float f_2 = (x_8 - cell);
-    uint i_2 = uint(asint(asuint(naga_f2i32(clamp(cell, -1000000.0, 1000000.0))) + asuint(int(1048576))));
-    const float _e10 = hair_hash(i_2);
-    const float _e13 = hair_hash((i_2 + 1u));
-    return (lerp(_e10, _e13, ((f_2 * f_2) * (3.0 - (2.0 * f_2)))) - 0.5);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    const float _e19 = hair_hash(naga_f2u32(c0_));
+    const float _e21 = hair_hash(naga_f2u32(c1_1));
+    return (lerp(_e19, _e21, ((f_2 * f_2) * (3.0 - (2.0 * f_2)))) - 0.5);
 }
 
 float hair_jitter(float2 uv0_1)
@@ -618,8 +628,9 @@ float hair_jitter(float2 uv0_1)
     float _e46 = material.jitter_strength;
     float _e50 = material.strand_noise;
     float _e53 = material.strand_density;
-    const float _e55 = hair_value_noise((across * _e53));
-    return ((_e46 * j) + (_e50 * _e55));
+    float _e57 = material.strand_density;
+    const float _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
 }
 
 VertexOutput_vs_outline vs_outline(WeftOutlineVertex in_)
@@ -734,11 +745,14 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
             lobes = _e59;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e64 = lobes.s;
-        float3 _e68 = lobes.albedo;
-        color = (((_e64 * _e32) * body) + (_e33 * _e68));
+        float3 _e66 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e66));
+        float3 _e70 = lobes.s;
+        float3 direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e79 = lobes.back;
+        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
     }
-    float3 _e71 = color;
-    float3 radiance = clamp(_e71, (0.0).xxx, (65504.0).xxx);
+    float3 _e83 = color;
+    float3 radiance = clamp(_e83, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

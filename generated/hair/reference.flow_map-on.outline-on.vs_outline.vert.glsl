@@ -76,6 +76,7 @@ struct WeftHairAttenuation {
 struct WeftHairLobes {
     vec3 s;
     vec3 albedo;
+    vec3 back;
 };
 struct WeftHairAngles {
     vec4 theta;
@@ -93,7 +94,7 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_HAIR_MIN_BETA_M = 0.05;
 const float WEFT_HAIR_MIN_BETA_N = 0.05;
 const uint HAIR_REFERENCE_OFFSETS = 64u;
-const uint HAIR_FAST_OFFSETS = 8u;
+const uint HAIR_FAST_OFFSETS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
@@ -399,65 +400,71 @@ float weft_hair_np_cell(float d0_, float d1_, float s_4) {
 WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count) {
     vec3 s_5 = vec3(0.0);
     vec3 albedo = vec3(0.0);
+    vec3 back = vec3(0.0);
     float weights = 0.0;
     float g0_ = -1.5707964;
     vec3 d0_1 = vec3(0.0);
     uint k = 0u;
-    WeftHairLobes out_3 = WeftHairLobes(vec3(0.0), vec3(0.0));
+    WeftHairLobes out_3 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 th = angles.theta;
     vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
     float _e11 = weft_hair_etap(hair_4, th.x, th.y);
     uint cells = max(count, 1u);
     float step_ = (WEFT_PI / float(cells));
-    float _e32 = g0_;
-    float _e40 = g0_;
-    d0_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * asin(clamp((sin(_e32) / _e11), -1.0, 1.0))) - vec3((2.0 * _e40))) + vec3(0.0, 3.1415927, 6.2831855)));
+    float _e35 = g0_;
+    float _e43 = g0_;
+    d0_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * asin(clamp((sin(_e35) / _e11), -1.0, 1.0))) - vec3((2.0 * _e43))) + vec3(0.0, 3.1415927, 6.2831855)));
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e143 = k;
-            k = (_e143 + 1u);
+            uint _e153 = k;
+            k = (_e153 + 1u);
         }
         loop_init_1 = false;
-        uint _e55 = k;
-        if ((_e55 < cells)) {
+        uint _e58 = k;
+        if ((_e58 < cells)) {
         } else {
             break;
         }
         {
-            float _e57 = g0_;
-            float g1_ = (_e57 + step_);
+            float _e60 = g0_;
+            float g1_ = (_e60 + step_);
             float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
             vec3 d1_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * gamma_t1_) - vec3((2.0 * g1_))) + vec3(0.0, 3.1415927, 6.2831855)));
-            float _e82 = g0_;
-            float gm = (_e82 + (0.5 * step_));
+            float _e85 = g0_;
+            float gm = (_e85 + (0.5 * step_));
             float w = cos(gm);
-            WeftHairAttenuation _e90 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            float _e95 = d0_1.x;
-            float _e98 = weft_hair_np_cell(_e95, d1_1.x, hair_4.s);
-            float _e104 = d0_1.y;
-            float _e107 = weft_hair_np_cell(_e104, d1_1.y, hair_4.s);
-            float _e115 = d0_1.z;
-            float _e118 = weft_hair_np_cell(_e115, d1_1.z, hair_4.s);
-            vec3 lobes_1 = (((vec3(((_e8.x * _e90.a0_) * _e98)) + ((_e8.y * _e90.a1_) * _e107)) + ((_e8.z * _e90.a2_) * _e118)) + ((_e8.w * _e90.a3_) * 0.15915494));
-            vec3 _e127 = s_5;
-            s_5 = (_e127 + (w * lobes_1));
-            vec3 _e130 = albedo;
-            albedo = (_e130 + (w * (((vec3(_e90.a0_) + _e90.a1_) + _e90.a2_) + _e90.a3_)));
-            float _e141 = weights;
-            weights = (_e141 + w);
+            WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            float _e98 = d0_1.x;
+            float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            float _e107 = d0_1.y;
+            float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            float _e118 = d0_1.z;
+            float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            vec3 lobes_1 = (((vec3(((_e8.x * _e93.a0_) * _e101)) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494));
+            vec3 _e130 = s_5;
+            s_5 = (_e130 + (w * lobes_1));
+            vec3 _e133 = albedo;
+            albedo = (_e133 + (w * (((vec3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_)));
+            vec3 _e144 = back;
+            back = (_e144 + (w * (vec3(_e93.a0_) + _e93.a2_)));
+            float _e151 = weights;
+            weights = (_e151 + w);
             g0_ = g1_;
             d0_1 = d1_1;
         }
     }
-    vec3 _e148 = s_5;
-    float _e149 = weights;
-    out_3.s = (_e148 / vec3(_e149));
-    vec3 _e153 = albedo;
-    float _e154 = weights;
-    out_3.albedo = (_e153 / vec3(_e154));
-    WeftHairLobes _e157 = out_3;
-    return _e157;
+    vec3 _e158 = s_5;
+    float _e159 = weights;
+    out_3.s = (_e158 / vec3(_e159));
+    vec3 _e163 = albedo;
+    float _e164 = weights;
+    out_3.albedo = (_e163 / vec3(_e164));
+    vec3 _e168 = back;
+    float _e169 = weights;
+    out_3.back = (_e168 / vec3(_e169));
+    WeftHairLobes _e172 = out_3;
+    return _e172;
 }
 
 float hair_hash(uint x_7) {
@@ -466,13 +473,15 @@ float hair_hash(uint x_7) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_8) {
+float hair_value_noise(float x_8, float period) {
+    float p = max(roundEven(period), 1.0);
     float cell = floor(x_8);
     float f_1 = (x_8 - cell);
-    uint i_2 = uint((int(clamp(cell, -1000000.0, 1000000.0)) + 1048576));
-    float _e10 = hair_hash(i_2);
-    float _e13 = hair_hash((i_2 + 1u));
-    return (mix(_e10, _e13, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_1));
+    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
 void main() {

@@ -75,6 +75,7 @@ struct WeftVaryings {
 struct WeftHairLobes {
     metal::float3 s;
     metal::float3 albedo;
+    metal::float3 back;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -88,7 +89,7 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_HAIR_MIN_BETA_M = 0.05;
 constant float WEFT_HAIR_MIN_BETA_N = 0.05;
 constant uint HAIR_REFERENCE_OFFSETS = 64u;
-constant uint HAIR_FAST_OFFSETS = 8u;
+constant uint HAIR_FAST_OFFSETS = 12u;
 constant float HAIR_TERMINATOR = 0.25;
 
 metal::float3 weft_safe_normalize(
@@ -204,19 +205,22 @@ float hair_hash(
     return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
 }
 
-int naga_f2i32(float value) {
-    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
 }
 
 float hair_value_noise(
-    float x_1
+    float x_1,
+    float period
 ) {
+    float p = metal::max(metal::rint(period), 1.0);
     float cell = metal::floor(x_1);
     float f = x_1 - cell;
-    uint i = static_cast<uint>(as_type<int>(as_type<uint>(naga_f2i32(metal::clamp(cell, -1000000.0, 1000000.0))) + as_type<uint>(1048576)));
-    float _e10 = hair_hash(i);
-    float _e13 = hair_hash(i + 1u);
-    return metal::mix(_e10, _e13, (f * f) * (3.0 - (2.0 * f))) - 0.5;
+    float c0_ = cell - (p * metal::floor(cell / p));
+    float c1_ = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
+    float _e19 = hair_hash(naga_f2u32(c0_));
+    float _e21 = hair_hash(naga_f2u32(c1_));
+    return metal::mix(_e19, _e21, (f * f) * (3.0 - (2.0 * f))) - 0.5;
 }
 
 float hair_jitter(
@@ -242,8 +246,9 @@ float hair_jitter(
     float _e46 = material.jitter_strength;
     float _e50 = material.strand_noise;
     float _e53 = material.strand_density;
-    float _e55 = hair_value_noise(across * _e53);
-    return (_e46 * j) + (_e50 * _e55);
+    float _e57 = material.strand_density;
+    float _e58 = hair_value_noise(across * _e53, _e57);
+    return (_e46 * j) + (_e50 * _e58);
 }
 
 float hair_kajiya_kay(

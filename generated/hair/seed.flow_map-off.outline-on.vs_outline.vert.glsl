@@ -61,6 +61,7 @@ struct WeftVaryings {
 struct WeftHairLobes {
     vec3 s;
     vec3 albedo;
+    vec3 back;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -74,7 +75,7 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_HAIR_MIN_BETA_M = 0.05;
 const float WEFT_HAIR_MIN_BETA_N = 0.05;
 const uint HAIR_REFERENCE_OFFSETS = 64u;
-const uint HAIR_FAST_OFFSETS = 8u;
+const uint HAIR_FAST_OFFSETS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
@@ -171,13 +172,15 @@ float hair_hash(uint x) {
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_1) {
+float hair_value_noise(float x_1, float period) {
+    float p = max(roundEven(period), 1.0);
     float cell = floor(x_1);
     float f = (x_1 - cell);
-    uint i = uint((int(clamp(cell, -1000000.0, 1000000.0)) + 1048576));
-    float _e10 = hair_hash(i);
-    float _e13 = hair_hash((i + 1u));
-    return (mix(_e10, _e13, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_));
+    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
 }
 
 float hair_kajiya_kay(vec3 t, vec3 h, float exponent) {

@@ -67,6 +67,7 @@ struct WeftVaryings {
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
+    back: vec3<f32>,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -81,7 +82,7 @@ const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
 const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
 const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 8u;
+const HAIR_FAST_OFFSETS: u32 = 12u;
 const HAIR_TERMINATOR: f32 = 0.25f;
 
 @group(0) @binding(0) 
@@ -186,13 +187,15 @@ fn hair_hash(x: u32) -> f32 {
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_1: f32) -> f32 {
+fn hair_value_noise(x_1: f32, period: f32) -> f32 {
+    let p = max(round(period), 1f);
     let cell = floor(x_1);
     let f = (x_1 - cell);
-    let i = u32((i32(clamp(cell, -1000000f, 1000000f)) + 1048576i));
-    let _e10 = hair_hash(i);
-    let _e13 = hair_hash((i + 1u));
-    return (mix(_e10, _e13, ((f * f) * (3f - (2f * f)))) - 0.5f);
+    let c0_ = (cell - (p * floor((cell / p))));
+    let c1_ = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
+    let _e19 = hair_hash(u32(c0_));
+    let _e21 = hair_hash(u32(c1_));
+    return (mix(_e19, _e21, ((f * f) * (3f - (2f * f)))) - 0.5f);
 }
 
 fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
@@ -212,8 +215,9 @@ fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
     let _e46 = material.jitter_strength;
     let _e50 = material.strand_noise;
     let _e53 = material.strand_density;
-    let _e55 = hair_value_noise((across * _e53));
-    return ((_e46 * j) + (_e50 * _e55));
+    let _e57 = material.strand_density;
+    let _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
 }
 
 fn hair_kajiya_kay(t: vec3<f32>, h: vec3<f32>, exponent: f32) -> f32 {

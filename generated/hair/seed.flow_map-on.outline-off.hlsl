@@ -66,6 +66,8 @@ struct WeftHairLobes {
     float3 s;
     int _pad1_0;
     float3 albedo;
+    int _pad2_0;
+    float3 back;
     int _end_pad_0;
 };
 
@@ -81,7 +83,7 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_HAIR_MIN_BETA_M = 0.05;
 static const float WEFT_HAIR_MIN_BETA_N = 0.05;
 static const uint HAIR_REFERENCE_OFFSETS = 64u;
-static const uint HAIR_FAST_OFFSETS = 8u;
+static const uint HAIR_FAST_OFFSETS = 12u;
 static const float HAIR_TERMINATOR = 0.25;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
@@ -216,18 +218,20 @@ float hair_hash(uint x)
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-int naga_f2i32(float value) {
-    return int(clamp(value, -2147483600.0, 2147483500.0));
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_1)
+float hair_value_noise(float x_1, float period)
 {
+    float p = max(round(period), 1.0);
     float cell = floor(x_1);
     float f_1 = (x_1 - cell);
-    uint i = uint(asint(asuint(naga_f2i32(clamp(cell, -1000000.0, 1000000.0))) + asuint(int(1048576))));
-    const float _e10 = hair_hash(i);
-    const float _e13 = hair_hash((i + 1u));
-    return (lerp(_e10, _e13, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    const float _e19 = hair_hash(naga_f2u32(c0_));
+    const float _e21 = hair_hash(naga_f2u32(c1_));
+    return (lerp(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
 float hair_jitter(float2 uv0_1)
@@ -248,8 +252,9 @@ float hair_jitter(float2 uv0_1)
     float _e46 = material.jitter_strength;
     float _e50 = material.strand_noise;
     float _e53 = material.strand_density;
-    const float _e55 = hair_value_noise((across * _e53));
-    return ((_e46 * j) + (_e50 * _e55));
+    float _e57 = material.strand_density;
+    const float _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
 }
 
 float hair_kajiya_kay(float3 t, float3 h, float exponent)

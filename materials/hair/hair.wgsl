@@ -13,20 +13,21 @@
 //   reference = the energy-conserving fibre model of lib/hair_bsdf.wgsl
 //               (d'Eon et al. 2011 M_p, Chiang et al. 2016 N_p and A_p: R,
 //               TT, TRT and the residual), σ_a from the colour, averaged
-//               over the fibre's width with HAIR_REFERENCE_OFFSETS cells (N_p integrated per cell);
-//               ambient: SH irradiance × the fibre's directional albedo.
+//               over the fibre's width with HAIR_REFERENCE_OFFSETS cells
+//               (N_p integrated per cell); multiple scattering between
+//               fibres as a Lambert lobe carrying the colour's remainder.
 //   fast      = an approximation of the reference: the same model with
-//               HAIR_FAST_OFFSETS offsets across the fibre (README: the
+//               HAIR_FAST_OFFSETS cells across the fibre (README: the
 //               count against the error).
 //   seed      = a look: the seed's Kajiya-Kay, smoothstep(-1, 0, t.h)
 //               sin(t, h)^exponent intensity, plus Scheuermann's second
 //               shifted highlight, over Lambert diffuse and SH ambient.
 
-// Offsets across the fibre in the h average (midpoints in γ_o): the
+// Cells across the fibre in the h average (equal cells in γ_o): the
 // reference's count is converged (tests/hair_furnace.rs: within 0.6 % of 2048; 32 are 3.4 % off at β_n 0.15), fast's is the
 // smallest whose worst FLIP stays within the ladder's 0.05.
 const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 8u;
+const HAIR_FAST_OFFSETS: u32 = 12u;
 // Body shadow: light more than this far below the surface (in n.l) is
 // blocked by the head behind the hair; the band up to +this is the thin
 // layer at the terminator where light still passes (README).
@@ -75,9 +76,14 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             lobes = weft_hair_mean(hair, angles, HAIR_FAST_OFFSETS);
         }
         let body = smoothstep(-HAIR_TERMINATOR, HAIR_TERMINATOR, n_dot_l);
-        // Ambient: the SH irradiance as if it came evenly from every
-        // direction, times the fraction of it the fibre scatters towards v.
-        color = lobes.s * light * body + ambient * lobes.albedo;
+        // Multiple scattering between fibres (README, "Colour"): the fibres
+        // in front send back ⟨A_R + A_TRT⟩ themselves; of the rest, which
+        // enters the lock, the fraction `base` leaves it again (Chiang et
+        // al. fit σ_a so that a lock shows that colour), diffusely: a
+        // Lambert lobe for the light, the SH irradiance for the ambient.
+        let multiple = base * (vec3<f32>(1.0) - lobes.back);
+        let direct = lobes.s * body + multiple * (WEFT_INV_PI * saturate(n_dot_l));
+        color = direct * light + ambient * (multiple + lobes.back);
     }
 
     // Never negative, at most the fp16 maximum (Rgba16Float targets).
@@ -126,17 +132,21 @@ fn hair_jitter(uv0: vec2<f32>) -> f32 {
     let j = textureSample(jitter_map, material_sampler, uv_j).r;
     // Across the strands: u when they run along v, and v otherwise.
     let across = select(uv_j.x, uv_j.y, material.strand_along_tangent != 0u);
-    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density);
+    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density, material.strand_density);
 }
 
 // 1-D value noise in [-0.5, 0.5]: a hash per integer cell (PCG, Jarzynski &
-// Olano 2020), smoothstep-interpolated; deterministic on every GPU.
-fn hair_value_noise(x: f32) -> f32 {
+// Olano 2020), smoothstep-interpolated; deterministic on every GPU. The cells
+// repeat every `period`, so the noise wraps across a uv seam (u = 0 and 1 on
+// the sphere) when the density and the tiling are integers.
+fn hair_value_noise(x: f32, period: f32) -> f32 {
+    let p = max(round(period), 1.0);
     let cell = floor(x);
     let f = x - cell;
-    let i = u32(i32(clamp(cell, -1e6, 1e6)) + 1048576);
-    let a = hair_hash(i);
-    let b = hair_hash(i + 1u);
+    let c0 = cell - p * floor(cell / p);
+    let c1 = select(c0 + 1.0, 0.0, c0 + 1.0 >= p);
+    let a = hair_hash(u32(c0));
+    let b = hair_hash(u32(c1));
     return mix(a, b, f * f * (3.0 - 2.0 * f)) - 0.5;
 }
 

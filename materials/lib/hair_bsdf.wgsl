@@ -222,6 +222,9 @@ fn weft_hair_attenuation(hair: WeftHair, sin_o: f32, cos_o: f32, h: f32) -> Weft
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
+    // The share scattered back towards the viewer's side by R and TRT,
+    // ⟨A_0 + A_2⟩ (the part of the albedo a front-lit fibre shows).
+    back: vec3<f32>,
 }
 
 fn weft_hair_at_h(hair: WeftHair, sin_o: f32, cos_o: f32, phi: f32, h: f32, mp: vec4<f32>) -> WeftHairLobes {
@@ -233,6 +236,7 @@ fn weft_hair_at_h(hair: WeftHair, sin_o: f32, cos_o: f32, phi: f32, h: f32, mp: 
         + mp.z * a.a2 * weft_hair_np(phi, 2.0, hair.s, gamma_o, a.gamma_t)
         + mp.w * a.a3 * (0.5 * WEFT_INV_PI);
     out.albedo = a.a0 + a.a1 + a.a2 + vec3<f32>(a.a3);
+    out.back = a.a0 + a.a2;
     return out;
 }
 
@@ -310,6 +314,7 @@ fn weft_hair_mean(hair: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHai
     let step = WEFT_PI / f32(cells);
     var s = vec3<f32>(0.0);
     var albedo = vec3<f32>(0.0);
+    var back = vec3<f32>(0.0);
     var weights = 0.0;
     // φ - Φ_p at the cell's lower end, carried from the previous cell.
     var g0 = -0.5 * WEFT_PI;
@@ -327,6 +332,7 @@ fn weft_hair_mean(hair: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHai
             + mp.w * a.a3 * (0.5 * WEFT_INV_PI);
         s += w * lobes;
         albedo += w * (a.a0 + a.a1 + a.a2 + a.a3);
+        back += w * (a.a0 + a.a2);
         weights += w;
         g0 = g1;
         d0 = d1;
@@ -334,5 +340,6 @@ fn weft_hair_mean(hair: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHai
     var out: WeftHairLobes;
     out.s = s / weights;
     out.albedo = albedo / weights;
+    out.back = back / weights;
     return out;
 }
