@@ -218,7 +218,9 @@ fn weft_hair_attenuation(hair: WeftHair, sin_o: f32, cos_o: f32, h: f32) -> Weft
 
 // The lobes at one offset h: S_h = Σ_{p<3} M_p A_p N_p + M_3 A_3 / (2π),
 // and the albedo Σ_p A_p (= ∫ S_h dω_i, since each M_p N_p integrates to 1).
-// phi: φ_i - φ_o (signed: at one h, S is not even in φ).
+// phi: φ_i - φ_o (signed: at one h, S is not even in φ); the offset is given
+// as γ_o = asin h, so a caller that has the angle need not pass it through
+// asin (Vulkan allows asin and atan 4096 ulp: ~5e-4 rad near 1.1).
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
@@ -227,8 +229,8 @@ struct WeftHairLobes {
     back: vec3<f32>,
 }
 
-fn weft_hair_at_h(hair: WeftHair, sin_o: f32, cos_o: f32, phi: f32, h: f32, mp: vec4<f32>) -> WeftHairLobes {
-    let gamma_o = weft_hair_safe_asin(h);
+fn weft_hair_at_gamma(hair: WeftHair, sin_o: f32, cos_o: f32, phi: f32, gamma_o: f32, mp: vec4<f32>) -> WeftHairLobes {
+    let h = sin(gamma_o);
     let a = weft_hair_attenuation(hair, sin_o, cos_o, h);
     var out: WeftHairLobes;
     out.s = mp.x * a.a0 * weft_hair_np(phi, 0.0, hair.s, gamma_o, a.gamma_t)
