@@ -251,7 +251,7 @@ fn np(phi: f64, p: f64, s: f64, gamma_o: f64, gamma_t: f64) -> f64 {
 /// (S, albedo) at one offset h, ω in pbrt's frame (x along the strand).
 fn lobes_f64(f: &Fibre, o: [f64; 3], i: [f64; 3], h: f64) -> ([f64; 3], [f64; 3]) {
     let (sin_o, sin_i) = (o[0], i[0]);
-    let (cos_o, cos_i) = ((1.0 - sin_o * sin_o).sqrt(), (1.0 - sin_i * sin_i).sqrt());
+    let cos_o = (1.0 - sin_o * sin_o).sqrt();
     let phi = i[2].atan2(i[1]) - o[2].atan2(o[1]);
     let bm = f.beta_m;
     let v = (0.726 * bm + 0.812 * bm * bm + 3.7 * bm.powi(20)).powi(2);
