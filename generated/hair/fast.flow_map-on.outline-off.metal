@@ -103,8 +103,8 @@ constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_HAIR_MIN_BETA_M = 0.05;
 constant float WEFT_HAIR_MIN_BETA_N = 0.05;
-constant uint HAIR_REFERENCE_OFFSETS = 64u;
-constant uint HAIR_FAST_OFFSETS = 12u;
+constant uint HAIR_REFERENCE_CELLS = 64u;
+constant uint HAIR_FAST_CELLS = 12u;
 constant float HAIR_TERMINATOR = 0.25;
 
 metal::float3 weft_safe_normalize(
@@ -734,7 +734,7 @@ fragment fs_mainOutput fs_main(
         WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
         WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
         {
-            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_OFFSETS);
+            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_CELLS);
             lobes = _e59;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);

@@ -94,8 +94,8 @@ const WEFT_MAX_HALF: f32 = 65504f;
 const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
 const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
-const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 12u;
+const HAIR_REFERENCE_CELLS: u32 = 64u;
+const HAIR_FAST_CELLS: u32 = 12u;
 const HAIR_TERMINATOR: f32 = 0.25f;
 
 @group(0) @binding(0) 
@@ -591,7 +591,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
         let _e56 = weft_hair_angles(_e38, _e22, _e31);
         {
-            let _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_OFFSETS);
+            let _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_CELLS);
             lobes = _e59;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);

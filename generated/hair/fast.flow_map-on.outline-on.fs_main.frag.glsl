@@ -93,8 +93,8 @@ const float WEFT_MAX_HALF = 65504.0;
 const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_HAIR_MIN_BETA_M = 0.05;
 const float WEFT_HAIR_MIN_BETA_N = 0.05;
-const uint HAIR_REFERENCE_OFFSETS = 64u;
-const uint HAIR_FAST_OFFSETS = 12u;
+const uint HAIR_REFERENCE_CELLS = 64u;
+const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
@@ -563,7 +563,7 @@ void main() {
         WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
         WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
         {
-            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_OFFSETS);
+            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_CELLS);
             lobes = _e59;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);

@@ -126,8 +126,8 @@ static const float WEFT_MAX_HALF = 65504.0;
 static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_HAIR_MIN_BETA_M = 0.05;
 static const float WEFT_HAIR_MIN_BETA_N = 0.05;
-static const uint HAIR_REFERENCE_OFFSETS = 64u;
-static const uint HAIR_FAST_OFFSETS = 12u;
+static const uint HAIR_REFERENCE_CELLS = 64u;
+static const uint HAIR_FAST_CELLS = 12u;
 static const float HAIR_TERMINATOR = 0.25;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
@@ -741,7 +741,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         const WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
         const WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
         {
-            const WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_OFFSETS);
+            const WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_CELLS);
             lobes = _e59;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);

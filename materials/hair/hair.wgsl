@@ -13,21 +13,22 @@
 //   reference = the energy-conserving fibre model of lib/hair_bsdf.wgsl
 //               (d'Eon et al. 2011 M_p, Chiang et al. 2016 N_p and A_p: R,
 //               TT, TRT and the residual), σ_a from the colour, averaged
-//               over the fibre's width with HAIR_REFERENCE_OFFSETS cells
+//               over the fibre's width with HAIR_REFERENCE_CELLS cells
 //               (N_p integrated per cell); multiple scattering between
 //               fibres as a Lambert lobe carrying the colour's remainder.
 //   fast      = an approximation of the reference: the same model with
-//               HAIR_FAST_OFFSETS cells across the fibre (README: the
+//               HAIR_FAST_CELLS cells across the fibre (README: the
 //               count against the error).
 //   seed      = a look: the seed's Kajiya-Kay, smoothstep(-1, 0, t.h)
 //               sin(t, h)^exponent intensity, plus Scheuermann's second
 //               shifted highlight, over Lambert diffuse and SH ambient.
 
-// Cells across the fibre in the h average (equal cells in γ_o): the
-// reference's count is converged (tests/hair_furnace.rs: within 0.6 % of 2048; 32 are 3.4 % off at β_n 0.15), fast's is the
-// smallest whose worst FLIP stays within the ladder's 0.05.
-const HAIR_REFERENCE_OFFSETS: u32 = 64u;
-const HAIR_FAST_OFFSETS: u32 = 12u;
+// Cells across the fibre in the h average (equal cells in γ_o). The
+// reference's count is converged (tests/hair_furnace.rs: within 0.6 % of
+// 2048 intervals; 32 cells are 3.4 % off at β_n 0.15); fast's keeps a
+// margin under the ladder's worst FLIP 0.05 (10 cells: 0.045, 12: 0.036).
+const HAIR_REFERENCE_CELLS: u32 = 64u;
+const HAIR_FAST_CELLS: u32 = 12u;
 // Body shadow: light more than this far below the surface (in n.l) is
 // blocked by the head behind the hair; the band up to +this is the thin
 // layer at the terminator where light still passes (README).
@@ -71,9 +72,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let angles = weft_hair_angles(t, v, l);
         var lobes: WeftHairLobes;
         if WEFT_TIER == TIER_REFERENCE {
-            lobes = weft_hair_mean(hair, angles, HAIR_REFERENCE_OFFSETS);
+            lobes = weft_hair_mean(hair, angles, HAIR_REFERENCE_CELLS);
         } else {
-            lobes = weft_hair_mean(hair, angles, HAIR_FAST_OFFSETS);
+            lobes = weft_hair_mean(hair, angles, HAIR_FAST_CELLS);
         }
         let body = smoothstep(-HAIR_TERMINATOR, HAIR_TERMINATOR, n_dot_l);
         // Multiple scattering between fibres (README, "Colour"): the fibres
