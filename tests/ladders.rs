@@ -19,6 +19,7 @@ const MAX_WORST_FLIP: f64 = 0.05;
 const HONEST_LADDERS: &[&str] = &[
     "fur",
     "gauze",
+    "hair",
     "laser",
     "microcylinder",
     "satin",

@@ -1,0 +1,158 @@
+// @include "lib/forward.wgsl"
+// @include "lib/hair_bsdf.wgsl"
+//
+// hair: strand highlights for hair cards (seed 004 sec. 7). Returns linear
+// HDR radiance. See README.md for the derivations and measurements.
+//
+// Every tier shades along the same strand tangent: the mesh's bitangent (or
+// tangent), or the FLOW_MAP direction, tilted along the normal by the jitter
+// map (its uv rotated where the UV-rotation mask says so) and a procedural
+// per-strand noise.
+//
+// Tiers (WEFT_TIER):
+//   reference = the energy-conserving fibre model of lib/hair_bsdf.wgsl
+//               (d'Eon et al. 2011 M_p, Chiang et al. 2016 N_p and A_p: R,
+//               TT, TRT and the residual), σ_a from the colour, averaged
+//               over the fibre's width with HAIR_REFERENCE_CELLS cells
+//               (N_p integrated per cell); multiple scattering between
+//               fibres as a Lambert lobe carrying the colour's remainder.
+//   fast      = an approximation of the reference: the same model with
+//               HAIR_FAST_CELLS cells across the fibre (README: the
+//               count against the error).
+//   seed      = a look: the seed's Kajiya-Kay, smoothstep(-1, 0, t.h)
+//               sin(t, h)^exponent intensity, plus Scheuermann's second
+//               shifted highlight, over Lambert diffuse and SH ambient.
+
+// Cells across the fibre in the h average (equal cells in γ_o). The
+// reference's count is converged (tests/hair_furnace.rs: within 0.6 % of
+// 2048 intervals; 32 cells are 3.4 % off at β_n 0.15); fast's keeps a
+// margin under the ladder's worst FLIP 0.05 (10 cells: 0.045, 12: 0.036).
+const HAIR_REFERENCE_CELLS: u32 = 64u;
+const HAIR_FAST_CELLS: u32 = 12u;
+// Body shadow: light more than this far below the surface (in n.l) is
+// blocked by the head behind the hair; the band up to +this is the thin
+// layer at the terminator where light still passes (README).
+const HAIR_TERMINATOR: f32 = 0.25;
+
+@fragment
+fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+    // ------------------------------------------------------------ surface
+    let uv = weft_transform_uv(in.uv0, material.base_map_st);
+    let base_rgba = material.base_color * textureSample(base_map, material_sampler, uv);
+    let base = saturate(base_rgba.rgb);
+    let alpha = saturate(base_rgba.a);
+
+    // ------------------------------------------------------------ geometry
+    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
+    let n = weft_safe_normalize(in.world_normal, v);
+    let frame = weft_tangent_frame(n, in.world_tangent);
+    let strand = hair_strand(frame, in.uv0);
+    let shift = hair_jitter(in.uv0);
+    let l = weft_main_light_direction();
+    let light = weft_main_light_radiance();
+    let ambient = weft_sh_irradiance(n);
+    let n_dot_l = dot(n, l);
+
+    var color: vec3<f32>;
+    if WEFT_TIER == TIER_SEED {
+        // -------------------------------------------------------- seed (look)
+        // Unity's diffuse has no 1/π and the seed's specular is added to it:
+        // both are divided by π here (weft's Lambert), keeping their ratio.
+        let h = weft_safe_normalize(l + v, n);
+        let t1 = weft_safe_normalize(strand + (material.primary_shift + shift) * n, strand);
+        let t2 = weft_safe_normalize(strand + (material.secondary_shift + shift) * n, strand);
+        let primary = material.primary_color.rgb * (material.primary_intensity * hair_kajiya_kay(t1, h, material.primary_exponent));
+        let secondary = material.secondary_color.rgb * (material.secondary_intensity * hair_kajiya_kay(t2, h, material.secondary_exponent));
+        let direct = (base + primary + secondary) * WEFT_INV_PI * light * saturate(n_dot_l);
+        color = direct + ambient * base;
+    } else {
+        let t = weft_safe_normalize(strand + shift * n, strand);
+        let sigma_a = weft_hair_sigma_a_from_color(base, material.azimuthal_roughness);
+        let hair = weft_hair_params(sigma_a, material.ior, material.roughness, material.azimuthal_roughness, material.scale_angle);
+        let angles = weft_hair_angles(t, v, l);
+        var lobes: WeftHairLobes;
+        if WEFT_TIER == TIER_REFERENCE {
+            lobes = weft_hair_mean(hair, angles, HAIR_REFERENCE_CELLS);
+        } else {
+            lobes = weft_hair_mean(hair, angles, HAIR_FAST_CELLS);
+        }
+        let body = smoothstep(-HAIR_TERMINATOR, HAIR_TERMINATOR, n_dot_l);
+        // Multiple scattering between fibres (README, "Colour"): the fibres
+        // in front send back ⟨A_R + A_TRT⟩ themselves; of the rest, which
+        // enters the lock, the fraction `base` leaves it again (Chiang et
+        // al. fit σ_a so that a lock shows that colour), diffusely: a
+        // Lambert lobe for the light, the SH irradiance for the ambient.
+        let multiple = base * (vec3<f32>(1.0) - lobes.back);
+        let direct = lobes.s * body + multiple * (WEFT_INV_PI * saturate(n_dot_l));
+        color = direct * light + ambient * (multiple + lobes.back);
+    }
+
+    // Never negative, at most the fp16 maximum (Rgba16Float targets).
+    let radiance = clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    return vec4<f32>(radiance, alpha);
+}
+
+// The seed's Kajiya-Kay highlight: smoothstep(-1, 0, t.h) sin(t, h)^exponent.
+// sin is formed from the clamped cosine (t.h can leave [-1, 1] by rounding).
+fn hair_kajiya_kay(t: vec3<f32>, h: vec3<f32>, exponent: f32) -> f32 {
+    let t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+    let sin_th = sqrt(max(1.0 - t_dot_h * t_dot_h, 0.0));
+    let dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
+    return dir_atten * pow(sin_th, max(exponent, 1.0));
+}
+
+// The strand direction (world, unit, in the tangent plane): the mesh's
+// bitangent (hair cards run root to tip along v) or tangent, or with
+// FLOW_MAP the map's tangent-space direction (rgb * 2 - 1, as the seed
+// decodes it). The map's component along the normal is dropped (the jitter
+// supplies the tilt), and a texel with no direction in the plane (the
+// default `normal` texel, (0, 0, 1)) keeps the mesh's.
+fn hair_strand(frame: mat3x3<f32>, uv0: vec2<f32>) -> vec3<f32> {
+    var ts = select(vec2<f32>(0.0, 1.0), vec2<f32>(1.0, 0.0), material.strand_along_tangent != 0u);
+    if FLOW_MAP {
+        let f = textureSample(flow_map, material_sampler, uv0).xy * 2.0 - 1.0;
+        let len2 = dot(f, f);
+        ts = select(ts, f * inverseSqrt(max(len2, 1e-12)), len2 > 1e-4);
+    }
+    return weft_safe_normalize(frame[0] * ts.x + frame[1] * ts.y, frame[1]);
+}
+
+// The tilt of the strand along the normal: the seed's jitter map (its red
+// channel, with its own tiling; in the masked region of the UV-rotation mask,
+// step(0.8, mask), the uv is first rotated by the direction angle, as the
+// seed does for cards unwrapped across the strands) times its strength, plus
+// a procedural per-strand noise across the strands.
+fn hair_jitter(uv0: vec2<f32>) -> f32 {
+    let mask = step(0.8, textureSample(uv_rotate_mask, material_sampler, uv0).r);
+    let a = radians(material.anisotropic_direction);
+    let c = cos(a);
+    let s = sin(a);
+    // HLSL mul(float2x2(c, s, -s, c), uv): rows (c, s) and (-s, c).
+    let rotated = vec2<f32>(c * uv0.x + s * uv0.y, -s * uv0.x + c * uv0.y);
+    let uv_j = weft_transform_uv(select(uv0, rotated, mask > 0.5), material.jitter_map_st);
+    let j = textureSample(jitter_map, material_sampler, uv_j).r;
+    // Across the strands: u when they run along v, and v otherwise.
+    let across = select(uv_j.x, uv_j.y, material.strand_along_tangent != 0u);
+    return material.jitter_strength * j + material.strand_noise * hair_value_noise(across * material.strand_density, material.strand_density);
+}
+
+// 1-D value noise in [-0.5, 0.5]: a hash per integer cell (PCG, Jarzynski &
+// Olano 2020), smoothstep-interpolated; deterministic on every GPU. The cells
+// repeat every `period`, so the noise wraps across a uv seam (u = 0 and 1 on
+// the sphere) when the density and the tiling are integers.
+fn hair_value_noise(x: f32, period: f32) -> f32 {
+    let p = max(round(period), 1.0);
+    let cell = floor(x);
+    let f = x - cell;
+    let c0 = cell - p * floor(cell / p);
+    let c1 = select(c0 + 1.0, 0.0, c0 + 1.0 >= p);
+    let a = hair_hash(u32(c0));
+    let b = hair_hash(u32(c1));
+    return mix(a, b, f * f * (3.0 - 2.0 * f)) - 0.5;
+}
+
+fn hair_hash(x: u32) -> f32 {
+    let state = x * 747796405u + 2891336453u;
+    let word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return f32((word >> 22u) ^ word) * (1.0 / 4294967296.0);
+}

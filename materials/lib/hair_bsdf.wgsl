@@ -1,0 +1,347 @@
+// @include "lib/brdf.wgsl"
+//
+// weft hair BSDF library: pure functions, no bindings. The energy-conserving
+// hair scattering model of d'Eon et al. 2011 (longitudinal M_p) with the
+// azimuthal N_p, attenuation A_p and parameterisation of Chiang et al. 2016
+// as pbrt-v3's HairBSDF writes it (Pharr, Jakob & Humphreys, PBR 3rd ed.,
+// sec. 9.9 "Hair"): lobes p = 0 (R), 1 (TT), 2 (TRT) and a residual p = 3
+// for every longer internal path.
+//
+// Angles (Marschner et al. 2003): θ is measured from the normal plane of the
+// fibre (sin θ = w·t for the unit strand tangent t), φ around the fibre, h
+// in [-1, 1] the offset across it (γ_o = asin h). Every function returns the
+// cosine-weighted form S = Σ_p M_p A_p N_p (pbrt's f · |cos θ_i|), so that
+// ∫ S dω_i is the fraction of light the fibre scatters (1 with σ_a = 0) and
+// a directional light of radiance E gives L_o = S E.
+
+// Longitudinal variances and azimuthal scale from the user's roughnesses,
+// the scale tilts (sin, cos of 2^k α), the IOR and the absorption: what a
+// pixel evaluates once and every lobe reads.
+struct WeftHair {
+    sigma_a: vec3<f32>,
+    eta: f32,
+    // v_p of lobes R, TT, TRT, residual.
+    v: vec4<f32>,
+    // Logistic scale s of N_p.
+    s: f32,
+    // sin / cos of α, 2α, 4α.
+    sin2k: vec3<f32>,
+    cos2k: vec3<f32>,
+}
+
+// Smallest longitudinal roughness: v_TT = v / 4 stays above 2e-4, where the
+// log-space M_p is still accurate in f32 (its exponents stay below ~1e4).
+const WEFT_HAIR_MIN_BETA_M: f32 = 0.05;
+// Smallest azimuthal roughness: the logistic scale s >= 4e-3.
+const WEFT_HAIR_MIN_BETA_N: f32 = 0.05;
+
+fn weft_hair_sqr(x: f32) -> f32 {
+    return x * x;
+}
+
+fn weft_hair_safe_sqrt(x: f32) -> f32 {
+    return sqrt(max(x, 0.0));
+}
+
+fn weft_hair_safe_asin(x: f32) -> f32 {
+    return asin(clamp(x, -1.0, 1.0));
+}
+
+// Chiang et al. 2016, eq. 7: the longitudinal variance v = (0.726 β_m +
+// 0.812 β_m² + 3.7 β_m^20)² fitted so that β_m is perceptually linear.
+fn weft_hair_variance(beta_m: f32) -> f32 {
+    let b = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    let b2 = b * b;
+    let b4 = b2 * b2;
+    let b20 = b4 * b4 * b4 * b4 * b4;
+    return weft_hair_sqr(0.726 * b + 0.812 * b2 + 3.7 * b20);
+}
+
+// Chiang et al. 2016, eq. 8: the logistic scale s = √(π/8) (0.265 β_n +
+// 1.194 β_n² + 5.372 β_n^22).
+fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
+    let b = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    let b2 = b * b;
+    let b4 = b2 * b2;
+    let b22 = b4 * b4 * b4 * b4 * b4 * b2;
+    return 0.626657069 * (0.265 * b + 1.194 * b2 + 5.372 * b22);
+}
+
+// Chiang et al. 2016, eq. 9: absorption σ_a (per unit diameter) that gives
+// multiply-scattered hair of colour c (linear, each channel in (0, 1]) at
+// azimuthal roughness β_n. c is floored at 1e-4 (log 0).
+fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n: f32) -> vec3<f32> {
+    let b = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    let d = 5.969 - 0.215 * b + 2.532 * b * b - 10.73 * pow(b, 3.0) + 5.574 * pow(b, 4.0) + 0.245 * pow(b, 5.0);
+    let l = log(clamp(c, vec3<f32>(1e-4), vec3<f32>(1.0))) / d;
+    return l * l;
+}
+
+// Per-pixel constants of the model. alpha_deg: cuticle scale tilt α in
+// degrees (R shifts by -2α, TT by α, TRT by 4α: pbrt's tilts).
+fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m: f32, beta_n: f32, alpha_deg: f32) -> WeftHair {
+    var hair: WeftHair;
+    hair.sigma_a = max(sigma_a, vec3<f32>(0.0));
+    hair.eta = max(eta, 1.0001);
+    let v = weft_hair_variance(beta_m);
+    hair.v = vec4<f32>(v, 0.25 * v, 4.0 * v, 4.0 * v);
+    hair.s = weft_hair_logistic_scale(beta_n);
+    let a = radians(alpha_deg);
+    let s0 = sin(a);
+    let c0 = weft_hair_safe_sqrt(1.0 - s0 * s0);
+    let s1 = 2.0 * c0 * s0;
+    let c1 = c0 * c0 - s0 * s0;
+    let s2 = 2.0 * c1 * s1;
+    let c2 = c1 * c1 - s1 * s1;
+    hair.sin2k = vec3<f32>(s0, s1, s2);
+    hair.cos2k = vec3<f32>(c0, c1, c2);
+    return hair;
+}
+
+// ---------------------------------------------------------------- M_p
+
+// Modified Bessel function I_0 by its power series Σ (x²/4)^i / (i!)², 16
+// terms, each from the previous one (no factorial overflow): relative error
+// below 1e-6 for x <= 12, the range the linear-space M_p uses.
+fn weft_hair_i0(x: f32) -> f32 {
+    let q = 0.25 * x * x;
+    var term = 1.0;
+    var sum = 1.0;
+    for (var i = 1; i < 16; i += 1) {
+        let k = f32(i);
+        term *= q / (k * k);
+        sum += term;
+    }
+    return sum;
+}
+
+// log I_0(x): the series below 12, above it the asymptotic expansion
+// x - ½ log(2πx) + log(1 + 1/(8x) + 9/(128x²)) (relative error of I_0 below
+// 5e-5 at x = 12, less beyond). pbrt-v3's LogI0 adds 1/(16x) instead of
+// log(1 + 1/(8x)) (the term inside the ½): 0.5 % low at x = 12, found by
+// tests/hair_furnace.rs's f64 comparison.
+fn weft_hair_log_i0(x: f32) -> f32 {
+    if x > 12.0 {
+        let r = 1.0 / x;
+        return x - 0.5 * log(2.0 * WEFT_PI * x) + log(1.0 + r * (0.125 + 0.0703125 * r));
+    }
+    return log(weft_hair_i0(x));
+}
+
+// d'Eon et al. 2011, eq. 7: M_p = csch(1/v) / (2v) · exp(-sin θ_i sin θ_o / v)
+// · I_0(cos θ_i cos θ_o / v), normalised so ∫ M_p cos θ_i dθ_i = 1. For
+// v <= 0.1 sinh(1/v) and I_0 overflow f32 (1/v = 5000 at β_m = 0.05's TT):
+// the log-space form of d'Eon et al. sec. 4.2, with
+// log(csch(1/v)) = -1/v + log 2 + log(1 / (1 - e^(-2/v))) ~ -1/v + log 2.
+fn weft_hair_mp(cos_i: f32, cos_o: f32, sin_i: f32, sin_o: f32, v: f32) -> f32 {
+    let a = cos_i * cos_o / v;
+    let b = sin_i * sin_o / v;
+    if v <= 0.1 {
+        return exp(weft_hair_log_i0(a) - b - 1.0 / v + 0.6931472 + log(1.0 / (2.0 * v)));
+    }
+    return exp(-b) * weft_hair_i0(a) / (sinh(1.0 / v) * 2.0 * v);
+}
+
+// The four lobes' M_p for one pair of directions, with the cuticle tilts
+// applied to θ_i (R: -2α, TT: +α, TRT: +4α in pbrt's sign convention) and
+// |cos| of the tilted angle; the residual is untilted.
+fn weft_hair_longitudinal(hair: WeftHair, sin_o: f32, cos_o: f32, sin_i: f32, cos_i: f32) -> vec4<f32> {
+    let sin_r = sin_i * hair.cos2k.y + cos_i * hair.sin2k.y;
+    let cos_r = abs(cos_i * hair.cos2k.y - sin_i * hair.sin2k.y);
+    let sin_tt = sin_i * hair.cos2k.x - cos_i * hair.sin2k.x;
+    let cos_tt = abs(cos_i * hair.cos2k.x + sin_i * hair.sin2k.x);
+    let sin_trt = sin_i * hair.cos2k.z - cos_i * hair.sin2k.z;
+    let cos_trt = abs(cos_i * hair.cos2k.z + sin_i * hair.sin2k.z);
+    return vec4<f32>(
+        weft_hair_mp(cos_r, cos_o, sin_r, sin_o, hair.v.x),
+        weft_hair_mp(cos_tt, cos_o, sin_tt, sin_o, hair.v.y),
+        weft_hair_mp(cos_trt, cos_o, sin_trt, sin_o, hair.v.z),
+        weft_hair_mp(cos_i, cos_o, sin_i, sin_o, hair.v.w),
+    );
+}
+
+// ---------------------------------------------------------------- N_p, A_p
+
+// The logistic distribution of scale s, symmetric in x.
+fn weft_hair_logistic(x: f32, s: f32) -> f32 {
+    let e = exp(-abs(x) / s);
+    return e / (s * weft_hair_sqr(1.0 + e));
+}
+
+// The logistic normalised over [-π, π] (Chiang et al. 2016, eq. 11).
+fn weft_hair_trimmed_logistic(x: f32, s: f32) -> f32 {
+    // CDF(π) - CDF(-π) = 1 - 2 CDF(-π) = (1 - e^(-π/s)) / (1 + e^(-π/s)).
+    let e = exp(-WEFT_PI / s);
+    return weft_hair_logistic(x, s) * (1.0 + e) / (1.0 - e);
+}
+
+// N_p: the trimmed logistic around the exit azimuth Φ_p = 2pγ_t - 2γ_o + pπ,
+// the difference wrapped into [-π, π].
+fn weft_hair_np(phi: f32, p: f32, s: f32, gamma_o: f32, gamma_t: f32) -> f32 {
+    let d = phi - (2.0 * p * gamma_t - 2.0 * gamma_o + p * WEFT_PI);
+    let wrapped = d - 2.0 * WEFT_PI * round(d / (2.0 * WEFT_PI));
+    return weft_hair_trimmed_logistic(wrapped, s);
+}
+
+// The attenuations at one offset h: A_0 = F, A_1 = (1-F)² T, A_2 = A_1 F T,
+// A_3 = A_2 F T / (1 - F T) (every longer path), with F the dielectric
+// Fresnel at cos θ_o cos γ_o and T = exp(-σ_a 2 cos γ_t / cos θ_t) the
+// transmittance of one chord; Σ A_p = 1 with σ_a = 0. Also γ_t, from
+// Bravais' modified IOR η' of the projected problem (Marschner et al. 2003).
+struct WeftHairAttenuation {
+    a0: f32,
+    a1: vec3<f32>,
+    a2: vec3<f32>,
+    a3: vec3<f32>,
+    gamma_t: f32,
+}
+
+fn weft_hair_etap(hair: WeftHair, sin_o: f32, cos_o: f32) -> f32 {
+    return sqrt(hair.eta * hair.eta - sin_o * sin_o) / max(cos_o, 1e-4);
+}
+
+fn weft_hair_attenuation(hair: WeftHair, sin_o: f32, cos_o: f32, h: f32) -> WeftHairAttenuation {
+    let sin_t = sin_o / hair.eta;
+    let cos_t = weft_hair_safe_sqrt(1.0 - sin_t * sin_t);
+    let sin_gamma_t = clamp(h / weft_hair_etap(hair, sin_o, cos_o), -1.0, 1.0);
+    let cos_gamma_t = weft_hair_safe_sqrt(1.0 - sin_gamma_t * sin_gamma_t);
+    let t = exp(-hair.sigma_a * (2.0 * cos_gamma_t / max(cos_t, 1e-4)));
+    let f = weft_f_dielectric(cos_o * weft_hair_safe_sqrt(1.0 - h * h), hair.eta);
+    var a: WeftHairAttenuation;
+    a.a0 = f;
+    a.a1 = (1.0 - f) * (1.0 - f) * t;
+    a.a2 = a.a1 * t * f;
+    a.a3 = a.a2 * t * f / (vec3<f32>(1.0) - t * f);
+    a.gamma_t = asin(sin_gamma_t);
+    return a;
+}
+
+// The lobes at one offset h: S_h = Σ_{p<3} M_p A_p N_p + M_3 A_3 / (2π),
+// and the albedo Σ_p A_p (= ∫ S_h dω_i, since each M_p N_p integrates to 1).
+// phi: φ_i - φ_o (signed: at one h, S is not even in φ); the offset is given
+// as γ_o = asin h, so a caller that has the angle need not pass it through
+// asin (Vulkan allows asin and atan 4096 ulp: ~5e-4 rad near 1.1).
+struct WeftHairLobes {
+    s: vec3<f32>,
+    albedo: vec3<f32>,
+    // The share scattered back towards the viewer's side by R and TRT,
+    // ⟨A_0 + A_2⟩ (the part of the albedo a front-lit fibre shows).
+    back: vec3<f32>,
+}
+
+fn weft_hair_at_gamma(hair: WeftHair, sin_o: f32, cos_o: f32, phi: f32, gamma_o: f32, mp: vec4<f32>) -> WeftHairLobes {
+    let h = sin(gamma_o);
+    let a = weft_hair_attenuation(hair, sin_o, cos_o, h);
+    var out: WeftHairLobes;
+    out.s = mp.x * a.a0 * weft_hair_np(phi, 0.0, hair.s, gamma_o, a.gamma_t)
+        + mp.y * a.a1 * weft_hair_np(phi, 1.0, hair.s, gamma_o, a.gamma_t)
+        + mp.z * a.a2 * weft_hair_np(phi, 2.0, hair.s, gamma_o, a.gamma_t)
+        + mp.w * a.a3 * (0.5 * WEFT_INV_PI);
+    out.albedo = a.a0 + a.a1 + a.a2 + vec3<f32>(a.a3);
+    out.back = a.a0 + a.a2;
+    return out;
+}
+
+// The fibre's angles from unit world vectors: the strand tangent t, the
+// direction towards the viewer (o) and towards the light (i).
+// x: sin θ_o, y: cos θ_o, z: sin θ_i, w: cos θ_i; phi: φ_i - φ_o in [0, π]
+// (the h-averaged S is even in φ). A direction along the fibre has no
+// azimuth: φ = 0 is used (S does not depend on it there).
+struct WeftHairAngles {
+    theta: vec4<f32>,
+    phi: f32,
+}
+
+fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> WeftHairAngles {
+    var out: WeftHairAngles;
+    let sin_o = clamp(dot(o, t), -1.0, 1.0);
+    let sin_i = clamp(dot(i, t), -1.0, 1.0);
+    out.theta = vec4<f32>(sin_o, weft_hair_safe_sqrt(1.0 - sin_o * sin_o), sin_i, weft_hair_safe_sqrt(1.0 - sin_i * sin_i));
+    let o_perp = o - sin_o * t;
+    let i_perp = i - sin_i * t;
+    let len2 = dot(o_perp, o_perp) * dot(i_perp, i_perp);
+    let cos_phi = select(1.0, dot(o_perp, i_perp) * inverseSqrt(max(len2, 1e-30)), len2 > 1e-12);
+    out.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    return out;
+}
+
+// The logistic's CDF, and the trimmed logistic integrated over [lo, hi]
+// (0 <= hi - lo <= 2π, lo in [-2π, π]) as a function on the circle: the
+// parts beyond ±π wrap to the other end.
+fn weft_hair_logistic_cdf(x: f32, s: f32) -> f32 {
+    return 1.0 / (1.0 + exp(-x / s));
+}
+
+fn weft_hair_trimmed_integral(lo: f32, hi: f32, s: f32) -> f32 {
+    let c_lo = weft_hair_logistic_cdf(-WEFT_PI, s);
+    let c_hi = weft_hair_logistic_cdf(WEFT_PI, s);
+    let a = clamp(lo, -WEFT_PI, WEFT_PI);
+    let b = clamp(hi, -WEFT_PI, WEFT_PI);
+    var sum = weft_hair_logistic_cdf(b, s) - weft_hair_logistic_cdf(a, s);
+    if hi > WEFT_PI {
+        sum += weft_hair_logistic_cdf(min(hi - 2.0 * WEFT_PI, WEFT_PI), s) - c_lo;
+    }
+    if lo < -WEFT_PI {
+        sum += c_hi - weft_hair_logistic_cdf(max(lo + 2.0 * WEFT_PI, -WEFT_PI), s);
+    }
+    return sum / (c_hi - c_lo);
+}
+
+// The mean of N_p over a cell of γ_o whose ends give φ - Φ_p = d0 and d1:
+// Φ_p is taken linear across the cell (exact for R, Φ_0 = -2γ_o), so the
+// logistic is integrated exactly instead of sampled at the midpoint, which
+// would alias once a cell moves Φ_p by more than the lobe's width.
+fn weft_hair_np_cell(d0: f32, d1: f32, s: f32) -> f32 {
+    let mid = 0.5 * (d0 + d1);
+    let m = mid - 2.0 * WEFT_PI * round(mid / (2.0 * WEFT_PI));
+    let half = min(0.5 * abs(d1 - d0), WEFT_PI);
+    if half < 1e-4 {
+        return weft_hair_trimmed_logistic(m, s);
+    }
+    return weft_hair_trimmed_integral(m - half, m + half, s) / (2.0 * half);
+}
+
+// The far-field fibre seen across its width: S and the albedo averaged over
+// h uniform in [-1, 1] (a pixel covers many fibres at every offset), written
+// over γ_o = asin h (dh = cos γ_o dγ_o) and split into `count` equal cells.
+// Per cell: the smooth factors (A_p, cos γ_o) at its midpoint, N_p
+// integrated over the cell (weft_hair_np_cell); weights cos γ_o normalised
+// by their sum, so a constant in h is kept exactly (the albedo is 1 with
+// σ_a = 0 at any count).
+fn weft_hair_mean(hair: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHairLobes {
+    let th = angles.theta;
+    let mp = weft_hair_longitudinal(hair, th.x, th.y, th.z, th.w);
+    let etap = weft_hair_etap(hair, th.x, th.y);
+    let cells = max(count, 1u);
+    let step = WEFT_PI / f32(cells);
+    var s = vec3<f32>(0.0);
+    var albedo = vec3<f32>(0.0);
+    var back = vec3<f32>(0.0);
+    var weights = 0.0;
+    // φ - Φ_p at the cell's lower end, carried from the previous cell.
+    var g0 = -0.5 * WEFT_PI;
+    var d0 = angles.phi - (2.0 * vec3<f32>(0.0, 1.0, 2.0) * asin(clamp(sin(g0) / etap, -1.0, 1.0)) - 2.0 * g0 + vec3<f32>(0.0, 1.0, 2.0) * WEFT_PI);
+    for (var k = 0u; k < cells; k += 1u) {
+        let g1 = g0 + step;
+        let gamma_t1 = asin(clamp(sin(g1) / etap, -1.0, 1.0));
+        let d1 = angles.phi - (2.0 * vec3<f32>(0.0, 1.0, 2.0) * gamma_t1 - 2.0 * g1 + vec3<f32>(0.0, 1.0, 2.0) * WEFT_PI);
+        let gm = g0 + 0.5 * step;
+        let w = cos(gm);
+        let a = weft_hair_attenuation(hair, th.x, th.y, sin(gm));
+        let lobes = mp.x * a.a0 * weft_hair_np_cell(d0.x, d1.x, hair.s)
+            + mp.y * a.a1 * weft_hair_np_cell(d0.y, d1.y, hair.s)
+            + mp.z * a.a2 * weft_hair_np_cell(d0.z, d1.z, hair.s)
+            + mp.w * a.a3 * (0.5 * WEFT_INV_PI);
+        s += w * lobes;
+        albedo += w * (a.a0 + a.a1 + a.a2 + a.a3);
+        back += w * (a.a0 + a.a2);
+        weights += w;
+        g0 = g1;
+        d0 = d1;
+    }
+    var out: WeftHairLobes;
+    out.s = s / weights;
+    out.albedo = albedo / weights;
+    out.back = back / weights;
+    return out;
+}
