@@ -174,7 +174,11 @@ fn trace(c: &Case) -> Option<[f64; 2]> {
     // The transmitted direction: -n cos θ2 plus the incident direction's
     // tangential part scaled by 1/ior.
     let tangential = add([-c.v[0], -c.v[1], -c.v[2]], n, cos1);
-    let t = add([-n[0] * cos2, -n[1] * cos2, -n[2] * cos2], tangential, 1.0 / c.ior);
+    let t = add(
+        [-n[0] * cos2, -n[1] * cos2, -n[2] * cos2],
+        tangential,
+        1.0 / c.ior,
+    );
     let k = (z_i - hit[2]) / t[2];
     Some([hit[0] + k * t[0], hit[1] + k * t[1]])
 }
@@ -226,24 +230,42 @@ fn the_reference_matches_an_f64_ray_trace_at_every_view_angle() {
     for (c, (reference, _)) in cases.iter().zip(&got) {
         match trace(c) {
             Some(expected) => {
-                assert!(reference.through, "{c:?}: the f64 ray crosses the cornea, the shader's does not");
+                assert!(
+                    reference.through,
+                    "{c:?}: the f64 ray crosses the cornea, the shader's does not"
+                );
                 let d = distance(reference.iris, expected);
                 worst = worst.max(d);
                 // f32 against f64 over a few square roots: 1e-4 eyeball
                 // radii (1.2 µm on a 12 mm eye) is rounding, a formula error
                 // (the other root, a sign in Snell's law, the plane) moves the
                 // point by whole hundredths.
-                assert!(d < 1e-4, "{c:?}: shader {:?}, f64 {expected:?} ({d:.2e} apart)", reference.iris);
+                assert!(
+                    d < 1e-4,
+                    "{c:?}: shader {:?}, f64 {expected:?} ({d:.2e} apart)",
+                    reference.iris
+                );
                 hits += 1;
             }
             None => {
-                assert!(!reference.through, "{c:?}: the f64 ray misses the cornea, the shader's crosses it");
-                assert_eq!(reference.iris, [c.p[0], c.p[1]].map(|x| x as f32 as f64), "{c:?}: a miss sees the sclera at p");
+                assert!(
+                    !reference.through,
+                    "{c:?}: the f64 ray misses the cornea, the shader's crosses it"
+                );
+                assert_eq!(
+                    reference.iris,
+                    [c.p[0], c.p[1]].map(|x| x as f32 as f64),
+                    "{c:?}: a miss sees the sclera at p"
+                );
             }
         }
     }
     // Every point lies inside the limbus, so nearly all rays cross the cap.
-    assert!(hits * 10 >= cases.len() * 9, "only {hits} of {} rays crossed the cornea", cases.len());
+    assert!(
+        hits * 10 >= cases.len() * 9,
+        "only {hits} of {} rays crossed the cornea",
+        cases.len()
+    );
     eprintln!("reference vs f64 trace: {hits} rays, worst {worst:.2e} eyeball radii");
 }
 
@@ -269,7 +291,11 @@ fn without_refraction_the_iris_is_seen_along_the_straight_line() {
         let s = (z_i - c.p[2]) / c.v[2];
         let straight = [c.p[0] + s * c.v[0], c.p[1] + s * c.v[1]];
         let d = distance(reference.iris, straight);
-        assert!(d < 1e-4, "{c:?}: ior 1 gives {:?}, the straight line {straight:?}", reference.iris);
+        assert!(
+            d < 1e-4,
+            "{c:?}: ior 1 gives {:?}, the straight line {straight:?}",
+            reference.iris
+        );
     }
 }
 
@@ -309,22 +335,38 @@ fn parallax_agrees_with_refraction_at_normal_incidence_and_diverges_towards_graz
                 n += 1;
             }
         }
-        assert!(n > per_angle / 2, "{theta}°: only {n} lookups through the cornea");
+        assert!(
+            n > per_angle / 2,
+            "{theta}°: only {n} lookups through the cornea"
+        );
         mean.push(sum / n as f64);
-        eprintln!("{theta:>4}°: parallax vs refraction, mean {:.4} iris radii", sum / n as f64);
+        eprintln!(
+            "{theta:>4}°: parallax vs refraction, mean {:.4} iris radii",
+            sum / n as f64
+        );
     }
     // Paraxial agreement: within 2% of the iris radius up to 15° (the
     // curvature terms the expansion drops are second order in the angles).
     for (theta, m) in angles.iter().zip(&mean).take(3) {
-        assert!(*m < 0.02, "{theta}°: parallax {m:.4} iris radii off the refraction");
+        assert!(
+            *m < 0.02,
+            "{theta}°: parallax {m:.4} iris radii off the refraction"
+        );
     }
     // The error grows with the angle, and at grazing it is many times the
     // near-normal one: the first-order expansion breaks down.
     for w in mean.windows(2).skip(1) {
-        assert!(w[1] > w[0], "the divergence does not grow with the angle: {mean:?}");
+        assert!(
+            w[1] > w[0],
+            "the divergence does not grow with the angle: {mean:?}"
+        );
     }
     assert!(mean[6] > 5.0 * mean[2], "75° vs 15°: {mean:?}");
-    assert!(mean[6] > 0.05, "at 75° parallax stays within {:.4} iris radii of refraction", mean[6]);
+    assert!(
+        mean[6] > 0.05,
+        "at 75° parallax stays within {:.4} iris radii of refraction",
+        mean[6]
+    );
 }
 
 #[test]
@@ -343,7 +385,10 @@ fn the_cornea_magnifies_the_iris() {
         let rho = (c.p[0] * c.p[0] + c.p[1] * c.p[1]).sqrt();
         for (name, l) in [("reference", reference), ("parallax", parallax)] {
             let seen = (l.iris[0].powi(2) + l.iris[1].powi(2)).sqrt();
-            assert!(seen < rho, "{name}: looking along the axis at ρ = {rho:.3} sees the iris at {seen:.3}");
+            assert!(
+                seen < rho,
+                "{name}: looking along the axis at ρ = {rho:.3} sees the iris at {seen:.3}"
+            );
         }
     }
 }

@@ -130,7 +130,11 @@ fn keyword_case_tier(meta: &MaterialMetadata, keyword: &str, value: &str) -> Opt
         meta.variants.iter().any(|variant| {
             variant.tier == tier
                 && meta.keywords.iter().all(|k| {
-                    let want = if k.name == keyword { value } else { k.default.as_str() };
+                    let want = if k.name == keyword {
+                        value
+                    } else {
+                        k.default.as_str()
+                    };
                     variant.keywords.get(&k.name).map(String::as_str) == Some(want)
                 })
         })
