@@ -17,6 +17,7 @@ use weft_render::{EnvironmentMaps, Gpu, Luts, PreviewOptions, Renderer, SceneKin
 const MAX_WORST_FLIP: f64 = 0.05;
 
 const HONEST_LADDERS: &[&str] = &[
+    "eye",
     "fur",
     "gauze",
     "hair",

@@ -92,6 +92,7 @@ pub fn cases(meta: &MaterialMetadata) -> Vec<Case> {
         for v in k.values.iter().filter(|v| **v != k.default) {
             let options = MaterialOptions {
                 keywords: vec![(k.name.clone(), v.clone())],
+                tier: keyword_case_tier(meta, &k.name, v),
                 ..Default::default()
             };
             let mode = if k.mode == KeywordMode::Constant {
@@ -118,6 +119,30 @@ pub fn cases(meta: &MaterialMetadata) -> Vec<Case> {
         ));
     }
     out
+}
+
+/// The tier a keyword value's case is drawn at: the default tier (`None`)
+/// unless the material's `exclude` removes that combination (eye's
+/// `MATCAP_MAP` exists only in its `seed` tier), then the first tier in
+/// declaration order that has it, the other keywords at their defaults.
+fn keyword_case_tier(meta: &MaterialMetadata, keyword: &str, value: &str) -> Option<String> {
+    let has = |tier: &str| {
+        meta.variants.iter().any(|variant| {
+            variant.tier == tier
+                && meta.keywords.iter().all(|k| {
+                    let want = if k.name == keyword {
+                        value
+                    } else {
+                        k.default.as_str()
+                    };
+                    variant.keywords.get(&k.name).map(String::as_str) == Some(want)
+                })
+        })
+    };
+    if has(&meta.tiers.default) {
+        return None;
+    }
+    meta.tiers.values.iter().find(|t| has(t)).cloned()
 }
 
 /// Every `<generated>/<name>/<name>.meta.json`, sorted by name.
