@@ -58,33 +58,50 @@ fn d_r(d: f64, s: f64) -> f64 {
     s * ((-s * d).exp() + (-s * d / 3.0).exp()) / (8.0 * PI)
 }
 
-fn simpson(
-    f: &dyn Fn(f64) -> f64,
+/// One piece of the adaptive Simpson rule: its ends, the integrand at the
+/// ends and the middle, and Simpson's estimate over it.
+#[derive(Clone, Copy)]
+struct Piece {
     a: f64,
     b: f64,
     fa: f64,
     fm: f64,
     fb: f64,
     whole: f64,
-    tol: f64,
-    depth: u32,
-) -> f64 {
-    let m = 0.5 * (a + b);
-    let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
-    let (flm, frm) = (f(lm), f(rm));
-    let left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
-    let right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
-    if depth == 0 || (left + right - whole).abs() <= 15.0 * tol {
-        return left + right + (left + right - whole) / 15.0;
+}
+
+impl Piece {
+    fn new(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> Piece {
+        let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
+        Piece::with(a, b, fa, fm, fb)
     }
-    simpson(f, a, m, fa, flm, fm, left, tol / 2.0, depth - 1)
-        + simpson(f, m, b, fm, frm, fb, right, tol / 2.0, depth - 1)
+
+    fn with(a: f64, b: f64, fa: f64, fm: f64, fb: f64) -> Piece {
+        let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
+        Piece {
+            a,
+            b,
+            fa,
+            fm,
+            fb,
+            whole,
+        }
+    }
+}
+
+fn simpson(f: &dyn Fn(f64) -> f64, p: Piece, tol: f64, depth: u32) -> f64 {
+    let m = 0.5 * (p.a + p.b);
+    let left = Piece::with(p.a, m, p.fa, f(0.5 * (p.a + m)), p.fm);
+    let right = Piece::with(m, p.b, p.fm, f(0.5 * (m + p.b)), p.fb);
+    let sum = left.whole + right.whole;
+    if depth == 0 || (sum - p.whole).abs() <= 15.0 * tol {
+        return sum + (sum - p.whole) / 15.0;
+    }
+    simpson(f, left, tol / 2.0, depth - 1) + simpson(f, right, tol / 2.0, depth - 1)
 }
 
 fn integrate(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
-    let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
-    simpson(f, a, b, fa, fm, fb, whole, 1e-10, 40)
+    simpson(f, Piece::new(f, a, b), 1e-10, 40)
 }
 
 /// D(θ, r) for one channel, independently: ∫ sat(cos(θ + x)) dR dx / ∫ dR dx
