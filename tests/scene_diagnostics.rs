@@ -310,6 +310,10 @@ fn schema_matches_parser_keys() {
         sorted(scene::CAMERA_KEYS)
     );
     assert_eq!(
+        property_names(&s, &prop(&s, "light"), "[light]"),
+        sorted(scene::LIGHT_KEYS)
+    );
+    assert_eq!(
         property_names(&s, &instance, "[[instances]]"),
         sorted(scene::INSTANCE_KEYS)
     );

@@ -1,4 +1,5 @@
 // @include "lib/forward.wgsl"
+// @include "lib/skin_specular.wgsl"
 //
 // skin: pre-integrated subsurface scattering (seed 004 sec. 3). Returns
 // linear HDR radiance. See README.md for the derivations.
@@ -63,24 +64,6 @@ fn skin_dual_ggx(n: vec3<f32>, h: vec3<f32>, n_dot_v: f32, n_dot_l: f32, v_dot_h
     let lobe1 = weft_d_ggx_nh(n, h, r1) * weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, r1);
     let f = weft_f_schlick(vec3<f32>(f0), v_dot_h).x;
     return mix(lobe0, lobe1, saturate(w)) * f;
-}
-
-// The seed's DirectBDRF_DualLobeSpecular (sec. 3.2) as written, with
-// `roughness` Unity's linear roughness (perceptual squared) and the 1/pi
-// Unity folds into its lights restored; returns the term before x F0.
-fn skin_seed_specular(n: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n, h));
-    let l_dot_h = saturate(dot(l, h));
-    let r2 = roughness * roughness;
-    let normalization = roughness * 4.0 + 2.0;
-    let d = n_dot_h * n_dot_h * (r2 - 1.0) + 1.00001;
-    // The seed names it nv but takes n.l.
-    let nl = saturate(dot(n, l));
-    let s_ao = mix(pow(0.75, 8.0), 1.0, saturate(-0.3 + nl * nl));
-    let denom = d * d * max(0.1, l_dot_h * l_dot_h) * normalization;
-    let ggx = r2 / denom;
-    let second = 2.0 * r2 / denom * lobe_weight * mask;
-    return (ggx / 2.0 + second) * s_ao / WEFT_PI;
 }
 
 @fragment

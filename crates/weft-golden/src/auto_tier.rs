@@ -526,6 +526,7 @@ fn instance_scene(
             target: camera.target.map(f64::from),
             fov_degrees: f64::from(camera.fov_y_degrees),
         },
+        light: None,
         shaders: Vec::new(),
         languages: meta.languages.clone(),
         limits: meta.limits.clone(),

@@ -37,6 +37,10 @@ pub struct SceneMetadata {
     pub features: SceneFeatures,
     /// Camera for previews and tests.
     pub camera: SceneCamera,
+    /// The main light for previews and tests (`[light]`); absent: the
+    /// renderer's default light.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light: Option<SceneLight>,
     /// Unique specialised shaders, in first-use order.
     pub shaders: Vec<SceneShader>,
     /// Instances in manifest order (draw them by pass queue, then this order).
@@ -74,6 +78,17 @@ pub struct SceneCamera {
     pub target: [f64; 3],
     /// Vertical field of view in degrees, in (0, 180).
     pub fov_degrees: f64,
+}
+
+/// The main directional light for previews and tests.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SceneLight {
+    /// From the surface towards the light, world space (normalise it).
+    pub direction: [f64; 3],
+    /// Linear radiance; absent: the renderer's default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color: Option<[f64; 3]>,
 }
 
 /// One specialised shader.

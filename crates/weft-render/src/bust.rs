@@ -47,6 +47,16 @@ impl BustPart {
             BustPart::Shoulders => "shoulders",
         }
     }
+
+    /// The part's built-in mesh name in scenes and previews (`bust.head`).
+    pub fn mesh_name(self) -> &'static str {
+        match self {
+            BustPart::Head => "bust.head",
+            BustPart::Eyes => "bust.eyes",
+            BustPart::Hair => "bust.hair",
+            BustPart::Shoulders => "bust.shoulders",
+        }
+    }
 }
 
 /// Centre of the head and its radii (x across, y up, z forward).

@@ -7,6 +7,7 @@
 //! colour 5); the bitangent is `cross(normal, tangent.xyz) * tangent.w` and
 //! points along increasing v.
 
+use crate::bust::{BustPart, bust_parts};
 use crate::math::{self, Mat4, Vec3};
 use std::f32::consts::PI;
 
@@ -255,14 +256,21 @@ pub enum SceneKind {
     Swatch,
     /// The character bust (`bust.rs`): head, eyes, hair cards, shoulders.
     Bust,
+    /// One part of the bust, framed as the whole bust is, so a scene can
+    /// give each part its own material (`bust.head`, `bust.eyes`, …).
+    BustPart(BustPart),
 }
 
 impl SceneKind {
-    pub const ALL: [SceneKind; 4] = [
+    pub const ALL: [SceneKind; 8] = [
         SceneKind::Sphere,
         SceneKind::Cloth,
         SceneKind::Swatch,
         SceneKind::Bust,
+        SceneKind::BustPart(BustPart::Head),
+        SceneKind::BustPart(BustPart::Eyes),
+        SceneKind::BustPart(BustPart::Hair),
+        SceneKind::BustPart(BustPart::Shoulders),
     ];
 
     pub fn name(self) -> &'static str {
@@ -271,6 +279,7 @@ impl SceneKind {
             SceneKind::Cloth => "cloth",
             SceneKind::Swatch => "swatch",
             SceneKind::Bust => "bust",
+            SceneKind::BustPart(part) => part.mesh_name(),
         }
     }
 
@@ -295,6 +304,7 @@ impl Scene {
             SceneKind::Cloth => Scene::cloth(),
             SceneKind::Swatch => Scene::swatch(),
             SceneKind::Bust => Scene::bust(),
+            SceneKind::BustPart(part) => Scene::bust_part(part),
         }
     }
 
@@ -351,6 +361,19 @@ impl Scene {
 }
 
 impl Scene {
+    /// One part of the bust, in the bust's frame and camera.
+    pub fn bust_part(part: BustPart) -> Scene {
+        let mesh = bust_parts()
+            .into_iter()
+            .find(|(p, _)| *p == part)
+            .map(|(_, m)| m)
+            .expect("bust_parts has every part");
+        Scene {
+            mesh,
+            ..Scene::bust()
+        }
+    }
+
     /// The character bust, three-quarter height, face towards the camera.
     pub fn bust() -> Scene {
         Scene {

@@ -87,7 +87,7 @@ impl SceneFile {
         }
         Ok(SceneFile {
             dir: path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-            lighting: SceneLighting::from_features(&metadata.features),
+            lighting: SceneLighting::from_metadata(&metadata),
             path,
             metadata,
         })
@@ -118,6 +118,19 @@ impl SceneLighting {
             sh_ambient: features.sh_ambient,
             light,
         }
+    }
+
+    /// The features' lighting with the scene's own light (`[light]`), if it
+    /// names one.
+    pub fn from_metadata(meta: &SceneMetadata) -> SceneLighting {
+        let mut lighting = SceneLighting::from_features(&meta.features);
+        if let Some(l) = &meta.light {
+            lighting.light.direction = l.direction.map(|c| c as f32);
+            if let (Some(c), true) = (l.color, meta.features.directional_lights > 0) {
+                lighting.light.radiance = c.map(|c| c as f32);
+            }
+        }
+        lighting
     }
 }
 

@@ -21,8 +21,8 @@ use weft_front::scene::model::{ResolvedInstance, ResolvedScene, TierChoice};
 use weft_front::variants::VariantKey;
 use weft_front::{Diagnostics, SourceDb};
 use weft_meta::scene::{
-    SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneMetadata, SceneShader,
-    SceneTexture, SceneTransform,
+    SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneLight, SceneMetadata,
+    SceneShader, SceneTexture, SceneTransform,
 };
 use weft_meta::{ENGINE_INTERFACE_VERSION, ParamKind};
 
@@ -514,6 +514,10 @@ pub fn build_resolved_scene(
             target: manifest.camera.target,
             fov_degrees: manifest.camera.fov_degrees,
         },
+        light: manifest.light.as_ref().map(|l| SceneLight {
+            direction: l.direction,
+            color: l.color,
+        }),
         shaders,
         instances,
         languages: crate::engine_binding::languages(),

@@ -12,7 +12,7 @@ pub mod parse;
 pub mod resolve;
 
 pub use model::{ResolvedInstance, ResolvedScene, SceneManifest};
-pub use parse::{CAMERA_KEYS, INSTANCE_KEYS, SCENE_KEYS, TOP_KEYS};
+pub use parse::{CAMERA_KEYS, INSTANCE_KEYS, LIGHT_KEYS, SCENE_KEYS, TOP_KEYS};
 
 use crate::diag::{Diagnostics, SourceDb};
 use crate::toml_reader::Cx;

@@ -20,14 +20,24 @@ pub enum BuiltinMesh {
     Swatch,
     /// The character bust (head, eyes, hair cards, shoulders) as one mesh.
     Bust,
+    /// The bust's parts, one mesh each, so every part can have its own
+    /// material (a face on the head, eyes, hair on the cards).
+    BustHead,
+    BustEyes,
+    BustHair,
+    BustShoulders,
 }
 
 impl BuiltinMesh {
-    pub const ALL: [BuiltinMesh; 4] = [
+    pub const ALL: [BuiltinMesh; 8] = [
         BuiltinMesh::Sphere,
         BuiltinMesh::Cloth,
         BuiltinMesh::Swatch,
         BuiltinMesh::Bust,
+        BuiltinMesh::BustHead,
+        BuiltinMesh::BustEyes,
+        BuiltinMesh::BustHair,
+        BuiltinMesh::BustShoulders,
     ];
     pub fn name(self) -> &'static str {
         match self {
@@ -35,6 +45,10 @@ impl BuiltinMesh {
             BuiltinMesh::Cloth => "cloth",
             BuiltinMesh::Swatch => "swatch",
             BuiltinMesh::Bust => "bust",
+            BuiltinMesh::BustHead => "bust.head",
+            BuiltinMesh::BustEyes => "bust.eyes",
+            BuiltinMesh::BustHair => "bust.hair",
+            BuiltinMesh::BustShoulders => "bust.shoulders",
         }
     }
     pub fn from_name(s: &str) -> Option<BuiltinMesh> {
@@ -61,6 +75,15 @@ impl Default for SceneFeatures {
             directional_lights: 1,
         }
     }
+}
+
+/// `[light]`: the main directional light previews and tests draw with.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneLight {
+    /// From the surface towards the light (any length but zero).
+    pub direction: [f64; 3],
+    /// Linear radiance; `None`: the renderer's default.
+    pub color: Option<[f64; 3]>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -155,6 +178,9 @@ pub struct SceneManifest {
     pub scene_span: Span,
     pub vertex_inputs: Spanned<Vec<VertexAttribute>>,
     pub camera: Camera,
+    /// The main light for previews and tests (`[light]`); the renderer's
+    /// default light when absent.
+    pub light: Option<SceneLight>,
     /// Fails the build when the scene needs more unique shaders.
     pub max_shaders: Option<Spanned<usize>>,
     pub instances: Vec<InstanceDecl>,

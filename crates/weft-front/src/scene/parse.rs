@@ -11,7 +11,7 @@ use codespan_reporting::diagnostic::Label;
 use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue};
 
-pub const TOP_KEYS: &[&str] = &["scene", "camera", "instances"];
+pub const TOP_KEYS: &[&str] = &["scene", "camera", "light", "instances"];
 pub const SCENE_KEYS: &[&str] = &[
     "name",
     "description",
@@ -23,6 +23,7 @@ pub const SCENE_KEYS: &[&str] = &[
     "max_shaders",
 ];
 pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
+pub const LIGHT_KEYS: &[&str] = &["direction", "color"];
 pub const INSTANCE_KEYS: &[&str] = &[
     "name",
     "material",
@@ -188,6 +189,10 @@ pub fn parse_manifest<'a, 'i>(
         .and_then(|v| Table::new(v, "[camera]", cx))
         .map(|t| parse_camera(&t, cx))
         .unwrap_or_default();
+    let light = top
+        .get("light")
+        .and_then(|v| Table::new(v, "[light]", cx))
+        .and_then(|t| parse_light(&t, cx));
 
     let mut manifest = SceneManifest {
         name,
@@ -202,6 +207,7 @@ pub fn parse_manifest<'a, 'i>(
             span: scene.span_of("vertex_inputs"),
         },
         camera,
+        light,
         max_shaders,
         instances: Vec::new(),
     };
@@ -355,6 +361,45 @@ fn parse_camera(t: &Table, cx: &mut Cx) -> Camera {
         }
     }
     camera
+}
+
+fn parse_light(t: &Table, cx: &mut Cx) -> Option<SceneLight> {
+    t.check_keys(LIGHT_KEYS, cx);
+    let Some(direction) = vec3(t, "direction", cx) else {
+        if t.get("direction").is_none() {
+            cx.error_with_note(
+                "missing-key",
+                "[light] needs a `direction`",
+                t.span.clone(),
+                "no `direction` here",
+                "e.g. direction = [-1.0, 0.5, 0.6] (from the surface towards the light)",
+            );
+        }
+        return None;
+    };
+    if direction.iter().all(|c| c.abs() < 1e-6) {
+        cx.error_with_note(
+            "out-of-range",
+            "`direction` of [light] must not be zero",
+            t.span_of("direction"),
+            "no direction",
+            "it points from the surface towards the light, e.g. [-1.0, 0.5, 0.6]",
+        );
+        return None;
+    }
+    let color = vec3(t, "color", cx);
+    if let Some(c) = color
+        && c.iter().any(|x| *x < 0.0)
+    {
+        cx.error(
+            "out-of-range",
+            "`color` of [light] must not be negative",
+            t.span_of("color"),
+            "a negative radiance",
+        );
+        return None;
+    }
+    Some(SceneLight { direction, color })
 }
 
 /// A required string key; reports it missing at `at`.

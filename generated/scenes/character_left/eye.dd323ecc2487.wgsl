@@ -1,0 +1,348 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct EyeCornea {
+    z_iris: f32,
+    centre_z: f32,
+    radius: f32,
+}
+
+struct EyeLookup {
+    iris: vec2<f32>,
+    normal: vec3<f32>,
+    through_cornea: f32,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_d_ggx_nh(n: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e3 * _e3);
+    let a2_ = (a_1 * a_1);
+    let noh = saturate(dot(n, h));
+    let nxh = cross(n, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
+    let c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
+    let g2_ = (((eta * eta) - 1f) + (c_5 * c_5));
+    let g = sqrt(max(g2_, 0f));
+    let gmc = (g - c_5);
+    let gpc = max((g + c_5), 0.0000001f);
+    let a_2 = (gmc / gpc);
+    let b = (((c_5 * gpc) - 1f) / max(((c_5 * gmc) + 1f), 0.0000001f));
+    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b * b))));
+    return select(f, 1f, (g2_ < 0f));
+}
+
+fn weft_f0_from_ior(ior: f32) -> f32 {
+    let q_1 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_1 * q_1);
+}
+
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_3 = (_e3 * _e3);
+    let a2_1 = (a_3 * a_3);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_env_brdf_from_lut(f0_: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e5 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e5;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
+    let c_6 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_6.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+    return _e8.xy;
+}
+
+fn eye_cornea(iris_radius: f32, height: f32) -> EyeCornea {
+    let r_1 = clamp(iris_radius, 0.05f, 0.95f);
+    let h_1 = max(height, 0.01f);
+    let z_iris = sqrt((1f - (r_1 * r_1)));
+    let radius = (((r_1 * r_1) + (h_1 * h_1)) / (2f * h_1));
+    return EyeCornea(z_iris, ((z_iris + h_1) - radius), radius);
+}
+
+fn eye_cornea_height(c_1: EyeCornea, rho: f32) -> f32 {
+    let z = (c_1.centre_z + sqrt(max(((c_1.radius * c_1.radius) - (rho * rho)), 0f)));
+    return max((z - c_1.z_iris), 0f);
+}
+
+fn eye_cornea_normal(c_2: EyeCornea, xy: vec2<f32>) -> vec3<f32> {
+    let z_1 = sqrt(max(((c_2.radius * c_2.radius) - dot(xy, xy)), 0f));
+    return (vec3<f32>(xy, z_1) / vec3(c_2.radius));
+}
+
+fn eye_parallax(p: vec3<f32>, v_1: vec3<f32>, c_3: EyeCornea, ior_1: f32) -> EyeLookup {
+    var local: bool;
+
+    let limbus = sqrt((1f - (c_3.z_iris * c_3.z_iris)));
+    let rho_2 = length(p.xy);
+    if !((p.z <= 0f)) {
+        local = (rho_2 >= limbus);
+    } else {
+        local = true;
+    }
+    let _e20 = local;
+    if _e20 {
+        return EyeLookup(p.xy, p, 0f);
+    }
+    let inv_ior = (1f / max(ior_1, 1f));
+    let _e29 = eye_cornea_height(c_3, rho_2);
+    let d_1 = ((c_3.z_iris + _e29) - p.z);
+    let e_raw = (p.xy + (d_1 * v_1.xy));
+    let e_1 = (e_raw * min(1f, (limbus / max(length(e_raw), 0.000001f))));
+    let _e45 = eye_cornea_height(c_3, length(e_1));
+    let _e46 = eye_cornea_normal(c_3, e_1);
+    let iris_1 = (e_1 - (_e45 * ((v_1.xy * inv_ior) + (_e46.xy * (1f - inv_ior)))));
+    return EyeLookup(iris_1, _e46, 1f);
+}
+
+fn eye_procedural_iris(rho_1: f32, a: f32) -> vec3<f32> {
+    var c_4: vec3<f32>;
+
+    let t = saturate(((rho_1 - 0.38f) / 0.62f));
+    c_4 = mix(vec3<f32>(0.34239164f, 0.147319f, 0.021980947f), vec3<f32>(0.10653923f, 0.033104766f, 0.008540382f), smoothstep(0.05f, 0.5f, t));
+    let fibres = ((0.82f + (0.1f * sin(((a * 23f) + (6f * t))))) + (0.08f * sin((((a * 41f) - (9f * t)) + 1.3f))));
+    let _e35 = c_4;
+    c_4 = (_e35 * fibres);
+    let _e38 = c_4;
+    c_4 = (_e38 * (1f - (0.8f * smoothstep(0.88f, 1f, rho_1))));
+    let _e48 = c_4;
+    return mix(vec3(0.01f), _e48, smoothstep(0.35999998f, 0.4f, rho_1));
+}
+
+fn eye_albedo(q: vec2<f32>, front: bool) -> vec3<f32> {
+    var iris: vec3<f32>;
+
+    let rho_3 = (length(q) / 0.5f);
+    {
+        let qa = select(vec2<f32>(1f, 0f), q, (dot(q, q) > 0.000000000001f));
+        let _e14 = eye_procedural_iris(rho_3, atan2(qa.y, qa.x));
+        iris = _e14;
+    }
+    let to_sclera = select(1f, smoothstep(0.985f, 1.015f, rho_3), front);
+    let _e21 = iris;
+    return saturate(mix(_e21, vec3<f32>(0.71056646f, 0.67385954f, 0.6382832f), to_sclera));
+}
+
+fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_2: f32, light: vec3<f32>) -> vec3<f32> {
+    var local_1: bool;
+
+    if !((look_1.through_cornea > 0f)) {
+        local_1 = (look_1.normal.z > 0f);
+    } else {
+        local_1 = true;
+    }
+    let _e19 = local_1;
+    let _e20 = eye_albedo(look_1.iris, _e19);
+    let _e22 = weft_clamp_roughness(0.060000002f);
+    let _e25 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
+    let _e27 = weft_clamp_cos(dot(_e25, v_2));
+    let s_dot_l = saturate(dot(_e25, l));
+    let _e31 = weft_safe_normalize((l + v_2), _e25);
+    let _e33 = weft_f_dielectric(dot(v_2, _e31), ior_2);
+    let _e34 = weft_d_ggx_nh(_e25, _e31, _e22);
+    let _e35 = weft_v_smith_ggx_correlated(_e27, s_dot_l, _e22);
+    let direct_spec = (((_e34 * _e35) * _e33) * s_dot_l);
+    let _e39 = weft_f0_from_ior(ior_2);
+    let f0_1 = vec3(_e39);
+    let _e43 = weft_prefiltered_radiance(reflect(-(v_2), _e25), _e22);
+    let _e44 = weft_env_brdf_lut(_e27, _e22);
+    let _e45 = weft_env_brdf_from_lut(f0_1, _e44);
+    let env = (_e43 * _e45);
+    let specular = (((light * direct_spec) + env) * 1f);
+    let _e51 = weft_f_dielectric(_e27, ior_2);
+    let t_v = (1f - _e51);
+    let _e54 = weft_f_dielectric(s_dot_l, ior_2);
+    let t_l = (1f - _e54);
+    let _e62 = weft_sh_irradiance(n_2);
+    let sclera = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e62));
+    let _e67 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
+    let l_in = refract(-(l), _e25, (1f / ior_2));
+    let iris_cos = select(0f, saturate(dot(_e67, -(l_in))), (s_dot_l > 0f));
+    let _e84 = weft_sh_irradiance(_e67);
+    let iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e84));
+    return (mix(sclera, iris_2, look_1.through_cornea) + specular);
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_1 = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e54 = weft_safe_normalize((normal3_1 * in.normal), vec3(0f));
+    out.world_normal = _e54;
+    let _e60 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e60, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e64 = out;
+    return _e64;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+    var color: vec3<f32>;
+    var look: EyeLookup;
+
+    let model_1 = weft_object.model;
+    let model3_1 = mat3x3<f32>(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
+    let nm_1 = weft_object.normal_matrix;
+    let normal3_2 = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    let _e23 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e25 = weft_safe_normalize(in_1.world_normal, _e23);
+    let _e26 = weft_main_light_direction();
+    let _e30 = weft_safe_normalize((transpose(model3_1) * _e25), vec3<f32>(0f, 0f, 1f));
+    let _e34 = weft_safe_normalize((transpose(normal3_2) * _e23), vec3<f32>(0f, 0f, 1f));
+    let _e37 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), _e25);
+    let dimming = (1f - (0.5f * saturate(-(dot(_e37, _e26)))));
+    let _e45 = weft_main_light_radiance();
+    {
+        let _e49 = eye_cornea(0.5f, 0.27f);
+        {
+            let _e52 = eye_parallax(_e30, _e34, _e49, 1.376f);
+            look = _e52;
+        }
+        let _e53 = look;
+        let _e54 = eye_physical(_e53, _e25, _e23, _e26, normal3_2, 1.376f, _e45);
+        color = _e54;
+    }
+    let _e55 = color;
+    let radiance = clamp((_e55 * dimming), vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, 1f);
+}

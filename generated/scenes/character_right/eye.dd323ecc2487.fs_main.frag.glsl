@@ -1,0 +1,317 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct EyeCornea {
+    float z_iris;
+    float centre_z;
+    float radius;
+};
+struct EyeLookup {
+    vec2 iris;
+    vec3 normal;
+    float through_cornea;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftObject_block_1Fragment { WeftObject _group_2_binding_0_fs; };
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(vec3 n, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
+    float a2_ = (a_1 * a_1);
+    float noh = clamp(dot(n, h), 0.0, 1.0);
+    vec3 nxh = cross(n, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float weft_f_dielectric(float cos_i, float eta) {
+    float c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c_5 * c_5));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c_5);
+    float gpc = max((g + c_5), 1e-7);
+    float a_2 = (gmc / gpc);
+    float b = (((c_5 * gpc) - 1.0) / max(((c_5 * gmc) + 1.0), 1e-7));
+    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b * b))), 0.0, 1.0);
+    return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+float weft_f0_from_ior(float ior) {
+    float q_1 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_1 * q_1);
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_3 = (_e3 * _e3);
+    float a2_1 = (a_3 * a_3);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
+    float _e4 = weft_specular_mip(roughness_4);
+    vec4 c_6 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_6.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
+    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
+}
+
+EyeCornea eye_cornea(float iris_radius, float height) {
+    float r_1 = clamp(iris_radius, 0.05, 0.95);
+    float h_1 = max(height, 0.01);
+    float z_iris = sqrt((1.0 - (r_1 * r_1)));
+    float radius = (((r_1 * r_1) + (h_1 * h_1)) / (2.0 * h_1));
+    return EyeCornea(z_iris, ((z_iris + h_1) - radius), radius);
+}
+
+float eye_cornea_height(EyeCornea c_1, float rho) {
+    float z = (c_1.centre_z + sqrt(max(((c_1.radius * c_1.radius) - (rho * rho)), 0.0)));
+    return max((z - c_1.z_iris), 0.0);
+}
+
+vec3 eye_cornea_normal(EyeCornea c_2, vec2 xy) {
+    float z_1 = sqrt(max(((c_2.radius * c_2.radius) - dot(xy, xy)), 0.0));
+    return (vec3(xy, z_1) / vec3(c_2.radius));
+}
+
+EyeLookup eye_parallax(vec3 p, vec3 v_1, EyeCornea c_3, float ior_1) {
+    bool local = false;
+    float limbus = sqrt((1.0 - (c_3.z_iris * c_3.z_iris)));
+    float rho_2 = length(p.xy);
+    if (!((p.z <= 0.0))) {
+        local = (rho_2 >= limbus);
+    } else {
+        local = true;
+    }
+    bool _e20 = local;
+    if (_e20) {
+        return EyeLookup(p.xy, p, 0.0);
+    }
+    float inv_ior = (1.0 / max(ior_1, 1.0));
+    float _e29 = eye_cornea_height(c_3, rho_2);
+    float d_1 = ((c_3.z_iris + _e29) - p.z);
+    vec2 e_raw = (p.xy + (d_1 * v_1.xy));
+    vec2 e_1 = (e_raw * min(1.0, (limbus / max(length(e_raw), 1e-6))));
+    float _e45 = eye_cornea_height(c_3, length(e_1));
+    vec3 _e46 = eye_cornea_normal(c_3, e_1);
+    vec2 iris_1 = (e_1 - (_e45 * ((v_1.xy * inv_ior) + (_e46.xy * (1.0 - inv_ior)))));
+    return EyeLookup(iris_1, _e46, 1.0);
+}
+
+vec3 eye_procedural_iris(float rho_1, float a) {
+    vec3 c_4 = vec3(0.0);
+    float t = clamp(((rho_1 - 0.38) / 0.62), 0.0, 1.0);
+    c_4 = mix(vec3(0.34239164, 0.147319, 0.021980947), vec3(0.10653923, 0.033104766, 0.008540382), smoothstep(0.05, 0.5, t));
+    float fibres = ((0.82 + (0.1 * sin(((a * 23.0) + (6.0 * t))))) + (0.08 * sin((((a * 41.0) - (9.0 * t)) + 1.3))));
+    vec3 _e35 = c_4;
+    c_4 = (_e35 * fibres);
+    vec3 _e38 = c_4;
+    c_4 = (_e38 * (1.0 - (0.8 * smoothstep(0.88, 1.0, rho_1))));
+    vec3 _e48 = c_4;
+    return mix(vec3(0.01), _e48, smoothstep(0.35999998, 0.4, rho_1));
+}
+
+vec3 eye_albedo(vec2 q, bool front) {
+    vec3 iris = vec3(0.0);
+    float rho_3 = (length(q) / 0.5);
+    {
+        vec2 qa = ((dot(q, q) > 1e-12) ? q : vec2(1.0, 0.0));
+        vec3 _e14 = eye_procedural_iris(rho_3, atan(qa.y, qa.x));
+        iris = _e14;
+    }
+    float to_sclera = (front ? smoothstep(0.985, 1.015, rho_3) : 1.0);
+    vec3 _e21 = iris;
+    return clamp(mix(_e21, vec3(0.71056646, 0.67385954, 0.6382832), to_sclera), vec3(0.0), vec3(1.0));
+}
+
+vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_2, vec3 light) {
+    bool local_1 = false;
+    if (!((look_1.through_cornea > 0.0))) {
+        local_1 = (look_1.normal.z > 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e19 = local_1;
+    vec3 _e20 = eye_albedo(look_1.iris, _e19);
+    float _e22 = weft_clamp_roughness(0.060000002);
+    vec3 _e25 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
+    float _e27 = weft_clamp_cos(dot(_e25, v_2));
+    float s_dot_l = clamp(dot(_e25, l), 0.0, 1.0);
+    vec3 _e31 = weft_safe_normalize((l + v_2), _e25);
+    float _e33 = weft_f_dielectric(dot(v_2, _e31), ior_2);
+    float _e34 = weft_d_ggx_nh(_e25, _e31, _e22);
+    float _e35 = weft_v_smith_ggx_correlated(_e27, s_dot_l, _e22);
+    float direct_spec = (((_e34 * _e35) * _e33) * s_dot_l);
+    float _e39 = weft_f0_from_ior(ior_2);
+    vec3 f0_1 = vec3(_e39);
+    vec3 _e43 = weft_prefiltered_radiance(reflect(-(v_2), _e25), _e22);
+    vec2 _e44 = weft_env_brdf_lut(_e27, _e22);
+    vec3 _e45 = weft_env_brdf_from_lut(f0_1, _e44);
+    vec3 env = (_e43 * _e45);
+    vec3 specular = (((light * direct_spec) + env) * 1.0);
+    float _e51 = weft_f_dielectric(_e27, ior_2);
+    float t_v = (1.0 - _e51);
+    float _e54 = weft_f_dielectric(s_dot_l, ior_2);
+    float t_l = (1.0 - _e54);
+    vec3 _e62 = weft_sh_irradiance(n_2);
+    vec3 sclera = (_e20 * ((light * (WEFT_INV_PI * clamp(dot(n_2, l), 0.0, 1.0))) + _e62));
+    vec3 _e67 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
+    vec3 l_in = refract(-(l), _e25, (1.0 / ior_2));
+    float iris_cos = ((s_dot_l > 0.0) ? clamp(dot(_e67, -(l_in)), 0.0, 1.0) : 0.0);
+    vec3 _e84 = weft_sh_irradiance(_e67);
+    vec3 iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e84));
+    return (mix(sclera, iris_2, look_1.through_cornea) + specular);
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 color = vec3(0.0);
+    EyeLookup look = EyeLookup(vec2(0.0), vec3(0.0), 0.0);
+    mat4x4 model = _group_2_binding_0_fs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
+    mat3x3 normal3_1 = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec3 _e23 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e25 = weft_safe_normalize(in_1.world_normal, _e23);
+    vec3 _e26 = weft_main_light_direction();
+    vec3 _e30 = weft_safe_normalize((transpose(model3_) * _e25), vec3(0.0, 0.0, 1.0));
+    vec3 _e34 = weft_safe_normalize((transpose(normal3_1) * _e23), vec3(0.0, 0.0, 1.0));
+    vec3 _e37 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), _e25);
+    float dimming = (1.0 - (0.5 * clamp(-(dot(_e37, _e26)), 0.0, 1.0)));
+    vec3 _e45 = weft_main_light_radiance();
+    {
+        EyeCornea _e49 = eye_cornea(0.5, 0.27);
+        {
+            EyeLookup _e52 = eye_parallax(_e30, _e34, _e49, 1.376);
+            look = _e52;
+        }
+        EyeLookup _e53 = look;
+        vec3 _e54 = eye_physical(_e53, _e25, _e23, _e26, normal3_1, 1.376, _e45);
+        color = _e54;
+    }
+    vec3 _e55 = color;
+    vec3 radiance = clamp((_e55 * dimming), vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, 1.0);
+    return;
+}
+

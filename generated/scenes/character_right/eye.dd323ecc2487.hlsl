@@ -1,0 +1,407 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct EyeCornea {
+    float z_iris;
+    float centre_z;
+    float radius;
+};
+
+struct EyeLookup {
+    float2 iris;
+    int _pad1_0;
+    int _pad1_1;
+    float3 normal;
+    float through_cornea;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(float3 n, float3 h, float roughness_1)
+{
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
+    float a2_ = (a_1 * a_1);
+    float noh = saturate(dot(n, h));
+    float3 nxh = cross(n, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float weft_f_dielectric(float cos_i, float eta)
+{
+    float c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c_5 * c_5));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c_5);
+    float gpc = max((g + c_5), 1e-7);
+    float a_2 = (gmc / gpc);
+    float b = (((c_5 * gpc) - 1.0) / max(((c_5 * gmc) + 1.0), 1e-7));
+    float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b * b))));
+    return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+float weft_f0_from_ior(float ior)
+{
+    float q_1 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_1 * q_1);
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2)
+{
+    const float _e3 = weft_clamp_roughness(roughness_2);
+    float a_3 = (_e3 * _e3);
+    float a2_1 = (a_3 * a_3);
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
+}
+
+float3 weft_env_brdf_from_lut(float3 f0_, float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((f0_ * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e5 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_3)
+{
+    float r = saturate(roughness_3);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
+{
+    const float _e4 = weft_specular_mip(roughness_4);
+    float4 c_6 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_6.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+{
+    float2 uv = float2(saturate(n_dot_v_1), saturate(roughness_5));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
+    return _e8.xy;
+}
+
+EyeCornea ConstructEyeCornea(float arg0, float arg1, float arg2) {
+    EyeCornea ret = (EyeCornea)0;
+    ret.z_iris = arg0;
+    ret.centre_z = arg1;
+    ret.radius = arg2;
+    return ret;
+}
+
+EyeCornea eye_cornea(float iris_radius, float height)
+{
+    float r_1 = clamp(iris_radius, 0.05, 0.95);
+    float h_1 = max(height, 0.01);
+    float z_iris = sqrt((1.0 - (r_1 * r_1)));
+    float radius = (((r_1 * r_1) + (h_1 * h_1)) / (2.0 * h_1));
+    const EyeCornea eyecornea = ConstructEyeCornea(z_iris, ((z_iris + h_1) - radius), radius);
+    return eyecornea;
+}
+
+float eye_cornea_height(EyeCornea c_1, float rho)
+{
+    float z = (c_1.centre_z + sqrt(max(((c_1.radius * c_1.radius) - (rho * rho)), 0.0)));
+    return max((z - c_1.z_iris), 0.0);
+}
+
+float3 eye_cornea_normal(EyeCornea c_2, float2 xy)
+{
+    float z_1 = sqrt(max(((c_2.radius * c_2.radius) - dot(xy, xy)), 0.0));
+    return (float3(xy, z_1) / (c_2.radius).xxx);
+}
+
+EyeLookup ConstructEyeLookup(float2 arg0, float3 arg1, float arg2) {
+    EyeLookup ret = (EyeLookup)0;
+    ret.iris = arg0;
+    ret.normal = arg1;
+    ret.through_cornea = arg2;
+    return ret;
+}
+
+EyeLookup eye_parallax(float3 p, float3 v_1, EyeCornea c_3, float ior_1)
+{
+    bool local = (bool)0;
+
+    float limbus = sqrt((1.0 - (c_3.z_iris * c_3.z_iris)));
+    float rho_2 = length(p.xy);
+    if (!((p.z <= 0.0))) {
+        local = (rho_2 >= limbus);
+    } else {
+        local = true;
+    }
+    bool _e20 = local;
+    if (_e20) {
+        const EyeLookup eyelookup = ConstructEyeLookup(p.xy, p, 0.0);
+        return eyelookup;
+    }
+    float inv_ior = (1.0 / max(ior_1, 1.0));
+    const float _e29 = eye_cornea_height(c_3, rho_2);
+    float d_1 = ((c_3.z_iris + _e29) - p.z);
+    float2 e_raw = (p.xy + (d_1 * v_1.xy));
+    float2 e_1 = (e_raw * min(1.0, (limbus / max(length(e_raw), 1e-6))));
+    const float _e45 = eye_cornea_height(c_3, length(e_1));
+    const float3 _e46 = eye_cornea_normal(c_3, e_1);
+    float2 iris_1 = (e_1 - (_e45 * ((v_1.xy * inv_ior) + (_e46.xy * (1.0 - inv_ior)))));
+    const EyeLookup eyelookup_1 = ConstructEyeLookup(iris_1, _e46, 1.0);
+    return eyelookup_1;
+}
+
+float3 eye_procedural_iris(float rho_1, float a)
+{
+    float3 c_4 = (float3)0;
+
+    float t = saturate(((rho_1 - 0.38) / 0.62));
+    c_4 = lerp(float3(0.34239164, 0.147319, 0.021980947), float3(0.10653923, 0.033104766, 0.008540382), smoothstep(0.05, 0.5, t));
+    float fibres = ((0.82 + (0.1 * sin(((a * 23.0) + (6.0 * t))))) + (0.08 * sin((((a * 41.0) - (9.0 * t)) + 1.3))));
+    float3 _e35 = c_4;
+    c_4 = (_e35 * fibres);
+    float3 _e38 = c_4;
+    c_4 = (_e38 * (1.0 - (0.8 * smoothstep(0.88, 1.0, rho_1))));
+    float3 _e48 = c_4;
+    return lerp((0.01).xxx, _e48, smoothstep(0.35999998, 0.4, rho_1));
+}
+
+float3 eye_albedo(float2 q, bool front)
+{
+    float3 iris = (float3)0;
+
+    float rho_3 = (length(q) / 0.5);
+    {
+        float2 qa = ((dot(q, q) > 1e-12) ? q : float2(1.0, 0.0));
+        const float3 _e14 = eye_procedural_iris(rho_3, atan2(qa.y, qa.x));
+        iris = _e14;
+    }
+    float to_sclera = (front ? smoothstep(0.985, 1.015, rho_3) : 1.0);
+    float3 _e21 = iris;
+    return saturate(lerp(_e21, float3(0.71056646, 0.67385954, 0.6382832), to_sclera));
+}
+
+float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3 normal3_, float ior_2, float3 light)
+{
+    bool local_1 = (bool)0;
+
+    if (!((look_1.through_cornea > 0.0))) {
+        local_1 = (look_1.normal.z > 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e19 = local_1;
+    const float3 _e20 = eye_albedo(look_1.iris, _e19);
+    const float _e22 = weft_clamp_roughness(0.060000002);
+    const float3 _e25 = weft_safe_normalize(mul(look_1.normal, normal3_), n_2);
+    const float _e27 = weft_clamp_cos(dot(_e25, v_2));
+    float s_dot_l = saturate(dot(_e25, l));
+    const float3 _e31 = weft_safe_normalize((l + v_2), _e25);
+    const float _e33 = weft_f_dielectric(dot(v_2, _e31), ior_2);
+    const float _e34 = weft_d_ggx_nh(_e25, _e31, _e22);
+    const float _e35 = weft_v_smith_ggx_correlated(_e27, s_dot_l, _e22);
+    float direct_spec = (((_e34 * _e35) * _e33) * s_dot_l);
+    const float _e39 = weft_f0_from_ior(ior_2);
+    float3 f0_1 = (_e39).xxx;
+    const float3 _e43 = weft_prefiltered_radiance(reflect(-(v_2), _e25), _e22);
+    const float2 _e44 = weft_env_brdf_lut(_e27, _e22);
+    const float3 _e45 = weft_env_brdf_from_lut(f0_1, _e44);
+    float3 env = (_e43 * _e45);
+    float3 specular = (((light * direct_spec) + env) * 1.0);
+    const float _e51 = weft_f_dielectric(_e27, ior_2);
+    float t_v = (1.0 - _e51);
+    const float _e54 = weft_f_dielectric(s_dot_l, ior_2);
+    float t_l = (1.0 - _e54);
+    const float3 _e62 = weft_sh_irradiance(n_2);
+    float3 sclera = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e62));
+    const float3 _e67 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), normal3_), n_2);
+    float3 l_in = refract(-(l), _e25, (1.0 / ior_2));
+    float iris_cos = ((s_dot_l > 0.0) ? saturate(dot(_e67, -(l_in))) : 0.0);
+    const float3 _e84 = weft_sh_irradiance(_e67);
+    float3 iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e84));
+    return (lerp(sclera, iris_2, look_1.through_cornea) + specular);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_1 = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e54 = weft_safe_normalize(mul(in_.normal, normal3_1), (0.0).xxx);
+    out_.world_normal = _e54;
+    const float3 _e60 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e60, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e64 = out_;
+    const WeftVaryings weftvaryings = _e64;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float3 color = (float3)0;
+    EyeLookup look = (EyeLookup)0;
+
+    float4x4 model_1 = weft_object.model;
+    float3x3 model3_1 = float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
+    float4x4 nm_1 = weft_object.normal_matrix;
+    float3x3 normal3_2 = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    const float3 _e23 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e25 = weft_safe_normalize(in_1.world_normal, _e23);
+    const float3 _e26 = weft_main_light_direction();
+    const float3 _e30 = weft_safe_normalize(mul(_e25, transpose(model3_1)), float3(0.0, 0.0, 1.0));
+    const float3 _e34 = weft_safe_normalize(mul(_e23, transpose(normal3_2)), float3(0.0, 0.0, 1.0));
+    const float3 _e37 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), _e25);
+    float dimming = (1.0 - (0.5 * saturate(-(dot(_e37, _e26)))));
+    const float3 _e45 = weft_main_light_radiance();
+    {
+        const EyeCornea _e49 = eye_cornea(0.5, 0.27);
+        {
+            const EyeLookup _e52 = eye_parallax(_e30, _e34, _e49, 1.376);
+            look = _e52;
+        }
+        EyeLookup _e53 = look;
+        const float3 _e54 = eye_physical(_e53, _e25, _e23, _e26, normal3_2, 1.376, _e45);
+        color = _e54;
+    }
+    float3 _e55 = color;
+    float3 radiance = clamp((_e55 * dimming), (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, 1.0);
+}
