@@ -30,6 +30,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("auto_without_budget", &["missing-key"]),
     ("bad_camera", &["out-of-range"]),
     ("bad_instance_name", &["bad-name"]),
+    ("bad_light", &["out-of-range"]),
     ("bad_name", &["bad-name"]),
     ("bad_scale", &["out-of-range"]),
     (
@@ -47,6 +48,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("excluded_variant", &["excluded-variant"]),
     ("excluded_variant_preset", &["excluded-variant"]),
     ("gpu_limit", &["gpu-limit"]),
+    ("light_without_direction", &["missing-key"]),
     ("material_outside_root", &["material-outside-root"]),
     ("missing_mesh", &["missing-key"]),
     ("missing_root", &["missing-root"]),

@@ -365,6 +365,7 @@ fn parse_camera(t: &Table, cx: &mut Cx) -> Camera {
 
 fn parse_light(t: &Table, cx: &mut Cx) -> Option<SceneLight> {
     t.check_keys(LIGHT_KEYS, cx);
+    let color = light_color(t, cx);
     let Some(direction) = vec3(t, "direction", cx) else {
         if t.get("direction").is_none() {
             cx.error_with_note(
@@ -377,29 +378,38 @@ fn parse_light(t: &Table, cx: &mut Cx) -> Option<SceneLight> {
         }
         return None;
     };
-    if direction.iter().all(|c| c.abs() < 1e-6) {
+    if direction.iter().any(|c| !c.is_finite()) || direction.iter().all(|c| c.abs() < 1e-6) {
         cx.error_with_note(
             "out-of-range",
-            "`direction` of [light] must not be zero",
+            "`direction` of [light] must be finite and not zero",
             t.span_of("direction"),
             "no direction",
             "it points from the surface towards the light, e.g. [-1.0, 0.5, 0.6]",
         );
         return None;
     }
-    let color = vec3(t, "color", cx);
-    if let Some(c) = color
-        && c.iter().any(|x| *x < 0.0)
-    {
+    Some(SceneLight {
+        direction,
+        color: color?,
+    })
+}
+
+/// `color` of `[light]`: `Some(None)` when absent, `None` when wrong.
+fn light_color(t: &Table, cx: &mut Cx) -> Option<Option<[f64; 3]>> {
+    if t.get("color").is_none() {
+        return Some(None);
+    }
+    let c = vec3(t, "color", cx)?;
+    if c.iter().any(|x| *x < 0.0 || !x.is_finite()) {
         cx.error(
             "out-of-range",
-            "`color` of [light] must not be negative",
+            "`color` of [light] must be finite and not negative",
             t.span_of("color"),
-            "a negative radiance",
+            "not a radiance",
         );
         return None;
     }
-    Some(SceneLight { direction, color })
+    Some(Some(c))
 }
 
 /// A required string key; reports it missing at `at`.
