@@ -229,9 +229,9 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
     let mut measured = Measured::default();
     for (path, meta) in &s.lib.scenes {
         let camera = weft_render::scene_camera(meta);
-        let light = weft_render::SceneLighting::from_features(&meta.features).light;
+        let light = weft_render::SceneLighting::from_metadata(meta).light;
         let (env, frame) = library::scene_world(
-            &meta.features,
+            meta,
             &s.world.env,
             &harness::frame(&camera, &weft_render::Light::default()),
         );

@@ -338,12 +338,14 @@ pub fn queue_order(passes: &[Pass]) -> Vec<usize> {
 
 /// What group 0 carries for a scene: its shaders were specialised for
 /// `features`, and a feature that is off is bound black (cube), zero (SH)
-/// or dark (light).
+/// or dark (light); the scene's own `light`, when it names one, replaces
+/// the frame's (its direction normalised, as the engine interface wants).
 pub fn scene_world(
-    features: &weft_meta::scene::SceneFeatures,
+    meta: &SceneMetadata,
     env: &super::data::Environment,
     frame: &super::data::FrameInputs,
 ) -> (super::data::Environment, super::data::FrameInputs) {
+    let features = &meta.features;
     let black = super::data::Environment::black();
     let mut e = if features.environment {
         env.clone()
@@ -356,6 +358,14 @@ pub fn scene_world(
         black.sh
     };
     let mut f = frame.clone();
+    if let Some(light) = &meta.light {
+        let d = light.direction;
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        f.light_direction = d.map(|c| (c / len) as f32);
+        if let Some(c) = light.color {
+            f.light_color = c.map(|c| c as f32);
+        }
+    }
     if features.directional_lights == 0 {
         f.light_color = [0.0; 3];
     }
