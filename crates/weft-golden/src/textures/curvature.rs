@@ -15,7 +15,7 @@ pub const SIZE: usize = 256;
 /// Curvature (1/units of the bust, whose head is about 1 tall) stored as 1:
 /// `skin.wgsl` reads v = saturate(curvature_factor × R), so R × SCALE is the
 /// 1/r the screen-space estimate gives, and the map reads like the estimate
-/// with curvature_factor × SCALE (the default 0.6 → 0.3 here).
+/// with curvature_factor = SCALE × the estimate's (the default 0.6 → 1.2).
 pub const SCALE: f64 = 2.0;
 
 /// Mean curvature (1/units) at head uv.

@@ -89,6 +89,6 @@ mod tests {
                 assert_eq!(d[y * w + x], best, "({x}, {y})");
             }
         }
-        assert!(super::distance_to(&vec![false; 6], 3, 2).is_none());
+        assert!(super::distance_to(&[false; 6], 3, 2).is_none());
     }
 }

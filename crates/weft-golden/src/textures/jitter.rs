@@ -5,9 +5,10 @@
 //! directions (periodic lattice noise), so the material's jitter tiling can
 //! repeat it. Linear grey.
 //!
-//! Values span about [0.05, 0.55] (mean ≈ 0.3): strand-to-strand tilts of
-//! ±0.25, and a mean shift that `primary_shift` ≈ −0.3 takes back out if
-//! the highlight should stay where it is without the map.
+//! Values span about [0.07, 0.51] (mean ≈ 0.3, standard deviation ≈ 0.08):
+//! strand-to-strand tilts of up to ±0.2, and a mean shift that
+//! `primary_shift` ≈ −0.3 takes back out if the highlight should stay where
+//! it is without the map.
 
 use super::{Channels, Texture, quantise};
 
