@@ -45,6 +45,14 @@ enum Command {
     /// Render every material, tier and preset: generated/gallery/ (a contact
     /// sheet and one image per case) and generated/gallery.md.
     Gallery,
+    /// Generate the character textures (issue 12) into materials/<m>/textures/
+    /// (face SDF threshold map and shadow mask, eye matcap, hair flow and
+    /// jitter maps, skin curvature map): weft_golden::textures.
+    Textures {
+        /// Do not write: fail and list the textures that differ from a fresh generation.
+        #[arg(long)]
+        check: bool,
+    },
     /// Screenshots of the live inspector (`weft serve`) in headless Chromium:
     /// docs/inspector/inspector-en.png and inspector-zh.png.
     Inspector,
@@ -212,6 +220,38 @@ fn workspace_root() -> PathBuf {
         .to_path_buf()
 }
 
+/// `cargo xtask textures [--check]`.
+fn textures(root: &Path, check: bool) -> ExitCode {
+    use weft_golden::textures;
+    if check {
+        let stale = textures::stale(root);
+        if stale.is_empty() {
+            println!("textures are current");
+            return ExitCode::SUCCESS;
+        }
+        for path in stale {
+            eprintln!("stale: {path}");
+        }
+        eprintln!("run `cargo xtask textures` and commit the PNGs");
+        return ExitCode::FAILURE;
+    }
+    match textures::write(root) {
+        Ok(written) => {
+            for path in &written {
+                println!("wrote {}", path.display());
+            }
+            if written.is_empty() {
+                println!("textures are current");
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("cannot write the textures: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let root = workspace_root();
@@ -245,6 +285,7 @@ fn main() -> ExitCode {
         Command::Bless { force } => bless(&root, force),
         Command::Gallery => gallery(&root),
         Command::Inspector => inspector::inspector(&root),
+        Command::Textures { check } => textures(&root, check),
         Command::Bench {
             what: Bench::Compile { runs },
         } => bench_compile(&root, runs.max(1)),

@@ -17,6 +17,7 @@ pub mod scenes;
 pub mod shading;
 pub mod shells;
 pub mod silhouette;
+pub mod textures;
 
 use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};

@@ -59,12 +59,21 @@ impl BustPart {
     }
 }
 
+// Public so that the texture generators (weft-golden's `textures`) place
+// their features where the mesh has them.
 /// Centre of the head and its radii (x across, y up, z forward).
-const HEAD_CENTRE: [f32; 3] = [0.0, 0.55, 0.0];
-const HEAD_RADII: [f32; 3] = [0.78, 1.0, 0.86];
+pub const HEAD_CENTRE: [f32; 3] = [0.0, 0.55, 0.0];
+pub const HEAD_RADII: [f32; 3] = [0.78, 1.0, 0.86];
+/// How much the lower half narrows to a jaw (x, z): the radii times
+/// 1 - k (-cos θ)² below the centre (`head_radii`).
+pub const HEAD_JAW: [f32; 2] = [0.24, 0.08];
 /// Eyeball radius and centres (right eye of the character at -x).
-const EYE_RADIUS: f32 = 0.11;
-const EYE_CENTRES: [[f32; 3]; 2] = [[-0.27, 0.62, 0.72], [0.27, 0.62, 0.72]];
+pub const EYE_RADIUS: f32 = 0.11;
+pub const EYE_CENTRES: [[f32; 3]; 2] = [[-0.27, 0.62, 0.72], [0.27, 0.62, 0.72]];
+/// Where the hair cards end, as fractions of π in θ: the fringe at
+/// `HAIR_END[0]` in front, `HAIR_END[0] + HAIR_END[1]` at the nape, in
+/// between as 0.5 - 0.5 cos φ.
+pub const HAIR_END: [f32; 2] = [0.42, 0.36];
 /// Hair cards around the head, and their rows from root to tip.
 const HAIR_CARDS: u32 = 48;
 const HAIR_ROWS: u32 = 12;
@@ -136,9 +145,9 @@ fn ellipsoid(centre: [f32; 3], radii: [f32; 3], theta: f32, phi: f32) -> [f32; 3
 fn head_radii(theta: f32) -> [f32; 3] {
     let below = (-theta.cos()).max(0.0);
     [
-        HEAD_RADII[0] * (1.0 - 0.24 * below * below),
+        HEAD_RADII[0] * (1.0 - HEAD_JAW[0] * below * below),
         HEAD_RADII[1],
-        HEAD_RADII[2] * (1.0 - 0.08 * below * below),
+        HEAD_RADII[2] * (1.0 - HEAD_JAW[1] * below * below),
     ]
 }
 
@@ -170,7 +179,7 @@ fn hair_card(k: u32) -> Mesh {
     let lift = if k.is_multiple_of(2) { 1.05 } else { 1.075 };
     // The fringe ends at the brow (θ ≈ 0.42π) at the front, the back hair at
     // the nape (θ ≈ 0.78π).
-    let end = 0.42 * PI + 0.36 * PI * (0.5 - 0.5 * centre_phi.cos());
+    let end = HAIR_END[0] * PI + HAIR_END[1] * PI * (0.5 - 0.5 * centre_phi.cos());
     let start = 0.03;
     let mut m = surface(
         HAIR_ROWS,

@@ -61,7 +61,9 @@ mod timing;
 mod uniform;
 mod values;
 
-pub use bust::{BustPart, bust_parts};
+pub use bust::{
+    BustPart, EYE_CENTRES, EYE_RADIUS, HAIR_END, HEAD_CENTRE, HEAD_JAW, HEAD_RADII, bust_parts,
+};
 pub use environment::{
     CubeLevel, EnvironmentMaps, MipRoughness, SkyParams, cube_direction, cube_face_uv, project_sh,
     sh_basis, texel_solid_angle,
