@@ -47,7 +47,11 @@ fn metadata_states_the_file_and_the_file_holds_the_png_texels() {
     let meta = out.materials.iter().find(|m| m.name == "imaged").unwrap();
     let p = meta.parameters.iter().find(|p| p.name == "image").unwrap();
     let t = p.texture.as_ref().unwrap();
-    assert_eq!(t.default, TextureDefault::Black, "the built-in fallback stays");
+    assert_eq!(
+        t.default,
+        TextureDefault::Black,
+        "the built-in fallback stays"
+    );
     let f = t.file.as_ref().expect("parameter texture.file");
     assert_eq!(f.path, "imaged/image.rgba8");
     assert_eq!(f.format, "rgba8unorm_srgb");
@@ -86,7 +90,11 @@ fn builds_are_deterministic_and_reuse_keeps_the_file() {
         reuse_from: Some(out.clone()),
         ..Default::default()
     });
-    assert!(again.reused.iter().any(|m| m == "imaged"), "{:?}", again.reused);
+    assert!(
+        again.reused.iter().any(|m| m == "imaged"),
+        "{:?}",
+        again.reused
+    );
     assert!(again.files == one.files, "a reusing build differs");
     let kept = build(&weft_compiler::BuildOptions {
         reuse_from: Some(out.clone()),
@@ -137,8 +145,7 @@ fn assert_near(got: [[f32; 3]; 4], want: [[f32; 3]; 4], what: &str) {
 fn weft_render_binds_the_image_the_right_way_up_and_a_set_value_overrides_it() {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("generated");
-    weft_compiler::output::write_atomically(&out, &build(&Default::default()).files, &[])
-        .unwrap();
+    weft_compiler::output::write_atomically(&out, &build(&Default::default()).files, &[]).unwrap();
     let meta_path = out.join("imaged/imaged.meta.json");
     let mut m = Material::load(&meta_path).unwrap();
     const R: [f32; 3] = [1.0, 0.0, 0.0];
@@ -165,7 +172,11 @@ fn weft_render_binds_the_image_the_right_way_up_and_a_set_value_overrides_it() {
         },
     )
     .unwrap();
-    assert_near(quadrants(&render(&m, &meta_path)), [W, B, G, R], "a user image");
+    assert_near(
+        quadrants(&render(&m, &meta_path)),
+        [W, B, G, R],
+        "a user image",
+    );
     // Reset: unset again, the file is bound again.
     m.reset().unwrap();
     assert_near(quadrants(&render(&m, &meta_path)), [R, G, B, W], "reset");
@@ -201,13 +212,21 @@ fn scenes_keep_an_unset_image_bound_and_fold_a_set_texture() {
         .map(|i| (i.name.as_str(), i))
         .collect();
     let shipped = by_name["shipped"];
-    assert!(!shipped.constants.contains_key("image"), "the image was folded");
+    assert!(
+        !shipped.constants.contains_key("image"),
+        "the image was folded"
+    );
     let t = shipped.textures.values().find(|t| t.parameter == "image");
-    let f = t.and_then(|t| t.file.as_ref()).expect("the image stays bound");
+    let f = t
+        .and_then(|t| t.file.as_ref())
+        .expect("the image stays bound");
     assert_eq!(f.path, "imaged/image.rgba8");
     assert_eq!((f.width, f.height), (8, 8));
     let white = by_name["white"];
-    assert_eq!(white.constants.get("image"), Some(&serde_json::json!("white")));
+    assert_eq!(
+        white.constants.get("image"),
+        Some(&serde_json::json!("white"))
+    );
     assert!(
         white.textures.values().all(|t| t.parameter != "image"),
         "a folded texture is still bound"
