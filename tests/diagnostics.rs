@@ -73,6 +73,13 @@ const EXPECTED: &[(&str, &[&str])] = &[
         "table_errors",
         &["unknown-value", "out-of-range", "missing-key", "duplicate"],
     ),
+    (
+        "texture_file_misplaced",
+        &["unknown-key", "conflicting-keys", "wrong-type"],
+    ),
+    ("texture_file_missing", &["missing-texture-file"]),
+    ("texture_file_outside_root", &["texture-file-outside-root"]),
+    ("texture_file_undecodable", &["bad-texture-file"]),
     ("tier_relations", &["tier-relation"]),
     ("toml_syntax", &["toml-syntax"]),
     ("too_many_textures", &["gpu-limit"]),

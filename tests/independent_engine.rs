@@ -198,6 +198,9 @@ fn every_variant_draws_from_the_metadata_alone_like_weft_render() {
                     continue;
                 }
             };
+            if meta.name == "imaged" {
+                failures.extend(image_quadrants(&label, &consumer));
+            }
             let reference = s.reference.variant(meta_path, &v.id, &s.scene);
             let (f, st, mut fails) = check(&label, &consumer, &reference);
             measured.add(&label, f, &st, &consumer, &reference);
@@ -416,6 +419,30 @@ fn an_empty_picture_fails() {
         |_| {},
     );
     assert_caught(&failures, "draws nothing");
+}
+
+/// The `imaged` fixture maps its shipped image (red top-left, green
+/// top-right, blue bottom-left, white bottom-right) over the screen: the
+/// engine, binding `texture.file` while the parameter is unset, must show it
+/// so (not the built-in black default, not upside down).
+fn image_quadrants(label: &str, img: &Image) -> Option<String> {
+    let (a, b) = (img.width * 7 / 20, img.width * 13 / 20);
+    let want = [
+        ((a, a), [1.0, 0.0, 0.0]),
+        ((b, a), [0.0, 1.0, 0.0]),
+        ((a, b), [0.0, 0.0, 1.0]),
+        ((b, b), [1.0, 1.0, 1.0]),
+    ];
+    let wrong: Vec<String> = want
+        .iter()
+        .filter_map(|&((x, y), w)| {
+            let p = img.pixel(x, y);
+            (0..3)
+                .any(|i| (p[i] - w[i]).abs() > 0.02)
+                .then(|| format!("({x}, {y}) is {p:?}, expected {w:?}"))
+        })
+        .collect();
+    (!wrong.is_empty()).then(|| format!("{label}: the shipped image: {}", wrong.join("; ")))
 }
 
 /// The test fixtures exercise what the shipped materials do not: a

@@ -1260,3 +1260,29 @@ fn cube_parameter_takes_an_equirectangular_panorama() {
         );
     }
 }
+
+/// The `imaged` fixture ships an image (`texture.file`: red top-left, green
+/// top-right, blue bottom-left, white bottom-right) mapped over the screen:
+/// the page fetches the file and binds it while the parameter is unset, the
+/// right way up, not the built-in black default.
+#[test]
+fn fixture_texture_file_is_fetched_and_bound_the_right_way_up() {
+    let page = Page::open(&repo().join("tests/fixtures/materials"));
+    page.select("imaged");
+    let img = page.capture();
+    let (a, b) = (SIZE * 7 / 20, SIZE * 13 / 20);
+    let want = [
+        ((a, a), [1.0, 0.0, 0.0]),
+        ((b, a), [0.0, 1.0, 0.0]),
+        ((a, b), [0.0, 0.0, 1.0]),
+        ((b, b), [1.0, 1.0, 1.0]),
+    ];
+    for ((x, y), w) in want {
+        let p = img.pixel(x, y);
+        assert!(
+            (0..3).all(|i| (p[i] - w[i]).abs() < 0.02),
+            "({x}, {y}) is {p:?}, expected {w:?} (page {})",
+            save(&img, "imaged.page.png").display()
+        );
+    }
+}

@@ -31,6 +31,7 @@ pub mod stage_io;
 pub mod staging;
 pub mod stamp;
 pub mod tables;
+pub mod texture_files;
 pub mod unchanged;
 pub mod variant;
 

@@ -110,6 +110,19 @@ pub fn inputs_hash(m: &Material, db: &SourceDb) -> String {
         h.update([0]);
         h.update(db.text(s.file));
     }
+    // Texture files: a changed PNG rebuilds the material.
+    for p in &m.params {
+        if let Some(f) = &p.file {
+            h.update(&f.path);
+            h.update([0]);
+            h.update(&f.image.sha256);
+            h.update(
+                [f.image.width, f.image.height]
+                    .map(u32::to_le_bytes)
+                    .concat(),
+            );
+        }
+    }
     h.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
 
@@ -188,11 +201,13 @@ pub fn compile_material_cached(
     }
     warn_unread_parameters(m, &compiled, diags);
     let aliases = variant::find_aliases(&compiled);
-    // Baked tables first: files of the material whatever its variants read.
+    // Baked tables and texture files first: files of the material whatever
+    // its variants read.
     let mut files: Vec<(String, Vec<u8>)> = m
         .tables
         .iter()
         .map(|t| (crate::tables::file_name(t), crate::tables::bake(t).to_vec()))
+        .chain(crate::texture_files::files(m))
         .collect();
     let mut variants_meta = Vec::new();
     for ((key, v), alias) in keys.iter().zip(compiled).zip(aliases) {
@@ -378,6 +393,7 @@ fn reuse(out_dir: &Path, m: &Material, hash: &str) -> Option<CompiledMaterial> {
     for t in &m.tables {
         files.push((crate::tables::file_name(t), crate::tables::bake(t).to_vec()));
     }
+    files.extend(crate::texture_files::files(m));
     Some((meta, files))
 }
 

@@ -76,6 +76,7 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
                             })
                             .collect(),
                         srgb: p.srgb,
+                        file: crate::texture_files::resource_file(m, p),
                         tiling_member: p.tiling.then(|| format!("{}_st", p.name)),
                         tiling_default: p.tiling.then_some([1.0, 1.0, 0.0, 0.0]),
                     })

@@ -24,6 +24,8 @@ pub struct MaterialTexture {
     pub format: String,
     /// None for gradient ramps (their default is the baked ramp).
     pub default: Option<TextureDefault>,
+    /// The parameter's image (`file`), bound while it is unset.
+    pub file: Option<weft_meta::ResourceFile>,
 }
 
 /// What the material's uniform members hold: member name -> (parameter, encoding).
@@ -202,6 +204,7 @@ pub fn bindings(
                         .unwrap_or_default(),
                 },
                 default: material_texture.and_then(|t| t.default),
+                file: material_texture.and_then(|t| t.file.clone()),
             }),
             _ => None,
         };

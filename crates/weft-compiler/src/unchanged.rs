@@ -38,6 +38,15 @@ pub(crate) struct Kept {
 struct MetaFiles {
     inputs_hash: String,
     variants: Vec<VariantFiles>,
+    /// Parameters, for their texture files (`texture.file`).
+    #[serde(default)]
+    parameters: Vec<ParameterFiles>,
+}
+
+#[derive(Deserialize)]
+struct ParameterFiles {
+    #[serde(default)]
+    texture: Option<ResourceFiles>,
 }
 
 #[derive(Deserialize)]
@@ -79,8 +88,10 @@ struct ResourceFiles {
     file: Option<TableFile>,
 }
 
-/// A `resource.file` with a checksum: a baked table in the material's folder
-/// (`<material>/<table>.rgba16f`, relative to the library root).
+/// A `resource.file` (or `texture.file`) with a checksum: a baked table or a
+/// texture parameter's image in the material's folder
+/// (`<material>/<table>.rgba16f`, `<material>/<param>.rgba8`, relative to the
+/// library root).
 #[derive(Deserialize)]
 struct TableFile {
     path: String,
@@ -155,6 +166,15 @@ impl Previous {
                 {
                     files.push((rel.to_string(), Some(sha.clone())));
                 }
+            }
+        }
+        // Texture parameters' images (`file`), named by the parameters.
+        let images = meta.parameters.iter();
+        for f in images.filter_map(|p| p.texture.as_ref()?.file.as_ref()) {
+            if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
+                && !files.iter().any(|(p, _)| p == rel)
+            {
+                files.push((rel.to_string(), Some(sha.clone())));
             }
         }
         files.push((format!("{name}.meta.json"), None));

@@ -157,6 +157,7 @@ pub fn material_textures<'a>(
                         keyword(subject)
                     }
                 }),
+                file: crate::texture_files::resource_file(m, p),
             })
         })
         .chain(prelude.table_bindings.iter().filter_map(|(name, binding)| {
@@ -167,6 +168,7 @@ pub fn material_textures<'a>(
                 binding: *binding,
                 format: crate::tables::TABLE_FORMAT.into(),
                 default: None,
+                file: None,
             })
         }))
         .collect()

@@ -43,6 +43,31 @@ pub fn directives(text: &str) -> Vec<Directive> {
     out
 }
 
+/// How diagnostics name a file named relative to the root.
+struct Named {
+    what: &'static str,
+    verb: &'static str,
+    fix: &'static str,
+    missing_code: &'static str,
+    outside_code: &'static str,
+}
+
+const INCLUDE: Named = Named {
+    what: "include",
+    verb: "included",
+    fix: "move the file into its `lib/` folder",
+    missing_code: "missing-include",
+    outside_code: "include-outside-root",
+};
+
+const TEXTURE: Named = Named {
+    what: "texture file",
+    verb: "shipped with a material",
+    fix: "move the PNG into the material's folder (e.g. `<material>/textures/`)",
+    missing_code: "missing-texture-file",
+    outside_code: "texture-file-outside-root",
+};
+
 /// Where a file was named from, for diagnostics.
 #[derive(Clone)]
 pub struct Origin {
@@ -132,19 +157,30 @@ impl<'a> Resolver<'a> {
     /// The canonical path of an include, reported when missing or outside
     /// the root.
     fn locate_include(&mut self, rel: &str, origin: &Origin) -> Option<PathBuf> {
+        self.locate_under_root(rel, origin, &INCLUDE)
+    }
+
+    /// The canonical path of a texture parameter's `file` (a PNG named
+    /// relative to the root), reported when missing or outside the root, as
+    /// an include would be.
+    pub fn locate_texture(&mut self, rel: &str, origin: &Origin) -> Option<PathBuf> {
+        self.locate_under_root(rel, origin, &TEXTURE)
+    }
+
+    fn locate_under_root(&mut self, rel: &str, origin: &Origin, w: &Named) -> Option<PathBuf> {
         let candidate = self.root.join(rel);
         let Some(canonical) = self.locate(&candidate) else {
             let root = self.shown_root();
             let d = self.diags.error(
-                "missing-include",
-                format!("cannot find include `{rel}`"),
+                w.missing_code,
+                format!("cannot find {} `{rel}`", w.what),
                 origin.file,
                 origin.span.clone(),
                 "no such file",
             );
             d.notes.push(format!(
-                "include paths are relative to the materials root `{}` (the nearest folder above the material that has a `lib/` folder)",
-                root
+                "{} paths are relative to the materials root `{}` (the nearest folder above the material that has a `lib/` folder)",
+                w.what, root
             ));
             return None;
         };
@@ -152,16 +188,16 @@ impl<'a> Resolver<'a> {
             let root = self.shown_root();
             let how = self.escape(rel, &candidate);
             let d = self.diags.error(
-                "include-outside-root",
-                format!("include `{rel}` is outside the materials root"),
+                w.outside_code,
+                format!("{} `{rel}` is outside the materials root", w.what),
                 origin.file,
                 origin.span.clone(),
                 "leaves the materials folder",
             );
             d.notes.extend(how);
             d.notes.push(format!(
-                "only files under the materials root `{}` can be included; move the file into its `lib/` folder",
-                root
+                "only files under the materials root `{}` can be {}; {}",
+                root, w.verb, w.fix
             ));
             return None;
         }

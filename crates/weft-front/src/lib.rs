@@ -2,7 +2,8 @@
 //! [`Material`], reporting every problem it finds as a codespan diagnostic.
 //!
 //! Pipeline: [`parse`] (TOML -> model, local checks) -> [`includes`] (WGSL
-//! sources, in dependency order) -> [`check`] (cross-references, budget).
+//! sources, in dependency order; [`texture_files`] the PNGs texture
+//! parameters ship) -> [`check`] (cross-references, budget).
 
 pub mod check;
 pub mod condition;
@@ -12,6 +13,7 @@ pub mod includes;
 pub mod model;
 pub mod parse;
 pub mod scene;
+pub mod texture_files;
 pub mod toml_reader;
 pub mod values;
 pub mod variant_space;
@@ -180,6 +182,7 @@ fn load_loaded(
             span: source_span,
         },
     );
+    texture_files::load(&mut material, &mut resolver, in_memory);
     material.sources = resolver.finish();
 
     check::check(&mut material, diags);

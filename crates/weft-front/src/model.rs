@@ -145,6 +145,10 @@ pub struct Param {
     /// condition (on a static keyword or `tier`) holds for a variant replaces
     /// `default` there. Empty when absent (and for other kinds).
     pub default_when: Vec<(Condition, TextureDefault)>,
+    /// `texture2d`: the PNG shipped with the material that is bound while
+    /// the parameter is unset (`file = "..."`); `default` remains the
+    /// built-in texture for an engine that cannot load it.
+    pub file: Option<TextureFile>,
     /// Colours: HDR (edited linear, may exceed 1).
     pub hdr: bool,
     /// Textures.
@@ -153,6 +157,19 @@ pub struct Param {
     /// Curves: samples baked into the uniform; gradients: ramp width.
     pub samples: u32,
     pub decl: Loc,
+}
+
+/// A texture parameter's `file`: where it was named and, once the material
+/// is loaded, its texels.
+#[derive(Clone, Debug)]
+pub struct TextureFile {
+    /// As written: relative to the materials root, `/`-separated.
+    pub path: String,
+    /// The `file` value in the TOML.
+    pub loc: Loc,
+    /// The decoded image (filled by [`crate::texture_files::load`]; empty
+    /// before that and where the file could not be read).
+    pub image: std::sync::Arc<crate::texture_files::Image>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -44,6 +44,7 @@ pub const GROUP_KEYS: &[&str] = &["label", "label_zh"];
 pub const PARAM_KEYS: &[&str] = &[
     "type",
     "default",
+    "file",
     "range",
     "soft_range",
     "step",

@@ -415,6 +415,12 @@ pub struct TextureInfo {
     pub default_when: Vec<ConditionalTextureDefault>,
     /// Colour data: bind an `*Srgb` format so sampling returns linear values.
     pub srgb: bool,
+    /// `texture2d` parameters that ship an image (`file` in the material's
+    /// TOML): the texels weft wrote beside the variants. An engine binds this
+    /// file while the parameter is unset; `default` is what it binds where it
+    /// cannot load the file. Absent for parameters without one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<ResourceFile>,
     /// Uniform member (vec4: xy tiling, zw offset) when the texture has tiling/offset.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tiling_member: Option<String>,

@@ -259,6 +259,12 @@ pub struct TextureBinding {
     /// the parameter is unset (keyword-dependent defaults already resolved).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub default: Option<TextureDefault>,
+    /// Material textures whose parameter ships an image (`file` in the
+    /// material's TOML): bind this file's texels while the parameter is
+    /// unset (`default` is then only the fallback of an engine that cannot
+    /// load files). The same file for every variant.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<ResourceFile>,
 }
 
 /// A sampler layout entry's type (WebGPU `GPUSamplerBindingType`).
@@ -337,7 +343,9 @@ pub struct EngineResource {
     pub file: Option<ResourceFile>,
 }
 
-/// A toolchain-baked data file (a lookup table).
+/// A data file weft writes for an engine to bind: a lookup table, a
+/// material's baked table (`[tables]`) or a texture parameter's image
+/// (`file`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ResourceFile {
@@ -345,7 +353,8 @@ pub struct ResourceFile {
     /// `metadata.schema.json` and `luts/`): material metadata lives one folder
     /// below it, scene metadata two (`scenes/<scene>/`).
     pub path: String,
-    /// Texture format of the texels (`rg16float`, `r16float`).
+    /// Texture format of the texels (`rg16float`, `r16float`, `rgba16float`;
+    /// `rgba8unorm` or `rgba8unorm_srgb` for a texture parameter's image).
     pub format: String,
     /// Width in texels (along u).
     pub width: u32,
@@ -359,8 +368,8 @@ pub struct ResourceFile {
     pub v: String,
     /// What the channels hold.
     pub channels: String,
-    /// SHA-256 of the file's bytes, hex: set for a material's baked tables
-    /// (`[tables]`), whose file lies beside its variants.
+    /// SHA-256 of the file's bytes, hex: set for the files that lie beside
+    /// a material's variants (baked tables, texture parameters' images).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sha256: Option<String>,
 }

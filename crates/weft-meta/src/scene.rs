@@ -155,9 +155,15 @@ pub struct SceneTexture {
     /// The material parameter (`texture2d`, `cube` or `gradient`) this texture carries.
     pub parameter: String,
     /// A built-in 1x1 texture (the parameter's default, read at run time
-    /// because the parameter is `dynamic`).
+    /// because the parameter is `dynamic`; with `file`, what an engine that
+    /// cannot load the file binds instead).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub builtin: Option<TextureDefault>,
+    /// A texture parameter left at the image it ships (`file` in the
+    /// material's TOML): bind this file's texels (its `path` is relative to
+    /// the library root, two folders above the scene metadata).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<crate::ResourceFile>,
     /// For gradients: the baked ramp, RGBA8 sRGB-encoded, row-major (`width` x 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ramp_rgba8: Option<Vec<u8>>,

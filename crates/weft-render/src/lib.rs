@@ -56,6 +56,7 @@ mod resources;
 mod scene;
 mod scene_draw;
 mod scene_library;
+mod texture_files;
 mod tiles;
 mod timing;
 mod uniform;

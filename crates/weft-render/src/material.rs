@@ -5,6 +5,7 @@
 //! uniform offsets and bindings all come from `<name>.meta.json`. The values
 //! themselves (kinds, ranges, normalisation) live in `values.rs`.
 
+use crate::TextureValue;
 use crate::error::{Error, Result, io_err};
 use crate::uniform::{put, write_f32s};
 // The value types are part of this module's API (`crate::material::Value`, ...).
@@ -37,6 +38,9 @@ pub struct Material {
     /// Texture and cube parameters given a value since the last reset;
     /// the others bind their variant's default (`bindings[].texture.default`).
     set_textures: BTreeSet<String>,
+    /// Texture parameters' images (`texture.file`), by parameter: what an
+    /// unset one binds where its variant's binding names the file.
+    images: BTreeMap<String, TextureValue>,
     tiling: BTreeMap<String, [f64; 4]>,
     keywords: BTreeMap<String, String>,
     tier: String,
@@ -64,10 +68,19 @@ impl Material {
                 weft_meta::ENGINE_INTERFACE_VERSION
             )));
         }
+        let dir: PathBuf = dir.into();
+        let roots = crate::texture_files::material_roots(&dir);
+        let images = meta
+            .parameters
+            .iter()
+            .filter_map(|p| Some((p, p.texture.as_ref()?.file.as_ref()?)))
+            .map(|(p, f)| Ok((p.name.clone(), crate::texture_files::read(&roots, f)?)))
+            .collect::<Result<_>>()?;
         let mut m = Material {
-            dir: dir.into(),
+            dir,
             values: BTreeMap::new(),
             set_textures: BTreeSet::new(),
+            images,
             tiling: BTreeMap::new(),
             keywords: meta
                 .keywords
@@ -155,6 +168,12 @@ impl Material {
     /// resolved), which [`Material::get`]'s declared default may not be.
     pub fn texture_is_set(&self, name: &str) -> bool {
         self.set_textures.contains(name)
+    }
+
+    /// The image a texture parameter ships (`texture.file`, read when the
+    /// material was loaded), if it has one.
+    pub fn texture_image(&self, name: &str) -> Option<&TextureValue> {
+        self.images.get(name)
     }
 
     /// Sets a parameter to a value as a scene build uploaded it (colours

@@ -446,7 +446,8 @@ fn material_passes(material: &Material) -> Result<Vec<Pass>> {
 /// What a group-1 texture binding of the material's variant samples: the
 /// value of the parameter it carries; a texture left unset binds the
 /// built-in texture its binding names (`texture.default`, resolved for the
-/// variant's keywords), not the parameter's declared default.
+/// variant's keywords), not the parameter's declared default, or the image
+/// the binding names (`texture.file`).
 fn material_texture<'m>(material: &'m Material, b: &Binding) -> Result<TextureSource<'m>> {
     let pname = b.parameter.as_ref().ok_or_else(|| {
         Error::Metadata(format!(
@@ -459,9 +460,17 @@ fn material_texture<'m>(material: &'m Material, b: &Binding) -> Result<TextureSo
         .get(pname)
         .ok_or_else(|| Error::Metadata(format!("parameter `{pname}` has no value")))?;
     let binding_default = b.texture.as_ref().and_then(|t| t.default);
-    let texture = |t: &'m TextureValue| match binding_default {
-        Some(d) if !material.texture_is_set(pname) => Cow::Owned(TextureValue::Builtin(d)),
-        _ => Cow::Borrowed(t),
+    // An unset texture whose binding names an image binds it.
+    let image = b
+        .texture
+        .as_ref()
+        .and_then(|t| t.file.as_ref())
+        .and_then(|_| material.texture_image(pname));
+    let texture = |t: &'m TextureValue| match (image, binding_default) {
+        _ if material.texture_is_set(pname) => Cow::Borrowed(t),
+        (Some(image), _) => Cow::Borrowed(image),
+        (None, Some(d)) => Cow::Owned(TextureValue::Builtin(d)),
+        (None, None) => Cow::Borrowed(t),
     };
     Ok(match (param.kind, value) {
         (ParamKind::Texture2d, StoredValue::Texture(t)) => TextureSource::Texture2d(texture(t)),

@@ -448,7 +448,7 @@ impl Renderer {
             .map(|layout| pack_uniform_values(layout, &inst.uniform_values))
             .transpose()?;
         let textures = self.gpu.checked("scene textures", || {
-            material_texture_views(&self.gpu, shader, |b| scene_texture(inst, b))
+            material_texture_views(&self.gpu, shader, |b| scene_texture(inst, b, &scene.dir))
         })??;
         let resources = ObjectResources {
             uniform_bytes,
@@ -527,9 +527,14 @@ pub fn scene_instance_count(inst: &SceneInstance, pass: &Pass) -> Result<u32> {
 /// What a group-1 texture binding of a scene shader samples: the
 /// instance's `textures` entry for the binding (a texture left at its
 /// default is listed with the built-in texture the build resolved for the
-/// instance's keywords). The binding's `texture.format` says whether its
+/// instance's keywords; one left at its image with the image's `file`). The
+/// binding's `texture.format` says whether its
 /// texels are sRGB (`material_texture_views`).
-fn scene_texture<'a>(inst: &'a SceneInstance, b: &Binding) -> Result<TextureSource<'a>> {
+fn scene_texture<'a>(
+    inst: &'a SceneInstance,
+    b: &Binding,
+    scene_dir: &Path,
+) -> Result<TextureSource<'a>> {
     let t = inst.textures.get(&b.name).ok_or_else(|| {
         Error::Metadata(format!(
             "the shader binds texture `{}` (group 1, binding {}) but the instance's `textures` \
@@ -543,6 +548,13 @@ fn scene_texture<'a>(inst: &'a SceneInstance, b: &Binding) -> Result<TextureSour
         .texture
         .as_ref()
         .is_some_and(|t| t.view_dimension == weft_meta::TextureViewDimension::Cube);
+    // A texture left at the image it ships (`file`) binds the file.
+    if let Some(f) = &t.file {
+        let roots = crate::texture_files::scene_roots(scene_dir);
+        return Ok(TextureSource::Texture2d(Cow::Owned(
+            crate::texture_files::read(&roots, f)?,
+        )));
+    }
     match (&t.builtin, &t.ramp_rgba8) {
         (Some(d), None) if cube => Ok(TextureSource::Cube(Cow::Owned(TextureValue::Builtin(*d)))),
         (Some(d), None) => Ok(TextureSource::Texture2d(Cow::Owned(TextureValue::Builtin(

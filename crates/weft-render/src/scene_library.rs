@@ -97,6 +97,10 @@ pub fn configure_instance_material(material: &mut Material, inst: &SceneInstance
         }
     }
     for (binding, t) in &inst.textures {
+        // Left at its image: unset, so the variant's binding binds the file.
+        if t.file.is_some() {
+            continue;
+        }
         let value = match (&t.builtin, &t.ramp_rgba8) {
             (Some(d), None) => TextureValue::Builtin(*d),
             (None, Some(ramp)) if !ramp.is_empty() && ramp.len().is_multiple_of(4) => {

@@ -709,6 +709,7 @@ fn bad_scene_metadata_is_an_error_naming_the_file_and_instance() {
                 multisampled: false,
                 format: "rgba8unorm".into(),
                 default: Some(TextureDefault::White),
+                file: None,
             }),
             sampler: None,
             resource: None,

@@ -19,8 +19,9 @@ pub const POLL: Duration = Duration::from_millis(250);
 /// What a scan sees of one file: modification time and length.
 type Stamp = (Option<SystemTime>, u64);
 
-/// Every `.toml` and `.wgsl` file under `dir` (recursively, symbolic links
-/// not followed: the compiler refuses them anyway) with its stamp.
+/// Every `.toml`, `.wgsl` and `.png` (texture parameters' `file`) file under
+/// `dir` (recursively, symbolic links not followed: the compiler refuses
+/// them anyway) with its stamp.
 pub fn scan(dir: &Path) -> BTreeMap<PathBuf, Stamp> {
     let mut out = BTreeMap::new();
     let mut stack = vec![dir.to_path_buf()];
@@ -37,7 +38,9 @@ pub fn scan(dir: &Path) -> BTreeMap<PathBuf, Stamp> {
                     stack.push(path);
                 }
             } else if ft.is_file()
-                && path.extension().is_some_and(|x| x == "toml" || x == "wgsl")
+                && path
+                    .extension()
+                    .is_some_and(|x| x == "toml" || x == "wgsl" || x == "png")
                 && let Ok(md) = e.metadata()
             {
                 out.insert(path, (md.modified().ok(), md.len()));

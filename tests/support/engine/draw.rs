@@ -195,11 +195,13 @@ impl Engine {
         Ok(view)
     }
 
-    /// A material texture: a built-in 1×1 (cube: six 1×1 faces) or a ramp.
+    /// A material texture: a built-in 1×1 (cube: six 1×1 faces), a ramp,
+    /// or an image file under the library `root`.
     fn material_texture(
         &self,
         b: &Binding,
         data: &TextureData,
+        root: &Path,
     ) -> Result<wgpu::TextureView, String> {
         let t = b.texture.as_ref().expect("texture binding");
         let format = formats::texture_format(&t.format)?;
@@ -212,6 +214,20 @@ impl Engine {
             format,
             wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Rgba8UnormSrgb
         );
+        if let TextureData::File(f) = data {
+            // The file's own format: the binding's says the same (a
+            // mismatch would be a metadata error worth seeing).
+            if f.format != t.format || layers != 1 {
+                return Err(format!(
+                    "`{}`: image `{}` is {} but the binding is {} {:?}",
+                    b.name, f.path, f.format, t.format, t.view_dimension
+                ));
+            }
+            let bytes = std::fs::read(root.join(&f.path))
+                .map_err(|e| format!("`{}`: {}: {e}", b.name, f.path))?;
+            let texture = self.texture(&b.name, format, (f.width, f.height, 1), &[bytes])?;
+            return Ok(Self::view(&texture, t.view_dimension));
+        }
         let (width, bytes) = match data {
             TextureData::Builtin(d) if rgba8 => (1, d.rgba8().repeat(layers as usize)),
             TextureData::Builtin(d) => {
@@ -220,6 +236,7 @@ impl Engine {
             TextureData::Ramp(r) if rgba8 && layers == 1 && r.len() % 4 == 0 => {
                 ((r.len() / 4) as u32, r.clone())
             }
+            TextureData::File(_) => unreachable!("bound above"),
             TextureData::Ramp(r) => {
                 return Err(format!(
                     "`{}`: a ramp of {} bytes cannot be {} {:?}",
@@ -316,7 +333,7 @@ impl Engine {
                                 format!("`{}`: no material texture given", b.name)
                             })?;
                             Res::View(self.checked(&format!("texture `{}`", b.name), || {
-                                self.material_texture(b, data)
+                                self.material_texture(b, data, &s.root)
                             })??)
                         }
                         _ => Res::View(self.engine_texture(world, s, b)?),

@@ -140,6 +140,9 @@ pub enum TextureData {
     Builtin(TextureDefault),
     /// A gradient ramp: RGBA8 texels as stored (sRGB-encoded), `len / 4` × 1.
     Ramp(Vec<u8>),
+    /// A texture parameter's image (`texture.file`): RGBA8 texels read from
+    /// the file, relative to the library root.
+    File(weft_meta::ResourceFile),
 }
 
 /// The material side of one draw: group 1's uniform bytes and textures, and
@@ -165,8 +168,8 @@ fn count_of(v: f64) -> u32 {
 
 /// A library variant with every parameter at its declared default: the
 /// material uniform from `parameters[]` (by each member's `parameter` and
-/// `encoding`), textures from `bindings[].texture.default` or the gradient's
-/// `baked_default`, instance counts (per pass of `passes`: the variant's,
+/// `encoding`), textures from `bindings[].texture.file` (an image), else
+/// `bindings[].texture.default` or the gradient's `baked_default`, instance counts (per pass of `passes`: the variant's,
 /// [`variant_passes`]) fixed or the int parameter's default.
 pub fn library_inputs(
     meta: &MaterialMetadata,
@@ -206,6 +209,10 @@ pub fn library_inputs(
             .find(|p| &p.name == pname)
             .ok_or_else(|| format!("binding `{}`: no parameter `{pname}`", b.name))?;
         let data = match (p.kind, &p.gradient, t.default) {
+            // Unset, a texture whose binding names an image binds the file.
+            (ParamKind::Texture2d, _, _) if t.file.is_some() => {
+                TextureData::File(t.file.clone().expect("checked"))
+            }
             (ParamKind::Gradient, Some(g), _) => {
                 if g.baked_default.len() != g.width as usize * 4 {
                     return Err(format!(
@@ -291,6 +298,8 @@ pub fn scene_inputs(
             )
         })?;
         let data = match (&t.builtin, &t.ramp_rgba8) {
+            // Left at its image: the file (`builtin` is a fallback).
+            _ if t.file.is_some() => TextureData::File(t.file.clone().expect("checked")),
             (Some(d), None) => TextureData::Builtin(*d),
             (None, Some(r)) => TextureData::Ramp(r.clone()),
             _ => {

@@ -431,12 +431,20 @@ pub fn build_resolved_scene(
                     (ParamKind::Gradient, ParamValue::Gradient(stops)) => SceneTexture {
                         parameter: pname.clone(),
                         builtin: None,
+                        file: None,
                         ramp_rgba8: Some(weft_front::samples::bake_gradient(stops, p.samples)),
                         srgb: true,
                     },
                     (_, ParamValue::Texture(t)) => SceneTexture {
                         parameter: pname.clone(),
                         builtin: Some(*t),
+                        // Left unset, a texture with an image binds it (it
+                        // is never folded, `instance::values`).
+                        file: if inst.set.get(pi).copied().unwrap_or(true) {
+                            None
+                        } else {
+                            crate::texture_files::resource_file(m, p)
+                        },
                         ramp_rgba8: None,
                         srgb: p.srgb,
                     },

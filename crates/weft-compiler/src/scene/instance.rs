@@ -126,11 +126,15 @@ pub fn instance_values(
                 );
             }
         }
+        let set = inst.set.get(i).copied().unwrap_or(true);
+        // An unset texture with an image (`file`) stays bound to it: an
+        // image is no constant.
         if let (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) = (p.kind, v)
             && !dynamic
+            && (set || p.file.is_none())
         {
             // An unset texture starts from its keyword-dependent default.
-            let t = if inst.set.get(i).copied().unwrap_or(true) {
+            let t = if set {
                 *t
             } else {
                 p.texture_default_where(|subject| {

@@ -76,6 +76,7 @@ pub(super) fn parse_param(
         ("width", &[ParamKind::Gradient]),
         ("power", &[ParamKind::Float]),
         ("default_when", &[ParamKind::Texture2d, ParamKind::Cube]),
+        ("file", &[ParamKind::Texture2d]),
     ];
     for (key, kinds) in only_for {
         if t.get(key).is_some() && !kinds.contains(&kind) {
@@ -199,6 +200,7 @@ pub(super) fn parse_param(
         // Reported above as a key that does not apply.
         _ => Vec::new(),
     };
+    let file = parse_file(&t, kind, cx);
 
     Some(Param {
         name: name.to_string(),
@@ -211,6 +213,7 @@ pub(super) fn parse_param(
         order: t.integer("order", cx).unwrap_or(0),
         default,
         default_when,
+        file,
         range,
         soft_range,
         step,
@@ -250,6 +253,55 @@ fn parse_default(
         ),
     };
     values::parse_value(v, kind, range, &site, cx)
+}
+
+/// A `texture2d` parameter's `file`: the path as written (read and decoded
+/// once the materials root is known, `crate::texture_files`). Not with
+/// `default_when`: a file is one image for every variant, and which of the
+/// two would win where an entry holds is nothing a reader could guess.
+fn parse_file(t: &Table, kind: ParamKind, cx: &mut Cx) -> Option<TextureFile> {
+    let written = t.string("file", cx)?;
+    if kind != ParamKind::Texture2d {
+        // Reported as a key that does not apply.
+        return None;
+    }
+    let loc = Loc {
+        file: cx.file,
+        span: t.span_of("file"),
+    };
+    if written.is_empty() {
+        cx.error_with_note(
+            "wrong-type",
+            "`file` is empty",
+            loc.span,
+            "here",
+            "name a PNG relative to the materials root, e.g. `file = \"face/textures/face_sdf.png\"`",
+        );
+        return None;
+    }
+    if let Some(span) = t.key_span("default_when") {
+        let d = cx.diags.error(
+            "conflicting-keys",
+            format!("{} has both `file` and `default_when`", t.what),
+            cx.file,
+            span,
+            "keyword-dependent defaults here",
+        );
+        d.labels.push(
+            codespan_reporting::diagnostic::Label::secondary(loc.file, loc.span)
+                .with_message("file default here"),
+        );
+        d.notes.push(
+            "a file default is one image for every variant: drop `default_when`, or drop `file` and bind the image from the engine"
+                .into(),
+        );
+        return None;
+    }
+    Some(TextureFile {
+        path: written,
+        loc,
+        image: Default::default(),
+    })
 }
 
 /// What a `default_when` condition may say (the hint on a condition that does

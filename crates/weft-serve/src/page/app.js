@@ -204,6 +204,9 @@ async function uploadTextures() {
       r.setTexture(b.binding, await panoramaCube(r, state.textures[p.name], b.texture.format));
     } else if (p && state.textures[p.name] && state.textures[p.name].kind === 'image') {
       r.setTexture(b.binding, r.imageTexture(state.textures[p.name].bitmap, b.texture.format));
+    } else if (b.texture.file && !(p && state.textures[p.name] && state.textures[p.name].set)) {
+      // Unset, a texture that ships an image binds its file (`texture.file`).
+      r.setTexture(b.binding, await r.fileTexture(b.texture.file));
     } else {
       r.setTexture(b.binding, r.builtinTexture(b.texture.default || 'white', b.texture.format, b.texture.view_dimension === 'cube'));
     }
@@ -331,7 +334,8 @@ function paramControl(p) {
     case 'vec2': case 'vec3': case 'vec4': c = vectorControl(p, v, (x) => paramChanged(p, x)); break;
     case 'texture2d': case 'cube': {
       const b = state.variant && state.variant.shader.bindings.find((x) => x.group === 1 && x.parameter === p.name);
-      c = textureControl(p, state.textures[p.name], b && b.texture ? b.texture.default : null, state.tiling[p.name], t,
+      const shipped = b && b.texture ? (b.texture.file ? b.texture.file.path : b.texture.default) : null;
+      c = textureControl(p, state.textures[p.name], shipped, state.tiling[p.name], t,
         (x) => { state.textures[p.name] = x; queue(async () => { await uploadTextures(); await render(); }); },
         (x) => { state.tiling[p.name] = x; queue(async () => { uploadUniform(); await render(); }); });
       break;
@@ -389,7 +393,7 @@ async function applyPreset(name) {
   for (const [key, v] of Object.entries(pr.values)) {
     if (key === 'tier') state.tier = String(v);
     else if (key in state.keywords) state.keywords[key] = typeof v === 'boolean' ? (v ? 'on' : 'off') : String(v);
-    else if (key in state.textures) state.textures[key] = { kind: 'builtin', name: String(v) };
+    else if (key in state.textures) state.textures[key] = { kind: 'builtin', name: String(v), set: true };
     else state.values[key] = JSON.parse(JSON.stringify(v));
   }
   rebuildPanel();

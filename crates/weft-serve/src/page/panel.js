@@ -148,7 +148,7 @@ export function vectorControl(p, value, onChange) {
 
 // Texture slots: the built-in default the variant binds (a texture's
 // default can depend on keywords: the binding's `texture.default` says
-// which, `defaultName` passes it), a file picker for the user's own image
+// which, `defaultName` passes it; or the image it ships, `texture.file`), a file picker for the user's own image
 // (2D textures: the image; cubes: an equirectangular panorama, converted to
 // the six faces when bound), and tiling/offset when the metadata has a
 // member for it.

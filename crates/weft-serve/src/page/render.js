@@ -411,6 +411,19 @@ export class Renderer {
     return this.luts[file.path];
   }
 
+  // A texture parameter's image (`texture.file`: RGBA8 texels, rows top
+  // first, under the library root), uploaded once per file.
+  async fileTexture(file) {
+    const key = `${file.path}|${file.format}|${file.sha256}`;
+    if (this.luts[key]) return this.luts[key];
+    if (file.format !== 'rgba8unorm' && file.format !== 'rgba8unorm_srgb') throw new Error(`image ${file.path}: format ${file.format} is not one the page knows`);
+    const bytes = await fetchOk(this.base + 'api/files/' + file.path, 'bin');
+    const t = this.device.createTexture({ label: file.path, size: [file.width, file.height], format: gpuName(file.format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    this.device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: file.width * 4, rowsPerImage: file.height }, [file.width, file.height]);
+    this.luts[key] = t.createView();
+    return this.luts[key];
+  }
+
   // A 1x1 (or 1x1x6) RGBA8 texture of a built-in default.
   builtinTexture(name, format, cube) {
     const texel = { white: [255, 255, 255, 255], black: [0, 0, 0, 255], gray: [128, 128, 128, 255], normal: [128, 128, 255, 255] }[name] || [255, 0, 255, 255];
