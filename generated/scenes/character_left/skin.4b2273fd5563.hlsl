@@ -1,0 +1,382 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftOutlineVertex {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+};
+
+struct WeftOutlineVaryings {
+    float4 clip_position : SV_Position;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const float3 skin_lut_shape = float3(4.0, 10.0, 20.0);
+static const float skin_lut_ring = 3.1415927;
+static const float3 seed_lut_shape = float3(4.0, 10.0, 20.0);
+static const float seed_lut_ring = 1.5707964;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+Texture2D<float4> weft_brdf_lut : register(t3);
+static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+static const SamplerState material_clamp_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[2]];
+Texture2D<float4> curvature_map : register(t5, space1);
+Texture2D<float4> skin_lut : register(t7, space1);
+
+struct VertexOutput_vs_outline {
+    float4 clip_position : SV_Position;
+};
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_2 : SV_Position;
+};
+
+float4 table_skin_lut(float2 uv)
+{
+    float2 st_1 = (((clamp(uv, (0.0).xx, (1.0).xx) * float2(63.0, 63.0)) + (0.5).xx) / float2(64.0, 64.0));
+    float4 _e13 = skin_lut.SampleLevel(material_clamp_sampler, st_1, 0.0);
+    return _e13;
+}
+
+float weft_pow5_(float x)
+{
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
+{
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float a2_ = (a * a);
+    float noh = saturate(dot(n_1, h));
+    float3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2)
+{
+    const float _e3 = weft_clamp_roughness(roughness_2);
+    float a_1 = (_e3 * _e3);
+    float a2_1 = (a_1 * a_1);
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e5 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_2)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_3)
+{
+    float r = saturate(roughness_3);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
+{
+    const float _e4 = weft_specular_mip(roughness_4);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
+{
+    float2 uv_2 = float2(saturate(n_dot_v_1), saturate(roughness_5));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_2, 0.0);
+    return _e8.xy;
+}
+
+float2 weft_transform_uv(float2 uv_1, float4 st)
+{
+    return ((uv_1 * st.xy) + st.zw);
+}
+
+float skin_dual_ggx(float3 n_3, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
+{
+    float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
+    float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
+    const float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    const float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
+    float lobe0_ = (_e18 * _e19);
+    const float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    const float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
+    float lobe1_ = (_e21 * _e22);
+    const float3 _e25 = weft_f_schlick((f0_2).xxx, v_dot_h_1);
+    float f = _e25.x;
+    return (lerp(lobe0_, lobe1_, saturate(w)) * f);
+}
+
+VertexOutput_vs_outline vs_outline(WeftOutlineVertex in_)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    WeftOutlineVaryings out_ = (WeftOutlineVaryings)0;
+
+    float4x4 _e3 = weft_object.model;
+    float4 world = mul(float4(in_.position, 1.0), _e3);
+    float4x4 nm = weft_object.normal_matrix;
+    float3 normal = mul(in_.normal, float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz));
+    float4x4 _e22 = weft_frame.view_proj;
+    float4 clip_ = mul(float4(world.xyz, 1.0), _e22);
+    float4 _e29 = weft_frame.viewport;
+    float2 size = _e29.xy;
+    float4x4 _e33 = weft_frame.view_proj;
+    float2 screen_normal = (mul(float4(normal, 0.0), _e33).xy * size);
+    float len = length(screen_normal);
+    if ((len > 1e-6)) {
+        float _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e51 = local;
+    if (_e51) {
+        local_1 = (clip_.w > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool usable = local_1;
+    float2 direction = (usable ? (screen_normal / (max(len, 1e-6)).xx) : (0.0).xx);
+    float distance_ = min(clip_.w, 10.0);
+    float4 _e74 = weft_frame.viewport;
+    float2 offset = ((((direction * 1.5) * 2.0) * _e74.zw) * distance_);
+    out_.clip_position = float4((clip_.xy + offset), clip_.zw);
+    WeftOutlineVaryings _e84 = out_;
+    const WeftOutlineVaryings weftoutlinevaryings = _e84;
+    const VertexOutput_vs_outline weftoutlinevaryings_1 = { weftoutlinevaryings.clip_position };
+    return weftoutlinevaryings_1;
+}
+
+float4 fs_outline() : SV_Target0
+{
+    return float4(float3(0.0, 0.0, 0.0), 1.0);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_1)
+{
+    WeftVaryings out_1 = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm_1 = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    float4 world_1 = mul(float4(in_1.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = mul(float4(world_1.xyz, 1.0), _e43);
+    out_1.world_position = world_1.xyz;
+    const float3 _e54 = weft_safe_normalize(mul(in_1.normal, normal3_), (0.0).xxx);
+    out_1.world_normal = _e54;
+    const float3 _e60 = weft_safe_normalize(mul(in_1.tangent.xyz, model3_), (0.0).xxx);
+    out_1.world_tangent = float4(_e60, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    WeftVaryings _e64 = out_1;
+    const WeftVaryings weftvaryings = _e64;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    float curvature = (float)0;
+    float3 n = (float3)0;
+    float3 falloff = (float3)0;
+    float specular = (float)0;
+    float3 kd = (float3)0;
+
+    const float2 _e3 = weft_transform_uv(in_2.uv0_, float4(1.0, 1.0, 0.0, 0.0));
+    const float3 _e12 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e14 = weft_safe_normalize(in_2.world_normal, _e12);
+    float3 _e15 = fwidth(_e14);
+    float dn = length(_e15);
+    float3 _e18 = fwidth(in_2.world_position);
+    float dp = length(_e18);
+    float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
+    float4 _e27 = curvature_map.Sample(material_sampler, _e3);
+    float mapped = _e27.x;
+    curvature = saturate((0.6 * estimated));
+    n = _e14;
+    const float3 _e34 = weft_main_light_direction();
+    float3 _e36 = n;
+    const float3 _e37 = weft_safe_normalize((_e34 + _e12), _e36);
+    float3 _e38 = n;
+    const float _e40 = weft_clamp_cos(dot(_e38, _e12));
+    float3 _e41 = n;
+    float n_dot_l_2 = saturate(dot(_e41, _e34));
+    float v_dot_h_2 = saturate(dot(_e12, _e37));
+    float3 _e46 = n;
+    float u = clamp(((dot(_e46, _e34) * 0.5) + 0.5), 0.0, 1.0);
+    {
+        {
+            float _e56 = curvature;
+            const float4 _e58 = table_skin_lut(float2(u, _e56));
+            falloff = _e58.xyz;
+        }
+    }
+    float3 _e60 = falloff;
+    falloff = max(_e60, (0.0).xxx);
+    const float2 _e64 = weft_env_brdf_lut(_e40, 0.5);
+    const float3 _e65 = weft_env_brdf_from_lut((0.028).xxx, _e64);
+    {
+        float3 _e68 = n;
+        const float _e70 = skin_dual_ggx(_e68, _e37, _e40, n_dot_l_2, v_dot_h_2, 0.5, 0.15, 0.028);
+        specular = ((_e70 * n_dot_l_2) * 1.0);
+        kd = max(((1.0).xxx - _e65), (0.0).xxx);
+    }
+    const float3 _e77 = weft_main_light_radiance();
+    float3 _e78 = kd;
+    const float3 _e79 = weft_diffuse_lambert(float3(0.6920711, 0.34239164, 0.233022));
+    float3 _e81 = falloff;
+    float _e83 = specular;
+    float3 direct = ((((_e78 * _e79) * _e81) + (_e83).xxx) * _e77);
+    float3 _e87 = n;
+    const float3 _e88 = weft_sh_irradiance(_e87);
+    float3 _e89 = kd;
+    float3 indirect_diffuse = ((_e88 * _e89) * float3(0.6920711, 0.34239164, 0.233022));
+    float3 _e93 = n;
+    const float3 _e95 = weft_prefiltered_radiance(reflect(-(_e12), _e93), 0.5);
+    float3 indirect_specular = ((_e95 * _e65) * 1.0);
+    float3 color = ((direct + indirect_diffuse) + indirect_specular);
+    float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, 1.0);
+}

@@ -1,0 +1,236 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftOutlineVertex {
+    vec3 position;
+    vec3 normal;
+};
+struct WeftOutlineVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct FaceLight {
+    float f_dot_l;
+    bool from_right;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const vec3 skin_lut_shape = vec3(4.0, 10.0, 20.0);
+const float skin_lut_ring = 3.1415927;
+const uint TIER_STYLISED = 0u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(std140, binding = 1) uniform WeftObject_block_1Fragment { WeftObject _group_2_binding_0_fs; };
+
+layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 4) uniform sampler2D _group_1_binding_7_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec4 table_skin_lut(vec2 uv) {
+    vec2 st_1 = (((clamp(uv, vec2(0.0), vec2(1.0)) * vec2(63.0, 63.0)) + vec2(0.5)) / vec2(64.0, 64.0));
+    vec4 _e13 = textureLod(_group_1_binding_7_fs, vec2(st_1), 0.0);
+    return _e13;
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e5;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n.x) * n.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n.y) * n.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n.x) * n.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+    vec2 uv_3 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_3), 0.0);
+    return _e8.xy;
+}
+
+vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
+    return ((uv_1 * st.xy) + st.zw);
+}
+
+float skin_seed_specular(vec3 n_1, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_1, h), 0.0, 1.0);
+    float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
+    float r2_ = (roughness_3 * roughness_3);
+    float normalization = ((roughness_3 * 4.0) + 2.0);
+    float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
+    float nl = clamp(dot(n_1, l), 0.0, 1.0);
+    float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
+    float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
+    float ggx = (r2_ / denom);
+    float second = ((((2.0 * r2_) / denom) * lobe_weight) * mask);
+    return ((((ggx / 2.0) + second) * s_ao) / WEFT_PI);
+}
+
+FaceLight face_light(vec3 l_1) {
+    FaceLight out_2 = FaceLight(0.0, false);
+    mat4x4 model = _group_2_binding_0_fs.model;
+    vec3 _e7 = weft_safe_normalize(model[2].xyz, vec3(0.0, 0.0, 1.0));
+    vec3 _e11 = weft_safe_normalize(model[0].xyz, vec3(1.0, 0.0, 0.0));
+    vec3 _e16 = weft_safe_normalize(vec3(l_1.x, 0.0, l_1.z), _e7);
+    out_2.f_dot_l = ((dot(_e7, _e16) * -0.5) + 0.5);
+    out_2.from_right = (dot(_e11, _e16) >= 0.0);
+    FaceLight _e28 = out_2;
+    return _e28;
+}
+
+float face_sdf_shadow(vec2 uv_2, FaceLight light, float soft) {
+    vec4 _e5 = texture(_group_1_binding_4_fs, vec2(uv_2));
+    float sdf_l = _e5.x;
+    vec4 _e14 = texture(_group_1_binding_4_fs, vec2(vec2((1.0 - uv_2.x), uv_2.y)));
+    float sdf_r = _e14.x;
+    float sdf = (light.from_right ? sdf_r : sdf_l);
+    float w = max(soft, 0.0001);
+    return smoothstep(-(w), w, (sdf - light.f_dot_l));
+}
+
+void main() {
+    WeftVaryings in_2 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    float bias = 0.0;
+    vec2 _e3 = weft_transform_uv(in_2.uv0_, vec4(1.0, 1.0, 0.0, 0.0));
+    vec4 _e12 = texture(_group_1_binding_5_fs, vec2(_e3));
+    float shadow_mask = clamp(_e12.x, 0.0, 1.0);
+    vec3 _e17 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e19 = weft_safe_normalize(in_2.world_normal, _e17);
+    vec3 _e20 = fwidth(_e19);
+    float dn = length(_e20);
+    vec3 _e23 = fwidth(in_2.world_position);
+    float dp = length(_e23);
+    float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
+    float curvature = clamp((0.6 * estimated), 0.01, 0.99);
+    vec3 _e35 = weft_main_light_direction();
+    vec3 _e37 = weft_safe_normalize((_e35 + _e17), _e19);
+    float n_dot_l = clamp(dot(_e19, _e35), 0.0, 1.0);
+    FaceLight _e40 = face_light(_e35);
+    float _e42 = face_sdf_shadow(_e3, _e40, 0.05);
+    bias = (_e42 * shadow_mask);
+    float _e45 = bias;
+    bias = clamp(_e45, 0.0, 1.0);
+    float _e49 = bias;
+    vec4 _e51 = table_skin_lut(vec2(_e49, curvature));
+    vec3 falloff = max(_e51.xyz, vec3(0.0));
+    float _e57 = skin_seed_specular(_e19, _e35, _e37, 0.36, 1.0, 0.15);
+    float specular = ((_e57 * 0.028) * n_dot_l);
+    vec3 _e61 = weft_main_light_radiance();
+    vec3 _e62 = weft_diffuse_lambert(vec3(0.82757086, 0.5070785, 0.39312312));
+    vec3 direct = ((((vec3(0.972) * _e62) * falloff) + vec3(specular)) * _e61);
+    float _e69 = weft_clamp_cos(dot(_e19, _e17));
+    vec2 _e71 = weft_env_brdf_lut(_e69, 0.6);
+    vec3 _e72 = weft_env_brdf_from_lut(vec3(0.028), _e71);
+    vec3 _e73 = weft_sh_irradiance(_e19);
+    vec3 indirect_diffuse = ((_e73 * vec3(0.972)) * vec3(0.82757086, 0.5070785, 0.39312312));
+    vec3 _e78 = weft_prefiltered_radiance(reflect(-(_e17), _e19), 0.6);
+    vec3 indirect_specular = ((_e78 * _e72) * 1.0);
+    vec3 color = ((direct + indirect_diffuse) + indirect_specular);
+    vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, 1.0);
+    return;
+}
+

@@ -1,0 +1,127 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftOutlineVertex {
+    vec3 position;
+    vec3 normal;
+};
+struct WeftOutlineVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const vec3 skin_lut_shape = vec3(4.0, 10.0, 20.0);
+const float skin_lut_ring = 3.1415927;
+const vec3 seed_lut_shape = vec3(4.0, 10.0, 20.0);
+const float seed_lut_ring = 1.5707964;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float a2_ = (a * a);
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_1 = (_e3 * _e3);
+    float a2_1 = (a_1 * a_1);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / (lv + ll));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
+    return ((uv_1 * st.xy) + st.zw);
+}
+
+float skin_dual_ggx(vec3 n_3, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+    float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
+    float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
+    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
+    float lobe0_ = (_e18 * _e19);
+    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
+    float lobe1_ = (_e21 * _e22);
+    vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
+    float f = _e25.x;
+    return (mix(lobe0_, lobe1_, clamp(w, 0.0, 1.0)) * f);
+}
+
+void main() {
+    _fs2p_location0 = vec4(vec3(0.0, 0.0, 0.0), 1.0);
+    return;
+}
+

@@ -1,0 +1,344 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftOutlineVertex {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+struct WeftOutlineVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const skin_lut_shape: vec3<f32> = vec3<f32>(4f, 10f, 20f);
+const skin_lut_ring: f32 = 3.1415927f;
+const seed_lut_shape: vec3<f32> = vec3<f32>(4f, 10f, 20f);
+const seed_lut_ring: f32 = 1.5707964f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(2) 
+var material_clamp_sampler: sampler;
+@group(1) @binding(5) 
+var curvature_map: texture_2d<f32>;
+@group(1) @binding(7) 
+var skin_lut: texture_2d<f32>;
+
+fn table_skin_lut(uv: vec2<f32>) -> vec4<f32> {
+    let st_1 = (((clamp(uv, vec2(0f), vec2(1f)) * vec2<f32>(63f, 63f)) + vec2(0.5f)) / vec2<f32>(64f, 64f));
+    let _e13 = textureSampleLevel(skin_lut, material_clamp_sampler, st_1, 0f);
+    return _e13;
+}
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_clamp_roughness(roughness: f32) -> f32 {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_1);
+    let a = (_e3 * _e3);
+    let a2_ = (a * a);
+    let noh = saturate(dot(n_1, h));
+    let nxh = cross(n_1, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
+}
+
+fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+    let _e3 = weft_clamp_roughness(roughness_2);
+    let a_1 = (_e3 * _e3);
+    let a2_1 = (a_1 * a_1);
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
+    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
+    return (0.5f / (lv + ll));
+}
+
+fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
+    return (albedo * WEFT_INV_PI);
+}
+
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + vec3(sb.y));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e5 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e5;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_specular_mip(roughness_3: f32) -> f32 {
+    let r = saturate(roughness_3);
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
+}
+
+fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
+    let _e4 = weft_specular_mip(roughness_4);
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
+    let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_2, 0f);
+    return _e8.xy;
+}
+
+fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv_1 * st.xy) + st.zw);
+}
+
+fn skin_dual_ggx(n_3: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+    let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
+    let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
+    let _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
+    let lobe0_ = (_e18 * _e19);
+    let _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
+    let lobe1_ = (_e21 * _e22);
+    let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
+    let f = _e25.x;
+    return (mix(lobe0_, lobe1_, saturate(w)) * f);
+}
+
+@vertex 
+fn vs_outline(in: WeftOutlineVertex) -> WeftOutlineVaryings {
+    var local: bool;
+    var local_1: bool;
+    var out: WeftOutlineVaryings;
+
+    let _e3 = weft_object.model;
+    let world = (_e3 * vec4<f32>(in.position, 1f));
+    let nm = weft_object.normal_matrix;
+    let normal = (mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal);
+    let _e22 = weft_frame.view_proj;
+    let clip = (_e22 * vec4<f32>(world.xyz, 1f));
+    let _e29 = weft_frame.viewport;
+    let size = _e29.xy;
+    let _e33 = weft_frame.view_proj;
+    let screen_normal = ((_e33 * vec4<f32>(normal, 0f)).xy * size);
+    let len = length(screen_normal);
+    if (len > 0.000001f) {
+        let _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0f);
+    } else {
+        local = false;
+    }
+    let _e51 = local;
+    if _e51 {
+        local_1 = (clip.w > 0f);
+    } else {
+        local_1 = false;
+    }
+    let usable = local_1;
+    let direction = select(vec2(0f), (screen_normal / vec2(max(len, 0.000001f))), usable);
+    let distance_ = min(clip.w, 10f);
+    let _e74 = weft_frame.viewport;
+    let offset = ((((direction * 1.5f) * 2f) * _e74.zw) * distance_);
+    out.clip_position = vec4<f32>((clip.xy + offset), clip.zw);
+    let _e84 = out;
+    return _e84;
+}
+
+@fragment 
+fn fs_outline() -> @location(0) vec4<f32> {
+    return vec4<f32>(vec3<f32>(0f, 0f, 0f), 1f);
+}
+
+@vertex 
+fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
+    var out_1: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm_1 = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    let world_1 = (model * vec4<f32>(in_1.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_1.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out_1.clip_position = (_e43 * vec4<f32>(world_1.xyz, 1f));
+    out_1.world_position = world_1.xyz;
+    let _e54 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0f));
+    out_1.world_normal = _e54;
+    let _e60 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0f));
+    out_1.world_tangent = vec4<f32>(_e60, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    let _e64 = out_1;
+    return _e64;
+}
+
+@fragment 
+fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
+    var curvature: f32;
+    var n: vec3<f32>;
+    var falloff: vec3<f32>;
+    var specular: f32;
+    var kd: vec3<f32>;
+
+    let _e3 = weft_transform_uv(in_2.uv0_, vec4<f32>(1f, 1f, 0f, 0f));
+    let _e12 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e14 = weft_safe_normalize(in_2.world_normal, _e12);
+    let _e15 = fwidth(_e14);
+    let dn = length(_e15);
+    let _e18 = fwidth(in_2.world_position);
+    let dp = length(_e18);
+    let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
+    let _e27 = textureSample(curvature_map, material_sampler, _e3);
+    let mapped = _e27.x;
+    curvature = saturate((0.6f * estimated));
+    n = _e14;
+    let _e34 = weft_main_light_direction();
+    let _e36 = n;
+    let _e37 = weft_safe_normalize((_e34 + _e12), _e36);
+    let _e38 = n;
+    let _e40 = weft_clamp_cos(dot(_e38, _e12));
+    let _e41 = n;
+    let n_dot_l_2 = saturate(dot(_e41, _e34));
+    let v_dot_h_2 = saturate(dot(_e12, _e37));
+    let _e46 = n;
+    let u = clamp(((dot(_e46, _e34) * 0.5f) + 0.5f), 0f, 1f);
+    {
+        {
+            let _e56 = curvature;
+            let _e58 = table_skin_lut(vec2<f32>(u, _e56));
+            falloff = _e58.xyz;
+        }
+    }
+    let _e60 = falloff;
+    falloff = max(_e60, vec3(0f));
+    let _e64 = weft_env_brdf_lut(_e40, 0.5f);
+    let _e65 = weft_env_brdf_from_lut(vec3(0.028f), _e64);
+    {
+        let _e68 = n;
+        let _e70 = skin_dual_ggx(_e68, _e37, _e40, n_dot_l_2, v_dot_h_2, 0.5f, 0.15f, 0.028f);
+        specular = ((_e70 * n_dot_l_2) * 1f);
+        kd = max((vec3(1f) - _e65), vec3(0f));
+    }
+    let _e77 = weft_main_light_radiance();
+    let _e78 = kd;
+    let _e79 = weft_diffuse_lambert(vec3<f32>(0.6920711f, 0.34239164f, 0.233022f));
+    let _e81 = falloff;
+    let _e83 = specular;
+    let direct = ((((_e78 * _e79) * _e81) + vec3(_e83)) * _e77);
+    let _e87 = n;
+    let _e88 = weft_sh_irradiance(_e87);
+    let _e89 = kd;
+    let indirect_diffuse = ((_e88 * _e89) * vec3<f32>(0.6920711f, 0.34239164f, 0.233022f));
+    let _e93 = n;
+    let _e95 = weft_prefiltered_radiance(reflect(-(_e12), _e93), 0.5f);
+    let indirect_specular = ((_e95 * _e65) * 1f);
+    let color = ((direct + indirect_diffuse) + indirect_specular);
+    let radiance = clamp(color, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, 1f);
+}
