@@ -178,7 +178,15 @@ pub fn inspect(m: &MaterialMetadata) -> String {
         })
         .collect();
     out.push_str(&table(
-        &["pass", "entry points", "blend", "cull", "depth", "stencil", "queue"],
+        &[
+            "pass",
+            "entry points",
+            "blend",
+            "cull",
+            "depth",
+            "stencil",
+            "queue",
+        ],
         &rows,
     ));
     let canonical = m.variants.iter().filter(|v| v.alias_of.is_none()).count();

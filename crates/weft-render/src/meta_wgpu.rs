@@ -10,9 +10,8 @@ use std::num::NonZeroU64;
 use weft_meta::{
     AddressMode, Binding, BlendComponent, BlendFactor, BlendOperation, BlendState,
     BufferBindingType, ColorChannel, CullMode, DepthTest, FilterMode, FrontFace, Pass,
-    PrimitiveTopology, SamplerBinding, SamplerBindingType, Stage, StencilFaceState, StencilOperation,
-    TextureSampleType,
-    TextureViewDimension,
+    PrimitiveTopology, SamplerBinding, SamplerBindingType, Stage, StencilFaceState,
+    StencilOperation, TextureSampleType, TextureViewDimension,
 };
 
 /// The depth-stencil format's name in the metadata (`depth_stencil.format`).

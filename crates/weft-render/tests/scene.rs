@@ -9,11 +9,10 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 use weft_render::weft_meta::scene::{SceneInstance, SceneMetadata, SceneTransform, TierChoice};
 use weft_render::weft_meta::{
-    Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode, DepthStencilState,
-    DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState, PrimitiveTopology,
-    RenderState, Stage, StencilFaceState, StencilOperation, TextureBinding, TextureDefault,
-    TextureSampleType, TextureViewDimension,
-    UniformLayout, UniformMember,
+    Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode,
+    DepthStencilState, DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState,
+    PrimitiveTopology, RenderState, Stage, StencilFaceState, StencilOperation, TextureBinding,
+    TextureDefault, TextureSampleType, TextureViewDimension, UniformLayout, UniformMember,
 };
 use weft_render::*;
 

@@ -522,7 +522,8 @@ impl Engine {
                 if instances == 0 || p.index_count == 0 {
                     continue;
                 }
-                let (c, ds) = attachments(wgpu::LoadOp::Load, (wgpu::LoadOp::Load, wgpu::LoadOp::Load));
+                let (c, ds) =
+                    attachments(wgpu::LoadOp::Load, (wgpu::LoadOp::Load, wgpu::LoadOp::Load));
                 let mut rp = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                     label: Some(&pp.pass.name),
                     color_attachments: &c,

@@ -180,7 +180,8 @@ fn parse_stencil(v: &Value, cx: &mut Cx) -> Option<StencilRenderState> {
         }
         None => default,
     };
-    let op = |key: &str, cx: &mut Cx| pick(&t, key, STENCIL_OPS, cx).unwrap_or(StencilOperation::Keep);
+    let op =
+        |key: &str, cx: &mut Cx| pick(&t, key, STENCIL_OPS, cx).unwrap_or(StencilOperation::Keep);
     Some(StencilRenderState {
         reference: byte("reference", 0, cx),
         compare: pick(&t, "compare", COMPARE, cx).unwrap_or(DepthTest::Always),
