@@ -69,6 +69,8 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ),
     ("source_outside_root", &["source-outside-root"]),
     ("stage_mismatch", &["stage-mismatch"]),
+    ("stencil_bad_op", &["unknown-value"]),
+    ("stencil_out_of_range", &["out-of-range", "unknown-key"]),
     (
         "table_errors",
         &["unknown-value", "out-of-range", "missing-key", "duplicate"],
@@ -293,6 +295,10 @@ fn schema() -> serde_json::Value {
     schema::load("../schemas/material.schema.json")
 }
 
+fn defs_stencil(s: &serde_json::Value) -> serde_json::Value {
+    s["definitions"]["stencil"].clone()
+}
+
 /// For each table, the schema's property names are the parser's key list.
 #[test]
 fn schema_matches_parser_keys() {
@@ -350,6 +356,10 @@ fn schema_matches_parser_keys() {
     assert_eq!(
         property_names(&s, &items(&prop(top, "pass")), "[[pass]]"),
         sorted(PASS_KEYS)
+    );
+    assert_eq!(
+        property_names(&s, &defs_stencil(&s), "[[pass]] stencil"),
+        sorted(STENCIL_KEYS)
     );
     assert_eq!(
         property_names(&s, &prop(top, "limits"), "[limits]"),

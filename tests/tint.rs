@@ -267,12 +267,23 @@ fn add_shader(job: &mut Job, s: &ShaderRef, out: &BuildOutput) {
                 "frontFace": webgpu(&pass.primitive.front_face),
                 "cullMode": webgpu(&pass.primitive.cull_mode),
             });
-            let depth = pass.depth.as_ref().map(|d| {
+            let d = &pass.depth_stencil;
+            let face = |f: &weft_meta::StencilFaceState| {
                 json!({
-                    "format": d.format,
-                    "depthWriteEnabled": d.write_enabled,
-                    "depthCompare": webgpu(&d.compare),
+                    "compare": webgpu(&f.compare),
+                    "failOp": webgpu(&f.fail_op),
+                    "depthFailOp": webgpu(&f.depth_fail_op),
+                    "passOp": webgpu(&f.pass_op),
                 })
+            };
+            let depth = json!({
+                "format": webgpu(&d.format),
+                "depthWriteEnabled": d.depth_write_enabled,
+                "depthCompare": webgpu(&d.depth_compare),
+                "stencilFront": face(&d.stencil_front),
+                "stencilBack": face(&d.stencil_back),
+                "stencilReadMask": d.stencil_read_mask,
+                "stencilWriteMask": d.stencil_write_mask,
             });
             for (label, constants) in &constant_sets {
                 job.pipelines.push(json!({
@@ -734,7 +745,7 @@ fn the_tint_harness_reports_broken_modules_and_pipelines() {
             "vertex": { "entryPoint": "vs", "buffers": buffers, "constants": {} },
             "fragment": { "entryPoint": "fs", "targets": [{ "format": "rgba16float" }], "constants": {} },
             "primitive": { "topology": "triangle-list", "cullMode": "back" },
-            "depthStencil": { "format": "depth32float", "depthWriteEnabled": true, "depthCompare": "less-equal" },
+            "depthStencil": { "format": "depth24plus-stencil8", "depthWriteEnabled": true, "depthCompare": "less-equal" },
         })
     };
     let job = Job {

@@ -163,12 +163,30 @@ pub fn inspect(m: &MaterialMetadata) -> String {
                 format!("{:?}", rs.blend).to_lowercase(),
                 format!("{:?}", rs.cull).to_lowercase(),
                 format!("write={} test={:?}", rs.depth_write, rs.depth_test).to_lowercase(),
+                rs.stencil.map_or_else(
+                    || "-".to_string(),
+                    |s| {
+                        format!(
+                            "ref={} {:?} read={:#04x} write={:#04x} pass={:?}",
+                            s.reference, s.compare, s.read_mask, s.write_mask, s.pass_op
+                        )
+                        .to_lowercase()
+                    },
+                ),
                 rs.queue.to_string(),
             ]
         })
         .collect();
     out.push_str(&table(
-        &["pass", "entry points", "blend", "cull", "depth", "queue"],
+        &[
+            "pass",
+            "entry points",
+            "blend",
+            "cull",
+            "depth",
+            "stencil",
+            "queue",
+        ],
         &rows,
     ));
     let canonical = m.variants.iter().filter(|v| v.alias_of.is_none()).count();

@@ -221,6 +221,7 @@ pub fn passes(m: &Material) -> Vec<Pass> {
                 depth_write: p.depth_write,
                 depth_test: p.depth_test,
                 queue: p.queue,
+                stencil: p.stencil,
             },
             instances: match &p.instances {
                 Instances::Fixed(n) => InstanceCount::Fixed(*n),
@@ -249,20 +250,38 @@ pub fn passes(m: &Material) -> Vec<Pass> {
                     ColorChannel::Alpha,
                 ],
             }],
-            depth: (p.depth_write || p.depth_test != DepthTest::Always).then(|| DepthState {
-                format: DEPTH_FORMAT.into(),
-                write_enabled: p.depth_write,
-                compare: p.depth_test,
-                clear_value: 1.0,
-            }),
+            depth_stencil: depth_stencil_state(p),
         })
         .collect()
 }
 
+/// The attachment state of a pass: its depth test and write, and its
+/// `stencil` (the same for both faces), or a stencil that always passes and
+/// writes nothing.
+fn depth_stencil_state(p: &weft_front::model::Pass) -> DepthStencilState {
+    let face = |s: Option<&StencilRenderState>| StencilFaceState {
+        compare: s.map_or(DepthTest::Always, |s| s.compare),
+        fail_op: s.map_or(StencilOperation::Keep, |s| s.fail_op),
+        depth_fail_op: s.map_or(StencilOperation::Keep, |s| s.depth_fail_op),
+        pass_op: s.map_or(StencilOperation::Keep, |s| s.pass_op),
+    };
+    let s = p.stencil.as_ref();
+    DepthStencilState {
+        format: DEPTH_STENCIL_FORMAT.into(),
+        depth_write_enabled: p.depth_write,
+        depth_compare: p.depth_test,
+        depth_clear_value: 1.0,
+        stencil_front: face(s),
+        stencil_back: face(s),
+        stencil_read_mask: s.map_or(0xff, |s| s.read_mask),
+        stencil_write_mask: s.map_or(0, |s| s.write_mask),
+        stencil_reference: s.map_or(0, |s| s.reference),
+        stencil_clear_value: 0,
+    }
+}
+
 /// The colour target format of the goldens and `weft-render`.
 pub const COLOR_TARGET_FORMAT: &str = "rgba16float";
-/// The depth format `weft-render` uses.
-pub const DEPTH_FORMAT: &str = "depth32float";
 
 /// Each blend mode's colour and alpha equations. Alpha accumulates coverage
 /// the same way in `alpha` and `premultiplied` ("over"), and `additive` and

@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use weft_meta::{
     BlendMode, Condition, CullMode, DepthTest, GradientStop, Keyframe, KeywordKind, KeywordMode,
-    ParamKind, TextureDefault,
+    ParamKind, StencilRenderState, TextureDefault,
 };
 
 /// Where something was declared: file and byte range.
@@ -239,6 +239,8 @@ pub struct Pass {
     pub depth_write: bool,
     pub depth_test: DepthTest,
     pub queue: i64,
+    /// `stencil`: absent, the pass neither tests nor writes the stencil.
+    pub stencil: Option<StencilRenderState>,
     pub instances: Instances,
     /// `when`: static keyword / tier conditions, all of which must hold for
     /// the pass to exist in a variant (empty: every variant).

@@ -98,6 +98,7 @@ pub const PASS_KEYS: &[&str] = &[
     "queue",
     "instances",
     "when",
+    "stencil",
     "include",
 ];
 /// Top-level tables of a shared pass file (`lib/<name>.pass.toml`).
@@ -115,7 +116,18 @@ pub const PASS_FILE_PASS_KEYS: &[&str] = &[
     "queue",
     "instances",
     "when",
+    "stencil",
     "source",
+];
+/// Keys of a pass's `stencil` table (docs/material-format.md, "Stencil").
+pub const STENCIL_KEYS: &[&str] = &[
+    "reference",
+    "compare",
+    "pass_op",
+    "fail_op",
+    "depth_fail_op",
+    "read_mask",
+    "write_mask",
 ];
 /// Keys of `[limits]`: WebGPU's limits in snake_case (`weft_meta::limits::LIMITS`).
 pub const LIMITS_KEYS: &[&str] = &[

@@ -20,7 +20,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Version of the metadata layout written into every file.
-pub const SCHEMA_VERSION: u32 = 3;
+pub const SCHEMA_VERSION: u32 = 4;
 
 /// Version of the engine interface (group 0 frame, group 2 object, vertex inputs).
 pub const ENGINE_INTERFACE_VERSION: u32 = 2;
@@ -29,7 +29,7 @@ pub const ENGINE_INTERFACE_VERSION: u32 = 2;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialMetadata {
-    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 3). It changes
+    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 4). It changes
     /// when a field is removed or changes meaning: a reader must not guess at a version it does
     /// not know.
     pub schema_version: u32,
@@ -685,10 +685,58 @@ pub enum DepthTest {
     Greater,
     /// Passes when incoming ≥ stored.
     GreaterEqual,
+    /// Passes when incoming ≠ stored.
+    NotEqual,
+}
+
+/// What a stencil test does to the stored value (WebGPU `GPUStencilOperation`); only the bits
+/// of the write mask change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum StencilOperation {
+    /// Keep the stored value.
+    Keep,
+    /// Set it to 0.
+    Zero,
+    /// Set it to the reference (`stencil_reference`).
+    Replace,
+    /// Invert its bits.
+    Invert,
+    /// Add 1, staying at 255.
+    IncrementClamp,
+    /// Subtract 1, staying at 0.
+    DecrementClamp,
+    /// Add 1, 255 wrapping to 0.
+    IncrementWrap,
+    /// Subtract 1, 0 wrapping to 255.
+    DecrementWrap,
+}
+
+/// A pass's stencil test and writes as the material author wrote them (`[[pass]] stencil`),
+/// the same for front and back faces. The test passes when
+/// `(reference & read_mask) compare (stored & read_mask)`; the operation chosen by the
+/// outcome changes the bits of `write_mask`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StencilRenderState {
+    /// The reference value, 0..=255.
+    pub reference: u32,
+    /// Comparison of the masked reference with the masked stored value.
+    pub compare: DepthTest,
+    /// Operation when the stencil and depth tests pass.
+    pub pass_op: StencilOperation,
+    /// Operation when the stencil test fails.
+    pub fail_op: StencilOperation,
+    /// Operation when the stencil test passes and the depth test fails.
+    pub depth_fail_op: StencilOperation,
+    /// Bits read by the test, 0..=255.
+    pub read_mask: u32,
+    /// Bits the operations may change, 0..=255.
+    pub write_mask: u32,
 }
 
 /// A pass's render state as the material author wrote it (`[[pass]]`); `primitive`,
-/// `color_targets` and `depth` are the pipeline state it implies.
+/// `color_targets` and `depth_stencil` are the pipeline state it implies.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RenderState {
@@ -696,12 +744,17 @@ pub struct RenderState {
     pub blend: BlendMode,
     /// Faces culled.
     pub cull: CullMode,
-    /// Whether the pass writes depth (as `depth.write_enabled`).
+    /// Whether the pass writes depth (as `depth_stencil.depth_write_enabled`).
     pub depth_write: bool,
-    /// Depth comparison (as `depth.compare`).
+    /// Depth comparison (as `depth_stencil.depth_compare`).
     pub depth_test: DepthTest,
-    /// Draw order (Unity-style: 2000 geometry, 3000 transparent).
+    /// Draw order (Unity-style: 2000 geometry, 3000 transparent). A scene draws every pass of
+    /// every instance by queue, then instance order.
     pub queue: i64,
+    /// The stencil test and writes (as `depth_stencil.stencil_*`); absent: the pass neither
+    /// tests nor writes the stencil.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stencil: Option<StencilRenderState>,
 }
 
 /// How many instances a pass draws.
@@ -737,9 +790,9 @@ pub struct Pass {
     pub primitive: PrimitiveState,
     /// Colour attachments in fragment-output location order.
     pub color_targets: Vec<ColorTarget>,
-    /// None when the pass neither tests nor writes depth (no depth
-    /// attachment needed).
-    pub depth: Option<DepthState>,
+    /// The depth-stencil attachment's state, present for every pass: every pass of every
+    /// material draws into one `depth24plus_stencil8` attachment.
+    pub depth_stencil: DepthStencilState,
 }
 
 /// A vertex attribute the mesh provides.

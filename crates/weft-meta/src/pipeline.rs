@@ -8,7 +8,7 @@
 //! `clamp_to_edge`, `rgba16float`), which map one to one onto Vulkan, D3D12,
 //! Metal and GL (docs/engine-interface.md has the table).
 
-use crate::{CullMode, DepthTest, TextureDefault, UniformLayout};
+use crate::{CullMode, DepthTest, StencilOperation, TextureDefault, UniformLayout};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -159,19 +159,55 @@ pub struct ColorTarget {
     pub write_mask: Vec<ColorChannel>,
 }
 
-/// The depth attachment of a pass that tests or writes depth.
+/// The depth-stencil format of every pass of every material (WebGPU `depth24plus-stencil8`,
+/// core in every API): a scene draws all its materials' passes into one attachment, so they
+/// must agree. docs/engine-interface.md maps it per API.
+pub const DEPTH_STENCIL_FORMAT: &str = "depth24plus_stencil8";
+
+/// The stencil test and operations of one face (WebGPU `GPUStencilFaceState`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StencilFaceState {
+    /// Passes when `(stencil_reference & stencil_read_mask) compare (stored & stencil_read_mask)`.
+    pub compare: DepthTest,
+    /// Operation when the stencil test fails.
+    pub fail_op: StencilOperation,
+    /// Operation when the stencil test passes and the depth test fails.
+    pub depth_fail_op: StencilOperation,
+    /// Operation when both tests pass.
+    pub pass_op: StencilOperation,
+}
+
+/// The depth-stencil attachment of a pass (WebGPU `GPUDepthStencilState`, plus the clear values
+/// and the stencil reference the engine sets while drawing the pass). A pass that neither
+/// tests nor writes depth has `depth_compare: always` and no depth write; one without stencil
+/// has `always`/`keep` faces and write mask 0.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-pub struct DepthState {
-    /// The format `weft-render` uses; any depth format works.
+pub struct DepthStencilState {
+    /// `depth24plus_stencil8` ([`DEPTH_STENCIL_FORMAT`]) for every pass.
     pub format: String,
     /// Write the fragment's depth into the attachment.
-    pub write_enabled: bool,
+    pub depth_write_enabled: bool,
     /// Depth test: a fragment passes when its depth compares so with the stored depth.
-    pub compare: DepthTest,
+    pub depth_compare: DepthTest,
     /// Depth values: 0 near, 1 far (WGSL/SPIR-V/HLSL/MSL clip-space z in
     /// [0, w]); see `languages.glsl.depth_range` for GLSL.
-    pub clear_value: f32,
+    pub depth_clear_value: f32,
+    /// Stencil state of front faces (as `primitive.front_face` judges them).
+    pub stencil_front: StencilFaceState,
+    /// Stencil state of back faces (weft sets the same as the front).
+    pub stencil_back: StencilFaceState,
+    /// Bits of the stored value and the reference the test reads.
+    pub stencil_read_mask: u32,
+    /// Bits the stencil operations may change (0: the pass writes no stencil).
+    pub stencil_write_mask: u32,
+    /// The reference to set before drawing the pass (WebGPU `setStencilReference`, Vulkan
+    /// `vkCmdSetStencilReference`, D3D12 `OMSetStencilRef`, Metal
+    /// `setStencilReferenceValue`, GL `glStencilFunc`'s `ref`).
+    pub stencil_reference: u32,
+    /// The value the attachment is cleared to at the start of the frame.
+    pub stencil_clear_value: u32,
 }
 
 // ---------------------------------------------------------------- bindings

@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// Version of the scene metadata layout.
-pub const SCENE_SCHEMA_VERSION: u32 = 2;
+pub const SCENE_SCHEMA_VERSION: u32 = 3;
 
 /// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
 /// `<scene>.scene.json`.
@@ -21,10 +21,10 @@ pub const SCENE_SCHEMA_VERSION: u32 = 2;
 #[serde(deny_unknown_fields)]
 pub struct SceneMetadata {
     /// Version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_VERSION`,
-    /// currently 1).
+    /// currently 3).
     pub schema_version: u32,
     /// Version of the engine interface the shaders were composed with
-    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 1).
+    /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 2).
     pub engine_interface_version: u32,
     /// Scene name: the manifest's file name before `.scene.toml`.
     pub name: String,

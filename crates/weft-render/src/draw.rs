@@ -24,6 +24,8 @@ pub(crate) struct DrawCall<'a> {
     pub bind_groups: &'a [Option<wgpu::BindGroup>],
     pub mesh: &'a GpuMesh,
     pub instances: u32,
+    /// The pass's `depth_stencil.stencil_reference`, set before its draw.
+    pub stencil_reference: u32,
 }
 
 /// Records `draws` in order, setting bind groups and buffers only when
@@ -53,6 +55,7 @@ pub(crate) fn record_draws(rp: &mut wgpu::RenderPass, draws: &[DrawCall]) {
             bound_groups = Some(groups);
         }
         rp.set_pipeline(d.pipeline);
+        rp.set_stencil_reference(d.stencil_reference);
         rp.draw_indexed(0..d.mesh.index_count, 0, 0..d.instances);
     }
 }
@@ -139,7 +142,8 @@ impl RenderTargets {
         }
     }
 
-    /// A render pass over both targets: colour `load`, depth cleared to 1.
+    /// A render pass over both targets: colour `load`, depth cleared to 1,
+    /// stencil to 0 (the metadata's clear values).
     pub fn pass<'e>(
         &self,
         enc: &'e mut wgpu::CommandEncoder,
@@ -164,7 +168,10 @@ impl RenderTargets {
                     load: wgpu::LoadOp::Clear(1.0),
                     store: wgpu::StoreOp::Discard,
                 }),
-                stencil_ops: None,
+                stencil_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0),
+                    store: wgpu::StoreOp::Discard,
+                }),
             }),
             timestamp_writes,
             occlusion_query_set: None,

@@ -10,12 +10,12 @@ use std::num::NonZeroU64;
 use weft_meta::{
     AddressMode, Binding, BlendComponent, BlendFactor, BlendOperation, BlendState,
     BufferBindingType, ColorChannel, CullMode, DepthTest, FilterMode, FrontFace, Pass,
-    PrimitiveTopology, SamplerBinding, SamplerBindingType, Stage, TextureSampleType,
-    TextureViewDimension,
+    PrimitiveTopology, SamplerBinding, SamplerBindingType, Stage, StencilFaceState,
+    StencilOperation, TextureSampleType, TextureViewDimension,
 };
 
-/// The depth format's name in the metadata (`depth.format`).
-pub(crate) const DEPTH_FORMAT_NAME: &str = "depth32float";
+/// The depth-stencil format's name in the metadata (`depth_stencil.format`).
+pub(crate) const DEPTH_FORMAT_NAME: &str = weft_meta::DEPTH_STENCIL_FORMAT;
 
 pub(crate) fn compare(d: DepthTest) -> wgpu::CompareFunction {
     match d {
@@ -26,6 +26,29 @@ pub(crate) fn compare(d: DepthTest) -> wgpu::CompareFunction {
         DepthTest::Equal => wgpu::CompareFunction::Equal,
         DepthTest::Greater => wgpu::CompareFunction::Greater,
         DepthTest::GreaterEqual => wgpu::CompareFunction::GreaterEqual,
+        DepthTest::NotEqual => wgpu::CompareFunction::NotEqual,
+    }
+}
+
+fn stencil_operation(o: StencilOperation) -> wgpu::StencilOperation {
+    match o {
+        StencilOperation::Keep => wgpu::StencilOperation::Keep,
+        StencilOperation::Zero => wgpu::StencilOperation::Zero,
+        StencilOperation::Replace => wgpu::StencilOperation::Replace,
+        StencilOperation::Invert => wgpu::StencilOperation::Invert,
+        StencilOperation::IncrementClamp => wgpu::StencilOperation::IncrementClamp,
+        StencilOperation::DecrementClamp => wgpu::StencilOperation::DecrementClamp,
+        StencilOperation::IncrementWrap => wgpu::StencilOperation::IncrementWrap,
+        StencilOperation::DecrementWrap => wgpu::StencilOperation::DecrementWrap,
+    }
+}
+
+fn stencil_face(f: &StencilFaceState) -> wgpu::StencilFaceState {
+    wgpu::StencilFaceState {
+        compare: compare(f.compare),
+        fail_op: stencil_operation(f.fail_op),
+        depth_fail_op: stencil_operation(f.depth_fail_op),
+        pass_op: stencil_operation(f.pass_op),
     }
 }
 
@@ -49,28 +72,27 @@ pub(crate) fn primitive_state(pass: &Pass) -> wgpu::PrimitiveState {
     }
 }
 
-/// `pass.depth`, for the renderer's depth attachment. A pass that needs no
-/// depth (`None`) still draws in a render pass that has one, so its
-/// pipeline gets a state that always passes and never writes.
+/// `pass.depth_stencil`, for the renderer's depth-stencil attachment (the
+/// stencil reference is set per draw, `DrawCall::stencil_reference`).
 pub(crate) fn depth_stencil_state(pass: &Pass) -> Result<wgpu::DepthStencilState> {
-    let (write, compare_fn) = match &pass.depth {
-        Some(d) => {
-            if d.format != DEPTH_FORMAT_NAME {
-                return Err(Error::Metadata(format!(
-                    "pass `{}` asks for a `{}` depth attachment; weft-render draws into \
-                     `{DEPTH_FORMAT_NAME}`",
-                    pass.name, d.format
-                )));
-            }
-            (d.write_enabled, compare(d.compare))
-        }
-        None => (false, wgpu::CompareFunction::Always),
-    };
+    let d = &pass.depth_stencil;
+    if d.format != DEPTH_FORMAT_NAME {
+        return Err(Error::Metadata(format!(
+            "pass `{}` asks for a `{}` depth attachment; weft-render draws into \
+             `{DEPTH_FORMAT_NAME}`",
+            pass.name, d.format
+        )));
+    }
     Ok(wgpu::DepthStencilState {
         format: DEPTH_FORMAT,
-        depth_write_enabled: Some(write),
-        depth_compare: Some(compare_fn),
-        stencil: Default::default(),
+        depth_write_enabled: Some(d.depth_write_enabled),
+        depth_compare: Some(compare(d.depth_compare)),
+        stencil: wgpu::StencilState {
+            front: stencil_face(&d.stencil_front),
+            back: stencil_face(&d.stencil_back),
+            read_mask: d.stencil_read_mask,
+            write_mask: d.stencil_write_mask,
+        },
         bias: Default::default(),
     })
 }

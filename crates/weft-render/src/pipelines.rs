@@ -73,7 +73,7 @@ impl Renderer {
                     &p.fragment_entry,
                     &p.primitive,
                     &p.color_targets,
-                    &p.depth,
+                    &p.depth_stencil,
                 )
             })
             .collect();

@@ -115,7 +115,8 @@ impl Default for RenderOptions {
     }
 }
 
-pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+/// The depth-stencil attachment of every pass (`weft_meta::DEPTH_STENCIL_FORMAT`).
+pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24PlusStencil8;
 
 /// A material's variant ready to draw: pipelines, bind groups, uniform buffer.
 pub struct PreparedMaterial {
@@ -419,6 +420,7 @@ impl Renderer {
                 bind_groups: &prepared.bound.bind_groups,
                 mesh: &mesh,
                 instances,
+                stencil_reference: pp.pass.depth_stencil.stencil_reference,
             })
             .collect();
         let view = FrameView {

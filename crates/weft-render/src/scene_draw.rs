@@ -488,6 +488,10 @@ impl Renderer {
                     bind_groups: &i.bound.bind_groups,
                     mesh: &i.mesh,
                     instances: i.instances[d.pass],
+                    stencil_reference: i.bound.pipelines.passes[d.pass]
+                        .pass
+                        .depth_stencil
+                        .stencil_reference,
                 }
             })
             .collect();

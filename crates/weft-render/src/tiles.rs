@@ -156,6 +156,7 @@ impl Renderer {
                 for (pp, &instances) in pipelines.passes.iter().zip(&prepared.instances) {
                     if instances > 0 {
                         rp.set_pipeline(&pp.pipeline);
+                        rp.set_stencil_reference(pp.pass.depth_stencil.stencil_reference);
                         rp.draw_indexed(range.clone(), *base, 0..instances);
                     }
                 }

@@ -170,10 +170,10 @@ fn samplers_are_made_from_their_binding_description() {
 #[test]
 fn pipeline_state_weft_render_cannot_honour_is_an_error() {
     let e = err(render(&edited_standard(|m| {
-        m.passes[0].depth.as_mut().unwrap().format = "depth24plus".into();
+        m.passes[0].depth_stencil.format = "depth32float".into();
     })));
     assert!(
-        e.contains("depth24plus") && e.contains("depth32float"),
+        e.contains("depth32float") && e.contains("depth24plus_stencil8"),
         "{e}"
     );
     let e = err(render(&edited_standard(|m| {
@@ -181,7 +181,11 @@ fn pipeline_state_weft_render_cannot_honour_is_an_error() {
     })));
     assert!(e.contains("rgba8unorm") && e.contains("float"), "{e}");
     // A pass without depth still draws (always passes, never writes).
-    let no_depth = ok(render(&edited_standard(|m| m.passes[0].depth = None)));
+    let no_depth = ok(render(&edited_standard(|m| {
+        let d = &mut m.passes[0].depth_stencil;
+        d.depth_write_enabled = false;
+        d.depth_compare = weft_render::weft_meta::DepthTest::Always;
+    })));
     assert!(
         no_depth
             .pixels

@@ -9,10 +9,10 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 use weft_render::weft_meta::scene::{SceneInstance, SceneMetadata, SceneTransform, TierChoice};
 use weft_render::weft_meta::{
-    Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode, DepthState,
-    DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState, PrimitiveTopology,
-    RenderState, Stage, TextureBinding, TextureDefault, TextureSampleType, TextureViewDimension,
-    UniformLayout, UniformMember,
+    Binding, BindingKind, BlendMode, ColorChannel, ColorOutput, ColorTarget, CullMode,
+    DepthStencilState, DepthTest, FrontFace, HlslBinding, InstanceCount, Pass, PrimitiveState,
+    PrimitiveTopology, RenderState, Stage, StencilFaceState, StencilOperation, TextureBinding,
+    TextureDefault, TextureSampleType, TextureViewDimension, UniformLayout, UniformMember,
 };
 use weft_render::*;
 
@@ -156,6 +156,12 @@ fn bad_uniform_values_are_errors_naming_the_member() {
 }
 
 fn pass(name: &str, queue: i64, instances: InstanceCount) -> Pass {
+    let no_stencil = StencilFaceState {
+        compare: DepthTest::Always,
+        fail_op: StencilOperation::Keep,
+        depth_fail_op: StencilOperation::Keep,
+        pass_op: StencilOperation::Keep,
+    };
     Pass {
         name: name.into(),
         vertex_entry: "vs_main".into(),
@@ -166,6 +172,7 @@ fn pass(name: &str, queue: i64, instances: InstanceCount) -> Pass {
             depth_write: true,
             depth_test: DepthTest::LessEqual,
             queue,
+            stencil: None,
         },
         instances,
         when: Vec::new(),
@@ -188,12 +195,18 @@ fn pass(name: &str, queue: i64, instances: InstanceCount) -> Pass {
                 ColorChannel::Alpha,
             ],
         }],
-        depth: Some(DepthState {
-            format: "depth32float".into(),
-            write_enabled: true,
-            compare: DepthTest::LessEqual,
-            clear_value: 1.0,
-        }),
+        depth_stencil: DepthStencilState {
+            format: weft_render::weft_meta::DEPTH_STENCIL_FORMAT.into(),
+            depth_write_enabled: true,
+            depth_compare: DepthTest::LessEqual,
+            depth_clear_value: 1.0,
+            stencil_front: no_stencil,
+            stencil_back: no_stencil,
+            stencil_read_mask: 0xff,
+            stencil_write_mask: 0,
+            stencil_reference: 0,
+            stencil_clear_value: 0,
+        },
     }
 }
 

@@ -435,11 +435,12 @@ impl Engine {
             if *color_format.get_or_insert(f) != f {
                 return Err("passes draw into different colour formats".into());
             }
-            if let Some(depth) = &pass.depth {
-                let f = formats::texture_format(&depth.format)?;
-                if *depth_format.get_or_insert((f, depth.clear_value)) != (f, depth.clear_value) {
-                    return Err("passes use different depth formats".into());
-                }
+            // Every pass draws into the one depth-stencil attachment.
+            let ds = &pass.depth_stencil;
+            let f = formats::texture_format(&ds.format)?;
+            let want = (f, ds.depth_clear_value, ds.stencil_clear_value);
+            if *depth_format.get_or_insert(want) != want {
+                return Err("passes use different depth-stencil formats or clear values".into());
             }
             if d.prepared.pipelines.orientation != orientation {
                 return Err("draws of different orientations in one picture".into());
@@ -469,10 +470,10 @@ impl Engine {
             wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
         );
         let color_view = color.create_view(&Default::default());
-        let depth = depth_format.map(|(f, clear)| {
-            let t = target(f, wgpu::TextureUsages::RENDER_ATTACHMENT);
-            (t.create_view(&Default::default()), clear)
-        });
+        let (depth_format, depth_clear, stencil_clear) = depth_format.expect("a draw");
+        let depth = target(depth_format, wgpu::TextureUsages::RENDER_ATTACHMENT)
+            .create_view(&Default::default());
+        let has_stencil = depth_format.has_stencil_aspect();
         let texel = formats::texel_size(color_format)?;
         let row = (width * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
             * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -484,7 +485,7 @@ impl Engine {
         });
         let commands = self.checked("recording the draws", || {
             let mut enc = device.create_command_encoder(&Default::default());
-            let attachments = |color_load, depth_load: Option<wgpu::LoadOp<f32>>| {
+            let attachments = |color_load, (depth_load, stencil_load)| {
                 (
                     [Some(wgpu::RenderPassColorAttachment {
                         view: &color_view,
@@ -495,21 +496,20 @@ impl Engine {
                             store: wgpu::StoreOp::Store,
                         },
                     })],
-                    depth_load.and_then(|load| {
-                        depth
-                            .as_ref()
-                            .map(|(view, _)| wgpu::RenderPassDepthStencilAttachment {
-                                view,
-                                depth_ops: Some(wgpu::Operations {
-                                    load,
-                                    store: wgpu::StoreOp::Store,
-                                }),
-                                stencil_ops: None,
-                            })
+                    Some(wgpu::RenderPassDepthStencilAttachment {
+                        view: &depth,
+                        depth_ops: Some(wgpu::Operations {
+                            load: depth_load,
+                            store: wgpu::StoreOp::Store,
+                        }),
+                        stencil_ops: has_stencil.then_some(wgpu::Operations {
+                            load: stencil_load,
+                            store: wgpu::StoreOp::Store,
+                        }),
                     }),
                 )
             };
-            // Clear colour and depth.
+            // Clear colour, depth and stencil.
             {
                 let (c, d) = attachments(
                     wgpu::LoadOp::Clear(wgpu::Color {
@@ -518,7 +518,10 @@ impl Engine {
                         b: clear[2],
                         a: clear[3],
                     }),
-                    depth.as_ref().map(|(_, v)| wgpu::LoadOp::Clear(*v)),
+                    (
+                        wgpu::LoadOp::Clear(depth_clear),
+                        wgpu::LoadOp::Clear(stencil_clear),
+                    ),
                 );
                 enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                     label: Some("clear"),
@@ -536,10 +539,8 @@ impl Engine {
                 if instances == 0 || p.index_count == 0 {
                     continue;
                 }
-                let (c, ds) = attachments(
-                    wgpu::LoadOp::Load,
-                    pp.pass.depth.as_ref().map(|_| wgpu::LoadOp::Load),
-                );
+                let (c, ds) =
+                    attachments(wgpu::LoadOp::Load, (wgpu::LoadOp::Load, wgpu::LoadOp::Load));
                 let mut rp = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                     label: Some(&pp.pass.name),
                     color_attachments: &c,
@@ -549,6 +550,7 @@ impl Engine {
                     multiview_mask: None,
                 });
                 rp.set_pipeline(&pp.pipeline);
+                rp.set_stencil_reference(pp.pass.depth_stencil.stencil_reference);
                 for (g, bg) in p.bind_groups.iter().enumerate() {
                     rp.set_bind_group(g as u32, bg, &[]);
                 }

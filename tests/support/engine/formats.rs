@@ -2,8 +2,8 @@
 
 use weft_meta::{
     AddressMode, BlendComponent, BlendFactor, BlendOperation, BlendState, ColorChannel, CullMode,
-    DepthTest, FilterMode, FrontFace, SamplerBinding, SamplerBindingType, Stage, TextureSampleType,
-    TextureViewDimension,
+    DepthStencilState, DepthTest, FilterMode, FrontFace, SamplerBinding, SamplerBindingType, Stage,
+    StencilFaceState, StencilOperation, TextureSampleType, TextureViewDimension,
 };
 
 /// A texture format name (`rgba8unorm_srgb`, `rg16float`, `depth32float`, …).
@@ -23,6 +23,7 @@ pub fn texture_format(name: &str) -> Result<wgpu::TextureFormat, String> {
         "rg32float" => F::Rg32Float,
         "rgba32float" => F::Rgba32Float,
         "depth32float" => F::Depth32Float,
+        "depth24plus_stencil8" => F::Depth24PlusStencil8,
         "depth24plus" => F::Depth24Plus,
         "depth16unorm" => F::Depth16Unorm,
         other => return Err(format!("unknown texture format `{other}`")),
@@ -91,7 +92,47 @@ pub fn compare(t: DepthTest) -> wgpu::CompareFunction {
         DepthTest::Equal => wgpu::CompareFunction::Equal,
         DepthTest::Greater => wgpu::CompareFunction::Greater,
         DepthTest::GreaterEqual => wgpu::CompareFunction::GreaterEqual,
+        DepthTest::NotEqual => wgpu::CompareFunction::NotEqual,
     }
+}
+
+fn stencil_op(o: StencilOperation) -> wgpu::StencilOperation {
+    use wgpu::StencilOperation as W;
+    match o {
+        StencilOperation::Keep => W::Keep,
+        StencilOperation::Zero => W::Zero,
+        StencilOperation::Replace => W::Replace,
+        StencilOperation::Invert => W::Invert,
+        StencilOperation::IncrementClamp => W::IncrementClamp,
+        StencilOperation::DecrementClamp => W::DecrementClamp,
+        StencilOperation::IncrementWrap => W::IncrementWrap,
+        StencilOperation::DecrementWrap => W::DecrementWrap,
+    }
+}
+
+fn stencil_face(f: &StencilFaceState) -> wgpu::StencilFaceState {
+    wgpu::StencilFaceState {
+        compare: compare(f.compare),
+        fail_op: stencil_op(f.fail_op),
+        depth_fail_op: stencil_op(f.depth_fail_op),
+        pass_op: stencil_op(f.pass_op),
+    }
+}
+
+/// `passes[].depth_stencil` (the reference is set while drawing).
+pub fn depth_stencil(d: &DepthStencilState) -> Result<wgpu::DepthStencilState, String> {
+    Ok(wgpu::DepthStencilState {
+        format: texture_format(&d.format)?,
+        depth_write_enabled: Some(d.depth_write_enabled),
+        depth_compare: Some(compare(d.depth_compare)),
+        stencil: wgpu::StencilState {
+            front: stencil_face(&d.stencil_front),
+            back: stencil_face(&d.stencil_back),
+            read_mask: d.stencil_read_mask,
+            write_mask: d.stencil_write_mask,
+        },
+        bias: Default::default(),
+    })
 }
 
 fn address(a: AddressMode) -> wgpu::AddressMode {

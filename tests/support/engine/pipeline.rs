@@ -1,6 +1,6 @@
 //! Bind group layouts, pipeline layouts and render pipelines from a
 //! shader's `bindings[]`, `vertex_inputs` and its passes' `primitive`,
-//! `color_targets` and `depth`, for the WGSL file or (through wgpu's
+//! `color_targets` and `depth_stencil`, for the WGSL file or (through wgpu's
 //! passthrough path) the SPIR-V file.
 
 use super::device::Engine;
@@ -367,16 +367,7 @@ pub fn build(engine: &Engine, s: &ShaderRef, language: Language) -> Result<Pipel
                 write_mask: formats::write_mask(&t.write_mask),
             });
         }
-        let depth_stencil = match &pass.depth {
-            Some(d) => Some(wgpu::DepthStencilState {
-                format: formats::texture_format(&d.format)?,
-                depth_write_enabled: Some(d.write_enabled),
-                depth_compare: Some(formats::compare(d.compare)),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            None => None,
-        };
+        let depth_stencil = Some(formats::depth_stencil(&pass.depth_stencil)?);
         let pipeline = engine.checked(
             &format!("pipeline of pass `{}` of {}", pass.name, s.label),
             || {

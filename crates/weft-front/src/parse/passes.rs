@@ -1,12 +1,13 @@
-//! `[[pass]]` tables -> [`Pass`] (entry points, blend, cull, depth, queue,
-//! instance count), and the single default pass of a material without any.
+//! `[[pass]]` tables -> [`Pass`] (entry points, blend, cull, depth, stencil,
+//! queue, instance count), and the single default pass of a material without
+//! any.
 
-use super::{CONDITION_FORMS, bad_condition_with};
+use super::{CONDITION_FORMS, STENCIL_KEYS, bad_condition_with};
 use crate::diag::Span;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value, type_error};
 use toml::de::DeValue;
-use weft_meta::{BlendMode, CullMode, DepthTest};
+use weft_meta::{BlendMode, CullMode, DepthTest, StencilOperation, StencilRenderState};
 
 pub(super) fn default_pass(file: usize, span: Span) -> Pass {
     Pass {
@@ -18,6 +19,7 @@ pub(super) fn default_pass(file: usize, span: Span) -> Pass {
         depth_write: true,
         depth_test: DepthTest::LessEqual,
         queue: 2000,
+        stencil: None,
         instances: Instances::Fixed(1),
         when: Vec::new(),
         when_span: None,
@@ -90,22 +92,11 @@ pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> O
     ) {
         pass.cull = c;
     }
-    use DepthTest as D;
-    if let Some(d) = pick(
-        &t,
-        "depth_test",
-        &[
-            ("always", D::Always),
-            ("never", D::Never),
-            ("less", D::Less),
-            ("less_equal", D::LessEqual),
-            ("equal", D::Equal),
-            ("greater", D::Greater),
-            ("greater_equal", D::GreaterEqual),
-        ],
-        cx,
-    ) {
+    if let Some(d) = pick(&t, "depth_test", COMPARE, cx) {
         pass.depth_test = d;
+    }
+    if let Some(s) = t.get("stencil") {
+        pass.stencil = parse_stencil(s, cx);
     }
     pass.depth_write = t.boolean("depth_write", cx).unwrap_or(pass.depth_write);
     pass.queue = t.integer("queue", cx).unwrap_or(pass.queue);
@@ -143,4 +134,61 @@ pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> O
         }
     }
     Some(pass)
+}
+
+/// Comparison names of `depth_test` and `stencil.compare`.
+const COMPARE: &[(&str, DepthTest)] = &[
+    ("always", DepthTest::Always),
+    ("never", DepthTest::Never),
+    ("less", DepthTest::Less),
+    ("less_equal", DepthTest::LessEqual),
+    ("equal", DepthTest::Equal),
+    ("not_equal", DepthTest::NotEqual),
+    ("greater", DepthTest::Greater),
+    ("greater_equal", DepthTest::GreaterEqual),
+];
+
+/// Operation names of `stencil.pass_op`, `fail_op` and `depth_fail_op`.
+const STENCIL_OPS: &[(&str, StencilOperation)] = &[
+    ("keep", StencilOperation::Keep),
+    ("zero", StencilOperation::Zero),
+    ("replace", StencilOperation::Replace),
+    ("invert", StencilOperation::Invert),
+    ("increment_clamp", StencilOperation::IncrementClamp),
+    ("decrement_clamp", StencilOperation::DecrementClamp),
+    ("increment_wrap", StencilOperation::IncrementWrap),
+    ("decrement_wrap", StencilOperation::DecrementWrap),
+];
+
+/// A pass's `stencil` table. Omitted keys: reference 0, compare `always`,
+/// every operation `keep`, both masks 255 (an 8-bit stencil), so a table
+/// that only sets what it needs reads as written.
+fn parse_stencil(v: &Value, cx: &mut Cx) -> Option<StencilRenderState> {
+    let t = Table::new(v, "the pass's `stencil`", cx)?;
+    t.check_keys(STENCIL_KEYS, cx);
+    let byte = |key: &str, default: u32, cx: &mut Cx| match t.integer(key, cx) {
+        Some(n) if (0..=255).contains(&n) => n as u32,
+        Some(_) => {
+            cx.error_with_note(
+                "out-of-range",
+                format!("`stencil.{key}` must be between 0 and 255"),
+                t.span_of(key),
+                "here",
+                "the stencil buffer holds 8 bits per pixel (depth24plus_stencil8)",
+            );
+            default
+        }
+        None => default,
+    };
+    let op =
+        |key: &str, cx: &mut Cx| pick(&t, key, STENCIL_OPS, cx).unwrap_or(StencilOperation::Keep);
+    Some(StencilRenderState {
+        reference: byte("reference", 0, cx),
+        compare: pick(&t, "compare", COMPARE, cx).unwrap_or(DepthTest::Always),
+        pass_op: op("pass_op", cx),
+        fail_op: op("fail_op", cx),
+        depth_fail_op: op("depth_fail_op", cx),
+        read_mask: byte("read_mask", 255, cx),
+        write_mask: byte("write_mask", 255, cx),
+    })
 }

@@ -9,7 +9,9 @@
 import * as bake from './bake.js';
 
 const HDR_FORMAT = 'rgba16float';
-const DEPTH_FORMAT = 'depth32float';
+// Every pass of every material draws into one attachment of this format
+// (`passes[].depth_stencil.format`, weft_meta::DEPTH_STENCIL_FORMAT).
+const DEPTH_FORMAT = 'depth24plus-stencil8';
 
 // ---------------------------------------------------------------------------
 // Small maths, as crates/weft-render/src/math.rs (column-major, WebGPU clip space)
@@ -511,10 +513,15 @@ export class Renderer {
         fragment: { module, entryPoint: pass.fragment_entry, targets: colorTargets(pass), constants },
         primitive: { topology: gpuName(pass.primitive.topology), frontFace: gpuName(pass.primitive.front_face), cullMode: gpuName(pass.primitive.cull_mode) },
       };
-      // The target always has a depth attachment; a pass without depth neither tests nor writes it.
-      desc.depthStencil = pass.depth
-        ? { format: DEPTH_FORMAT, depthWriteEnabled: pass.depth.write_enabled, depthCompare: gpuName(pass.depth.compare) }
-        : { format: DEPTH_FORMAT, depthWriteEnabled: false, depthCompare: 'always' };
+      // The metadata's depth-stencil state as it is; the reference is set per draw.
+      const ds = pass.depth_stencil;
+      if (gpuName(ds.format) !== DEPTH_FORMAT) throw new Error(`pass ${pass.name} asks for a ${ds.format} attachment; the page draws into ${DEPTH_FORMAT}`);
+      const face = (f) => ({ compare: gpuName(f.compare), failOp: gpuName(f.fail_op), depthFailOp: gpuName(f.depth_fail_op), passOp: gpuName(f.pass_op) });
+      desc.depthStencil = {
+        format: DEPTH_FORMAT, depthWriteEnabled: ds.depth_write_enabled, depthCompare: gpuName(ds.depth_compare),
+        stencilFront: face(ds.stencil_front), stencilBack: face(ds.stencil_back),
+        stencilReadMask: ds.stencil_read_mask, stencilWriteMask: ds.stencil_write_mask,
+      };
       pipelines.push({ pass, pipeline: await d.createRenderPipelineAsync(desc) });
     }
     // Uniform buffers and engine resources.
@@ -635,7 +642,10 @@ export class Renderer {
     const enc = d.createCommandEncoder();
     const rp = enc.beginRenderPass({
       colorAttachments: [{ view: hdr.createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 0] }],
-      depthStencilAttachment: { view: depth.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'discard' },
+      depthStencilAttachment: {
+        view: depth.createView(), depthLoadOp: 'clear', depthClearValue: 1.0, depthStoreOp: 'discard',
+        stencilLoadOp: 'clear', stencilClearValue: 0, stencilStoreOp: 'discard',
+      },
     });
     rp.setPipeline(this.skyPipeline);
     rp.setBindGroup(0, this.skyGroup);
@@ -653,6 +663,7 @@ export class Renderer {
         const n = instances && pass.name in instances ? instances[pass.name] : 1;
         if (n <= 0 || mesh.indexCount === 0) continue;
         rp.setPipeline(pipeline);
+        rp.setStencilReference(pass.depth_stencil.stencil_reference);
         rp.drawIndexed(mesh.indexCount, n);
       }
     }

@@ -1,0 +1,700 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float4 base_map_st;
+    uint strand_along_tangent;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    float4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    int _pad12_0;
+    float4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    int _pad20_0;
+    float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    int _pad23_0;
+    int _pad23_1;
+    float4 fringe_shadow_color;
+    float fringe_shadow_length;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftHair {
+    float3 sigma_a;
+    float eta;
+    float4 v;
+    float s;
+    int _pad4_0;
+    int _pad4_1;
+    int _pad4_2;
+    float3 sin2k;
+    int _pad5_0;
+    float3 cos2k;
+    int _end_pad_0;
+};
+
+struct WeftHairAttenuation {
+    float a0_;
+    int _pad1_0;
+    int _pad1_1;
+    int _pad1_2;
+    float3 a1_;
+    int _pad2_0;
+    float3 a2_;
+    int _pad3_0;
+    float3 a3_;
+    float gamma_t;
+};
+
+struct WeftHairLobes {
+    float3 s;
+    int _pad1_0;
+    float3 albedo;
+    int _pad2_0;
+    float3 back;
+    int _end_pad_0;
+};
+
+struct WeftHairAngles {
+    float4 theta;
+    float phi;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_HAIR_MIN_BETA_M = 0.05;
+static const float WEFT_HAIR_MIN_BETA_N = 0.05;
+static const uint HAIR_REFERENCE_CELLS = 64u;
+static const uint HAIR_FAST_CELLS = 12u;
+static const float HAIR_TERMINATOR = 0.25;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> flow_map : register(t4, space1);
+Texture2D<float4> jitter_map : register(t5, space1);
+Texture2D<float4> uv_rotate_mask : register(t6, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_2 : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_3 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n)
+{
+    float s_6 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s_6 + n.z));
+    float b = ((n.x * n.y) * a_1);
+    return float3((1.0 + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+}
+
+float weft_f_dielectric(float cos_i, float eta)
+{
+    float c_1 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c_1 * c_1));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c_1);
+    float gpc = max((g + c_1), 1e-7);
+    float a_2 = (gmc / gpc);
+    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
+    float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))));
+    return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_2);
+    float3 t_1 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_2 = (cross(n_2, t_1) * s_7);
+    return float3x3(t_1, b_2, n_2);
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_hair_sqr(float x)
+{
+    return (x * x);
+}
+
+float weft_hair_safe_sqrt(float x_1)
+{
+    return sqrt(max(x_1, 0.0));
+}
+
+float weft_hair_variance(float beta_m)
+{
+    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_3 * b_3);
+    float b4_ = (b2_ * b2_);
+    float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    const float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(float beta_n)
+{
+    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_4 * b_4);
+    float b4_1 = (b2_1 * b2_1);
+    float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+}
+
+float3 weft_hair_sigma_a_from_color(float3 c, float beta_n_1)
+{
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    float3 l = (log(clamp(c, (0.0001).xxx, (1.0).xxx)) / (d).xxx);
+    return (l * l);
+}
+
+WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg)
+{
+    WeftHair hair = (WeftHair)0;
+
+    hair.sigma_a = max(sigma_a, (0.0).xxx);
+    hair.eta = max(eta_1, 1.0001);
+    const float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = float4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
+    const float _e23 = weft_hair_logistic_scale(beta_n_2);
+    hair.s = _e23;
+    float a_3 = radians(alpha_deg);
+    float s0_ = sin(a_3);
+    const float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
+    float s1_ = ((2.0 * _e29) * s0_);
+    float c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    float s2_ = ((2.0 * c1_) * s1_);
+    float c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = float3(s0_, s1_, s2_);
+    hair.cos2k = float3(_e29, c1_, c2_);
+    WeftHair _e46 = hair;
+    const WeftHair wefthair = _e46;
+    return wefthair;
+}
+
+float weft_hair_i0_(float x_2)
+{
+    float term = 1.0;
+    float sum = 1.0;
+    int i = int(1);
+
+    float q = ((0.25 * x_2) * x_2);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e22 = i;
+            i = asint(asuint(_e22) + asuint(int(1)));
+        }
+        loop_init = false;
+        int _e10 = i;
+        if ((_e10 < int(16))) {
+        } else {
+            break;
+        }
+        {
+            int _e13 = i;
+            float k_1 = float(_e13);
+            float _e15 = term;
+            term = (_e15 * (q / (k_1 * k_1)));
+            float _e19 = sum;
+            float _e20 = term;
+            sum = (_e19 + _e20);
+        }
+    }
+    float _e25 = sum;
+    return _e25;
+}
+
+float weft_hair_log_i0_(float x_3)
+{
+    if ((x_3 > 12.0)) {
+        float r = (1.0 / x_3);
+        return ((x_3 - (0.5 * log((6.2831855 * x_3)))) + log((1.0 + (r * (0.125 + (0.0703125 * r))))));
+    }
+    const float _e20 = weft_hair_i0_(x_3);
+    return log(_e20);
+}
+
+float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1)
+{
+    float a_4 = ((cos_i_1 * cos_o) / v_1);
+    float b_6 = ((sin_i * sin_o) / v_1);
+    if ((v_1 <= 0.1)) {
+        const float _e11 = weft_hair_log_i0_(a_4);
+        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
+    }
+    const float _e27 = weft_hair_i0_(a_4);
+    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
+}
+
+float4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2)
+{
+    float sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
+    float cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
+    float sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
+    float cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
+    float sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
+    float cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
+    const float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
+    const float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
+    const float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    const float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
+    return float4(_e52, _e55, _e58, _e61);
+}
+
+float weft_hair_logistic(float x_4, float s)
+{
+    float e_1 = exp((-(abs(x_4)) / s));
+    const float _e8 = weft_hair_sqr((1.0 + e_1));
+    return (e_1 / (s * _e8));
+}
+
+float weft_hair_trimmed_logistic(float x_5, float s_1)
+{
+    float e_2 = exp((-3.1415927 / s_1));
+    const float _e5 = weft_hair_logistic(x_5, s_1);
+    return ((_e5 * (1.0 + e_2)) / (1.0 - e_2));
+}
+
+float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2)
+{
+    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
+}
+
+WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h)
+{
+    WeftHairAttenuation a = (WeftHairAttenuation)0;
+
+    float sin_t = (sin_o_3 / hair_3.eta);
+    const float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    const float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
+    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
+    const float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
+    float3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
+    const float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
+    const float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
+    a.a0_ = _e34;
+    a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
+    float3 _e46 = a.a1_;
+    a.a2_ = ((_e46 * t_2) * _e34);
+    float3 _e51 = a.a2_;
+    a.a3_ = (((_e51 * t_2) * _e34) / ((1.0).xxx - (t_2 * _e34)));
+    a.gamma_t = asin(sin_gamma_t);
+    WeftHairAttenuation _e61 = a;
+    const WeftHairAttenuation wefthairattenuation = _e61;
+    return wefthairattenuation;
+}
+
+WeftHairAngles weft_hair_angles(float3 t, float3 o, float3 i_1)
+{
+    WeftHairAngles out_1 = (WeftHairAngles)0;
+
+    float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
+    float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
+    const float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
+    const float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
+    out_1.theta = float4(sin_o_4, _e16, sin_i_2, _e20);
+    float3 o_perp = (o - (sin_o_4 * t));
+    float3 i_perp = (i_1 - (sin_i_2 * t));
+    float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
+    float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * rsqrt(max(len2_2, 1e-30))) : 1.0);
+    out_1.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_1;
+    const WeftHairAngles wefthairangles = _e43;
+    return wefthairangles;
+}
+
+float weft_hair_logistic_cdf(float x_6, float s_2)
+{
+    return (1.0 / (1.0 + exp((-(x_6) / s_2))));
+}
+
+float weft_hair_trimmed_integral(float lo, float hi, float s_3)
+{
+    float sum_1 = (float)0;
+
+    const float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
+    const float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
+    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
+    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
+    const float _e13 = weft_hair_logistic_cdf(b_7, s_3);
+    const float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    sum_1 = (_e13 - _e14);
+    if ((hi > WEFT_PI)) {
+        float _e19 = sum_1;
+        const float _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855), WEFT_PI), s_3);
+        sum_1 = (_e19 + (_e24 - _e4));
+    }
+    if ((lo < -3.1415927)) {
+        float _e29 = sum_1;
+        const float _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855), -3.1415927), s_3);
+        sum_1 = (_e29 + (_e6 - _e34));
+    }
+    float _e37 = sum_1;
+    return (_e37 / (_e6 - _e4));
+}
+
+float weft_hair_np_cell(float d0_, float d1_, float s_4)
+{
+    float mid = (0.5 * (d0_ + d1_));
+    float m = (mid - (6.2831855 * round((mid / 6.2831855))));
+    float half_ = min((0.5 * abs((d1_ - d0_))), WEFT_PI);
+    if ((half_ < 0.0001)) {
+        const float _e20 = weft_hair_trimmed_logistic(m, s_4);
+        return _e20;
+    }
+    const float _e23 = weft_hair_trimmed_integral((m - half_), (m + half_), s_4);
+    return (_e23 / (2.0 * half_));
+}
+
+WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
+{
+    float3 s_5 = (0.0).xxx;
+    float3 albedo = (0.0).xxx;
+    float3 back = (0.0).xxx;
+    float weights = 0.0;
+    float g0_ = -1.5707964;
+    float3 d0_1 = (float3)0;
+    uint k = 0u;
+    WeftHairLobes out_2 = (WeftHairLobes)0;
+
+    float4 th = angles.theta;
+    const float4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
+    const float _e11 = weft_hair_etap(hair_4, th.x, th.y);
+    uint cells = max(count, 1u);
+    float step_ = (WEFT_PI / float(cells));
+    float _e35 = g0_;
+    float _e43 = g0_;
+    d0_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * asin(clamp((sin(_e35) / _e11), -1.0, 1.0))) - ((2.0 * _e43)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e153 = k;
+            k = (_e153 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e58 = k;
+        if ((_e58 < cells)) {
+        } else {
+            break;
+        }
+        {
+            float _e60 = g0_;
+            float g1_ = (_e60 + step_);
+            float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
+            float3 d1_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * gamma_t1_) - ((2.0 * g1_)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
+            float _e85 = g0_;
+            float gm = (_e85 + (0.5 * step_));
+            float w = cos(gm);
+            const WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            float _e98 = d0_1.x;
+            const float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            float _e107 = d0_1.y;
+            const float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            float _e118 = d0_1.z;
+            const float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            float3 lobes_1 = ((((((_e8.x * _e93.a0_) * _e101)).xxx + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494));
+            float3 _e130 = s_5;
+            s_5 = (_e130 + (w * lobes_1));
+            float3 _e133 = albedo;
+            albedo = (_e133 + (w * ((((_e93.a0_).xxx + _e93.a1_) + _e93.a2_) + _e93.a3_)));
+            float3 _e144 = back;
+            back = (_e144 + (w * ((_e93.a0_).xxx + _e93.a2_)));
+            float _e151 = weights;
+            weights = (_e151 + w);
+            g0_ = g1_;
+            d0_1 = d1_1;
+        }
+    }
+    float3 _e158 = s_5;
+    float _e159 = weights;
+    out_2.s = (_e158 / (_e159).xxx);
+    float3 _e163 = albedo;
+    float _e164 = weights;
+    out_2.albedo = (_e163 / (_e164).xxx);
+    float3 _e168 = back;
+    float _e169 = weights;
+    out_2.back = (_e168 / (_e169).xxx);
+    WeftHairLobes _e172 = out_2;
+    const WeftHairLobes wefthairlobes = _e172;
+    return wefthairlobes;
+}
+
+float3 hair_strand(float3x3 frame, float2 uv0_)
+{
+    float2 ts = (float2)0;
+
+    uint _e10 = material.strand_along_tangent;
+    ts = ((_e10 != 0u) ? float2(1.0, 0.0) : float2(0.0, 1.0));
+    {
+        float4 _e17 = flow_map.Sample(material_sampler, uv0_);
+        float2 f_1 = ((_e17.xy * 2.0) - (1.0).xx);
+        float len2_3 = dot(f_1, f_1);
+        float2 _e25 = ts;
+        ts = ((len2_3 > 0.0001) ? (f_1 * rsqrt(max(len2_3, 1e-12))) : _e25);
+    }
+    float _e35 = ts.x;
+    float _e39 = ts.y;
+    const float3 _e43 = weft_safe_normalize(((frame[0] * _e35) + (frame[1] * _e39)), frame[1]);
+    return _e43;
+}
+
+float hair_hash(uint x_7)
+{
+    uint state = ((x_7 * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+float hair_value_noise(float x_8, float period)
+{
+    float p = max(round(period), 1.0);
+    float cell = floor(x_8);
+    float f_2 = (x_8 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    const float _e19 = hair_hash(naga_f2u32(c0_));
+    const float _e21 = hair_hash(naga_f2u32(c1_1));
+    return (lerp(_e19, _e21, ((f_2 * f_2) * (3.0 - (2.0 * f_2)))) - 0.5);
+}
+
+float hair_jitter(float2 uv0_1)
+{
+    float4 _e3 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e3.x);
+    float _e9 = material.anisotropic_direction;
+    float a_6 = radians(_e9);
+    float c_2 = cos(a_6);
+    float s_8 = sin(a_6);
+    float2 rotated = float2(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
+    float4 _e30 = material.jitter_map_st;
+    const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
+    float4 _e34 = jitter_map.Sample(material_sampler, _e31);
+    float j = _e34.x;
+    uint _e40 = material.strand_along_tangent;
+    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
+    float _e46 = material.jitter_strength;
+    float _e50 = material.strand_noise;
+    float _e53 = material.strand_density;
+    float _e57 = material.strand_density;
+    const float _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    float3 color = (float3)0;
+    WeftHairLobes lobes = (WeftHairLobes)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    const float3 _e22 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e24 = weft_safe_normalize(in_1.world_normal, _e22);
+    const float3x3 _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
+    const float3 _e28 = hair_strand(_e26, in_1.uv0_);
+    const float _e30 = hair_jitter(in_1.uv0_);
+    const float3 _e31 = weft_main_light_direction();
+    const float3 _e32 = weft_main_light_radiance();
+    const float3 _e33 = weft_sh_irradiance(_e24);
+    float n_dot_l = dot(_e24, _e31);
+    {
+        const float3 _e38 = weft_safe_normalize((_e28 + (_e30 * _e24)), _e28);
+        float _e41 = material.azimuthal_roughness;
+        const float3 _e42 = weft_hair_sigma_a_from_color(base, _e41);
+        float _e45 = material.ior;
+        float _e48 = material.roughness;
+        float _e51 = material.azimuthal_roughness;
+        float _e54 = material.scale_angle;
+        const WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
+        const WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
+        {
+            const WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
+            lobes = _e59;
+        }
+        float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        float3 _e66 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e66));
+        float3 _e70 = lobes.s;
+        float3 direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e79 = lobes.back;
+        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
+    }
+    float3 _e83 = color;
+    float3 radiance = clamp(_e83, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}

@@ -1,0 +1,827 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    metal::float4 base_map_st;
+    uint strand_along_tangent;
+    char _pad3[12];
+    metal::float4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    metal::float4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    char _pad12[4];
+    metal::float4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    char _pad20[4];
+    metal::float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    char _pad23[8];
+    metal::float4 fringe_shadow_color;
+    float fringe_shadow_length;
+    char _pad25[12];
+};
+struct WeftOutlineVertex {
+    metal::float3 position;
+    metal::float3 normal;
+};
+struct WeftOutlineVaryings {
+    metal::float4 clip_position;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct WeftHair {
+    metal::packed_float3 sigma_a;
+    float eta;
+    metal::float4 v;
+    float s;
+    char _pad4[12];
+    metal::float3 sin2k;
+    metal::float3 cos2k;
+};
+struct WeftHairAttenuation {
+    float a0_;
+    char _pad1[12];
+    metal::float3 a1_;
+    metal::float3 a2_;
+    metal::packed_float3 a3_;
+    float gamma_t;
+};
+struct WeftHairLobes {
+    metal::float3 s;
+    metal::float3 albedo;
+    metal::float3 back;
+};
+struct WeftHairAngles {
+    metal::float4 theta;
+    float phi;
+    char _pad2[12];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_HAIR_MIN_BETA_M = 0.05;
+constant float WEFT_HAIR_MIN_BETA_N = 0.05;
+constant uint HAIR_REFERENCE_CELLS = 64u;
+constant uint HAIR_FAST_CELLS = 12u;
+constant float HAIR_TERMINATOR = 0.25;
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s_6 = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a_1 = -1.0 / (s_6 + n.z);
+    float b = (n.x * n.y) * a_1;
+    return metal::float3(1.0 + (((s_6 * n.x) * n.x) * a_1), s_6 * b, -(s_6) * n.x);
+}
+
+float weft_f_dielectric(
+    float cos_i,
+    float eta
+) {
+    float c_1 = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = ((eta * eta) - 1.0) + (c_1 * c_1);
+    float g = metal::sqrt(metal::max(g2_, 0.0));
+    float gmc = g - c_1;
+    float gpc = metal::max(g + c_1, 0.0000001);
+    float a_2 = gmc / gpc;
+    float b_1 = ((c_1 * gpc) - 1.0) / metal::max((c_1 * gmc) + 1.0, 0.0000001);
+    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1)));
+    return (g2_ < 0.0) ? 1.0 : f;
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_7 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_2 = metal::cross(n_2, t_1) * s_7;
+    return metal::float3x3(t_1, b_2, n_2);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+float weft_hair_sqr(
+    float x
+) {
+    return x * x;
+}
+
+float weft_hair_safe_sqrt(
+    float x_1
+) {
+    return metal::sqrt(metal::max(x_1, 0.0));
+}
+
+float weft_hair_variance(
+    float beta_m
+) {
+    float b_3 = metal::clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = b_3 * b_3;
+    float b4_ = b2_ * b2_;
+    float b20_ = (((b4_ * b4_) * b4_) * b4_) * b4_;
+    float _e18 = weft_hair_sqr(((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(
+    float beta_n
+) {
+    float b_4 = metal::clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = b_4 * b_4;
+    float b4_1 = b2_1 * b2_1;
+    float b22_ = ((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1;
+    return 0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_));
+}
+
+metal::float3 weft_hair_sigma_a_from_color(
+    metal::float3 c,
+    float beta_n_1
+) {
+    float b_5 = metal::clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = ((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * metal::pow(b_5, 3.0))) + (5.574 * metal::pow(b_5, 4.0))) + (0.245 * metal::pow(b_5, 5.0));
+    metal::float3 l = metal::log(metal::clamp(c, metal::float3(0.0001), metal::float3(1.0))) / metal::float3(d);
+    return l * l;
+}
+
+WeftHair weft_hair_params(
+    metal::float3 sigma_a,
+    float eta_1,
+    float beta_m_1,
+    float beta_n_2,
+    float alpha_deg
+) {
+    WeftHair hair = {};
+    hair.sigma_a = metal::max(sigma_a, metal::float3(0.0));
+    hair.eta = metal::max(eta_1, 1.0001);
+    float _e13 = weft_hair_variance(beta_m_1);
+    hair.v = metal::float4(_e13, 0.25 * _e13, 4.0 * _e13, 4.0 * _e13);
+    float _e23 = weft_hair_logistic_scale(beta_n_2);
+    hair.s = _e23;
+    float a_3 = ((alpha_deg) * 0.017453292519943295474);
+    float s0_ = metal::sin(a_3);
+    float _e29 = weft_hair_safe_sqrt(1.0 - (s0_ * s0_));
+    float s1_ = (2.0 * _e29) * s0_;
+    float c1_ = (_e29 * _e29) - (s0_ * s0_);
+    float s2_ = (2.0 * c1_) * s1_;
+    float c2_ = (c1_ * c1_) - (s1_ * s1_);
+    hair.sin2k = metal::float3(s0_, s1_, s2_);
+    hair.cos2k = metal::float3(_e29, c1_, c2_);
+    WeftHair _e46 = hair;
+    return _e46;
+}
+
+float weft_hair_i0_(
+    float x_2
+) {
+    float term = 1.0;
+    float sum = 1.0;
+    int i = 1;
+    float q = (0.25 * x_2) * x_2;
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e22 = i;
+            i = as_type<int>(as_type<uint>(_e22) + as_type<uint>(1));
+        }
+        loop_init = false;
+        int _e10 = i;
+        if (_e10 < 16) {
+        } else {
+            break;
+        }
+        {
+            int _e13 = i;
+            float k_1 = static_cast<float>(_e13);
+            float _e15 = term;
+            term = _e15 * (q / (k_1 * k_1));
+            float _e19 = sum;
+            float _e20 = term;
+            sum = _e19 + _e20;
+        }
+    }
+    float _e25 = sum;
+    return _e25;
+}
+
+float weft_hair_log_i0_(
+    float x_3
+) {
+    if (x_3 > 12.0) {
+        float r = 1.0 / x_3;
+        return (x_3 - (0.5 * metal::log(6.2831855 * x_3))) + metal::log(1.0 + (r * (0.125 + (0.0703125 * r))));
+    }
+    float _e20 = weft_hair_i0_(x_3);
+    return metal::log(_e20);
+}
+
+float weft_hair_mp(
+    float cos_i_1,
+    float cos_o,
+    float sin_i,
+    float sin_o,
+    float v_1
+) {
+    float a_4 = (cos_i_1 * cos_o) / v_1;
+    float b_6 = (sin_i * sin_o) / v_1;
+    if (v_1 <= 0.1) {
+        float _e11 = weft_hair_log_i0_(a_4);
+        return metal::exp((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + metal::log(1.0 / (2.0 * v_1)));
+    }
+    float _e27 = weft_hair_i0_(a_4);
+    return (metal::exp(-(b_6)) * _e27) / ((metal::sinh(1.0 / v_1) * 2.0) * v_1);
+}
+
+metal::float4 weft_hair_longitudinal(
+    WeftHair hair_1,
+    float sin_o_1,
+    float cos_o_1,
+    float sin_i_1,
+    float cos_i_2
+) {
+    float sin_r = (sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y);
+    float cos_r = metal::abs((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y));
+    float sin_tt = (sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x);
+    float cos_tt = metal::abs((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x));
+    float sin_trt = (sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z);
+    float cos_trt = metal::abs((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z));
+    float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
+    float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
+    float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
+    return metal::float4(_e52, _e55, _e58, _e61);
+}
+
+float weft_hair_logistic(
+    float x_4,
+    float s
+) {
+    float e_1 = metal::exp(-(metal::abs(x_4)) / s);
+    float _e8 = weft_hair_sqr(1.0 + e_1);
+    return e_1 / (s * _e8);
+}
+
+float weft_hair_trimmed_logistic(
+    float x_5,
+    float s_1
+) {
+    float e_2 = metal::exp(-3.1415927 / s_1);
+    float _e5 = weft_hair_logistic(x_5, s_1);
+    return (_e5 * (1.0 + e_2)) / (1.0 - e_2);
+}
+
+float weft_hair_etap(
+    WeftHair hair_2,
+    float sin_o_2,
+    float cos_o_2
+) {
+    return metal::sqrt((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2)) / metal::max(cos_o_2, 0.0001);
+}
+
+WeftHairAttenuation weft_hair_attenuation(
+    WeftHair hair_3,
+    float sin_o_3,
+    float cos_o_3,
+    float h
+) {
+    WeftHairAttenuation a = {};
+    float sin_t = sin_o_3 / hair_3.eta;
+    float _e9 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
+    float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
+    float sin_gamma_t = metal::clamp(h / _e10, -1.0, 1.0);
+    float _e18 = weft_hair_safe_sqrt(1.0 - (sin_gamma_t * sin_gamma_t));
+    metal::float3 t_2 = metal::exp(-(hair_3.sigma_a) * ((2.0 * _e18) / metal::max(_e9, 0.0001)));
+    float _e31 = weft_hair_safe_sqrt(1.0 - (h * h));
+    float _e34 = weft_f_dielectric(cos_o_3 * _e31, hair_3.eta);
+    a.a0_ = _e34;
+    a.a1_ = ((1.0 - _e34) * (1.0 - _e34)) * t_2;
+    metal::float3 _e46 = a.a1_;
+    a.a2_ = (_e46 * t_2) * _e34;
+    metal::float3 _e51 = a.a2_;
+    a.a3_ = ((_e51 * t_2) * _e34) / (metal::float3(1.0) - (t_2 * _e34));
+    a.gamma_t = metal::asin(sin_gamma_t);
+    WeftHairAttenuation _e61 = a;
+    return _e61;
+}
+
+WeftHairAngles weft_hair_angles(
+    metal::float3 t,
+    metal::float3 o,
+    metal::float3 i_1
+) {
+    WeftHairAngles out_2 = {};
+    float sin_o_4 = metal::clamp(metal::dot(o, t), -1.0, 1.0);
+    float sin_i_2 = metal::clamp(metal::dot(i_1, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt(1.0 - (sin_o_4 * sin_o_4));
+    float _e20 = weft_hair_safe_sqrt(1.0 - (sin_i_2 * sin_i_2));
+    out_2.theta = metal::float4(sin_o_4, _e16, sin_i_2, _e20);
+    metal::float3 o_perp = o - (sin_o_4 * t);
+    metal::float3 i_perp = i_1 - (sin_i_2 * t);
+    float len2_2 = metal::dot(o_perp, o_perp) * metal::dot(i_perp, i_perp);
+    float cos_phi = (len2_2 > 0.000000000001) ? (metal::dot(o_perp, i_perp) * metal::rsqrt(metal::max(len2_2, 0.000000000000000000000000000001))) : 1.0;
+    out_2.phi = metal::acos(metal::clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_2;
+    return _e43;
+}
+
+float weft_hair_logistic_cdf(
+    float x_6,
+    float s_2
+) {
+    return 1.0 / (1.0 + metal::exp(-(x_6) / s_2));
+}
+
+float weft_hair_trimmed_integral(
+    float lo,
+    float hi,
+    float s_3
+) {
+    float sum_1 = {};
+    float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
+    float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
+    float a_5 = metal::clamp(lo, -3.1415927, WEFT_PI);
+    float b_7 = metal::clamp(hi, -3.1415927, WEFT_PI);
+    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
+    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    sum_1 = _e13 - _e14;
+    if (hi > WEFT_PI) {
+        float _e19 = sum_1;
+        float _e24 = weft_hair_logistic_cdf(metal::min(hi - 6.2831855, WEFT_PI), s_3);
+        sum_1 = _e19 + (_e24 - _e4);
+    }
+    if (lo < -3.1415927) {
+        float _e29 = sum_1;
+        float _e34 = weft_hair_logistic_cdf(metal::max(lo + 6.2831855, -3.1415927), s_3);
+        sum_1 = _e29 + (_e6 - _e34);
+    }
+    float _e37 = sum_1;
+    return _e37 / (_e6 - _e4);
+}
+
+float weft_hair_np_cell(
+    float d0_,
+    float d1_,
+    float s_4
+) {
+    float mid = 0.5 * (d0_ + d1_);
+    float m = mid - (6.2831855 * metal::rint(mid / 6.2831855));
+    float half_ = metal::min(0.5 * metal::abs(d1_ - d0_), WEFT_PI);
+    if (half_ < 0.0001) {
+        float _e20 = weft_hair_trimmed_logistic(m, s_4);
+        return _e20;
+    }
+    float _e23 = weft_hair_trimmed_integral(m - half_, m + half_, s_4);
+    return _e23 / (2.0 * half_);
+}
+
+WeftHairLobes weft_hair_mean(
+    WeftHair hair_4,
+    WeftHairAngles angles,
+    uint count
+) {
+    metal::float3 s_5 = metal::float3(0.0);
+    metal::float3 albedo = metal::float3(0.0);
+    metal::float3 back = metal::float3(0.0);
+    float weights = 0.0;
+    float g0_ = -1.5707964;
+    metal::float3 d0_1 = {};
+    uint k = 0u;
+    WeftHairLobes out_3 = {};
+    metal::float4 th = angles.theta;
+    metal::float4 _e8 = weft_hair_longitudinal(hair_4, angles.theta.x, angles.theta.y, angles.theta.z, angles.theta.w);
+    float _e11 = weft_hair_etap(hair_4, angles.theta.x, angles.theta.y);
+    uint cells = metal::max(count, 1u);
+    float step = WEFT_PI / static_cast<float>(cells);
+    float _e35 = g0_;
+    float _e43 = g0_;
+    d0_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * metal::asin(metal::clamp(metal::sin(_e35) / _e11, -1.0, 1.0))) - metal::float3(2.0 * _e43)) + metal::float3(0.0, 3.1415927, 6.2831855));
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e153 = k;
+            k = _e153 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e58 = k;
+        if (_e58 < cells) {
+        } else {
+            break;
+        }
+        {
+            float _e60 = g0_;
+            float g1_ = _e60 + step;
+            float gamma_t1_ = metal::asin(metal::clamp(metal::sin(g1_) / _e11, -1.0, 1.0));
+            metal::float3 d1_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * gamma_t1_) - metal::float3(2.0 * g1_)) + metal::float3(0.0, 3.1415927, 6.2831855));
+            float _e85 = g0_;
+            float gm = _e85 + (0.5 * step);
+            float w = metal::cos(gm);
+            WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, angles.theta.x, angles.theta.y, metal::sin(gm));
+            float _e98 = d0_1.x;
+            float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            float _e107 = d0_1.y;
+            float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            float _e118 = d0_1.z;
+            float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            metal::float3 lobes_1 = ((metal::float3((_e8.x * _e93.a0_) * _e101) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494);
+            metal::float3 _e130 = s_5;
+            s_5 = _e130 + (w * lobes_1);
+            metal::float3 _e133 = albedo;
+            albedo = _e133 + (w * (((metal::float3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_));
+            metal::float3 _e144 = back;
+            back = _e144 + (w * (metal::float3(_e93.a0_) + _e93.a2_));
+            float _e151 = weights;
+            weights = _e151 + w;
+            g0_ = g1_;
+            d0_1 = d1_1;
+        }
+    }
+    metal::float3 _e158 = s_5;
+    float _e159 = weights;
+    out_3.s = _e158 / metal::float3(_e159);
+    metal::float3 _e163 = albedo;
+    float _e164 = weights;
+    out_3.albedo = _e163 / metal::float3(_e164);
+    metal::float3 _e168 = back;
+    float _e169 = weights;
+    out_3.back = _e168 / metal::float3(_e169);
+    WeftHairLobes _e172 = out_3;
+    return _e172;
+}
+
+metal::float3 hair_strand(
+    metal::float3x3 frame,
+    metal::float2 uv0_,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> flow_map
+) {
+    metal::float2 ts = {};
+    uint _e10 = material.strand_along_tangent;
+    ts = (_e10 != 0u) ? metal::float2(1.0, 0.0) : metal::float2(0.0, 1.0);
+    {
+        metal::float4 _e17 = flow_map.sample(material_sampler, uv0_);
+        metal::float2 f_1 = (_e17.xy * 2.0) - metal::float2(1.0);
+        float len2_3 = metal::dot(f_1, f_1);
+        metal::float2 _e25 = ts;
+        ts = (len2_3 > 0.0001) ? (f_1 * metal::rsqrt(metal::max(len2_3, 0.000000000001))) : _e25;
+    }
+    float _e35 = ts.x;
+    float _e39 = ts.y;
+    metal::float3 _e43 = weft_safe_normalize((frame[0] * _e35) + (frame[1] * _e39), frame[1]);
+    return _e43;
+}
+
+float hair_hash(
+    uint x_7
+) {
+    uint state = (x_7 * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+float hair_value_noise(
+    float x_8,
+    float period
+) {
+    float p = metal::max(metal::rint(period), 1.0);
+    float cell = metal::floor(x_8);
+    float f_2 = x_8 - cell;
+    float c0_ = cell - (p * metal::floor(cell / p));
+    float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
+    float _e19 = hair_hash(naga_f2u32(c0_));
+    float _e21 = hair_hash(naga_f2u32(c1_1));
+    return metal::mix(_e19, _e21, (f_2 * f_2) * (3.0 - (2.0 * f_2))) - 0.5;
+}
+
+float hair_jitter(
+    metal::float2 uv0_1,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> jitter_map,
+    metal::texture2d<float, metal::access::sample> uv_rotate_mask
+) {
+    metal::float4 _e3 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e3.x);
+    float _e9 = material.anisotropic_direction;
+    float a_6 = ((_e9) * 0.017453292519943295474);
+    float c_2 = metal::cos(a_6);
+    float s_8 = metal::sin(a_6);
+    metal::float2 rotated = metal::float2((c_2 * uv0_1.x) + (s_8 * uv0_1.y), (-(s_8) * uv0_1.x) + (c_2 * uv0_1.y));
+    metal::float4 _e30 = material.jitter_map_st;
+    metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
+    metal::float4 _e34 = jitter_map.sample(material_sampler, _e31);
+    float j = _e34.x;
+    uint _e40 = material.strand_along_tangent;
+    float across = (_e40 != 0u) ? _e31.y : _e31.x;
+    float _e46 = material.jitter_strength;
+    float _e50 = material.strand_noise;
+    float _e53 = material.strand_density;
+    float _e57 = material.strand_density;
+    float _e58 = hair_value_noise(across * _e53, _e57);
+    return (_e46 * j) + (_e50 * _e58);
+}
+
+struct vs_outlineInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+};
+struct vs_outlineOutput {
+    metal::float4 clip_position [[position]];
+};
+vertex vs_outlineOutput vs_outline(
+  vs_outlineInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
+) {
+    const WeftOutlineVertex in = { varyings.position, varyings.normal };
+    bool local = {};
+    bool local_1 = {};
+    WeftOutlineVaryings out = {};
+    metal::float4x4 _e3 = weft_object.model;
+    metal::float4 world = _e3 * metal::float4(in.position, 1.0);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3 normal = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal;
+    metal::float4x4 _e22 = weft_frame.view_proj;
+    metal::float4 clip = _e22 * metal::float4(world.xyz, 1.0);
+    metal::float4 _e29 = weft_frame.viewport;
+    metal::float2 size = _e29.xy;
+    metal::float4x4 _e33 = weft_frame.view_proj;
+    metal::float2 screen_normal = (_e33 * metal::float4(normal, 0.0)).xy * size;
+    float len = metal::length(screen_normal);
+    if (len > 0.000001) {
+        float _e47 = weft_frame.viewport.x;
+        local = _e47 > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e51 = local;
+    if (_e51) {
+        local_1 = clip.w > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool usable = local_1;
+    metal::float2 direction = usable ? (screen_normal / metal::float2(metal::max(len, 0.000001))) : metal::float2(0.0);
+    float _e68 = material.outline_width;
+    float width_px = metal::max(_e68, 0.0);
+    float _e74 = material.outline_max_distance;
+    float distance = metal::min(clip.w, metal::max(_e74, 0.0));
+    metal::float4 _e83 = weft_frame.viewport;
+    metal::float2 offset = (((direction * width_px) * 2.0) * _e83.zw) * distance;
+    out.clip_position = metal::float4(clip.xy + offset, clip.zw);
+    WeftOutlineVaryings _e93 = out;
+    const auto _tmp = _e93;
+    return vs_outlineOutput { _tmp.clip_position };
+}
+
+
+struct fs_outlineOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_outlineOutput fs_outline(
+  constant WeftMaterial& material [[buffer(1)]]
+) {
+    metal::float4 _e2 = material.outline_color;
+    return fs_outlineOutput { metal::float4(metal::max(_e2.xyz, metal::float3(0.0)), 1.0) };
+}
+
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_2 [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings_2 [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
+    WeftVaryings out_1 = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm_1 = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    metal::float4 world_1 = model * metal::float4(in_1.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = _e43 * metal::float4(world_1.xyz, 1.0);
+    out_1.world_position = world_1.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_1.normal, metal::float3(0.0));
+    out_1.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_1.tangent.xyz, metal::float3(0.0));
+    out_1.world_tangent = metal::float4(_e62, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    WeftVaryings _e66 = out_1;
+    const auto _tmp_1 = _e66;
+    return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_2 [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_3 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_3 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
+, metal::texture2d<float, metal::access::sample> flow_map [[texture(1)]]
+, metal::texture2d<float, metal::access::sample> jitter_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(3)]]
+) {
+    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.world_tangent, varyings_3.uv0_2 };
+    metal::float3 color = {};
+    WeftHairLobes lobes = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    metal::float3 _e22 = weft_view_direction(in_2.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e24 = weft_safe_normalize(in_2.world_normal, _e22);
+    metal::float3x3 _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
+    metal::float3 _e28 = hair_strand(_e26, in_2.uv0_, material, material_sampler, flow_map);
+    float _e30 = hair_jitter(in_2.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e31 = weft_main_light_direction(weft_frame);
+    metal::float3 _e32 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e33 = weft_sh_irradiance(_e24, weft_frame);
+    float n_dot_l = metal::dot(_e24, _e31);
+    {
+        metal::float3 _e38 = weft_safe_normalize(_e28 + (_e30 * _e24), _e28);
+        float _e41 = material.azimuthal_roughness;
+        metal::float3 _e42 = weft_hair_sigma_a_from_color(base, _e41);
+        float _e45 = material.ior;
+        float _e48 = material.roughness;
+        float _e51 = material.azimuthal_roughness;
+        float _e54 = material.scale_angle;
+        WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
+        WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
+        {
+            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
+            lobes = _e59;
+        }
+        float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        metal::float3 _e66 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e66);
+        metal::float3 _e70 = lobes.s;
+        metal::float3 direct = (_e70 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e79 = lobes.back;
+        color = (direct * _e32) + (_e33 * (multiple + _e79));
+    }
+    metal::float3 _e83 = color;
+    metal::float3 radiance = metal::clamp(_e83, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha) };
+}

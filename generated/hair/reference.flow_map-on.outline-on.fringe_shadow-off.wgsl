@@ -1,0 +1,667 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    base_map_st: vec4<f32>,
+    strand_along_tangent: u32,
+    jitter_map_st: vec4<f32>,
+    jitter_strength: f32,
+    anisotropic_direction: f32,
+    strand_noise: f32,
+    strand_density: f32,
+    primary_color: vec4<f32>,
+    primary_exponent: f32,
+    primary_intensity: f32,
+    primary_shift: f32,
+    secondary_color: vec4<f32>,
+    secondary_exponent: f32,
+    secondary_intensity: f32,
+    secondary_shift: f32,
+    roughness: f32,
+    azimuthal_roughness: f32,
+    scale_angle: f32,
+    ior: f32,
+    outline_color: vec4<f32>,
+    outline_width: f32,
+    outline_max_distance: f32,
+    fringe_shadow_color: vec4<f32>,
+    fringe_shadow_length: f32,
+}
+
+struct WeftOutlineVertex {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+struct WeftOutlineVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftHair {
+    sigma_a: vec3<f32>,
+    eta: f32,
+    v: vec4<f32>,
+    s: f32,
+    sin2k: vec3<f32>,
+    cos2k: vec3<f32>,
+}
+
+struct WeftHairAttenuation {
+    a0_: f32,
+    a1_: vec3<f32>,
+    a2_: vec3<f32>,
+    a3_: vec3<f32>,
+    gamma_t: f32,
+}
+
+struct WeftHairLobes {
+    s: vec3<f32>,
+    albedo: vec3<f32>,
+    back: vec3<f32>,
+}
+
+struct WeftHairAngles {
+    theta: vec4<f32>,
+    phi: f32,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
+const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
+const HAIR_REFERENCE_CELLS: u32 = 64u;
+const HAIR_FAST_CELLS: u32 = 12u;
+const HAIR_TERMINATOR: f32 = 0.25f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(4) 
+var flow_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var jitter_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var uv_rotate_mask: texture_2d<f32>;
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
+    let s_6 = select(-1f, 1f, (n.z >= 0f));
+    let a_1 = (-1f / (s_6 + n.z));
+    let b = ((n.x * n.y) * a_1);
+    return vec3<f32>((1f + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+}
+
+fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
+    let c_1 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
+    let g2_ = (((eta * eta) - 1f) + (c_1 * c_1));
+    let g = sqrt(max(g2_, 0f));
+    let gmc = (g - c_1);
+    let gpc = max((g + c_1), 0.0000001f);
+    let a_2 = (gmc / gpc);
+    let b_1 = (((c_1 * gpc) - 1f) / max(((c_1 * gmc) + 1f), 0.0000001f));
+    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_1 * b_1))));
+    return select(f, 1f, (g2_ < 0f));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_2);
+    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_7 = select(1f, -1f, (tangent.w < 0f));
+    let b_2 = (cross(n_2, t_1) * s_7);
+    return mat3x3<f32>(t_1, b_2, n_2);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn weft_hair_sqr(x: f32) -> f32 {
+    return (x * x);
+}
+
+fn weft_hair_safe_sqrt(x_1: f32) -> f32 {
+    return sqrt(max(x_1, 0f));
+}
+
+fn weft_hair_variance(beta_m: f32) -> f32 {
+    let b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1f);
+    let b2_ = (b_3 * b_3);
+    let b4_ = (b2_ * b2_);
+    let b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    let _e18 = weft_hair_sqr((((0.726f * b_3) + (0.812f * b2_)) + (3.7f * b20_)));
+    return _e18;
+}
+
+fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
+    let b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1f);
+    let b2_1 = (b_4 * b_4);
+    let b4_1 = (b2_1 * b2_1);
+    let b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707f * (((0.265f * b_4) + (1.194f * b2_1)) + (5.372f * b22_)));
+}
+
+fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n_1: f32) -> vec3<f32> {
+    let b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1f);
+    let d = (((((5.969f - (0.215f * b_5)) + ((2.532f * b_5) * b_5)) - (10.73f * pow(b_5, 3f))) + (5.574f * pow(b_5, 4f))) + (0.245f * pow(b_5, 5f)));
+    let l = (log(clamp(c, vec3(0.0001f), vec3(1f))) / vec3(d));
+    return (l * l);
+}
+
+fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32, alpha_deg: f32) -> WeftHair {
+    var hair: WeftHair;
+
+    hair.sigma_a = max(sigma_a, vec3(0f));
+    hair.eta = max(eta_1, 1.0001f);
+    let _e13 = weft_hair_variance(beta_m_1);
+    hair.v = vec4<f32>(_e13, (0.25f * _e13), (4f * _e13), (4f * _e13));
+    let _e23 = weft_hair_logistic_scale(beta_n_2);
+    hair.s = _e23;
+    let a_3 = radians(alpha_deg);
+    let s0_ = sin(a_3);
+    let _e29 = weft_hair_safe_sqrt((1f - (s0_ * s0_)));
+    let s1_ = ((2f * _e29) * s0_);
+    let c1_ = ((_e29 * _e29) - (s0_ * s0_));
+    let s2_ = ((2f * c1_) * s1_);
+    let c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = vec3<f32>(s0_, s1_, s2_);
+    hair.cos2k = vec3<f32>(_e29, c1_, c2_);
+    let _e46 = hair;
+    return _e46;
+}
+
+fn weft_hair_i0_(x_2: f32) -> f32 {
+    var term: f32 = 1f;
+    var sum: f32 = 1f;
+    var i: i32 = 1i;
+
+    let q = ((0.25f * x_2) * x_2);
+    loop {
+        let _e10 = i;
+        if (_e10 < 16i) {
+        } else {
+            break;
+        }
+        {
+            let _e13 = i;
+            let k_1 = f32(_e13);
+            let _e15 = term;
+            term = (_e15 * (q / (k_1 * k_1)));
+            let _e19 = sum;
+            let _e20 = term;
+            sum = (_e19 + _e20);
+        }
+        continuing {
+            let _e22 = i;
+            i = (_e22 + 1i);
+        }
+    }
+    let _e25 = sum;
+    return _e25;
+}
+
+fn weft_hair_log_i0_(x_3: f32) -> f32 {
+    if (x_3 > 12f) {
+        let r = (1f / x_3);
+        return ((x_3 - (0.5f * log((6.2831855f * x_3)))) + log((1f + (r * (0.125f + (0.0703125f * r))))));
+    }
+    let _e20 = weft_hair_i0_(x_3);
+    return log(_e20);
+}
+
+fn weft_hair_mp(cos_i_1: f32, cos_o: f32, sin_i: f32, sin_o: f32, v_1: f32) -> f32 {
+    let a_4 = ((cos_i_1 * cos_o) / v_1);
+    let b_6 = ((sin_i * sin_o) / v_1);
+    if (v_1 <= 0.1f) {
+        let _e11 = weft_hair_log_i0_(a_4);
+        return exp(((((_e11 - b_6) - (1f / v_1)) + 0.6931472f) + log((1f / (2f * v_1)))));
+    }
+    let _e27 = weft_hair_i0_(a_4);
+    return ((exp(-(b_6)) * _e27) / ((sinh((1f / v_1)) * 2f) * v_1));
+}
+
+fn weft_hair_longitudinal(hair_1: WeftHair, sin_o_1: f32, cos_o_1: f32, sin_i_1: f32, cos_i_2: f32) -> vec4<f32> {
+    let sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
+    let cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
+    let sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
+    let cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
+    let sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
+    let cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
+    let _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
+    let _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
+    let _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    let _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
+    return vec4<f32>(_e52, _e55, _e58, _e61);
+}
+
+fn weft_hair_logistic(x_4: f32, s: f32) -> f32 {
+    let e_1 = exp((-(abs(x_4)) / s));
+    let _e8 = weft_hair_sqr((1f + e_1));
+    return (e_1 / (s * _e8));
+}
+
+fn weft_hair_trimmed_logistic(x_5: f32, s_1: f32) -> f32 {
+    let e_2 = exp((-3.1415927f / s_1));
+    let _e5 = weft_hair_logistic(x_5, s_1);
+    return ((_e5 * (1f + e_2)) / (1f - e_2));
+}
+
+fn weft_hair_etap(hair_2: WeftHair, sin_o_2: f32, cos_o_2: f32) -> f32 {
+    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001f));
+}
+
+fn weft_hair_attenuation(hair_3: WeftHair, sin_o_3: f32, cos_o_3: f32, h: f32) -> WeftHairAttenuation {
+    var a: WeftHairAttenuation;
+
+    let sin_t = (sin_o_3 / hair_3.eta);
+    let _e9 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
+    let _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
+    let sin_gamma_t = clamp((h / _e10), -1f, 1f);
+    let _e18 = weft_hair_safe_sqrt((1f - (sin_gamma_t * sin_gamma_t)));
+    let t_2 = exp((-(hair_3.sigma_a) * ((2f * _e18) / max(_e9, 0.0001f))));
+    let _e31 = weft_hair_safe_sqrt((1f - (h * h)));
+    let _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
+    a.a0_ = _e34;
+    a.a1_ = (((1f - _e34) * (1f - _e34)) * t_2);
+    let _e46 = a.a1_;
+    a.a2_ = ((_e46 * t_2) * _e34);
+    let _e51 = a.a2_;
+    a.a3_ = (((_e51 * t_2) * _e34) / (vec3(1f) - (t_2 * _e34)));
+    a.gamma_t = asin(sin_gamma_t);
+    let _e61 = a;
+    return _e61;
+}
+
+fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i_1: vec3<f32>) -> WeftHairAngles {
+    var out_2: WeftHairAngles;
+
+    let sin_o_4 = clamp(dot(o, t), -1f, 1f);
+    let sin_i_2 = clamp(dot(i_1, t), -1f, 1f);
+    let _e16 = weft_hair_safe_sqrt((1f - (sin_o_4 * sin_o_4)));
+    let _e20 = weft_hair_safe_sqrt((1f - (sin_i_2 * sin_i_2)));
+    out_2.theta = vec4<f32>(sin_o_4, _e16, sin_i_2, _e20);
+    let o_perp = (o - (sin_o_4 * t));
+    let i_perp = (i_1 - (sin_i_2 * t));
+    let len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
+    let cos_phi = select(1f, (dot(o_perp, i_perp) * inverseSqrt(max(len2_2, 0.000000000000000000000000000001f))), (len2_2 > 0.000000000001f));
+    out_2.phi = acos(clamp(cos_phi, -1f, 1f));
+    let _e43 = out_2;
+    return _e43;
+}
+
+fn weft_hair_logistic_cdf(x_6: f32, s_2: f32) -> f32 {
+    return (1f / (1f + exp((-(x_6) / s_2))));
+}
+
+fn weft_hair_trimmed_integral(lo: f32, hi: f32, s_3: f32) -> f32 {
+    var sum_1: f32;
+
+    let _e4 = weft_hair_logistic_cdf(-3.1415927f, s_3);
+    let _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
+    let a_5 = clamp(lo, -3.1415927f, WEFT_PI);
+    let b_7 = clamp(hi, -3.1415927f, WEFT_PI);
+    let _e13 = weft_hair_logistic_cdf(b_7, s_3);
+    let _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    sum_1 = (_e13 - _e14);
+    if (hi > WEFT_PI) {
+        let _e19 = sum_1;
+        let _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855f), WEFT_PI), s_3);
+        sum_1 = (_e19 + (_e24 - _e4));
+    }
+    if (lo < -3.1415927f) {
+        let _e29 = sum_1;
+        let _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855f), -3.1415927f), s_3);
+        sum_1 = (_e29 + (_e6 - _e34));
+    }
+    let _e37 = sum_1;
+    return (_e37 / (_e6 - _e4));
+}
+
+fn weft_hair_np_cell(d0_: f32, d1_: f32, s_4: f32) -> f32 {
+    let mid = (0.5f * (d0_ + d1_));
+    let m = (mid - (6.2831855f * round((mid / 6.2831855f))));
+    let half = min((0.5f * abs((d1_ - d0_))), WEFT_PI);
+    if (half < 0.0001f) {
+        let _e20 = weft_hair_trimmed_logistic(m, s_4);
+        return _e20;
+    }
+    let _e23 = weft_hair_trimmed_integral((m - half), (m + half), s_4);
+    return (_e23 / (2f * half));
+}
+
+fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHairLobes {
+    var s_5: vec3<f32> = vec3(0f);
+    var albedo: vec3<f32> = vec3(0f);
+    var back: vec3<f32> = vec3(0f);
+    var weights: f32 = 0f;
+    var g0_: f32 = -1.5707964f;
+    var d0_1: vec3<f32>;
+    var k: u32 = 0u;
+    var out_3: WeftHairLobes;
+
+    let th = angles.theta;
+    let _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
+    let _e11 = weft_hair_etap(hair_4, th.x, th.y);
+    let cells = max(count, 1u);
+    let step_ = (WEFT_PI / f32(cells));
+    let _e35 = g0_;
+    let _e43 = g0_;
+    d0_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * asin(clamp((sin(_e35) / _e11), -1f, 1f))) - vec3((2f * _e43))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
+    loop {
+        let _e58 = k;
+        if (_e58 < cells) {
+        } else {
+            break;
+        }
+        {
+            let _e60 = g0_;
+            let g1_ = (_e60 + step_);
+            let gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1f, 1f));
+            let d1_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * gamma_t1_) - vec3((2f * g1_))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
+            let _e85 = g0_;
+            let gm = (_e85 + (0.5f * step_));
+            let w = cos(gm);
+            let _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            let _e98 = d0_1.x;
+            let _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
+            let _e107 = d0_1.y;
+            let _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
+            let _e118 = d0_1.z;
+            let _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
+            let lobes_1 = (((vec3(((_e8.x * _e93.a0_) * _e101)) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494f));
+            let _e130 = s_5;
+            s_5 = (_e130 + (w * lobes_1));
+            let _e133 = albedo;
+            albedo = (_e133 + (w * (((vec3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_)));
+            let _e144 = back;
+            back = (_e144 + (w * (vec3(_e93.a0_) + _e93.a2_)));
+            let _e151 = weights;
+            weights = (_e151 + w);
+            g0_ = g1_;
+            d0_1 = d1_1;
+        }
+        continuing {
+            let _e153 = k;
+            k = (_e153 + 1u);
+        }
+    }
+    let _e158 = s_5;
+    let _e159 = weights;
+    out_3.s = (_e158 / vec3(_e159));
+    let _e163 = albedo;
+    let _e164 = weights;
+    out_3.albedo = (_e163 / vec3(_e164));
+    let _e168 = back;
+    let _e169 = weights;
+    out_3.back = (_e168 / vec3(_e169));
+    let _e172 = out_3;
+    return _e172;
+}
+
+fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
+    var ts: vec2<f32>;
+
+    let _e10 = material.strand_along_tangent;
+    ts = select(vec2<f32>(0f, 1f), vec2<f32>(1f, 0f), (_e10 != 0u));
+    {
+        let _e17 = textureSample(flow_map, material_sampler, uv0_);
+        let f_1 = ((_e17.xy * 2f) - vec2(1f));
+        let len2_3 = dot(f_1, f_1);
+        let _e25 = ts;
+        ts = select(_e25, (f_1 * inverseSqrt(max(len2_3, 0.000000000001f))), (len2_3 > 0.0001f));
+    }
+    let _e35 = ts.x;
+    let _e39 = ts.y;
+    let _e43 = weft_safe_normalize(((frame[0] * _e35) + (frame[1] * _e39)), frame[1]);
+    return _e43;
+}
+
+fn hair_hash(x_7: u32) -> f32 {
+    let state = ((x_7 * 747796405u) + 2891336453u);
+    let word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
+}
+
+fn hair_value_noise(x_8: f32, period: f32) -> f32 {
+    let p = max(round(period), 1f);
+    let cell = floor(x_8);
+    let f_2 = (x_8 - cell);
+    let c0_ = (cell - (p * floor((cell / p))));
+    let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
+    let _e19 = hair_hash(u32(c0_));
+    let _e21 = hair_hash(u32(c1_1));
+    return (mix(_e19, _e21, ((f_2 * f_2) * (3f - (2f * f_2)))) - 0.5f);
+}
+
+fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
+    let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e3.x);
+    let _e9 = material.anisotropic_direction;
+    let a_6 = radians(_e9);
+    let c_2 = cos(a_6);
+    let s_8 = sin(a_6);
+    let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
+    let _e30 = material.jitter_map_st;
+    let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
+    let _e34 = textureSample(jitter_map, material_sampler, _e31);
+    let j = _e34.x;
+    let _e40 = material.strand_along_tangent;
+    let across = select(_e31.x, _e31.y, (_e40 != 0u));
+    let _e46 = material.jitter_strength;
+    let _e50 = material.strand_noise;
+    let _e53 = material.strand_density;
+    let _e57 = material.strand_density;
+    let _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
+}
+
+@vertex 
+fn vs_outline(in: WeftOutlineVertex) -> WeftOutlineVaryings {
+    var local: bool;
+    var local_1: bool;
+    var out: WeftOutlineVaryings;
+
+    let _e3 = weft_object.model;
+    let world = (_e3 * vec4<f32>(in.position, 1f));
+    let nm = weft_object.normal_matrix;
+    let normal = (mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal);
+    let _e22 = weft_frame.view_proj;
+    let clip = (_e22 * vec4<f32>(world.xyz, 1f));
+    let _e29 = weft_frame.viewport;
+    let size = _e29.xy;
+    let _e33 = weft_frame.view_proj;
+    let screen_normal = ((_e33 * vec4<f32>(normal, 0f)).xy * size);
+    let len = length(screen_normal);
+    if (len > 0.000001f) {
+        let _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0f);
+    } else {
+        local = false;
+    }
+    let _e51 = local;
+    if _e51 {
+        local_1 = (clip.w > 0f);
+    } else {
+        local_1 = false;
+    }
+    let usable = local_1;
+    let direction = select(vec2(0f), (screen_normal / vec2(max(len, 0.000001f))), usable);
+    let _e68 = material.outline_width;
+    let width_px = max(_e68, 0f);
+    let _e74 = material.outline_max_distance;
+    let distance_ = min(clip.w, max(_e74, 0f));
+    let _e83 = weft_frame.viewport;
+    let offset = ((((direction * width_px) * 2f) * _e83.zw) * distance_);
+    out.clip_position = vec4<f32>((clip.xy + offset), clip.zw);
+    let _e93 = out;
+    return _e93;
+}
+
+@fragment 
+fn fs_outline() -> @location(0) vec4<f32> {
+    let _e2 = material.outline_color;
+    return vec4<f32>(max(_e2.xyz, vec3(0f)), 1f);
+}
+
+@vertex 
+fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
+    var out_1: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm_1 = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    let world_1 = (model * vec4<f32>(in_1.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_1.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out_1.clip_position = (_e43 * vec4<f32>(world_1.xyz, 1f));
+    out_1.world_position = world_1.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0f));
+    out_1.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0f));
+    out_1.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    let _e66 = out_1;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
+    var color: vec3<f32>;
+    var lobes: WeftHairLobes;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e22 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e24 = weft_safe_normalize(in_2.world_normal, _e22);
+    let _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
+    let _e28 = hair_strand(_e26, in_2.uv0_);
+    let _e30 = hair_jitter(in_2.uv0_);
+    let _e31 = weft_main_light_direction();
+    let _e32 = weft_main_light_radiance();
+    let _e33 = weft_sh_irradiance(_e24);
+    let n_dot_l = dot(_e24, _e31);
+    {
+        let _e38 = weft_safe_normalize((_e28 + (_e30 * _e24)), _e28);
+        let _e41 = material.azimuthal_roughness;
+        let _e42 = weft_hair_sigma_a_from_color(base, _e41);
+        let _e45 = material.ior;
+        let _e48 = material.roughness;
+        let _e51 = material.azimuthal_roughness;
+        let _e54 = material.scale_angle;
+        let _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
+        let _e56 = weft_hair_angles(_e38, _e22, _e31);
+        {
+            let _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
+            lobes = _e59;
+        }
+        let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
+        let _e66 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e66));
+        let _e70 = lobes.s;
+        let direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e79 = lobes.back;
+        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
+    }
+    let _e83 = color;
+    let radiance = clamp(_e83, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}

@@ -1,0 +1,267 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    uint strand_along_tangent;
+    vec4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    vec4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    vec4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    vec4 fringe_shadow_color;
+    float fringe_shadow_length;
+};
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct WeftHairLobes {
+    vec3 s;
+    vec3 albedo;
+    vec3 back;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_HAIR_MIN_BETA_M = 0.05;
+const float WEFT_HAIR_MIN_BETA_N = 0.05;
+const uint HAIR_REFERENCE_CELLS = 64u;
+const uint HAIR_FAST_CELLS = 12u;
+const float HAIR_TERMINATOR = 0.25;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 0) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 1) uniform sampler2D _group_1_binding_5_fs;
+
+layout(binding = 2) uniform sampler2D _group_1_binding_6_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
+    float b = ((n.x * n.y) * a);
+    return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_2, t_1) * s_1);
+    return mat3x3(t_1, b_1, n_2);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
+    vec2 ts = vec2(0.0);
+    uint _e10 = _group_1_binding_0_fs.strand_along_tangent;
+    ts = ((_e10 != 0u) ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+    float _e17 = ts.x;
+    float _e21 = ts.y;
+    vec3 _e25 = weft_safe_normalize(((frame[0] * _e17) + (frame[1] * _e21)), frame[1]);
+    return _e25;
+}
+
+float hair_hash(uint x) {
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+float hair_value_noise(float x_1, float period) {
+    float p = max(roundEven(period), 1.0);
+    float cell = floor(x_1);
+    float f = (x_1 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_));
+    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+}
+
+float hair_jitter(vec2 uv0_1) {
+    vec4 _e3 = texture(_group_1_binding_6_fs, vec2(uv0_1));
+    float mask = step(0.8, _e3.x);
+    float _e9 = _group_1_binding_0_fs.anisotropic_direction;
+    float a_1 = radians(_e9);
+    float c = cos(a_1);
+    float s_2 = sin(a_1);
+    vec2 rotated = vec2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
+    vec4 _e30 = _group_1_binding_0_fs.jitter_map_st;
+    vec2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
+    vec4 _e34 = texture(_group_1_binding_5_fs, vec2(_e31));
+    float j = _e34.x;
+    uint _e40 = _group_1_binding_0_fs.strand_along_tangent;
+    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
+    float _e46 = _group_1_binding_0_fs.jitter_strength;
+    float _e50 = _group_1_binding_0_fs.strand_noise;
+    float _e53 = _group_1_binding_0_fs.strand_density;
+    float _e57 = _group_1_binding_0_fs.strand_density;
+    float _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
+}
+
+float hair_kajiya_kay(vec3 t, vec3 h, float exponent) {
+    float t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+    float sin_th = sqrt(max((1.0 - (t_dot_h * t_dot_h)), 0.0));
+    float dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
+    return (dir_atten * pow(sin_th, max(exponent, 1.0)));
+}
+
+void main() {
+    WeftVaryings in_2 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 color = vec3(0.0);
+    WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    vec4 _e4 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    vec4 _e8 = _group_1_binding_0_fs.base_color;
+    vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
+    vec4 base_rgba = (_e8 * _e11);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
+    vec3 _e22 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e24 = weft_safe_normalize(in_2.world_normal, _e22);
+    mat3x3 _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
+    vec3 _e28 = hair_strand(_e26, in_2.uv0_);
+    float _e30 = hair_jitter(in_2.uv0_);
+    vec3 _e31 = weft_main_light_direction();
+    vec3 _e32 = weft_main_light_radiance();
+    vec3 _e33 = weft_sh_irradiance(_e24);
+    float n_dot_l = dot(_e24, _e31);
+    {
+        vec3 _e37 = weft_safe_normalize((_e31 + _e22), _e24);
+        float _e40 = _group_1_binding_0_fs.primary_shift;
+        vec3 _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
+        float _e47 = _group_1_binding_0_fs.secondary_shift;
+        vec3 _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
+        vec4 _e54 = _group_1_binding_0_fs.primary_color;
+        float _e58 = _group_1_binding_0_fs.primary_intensity;
+        float _e61 = _group_1_binding_0_fs.primary_exponent;
+        float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
+        vec3 primary = (_e54.xyz * (_e58 * _e62));
+        vec4 _e67 = _group_1_binding_0_fs.secondary_color;
+        float _e71 = _group_1_binding_0_fs.secondary_intensity;
+        float _e74 = _group_1_binding_0_fs.secondary_exponent;
+        float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
+        vec3 secondary = (_e67.xyz * (_e71 * _e75));
+        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * clamp(n_dot_l, 0.0, 1.0));
+        color = (direct + (_e33 * base));
+    }
+    vec3 _e87 = color;
+    vec3 radiance = clamp(_e87, vec3(0.0), vec3(65504.0));
+    _fs2p_location0 = vec4(radiance, alpha);
+    return;
+}
+

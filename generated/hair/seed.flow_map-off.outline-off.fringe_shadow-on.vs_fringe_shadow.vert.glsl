@@ -1,0 +1,222 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    vec4 base_map_st;
+    uint strand_along_tangent;
+    vec4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    vec4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    vec4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    vec4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    vec4 fringe_shadow_color;
+    float fringe_shadow_length;
+};
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct WeftHairLobes {
+    vec3 s;
+    vec3 albedo;
+    vec3 back;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_HAIR_MIN_BETA_M = 0.05;
+const float WEFT_HAIR_MIN_BETA_N = 0.05;
+const uint HAIR_REFERENCE_CELLS = 64u;
+const uint HAIR_FAST_CELLS = 12u;
+const float HAIR_TERMINATOR = 0.25;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(std140, binding = 1) uniform WeftMaterial_block_2Vertex { WeftMaterial _group_1_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
+    float b = ((n.x * n.y) * a);
+    return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_2, t_1) * s_1);
+    return mat3x3(t_1, b_1, n_2);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
+    vec2 ts = vec2(0.0);
+    uint _e10 = _group_1_binding_0_vs.strand_along_tangent;
+    ts = ((_e10 != 0u) ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+    float _e17 = ts.x;
+    float _e21 = ts.y;
+    vec3 _e25 = weft_safe_normalize(((frame[0] * _e17) + (frame[1] * _e21)), frame[1]);
+    return _e25;
+}
+
+float hair_hash(uint x) {
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+float hair_value_noise(float x_1, float period) {
+    float p = max(roundEven(period), 1.0);
+    float cell = floor(x_1);
+    float f = (x_1 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_));
+    return (mix(_e19, _e21, ((f * f) * (3.0 - (2.0 * f)))) - 0.5);
+}
+
+float hair_kajiya_kay(vec3 t, vec3 h, float exponent) {
+    float t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+    float sin_th = sqrt(max((1.0 - (t_dot_h * t_dot_h)), 0.0));
+    float dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
+    return (dir_atten * pow(sin_th, max(exponent, 1.0)));
+}
+
+void main() {
+    WeftFringeShadowVertex in_ = WeftFringeShadowVertex(_p2vs_location0);
+    bool local = false;
+    WeftFringeShadowVaryings out_ = WeftFringeShadowVaryings(vec4(0.0));
+    mat4x4 _e3 = _group_2_binding_0_vs.model;
+    vec3 world = (_e3 * vec4(in_.position, 1.0)).xyz;
+    mat4x4 _e11 = _group_0_binding_0_vs.view_proj;
+    vec4 clip = (_e11 * vec4(world, 1.0));
+    vec4 _e17 = _group_0_binding_0_vs.light_direction;
+    vec3 l = _e17.xyz;
+    float l_len = length(l);
+    vec3 travel = ((l_len > 1e-6) ? (-(l) / vec3(max(l_len, 1e-6))) : vec3(0.0));
+    float _e32 = _group_1_binding_0_vs.fringe_shadow_length;
+    float length_world = max(_e32, 0.0);
+    mat4x4 _e37 = _group_0_binding_0_vs.view_proj;
+    vec4 pushed = (_e37 * vec4((world + (travel * length_world)), 1.0));
+    if ((clip.w > 1e-6)) {
+        local = (pushed.w > 1e-6);
+    } else {
+        local = false;
+    }
+    bool usable = local;
+    vec2 offset_ndc = (usable ? ((pushed.xy / vec2(max(pushed.w, 1e-6))) - (clip.xy / vec2(max(clip.w, 1e-6)))) : vec2(0.0));
+    out_.clip_position = vec4((clip.xy + (offset_ndc * clip.w)), clip.zw);
+    WeftFringeShadowVaryings _e77 = out_;
+    gl_Position = _e77.clip_position;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+

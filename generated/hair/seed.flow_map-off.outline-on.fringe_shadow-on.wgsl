@@ -1,0 +1,389 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftMaterial {
+    base_color: vec4<f32>,
+    base_map_st: vec4<f32>,
+    strand_along_tangent: u32,
+    jitter_map_st: vec4<f32>,
+    jitter_strength: f32,
+    anisotropic_direction: f32,
+    strand_noise: f32,
+    strand_density: f32,
+    primary_color: vec4<f32>,
+    primary_exponent: f32,
+    primary_intensity: f32,
+    primary_shift: f32,
+    secondary_color: vec4<f32>,
+    secondary_exponent: f32,
+    secondary_intensity: f32,
+    secondary_shift: f32,
+    roughness: f32,
+    azimuthal_roughness: f32,
+    scale_angle: f32,
+    ior: f32,
+    outline_color: vec4<f32>,
+    outline_width: f32,
+    outline_max_distance: f32,
+    fringe_shadow_color: vec4<f32>,
+    fringe_shadow_length: f32,
+}
+
+struct WeftOutlineVertex {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+struct WeftOutlineVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
+struct WeftFringeShadowVertex {
+    @location(0) position: vec3<f32>,
+}
+
+struct WeftFringeShadowVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftHairLobes {
+    s: vec3<f32>,
+    albedo: vec3<f32>,
+    back: vec3<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
+const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
+const HAIR_REFERENCE_CELLS: u32 = 64u;
+const HAIR_FAST_CELLS: u32 = 12u;
+const HAIR_TERMINATOR: f32 = 0.25f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+@group(1) @binding(0) 
+var<uniform> material: WeftMaterial;
+@group(1) @binding(1) 
+var material_sampler: sampler;
+@group(1) @binding(3) 
+var base_map: texture_2d<f32>;
+@group(1) @binding(5) 
+var jitter_map: texture_2d<f32>;
+@group(1) @binding(6) 
+var uv_rotate_mask: texture_2d<f32>;
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
+    let s = select(-1f, 1f, (n.z >= 0f));
+    let a = (-1f / (s + n.z));
+    let b = ((n.x * n.y) * a);
+    return vec3<f32>((1f + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e8 = weft_safe_normalize(_e2.xyz, vec3<f32>(0f, 0f, 1f));
+    return _e8;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+    let t_in = tangent.xyz;
+    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let len2_1 = dot(t_proj, t_proj);
+    let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
+    let _e13 = weft_any_perpendicular(n_2);
+    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_2, t_1) * s_1);
+    return mat3x3<f32>(t_1, b_1, n_2);
+}
+
+fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv * st.xy) + st.zw);
+}
+
+fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
+    var ts: vec2<f32>;
+
+    let _e10 = material.strand_along_tangent;
+    ts = select(vec2<f32>(0f, 1f), vec2<f32>(1f, 0f), (_e10 != 0u));
+    let _e17 = ts.x;
+    let _e21 = ts.y;
+    let _e25 = weft_safe_normalize(((frame[0] * _e17) + (frame[1] * _e21)), frame[1]);
+    return _e25;
+}
+
+fn hair_hash(x: u32) -> f32 {
+    let state = ((x * 747796405u) + 2891336453u);
+    let word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
+}
+
+fn hair_value_noise(x_1: f32, period: f32) -> f32 {
+    let p = max(round(period), 1f);
+    let cell = floor(x_1);
+    let f = (x_1 - cell);
+    let c0_ = (cell - (p * floor((cell / p))));
+    let c1_ = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
+    let _e19 = hair_hash(u32(c0_));
+    let _e21 = hair_hash(u32(c1_));
+    return (mix(_e19, _e21, ((f * f) * (3f - (2f * f)))) - 0.5f);
+}
+
+fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
+    let _e3 = textureSample(uv_rotate_mask, material_sampler, uv0_1);
+    let mask = step(0.8f, _e3.x);
+    let _e9 = material.anisotropic_direction;
+    let a_1 = radians(_e9);
+    let c = cos(a_1);
+    let s_2 = sin(a_1);
+    let rotated = vec2<f32>(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
+    let _e30 = material.jitter_map_st;
+    let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
+    let _e34 = textureSample(jitter_map, material_sampler, _e31);
+    let j = _e34.x;
+    let _e40 = material.strand_along_tangent;
+    let across = select(_e31.x, _e31.y, (_e40 != 0u));
+    let _e46 = material.jitter_strength;
+    let _e50 = material.strand_noise;
+    let _e53 = material.strand_density;
+    let _e57 = material.strand_density;
+    let _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
+}
+
+fn hair_kajiya_kay(t: vec3<f32>, h: vec3<f32>, exponent: f32) -> f32 {
+    let t_dot_h = clamp(dot(t, h), -1f, 1f);
+    let sin_th = sqrt(max((1f - (t_dot_h * t_dot_h)), 0f));
+    let dir_atten = smoothstep(-1f, 0f, t_dot_h);
+    return (dir_atten * pow(sin_th, max(exponent, 1f)));
+}
+
+@vertex 
+fn vs_outline(in: WeftOutlineVertex) -> WeftOutlineVaryings {
+    var local: bool;
+    var local_1: bool;
+    var out: WeftOutlineVaryings;
+
+    let _e3 = weft_object.model;
+    let world = (_e3 * vec4<f32>(in.position, 1f));
+    let nm = weft_object.normal_matrix;
+    let normal = (mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal);
+    let _e22 = weft_frame.view_proj;
+    let clip = (_e22 * vec4<f32>(world.xyz, 1f));
+    let _e29 = weft_frame.viewport;
+    let size = _e29.xy;
+    let _e33 = weft_frame.view_proj;
+    let screen_normal = ((_e33 * vec4<f32>(normal, 0f)).xy * size);
+    let len = length(screen_normal);
+    if (len > 0.000001f) {
+        let _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0f);
+    } else {
+        local = false;
+    }
+    let _e51 = local;
+    if _e51 {
+        local_1 = (clip.w > 0f);
+    } else {
+        local_1 = false;
+    }
+    let usable = local_1;
+    let direction = select(vec2(0f), (screen_normal / vec2(max(len, 0.000001f))), usable);
+    let _e68 = material.outline_width;
+    let width_px = max(_e68, 0f);
+    let _e74 = material.outline_max_distance;
+    let distance_ = min(clip.w, max(_e74, 0f));
+    let _e83 = weft_frame.viewport;
+    let offset = ((((direction * width_px) * 2f) * _e83.zw) * distance_);
+    out.clip_position = vec4<f32>((clip.xy + offset), clip.zw);
+    let _e93 = out;
+    return _e93;
+}
+
+@fragment 
+fn fs_outline() -> @location(0) vec4<f32> {
+    let _e2 = material.outline_color;
+    return vec4<f32>(max(_e2.xyz, vec3(0f)), 1f);
+}
+
+@vertex 
+fn vs_fringe_shadow(in_1: WeftFringeShadowVertex) -> WeftFringeShadowVaryings {
+    var local_2: bool;
+    var out_1: WeftFringeShadowVaryings;
+
+    let _e3 = weft_object.model;
+    let world_1 = (_e3 * vec4<f32>(in_1.position, 1f)).xyz;
+    let _e11 = weft_frame.view_proj;
+    let clip_1 = (_e11 * vec4<f32>(world_1, 1f));
+    let _e17 = weft_frame.light_direction;
+    let l = _e17.xyz;
+    let l_len = length(l);
+    let travel = select(vec3(0f), (-(l) / vec3(max(l_len, 0.000001f))), (l_len > 0.000001f));
+    let _e32 = material.fringe_shadow_length;
+    let length_world = max(_e32, 0f);
+    let _e37 = weft_frame.view_proj;
+    let pushed = (_e37 * vec4<f32>((world_1 + (travel * length_world)), 1f));
+    if (clip_1.w > 0.000001f) {
+        local_2 = (pushed.w > 0.000001f);
+    } else {
+        local_2 = false;
+    }
+    let usable_1 = local_2;
+    let offset_ndc = select(vec2(0f), ((pushed.xy / vec2(max(pushed.w, 0.000001f))) - (clip_1.xy / vec2(max(clip_1.w, 0.000001f)))), usable_1);
+    out_1.clip_position = vec4<f32>((clip_1.xy + (offset_ndc * clip_1.w)), clip_1.zw);
+    let _e77 = out_1;
+    return _e77;
+}
+
+@fragment 
+fn fs_fringe_shadow() -> @location(0) vec4<f32> {
+    let _e2 = material.fringe_shadow_color;
+    return vec4<f32>(max(_e2.xyz, vec3(0f)), 1f);
+}
+
+@vertex 
+fn vs_main(in_2: WeftVertexInput) -> WeftVaryings {
+    var out_2: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm_1 = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    let world_2 = (model * vec4<f32>(in_2.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out_2.clip_position = (_e43 * vec4<f32>(world_2.xyz, 1f));
+    out_2.world_position = world_2.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out_2.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out_2.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out_2.uv0_ = in_2.uv0_;
+    let _e66 = out_2;
+    return _e66;
+}
+
+@fragment 
+fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
+    var color: vec3<f32>;
+    var lobes: WeftHairLobes;
+
+    let _e4 = material.base_map_st;
+    let _e5 = weft_transform_uv(in_3.uv0_, _e4);
+    let _e8 = material.base_color;
+    let _e11 = textureSample(base_map, material_sampler, _e5);
+    let base_rgba = (_e8 * _e11);
+    let base = saturate(base_rgba.xyz);
+    let alpha = saturate(base_rgba.w);
+    let _e22 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e24 = weft_safe_normalize(in_3.world_normal, _e22);
+    let _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
+    let _e28 = hair_strand(_e26, in_3.uv0_);
+    let _e30 = hair_jitter(in_3.uv0_);
+    let _e31 = weft_main_light_direction();
+    let _e32 = weft_main_light_radiance();
+    let _e33 = weft_sh_irradiance(_e24);
+    let n_dot_l = dot(_e24, _e31);
+    {
+        let _e37 = weft_safe_normalize((_e31 + _e22), _e24);
+        let _e40 = material.primary_shift;
+        let _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
+        let _e47 = material.secondary_shift;
+        let _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
+        let _e54 = material.primary_color;
+        let _e58 = material.primary_intensity;
+        let _e61 = material.primary_exponent;
+        let _e62 = hair_kajiya_kay(_e44, _e37, _e61);
+        let primary = (_e54.xyz * (_e58 * _e62));
+        let _e67 = material.secondary_color;
+        let _e71 = material.secondary_intensity;
+        let _e74 = material.secondary_exponent;
+        let _e75 = hair_kajiya_kay(_e51, _e37, _e74);
+        let secondary = (_e67.xyz * (_e71 * _e75));
+        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * saturate(n_dot_l));
+        color = (direct + (_e33 * base));
+    }
+    let _e87 = color;
+    let radiance = clamp(_e87, vec3(0f), vec3(65504f));
+    return vec4<f32>(radiance, alpha);
+}

@@ -1,0 +1,372 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_4 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_4 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    metal::float4 base_map_st;
+    uint strand_along_tangent;
+    char _pad3[12];
+    metal::float4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    metal::float4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    char _pad12[4];
+    metal::float4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    char _pad20[4];
+    metal::float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    char _pad23[8];
+    metal::float4 fringe_shadow_color;
+    float fringe_shadow_length;
+    char _pad25[12];
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct WeftHairLobes {
+    metal::float3 s;
+    metal::float3 albedo;
+    metal::float3 back;
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_HAIR_MIN_BETA_M = 0.05;
+constant float WEFT_HAIR_MIN_BETA_N = 0.05;
+constant uint HAIR_REFERENCE_CELLS = 64u;
+constant uint HAIR_FAST_CELLS = 12u;
+constant float HAIR_TERMINATOR = 0.25;
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = (n.x * n.y) * a;
+    return metal::float3(1.0 + (((s * n.x) * n.x) * a), s * b, -(s) * n.x);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_4 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_1 = metal::dot(t_proj, t_proj);
+    bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_2, t_1) * s_1;
+    return metal::float3x3(t_1, b_1, n_2);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+metal::float3 hair_strand(
+    metal::float3x3 frame,
+    metal::float2 uv0_,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> flow_map
+) {
+    metal::float2 ts = {};
+    uint _e10 = material.strand_along_tangent;
+    ts = (_e10 != 0u) ? metal::float2(1.0, 0.0) : metal::float2(0.0, 1.0);
+    {
+        metal::float4 _e17 = flow_map.sample(material_sampler, uv0_);
+        metal::float2 f = (_e17.xy * 2.0) - metal::float2(1.0);
+        float len2_2 = metal::dot(f, f);
+        metal::float2 _e25 = ts;
+        ts = (len2_2 > 0.0001) ? (f * metal::rsqrt(metal::max(len2_2, 0.000000000001))) : _e25;
+    }
+    float _e35 = ts.x;
+    float _e39 = ts.y;
+    metal::float3 _e43 = weft_safe_normalize((frame[0] * _e35) + (frame[1] * _e39), frame[1]);
+    return _e43;
+}
+
+float hair_hash(
+    uint x
+) {
+    uint state = (x * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+float hair_value_noise(
+    float x_1,
+    float period
+) {
+    float p = metal::max(metal::rint(period), 1.0);
+    float cell = metal::floor(x_1);
+    float f_1 = x_1 - cell;
+    float c0_ = cell - (p * metal::floor(cell / p));
+    float c1_ = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
+    float _e19 = hair_hash(naga_f2u32(c0_));
+    float _e21 = hair_hash(naga_f2u32(c1_));
+    return metal::mix(_e19, _e21, (f_1 * f_1) * (3.0 - (2.0 * f_1))) - 0.5;
+}
+
+float hair_jitter(
+    metal::float2 uv0_1,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> jitter_map,
+    metal::texture2d<float, metal::access::sample> uv_rotate_mask
+) {
+    metal::float4 _e3 = uv_rotate_mask.sample(material_sampler, uv0_1);
+    float mask = metal::step(0.8, _e3.x);
+    float _e9 = material.anisotropic_direction;
+    float a_1 = ((_e9) * 0.017453292519943295474);
+    float c = metal::cos(a_1);
+    float s_2 = metal::sin(a_1);
+    metal::float2 rotated = metal::float2((c * uv0_1.x) + (s_2 * uv0_1.y), (-(s_2) * uv0_1.x) + (c * uv0_1.y));
+    metal::float4 _e30 = material.jitter_map_st;
+    metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
+    metal::float4 _e34 = jitter_map.sample(material_sampler, _e31);
+    float j = _e34.x;
+    uint _e40 = material.strand_along_tangent;
+    float across = (_e40 != 0u) ? _e31.y : _e31.x;
+    float _e46 = material.jitter_strength;
+    float _e50 = material.strand_noise;
+    float _e53 = material.strand_density;
+    float _e57 = material.strand_density;
+    float _e58 = hair_value_noise(across * _e53, _e57);
+    return (_e46 * j) + (_e50 * _e58);
+}
+
+float hair_kajiya_kay(
+    metal::float3 t,
+    metal::float3 h,
+    float exponent
+) {
+    float t_dot_h = metal::clamp(metal::dot(t, h), -1.0, 1.0);
+    float sin_th = metal::sqrt(metal::max(1.0 - (t_dot_h * t_dot_h), 0.0));
+    float dir_atten = metal::smoothstep(-1.0, 0.0, t_dot_h);
+    return dir_atten * metal::pow(sin_th, metal::max(exponent, 1.0));
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_2 [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_2 };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_1 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_2 [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
+, metal::texture2d<float, metal::access::sample> flow_map [[texture(1)]]
+, metal::texture2d<float, metal::access::sample> jitter_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(3)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_2 };
+    metal::float3 color = {};
+    WeftHairLobes lobes = {};
+    metal::float4 _e4 = material.base_map_st;
+    metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
+    metal::float4 _e8 = material.base_color;
+    metal::float4 _e11 = base_map.sample(material_sampler, _e5);
+    metal::float4 base_rgba = _e8 * _e11;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha = metal::saturate(base_rgba.w);
+    metal::float3 _e22 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e24 = weft_safe_normalize(in_1.world_normal, _e22);
+    metal::float3x3 _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
+    metal::float3 _e28 = hair_strand(_e26, in_1.uv0_, material, material_sampler, flow_map);
+    float _e30 = hair_jitter(in_1.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e31 = weft_main_light_direction(weft_frame);
+    metal::float3 _e32 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e33 = weft_sh_irradiance(_e24, weft_frame);
+    float n_dot_l = metal::dot(_e24, _e31);
+    {
+        metal::float3 _e37 = weft_safe_normalize(_e31 + _e22, _e24);
+        float _e40 = material.primary_shift;
+        metal::float3 _e44 = weft_safe_normalize(_e28 + ((_e40 + _e30) * _e24), _e28);
+        float _e47 = material.secondary_shift;
+        metal::float3 _e51 = weft_safe_normalize(_e28 + ((_e47 + _e30) * _e24), _e28);
+        metal::float4 _e54 = material.primary_color;
+        float _e58 = material.primary_intensity;
+        float _e61 = material.primary_exponent;
+        float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
+        metal::float3 primary = _e54.xyz * (_e58 * _e62);
+        metal::float4 _e67 = material.secondary_color;
+        float _e71 = material.secondary_intensity;
+        float _e74 = material.secondary_exponent;
+        float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
+        metal::float3 secondary = _e67.xyz * (_e71 * _e75);
+        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * metal::saturate(n_dot_l);
+        color = direct + (_e33 * base);
+    }
+    metal::float3 _e87 = color;
+    metal::float3 radiance = metal::clamp(_e87, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, alpha) };
+}

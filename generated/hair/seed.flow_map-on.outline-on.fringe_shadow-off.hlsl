@@ -1,0 +1,405 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float4 base_map_st;
+    uint strand_along_tangent;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float4 jitter_map_st;
+    float jitter_strength;
+    float anisotropic_direction;
+    float strand_noise;
+    float strand_density;
+    float4 primary_color;
+    float primary_exponent;
+    float primary_intensity;
+    float primary_shift;
+    int _pad12_0;
+    float4 secondary_color;
+    float secondary_exponent;
+    float secondary_intensity;
+    float secondary_shift;
+    float roughness;
+    float azimuthal_roughness;
+    float scale_angle;
+    float ior;
+    int _pad20_0;
+    float4 outline_color;
+    float outline_width;
+    float outline_max_distance;
+    int _pad23_0;
+    int _pad23_1;
+    float4 fringe_shadow_color;
+    float fringe_shadow_length;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct WeftOutlineVertex {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+};
+
+struct WeftOutlineVaryings {
+    float4 clip_position : SV_Position;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftHairLobes {
+    float3 s;
+    int _pad1_0;
+    float3 albedo;
+    int _pad2_0;
+    float3 back;
+    int _end_pad_0;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_HAIR_MIN_BETA_M = 0.05;
+static const float WEFT_HAIR_MIN_BETA_N = 0.05;
+static const uint HAIR_REFERENCE_CELLS = 64u;
+static const uint HAIR_FAST_CELLS = 12u;
+static const float HAIR_TERMINATOR = 0.25;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+Texture2D<float4> base_map : register(t3, space1);
+Texture2D<float4> flow_map : register(t4, space1);
+Texture2D<float4> jitter_map : register(t5, space1);
+Texture2D<float4> uv_rotate_mask : register(t6, space1);
+
+struct VertexOutput_vs_outline {
+    float4 clip_position : SV_Position;
+};
+
+struct VertexOutput_vs_main {
+    float3 world_position_1 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_2 : LOC3;
+    float4 clip_position_1 : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_3 : LOC3;
+    float4 clip_position_2 : SV_Position;
+};
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n)
+{
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
+    float b = ((n.x * n.y) * a);
+    return float3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_2);
+    float3 t_1 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_2, t_1) * s_1);
+    return float3x3(t_1, b_1, n_2);
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float3 hair_strand(float3x3 frame, float2 uv0_)
+{
+    float2 ts = (float2)0;
+
+    uint _e10 = material.strand_along_tangent;
+    ts = ((_e10 != 0u) ? float2(1.0, 0.0) : float2(0.0, 1.0));
+    {
+        float4 _e17 = flow_map.Sample(material_sampler, uv0_);
+        float2 f = ((_e17.xy * 2.0) - (1.0).xx);
+        float len2_2 = dot(f, f);
+        float2 _e25 = ts;
+        ts = ((len2_2 > 0.0001) ? (f * rsqrt(max(len2_2, 1e-12))) : _e25);
+    }
+    float _e35 = ts.x;
+    float _e39 = ts.y;
+    const float3 _e43 = weft_safe_normalize(((frame[0] * _e35) + (frame[1] * _e39)), frame[1]);
+    return _e43;
+}
+
+float hair_hash(uint x)
+{
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+float hair_value_noise(float x_1, float period)
+{
+    float p = max(round(period), 1.0);
+    float cell = floor(x_1);
+    float f_1 = (x_1 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_ = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    const float _e19 = hair_hash(naga_f2u32(c0_));
+    const float _e21 = hair_hash(naga_f2u32(c1_));
+    return (lerp(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+}
+
+float hair_jitter(float2 uv0_1)
+{
+    float4 _e3 = uv_rotate_mask.Sample(material_sampler, uv0_1);
+    float mask = step(0.8, _e3.x);
+    float _e9 = material.anisotropic_direction;
+    float a_1 = radians(_e9);
+    float c = cos(a_1);
+    float s_2 = sin(a_1);
+    float2 rotated = float2(((c * uv0_1.x) + (s_2 * uv0_1.y)), ((-(s_2) * uv0_1.x) + (c * uv0_1.y)));
+    float4 _e30 = material.jitter_map_st;
+    const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
+    float4 _e34 = jitter_map.Sample(material_sampler, _e31);
+    float j = _e34.x;
+    uint _e40 = material.strand_along_tangent;
+    float across = ((_e40 != 0u) ? _e31.y : _e31.x);
+    float _e46 = material.jitter_strength;
+    float _e50 = material.strand_noise;
+    float _e53 = material.strand_density;
+    float _e57 = material.strand_density;
+    const float _e58 = hair_value_noise((across * _e53), _e57);
+    return ((_e46 * j) + (_e50 * _e58));
+}
+
+float hair_kajiya_kay(float3 t, float3 h, float exponent)
+{
+    float t_dot_h = clamp(dot(t, h), -1.0, 1.0);
+    float sin_th = sqrt(max((1.0 - (t_dot_h * t_dot_h)), 0.0));
+    float dir_atten = smoothstep(-1.0, 0.0, t_dot_h);
+    return (dir_atten * pow(sin_th, max(exponent, 1.0)));
+}
+
+VertexOutput_vs_outline vs_outline(WeftOutlineVertex in_)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    WeftOutlineVaryings out_ = (WeftOutlineVaryings)0;
+
+    float4x4 _e3 = weft_object.model;
+    float4 world = mul(float4(in_.position, 1.0), _e3);
+    float4x4 nm = weft_object.normal_matrix;
+    float3 normal = mul(in_.normal, float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz));
+    float4x4 _e22 = weft_frame.view_proj;
+    float4 clip_ = mul(float4(world.xyz, 1.0), _e22);
+    float4 _e29 = weft_frame.viewport;
+    float2 size = _e29.xy;
+    float4x4 _e33 = weft_frame.view_proj;
+    float2 screen_normal = (mul(float4(normal, 0.0), _e33).xy * size);
+    float len = length(screen_normal);
+    if ((len > 1e-6)) {
+        float _e47 = weft_frame.viewport.x;
+        local = (_e47 > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e51 = local;
+    if (_e51) {
+        local_1 = (clip_.w > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool usable = local_1;
+    float2 direction = (usable ? (screen_normal / (max(len, 1e-6)).xx) : (0.0).xx);
+    float _e68 = material.outline_width;
+    float width_px = max(_e68, 0.0);
+    float _e74 = material.outline_max_distance;
+    float distance_ = min(clip_.w, max(_e74, 0.0));
+    float4 _e83 = weft_frame.viewport;
+    float2 offset = ((((direction * width_px) * 2.0) * _e83.zw) * distance_);
+    out_.clip_position = float4((clip_.xy + offset), clip_.zw);
+    WeftOutlineVaryings _e93 = out_;
+    const WeftOutlineVaryings weftoutlinevaryings = _e93;
+    const VertexOutput_vs_outline weftoutlinevaryings_1 = { weftoutlinevaryings.clip_position };
+    return weftoutlinevaryings_1;
+}
+
+float4 fs_outline() : SV_Target0
+{
+    float4 _e2 = material.outline_color;
+    return float4(max(_e2.xyz, (0.0).xxx), 1.0);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_1)
+{
+    WeftVaryings out_1 = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm_1 = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    float4 world_1 = mul(float4(in_1.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = mul(float4(world_1.xyz, 1.0), _e43);
+    out_1.world_position = world_1.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_1.normal, normal3_), (0.0).xxx);
+    out_1.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_1.tangent.xyz, model3_), (0.0).xxx);
+    out_1.world_tangent = float4(_e62, bitangent_sign);
+    out_1.uv0_ = in_1.uv0_;
+    WeftVaryings _e66 = out_1;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    float3 color = (float3)0;
+    WeftHairLobes lobes = (WeftHairLobes)0;
+
+    float4 _e4 = material.base_map_st;
+    const float2 _e5 = weft_transform_uv(in_2.uv0_, _e4);
+    float4 _e8 = material.base_color;
+    float4 _e11 = base_map.Sample(material_sampler, _e5);
+    float4 base_rgba = (_e8 * _e11);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha = saturate(base_rgba.w);
+    const float3 _e22 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e24 = weft_safe_normalize(in_2.world_normal, _e22);
+    const float3x3 _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
+    const float3 _e28 = hair_strand(_e26, in_2.uv0_);
+    const float _e30 = hair_jitter(in_2.uv0_);
+    const float3 _e31 = weft_main_light_direction();
+    const float3 _e32 = weft_main_light_radiance();
+    const float3 _e33 = weft_sh_irradiance(_e24);
+    float n_dot_l = dot(_e24, _e31);
+    {
+        const float3 _e37 = weft_safe_normalize((_e31 + _e22), _e24);
+        float _e40 = material.primary_shift;
+        const float3 _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
+        float _e47 = material.secondary_shift;
+        const float3 _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
+        float4 _e54 = material.primary_color;
+        float _e58 = material.primary_intensity;
+        float _e61 = material.primary_exponent;
+        const float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
+        float3 primary = (_e54.xyz * (_e58 * _e62));
+        float4 _e67 = material.secondary_color;
+        float _e71 = material.secondary_intensity;
+        float _e74 = material.secondary_exponent;
+        const float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
+        float3 secondary = (_e67.xyz * (_e71 * _e75));
+        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * saturate(n_dot_l));
+        color = (direct + (_e33 * base));
+    }
+    float3 _e87 = color;
+    float3 radiance = clamp(_e87, (0.0).xxx, (65504.0).xxx);
+    return float4(radiance, alpha);
+}
