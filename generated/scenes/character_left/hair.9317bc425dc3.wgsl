@@ -23,6 +23,14 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftFringeShadowVertex {
+    @location(0) position: vec3<f32>,
+}
+
+struct WeftFringeShadowVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -329,19 +337,19 @@ fn weft_hair_attenuation(hair_3: WeftHair, sin_o_3: f32, cos_o_3: f32, h: f32) -
 }
 
 fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i_1: vec3<f32>) -> WeftHairAngles {
-    var out_2: WeftHairAngles;
+    var out_3: WeftHairAngles;
 
     let sin_o_4 = clamp(dot(o, t), -1f, 1f);
     let sin_i_2 = clamp(dot(i_1, t), -1f, 1f);
     let _e16 = weft_hair_safe_sqrt((1f - (sin_o_4 * sin_o_4)));
     let _e20 = weft_hair_safe_sqrt((1f - (sin_i_2 * sin_i_2)));
-    out_2.theta = vec4<f32>(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = vec4<f32>(sin_o_4, _e16, sin_i_2, _e20);
     let o_perp = (o - (sin_o_4 * t));
     let i_perp = (i_1 - (sin_i_2 * t));
     let len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     let cos_phi = select(1f, (dot(o_perp, i_perp) * inverseSqrt(max(len2_2, 0.000000000000000000000000000001f))), (len2_2 > 0.000000000001f));
-    out_2.phi = acos(clamp(cos_phi, -1f, 1f));
-    let _e43 = out_2;
+    out_3.phi = acos(clamp(cos_phi, -1f, 1f));
+    let _e43 = out_3;
     return _e43;
 }
 
@@ -393,7 +401,7 @@ fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftH
     var g0_: f32 = -1.5707964f;
     var d0_1: vec3<f32>;
     var k: u32 = 0u;
-    var out_3: WeftHairLobes;
+    var out_4: WeftHairLobes;
 
     let th = angles.theta;
     let _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
@@ -443,14 +451,14 @@ fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftH
     }
     let _e143 = s_5;
     let _e144 = weights;
-    out_3.s = (_e143 / vec3(_e144));
+    out_4.s = (_e143 / vec3(_e144));
     let _e148 = albedo;
     let _e149 = weights;
-    out_3.albedo = (_e148 / vec3(_e149));
+    out_4.albedo = (_e148 / vec3(_e149));
     let _e153 = back;
     let _e154 = weights;
-    out_3.back = (_e153 / vec3(_e154));
-    let _e157 = out_3;
+    out_4.back = (_e153 / vec3(_e154));
+    let _e157 = out_4;
     return _e157;
 }
 
@@ -536,38 +544,70 @@ fn fs_outline() -> @location(0) vec4<f32> {
 }
 
 @vertex 
-fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
-    var out_1: WeftVaryings;
+fn vs_fringe_shadow(in_1: WeftFringeShadowVertex) -> WeftFringeShadowVaryings {
+    var local_2: bool;
+    var out_1: WeftFringeShadowVaryings;
+
+    let _e3 = weft_object.model;
+    let world_1 = (_e3 * vec4<f32>(in_1.position, 1f)).xyz;
+    let _e11 = weft_frame.view_proj;
+    let clip_1 = (_e11 * vec4<f32>(world_1, 1f));
+    let _e17 = weft_frame.light_direction;
+    let l_1 = _e17.xyz;
+    let l_len = length(l_1);
+    let travel = select(vec3(0f), (-(l_1) / vec3(max(l_len, 0.000001f))), (l_len > 0.000001f));
+    let _e32 = weft_frame.view_proj;
+    let pushed = (_e32 * vec4<f32>((world_1 + (travel * 0.16f)), 1f));
+    if (clip_1.w > 0.000001f) {
+        local_2 = (pushed.w > 0.000001f);
+    } else {
+        local_2 = false;
+    }
+    let usable_1 = local_2;
+    let offset_ndc = select(vec2(0f), ((pushed.xy / vec2(max(pushed.w, 0.000001f))) - (clip_1.xy / vec2(max(clip_1.w, 0.000001f)))), usable_1);
+    out_1.clip_position = vec4<f32>((clip_1.xy + (offset_ndc * clip_1.w)), clip_1.zw);
+    let _e71 = out_1;
+    return _e71;
+}
+
+@fragment 
+fn fs_fringe_shadow() -> @location(0) vec4<f32> {
+    return vec4<f32>(vec3<f32>(0.5704816f, 0.34239164f, 0.34239164f), 1f);
+}
+
+@vertex 
+fn vs_main(in_2: WeftVertexInput) -> WeftVaryings {
+    var out_2: WeftVaryings;
 
     let model = weft_object.model;
     let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
     let nm_1 = weft_object.normal_matrix;
     let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    let world_1 = (model * vec4<f32>(in_1.position, 1f));
+    let world_2 = (model * vec4<f32>(in_2.position, 1f));
     let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in_1.tangent.w < 0f)) * mirror);
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
     let _e43 = weft_frame.view_proj;
-    out_1.clip_position = (_e43 * vec4<f32>(world_1.xyz, 1f));
-    out_1.world_position = world_1.xyz;
-    let _e54 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0f));
-    out_1.world_normal = _e54;
-    let _e60 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0f));
-    out_1.world_tangent = vec4<f32>(_e60, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    let _e64 = out_1;
+    out_2.clip_position = (_e43 * vec4<f32>(world_2.xyz, 1f));
+    out_2.world_position = world_2.xyz;
+    let _e54 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out_2.world_normal = _e54;
+    let _e60 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out_2.world_tangent = vec4<f32>(_e60, bitangent_sign);
+    out_2.uv0_ = in_2.uv0_;
+    let _e64 = out_2;
     return _e64;
 }
 
 @fragment 
-fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
     var color: vec3<f32>;
     var lobes: WeftHairLobes;
 
-    let _e6 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e8 = weft_safe_normalize(in_2.world_normal, _e6);
-    let _e10 = weft_tangent_frame(_e8, in_2.world_tangent);
-    let _e12 = hair_strand(_e10, in_2.uv0_);
-    let _e14 = hair_jitter(in_2.uv0_);
+    let _e6 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
+    let _e8 = weft_safe_normalize(in_3.world_normal, _e6);
+    let _e10 = weft_tangent_frame(_e8, in_3.world_tangent);
+    let _e12 = hair_strand(_e10, in_3.uv0_);
+    let _e14 = hair_jitter(in_3.uv0_);
     let _e15 = weft_main_light_direction();
     let _e16 = weft_main_light_radiance();
     let _e17 = weft_sh_irradiance(_e8);

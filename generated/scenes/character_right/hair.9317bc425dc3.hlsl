@@ -23,6 +23,14 @@ struct WeftOutlineVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftFringeShadowVertex {
+    float3 position : LOC0;
+};
+
+struct WeftFringeShadowVaryings {
+    float4 clip_position : SV_Position;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -109,12 +117,16 @@ struct VertexOutput_vs_outline {
     float4 clip_position : SV_Position;
 };
 
+struct VertexOutput_vs_fringe_shadow {
+    float4 clip_position_1 : SV_Position;
+};
+
 struct VertexOutput_vs_main {
     float3 world_position_1 : LOC0;
     float3 world_normal : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
-    float4 clip_position_1 : SV_Position;
+    float4 clip_position_2 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
@@ -122,7 +134,7 @@ struct FragmentInput_fs_main {
     float3 world_normal_1 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
-    float4 clip_position_2 : SV_Position;
+    float4 clip_position_3 : SV_Position;
 };
 
 float3 weft_safe_normalize(float3 v, float3 fallback)
@@ -395,19 +407,19 @@ WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float 
 
 WeftHairAngles weft_hair_angles(float3 t, float3 o, float3 i_1)
 {
-    WeftHairAngles out_2 = (WeftHairAngles)0;
+    WeftHairAngles out_3 = (WeftHairAngles)0;
 
     float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
     float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
     const float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
     const float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_2.theta = float4(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = float4(sin_o_4, _e16, sin_i_2, _e20);
     float3 o_perp = (o - (sin_o_4 * t));
     float3 i_perp = (i_1 - (sin_i_2 * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * rsqrt(max(len2_2, 1e-30))) : 1.0);
-    out_2.phi = acos(clamp(cos_phi, -1.0, 1.0));
-    WeftHairAngles _e43 = out_2;
+    out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
     const WeftHairAngles wefthairangles = _e43;
     return wefthairangles;
 }
@@ -464,7 +476,7 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     float g0_ = -1.5707964;
     float3 d0_1 = (float3)0;
     uint k = 0u;
-    WeftHairLobes out_3 = (WeftHairLobes)0;
+    WeftHairLobes out_4 = (WeftHairLobes)0;
 
     float4 th = angles.theta;
     const float4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
@@ -519,14 +531,14 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     }
     float3 _e143 = s_5;
     float _e144 = weights;
-    out_3.s = (_e143 / (_e144).xxx);
+    out_4.s = (_e143 / (_e144).xxx);
     float3 _e148 = albedo;
     float _e149 = weights;
-    out_3.albedo = (_e148 / (_e149).xxx);
+    out_4.albedo = (_e148 / (_e149).xxx);
     float3 _e153 = back;
     float _e154 = weights;
-    out_3.back = (_e153 / (_e154).xxx);
-    WeftHairLobes _e157 = out_3;
+    out_4.back = (_e153 / (_e154).xxx);
+    WeftHairLobes _e157 = out_4;
     const WeftHairLobes wefthairlobes = _e157;
     return wefthairlobes;
 }
@@ -622,26 +634,60 @@ float4 fs_outline() : SV_Target0
     return float4(float3(0.0, 0.0, 0.0), 1.0);
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_1)
+VertexOutput_vs_fringe_shadow vs_fringe_shadow(WeftFringeShadowVertex in_1)
 {
-    WeftVaryings out_1 = (WeftVaryings)0;
+    bool local_2 = (bool)0;
+    WeftFringeShadowVaryings out_1 = (WeftFringeShadowVaryings)0;
+
+    float4x4 _e3 = weft_object.model;
+    float3 world_1 = mul(float4(in_1.position, 1.0), _e3).xyz;
+    float4x4 _e11 = weft_frame.view_proj;
+    float4 clip_1 = mul(float4(world_1, 1.0), _e11);
+    float4 _e17 = weft_frame.light_direction;
+    float3 l_1 = _e17.xyz;
+    float l_len = length(l_1);
+    float3 travel = ((l_len > 1e-6) ? (-(l_1) / (max(l_len, 1e-6)).xxx) : (0.0).xxx);
+    float4x4 _e32 = weft_frame.view_proj;
+    float4 pushed = mul(float4((world_1 + (travel * 0.16)), 1.0), _e32);
+    if ((clip_1.w > 1e-6)) {
+        local_2 = (pushed.w > 1e-6);
+    } else {
+        local_2 = false;
+    }
+    bool usable_1 = local_2;
+    float2 offset_ndc = (usable_1 ? ((pushed.xy / (max(pushed.w, 1e-6)).xx) - (clip_1.xy / (max(clip_1.w, 1e-6)).xx)) : (0.0).xx);
+    out_1.clip_position = float4((clip_1.xy + (offset_ndc * clip_1.w)), clip_1.zw);
+    WeftFringeShadowVaryings _e71 = out_1;
+    const WeftFringeShadowVaryings weftfringeshadowvaryings = _e71;
+    const VertexOutput_vs_fringe_shadow weftfringeshadowvaryings_1 = { weftfringeshadowvaryings.clip_position };
+    return weftfringeshadowvaryings_1;
+}
+
+float4 fs_fringe_shadow() : SV_Target0
+{
+    return float4(float3(0.5704816, 0.34239164, 0.34239164), 1.0);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_2)
+{
+    WeftVaryings out_2 = (WeftVaryings)0;
 
     float4x4 model = weft_object.model;
     float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
     float4x4 nm_1 = weft_object.normal_matrix;
     float3x3 normal3_ = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    float4 world_1 = mul(float4(in_1.position, 1.0), model);
+    float4 world_2 = mul(float4(in_2.position, 1.0), model);
     float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
     float4x4 _e43 = weft_frame.view_proj;
-    out_1.clip_position = mul(float4(world_1.xyz, 1.0), _e43);
-    out_1.world_position = world_1.xyz;
-    const float3 _e54 = weft_safe_normalize(mul(in_1.normal, normal3_), (0.0).xxx);
-    out_1.world_normal = _e54;
-    const float3 _e60 = weft_safe_normalize(mul(in_1.tangent.xyz, model3_), (0.0).xxx);
-    out_1.world_tangent = float4(_e60, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e64 = out_1;
+    out_2.clip_position = mul(float4(world_2.xyz, 1.0), _e43);
+    out_2.world_position = world_2.xyz;
+    const float3 _e54 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_2.world_normal = _e54;
+    const float3 _e60 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_2.world_tangent = float4(_e60, bitangent_sign);
+    out_2.uv0_ = in_2.uv0_;
+    WeftVaryings _e64 = out_2;
     const WeftVaryings weftvaryings = _e64;
     const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
     return weftvaryings_1;
@@ -649,15 +695,15 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    WeftVaryings in_3 = { fragmentinput_fs_main.clip_position_3, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
-    const float3 _e6 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e8 = weft_safe_normalize(in_2.world_normal, _e6);
-    const float3x3 _e10 = weft_tangent_frame(_e8, in_2.world_tangent);
-    const float3 _e12 = hair_strand(_e10, in_2.uv0_);
-    const float _e14 = hair_jitter(in_2.uv0_);
+    const float3 _e6 = weft_view_direction(in_3.world_position, float3(0.0, 0.0, 1.0));
+    const float3 _e8 = weft_safe_normalize(in_3.world_normal, _e6);
+    const float3x3 _e10 = weft_tangent_frame(_e8, in_3.world_tangent);
+    const float3 _e12 = hair_strand(_e10, in_3.uv0_);
+    const float _e14 = hair_jitter(in_3.uv0_);
     const float3 _e15 = weft_main_light_direction();
     const float3 _e16 = weft_main_light_radiance();
     const float3 _e17 = weft_sh_irradiance(_e8);

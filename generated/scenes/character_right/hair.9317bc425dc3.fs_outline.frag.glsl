@@ -20,6 +20,12 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -72,18 +78,7 @@ const uint HAIR_REFERENCE_CELLS = 64u;
 const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
-
-layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
-
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-layout(location = 2) in vec4 _p2vs_location2;
-layout(location = 3) in vec2 _p2vs_location3;
-layout(location = 0) smooth out vec3 _vs2fs_location0;
-layout(location = 1) smooth out vec3 _vs2fs_location1;
-layout(location = 2) smooth out vec4 _vs2fs_location2;
-layout(location = 3) smooth out vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -107,47 +102,6 @@ float weft_f_dielectric(float cos_i, float eta) {
     float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
     float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
-}
-
-vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_vs.light_direction;
-    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e5;
-}
-
-vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_vs.light_color;
-    return max(_e2.xyz, vec3(0.0));
-}
-
-vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_vs.camera_position;
-    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
-    return _e7;
-}
-
-vec3 weft_sh_irradiance(vec3 n_1) {
-    vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_vs.sh;
-    e = (sh[0].xyz * 0.282095);
-    vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
-    vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
-    vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
-    vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
-    vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
-    vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
-    vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
-    vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
-    vec3 _e91 = e;
-    return max(_e91, vec3(0.0));
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -322,18 +276,18 @@ WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float 
 }
 
 WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
-    WeftHairAngles out_2 = WeftHairAngles(vec4(0.0), 0.0);
+    WeftHairAngles out_3 = WeftHairAngles(vec4(0.0), 0.0);
     float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
     float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
     float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
     float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_2.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
     vec3 o_perp = (o - (sin_o_4 * t));
     vec3 i_perp = (i_1 - (sin_i_2 * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
-    out_2.phi = acos(clamp(cos_phi, -1.0, 1.0));
-    WeftHairAngles _e43 = out_2;
+    out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
     return _e43;
 }
 
@@ -384,7 +338,7 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     float g0_ = -1.5707964;
     vec3 d0_1 = vec3(0.0);
     uint k = 0u;
-    WeftHairLobes out_3 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    WeftHairLobes out_4 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 th = angles.theta;
     vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
     float _e11 = weft_hair_etap(hair_4, th.x, th.y);
@@ -435,14 +389,14 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     }
     vec3 _e143 = s_5;
     float _e144 = weights;
-    out_3.s = (_e143 / vec3(_e144));
+    out_4.s = (_e143 / vec3(_e144));
     vec3 _e148 = albedo;
     float _e149 = weights;
-    out_3.albedo = (_e148 / vec3(_e149));
+    out_4.albedo = (_e148 / vec3(_e149));
     vec3 _e153 = back;
     float _e154 = weights;
-    out_3.back = (_e153 / vec3(_e154));
-    WeftHairLobes _e157 = out_3;
+    out_4.back = (_e153 / vec3(_e154));
+    WeftHairLobes _e157 = out_4;
     return _e157;
 }
 
@@ -473,30 +427,7 @@ float hair_value_noise(float x_8, float period) {
 }
 
 void main() {
-    WeftVertexInput in_1 = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftVaryings out_1 = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
-    mat4x4 model = _group_2_binding_0_vs.model;
-    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec4 world = (model * vec4(in_1.position, 1.0));
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
-    out_1.clip_position = (_e43 * vec4(world.xyz, 1.0));
-    out_1.world_position = world.xyz;
-    vec3 _e54 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0.0));
-    out_1.world_normal = _e54;
-    vec3 _e60 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0.0));
-    out_1.world_tangent = vec4(_e60, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e64 = out_1;
-    gl_Position = _e64.clip_position;
-    _vs2fs_location0 = _e64.world_position;
-    _vs2fs_location1 = _e64.world_normal;
-    _vs2fs_location2 = _e64.world_tangent;
-    _vs2fs_location3 = _e64.uv0_;
-    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    _fs2p_location0 = vec4(vec3(0.0, 0.0, 0.0), 1.0);
     return;
 }
 

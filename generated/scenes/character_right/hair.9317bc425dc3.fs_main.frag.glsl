@@ -20,6 +20,12 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -319,18 +325,18 @@ WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float 
 }
 
 WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
-    WeftHairAngles out_2 = WeftHairAngles(vec4(0.0), 0.0);
+    WeftHairAngles out_3 = WeftHairAngles(vec4(0.0), 0.0);
     float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
     float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
     float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
     float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_2.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
     vec3 o_perp = (o - (sin_o_4 * t));
     vec3 i_perp = (i_1 - (sin_i_2 * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
-    out_2.phi = acos(clamp(cos_phi, -1.0, 1.0));
-    WeftHairAngles _e43 = out_2;
+    out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
     return _e43;
 }
 
@@ -381,7 +387,7 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     float g0_ = -1.5707964;
     vec3 d0_1 = vec3(0.0);
     uint k = 0u;
-    WeftHairLobes out_3 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    WeftHairLobes out_4 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 th = angles.theta;
     vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
     float _e11 = weft_hair_etap(hair_4, th.x, th.y);
@@ -432,14 +438,14 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     }
     vec3 _e143 = s_5;
     float _e144 = weights;
-    out_3.s = (_e143 / vec3(_e144));
+    out_4.s = (_e143 / vec3(_e144));
     vec3 _e148 = albedo;
     float _e149 = weights;
-    out_3.albedo = (_e148 / vec3(_e149));
+    out_4.albedo = (_e148 / vec3(_e149));
     vec3 _e153 = back;
     float _e154 = weights;
-    out_3.back = (_e153 / vec3(_e154));
-    WeftHairLobes _e157 = out_3;
+    out_4.back = (_e153 / vec3(_e154));
+    WeftHairLobes _e157 = out_4;
     return _e157;
 }
 
@@ -480,14 +486,14 @@ float hair_jitter(vec2 uv0_1) {
 }
 
 void main() {
-    WeftVaryings in_2 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    WeftVaryings in_3 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 color = vec3(0.0);
     WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
-    vec3 _e6 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e8 = weft_safe_normalize(in_2.world_normal, _e6);
-    mat3x3 _e10 = weft_tangent_frame(_e8, in_2.world_tangent);
-    vec3 _e12 = hair_strand(_e10, in_2.uv0_);
-    float _e14 = hair_jitter(in_2.uv0_);
+    vec3 _e6 = weft_view_direction(in_3.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 _e8 = weft_safe_normalize(in_3.world_normal, _e6);
+    mat3x3 _e10 = weft_tangent_frame(_e8, in_3.world_tangent);
+    vec3 _e12 = hair_strand(_e10, in_3.uv0_);
+    float _e14 = hair_jitter(in_3.uv0_);
     vec3 _e15 = weft_main_light_direction();
     vec3 _e16 = weft_main_light_radiance();
     vec3 _e17 = weft_sh_irradiance(_e8);

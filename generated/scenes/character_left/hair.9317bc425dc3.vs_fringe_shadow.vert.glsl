@@ -20,6 +20,12 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -77,7 +83,6 @@ layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0
 layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
 layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -316,18 +321,18 @@ WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float 
 }
 
 WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
-    WeftHairAngles out_2 = WeftHairAngles(vec4(0.0), 0.0);
+    WeftHairAngles out_3 = WeftHairAngles(vec4(0.0), 0.0);
     float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
     float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
     float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
     float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_2.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
     vec3 o_perp = (o - (sin_o_4 * t));
     vec3 i_perp = (i_1 - (sin_i_2 * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
-    out_2.phi = acos(clamp(cos_phi, -1.0, 1.0));
-    WeftHairAngles _e43 = out_2;
+    out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
     return _e43;
 }
 
@@ -378,7 +383,7 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     float g0_ = -1.5707964;
     vec3 d0_1 = vec3(0.0);
     uint k = 0u;
-    WeftHairLobes out_3 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    WeftHairLobes out_4 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 th = angles.theta;
     vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
     float _e11 = weft_hair_etap(hair_4, th.x, th.y);
@@ -429,14 +434,14 @@ WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
     }
     vec3 _e143 = s_5;
     float _e144 = weights;
-    out_3.s = (_e143 / vec3(_e144));
+    out_4.s = (_e143 / vec3(_e144));
     vec3 _e148 = albedo;
     float _e149 = weights;
-    out_3.albedo = (_e148 / vec3(_e149));
+    out_4.albedo = (_e148 / vec3(_e149));
     vec3 _e153 = back;
     float _e154 = weights;
-    out_3.back = (_e153 / vec3(_e154));
-    WeftHairLobes _e157 = out_3;
+    out_4.back = (_e153 / vec3(_e154));
+    WeftHairLobes _e157 = out_4;
     return _e157;
 }
 
@@ -467,41 +472,29 @@ float hair_value_noise(float x_8, float period) {
 }
 
 void main() {
-    WeftOutlineVertex in_ = WeftOutlineVertex(_p2vs_location0, _p2vs_location1);
-    bool local = false;
-    bool local_1 = false;
-    WeftOutlineVaryings out_ = WeftOutlineVaryings(vec4(0.0));
+    WeftFringeShadowVertex in_1 = WeftFringeShadowVertex(_p2vs_location0);
+    bool local_2 = false;
+    WeftFringeShadowVaryings out_1 = WeftFringeShadowVaryings(vec4(0.0));
     mat4x4 _e3 = _group_2_binding_0_vs.model;
-    vec4 world = (_e3 * vec4(in_.position, 1.0));
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    vec3 normal = (mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in_.normal);
-    mat4x4 _e22 = _group_0_binding_0_vs.view_proj;
-    vec4 clip = (_e22 * vec4(world.xyz, 1.0));
-    vec4 _e29 = _group_0_binding_0_vs.viewport;
-    vec2 size = _e29.xy;
-    mat4x4 _e33 = _group_0_binding_0_vs.view_proj;
-    vec2 screen_normal = ((_e33 * vec4(normal, 0.0)).xy * size);
-    float len = length(screen_normal);
-    if ((len > 1e-6)) {
-        float _e47 = _group_0_binding_0_vs.viewport.x;
-        local = (_e47 > 0.0);
+    vec3 world = (_e3 * vec4(in_1.position, 1.0)).xyz;
+    mat4x4 _e11 = _group_0_binding_0_vs.view_proj;
+    vec4 clip = (_e11 * vec4(world, 1.0));
+    vec4 _e17 = _group_0_binding_0_vs.light_direction;
+    vec3 l_1 = _e17.xyz;
+    float l_len = length(l_1);
+    vec3 travel = ((l_len > 1e-6) ? (-(l_1) / vec3(max(l_len, 1e-6))) : vec3(0.0));
+    mat4x4 _e32 = _group_0_binding_0_vs.view_proj;
+    vec4 pushed = (_e32 * vec4((world + (travel * 0.16)), 1.0));
+    if ((clip.w > 1e-6)) {
+        local_2 = (pushed.w > 1e-6);
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool _e51 = local;
-    if (_e51) {
-        local_1 = (clip.w > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool usable = local_1;
-    vec2 direction = (usable ? (screen_normal / vec2(max(len, 1e-6))) : vec2(0.0));
-    float distance_ = min(clip.w, 10.0);
-    vec4 _e74 = _group_0_binding_0_vs.viewport;
-    vec2 offset = ((((direction * 1.5) * 2.0) * _e74.zw) * distance_);
-    out_.clip_position = vec4((clip.xy + offset), clip.zw);
-    WeftOutlineVaryings _e84 = out_;
-    gl_Position = _e84.clip_position;
+    bool usable = local_2;
+    vec2 offset_ndc = (usable ? ((pushed.xy / vec2(max(pushed.w, 1e-6))) - (clip.xy / vec2(max(clip.w, 1e-6)))) : vec2(0.0));
+    out_1.clip_position = vec4((clip.xy + (offset_ndc * clip.w)), clip.zw);
+    WeftFringeShadowVaryings _e71 = out_1;
+    gl_Position = _e71.clip_position;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

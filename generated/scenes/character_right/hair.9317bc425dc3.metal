@@ -28,6 +28,12 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     metal::float4 clip_position;
 };
+struct WeftFringeShadowVertex {
+    metal::float3 position;
+};
+struct WeftFringeShadowVaryings {
+    metal::float4 clip_position;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -402,18 +408,18 @@ WeftHairAngles weft_hair_angles(
     metal::float3 o,
     metal::float3 i_1
 ) {
-    WeftHairAngles out_2 = {};
+    WeftHairAngles out_3 = {};
     float sin_o_4 = metal::clamp(metal::dot(o, t), -1.0, 1.0);
     float sin_i_2 = metal::clamp(metal::dot(i_1, t), -1.0, 1.0);
     float _e16 = weft_hair_safe_sqrt(1.0 - (sin_o_4 * sin_o_4));
     float _e20 = weft_hair_safe_sqrt(1.0 - (sin_i_2 * sin_i_2));
-    out_2.theta = metal::float4(sin_o_4, _e16, sin_i_2, _e20);
+    out_3.theta = metal::float4(sin_o_4, _e16, sin_i_2, _e20);
     metal::float3 o_perp = o - (sin_o_4 * t);
     metal::float3 i_perp = i_1 - (sin_i_2 * t);
     float len2_2 = metal::dot(o_perp, o_perp) * metal::dot(i_perp, i_perp);
     float cos_phi = (len2_2 > 0.000000000001) ? (metal::dot(o_perp, i_perp) * metal::rsqrt(metal::max(len2_2, 0.000000000000000000000000000001))) : 1.0;
-    out_2.phi = metal::acos(metal::clamp(cos_phi, -1.0, 1.0));
-    WeftHairAngles _e43 = out_2;
+    out_3.phi = metal::acos(metal::clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
     return _e43;
 }
 
@@ -479,7 +485,7 @@ WeftHairLobes weft_hair_mean(
     float g0_ = -1.5707964;
     metal::float3 d0_1 = {};
     uint k = 0u;
-    WeftHairLobes out_3 = {};
+    WeftHairLobes out_4 = {};
     metal::float4 th = angles.theta;
     metal::float4 _e8 = weft_hair_longitudinal(hair_4, angles.theta.x, angles.theta.y, angles.theta.z, angles.theta.w);
     float _e11 = weft_hair_etap(hair_4, angles.theta.x, angles.theta.y);
@@ -533,14 +539,14 @@ WeftHairLobes weft_hair_mean(
     }
     metal::float3 _e143 = s_5;
     float _e144 = weights;
-    out_3.s = _e143 / metal::float3(_e144);
+    out_4.s = _e143 / metal::float3(_e144);
     metal::float3 _e148 = albedo;
     float _e149 = weights;
-    out_3.albedo = _e148 / metal::float3(_e149);
+    out_4.albedo = _e148 / metal::float3(_e149);
     metal::float3 _e153 = back;
     float _e154 = weights;
-    out_3.back = _e153 / metal::float3(_e154);
-    WeftHairLobes _e157 = out_3;
+    out_4.back = _e153 / metal::float3(_e154);
+    WeftHairLobes _e157 = out_4;
     return _e157;
 }
 
@@ -656,6 +662,53 @@ fragment fs_outlineOutput fs_outline(
 }
 
 
+struct vs_fringe_shadowInput {
+    metal::float3 position [[attribute(0)]];
+};
+struct vs_fringe_shadowOutput {
+    metal::float4 clip_position [[position]];
+};
+vertex vs_fringe_shadowOutput vs_fringe_shadow(
+  vs_fringe_shadowInput varyings_2 [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
+) {
+    const WeftFringeShadowVertex in_1 = { varyings_2.position };
+    bool local_2 = {};
+    WeftFringeShadowVaryings out_1 = {};
+    metal::float4x4 _e3 = weft_object.model;
+    metal::float3 world_1 = (_e3 * metal::float4(in_1.position, 1.0)).xyz;
+    metal::float4x4 _e11 = weft_frame.view_proj;
+    metal::float4 clip_1 = _e11 * metal::float4(world_1, 1.0);
+    metal::float4 _e17 = weft_frame.light_direction;
+    metal::float3 l_1 = _e17.xyz;
+    float l_len = metal::length(l_1);
+    metal::float3 travel = (l_len > 0.000001) ? (-(l_1) / metal::float3(metal::max(l_len, 0.000001))) : metal::float3(0.0);
+    metal::float4x4 _e32 = weft_frame.view_proj;
+    metal::float4 pushed = _e32 * metal::float4(world_1 + (travel * 0.16), 1.0);
+    if (clip_1.w > 0.000001) {
+        local_2 = pushed.w > 0.000001;
+    } else {
+        local_2 = false;
+    }
+    bool usable_1 = local_2;
+    metal::float2 offset_ndc = usable_1 ? ((pushed.xy / metal::float2(metal::max(pushed.w, 0.000001))) - (clip_1.xy / metal::float2(metal::max(clip_1.w, 0.000001)))) : metal::float2(0.0);
+    out_1.clip_position = metal::float4(clip_1.xy + (offset_ndc * clip_1.w), clip_1.zw);
+    WeftFringeShadowVaryings _e71 = out_1;
+    const auto _tmp_1 = _e71;
+    return vs_fringe_shadowOutput { _tmp_1.clip_position };
+}
+
+
+struct fs_fringe_shadowOutput {
+    metal::float4 member_3 [[color(0)]];
+};
+fragment fs_fringe_shadowOutput fs_fringe_shadow(
+) {
+    return fs_fringe_shadowOutput { metal::float4(metal::float3(0.5704816, 0.34239164, 0.34239164), 1.0) };
+}
+
+
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
@@ -670,30 +723,30 @@ struct vs_mainOutput {
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
 vertex vs_mainOutput vs_main(
-  vs_mainInput varyings_2 [[stage_in]]
+  vs_mainInput varyings_4 [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(1)]]
 ) {
-    const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
-    WeftVaryings out_1 = {};
+    const WeftVertexInput in_2 = { varyings_4.position, varyings_4.normal, varyings_4.tangent_1, varyings_4.uv0_2 };
+    WeftVaryings out_2 = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
     metal::float4x4 nm_1 = weft_object.normal_matrix;
     metal::float3x3 normal3_ = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    metal::float4 world_1 = model * metal::float4(in_1.position, 1.0);
+    metal::float4 world_2 = model * metal::float4(in_2.position, 1.0);
     float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
     metal::float4x4 _e43 = weft_frame.view_proj;
-    out_1.clip_position = _e43 * metal::float4(world_1.xyz, 1.0);
-    out_1.world_position = world_1.xyz;
-    metal::float3 _e54 = weft_safe_normalize(normal3_ * in_1.normal, metal::float3(0.0));
-    out_1.world_normal = _e54;
-    metal::float3 _e60 = weft_safe_normalize(model3_ * in_1.tangent.xyz, metal::float3(0.0));
-    out_1.world_tangent = metal::float4(_e60, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e64 = out_1;
-    const auto _tmp_1 = _e64;
-    return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
+    out_2.clip_position = _e43 * metal::float4(world_2.xyz, 1.0);
+    out_2.world_position = world_2.xyz;
+    metal::float3 _e54 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out_2.world_normal = _e54;
+    metal::float3 _e60 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out_2.world_tangent = metal::float4(_e60, bitangent_sign);
+    out_2.uv0_ = in_2.uv0_;
+    WeftVaryings _e64 = out_2;
+    const auto _tmp_2 = _e64;
+    return vs_mainOutput { _tmp_2.clip_position, _tmp_2.world_position, _tmp_2.world_normal, _tmp_2.world_tangent, _tmp_2.uv0_ };
 }
 
 
@@ -704,23 +757,23 @@ struct fs_mainInput {
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
 };
 struct fs_mainOutput {
-    metal::float4 member_3 [[color(0)]];
+    metal::float4 member_5 [[color(0)]];
 };
 fragment fs_mainOutput fs_main(
-  fs_mainInput varyings_3 [[stage_in]]
+  fs_mainInput varyings_5 [[stage_in]]
 , metal::float4 clip_position [[position]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::sampler material_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(0)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.world_tangent, varyings_3.uv0_2 };
+    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_1, varyings_5.world_normal, varyings_5.world_tangent, varyings_5.uv0_2 };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
-    metal::float3 _e6 = weft_view_direction(in_2.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e8 = weft_safe_normalize(in_2.world_normal, _e6);
-    metal::float3x3 _e10 = weft_tangent_frame(_e8, in_2.world_tangent);
-    metal::float3 _e12 = hair_strand(_e10, in_2.uv0_);
-    float _e14 = hair_jitter(in_2.uv0_, material_sampler, jitter_map);
+    metal::float3 _e6 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e8 = weft_safe_normalize(in_3.world_normal, _e6);
+    metal::float3x3 _e10 = weft_tangent_frame(_e8, in_3.world_tangent);
+    metal::float3 _e12 = hair_strand(_e10, in_3.uv0_);
+    float _e14 = hair_jitter(in_3.uv0_, material_sampler, jitter_map);
     metal::float3 _e15 = weft_main_light_direction(weft_frame);
     metal::float3 _e16 = weft_main_light_radiance(weft_frame);
     metal::float3 _e17 = weft_sh_irradiance(_e8, weft_frame);

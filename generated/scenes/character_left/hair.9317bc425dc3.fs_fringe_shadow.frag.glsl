@@ -1,0 +1,433 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftOutlineVertex {
+    vec3 position;
+    vec3 normal;
+};
+struct WeftOutlineVaryings {
+    vec4 clip_position;
+};
+struct WeftFringeShadowVertex {
+    vec3 position;
+};
+struct WeftFringeShadowVaryings {
+    vec4 clip_position;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+struct WeftHair {
+    vec3 sigma_a;
+    float eta;
+    vec4 v;
+    float s;
+    vec3 sin2k;
+    vec3 cos2k;
+};
+struct WeftHairAttenuation {
+    float a0_;
+    vec3 a1_;
+    vec3 a2_;
+    vec3 a3_;
+    float gamma_t;
+};
+struct WeftHairLobes {
+    vec3 s;
+    vec3 albedo;
+    vec3 back;
+};
+struct WeftHairAngles {
+    vec4 theta;
+    float phi;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_HAIR_MIN_BETA_M = 0.05;
+const float WEFT_HAIR_MIN_BETA_N = 0.05;
+const uint HAIR_REFERENCE_CELLS = 64u;
+const uint HAIR_FAST_CELLS = 12u;
+const float HAIR_TERMINATOR = 0.25;
+
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n) {
+    float s_6 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_1 = (-1.0 / (s_6 + n.z));
+    float b = ((n.x * n.y) * a_1);
+    return vec3((1.0 + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+}
+
+float weft_f_dielectric(float cos_i, float eta) {
+    float c_1 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = (((eta * eta) - 1.0) + (c_1 * c_1));
+    float g = sqrt(max(g2_, 0.0));
+    float gmc = (g - c_1);
+    float gpc = max((g + c_1), 1e-7);
+    float a_2 = (gmc / gpc);
+    float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
+    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_2, t_1) * s_7);
+    return mat3x3(t_1, b_2, n_2);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_hair_sqr(float x) {
+    return (x * x);
+}
+
+float weft_hair_safe_sqrt(float x_1) {
+    return sqrt(max(x_1, 0.0));
+}
+
+float weft_hair_variance(float beta_m) {
+    float b_3 = clamp(beta_m, WEFT_HAIR_MIN_BETA_M, 1.0);
+    float b2_ = (b_3 * b_3);
+    float b4_ = (b2_ * b2_);
+    float b20_ = ((((b4_ * b4_) * b4_) * b4_) * b4_);
+    float _e18 = weft_hair_sqr((((0.726 * b_3) + (0.812 * b2_)) + (3.7 * b20_)));
+    return _e18;
+}
+
+float weft_hair_logistic_scale(float beta_n) {
+    float b_4 = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float b2_1 = (b_4 * b_4);
+    float b4_1 = (b2_1 * b2_1);
+    float b22_ = (((((b4_1 * b4_1) * b4_1) * b4_1) * b4_1) * b2_1);
+    return (0.62665707 * (((0.265 * b_4) + (1.194 * b2_1)) + (5.372 * b22_)));
+}
+
+vec3 weft_hair_sigma_a_from_color(vec3 c, float beta_n_1) {
+    float b_5 = clamp(beta_n_1, WEFT_HAIR_MIN_BETA_N, 1.0);
+    float d = (((((5.969 - (0.215 * b_5)) + ((2.532 * b_5) * b_5)) - (10.73 * pow(b_5, 3.0))) + (5.574 * pow(b_5, 4.0))) + (0.245 * pow(b_5, 5.0)));
+    vec3 l = (log(clamp(c, vec3(0.0001), vec3(1.0))) / vec3(d));
+    return (l * l);
+}
+
+WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_n_2, float alpha_deg) {
+    WeftHair hair = WeftHair(vec3(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), vec3(0.0));
+    hair.sigma_a = max(sigma_a, vec3(0.0));
+    hair.eta = max(eta_1, 1.0001);
+    float _e12 = weft_hair_variance(beta_m_1);
+    hair.v = vec4(_e12, (0.25 * _e12), (4.0 * _e12), (4.0 * _e12));
+    float _e22 = weft_hair_logistic_scale(beta_n_2);
+    hair.s = _e22;
+    float a_3 = radians(alpha_deg);
+    float s0_ = sin(a_3);
+    float _e28 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
+    float s1_ = ((2.0 * _e28) * s0_);
+    float c1_ = ((_e28 * _e28) - (s0_ * s0_));
+    float s2_ = ((2.0 * c1_) * s1_);
+    float c2_ = ((c1_ * c1_) - (s1_ * s1_));
+    hair.sin2k = vec3(s0_, s1_, s2_);
+    hair.cos2k = vec3(_e28, c1_, c2_);
+    WeftHair _e45 = hair;
+    return _e45;
+}
+
+float weft_hair_i0_(float x_2) {
+    float term = 1.0;
+    float sum = 1.0;
+    int i = 1;
+    float q = ((0.25 * x_2) * x_2);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e22 = i;
+            i = (_e22 + 1);
+        }
+        loop_init = false;
+        int _e10 = i;
+        if ((_e10 < 16)) {
+        } else {
+            break;
+        }
+        {
+            int _e13 = i;
+            float k_1 = float(_e13);
+            float _e15 = term;
+            term = (_e15 * (q / (k_1 * k_1)));
+            float _e19 = sum;
+            float _e20 = term;
+            sum = (_e19 + _e20);
+        }
+    }
+    float _e25 = sum;
+    return _e25;
+}
+
+float weft_hair_log_i0_(float x_3) {
+    if ((x_3 > 12.0)) {
+        float r = (1.0 / x_3);
+        return ((x_3 - (0.5 * log((6.2831855 * x_3)))) + log((1.0 + (r * (0.125 + (0.0703125 * r))))));
+    }
+    float _e20 = weft_hair_i0_(x_3);
+    return log(_e20);
+}
+
+float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1) {
+    float a_4 = ((cos_i_1 * cos_o) / v_1);
+    float b_6 = ((sin_i * sin_o) / v_1);
+    if ((v_1 <= 0.1)) {
+        float _e11 = weft_hair_log_i0_(a_4);
+        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
+    }
+    float _e27 = weft_hair_i0_(a_4);
+    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
+}
+
+vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
+    float sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
+    float cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
+    float sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
+    float cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
+    float sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
+    float cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
+    float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
+    float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
+    float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
+    return vec4(_e52, _e55, _e58, _e61);
+}
+
+float weft_hair_logistic(float x_4, float s) {
+    float e_1 = exp((-(abs(x_4)) / s));
+    float _e8 = weft_hair_sqr((1.0 + e_1));
+    return (e_1 / (s * _e8));
+}
+
+float weft_hair_trimmed_logistic(float x_5, float s_1) {
+    float e_2 = exp((-3.1415927 / s_1));
+    float _e5 = weft_hair_logistic(x_5, s_1);
+    return ((_e5 * (1.0 + e_2)) / (1.0 - e_2));
+}
+
+float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2) {
+    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
+}
+
+WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h) {
+    WeftHairAttenuation a = WeftHairAttenuation(0.0, vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
+    float sin_t = (sin_o_3 / hair_3.eta);
+    float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
+    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
+    float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
+    vec3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
+    float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
+    float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
+    a.a0_ = _e34;
+    a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
+    vec3 _e46 = a.a1_;
+    a.a2_ = ((_e46 * t_2) * _e34);
+    vec3 _e51 = a.a2_;
+    a.a3_ = (((_e51 * t_2) * _e34) / (vec3(1.0) - (t_2 * _e34)));
+    a.gamma_t = asin(sin_gamma_t);
+    WeftHairAttenuation _e60 = a;
+    return _e60;
+}
+
+WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
+    WeftHairAngles out_3 = WeftHairAngles(vec4(0.0), 0.0);
+    float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
+    float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
+    float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
+    out_3.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
+    vec3 o_perp = (o - (sin_o_4 * t));
+    vec3 i_perp = (i_1 - (sin_i_2 * t));
+    float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
+    float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
+    out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
+    return _e43;
+}
+
+float weft_hair_logistic_cdf(float x_6, float s_2) {
+    return (1.0 / (1.0 + exp((-(x_6) / s_2))));
+}
+
+float weft_hair_trimmed_integral(float lo, float hi, float s_3) {
+    float sum_1 = 0.0;
+    float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
+    float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
+    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
+    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
+    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
+    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
+    sum_1 = (_e13 - _e14);
+    if ((hi > WEFT_PI)) {
+        float _e19 = sum_1;
+        float _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855), WEFT_PI), s_3);
+        sum_1 = (_e19 + (_e24 - _e4));
+    }
+    if ((lo < -3.1415927)) {
+        float _e29 = sum_1;
+        float _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855), -3.1415927), s_3);
+        sum_1 = (_e29 + (_e6 - _e34));
+    }
+    float _e37 = sum_1;
+    return (_e37 / (_e6 - _e4));
+}
+
+float weft_hair_np_cell(float d0_, float d1_, float s_4) {
+    float mid = (0.5 * (d0_ + d1_));
+    float m = (mid - (6.2831855 * roundEven((mid / 6.2831855))));
+    float half_ = min((0.5 * abs((d1_ - d0_))), WEFT_PI);
+    if ((half_ < 0.0001)) {
+        float _e20 = weft_hair_trimmed_logistic(m, s_4);
+        return _e20;
+    }
+    float _e23 = weft_hair_trimmed_integral((m - half_), (m + half_), s_4);
+    return (_e23 / (2.0 * half_));
+}
+
+WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count) {
+    vec3 s_5 = vec3(0.0);
+    vec3 albedo = vec3(0.0);
+    vec3 back = vec3(0.0);
+    float weights = 0.0;
+    float g0_ = -1.5707964;
+    vec3 d0_1 = vec3(0.0);
+    uint k = 0u;
+    WeftHairLobes out_4 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
+    vec4 th = angles.theta;
+    vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
+    float _e11 = weft_hair_etap(hair_4, th.x, th.y);
+    uint cells = max(count, 1u);
+    float step_ = (WEFT_PI / float(cells));
+    float _e29 = g0_;
+    float _e37 = g0_;
+    d0_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * asin(clamp((sin(_e29) / _e11), -1.0, 1.0))) - vec3((2.0 * _e37))) + vec3(0.0, 3.1415927, 6.2831855)));
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e138 = k;
+            k = (_e138 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e49 = k;
+        if ((_e49 < cells)) {
+        } else {
+            break;
+        }
+        {
+            float _e51 = g0_;
+            float g1_ = (_e51 + step_);
+            float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
+            vec3 d1_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * gamma_t1_) - vec3((2.0 * g1_))) + vec3(0.0, 3.1415927, 6.2831855)));
+            float _e70 = g0_;
+            float gm = (_e70 + (0.5 * step_));
+            float w = cos(gm);
+            WeftHairAttenuation _e78 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
+            float _e83 = d0_1.x;
+            float _e86 = weft_hair_np_cell(_e83, d1_1.x, hair_4.s);
+            float _e92 = d0_1.y;
+            float _e95 = weft_hair_np_cell(_e92, d1_1.y, hair_4.s);
+            float _e103 = d0_1.z;
+            float _e106 = weft_hair_np_cell(_e103, d1_1.z, hair_4.s);
+            vec3 lobes_1 = (((vec3(((_e8.x * _e78.a0_) * _e86)) + ((_e8.y * _e78.a1_) * _e95)) + ((_e8.z * _e78.a2_) * _e106)) + ((_e8.w * _e78.a3_) * 0.15915494));
+            vec3 _e115 = s_5;
+            s_5 = (_e115 + (w * lobes_1));
+            vec3 _e118 = albedo;
+            albedo = (_e118 + (w * (((vec3(_e78.a0_) + _e78.a1_) + _e78.a2_) + _e78.a3_)));
+            vec3 _e129 = back;
+            back = (_e129 + (w * (vec3(_e78.a0_) + _e78.a2_)));
+            float _e136 = weights;
+            weights = (_e136 + w);
+            g0_ = g1_;
+            d0_1 = d1_1;
+        }
+    }
+    vec3 _e143 = s_5;
+    float _e144 = weights;
+    out_4.s = (_e143 / vec3(_e144));
+    vec3 _e148 = albedo;
+    float _e149 = weights;
+    out_4.albedo = (_e148 / vec3(_e149));
+    vec3 _e153 = back;
+    float _e154 = weights;
+    out_4.back = (_e153 / vec3(_e154));
+    WeftHairLobes _e157 = out_4;
+    return _e157;
+}
+
+vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
+    vec2 ts = vec2(0.0);
+    ts = vec2(0.0, 1.0);
+    float _e6 = ts.x;
+    float _e10 = ts.y;
+    vec3 _e14 = weft_safe_normalize(((frame[0] * _e6) + (frame[1] * _e10)), frame[1]);
+    return _e14;
+}
+
+float hair_hash(uint x_7) {
+    uint state = ((x_7 * 747796405u) + 2891336453u);
+    uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
+    return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
+}
+
+float hair_value_noise(float x_8, float period) {
+    float p = max(roundEven(period), 1.0);
+    float cell = floor(x_8);
+    float f_1 = (x_8 - cell);
+    float c0_ = (cell - (p * floor((cell / p))));
+    float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
+    float _e19 = hair_hash(uint(c0_));
+    float _e21 = hair_hash(uint(c1_1));
+    return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
+}
+
+void main() {
+    _fs2p_location0 = vec4(vec3(0.5704816, 0.34239164, 0.34239164), 1.0);
+    return;
+}
+
