@@ -39,7 +39,11 @@ fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
     // The pipeline state an engine sets: no depth write, depth tested.
     let depth = &shells.depth_stencil;
     assert!(!depth.depth_write_enabled);
-    assert_ne!(depth.depth_compare, weft_meta::DepthTest::Always, "shells test depth");
+    assert_ne!(
+        depth.depth_compare,
+        weft_meta::DepthTest::Always,
+        "shells test depth"
+    );
 
     // The runtime draws the skin once and the shells `shell_count` times,
     // and follows the parameter without re-preparing.

@@ -733,7 +733,8 @@ pub struct Library {
 }
 
 /// Writes `count` synthetic materials derived from `shipped` (a materials
-/// folder) into `dest` (replaced), with `shipped/lib` copied beside them.
+/// folder) into `dest` (replaced), with `shipped/lib` and the shipped
+/// materials' `textures/` folders copied beside them.
 pub fn generate(
     shipped: &Path,
     dest: &Path,
@@ -749,6 +750,16 @@ pub fn generate(
         std::fs::remove_dir_all(dest).map_err(|e| format!("{}: {e}", dest.display()))?;
     }
     copy_dir(&shipped.join("lib"), &dest.join("lib"))?;
+    // The shipped texture files (`file = "<base>/textures/x.png"`): a copy
+    // keeps naming its base's path under the materials root.
+    for entry in std::fs::read_dir(shipped).map_err(|e| format!("{}: {e}", shipped.display()))? {
+        let base = entry.map_err(|e| e.to_string())?.path();
+        let textures = base.join("textures");
+        if textures.is_dir() {
+            let name = base.file_name().expect("a folder entry has a name");
+            copy_dir(&textures, &dest.join(name).join("textures"))?;
+        }
+    }
     let mut variants = 0;
     for i in 0..count {
         let s = synthesise(&bases[i % bases.len()], i, per_material, seed)?;
