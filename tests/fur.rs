@@ -37,8 +37,9 @@ fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
         InstanceCount::Parameter("shell_count".into())
     );
     // The pipeline state an engine sets: no depth write, depth tested.
-    let depth = shells.depth.as_ref().expect("shells test depth");
-    assert!(!depth.write_enabled);
+    let depth = &shells.depth_stencil;
+    assert!(!depth.depth_write_enabled);
+    assert_ne!(depth.depth_compare, weft_meta::DepthTest::Always);
 
     // The runtime draws the skin once and the shells `shell_count` times,
     // and follows the parameter without re-preparing.
