@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
 use weft_compiler::folder_build::{self, FolderBuildError};
+use weft_compiler::ownership::{Input, check_apart};
 use weft_compiler::{BuildOptions, BuildOutput, output};
 use weft_front::{Diagnostics, SourceDb};
 use weft_meta::MaterialMetadata;
@@ -80,8 +81,8 @@ enum Command {
         tier_costs: Option<PathBuf>,
         /// Seconds to wait for another build writing into the same output folder
         /// (they are serialised by a lock file, `.<out>.lock`); 0 fails at once.
-        #[arg(long, value_name = "SECONDS", default_value_t = 120.0)]
-        lock_timeout: f64,
+        #[arg(long, value_name = "SECONDS", default_value = "120", value_parser = parse_lock_timeout)]
+        lock_timeout: Duration,
         /// Compile only the materials of shard K of N (by a hash of their names) into
         /// this output folder; join the N folders with `weft merge` (docs/scaling.md).
         #[arg(long, value_name = "K/N", conflicts_with = "scene")]
@@ -96,6 +97,12 @@ enum Command {
             conflicts_with = "scene"
         )]
         cache_dir: Option<PathBuf>,
+        /// Compile again this share (0 to 100) of the units served from the cache
+        /// and fail if any differs from its compiled bytes. Units are signed and
+        /// checked with $WEFT_CACHE_KEY when it is set (docs/scaling.md, "Trust").
+        #[arg(long, value_name = "PERCENT", default_value_t = 0,
+              value_parser = clap::value_parser!(u8).range(0..=100))]
+        cache_verify: u8,
     },
     /// Join the output folders of `weft build --shard k/n` (all n of them) into one,
     /// byte-identical to an unsharded build; replaced atomically like `build`'s.
@@ -110,8 +117,8 @@ enum Command {
         #[arg(long, short)]
         out: Option<PathBuf>,
         /// Seconds to wait for another build writing into the same output folder.
-        #[arg(long, value_name = "SECONDS", default_value_t = 120.0)]
-        lock_timeout: f64,
+        #[arg(long, value_name = "SECONDS", default_value = "120", value_parser = parse_lock_timeout)]
+        lock_timeout: Duration,
     },
     /// Report diagnostics only; writes nothing. Exit status 1 on any error.
     #[command(
@@ -147,6 +154,24 @@ enum Command {
     /// preview) on 127.0.0.1, rebuilt and pushed to the page on every change; or --export it.
     #[command(after_help = weft_serve::EXAMPLES)]
     Serve(weft_serve::ServeArgs),
+}
+
+/// The longest `--lock-timeout`: a day. Longer waits are a mistake, and
+/// much larger numbers do not fit a `Duration`.
+const MAX_LOCK_TIMEOUT_SECS: f64 = 86_400.0;
+
+/// `--lock-timeout`: seconds from 0 to [`MAX_LOCK_TIMEOUT_SECS`].
+fn parse_lock_timeout(s: &str) -> Result<Duration, String> {
+    let secs: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number of seconds"))?;
+    if !(0.0..=MAX_LOCK_TIMEOUT_SECS).contains(&secs) {
+        return Err(format!(
+            "{s} s is out of range: give 0 to {MAX_LOCK_TIMEOUT_SECS:.0} seconds (a day)"
+        ));
+    }
+    Duration::try_from_secs_f64(secs).map_err(|e| e.to_string())
 }
 
 fn color_choice(c: Color) -> ColorChoice {
@@ -310,7 +335,7 @@ fn no_material(paths: &[PathBuf]) -> Option<(SourceDb, Diagnostics)> {
 
 fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
     if path.extension().is_some_and(|e| e == "json") {
-        let bytes = match std::fs::read(path) {
+        let bytes = match weft_meta::files::read_regular(path, weft_meta::files::MAX_TEXT_BYTES) {
             Ok(b) => b,
             Err(e) => {
                 eprintln!("error: cannot read `{}`: {e}", path.display());
@@ -338,12 +363,6 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Serve(args) => weft_serve::command(&args, cli.quiet),
-        Command::Build { lock_timeout, .. }
-            if !(lock_timeout.is_finite() && lock_timeout >= 0.0) =>
-        {
-            eprintln!("error: --lock-timeout must be a number of seconds, 0 or more");
-            ExitCode::FAILURE
-        }
         Command::Build {
             scene: Some(scene),
             out,
@@ -356,7 +375,7 @@ fn main() -> ExitCode {
                 &scene,
                 &out,
                 tier_costs.as_ref(),
-                Duration::from_secs_f64(lock_timeout),
+                lock_timeout,
                 cli.quiet,
                 cli.color,
             ) {
@@ -373,6 +392,7 @@ fn main() -> ExitCode {
             lock_timeout,
             shard,
             cache_dir,
+            cache_verify,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated"));
@@ -384,32 +404,36 @@ fn main() -> ExitCode {
                     return ExitCode::FAILURE;
                 }
             };
-            // Locked for the whole build, so that no other build replaces the
-            // folder while unchanged files are kept from it.
-            let Some(lock) = lock_output(&out, Duration::from_secs_f64(lock_timeout), cli.quiet)
-            else {
-                return ExitCode::FAILURE;
-            };
             let options = BuildOptions {
                 jobs,
                 reuse_from: (!force).then(|| out.clone()),
                 shard,
                 cache_dir,
+                cache_trust: weft_compiler::cache::CacheTrust {
+                    key: std::env::var_os("WEFT_CACHE_KEY")
+                        .filter(|k| !k.is_empty())
+                        .map(|k| k.as_encoded_bytes().to_vec()),
+                    verify_percent: cache_verify,
+                },
                 ..Default::default()
             };
-            // A shard's folder says which shard it is, for `weft merge`.
-            let marker: Vec<(String, Vec<u8>)> = shard
-                .map(|s| (weft_compiler::shard::SHARD_MARKER.to_string(), s.marker()))
-                .into_iter()
-                .collect();
             let root = files.root.as_deref();
+            if let Err(e) = folder_build::check_inputs_apart(&files.paths, root, &out, &options) {
+                eprintln!("error: {e}; nothing was written");
+                return ExitCode::FAILURE;
+            }
+            // Locked for the whole build, so that no other build replaces the
+            // folder while unchanged files are kept from it.
+            let Some(lock) = lock_output(&out, lock_timeout, cli.quiet) else {
+                return ExitCode::FAILURE;
+            };
             let progress = progress_printer(cli.quiet);
             match folder_build::build_into(
                 &files.paths,
                 root,
                 &lock,
                 &options,
-                &marker,
+                &[],
                 PRESERVED,
                 &progress,
             ) {
@@ -439,8 +463,12 @@ fn main() -> ExitCode {
                         );
                         if options.cache_dir.is_some() {
                             println!(
-                                "compile units: {} from the cache, {} compiled",
-                                result.cache_hits, result.cache_misses
+                                "compile units: {} from the cache ({} compiled again to verify), \
+                                 {} compiled, {} refused (not signed with WEFT_CACHE_KEY)",
+                                result.cache_hits,
+                                result.cache_verified,
+                                result.cache_misses,
+                                result.cache_rejected
                             );
                         }
                     }
@@ -517,11 +545,18 @@ fn main() -> ExitCode {
             out,
             lock_timeout,
         } => {
-            if !(lock_timeout.is_finite() && lock_timeout >= 0.0) {
-                eprintln!("error: --lock-timeout must be a number of seconds, 0 or more");
+            let out = out.unwrap_or_else(|| PathBuf::from("generated"));
+            let inputs: Vec<Input<'_>> = shards
+                .iter()
+                .map(|path| Input {
+                    what: "shard folder",
+                    path,
+                })
+                .collect();
+            if let Err(e) = check_apart(&out, &inputs) {
+                eprintln!("error: {e}; nothing was written");
                 return ExitCode::FAILURE;
             }
-            let out = out.unwrap_or_else(|| PathBuf::from("generated"));
             let files = match weft_compiler::shard::merge(&shards) {
                 Ok(f) => f,
                 Err(e) => {
@@ -529,8 +564,7 @@ fn main() -> ExitCode {
                     return ExitCode::FAILURE;
                 }
             };
-            let wait = Duration::from_secs_f64(lock_timeout);
-            let Some(lock) = lock_output(&out, wait, cli.quiet) else {
+            let Some(lock) = lock_output(&out, lock_timeout, cli.quiet) else {
                 return ExitCode::FAILURE;
             };
             let write = || -> std::io::Result<()> {

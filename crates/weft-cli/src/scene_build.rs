@@ -5,6 +5,7 @@ use crate::{Color, lock_output, report};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use weft_compiler::SceneBuildOptions;
+use weft_compiler::ownership::{Input, check_apart};
 
 /// Builds the scene and writes it into `out` (which then holds `<scene>/`).
 pub fn build_scene_command(
@@ -47,6 +48,20 @@ pub fn build_scene_command(
         .collect();
     // Same machinery as a library build: `<out>/.<scene>.lock`, atomic swap.
     let dir = out.join(&result.name);
+    let inputs = [
+        Input {
+            what: "scene file",
+            path: scene,
+        },
+        Input {
+            what: "materials root",
+            path: &result.materials_root,
+        },
+    ];
+    if let Err(e) = check_apart(&dir, &inputs) {
+        eprintln!("error: {e}; nothing was written");
+        return false;
+    }
     let Some(lock) = lock_output(&dir, lock_wait, quiet) else {
         return false;
     };

@@ -7,6 +7,7 @@
 
 use crate::library::{BuildOptions, BuildOutput, build_materials_streaming};
 use crate::output::OutputLock;
+use crate::ownership::{Input, check_apart};
 use crate::stamp::Stamp;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -45,6 +46,7 @@ pub fn build_into(
     preserve: &[&str],
     progress: &(dyn Fn(usize, usize, &str) + Sync),
 ) -> Result<FolderBuild, FolderBuildError> {
+    check_inputs_apart(paths, root, lock.dir(), options).map_err(FolderBuildError::Io)?;
     let stamp = Stamp::read(lock);
     let mut keep = options.reuse_from.is_some() && stamp.is_some();
     loop {
@@ -72,6 +74,14 @@ pub fn build_into(
         };
         for (rel, bytes) in extra {
             staging.put_ref(rel, bytes).map_err(FolderBuildError::Io)?;
+        }
+        // A shard's folder says which shard it is and what it was built
+        // from, for `weft merge`.
+        if let Some(shard) = options.shard {
+            let marker = shard.marker(&output.library_inputs);
+            staging
+                .put(crate::shard::SHARD_MARKER.to_string(), marker)
+                .map_err(FolderBuildError::Io)?;
         }
         let kept_count = output.kept.as_ref().map_or(0, |k| k.files.len());
         let file_count = staging.len() + kept_count;
@@ -114,6 +124,40 @@ pub fn build_into(
             wrote: true,
         });
     }
+}
+
+/// Refuses an output folder that is, holds or lies inside the materials
+/// (their root, or each material file's) or the compile cache. [`build_into`]
+/// checks it; callers check it before taking the folder's lock, so that a
+/// refused build leaves no lock file either.
+pub fn check_inputs_apart(
+    paths: &[PathBuf],
+    root: Option<&Path>,
+    out: &Path,
+    options: &BuildOptions,
+) -> io::Result<()> {
+    let roots: Vec<PathBuf> = match root {
+        Some(r) => vec![r.to_path_buf()],
+        None => paths.iter().map(|p| weft_front::find_root(p)).collect(),
+    };
+    let mut inputs: Vec<Input<'_>> = roots
+        .iter()
+        .map(|path| Input {
+            what: "materials root",
+            path,
+        })
+        .collect();
+    inputs.extend(paths.iter().map(|path| Input {
+        what: "material file",
+        path,
+    }));
+    if let Some(path) = &options.cache_dir {
+        inputs.push(Input {
+            what: "compile cache",
+            path,
+        });
+    }
+    check_apart(out, &inputs)
 }
 
 #[cfg(test)]

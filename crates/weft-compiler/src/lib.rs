@@ -22,6 +22,7 @@ pub mod limits;
 pub mod metadata;
 pub mod nesting;
 pub mod output;
+pub mod ownership;
 pub mod prelude;
 pub mod reflect;
 pub mod scene;

@@ -50,6 +50,10 @@ pub struct BuildOptions {
     pub shard: Option<crate::shard::Shard>,
     /// A shared cache of compile units (material × variant); see [`crate::cache`].
     pub cache_dir: Option<PathBuf>,
+    /// How far units read from the cache are trusted: a secret key they
+    /// must be signed with, and the share of them compiled again and
+    /// compared; see [`crate::cache`] ("Trust").
+    pub cache_trust: crate::cache::CacheTrust,
     /// For a streaming build whose sink writes the files: do not keep each
     /// material's metadata in [`BuildOutput::materials`] as well (it is in
     /// the `.meta.json` handed over); only [`BuildOutput::dropped_metadata`]
@@ -76,8 +80,16 @@ pub struct BuildOutput {
     /// (then stored).
     pub cache_hits: usize,
     pub cache_misses: usize,
+    /// Units found but refused: not signed with the cache key (then compiled).
+    pub cache_rejected: usize,
+    /// Hits compiled again and found byte-identical (`CacheTrust::verify_percent`).
+    pub cache_verified: usize,
     /// Warnings (e.g. parameters no variant reads), with the files they point into.
     pub warnings: Option<(SourceDb, Diagnostics)>,
+    /// A hash of every loaded material's name and inputs hash and of the
+    /// toolchain, shard or not: equal exactly when two builds had the same
+    /// inputs (a shard records it so `weft merge` can check its shards).
+    pub library_inputs: String,
 }
 
 /// Material TOML files in a materials folder: `<dir>/<name>/*.toml`, sorted.
@@ -163,7 +175,12 @@ pub fn compile_material_cached(
             let id = k.id(m);
             let key = UnitCache::unit_key(&inputs, &id);
             if let Some(v) = cache.load(&key, &id) {
-                return Ok(v);
+                if !cache.should_verify(&key) {
+                    return Ok(v);
+                }
+                let fresh = variant::compile_variant(m, &module, fallback, k, &prelude)?;
+                cache.check_unit(&key, &v, &fresh)?;
+                return Ok(fresh);
             }
             let v = variant::compile_variant(m, &module, fallback, k, &prelude)?;
             // A cache that cannot be written only costs the next build time.
@@ -456,7 +473,11 @@ pub fn build_materials_streaming(
     let pool = crate::nesting::compiler_pool(options.jobs);
     let mut out = BuildOutput::default();
     let mut previous = crate::unchanged::Previous::read(paths, options, &pool);
-    let cache = match options.cache_dir.as_deref().map(UnitCache::open) {
+    let cache = match options
+        .cache_dir
+        .as_deref()
+        .map(|dir| UnitCache::open(dir, options.cache_trust.clone()))
+    {
         None => None,
         Some(Ok(c)) => Some(c),
         Some(Err(e)) => {
@@ -472,6 +493,9 @@ pub fn build_materials_streaming(
         }
     };
     let mut names = std::collections::HashSet::new();
+    let mut library_inputs = Sha256::new();
+    library_inputs.update(crate::cache::TOOLCHAIN_ID);
+    library_inputs.update([0]);
     let mut put = |rel: String, bytes: Vec<u8>, diags: &mut Diagnostics| -> bool {
         let message = format!("cannot write `{rel}`");
         match sink(rel, bytes) {
@@ -503,11 +527,12 @@ pub fn build_materials_streaming(
             );
             continue;
         }
+        let hash = inputs_hash(&m, &db);
+        library_inputs.update(format!("{}\t{hash}\n", m.name));
         if options.shard.is_some_and(|s| !s.contains(&m.name)) {
             continue;
         }
         progress(i, paths.len(), &m.name);
-        let hash = inputs_hash(&m, &db);
         if let Some(dir) = options
             .reuse_from
             .as_deref()
@@ -560,9 +585,16 @@ pub fn build_materials_streaming(
             }
         }
     }
+    out.library_inputs = library_inputs
+        .finalize()
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
     if let Some(c) = &cache {
         out.cache_hits = c.hits();
         out.cache_misses = c.misses();
+        out.cache_rejected = c.rejected();
+        out.cache_verified = c.verified();
     }
     if diags.has_errors() {
         return Err((db, diags));

@@ -80,10 +80,14 @@ pub(crate) fn is_preserved(rel: &str, preserve: &[&str]) -> bool {
 
 /// Whether `file_name` is one of the lock files or temporary folders that
 /// writing an output folder creates beside it (`.<name>.lock`,
-/// `.<name>.tmp-XXXXXX`, `.<name>.old-XXXXXX`). Those of a folder inside an
+/// `.<name>.tmp-XXXXXX`, `.<name>.old-XXXXXX`), or the output marker
+/// ([`crate::ownership::OUTPUT_MARKER`]) every build puts inside it. Those of a folder inside an
 /// output folder (a scene's, the gallery's) live in it, so the staleness
 /// check ignores them.
 fn is_internal_name(file_name: &str) -> bool {
+    if file_name == crate::ownership::OUTPUT_MARKER {
+        return true;
+    }
     let Some(rest) = file_name.strip_prefix('.') else {
         return false;
     };
@@ -114,8 +118,10 @@ pub fn list_files(dir: &Path) -> io::Result<Vec<String>> {
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
         for e in std::fs::read_dir(&d)? {
-            let p = e?.path();
-            if p.is_dir() {
+            let e = e?;
+            let p = e.path();
+            // Not followed: a link to a folder is listed as itself.
+            if e.file_type()?.is_dir() {
                 stack.push(p);
             } else {
                 let rel = p
@@ -215,6 +221,13 @@ impl OutputLock {
             .filter(|p| !p.as_os_str().is_empty())
             .unwrap_or(Path::new("."))
             .to_path_buf();
+        // Refused before the lock file is made: a folder weft may not
+        // replace gets nothing written beside it. Checked again under the
+        // lock before the swap.
+        if std::fs::metadata(dir).is_ok_and(|m| m.is_dir()) {
+            let stamp = parent.join(format!(".{name}.stamp"));
+            crate::ownership::check_replaceable(dir, &stamp)?;
+        }
         std::fs::create_dir_all(&parent).map_err(at(&parent, "cannot create folder"))?;
         let lock_path = parent.join(format!(".{name}.lock"));
         let (mut file, writable) = open_lock_file(&lock_path)?;
@@ -349,7 +362,10 @@ impl OutputLock {
                     dir.display()
                 ),
             )),
-            Ok(_) => Ok(true),
+            Ok(_) => {
+                crate::ownership::check_replaceable(dir, &self.stamp_path())?;
+                Ok(true)
+            }
             Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(false),
             Err(e) => Err(at(dir, "cannot read")(e)),
         }
@@ -545,6 +561,29 @@ mod tests {
     }
 
     #[test]
+    fn a_folder_weft_did_not_write_is_never_replaced() {
+        let root = tempfile::tempdir().unwrap();
+        let project = root.path().join("project");
+        let source = project.join("materials/velvet/velvet.toml");
+        std::fs::create_dir_all(source.parent().unwrap()).unwrap();
+        std::fs::write(&source, "[material]").unwrap();
+        let mut files = BTreeMap::new();
+        files.insert("x.txt".to_string(), b"new".to_vec());
+        let e = write_atomically(&project, &files, &[]).unwrap_err();
+        assert!(e.to_string().contains("not a folder weft built"), "{e}");
+        assert_eq!(std::fs::read_to_string(&source).unwrap(), "[material]");
+        assert!(!project.join("x.txt").exists());
+        // An empty folder is taken, marked, and replaced by the next build.
+        let empty = root.path().join("empty");
+        std::fs::create_dir(&empty).unwrap();
+        write_atomically(&empty, &files, &[]).unwrap();
+        assert!(empty.join(crate::ownership::OUTPUT_MARKER).is_file());
+        files.insert("y.txt".to_string(), b"more".to_vec());
+        write_atomically(&empty, &files, &[]).unwrap();
+        assert!(check(&empty, &files, &[]).unwrap().is_clean());
+    }
+
+    #[test]
     fn leftovers_of_a_killed_build_are_recovered_or_removed() {
         let root = tempfile::tempdir().unwrap();
         let dir = root.path().join("out");
@@ -554,6 +593,8 @@ mod tests {
         // tree under `.out.old-`, a half-written `.out.tmp-`.
         std::fs::create_dir_all(root.path().join(".out.old-AbC123")).unwrap();
         std::fs::write(root.path().join(".out.old-AbC123/x.txt"), "old").unwrap();
+        let marker = crate::ownership::OUTPUT_MARKER;
+        std::fs::write(root.path().join(".out.old-AbC123").join(marker), "").unwrap();
         std::fs::create_dir_all(root.path().join(".out.tmp-zzz999/sub")).unwrap();
         // Not ours: other names, wrong suffixes.
         std::fs::create_dir_all(root.path().join(".other.tmp-abc123")).unwrap();

@@ -12,8 +12,10 @@
 //! other. Every shard still loads and checks every material, so each reports
 //! the same diagnostics.
 //!
-//! Each shard's folder also holds [`SHARD_MARKER`] (`k/n`), which [`merge`]
-//! checks (every shard of `1..=n` exactly once) and drops.
+//! Each shard's folder also holds [`SHARD_MARKER`] (`k/n` and a hash of the
+//! whole library's inputs), which [`merge`] checks (every shard of `1..=n`
+//! exactly once, all from the same inputs) and drops. Merge takes only
+//! regular files that a build writes: never a symbolic link's target.
 
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;
@@ -43,6 +45,9 @@ impl std::str::FromStr for Shard {
         if index == 0 || index > count {
             return Err(bad());
         }
+        if count > MAX_SHARDS {
+            return Err(format!("`{s}`: at most {MAX_SHARDS} shards"));
+        }
         Ok(Shard { index, count })
     }
 }
@@ -65,39 +70,90 @@ impl Shard {
         Shard::of(name, self.count) == self.index
     }
 
-    /// The contents of [`SHARD_MARKER`].
-    pub fn marker(&self) -> Vec<u8> {
-        format!("{self}\n").into_bytes()
+    /// The contents of [`SHARD_MARKER`]: the shard, and the inputs of the
+    /// whole library ([`crate::BuildOutput::library_inputs`]).
+    pub fn marker(&self, library_inputs: &str) -> Vec<u8> {
+        format!("{self}\ninputs {library_inputs}\n").into_bytes()
     }
 }
 
+/// The most shards a build may be split into: far above any build farm,
+/// and small enough that every count weft derives from it stays cheap.
+pub const MAX_SHARDS: usize = 4096;
+
+/// A shard folder's [`SHARD_MARKER`]: which shard, and the inputs of the
+/// whole library it was built from ([`crate::BuildOutput::library_inputs`]).
+struct ShardMarker {
+    shard: Shard,
+    inputs: String,
+}
+
+fn read_marker(dir: &Path) -> Result<ShardMarker, String> {
+    let marker = dir.join(SHARD_MARKER);
+    let text = weft_meta::files::read_regular_string(&marker, 4096).map_err(|e| {
+        format!(
+            "`{}` is not a shard's output folder (no readable {SHARD_MARKER}: {e}); build it with `weft build --shard k/n`",
+            dir.display()
+        )
+    })?;
+    let mut lines = text.lines();
+    let shard: Shard = lines
+        .next()
+        .unwrap_or_default()
+        .parse()
+        .map_err(|e| format!("{}: {e}", marker.display()))?;
+    let inputs = lines
+        .next()
+        .and_then(|l| l.strip_prefix("inputs "))
+        .ok_or_else(|| {
+            format!(
+                "{}: no `inputs` line (built by an older weft?); rebuild the shard",
+                marker.display()
+            )
+        })?;
+    Ok(ShardMarker {
+        shard,
+        inputs: inputs.to_string(),
+    })
+}
+
 /// The files of the shards' output folders `dirs`, joined: one of each
-/// shard `1..=n` (told by its [`SHARD_MARKER`], which is left out), files
-/// present in several (the library-wide ones) identical in all. Returns
-/// where each file is (relative path -> the file in one shard's folder), so
-/// that the merged folder can link rather than copy them; only files present
-/// in several shards are read.
+/// shard `1..=n` (told by its [`SHARD_MARKER`], which is left out), all
+/// built from the same inputs (the markers' `inputs` agree). Only regular
+/// files are taken (a symbolic link or special file is an error, so nothing
+/// outside the shard folders is ever read), and only files a build writes:
+/// a file in a material's folder must be listed by that material's
+/// metadata and be in one shard only; any other file (the library-wide
+/// LUTs and schemas) must be in every shard, identical. Returns where each
+/// file is (relative path -> the file in one shard's folder), so that the
+/// merged folder can link rather than copy them; only files present in
+/// several shards are read.
 pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, PathBuf>, String> {
     let mut files: BTreeMap<String, PathBuf> = BTreeMap::new();
     let mut seen: BTreeMap<usize, &Path> = BTreeMap::new();
-    let mut count = None;
+    let mut first: Option<(ShardMarker, &Path)> = None;
+    // Library-wide files: how many shards hold each.
+    let mut shared: BTreeMap<String, usize> = BTreeMap::new();
     for dir in dirs {
-        let marker = dir.join(SHARD_MARKER);
-        let text = std::fs::read_to_string(&marker).map_err(|e| {
-            format!(
-                "`{}` is not a shard's output folder (no readable {SHARD_MARKER}: {e}); build it with `weft build --shard k/n`",
-                dir.display()
-            )
-        })?;
-        let shard: Shard = text
-            .parse()
-            .map_err(|e| format!("{}: {e}", marker.display()))?;
-        if *count.get_or_insert(shard.count) != shard.count {
-            return Err(format!(
-                "`{}` is shard {shard}, but an earlier folder is of {} shards",
-                dir.display(),
-                count.unwrap_or_default()
-            ));
+        let marker = read_marker(dir)?;
+        let shard = marker.shard;
+        if let Some((f, f_dir)) = &first {
+            if f.shard.count != shard.count {
+                return Err(format!(
+                    "`{}` is shard {shard}, but `{}` is of {} shards",
+                    dir.display(),
+                    f_dir.display(),
+                    f.shard.count
+                ));
+            }
+            if f.inputs != marker.inputs {
+                return Err(format!(
+                    "`{}` and `{}` were built from different inputs (materials, sources or \
+                     toolchain differ); build every shard from the same checkout",
+                    f_dir.display(),
+                    dir.display()
+                ));
+            }
         }
         if let Some(other) = seen.insert(shard.index, dir) {
             return Err(format!(
@@ -106,39 +162,147 @@ pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, PathBuf>, String> {
                 dir.display()
             ));
         }
-        let list = crate::output::list_files(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        for rel in list {
-            if rel == SHARD_MARKER {
-                continue;
-            }
+        for rel in shard_files(dir)? {
             let path = dir.join(&rel);
-            match files.get(&rel) {
-                Some(other) => {
-                    let read =
-                        |p: &Path| std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()));
-                    if read(other)? != read(&path)? {
-                        return Err(format!(
-                            "`{rel}` differs between `{}` and `{}` (shards of different sources or toolchains?)",
-                            other.display(),
-                            path.display()
-                        ));
-                    }
+            if let Some(other) = files.get(&rel) {
+                if !shared.contains_key(&rel) {
+                    return Err(format!(
+                        "`{rel}` is in both `{}` and `{}`, but a material belongs to one shard",
+                        other.display(),
+                        path.display()
+                    ));
                 }
-                None => {
-                    files.insert(rel, path);
+                if read(other)? != read(&path)? {
+                    return Err(format!(
+                        "`{rel}` differs between `{}` and `{}` (shards of different sources or toolchains?)",
+                        other.display(),
+                        path.display()
+                    ));
                 }
+            } else {
+                files.insert(rel.clone(), path);
+            }
+            if let Some(n) = shared.get_mut(&rel) {
+                *n += 1;
+            } else if !rel.contains('/') || rel.starts_with("luts/") {
+                shared.insert(rel, 1);
             }
         }
+        first.get_or_insert((marker, dir));
     }
-    let count = count.ok_or("no shard folders given")?;
+    let count = first
+        .map(|(m, _)| m.shard.count)
+        .ok_or("no shard folders given")?;
     let missing: Vec<String> = (1..=count)
         .filter(|k| !seen.contains_key(k))
+        .take(10)
         .map(|k| format!("{k}/{count}"))
         .collect();
     if !missing.is_empty() {
-        return Err(format!("missing shard(s) {}", missing.join(", ")));
+        let more = count - seen.len() - missing.len();
+        let more = if more > 0 {
+            format!(" and {more} more")
+        } else {
+            String::new()
+        };
+        return Err(format!("missing shard(s) {}{more}", missing.join(", ")));
+    }
+    if let Some((rel, n)) = shared.iter().find(|(_, n)| **n != dirs.len()) {
+        return Err(format!(
+            "the library-wide file `{rel}` is in {n} of {} shard folders; every shard writes it",
+            dirs.len()
+        ));
     }
     Ok(files)
+}
+
+fn read(p: &Path) -> Result<Vec<u8>, String> {
+    weft_meta::files::read_regular(p, weft_meta::files::MAX_BINARY_BYTES)
+        .map_err(|e| format!("{}: {e}", p.display()))
+}
+
+/// The files of one shard folder a merge takes (relative paths, sorted):
+/// see [`merge`]. Refuses anything that is not a regular file or a folder,
+/// and files of a material's folder its metadata does not list.
+fn shard_files(dir: &Path) -> Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut names: Vec<_> = entries
+        .map(|e| e.map(|e| e.file_name()))
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("{}: {e}", dir.display()))?;
+    names.sort();
+    for name in names {
+        let name = name
+            .to_str()
+            .ok_or_else(|| format!("{}: a file name that is not UTF-8", dir.display()))?
+            .to_string();
+        if name == SHARD_MARKER || name == crate::ownership::OUTPUT_MARKER {
+            continue;
+        }
+        let path = dir.join(&name);
+        let kind = std::fs::symlink_metadata(&path)
+            .map_err(|e| format!("{}: {e}", path.display()))?
+            .file_type();
+        if kind.is_file() {
+            out.push(name);
+        } else if kind.is_dir() {
+            folder_files(dir, &name, &mut out)?;
+        } else {
+            return Err(not_regular(&path));
+        }
+    }
+    Ok(out)
+}
+
+/// The files of the top-level folder `name` of a shard: a material's (as
+/// its metadata lists them, each checked to be a regular file) or the
+/// library-wide LUT folder (every regular file in it).
+fn folder_files(dir: &Path, name: &str, out: &mut Vec<String>) -> Result<(), String> {
+    let folder = dir.join(name);
+    if let Some((_, listed)) = crate::unchanged::material_files(dir, name) {
+        let listed: std::collections::BTreeSet<String> =
+            listed.into_iter().map(|(rel, _)| rel).collect();
+        for rel in
+            crate::output::list_files(&folder).map_err(|e| format!("{}: {e}", folder.display()))?
+        {
+            let path = folder.join(&rel);
+            if !listed.contains(&rel) {
+                return Err(format!(
+                    "`{}` is not a file material `{name}`'s metadata lists; a shard folder holds only what `weft build` wrote",
+                    path.display()
+                ));
+            }
+            if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                return Err(not_regular(&path));
+            }
+            out.push(format!("{name}/{rel}"));
+        }
+        return Ok(());
+    }
+    if name != "luts" {
+        return Err(format!(
+            "`{}` is neither a material's folder (no `{name}.meta.json`) nor the LUT folder; a shard folder holds only what `weft build` wrote",
+            folder.display()
+        ));
+    }
+    for rel in
+        crate::output::list_files(&folder).map_err(|e| format!("{}: {e}", folder.display()))?
+    {
+        let path = folder.join(&rel);
+        if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+            return Err(not_regular(&path));
+        }
+        out.push(format!("{name}/{rel}"));
+    }
+    Ok(())
+}
+
+fn not_regular(path: &Path) -> String {
+    format!(
+        "`{}` is not a regular file (a symbolic link or special file); a shard folder holds only the files `weft build` wrote",
+        path.display()
+    )
 }
 
 #[cfg(test)]

@@ -108,6 +108,10 @@ impl<'l> Staging<'l> {
         let existed = self.lock.existing()?;
         let dir = self.lock.dir().to_path_buf();
         let tmp = self.tmp.take().expect("spilled");
+        // Marks the new tree as weft's, so that the next build may replace it.
+        let marker = tmp.path().join(crate::ownership::OUTPUT_MARKER);
+        std::fs::write(&marker, crate::ownership::OUTPUT_MARKER_TEXT)
+            .map_err(at(&marker, "cannot write"))?;
         if existed {
             for rel in list_files(&dir).map_err(at(&dir, "cannot read"))? {
                 let to = tmp.path().join(&rel);

@@ -35,6 +35,21 @@ fn file_stamp(path: &Path) -> Option<(u64, u128)> {
     Some((m.len(), mtime.as_nanos()))
 }
 
+/// Whether `path` is a stamp file weft wrote (its first line is the header).
+pub(crate) fn is_stamp_file(path: &Path) -> bool {
+    use std::io::{BufRead, Read};
+    // The type first: opening a FIFO would block.
+    if !std::fs::metadata(path).is_ok_and(|m| m.is_file()) {
+        return false;
+    }
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut first = String::new();
+    let mut reader = std::io::BufReader::new(file.take(HEADER.len() as u64 + 1));
+    reader.read_line(&mut first).is_ok() && first.trim_end() == HEADER
+}
+
 impl Stamp {
     /// The stamp of `lock`'s folder, if one was written and reads back whole.
     pub fn read(lock: &OutputLock) -> Option<Stamp> {

@@ -150,34 +150,7 @@ impl Previous {
         if meta.inputs_hash != hash {
             return None;
         }
-        let mut files: Vec<(String, Option<String>)> = meta
-            .variants
-            .iter()
-            .flat_map(|v| v.shader.iter().flat_map(|s| s.all_files()))
-            .map(|f| (f.path.clone(), Some(f.sha256.clone())))
-            .collect();
-        // Baked tables: files of the material's folder that its bindings name.
-        let prefix = format!("{name}/");
-        for v in &meta.variants {
-            let bindings = v.shader.iter().flat_map(|s| &s.bindings);
-            for f in bindings.filter_map(|b| b.resource.as_ref()?.file.as_ref()) {
-                if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
-                    && !files.iter().any(|(p, _)| p == rel)
-                {
-                    files.push((rel.to_string(), Some(sha.clone())));
-                }
-            }
-        }
-        // Texture parameters' images (`file`), named by the parameters.
-        let images = meta.parameters.iter();
-        for f in images.filter_map(|p| p.texture.as_ref()?.file.as_ref()) {
-            if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
-                && !files.iter().any(|(p, _)| p == rel)
-            {
-                files.push((rel.to_string(), Some(sha.clone())));
-            }
-        }
-        files.push((format!("{name}.meta.json"), None));
+        let files = listed_files(&meta, name);
         Some(Kept {
             variants: meta.variants.len(),
             files,
@@ -185,8 +158,56 @@ impl Previous {
     }
 }
 
+/// Every file of material `name`'s folder its metadata lists (relative to
+/// that folder), with the SHA-256 recorded for it (None for the metadata
+/// file itself): variant files, baked tables, texture files.
+fn listed_files(meta: &MetaFiles, name: &str) -> Vec<(String, Option<String>)> {
+    let mut files: Vec<(String, Option<String>)> = meta
+        .variants
+        .iter()
+        .flat_map(|v| v.shader.iter().flat_map(|s| s.all_files()))
+        .map(|f| (f.path.clone(), Some(f.sha256.clone())))
+        .collect();
+    // Baked tables: files of the material's folder that its bindings name.
+    let prefix = format!("{name}/");
+    for v in &meta.variants {
+        let bindings = v.shader.iter().flat_map(|s| &s.bindings);
+        for f in bindings.filter_map(|b| b.resource.as_ref()?.file.as_ref()) {
+            if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
+                && !files.iter().any(|(p, _)| p == rel)
+            {
+                files.push((rel.to_string(), Some(sha.clone())));
+            }
+        }
+    }
+    // Texture parameters' images (`file`), named by the parameters.
+    let images = meta.parameters.iter();
+    for f in images.filter_map(|p| p.texture.as_ref()?.file.as_ref()) {
+        if let (Some(rel), Some(sha)) = (f.path.strip_prefix(&prefix), &f.sha256)
+            && !files.iter().any(|(p, _)| p == rel)
+        {
+            files.push((rel.to_string(), Some(sha.clone())));
+        }
+    }
+    files.push((format!("{name}.meta.json"), None));
+    files
+}
+
+/// The files of material `name` in the output folder `out_dir`, as its
+/// metadata lists them (see [`listed_files`]), and its inputs hash; None
+/// without readable metadata.
+pub(crate) fn material_files(
+    out_dir: &Path,
+    name: &str,
+) -> Option<(String, Vec<(String, Option<String>)>)> {
+    let meta = read_meta(out_dir, name)?;
+    let files = listed_files(&meta, name);
+    Some((meta.inputs_hash, files))
+}
+
 fn read_meta(out_dir: &Path, name: &str) -> Option<MetaFiles> {
-    let bytes = std::fs::read(out_dir.join(name).join(format!("{name}.meta.json"))).ok()?;
+    let path = out_dir.join(name).join(format!("{name}.meta.json"));
+    let bytes = weft_meta::files::read_regular(&path, weft_meta::files::MAX_TEXT_BYTES).ok()?;
     serde_json::from_slice(&bytes).ok()
 }
 
@@ -338,7 +359,8 @@ pub(crate) fn walk(
         let e = e?;
         let name = e.file_name();
         let rel = format!("{prefix}{}", name.to_string_lossy());
-        if is_preserved(&rel, preserve) {
+        // The output marker is the folder's, not the build's.
+        if is_preserved(&rel, preserve) || name == crate::ownership::OUTPUT_MARKER {
             continue;
         }
         if e.file_type()?.is_dir() {

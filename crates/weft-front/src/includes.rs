@@ -139,7 +139,7 @@ impl<'a> Resolver<'a> {
         if let Some(id) = self.db.find(&path) {
             return Some(id);
         }
-        match std::fs::read_to_string(&path) {
+        match weft_meta::files::read_regular_string(&path, weft_meta::files::MAX_TEXT_BYTES) {
             Ok(text) => Some(self.db.add(&path, display_path(&path), text)),
             Err(e) => {
                 self.diags.error(
@@ -277,22 +277,25 @@ impl<'a> Resolver<'a> {
         }
         let id = match self.db.find(&path) {
             Some(id) => id,
-            None => match std::fs::read_to_string(&path) {
-                Ok(text) => {
-                    let display = display_path(&path);
-                    self.db.add(&path, display, text)
+            None => {
+                match weft_meta::files::read_regular_string(&path, weft_meta::files::MAX_TEXT_BYTES)
+                {
+                    Ok(text) => {
+                        let display = display_path(&path);
+                        self.db.add(&path, display, text)
+                    }
+                    Err(e) => {
+                        self.diags.error(
+                            "io",
+                            format!("cannot read `{}`: {e}", display_path(&path)),
+                            origin.file,
+                            origin.span,
+                            "named here",
+                        );
+                        return;
+                    }
                 }
-                Err(e) => {
-                    self.diags.error(
-                        "io",
-                        format!("cannot read `{}`: {e}", display_path(&path)),
-                        origin.file,
-                        origin.span,
-                        "named here",
-                    );
-                    return;
-                }
-            },
+            }
         };
         self.stack.push((path.clone(), origin));
         for dir in directives(self.db.text(id)) {

@@ -52,7 +52,7 @@ pub(crate) fn read_source(
     diags: &mut Diagnostics,
 ) -> Option<(PathBuf, FileId, String)> {
     let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-    match std::fs::read_to_string(&abs) {
+    match weft_meta::files::read_regular_string(&abs, weft_meta::files::MAX_TEXT_BYTES) {
         Ok(text) => {
             let file = db.add(&abs, includes::display_path(&abs), text.clone());
             Some((abs, file, text))

@@ -56,14 +56,9 @@ pub fn load(m: &mut Material, resolver: &mut Resolver, in_memory: bool) {
         let Some(path) = resolver.locate_texture(&f.path, &origin) else {
             continue;
         };
-        let bytes = match std::fs::metadata(&path) {
-            Ok(md) if md.len() > MAX_TEXTURE_FILE_BYTES => Err(format!(
-                "{} bytes is more than a texture file may have ({} MiB)",
-                md.len(),
-                MAX_TEXTURE_FILE_BYTES >> 20
-            )),
-            _ => std::fs::read(&path).map_err(|e| format!("cannot read it: {e}")),
-        };
+        // A regular file of bounded size: a FIFO would block, a device never end.
+        let bytes = weft_meta::files::read_regular(&path, MAX_TEXTURE_FILE_BYTES)
+            .map_err(|e| format!("cannot read it: {e}"));
         match bytes.and_then(|b| decode_png(&b)) {
             Ok(image) => f.image = Arc::new(image),
             Err(why) => bad_file(resolver.diags, &origin, &f.path, why),

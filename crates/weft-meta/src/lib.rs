@@ -8,6 +8,7 @@
 //! meaning changes; adding optional fields does not bump it.
 
 pub mod bake;
+pub mod files;
 pub mod limits;
 pub mod pipeline;
 pub mod scene;

@@ -32,7 +32,7 @@ fn generated_dir(meta_path: &Path) -> &Path {
 }
 
 fn read_lut(path: &Path) -> Result<Vec<u8>> {
-    std::fs::read(path).map_err(|e| {
+    weft_meta::files::read_regular(path, weft_meta::files::MAX_BINARY_BYTES).map_err(|e| {
         let hint = if e.kind() == std::io::ErrorKind::NotFound {
             " (run `cargo xtask regenerate` or `weft build` to bake it)"
         } else {

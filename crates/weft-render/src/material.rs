@@ -50,7 +50,8 @@ impl Material {
     /// Reads `<name>.meta.json`; shader files are resolved next to it.
     pub fn load(meta_path: impl AsRef<Path>) -> Result<Material> {
         let path = meta_path.as_ref();
-        let bytes = std::fs::read(path).map_err(io_err(path))?;
+        let bytes = weft_meta::files::read_regular(path, weft_meta::files::MAX_TEXT_BYTES)
+            .map_err(io_err(path))?;
         let meta: MaterialMetadata = serde_json::from_slice(&bytes).map_err(|e| {
             Error::Metadata(format!("`{}` is not weft metadata: {e}", path.display()))
         })?;

@@ -162,12 +162,15 @@ fn shader_source(gpu: &Gpu, input: &ShaderInput) -> Result<wgpu::ShaderSource<'s
                 })?
                 .path;
             let path = input.dir.join(rel);
-            let text = std::fs::read_to_string(&path).map_err(io_err(&path))?;
+            let text =
+                weft_meta::files::read_regular_string(&path, weft_meta::files::MAX_TEXT_BYTES)
+                    .map_err(io_err(&path))?;
             wgpu::ShaderSource::Wgsl(text.into())
         }
         Some(rel) => {
             let path = input.dir.join(rel);
-            let bytes = std::fs::read(&path).map_err(io_err(&path))?;
+            let bytes = weft_meta::files::read_regular(&path, weft_meta::files::MAX_BINARY_BYTES)
+                .map_err(io_err(&path))?;
             if bytes.len() % 4 != 0 || bytes.len() < 20 {
                 return Err(Error::Metadata(format!(
                     "{} is not a SPIR-V module",

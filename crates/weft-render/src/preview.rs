@@ -49,10 +49,11 @@ impl MaterialOptions {
         for (name, path) in &self.textures {
             // The name first: a typo is reported before the file is read.
             material.parameter(name)?;
-            let bytes = std::fs::read(path).map_err(|source| Error::Io {
-                path: path.clone(),
-                source,
-            })?;
+            let bytes = weft_meta::files::read_regular(path, weft_meta::files::MAX_BINARY_BYTES)
+                .map_err(|source| Error::Io {
+                    path: path.clone(),
+                    source,
+                })?;
             let (width, height, data) =
                 crate::image::decode_png(&bytes, &format!("{name} ({})", path.display()))?;
             material.set(

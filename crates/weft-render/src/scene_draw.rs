@@ -47,7 +47,8 @@ impl SceneFile {
     /// Reads `<out>/<scene>/<scene>.scene.json`.
     pub fn load(path: impl AsRef<Path>) -> Result<SceneFile> {
         let path = path.as_ref();
-        let bytes = std::fs::read(path).map_err(io_err(path))?;
+        let bytes = weft_meta::files::read_regular(path, weft_meta::files::MAX_TEXT_BYTES)
+            .map_err(io_err(path))?;
         let metadata: SceneMetadata = serde_json::from_slice(&bytes).map_err(|e| {
             Error::Metadata(format!(
                 "`{}` is not weft scene metadata: {e}",

@@ -21,7 +21,8 @@ pub(crate) fn read(roots: &[PathBuf], file: &ResourceFile) -> Result<TextureValu
         .map(|r| r.join(&file.path))
         .find(|p| p.is_file())
         .unwrap_or_else(|| roots.first().map_or(PathBuf::new(), |r| r.join(&file.path)));
-    let data = std::fs::read(&path).map_err(io_err(&path))?;
+    let data = weft_meta::files::read_regular(&path, weft_meta::files::MAX_BINARY_BYTES)
+        .map_err(io_err(&path))?;
     let expected = u64::from(file.width) * u64::from(file.height) * 4;
     if data.len() as u64 != expected || expected == 0 {
         return Err(Error::Metadata(format!(

@@ -70,6 +70,14 @@ impl ServeOptions {
 /// depend only on the materials and reports. Returns how many files, or the
 /// build's diagnostics as `weft build` prints them.
 pub fn export(options: &ServeOptions, dir: &Path) -> Result<usize, String> {
+    // Apart from the materials, like `weft build`'s output: checked before
+    // the build, so a refused export writes nothing.
+    let materials = weft_compiler::ownership::Input {
+        what: "materials root",
+        path: &options.materials,
+    };
+    weft_compiler::ownership::check_apart(dir, &[materials])
+        .map_err(|e| format!("{e}; nothing was written"))?;
     let status = build::build_once(options);
     let snapshot = match (&status.error, &status.snapshot) {
         (None, Some(s)) => s.clone(),

@@ -35,6 +35,9 @@ pub struct SceneOutput {
     pub generic_variants: Vec<String>,
     /// Warnings (e.g. a `dynamic` parameter the shader does not read).
     pub warnings: Option<(SourceDb, Diagnostics)>,
+    /// The materials root the scene's materials came from (an input an
+    /// output folder must lie apart from).
+    pub materials_root: std::path::PathBuf,
 }
 
 #[derive(Default)]
@@ -543,5 +546,6 @@ pub fn build_resolved_scene(
         metadata,
         generic_variants,
         warnings: None,
+        materials_root: manifest.materials_root.clone(),
     })
 }

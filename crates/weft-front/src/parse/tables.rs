@@ -16,6 +16,11 @@ pub const RECIPES: &[(&str, &str)] = &[(
 /// Texels per axis a table may have.
 pub const TABLE_SIZE_RANGE: [u32; 2] = [2, 512];
 
+/// The most texels a material's tables may have in all (256²): baking
+/// integrates thousands of points per texel, and this keeps a build with
+/// the largest tables to seconds (the shipped skin table is 64²).
+pub const MAX_TABLE_TEXELS: u64 = 256 * 256;
+
 pub(super) fn parse_tables(top: &Table, material: &mut Material, cx: &mut Cx) {
     let Some(tables) = top
         .get("tables")
@@ -130,6 +135,32 @@ pub(super) fn parse_tables(top: &Table, material: &mut Material, cx: &mut Cx) {
                 continue;
             }
         };
+        let texels: u64 = material
+            .tables
+            .iter()
+            .chain(std::iter::once(&BakedTable {
+                name: String::new(),
+                recipe: recipe.clone(),
+                size,
+                decl: Loc {
+                    file: cx.file,
+                    span: span.clone(),
+                },
+            }))
+            .map(|t| u64::from(t.size[0]) * u64::from(t.size[1]))
+            .sum();
+        if texels > MAX_TABLE_TEXELS {
+            cx.error_with_note(
+                "too-large",
+                format!(
+                    "the material's tables would have {texels} texels in all; at most {MAX_TABLE_TEXELS} (256²) are baked"
+                ),
+                t.span_of("size"),
+                "this table passes the budget",
+                "each texel integrates thousands of points at build time: use smaller tables (filtering interpolates between texels)",
+            );
+            continue;
+        }
         material.tables.push(BakedTable {
             name: name.to_string(),
             recipe,

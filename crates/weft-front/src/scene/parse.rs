@@ -24,6 +24,11 @@ pub const SCENE_KEYS: &[&str] = &[
 ];
 pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
 pub const LIGHT_KEYS: &[&str] = &["direction", "color"];
+
+/// The most instances a scene may have: every instance is specialised and
+/// compiled on its own, so this bounds what one file can make a build do
+/// (about a second per hundred instances of the heaviest material).
+pub const MAX_INSTANCES: usize = 1024;
 pub const INSTANCE_KEYS: &[&str] = &[
     "name",
     "material",
@@ -217,6 +222,20 @@ pub fn parse_manifest<'a, 'i>(
         None => Some((&[][..], scene.span.clone())),
     };
     if let Some((items, span)) = items {
+        if items.len() > MAX_INSTANCES {
+            cx.error_with_note(
+                "too-many-instances",
+                format!(
+                    "the scene has {} instances; at most {MAX_INSTANCES} are built",
+                    items.len()
+                ),
+                span,
+                "too many",
+                "each instance gets its own specialised shader: split the scene, or draw \
+                 repeats of one object with the engine's instancing",
+            );
+            return None;
+        }
         if items.is_empty() {
             cx.error_with_note(
                 "empty-scene",
@@ -330,6 +349,10 @@ fn vec3(t: &Table, key: &str, cx: &mut Cx) -> Option<[f64; 3]> {
     let span = t.get(key)?.span();
     let nums = t.numbers(key, cx)?;
     match <[f64; 3]>::try_from(nums) {
+        Ok(v) if !v.iter().all(|x| fits_f32(*x)) => {
+            f32_range_error(key, t, span, cx);
+            None
+        }
         Ok(v) => Some(v),
         Err(nums) => {
             cx.error(
@@ -341,6 +364,23 @@ fn vec3(t: &Table, key: &str, cx: &mut Cx) -> Option<[f64; 3]> {
             None
         }
     }
+}
+
+/// Whether `x` is finite and stays finite as the f32 the GPU receives.
+fn fits_f32(x: f64) -> bool {
+    x.is_finite() && x.abs() <= f64::from(f32::MAX)
+}
+
+fn f32_range_error(key: &str, t: &Table, span: Span, cx: &mut Cx) {
+    cx.error(
+        "type-range",
+        format!(
+            "`{key}` of {} must be finite numbers within ±3.4e38 (they become 32-bit floats)",
+            t.what
+        ),
+        span,
+        "out of f32 range",
+    );
 }
 
 fn parse_camera(t: &Table, cx: &mut Cx) -> Camera {
@@ -724,7 +764,13 @@ fn parse_transform(t: &Table, cx: &mut Cx) -> Transform {
     let scale = match t.get("scale").map(|v| v.get_ref()) {
         None => None,
         Some(DeValue::Array(_)) => vec3(t, "scale", cx),
-        Some(DeValue::Integer(_) | DeValue::Float(_)) => t.number("scale", cx).map(|s| [s; 3]),
+        Some(DeValue::Integer(_) | DeValue::Float(_)) => match t.number("scale", cx) {
+            Some(s) if !fits_f32(s) => {
+                f32_range_error("scale", t, t.span_of("scale"), cx);
+                None
+            }
+            s => s.map(|s| [s; 3]),
+        },
         Some(other) => {
             type_error(
                 cx,
