@@ -7,6 +7,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 use weft_compiler::{BuildOptions, output};
 
+mod bench_gpu_model;
 mod bench_scale;
 mod inspector;
 mod scale;
@@ -61,6 +62,10 @@ enum Command {
         #[command(subcommand)]
         what: Bench,
     },
+    /// The per-family child of `bench gpu-model` (not for direct use: it
+    /// needs the environment the parent sets).
+    #[command(name = "gpu-stats-worker", hide = true)]
+    GpuStatsWorker,
 }
 
 #[derive(Subcommand)]
@@ -76,6 +81,11 @@ enum Bench {
     /// `weft build` process, no-change and one-edit rebuild times, and builds
     /// from a shared cache (release binary).
     Scale(bench_scale::ScaleArgs),
+    /// Every pipeline (library variants x passes, f16 files, scene shaders)
+    /// compiled by AMD's shader compiler (Mesa RADV/ACO on its null device,
+    /// no GPU) for navi21 (RDNA2) and gfx1100 (RDNA3): instructions, VGPRs,
+    /// waves per SIMD, inverse throughput per stage.
+    GpuModel(bench_gpu_model::GpuModelArgs),
     /// Every material x tier: GPU time per frame (timestamp queries), ratio to
     /// standard's fast tier, SPIR-V instructions, error against the reference tier.
     Shading {
@@ -292,6 +302,13 @@ fn main() -> ExitCode {
         Command::Bench {
             what: Bench::Scale(args),
         } => bench_scale::bench_scale(&root, &args),
+        Command::Bench {
+            what: Bench::GpuModel(args),
+        } => bench_gpu_model::bench_gpu_model(&root, &args),
+        Command::GpuStatsWorker => match weft_gpu_stats::worker::serve_stdio() {
+            0 => ExitCode::SUCCESS,
+            _ => ExitCode::FAILURE,
+        },
         Command::Bench {
             what: Bench::Film { write },
         } => bench_film(&root, write, "cargo xtask bench film --write"),

@@ -1,0 +1,243 @@
+//! The markdown report of `cargo xtask bench gpu-model`: per family, each
+//! material × tier (its default keyword values) × pass with the fragment
+//! stage's figures and their ratio to `standard`'s `fast` tier; then each
+//! scene shader against the generic library variant it specialises.
+
+use crate::error::{Error, Result};
+use crate::record::{FamilyStats, PipelineStats, StageStats};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::path::Path;
+use weft_meta::MaterialMetadata;
+
+/// The driver's statistic names the report reads.
+pub const INSTRUCTIONS: &str = "Instructions";
+/// Vector registers per lane; fewer → more waves in flight.
+pub const VGPRS: &str = "VGPRs";
+/// RADV's waves per SIMD (occupancy) from the register and LDS use.
+pub const WAVES: &str = "Subgroups per SIMD";
+/// ACO's estimate of cycles per wave at full occupancy.
+pub const INVERSE_THROUGHPUT: &str = "Inverse Throughput";
+
+/// The baseline every ratio divides by.
+const BASE: (&str, &str, &str) = ("standard", "fast", "forward");
+
+type Key<'a> = (&'a str, &'a str, &'a str, &'a str); // material, variant, precision, pass
+
+fn library_index(f: &FamilyStats) -> BTreeMap<Key<'_>, &PipelineStats> {
+    f.pipelines
+        .iter()
+        .filter(|p| p.source.kind == "material")
+        .map(|p| {
+            let s = &p.source;
+            (
+                (
+                    s.material.as_str(),
+                    s.variant.as_str(),
+                    s.precision.as_str(),
+                    p.pass.as_str(),
+                ),
+                p,
+            )
+        })
+        .collect()
+}
+
+/// One row of the tier table: the default variant of a tier.
+struct TierRow {
+    material: String,
+    tier: String,
+    variant: String,
+    passes: Vec<String>,
+    has_f16: bool,
+}
+
+/// Each material's tiers in its order, each with the variant of the default keyword values.
+fn tier_rows(generated: &Path, families: &[FamilyStats]) -> Result<Vec<TierRow>> {
+    let mut materials: Vec<&str> = families
+        .iter()
+        .flat_map(|f| f.pipelines.iter())
+        .filter(|p| p.source.kind == "material")
+        .map(|p| p.source.material.as_str())
+        .collect();
+    materials.sort();
+    materials.dedup();
+    let mut rows = Vec::new();
+    for name in materials {
+        let path = generated.join(name).join(format!("{name}.meta.json"));
+        let bytes =
+            std::fs::read(&path).map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
+        let meta: MaterialMetadata = serde_json::from_slice(&bytes)
+            .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
+        for tier in &meta.tiers.values {
+            let default = meta.variants.iter().find(|v| {
+                &v.tier == tier
+                    && v.keywords.iter().all(|(k, val)| {
+                        meta.keywords
+                            .iter()
+                            .any(|kw| &kw.name == k && &kw.default == val)
+                    })
+            });
+            let Some(v) = default.and_then(|v| meta.resolve_variant(&v.id)) else {
+                continue;
+            };
+            rows.push(TierRow {
+                material: name.into(),
+                tier: tier.clone(),
+                variant: v.id.clone(),
+                passes: v.passes.clone(),
+                has_f16: v.shader.as_ref().is_some_and(|s| !s.f16_files.is_empty()),
+            });
+        }
+    }
+    Ok(rows)
+}
+
+fn fig(s: Option<&StageStats>, name: &str) -> Option<f64> {
+    s.and_then(|s| s.get(name))
+}
+
+fn num(v: Option<f64>) -> String {
+    v.map_or("–".into(), |v| format!("{v:.0}"))
+}
+
+fn ratio(v: Option<f64>, base: Option<f64>) -> String {
+    match (v, base) {
+        (Some(v), Some(b)) if b > 0.0 => format!("{:.2}×", v / b),
+        _ => "–".into(),
+    }
+}
+
+/// The report: `command` is the line that reproduces it.
+pub fn markdown(generated: &Path, families: &[FamilyStats], command: &str) -> Result<String> {
+    let rows = tier_rows(generated, families)?;
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "# GPU model: static figures from AMD's shader compiler\n"
+    );
+    let _ = writeln!(
+        o,
+        "Every pipeline built as its metadata describes it on Mesa RADV's null device (no GPU), \
+         figures from `VK_KHR_pipeline_executable_properties` (ACO). Static: a loop body counts \
+         once whatever its trip count (docs/performance.md). Reproduce with `{command}`.\n"
+    );
+    for f in families {
+        let _ = writeln!(
+            o,
+            "- `{}`: {}, {}, {} pipelines",
+            f.family,
+            f.device_name,
+            f.driver_info,
+            f.pipelines.len()
+        );
+    }
+    for f in families {
+        tier_table(&mut o, f, &rows);
+    }
+    for f in families {
+        scene_table(&mut o, f);
+    }
+    Ok(o)
+}
+
+fn tier_table(o: &mut String, f: &FamilyStats, rows: &[TierRow]) {
+    let index = library_index(f);
+    let base_row = rows
+        .iter()
+        .find(|r| r.material == BASE.0 && r.tier == BASE.1);
+    let base = base_row
+        .and_then(|r| index.get(&(BASE.0, r.variant.as_str(), "f32", BASE.2)))
+        .and_then(|p| p.stage("fragment"));
+    let _ = writeln!(
+        o,
+        "\n## {} ({}): fragment stage per material × tier\n\nThe variant of the material's \
+         default keyword values; × standard fast: divided by `standard` `fast` `forward`.\n",
+        f.family, f.device_name
+    );
+    let _ = writeln!(
+        o,
+        "| material | tier | pass | instructions | × standard fast | VGPRs | waves/SIMD | inverse throughput | × standard fast | VS instructions |"
+    );
+    let _ = writeln!(o, "|---|---|---|--:|--:|--:|--:|--:|--:|--:|");
+    for r in rows {
+        for precision in ["f32", "f16"] {
+            if precision == "f16" && !r.has_f16 {
+                continue;
+            }
+            for pass in &r.passes {
+                let key = (
+                    r.material.as_str(),
+                    r.variant.as_str(),
+                    precision,
+                    pass.as_str(),
+                );
+                let Some(p) = index.get(&key) else { continue };
+                let (fs, vs) = (p.stage("fragment"), p.stage("vertex"));
+                let tier = if precision == "f16" {
+                    format!("{} (f16)", r.tier)
+                } else {
+                    r.tier.clone()
+                };
+                let _ = writeln!(
+                    o,
+                    "| {} | {tier} | {pass} | {} | {} | {} | {} | {} | {} | {} |",
+                    r.material,
+                    num(fig(fs, INSTRUCTIONS)),
+                    ratio(fig(fs, INSTRUCTIONS), fig(base, INSTRUCTIONS)),
+                    num(fig(fs, VGPRS)),
+                    num(fig(fs, WAVES)),
+                    num(fig(fs, INVERSE_THROUGHPUT)),
+                    ratio(fig(fs, INVERSE_THROUGHPUT), fig(base, INVERSE_THROUGHPUT)),
+                    num(fig(vs, INSTRUCTIONS)),
+                );
+            }
+        }
+    }
+}
+
+fn scene_table(o: &mut String, f: &FamilyStats) {
+    let index = library_index(f);
+    let scenes: Vec<&PipelineStats> = f
+        .pipelines
+        .iter()
+        .filter(|p| p.source.kind == "scene")
+        .collect();
+    if scenes.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        o,
+        "\n## {}: scene shaders against their generic variants (fragment stage)\n",
+        f.family
+    );
+    let _ = writeln!(
+        o,
+        "| scene | shader | variant | pass | instructions (scene / generic) | VGPRs (scene / generic) | inverse throughput (scene / generic) |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|--:|--:|--:|");
+    for p in scenes {
+        let s = &p.source;
+        let generic = index
+            .get(&(
+                s.material.as_str(),
+                s.variant.as_str(),
+                "f32",
+                p.pass.as_str(),
+            ))
+            .and_then(|g| g.stage("fragment"));
+        let fs = p.stage("fragment");
+        let pair = |name: &str| format!("{} / {}", num(fig(fs, name)), num(fig(generic, name)));
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} | {} | {} | {} |",
+            s.scene.as_deref().unwrap_or(""),
+            s.shader.as_deref().unwrap_or(""),
+            s.variant,
+            p.pass,
+            pair(INSTRUCTIONS),
+            pair(VGPRS),
+            pair(INVERSE_THROUGHPUT),
+        );
+    }
+}

@@ -1,0 +1,122 @@
+//! `cargo xtask bench gpu-model`: every pipeline of the library and the
+//! scenes compiled by Mesa RADV/ACO on its null device (no GPU) for each
+//! family, figures per stage (weft_gpu_stats), written as
+//! generated/reports/gpu-model.md (`--json FILE`: every statistic).
+
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::Instant;
+use weft_gpu_stats::{Options, Selection, WorkerCommand};
+
+/// The hidden subcommand the per-family child processes run (this binary re-executed).
+pub const WORKER_SUBCOMMAND: &str = "gpu-stats-worker";
+
+#[derive(clap::Args)]
+pub struct GpuModelArgs {
+    /// `RADV_FORCE_FAMILY` values (repeatable; default navi21 and gfx1100).
+    #[arg(long = "family", value_name = "FAMILY")]
+    families: Vec<String>,
+    /// Also write generated/reports/gpu-model.md.
+    #[arg(long)]
+    write: bool,
+    /// Write every statistic of every executable as JSON to this file
+    /// (weft_gpu_stats::FamilyStats per family; about 1 MB, so not in reports/).
+    #[arg(long, value_name = "FILE")]
+    json: Option<std::path::PathBuf>,
+    /// Write each executable's ISA disassembly under this folder
+    /// (<family>/<spirv stem>.<pass>.<stage>.s), for reading loops.
+    #[arg(long, value_name = "DIR")]
+    disassembly: Option<std::path::PathBuf>,
+}
+
+pub fn bench_gpu_model(root: &Path, args: &GpuModelArgs) -> ExitCode {
+    match run(root, args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
+    let families: Vec<String> = if args.families.is_empty() {
+        weft_gpu_stats::DEFAULT_FAMILIES
+            .iter()
+            .map(|f| f.to_string())
+            .collect()
+    } else {
+        args.families.clone()
+    };
+    let exe = std::env::current_exe().map_err(|e| format!("locating xtask: {e}"))?;
+    let options = Options {
+        generated: root.join("generated"),
+        selection: Selection {
+            scenes: true,
+            ..Default::default()
+        },
+        families: families.clone(),
+        disassembly: args.disassembly.is_some(),
+        icd_dirs: None,
+        worker: WorkerCommand {
+            program: exe,
+            args: vec![WORKER_SUBCOMMAND.into()],
+        },
+    };
+    let start = Instant::now();
+    let mut stats = weft_gpu_stats::collect(&options).map_err(|e| e.to_string())?;
+    let pipelines: usize = stats.iter().map(|f| f.pipelines.len()).sum();
+    eprintln!(
+        "compiled {pipelines} pipelines ({} families) in {:.1} s",
+        stats.len(),
+        start.elapsed().as_secs_f64()
+    );
+    if let Some(dir) = &args.disassembly {
+        write_disassembly(dir, &mut stats)?;
+    }
+    let mut command = "cargo xtask bench gpu-model --write".to_string();
+    if !args.families.is_empty() {
+        for f in &families {
+            command.push_str(&format!(" --family {f}"));
+        }
+    }
+    let md = weft_gpu_stats::report::markdown(&root.join("generated"), &stats, &command)
+        .map_err(|e| e.to_string())?;
+    print!("{md}");
+    if args.write {
+        let reports = root.join("generated/reports");
+        std::fs::create_dir_all(&reports).map_err(|e| format!("{}: {e}", reports.display()))?;
+        let md_path = reports.join("gpu-model.md");
+        std::fs::write(&md_path, &md).map_err(|e| format!("{}: {e}", md_path.display()))?;
+        println!("wrote {}", md_path.display());
+    }
+    if let Some(json_path) = &args.json {
+        let mut json = serde_json::to_string(&stats).map_err(|e| e.to_string())?;
+        json.push('\n');
+        std::fs::write(json_path, json).map_err(|e| format!("{}: {e}", json_path.display()))?;
+        println!("wrote {}", json_path.display());
+    }
+    Ok(())
+}
+
+/// Moves the disassembly out of the figures into one file per executable.
+fn write_disassembly(dir: &Path, stats: &mut [weft_gpu_stats::FamilyStats]) -> Result<(), String> {
+    let mut count = 0;
+    for f in stats.iter_mut() {
+        let fam_dir = dir.join(&f.family);
+        for p in &mut f.pipelines {
+            let stem = p.source.spirv.trim_end_matches(".spv").replace('/', ".");
+            let sub = fam_dir.join(&p.source.kind);
+            std::fs::create_dir_all(&sub).map_err(|e| format!("{}: {e}", sub.display()))?;
+            for s in &mut p.stages {
+                if let Some(text) = s.disassembly.take() {
+                    let path = sub.join(format!("{stem}.{}.{}.s", p.pass, s.stage));
+                    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+                    count += 1;
+                }
+            }
+        }
+    }
+    eprintln!("wrote {count} disassembly files under {}", dir.display());
+    Ok(())
+}
