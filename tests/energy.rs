@@ -626,3 +626,37 @@ fn standard_white_furnace() {
         failures.join("\n")
     );
 }
+
+/// The standard reference's direct diffuse is Lambert × (1 − E(n·v)) (weft's
+/// choice for energy conservation; Filament weights only its indirect
+/// diffuse: materials/standard/README.md). Prints the weight against
+/// Lambert at F0 = 0.04 from the split-sum table as the shader reads it
+/// (the README's table) and checks that the weight stays in [0, 1] (the
+/// table's E ≤ 1) and is 1 − F0 at normal view.
+#[test]
+fn standard_direct_diffuse_weight_against_lambert() {
+    let columns = [0.045f32, 0.1, 0.3, 0.5, 1.0];
+    println!("n.v \\ r | {columns:?}");
+    for nv in [1.0f32, 0.5, 0.2, 0.1, 0.05, 0.01] {
+        let row: Vec<String> = columns
+            .iter()
+            .map(|&r| format!("{:.3}", 1.0 - split_sum_e(nv, r, 0.04)))
+            .collect();
+        println!("{nv} | {}", row.join(" | "));
+    }
+    let (mut lowest, mut at) = (1.0f32, (0.0f32, 0.0f32));
+    for j in 0..=100 {
+        let r = (j as f32 / 100.0).max(0.045);
+        for i in 1..=200 {
+            let nv = i as f32 / 200.0;
+            let weight = 1.0 - split_sum_e(nv, r, 0.04);
+            assert!((0.0..=1.0).contains(&weight), "(n.v {nv}, r {r}): {weight}");
+            if weight < lowest {
+                (lowest, at) = (weight, (nv, r));
+            }
+        }
+    }
+    println!("lowest weight {lowest:.3} at (n.v, r) = {at:?}");
+    let normal = 1.0 - split_sum_e(1.0, 0.045, 0.04);
+    assert!((normal - 0.96).abs() < 2e-3, "normal view: {normal}");
+}

@@ -4,10 +4,14 @@
 //! - the white furnace (pbrt-v3's HairBSDF WhiteFurnace test): with σ_a = 0
 //!   the fibre scatters all the light it receives, ∫ S(ω_o, ω_i) dω_i = 1
 //!   (S = f |cos θ_i|), averaged over the offset h across the fibre; Monte
-//!   Carlo over the sphere × h on the GPU, over a β_m × β_n × ω_o grid;
-//! - the WGSL against an independent f64 evaluation of the same model (I_0
-//!   by quadrature of its integral, not its series) at single offsets, and
-//!   the material's h average (32 offsets) against a converged f64 one;
+//!   Carlo over the sphere × h on the GPU, over a β_m × β_n × ω_o grid, with
+//!   untilted (α = 0, pbrt's test) and tilted cuticle scales (α = 2°, 3°);
+//! - the WGSL against an independent f64 evaluation of pbrt-v3's model (I_0
+//!   by quadrature of its integral, not its series; the cuticle tilts as
+//!   pbrt-v3's HairBSDF::f applies them, to θ_o) at single offsets, and the
+//!   material's h average (64 offsets) against a converged f64 one;
+//! - the cuticle tilt's direction: R's peak moves by +2α in θ_i, TRT's by
+//!   about -4α, on the GPU and in the f64 model;
 //! - absorption only removes energy (σ_a > 0: below the furnace).
 //!
 //! A missing Vulkan adapter fails the test (install mesa-vulkan-drivers).
@@ -27,7 +31,7 @@ fn gpu() -> Gpu {
     Gpu::new().unwrap_or_else(|e| panic!("the hair tests need a Vulkan adapter: {e}"))
 }
 
-/// Two kernels over the shipped library (with lib/brdf.wgsl, which it
+/// Three kernels over the shipped library (with lib/brdf.wgsl, which it
 /// includes, and the engine interface's π constants):
 /// - `hair_points`: per point four vec4 in, (ω_o, γ_o), (ω_i, offsets),
 ///   (σ_a, η), (β_m, β_n, α°, φ), strand along +x (pbrt's frame); two vec4
@@ -36,7 +40,8 @@ fn gpu() -> Gpu {
 ///   material does;
 /// - `hair_furnace`: per thread three vec4 in, (ω_o, seed), (β_m, β_n, α°,
 ///   η), (samples, -, -, -); out (Σ x, Σ x², -, -) of x = 4π S_h(ω_o, ω_i)
-///   for ω_i uniform on the sphere and h uniform in [-1, 1], σ_a = 0.
+///   for ω_i uniform on the sphere and h uniform in [-1, 1], σ_a = 0;
+/// - `hair_longitudinal`: the four lobes' M_p at given angles.
 const KERNEL: &str = r#"
 @group(0) @binding(0) var<storage, read> hair_in: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> hair_out: array<vec4<f32>>;
@@ -70,6 +75,20 @@ fn hair_points(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     hair_out[2u * k] = vec4<f32>(lobes.s, 0.0);
     hair_out[2u * k + 1u] = vec4<f32>(lobes.albedo, 0.0);
+}
+
+// Per point two vec4 in, (sin θ_o, cos θ_o, sin θ_i, cos θ_i), (β_m, α°,
+// -, -); out the four lobes' M_p.
+@compute @workgroup_size(64)
+fn hair_longitudinal(@builtin(global_invocation_id) id: vec3<u32>) {
+    let k = id.x;
+    if k >= arrayLength(&hair_out) {
+        return;
+    }
+    let a = hair_in[2u * k];
+    let b = hair_in[2u * k + 1u];
+    let hair = weft_hair_params(vec3<f32>(0.0), 1.55, b.x, 0.3, b.y);
+    hair_out[k] = weft_hair_longitudinal(hair, a.x, a.y, a.z, a.w);
 }
 
 // PCG (Jarzynski & Olano 2020): 32-bit state to a uniform in [0, 1).
@@ -248,26 +267,31 @@ fn np(phi: f64, p: f64, s: f64, gamma_o: f64, gamma_t: f64) -> f64 {
     logistic(d) / (cdf(PI) - cdf(-PI))
 }
 
+/// The four lobes' M_p at (θ_o, θ_i) with pbrt-v3's cuticle tilts, as its
+/// HairBSDF::f writes them since commit c65c588 (2019, "Correct importance
+/// sampling as per d'Eon paper"; pbrt-v4 the same): θ_o' = θ_o - 2α for R,
+/// θ_o + α for TT, θ_o + 4α for TRT, |cos θ_o'|, the residual untilted.
+fn longitudinal_f64(f: &Fibre, theta_o: f64, theta_i: f64) -> [f64; 4] {
+    let bm = f.beta_m;
+    let v = (0.726 * bm + 0.812 * bm * bm + 3.7 * bm.powi(20)).powi(2);
+    let vs = [v, v / 4.0, 4.0 * v, 4.0 * v];
+    let a = f.alpha_deg.to_radians();
+    let tilts = [-2.0 * a, a, 4.0 * a, 0.0];
+    let (sin_i, cos_i) = theta_i.sin_cos();
+    std::array::from_fn(|p| {
+        let t = theta_o + tilts[p];
+        mp(cos_i, t.cos().abs(), sin_i, t.sin(), vs[p])
+    })
+}
+
 /// (S, albedo) at one offset h, ω in pbrt's frame (x along the strand).
 fn lobes_f64(f: &Fibre, o: [f64; 3], i: [f64; 3], h: f64) -> ([f64; 3], [f64; 3]) {
     let (sin_o, sin_i) = (o[0], i[0]);
     let cos_o = (1.0 - sin_o * sin_o).sqrt();
     let phi = i[2].atan2(i[1]) - o[2].atan2(o[1]);
-    let bm = f.beta_m;
-    let v = (0.726 * bm + 0.812 * bm * bm + 3.7 * bm.powi(20)).powi(2);
-    let vs = [v, v / 4.0, 4.0 * v, 4.0 * v];
     let bn = f.beta_n;
     let s = (PI / 8.0).sqrt() * (0.265 * bn + 1.194 * bn * bn + 5.372 * bn.powi(22));
-    // Tilted incident angles: R by -2α, TT by +α, TRT by +4α (θ_i' = θ_i ∓ …).
-    let a = f.alpha_deg.to_radians();
-    let theta_i = sin_i.asin();
-    let tilts = [2.0 * a, -a, -4.0 * a, 0.0];
-    let m: Vec<f64> = (0..4)
-        .map(|p| {
-            let t = theta_i + tilts[p];
-            mp(t.cos().abs(), cos_o, t.sin(), sin_o, vs[p])
-        })
-        .collect();
+    let m = longitudinal_f64(f, sin_o.asin(), sin_i.asin());
     let gamma_o = h.asin();
     let sin_t = sin_o / f.eta;
     let cos_t = (1.0 - sin_t * sin_t).sqrt();
@@ -456,32 +480,24 @@ fn the_reference_average_over_the_fibre_width_converges() {
     eprintln!("64 offsets against 2048: worst relative error {worst:.4}");
 }
 
-/// pbrt-v3's WhiteFurnace (α = 0, as pbrt's test): β_m, β_n ∈ {0.1, 0.3, 0.5, 0.7, 0.9}, ω_o at
-/// three inclinations; each case 2^23 samples (ω_i uniform on the sphere, h
-/// uniform), its mean within [0.95, 1.05] and its Monte Carlo standard error
-/// (from the sample variance) below 0.01.
-#[test]
-fn white_furnace() {
+/// One white-furnace case: (β_m, β_n, α in degrees, ω_o).
+type FurnaceCase = (f64, f64, f64, [f64; 3]);
+
+/// ∫ S dω_i per case on the GPU, 2^23 samples each (ω_i uniform on the
+/// sphere, h uniform): returns (mean, Monte Carlo standard error) per case.
+fn furnace(gpu: &Gpu, cases: &[FurnaceCase]) -> Vec<(f64, f64)> {
     const THREADS: usize = 256;
     const SAMPLES: u32 = 32768;
-    let gpu = gpu();
-    let betas = [0.1, 0.3, 0.5, 0.7, 0.9];
-    let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
-    let mut cases = Vec::new();
-    for &beta_m in &betas {
-        for &beta_n in &betas {
-            for o in outgoing {
-                cases.push((beta_m, beta_n, o));
-            }
-        }
-    }
     let mut input = Vec::new();
-    for (c, (beta_m, beta_n, o)) in cases.iter().enumerate() {
+    for (c, (beta_m, beta_n, alpha, o)) in cases.iter().enumerate() {
         for t in 0..THREADS {
             let seed = ((c * THREADS + t) as u32).wrapping_mul(2_654_435_761) ^ 0x9e37_79b9;
             let o = o.map(|x| x as f32);
             push(&mut input, &[o[0], o[1], o[2], f32::from_bits(seed)]);
-            push(&mut input, &[*beta_m as f32, *beta_n as f32, 0.0, 1.55]);
+            push(
+                &mut input,
+                &[*beta_m as f32, *beta_n as f32, *alpha as f32, 1.55],
+            );
             push(&mut input, &[SAMPLES as f32, 0.0, 0.0, 0.0]);
         }
     }
@@ -497,30 +513,181 @@ fn white_furnace() {
         .expect("the furnace kernel runs");
     let sums = floats(&out);
     let n = (THREADS as f64) * f64::from(SAMPLES);
+    (0..cases.len())
+        .map(|c| {
+            let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+            for t in 0..THREADS {
+                sum += f64::from(sums[4 * (c * THREADS + t)]);
+                sum2 += f64::from(sums[4 * (c * THREADS + t) + 1]);
+            }
+            let mean = sum / n;
+            (mean, ((sum2 / n - mean * mean) / n).sqrt())
+        })
+        .collect()
+}
+
+/// Every case's mean within [0.95, 1.05] (pbrt-v3's bar) and its standard
+/// error below 0.01; prints the range.
+fn assert_furnace(label: &str, cases: &[FurnaceCase]) {
+    let results = furnace(&gpu(), cases);
     let (mut lowest, mut highest, mut worst_error) = (f64::MAX, f64::MIN, 0.0f64);
     let mut failures = Vec::new();
-    for (c, (beta_m, beta_n, o)) in cases.iter().enumerate() {
-        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
-        for t in 0..THREADS {
-            sum += f64::from(sums[4 * (c * THREADS + t)]);
-            sum2 += f64::from(sums[4 * (c * THREADS + t) + 1]);
-        }
-        let mean = sum / n;
-        let error = ((sum2 / n - mean * mean) / n).sqrt();
-        lowest = lowest.min(mean);
-        highest = highest.max(mean);
-        worst_error = worst_error.max(error);
-        if !(0.95..=1.05).contains(&mean) || error > 0.01 {
+    for ((beta_m, beta_n, alpha, o), (mean, error)) in cases.iter().zip(&results) {
+        lowest = lowest.min(*mean);
+        highest = highest.max(*mean);
+        worst_error = worst_error.max(*error);
+        if !(0.95..=1.05).contains(mean) || *error > 0.01 {
             failures.push(format!(
-                "β_m {beta_m}, β_n {beta_n}, ω_o {o:.3?}: ∫ S dω_i = {mean:.4} ± {error:.4}"
+                "β_m {beta_m}, β_n {beta_n}, α {alpha}°, ω_o {o:.3?}: ∫ S dω_i = {mean:.4} ± {error:.4}"
             ));
         }
     }
     eprintln!(
-        "white furnace, {} cases × {n} samples: {lowest:.4} to {highest:.4}, standard error at most {worst_error:.4}",
+        "white furnace {label}, {} cases × 2^23 samples: {lowest:.4} to {highest:.4}, standard error at most {worst_error:.4}",
         cases.len()
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// pbrt-v3's WhiteFurnace (α = 0, as pbrt's test): β_m, β_n ∈ {0.1, 0.3,
+/// 0.5, 0.7, 0.9}, ω_o at three inclinations.
+#[test]
+fn white_furnace() {
+    let betas = [0.1, 0.3, 0.5, 0.7, 0.9];
+    let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
+    let mut cases = Vec::new();
+    for &beta_m in &betas {
+        for &beta_n in &betas {
+            for o in outgoing {
+                cases.push((beta_m, beta_n, 0.0, o));
+            }
+        }
+    }
+    assert_furnace("α = 0", &cases);
+}
+
+/// The furnace with tilted scales (α = 2°, 3°). Tilting θ_o, as pbrt-v3
+/// does, keeps ∫ M_p cos θ_i dθ_i = 1, so the fibre still scatters all the
+/// light; tilting θ_i instead (weft before issue 28) gave 0.944 at the
+/// grazing ω_o with β_m 0.1.
+#[test]
+fn white_furnace_with_tilted_scales() {
+    let betas = [0.1, 0.5, 0.9];
+    let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
+    let mut cases = Vec::new();
+    for alpha in [2.0, 3.0] {
+        for &beta_m in &betas {
+            for &beta_n in &betas {
+                for o in outgoing {
+                    cases.push((beta_m, beta_n, alpha, o));
+                }
+            }
+        }
+    }
+    assert_furnace("α = 2°, 3°", &cases);
+}
+
+/// The GPU's M_p of lobes R and TRT (weft_hair_longitudinal) over θ_i in
+/// 0.05° steps at one θ_o: the θ_i (degrees) of each lobe's maximum.
+fn gpu_longitudinal_peaks(gpu: &Gpu, beta_m: f64, alpha: f64, theta_o: f64) -> [f64; 2] {
+    let grid: Vec<f64> = (-1400..=1400).map(|k| f64::from(k) * 0.05).collect();
+    let (sin_o, cos_o) = theta_o.to_radians().sin_cos();
+    let mut input = Vec::new();
+    for theta_i in &grid {
+        let (sin_i, cos_i) = theta_i.to_radians().sin_cos();
+        push(
+            &mut input,
+            &[sin_o as f32, cos_o as f32, sin_i as f32, cos_i as f32],
+        );
+        push(&mut input, &[beta_m as f32, alpha as f32, 0.0, 0.0]);
+    }
+    let out = gpu
+        .run_compute(
+            &source(),
+            "hair_longitudinal",
+            &input,
+            (grid.len() * 16) as u64,
+            (grid.len() as u32).div_ceil(64),
+        )
+        .expect("the longitudinal kernel runs");
+    let m = floats(&out);
+    [0, 2].map(|lobe| {
+        let best = (0..grid.len())
+            .max_by(|&a, &b| m[4 * a + lobe].total_cmp(&m[4 * b + lobe]))
+            .expect("a grid");
+        grid[best]
+    })
+}
+
+/// The f64 pbrt-v3 model's maximum of lobe p's M_p over θ_i (degrees), by
+/// golden-section search (M_p is unimodal in θ_i).
+fn f64_longitudinal_peak(fibre: &Fibre, theta_o: f64, lobe: usize) -> f64 {
+    let value = |t: f64| longitudinal_f64(fibre, theta_o.to_radians(), t.to_radians())[lobe];
+    let (mut a, mut b) = (-70.0f64, 70.0f64);
+    let r = (5f64.sqrt() - 1.0) / 2.0;
+    while b - a > 1e-3 {
+        let (c, d) = (b - r * (b - a), a + r * (b - a));
+        if value(c) > value(d) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// The cuticle tilt moves the R highlight by +2α in θ_i at a fixed θ_o (its
+/// peak from ≈ -θ_o to ≈ -θ_o + 2α; sin θ = ω·t with t from root to tip)
+/// and TRT by about -4α, as pbrt-v3's model does: on a strand lit and seen
+/// from the front, R then sits where the strand still rises towards the
+/// viewer, nearer the root, and TRT nearer the tip. Before issue 28 weft
+/// tilted θ_i, which moved R by -2α and TRT by +4α. Checked on the GPU
+/// against the f64 pbrt-v3 model (peaks within 0.15°) and against the
+/// expected shift (R within ±0.5α of 2α; TRT, whose lobe is 2× wider and
+/// bends the shift, within ±1.5α of -4α: the model gives -4.4α at β_m 0.2).
+#[test]
+fn cuticle_tilt_moves_r_and_trt_highlights_as_pbrt() {
+    let gpu = gpu();
+    let alpha = 3.0;
+    let beta_m = 0.2;
+    let base = Fibre {
+        beta_m,
+        alpha_deg: 0.0,
+        ..BROWN
+    };
+    let tilted = Fibre {
+        alpha_deg: alpha,
+        ..base
+    };
+    for theta_o in [20.0, -30.0] {
+        let flat = gpu_longitudinal_peaks(&gpu, beta_m, 0.0, theta_o);
+        let shifted = gpu_longitudinal_peaks(&gpu, beta_m, alpha, theta_o);
+        for (k, lobe) in [0usize, 2].into_iter().enumerate() {
+            for (fibre, got) in [(&base, flat[k]), (&tilted, shifted[k])] {
+                let want = f64_longitudinal_peak(fibre, theta_o, lobe);
+                assert!(
+                    (got - want).abs() < 0.15,
+                    "θ_o {theta_o}°, lobe {lobe}, α {}°: GPU peak at θ_i {got}°, pbrt-v3 f64 {want:.3}°",
+                    fibre.alpha_deg
+                );
+            }
+        }
+        let (r_shift, trt_shift) = (shifted[0] - flat[0], shifted[1] - flat[1]);
+        eprintln!(
+            "θ_o {theta_o}°, α {alpha}°: R peak {}° → {}° ({r_shift:+.2}°), TRT peak {}° → {}° ({trt_shift:+.2}°)",
+            flat[0], shifted[0], flat[1], shifted[1]
+        );
+        assert!(
+            (r_shift - 2.0 * alpha).abs() <= 0.5 * alpha,
+            "θ_o {theta_o}°: R moved by {r_shift:+.2}° in θ_i, expected ≈ +2α = {:+}°",
+            2.0 * alpha
+        );
+        assert!(
+            (trt_shift + 4.0 * alpha).abs() <= 1.5 * alpha,
+            "θ_o {theta_o}°: TRT moved by {trt_shift:+.2}° in θ_i, expected ≈ -4α = {:+}°",
+            -4.0 * alpha
+        );
+    }
 }
 
 /// Absorption only removes energy: the h-averaged albedo is 1 at σ_a = 0,

@@ -100,6 +100,20 @@ struct Thread {
     /// Radians.
     gamma_s: f64,
     gamma_v: f64,
+    /// The volume term's Fresnel transmission (the material's: `PerDirection`).
+    transmission: Transmission,
+}
+
+/// Readings of the volume term's F = F_t(η, ω_i) F_t(η', ω'_r) (README,
+/// "The volume term's Fresnel transmission").
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Transmission {
+    /// (1 - F_r(cos θ_i)) (1 - F_r(cos θ_r)): in through the fibre surface
+    /// facing ω_i, out through the one facing ω_r (weft's reading).
+    PerDirection,
+    /// (1 - F_r(cos θ_d cos(φ_d/2)))²: both at the surface reflection's
+    /// effective angle (the seed, path_tracer_cloth, Ushio's port).
+    SquaredEffective,
 }
 
 /// Thread geometry: u along the thread, v the other thread set, n the normal.
@@ -188,8 +202,9 @@ fn angles(f: &Frame, alpha: f64, wi: V3, wr: V3) -> Option<Angles> {
 }
 
 /// The thread scattering function f_s (paper sec. 4), reference form:
-/// exact Fresnel at cos(theta_d) cos(phi_d / 2) for the surface term and
-/// transmission in at theta_i and out at theta_r for the volume term.
+/// exact Fresnel at cos(theta_d) cos(phi_d / 2) for the surface term and,
+/// for the volume term, transmission in at theta_i and out at theta_r (or
+/// the other reading, `Transmission`).
 fn f_s(a: &Angles, th: &Thread) -> V3 {
     let theta_h = 0.5 * (a.theta_i + a.theta_r);
     let theta_d = 0.5 * (a.theta_i - a.theta_r);
@@ -197,7 +212,10 @@ fn f_s(a: &Angles, th: &Thread) -> V3 {
     let half_phi = (0.5 * a.phi_d).cos();
     let f_r = fresnel(theta_d.cos() * half_phi, th.eta);
     let surface = f_r * half_phi * gauss(th.gamma_s, theta_h);
-    let f_t = (1.0 - fresnel(ci, th.eta)) * (1.0 - fresnel(cr, th.eta));
+    let f_t = match th.transmission {
+        Transmission::PerDirection => (1.0 - fresnel(ci, th.eta)) * (1.0 - fresnel(cr, th.eta)),
+        Transmission::SquaredEffective => (1.0 - f_r) * (1.0 - f_r),
+    };
     let volume = f_t * ((1.0 - th.kd) * gauss(th.gamma_v, theta_h) + th.kd) / (ci + cr);
     let cd2 = (theta_d.cos() * theta_d.cos()).max(MIN_COS2_THETA_D);
     [0, 1, 2].map(|c| (surface + volume * th.albedo[c]) / cd2)
@@ -355,6 +373,7 @@ fn thread(eta: f64, color: V3, s: f64, kd: f64, gs: f64, gv: f64) -> Thread {
         kd,
         gamma_s: gs.to_radians(),
         gamma_v: gv.to_radians(),
+        transmission: Transmission::PerDirection,
     }
 }
 
@@ -515,6 +534,7 @@ fn check_preset_thread(
         kd: preset_number(values, &k("isotropy")),
         gamma_s: preset_number(values, &k("gamma_s")).to_radians(),
         gamma_v: preset_number(values, &k("gamma_v")).to_radians(),
+        transmission: Transmission::PerDirection,
     };
     let a = preset_number(values, &k("coverage"));
     for (got, exp, what) in [
@@ -616,6 +636,7 @@ fn default_fabric(m: &weft_front::Material) -> Fabric {
         kd: num(&format!("thread{j}_isotropy")),
         gamma_s: num(&format!("thread{j}_gamma_s")).to_radians(),
         gamma_v: num(&format!("thread{j}_gamma_v")).to_radians(),
+        transmission: Transmission::PerDirection,
     };
     Fabric {
         name: "default (linen, curves)",
@@ -884,6 +905,7 @@ fn as_f32(f: &Fabric) -> Fabric {
         kd: r(t.kd),
         gamma_s: r(t.gamma_s),
         gamma_v: r(t.gamma_v),
+        transmission: t.transmission,
     };
     let p = |p: &Profile| match p {
         Profile::List(o) => Profile::List(o.iter().map(|x| r(*x)).collect()),
@@ -1054,6 +1076,7 @@ fn gpu_extremes_are_finite_and_non_negative() {
         kd: 0.0,
         gamma_s: 0.5f64.to_radians(),
         gamma_v: 0.5f64.to_radians(),
+        transmission: Transmission::PerDirection,
     };
     extreme.t2 = Thread {
         albedo: [1.0; 3],
@@ -1061,6 +1084,7 @@ fn gpu_extremes_are_finite_and_non_negative() {
         kd: 1.0,
         gamma_s: 90f64.to_radians(),
         gamma_v: 90f64.to_radians(),
+        transmission: Transmission::PerDirection,
     };
     extreme.a1 = 1.0;
     extreme.a2 = 1.0;
@@ -1398,5 +1422,61 @@ fn ambient_factor_report() {
                 format!("({:.4}, {:.4}, {:.4})", abar[0], abar[1], abar[2])
             );
         }
+    }
+}
+
+/// The volume term's two readings of F = F_t(η, ω_i) F_t(η', ω'_r) on the
+/// shipped Table II presets (f64, the reference quadrature): the relative
+/// difference of L_r/L_i between weft's per-direction transmission and the
+/// squared transmission at the effective angle, over the GPU test's
+/// direction pairs and frames, for values above 1e-3 of the fabric's peak.
+/// Printed for the README; the test fails unless every preset tells the two
+/// apart by more than the GPU test's tolerance (ten times `REL_TOL`), so
+/// `gpu_reference_tier_matches_f64_model` catches a tier written with the
+/// other reading.
+#[test]
+fn volume_fresnel_readings_on_table_ii() {
+    let m = load_material();
+    for fab in preset_fabrics(&m) {
+        let mut other = fab.clone();
+        other.t1.transmission = Transmission::SquaredEffective;
+        other.t2.transmission = Transmission::SquaredEffective;
+        let mut pairs = Vec::new();
+        for (k, (t, b, n)) in frames().into_iter().enumerate() {
+            for (wi, wr) in direction_pairs(0x5EED + k as u64, t, b, n) {
+                let ours = cloth_reference(&fab, n, t, b, wi, wr);
+                let theirs = cloth_reference(&other, n, t, b, wi, wr);
+                pairs.push((ours, theirs, dot(n, wi).min(dot(n, wr))));
+            }
+        }
+        let peak = pairs
+            .iter()
+            .flat_map(|(o, _, _)| o.iter().copied())
+            .fold(0.0f64, f64::max);
+        let mut rel: Vec<(f64, f64)> = pairs
+            .iter()
+            .flat_map(|(o, t, grazing)| {
+                (0..3)
+                    .filter(|&c| o[c] > 1e-3 * peak)
+                    .map(move |c| ((t[c] - o[c]).abs() / o[c], *grazing))
+            })
+            .collect();
+        rel.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let at = |q: f64| rel[((rel.len() - 1) as f64 * q) as usize].0;
+        let (worst, grazing) = *rel.last().expect("values above the floor");
+        eprintln!(
+            "{}: {} values, |squared effective − per direction| / per direction: median {:.4}, p95 {:.4}, max {:.4} (min(n·ω_i, n·ω_r) {:.3} there)",
+            fab.name,
+            rel.len(),
+            at(0.5),
+            at(0.95),
+            worst,
+            grazing
+        );
+        assert!(
+            worst > 10.0 * REL_TOL,
+            "{}: the two readings differ by at most {worst:.2e}",
+            fab.name
+        );
     }
 }

@@ -302,15 +302,15 @@ fn weft_hair_mp(cos_i_1: f32, cos_o: f32, sin_i: f32, sin_o: f32, v_1: f32) -> f
 }
 
 fn weft_hair_longitudinal(hair_1: WeftHair, sin_o_1: f32, cos_o_1: f32, sin_i_1: f32, cos_i_2: f32) -> vec4<f32> {
-    let sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
-    let cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
-    let sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
-    let cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
-    let sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
-    let cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
-    let _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
-    let _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
-    let _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    let sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
+    let cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
+    let sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
+    let cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
+    let sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
+    let cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
+    let _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
+    let _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
+    let _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
     let _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
     return vec4<f32>(_e52, _e55, _e58, _e61);
 }

@@ -78,7 +78,8 @@ fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n: f32) -> vec3<f32> {
 }
 
 // Per-pixel constants of the model. alpha_deg: cuticle scale tilt α in
-// degrees (R shifts by -2α, TT by α, TRT by 4α: pbrt's tilts).
+// degrees (θ_o tilted by -2α for R, α for TT, 4α for TRT: pbrt-v3's tilts,
+// weft_hair_longitudinal).
 fn weft_hair_params(sigma_a: vec3<f32>, eta: f32, beta_m: f32, beta_n: f32, alpha_deg: f32) -> WeftHair {
     var hair: WeftHair;
     hair.sigma_a = max(sigma_a, vec3<f32>(0.0));
@@ -143,19 +144,25 @@ fn weft_hair_mp(cos_i: f32, cos_o: f32, sin_i: f32, sin_o: f32, v: f32) -> f32 {
 }
 
 // The four lobes' M_p for one pair of directions, with the cuticle tilts
-// applied to θ_i (R: -2α, TT: +α, TRT: +4α in pbrt's sign convention) and
-// |cos| of the tilted angle; the residual is untilted.
+// applied to θ_o as pbrt-v3 does since its commit c65c588 ("Correct
+// importance sampling as per d'Eon paper", 2019) and pbrt-v4: θ_o' = θ_o - 2α
+// (R), θ_o + α (TT), θ_o + 4α (TRT), |cos θ_o'|; the residual is untilted.
+// M_p(θ_i, θ_o') peaks near θ_i = -θ_o', so R's peak moves to
+// θ_i ≈ -θ_o + 2α and TRT's to -θ_o - 4α (sin θ = ω·t, t from root to
+// tip). Earlier pbrt-v3 (and weft before issue 28) tilted θ_i by +2α, -α,
+// -4α instead, which mirrors every shift; since ∫ M_p cos θ_i dθ_i = 1 at
+// any θ_o', tilting θ_o also keeps the white furnace at 1 for α ≠ 0.
 fn weft_hair_longitudinal(hair: WeftHair, sin_o: f32, cos_o: f32, sin_i: f32, cos_i: f32) -> vec4<f32> {
-    let sin_r = sin_i * hair.cos2k.y + cos_i * hair.sin2k.y;
-    let cos_r = abs(cos_i * hair.cos2k.y - sin_i * hair.sin2k.y);
-    let sin_tt = sin_i * hair.cos2k.x - cos_i * hair.sin2k.x;
-    let cos_tt = abs(cos_i * hair.cos2k.x + sin_i * hair.sin2k.x);
-    let sin_trt = sin_i * hair.cos2k.z - cos_i * hair.sin2k.z;
-    let cos_trt = abs(cos_i * hair.cos2k.z + sin_i * hair.sin2k.z);
+    let sin_r = sin_o * hair.cos2k.y - cos_o * hair.sin2k.y;
+    let cos_r = abs(cos_o * hair.cos2k.y + sin_o * hair.sin2k.y);
+    let sin_tt = sin_o * hair.cos2k.x + cos_o * hair.sin2k.x;
+    let cos_tt = abs(cos_o * hair.cos2k.x - sin_o * hair.sin2k.x);
+    let sin_trt = sin_o * hair.cos2k.z + cos_o * hair.sin2k.z;
+    let cos_trt = abs(cos_o * hair.cos2k.z - sin_o * hair.sin2k.z);
     return vec4<f32>(
-        weft_hair_mp(cos_r, cos_o, sin_r, sin_o, hair.v.x),
-        weft_hair_mp(cos_tt, cos_o, sin_tt, sin_o, hair.v.y),
-        weft_hair_mp(cos_trt, cos_o, sin_trt, sin_o, hair.v.z),
+        weft_hair_mp(cos_i, cos_r, sin_i, sin_r, hair.v.x),
+        weft_hair_mp(cos_i, cos_tt, sin_i, sin_tt, hair.v.y),
+        weft_hair_mp(cos_i, cos_trt, sin_i, sin_trt, hair.v.z),
         weft_hair_mp(cos_i, cos_o, sin_i, sin_o, hair.v.w),
     );
 }

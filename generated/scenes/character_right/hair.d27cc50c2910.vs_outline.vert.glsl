@@ -78,15 +78,12 @@ const uint HAIR_REFERENCE_CELLS = 64u;
 const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(binding = 0) uniform sampler2D _group_1_binding_5_fs;
+layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
-layout(location = 0) smooth in vec3 _vs2fs_location0;
-layout(location = 1) smooth in vec3 _vs2fs_location1;
-layout(location = 2) smooth in vec4 _vs2fs_location2;
-layout(location = 3) smooth in vec2 _vs2fs_location3;
-layout(location = 0) out vec4 _fs2p_location0;
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -113,25 +110,25 @@ float weft_f_dielectric(float cos_i, float eta) {
 }
 
 vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
     vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
     return _e5;
 }
 
 vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
     return max(_e2.xyz, vec3(0.0));
 }
 
 vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
     vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
     return _e7;
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
     e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
@@ -274,15 +271,15 @@ float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v
 }
 
 vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
-    float sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
-    float cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
-    float sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
-    float cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
-    float sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
-    float cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
-    float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
-    float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
-    float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    float sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
+    float cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
+    float sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
+    float cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
+    float sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
+    float cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
+    float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
+    float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
+    float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
     float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
     return vec4(_e52, _e55, _e58, _e61);
 }
@@ -475,49 +472,43 @@ float hair_value_noise(float x_8, float period) {
     return (mix(_e19, _e21, ((f_1 * f_1) * (3.0 - (2.0 * f_1)))) - 0.5);
 }
 
-float hair_jitter(vec2 uv0_1) {
-    vec2 rotated = vec2(((-4.371139e-8 * uv0_1.x) + (1.0 * uv0_1.y)), ((-1.0 * uv0_1.x) + (-4.371139e-8 * uv0_1.y)));
-    vec2 _e20 = weft_transform_uv((false ? rotated : uv0_1), vec4(1.0, 1.0, 0.0, 0.0));
-    vec4 _e23 = texture(_group_1_binding_5_fs, vec2(_e20));
-    float j = _e23.x;
-    float across = (false ? _e20.y : _e20.x);
-    float _e35 = hair_value_noise((across * 128.0), 128.0);
-    return ((1.0 * j) + (0.2 * _e35));
-}
-
 void main() {
-    WeftVaryings in_3 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
-    vec3 color = vec3(0.0);
-    WeftHairLobes lobes = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
-    vec3 _e6 = weft_view_direction(in_3.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e8 = weft_safe_normalize(in_3.world_normal, _e6);
-    mat3x3 _e10 = weft_tangent_frame(_e8, in_3.world_tangent);
-    vec3 _e12 = hair_strand(_e10, in_3.uv0_);
-    float _e14 = hair_jitter(in_3.uv0_);
-    vec3 _e15 = weft_main_light_direction();
-    vec3 _e16 = weft_main_light_radiance();
-    vec3 _e17 = weft_sh_irradiance(_e8);
-    float n_dot_l = dot(_e8, _e15);
-    {
-        vec3 _e22 = weft_safe_normalize((_e12 + (_e14 * _e8)), _e12);
-        vec3 _e24 = weft_hair_sigma_a_from_color(vec3(0.073238954, 0.019606648, 0.0059810597), 0.3);
-        WeftHair _e29 = weft_hair_params(_e24, 1.55, 0.2, 0.3, 2.0);
-        WeftHairAngles _e30 = weft_hair_angles(_e22, _e6, _e15);
-        {
-            WeftHairLobes _e33 = weft_hair_mean(_e29, _e30, HAIR_FAST_CELLS);
-            lobes = _e33;
-        }
-        float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e39 = lobes.back;
-        vec3 multiple = (vec3(0.073238954, 0.019606648, 0.0059810597) * (vec3(1.0) - _e39));
-        vec3 _e43 = lobes.s;
-        vec3 direct = ((_e43 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e52 = lobes.back;
-        color = ((direct * _e16) + (_e17 * (multiple + _e52)));
+    WeftOutlineVertex in_ = WeftOutlineVertex(_p2vs_location0, _p2vs_location1);
+    bool local = false;
+    bool local_1 = false;
+    WeftOutlineVaryings out_ = WeftOutlineVaryings(vec4(0.0));
+    mat4x4 _e3 = _group_2_binding_0_vs.model;
+    vec4 world = (_e3 * vec4(in_.position, 1.0));
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    vec3 normal = (mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in_.normal);
+    mat4x4 _e22 = _group_0_binding_0_vs.view_proj;
+    vec4 clip = (_e22 * vec4(world.xyz, 1.0));
+    vec4 _e29 = _group_0_binding_0_vs.viewport;
+    vec2 size = _e29.xy;
+    mat4x4 _e33 = _group_0_binding_0_vs.view_proj;
+    vec2 screen_normal = ((_e33 * vec4(normal, 0.0)).xy * size);
+    float len = length(screen_normal);
+    if ((len > 1e-6)) {
+        float _e47 = _group_0_binding_0_vs.viewport.x;
+        local = (_e47 > 0.0);
+    } else {
+        local = false;
     }
-    vec3 _e56 = color;
-    vec3 radiance = clamp(_e56, vec3(0.0), vec3(65504.0));
-    _fs2p_location0 = vec4(radiance, 1.0);
+    bool _e51 = local;
+    if (_e51) {
+        local_1 = (clip.w > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool usable = local_1;
+    vec2 direction = (usable ? (screen_normal / vec2(max(len, 1e-6))) : vec2(0.0));
+    float distance_ = min(clip.w, 10.0);
+    vec4 _e74 = _group_0_binding_0_vs.viewport;
+    vec2 offset = ((((direction * 1.5) * 2.0) * _e74.zw) * distance_);
+    out_.clip_position = vec4((clip.xy + offset), clip.zw);
+    WeftOutlineVaryings _e84 = out_;
+    gl_Position = _e84.clip_position;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }
 

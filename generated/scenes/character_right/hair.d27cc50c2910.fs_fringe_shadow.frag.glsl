@@ -78,12 +78,7 @@ const uint HAIR_REFERENCE_CELLS = 64u;
 const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
-
-layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
-
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
@@ -107,47 +102,6 @@ float weft_f_dielectric(float cos_i, float eta) {
     float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
     float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
-}
-
-vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_vs.light_direction;
-    vec3 _e5 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e5;
-}
-
-vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_vs.light_color;
-    return max(_e2.xyz, vec3(0.0));
-}
-
-vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_vs.camera_position;
-    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
-    return _e7;
-}
-
-vec3 weft_sh_irradiance(vec3 n_1) {
-    vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_vs.sh;
-    e = (sh[0].xyz * 0.282095);
-    vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
-    vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
-    vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
-    vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
-    vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
-    vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
-    vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
-    vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
-    vec3 _e91 = e;
-    return max(_e91, vec3(0.0));
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -271,15 +225,15 @@ float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v
 }
 
 vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
-    float sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
-    float cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
-    float sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
-    float cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
-    float sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
-    float cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
-    float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
-    float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
-    float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    float sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
+    float cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
+    float sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
+    float cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
+    float sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
+    float cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
+    float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
+    float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
+    float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
     float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
     return vec4(_e52, _e55, _e58, _e61);
 }
@@ -473,42 +427,7 @@ float hair_value_noise(float x_8, float period) {
 }
 
 void main() {
-    WeftOutlineVertex in_ = WeftOutlineVertex(_p2vs_location0, _p2vs_location1);
-    bool local = false;
-    bool local_1 = false;
-    WeftOutlineVaryings out_ = WeftOutlineVaryings(vec4(0.0));
-    mat4x4 _e3 = _group_2_binding_0_vs.model;
-    vec4 world = (_e3 * vec4(in_.position, 1.0));
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    vec3 normal = (mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in_.normal);
-    mat4x4 _e22 = _group_0_binding_0_vs.view_proj;
-    vec4 clip = (_e22 * vec4(world.xyz, 1.0));
-    vec4 _e29 = _group_0_binding_0_vs.viewport;
-    vec2 size = _e29.xy;
-    mat4x4 _e33 = _group_0_binding_0_vs.view_proj;
-    vec2 screen_normal = ((_e33 * vec4(normal, 0.0)).xy * size);
-    float len = length(screen_normal);
-    if ((len > 1e-6)) {
-        float _e47 = _group_0_binding_0_vs.viewport.x;
-        local = (_e47 > 0.0);
-    } else {
-        local = false;
-    }
-    bool _e51 = local;
-    if (_e51) {
-        local_1 = (clip.w > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool usable = local_1;
-    vec2 direction = (usable ? (screen_normal / vec2(max(len, 1e-6))) : vec2(0.0));
-    float distance_ = min(clip.w, 10.0);
-    vec4 _e74 = _group_0_binding_0_vs.viewport;
-    vec2 offset = ((((direction * 1.5) * 2.0) * _e74.zw) * distance_);
-    out_.clip_position = vec4((clip.xy + offset), clip.zw);
-    WeftOutlineVaryings _e84 = out_;
-    gl_Position = _e84.clip_position;
-    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    _fs2p_location0 = vec4(vec3(0.5704816, 0.34239164, 0.34239164), 1.0);
     return;
 }
 

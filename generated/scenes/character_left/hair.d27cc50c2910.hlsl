@@ -349,15 +349,15 @@ float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v
 
 float4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2)
 {
-    float sin_r = ((sin_i_1 * hair_1.cos2k.y) + (cos_i_2 * hair_1.sin2k.y));
-    float cos_r = abs(((cos_i_2 * hair_1.cos2k.y) - (sin_i_1 * hair_1.sin2k.y)));
-    float sin_tt = ((sin_i_1 * hair_1.cos2k.x) - (cos_i_2 * hair_1.sin2k.x));
-    float cos_tt = abs(((cos_i_2 * hair_1.cos2k.x) + (sin_i_1 * hair_1.sin2k.x)));
-    float sin_trt = ((sin_i_1 * hair_1.cos2k.z) - (cos_i_2 * hair_1.sin2k.z));
-    float cos_trt = abs(((cos_i_2 * hair_1.cos2k.z) + (sin_i_1 * hair_1.sin2k.z)));
-    const float _e52 = weft_hair_mp(cos_r, cos_o_1, sin_r, sin_o_1, hair_1.v.x);
-    const float _e55 = weft_hair_mp(cos_tt, cos_o_1, sin_tt, sin_o_1, hair_1.v.y);
-    const float _e58 = weft_hair_mp(cos_trt, cos_o_1, sin_trt, sin_o_1, hair_1.v.z);
+    float sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
+    float cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
+    float sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
+    float cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
+    float sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
+    float cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
+    const float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
+    const float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
+    const float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
     const float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
     return float4(_e52, _e55, _e58, _e61);
 }
