@@ -69,6 +69,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ),
     ("source_outside_root", &["source-outside-root"]),
     ("stage_mismatch", &["stage-mismatch"]),
+    ("stage_mismatch_args", &["stage-mismatch", "stage-mismatch"]),
     ("stencil_bad_op", &["unknown-value"]),
     ("stencil_out_of_range", &["out-of-range", "unknown-key"]),
     (
@@ -216,6 +217,35 @@ fn wgsl_errors_point_into_the_users_files() {
             shown.ends_with(file),
             "{name}: primary label in `{shown}`, expected `{file}`"
         );
+    }
+}
+
+/// Every stage mismatch labels the fragment input's own declaration in the
+/// user's WGSL (a struct, or a bare argument, at its line), not only the TOML.
+#[test]
+fn stage_mismatches_point_at_the_wgsl_declarations() {
+    for (name, wgsl, lines) in [
+        ("stage_mismatch", "bad/stage_mismatch.wgsl", &[3, 3, 3][..]),
+        (
+            "stage_mismatch_args",
+            "bad/stage_mismatch_args.wgsl",
+            &[5, 6],
+        ),
+    ] {
+        let Err((db, diags)) = build(&corpus().join(format!("bad/{name}.toml"))) else {
+            panic!("{name} built");
+        };
+        let found: Vec<usize> = diags
+            .iter()
+            .filter_map(|d| {
+                let l = d
+                    .labels
+                    .iter()
+                    .find(|l| db.name(l.file_id).ends_with(wgsl))?;
+                Some(db.text(l.file_id)[..l.range.start].matches('\n').count() + 1)
+            })
+            .collect();
+        assert_eq!(found, lines, "{name}: lines of the labels in `{wgsl}`");
     }
 }
 

@@ -267,14 +267,14 @@ fn folder_files(dir: &Path, name: &str, out: &mut Vec<String>) -> Result<(), Str
             crate::output::list_files(&folder).map_err(|e| format!("{}: {e}", folder.display()))?
         {
             let path = folder.join(&rel);
+            if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                return Err(not_regular(&path));
+            }
             if !listed.contains(&rel) {
                 return Err(format!(
                     "`{}` is not a file material `{name}`'s metadata lists; a shard folder holds only what `weft build` wrote",
                     path.display()
                 ));
-            }
-            if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
-                return Err(not_regular(&path));
             }
             out.push(format!("{name}/{rel}"));
         }

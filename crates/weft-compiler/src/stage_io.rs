@@ -19,8 +19,10 @@ struct Io {
     sampling: Sampling,
     /// The member or argument name, for messages.
     name: String,
-    /// The struct it is a member of, if any (its declaration is labelled).
-    within: Option<naga::Handle<naga::Type>>,
+    /// Where it is declared in the composed WGSL: the struct it is a
+    /// member of, the entry point's argument, or (a bare vertex result) the
+    /// entry point's `return`; labelled in the user's file.
+    span: naga::Span,
 }
 
 /// An entry point's inter-stage variables: the vertex stage's outputs, the
@@ -31,7 +33,7 @@ fn interface(module: &Module, ep: &naga::EntryPoint) -> (Vec<Io>, u32) {
     let mut push = |binding: &Option<Binding>,
                     ty: naga::Handle<naga::Type>,
                     name: Option<&String>,
-                    within: Option<naga::Handle<naga::Type>>| {
+                    span: naga::Span| {
         match binding {
             Some(Binding::Location {
                 location,
@@ -51,7 +53,7 @@ fn interface(module: &Module, ep: &naga::EntryPoint) -> (Vec<Io>, u32) {
                     interpolation,
                     sampling,
                     name: name.cloned().unwrap_or_default(),
-                    within,
+                    span,
                 });
             }
             // WebGPU counts these fragment inputs against the limit too.
@@ -61,26 +63,42 @@ fn interface(module: &Module, ep: &naga::EntryPoint) -> (Vec<Io>, u32) {
             _ => {}
         }
     };
-    let mut visit =
-        |binding: &Option<Binding>, ty: naga::Handle<naga::Type>, name: Option<&String>| {
-            match &module.types[ty].inner {
-                TypeInner::Struct { members, .. } if binding.is_none() => {
-                    for m in members {
-                        push(&m.binding, m.ty, m.name.as_ref(), Some(ty));
-                    }
+    let mut visit = |binding: &Option<Binding>,
+                     ty: naga::Handle<naga::Type>,
+                     name: Option<&String>,
+                     span: naga::Span| {
+        match &module.types[ty].inner {
+            TypeInner::Struct { members, .. } if binding.is_none() => {
+                let declared = module.types.get_span(ty);
+                for m in members {
+                    push(&m.binding, m.ty, m.name.as_ref(), declared);
                 }
-                _ => push(binding, ty, name, None),
             }
-        };
+            _ => push(binding, ty, name, span),
+        }
+    };
+    let f = &ep.function;
     match ep.stage {
         ShaderStage::Vertex => {
-            if let Some(r) = &ep.function.result {
-                visit(&r.binding, r.ty, None);
+            if let Some(r) = &f.result {
+                // A bare result has no declaration of its own: its `return`.
+                let returned = f
+                    .body
+                    .span_iter()
+                    .find(|(s, _)| matches!(s, naga::Statement::Return { .. }))
+                    .map_or_else(naga::Span::default, |(_, span)| *span);
+                visit(&r.binding, r.ty, None, returned);
             }
         }
         _ => {
-            for a in &ep.function.arguments {
-                visit(&a.binding, a.ty, a.name.as_ref());
+            for (i, a) in f.arguments.iter().enumerate() {
+                // The argument's declaration: its `FunctionArgument` expression.
+                let declared = f
+                    .expressions
+                    .iter()
+                    .find(|(_, e)| matches!(e, naga::Expression::FunctionArgument(n) if *n as usize == i))
+                    .map_or_else(naga::Span::default, |(h, _)| f.expressions.get_span(h));
+                visit(&a.binding, a.ty, a.name.as_ref(), declared);
             }
         }
     }
@@ -109,15 +127,14 @@ fn interpolation_text(io: &Io) -> String {
     format!("@interpolate({i}, {s})")
 }
 
-/// The WGSL struct an inter-stage variable is declared in, as a secondary label.
-fn struct_label(
-    module: &Module,
+/// Where an inter-stage variable is declared in the user's WGSL (its struct,
+/// argument or `return`), as a secondary label.
+fn declaration_label(
     composed: &Composed,
     io: &Io,
     message: String,
 ) -> Option<Label<weft_front::FileId>> {
-    let span = module.types.get_span(io.within?).to_range()?;
-    let (file, range) = composed.map.map(span)?;
+    let (file, range) = composed.map.map(io.span.to_range()?)?;
     Some(Label::secondary(file, range).with_message(message))
 }
 
@@ -146,9 +163,7 @@ pub fn check_passes(
         };
         let (outputs, _) = interface(module, vs);
         let (inputs, builtins) = interface(module, fs);
-        let vertex_ok = check_count(
-            m, pass, module, composed, &outputs, 0, "vertex", limit, diags,
-        );
+        let vertex_ok = check_count(m, pass, composed, &outputs, 0, "vertex", limit, diags);
         // Inputs the vertex stage writes, and no counted builtin: reported above if over.
         let covered = builtins == 0
             && inputs
@@ -156,7 +171,7 @@ pub fn check_passes(
                 .all(|i| outputs.iter().any(|o| o.location == i.location));
         if vertex_ok || !covered {
             check_count(
-                m, pass, module, composed, &inputs, builtins, "fragment", limit, diags,
+                m, pass, composed, &inputs, builtins, "fragment", limit, diags,
             );
         }
         for input in &inputs {
@@ -227,15 +242,13 @@ pub fn check_passes(
                         .with_message(format!("vertex `{}`", pass.vertex)),
                 );
             }
-            labels.extend(struct_label(
-                module,
+            labels.extend(declaration_label(
                 composed,
                 input,
                 format!("`{}` is @location({})", input.name, input.location),
             ));
             if let Some(o) = output {
-                labels.extend(struct_label(
-                    module,
+                labels.extend(declaration_label(
                     composed,
                     o,
                     format!("`{}` is @location({})", o.name, o.location),
@@ -260,7 +273,6 @@ pub fn check_passes(
 fn check_count(
     m: &Material,
     pass: &Pass,
-    module: &Module,
     composed: &Composed,
     io: &[Io],
     builtins: u32,
@@ -304,8 +316,7 @@ fn check_count(
         Label::primary(pass.decl.file, span.clone()).with_message(format!("{stage} `{entry}`")),
     ];
     if let Some(last) = io.last() {
-        labels.extend(struct_label(
-            module,
+        labels.extend(declaration_label(
             composed,
             last,
             format!("up to @location({})", highest - 1),

@@ -88,6 +88,10 @@ pub fn decode_png(bytes: &[u8]) -> Result<Image, String> {
         bytes: (MAX_TEXTURE_FILE_SIZE as usize).pow(2) * 8 + (1 << 20),
     };
     let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
+    // Compressed text and ICC profiles are not used, and would be inflated
+    // (a small chunk can inflate to gigabytes): skipped unread.
+    decoder.set_ignore_text_chunk(true);
+    decoder.set_ignore_iccp_chunk(true);
     // Palettes to RGB(A), low bit depths to 8, tRNS to alpha; 16 bits kept,
     // to round them below.
     decoder.set_transformations(png::Transformations::EXPAND);

@@ -231,6 +231,10 @@ pub fn decode_png(bytes: &[u8], what: &str) -> Result<(u32, u32, Vec<u8>)> {
         bytes: (MAX_TEXTURE_SIZE as usize).pow(2) * 8 + (1 << 20),
     };
     let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
+    // Compressed text and ICC profiles are not used, and would be inflated
+    // (a small chunk can inflate to gigabytes): skipped unread.
+    decoder.set_ignore_text_chunk(true);
+    decoder.set_ignore_iccp_chunk(true);
     decoder.set_transformations(png::Transformations::normalize_to_color8());
     let mut reader = decoder
         .read_info()
