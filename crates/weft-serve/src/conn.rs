@@ -178,6 +178,22 @@ impl Conn {
         let _ = self.respond(status, &ct, text.as_bytes(), head_only, close);
     }
 
+    /// Answers and closes without blocking on the client: what it has sent
+    /// already is read and dropped (unread data would turn the close into
+    /// a reset that can discard the answer), nothing more is waited for.
+    pub fn refuse_at_once(mut self, status: u16, text: &str) {
+        self.respond_text(status, text, false, true);
+        let _ = self.stream.shutdown(Shutdown::Write);
+        if self.stream.set_nonblocking(true).is_ok() {
+            let mut chunk = [0u8; 4096];
+            for _ in 0..16 {
+                if !matches!(self.stream.read(&mut chunk), Ok(n) if n > 0) {
+                    break;
+                }
+            }
+        }
+    }
+
     /// Closes after an answer the client may still be sending to (a refused
     /// head, a body never read): ends the write side, then reads and drops
     /// what arrives for a bounded time and amount, so the answer is not

@@ -244,8 +244,8 @@ fn accept_loop(listener: TcpListener, shared: Arc<Shared>, stop: &AtomicBool) {
         };
         let conn = Conn::new(stream, shared.limits.clone());
         if active.load(Ordering::SeqCst) >= shared.limits.max_connections {
-            let mut conn = conn;
-            conn.respond_text(503, "weft serve: too many open connections", false, true);
+            // Answered here without waiting on the client (no thread left).
+            conn.refuse_at_once(503, "weft serve: too many open connections");
             continue;
         }
         active.fetch_add(1, Ordering::SeqCst);
