@@ -14,16 +14,24 @@
 //! - `routes.rs`: every path the page reads (shared by the server and
 //!   the exporter, so both serve the same bytes);
 //! - `watch.rs`: change detection over the materials folder;
-//! - `http.rs`: the server and the event stream;
+//! - `http.rs`: the server (connection threads, Host and method checks)
+//!   and the event stream;
+//! - `conn.rs`: HTTP/1.1 on one connection, within the [`Limits`];
+//! - `query.rs`: query strings, every malformed one refused;
+//! - `signals.rs`: Ctrl-C and SIGTERM stop the server cleanly;
 //! - `page/`: the page (HTML, CSS, ES modules), embedded at compile time.
 
 mod assets;
 mod build;
+mod conn;
 mod http;
+mod query;
 mod routes;
+mod signals;
 mod watch;
 
 pub use build::{BuildStatus, Snapshot};
+pub use conn::Limits;
 pub use http::{Server, ServerHandle};
 
 use std::path::{Path, PathBuf};
@@ -40,6 +48,9 @@ pub struct ServeOptions {
     pub port: u16,
     /// Print nothing but errors.
     pub quiet: bool,
+    /// What one client may cost the server (head sizes, timeouts, open
+    /// connections).
+    pub limits: Limits,
 }
 
 impl ServeOptions {
@@ -49,6 +60,7 @@ impl ServeOptions {
             reports: None,
             port: 0,
             quiet: true,
+            limits: Limits::default(),
         }
     }
 
@@ -91,8 +103,12 @@ pub fn export(options: &ServeOptions, dir: &Path) -> Result<usize, String> {
     Ok(n)
 }
 
-/// Runs `weft serve` until the process ends: builds, serves, watches.
+/// Runs `weft serve` until Ctrl-C or SIGTERM: builds, serves, watches;
+/// then stops the server (the build cache folder is removed). A second
+/// signal while stopping ends the process at once.
 pub fn serve(options: &ServeOptions) -> Result<(), String> {
+    // Before the first build, so a signal during it is not lost.
+    let stop = signals::stop_flag()?;
     let server = Server::start(options.clone())?;
     if !options.quiet {
         eprintln!(
@@ -104,7 +120,13 @@ pub fn serve(options: &ServeOptions) -> Result<(), String> {
             eprintln!("{e}");
         }
     }
-    server.wait();
+    while !stop.load(std::sync::atomic::Ordering::SeqCst) {
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    if !options.quiet {
+        eprintln!("weft serve: stopping");
+    }
+    server.stop();
     Ok(())
 }
 
@@ -137,6 +159,7 @@ pub fn command(args: &ServeArgs, quiet: bool) -> std::process::ExitCode {
         reports: args.reports.clone(),
         port: args.port,
         quiet,
+        limits: Limits::default(),
     };
     let result = match &args.export {
         Some(dir) => export(&options, dir).map(|n| {

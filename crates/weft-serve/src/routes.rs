@@ -18,6 +18,7 @@
 
 use crate::assets::{self, Environment};
 use crate::build::BuildStatus;
+use crate::query::Query;
 use serde_json::json;
 use std::collections::{BTreeMap, VecDeque};
 use std::sync::{Arc, Mutex, OnceLock};
@@ -113,7 +114,7 @@ impl Assets {
     }
 
     /// The environment with the sun (and the light) along `sun` (a unit
-    /// vector, see [`parse_sun`]), from the cache of recent directions or
+    /// vector, see [`Query::sun`]), from the cache of recent directions or
     /// computed now. Concurrent requests for one direction share one
     /// computation.
     pub fn environment_towards(&self, sun: [f32; 3]) -> EnvSlot {
@@ -152,52 +153,6 @@ impl Assets {
                 .collect()
         })
     }
-}
-
-/// The `sun` parameter of a query (`sun=x,y,z`, commas plain or `%2C`;
-/// other parameters ignored): None when absent, else the direction
-/// normalised. Errors (a 400) name what is wrong: not three numbers, not
-/// finite, zero length.
-pub fn parse_sun(query: &str) -> Result<Option<[f32; 3]>, String> {
-    let Some(value) = query
-        .split('&')
-        .filter_map(|kv| kv.split_once('=').or(Some((kv, ""))))
-        .find(|(k, _)| *k == "sun")
-        .map(|(_, v)| v)
-    else {
-        return Ok(None);
-    };
-    let text = value.replace("%2C", ",").replace("%2c", ",");
-    let parts: Vec<&str> = text.split(',').collect();
-    let bad = || {
-        let shown: String = value.chars().take(60).collect();
-        format!(
-            "bad sun direction `{shown}`: expected sun=x,y,z, three finite numbers not all zero (the direction towards the sun, as `weft preview --light x,y,z`)"
-        )
-    };
-    if parts.len() != 3 {
-        return Err(bad());
-    }
-    let mut d = [0f64; 3];
-    for (i, p) in parts.iter().enumerate() {
-        let v: f64 = p.trim().parse().map_err(|_| bad())?;
-        if !v.is_finite() {
-            return Err(bad());
-        }
-        d[i] = v;
-    }
-    // Scale first so huge components do not overflow the length.
-    let m = d.iter().fold(0f64, |m, v| m.max(v.abs()));
-    if m.is_nan() || m <= 0.0 || !m.is_finite() {
-        return Err(bad());
-    }
-    let d = d.map(|v| v / m);
-    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-    let unit = d.map(|v| (v / len) as f32);
-    if unit.iter().any(|v| !v.is_finite()) {
-        return Err(bad());
-    }
-    Ok(Some(unit))
 }
 
 fn content_type(path: &str) -> &'static str {
@@ -245,7 +200,7 @@ pub enum RouteError {
 }
 
 /// The reply for `path` (no leading slash) and its `query` (the part after
-/// `?`, empty when none).
+/// `?`, empty when none). A malformed query is a 400 on every path.
 pub fn route(
     path: &str,
     query: &str,
@@ -253,8 +208,9 @@ pub fn route(
     assets: &Assets,
     live: bool,
 ) -> Result<Reply, RouteError> {
+    let query = Query::parse(query).map_err(RouteError::BadRequest)?;
     if let Some(which) = path.strip_prefix("api/environment.")
-        && let Some(sun) = parse_sun(query).map_err(RouteError::BadRequest)?
+        && let Some(sun) = query.sun().map_err(RouteError::BadRequest)?
     {
         let slot = assets.environment_towards(sun);
         let env = slot.get().ok_or(RouteError::NotFound)?;

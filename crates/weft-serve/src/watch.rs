@@ -11,6 +11,7 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, SystemTime};
 
 /// How often the folder is scanned.
@@ -67,7 +68,8 @@ impl Watcher {
 
     /// Blocks for at least one poll; true when a source was added, removed
     /// or modified (and the folder then stayed unchanged for one poll).
-    pub fn changed(&mut self) -> bool {
+    /// False as soon as `stop` is set.
+    pub fn changed(&mut self, stop: &AtomicBool) -> bool {
         std::thread::sleep(POLL);
         let now = scan(&self.dir);
         if now == self.last {
@@ -75,6 +77,9 @@ impl Watcher {
         }
         let mut settled = now;
         loop {
+            if stop.load(Ordering::SeqCst) {
+                return false;
+            }
             std::thread::sleep(POLL);
             let again = scan(&self.dir);
             if again == settled {
