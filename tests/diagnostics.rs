@@ -72,6 +72,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("stage_mismatch_args", &["stage-mismatch", "stage-mismatch"]),
     ("stencil_bad_op", &["unknown-value"]),
     ("stencil_out_of_range", &["out-of-range", "unknown-key"]),
+    ("table_budget", &["too-large"]),
     (
         "table_errors",
         &["unknown-value", "out-of-range", "missing-key", "duplicate"],

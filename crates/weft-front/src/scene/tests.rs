@@ -455,3 +455,34 @@ scale = [1.0, 2.0, 3.0]
         let _ = load(&path);
     }
 }
+
+/// What one file can make a build do is bounded: the instance count, and
+/// numbers that would overflow the f32 the GPU receives.
+#[test]
+fn limits_bound_instances_and_f32_numbers() {
+    let one = "[[instances]]\nname = \"i{}\"\nmaterial = \"m\"\nmesh = \"sphere\"\n";
+    let many: String = (0..=super::parse::MAX_INSTANCES)
+        .map(|i| one.replace("{}", &i.to_string()))
+        .collect();
+    assert_eq!(codes(&many), ["too-many-instances"]);
+    let at_limit: String = (0..super::parse::MAX_INSTANCES)
+        .map(|i| one.replace("{}", &i.to_string()))
+        .collect();
+    assert_eq!(
+        resolve_ok(&at_limit).instances.len(),
+        super::parse::MAX_INSTANCES
+    );
+    let base = one.replace("{}", "0");
+    for bad in [
+        "translation = [1e39, 0, 0]",
+        "scale = 1e39",
+        "scale = [1, 1e300, 1]",
+        "rotation = [0, 0, -4e38]",
+    ] {
+        assert_eq!(codes(&format!("{base}{bad}\n")), ["type-range"], "{bad}");
+    }
+    let light = format!("[light]\ndirection = [0, 0, 1]\ncolor = [1e39, 1, 1]\n\n{base}");
+    assert_eq!(codes(&light), ["type-range"]);
+    let camera = format!("[camera]\nposition = [0, 0, 1e40]\n\n{base}");
+    assert_eq!(codes(&camera), ["type-range"]);
+}
