@@ -79,11 +79,10 @@ pub fn parse(text: &str) -> Program {
         if code.is_empty() {
             continue;
         }
-        if let Some(n) = code.strip_prefix("BB").and_then(|r| r.strip_suffix(':')) {
-            if let Ok(label) = n.parse() {
-                blocks.push(new_block(label));
-                continue;
-            }
+        let label = code.strip_prefix("BB").and_then(|r| r.strip_suffix(':'));
+        if let Some(label) = label.and_then(|n| n.parse().ok()) {
+            blocks.push(new_block(label));
+            continue;
         }
         if blocks.is_empty() {
             blocks.push(new_block(0)); // code before any label
@@ -94,15 +93,16 @@ pub fn parse(text: &str) -> Program {
         let operands: Vec<&str> = code[mnemonic.len()..].split(',').map(str::trim).collect();
         b.instructions += 1;
         b.cost += weight(mnemonic);
-        if mnemonic == "s_branch" || mnemonic.starts_with("s_cbranch") {
-            if let Some(t) = operands[0].strip_prefix("BB").and_then(|t| t.parse().ok()) {
-                b.targets.push(t);
-            }
+        let branch = mnemonic == "s_branch" || mnemonic.starts_with("s_cbranch");
+        if let Some(t) = operands[0].strip_prefix("BB").and_then(|t| t.parse().ok())
+            && branch
+        {
+            b.targets.push(t);
         }
-        if is_bound_compare(mnemonic) {
-            if let Some(v) = operands.get(1).and_then(|o| immediate(o)) {
-                b.compare_immediates.push(v);
-            }
+        if let Some(v) = operands.get(1).and_then(|o| immediate(o))
+            && is_bound_compare(mnemonic)
+        {
+            b.compare_immediates.push(v);
         }
     }
     let loops = find_loops(&blocks);

@@ -13,6 +13,7 @@ pub mod error;
 pub mod icd;
 pub mod isa;
 pub mod jobs;
+pub mod loop_report;
 pub mod model;
 pub mod record;
 pub mod report;
