@@ -56,7 +56,8 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
             ..Default::default()
         },
         families: families.clone(),
-        disassembly: args.disassembly.is_some(),
+        // Always: the loop-aware model reads it (then it is dropped or written out).
+        disassembly: true,
         icd_dirs: None,
         worker: WorkerCommand {
             program: exe,
@@ -71,9 +72,6 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
         stats.len(),
         start.elapsed().as_secs_f64()
     );
-    if let Some(dir) = &args.disassembly {
-        write_disassembly(dir, &mut stats)?;
-    }
     let mut command = "cargo xtask bench gpu-model --write".to_string();
     if !args.families.is_empty() {
         for f in &families {
@@ -82,6 +80,14 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
     }
     let md = weft_gpu_stats::report::markdown(&root.join("generated"), &stats, &command)
         .map_err(|e| e.to_string())?;
+    match &args.disassembly {
+        Some(dir) => write_disassembly(dir, &mut stats)?,
+        None => stats
+            .iter_mut()
+            .flat_map(|f| f.pipelines.iter_mut())
+            .flat_map(|p| p.stages.iter_mut())
+            .for_each(|s| s.disassembly = None),
+    }
     print!("{md}");
     if args.write {
         let reports = root.join("generated/reports");

@@ -11,10 +11,14 @@ mod compile;
 mod device;
 pub mod error;
 pub mod icd;
+pub mod isa;
 pub mod jobs;
+pub mod loop_report;
+pub mod model;
 pub mod record;
 pub mod report;
 mod state;
+pub mod trips;
 pub mod worker;
 
 pub use error::{Error, RADV_PACKAGE, Result};

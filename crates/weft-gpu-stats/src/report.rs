@@ -4,6 +4,7 @@
 //! scene shader against the generic library variant it specialises.
 
 use crate::error::{Error, Result};
+use crate::loop_report::{self, TierModel};
 use crate::record::{FamilyStats, PipelineStats, StageStats};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -49,6 +50,8 @@ struct TierRow {
     tier: String,
     variant: String,
     passes: Vec<String>,
+    /// Each pass's fragment entry point (the loop model reads its loops).
+    fragment_entries: Vec<String>,
     has_f16: bool,
 }
 
@@ -86,6 +89,16 @@ fn tier_rows(generated: &Path, families: &[FamilyStats]) -> Result<Vec<TierRow>>
                 tier: tier.clone(),
                 variant: v.id.clone(),
                 passes: v.passes.clone(),
+                fragment_entries: v
+                    .passes
+                    .iter()
+                    .map(|name| {
+                        meta.passes
+                            .iter()
+                            .find(|p| &p.name == name)
+                            .map_or_else(String::new, |p| p.fragment_entry.clone())
+                    })
+                    .collect(),
                 has_f16: v.shader.as_ref().is_some_and(|s| !s.f16_files.is_empty()),
             });
         }
@@ -134,6 +147,9 @@ pub fn markdown(generated: &Path, families: &[FamilyStats], command: &str) -> Re
     }
     for f in families {
         tier_table(&mut o, f, &rows);
+    }
+    for f in families {
+        loop_table(&mut o, generated, f, &rows);
     }
     for f in families {
         scene_table(&mut o, f);
@@ -194,6 +210,125 @@ fn tier_table(o: &mut String, f: &FamilyStats, rows: &[TierRow]) {
             }
         }
     }
+}
+
+/// Each material × tier's loop-aware model on one family (f32 files, fragment
+/// stages summed over the variant's passes). Needs the disassembly.
+pub fn tier_models(generated: &Path, f: &FamilyStats) -> Result<Vec<TierModel>> {
+    let rows = tier_rows(generated, std::slice::from_ref(f))?;
+    Ok(models_of(generated, f, &rows))
+}
+
+fn models_of(generated: &Path, f: &FamilyStats, rows: &[TierRow]) -> Vec<TierModel> {
+    let index = library_index(f);
+    let mut out = Vec::new();
+    for r in rows {
+        let mut t = TierModel {
+            material: r.material.clone(),
+            tier: r.tier.clone(),
+            variant: r.variant.clone(),
+            static_cost: 0.0,
+            executed_cost: 0.0,
+            loops: 0,
+            unknown: 0,
+        };
+        let mut complete = true;
+        for (pass, entry) in r.passes.iter().zip(&r.fragment_entries) {
+            let key = (
+                r.material.as_str(),
+                r.variant.as_str(),
+                "f32",
+                pass.as_str(),
+            );
+            let m = index
+                .get(&key)
+                .and_then(|p| loop_report::fragment_model(generated, p, entry));
+            let Some(m) = m else {
+                complete = false;
+                break;
+            };
+            t.static_cost += m.static_cost;
+            t.executed_cost += m.executed_cost;
+            t.loops += m.loops.len();
+            t.unknown += m.unknown_loops();
+        }
+        if complete {
+            out.push(t);
+        }
+    }
+    out
+}
+
+fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow]) {
+    let models = models_of(generated, f, rows);
+    let Some(base) = models
+        .iter()
+        .find(|m| m.material == BASE.0 && m.tier == BASE.1)
+        .cloned()
+    else {
+        return; // no disassembly captured
+    };
+    let _ = writeln!(
+        o,
+        "\n## {}: loop-aware model per material × tier\n\nWeighted ISA cost (VALU 1, \
+         transcendental 4, vector memory 8, scalar memory 2, waits 0) of the fragment stages of the \
+         variant's passes: static (each block once) and executed (each block × the trip counts of \
+         the loops around it, from the specialised WGSL; docs/performance.md). × standard fast: \
+         divided by `standard` `fast`. llvmpipe: `ratio_to_standard_fast` of \
+         `generated/reports/<material>.measurements.json`.\n",
+        f.family
+    );
+    let _ = writeln!(
+        o,
+        "| material | tier | static cost | executed cost | static × standard fast | executed × standard fast | loops (unknown trip count) | llvmpipe × standard fast |"
+    );
+    let _ = writeln!(o, "|---|---|--:|--:|--:|--:|--:|--:|");
+    let mut pairs = Vec::new();
+    let mut unknown = Vec::new();
+    for m in &models {
+        let executed = m.executed_cost / base.executed_cost;
+        let llvmpipe = loop_report::llvmpipe_ratio(generated, &m.material, &m.tier);
+        if let Some(l) = llvmpipe {
+            pairs.push((executed, l));
+        }
+        if m.unknown > 0 {
+            unknown.push(format!("{} {} ({})", m.material, m.tier, m.unknown));
+        }
+        let _ = writeln!(
+            o,
+            "| {} | {} | {:.0} | {:.0} | {:.2}× | {executed:.2}× | {} ({}) | {} |",
+            m.material,
+            m.tier,
+            m.static_cost,
+            m.executed_cost,
+            m.static_cost / base.static_cost,
+            m.loops,
+            m.unknown,
+            llvmpipe.map_or("–".into(), |l| format!("{l:.2}×")),
+        );
+    }
+    let statics: Vec<(f64, f64)> = models
+        .iter()
+        .filter_map(|m| {
+            loop_report::llvmpipe_ratio(generated, &m.material, &m.tier).map(|l| (m.static_cost, l))
+        })
+        .collect();
+    let rho =
+        |p: &[(f64, f64)]| loop_report::spearman(p).map_or("–".into(), |r| format!("{r:.3}"));
+    let _ = writeln!(
+        o,
+        "\nSpearman rank correlation with llvmpipe over the {} material × tier pairs with both: \
+         executed cost ρ = {}, static cost ρ = {}. No GPU timings are committed, so there is no \
+         GPU comparison. Loops with an unknown trip count (counted once): {}.",
+        pairs.len(),
+        rho(&pairs),
+        rho(&statics),
+        if unknown.is_empty() {
+            "none".into()
+        } else {
+            unknown.join(", ")
+        }
+    );
 }
 
 fn scene_table(o: &mut String, f: &FamilyStats) {

@@ -1,0 +1,103 @@
+//! The loop-aware section of the report: each material × tier's modelled
+//! (executed) fragment cost beside its static cost, as × standard fast, the
+//! llvmpipe ratio committed in `generated/reports/<material>.measurements.json`,
+//! and Spearman's rank correlation between the two.
+
+use crate::model::{self, StageModel};
+use crate::record::PipelineStats;
+use crate::trips;
+use std::path::Path;
+
+/// A tier's figures: summed over the variant's passes (f32 files).
+#[derive(Clone, Debug, PartialEq)]
+pub struct TierModel {
+    /// Material.
+    pub material: String,
+    /// Tier.
+    pub tier: String,
+    /// The variant (its default keyword values).
+    pub variant: String,
+    /// Σ static cost of the fragment stages.
+    pub static_cost: f64,
+    /// Σ executed cost of the fragment stages.
+    pub executed_cost: f64,
+    /// ACO loops found / of which without a trip count.
+    pub loops: usize,
+    /// Loops counted once for want of a trip count.
+    pub unknown: usize,
+}
+
+/// Models the fragment stage of `p` (its disassembly must have been captured);
+/// `entry` is the pass's fragment entry point in the specialised WGSL next to the SPIR-V.
+pub fn fragment_model(generated: &Path, p: &PipelineStats, entry: &str) -> Option<StageModel> {
+    let text = p.stage("fragment")?.disassembly.as_deref()?;
+    let wgsl_path = generated.join(p.source.spirv.strip_suffix(".spv")?.to_string() + ".wgsl");
+    let source = std::fs::read_to_string(wgsl_path)
+        .ok()
+        .and_then(|w| trips::source_loops(&w, entry));
+    Some(model::model(text, source.as_deref()))
+}
+
+/// llvmpipe's `ratio_to_standard_fast` of (material, tier) from the committed measurements.
+pub fn llvmpipe_ratio(generated: &Path, material: &str, tier: &str) -> Option<f64> {
+    let path = generated
+        .join("reports")
+        .join(format!("{material}.measurements.json"));
+    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(path).ok()?).ok()?;
+    json.get("tiers")?
+        .as_array()?
+        .iter()
+        .find(|t| t.get("tier").and_then(|v| v.as_str()) == Some(tier))?
+        .get("ratio_to_standard_fast")?
+        .as_f64()
+}
+
+/// Spearman's ρ (Pearson correlation of the ranks, ties given their mean rank).
+pub fn spearman(pairs: &[(f64, f64)]) -> Option<f64> {
+    if pairs.len() < 3 {
+        return None;
+    }
+    let xs = ranks(&pairs.iter().map(|p| p.0).collect::<Vec<_>>());
+    let ys = ranks(&pairs.iter().map(|p| p.1).collect::<Vec<_>>());
+    let n = xs.len() as f64;
+    let (mx, my) = (xs.iter().sum::<f64>() / n, ys.iter().sum::<f64>() / n);
+    let cov: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let vx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
+    let vy: f64 = ys.iter().map(|y| (y - my).powi(2)).sum();
+    (vx > 0.0 && vy > 0.0).then(|| cov / (vx * vy).sqrt())
+}
+
+fn ranks(v: &[f64]) -> Vec<f64> {
+    let mut order: Vec<usize> = (0..v.len()).collect();
+    order.sort_by(|&a, &b| v[a].total_cmp(&v[b]));
+    let mut out = vec![0.0; v.len()];
+    let mut i = 0;
+    while i < order.len() {
+        let mut j = i;
+        while j + 1 < order.len() && v[order[j + 1]] == v[order[i]] {
+            j += 1;
+        }
+        let mean = (i + j) as f64 / 2.0 + 1.0;
+        for &k in &order[i..=j] {
+            out[k] = mean;
+        }
+        i = j + 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spearman_of_known_orders() {
+        let same = [(1.0, 10.0), (2.0, 20.0), (3.0, 25.0), (4.0, 100.0)];
+        assert_eq!(spearman(&same), Some(1.0));
+        let reversed = [(1.0, 4.0), (2.0, 3.0), (3.0, 2.0), (4.0, 1.0)];
+        assert_eq!(spearman(&reversed), Some(-1.0));
+        // Ties take their mean rank: x ranks 1.5, 1.5, 3; y ranks 1, 2, 3.
+        let tied = spearman(&[(1.0, 1.0), (1.0, 2.0), (2.0, 3.0)]).unwrap();
+        assert!((tied - 0.866_025).abs() < 1e-5, "{tied}");
+    }
+}
