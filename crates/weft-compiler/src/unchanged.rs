@@ -158,10 +158,14 @@ impl Previous {
     }
 }
 
+/// Files of a material's folder (relative to it) and the SHA-256 its
+/// metadata records for each (None for the metadata file).
+pub(crate) type ListedFiles = Vec<(String, Option<String>)>;
+
 /// Every file of material `name`'s folder its metadata lists (relative to
 /// that folder), with the SHA-256 recorded for it (None for the metadata
 /// file itself): variant files, baked tables, texture files.
-fn listed_files(meta: &MetaFiles, name: &str) -> Vec<(String, Option<String>)> {
+fn listed_files(meta: &MetaFiles, name: &str) -> ListedFiles {
     let mut files: Vec<(String, Option<String>)> = meta
         .variants
         .iter()
@@ -196,10 +200,7 @@ fn listed_files(meta: &MetaFiles, name: &str) -> Vec<(String, Option<String>)> {
 /// The files of material `name` in the output folder `out_dir`, as its
 /// metadata lists them (see [`listed_files`]), and its inputs hash; None
 /// without readable metadata.
-pub(crate) fn material_files(
-    out_dir: &Path,
-    name: &str,
-) -> Option<(String, Vec<(String, Option<String>)>)> {
+pub(crate) fn material_files(out_dir: &Path, name: &str) -> Option<(String, ListedFiles)> {
     let meta = read_meta(out_dir, name)?;
     let files = listed_files(&meta, name);
     Some((meta.inputs_hash, files))
