@@ -89,9 +89,7 @@ mod tests {
     fn aliases_become_macros_and_the_heaps_stay() {
         let out = sampler_heap_macros(NAGA).unwrap();
         assert!(!out.contains("static const Sampler"), "{out}");
-        assert!(out.contains(
-            "#define samp (nagaSamplerHeap[nagaGroup1SamplerIndexArray[2]])\n"
-        ));
+        assert!(out.contains("#define samp (nagaSamplerHeap[nagaGroup1SamplerIndexArray[2]])\n"));
         assert!(out.contains(
             "#define shadow (nagaComparisonSamplerHeap[nagaGroup1SamplerIndexArray[3]])\n"
         ));

@@ -133,13 +133,15 @@ fn helper_function(module: &mut Module, size: VectorSize, scalar: Scalar) -> Fun
         binding: None,
     };
     let mut f = Function {
-        name: Some(format!(
-            "weft_select_{}{}_{}",
-            scalar_name(scalar),
-            8 * scalar.width,
-            size as u8
-        )),
-        arguments: vec![arg("c", cond_ty), arg("a", value_ty), arg("b", value_ty)],
+        // Names no shader uses (naga makes every name unique in the module,
+        // so a short one would rename the shader's own `c`, `a`, `b`), none
+        // ending in a digit (naga would append `_`).
+        name: Some(format!("weft_select{}_{}", size as u8, scalar_name(scalar))),
+        arguments: vec![
+            arg("weft_sel_c", cond_ty),
+            arg("weft_sel_a", value_ty),
+            arg("weft_sel_b", value_ty),
+        ],
         result: Some(FunctionResult {
             ty: value_ty,
             binding: None,
@@ -181,14 +183,15 @@ fn helper_function(module: &mut Module, size: VectorSize, scalar: Scalar) -> Fun
     f
 }
 
-fn scalar_name(scalar: Scalar) -> &'static str {
-    match scalar.kind {
+fn scalar_name(scalar: Scalar) -> String {
+    let kind = match scalar.kind {
         naga::ScalarKind::Float => "f",
         naga::ScalarKind::Sint => "i",
         naga::ScalarKind::Uint => "u",
         naga::ScalarKind::Bool => "b",
         _ => "x",
-    }
+    };
+    format!("{kind}{}bit", 8 * scalar.width)
 }
 
 /// Turns each listed `Select` into a call of its helper and shifts the calls
@@ -351,19 +354,34 @@ fn fs(@location(0) v: vec3<f32>) -> @location(0) vec4<f32> {
             .unwrap_or_else(|e| panic!("{e:?}"));
         assert_eq!(count_vector_selects(&split, &info), 0);
         // One helper per vector type (vec2<i32>, vec3<f32>, vec4<f32>), ahead of `pick`.
-        let names: Vec<_> = split.functions.iter().map(|(_, f)| f.name.clone().unwrap()).collect();
+        let names: Vec<_> = split
+            .functions
+            .iter()
+            .map(|(_, f)| f.name.clone().unwrap())
+            .collect();
         assert_eq!(
             names,
-            ["weft_select_i32_2", "weft_select_f32_3", "weft_select_f32_4", "pick"]
+            [
+                "weft_select2_i32bit",
+                "weft_select3_f32bit",
+                "weft_select4_f32bit",
+                "pick"
+            ]
         );
         // The scalar select is left alone; the HLSL has only scalar ternaries.
-        let hlsl = crate::backends::emit_hlsl(&m, &crate::compose::validator().validate(&m).unwrap()).unwrap();
-        assert!(hlsl.contains("(c.x ? a.x : b.x)"), "{hlsl}");
+        let hlsl =
+            crate::backends::emit_hlsl(&m, &crate::compose::validator().validate(&m).unwrap())
+                .unwrap();
+        assert!(
+            hlsl.contains("(weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x)"),
+            "{hlsl}"
+        );
     }
 
     #[test]
     fn a_module_without_vector_selects_is_not_copied() {
-        let (m, info) = parse("@fragment fn fs() -> @location(0) f32 { return select(1.0, 2.0, true); }");
+        let (m, info) =
+            parse("@fragment fn fs() -> @location(0) f32 { return select(1.0, 2.0, true); }");
         assert!(split_vector_selects(&m, &info).is_none());
     }
 }
