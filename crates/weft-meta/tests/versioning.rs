@@ -15,18 +15,13 @@ use weft_meta::{MaterialMetadata, MetaError, SCHEMA_MINOR, SCHEMA_VERSION};
 
 fn generated(rel: &str) -> String {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .unwrap()
-        .join("generated")
+        .join("../../generated")
         .join(rel);
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 fn first_scene() -> (PathBuf, String) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .unwrap()
-        .join("generated/scenes");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../generated/scenes");
     let mut names: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .flatten()
