@@ -107,13 +107,13 @@ TextureCube<float4> weft_environment : register(t1);
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
-static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+#define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> occlusion_map : register(t5, space1);
 
@@ -132,6 +132,11 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
+
+float4 weft_select4_f32bit(bool4 weft_sel_c, float4 weft_sel_a, float4 weft_sel_b)
+{
+    return float4((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z), (weft_sel_c.w ? weft_sel_a.w : weft_sel_b.w));
+}
 
 float weft_pow5_(float x)
 {
@@ -536,7 +541,8 @@ float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float
     if ((smooth_width > 1e-7)) {
         gate = saturate(((r.gate_rand - ((one_hit + smooth_width)).xxxx) / ((-2.0 * smooth_width)).xxxx));
     } else {
-        gate = ((r.gate_rand < (one_hit).xxxx) ? (1.0).xxxx : (0.0).xxxx);
+        const float4 _e25 = weft_select4_f32bit((r.gate_rand < (one_hit).xxxx), (1.0).xxxx, (0.0).xxxx);
+        gate = _e25;
     }
     float4 gauss = clamp(floor(((r.gaussian * deviation) + (mean).xxxx)), (0.0).xxxx, (count).xxxx);
     float4 _e35 = gate;

@@ -105,7 +105,7 @@ cbuffer material : register(b0, space1) { WeftMaterial material; }
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> jitter_map : register(t5, space1);
 Texture2D<float4> uv_rotate_mask : register(t6, space1);

@@ -110,13 +110,13 @@ TextureCube<float4> weft_environment : register(t1);
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
-static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+#define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> offset_map : register(t6, space1);
@@ -136,6 +136,11 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
+
+float3 weft_select3_f32bit(bool3 weft_sel_c, float3 weft_sel_a, float3 weft_sel_b)
+{
+    return float3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
+}
 
 float weft_pow5_(float x)
 {
@@ -359,8 +364,8 @@ WeftFilmSeries weft_film_series(float r12_, float3 r23_)
     float3 big_r23_ = (r23_ * r23_);
     float3 big_r123_ = min((big_r12_ * big_r23_), (0.9999).xxx);
     float3 rs_1 = (((t121_ * t121_) * big_r23_) / ((1.0).xxx - big_r123_));
-    float3 sign_ = (((-(r12_) * r23_) < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), (sqrt(big_r123_) * sign_));
+    const float3 _e25 = weft_select3_f32bit(((-(r12_) * r23_) < (0.0).xxx), (-1.0).xxx, (1.0).xxx);
+    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), (sqrt(big_r123_) * _e25));
     return weftfilmseries;
 }
 

@@ -149,7 +149,7 @@ cbuffer material : register(b0, space1) { WeftMaterial material; }
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> albedo_map : register(t3, space1);
 
 struct VertexOutput_vs_main {
@@ -167,6 +167,16 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
+
+float3 weft_select3_f32bit(bool3 weft_sel_c, float3 weft_sel_a, float3 weft_sel_b)
+{
+    return float3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
+}
+
+float4 weft_select4_f32bit(bool4 weft_sel_c_1, float4 weft_sel_a_1, float4 weft_sel_b_1)
+{
+    return float4((weft_sel_c_1.x ? weft_sel_a_1.x : weft_sel_b_1.x), (weft_sel_c_1.y ? weft_sel_a_1.y : weft_sel_b_1.y), (weft_sel_c_1.z ? weft_sel_a_1.z : weft_sel_b_1.z), (weft_sel_c_1.w ? weft_sel_a_1.w : weft_sel_b_1.w));
+}
 
 float3 weft_safe_normalize(float3 v, float3 fallback)
 {
@@ -292,7 +302,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
     float4 k = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
     float4 poly = (k * ((0.2548296).xxxx + (k * ((-0.28449672).xxxx + (k * ((1.4214138).xxxx + (k * ((-1.4531521).xxxx + (k * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
-    return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), ((t >= (0.0).xxxx) ? half_ : -(half_)));
+    const float4 _e46 = weft_select4_f32bit((t >= (0.0).xxxx), half_, -(half_));
+    return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
 }
 
 float3 mc_cell_means(float4 xe, float inv_gamma)
@@ -301,9 +312,11 @@ float3 mc_cell_means(float4 xe, float inv_gamma)
     const float4 _e3[2] = mc_normal4_(t_3);
     float3 dt = (t_3.yzw - t_3.xyz);
     bool3 wide = (abs(dt) >= (0.1).xxx);
-    float3 exact = ((_e3[1].yzw - _e3[1].xyz) / (wide ? dt : (1.0).xxx));
+    const float3 _e18 = weft_select3_f32bit(wide, dt, (1.0).xxx);
+    float3 exact = ((_e3[1].yzw - _e3[1].xyz) / _e18);
     float3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
-    return (max((wide ? exact : trap), (0.0).xxx) * inv_gamma);
+    const float3 _e27 = weft_select3_f32bit(wide, exact, trap);
+    return (max(_e27, (0.0).xxx) * inv_gamma);
 }
 
 McFastPre ConstructMcFastPre(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10) {

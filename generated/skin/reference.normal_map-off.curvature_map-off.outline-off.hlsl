@@ -66,13 +66,13 @@ TextureCube<float4> weft_environment : register(t1);
 SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
-static const SamplerState weft_environment_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]];
+#define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
-static const SamplerState weft_lut_sampler = nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]];
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-static const SamplerState material_sampler = nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]];
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> curvature_map : register(t5, space1);
 Texture2D<float4> specular_mask : register(t6, space1);
@@ -92,6 +92,11 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
+
+float3 weft_select3_f32bit(bool3 weft_sel_c, float3 weft_sel_a, float3 weft_sel_b)
+{
+    return float3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
+}
 
 float weft_pow5_(float x)
 {
@@ -285,7 +290,8 @@ float3 skin_preintegrated(float cos_theta, float curvature_1, float3 shape, floa
     float3 _e103 = num;
     float3 _e104 = den;
     float3 _e109 = den;
-    return ((_e109 > (0.0).xxx) ? (_e103 / max(_e104, (1e-30).xxx)) : (flat).xxx);
+    const float3 _e113 = weft_select3_f32bit((_e109 > (0.0).xxx), (_e103 / max(_e104, (1e-30).xxx)), (flat).xxx);
+    return _e113;
 }
 
 float skin_dual_ggx(float3 n_3, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)

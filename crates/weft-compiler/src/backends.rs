@@ -73,14 +73,36 @@ fn bind_target(space: u8, register: u32) -> hlsl::BindTarget {
     }
 }
 
+/// HLSL that DXC (HLSL 2021 and 2016), FXC SM 5.1 and Slang all accept:
+/// vector selects become per-component helpers before naga writes the
+/// module ([`crate::hlsl_select`]), sampler-heap aliases become macros after
+/// ([`crate::hlsl_samplers`]). docs/engine-interface.md lists the compilers.
 pub fn emit_hlsl(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    let split = crate::hlsl_select::split_vector_selects(module, info)
+        .map(|m| {
+            let info = crate::compose::validator()
+                .validate(&m)
+                .map_err(|e| format!("HLSL: per-component selects do not validate: {e:?}"))?;
+            Ok::<_, String>((m, info))
+        })
+        .transpose()?;
+    let (module, info) = split.as_ref().map_or((module, info), |(m, i)| (m, i));
+    // The structural check, on every variant of every build: naga writes a
+    // vector-condition select as `c ? a : b`, which HLSL 2021 rejects.
+    let left = crate::hlsl_select::count_vector_selects(module, info);
+    if left > 0 {
+        return Err(format!(
+            "HLSL: {left} vector-condition select(s) would be written as a ternary, \
+             which DXC's default HLSL 2021 rejects"
+        ));
+    }
     let options = hlsl_options(module);
     let pipeline = hlsl::PipelineOptions { entry_point: None };
     let mut out = String::new();
     let mut w = hlsl::Writer::new(&mut out, &options, &pipeline);
     w.write(module, info, None)
         .map_err(|e| format!("HLSL backend: {e}"))?;
-    Ok(out)
+    crate::hlsl_samplers::sampler_heap_macros(&out)
 }
 
 pub fn emit_msl(module: &Module, info: &ModuleInfo) -> Result<String, String> {

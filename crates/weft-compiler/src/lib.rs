@@ -16,6 +16,8 @@ pub mod compose;
 pub mod engine_binding;
 pub mod folder_build;
 pub mod half;
+pub mod hlsl_samplers;
+pub mod hlsl_select;
 pub mod in_memory;
 pub mod library;
 pub mod limits;

@@ -260,6 +260,7 @@ pub fn compile_material_cached(
     }
     let meta = MaterialMetadata {
         schema_version: SCHEMA_VERSION,
+        schema_minor: weft_meta::SCHEMA_MINOR,
         engine_interface_version: ENGINE_INTERFACE_VERSION,
         name: m.name.clone(),
         label: weft_meta::Text {

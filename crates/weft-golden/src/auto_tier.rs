@@ -512,6 +512,7 @@ fn instance_scene(
     let f = &request.features;
     Ok(SceneMetadata {
         schema_version: SCENE_SCHEMA_VERSION,
+        schema_minor: weft_meta::scene::SCENE_SCHEMA_MINOR,
         engine_interface_version: weft_meta::ENGINE_INTERFACE_VERSION,
         name: "auto_tier".into(),
         description: None,

@@ -4,36 +4,51 @@
 //! publish the JSON Schema) only — never on naga — so a runtime can read
 //! `generated/<material>/<material>.meta.json` without pulling in a compiler.
 //!
-//! Versioning: [`SCHEMA_VERSION`] changes whenever a field is removed or its
-//! meaning changes; adding optional fields does not bump it.
+//! Versioning ([`version`]): a file states `schema_version` (the major) and
+//! `schema_minor`. Adding optional fields or objects bumps the minor, and
+//! readers ignore fields they do not know; anything else bumps the major, and
+//! [`MaterialMetadata::from_json`] rejects a major it does not know with an
+//! error naming both versions.
 
 pub mod bake;
 pub mod files;
 pub mod limits;
 pub mod pipeline;
 pub mod scene;
+pub mod version;
 
 pub use limits::DeviceLimits;
 pub use pipeline::*;
+pub use version::MetaError;
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
-/// Version of the metadata layout written into every file.
+/// Major version of the metadata layout written into every file: a reader
+/// rejects any other (see [`version`]).
 pub const SCHEMA_VERSION: u32 = 4;
+
+/// Minor version of the metadata layout: additions a reader of the same major
+/// may ignore. 1: the first layout that states its minor (files without
+/// `schema_minor` are 4.0).
+pub const SCHEMA_MINOR: u32 = 1;
 
 /// Version of the engine interface (group 0 frame, group 2 object, vertex inputs).
 pub const ENGINE_INTERFACE_VERSION: u32 = 2;
 
 /// Everything an engine needs to show, bind and draw one material.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct MaterialMetadata {
-    /// Version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 4). It changes
-    /// when a field is removed or changes meaning: a reader must not guess at a version it does
-    /// not know.
+    /// Major version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 4). It
+    /// changes when a field is removed or changes meaning: a reader rejects a major it does not
+    /// know (`MaterialMetadata::from_json` does).
     pub schema_version: u32,
+    /// Minor version of the metadata layout (`weft_meta::SCHEMA_MINOR`, currently 1). It changes
+    /// when optional fields or objects are added: a reader of the same major ignores what it does
+    /// not know. Absent (0) in files written before the minor existed.
+    #[serde(default)]
+    pub schema_minor: u32,
     /// Version of the engine interface the shaders were composed with
     /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 2): the group-0 frame and group-2
     /// object bindings and the fixed vertex locations (docs/engine-interface.md).
@@ -85,7 +100,6 @@ pub struct MaterialMetadata {
 /// `cargo xtask bench shading` / `weft bench` on one adapter. This is the
 /// content of `generated/reports/<name>.measurements.json`; timings vary by machine.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Measurements {
     /// The material measured.
     pub material: String,
@@ -111,7 +125,6 @@ pub struct Measurements {
 
 /// One tier of [`Measurements`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct TierMeasurement {
     /// The tier measured (one of the material's `tiers.values`).
     pub tier: String,
@@ -169,7 +182,6 @@ pub struct TierMeasurement {
 
 /// The cost of a half-precision variant's f32 files ([`TierMeasurement::f32_files`]).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct F32FilesCost {
     /// Median GPU time of the frame's render pass, ms.
     pub gpu_ms: f64,
@@ -180,7 +192,6 @@ pub struct F32FilesCost {
 
 /// User-facing text in English with an optional Chinese translation.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Text {
     /// English text (always present).
     pub en: String,
@@ -191,7 +202,6 @@ pub struct Text {
 
 /// An inspector section.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Group {
     /// Section id (lower_snake_case) that `parameters[].group` and `keywords[].group` name.
     pub name: String,
@@ -276,7 +286,6 @@ impl ParamKind {
 
 /// One inspector parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Parameter {
     /// Parameter name (lower_snake_case): the key in presets and scene values, and the uniform
     /// member's name for uniform-backed kinds.
@@ -337,7 +346,6 @@ pub struct Parameter {
 
 /// Colour details of a `color` parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct ColorInfo {
     /// HDR colours may exceed 1 and are edited in linear space.
     pub hdr: bool,
@@ -405,7 +413,6 @@ impl TextureDefault {
 
 /// Details of a `texture2d` or `cube` parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct TextureInfo {
     /// The built-in texture bound while the parameter is unset, unless an
     /// entry of `default_when` holds for the variant.
@@ -433,7 +440,6 @@ pub struct TextureInfo {
 
 /// `default` replaces the texture default in variants where `condition` holds.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct ConditionalTextureDefault {
     /// On a static keyword or `tier`.
     pub condition: Condition,
@@ -443,7 +449,6 @@ pub struct ConditionalTextureDefault {
 
 /// A curve keyframe: cubic Hermite between keys, slopes per unit time.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Keyframe {
     /// Position on the curve's axis; strictly increasing along `keyframes`.
     pub time: f64,
@@ -457,7 +462,6 @@ pub struct Keyframe {
 
 /// How a `curve` parameter is edited and baked into the material uniform.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct CurveInfo {
     /// The default curve's keys, times strictly increasing; the curve is constant before the
     /// first and after the last (`weft_meta::bake::eval_curve` evaluates it).
@@ -486,7 +490,6 @@ pub enum CurveEncoding {
 
 /// One stop of a gradient.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct GradientStop {
     /// Where the stop sits, in [0, 1]; positions never decrease along `stops`.
     pub position: f64,
@@ -496,7 +499,6 @@ pub struct GradientStop {
 
 /// How a `gradient` parameter is edited and baked into its ramp texture.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct GradientInfo {
     /// The default gradient's stops, positions non-decreasing; the colour is constant before
     /// the first and after the last.
@@ -524,7 +526,6 @@ pub enum GradientEncoding {
 
 /// A show-if condition on a keyword or a bool parameter.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Condition {
     /// A keyword, `tier`, or a bool parameter.
     pub subject: String,
@@ -568,7 +569,6 @@ pub enum KeywordMode {
 
 /// A keyword: a compile-time switch shown in the inspector.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Keyword {
     /// The WGSL `override` name (UPPER_SNAKE).
     pub name: String,
@@ -596,7 +596,6 @@ pub struct Keyword {
 /// The material's quality tiers: the same material at different cost, each tier its own
 /// variant.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Tiers {
     /// Tier names; the WGSL constant `TIER_<NAME>` equals the index.
     pub values: Vec<String>,
@@ -626,7 +625,6 @@ pub struct Tiers {
 
 /// A named set of values for the inspector.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Preset {
     /// Preset id (lower_snake_case), as scene manifests name it.
     pub name: String,
@@ -718,7 +716,6 @@ pub enum StencilOperation {
 /// `(reference & read_mask) compare (stored & read_mask)`; the operation chosen by the
 /// outcome changes the bits of `write_mask`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct StencilRenderState {
     /// The reference value, 0..=255.
     pub reference: u32,
@@ -739,7 +736,6 @@ pub struct StencilRenderState {
 /// A pass's render state as the material author wrote it (`[[pass]]`); `primitive`,
 /// `color_targets` and `depth_stencil` are the pipeline state it implies.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct RenderState {
     /// Blend mode of the colour output.
     pub blend: BlendMode,
@@ -760,7 +756,7 @@ pub struct RenderState {
 
 /// How many instances a pass draws.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(rename_all = "snake_case", deny_unknown_fields)]
+#[serde(rename_all = "snake_case")]
 pub enum InstanceCount {
     /// A fixed number of instances, 1..=4096.
     Fixed(u32),
@@ -770,7 +766,6 @@ pub enum InstanceCount {
 
 /// One draw of the mesh: entry points, instance count and pipeline state.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Pass {
     /// Pass name, distinct within the material.
     pub name: String,
@@ -798,7 +793,6 @@ pub struct Pass {
 
 /// A vertex attribute the mesh provides.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct VertexInput {
     /// position, normal, tangent, uv0, uv1 or color.
     pub name: String,
@@ -811,7 +805,6 @@ pub struct VertexInput {
 
 /// One point of the static keyword x tier space.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Variant {
     /// Stable id, also the file stem: `<tier>.<keyword>-<value>...` (lower case).
     pub id: String,
@@ -834,7 +827,6 @@ pub struct Variant {
 
 /// Files and reflection of a canonical (non-alias) variant.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct VariantShader {
     /// Language -> files (paths relative to the metadata file).
     pub files: BTreeMap<String, Vec<ShaderFile>>,
@@ -878,7 +870,6 @@ impl VariantShader {
 
 /// One emitted shader file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct ShaderFile {
     /// File name, relative to the folder of the metadata file.
     pub path: String,
@@ -909,7 +900,6 @@ pub enum Stage {
 
 /// An entry point of a shader module.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct EntryPoint {
     /// The entry point's function name.
     pub name: String,
@@ -920,7 +910,6 @@ pub struct EntryPoint {
 /// A WGSL `override` left in the WGSL output: a `constant`-mode keyword, set when the engine
 /// creates the pipeline.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct PipelineConstant {
     /// The WGSL `override` (a keyword's name).
     pub name: String,
@@ -962,7 +951,6 @@ pub enum BindingKind {
 
 /// One resource binding of a variant, with its layout entry in full.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Binding {
     /// The WGSL `@group` (Vulkan descriptor set; HLSL register space): 0 frame, 1 material, 2
     /// object.
@@ -1000,7 +988,6 @@ pub struct Binding {
 
 /// Where a binding lives in the HLSL output (see docs/hlsl-registers.md).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct HlslBinding {
     /// `b3`, `t2`, … For samplers: the sampler-index buffer's register.
     pub register: String,
@@ -1015,7 +1002,6 @@ pub struct HlslBinding {
 /// A buffer struct's layout by WGSL's uniform-buffer rules (naga's layouter;
 /// std140-compatible).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct UniformLayout {
     /// The WGSL struct's name (`WeftFrame`, `WeftMaterial`, `WeftObject`).
     pub struct_name: String,
@@ -1029,7 +1015,6 @@ pub struct UniformLayout {
 
 /// One member of a buffer struct.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct UniformMember {
     /// The member's name in the WGSL struct.
     pub name: String,

@@ -82,7 +82,6 @@ pub fn limit_spec(key: &str) -> Option<&'static LimitSpec> {
 /// these values when it creates the device. A limit not listed is WebGPU's
 /// default.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct DeviceLimits {
     /// WebGPU `maxBindGroups` (default 4): bind groups a pipeline layout may have.
     #[serde(default, skip_serializing_if = "Option::is_none")]

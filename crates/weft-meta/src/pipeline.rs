@@ -34,7 +34,6 @@ pub enum FrontFace {
 
 /// Primitive assembly of a pass.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct PrimitiveState {
     /// How the pass's vertices form primitives.
     pub topology: PrimitiveTopology,
@@ -102,7 +101,6 @@ pub enum BlendOperation {
 
 /// result = src × src_factor (operation) dst × dst_factor.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct BlendComponent {
     /// Factor the fragment output is multiplied by.
     pub src_factor: BlendFactor,
@@ -114,7 +112,6 @@ pub struct BlendComponent {
 
 /// The colour (rgb) and alpha equations of a blended target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct BlendState {
     /// Equation of the rgb channels.
     pub color: BlendComponent,
@@ -138,7 +135,6 @@ pub enum ColorChannel {
 
 /// One colour attachment of a pass.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct ColorTarget {
     /// The fragment output location.
     pub location: u32,
@@ -166,7 +162,6 @@ pub const DEPTH_STENCIL_FORMAT: &str = "depth24plus_stencil8";
 
 /// The stencil test and operations of one face (WebGPU `GPUStencilFaceState`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct StencilFaceState {
     /// Passes when `(stencil_reference & stencil_read_mask) compare (stored & stencil_read_mask)`.
     pub compare: DepthTest,
@@ -183,7 +178,6 @@ pub struct StencilFaceState {
 /// tests nor writes depth has `depth_compare: always` and no depth write; one without stencil
 /// has `always`/`keep` faces and write mask 0.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct DepthStencilState {
     /// `depth24plus_stencil8` ([`DEPTH_STENCIL_FORMAT`]) for every pass.
     pub format: String,
@@ -226,7 +220,6 @@ pub enum BufferBindingType {
 
 /// A buffer binding's layout entry and the buffer's contents.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct BufferBinding {
     /// Buffer type of the layout entry.
     #[serde(rename = "type")]
@@ -280,7 +273,6 @@ pub enum TextureViewDimension {
 
 /// A texture binding's layout entry and what to put in it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct TextureBinding {
     /// Sample type of the layout entry.
     pub sample_type: TextureSampleType,
@@ -339,7 +331,6 @@ pub enum AddressMode {
 
 /// A sampler binding's layout entry and the sampler object to create for it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SamplerBinding {
     /// Sampler type of the layout entry.
     pub binding_type: SamplerBindingType,
@@ -368,7 +359,6 @@ pub struct SamplerBinding {
 
 /// Engine data a group-0 or group-2 binding carries.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct EngineResource {
     /// Stable name: `frame`, `object`, `environment`, `split_sum_lut`, `sheen_albedo_lut`.
     pub id: String,
@@ -383,7 +373,6 @@ pub struct EngineResource {
 /// material's baked table (`[tables]`) or a texture parameter's image
 /// (`file`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct ResourceFile {
     /// Relative to the library root (the folder holding
     /// `metadata.schema.json` and `luts/`): material metadata lives one folder
@@ -414,7 +403,6 @@ pub struct ResourceFile {
 
 /// A (group, binding) pair of the WGSL interface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct BindingRef {
     /// The WGSL `@group`.
     pub group: u32,
@@ -424,7 +412,6 @@ pub struct BindingRef {
 
 /// A GLSL uniform block and its binding point (`layout(std140, binding = N)`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct GlslUniformBlock {
     /// The block name (`glGetUniformBlockIndex`).
     pub block: String,
@@ -437,7 +424,6 @@ pub struct GlslUniformBlock {
 /// A GLSL combined image-sampler uniform and its texture unit
 /// (`layout(binding = N) uniform sampler2D …`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct GlslSampler {
     /// The uniform's name in the file.
     pub name: String,
@@ -456,7 +442,6 @@ pub struct GlslSampler {
 /// How a GL engine binds one GLSL file. Binding points and units are the
 /// same in every stage's file of one variant, so one program can link them.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct GlslReflection {
     /// Each uniform block of the file with its binding point.
     pub uniform_blocks: Vec<GlslUniformBlock>,
@@ -482,7 +467,6 @@ pub enum MslSlotKind {
 /// Indices are dense per table in (group, binding) order, so vertex buffers
 /// are free from index 16 up (`languages.msl.notes`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct MslBinding {
     /// The argument table the resource lives in.
     pub kind: MslSlotKind,
@@ -527,7 +511,6 @@ pub enum ConstantKeywords {
 /// The conventions of one emitted language: how to draw its files so that
 /// the picture matches the WGSL drawn through WebGPU.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct LanguageConventions {
     /// Direction of clip-space +y in this language's vertex output.
     pub clip_space_y: ClipSpaceY,

@@ -12,17 +12,27 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
-/// Version of the scene metadata layout.
+/// Major version of the scene metadata layout: a reader rejects any other
+/// (the rule of [`crate::version`]).
 pub const SCENE_SCHEMA_VERSION: u32 = 3;
+
+/// Minor version of the scene metadata layout (additions a reader of the same
+/// major may ignore). 1: the first that states its minor (files without
+/// `schema_minor` are 3.0).
+pub const SCENE_SCHEMA_MINOR: u32 = 1;
 
 /// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
 /// `<scene>.scene.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneMetadata {
-    /// Version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_VERSION`,
-    /// currently 3).
+    /// Major version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_VERSION`,
+    /// currently 3): a reader rejects a major it does not know.
     pub schema_version: u32,
+    /// Minor version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_MINOR`,
+    /// currently 1): a reader of the same major ignores fields it does not know. Absent (0) in
+    /// files written before the minor existed.
+    #[serde(default)]
+    pub schema_minor: u32,
     /// Version of the engine interface the shaders were composed with
     /// (`weft_meta::ENGINE_INTERFACE_VERSION`, currently 2).
     pub engine_interface_version: u32,
@@ -58,7 +68,6 @@ pub struct SceneMetadata {
 /// The engine features a scene provides. Engine interface v1: group 0 is
 /// always bound in full; a feature that is off is never read by the scene's shaders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneFeatures {
     /// Prefiltered environment cube (specular image-based lighting).
     pub environment: bool,
@@ -70,7 +79,6 @@ pub struct SceneFeatures {
 
 /// The camera for previews and tests: perspective, +y up.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneCamera {
     /// Eye position in world space.
     pub position: [f64; 3],
@@ -82,7 +90,6 @@ pub struct SceneCamera {
 
 /// The main directional light for previews and tests.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneLight {
     /// From the surface towards the light, world space (normalise it).
     pub direction: [f64; 3],
@@ -93,7 +100,6 @@ pub struct SceneLight {
 
 /// One specialised shader.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneShader {
     /// `<material>.<first 12 hex digits of the WGSL's SHA-256>`; also the file stem.
     pub id: String,
@@ -107,7 +113,6 @@ pub struct SceneShader {
 
 /// One drawable instance.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneInstance {
     /// Instance name, unique in the scene.
     pub name: String,
@@ -150,7 +155,6 @@ pub struct SceneInstance {
 
 /// A texture to bind for a material texture binding.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneTexture {
     /// The material parameter (`texture2d`, `cube` or `gradient`) this texture carries.
     pub parameter: String,
@@ -174,7 +178,6 @@ pub struct SceneTexture {
 /// An instance's placement in world space: `model` = translation × rotation (Z · Y · X) ×
 /// scale.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct SceneTransform {
     /// World-space position of the object's origin (x, y, z).
     pub translation: [f64; 3],
@@ -188,7 +191,6 @@ pub struct SceneTransform {
 
 /// The record of an automatic tier choice.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct TierChoice {
     /// The largest mean FLIP against the reference tier the choice may accept, in (0, 1].
     pub error_budget: f64,
@@ -203,7 +205,6 @@ pub struct TierChoice {
 
 /// One tier considered by an automatic choice.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct TierCandidate {
     /// The tier's name.
     pub tier: String,

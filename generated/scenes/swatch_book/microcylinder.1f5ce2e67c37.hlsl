@@ -126,6 +126,26 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
+int3 weft_select3_i32bit(bool3 weft_sel_c, int3 weft_sel_a, int3 weft_sel_b)
+{
+    return int3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
+}
+
+float3 weft_select3_f32bit(bool3 weft_sel_c_1, float3 weft_sel_a_1, float3 weft_sel_b_1)
+{
+    return float3((weft_sel_c_1.x ? weft_sel_a_1.x : weft_sel_b_1.x), (weft_sel_c_1.y ? weft_sel_a_1.y : weft_sel_b_1.y), (weft_sel_c_1.z ? weft_sel_a_1.z : weft_sel_b_1.z));
+}
+
+int4 weft_select4_i32bit(bool4 weft_sel_c_2, int4 weft_sel_a_2, int4 weft_sel_b_2)
+{
+    return int4((weft_sel_c_2.x ? weft_sel_a_2.x : weft_sel_b_2.x), (weft_sel_c_2.y ? weft_sel_a_2.y : weft_sel_b_2.y), (weft_sel_c_2.z ? weft_sel_a_2.z : weft_sel_b_2.z), (weft_sel_c_2.w ? weft_sel_a_2.w : weft_sel_b_2.w));
+}
+
+float4 weft_select4_f32bit(bool4 weft_sel_c_3, float4 weft_sel_a_3, float4 weft_sel_b_3)
+{
+    return float4((weft_sel_c_3.x ? weft_sel_a_3.x : weft_sel_b_3.x), (weft_sel_c_3.y ? weft_sel_a_3.y : weft_sel_b_3.y), (weft_sel_c_3.z ? weft_sel_a_3.z : weft_sel_b_3.z), (weft_sel_c_3.w ? weft_sel_a_3.w : weft_sel_b_3.w));
+}
+
 float3 weft_safe_normalize(float3 v, float3 fallback)
 {
     float len2_ = dot(v, v);
@@ -257,7 +277,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
     float4 k_3 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
     float4 poly = (k_3 * ((0.2548296).xxxx + (k_3 * ((-0.28449672).xxxx + (k_3 * ((1.4214138).xxxx + (k_3 * ((-1.4531521).xxxx + (k_3 * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
-    return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), ((t >= (0.0).xxxx) ? half_ : -(half_)));
+    const float4 _e38 = weft_select4_f32bit((t >= (0.0).xxxx), half_, -(half_));
+    return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), _e38);
 }
 
 float3 mc_cell_means(float4 xe, float inv_gamma)
@@ -266,9 +287,11 @@ float3 mc_cell_means(float4 xe, float inv_gamma)
     const float4 _e3[2] = mc_normal4_(t_2);
     float3 dt = (t_2.yzw - t_2.xyz);
     bool3 wide = (abs(dt) >= (0.1).xxx);
-    float3 exact = ((_e3[1].yzw - _e3[1].xyz) / (wide ? dt : (1.0).xxx));
+    const float3 _e16 = weft_select3_f32bit(wide, dt, (1.0).xxx);
+    float3 exact = ((_e3[1].yzw - _e3[1].xyz) / _e16);
     float3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
-    return (max((wide ? exact : trap), (0.0).xxx) * inv_gamma);
+    const float3 _e25 = weft_select3_f32bit(wide, exact, trap);
+    return (max(_e25, (0.0).xxx) * inv_gamma);
 }
 
 McFastPre ConstructMcFastPre(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10) {
@@ -409,9 +432,11 @@ float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3
     float3 spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
     bool4 live = (int4(int(0), int(1), int(2), int(3)) < (asint(asuint(n_3) - asuint(int(1)))).xxxx);
     bool3 live_b = (int3(int(4), int(5), int(6)) < (asint(asuint(n_3) - asuint(int(1)))).xxx);
-    int4 per = (live ? ((spans > (60.0).xxxx) ? (int(2)).xxxx : (int(1)).xxxx) : (int(0)).xxxx);
-    int3 per_b = (live_b ? ((spans_b > (60.0).xxx) ? (int(2)).xxx : (int(1)).xxx) : (int(0)).xxx);
-    int pieces = max(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(per.x) + asuint(per.y))) + asuint(per.z))) + asuint(per.w))) + asuint(per_b.x))) + asuint(per_b.y))) + asuint(per_b.z)), int(1));
+    const int4 _e43 = weft_select4_i32bit((spans > (60.0).xxxx), (int(2)).xxxx, (int(1)).xxxx);
+    const int4 _e44 = weft_select4_i32bit(live, _e43, (int(0)).xxxx);
+    const int3 _e50 = weft_select3_i32bit((spans_b > (60.0).xxx), (int(2)).xxx, (int(1)).xxx);
+    const int3 _e51 = weft_select3_i32bit(live_b, _e50, (int(0)).xxx);
+    int pieces = max(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(_e44.x) + asuint(_e44.y))) + asuint(_e44.z))) + asuint(_e44.w))) + asuint(_e51.x))) + asuint(_e51.y))) + asuint(_e51.z)), int(1));
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {

@@ -511,6 +511,7 @@ pub fn build_resolved_scene(
 
     let metadata = SceneMetadata {
         schema_version: SCENE_SCHEMA_VERSION,
+        schema_minor: weft_meta::scene::SCENE_SCHEMA_MINOR,
         engine_interface_version: ENGINE_INTERFACE_VERSION,
         name: manifest.name.clone(),
         description: manifest.description.clone(),
