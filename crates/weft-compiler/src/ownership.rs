@@ -6,8 +6,9 @@
 //!
 //! - **Ownership.** An existing output folder is replaced only if it is
 //!   empty, or holds [`OUTPUT_MARKER`] (written into every output folder by
-//!   every build), or has a `.<name>.stamp` beside it (written by weft
-//!   builds before the marker existed). Anything else — a project folder, a
+//!   every build) or lies inside a folder that does, or has a
+//!   `.<name>.stamp` beside it (written by weft builds before the marker
+//!   existed). Anything else — a project folder, a
 //!   material's folder, a user's folder — is refused with an error that
 //!   says so.
 //! - **Apart from the inputs.** An output folder that is, contains or lies
@@ -31,8 +32,13 @@ Do not keep files of your own here.\n";
 /// Whether the existing folder `dir` may be replaced by a build (see the
 /// module documentation); an error explaining why not otherwise.
 pub(crate) fn check_replaceable(dir: &Path, stamp: &Path) -> io::Result<()> {
-    let marker = dir.join(OUTPUT_MARKER);
-    if std::fs::symlink_metadata(&marker).is_ok_and(|m| m.is_file()) {
+    // Marked itself, or inside a marked folder (a scene's folder in
+    // `generated/scenes/`, the gallery): weft's output either way.
+    let resolved = resolve(dir)?;
+    if resolved
+        .ancestors()
+        .any(|d| std::fs::symlink_metadata(d.join(OUTPUT_MARKER)).is_ok_and(|m| m.is_file()))
+    {
         return Ok(());
     }
     if crate::stamp::is_stamp_file(stamp) {
@@ -179,5 +185,10 @@ mod tests {
         assert!(e.contains("not a folder weft built"), "{e}");
         std::fs::write(dir.join(OUTPUT_MARKER), OUTPUT_MARKER_TEXT).unwrap();
         check_replaceable(&dir, &stamp).unwrap();
+        // A folder inside weft's output is weft's too (generated/scenes/x).
+        let inner = dir.join("scenes/x");
+        std::fs::create_dir_all(&inner).unwrap();
+        std::fs::write(inner.join("x.json"), "{}").unwrap();
+        check_replaceable(&inner, &tmp.path().join(".x.stamp")).unwrap();
     }
 }
