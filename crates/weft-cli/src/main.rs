@@ -463,11 +463,11 @@ fn main() -> ExitCode {
                         );
                         if options.cache_dir.is_some() {
                             println!(
-                                "compile units: {} from the cache ({} compiled again to verify), \
-                                 {} compiled, {} refused (not signed with WEFT_CACHE_KEY)",
+                                "compile units: {} from the cache, {} compiled; {} compiled again \
+                                 to verify, {} refused (not signed with WEFT_CACHE_KEY)",
                                 result.cache_hits,
-                                result.cache_verified,
                                 result.cache_misses,
+                                result.cache_verified,
                                 result.cache_rejected
                             );
                         }

@@ -45,12 +45,24 @@ fn build_scene_replaces_only_its_own_folder() {
     std::fs::write(out.join("other_scene/keep.txt"), "kept").unwrap();
     std::fs::create_dir_all(out.join("swatch_book")).unwrap();
     std::fs::write(out.join("swatch_book/stale.wgsl"), "old").unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_weft"))
-        .current_dir(repo())
-        .args(["build", "--scene", "scenes/swatch_book.scene.toml", "-o"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let build = || {
+        Command::new(env!("CARGO_BIN_EXE_weft"))
+            .current_dir(repo())
+            .args(["build", "--scene", "scenes/swatch_book.scene.toml", "-o"])
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    // Not marked as weft's output: refused, left as it was.
+    let o = build();
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(
+        std::fs::read_to_string(out.join("swatch_book/stale.wgsl")).unwrap(),
+        "old"
+    );
+    // An earlier build's folder (marked) is replaced.
+    std::fs::write(out.join("swatch_book/.weft-output"), "").unwrap();
+    let o = build();
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{stderr}");
     assert_eq!(

@@ -127,7 +127,7 @@ pub fn build_into(
 }
 
 /// Refuses an output folder that is, holds or lies inside the materials
-/// (their root, or each material file's) or the compile cache. [`build_into`]
+/// root (when given), holds a material file, or is or holds the compile cache. [`build_into`]
 /// checks it; callers check it before taking the folder's lock, so that a
 /// refused build leaves no lock file either.
 pub fn check_inputs_apart(
@@ -136,11 +136,10 @@ pub fn check_inputs_apart(
     out: &Path,
     options: &BuildOptions,
 ) -> io::Result<()> {
-    let roots: Vec<PathBuf> = match root {
-        Some(r) => vec![r.to_path_buf()],
-        None => paths.iter().map(|p| weft_front::find_root(p)).collect(),
-    };
-    let mut inputs: Vec<Input<'_>> = roots
+    // The root when one was given (a materials folder); material files
+    // named one by one are inputs themselves (their guessed root may be far
+    // above them, even `/`).
+    let mut inputs: Vec<Input<'_>> = root
         .iter()
         .map(|path| Input {
             what: "materials root",
