@@ -645,7 +645,9 @@ fn export_is_deterministic_and_complete() {
         v
     };
     let (fa, fb) = (list(&out_a), list(&out_b));
-    assert_eq!(fa.len(), n);
+    // The exported files and the output marker every build folder carries.
+    assert_eq!(fa.len(), n + 1);
+    assert!(fa.iter().any(|(p, _)| p == ".weft-output"));
     assert_eq!(fa, fb, "two exports differ");
     for must in [
         "index.html",
