@@ -162,10 +162,10 @@ pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, PathBuf>, String> {
                 dir.display()
             ));
         }
-        for rel in shard_files(dir)? {
+        for ShardFile { rel, library_wide } in shard_files(dir)? {
             let path = dir.join(&rel);
             if let Some(other) = files.get(&rel) {
-                if !shared.contains_key(&rel) {
+                if !library_wide {
                     return Err(format!(
                         "`{rel}` is in both `{}` and `{}`, but a material belongs to one shard",
                         other.display(),
@@ -182,10 +182,8 @@ pub fn merge(dirs: &[PathBuf]) -> Result<BTreeMap<String, PathBuf>, String> {
             } else {
                 files.insert(rel.clone(), path);
             }
-            if let Some(n) = shared.get_mut(&rel) {
-                *n += 1;
-            } else if !rel.contains('/') || rel.starts_with("luts/") {
-                shared.insert(rel, 1);
+            if library_wide {
+                *shared.entry(rel).or_default() += 1;
             }
         }
         first.get_or_insert((marker, dir));
@@ -221,10 +219,17 @@ fn read(p: &Path) -> Result<Vec<u8>, String> {
         .map_err(|e| format!("{}: {e}", p.display()))
 }
 
+/// A file of a shard folder: its path, and whether every shard writes it
+/// (LUTs, schemas) rather than one material's shard.
+struct ShardFile {
+    rel: String,
+    library_wide: bool,
+}
+
 /// The files of one shard folder a merge takes (relative paths, sorted):
 /// see [`merge`]. Refuses anything that is not a regular file or a folder,
 /// and files of a material's folder its metadata does not list.
-fn shard_files(dir: &Path) -> Result<Vec<String>, String> {
+fn shard_files(dir: &Path) -> Result<Vec<ShardFile>, String> {
     let mut out = Vec::new();
     let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut names: Vec<_> = entries
@@ -245,7 +250,10 @@ fn shard_files(dir: &Path) -> Result<Vec<String>, String> {
             .map_err(|e| format!("{}: {e}", path.display()))?
             .file_type();
         if kind.is_file() {
-            out.push(name);
+            out.push(ShardFile {
+                rel: name,
+                library_wide: true,
+            });
         } else if kind.is_dir() {
             folder_files(dir, &name, &mut out)?;
         } else {
@@ -258,7 +266,7 @@ fn shard_files(dir: &Path) -> Result<Vec<String>, String> {
 /// The files of the top-level folder `name` of a shard: a material's (as
 /// its metadata lists them, each checked to be a regular file) or the
 /// library-wide LUT folder (every regular file in it).
-fn folder_files(dir: &Path, name: &str, out: &mut Vec<String>) -> Result<(), String> {
+fn folder_files(dir: &Path, name: &str, out: &mut Vec<ShardFile>) -> Result<(), String> {
     let folder = dir.join(name);
     if let Some((_, listed)) = crate::unchanged::material_files(dir, name) {
         let listed: std::collections::BTreeSet<String> =
@@ -276,7 +284,10 @@ fn folder_files(dir: &Path, name: &str, out: &mut Vec<String>) -> Result<(), Str
                     path.display()
                 ));
             }
-            out.push(format!("{name}/{rel}"));
+            out.push(ShardFile {
+                rel: format!("{name}/{rel}"),
+                library_wide: false,
+            });
         }
         return Ok(());
     }
@@ -293,7 +304,10 @@ fn folder_files(dir: &Path, name: &str, out: &mut Vec<String>) -> Result<(), Str
         if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
             return Err(not_regular(&path));
         }
-        out.push(format!("{name}/{rel}"));
+        out.push(ShardFile {
+            rel: format!("{name}/{rel}"),
+            library_wide: true,
+        });
     }
     Ok(())
 }
