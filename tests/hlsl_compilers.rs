@@ -32,10 +32,13 @@ fn repo() -> PathBuf {
 const INSTALL: &str = "python3 -m venv target/tools/slang && \
     target/tools/slang/bin/pip install --no-deps slangtorch==1.3.22";
 
-/// `$WEFT_SLANGC`, else `slangc` on PATH, else where .ci/run installs it.
+/// `$WEFT_SLANGC` (relative to the repository root), else `slangc` on PATH,
+/// else where .ci/run installs it.
 fn slangc() -> PathBuf {
     if let Some(p) = std::env::var_os("WEFT_SLANGC") {
-        return PathBuf::from(p);
+        // A relative path is taken from the repository root, where it was
+        // typed (the test itself runs in its package folder).
+        return repo().join(p);
     }
     let on_path = std::env::var_os("PATH").and_then(|paths| {
         std::env::split_paths(&paths)
