@@ -1,7 +1,8 @@
 //! `cargo xtask bench gpu-model`: every pipeline of the library and the
 //! scenes compiled by Mesa RADV/ACO on its null device (no GPU) for each
 //! family, figures per stage (weft_gpu_stats), written as
-//! generated/reports/gpu-model.md (`--json FILE`: every statistic).
+//! generated/reports/gpu-model.md and its compact form gpu-model.json
+//! (weft_gpu_stats::summary; `--json FILE`: every statistic).
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -16,7 +17,7 @@ pub struct GpuModelArgs {
     /// `RADV_FORCE_FAMILY` values (repeatable; default navi21 and gfx1100).
     #[arg(long = "family", value_name = "FAMILY")]
     families: Vec<String>,
-    /// Also write generated/reports/gpu-model.md.
+    /// Also write generated/reports/gpu-model.md and gpu-model.json.
     #[arg(long)]
     write: bool,
     /// Write every statistic of every executable as JSON to this file
@@ -80,6 +81,9 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
     }
     let md = weft_gpu_stats::report::markdown(&root.join("generated"), &stats, &command)
         .map_err(|e| e.to_string())?;
+    // Before the disassembly is dropped or moved out: the model reads it.
+    let summary = weft_gpu_stats::ModelSummary::new(&root.join("generated"), &stats, &command)
+        .map_err(|e| e.to_string())?;
     match &args.disassembly {
         Some(dir) => write_disassembly(dir, &mut stats)?,
         None => stats
@@ -95,6 +99,10 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
         let md_path = reports.join("gpu-model.md");
         std::fs::write(&md_path, &md).map_err(|e| format!("{}: {e}", md_path.display()))?;
         println!("wrote {}", md_path.display());
+        let json_path = reports.join(weft_gpu_stats::summary::FILE_NAME);
+        std::fs::write(&json_path, summary.to_json())
+            .map_err(|e| format!("{}: {e}", json_path.display()))?;
+        println!("wrote {}", json_path.display());
     }
     if let Some(json_path) = &args.json {
         let mut json = serde_json::to_string(&stats).map_err(|e| e.to_string())?;

@@ -7,8 +7,10 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 use weft_compiler::{BuildOptions, output};
 
+mod bench_gpu;
 mod bench_gpu_model;
 mod bench_scale;
+#[cfg(feature = "screenshots")]
 mod inspector;
 mod scale;
 
@@ -55,7 +57,8 @@ enum Command {
         check: bool,
     },
     /// Screenshots of the live inspector (`weft serve`) in headless Chromium:
-    /// docs/inspector/inspector-en.png and inspector-zh.png.
+    /// docs/inspector/inspector-en.png and inspector-zh.png. Needs the
+    /// `screenshots` feature: `cargo xtask-screenshots inspector`.
     Inspector,
     /// Benchmarks (reports, not tests).
     Bench {
@@ -86,6 +89,10 @@ enum Bench {
     /// no GPU) for navi21 (RDNA2) and gfx1100 (RDNA3): instructions, VGPRs,
     /// waves per SIMD, inverse throughput per stage.
     GpuModel(bench_gpu_model::GpuModelArgs),
+    /// On the first real GPU (WEFT_ADAPTER=hardware unless set): the shading
+    /// and scene benches, each tier's GPU ratio beside llvmpipe's and the GPU
+    /// model's, written as generated/reports/gpu-<adapter>.md and .json.
+    Gpu(bench_gpu::GpuArgs),
     /// Every material x tier: GPU time per frame (timestamp queries), ratio to
     /// standard's fast tier, SPIR-V instructions, error against the reference tier.
     Shading {
@@ -294,7 +301,16 @@ fn main() -> ExitCode {
         }
         Command::Bless { force } => bless(&root, force),
         Command::Gallery => gallery(&root),
+        #[cfg(feature = "screenshots")]
         Command::Inspector => inspector::inspector(&root),
+        #[cfg(not(feature = "screenshots"))]
+        Command::Inspector => {
+            eprintln!(
+                "error: screenshots need the `screenshots` feature (headless Chromium's driver): \
+                 run `cargo xtask-screenshots inspector`"
+            );
+            ExitCode::FAILURE
+        }
         Command::Textures { check } => textures(&root, check),
         Command::Bench {
             what: Bench::Compile { runs },
@@ -305,6 +321,9 @@ fn main() -> ExitCode {
         Command::Bench {
             what: Bench::GpuModel(args),
         } => bench_gpu_model::bench_gpu_model(&root, &args),
+        Command::Bench {
+            what: Bench::Gpu(args),
+        } => bench_gpu::bench_gpu(&root, &args),
         Command::GpuStatsWorker => match weft_gpu_stats::worker::serve_stdio() {
             0 => ExitCode::SUCCESS,
             _ => ExitCode::FAILURE,
@@ -762,7 +781,7 @@ fn write_tier_tables(root: &Path, materials: &[weft_meta::Measurements]) -> Resu
 
 /// The scene manifests under scenes/ (only `names` when given), resolved
 /// by the front end for the materials they use.
-fn scene_inputs(
+pub(crate) fn scene_inputs(
     root: &Path,
     names: &[String],
 ) -> Result<Vec<weft_golden::scene_bench::SceneInput>, String> {

@@ -18,12 +18,14 @@ pub mod model;
 pub mod record;
 pub mod report;
 mod state;
+pub mod summary;
 pub mod trips;
 pub mod worker;
 
 pub use error::{Error, RADV_PACKAGE, Result};
 pub use jobs::Selection;
 pub use record::{FamilyStats, PipelineSource, PipelineStats, StageStats, StatValue, Statistic};
+pub use summary::{FamilySummary, FragmentCost, ModelSummary, SceneShaderCost, TierCost};
 pub use worker::WorkerCommand;
 
 use std::path::PathBuf;

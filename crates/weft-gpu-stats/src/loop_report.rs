@@ -52,6 +52,65 @@ pub fn llvmpipe_ratio(generated: &Path, material: &str, tier: &str) -> Option<f6
         .as_f64()
 }
 
+/// A real GPU's tier ratios, from a committed `cargo xtask bench gpu` report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuTimings {
+    /// The report's file name (`gpu-<adapter>.json`).
+    pub file: String,
+    /// The adapter as the report describes it.
+    pub adapter: String,
+    /// (material, tier, GPU ms ÷ `standard` `fast`).
+    pub ratios: Vec<(String, String, f64)>,
+}
+
+impl GpuTimings {
+    /// The ratio of `material` `tier`.
+    pub fn ratio(&self, material: &str, tier: &str) -> Option<f64> {
+        self.ratios
+            .iter()
+            .find(|(m, t, _)| m == material && t == tier)
+            .map(|r| r.2)
+    }
+}
+
+/// Every committed real-GPU report under `generated/reports/` (`gpu-*.json`
+/// but the model's own `gpu-model.json`), by file name.
+pub fn committed_gpu_timings(generated: &Path) -> Vec<GpuTimings> {
+    let dir = generated.join("reports");
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        return Vec::new();
+    };
+    let mut files: Vec<String> = entries
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.starts_with("gpu-") && n.ends_with(".json") && n != crate::summary::FILE_NAME)
+        .collect();
+    files.sort();
+    files
+        .into_iter()
+        .filter_map(|file| {
+            let json: serde_json::Value =
+                serde_json::from_slice(&std::fs::read(dir.join(&file)).ok()?).ok()?;
+            let ratios = json
+                .get("tiers")?
+                .as_array()?
+                .iter()
+                .filter_map(|t| {
+                    Some((
+                        t.get("material")?.as_str()?.to_string(),
+                        t.get("tier")?.as_str()?.to_string(),
+                        t.get("gpu_ratio")?.as_f64()?,
+                    ))
+                })
+                .collect();
+            Some(GpuTimings {
+                adapter: json.get("adapter")?.as_str()?.to_string(),
+                file,
+                ratios,
+            })
+        })
+        .collect()
+}
+
 /// Spearman's ρ (Pearson correlation of the ranks, ties given their mean rank).
 pub fn spearman(pairs: &[(f64, f64)]) -> Option<f64> {
     if pairs.len() < 3 {

@@ -315,14 +315,43 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
         .collect();
     let rho =
         |p: &[(f64, f64)]| loop_report::spearman(p).map_or("–".into(), |r| format!("{r:.3}"));
+    let gpus: Vec<String> = loop_report::committed_gpu_timings(generated)
+        .iter()
+        .filter_map(|g| {
+            let pairs: Vec<(f64, f64)> = models
+                .iter()
+                .filter_map(|m| {
+                    let gpu = g.ratio(&m.material, &m.tier)?;
+                    Some((m.executed_cost / base.executed_cost, gpu))
+                })
+                .collect();
+            let statics: Vec<(f64, f64)> = models
+                .iter()
+                .filter_map(|m| Some((m.static_cost, g.ratio(&m.material, &m.tier)?)))
+                .collect();
+            Some(format!(
+                "{} (`generated/reports/{}`, {} pairs): executed cost ρ = {}, static cost ρ = {}",
+                g.adapter,
+                g.file,
+                pairs.len(),
+                rho(&pairs),
+                rho(&statics)
+            ))
+        })
+        .collect();
     let _ = writeln!(
         o,
         "\nSpearman rank correlation with llvmpipe over the {} material × tier pairs with both: \
-         executed cost ρ = {}, static cost ρ = {}. No GPU timings are committed, so there is no \
-         GPU comparison. Loops with an unknown trip count (counted once): {}.",
+         executed cost ρ = {}, static cost ρ = {}. With real GPUs' ratios (`cargo xtask bench \
+         gpu`): {}. Loops with an unknown trip count (counted once): {}.",
         pairs.len(),
         rho(&pairs),
         rho(&statics),
+        if gpus.is_empty() {
+            "none committed".into()
+        } else {
+            gpus.join("; ")
+        },
         if unknown.is_empty() {
             "none".into()
         } else {

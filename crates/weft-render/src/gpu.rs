@@ -3,6 +3,53 @@
 use crate::error::{Error, Result};
 use std::sync::{Arc, Mutex};
 
+/// The variable that picks the adapter [`Gpu::new`] uses: unset or empty,
+/// wgpu's default; `hardware`, the first adapter that is not a CPU
+/// rasteriser (discrete GPUs first); anything else, the first adapter whose
+/// name contains it (case-insensitive, e.g. `llvmpipe`, `nvidia`).
+pub const ADAPTER_VARIABLE: &str = "WEFT_ADAPTER";
+
+/// Which adapter to use (see [`ADAPTER_VARIABLE`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AdapterChoice {
+    Default,
+    Hardware,
+    NameContains(String),
+}
+
+impl AdapterChoice {
+    /// Reads a value of [`ADAPTER_VARIABLE`].
+    pub fn parse(value: &str) -> AdapterChoice {
+        match value.trim() {
+            "" => AdapterChoice::Default,
+            v if v.eq_ignore_ascii_case("hardware") => AdapterChoice::Hardware,
+            v => AdapterChoice::NameContains(v.to_lowercase()),
+        }
+    }
+
+    fn spelling(&self) -> &str {
+        match self {
+            AdapterChoice::Default => "",
+            AdapterChoice::Hardware => "hardware",
+            AdapterChoice::NameContains(s) => s,
+        }
+    }
+
+    /// The index of the chosen adapter in `adapters` (None: no match).
+    pub fn pick(&self, adapters: &[wgpu::AdapterInfo]) -> Option<usize> {
+        use wgpu::DeviceType as T;
+        match self {
+            AdapterChoice::Default => (!adapters.is_empty()).then_some(0),
+            AdapterChoice::Hardware => [T::DiscreteGpu, T::IntegratedGpu, T::VirtualGpu, T::Other]
+                .iter()
+                .find_map(|kind| adapters.iter().position(|a| a.device_type == *kind)),
+            AdapterChoice::NameContains(part) => adapters
+                .iter()
+                .position(|a| a.name.to_lowercase().contains(part.as_str())),
+        }
+    }
+}
+
 /// An adapter, device and queue on the Vulkan backend.
 pub struct Gpu {
     pub adapter: wgpu::Adapter,
@@ -18,26 +65,53 @@ impl Gpu {
         self.device.features().contains(wgpu::Features::SHADER_F16)
     }
 
-    /// Requests a Vulkan adapter and a device. Fails (never skips) with an
+    /// Requests a Vulkan adapter and a device: the one [`ADAPTER_VARIABLE`]
+    /// names, else wgpu's default choice. Fails (never skips) with an
     /// [`Error::NoAdapter`] that says to install `mesa-vulkan-drivers` when
     /// there is none.
     pub fn new() -> Result<Gpu> {
-        pollster::block_on(Gpu::new_async())
+        let choice = std::env::var(ADAPTER_VARIABLE).unwrap_or_default();
+        pollster::block_on(Gpu::new_async(AdapterChoice::parse(&choice)))
     }
 
-    async fn new_async() -> Result<Gpu> {
+    async fn new_async(choice: AdapterChoice) -> Result<Gpu> {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::VULKAN;
         let instance = wgpu::Instance::new(desc);
-        let adapter = instance
-            .request_adapter(&wgpu::RequestAdapterOptions {
-                power_preference: wgpu::PowerPreference::None,
-                force_fallback_adapter: false,
-                compatible_surface: None,
-                apply_limit_buckets: false,
-            })
-            .await
-            .map_err(|e| Error::NoAdapter(e.to_string()))?;
+        let adapter = match &choice {
+            AdapterChoice::Default => instance
+                .request_adapter(&wgpu::RequestAdapterOptions {
+                    power_preference: wgpu::PowerPreference::None,
+                    force_fallback_adapter: false,
+                    compatible_surface: None,
+                    apply_limit_buckets: false,
+                })
+                .await
+                .map_err(|e| Error::NoAdapter(e.to_string()))?,
+            _ => {
+                let adapters = instance.enumerate_adapters(wgpu::Backends::VULKAN).await;
+                let infos: Vec<wgpu::AdapterInfo> = adapters.iter().map(|a| a.get_info()).collect();
+                let index = choice.pick(&infos).ok_or_else(|| {
+                    let found: Vec<String> = infos
+                        .iter()
+                        .map(|i| format!("{} ({:?})", i.name, i.device_type))
+                        .collect();
+                    Error::NoAdapter(format!(
+                        "{ADAPTER_VARIABLE}={} matches none of the Vulkan adapters found: {}",
+                        choice.spelling(),
+                        if found.is_empty() {
+                            "none".to_string()
+                        } else {
+                            found.join(", ")
+                        }
+                    ))
+                })?;
+                adapters
+                    .into_iter()
+                    .nth(index)
+                    .expect("pick returns an index into the list")
+            }
+        };
         let info = adapter.get_info();
         // Blending into an Rgba32Float target needs FLOAT32_BLENDABLE;
         // `Renderer::time_frames` uses TIMESTAMP_QUERY when the adapter has it;
@@ -219,5 +293,38 @@ impl Gpu {
         };
         staging.unmap();
         Ok(bytes)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn info(name: &str, device_type: wgpu::DeviceType) -> wgpu::AdapterInfo {
+        wgpu::AdapterInfo {
+            name: name.into(),
+            ..wgpu::AdapterInfo::new(device_type, wgpu::Backend::Vulkan)
+        }
+    }
+
+    #[test]
+    fn hardware_skips_cpu_rasterisers_and_prefers_discrete_gpus() {
+        use wgpu::DeviceType as T;
+        let found = [
+            info("llvmpipe (LLVM 15.0.6, 256 bits)", T::Cpu),
+            info("Intel(R) UHD Graphics 630", T::IntegratedGpu),
+            info("NVIDIA H100 80GB HBM3", T::DiscreteGpu),
+        ];
+        assert_eq!(AdapterChoice::parse("hardware").pick(&found), Some(2));
+        assert_eq!(
+            AdapterChoice::parse(" HARDWARE ").pick(&found[..2]),
+            Some(1)
+        );
+        assert_eq!(AdapterChoice::parse("hardware").pick(&found[..1]), None);
+        assert_eq!(AdapterChoice::parse("LLVMpipe").pick(&found), Some(0));
+        assert_eq!(AdapterChoice::parse("nvidia").pick(&found), Some(2));
+        assert_eq!(AdapterChoice::parse("radeon").pick(&found), None);
+        assert_eq!(AdapterChoice::parse("").pick(&found), Some(0));
+        assert_eq!(AdapterChoice::parse(""), AdapterChoice::Default);
     }
 }

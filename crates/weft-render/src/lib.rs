@@ -70,7 +70,7 @@ pub use environment::{
     sh_basis, texel_solid_angle,
 };
 pub use error::{Error, NO_ADAPTER_HINT, Result};
-pub use gpu::Gpu;
+pub use gpu::{ADAPTER_VARIABLE, AdapterChoice, Gpu};
 pub use image::{HdrImage, MAX_TEXTURE_SIZE, Tonemap, decode_png, encode_png, encode_srgb};
 pub use luts::{BrdfLut, Luts, SHEEN_LUT_FILE, SPLIT_SUM_LUT_FILE, SheenLut};
 pub use material::{Material, ResolvedVariant};
