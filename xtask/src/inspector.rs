@@ -1,4 +1,4 @@
-//! `cargo xtask inspector`: screenshots of the live inspector (`weft serve`)
+//! `cargo xtask-screenshots inspector` (xtask's `screenshots` feature): screenshots of the live inspector (`weft serve`)
 //! for the README — one material in English, one in Chinese — taken in
 //! headless Chromium (WebGPU on SwiftShader, as tests/inspector.rs runs it)
 //! and written to docs/inspector/.
