@@ -99,7 +99,7 @@ fn run(root: &Path, args: &GpuArgs) -> Result<(), String> {
         unsafe { std::env::set_var(var, "hardware") };
     }
     let generated = root.join("generated");
-    let model = ModelSummary::load(&generated).map_err(|e| e.to_string())?;
+    let model = ModelSummary::load(&generated.join("reports"))?;
     let started = Instant::now();
     let options = ShadingOptions {
         size: args.size,

@@ -82,7 +82,7 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
     let md = weft_gpu_stats::report::markdown(&root.join("generated"), &stats, &command)
         .map_err(|e| e.to_string())?;
     // Before the disassembly is dropped or moved out: the model reads it.
-    let summary = weft_gpu_stats::ModelSummary::new(&root.join("generated"), &stats, &command)
+    let summary = weft_gpu_stats::summarize(&root.join("generated"), &stats, &command)
         .map_err(|e| e.to_string())?;
     match &args.disassembly {
         Some(dir) => write_disassembly(dir, &mut stats)?,

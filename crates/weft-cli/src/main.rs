@@ -76,7 +76,8 @@ enum Command {
         #[arg(long, conflicts_with = "paths")]
         scene: Option<PathBuf>,
         /// With --scene: per-tier costs measured on your own GPU (JSON, see docs/scenes.md)
-        /// for `tier = "auto"` instead of the committed lavapipe bench figures.
+        /// for `tier = "auto"` instead of the committed GPU model
+        /// (generated/reports/gpu-model.json).
         #[arg(long, requires = "scene")]
         tier_costs: Option<PathBuf>,
         /// Seconds to wait for another build writing into the same output folder

@@ -9,8 +9,10 @@
 //! drawn black/zero, as `weft_render::SceneLighting` does). Each tier's error
 //! is the FLIP mean over object pixels against the reference tier
 //! ([`crate::shading::image_error`], as the bench measures it). Costs come
-//! from the committed bench reports (`generated/reports/<m>.measurements.json`,
-//! `ratio_to_standard_fast`) or from a user file (`--tier-costs`). The choice
+//! from the committed GPU model (`generated/reports/gpu-model.json`: AMD's
+//! compiler on Mesa RADV's null device, the executed cost of the candidate's
+//! variant on the scene's `gpu_family`, ÷ `standard` `fast`), so a choice
+//! depends on no machine's load, or from a user file (`--tier-costs`). The choice
 //! is the cheapest tier within the error budget; ties in cost go to the more
 //! accurate tier. FLIP is rounded to 4 decimals and costs to 3 before they
 //! are compared and recorded, so the decision and the record are byte-stable.
@@ -27,11 +29,12 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, PoisonError};
 use weft_compiler::scene::{AutoTierDecision, AutoTierRequest, TierChooser};
+use weft_meta::gpu_model::ModelSummary;
 use weft_meta::scene::{
     SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneMetadata, SceneTransform,
-    TierCandidate, TierChoice,
+    TierCandidate, TierChoice, TierGpuFigures,
 };
-use weft_meta::{MaterialMetadata, Measurements, Variant};
+use weft_meta::{MaterialMetadata, Variant};
 use weft_render::{
     Background, EnvironmentMaps, HdrImage, Luts, PreviewOptions, RenderOptions, Renderer, Scene,
     SceneFile, SceneKind, SceneShaders,
@@ -48,8 +51,9 @@ const MAX_SCREEN_SIZE: u32 = 8192;
 
 /// Where costs come from.
 enum Costs {
-    /// `<reports_dir>/<material>.measurements.json`, `ratio_to_standard_fast`.
-    Reports,
+    /// The GPU model, `<reports_dir>/gpu-model.json`: the executed cost of
+    /// the variant each tier's candidate is, for the scene's GPU family.
+    GpuModel,
     /// A `--tier-costs` file: material -> tier -> cost.
     File {
         path: PathBuf,
@@ -73,15 +77,24 @@ struct GpuState {
 pub struct LavapipeTierChooser {
     costs: Costs,
     reports_dir: PathBuf,
+    /// `gpu-model.json`, read on the first request that needs it.
+    model: std::sync::OnceLock<Result<ModelSummary, String>>,
     gpu: Mutex<Option<GpuState>>,
+}
+
+/// Each candidate's cost (and GPU figures), the source, the family.
+struct Costed {
+    costs: Vec<(f64, Option<TierGpuFigures>)>,
+    source: String,
+    family: Option<String>,
 }
 
 impl LavapipeTierChooser {
     /// `tier_costs`: optional JSON file of user-measured costs `{ "<material>": { "<tier>": <cost>, ... }, ... }` (any unit, only ratios within a material matter).
-    /// Without it, costs come from the committed bench reports `generated/reports/<material>.measurements.json` (field `tiers[].ratio_to_standard_fast`, written by `cargo xtask bench shading`), looked up in `reports_dir` (default: "generated/reports" relative to the current directory).
+    /// Without it, costs come from the committed GPU model `generated/reports/gpu-model.json` (AMD's shader compiler on Mesa RADV's null device, written by `cargo xtask bench gpu-model --write`): the executed cost of each candidate variant on the scene's `gpu_family`, as a ratio to `standard` `fast`; looked up in `reports_dir` (default: "generated/reports" relative to the current directory).
     pub fn new(tier_costs: Option<&Path>) -> Result<Self, String> {
         let costs = match tier_costs {
-            None => Costs::Reports,
+            None => Costs::GpuModel,
             Some(path) => Costs::File {
                 path: path.to_path_buf(),
                 costs: read_costs_file(path)?,
@@ -90,6 +103,7 @@ impl LavapipeTierChooser {
         Ok(LavapipeTierChooser {
             costs,
             reports_dir: PathBuf::from(DEFAULT_REPORTS_DIR),
+            model: std::sync::OnceLock::new(),
             gpu: Mutex::new(None),
         })
     }
@@ -100,8 +114,14 @@ impl LavapipeTierChooser {
         self
     }
 
-    /// The cost of every tier in `tiers` (rounded) and where they came from.
-    fn costs(&self, meta: &MaterialMetadata, tiers: &[&str]) -> Result<(Vec<f64>, String), String> {
+    /// The cost of every candidate variant (rounded), with the GPU model's
+    /// figures when they are the source, where they came from and the family.
+    fn costs(
+        &self,
+        meta: &MaterialMetadata,
+        variants: &[&Variant],
+        family: &str,
+    ) -> Result<Costed, String> {
         let name = &meta.name;
         match &self.costs {
             Costs::File { path, costs } => {
@@ -110,18 +130,19 @@ impl LavapipeTierChooser {
                     format!(
                         "the tier costs file {shown} has no entry for material `{name}`: add \
                          `\"{name}\": {{ {} }}` with costs measured on your target (only ratios \
-                         within a material matter), or leave out --tier-costs to use the bench \
-                         report written by `cargo xtask bench shading`",
-                        tiers
+                         within a material matter), or leave out --tier-costs to use the GPU \
+                         model written by `cargo xtask bench gpu-model --write`",
+                        variants
                             .iter()
-                            .map(|t| format!("\"{t}\": <cost>"))
+                            .map(|v| format!("\"{}\": <cost>", v.tier))
                             .collect::<Vec<_>>()
                             .join(", ")
                     )
                 })?;
                 let mut out = Vec::new();
-                for tier in tiers {
-                    let cost = *per_tier.get(*tier).ok_or_else(|| {
+                for v in variants {
+                    let tier = &v.tier;
+                    let cost = *per_tier.get(tier).ok_or_else(|| {
                         format!(
                             "the tier costs file {shown} has no cost for tier `{tier}` of material \
                              `{name}` (it lists: {}): add `\"{tier}\": <cost>` to `\"{name}\"` in it",
@@ -129,65 +150,72 @@ impl LavapipeTierChooser {
                         )
                     })?;
                     check_cost(cost, || format!("{shown}: `{name}`.`{tier}`"))?;
-                    out.push(round(cost, COST_DECIMALS));
+                    out.push((round(cost, COST_DECIMALS), None));
                 }
-                Ok((out, format!("--tier-costs {shown}")))
+                Ok(Costed {
+                    costs: out,
+                    source: format!("--tier-costs {shown}"),
+                    family: None,
+                })
             }
-            Costs::Reports => {
-                let path = self.reports_dir.join(format!("{name}.measurements.json"));
-                let rerun = "run `cargo xtask bench shading --write` (or `cargo xtask regenerate \
-                             --reports`) to measure it, or give measured costs with --tier-costs \
-                             <file.json>";
-                let bytes = std::fs::read(&path).map_err(|e| {
+            Costs::GpuModel => {
+                let shown = model_path_for_record(&self.reports_dir);
+                let rerun = "run `cargo xtask bench gpu-model --write` to model it (needs \
+                             `mesa-vulkan-drivers`, no GPU), or give measured costs with \
+                             --tier-costs <file.json>";
+                let model = self.model()?;
+                let fam = model.family(family).ok_or_else(|| {
                     format!(
-                        "no bench report for material `{name}`: cannot read {} ({e}); {rerun}",
-                        path.display()
+                        "the GPU model {shown} has no family `{family}` (it has: {}); {rerun}",
+                        join_or_none(model.families.iter().map(|f| &f.family))
                     )
                 })?;
-                let report: Measurements = serde_json::from_slice(&bytes).map_err(|e| {
-                    format!("{} is not a bench report ({e}); {rerun}", path.display())
-                })?;
                 let mut out = Vec::new();
-                for tier in tiers {
-                    let m = report
-                        .tiers
-                        .iter()
-                        .find(|t| t.tier == *tier)
-                        .ok_or_else(|| {
-                            format!(
-                                "the bench report {} has no tier `{tier}` of material `{name}` (it \
-                             measured: {}); {rerun}",
-                                path.display(),
-                                join_or_none(report.tiers.iter().map(|t| &t.tier))
-                            )
-                        })?;
-                    let cost = m.ratio_to_standard_fast.ok_or_else(|| {
+                for v in variants {
+                    // An alias draws its target's shader.
+                    let id = meta.resolve_variant(&v.id).map_or(&v.id, |c| &c.id);
+                    let c = fam.variant(name, id).ok_or_else(|| {
                         format!(
-                            "the bench report {} has no `ratio_to_standard_fast` for tier `{tier}` \
-                             of material `{name}` (the run did not measure `standard` tier `fast`); \
-                             {rerun}",
-                            path.display()
+                            "the GPU model {shown} has no figures for variant `{id}` (tier `{}`) of \
+                             material `{name}` on `{family}`; {rerun}",
+                            v.tier
                         )
                     })?;
-                    check_cost(cost, || format!("{}: tier `{tier}`", path.display()))?;
-                    out.push(round(cost, COST_DECIMALS));
+                    check_cost(c.executed_ratio, || {
+                        format!("{shown}: `{name}` variant `{id}` on `{family}`")
+                    })?;
+                    out.push((
+                        round(c.executed_ratio, COST_DECIMALS),
+                        Some(TierGpuFigures {
+                            instructions: c.fragment.instructions,
+                            vgprs: c.fragment.vgprs,
+                            waves: c.fragment.waves,
+                            executed_cost: c.fragment.executed_cost,
+                        }),
+                    ));
                 }
-                let adapter = if report.adapter.contains("llvmpipe") {
-                    "lavapipe".to_string()
-                } else {
-                    report.adapter.clone()
-                };
-                // A report measured on an earlier version of the material
-                // (`inputs_hash`) is still used: cost ratios between tiers
-                // move little with an edit, and reports are refreshed apart
-                // from builds because timings depend on the machine.
-                let source = format!(
-                    "bench report {} ({adapter})",
-                    report_path_for_record(&self.reports_dir, name)
-                );
-                Ok((out, source))
+                // A model written from an earlier version of the material is
+                // still used (its variant ids must match): cost ratios move
+                // little with an edit, and `bench gpu-model` is run apart from
+                // builds.
+                Ok(Costed {
+                    costs: out,
+                    source: format!(
+                        "GPU model {shown}: {family} ({}, {}), executed cost ÷ standard fast",
+                        fam.device_name, fam.driver_info
+                    ),
+                    family: Some(family.to_string()),
+                })
             }
         }
+    }
+
+    /// The GPU model, read once.
+    fn model(&self) -> Result<&ModelSummary, String> {
+        self.model
+            .get_or_init(|| ModelSummary::load(&self.reports_dir))
+            .as_ref()
+            .map_err(Clone::clone)
     }
 
     /// The image of `tier` for the request, rendered or from the cache.
@@ -299,9 +327,13 @@ impl TierChooser for LavapipeTierChooser {
                 describe_keywords(&request.keywords)
             ));
         }
-        // Costs first: a missing report fails before anything is rendered.
-        let names: Vec<&str> = tiers.iter().map(|(_, v)| v.tier.as_str()).collect();
-        let (costs, cost_source) = self.costs(meta, &names)?;
+        // Costs first: a missing model fails before anything is rendered.
+        let variants: Vec<&Variant> = tiers.iter().map(|(_, v)| *v).collect();
+        let Costed {
+            costs,
+            source: cost_source,
+            family: gpu_family,
+        } = self.costs(meta, &variants, request.gpu_family)?;
 
         let mut guard = self.gpu.lock().unwrap_or_else(PoisonError::into_inner);
         if guard.is_none() {
@@ -315,7 +347,7 @@ impl TierChooser for LavapipeTierChooser {
             .expect("checked above");
         let reference_image = self.image(state, request, reference_variant, kind)?;
         let mut ranked = Vec::new();
-        for ((index, variant), cost) in tiers.iter().zip(costs) {
+        for ((index, variant), (cost, gpu)) in tiers.iter().zip(costs) {
             let flip_mean = if &variant.tier == reference {
                 0.0
             } else {
@@ -331,6 +363,7 @@ impl TierChooser for LavapipeTierChooser {
                 TierCandidate {
                     tier: variant.tier.clone(),
                     cost,
+                    gpu,
                     flip_mean,
                     within_budget,
                 },
@@ -356,6 +389,7 @@ impl TierChooser for LavapipeTierChooser {
                 error_budget: request.error_budget,
                 screen_size: request.screen_size,
                 cost_source,
+                gpu_family,
                 candidates,
             },
         })
@@ -598,11 +632,11 @@ fn check_cost(cost: f64, what: impl FnOnce() -> String) -> Result<(), String> {
     }
 }
 
-/// The report path as recorded: `generated/reports/<m>.measurements.json`
+/// The model's path as recorded: `generated/reports/gpu-model.json`
 /// when the folder is a project's `generated/reports` (wherever the project
 /// is), else relative to the current directory when under it.
-fn report_path_for_record(reports_dir: &Path, material: &str) -> String {
-    let file = format!("{material}.measurements.json");
+fn model_path_for_record(reports_dir: &Path) -> String {
+    let file = weft_meta::gpu_model::FILE_NAME;
     if reports_dir.ends_with(DEFAULT_REPORTS_DIR) {
         return format!("{DEFAULT_REPORTS_DIR}/{file}");
     }
@@ -638,6 +672,7 @@ mod tests {
         TierCandidate {
             tier: tier.into(),
             cost,
+            gpu: None,
             flip_mean,
             within_budget: flip_mean <= 0.05,
         }
@@ -648,7 +683,8 @@ mod tests {
         let choice = TierChoice {
             error_budget: 0.05,
             screen_size: 128,
-            cost_source: "bench report generated/reports/silk.measurements.json (lavapipe)".into(),
+            cost_source: "--tier-costs costs.json".into(),
+            gpu_family: None,
             candidates: vec![
                 candidate("fast", 1.086, 0.0312),
                 candidate("reference", 1.178, 0.0),
@@ -671,14 +707,14 @@ mod tests {
     }
 
     #[test]
-    fn a_project_report_is_recorded_without_its_location() {
+    fn a_project_model_is_recorded_without_its_location() {
         assert_eq!(
-            report_path_for_record(Path::new("/somewhere/else/generated/reports"), "silk"),
-            "generated/reports/silk.measurements.json"
+            model_path_for_record(Path::new("/somewhere/else/generated/reports")),
+            "generated/reports/gpu-model.json"
         );
         assert_eq!(
-            report_path_for_record(Path::new("generated/reports"), "silk"),
-            "generated/reports/silk.measurements.json"
+            model_path_for_record(Path::new("generated/reports")),
+            "generated/reports/gpu-model.json"
         );
     }
 }

@@ -12,7 +12,8 @@ use std::sync::OnceLock;
 use weft_compiler::library::CompiledMaterial;
 use weft_compiler::scene::{AutoTierDecision, AutoTierRequest, TierChooser};
 use weft_golden::auto_tier::{LavapipeTierChooser, describe_choice};
-use weft_meta::{MaterialMetadata, Measurements, ParamKind};
+use weft_meta::gpu_model::ModelSummary;
+use weft_meta::{MaterialMetadata, ParamKind};
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -52,7 +53,7 @@ fn silk() -> &'static CompiledMaterial {
     SILK.get_or_init(|| build("silk"))
 }
 
-/// One chooser on the committed bench reports, shared so renders are cached across tests.
+/// One chooser on the committed GPU model, shared so renders are cached across tests.
 fn report_chooser() -> &'static LavapipeTierChooser {
     static CHOOSER: OnceLock<LavapipeTierChooser> = OnceLock::new();
     CHOOSER.get_or_init(|| {
@@ -113,6 +114,7 @@ fn request<'a>(
         features: Default::default(),
         error_budget,
         screen_size,
+        gpu_family: "navi21",
     }
 }
 
@@ -122,27 +124,29 @@ fn choose(chooser: &LavapipeTierChooser, r: &AutoTierRequest) -> AutoTierDecisio
         .unwrap_or_else(|e| panic!("choosing the tier of `{}`: {e}", r.instance))
 }
 
-fn report_costs(material: &str) -> BTreeMap<String, f64> {
-    let path = reports_dir().join(format!("{material}.measurements.json"));
-    let m: Measurements = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
-    m.tiers
+/// Each tier's cost (not looks) by the committed GPU model on `family`, at
+/// the material's default keywords (what `request` asks for), rounded as the
+/// chooser rounds. Read here from the file, not through the chooser.
+fn model_costs(material: &str, family: &str) -> BTreeMap<String, f64> {
+    let model = ModelSummary::load(&reports_dir()).unwrap();
+    let meta = &silk().0;
+    assert_eq!(material, meta.name);
+    model
+        .family(family)
+        .unwrap()
+        .tiers
         .iter()
-        // Looks are never candidates: a different model is chosen by name.
-        .filter(|t| t.kind.as_deref() != Some("look"))
-        .map(|t| {
-            let c = t.ratio_to_standard_fast.unwrap();
-            (t.tier.clone(), (c * 1e3).round() / 1e3)
-        })
+        .filter(|t| t.material == material && !meta.tiers.looks.contains(&t.tier))
+        .map(|t| (t.tier.clone(), (t.executed_ratio * 1e3).round() / 1e3))
         .collect()
 }
 
-/// The tier a budget that admits every silk tier gets by the committed
-/// report: the cheapest, a tie going to the reference (the more accurate;
-/// silk's other tiers differ from it at the defaults). The figures come
-/// from a timed run, so which of silk's close tiers is cheapest is the
-/// report's to say, not this test's.
+/// The tier a budget that admits every silk tier gets by the committed GPU
+/// model: the cheapest, a tie going to the reference (the more accurate;
+/// silk's other tiers differ from it at the defaults). Which of silk's close
+/// tiers is cheapest is the model's to say, not this test's.
 fn silk_cheapest_by_report() -> (String, BTreeMap<String, f64>) {
-    let costs = report_costs("silk");
+    let costs = model_costs("silk", "navi21");
     let tier = costs
         .iter()
         .min_by(|a, b| {
@@ -229,12 +233,41 @@ fn a_huge_budget_picks_the_cheapest_tier() {
     assert_eq!(d.tier, cheapest);
     assert_eq!(d.record.candidates[0].tier, cheapest);
     for c in &d.record.candidates {
-        assert_eq!(c.cost, costs[&c.tier], "costs come from the bench report");
+        assert_eq!(c.cost, costs[&c.tier], "costs come from the GPU model");
         assert!(c.within_budget);
+        let gpu = c.gpu.as_ref().expect("the model's figures are recorded");
+        assert!(
+            gpu.instructions > 0 && gpu.vgprs > 0 && gpu.waves > 0,
+            "{c:?}"
+        );
+        assert!(gpu.executed_cost > 0.0, "{c:?}");
     }
-    assert_eq!(
-        d.record.cost_source,
-        "bench report generated/reports/silk.measurements.json (lavapipe)"
+    assert!(
+        d.record.cost_source.starts_with(
+            "GPU model generated/reports/gpu-model.json: navi21 (Null hardware (RADV NAVI21), Mesa "
+        ),
+        "{}",
+        d.record.cost_source
+    );
+    assert_eq!(d.record.gpu_family.as_deref(), Some("navi21"));
+    // The scene's family picks the figures.
+    let mut rdna3 = clone(&r);
+    rdna3.gpu_family = "gfx1100";
+    let d3 = choose(report_chooser(), &rdna3);
+    let costs3 = model_costs("silk", "gfx1100");
+    for c in &d3.record.candidates {
+        assert_eq!(c.cost, costs3[&c.tier], "{c:?}");
+    }
+    assert_eq!(d3.record.gpu_family.as_deref(), Some("gfx1100"));
+    let mut unknown = clone(&r);
+    unknown.gpu_family = "navi99";
+    let e = report_chooser()
+        .choose(&unknown)
+        .err()
+        .expect("no such family");
+    assert!(
+        e.contains("no family `navi99`") && e.contains("navi21"),
+        "{e}"
     );
     let fast = d
         .record
@@ -378,6 +411,7 @@ fn clone<'a>(r: &AutoTierRequest<'a>) -> AutoTierRequest<'a> {
         features: r.features,
         error_budget: r.error_budget,
         screen_size: r.screen_size,
+        gpu_family: r.gpu_family,
     }
 }
 
@@ -442,7 +476,7 @@ fn missing_costs_are_clear_errors() {
     let r = request(silk, "sphere", 0.05, 64);
     let dir = tempfile::tempdir().unwrap();
 
-    // No report for the material.
+    // No GPU model.
     let empty = dir.path().join("reports");
     std::fs::create_dir_all(&empty).unwrap();
     let e = LavapipeTierChooser::new(None)
@@ -450,33 +484,33 @@ fn missing_costs_are_clear_errors() {
         .with_reports_dir(empty.clone())
         .choose(&r)
         .err()
-        .expect("no report, no choice");
+        .expect("no model, no choice");
     assert!(
-        e.contains(&empty.join("silk.measurements.json").display().to_string()),
+        e.contains(&empty.join("gpu-model.json").display().to_string()),
         "{e}"
     );
-    assert!(e.contains("cargo xtask bench shading"), "{e}");
-    assert!(e.contains("--tier-costs"), "{e}");
+    assert!(e.contains("cargo xtask bench gpu-model --write"), "{e}");
 
-    // A report without one of the tiers.
-    let mut report: Measurements = serde_json::from_slice(
-        &std::fs::read(reports_dir().join("silk.measurements.json")).unwrap(),
-    )
-    .unwrap();
-    report.tiers.retain(|t| t.tier != "fast");
-    std::fs::write(
-        empty.join("silk.measurements.json"),
-        serde_json::to_string(&report).unwrap(),
-    )
-    .unwrap();
+    // A model without the variant one tier's candidate is.
+    let mut model = ModelSummary::load(&reports_dir()).unwrap();
+    for f in &mut model.families {
+        f.variants
+            .retain(|v| !(v.material == "silk" && v.tier == "fast"));
+    }
+    std::fs::write(empty.join("gpu-model.json"), model.to_json()).unwrap();
     let e = LavapipeTierChooser::new(None)
         .unwrap()
         .with_reports_dir(empty.clone())
         .choose(&r)
         .err()
-        .expect("tier missing from the report");
-    assert!(e.contains("no tier `fast`"), "{e}");
-    assert!(e.contains("cargo xtask bench shading"), "{e}");
+        .expect("variant missing from the model");
+    assert!(e.contains("no figures for variant `fast."), "{e}");
+    assert!(
+        e.contains("(tier `fast`) of material `silk` on `navi21`"),
+        "{e}"
+    );
+    assert!(e.contains("cargo xtask bench gpu-model --write"), "{e}");
+    assert!(e.contains("--tier-costs"), "{e}");
 
     // A costs file without the material, or without one of its tiers.
     let costs = dir.path().join("costs.json");
@@ -488,7 +522,7 @@ fn missing_costs_are_clear_errors() {
         .expect("material missing from the costs file");
     assert!(e.contains(&costs.display().to_string()), "{e}");
     assert!(e.contains("no entry for material `silk`"), "{e}");
-    assert!(e.contains("cargo xtask bench shading"), "{e}");
+    assert!(e.contains("cargo xtask bench gpu-model"), "{e}");
     std::fs::write(&costs, r#"{ "silk": { "fast": 1 } }"#).unwrap();
     let e = LavapipeTierChooser::new(Some(&costs))
         .unwrap()

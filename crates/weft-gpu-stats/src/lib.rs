@@ -25,7 +25,9 @@ pub mod worker;
 pub use error::{Error, RADV_PACKAGE, Result};
 pub use jobs::Selection;
 pub use record::{FamilyStats, PipelineSource, PipelineStats, StageStats, StatValue, Statistic};
-pub use summary::{FamilySummary, FragmentCost, ModelSummary, SceneShaderCost, TierCost};
+pub use summary::{
+    FamilySummary, FragmentCost, ModelSummary, SceneShaderCost, TierCost, VariantCost, summarize,
+};
 pub use worker::WorkerCommand;
 
 use std::path::PathBuf;

@@ -1,201 +1,129 @@
-//! The compact, committed form of the GPU model:
-//! `generated/reports/gpu-model.json`, written by `cargo xtask bench
-//! gpu-model --write` beside the markdown report. Everything that uses GPU
-//! cost without compiling (the real-GPU bench's predictions, the docs'
-//! columns) reads this file, so it needs no RADV. Per family: each
-//! material × tier (its default keyword values, f32 files) and each scene
-//! shader beside the generic variant it specialises, fragment stage.
+//! Builds the GPU model's compact form ([`weft_meta::gpu_model`],
+//! `generated/reports/gpu-model.json`) from figures captured with their
+//! disassembly: per family each material × tier (its default keyword values,
+//! f32 files), each canonical library variant and each scene shader beside
+//! the generic variant it specialises, fragment stage.
 
 use crate::error::{Error, Result};
 use crate::loop_report;
 use crate::record::{FamilyStats, PipelineStats};
 use crate::report::{INSTRUCTIONS, VGPRS, WAVES};
-use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
 use weft_meta::MaterialMetadata;
+pub use weft_meta::gpu_model::{
+    FILE_NAME, FamilySummary, FragmentCost, ModelSummary, SceneShaderCost, TierCost, VariantCost,
+};
 
-/// The file name under `generated/reports/`.
-pub const FILE_NAME: &str = "gpu-model.json";
-
-/// The whole summary.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ModelSummary {
-    /// The command that wrote it.
-    pub command: String,
-    /// One entry per family, in the order compiled.
-    pub families: Vec<FamilySummary>,
-}
-
-/// One family's figures.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct FamilySummary {
-    /// The `RADV_FORCE_FAMILY` value.
-    pub family: String,
-    /// The Vulkan device name the driver reported.
-    pub device_name: String,
-    /// The driver's version string.
-    pub driver_info: String,
-    /// Each material × tier, materials by name, tiers in the material's order.
-    pub tiers: Vec<TierCost>,
-    /// Each scene shader × pass, in the order compiled.
-    pub scene_shaders: Vec<SceneShaderCost>,
-}
-
-/// The fragment figures a pipeline (or a tier's passes together) gives.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct FragmentCost {
-    /// ACO's instruction count (summed over passes).
-    pub instructions: u64,
-    /// Vector registers per lane (the most of any pass).
-    pub vgprs: u64,
-    /// Waves per SIMD (the fewest of any pass).
-    pub waves: u64,
-    /// Loop-aware model: Σ block cost, each block once.
-    pub static_cost: f64,
-    /// Loop-aware model: Σ block cost × executions (the figure to compare).
-    pub executed_cost: f64,
-    /// Loops counted once for want of a trip count.
-    pub unknown_loops: u64,
-}
-
-/// A material × tier.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct TierCost {
-    pub material: String,
-    pub tier: String,
-    /// The variant of the default keyword values.
-    pub variant: String,
-    /// The fragment stages of the variant's passes together.
-    pub fragment: FragmentCost,
-    /// `executed_cost` divided by `standard` `fast`'s.
-    pub executed_ratio: f64,
-}
-
-/// A scene shader beside its generic variant.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SceneShaderCost {
-    pub scene: String,
-    /// `<material>.<hash>`.
-    pub shader: String,
-    pub material: String,
-    /// The library variant it specialises.
-    pub variant: String,
-    pub pass: String,
-    pub specialised: FragmentCost,
-    pub generic: FragmentCost,
-}
-
-impl ModelSummary {
-    /// Builds the summary from figures captured with their disassembly.
-    pub fn new(generated: &Path, families: &[FamilyStats], command: &str) -> Result<ModelSummary> {
-        let mut out = Vec::new();
-        for f in families {
-            let models = crate::report::tier_models(generated, f)?;
-            let base = models
+/// Builds the summary from figures captured with their disassembly.
+pub fn summarize(
+    generated: &Path,
+    families: &[FamilyStats],
+    command: &str,
+) -> Result<ModelSummary> {
+    let mut out = Vec::new();
+    for f in families {
+        let models = crate::report::tier_models(generated, f)?;
+        let base = models
+            .iter()
+            .find(|m| m.material == "standard" && m.tier == "fast")
+            .map(|m| m.executed_cost)
+            .filter(|c| *c > 0.0);
+        let entries = fragment_entries(generated, f)?;
+        let pipeline = |material: &str, variant: &str, pass: &str| {
+            f.pipelines.iter().find(|p| {
+                p.source.kind == "material"
+                    && p.source.material == material
+                    && p.source.variant == variant
+                    && p.source.precision == "f32"
+                    && p.pass == pass
+            })
+        };
+        let cost_of = |p: &PipelineStats| -> Option<FragmentCost> {
+            let entry = entries.get(&(p.source.material.clone(), p.pass.clone()))?;
+            fragment_cost(generated, p, entry)
+        };
+        let mut tiers = Vec::new();
+        for m in &models {
+            let meta = read_meta(generated, &m.material)?;
+            let passes = meta
+                .resolve_variant(&m.variant)
+                .map(|v| v.passes.clone())
+                .unwrap_or_default();
+            let costs: Option<Vec<FragmentCost>> = passes
                 .iter()
-                .find(|m| m.material == "standard" && m.tier == "fast")
-                .map(|m| m.executed_cost)
-                .filter(|c| *c > 0.0);
-            let entries = fragment_entries(generated, f)?;
-            let pipeline = |material: &str, variant: &str, pass: &str| {
-                f.pipelines.iter().find(|p| {
-                    p.source.kind == "material"
-                        && p.source.material == material
-                        && p.source.variant == variant
-                        && p.source.precision == "f32"
-                        && p.pass == pass
-                })
+                .map(|pass| pipeline(&m.material, &m.variant, pass).and_then(cost_of))
+                .collect();
+            let Some(fragment) = costs.and_then(|c| combine(&c)) else {
+                continue;
             };
-            let cost_of = |p: &PipelineStats| -> Option<FragmentCost> {
-                let entry = entries.get(&(p.source.material.clone(), p.pass.clone()))?;
-                fragment_cost(generated, p, entry)
-            };
-            let mut tiers = Vec::new();
-            for m in &models {
-                let meta = read_meta(generated, &m.material)?;
-                let passes = meta
-                    .resolve_variant(&m.variant)
-                    .map(|v| v.passes.clone())
-                    .unwrap_or_default();
-                let costs: Option<Vec<FragmentCost>> = passes
+            tiers.push(TierCost {
+                material: m.material.clone(),
+                tier: m.tier.clone(),
+                variant: m.variant.clone(),
+                executed_ratio: base.map_or(0.0, |b| round(fragment.executed_cost / b)),
+                fragment,
+            });
+        }
+        let mut variants = Vec::new();
+        let mut materials: Vec<&str> = f
+            .pipelines
+            .iter()
+            .filter(|p| p.source.kind == "material")
+            .map(|p| p.source.material.as_str())
+            .collect();
+        materials.sort();
+        materials.dedup();
+        for material in materials {
+            let meta = read_meta(generated, material)?;
+            for v in meta.variants.iter().filter(|v| v.alias_of.is_none()) {
+                let costs: Option<Vec<FragmentCost>> = v
+                    .passes
                     .iter()
-                    .map(|pass| pipeline(&m.material, &m.variant, pass).and_then(cost_of))
+                    .map(|pass| pipeline(material, &v.id, pass).and_then(cost_of))
                     .collect();
                 let Some(fragment) = costs.and_then(|c| combine(&c)) else {
                     continue;
                 };
-                tiers.push(TierCost {
-                    material: m.material.clone(),
-                    tier: m.tier.clone(),
-                    variant: m.variant.clone(),
+                variants.push(VariantCost {
+                    material: material.into(),
+                    variant: v.id.clone(),
+                    tier: v.tier.clone(),
                     executed_ratio: base.map_or(0.0, |b| round(fragment.executed_cost / b)),
                     fragment,
                 });
             }
-            let mut scene_shaders = Vec::new();
-            for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
-                let s = &p.source;
-                let generic = pipeline(&s.material, &s.variant, &p.pass).and_then(cost_of);
-                let (Some(specialised), Some(generic)) = (cost_of(p), generic) else {
-                    continue;
-                };
-                scene_shaders.push(SceneShaderCost {
-                    scene: s.scene.clone().unwrap_or_default(),
-                    shader: s.shader.clone().unwrap_or_default(),
-                    material: s.material.clone(),
-                    variant: s.variant.clone(),
-                    pass: p.pass.clone(),
-                    specialised,
-                    generic,
-                });
-            }
-            out.push(FamilySummary {
-                family: f.family.clone(),
-                device_name: f.device_name.clone(),
-                driver_info: f.driver_info.clone(),
-                tiers,
-                scene_shaders,
+        }
+        let mut scene_shaders = Vec::new();
+        for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
+            let s = &p.source;
+            let generic = pipeline(&s.material, &s.variant, &p.pass).and_then(cost_of);
+            let (Some(specialised), Some(generic)) = (cost_of(p), generic) else {
+                continue;
+            };
+            scene_shaders.push(SceneShaderCost {
+                scene: s.scene.clone().unwrap_or_default(),
+                shader: s.shader.clone().unwrap_or_default(),
+                material: s.material.clone(),
+                variant: s.variant.clone(),
+                pass: p.pass.clone(),
+                specialised,
+                generic,
             });
         }
-        Ok(ModelSummary {
-            command: command.into(),
-            families: out,
-        })
+        out.push(FamilySummary {
+            family: f.family.clone(),
+            device_name: f.device_name.clone(),
+            driver_info: f.driver_info.clone(),
+            tiers,
+            variants,
+            scene_shaders,
+        });
     }
-
-    /// Reads `generated/reports/gpu-model.json`.
-    pub fn load(generated: &Path) -> Result<ModelSummary> {
-        let path = generated.join("reports").join(FILE_NAME);
-        let bytes = std::fs::read(&path).map_err(|e| {
-            Error::Input(format!(
-                "{}: {e} (write it with `cargo xtask bench gpu-model --write`)",
-                path.display()
-            ))
-        })?;
-        serde_json::from_slice(&bytes).map_err(|e| Error::Input(format!("{}: {e}", path.display())))
-    }
-
-    /// Pretty JSON with a final newline (the committed form).
-    pub fn to_json(&self) -> String {
-        let mut s = serde_json::to_string_pretty(self).expect("plain data serialises");
-        s.push('\n');
-        s
-    }
-
-    /// The family named `family`.
-    pub fn family(&self, family: &str) -> Option<&FamilySummary> {
-        self.families.iter().find(|f| f.family == family)
-    }
-}
-
-impl FamilySummary {
-    /// The figures of `material` `tier`.
-    pub fn tier(&self, material: &str, tier: &str) -> Option<&TierCost> {
-        self.tiers
-            .iter()
-            .find(|t| t.material == material && t.tier == tier)
-    }
+    Ok(ModelSummary {
+        command: command.into(),
+        families: out,
+    })
 }
 
 /// A pipeline's fragment figures; None without the stage or its disassembly.

@@ -12,6 +12,7 @@
 
 pub mod bake;
 pub mod files;
+pub mod gpu_model;
 pub mod limits;
 pub mod pipeline;
 pub mod scene;

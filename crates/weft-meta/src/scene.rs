@@ -18,8 +18,16 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 
 /// Minor version of the scene metadata layout (additions a reader of the same
 /// major may ignore). 1: the first that states its minor (files without
-/// `schema_minor` are 3.0).
-pub const SCENE_SCHEMA_MINOR: u32 = 1;
+/// `schema_minor` are 3.0). 2: `tier_choice.gpu_family` and each candidate's
+/// `gpu` figures (automatic tiers costed by the GPU model).
+pub const SCENE_SCHEMA_MINOR: u32 = 2;
+
+/// The GPU families whose modelled cost (`generated/reports/gpu-model.json`,
+/// AMD's compiler on Mesa RADV's null device) `tier = "auto"` can use: a
+/// scene picks one with `[scene] gpu_family`.
+pub const GPU_COST_FAMILIES: &[&str] = &["navi21", "gfx1100"];
+/// The family used when a scene names none (RDNA2).
+pub const DEFAULT_GPU_COST_FAMILY: &str = "navi21";
 
 /// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
 /// `<scene>.scene.json`.
@@ -197,8 +205,13 @@ pub struct TierChoice {
     /// The instance's size on screen in pixels: the tiers were rendered at `screen_size` ×
     /// `screen_size` for the choice.
     pub screen_size: u32,
-    /// Where the costs came from: `lavapipe timing` or the `--tier-costs` file.
+    /// Where the costs came from: the GPU model (`gpu-model.json`, with the
+    /// family and driver) or the `--tier-costs` file.
     pub cost_source: String,
+    /// The GPU family the costs model (`[scene] gpu_family`); absent when the
+    /// costs came from a `--tier-costs` file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gpu_family: Option<String>,
     /// Every candidate tier with its figures, cheapest first.
     pub candidates: Vec<TierCandidate>,
 }
@@ -208,14 +221,33 @@ pub struct TierChoice {
 pub struct TierCandidate {
     /// The tier's name.
     pub tier: String,
-    /// Cost as measured: the bench's ratio to `standard`'s `fast` tier, or the
-    /// `--tier-costs` figure (any unit; only ratios within a material matter).
+    /// Cost: the GPU model's executed cost of the variant the instance's
+    /// keywords select, divided by `standard` `fast`'s, or the `--tier-costs`
+    /// figure (any unit; only ratios within a material matter).
     pub cost: f64,
+    /// The GPU model's figures for that variant (fragment stages of its
+    /// passes together); absent with `--tier-costs`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gpu: Option<TierGpuFigures>,
     /// FLIP mean against the reference tier at the instance's values, mesh and screen size.
     pub flip_mean: f64,
     /// Whether `flip_mean` ≤ `error_budget` (the reference tier always is); the first candidate
     /// within budget is chosen.
     pub within_budget: bool,
+}
+
+/// A candidate tier's figures from AMD's shader compiler (the GPU model).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct TierGpuFigures {
+    /// ISA instructions (each counted once), summed over the passes.
+    pub instructions: u64,
+    /// Vector registers per lane (the most of any pass).
+    pub vgprs: u64,
+    /// Waves per SIMD the registers allow (the fewest of any pass).
+    pub waves: u64,
+    /// Modelled executed cost: ISA blocks weighted and multiplied by the trip
+    /// counts of the loops around them (docs/performance.md).
+    pub executed_cost: f64,
 }
 
 /// The JSON Schema of [`SceneMetadata`], pretty-printed.

@@ -353,6 +353,7 @@ impl weft_compiler::scene::TierChooser for ReferenceTier {
                 error_budget: request.error_budget,
                 screen_size: request.screen_size,
                 cost_source: "test: reference tier".into(),
+                gpu_family: None,
                 candidates: Vec::new(),
             },
         })

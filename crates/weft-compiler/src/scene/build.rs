@@ -114,6 +114,7 @@ fn decide_tiers(
                     features: scene.manifest.features,
                     error_budget: *error_budget,
                     screen_size: *screen_size,
+                    gpu_family: &scene.manifest.gpu_family,
                 };
                 match chooser.choose(&request) {
                     Ok(decision) => match m.tiers.values.iter().position(|t| *t == decision.tier) {

@@ -21,6 +21,8 @@ pub struct AutoTierRequest<'a> {
     pub features: SceneFeatures,
     pub error_budget: f64,
     pub screen_size: u32,
+    /// The GPU family whose modelled cost ranks the tiers (`[scene] gpu_family`).
+    pub gpu_family: &'a str,
 }
 
 /// The chosen tier and the figures it was chosen from (recorded in the scene metadata).

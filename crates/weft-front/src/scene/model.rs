@@ -183,6 +183,8 @@ pub struct SceneManifest {
     pub light: Option<SceneLight>,
     /// Fails the build when the scene needs more unique shaders.
     pub max_shaders: Option<Spanned<usize>>,
+    /// The GPU family `tier = "auto"` costs tiers for (`[scene] gpu_family`).
+    pub gpu_family: String,
     pub instances: Vec<InstanceDecl>,
 }
 

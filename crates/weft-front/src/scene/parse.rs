@@ -21,6 +21,7 @@ pub const SCENE_KEYS: &[&str] = &[
     "directional_lights",
     "vertex_inputs",
     "max_shaders",
+    "gpu_family",
 ];
 pub const CAMERA_KEYS: &[&str] = &["position", "target", "fov_degrees"];
 pub const LIGHT_KEYS: &[&str] = &["direction", "color"];
@@ -110,6 +111,29 @@ pub fn file_scene_name(path: &Path) -> String {
     }
 }
 
+/// `gpu_family`: the GPU family whose modelled cost `tier = "auto"` uses
+/// (one of [`weft_meta::scene::GPU_COST_FAMILIES`]; default RDNA2).
+fn parse_gpu_family(scene: &Table, cx: &mut Cx) -> String {
+    use weft_meta::scene::{DEFAULT_GPU_COST_FAMILY, GPU_COST_FAMILIES};
+    let Some(family) = scene.string("gpu_family", cx) else {
+        return DEFAULT_GPU_COST_FAMILY.into();
+    };
+    if GPU_COST_FAMILIES.contains(&family.as_str()) {
+        return family;
+    }
+    cx.error_with_note(
+        "unknown-value",
+        format!("unknown `gpu_family` `{family}`"),
+        scene.span_of("gpu_family"),
+        "not a modelled family",
+        format!(
+            "`tier = \"auto\"` costs tiers with AMD's compiler for one of: {} (default `{DEFAULT_GPU_COST_FAMILY}`)",
+            GPU_COST_FAMILIES.join(", ")
+        ),
+    );
+    DEFAULT_GPU_COST_FAMILY.into()
+}
+
 /// Reads the manifest from the TOML tree. `None` without a `[scene]` table;
 /// otherwise every problem found is in `cx.diags` and the manifest holds the
 /// instances that have a name and a material (the others cannot be resolved).
@@ -189,6 +213,7 @@ pub fn parse_manifest<'a, 'i>(
             }
         }
     });
+    let gpu_family = parse_gpu_family(&scene, cx);
     let camera = top
         .get("camera")
         .and_then(|v| Table::new(v, "[camera]", cx))
@@ -214,6 +239,7 @@ pub fn parse_manifest<'a, 'i>(
         camera,
         light,
         max_shaders,
+        gpu_family,
         instances: Vec::new(),
     };
     let mut params = Vec::new();

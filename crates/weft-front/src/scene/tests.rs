@@ -486,3 +486,21 @@ fn limits_bound_instances_and_f32_numbers() {
     let camera = format!("[camera]\nposition = [0, 0, 1e40]\n\n{base}");
     assert_eq!(codes(&camera), ["type-range"]);
 }
+
+#[test]
+fn gpu_family_defaults_to_rdna2_and_must_be_modelled() {
+    let instance = "[[instances]]\nname = \"a\"\nmaterial = \"m\"\nmesh = \"sphere\"\n";
+    assert_eq!(resolve_ok(instance).manifest.gpu_family, "navi21");
+    let with = |family: &str| {
+        format!(
+            "[scene]\nname = \"t\"\nvertex_inputs = [\"position\", \"normal\", \"uv0\"]\ngpu_family = \"{family}\"\n\n{instance}"
+        )
+    };
+    let (_dir, path) = write_fixture(&with("gfx1100"));
+    assert_eq!(load(&path).unwrap().manifest.gpu_family, "gfx1100");
+    let (_dir, path) = write_fixture(&with("navi31"));
+    let e = load(&path).expect_err("not a modelled family");
+    assert!(e.contains("unknown `gpu_family` `navi31`"), "{e}");
+    assert!(e.contains("navi21, gfx1100"), "{e}");
+    assert!(e.contains("t.scene.toml:4:14"), "{e}");
+}

@@ -188,20 +188,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
-    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
-    return _e15.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -368,6 +363,7 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
@@ -415,7 +411,7 @@ fragment fs_mainOutput fs_main(
     {
         {
             float _e70 = lobe.ibl_roughness;
-            metal::float2 _e71 = weft_env_brdf_lut_nearest(_e33, _e70, weft_brdf_lut);
+            metal::float2 _e71 = weft_env_brdf_lut(_e33, _e70, weft_brdf_lut, weft_lut_sampler);
             scale_bias = _e71;
         }
         metal::float2 _e72 = scale_bias;

@@ -151,12 +151,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     vec2 uv = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv * size), (size - vec2(1.0))));
-    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e15.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -283,7 +281,7 @@ void main() {
     {
         {
             float _e70 = lobe.ibl_roughness;
-            vec2 _e71 = weft_env_brdf_lut_nearest(_e33, _e70);
+            vec2 _e71 = weft_env_brdf_lut(_e33, _e70);
             scale_bias = _e71;
         }
         vec2 _e72 = scale_bias;

@@ -63,6 +63,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 
 struct VertexOutput_vs_main {
@@ -184,24 +185,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv = float2(saturate(n_dot_v), saturate(roughness_2));
-    int2 texel_1 = naga_f2i32(min((uv * size), (size - (1.0).xx)));
-    float4 _e15 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e15.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
+    return _e8.xy;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -366,7 +354,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         {
             float _e70 = lobe.ibl_roughness;
-            const float2 _e71 = weft_env_brdf_lut_nearest(_e33, _e70);
+            const float2 _e71 = weft_env_brdf_lut(_e33, _e70);
             scale_bias = _e71;
         }
         float2 _e72 = scale_bias;

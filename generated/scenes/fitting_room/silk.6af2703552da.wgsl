@@ -62,6 +62,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 
@@ -155,13 +157,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let uv = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel_1 = vec2<i32>(min((uv * size), (size - vec2(1f))));
-    let _e15 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e15.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+    return _e8.xy;
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -313,7 +312,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         {
             let _e70 = lobe.ibl_roughness;
-            let _e71 = weft_env_brdf_lut_nearest(_e33, _e70);
+            let _e71 = weft_env_brdf_lut(_e33, _e70);
             scale_bias = _e71;
         }
         let _e72 = scale_bias;
