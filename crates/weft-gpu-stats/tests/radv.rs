@@ -8,6 +8,7 @@ use weft_gpu_stats::{
     DEFAULT_FAMILIES, Error, FamilyStats, Options, PipelineStats, Selection, WorkerCommand,
 };
 use weft_meta::MaterialMetadata;
+use weft_meta::gpu_model::ModelSummary;
 
 fn generated() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../generated"))
@@ -18,7 +19,8 @@ fn options(selection: Selection) -> Options {
         generated: generated(),
         selection,
         families: DEFAULT_FAMILIES.iter().map(|f| f.to_string()).collect(),
-        disassembly: false,
+        // The loop-aware model reads it (and a second compile must match it too).
+        disassembly: true,
         icd_dirs: None,
         worker: WorkerCommand {
             program: env!("CARGO_BIN_EXE_weft-gpu-stats").into(),
@@ -222,4 +224,152 @@ fn unknown_family_is_a_clear_error() {
     opts.families = vec!["navi99".into()];
     let e = weft_gpu_stats::collect(&opts).unwrap_err().to_string();
     assert!(e.contains("navi99"), "{e}");
+}
+
+/// The committed model, `generated/reports/gpu-model.json`, is what a fresh
+/// compile of today's library gives: the `tier = "auto"` chooser and the
+/// docs read it, so a stale file would make them wrong silently.
+#[test]
+fn the_committed_gpu_model_is_current() {
+    let fresh = weft_gpu_stats::summarize(&generated(), full(), MODEL_COMMAND)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let committed =
+        ModelSummary::load(&generated().join("reports")).unwrap_or_else(|e| panic!("{e}"));
+    let stale =
+        "generated/reports/gpu-model.json is stale: run `cargo xtask bench gpu-model --write`";
+    assert_eq!(committed.families.len(), fresh.families.len(), "{stale}");
+    for (c, f) in committed.families.iter().zip(&fresh.families) {
+        assert_eq!(c.family, f.family, "{stale}");
+        first_difference(&c.family, "tier", &c.tiers, &f.tiers, stale);
+        first_difference(&c.family, "variant", &c.variants, &f.variants, stale);
+        first_difference(
+            &c.family,
+            "scene shader",
+            &c.scene_shaders,
+            &f.scene_shaders,
+            stale,
+        );
+    }
+    assert!(committed == fresh, "{stale}");
+}
+
+/// Panics naming the first entry that differs (or the count), not the whole list.
+fn first_difference<T: PartialEq + std::fmt::Debug>(
+    family: &str,
+    what: &str,
+    committed: &[T],
+    fresh: &[T],
+    stale: &str,
+) {
+    if let Some((a, b)) = committed.iter().zip(fresh).find(|(a, b)| a != b) {
+        panic!("{stale}\n{family} {what}, committed: {a:?}\nfresh: {b:?}");
+    }
+    assert_eq!(
+        committed.len(),
+        fresh.len(),
+        "{stale}: {family} {what} count"
+    );
+}
+
+const MODEL_COMMAND: &str = "cargo xtask bench gpu-model --write";
+
+/// Folding constants into a scene shader must never cost registers or
+/// instructions on the GPU compiler (issue: VGPRs must never rise).
+#[test]
+fn scene_shaders_never_cost_more_than_their_generic_variants() {
+    let model = weft_gpu_stats::summarize(&generated(), full(), MODEL_COMMAND)
+        .unwrap_or_else(|e| panic!("{e}"));
+    for f in &model.families {
+        assert!(
+            f.scene_shaders.len() >= 20,
+            "{}: {} scene shaders",
+            f.family,
+            f.scene_shaders.len()
+        );
+        for s in &f.scene_shaders {
+            let (a, g) = (&s.specialised, &s.generic);
+            let what = format!(
+                "{} {} {} {} ({})",
+                f.family, s.scene, s.shader, s.pass, s.variant
+            );
+            assert!(
+                a.instructions <= g.instructions,
+                "{what}: {} instructions > generic {}",
+                a.instructions,
+                g.instructions
+            );
+            assert!(
+                a.vgprs <= g.vgprs,
+                "{what}: {} VGPRs > generic {}",
+                a.vgprs,
+                g.vgprs
+            );
+        }
+    }
+}
+
+/// Approximation tiers whose modelled cost is above their reference's, with
+/// the reason. The one place they are listed (docs/performance.md quotes
+/// it): the test fails when one is added, and when one is no longer true.
+const COSTLIER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
+    (
+        "standard",
+        "fast",
+        "Hammon's visibility + one Newton step (a division) and a nearest-texel LUT read computed \
+         in ALU replace two square roots and a filtered fetch the hardware does for free",
+    ),
+    (
+        "standard",
+        "low",
+        "fast's terms in f16: RDNA2/3 run them at f32's cost (no packed half math is formed)",
+    ),
+    (
+        "silk",
+        "fast",
+        "the split-sum LUT at its nearest texel (coordinate maths in ALU) in place of the filtered fetch",
+    ),
+    ("silk", "low", "fast's terms in f16, at f32's cost"),
+    (
+        "eye",
+        "fast",
+        "the parallax offset costs what the traced cornea ray does (within 0.3 %)",
+    ),
+];
+
+#[test]
+fn approximation_tiers_cost_less_than_their_reference() {
+    let model = weft_gpu_stats::summarize(&generated(), full(), MODEL_COMMAND)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut costlier = BTreeSet::new();
+    let mut checked = 0;
+    for f in &model.families {
+        for t in &f.tiers {
+            let meta = read_meta(&t.material);
+            if t.tier == meta.tiers.reference || meta.tiers.looks.contains(&t.tier) {
+                continue;
+            }
+            let reference = f
+                .tier(&t.material, &meta.tiers.reference)
+                .unwrap_or_else(|| panic!("{}: no reference figures", t.material));
+            checked += 1;
+            if t.fragment.executed_cost > reference.fragment.executed_cost {
+                costlier.insert((t.material.clone(), t.tier.clone()));
+            }
+        }
+    }
+    assert!(checked >= 30, "only {checked} approximation tiers checked");
+    let listed: BTreeSet<(String, String)> = COSTLIER_THAN_REFERENCE
+        .iter()
+        .map(|(m, t, _)| (m.to_string(), t.to_string()))
+        .collect();
+    assert_eq!(
+        costlier, listed,
+        "approximation tiers above their reference's modelled cost on navi21 or gfx1100 (left) \
+         against COSTLIER_THAN_REFERENCE (right): make the tier cheaper, or list it with the reason"
+    );
+}
+
+fn read_meta(name: &str) -> MaterialMetadata {
+    let path = generated().join(name).join(format!("{name}.meta.json"));
+    serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap()
 }
