@@ -139,9 +139,14 @@ fn every_tier_is_the_reference_an_approximation_or_a_look() {
 
 #[test]
 fn measured_tier_tables_are_the_reports() {
-    use weft_golden::shading::{choosing_tables, ladder_table, replace_marked};
+    use weft_golden::cost_tables::{choosing_tables, ladder_table, model_section};
+    use weft_golden::shading::replace_marked;
     let repo = generated().parent().unwrap().to_path_buf();
     let reports = generated().join("reports");
+    let model =
+        weft_meta::gpu_model::ModelSummary::load(&reports).expect("the committed GPU model");
+    let model = Some(&model);
+    let rerun = "run `cargo xtask bench gpu-model --write` (model columns) or `cargo xtask regenerate --reports` (timings)";
     let mut all = Vec::new();
     for (_, meta) in weft_golden::materials(&generated()).expect("generated/") {
         let path = reports.join(format!("{}.measurements.json", meta.name));
@@ -149,21 +154,42 @@ fn measured_tier_tables_are_the_reports() {
             serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
         let readme = repo.join("materials").join(&meta.name).join("README.md");
         let text = std::fs::read_to_string(&readme).unwrap();
-        if let Some(expected) = replace_marked(&text, "ladder", &ladder_table(&m)) {
+        if let Some(expected) = replace_marked(&text, "ladder", &ladder_table(&m, model)) {
             assert!(
                 expected == text,
-                "{}: its measured ladder table is not the report's: run `cargo xtask regenerate --reports`",
+                "{}: its measured ladder table is not the reports': {rerun}",
                 readme.display()
             );
         }
+        let svg = reports.join(format!("{}.pareto.svg", meta.name));
+        assert!(
+            std::fs::read_to_string(&svg).unwrap() == weft_golden::pareto::pareto_svg(&m, model),
+            "{}: not the reports' plot: {rerun}",
+            svg.display()
+        );
         all.push(m);
     }
     let readme = repo.join("README.md");
     let text = std::fs::read_to_string(&readme).unwrap();
-    let expected = replace_marked(&text, "tiers", &choosing_tables(&all))
+    let expected = replace_marked(&text, "tiers", &choosing_tables(&all, model))
         .expect("README has the tier table markers");
     assert!(
         expected == text,
-        "README.md's tier tables are not the reports': run `cargo xtask regenerate --reports`"
+        "README.md's tier tables are not the reports': {rerun}"
+    );
+    let shading = std::fs::read_to_string(reports.join("shading.md")).unwrap();
+    let expected = replace_marked(&shading, "gpu-model", &model_section(&all, model))
+        .expect("shading.md has the gpu-model markers");
+    assert!(
+        expected == shading,
+        "generated/reports/shading.md's GPU model section is not the model's: {rerun}"
+    );
+    let scenes = std::fs::read_to_string(reports.join("scenes.md")).unwrap();
+    let section = weft_golden::cost_tables::scene_model_section(&generated(), model).unwrap();
+    let expected = replace_marked(&scenes, "gpu-model", &section)
+        .expect("scenes.md has the gpu-model markers");
+    assert!(
+        expected == scenes,
+        "generated/reports/scenes.md's GPU model section is not the model's: {rerun}"
     );
 }

@@ -103,6 +103,7 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
         std::fs::write(&json_path, summary.to_json())
             .map_err(|e| format!("{}: {e}", json_path.display()))?;
         println!("wrote {}", json_path.display());
+        crate::rewrite_cost_tables(root)?;
     }
     if let Some(json_path) = &args.json {
         let mut json = serde_json::to_string(&stats).map_err(|e| e.to_string())?;

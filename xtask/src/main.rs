@@ -587,7 +587,8 @@ fn bench_shading(
         );
     }
     if write {
-        match shading::write_reports(&generated.join("reports"), &report, command) {
+        let model = weft_meta::gpu_model::ModelSummary::load(&generated.join("reports")).ok();
+        match shading::write_reports(&generated.join("reports"), &report, command, model.as_ref()) {
             Ok(files) => println!("wrote {} files in generated/reports/", files.len()),
             Err(e) => {
                 eprintln!("error: cannot write reports: {e}");
@@ -746,36 +747,79 @@ fn write_shell_tables(
 
 /// Rewrites the measured tier tables between their markers: the README's
 /// "Choosing a tier" (`<!-- weft:tiers:… -->`, every material, when all were
-/// measured) and each measured material's README (`<!-- weft:ladder:… -->`).
+/// measured) and each measured material's README (`<!-- weft:ladder:… -->`),
+/// timed costs beside the committed GPU model's (when there is one).
 fn write_tier_tables(root: &Path, materials: &[weft_meta::Measurements]) -> Result<(), String> {
-    use weft_golden::shading::{choosing_tables, ladder_table, replace_marked};
-    let update = |path: &Path, name: &str, content: &str| -> Result<(), String> {
-        let Ok(text) = std::fs::read_to_string(path) else {
-            return Ok(());
-        };
-        if let Some(new) = replace_marked(&text, name, content)
-            && new != text
-        {
-            std::fs::write(path, new).map_err(|e| format!("{}: {e}", path.display()))?;
-            println!("updated the measured tier table in {}", path.display());
-        }
-        Ok(())
-    };
+    use weft_golden::cost_tables::{choosing_tables, ladder_table};
+    let model = weft_meta::gpu_model::ModelSummary::load(&root.join("generated/reports")).ok();
+    let model = model.as_ref();
     let all = weft_golden::materials(&root.join("generated"))?;
     if all
         .iter()
         .all(|(_, m)| materials.iter().any(|x| x.material == m.name))
     {
-        update(
+        update_marked(
             &root.join("README.md"),
             "tiers",
-            &choosing_tables(materials),
+            &choosing_tables(materials, model),
         )?;
     }
     for m in materials {
         let readme = root.join("materials").join(&m.material).join("README.md");
-        update(&readme, "ladder", &ladder_table(m))?;
+        update_marked(&readme, "ladder", &ladder_table(m, model))?;
     }
+    Ok(())
+}
+
+/// Replaces the text between `<!-- weft:<name>:… -->` in `path` (a file
+/// without the markers, or missing, is left alone).
+fn update_marked(path: &Path, name: &str, content: &str) -> Result<(), String> {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Ok(());
+    };
+    if let Some(new) = weft_golden::shading::replace_marked(&text, name, content)
+        && new != text
+    {
+        std::fs::write(path, new).map_err(|e| format!("{}: {e}", path.display()))?;
+        println!("updated the `{name}` table in {}", path.display());
+    }
+    Ok(())
+}
+
+/// After `bench gpu-model --write`: the docs' cost tables and plots from the
+/// committed measurements and the new model, without timing anything again
+/// (the tier tables, each material's Pareto plot, shading.md's model section).
+pub(crate) fn rewrite_cost_tables(root: &Path) -> Result<(), String> {
+    let reports = root.join("generated/reports");
+    let model = weft_meta::gpu_model::ModelSummary::load(&reports)?;
+    let mut materials = Vec::new();
+    for (_, meta) in weft_golden::materials(&root.join("generated"))? {
+        let path = reports.join(format!("{}.measurements.json", meta.name));
+        let Ok(bytes) = std::fs::read(&path) else {
+            continue;
+        };
+        let m: weft_meta::Measurements =
+            serde_json::from_slice(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+        let svg = reports.join(format!("{}.pareto.svg", m.material));
+        std::fs::write(&svg, weft_golden::pareto::pareto_svg(&m, Some(&model)))
+            .map_err(|e| format!("{}: {e}", svg.display()))?;
+        materials.push(m);
+    }
+    write_tier_tables(root, &materials)?;
+    update_marked(
+        &reports.join("shading.md"),
+        "gpu-model",
+        &weft_golden::cost_tables::model_section(&materials, Some(&model)),
+    )?;
+    update_marked(
+        &reports.join("scenes.md"),
+        "gpu-model",
+        &weft_golden::cost_tables::scene_model_section(&root.join("generated"), Some(&model))?,
+    )?;
+    println!(
+        "rewrote {} Pareto plots and the model columns from the committed measurements",
+        materials.len()
+    );
     Ok(())
 }
 
@@ -836,10 +880,20 @@ fn bench_scene(root: &Path, args: &SceneArgs, write: bool) -> ExitCode {
             })
         })
         .and_then(|report| {
-            print!("{}", scene_bench::markdown_report(&report, &command));
+            let model = weft_meta::gpu_model::ModelSummary::load(&generated.join("reports")).ok();
+            let section =
+                weft_golden::cost_tables::scene_model_section(&generated, model.as_ref())?;
+            print!(
+                "{}",
+                scene_bench::markdown_report(&report, &command, &section)
+            );
             if write {
-                let files =
-                    scene_bench::write_reports(&generated.join("reports"), &report, &command)?;
+                let files = scene_bench::write_reports(
+                    &generated.join("reports"),
+                    &report,
+                    &command,
+                    &section,
+                )?;
                 println!("wrote {} files in generated/reports/", files.len());
             }
             Ok(())

@@ -65,7 +65,10 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), String> {
     );
     if args.write_reports {
         let dir = args.generated.join("reports");
-        let files = shading::write_reports(&dir, &report, "weft bench --write-reports")?;
+        // The GPU model's columns, when the folder has the committed model.
+        let model = weft_meta::gpu_model::ModelSummary::load(&dir).ok();
+        let files =
+            shading::write_reports(&dir, &report, "weft bench --write-reports", model.as_ref())?;
         println!("wrote {} files in {}", files.len(), dir.display());
     }
     Ok(())

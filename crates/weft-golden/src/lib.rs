@@ -6,11 +6,13 @@
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
 pub mod auto_tier;
+pub mod cost_tables;
 pub mod error_grid;
 pub mod film;
 pub mod fins;
 pub mod floor;
 pub mod glints;
+pub mod pareto;
 pub mod project;
 pub mod scene_bench;
 pub mod scenes;
