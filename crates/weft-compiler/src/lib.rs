@@ -43,4 +43,4 @@ pub use library::{
     BuildOptions, BuildOutput, build_library, build_materials, build_materials_streaming,
     compile_material,
 };
-pub use scene::{SceneBuildOptions, SceneOutput, build_scene};
+pub use scene::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_scene};

@@ -2,7 +2,7 @@
 //! instance, byte-deterministic, and only what each instance reads.
 
 use std::path::{Path, PathBuf};
-use weft_compiler::{SceneBuildOptions, build_scene};
+use weft_compiler::{MAX_SCENE_SHADERS, SceneBuildOptions, build_scene};
 
 fn scene(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../../scenes/{name}.scene.toml"))
@@ -110,4 +110,42 @@ fn auto_tier_without_a_chooser_fails_at_the_tier_line() {
         text.contains("error[auto-tier]") && text.contains("probe.scene.toml:10"),
         "{text}"
     );
+}
+
+fn standard_instances(n: usize, roughness: impl Fn(usize) -> f64) -> String {
+    (0..n)
+        .map(|i| {
+            format!(
+                "[[instances]]\nname = \"i{i}\"\nmaterial = \"standard\"\nmesh = \"sphere\"\n\
+                 params = {{ roughness = {} }}\ntranslation = [{i}.0, 0.0, 0.0]\n\n",
+                roughness(i)
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn the_shader_cap_counts_distinct_specialisations_not_instances() {
+    // One more distinct specialisation than the cap: refused before anything
+    // is compiled, at the first instance beyond it.
+    let (_dir, path) = temp_scene(&standard_instances(MAX_SCENE_SHADERS + 1, |i| {
+        0.1 + 0.5 * i as f64 / MAX_SCENE_SHADERS as f64
+    }));
+    let Err((db, diags)) = build_scene(&path, &SceneBuildOptions::default()) else {
+        panic!("{} distinct shaders must be refused", MAX_SCENE_SHADERS + 1);
+    };
+    let text = diags.render_plain(&db);
+    assert!(
+        text.contains("error[too-many-shaders]")
+            && text.contains(&format!("needs {} distinct", MAX_SCENE_SHADERS + 1))
+            && text.contains(&format!("instance `i{MAX_SCENE_SHADERS}`")),
+        "{text}"
+    );
+    // More instances than the cap, all of one specialisation: one shader,
+    // compiled once.
+    let (_dir, path) = temp_scene(&standard_instances(MAX_SCENE_SHADERS + 44, |_| 0.3));
+    let out = build_scene(&path, &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));
+    assert_eq!(out.metadata.instances.len(), MAX_SCENE_SHADERS + 44);
+    assert_eq!(out.metadata.shaders.len(), 1);
 }

@@ -181,21 +181,34 @@ fn scene_limits(scene: &ResolvedScene) -> Option<weft_meta::DeviceLimits> {
     (!limits.is_default()).then_some(limits)
 }
 
-/// One instance folded, validated and emitted.
-struct BuiltInstance {
-    values: InstanceValues,
-    compiled: CompiledVariant,
+/// The most distinct specialised shaders one scene may need: each is folded,
+/// validated, written for every backend and written out (six files), about
+/// 4 ms of CPU and as much again of file writing apiece on the project's
+/// 2-core machine, so this bounds a scene's build at a few seconds
+/// (docs/scaling.md, "Scene limits"). Instances that share a shader (the same
+/// material, tier, keywords and folded values) count once.
+pub const MAX_SCENE_SHADERS: usize = 256;
+
+/// What decides an instance's specialised shader: its material, tier,
+/// keywords and everything folded into it. Instances with equal keys get the
+/// same shader, so it is compiled once (the emitted WGSL's hash still merges
+/// different keys that fold to the same code).
+fn specialisation_key(inst: &ResolvedInstance, tier: usize, values: &InstanceValues) -> String {
+    format!(
+        "{}|{tier}|{:?}|{:?}",
+        inst.material, inst.keywords, values.fold
+    )
 }
 
+/// One distinct specialisation folded, validated and emitted.
 fn build_instance(
     m: &Material,
     (module, fallback): (&naga::Module, Option<&naga::Module>),
     prelude: &prelude::Prelude,
     inst: &ResolvedInstance,
     tier: usize,
-    features: &weft_front::scene::model::SceneFeatures,
-) -> Result<BuiltInstance, String> {
-    let values = instance_values(m, inst, tier, features);
+    values: &InstanceValues,
+) -> Result<CompiledVariant, String> {
     // A literal WGSL cannot spell (inf, NaN) would make every backend's output
     // invalid; ranges normally stop such values in the front end.
     for (name, v) in &values.fold.members {
@@ -238,7 +251,7 @@ fn build_instance(
         &textures,
         &[Vec::new()],
     )?;
-    Ok(BuiltInstance { values, compiled })
+    Ok(compiled)
 }
 
 /// Builds a resolved scene. Diagnostics point into the scene file.
@@ -267,11 +280,54 @@ pub fn build_resolved_scene(
     let engine = compose::engine_interface_file(db);
 
     let features = manifest.features;
-    let results: Vec<Result<BuiltInstance, String>> = scene
+    let values: Vec<InstanceValues> = scene
         .instances
-        .par_iter()
+        .iter()
         .zip(&tiers)
         .map(|(inst, (tier, _))| {
+            instance_values(&scene.materials[inst.material], inst, *tier, &features)
+        })
+        .collect();
+    // Instances with the same specialisation share one compile: `unique`
+    // holds the first instance of each, `spec[k]` instance k's index into it.
+    let mut first: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    let mut unique: Vec<usize> = Vec::new();
+    let mut spec: Vec<usize> = Vec::with_capacity(scene.instances.len());
+    for (k, (inst, (tier, _))) in scene.instances.iter().zip(&tiers).enumerate() {
+        let key = specialisation_key(inst, *tier, &values[k]);
+        let next = unique.len();
+        let u = *first.entry(key).or_insert(next);
+        if u == next {
+            unique.push(k);
+        }
+        spec.push(u);
+    }
+    if unique.len() > MAX_SCENE_SHADERS {
+        let over = &scene.instances[unique[MAX_SCENE_SHADERS]];
+        diags.push(
+            Diagnostic::error()
+                .with_code("too-many-shaders")
+                .with_message(format!(
+                    "the scene needs {} distinct specialised shaders; at most {MAX_SCENE_SHADERS} are built",
+                    unique.len()
+                ))
+                .with_labels(vec![
+                    Label::primary(manifest.file, over.span.clone()).with_message(format!(
+                        "instance `{}` needs shader number {}",
+                        over.name,
+                        MAX_SCENE_SHADERS + 1
+                    )),
+                ])
+                .with_notes(vec![
+                    "instances share a shader when they have the same material, tier, keywords and constant values: make the differing parameters `dynamic`, or split the scene".into(),
+                ]),
+        );
+        return None;
+    }
+    let mut results: Vec<Result<CompiledVariant, String>> = unique
+        .par_iter()
+        .map(|&k| {
+            let inst = &scene.instances[k];
             let m = &scene.materials[inst.material];
             let (prelude, module, _, fallback) = &modules[inst.material];
             build_instance(
@@ -279,8 +335,8 @@ pub fn build_resolved_scene(
                 (module, fallback.as_ref()),
                 prelude,
                 inst,
-                *tier,
-                &features,
+                tiers[k].0,
+                &values[k],
             )
         })
         .collect();
@@ -289,10 +345,12 @@ pub fn build_resolved_scene(
     let mut shaders: Vec<SceneShader> = Vec::new();
     let mut instances = Vec::new();
     let mut generic_variants = Vec::new();
-    for ((inst, (tier, choice)), result) in scene.instances.iter().zip(tiers).zip(results) {
+    for (k, ((inst, (tier, choice)), values)) in
+        scene.instances.iter().zip(tiers).zip(values).enumerate()
+    {
         let m = &scene.materials[inst.material];
-        let built = match result {
-            Ok(b) => b,
+        let compiled = match &mut results[spec[k]] {
+            Ok(c) => c,
             Err(e) => {
                 diags.push(instance_error(
                     scene,
@@ -306,7 +364,7 @@ pub fn build_resolved_scene(
         };
         let static_key = VariantKey::of_values(m, tier, &inst.keywords);
         let variant = static_key.id(m);
-        let shader = &built.compiled.shader;
+        let shader = &compiled.shader;
 
         // The mesh must feed every input the specialised shader reads.
         let missing: Vec<&str> = shader
@@ -351,7 +409,7 @@ pub fn build_resolved_scene(
             module,
             engine,
             std::slice::from_ref(&static_key),
-            std::slice::from_ref(&built.compiled),
+            std::slice::from_ref(&*compiled),
             diags,
         );
         if !fits {
@@ -391,16 +449,18 @@ pub fn build_resolved_scene(
         }
 
         // Identical specialised instances share one shader.
-        let id = built.compiled.id.clone();
+        let id = compiled.id.clone();
         if !shaders.iter().any(|s| s.id == id) {
-            for (name, bytes) in built.compiled.files {
+            // The first instance of a shader takes its files (instances that
+            // share its specialisation find the shader by id below).
+            for (name, bytes) in std::mem::take(&mut compiled.files) {
                 files.insert(format!("{}/{name}", manifest.name), bytes);
             }
             shaders.push(SceneShader {
                 id: id.clone(),
                 material: m.name.clone(),
                 variant: variant.clone(),
-                shader: built.compiled.shader.clone(),
+                shader: compiled.shader.clone(),
             });
         }
         let shader = &shaders
@@ -416,10 +476,7 @@ pub fn build_resolved_scene(
                     .members
                     .iter()
                     .filter_map(|mem| {
-                        Some((
-                            mem.name.clone(),
-                            built.values.uniform.get(&mem.name)?.clone(),
-                        ))
+                        Some((mem.name.clone(), values.uniform.get(&mem.name)?.clone()))
                     })
                     .collect()
             })
@@ -465,7 +522,7 @@ pub fn build_resolved_scene(
             keywords: keyword_names(m, inst),
             variant: variant.clone(),
             shader: id,
-            constants: built.values.constants,
+            constants: values.constants,
             dynamic: inst
                 .dynamic
                 .iter()

@@ -14,7 +14,7 @@ pub mod fold;
 pub mod instance;
 pub mod tiers;
 
-pub use build::{SceneBuildOptions, SceneOutput, build_resolved_scene};
+pub use build::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_resolved_scene};
 pub use tiers::{AutoTierDecision, AutoTierRequest, TierChooser};
 
 use std::collections::BTreeMap;
