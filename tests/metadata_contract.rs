@@ -477,3 +477,36 @@ fn engine_interface_doc_is_the_metadata() {
         .collect();
     assert_eq!(blends, modes, "docs/engine-interface.md: the blend table");
 }
+
+/// Every material's README has a bindings table (`<!-- weft:bindings:… -->`,
+/// written by `cargo xtask regenerate` from the metadata) and it is the one
+/// its committed metadata gives: what a README says each tier binds is
+/// what `generated/<m>/<m>.meta.json` binds.
+#[test]
+fn readme_bindings_tables_are_the_metadatas() {
+    use weft_golden::{bindings, shading::replace_marked};
+    let mut stale = Vec::new();
+    for meta in generated_materials() {
+        let readme = repo().join("materials").join(&meta.name).join("README.md");
+        let text = std::fs::read_to_string(&readme)
+            .unwrap_or_else(|e| panic!("{}: {e}", readme.display()));
+        let table = bindings::readme_table(&meta);
+        let expected = replace_marked(&text, bindings::MARKER, &table).unwrap_or_else(|| {
+            panic!(
+                "{}: no <!-- weft:bindings:begin --> … <!-- weft:bindings:end --> markers",
+                readme.display()
+            )
+        });
+        if expected != text {
+            stale.push(format!(
+                "materials/{}/README.md; the metadata's table is:\n{table}",
+                meta.name
+            ));
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "bindings tables that are not the metadata's (run `cargo xtask regenerate`):\n{}",
+        stale.join("\n")
+    );
+}
