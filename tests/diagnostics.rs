@@ -440,6 +440,135 @@ fn schema_matches_parser_keys() {
     );
 }
 
+/// Every closed list of values a material file takes, as the parser reads it
+/// (the metadata enums' `ALL`, the front end's lists), is exactly what the
+/// editor schema enumerates and what docs/material-format.md lists, and the
+/// metadata's vertex inputs are the front end's.
+#[test]
+fn schema_and_docs_list_the_parsers_values() {
+    use docs::{backticked, backticked_set, row, section, set};
+    use weft_meta::{
+        BlendMode, CullMode, DepthTest, KeywordKind, KeywordMode, ParamKind, StencilOperation,
+        TextureDefault,
+    };
+    let names = |v: &[&str]| -> Vec<String> { v.iter().map(|n| n.to_string()).collect() };
+    let s = schema();
+    let defs = &s["definitions"];
+    let schema_enum = |def: &str, key: Option<&str>| -> Vec<String> {
+        let v = &defs[def];
+        let v = match key {
+            Some(k) => resolve(&s, &v["properties"][k]),
+            None => v,
+        };
+        enum_values(v, &format!("{def}.{}", key.unwrap_or("")))
+    };
+    let blend = BlendMode::ALL.map(BlendMode::name);
+    let cull = CullMode::ALL.map(CullMode::name);
+    let compare = DepthTest::ALL.map(DepthTest::name);
+    let ops = StencilOperation::ALL.map(StencilOperation::name);
+    let kinds = KeywordKind::ALL.map(KeywordKind::name);
+    let modes = KeywordMode::ALL.map(KeywordMode::name);
+    let recipes: Vec<&str> = weft_front::parse::RECIPES.iter().map(|(n, _)| *n).collect();
+    let rings: Vec<&str> = weft_front::parse::RINGS.iter().map(|(n, _)| *n).collect();
+
+    // The editor schema, in the parser's order.
+    for (def, key, expected) in [
+        ("pass", Some("blend"), &blend[..]),
+        ("pass", Some("cull"), &cull[..]),
+        ("pass", Some("depth_test"), &compare[..]),
+        ("stencil", Some("compare"), &compare[..]),
+        ("stencil_op", None, &ops[..]),
+        ("keyword", Some("type"), &kinds[..]),
+        ("keyword", Some("mode"), &modes[..]),
+        ("table", Some("recipe"), &recipes[..]),
+        ("table", Some("ring"), &rings[..]),
+    ] {
+        assert_eq!(
+            schema_enum(def, key),
+            names(expected),
+            "schemas/material.schema.json: {def}.{}",
+            key.unwrap_or("")
+        );
+    }
+    for op in ["pass_op", "fail_op", "depth_fail_op"] {
+        assert_eq!(
+            defs["stencil"]["properties"][op]["$ref"], "#/definitions/stencil_op",
+            "stencil.{op}"
+        );
+    }
+
+    // docs/material-format.md: the tables' value columns and lists.
+    let doc = docs::load("../docs/material-format.md");
+    let column = |heading: &str, key: &str, col: usize| -> Vec<String> {
+        backticked(&row(&doc, heading, key)[col])
+    };
+    let params = ParamKind::ALL.map(ParamKind::name);
+    for (heading, key, col, expected) in [
+        ("## `[params]`", "type", 3, &params[..]),
+        ("## `[keywords]`", "type", 1, &kinds[..]),
+        ("## `[keywords]`", "mode", 1, &modes[..]),
+        ("## `[[pass]]`", "blend", 1, &blend[..]),
+        ("## `[[pass]]`", "cull", 1, &cull[..]),
+        ("## `[[pass]]`", "depth_test", 1, &compare[..]),
+    ] {
+        assert_eq!(
+            column(heading, key, col),
+            names(expected),
+            "docs/material-format.md, {heading}: the `{key}` row"
+        );
+    }
+    let textures = TextureDefault::ALL.map(TextureDefault::name);
+    let first_cells: Vec<String> = section(&doc, "### Textures: ")
+        .into_iter()
+        .take_while(|l| !l.starts_with("A `texture2d`"))
+        .filter(|l| l.starts_with("| `"))
+        .map(|l| backticked(l)[0].clone())
+        .collect();
+    assert_eq!(first_cells, names(&textures), "the built-in texture table");
+    let meaning = row(&doc, "#### `default_when`", "default")[2].clone();
+    let (_, list) = meaning
+        .split_once(": ")
+        .expect("`default`: the list after a colon");
+    assert_eq!(
+        backticked_set(list),
+        set(textures),
+        "default_when's `default` row"
+    );
+    let stencil = section(&doc, "### Stencil").join(
+        "
+",
+    );
+    let listed = backticked_set(&stencil);
+    for name in ops {
+        assert!(
+            listed.contains(name),
+            "docs/material-format.md, ### Stencil: `{name}` is not mentioned"
+        );
+    }
+    let tables = row(&doc, "## `[tables]`", "preintegrated_skin").join(" | ");
+    for name in recipes.iter().chain(&rings) {
+        assert!(
+            backticked_set(&tables).contains(*name),
+            "docs/material-format.md, `[tables]`: `{name}` is not listed"
+        );
+    }
+
+    // The vertex inputs a material `requires` are the metadata's, by location.
+    let attrs: Vec<(&str, u32, &str)> = weft_front::model::VertexAttribute::ALL
+        .iter()
+        .map(|a| (a.name(), a.location(), a.format()))
+        .collect();
+    let meta: Vec<(&str, u32, &str)> = weft_meta::VERTEX_INPUTS
+        .iter()
+        .enumerate()
+        .map(|(i, (n, f))| (*n, i as u32, *f))
+        .collect();
+    assert_eq!(
+        attrs, meta,
+        "weft_front's vertex attributes against weft_meta::VERTEX_INPUTS"
+    );
+}
+
 /// Every material file in the repository parses with the schema directive on its first line.
 #[test]
 fn schema_directive_is_accepted() {

@@ -344,6 +344,70 @@ fn schema_matches_parser_keys() {
     }
 }
 
+/// The built-in meshes and the `auto` tier: the front end's parser, the
+/// renderer, the metadata (`weft_meta`, whose lists the scene metadata
+/// schema's descriptions are generated from), the editor schema and
+/// docs/scenes.md name the same ones, in the same order.
+#[test]
+fn meshes_and_auto_tier_are_one_list() {
+    use docs::{backticked, row};
+    at_workspace_root();
+    let meta: Vec<String> = weft_meta::BUILTIN_MESHES
+        .iter()
+        .map(|m| m.to_string())
+        .collect();
+    let parser: Vec<String> = scene::model::BuiltinMesh::ALL
+        .iter()
+        .map(|m| m.name().to_string())
+        .collect();
+    let renderer: Vec<String> = weft_render::SceneKind::ALL
+        .iter()
+        .map(|k| k.name().to_string())
+        .collect();
+    assert_eq!(
+        parser, meta,
+        "weft_front's BuiltinMesh against weft_meta::BUILTIN_MESHES"
+    );
+    assert_eq!(
+        renderer, meta,
+        "weft_render's SceneKind against weft_meta::BUILTIN_MESHES"
+    );
+
+    let s = schema::load("schemas/scene.schema.json");
+    let instance = &s["definitions"]["instance"];
+    assert_eq!(
+        enum_values(resolve(&s, &instance["properties"]["mesh"]), "mesh"),
+        meta,
+        "schemas/scene.schema.json: mesh"
+    );
+    assert_eq!(
+        instance["allOf"][0]["if"]["properties"]["tier"]["const"],
+        scene::parse::AUTO_TIER,
+        "schemas/scene.schema.json: the `auto` tier"
+    );
+
+    let doc = docs::load("docs/scenes.md");
+    let mesh = row(&doc, "### `[[instances]]`", "mesh");
+    assert_eq!(backticked(&mesh[3]), meta, "docs/scenes.md: the `mesh` row");
+    for key in ["tier", "error_budget", "screen_size"] {
+        let r = row(&doc, "### `[[instances]]`", key).join(" | ");
+        assert!(
+            backticked(&r).iter().any(|t| t == scene::parse::AUTO_TIER),
+            "docs/scenes.md: the `{key}` row does not name `\"{}\"`",
+            scene::parse::AUTO_TIER
+        );
+    }
+    let inputs: Vec<String> = weft_meta::VERTEX_INPUTS
+        .iter()
+        .map(|(n, _)| n.to_string())
+        .collect();
+    assert_eq!(
+        backticked(&row(&doc, "### `[scene]`", "vertex_inputs")[3]),
+        inputs,
+        "docs/scenes.md: `[scene]` vertex_inputs"
+    );
+}
+
 /// Every scene file in the repository names the schema on its first line.
 #[test]
 fn schema_directive_is_accepted() {

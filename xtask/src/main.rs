@@ -27,9 +27,11 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Rewrite generated/ from materials/ (atomically, removing stale files).
+    /// Rewrite generated/ from materials/ (atomically, removing stale files),
+    /// then the bindings table of each material's README (`<!-- weft:bindings:… -->`).
     Regenerate {
-        /// Do not write: fail and list the stale files if generated/ is out of date.
+        /// Do not write: fail and list the stale files if generated/ or a README's
+        /// bindings table is out of date.
         #[arg(long, conflicts_with = "reports")]
         check: bool,
         /// Also run the shading benchmark and rewrite its reports in
@@ -370,6 +372,22 @@ fn regenerate(root: &Path, check: bool) -> ExitCode {
     };
     let generated = root.join("generated");
     if check {
+        match readme_binding_tables(root, &out.files, true) {
+            Ok(stale) if stale.is_empty() => {}
+            Ok(stale) => {
+                eprintln!(
+                    "bindings tables in material READMEs are stale; run `cargo xtask regenerate`:"
+                );
+                for p in &stale {
+                    eprintln!("  {}", p.strip_prefix(root).unwrap_or(p).display());
+                }
+                return ExitCode::FAILURE;
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
         return match output::check(&generated, &out.files, PRESERVED) {
             Ok(s) if s.is_clean() => {
                 println!("generated/ is up to date ({} files)", out.files.len());
@@ -402,13 +420,64 @@ fn regenerate(root: &Path, check: bool) -> ExitCode {
                 out.variant_count,
                 out.files.len()
             );
-            ExitCode::SUCCESS
+            match readme_binding_tables(root, &out.files, false) {
+                Ok(updated) => {
+                    for p in updated {
+                        println!("updated the bindings table in {}", p.display());
+                    }
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::FAILURE
+                }
+            }
         }
         Err(e) => {
             eprintln!("error: cannot write generated/: {e}");
             ExitCode::FAILURE
         }
     }
+}
+
+/// The bindings table of each material's README (`<!-- weft:bindings:… -->`,
+/// `weft_golden::bindings`), from the metadata just built: rewritten, or with
+/// `check` only compared. Returns the READMEs whose table changed (or would).
+/// A README without the markers is left alone (tests/metadata_contract.rs
+/// requires them in every material's README).
+fn readme_binding_tables(
+    root: &Path,
+    files: &std::collections::BTreeMap<String, Vec<u8>>,
+    check: bool,
+) -> Result<Vec<PathBuf>, String> {
+    use weft_golden::{bindings, shading::replace_marked};
+    let mut changed = Vec::new();
+    for (rel, bytes) in files {
+        let mut parts = rel.split('/');
+        let (Some(dir), Some(file), None) = (parts.next(), parts.next(), parts.next()) else {
+            continue;
+        };
+        if file != format!("{dir}.meta.json") {
+            continue;
+        }
+        let meta: weft_meta::MaterialMetadata =
+            serde_json::from_slice(bytes).map_err(|e| format!("generated/{rel}: {e}"))?;
+        let readme = root.join("materials").join(&meta.name).join("README.md");
+        let Ok(text) = std::fs::read_to_string(&readme) else {
+            continue;
+        };
+        let Some(new) = replace_marked(&text, bindings::MARKER, &bindings::readme_table(&meta))
+        else {
+            continue;
+        };
+        if new != text {
+            if !check {
+                std::fs::write(&readme, new).map_err(|e| format!("{}: {e}", readme.display()))?;
+            }
+            changed.push(readme);
+        }
+    }
+    Ok(changed)
 }
 
 fn median(mut v: Vec<Duration>) -> Duration {

@@ -141,6 +141,7 @@ pub const LIMITS_KEYS: &[&str] = &[
     "max_inter_stage_shader_variables",
 ];
 pub use crate::values::{KEYFRAME_KEYS, STOP_KEYS};
+pub use tables::{RECIPES, RINGS};
 
 /// Default budget when a material sets no `max_variants`.
 pub const DEFAULT_MAX_VARIANTS: usize = 64;

@@ -6,6 +6,7 @@
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
 pub mod auto_tier;
+pub mod bindings;
 pub mod cost_tables;
 pub mod error_grid;
 pub mod film;

@@ -10,15 +10,37 @@
 //! [`MaterialMetadata::from_json`] rejects a major it does not know with an
 //! error naming both versions.
 
+/// `ALL` (every value, in the order docs and editor schemas list them) and
+/// `name()` (the value as serde spells it: a unit test holds the two to
+/// serde and to the generated schema) for a unit enum of the metadata, so
+/// parsers and tests take the accepted names from the type itself.
+macro_rules! value_names {
+    ($ty:ident { $($variant:ident => $name:literal),+ $(,)? }) => {
+        impl $ty {
+            /// Every value, in the order docs and editor schemas list them.
+            pub const ALL: [$ty; [$($name),+].len()] = [$($ty::$variant),+];
+
+            /// The value's name in TOML and JSON.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($ty::$variant => $name),+
+                }
+            }
+        }
+    };
+}
+
 pub mod bake;
 pub mod files;
 pub mod gpu_model;
 pub mod limits;
+pub mod names;
 pub mod pipeline;
 pub mod scene;
 pub mod version;
 
 pub use limits::DeviceLimits;
+pub use names::{BUILTIN_MESHES, ENGINE_RESOURCE_IDS, VERTEX_INPUTS};
 pub use pipeline::*;
 pub use version::MetaError;
 
@@ -116,7 +138,8 @@ pub struct Measurements {
     pub width: u32,
     /// Height of the render target the figures were measured at, in pixels.
     pub height: u32,
-    /// Built-in scene (`sphere`, `cloth`, `swatch`).
+    /// The built-in mesh the figures were measured on (one of [`BUILTIN_MESHES`]).
+    #[schemars(description = names::measured_mesh_description())]
     pub scene: String,
     /// Keywords and parameters: the material's defaults unless stated here.
     pub setup: String,
@@ -556,6 +579,11 @@ pub enum KeywordKind {
     Enum,
 }
 
+value_names!(KeywordKind {
+    Toggle => "toggle",
+    Enum => "enum",
+});
+
 /// How a keyword's values become compiled code.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
@@ -567,6 +595,11 @@ pub enum KeywordMode {
     /// one file per value.
     Constant,
 }
+
+value_names!(KeywordMode {
+    Static => "static",
+    Constant => "constant",
+});
 
 /// A keyword: a compile-time switch shown in the inspector.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
@@ -653,6 +686,14 @@ pub enum BlendMode {
     Multiply,
 }
 
+value_names!(BlendMode {
+    Opaque => "opaque",
+    Alpha => "alpha",
+    Premultiplied => "premultiplied",
+    Additive => "additive",
+    Multiply => "multiply",
+});
+
 /// Which faces are culled; which face is front is `primitive.front_face` (counter-clockwise in
 /// WGSL).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
@@ -665,6 +706,12 @@ pub enum CullMode {
     /// Cull back faces.
     Back,
 }
+
+value_names!(CullMode {
+    None => "none",
+    Front => "front",
+    Back => "back",
+});
 
 /// A comparison function (WebGPU `GPUCompareFunction`): the incoming value (a fragment's depth,
 /// or a comparison sampler's reference) against the stored one. Depth 0 is near, 1 far.
@@ -689,6 +736,17 @@ pub enum DepthTest {
     NotEqual,
 }
 
+value_names!(DepthTest {
+    Always => "always",
+    Never => "never",
+    Less => "less",
+    LessEqual => "less_equal",
+    Equal => "equal",
+    NotEqual => "not_equal",
+    Greater => "greater",
+    GreaterEqual => "greater_equal",
+});
+
 /// What a stencil test does to the stored value (WebGPU `GPUStencilOperation`); only the bits
 /// of the write mask change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
@@ -711,6 +769,17 @@ pub enum StencilOperation {
     /// Subtract 1, 0 wrapping to 255.
     DecrementWrap,
 }
+
+value_names!(StencilOperation {
+    Keep => "keep",
+    Zero => "zero",
+    Replace => "replace",
+    Invert => "invert",
+    IncrementClamp => "increment_clamp",
+    DecrementClamp => "decrement_clamp",
+    IncrementWrap => "increment_wrap",
+    DecrementWrap => "decrement_wrap",
+});
 
 /// A pass's stencil test and writes as the material author wrote them (`[[pass]] stencil`),
 /// the same for front and back faces. The test passes when
@@ -795,10 +864,12 @@ pub struct Pass {
 /// A vertex attribute the mesh provides.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct VertexInput {
-    /// position, normal, tangent, uv0, uv1 or color.
+    /// The input's name: one of [`VERTEX_INPUTS`].
+    #[schemars(description = names::vertex_input_name_description())]
     pub name: String,
-    /// Shader location (`@location`), fixed by the engine interface: position 0, normal 1,
-    /// tangent 2, uv0 3, uv1 4, color 5.
+    /// Shader location (`@location`), fixed by the engine interface: the input's index in
+    /// [`VERTEX_INPUTS`].
+    #[schemars(description = names::vertex_input_location_description())]
     pub location: u32,
     /// WebGPU vertex format name, e.g. `float32x3`.
     pub format: String,
@@ -982,7 +1053,9 @@ pub struct Binding {
     /// Sampler bindings: the layout entry and the sampler to create.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sampler: Option<SamplerBinding>,
-    /// Groups 0 and 2: which engine data the binding carries.
+    /// Groups 0 and 2: which engine data the binding carries; group 1: the baked table
+    /// (`[tables]`) it carries. Absent for material parameters, the material uniform and the
+    /// material samplers.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub resource: Option<EngineResource>,
 }

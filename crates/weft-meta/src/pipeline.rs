@@ -357,10 +357,13 @@ pub struct SamplerBinding {
     pub compare: Option<DepthTest>,
 }
 
-/// Engine data a group-0 or group-2 binding carries.
+/// The data a binding carries that is not a material parameter: engine data (groups 0 and
+/// 2) or a material's baked table (`[tables]`, group 1).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct EngineResource {
-    /// Stable name: `frame`, `object`, `environment`, `split_sum_lut`, `sheen_albedo_lut`.
+    /// Stable name: one of [`crate::ENGINE_RESOURCE_IDS`] for the engine interface's bindings
+    /// (groups 0 and 2), or `<material>.<table>` for a material's baked table (group 1).
+    #[schemars(description = crate::names::engine_resource_id_description())]
     pub id: String,
     /// What the data is and how to fill it.
     pub description: String,

@@ -7,6 +7,7 @@
 //! still reads from its (shrunk) material uniform, the textures to bind, its
 //! passes, mesh and transform. Nothing here needs the material metadata.
 
+pub use crate::names::{AUTO_TIER, BUILTIN_MESHES};
 use crate::{Pass, TextureDefault, VariantShader};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -129,7 +130,8 @@ pub struct SceneInstance {
     /// The material preset the instance's values start from; absent when none.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub preset: Option<String>,
-    /// The tier built (after `auto` was decided).
+    /// The tier built (after [`AUTO_TIER`] was decided).
+    #[schemars(description = crate::names::tier_built_description())]
     pub tier: String,
     /// Every keyword's value (static and constant mode).
     pub keywords: BTreeMap<String, String>,
@@ -152,11 +154,13 @@ pub struct SceneInstance {
     pub textures: BTreeMap<String, SceneTexture>,
     /// Passes with their render state, in the material's order.
     pub passes: Vec<Pass>,
-    /// The built-in mesh to draw: `sphere`, `cloth` or `swatch`.
+    /// The built-in mesh to draw: one of [`BUILTIN_MESHES`].
+    #[schemars(description = crate::names::mesh_description())]
     pub mesh: String,
     /// Placement in world space (`transform.model` is the matrix to use).
     pub transform: SceneTransform,
-    /// How `tier = "auto"` was decided.
+    /// How `tier = "auto"` ([`AUTO_TIER`]) was decided; absent for a tier named in the manifest.
+    #[schemars(description = crate::names::tier_choice_description())]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tier_choice: Option<TierChoice>,
 }

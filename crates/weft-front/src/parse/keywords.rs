@@ -25,15 +25,18 @@ pub(super) fn parse_keyword(
             "use UPPER_SNAKE_CASE not ending in a digit; WEFT_TIER and TIER_* are reserved for tiers",
         );
     }
-    let kind_name = t.string("type", cx).unwrap_or_else(|| "toggle".into());
-    let kind = match kind_name.as_str() {
-        "toggle" => KeywordKind::Toggle,
-        "enum" => KeywordKind::Enum,
-        other => {
-            let hint = crate::diag::did_you_mean(other, ["toggle", "enum"])
-                .map_or("use `toggle` or `enum`".to_string(), |s| {
-                    format!("did you mean `{s}`?")
-                });
+    let kind_name = t
+        .string("type", cx)
+        .unwrap_or_else(|| KeywordKind::Toggle.name().into());
+    let kind = match KeywordKind::ALL.into_iter().find(|k| k.name() == kind_name) {
+        Some(kind) => kind,
+        None => {
+            let other = kind_name.as_str();
+            let names = KeywordKind::ALL.map(KeywordKind::name);
+            let hint = crate::diag::did_you_mean(other, names).map_or_else(
+                || format!("use `{}`", names.join("` or `")),
+                |s| format!("did you mean `{s}`?"),
+            );
             cx.error_with_note(
                 "unknown-value",
                 format!("unknown keyword type `{other}`"),
@@ -44,19 +47,23 @@ pub(super) fn parse_keyword(
             return None;
         }
     };
-    let mode = match t.string("mode", cx).as_deref() {
-        None | Some("static") => KeywordMode::Static,
-        Some("constant") => KeywordMode::Constant,
-        Some(other) => {
-            cx.error_with_note(
-                "unknown-value",
-                format!("unknown keyword mode `{other}`"),
-                t.span_of("mode"),
-                "unknown",
-                "use `static` (a variant per value) or `constant` (a pipeline constant)",
-            );
-            return None;
-        }
+    let mode_name = t.string("mode", cx);
+    let mode = match mode_name.as_deref() {
+        None => KeywordMode::Static,
+        Some(name) => match KeywordMode::ALL.into_iter().find(|m| m.name() == name) {
+            Some(mode) => mode,
+            None => {
+                let other = name;
+                cx.error_with_note(
+                    "unknown-value",
+                    format!("unknown keyword mode `{other}`"),
+                    t.span_of("mode"),
+                    "unknown",
+                    "use `static` (a variant per value) or `constant` (a pipeline constant)",
+                );
+                return None;
+            }
+        },
     };
     let values: Vec<String> = match kind {
         KeywordKind::Toggle => {

@@ -29,12 +29,19 @@ pub(super) fn default_pass(file: usize, span: Span) -> Pass {
     }
 }
 
-fn pick<T: Copy>(t: &Table, key: &str, options: &[(&str, T)], cx: &mut Cx) -> Option<T> {
+/// The value of `key` among a metadata enum's values (`ALL`, spelled by `name`).
+fn pick<T: Copy>(
+    t: &Table,
+    key: &str,
+    options: &[T],
+    name: fn(T) -> &'static str,
+    cx: &mut Cx,
+) -> Option<T> {
     let s = t.string(key, cx)?;
-    match options.iter().find(|(n, _)| *n == s) {
-        Some((_, v)) => Some(*v),
+    match options.iter().find(|v| name(**v) == s) {
+        Some(v) => Some(*v),
         None => {
-            let names: Vec<&str> = options.iter().map(|(n, _)| *n).collect();
+            let names: Vec<&str> = options.iter().map(|v| name(*v)).collect();
             let hint = crate::diag::did_you_mean(&s, names.iter().copied()).map_or_else(
                 || format!("expected one of: {}", names.join(", ")),
                 |x| format!("did you mean `{x}`?"),
@@ -61,38 +68,17 @@ pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> O
     pass.fragment = t.string("fragment", cx).unwrap_or(pass.fragment);
     pass.vertex_span = t.span_of("vertex");
     pass.fragment_span = t.span_of("fragment");
-    use BlendMode as B;
-    if let Some(b) = pick(
-        &t,
-        "blend",
-        &[
-            ("opaque", B::Opaque),
-            ("alpha", B::Alpha),
-            ("premultiplied", B::Premultiplied),
-            ("additive", B::Additive),
-            ("multiply", B::Multiply),
-        ],
-        cx,
-    ) {
+    if let Some(b) = pick(&t, "blend", &BlendMode::ALL, BlendMode::name, cx) {
         pass.blend = b;
-        if b != B::Opaque {
+        if b != BlendMode::Opaque {
             pass.depth_write = false;
             pass.queue = 3000;
         }
     }
-    if let Some(c) = pick(
-        &t,
-        "cull",
-        &[
-            ("none", CullMode::None),
-            ("front", CullMode::Front),
-            ("back", CullMode::Back),
-        ],
-        cx,
-    ) {
+    if let Some(c) = pick(&t, "cull", &CullMode::ALL, CullMode::name, cx) {
         pass.cull = c;
     }
-    if let Some(d) = pick(&t, "depth_test", COMPARE, cx) {
+    if let Some(d) = pick(&t, "depth_test", &DepthTest::ALL, DepthTest::name, cx) {
         pass.depth_test = d;
     }
     if let Some(s) = t.get("stencil") {
@@ -136,30 +122,6 @@ pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> O
     Some(pass)
 }
 
-/// Comparison names of `depth_test` and `stencil.compare`.
-const COMPARE: &[(&str, DepthTest)] = &[
-    ("always", DepthTest::Always),
-    ("never", DepthTest::Never),
-    ("less", DepthTest::Less),
-    ("less_equal", DepthTest::LessEqual),
-    ("equal", DepthTest::Equal),
-    ("not_equal", DepthTest::NotEqual),
-    ("greater", DepthTest::Greater),
-    ("greater_equal", DepthTest::GreaterEqual),
-];
-
-/// Operation names of `stencil.pass_op`, `fail_op` and `depth_fail_op`.
-const STENCIL_OPS: &[(&str, StencilOperation)] = &[
-    ("keep", StencilOperation::Keep),
-    ("zero", StencilOperation::Zero),
-    ("replace", StencilOperation::Replace),
-    ("invert", StencilOperation::Invert),
-    ("increment_clamp", StencilOperation::IncrementClamp),
-    ("decrement_clamp", StencilOperation::DecrementClamp),
-    ("increment_wrap", StencilOperation::IncrementWrap),
-    ("decrement_wrap", StencilOperation::DecrementWrap),
-];
-
 /// A pass's `stencil` table. Omitted keys: reference 0, compare `always`,
 /// every operation `keep`, both masks 255 (an 8-bit stencil), so a table
 /// that only sets what it needs reads as written.
@@ -180,11 +142,14 @@ fn parse_stencil(v: &Value, cx: &mut Cx) -> Option<StencilRenderState> {
         }
         None => default,
     };
-    let op =
-        |key: &str, cx: &mut Cx| pick(&t, key, STENCIL_OPS, cx).unwrap_or(StencilOperation::Keep);
+    let op = |key: &str, cx: &mut Cx| {
+        pick(&t, key, &StencilOperation::ALL, StencilOperation::name, cx)
+            .unwrap_or(StencilOperation::Keep)
+    };
     Some(StencilRenderState {
         reference: byte("reference", 0, cx),
-        compare: pick(&t, "compare", COMPARE, cx).unwrap_or(DepthTest::Always),
+        compare: pick(&t, "compare", &DepthTest::ALL, DepthTest::name, cx)
+            .unwrap_or(DepthTest::Always),
         pass_op: op("pass_op", cx),
         fail_op: op("fail_op", cx),
         depth_fail_op: op("depth_fail_op", cx),

@@ -13,6 +13,9 @@ pub const RECIPES: &[(&str, &str)] = &[(
     "Penner & Borshukov's pre-integrated skin diffuse over the Burley profile",
 )];
 
+/// `ring` values of `preintegrated_skin` and whether each is the half ring.
+pub const RINGS: &[(&str, bool)] = &[("full", false), ("half", true)];
+
 /// Texels per axis a table may have.
 pub const TABLE_SIZE_RANGE: [u32; 2] = [2, 512];
 
@@ -87,9 +90,12 @@ pub(super) fn parse_tables(top: &Table, material: &mut Material, cx: &mut Cx) {
                 let Some(shape) = skin_shape(&t, cx) else {
                     continue;
                 };
-                let half_ring = match t.string("ring", cx).as_deref() {
-                    None | Some("full") => false,
-                    Some("half") => true,
+                let ring = t.string("ring", cx);
+                let half_ring = match ring.as_deref() {
+                    None => false,
+                    Some(name) if RINGS.iter().any(|(n, _)| *n == name) => {
+                        RINGS.iter().any(|(n, half)| *n == name && *half)
+                    }
                     Some(other) => {
                         cx.error_with_note(
                             "unknown-value",

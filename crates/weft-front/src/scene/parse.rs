@@ -51,8 +51,8 @@ pub const INSTANCE_KEYS: &[&str] = &[
 
 /// The materials root when `[scene]` sets no `materials`, relative to the scene file.
 pub const DEFAULT_MATERIALS: &str = "../materials";
-/// The `tier` value that lets the build choose the tier.
-pub const AUTO_TIER: &str = "auto";
+/// The `tier` value that lets the build choose the tier (the metadata's name for it).
+pub use weft_meta::scene::AUTO_TIER;
 /// `screen_size` limits (pixels) for `tier = "auto"`.
 pub const SCREEN_SIZE_RANGE: std::ops::RangeInclusive<i64> = 16..=4096;
 /// Engine interface v1 has one directional light slot.
