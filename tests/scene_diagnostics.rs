@@ -417,3 +417,31 @@ fn schema_directive_is_accepted() {
         assert_schema_directive(&path);
     }
 }
+
+/// `[scene] gpu_family`: the editor schema offers exactly the families the
+/// parser accepts (the GPU model's), with the same default.
+#[test]
+fn gpu_family_schema_is_the_modelled_families() {
+    at_workspace_root();
+    let s = schema::load("schemas/scene.schema.json");
+    let family = &s["definitions"]["scene"]["properties"]["gpu_family"];
+    let listed: Vec<&str> = family["enum"]
+        .as_array()
+        .expect("gpu_family has an enum")
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert_eq!(listed, weft_meta::scene::GPU_COST_FAMILIES);
+    assert_eq!(
+        family["default"].as_str(),
+        Some(weft_meta::scene::DEFAULT_GPU_COST_FAMILY)
+    );
+    let docs = std::fs::read_to_string("docs/scenes.md").unwrap();
+    let row = docs
+        .lines()
+        .find(|l| l.starts_with("| `gpu_family` |"))
+        .expect("docs/scenes.md documents gpu_family");
+    for f in weft_meta::scene::GPU_COST_FAMILIES {
+        assert!(row.contains(&format!("`{f}`")), "{row}");
+    }
+}
