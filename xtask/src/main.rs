@@ -13,6 +13,8 @@ mod bench_scale;
 #[cfg(feature = "screenshots")]
 mod inspector;
 mod scale;
+#[cfg(test)]
+mod tidy;
 
 /// Paths under `generated/` that `regenerate` keeps: measured reports and
 /// the gallery have their own commands (timings vary by machine).

@@ -1,0 +1,151 @@
+//! Keeps ARCHITECTURE.md a true map: every path it names in backticks
+//! exists, every bare file name it names (`fold.rs`) exists somewhere in the
+//! code, and every crate of the workspace has its entry. Run by the test
+//! below (so by `cargo test --workspace`); only tests use it.
+
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// Top-level folders a named path may start with.
+const TOP_FOLDERS: [&str; 10] = [
+    "crates",
+    "tests",
+    "xtask",
+    "fuzz",
+    "docs",
+    "materials",
+    "generated",
+    "schemas",
+    "scenes",
+    ".ci",
+];
+
+/// Folders whose file names a bare name (`fold.rs`) may refer to.
+const CODE_FOLDERS: [&str; 5] = ["crates", "tests", "xtask", "fuzz", "materials"];
+
+/// Extensions of the bare file names checked.
+const EXTENSIONS: [&str; 7] = ["rs", "wgsl", "toml", "py", "js", "css", "html"];
+
+/// What ARCHITECTURE.md names that is not there, and crates it does not name.
+pub fn architecture_problems(root: &Path) -> Result<Vec<String>, String> {
+    let path = root.join("ARCHITECTURE.md");
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut names = BTreeSet::new();
+    for folder in CODE_FOLDERS {
+        collect_names(&root.join(folder), &mut names);
+    }
+    let mut problems = Vec::new();
+    for token in backticked(&text) {
+        // Placeholders, globs, code and prose are not paths.
+        if token
+            .chars()
+            .any(|c| "<>*{} \"=…,()[]:".contains(c) || c.is_uppercase())
+        {
+            continue;
+        }
+        if let Some((first, _)) = token.split_once('/') {
+            if TOP_FOLDERS.contains(&first) {
+                if !root.join(token.trim_end_matches('/')).exists() {
+                    problems.push(format!("`{token}` does not exist"));
+                }
+            } else if token.ends_with('/') && !token[..token.len() - 1].contains('/') {
+                // A bare folder name (`bake/`).
+                if !names.contains(token) {
+                    problems.push(format!("no folder `{token}` in the code"));
+                }
+            }
+        } else if let Some((stem, ext)) = token.rsplit_once('.')
+            && !stem.is_empty()
+            && EXTENSIONS.contains(&ext)
+            && !names.contains(token)
+        {
+            problems.push(format!("no file `{token}` in the code"));
+        }
+    }
+    let crates = root.join("crates");
+    let entries = std::fs::read_dir(&crates).map_err(|e| format!("{}: {e}", crates.display()))?;
+    let mut members: Vec<String> = entries
+        .filter_map(|e| e.ok())
+        .filter(|e| e.path().join("Cargo.toml").is_file())
+        .filter_map(|e| e.file_name().into_string().ok())
+        .map(|n| format!("crates/{n}"))
+        .collect();
+    members.extend(["xtask".into(), "tests".into(), "fuzz".into()]);
+    members.sort();
+    for m in members {
+        if !text.contains(&format!("`{m}`")) && !text.contains(&format!("`{m}/`")) {
+            problems.push(format!("`{m}` has no entry"));
+        }
+    }
+    Ok(problems)
+}
+
+/// The text between each pair of backticks (code spans; fenced blocks' lines too).
+fn backticked(text: &str) -> Vec<&str> {
+    text.split('`')
+        .enumerate()
+        .filter(|(i, s)| i % 2 == 1 && !s.is_empty() && !s.contains('\n'))
+        .map(|(_, s)| s)
+        .collect()
+}
+
+/// File names and `folder/` names under `dir`, build output excluded.
+fn collect_names(dir: &Path, out: &mut BTreeSet<String>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.filter_map(|e| e.ok()) {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if name == "target" || name.starts_with('.') {
+            continue;
+        }
+        if e.path().is_dir() {
+            out.insert(format!("{name}/"));
+            collect_names(&e.path(), out);
+        } else {
+            out.insert(name);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn architecture_md_names_only_what_exists_and_every_crate() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let problems = architecture_problems(root).unwrap();
+        assert!(
+            problems.is_empty(),
+            "ARCHITECTURE.md is out of date:\n{}",
+            problems.join("\n")
+        );
+    }
+
+    #[test]
+    fn a_missing_file_or_crate_is_reported() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        std::fs::create_dir_all(root.join("crates/a/src")).unwrap();
+        std::fs::write(root.join("crates/a/Cargo.toml"), "").unwrap();
+        std::fs::write(root.join("crates/a/src/fold.rs"), "").unwrap();
+        std::fs::create_dir_all(root.join("crates/b")).unwrap();
+        std::fs::create_dir_all(root.join("fuzz")).unwrap();
+        std::fs::write(root.join("crates/b/Cargo.toml"), "").unwrap();
+        std::fs::write(
+            root.join("ARCHITECTURE.md"),
+            "- `crates/a`: `fold.rs`, `gone.rs`, `crates/a/src/missing.rs`, `<name>.rs`\n- `xtask`, `tests`, `fuzz/`\n",
+        )
+        .unwrap();
+        let problems = architecture_problems(root).unwrap();
+        assert_eq!(
+            problems,
+            [
+                "no file `gone.rs` in the code",
+                "`crates/a/src/missing.rs` does not exist",
+                "`crates/b` has no entry",
+            ]
+        );
+    }
+}
