@@ -317,7 +317,7 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
         |p: &[(f64, f64)]| loop_report::spearman(p).map_or("–".into(), |r| format!("{r:.3}"));
     let gpus: Vec<String> = loop_report::committed_gpu_timings(generated)
         .iter()
-        .filter_map(|g| {
+        .map(|g| {
             let pairs: Vec<(f64, f64)> = models
                 .iter()
                 .filter_map(|m| {
@@ -329,14 +329,14 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
                 .iter()
                 .filter_map(|m| Some((m.static_cost, g.ratio(&m.material, &m.tier)?)))
                 .collect();
-            Some(format!(
+            format!(
                 "{} (`generated/reports/{}`, {} pairs): executed cost ρ = {}, static cost ρ = {}",
                 g.adapter,
                 g.file,
                 pairs.len(),
                 rho(&pairs),
                 rho(&statics)
-            ))
+            )
         })
         .collect();
     let _ = writeln!(
