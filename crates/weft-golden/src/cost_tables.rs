@@ -296,27 +296,10 @@ pub fn scene_model_section(
                     md.push_str(" — | — | — | — | — |");
                     continue;
                 }
-                let sum = |pick: &dyn Fn(&(FragmentCost, FragmentCost)) -> FragmentCost| {
-                    costs.iter().map(pick).fold(
-                        FragmentCost {
-                            instructions: 0,
-                            vgprs: 0,
-                            waves: u64::MAX,
-                            static_cost: 0.0,
-                            executed_cost: 0.0,
-                            unknown_loops: 0,
-                        },
-                        |a, c| FragmentCost {
-                            instructions: a.instructions + c.instructions,
-                            vgprs: a.vgprs.max(c.vgprs),
-                            waves: a.waves.min(c.waves),
-                            static_cost: a.static_cost + c.static_cost,
-                            executed_cost: a.executed_cost + c.executed_cost,
-                            unknown_loops: a.unknown_loops + c.unknown_loops,
-                        },
-                    )
+                let sum = |pick: fn(&(FragmentCost, FragmentCost)) -> FragmentCost| {
+                    FragmentCost::combined(costs.iter().map(pick)).expect("not empty")
                 };
-                let (s, g) = (sum(&|c| c.0), sum(&|c| c.1));
+                let (s, g) = (sum(|c| c.0), sum(|c| c.1));
                 let saving = 100.0 * (1.0 - s.executed_cost / g.executed_cost.max(1e-9));
                 reductions[k]
                     .push(100.0 * (1.0 - s.instructions as f64 / g.instructions.max(1) as f64));

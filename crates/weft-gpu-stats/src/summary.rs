@@ -141,17 +141,9 @@ fn fragment_cost(generated: &Path, p: &PipelineStats, entry: &str) -> Option<Fra
     })
 }
 
-/// Several passes as one: costs add, registers take the worst pass.
+/// Several passes as one ([`FragmentCost::combined`]).
 fn combine(costs: &[FragmentCost]) -> Option<FragmentCost> {
-    let first = *costs.first()?;
-    Some(costs[1..].iter().fold(first, |a, c| FragmentCost {
-        instructions: a.instructions + c.instructions,
-        vgprs: a.vgprs.max(c.vgprs),
-        waves: a.waves.min(c.waves),
-        static_cost: a.static_cost + c.static_cost,
-        executed_cost: a.executed_cost + c.executed_cost,
-        unknown_loops: a.unknown_loops + c.unknown_loops,
-    }))
+    FragmentCost::combined(costs.iter().copied())
 }
 
 fn round(x: f64) -> f64 {

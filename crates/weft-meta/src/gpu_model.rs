@@ -95,6 +95,22 @@ pub struct SceneShaderCost {
     pub generic: FragmentCost,
 }
 
+impl FragmentCost {
+    /// Several passes' fragment stages as one: instructions, costs and
+    /// unknown loops add; registers take the worst pass (most VGPRs, fewest
+    /// waves). None for no passes.
+    pub fn combined(costs: impl IntoIterator<Item = FragmentCost>) -> Option<FragmentCost> {
+        costs.into_iter().reduce(|a, c| FragmentCost {
+            instructions: a.instructions + c.instructions,
+            vgprs: a.vgprs.max(c.vgprs),
+            waves: a.waves.min(c.waves),
+            static_cost: a.static_cost + c.static_cost,
+            executed_cost: a.executed_cost + c.executed_cost,
+            unknown_loops: a.unknown_loops + c.unknown_loops,
+        })
+    }
+}
+
 impl ModelSummary {
     /// Reads `<reports>/gpu-model.json` (`reports`: e.g. `generated/reports`).
     pub fn load(reports: &Path) -> Result<ModelSummary, String> {
