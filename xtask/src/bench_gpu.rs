@@ -127,7 +127,7 @@ fn run(root: &Path, args: &GpuArgs) -> Result<(), String> {
     if args.no_scenes {
         return Ok(());
     }
-    let inputs = crate::scene_inputs(root, &[])?;
+    let inputs = crate::bench_scene::scene_inputs(root, &[])?;
     let options = SceneBenchOptions {
         width: args.scene_size.0,
         height: args.scene_size.1,

@@ -30,6 +30,18 @@ pub struct GpuModelArgs {
     disassembly: Option<std::path::PathBuf>,
 }
 
+impl GpuModelArgs {
+    /// The default families, written (as `regenerate --reports` runs it).
+    pub fn write_defaults() -> GpuModelArgs {
+        GpuModelArgs {
+            families: Vec::new(),
+            write: true,
+            json: None,
+            disassembly: None,
+        }
+    }
+}
+
 pub fn bench_gpu_model(root: &Path, args: &GpuModelArgs) -> ExitCode {
     match run(root, args) {
         Ok(()) => ExitCode::SUCCESS,
@@ -103,7 +115,7 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
         std::fs::write(&json_path, summary.to_json())
             .map_err(|e| format!("{}: {e}", json_path.display()))?;
         println!("wrote {}", json_path.display());
-        crate::rewrite_cost_tables(root)?;
+        crate::bench_shading::rewrite_cost_tables(root)?;
     }
     if let Some(json_path) = &args.json {
         let mut json = serde_json::to_string(&stats).map_err(|e| e.to_string())?;
