@@ -11,6 +11,7 @@ pub mod build;
 mod dead_calls;
 mod evaluate;
 pub mod fold;
+mod identities;
 pub mod instance;
 pub mod tiers;
 
