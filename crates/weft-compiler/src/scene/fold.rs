@@ -32,6 +32,7 @@
 //! loop it will not unroll resolved (microcylinder's one-offset threads) and
 //! a degenerate `clamp` folded (docs/performance.md, "Scene specialisation").
 
+use super::call_sites::{fold_constant_returns, specialise_calls};
 use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use super::identities::simplify_identities;
@@ -186,6 +187,7 @@ const MAX_ROUNDS: usize = 16;
 /// (`locals.rs`, `loops.rs`), fold calls that return a constant and
 /// specialise calls with constant arguments (`call_sites.rs`).
 fn fold_to_fixed_point(module: &mut Module) -> Result<(), String> {
+    let mut memo = super::call_sites::Memo::new();
     for round in 0..=MAX_ROUNDS {
         let info = crate::compose::validator().validate(module).map_err(|e| {
             let when = if round == 0 {
@@ -196,11 +198,13 @@ fn fold_to_fixed_point(module: &mut Module) -> Result<(), String> {
             format!("{when}: {}", error_chain(e.as_inner()))
         })?;
         evaluate_constants(module, &info);
-        let changed = simplify_identities(module, &info);
+        let mut changed = simplify_identities(module, &info);
         prune_all(module);
         if round == MAX_ROUNDS {
             break;
         }
+        changed += fold_constant_returns(module);
+        changed += specialise_calls(module, &mut memo);
         if changed == 0 {
             break;
         }

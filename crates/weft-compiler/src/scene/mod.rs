@@ -8,6 +8,7 @@
 //! assembles `<scene>.scene.json`; [`tiers`] is the interface for `auto` tiers.
 
 pub mod build;
+mod call_sites;
 mod dead_calls;
 mod evaluate;
 pub mod fold;
