@@ -36,6 +36,7 @@ use super::call_sites::{fold_constant_returns, specialise_calls};
 use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use super::identities::simplify_identities;
+use super::locals::forward_locals;
 use crate::specialise::prune_function;
 use naga::{
     AddressSpace, Constant, Expression, Handle, Literal, Module, Span, StructMember, Type,
@@ -203,6 +204,7 @@ fn fold_to_fixed_point(module: &mut Module) -> Result<(), String> {
         if round == MAX_ROUNDS {
             break;
         }
+        changed += forward_locals(module);
         changed += fold_constant_returns(module);
         changed += specialise_calls(module, &mut memo);
         if changed == 0 {

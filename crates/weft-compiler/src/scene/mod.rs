@@ -14,6 +14,8 @@ mod evaluate;
 pub mod fold;
 mod identities;
 pub mod instance;
+mod locals;
+mod loops;
 pub mod tiers;
 
 pub use build::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_resolved_scene};
