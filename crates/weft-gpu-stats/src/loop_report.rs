@@ -30,12 +30,32 @@ pub struct TierModel {
 /// Models the fragment stage of `p` (its disassembly must have been captured);
 /// `entry` is the pass's fragment entry point in the specialised WGSL next to the SPIR-V.
 pub fn fragment_model(generated: &Path, p: &PipelineStats, entry: &str) -> Option<StageModel> {
+    fragment_model_at(generated, p, entry, None)
+}
+
+/// [`fragment_model`] with the loops of a scene instance's specialised
+/// shader giving the trip counts `p`'s own source lacks ([`model::model_at`]).
+pub fn fragment_model_at(
+    generated: &Path,
+    p: &PipelineStats,
+    entry: &str,
+    instance: Option<&[trips::SourceLoop]>,
+) -> Option<StageModel> {
     let text = p.stage("fragment")?.disassembly.as_deref()?;
+    let source = source_loops(generated, p, entry);
+    Some(model::model_at(text, source.as_deref(), instance))
+}
+
+/// The loops of `entry` in the WGSL next to `p`'s SPIR-V.
+pub fn source_loops(
+    generated: &Path,
+    p: &PipelineStats,
+    entry: &str,
+) -> Option<Vec<trips::SourceLoop>> {
     let wgsl_path = generated.join(p.source.spirv.strip_suffix(".spv")?.to_string() + ".wgsl");
-    let source = std::fs::read_to_string(wgsl_path)
+    std::fs::read_to_string(wgsl_path)
         .ok()
-        .and_then(|w| trips::source_loops(&w, entry));
-    Some(model::model(text, source.as_deref()))
+        .and_then(|w| trips::source_loops(&w, entry))
 }
 
 /// llvmpipe's `ratio_to_standard_fast` of (material, tier) from the committed measurements.

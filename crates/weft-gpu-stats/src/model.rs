@@ -39,10 +39,32 @@ impl StageModel {
 /// Models a disassembly given the source loops of its entry point (`None`:
 /// source unknown, every loop counted once).
 pub fn model(disassembly: &str, source: Option<&[SourceLoop]>) -> StageModel {
+    model_at(disassembly, source, None)
+}
+
+/// [`model`], where a loop the shader's own source leaves without a trip
+/// count takes the one `instance` gives it: the generic variant drawing a
+/// scene instance runs its loops as many times as the instance's specialised
+/// shader, whose source has the count where the generic's reads a uniform
+/// (loops paired as [`match_loops`] pairs them; a loop the specialisation
+/// removed ran at most once and stays counted once).
+pub fn model_at(
+    disassembly: &str,
+    source: Option<&[SourceLoop]>,
+    instance: Option<&[SourceLoop]>,
+) -> StageModel {
     let program = isa::parse(disassembly);
-    let trips = match source {
+    let own = match source {
         Some(s) => match_loops(&program, s),
         None => vec![None; program.loops.len()],
+    };
+    let trips: Vec<Option<u64>> = match instance {
+        Some(i) => own
+            .iter()
+            .zip(match_loops(&program, i))
+            .map(|(o, i)| o.or(i))
+            .collect(),
+        None => own,
     };
     let mut static_cost = 0.0;
     let mut executed_cost = 0.0;
@@ -147,5 +169,26 @@ BB6:
         let unknown = model(TWO_LOOPS, None);
         assert_eq!(unknown.executed_cost, unknown.static_cost);
         assert_eq!(unknown.unknown_loops(), 2);
+    }
+
+    #[test]
+    fn an_instance_gives_the_counts_the_generic_source_lacks() {
+        // The generic's second loop reads its bound from a uniform (no count);
+        // the instance's shader has 7 there. The first loop keeps its own 12.
+        let own = [
+            src(0, 12),
+            SourceLoop {
+                depth: 0,
+                trips: None,
+                bound: None,
+            },
+        ];
+        let instance = [src(0, 3), src(0, 7)];
+        let m = model_at(TWO_LOOPS, Some(&own), Some(&instance));
+        let trips: Vec<_> = m.loops.iter().map(|l| l.trips).collect();
+        assert_eq!(trips, [Some(12), Some(7)]);
+        // An instance whose shader lost the loop (it ran once) leaves it counted once.
+        let m = model_at(TWO_LOOPS, Some(&own), Some(&instance[..1]));
+        assert_eq!(m.unknown_loops(), 1);
     }
 }

@@ -41,7 +41,14 @@ pub fn summarize(
         };
         let cost_of = |p: &PipelineStats| -> Option<FragmentCost> {
             let entry = entries.get(&(p.source.material.clone(), p.pass.clone()))?;
-            fragment_cost(generated, p, entry)
+            fragment_cost(generated, p, entry, None)
+        };
+        // The generic variant drawing a scene instance: its loops as many
+        // times as the instance's shader shows (model::model_at).
+        let generic_at = |g: &PipelineStats, scene: &PipelineStats| -> Option<FragmentCost> {
+            let entry = entries.get(&(g.source.material.clone(), g.pass.clone()))?;
+            let instance = loop_report::source_loops(generated, scene, entry);
+            fragment_cost(generated, g, entry, instance.as_deref())
         };
         let mut tiers = Vec::new();
         for m in &models {
@@ -97,7 +104,7 @@ pub fn summarize(
         let mut scene_shaders = Vec::new();
         for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
             let s = &p.source;
-            let generic = pipeline(&s.material, &s.variant, &p.pass).and_then(cost_of);
+            let generic = pipeline(&s.material, &s.variant, &p.pass).and_then(|g| generic_at(g, p));
             let (Some(specialised), Some(generic)) = (cost_of(p), generic) else {
                 continue;
             };
@@ -127,9 +134,14 @@ pub fn summarize(
 }
 
 /// A pipeline's fragment figures; None without the stage or its disassembly.
-fn fragment_cost(generated: &Path, p: &PipelineStats, entry: &str) -> Option<FragmentCost> {
+fn fragment_cost(
+    generated: &Path,
+    p: &PipelineStats,
+    entry: &str,
+    instance: Option<&[crate::trips::SourceLoop]>,
+) -> Option<FragmentCost> {
     let stage = p.stage("fragment")?;
-    let model = loop_report::fragment_model(generated, p, entry)?;
+    let model = loop_report::fragment_model_at(generated, p, entry, instance)?;
     let get = |name| stage.get(name).map_or(0, |v| v as u64);
     Some(FragmentCost {
         instructions: get(INSTRUCTIONS),

@@ -308,6 +308,63 @@ fn scene_shaders_never_cost_more_than_their_generic_variants() {
     }
 }
 
+/// The median instruction reduction of scene shaders against their generic
+/// variants (issue 24, deliverable 6), at the level the folder reaches
+/// (docs/performance.md, "Scene specialisation"): per scene shader and pass
+/// (the figures of `gpu-model.json`) and per instance (its passes summed, as
+/// `generated/reports/scenes.md` prints it).
+#[test]
+fn scene_specialisation_keeps_its_median_instruction_reduction() {
+    const PER_SHADER: f64 = 34.0;
+    const PER_INSTANCE: f64 = 19.5;
+    let model = weft_gpu_stats::summarize(&generated(), full(), MODEL_COMMAND)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let median = |mut r: Vec<f64>| {
+        r.sort_by(f64::total_cmp);
+        r[r.len() / 2]
+    };
+    for f in &model.families {
+        let per_shader = median(
+            f.scene_shaders
+                .iter()
+                .map(|s| reduction(s.specialised.instructions, s.generic.instructions))
+                .collect(),
+        );
+        let mut per_instance = Vec::new();
+        for entry in std::fs::read_dir(generated().join("scenes")).unwrap() {
+            let dir = entry.unwrap().path();
+            let name = dir.file_name().unwrap().to_str().unwrap().to_string();
+            let path = dir.join(format!("{name}.scene.json"));
+            let meta: weft_meta::scene::SceneMetadata =
+                serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+            for inst in &meta.instances {
+                let (s, g) = f
+                    .scene_shaders
+                    .iter()
+                    .filter(|c| c.scene == name && c.shader == inst.shader)
+                    .filter(|c| inst.passes.iter().any(|p| p.name == c.pass))
+                    .fold((0, 0), |(s, g), c| {
+                        (s + c.specialised.instructions, g + c.generic.instructions)
+                    });
+                assert!(g > 0, "{name} {}: no figures", inst.name);
+                per_instance.push(reduction(s, g));
+            }
+        }
+        assert!(per_instance.len() >= 20, "{} instances", per_instance.len());
+        let per_instance = median(per_instance);
+        assert!(
+            per_shader >= PER_SHADER && per_instance >= PER_INSTANCE,
+            "{}: median instruction reduction {per_shader:.1} % per scene shader (at least \
+             {PER_SHADER} %), {per_instance:.1} % per instance (at least {PER_INSTANCE} %)",
+            f.family
+        );
+    }
+}
+
+fn reduction(specialised: u64, generic: u64) -> f64 {
+    100.0 * (1.0 - specialised as f64 / generic as f64)
+}
+
 /// Approximation tiers whose modelled cost is above their reference's, with
 /// the reason. The one place they are listed (docs/performance.md quotes
 /// it): the test fails when one is added, and when one is no longer true.

@@ -76,7 +76,7 @@ fn filter_block(block: Block, keep: &mut dyn FnMut(&Statement) -> bool) -> Block
 /// Functions that write nothing outside their own locals and stop nothing:
 /// no stores through globals or arguments, no image stores, atomics,
 /// barriers, `discard` or calls to impure functions.
-fn pure_functions(module: &Module) -> HashSet<Handle<Function>> {
+pub(super) fn pure_functions(module: &Module) -> HashSet<Handle<Function>> {
     let mut pure = HashSet::new();
     // Functions only call functions declared before them.
     for (h, f) in module.functions.iter() {

@@ -26,6 +26,55 @@ pub(super) fn anonymous_constant(
     )
 }
 
+/// Whether a function expression is a value known at compile time, in the
+/// form evaluation leaves one (a literal, a module constant, a zero value).
+pub(super) fn is_constant(e: &Expression) -> bool {
+    matches!(
+        e,
+        Expression::Literal(_) | Expression::Constant(_) | Expression::ZeroValue(_)
+    )
+}
+
+/// A canonical spelling of a constant function expression's value (bit
+/// patterns for floats, so `0.0` and `-0.0` differ): equal keys, equal values.
+/// `None` for anything else.
+pub(super) fn const_key(module: &Module, e: &Expression) -> Option<String> {
+    match e {
+        Expression::Literal(l) => Some(literal_key(l)),
+        Expression::Constant(c) => global_key(module, module.constants[*c].init),
+        Expression::ZeroValue(ty) => Some(format!("z{}", ty.index())),
+        _ => None,
+    }
+}
+
+fn literal_key(l: &naga::Literal) -> String {
+    match *l {
+        naga::Literal::F32(x) => format!("f{:08x}", x.to_bits()),
+        naga::Literal::F64(x) => format!("d{:016x}", x.to_bits()),
+        naga::Literal::F16(x) => format!("h{:04x}", x.to_bits()),
+        other => format!("{other:?}"),
+    }
+}
+
+fn global_key(module: &Module, h: Handle<Expression>) -> Option<String> {
+    Some(match &module.global_expressions[h] {
+        Expression::Literal(l) => literal_key(l),
+        Expression::Constant(c) => return global_key(module, module.constants[*c].init),
+        Expression::ZeroValue(ty) => format!("z{}", ty.index()),
+        Expression::Splat { size, value } => {
+            format!("s{}({})", *size as u8, global_key(module, *value)?)
+        }
+        Expression::Compose { ty, components } => {
+            let parts = components
+                .iter()
+                .map(|c| global_key(module, *c))
+                .collect::<Option<Vec<_>>>()?;
+            format!("c{}({})", ty.index(), parts.join(","))
+        }
+        _ => return None,
+    })
+}
+
 /// Replaces every function expression whose operands are all constant by its
 /// value, evaluated by naga's constant evaluator in the module's global
 /// arena (so WGSL's rules and errors apply; an expression it cannot or may

@@ -6,22 +6,37 @@
 //!    module constants; samples of textures left at a built-in default become
 //!    the constant texel the sample would return;
 //! 2. every override (tier, every keyword, the engine features) becomes a
-//!    literal, and every expression whose operands are now constant is
-//!    evaluated (`evaluate.rs`) — through the whole function body;
-//! 3. `if`s on now-constant conditions keep only the taken branch (naga keeps
-//!    them), calls to side-effect-free helpers whose result nothing uses go
+//!    literal;
+//! 3. round after round until nothing changes (`fold_to_fixed_point`):
+//!    every expression whose operands are now constant is evaluated
+//!    (`evaluate.rs`), identities with a constant operand are applied
+//!    (`identities.rs`: `select` on a constant, `x * 1`, `clamp(x, c, c)`,
+//!    …), `if`s on constant conditions keep only the taken branch, locals
+//!    holding a constant are read as it and loops that now run once or never
+//!    become their body or nothing (`locals.rs`, `loops.rs`), calls of pure
+//!    helpers that return a constant become it, and calls with constant
+//!    arguments call a clone of the helper bound to them (`call_sites.rs`),
+//!    which the next round folds in turn;
+//! 4. calls to side-effect-free helpers whose result nothing uses go
 //!    (`dead_calls.rs`), and compaction drops what only dead code used:
 //!    textures, LUTs, helper functions;
-//! 4. the material uniform shrinks to the members still read (the `dynamic`
+//! 5. the material uniform shrinks to the members still read (the `dynamic`
 //!    parameters, curves), re-laid out by WGSL's rules; with none left, the
 //!    binding disappears.
 //!
-//! Constants do not cross function calls (naga keeps calls opaque), so the
-//! materials test scene constants and engine features where they read them,
-//! in the entry point (docs/scenes.md, "Writing foldable materials").
+//! Every step keeps the shader's value bit for bit where the GPU follows
+//! IEEE arithmetic (no `x * 0 -> 0`, no `x + 0.0 -> x`; `identities.rs`), and
+//! the output is deterministic (clones are named and ordered by where they
+//! are first needed). What pays on the GPU, where the driver inlines every
+//! call and folds literals itself, is what it cannot do after inlining: a
+//! loop it will not unroll resolved (microcylinder's one-offset threads) and
+//! a degenerate `clamp` folded (docs/performance.md, "Scene specialisation").
 
+use super::call_sites::{fold_constant_returns, specialise_calls};
 use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
+use super::identities::simplify_identities;
+use super::locals::forward_locals;
 use crate::specialise::prune_function;
 use naga::{
     AddressSpace, Constant, Expression, Handle, Literal, Module, Span, StructMember, Type,
@@ -142,27 +157,16 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     };
     let module = crate::specialise::specialise(&module, &bindings);
 
-    // 3. Constant evaluation through the function bodies (naga's evaluator,
-    // driven expression by expression), then the `if`s that became constant.
-    let info = crate::compose::validator()
-        .validate(&module)
-        .map_err(|e| format!("after folding uniform reads: {}", error_chain(e.as_inner())))?;
+    // 3. Constant evaluation through the function bodies and into helpers,
+    // to a fixed point.
     let mut module = module;
-    evaluate_constants(&mut module, &info);
-    let mut fns = std::mem::take(&mut module.functions);
-    for (_, f) in fns.iter_mut() {
-        prune_function(&module, f);
-    }
-    module.functions = fns;
-    let mut eps = std::mem::take(&mut module.entry_points);
-    for ep in eps.iter_mut() {
-        prune_function(&module, &mut ep.function);
-    }
-    module.entry_points = eps;
+    fold_to_fixed_point(&mut module)?;
+
+    // 4. Dead pure calls, and what only dead code used.
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
     remove_dead_calls(&mut module);
 
-    // 4. The uniform keeps only the members still read.
+    // 5. The uniform keeps only the members still read.
     shrink_uniform(&mut module, &request.uniform_var)?;
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
     crate::half::declare_f16(&mut module);
@@ -170,6 +174,62 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
         module,
         kept_in_uniform,
     })
+}
+
+/// Rounds of step 3 at most; each round's work is what the previous round
+/// made constant, one call level deeper. Today's materials settle in at most
+/// 8 (microcylinder: a loop inside a helper inside a helper); past the bound
+/// the module is still valid, only less folded.
+const MAX_ROUNDS: usize = 16;
+
+/// Step 3, round after round until nothing changes: evaluate constant
+/// expressions (`evaluate.rs`), apply identities (`identities.rs`), prune
+/// constant `if`s, forward constant locals and resolve loops that run once
+/// (`locals.rs`, `loops.rs`), fold calls that return a constant and
+/// specialise calls with constant arguments (`call_sites.rs`).
+fn fold_to_fixed_point(module: &mut Module) -> Result<(), String> {
+    let mut memo = super::call_sites::Memo::new();
+    for round in 0..=MAX_ROUNDS {
+        let info = crate::compose::validator().validate(module).map_err(|e| {
+            let when = if round == 0 {
+                "after folding uniform reads"
+            } else {
+                "after specialising helpers"
+            };
+            format!("{when}: {}", error_chain(e.as_inner()))
+        })?;
+        evaluate_constants(module, &info);
+        let mut changed = simplify_identities(module, &info);
+        prune_all(module);
+        if round == MAX_ROUNDS {
+            break;
+        }
+        changed += forward_locals(module);
+        changed += fold_constant_returns(module);
+        changed += specialise_calls(module, &mut memo);
+        if changed == 0 {
+            break;
+        }
+        // Calls in removed loops and pruned branches leave results no
+        // statement computes: unname them and compact before validating again.
+        prune_all(module);
+        naga::compact::compact(module, naga::compact::KeepUnused::No);
+    }
+    Ok(())
+}
+
+/// `prune_function` on every function and entry point.
+fn prune_all(module: &mut Module) {
+    let mut fns = std::mem::take(&mut module.functions);
+    for (_, f) in fns.iter_mut() {
+        prune_function(module, f);
+    }
+    module.functions = fns;
+    let mut eps = std::mem::take(&mut module.entry_points);
+    for ep in eps.iter_mut() {
+        prune_function(module, &mut ep.function);
+    }
+    module.entry_points = eps;
 }
 
 fn functions(module: &Module) -> impl Iterator<Item = &naga::Function> {
@@ -469,4 +529,24 @@ fn error_chain(e: &dyn std::error::Error) -> String {
         source = s.source();
     }
     out
+}
+
+#[cfg(test)]
+pub(super) mod test_support {
+    /// `src` (WGSL without a material uniform) folded with nothing to fold
+    /// but what the code itself makes constant, emitted as WGSL.
+    pub fn folded(src: &str) -> String {
+        let module = naga::front::wgsl::parse_str(src).expect("parses");
+        let request = super::FoldRequest::default();
+        let first = super::fold(&module, &request).expect("folds").module;
+        let info = crate::compose::validator()
+            .validate(&first)
+            .expect("the folded module validates");
+        let wgsl = crate::backends::emit_wgsl(&first, &info).expect("emits");
+        // Folding is deterministic: a second fold emits the same bytes.
+        let second = super::fold(&module, &request).expect("folds").module;
+        let info = crate::compose::validator().validate(&second).unwrap();
+        assert_eq!(crate::backends::emit_wgsl(&second, &info).unwrap(), wgsl);
+        wgsl
+    }
 }

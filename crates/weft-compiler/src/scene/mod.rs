@@ -8,10 +8,14 @@
 //! assembles `<scene>.scene.json`; [`tiers`] is the interface for `auto` tiers.
 
 pub mod build;
+mod call_sites;
 mod dead_calls;
 mod evaluate;
 pub mod fold;
+mod identities;
 pub mod instance;
+mod locals;
+mod loops;
 pub mod tiers;
 
 pub use build::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_resolved_scene};
