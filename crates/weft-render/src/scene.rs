@@ -240,10 +240,12 @@ pub struct Light {
 }
 
 impl Default for Light {
+    /// weft's default light, stated once in `weft-meta` (scene metadata
+    /// writes it into `light` when a manifest has no `[light]`).
     fn default() -> Self {
         Light {
-            direction: [-0.62, 0.55, 0.56],
-            radiance: [3.2, 3.05, 2.8],
+            direction: weft_meta::scene::DEFAULT_LIGHT_DIRECTION.map(|c| c as f32),
+            radiance: weft_meta::scene::DEFAULT_LIGHT_COLOR.map(|c| c as f32),
         }
     }
 }

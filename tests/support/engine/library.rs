@@ -367,14 +367,19 @@ pub fn scene_world(
         black.sh
     };
     let mut f = frame.clone();
-    if let Some(light) = &meta.light {
-        let d = light.direction;
-        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        f.light_direction = d.map(|c| (c / len) as f32);
-        if let Some(c) = light.color {
-            f.light_color = c.map(|c| c as f32);
-        }
-    }
+    // Scene schema 3.3 states the light weft draws with, defaults included:
+    // this engine knows no default light of its own.
+    let light = meta
+        .light
+        .as_ref()
+        .unwrap_or_else(|| panic!("scene {}: no `light` in the metadata", meta.name));
+    let d = light.direction;
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    f.light_direction = d.map(|c| (c / len) as f32);
+    let c = light
+        .color
+        .unwrap_or_else(|| panic!("scene {}: no `light.color` in the metadata", meta.name));
+    f.light_color = c.map(|c| c as f32);
     if features.directional_lights == 0 {
         f.light_color = [0.0; 3];
     }

@@ -584,10 +584,12 @@ pub fn build_resolved_scene(
             target: manifest.camera.target,
             fov_degrees: manifest.camera.fov_degrees,
         },
-        light: manifest.light.as_ref().map(|l| SceneLight {
-            direction: l.direction,
-            color: l.color,
-        }),
+        // Always written (schema 3.3): the light weft draws with, defaults
+        // included, so an engine never has to know them.
+        light: Some(SceneLight::with_defaults(
+            manifest.light.as_ref().map(|l| l.direction),
+            manifest.light.as_ref().and_then(|l| l.color),
+        )),
         shaders,
         instances,
         languages: crate::engine_binding::languages(),
