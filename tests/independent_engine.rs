@@ -266,7 +266,7 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 passes: &inst.passes,
                 languages: None,
             };
-            let p = scene_inputs(inst, &shader.shader).and_then(|inputs| {
+            let p = scene_inputs(meta, inst, &shader.shader).and_then(|inputs| {
                 s.engine.prepare(
                     &mut world,
                     &sref,

@@ -564,6 +564,7 @@ fn instance_scene(
         light: None,
         shaders: Vec::new(),
         languages: meta.languages.clone(),
+        conventions: meta.conventions.clone(),
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),
@@ -640,7 +641,7 @@ fn model_path_for_record(reports_dir: &Path) -> String {
     if reports_dir.ends_with(DEFAULT_REPORTS_DIR) {
         return format!("{DEFAULT_REPORTS_DIR}/{file}");
     }
-    let path = reports_dir.join(&file);
+    let path = reports_dir.join(file);
     let relative = std::env::current_dir()
         .ok()
         .and_then(|cwd| path.strip_prefix(cwd).ok().map(Path::to_path_buf));

@@ -23,7 +23,7 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// `gpu` figures (automatic tiers costed by the GPU model). 3: `light` is
 /// always written, with its `color`: the light weft draws the scene with,
 /// [`DEFAULT_LIGHT_DIRECTION`] and [`DEFAULT_LIGHT_COLOR`] where the manifest
-/// gives none.
+/// gives none; and `conventions` (as in material metadata 4.2).
 pub const SCENE_SCHEMA_MINOR: u32 = 3;
 
 /// The main light's direction (from the surface towards the light, world
@@ -89,6 +89,12 @@ pub struct SceneMetadata {
     /// Absent when every shader fits WebGPU's default limits.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limits: Option<crate::DeviceLimits>,
+    /// What an engine does as weft's renderer does beyond bindings and
+    /// pipeline states (as in the material metadata). Written since schema
+    /// 3.3; absent in older files (read it as
+    /// `weft_meta::Conventions::current()`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conventions: Option<crate::Conventions>,
 }
 
 /// The engine features a scene provides. Engine interface v1: group 0 is

@@ -77,7 +77,8 @@ fn cube_f16_texture(gpu: &Gpu, label: &str, size: u32, mips: u32, data: &[u8]) -
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
             format: wgpu::TextureFormat::Rgba16Float,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            // COPY_SRC: tests read back what was uploaded.
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         },
         wgpu::util::TextureDataOrder::LayerMajor,
@@ -212,7 +213,8 @@ fn rgba8_texture(
             } else {
                 wgpu::TextureFormat::Rgba8Unorm
             },
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            // COPY_SRC: tests read back what was uploaded.
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         },
         wgpu::util::TextureDataOrder::LayerMajor,
@@ -220,8 +222,10 @@ fn rgba8_texture(
     )
 }
 
+/// A built-in texture's texel: `weft_meta`'s bytes, the ones the metadata
+/// states (`conventions.builtin_textures`).
 fn texel_bytes(t: TextureDefault) -> [u8; 4] {
-    t.texel().map(|c| (c * 255.0).round() as u8)
+    t.rgba8()
 }
 
 fn texture_2d(gpu: &Gpu, label: &str, t: &TextureValue, srgb: bool) -> Result<wgpu::Texture> {
@@ -389,4 +393,31 @@ pub(crate) fn vertex_stream(mesh: &Mesh, vi: &VertexInput) -> Result<Vec<u8>> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The built-in textures weft uploads hold exactly the bytes the
+    /// metadata states (`conventions.builtin_textures`): read back from the
+    /// GPU, 2D and every cube face, in both formats.
+    #[test]
+    fn builtin_textures_upload_the_stated_texels() {
+        let gpu = Gpu::new().expect("a Vulkan adapter (lavapipe: mesa-vulkan-drivers)");
+        let stated = weft_meta::Conventions::current().builtin_textures;
+        for d in TextureDefault::ALL {
+            for srgb in [false, true] {
+                let want = stated[d.name()];
+                let t = texture_2d(&gpu, d.name(), &TextureValue::Builtin(d), srgb).unwrap();
+                let got = gpu.read_texture_rgba8(&t, 0, 0).unwrap();
+                assert_eq!(got, want, "{} (srgb {srgb})", d.name());
+                let c = cube_texture(&gpu, d.name(), &TextureValue::Builtin(d), srgb).unwrap();
+                for face in 0..6 {
+                    let got = gpu.read_texture_rgba8(&c, 0, face).unwrap();
+                    assert_eq!(got, want, "{} cube face {face} (srgb {srgb})", d.name());
+                }
+            }
+        }
+    }
 }

@@ -229,9 +229,10 @@ impl Engine {
             return Ok(Self::view(&texture, t.view_dimension));
         }
         let (width, bytes) = match data {
-            TextureData::Builtin(d) if rgba8 => (1, d.rgba8().repeat(layers as usize)),
+            TextureData::Builtin(d) if rgba8 => (1, d.repeat(layers as usize)),
             TextureData::Builtin(d) => {
-                (1, float_texels(format, &vec![d.texel(); layers as usize])?)
+                let texel = d.map(|b| f32::from(b) / 255.0);
+                (1, float_texels(format, &vec![texel; layers as usize])?)
             }
             TextureData::Ramp(r) if rgba8 && layers == 1 && r.len() % 4 == 0 => {
                 ((r.len() / 4) as u32, r.clone())

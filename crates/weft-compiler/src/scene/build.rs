@@ -593,6 +593,7 @@ pub fn build_resolved_scene(
         shaders,
         instances,
         languages: crate::engine_binding::languages(),
+        conventions: Some(weft_meta::Conventions::current()),
         limits: scene_limits(scene),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");

@@ -1,0 +1,59 @@
+//! What an engine must do as weft's renderer does that is neither a binding
+//! nor a pipeline state, stated once: the exact texels of the built-in
+//! textures. Material metadata (schema 4.2) and scene metadata (3.3) carry it
+//! as `conventions`; weft's renderer takes the same values from here, and
+//! docs/engine-interface.md explains them.
+
+use crate::TextureDefault;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// The conventions an engine follows to draw what weft draws, beyond the
+/// bindings and pipeline states (docs/engine-interface.md).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct Conventions {
+    /// The RGBA8 texel of each built-in 1×1 texture (a binding's
+    /// `texture.default`, a scene texture's `builtin`), by name: exactly the
+    /// bytes weft's renderer uploads, in the binding's `format`. 0.5 is
+    /// stored as 128 (127.5 rounded half away from zero), so `gray` samples
+    /// as 128/255 = 0.50196 in `rgba8unorm` and as 0.21586 (linear) in
+    /// `rgba8unorm_srgb`, and `normal` (128, 128, 255) unpacks to
+    /// (0.00392, 0.00392, 1) before normalisation.
+    pub builtin_textures: BTreeMap<String, [u8; 4]>,
+}
+
+impl Conventions {
+    /// The conventions this weft writes and draws with.
+    pub fn current() -> Conventions {
+        Conventions {
+            builtin_textures: TextureDefault::ALL
+                .iter()
+                .map(|d| (d.name().to_string(), d.rgba8()))
+                .collect(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_texels_are_stated_for_every_default() {
+        let c = Conventions::current();
+        assert_eq!(c.builtin_textures.len(), TextureDefault::ALL.len());
+        assert_eq!(c.builtin_textures["white"], [255, 255, 255, 255]);
+        assert_eq!(c.builtin_textures["black"], [0, 0, 0, 255]);
+        // 0.5 is 128, not 127.
+        assert_eq!(c.builtin_textures["gray"], [128, 128, 128, 255]);
+        assert_eq!(c.builtin_textures["normal"], [128, 128, 255, 255]);
+        for d in TextureDefault::ALL {
+            let t = d.texel();
+            let b = d.rgba8();
+            for i in 0..4 {
+                assert_eq!(t[i], f32::from(b[i]) / 255.0, "{}", d.name());
+            }
+        }
+    }
+}
