@@ -1,6 +1,7 @@
 //! What an engine must do as weft's renderer does that is neither a binding
 //! nor a pipeline state, stated once: the exact texels of the built-in
-//! textures. Material metadata (schema 4.2) and scene metadata (3.3) carry it
+//! textures and the tangent frame the vertex tangents and the shaders
+//! assume. Material metadata (schema 4.2) and scene metadata (3.3) carry it
 //! as `conventions`; weft's renderer takes the same values from here, and
 //! docs/engine-interface.md explains them.
 
@@ -21,6 +22,52 @@ pub struct Conventions {
     /// `rgba8unorm_srgb`, and `normal` (128, 128, 255) unpacks to
     /// (0.00392, 0.00392, 1) before normalisation.
     pub builtin_textures: BTreeMap<String, [u8; 4]>,
+    /// How the shaders build the tangent frame from the vertex `normal` and
+    /// `tangent` (location 2), and which uv0 directions the frame follows:
+    /// what an engine's tangents must satisfy.
+    pub tangent_frame: TangentFrame,
+}
+
+/// The tangent-frame convention (`weft_tangent_frame` in
+/// materials/lib/forward.wgsl, the built-in meshes, `Mesh::compute_tangents`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct TangentFrame {
+    /// The bitangent the shaders use: `weft_meta::conventions::BITANGENT`,
+    /// "w * cross(normal, tangent.xyz), w = -1 if tangent.w < 0 else +1" (the
+    /// vertex stage also flips w for a model matrix with a negative
+    /// determinant), with the interpolated normal and the tangent made
+    /// orthogonal to it: (T, B, N) is right-handed when w = +1.
+    pub bitangent: String,
+    /// The uv0 direction the tangent `tangent.xyz` points along: `+u`.
+    pub tangent_follows: String,
+    /// The uv0 direction the bitangent points along: `+v`. A mesh sets
+    /// `tangent.w` so that `w · cross(N, T)` has a positive component along
+    /// dP/dv.
+    pub bitangent_follows: String,
+    /// Where v = 0 is in a texture: `top` (row 0 of a texture file, the
+    /// image's top row). So +v, and the bitangent, run down the image.
+    pub v_origin: String,
+    /// What a tangent-space normal map's channels mean under this frame.
+    pub normal_map: String,
+}
+
+/// The bitangent formula of [`TangentFrame::bitangent`].
+pub const BITANGENT: &str = "w * cross(normal, tangent.xyz), w = -1 if tangent.w < 0 else +1";
+
+impl TangentFrame {
+    /// weft's convention.
+    pub fn current() -> TangentFrame {
+        TangentFrame {
+            bitangent: BITANGENT.into(),
+            tangent_follows: "+u".into(),
+            bitangent_follows: "+v".into(),
+            v_origin: "top".into(),
+            normal_map: "rgb * 2 - 1 = (x, y, z) along (T, B, N): green is +v, down the \
+                         image (the \"Y-\" or DirectX convention); a \"Y+\" (OpenGL) map \
+                         needs its green channel inverted"
+                .into(),
+        }
+    }
 }
 
 impl Conventions {
@@ -31,6 +78,7 @@ impl Conventions {
                 .iter()
                 .map(|d| (d.name().to_string(), d.rgba8()))
                 .collect(),
+            tangent_frame: TangentFrame::current(),
         }
     }
 }
