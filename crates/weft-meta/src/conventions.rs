@@ -26,7 +26,17 @@ pub struct Conventions {
     /// `tangent` (location 2), and which uv0 directions the frame follows:
     /// what an engine's tangents must satisfy.
     pub tangent_frame: TangentFrame,
+    /// Which textures get mip levels: [`MIP_CHAINS`].
+    pub mip_chains: String,
 }
+
+/// The mip rule of [`Conventions::mip_chains`].
+pub const MIP_CHAINS: &str = "A texture parameter's image (`texture.file`) holds level 0 only: \
+     build the chain its `mip_chain` states (box 2x2, in linear light for sRGB formats; \
+     weft_meta::bake::rgba8_mip_chain) and bind every level, as weft's renderer does; the \
+     material samplers filter linearly between levels. So does a texture the engine binds \
+     for a texture2d parameter. Built-in 1x1 textures, gradient ramps, cubes, LUT files and \
+     baked tables have one level.";
 
 /// The tangent-frame convention (`weft_tangent_frame` in
 /// materials/lib/forward.wgsl, the built-in meshes, `Mesh::compute_tangents`).
@@ -79,6 +89,7 @@ impl Conventions {
                 .map(|d| (d.name().to_string(), d.rgba8()))
                 .collect(),
             tangent_frame: TangentFrame::current(),
+            mip_chains: MIP_CHAINS.into(),
         }
     }
 }
