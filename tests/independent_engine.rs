@@ -255,9 +255,10 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 .iter()
                 .find(|sh| sh.id == inst.shader)
                 .unwrap_or_else(|| panic!("{label}: no shader `{}`", inst.shader));
-            let kind = weft_render::SceneKind::from_name(&inst.mesh)
-                .unwrap_or_else(|| panic!("{label}: no mesh `{}`", inst.mesh));
-            let mesh = harness::mesh(&weft_render::Scene::new(kind).mesh);
+            // The mesh from the file the metadata names (scene schema 3.3),
+            // not from weft-render's generators.
+            let mesh = library::scene_mesh(&s.lib.root, meta, &inst.mesh)
+                .unwrap_or_else(|e| panic!("{label}: {e}"));
             let sref = ShaderRef {
                 label: label.clone(),
                 dir: path.parent().unwrap().to_path_buf(),

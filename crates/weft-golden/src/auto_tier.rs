@@ -565,6 +565,7 @@ fn instance_scene(
         shaders: Vec::new(),
         languages: meta.languages.clone(),
         conventions: meta.conventions.clone(),
+        meshes: Default::default(),
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),

@@ -35,6 +35,7 @@ pub mod conventions;
 pub mod files;
 pub mod gpu_model;
 pub mod limits;
+pub mod mesh;
 pub mod names;
 pub mod pipeline;
 pub mod scene;

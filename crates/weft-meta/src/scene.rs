@@ -23,7 +23,8 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// `gpu` figures (automatic tiers costed by the GPU model). 3: `light` is
 /// always written, with its `color`: the light weft draws the scene with,
 /// [`DEFAULT_LIGHT_DIRECTION`] and [`DEFAULT_LIGHT_COLOR`] where the manifest
-/// gives none; and `conventions` (as in material metadata 4.2).
+/// gives none; `conventions` (as in material metadata 4.2); and `meshes`,
+/// the files of the built-in meshes the instances draw.
 pub const SCENE_SCHEMA_MINOR: u32 = 3;
 
 /// The main light's direction (from the surface towards the light, world
@@ -95,6 +96,23 @@ pub struct SceneMetadata {
     /// `weft_meta::Conventions::current()`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub conventions: Option<crate::Conventions>,
+    /// The built-in meshes the instances draw (`instances[].mesh`), by
+    /// name: the file with the exact vertex data weft draws. Written since
+    /// schema 3.3; absent (empty) in older files.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub meshes: BTreeMap<String, SceneMesh>,
+}
+
+/// A built-in mesh's file (`weft_meta::mesh`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct SceneMesh {
+    /// Relative to the library root (two folders above the scene metadata):
+    /// `meshes/<name>.mesh`, written by `cargo xtask regenerate`.
+    pub path: String,
+    /// The file's layout: `weft_mesh_v1` (`weft_meta::mesh::MESH_FORMAT`:
+    /// a 24-byte header, the six vertex streams of the engine interface in
+    /// location order, u32 indices; all little-endian; docs/engine-interface.md).
+    pub format: String,
 }
 
 /// The engine features a scene provides. Engine interface v1: group 0 is

@@ -407,6 +407,35 @@ pub fn scene_world(
     (e, f)
 }
 
+/// A built-in mesh of a scene, read from the file its `meshes` entry names
+/// (relative to the library root `root`).
+pub fn scene_mesh(
+    root: &Path,
+    meta: &SceneMetadata,
+    name: &str,
+) -> Result<super::data::Mesh, String> {
+    let entry = meta
+        .meshes
+        .get(name)
+        .ok_or_else(|| format!("no `meshes.{name}` in scene {}", meta.name))?;
+    if entry.format != "weft_mesh_v1" {
+        return Err(format!("mesh `{name}`: unknown format `{}`", entry.format));
+    }
+    let path = root.join(&entry.path);
+    let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let m = weft_meta::mesh::MeshData::from_bytes(&bytes)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(super::data::Mesh {
+        positions: m.positions,
+        normals: m.normals,
+        tangents: m.tangents,
+        uv0: m.uv0,
+        uv1: m.uv1,
+        colors: m.colors,
+        indices: m.indices,
+    })
+}
+
 /// An instance's `transform.model` as columns.
 pub fn instance_model(inst: &SceneInstance) -> super::data::Mat4 {
     let m = &inst.transform.model;
