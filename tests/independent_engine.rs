@@ -233,12 +233,19 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
     for (path, meta) in &s.lib.scenes {
         let camera = weft_render::scene_camera(meta);
         let light = weft_render::SceneLighting::from_metadata(meta).light;
-        let (env, frame) = library::scene_world(
-            meta,
-            &s.world.env,
-            &harness::frame(&camera, &weft_render::Light::default()),
-        );
+        // No light of the engine's own: the metadata must state it.
+        let no_light = weft_render::Light {
+            direction: [0.0, 1.0, 0.0],
+            radiance: [0.0; 3],
+        };
+        let (env, frame) =
+            library::scene_world(meta, &s.world.env, &harness::frame(&camera, &no_light));
         assert_eq!(frame.light_color, light.radiance, "the same light");
+        let d = light.direction;
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        for (a, b) in frame.light_direction.iter().zip(d) {
+            assert!((a - b / len).abs() < 1e-6, "the same light direction");
+        }
         let mut world = World::new(env, frame);
         let mut prepared = Vec::new();
         for inst in &meta.instances {
@@ -248,9 +255,10 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 .iter()
                 .find(|sh| sh.id == inst.shader)
                 .unwrap_or_else(|| panic!("{label}: no shader `{}`", inst.shader));
-            let kind = weft_render::SceneKind::from_name(&inst.mesh)
-                .unwrap_or_else(|| panic!("{label}: no mesh `{}`", inst.mesh));
-            let mesh = harness::mesh(&weft_render::Scene::new(kind).mesh);
+            // The mesh from the file the metadata names (scene schema 3.3),
+            // not from weft-render's generators.
+            let mesh = library::scene_mesh(&s.lib.root, meta, &inst.mesh)
+                .unwrap_or_else(|e| panic!("{label}: {e}"));
             let sref = ShaderRef {
                 label: label.clone(),
                 dir: path.parent().unwrap().to_path_buf(),
@@ -259,7 +267,7 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 passes: &inst.passes,
                 languages: None,
             };
-            let p = scene_inputs(inst, &shader.shader).and_then(|inputs| {
+            let p = scene_inputs(meta, inst, &shader.shader).and_then(|inputs| {
                 s.engine.prepare(
                     &mut world,
                     &sref,

@@ -229,3 +229,178 @@ fn perturbed_shaders_fail_their_goldens() {
         }
     }
 }
+
+// ------------------------------------------------------------ tangent frame
+
+/// A render with every tangent's w negated (the bitangent flipped: an
+/// engine that took B = w·(T×N), or B along −v).
+fn with_bitangent_flipped(scene: &mut weft_render::Scene) {
+    for t in &mut scene.mesh.tangents {
+        t[3] = -t[3];
+    }
+}
+
+/// FLIP mean allowed between the normal-mapped sphere and its geometric
+/// reference (per-pixel normal map against per-vertex tilted normals at
+/// 96×96). Measured on lavapipe: 0.011 with the stated convention, 0.27
+/// with w negated.
+const TANGENT_REFERENCE_MAX: f32 = 0.02;
+/// The least FLIP mean w negated must cause against that reference.
+const TANGENT_FLIPPED_MIN: f32 = 0.1;
+/// Goldens whose shading reads the bitangent's sign, and the least FLIP mean
+/// w negated must cause against them. Measured on lavapipe with w negated:
+/// hair 0.18 (sphere) and 0.20 (cloth: the strand direction is the
+/// bitangent), laser's anisotropy direction map 0.11, silk's flow map 0.079;
+/// microcylinder, satin and velvet at their defaults do not depend on it
+/// (0.000: their lobes are symmetric in ±B).
+const GOLDENS_READING_THE_BITANGENT: [(&str, &str); 4] = [
+    ("hair", "default"),
+    ("hair", "default.cloth"),
+    ("laser", "aniso_color-map"),
+    ("silk", "flow_map-on"),
+];
+const TANGENT_FLIPPED_GOLDEN_MIN: f32 = 0.05;
+
+/// The tangent-frame convention the metadata states
+/// (`conventions.tangent_frame`: B = w·cross(N, T), along +v of uv0) is the
+/// one the built-in meshes and the shaders use, and an engine that chose
+/// the other would draw something else:
+///
+/// - standard with `NORMAL_MAP` and a constant normal map tilted 30° towards
+///   +y (green 191) draws, under the stated convention, what the same
+///   material draws with a flat normal map on a sphere whose normals are
+///   tilted 30° towards dP/dv: a reference made from the geometry and the
+///   uvs alone, which no tangent's w enters; with w negated it does not;
+/// - goldens whose shading reads the bitangent (hair's strands, laser's
+///   anisotropy direction, silk's flow map) are reproduced with the
+///   built-in meshes' tangents and not with w negated.
+#[test]
+fn the_stated_tangent_frame_is_the_one_drawn() {
+    use weft_render::{Scene, TextureValue, math};
+    let generated = repo().join("generated");
+    let goldens = repo().join("tests/goldens");
+    let mut h = harness(&generated);
+    let meta_path = generated.join("standard/standard.meta.json");
+    let meta =
+        weft_meta::MaterialMetadata::from_json(&std::fs::read_to_string(&meta_path).unwrap())
+            .unwrap();
+    let frame = meta
+        .conventions
+        .as_ref()
+        .expect("conventions")
+        .tangent_frame
+        .clone();
+    assert_eq!(frame, weft_meta::conventions::TangentFrame::current());
+    assert_eq!(
+        (
+            frame.tangent_follows.as_str(),
+            frame.bitangent_follows.as_str()
+        ),
+        ("+u", "+v")
+    );
+
+    let case = cases(&meta)
+        .into_iter()
+        .find(|c| c.name == "default")
+        .unwrap();
+    let tilt = 30f32.to_radians();
+    let texel = |x: f32, y: f32, z: f32| [x, y, z].map(|c| ((c * 0.5 + 0.5) * 255.0).round() as u8);
+    let map = |rgb: [u8; 3]| TextureValue::Rgba8 {
+        width: 1,
+        height: 1,
+        data: vec![rgb[0], rgb[1], rgb[2], 255],
+    };
+    let tilted = map(texel(0.0, tilt.sin(), tilt.cos()));
+    let flat = map(texel(0.0, 0.0, 1.0));
+    let mut draw = |normal_map: TextureValue, edit: &dyn Fn(&mut Scene)| {
+        let image = h
+            .render_edited(
+                &meta_path,
+                &case,
+                GOLDEN_SIZE,
+                ShaderLanguage::Wgsl,
+                |m, s| {
+                    m.set_keyword("NORMAL_MAP", "on")?;
+                    m.set("normal_map", normal_map)?;
+                    edit(s);
+                    Ok(())
+                },
+            )
+            .unwrap();
+        to_ldr(&image)
+    };
+    // The reference: normals tilted towards dP/dv of the UV sphere, from its
+    // parametrisation (u = φ / 2π around +y, v = θ / π down from the north
+    // pole: dP/dv is along (cos θ sin φ, −sin θ, cos θ cos φ)).
+    let reference = draw(flat, &|s: &mut Scene| {
+        let Scene { mesh, .. } = s;
+        for (n, uv) in mesh.normals.iter_mut().zip(&mesh.uv0) {
+            let (sp, cp) = (uv[0] * 2.0 * std::f32::consts::PI).sin_cos();
+            let (st, ct) = (uv[1] * std::f32::consts::PI).sin_cos();
+            let dp_dv = [ct * sp, -st, ct * cp];
+            *n = math::normalize(math::add(
+                math::scale(*n, tilt.cos()),
+                math::scale(dp_dv, tilt.sin()),
+            ));
+        }
+    });
+    let stated = draw(tilted.clone(), &|_| {});
+    let flipped = draw(tilted, &with_bitangent_flipped);
+    let same = flip(&reference, &stated, GOLDEN_SIZE, GOLDEN_SIZE).mean;
+    let other = flip(&reference, &flipped, GOLDEN_SIZE, GOLDEN_SIZE).mean;
+    println!(
+        "normal map tilted along +v vs normals tilted along dP/dv: FLIP {same:.5}; w negated: {other:.5}"
+    );
+    let mut goldens_read = Vec::new();
+    for (material, name) in GOLDENS_READING_THE_BITANGENT {
+        let meta_path = generated.join(format!("{material}/{material}.meta.json"));
+        let meta =
+            weft_meta::MaterialMetadata::from_json(&std::fs::read_to_string(&meta_path).unwrap())
+                .unwrap();
+        let case = cases(&meta).into_iter().find(|c| c.name == name).unwrap();
+        let golden = read_png(&golden_path(&goldens, &case)).unwrap().2;
+        let render = |h: &mut Harness, edit: fn(&mut Scene)| {
+            to_ldr(
+                &h.render_edited(
+                    &meta_path,
+                    &case,
+                    GOLDEN_SIZE,
+                    ShaderLanguage::Wgsl,
+                    |_, s| {
+                        edit(s);
+                        Ok(())
+                    },
+                )
+                .unwrap(),
+            )
+        };
+        let stated = flip(&golden, &render(&mut h, |_| {}), GOLDEN_SIZE, GOLDEN_SIZE).mean;
+        let flipped = flip(
+            &golden,
+            &render(&mut h, with_bitangent_flipped),
+            GOLDEN_SIZE,
+            GOLDEN_SIZE,
+        )
+        .mean;
+        println!("{material}/{name}: FLIP against the golden {stated:.5}; w negated {flipped:.5}");
+        goldens_read.push((material, name, stated, flipped));
+    }
+    assert!(
+        same <= TANGENT_REFERENCE_MAX,
+        "the stated convention misses the geometric reference: FLIP {same:.5}"
+    );
+    assert!(
+        other >= TANGENT_FLIPPED_MIN,
+        "w negated draws the geometric reference too: FLIP {other:.5}"
+    );
+    for (material, name, stated, flipped) in goldens_read {
+        assert!(
+            stated <= FLIP_MEAN_THRESHOLD,
+            "{material}/{name}: the stated tangents miss the golden: FLIP {stated:.5}"
+        );
+        assert!(
+            flipped >= TANGENT_FLIPPED_GOLDEN_MIN,
+            "{material}/{name}: w negated reproduces the golden too: FLIP {flipped:.5}"
+        );
+    }
+}

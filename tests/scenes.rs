@@ -381,3 +381,41 @@ fn scene_builds_are_byte_deterministic() {
         assert_eq!(one.metadata, four.metadata);
     }
 }
+
+/// Every scene's metadata states the light weft draws it with (scene schema
+/// 3.3): the manifest's `[light]`, else `weft_meta`'s default light, which
+/// is the renderer's `Light::default()`; and the renderer draws with it.
+#[test]
+fn every_scene_states_the_light_it_is_drawn_with() {
+    use weft_meta::scene::{DEFAULT_LIGHT_COLOR, DEFAULT_LIGHT_DIRECTION};
+    let default = weft_render::Light::default();
+    assert_eq!(default.direction, DEFAULT_LIGHT_DIRECTION.map(|c| c as f32));
+    assert_eq!(default.radiance, DEFAULT_LIGHT_COLOR.map(|c| c as f32));
+    let mut defaulted = 0;
+    for (name, scene) in scenes() {
+        let meta = &scene.metadata;
+        let light = meta
+            .light
+            .as_ref()
+            .unwrap_or_else(|| panic!("{name}: no `light`"));
+        let color = light
+            .color
+            .unwrap_or_else(|| panic!("{name}: no `light.color`"));
+        let manifest =
+            std::fs::read_to_string(repo().join(format!("scenes/{name}.scene.toml"))).unwrap();
+        if !manifest.lines().any(|l| l.trim() == "[light]") {
+            defaulted += 1;
+            assert_eq!(light.direction, DEFAULT_LIGHT_DIRECTION, "{name}");
+            assert_eq!(color, DEFAULT_LIGHT_COLOR, "{name}");
+        }
+        let drawn = scene.lighting.light;
+        assert_eq!(drawn.direction, light.direction.map(|c| c as f32), "{name}");
+        if meta.features.directional_lights > 0 {
+            assert_eq!(drawn.radiance, color.map(|c| c as f32), "{name}");
+        }
+    }
+    assert!(
+        defaulted > 0,
+        "no shipped scene exercises the default light"
+    );
+}

@@ -107,6 +107,7 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
                     .into(),
                 channels: "r: scale, g: bias".into(),
                 sha256: None,
+                mip_chain: None,
             }),
         ),
         "weft_lut_sampler" => resource(
@@ -133,6 +134,7 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
                     .into(),
                 channels: "r: E".into(),
                 sha256: None,
+                mip_chain: None,
             }),
         ),
         _ => return None,

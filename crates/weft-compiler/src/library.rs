@@ -282,6 +282,7 @@ pub fn compile_material_cached(
         limits: (!m.limits.is_default()).then(|| m.limits.clone()),
         variants: variants_meta,
         languages: crate::engine_binding::languages(),
+        conventions: Some(weft_meta::Conventions::current()),
         // Measured by `weft bench`, attached at load time from reports/, never built in.
         measurements: None,
     };

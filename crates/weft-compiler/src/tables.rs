@@ -80,6 +80,7 @@ pub fn resource(m: &Material, t: &BakedTable) -> EngineResource {
             v: v.into(),
             channels: channels.into(),
             sha256: Some(crate::variant::sha256_hex(&bake(t))),
+            mip_chain: None,
         }),
     }
 }

@@ -50,5 +50,10 @@ pub fn resource_file(m: &Material, p: &Param) -> Option<ResourceFile> {
             }
         ),
         sha256: Some(f.image.sha256.clone()),
+        mip_chain: Some(weft_meta::MipChain::for_texture(
+            f.image.width,
+            f.image.height,
+            p.srgb,
+        )),
     })
 }

@@ -564,6 +564,8 @@ fn instance_scene(
         light: None,
         shaders: Vec::new(),
         languages: meta.languages.clone(),
+        conventions: meta.conventions.clone(),
+        meshes: Default::default(),
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),

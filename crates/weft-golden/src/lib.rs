@@ -202,6 +202,20 @@ impl Harness {
         size: u32,
         language: ShaderLanguage,
     ) -> weft_render::Result<HdrImage> {
+        self.render_edited(meta_path, case, size, language, |_, _| Ok(()))
+    }
+
+    /// [`Harness::render`] with the case's material and scene changed by
+    /// `edit` first (another mesh or tangents, a texture the case leaves
+    /// unset).
+    pub fn render_edited(
+        &mut self,
+        meta_path: &Path,
+        case: &Case,
+        size: u32,
+        language: ShaderLanguage,
+        edit: impl FnOnce(&mut Material, &mut weft_render::Scene) -> weft_render::Result<()>,
+    ) -> weft_render::Result<HdrImage> {
         let mut material = Material::load(meta_path)?;
         case.options.apply(&mut material)?;
         let preview = PreviewOptions {
@@ -214,7 +228,9 @@ impl Harness {
             language,
             ..preview.render_options()
         };
-        self.renderer.render(&material, &preview.scene(), &options)
+        let mut scene = preview.scene();
+        edit(&mut material, &mut scene)?;
+        self.renderer.render(&material, &scene, &options)
     }
 }
 

@@ -36,6 +36,11 @@ pub fn build_project(
             .install(build)?,
     };
     out.files.extend(files);
+    // The built-in meshes the scenes name (`meshes/<name>.mesh`), beside
+    // the LUTs in the library root.
+    let meshes = weft_render::builtin_mesh_files()
+        .map_err(|e| error(format!("cannot write the built-in meshes: {e}")))?;
+    out.files.extend(meshes);
     Ok(out)
 }
 

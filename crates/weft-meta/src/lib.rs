@@ -31,14 +31,17 @@ macro_rules! value_names {
 }
 
 pub mod bake;
+pub mod conventions;
 pub mod files;
 pub mod gpu_model;
 pub mod limits;
+pub mod mesh;
 pub mod names;
 pub mod pipeline;
 pub mod scene;
 pub mod version;
 
+pub use conventions::Conventions;
 pub use limits::DeviceLimits;
 pub use names::{BUILTIN_MESHES, ENGINE_RESOURCE_IDS, VERTEX_INPUTS};
 pub use pipeline::*;
@@ -54,8 +57,9 @@ pub const SCHEMA_VERSION: u32 = 4;
 
 /// Minor version of the metadata layout: additions a reader of the same major
 /// may ignore. 1: the first layout that states its minor (files without
-/// `schema_minor` are 4.0).
-pub const SCHEMA_MINOR: u32 = 1;
+/// `schema_minor` are 4.0). 2: `conventions` ([`Conventions`]: the built-in
+/// textures' exact texels).
+pub const SCHEMA_MINOR: u32 = 2;
 
 /// Version of the engine interface (group 0 frame, group 2 object, vertex inputs).
 pub const ENGINE_INTERFACE_VERSION: u32 = 2;
@@ -67,7 +71,7 @@ pub struct MaterialMetadata {
     /// changes when a field is removed or changes meaning: a reader rejects a major it does not
     /// know (`MaterialMetadata::from_json` does).
     pub schema_version: u32,
-    /// Minor version of the metadata layout (`weft_meta::SCHEMA_MINOR`, currently 1). It changes
+    /// Minor version of the metadata layout (`weft_meta::SCHEMA_MINOR`, currently 2). It changes
     /// when optional fields or objects are added: a reader of the same major ignores what it does
     /// not know. Absent (0) in files written before the minor existed.
     #[serde(default)]
@@ -112,6 +116,12 @@ pub struct MaterialMetadata {
     /// Per emitted language (`wgsl`, `spirv`, `hlsl`, `msl`, `glsl`): the
     /// coordinate conventions to draw its files with.
     pub languages: BTreeMap<String, LanguageConventions>,
+    /// What an engine does as weft's renderer does beyond bindings and
+    /// pipeline states: the built-in textures' exact texels
+    /// (docs/engine-interface.md). Written since schema 4.2; absent in older
+    /// files (read it as `weft_meta::Conventions::current()`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conventions: Option<Conventions>,
     /// Measured cost and error per tier. Never written by the compiler (its
     /// output is deterministic); attached at load time from
     /// `<generated>/reports/<name>.measurements.json` by [`MaterialMetadata::attach_measurements`].
@@ -385,9 +395,9 @@ pub enum TextureDefault {
     White,
     /// (0,0,0,1)
     Black,
-    /// (0.5,0.5,0.5,1) in the texture's own encoding.
+    /// (0.5,0.5,0.5,1) in the texture's own encoding: bytes (128, 128, 128, 255).
     Gray,
-    /// Flat tangent-space normal (0.5,0.5,1,1).
+    /// Flat tangent-space normal (0.5,0.5,1,1): bytes (128, 128, 255, 255).
     Normal,
 }
 
@@ -406,9 +416,16 @@ impl TextureDefault {
             TextureDefault::Normal => "normal",
         }
     }
-    /// The RGBA8 bytes of the built-in 1x1 texture.
-    pub fn rgba8(self) -> [u8; 4] {
-        self.texel().map(|c| (c * 255.0).round() as u8)
+    /// The RGBA8 bytes of the built-in 1x1 texture: what weft's renderer
+    /// uploads and metadata states (`conventions.builtin_textures`). 0.5 is
+    /// 128 (0.5 × 255 = 127.5, rounded half away from zero).
+    pub const fn rgba8(self) -> [u8; 4] {
+        match self {
+            TextureDefault::White => [255, 255, 255, 255],
+            TextureDefault::Black => [0, 0, 0, 255],
+            TextureDefault::Gray => [128, 128, 128, 255],
+            TextureDefault::Normal => [128, 128, 255, 255],
+        }
     }
     /// What sampling the built-in texture returns: its RGBA8 bytes decoded,
     /// through the sRGB curve (RGB only) when the texture is sRGB. Scene
@@ -424,14 +441,10 @@ impl TextureDefault {
             }
         })
     }
-    /// The texel value as stored (before any sRGB decode).
+    /// The texel value as stored (before any sRGB decode): the
+    /// [`TextureDefault::rgba8`] bytes / 255 (`gray` is 128/255, not 0.5).
     pub fn texel(self) -> [f32; 4] {
-        match self {
-            TextureDefault::White => [1.0, 1.0, 1.0, 1.0],
-            TextureDefault::Black => [0.0, 0.0, 0.0, 1.0],
-            TextureDefault::Gray => [0.5, 0.5, 0.5, 1.0],
-            TextureDefault::Normal => [0.5, 0.5, 1.0, 1.0],
-        }
+        self.rgba8().map(|b| f32::from(b) / 255.0)
     }
 }
 

@@ -400,6 +400,44 @@ pub struct ResourceFile {
     /// a material's variants (baked tables, texture parameters' images).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sha256: Option<String>,
+    /// Texture parameters' images (since schema 4.2): the file holds level 0
+    /// only, and the engine builds this mip chain before binding it. Absent
+    /// for LUTs and baked tables, which are bound with one level.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mip_chain: Option<MipChain>,
+}
+
+/// The mip chain an engine builds for a texture file
+/// (`weft_meta::bake::rgba8_mip_chain` builds it exactly).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct MipChain {
+    /// Levels to create the texture with, level 0 being the file:
+    /// floor(log2(max(width, height))) + 1, down to 1×1.
+    pub levels: u32,
+    /// How level n + 1 is made from level n: `box_2x2`, the mean of the 2×2
+    /// texels (2x + i, 2y + j) clamped to level n's size (sides halve,
+    /// rounded down, never below 1; an odd side's last row or column is
+    /// left out).
+    pub filter: String,
+    /// Whether RGB is averaged in linear light: decoded from sRGB, averaged,
+    /// encoded and rounded to the nearest byte (true for `rgba8unorm_srgb`).
+    /// Otherwise, and always for alpha, bytes are averaged and rounded half
+    /// up: (a + b + c + d + 2) / 4.
+    pub linear_light: bool,
+}
+
+/// [`MipChain::filter`]'s one value.
+pub const MIP_FILTER_BOX: &str = "box_2x2";
+
+impl MipChain {
+    /// The chain of a `width` × `height` texture file, sRGB or not.
+    pub fn for_texture(width: u32, height: u32, srgb: bool) -> MipChain {
+        MipChain {
+            levels: crate::bake::mip_level_count(width, height),
+            filter: MIP_FILTER_BOX.into(),
+            linear_light: srgb,
+        }
+    }
 }
 
 // ---------------------------------------------------------------- GLSL

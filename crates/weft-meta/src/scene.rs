@@ -20,8 +20,23 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// Minor version of the scene metadata layout (additions a reader of the same
 /// major may ignore). 1: the first that states its minor (files without
 /// `schema_minor` are 3.0). 2: `tier_choice.gpu_family` and each candidate's
-/// `gpu` figures (automatic tiers costed by the GPU model).
-pub const SCENE_SCHEMA_MINOR: u32 = 2;
+/// `gpu` figures (automatic tiers costed by the GPU model). 3: `light` is
+/// always written, with its `color`: the light weft draws the scene with,
+/// [`DEFAULT_LIGHT_DIRECTION`] and [`DEFAULT_LIGHT_COLOR`] where the manifest
+/// gives none; `conventions` (as in material metadata 4.2); and `meshes`,
+/// the files of the built-in meshes the instances draw.
+pub const SCENE_SCHEMA_MINOR: u32 = 3;
+
+/// The main light's direction (from the surface towards the light, world
+/// space; length ≈ 1, normalise it) when a scene manifest has no `[light]`:
+/// what weft's renderer draws with, and since scene schema 3.3 what the
+/// scene metadata's `light.direction` says.
+pub const DEFAULT_LIGHT_DIRECTION: [f64; 3] = [-0.62, 0.55, 0.56];
+
+/// The main light's linear radiance when a scene's `[light]` gives no
+/// `color` (or there is no `[light]`): written into `light.color` since
+/// scene schema 3.3.
+pub const DEFAULT_LIGHT_COLOR: [f64; 3] = [3.2, 3.05, 2.8];
 
 /// The GPU families whose modelled cost (`generated/reports/gpu-model.json`,
 /// AMD's compiler on Mesa RADV's null device) `tier = "auto"` can use: a
@@ -38,7 +53,7 @@ pub struct SceneMetadata {
     /// currently 3): a reader rejects a major it does not know.
     pub schema_version: u32,
     /// Minor version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_MINOR`,
-    /// currently 1): a reader of the same major ignores fields it does not know. Absent (0) in
+    /// currently 3): a reader of the same major ignores fields it does not know. Absent (0) in
     /// files written before the minor existed.
     #[serde(default)]
     pub schema_minor: u32,
@@ -56,8 +71,11 @@ pub struct SceneMetadata {
     pub features: SceneFeatures,
     /// Camera for previews and tests.
     pub camera: SceneCamera,
-    /// The main light for previews and tests (`[light]`); absent: the
-    /// renderer's default light.
+    /// The main light weft draws the scene with: the manifest's `[light]`,
+    /// else weft's default light (`weft_meta::scene::DEFAULT_LIGHT_DIRECTION`
+    /// and `DEFAULT_LIGHT_COLOR`). Always written since schema 3.3 (absent in
+    /// older files: read it as that default light). With
+    /// `features.directional_lights` 0 no shader reads it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub light: Option<SceneLight>,
     /// Unique specialised shaders, in first-use order.
@@ -72,6 +90,29 @@ pub struct SceneMetadata {
     /// Absent when every shader fits WebGPU's default limits.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limits: Option<crate::DeviceLimits>,
+    /// What an engine does as weft's renderer does beyond bindings and
+    /// pipeline states (as in the material metadata). Written since schema
+    /// 3.3; absent in older files (read it as
+    /// `weft_meta::Conventions::current()`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conventions: Option<crate::Conventions>,
+    /// The built-in meshes the instances draw (`instances[].mesh`), by
+    /// name: the file with the exact vertex data weft draws. Written since
+    /// schema 3.3; absent (empty) in older files.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub meshes: BTreeMap<String, SceneMesh>,
+}
+
+/// A built-in mesh's file (`weft_meta::mesh`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct SceneMesh {
+    /// Relative to the library root (two folders above the scene metadata):
+    /// `meshes/<name>.mesh`, written by `cargo xtask regenerate`.
+    pub path: String,
+    /// The file's layout: `weft_mesh_v1` (`weft_meta::mesh::MESH_FORMAT`:
+    /// a 24-byte header, the six vertex streams of the engine interface in
+    /// location order, u32 indices; all little-endian; docs/engine-interface.md).
+    pub format: String,
 }
 
 /// The engine features a scene provides. Engine interface v1: group 0 is
@@ -97,14 +138,41 @@ pub struct SceneCamera {
     pub fov_degrees: f64,
 }
 
-/// The main directional light for previews and tests.
+/// The main directional light: `weft_frame.light_direction` (normalised)
+/// and `weft_frame.light_color`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct SceneLight {
     /// From the surface towards the light, world space (normalise it).
     pub direction: [f64; 3],
-    /// Linear radiance; absent: the renderer's default.
+    /// Linear radiance (`weft_frame.light_color`). Always written since
+    /// schema 3.3; absent in older files: read it as
+    /// `weft_meta::scene::DEFAULT_LIGHT_COLOR`, (3.2, 3.05, 2.8).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color: Option<[f64; 3]>,
+}
+
+impl SceneLight {
+    /// A light with the defaults filled in: [`DEFAULT_LIGHT_DIRECTION`]
+    /// without a direction, [`DEFAULT_LIGHT_COLOR`] without a colour. What
+    /// the compiler writes (`color` always set) and what a reader of a file
+    /// older than 3.3 uses.
+    pub fn with_defaults(direction: Option<[f64; 3]>, color: Option<[f64; 3]>) -> SceneLight {
+        SceneLight {
+            direction: direction.unwrap_or(DEFAULT_LIGHT_DIRECTION),
+            color: Some(color.unwrap_or(DEFAULT_LIGHT_COLOR)),
+        }
+    }
+}
+
+impl SceneMetadata {
+    /// The light the scene is drawn with: `light`, completed with the
+    /// defaults where a file older than schema 3.3 left them out.
+    pub fn light_used(&self) -> SceneLight {
+        match &self.light {
+            Some(l) => SceneLight::with_defaults(Some(l.direction), l.color),
+            None => SceneLight::with_defaults(None, None),
+        }
+    }
 }
 
 /// One specialised shader.

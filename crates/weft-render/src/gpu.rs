@@ -276,6 +276,59 @@ impl Gpu {
         self.map_read(&staging)
     }
 
+    /// Reads one mip level of one layer of a 4-byte-per-texel texture (it
+    /// needs `COPY_SRC`) back to the CPU, rows tightly packed.
+    #[cfg(test)]
+    pub(crate) fn read_texture_rgba8(
+        &self,
+        texture: &wgpu::Texture,
+        mip: u32,
+        layer: u32,
+    ) -> Result<Vec<u8>> {
+        let size = texture.size().mip_level_size(mip, texture.dimension());
+        let (width, height) = (size.width, size.height);
+        let row = (width * 4).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+        let staging = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("weft texture readback"),
+            size: u64::from(row * height),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut enc = self.device.create_command_encoder(&Default::default());
+        enc.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture,
+                mip_level: mip,
+                origin: wgpu::Origin3d {
+                    x: 0,
+                    y: 0,
+                    z: layer,
+                },
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &staging,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(row),
+                    rows_per_image: Some(height),
+                },
+            },
+            wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+        );
+        self.queue.submit([enc.finish()]);
+        let padded = self.map_read(&staging)?;
+        Ok(padded
+            .chunks_exact(row as usize)
+            .flat_map(|r| &r[..(width * 4) as usize])
+            .copied()
+            .collect())
+    }
+
     pub(crate) fn map_read(&self, staging: &wgpu::Buffer) -> Result<Vec<u8>> {
         let (tx, rx) = std::sync::mpsc::channel();
         staging.map_async(wgpu::MapMode::Read, .., move |r| {

@@ -77,7 +77,8 @@ fn cube_f16_texture(gpu: &Gpu, label: &str, size: u32, mips: u32, data: &[u8]) -
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
             format: wgpu::TextureFormat::Rgba16Float,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            // COPY_SRC: tests read back what was uploaded.
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         },
         wgpu::util::TextureDataOrder::LayerMajor,
@@ -195,6 +196,38 @@ fn rgba8_texture(
     data: &[u8],
     srgb: bool,
 ) -> wgpu::Texture {
+    rgba8_texture_levels(gpu, label, width, height, layers, 1, data, srgb)
+}
+
+/// A 2D texture parameter's RGBA8 image with its full mip chain, built as
+/// the metadata's `mip_chain` says (`weft_meta::bake::rgba8_mip_chain`: box
+/// 2×2, in linear light for sRGB): what docs/engine-interface.md asks of
+/// an engine for a texture file.
+fn rgba8_texture_mipped(
+    gpu: &Gpu,
+    label: &str,
+    width: u32,
+    height: u32,
+    level0: &[u8],
+    srgb: bool,
+) -> wgpu::Texture {
+    let chain = weft_meta::bake::rgba8_mip_chain(width, height, level0, srgb);
+    let levels = chain.len() as u32;
+    rgba8_texture_levels(gpu, label, width, height, 1, levels, &chain.concat(), srgb)
+}
+
+/// `data`: every level of layer 0 (level 0 first), then of layer 1, …
+#[allow(clippy::too_many_arguments)]
+fn rgba8_texture_levels(
+    gpu: &Gpu,
+    label: &str,
+    width: u32,
+    height: u32,
+    layers: u32,
+    levels: u32,
+    data: &[u8],
+    srgb: bool,
+) -> wgpu::Texture {
     gpu.device.create_texture_with_data(
         &gpu.queue,
         &wgpu::TextureDescriptor {
@@ -204,7 +237,7 @@ fn rgba8_texture(
                 height,
                 depth_or_array_layers: layers,
             },
-            mip_level_count: 1,
+            mip_level_count: levels,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
             format: if srgb {
@@ -212,7 +245,8 @@ fn rgba8_texture(
             } else {
                 wgpu::TextureFormat::Rgba8Unorm
             },
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            // COPY_SRC: tests read back what was uploaded.
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         },
         wgpu::util::TextureDataOrder::LayerMajor,
@@ -220,8 +254,10 @@ fn rgba8_texture(
     )
 }
 
+/// A built-in texture's texel: `weft_meta`'s bytes, the ones the metadata
+/// states (`conventions.builtin_textures`).
 fn texel_bytes(t: TextureDefault) -> [u8; 4] {
-    t.texel().map(|c| (c * 255.0).round() as u8)
+    t.rgba8()
 }
 
 fn texture_2d(gpu: &Gpu, label: &str, t: &TextureValue, srgb: bool) -> Result<wgpu::Texture> {
@@ -231,7 +267,16 @@ fn texture_2d(gpu: &Gpu, label: &str, t: &TextureValue, srgb: bool) -> Result<wg
             width,
             height,
             data,
-        } => rgba8_texture(gpu, label, *width, *height, 1, data, srgb),
+        } => {
+            let expected = *width as usize * *height as usize * 4;
+            if data.len() != expected || expected == 0 {
+                return Err(Error::InvalidValue {
+                    name: label.into(),
+                    message: format!("{} bytes are not {width}x{height} RGBA8 texels", data.len()),
+                });
+            }
+            rgba8_texture_mipped(gpu, label, *width, *height, data, srgb)
+        }
         TextureValue::CubeRgbaF32 { .. } => {
             return Err(Error::InvalidValue {
                 name: label.into(),
@@ -389,4 +434,90 @@ pub(crate) fn vertex_stream(mesh: &Mesh, vi: &VertexInput) -> Result<Vec<u8>> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The built-in textures weft uploads hold exactly the bytes the
+    /// metadata states (`conventions.builtin_textures`): read back from the
+    /// GPU, 2D and every cube face, in both formats.
+    #[test]
+    fn builtin_textures_upload_the_stated_texels() {
+        let gpu = Gpu::new().expect("a Vulkan adapter (lavapipe: mesa-vulkan-drivers)");
+        let stated = weft_meta::Conventions::current().builtin_textures;
+        for d in TextureDefault::ALL {
+            for srgb in [false, true] {
+                let want = stated[d.name()];
+                let t = texture_2d(&gpu, d.name(), &TextureValue::Builtin(d), srgb).unwrap();
+                let got = gpu.read_texture_rgba8(&t, 0, 0).unwrap();
+                assert_eq!(got, want, "{} (srgb {srgb})", d.name());
+                let c = cube_texture(&gpu, d.name(), &TextureValue::Builtin(d), srgb).unwrap();
+                for face in 0..6 {
+                    let got = gpu.read_texture_rgba8(&c, 0, face).unwrap();
+                    assert_eq!(got, want, "{} cube face {face} (srgb {srgb})", d.name());
+                }
+            }
+        }
+    }
+
+    /// A texture parameter's image is bound with the mip chain its
+    /// metadata states (`mip_chain`): every level read back from the GPU is
+    /// `weft_meta::bake::rgba8_mip_chain`'s, for a shipped file (hair's
+    /// 64×256 flow map, eye's sRGB matcap) and an odd-sized image.
+    #[test]
+    fn texture_files_upload_the_stated_mip_chain() {
+        let gpu = Gpu::new().expect("a Vulkan adapter (lavapipe: mesa-vulkan-drivers)");
+        let generated = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../generated");
+        let mut images = Vec::new();
+        for (material, param) in [("hair", "flow_map"), ("eye", "matcap_map")] {
+            let meta_path = generated.join(format!("{material}/{material}.meta.json"));
+            let meta = weft_meta::MaterialMetadata::from_json(
+                &std::fs::read_to_string(&meta_path).unwrap(),
+            )
+            .unwrap();
+            let p = meta.parameters.iter().find(|p| p.name == param).unwrap();
+            let t = p.texture.as_ref().unwrap();
+            let file = t.file.as_ref().expect("a shipped image");
+            let chain = file
+                .mip_chain
+                .as_ref()
+                .expect("texture files state their mip chain");
+            assert_eq!(
+                chain,
+                &weft_meta::MipChain::for_texture(file.width, file.height, t.srgb)
+            );
+            let roots = crate::texture_files::material_roots(meta_path.parent().unwrap());
+            let value = crate::texture_files::read(&roots, file).unwrap();
+            images.push((format!("{material}.{param}"), value, t.srgb, chain.levels));
+        }
+        let odd: Vec<u8> = (0..5 * 3 * 4).map(|i| (i * 37 % 256) as u8).collect();
+        for srgb in [false, true] {
+            let value = TextureValue::Rgba8 {
+                width: 5,
+                height: 3,
+                data: odd.clone(),
+            };
+            images.push((format!("5x3 (srgb {srgb})"), value, srgb, 3));
+        }
+        for (label, value, srgb, levels) in images {
+            let TextureValue::Rgba8 {
+                width,
+                height,
+                data,
+            } = &value
+            else {
+                unreachable!()
+            };
+            let want = weft_meta::bake::rgba8_mip_chain(*width, *height, data, srgb);
+            assert_eq!(want.len() as u32, levels, "{label}");
+            let texture = texture_2d(&gpu, &label, &value, srgb).unwrap();
+            assert_eq!(texture.mip_level_count(), levels, "{label}");
+            for (m, level) in want.iter().enumerate() {
+                let got = gpu.read_texture_rgba8(&texture, m as u32, 0).unwrap();
+                assert_eq!(&got, level, "{label}: level {m}");
+            }
+        }
+    }
 }

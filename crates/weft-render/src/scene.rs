@@ -240,10 +240,12 @@ pub struct Light {
 }
 
 impl Default for Light {
+    /// weft's default light, stated once in `weft-meta` (scene metadata
+    /// writes it into `light` when a manifest has no `[light]`).
     fn default() -> Self {
         Light {
-            direction: [-0.62, 0.55, 0.56],
-            radiance: [3.2, 3.05, 2.8],
+            direction: weft_meta::scene::DEFAULT_LIGHT_DIRECTION.map(|c| c as f32),
+            radiance: weft_meta::scene::DEFAULT_LIGHT_COLOR.map(|c| c as f32),
         }
     }
 }
@@ -436,5 +438,62 @@ mod tests {
         }
         let q = Mesh::swatch();
         assert_eq!(q.tangents[0], [1.0, 0.0, 0.0, -1.0]);
+    }
+
+    /// Every built-in mesh follows the tangent-frame convention the
+    /// metadata states (`weft_meta::conventions::TangentFrame`): the tangent
+    /// along +u and w·cross(N, T) along +v, per triangle from its positions
+    /// and uvs (seams and poles, where a vertex's frame belongs to other
+    /// triangles, aside: nearly every corner agrees).
+    #[test]
+    fn built_in_meshes_follow_the_stated_tangent_frame() {
+        let frame = weft_meta::conventions::TangentFrame::current();
+        assert_eq!(
+            (
+                frame.tangent_follows.as_str(),
+                frame.bitangent_follows.as_str()
+            ),
+            ("+u", "+v")
+        );
+        for kind in SceneKind::ALL {
+            let m = Scene::new(kind).mesh;
+            let (mut agree, mut total) = (0usize, 0usize);
+            for t in m.indices.chunks_exact(3) {
+                let [i0, i1, i2] = [t[0], t[1], t[2]].map(|i| i as usize);
+                let (p0, p1, p2) = (m.positions[i0], m.positions[i1], m.positions[i2]);
+                let (w0, w1, w2) = (m.uv0[i0], m.uv0[i1], m.uv0[i2]);
+                let (e1, e2) = (math::sub(p1, p0), math::sub(p2, p0));
+                let (du1, dv1) = (w1[0] - w0[0], w1[1] - w0[1]);
+                let (du2, dv2) = (w2[0] - w0[0], w2[1] - w0[1]);
+                let det = du1 * dv2 - du2 * dv1;
+                if det.abs() < 1e-9 {
+                    continue;
+                }
+                let dp_du = math::scale(
+                    math::sub(math::scale(e1, dv2), math::scale(e2, dv1)),
+                    1.0 / det,
+                );
+                let dp_dv = math::scale(
+                    math::sub(math::scale(e2, du1), math::scale(e1, du2)),
+                    1.0 / det,
+                );
+                for i in [i0, i1, i2] {
+                    let [tx, ty, tz, w] = m.tangents[i];
+                    let tangent = [tx, ty, tz];
+                    let w = if w < 0.0 { -1.0 } else { 1.0 };
+                    let bitangent = math::scale(math::cross(m.normals[i], tangent), w);
+                    total += 1;
+                    if math::dot(tangent, dp_du) > 0.0 && math::dot(bitangent, dp_dv) > 0.0 {
+                        agree += 1;
+                    }
+                }
+            }
+            let share = agree as f64 / total as f64;
+            assert!(
+                total > 0 && share > 0.97,
+                "{}: {agree} of {total} corners",
+                kind.name()
+            );
+        }
     }
 }

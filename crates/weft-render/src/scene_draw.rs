@@ -109,6 +109,8 @@ pub struct SceneLighting {
 }
 
 impl SceneLighting {
+    /// The features' lighting with weft's default light (`weft_meta::scene`'s
+    /// `DEFAULT_LIGHT_*`), radiance zero without a directional light.
     pub fn from_features(features: &SceneFeatures) -> SceneLighting {
         let mut light = Light::default();
         if features.directional_lights == 0 {
@@ -121,15 +123,15 @@ impl SceneLighting {
         }
     }
 
-    /// The features' lighting with the scene's own light (`[light]`), if it
-    /// names one.
+    /// The features' lighting with the light the metadata states
+    /// (`light`: always written since scene schema 3.3; the defaults fill
+    /// in what an older file left out).
     pub fn from_metadata(meta: &SceneMetadata) -> SceneLighting {
         let mut lighting = SceneLighting::from_features(&meta.features);
-        if let Some(l) = &meta.light {
-            lighting.light.direction = l.direction.map(|c| c as f32);
-            if let (Some(c), true) = (l.color, meta.features.directional_lights > 0) {
-                lighting.light.radiance = c.map(|c| c as f32);
-            }
+        let l = meta.light_used();
+        lighting.light.direction = l.direction.map(|c| c as f32);
+        if let (Some(c), true) = (l.color, meta.features.directional_lights > 0) {
+            lighting.light.radiance = c.map(|c| c as f32);
         }
         lighting
     }

@@ -73,6 +73,63 @@ fn float_texels(format: wgpu::TextureFormat, texels: &[[f32; 4]]) -> Result<Vec<
     })
 }
 
+/// The mip chain docs/engine-interface.md describes ("Texture files: mip
+/// chains"), written from the page: level n + 1 halves each side (never
+/// below 1); each texel is the mean of the 2×2 texels above it, clamped to
+/// the level's edge; RGB in linear light when `linear_light` (sRGB decoded,
+/// averaged, encoded, rounded), otherwise (and alpha) bytes averaged and
+/// rounded half up.
+fn box_mip_chain(
+    width: u32,
+    height: u32,
+    level0: Vec<u8>,
+    levels: u32,
+    linear_light: bool,
+) -> Vec<Vec<u8>> {
+    let decode = |b: u8| {
+        let c = f64::from(b) / 255.0;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let encode = |l: f64| {
+        let c = if l <= 0.0031308 {
+            l * 12.92
+        } else {
+            1.055 * l.powf(1.0 / 2.4) - 0.055
+        };
+        (c * 255.0).round().clamp(0.0, 255.0) as u8
+    };
+    let mut out = vec![level0];
+    let (mut w, mut h) = (width as usize, height as usize);
+    while (out.len() as u32) < levels {
+        let above = out.last().unwrap();
+        let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+        let mut level = vec![0u8; nw * nh * 4];
+        for y in 0..nh {
+            for x in 0..nw {
+                let mut texels = Vec::with_capacity(4);
+                for (i, j) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    let (sx, sy) = ((2 * x + i).min(w - 1), (2 * y + j).min(h - 1));
+                    texels.push(&above[(sy * w + sx) * 4..][..4]);
+                }
+                for c in 0..4 {
+                    level[(y * nw + x) * 4 + c] = if linear_light && c < 3 {
+                        encode(texels.iter().map(|t| decode(t[c])).sum::<f64>() / 4.0)
+                    } else {
+                        ((texels.iter().map(|t| u32::from(t[c])).sum::<u32>() + 2) / 4) as u8
+                    };
+                }
+            }
+        }
+        out.push(level);
+        (w, h) = (nw, nh);
+    }
+    out
+}
+
 impl Engine {
     /// A texture with `layers` layers and `mips.len()` levels, each level's
     /// bytes layer-major then row-major.
@@ -225,13 +282,26 @@ impl Engine {
             }
             let bytes = std::fs::read(root.join(&f.path))
                 .map_err(|e| format!("`{}`: {}: {e}", b.name, f.path))?;
-            let texture = self.texture(&b.name, format, (f.width, f.height, 1), &[bytes])?;
+            // The file is level 0; the metadata says which chain to build.
+            let chain = f
+                .mip_chain
+                .as_ref()
+                .ok_or_else(|| format!("`{}`: image `{}` states no `mip_chain`", b.name, f.path))?;
+            if chain.filter != "box_2x2" {
+                return Err(format!(
+                    "`{}`: unknown mip filter `{}`",
+                    b.name, chain.filter
+                ));
+            }
+            let mips = box_mip_chain(f.width, f.height, bytes, chain.levels, chain.linear_light);
+            let texture = self.texture(&b.name, format, (f.width, f.height, 1), &mips)?;
             return Ok(Self::view(&texture, t.view_dimension));
         }
         let (width, bytes) = match data {
-            TextureData::Builtin(d) if rgba8 => (1, d.rgba8().repeat(layers as usize)),
+            TextureData::Builtin(d) if rgba8 => (1, d.repeat(layers as usize)),
             TextureData::Builtin(d) => {
-                (1, float_texels(format, &vec![d.texel(); layers as usize])?)
+                let texel = d.map(|b| f32::from(b) / 255.0);
+                (1, float_texels(format, &vec![texel; layers as usize])?)
             }
             TextureData::Ramp(r) if rgba8 && layers == 1 && r.len() % 4 == 0 => {
                 ((r.len() / 4) as u32, r.clone())

@@ -136,8 +136,9 @@ pub struct ShaderRef<'a> {
 /// What a material texture binding samples.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TextureData {
-    /// A built-in 1×1 texture (six 1×1 faces for a cube).
-    Builtin(TextureDefault),
+    /// A built-in 1×1 texture (six 1×1 faces for a cube): its RGBA8 texel,
+    /// from the metadata's `conventions.builtin_textures`.
+    Builtin([u8; 4]),
     /// A gradient ramp: RGBA8 texels as stored (sRGB-encoded), `len / 4` × 1.
     Ramp(Vec<u8>),
     /// A texture parameter's image (`texture.file`): RGBA8 texels read from
@@ -155,6 +156,23 @@ pub struct MaterialInputs {
     pub textures: BTreeMap<u32, TextureData>,
     /// Per pass of the shader's `passes`, in that order.
     pub instances: Vec<u32>,
+}
+
+/// A built-in texture's RGBA8 texel as the metadata states it
+/// (`conventions.builtin_textures`): this engine knows no value of its own.
+fn builtin_texel(
+    conventions: Option<&weft_meta::Conventions>,
+    d: TextureDefault,
+) -> Result<[u8; 4], String> {
+    conventions
+        .and_then(|c| c.builtin_textures.get(d.name()))
+        .copied()
+        .ok_or_else(|| {
+            format!(
+                "no `conventions.builtin_textures.{}` in the metadata",
+                d.name()
+            )
+        })
 }
 
 /// A count from a JSON number: negative and non-finite counts draw nothing.
@@ -223,7 +241,9 @@ pub fn library_inputs(
                 }
                 TextureData::Ramp(g.baked_default.clone())
             }
-            (ParamKind::Texture2d | ParamKind::Cube, _, Some(d)) => TextureData::Builtin(d),
+            (ParamKind::Texture2d | ParamKind::Cube, _, Some(d)) => {
+                TextureData::Builtin(builtin_texel(meta.conventions.as_ref(), d)?)
+            }
             (kind, _, d) => {
                 return Err(format!(
                     "binding `{}` ({kind:?} parameter `{pname}`, default {d:?}): \
@@ -265,6 +285,7 @@ pub fn library_inputs(
 /// name), textures from `textures` (by binding name), instance counts fixed
 /// or the folded/uploaded int value.
 pub fn scene_inputs(
+    meta: &SceneMetadata,
     inst: &SceneInstance,
     shader: &VariantShader,
 ) -> Result<MaterialInputs, String> {
@@ -300,7 +321,7 @@ pub fn scene_inputs(
         let data = match (&t.builtin, &t.ramp_rgba8) {
             // Left at its image: the file (`builtin` is a fallback).
             _ if t.file.is_some() => TextureData::File(t.file.clone().expect("checked")),
-            (Some(d), None) => TextureData::Builtin(*d),
+            (Some(d), None) => TextureData::Builtin(builtin_texel(meta.conventions.as_ref(), *d)?),
             (None, Some(r)) => TextureData::Ramp(r.clone()),
             _ => {
                 return Err(format!(
@@ -367,18 +388,52 @@ pub fn scene_world(
         black.sh
     };
     let mut f = frame.clone();
-    if let Some(light) = &meta.light {
-        let d = light.direction;
-        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        f.light_direction = d.map(|c| (c / len) as f32);
-        if let Some(c) = light.color {
-            f.light_color = c.map(|c| c as f32);
-        }
-    }
+    // Scene schema 3.3 states the light weft draws with, defaults included:
+    // this engine knows no default light of its own.
+    let light = meta
+        .light
+        .as_ref()
+        .unwrap_or_else(|| panic!("scene {}: no `light` in the metadata", meta.name));
+    let d = light.direction;
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    f.light_direction = d.map(|c| (c / len) as f32);
+    let c = light
+        .color
+        .unwrap_or_else(|| panic!("scene {}: no `light.color` in the metadata", meta.name));
+    f.light_color = c.map(|c| c as f32);
     if features.directional_lights == 0 {
         f.light_color = [0.0; 3];
     }
     (e, f)
+}
+
+/// A built-in mesh of a scene, read from the file its `meshes` entry names
+/// (relative to the library root `root`).
+pub fn scene_mesh(
+    root: &Path,
+    meta: &SceneMetadata,
+    name: &str,
+) -> Result<super::data::Mesh, String> {
+    let entry = meta
+        .meshes
+        .get(name)
+        .ok_or_else(|| format!("no `meshes.{name}` in scene {}", meta.name))?;
+    if entry.format != "weft_mesh_v1" {
+        return Err(format!("mesh `{name}`: unknown format `{}`", entry.format));
+    }
+    let path = root.join(&entry.path);
+    let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let m = weft_meta::mesh::MeshData::from_bytes(&bytes)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(super::data::Mesh {
+        positions: m.positions,
+        normals: m.normals,
+        tangents: m.tangents,
+        uv0: m.uv0,
+        uv1: m.uv1,
+        colors: m.colors,
+        indices: m.indices,
+    })
 }
 
 /// An instance's `transform.model` as columns.

@@ -172,6 +172,22 @@ fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     h.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
 
+/// The files of the built-in meshes the instances draw, by name.
+fn scene_meshes(
+    instances: &[SceneInstance],
+) -> std::collections::BTreeMap<String, weft_meta::scene::SceneMesh> {
+    instances
+        .iter()
+        .map(|i| {
+            let mesh = weft_meta::scene::SceneMesh {
+                path: weft_meta::mesh::mesh_path(&i.mesh),
+                format: weft_meta::mesh::MESH_FORMAT.into(),
+            };
+            (i.mesh.clone(), mesh)
+        })
+        .collect()
+}
+
 /// The raised limits of the scene's materials, each at its highest.
 fn scene_limits(scene: &ResolvedScene) -> Option<weft_meta::DeviceLimits> {
     let mut limits = weft_meta::DeviceLimits::default();
@@ -567,6 +583,7 @@ pub fn build_resolved_scene(
         return None;
     }
 
+    let meshes = scene_meshes(&instances);
     let metadata = SceneMetadata {
         schema_version: SCENE_SCHEMA_VERSION,
         schema_minor: weft_meta::scene::SCENE_SCHEMA_MINOR,
@@ -584,13 +601,17 @@ pub fn build_resolved_scene(
             target: manifest.camera.target,
             fov_degrees: manifest.camera.fov_degrees,
         },
-        light: manifest.light.as_ref().map(|l| SceneLight {
-            direction: l.direction,
-            color: l.color,
-        }),
+        // Always written (schema 3.3): the light weft draws with, defaults
+        // included, so an engine never has to know them.
+        light: Some(SceneLight::with_defaults(
+            manifest.light.as_ref().map(|l| l.direction),
+            manifest.light.as_ref().and_then(|l| l.color),
+        )),
         shaders,
         instances,
         languages: crate::engine_binding::languages(),
+        conventions: Some(weft_meta::Conventions::current()),
+        meshes,
         limits: scene_limits(scene),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");

@@ -203,7 +203,7 @@ async function uploadTextures() {
     } else if (p && state.textures[p.name] && state.textures[p.name].kind === 'image' && b.texture.view_dimension === 'cube') {
       r.setTexture(b.binding, await panoramaCube(r, state.textures[p.name], b.texture.format));
     } else if (p && state.textures[p.name] && state.textures[p.name].kind === 'image') {
-      r.setTexture(b.binding, r.imageTexture(state.textures[p.name].bitmap, b.texture.format));
+      r.setTexture(b.binding, await r.imageTexture(state.textures[p.name].bitmap, b.texture.format));
     } else if (b.texture.file && !(p && state.textures[p.name] && state.textures[p.name].set)) {
       // Unset, a texture that ships an image binds its file (`texture.file`).
       r.setTexture(b.binding, await r.fileTexture(b.texture.file));

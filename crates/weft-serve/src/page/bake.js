@@ -92,3 +92,47 @@ export function bakeGradient(stops, width) {
   }
   return out;
 }
+
+// The mip chain of an RGBA8 texture (rows top first), as weft_meta's
+// bake::rgba8_mip_chain builds it (docs/engine-interface.md, "Texture
+// files: mip chains"): level n + 1 halves each side (never below 1); each
+// texel is the mean of the 2x2 texels above it, clamped to the level's
+// edge; RGB in linear light for sRGB formats (decoded, averaged, encoded,
+// rounded), otherwise (and alpha) bytes averaged and rounded half up.
+export function mipLevelCount(width, height) {
+  return Math.floor(Math.log2(Math.max(width, height, 1))) + 1;
+}
+
+export function mipChain(width, height, level0, srgb) {
+  const decode = new Float64Array(256);
+  for (let b = 0; b < 256; b++) decode[b] = srgbToLinear(b / 255);
+  const levels = [level0];
+  let w = width;
+  let h = height;
+  for (let n = 1; n < mipLevelCount(width, height); n++) {
+    const src = levels[levels.length - 1];
+    const nw = Math.max(1, w >> 1);
+    const nh = Math.max(1, h >> 1);
+    const dst = new Uint8Array(nw * nh * 4);
+    for (let y = 0; y < nh; y++) {
+      for (let x = 0; x < nw; x++) {
+        const x0 = Math.min(2 * x, w - 1), x1 = Math.min(2 * x + 1, w - 1);
+        const y0 = Math.min(2 * y, h - 1), y1 = Math.min(2 * y + 1, h - 1);
+        const t = [(y0 * w + x0) * 4, (y0 * w + x1) * 4, (y1 * w + x0) * 4, (y1 * w + x1) * 4];
+        for (let c = 0; c < 4; c++) {
+          const o = (y * nw + x) * 4 + c;
+          if (srgb && c < 3) {
+            const mean = (decode[src[t[0] + c]] + decode[src[t[1] + c]] + decode[src[t[2] + c]] + decode[src[t[3] + c]]) / 4;
+            dst[o] = Math.min(255, Math.max(0, Math.round(linearToSrgb(mean) * 255)));
+          } else {
+            dst[o] = (src[t[0] + c] + src[t[1] + c] + src[t[2] + c] + src[t[3] + c] + 2) >> 2;
+          }
+        }
+      }
+    }
+    levels.push(dst);
+    w = nw;
+    h = nh;
+  }
+  return levels;
+}

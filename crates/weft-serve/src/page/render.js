@@ -420,10 +420,22 @@ export class Renderer {
     if (this.luts[key]) return this.luts[key];
     if (file.format !== 'rgba8unorm' && file.format !== 'rgba8unorm_srgb') throw new Error(`image ${file.path}: format ${file.format} is not one the page knows`);
     const bytes = await fetchOk(this.base + 'api/files/' + file.path, 'bin');
-    const t = this.device.createTexture({ label: file.path, size: [file.width, file.height], format: gpuName(file.format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-    this.device.queue.writeTexture({ texture: t }, bytes, { bytesPerRow: file.width * 4, rowsPerImage: file.height }, [file.width, file.height]);
-    this.luts[key] = t.createView();
+    // Level 0 only: build the chain the file's `mip_chain` states.
+    this.luts[key] = this.mippedTexture(file.path, file.width, file.height, new Uint8Array(bytes), file.format);
     return this.luts[key];
+  }
+
+  // An RGBA8 image with its full mip chain (bake.mipChain: box 2x2, in
+  // linear light for sRGB), as weft-render binds a texture parameter's image.
+  mippedTexture(label, width, height, level0, format) {
+    const levels = bake.mipChain(width, height, level0, format === 'rgba8unorm_srgb');
+    const t = this.device.createTexture({ label, size: [width, height], mipLevelCount: levels.length, format: gpuName(format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    levels.forEach((data, m) => {
+      const w = Math.max(1, width >> m);
+      const h = Math.max(1, height >> m);
+      this.device.queue.writeTexture({ texture: t, mipLevel: m }, data, { bytesPerRow: w * 4, rowsPerImage: h }, [w, h]);
+    });
+    return t.createView();
   }
 
   // A 1x1 (or 1x1x6) RGBA8 texture of a built-in default.
@@ -435,10 +447,9 @@ export class Renderer {
     return t.createView({ dimension: cube ? 'cube' : '2d' });
   }
 
-  imageTexture(bitmap, format) {
-    const t = this.device.createTexture({ label: 'user image', size: [bitmap.width, bitmap.height], format: gpuName(format), usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
-    this.device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: t }, [bitmap.width, bitmap.height]);
-    return t.createView();
+  async imageTexture(bitmap, format) {
+    const pixels = await this.imagePixels(bitmap);
+    return this.mippedTexture('user image', bitmap.width, bitmap.height, pixels, format);
   }
 
   // The RGBA8 texels of an image (rows top first), exactly as the 2D path
