@@ -257,7 +257,7 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 .unwrap_or_else(|| panic!("{label}: no shader `{}`", inst.shader));
             // The mesh from the file the metadata names (scene schema 3.3),
             // not from weft-render's generators.
-            let mesh = library::scene_mesh(&s.lib.root, meta, &inst.mesh)
+            let mesh = library::scene_mesh(&s.lib.root, path.parent().unwrap(), meta, &inst.mesh)
                 .unwrap_or_else(|e| panic!("{label}: {e}"));
             let sref = ShaderRef {
                 label: label.clone(),

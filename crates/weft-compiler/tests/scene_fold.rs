@@ -55,7 +55,7 @@ fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
             .map(|d| m.params.iter().position(|p| p.name == *d).expect("param"))
             .collect(),
         dynamic_spans: Vec::new(),
-        mesh: BuiltinMesh::Sphere,
+        mesh: weft_front::scene::model::InstanceMesh::Builtin(BuiltinMesh::Sphere),
         vertex_inputs: Vec::new(),
         vertex_inputs_span: 0..0,
         transform: Transform::default(),

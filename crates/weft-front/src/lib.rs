@@ -8,6 +8,7 @@
 pub mod check;
 pub mod condition;
 pub mod diag;
+pub mod gltf;
 pub mod gpu_numbers;
 pub mod includes;
 pub mod model;

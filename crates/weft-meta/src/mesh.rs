@@ -61,6 +61,22 @@ impl MeshData {
         self.positions.len()
     }
 
+    /// The largest distance of a vertex from the origin, rounded up to
+    /// 6 decimals (what scene metadata's `meshes[].radius` states).
+    pub fn radius(&self) -> f64 {
+        let r = self
+            .positions
+            .iter()
+            .map(|p| {
+                p.iter()
+                    .map(|&x| (x as f64) * (x as f64))
+                    .sum::<f64>()
+                    .sqrt()
+            })
+            .fold(0.0f64, f64::max);
+        (r * 1e6).ceil() / 1e6
+    }
+
     /// The file's bytes. Panics if a stream's length is not the vertex
     /// count or the index count is not a multiple of 3.
     pub fn to_bytes(&self) -> Vec<u8> {

@@ -24,8 +24,11 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// always written, with its `color`: the light weft draws the scene with,
 /// [`DEFAULT_LIGHT_DIRECTION`] and [`DEFAULT_LIGHT_COLOR`] where the manifest
 /// gives none; `conventions` (as in material metadata 4.2); and `meshes`,
-/// the files of the built-in meshes the instances draw.
-pub const SCENE_SCHEMA_MINOR: u32 = 3;
+/// the files of the built-in meshes the instances draw. 4: `meshes` entries
+/// of meshes the scene folder carries (from glTF) with `file` and `radius`
+/// in place of `path`; an instance's `transform.model` may be any affine
+/// matrix (translation, rotation and scale are then read back from it).
+pub const SCENE_SCHEMA_MINOR: u32 = 4;
 
 /// The main light's direction (from the surface towards the light, world
 /// space; length ≈ 1, normalise it) when a scene manifest has no `[light]`:
@@ -103,12 +106,25 @@ pub struct SceneMetadata {
     pub meshes: BTreeMap<String, SceneMesh>,
 }
 
-/// A built-in mesh's file (`weft_meta::mesh`).
+/// A mesh's file (`weft_meta::mesh`): exactly one of `path` (a built-in
+/// mesh, in the library) and `file` (a mesh the scene carries, from glTF).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct SceneMesh {
-    /// Relative to the library root (two folders above the scene metadata):
-    /// `meshes/<name>.mesh`, written by `cargo xtask regenerate`.
-    pub path: String,
+    /// A built-in mesh: relative to the library root (two folders above
+    /// the scene metadata), `meshes/<name>.mesh`, written by `cargo xtask
+    /// regenerate`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub path: Option<String>,
+    /// A mesh read from a glTF file (schema 3.4): relative to the scene
+    /// folder (the folder holding `<scene>.scene.json`), `meshes/<name>.mesh`,
+    /// written by the scene build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// The largest distance of a vertex from the mesh's origin, in object
+    /// space (for near/far planes and culling). Written for meshes in the
+    /// scene folder (schema 3.4); every built-in mesh lies within √2.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
     /// The file's layout: `weft_mesh_v1` (`weft_meta::mesh::MESH_FORMAT`:
     /// a 24-byte header, the six vertex streams of the engine interface in
     /// location order, u32 indices; all little-endian; docs/engine-interface.md).

@@ -4,6 +4,7 @@
 //! white colours) and the indices. `cargo xtask regenerate` writes them into
 //! `generated/meshes/`.
 
+use crate::Error;
 use crate::error::Result;
 use crate::resources::vertex_stream;
 use crate::scene::{Mesh, Scene, SceneKind};
@@ -18,6 +19,37 @@ fn floats<const N: usize>(bytes: &[u8]) -> Vec<[f32; N]> {
             std::array::from_fn(|i| f32::from_le_bytes(c[4 * i..4 * i + 4].try_into().unwrap()))
         })
         .collect()
+}
+
+/// A mesh file's streams as a mesh to draw (every stream present).
+pub fn mesh_from_data(data: MeshData) -> Mesh {
+    Mesh {
+        positions: data.positions,
+        normals: data.normals,
+        tangents: data.tangents,
+        uv0: data.uv0,
+        uv1: data.uv1,
+        colors: data.colors,
+        indices: data.indices,
+    }
+}
+
+/// A scene's mesh file (`meshes[name].file`, relative to the scene
+/// folder `dir`): read, bounded, checked (indices in range).
+pub fn read_scene_mesh(dir: &std::path::Path, file: &str) -> Result<Mesh> {
+    let path = dir.join(file);
+    let bytes = weft_meta::files::read_regular(&path, weft_meta::files::MAX_BINARY_BYTES)
+        .map_err(|e| Error::Metadata(format!("mesh file `{}`: {e}", path.display())))?;
+    let data = MeshData::from_bytes(&bytes)
+        .map_err(|e| Error::Metadata(format!("mesh file `{}`: {e}", path.display())))?;
+    let n = data.positions.len();
+    if let Some(bad) = data.indices.iter().find(|&&i| i as usize >= n) {
+        return Err(Error::Metadata(format!(
+            "mesh file `{}`: index {bad} is out of range ({n} vertices)",
+            path.display()
+        )));
+    }
+    Ok(mesh_from_data(data))
 }
 
 /// A mesh's streams as the renderer uploads them, one per engine-interface

@@ -178,6 +178,36 @@ pub fn scene_draw_order(instances: &[SceneInstance]) -> Vec<DrawRef> {
     order.into_iter().map(|(_, d)| d).collect()
 }
 
+/// Where an instance's mesh comes from: a built-in generator, or a file in
+/// the scene folder (`meshes[name].file`).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum MeshSource {
+    Builtin(SceneKind),
+    File(String),
+}
+
+fn mesh_source(meta: &SceneMetadata, name: &str) -> Result<MeshSource> {
+    if let Some(file) = meta.meshes.get(name).and_then(|m| m.file.clone()) {
+        return Ok(MeshSource::File(file));
+    }
+    SceneKind::from_name(name)
+        .map(MeshSource::Builtin)
+        .ok_or_else(|| Error::UnknownName {
+            what: "mesh",
+            name: name.to_string(),
+            valid: SceneKind::ALL.map(|k| k.name().to_string()).to_vec(),
+        })
+}
+
+/// The radius around its origin that an instance's mesh fits in: the
+/// metadata's `radius` for a mesh the scene carries, √2 for a built-in one.
+fn mesh_radius(meta: &SceneMetadata, name: &str) -> f32 {
+    meta.meshes
+        .get(name)
+        .and_then(|m| m.radius)
+        .map_or(std::f32::consts::SQRT_2, |r| r as f32)
+}
+
 /// An instance's `weft_object.model` (its `transform.model`, column-major).
 pub fn instance_model(instance: &SceneInstance) -> Mat4 {
     let m = &instance.transform.model;
@@ -189,14 +219,18 @@ pub fn instance_model(instance: &SceneInstance) -> Mat4 {
 pub fn scene_camera(meta: &SceneMetadata) -> Camera {
     let c = &meta.camera;
     let eye = c.position.map(|x| x as f32);
-    // Every built-in mesh fits in a sphere of radius sqrt(2) around its origin.
+    // Each instance's mesh fits in a sphere of its radius (√2 for the
+    // built-in meshes) around its origin, scaled by the model's columns.
     let reach = meta
         .instances
         .iter()
         .map(|i| {
-            let t = i.transform.translation.map(|x| x as f32);
-            let s = i.transform.scale.iter().fold(0.0f64, |a, x| a.max(x.abs())) as f32;
-            math::length(math::sub(t, eye)) + 1.5 * s
+            let m = &i.transform.model;
+            let t = [m[12], m[13], m[14]];
+            let s = (0..3)
+                .map(|c| math::length([m[4 * c], m[4 * c + 1], m[4 * c + 2]]))
+                .fold(0.0f32, f32::max);
+            math::length(math::sub(t, eye)) + 1.07 * mesh_radius(meta, &i.mesh) * s
         })
         .fold(0.0f32, f32::max);
     Camera {
@@ -302,7 +336,7 @@ impl Renderer {
             SceneShaders::Specialised => None,
             SceneShaders::Library(generated) => Some(Library::new(generated)),
         };
-        let mut meshes: HashMap<(SceneKind, String), Arc<GpuMesh>> = HashMap::new();
+        let mut meshes: HashMap<(MeshSource, String), Arc<GpuMesh>> = HashMap::new();
         let mut instances = Vec::with_capacity(meta.instances.len());
         for inst in &meta.instances {
             let prepared = self
@@ -327,14 +361,10 @@ impl Renderer {
         inst: &SceneInstance,
         library: Option<&mut Library>,
         env: &GpuEnvironment,
-        meshes: &mut HashMap<(SceneKind, String), Arc<GpuMesh>>,
+        meshes: &mut HashMap<(MeshSource, String), Arc<GpuMesh>>,
         options: &RenderOptions,
     ) -> Result<PreparedInstance> {
-        let kind = SceneKind::from_name(&inst.mesh).ok_or_else(|| Error::UnknownName {
-            what: "mesh",
-            name: inst.mesh.clone(),
-            valid: SceneKind::ALL.map(|k| k.name().to_string()).to_vec(),
-        })?;
+        let mesh_source = mesh_source(&scene.metadata, &inst.mesh)?;
         let model = instance_model(inst);
         let (bound, instances) = match library {
             None => {
@@ -360,7 +390,7 @@ impl Renderer {
         };
         let inputs = &bound.pipelines.vertex_inputs;
         let key = (
-            kind,
+            mesh_source.clone(),
             format!(
                 "{:?}",
                 inputs
@@ -372,7 +402,11 @@ impl Renderer {
         let mesh = match meshes.get(&key) {
             Some(m) => m.clone(),
             None => {
-                let m = Arc::new(GpuMesh::upload(&self.gpu, &Scene::new(kind).mesh, inputs)?);
+                let mesh = match &mesh_source {
+                    MeshSource::Builtin(kind) => Scene::new(*kind).mesh,
+                    MeshSource::File(file) => crate::mesh_files::read_scene_mesh(&scene.dir, file)?,
+                };
+                let m = Arc::new(GpuMesh::upload(&self.gpu, &mesh, inputs)?);
                 meshes.insert(key, m.clone());
                 m
             }

@@ -407,10 +407,12 @@ pub fn scene_world(
     (e, f)
 }
 
-/// A built-in mesh of a scene, read from the file its `meshes` entry names
-/// (relative to the library root `root`).
+/// A mesh of a scene, read from the file its `meshes` entry names: `path`
+/// relative to the library root `root`, `file` relative to the scene's
+/// folder `scene_dir` (docs/engine-interface.md).
 pub fn scene_mesh(
     root: &Path,
+    scene_dir: &Path,
     meta: &SceneMetadata,
     name: &str,
 ) -> Result<super::data::Mesh, String> {
@@ -421,7 +423,15 @@ pub fn scene_mesh(
     if entry.format != "weft_mesh_v1" {
         return Err(format!("mesh `{name}`: unknown format `{}`", entry.format));
     }
-    let path = root.join(&entry.path);
+    let path = match (&entry.path, &entry.file) {
+        (Some(p), None) => root.join(p),
+        (None, Some(f)) => scene_dir.join(f),
+        _ => {
+            return Err(format!(
+                "mesh `{name}`: not exactly one of `path` and `file`"
+            ));
+        }
+    };
     let bytes = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let m = weft_meta::mesh::MeshData::from_bytes(&bytes)
         .map_err(|e| format!("{}: {e}", path.display()))?;

@@ -6,7 +6,7 @@
 //! on error (the caller writes `SceneOutput::files` atomically).
 
 use super::fold::{Folded, fold};
-use super::instance::{InstanceValues, instance_values, model_matrix};
+use super::instance::{InstanceValues, instance_values, scene_transform};
 use super::tiers::{AutoTierRequest, TierChooser};
 use crate::compose::{self, validator};
 use crate::library::{CompiledMaterial, compile_material};
@@ -17,12 +17,12 @@ use rayon::prelude::*;
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;
 use weft_front::model::{Material, ParamValue};
-use weft_front::scene::model::{ResolvedInstance, ResolvedScene, TierChoice};
+use weft_front::scene::model::{InstanceMesh, ResolvedInstance, ResolvedScene, TierChoice};
 use weft_front::variants::VariantKey;
 use weft_front::{Diagnostics, SourceDb};
 use weft_meta::scene::{
     SCENE_SCHEMA_VERSION, SceneCamera, SceneFeatures, SceneInstance, SceneLight, SceneMetadata,
-    SceneShader, SceneTexture, SceneTransform,
+    SceneShader, SceneTexture,
 };
 use weft_meta::{ENGINE_INTERFACE_VERSION, ParamKind};
 
@@ -169,21 +169,51 @@ fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     for m in &scene.materials {
         h.update(crate::library::inputs_hash(m, db));
     }
+    for (name, bytes) in file_meshes(scene) {
+        h.update(name);
+        h.update(bytes);
+    }
     h.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
 
-/// The files of the built-in meshes the instances draw, by name.
+/// The meshes the instances draw, by name: a built-in mesh's file in the
+/// library (`path`), a glTF primitive's in the scene folder (`file`).
 fn scene_meshes(
-    instances: &[SceneInstance],
+    scene: &ResolvedScene,
 ) -> std::collections::BTreeMap<String, weft_meta::scene::SceneMesh> {
-    instances
+    scene
+        .instances
         .iter()
         .map(|i| {
+            let name = i.mesh.name().to_string();
+            let (path, file, radius) = match &i.mesh {
+                InstanceMesh::Builtin(_) => (Some(weft_meta::mesh::mesh_path(&name)), None, None),
+                InstanceMesh::File(m) => (
+                    None,
+                    Some(weft_meta::mesh::mesh_path(&name)),
+                    Some(m.data.radius()),
+                ),
+            };
             let mesh = weft_meta::scene::SceneMesh {
-                path: weft_meta::mesh::mesh_path(&i.mesh),
+                path,
+                file,
+                radius,
                 format: weft_meta::mesh::MESH_FORMAT.into(),
             };
-            (i.mesh.clone(), mesh)
+            (name, mesh)
+        })
+        .collect()
+}
+
+/// The glTF meshes the scene carries: `meshes/<name>.mesh` (in the scene
+/// folder) → the file's bytes, each once.
+fn file_meshes(scene: &ResolvedScene) -> BTreeMap<String, Vec<u8>> {
+    scene
+        .instances
+        .iter()
+        .filter_map(|i| match &i.mesh {
+            InstanceMesh::File(m) => Some((weft_meta::mesh::mesh_path(&m.name), m.data.to_bytes())),
+            InstanceMesh::Builtin(_) => None,
         })
         .collect()
 }
@@ -551,12 +581,7 @@ pub fn build_resolved_scene(
                 .filter(|p| static_key.matches(m, &p.when))
                 .collect(),
             mesh: inst.mesh.name().into(),
-            transform: SceneTransform {
-                translation: inst.transform.translation,
-                rotation_degrees: inst.transform.rotation_degrees,
-                scale: inst.transform.scale,
-                model: model_matrix(&inst.transform),
-            },
+            transform: scene_transform(&inst.transform),
             tier_choice: choice,
         });
         generic_variants.push(variant);
@@ -583,7 +608,10 @@ pub fn build_resolved_scene(
         return None;
     }
 
-    let meshes = scene_meshes(&instances);
+    let meshes = scene_meshes(scene);
+    for (path, bytes) in file_meshes(scene) {
+        files.insert(format!("{}/{path}", manifest.name), bytes);
+    }
     let metadata = SceneMetadata {
         schema_version: SCENE_SCHEMA_VERSION,
         schema_minor: weft_meta::scene::SCENE_SCHEMA_MINOR,

@@ -161,8 +161,52 @@ pub fn instance_values(
     }
 }
 
-/// Object -> world, column-major: translate * rotate(Z * Y * X) * scale.
+/// The metadata's transform: the model matrix, and translation, rotation
+/// and scale as written — or, for a `matrix`, read back from it
+/// (translation exact; scale the columns' lengths; rotation the Euler
+/// angles of the normalised columns, exact when the matrix has no shear).
+pub fn scene_transform(
+    t: &weft_front::scene::model::Transform,
+) -> weft_meta::scene::SceneTransform {
+    let model = model_matrix(t);
+    match &t.matrix {
+        None => weft_meta::scene::SceneTransform {
+            translation: t.translation,
+            rotation_degrees: t.rotation_degrees,
+            scale: t.scale,
+            model,
+        },
+        Some(m) => {
+            let column = |c: usize| [m[4 * c], m[4 * c + 1], m[4 * c + 2]];
+            let length = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            let scale = [0, 1, 2].map(|c| length(column(c)));
+            let unit =
+                |c: usize| column(c).map(|x| if scale[c] > 0.0 { x / scale[c] } else { 0.0 });
+            let (x, y, z) = (unit(0), unit(1), unit(2));
+            // R = Rz Ry Rx: R[2][0] = -sin(ry), R[2][1] = cos(ry) sin(rx), …
+            let ry = (-x[2]).clamp(-1.0, 1.0).asin();
+            let (rx, rz) = if ry.cos().abs() > 1e-9 {
+                (y[2].atan2(z[2]), x[1].atan2(x[0]))
+            } else {
+                ((-z[1]).atan2(y[1]), 0.0)
+            };
+            let round = |a: f64| (a.to_degrees() * 1e6).round() / 1e6;
+            weft_meta::scene::SceneTransform {
+                translation: [m[12], m[13], m[14]],
+                rotation_degrees: [round(rx), round(ry), round(rz)],
+                scale: scale.map(|s| (s * 1e9).round() / 1e9),
+                model,
+            }
+        }
+    }
+}
+
+/// Object -> world, column-major: translate * rotate(Z * Y * X) * scale,
+/// or the instance's `matrix`.
 pub fn model_matrix(t: &weft_front::scene::model::Transform) -> [f32; 16] {
+    if let Some(m) = &t.matrix {
+        return m.map(|x| x as f32);
+    }
     let [rx, ry, rz] = t.rotation_degrees.map(f64::to_radians);
     let (sx, cx) = rx.sin_cos();
     let (sy, cy) = ry.sin_cos();

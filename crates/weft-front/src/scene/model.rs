@@ -56,6 +56,37 @@ impl BuiltinMesh {
     }
 }
 
+/// An instance's mesh as written: a built-in mesh's name, or a mesh
+/// primitive of a glTF file (`mesh = { gltf = "x.glb", mesh = 0, primitive = 0 }`,
+/// the path relative to the manifest's folder).
+#[derive(Clone, Debug, PartialEq)]
+pub enum MeshSpec {
+    Builtin(BuiltinMesh),
+    Gltf {
+        file: PathBuf,
+        mesh: usize,
+        primitive: usize,
+    },
+}
+
+/// An instance's mesh once resolved: built in, or read from a glTF file
+/// (the scene build writes it into the scene folder).
+#[derive(Clone, Debug)]
+pub enum InstanceMesh {
+    Builtin(BuiltinMesh),
+    File(std::sync::Arc<crate::gltf::FileMesh>),
+}
+
+impl InstanceMesh {
+    /// The name the scene metadata's `instances[].mesh` and `meshes` use.
+    pub fn name(&self) -> &str {
+        match self {
+            InstanceMesh::Builtin(m) => m.name(),
+            InstanceMesh::File(f) => &f.name,
+        }
+    }
+}
+
 /// What the scene's renderer provides to every material (engine features).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SceneFeatures {
@@ -109,6 +140,9 @@ pub struct Transform {
     /// Euler angles in degrees, applied X, then Y, then Z (R = Rz * Ry * Rx).
     pub rotation_degrees: [f64; 3],
     pub scale: [f64; 3],
+    /// `matrix`: object -> world, column-major, in place of translation,
+    /// rotation and scale (what a glTF node's world transform gives).
+    pub matrix: Option<[f64; 16]>,
 }
 
 impl Default for Transform {
@@ -117,6 +151,7 @@ impl Default for Transform {
             translation: [0.0; 3],
             rotation_degrees: [0.0; 3],
             scale: [1.0; 3],
+            matrix: None,
         }
     }
 }
@@ -158,7 +193,7 @@ pub struct InstanceDecl {
     /// against the material from the TOML tree (`scene::parse::WrittenParam`)
     /// and the result is [`ResolvedInstance::values`].
     pub dynamic: Vec<Spanned<String>>,
-    pub mesh: Spanned<BuiltinMesh>,
+    pub mesh: Spanned<MeshSpec>,
     /// The mesh's vertex inputs when they differ from the scene's.
     pub vertex_inputs: Option<Spanned<Vec<VertexAttribute>>>,
     pub transform: Transform,
@@ -217,7 +252,7 @@ pub struct ResolvedInstance {
     /// Parameters the engine still sets at run time (indices into the material's params).
     pub dynamic: Vec<usize>,
     pub dynamic_spans: Vec<Span>,
-    pub mesh: BuiltinMesh,
+    pub mesh: InstanceMesh,
     pub vertex_inputs: Vec<VertexAttribute>,
     /// Where the mesh's inputs are declared (scene or instance), for the compiler's check.
     pub vertex_inputs_span: Span,

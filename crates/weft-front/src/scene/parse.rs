@@ -47,7 +47,10 @@ pub const INSTANCE_KEYS: &[&str] = &[
     "translation",
     "rotation",
     "scale",
+    "matrix",
 ];
+/// Keys of a glTF mesh reference, `mesh = { gltf = "x.glb", mesh = 0, primitive = 0 }`.
+pub const GLTF_MESH_KEYS: &[&str] = &["gltf", "mesh", "primitive"];
 
 /// The materials root when `[scene]` sets no `materials`, relative to the scene file.
 pub const DEFAULT_MATERIALS: &str = "../materials";
@@ -591,7 +594,7 @@ fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a
         // A missing or unknown mesh is reported; the instance is still
         // resolved (the scene fails anyway) so that one run shows everything.
         mesh: mesh.unwrap_or(Spanned {
-            value: BuiltinMesh::Sphere,
+            value: MeshSpec::Builtin(BuiltinMesh::Sphere),
             span: t.span.clone(),
         }),
         vertex_inputs,
@@ -763,13 +766,48 @@ fn parse_dynamic(t: &Table, cx: &mut Cx) -> Vec<Spanned<String>> {
     out
 }
 
-fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<BuiltinMesh>> {
+fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<MeshSpec>> {
     let names = BuiltinMesh::ALL.map(BuiltinMesh::name);
-    let note = format!("built-in meshes: {}", names.join(", "));
+    let note = format!(
+        "built-in meshes: {}; or a glTF mesh: `mesh = {{ gltf = \"x.glb\", mesh = 0, primitive = 0 }}`",
+        names.join(", ")
+    );
+    if let Some(v) = t.get("mesh")
+        && matches!(v.get_ref(), DeValue::Table(_))
+    {
+        let table = Table::new(v, "`mesh`", cx)?;
+        table.check_keys(GLTF_MESH_KEYS, cx);
+        let file = required_string(&table, "gltf", &v.span(), &note, cx)?;
+        let index = |key: &str, cx: &mut Cx| -> Option<usize> {
+            let n = table.integer(key, cx).unwrap_or(0);
+            match usize::try_from(n) {
+                Ok(n) => Some(n),
+                Err(_) => {
+                    cx.error(
+                        "out-of-range",
+                        format!("`{key}` of `mesh` must be ≥ 0"),
+                        table.span_of(key),
+                        "an index into the glTF file",
+                    );
+                    None
+                }
+            }
+        };
+        let mesh = index("mesh", cx)?;
+        let primitive = index("primitive", cx)?;
+        return Some(Spanned {
+            value: MeshSpec::Gltf {
+                file: PathBuf::from(file.value),
+                mesh,
+                primitive,
+            },
+            span: v.span(),
+        });
+    }
     let name = required_string(t, "mesh", at, &note, cx)?;
     match BuiltinMesh::from_name(&name.value) {
         Some(value) => Some(Spanned {
-            value,
+            value: MeshSpec::Builtin(value),
             span: name.span,
         }),
         None => {
@@ -785,8 +823,42 @@ fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<BuiltinMesh>>
     }
 }
 
+/// `matrix = [16 numbers]`: object -> world, column-major.
+fn parse_matrix(t: &Table, cx: &mut Cx) -> Option<[f64; 16]> {
+    let span = t.span_of("matrix");
+    let numbers = t.numbers("matrix", cx)?;
+    if numbers.len() != 16 || !numbers.iter().all(|x| fits_f32(*x)) {
+        cx.error(
+            "bad-type",
+            format!(
+                "`matrix` of {} must be 16 finite numbers (column-major)",
+                t.what
+            ),
+            span,
+            "object -> world, columns x, y, z, translation",
+        );
+        return None;
+    }
+    Some(std::array::from_fn(|i| numbers[i]))
+}
+
 fn parse_transform(t: &Table, cx: &mut Cx) -> Transform {
     let mut transform = Transform::default();
+    if t.get("matrix").is_some() {
+        if let Some(key) = ["translation", "rotation", "scale"]
+            .into_iter()
+            .find(|k| t.get(k).is_some())
+        {
+            cx.error(
+                "conflicting-keys",
+                format!("{} has both `matrix` and `{key}`", t.what),
+                t.span_of(key),
+                "give either `matrix` or translation / rotation / scale",
+            );
+        }
+        transform.matrix = parse_matrix(t, cx);
+        return transform;
+    }
     transform.translation = vec3(t, "translation", cx).unwrap_or(transform.translation);
     transform.rotation_degrees = vec3(t, "rotation", cx).unwrap_or(transform.rotation_degrees);
     let scale = match t.get("scale").map(|v| v.get_ref()) {

@@ -22,8 +22,17 @@ pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> Re
     let Parsed { manifest, params } = parsed;
     let file = manifest.file;
     let mut library = Library::new(&manifest.materials_root);
+    let mut gltf = crate::gltf::GltfCache::default();
+    let manifest_dir = manifest
+        .path
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default();
     let mut instances = Vec::new();
     for (decl, written) in manifest.instances.iter().zip(&params) {
+        let Some(mesh) = instance_mesh(decl, &manifest_dir, &mut gltf, file, diags) else {
+            continue;
+        };
         let Some(index) = library.get(&decl.material, file, db, diags) else {
             continue;
         };
@@ -37,14 +46,82 @@ pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> Re
             m: material,
             index,
         };
-        if let Some(instance) = at.instance(written, &mut cx) {
+        if let Some(instance) = at.instance(written, mesh, &mut cx) {
             instances.push(instance);
         }
     }
+    for w in std::mem::take(&mut gltf.warnings) {
+        diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
+    }
+    check_mesh_names(&instances, file, diags);
     ResolvedScene {
         manifest,
         materials: library.materials,
         instances,
+    }
+}
+
+/// The instance's mesh: built in, or read from its glTF file (errors at
+/// the `mesh` key, naming the file's JSON pointer).
+fn instance_mesh(
+    decl: &InstanceDecl,
+    manifest_dir: &Path,
+    gltf: &mut crate::gltf::GltfCache,
+    file: FileId,
+    diags: &mut Diagnostics,
+) -> Option<InstanceMesh> {
+    match &decl.mesh.value {
+        MeshSpec::Builtin(b) => Some(InstanceMesh::Builtin(*b)),
+        MeshSpec::Gltf {
+            file: path,
+            mesh,
+            primitive,
+        } => match gltf.mesh(&manifest_dir.join(path), *mesh, *primitive) {
+            Ok(m) => Some(InstanceMesh::File(m)),
+            Err(e) => {
+                diags.push(
+                    Diagnostic::error()
+                        .with_code("gltf")
+                        .with_message(e.to_string())
+                        .with_labels(vec![
+                            Label::primary(file, decl.mesh.span.clone())
+                                .with_message(format!("instance `{}`'s mesh", decl.name)),
+                        ])
+                        .with_notes(vec![e.hint.clone()]),
+                );
+                None
+            }
+        },
+    }
+}
+
+/// Two glTF files with the same stem would give two meshes one name in
+/// the scene metadata: refused.
+fn check_mesh_names(instances: &[ResolvedInstance], file: FileId, diags: &mut Diagnostics) {
+    let mut seen: Vec<&std::sync::Arc<crate::gltf::FileMesh>> = Vec::new();
+    for inst in instances {
+        let InstanceMesh::File(m) = &inst.mesh else {
+            continue;
+        };
+        if let Some(other) = seen
+            .iter()
+            .find(|o| o.name == m.name && !std::sync::Arc::ptr_eq(o, m))
+        {
+            diags.push(
+                Diagnostic::error()
+                    .with_code("gltf")
+                    .with_message(format!(
+                        "two glTF meshes are both named `{}` in the scene metadata",
+                        other.name
+                    ))
+                    .with_labels(vec![Label::primary(file, inst.span.clone())])
+                    .with_notes(vec![
+                        "glTF files of one scene need distinct file names".into(),
+                    ]),
+            );
+            return;
+        }
+        seen.push(m);
     }
 }
 
@@ -211,7 +288,12 @@ struct State {
 }
 
 impl Resolving<'_> {
-    fn instance(&self, written: &[WrittenParam], cx: &mut Cx) -> Option<ResolvedInstance> {
+    fn instance(
+        &self,
+        written: &[WrittenParam],
+        mesh: InstanceMesh,
+        cx: &mut Cx,
+    ) -> Option<ResolvedInstance> {
         let (decl, m) = (self.decl, self.m);
         let mut state = State {
             values: m.params.iter().map(|p| p.default.clone()).collect(),
@@ -249,7 +331,7 @@ impl Resolving<'_> {
             set: state.set,
             dynamic,
             dynamic_spans,
-            mesh: decl.mesh.value,
+            mesh,
             vertex_inputs,
             vertex_inputs_span,
             transform: decl.transform.clone(),

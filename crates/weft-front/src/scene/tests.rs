@@ -318,7 +318,7 @@ scale = [1.0, 2.0, 3.0]
     let (one, two) = (&s.instances[0], &s.instances[1]);
     assert_eq!(one.dynamic, [4, 0]);
     assert_eq!(one.dynamic_spans.len(), 2);
-    assert_eq!(one.mesh, BuiltinMesh::Swatch);
+    assert_eq!(one.mesh.name(), BuiltinMesh::Swatch.name());
     assert_eq!(
         one.vertex_inputs,
         [VertexAttribute::Position, VertexAttribute::Uv0]

@@ -1,0 +1,376 @@
+//! Opening a glTF 2.0 file: the JSON (from `.gltf` or a `.glb`'s JSON
+//! chunk), the glTF schema's own checks, the extension policy, and every
+//! buffer's bytes — each read bounded, never outside the file's folder.
+//!
+//! Everything here fails closed with a [`GltfError`] at a JSON pointer; a
+//! [`GltfFile`] is a document whose every buffer is present at its declared
+//! length (accessor ranges are checked where they are read, `accessors`).
+
+use super::{GltfError, Warnings};
+use base64::Engine as _;
+use gltf::json;
+use std::path::{Component, Path, PathBuf};
+
+/// The largest glTF (JSON or GLB) weft opens, and the most bytes all of its
+/// buffers may declare together: the front end then holds at most about
+/// four times the file's size (buffers, the streams read from them, the
+/// mesh files written).
+pub const MAX_GLTF_BYTES: u64 = 512 << 20;
+
+/// Extensions weft honours (docs/gltf.md has what each maps to).
+pub const SUPPORTED_EXTENSIONS: &[&str] = &[
+    "KHR_lights_punctual",
+    "KHR_materials_variants",
+    "KHR_materials_sheen",
+    "KHR_materials_iridescence",
+    "KHR_materials_anisotropy",
+    "KHR_materials_specular",
+    "KHR_materials_emissive_strength",
+    "KHR_texture_transform",
+];
+
+/// An opened glTF: the checked document and every buffer's bytes.
+pub struct GltfFile {
+    pub path: PathBuf,
+    /// The folder relative URIs resolve in (and may not leave).
+    pub dir: PathBuf,
+    pub document: gltf::Document,
+    /// Per buffer, exactly its declared `byteLength` bytes.
+    pub buffers: Vec<Vec<u8>>,
+}
+
+/// `materials[3].extensions.KHR_x` (gltf-json's path) as a JSON pointer,
+/// `/materials/3/extensions/KHR_x`.
+pub fn json_pointer(path: &str) -> String {
+    let mut out = String::new();
+    for part in path.split('.') {
+        let (key, rest) = part.split_once('[').unwrap_or((part, ""));
+        if !key.is_empty() {
+            out.push('/');
+            out.push_str(&key.replace('~', "~0").replace('/', "~1"));
+        }
+        for index in rest.split('[') {
+            let index = index.trim_end_matches(']');
+            if !index.is_empty() {
+                out.push('/');
+                out.push_str(index.trim_matches('"'));
+            }
+        }
+    }
+    if out.is_empty() { "/".into() } else { out }
+}
+
+impl GltfFile {
+    /// Reads, parses and checks `path` (`.gltf` or `.glb`), and loads its buffers.
+    pub fn open(path: &Path, warnings: &mut Warnings) -> Result<GltfFile, GltfError> {
+        let err = |pointer: &str, message: String, hint: &str| {
+            GltfError::new(path, pointer, message, hint)
+        };
+        let bytes = weft_meta::files::read_regular(path, MAX_GLTF_BYTES).map_err(|e| {
+            err(
+                "",
+                format!("cannot read the file: {e}"),
+                "give a readable .gltf or .glb file of at most 512 MiB",
+            )
+        })?;
+        let dir = path
+            .canonicalize()
+            .ok()
+            .and_then(|p| p.parent().map(Path::to_path_buf))
+            .unwrap_or_else(|| PathBuf::from("."));
+        let (json_bytes, bin) = if bytes.starts_with(b"glTF") {
+            let glb = gltf::binary::Glb::from_slice(&bytes).map_err(|e| {
+                err(
+                    "",
+                    format!("not a valid GLB container: {e}"),
+                    "re-export the file; a GLB is a 12-byte header, a JSON chunk and an optional BIN chunk",
+                )
+            })?;
+            (glb.json.into_owned(), glb.bin.map(|b| b.into_owned()))
+        } else {
+            (bytes, None)
+        };
+        let root: json::Root = serde_json::from_slice(&json_bytes).map_err(|e| {
+            err(
+                "",
+                format!(
+                    "not glTF 2.0 JSON: {e} (line {}, column {})",
+                    e.line(),
+                    e.column()
+                ),
+                "weft reads glTF 2.0 (.gltf JSON or .glb binary)",
+            )
+        })?;
+        if !root.asset.version.starts_with("2.") {
+            return Err(err(
+                "/asset/version",
+                format!("glTF version `{}`; weft reads 2.x", root.asset.version),
+                "re-export as glTF 2.0",
+            ));
+        }
+        validate(&root, path)?;
+        check_extensions(&root, path, warnings)?;
+        let document = gltf::Document::from_json_without_validation(root);
+        let buffers = load_buffers(&document, path, &dir, bin)?;
+        Ok(GltfFile {
+            path: path.to_path_buf(),
+            dir,
+            document,
+            buffers,
+        })
+    }
+
+    pub fn error(&self, pointer: &str, message: String, hint: &str) -> GltfError {
+        GltfError::new(&self.path, pointer, message, hint)
+    }
+}
+
+/// The glTF schema's checks (indices in range, required fields, enums).
+fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
+    use json::validation::Validate;
+    let mut first: Option<(String, String)> = None;
+    root.validate(root, json::Path::new, &mut |p, e| {
+        if first.is_none() {
+            first = Some((json_pointer(p().as_str()), e.to_string()));
+        }
+    });
+    match first {
+        None => Ok(()),
+        Some((pointer, message)) => Err(GltfError::new(
+            path,
+            &pointer,
+            format!("invalid glTF: {message}"),
+            "the file breaks the glTF 2.0 schema; re-export it or run the Khronos glTF validator",
+        )),
+    }
+}
+
+/// Where an extension is used in the file, for the error's pointer: the
+/// first material, node, texture or mesh primitive whose `extensions` name it.
+fn first_use(root: &json::Root, name: &str) -> Option<String> {
+    let value = serde_json::to_value(root).ok()?;
+    fn walk(v: &serde_json::Value, name: &str, at: String) -> Option<String> {
+        match v {
+            serde_json::Value::Object(map) => {
+                if let Some(serde_json::Value::Object(ext)) = map.get("extensions")
+                    && ext.contains_key(name)
+                {
+                    return Some(format!("{at}/extensions/{name}"));
+                }
+                map.iter()
+                    .filter(|(k, _)| k.as_str() != "extensions")
+                    .find_map(|(k, v)| walk(v, name, format!("{at}/{k}")))
+            }
+            serde_json::Value::Array(items) => items
+                .iter()
+                .enumerate()
+                .find_map(|(i, v)| walk(v, name, format!("{at}/{i}"))),
+            _ => None,
+        }
+    }
+    ["materials", "nodes", "textures", "meshes", "images"]
+        .iter()
+        .find_map(|k| walk(value.get(*k)?, name, format!("/{k}")))
+}
+
+/// Required extensions weft cannot honour fail the build; merely used ones
+/// are dropped with a warning that says so.
+fn check_extensions(
+    root: &json::Root,
+    path: &Path,
+    warnings: &mut Warnings,
+) -> Result<(), GltfError> {
+    for (i, name) in root.extensions_required.iter().enumerate() {
+        if !SUPPORTED_EXTENSIONS.contains(&name.as_str()) {
+            let pointer = first_use(root, name).unwrap_or(format!("/extensionsRequired/{i}"));
+            return Err(GltfError::new(
+                path,
+                &pointer,
+                format!("the file requires extension `{name}`, which weft cannot honour"),
+                &format!(
+                    "weft honours {}; export without `{name}` (or only in extensionsUsed, and weft drops it with a warning)",
+                    SUPPORTED_EXTENSIONS.join(", ")
+                ),
+            ));
+        }
+    }
+    for name in &root.extensions_used {
+        if !SUPPORTED_EXTENSIONS.contains(&name.as_str()) {
+            let pointer = first_use(root, name).unwrap_or("/extensionsUsed".into());
+            warnings.push(format!(
+                "{}: {pointer}: extension `{name}` is not supported; weft draws without it",
+                path.display()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `data:<type>;base64,<payload>`: the payload of a buffer data URI.
+fn data_uri<'u>(uri: &'u str) -> Option<(&'u str, &'u str)> {
+    let rest = uri.strip_prefix("data:")?;
+    let (header, payload) = rest.split_once(',')?;
+    let media = header.strip_suffix(";base64")?;
+    Some((media, payload))
+}
+
+/// A relative URI's file, inside `dir`: percent-decoded, no absolute path,
+/// no scheme, never leaving the folder (also through symbolic links).
+pub fn resolve_relative_uri(dir: &Path, uri: &str) -> Result<PathBuf, String> {
+    if uri.contains("://") || uri.starts_with('/') || uri.starts_with('\\') {
+        return Err("only relative URIs inside the file's folder are read".into());
+    }
+    let bytes = uri.as_bytes();
+    let mut decoded = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' && i + 2 < bytes.len() {
+            let hex = std::str::from_utf8(&bytes[i + 1..i + 3]).map_err(|_| "bad %-escape")?;
+            decoded.push(u8::from_str_radix(hex, 16).map_err(|_| "bad %-escape")?);
+            i += 3;
+        } else {
+            decoded.push(bytes[i]);
+            i += 1;
+        }
+    }
+    let decoded = String::from_utf8(decoded).map_err(|_| "the URI is not UTF-8")?;
+    let relative = Path::new(&decoded);
+    if relative
+        .components()
+        .any(|c| !matches!(c, Component::Normal(_) | Component::CurDir))
+    {
+        return Err("the URI leaves the file's folder (`..` or an absolute path)".into());
+    }
+    let joined = dir.join(relative);
+    let real = joined
+        .canonicalize()
+        .map_err(|e| format!("cannot open `{}`: {e}", joined.display()))?;
+    if !real.starts_with(dir) {
+        return Err(format!(
+            "`{}` lies outside the file's folder (a symbolic link)",
+            joined.display()
+        ));
+    }
+    Ok(real)
+}
+
+/// Every buffer at exactly its declared length: the GLB's BIN chunk, a
+/// base64 data URI or a file beside the glTF.
+fn load_buffers(
+    document: &gltf::Document,
+    path: &Path,
+    dir: &Path,
+    mut bin: Option<Vec<u8>>,
+) -> Result<Vec<Vec<u8>>, GltfError> {
+    let declared: u64 = document.buffers().map(|b| b.length() as u64).sum();
+    if declared > MAX_GLTF_BYTES {
+        return Err(GltfError::new(
+            path,
+            "/buffers",
+            format!("the buffers declare {declared} bytes; weft reads at most {MAX_GLTF_BYTES}"),
+            "split the scene into several files",
+        ));
+    }
+    let mut out = Vec::new();
+    for buffer in document.buffers() {
+        let pointer = format!("/buffers/{}", buffer.index());
+        let err = |message: String, hint: &str| GltfError::new(path, &pointer, message, hint);
+        let length = buffer.length();
+        let mut bytes = match buffer.source() {
+            gltf::buffer::Source::Bin => bin.take().ok_or_else(|| {
+                err(
+                    "a buffer without `uri` but no GLB BIN chunk holds it".into(),
+                    "only the first buffer of a .glb may omit `uri`",
+                )
+            })?,
+            gltf::buffer::Source::Uri(uri) => match data_uri(uri) {
+                Some((media, payload)) => {
+                    if media != "application/octet-stream" && media != "application/gltf-buffer" {
+                        return Err(err(
+                            format!("a buffer data URI of type `{media}`"),
+                            "buffer data URIs are `data:application/octet-stream;base64,…` or `data:application/gltf-buffer;base64,…`",
+                        ));
+                    }
+                    // base64 grows 4/3: a payload that decodes past the
+                    // declared length is refused before decoding.
+                    if payload.len() / 4 * 3 > length + 3 {
+                        return Err(err(
+                            format!("the data URI holds more than the declared {length} bytes"),
+                            "the buffer's byteLength must match its data",
+                        ));
+                    }
+                    base64::engine::general_purpose::STANDARD
+                        .decode(payload)
+                        .map_err(|e| {
+                            err(
+                                format!("bad base64 in the data URI: {e}"),
+                                "re-export the file",
+                            )
+                        })?
+                }
+                None if uri.starts_with("data:") => {
+                    return Err(err(
+                        "a data URI that is not base64".into(),
+                        "buffer data URIs are `data:application/octet-stream;base64,…`",
+                    ));
+                }
+                None => {
+                    let file = resolve_relative_uri(dir, uri).map_err(|e| {
+                        err(
+                            format!("buffer `{uri}`: {e}"),
+                            "keep buffers beside the glTF file",
+                        )
+                    })?;
+                    weft_meta::files::read_regular(&file, length as u64 + 4).map_err(|e| {
+                        err(
+                            format!("cannot read buffer `{uri}`: {e}"),
+                            "keep buffers beside the glTF file",
+                        )
+                    })?
+                }
+            },
+        };
+        if bytes.len() < length {
+            return Err(err(
+                format!(
+                    "the buffer declares {length} bytes but holds {}: the file is truncated",
+                    bytes.len()
+                ),
+                "re-export the file",
+            ));
+        }
+        // A GLB's BIN chunk is padded to 4 bytes; a file may hold more.
+        bytes.truncate(length);
+        out.push(bytes);
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pointers_from_paths() {
+        assert_eq!(
+            json_pointer("materials[3].extensions.KHR_materials_clearcoat"),
+            "/materials/3/extensions/KHR_materials_clearcoat"
+        );
+        assert_eq!(
+            json_pointer("meshes[0].primitives[2].attributes[\"POSITION\"]"),
+            "/meshes/0/primitives/2/attributes/POSITION"
+        );
+        assert_eq!(json_pointer("asset"), "/asset");
+    }
+
+    #[test]
+    fn uris_stay_in_the_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path().canonicalize().unwrap();
+        std::fs::write(root.join("a b.bin"), b"x").unwrap();
+        assert!(resolve_relative_uri(&root, "a%20b.bin").is_ok());
+        for bad in ["../x.bin", "/etc/passwd", "http://x/y.bin", "sub/../../x"] {
+            assert!(resolve_relative_uri(&root, bad).is_err(), "{bad}");
+        }
+    }
+}

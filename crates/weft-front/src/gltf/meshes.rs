@@ -1,0 +1,475 @@
+//! A glTF mesh primitive as the engine interface's six vertex streams
+//! ([`MeshData`]): positions, normals (flat when the file has none, as glTF
+//! requires), tangents (MikkTSpace when the file has none, as glTF
+//! requires), `TEXCOORD_0/1`, `COLOR_0`, u32 indices.
+//!
+//! Every accessor is checked before it is read — its type, its count and
+//! every byte range (sparse parts included) inside its buffer view and
+//! buffer — so a hostile file is an error at its JSON pointer, never a
+//! panic or an allocation the file's own bytes do not back.
+
+use super::GltfError;
+use super::document::GltfFile;
+use gltf::accessor::{DataType, Dimensions};
+use gltf::mesh::{Mode, Semantic};
+use weft_meta::mesh::MeshData;
+
+/// The most vertices (and indices) one primitive may have.
+pub const MAX_PRIMITIVE_VERTICES: usize = 1 << 24;
+
+/// What a primitive's file provides beyond positions and indices (the
+/// streams weft fills in are listed apart, for the scene's vertex inputs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Provided {
+    pub uv0: bool,
+    pub uv1: bool,
+    pub color: bool,
+    /// Tangents exist: from the file, or generated (needs normals and uv0).
+    pub tangent: bool,
+}
+
+/// One primitive's streams, and what they hold.
+pub struct PrimitiveMesh {
+    pub data: MeshData,
+    pub provided: Provided,
+    /// Flat normals or MikkTSpace tangents weft generated, said in the build output.
+    pub generated: Vec<&'static str>,
+}
+
+fn element_size(data_type: DataType, dims: Dimensions) -> usize {
+    data_type.size() * dims.multiplicity()
+}
+
+/// Checks an accessor's bytes lie where the file says: a view inside its
+/// buffer, every element (stride apart) inside the view, sparse indices and
+/// values inside theirs. `allowed` lists the (component type, type) pairs
+/// the semantic may have.
+fn check_accessor(
+    file: &GltfFile,
+    accessor: &gltf::Accessor,
+    allowed: &[(DataType, Dimensions)],
+    what: &str,
+) -> Result<(), GltfError> {
+    let pointer = format!("/accessors/{}", accessor.index());
+    let err = |message: String| {
+        file.error(
+            &pointer,
+            message,
+            "re-export the file; the accessor does not fit its data",
+        )
+    };
+    let (data_type, dims) = (accessor.data_type(), accessor.dimensions());
+    if !allowed.contains(&(data_type, dims)) {
+        return Err(file.error(
+            &pointer,
+            format!("{what}: a {dims:?} of {data_type:?}, which glTF does not allow here"),
+            "glTF 2.0 § 3.7.2.1 lists each attribute's accessor types",
+        ));
+    }
+    let count = accessor.count();
+    if count == 0 || count > MAX_PRIMITIVE_VERTICES {
+        return Err(err(format!(
+            "{what}: {count} elements; weft reads 1 to {MAX_PRIMITIVE_VERTICES} per primitive"
+        )));
+    }
+    let size = element_size(data_type, dims);
+    let fits = |view: gltf::buffer::View,
+                offset: usize,
+                count: usize,
+                size: usize|
+     -> Result<(), GltfError> {
+        let view_pointer = format!("/bufferViews/{}", view.index());
+        let buffer_len = file.buffers[view.buffer().index()].len();
+        if view
+            .offset()
+            .checked_add(view.length())
+            .is_none_or(|end| end > buffer_len)
+        {
+            return Err(file.error(
+                &view_pointer,
+                format!(
+                    "the view's {} bytes at {} run past its buffer's {buffer_len}",
+                    view.length(),
+                    view.offset()
+                ),
+                "re-export the file",
+            ));
+        }
+        let stride = view.stride().unwrap_or(size);
+        if stride < size {
+            return Err(file.error(
+                &view_pointer,
+                format!("byteStride {stride} is below the element size {size}"),
+                "re-export the file",
+            ));
+        }
+        let end = (count - 1)
+            .checked_mul(stride)
+            .and_then(|n| n.checked_add(size))
+            .and_then(|n| n.checked_add(offset));
+        if end.is_none_or(|end| end > view.length()) {
+            return Err(err(format!(
+                "{what}: {count} elements of {size} bytes (stride {stride}) at offset {offset} run past its view's {} bytes",
+                view.length()
+            )));
+        }
+        Ok(())
+    };
+    match accessor.view() {
+        Some(view) => fits(view, accessor.offset(), count, size)?,
+        None if accessor.sparse().is_none() => {
+            return Err(err(format!("{what}: no bufferView and no sparse values")));
+        }
+        None => {}
+    }
+    if let Some(sparse) = accessor.sparse() {
+        let n = sparse.count();
+        if n == 0 || n > count {
+            return Err(err(format!(
+                "{what}: {n} sparse values for {count} elements"
+            )));
+        }
+        let indices = sparse.indices();
+        fits(
+            indices.view(),
+            indices.offset(),
+            n,
+            indices.index_type().size(),
+        )?;
+        let values = sparse.values();
+        fits(values.view(), values.offset(), n, size)?;
+    }
+    Ok(())
+}
+
+const F32: DataType = DataType::F32;
+
+/// The mesh primitive `/meshes/<mesh>/primitives/<primitive>` as vertex streams.
+pub fn read_primitive(
+    file: &GltfFile,
+    mesh: usize,
+    primitive: usize,
+) -> Result<PrimitiveMesh, GltfError> {
+    let pointer = format!("/meshes/{mesh}/primitives/{primitive}");
+    let prim = file
+        .document
+        .meshes()
+        .nth(mesh)
+        .and_then(|m| m.primitives().nth(primitive))
+        .ok_or_else(|| {
+            file.error(
+                &pointer,
+                "no such mesh primitive".into(),
+                "count meshes and primitives from 0",
+            )
+        })?;
+    if prim.mode() != Mode::Triangles {
+        return Err(file.error(
+            &format!("{pointer}/mode"),
+            format!(
+                "primitive mode {:?}; weft draws triangle lists",
+                prim.mode()
+            ),
+            "export triangles (mode 4); points, lines, strips and fans are not drawn",
+        ));
+    }
+    let get = |semantic: Semantic,
+               allowed: &[(DataType, Dimensions)],
+               what: &str|
+     -> Result<Option<gltf::Accessor>, GltfError> {
+        match prim.get(&semantic) {
+            None => Ok(None),
+            Some(a) => {
+                check_accessor(file, &a, allowed, &format!("{pointer} {what}"))?;
+                Ok(Some(a))
+            }
+        }
+    };
+    let position =
+        get(Semantic::Positions, &[(F32, Dimensions::Vec3)], "POSITION")?.ok_or_else(|| {
+            file.error(
+                &format!("{pointer}/attributes"),
+                "the primitive has no POSITION".into(),
+                "every drawn primitive needs positions",
+            )
+        })?;
+    let count = position.count();
+    let normal = get(Semantic::Normals, &[(F32, Dimensions::Vec3)], "NORMAL")?;
+    let tangent = get(Semantic::Tangents, &[(F32, Dimensions::Vec4)], "TANGENT")?;
+    let uv_types = [
+        (F32, Dimensions::Vec2),
+        (DataType::U8, Dimensions::Vec2),
+        (DataType::U16, Dimensions::Vec2),
+    ];
+    let uv0 = get(Semantic::TexCoords(0), &uv_types, "TEXCOORD_0")?;
+    let uv1 = get(Semantic::TexCoords(1), &uv_types, "TEXCOORD_1")?;
+    let color_types = [
+        (F32, Dimensions::Vec3),
+        (F32, Dimensions::Vec4),
+        (DataType::U8, Dimensions::Vec3),
+        (DataType::U8, Dimensions::Vec4),
+        (DataType::U16, Dimensions::Vec3),
+        (DataType::U16, Dimensions::Vec4),
+    ];
+    let color = get(Semantic::Colors(0), &color_types, "COLOR_0")?;
+    for (a, name) in [
+        (&normal, "NORMAL"),
+        (&tangent, "TANGENT"),
+        (&uv0, "TEXCOORD_0"),
+        (&uv1, "TEXCOORD_1"),
+        (&color, "COLOR_0"),
+    ] {
+        if let Some(a) = a
+            && a.count() != count
+        {
+            return Err(file.error(
+                &format!("/accessors/{}", a.index()),
+                format!("{name} has {} elements, POSITION {count}", a.count()),
+                "every attribute of a primitive has one element per vertex",
+            ));
+        }
+    }
+    if let Some(idx) = prim.indices() {
+        let types = [
+            (DataType::U8, Dimensions::Scalar),
+            (DataType::U16, Dimensions::Scalar),
+            (DataType::U32, Dimensions::Scalar),
+        ];
+        check_accessor(file, &idx, &types, &format!("{pointer} indices"))?;
+    }
+
+    let reader = prim.reader(|b| file.buffers.get(b.index()).map(Vec::as_slice));
+    let unreadable = |what: &str| {
+        file.error(
+            &pointer,
+            format!("{what} could not be read"),
+            "re-export the file",
+        )
+    };
+    let mut data = MeshData {
+        positions: reader
+            .read_positions()
+            .ok_or_else(|| unreadable("POSITION"))?
+            .collect(),
+        ..MeshData::default()
+    };
+    if data.positions.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(file.error(
+            &format!("/accessors/{}", position.index()),
+            "a position is not finite".into(),
+            "re-export the file",
+        ));
+    }
+    let indices: Vec<u32> = match prim.indices() {
+        Some(_) => reader
+            .read_indices()
+            .ok_or_else(|| unreadable("indices"))?
+            .into_u32()
+            .collect(),
+        None => (0..count as u32).collect(),
+    };
+    if !indices.len().is_multiple_of(3) {
+        return Err(file.error(
+            &pointer,
+            format!(
+                "{} indices is not a whole number of triangles",
+                indices.len()
+            ),
+            "a triangle list has 3 indices per triangle",
+        ));
+    }
+    if let Some(bad) = indices.iter().find(|&&i| i as usize >= count) {
+        return Err(file.error(
+            &format!("{pointer}/indices"),
+            format!("index {bad} is out of range: the primitive has {count} vertices"),
+            "re-export the file",
+        ));
+    }
+    let mut generated = Vec::new();
+    let mut indices = indices;
+    if normal.is_some() {
+        data.normals = reader
+            .read_normals()
+            .ok_or_else(|| unreadable("NORMAL"))?
+            .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
+            .collect();
+    }
+    if uv0.is_some() {
+        data.uv0 = reader
+            .read_tex_coords(0)
+            .ok_or_else(|| unreadable("TEXCOORD_0"))?
+            .into_f32()
+            .collect();
+    }
+    if uv1.is_some() {
+        data.uv1 = reader
+            .read_tex_coords(1)
+            .ok_or_else(|| unreadable("TEXCOORD_1"))?
+            .into_f32()
+            .collect();
+    }
+    if color.is_some() {
+        data.colors = reader
+            .read_colors(0)
+            .ok_or_else(|| unreadable("COLOR_0"))?
+            .into_rgba_f32()
+            .collect();
+    }
+    if tangent.is_some() && normal.is_some() {
+        data.tangents = reader
+            .read_tangents()
+            .ok_or_else(|| unreadable("TANGENT"))?
+            .map(|t| {
+                let [x, y, z] = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
+                [x, y, z, if t[3] < 0.0 { -1.0 } else { 1.0 }]
+            })
+            .collect();
+    }
+    if normal.is_none() {
+        // glTF: without normals, flat normals — one vertex per corner. (A
+        // file's tangents without normals are dropped: MikkTSpace redoes them.)
+        generated.push("flat normals (the file has none)");
+        data.positions = per_corner(&data.positions, &indices);
+        data.uv0 = per_corner(&data.uv0, &indices);
+        data.uv1 = per_corner(&data.uv1, &indices);
+        data.colors = per_corner(&data.colors, &indices);
+        data.tangents.clear();
+        indices = (0..indices.len() as u32).collect();
+        data.normals = flat_normals(&data.positions);
+    }
+    if data.tangents.is_empty() {
+        if uv0.is_some() {
+            generated.push("MikkTSpace tangents (the file has none)");
+            data.tangents = mikktspace_tangents(&data, &indices);
+        } else {
+            data.tangents = data.normals.iter().map(|n| any_tangent(*n)).collect();
+        }
+    }
+    let provided = Provided {
+        uv0: uv0.is_some(),
+        uv1: uv1.is_some(),
+        color: color.is_some(),
+        tangent: tangent.is_some() || uv0.is_some(),
+    };
+    // The streams a file lacks hold what the renderer binds for them.
+    let v = data.positions.len();
+    if data.uv0.is_empty() {
+        data.uv0 = vec![[0.0; 2]; v];
+    }
+    if data.uv1.is_empty() {
+        data.uv1 = data.uv0.clone();
+    }
+    if data.colors.is_empty() {
+        data.colors = vec![[1.0; 4]; v];
+    }
+    data.indices = indices;
+    Ok(PrimitiveMesh {
+        data,
+        provided,
+        generated,
+    })
+}
+
+fn unit_or(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    if len.is_finite() && len > 1e-12 {
+        v.map(|x| x / len)
+    } else {
+        fallback
+    }
+}
+
+fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// A per-vertex stream expanded to one element per triangle corner
+/// (empty stays empty).
+fn per_corner<T: Copy>(stream: &[T], indices: &[u32]) -> Vec<T> {
+    if stream.is_empty() {
+        return Vec::new();
+    }
+    indices.iter().map(|&i| stream[i as usize]).collect()
+}
+
+fn flat_normals(corners: &[[f32; 3]]) -> Vec<[f32; 3]> {
+    corners
+        .chunks_exact(3)
+        .flat_map(|t| {
+            let n = unit_or(cross(sub(t[1], t[0]), sub(t[2], t[0])), [0.0, 0.0, 1.0]);
+            [n; 3]
+        })
+        .collect()
+}
+
+/// A unit tangent perpendicular to `n` where no UVs give a direction.
+fn any_tangent(n: [f32; 3]) -> [f32; 4] {
+    let axis = if n[0].abs() < 0.9 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let t = unit_or(cross(axis, n), [1.0, 0.0, 0.0]);
+    [t[0], t[1], t[2], 1.0]
+}
+
+struct Mikk<'a> {
+    data: &'a MeshData,
+    indices: &'a [u32],
+    tangents: Vec<[f32; 4]>,
+}
+
+impl mikktspace::Geometry for Mikk<'_> {
+    fn num_faces(&self) -> usize {
+        self.indices.len() / 3
+    }
+    fn num_vertices_of_face(&self, _face: usize) -> usize {
+        3
+    }
+    fn position(&self, face: usize, vert: usize) -> [f32; 3] {
+        self.data.positions[self.indices[face * 3 + vert] as usize]
+    }
+    fn normal(&self, face: usize, vert: usize) -> [f32; 3] {
+        self.data.normals[self.indices[face * 3 + vert] as usize]
+    }
+    fn tex_coord(&self, face: usize, vert: usize) -> [f32; 2] {
+        self.data.uv0[self.indices[face * 3 + vert] as usize]
+    }
+    fn set_tangent_encoded(&mut self, tangent: [f32; 4], face: usize, vert: usize) {
+        // Per corner; a vertex shared by corners MikkTSpace splits would
+        // need its own vertex — welded corners of one vertex agree unless
+        // the UVs mirror there, where the last corner wins.
+        self.tangents[self.indices[face * 3 + vert] as usize] = tangent;
+    }
+}
+
+/// MikkTSpace tangents (glTF 2.0 § 3.7.2.1: "When tangents are not
+/// specified, client implementations SHOULD calculate tangents using
+/// default MikkTSpace algorithms"), w the bitangent sign.
+fn mikktspace_tangents(data: &MeshData, indices: &[u32]) -> Vec<[f32; 4]> {
+    let mut m = Mikk {
+        data,
+        indices,
+        tangents: data.normals.iter().map(|n| any_tangent(*n)).collect(),
+    };
+    mikktspace::generate_tangents(&mut m);
+    m.tangents
+        .into_iter()
+        .zip(&data.normals)
+        .map(|(t, n)| {
+            let xyz = unit_or([t[0], t[1], t[2]], [1.0, 0.0, 0.0]);
+            if xyz == [1.0, 0.0, 0.0] && t[0] != 1.0 {
+                any_tangent(*n)
+            } else {
+                [xyz[0], xyz[1], xyz[2], if t[3] < 0.0 { -1.0 } else { 1.0 }]
+            }
+        })
+        .collect()
+}

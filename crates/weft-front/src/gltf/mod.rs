@@ -1,0 +1,134 @@
+//! glTF 2.0 as a scene source (docs/gltf.md).
+//!
+//! Pipeline, data flowing one way:
+//! [`document`] (the file opened and checked: schema, extension policy,
+//! buffers bounded and inside the file's folder) → [`scene`] (nodes, camera,
+//! lights and [`materials`] mapped into scene manifest text) → the ordinary
+//! scene front end (`scene::parse`, `scene::resolve`), which reads each
+//! instance's `mesh = { gltf = …, mesh = …, primitive = … }` through
+//! [`meshes`] (accessors checked, normals and MikkTSpace tangents generated
+//! where the file has none).
+//!
+//! Every problem with the file is a [`GltfError`] naming the file and the
+//! JSON pointer of what is wrong, with a hint.
+
+pub mod document;
+pub mod materials;
+pub mod meshes;
+pub mod scene;
+
+pub use document::GltfFile;
+pub use meshes::{PrimitiveMesh, Provided};
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Warnings for the build output: what the file asks that weft drops.
+pub type Warnings = Vec<String>;
+
+/// A problem with a glTF file, at a JSON pointer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GltfError {
+    pub file: PathBuf,
+    /// RFC 6901 JSON pointer into the glTF JSON (`""`: the whole file).
+    pub pointer: String,
+    pub message: String,
+    pub hint: String,
+}
+
+impl GltfError {
+    pub fn new(file: &Path, pointer: &str, message: String, hint: &str) -> GltfError {
+        GltfError {
+            file: file.to_path_buf(),
+            pointer: pointer.to_string(),
+            message,
+            hint: hint.to_string(),
+        }
+    }
+}
+
+impl std::fmt::Display for GltfError {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let at = if self.pointer.is_empty() {
+            String::new()
+        } else {
+            format!(" at {}", self.pointer)
+        };
+        write!(f, "{}{at}: {}", self.file.display(), self.message)
+    }
+}
+
+/// Whether a path names a glTF file (`.gltf` or `.glb`).
+pub fn is_gltf_path(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"))
+}
+
+/// A primitive read from a glTF file, named for the scene metadata.
+#[derive(Debug)]
+pub struct FileMesh {
+    /// `<file stem>.mesh<m>.p<p>`: the key of the scene metadata's `meshes`
+    /// and the file `meshes/<name>.mesh` in the scene folder.
+    pub name: String,
+    pub data: weft_meta::mesh::MeshData,
+    pub provided: Provided,
+    pub generated: Vec<&'static str>,
+}
+
+/// Opened files and read primitives, each once per scene.
+#[derive(Default)]
+pub struct GltfCache {
+    files: BTreeMap<PathBuf, Result<Arc<GltfFile>, GltfError>>,
+    meshes: BTreeMap<(PathBuf, usize, usize), Arc<FileMesh>>,
+    pub warnings: Warnings,
+}
+
+impl GltfCache {
+    pub fn file(&mut self, path: &Path) -> Result<Arc<GltfFile>, GltfError> {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if let Some(f) = self.files.get(&key) {
+            return f.clone();
+        }
+        let opened = GltfFile::open(path, &mut self.warnings).map(Arc::new);
+        self.files.insert(key, opened.clone());
+        opened
+    }
+
+    /// Primitive `primitive` of mesh `mesh` in `path`.
+    pub fn mesh(
+        &mut self,
+        path: &Path,
+        mesh: usize,
+        primitive: usize,
+    ) -> Result<Arc<FileMesh>, GltfError> {
+        let file = self.file(path)?;
+        let key = (
+            file.path
+                .canonicalize()
+                .unwrap_or_else(|_| file.path.clone()),
+            mesh,
+            primitive,
+        );
+        if let Some(m) = self.meshes.get(&key) {
+            return Ok(m.clone());
+        }
+        let read = meshes::read_primitive(&file, mesh, primitive)?;
+        let stem = scene::snake_name(
+            &path
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default(),
+            "gltf",
+        );
+        let m = Arc::new(FileMesh {
+            name: format!("{stem}.mesh{mesh}.p{primitive}"),
+            data: read.data,
+            provided: read.provided,
+            generated: read.generated,
+        });
+        self.meshes.insert(key, m.clone());
+        Ok(m)
+    }
+}

@@ -1,0 +1,497 @@
+//! A glTF scene as a weft scene manifest: every mesh primitive a node of
+//! the scene draws is an instance (its world matrix, its material mapped by
+//! `materials`), the first camera frames it (else a framing of its bounds),
+//! the first directional `KHR_lights_punctual` light lights it.
+//!
+//! The result is manifest text that the ordinary scene front end then
+//! parses and resolves, so a glTF scene is checked exactly as a written one;
+//! `weft build --scene x.glb --print-manifest` shows it.
+
+use super::document::GltfFile;
+use super::materials::{MaterialMapping, float, map_material, toml_string};
+use super::{GltfError, Warnings};
+use crate::scene::parse::MAX_INSTANCES;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+type Mat4 = [[f64; 4]; 4];
+
+fn mul(a: &Mat4, b: &Mat4) -> Mat4 {
+    // Column-major: (a b)[c][r] = Σ_k a[k][r] b[c][k].
+    std::array::from_fn(|c| std::array::from_fn(|r| (0..4).map(|k| a[k][r] * b[c][k]).sum()))
+}
+
+const IDENTITY: Mat4 = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+fn transform_point(m: &Mat4, p: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|r| m[0][r] * p[0] + m[1][r] * p[1] + m[2][r] * p[2] + m[3][r])
+}
+
+fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    (len.is_finite() && len > 1e-12).then(|| v.map(|x| x / len))
+}
+
+/// A lower_snake_case name from any glTF name (instance names).
+pub fn snake_name(raw: &str, fallback: &str) -> String {
+    let mut out = String::new();
+    for c in raw.chars() {
+        if c.is_ascii_alphanumeric() {
+            out.push(c.to_ascii_lowercase());
+        } else if !out.ends_with('_') && !out.is_empty() {
+            out.push('_');
+        }
+    }
+    let out = out.trim_end_matches('_').to_string();
+    match out.chars().next() {
+        Some(c) if c.is_ascii_lowercase() => out,
+        Some(_) => format!("n_{out}"),
+        None => fallback.to_string(),
+    }
+}
+
+/// One drawn primitive: which node, which mesh primitive, its world matrix.
+struct Draw {
+    name: String,
+    mesh: usize,
+    primitive: usize,
+    material: Option<usize>,
+    world: Mat4,
+}
+
+/// What the glTF scene becomes, and what the build reports about it.
+pub struct GltfScene {
+    pub manifest: String,
+    /// Materials in the file → used by the drawn nodes.
+    pub materials_in_file: usize,
+    pub materials_used: usize,
+    /// Per used glTF material: its mapping (losses included).
+    pub mappings: Vec<MaterialMapping>,
+}
+
+/// Per glTF material (by name, or `#<index>`): the scene TOML's `[gltf]`
+/// overrides layered on the mapping.
+pub type Overrides = BTreeMap<String, MaterialMapping>;
+
+/// The glTF's drawn primitives, in scene order (depth first, children in
+/// file order), with their world matrices. Cycles and shared nodes fail.
+fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Vec<(usize, Mat4)>), GltfError> {
+    let doc = &file.document;
+    let scene = doc
+        .default_scene()
+        .or_else(|| doc.scenes().next())
+        .ok_or_else(|| {
+            file.error(
+                "/scenes",
+                "the file has no scene".into(),
+                "export with at least one scene",
+            )
+        })?;
+    let nodes = doc.nodes().count();
+    let mut draws = Vec::new();
+    let mut placed = Vec::new(); // (node, world) of every visited node
+    let mut stack: Vec<(gltf::Node, Mat4, usize)> =
+        scene.nodes().map(|n| (n, IDENTITY, usize::MAX)).collect();
+    stack.reverse();
+    let mut visited = vec![false; nodes];
+    while let Some((node, parent, parent_index)) = stack.pop() {
+        let i = node.index();
+        if visited[i] {
+            let pointer = if parent_index == usize::MAX {
+                format!("/scenes/{}/nodes", scene.index())
+            } else {
+                format!("/nodes/{parent_index}/children")
+            };
+            return Err(file.error(
+                &pointer,
+                format!("node {i} is reached twice: the node graph has a cycle or a shared node"),
+                "glTF nodes form disjoint trees: every node has at most one parent",
+            ));
+        }
+        visited[i] = true;
+        let local = node.transform().matrix().map(|c| c.map(f64::from));
+        let world = mul(&parent, &local);
+        if world.iter().flatten().any(|x| !x.is_finite()) {
+            return Err(file.error(
+                &format!("/nodes/{i}"),
+                "the node's world transform is not finite".into(),
+                "re-export the file",
+            ));
+        }
+        placed.push((i, world));
+        if let Some(mesh) = node.mesh() {
+            let base = snake_name(
+                node.name().or(mesh.name()).unwrap_or(""),
+                &format!("node{i}"),
+            );
+            let count = mesh.primitives().count();
+            for prim in mesh.primitives() {
+                let name = if count > 1 {
+                    format!("{base}_p{}", prim.index())
+                } else {
+                    base.clone()
+                };
+                draws.push(Draw {
+                    name,
+                    mesh: mesh.index(),
+                    primitive: prim.index(),
+                    material: prim.material().index(),
+                    world,
+                });
+            }
+        }
+        let children: Vec<_> = node.children().collect();
+        for child in children.into_iter().rev() {
+            stack.push((child, world, i));
+        }
+    }
+    Ok((draws, placed))
+}
+
+/// The world-space bounds of every drawn primitive (from accessor min/max).
+fn bounds(file: &GltfFile, draws: &[Draw]) -> Option<([f64; 3], f64)> {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for d in draws {
+        let prim = file
+            .document
+            .meshes()
+            .nth(d.mesh)?
+            .primitives()
+            .nth(d.primitive)?;
+        let bb = prim.bounding_box();
+        for corner in 0..8 {
+            let p = std::array::from_fn(|k| {
+                if corner >> k & 1 == 0 {
+                    bb.min[k] as f64
+                } else {
+                    bb.max[k] as f64
+                }
+            });
+            let w = transform_point(&d.world, p);
+            for k in 0..3 {
+                lo[k] = lo[k].min(w[k]);
+                hi[k] = hi[k].max(w[k]);
+            }
+        }
+    }
+    let centre: [f64; 3] = std::array::from_fn(|k| 0.5 * (lo[k] + hi[k]));
+    let radius = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt() * 0.5;
+    (radius.is_finite() && centre.iter().all(|x| x.is_finite()))
+        .then_some((centre, radius.max(1e-3)))
+}
+
+fn vec3(v: [f64; 3]) -> String {
+    format!("[{}, {}, {}]", float(v[0]), float(v[1]), float(v[2]))
+}
+
+fn round(x: f64) -> f64 {
+    // Nine significant figures: f32-exact for the renderer, stable in text.
+    if x == 0.0 {
+        0.0
+    } else {
+        format!("{x:.9e}").parse().unwrap_or(x)
+    }
+}
+
+/// `[camera]`: the first perspective camera in the scene, else a framing of
+/// the bounds from +Z (a three-quarter view is not assumed: glTF is +Y up,
+/// front facing +Z).
+fn camera(
+    file: &GltfFile,
+    placed: &[(usize, Mat4)],
+    draws: &[Draw],
+    warnings: &mut Warnings,
+) -> String {
+    let doc = &file.document;
+    let framing = bounds(file, draws);
+    for (i, world) in placed {
+        let Some(cam) = doc.nodes().nth(*i).and_then(|n| n.camera()) else {
+            continue;
+        };
+        match cam.projection() {
+            gltf::camera::Projection::Perspective(p) => {
+                let eye = [world[3][0], world[3][1], world[3][2]];
+                let Some(forward) = normalize([-world[2][0], -world[2][1], -world[2][2]]) else { continue };
+                let distance = framing.map_or(1.0, |(c, _)| {
+                    let d: f64 = (0..3).map(|k| (c[k] - eye[k]) * forward[k]).sum();
+                    d.max(1e-3)
+                });
+                let target = std::array::from_fn(|k| round(eye[k] + forward[k] * distance));
+                let fov = (p.yfov() as f64).to_degrees().clamp(1.0, 179.0);
+                return format!(
+                    "[camera]\n# node {i}'s camera (`/cameras/{}`)\nposition = {}\ntarget = {}\nfov_degrees = {}\n",
+                    cam.index(),
+                    vec3(eye.map(round)),
+                    vec3(target),
+                    float(round(fov))
+                );
+            }
+            gltf::camera::Projection::Orthographic(_) => warnings.push(format!(
+                "{}: /cameras/{}: an orthographic camera; weft's scene camera is perspective: the scene is framed instead",
+                file.path.display(),
+                cam.index()
+            )),
+        }
+    }
+    let (centre, radius) = framing.unwrap_or(([0.0; 3], 1.0));
+    let fov: f64 = 35.0;
+    let distance = radius / (fov.to_radians() * 0.5).sin() * 1.1;
+    format!(
+        "[camera]\n# no camera in the file: its bounds framed from +Z\nposition = {}\ntarget = {}\nfov_degrees = {}\n",
+        vec3([centre[0], centre[1], centre[2] + distance].map(round)),
+        vec3(centre.map(round)),
+        float(fov)
+    )
+}
+
+/// `[light]`: the first directional light a node of the scene carries.
+fn light(file: &GltfFile, placed: &[(usize, Mat4)], warnings: &mut Warnings) -> String {
+    let doc = &file.document;
+    let mut chosen = None;
+    for (i, world) in placed {
+        let Some(light) = doc.nodes().nth(*i).and_then(|n| n.light()) else {
+            continue;
+        };
+        let pointer = format!("/extensions/KHR_lights_punctual/lights/{}", light.index());
+        match light.kind() {
+            gltf::khr_lights_punctual::Kind::Directional if chosen.is_none() => {
+                // The light shines along the node's −Z: towards it is +Z.
+                let Some(dir) = normalize([world[2][0], world[2][1], world[2][2]]) else { continue };
+                let intensity = light.intensity() as f64;
+                let color = light.color().map(|c| round(c as f64 * intensity));
+                chosen = Some(format!(
+                    "[light]\n# node {i}'s directional light (`{pointer}`): colour × intensity\ndirection = {}\ncolor = {}\n",
+                    vec3(dir.map(round)),
+                    vec3(color)
+                ));
+            }
+            gltf::khr_lights_punctual::Kind::Directional => warnings.push(format!(
+                "{}: {pointer}: a second directional light; engine interface v1 has one light slot: dropped",
+                file.path.display()
+            )),
+            kind => warnings.push(format!(
+                "{}: {pointer}: a {} light; weft's scenes have one directional light: dropped",
+                file.path.display(),
+                match kind {
+                    gltf::khr_lights_punctual::Kind::Point => "point",
+                    _ => "spot",
+                }
+            )),
+        }
+    }
+    chosen.unwrap_or_default()
+}
+
+/// The manifest for `file`'s default scene. `manifest_dir` is the folder the
+/// manifest's paths are relative to; `name` the scene's name.
+pub fn scene_manifest(
+    file: &GltfFile,
+    name: &str,
+    manifest_dir: &Path,
+    materials_root: Option<&Path>,
+    overrides: &Overrides,
+    warnings: &mut Warnings,
+) -> Result<GltfScene, GltfError> {
+    let (draws, placed) = drawn_primitives(file)?;
+    if draws.is_empty() {
+        return Err(file.error(
+            "/nodes",
+            "the scene draws no mesh".into(),
+            "export at least one node with a mesh",
+        ));
+    }
+    if draws.len() > MAX_INSTANCES {
+        return Err(file.error(
+            "/nodes",
+            format!("the scene draws {} mesh primitives; a weft scene has at most {MAX_INSTANCES} instances", draws.len()),
+            "merge meshes that share a material, or split the scene",
+        ));
+    }
+    // Each used material once, in first-use order.
+    let mut used: Vec<Option<usize>> = Vec::new();
+    for d in &draws {
+        if !used.contains(&d.material) {
+            used.push(d.material);
+        }
+    }
+    let mut mappings = Vec::new();
+    for m in &used {
+        let mut mapping = map_material(file, *m)?;
+        let key_name = mapping.gltf_name.clone();
+        let key_index = m.map_or("#default".to_string(), |i| format!("#{i}"));
+        if let Some(o) = overrides
+            .get(&key_name)
+            .or_else(|| overrides.get(&key_index))
+        {
+            mapping = layer(mapping, o);
+        }
+        mappings.push(mapping);
+    }
+    let relative = pathdiff(&file.path, manifest_dir);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "# Generated by weft from `{}` (glTF 2.0): docs/gltf.md.",
+        file.path.display()
+    );
+    out.push_str("[scene]\n");
+    let _ = writeln!(out, "name = {}", toml_string(name));
+    let _ = writeln!(
+        out,
+        "description = {}",
+        toml_string(&format!(
+            "Built from {} (glTF).",
+            file.path
+                .file_name()
+                .map_or(String::new(), |f| f.to_string_lossy().into_owned())
+        ))
+    );
+    if let Some(root) = materials_root {
+        let _ = writeln!(out, "materials = {}", toml_string(&root.to_string_lossy()));
+    }
+    out.push_str("vertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]\n\n");
+    out.push_str(&camera(file, &placed, &draws, warnings));
+    let light = light(file, &placed, warnings);
+    if !light.is_empty() {
+        out.push('\n');
+        out.push_str(&light);
+    }
+    let mut names: BTreeMap<String, usize> = BTreeMap::new();
+    for d in &draws {
+        let n = names.entry(d.name.clone()).or_insert(0);
+        *n += 1;
+        let name = if *n == 1 {
+            d.name.clone()
+        } else {
+            format!("{}_{}", d.name, n)
+        };
+        let mapping = &mappings[used.iter().position(|m| *m == d.material).unwrap_or(0)];
+        let prim = file
+            .document
+            .meshes()
+            .nth(d.mesh)
+            .and_then(|m| m.primitives().nth(d.primitive));
+        let mut inputs = vec!["\"position\"", "\"normal\"", "\"tangent\"", "\"uv0\""];
+        if prim
+            .as_ref()
+            .is_some_and(|p| p.get(&gltf::Semantic::TexCoords(1)).is_some())
+        {
+            inputs.push("\"uv1\"");
+        }
+        if prim
+            .as_ref()
+            .is_some_and(|p| p.get(&gltf::Semantic::Colors(0)).is_some())
+        {
+            inputs.push("\"color\"");
+        }
+        out.push_str("\n[[instances]]\n");
+        let _ = writeln!(out, "name = {}", toml_string(&name));
+        let _ = writeln!(
+            out,
+            "# glTF material `{}` ({})",
+            mapping.gltf_name.replace('\n', " "),
+            mapping.rule
+        );
+        let _ = writeln!(out, "material = {}", toml_string(&mapping.material));
+        if let Some(p) = &mapping.preset {
+            let _ = writeln!(out, "preset = {}", toml_string(p));
+        }
+        if let Some(t) = &mapping.tier {
+            let _ = writeln!(out, "tier = {}", toml_string(t));
+        }
+        if let Some(b) = mapping.error_budget {
+            let _ = writeln!(out, "error_budget = {}", float(b));
+        }
+        if let Some(s) = mapping.screen_size {
+            let _ = writeln!(out, "screen_size = {s}");
+        }
+        if !mapping.keywords.is_empty() {
+            let kw: Vec<String> = mapping
+                .keywords
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect();
+            let _ = writeln!(out, "keywords = {{ {} }}", kw.join(", "));
+        }
+        if !mapping.params.is_empty() {
+            let ps: Vec<String> = mapping
+                .params
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect();
+            let _ = writeln!(out, "params = {{ {} }}", ps.join(", "));
+        }
+        if !mapping.dynamic.is_empty() {
+            let ds: Vec<String> = mapping.dynamic.iter().map(|d| toml_string(d)).collect();
+            let _ = writeln!(out, "dynamic = [{}]", ds.join(", "));
+        }
+        let _ = writeln!(
+            out,
+            "mesh = {{ gltf = {}, mesh = {}, primitive = {} }}",
+            toml_string(&relative),
+            d.mesh,
+            d.primitive
+        );
+        if inputs.len() > 4 {
+            let _ = writeln!(out, "vertex_inputs = [{}]", inputs.join(", "));
+        }
+        let m: Vec<String> = d.world.iter().flatten().map(|&x| float(round(x))).collect();
+        let _ = writeln!(out, "matrix = [{}]", m.join(", "));
+    }
+    Ok(GltfScene {
+        manifest: out,
+        materials_in_file: file.document.materials().count(),
+        materials_used: used.len(),
+        mappings,
+    })
+}
+
+/// A path written relative to `dir` when it lies inside it, else absolute.
+fn pathdiff(path: &Path, dir: &Path) -> String {
+    let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    let dir = dir.canonicalize().unwrap_or_else(|_| dir.to_path_buf());
+    abs.strip_prefix(&dir)
+        .unwrap_or(&abs)
+        .to_string_lossy()
+        .replace('\\', "/")
+}
+
+/// The mapping with a scene's overrides on top: the override's material
+/// replaces the mapping (its params then start from the material's
+/// defaults); otherwise its params, keywords and tier are layered.
+fn layer(mut base: MaterialMapping, o: &MaterialMapping) -> MaterialMapping {
+    if !o.material.is_empty() && o.material != base.material {
+        let mut out = o.clone();
+        out.gltf_name = base.gltf_name;
+        out.rule = "[gltf.materials]";
+        return out;
+    }
+    for (k, v) in &o.params {
+        base.params.retain(|(key, _)| key != k);
+        base.params.push((k.clone(), v.clone()));
+    }
+    for (k, v) in &o.keywords {
+        base.keywords.retain(|(key, _)| key != k);
+        base.keywords.push((k.clone(), v.clone()));
+    }
+    if o.preset.is_some() {
+        base.preset = o.preset.clone();
+    }
+    if o.tier.is_some() {
+        base.tier = o.tier.clone();
+        base.error_budget = o.error_budget;
+        base.screen_size = o.screen_size;
+    }
+    if !o.dynamic.is_empty() {
+        base.dynamic = o.dynamic.clone();
+    }
+    base.rule = "[gltf.materials]";
+    base
+}
