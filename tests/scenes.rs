@@ -14,6 +14,9 @@
 //!
 //! With no Vulkan adapter these tests fail with what to install; they never skip.
 
+#[path = "gltf_scenes.rs"]
+mod gltf_scenes;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard, OnceLock};

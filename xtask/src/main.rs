@@ -16,6 +16,7 @@ mod bench_scene;
 mod bench_shading;
 mod bless;
 mod gallery;
+mod gltf_samples;
 #[cfg(feature = "screenshots")]
 mod inspector;
 mod regenerate;
@@ -74,6 +75,13 @@ enum Command {
     /// jitter maps, skin curvature map): weft_golden::textures.
     Textures {
         /// Do not write: fail and list the textures that differ from a fresh generation.
+        #[arg(long)]
+        check: bool,
+    },
+    /// Write the glTF test content (scenes/gltf/showroom.glb, tests/gltf/)
+    /// from its generator, weft_golden::gltf_samples.
+    GltfSamples {
+        /// Do not write: fail and list the files that differ from a fresh generation.
         #[arg(long)]
         check: bool,
     },
@@ -215,6 +223,7 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
         Command::Textures { check } => textures(&root, check),
+        Command::GltfSamples { check } => gltf_samples::gltf_samples(&root, check),
         Command::Bench {
             what: Bench::Compile { runs },
         } => bench_compile(&root, runs.max(1)),

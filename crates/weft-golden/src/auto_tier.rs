@@ -224,7 +224,7 @@ impl LavapipeTierChooser {
         state: &mut GpuState,
         request: &AutoTierRequest,
         variant: &Variant,
-        kind: SceneKind,
+        kind: TierMesh,
     ) -> Result<Arc<HdrImage>, String> {
         let meta = &request.material.0;
         let f = &request.features;
@@ -235,7 +235,7 @@ impl LavapipeTierChooser {
             variant.tier,
             serde_json::to_string(&request.keywords).map_err(|e| e.to_string())?,
             serde_json::to_string(&request.values).map_err(|e| e.to_string())?,
-            kind.name(),
+            request.mesh,
             request.screen_size,
             f.environment,
             f.sh_ambient,
@@ -245,6 +245,16 @@ impl LavapipeTierChooser {
             return Ok(image.clone());
         }
         let generated = write_material(state, request.material)?;
+        if let TierMesh::File(data) = kind {
+            // The mesh beside the temporary scene file, as a scene build writes it.
+            let path = state
+                .dir
+                .path()
+                .join(weft_meta::mesh::mesh_path(request.mesh));
+            std::fs::create_dir_all(path.parent().expect("meshes/"))
+                .and_then(|()| std::fs::write(&path, data.to_bytes()))
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        }
         let scene = instance_scene(request, variant, kind)?;
         let file = SceneFile::from_metadata(scene, state.dir.path().join("auto_tier.scene.json"))
             .map_err(|e| e.to_string())?;
@@ -263,11 +273,7 @@ impl LavapipeTierChooser {
             };
             format!(
                 "rendering tier `{}` of `{}` ({} at {}x{}): {e}",
-                variant.tier,
-                meta.name,
-                kind.name(),
-                request.screen_size,
-                request.screen_size
+                variant.tier, meta.name, request.mesh, request.screen_size, request.screen_size
             )
         };
         let prepared = state
@@ -288,13 +294,16 @@ impl LavapipeTierChooser {
 impl TierChooser for LavapipeTierChooser {
     fn choose(&self, request: &AutoTierRequest) -> Result<AutoTierDecision, String> {
         let meta = &request.material.0;
-        let kind = SceneKind::from_name(request.mesh).ok_or_else(|| {
-            format!(
-                "unknown mesh `{}` (valid: {})",
-                request.mesh,
-                SceneKind::ALL.map(SceneKind::name).join(", ")
-            )
-        })?;
+        let kind = match request.mesh_data {
+            Some(data) => TierMesh::File(data),
+            None => TierMesh::Builtin(SceneKind::from_name(request.mesh).ok_or_else(|| {
+                format!(
+                    "unknown mesh `{}` (valid: {})",
+                    request.mesh,
+                    SceneKind::ALL.map(SceneKind::name).join(", ")
+                )
+            })?),
+        };
         if request.screen_size == 0 || request.screen_size > MAX_SCREEN_SIZE {
             return Err(format!(
                 "screen_size {} is not a usable image size (1..={MAX_SCREEN_SIZE})",
@@ -515,10 +524,39 @@ fn write_file(path: &Path, bytes: &[u8]) -> Result<(), String> {
 
 /// A one-instance scene: the instance as the library variant of `variant`
 /// draws it, on `kind` at the origin, seen by the golden camera of that mesh.
+/// The mesh tiers are measured on: built in, or the instance's own (glTF).
+#[derive(Clone, Copy)]
+enum TierMesh<'a> {
+    Builtin(SceneKind),
+    File(&'a weft_meta::mesh::MeshData),
+}
+
+/// A camera that frames a mesh of the scene folder: its bounds' centre
+/// seen from +Z, the bounding sphere filling 95 % of the 35° field.
+fn framing_camera(data: &weft_meta::mesh::MeshData) -> SceneCamera {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in &data.positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(f64::from(p[k]));
+            hi[k] = hi[k].max(f64::from(p[k]));
+        }
+    }
+    let centre: [f64; 3] = std::array::from_fn(|k| 0.5 * (lo[k] + hi[k]));
+    let radius = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt() * 0.5;
+    let fov: f64 = 35.0;
+    let distance = radius.max(1e-3) / (0.5 * fov.to_radians()).sin() / 0.95;
+    SceneCamera {
+        position: [centre[0], centre[1], centre[2] + distance],
+        target: centre,
+        fov_degrees: fov,
+    }
+}
+
 fn instance_scene(
     request: &AutoTierRequest,
     variant: &Variant,
-    kind: SceneKind,
+    kind: TierMesh,
 ) -> Result<SceneMetadata, String> {
     let meta = &request.material.0;
     // Parameters by name (colours linear, curves baked, textures by built-in
@@ -539,8 +577,33 @@ fn instance_scene(
             ));
         }
     }
-    let golden = Scene::new(kind);
-    let camera = golden.camera;
+    let identity: [f32; 16] = std::array::from_fn(|i| if i % 5 == 0 { 1.0 } else { 0.0 });
+    let (camera, meshes, model) = match kind {
+        TierMesh::Builtin(kind) => {
+            let golden = Scene::new(kind);
+            let model = std::array::from_fn(|i| golden.model[i / 4][i % 4]);
+            let camera = golden.camera;
+            let camera = SceneCamera {
+                position: camera.eye.map(f64::from),
+                target: camera.target.map(f64::from),
+                fov_degrees: f64::from(camera.fov_y_degrees),
+            };
+            (camera, BTreeMap::new(), model)
+        }
+        TierMesh::File(data) => {
+            let entry = weft_meta::scene::SceneMesh {
+                path: None,
+                file: Some(weft_meta::mesh::mesh_path(request.mesh)),
+                radius: Some(data.radius()),
+                format: weft_meta::mesh::MESH_FORMAT.into(),
+            };
+            (
+                framing_camera(data),
+                BTreeMap::from([(request.mesh.to_string(), entry)]),
+                identity,
+            )
+        }
+    };
     let mut passes = meta.passes.clone();
     passes.sort_by_key(|p| p.render_state.queue);
     let f = &request.features;
@@ -556,16 +619,12 @@ fn instance_scene(
             sh_ambient: f.sh_ambient,
             directional_lights: f.directional_lights,
         },
-        camera: SceneCamera {
-            position: camera.eye.map(f64::from),
-            target: camera.target.map(f64::from),
-            fov_degrees: f64::from(camera.fov_y_degrees),
-        },
+        camera,
         light: None,
         shaders: Vec::new(),
         languages: meta.languages.clone(),
         conventions: meta.conventions.clone(),
-        meshes: Default::default(),
+        meshes,
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),
@@ -580,12 +639,12 @@ fn instance_scene(
             uniform_values,
             textures: BTreeMap::new(),
             passes,
-            mesh: kind.name().into(),
+            mesh: request.mesh.into(),
             transform: SceneTransform {
                 translation: [0.0; 3],
                 rotation_degrees: [0.0; 3],
                 scale: [1.0; 3],
-                model: std::array::from_fn(|i| golden.model[i / 4][i % 4]),
+                model,
             },
             tier_choice: None,
         }],

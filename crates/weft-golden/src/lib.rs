@@ -13,6 +13,7 @@ pub mod film;
 pub mod fins;
 pub mod floor;
 pub mod glints;
+pub mod gltf_samples;
 pub mod pareto;
 pub mod project;
 pub mod scene_bench;

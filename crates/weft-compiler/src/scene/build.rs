@@ -111,6 +111,10 @@ fn decide_tiers(
                     keywords: keyword_names(m, inst),
                     values: request_values,
                     mesh: inst.mesh.name(),
+                    mesh_data: match &inst.mesh {
+                        InstanceMesh::File(f) => Some(&f.data),
+                        InstanceMesh::Builtin(_) => None,
+                    },
                     features: scene.manifest.features,
                     error_budget: *error_budget,
                     screen_size: *screen_size,

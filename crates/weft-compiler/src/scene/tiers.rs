@@ -18,6 +18,9 @@ pub struct AutoTierRequest<'a> {
     /// textures by built-in name), by parameter or uniform-member name.
     pub values: BTreeMap<String, serde_json::Value>,
     pub mesh: &'a str,
+    /// The mesh's vertex data when it is not built in (read from glTF): the
+    /// tiers are measured on it.
+    pub mesh_data: Option<&'a weft_meta::mesh::MeshData>,
     pub features: SceneFeatures,
     pub error_budget: f64,
     pub screen_size: u32,

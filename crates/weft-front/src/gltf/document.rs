@@ -42,6 +42,8 @@ pub struct GltfFile {
 /// `materials[3].extensions.KHR_x` (gltf-json's path) as a JSON pointer,
 /// `/materials/3/extensions/KHR_x`.
 pub fn json_pointer(path: &str) -> String {
+    // gltf-json appends ` = "value"` to some paths.
+    let path = path.split(" = ").next().unwrap_or(path);
     let mut out = String::new();
     for part in path.split('.') {
         let (key, rest) = part.split_once('[').unwrap_or((part, ""));
@@ -108,8 +110,10 @@ impl GltfFile {
                 "re-export as glTF 2.0",
             ));
         }
-        validate(&root, path)?;
+        // Extensions first: the schema check refuses an unknown required
+        // one without saying where it is used.
         check_extensions(&root, path, warnings)?;
+        validate(&root, path)?;
         let document = gltf::Document::from_json_without_validation(root);
         let buffers = load_buffers(&document, path, &dir, bin)?;
         Ok(GltfFile {
@@ -128,12 +132,46 @@ impl GltfFile {
 /// The glTF schema's checks (indices in range, required fields, enums).
 fn validate(root: &json::Root, path: &Path) -> Result<(), GltfError> {
     use json::validation::Validate;
-    let mut first: Option<(String, String)> = None;
-    root.validate(root, json::Path::new, &mut |p, e| {
-        if first.is_none() {
-            first = Some((json_pointer(p().as_str()), e.to_string()));
+    // gltf-json 1.4 indexes a primitive's POSITION accessor before checking
+    // it exists (mesh.rs, `primitive_validate_hook`): checked here first.
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, prim) in mesh.primitives.iter().enumerate() {
+            for (semantic, index) in &prim.attributes {
+                if index.value() >= root.accessors.len() {
+                    let name = match semantic {
+                        json::validation::Checked::Valid(s) => s.to_string(),
+                        json::validation::Checked::Invalid => "?".into(),
+                    };
+                    return Err(GltfError::new(
+                        path,
+                        &format!("/meshes/{m}/primitives/{p}/attributes/{name}"),
+                        format!(
+                            "invalid glTF: accessor {} does not exist ({} accessors)",
+                            index.value(),
+                            root.accessors.len()
+                        ),
+                        "the file breaks the glTF 2.0 schema; re-export it",
+                    ));
+                }
+            }
         }
-    });
+    }
+    let mut first: Option<(String, String)> = None;
+    let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        root.validate(root, json::Path::new, &mut |p, e| {
+            if first.is_none() {
+                first = Some((json_pointer(p().as_str()), e.to_string()));
+            }
+        })
+    }));
+    if checked.is_err() {
+        return Err(GltfError::new(
+            path,
+            "",
+            "invalid glTF: the schema check failed on an inconsistent file".into(),
+            "run the Khronos glTF validator on the file",
+        ));
+    }
     match first {
         None => Ok(()),
         Some((pointer, message)) => Err(GltfError::new(
@@ -199,7 +237,7 @@ fn check_extensions(
             let pointer = first_use(root, name).unwrap_or("/extensionsUsed".into());
             warnings.push(format!(
                 "{}: {pointer}: extension `{name}` is not supported; weft draws without it",
-                path.display()
+                super::shown(path)
             ));
         }
     }

@@ -73,6 +73,12 @@ fn color(rgb: [f32; 3], alpha: f32) -> Literal {
     format!("[{}]", c.join(", "))
 }
 
+/// An f32 of the file as the decimal it was written as (its shortest
+/// round-tripping form): 0.45f32 is 0.45, not 0.449999988.
+fn decimal(x: f32) -> f64 {
+    format!("{x}").parse().unwrap_or(f64::from(x))
+}
+
 /// Six decimals: what an artist types, and stable across platforms' `powf`.
 fn round6(x: f64) -> f64 {
     (x * 1e6).round() / 1e6
@@ -149,6 +155,15 @@ fn texture_losses(
         (m.normal_texture().is_some(), "normalTexture"),
         (m.occlusion_texture().is_some(), "occlusionTexture"),
         (m.emissive_texture().is_some(), "emissiveTexture"),
+        (
+            m.specular().is_some_and(|s| s.specular_texture().is_some()),
+            "KHR_materials_specular.specularTexture",
+        ),
+        (
+            m.specular()
+                .is_some_and(|s| s.specular_color_texture().is_some()),
+            "KHR_materials_specular.specularColorTexture",
+        ),
     ] {
         if has {
             out.push(format!(
@@ -200,12 +215,15 @@ pub fn map_material(file: &GltfFile, index: Option<usize>) -> Result<MaterialMap
     let pbr = m.pbr_metallic_roughness();
     let [r, g, b, a] = pbr.base_color_factor();
     let base = color([r, g, b], a);
-    let metallic = pbr.metallic_factor() as f64;
-    let roughness = pbr.roughness_factor() as f64;
+    let metallic = decimal(pbr.metallic_factor());
+    let roughness = decimal(pbr.roughness_factor());
     let mut losses = Vec::new();
     texture_losses(&m, &exts, &mut losses);
     if m.emissive_factor() != [0.0; 3] {
-        losses.push("emissiveFactor (no weft material emits)".into());
+        let strength = m.emissive_strength().map_or(String::new(), |s| {
+            format!(" × KHR_materials_emissive_strength {s}")
+        });
+        losses.push(format!("emissiveFactor{strength} (no weft material emits)"));
     }
     match m.alpha_mode() {
         gltf::material::AlphaMode::Opaque => {}
@@ -323,12 +341,12 @@ pub fn map_material(file: &GltfFile, index: Option<usize>) -> Result<MaterialMap
             ("roughness".into(), float(roughness)),
             ("metallic".into(), float(metallic)),
         ];
-        if let Some(spec) = exts.get("KHR_materials_specular") {
+        if let Some(spec) = m.specular() {
             // standard's specular_strength scales F0 (0.04 dielectric): glTF's
             // specularFactor × specularColorFactor's max does the same.
-            let f = num(spec.get("specularFactor"), 1.0);
-            let c = rgb(spec.get("specularColorFactor"), [1.0; 3]);
-            let strength = f * c.iter().fold(0.0f32, |a, &x| a.max(x)) as f64;
+            let f = decimal(spec.specular_factor());
+            let c = spec.specular_color_factor();
+            let strength = f * decimal(c.iter().fold(0.0f32, |a, &x| a.max(x)));
             out.params.push((
                 "specular_strength".into(),
                 float(round6(strength.clamp(0.0, 4.0))),

@@ -370,9 +370,13 @@ pub fn read_primitive(
     })
 }
 
+/// `v` as it is when unit length (glTF requires unit normals and tangents:
+/// kept bit for bit), normalised when not, `fallback` when it has no direction.
 fn unit_or(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
     let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    if len.is_finite() && len > 1e-12 {
+    if (len - 1.0).abs() < 1e-4 {
+        v
+    } else if len.is_finite() && len > 1e-12 {
         v.map(|x| x / len)
     } else {
         fallback

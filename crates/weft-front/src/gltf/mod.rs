@@ -55,8 +55,15 @@ impl std::fmt::Display for GltfError {
         } else {
             format!(" at {}", self.pointer)
         };
-        write!(f, "{}{at}: {}", self.file.display(), self.message)
+        write!(f, "{}{at}: {}", shown(&self.file), self.message)
     }
+}
+
+/// A path as messages show it: relative to the working directory when
+/// inside it.
+pub fn shown(path: &Path) -> String {
+    let abs = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    crate::includes::display_path(&abs)
 }
 
 /// Whether a path names a glTF file (`.gltf` or `.glb`).

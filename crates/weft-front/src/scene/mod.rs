@@ -7,6 +7,7 @@
 //! [`resolve`] (materials loaded from the materials root, values typed,
 //! keywords, tier and variant checked). The format: docs/scenes.md.
 
+pub mod gltf_layer;
 pub mod model;
 pub mod parse;
 pub mod resolve;
@@ -33,6 +34,28 @@ pub fn load_scene(
     let (abs, file, text) = crate::read_source(path, db, diags)?;
     let before = diags.error_count();
     let doc = parse::parse_document(&text, &mut Cx { file, diags })?;
+    if doc.get_ref().contains_key("gltf") {
+        // The glTF's instances appended to the text as written: the
+        // composed text is a new source whose prefix is the file's own.
+        let mut warnings = Vec::new();
+        let composed = gltf_layer::compose(
+            doc.get_ref(),
+            &text,
+            &abs,
+            &mut Cx { file, diags },
+            &mut warnings,
+        );
+        for w in warnings {
+            diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
+        }
+        let composed = composed?;
+        let display = db.name(file).to_string();
+        let file = db.add(&abs, display, composed.clone());
+        let doc = parse::parse_document(&composed, &mut Cx { file, diags })?;
+        let parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
+        let scene = resolve::resolve(parsed, db, diags);
+        return (diags.error_count() == before).then_some(scene);
+    }
     let parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
     let scene = resolve::resolve(parsed, db, diags);
     (diags.error_count() == before).then_some(scene)
@@ -115,14 +138,14 @@ pub fn gltf_manifest(
         for loss in &m.losses {
             warnings.push(format!(
                 "{}: material `{}` → {}: drops {loss}",
-                path.display(),
+                crate::gltf::shown(path),
                 m.gltf_name,
                 m.material
             ));
         }
     }
     Ok((
-        scene.manifest,
+        scene.manifest(),
         warnings,
         dir.join(format!("{name}{}", parse::SCENE_SUFFIX)),
     ))

@@ -11,7 +11,7 @@ use codespan_reporting::diagnostic::Label;
 use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue};
 
-pub const TOP_KEYS: &[&str] = &["scene", "camera", "light", "instances"];
+pub const TOP_KEYS: &[&str] = &["scene", "camera", "light", "instances", "gltf"];
 pub const SCENE_KEYS: &[&str] = &[
     "name",
     "description",

@@ -1,0 +1,294 @@
+//! glTF scenes (docs/gltf.md), a module of the `scenes` test binary:
+//!
+//! - the committed glTF content is what its generator
+//!   (`weft_golden::gltf_samples`) makes;
+//! - every hostile file fails with an error naming its JSON pointer;
+//! - the showroom's materials map as docs/gltf.md's table says, its nodes
+//!   land where their world matrices put them, its mesh files hold the
+//!   streams the glTF holds;
+//! - tangents weft generates (MikkTSpace) follow the stated tangent frame.
+
+use std::path::{Path, PathBuf};
+use weft_compiler::{SceneBuildOptions, build_scene};
+use weft_golden::gltf_samples;
+use weft_meta::mesh::MeshData;
+use weft_meta::scene::SceneMetadata;
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+#[test]
+fn committed_gltf_samples_are_what_the_generator_makes() {
+    for (path, bytes) in gltf_samples::committed_files() {
+        let on_disk = std::fs::read(repo().join(&path))
+            .unwrap_or_else(|e| panic!("{path}: {e}; run `cargo xtask gltf-samples`"));
+        assert!(
+            on_disk == bytes,
+            "{path} differs from its generator; run `cargo xtask gltf-samples`"
+        );
+    }
+}
+
+/// The build's error text for a scene that must fail.
+fn build_error(path: &Path) -> String {
+    match build_scene(path, &SceneBuildOptions::default()) {
+        Ok(_) => panic!("{} built", path.display()),
+        Err((db, diags)) => diags.render_plain(&db),
+    }
+}
+
+#[test]
+fn hostile_gltf_files_fail_at_their_json_pointer() {
+    let cases = gltf_samples::hostile();
+    assert!(cases.len() >= 12);
+    for (name, _, pointer, phrase) in cases {
+        let path = repo().join(format!("tests/gltf/bad/{name}.gltf"));
+        let text = build_error(&path);
+        assert!(
+            text.contains(&format!("{name}.gltf at {pointer}:")),
+            "{name}: the error does not name `{pointer}`:\n{text}"
+        );
+        assert!(text.contains(phrase), "{name}: no `{phrase}` in:\n{text}");
+    }
+}
+
+/// `scenes/gltf/showroom.glb` built as it is (no `auto` tier in it).
+fn showroom() -> (SceneMetadata, std::collections::BTreeMap<String, Vec<u8>>) {
+    let out = build_scene(
+        &repo().join("scenes/gltf/showroom.glb"),
+        &SceneBuildOptions::default(),
+    )
+    .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    (out.metadata, out.files)
+}
+
+fn constant(meta: &SceneMetadata, instance: &str, name: &str) -> serde_json::Value {
+    let inst = meta
+        .instances
+        .iter()
+        .find(|i| i.name == instance)
+        .unwrap_or_else(|| panic!("no instance `{instance}`"));
+    inst.constants
+        .get(name)
+        .or_else(|| inst.uniform_values.get(name))
+        .cloned()
+        .unwrap_or_else(|| panic!("{instance}: no value `{name}`"))
+}
+
+fn number(v: serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
+}
+
+#[test]
+fn gltf_materials_map_as_documented() {
+    let (meta, _) = showroom();
+    let by_name = |n: &str| meta.instances.iter().find(|i| i.name == n).unwrap();
+    // KHR_materials_sheen → velvet reference; α = sheenRoughness² (the
+    // Khronos sample renderer's), velvet's α = 1 − smoothness.
+    let drape = by_name("drape");
+    assert_eq!(
+        (drape.material.as_str(), drape.tier.as_str()),
+        ("velvet", "reference")
+    );
+    assert!((number(constant(&meta, "drape", "smoothness")) - (1.0 - 0.6 * 0.6)).abs() < 1e-6);
+    // velvet's sheen colour is F0 (0.04) + scatter colour: scatter = sheen − 0.04,
+    // uploaded linear.
+    let scatter = constant(&meta, "drape", "scatter_color");
+    for (c, want) in scatter.as_array().unwrap().iter().zip([0.51, 0.18, 0.26]) {
+        assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{scatter}");
+    }
+    // Core metallic-roughness → standard; KHR_materials_specular's factor
+    // scales F0 (standard's specular_strength).
+    let frame = by_name("sofa_p0");
+    assert_eq!(frame.material, "standard");
+    assert!((number(constant(&meta, "sofa_p0", "specular_strength")) - 0.5).abs() < 1e-6);
+    assert!((number(constant(&meta, "sofa_p0", "roughness")) - 0.45).abs() < 1e-6);
+    let base = constant(&meta, "sofa_p0", "base_color");
+    for (c, want) in base.as_array().unwrap().iter().zip([0.32, 0.2, 0.12, 1.0]) {
+        // The factor is linear in glTF; weft uploads linear: the round trip
+        // through the sRGB-edited parameter keeps it.
+        assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{base}");
+    }
+    // KHR_materials_iridescence → laser fast, the film's parameters as written.
+    let foil = by_name("foil_swatch");
+    assert_eq!(
+        (foil.material.as_str(), foil.tier.as_str()),
+        ("laser", "fast")
+    );
+    for (name, want) in [
+        ("film_strength", 1.0),
+        ("film_ior", 1.8),
+        ("thickness_min", 100.0),
+        ("thickness_max", 420.0),
+    ] {
+        assert!(
+            (number(constant(&meta, "foil_swatch", name)) - want).abs() < 1e-4,
+            "{name}"
+        );
+    }
+    // KHR_materials_anisotropy → silk's GGX lobe.
+    let ball = by_name("satin_ball");
+    assert_eq!(ball.material, "silk");
+    assert_eq!(ball.keywords["ANISO_MODEL"], "ggx");
+    // extras.weft → any weft material.
+    let silk = by_name("shot_silk_swatch");
+    assert_eq!(
+        (
+            silk.material.as_str(),
+            silk.preset.as_deref(),
+            silk.tier.as_str()
+        ),
+        ("microcylinder", Some("silk_shot"), "fast")
+    );
+    // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1.
+    assert_eq!(meta.instances.len(), 10);
+    // The first directional light, towards it = the node's +Z.
+    let light = meta.light.as_ref().unwrap();
+    let d = [-0.62f64, 0.55, 0.56];
+    let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+    for (a, b) in light.direction.iter().zip(d) {
+        assert!((a - b / len).abs() < 1e-5, "{:?}", light.direction);
+    }
+    assert!(
+        (light.color.unwrap()[0] - 3.0).abs() < 1e-6,
+        "colour × intensity"
+    );
+    // The camera node: yfov 0.6 rad.
+    assert!((meta.camera.fov_degrees - 0.6f64.to_degrees()).abs() < 1e-4);
+    assert!((meta.camera.position[1] - 1.3).abs() < 1e-6);
+}
+
+#[test]
+fn gltf_meshes_ship_in_the_scene_folder_as_the_file_holds_them() {
+    let (meta, files) = showroom();
+    let mesh = |name: &str| {
+        let entry = &meta.meshes[name];
+        assert!(
+            entry.path.is_none(),
+            "{name}: a scene-folder mesh has no library path"
+        );
+        let file = entry.file.as_ref().unwrap();
+        let bytes = &files[&format!("showroom/{file}")];
+        (MeshData::from_bytes(bytes).unwrap(), entry.radius.unwrap())
+    };
+    // The sphere went in with its own tangents: read back exactly.
+    let sphere = weft_render::Scene::new(weft_render::SceneKind::Sphere).mesh;
+    let (ball, radius) = mesh(
+        &meta
+            .instances
+            .iter()
+            .find(|i| i.name == "satin_ball")
+            .unwrap()
+            .mesh,
+    );
+    assert!(ball.positions == sphere.positions, "positions as written");
+    assert!(ball.normals == sphere.normals, "normals as written");
+    assert!(ball.tangents == sphere.tangents, "tangents as written");
+    assert!(ball.indices == sphere.indices, "indices as written");
+    assert!((radius - 1.0).abs() < 1e-5, "{radius}");
+    // The sofa's boxes have no normals: flat normals, one vertex per corner.
+    let (block, _) = mesh(
+        &meta
+            .instances
+            .iter()
+            .find(|i| i.name == "sofa_p0")
+            .unwrap()
+            .mesh,
+    );
+    assert_eq!(block.positions.len(), 36, "12 triangles, unwelded");
+    for t in block.indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| block.positions[t[k] as usize]);
+        let n = block.normals[t[0] as usize];
+        let e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let e2 = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+        let cross = [
+            e1[1] * e2[2] - e1[2] * e2[1],
+            e1[2] * e2[0] - e1[0] * e2[2],
+            e1[0] * e2[1] - e1[1] * e2[0],
+        ];
+        let dot: f32 = cross.iter().zip(n).map(|(x, y)| x * y).sum();
+        assert!(
+            dot > 0.0,
+            "the flat normal faces the triangle's front (CCW)"
+        );
+    }
+}
+
+/// The draped cloth went in without tangents: MikkTSpace's, as glTF asks.
+/// They must follow weft's tangent frame (T along +u, B = w·(N × T) along
+/// +v): checked against the UV gradient of each triangle, computed here.
+#[test]
+fn generated_tangents_follow_the_tangent_frame() {
+    let (meta, files) = showroom();
+    let name = &meta
+        .instances
+        .iter()
+        .find(|i| i.name == "drape")
+        .unwrap()
+        .mesh;
+    let file = meta.meshes[name].file.clone().unwrap();
+    let m = MeshData::from_bytes(&files[&format!("showroom/{file}")]).unwrap();
+    let (mut agree_t, mut agree_b, mut n) = (0, 0, 0);
+    for t in m.indices.chunks_exact(3) {
+        let [i0, i1, i2] = [0, 1, 2].map(|k| t[k] as usize);
+        let (p0, p1, p2) = (m.positions[i0], m.positions[i1], m.positions[i2]);
+        let (u0, u1, u2) = (m.uv0[i0], m.uv0[i1], m.uv0[i2]);
+        let e1 = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+        let e2 = [p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]];
+        let (du1, dv1, du2, dv2) = (u1[0] - u0[0], u1[1] - u0[1], u2[0] - u0[0], u2[1] - u0[1]);
+        let det = du1 * dv2 - du2 * dv1;
+        if det.abs() < 1e-12 {
+            continue;
+        }
+        // dP/du and dP/dv of the triangle.
+        let dpdu: Vec<f32> = (0..3).map(|k| (e1[k] * dv2 - e2[k] * dv1) / det).collect();
+        let dpdv: Vec<f32> = (0..3).map(|k| (e2[k] * du1 - e1[k] * du2) / det).collect();
+        let tan = m.tangents[i0];
+        let nrm = m.normals[i0];
+        let b = [
+            tan[3] * (nrm[1] * tan[2] - nrm[2] * tan[1]),
+            tan[3] * (nrm[2] * tan[0] - nrm[0] * tan[2]),
+            tan[3] * (nrm[0] * tan[1] - nrm[1] * tan[0]),
+        ];
+        let dot = |a: &[f32], b: &[f32]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>();
+        agree_t += usize::from(dot(&dpdu, &tan[..3]) > 0.0);
+        agree_b += usize::from(dot(&dpdv, &b) > 0.0);
+        n += 1;
+    }
+    assert!(n > 1000);
+    assert!(
+        agree_t * 100 >= n * 99,
+        "T along +u on {agree_t} of {n} triangles"
+    );
+    assert!(
+        agree_b * 100 >= n * 99,
+        "B along +v on {agree_b} of {n} triangles"
+    );
+}
+
+#[test]
+fn a_character_from_gltf_extras_builds_with_its_weft_materials() {
+    let out = build_scene(
+        &repo().join("tests/gltf/bust.gltf"),
+        &SceneBuildOptions::default(),
+    )
+    .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let materials: Vec<&str> = out
+        .metadata
+        .instances
+        .iter()
+        .map(|i| i.material.as_str())
+        .collect();
+    assert_eq!(materials, ["face", "eye", "hair", "skin"]);
+    // The outline keyword from extras.weft: the outline pass is drawn.
+    let face = &out.metadata.instances[0];
+    assert!(
+        face.passes.iter().any(|p| p.name == "outline"),
+        "{:?}",
+        face.passes
+    );
+}
