@@ -141,8 +141,10 @@ pub fn compose(
     for m in &scene.mappings {
         for loss in &m.losses {
             warnings.push(format!(
-                "{file}: material `{}` → {}: drops {loss}",
-                m.gltf_name, m.material
+                "{}: material `{}` → {}: drops {loss}",
+                crate::gltf::shown(&dir.join(&file)),
+                m.gltf_name,
+                m.material
             ));
         }
     }
