@@ -49,6 +49,13 @@ const SCENE: Target = Target {
     mutations: 400_000,
 };
 
+const GLTF: Target = Target {
+    name: "gltf",
+    dict: "gltf",
+    run: harness::gltf,
+    mutations: 60_000,
+};
+
 fn fuzz_dir() -> PathBuf {
     harness::repo().join("fuzz")
 }
@@ -236,6 +243,11 @@ fn material_compile_smoke() {
 #[test]
 fn scene_smoke() {
     smoke(&SCENE, 0x5eed_0003);
+}
+
+#[test]
+fn gltf_smoke() {
+    smoke(&GLTF, 0x5eed_0004);
 }
 
 /// The in-memory compile path is the build's: each shipped material,

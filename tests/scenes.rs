@@ -362,6 +362,7 @@ fn scene_builds_are_byte_deterministic() {
         .with_reports_dir(generated().join("reports"));
     let options = weft_compiler::SceneBuildOptions {
         tier_chooser: Some(&chooser),
+        ..Default::default()
     };
     let build = |path: &Path, threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()

@@ -154,3 +154,41 @@ pub fn scene(data: &[u8]) -> String {
     }
     diags.render_plain(&db)
 }
+
+/// Target (d): glTF files (`.gltf` JSON or `.glb`, in memory: only
+/// embedded buffers). Open and check, map nodes, camera, lights and
+/// materials into a scene manifest, then read every mesh primitive.
+pub fn gltf(data: &[u8]) -> String {
+    use weft_front::gltf::{GltfFile, meshes, scene};
+    let path = Path::new("fuzz.glb");
+    let mut warnings = Vec::new();
+    let mut out = String::new();
+    match GltfFile::from_bytes(path, None, data.to_vec(), &mut warnings) {
+        Err(e) => out.push_str(&format!("{e}\n{}\n", e.hint)),
+        Ok(file) => {
+            match scene::scene_manifest(
+                &file,
+                "fuzz",
+                Path::new("."),
+                None,
+                &Default::default(),
+                &mut warnings,
+            ) {
+                Ok(s) => out.push_str(&s.manifest()),
+                Err(e) => out.push_str(&format!("{e}\n")),
+            }
+            for (m, mesh) in file.document.meshes().enumerate().take(16) {
+                for p in 0..mesh.primitives().count().min(16) {
+                    if let Err(e) = meshes::read_primitive(&file, m, p) {
+                        out.push_str(&format!("{e}\n"));
+                    }
+                }
+            }
+        }
+    }
+    for w in warnings {
+        out.push_str(&w);
+        out.push('\n');
+    }
+    out
+}

@@ -71,10 +71,15 @@ enum Command {
         /// Recompile materials whose inputs are unchanged instead of reusing their files.
         #[arg(long)]
         force: bool,
-        /// Build exactly the shaders this scene manifest needs (`scenes/<name>.scene.toml`),
-        /// each specialised for its instance, into `<out>/<scene>/`.
+        /// Build exactly the shaders this scene needs, each specialised for its instance,
+        /// into `<out>/<scene>/`: a manifest (`scenes/<name>.scene.toml`) or a glTF 2.0
+        /// file (`.gltf`, `.glb`; docs/gltf.md).
         #[arg(long, conflicts_with = "paths")]
         scene: Option<PathBuf>,
+        /// With a glTF --scene: the materials root its materials map into (default:
+        /// ./materials, else a materials/ beside an ancestor folder of the file).
+        #[arg(long, value_name = "DIR", requires = "scene")]
+        materials: Option<PathBuf>,
         /// With --scene: per-tier costs measured on your own GPU (JSON, see docs/scenes.md)
         /// for `tier = "auto"` instead of the committed GPU model
         /// (generated/reports/gpu-model.json).
@@ -306,6 +311,8 @@ fn no_material(paths: &[PathBuf]) -> Option<(SourceDb, Diagnostics)> {
             .unwrap_or_default();
         let hint = if name.ends_with(".scene.toml") {
             "this is a scene manifest: build it with `weft build --scene <file>`"
+        } else if weft_front::gltf::is_gltf_path(p) {
+            "this is a glTF file: build it as a scene with `weft build --scene <file>` (docs/gltf.md)"
         } else if !name.ends_with(".toml") {
             "a material is a .toml file (its WGSL is named by `source`)"
         } else {
@@ -368,6 +375,7 @@ fn main() -> ExitCode {
             scene: Some(scene),
             out,
             tier_costs,
+            materials,
             lock_timeout,
             ..
         } => {
@@ -375,6 +383,7 @@ fn main() -> ExitCode {
             if scene_build::build_scene_command(
                 &scene,
                 &out,
+                materials.as_deref(),
                 tier_costs.as_ref(),
                 lock_timeout,
                 cli.quiet,

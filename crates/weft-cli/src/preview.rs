@@ -102,7 +102,8 @@ pub(crate) struct PreviewArgs {
 #[derive(clap::Args)]
 #[command(group = clap::ArgGroup::new("scene_source").args(["scene_file", "scene_dir"]))]
 struct SceneArgs {
-    /// A scene manifest (`scenes/<name>.scene.toml`): built into a temporary folder and drawn whole.
+    /// A scene manifest (`scenes/<name>.scene.toml`) or a glTF 2.0 file (`.gltf`, `.glb`):
+    /// built into a temporary folder and drawn whole.
     #[arg(long, value_name = "FILE", conflicts_with = "scene_dir", conflicts_with_all = NOT_WITH_A_SCENE)]
     scene_file: Option<PathBuf>,
     /// An already built scene: the folder holding `<scene>.scene.json`, that file, or the output
@@ -370,6 +371,7 @@ fn build_scene_into(manifest: &Path, out: &Path, color: Color) -> Result<PathBuf
     let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)?;
     let options = weft_compiler::SceneBuildOptions {
         tier_chooser: Some(&chooser),
+        ..Default::default()
     };
     let built = match weft_compiler::build_scene(manifest, &options) {
         Ok(b) => b,

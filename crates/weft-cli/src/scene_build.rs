@@ -11,6 +11,7 @@ use weft_compiler::ownership::{Input, check_apart};
 pub fn build_scene_command(
     scene: &Path,
     out: &Path,
+    gltf_materials: Option<&Path>,
     tier_costs: Option<&PathBuf>,
     lock_wait: Duration,
     quiet: bool,
@@ -27,6 +28,7 @@ pub fn build_scene_command(
         };
     let options = SceneBuildOptions {
         tier_chooser: Some(&chooser),
+        gltf_materials,
     };
     let result = match weft_compiler::build_scene(scene, &options) {
         Ok(r) => r,

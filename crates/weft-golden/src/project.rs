@@ -24,6 +24,7 @@ pub fn build_project(
         .map_err(error)?;
     let scene_options = SceneBuildOptions {
         tier_chooser: Some(&chooser),
+        ..Default::default()
     };
     let scenes = root.join("scenes");
     let build = || weft_compiler::scene::build_scene_folder(&scenes, &scene_options);

@@ -725,6 +725,7 @@ fn time_builds(
                 .with_reports_dir(generated.join("reports"));
             let options = weft_compiler::SceneBuildOptions {
                 tier_chooser: Some(&chooser),
+                ..Default::default()
             };
             let out = weft_compiler::build_scene(&input.manifest, &options)
                 .map_err(|(db, d)| d.render_plain(&db))?;

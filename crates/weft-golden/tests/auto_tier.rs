@@ -623,6 +623,7 @@ fov_degrees = 40.0
         .with_reports_dir(reports_dir());
     let options = weft_compiler::SceneBuildOptions {
         tier_chooser: Some(&chooser),
+        ..Default::default()
     };
     let out = match weft_compiler::build_scene(&scene, &options) {
         Ok(out) => out,

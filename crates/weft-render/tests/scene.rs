@@ -385,6 +385,7 @@ fn generated() -> &'static Path {
 fn build_scene(manifest: &Path) -> PathBuf {
     let options = weft_compiler::SceneBuildOptions {
         tier_chooser: Some(&ReferenceTier),
+        ..Default::default()
     };
     let out = weft_compiler::build_scene(manifest, &options)
         .unwrap_or_else(|(db, d)| panic!("{}", d.render_plain(&db)));

@@ -44,6 +44,10 @@ pub struct SceneOutput {
 pub struct SceneBuildOptions<'a> {
     /// Chooses `tier = "auto"` instances' tiers (None: such a scene is an error).
     pub tier_chooser: Option<&'a dyn TierChooser>,
+    /// For a `.gltf` / `.glb` scene: the materials root its materials map
+    /// into (None: `./materials`, else one beside an ancestor of the file;
+    /// `weft_front::scene::default_gltf_materials_root`).
+    pub gltf_materials: Option<&'a std::path::Path>,
 }
 
 fn instance_error(

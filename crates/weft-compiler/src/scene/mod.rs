@@ -86,7 +86,12 @@ pub fn build_scene(
 ) -> Result<SceneOutput, (SourceDb, Diagnostics)> {
     let mut db = SourceDb::new();
     let mut diags = Diagnostics::new();
-    let Some(scene) = weft_front::scene::load_scene(scene_toml, &mut db, &mut diags) else {
+    let loaded = if weft_front::gltf::is_gltf_path(scene_toml) {
+        weft_front::scene::load_gltf_scene(scene_toml, options.gltf_materials, &mut db, &mut diags)
+    } else {
+        weft_front::scene::load_scene(scene_toml, &mut db, &mut diags)
+    };
+    let Some(scene) = loaded else {
         return Err((db, diags));
     };
     // On compiler threads (naga's writers need deep stacks, see `nesting`),

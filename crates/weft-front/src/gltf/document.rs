@@ -65,11 +65,9 @@ pub fn json_pointer(path: &str) -> String {
 impl GltfFile {
     /// Reads, parses and checks `path` (`.gltf` or `.glb`), and loads its buffers.
     pub fn open(path: &Path, warnings: &mut Warnings) -> Result<GltfFile, GltfError> {
-        let err = |pointer: &str, message: String, hint: &str| {
-            GltfError::new(path, pointer, message, hint)
-        };
         let bytes = weft_meta::files::read_regular(path, MAX_GLTF_BYTES).map_err(|e| {
-            err(
+            GltfError::new(
+                path,
                 "",
                 format!("cannot read the file: {e}"),
                 "give a readable .gltf or .glb file of at most 512 MiB",
@@ -80,15 +78,37 @@ impl GltfFile {
             .ok()
             .and_then(|p| p.parent().map(Path::to_path_buf))
             .unwrap_or_else(|| PathBuf::from("."));
+        Self::from_bytes(path, Some(&dir), bytes, warnings)
+    }
+
+    /// Parses and checks a glTF held in memory; `path` names it in
+    /// messages. Relative URIs resolve in `dir` (None: in-memory, only the
+    /// GLB chunk and data URIs can hold buffers).
+    pub fn from_bytes(
+        path: &Path,
+        dir: Option<&Path>,
+        bytes: Vec<u8>,
+        warnings: &mut Warnings,
+    ) -> Result<GltfFile, GltfError> {
+        let err = |pointer: &str, message: String, hint: &str| {
+            GltfError::new(path, pointer, message, hint)
+        };
+        if bytes.len() as u64 > MAX_GLTF_BYTES {
+            return Err(err(
+                "",
+                format!("{} bytes; weft reads at most {MAX_GLTF_BYTES}", bytes.len()),
+                "split the scene",
+            ));
+        }
         let (json_bytes, bin) = if bytes.starts_with(b"glTF") {
-            let glb = gltf::binary::Glb::from_slice(&bytes).map_err(|e| {
+            let (json, bin) = glb_chunks(&bytes).map_err(|e| {
                 err(
                     "",
                     format!("not a valid GLB container: {e}"),
                     "re-export the file; a GLB is a 12-byte header, a JSON chunk and an optional BIN chunk",
                 )
             })?;
-            (glb.json.into_owned(), glb.bin.map(|b| b.into_owned()))
+            (json.to_vec(), bin.map(<[u8]>::to_vec))
         } else {
             (bytes, None)
         };
@@ -115,10 +135,10 @@ impl GltfFile {
         check_extensions(&root, path, warnings)?;
         validate(&root, path)?;
         let document = gltf::Document::from_json_without_validation(root);
-        let buffers = load_buffers(&document, path, &dir, bin)?;
+        let buffers = load_buffers(&document, path, dir, bin)?;
         Ok(GltfFile {
             path: path.to_path_buf(),
-            dir,
+            dir: dir.map_or_else(PathBuf::new, Path::to_path_buf),
             document,
             buffers,
         })
@@ -127,6 +147,50 @@ impl GltfFile {
     pub fn error(&self, pointer: &str, message: String, hint: &str) -> GltfError {
         GltfError::new(&self.path, pointer, message, hint)
     }
+}
+
+/// A GLB's JSON chunk and BIN chunk (glTF 2.0 § 4.4), every length checked
+/// against the bytes there are (gltf 1.4's own reader underflows on some
+/// lengths).
+fn glb_chunks(bytes: &[u8]) -> Result<(&[u8], Option<&[u8]>), String> {
+    let u32_at = |at: usize| -> Option<usize> {
+        let b = bytes.get(at..at + 4)?;
+        Some(u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as usize)
+    };
+    let version = u32_at(4).ok_or("a truncated header")?;
+    if version != 2 {
+        return Err(format!("GLB version {version}; weft reads 2"));
+    }
+    let length = u32_at(8).ok_or("a truncated header")?;
+    if length > bytes.len() || length < 20 {
+        return Err(format!(
+            "the header's length {length} does not match the file's {} bytes",
+            bytes.len()
+        ));
+    }
+    let body = &bytes[..length];
+    let chunk = |at: usize| -> Result<Option<(&[u8], &[u8], usize)>, String> {
+        if at >= body.len() {
+            return Ok(None);
+        }
+        let len = u32_at(at)
+            .filter(|_| at + 8 <= body.len())
+            .ok_or("a truncated chunk header")?;
+        let data = body
+            .get(at + 8..)
+            .and_then(|rest| rest.get(..len))
+            .ok_or_else(|| format!("a chunk of {len} bytes runs past the file"))?;
+        Ok(Some((&body[at + 4..at + 8], data, at + 8 + len)))
+    };
+    let (kind, json, next) = chunk(12)?.ok_or("no JSON chunk")?;
+    if kind != b"JSON" {
+        return Err("the first chunk is not JSON".into());
+    }
+    let bin = match chunk(next.next_multiple_of(4))? {
+        Some((kind, data, _)) if kind == b"BIN\0" => Some(data),
+        _ => None,
+    };
+    Ok((json, bin))
 }
 
 /// The glTF schema's checks (indices in range, required fields, enums).
@@ -297,7 +361,7 @@ pub fn resolve_relative_uri(dir: &Path, uri: &str) -> Result<PathBuf, String> {
 fn load_buffers(
     document: &gltf::Document,
     path: &Path,
-    dir: &Path,
+    dir: Option<&Path>,
     mut bin: Option<Vec<u8>>,
 ) -> Result<Vec<Vec<u8>>, GltfError> {
     let declared: u64 = document.buffers().map(|b| b.length() as u64).sum();
@@ -353,6 +417,12 @@ fn load_buffers(
                     ));
                 }
                 None => {
+                    let dir = dir.ok_or_else(|| {
+                        err(
+                            format!("buffer `{uri}`: an in-memory glTF cannot name files"),
+                            "embed the buffer (GLB or a data URI)",
+                        )
+                    })?;
                     let file = resolve_relative_uri(dir, uri).map_err(|e| {
                         err(
                             format!("buffer `{uri}`: {e}"),
