@@ -140,7 +140,8 @@ pub struct MaterialMetadata {
     /// Measured cost and error per tier. Never written by the compiler (its
     /// output is deterministic); attached at load time from
     /// `<generated>/reports/<name>.measurements.json` by [`MaterialMetadata::attach_measurements`].
-    /// Only with the crate feature `measurements` (a reader without it ignores the field).
+    // Only with the crate feature `measurements` (a reader without it
+    // ignores the field).
     #[cfg(feature = "measurements")]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub measurements: Option<Measurements>,
