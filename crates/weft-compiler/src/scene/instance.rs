@@ -52,14 +52,10 @@ fn encoded(
 ) -> Option<(ConstValue, Value)> {
     let value = encoding.value(upload).ok()?;
     let bytes = uniform::encode(ty, &value).ok()?;
-    let words = bytes.chunks_exact(4).map(|w| [w[0], w[1], w[2], w[3]]);
+    let mut words = bytes.chunks_exact(4).map(|w| [w[0], w[1], w[2], w[3]]);
     let constant = match ty {
-        UniformType::Scalar(ScalarType::I32) => {
-            ConstValue::I32(i32::from_le_bytes(words.clone().next()?))
-        }
-        UniformType::Scalar(ScalarType::U32) => {
-            ConstValue::U32(u32::from_le_bytes(words.clone().next()?))
-        }
+        UniformType::Scalar(ScalarType::I32) => ConstValue::I32(i32::from_le_bytes(words.next()?)),
+        UniformType::Scalar(ScalarType::U32) => ConstValue::U32(u32::from_le_bytes(words.next()?)),
         _ => ConstValue::F32(words.map(f32::from_le_bytes).collect()),
     };
     Some((constant, value.to_json()))
@@ -194,4 +190,41 @@ pub fn model_matrix(t: &weft_front::scene::model::Transform) -> [f32; 16] {
     m[14] = t.translation[2] as f32;
     m[15] = 1.0;
     m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The folded constant is what the encoder's bytes hold (the f32 the
+    /// runtime uploads), the JSON the value as uploaded before rounding.
+    #[test]
+    fn folded_constants_are_the_encoders_bytes() {
+        let (c, json) = encoded(
+            &UniformType::vec_f32(4),
+            MemberEncoding::Color,
+            &Upload::Color {
+                edited: vec![0.5, 0.0, 1.0, 0.25],
+                hdr: false,
+            },
+        )
+        .unwrap();
+        // sRGB 0.5 is linear 0.21404114048223255, f32 bits 0x3E5B2D9A.
+        assert_eq!(
+            c,
+            ConstValue::F32(vec![f32::from_bits(0x3E5B_2D9A), 0.0, 1.0, 0.25])
+        );
+        assert_eq!(json, json!([0.21404114048223255, 0.0, 1.0, 0.25]));
+        let (c, json) = encoded(
+            &UniformType::U32,
+            MemberEncoding::BoolU32,
+            &Upload::Bool(true),
+        )
+        .unwrap();
+        assert_eq!((c, json), (ConstValue::U32(1), json!(1)));
+        let (c, json) = encoded(&UniformType::I32, MemberEncoding::I32, &Upload::Int(-3)).unwrap();
+        assert_eq!((c, json), (ConstValue::I32(-3), json!(-3)));
+        // A value of the wrong kind folds nothing.
+        assert!(encoded(&UniformType::F32, MemberEncoding::F32, &Upload::Bool(true)).is_none());
+    }
 }
