@@ -314,18 +314,6 @@ impl<'de> Deserialize<'de> for UniformType {
     }
 }
 
-impl PartialEq<str> for UniformType {
-    fn eq(&self, other: &str) -> bool {
-        parse_type(other).is_some_and(|t| t == *self)
-    }
-}
-
-impl PartialEq<&str> for UniformType {
-    fn eq(&self, other: &&str) -> bool {
-        *self == **other
-    }
-}
-
 /// What a texture's tiling member (`texture.tiling_member`) holds while
 /// unset: tiling (1, 1), offset (0, 0).
 pub const TILING_OFFSET_DEFAULT: [f64; 4] = [1.0, 1.0, 0.0, 0.0];
