@@ -212,7 +212,9 @@ pub fn variants(m: &MaterialMetadata) -> String {
                 let textures = s
                     .bindings
                     .iter()
-                    .filter(|b| b.group == 1 && b.parameter.is_some())
+                    .filter(|b| {
+                        b.group == weft_meta::engine::MATERIAL_GROUP && b.parameter.is_some()
+                    })
                     .count();
                 let files: usize = s.all_files().count();
                 let ubo = s

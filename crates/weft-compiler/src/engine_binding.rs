@@ -16,8 +16,8 @@ use weft_meta::{
     LanguageConventions, ResourceFile, SamplerBinding, SamplerBindingType,
 };
 
-pub const FRAME_GROUP: u32 = 0;
-pub const OBJECT_GROUP: u32 = 2;
+use weft_meta::engine::{self as ids, ENGINE_BINDINGS};
+pub use weft_meta::engine::{FRAME_GROUP, OBJECT_GROUP};
 
 /// The format of the prefiltered environment cube `weft-render` binds.
 pub const ENVIRONMENT_FORMAT: &str = "rgba16float";
@@ -65,18 +65,18 @@ fn resource(id: &str, description: &str, file: Option<ResourceFile>) -> EngineRe
 pub fn engine_resource(name: &str) -> Option<EngineResource> {
     Some(match name {
         "weft_frame" => resource(
-            "frame",
+            ids::FRAME,
             "Per-frame constants: camera, main light, SH ambient, environment mip count, \
              exposure and time (the members' descriptions say what to write). Update once a frame.",
             None,
         ),
         "weft_object" => resource(
-            "object",
+            ids::OBJECT,
             "Per-object transforms (the members' descriptions say what to write).",
             None,
         ),
         "weft_environment" => resource(
-            "environment",
+            ids::ENVIRONMENT,
             "The engine's environment as a GGX-prefiltered radiance cube (linear HDR, any \
              filterable float format; weft-render uses rgba16float), standard cube face order \
              (+x, −x, +y, −y, +z, −z) with WebGPU/Vulkan face orientation. Mip m holds radiance \
@@ -85,12 +85,12 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
             None,
         ),
         "weft_environment_sampler" => resource(
-            "environment_sampler",
+            ids::ENVIRONMENT_SAMPLER,
             "Trilinear, clamp to edge (the sampler entry states it in full).",
             None,
         ),
         "weft_brdf_lut" => resource(
-            "split_sum_lut",
+            ids::SPLIT_SUM_LUT,
             "Split-sum environment BRDF (scale, bias) for GGX with Smith height-correlated \
              visibility: specular = prefiltered × (F0 × scale + bias). Bind the file's texels.",
             Some(ResourceFile {
@@ -111,12 +111,12 @@ pub fn engine_resource(name: &str) -> Option<EngineResource> {
             }),
         ),
         "weft_lut_sampler" => resource(
-            "lut_sampler",
+            ids::LUT_SAMPLER,
             "Bilinear, clamp to edge (the sampler entry states it in full).",
             None,
         ),
         "weft_sheen_lut" => resource(
-            "sheen_albedo_lut",
+            ids::SHEEN_ALBEDO_LUT,
             "Directional albedo E of the Charlie sheen BRDF with sheen colour 1 (velvet's energy \
              compensation). Bind the file's texels.",
             Some(ResourceFile {
@@ -325,16 +325,17 @@ pub fn msl_slots(module: &naga::Module) -> BTreeMap<naga::ResourceBinding, weft_
     map
 }
 
-/// Every group-0 and group-2 binding name has a description (checked by a test).
-pub const ENGINE_BINDING_NAMES: [&str; 7] = [
-    "weft_frame",
-    "weft_environment",
-    "weft_environment_sampler",
-    "weft_brdf_lut",
-    "weft_lut_sampler",
-    "weft_sheen_lut",
-    "weft_object",
-];
+/// Every group-0 and group-2 binding name (`weft_meta::engine::ENGINE_BINDINGS`)
+/// has a description (checked by a test).
+pub const ENGINE_BINDING_NAMES: [&str; ENGINE_BINDINGS.len()] = {
+    let mut names = [""; ENGINE_BINDINGS.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = ENGINE_BINDINGS[i].name;
+        i += 1;
+    }
+    names
+};
 
 #[cfg(test)]
 mod tests {
@@ -342,23 +343,31 @@ mod tests {
 
     #[test]
     fn every_engine_binding_is_described() {
-        for name in ENGINE_BINDING_NAMES {
-            assert!(engine_resource(name).is_some(), "{name}");
+        for b in ENGINE_BINDINGS {
+            let r = engine_resource(b.name).expect(b.name);
+            assert_eq!(r.id, b.id, "{}", b.name);
         }
+        // The WGSL declares exactly weft_meta's (group, binding, name) table.
         let src = crate::compose::ENGINE_INTERFACE;
         let declared = src
             .lines()
             .filter(|l| l.starts_with("@group("))
-            .filter_map(|l| l.split("var").nth(1))
-            .filter_map(|rest| {
+            .map(|l| {
+                let number = |key: &str| -> u32 {
+                    let rest = &l[l.find(key).expect(key) + key.len()..];
+                    rest[..rest.find(')').unwrap()].parse().unwrap()
+                };
+                let rest = l.split("var").nth(1).unwrap();
                 let rest = rest.trim_start_matches(|c| c != ' ').trim();
-                rest.split(':').next().map(|n| n.trim().to_string())
+                let name = rest.split(':').next().unwrap().trim().to_string();
+                (number("@group("), number("@binding("), name)
             })
             .collect::<Vec<_>>();
-        assert_eq!(declared.len(), ENGINE_BINDING_NAMES.len(), "{declared:?}");
-        for name in &declared {
-            assert!(ENGINE_BINDING_NAMES.contains(&name.as_str()), "{name}");
-        }
+        let expected: Vec<(u32, u32, String)> = ENGINE_BINDINGS
+            .iter()
+            .map(|b| (b.group, b.binding, b.name.to_string()))
+            .collect();
+        assert_eq!(declared, expected);
     }
 
     #[test]

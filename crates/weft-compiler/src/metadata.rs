@@ -57,10 +57,9 @@ pub fn parameters(m: &Material, prelude: &Prelude) -> Vec<Parameter> {
                     ParamValue::Vector(v) => v.clone(),
                     _ => vec![1.0; 4],
                 };
-                let conv = |c: f64| if p.hdr { c } else { samples::srgb_to_linear(c) };
                 ColorInfo {
                     hdr: p.hdr,
-                    linear_default: [conv(d[0]), conv(d[1]), conv(d[2]), d[3]],
+                    linear_default: weft_meta::uniform::color_as_uploaded(&d, p.hdr),
                 }
             });
             let texture = match (&p.kind, &p.default) {

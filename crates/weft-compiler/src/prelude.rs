@@ -9,14 +9,15 @@
 use crate::compose::Target;
 use weft_front::model::{Loc, Material, Param, ParamValue};
 use weft_front::samples;
-use weft_meta::{KeywordKind, ParamKind};
+use weft_meta::uniform::TILING_OFFSET_TYPE;
+use weft_meta::{KeywordKind, ParamKind, UniformType};
 
-/// Fixed group-1 bindings before the material's textures.
-pub const MATERIAL_UNIFORM_BINDING: u32 = 0;
-pub const MATERIAL_SAMPLER_BINDING: u32 = 1;
-pub const MATERIAL_CLAMP_SAMPLER_BINDING: u32 = 2;
-pub const FIRST_TEXTURE_BINDING: u32 = 3;
-pub const MATERIAL_GROUP: u32 = 1;
+/// Fixed group-1 bindings before the material's textures (stated once, in
+/// `weft_meta::engine`).
+pub use weft_meta::engine::{
+    FIRST_TEXTURE_BINDING, MATERIAL_CLAMP_SAMPLER_BINDING, MATERIAL_GROUP,
+    MATERIAL_SAMPLER_BINDING, MATERIAL_UNIFORM_BINDING,
+};
 pub const UNIFORM_STRUCT: &str = "WeftMaterial";
 pub const UNIFORM_VAR: &str = "material";
 pub const TIER_OVERRIDE: &str = "WEFT_TIER";
@@ -33,25 +34,16 @@ pub struct Prelude {
 /// A uniform member generated for a parameter.
 pub struct Member {
     pub name: String,
-    pub ty: String,
+    pub ty: UniformType,
     pub param: String,
 }
 
-/// The uniform members in declaration order.
+/// The uniform members in declaration order, each of its kind's type
+/// (`ParamKind::uniform_type`, stated in weft-meta).
 pub fn uniform_members(m: &Material) -> Vec<Member> {
     let mut out = Vec::new();
     for p in &m.params {
-        let ty = match p.kind {
-            ParamKind::Float => Some("f32".to_string()),
-            ParamKind::Int => Some("i32".into()),
-            ParamKind::Bool => Some("u32".into()),
-            ParamKind::Vec2 => Some("vec2<f32>".into()),
-            ParamKind::Vec3 => Some("vec3<f32>".into()),
-            ParamKind::Vec4 | ParamKind::Color => Some("vec4<f32>".into()),
-            ParamKind::Curve => Some(format!("array<vec4<f32>, {}>", p.samples.div_ceil(4))),
-            _ => None,
-        };
-        if let Some(ty) = ty {
+        if let Some(ty) = p.kind.uniform_type(p.samples) {
             out.push(Member {
                 name: p.name.clone(),
                 ty,
@@ -61,7 +53,7 @@ pub fn uniform_members(m: &Material) -> Vec<Member> {
         if p.kind == ParamKind::Texture2d && p.tiling {
             out.push(Member {
                 name: format!("{}_st", p.name),
-                ty: "vec4<f32>".into(),
+                ty: TILING_OFFSET_TYPE,
                 param: p.name.clone(),
             });
         }

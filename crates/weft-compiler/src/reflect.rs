@@ -9,8 +9,8 @@ use naga::valid::ModuleInfo;
 use naga::{AddressSpace, ImageClass, ImageDimension, Module, ShaderStage, TypeInner};
 use weft_meta::{
     Binding, BindingKind, BufferBinding, BufferBindingType, EntryPoint, HlslBinding,
-    MemberEncoding, ParamKind, Stage, TextureBinding, TextureDefault, TextureSampleType,
-    TextureViewDimension, UniformLayout, UniformMember,
+    MemberEncoding, Stage, TextureBinding, TextureDefault, TextureSampleType, TextureViewDimension,
+    UniformLayout, UniformMember, UniformType, uniform::ScalarType,
 };
 
 /// A group-1 texture binding of the variant: the parameter it carries, the
@@ -37,15 +37,10 @@ pub fn member_params(m: &weft_front::Material) -> MemberParams {
         .into_iter()
         .filter_map(|mem| {
             let p = m.param(&mem.param)?;
-            let encoding = match p.kind {
-                _ if mem.name != p.name => MemberEncoding::TilingOffset,
-                ParamKind::Float => MemberEncoding::F32,
-                ParamKind::Int => MemberEncoding::I32,
-                ParamKind::Bool => MemberEncoding::BoolU32,
-                ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 => MemberEncoding::Vector,
-                ParamKind::Color => MemberEncoding::Color,
-                ParamKind::Curve => MemberEncoding::Curve,
-                _ => return None,
+            let encoding = if mem.name != p.name {
+                MemberEncoding::TilingOffset
+            } else {
+                p.kind.encoding()?
             };
             Some((mem.name, (mem.param, encoding)))
         })
@@ -240,48 +235,57 @@ pub fn bindings(
     out
 }
 
-/// WGSL spelling of a type, for metadata.
+/// WGSL spelling of a type, for diagnostics.
 pub fn type_name(module: &Module, ty: naga::Handle<naga::Type>) -> String {
+    match member_type(module, ty) {
+        Some(t) => t.to_string(),
+        None => format!("{:?}", module.types[ty].inner),
+    }
+}
+
+/// A buffer member's type, for metadata (None for what no buffer member
+/// can be: images, samplers, pointers, unnamed structs, 64-bit scalars).
+pub fn member_type(module: &Module, ty: naga::Handle<naga::Type>) -> Option<UniformType> {
     let t = &module.types[ty];
     if let Some(name) = &t.name {
-        return name.clone();
+        return Some(UniformType::Struct(name.clone()));
     }
-    scalar_or_compound(module, &t.inner)
-}
-
-fn scalar_name(s: naga::Scalar) -> String {
-    match (s.kind, s.width) {
-        (naga::ScalarKind::Float, 4) => "f32".into(),
-        (naga::ScalarKind::Float, 2) => "f16".into(),
-        (naga::ScalarKind::Sint, 4) => "i32".into(),
-        (naga::ScalarKind::Uint, 4) => "u32".into(),
-        (naga::ScalarKind::Bool, _) => "bool".into(),
-        (k, w) => format!("{k:?}{}", w * 8).to_lowercase(),
-    }
-}
-
-fn scalar_or_compound(module: &Module, inner: &TypeInner) -> String {
-    match inner {
-        TypeInner::Scalar(s) => scalar_name(*s),
-        TypeInner::Vector { size, scalar } => {
-            format!("vec{}<{}>", *size as u8, scalar_name(*scalar))
-        }
+    Some(match &t.inner {
+        TypeInner::Scalar(s) => UniformType::Scalar(scalar_type(*s)?),
+        TypeInner::Vector { size, scalar } => UniformType::Vector {
+            size: *size as u8,
+            scalar: scalar_type(*scalar)?,
+        },
         TypeInner::Matrix {
             columns,
             rows,
             scalar,
-        } => format!(
-            "mat{}x{}<{}>",
-            *columns as u8,
-            *rows as u8,
-            scalar_name(*scalar)
-        ),
-        TypeInner::Array { base, size, .. } => match size {
-            naga::ArraySize::Constant(n) => format!("array<{}, {n}>", type_name(module, *base)),
-            _ => format!("array<{}>", type_name(module, *base)),
+        } => UniformType::Matrix {
+            columns: *columns as u8,
+            rows: *rows as u8,
+            scalar: scalar_type(*scalar)?,
         },
-        other => format!("{other:?}"),
-    }
+        TypeInner::Array { base, size, .. } => UniformType::Array {
+            element: Box::new(member_type(module, *base)?),
+            count: match size {
+                naga::ArraySize::Constant(n) => Some(n.get()),
+                _ => None,
+            },
+        },
+        TypeInner::Atomic(s) => UniformType::Atomic(scalar_type(*s)?),
+        _ => return None,
+    })
+}
+
+fn scalar_type(s: naga::Scalar) -> Option<ScalarType> {
+    Some(match (s.kind, s.width) {
+        (naga::ScalarKind::Float, 4) => ScalarType::F32,
+        (naga::ScalarKind::Float, 2) => ScalarType::F16,
+        (naga::ScalarKind::Sint, 4) => ScalarType::I32,
+        (naga::ScalarKind::Uint, 4) => ScalarType::U32,
+        (naga::ScalarKind::Bool, _) => ScalarType::Bool,
+        _ => return None,
+    })
 }
 
 /// Layout of the group-1 uniform block, if the variant still has it.
@@ -325,7 +329,11 @@ pub fn struct_layout(
                 let name = m.name.clone().unwrap_or_default();
                 let (parameter, encoding, description) = notes(&name).unwrap_or_default();
                 UniformMember {
-                    ty: type_name(module, m.ty),
+                    // Every type a WGSL struct member can have is one
+                    // (`member_type`); a struct without a name cannot be
+                    // declared in WGSL.
+                    ty: member_type(module, m.ty)
+                        .unwrap_or_else(|| UniformType::Struct(type_name(module, m.ty))),
                     offset: m.offset,
                     size: layouter[m.ty].size,
                     align: layouter[m.ty].alignment.round_up(1),

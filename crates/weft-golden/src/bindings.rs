@@ -16,7 +16,7 @@ pub const MARKER: &str = "bindings";
 /// What a binding carries, for the table's third column.
 fn carries(b: &Binding) -> String {
     if let Some(r) = &b.resource {
-        let what = if b.group == 1 {
+        let what = if b.group == weft_meta::engine::MATERIAL_GROUP {
             "baked table"
         } else {
             "engine"

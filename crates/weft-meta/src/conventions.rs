@@ -6,13 +6,15 @@
 //! docs/engine-interface.md explains them.
 
 use crate::TextureDefault;
+#[cfg(feature = "schema")]
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// The conventions an engine follows to draw what weft draws, beyond the
 /// bindings and pipeline states (docs/engine-interface.md).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Conventions {
     /// The RGBA8 texel of each built-in 1×1 texture (a binding's
     /// `texture.default`, a scene texture's `builtin`), by name: exactly the
@@ -40,7 +42,8 @@ pub const MIP_CHAINS: &str = "A texture parameter's image (`texture.file`) holds
 
 /// The tangent-frame convention (`weft_tangent_frame` in
 /// materials/lib/forward.wgsl, the built-in meshes, `Mesh::compute_tangents`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TangentFrame {
     /// The bitangent the shaders use: `weft_meta::conventions::BITANGENT`,
     /// "w * cross(normal, tangent.xyz), w = -1 if tangent.w < 0 else +1" (the

@@ -1,8 +1,17 @@
 //! Inspector metadata: the JSON an engine's material panel and binding code read.
 //!
-//! This crate is what an engine links. It depends on serde (and schemars, to
-//! publish the JSON Schema) only — never on naga — so a runtime can read
+//! This crate is what an engine links. It depends on serde and serde_json
+//! only — never on naga — so a runtime can read
 //! `generated/<material>/<material>.meta.json` without pulling in a compiler.
+//! It is the bridge between compiler and runtime ([`uniform`]: member types
+//! and the one encoder from parameter values to uniform bytes; [`engine`]:
+//! the engine interface's groups, bindings and resource ids).
+//!
+//! Features (off by default, so an engine compiles neither):
+//! `schema` derives `schemars::JsonSchema` and publishes the JSON Schemas
+//! (`metadata_json_schema`, `scene::scene_metadata_json_schema`); it
+//! implies `measurements`, the bench figures (`Measurements`,
+//! `MaterialMetadata::measurements`, `gpu_model`).
 //!
 //! Versioning ([`version`]): a file states `schema_version` (the major) and
 //! `schema_minor`. Adding optional fields or objects bumps the minor, and
@@ -32,21 +41,26 @@ macro_rules! value_names {
 
 pub mod bake;
 pub mod conventions;
+pub mod engine;
 pub mod files;
+#[cfg(feature = "measurements")]
 pub mod gpu_model;
 pub mod limits;
 pub mod mesh;
 pub mod names;
 pub mod pipeline;
 pub mod scene;
+pub mod uniform;
 pub mod version;
 
 pub use conventions::Conventions;
 pub use limits::DeviceLimits;
 pub use names::{BUILTIN_MESHES, ENGINE_RESOURCE_IDS, VERTEX_INPUTS};
 pub use pipeline::*;
+pub use uniform::{UniformType, UniformValue};
 pub use version::MetaError;
 
+#[cfg(feature = "schema")]
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -65,7 +79,8 @@ pub const SCHEMA_MINOR: u32 = 2;
 pub const ENGINE_INTERFACE_VERSION: u32 = 2;
 
 /// Everything an engine needs to show, bind and draw one material.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct MaterialMetadata {
     /// Major version of the metadata layout (`weft_meta::SCHEMA_VERSION`, currently 4). It
     /// changes when a field is removed or changes meaning: a reader rejects a major it does not
@@ -125,14 +140,19 @@ pub struct MaterialMetadata {
     /// Measured cost and error per tier. Never written by the compiler (its
     /// output is deterministic); attached at load time from
     /// `<generated>/reports/<name>.measurements.json` by [`MaterialMetadata::attach_measurements`].
+    // Only with the crate feature `measurements` (a reader without it
+    // ignores the field).
+    #[cfg(feature = "measurements")]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub measurements: Option<Measurements>,
 }
 
+#[cfg(feature = "measurements")]
 /// Shading cost and accuracy of a material's tiers, measured by
 /// `cargo xtask bench shading` / `weft bench` on one adapter. This is the
 /// content of `generated/reports/<name>.measurements.json`; timings vary by machine.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Measurements {
     /// The material measured.
     pub material: String,
@@ -149,7 +169,7 @@ pub struct Measurements {
     /// Height of the render target the figures were measured at, in pixels.
     pub height: u32,
     /// The built-in mesh the figures were measured on (one of [`BUILTIN_MESHES`]).
-    #[schemars(description = names::measured_mesh_description())]
+    #[cfg_attr(feature = "schema", schemars(description = names::measured_mesh_description()))]
     pub scene: String,
     /// Keywords and parameters: the material's defaults unless stated here.
     pub setup: String,
@@ -157,8 +177,10 @@ pub struct Measurements {
     pub tiers: Vec<TierMeasurement>,
 }
 
+#[cfg(feature = "measurements")]
 /// One tier of [`Measurements`].
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TierMeasurement {
     /// The tier measured (one of the material's `tiers.values`).
     pub tier: String,
@@ -214,8 +236,10 @@ pub struct TierMeasurement {
     pub f32_files: Option<F32FilesCost>,
 }
 
+#[cfg(feature = "measurements")]
 /// The cost of a half-precision variant's f32 files ([`TierMeasurement::f32_files`]).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct F32FilesCost {
     /// Median GPU time of the frame's render pass, ms.
     pub gpu_ms: f64,
@@ -225,7 +249,8 @@ pub struct F32FilesCost {
 }
 
 /// User-facing text in English with an optional Chinese translation.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Text {
     /// English text (always present).
     pub en: String,
@@ -235,7 +260,8 @@ pub struct Text {
 }
 
 /// An inspector section.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Group {
     /// Section id (lower_snake_case) that `parameters[].group` and `keywords[].group` name.
     pub name: String,
@@ -244,7 +270,8 @@ pub struct Group {
 }
 
 /// The value kinds a parameter can have.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum ParamKind {
     /// A number: uniform member `f32` (encoding `f32`).
@@ -319,7 +346,8 @@ impl ParamKind {
 }
 
 /// One inspector parameter.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Parameter {
     /// Parameter name (lower_snake_case): the key in presets and scene values, and the uniform
     /// member's name for uniform-backed kinds.
@@ -379,7 +407,8 @@ pub struct Parameter {
 }
 
 /// Colour details of a `color` parameter.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct ColorInfo {
     /// HDR colours may exceed 1 and are edited in linear space.
     pub hdr: bool,
@@ -388,7 +417,8 @@ pub struct ColorInfo {
 }
 
 /// Built-in 1x1 textures an engine binds when a texture parameter is unset.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum TextureDefault {
     /// (1,1,1,1)
@@ -449,7 +479,8 @@ impl TextureDefault {
 }
 
 /// Details of a `texture2d` or `cube` parameter.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TextureInfo {
     /// The built-in texture bound while the parameter is unset, unless an
     /// entry of `default_when` holds for the variant.
@@ -476,7 +507,8 @@ pub struct TextureInfo {
 }
 
 /// `default` replaces the texture default in variants where `condition` holds.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct ConditionalTextureDefault {
     /// On a static keyword or `tier`.
     pub condition: Condition,
@@ -485,7 +517,8 @@ pub struct ConditionalTextureDefault {
 }
 
 /// A curve keyframe: cubic Hermite between keys, slopes per unit time.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Keyframe {
     /// Position on the curve's axis; strictly increasing along `keyframes`.
     pub time: f64,
@@ -498,7 +531,8 @@ pub struct Keyframe {
 }
 
 /// How a `curve` parameter is edited and baked into the material uniform.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct CurveInfo {
     /// The default curve's keys, times strictly increasing; the curve is constant before the
     /// first and after the last (`weft_meta::bake::eval_curve` evaluates it).
@@ -518,7 +552,8 @@ pub struct CurveInfo {
 /// `vec4<f32>` (sample i in element i / 4, component i % 4), the last
 /// element's unused components zero. The shader interpolates linearly
 /// between neighbouring samples and clamps outside `time_range`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum CurveEncoding {
     /// Named and versioned: a different packing gets a new name.
@@ -526,7 +561,8 @@ pub enum CurveEncoding {
 }
 
 /// One stop of a gradient.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct GradientStop {
     /// Where the stop sits, in [0, 1]; positions never decrease along `stops`.
     pub position: f64,
@@ -535,7 +571,8 @@ pub struct GradientStop {
 }
 
 /// How a `gradient` parameter is edited and baked into its ramp texture.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct GradientInfo {
     /// The default gradient's stops, positions non-decreasing; the colour is constant before
     /// the first and after the last.
@@ -549,7 +586,8 @@ pub struct GradientInfo {
 }
 
 /// The texel encoding of a gradient ramp.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum GradientEncoding {
     /// Texel i holds the gradient at x = (i + 0.5) / width (texel centres):
@@ -562,7 +600,8 @@ pub enum GradientEncoding {
 }
 
 /// A show-if condition on a keyword or a bool parameter.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Condition {
     /// A keyword, `tier`, or a bool parameter.
     pub subject: String,
@@ -573,7 +612,8 @@ pub struct Condition {
 }
 
 /// How a condition compares its subject's current value with `value`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum ConditionOp {
     /// Holds when the subject's value is `value`.
@@ -583,7 +623,8 @@ pub enum ConditionOp {
 }
 
 /// The values a keyword has.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum KeywordKind {
     /// Unity's Toggle: values "off", "on".
@@ -598,7 +639,8 @@ value_names!(KeywordKind {
 });
 
 /// How a keyword's values become compiled code.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum KeywordMode {
     /// One compiled variant per value.
@@ -615,7 +657,8 @@ value_names!(KeywordMode {
 });
 
 /// A keyword: a compile-time switch shown in the inspector.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Keyword {
     /// The WGSL `override` name (UPPER_SNAKE).
     pub name: String,
@@ -642,7 +685,8 @@ pub struct Keyword {
 
 /// The material's quality tiers: the same material at different cost, each tier its own
 /// variant.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Tiers {
     /// Tier names; the WGSL constant `TIER_<NAME>` equals the index.
     pub values: Vec<String>,
@@ -671,7 +715,8 @@ pub struct Tiers {
 }
 
 /// A named set of values for the inspector.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Preset {
     /// Preset id (lower_snake_case), as scene manifests name it.
     pub name: String,
@@ -684,7 +729,8 @@ pub struct Preset {
 
 /// How a pass's output is combined with the colour target; `color_targets[].blend` spells out
 /// the colour and alpha equations.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BlendMode {
     /// No blending: the output replaces the target.
@@ -709,7 +755,8 @@ value_names!(BlendMode {
 
 /// Which faces are culled; which face is front is `primitive.front_face` (counter-clockwise in
 /// WGSL).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum CullMode {
     /// Cull nothing: both faces are drawn.
@@ -728,7 +775,8 @@ value_names!(CullMode {
 
 /// A comparison function (WebGPU `GPUCompareFunction`): the incoming value (a fragment's depth,
 /// or a comparison sampler's reference) against the stored one. Depth 0 is near, 1 far.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum DepthTest {
     /// Always passes.
@@ -762,7 +810,8 @@ value_names!(DepthTest {
 
 /// What a stencil test does to the stored value (WebGPU `GPUStencilOperation`); only the bits
 /// of the write mask change.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum StencilOperation {
     /// Keep the stored value.
@@ -798,7 +847,8 @@ value_names!(StencilOperation {
 /// the same for front and back faces. The test passes when
 /// `(reference & read_mask) compare (stored & read_mask)`; the operation chosen by the
 /// outcome changes the bits of `write_mask`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct StencilRenderState {
     /// The reference value, 0..=255.
     pub reference: u32,
@@ -818,7 +868,8 @@ pub struct StencilRenderState {
 
 /// A pass's render state as the material author wrote it (`[[pass]]`); `primitive`,
 /// `color_targets` and `depth_stencil` are the pipeline state it implies.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct RenderState {
     /// Blend mode of the colour output.
     pub blend: BlendMode,
@@ -838,7 +889,8 @@ pub struct RenderState {
 }
 
 /// How many instances a pass draws.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum InstanceCount {
     /// A fixed number of instances, 1..=4096.
@@ -848,7 +900,8 @@ pub enum InstanceCount {
 }
 
 /// One draw of the mesh: entry points, instance count and pipeline state.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Pass {
     /// Pass name, distinct within the material.
     pub name: String,
@@ -875,21 +928,23 @@ pub struct Pass {
 }
 
 /// A vertex attribute the mesh provides.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct VertexInput {
     /// The input's name: one of [`VERTEX_INPUTS`].
-    #[schemars(description = names::vertex_input_name_description())]
+    #[cfg_attr(feature = "schema", schemars(description = names::vertex_input_name_description()))]
     pub name: String,
     /// Shader location (`@location`), fixed by the engine interface: the input's index in
     /// [`VERTEX_INPUTS`].
-    #[schemars(description = names::vertex_input_location_description())]
+    #[cfg_attr(feature = "schema", schemars(description = names::vertex_input_location_description()))]
     pub location: u32,
     /// WebGPU vertex format name, e.g. `float32x3`.
     pub format: String,
 }
 
 /// One point of the static keyword x tier space.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Variant {
     /// Stable id, also the file stem: `<tier>.<keyword>-<value>...` (lower case).
     pub id: String,
@@ -911,7 +966,8 @@ pub struct Variant {
 }
 
 /// Files and reflection of a canonical (non-alias) variant.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct VariantShader {
     /// Language -> files (paths relative to the metadata file).
     pub files: BTreeMap<String, Vec<ShaderFile>>,
@@ -954,7 +1010,8 @@ impl VariantShader {
 }
 
 /// One emitted shader file.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct ShaderFile {
     /// File name, relative to the folder of the metadata file.
     pub path: String,
@@ -972,7 +1029,8 @@ pub struct ShaderFile {
 }
 
 /// A shader stage.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Stage {
     /// The vertex stage.
@@ -984,7 +1042,8 @@ pub enum Stage {
 }
 
 /// An entry point of a shader module.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct EntryPoint {
     /// The entry point's function name.
     pub name: String,
@@ -994,7 +1053,8 @@ pub struct EntryPoint {
 
 /// A WGSL `override` left in the WGSL output: a `constant`-mode keyword, set when the engine
 /// creates the pipeline.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct PipelineConstant {
     /// The WGSL `override` (a keyword's name).
     pub name: String,
@@ -1011,7 +1071,8 @@ pub struct PipelineConstant {
 }
 
 /// What a binding holds: the WGSL type of its global.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BindingKind {
     /// A uniform buffer, `var<uniform>` (details in `buffer`).
@@ -1035,7 +1096,8 @@ pub enum BindingKind {
 }
 
 /// One resource binding of a variant, with its layout entry in full.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct Binding {
     /// The WGSL `@group` (Vulkan descriptor set; HLSL register space): 0 frame, 1 material, 2
     /// object.
@@ -1074,7 +1136,8 @@ pub struct Binding {
 }
 
 /// Where a binding lives in the HLSL output (see docs/hlsl-registers.md).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct HlslBinding {
     /// `b3`, `t2`, … For samplers: the sampler-index buffer's register.
     pub register: String,
@@ -1088,7 +1151,8 @@ pub struct HlslBinding {
 
 /// A buffer struct's layout by WGSL's uniform-buffer rules (naga's layouter;
 /// std140-compatible).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct UniformLayout {
     /// The WGSL struct's name (`WeftFrame`, `WeftMaterial`, `WeftObject`).
     pub struct_name: String,
@@ -1101,13 +1165,15 @@ pub struct UniformLayout {
 }
 
 /// One member of a buffer struct.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct UniformMember {
     /// The member's name in the WGSL struct.
     pub name: String,
     /// WGSL type, e.g. `vec4<f32>`, `array<vec4<f32>, 4>`. Matrices are
     /// column-major; `vec3` members occupy 12 bytes at a 16-byte alignment.
-    pub ty: String,
+    #[cfg_attr(feature = "schema", schemars(with = "String"))]
+    pub ty: UniformType,
     /// Byte offset from the start of the buffer.
     pub offset: u32,
     /// Size in bytes (arrays: element stride × count).
@@ -1126,7 +1192,8 @@ pub struct UniformMember {
 }
 
 /// How a parameter's value is written into its uniform member.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum MemberEncoding {
     /// `float`: the value as f32.
@@ -1155,6 +1222,7 @@ impl MaterialMetadata {
             .filter(|p| variant.passes.contains(&p.name))
     }
 
+    #[cfg(feature = "measurements")]
     /// Where measurements of the material whose metadata is at `meta_path`
     /// (`<generated>/<name>/<name>.meta.json`) live: `<generated>/reports/<name>.measurements.json`.
     pub fn measurements_path(meta_path: &std::path::Path, name: &str) -> std::path::PathBuf {
@@ -1167,6 +1235,7 @@ impl MaterialMetadata {
             .join(format!("{name}.measurements.json"))
     }
 
+    #[cfg(feature = "measurements")]
     /// Reads [`Measurements`] from [`MaterialMetadata::measurements_path`] into
     /// `measurements`. Ok(false) when there is no report; an error when there
     /// is one that does not parse.
@@ -1193,6 +1262,7 @@ impl MaterialMetadata {
     }
 }
 
+#[cfg(feature = "schema")]
 /// The JSON Schema of [`MaterialMetadata`], pretty-printed.
 pub fn metadata_json_schema() -> String {
     let schema = schemars::schema_for!(MaterialMetadata);

@@ -2,6 +2,7 @@
 //! build time, and the raised limits a material declares (`[limits]` in its
 //! TOML), which its metadata states so that an engine requests them.
 
+#[cfg(feature = "schema")]
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -81,7 +82,8 @@ pub fn limit_spec(key: &str) -> Option<&'static LimitSpec> {
 /// (and WebGPU's defaults for the rest); an engine must request at least
 /// these values when it creates the device. A limit not listed is WebGPU's
 /// default.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct DeviceLimits {
     /// WebGPU `maxBindGroups` (default 4): bind groups a pipeline layout may have.
     #[serde(default, skip_serializing_if = "Option::is_none")]

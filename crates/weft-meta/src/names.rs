@@ -44,19 +44,13 @@ pub const VERTEX_INPUTS: [(&str, &str); 6] = [
 ];
 
 /// The `resource.id`s of the engine interface's group-0 and group-2
-/// bindings, by (group, binding). A material's baked table (`[tables]`,
-/// group 1) has the id `<material>.<table>` instead.
-pub const ENGINE_RESOURCE_IDS: [&str; 7] = [
-    "frame",
-    "environment",
-    "environment_sampler",
-    "split_sum_lut",
-    "lut_sampler",
-    "sheen_albedo_lut",
-    "object",
-];
+/// bindings, by (group, binding) ([`crate::engine::ENGINE_BINDINGS`]). A
+/// material's baked table (`[tables]`, group 1) has the id
+/// `<material>.<table>` instead.
+pub const ENGINE_RESOURCE_IDS: [&str; 7] = crate::engine::ENGINE_RESOURCE_IDS;
 
 /// "`a`, `b` or `c`": a list of names as the schema descriptions write it.
+#[cfg(feature = "schema")]
 pub(crate) fn one_of(names: &[&str]) -> String {
     let quoted: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
     match quoted.split_last() {
@@ -69,6 +63,7 @@ pub(crate) fn one_of(names: &[&str]) -> String {
 // Schema descriptions generated from the lists above (schemars copies them
 // into `generated/*.schema.json` in place of the fields' doc comments).
 
+#[cfg(feature = "schema")]
 pub(crate) fn mesh_description() -> String {
     format!(
         "The built-in mesh to draw (docs/scenes.md): {}.",
@@ -76,6 +71,7 @@ pub(crate) fn mesh_description() -> String {
     )
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn measured_mesh_description() -> String {
     format!(
         "The built-in mesh the figures were measured on: {}.",
@@ -83,19 +79,23 @@ pub(crate) fn measured_mesh_description() -> String {
     )
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn tier_built_description() -> String {
     format!("The tier built (after `{AUTO_TIER}` was decided).")
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn tier_choice_description() -> String {
     format!("How `tier = \"{AUTO_TIER}\"` was decided; absent for a tier named in the manifest.")
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn vertex_input_name_description() -> String {
     let names: Vec<&str> = VERTEX_INPUTS.iter().map(|(n, _)| *n).collect();
     format!("The input's name: {}.", one_of(&names))
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn vertex_input_location_description() -> String {
     let locations: Vec<String> = VERTEX_INPUTS
         .iter()
@@ -108,6 +108,7 @@ pub(crate) fn vertex_input_location_description() -> String {
     )
 }
 
+#[cfg(feature = "schema")]
 pub(crate) fn engine_resource_id_description() -> String {
     format!(
         "Stable name: {} for the engine interface's bindings (groups 0 and 2), or \
@@ -116,7 +117,7 @@ pub(crate) fn engine_resource_id_description() -> String {
     )
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "schema"))]
 mod tests {
     use super::*;
     use crate::*;

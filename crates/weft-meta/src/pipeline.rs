@@ -9,13 +9,15 @@
 //! Metal and GL (docs/engine-interface.md has the table).
 
 use crate::{CullMode, DepthTest, StencilOperation, TextureDefault, UniformLayout};
+#[cfg(feature = "schema")]
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 // ---------------------------------------------------------------- passes
 
 /// How vertices form primitives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PrimitiveTopology {
     /// Independent triangles: vertices (or indices) 3i, 3i + 1, 3i + 2 form triangle i.
@@ -23,7 +25,8 @@ pub enum PrimitiveTopology {
 }
 
 /// Which winding is the front face.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum FrontFace {
     /// Counter-clockwise.
@@ -33,7 +36,8 @@ pub enum FrontFace {
 }
 
 /// Primitive assembly of a pass.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct PrimitiveState {
     /// How the pass's vertices form primitives.
     pub topology: PrimitiveTopology,
@@ -46,7 +50,8 @@ pub struct PrimitiveState {
 }
 
 /// What a colour output holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum ColorOutput {
     /// rgb: linear scene-referred radiance (HDR, may exceed 1), before exposure
@@ -58,7 +63,8 @@ pub enum ColorOutput {
 
 /// What a blend term is multiplied by (WebGPU `GPUBlendFactor`): src is the fragment output,
 /// dst the target's current value.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BlendFactor {
     /// 0.
@@ -84,7 +90,8 @@ pub enum BlendFactor {
 }
 
 /// How the two weighted terms combine (WebGPU `GPUBlendOperation`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BlendOperation {
     /// src × src_factor + dst × dst_factor.
@@ -100,7 +107,8 @@ pub enum BlendOperation {
 }
 
 /// result = src × src_factor (operation) dst × dst_factor.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct BlendComponent {
     /// Factor the fragment output is multiplied by.
     pub src_factor: BlendFactor,
@@ -111,7 +119,8 @@ pub struct BlendComponent {
 }
 
 /// The colour (rgb) and alpha equations of a blended target.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct BlendState {
     /// Equation of the rgb channels.
     pub color: BlendComponent,
@@ -120,7 +129,8 @@ pub struct BlendState {
 }
 
 /// A channel of a colour target's write mask.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum ColorChannel {
     /// The red channel.
@@ -134,7 +144,8 @@ pub enum ColorChannel {
 }
 
 /// One colour attachment of a pass.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct ColorTarget {
     /// The fragment output location.
     pub location: u32,
@@ -161,7 +172,8 @@ pub struct ColorTarget {
 pub const DEPTH_STENCIL_FORMAT: &str = "depth24plus_stencil8";
 
 /// The stencil test and operations of one face (WebGPU `GPUStencilFaceState`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct StencilFaceState {
     /// Passes when `(stencil_reference & stencil_read_mask) compare (stored & stencil_read_mask)`.
     pub compare: DepthTest,
@@ -177,7 +189,8 @@ pub struct StencilFaceState {
 /// and the stencil reference the engine sets while drawing the pass). A pass that neither
 /// tests nor writes depth has `depth_compare: always` and no depth write; one without stencil
 /// has `always`/`keep` faces and write mask 0.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct DepthStencilState {
     /// `depth24plus_stencil8` ([`DEPTH_STENCIL_FORMAT`]) for every pass.
     pub format: String,
@@ -207,7 +220,8 @@ pub struct DepthStencilState {
 // ---------------------------------------------------------------- bindings
 
 /// A buffer layout entry's type (WebGPU `GPUBufferBindingType`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BufferBindingType {
     /// Uniform buffer (`var<uniform>`).
@@ -219,7 +233,8 @@ pub enum BufferBindingType {
 }
 
 /// A buffer binding's layout entry and the buffer's contents.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct BufferBinding {
     /// Buffer type of the layout entry.
     #[serde(rename = "type")]
@@ -234,7 +249,8 @@ pub struct BufferBinding {
 }
 
 /// A texture layout entry's sample type (WebGPU `GPUTextureSampleType`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum TextureSampleType {
     /// Filterable float (bind with a filtering sampler).
@@ -250,7 +266,8 @@ pub enum TextureSampleType {
 }
 
 /// A texture layout entry's view dimension (WebGPU `GPUTextureViewDimension`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum TextureViewDimension {
     /// 1-D texture.
@@ -272,7 +289,8 @@ pub enum TextureViewDimension {
 }
 
 /// A texture binding's layout entry and what to put in it.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TextureBinding {
     /// Sample type of the layout entry.
     pub sample_type: TextureSampleType,
@@ -296,7 +314,8 @@ pub struct TextureBinding {
 }
 
 /// A sampler layout entry's type (WebGPU `GPUSamplerBindingType`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum SamplerBindingType {
     /// May filter linearly; pairs with filterable float textures.
@@ -308,7 +327,8 @@ pub enum SamplerBindingType {
 }
 
 /// How neighbouring texels (or mip levels) are combined.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum FilterMode {
     /// The nearest texel (mip level).
@@ -318,7 +338,8 @@ pub enum FilterMode {
 }
 
 /// What sampling outside [0, 1] reads.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum AddressMode {
     /// Coordinates are clamped: the edge texels extend outward.
@@ -330,7 +351,8 @@ pub enum AddressMode {
 }
 
 /// A sampler binding's layout entry and the sampler object to create for it.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SamplerBinding {
     /// Sampler type of the layout entry.
     pub binding_type: SamplerBindingType,
@@ -359,11 +381,12 @@ pub struct SamplerBinding {
 
 /// The data a binding carries that is not a material parameter: engine data (groups 0 and
 /// 2) or a material's baked table (`[tables]`, group 1).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct EngineResource {
     /// Stable name: one of [`crate::ENGINE_RESOURCE_IDS`] for the engine interface's bindings
     /// (groups 0 and 2), or `<material>.<table>` for a material's baked table (group 1).
-    #[schemars(description = crate::names::engine_resource_id_description())]
+    #[cfg_attr(feature = "schema", schemars(description = crate::names::engine_resource_id_description()))]
     pub id: String,
     /// What the data is and how to fill it.
     pub description: String,
@@ -375,7 +398,8 @@ pub struct EngineResource {
 /// A data file weft writes for an engine to bind: a lookup table, a
 /// material's baked table (`[tables]`) or a texture parameter's image
 /// (`file`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct ResourceFile {
     /// Relative to the library root (the folder holding
     /// `metadata.schema.json` and `luts/`): material metadata lives one folder
@@ -409,7 +433,8 @@ pub struct ResourceFile {
 
 /// The mip chain an engine builds for a texture file
 /// (`weft_meta::bake::rgba8_mip_chain` builds it exactly).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct MipChain {
     /// Levels to create the texture with, level 0 being the file:
     /// floor(log2(max(width, height))) + 1, down to 1×1.
@@ -443,7 +468,8 @@ impl MipChain {
 // ---------------------------------------------------------------- GLSL
 
 /// A (group, binding) pair of the WGSL interface.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct BindingRef {
     /// The WGSL `@group`.
     pub group: u32,
@@ -452,7 +478,8 @@ pub struct BindingRef {
 }
 
 /// A GLSL uniform block and its binding point (`layout(std140, binding = N)`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct GlslUniformBlock {
     /// The block name (`glGetUniformBlockIndex`).
     pub block: String,
@@ -464,7 +491,8 @@ pub struct GlslUniformBlock {
 
 /// A GLSL combined image-sampler uniform and its texture unit
 /// (`layout(binding = N) uniform sampler2D …`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct GlslSampler {
     /// The uniform's name in the file.
     pub name: String,
@@ -482,7 +510,8 @@ pub struct GlslSampler {
 
 /// How a GL engine binds one GLSL file. Binding points and units are the
 /// same in every stage's file of one variant, so one program can link them.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct GlslReflection {
     /// Each uniform block of the file with its binding point.
     pub uniform_blocks: Vec<GlslUniformBlock>,
@@ -493,7 +522,8 @@ pub struct GlslReflection {
 // ---------------------------------------------------------------- MSL
 
 /// The argument table a Metal resource lives in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum MslSlotKind {
     /// `[[buffer(n)]]`: set with `setVertexBuffer`/`setFragmentBuffer`.
@@ -507,7 +537,8 @@ pub enum MslSlotKind {
 /// Where a binding lives in the MSL output; the same index in every stage.
 /// Indices are dense per table in (group, binding) order, so vertex buffers
 /// are free from index 16 up (`languages.msl.notes`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct MslBinding {
     /// The argument table the resource lives in.
     pub kind: MslSlotKind,
@@ -519,7 +550,8 @@ pub struct MslBinding {
 // ---------------------------------------------------------------- languages
 
 /// Which way clip-space +y points in a language's vertex output.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum ClipSpaceY {
     /// +y is the top of the picture (WebGPU, D3D, Metal).
@@ -530,7 +562,8 @@ pub enum ClipSpaceY {
 }
 
 /// The clip-space depth range of a language's vertex output.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum DepthRange {
     /// Clip-space z in [0, w].
@@ -540,7 +573,8 @@ pub enum DepthRange {
 }
 
 /// How `constant`-mode keywords are chosen in one language.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum ConstantKeywords {
     /// Pipeline-overridable constants (`pipeline_constants`).
@@ -551,7 +585,8 @@ pub enum ConstantKeywords {
 
 /// The conventions of one emitted language: how to draw its files so that
 /// the picture matches the WGSL drawn through WebGPU.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct LanguageConventions {
     /// Direction of clip-space +y in this language's vertex output.
     pub clip_space_y: ClipSpaceY,

@@ -9,6 +9,7 @@
 
 pub use crate::names::{AUTO_TIER, BUILTIN_MESHES};
 use crate::{Pass, TextureDefault, VariantShader};
+#[cfg(feature = "schema")]
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -50,7 +51,8 @@ pub const DEFAULT_GPU_COST_FAMILY: &str = "navi21";
 
 /// Everything an engine needs to draw one scene built by `weft build --scene`: the content of
 /// `<scene>.scene.json`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneMetadata {
     /// Major version of the scene metadata layout (`weft_meta::scene::SCENE_SCHEMA_VERSION`,
     /// currently 3): a reader rejects a major it does not know.
@@ -108,7 +110,8 @@ pub struct SceneMetadata {
 
 /// A mesh's file (`weft_meta::mesh`): exactly one of `path` (a built-in
 /// mesh, in the library) and `file` (a mesh the scene carries, from glTF).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneMesh {
     /// A built-in mesh: relative to the library root (two folders above
     /// the scene metadata), `meshes/<name>.mesh`, written by `cargo xtask
@@ -133,7 +136,8 @@ pub struct SceneMesh {
 
 /// The engine features a scene provides. Engine interface v1: group 0 is
 /// always bound in full; a feature that is off is never read by the scene's shaders.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneFeatures {
     /// Prefiltered environment cube (specular image-based lighting).
     pub environment: bool,
@@ -144,7 +148,8 @@ pub struct SceneFeatures {
 }
 
 /// The camera for previews and tests: perspective, +y up.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneCamera {
     /// Eye position in world space.
     pub position: [f64; 3],
@@ -156,7 +161,8 @@ pub struct SceneCamera {
 
 /// The main directional light: `weft_frame.light_direction` (normalised)
 /// and `weft_frame.light_color`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneLight {
     /// From the surface towards the light, world space (normalise it).
     pub direction: [f64; 3],
@@ -192,7 +198,8 @@ impl SceneMetadata {
 }
 
 /// One specialised shader.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneShader {
     /// `<material>.<first 12 hex digits of the WGSL's SHA-256>`; also the file stem.
     pub id: String,
@@ -205,7 +212,8 @@ pub struct SceneShader {
 }
 
 /// One drawable instance.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneInstance {
     /// Instance name, unique in the scene.
     pub name: String,
@@ -215,7 +223,7 @@ pub struct SceneInstance {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub preset: Option<String>,
     /// The tier built (after [`AUTO_TIER`] was decided).
-    #[schemars(description = crate::names::tier_built_description())]
+    #[cfg_attr(feature = "schema", schemars(description = crate::names::tier_built_description()))]
     pub tier: String,
     /// Every keyword's value (static and constant mode).
     pub keywords: BTreeMap<String, String>,
@@ -239,18 +247,19 @@ pub struct SceneInstance {
     /// Passes with their render state, in the material's order.
     pub passes: Vec<Pass>,
     /// The built-in mesh to draw: one of [`BUILTIN_MESHES`].
-    #[schemars(description = crate::names::mesh_description())]
+    #[cfg_attr(feature = "schema", schemars(description = crate::names::mesh_description()))]
     pub mesh: String,
     /// Placement in world space (`transform.model` is the matrix to use).
     pub transform: SceneTransform,
     /// How `tier = "auto"` ([`AUTO_TIER`]) was decided; absent for a tier named in the manifest.
-    #[schemars(description = crate::names::tier_choice_description())]
+    #[cfg_attr(feature = "schema", schemars(description = crate::names::tier_choice_description()))]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tier_choice: Option<TierChoice>,
 }
 
 /// A texture to bind for a material texture binding.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneTexture {
     /// The material parameter (`texture2d`, `cube` or `gradient`) this texture carries.
     pub parameter: String,
@@ -273,7 +282,8 @@ pub struct SceneTexture {
 
 /// An instance's placement in world space: `model` = translation × rotation (Z · Y · X) ×
 /// scale.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneTransform {
     /// World-space position of the object's origin (x, y, z).
     pub translation: [f64; 3],
@@ -286,7 +296,8 @@ pub struct SceneTransform {
 }
 
 /// The record of an automatic tier choice.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TierChoice {
     /// The largest mean FLIP against the reference tier the choice may accept, in (0, 1].
     pub error_budget: f64,
@@ -305,7 +316,8 @@ pub struct TierChoice {
 }
 
 /// One tier considered by an automatic choice.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TierCandidate {
     /// The tier's name.
     pub tier: String,
@@ -325,7 +337,8 @@ pub struct TierCandidate {
 }
 
 /// A candidate tier's figures from AMD's shader compiler (the GPU model).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct TierGpuFigures {
     /// ISA instructions (each counted once), summed over the passes.
     pub instructions: u64,
@@ -338,6 +351,7 @@ pub struct TierGpuFigures {
     pub executed_cost: f64,
 }
 
+#[cfg(feature = "schema")]
 /// The JSON Schema of [`SceneMetadata`], pretty-printed.
 pub fn scene_metadata_json_schema() -> String {
     let schema = schemars::schema_for!(SceneMetadata);

@@ -14,6 +14,7 @@ use crate::renderer::{ColorFormat, Renderer};
 use crate::resources::GpuEnvironment;
 use std::collections::BTreeMap;
 use std::sync::Arc;
+use weft_meta::engine;
 use weft_meta::{Binding, EngineResource, Pass, ResourceFile, VariantShader};
 use wgpu::util::DeviceExt;
 
@@ -79,8 +80,8 @@ impl Renderer {
         let mut object = None;
         for b in shader.bindings.iter() {
             match engine_resource(b).map(|r| r.id.as_str()) {
-                Some("frame") => frame = Some(self.frame_block(b)?),
-                Some("object") => {
+                Some(engine::FRAME) => frame = Some(self.frame_block(b)?),
+                Some(engine::OBJECT) => {
                     let block = UniformBlock::new(&self.gpu, b, object_member_type)?;
                     let bytes = object_bytes(&block, &resources.model)?;
                     self.gpu.queue.write_buffer(&block.buffer, 0, &bytes);
@@ -118,7 +119,7 @@ impl Renderer {
         let min = shader
             .bindings
             .iter()
-            .find(|b| b.group == 1 && b.resource.is_none())
+            .find(|b| b.group == engine::MATERIAL_GROUP && b.resource.is_none())
             .and_then(|b| b.buffer.as_ref())
             .map_or(0, |buf| buf.min_binding_size);
         let mut contents = bytes.to_vec();
@@ -270,9 +271,9 @@ impl Renderer {
                     .ok_or_else(|| not_interface("has no buffer layout"))
             };
             return match r.id.as_str() {
-                "frame" => block(frame),
-                "object" => block(object),
-                "environment" => Ok(wgpu::BindingResource::TextureView(&res.env.view)),
+                engine::FRAME => block(frame),
+                engine::OBJECT => block(object),
+                engine::ENVIRONMENT => Ok(wgpu::BindingResource::TextureView(&res.env.view)),
                 _ if r.file.is_some() => {
                     let file = lut_file(b, r)?;
                     let view = self.lut_views.get(&file.path).ok_or_else(|| {
@@ -285,7 +286,7 @@ impl Renderer {
                 ))),
             };
         }
-        if b.group != 1 {
+        if b.group != engine::MATERIAL_GROUP {
             return Err(not_interface("names no `resource`"));
         }
         if b.buffer.is_some() {

@@ -8,8 +8,7 @@ use crate::error::{Error, Result};
 use crate::gpu::Gpu;
 use crate::math::{self, Mat4};
 use crate::renderer::RenderOptions;
-use crate::uniform::write_f32s;
-use weft_meta::{Binding, UniformLayout, UniformMember};
+use weft_meta::{Binding, UniformLayout, UniformMember, UniformType, UniformValue};
 
 /// A uniform buffer and the layout its contents are written by.
 #[derive(Clone)]
@@ -27,7 +26,7 @@ impl UniformBlock {
     pub fn new(
         gpu: &Gpu,
         binding: &Binding,
-        known: fn(&str) -> Option<&'static str>,
+        known: fn(&str) -> Option<UniformType>,
     ) -> Result<UniformBlock> {
         let buf = binding.buffer.as_ref().ok_or_else(|| {
             Error::Metadata(format!(
@@ -49,21 +48,21 @@ impl UniformBlock {
 }
 
 /// The WGSL type weft-render writes for each `weft_frame` member.
-pub(crate) fn frame_member_type(name: &str) -> Option<&'static str> {
+pub(crate) fn frame_member_type(name: &str) -> Option<UniformType> {
     Some(match name {
-        "view_proj" | "view" => "mat4x4<f32>",
+        "view_proj" | "view" => UniformType::mat_f32(4, 4),
         "camera_position" | "light_direction" | "light_color" | "params" | "viewport" => {
-            "vec4<f32>"
+            UniformType::vec_f32(4)
         }
-        "sh" => "array<vec4<f32>,9>",
+        "sh" => UniformType::array(UniformType::vec_f32(4), 9),
         _ => return None,
     })
 }
 
 /// The WGSL type weft-render writes for each `weft_object` member.
-pub(crate) fn object_member_type(name: &str) -> Option<&'static str> {
+pub(crate) fn object_member_type(name: &str) -> Option<UniformType> {
     Some(match name {
-        "model" | "normal_matrix" => "mat4x4<f32>",
+        "model" | "normal_matrix" => UniformType::mat_f32(4, 4),
         _ => return None,
     })
 }
@@ -71,7 +70,7 @@ pub(crate) fn object_member_type(name: &str) -> Option<&'static str> {
 fn check_members(
     block: &str,
     layout: &UniformLayout,
-    known: fn(&str) -> Option<&'static str>,
+    known: fn(&str) -> Option<UniformType>,
 ) -> Result<()> {
     for m in &layout.members {
         let Some(ty) = known(&m.name) else {
@@ -83,8 +82,7 @@ fn check_members(
                 weft_meta::ENGINE_INTERFACE_VERSION
             )));
         };
-        let actual: String = m.ty.chars().filter(|c| !c.is_whitespace()).collect();
-        if actual != ty {
+        if m.ty != ty {
             return Err(Error::Metadata(format!(
                 "`{block}` member `{}` has type `{}`; weft-render writes `{ty}`",
                 m.name, m.ty
@@ -94,18 +92,11 @@ fn check_members(
     Ok(())
 }
 
+/// `values` into `m` through weft-meta's encoder (`weft_meta::uniform`).
 fn write_member(bytes: &mut [u8], m: &UniformMember, values: &[f32]) -> Result<()> {
-    if values.len() * 4 != m.size as usize {
-        return Err(Error::Metadata(format!(
-            "member `{}` ({}) is {} bytes; weft-render writes {}",
-            m.name,
-            m.ty,
-            m.size,
-            values.len() * 4
-        )));
-    }
-    let v: Vec<f64> = values.iter().map(|x| f64::from(*x)).collect();
-    write_f32s(bytes, m.offset, &v)
+    let v = UniformValue::F32s(values.iter().map(|x| f64::from(*x)).collect());
+    weft_meta::uniform::write_member(bytes, m, &v)
+        .map_err(|e| Error::Metadata(format!("{e}; weft-render writes {} numbers", values.len())))
 }
 
 fn flat(m: &Mat4) -> Vec<f32> {

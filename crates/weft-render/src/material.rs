@@ -7,15 +7,17 @@
 
 use crate::TextureValue;
 use crate::error::{Error, Result, io_err};
-use crate::uniform::{put, write_f32s};
+use weft_meta::uniform::{
+    ParamValue as Upload, TILING_OFFSET_DEFAULT, TILING_OFFSET_TYPE, write_member,
+};
 // The value types are part of this module's API (`crate::material::Value`, ...).
 pub(crate) use crate::values::{CurveValue, StoredValue, Value};
 use crate::values::{Ranges, default_value, normalise};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use weft_meta::{
-    InstanceCount, KeywordKind, MaterialMetadata, ParamKind, Parameter, Pass, PipelineConstant,
-    UniformLayout, Variant, VariantShader,
+    InstanceCount, KeywordKind, MaterialMetadata, MemberEncoding, ParamKind, Parameter, Pass,
+    PipelineConstant, UniformLayout, UniformMember, UniformType, Variant, VariantShader,
 };
 
 /// A variant an id or a (tier, keywords) selection resolved to.
@@ -409,7 +411,9 @@ impl Material {
         }
     }
 
-    /// The material uniform block packed at the offsets of `layout`.
+    /// The material uniform block packed at the offsets of `layout`: each
+    /// parameter's value through weft-meta's encoder (its kind's member
+    /// type and encoding, `weft_meta::uniform`).
     pub fn uniform_bytes(&self, layout: &UniformLayout) -> Result<Vec<u8>> {
         let mut bytes = vec![0u8; layout.size as usize];
         let member = |name: &str| layout.members.iter().find(|m| m.name == name);
@@ -422,9 +426,10 @@ impl Material {
                     .tiling
                     .get(&p.name)
                     .copied()
-                    .unwrap_or([1.0, 1.0, 0.0, 0.0]);
-                expect_ty(p, &m.ty, "vec4<f32>")?;
-                write_f32s(&mut bytes, m.offset, &st)?;
+                    .unwrap_or(TILING_OFFSET_DEFAULT);
+                expect_ty(p, m, &TILING_OFFSET_TYPE)?;
+                let v = MemberEncoding::TilingOffset.value(&Upload::TilingOffset(st))?;
+                write_member(&mut bytes, m, &v)?;
             }
             let Some(mname) = &p.uniform_member else {
                 continue;
@@ -436,48 +441,37 @@ impl Material {
                 .values
                 .get(&p.name)
                 .ok_or_else(|| Error::Metadata(format!("parameter `{}` has no value", p.name)))?;
-            match (p.kind, value) {
-                (ParamKind::Float, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "f32")?;
-                    write_f32s(&mut bytes, m.offset, &v[..1])?;
+            let mismatch = || {
+                Error::Metadata(format!(
+                    "parameter `{}` ({}) has uniform member `{mname}` of type `{}`",
+                    p.name,
+                    p.kind.name(),
+                    m.ty
+                ))
+            };
+            let (upload, samples) = match (p.kind, value) {
+                (ParamKind::Float, StoredValue::Numbers(v)) => (Upload::Float(v[0]), 0),
+                (ParamKind::Int, StoredValue::Numbers(v)) => (Upload::Int(v[0].round() as i64), 0),
+                (ParamKind::Bool, StoredValue::Numbers(v)) => (Upload::Bool(v[0] != 0.0), 0),
+                (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4, StoredValue::Numbers(v)) => {
+                    (Upload::Vector(v.clone()), 0)
                 }
-                (ParamKind::Int, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "i32")?;
-                    let i = v[0].round() as i32;
-                    put(&mut bytes, m.offset, &i.to_le_bytes())?;
-                }
-                (ParamKind::Bool, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "u32")?;
-                    let u = u32::from(v[0] != 0.0);
-                    put(&mut bytes, m.offset, &u.to_le_bytes())?;
-                }
-                (ParamKind::Vec2, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "vec2<f32>")?;
-                    write_f32s(&mut bytes, m.offset, v)?;
-                }
-                (ParamKind::Vec3, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "vec3<f32>")?;
-                    write_f32s(&mut bytes, m.offset, v)?;
-                }
-                (ParamKind::Vec4 | ParamKind::Color, StoredValue::Numbers(v)) => {
-                    expect_ty(p, &m.ty, "vec4<f32>")?;
-                    write_f32s(&mut bytes, m.offset, v)?;
-                }
+                // Stored linear (`values::normalise`).
+                (ParamKind::Color, StoredValue::Numbers(v)) => (
+                    Upload::LinearColor(v.as_slice().try_into().map_err(|_| mismatch())?),
+                    0,
+                ),
                 (ParamKind::Curve, StoredValue::Curve(samples)) => {
-                    let n = samples.len().div_ceil(4);
-                    expect_ty(p, &m.ty, &format!("array<vec4<f32>, {n}>"))?;
-                    // Packed 4 per vec4, sample i at [i / 4][i % 4]; the tail stays 0.
-                    write_f32s(&mut bytes, m.offset, samples)?;
+                    (Upload::Curve(samples.clone()), samples.len() as u32)
                 }
-                _ => {
-                    return Err(Error::Metadata(format!(
-                        "parameter `{}` ({}) has uniform member `{mname}` of type `{}`",
-                        p.name,
-                        p.kind.name(),
-                        m.ty
-                    )));
-                }
-            }
+                _ => return Err(mismatch()),
+            };
+            let (Some(ty), Some(encoding)) = (p.kind.uniform_type(samples), p.kind.encoding())
+            else {
+                return Err(mismatch());
+            };
+            expect_ty(p, m, &ty)?;
+            write_member(&mut bytes, m, &encoding.value(&upload)?)?;
         }
         Ok(bytes)
     }
@@ -521,14 +515,15 @@ pub(crate) fn constant_default(c: &PipelineConstant) -> Result<f64> {
     }
 }
 
-fn expect_ty(p: &Parameter, actual: &str, expected: &str) -> Result<()> {
-    if actual.replace(' ', "") == expected.replace(' ', "") {
+fn expect_ty(p: &Parameter, m: &UniformMember, expected: &UniformType) -> Result<()> {
+    if m.ty == *expected {
         Ok(())
     } else {
         Err(Error::Metadata(format!(
-            "uniform member of `{}` ({}) has type `{actual}`, expected `{expected}`",
+            "uniform member of `{}` ({}) has type `{}`, expected `{expected}`",
             p.name,
-            p.kind.name()
+            p.kind.name(),
+            m.ty
         )))
     }
 }

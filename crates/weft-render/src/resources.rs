@@ -133,7 +133,10 @@ pub(crate) fn material_texture_views<'a>(
 ) -> Result<BTreeMap<u32, wgpu::TextureView>> {
     let mut views = BTreeMap::new();
     for b in &shader.bindings {
-        if b.group != 1 || b.resource.is_some() || !is_texture_binding(b) {
+        if b.group != weft_meta::engine::MATERIAL_GROUP
+            || b.resource.is_some()
+            || !is_texture_binding(b)
+        {
             continue;
         }
         let label = b.parameter.as_deref().unwrap_or(&b.name);

@@ -347,12 +347,8 @@ pub(crate) fn normalise(p: &Parameter, value: Value, ranges: Ranges) -> Result<S
                         });
                     }
                     check_range(p, &v, ranges)?;
-                    let mut c = [v[0], v[1], v[2], v.get(3).copied().unwrap_or(1.0)];
-                    if !hdr {
-                        for x in &mut c[..3] {
-                            *x = srgb_to_linear(*x);
-                        }
-                    }
+                    // The colour rule of the encoder (weft_meta::uniform).
+                    let c = weft_meta::uniform::color_as_uploaded(&v, hdr);
                     Ok(StoredValue::Numbers(c.to_vec()))
                 }
                 Value::LinearColor(c) => {

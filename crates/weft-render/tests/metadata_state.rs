@@ -224,7 +224,7 @@ fn engine_uniforms_are_written_by_member_name() {
                     let size = buf.layout.size;
                     buf.layout.members.push(UniformMember {
                         name: "wind".into(),
-                        ty: "vec4<f32>".into(),
+                        ty: weft_render::weft_meta::UniformType::vec_f32(4),
                         offset: size,
                         size: 16,
                         align: 16,

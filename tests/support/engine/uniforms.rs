@@ -31,7 +31,8 @@ fn f32s(v: &[f32]) -> Vec<u8> {
 }
 
 fn expect_ty(m: &UniformMember, want: &[&str]) -> Result<(), String> {
-    if want.contains(&m.ty.as_str()) {
+    // The type as the JSON spells it: this engine reads the docs, not weft's encoder.
+    if want.contains(&m.ty.to_string().as_str()) {
         Ok(())
     } else {
         Err(format!(
@@ -164,7 +165,7 @@ pub fn by_member_values(
             .ok_or_else(|| format!("no value for uniform member `{}`", m.name))?;
         let what = format!("member `{}`", m.name);
         let n = numbers(v, &what)?;
-        let data: Vec<u8> = match m.ty.as_str() {
+        let data: Vec<u8> = match m.ty.to_string().as_str() {
             "i32" => (n[0].round() as i32).to_le_bytes().to_vec(),
             "u32" => (n[0].round() as u32).to_le_bytes().to_vec(),
             ty if ty == "f32" || ty.starts_with("vec") || ty.starts_with("array<vec4<f32>") => {

@@ -12,49 +12,53 @@ use weft_front::model::{Material, Param, ParamValue};
 use weft_front::samples;
 use weft_front::scene::model::{ResolvedInstance, SceneFeatures};
 use weft_front::variants::VariantKey;
-use weft_meta::{KeywordKind, ParamKind};
+use weft_meta::uniform::{
+    self, ParamValue as Upload, ScalarType, TILING_OFFSET_DEFAULT, TILING_OFFSET_TYPE,
+};
+use weft_meta::{KeywordKind, MemberEncoding, ParamKind, UniformType};
 
-/// The default texture transform (Unity's `_ST`: scale xy, offset zw).
-const DEFAULT_ST: [f64; 4] = [1.0, 1.0, 0.0, 0.0];
-
-/// The value a uniform member holds for this instance, as uploaded
-/// (colours linear, curves baked), or None for non-uniform parameters.
+/// The value a uniform member holds for this instance, as uploaded (the
+/// JSON of `uniform_values`), and the constant folding puts in its place:
+/// both through weft-meta's encoder (`weft_meta::uniform`), the constant
+/// read back from the very bytes the runtime would upload. None for
+/// parameters without a uniform member.
 fn member_value(p: &Param, v: &ParamValue) -> Option<(ConstValue, Value)> {
-    Some(match (p.kind, v) {
-        (ParamKind::Float, ParamValue::Float(x)) => (ConstValue::F32(vec![*x as f32]), json!(x)),
-        (ParamKind::Int, ParamValue::Int(i)) => {
-            let i = i32::try_from(*i).ok()?;
-            (ConstValue::I32(i), json!(i))
+    let upload = match (p.kind, v) {
+        (ParamKind::Float, ParamValue::Float(x)) => Upload::Float(*x),
+        (ParamKind::Int, ParamValue::Int(i)) => Upload::Int(*i),
+        (ParamKind::Bool, ParamValue::Bool(b)) => Upload::Bool(*b),
+        (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4, ParamValue::Vector(xs)) => {
+            Upload::Vector(xs.clone())
         }
-        (ParamKind::Bool, ParamValue::Bool(b)) => {
-            (ConstValue::U32(u32::from(*b)), json!(u32::from(*b)))
-        }
-        (ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4, ParamValue::Vector(xs)) => (
-            ConstValue::F32(xs.iter().map(|x| *x as f32).collect()),
-            json!(xs),
-        ),
-        (ParamKind::Color, ParamValue::Vector(xs)) => {
-            let c: Vec<f64> = (0..4)
-                .map(|i| {
-                    let x = xs.get(i).copied().unwrap_or(1.0);
-                    if i < 3 && !p.hdr {
-                        samples::srgb_to_linear(x)
-                    } else {
-                        x
-                    }
-                })
-                .collect();
-            (
-                ConstValue::F32(c.iter().map(|x| *x as f32).collect()),
-                json!(c),
-            )
-        }
+        (ParamKind::Color, ParamValue::Vector(xs)) => Upload::Color {
+            edited: xs.clone(),
+            hdr: p.hdr,
+        },
         (ParamKind::Curve, ParamValue::Curve(keys)) => {
-            let s = samples::sample_curve(keys, p.samples);
-            (ConstValue::F32(Vec::new()), json!(s))
+            Upload::Curve(samples::sample_curve(keys, p.samples))
         }
         _ => return None,
-    })
+    };
+    let ty = p.kind.uniform_type(p.samples)?;
+    encoded(&ty, p.kind.encoding()?, &upload)
+}
+
+/// `upload` encoded as a member of type `ty`: the folded constant (from the
+/// bytes) and the value as scene metadata states it.
+fn encoded(
+    ty: &UniformType,
+    encoding: MemberEncoding,
+    upload: &Upload,
+) -> Option<(ConstValue, Value)> {
+    let value = encoding.value(upload).ok()?;
+    let bytes = uniform::encode(ty, &value).ok()?;
+    let mut words = bytes.chunks_exact(4).map(|w| [w[0], w[1], w[2], w[3]]);
+    let constant = match ty {
+        UniformType::Scalar(ScalarType::I32) => ConstValue::I32(i32::from_le_bytes(words.next()?)),
+        UniformType::Scalar(ScalarType::U32) => ConstValue::U32(u32::from_le_bytes(words.next()?)),
+        _ => ConstValue::F32(words.map(f32::from_le_bytes).collect()),
+    };
+    Some((constant, value.to_json()))
 }
 
 /// What one instance folds and what it still uploads.
@@ -117,13 +121,15 @@ pub fn instance_values(
         if let Some(st) = members
             .iter()
             .find(|mem| mem.param == p.name && mem.name != p.name)
+            && let Some((c, json)) = encoded(
+                &TILING_OFFSET_TYPE,
+                MemberEncoding::TilingOffset,
+                &Upload::TilingOffset(TILING_OFFSET_DEFAULT),
+            )
         {
-            uniform.insert(st.name.clone(), json!(DEFAULT_ST));
+            uniform.insert(st.name.clone(), json);
             if !dynamic {
-                fold.members.insert(
-                    st.name.clone(),
-                    ConstValue::F32(DEFAULT_ST.iter().map(|x| *x as f32).collect()),
-                );
+                fold.members.insert(st.name.clone(), c);
             }
         }
         let set = inst.set.get(i).copied().unwrap_or(true);
@@ -228,4 +234,41 @@ pub fn model_matrix(t: &weft_front::scene::model::Transform) -> [f32; 16] {
     m[14] = t.translation[2] as f32;
     m[15] = 1.0;
     m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The folded constant is what the encoder's bytes hold (the f32 the
+    /// runtime uploads), the JSON the value as uploaded before rounding.
+    #[test]
+    fn folded_constants_are_the_encoders_bytes() {
+        let (c, json) = encoded(
+            &UniformType::vec_f32(4),
+            MemberEncoding::Color,
+            &Upload::Color {
+                edited: vec![0.5, 0.0, 1.0, 0.25],
+                hdr: false,
+            },
+        )
+        .unwrap();
+        // sRGB 0.5 is linear 0.21404114048223255, f32 bits 0x3E5B2D9A.
+        assert_eq!(
+            c,
+            ConstValue::F32(vec![f32::from_bits(0x3E5B_2D9A), 0.0, 1.0, 0.25])
+        );
+        assert_eq!(json, json!([0.21404114048223255, 0.0, 1.0, 0.25]));
+        let (c, json) = encoded(
+            &UniformType::U32,
+            MemberEncoding::BoolU32,
+            &Upload::Bool(true),
+        )
+        .unwrap();
+        assert_eq!((c, json), (ConstValue::U32(1), json!(1)));
+        let (c, json) = encoded(&UniformType::I32, MemberEncoding::I32, &Upload::Int(-3)).unwrap();
+        assert_eq!((c, json), (ConstValue::I32(-3), json!(-3)));
+        // A value of the wrong kind folds nothing.
+        assert!(encoded(&UniformType::F32, MemberEncoding::F32, &Upload::Bool(true)).is_none());
+    }
 }
