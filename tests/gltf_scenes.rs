@@ -146,6 +146,19 @@ fn gltf_materials_map_as_documented() {
     );
     // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1.
     assert_eq!(meta.instances.len(), 10);
+    // KHR_materials_variants: the linen variant's stand-ins for both
+    // cushions, built (their shader listed), not drawn by default.
+    let linen = &meta.variants["linen cushions"];
+    assert_eq!(linen.keys().collect::<Vec<_>>(), ["sofa_p4", "sofa_p5"]);
+    for (replaced, stand_in) in linen {
+        assert_eq!(stand_in.material, "standard");
+        assert!(meta.shaders.iter().any(|s| s.id == stand_in.shader));
+        assert_eq!(stand_in.mesh, by_name(replaced).mesh, "the same primitive");
+    }
+    assert!(
+        !meta.variants.contains_key("velvet cushions"),
+        "the default material: no stand-in"
+    );
     // The first directional light, towards it = the node's +Z.
     let light = meta.light.as_ref().unwrap();
     let d = [-0.62f64, 0.55, 0.56];

@@ -96,16 +96,16 @@ fn same_tree(a: &Path, b: &Path) -> Result<bool, String> {
 
 /// One child run: wall time, user + system CPU time, peak RSS (KiB; 0
 /// where unknown), stdout.
-struct Run {
-    wall: Duration,
+pub(crate) struct Run {
+    pub(crate) wall: Duration,
     /// User and system CPU time.
-    cpu: (Duration, Duration),
-    max_rss_kib: u64,
-    stdout: String,
+    pub(crate) cpu: (Duration, Duration),
+    pub(crate) max_rss_kib: u64,
+    pub(crate) stdout: String,
 }
 
 #[cfg(unix)]
-fn run_child(cmd: &mut Command) -> Result<Run, String> {
+pub(crate) fn run_child(cmd: &mut Command) -> Result<Run, String> {
     // Earlier runs' dirty pages are flushed first, not during this one.
     // SAFETY: sync(2) takes no arguments and cannot fail.
     unsafe { libc::sync() };
@@ -150,7 +150,7 @@ fn run_child(cmd: &mut Command) -> Result<Run, String> {
 }
 
 #[cfg(not(unix))]
-fn run_child(cmd: &mut Command) -> Result<Run, String> {
+pub(crate) fn run_child(cmd: &mut Command) -> Result<Run, String> {
     let started = Instant::now();
     let out = cmd
         .stderr(Stdio::inherit())
@@ -229,8 +229,8 @@ impl Row {
     }
 }
 
-fn weft_binary(root: &Path, args: &ScaleArgs) -> Result<PathBuf, String> {
-    if let Some(w) = &args.weft {
+pub(crate) fn weft_binary(root: &Path, given: Option<&PathBuf>) -> Result<PathBuf, String> {
+    if let Some(w) = given {
         return Ok(w.clone());
     }
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
@@ -588,7 +588,7 @@ pub fn bench_scale(root: &Path, args: &ScaleArgs) -> ExitCode {
 }
 
 fn run(root: &Path, args: &ScaleArgs) -> Result<(), String> {
-    let weft = weft_binary(root, args)?;
+    let weft = weft_binary(root, args.weft.as_ref())?;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let command = args.command();
     let work = root.join("target/scale");

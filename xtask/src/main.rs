@@ -9,6 +9,7 @@ use std::process::ExitCode;
 mod bench_compile;
 mod bench_film;
 mod bench_glints;
+mod bench_gltf;
 mod bench_gpu;
 mod bench_gpu_model;
 mod bench_scale;
@@ -145,6 +146,9 @@ enum Bench {
         #[arg(long)]
         write: bool,
     },
+    /// A large glTF scene (100 k triangles, 10 materials by default) built by
+    /// the release `weft build --scene`: wall time and peak memory.
+    Gltf(bench_gltf::GltfArgs),
     /// Every shipped scene, generic library variants vs scene-specialised
     /// shaders: GPU time per frame (interleaved rounds), FLIP between the
     /// images, SPIR-V instructions, shaders/files/bytes, build time.
@@ -224,6 +228,9 @@ fn main() -> ExitCode {
         }
         Command::Textures { check } => textures(&root, check),
         Command::GltfSamples { check } => gltf_samples::gltf_samples(&root, check),
+        Command::Bench {
+            what: Bench::Gltf(args),
+        } => bench_gltf::bench_gltf(&root, &args),
         Command::Bench {
             what: Bench::Compile { runs },
         } => bench_compile(&root, runs.max(1)),

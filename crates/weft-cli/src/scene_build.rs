@@ -43,11 +43,25 @@ pub fn build_scene_command(
     // Only the scene's own folder is replaced: other scenes (and anything
     // else) in `out` stay.
     let prefix = format!("{}/", result.name);
-    let files: std::collections::BTreeMap<String, Vec<u8>> = result
+    let mut files: std::collections::BTreeMap<String, Vec<u8>> = result
         .files
         .iter()
         .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes.clone())))
         .collect();
+    // Self-contained: the baked LUTs the shaders bind ride along at the
+    // path their bindings name (`luts/…`), taken from ./generated when it
+    // has them, else baked. Texture files and meshes are in `files` already.
+    let mut library = std::collections::BTreeMap::new();
+    let generated = Path::new("generated");
+    weft_compiler::library::add_library_files(
+        &mut library,
+        generated.is_dir().then_some(generated),
+    );
+    files.extend(
+        library
+            .into_iter()
+            .filter(|(path, _)| path.starts_with("luts/")),
+    );
     // Same machinery as a library build: `<out>/.<scene>.lock`, atomic swap.
     let dir = out.join(&result.name);
     let inputs = [

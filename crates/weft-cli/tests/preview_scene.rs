@@ -124,3 +124,46 @@ fn scene_preview_errors_are_reported_not_panics() {
     ]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
+
+/// A scene folder carries every file it binds (texture files, LUTs, glTF
+/// meshes): built anywhere, moved elsewhere alone, it still previews — the
+/// character scene binds the face's threshold maps, the glTF scene draws
+/// its own meshes.
+#[test]
+fn a_built_scene_folder_is_self_contained() {
+    for (source, name) in [
+        ("scenes/character_left.scene.toml", "character_left"),
+        ("scenes/gltf/showroom.glb", "showroom"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out");
+        let o = weft(&[
+            "build",
+            "--scene",
+            source,
+            "-o",
+            out.to_str().unwrap(),
+            "-q",
+        ]);
+        assert!(o.status.success(), "{source}: {}", stderr(&o));
+        // Only the scene's folder, somewhere else: no library above it.
+        let moved = dir.path().join("elsewhere").join(name);
+        std::fs::create_dir_all(moved.parent().unwrap()).unwrap();
+        std::fs::rename(out.join(name), &moved).unwrap();
+        assert!(moved.join("luts").is_dir(), "{source}: the LUTs ride along");
+        let png = dir.path().join("scene.png");
+        let o = weft(&[
+            "preview",
+            "--scene-dir",
+            moved.to_str().unwrap(),
+            "-o",
+            png.to_str().unwrap(),
+            "--width",
+            "64",
+            "--height",
+            "48",
+        ]);
+        assert!(o.status.success(), "{source}: {}", stderr(&o));
+        assert_eq!(png_size(&png), (64, 48));
+    }
+}

@@ -56,6 +56,7 @@ fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
             .collect(),
         dynamic_spans: Vec::new(),
         mesh: weft_front::scene::model::InstanceMesh::Builtin(BuiltinMesh::Sphere),
+        variant: None,
         vertex_inputs: Vec::new(),
         vertex_inputs_span: 0..0,
         transform: Transform::default(),

@@ -625,6 +625,7 @@ fn instance_scene(
         languages: meta.languages.clone(),
         conventions: meta.conventions.clone(),
         meshes,
+        variants: BTreeMap::new(),
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),

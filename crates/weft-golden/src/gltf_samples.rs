@@ -515,6 +515,19 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "does not allow",
     );
     case(
+        "variant_mapping_out_of_range",
+        &|v| {
+            v["extensionsUsed"] = json!(["KHR_materials_variants"]);
+            v["extensions"] =
+                json!({ "KHR_materials_variants": { "variants": [ { "name": "a" } ] } });
+            v["meshes"][0]["primitives"][0]["extensions"] = json!({
+                "KHR_materials_variants": { "mappings": [ { "material": 5, "variants": [0] } ] }
+            });
+        },
+        "/meshes/0/primitives/0/extensions/KHR_materials_variants/mappings/0",
+        "does not have",
+    );
+    case(
         "extras_weft_unknown_key",
         &|v| {
             v["materials"][0]["extras"] =
@@ -524,6 +537,56 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
         "unknown key",
     );
     out
+}
+
+/// A large scene for the build-speed bench (`cargo xtask bench gltf`): a
+/// grid of `objects` draped cloths of about `triangles / objects`
+/// triangles each, without tangents (MikkTSpace runs on every one), their
+/// materials cycling through `materials` core-PBR and sheen materials.
+pub fn large(triangles: usize, objects: usize, materials: usize) -> Vec<u8> {
+    let objects = objects.max(1);
+    let per = triangles / objects;
+    // cloth(res) has 2 res² triangles.
+    let res = ((per as f64 / 2.0).sqrt().round() as u32).max(2);
+    let cloth = Mesh::cloth(res);
+    let mut packed = Packed {
+        bin: Vec::new(),
+        views: Vec::new(),
+        accessors: Vec::new(),
+    };
+    let mut meshes = Vec::new();
+    let mut nodes = Vec::new();
+    for i in 0..objects {
+        let prim = packed.primitive(&Prim::from_mesh(&cloth, i % materials.max(1), false), None);
+        meshes.push(json!({ "name": format!("cloth {i}"), "primitives": [prim] }));
+        let (x, z) = ((i % 8) as f32 * 2.5, (i / 8) as f32 * 2.5);
+        nodes.push(json!({ "name": format!("cloth {i}"), "mesh": i, "translation": [x, 0.0, -z] }));
+    }
+    let materials: Vec<Value> = (0..materials.max(1))
+        .map(|k| {
+            let t = k as f32 / materials.max(1) as f32;
+            let mut m = json!({ "name": format!("fabric {k}"),
+                "pbrMetallicRoughness": { "baseColorFactor": [0.2 + 0.6 * t, 0.3, 0.8 - 0.6 * t, 1.0],
+                                          "metallicFactor": 0.0, "roughnessFactor": 0.3 + 0.5 * t } });
+            if k % 2 == 1 {
+                m["extensions"] = json!({ "KHR_materials_sheen": { "sheenColorFactor": [0.5, 0.4, 0.6], "sheenRoughnessFactor": 0.2 + 0.6 * t } });
+            }
+            m
+        })
+        .collect();
+    let json = json!({
+        "asset": asset(),
+        "extensionsUsed": ["KHR_materials_sheen"],
+        "scene": 0,
+        "scenes": [ { "nodes": (0..objects).collect::<Vec<_>>() } ],
+        "nodes": nodes,
+        "meshes": meshes,
+        "materials": materials,
+        "buffers": [ { "byteLength": packed.bin.len() } ],
+        "bufferViews": packed.views,
+        "accessors": packed.accessors,
+    });
+    glb(&json, &packed.bin)
 }
 
 /// Every committed file this generator makes, by path from the repository root.

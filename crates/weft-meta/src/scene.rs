@@ -106,6 +106,12 @@ pub struct SceneMetadata {
     /// schema 3.3; absent (empty) in older files.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub meshes: BTreeMap<String, SceneMesh>,
+    /// Material variants (glTF `KHR_materials_variants`; schema 3.4): per
+    /// variant name, the instances drawn in place of others while it is
+    /// shown — keyed by the name of the instance each replaces (in
+    /// `instances`). Their shaders are in `shaders`. Absent when none.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub variants: BTreeMap<String, BTreeMap<String, SceneInstance>>,
 }
 
 /// A mesh's file (`weft_meta::mesh`): exactly one of `path` (a built-in

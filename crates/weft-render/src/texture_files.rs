@@ -16,9 +16,19 @@ pub(crate) fn read(roots: &[PathBuf], file: &ResourceFile) -> Result<TextureValu
             file.path, file.format
         )));
     }
+    let relative = Path::new(&file.path);
+    if relative
+        .components()
+        .any(|c| !matches!(c, std::path::Component::Normal(_)))
+    {
+        return Err(Error::Metadata(format!(
+            "texture file `{}`: a path inside the scene or library folder (no `..`, not absolute)",
+            file.path
+        )));
+    }
     let path = roots
         .iter()
-        .map(|r| r.join(&file.path))
+        .map(|r| r.join(relative))
         .find(|p| p.is_file())
         .unwrap_or_else(|| roots.first().map_or(PathBuf::new(), |r| r.join(&file.path)));
     let data = weft_meta::files::read_regular(&path, weft_meta::files::MAX_BINARY_BYTES)
@@ -47,10 +57,12 @@ pub(crate) fn material_roots(dir: &Path) -> Vec<PathBuf> {
     vec![dir.parent().unwrap_or(Path::new(".")).to_path_buf()]
 }
 
-/// Where a scene's files are looked for: a project build's library root
-/// (`generated/scenes/<scene>/` -> `generated/`), else the folder above the
-/// scene's (`weft build --scene` into `<out>/<scene>/`).
+/// Where a scene's files are looked for: the scene folder itself (a scene
+/// build carries every file it binds, at the path the metadata names), then
+/// — for folders built before it did — a project build's library root
+/// (`generated/scenes/<scene>/` -> `generated/`) and the folder above the
+/// scene's.
 pub(crate) fn scene_roots(dir: &Path) -> Vec<PathBuf> {
     let up = dir.parent().unwrap_or(Path::new("."));
-    vec![up.join(".."), up.to_path_buf()]
+    vec![dir.to_path_buf(), up.join(".."), up.to_path_buf()]
 }

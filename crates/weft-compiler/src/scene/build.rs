@@ -558,7 +558,17 @@ pub fn build_resolved_scene(
                         file: if inst.set.get(pi).copied().unwrap_or(true) {
                             None
                         } else {
-                            crate::texture_files::resource_file(m, p)
+                            // The scene folder carries the image at the
+                            // path the metadata names (self-contained:
+                            // docs/scenes.md "The scene metadata").
+                            let file = crate::texture_files::resource_file(m, p);
+                            if let (Some(f), Some(image)) = (&file, &p.file) {
+                                files.insert(
+                                    format!("{}/{}", manifest.name, f.path),
+                                    image.image.rgba8.clone(),
+                                );
+                            }
+                            file
                         },
                         ramp_rgba8: None,
                         srgb: p.srgb,
@@ -616,6 +626,21 @@ pub fn build_resolved_scene(
         return None;
     }
 
+    // Material variants' stand-ins go apart, keyed by what they replace.
+    let mut variants: BTreeMap<String, BTreeMap<String, SceneInstance>> = BTreeMap::new();
+    let mut drawn = Vec::with_capacity(instances.len());
+    for (inst, built) in scene.instances.iter().zip(instances) {
+        match &inst.variant {
+            Some(v) => {
+                variants
+                    .entry(v.name.clone())
+                    .or_default()
+                    .insert(v.replaces.clone(), built);
+            }
+            None => drawn.push(built),
+        }
+    }
+    let instances = drawn;
     let meshes = scene_meshes(scene);
     for (path, bytes) in file_meshes(scene) {
         files.insert(format!("{}/{path}", manifest.name), bytes);
@@ -648,6 +673,7 @@ pub fn build_resolved_scene(
         languages: crate::engine_binding::languages(),
         conventions: Some(weft_meta::Conventions::current()),
         meshes,
+        variants,
         limits: scene_limits(scene),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");

@@ -57,12 +57,67 @@ pub fn snake_name(raw: &str, fallback: &str) -> String {
 }
 
 /// One drawn primitive: which node, which mesh primitive, its world matrix.
+#[derive(Clone)]
 struct Draw {
     name: String,
     mesh: usize,
     primitive: usize,
     material: Option<usize>,
     world: Mat4,
+    /// For a `KHR_materials_variants` stand-in: (variant name, the
+    /// instance it replaces is `name` without the suffix).
+    variant: Option<String>,
+}
+
+/// Per `KHR_materials_variants` variant the primitive maps to another
+/// material: a stand-in draw each, after the ordinary ones. Indices are
+/// checked (gltf 1.4 does not).
+fn variant_draws(file: &GltfFile, draws: &[Draw]) -> Result<Vec<Draw>, GltfError> {
+    let names: Vec<String> = file
+        .document
+        .variants()
+        .map(|v| v.map(|v| v.name().to_string()).collect())
+        .unwrap_or_default();
+    let materials = file.document.materials().count();
+    let mut out = Vec::new();
+    for (vi, vname) in names.iter().enumerate() {
+        for d in draws {
+            let json = &file.document.as_json().meshes[d.mesh].primitives[d.primitive];
+            let Some(mappings) = json
+                .extensions
+                .as_ref()
+                .and_then(|e| e.khr_materials_variants.as_ref())
+            else {
+                continue;
+            };
+            for (k, mapping) in mappings.mappings.iter().enumerate() {
+                let pointer = format!(
+                    "/meshes/{}/primitives/{}/extensions/KHR_materials_variants/mappings/{k}",
+                    d.mesh, d.primitive
+                );
+                if mapping.material as usize >= materials
+                    || mapping.variants.iter().any(|&v| v as usize >= names.len())
+                {
+                    return Err(file.error(
+                        &pointer,
+                        format!("a mapping names material {} or a variant the file does not have", mapping.material),
+                        "KHR_materials_variants: `material` indexes materials, `variants` the root's variants",
+                    ));
+                }
+                if mapping.variants.contains(&(vi as u32))
+                    && Some(mapping.material as usize) != d.material
+                {
+                    out.push(Draw {
+                        name: format!("{}__{}", d.name, snake_name(vname, &format!("variant{vi}"))),
+                        material: Some(mapping.material as usize),
+                        variant: Some(vname.clone()),
+                        ..d.clone()
+                    });
+                }
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// What the glTF scene becomes, and what the build reports about it.
@@ -162,6 +217,7 @@ fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Vec<(usize, Mat4)>), 
                     primitive: prim.index(),
                     material: prim.material().index(),
                     world,
+                    variant: None,
                 });
             }
         }
@@ -318,7 +374,9 @@ pub fn scene_manifest(
     overrides: &Overrides,
     warnings: &mut Warnings,
 ) -> Result<GltfScene, GltfError> {
-    let (draws, placed) = drawn_primitives(file)?;
+    let (mut draws, placed) = drawn_primitives(file)?;
+    let ordinary = draws.len();
+    draws.extend(variant_draws(file, &draws)?);
     if draws.is_empty() {
         return Err(file.error(
             "/nodes",
@@ -387,6 +445,7 @@ pub fn scene_manifest(
     let mut instances = String::new();
     let out = &mut instances;
     let mut taken = std::collections::BTreeSet::new();
+    let mut final_names: Vec<String> = Vec::new();
     for d in &draws {
         let name = (1..)
             .map(|n| {
@@ -399,6 +458,7 @@ pub fn scene_manifest(
             .find(|candidate| !taken.contains(candidate))
             .expect("a free name");
         taken.insert(name.clone());
+        final_names.push(name.clone());
         let mapping = &mappings[used.iter().position(|m| *m == d.material).unwrap_or(0)];
         let prim = file
             .document
@@ -468,6 +528,19 @@ pub fn scene_manifest(
         );
         if inputs.len() > 4 {
             let _ = writeln!(out, "vertex_inputs = [{}]", inputs.join(", "));
+        }
+        if let Some(v) = &d.variant {
+            // The ordinary draw of the same primitive is the one replaced.
+            let replaced = draws[..ordinary]
+                .iter()
+                .position(|o| o.mesh == d.mesh && o.primitive == d.primitive && o.world == d.world)
+                .map_or_else(String::new, |o| final_names[o].clone());
+            let _ = writeln!(
+                out,
+                "variant = {{ name = {}, replaces = {} }}",
+                toml_string(v),
+                toml_string(&replaced)
+            );
         }
         let m: Vec<String> = d.world.iter().flatten().map(|&x| float(round(x))).collect();
         let _ = writeln!(out, "matrix = [{}]", m.join(", "));

@@ -197,6 +197,19 @@ pub struct InstanceDecl {
     /// The mesh's vertex inputs when they differ from the scene's.
     pub vertex_inputs: Option<Spanned<Vec<VertexAttribute>>>,
     pub transform: Transform,
+    /// `variant = { name, replaces }`: drawn in place of instance
+    /// `replaces` when the scene shows material variant `name` (glTF
+    /// `KHR_materials_variants`), not drawn otherwise.
+    pub variant: Option<Spanned<InstanceVariant>>,
+}
+
+/// A material variant's stand-in for another instance.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InstanceVariant {
+    /// The variant's name (as the glTF names it).
+    pub name: String,
+    /// The instance this one replaces while the variant is shown.
+    pub replaces: String,
 }
 
 /// `scenes/<name>.scene.toml` as written.
@@ -257,6 +270,8 @@ pub struct ResolvedInstance {
     /// Where the mesh's inputs are declared (scene or instance), for the compiler's check.
     pub vertex_inputs_span: Span,
     pub transform: Transform,
+    /// Drawn only in place of another instance, for a material variant.
+    pub variant: Option<InstanceVariant>,
     /// The `[[instances]]` table, for diagnostics the compiler raises.
     pub span: Span,
     pub tier_span: Span,

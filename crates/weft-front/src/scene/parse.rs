@@ -48,7 +48,10 @@ pub const INSTANCE_KEYS: &[&str] = &[
     "rotation",
     "scale",
     "matrix",
+    "variant",
 ];
+/// Keys of an instance's `variant = { name = "…", replaces = "…" }`.
+pub const VARIANT_KEYS: &[&str] = &["name", "replaces"];
 /// Keys of a glTF mesh reference, `mesh = { gltf = "x.glb", mesh = 0, primitive = 0 }`.
 pub const GLTF_MESH_KEYS: &[&str] = &["gltf", "mesh", "primitive"];
 
@@ -572,6 +575,7 @@ fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a
         span: t.span_of("vertex_inputs"),
     });
     let transform = parse_transform(&t, cx);
+    let variant = parse_variant(&t, cx);
     let Some(name) = name else {
         return (None, None);
     };
@@ -599,6 +603,7 @@ fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a
         }),
         vertex_inputs,
         transform,
+        variant,
     };
     (Some(written_name), Some((decl, params)))
 }
@@ -821,6 +826,23 @@ fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<MeshSpec>> {
             None
         }
     }
+}
+
+/// `variant = { name = "…", replaces = "…" }`.
+fn parse_variant(t: &Table, cx: &mut Cx) -> Option<Spanned<InstanceVariant>> {
+    let v = t.get("variant")?;
+    let table = Table::new(v, "`variant`", cx)?;
+    table.check_keys(VARIANT_KEYS, cx);
+    let note = "a material variant's instance: `variant = { name = \"<variant>\", replaces = \"<instance>\" }`";
+    let name = required_string(&table, "name", &v.span(), note, cx)?;
+    let replaces = required_string(&table, "replaces", &v.span(), note, cx)?;
+    Some(Spanned {
+        value: InstanceVariant {
+            name: name.value,
+            replaces: replaces.value,
+        },
+        span: v.span(),
+    })
 }
 
 /// `matrix = [16 numbers]`: object -> world, column-major.

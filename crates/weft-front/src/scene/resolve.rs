@@ -54,6 +54,7 @@ pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> Re
         diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
     }
     check_mesh_names(&instances, file, diags);
+    check_variants(&manifest, diags);
     ResolvedScene {
         manifest,
         materials: library.materials,
@@ -92,6 +93,40 @@ fn instance_mesh(
                 None
             }
         },
+    }
+}
+
+/// A variant's instance replaces an instance of the scene that is not
+/// itself a variant's.
+fn check_variants(manifest: &SceneManifest, diags: &mut Diagnostics) {
+    for decl in &manifest.instances {
+        let Some(v) = &decl.variant else { continue };
+        let target = manifest
+            .instances
+            .iter()
+            .find(|i| i.name == v.value.replaces);
+        let problem = match target {
+            None => format!(
+                "replaces `{}`, which the scene does not have",
+                v.value.replaces
+            ),
+            Some(t) if t.variant.is_some() => {
+                format!(
+                    "replaces `{}`, which is itself a variant's instance",
+                    v.value.replaces
+                )
+            }
+            Some(_) => continue,
+        };
+        diags.push(
+            Diagnostic::error()
+                .with_code("unknown-instance")
+                .with_message(format!("instance `{}` {problem}", decl.name))
+                .with_labels(vec![Label::primary(manifest.file, v.span.clone())])
+                .with_notes(vec![
+                    "`replaces` names an ordinary instance of this scene".into(),
+                ]),
+        );
     }
 }
 
@@ -332,6 +367,7 @@ impl Resolving<'_> {
             dynamic,
             dynamic_spans,
             mesh,
+            variant: decl.variant.as_ref().map(|v| v.value.clone()),
             vertex_inputs,
             vertex_inputs_span,
             transform: decl.transform.clone(),
