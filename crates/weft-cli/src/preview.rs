@@ -25,8 +25,8 @@ specialised shader, or with the library's generic variants (--library). Needs a 
 Debian/Ubuntu `apt-get install mesa-vulkan-drivers`.";
 
 /// What a scene preview does not take: a material and its options.
-const NOT_WITH_A_SCENE: [&str; 8] = [
-    "path", "variant", "tier", "keywords", "sets", "textures", "preset", "scene",
+const NOT_WITH_A_SCENE: [&str; 9] = [
+    "path", "variant", "tier", "keywords", "sets", "textures", "preset", "scene", "mesh",
 ];
 
 #[derive(clap::Args)]
@@ -61,8 +61,13 @@ pub(crate) struct PreviewArgs {
     #[arg(long)]
     preset: Option<String>,
     /// Built-in scene.
-    #[arg(long, value_enum, default_value_t = SceneArg::Sphere)]
+    #[arg(long, value_enum, default_value_t = SceneArg::Sphere, conflicts_with = "mesh")]
     scene: SceneArg,
+    /// Draw on a mesh of a glTF file instead: `my.glb` (its first mesh's first
+    /// primitive) or `my.glb#M/P` (mesh M, primitive P), framed whole;
+    /// normals and MikkTSpace tangents generated where the file has none.
+    #[arg(long, value_name = "FILE[#M/P]")]
+    mesh: Option<String>,
     /// Image size, WxH.
     #[arg(long, default_value = "256x256", value_name = "WxH")]
     size: String,
@@ -210,7 +215,7 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
         println!(
             "rendered {} variant {variant} ({}, {}x{}) on {adapter} in {:.2}s -> {}{}",
             material.name(),
-            options.scene.name(),
+            args.mesh.as_deref().unwrap_or(options.scene.name()),
             options.width,
             options.height,
             started.elapsed().as_secs_f64(),
@@ -219,6 +224,28 @@ pub(crate) fn preview(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(
         );
     }
     Ok(())
+}
+
+/// `--mesh FILE[#M/P]`: the glTF primitive as a mesh to draw.
+fn gltf_mesh(spec: &str) -> Result<weft_render::Mesh, String> {
+    let (file, at) = spec.split_once('#').unwrap_or((spec, "0/0"));
+    let (m, p) = at.split_once('/').unwrap_or((at, "0"));
+    let index = |s: &str| {
+        s.trim().parse::<usize>().map_err(|_| {
+            format!("--mesh expects FILE or FILE#M/P (mesh and primitive indices), got `{spec}`")
+        })
+    };
+    let mut cache = weft_front::gltf::GltfCache::default();
+    let mesh = cache
+        .mesh(std::path::Path::new(file), index(m)?, index(p)?)
+        .map_err(|e| format!("{e}\n  = {}", e.hint))?;
+    for w in &cache.warnings {
+        eprintln!("warning: {w}");
+    }
+    for g in &mesh.generated {
+        eprintln!("note: {}: weft generated {g}", file);
+    }
+    Ok(weft_render::mesh_from_data(mesh.data.clone()))
 }
 
 /// Size, light, format and language from the arguments (both modes).
@@ -248,7 +275,12 @@ fn preview_options(args: &PreviewArgs) -> Result<weft_render::PreviewOptions, St
         }
         None => None,
     };
+    let mesh = match &args.mesh {
+        Some(spec) => Some(std::sync::Arc::new(gltf_mesh(spec)?)),
+        None => None,
+    };
     Ok(PreviewOptions {
+        mesh,
         scene: match args.scene {
             SceneArg::Sphere => SceneKind::Sphere,
             SceneArg::Cloth => SceneKind::Cloth,

@@ -167,3 +167,38 @@ fn a_built_scene_folder_is_self_contained() {
         assert_eq!(png_size(&png), (64, 48));
     }
 }
+
+/// `weft preview <material> --mesh x.glb#M/P`: a material on the user's own
+/// mesh; a bad reference fails with the JSON pointer.
+#[test]
+fn previews_a_material_on_a_gltf_mesh() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("on_mesh.png");
+    let o = weft(&[
+        "preview",
+        "materials/velvet/velvet.toml",
+        "--mesh",
+        "scenes/gltf/showroom.glb#0/0",
+        "-o",
+        png.to_str().unwrap(),
+        "--size",
+        "48x48",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("showroom.glb#0/0"));
+    assert_eq!(png_size(&png), (48, 48));
+    let o = weft(&[
+        "preview",
+        "materials/velvet/velvet.toml",
+        "--mesh",
+        "scenes/gltf/showroom.glb#0/9",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("/meshes/0/primitives/9"),
+        "{}",
+        stderr(&o)
+    );
+}

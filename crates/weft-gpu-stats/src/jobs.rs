@@ -132,8 +132,7 @@ fn scene_jobs(
     for s in &scene.shaders {
         // Instances that share a shader share its static keywords, hence its passes.
         let instance = scene
-            .instances
-            .iter()
+            .built_instances()
             .find(|i| i.shader == s.id)
             .ok_or_else(|| {
                 Error::Input(format!(

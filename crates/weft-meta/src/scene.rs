@@ -193,6 +193,14 @@ impl SceneLight {
 }
 
 impl SceneMetadata {
+    /// Every instance built: those drawn (`instances`), then every material
+    /// variant's stand-ins (`variants`, by variant then replaced name).
+    pub fn built_instances(&self) -> impl Iterator<Item = &SceneInstance> {
+        self.instances
+            .iter()
+            .chain(self.variants.values().flat_map(|v| v.values()))
+    }
+
     /// The light the scene is drawn with: `light`, completed with the
     /// defaults where a file older than schema 3.3 left them out.
     pub fn light_used(&self) -> SceneLight {

@@ -75,6 +75,9 @@ impl MaterialOptions {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PreviewOptions {
     pub scene: SceneKind,
+    /// A mesh of the user's (glTF) drawn in place of the built-in scene's,
+    /// framed whole (`Scene::framing`).
+    pub mesh: Option<std::sync::Arc<crate::scene::Mesh>>,
     pub width: u32,
     pub height: u32,
     /// Direction towards the light (and the sky's sun); None: the default.
@@ -88,6 +91,7 @@ impl Default for PreviewOptions {
     fn default() -> Self {
         PreviewOptions {
             scene: SceneKind::Sphere,
+            mesh: None,
             width: 256,
             height: 256,
             light_direction: None,
@@ -101,7 +105,10 @@ impl Default for PreviewOptions {
 impl PreviewOptions {
     /// The scene with the requested light direction.
     pub fn scene(&self) -> Scene {
-        let mut scene = Scene::new(self.scene);
+        let mut scene = match &self.mesh {
+            Some(mesh) => Scene::framing((**mesh).clone()),
+            None => Scene::new(self.scene),
+        };
         if let Some(d) = self.light_direction {
             scene.light.direction = math::normalize(d);
         }

@@ -300,6 +300,41 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// `mesh` at the origin (identity model), seen from +Z by a 35° camera
+    /// that frames its bounds, under the default light: a preview of a
+    /// mesh of the user's.
+    pub fn framing(mesh: Mesh) -> Scene {
+        let mut lo = [f32::INFINITY; 3];
+        let mut hi = [f32::NEG_INFINITY; 3];
+        for p in &mesh.positions {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let centre: Vec3 = std::array::from_fn(|k| 0.5 * (lo[k] + hi[k]));
+        let radius = (0..3)
+            .map(|k| (hi[k] - lo[k]).powi(2))
+            .sum::<f32>()
+            .sqrt()
+            .max(1e-3)
+            * 0.5;
+        let fov = 35.0f32;
+        let distance = radius / (0.5 * fov.to_radians()).sin() / 0.95;
+        let mut scene = Scene::new(SceneKind::Sphere);
+        scene.mesh = mesh;
+        scene.model = math::IDENTITY;
+        scene.camera = Camera {
+            eye: [centre[0], centre[1], centre[2] + distance],
+            target: centre,
+            up: [0.0, 1.0, 0.0],
+            fov_y_degrees: fov,
+            near: (distance - radius).max(distance * 1e-3) * 0.5,
+            far: (distance + radius) * 2.0,
+        };
+        scene
+    }
+
     pub fn new(kind: SceneKind) -> Scene {
         match kind {
             SceneKind::Sphere => Scene::sphere(),
