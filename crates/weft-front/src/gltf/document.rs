@@ -169,7 +169,9 @@ fn glb_chunks(bytes: &[u8]) -> Result<(&[u8], Option<&[u8]>), String> {
         ));
     }
     let body = &bytes[..length];
-    let chunk = |at: usize| -> Result<Option<(&[u8], &[u8], usize)>, String> {
+    // A chunk at `at`: its type, its data and where the next one starts.
+    type Chunk<'b> = Option<(&'b [u8], &'b [u8], usize)>;
+    let chunk = |at: usize| -> Result<Chunk, String> {
         if at >= body.len() {
             return Ok(None);
         }
@@ -309,7 +311,7 @@ fn check_extensions(
 }
 
 /// `data:<type>;base64,<payload>`: the payload of a buffer data URI.
-fn data_uri<'u>(uri: &'u str) -> Option<(&'u str, &'u str)> {
+fn data_uri(uri: &str) -> Option<(&str, &str)> {
     let rest = uri.strip_prefix("data:")?;
     let (header, payload) = rest.split_once(',')?;
     let media = header.strip_suffix(";base64")?;

@@ -155,7 +155,10 @@ pub type Overrides = BTreeMap<String, MaterialMapping>;
 
 /// The glTF's drawn primitives, in scene order (depth first, children in
 /// file order), with their world matrices. Cycles and shared nodes fail.
-fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Vec<(usize, Mat4)>), GltfError> {
+/// Every node visited, with its world matrix (camera and light search).
+type Placed = Vec<(usize, Mat4)>;
+
+fn drawn_primitives(file: &GltfFile) -> Result<(Vec<Draw>, Placed), GltfError> {
     let doc = &file.document;
     let scene = doc
         .default_scene()

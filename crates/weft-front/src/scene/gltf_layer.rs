@@ -46,7 +46,7 @@ fn entries(t: &Table, key: &str, text: &str, cx: &mut Cx) -> Vec<(String, String
     let Some(v) = t.get(key) else {
         return Vec::new();
     };
-    let Some(inner) = Table::new(v, &format!("`{key}`"), cx) else {
+    let Some(inner) = Table::new(v, format!("`{key}`"), cx) else {
         return Vec::new();
     };
     inner
@@ -64,7 +64,7 @@ fn overrides(gltf: &Table, text: &str, cx: &mut Cx) -> Overrides {
         return out;
     };
     for (name, _, v) in materials.entries() {
-        let Some(t) = Table::new(v, &format!("[gltf.materials.{name}]"), cx) else {
+        let Some(t) = Table::new(v, format!("[gltf.materials.{name}]"), cx) else {
             continue;
         };
         t.check_keys(GLTF_MATERIAL_KEYS, cx);
