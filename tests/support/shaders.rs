@@ -70,7 +70,7 @@ pub fn shaders<'a>(
     for s in scenes {
         for entry in &s.shaders {
             let mut passes: Vec<&Pass> = Vec::new();
-            for inst in s.instances.iter().filter(|i| i.shader == entry.id) {
+            for inst in s.built_instances().filter(|i| i.shader == entry.id) {
                 for p in &inst.passes {
                     if !passes.contains(&p) {
                         passes.push(p);

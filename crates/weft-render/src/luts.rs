@@ -203,11 +203,13 @@ impl Luts {
     }
 
     /// The tables of a built scene (`<out>/<scene>/<scene>.scene.json`):
-    /// `<out>/luts/`, else, for a project build's `generated/scenes/<scene>/`,
-    /// `generated/luts/`.
+    /// the scene folder's own `luts/` (a self-contained scene, `weft build
+    /// --scene`), else `<out>/luts/`, else, for a project build's
+    /// `generated/scenes/<scene>/`, `generated/luts/`.
     pub fn for_scene(scene_json: impl AsRef<Path>) -> Result<Luts> {
+        let scene_dir = scene_json.as_ref().parent().unwrap_or(Path::new("."));
         let out = generated_dir(scene_json.as_ref());
-        let candidates = [out.to_path_buf(), out.join("..")];
+        let candidates = [scene_dir.to_path_buf(), out.to_path_buf(), out.join("..")];
         match candidates
             .iter()
             .find(|dir| dir.join(SPLIT_SUM_LUT_FILE).is_file())

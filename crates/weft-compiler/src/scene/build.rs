@@ -522,6 +522,20 @@ pub fn build_resolved_scene(
             .find(|s| s.id == id)
             .expect("just added")
             .shader;
+        // The scene folder carries the baked tables its shader binds
+        // (`resource.file`, a material's `[tables]`), at the path named.
+        for t in &m.tables {
+            let path = crate::tables::resource(m, t).file.map(|f| f.path);
+            let bound = shader.bindings.iter().any(|b| {
+                b.resource.as_ref().and_then(|r| r.file.as_ref()).map(|f| &f.path) == path.as_ref()
+            });
+            if let (true, Some(path)) = (bound, path) {
+                files.insert(
+                    format!("{}/{path}", manifest.name),
+                    crate::tables::bake(t).to_vec(),
+                );
+            }
+        }
         let uniform_values = shader
             .material_uniform
             .as_ref()
