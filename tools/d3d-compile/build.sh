@@ -9,4 +9,4 @@ mkdir -p "$(dirname "$out")"
 cxx=x86_64-w64-mingw32-g++-win32
 command -v "$cxx" >/dev/null || cxx=x86_64-w64-mingw32-g++
 # Static: the program needs no MinGW runtime DLLs beside it.
-"$cxx" -std=c++17 -O2 -Wall -Wextra -static -o "$out" "$here/d3d_compile.cpp"
+"$cxx" -std=c++17 -O2 -Wall -Wextra -Werror -static -o "$out" "$here/d3d_compile.cpp"
