@@ -56,7 +56,13 @@ fn tools_dir() -> PathBuf {
 /// `/usr/lib/wine/wine64` (bookworm's `wine64` package puts it only there).
 fn wine() -> PathBuf {
     if let Some(p) = std::env::var_os("WEFT_WINE") {
-        return PathBuf::from(p);
+        let p = PathBuf::from(p);
+        assert!(
+            p.is_file(),
+            "WEFT_WINE={} is not a file: install wine and the D3D compilers with `{INSTALL}`",
+            p.display()
+        );
+        return p;
     }
     let on_path = std::env::var_os("PATH").and_then(|paths| {
         std::env::split_paths(&paths)
@@ -391,5 +397,55 @@ fn every_hlsl_entry_point_compiles_with_dxc_and_fxc_and_its_registers_match() {
         summary.join(", "),
         messages.len(),
         messages[..messages.len().min(20)].join("\n")
+    );
+}
+
+/// The register check itself, without wine: the metadata's own registers
+/// pass, and a moved register, a resource the metadata does not state and a
+/// resource in a stage its `stages` leave out are each reported.
+#[test]
+fn the_register_check_reports_moved_unknown_and_wrong_stage_resources() {
+    let jobs = hlsl::jobs();
+    let job = (jobs.iter())
+        .find(|j| {
+            j.bindings.iter().any(|b| b.stages == [Stage::Fragment])
+                && j.entries.iter().any(|(_, s)| *s == Stage::Vertex)
+        })
+        .expect("a file with a fragment-only binding and a vertex entry point");
+    let truth: Vec<Reflected> = (job.bindings.iter())
+        .map(|b| Reflected {
+            name: hlsl::resource_name(b),
+            register: b.hlsl.register.clone(),
+            space: b.hlsl.space,
+        })
+        .collect();
+    let check = |r: &[Reflected], stage| {
+        hlsl::check_registers(job, "test", r, Scope::EntryPoint(stage), str::to_string)
+    };
+    let fragment: Vec<Reflected> = (job.bindings.iter().zip(&truth))
+        .filter(|(b, _)| b.stages.contains(&Stage::Fragment))
+        .map(|(_, r)| r.clone())
+        .collect();
+    assert_eq!(check(&fragment, Stage::Fragment), Vec::<String>::new());
+
+    let mut moved = fragment.clone();
+    moved[0].register = format!("{}9", &moved[0].register[..1]);
+    assert!(check(&moved, Stage::Fragment)[0].contains("metadata says"));
+
+    let mut unknown = fragment.clone();
+    unknown.push(Reflected {
+        name: "not_in_metadata".into(),
+        register: "t9".into(),
+        space: 1,
+    });
+    assert!(check(&unknown, Stage::Fragment)[0].contains("does not state"));
+
+    let b = (job.bindings.iter())
+        .position(|b| b.stages == [Stage::Fragment])
+        .unwrap();
+    let errors = check(&truth[b..=b], Stage::Vertex);
+    assert!(
+        errors.iter().any(|e| e.contains("leave it out")),
+        "{errors:?}"
     );
 }

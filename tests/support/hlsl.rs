@@ -204,18 +204,18 @@ pub fn check_registers(
                 "{}: {who} reflects `{}` ({} space {}), which the metadata does not state",
                 job.label, r.name, r.register, r.space
             ));
-        } else if let Scope::EntryPoint(stage) = scope {
-            if !carriers.iter().any(|b| b.stages.contains(&stage)) {
-                errors.push(format!(
-                    "{}: {who} reflects `{}` in a {stage:?} entry point, but the metadata's \
-                     `stages` of {} leave it out",
-                    job.label,
-                    r.name,
-                    (carriers.iter().map(|b| b.name.as_str()))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
+        } else if let Scope::EntryPoint(stage) = scope
+            && !carriers.iter().any(|b| b.stages.contains(&stage))
+        {
+            errors.push(format!(
+                "{}: {who} reflects `{}` in a {stage:?} entry point, but the metadata's \
+                 `stages` of {} leave it out",
+                job.label,
+                r.name,
+                (carriers.iter().map(|b| b.name.as_str()))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
         }
     }
     errors
