@@ -2,32 +2,28 @@
 //! (`slangc`, a D3D-side compiler no one here wrote), with its register
 //! reflection checked against the metadata.
 //!
-//! Slang rejects the two classes of HLSL other D3D compilers disagree on:
+//! Slang rejects the two classes of HLSL other D3D compilers disagree on
+//! (negative controls below show it does, on HLSL as naga writes it):
 //! a `static const SamplerState` initialised from naga's sampler heap (Slang:
 //! "static const global initializer must be a compile-time constant"), and a
 //! `?:` with a vector condition, which HLSL 2021 (DXC's default) rejects and
-//! Slang deprecates (warning 30056, made an error here). DXC and FXC are
-//! Windows programs: docs/engine-interface.md says how to run them.
+//! Slang deprecates (warning 30056, made an error here). DXC and FXC run
+//! under wine in `tests/hlsl_d3d.rs`.
 //!
 //! `slangc` ships in PyPI's `slangtorch` Linux wheel (.ci/run installs it);
 //! without it this test fails and says how to install it.
 
+#[path = "support/hlsl.rs"]
+mod hlsl;
 #[path = "support/shaders.rs"]
 mod shaders;
 
+use hlsl::{Job, Reflected, Scope, repo};
 use rayon::prelude::*;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use weft_meta::scene::SceneMetadata;
-use weft_meta::{Binding, BindingKind, MaterialMetadata, Stage};
-
-fn repo() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .unwrap()
-        .to_path_buf()
-}
+use weft_meta::Stage;
 
 const INSTALL: &str = "python3 -m venv target/tools/slang && \
     target/tools/slang/bin/pip install --no-deps slangtorch==1.3.22";
@@ -59,52 +55,6 @@ fn slangc() -> PathBuf {
     })
 }
 
-/// One HLSL file with the entry points and bindings its metadata states.
-struct Job {
-    label: String,
-    path: PathBuf,
-    entries: Vec<(String, Stage)>,
-    bindings: Vec<Binding>,
-}
-
-fn jobs() -> Vec<Job> {
-    let generated = repo().join("generated");
-    let mut materials = Vec::new();
-    let mut scenes = Vec::new();
-    for dir in std::fs::read_dir(&generated).unwrap().flatten() {
-        let name = dir.file_name().to_string_lossy().into_owned();
-        let meta = dir.path().join(format!("{name}.meta.json"));
-        if meta.is_file() {
-            let text = std::fs::read_to_string(&meta).unwrap();
-            materials.push(MaterialMetadata::from_json(&text).unwrap());
-        }
-    }
-    for dir in std::fs::read_dir(generated.join("scenes"))
-        .unwrap()
-        .flatten()
-    {
-        let name = dir.file_name().to_string_lossy().into_owned();
-        let text = std::fs::read_to_string(dir.path().join(format!("{name}.scene.json"))).unwrap();
-        scenes.push(SceneMetadata::from_json(&text).unwrap());
-    }
-    materials.sort_by(|a, b| a.name.cmp(&b.name));
-    scenes.sort_by(|a, b| a.name.cmp(&b.name));
-    let mut jobs = Vec::new();
-    for s in shaders::shaders(&materials, &scenes) {
-        for hlsl in &s.shader.files["hlsl"] {
-            jobs.push(Job {
-                label: s.file(&hlsl.path),
-                path: generated.join(s.file(&hlsl.path)),
-                entries: (s.shader.entry_points.iter())
-                    .map(|e| (e.name.clone(), e.stage))
-                    .collect(),
-                bindings: s.shader.bindings.clone(),
-            });
-        }
-    }
-    jobs
-}
-
 /// Compiles every entry point of one file to HLSL (Slang's D3D target); the
 /// reflection (JSON) on success, Slang's messages on failure.
 fn compile(slangc: &Path, job: &Job, out: &Path) -> Result<Value, String> {
@@ -133,35 +83,17 @@ fn compile(slangc: &Path, job: &Job, out: &Path) -> Result<Value, String> {
     serde_json::from_str(&text).map_err(|e| format!("{}: reflection: {e}", job.label))
 }
 
-/// The metadata's `hlsl` register of every binding against Slang's reflection.
-/// Samplers live in naga's heap: their register is the group's sampler-index
-/// buffer, and the HLSL must alias heap element `index[sampler_index_slot]`.
-fn check_registers(job: &Job, reflection: &Value) -> Vec<String> {
-    let hlsl = std::fs::read_to_string(&job.path).unwrap();
+/// Slang's reflection (JSON `parameters`, every declared resource) as
+/// bindings; the metadata is checked against it with `hlsl::check_registers`,
+/// every binding required.
+fn reflected(job: &Job, reflection: &Value) -> Result<Vec<Reflected>, String> {
     let params = reflection["parameters"]
         .as_array()
         .cloned()
         .unwrap_or_default();
-    let find = |name: &str| params.iter().find(|p| p["name"] == name);
-    let mut errors = Vec::new();
-    for b in &job.bindings {
-        let h = &b.hlsl;
-        let sampler = matches!(
-            b.kind,
-            BindingKind::Sampler | BindingKind::ComparisonSampler
-        );
-        let name = if sampler {
-            format!("nagaGroup{}SamplerIndexArray", h.space)
-        } else {
-            b.name.clone()
-        };
-        let Some(p) = find(&name) else {
-            errors.push(format!(
-                "{}: `{name}` ({}) not in Slang's reflection",
-                job.label, b.name
-            ));
-            continue;
-        };
+    let mut out = Vec::new();
+    for p in &params {
+        let name = p["name"].as_str().unwrap_or_default().to_string();
         let binding = &p["binding"];
         let letter = match binding["kind"].as_str() {
             Some("constantBuffer") => "b",
@@ -169,71 +101,42 @@ fn check_registers(job: &Job, reflection: &Value) -> Vec<String> {
             Some("unorderedAccess") => "u",
             Some("samplerState") => "s",
             other => {
-                errors.push(format!(
+                return Err(format!(
                     "{}: `{name}` has binding kind {other:?}",
                     job.label
                 ));
-                continue;
             }
         };
-        let register = format!("{letter}{}", binding["index"]);
-        let space = binding["space"].as_u64().unwrap_or(0);
-        if register != h.register || space != u64::from(h.space) {
-            errors.push(format!(
-                "{}: `{}`: metadata says {} space {}, Slang reflects {register} space {space}",
-                job.label, b.name, h.register, h.space
-            ));
-        }
-        if sampler {
-            let heap = match b.kind {
-                BindingKind::ComparisonSampler => "nagaComparisonSamplerHeap",
-                _ => "nagaSamplerHeap",
-            };
-            let slot = h.sampler_index_slot.unwrap_or(u32::MAX);
-            let alias = format!("#define {} ({heap}[{name}[{slot}]])", b.name);
-            if !hlsl.lines().any(|l| l == alias) {
-                errors.push(format!("{}: no `{alias}`", job.label));
-            }
-        }
+        out.push(Reflected {
+            name,
+            register: format!("{letter}{}", binding["index"]),
+            space: binding["space"].as_u64().unwrap_or(0) as u32,
+        });
     }
-    let heaps = [
-        (
-            "nagaSamplerHeap",
-            weft_compiler::backends::HLSL_SAMPLER_HEAP_SPACE,
-        ),
-        (
-            "nagaComparisonSamplerHeap",
-            weft_compiler::backends::HLSL_COMPARISON_SAMPLER_HEAP_SPACE,
-        ),
-    ];
-    for (heap, space) in heaps {
-        if let Some(p) = find(heap) {
-            let b = &p["binding"];
-            if b["kind"] != "samplerState" || b["index"] != 0 || b["space"] != u64::from(space) {
-                errors.push(format!(
-                    "{}: `{heap}` is at {b}, not s0 space{space}",
-                    job.label
-                ));
-            }
-        }
+    Ok(out)
+}
+
+fn check(job: &Job, reflection: &Value) -> Vec<String> {
+    match reflected(job, reflection) {
+        Ok(r) => hlsl::check_registers(job, "Slang", &r, Scope::File, str::to_string),
+        Err(e) => vec![e],
     }
-    errors
 }
 
 #[test]
 fn every_hlsl_entry_point_compiles_with_slang_and_its_registers_match() {
     let slangc = slangc();
-    let jobs = jobs();
+    let jobs = hlsl::jobs();
     let tmp = tempfile::tempdir().unwrap();
     let results: Vec<Result<Vec<String>, String>> = jobs
         .par_iter()
         .enumerate()
         .map(|(i, job)| {
             let out = tmp.path().join(format!("{i}.json"));
-            compile(&slangc, job, &out).map(|r| check_registers(job, &r))
+            compile(&slangc, job, &out).map(|r| check(job, &r))
         })
         .collect();
-    let entries: usize = jobs.iter().map(|j| j.entries.len()).sum();
+    let entries = hlsl::assert_complete(&jobs);
     let rejected: usize = (jobs.iter().zip(&results))
         .filter(|(_, r)| r.is_err())
         .map(|(j, _)| j.entries.len())
@@ -252,8 +155,45 @@ fn every_hlsl_entry_point_compiles_with_slang_and_its_registers_match() {
         jobs.len(),
         messages[..messages.len().min(20)].join("\n")
     );
-    assert!(
-        jobs.iter().any(|j| j.label.starts_with("scenes/")) && entries >= 400,
-        "expected every material variant's and scene shader's HLSL, got {entries} entry points"
-    );
+}
+
+/// Both classes this test exists for, as naga writes them (`hlsl::controls`):
+/// Slang must reject each, and accept weft's HLSL for the same shader.
+#[test]
+fn slang_rejects_naga_vector_ternaries_and_sampler_heap_constants() {
+    let slangc = slangc();
+    let tmp = tempfile::tempdir().unwrap();
+    for c in hlsl::controls() {
+        for (kind, text) in [("raw", &c.raw), ("weft", &c.weft)] {
+            let path = tmp.path().join(format!("{}.{kind}.hlsl", c.name));
+            std::fs::write(&path, text).unwrap();
+            let job = Job {
+                label: format!("{} ({kind})", c.name),
+                path,
+                entries: vec![("fs_main".to_string(), Stage::Fragment)],
+                bindings: Vec::new(),
+            };
+            let out = tmp.path().join(format!("{}.{kind}.json", c.name));
+            let result = compile(&slangc, &job, &out);
+            match (kind, result) {
+                ("weft", Err(e)) => panic!("{e}"),
+                ("raw", Ok(_)) => panic!(
+                    "Slang accepts naga's {} HLSL: this test could not catch that class",
+                    c.name
+                ),
+                ("raw", Err(e)) => {
+                    let code = match c.name {
+                        "vector_select" => "30056",
+                        _ => "31226",
+                    };
+                    assert!(
+                        e.contains(code),
+                        "Slang rejects {}, but not with {code}:\n{e}",
+                        c.name
+                    );
+                }
+                _ => {}
+            }
+        }
+    }
 }

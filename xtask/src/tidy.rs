@@ -7,7 +7,7 @@ use std::collections::BTreeSet;
 use std::path::Path;
 
 /// Top-level folders a named path may start with.
-const TOP_FOLDERS: [&str; 10] = [
+const TOP_FOLDERS: [&str; 11] = [
     "crates",
     "tests",
     "xtask",
@@ -18,6 +18,7 @@ const TOP_FOLDERS: [&str; 10] = [
     "schemas",
     "scenes",
     ".ci",
+    "tools",
 ];
 
 /// Folders whose file names a bare name (`fold.rs`) may refer to.
