@@ -285,7 +285,7 @@ pub fn showroom() -> Vec<u8> {
             { "name": "Foil swatch", "mesh": 2, "translation": [1.8, 0.75, 0.2], "scale": [0.3, 0.3, 0.3] },
             { "name": "Satin ball", "mesh": 3, "translation": [-0.5, 0.3, 0.9], "scale": [0.3, 0.3, 0.3] },
             { "name": "Shot silk swatch", "mesh": 4, "translation": [1.8, 0.1, 0.2], "scale": [0.3, 0.3, 0.3] },
-            { "name": "Camera", "camera": 0, "translation": [0.1, 1.0, 3.7], "rotation": quat([1.0, 0.0, 0.0], -8.0) },
+            { "name": "Camera", "camera": 0, "translation": [0.1, 0.9, 3.3], "rotation": quat([1.0, 0.0, 0.0], -8.0) },
             { "name": "Sun", "rotation": rotation_to([-0.62, 0.55, 0.56]),
               "extensions": { "KHR_lights_punctual": { "light": 0 } } },
             { "name": "Lamp", "translation": [1.0, 2.0, 1.0], "extensions": { "KHR_lights_punctual": { "light": 1 } } },
