@@ -527,7 +527,11 @@ pub fn build_resolved_scene(
         for t in &m.tables {
             let path = crate::tables::resource(m, t).file.map(|f| f.path);
             let bound = shader.bindings.iter().any(|b| {
-                b.resource.as_ref().and_then(|r| r.file.as_ref()).map(|f| &f.path) == path.as_ref()
+                b.resource
+                    .as_ref()
+                    .and_then(|r| r.file.as_ref())
+                    .map(|f| &f.path)
+                    == path.as_ref()
             });
             if let (true, Some(path)) = (bound, path) {
                 files.insert(

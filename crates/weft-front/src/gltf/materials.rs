@@ -20,6 +20,19 @@ use super::GltfError;
 use super::document::GltfFile;
 use serde_json::Value;
 
+/// The keys of weft's choices for one glTF material: `extras.weft` in the
+/// file, `[gltf.materials.<name>]` in a scene manifest.
+pub const WEFT_KEYS: &[&str] = &[
+    "material",
+    "preset",
+    "tier",
+    "error_budget",
+    "screen_size",
+    "params",
+    "keywords",
+    "dynamic",
+];
+
 /// A parameter or keyword value, as TOML text for the generated manifest.
 pub type Literal = String;
 
@@ -382,17 +395,7 @@ fn map_extras(
     let Value::Object(map) = weft else {
         return Err(err("", "extras.weft is not an object".into()));
     };
-    const KEYS: &[&str] = &[
-        "material",
-        "preset",
-        "tier",
-        "error_budget",
-        "screen_size",
-        "params",
-        "keywords",
-        "dynamic",
-    ];
-    if let Some(k) = map.keys().find(|k| !KEYS.contains(&k.as_str())) {
+    if let Some(k) = map.keys().find(|k| !WEFT_KEYS.contains(&k.as_str())) {
         return Err(err(&format!("/{k}"), format!("unknown key `{k}`")));
     }
     let string = |key: &str| -> Result<Option<String>, GltfError> {

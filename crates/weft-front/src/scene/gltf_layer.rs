@@ -24,16 +24,8 @@ use std::path::Path;
 use toml::de::DeTable;
 
 pub const GLTF_KEYS: &[&str] = &["file", "materials"];
-pub const GLTF_MATERIAL_KEYS: &[&str] = &[
-    "material",
-    "preset",
-    "tier",
-    "error_budget",
-    "screen_size",
-    "params",
-    "keywords",
-    "dynamic",
-];
+/// `[gltf.materials.<name>]`: the same keys as a glTF material's `extras.weft`.
+pub const GLTF_MATERIAL_KEYS: &[&str] = crate::gltf::materials::WEFT_KEYS;
 
 /// The source text of a value, as written (kept verbatim into the
 /// generated instance, so it is checked against the material as written).
