@@ -46,6 +46,21 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
     let glb = tmp.path().join("big.glb");
     let bytes = weft_golden::gltf_samples::large(args.triangles, args.objects, args.materials);
     std::fs::write(&glb, &bytes).map_err(|e| e.to_string())?;
+    // The process's own footprint (binary, compiler, materials): a
+    // one-triangle scene's peak, subtracted to see what the file costs.
+    let tiny = tmp.path().join("tiny.glb");
+    std::fs::write(&tiny, weft_golden::gltf_samples::large(2, 1, 1)).map_err(|e| e.to_string())?;
+    let baseline = run_child(
+        Command::new(&weft)
+            .current_dir(root)
+            .args(["build", "--scene"])
+            .arg(&tiny)
+            .arg("-o")
+            .arg(tmp.path().join("tiny_out"))
+            .args(["--materials", "materials"]),
+    )?
+    .max_rss_kib as f64
+        / 1024.0;
     let mut walls = Vec::new();
     let mut rss = Vec::new();
     let mut summary = String::new();
@@ -74,9 +89,9 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
          Written by `cargo xtask bench gltf --write` ({} runs; `weft build --scene`, release, one fresh process and output folder per run). \
          The scene: `weft_golden::gltf_samples::large({}, {}, {})` — {} draped cloths without tangents (MikkTSpace on each), \
          {} glTF materials (half core PBR → standard, half sheen → velvet), no `auto` tier.\n\n\
-         | triangles | objects | materials | file MiB | build s (min / median / max) | peak RSS MiB (median) | RSS ÷ file |\n\
-         | ---: | ---: | ---: | ---: | --- | ---: | ---: |\n\
-         | {} | {} | {} | {:.1} | {:.2} / {:.2} / {:.2} | {:.0} | {:.1}× |\n\n\
+         | triangles | objects | materials | file MiB | build s (min / median / max) | peak RSS MiB (median) | one-triangle scene's peak RSS MiB | (RSS − that) ÷ file |\n\
+         | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: |\n\
+         | {} | {} | {} | {:.1} | {:.2} / {:.2} / {:.2} | {:.0} | {:.0} | {:.1}× |\n\n\
          Last run: {summary}\n\nMachine: {} logical CPUs.\n",
         args.runs,
         args.triangles,
@@ -92,7 +107,8 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
         median,
         walls[walls.len() - 1],
         rss_mib,
-        rss_mib / file_mib,
+        baseline,
+        (rss_mib - baseline) / file_mib,
         std::thread::available_parallelism().map_or(0, |n| n.get()),
     );
     print!("{report}");

@@ -30,7 +30,7 @@ pub fn build_scene_command(
         tier_chooser: Some(&chooser),
         gltf_materials,
     };
-    let result = match weft_compiler::build_scene(scene, &options) {
+    let mut result = match weft_compiler::build_scene(scene, &options) {
         Ok(r) => r,
         Err((db, diags)) => {
             report(&db, &diags, color);
@@ -43,10 +43,10 @@ pub fn build_scene_command(
     // Only the scene's own folder is replaced: other scenes (and anything
     // else) in `out` stay.
     let prefix = format!("{}/", result.name);
-    let mut files: std::collections::BTreeMap<String, Vec<u8>> = result
-        .files
-        .iter()
-        .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes.clone())))
+    // Moved, not copied: a glTF scene's mesh files may be large.
+    let mut files: std::collections::BTreeMap<String, Vec<u8>> = std::mem::take(&mut result.files)
+        .into_iter()
+        .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes)))
         .collect();
     // Self-contained: the baked LUTs the shaders bind ride along at the
     // path their bindings name (`luts/…`), taken from ./generated when it
@@ -102,7 +102,7 @@ pub fn build_scene_command(
             result.name,
             result.metadata.instances.len(),
             result.metadata.shaders.len(),
-            result.files.len(),
+            files.len(),
             out.join(&result.name).display(),
             started.elapsed().as_secs_f64()
         );

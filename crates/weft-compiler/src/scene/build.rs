@@ -169,7 +169,12 @@ fn keyword_names(m: &Material, inst: &ResolvedInstance) -> BTreeMap<String, Stri
 }
 
 /// Hash of everything the scene's output depends on.
-fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
+/// `meshes`: the glTF mesh files the scene carries ([`file_meshes`]).
+fn scene_inputs_hash(
+    scene: &ResolvedScene,
+    db: &SourceDb,
+    meshes: &BTreeMap<String, Vec<u8>>,
+) -> String {
     let mut h = Sha256::new();
     h.update(env!("CARGO_PKG_VERSION"));
     h.update(compose::ENGINE_INTERFACE);
@@ -177,7 +182,7 @@ fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     for m in &scene.materials {
         h.update(crate::library::inputs_hash(m, db));
     }
-    for (name, bytes) in file_meshes(scene) {
+    for (name, bytes) in meshes {
         h.update(name);
         h.update(bytes);
     }
@@ -660,7 +665,10 @@ pub fn build_resolved_scene(
     }
     let instances = drawn;
     let meshes = scene_meshes(scene);
-    for (path, bytes) in file_meshes(scene) {
+    // Serialised once: hashed, then moved into the output.
+    let mesh_files = file_meshes(scene);
+    let inputs_hash = scene_inputs_hash(scene, db, &mesh_files);
+    for (path, bytes) in mesh_files {
         files.insert(format!("{}/{path}", manifest.name), bytes);
     }
     let metadata = SceneMetadata {
@@ -669,7 +677,7 @@ pub fn build_resolved_scene(
         engine_interface_version: ENGINE_INTERFACE_VERSION,
         name: manifest.name.clone(),
         description: manifest.description.clone(),
-        inputs_hash: scene_inputs_hash(scene, db),
+        inputs_hash,
         features: SceneFeatures {
             environment: features.environment,
             sh_ambient: features.sh_ambient,

@@ -108,7 +108,17 @@ impl GltfFile {
                     "re-export the file; a GLB is a 12-byte header, a JSON chunk and an optional BIN chunk",
                 )
             })?;
-            (json.to_vec(), bin.map(<[u8]>::to_vec))
+            // The BIN chunk keeps the file's own allocation (moved to its
+            // front, the rest cut off): memory stays at one copy of the file.
+            let json = json.to_vec();
+            let bin = bin.map(|b| (b.as_ptr() as usize - bytes.as_ptr() as usize, b.len()));
+            let bin = bin.map(|(start, len)| {
+                let mut owned = bytes;
+                owned.drain(..start);
+                owned.truncate(len);
+                owned
+            });
+            (json, bin)
         } else {
             (bytes, None)
         };
