@@ -531,25 +531,14 @@ enum TierMesh<'a> {
     File(&'a weft_meta::mesh::MeshData),
 }
 
-/// A camera that frames a mesh of the scene folder: its bounds' centre
-/// seen from +Z, the bounding sphere filling 95 % of the 35° field.
+/// The camera `weft preview --mesh` frames a mesh with (`Scene::framing`),
+/// as scene metadata states it.
 fn framing_camera(data: &weft_meta::mesh::MeshData) -> SceneCamera {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in &data.positions {
-        for k in 0..3 {
-            lo[k] = lo[k].min(f64::from(p[k]));
-            hi[k] = hi[k].max(f64::from(p[k]));
-        }
-    }
-    let centre: [f64; 3] = std::array::from_fn(|k| 0.5 * (lo[k] + hi[k]));
-    let radius = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt() * 0.5;
-    let fov: f64 = 35.0;
-    let distance = radius.max(1e-3) / (0.5 * fov.to_radians()).sin() / 0.95;
+    let camera = Scene::framing(weft_render::mesh_from_data(data.clone())).camera;
     SceneCamera {
-        position: [centre[0], centre[1], centre[2] + distance],
-        target: centre,
-        fov_degrees: fov,
+        position: camera.eye.map(f64::from),
+        target: camera.target.map(f64::from),
+        fov_degrees: f64::from(camera.fov_y_degrees),
     }
 }
 
