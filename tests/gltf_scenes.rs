@@ -106,9 +106,9 @@ fn gltf_materials_map_as_documented() {
     let frame = by_name("sofa_p0");
     assert_eq!(frame.material, "standard");
     assert!((number(constant(&meta, "sofa_p0", "specular_strength")) - 0.5).abs() < 1e-6);
-    assert!((number(constant(&meta, "sofa_p0", "roughness")) - 0.45).abs() < 1e-6);
+    assert!((number(constant(&meta, "sofa_p0", "roughness")) - 1.0).abs() < 1e-6);
     let base = constant(&meta, "sofa_p0", "base_color");
-    for (c, want) in base.as_array().unwrap().iter().zip([0.32, 0.2, 0.12, 1.0]) {
+    for (c, want) in base.as_array().unwrap().iter().zip([0.8, 0.62, 0.45, 1.0]) {
         // The factor is linear in glTF; weft uploads linear: the round trip
         // through the sRGB-edited parameter keeps it.
         assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{base}");
@@ -304,4 +304,177 @@ fn a_character_from_gltf_extras_builds_with_its_weft_materials() {
         "{:?}",
         face.passes
     );
+}
+
+/// An instance's bound texture file and its texels from the scene's files.
+fn bound_image<'a>(
+    meta: &'a SceneMetadata,
+    files: &'a std::collections::BTreeMap<String, Vec<u8>>,
+    instance: &str,
+    param: &str,
+) -> (&'a weft_meta::ResourceFile, &'a [u8]) {
+    let inst = meta.instances.iter().find(|i| i.name == instance).unwrap();
+    let t = inst
+        .textures
+        .values()
+        .find(|t| t.parameter == param)
+        .unwrap_or_else(|| panic!("{instance}: `{param}` is not bound"));
+    let file = t.file.as_ref().expect("an image file");
+    let bytes = files
+        .get(&format!("{}/{}", meta.name, file.path))
+        .unwrap_or_else(|| panic!("the scene folder has no {}", file.path));
+    (file, bytes)
+}
+
+#[test]
+fn gltf_textures_become_the_scene_folders_images() {
+    let (meta, files) = showroom();
+    let frame = meta.instances.iter().find(|i| i.name == "sofa_p0").unwrap();
+    assert_eq!(
+        frame.keywords["NORMAL_MAP"], "on",
+        "normalTexture turns the normal map on"
+    );
+    assert!((number(constant(&meta, "sofa_p0", "normal_strength")) - 0.8).abs() < 1e-6);
+    assert!((number(constant(&meta, "sofa_p0", "occlusion_strength")) - 0.7).abs() < 1e-6);
+    // KHR_texture_transform's scale and offset: the base map's tiling.
+    let st = constant(&meta, "sofa_p0", "base_map_st");
+    let st: Vec<f64> = st
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(st, [2.0, 1.0, 0.25, 0.0]);
+    // An image is no constant: the maps stay bound.
+    for p in ["base_map", "normal_map", "rmo_map"] {
+        assert!(!frame.constants.contains_key(p), "{p} folded");
+    }
+    // Base colour: sRGB texels of the 64 × 64 PNG, exactly.
+    let (base, texels) = bound_image(&meta, &files, "sofa_p0", "base_map");
+    assert_eq!(
+        (base.width, base.height, base.format.as_str()),
+        (64, 64, "rgba8unorm_srgb")
+    );
+    assert!(base.path.starts_with("textures/"), "{}", base.path);
+    let mut png = png::Decoder::new(std::io::Cursor::new(gltf_samples::wood_base_color()))
+        .read_info()
+        .unwrap();
+    let mut want = vec![0; png.output_buffer_size().unwrap()];
+    png.next_frame(&mut want).unwrap();
+    assert_eq!(texels, &want[..], "the PNG's texels as stored");
+    // Normal map: linear.
+    let (normal, _) = bound_image(&meta, &files, "sofa_p0", "normal_map");
+    assert_eq!(normal.format, "rgba8unorm");
+    // RMO repacked from the JPEG's G (roughness) and B (metallic) and the
+    // 16 × 16 occlusion PNG's R, at the metallic-roughness map's 32 × 32.
+    let (rmo, texels) = bound_image(&meta, &files, "sofa_p0", "rmo_map");
+    assert_eq!(
+        (rmo.width, rmo.height, rmo.format.as_str()),
+        (32, 32, "rgba8unorm")
+    );
+    let at = |x: usize, y: usize| &texels[(y * 32 + x) * 4..(y * 32 + x) * 4 + 4];
+    // The brass inlay (rows 14–17): metallic, roughness 0.3 (JPEG's error aside).
+    let inlay = at(10, 15);
+    assert!(
+        inlay[1] > 240 && (inlay[0] as i32 - 76).abs() < 12,
+        "{inlay:?}"
+    );
+    let wood = at(10, 4);
+    assert!(wood[1] < 15 && wood[0] > 130, "{wood:?}");
+    // Occlusion: the 16 × 16 map at its nearest texel, darker at the corner.
+    assert!(
+        at(0, 0)[2] < at(16, 16)[2],
+        "{:?} {:?}",
+        at(0, 0),
+        at(16, 16)
+    );
+    assert_eq!(at(16, 16)[3], 255);
+    assert!(
+        texels.len() == 32 * 32 * 4
+            && files.keys().filter(|k| k.contains("/textures/")).count() == 3
+    );
+}
+
+/// A manifest in a temporary folder with `images` written beside it.
+fn image_scene(params: &str, images: &[(&str, Vec<u8>)]) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, bytes) in images {
+        let path = dir.path().join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, bytes).unwrap();
+    }
+    let manifest = dir.path().join("img.scene.toml");
+    std::fs::write(
+        &manifest,
+        format!(
+            "[scene]\nname = \"img\"\nmaterials = {:?}\nvertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]\n\n[[instances]]\nname = \"ball\"\nmaterial = \"standard\"\nmesh = \"sphere\"\nparams = {{ {params} }}\n",
+            repo().join("materials").display().to_string()
+        ),
+    )
+    .unwrap();
+    (dir, manifest)
+}
+
+#[test]
+fn a_scene_binds_png_and_jpeg_images_written_beside_it() {
+    let png = gltf_samples::png_rgba(4, 2, |x, y| [x as u8 * 60, y as u8 * 200, 7, 255]);
+    let jpeg = gltf_samples::wood_metallic_roughness();
+    let (_dir, manifest) = image_scene(
+        "base_map = { file = \"maps/albedo.png\", scale = [3.0, 2.0], offset = [0.5, 0.0] }, rmo_map = { file = \"maps/rmo.jpg\" }",
+        &[("maps/albedo.png", png), ("maps/rmo.jpg", jpeg)],
+    );
+    let out = build_scene(&manifest, &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let (base, texels) = bound_image(&out.metadata, &out.files, "ball", "base_map");
+    assert_eq!((base.width, base.height), (4, 2));
+    assert_eq!(&texels[4..8], &[60, 0, 7, 255]);
+    assert_eq!(&texels[16..20], &[0, 200, 7, 255]);
+    let (rmo, _) = bound_image(&out.metadata, &out.files, "ball", "rmo_map");
+    assert_eq!((rmo.width, rmo.height), (32, 32), "the JPEG decoded");
+    let st = constant(&out.metadata, "ball", "base_map_st");
+    assert_eq!(st, serde_json::json!([3.0, 2.0, 0.5, 0.0]));
+}
+
+#[test]
+fn bad_scene_images_are_errors_at_the_value() {
+    let png = gltf_samples::png_rgba(2, 2, |_, _| [1, 2, 3, 255]);
+    for (params, phrase) in [
+        (
+            "base_map = { file = \"../outside.png\" }",
+            "leaves the manifest's folder",
+        ),
+        ("base_map = { file = \"missing.png\" }", "cannot open"),
+        (
+            "base_map = { file = \"a.png\", texture = 0 }",
+            "need `gltf`",
+        ),
+        ("base_map = { gltf = \"x.glb\" }", "needs `texture`"),
+        (
+            "rmo_map = { file = \"a.png\", scale = [2.0, 2.0] }",
+            "has no tiling",
+        ),
+        ("base_map = { file = \"a.png\", scale = [1.0] }", "[u, v]"),
+        (
+            "base_map = { file = \"a.png\", colour = 1 }",
+            "unknown key `colour`",
+        ),
+        (
+            "base_map = { file = \"not_png.png\" }",
+            "a GIF image (weft reads PNG and JPEG)",
+        ),
+    ] {
+        let (_dir, manifest) = image_scene(
+            params,
+            &[
+                ("a.png", png.clone()),
+                ("not_png.png", b"GIF89a....".to_vec()),
+            ],
+        );
+        let text = build_error(&manifest);
+        assert!(text.contains(phrase), "{params}: no `{phrase}` in:\n{text}");
+        assert!(
+            text.contains("img.scene.toml:"),
+            "{params}: no line in:\n{text}"
+        );
+    }
 }

@@ -4,6 +4,8 @@
 //! image without a PNG decoder.
 
 use weft_front::model::{Material, Param};
+use weft_front::scene::images::SceneImage;
+use weft_front::texture_files::Image;
 use weft_meta::ResourceFile;
 
 /// The file's name in the material's folder: `<parameter>.rgba8`.
@@ -23,16 +25,39 @@ pub fn files(m: &Material) -> Vec<(String, Vec<u8>)> {
 /// its path relative to the library root, format, size, layout and hash.
 pub fn resource_file(m: &Material, p: &Param) -> Option<ResourceFile> {
     let f = p.file.as_ref()?;
-    Some(ResourceFile {
-        path: format!("{}/{}", m.name, file_name(p)),
-        format: if p.srgb {
+    Some(rgba8_file(
+        format!("{}/{}", m.name, file_name(p)),
+        &f.image,
+        p.srgb,
+        &format!("`{}`", f.path),
+        "PNG",
+    ))
+}
+
+/// What the scene metadata says about a scene image (docs/scenes.md
+/// "Images"): `textures/<hash>.rgba8`, relative to the scene folder.
+pub fn scene_image_file(image: &SceneImage, srgb: bool) -> ResourceFile {
+    rgba8_file(
+        image.file_name(),
+        &image.image,
+        srgb,
+        &image.source,
+        "image",
+    )
+}
+
+/// `kind`: what the source is (`PNG`, `image`), as the channels text names it.
+fn rgba8_file(path: String, image: &Image, srgb: bool, source: &str, kind: &str) -> ResourceFile {
+    ResourceFile {
+        path,
+        format: if srgb {
             "rgba8unorm_srgb"
         } else {
             "rgba8unorm"
         }
         .into(),
-        width: f.image.width,
-        height: f.image.height,
+        width: image.width,
+        height: image.height,
         layout: "width × height texels, rows in order (row 0 first: the top row of the \
                  image), texels in a row left to right; each texel four bytes (r, g, b, a); no \
                  header, no padding"
@@ -40,20 +65,19 @@ pub fn resource_file(m: &Material, p: &Param) -> Option<ResourceFile> {
         u: "0 at the left edge of the image, 1 at the right".into(),
         v: "0 at the top edge of the image (row 0), 1 at the bottom".into(),
         channels: format!(
-            "rgba of `{}` as stored{}: grey expanded to rgb, alpha 255 where the PNG has \
+            "rgba of {source} as stored{}: grey expanded to rgb, alpha 255 where the {kind} has \
              none, 16-bit samples rounded to 8 bits",
-            f.path,
-            if p.srgb {
+            if srgb {
                 " (sRGB-encoded: sample through an sRGB view)"
             } else {
                 " (linear data)"
             }
         ),
-        sha256: Some(f.image.sha256.clone()),
+        sha256: Some(image.sha256.clone()),
         mip_chain: Some(weft_meta::MipChain::for_texture(
-            f.image.width,
-            f.image.height,
-            p.srgb,
+            image.width,
+            image.height,
+            srgb,
         )),
-    })
+    }
 }

@@ -137,20 +137,92 @@ pub fn decode_png(bytes: &[u8]) -> Result<Image, String> {
         png::ColorType::Grayscale => samples.iter().flat_map(|&g| [g, g, g, 255]).collect(),
         png::ColorType::Indexed => return Err("a palette PNG that did not expand".into()),
     };
-    if rgba8.len() as u64 != u64::from(width) * u64::from(height) * 4 {
-        return Err("the decoded image has the wrong number of texels".into());
+    Image::new(width, height, rgba8)
+}
+
+/// A baseline or progressive JPEG's texels as [`Image`] holds them (alpha
+/// 255); `Err` says why not. The decoder runs its portable code path (no
+/// SIMD), so the texels are the same on every machine.
+pub fn decode_jpeg(bytes: &[u8]) -> Result<Image, String> {
+    use zune_jpeg::zune_core::{colorspace::ColorSpace, options::DecoderOptions};
+    let max = MAX_TEXTURE_FILE_SIZE as usize;
+    let options = DecoderOptions::default()
+        .set_max_width(max)
+        .set_max_height(max)
+        .jpeg_set_out_colorspace(ColorSpace::RGBA);
+    let mut decoder = zune_jpeg::JpegDecoder::new_with_options(
+        zune_jpeg::zune_core::bytestream::ZCursor::new(bytes),
+        options,
+    );
+    decoder
+        .decode_headers()
+        .map_err(|e| format!("not a JPEG this decoder reads ({e:?})"))?;
+    let info = decoder
+        .info()
+        .ok_or_else(|| "a JPEG without a frame header".to_string())?;
+    let (width, height) = (u32::from(info.width), u32::from(info.height));
+    if width == 0 || height == 0 {
+        return Err("a JPEG of no texels".into());
     }
-    use sha2::Digest;
-    let sha256 = sha2::Sha256::digest(&rgba8)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect();
-    Ok(Image {
-        width,
-        height,
-        rgba8,
-        sha256,
-    })
+    let rgba8 = decoder
+        .decode()
+        .map_err(|e| format!("cannot decode it ({e:?})"))?;
+    Image::new(width, height, rgba8)
+}
+
+/// A PNG or a JPEG, told apart by their signatures; anything else is
+/// refused by what it looks like (KTX2, WebP, …).
+pub fn decode_image(bytes: &[u8]) -> Result<Image, String> {
+    if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
+        decode_png(bytes)
+    } else if bytes.starts_with(&[0xff, 0xd8, 0xff]) {
+        decode_jpeg(bytes)
+    } else {
+        Err(format!(
+            "{} (weft reads PNG and JPEG)",
+            match bytes {
+                [0xab, b'K', b'T', b'X', b' ', b'2', b'0', ..] => "a KTX2 image",
+                [
+                    b'R',
+                    b'I',
+                    b'F',
+                    b'F',
+                    _,
+                    _,
+                    _,
+                    _,
+                    b'W',
+                    b'E',
+                    b'B',
+                    b'P',
+                    ..,
+                ] => "a WebP image",
+                [b'D', b'D', b'S', b' ', ..] => "a DDS image",
+                [b'G', b'I', b'F', b'8', ..] => "a GIF image",
+                _ => "neither a PNG nor a JPEG",
+            }
+        ))
+    }
+}
+
+impl Image {
+    /// Texels as decoded, checked against the size, with their hash.
+    pub fn new(width: u32, height: u32, rgba8: Vec<u8>) -> Result<Image, String> {
+        if rgba8.len() as u64 != u64::from(width) * u64::from(height) * 4 {
+            return Err("the decoded image has the wrong number of texels".into());
+        }
+        use sha2::Digest;
+        let sha256 = sha2::Sha256::digest(&rgba8)
+            .iter()
+            .map(|b| format!("{b:02x}"))
+            .collect();
+        Ok(Image {
+            width,
+            height,
+            rgba8,
+            sha256,
+        })
+    }
 }
 
 #[cfg(test)]

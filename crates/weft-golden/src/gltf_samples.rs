@@ -223,7 +223,15 @@ pub fn showroom() -> Vec<u8> {
           "pbrMetallicRoughness": { "baseColorFactor": [0.18, 0.02, 0.05, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8 },
           "extensions": { "KHR_materials_sheen": { "sheenColorFactor": [0.55, 0.22, 0.3], "sheenRoughnessFactor": 0.6 } } },
         { "name": "Sofa frame",
-          "pbrMetallicRoughness": { "baseColorFactor": [0.32, 0.2, 0.12, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.45 },
+          "pbrMetallicRoughness": { "baseColorFactor": [0.8, 0.62, 0.45, 1.0], "metallicFactor": 1.0, "roughnessFactor": 1.0,
+              "baseColorTexture": { "index": 0,
+                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+              "metallicRoughnessTexture": { "index": 2,
+                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } } },
+          "normalTexture": { "index": 1, "scale": 0.8,
+              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+          "occlusionTexture": { "index": 3, "strength": 0.7,
+              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
           "extensions": { "KHR_materials_specular": { "specularFactor": 0.5 } } },
         { "name": "Cushion",
           "pbrMetallicRoughness": { "baseColorFactor": [0.05, 0.12, 0.3, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.9 },
@@ -273,10 +281,29 @@ pub fn showroom() -> Vec<u8> {
     .collect();
     let mut sofa = frame;
     sofa.extend(cushions);
+    // The frame's maps, stored in the BIN chunk: PNG and JPEG, of three
+    // sizes (the occlusion map is resampled into the RMO map's size).
+    let images: Vec<Value> = [
+        (wood_base_color(), "image/png"),
+        (wood_normals(), "image/png"),
+        (wood_metallic_roughness(), "image/jpeg"),
+        (wood_occlusion(), "image/png"),
+    ]
+    .into_iter()
+    .map(|(data, mime)| {
+        let view = packed.push(data, 0);
+        packed.views[view]
+            .as_object_mut()
+            .expect("view")
+            .remove("target");
+        json!({ "bufferView": view, "mimeType": mime })
+    })
+    .collect();
     let json = json!({
         "asset": asset(),
         "extensionsUsed": ["KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_iridescence",
-                           "KHR_materials_anisotropy", "KHR_lights_punctual", "KHR_materials_variants"],
+                           "KHR_materials_anisotropy", "KHR_lights_punctual", "KHR_materials_variants",
+                           "KHR_texture_transform"],
         "scene": 0,
         "scenes": [ { "name": "Showroom", "nodes": [0, 1, 2, 3, 4, 5, 6, 7] } ],
         "nodes": [
@@ -298,6 +325,9 @@ pub fn showroom() -> Vec<u8> {
             { "name": "silk swatch", "primitives": [silk] },
         ],
         "materials": materials,
+        "textures": [ { "source": 0, "sampler": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3 } ],
+        "samplers": [ { "magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497 } ],
+        "images": images,
         "cameras": [ { "type": "perspective", "perspective": { "yfov": 0.6, "znear": 0.1, "aspectRatio": 1.6 } } ],
         "extensions": {
             "KHR_lights_punctual": { "lights": [
@@ -310,6 +340,82 @@ pub fn showroom() -> Vec<u8> {
         "accessors": packed.accessors,
     });
     glb(&json, &packed.bin)
+}
+
+/// A PNG of `w` × `h` RGB(A) texels from `f(x, y)`.
+pub fn png_rgba(w: u32, h: u32, f: impl Fn(u32, u32) -> [u8; 4]) -> Vec<u8> {
+    let data: Vec<u8> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .flat_map(|(x, y)| f(x, y))
+        .collect();
+    let mut out = Vec::new();
+    let mut e = png::Encoder::new(&mut out, w, h);
+    e.set_color(png::ColorType::Rgba);
+    e.set_depth(png::BitDepth::Eight);
+    let mut writer = e.write_header().expect("png header");
+    writer.write_image_data(&data).expect("png data");
+    writer.finish().expect("png end");
+    out
+}
+
+/// Wood grain: stripes along u with a slow wobble (sRGB).
+fn wood_grain(x: u32, y: u32) -> f32 {
+    let (u, v) = (x as f32 / 64.0, y as f32 / 64.0);
+    let ring = (v * 9.0 + 0.6 * (u * std::f32::consts::TAU).sin()).fract();
+    (ring * std::f32::consts::PI).sin().powi(4)
+}
+
+pub fn wood_base_color() -> Vec<u8> {
+    png_rgba(64, 64, |x, y| {
+        let g = wood_grain(x, y);
+        let c = |lo: f32, hi: f32| (255.0 * (lo + (hi - lo) * g)).round() as u8;
+        [c(0.62, 0.38), c(0.42, 0.22), c(0.26, 0.12), 255]
+    })
+}
+
+/// Tangent-space normals of the grain's height (grooves where it is dark).
+fn wood_normals() -> Vec<u8> {
+    png_rgba(64, 64, |x, y| {
+        let dv = wood_grain(x, (y + 1) % 64) - wood_grain(x, (y + 63) % 64);
+        let n = [0.0f32, -dv * 1.5, 1.0];
+        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        let e = |c: f32| (255.0 * (c / len * 0.5 + 0.5)).round() as u8;
+        [e(n[0]), e(n[1]), e(n[2]), 255]
+    })
+}
+
+/// glTF metallic-roughness (G roughness, B metallic) as a JPEG: rough in
+/// the grain, a brass inlay band (metallic) across the middle.
+pub fn wood_metallic_roughness() -> Vec<u8> {
+    let (w, h) = (32u16, 32u16);
+    let data: Vec<u8> = (0..u32::from(h))
+        .flat_map(|y| {
+            (0..u32::from(w)).flat_map(move |x| {
+                let inlay = (14..18).contains(&y);
+                let rough = if inlay {
+                    0.3
+                } else {
+                    0.55 + 0.35 * wood_grain(x * 2, y * 2)
+                };
+                [0, (255.0 * rough) as u8, if inlay { 255 } else { 0 }]
+            })
+        })
+        .collect();
+    let mut out = Vec::new();
+    jpeg_encoder::Encoder::new(&mut out, 95)
+        .encode(&data, w, h, jpeg_encoder::ColorType::Rgb)
+        .expect("jpeg");
+    out
+}
+
+/// Ambient occlusion, darker towards the edges of each face (R; 16 × 16).
+fn wood_occlusion() -> Vec<u8> {
+    png_rgba(16, 16, |x, y| {
+        let d = |t: u32| (t as f32 + 0.5) / 16.0 * (1.0 - (t as f32 + 0.5) / 16.0) * 4.0;
+        let ao = (0.45 + 0.55 * (d(x) * d(y)).sqrt()).min(1.0);
+        let a = (255.0 * ao).round() as u8;
+        [a, a, a, 255]
+    })
 }
 
 /// The bust as `.gltf` JSON and its `.bin`: each part's weft material from
@@ -403,6 +509,58 @@ pub fn hostile() -> Vec<(&'static str, Vec<u8>, &'static str, &'static str)> {
             phrase,
         ));
     };
+    // Images are read when an instance binds them: each case's material
+    // has a base colour texture.
+    let textured = |v: &mut Value, image: Value, texture: Value| {
+        v["materials"][0]["pbrMetallicRoughness"] = json!({ "baseColorTexture": { "index": 0 } });
+        v["textures"] = json!([texture]);
+        v["images"] = json!([image]);
+    };
+    let b64 = |bytes: &[u8]| {
+        use base64::Engine as _;
+        base64::engine::general_purpose::STANDARD.encode(bytes)
+    };
+    case(
+        "image_outside_folder",
+        &|v| {
+            textured(
+                v,
+                json!({ "uri": "../../secret.png" }),
+                json!({ "source": 0 }),
+            )
+        },
+        "/images/0",
+        "leaves the file's folder",
+    );
+    case(
+        "image_webp_data_uri",
+        &|v| {
+            let uri = format!("data:image/webp;base64,{}", b64(b"RIFF\0\0\0\0WEBPVP8 "));
+            textured(v, json!({ "uri": uri }), json!({ "source": 0 }))
+        },
+        "/images/0",
+        "image/webp",
+    );
+    case(
+        "image_not_an_image",
+        &|v| {
+            let uri = format!("data:image/png;base64,{}", b64(b"not a picture at all"));
+            textured(v, json!({ "uri": uri }), json!({ "source": 0 }))
+        },
+        "/images/0",
+        "neither a PNG nor a JPEG",
+    );
+    case(
+        "image_truncated_png",
+        &|v| {
+            let mut png = png_rgba(8, 8, |x, y| [x as u8 * 30, y as u8 * 30, 0, 255]);
+            png.truncate(png.len() / 2);
+            let uri = format!("data:image/png;base64,{}", b64(&png));
+            textured(v, json!({ "uri": uri }), json!({ "source": 0 }))
+        },
+        "/images/0",
+        "cannot decode",
+    );
     case(
         "required_clearcoat",
         &|v| {

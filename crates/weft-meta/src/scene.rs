@@ -247,8 +247,10 @@ pub struct SceneInstance {
     /// Id of the entry of [`SceneMetadata::shaders`] to draw with.
     pub shader: String,
     /// Parameter values folded into the shader as literals (as uploaded:
-    /// colours linear), by parameter name. Curves and gradients are never
-    /// folded: they stay in the uniform / ramp texture and are listed in `uniform_values`.
+    /// colours linear), by parameter name; a texture's folded tiling by its
+    /// uniform member's name (`<texture>_st`: scale xy, offset zw). Curves
+    /// and gradients are never folded: they stay in the uniform / ramp
+    /// texture and are listed in `uniform_values`.
     pub constants: BTreeMap<String, serde_json::Value>,
     /// Parameters the engine may still change at run time, in manifest order.
     pub dynamic: Vec<String>,

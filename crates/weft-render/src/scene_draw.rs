@@ -377,7 +377,7 @@ impl Renderer {
                 (bound, counts)
             }
             Some(lib) => {
-                let material = lib.instance_material(inst)?;
+                let material = lib.instance_material(inst, &scene.dir)?;
                 let (bound, _) =
                     self.bind_material(&material, &inst.passes, options, model, env.clone())?;
                 let counts = inst

@@ -26,8 +26,13 @@ impl Library {
         }
     }
 
-    /// The instance's material configured as the instance.
-    pub fn instance_material(&mut self, inst: &SceneInstance) -> Result<Material> {
+    /// The instance's material configured as the instance; the scene's own
+    /// images (`textures/…`, docs/scenes.md "Images") read from `scene_dir`.
+    pub fn instance_material(
+        &mut self,
+        inst: &SceneInstance,
+        scene_dir: &Path,
+    ) -> Result<Material> {
         let name = &inst.material;
         let mut material = match self.materials.get(name) {
             Some(m) => m.clone(),
@@ -39,6 +44,22 @@ impl Library {
             }
         };
         configure_instance_material(&mut material, inst)?;
+        for t in inst.textures.values() {
+            let Some(file) = &t.file else { continue };
+            // The material's own image is bound by the variant already.
+            let shipped = material
+                .metadata()
+                .parameters
+                .iter()
+                .find(|p| p.name == t.parameter)
+                .and_then(|p| p.texture.as_ref()?.file.as_ref())
+                .is_some_and(|f| f.path == file.path);
+            if !shipped {
+                let roots = crate::texture_files::scene_roots(scene_dir);
+                let value = crate::texture_files::read(&roots, file)?;
+                material.set_as_uploaded(&t.parameter, Value::Texture(value))?;
+            }
+        }
         Ok(material)
     }
 }
@@ -66,35 +87,21 @@ pub fn configure_instance_material(material: &mut Material, inst: &SceneInstance
         )));
     }
     for (name, v) in &inst.constants {
-        let p = material.parameter(name)?.clone();
-        material.set_as_uploaded(name, uploaded_value(&p, v)?)?;
+        if material
+            .metadata()
+            .parameters
+            .iter()
+            .any(|p| p.name == *name)
+        {
+            let p = material.parameter(name)?.clone();
+            material.set_as_uploaded(name, uploaded_value(&p, v)?)?;
+        } else {
+            // A folded texture tiling (`<texture>_st`), by its member name.
+            set_member(material, name, v)?;
+        }
     }
     for (member, v) in &inst.uniform_values {
-        let params = &material.metadata().parameters;
-        if let Some(p) = params
-            .iter()
-            .find(|p| p.uniform_member.as_deref() == Some(member))
-        {
-            let p = p.clone();
-            material.set_as_uploaded(&p.name, uploaded_value(&p, v)?)?;
-        } else if let Some(p) = params
-            .iter()
-            .find(|p| p.texture.as_ref().and_then(|t| t.tiling_member.as_deref()) == Some(member))
-        {
-            let name = p.name.clone();
-            let st = numbers(v)
-                .and_then(|n| <[f64; 4]>::try_from(n).ok())
-                .ok_or_else(|| Error::InvalidValue {
-                    name: member.clone(),
-                    message: format!("expected 4 numbers (tiling xy, offset zw), got {v}"),
-                })?;
-            material.set_tiling(&name, st)?;
-        } else {
-            return Err(Error::Metadata(format!(
-                "uniform member `{member}` belongs to no parameter of material `{}`",
-                material.name()
-            )));
-        }
+        set_member(material, member, v)?;
     }
     for (binding, t) in &inst.textures {
         // Left at its image: unset, so the variant's binding binds the file.
@@ -197,4 +204,35 @@ fn builtin_texture(v: &serde_json::Value, srgb: bool) -> Option<TextureDefault> 
                 .zip(s)
                 .all(|(a, b)| (a - f64::from(b)).abs() < 1e-6)
     })
+}
+
+/// One uniform member's value as uploaded: a parameter's member, or a
+/// texture's tiling (`<texture>_st`).
+fn set_member(material: &mut Material, member: &str, v: &serde_json::Value) -> Result<()> {
+    let params = &material.metadata().parameters;
+    if let Some(p) = params
+        .iter()
+        .find(|p| p.uniform_member.as_deref() == Some(member))
+    {
+        let p = p.clone();
+        material.set_as_uploaded(&p.name, uploaded_value(&p, v)?)?;
+    } else if let Some(p) = params
+        .iter()
+        .find(|p| p.texture.as_ref().and_then(|t| t.tiling_member.as_deref()) == Some(member))
+    {
+        let name = p.name.clone();
+        let st = numbers(v)
+            .and_then(|n| <[f64; 4]>::try_from(n).ok())
+            .ok_or_else(|| Error::InvalidValue {
+                name: member.to_string(),
+                message: format!("expected 4 numbers (tiling xy, offset zw), got {v}"),
+            })?;
+        material.set_tiling(&name, st)?;
+    } else {
+        return Err(Error::Metadata(format!(
+            "uniform member `{member}` belongs to no parameter of material `{}`",
+            material.name()
+        )));
+    }
+    Ok(())
 }

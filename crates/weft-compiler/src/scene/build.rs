@@ -573,6 +573,22 @@ pub fn build_resolved_scene(
                         ramp_rgba8: Some(weft_front::samples::bake_gradient(stops, p.samples)),
                         srgb: true,
                     },
+                    (_, ParamValue::Texture(t)) if inst.images.contains_key(&pi) => {
+                        // The scene's image: carried once per distinct image.
+                        let image = &inst.images[&pi];
+                        let file = crate::texture_files::scene_image_file(image, p.srgb);
+                        files.insert(
+                            format!("{}/{}", manifest.name, file.path),
+                            image.image.rgba8.clone(),
+                        );
+                        SceneTexture {
+                            parameter: pname.clone(),
+                            builtin: Some(*t),
+                            file: Some(file),
+                            ramp_rgba8: None,
+                            srgb: p.srgb,
+                        }
+                    }
                     (_, ParamValue::Texture(t)) => SceneTexture {
                         parameter: pname.clone(),
                         builtin: Some(*t),

@@ -124,19 +124,27 @@ pub fn instance_values(
             && let Some((c, json)) = encoded(
                 &TILING_OFFSET_TYPE,
                 MemberEncoding::TilingOffset,
-                &Upload::TilingOffset(TILING_OFFSET_DEFAULT),
+                // An image's scale and offset (`KHR_texture_transform`), else none.
+                &Upload::TilingOffset(
+                    inst.images
+                        .get(&i)
+                        .map_or(TILING_OFFSET_DEFAULT, |img| img.tiling),
+                ),
             )
         {
-            uniform.insert(st.name.clone(), json);
+            uniform.insert(st.name.clone(), json.clone());
             if !dynamic {
                 fold.members.insert(st.name.clone(), c);
+                // Recorded by member name: the tiling is no parameter.
+                constants.insert(st.name.clone(), json);
             }
         }
         let set = inst.set.get(i).copied().unwrap_or(true);
-        // An unset texture with an image (`file`) stays bound to it: an
-        // image is no constant.
+        // A texture with an image (the scene's, or unset with its `file`)
+        // stays bound to it: an image is no constant.
         if let (ParamKind::Texture2d | ParamKind::Cube, ParamValue::Texture(t)) = (p.kind, v)
             && !dynamic
+            && !inst.images.contains_key(&i)
             && (set || p.file.is_none())
         {
             // An unset texture starts from its keyword-dependent default.

@@ -401,9 +401,10 @@ pub fn scene_manifest(
             used.push(d.material);
         }
     }
+    let relative = pathdiff(&file.path, manifest_dir);
     let mut mappings = Vec::new();
     for m in &used {
-        let mut mapping = map_material(file, *m)?;
+        let mut mapping = map_material(file, *m, &relative)?;
         let key_name = mapping.gltf_name.clone();
         let key_index = m.map_or("#default".to_string(), |i| format!("#{i}"));
         if let Some(o) = overrides
@@ -414,7 +415,6 @@ pub fn scene_manifest(
         }
         mappings.push(mapping);
     }
-    let relative = pathdiff(&file.path, manifest_dir);
     let mut header = String::new();
     let out = &mut header;
     let _ = writeln!(

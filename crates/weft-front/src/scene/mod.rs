@@ -8,6 +8,7 @@
 //! keywords, tier and variant checked). The format: docs/scenes.md.
 
 pub mod gltf_layer;
+pub mod images;
 pub mod model;
 pub mod parse;
 pub mod resolve;

@@ -265,6 +265,9 @@ pub struct ResolvedInstance {
     /// Parameters the engine still sets at run time (indices into the material's params).
     pub dynamic: Vec<usize>,
     pub dynamic_spans: Vec<Span>,
+    /// `texture2d` parameters set to an image (`scene::images`), by
+    /// parameter index: bound to the image, never folded.
+    pub images: std::collections::BTreeMap<usize, super::images::SceneImage>,
     pub mesh: InstanceMesh,
     pub vertex_inputs: Vec<VertexAttribute>,
     /// Where the mesh's inputs are declared (scene or instance), for the compiler's check.

@@ -14,7 +14,8 @@ use crate::values::{self, RangeReport, Site};
 use crate::variants::{self, VariantKey};
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use std::path::{Path, PathBuf};
-use weft_meta::KeywordMode;
+use toml::de::DeValue;
+use weft_meta::{KeywordMode, ParamKind};
 
 /// Checks every instance against its material. The scene is complete only
 /// when this added no error; the caller decides from the error count.
@@ -28,6 +29,7 @@ pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> Re
         .parent()
         .map(Path::to_path_buf)
         .unwrap_or_default();
+    let mut images = super::images::SceneImages::new(&manifest_dir);
     let mut instances = Vec::new();
     for (decl, written) in manifest.instances.iter().zip(&params) {
         let Some(mesh) = instance_mesh(decl, &manifest_dir, &mut gltf, file, diags) else {
@@ -46,7 +48,11 @@ pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> Re
             m: material,
             index,
         };
-        if let Some(instance) = at.instance(written, mesh, &mut cx) {
+        let mut files = Files {
+            images: &mut images,
+            gltf: &mut gltf,
+        };
+        if let Some(instance) = at.instance(written, mesh, &mut files, &mut cx) {
             instances.push(instance);
         }
     }
@@ -311,9 +317,16 @@ struct Resolving<'r> {
     index: usize,
 }
 
+/// What an instance's values may read: images, through glTF files opened once per scene.
+struct Files<'f> {
+    images: &'f mut super::images::SceneImages,
+    gltf: &'f mut crate::gltf::GltfCache,
+}
+
 /// Values and keywords as they resolve, with where each keyword and the tier came from.
 struct State {
     values: Vec<ParamValue>,
+    images: std::collections::BTreeMap<usize, super::images::SceneImage>,
     /// Which values the preset or the instance wrote.
     set: Vec<bool>,
     keywords: Vec<usize>,
@@ -327,11 +340,13 @@ impl Resolving<'_> {
         &self,
         written: &[WrittenParam],
         mesh: InstanceMesh,
+        files: &mut Files,
         cx: &mut Cx,
     ) -> Option<ResolvedInstance> {
         let (decl, m) = (self.decl, self.m);
         let mut state = State {
             values: m.params.iter().map(|p| p.default.clone()).collect(),
+            images: Default::default(),
             set: vec![false; m.params.len()],
             keywords: m.keywords.iter().map(|k| k.default).collect(),
             keyword_from: vec![Source::Default; m.keywords.len()],
@@ -347,7 +362,7 @@ impl Resolving<'_> {
         {
             self.check_excluded(tier, &state, cx);
         }
-        self.apply_params(&mut state, written, cx);
+        self.apply_params(&mut state, written, files, cx);
         let (dynamic, dynamic_spans) = self.dynamic(cx);
         let (vertex_inputs, vertex_inputs_span) = match &decl.vertex_inputs {
             Some(v) => (v.value.clone(), v.span.clone()),
@@ -366,6 +381,7 @@ impl Resolving<'_> {
             set: state.set,
             dynamic,
             dynamic_spans,
+            images: state.images,
             mesh,
             variant: decl.variant.as_ref().map(|v| v.value.clone()),
             vertex_inputs,
@@ -530,7 +546,13 @@ impl Resolving<'_> {
     }
 
     /// The instance's `params`, typed against the material's declarations.
-    fn apply_params(&self, state: &mut State, written: &[WrittenParam], cx: &mut Cx) {
+    fn apply_params(
+        &self,
+        state: &mut State,
+        written: &[WrittenParam],
+        files: &mut Files,
+        cx: &mut Cx,
+    ) {
         let m = self.m;
         for w in written {
             let Some(i) = m.params.iter().position(|p| p.name == w.name) else {
@@ -573,7 +595,14 @@ impl Resolving<'_> {
                 },
             };
             let mark = cx.diags.len();
-            if let Some(v) = values::parse_value(w.value, p.kind, p.range, &site, cx) {
+            state.images.remove(&i);
+            if p.kind == ParamKind::Texture2d && matches!(w.value.get_ref(), DeValue::Table(_)) {
+                // An image: the value stays the default, the binding the image's.
+                let what = format!("`{}` of {}", w.name, self.what());
+                if let Some(image) = files.images.load(w.value, &what, p.tiling, files.gltf, cx) {
+                    state.images.insert(i, image);
+                }
+            } else if let Some(v) = values::parse_value(w.value, p.kind, p.range, &site, cx) {
                 *slot = v;
             }
             // Point every problem with the value at the declaration too.
