@@ -478,3 +478,54 @@ fn bad_scene_images_are_errors_at_the_value() {
         );
     }
 }
+
+#[test]
+fn an_auto_tier_left_without_screen_size_takes_the_cameras_view() {
+    // The shipped showroom leaves the satin ball's `screen_size` out: the
+    // build derives it from the file's camera (docs/gltf.md "Camera").
+    let path = repo().join("generated/scenes/showroom/showroom.scene.json");
+    let meta = SceneMetadata::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let ball = meta.instances.iter().find(|i| i.name == "satin_ball").unwrap();
+    let choice = ball.tier_choice.as_ref().expect("an auto tier");
+    // The sphere's bounding box (half-diagonal √3 · scale 0.35) at the
+    // node's translation, seen by the camera in a 1080-pixel-high frame.
+    let radius = 3f64.sqrt() * 0.35;
+    let centre = [-0.5, 0.35, 0.9];
+    let d = (0..3)
+        .map(|k| (centre[k] - meta.camera.position[k]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let half_height = d * (meta.camera.fov_degrees.to_radians() / 2.0).tan();
+    let want = (radius / half_height * 540.0).round() as u32;
+    assert_eq!(choice.screen_size, want);
+}
+
+#[test]
+fn the_funnel_counts_what_the_scene_keeps() {
+    let (meta, files) = showroom();
+    let f = meta.funnel.as_ref().expect("a funnel");
+    assert_eq!(
+        (f.gltf_file.as_deref(), f.gltf_materials, f.gltf_materials_used),
+        (Some("showroom.glb"), Some(7), Some(7))
+    );
+    let stand_ins: usize = meta.variants.values().map(|v| v.len()).sum();
+    assert_eq!(f.instances, meta.instances.len() + stand_ins);
+    assert_eq!(f.shaders, meta.shaders.len());
+    let distinct: std::collections::BTreeSet<&str> = meta
+        .instances
+        .iter()
+        .chain(meta.variants.values().flat_map(|v| v.values()))
+        .map(|i| i.variant.as_str())
+        .collect();
+    assert_eq!(f.generic_variants, distinct.len());
+    let bytes: usize = files
+        .iter()
+        .filter(|(k, _)| {
+            [".wgsl", ".spv", ".hlsl", ".metal", ".glsl"]
+                .iter()
+                .any(|e| k.ends_with(e))
+        })
+        .map(|(_, b)| b.len())
+        .sum();
+    assert_eq!(f.shader_bytes, bytes as u64);
+}

@@ -615,6 +615,7 @@ fn instance_scene(
         conventions: meta.conventions.clone(),
         meshes,
         variants: BTreeMap::new(),
+        funnel: None,
         limits: meta.limits.clone(),
         instances: vec![SceneInstance {
             name: request.instance.to_string(),

@@ -29,7 +29,7 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// of meshes the scene folder carries (from glTF) with `file` and `radius`
 /// in place of `path`; an instance's `transform.model` may be any affine
 /// matrix (translation, rotation and scale are then read back from it).
-pub const SCENE_SCHEMA_MINOR: u32 = 4;
+pub const SCENE_SCHEMA_MINOR: u32 = 5;
 
 /// The main light's direction (from the surface towards the light, world
 /// space; length ≈ 1, normalise it) when a scene manifest has no `[light]`:
@@ -112,6 +112,10 @@ pub struct SceneMetadata {
     /// `instances`). Their shaders are in `shaders`. Absent when none.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub variants: BTreeMap<String, BTreeMap<String, SceneInstance>>,
+    /// What the scene needs, step by step (schema 3.5): from the glTF's
+    /// materials to the unique shaders the folder carries. Absent in older files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub funnel: Option<SceneFunnel>,
 }
 
 /// A mesh's file (`weft_meta::mesh`): exactly one of `path` (a built-in
@@ -271,6 +275,33 @@ pub struct SceneInstance {
     #[cfg_attr(feature = "schema", schemars(description = crate::names::tier_choice_description()))]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tier_choice: Option<TierChoice>,
+}
+
+/// The build's funnel: how much of the source the scene keeps. Generic
+/// variants against unique shaders is what specialisation saves in count;
+/// the per-instance cost saving is in `generated/reports/scenes.md`
+/// (`cargo xtask bench gpu-model`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
+pub struct SceneFunnel {
+    /// The glTF file the instances came from (as the manifest names it);
+    /// absent for a scene written by hand.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gltf_file: Option<String>,
+    /// Materials in the glTF file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gltf_materials: Option<usize>,
+    /// glTF materials the scene's nodes draw with (material variants included).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gltf_materials_used: Option<usize>,
+    /// Instances, material variants' stand-ins included.
+    pub instances: usize,
+    /// Distinct library variants the instances would draw with unspecialised.
+    pub generic_variants: usize,
+    /// Unique specialised shaders the scene folder carries.
+    pub shaders: usize,
+    /// Bytes of the shader files (every language) the scene folder carries.
+    pub shader_bytes: u64,
 }
 
 /// A texture to bind for a material texture binding.

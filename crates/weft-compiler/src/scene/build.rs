@@ -687,6 +687,7 @@ pub fn build_resolved_scene(
     for (path, bytes) in mesh_files {
         files.insert(format!("{}/{path}", manifest.name), bytes);
     }
+    let funnel = funnel(manifest, &shaders, &generic_variants, &files);
     let metadata = SceneMetadata {
         schema_version: SCENE_SCHEMA_VERSION,
         schema_minor: weft_meta::scene::SCENE_SCHEMA_MINOR,
@@ -717,6 +718,7 @@ pub fn build_resolved_scene(
         meshes,
         variants,
         limits: scene_limits(scene),
+        funnel: Some(funnel),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");
     json.push('\n');
@@ -732,4 +734,31 @@ pub fn build_resolved_scene(
         warnings: None,
         materials_root: manifest.materials_root.clone(),
     })
+}
+
+/// The funnel: the glTF's materials, the instances, the distinct generic
+/// variants they would draw with and the unique shaders that replace them.
+fn funnel(
+    manifest: &weft_front::scene::model::SceneManifest,
+    shaders: &[SceneShader],
+    generic_variants: &[String],
+    files: &BTreeMap<String, Vec<u8>>,
+) -> weft_meta::scene::SceneFunnel {
+    let gltf = manifest.gltf.as_ref();
+    let distinct: std::collections::BTreeSet<&String> = generic_variants.iter().collect();
+    let shader_bytes = shaders
+        .iter()
+        .flat_map(|s| s.shader.files.values().flatten())
+        .filter_map(|f| files.get(&format!("{}/{}", manifest.name, f.path)))
+        .map(|b| b.len() as u64)
+        .sum();
+    weft_meta::scene::SceneFunnel {
+        gltf_file: gltf.map(|g| g.file.clone()),
+        gltf_materials: gltf.map(|g| g.materials),
+        gltf_materials_used: gltf.map(|g| g.materials_used),
+        instances: generic_variants.len(),
+        generic_variants: distinct.len(),
+        shaders: shaders.len(),
+        shader_bytes,
+    }
 }

@@ -130,7 +130,7 @@ pub struct GltfScene {
     pub light: String,
     /// Every `[[instances]]` table.
     pub instances: String,
-    /// Materials in the file → used by the drawn nodes.
+    /// Materials in the file → used by the drawn nodes (variants included).
     pub materials_in_file: usize,
     pub materials_used: usize,
     /// Per used glTF material: its mapping (losses included).
@@ -278,6 +278,32 @@ fn round(x: f64) -> f64 {
     }
 }
 
+/// The viewport height `auto` tiers' `screen_size` is derived for when a
+/// glTF material leaves it out: a 1080-pixel-high frame.
+pub const VIEWPORT_HEIGHT: f64 = 1080.0;
+
+/// Where the scene's camera stands (for `screen_size`).
+#[derive(Clone, Copy, Debug)]
+struct View {
+    eye: [f64; 3],
+    fov_degrees: f64,
+}
+
+/// The size on screen, in pixels of a [`VIEWPORT_HEIGHT`]-high frame, of a
+/// sphere of `radius` at `centre` seen from `view`: its diameter over the
+/// frustum's height at its distance, clamped to what `screen_size` takes.
+fn screen_size(view: &View, centre: [f64; 3], radius: f64) -> u32 {
+    let distance = (0..3)
+        .map(|k| (centre[k] - view.eye[k]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+        .max(radius.max(1e-6));
+    let half_height = distance * (view.fov_degrees.to_radians() * 0.5).tan();
+    (radius / half_height * VIEWPORT_HEIGHT * 0.5)
+        .round()
+        .clamp(16.0, 4096.0) as u32
+}
+
 /// `[camera]`: the first perspective camera in the scene, else a framing of
 /// the bounds from +Z (a three-quarter view is not assumed: glTF is +Y up,
 /// front facing +Z).
@@ -286,7 +312,7 @@ fn camera(
     placed: &[(usize, Mat4)],
     draws: &[Draw],
     warnings: &mut Warnings,
-) -> String {
+) -> (String, View) {
     let doc = &file.document;
     let framing = bounds(file, draws);
     for (i, world) in placed {
@@ -303,13 +329,14 @@ fn camera(
                 });
                 let target = std::array::from_fn(|k| round(eye[k] + forward[k] * distance));
                 let fov = (p.yfov() as f64).to_degrees().clamp(1.0, 179.0);
-                return format!(
+                let text = format!(
                     "[camera]\n# node {i}'s camera (`/cameras/{}`)\nposition = {}\ntarget = {}\nfov_degrees = {}\n",
                     cam.index(),
                     vec3(eye.map(round)),
                     vec3(target),
                     float(round(fov))
                 );
+                return (text, View { eye, fov_degrees: fov });
             }
             gltf::camera::Projection::Orthographic(_) => warnings.push(format!(
                 "{}: /cameras/{}: an orthographic camera; weft's scene camera is perspective: the scene is framed instead",
@@ -321,11 +348,19 @@ fn camera(
     let (centre, radius) = framing.unwrap_or(([0.0; 3], 1.0));
     let fov: f64 = 35.0;
     let distance = radius / (fov.to_radians() * 0.5).sin() * 1.1;
-    format!(
+    let eye = [centre[0], centre[1], centre[2] + distance].map(round);
+    let text = format!(
         "[camera]\n# no camera in the file: its bounds framed from +Z\nposition = {}\ntarget = {}\nfov_degrees = {}\n",
-        vec3([centre[0], centre[1], centre[2] + distance].map(round)),
+        vec3(eye),
         vec3(centre.map(round)),
         float(fov)
+    );
+    (
+        text,
+        View {
+            eye,
+            fov_degrees: fov,
+        },
     )
 }
 
@@ -443,7 +478,7 @@ pub fn scene_manifest(
         );
     }
     out.push_str("vertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]\n");
-    let camera = camera(file, &placed, &draws, warnings);
+    let (camera, view) = camera(file, &placed, &draws, warnings);
     let light = light(file, &placed, warnings);
     let mut instances = String::new();
     let out = &mut instances;
@@ -501,6 +536,15 @@ pub fn scene_manifest(
         }
         if let Some(s) = mapping.screen_size {
             let _ = writeln!(out, "screen_size = {s}");
+        } else if mapping.tier.as_deref() == Some("auto")
+            && let Some((centre, radius)) = bounds(file, std::slice::from_ref(d))
+        {
+            // Left out: what the scene's camera gives the primitive.
+            let _ = writeln!(
+                out,
+                "screen_size = {}  # the camera's view of it in a {VIEWPORT_HEIGHT}-pixel-high frame",
+                screen_size(&view, centre, radius)
+            );
         }
         if !mapping.keywords.is_empty() {
             let kw: Vec<String> = mapping
@@ -614,4 +658,22 @@ fn layer(mut base: MaterialMapping, o: &MaterialMapping) -> MaterialMapping {
     }
     base.rule = "[gltf.materials]";
     base
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn screen_size_is_the_spheres_share_of_the_frame_height() {
+        let view = View {
+            eye: [0.0; 3],
+            fov_degrees: 60.0,
+        };
+        // r / (d tan 30°) of half the frame: 1 / (10 · 0.57735) · 540 = 93.5.
+        assert_eq!(screen_size(&view, [0.0, 0.0, -10.0], 1.0), 94);
+        // Clamped to what `screen_size` takes.
+        assert_eq!(screen_size(&view, [0.0, 0.0, -1e6], 1.0), 16);
+        assert_eq!(screen_size(&view, [0.0, 0.0, -1.0], 1.0), 4096);
+    }
 }

@@ -94,7 +94,7 @@ pub fn compose(
     manifest_path: &Path,
     cx: &mut Cx,
     warnings: &mut Warnings,
-) -> Option<String> {
+) -> Option<(String, super::model::GltfSource)> {
     let top = Table {
         map: doc,
         span: 0..0,
@@ -153,5 +153,10 @@ pub fn compose(
         out.push('\n');
     }
     out.push_str(&scene.instances);
-    Some(out)
+    let source = super::model::GltfSource {
+        file: file.clone(),
+        materials: scene.materials_in_file,
+        materials_used: scene.materials_used,
+    };
+    Some((out, source))
 }

@@ -19,6 +19,7 @@ pub use parse::{CAMERA_KEYS, INSTANCE_KEYS, LIGHT_KEYS, SCENE_KEYS, TOP_KEYS};
 use crate::diag::{Diagnostics, SourceDb};
 use crate::toml_reader::Cx;
 use codespan_reporting::diagnostic::Diagnostic;
+use model::GltfSource;
 use std::path::{Path, PathBuf};
 
 /// Parses and resolves a scene manifest; loads (and checks) each material it
@@ -49,11 +50,12 @@ pub fn load_scene(
         for w in warnings {
             diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
         }
-        let composed = composed?;
+        let (composed, source) = composed?;
         let display = db.name(file).to_string();
         let file = db.add(&abs, display, composed.clone());
         let doc = parse::parse_document(&composed, &mut Cx { file, diags })?;
-        let parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
+        let mut parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
+        parsed.manifest.gltf = Some(source);
         let scene = resolve::resolve(parsed, db, diags);
         return (diags.error_count() == before).then_some(scene);
     }
@@ -97,7 +99,7 @@ pub fn load_gltf_scene(
             return None;
         }
     };
-    let (text, warnings, virtual_path) = manifest;
+    let (text, warnings, virtual_path, source) = manifest;
     for w in warnings {
         diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
     }
@@ -105,17 +107,19 @@ pub fn load_gltf_scene(
     let file = db.add(&virtual_path, display, text.clone());
     let before = diags.error_count();
     let doc = parse::parse_document(&text, &mut Cx { file, diags })?;
-    let parsed = parse::parse_manifest(doc.get_ref(), &virtual_path, &mut Cx { file, diags })?;
+    let mut parsed = parse::parse_manifest(doc.get_ref(), &virtual_path, &mut Cx { file, diags })?;
+    parsed.manifest.gltf = Some(source);
     let scene = resolve::resolve(parsed, db, diags);
     (diags.error_count() == before).then_some(scene)
 }
 
-/// The generated manifest text, its warnings, and the manifest's path
-/// (`<gltf folder>/<name>.scene.toml`: never written, it names the scene).
+/// The generated manifest text, its warnings, the manifest's path
+/// (`<gltf folder>/<name>.scene.toml`: never written, it names the scene)
+/// and the funnel's first steps.
 pub fn gltf_manifest(
     path: &Path,
     materials_root: Option<&Path>,
-) -> Result<(String, Vec<String>, PathBuf), crate::gltf::GltfError> {
+) -> Result<(String, Vec<String>, PathBuf, GltfSource), crate::gltf::GltfError> {
     let mut warnings = Vec::new();
     let file = crate::gltf::GltfFile::open(path, &mut warnings)?;
     let stem = path
@@ -145,10 +149,18 @@ pub fn gltf_manifest(
             ));
         }
     }
+    let source = GltfSource {
+        file: path
+            .file_name()
+            .map_or(String::new(), |f| f.to_string_lossy().into_owned()),
+        materials: scene.materials_in_file,
+        materials_used: scene.materials_used,
+    };
     Ok((
         scene.manifest(),
         warnings,
         dir.join(format!("{name}{}", parse::SCENE_SUFFIX)),
+        source,
     ))
 }
 

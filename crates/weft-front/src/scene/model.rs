@@ -212,6 +212,18 @@ pub struct InstanceVariant {
     pub replaces: String,
 }
 
+/// The glTF file a scene's instances come from (a bare `.gltf`/`.glb`, or
+/// a manifest's `[gltf]`): the first steps of the build's funnel.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GltfSource {
+    /// The file as the manifest names it (relative to the manifest's folder).
+    pub file: String,
+    /// Materials in the file.
+    pub materials: usize,
+    /// Materials the scene's nodes draw with (material variants included).
+    pub materials_used: usize,
+}
+
 /// `scenes/<name>.scene.toml` as written.
 #[derive(Clone, Debug)]
 pub struct SceneManifest {
@@ -234,6 +246,8 @@ pub struct SceneManifest {
     /// The GPU family `tier = "auto"` costs tiers for (`[scene] gpu_family`).
     pub gpu_family: String,
     pub instances: Vec<InstanceDecl>,
+    /// Where the instances came from when a glTF file made them.
+    pub gltf: Option<GltfSource>,
 }
 
 /// How an instance's tier was chosen.

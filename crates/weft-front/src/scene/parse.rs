@@ -249,6 +249,7 @@ pub fn parse_manifest<'a, 'i>(
         max_shaders,
         gpu_family,
         instances: Vec::new(),
+        gltf: None,
     };
     let mut params = Vec::new();
     let items = match top.get("instances") {
