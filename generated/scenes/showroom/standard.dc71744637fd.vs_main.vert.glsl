@@ -65,9 +65,57 @@ float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
+    float a2_ = (a_1 * a_1);
+    float noh = clamp(dot(n_2, h), 0.0, 1.0);
+    vec3 nxh = cross(n_2, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float roughness_2) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = ((_e6 * (1.0 - a_2)) + a_2);
+    float gl = ((_e7 * (1.0 - a_2)) + a_2);
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_safe_normalize_k1_(vec3 v_1) {
@@ -86,31 +134,55 @@ vec3 weft_main_light_radiance() {
     return max(_e2.xyz, vec3(0.0));
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n_3) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_2, vec3 world_position) {
+float weft_specular_mip(float roughness_3) {
+    float r = clamp(roughness_3, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_vs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float len2_2 = dot(t_proj, t_proj);
+    bool ok = (len2_2 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_2, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position) {
     vec3 color = vec3(0.0);
     color = color_in;
     vec3 _e4 = color;
@@ -118,8 +190,12 @@ vec3 standard_sphere_map(vec3 color_in, vec3 n_2, vec3 world_position) {
 }
 
 vec3 weft_safe_normalize_k2_(vec3 v_2) {
-    float len2_2 = dot(v_2, v_2);
-    return ((len2_2 > 1e-20) ? (v_2 * inversesqrt(max(len2_2, 1e-20))) : vec3(0.0));
+    float len2_3 = dot(v_2, v_2);
+    return ((len2_3 > 1e-20) ? (v_2 * inversesqrt(max(len2_3, 1e-20))) : vec3(0.0));
+}
+
+vec2 weft_transform_uv_k3_(vec2 uv) {
+    return ((uv * vec2(2.0, 1.0)) + vec2(0.25, 0.0));
 }
 
 vec3 weft_view_direction_k4_(vec3 world_position_1) {
@@ -128,37 +204,9 @@ vec3 weft_view_direction_k4_(vec3 world_position_1) {
     return _e7;
 }
 
-float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
-    float _e6 = weft_clamp_cos(n_dot_v);
-    float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.7975) + 0.20249999);
-    float gl = ((_e7 * 0.7975) + 0.20249999);
-    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
-    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
-}
-
-vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
-}
-
-vec3 weft_f_schlick_k8_(float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
-}
-
-float weft_d_ggx_nh_k9_(vec3 n_3, vec3 h) {
-    float noh = clamp(dot(n_3, h), 0.0, 1.0);
-    vec3 nxh = cross(n_3, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
-    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
-}
-
-float weft_specular_mip_k13_() {
-    float _e5 = _group_0_binding_0_vs.params.x;
-    float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.62325 * max_mip);
+vec3 weft_unpack_normal_k5_(vec3 texel) {
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * 0.8), max(v_3.z, 0.001));
 }
 
 void main() {
