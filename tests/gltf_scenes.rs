@@ -485,7 +485,11 @@ fn an_auto_tier_left_without_screen_size_takes_the_cameras_view() {
     // build derives it from the file's camera (docs/gltf.md "Camera").
     let path = repo().join("generated/scenes/showroom/showroom.scene.json");
     let meta = SceneMetadata::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
-    let ball = meta.instances.iter().find(|i| i.name == "satin_ball").unwrap();
+    let ball = meta
+        .instances
+        .iter()
+        .find(|i| i.name == "satin_ball")
+        .unwrap();
     let choice = ball.tier_choice.as_ref().expect("an auto tier");
     // The sphere's bounding box (half-diagonal √3 · scale 0.35) at the
     // node's translation, seen by the camera in a 1080-pixel-high frame.
@@ -505,7 +509,11 @@ fn the_funnel_counts_what_the_scene_keeps() {
     let (meta, files) = showroom();
     let f = meta.funnel.as_ref().expect("a funnel");
     assert_eq!(
-        (f.gltf_file.as_deref(), f.gltf_materials, f.gltf_materials_used),
+        (
+            f.gltf_file.as_deref(),
+            f.gltf_materials,
+            f.gltf_materials_used
+        ),
         (Some("showroom.glb"), Some(7), Some(7))
     );
     let stand_ins: usize = meta.variants.values().map(|v| v.len()).sum();

@@ -267,16 +267,18 @@ fn every_scene_draws_from_its_metadata_alone_like_weft_render() {
                 passes: &inst.passes,
                 languages: None,
             };
-            let p = scene_inputs(meta, inst, &shader.shader).and_then(|inputs| {
-                s.engine.prepare(
-                    &mut world,
-                    &sref,
-                    Language::Wgsl,
-                    &inputs,
-                    &mesh,
-                    &library::instance_model(inst),
-                )
-            });
+            let p = scene_inputs(meta, inst, &shader.shader, path.parent().unwrap()).and_then(
+                |inputs| {
+                    s.engine.prepare(
+                        &mut world,
+                        &sref,
+                        Language::Wgsl,
+                        &inputs,
+                        &mesh,
+                        &library::instance_model(inst),
+                    )
+                },
+            );
             match p {
                 Ok(p) => {
                     pipelines += p.pipelines.passes.len();

@@ -345,6 +345,14 @@ fn schema_matches_parser_keys() {
         ),
         sorted(scene::parse::GLTF_MESH_KEYS)
     );
+    assert_eq!(
+        property_names(
+            &s,
+            &resolve(&s, &prop(&instance, "params"))["additionalProperties"]["anyOf"][1],
+            "params.<texture> = { … }"
+        ),
+        sorted(scene::images::IMAGE_KEYS)
+    );
 
     let meshes: Vec<String> = scene::model::BuiltinMesh::ALL
         .iter()

@@ -315,9 +315,13 @@ pub struct SceneTexture {
     /// cannot load the file binds instead).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub builtin: Option<TextureDefault>,
-    /// A texture parameter left at the image it ships (`file` in the
-    /// material's TOML): bind this file's texels (its `path` is relative to
-    /// the library root, two folders above the scene metadata).
+    /// An image to bind: the instance's own (a scene image, docs/scenes.md
+    /// "Images": `textures/<hash>.rgba8`) or, for a texture parameter left
+    /// unset, the image its material ships (`file` in the material's TOML:
+    /// `<material>/<parameter>.rgba8`). Read `path` relative to the scene
+    /// folder first (a scene folder holds every file it binds); a material's
+    /// image is also at the same path under the library root, two folders
+    /// above the scene metadata in a project build.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub file: Option<crate::ResourceFile>,
     /// For gradients: the baked ramp, RGBA8 sRGB-encoded, row-major (`width` x 1).

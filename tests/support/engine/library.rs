@@ -282,12 +282,14 @@ pub fn library_inputs(
 }
 
 /// A scene instance as built: the uniform from `uniform_values` (by member
-/// name), textures from `textures` (by binding name), instance counts fixed
-/// or the folded/uploaded int value.
+/// name), textures from `textures` (by binding name; an image's file read
+/// from the scene folder `scene_dir` first, as docs/scenes.md says, else
+/// the library root), instance counts fixed or the folded/uploaded int value.
 pub fn scene_inputs(
     meta: &SceneMetadata,
     inst: &SceneInstance,
     shader: &VariantShader,
+    scene_dir: &Path,
 ) -> Result<MaterialInputs, String> {
     let uniform = match shader
         .bindings
@@ -320,7 +322,15 @@ pub fn scene_inputs(
         })?;
         let data = match (&t.builtin, &t.ramp_rgba8) {
             // Left at its image: the file (`builtin` is a fallback).
-            _ if t.file.is_some() => TextureData::File(t.file.clone().expect("checked")),
+            _ if t.file.is_some() => {
+                let mut f = t.file.clone().expect("checked");
+                let in_scene = scene_dir.join(&f.path);
+                if in_scene.is_file() {
+                    // Absolute: joined to the library root it stays itself.
+                    f.path = in_scene.to_string_lossy().into_owned();
+                }
+                TextureData::File(f)
+            }
             (Some(d), None) => TextureData::Builtin(builtin_texel(meta.conventions.as_ref(), *d)?),
             (None, Some(r)) => TextureData::Ramp(r.clone()),
             _ => {

@@ -93,6 +93,19 @@ pub struct GltfCache {
 }
 
 impl GltfCache {
+    /// A cache holding `file` already opened (so the resolver reads its
+    /// meshes and images without opening it again).
+    pub fn with_file(file: Arc<GltfFile>) -> GltfCache {
+        let key = file
+            .path
+            .canonicalize()
+            .unwrap_or_else(|_| file.path.clone());
+        GltfCache {
+            files: BTreeMap::from([(key, Ok(file))]),
+            ..GltfCache::default()
+        }
+    }
+
     pub fn file(&mut self, path: &Path) -> Result<Arc<GltfFile>, GltfError> {
         let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
         if let Some(f) = self.files.get(&key) {

@@ -94,7 +94,7 @@ pub fn compose(
     manifest_path: &Path,
     cx: &mut Cx,
     warnings: &mut Warnings,
-) -> Option<(String, super::model::GltfSource)> {
+) -> Option<(String, super::model::GltfSource, std::sync::Arc<GltfFile>)> {
     let top = Table {
         map: doc,
         span: 0..0,
@@ -115,9 +115,11 @@ pub fn compose(
     };
     let dir = manifest_path.parent().unwrap_or(Path::new("."));
     let overrides = overrides(&gltf, text, cx);
-    let result = GltfFile::open(&dir.join(&file), warnings)
-        .and_then(|opened| scene_manifest(&opened, "gltf", dir, None, &overrides, warnings));
-    let scene = match result {
+    let result = GltfFile::open(&dir.join(&file), warnings).and_then(|opened| {
+        let scene = scene_manifest(&opened, "gltf", dir, None, &overrides, warnings)?;
+        Ok((scene, std::sync::Arc::new(opened)))
+    });
+    let (scene, opened) = match result {
         Ok(s) => s,
         Err(e) => {
             cx.error_with_note(
@@ -158,5 +160,5 @@ pub fn compose(
         materials: scene.materials_in_file,
         materials_used: scene.materials_used,
     };
-    Some((out, source))
+    Some((out, source, opened))
 }

@@ -50,13 +50,14 @@ pub fn load_scene(
         for w in warnings {
             diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
         }
-        let (composed, source) = composed?;
+        let (composed, source, opened) = composed?;
         let display = db.name(file).to_string();
         let file = db.add(&abs, display, composed.clone());
         let doc = parse::parse_document(&composed, &mut Cx { file, diags })?;
         let mut parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
         parsed.manifest.gltf = Some(source);
-        let scene = resolve::resolve(parsed, db, diags);
+        let cache = crate::gltf::GltfCache::with_file(opened);
+        let scene = resolve::resolve_with(parsed, cache, db, diags);
         return (diags.error_count() == before).then_some(scene);
     }
     let parsed = parse::parse_manifest(doc.get_ref(), &abs, &mut Cx { file, diags })?;
@@ -99,7 +100,7 @@ pub fn load_gltf_scene(
             return None;
         }
     };
-    let (text, warnings, virtual_path, source) = manifest;
+    let (text, warnings, virtual_path, source, opened) = manifest;
     for w in warnings {
         diags.push(Diagnostic::warning().with_code("gltf").with_message(w));
     }
@@ -109,19 +110,30 @@ pub fn load_gltf_scene(
     let doc = parse::parse_document(&text, &mut Cx { file, diags })?;
     let mut parsed = parse::parse_manifest(doc.get_ref(), &virtual_path, &mut Cx { file, diags })?;
     parsed.manifest.gltf = Some(source);
-    let scene = resolve::resolve(parsed, db, diags);
+    let cache = crate::gltf::GltfCache::with_file(opened);
+    let scene = resolve::resolve_with(parsed, cache, db, diags);
     (diags.error_count() == before).then_some(scene)
 }
 
+/// What [`gltf_manifest`] gives: the text, warnings, the manifest's path,
+/// the funnel's first steps and the opened file.
+pub type GltfManifest = (
+    String,
+    Vec<String>,
+    PathBuf,
+    GltfSource,
+    std::sync::Arc<crate::gltf::GltfFile>,
+);
+
 /// The generated manifest text, its warnings, the manifest's path
 /// (`<gltf folder>/<name>.scene.toml`: never written, it names the scene)
-/// and the funnel's first steps.
+/// the funnel's first steps and the opened file (for the resolver).
 pub fn gltf_manifest(
     path: &Path,
     materials_root: Option<&Path>,
-) -> Result<(String, Vec<String>, PathBuf, GltfSource), crate::gltf::GltfError> {
+) -> Result<GltfManifest, crate::gltf::GltfError> {
     let mut warnings = Vec::new();
-    let file = crate::gltf::GltfFile::open(path, &mut warnings)?;
+    let file = std::sync::Arc::new(crate::gltf::GltfFile::open(path, &mut warnings)?);
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -161,6 +173,7 @@ pub fn gltf_manifest(
         warnings,
         dir.join(format!("{name}{}", parse::SCENE_SUFFIX)),
         source,
+        file,
     ))
 }
 

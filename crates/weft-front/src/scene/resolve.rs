@@ -20,10 +20,19 @@ use weft_meta::{KeywordMode, ParamKind};
 /// Checks every instance against its material. The scene is complete only
 /// when this added no error; the caller decides from the error count.
 pub fn resolve(parsed: Parsed, db: &mut SourceDb, diags: &mut Diagnostics) -> ResolvedScene {
+    resolve_with(parsed, crate::gltf::GltfCache::default(), db, diags)
+}
+
+/// [`resolve`] with glTF files already opened (a glTF scene's own file).
+pub fn resolve_with(
+    parsed: Parsed,
+    mut gltf: crate::gltf::GltfCache,
+    db: &mut SourceDb,
+    diags: &mut Diagnostics,
+) -> ResolvedScene {
     let Parsed { manifest, params } = parsed;
     let file = manifest.file;
     let mut library = Library::new(&manifest.materials_root);
-    let mut gltf = crate::gltf::GltfCache::default();
     let manifest_dir = manifest
         .path
         .parent()
