@@ -14,6 +14,8 @@
 //!
 //! With no Vulkan adapter these tests fail with what to install; they never skip.
 
+#[path = "gltf_brdf.rs"]
+mod gltf_brdf;
 #[path = "gltf_scenes.rs"]
 mod gltf_scenes;
 
