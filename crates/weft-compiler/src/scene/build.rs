@@ -109,16 +109,18 @@ fn decide_tiers(
                 let values = instance_values(m, inst, m.tiers.default, &scene.manifest.features);
                 let mut request_values = values.uniform.clone();
                 request_values.extend(values.constants.clone());
+                // The glTF mesh's streams, read back from its file bytes.
+                let mesh_data = match &inst.mesh {
+                    InstanceMesh::File(f) => Some(f.data()),
+                    InstanceMesh::Builtin(_) => None,
+                };
                 let request = AutoTierRequest {
                     instance: &inst.name,
                     material: &libraries[&inst.material],
                     keywords: keyword_names(m, inst),
                     values: request_values,
                     mesh: inst.mesh.name(),
-                    mesh_data: match &inst.mesh {
-                        InstanceMesh::File(f) => Some(&f.data),
-                        InstanceMesh::Builtin(_) => None,
-                    },
+                    mesh_data: mesh_data.as_ref(),
                     features: scene.manifest.features,
                     error_budget: *error_budget,
                     screen_size: *screen_size,
@@ -168,13 +170,10 @@ fn keyword_names(m: &Material, inst: &ResolvedInstance) -> BTreeMap<String, Stri
         .collect()
 }
 
-/// Hash of everything the scene's output depends on.
-/// `meshes`: the glTF mesh files the scene carries ([`file_meshes`]).
-fn scene_inputs_hash(
-    scene: &ResolvedScene,
-    db: &SourceDb,
-    meshes: &BTreeMap<String, Vec<u8>>,
-) -> String {
+/// Hash of everything the scene's output depends on but its glTF meshes
+/// (hashed on top by the caller, from the files it carries): the manifest,
+/// the materials, the toolchain and every image an instance binds.
+fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     let mut h = Sha256::new();
     h.update(env!("CARGO_PKG_VERSION"));
     h.update(compose::ENGINE_INTERFACE);
@@ -182,9 +181,11 @@ fn scene_inputs_hash(
     for m in &scene.materials {
         h.update(crate::library::inputs_hash(m, db));
     }
-    for (name, bytes) in meshes {
-        h.update(name);
-        h.update(bytes);
+    for inst in &scene.instances {
+        for (param, image) in &inst.images {
+            h.update(param.to_le_bytes());
+            h.update(&image.image.sha256);
+        }
     }
     h.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
@@ -204,7 +205,7 @@ fn scene_meshes(
                 InstanceMesh::File(m) => (
                     None,
                     Some(weft_meta::mesh::mesh_path(&name)),
-                    Some(m.data.radius()),
+                    Some(m.radius),
                 ),
             };
             let mesh = weft_meta::scene::SceneMesh {
@@ -220,13 +221,32 @@ fn scene_meshes(
 
 /// The glTF meshes the scene carries: `meshes/<name>.mesh` (in the scene
 /// folder) → the file's bytes, each once.
-fn file_meshes(scene: &ResolvedScene) -> BTreeMap<String, Vec<u8>> {
-    scene
-        .instances
-        .iter()
-        .filter_map(|i| match &i.mesh {
-            InstanceMesh::File(m) => Some((weft_meta::mesh::mesh_path(&m.name), m.data.to_bytes())),
-            InstanceMesh::Builtin(_) => None,
+///
+/// Moved out of the instances (which are spent: their meshes become the
+/// built-in placeholder), so that the build never holds a mesh twice.
+fn file_meshes(instances: &mut [ResolvedInstance]) -> BTreeMap<String, Vec<u8>> {
+    let mut by_name: BTreeMap<String, Vec<std::sync::Arc<weft_front::gltf::FileMesh>>> =
+        BTreeMap::new();
+    for inst in instances.iter_mut() {
+        if matches!(inst.mesh, InstanceMesh::File(_))
+            && let InstanceMesh::File(m) = std::mem::replace(
+                &mut inst.mesh,
+                InstanceMesh::Builtin(weft_front::scene::model::BuiltinMesh::Sphere),
+            )
+        {
+            by_name.entry(m.name.clone()).or_default().push(m);
+        }
+    }
+    by_name
+        .into_iter()
+        .map(|(name, mut refs)| {
+            let last = refs.pop().expect("at least one");
+            drop(refs);
+            // The last holder moves the bytes; one still shared elsewhere
+            // (a caller's own clone) is copied.
+            let bytes =
+                std::sync::Arc::try_unwrap(last).map_or_else(|m| m.bytes.clone(), |m| m.bytes);
+            (weft_meta::mesh::mesh_path(&name), bytes)
         })
         .collect()
 }
@@ -315,14 +335,14 @@ fn build_instance(
 
 /// Builds a resolved scene. Diagnostics point into the scene file.
 pub fn build_resolved_scene(
-    scene: &ResolvedScene,
+    mut scene: ResolvedScene,
     db: &mut SourceDb,
     diags: &mut Diagnostics,
     options: &SceneBuildOptions,
 ) -> Option<SceneOutput> {
     let before = diags.error_count();
     let manifest = &scene.manifest;
-    let tiers = decide_tiers(scene, db, diags, options.tier_chooser)?;
+    let tiers = decide_tiers(&scene, db, diags, options.tier_chooser)?;
     if diags.error_count() > before {
         return None;
     }
@@ -412,7 +432,7 @@ pub fn build_resolved_scene(
             Ok(c) => c,
             Err(e) => {
                 diags.push(instance_error(
-                    scene,
+                    &scene,
                     inst,
                     "scene-fold",
                     format!("specialising instance `{}` ({}): {e}", inst.name, m.name),
@@ -680,10 +700,23 @@ pub fn build_resolved_scene(
         }
     }
     let instances = drawn;
-    let meshes = scene_meshes(scene);
-    // Serialised once: hashed, then moved into the output.
-    let mesh_files = file_meshes(scene);
-    let inputs_hash = scene_inputs_hash(scene, db, &mesh_files);
+    let meshes = scene_meshes(&scene);
+    let inputs_hash = scene_inputs_hash(&scene, db);
+    // The meshes' bytes moved out of the instances into the output.
+    let mesh_files = file_meshes(&mut scene.instances);
+    let manifest = &scene.manifest;
+    let inputs_hash = {
+        let mut h = Sha256::new();
+        h.update(inputs_hash);
+        for (name, bytes) in &mesh_files {
+            h.update(name);
+            h.update(bytes);
+        }
+        h.finalize()
+            .iter()
+            .map(|b| format!("{b:02x}"))
+            .collect::<String>()
+    };
     for (path, bytes) in mesh_files {
         files.insert(format!("{}/{path}", manifest.name), bytes);
     }
@@ -717,7 +750,7 @@ pub fn build_resolved_scene(
         conventions: Some(weft_meta::Conventions::current()),
         meshes,
         variants,
-        limits: scene_limits(scene),
+        limits: scene_limits(&scene),
         funnel: Some(funnel),
     };
     let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");

@@ -79,9 +79,21 @@ pub struct FileMesh {
     /// `<file stem>.mesh<m>.p<p>`: the key of the scene metadata's `meshes`
     /// and the file `meshes/<name>.mesh` in the scene folder.
     pub name: String,
-    pub data: weft_meta::mesh::MeshData,
+    /// The primitive as the scene folder carries it (`weft_mesh_v1`): the
+    /// one copy a build holds (docs/gltf.md "Speed and memory"); [`Self::data`]
+    /// reads it back where the streams are needed (`auto` tiers, previews).
+    pub bytes: Vec<u8>,
+    /// The mesh's bounding radius about its origin (scene metadata `meshes.<name>.radius`).
+    pub radius: f64,
     pub provided: Provided,
     pub generated: Vec<&'static str>,
+}
+
+impl FileMesh {
+    /// The vertex streams, read back from [`Self::bytes`].
+    pub fn data(&self) -> weft_meta::mesh::MeshData {
+        weft_meta::mesh::MeshData::from_bytes(&self.bytes).expect("bytes weft serialised")
+    }
 }
 
 /// Opened files and read primitives, each once per scene.
@@ -144,7 +156,8 @@ impl GltfCache {
         );
         let m = Arc::new(FileMesh {
             name: format!("{stem}.mesh{mesh}.p{primitive}"),
-            data: read.data,
+            radius: read.data.radius(),
+            bytes: read.data.to_bytes(),
             provided: read.provided,
             generated: read.generated,
         });
