@@ -177,6 +177,12 @@ pub fn gltf(data: &[u8]) -> String {
                 Ok(s) => out.push_str(&s.manifest()),
                 Err(e) => out.push_str(&format!("{e}\n")),
             }
+            // Every texture's image decoded as a scene would bind it.
+            for t in 0..file.document.textures().count().min(16) {
+                if let Err(e) = weft_front::scene::images::gltf_texture(&file, t) {
+                    out.push_str(&format!("{e}\n"));
+                }
+            }
             for (m, mesh) in file.document.meshes().enumerate().take(16) {
                 for p in 0..mesh.primitives().count().min(16) {
                     if let Err(e) = meshes::read_primitive(&file, m, p) {

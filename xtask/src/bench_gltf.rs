@@ -46,18 +46,28 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
     // The process's own footprint (binary, compiler, materials): a
     // one-triangle scene's peak, subtracted to see what the file costs.
     let tiny = tmp.path().join("tiny.glb");
-    std::fs::write(&tiny, weft_golden::gltf_samples::large(2, 1, 1)).map_err(|e| e.to_string())?;
-    let baseline = run_child(
-        Command::new(&weft)
-            .current_dir(root)
-            .args(["build", "--scene"])
-            .arg(&tiny)
-            .arg("-o")
-            .arg(tmp.path().join("tiny_out"))
-            .args(["--materials", "materials"]),
-    )?
-    .max_rss_kib as f64
-        / 1024.0;
+    let baseline_of = |bytes: Vec<u8>, name: &str| -> Result<f64, String> {
+        std::fs::write(&tiny, bytes).map_err(|e| e.to_string())?;
+        Ok(run_child(
+            Command::new(&weft)
+                .current_dir(root)
+                .args(["build", "--scene"])
+                .arg(&tiny)
+                .arg("-o")
+                .arg(tmp.path().join(name))
+                .args(["--materials", "materials"]),
+        )?
+        .max_rss_kib as f64
+            / 1024.0)
+    };
+    let baseline = baseline_of(weft_golden::gltf_samples::large(2, 1, 1), "tiny_out")?;
+    // The same objects and materials with two triangles each: the
+    // compiler's footprint for this scene's shaders, so that what is left
+    // is what the file's data costs.
+    let structure = baseline_of(
+        weft_golden::gltf_samples::large(2 * args.objects, args.objects, args.materials),
+        "structure_out",
+    )?;
     // Generated after the baseline and dropped before any run: a forked
     // child's peak RSS counts the parent's pages until it execs.
     let glb = tmp.path().join("big.glb");
@@ -94,9 +104,9 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
          Written by `cargo xtask bench gltf --write` ({} runs; `weft build --scene`, release, one fresh process and output folder per run). \
          The scene: `weft_golden::gltf_samples::large({}, {}, {})` — {} draped cloths without tangents (MikkTSpace on each), \
          {} glTF materials (half core PBR → standard, half sheen → velvet), no `auto` tier.\n\n\
-         | triangles | objects | materials | file MiB | build s (min / median / max) | peak RSS MiB (median) | one-triangle scene's peak RSS MiB | (RSS − that) ÷ file |\n\
-         | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: |\n\
-         | {} | {} | {} | {:.1} | {:.2} / {:.2} / {:.2} | {:.0} | {:.0} | {:.1}× |\n\n\
+         | triangles | objects | materials | file MiB | build s (min / median / max) | peak RSS MiB (median) | one-triangle scene's peak RSS MiB | (RSS − that) ÷ file | same objects and materials, 2 triangles each: peak RSS MiB | (RSS − that) ÷ file |\n\
+         | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |\n\
+         | {} | {} | {} | {:.1} | {:.2} / {:.2} / {:.2} | {:.0} | {:.0} | {:.1}× | {:.0} | {:.1}× |\n\n\
          Last run: {summary}\n\nMachine: {} logical CPUs.\n",
         args.runs,
         args.triangles,
@@ -114,6 +124,8 @@ fn run(root: &Path, args: &GltfArgs) -> Result<(), String> {
         rss_mib,
         baseline,
         (rss_mib - baseline) / file_mib,
+        structure,
+        (rss_mib - structure) / file_mib,
         std::thread::available_parallelism().map_or(0, |n| n.get()),
     );
     print!("{report}");

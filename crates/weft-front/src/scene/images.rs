@@ -315,7 +315,7 @@ fn inside(dir: &Path, path: &str) -> Result<PathBuf, String> {
 /// The texels of glTF texture `index`: its `source` image, from a file
 /// beside the glTF, a buffer view or a data URI; PNG and JPEG only. Errors
 /// name the file and the JSON pointer, as every glTF error does.
-fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
+pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
     const HINT: &str =
         "weft reads PNG and JPEG images, from a file beside the glTF, a buffer view or a data URI";
     let fail = |pointer: String, message: String| file.error(&pointer, message, HINT).to_string();
