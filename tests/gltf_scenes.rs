@@ -144,8 +144,42 @@ fn gltf_materials_map_as_documented() {
         ),
         ("microcylinder", Some("silk_shot"), "fast")
     );
-    // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1.
-    assert_eq!(meta.instances.len(), 10);
+    // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1
+    // + 1 + 1 + 1.
+    assert_eq!(meta.instances.len(), 13);
+    // alphaMode MASK → standard's alpha test at alphaCutoff; doubleSided →
+    // the passes draw both faces.
+    let lace = by_name("lace_panel");
+    assert_eq!(lace.keywords["ALPHA_TEST"], "on");
+    assert!((number(constant(&meta, "lace_panel", "alpha_cutoff")) - 0.4).abs() < 1e-6);
+    assert!(
+        lace.passes
+            .iter()
+            .all(|p| p.render_state.cull == weft_meta::CullMode::None
+                && p.primitive.cull_mode == weft_meta::CullMode::None)
+    );
+    // Emission: emissiveFactor (linear, as uploaded) × emissive_strength.
+    let glow = constant(&meta, "glow_bulb", "emissive");
+    for (c, want) in glow.as_array().unwrap().iter().zip([1.0, 0.6, 0.3]) {
+        assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{glow}");
+    }
+    assert!((number(constant(&meta, "glow_bulb", "emissive_strength")) - 2.5).abs() < 1e-6);
+    // alphaMode BLEND → the passes blend, write no depth, draw after opaque.
+    let glass = by_name("glass_block");
+    for p in &glass.passes {
+        assert_eq!(p.render_state.blend, weft_meta::BlendMode::Alpha);
+        assert!(!p.render_state.depth_write && !p.depth_stencil.depth_write_enabled);
+        assert!(p.render_state.queue >= 3000);
+        assert!(p.color_targets[0].blend.is_some());
+    }
+    // Opaque, single-sided materials keep their own state.
+    assert!(
+        frame
+            .passes
+            .iter()
+            .all(|p| p.render_state.cull == weft_meta::CullMode::Back
+                && p.render_state.blend == weft_meta::BlendMode::Opaque)
+    );
     // KHR_materials_variants: the linen variant's stand-ins for both
     // cushions, built (their shader listed), not drawn by default.
     let linen = &meta.variants["linen cushions"];
@@ -391,7 +425,7 @@ fn gltf_textures_become_the_scene_folders_images() {
     assert_eq!(at(16, 16)[3], 255);
     assert!(
         texels.len() == 32 * 32 * 4
-            && files.keys().filter(|k| k.contains("/textures/")).count() == 3
+            && files.keys().filter(|k| k.contains("/textures/")).count() == 4
     );
 }
 
@@ -514,7 +548,7 @@ fn the_funnel_counts_what_the_scene_keeps() {
             f.gltf_materials,
             f.gltf_materials_used
         ),
-        (Some("showroom.glb"), Some(7), Some(7))
+        (Some("showroom.glb"), Some(10), Some(10))
     );
     let stand_ins: usize = meta.variants.values().map(|v| v.len()).sum();
     assert_eq!(f.instances, meta.instances.len() + stand_ins);

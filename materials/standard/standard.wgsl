@@ -23,12 +23,15 @@
 //               fast tier's terms in weft_half (f16 with shader-f16; the
 //               f32 fallback otherwise), roughness floored at 0.089
 //               (standard_low below, lib/half.wgsl).
-// All: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube.
+// All: Lambert diffuse with 1/pi, L2 SH ambient, prefiltered environment cube,
+// emission added after lighting (glTF emissive), back faces shaded with the
+// flipped normal (a double-sided instance draws them: glTF doubleSided), and
+// with ALPHA_TEST fragments below the alpha cutoff discarded (glTF MASK).
 // The material uniform, textures and keyword overrides come from the
 // generated prelude (standard.toml).
 
 @fragment
-fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
     // ------------------------------------------------------------ surface
     // One UV transform for all main maps (Unity's _MainTex_ST convention).
     let uv = weft_transform_uv(in.uv0, material.base_map_st);
@@ -48,7 +51,10 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // v falls back to +z if the camera sits on the point; a degenerate
     // interpolated normal falls back to v (the surface then faces the viewer).
     let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    var n = weft_safe_normalize(in.world_normal, v);
+    // A back face (drawn only when an instance turns culling off: glTF
+    // doubleSided) shades with the flipped normal, as glTF asks.
+    let geometric_normal = select(-in.world_normal, in.world_normal, front_facing);
+    var n = weft_safe_normalize(geometric_normal, v);
     if NORMAL_MAP {
         let frame = weft_tangent_frame(n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
@@ -71,7 +77,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 
     if WEFT_TIER == TIER_LOW {
         let color = standard_low(n, v, l, h, f0, diffuse_albedo, roughness, ao, specular_strength);
-        let radiance = clamp(standard_sphere_map(color, n, in.world_position), vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+        let emitted = standard_emission(uv);
+        let radiance = clamp(standard_sphere_map(color, n, in.world_position) + emitted, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+        standard_alpha_test(alpha);
         return vec4<f32>(radiance, alpha);
     }
 
@@ -136,8 +144,36 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // Never negative (e.g. a negative ADD strength); at most the fp16 maximum
     // so an Rgba16Float target never stores Inf (a sharp lobe at grazing under
     // a bright light can exceed it).
-    let radiance = clamp(standard_sphere_map(color, n, in.world_position), vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    let emitted = standard_emission(uv);
+    let radiance = clamp(standard_sphere_map(color, n, in.world_position) + emitted, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
+    standard_alpha_test(alpha);
     return vec4<f32>(radiance, alpha);
+}
+
+// ---------------------------------------------------------------- emission
+// Emitted radiance: colour (linear) x strength x emissive map (glTF's
+// emissive x KHR_materials_emissive_strength x emissiveTexture). Skipped by
+// a uniform branch at black or zero strength, so a library variant samples
+// the map only for an emitting material and a scene folds it away.
+fn standard_emission(uv: vec2<f32>) -> vec3<f32> {
+    let strength = max(material.emissive_strength, 0.0);
+    let emissive = max(material.emissive.rgb, vec3<f32>(0.0));
+    if strength > 0.0 && any(emissive > vec3<f32>(0.0)) {
+        return emissive * strength * textureSample(emissive_map, material_sampler, uv).rgb;
+    }
+    return vec3<f32>(0.0);
+}
+
+// ---------------------------------------------------------------- alpha test
+// glTF alphaMode MASK: a fragment below the cutoff is discarded. Called last,
+// after every texture sample (derivatives stay defined); without ALPHA_TEST
+// the variant has no discard at all, so early depth testing stays on.
+fn standard_alpha_test(alpha: f32) {
+    if ALPHA_TEST {
+        if alpha < material.alpha_cutoff {
+            discard;
+        }
+    }
 }
 
 // ---------------------------------------------------------------- sphere map

@@ -208,9 +208,13 @@ pub fn presets(m: &Material) -> Vec<Preset> {
 }
 
 pub fn passes(m: &Material) -> Vec<Pass> {
-    m.passes
-        .iter()
-        .map(|p| Pass {
+    m.passes.iter().map(pass).collect()
+}
+
+/// One pass of a material as the metadata states it.
+pub fn pass(p: &weft_front::model::Pass) -> Pass {
+    {
+        Pass {
             name: p.name.clone(),
             vertex_entry: p.vertex.clone(),
             fragment_entry: p.fragment.clone(),
@@ -250,8 +254,8 @@ pub fn passes(m: &Material) -> Vec<Pass> {
                 ],
             }],
             depth_stencil: depth_stencil_state(p),
-        })
-        .collect()
+        }
+    }
 }
 
 /// The attachment state of a pass: its depth test and write, and its

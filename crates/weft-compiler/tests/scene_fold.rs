@@ -44,6 +44,7 @@ fn load_portable(name: &str) -> Option<naga::Module> {
 fn instance(m: &weft_front::Material, dynamic: &[&str]) -> ResolvedInstance {
     ResolvedInstance {
         images: Default::default(),
+        overrides: Default::default(),
         name: "test".into(),
         material: 0,
         preset: None,

@@ -248,6 +248,17 @@ pub fn showroom() -> Vec<u8> {
         { "name": "Shot silk",
           "pbrMetallicRoughness": { "baseColorFactor": [0.5, 0.2, 0.5, 1.0] },
           "extras": { "weft": { "material": "microcylinder", "preset": "silk_shot", "tier": "fast" } } },
+        { "name": "Lace",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.95, 0.92, 0.88, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.7,
+              "baseColorTexture": { "index": 4 } },
+          "alphaMode": "MASK", "alphaCutoff": 0.4, "doubleSided": true },
+        { "name": "Glow bulb",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.9, 0.85, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.4 },
+          "emissiveFactor": [1.0, 0.6, 0.3],
+          "extensions": { "KHR_materials_emissive_strength": { "emissiveStrength": 2.5 } } },
+        { "name": "Tinted glass",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.6, 0.8, 0.9, 0.35], "metallicFactor": 0.0, "roughnessFactor": 0.1 },
+          "alphaMode": "BLEND" },
     ]);
     let mut packed = Packed {
         bin: Vec::new(),
@@ -262,6 +273,9 @@ pub fn showroom() -> Vec<u8> {
     let ball = packed.primitive(&Prim::from_mesh(&sphere, 5, true), None);
     let foil = packed.primitive(&Prim::from_mesh(&swatch, 4, false), None);
     let silk = packed.primitive(&Prim::from_mesh(&swatch, 6, false), None);
+    let lace = packed.primitive(&Prim::from_mesh(&swatch, 7, false), None);
+    let bulb = packed.primitive(&Prim::from_mesh(&sphere, 8, true), None);
+    let glass = packed.primitive(&block([0.0; 3], [0.14, 0.14, 0.14], 9), None);
     let frame: Vec<Value> = [
         block([0.0, 0.2, 0.0], [0.9, 0.2, 0.4], 1),
         block([0.0, 0.55, -0.32], [0.9, 0.35, 0.08], 1),
@@ -288,6 +302,7 @@ pub fn showroom() -> Vec<u8> {
         (wood_normals(), "image/png"),
         (wood_metallic_roughness(), "image/jpeg"),
         (wood_occlusion(), "image/png"),
+        (lace_base_color(), "image/png"),
     ]
     .into_iter()
     .map(|(data, mime)| {
@@ -303,9 +318,9 @@ pub fn showroom() -> Vec<u8> {
         "asset": asset(),
         "extensionsUsed": ["KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_iridescence",
                            "KHR_materials_anisotropy", "KHR_lights_punctual", "KHR_materials_variants",
-                           "KHR_texture_transform"],
+                           "KHR_texture_transform", "KHR_materials_emissive_strength"],
         "scene": 0,
-        "scenes": [ { "name": "Showroom", "nodes": [0, 1, 2, 3, 4, 5, 6, 7] } ],
+        "scenes": [ { "name": "Showroom", "nodes": [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10] } ],
         "nodes": [
             { "name": "Drape", "mesh": 0, "translation": [-1.2, 0.9, 0.0], "rotation": quat([1.0, 0.0, 0.0], 70.0), "scale": [0.6, 0.6, 0.6] },
             { "name": "Sofa", "mesh": 1, "translation": [0.4, 0.0, -0.4], "rotation": quat([0.0, 1.0, 0.0], -15.0) },
@@ -316,6 +331,10 @@ pub fn showroom() -> Vec<u8> {
             { "name": "Sun", "rotation": rotation_to([-0.62, 0.55, 0.56]),
               "extensions": { "KHR_lights_punctual": { "light": 0 } } },
             { "name": "Lamp", "translation": [1.0, 2.0, 1.0], "extensions": { "KHR_lights_punctual": { "light": 1 } } },
+            // Turned away from the camera: its back face shows (doubleSided).
+            { "name": "Lace panel", "mesh": 5, "translation": [-0.25, 1.45, -0.55], "rotation": quat([0.0, 1.0, 0.0], 160.0), "scale": [0.3, 0.3, 0.3] },
+            { "name": "Glow bulb", "mesh": 6, "translation": [0.95, 1.35, -0.45], "scale": [0.12, 0.12, 0.12] },
+            { "name": "Glass block", "mesh": 7, "translation": [0.5, 0.15, 0.85] },
         ],
         "meshes": [
             { "name": "drape", "primitives": [drape] },
@@ -323,9 +342,12 @@ pub fn showroom() -> Vec<u8> {
             { "name": "foil", "primitives": [foil] },
             { "name": "ball", "primitives": [ball] },
             { "name": "silk swatch", "primitives": [silk] },
+            { "name": "lace", "primitives": [lace] },
+            { "name": "bulb", "primitives": [bulb] },
+            { "name": "glass", "primitives": [glass] },
         ],
         "materials": materials,
-        "textures": [ { "source": 0, "sampler": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3 } ],
+        "textures": [ { "source": 0, "sampler": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3 }, { "source": 4, "sampler": 0 } ],
         "samplers": [ { "magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497 } ],
         "images": images,
         "cameras": [ { "type": "perspective", "perspective": { "yfov": 0.6, "znear": 0.1, "aspectRatio": 1.6 } } ],
@@ -406,6 +428,16 @@ pub fn wood_metallic_roughness() -> Vec<u8> {
         .encode(&data, w, h, jpeg_encoder::ColorType::Rgb)
         .expect("jpeg");
     out
+}
+
+/// Lace: a white ground with round holes (alpha 0) on a 4 × 4 grid, for
+/// `alphaMode: MASK` (32 × 32, sRGB with alpha).
+fn lace_base_color() -> Vec<u8> {
+    png_rgba(32, 32, |x, y| {
+        let (cx, cy) = ((x % 8) as f32 - 3.5, (y % 8) as f32 - 3.5);
+        let hole = cx * cx + cy * cy < 6.0;
+        [245, 240, 230, if hole { 0 } else { 255 }]
+    })
 }
 
 /// Ambient occlusion, darker towards the edges of each face (R; 16 × 16).

@@ -653,9 +653,11 @@ pub fn build_resolved_scene(
                 .collect(),
             uniform_values,
             textures,
-            passes: metadata::passes(m)
-                .into_iter()
+            passes: m
+                .passes
+                .iter()
                 .filter(|p| static_key.matches(m, &p.when))
+                .map(|p| metadata::pass(&overridden(p, inst.overrides)))
                 .collect(),
             mesh: inst.mesh.name().into(),
             transform: scene_transform(&inst.transform),
@@ -794,4 +796,25 @@ fn funnel(
         shaders: shaders.len(),
         shader_bytes,
     }
+}
+
+/// A material pass with an instance's render-state overrides (glTF's
+/// `doubleSided` and `alphaMode: BLEND`, docs/scenes.md): back-face culling
+/// off, an opaque pass blended without depth writes in the transparent queue.
+fn overridden(
+    p: &weft_front::model::Pass,
+    o: weft_front::scene::model::PassOverrides,
+) -> weft_front::model::Pass {
+    let mut p = p.clone();
+    if o.double_sided && p.cull == weft_meta::CullMode::Back {
+        p.cull = weft_meta::CullMode::None;
+    }
+    if let Some(blend) = o.blend
+        && p.blend == weft_meta::BlendMode::Opaque
+    {
+        p.blend = blend;
+        p.depth_write = false;
+        p.queue = p.queue.max(3000);
+    }
+    p
 }

@@ -55,6 +55,10 @@ pub struct MaterialMapping {
     pub losses: Vec<String>,
     /// Which rule mapped it: `core`, `KHR_materials_sheen`, …, `extras.weft`.
     pub rule: &'static str,
+    /// glTF `doubleSided`: the instance draws back faces (`double_sided`).
+    pub double_sided: bool,
+    /// glTF `alphaMode: BLEND`: the instance's passes blend (`blend = "alpha"`).
+    pub blend: bool,
 }
 
 /// Linear → sRGB-encoded (IEC 61966-2-1), for weft's sRGB-edited colours.
@@ -314,11 +318,26 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
         }
         sampler_losses(file, t, &mut out.losses);
     }
+    if let Some(t) = texture_ref(&json, "emissiveTexture") {
+        if material == "standard" {
+            out.params.push((
+                "emissive_map".into(),
+                image_value(gltf_ref, &format!("texture = {}", t.index), None),
+            ));
+            if t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
+                out.losses.push(
+                    "emissiveTexture's KHR_texture_transform (the material's maps share the base colour texture's)"
+                        .into(),
+                );
+            }
+            sampler_losses(file, &t, &mut out.losses);
+        } else {
+            out.losses.push(format!(
+                "emissiveTexture ({material} does not emit; standard does)"
+            ));
+        }
+    }
     for (has, name) in [
-        (
-            json.pointer("/emissiveTexture").is_some(),
-            "emissiveTexture",
-        ),
         (
             json.pointer("/extensions/KHR_materials_specular/specularTexture")
                 .is_some(),
@@ -417,7 +436,12 @@ pub fn map_material(
         .as_ref()
         .and_then(|raw| serde_json::from_str(raw.get()).ok());
     if let Some(weft) = extras.as_ref().and_then(|e| e.get("weft")) {
-        return map_extras(file, &pointer, gltf_name, weft);
+        // The render state stays the glTF material's own.
+        return map_extras(file, &pointer, gltf_name, weft).map(|mut o| {
+            o.double_sided = m.double_sided();
+            o.blend = m.alpha_mode() == gltf::material::AlphaMode::Blend;
+            o
+        });
     }
     let pbr = m.pbr_metallic_roughness();
     let [r, g, b, a] = pbr.base_color_factor();
@@ -425,23 +449,10 @@ pub fn map_material(
     let metallic = decimal(pbr.metallic_factor());
     let roughness = decimal(pbr.roughness_factor());
     let mut losses = Vec::new();
-    if m.emissive_factor() != [0.0; 3] {
-        let strength = m.emissive_strength().map_or(String::new(), |s| {
-            format!(" × KHR_materials_emissive_strength {s}")
-        });
-        losses.push(format!("emissiveFactor{strength} (no weft material emits)"));
-    }
-    match m.alpha_mode() {
-        gltf::material::AlphaMode::Opaque => {}
-        mode => losses.push(format!(
-            "alphaMode {mode:?} (weft draws every glTF material opaque)"
-        )),
-    }
-    if m.double_sided() {
-        losses.push("doubleSided (back faces are culled as in weft's materials)".into());
-    }
     let mut out = MaterialMapping {
         gltf_name,
+        double_sided: m.double_sided(),
+        blend: m.alpha_mode() == gltf::material::AlphaMode::Blend,
         ..MaterialMapping::default()
     };
     if let Some(sheen) = exts.get("KHR_materials_sheen") {
@@ -568,7 +579,57 @@ pub fn map_material(
     }
     out.losses = losses;
     map_textures(file, index, gltf_ref, &mut out);
+    map_emission_and_alpha(&m, &mut out);
     Ok(out)
+}
+
+/// Emission, `alphaMode` `MASK` and `doubleSided`: standard carries all
+/// three (`emissive`, `emissive_strength`, `ALPHA_TEST` with `alpha_cutoff`,
+/// back faces shaded with the flipped normal); another material loses what
+/// it cannot draw. `BLEND` and `doubleSided` are the instance's render
+/// state (`blend`, `double_sided`), whatever the material.
+fn map_emission_and_alpha(m: &gltf::Material, out: &mut MaterialMapping) {
+    let standard = out.material == "standard";
+    let emissive = m.emissive_factor();
+    let strength = f64::from(m.emissive_strength().unwrap_or(1.0));
+    if emissive != [0.0; 3] && strength > 0.0 {
+        if standard {
+            out.params.push(("emissive".into(), color(emissive, 1.0)));
+            if strength != 1.0 {
+                out.params.push((
+                    "emissive_strength".into(),
+                    float(round6(strength.clamp(0.0, 1000.0))),
+                ));
+            }
+        } else {
+            out.losses.push(format!(
+                "emissiveFactor × strength {strength} ({} does not emit; standard does)",
+                out.material
+            ));
+        }
+    }
+    if m.alpha_mode() == gltf::material::AlphaMode::Mask {
+        if standard {
+            out.keywords.push(("ALPHA_TEST".into(), "true".into()));
+            out.params.push((
+                "alpha_cutoff".into(),
+                float(round6(
+                    f64::from(m.alpha_cutoff().unwrap_or(0.5)).clamp(0.0, 1.0),
+                )),
+            ));
+        } else {
+            out.losses.push(format!(
+                "alphaMode MASK ({} has no alpha test; standard has)",
+                out.material
+            ));
+        }
+    }
+    if m.double_sided() && !matches!(out.material.as_str(), "standard" | "gauze") {
+        out.losses.push(format!(
+            "doubleSided's flipped back-face normal ({} shades back faces with the front normal)",
+            out.material
+        ));
+    }
 }
 
 /// `extras.weft`: a weft material as the DCC's custom properties name it.
@@ -648,6 +709,8 @@ fn map_extras(
         dynamic,
         losses: Vec::new(),
         rule: "extras.weft",
+        double_sided: false,
+        blend: false,
     })
 }
 

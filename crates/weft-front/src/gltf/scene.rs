@@ -576,6 +576,12 @@ pub fn scene_manifest(
         if inputs.len() > 4 {
             let _ = writeln!(out, "vertex_inputs = [{}]", inputs.join(", "));
         }
+        if mapping.double_sided {
+            let _ = writeln!(out, "double_sided = true");
+        }
+        if mapping.blend {
+            let _ = writeln!(out, "blend = \"alpha\"");
+        }
         if let Some(v) = &d.variant {
             // The ordinary draw of the same primitive is the one replaced.
             let replaced = draws[..ordinary]
@@ -634,6 +640,9 @@ fn layer(mut base: MaterialMapping, o: &MaterialMapping) -> MaterialMapping {
     if !o.material.is_empty() && o.material != base.material {
         let mut out = o.clone();
         out.gltf_name = base.gltf_name;
+        // The render state is the glTF material's, whatever weft draws.
+        out.double_sided = base.double_sided;
+        out.blend = base.blend;
         out.rule = "[gltf.materials]";
         return out;
     }

@@ -78,6 +78,8 @@ fn overrides(gltf: &Table, text: &str, cx: &mut Cx) -> Overrides {
                 .map(|(s, _)| s)
                 .collect(),
             losses: Vec::new(),
+            double_sided: false,
+            blend: false,
             rule: "[gltf.materials]",
         };
         out.insert(name.to_string(), mapping);

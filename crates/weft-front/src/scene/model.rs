@@ -201,6 +201,20 @@ pub struct InstanceDecl {
     /// `replaces` when the scene shows material variant `name` (glTF
     /// `KHR_materials_variants`), not drawn otherwise.
     pub variant: Option<Spanned<InstanceVariant>>,
+    /// The instance's render-state overrides (glTF `doubleSided`, `alphaMode`).
+    pub overrides: PassOverrides,
+}
+
+/// What an instance changes in its material's passes' render state
+/// (docs/scenes.md, `double_sided` and `blend`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PassOverrides {
+    /// Passes that cull back faces draw both sides (the material shades a
+    /// back face with its flipped normal).
+    pub double_sided: bool,
+    /// Opaque passes blend so, without depth writes, in the transparent
+    /// queue (3000) when they were below it.
+    pub blend: Option<weft_meta::BlendMode>,
 }
 
 /// A material variant's stand-in for another instance.
@@ -289,6 +303,8 @@ pub struct ResolvedInstance {
     pub transform: Transform,
     /// Drawn only in place of another instance, for a material variant.
     pub variant: Option<InstanceVariant>,
+    /// Render-state overrides of the material's passes.
+    pub overrides: PassOverrides,
     /// The `[[instances]]` table, for diagnostics the compiler raises.
     pub span: Span,
     pub tier_span: Span,

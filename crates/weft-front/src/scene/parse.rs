@@ -49,6 +49,8 @@ pub const INSTANCE_KEYS: &[&str] = &[
     "scale",
     "matrix",
     "variant",
+    "double_sided",
+    "blend",
 ];
 /// Keys of an instance's `variant = { name = "…", replaces = "…" }`.
 pub const VARIANT_KEYS: &[&str] = &["name", "replaces"];
@@ -577,6 +579,7 @@ fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a
     });
     let transform = parse_transform(&t, cx);
     let variant = parse_variant(&t, cx);
+    let overrides = parse_overrides(&t, cx);
     let Some(name) = name else {
         return (None, None);
     };
@@ -605,8 +608,38 @@ fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> ParsedInstance<'a
         vertex_inputs,
         transform,
         variant,
+        overrides,
     };
     (Some(written_name), Some((decl, params)))
+}
+
+/// `double_sided = true` and `blend = "alpha"` (any blend mode but opaque).
+fn parse_overrides(t: &Table, cx: &mut Cx) -> PassOverrides {
+    let double_sided = t.boolean("double_sided", cx).unwrap_or(false);
+    let blend = t.string("blend", cx).and_then(|name| {
+        let modes: Vec<&str> = weft_meta::BlendMode::ALL
+            .iter()
+            .filter(|m| **m != weft_meta::BlendMode::Opaque)
+            .map(|m| m.name())
+            .collect();
+        let found = weft_meta::BlendMode::ALL
+            .into_iter()
+            .find(|m| m.name() == name && *m != weft_meta::BlendMode::Opaque);
+        if found.is_none() {
+            cx.error_with_note(
+                "unknown-value",
+                format!("`blend = \"{name}\"` is not a blend mode an instance may set"),
+                t.span_of("blend"),
+                "not one of the blend modes",
+                suggestion_listing(&name, &modes, "blend modes"),
+            );
+        }
+        found
+    });
+    PassOverrides {
+        double_sided,
+        blend,
+    }
 }
 
 /// `tier`, with `error_budget` and `screen_size` for `auto` (and only then).

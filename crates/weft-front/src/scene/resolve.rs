@@ -393,6 +393,7 @@ impl Resolving<'_> {
             images: state.images,
             mesh,
             variant: decl.variant.as_ref().map(|v| v.value.clone()),
+            overrides: decl.overrides,
             vertex_inputs,
             vertex_inputs_span,
             transform: decl.transform.clone(),
