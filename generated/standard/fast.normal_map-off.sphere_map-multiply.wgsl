@@ -21,6 +21,9 @@ struct WeftMaterial {
     occlusion_strength: f32,
     normal_strength: f32,
     specular_strength: f32,
+    emissive: vec4<f32>,
+    emissive_strength: f32,
+    alpha_cutoff: f32,
     sphere_strength: f32,
     base_map_st: vec4<f32>,
 }
@@ -57,6 +60,9 @@ const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
 const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
+override ALPHA_TEST: bool = false;
+override EMISSION: bool = false;
+
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
 @group(0) @binding(1) 
@@ -74,10 +80,12 @@ var material_sampler: sampler;
 @group(1) @binding(2) 
 var material_clamp_sampler: sampler;
 @group(1) @binding(3) 
+var emissive_map: texture_2d<f32>;
+@group(1) @binding(4) 
 var base_map: texture_2d<f32>;
-@group(1) @binding(5) 
-var rmo_map: texture_2d<f32>;
 @group(1) @binding(6) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(7) 
 var sphere_map: texture_cube<f32>;
 
 fn weft_pow5_(x: f32) -> f32 {
@@ -193,8 +201,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
 fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let _e3 = textureDimensions(weft_brdf_lut);
     let size = vec2<f32>(_e3);
-    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let texel = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
     let _e16 = textureLoad(weft_brdf_lut, texel, 0i);
     return _e16.xy;
 }
@@ -212,6 +220,18 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
+    if EMISSION {
+        let _e4 = material.emissive_strength;
+        let strength = max(_e4, 0f);
+        let _e9 = material.emissive;
+        let emissive = max(_e9.xyz, vec3(0f));
+        let _e17 = textureSample(emissive_map, material_sampler, uv_1);
+        return ((emissive * strength) * _e17.xyz);
+    }
+    return vec3(0f);
+}
+
 fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
@@ -226,6 +246,19 @@ fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_2: ve
     }
     let _e23 = color;
     return _e23;
+}
+
+fn standard_alpha_test(alpha: f32) {
+    if ALPHA_TEST {
+        let _e4 = material.alpha_cutoff;
+        if (alpha < _e4) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
 }
 
 @vertex 
@@ -252,7 +285,7 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var visibility: f32;
     var env_brdf: vec3<f32>;
@@ -261,76 +294,79 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
 
-    let _e4 = material.base_map_st;
-    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
-    let _e8 = material.base_color;
-    let _e11 = textureSample(base_map, material_sampler, _e5);
-    let base_rgba = (_e8 * _e11);
+    let _e5 = material.base_map_st;
+    let _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    let _e9 = material.base_color;
+    let _e12 = textureSample(base_map, material_sampler, _e6);
+    let base_rgba = (_e9 * _e12);
     let base = saturate(base_rgba.xyz);
-    let alpha = saturate(base_rgba.w);
-    let _e19 = textureSample(rmo_map, material_sampler, _e5);
-    let rmo = _e19.xyz;
-    let _e23 = material.roughness;
-    let roughness_6 = saturate((_e23 * rmo.x));
-    let _e29 = material.metallic;
-    let metallic = saturate((_e29 * rmo.y));
-    let _e36 = material.occlusion_strength;
-    let ao = saturate(mix(1f, rmo.z, _e36));
-    let _e42 = material.specular_strength;
-    let specular_strength = max(_e42, 0f);
-    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
-    n = _e52;
-    let _e54 = weft_main_light_direction();
-    let _e56 = n;
-    let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
-    let _e58 = n;
-    let _e60 = weft_clamp_cos(dot(_e58, _e50));
+    let alpha_1 = saturate(base_rgba.w);
+    let _e20 = textureSample(rmo_map, material_sampler, _e6);
+    let rmo = _e20.xyz;
+    let _e22 = standard_emission(_e6);
+    let _e25 = material.roughness;
+    let roughness_6 = saturate((_e25 * rmo.x));
+    let _e31 = material.metallic;
+    let metallic = saturate((_e31 * rmo.y));
+    let _e38 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e38));
+    let _e44 = material.specular_strength;
+    let specular_strength = max(_e44, 0f);
+    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
+    let _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
+    let _e59 = weft_main_light_direction();
     let _e61 = n;
-    let n_dot_l_1 = saturate(dot(_e61, _e54));
-    let _e64 = n;
-    let n_dot_h = saturate(dot(_e64, _e57));
-    let v_dot_h_1 = saturate(dot(_e50, _e57));
+    let _e62 = weft_safe_normalize((_e59 + _e52), _e61);
+    let _e63 = n;
+    let _e65 = weft_clamp_cos(dot(_e63, _e52));
+    let _e66 = n;
+    let n_dot_l_1 = saturate(dot(_e66, _e59));
+    let _e69 = n;
+    let n_dot_h = saturate(dot(_e69, _e62));
+    let v_dot_h_1 = saturate(dot(_e52, _e62));
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e79 = weft_v_smith_ggx_correlated_newton(_e60, n_dot_l_1, roughness_6);
-            visibility = _e79;
-            let _e80 = weft_env_brdf_lut_nearest(_e60, roughness_6);
-            let _e81 = weft_env_brdf_from_lut(f0_2, _e80);
-            env_brdf = _e81;
-            let _e84 = env_brdf;
-            ambient_kd = max((vec3(1f) - _e84), vec3(0f));
-            let _e89 = ambient_kd;
-            direct_kd = _e89;
+            let _e84 = weft_v_smith_ggx_correlated_newton(_e65, n_dot_l_1, roughness_6);
+            visibility = _e84;
+            let _e85 = weft_env_brdf_lut_nearest(_e65, roughness_6);
+            let _e86 = weft_env_brdf_from_lut(f0_2, _e85);
+            env_brdf = _e86;
+            let _e89 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e89), vec3(0f));
+            let _e94 = ambient_kd;
+            direct_kd = _e94;
         }
     }
     if (specular_strength > 0f) {
-        let _e98 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e99 = n;
-        let _e100 = weft_d_ggx_nh(_e99, _e57, roughness_6);
-        let _e101 = visibility;
-        specular = (((_e100 * _e101) * _e98) * specular_strength);
-        let _e106 = n;
-        let _e108 = weft_prefiltered_radiance(reflect(-(_e50), _e106), roughness_6);
-        let _e109 = env_brdf;
-        indirect_specular = ((_e108 * _e109) * (ao * specular_strength));
+        let _e103 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e104 = n;
+        let _e105 = weft_d_ggx_nh(_e104, _e62, roughness_6);
+        let _e106 = visibility;
+        specular = (((_e105 * _e106) * _e103) * specular_strength);
+        let _e111 = n;
+        let _e113 = weft_prefiltered_radiance(reflect(-(_e52), _e111), roughness_6);
+        let _e114 = env_brdf;
+        indirect_specular = ((_e113 * _e114) * (ao * specular_strength));
     }
-    let _e113 = direct_kd;
-    let _e114 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e113 * _e114);
-    let _e116 = specular;
-    let _e118 = weft_main_light_radiance();
-    let direct = (((diffuse + _e116) * _e118) * n_dot_l_1);
-    let _e121 = n;
-    let _e122 = weft_sh_irradiance(_e121);
-    let _e124 = ambient_kd;
-    let indirect_diffuse = (((_e122 * ao) * _e124) * diffuse_albedo);
-    let _e127 = indirect_specular;
-    let color_1 = ((direct + _e127) + indirect_diffuse);
-    let _e130 = n;
-    let _e132 = standard_sphere_map(color_1, _e130, in_1.world_position);
-    let radiance = clamp(_e132, vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, alpha);
+    let _e118 = direct_kd;
+    let _e119 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e118 * _e119);
+    let _e121 = specular;
+    let _e123 = weft_main_light_radiance();
+    let direct = (((diffuse + _e121) * _e123) * n_dot_l_1);
+    let _e126 = n;
+    let _e127 = weft_sh_irradiance(_e126);
+    let _e129 = ambient_kd;
+    let indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
+    let _e132 = indirect_specular;
+    let color_1 = ((direct + _e132) + indirect_diffuse);
+    let _e135 = n;
+    let _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
+    let radiance = clamp((_e137 + _e22), vec3(0f), vec3(65504f));
+    standard_alpha_test(alpha_1);
+    return vec4<f32>(radiance, alpha_1);
 }

@@ -21,6 +21,9 @@ struct WeftMaterial {
     occlusion_strength: f32,
     normal_strength: f32,
     specular_strength: f32,
+    emissive: vec4<f32>,
+    emissive_strength: f32,
+    alpha_cutoff: f32,
     sphere_strength: f32,
     base_map_st: vec4<f32>,
 }
@@ -57,6 +60,9 @@ const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
 const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
+override ALPHA_TEST: bool = false;
+override EMISSION: bool = false;
+
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
 @group(0) @binding(1) 
@@ -74,12 +80,14 @@ var material_sampler: sampler;
 @group(1) @binding(2) 
 var material_clamp_sampler: sampler;
 @group(1) @binding(3) 
-var base_map: texture_2d<f32>;
+var emissive_map: texture_2d<f32>;
 @group(1) @binding(4) 
-var normal_map: texture_2d<f32>;
+var base_map: texture_2d<f32>;
 @group(1) @binding(5) 
-var rmo_map: texture_2d<f32>;
+var normal_map: texture_2d<f32>;
 @group(1) @binding(6) 
+var rmo_map: texture_2d<f32>;
+@group(1) @binding(7) 
 var sphere_map: texture_cube<f32>;
 
 fn weft_pow5_(x: f32) -> f32 {
@@ -202,8 +210,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
 fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let _e3 = textureDimensions(weft_brdf_lut);
     let size = vec2<f32>(_e3);
-    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let texel_1 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
     let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
     return _e16.xy;
 }
@@ -243,6 +251,18 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
+    if EMISSION {
+        let _e4 = material.emissive_strength;
+        let strength_1 = max(_e4, 0f);
+        let _e9 = material.emissive;
+        let emissive = max(_e9.xyz, vec3(0f));
+        let _e17 = textureSample(emissive_map, material_sampler, uv_1);
+        return ((emissive * strength_1) * _e17.xyz);
+    }
+    return vec3(0f);
+}
+
 fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
@@ -257,6 +277,19 @@ fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_2: ve
     }
     let _e23 = color;
     return _e23;
+}
+
+fn standard_alpha_test(alpha: f32) {
+    if ALPHA_TEST {
+        let _e4 = material.alpha_cutoff;
+        if (alpha < _e4) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
 }
 
 @vertex 
@@ -283,7 +316,7 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var visibility: f32;
     var env_brdf: vec3<f32>;
@@ -292,86 +325,89 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
 
-    let _e4 = material.base_map_st;
-    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
-    let _e8 = material.base_color;
-    let _e11 = textureSample(base_map, material_sampler, _e5);
-    let base_rgba = (_e8 * _e11);
+    let _e5 = material.base_map_st;
+    let _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    let _e9 = material.base_color;
+    let _e12 = textureSample(base_map, material_sampler, _e6);
+    let base_rgba = (_e9 * _e12);
     let base = saturate(base_rgba.xyz);
-    let alpha = saturate(base_rgba.w);
-    let _e19 = textureSample(rmo_map, material_sampler, _e5);
-    let rmo = _e19.xyz;
-    let _e23 = material.roughness;
-    let roughness_6 = saturate((_e23 * rmo.x));
-    let _e29 = material.metallic;
-    let metallic = saturate((_e29 * rmo.y));
-    let _e36 = material.occlusion_strength;
-    let ao = saturate(mix(1f, rmo.z, _e36));
-    let _e42 = material.specular_strength;
-    let specular_strength = max(_e42, 0f);
-    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
-    n = _e52;
+    let alpha_1 = saturate(base_rgba.w);
+    let _e20 = textureSample(rmo_map, material_sampler, _e6);
+    let rmo = _e20.xyz;
+    let _e22 = standard_emission(_e6);
+    let _e25 = material.roughness;
+    let roughness_6 = saturate((_e25 * rmo.x));
+    let _e31 = material.metallic;
+    let metallic = saturate((_e31 * rmo.y));
+    let _e38 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e38));
+    let _e44 = material.specular_strength;
+    let specular_strength = max(_e44, 0f);
+    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
+    let _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
     {
-        let _e54 = n;
-        let _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
-        let _e59 = textureSample(normal_map, material_sampler, _e5);
-        let texel_2 = _e59.xyz;
-        let _e63 = material.normal_strength;
-        let _e64 = weft_unpack_normal(texel_2, _e63);
-        let _e65 = weft_normal_from_tangent_space(_e56, _e64);
-        n = _e65;
+        let _e59 = n;
+        let _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
+        let _e64 = textureSample(normal_map, material_sampler, _e6);
+        let texel_2 = _e64.xyz;
+        let _e68 = material.normal_strength;
+        let _e69 = weft_unpack_normal(texel_2, _e68);
+        let _e70 = weft_normal_from_tangent_space(_e61, _e69);
+        n = _e70;
     }
-    let _e66 = weft_main_light_direction();
-    let _e68 = n;
-    let _e69 = weft_safe_normalize((_e66 + _e50), _e68);
-    let _e70 = n;
-    let _e72 = weft_clamp_cos(dot(_e70, _e50));
+    let _e71 = weft_main_light_direction();
     let _e73 = n;
-    let n_dot_l_1 = saturate(dot(_e73, _e66));
-    let _e76 = n;
-    let n_dot_h = saturate(dot(_e76, _e69));
-    let v_dot_h_1 = saturate(dot(_e50, _e69));
+    let _e74 = weft_safe_normalize((_e71 + _e52), _e73);
+    let _e75 = n;
+    let _e77 = weft_clamp_cos(dot(_e75, _e52));
+    let _e78 = n;
+    let n_dot_l_1 = saturate(dot(_e78, _e71));
+    let _e81 = n;
+    let n_dot_h = saturate(dot(_e81, _e74));
+    let v_dot_h_1 = saturate(dot(_e52, _e74));
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e91 = weft_v_smith_ggx_correlated_newton(_e72, n_dot_l_1, roughness_6);
-            visibility = _e91;
-            let _e92 = weft_env_brdf_lut_nearest(_e72, roughness_6);
-            let _e93 = weft_env_brdf_from_lut(f0_2, _e92);
-            env_brdf = _e93;
-            let _e96 = env_brdf;
-            ambient_kd = max((vec3(1f) - _e96), vec3(0f));
-            let _e101 = ambient_kd;
-            direct_kd = _e101;
+            let _e96 = weft_v_smith_ggx_correlated_newton(_e77, n_dot_l_1, roughness_6);
+            visibility = _e96;
+            let _e97 = weft_env_brdf_lut_nearest(_e77, roughness_6);
+            let _e98 = weft_env_brdf_from_lut(f0_2, _e97);
+            env_brdf = _e98;
+            let _e101 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e101), vec3(0f));
+            let _e106 = ambient_kd;
+            direct_kd = _e106;
         }
     }
     if (specular_strength > 0f) {
-        let _e110 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e111 = n;
-        let _e112 = weft_d_ggx_nh(_e111, _e69, roughness_6);
-        let _e113 = visibility;
-        specular = (((_e112 * _e113) * _e110) * specular_strength);
-        let _e118 = n;
-        let _e120 = weft_prefiltered_radiance(reflect(-(_e50), _e118), roughness_6);
-        let _e121 = env_brdf;
-        indirect_specular = ((_e120 * _e121) * (ao * specular_strength));
+        let _e115 = weft_f_schlick(f0_2, v_dot_h_1);
+        let _e116 = n;
+        let _e117 = weft_d_ggx_nh(_e116, _e74, roughness_6);
+        let _e118 = visibility;
+        specular = (((_e117 * _e118) * _e115) * specular_strength);
+        let _e123 = n;
+        let _e125 = weft_prefiltered_radiance(reflect(-(_e52), _e123), roughness_6);
+        let _e126 = env_brdf;
+        indirect_specular = ((_e125 * _e126) * (ao * specular_strength));
     }
-    let _e125 = direct_kd;
-    let _e126 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e125 * _e126);
-    let _e128 = specular;
-    let _e130 = weft_main_light_radiance();
-    let direct = (((diffuse + _e128) * _e130) * n_dot_l_1);
-    let _e133 = n;
-    let _e134 = weft_sh_irradiance(_e133);
-    let _e136 = ambient_kd;
-    let indirect_diffuse = (((_e134 * ao) * _e136) * diffuse_albedo);
-    let _e139 = indirect_specular;
-    let color_1 = ((direct + _e139) + indirect_diffuse);
-    let _e142 = n;
-    let _e144 = standard_sphere_map(color_1, _e142, in_1.world_position);
-    let radiance = clamp(_e144, vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, alpha);
+    let _e130 = direct_kd;
+    let _e131 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e130 * _e131);
+    let _e133 = specular;
+    let _e135 = weft_main_light_radiance();
+    let direct = (((diffuse + _e133) * _e135) * n_dot_l_1);
+    let _e138 = n;
+    let _e139 = weft_sh_irradiance(_e138);
+    let _e141 = ambient_kd;
+    let indirect_diffuse = (((_e139 * ao) * _e141) * diffuse_albedo);
+    let _e144 = indirect_specular;
+    let color_1 = ((direct + _e144) + indirect_diffuse);
+    let _e147 = n;
+    let _e149 = standard_sphere_map(color_1, _e147, in_1.world_position);
+    let radiance = clamp((_e149 + _e22), vec3(0f), vec3(65504f));
+    standard_alpha_test(alpha_1);
+    return vec4<f32>(radiance, alpha_1);
 }

@@ -21,6 +21,9 @@ struct WeftMaterial {
     occlusion_strength: f32,
     normal_strength: f32,
     specular_strength: f32,
+    emissive: vec4<f32>,
+    emissive_strength: f32,
+    alpha_cutoff: f32,
     sphere_strength: f32,
     base_map_st: vec4<f32>,
 }
@@ -57,6 +60,9 @@ const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
 const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
+override ALPHA_TEST: bool = false;
+override EMISSION: bool = false;
+
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
 @group(0) @binding(1) 
@@ -70,8 +76,10 @@ var<uniform> material: WeftMaterial;
 @group(1) @binding(1) 
 var material_sampler: sampler;
 @group(1) @binding(3) 
+var emissive_map: texture_2d<f32>;
+@group(1) @binding(4) 
 var base_map: texture_2d<f32>;
-@group(1) @binding(5) 
+@group(1) @binding(6) 
 var rmo_map: texture_2d<f32>;
 
 fn weft_pow4_(x: f32) -> f32 {
@@ -203,12 +211,37 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
+    if EMISSION {
+        let _e4 = material.emissive_strength;
+        let strength = max(_e4, 0f);
+        let _e9 = material.emissive;
+        let emissive = max(_e9.xyz, vec3(0f));
+        let _e17 = textureSample(emissive_map, material_sampler, uv_1);
+        return ((emissive * strength) * _e17.xyz);
+    }
+    return vec3(0f);
+}
+
 fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     let _e4 = color;
     return _e4;
+}
+
+fn standard_alpha_test(alpha: f32) {
+    if ALPHA_TEST {
+        let _e4 = material.alpha_cutoff;
+        if (alpha < _e4) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
 }
 
 @vertex 
@@ -235,7 +268,7 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var visibility: f32;
     var env_brdf: vec3<f32>;
@@ -244,75 +277,78 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
 
-    let _e4 = material.base_map_st;
-    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
-    let _e8 = material.base_color;
-    let _e11 = textureSample(base_map, material_sampler, _e5);
-    let base_rgba = (_e8 * _e11);
+    let _e5 = material.base_map_st;
+    let _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    let _e9 = material.base_color;
+    let _e12 = textureSample(base_map, material_sampler, _e6);
+    let base_rgba = (_e9 * _e12);
     let base = saturate(base_rgba.xyz);
-    let alpha = saturate(base_rgba.w);
-    let _e19 = textureSample(rmo_map, material_sampler, _e5);
-    let rmo = _e19.xyz;
-    let _e23 = material.roughness;
-    let roughness_7 = saturate((_e23 * rmo.x));
-    let _e29 = material.metallic;
-    let metallic = saturate((_e29 * rmo.y));
-    let _e36 = material.occlusion_strength;
-    let ao = saturate(mix(1f, rmo.z, _e36));
-    let _e42 = material.specular_strength;
-    let specular_strength = max(_e42, 0f);
-    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
-    n = _e52;
-    let _e54 = weft_main_light_direction();
-    let _e56 = n;
-    let _e57 = weft_safe_normalize((_e54 + _e50), _e56);
-    let _e58 = n;
-    let _e60 = weft_clamp_cos(dot(_e58, _e50));
+    let alpha_1 = saturate(base_rgba.w);
+    let _e20 = textureSample(rmo_map, material_sampler, _e6);
+    let rmo = _e20.xyz;
+    let _e22 = standard_emission(_e6);
+    let _e25 = material.roughness;
+    let roughness_7 = saturate((_e25 * rmo.x));
+    let _e31 = material.metallic;
+    let metallic = saturate((_e31 * rmo.y));
+    let _e38 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e38));
+    let _e44 = material.specular_strength;
+    let specular_strength = max(_e44, 0f);
+    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
+    let _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
+    let _e59 = weft_main_light_direction();
     let _e61 = n;
-    let n_dot_l_1 = saturate(dot(_e61, _e54));
-    let _e64 = n;
-    let n_dot_h = saturate(dot(_e64, _e57));
-    let v_dot_h_1 = saturate(dot(_e50, _e57));
+    let _e62 = weft_safe_normalize((_e59 + _e52), _e61);
+    let _e63 = n;
+    let _e65 = weft_clamp_cos(dot(_e63, _e52));
+    let _e66 = n;
+    let n_dot_l_1 = saturate(dot(_e66, _e59));
+    let _e69 = n;
+    let n_dot_h = saturate(dot(_e69, _e62));
+    let v_dot_h_1 = saturate(dot(_e52, _e62));
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e79 = weft_v_schlick_ggx(_e60, n_dot_l_1, roughness_7);
-            visibility = _e79;
-            let _e80 = weft_env_brdf_approx(f0_3, _e60, roughness_7);
-            env_brdf = _e80;
-            let _e83 = weft_f_schlick_roughness(f0_3, _e60, roughness_7);
-            ambient_kd = (vec3(1f) - _e83);
-            let _e87 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1f) - _e87);
+            let _e84 = weft_v_schlick_ggx(_e65, n_dot_l_1, roughness_7);
+            visibility = _e84;
+            let _e85 = weft_env_brdf_approx(f0_3, _e65, roughness_7);
+            env_brdf = _e85;
+            let _e88 = weft_f_schlick_roughness(f0_3, _e65, roughness_7);
+            ambient_kd = (vec3(1f) - _e88);
+            let _e92 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = (vec3(1f) - _e92);
         }
     }
     if (specular_strength > 0f) {
-        let _e97 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e98 = n;
-        let _e99 = weft_d_ggx_nh(_e98, _e57, roughness_7);
-        let _e100 = visibility;
-        specular = (((_e99 * _e100) * _e97) * specular_strength);
-        let _e105 = n;
-        let _e107 = weft_prefiltered_radiance(reflect(-(_e50), _e105), roughness_7);
-        let _e108 = env_brdf;
-        indirect_specular = ((_e107 * _e108) * (ao * specular_strength));
+        let _e102 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e103 = n;
+        let _e104 = weft_d_ggx_nh(_e103, _e62, roughness_7);
+        let _e105 = visibility;
+        specular = (((_e104 * _e105) * _e102) * specular_strength);
+        let _e110 = n;
+        let _e112 = weft_prefiltered_radiance(reflect(-(_e52), _e110), roughness_7);
+        let _e113 = env_brdf;
+        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
     }
-    let _e112 = direct_kd;
-    let _e113 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e112 * _e113);
-    let _e115 = specular;
-    let _e117 = weft_main_light_radiance();
-    let direct = (((diffuse + _e115) * _e117) * n_dot_l_1);
-    let _e120 = n;
-    let _e121 = weft_sh_irradiance(_e120);
-    let _e123 = ambient_kd;
-    let indirect_diffuse = (((_e121 * ao) * _e123) * diffuse_albedo);
-    let _e126 = indirect_specular;
-    let color_1 = ((direct + _e126) + indirect_diffuse);
-    let _e129 = n;
-    let _e131 = standard_sphere_map(color_1, _e129, in_1.world_position);
-    let radiance = clamp(_e131, vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, alpha);
+    let _e117 = direct_kd;
+    let _e118 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e117 * _e118);
+    let _e120 = specular;
+    let _e122 = weft_main_light_radiance();
+    let direct = (((diffuse + _e120) * _e122) * n_dot_l_1);
+    let _e125 = n;
+    let _e126 = weft_sh_irradiance(_e125);
+    let _e128 = ambient_kd;
+    let indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
+    let _e131 = indirect_specular;
+    let color_1 = ((direct + _e131) + indirect_diffuse);
+    let _e134 = n;
+    let _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
+    let radiance = clamp((_e136 + _e22), vec3(0f), vec3(65504f));
+    standard_alpha_test(alpha_1);
+    return vec4<f32>(radiance, alpha_1);
 }

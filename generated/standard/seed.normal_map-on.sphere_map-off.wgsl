@@ -21,6 +21,9 @@ struct WeftMaterial {
     occlusion_strength: f32,
     normal_strength: f32,
     specular_strength: f32,
+    emissive: vec4<f32>,
+    emissive_strength: f32,
+    alpha_cutoff: f32,
     sphere_strength: f32,
     base_map_st: vec4<f32>,
 }
@@ -57,6 +60,9 @@ const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
 const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
 const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
 
+override ALPHA_TEST: bool = false;
+override EMISSION: bool = false;
+
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
 @group(0) @binding(1) 
@@ -70,10 +76,12 @@ var<uniform> material: WeftMaterial;
 @group(1) @binding(1) 
 var material_sampler: sampler;
 @group(1) @binding(3) 
-var base_map: texture_2d<f32>;
+var emissive_map: texture_2d<f32>;
 @group(1) @binding(4) 
-var normal_map: texture_2d<f32>;
+var base_map: texture_2d<f32>;
 @group(1) @binding(5) 
+var normal_map: texture_2d<f32>;
+@group(1) @binding(6) 
 var rmo_map: texture_2d<f32>;
 
 fn weft_pow4_(x: f32) -> f32 {
@@ -234,12 +242,37 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
+fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
+    if EMISSION {
+        let _e4 = material.emissive_strength;
+        let strength_1 = max(_e4, 0f);
+        let _e9 = material.emissive;
+        let emissive = max(_e9.xyz, vec3(0f));
+        let _e17 = textureSample(emissive_map, material_sampler, uv_1);
+        return ((emissive * strength_1) * _e17.xyz);
+    }
+    return vec3(0f);
+}
+
 fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     let _e4 = color;
     return _e4;
+}
+
+fn standard_alpha_test(alpha: f32) {
+    if ALPHA_TEST {
+        let _e4 = material.alpha_cutoff;
+        if (alpha < _e4) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
 }
 
 @vertex 
@@ -266,7 +299,7 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
     var n: vec3<f32>;
     var visibility: f32;
     var env_brdf: vec3<f32>;
@@ -275,85 +308,88 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
 
-    let _e4 = material.base_map_st;
-    let _e5 = weft_transform_uv(in_1.uv0_, _e4);
-    let _e8 = material.base_color;
-    let _e11 = textureSample(base_map, material_sampler, _e5);
-    let base_rgba = (_e8 * _e11);
+    let _e5 = material.base_map_st;
+    let _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    let _e9 = material.base_color;
+    let _e12 = textureSample(base_map, material_sampler, _e6);
+    let base_rgba = (_e9 * _e12);
     let base = saturate(base_rgba.xyz);
-    let alpha = saturate(base_rgba.w);
-    let _e19 = textureSample(rmo_map, material_sampler, _e5);
-    let rmo = _e19.xyz;
-    let _e23 = material.roughness;
-    let roughness_7 = saturate((_e23 * rmo.x));
-    let _e29 = material.metallic;
-    let metallic = saturate((_e29 * rmo.y));
-    let _e36 = material.occlusion_strength;
-    let ao = saturate(mix(1f, rmo.z, _e36));
-    let _e42 = material.specular_strength;
-    let specular_strength = max(_e42, 0f);
-    let _e50 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e52 = weft_safe_normalize(in_1.world_normal, _e50);
-    n = _e52;
+    let alpha_1 = saturate(base_rgba.w);
+    let _e20 = textureSample(rmo_map, material_sampler, _e6);
+    let rmo = _e20.xyz;
+    let _e22 = standard_emission(_e6);
+    let _e25 = material.roughness;
+    let roughness_7 = saturate((_e25 * rmo.x));
+    let _e31 = material.metallic;
+    let metallic = saturate((_e31 * rmo.y));
+    let _e38 = material.occlusion_strength;
+    let ao = saturate(mix(1f, rmo.z, _e38));
+    let _e44 = material.specular_strength;
+    let specular_strength = max(_e44, 0f);
+    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
+    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
+    let _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
     {
-        let _e54 = n;
-        let _e56 = weft_tangent_frame(_e54, in_1.world_tangent);
-        let _e59 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e59.xyz;
-        let _e63 = material.normal_strength;
-        let _e64 = weft_unpack_normal(texel_1, _e63);
-        let _e65 = weft_normal_from_tangent_space(_e56, _e64);
-        n = _e65;
+        let _e59 = n;
+        let _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
+        let _e64 = textureSample(normal_map, material_sampler, _e6);
+        let texel_1 = _e64.xyz;
+        let _e68 = material.normal_strength;
+        let _e69 = weft_unpack_normal(texel_1, _e68);
+        let _e70 = weft_normal_from_tangent_space(_e61, _e69);
+        n = _e70;
     }
-    let _e66 = weft_main_light_direction();
-    let _e68 = n;
-    let _e69 = weft_safe_normalize((_e66 + _e50), _e68);
-    let _e70 = n;
-    let _e72 = weft_clamp_cos(dot(_e70, _e50));
+    let _e71 = weft_main_light_direction();
     let _e73 = n;
-    let n_dot_l_1 = saturate(dot(_e73, _e66));
-    let _e76 = n;
-    let n_dot_h = saturate(dot(_e76, _e69));
-    let v_dot_h_1 = saturate(dot(_e50, _e69));
+    let _e74 = weft_safe_normalize((_e71 + _e52), _e73);
+    let _e75 = n;
+    let _e77 = weft_clamp_cos(dot(_e75, _e52));
+    let _e78 = n;
+    let n_dot_l_1 = saturate(dot(_e78, _e71));
+    let _e81 = n;
+    let n_dot_h = saturate(dot(_e81, _e74));
+    let v_dot_h_1 = saturate(dot(_e52, _e74));
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e91 = weft_v_schlick_ggx(_e72, n_dot_l_1, roughness_7);
-            visibility = _e91;
-            let _e92 = weft_env_brdf_approx(f0_3, _e72, roughness_7);
-            env_brdf = _e92;
-            let _e95 = weft_f_schlick_roughness(f0_3, _e72, roughness_7);
-            ambient_kd = (vec3(1f) - _e95);
-            let _e99 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1f) - _e99);
+            let _e96 = weft_v_schlick_ggx(_e77, n_dot_l_1, roughness_7);
+            visibility = _e96;
+            let _e97 = weft_env_brdf_approx(f0_3, _e77, roughness_7);
+            env_brdf = _e97;
+            let _e100 = weft_f_schlick_roughness(f0_3, _e77, roughness_7);
+            ambient_kd = (vec3(1f) - _e100);
+            let _e104 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = (vec3(1f) - _e104);
         }
     }
     if (specular_strength > 0f) {
-        let _e109 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e110 = n;
-        let _e111 = weft_d_ggx_nh(_e110, _e69, roughness_7);
-        let _e112 = visibility;
-        specular = (((_e111 * _e112) * _e109) * specular_strength);
-        let _e117 = n;
-        let _e119 = weft_prefiltered_radiance(reflect(-(_e50), _e117), roughness_7);
-        let _e120 = env_brdf;
-        indirect_specular = ((_e119 * _e120) * (ao * specular_strength));
+        let _e114 = weft_f_schlick(f0_3, v_dot_h_1);
+        let _e115 = n;
+        let _e116 = weft_d_ggx_nh(_e115, _e74, roughness_7);
+        let _e117 = visibility;
+        specular = (((_e116 * _e117) * _e114) * specular_strength);
+        let _e122 = n;
+        let _e124 = weft_prefiltered_radiance(reflect(-(_e52), _e122), roughness_7);
+        let _e125 = env_brdf;
+        indirect_specular = ((_e124 * _e125) * (ao * specular_strength));
     }
-    let _e124 = direct_kd;
-    let _e125 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e124 * _e125);
-    let _e127 = specular;
-    let _e129 = weft_main_light_radiance();
-    let direct = (((diffuse + _e127) * _e129) * n_dot_l_1);
-    let _e132 = n;
-    let _e133 = weft_sh_irradiance(_e132);
-    let _e135 = ambient_kd;
-    let indirect_diffuse = (((_e133 * ao) * _e135) * diffuse_albedo);
-    let _e138 = indirect_specular;
-    let color_1 = ((direct + _e138) + indirect_diffuse);
-    let _e141 = n;
-    let _e143 = standard_sphere_map(color_1, _e141, in_1.world_position);
-    let radiance = clamp(_e143, vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, alpha);
+    let _e129 = direct_kd;
+    let _e130 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e129 * _e130);
+    let _e132 = specular;
+    let _e134 = weft_main_light_radiance();
+    let direct = (((diffuse + _e132) * _e134) * n_dot_l_1);
+    let _e137 = n;
+    let _e138 = weft_sh_irradiance(_e137);
+    let _e140 = ambient_kd;
+    let indirect_diffuse = (((_e138 * ao) * _e140) * diffuse_albedo);
+    let _e143 = indirect_specular;
+    let color_1 = ((direct + _e143) + indirect_diffuse);
+    let _e146 = n;
+    let _e148 = standard_sphere_map(color_1, _e146, in_1.world_position);
+    let radiance = clamp((_e148 + _e22), vec3(0f), vec3(65504f));
+    standard_alpha_test(alpha_1);
+    return vec4<f32>(radiance, alpha_1);
 }

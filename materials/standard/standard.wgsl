@@ -42,6 +42,8 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     let base = saturate(base_rgba.rgb);
     let alpha = saturate(base_rgba.a);
     let rmo = textureSample(rmo_map, material_sampler, uv).rgb;
+    // Sampled here, beside the other maps, so that uv is not kept alive to the end.
+    let emitted = standard_emission(uv);
     let roughness = saturate(material.roughness * rmo.r);
     let metallic = saturate(material.metallic * rmo.g);
     let ao = saturate(mix(1.0, rmo.b, material.occlusion_strength));
@@ -77,7 +79,6 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
 
     if WEFT_TIER == TIER_LOW {
         let color = standard_low(n, v, l, h, f0, diffuse_albedo, roughness, ao, specular_strength);
-        let emitted = standard_emission(uv);
         let radiance = clamp(standard_sphere_map(color, n, in.world_position) + emitted, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
         standard_alpha_test(alpha);
         return vec4<f32>(radiance, alpha);
@@ -144,7 +145,6 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     // Never negative (e.g. a negative ADD strength); at most the fp16 maximum
     // so an Rgba16Float target never stores Inf (a sharp lobe at grazing under
     // a bright light can exceed it).
-    let emitted = standard_emission(uv);
     let radiance = clamp(standard_sphere_map(color, n, in.world_position) + emitted, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
     standard_alpha_test(alpha);
     return vec4<f32>(radiance, alpha);
@@ -152,13 +152,13 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
 
 // ---------------------------------------------------------------- emission
 // Emitted radiance: colour (linear) x strength x emissive map (glTF's
-// emissive x KHR_materials_emissive_strength x emissiveTexture). Skipped by
-// a uniform branch at black or zero strength, so a library variant samples
-// the map only for an emitting material and a scene folds it away.
+// emissive x KHR_materials_emissive_strength x emissiveTexture), with
+// EMISSION on. A constant keyword: without it the code and the map are gone
+// (measured: the uniform-branch form cost every variant 8 VGPRs on RDNA2).
 fn standard_emission(uv: vec2<f32>) -> vec3<f32> {
-    let strength = max(material.emissive_strength, 0.0);
-    let emissive = max(material.emissive.rgb, vec3<f32>(0.0));
-    if strength > 0.0 && any(emissive > vec3<f32>(0.0)) {
+    if EMISSION {
+        let strength = max(material.emissive_strength, 0.0);
+        let emissive = max(material.emissive.rgb, vec3<f32>(0.0));
         return emissive * strength * textureSample(emissive_map, material_sampler, uv).rgb;
     }
     return vec3<f32>(0.0);

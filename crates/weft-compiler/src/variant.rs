@@ -36,7 +36,9 @@ fn keyword_literal(kind: KeywordKind, value: usize) -> Literal {
     }
 }
 
-/// All combinations of the `constant`-mode keywords' values (one empty combination if none).
+/// All combinations of the `constant`-mode keywords' values (one empty
+/// combination if none), the keywords' defaults first: a variant's first
+/// file set is the one its defaults select (the GPU model costs that one).
 pub fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
     let mut combos = vec![Vec::new()];
     for (k, kw) in m
@@ -48,7 +50,9 @@ pub fn constant_combinations(m: &Material) -> Vec<Vec<(usize, usize)>> {
         combos = combos
             .into_iter()
             .flat_map(|c| {
-                (0..kw.values.len()).map(move |v| {
+                let values = std::iter::once(kw.default)
+                    .chain((0..kw.values.len()).filter(move |&v| v != kw.default));
+                values.map(move |v| {
                     let mut c2 = c.clone();
                     c2.push((k, v));
                     c2

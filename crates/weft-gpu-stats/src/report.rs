@@ -25,23 +25,24 @@ const BASE: (&str, &str, &str) = ("standard", "fast", "forward");
 
 type Key<'a> = (&'a str, &'a str, &'a str, &'a str); // material, variant, precision, pass
 
+///
+/// A variant with `constant`-mode keywords has a file set per value
+/// combination; the first (its keywords' defaults, as the compiler orders
+/// them) stands for the variant, as [`crate::summary`] takes it.
 fn library_index(f: &FamilyStats) -> BTreeMap<Key<'_>, &PipelineStats> {
-    f.pipelines
-        .iter()
-        .filter(|p| p.source.kind == "material")
-        .map(|p| {
-            let s = &p.source;
-            (
-                (
-                    s.material.as_str(),
-                    s.variant.as_str(),
-                    s.precision.as_str(),
-                    p.pass.as_str(),
-                ),
-                p,
-            )
-        })
-        .collect()
+    let mut index = BTreeMap::new();
+    for p in f.pipelines.iter().filter(|p| p.source.kind == "material") {
+        let s = &p.source;
+        index
+            .entry((
+                s.material.as_str(),
+                s.variant.as_str(),
+                s.precision.as_str(),
+                p.pass.as_str(),
+            ))
+            .or_insert(p);
+    }
+    index
 }
 
 /// One row of the tier table: the default variant of a tier.

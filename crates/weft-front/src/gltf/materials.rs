@@ -318,7 +318,13 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
         }
         sampler_losses(file, t, &mut out.losses);
     }
-    if let Some(t) = texture_ref(&json, "emissiveTexture") {
+    let emits = json
+        .get("emissiveFactor")
+        .and_then(Value::as_array)
+        .is_some_and(|f| f.iter().any(|x| x.as_f64().unwrap_or(0.0) > 0.0));
+    // glTF multiplies the texture by emissiveFactor (default black): a
+    // texture without a factor emits nothing.
+    if let Some(t) = texture_ref(&json, "emissiveTexture").filter(|_| emits) {
         if material == "standard" {
             out.params.push((
                 "emissive_map".into(),
@@ -594,6 +600,7 @@ fn map_emission_and_alpha(m: &gltf::Material, out: &mut MaterialMapping) {
     let strength = f64::from(m.emissive_strength().unwrap_or(1.0));
     if emissive != [0.0; 3] && strength > 0.0 {
         if standard {
+            out.keywords.push(("EMISSION".into(), "true".into()));
             out.params.push(("emissive".into(), color(emissive, 1.0)));
             if strength != 1.0 {
                 out.params.push((

@@ -1,0 +1,287 @@
+struct WeftFrame {
+    view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
+    camera_position: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    sh: array<vec4<f32>, 9>,
+    params: vec4<f32>,
+    viewport: vec4<f32>,
+}
+
+struct WeftObject {
+    model: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+}
+
+struct WeftVertexInput {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+struct WeftVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+}
+
+const WEFT_PI: f32 = 3.1415927f;
+const WEFT_INV_PI: f32 = 0.31830987f;
+const SPHERE_MAP_OFF: u32 = 0u;
+const SPHERE_MAP_ADD: u32 = 1u;
+const SPHERE_MAP_MULTIPLY: u32 = 2u;
+const TIER_FAST: u32 = 0u;
+const TIER_REFERENCE: u32 = 1u;
+const TIER_SEED: u32 = 2u;
+const TIER_LOW: u32 = 3u;
+const WEFT_MIN_ROUGHNESS: f32 = 0.045f;
+const WEFT_MIN_N_DOT: f32 = 0.0001f;
+const WEFT_MAX_HALF: f32 = 65504f;
+const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
+const WEFT_MIN_ROUGHNESS_HALF: f32 = 0.089f;
+const WEFT_MIN_N_DOT_HALF: f32 = 0.001f;
+const WEFT_MIN_ALPHA_HALF: f32 = 0.007921f;
+
+@group(0) @binding(0) 
+var<uniform> weft_frame: WeftFrame;
+@group(0) @binding(1) 
+var weft_environment: texture_cube<f32>;
+@group(0) @binding(2) 
+var weft_environment_sampler: sampler;
+@group(0) @binding(3) 
+var weft_brdf_lut: texture_2d<f32>;
+@group(2) @binding(0) 
+var<uniform> weft_object: WeftObject;
+
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+fn weft_clamp_cos(c: f32) -> f32 {
+    return clamp(c, WEFT_MIN_N_DOT, 1f);
+}
+
+fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2_ = dot(v, v);
+    return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
+}
+
+fn weft_safe_normalize_k1_(v_1: vec3<f32>) -> vec3<f32> {
+    let len2_1 = dot(v_1, v_1);
+    return select(vec3<f32>(0f, 0f, 1f), (v_1 * inverseSqrt(max(len2_1, 0.00000000000000000001f))), (len2_1 > 0.00000000000000000001f));
+}
+
+fn weft_main_light_direction() -> vec3<f32> {
+    let _e2 = weft_frame.light_direction;
+    let _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
+}
+
+fn weft_main_light_radiance() -> vec3<f32> {
+    let _e2 = weft_frame.light_color;
+    return max(_e2.xyz, vec3(0f));
+}
+
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+    var e: vec3<f32>;
+
+    let sh = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095f);
+    let _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    let _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    let _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    let _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    let _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    let _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    let _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    let _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    let _e91 = e;
+    return max(_e91, vec3(0f));
+}
+
+fn standard_emission(uv: vec2<f32>) -> vec3<f32> {
+    {
+        return vec3<f32>(2.5f, 1.5000011f, 0.75000143f);
+    }
+}
+
+fn standard_sphere_map(color_in: vec3<f32>, n_2: vec3<f32>, world_position: vec3<f32>) -> vec3<f32> {
+    var color: vec3<f32>;
+
+    color = color_in;
+    let _e4 = color;
+    return _e4;
+}
+
+fn weft_safe_normalize_k2_(v_2: vec3<f32>) -> vec3<f32> {
+    let len2_2 = dot(v_2, v_2);
+    return select(vec3(0f), (v_2 * inverseSqrt(max(len2_2, 0.00000000000000000001f))), (len2_2 > 0.00000000000000000001f));
+}
+
+fn weft_transform_uv_k3_(uv_1: vec2<f32>) -> vec2<f32> {
+    return (uv_1 + vec2<f32>(0f, 0f));
+}
+
+fn weft_view_direction_k4_(world_position_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_frame.camera_position;
+    let _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position_1));
+    return _e7;
+}
+
+fn weft_v_smith_ggx_correlated_newton_k5_(n_dot_v: f32, n_dot_l: f32) -> f32 {
+    let _e6 = weft_clamp_cos(n_dot_v);
+    let _e7 = weft_clamp_cos(n_dot_l);
+    let gv = ((_e6 * 0.84f) + 0.16000001f);
+    let gl = ((_e7 * 0.84f) + 0.16000001f);
+    let pv = ((gv * _e6) + (0.025600003f * (1f - _e6)));
+    let pl = ((gl * _e7) + (0.025600003f * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
+}
+
+fn weft_env_brdf_lut_nearest_k6_(n_dot_v_1: f32) -> vec2<f32> {
+    let _e3 = textureDimensions(weft_brdf_lut);
+    let size = vec2<f32>(_e3);
+    let uv_2 = vec2<f32>(saturate(n_dot_v_1), 0.4f);
+    let texel = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
+    let _e15 = textureLoad(weft_brdf_lut, texel, 0i);
+    return _e15.xy;
+}
+
+fn weft_env_brdf_from_lut_k7_(scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((vec3<f32>(0.04f, 0.04f, 0.04f) * sb.x) + vec3(sb.y));
+}
+
+fn weft_f_schlick_k8_(v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (vec3<f32>(0.04f, 0.04f, 0.04f) + (vec3<f32>(0.96f, 0.96f, 0.96f) * _e5));
+}
+
+fn weft_d_ggx_nh_k9_(n_3: vec3<f32>, h: vec3<f32>) -> f32 {
+    let noh = saturate(dot(n_3, h));
+    let nxh = cross(n_3, h);
+    let d = (dot(nxh, nxh) + ((noh * noh) * 0.025600003f));
+    return (0.025600003f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+}
+
+fn weft_specular_mip_k14_() -> f32 {
+    let _e5 = weft_frame.params.x;
+    let max_mip = max((_e5 - 1f), 0f);
+    return (0.568f * max_mip);
+}
+
+fn weft_prefiltered_radiance_k10_(dir: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_specular_mip_k14_();
+    let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, vec3(0f));
+}
+
+fn standard_alpha_test_k12_() {
+    {
+        return;
+    }
+}
+
+@vertex 
+fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e53 = weft_safe_normalize_k2_((normal3_ * in.normal));
+    out.world_normal = _e53;
+    let _e58 = weft_safe_normalize_k2_((model3_ * in.tangent.xyz));
+    out.world_tangent = vec4<f32>(_e58, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    let _e62 = out;
+    return _e62;
+}
+
+@fragment 
+fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    var n: vec3<f32>;
+    var visibility: f32;
+    var env_brdf: vec3<f32>;
+    var ambient_kd: vec3<f32>;
+    var direct_kd: vec3<f32>;
+    var specular: vec3<f32> = vec3(0f);
+    var indirect_specular: vec3<f32> = vec3(0f);
+
+    let _e3 = weft_transform_uv_k3_(in_1.uv0_);
+    let _e8 = standard_emission(_e3);
+    let _e14 = weft_view_direction_k4_(in_1.world_position);
+    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
+    let _e19 = weft_safe_normalize(geometric_normal, _e14);
+    n = _e19;
+    let _e21 = weft_main_light_direction();
+    let _e23 = n;
+    let _e24 = weft_safe_normalize((_e21 + _e14), _e23);
+    let _e25 = n;
+    let _e27 = weft_clamp_cos(dot(_e25, _e14));
+    let _e28 = n;
+    let n_dot_l_1 = saturate(dot(_e28, _e21));
+    let _e31 = n;
+    let n_dot_h = saturate(dot(_e31, _e24));
+    let v_dot_h_1 = saturate(dot(_e14, _e24));
+    {
+        {
+            let _e42 = weft_v_smith_ggx_correlated_newton_k5_(_e27, n_dot_l_1);
+            visibility = _e42;
+            let _e43 = weft_env_brdf_lut_nearest_k6_(_e27);
+            let _e44 = weft_env_brdf_from_lut_k7_(_e43);
+            env_brdf = _e44;
+            let _e46 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e46), vec3(0f));
+            let _e50 = ambient_kd;
+            direct_kd = _e50;
+        }
+    }
+    {
+        let _e55 = weft_f_schlick_k8_(v_dot_h_1);
+        let _e56 = n;
+        let _e57 = weft_d_ggx_nh_k9_(_e56, _e24);
+        let _e58 = visibility;
+        specular = ((_e57 * _e58) * _e55);
+        let _e62 = n;
+        let _e64 = weft_prefiltered_radiance_k10_(reflect(-(_e14), _e62));
+        let _e65 = env_brdf;
+        indirect_specular = (_e64 * _e65);
+    }
+    let _e67 = direct_kd;
+    let diffuse = (_e67 * vec3<f32>(0.28647876f, 0.2705637f, 0.25464806f));
+    let _e70 = specular;
+    let _e72 = weft_main_light_radiance();
+    let direct = (((diffuse + _e70) * _e72) * n_dot_l_1);
+    let _e75 = n;
+    let _e76 = weft_sh_irradiance(_e75);
+    let _e77 = ambient_kd;
+    let indirect_diffuse = ((_e76 * _e77) * vec3<f32>(0.8999996f, 0.8500009f, 0.8000005f));
+    let _e80 = indirect_specular;
+    let color_1 = ((direct + _e80) + indirect_diffuse);
+    let _e83 = n;
+    let _e85 = standard_sphere_map(color_1, _e83, in_1.world_position);
+    let radiance = clamp((_e85 + _e8), vec3(0f), vec3(65504f));
+    standard_alpha_test_k12_();
+    return vec4<f32>(radiance, 1f);
+}

@@ -1,0 +1,450 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint SPHERE_MAP_OFF = 0u;
+constant uint SPHERE_MAP_ADD = 1u;
+constant uint SPHERE_MAP_MULTIPLY = 2u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(
+    float roughness
+) {
+    return metal::clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n_1
+) {
+    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n_1.z);
+    float b = (n_1.x * n_1.y) * a;
+    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
+}
+
+float weft_d_ggx_nh(
+    metal::float3 n_2,
+    metal::float3 h,
+    float roughness_1
+) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e3 * _e3;
+    float a2_ = a_1 * a_1;
+    float noh = metal::saturate(metal::dot(n_2, h));
+    metal::float3 nxh = metal::cross(n_2, h);
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+}
+
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
+}
+
+float weft_v_smith_ggx_correlated_newton(
+    float n_dot_v,
+    float n_dot_l,
+    float roughness_2
+) {
+    float _e3 = weft_clamp_roughness(roughness_2);
+    float a_2 = _e3 * _e3;
+    float a2_1 = a_2 * a_2;
+    float _e6 = weft_clamp_cos(n_dot_v);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = (_e6 * (1.0 - a_2)) + a_2;
+    float gl = (_e7 * (1.0 - a_2)) + a_2;
+    float pv = (gv * _e6) + (a2_1 * (1.0 - _e6));
+    float pl = (gl * _e7) + (a2_1 * (1.0 - _e7));
+    return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
+}
+
+metal::float3 weft_diffuse_lambert(
+    metal::float3 albedo
+) {
+    return albedo * WEFT_INV_PI;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_1,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_safe_normalize_k1_(
+    metal::float3 v_1
+) {
+    float len2_1 = metal::dot(v_1, v_1);
+    return (len2_1 > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : metal::float3(0.0, 0.0, 1.0);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_3,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness_3,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness_3);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_4,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_4, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
+    float n_dot_v_1,
+    float roughness_5,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    return _e15.xy;
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    float len2_2 = metal::dot(t_proj, t_proj);
+    bool ok = len2_2 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : _e13;
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
+}
+
+metal::float3 weft_normal_from_tangent_space(
+    metal::float3x3 frame,
+    metal::float3 n_ts
+) {
+    metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
+    return _e4;
+}
+
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_5,
+    metal::float3 world_position
+) {
+    metal::float3 color = {};
+    color = color_in;
+    metal::float3 _e4 = color;
+    return _e4;
+}
+
+void standard_alpha_test(
+    float alpha
+) {
+    {
+        return;
+    }
+}
+
+metal::float3 weft_safe_normalize_k2_(
+    metal::float3 v_2
+) {
+    float len2_3 = metal::dot(v_2, v_2);
+    return (len2_3 > 0.00000000000000000001) ? (v_2 * metal::rsqrt(metal::max(len2_3, 0.00000000000000000001))) : metal::float3(0.0);
+}
+
+metal::float2 weft_transform_uv_k3_(
+    metal::float2 uv
+) {
+    return (uv * metal::float2(2.0, 1.0)) + metal::float2(0.25, 0.0);
+}
+
+metal::float3 weft_view_direction_k4_(
+    metal::float3 world_position_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize_k1_(_e4.xyz - world_position_1);
+    return _e7;
+}
+
+metal::float3 weft_unpack_normal_k5_(
+    metal::float3 texel
+) {
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * 0.8, metal::max(v_3.z, 0.001));
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e53 = weft_safe_normalize_k2_(normal3_ * in.normal);
+    out.world_normal = _e53;
+    metal::float3 _e58 = weft_safe_normalize_k2_(model3_ * in.tangent.xyz);
+    out.world_tangent = metal::float4(_e58, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e62 = out;
+    const auto _tmp = _e62;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, bool front_facing [[front_facing]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler material_sampler [[sampler(1)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    float visibility = {};
+    metal::float3 env_brdf = {};
+    metal::float3 ambient_kd = {};
+    metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
+    metal::float2 _e3 = weft_transform_uv_k3_(in_1.uv0_);
+    metal::float4 _e7 = base_map.sample(material_sampler, _e3);
+    metal::float4 base_rgba = metal::float4(0.8000005, 0.61999977, 0.4500004, 1.0) * _e7;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha_1 = metal::saturate(base_rgba.w);
+    metal::float4 _e15 = rmo_map.sample(material_sampler, _e3);
+    metal::float3 rmo = _e15.xyz;
+    float roughness_6 = metal::saturate(rmo.x);
+    float metallic = metal::saturate(rmo.y);
+    float ao = metal::saturate(metal::mix(1.0, rmo.z, 0.7));
+    metal::float3 _e29 = weft_view_direction_k4_(in_1.world_position, weft_frame);
+    metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
+    metal::float3 _e34 = weft_safe_normalize(geometric_normal, _e29);
+    n = _e34;
+    {
+        metal::float3 _e36 = n;
+        metal::float3x3 _e38 = weft_tangent_frame(_e36, in_1.world_tangent);
+        metal::float4 _e41 = normal_map.sample(material_sampler, _e3);
+        metal::float3 texel_2 = _e41.xyz;
+        metal::float3 _e43 = weft_unpack_normal_k5_(texel_2);
+        metal::float3 _e44 = weft_normal_from_tangent_space(_e38, _e43);
+        n = _e44;
+    }
+    metal::float3 _e45 = weft_main_light_direction(weft_frame);
+    metal::float3 _e47 = n;
+    metal::float3 _e48 = weft_safe_normalize(_e45 + _e29, _e47);
+    metal::float3 _e49 = n;
+    float _e51 = weft_clamp_cos(metal::dot(_e49, _e29));
+    metal::float3 _e52 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e52, _e45));
+    metal::float3 _e55 = n;
+    float n_dot_h = metal::saturate(metal::dot(_e55, _e48));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e29, _e48));
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo = base * (1.0 - metallic);
+    {
+        {
+            float _e69 = weft_v_smith_ggx_correlated_newton(_e51, n_dot_l_1, roughness_6);
+            visibility = _e69;
+            metal::float2 _e70 = weft_env_brdf_lut_nearest(_e51, roughness_6, weft_brdf_lut);
+            metal::float3 _e71 = weft_env_brdf_from_lut(f0_2, _e70);
+            env_brdf = _e71;
+            metal::float3 _e73 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e73, metal::float3(0.0));
+            metal::float3 _e77 = ambient_kd;
+            direct_kd = _e77;
+        }
+    }
+    {
+        metal::float3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
+        metal::float3 _e83 = n;
+        float _e84 = weft_d_ggx_nh(_e83, _e48, roughness_6);
+        float _e85 = visibility;
+        specular = ((_e84 * _e85) * _e82) * 0.5;
+        metal::float3 _e90 = n;
+        metal::float3 _e92 = weft_prefiltered_radiance(metal::reflect(-(_e29), _e90), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e93 = env_brdf;
+        indirect_specular = (_e92 * _e93) * (ao * 0.5);
+    }
+    metal::float3 _e97 = direct_kd;
+    metal::float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e97 * _e98;
+    metal::float3 _e100 = specular;
+    metal::float3 _e102 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e100) * _e102) * n_dot_l_1;
+    metal::float3 _e105 = n;
+    metal::float3 _e106 = weft_sh_irradiance(_e105, weft_frame);
+    metal::float3 _e108 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e106 * ao) * _e108) * diffuse_albedo;
+    metal::float3 _e111 = indirect_specular;
+    metal::float3 color_1 = (direct + _e111) + indirect_diffuse;
+    metal::float3 _e114 = n;
+    metal::float3 _e116 = standard_sphere_map(color_1, _e114, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e116 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
+    standard_alpha_test(alpha_1);
+    return fs_mainOutput { metal::float4(radiance, alpha_1) };
+}

@@ -1,0 +1,346 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint SPHERE_MAP_OFF = 0u;
+static const uint SPHERE_MAP_ADD = 1u;
+static const uint SPHERE_MAP_MULTIPLY = 2u;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+#define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
+Texture2D<float4> weft_brdf_lut : register(t3);
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
+Texture2D<float4> base_map : register(t4, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_2 : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+    bool front_facing_1 : SV_IsFrontFace;
+};
+
+float weft_pow5_(float x)
+{
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v, float3 fallback)
+{
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_safe_normalize_k1_(float3 v_1)
+{
+    float len2_1 = dot(v_1, v_1);
+    return ((len2_1 > 1e-20) ? (v_1 * rsqrt(max(len2_1, 1e-20))) : float3(0.0, 0.0, 1.0));
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_sh_irradiance(float3 n_1)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float3 standard_sphere_map(float3 color_in, float3 n_2, float3 world_position)
+{
+    float3 color = (float3)0;
+
+    color = color_in;
+    float3 _e4 = color;
+    return _e4;
+}
+
+void standard_alpha_test(float alpha)
+{
+    {
+        if ((alpha < 0.4)) {
+            discard;
+        } else {
+            return;
+        }
+    }
+}
+
+float3 weft_safe_normalize_k2_(float3 v_2)
+{
+    float len2_2 = dot(v_2, v_2);
+    return ((len2_2 > 1e-20) ? (v_2 * rsqrt(max(len2_2, 1e-20))) : (0.0).xxx);
+}
+
+float2 weft_transform_uv_k3_(float2 uv)
+{
+    return (uv + float2(0.0, 0.0));
+}
+
+float3 weft_view_direction_k4_(float3 world_position_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position_1));
+    return _e7;
+}
+
+float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l)
+{
+    const float _e6 = weft_clamp_cos(n_dot_v);
+    const float _e7 = weft_clamp_cos(n_dot_l);
+    float gv = ((_e6 * 0.51) + 0.48999998);
+    float gl = ((_e7 * 0.51) + 0.48999998);
+    float pv = ((gv * _e6) + (0.24009998 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.24009998 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
+}
+
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+uint2 NagaDimensions2D(Texture2D<float4> tex)
+{
+    uint4 ret;
+    tex.GetDimensions(0, ret.x, ret.y, ret.z);
+    return ret.xy;
+}
+
+float2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1)
+{
+    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
+    float2 uv_1 = float2(saturate(n_dot_v_1), 0.7);
+    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e15 = weft_brdf_lut.Load(int3(texel, int(0)));
+    return _e15.xy;
+}
+
+float weft_d_ggx_nh_k7_(float3 n_3, float3 h)
+{
+    float noh = saturate(dot(n_3, h));
+    float3 nxh = cross(n_3, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * 0.24009998));
+    return (0.24009998 / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float weft_specular_mip_k10_()
+{
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return (0.847 * max_mip);
+}
+
+float3 weft_prefiltered_radiance_k8_(float3 dir)
+{
+    const float _e4 = weft_specular_mip_k10_();
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e53 = weft_safe_normalize_k2_(mul(in_.normal, normal3_));
+    out_.world_normal = _e53;
+    const float3 _e58 = weft_safe_normalize_k2_(mul(in_.tangent.xyz, model3_));
+    out_.world_tangent = float4(_e58, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e62 = out_;
+    const WeftVaryings weftvaryings = _e62;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    float3 n = (float3)0;
+    float visibility = (float)0;
+    float3 env_brdf = (float3)0;
+    float3 ambient_kd = (float3)0;
+    float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
+
+    const float2 _e3 = weft_transform_uv_k3_(in_1.uv0_);
+    float4 _e7 = base_map.Sample(material_sampler, _e3);
+    float4 base_rgba = (float4(0.95000094, 0.9199995, 0.88000023, 1.0) * _e7);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha_1 = saturate(base_rgba.w);
+    const float3 _e20 = weft_view_direction_k4_(in_1.world_position);
+    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
+    const float3 _e25 = weft_safe_normalize(geometric_normal, _e20);
+    n = _e25;
+    const float3 _e27 = weft_main_light_direction();
+    float3 _e29 = n;
+    const float3 _e30 = weft_safe_normalize((_e27 + _e20), _e29);
+    float3 _e31 = n;
+    const float _e33 = weft_clamp_cos(dot(_e31, _e20));
+    float3 _e34 = n;
+    float n_dot_l_1 = saturate(dot(_e34, _e27));
+    float3 _e37 = n;
+    float n_dot_h = saturate(dot(_e37, _e30));
+    float v_dot_h_1 = saturate(dot(_e20, _e30));
+    float3 f0_2 = lerp((0.04).xxx, base, 0.0);
+    {
+        {
+            const float _e48 = weft_v_smith_ggx_correlated_newton_k5_(_e33, n_dot_l_1);
+            visibility = _e48;
+            const float2 _e49 = weft_env_brdf_lut_nearest_k6_(_e33);
+            const float3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
+            env_brdf = _e50;
+            float3 _e52 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e52), (0.0).xxx);
+            float3 _e56 = ambient_kd;
+            direct_kd = _e56;
+        }
+    }
+    {
+        const float3 _e61 = weft_f_schlick(f0_2, v_dot_h_1);
+        float3 _e62 = n;
+        const float _e63 = weft_d_ggx_nh_k7_(_e62, _e30);
+        float _e64 = visibility;
+        specular = ((_e63 * _e64) * _e61);
+        float3 _e68 = n;
+        const float3 _e70 = weft_prefiltered_radiance_k8_(reflect(-(_e20), _e68));
+        float3 _e71 = env_brdf;
+        indirect_specular = (_e70 * _e71);
+    }
+    float3 _e73 = direct_kd;
+    const float3 _e74 = weft_diffuse_lambert(base);
+    float3 diffuse = (_e73 * _e74);
+    float3 _e76 = specular;
+    const float3 _e78 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e76) * _e78) * n_dot_l_1);
+    float3 _e81 = n;
+    const float3 _e82 = weft_sh_irradiance(_e81);
+    float3 _e83 = ambient_kd;
+    float3 indirect_diffuse = ((_e82 * _e83) * base);
+    float3 _e86 = indirect_specular;
+    float3 color_1 = ((direct + _e86) + indirect_diffuse);
+    float3 _e89 = n;
+    const float3 _e91 = standard_sphere_map(color_1, _e89, in_1.world_position);
+    float3 radiance = clamp((_e91 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
+    standard_alpha_test(alpha_1);
+    return float4(radiance, alpha_1);
+}

@@ -1,0 +1,478 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+typedef float weft_half;
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftMaterial {
+    metal::float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    char _pad6[12];
+    metal::float4 emissive;
+    float emissive_strength;
+    float alpha_cutoff;
+    float sphere_strength;
+    char _pad10[4];
+    metal::float4 base_map_st;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint SPHERE_MAP_OFF = 0u;
+constant uint SPHERE_MAP_ADD = 1u;
+constant uint SPHERE_MAP_MULTIPLY = 2u;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant uint TIER_LOW = 3u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+constant float WEFT_MIN_N_DOT_HALF = 0.001;
+constant float WEFT_MIN_ALPHA_HALF = 0.007921;
+constant bool ALPHA_TEST = false;
+constant bool EMISSION = false;
+
+float weft_clamp_cos(
+    float c
+) {
+    return metal::clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_env_brdf_from_lut(
+    metal::float3 f0_,
+    metal::float2 scale_bias
+) {
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (f0_ * sb.x) + metal::float3(sb.y);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e8 = weft_safe_normalize(_e2.xyz, metal::float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction(
+    metal::float3 world_position,
+    metal::float3 fallback_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize(_e4.xyz - world_position, fallback_1);
+    return _e7;
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+float weft_specular_mip(
+    float roughness,
+    constant WeftFrame& weft_frame
+) {
+    float r = metal::saturate(roughness);
+    float _e5 = weft_frame.params.x;
+    float max_mip = metal::max(_e5 - 1.0, 0.0);
+    return (r * (1.7 - (0.7 * r))) * max_mip;
+}
+
+metal::float3 weft_prefiltered_radiance(
+    metal::float3 dir,
+    float roughness_1,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler
+) {
+    float _e4 = weft_specular_mip(roughness_1, weft_frame);
+    metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::float2 weft_env_brdf_lut_nearest(
+    float n_dot_v,
+    float roughness_2,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+) {
+    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
+    metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
+    metal::int2 texel = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel), 0);
+    return _e16.xy;
+}
+
+metal::float3 weft_sphere_map_direction(
+    metal::float3 world_normal,
+    metal::float3 world_position_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4x4 view = weft_frame.view;
+    metal::float3x3 view3_ = metal::float3x3(view[0].xyz, view[1].xyz, view[2].xyz);
+    metal::float3 _e17 = weft_safe_normalize(view3_ * world_normal, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 p_vs = (view * metal::float4(world_position_1, 1.0)).xyz;
+    metal::float3 _e26 = weft_safe_normalize(p_vs, metal::float3(0.0, 0.0, -1.0));
+    return metal::reflect(_e26, _e17);
+}
+
+metal::float2 weft_transform_uv(
+    metal::float2 uv,
+    metal::float4 st
+) {
+    return (uv * st.xy) + st.zw;
+}
+
+weft_half weft_half_min_max(
+    weft_half x
+) {
+    return metal::min(x, 65504.0);
+}
+
+weft_half weft_half_pow5_(
+    weft_half x_1
+) {
+    weft_half x2_ = x_1 * x_1;
+    return (x2_ * x2_) * x_1;
+}
+
+weft_half weft_half_d_ggx(
+    weft_half one_minus_n_dot_h2_,
+    weft_half n_dot_h,
+    weft_half alpha
+) {
+    weft_half a = n_dot_h * alpha;
+    weft_half k = alpha / (one_minus_n_dot_h2_ + (a * a));
+    weft_half _e10 = weft_half_min_max((k * k) * 0.31830987);
+    return _e10;
+}
+
+weft_half weft_half_v_smith_ggx_correlated_newton_nl(
+    weft_half n_dot_v_1,
+    weft_half n_dot_l,
+    weft_half alpha_1
+) {
+    float nv = metal::max(n_dot_v_1, 0.001);
+    weft_half alpha2_ = alpha_1 * alpha_1;
+    float g_v = metal::mix(nv, 1.0, alpha_1);
+    float g_l = metal::mix(n_dot_l, 1.0, alpha_1);
+    float q_v = nv + ((alpha2_ * (1.0 - nv)) / g_v);
+    weft_half q_l = n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l);
+    float denominator = (n_dot_l * q_v) + (nv * q_l);
+    return (0.5 * n_dot_l) / metal::max(denominator, 0.0001);
+}
+
+metal::float3 weft_half_f_schlick(
+    metal::float3 f0_1,
+    weft_half v_dot_h
+) {
+    weft_half _e7 = weft_half_pow5_(1.0 - v_dot_h);
+    return f0_1 + ((metal::float3(1.0) - f0_1) * _e7);
+}
+
+metal::float3 standard_emission(
+    metal::float2 uv_1,
+    constant WeftMaterial& material,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> emissive_map
+) {
+    if (EMISSION) {
+        float _e4 = material.emissive_strength;
+        float strength = metal::max(_e4, 0.0);
+        metal::float4 _e9 = material.emissive;
+        metal::float3 emissive = metal::max(_e9.xyz, metal::float3(0.0));
+        metal::float4 _e17 = emissive_map.sample(material_sampler, uv_1);
+        return (emissive * strength) * _e17.xyz;
+    }
+    return metal::float3(0.0);
+}
+
+metal::float3 standard_low(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    metal::float3 l,
+    metal::float3 h,
+    metal::float3 f0_in,
+    metal::float3 diffuse_albedo,
+    float roughness_in,
+    float ao,
+    float specular_strength,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+) {
+    metal::float3 direct_n_dot_l = {};
+    metal::float3 indirect_specular_1 = metal::float3(0.0);
+    float _e10 = weft_clamp_cos(metal::dot(n_2, v_1));
+    float n_dot_v_2 = static_cast<float>(_e10);
+    float n_dot_l_1 = static_cast<float>(metal::saturate(metal::dot(n_2, l)));
+    float n_dot_h_1 = static_cast<float>(metal::saturate(metal::dot(n_2, h)));
+    float v_dot_h_1 = static_cast<float>(metal::saturate(metal::dot(v_1, h)));
+    metal::float3 n_cross_h = metal::cross(n_2, h);
+    float one_minus_n_dot_h2_1 = static_cast<float>(metal::dot(n_cross_h, n_cross_h));
+    float roughness_3 = static_cast<float>(metal::max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
+    float alpha_3 = roughness_3 * roughness_3;
+    metal::float3 f0_2 = static_cast<metal::float3>(f0_in);
+    float _e30 = weft_clamp_cos(metal::dot(n_2, v_1));
+    metal::float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in, weft_brdf_lut);
+    metal::float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
+    metal::float3 env_brdf_1 = static_cast<metal::float3>(_e32);
+    metal::float3 kd = metal::max(metal::float3(1.0) - env_brdf_1, metal::float3(0.0));
+    direct_n_dot_l = static_cast<metal::float3>(kd * (n_dot_l_1 * 0.31830987)) * diffuse_albedo;
+    if (specular_strength > 0.0) {
+        weft_half _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        weft_half _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        metal::float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        weft_half _e55 = weft_half_min_max(_e51 * _e52);
+        metal::float3 _e56 = direct_n_dot_l;
+        direct_n_dot_l = _e56 + (static_cast<metal::float3>(_e53 * _e55) * specular_strength);
+        metal::float3 _e63 = weft_prefiltered_radiance(metal::reflect(-(v_1), n_2), roughness_in, weft_frame, weft_environment, weft_environment_sampler);
+        indirect_specular_1 = (_e63 * static_cast<metal::float3>(env_brdf_1)) * (ao * specular_strength);
+    }
+    metal::float3 _e68 = direct_n_dot_l;
+    metal::float3 _e69 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e68 * _e69;
+    metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
+    metal::float3 indirect_diffuse = ((_e71 * ao) * static_cast<metal::float3>(kd)) * diffuse_albedo;
+    metal::float3 _e76 = indirect_specular_1;
+    return (direct + _e76) + indirect_diffuse;
+}
+
+metal::float3 standard_sphere_map(
+    metal::float3 color_in,
+    metal::float3 n_3,
+    metal::float3 world_position_2,
+    constant WeftFrame& weft_frame,
+    constant WeftMaterial& material,
+    metal::sampler material_clamp_sampler,
+    metal::texturecube<float, metal::access::sample> sphere_map
+) {
+    metal::float3 color = {};
+    color = color_in;
+    {
+        metal::float3 _e4 = weft_sphere_map_direction(n_3, world_position_2, weft_frame);
+        metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
+        metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
+        metal::float3 _e12 = color;
+        float _e17 = material.sphere_strength;
+        color = _e12 * metal::max(metal::mix(metal::float3(1.0), sph, _e17), metal::float3(0.0));
+    }
+    metal::float3 _e23 = color;
+    return _e23;
+}
+
+void standard_alpha_test(
+    float alpha_2,
+    constant WeftMaterial& material
+) {
+    if (ALPHA_TEST) {
+        float _e4 = material.alpha_cutoff;
+        if (alpha_2 < _e4) {
+            metal::discard_fragment();
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent [[attribute(2)]];
+    metal::float2 uv0_ [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(2)]]
+) {
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent, varyings.uv0_ };
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in.uv0_;
+    WeftVaryings _e66 = out;
+    const auto _tmp = _e66;
+    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_3 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_1 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, bool front_facing [[front_facing]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
+, metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_clamp_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> emissive_map [[texture(2)]]
+, metal::texture2d<float, metal::access::sample> base_map [[texture(3)]]
+, metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
+, metal::texturecube<float, metal::access::sample> sphere_map [[texture(5)]]
+) {
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    metal::float3 n = {};
+    float visibility = {};
+    metal::float3 env_brdf = {};
+    metal::float3 ambient_kd = {};
+    metal::float3 direct_kd = {};
+    metal::float3 specular = metal::float3(0.0);
+    metal::float3 indirect_specular = metal::float3(0.0);
+    metal::float4 _e5 = material.base_map_st;
+    metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    metal::float4 _e9 = material.base_color;
+    metal::float4 _e12 = base_map.sample(material_sampler, _e6);
+    metal::float4 base_rgba = _e9 * _e12;
+    metal::float3 base = metal::saturate(base_rgba.xyz);
+    float alpha_4 = metal::saturate(base_rgba.w);
+    metal::float4 _e20 = rmo_map.sample(material_sampler, _e6);
+    metal::float3 rmo = _e20.xyz;
+    metal::float3 _e22 = standard_emission(_e6, material, material_sampler, emissive_map);
+    float _e25 = material.roughness;
+    float roughness_4 = metal::saturate(_e25 * rmo.x);
+    float _e31 = material.metallic;
+    float metallic = metal::saturate(_e31 * rmo.y);
+    float _e38 = material.occlusion_strength;
+    float ao_1 = metal::saturate(metal::mix(1.0, rmo.z, _e38));
+    float _e44 = material.specular_strength;
+    float specular_strength_1 = metal::max(_e44, 0.0);
+    metal::float3 _e52 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
+    metal::float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
+    metal::float3 _e59 = weft_main_light_direction(weft_frame);
+    metal::float3 _e61 = n;
+    metal::float3 _e62 = weft_safe_normalize(_e59 + _e52, _e61);
+    metal::float3 _e63 = n;
+    float _e65 = weft_clamp_cos(metal::dot(_e63, _e52));
+    metal::float3 _e66 = n;
+    float n_dot_l_2 = metal::saturate(metal::dot(_e66, _e59));
+    metal::float3 _e69 = n;
+    float n_dot_h_2 = metal::saturate(metal::dot(_e69, _e62));
+    float v_dot_h_2 = metal::saturate(metal::dot(_e52, _e62));
+    metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
+    metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
+    {
+        metal::float3 _e80 = n;
+        metal::float3 _e81 = standard_low(_e80, _e52, _e59, _e62, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e82 = n;
+        metal::float3 _e84 = standard_sphere_map(_e81, _e82, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+        metal::float3 radiance = metal::clamp(_e84 + _e22, metal::float3(0.0), metal::float3(65504.0));
+        standard_alpha_test(alpha_4, material);
+        return fs_mainOutput { metal::float4(radiance, alpha_4) };
+    }
+}

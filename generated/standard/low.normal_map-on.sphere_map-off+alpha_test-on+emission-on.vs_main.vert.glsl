@@ -1,0 +1,235 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    vec4 emissive;
+    float emissive_strength;
+    float alpha_cutoff;
+    float sphere_strength;
+    vec4 base_map_st;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint SPHERE_MAP_OFF = 0u;
+const uint SPHERE_MAP_ADD = 1u;
+const uint SPHERE_MAP_MULTIPLY = 2u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+const bool ALPHA_TEST = true;
+const bool EMISSION = true;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_any_perpendicular(vec3 n_1) {
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((f0_ * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_vs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+    vec3 t_in = tangent.xyz;
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
+}
+
+vec3 weft_unpack_normal(vec3 texel, float strength) {
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+}
+
+vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
+    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
+    return _e4;
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+float weft_half_min_max(float x) {
+    return min(x, 65504.0);
+}
+
+float weft_half_pow5_(float x_1) {
+    float x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
+float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha) {
+    float a_1 = (n_dot_h * alpha);
+    float k = (alpha / (one_minus_n_dot_h2_ + (a_1 * a_1)));
+    float _e10 = weft_half_min_max(((k * k) * 0.31830987));
+    return _e10;
+}
+
+float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1) {
+    float nv = max(n_dot_v_1, 0.001);
+    float alpha2_ = (alpha_1 * alpha_1);
+    float g_v = mix(nv, 1.0, alpha_1);
+    float g_l = mix(n_dot_l, 1.0, alpha_1);
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    return ((0.5 * n_dot_l) / max(denominator, 0.0001));
+}
+
+vec3 weft_half_f_schlick(vec3 f0_1, float v_dot_h) {
+    float _e7 = weft_half_pow5_((1.0 - v_dot_h));
+    return (f0_1 + ((vec3(1.0) - f0_1) * _e7));
+}
+
+vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position_1) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    vec3 _e4 = color;
+    return _e4;
+}
+
+void main() {
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    gl_Position = _e66.clip_position;
+    _vs2fs_location0 = _e66.world_position;
+    _vs2fs_location1 = _e66.world_normal;
+    _vs2fs_location2 = _e66.world_tangent;
+    _vs2fs_location3 = _e66.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+

@@ -1,0 +1,232 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    vec4 emissive;
+    float emissive_strength;
+    float alpha_cutoff;
+    float sphere_strength;
+    vec4 base_map_st;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint SPHERE_MAP_OFF = 0u;
+const uint SPHERE_MAP_ADD = 1u;
+const uint SPHERE_MAP_MULTIPLY = 2u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+const bool ALPHA_TEST = false;
+const bool EMISSION = false;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+
+float weft_pow4_(float x) {
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float a2_ = (a * a);
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
+    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
+    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
+    float _e3 = weft_clamp_roughness(roughness_3);
+    float a_1 = (_e3 * _e3);
+    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
+    float r = clamp(roughness_4, 0.0, 1.0);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    float _e9 = weft_max3_(f0_2);
+    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
+    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
+    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_5) {
+    float r_1 = clamp(roughness_5, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_vs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
+    mat4x4 view = _group_0_binding_0_vs.view;
+    mat3x3 view3_ = mat3x3(view[0].xyz, view[1].xyz, view[2].xyz);
+    vec3 _e17 = weft_safe_normalize((view3_ * world_normal), vec3(0.0, 0.0, 1.0));
+    vec3 p_vs = (view * vec4(world_position_1, 1.0)).xyz;
+    vec3 _e26 = weft_safe_normalize(p_vs, vec3(0.0, 0.0, -1.0));
+    return reflect(_e26, _e17);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+void main() {
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    gl_Position = _e66.clip_position;
+    _vs2fs_location0 = _e66.world_position;
+    _vs2fs_location1 = _e66.world_normal;
+    _vs2fs_location2 = _e66.world_tangent;
+    _vs2fs_location3 = _e66.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+

@@ -1,0 +1,344 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftMaterial {
+    vec4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    vec4 emissive;
+    float emissive_strength;
+    float alpha_cutoff;
+    float sphere_strength;
+    vec4 base_map_st;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const uint SPHERE_MAP_OFF = 0u;
+const uint SPHERE_MAP_ADD = 1u;
+const uint SPHERE_MAP_MULTIPLY = 2u;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const uint TIER_LOW = 3u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+const float WEFT_MIN_N_DOT_HALF = 0.001;
+const float WEFT_MIN_ALPHA_HALF = 0.007921;
+const bool ALPHA_TEST = true;
+const bool EMISSION = true;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+
+layout(std140, binding = 1) uniform WeftMaterial_block_1Fragment { WeftMaterial _group_1_binding_0_fs; };
+
+layout(binding = 1) uniform sampler2D _group_1_binding_3_fs;
+
+layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
+
+layout(binding = 3) uniform sampler2D _group_1_binding_6_fs;
+
+layout(binding = 4) uniform samplerCube _group_1_binding_7_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float weft_pow4_(float x) {
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1) {
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness) {
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v_1, vec3 fallback) {
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
+    float _e3 = weft_clamp_roughness(roughness_1);
+    float a = (_e3 * _e3);
+    float a2_ = (a * a);
+    float noh = clamp(dot(n_1, h), 0.0, 1.0);
+    vec3 nxh = cross(n_1, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
+}
+
+vec3 weft_f_schlick_roughness(vec3 f0_1, float n_dot_v, float roughness_2) {
+    float _e6 = weft_pow5_((1.0 - clamp(n_dot_v, 0.0, 1.0)));
+    vec3 f90_ = max(vec3((1.0 - clamp(roughness_2, 0.0, 1.0))), f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3) {
+    float _e3 = weft_clamp_roughness(roughness_3);
+    float a_1 = (_e3 * _e3);
+    float k = (((a_1 + 1.0) * (a_1 + 1.0)) * 0.125);
+    float gv = ((clamp(n_dot_v_1, 0.0, 1.0) * (1.0 - k)) + k);
+    float gl = ((clamp(n_dot_l, 0.0, 1.0) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+vec3 weft_diffuse_lambert(vec3 albedo) {
+    return (albedo * WEFT_INV_PI);
+}
+
+vec3 weft_env_brdf_approx(vec3 f0_2, float n_dot_v_2, float roughness_4) {
+    float r = clamp(roughness_4, 0.0, 1.0);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    float _e9 = weft_max3_(f0_2);
+    float grazing = clamp((_e9 + (1.0 - r)), 0.0, 1.0);
+    float _e17 = weft_pow4_((1.0 - clamp(n_dot_v_2, 0.0, 1.0)));
+    return (mix(f0_2, vec3(grazing), _e17) * surface_reduction);
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+vec3 weft_sh_irradiance(vec3 n_2) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+float weft_specular_mip(float roughness_5) {
+    float r_1 = clamp(roughness_5, 0.0, 1.0);
+    float _e5 = _group_0_binding_0_fs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
+    float _e4 = weft_specular_mip(roughness_6);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
+    mat4x4 view = _group_0_binding_0_fs.view;
+    mat3x3 view3_ = mat3x3(view[0].xyz, view[1].xyz, view[2].xyz);
+    vec3 _e17 = weft_safe_normalize((view3_ * world_normal), vec3(0.0, 0.0, 1.0));
+    vec3 p_vs = (view * vec4(world_position_1, 1.0)).xyz;
+    vec3 _e26 = weft_safe_normalize(p_vs, vec3(0.0, 0.0, -1.0));
+    return reflect(_e26, _e17);
+}
+
+vec2 weft_transform_uv(vec2 uv, vec4 st) {
+    return ((uv * st.xy) + st.zw);
+}
+
+vec3 standard_emission(vec2 uv_1) {
+    if (EMISSION) {
+        float _e4 = _group_1_binding_0_fs.emissive_strength;
+        float strength = max(_e4, 0.0);
+        vec4 _e9 = _group_1_binding_0_fs.emissive;
+        vec3 emissive = max(_e9.xyz, vec3(0.0));
+        vec4 _e17 = texture(_group_1_binding_3_fs, vec2(uv_1));
+        return ((emissive * strength) * _e17.xyz);
+    }
+    return vec3(0.0);
+}
+
+vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_2) {
+    vec3 color = vec3(0.0);
+    color = color_in;
+    {
+        vec3 _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        vec4 _e7 = texture(_group_1_binding_7_fs, vec3(_e4));
+        vec3 sph = max(_e7.xyz, vec3(0.0));
+        vec3 _e12 = color;
+        float _e17 = _group_1_binding_0_fs.sphere_strength;
+        color = (_e12 * max(mix(vec3(1.0), sph, _e17), vec3(0.0)));
+    }
+    vec3 _e23 = color;
+    return _e23;
+}
+
+void standard_alpha_test(float alpha) {
+    if (ALPHA_TEST) {
+        float _e4 = _group_1_binding_0_fs.alpha_cutoff;
+        if ((alpha < _e4)) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
+void main() {
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    bool front_facing = gl_FrontFacing;
+    vec3 n = vec3(0.0);
+    float visibility = 0.0;
+    vec3 env_brdf = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
+    vec4 _e5 = _group_1_binding_0_fs.base_map_st;
+    vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    vec4 _e9 = _group_1_binding_0_fs.base_color;
+    vec4 _e12 = texture(_group_1_binding_4_fs, vec2(_e6));
+    vec4 base_rgba = (_e9 * _e12);
+    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
+    float alpha_1 = clamp(base_rgba.w, 0.0, 1.0);
+    vec4 _e20 = texture(_group_1_binding_6_fs, vec2(_e6));
+    vec3 rmo = _e20.xyz;
+    vec3 _e22 = standard_emission(_e6);
+    float _e25 = _group_1_binding_0_fs.roughness;
+    float roughness_7 = clamp((_e25 * rmo.x), 0.0, 1.0);
+    float _e31 = _group_1_binding_0_fs.metallic;
+    float metallic = clamp((_e31 * rmo.y), 0.0, 1.0);
+    float _e38 = _group_1_binding_0_fs.occlusion_strength;
+    float ao = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
+    float _e44 = _group_1_binding_0_fs.specular_strength;
+    float specular_strength = max(_e44, 0.0);
+    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
+    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
+    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
+    vec3 _e59 = weft_main_light_direction();
+    vec3 _e61 = n;
+    vec3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
+    vec3 _e63 = n;
+    float _e65 = weft_clamp_cos(dot(_e63, _e52));
+    vec3 _e66 = n;
+    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
+    vec3 _e69 = n;
+    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e52, _e62), 0.0, 1.0);
+    vec3 f0_3 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_albedo = (base * (1.0 - metallic));
+    {
+        {
+            float _e84 = weft_v_schlick_ggx(_e65, n_dot_l_1, roughness_7);
+            visibility = _e84;
+            vec3 _e85 = weft_env_brdf_approx(f0_3, _e65, roughness_7);
+            env_brdf = _e85;
+            vec3 _e88 = weft_f_schlick_roughness(f0_3, _e65, roughness_7);
+            ambient_kd = (vec3(1.0) - _e88);
+            vec3 _e92 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = (vec3(1.0) - _e92);
+        }
+    }
+    if ((specular_strength > 0.0)) {
+        vec3 _e102 = weft_f_schlick(f0_3, v_dot_h_1);
+        vec3 _e103 = n;
+        float _e104 = weft_d_ggx_nh(_e103, _e62, roughness_7);
+        float _e105 = visibility;
+        specular = (((_e104 * _e105) * _e102) * specular_strength);
+        vec3 _e110 = n;
+        vec3 _e112 = weft_prefiltered_radiance(reflect(-(_e52), _e110), roughness_7);
+        vec3 _e113 = env_brdf;
+        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
+    }
+    vec3 _e117 = direct_kd;
+    vec3 _e118 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e117 * _e118);
+    vec3 _e120 = specular;
+    vec3 _e122 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e120) * _e122) * n_dot_l_1);
+    vec3 _e125 = n;
+    vec3 _e126 = weft_sh_irradiance(_e125);
+    vec3 _e128 = ambient_kd;
+    vec3 indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
+    vec3 _e131 = indirect_specular;
+    vec3 color_1 = ((direct + _e131) + indirect_diffuse);
+    vec3 _e134 = n;
+    vec3 _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
+    vec3 radiance = clamp((_e136 + _e22), vec3(0.0), vec3(65504.0));
+    standard_alpha_test(alpha_1);
+    _fs2p_location0 = vec4(radiance, alpha_1);
+    return;
+}
+

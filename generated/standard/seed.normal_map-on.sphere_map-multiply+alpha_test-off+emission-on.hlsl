@@ -1,0 +1,459 @@
+struct WeftFrame {
+    row_major float4x4 view_proj;
+    row_major float4x4 view;
+    float4 camera_position;
+    float4 light_direction;
+    float4 light_color;
+    float4 sh[9];
+    float4 params;
+    float4 viewport;
+};
+
+struct WeftObject {
+    row_major float4x4 model;
+    row_major float4x4 normal_matrix;
+};
+
+struct WeftMaterial {
+    float4 base_color;
+    float roughness;
+    float metallic;
+    float occlusion_strength;
+    float normal_strength;
+    float specular_strength;
+    int _pad6_0;
+    int _pad6_1;
+    int _pad6_2;
+    float4 emissive;
+    float emissive_strength;
+    float alpha_cutoff;
+    float sphere_strength;
+    int _pad10_0;
+    float4 base_map_st;
+};
+
+struct WeftVertexInput {
+    float3 position : LOC0;
+    float3 normal : LOC1;
+    float4 tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+struct WeftVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+};
+
+static const float WEFT_PI = 3.1415927;
+static const float WEFT_INV_PI = 0.31830987;
+static const uint SPHERE_MAP_OFF = 0u;
+static const uint SPHERE_MAP_ADD = 1u;
+static const uint SPHERE_MAP_MULTIPLY = 2u;
+static const uint TIER_FAST = 0u;
+static const uint TIER_REFERENCE = 1u;
+static const uint TIER_SEED = 2u;
+static const uint TIER_LOW = 3u;
+static const float WEFT_MIN_ROUGHNESS = 0.045;
+static const float WEFT_MIN_N_DOT = 0.0001;
+static const float WEFT_MAX_HALF = 65504.0;
+static const float WEFT_DIELECTRIC_F0_ = 0.04;
+static const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
+static const float WEFT_MIN_N_DOT_HALF = 0.001;
+static const float WEFT_MIN_ALPHA_HALF = 0.007921;
+static const bool ALPHA_TEST = false;
+static const bool EMISSION = true;
+
+cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
+TextureCube<float4> weft_environment : register(t1);
+SamplerState nagaSamplerHeap[2048]: register(s0, space8);
+SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
+StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
+#define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
+cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
+cbuffer material : register(b0, space1) { WeftMaterial material; }
+StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
+#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
+#define material_clamp_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[2]])
+Texture2D<float4> emissive_map : register(t3, space1);
+Texture2D<float4> base_map : register(t4, space1);
+Texture2D<float4> normal_map : register(t5, space1);
+Texture2D<float4> rmo_map : register(t6, space1);
+TextureCube<float4> sphere_map : register(t7, space1);
+
+struct VertexOutput_vs_main {
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    float4 clip_position : SV_Position;
+};
+
+struct FragmentInput_fs_main {
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
+    float4 world_tangent_1 : LOC2;
+    float2 uv0_1 : LOC3;
+    float4 clip_position_1 : SV_Position;
+    bool front_facing_1 : SV_IsFrontFace;
+};
+
+float weft_pow4_(float x)
+{
+    float x2_ = (x * x);
+    return (x2_ * x2_);
+}
+
+float weft_pow5_(float x_1)
+{
+    float x2_1 = (x_1 * x_1);
+    return ((x2_1 * x2_1) * x_1);
+}
+
+float weft_max3_(float3 v)
+{
+    return max(v.x, max(v.y, v.z));
+}
+
+float weft_clamp_cos(float c)
+{
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+float weft_clamp_roughness(float roughness)
+{
+    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
+}
+
+float3 weft_safe_normalize(float3 v_1, float3 fallback)
+{
+    float len2_ = dot(v_1, v_1);
+    return ((len2_ > 1e-20) ? (v_1 * rsqrt(max(len2_, 1e-20))) : fallback);
+}
+
+float3 weft_any_perpendicular(float3 n_1)
+{
+    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+}
+
+float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
+{
+    const float _e3 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e3 * _e3);
+    float a2_ = (a_1 * a_1);
+    float noh = saturate(dot(n_2, h));
+    float3 nxh = cross(n_2, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
+}
+
+float3 weft_f_schlick_roughness(float3 f0_1, float n_dot_v, float roughness_2)
+{
+    const float _e6 = weft_pow5_((1.0 - saturate(n_dot_v)));
+    float3 f90_ = max(((1.0 - saturate(roughness_2))).xxx, f0_1);
+    return (f0_1 + ((f90_ - f0_1) * _e6));
+}
+
+float weft_v_schlick_ggx(float n_dot_v_1, float n_dot_l, float roughness_3)
+{
+    const float _e3 = weft_clamp_roughness(roughness_3);
+    float a_2 = (_e3 * _e3);
+    float k = (((a_2 + 1.0) * (a_2 + 1.0)) * 0.125);
+    float gv = ((saturate(n_dot_v_1) * (1.0 - k)) + k);
+    float gl = ((saturate(n_dot_l) * (1.0 - k)) + k);
+    return (0.25 / (gv * gl));
+}
+
+float3 weft_diffuse_lambert(float3 albedo)
+{
+    return (albedo * WEFT_INV_PI);
+}
+
+float3 weft_env_brdf_approx(float3 f0_2, float n_dot_v_2, float roughness_4)
+{
+    float r = saturate(roughness_4);
+    float surface_reduction = (1.0 / ((r * r) + 1.0));
+    const float _e9 = weft_max3_(f0_2);
+    float grazing = saturate((_e9 + (1.0 - r)));
+    const float _e17 = weft_pow4_((1.0 - saturate(n_dot_v_2)));
+    return (lerp(f0_2, (grazing).xxx, _e17) * surface_reduction);
+}
+
+float3 weft_main_light_direction()
+{
+    float4 _e2 = weft_frame.light_direction;
+    const float3 _e8 = weft_safe_normalize(_e2.xyz, float3(0.0, 0.0, 1.0));
+    return _e8;
+}
+
+float3 weft_main_light_radiance()
+{
+    float4 _e2 = weft_frame.light_color;
+    return max(_e2.xyz, (0.0).xxx);
+}
+
+float3 weft_view_direction(float3 world_position, float3 fallback_1)
+{
+    float4 _e4 = weft_frame.camera_position;
+    const float3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
+    return _e7;
+}
+
+float3 weft_sh_irradiance(float3 n_3)
+{
+    float3 e = (float3)0;
+
+    float4 sh[9] = weft_frame.sh;
+    e = (sh[0].xyz * 0.282095);
+    float3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    float3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    float3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    float3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    float3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    float3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    float3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    float3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    float3 _e91 = e;
+    return max(_e91, (0.0).xxx);
+}
+
+float weft_specular_mip(float roughness_5)
+{
+    float r_1 = saturate(roughness_5);
+    float _e5 = weft_frame.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+}
+
+float3 weft_prefiltered_radiance(float3 dir, float roughness_6)
+{
+    const float _e4 = weft_specular_mip(roughness_6);
+    float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_1.xyz, (0.0).xxx);
+}
+
+float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
+{
+    float4x4 view = weft_frame.view;
+    float3x3 view3_ = float3x3(view[0].xyz, view[1].xyz, view[2].xyz);
+    const float3 _e17 = weft_safe_normalize(mul(world_normal, view3_), float3(0.0, 0.0, 1.0));
+    float3 p_vs = mul(float4(world_position_1, 1.0), view).xyz;
+    const float3 _e26 = weft_safe_normalize(p_vs, float3(0.0, 0.0, -1.0));
+    return reflect(_e26, _e17);
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+{
+    float3 t_in = tangent.xyz;
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float len2_1 = dot(t_proj, t_proj);
+    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    const float3 _e13 = weft_any_perpendicular(n_4);
+    float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
+}
+
+float3 weft_unpack_normal(float3 texel, float strength)
+{
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+}
+
+float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
+{
+    const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
+    return _e4;
+}
+
+float2 weft_transform_uv(float2 uv, float4 st)
+{
+    return ((uv * st.xy) + st.zw);
+}
+
+float3 standard_emission(float2 uv_1)
+{
+    if (EMISSION) {
+        float _e4 = material.emissive_strength;
+        float strength_1 = max(_e4, 0.0);
+        float4 _e9 = material.emissive;
+        float3 emissive = max(_e9.xyz, (0.0).xxx);
+        float4 _e17 = emissive_map.Sample(material_sampler, uv_1);
+        return ((emissive * strength_1) * _e17.xyz);
+    }
+    return (0.0).xxx;
+}
+
+float3 standard_sphere_map(float3 color_in, float3 n_5, float3 world_position_2)
+{
+    float3 color = (float3)0;
+
+    color = color_in;
+    {
+        const float3 _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        float4 _e7 = sphere_map.Sample(material_clamp_sampler, _e4);
+        float3 sph = max(_e7.xyz, (0.0).xxx);
+        float3 _e12 = color;
+        float _e17 = material.sphere_strength;
+        color = (_e12 * max(lerp((1.0).xxx, sph, _e17), (0.0).xxx));
+    }
+    float3 _e23 = color;
+    return _e23;
+}
+
+void standard_alpha_test(float alpha)
+{
+    if (ALPHA_TEST) {
+        float _e4 = material.alpha_cutoff;
+        if ((alpha < _e4)) {
+            discard;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
+VertexOutput_vs_main vs_main(WeftVertexInput in_)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
+    return weftvaryings_1;
+}
+
+float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
+{
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    float3 n = (float3)0;
+    float visibility = (float)0;
+    float3 env_brdf = (float3)0;
+    float3 ambient_kd = (float3)0;
+    float3 direct_kd = (float3)0;
+    float3 specular = (0.0).xxx;
+    float3 indirect_specular = (0.0).xxx;
+
+    float4 _e5 = material.base_map_st;
+    const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
+    float4 _e9 = material.base_color;
+    float4 _e12 = base_map.Sample(material_sampler, _e6);
+    float4 base_rgba = (_e9 * _e12);
+    float3 base = saturate(base_rgba.xyz);
+    float alpha_1 = saturate(base_rgba.w);
+    float4 _e20 = rmo_map.Sample(material_sampler, _e6);
+    float3 rmo = _e20.xyz;
+    const float3 _e22 = standard_emission(_e6);
+    float _e25 = material.roughness;
+    float roughness_7 = saturate((_e25 * rmo.x));
+    float _e31 = material.metallic;
+    float metallic = saturate((_e31 * rmo.y));
+    float _e38 = material.occlusion_strength;
+    float ao = saturate(lerp(1.0, rmo.z, _e38));
+    float _e44 = material.specular_strength;
+    float specular_strength = max(_e44, 0.0);
+    const float3 _e52 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
+    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
+    const float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
+    n = _e57;
+    {
+        float3 _e59 = n;
+        const float3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
+        float4 _e64 = normal_map.Sample(material_sampler, _e6);
+        float3 texel_1 = _e64.xyz;
+        float _e68 = material.normal_strength;
+        const float3 _e69 = weft_unpack_normal(texel_1, _e68);
+        const float3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
+        n = _e70;
+    }
+    const float3 _e71 = weft_main_light_direction();
+    float3 _e73 = n;
+    const float3 _e74 = weft_safe_normalize((_e71 + _e52), _e73);
+    float3 _e75 = n;
+    const float _e77 = weft_clamp_cos(dot(_e75, _e52));
+    float3 _e78 = n;
+    float n_dot_l_1 = saturate(dot(_e78, _e71));
+    float3 _e81 = n;
+    float n_dot_h = saturate(dot(_e81, _e74));
+    float v_dot_h_1 = saturate(dot(_e52, _e74));
+    float3 f0_3 = lerp((0.04).xxx, base, metallic);
+    float3 diffuse_albedo = (base * (1.0 - metallic));
+    {
+        {
+            const float _e96 = weft_v_schlick_ggx(_e77, n_dot_l_1, roughness_7);
+            visibility = _e96;
+            const float3 _e97 = weft_env_brdf_approx(f0_3, _e77, roughness_7);
+            env_brdf = _e97;
+            const float3 _e100 = weft_f_schlick_roughness(f0_3, _e77, roughness_7);
+            ambient_kd = ((1.0).xxx - _e100);
+            const float3 _e104 = weft_f_schlick(f0_3, v_dot_h_1);
+            direct_kd = ((1.0).xxx - _e104);
+        }
+    }
+    if ((specular_strength > 0.0)) {
+        const float3 _e114 = weft_f_schlick(f0_3, v_dot_h_1);
+        float3 _e115 = n;
+        const float _e116 = weft_d_ggx_nh(_e115, _e74, roughness_7);
+        float _e117 = visibility;
+        specular = (((_e116 * _e117) * _e114) * specular_strength);
+        float3 _e122 = n;
+        const float3 _e124 = weft_prefiltered_radiance(reflect(-(_e52), _e122), roughness_7);
+        float3 _e125 = env_brdf;
+        indirect_specular = ((_e124 * _e125) * (ao * specular_strength));
+    }
+    float3 _e129 = direct_kd;
+    const float3 _e130 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e129 * _e130);
+    float3 _e132 = specular;
+    const float3 _e134 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e132) * _e134) * n_dot_l_1);
+    float3 _e137 = n;
+    const float3 _e138 = weft_sh_irradiance(_e137);
+    float3 _e140 = ambient_kd;
+    float3 indirect_diffuse = (((_e138 * ao) * _e140) * diffuse_albedo);
+    float3 _e143 = indirect_specular;
+    float3 color_1 = ((direct + _e143) + indirect_diffuse);
+    float3 _e146 = n;
+    const float3 _e148 = standard_sphere_map(color_1, _e146, in_1.world_position);
+    float3 radiance = clamp((_e148 + _e22), (0.0).xxx, (65504.0).xxx);
+    standard_alpha_test(alpha_1);
+    return float4(radiance, alpha_1);
+}
