@@ -571,3 +571,33 @@ fn the_funnel_counts_what_the_scene_keeps() {
         .sum();
     assert_eq!(f.shader_bytes, bytes as u64);
 }
+
+#[test]
+fn an_instance_overrides_its_passes_render_state() {
+    let (_dir, manifest) = image_scene("base_color = [1.0, 1.0, 1.0, 0.5]", &[]);
+    let text = std::fs::read_to_string(&manifest).unwrap();
+    std::fs::write(
+        &manifest,
+        format!("{text}double_sided = true\nblend = \"alpha\"\n"),
+    )
+    .unwrap();
+    let out = build_scene(&manifest, &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let p = &out.metadata.instances[0].passes[0];
+    assert_eq!(p.render_state.cull, weft_meta::CullMode::None);
+    assert_eq!(p.primitive.cull_mode, weft_meta::CullMode::None);
+    assert_eq!(p.render_state.blend, weft_meta::BlendMode::Alpha);
+    assert!(!p.depth_stencil.depth_write_enabled && p.render_state.queue == 3000);
+    // `opaque` is no override; a typo is named.
+    for (value, phrase) in [
+        ("\"opaque\"", "not a blend mode an instance may set"),
+        ("\"alpah\"", "alpha"),
+    ] {
+        std::fs::write(&manifest, format!("{text}blend = {value}\n")).unwrap();
+        let error = build_error(&manifest);
+        assert!(
+            error.contains(phrase) && error.contains("img.scene.toml:"),
+            "{error}"
+        );
+    }
+}
