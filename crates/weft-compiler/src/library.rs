@@ -475,43 +475,13 @@ pub fn build_materials_streaming(
     let pool = crate::nesting::compiler_pool(options.jobs);
     let mut out = BuildOutput::default();
     let mut previous = crate::unchanged::Previous::read(paths, options, &pool);
-    let cache = match options
-        .cache_dir
-        .as_deref()
-        .map(|dir| UnitCache::open(dir, options.cache_trust.clone()))
-    {
-        None => None,
-        Some(Ok(c)) => Some(c),
-        Some(Err(e)) => {
-            diags.push(
-                Diagnostic::error()
-                    .with_code("io")
-                    .with_message(format!("cannot use the cache folder: {e}"))
-                    .with_notes(vec![
-                        "give --cache-dir a folder this user can create and write".into(),
-                    ]),
-            );
-            return Err((db, diags));
-        }
+    let Ok(cache) = open_cache(options, &mut diags) else {
+        return Err((db, diags));
     };
     let mut names = std::collections::HashSet::new();
     let mut library_inputs = Sha256::new();
     library_inputs.update(crate::cache::TOOLCHAIN_ID);
     library_inputs.update([0]);
-    let mut put = |rel: String, bytes: Vec<u8>, diags: &mut Diagnostics| -> bool {
-        let message = format!("cannot write `{rel}`");
-        match sink(rel, bytes) {
-            Ok(()) => true,
-            Err(e) => {
-                diags.push(
-                    Diagnostic::error()
-                        .with_code("io")
-                        .with_message(format!("{message}: {e}")),
-                );
-                false
-            }
-        }
-    };
     for (i, path) in paths.iter().enumerate() {
         let root = root.map_or_else(|| weft_front::find_root(path), Path::to_path_buf);
         let Some(m) = weft_front::load_material(path, &root, &mut db, &mut diags) else {
@@ -541,16 +511,7 @@ pub fn build_materials_streaming(
             .filter(|_| options.keep_unchanged)
             && let Some(k) = previous.keep(dir, &m.name, &hash)
         {
-            let kept = out.kept.get_or_insert_with(|| crate::unchanged::KeptFiles {
-                dir: dir.to_path_buf(),
-                ..Default::default()
-            });
-            for (name, sha) in k.files {
-                kept.files.insert(format!("{}/{name}", m.name), sha);
-            }
-            kept.materials.push(m.name.clone());
-            out.reused.push(m.name.clone());
-            out.variant_count += k.variants;
+            record_kept(&mut out, dir, &m.name, k);
             continue;
         }
         let reused = options
@@ -567,24 +528,10 @@ pub fn build_materials_streaming(
             }
         };
         // Nothing more is handed over once the build has failed.
-        if let Some((meta, files)) = result.filter(|_| !diags.has_errors()) {
-            out.variant_count += meta.variants.len();
-            for (name, bytes) in files {
-                if !put(format!("{}/{name}", m.name), bytes, &mut diags) {
-                    return Err((db, diags));
-                }
-            }
-            let mut json = serde_json::to_string_pretty(&meta).expect("metadata serialises");
-            json.push('\n');
-            let rel = format!("{0}/{0}.meta.json", m.name);
-            if !put(rel, json.into_bytes(), &mut diags) {
-                return Err((db, diags));
-            }
-            if options.drop_metadata {
-                out.dropped_metadata += 1;
-            } else {
-                out.materials.push(meta);
-            }
+        if let Some((meta, files)) = result.filter(|_| !diags.has_errors())
+            && !hand_over(&m.name, meta, files, options, &mut out, sink, &mut diags)
+        {
+            return Err((db, diags));
         }
     }
     out.library_inputs = library_inputs
@@ -605,7 +552,7 @@ pub fn build_materials_streaming(
     let mut library = BTreeMap::new();
     add_library_files(&mut library, options.reuse_from.as_deref());
     for (rel, bytes) in library {
-        if !put(rel, bytes, &mut diags) {
+        if !put(sink, rel, bytes, &mut diags) {
             return Err((db, diags));
         }
     }
@@ -613,6 +560,96 @@ pub fn build_materials_streaming(
         out.warnings = Some((db, diags));
     }
     Ok(out)
+}
+
+/// The shared cache of compile units, when `--cache-dir` names one; a
+/// folder that cannot be used is an `io` diagnostic (`Err`).
+fn open_cache(options: &BuildOptions, diags: &mut Diagnostics) -> Result<Option<UnitCache>, ()> {
+    match options
+        .cache_dir
+        .as_deref()
+        .map(|dir| UnitCache::open(dir, options.cache_trust.clone()))
+    {
+        None => Ok(None),
+        Some(Ok(c)) => Ok(Some(c)),
+        Some(Err(e)) => {
+            diags.push(
+                Diagnostic::error()
+                    .with_code("io")
+                    .with_message(format!("cannot use the cache folder: {e}"))
+                    .with_notes(vec![
+                        "give --cache-dir a folder this user can create and write".into(),
+                    ]),
+            );
+            Err(())
+        }
+    }
+}
+
+/// A material whose files stay in `dir` unread (the no-change fast path).
+fn record_kept(out: &mut BuildOutput, dir: &Path, name: &str, k: crate::unchanged::Kept) {
+    let kept = out.kept.get_or_insert_with(|| crate::unchanged::KeptFiles {
+        dir: dir.to_path_buf(),
+        ..Default::default()
+    });
+    for (file, sha) in k.files {
+        kept.files.insert(format!("{name}/{file}"), sha);
+    }
+    kept.materials.push(name.to_string());
+    out.reused.push(name.to_string());
+    out.variant_count += k.variants;
+}
+
+/// Hands a compiled material's files and then its metadata to `sink`;
+/// false when the sink failed (reported in `diags`).
+fn hand_over(
+    name: &str,
+    meta: MaterialMetadata,
+    files: Vec<(String, Vec<u8>)>,
+    options: &BuildOptions,
+    out: &mut BuildOutput,
+    sink: &mut dyn FnMut(String, Vec<u8>) -> std::io::Result<()>,
+    diags: &mut Diagnostics,
+) -> bool {
+    out.variant_count += meta.variants.len();
+    for (file, bytes) in files {
+        if !put(sink, format!("{name}/{file}"), bytes, diags) {
+            return false;
+        }
+    }
+    let mut json = serde_json::to_string_pretty(&meta).expect("metadata serialises");
+    json.push('\n');
+    let rel = format!("{0}/{0}.meta.json", name);
+    if !put(sink, rel, json.into_bytes(), diags) {
+        return false;
+    }
+    if options.drop_metadata {
+        out.dropped_metadata += 1;
+    } else {
+        out.materials.push(meta);
+    }
+    true
+}
+
+/// One file to `sink`; false when it failed (an `io` diagnostic).
+fn put(
+    sink: &mut dyn FnMut(String, Vec<u8>) -> std::io::Result<()>,
+    rel: String,
+    bytes: Vec<u8>,
+    diags: &mut Diagnostics,
+) -> bool {
+    let message = format!("cannot write `{rel}`");
+    match sink(rel, bytes) {
+        Ok(()) => true,
+        Err(e) => {
+            diags.push(
+                Diagnostic::error()
+                    .with_code("io")
+                    .with_message(format!("{message}: {e}")),
+            );
+            false
+        }
+    }
 }
 
 /// Files shared by every material: baked LUTs and the metadata schema.

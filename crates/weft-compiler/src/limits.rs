@@ -122,92 +122,111 @@ fn variant_findings(m: &Material, v: &CompiledVariant, shown: &str, sites: &Site
     let mut out = Vec::new();
     let bindings = &v.shader.bindings;
     for b in bindings {
-        let groups = m.limits.get("max_bind_groups");
-        if u64::from(b.group) >= groups {
-            out.push(Finding {
-                limit: "max_bind_groups",
-                subject: format!("{}:{}", b.group, b.binding),
-                message: format!(
-                    "{shown} binds `{}` in @group({}), but maxBindGroups is {groups}",
-                    b.name, b.group
-                ),
-                at: sites.of(b),
-                label: format!("@group({}) needs {} bind groups", b.group, b.group + 1),
-                also: Vec::new(),
-                notes: vec![raise_hint(
-                    m,
-                    "max_bind_groups",
-                    u64::from(b.group) + 1,
-                    "use groups 0 to 2 (the engine interface's and the material's)",
-                )],
-                amount: u64::from(b.group) + 1 - groups,
-            });
-        }
-        let per_group = m.limits.get("max_bindings_per_bind_group");
-        if u64::from(b.binding) >= per_group {
-            out.push(Finding {
-                limit: "max_bindings_per_bind_group",
-                subject: format!("{}:{}", b.group, b.binding),
-                message: format!(
-                    "{shown} binds `{}` at @binding({}), but maxBindingsPerBindGroup is {per_group}",
-                    b.name, b.binding
-                ),
-                at: sites.of(b),
-                label: format!("binding number {} is too large", b.binding),
-                also: Vec::new(),
-                notes: vec![raise_hint(
-                    m,
-                    "max_bindings_per_bind_group",
-                    u64::from(b.binding) + 1,
-                    "use smaller binding numbers",
-                )],
-                amount: u64::from(b.binding) + 1 - per_group,
-            });
-        }
-        let size_limit = m.limits.get("max_uniform_buffer_binding_size");
-        if b.kind == BindingKind::UniformBuffer
-            && let Some(buffer) = &b.buffer
-            && buffer.min_binding_size > size_limit
-        {
-            let size = buffer.min_binding_size;
-            let mut members: Vec<&weft_meta::UniformMember> =
-                buffer.layout.members.iter().collect();
-            members.sort_by_key(|mem| std::cmp::Reverse(mem.size));
-            let largest: Vec<String> = members
+        binding_findings(m, b, shown, sites, &mut out);
+    }
+    stage_findings(m, bindings, shown, sites, &mut out);
+    out.extend(vertex_attribute_finding(m, v, shown));
+    out
+}
+
+/// One binding against the bind group count, the binding numbers per group
+/// and (a uniform buffer) the uniform buffer size.
+fn binding_findings(m: &Material, b: &Binding, shown: &str, sites: &Sites, out: &mut Vec<Finding>) {
+    let groups = m.limits.get("max_bind_groups");
+    if u64::from(b.group) >= groups {
+        out.push(Finding {
+            limit: "max_bind_groups",
+            subject: format!("{}:{}", b.group, b.binding),
+            message: format!(
+                "{shown} binds `{}` in @group({}), but maxBindGroups is {groups}",
+                b.name, b.group
+            ),
+            at: sites.of(b),
+            label: format!("@group({}) needs {} bind groups", b.group, b.group + 1),
+            also: Vec::new(),
+            notes: vec![raise_hint(
+                m,
+                "max_bind_groups",
+                u64::from(b.group) + 1,
+                "use groups 0 to 2 (the engine interface's and the material's)",
+            )],
+            amount: u64::from(b.group) + 1 - groups,
+        });
+    }
+    let per_group = m.limits.get("max_bindings_per_bind_group");
+    if u64::from(b.binding) >= per_group {
+        out.push(Finding {
+            limit: "max_bindings_per_bind_group",
+            subject: format!("{}:{}", b.group, b.binding),
+            message: format!(
+                "{shown} binds `{}` at @binding({}), but maxBindingsPerBindGroup is {per_group}",
+                b.name, b.binding
+            ),
+            at: sites.of(b),
+            label: format!("binding number {} is too large", b.binding),
+            also: Vec::new(),
+            notes: vec![raise_hint(
+                m,
+                "max_bindings_per_bind_group",
+                u64::from(b.binding) + 1,
+                "use smaller binding numbers",
+            )],
+            amount: u64::from(b.binding) + 1 - per_group,
+        });
+    }
+    let size_limit = m.limits.get("max_uniform_buffer_binding_size");
+    if b.kind == BindingKind::UniformBuffer
+        && let Some(buffer) = &b.buffer
+        && buffer.min_binding_size > size_limit
+    {
+        let size = buffer.min_binding_size;
+        let mut members: Vec<&weft_meta::UniformMember> = buffer.layout.members.iter().collect();
+        members.sort_by_key(|mem| std::cmp::Reverse(mem.size));
+        let largest: Vec<String> = members
+            .iter()
+            .take(3)
+            .map(|mem| format!("`{}` ({} bytes)", mem.name, mem.size))
+            .collect();
+        out.push(Finding {
+            limit: "max_uniform_buffer_binding_size",
+            subject: format!("{}:{}", b.group, b.binding),
+            message: format!(
+                "the uniform buffer `{}` of {shown} is {size} bytes, more than maxUniformBufferBindingSize ({size_limit})",
+                b.name
+            ),
+            at: sites.of(b),
+            label: format!("`{}` is {size} bytes", buffer.layout.struct_name),
+            also: members
                 .iter()
                 .take(3)
-                .map(|mem| format!("`{}` ({} bytes)", mem.name, mem.size))
-                .collect();
-            out.push(Finding {
-                limit: "max_uniform_buffer_binding_size",
-                subject: format!("{}:{}", b.group, b.binding),
-                message: format!(
-                    "the uniform buffer `{}` of {shown} is {size} bytes, more than maxUniformBufferBindingSize ({size_limit})",
-                    b.name
+                .filter_map(|mem| {
+                    let p = m.param(mem.parameter.as_deref()?)?;
+                    Some((p.decl.clone(), format!("{} bytes", mem.size)))
+                })
+                .collect(),
+            notes: vec![
+                format!("its largest members: {}", largest.join(", ")),
+                raise_hint(
+                    m,
+                    "max_uniform_buffer_binding_size",
+                    size,
+                    "use fewer or smaller uniform members (curve `samples`, for one)",
                 ),
-                at: sites.of(b),
-                label: format!("`{}` is {size} bytes", buffer.layout.struct_name),
-                also: members
-                    .iter()
-                    .take(3)
-                    .filter_map(|mem| {
-                        let p = m.param(mem.parameter.as_deref()?)?;
-                        Some((p.decl.clone(), format!("{} bytes", mem.size)))
-                    })
-                    .collect(),
-                notes: vec![
-                    format!("its largest members: {}", largest.join(", ")),
-                    raise_hint(
-                        m,
-                        "max_uniform_buffer_binding_size",
-                        size,
-                        "use fewer or smaller uniform members (curve `samples`, for one)",
-                    ),
-                ],
-                amount: size - size_limit,
-            });
-        }
+            ],
+            amount: size - size_limit,
+        });
     }
+}
+
+/// The sampled textures, samplers and uniform buffers of each stage against
+/// their per-stage limits.
+fn stage_findings(
+    m: &Material,
+    bindings: &[Binding],
+    shown: &str,
+    sites: &Sites,
+    out: &mut Vec<Finding>,
+) {
     for stage in [Stage::Vertex, Stage::Fragment] {
         for (key, what, counts) in PER_STAGE {
             let limit = m.limits.get(key);
@@ -277,6 +296,10 @@ fn variant_findings(m: &Material, v: &CompiledVariant, shown: &str, sites: &Site
             });
         }
     }
+}
+
+/// The vertex attributes the variant reads against `max_vertex_attributes`.
+fn vertex_attribute_finding(m: &Material, v: &CompiledVariant, shown: &str) -> Option<Finding> {
     let attributes = m.limits.get("max_vertex_attributes");
     let inputs = &v.shader.vertex_inputs;
     let highest = inputs
@@ -285,26 +308,31 @@ fn variant_findings(m: &Material, v: &CompiledVariant, shown: &str, sites: &Site
         .max()
         .unwrap_or(0);
     let needed = highest.max(inputs.len() as u64);
-    if needed > attributes {
-        out.push(Finding {
-            limit: "max_vertex_attributes",
-            subject: String::new(),
-            message: format!(
-                "{shown} reads {} vertex attributes (up to @location({})), more than maxVertexAttributes ({attributes})",
-                inputs.len(),
-                highest.saturating_sub(1)
-            ),
-            at: Some(Loc {
-                file: m.file,
-                span: m.requires_span.clone(),
-            }),
-            label: "the vertex inputs this material requires".into(),
-            also: Vec::new(),
-            notes: vec![raise_hint(m, "max_vertex_attributes", needed, "read fewer vertex inputs")],
-            amount: needed - attributes,
-        });
+    if needed <= attributes {
+        return None;
     }
-    out
+    Some(Finding {
+        limit: "max_vertex_attributes",
+        subject: String::new(),
+        message: format!(
+            "{shown} reads {} vertex attributes (up to @location({})), more than maxVertexAttributes ({attributes})",
+            inputs.len(),
+            highest.saturating_sub(1)
+        ),
+        at: Some(Loc {
+            file: m.file,
+            span: m.requires_span.clone(),
+        }),
+        label: "the vertex inputs this material requires".into(),
+        also: Vec::new(),
+        notes: vec![raise_hint(
+            m,
+            "max_vertex_attributes",
+            needed,
+            "read fewer vertex inputs",
+        )],
+        amount: needed - attributes,
+    })
 }
 
 /// Checks every compiled variant against the limits in force; reports one

@@ -81,7 +81,6 @@ pub fn f32_lit(x: f64) -> String {
 }
 
 pub fn generate(m: &Material) -> Prelude {
-    let decl = |loc: &Loc| Target::Decl(loc.clone());
     let mat = Target::Decl(m.decl.clone());
     let mut lines: Vec<(String, Target)> = Vec::new();
     lines.push((
@@ -92,6 +91,30 @@ pub fn generate(m: &Material) -> Prelude {
         mat.clone(),
     ));
 
+    push_uniform_block(m, &mut lines);
+    lines.push((format!("@group({MATERIAL_GROUP}) @binding({MATERIAL_SAMPLER_BINDING}) var material_sampler: sampler;"), mat.clone()));
+    lines.push((
+        format!("@group({MATERIAL_GROUP}) @binding({MATERIAL_CLAMP_SAMPLER_BINDING}) var material_clamp_sampler: sampler;"),
+        mat.clone(),
+    ));
+    let mut binding = FIRST_TEXTURE_BINDING;
+    let texture_bindings = push_textures(m, &mut binding, &mut lines);
+    let table_bindings = push_tables(m, &mut binding, &mut lines);
+    push_keywords_and_tiers(m, &mut lines);
+    push_accessors(m, &mut lines);
+    lines.push(("// ---- end of generated prelude ----".into(), mat));
+    Prelude {
+        lines,
+        texture_bindings,
+        table_bindings,
+    }
+}
+
+/// The uniform struct (one member per uniform-backed parameter) and its
+/// group-1 binding; nothing when no parameter has a member.
+fn push_uniform_block(m: &Material, lines: &mut Vec<(String, Target)>) {
+    let decl = |loc: &Loc| Target::Decl(loc.clone());
+    let mat = Target::Decl(m.decl.clone());
     let members = uniform_members(m);
     if !members.is_empty() {
         lines.push((format!("struct {UNIFORM_STRUCT} {{"), mat.clone()));
@@ -105,13 +128,17 @@ pub fn generate(m: &Material) -> Prelude {
             mat.clone(),
         ));
     }
-    lines.push((format!("@group({MATERIAL_GROUP}) @binding({MATERIAL_SAMPLER_BINDING}) var material_sampler: sampler;"), mat.clone()));
-    lines.push((
-        format!("@group({MATERIAL_GROUP}) @binding({MATERIAL_CLAMP_SAMPLER_BINDING}) var material_clamp_sampler: sampler;"),
-        mat.clone(),
-    ));
+}
+
+/// A binding per texture parameter from `binding` on; returns (parameter,
+/// binding) of each.
+fn push_textures(
+    m: &Material,
+    binding: &mut u32,
+    lines: &mut Vec<(String, Target)>,
+) -> Vec<(String, u32)> {
+    let decl = |loc: &Loc| Target::Decl(loc.clone());
     let mut texture_bindings = Vec::new();
-    let mut binding = FIRST_TEXTURE_BINDING;
     for p in &m.params {
         if let Some(ty) = texture_type(p) {
             lines.push((
@@ -121,13 +148,23 @@ pub fn generate(m: &Material) -> Prelude {
                 ),
                 decl(&p.decl),
             ));
-            texture_bindings.push((p.name.clone(), binding));
-            binding += 1;
+            texture_bindings.push((p.name.clone(), *binding));
+            *binding += 1;
         }
     }
-    // Baked tables after the parameters' textures: the binding, its recipe's
-    // values as constants (a reference tier integrates the same function),
-    // and an accessor that samples at texel centres.
+    texture_bindings
+}
+
+/// Baked tables after the parameters' textures: the binding, its recipe's
+/// values as constants (a reference tier integrates the same function),
+/// and an accessor that samples at texel centres. Returns (table, binding)
+/// of each.
+fn push_tables(
+    m: &Material,
+    binding: &mut u32,
+    lines: &mut Vec<(String, Target)>,
+) -> Vec<(String, u32)> {
+    let decl = |loc: &Loc| Target::Decl(loc.clone());
     let mut table_bindings = Vec::new();
     for t in &m.tables {
         let here = decl(&t.decl);
@@ -164,10 +201,17 @@ pub fn generate(m: &Material) -> Prelude {
             }
         }
         lines.extend(body.into_iter().map(|l| (l, here.clone())));
-        table_bindings.push((n.clone(), binding));
-        binding += 1;
+        table_bindings.push((n.clone(), *binding));
+        *binding += 1;
     }
+    table_bindings
+}
 
+/// Each keyword's `override` (and an enum's value constants), then the
+/// tier override and constants.
+fn push_keywords_and_tiers(m: &Material, lines: &mut Vec<(String, Target)>) {
+    let decl = |loc: &Loc| Target::Decl(loc.clone());
+    let mat = Target::Decl(m.decl.clone());
     for k in &m.keywords {
         let (ty, default) = match k.kind {
             KeywordKind::Toggle => (
@@ -203,7 +247,12 @@ pub fn generate(m: &Material) -> Prelude {
             mat.clone(),
         ));
     }
+}
 
+/// The accessors of curves (`curve_<name>(t)`, linear between the baked
+/// samples) and gradients (`gradient_<name>(x)`).
+fn push_accessors(m: &Material, lines: &mut Vec<(String, Target)>) {
+    let decl = |loc: &Loc| Target::Decl(loc.clone());
     for p in &m.params {
         match (&p.kind, &p.default) {
             (ParamKind::Curve, ParamValue::Curve(keys)) => {
@@ -251,11 +300,5 @@ pub fn generate(m: &Material) -> Prelude {
             }
             _ => {}
         }
-    }
-    lines.push(("// ---- end of generated prelude ----".into(), mat));
-    Prelude {
-        lines,
-        texture_bindings,
-        table_bindings,
     }
 }

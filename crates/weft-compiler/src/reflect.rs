@@ -80,129 +80,15 @@ pub fn bindings(
     for (handle, var) in module.global_variables.iter() {
         let Some(rb) = &var.binding else { continue };
         let inner = &module.types[var.ty].inner;
-        let kind = match (inner, var.space) {
-            (TypeInner::Sampler { comparison: false }, _) => BindingKind::Sampler,
-            (TypeInner::Sampler { comparison: true }, _) => BindingKind::ComparisonSampler,
-            (
-                TypeInner::Image {
-                    dim,
-                    arrayed,
-                    class,
-                },
-                _,
-            ) => match (dim, arrayed, class) {
-                (_, _, ImageClass::Depth { .. }) => BindingKind::DepthTexture2d,
-                (ImageDimension::Cube, _, _) => BindingKind::TextureCube,
-                (ImageDimension::D3, _, _) => BindingKind::Texture3d,
-                (ImageDimension::D2, true, _) => BindingKind::Texture2dArray,
-                _ => BindingKind::Texture2d,
-            },
-            (_, AddressSpace::Uniform) => BindingKind::UniformBuffer,
-            _ => BindingKind::StorageBuffer,
-        };
-        let mut stages = Vec::new();
-        for (i, ep) in module.entry_points.iter().enumerate() {
-            if !info.get_entry_point(i)[handle].is_empty() && !stages.contains(&stage(ep.stage)) {
-                stages.push(stage(ep.stage));
-            }
-        }
-        let target = &hlsl.binding_map[rb];
-        let hlsl_binding = match kind {
-            BindingKind::Sampler | BindingKind::ComparisonSampler => HlslBinding {
-                register: format!("t{HLSL_SAMPLER_INDEX_REGISTER}"),
-                space: rb.group,
-                sampler_index_slot: Some(rb.binding),
-            },
-            BindingKind::UniformBuffer => HlslBinding {
-                register: format!("b{}", target.register),
-                space: target.space as u32,
-                sampler_index_slot: None,
-            },
-            _ => HlslBinding {
-                register: format!("t{}", target.register),
-                space: target.space as u32,
-                sampler_index_slot: None,
-            },
-        };
+        let kind = binding_kind(inner, var.space);
+        let stages = binding_stages(module, info, handle);
+        let hlsl_binding = hlsl_binding(kind, rb, &hlsl.binding_map[rb]);
         let name = var.name.clone().unwrap_or_default();
         let material_texture = (rb.group == MATERIAL_GROUP)
             .then(|| textures.iter().find(|t| t.binding == rb.binding))
             .flatten();
-        let buffer = match var.space {
-            AddressSpace::Uniform | AddressSpace::Storage { .. } => {
-                let layout = if rb.group == MATERIAL_GROUP {
-                    struct_layout(module, var.ty, |member| {
-                        members
-                            .get(member)
-                            .map(|(p, e)| (Some(p.clone()), Some(*e), None))
-                    })
-                } else {
-                    struct_layout(module, var.ty, |member| {
-                        let s = module.types[var.ty].name.as_deref().unwrap_or_default();
-                        engine_binding::member_description(s, member)
-                            .map(|d| (None, None, Some(d.to_string())))
-                    })
-                };
-                layout.map(|layout| BufferBinding {
-                    ty: match var.space {
-                        AddressSpace::Uniform => BufferBindingType::Uniform,
-                        AddressSpace::Storage { access }
-                            if !access.contains(naga::StorageAccess::STORE) =>
-                        {
-                            BufferBindingType::ReadOnlyStorage
-                        }
-                        _ => BufferBindingType::Storage,
-                    },
-                    has_dynamic_offset: false,
-                    min_binding_size: u64::from(layout.size),
-                    layout,
-                })
-            }
-            _ => None,
-        };
-        let texture = match inner {
-            TypeInner::Image {
-                dim,
-                arrayed,
-                class,
-            } => Some(TextureBinding {
-                sample_type: match class {
-                    ImageClass::Depth { .. } => TextureSampleType::Depth,
-                    ImageClass::Sampled {
-                        kind: naga::ScalarKind::Sint,
-                        ..
-                    } => TextureSampleType::Sint,
-                    ImageClass::Sampled {
-                        kind: naga::ScalarKind::Uint,
-                        ..
-                    } => TextureSampleType::Uint,
-                    _ => TextureSampleType::Float,
-                },
-                view_dimension: match (dim, arrayed) {
-                    (ImageDimension::D1, _) => TextureViewDimension::D1,
-                    (ImageDimension::D2, false) => TextureViewDimension::D2,
-                    (ImageDimension::D2, true) => TextureViewDimension::D2Array,
-                    (ImageDimension::Cube, false) => TextureViewDimension::Cube,
-                    (ImageDimension::Cube, true) => TextureViewDimension::CubeArray,
-                    (ImageDimension::D3, _) => TextureViewDimension::D3,
-                },
-                multisampled: matches!(
-                    class,
-                    ImageClass::Sampled { multi: true, .. } | ImageClass::Depth { multi: true }
-                ),
-                format: match (material_texture, name.as_str()) {
-                    (Some(t), _) => t.format.clone(),
-                    (None, "weft_environment") => engine_binding::ENVIRONMENT_FORMAT.into(),
-                    (None, n) => engine_binding::engine_resource(n)
-                        .and_then(|r| r.file)
-                        .map(|f| f.format)
-                        .unwrap_or_default(),
-                },
-                default: material_texture.and_then(|t| t.default),
-                file: material_texture.and_then(|t| t.file.clone()),
-            }),
-            _ => None,
-        };
+        let buffer = buffer_binding(module, var, rb, members);
+        let texture = texture_binding(inner, material_texture, &name);
         let sampler = match inner {
             TypeInner::Sampler { comparison } => {
                 Some(engine_binding::sampler(rb.group, rb.binding, *comparison))
@@ -233,6 +119,165 @@ pub fn bindings(
     }
     out.sort_by_key(|b| (b.group, b.binding));
     out
+}
+
+/// What a global holds, from its type and address space.
+fn binding_kind(inner: &TypeInner, space: AddressSpace) -> BindingKind {
+    match (inner, space) {
+        (TypeInner::Sampler { comparison: false }, _) => BindingKind::Sampler,
+        (TypeInner::Sampler { comparison: true }, _) => BindingKind::ComparisonSampler,
+        (
+            TypeInner::Image {
+                dim,
+                arrayed,
+                class,
+            },
+            _,
+        ) => match (dim, arrayed, class) {
+            (_, _, ImageClass::Depth { .. }) => BindingKind::DepthTexture2d,
+            (ImageDimension::Cube, _, _) => BindingKind::TextureCube,
+            (ImageDimension::D3, _, _) => BindingKind::Texture3d,
+            (ImageDimension::D2, true, _) => BindingKind::Texture2dArray,
+            _ => BindingKind::Texture2d,
+        },
+        (_, AddressSpace::Uniform) => BindingKind::UniformBuffer,
+        _ => BindingKind::StorageBuffer,
+    }
+}
+
+/// The stages whose entry points use the global, in entry point order.
+fn binding_stages(
+    module: &Module,
+    info: &ModuleInfo,
+    handle: naga::Handle<naga::GlobalVariable>,
+) -> Vec<Stage> {
+    let mut stages = Vec::new();
+    for (i, ep) in module.entry_points.iter().enumerate() {
+        if !info.get_entry_point(i)[handle].is_empty() && !stages.contains(&stage(ep.stage)) {
+            stages.push(stage(ep.stage));
+        }
+    }
+    stages
+}
+
+/// Where the binding lives in the HLSL output: samplers by their slot in the
+/// group's sampler-index buffer, the rest at naga's register.
+fn hlsl_binding(
+    kind: BindingKind,
+    rb: &naga::ResourceBinding,
+    target: &naga::back::hlsl::BindTarget,
+) -> HlslBinding {
+    match kind {
+        BindingKind::Sampler | BindingKind::ComparisonSampler => HlslBinding {
+            register: format!("t{HLSL_SAMPLER_INDEX_REGISTER}"),
+            space: rb.group,
+            sampler_index_slot: Some(rb.binding),
+        },
+        BindingKind::UniformBuffer => HlslBinding {
+            register: format!("b{}", target.register),
+            space: target.space as u32,
+            sampler_index_slot: None,
+        },
+        _ => HlslBinding {
+            register: format!("t{}", target.register),
+            space: target.space as u32,
+            sampler_index_slot: None,
+        },
+    }
+}
+
+/// A uniform or storage buffer's layout entry and struct layout (material
+/// members with their parameters, engine members with what to write).
+fn buffer_binding(
+    module: &Module,
+    var: &naga::GlobalVariable,
+    rb: &naga::ResourceBinding,
+    members: &MemberParams,
+) -> Option<BufferBinding> {
+    match var.space {
+        AddressSpace::Uniform | AddressSpace::Storage { .. } => {
+            let layout = if rb.group == MATERIAL_GROUP {
+                struct_layout(module, var.ty, |member| {
+                    members
+                        .get(member)
+                        .map(|(p, e)| (Some(p.clone()), Some(*e), None))
+                })
+            } else {
+                struct_layout(module, var.ty, |member| {
+                    let s = module.types[var.ty].name.as_deref().unwrap_or_default();
+                    engine_binding::member_description(s, member)
+                        .map(|d| (None, None, Some(d.to_string())))
+                })
+            };
+            layout.map(|layout| BufferBinding {
+                ty: match var.space {
+                    AddressSpace::Uniform => BufferBindingType::Uniform,
+                    AddressSpace::Storage { access }
+                        if !access.contains(naga::StorageAccess::STORE) =>
+                    {
+                        BufferBindingType::ReadOnlyStorage
+                    }
+                    _ => BufferBindingType::Storage,
+                },
+                has_dynamic_offset: false,
+                min_binding_size: u64::from(layout.size),
+                layout,
+            })
+        }
+        _ => None,
+    }
+}
+
+/// A texture's layout entry, its format (the material texture's, or the
+/// engine resource's) and the material texture's default and file.
+fn texture_binding(
+    inner: &TypeInner,
+    material_texture: Option<&MaterialTexture>,
+    name: &str,
+) -> Option<TextureBinding> {
+    match inner {
+        TypeInner::Image {
+            dim,
+            arrayed,
+            class,
+        } => Some(TextureBinding {
+            sample_type: match class {
+                ImageClass::Depth { .. } => TextureSampleType::Depth,
+                ImageClass::Sampled {
+                    kind: naga::ScalarKind::Sint,
+                    ..
+                } => TextureSampleType::Sint,
+                ImageClass::Sampled {
+                    kind: naga::ScalarKind::Uint,
+                    ..
+                } => TextureSampleType::Uint,
+                _ => TextureSampleType::Float,
+            },
+            view_dimension: match (dim, arrayed) {
+                (ImageDimension::D1, _) => TextureViewDimension::D1,
+                (ImageDimension::D2, false) => TextureViewDimension::D2,
+                (ImageDimension::D2, true) => TextureViewDimension::D2Array,
+                (ImageDimension::Cube, false) => TextureViewDimension::Cube,
+                (ImageDimension::Cube, true) => TextureViewDimension::CubeArray,
+                (ImageDimension::D3, _) => TextureViewDimension::D3,
+            },
+            multisampled: matches!(
+                class,
+                ImageClass::Sampled { multi: true, .. } | ImageClass::Depth { multi: true }
+            ),
+            format: match (material_texture, name) {
+                (Some(t), _) => t.format.clone(),
+                (None, "weft_environment") => engine_binding::ENVIRONMENT_FORMAT.into(),
+                (None, n) => engine_binding::engine_resource(n)
+                    .and_then(|r| r.file)
+                    .map(|f| f.format)
+                    .unwrap_or_default(),
+            },
+            default: material_texture.and_then(|t| t.default),
+            file: material_texture.and_then(|t| t.file.clone()),
+        }),
+        _ => None,
+    }
 }
 
 /// WGSL spelling of a type, for diagnostics.

@@ -178,6 +178,33 @@ pub fn parse_material(
     };
     top.check_keys(TOP_KEYS, cx);
 
+    let mut material = new_material(&top, path, root, cx)?;
+
+    let mut sites = Sites::default();
+    parse_declarations(&top, &mut material, &mut sites, cx);
+    sites.material_declares_groups = !material.groups.is_empty();
+    // Shared passes bring their own groups, parameters and keywords: read
+    // them before the presets, which may set them.
+    let included = pass_files::parse_included(&top, pass_files, &mut material, &mut sites, cx);
+
+    keywords::parse_tiers(&top, &mut material, cx);
+    limits::parse_limits(&top, &mut material, cx);
+    tables::parse_tables(&top, &mut material, cx);
+
+    parse_variants(&top, &mut material, cx);
+    parse_presets(&top, &mut material, &mut sites, cx);
+    parse_passes(&top, &included, &mut material, &mut sites, cx);
+
+    // Cross-references, while the spans of what the file wrote are at hand.
+    // The WGSL source is resolved afterwards by `includes.rs`.
+    crate::check::check_references(&mut material, &sites, cx.diags);
+    Some(material)
+}
+
+/// The material from its `[material]` table (name, labels, vertex inputs,
+/// `stylised`), every list still empty; `None` when the table is missing
+/// or is not a table.
+fn new_material(top: &Table, path: &Path, root: &Path, cx: &mut Cx) -> Option<Material> {
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -218,7 +245,7 @@ pub fn parse_material(
         ]
     });
 
-    let mut material = Material {
+    Some(Material {
         label,
         label_zh: mat.string("label_zh", cx),
         description: mat.string("description", cx),
@@ -254,19 +281,11 @@ pub fn parse_material(
         limit_spans: Vec::new(),
         decl,
         name,
-    };
+    })
+}
 
-    let mut sites = Sites::default();
-    parse_declarations(&top, &mut material, &mut sites, cx);
-    sites.material_declares_groups = !material.groups.is_empty();
-    // Shared passes bring their own groups, parameters and keywords: read
-    // them before the presets, which may set them.
-    let included = pass_files::parse_included(&top, pass_files, &mut material, &mut sites, cx);
-
-    keywords::parse_tiers(&top, &mut material, cx);
-    limits::parse_limits(&top, &mut material, cx);
-    tables::parse_tables(&top, &mut material, cx);
-
+/// `[variants]`: the budget (`max_variants`) and the `exclude` conditions.
+fn parse_variants(top: &Table, material: &mut Material, cx: &mut Cx) {
     if let Some(v) = top
         .get("variants")
         .and_then(|v| Table::new(v, "[variants]", cx))
@@ -297,7 +316,10 @@ pub fn parse_material(
             }
         }
     }
+}
 
+/// `[presets]`, with the spans of each preset's values for the checks.
+fn parse_presets(top: &Table, material: &mut Material, sites: &mut Sites, cx: &mut Cx) {
     if let Some(p) = top
         .get("presets")
         .and_then(|v| Table::new(v, "[presets]", cx))
@@ -316,7 +338,17 @@ pub fn parse_material(
             }
         }
     }
+}
 
+/// `[[pass]]`: each entry parsed, or the shared pass it includes (already
+/// read into `included`); no `[[pass]]` at all: the default pass.
+fn parse_passes(
+    top: &Table,
+    included: &pass_files::IncludedPasses,
+    material: &mut Material,
+    sites: &mut Sites,
+    cx: &mut Cx,
+) {
     match top.get("pass") {
         Some(v) => {
             if let Some(items) = expect_array(v, "`pass`", cx) {
@@ -338,11 +370,6 @@ pub fn parse_material(
             .passes
             .push(passes::default_pass(cx.file, material.decl.span.clone())),
     }
-
-    // Cross-references, while the spans of what the file wrote are at hand.
-    // The WGSL source is resolved afterwards by `includes.rs`.
-    crate::check::check_references(&mut material, &sites, cx.diags);
-    Some(material)
 }
 
 /// The `[groups]`, `[params]` and `[keywords]` of a material file or of a

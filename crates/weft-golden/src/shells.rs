@@ -173,6 +173,52 @@ pub fn run(
     let mut renderer = Renderer::new(gpu, &env, &luts).map_err(e)?;
     let mut reports = Vec::new();
     for (meta_path, meta) in &selected {
+        let mut subject = Subject::load(meta_path, meta, options)?;
+        let mut report = ShellReport {
+            material: meta.name.clone(),
+            inputs_hash: meta.inputs_hash.clone(),
+            parameter: subject.parameter.clone(),
+            tier: subject.material.tier().to_string(),
+            reference: subject.reference,
+            adapter: adapter.clone(),
+            timer: String::new(),
+            options: options.clone(),
+            reference_ms: Vec::new(),
+            cells: Vec::new(),
+            fins: Vec::new(),
+        };
+        // The fin experiment's materials, one per opacity rule (fur on the
+        // sphere only).
+        let fins_dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+        subject.fins = fin_materials(options, meta, fins_dir.path())?;
+        for &size in &options.sizes {
+            measure_size(&mut renderer, &mut subject, size, options, &mut report, log)?;
+        }
+        reports.push(report);
+    }
+    Ok(reports)
+}
+
+/// One material under the bench.
+struct Subject<'a> {
+    meta: &'a MaterialMetadata,
+    /// The int parameter that sets the instance count.
+    parameter: String,
+    /// The reference count and the counts compared with it (both clamped
+    /// to the parameter's range; the counts below the reference).
+    reference: u32,
+    counts: Vec<u32>,
+    material: Material,
+    /// The fin experiment's materials: hidden fins first, then one per rule.
+    fins: Vec<(FinRule, Material)>,
+}
+
+impl<'a> Subject<'a> {
+    fn load(
+        meta_path: &Path,
+        meta: &'a MaterialMetadata,
+        options: &ShellOptions,
+    ) -> Result<Subject<'a>, String> {
         let parameter = instance_parameter(meta).expect("filtered").to_string();
         let what = |err: weft_render::Error| format!("{}: {err}", meta.name);
         let range = meta
@@ -190,151 +236,214 @@ pub fn run(
             .filter(|&n| n < reference)
             .collect();
         counts.dedup();
-        let mut material = Material::load(meta_path).map_err(what)?;
-        let tier = material.tier().to_string();
-        let mut report = ShellReport {
-            material: meta.name.clone(),
-            inputs_hash: meta.inputs_hash.clone(),
-            parameter: parameter.clone(),
-            tier,
+        let material = Material::load(meta_path).map_err(what)?;
+        Ok(Subject {
+            meta,
+            parameter,
             reference,
-            adapter: adapter.clone(),
-            timer: String::new(),
-            options: options.clone(),
-            reference_ms: Vec::new(),
-            cells: Vec::new(),
+            counts,
+            material,
             fins: Vec::new(),
-        };
-        // The fin experiment's materials, one per opacity rule (fur on the
-        // sphere only).
-        let fins_dir = tempfile::tempdir().map_err(|e| e.to_string())?;
-        let mut fins_materials = Vec::new();
-        if let Some(materials) = &options.fins
-            && meta.name == "fur"
-            && options.scene == SceneKind::Sphere
-        {
-            // First the hidden fins: the cost of the shared mesh alone.
-            let hidden = FinRule {
-                opacity: FinOpacity::Hidden,
-                fade_shells: false,
-            };
-            let rules = std::iter::once(&hidden).chain(&options.fin_rules);
-            for (i, &rule) in rules.enumerate() {
-                let work = fins_dir.path().join(i.to_string());
-                let path = crate::fins::build(materials, &work, rule)?;
-                fins_materials.push((rule, Material::load(path).map_err(e)?));
-            }
-        }
-        for &size in &options.sizes {
-            let preview = PreviewOptions {
-                scene: options.scene,
-                width: size,
-                height: size,
-                ..PreviewOptions::default()
-            };
-            let scene = preview.scene();
-            let band = (options.scene == SceneKind::Sphere)
-                .then(|| sphere_band(&scene, size, size, options.silhouette_n_dot_v));
-            let render_options = RenderOptions {
-                background: Background::Color([0.0; 4]),
-                ..preview.render_options()
-            };
-            let mut prepared = renderer.prepare(&material, &render_options).map_err(what)?;
-            let mut fins_prepared = fins_materials
-                .iter()
-                .map(|(_, m)| renderer.prepare(m, &render_options).map_err(e))
-                .collect::<Result<Vec<_>, _>>()?;
-            let (fin_scene, fins) =
-                crate::fins::scene_with_fins(&scene, options.silhouette_n_dot_v as f32);
-            let timing = TimingOptions {
-                warmup: options.warmup,
-                frames: options.frames.max(1),
-                force_cpu_timer: options.force_cpu_timer,
-            };
-            let mut draw = |n: u32,
-                            material: &mut Material,
-                            prepared: &mut PreparedMaterial,
-                            scene: &Scene|
-             -> Result<FrameTimes, String> {
-                material
-                    .set(&parameter, i64::from(n))
-                    .and_then(|()| renderer.update(prepared, material))
-                    .and_then(|()| renderer.time_frames(prepared, scene, &render_options, &timing))
-                    .map_err(what)
-            };
-            let r = draw(reference, &mut material, &mut prepared, &scene)?;
-            report.timer = r.timer.name().into();
-            report.reference_ms.push((size, quantile(&r.ms, 0.5)));
-            log(&format!(
-                "{} {size}px: {reference} shells {:.2} ms",
-                meta.name,
-                quantile(&r.ms, 0.5)
-            ));
-            let measure = |count: u32, t: &FrameTimes| ShellCell {
-                size,
-                count,
-                ms: quantile(&t.ms, 0.5),
-                error: image_error(&r.image, &t.image),
-                silhouette: band.as_ref().map(|b| split(&r.image, &t.image, b)),
-            };
-            for &count in &counts {
-                let cell = measure(count, &draw(count, &mut material, &mut prepared, &scene)?);
-                log(&format!(
-                    "{} {size}px: {count} shells {:.2} ms, FLIP mean {:.4}",
-                    meta.name, cell.ms, cell.error.flip_mean
-                ));
-                report.cells.push(cell);
-            }
-            if let (Some(((_, hidden), others)), Some((hidden_prepared, others_prepared))) = (
-                fins_materials.split_first_mut(),
-                fins_prepared.split_first_mut(),
-            ) {
-                for &count in options.fin_counts.iter().filter(|&&n| n < reference) {
-                    let plain = measure(count, &draw(count, &mut material, &mut prepared, &scene)?);
-                    let shared = draw(count, hidden, hidden_prepared, &fin_scene)?;
-                    let shared_ms = quantile(&shared.ms, 0.5);
-                    for ((rule, fins_material), fins_prepared) in
-                        others.iter_mut().zip(others_prepared.iter_mut())
-                    {
-                        let t = draw(count, fins_material, fins_prepared, &fin_scene)?;
-                        let with_fins = measure(count, &t);
-                        // The fins' own time: without the shared mesh's
-                        // overhead (body passes skipping fin vertices), an
-                        // engine with a fin mesh of its own would not pay.
-                        let fin_ms = (with_fins.ms - shared_ms).max(0.0);
-                        let same = (f64::from(count) * (plain.ms + fin_ms) / plain.ms.max(1e-6))
-                            .ceil() as u32;
-                        let same = same.clamp(count + 1, reference - 1);
-                        let same_cost =
-                            measure(same, &draw(same, &mut material, &mut prepared, &scene)?);
-                        log(&format!(
-                            "{} {size}px: {count} shells + {fins} fins ({}) {:.2} ms (fins {fin_ms:.2}), FLIP mean {:.4}; {same} shells {:.2} ms, FLIP mean {:.4}",
-                            meta.name,
-                            rule.describe(),
-                            with_fins.ms,
-                            with_fins.error.flip_mean,
-                            same_cost.ms,
-                            same_cost.error.flip_mean
-                        ));
-                        report.fins.push(FinCell {
-                            plain_ms: plain.ms,
-                            with_fins,
-                            fin_ms,
-                            fins,
-                            rule: *rule,
-                            same_cost,
-                        });
-                    }
-                }
-                for (_, m) in fins_materials.iter_mut() {
-                    m.reset().map_err(e)?;
-                }
-            }
-            material.reset().map_err(what)?;
-        }
-        reports.push(report);
+        })
     }
-    Ok(reports)
+}
+
+/// The fin experiment's materials built into `dir` (fur on the sphere
+/// only, with [`ShellOptions::fins`]): first the hidden fins, the cost of
+/// the shared mesh alone, then one per rule.
+fn fin_materials(
+    options: &ShellOptions,
+    meta: &MaterialMetadata,
+    dir: &Path,
+) -> Result<Vec<(FinRule, Material)>, String> {
+    let e = |e: weft_render::Error| e.to_string();
+    let mut fins_materials = Vec::new();
+    if let Some(materials) = &options.fins
+        && meta.name == "fur"
+        && options.scene == SceneKind::Sphere
+    {
+        // First the hidden fins: the cost of the shared mesh alone.
+        let hidden = FinRule {
+            opacity: FinOpacity::Hidden,
+            fade_shells: false,
+        };
+        let rules = std::iter::once(&hidden).chain(&options.fin_rules);
+        for (i, &rule) in rules.enumerate() {
+            let work = dir.join(i.to_string());
+            let path = crate::fins::build(materials, &work, rule)?;
+            fins_materials.push((rule, Material::load(path).map_err(e)?));
+        }
+    }
+    Ok(fins_materials)
+}
+
+/// What every frame at one size is drawn with.
+struct Frames<'a> {
+    renderer: &'a mut Renderer,
+    render_options: RenderOptions,
+    timing: TimingOptions,
+    parameter: &'a str,
+    material_name: &'a str,
+}
+
+impl Frames<'_> {
+    /// `n` instances of `material` drawn and timed.
+    fn draw(
+        &mut self,
+        n: u32,
+        material: &mut Material,
+        prepared: &mut PreparedMaterial,
+        scene: &Scene,
+    ) -> Result<FrameTimes, String> {
+        material
+            .set(self.parameter, i64::from(n))
+            .and_then(|()| self.renderer.update(prepared, material))
+            .and_then(|()| {
+                self.renderer
+                    .time_frames(prepared, scene, &self.render_options, &self.timing)
+            })
+            .map_err(|err| format!("{}: {err}", self.material_name))
+    }
+}
+
+/// The reference count's frame at one size, which every cell is held to.
+struct Reference<'a> {
+    size: u32,
+    times: FrameTimes,
+    band: Option<&'a [bool]>,
+}
+
+impl Reference<'_> {
+    /// `count` instances drawn in `t`, against the reference.
+    fn cell(&self, count: u32, t: &FrameTimes) -> ShellCell {
+        ShellCell {
+            size: self.size,
+            count,
+            ms: quantile(&t.ms, 0.5),
+            error: image_error(&self.times.image, &t.image),
+            silhouette: self.band.map(|b| split(&self.times.image, &t.image, b)),
+        }
+    }
+}
+
+/// One size: the reference count, every smaller count, and the fin
+/// experiment (N shells with fins against the shell count of the same
+/// cost) when its materials were built.
+fn measure_size(
+    renderer: &mut Renderer,
+    subject: &mut Subject<'_>,
+    size: u32,
+    options: &ShellOptions,
+    report: &mut ShellReport,
+    log: &mut dyn FnMut(&str),
+) -> Result<(), String> {
+    let meta = subject.meta;
+    let e = |e: weft_render::Error| e.to_string();
+    let what = |err: weft_render::Error| format!("{}: {err}", meta.name);
+    let preview = PreviewOptions {
+        scene: options.scene,
+        width: size,
+        height: size,
+        ..PreviewOptions::default()
+    };
+    let scene = preview.scene();
+    let band = (options.scene == SceneKind::Sphere)
+        .then(|| sphere_band(&scene, size, size, options.silhouette_n_dot_v));
+    let render_options = RenderOptions {
+        background: Background::Color([0.0; 4]),
+        ..preview.render_options()
+    };
+    let mut prepared = renderer
+        .prepare(&subject.material, &render_options)
+        .map_err(what)?;
+    let mut fins_prepared = subject
+        .fins
+        .iter()
+        .map(|(_, m)| renderer.prepare(m, &render_options).map_err(e))
+        .collect::<Result<Vec<_>, _>>()?;
+    let (fin_scene, fins) = crate::fins::scene_with_fins(&scene, options.silhouette_n_dot_v as f32);
+    let timing = TimingOptions {
+        warmup: options.warmup,
+        frames: options.frames.max(1),
+        force_cpu_timer: options.force_cpu_timer,
+    };
+    let mut frames = Frames {
+        renderer,
+        render_options,
+        timing,
+        parameter: &subject.parameter,
+        material_name: &meta.name,
+    };
+    let material = &mut subject.material;
+    let reference = subject.reference;
+    let r = frames.draw(reference, material, &mut prepared, &scene)?;
+    report.timer = r.timer.name().into();
+    report.reference_ms.push((size, quantile(&r.ms, 0.5)));
+    log(&format!(
+        "{} {size}px: {reference} shells {:.2} ms",
+        meta.name,
+        quantile(&r.ms, 0.5)
+    ));
+    let measure = Reference {
+        size,
+        times: r,
+        band: band.as_deref(),
+    };
+    for &count in &subject.counts {
+        let cell = measure.cell(count, &frames.draw(count, material, &mut prepared, &scene)?);
+        log(&format!(
+            "{} {size}px: {count} shells {:.2} ms, FLIP mean {:.4}",
+            meta.name, cell.ms, cell.error.flip_mean
+        ));
+        report.cells.push(cell);
+    }
+    if let (Some(((_, hidden), others)), Some((hidden_prepared, others_prepared))) = (
+        subject.fins.split_first_mut(),
+        fins_prepared.split_first_mut(),
+    ) {
+        for &count in options.fin_counts.iter().filter(|&&n| n < reference) {
+            let plain = measure.cell(count, &frames.draw(count, material, &mut prepared, &scene)?);
+            let shared = frames.draw(count, hidden, hidden_prepared, &fin_scene)?;
+            let shared_ms = quantile(&shared.ms, 0.5);
+            for ((rule, fins_material), fins_prepared) in
+                others.iter_mut().zip(others_prepared.iter_mut())
+            {
+                let t = frames.draw(count, fins_material, fins_prepared, &fin_scene)?;
+                let with_fins = measure.cell(count, &t);
+                // The fins' own time: without the shared mesh's
+                // overhead (body passes skipping fin vertices), an
+                // engine with a fin mesh of its own would not pay.
+                let fin_ms = (with_fins.ms - shared_ms).max(0.0);
+                let same =
+                    (f64::from(count) * (plain.ms + fin_ms) / plain.ms.max(1e-6)).ceil() as u32;
+                let same = same.clamp(count + 1, reference - 1);
+                let same_cost =
+                    measure.cell(same, &frames.draw(same, material, &mut prepared, &scene)?);
+                log(&format!(
+                    "{} {size}px: {count} shells + {fins} fins ({}) {:.2} ms (fins {fin_ms:.2}), FLIP mean {:.4}; {same} shells {:.2} ms, FLIP mean {:.4}",
+                    meta.name,
+                    rule.describe(),
+                    with_fins.ms,
+                    with_fins.error.flip_mean,
+                    same_cost.ms,
+                    same_cost.error.flip_mean
+                ));
+                report.fins.push(FinCell {
+                    plain_ms: plain.ms,
+                    with_fins,
+                    fin_ms,
+                    fins,
+                    rule: *rule,
+                    same_cost,
+                });
+            }
+        }
+        for (_, m) in subject.fins.iter_mut() {
+            m.reset().map_err(e)?;
+        }
+    }
+    material.reset().map_err(what)?;
+    Ok(())
 }
 
 /// The smallest measured count at `size` whose FLIP mean and 99th

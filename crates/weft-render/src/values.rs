@@ -281,188 +281,213 @@ fn check_range(p: &Parameter, values: &[f64], ranges: Ranges) -> Result<()> {
 }
 
 pub(crate) fn normalise(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
-    let wrong = |v: &Value| Error::InvalidValue {
-        name: p.name.clone(),
-        message: format!("is a {} parameter; got {}", p.kind.name(), v.type_name()),
-    };
     match p.kind {
         ParamKind::Float => {
             let x = match value {
                 Value::Float(x) => x,
                 Value::Int(i) => i as f64,
-                ref v => return Err(wrong(v)),
+                ref v => return Err(wrong(p, v)),
             };
             check_range(p, &[x], ranges)?;
             Ok(StoredValue::Numbers(vec![x]))
         }
-        ParamKind::Int => {
-            let x = match value {
-                Value::Int(i) => i as f64,
-                Value::Float(x) if x.fract() == 0.0 => x,
-                Value::Float(x) => {
-                    return Err(Error::InvalidValue {
-                        name: p.name.clone(),
-                        message: format!("is an int parameter; got {x}"),
-                    });
-                }
-                ref v => return Err(wrong(v)),
-            };
-            if x < f64::from(i32::MIN) || x > f64::from(i32::MAX) {
-                return Err(Error::InvalidValue {
-                    name: p.name.clone(),
-                    message: format!("{x} does not fit an i32"),
-                });
-            }
-            check_range(p, &[x], ranges)?;
-            Ok(StoredValue::Numbers(vec![x]))
-        }
+        ParamKind::Int => normalise_int(p, value, ranges),
         ParamKind::Bool => match value {
             Value::Bool(b) => Ok(StoredValue::Numbers(vec![f64::from(u8::from(b))])),
             Value::Int(i @ (0 | 1)) => Ok(StoredValue::Numbers(vec![i as f64])),
-            ref v => Err(wrong(v)),
+            ref v => Err(wrong(p, v)),
         },
-        ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 => {
-            let n = p.kind.components().unwrap_or(4);
-            let v = match value {
-                Value::Vector(v) => v,
-                ref v => return Err(wrong(v)),
-            };
-            if v.len() != n {
+        ParamKind::Vec2 | ParamKind::Vec3 | ParamKind::Vec4 => normalise_vector(p, value, ranges),
+        ParamKind::Color => normalise_color(p, value, ranges),
+        ParamKind::Curve => normalise_curve(p, value, ranges),
+        ParamKind::Gradient => normalise_gradient(p, value),
+        ParamKind::Texture2d => normalise_texture2d(p, value),
+        ParamKind::Cube => normalise_cube(p, value),
+    }
+}
+
+/// The error for a value of the wrong kind.
+fn wrong(p: &Parameter, v: &Value) -> Error {
+    Error::InvalidValue {
+        name: p.name.clone(),
+        message: format!("is a {} parameter; got {}", p.kind.name(), v.type_name()),
+    }
+}
+
+/// An `int`: a whole number that fits an i32.
+fn normalise_int(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
+    let x = match value {
+        Value::Int(i) => i as f64,
+        Value::Float(x) if x.fract() == 0.0 => x,
+        Value::Float(x) => {
+            return Err(Error::InvalidValue {
+                name: p.name.clone(),
+                message: format!("is an int parameter; got {x}"),
+            });
+        }
+        ref v => return Err(wrong(p, v)),
+    };
+    if x < f64::from(i32::MIN) || x > f64::from(i32::MAX) {
+        return Err(Error::InvalidValue {
+            name: p.name.clone(),
+            message: format!("{x} does not fit an i32"),
+        });
+    }
+    check_range(p, &[x], ranges)?;
+    Ok(StoredValue::Numbers(vec![x]))
+}
+
+/// A `vecN`'s N components.
+fn normalise_vector(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
+    let n = p.kind.components().unwrap_or(4);
+    let v = match value {
+        Value::Vector(v) => v,
+        ref v => return Err(wrong(p, v)),
+    };
+    if v.len() != n {
+        return Err(Error::InvalidValue {
+            name: p.name.clone(),
+            message: format!("expected {n} components, got {}", v.len()),
+        });
+    }
+    check_range(p, &v, ranges)?;
+    Ok(StoredValue::Numbers(v))
+}
+
+/// A colour as uploaded (linear), from sRGB-encoded or linear components.
+fn normalise_color(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
+    let hdr = p.color.as_ref().is_some_and(|c| c.hdr);
+    match value {
+        Value::Vector(v) => {
+            if v.len() != 3 && v.len() != 4 {
                 return Err(Error::InvalidValue {
                     name: p.name.clone(),
-                    message: format!("expected {n} components, got {}", v.len()),
+                    message: format!("expected 3 or 4 components, got {}", v.len()),
                 });
             }
             check_range(p, &v, ranges)?;
-            Ok(StoredValue::Numbers(v))
+            // The colour rule of the encoder (weft_meta::uniform).
+            let c = weft_meta::uniform::color_as_uploaded(&v, hdr);
+            Ok(StoredValue::Numbers(c.to_vec()))
         }
-        ParamKind::Color => {
-            let hdr = p.color.as_ref().is_some_and(|c| c.hdr);
-            match value {
-                Value::Vector(v) => {
-                    if v.len() != 3 && v.len() != 4 {
-                        return Err(Error::InvalidValue {
-                            name: p.name.clone(),
-                            message: format!("expected 3 or 4 components, got {}", v.len()),
-                        });
-                    }
-                    check_range(p, &v, ranges)?;
-                    // The colour rule of the encoder (weft_meta::uniform).
-                    let c = weft_meta::uniform::color_as_uploaded(&v, hdr);
-                    Ok(StoredValue::Numbers(c.to_vec()))
-                }
-                Value::LinearColor(c) => {
-                    let check: Vec<f64> = if hdr {
-                        c.to_vec()
-                    } else {
-                        c.iter().map(|x| linear_to_srgb(*x)).collect()
-                    };
-                    check_range(p, &check, ranges)?;
-                    Ok(StoredValue::Numbers(c.to_vec()))
-                }
-                ref v => Err(wrong(v)),
-            }
-        }
-        ParamKind::Curve => {
-            let info = p.curve.as_ref().ok_or_else(|| {
-                Error::Metadata(format!("curve parameter `{}` has no curve info", p.name))
-            })?;
-            let samples = match value {
-                Value::Curve(CurveValue::Keyframes(keys)) => {
-                    if keys.is_empty() {
-                        return Err(Error::InvalidValue {
-                            name: p.name.clone(),
-                            message: "a curve needs at least one keyframe".into(),
-                        });
-                    }
-                    if keys.windows(2).any(|w| w[1].time <= w[0].time) {
-                        return Err(Error::InvalidValue {
-                            name: p.name.clone(),
-                            message: "keyframe times must increase".into(),
-                        });
-                    }
-                    check_range(p, &keys.iter().map(|k| k.value).collect::<Vec<_>>(), ranges)?;
-                    sample_curve(&keys, info.samples)
-                }
-                Value::Curve(CurveValue::Samples(s)) | Value::Vector(s) => {
-                    if s.len() != info.samples as usize {
-                        return Err(Error::InvalidValue {
-                            name: p.name.clone(),
-                            message: format!(
-                                "expected {} curve samples, got {}",
-                                info.samples,
-                                s.len()
-                            ),
-                        });
-                    }
-                    check_range(p, &s, ranges)?;
-                    s
-                }
-                ref v => return Err(wrong(v)),
+        Value::LinearColor(c) => {
+            let check: Vec<f64> = if hdr {
+                c.to_vec()
+            } else {
+                c.iter().map(|x| linear_to_srgb(*x)).collect()
             };
-            Ok(StoredValue::Curve(samples))
+            check_range(p, &check, ranges)?;
+            Ok(StoredValue::Numbers(c.to_vec()))
         }
-        ParamKind::Gradient => {
-            let width = p.gradient.as_ref().map_or(64, |g| g.width);
-            match value {
-                Value::Gradient(stops) => {
-                    if stops.is_empty() {
-                        return Err(Error::InvalidValue {
-                            name: p.name.clone(),
-                            message: "a gradient needs at least one stop".into(),
-                        });
-                    }
-                    Ok(StoredValue::Gradient(bake_gradient(&stops, width)))
-                }
-                Value::Texture(TextureValue::Rgba8 {
-                    width: w,
-                    height: 1,
-                    data,
-                }) if data.len() == w as usize * 4 && w > 0 => Ok(StoredValue::Gradient(data)),
-                ref v => Err(wrong(v)),
+        ref v => Err(wrong(p, v)),
+    }
+}
+
+/// A curve's baked samples, from keyframes or the samples themselves.
+fn normalise_curve(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
+    let info = p.curve.as_ref().ok_or_else(|| {
+        Error::Metadata(format!("curve parameter `{}` has no curve info", p.name))
+    })?;
+    let samples = match value {
+        Value::Curve(CurveValue::Keyframes(keys)) => {
+            if keys.is_empty() {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: "a curve needs at least one keyframe".into(),
+                });
             }
+            if keys.windows(2).any(|w| w[1].time <= w[0].time) {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: "keyframe times must increase".into(),
+                });
+            }
+            check_range(p, &keys.iter().map(|k| k.value).collect::<Vec<_>>(), ranges)?;
+            sample_curve(&keys, info.samples)
         }
-        ParamKind::Texture2d => match value {
-            Value::Texture(t @ TextureValue::Builtin(_)) => Ok(StoredValue::Texture(t)),
-            Value::Texture(t @ TextureValue::Rgba8 { .. }) => {
-                if let TextureValue::Rgba8 {
-                    width,
-                    height,
-                    data,
-                } = &t
-                    && (*width == 0 || *height == 0 || data.len() != (width * height * 4) as usize)
-                {
-                    return Err(Error::InvalidValue {
-                        name: p.name.clone(),
-                        message: format!(
-                            "{width}x{height} RGBA8 needs {} bytes, got {}",
-                            width * height * 4,
-                            data.len()
-                        ),
-                    });
-                }
-                Ok(StoredValue::Texture(t))
+        Value::Curve(CurveValue::Samples(s)) | Value::Vector(s) => {
+            if s.len() != info.samples as usize {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: format!("expected {} curve samples, got {}", info.samples, s.len()),
+                });
             }
-            ref v => Err(wrong(v)),
-        },
-        ParamKind::Cube => match value {
-            Value::Texture(t @ TextureValue::Builtin(_)) => Ok(StoredValue::Texture(t)),
-            Value::Texture(t @ TextureValue::CubeRgbaF32 { .. }) => {
-                if let TextureValue::CubeRgbaF32 { size, data } = &t
-                    && (*size == 0 || data.len() != (size * size * 6) as usize)
-                {
-                    return Err(Error::InvalidValue {
-                        name: p.name.clone(),
-                        message: format!(
-                            "a {size}x{size} cube needs {} texels, got {}",
-                            size * size * 6,
-                            data.len()
-                        ),
-                    });
-                }
-                Ok(StoredValue::Texture(t))
+            check_range(p, &s, ranges)?;
+            s
+        }
+        ref v => return Err(wrong(p, v)),
+    };
+    Ok(StoredValue::Curve(samples))
+}
+
+/// A gradient's ramp texels, baked from stops or given.
+fn normalise_gradient(p: &Parameter, value: Value) -> Result<StoredValue> {
+    let width = p.gradient.as_ref().map_or(64, |g| g.width);
+    match value {
+        Value::Gradient(stops) => {
+            if stops.is_empty() {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: "a gradient needs at least one stop".into(),
+                });
             }
-            ref v => Err(wrong(v)),
-        },
+            Ok(StoredValue::Gradient(bake_gradient(&stops, width)))
+        }
+        Value::Texture(TextureValue::Rgba8 {
+            width: w,
+            height: 1,
+            data,
+        }) if data.len() == w as usize * 4 && w > 0 => Ok(StoredValue::Gradient(data)),
+        ref v => Err(wrong(p, v)),
+    }
+}
+
+/// A texture: a built-in one, or RGBA8 texels of the right size.
+fn normalise_texture2d(p: &Parameter, value: Value) -> Result<StoredValue> {
+    match value {
+        Value::Texture(t @ TextureValue::Builtin(_)) => Ok(StoredValue::Texture(t)),
+        Value::Texture(t @ TextureValue::Rgba8 { .. }) => {
+            if let TextureValue::Rgba8 {
+                width,
+                height,
+                data,
+            } = &t
+                && (*width == 0 || *height == 0 || data.len() != (width * height * 4) as usize)
+            {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: format!(
+                        "{width}x{height} RGBA8 needs {} bytes, got {}",
+                        width * height * 4,
+                        data.len()
+                    ),
+                });
+            }
+            Ok(StoredValue::Texture(t))
+        }
+        ref v => Err(wrong(p, v)),
+    }
+}
+
+/// A cube: a built-in one, or RGBA f32 texels of the right size.
+fn normalise_cube(p: &Parameter, value: Value) -> Result<StoredValue> {
+    match value {
+        Value::Texture(t @ TextureValue::Builtin(_)) => Ok(StoredValue::Texture(t)),
+        Value::Texture(t @ TextureValue::CubeRgbaF32 { .. }) => {
+            if let TextureValue::CubeRgbaF32 { size, data } = &t
+                && (*size == 0 || data.len() != (size * size * 6) as usize)
+            {
+                return Err(Error::InvalidValue {
+                    name: p.name.clone(),
+                    message: format!(
+                        "a {size}x{size} cube needs {} texels, got {}",
+                        size * size * 6,
+                        data.len()
+                    ),
+                });
+            }
+            Ok(StoredValue::Texture(t))
+        }
+        ref v => Err(wrong(p, v)),
     }
 }

@@ -25,47 +25,84 @@ pub(super) fn parse_keyword(
             "use UPPER_SNAKE_CASE not ending in a digit; WEFT_TIER and TIER_* are reserved for tiers",
         );
     }
+    let kind = parse_kind(&t, cx)?;
+    let mode = parse_mode(&t, cx)?;
+    let values = parse_values(&t, name, &name_span, kind, cx)?;
+    let default = parse_default(&t, name, kind, &values, cx)?;
+    let show_if = parse_show_if(&t, cx);
+    Some(Keyword {
+        name: name.to_string(),
+        kind,
+        mode,
+        values,
+        default,
+        label: t
+            .string("label", cx)
+            .unwrap_or_else(|| humanize(&name.to_lowercase())),
+        label_zh: t.string("label_zh", cx),
+        tooltip: t.string("tooltip", cx),
+        tooltip_zh: t.string("tooltip_zh", cx),
+        group: t.string("group", cx).unwrap_or_else(|| "main".into()),
+        show_if,
+        decl: Loc {
+            file: cx.file,
+            span: name_span,
+        },
+    })
+}
+
+/// `type`: a toggle when not given.
+fn parse_kind(t: &Table, cx: &mut Cx) -> Option<KeywordKind> {
     let kind_name = t
         .string("type", cx)
         .unwrap_or_else(|| KeywordKind::Toggle.name().into());
-    let kind = match KeywordKind::ALL.into_iter().find(|k| k.name() == kind_name) {
-        Some(kind) => kind,
-        None => {
-            let other = kind_name.as_str();
-            let names = KeywordKind::ALL.map(KeywordKind::name);
-            let hint = crate::diag::did_you_mean(other, names).map_or_else(
-                || format!("use `{}`", names.join("` or `")),
-                |s| format!("did you mean `{s}`?"),
-            );
-            cx.error_with_note(
-                "unknown-value",
-                format!("unknown keyword type `{other}`"),
-                t.span_of("type"),
-                "unknown",
-                hint,
-            );
-            return None;
-        }
+    let kind = KeywordKind::ALL.into_iter().find(|k| k.name() == kind_name);
+    if kind.is_none() {
+        let other = kind_name.as_str();
+        let names = KeywordKind::ALL.map(KeywordKind::name);
+        let hint = crate::diag::did_you_mean(other, names).map_or_else(
+            || format!("use `{}`", names.join("` or `")),
+            |s| format!("did you mean `{s}`?"),
+        );
+        cx.error_with_note(
+            "unknown-value",
+            format!("unknown keyword type `{other}`"),
+            t.span_of("type"),
+            "unknown",
+            hint,
+        );
+    }
+    kind
+}
+
+/// `mode`: static when not given.
+fn parse_mode(t: &Table, cx: &mut Cx) -> Option<KeywordMode> {
+    let Some(name) = t.string("mode", cx) else {
+        return Some(KeywordMode::Static);
     };
-    let mode_name = t.string("mode", cx);
-    let mode = match mode_name.as_deref() {
-        None => KeywordMode::Static,
-        Some(name) => match KeywordMode::ALL.into_iter().find(|m| m.name() == name) {
-            Some(mode) => mode,
-            None => {
-                let other = name;
-                cx.error_with_note(
-                    "unknown-value",
-                    format!("unknown keyword mode `{other}`"),
-                    t.span_of("mode"),
-                    "unknown",
-                    "use `static` (a variant per value) or `constant` (a pipeline constant)",
-                );
-                return None;
-            }
-        },
-    };
-    let values: Vec<String> = match kind {
+    let mode = KeywordMode::ALL.into_iter().find(|m| m.name() == name);
+    if mode.is_none() {
+        cx.error_with_note(
+            "unknown-value",
+            format!("unknown keyword mode `{name}`"),
+            t.span_of("mode"),
+            "unknown",
+            "use `static` (a variant per value) or `constant` (a pipeline constant)",
+        );
+    }
+    mode
+}
+
+/// The values: off/on for a toggle, an enum's `values` (lower-case, no
+/// repeats, at least two).
+fn parse_values(
+    t: &Table,
+    name: &str,
+    name_span: &Span,
+    kind: KeywordKind,
+    cx: &mut Cx,
+) -> Option<Vec<String>> {
+    Some(match kind {
         KeywordKind::Toggle => {
             if t.get("values").is_some() {
                 cx.error(
@@ -118,8 +155,18 @@ pub(super) fn parse_keyword(
             }
             out
         }
-    };
-    let default = match t.get("default") {
+    })
+}
+
+/// The index of `default` in `values` (0 when not given or unknown).
+fn parse_default(
+    t: &Table,
+    name: &str,
+    kind: KeywordKind,
+    values: &[String],
+    cx: &mut Cx,
+) -> Option<usize> {
+    Some(match t.get("default") {
         None => 0,
         Some(dv) => {
             let value = match (kind, dv.get_ref()) {
@@ -162,26 +209,6 @@ pub(super) fn parse_keyword(
                 }
             }
         }
-    };
-    let show_if = parse_show_if(&t, cx);
-    Some(Keyword {
-        name: name.to_string(),
-        kind,
-        mode,
-        values,
-        default,
-        label: t
-            .string("label", cx)
-            .unwrap_or_else(|| humanize(&name.to_lowercase())),
-        label_zh: t.string("label_zh", cx),
-        tooltip: t.string("tooltip", cx),
-        tooltip_zh: t.string("tooltip_zh", cx),
-        group: t.string("group", cx).unwrap_or_else(|| "main".into()),
-        show_if,
-        decl: Loc {
-            file: cx.file,
-            span: name_span,
-        },
     })
 }
 

@@ -67,125 +67,12 @@ pub(super) fn parse_param(
     }
     let kind = parse_kind(&t, cx)?;
 
-    // Keys that only make sense for some kinds.
-    let only_for: &[(&str, &[ParamKind])] = &[
-        ("hdr", &[ParamKind::Color]),
-        ("srgb", &[ParamKind::Texture2d, ParamKind::Cube]),
-        ("tiling", &[ParamKind::Texture2d]),
-        ("samples", &[ParamKind::Curve]),
-        ("width", &[ParamKind::Gradient]),
-        ("power", &[ParamKind::Float]),
-        ("default_when", &[ParamKind::Texture2d, ParamKind::Cube]),
-        ("file", &[ParamKind::Texture2d]),
-    ];
-    for (key, kinds) in only_for {
-        if t.get(key).is_some() && !kinds.contains(&kind) {
-            cx.error_with_note(
-                "unknown-key",
-                format!("`{key}` does not apply to a {} parameter", kind.name()),
-                t.key_span(key).unwrap_or(t.span.clone()),
-                "not used for this type",
-                format!(
-                    "`{key}` is for: {}",
-                    kinds
-                        .iter()
-                        .map(|k| k.name())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ),
-            );
-        }
-    }
+    check_kind_keys(&t, kind, cx);
 
     let hdr = t.boolean("hdr", cx).unwrap_or(false);
-    let numeric = kind.components().is_some() && kind != ParamKind::Bool;
-    let mut range = t.range("range", cx);
-    if range.is_some() && !numeric && kind != ParamKind::Curve {
-        cx.error(
-            "unknown-key",
-            format!("`range` does not apply to a {} parameter", kind.name()),
-            t.key_span("range").unwrap_or(t.span.clone()),
-            "not used for this type",
-        );
-        range = None;
-    }
-    let number_type = if kind == ParamKind::Int {
-        GpuType::I32
-    } else {
-        GpuType::F32
-    };
-    let fits_as = |ty: GpuType, key: &str, cx: &mut Cx| {
-        t.get(key)
-            .is_none_or(|v| gpu_numbers::check_value(cx, ty, v, &format!("`{key}` of {}", t.what)))
-    };
-    let fits = |key: &str, cx: &mut Cx| fits_as(number_type, key, cx);
-    if range.is_some() && !fits("range", cx) {
-        range = None;
-    }
-    if kind == ParamKind::Color && range.is_none() && !hdr {
-        range = Some([0.0, 1.0]);
-    }
-    let mut soft_range = t.range("soft_range", cx);
-    if soft_range.is_some() && !fits("soft_range", cx) {
-        soft_range = None;
-    }
-    if let (Some(soft), Some(hard)) = (soft_range, range)
-        && (soft[0] < hard[0] || soft[1] > hard[1])
-    {
-        cx.error(
-            "out-of-range",
-            format!(
-                "`soft_range` of parameter `{name}` is outside its `range` [{}, {}]",
-                hard[0], hard[1]
-            ),
-            t.span_of("soft_range"),
-            "must lie inside range",
-        );
-    }
-    let step = t
-        .number("step", cx)
-        .filter(|_| fits_as(GpuType::F32, "step", cx));
-    if let Some(s) = step
-        && s <= 0.0
-    {
-        cx.error(
-            "out-of-range",
-            "`step` must be positive",
-            t.span_of("step"),
-            "here",
-        );
-    }
-    let power = t
-        .number("power", cx)
-        .filter(|_| fits_as(GpuType::F32, "power", cx));
-    if let Some(p) = power
-        && p <= 0.0
-    {
-        cx.error(
-            "out-of-range",
-            "`power` must be positive",
-            t.span_of("power"),
-            "here",
-        );
-    }
-    let samples = match kind {
-        ParamKind::Curve => t.integer("samples", cx).unwrap_or(16),
-        ParamKind::Gradient => t.integer("width", cx).unwrap_or(256),
-        _ => 0,
-    };
-    if matches!(kind, ParamKind::Curve | ParamKind::Gradient) && !(2..=4096).contains(&samples) {
-        let key = if kind == ParamKind::Curve {
-            "samples"
-        } else {
-            "width"
-        };
-        cx.error(
-            "out-of-range",
-            format!("`{key}` must be between 2 and 4096"),
-            t.span_of(key),
-            "here",
-        );
-    }
+    let (range, soft_range) = parse_ranges(&t, name, kind, hdr, cx);
+    let (step, power) = parse_slider(&t, cx);
+    let samples = parse_samples(&t, kind, cx);
 
     let default = parse_default(&t, kind, range, cx)?;
     let show_if = parse_show_if(&t, cx);
@@ -228,6 +115,152 @@ pub(super) fn parse_param(
             span: name_span,
         },
     })
+}
+
+/// Keys that only make sense for some kinds, reported on any other.
+fn check_kind_keys(t: &Table, kind: ParamKind, cx: &mut Cx) {
+    let only_for: &[(&str, &[ParamKind])] = &[
+        ("hdr", &[ParamKind::Color]),
+        ("srgb", &[ParamKind::Texture2d, ParamKind::Cube]),
+        ("tiling", &[ParamKind::Texture2d]),
+        ("samples", &[ParamKind::Curve]),
+        ("width", &[ParamKind::Gradient]),
+        ("power", &[ParamKind::Float]),
+        ("default_when", &[ParamKind::Texture2d, ParamKind::Cube]),
+        ("file", &[ParamKind::Texture2d]),
+    ];
+    for (key, kinds) in only_for {
+        if t.get(key).is_some() && !kinds.contains(&kind) {
+            cx.error_with_note(
+                "unknown-key",
+                format!("`{key}` does not apply to a {} parameter", kind.name()),
+                t.key_span(key).unwrap_or(t.span.clone()),
+                "not used for this type",
+                format!(
+                    "`{key}` is for: {}",
+                    kinds
+                        .iter()
+                        .map(|k| k.name())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            );
+        }
+    }
+}
+
+/// `range` (colours without `hdr`: [0, 1] when not given) and
+/// `soft_range`, each dropped when it does not apply or does not fit the
+/// GPU type; a soft range outside the range is an error.
+fn parse_ranges(
+    t: &Table,
+    name: &str,
+    kind: ParamKind,
+    hdr: bool,
+    cx: &mut Cx,
+) -> (Option<[f64; 2]>, Option<[f64; 2]>) {
+    let numeric = kind.components().is_some() && kind != ParamKind::Bool;
+    let mut range = t.range("range", cx);
+    if range.is_some() && !numeric && kind != ParamKind::Curve {
+        cx.error(
+            "unknown-key",
+            format!("`range` does not apply to a {} parameter", kind.name()),
+            t.key_span("range").unwrap_or(t.span.clone()),
+            "not used for this type",
+        );
+        range = None;
+    }
+    let number_type = if kind == ParamKind::Int {
+        GpuType::I32
+    } else {
+        GpuType::F32
+    };
+    let fits = |key: &str, cx: &mut Cx| fits_as(t, number_type, key, cx);
+    if range.is_some() && !fits("range", cx) {
+        range = None;
+    }
+    if kind == ParamKind::Color && range.is_none() && !hdr {
+        range = Some([0.0, 1.0]);
+    }
+    let mut soft_range = t.range("soft_range", cx);
+    if soft_range.is_some() && !fits("soft_range", cx) {
+        soft_range = None;
+    }
+    if let (Some(soft), Some(hard)) = (soft_range, range)
+        && (soft[0] < hard[0] || soft[1] > hard[1])
+    {
+        cx.error(
+            "out-of-range",
+            format!(
+                "`soft_range` of parameter `{name}` is outside its `range` [{}, {}]",
+                hard[0], hard[1]
+            ),
+            t.span_of("soft_range"),
+            "must lie inside range",
+        );
+    }
+    (range, soft_range)
+}
+
+/// Whether `key`, if given, fits `ty` (reported where it does not).
+fn fits_as(t: &Table, ty: GpuType, key: &str, cx: &mut Cx) -> bool {
+    t.get(key)
+        .is_none_or(|v| gpu_numbers::check_value(cx, ty, v, &format!("`{key}` of {}", t.what)))
+}
+
+/// The slider's `step` and `power`, each positive.
+fn parse_slider(t: &Table, cx: &mut Cx) -> (Option<f64>, Option<f64>) {
+    let step = t
+        .number("step", cx)
+        .filter(|_| fits_as(t, GpuType::F32, "step", cx));
+    if let Some(s) = step
+        && s <= 0.0
+    {
+        cx.error(
+            "out-of-range",
+            "`step` must be positive",
+            t.span_of("step"),
+            "here",
+        );
+    }
+    let power = t
+        .number("power", cx)
+        .filter(|_| fits_as(t, GpuType::F32, "power", cx));
+    if let Some(p) = power
+        && p <= 0.0
+    {
+        cx.error(
+            "out-of-range",
+            "`power` must be positive",
+            t.span_of("power"),
+            "here",
+        );
+    }
+    (step, power)
+}
+
+/// A curve's `samples` (16 when not given) or a gradient's `width` (256),
+/// reported outside 2..=4096; 0 for other kinds.
+fn parse_samples(t: &Table, kind: ParamKind, cx: &mut Cx) -> i64 {
+    let samples = match kind {
+        ParamKind::Curve => t.integer("samples", cx).unwrap_or(16),
+        ParamKind::Gradient => t.integer("width", cx).unwrap_or(256),
+        _ => 0,
+    };
+    if matches!(kind, ParamKind::Curve | ParamKind::Gradient) && !(2..=4096).contains(&samples) {
+        let key = if kind == ParamKind::Curve {
+            "samples"
+        } else {
+            "width"
+        };
+        cx.error(
+            "out-of-range",
+            format!("`{key}` must be between 2 and 4096"),
+            t.span_of(key),
+            "here",
+        );
+    }
+    samples
 }
 
 /// The `default` of a parameter table, or the kind's built-in default.

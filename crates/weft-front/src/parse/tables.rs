@@ -4,8 +4,9 @@
 //! and a file beside its variants (docs/material-format.md, `[tables]`).
 
 use super::{TABLE_KEYS, is_snake_ident};
+use crate::diag::Span;
 use crate::model::*;
-use crate::toml_reader::{Cx, Table};
+use crate::toml_reader::{Cx, Table, Value};
 
 /// Recipes and what each is for (the hint of an unknown recipe).
 pub const RECIPES: &[(&str, &str)] = &[(
@@ -32,151 +33,170 @@ pub(super) fn parse_tables(top: &Table, material: &mut Material, cx: &mut Cx) {
         return;
     };
     for (name, span, v) in tables.entries() {
-        let Some(t) = Table::new(v, format!("table `{name}`"), cx) else {
-            continue;
-        };
-        t.check_keys(TABLE_KEYS, cx);
-        if !is_snake_ident(name) {
-            cx.error_with_note(
-                "bad-name",
-                format!("table name `{name}` is not a lower-case identifier"),
-                span.clone(),
-                "used as a WGSL name and a file name",
-                "use lower_snake_case letters, digits and underscores",
-            );
-            continue;
+        if let Some(table) = parse_table(name, span, v, &material.tables, cx) {
+            material.tables.push(table);
         }
-        let size = match t.numbers("size", cx) {
-            Some(s) if s.len() == 2 && s.iter().all(|n| n.fract() == 0.0) => {
-                let ok = |n: f64| {
-                    (f64::from(TABLE_SIZE_RANGE[0])..=f64::from(TABLE_SIZE_RANGE[1])).contains(&n)
-                };
-                if !ok(s[0]) || !ok(s[1]) {
-                    cx.error(
-                        "out-of-range",
-                        format!(
-                            "a table has {} to {} texels per axis",
-                            TABLE_SIZE_RANGE[0], TABLE_SIZE_RANGE[1]
-                        ),
-                        t.span_of("size"),
-                        "here",
-                    );
-                    continue;
-                }
-                [s[0] as u32, s[1] as u32]
-            }
-            Some(_) => {
-                cx.error(
-                    "wrong-type",
-                    "`size` is two whole numbers: texels along u and v",
-                    t.span_of("size"),
-                    "here",
-                );
-                continue;
-            }
-            None => {
-                cx.error_with_note(
-                    "missing-key",
-                    format!("table `{name}` has no `size`"),
-                    span.clone(),
-                    "in this table",
-                    "add `size = [64, 64]` (texels along u and v)",
-                );
-                continue;
-            }
-        };
-        let recipe = match t.string("recipe", cx).as_deref() {
-            Some("preintegrated_skin") => {
-                let Some(shape) = skin_shape(&t, cx) else {
-                    continue;
-                };
-                let ring = t.string("ring", cx);
-                let half_ring = match ring.as_deref() {
-                    None => false,
-                    Some(name) if RINGS.iter().any(|(n, _)| *n == name) => {
-                        RINGS.iter().any(|(n, half)| *n == name && *half)
-                    }
-                    Some(other) => {
-                        cx.error_with_note(
-                            "unknown-value",
-                            format!("unknown `ring` value `{other}`"),
-                            t.span_of("ring"),
-                            "unknown",
-                            "`full` (Penner & Borshukov: the whole ring) or `half` (the seed: ±π/2)",
-                        );
-                        continue;
-                    }
-                };
-                TableRecipe::PreintegratedSkin { shape, half_ring }
-            }
-            Some(other) => {
-                let names: Vec<&str> = RECIPES.iter().map(|(n, _)| *n).collect();
-                let hint = crate::diag::did_you_mean(other, names.iter().copied()).map_or_else(
-                    || {
-                        let list: Vec<String> = RECIPES
-                            .iter()
-                            .map(|(n, w)| format!("`{n}` ({w})"))
-                            .collect();
-                        format!("known recipes: {}", list.join(", "))
-                    },
-                    |s| format!("did you mean `{s}`?"),
-                );
-                cx.error_with_note(
-                    "unknown-value",
-                    format!("unknown table recipe `{other}`"),
-                    t.span_of("recipe"),
-                    "unknown",
-                    hint,
-                );
-                continue;
-            }
-            None => {
-                cx.error_with_note(
-                    "missing-key",
-                    format!("table `{name}` has no `recipe`"),
-                    span.clone(),
-                    "in this table",
-                    "add `recipe = \"preintegrated_skin\"`",
-                );
-                continue;
-            }
-        };
-        let texels: u64 = material
-            .tables
-            .iter()
-            .chain(std::iter::once(&BakedTable {
-                name: String::new(),
-                recipe: recipe.clone(),
-                size,
-                decl: Loc {
-                    file: cx.file,
-                    span: span.clone(),
-                },
-            }))
-            .map(|t| u64::from(t.size[0]) * u64::from(t.size[1]))
-            .sum();
-        if texels > MAX_TABLE_TEXELS {
-            cx.error_with_note(
-                "too-large",
-                format!(
-                    "the material's tables would have {texels} texels in all; at most {MAX_TABLE_TEXELS} (256²) are baked"
-                ),
-                t.span_of("size"),
-                "this table passes the budget",
-                "each texel integrates thousands of points at build time: use smaller tables (filtering interpolates between texels)",
-            );
-            continue;
-        }
-        material.tables.push(BakedTable {
-            name: name.to_string(),
-            recipe,
+    }
+}
+
+/// One `[tables.<name>]` entry, checked against the texel budget of the
+/// material's tables so far (`earlier`).
+fn parse_table(
+    name: &str,
+    span: Span,
+    v: &Value,
+    earlier: &[BakedTable],
+    cx: &mut Cx,
+) -> Option<BakedTable> {
+    let t = Table::new(v, format!("table `{name}`"), cx)?;
+    t.check_keys(TABLE_KEYS, cx);
+    if !is_snake_ident(name) {
+        cx.error_with_note(
+            "bad-name",
+            format!("table name `{name}` is not a lower-case identifier"),
+            span.clone(),
+            "used as a WGSL name and a file name",
+            "use lower_snake_case letters, digits and underscores",
+        );
+        return None;
+    }
+    let size = table_size(&t, name, &span, cx)?;
+    let recipe = table_recipe(&t, name, &span, cx)?;
+    let texels: u64 = earlier
+        .iter()
+        .chain(std::iter::once(&BakedTable {
+            name: String::new(),
+            recipe: recipe.clone(),
             size,
             decl: Loc {
                 file: cx.file,
                 span: span.clone(),
             },
-        });
+        }))
+        .map(|t| u64::from(t.size[0]) * u64::from(t.size[1]))
+        .sum();
+    if texels > MAX_TABLE_TEXELS {
+        cx.error_with_note(
+            "too-large",
+            format!(
+                "the material's tables would have {texels} texels in all; at most {MAX_TABLE_TEXELS} (256²) are baked"
+            ),
+            t.span_of("size"),
+            "this table passes the budget",
+            "each texel integrates thousands of points at build time: use smaller tables (filtering interpolates between texels)",
+        );
+        return None;
     }
+    Some(BakedTable {
+        name: name.to_string(),
+        recipe,
+        size,
+        decl: Loc {
+            file: cx.file,
+            span: span.clone(),
+        },
+    })
+}
+
+/// `size`: two whole numbers of texels, each in [`TABLE_SIZE_RANGE`].
+fn table_size(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<[u32; 2]> {
+    Some(match t.numbers("size", cx) {
+        Some(s) if s.len() == 2 && s.iter().all(|n| n.fract() == 0.0) => {
+            let ok = |n: f64| {
+                (f64::from(TABLE_SIZE_RANGE[0])..=f64::from(TABLE_SIZE_RANGE[1])).contains(&n)
+            };
+            if !ok(s[0]) || !ok(s[1]) {
+                cx.error(
+                    "out-of-range",
+                    format!(
+                        "a table has {} to {} texels per axis",
+                        TABLE_SIZE_RANGE[0], TABLE_SIZE_RANGE[1]
+                    ),
+                    t.span_of("size"),
+                    "here",
+                );
+                return None;
+            }
+            [s[0] as u32, s[1] as u32]
+        }
+        Some(_) => {
+            cx.error(
+                "wrong-type",
+                "`size` is two whole numbers: texels along u and v",
+                t.span_of("size"),
+                "here",
+            );
+            return None;
+        }
+        None => {
+            cx.error_with_note(
+                "missing-key",
+                format!("table `{name}` has no `size`"),
+                span.clone(),
+                "in this table",
+                "add `size = [64, 64]` (texels along u and v)",
+            );
+            return None;
+        }
+    })
+}
+
+/// `recipe` and the recipe's own keys.
+fn table_recipe(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<TableRecipe> {
+    Some(match t.string("recipe", cx).as_deref() {
+        Some("preintegrated_skin") => {
+            let shape = skin_shape(t, cx)?;
+            let ring = t.string("ring", cx);
+            let half_ring = match ring.as_deref() {
+                None => false,
+                Some(name) if RINGS.iter().any(|(n, _)| *n == name) => {
+                    RINGS.iter().any(|(n, half)| *n == name && *half)
+                }
+                Some(other) => {
+                    cx.error_with_note(
+                        "unknown-value",
+                        format!("unknown `ring` value `{other}`"),
+                        t.span_of("ring"),
+                        "unknown",
+                        "`full` (Penner & Borshukov: the whole ring) or `half` (the seed: ±π/2)",
+                    );
+                    return None;
+                }
+            };
+            TableRecipe::PreintegratedSkin { shape, half_ring }
+        }
+        Some(other) => {
+            let names: Vec<&str> = RECIPES.iter().map(|(n, _)| *n).collect();
+            let hint = crate::diag::did_you_mean(other, names.iter().copied()).map_or_else(
+                || {
+                    let list: Vec<String> = RECIPES
+                        .iter()
+                        .map(|(n, w)| format!("`{n}` ({w})"))
+                        .collect();
+                    format!("known recipes: {}", list.join(", "))
+                },
+                |s| format!("did you mean `{s}`?"),
+            );
+            cx.error_with_note(
+                "unknown-value",
+                format!("unknown table recipe `{other}`"),
+                t.span_of("recipe"),
+                "unknown",
+                hint,
+            );
+            return None;
+        }
+        None => {
+            cx.error_with_note(
+                "missing-key",
+                format!("table `{name}` has no `recipe`"),
+                span.clone(),
+                "in this table",
+                "add `recipe = \"preintegrated_skin\"`",
+            );
+            return None;
+        }
+    })
 }
 
 /// The Burley shape s per channel: three positive numbers (1 / the
