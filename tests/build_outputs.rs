@@ -516,7 +516,9 @@ fn dead_branches_and_their_bindings_are_removed() {
         let text = std::str::from_utf8(bytes).unwrap();
         for line in text.lines().filter(|l| l.starts_with("override ")) {
             assert!(
-                constant.iter().any(|k| line.starts_with(&format!("override {k}:"))),
+                constant
+                    .iter()
+                    .any(|k| line.starts_with(&format!("override {k}:"))),
                 "{name} keeps a static keyword's override: {line}"
             );
         }
