@@ -24,6 +24,8 @@ mod regenerate;
 mod render_sets;
 mod scale;
 #[cfg(test)]
+mod readme_materials;
+#[cfg(test)]
 mod tidy;
 
 use bench_compile::bench_compile;
