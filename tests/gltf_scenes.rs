@@ -106,9 +106,9 @@ fn gltf_materials_map_as_documented() {
     let frame = by_name("sofa_p0");
     assert_eq!(frame.material, "standard");
     assert!((number(constant(&meta, "sofa_p0", "specular_strength")) - 0.5).abs() < 1e-6);
-    assert!((number(constant(&meta, "sofa_p0", "roughness")) - 1.0).abs() < 1e-6);
+    assert!((number(constant(&meta, "sofa_p0", "roughness")) - 0.45).abs() < 1e-6);
     let base = constant(&meta, "sofa_p0", "base_color");
-    for (c, want) in base.as_array().unwrap().iter().zip([0.8, 0.62, 0.45, 1.0]) {
+    for (c, want) in base.as_array().unwrap().iter().zip([0.32, 0.2, 0.12, 1.0]) {
         // The factor is linear in glTF; weft uploads linear: the round trip
         // through the sRGB-edited parameter keeps it.
         assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{base}");
@@ -144,34 +144,8 @@ fn gltf_materials_map_as_documented() {
         ),
         ("microcylinder", Some("silk_shot"), "fast")
     );
-    // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1
-    // + 1 + 1 + 1.
-    assert_eq!(meta.instances.len(), 13);
-    // alphaMode MASK → standard's alpha test at alphaCutoff; doubleSided →
-    // the passes draw both faces.
-    let lace = by_name("lace_panel");
-    assert_eq!(lace.keywords["ALPHA_TEST"], "on");
-    assert!((number(constant(&meta, "lace_panel", "alpha_cutoff")) - 0.4).abs() < 1e-6);
-    assert!(
-        lace.passes
-            .iter()
-            .all(|p| p.render_state.cull == weft_meta::CullMode::None
-                && p.primitive.cull_mode == weft_meta::CullMode::None)
-    );
-    // Emission: emissiveFactor (linear, as uploaded) × emissive_strength.
-    let glow = constant(&meta, "glow_bulb", "emissive");
-    for (c, want) in glow.as_array().unwrap().iter().zip([1.0, 0.6, 0.3]) {
-        assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{glow}");
-    }
-    assert!((number(constant(&meta, "glow_bulb", "emissive_strength")) - 2.5).abs() < 1e-6);
-    // alphaMode BLEND → the passes blend, write no depth, draw after opaque.
-    let glass = by_name("glass_block");
-    for p in &glass.passes {
-        assert_eq!(p.render_state.blend, weft_meta::BlendMode::Alpha);
-        assert!(!p.render_state.depth_write && !p.depth_stencil.depth_write_enabled);
-        assert!(p.render_state.queue >= 3000);
-        assert!(p.color_targets[0].blend.is_some());
-    }
+    // Every mesh primitive a node draws is an instance: 1 + 6 + 1 + 1 + 1.
+    assert_eq!(meta.instances.len(), 10);
     // Opaque, single-sided materials keep their own state.
     assert!(
         frame
@@ -360,18 +334,35 @@ fn bound_image<'a>(
     (file, bytes)
 }
 
+/// `tests/gltf/cutouts.glb` built as it is.
+fn cutouts() -> (SceneMetadata, std::collections::BTreeMap<String, Vec<u8>>) {
+    let out = build_scene(
+        &repo().join("tests/gltf/cutouts.glb"),
+        &SceneBuildOptions {
+            gltf_materials: Some(&repo().join("materials")),
+            ..SceneBuildOptions::default()
+        },
+    )
+    .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    (out.metadata, out.files)
+}
+
 #[test]
 fn gltf_textures_become_the_scene_folders_images() {
-    let (meta, files) = showroom();
-    let frame = meta.instances.iter().find(|i| i.name == "sofa_p0").unwrap();
+    let (meta, files) = cutouts();
+    let frame = meta
+        .instances
+        .iter()
+        .find(|i| i.name == "textured_frame")
+        .unwrap();
     assert_eq!(
         frame.keywords["NORMAL_MAP"], "on",
         "normalTexture turns the normal map on"
     );
-    assert!((number(constant(&meta, "sofa_p0", "normal_strength")) - 0.8).abs() < 1e-6);
-    assert!((number(constant(&meta, "sofa_p0", "occlusion_strength")) - 0.7).abs() < 1e-6);
+    assert!((number(constant(&meta, "textured_frame", "normal_strength")) - 0.8).abs() < 1e-6);
+    assert!((number(constant(&meta, "textured_frame", "occlusion_strength")) - 0.7).abs() < 1e-6);
     // KHR_texture_transform's scale and offset: the base map's tiling.
-    let st = constant(&meta, "sofa_p0", "base_map_st");
+    let st = constant(&meta, "textured_frame", "base_map_st");
     let st: Vec<f64> = st
         .as_array()
         .unwrap()
@@ -384,7 +375,7 @@ fn gltf_textures_become_the_scene_folders_images() {
         assert!(!frame.constants.contains_key(p), "{p} folded");
     }
     // Base colour: sRGB texels of the 64 × 64 PNG, exactly.
-    let (base, texels) = bound_image(&meta, &files, "sofa_p0", "base_map");
+    let (base, texels) = bound_image(&meta, &files, "textured_frame", "base_map");
     assert_eq!(
         (base.width, base.height, base.format.as_str()),
         (64, 64, "rgba8unorm_srgb")
@@ -397,11 +388,11 @@ fn gltf_textures_become_the_scene_folders_images() {
     png.next_frame(&mut want).unwrap();
     assert_eq!(texels, &want[..], "the PNG's texels as stored");
     // Normal map: linear.
-    let (normal, _) = bound_image(&meta, &files, "sofa_p0", "normal_map");
+    let (normal, _) = bound_image(&meta, &files, "textured_frame", "normal_map");
     assert_eq!(normal.format, "rgba8unorm");
     // RMO repacked from the JPEG's G (roughness) and B (metallic) and the
     // 16 × 16 occlusion PNG's R, at the metallic-roughness map's 32 × 32.
-    let (rmo, texels) = bound_image(&meta, &files, "sofa_p0", "rmo_map");
+    let (rmo, texels) = bound_image(&meta, &files, "textured_frame", "rmo_map");
     assert_eq!(
         (rmo.width, rmo.height, rmo.format.as_str()),
         (32, 32, "rgba8unorm")
@@ -548,7 +539,7 @@ fn the_funnel_counts_what_the_scene_keeps() {
             f.gltf_materials,
             f.gltf_materials_used
         ),
-        (Some("showroom.glb"), Some(10), Some(10))
+        (Some("showroom.glb"), Some(7), Some(7))
     );
     let stand_ins: usize = meta.variants.values().map(|v| v.len()).sum();
     assert_eq!(f.instances, meta.instances.len() + stand_ins);
@@ -599,5 +590,38 @@ fn an_instance_overrides_its_passes_render_state() {
             error.contains(phrase) && error.contains("img.scene.toml:"),
             "{error}"
         );
+    }
+}
+
+#[test]
+fn alpha_modes_sides_and_emission_map_onto_standard_and_the_render_state() {
+    let (meta, _) = cutouts();
+    let meta = &meta;
+    let by_name = |n: &str| meta.instances.iter().find(|i| i.name == n).unwrap();
+    // alphaMode MASK → standard's alpha test at alphaCutoff; doubleSided →
+    // the passes draw both faces.
+    let lace = by_name("lace_panel");
+    assert_eq!(lace.keywords["ALPHA_TEST"], "on");
+    assert!((number(constant(meta, "lace_panel", "alpha_cutoff")) - 0.4).abs() < 1e-6);
+    assert!(
+        lace.passes
+            .iter()
+            .all(|p| p.render_state.cull == weft_meta::CullMode::None
+                && p.primitive.cull_mode == weft_meta::CullMode::None)
+    );
+    // Emission: emissiveFactor (linear, as uploaded) × emissive_strength.
+    assert_eq!(by_name("glow_bulb").keywords["EMISSION"], "on");
+    let glow = constant(meta, "glow_bulb", "emissive");
+    for (c, want) in glow.as_array().unwrap().iter().zip([1.0, 0.6, 0.3]) {
+        assert!((c.as_f64().unwrap() - want).abs() < 1e-4, "{glow}");
+    }
+    assert!((number(constant(meta, "glow_bulb", "emissive_strength")) - 2.5).abs() < 1e-6);
+    // alphaMode BLEND → the passes blend, write no depth, draw after opaque.
+    let glass = by_name("glass_block");
+    for p in &glass.passes {
+        assert_eq!(p.render_state.blend, weft_meta::BlendMode::Alpha);
+        assert!(!p.render_state.depth_write && !p.depth_stencil.depth_write_enabled);
+        assert!(p.render_state.queue >= 3000);
+        assert!(p.color_targets[0].blend.is_some());
     }
 }

@@ -20,11 +20,11 @@ mod gallery;
 mod gltf_samples;
 #[cfg(feature = "screenshots")]
 mod inspector;
+#[cfg(test)]
+mod readme_materials;
 mod regenerate;
 mod render_sets;
 mod scale;
-#[cfg(test)]
-mod readme_materials;
 #[cfg(test)]
 mod tidy;
 

@@ -125,7 +125,9 @@ pub fn readme_material_problems(root: &Path) -> Result<Vec<String>, String> {
     }
     for name in rows.keys() {
         if !materials.iter().any(|(m, _)| m == name) {
-            problems.push(format!("{name}: a README.md row for no material of the library"));
+            problems.push(format!(
+                "{name}: a README.md row for no material of the library"
+            ));
         }
     }
     Ok(problems)

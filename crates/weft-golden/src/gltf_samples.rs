@@ -9,6 +9,8 @@
 //!   light; `KHR_materials_variants` switches the cushions' material.
 //! - `tests/gltf/bust.gltf` (+ `.bin`): the character bust, each part's
 //!   material from `extras.weft` (face, eye, hair, skin).
+//! - `tests/gltf/cutouts.glb`: alpha MASK with doubleSided, emission, BLEND,
+//!   and a frame with all four core maps (PNG and JPEG, KHR_texture_transform).
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
 //!   error names (tests/gltf_scenes.rs).
 //!
@@ -223,15 +225,7 @@ pub fn showroom() -> Vec<u8> {
           "pbrMetallicRoughness": { "baseColorFactor": [0.18, 0.02, 0.05, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.8 },
           "extensions": { "KHR_materials_sheen": { "sheenColorFactor": [0.55, 0.22, 0.3], "sheenRoughnessFactor": 0.6 } } },
         { "name": "Sofa frame",
-          "pbrMetallicRoughness": { "baseColorFactor": [0.8, 0.62, 0.45, 1.0], "metallicFactor": 1.0, "roughnessFactor": 1.0,
-              "baseColorTexture": { "index": 0,
-                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
-              "metallicRoughnessTexture": { "index": 2,
-                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } } },
-          "normalTexture": { "index": 1, "scale": 0.8,
-              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
-          "occlusionTexture": { "index": 3, "strength": 0.7,
-              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+          "pbrMetallicRoughness": { "baseColorFactor": [0.32, 0.2, 0.12, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.45 },
           "extensions": { "KHR_materials_specular": { "specularFactor": 0.5 } } },
         { "name": "Cushion",
           "pbrMetallicRoughness": { "baseColorFactor": [0.05, 0.12, 0.3, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.9 },
@@ -248,17 +242,6 @@ pub fn showroom() -> Vec<u8> {
         { "name": "Shot silk",
           "pbrMetallicRoughness": { "baseColorFactor": [0.5, 0.2, 0.5, 1.0] },
           "extras": { "weft": { "material": "microcylinder", "preset": "silk_shot", "tier": "fast" } } },
-        { "name": "Lace",
-          "pbrMetallicRoughness": { "baseColorFactor": [0.95, 0.92, 0.88, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.7,
-              "baseColorTexture": { "index": 4 } },
-          "alphaMode": "MASK", "alphaCutoff": 0.4, "doubleSided": true },
-        { "name": "Glow bulb",
-          "pbrMetallicRoughness": { "baseColorFactor": [0.9, 0.85, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.4 },
-          "emissiveFactor": [1.0, 0.6, 0.3],
-          "extensions": { "KHR_materials_emissive_strength": { "emissiveStrength": 2.5 } } },
-        { "name": "Tinted glass",
-          "pbrMetallicRoughness": { "baseColorFactor": [0.6, 0.8, 0.9, 0.35], "metallicFactor": 0.0, "roughnessFactor": 0.1 },
-          "alphaMode": "BLEND" },
     ]);
     let mut packed = Packed {
         bin: Vec::new(),
@@ -273,9 +256,6 @@ pub fn showroom() -> Vec<u8> {
     let ball = packed.primitive(&Prim::from_mesh(&sphere, 5, true), None);
     let foil = packed.primitive(&Prim::from_mesh(&swatch, 4, false), None);
     let silk = packed.primitive(&Prim::from_mesh(&swatch, 6, false), None);
-    let lace = packed.primitive(&Prim::from_mesh(&swatch, 7, false), None);
-    let bulb = packed.primitive(&Prim::from_mesh(&sphere, 8, true), None);
-    let glass = packed.primitive(&block([0.0; 3], [0.14, 0.14, 0.14], 9), None);
     let frame: Vec<Value> = [
         block([0.0, 0.2, 0.0], [0.9, 0.2, 0.4], 1),
         block([0.0, 0.55, -0.32], [0.9, 0.35, 0.08], 1),
@@ -295,14 +275,94 @@ pub fn showroom() -> Vec<u8> {
     .collect();
     let mut sofa = frame;
     sofa.extend(cushions);
-    // The frame's maps, stored in the BIN chunk: PNG and JPEG, of three
-    // sizes (the occlusion map is resampled into the RMO map's size).
+    let json = json!({
+        "asset": asset(),
+        "extensionsUsed": ["KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_iridescence",
+                           "KHR_materials_anisotropy", "KHR_lights_punctual", "KHR_materials_variants"],
+        "scene": 0,
+        "scenes": [ { "name": "Showroom", "nodes": [0, 1, 2, 3, 4, 5, 6, 7] } ],
+        "nodes": [
+            { "name": "Drape", "mesh": 0, "translation": [-1.2, 0.9, 0.0], "rotation": quat([1.0, 0.0, 0.0], 70.0), "scale": [0.6, 0.6, 0.6] },
+            { "name": "Sofa", "mesh": 1, "translation": [0.4, 0.0, -0.4], "rotation": quat([0.0, 1.0, 0.0], -15.0) },
+            { "name": "Foil swatch", "mesh": 2, "translation": [1.25, 0.75, 0.2], "scale": [0.35, 0.35, 0.35] },
+            { "name": "Satin ball", "mesh": 3, "translation": [-0.5, 0.35, 0.9], "scale": [0.35, 0.35, 0.35] },
+            { "name": "Shot silk swatch", "mesh": 4, "translation": [1.25, 0.1, 0.2], "scale": [0.35, 0.35, 0.35] },
+            { "name": "Camera", "camera": 0, "translation": [0.05, 0.9, 3.6], "rotation": quat([1.0, 0.0, 0.0], -8.0) },
+            { "name": "Sun", "rotation": rotation_to([-0.62, 0.55, 0.56]),
+              "extensions": { "KHR_lights_punctual": { "light": 0 } } },
+            { "name": "Lamp", "translation": [1.0, 2.0, 1.0], "extensions": { "KHR_lights_punctual": { "light": 1 } } },
+        ],
+        "meshes": [
+            { "name": "drape", "primitives": [drape] },
+            { "name": "sofa", "primitives": sofa },
+            { "name": "foil", "primitives": [foil] },
+            { "name": "ball", "primitives": [ball] },
+            { "name": "silk swatch", "primitives": [silk] },
+        ],
+        "materials": materials,
+        "cameras": [ { "type": "perspective", "perspective": { "yfov": 0.6, "znear": 0.1, "aspectRatio": 1.6 } } ],
+        "extensions": {
+            "KHR_lights_punctual": { "lights": [
+                { "type": "directional", "color": [1.0, 0.96, 0.9], "intensity": 3.0 },
+                { "type": "point", "color": [1.0, 0.8, 0.6], "intensity": 20.0 } ] },
+            "KHR_materials_variants": { "variants": [ { "name": "velvet cushions" }, { "name": "linen cushions" } ] }
+        },
+        "buffers": [ { "byteLength": packed.bin.len() } ],
+        "bufferViews": packed.views,
+        "accessors": packed.accessors,
+    });
+    glb(&json, &packed.bin)
+}
+
+/// `tests/gltf/cutouts.glb`: glTF's alpha modes, sides and emission on core
+/// materials — a lace panel (MASK, doubleSided, turned so that its back
+/// face shows), a glowing bulb (emissive × KHR_materials_emissive_strength)
+/// and a glass block (BLEND) — framed by weft (no camera).
+pub fn cutouts() -> Vec<u8> {
+    let materials = json!([
+        { "name": "Lace",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.95, 0.92, 0.88, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.7,
+              "baseColorTexture": { "index": 0 } },
+          "alphaMode": "MASK", "alphaCutoff": 0.4, "doubleSided": true },
+        { "name": "Glow bulb",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.9, 0.85, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.4 },
+          "emissiveFactor": [1.0, 0.6, 0.3],
+          "extensions": { "KHR_materials_emissive_strength": { "emissiveStrength": 2.5 } } },
+        { "name": "Tinted glass",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.6, 0.8, 0.9, 0.35], "metallicFactor": 0.0, "roughnessFactor": 0.1 },
+          "alphaMode": "BLEND" },
+        { "name": "Textured frame",
+          "pbrMetallicRoughness": { "baseColorFactor": [0.8, 0.62, 0.45, 1.0], "metallicFactor": 1.0, "roughnessFactor": 1.0,
+              "baseColorTexture": { "index": 1,
+                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+              "metallicRoughnessTexture": { "index": 3,
+                  "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } } },
+          "normalTexture": { "index": 2, "scale": 0.8,
+              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+          "occlusionTexture": { "index": 4, "strength": 0.7,
+              "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
+          "extensions": { "KHR_materials_specular": { "specularFactor": 0.5 } } },
+    ]);
+    let mut packed = Packed {
+        bin: Vec::new(),
+        views: Vec::new(),
+        accessors: Vec::new(),
+    };
+    let sphere = Scene::new(SceneKind::Sphere).mesh;
+    let swatch = Scene::new(SceneKind::Swatch).mesh;
+    let lace = packed.primitive(&Prim::from_mesh(&swatch, 0, false), None);
+    let bulb = packed.primitive(&Prim::from_mesh(&sphere, 1, true), None);
+    let glass = packed.primitive(&block([0.0; 3], [0.3, 0.3, 0.3], 2), None);
+    let frame = packed.primitive(&block([0.0; 3], [0.5, 0.25, 0.2], 3), None);
+    // The images, stored in the BIN chunk: the lace's alpha PNG, then the
+    // frame's maps as PNG and JPEG of three sizes (the occlusion map is
+    // resampled into the RMO map's size).
     let images: Vec<Value> = [
+        (lace_base_color(), "image/png"),
         (wood_base_color(), "image/png"),
         (wood_normals(), "image/png"),
         (wood_metallic_roughness(), "image/jpeg"),
         (wood_occlusion(), "image/png"),
-        (lace_base_color(), "image/png"),
     ]
     .into_iter()
     .map(|(data, mime)| {
@@ -316,47 +376,25 @@ pub fn showroom() -> Vec<u8> {
     .collect();
     let json = json!({
         "asset": asset(),
-        "extensionsUsed": ["KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_iridescence",
-                           "KHR_materials_anisotropy", "KHR_lights_punctual", "KHR_materials_variants",
-                           "KHR_texture_transform", "KHR_materials_emissive_strength"],
+        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform"],
         "scene": 0,
-        "scenes": [ { "name": "Showroom", "nodes": [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10] } ],
+        "scenes": [ { "name": "Cutouts", "nodes": [0, 1, 2, 3] } ],
         "nodes": [
-            { "name": "Drape", "mesh": 0, "translation": [-1.2, 0.9, 0.0], "rotation": quat([1.0, 0.0, 0.0], 70.0), "scale": [0.6, 0.6, 0.6] },
-            { "name": "Sofa", "mesh": 1, "translation": [0.4, 0.0, -0.4], "rotation": quat([0.0, 1.0, 0.0], -15.0) },
-            { "name": "Foil swatch", "mesh": 2, "translation": [1.25, 0.75, 0.2], "scale": [0.35, 0.35, 0.35] },
-            { "name": "Satin ball", "mesh": 3, "translation": [-0.5, 0.35, 0.9], "scale": [0.35, 0.35, 0.35] },
-            { "name": "Shot silk swatch", "mesh": 4, "translation": [1.25, 0.1, 0.2], "scale": [0.35, 0.35, 0.35] },
-            { "name": "Camera", "camera": 0, "translation": [0.05, 0.9, 3.6], "rotation": quat([1.0, 0.0, 0.0], -8.0) },
-            { "name": "Sun", "rotation": rotation_to([-0.62, 0.55, 0.56]),
-              "extensions": { "KHR_lights_punctual": { "light": 0 } } },
-            { "name": "Lamp", "translation": [1.0, 2.0, 1.0], "extensions": { "KHR_lights_punctual": { "light": 1 } } },
-            // Turned away from the camera: its back face shows (doubleSided).
-            { "name": "Lace panel", "mesh": 5, "translation": [-0.25, 1.45, -0.55], "rotation": quat([0.0, 1.0, 0.0], 160.0), "scale": [0.3, 0.3, 0.3] },
-            { "name": "Glow bulb", "mesh": 6, "translation": [0.95, 1.35, -0.45], "scale": [0.12, 0.12, 0.12] },
-            { "name": "Glass block", "mesh": 7, "translation": [0.5, 0.15, 0.85] },
+            { "name": "Lace panel", "mesh": 0, "translation": [-1.0, 0.0, 0.0], "rotation": quat([0.0, 1.0, 0.0], 160.0), "scale": [0.6, 0.6, 0.6] },
+            { "name": "Glow bulb", "mesh": 1, "translation": [0.2, 0.0, 0.0], "scale": [0.3, 0.3, 0.3] },
+            { "name": "Glass block", "mesh": 2, "translation": [1.1, 0.0, 0.2] },
+            { "name": "Textured frame", "mesh": 3, "translation": [0.0, -0.8, 0.0] },
         ],
         "meshes": [
-            { "name": "drape", "primitives": [drape] },
-            { "name": "sofa", "primitives": sofa },
-            { "name": "foil", "primitives": [foil] },
-            { "name": "ball", "primitives": [ball] },
-            { "name": "silk swatch", "primitives": [silk] },
             { "name": "lace", "primitives": [lace] },
             { "name": "bulb", "primitives": [bulb] },
             { "name": "glass", "primitives": [glass] },
+            { "name": "frame", "primitives": [frame] },
         ],
         "materials": materials,
-        "textures": [ { "source": 0, "sampler": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3 }, { "source": 4, "sampler": 0 } ],
+        "textures": [ { "source": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3, "sampler": 0 }, { "source": 4 } ],
         "samplers": [ { "magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497 } ],
         "images": images,
-        "cameras": [ { "type": "perspective", "perspective": { "yfov": 0.6, "znear": 0.1, "aspectRatio": 1.6 } } ],
-        "extensions": {
-            "KHR_lights_punctual": { "lights": [
-                { "type": "directional", "color": [1.0, 0.96, 0.9], "intensity": 3.0 },
-                { "type": "point", "color": [1.0, 0.8, 0.6], "intensity": 20.0 } ] },
-            "KHR_materials_variants": { "variants": [ { "name": "velvet cushions" }, { "name": "linen cushions" } ] }
-        },
         "buffers": [ { "byteLength": packed.bin.len() } ],
         "bufferViews": packed.views,
         "accessors": packed.accessors,
@@ -786,6 +824,7 @@ pub fn committed_files() -> BTreeMap<String, Vec<u8>> {
     let (gltf, bin) = bust();
     out.insert("tests/gltf/bust.gltf".to_string(), gltf);
     out.insert("tests/gltf/bust.bin".to_string(), bin);
+    out.insert("tests/gltf/cutouts.glb".to_string(), cutouts());
     for (name, bytes, _, _) in hostile() {
         out.insert(format!("tests/gltf/bad/{name}.gltf"), bytes);
     }

@@ -683,6 +683,10 @@ mod tests {
         assert_eq!(screen_size(&view, [0.0, 0.0, -10.0], 1.0), 94);
         // Clamped to what `screen_size` takes.
         assert_eq!(screen_size(&view, [0.0, 0.0, -1e6], 1.0), 16);
-        assert_eq!(screen_size(&view, [0.0, 0.0, -1.0], 1.0), 4096);
+        let narrow = View {
+            eye: [0.0; 3],
+            fov_degrees: 5.0,
+        };
+        assert_eq!(screen_size(&narrow, [0.0, 0.0, -1.0], 1.0), 4096);
     }
 }

@@ -134,17 +134,17 @@ fn weft_view_direction_k4_(world_position_1: vec3<f32>) -> vec3<f32> {
 fn weft_v_smith_ggx_correlated_newton_k5_(n_dot_v: f32, n_dot_l: f32) -> f32 {
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
-    let gv = ((_e6 * 0.99f) + 0.010000001f);
-    let gl = ((_e7 * 0.99f) + 0.010000001f);
-    let pv = ((gv * _e6) + (0.00010000001f * (1f - _e6)));
-    let pl = ((gl * _e7) + (0.00010000001f * (1f - _e7)));
+    let gv = ((_e6 * 0.7975f) + 0.20249999f);
+    let gl = ((_e7 * 0.7975f) + 0.20249999f);
+    let pv = ((gv * _e6) + (0.041006245f * (1f - _e6)));
+    let pl = ((gl * _e7) + (0.041006245f * (1f - _e7)));
     return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_env_brdf_lut_nearest_k6_(n_dot_v_1: f32) -> vec2<f32> {
     let _e3 = textureDimensions(weft_brdf_lut);
     let size = vec2<f32>(_e3);
-    let uv = vec2<f32>(saturate(n_dot_v_1), 0.1f);
+    let uv = vec2<f32>(saturate(n_dot_v_1), 0.45f);
     let texel = vec2<i32>(min((uv * size), (size - vec2(1f))));
     let _e15 = textureLoad(weft_brdf_lut, texel, 0i);
     return _e15.xy;
@@ -163,14 +163,14 @@ fn weft_f_schlick_k8_(v_dot_h: f32) -> vec3<f32> {
 fn weft_d_ggx_nh_k9_(n_3: vec3<f32>, h: vec3<f32>) -> f32 {
     let noh = saturate(dot(n_3, h));
     let nxh = cross(n_3, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * 0.00010000001f));
-    return (0.00010000001f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245f));
+    return (0.041006245f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
 fn weft_specular_mip_k14_() -> f32 {
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return (0.163f * max_mip);
+    return (0.62325f * max_mip);
 }
 
 fn weft_prefiltered_radiance_k10_(dir: vec3<f32>) -> vec3<f32> {
@@ -250,26 +250,26 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
         let _e54 = n;
         let _e55 = weft_d_ggx_nh_k9_(_e54, _e22);
         let _e56 = visibility;
-        specular = ((_e55 * _e56) * _e53);
-        let _e60 = n;
-        let _e62 = weft_prefiltered_radiance_k10_(reflect(-(_e12), _e60));
-        let _e63 = env_brdf;
-        indirect_specular = (_e62 * _e63);
+        specular = (((_e55 * _e56) * _e53) * 0.5f);
+        let _e61 = n;
+        let _e63 = weft_prefiltered_radiance_k10_(reflect(-(_e12), _e61));
+        let _e64 = env_brdf;
+        indirect_specular = ((_e63 * _e64) * 0.5f);
     }
-    let _e65 = direct_kd;
-    let diffuse = (_e65 * vec3<f32>(0.19098607f, 0.25464806f, 0.28647876f));
-    let _e68 = specular;
-    let _e70 = weft_main_light_radiance();
-    let direct = (((diffuse + _e68) * _e70) * n_dot_l_1);
-    let _e73 = n;
-    let _e74 = weft_sh_irradiance(_e73);
-    let _e75 = ambient_kd;
-    let indirect_diffuse = ((_e74 * _e75) * vec3<f32>(0.60000044f, 0.8000005f, 0.8999996f));
-    let _e78 = indirect_specular;
-    let color_1 = ((direct + _e78) + indirect_diffuse);
-    let _e81 = n;
-    let _e83 = standard_sphere_map(color_1, _e81, in_1.world_position);
-    let radiance = clamp((_e83 + vec3(0f)), vec3(0f), vec3(65504f));
+    let _e68 = direct_kd;
+    let diffuse = (_e68 * vec3<f32>(0.101859f, 0.06366192f, 0.038197216f));
+    let _e71 = specular;
+    let _e73 = weft_main_light_radiance();
+    let direct = (((diffuse + _e71) * _e73) * n_dot_l_1);
+    let _e76 = n;
+    let _e77 = weft_sh_irradiance(_e76);
+    let _e78 = ambient_kd;
+    let indirect_diffuse = ((_e77 * _e78) * vec3<f32>(0.31999952f, 0.19999982f, 0.120000094f));
+    let _e81 = indirect_specular;
+    let color_1 = ((direct + _e81) + indirect_diffuse);
+    let _e84 = n;
+    let _e86 = standard_sphere_map(color_1, _e84, in_1.world_position);
+    let radiance = clamp((_e86 + vec3(0f)), vec3(0f), vec3(65504f));
     standard_alpha_test_k12_();
-    return vec4<f32>(radiance, 0.35f);
+    return vec4<f32>(radiance, 1f);
 }

@@ -54,9 +54,6 @@ StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
-StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
-#define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
-Texture2D<float4> base_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
     float3 world_position_2 : LOC0;
@@ -90,23 +87,6 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
-}
-
-float3 weft_f_schlick(float3 f0_, float v_dot_h)
-{
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
-    return (f0_ + (((1.0).xxx - f0_) * _e5));
-}
-
-float3 weft_diffuse_lambert(float3 albedo)
-{
-    return (albedo * WEFT_INV_PI);
-}
-
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
-{
-    float2 sb = saturate(scale_bias);
-    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_safe_normalize_k1_(float3 v_1)
@@ -163,26 +143,10 @@ float3 standard_sphere_map(float3 color_in, float3 n_2, float3 world_position)
     return _e4;
 }
 
-void standard_alpha_test(float alpha)
-{
-    {
-        if ((alpha < 0.4)) {
-            discard;
-        } else {
-            return;
-        }
-    }
-}
-
 float3 weft_safe_normalize_k2_(float3 v_2)
 {
     float len2_2 = dot(v_2, v_2);
     return ((len2_2 > 1e-20) ? (v_2 * rsqrt(max(len2_2, 1e-20))) : (0.0).xxx);
-}
-
-float2 weft_transform_uv_k3_(float2 uv)
-{
-    return (uv + float2(0.0, 0.0));
 }
 
 float3 weft_view_direction_k4_(float3 world_position_1)
@@ -196,10 +160,10 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l)
 {
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.51) + 0.48999998);
-    float gl = ((_e7 * 0.51) + 0.48999998);
-    float pv = ((gv * _e6) + (0.24009998 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.24009998 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.7975) + 0.20249999);
+    float gl = ((_e7 * 0.7975) + 0.20249999);
+    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
@@ -217,32 +181,51 @@ uint2 NagaDimensions2D(Texture2D<float4> tex)
 float2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1)
 {
     float2 size = float2(NagaDimensions2D(weft_brdf_lut));
-    float2 uv_1 = float2(saturate(n_dot_v_1), 0.7);
-    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float2 uv = float2(saturate(n_dot_v_1), 0.45);
+    int2 texel = naga_f2i32(min((uv * size), (size - (1.0).xx)));
     float4 _e15 = weft_brdf_lut.Load(int3(texel, int(0)));
     return _e15.xy;
 }
 
-float weft_d_ggx_nh_k7_(float3 n_3, float3 h)
+float3 weft_env_brdf_from_lut_k7_(float2 scale_bias)
+{
+    float2 sb = saturate(scale_bias);
+    return ((float3(0.04, 0.04, 0.04) * sb.x) + (sb.y).xxx);
+}
+
+float3 weft_f_schlick_k8_(float v_dot_h)
+{
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (float3(0.04, 0.04, 0.04) + (float3(0.96, 0.96, 0.96) * _e5));
+}
+
+float weft_d_ggx_nh_k9_(float3 n_3, float3 h)
 {
     float noh = saturate(dot(n_3, h));
     float3 nxh = cross(n_3, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.24009998));
-    return (0.24009998 / (WEFT_PI * max((d * d), 1e-30)));
+    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
+    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_specular_mip_k10_()
+float weft_specular_mip_k14_()
 {
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.847 * max_mip);
+    return (0.62325 * max_mip);
 }
 
-float3 weft_prefiltered_radiance_k8_(float3 dir)
+float3 weft_prefiltered_radiance_k10_(float3 dir)
 {
-    const float _e4 = weft_specular_mip_k10_();
+    const float _e4 = weft_specular_mip_k14_();
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+void standard_alpha_test_k12_()
+{
+    {
+        return;
+    }
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -282,65 +265,58 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
 
-    const float2 _e3 = weft_transform_uv_k3_(in_1.uv0_);
-    float4 _e7 = base_map.Sample(material_sampler, _e3);
-    float4 base_rgba = (float4(0.95000094, 0.9199995, 0.88000023, 1.0) * _e7);
-    float3 base = saturate(base_rgba.xyz);
-    float alpha_1 = saturate(base_rgba.w);
-    const float3 _e20 = weft_view_direction_k4_(in_1.world_position);
+    const float3 _e12 = weft_view_direction_k4_(in_1.world_position);
     float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    const float3 _e25 = weft_safe_normalize(geometric_normal, _e20);
-    n = _e25;
-    const float3 _e27 = weft_main_light_direction();
+    const float3 _e17 = weft_safe_normalize(geometric_normal, _e12);
+    n = _e17;
+    const float3 _e19 = weft_main_light_direction();
+    float3 _e21 = n;
+    const float3 _e22 = weft_safe_normalize((_e19 + _e12), _e21);
+    float3 _e23 = n;
+    const float _e25 = weft_clamp_cos(dot(_e23, _e12));
+    float3 _e26 = n;
+    float n_dot_l_1 = saturate(dot(_e26, _e19));
     float3 _e29 = n;
-    const float3 _e30 = weft_safe_normalize((_e27 + _e20), _e29);
-    float3 _e31 = n;
-    const float _e33 = weft_clamp_cos(dot(_e31, _e20));
-    float3 _e34 = n;
-    float n_dot_l_1 = saturate(dot(_e34, _e27));
-    float3 _e37 = n;
-    float n_dot_h = saturate(dot(_e37, _e30));
-    float v_dot_h_1 = saturate(dot(_e20, _e30));
-    float3 f0_2 = lerp((0.04).xxx, base, 0.0);
+    float n_dot_h = saturate(dot(_e29, _e22));
+    float v_dot_h_1 = saturate(dot(_e12, _e22));
     {
         {
-            const float _e48 = weft_v_smith_ggx_correlated_newton_k5_(_e33, n_dot_l_1);
-            visibility = _e48;
-            const float2 _e49 = weft_env_brdf_lut_nearest_k6_(_e33);
-            const float3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
-            env_brdf = _e50;
-            float3 _e52 = env_brdf;
-            ambient_kd = max(((1.0).xxx - _e52), (0.0).xxx);
-            float3 _e56 = ambient_kd;
-            direct_kd = _e56;
+            const float _e40 = weft_v_smith_ggx_correlated_newton_k5_(_e25, n_dot_l_1);
+            visibility = _e40;
+            const float2 _e41 = weft_env_brdf_lut_nearest_k6_(_e25);
+            const float3 _e42 = weft_env_brdf_from_lut_k7_(_e41);
+            env_brdf = _e42;
+            float3 _e44 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e44), (0.0).xxx);
+            float3 _e48 = ambient_kd;
+            direct_kd = _e48;
         }
     }
     {
-        const float3 _e61 = weft_f_schlick(f0_2, v_dot_h_1);
-        float3 _e62 = n;
-        const float _e63 = weft_d_ggx_nh_k7_(_e62, _e30);
-        float _e64 = visibility;
-        specular = ((_e63 * _e64) * _e61);
-        float3 _e68 = n;
-        const float3 _e70 = weft_prefiltered_radiance_k8_(reflect(-(_e20), _e68));
-        float3 _e71 = env_brdf;
-        indirect_specular = (_e70 * _e71);
+        const float3 _e53 = weft_f_schlick_k8_(v_dot_h_1);
+        float3 _e54 = n;
+        const float _e55 = weft_d_ggx_nh_k9_(_e54, _e22);
+        float _e56 = visibility;
+        specular = (((_e55 * _e56) * _e53) * 0.5);
+        float3 _e61 = n;
+        const float3 _e63 = weft_prefiltered_radiance_k10_(reflect(-(_e12), _e61));
+        float3 _e64 = env_brdf;
+        indirect_specular = ((_e63 * _e64) * 0.5);
     }
-    float3 _e73 = direct_kd;
-    const float3 _e74 = weft_diffuse_lambert(base);
-    float3 diffuse = (_e73 * _e74);
-    float3 _e76 = specular;
-    const float3 _e78 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e76) * _e78) * n_dot_l_1);
-    float3 _e81 = n;
-    const float3 _e82 = weft_sh_irradiance(_e81);
-    float3 _e83 = ambient_kd;
-    float3 indirect_diffuse = ((_e82 * _e83) * base);
-    float3 _e86 = indirect_specular;
-    float3 color_1 = ((direct + _e86) + indirect_diffuse);
-    float3 _e89 = n;
-    const float3 _e91 = standard_sphere_map(color_1, _e89, in_1.world_position);
-    float3 radiance = clamp((_e91 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
-    standard_alpha_test(alpha_1);
-    return float4(radiance, alpha_1);
+    float3 _e68 = direct_kd;
+    float3 diffuse = (_e68 * float3(0.101859, 0.06366192, 0.038197216));
+    float3 _e71 = specular;
+    const float3 _e73 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e71) * _e73) * n_dot_l_1);
+    float3 _e76 = n;
+    const float3 _e77 = weft_sh_irradiance(_e76);
+    float3 _e78 = ambient_kd;
+    float3 indirect_diffuse = ((_e77 * _e78) * float3(0.31999952, 0.19999982, 0.120000094));
+    float3 _e81 = indirect_specular;
+    float3 color_1 = ((direct + _e81) + indirect_diffuse);
+    float3 _e84 = n;
+    const float3 _e86 = standard_sphere_map(color_1, _e84, in_1.world_position);
+    float3 radiance = clamp((_e86 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
+    standard_alpha_test_k12_();
+    return float4(radiance, 1.0);
 }

@@ -123,14 +123,6 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
-metal::float3 standard_emission(
-    metal::float2 uv
-) {
-    {
-        return metal::float3(2.5, 1.5000011, 0.75000143);
-    }
-}
-
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
     metal::float3 n_2,
@@ -149,12 +141,6 @@ metal::float3 weft_safe_normalize_k2_(
     return (len2_2 > 0.00000000000000000001) ? (v_2 * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : metal::float3(0.0);
 }
 
-metal::float2 weft_transform_uv_k3_(
-    metal::float2 uv_1
-) {
-    return uv_1 + metal::float2(0.0, 0.0);
-}
-
 metal::float3 weft_view_direction_k4_(
     metal::float3 world_position_1,
     constant WeftFrame& weft_frame
@@ -170,10 +156,10 @@ float weft_v_smith_ggx_correlated_newton_k5_(
 ) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = (_e6 * 0.84) + 0.16000001;
-    float gl = (_e7 * 0.84) + 0.16000001;
-    float pv = (gv * _e6) + (0.025600003 * (1.0 - _e6));
-    float pl = (gl * _e7) + (0.025600003 * (1.0 - _e7));
+    float gv = (_e6 * 0.7975) + 0.20249999;
+    float gl = (_e7 * 0.7975) + 0.20249999;
+    float pv = (gv * _e6) + (0.041006245 * (1.0 - _e6));
+    float pl = (gl * _e7) + (0.041006245 * (1.0 - _e7));
     return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
@@ -186,8 +172,8 @@ metal::float2 weft_env_brdf_lut_nearest_k6_(
     metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
     metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
-    metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v_1), 0.4);
-    metal::int2 texel = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
+    metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), 0.45);
+    metal::int2 texel = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
     metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel), 0);
     return _e15.xy;
 }
@@ -212,8 +198,8 @@ float weft_d_ggx_nh_k9_(
 ) {
     float noh = metal::saturate(metal::dot(n_3, h));
     metal::float3 nxh = metal::cross(n_3, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * 0.025600003);
-    return 0.025600003 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float d = metal::dot(nxh, nxh) + ((noh * noh) * 0.041006245);
+    return 0.041006245 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
 float weft_specular_mip_k14_(
@@ -221,7 +207,7 @@ float weft_specular_mip_k14_(
 ) {
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return 0.568 * max_mip;
+    return 0.62325 * max_mip;
 }
 
 metal::float3 weft_prefiltered_radiance_k10_(
@@ -309,60 +295,58 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float2 _e3 = weft_transform_uv_k3_(in_1.uv0_);
-    metal::float3 _e8 = standard_emission(_e3);
-    metal::float3 _e14 = weft_view_direction_k4_(in_1.world_position, weft_frame);
+    metal::float3 _e12 = weft_view_direction_k4_(in_1.world_position, weft_frame);
     metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
-    metal::float3 _e19 = weft_safe_normalize(geometric_normal, _e14);
-    n = _e19;
-    metal::float3 _e21 = weft_main_light_direction(weft_frame);
+    metal::float3 _e17 = weft_safe_normalize(geometric_normal, _e12);
+    n = _e17;
+    metal::float3 _e19 = weft_main_light_direction(weft_frame);
+    metal::float3 _e21 = n;
+    metal::float3 _e22 = weft_safe_normalize(_e19 + _e12, _e21);
     metal::float3 _e23 = n;
-    metal::float3 _e24 = weft_safe_normalize(_e21 + _e14, _e23);
-    metal::float3 _e25 = n;
-    float _e27 = weft_clamp_cos(metal::dot(_e25, _e14));
-    metal::float3 _e28 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e28, _e21));
-    metal::float3 _e31 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e31, _e24));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e14, _e24));
+    float _e25 = weft_clamp_cos(metal::dot(_e23, _e12));
+    metal::float3 _e26 = n;
+    float n_dot_l_1 = metal::saturate(metal::dot(_e26, _e19));
+    metal::float3 _e29 = n;
+    float n_dot_h = metal::saturate(metal::dot(_e29, _e22));
+    float v_dot_h_1 = metal::saturate(metal::dot(_e12, _e22));
     {
         {
-            float _e42 = weft_v_smith_ggx_correlated_newton_k5_(_e27, n_dot_l_1);
-            visibility = _e42;
-            metal::float2 _e43 = weft_env_brdf_lut_nearest_k6_(_e27, weft_brdf_lut);
-            metal::float3 _e44 = weft_env_brdf_from_lut_k7_(_e43);
-            env_brdf = _e44;
-            metal::float3 _e46 = env_brdf;
-            ambient_kd = metal::max(metal::float3(1.0) - _e46, metal::float3(0.0));
-            metal::float3 _e50 = ambient_kd;
-            direct_kd = _e50;
+            float _e40 = weft_v_smith_ggx_correlated_newton_k5_(_e25, n_dot_l_1);
+            visibility = _e40;
+            metal::float2 _e41 = weft_env_brdf_lut_nearest_k6_(_e25, weft_brdf_lut);
+            metal::float3 _e42 = weft_env_brdf_from_lut_k7_(_e41);
+            env_brdf = _e42;
+            metal::float3 _e44 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e44, metal::float3(0.0));
+            metal::float3 _e48 = ambient_kd;
+            direct_kd = _e48;
         }
     }
     {
-        metal::float3 _e55 = weft_f_schlick_k8_(v_dot_h_1);
-        metal::float3 _e56 = n;
-        float _e57 = weft_d_ggx_nh_k9_(_e56, _e24);
-        float _e58 = visibility;
-        specular = (_e57 * _e58) * _e55;
-        metal::float3 _e62 = n;
-        metal::float3 _e64 = weft_prefiltered_radiance_k10_(metal::reflect(-(_e14), _e62), weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e65 = env_brdf;
-        indirect_specular = _e64 * _e65;
+        metal::float3 _e53 = weft_f_schlick_k8_(v_dot_h_1);
+        metal::float3 _e54 = n;
+        float _e55 = weft_d_ggx_nh_k9_(_e54, _e22);
+        float _e56 = visibility;
+        specular = ((_e55 * _e56) * _e53) * 0.5;
+        metal::float3 _e61 = n;
+        metal::float3 _e63 = weft_prefiltered_radiance_k10_(metal::reflect(-(_e12), _e61), weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e64 = env_brdf;
+        indirect_specular = (_e63 * _e64) * 0.5;
     }
-    metal::float3 _e67 = direct_kd;
-    metal::float3 diffuse = _e67 * metal::float3(0.28647876, 0.2705637, 0.25464806);
-    metal::float3 _e70 = specular;
-    metal::float3 _e72 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e70) * _e72) * n_dot_l_1;
-    metal::float3 _e75 = n;
-    metal::float3 _e76 = weft_sh_irradiance(_e75, weft_frame);
-    metal::float3 _e77 = ambient_kd;
-    metal::float3 indirect_diffuse = (_e76 * _e77) * metal::float3(0.8999996, 0.8500009, 0.8000005);
-    metal::float3 _e80 = indirect_specular;
-    metal::float3 color_1 = (direct + _e80) + indirect_diffuse;
-    metal::float3 _e83 = n;
-    metal::float3 _e85 = standard_sphere_map(color_1, _e83, in_1.world_position);
-    metal::float3 radiance = metal::clamp(_e85 + _e8, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e68 = direct_kd;
+    metal::float3 diffuse = _e68 * metal::float3(0.101859, 0.06366192, 0.038197216);
+    metal::float3 _e71 = specular;
+    metal::float3 _e73 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e71) * _e73) * n_dot_l_1;
+    metal::float3 _e76 = n;
+    metal::float3 _e77 = weft_sh_irradiance(_e76, weft_frame);
+    metal::float3 _e78 = ambient_kd;
+    metal::float3 indirect_diffuse = (_e77 * _e78) * metal::float3(0.31999952, 0.19999982, 0.120000094);
+    metal::float3 _e81 = indirect_specular;
+    metal::float3 color_1 = (direct + _e81) + indirect_diffuse;
+    metal::float3 _e84 = n;
+    metal::float3 _e86 = standard_sphere_map(color_1, _e84, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e86 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test_k12_();
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

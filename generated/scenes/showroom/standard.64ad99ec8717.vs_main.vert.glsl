@@ -70,20 +70,6 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-vec3 weft_diffuse_lambert(vec3 albedo) {
-    return (albedo * WEFT_INV_PI);
-}
-
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((f0_1 * sb.x) + vec3(sb.y));
-}
-
 vec3 weft_safe_normalize_k1_(vec3 v_1) {
     float len2_1 = dot(v_1, v_1);
     return ((len2_1 > 1e-20) ? (v_1 * inversesqrt(max(len2_1, 1e-20))) : vec3(0.0, 0.0, 1.0));
@@ -136,10 +122,6 @@ vec3 weft_safe_normalize_k2_(vec3 v_2) {
     return ((len2_2 > 1e-20) ? (v_2 * inversesqrt(max(len2_2, 1e-20))) : vec3(0.0));
 }
 
-vec2 weft_transform_uv_k3_(vec2 uv) {
-    return (uv + vec2(0.0, 0.0));
-}
-
 vec3 weft_view_direction_k4_(vec3 world_position_1) {
     vec4 _e4 = _group_0_binding_0_vs.camera_position;
     vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position_1));
@@ -149,24 +131,40 @@ vec3 weft_view_direction_k4_(vec3 world_position_1) {
 float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.51) + 0.48999998);
-    float gl = ((_e7 * 0.51) + 0.48999998);
-    float pv = ((gv * _e6) + (0.24009998 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.24009998 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.7975) + 0.20249999);
+    float gl = ((_e7 * 0.7975) + 0.20249999);
+    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-float weft_d_ggx_nh_k7_(vec3 n_3, vec3 h) {
-    float noh = clamp(dot(n_3, h), 0.0, 1.0);
-    vec3 nxh = cross(n_3, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.24009998));
-    return (0.24009998 / (WEFT_PI * max((d * d), 1e-30)));
+vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
 }
 
-float weft_specular_mip_k10_() {
+vec3 weft_f_schlick_k8_(float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
+}
+
+float weft_d_ggx_nh_k9_(vec3 n_3, vec3 h) {
+    float noh = clamp(dot(n_3, h), 0.0, 1.0);
+    vec3 nxh = cross(n_3, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
+    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float weft_specular_mip_k14_() {
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.847 * max_mip);
+    return (0.62325 * max_mip);
+}
+
+void standard_alpha_test_k12_() {
+    {
+        return;
+    }
 }
 
 void main() {

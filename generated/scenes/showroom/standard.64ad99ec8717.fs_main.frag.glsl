@@ -49,8 +49,6 @@ layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
 layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
 
-layout(binding = 2) uniform sampler2D _group_1_binding_4_fs;
-
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
@@ -69,20 +67,6 @@ float weft_clamp_cos(float c) {
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
-}
-
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-vec3 weft_diffuse_lambert(vec3 albedo) {
-    return (albedo * WEFT_INV_PI);
-}
-
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
-    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_safe_normalize_k1_(vec3 v_1) {
@@ -132,23 +116,9 @@ vec3 standard_sphere_map(vec3 color_in, vec3 n_2, vec3 world_position) {
     return _e4;
 }
 
-void standard_alpha_test(float alpha) {
-    {
-        if ((alpha < 0.4)) {
-            discard;
-        } else {
-            return;
-        }
-    }
-}
-
 vec3 weft_safe_normalize_k2_(vec3 v_2) {
     float len2_2 = dot(v_2, v_2);
     return ((len2_2 > 1e-20) ? (v_2 * inversesqrt(max(len2_2, 1e-20))) : vec3(0.0));
-}
-
-vec2 weft_transform_uv_k3_(vec2 uv) {
-    return (uv + vec2(0.0, 0.0));
 }
 
 vec3 weft_view_direction_k4_(vec3 world_position_1) {
@@ -160,38 +130,54 @@ vec3 weft_view_direction_k4_(vec3 world_position_1) {
 float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.51) + 0.48999998);
-    float gl = ((_e7 * 0.51) + 0.48999998);
-    float pv = ((gv * _e6) + (0.24009998 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.24009998 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.7975) + 0.20249999);
+    float gl = ((_e7 * 0.7975) + 0.20249999);
+    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1) {
     vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
-    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.7);
-    ivec2 texel = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.45);
+    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
     vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
     return _e15.xy;
 }
 
-float weft_d_ggx_nh_k7_(vec3 n_3, vec3 h) {
+vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_f_schlick_k8_(float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
+}
+
+float weft_d_ggx_nh_k9_(vec3 n_3, vec3 h) {
     float noh = clamp(dot(n_3, h), 0.0, 1.0);
     vec3 nxh = cross(n_3, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.24009998));
-    return (0.24009998 / (WEFT_PI * max((d * d), 1e-30)));
+    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
+    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_specular_mip_k10_() {
+float weft_specular_mip_k14_() {
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.847 * max_mip);
+    return (0.62325 * max_mip);
 }
 
-vec3 weft_prefiltered_radiance_k8_(vec3 dir) {
-    float _e4 = weft_specular_mip_k10_();
+vec3 weft_prefiltered_radiance_k10_(vec3 dir) {
+    float _e4 = weft_specular_mip_k14_();
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
+}
+
+void standard_alpha_test_k12_() {
+    {
+        return;
+    }
 }
 
 void main() {
@@ -204,67 +190,60 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
-    vec2 _e3 = weft_transform_uv_k3_(in_1.uv0_);
-    vec4 _e7 = texture(_group_1_binding_4_fs, vec2(_e3));
-    vec4 base_rgba = (vec4(0.95000094, 0.9199995, 0.88000023, 1.0) * _e7);
-    vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
-    float alpha_1 = clamp(base_rgba.w, 0.0, 1.0);
-    vec3 _e20 = weft_view_direction_k4_(in_1.world_position);
+    vec3 _e12 = weft_view_direction_k4_(in_1.world_position);
     vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e25 = weft_safe_normalize(geometric_normal, _e20);
-    n = _e25;
-    vec3 _e27 = weft_main_light_direction();
+    vec3 _e17 = weft_safe_normalize(geometric_normal, _e12);
+    n = _e17;
+    vec3 _e19 = weft_main_light_direction();
+    vec3 _e21 = n;
+    vec3 _e22 = weft_safe_normalize((_e19 + _e12), _e21);
+    vec3 _e23 = n;
+    float _e25 = weft_clamp_cos(dot(_e23, _e12));
+    vec3 _e26 = n;
+    float n_dot_l_1 = clamp(dot(_e26, _e19), 0.0, 1.0);
     vec3 _e29 = n;
-    vec3 _e30 = weft_safe_normalize((_e27 + _e20), _e29);
-    vec3 _e31 = n;
-    float _e33 = weft_clamp_cos(dot(_e31, _e20));
-    vec3 _e34 = n;
-    float n_dot_l_1 = clamp(dot(_e34, _e27), 0.0, 1.0);
-    vec3 _e37 = n;
-    float n_dot_h = clamp(dot(_e37, _e30), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e20, _e30), 0.0, 1.0);
-    vec3 f0_2 = mix(vec3(0.04), base, 0.0);
+    float n_dot_h = clamp(dot(_e29, _e22), 0.0, 1.0);
+    float v_dot_h_1 = clamp(dot(_e12, _e22), 0.0, 1.0);
     {
         {
-            float _e48 = weft_v_smith_ggx_correlated_newton_k5_(_e33, n_dot_l_1);
-            visibility = _e48;
-            vec2 _e49 = weft_env_brdf_lut_nearest_k6_(_e33);
-            vec3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
-            env_brdf = _e50;
-            vec3 _e52 = env_brdf;
-            ambient_kd = max((vec3(1.0) - _e52), vec3(0.0));
-            vec3 _e56 = ambient_kd;
-            direct_kd = _e56;
+            float _e40 = weft_v_smith_ggx_correlated_newton_k5_(_e25, n_dot_l_1);
+            visibility = _e40;
+            vec2 _e41 = weft_env_brdf_lut_nearest_k6_(_e25);
+            vec3 _e42 = weft_env_brdf_from_lut_k7_(_e41);
+            env_brdf = _e42;
+            vec3 _e44 = env_brdf;
+            ambient_kd = max((vec3(1.0) - _e44), vec3(0.0));
+            vec3 _e48 = ambient_kd;
+            direct_kd = _e48;
         }
     }
     {
-        vec3 _e61 = weft_f_schlick(f0_2, v_dot_h_1);
-        vec3 _e62 = n;
-        float _e63 = weft_d_ggx_nh_k7_(_e62, _e30);
-        float _e64 = visibility;
-        specular = ((_e63 * _e64) * _e61);
-        vec3 _e68 = n;
-        vec3 _e70 = weft_prefiltered_radiance_k8_(reflect(-(_e20), _e68));
-        vec3 _e71 = env_brdf;
-        indirect_specular = (_e70 * _e71);
+        vec3 _e53 = weft_f_schlick_k8_(v_dot_h_1);
+        vec3 _e54 = n;
+        float _e55 = weft_d_ggx_nh_k9_(_e54, _e22);
+        float _e56 = visibility;
+        specular = (((_e55 * _e56) * _e53) * 0.5);
+        vec3 _e61 = n;
+        vec3 _e63 = weft_prefiltered_radiance_k10_(reflect(-(_e12), _e61));
+        vec3 _e64 = env_brdf;
+        indirect_specular = ((_e63 * _e64) * 0.5);
     }
-    vec3 _e73 = direct_kd;
-    vec3 _e74 = weft_diffuse_lambert(base);
-    vec3 diffuse = (_e73 * _e74);
-    vec3 _e76 = specular;
-    vec3 _e78 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e76) * _e78) * n_dot_l_1);
-    vec3 _e81 = n;
-    vec3 _e82 = weft_sh_irradiance(_e81);
-    vec3 _e83 = ambient_kd;
-    vec3 indirect_diffuse = ((_e82 * _e83) * base);
-    vec3 _e86 = indirect_specular;
-    vec3 color_1 = ((direct + _e86) + indirect_diffuse);
-    vec3 _e89 = n;
-    vec3 _e91 = standard_sphere_map(color_1, _e89, in_1.world_position);
-    vec3 radiance = clamp((_e91 + vec3(0.0)), vec3(0.0), vec3(65504.0));
-    standard_alpha_test(alpha_1);
-    _fs2p_location0 = vec4(radiance, alpha_1);
+    vec3 _e68 = direct_kd;
+    vec3 diffuse = (_e68 * vec3(0.101859, 0.06366192, 0.038197216));
+    vec3 _e71 = specular;
+    vec3 _e73 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e71) * _e73) * n_dot_l_1);
+    vec3 _e76 = n;
+    vec3 _e77 = weft_sh_irradiance(_e76);
+    vec3 _e78 = ambient_kd;
+    vec3 indirect_diffuse = ((_e77 * _e78) * vec3(0.31999952, 0.19999982, 0.120000094));
+    vec3 _e81 = indirect_specular;
+    vec3 color_1 = ((direct + _e81) + indirect_diffuse);
+    vec3 _e84 = n;
+    vec3 _e86 = standard_sphere_map(color_1, _e84, in_1.world_position);
+    vec3 radiance = clamp((_e86 + vec3(0.0)), vec3(0.0), vec3(65504.0));
+    standard_alpha_test_k12_();
+    _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }
 
