@@ -319,7 +319,7 @@ pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
     const HINT: &str =
         "weft reads PNG and JPEG images, from a file beside the glTF, a buffer view or a data URI";
     let fail = |pointer: String, message: String| file.error(&pointer, message, HINT).to_string();
-    let texture = file.document.textures().nth(index).ok_or_else(|| {
+    file.document.textures().nth(index).ok_or_else(|| {
         fail(
             "/textures".into(),
             format!("the file has no texture {index}"),
@@ -334,10 +334,18 @@ pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
             "the texture has no PNG or JPEG `source` (weft reads no KTX2 or WebP)".into(),
         ));
     }
-    let image = texture.source();
-    let at = format!("/images/{}", image.index());
-    let bytes: Vec<u8> = match image.source() {
-        gltf::image::Source::View { view, .. } => {
+    // The image read from the JSON itself: the crate's accessor unwraps a
+    // missing `mimeType` or `uri`, which a hostile file may leave out.
+    let image_index = source;
+    let image = &file.document.as_json().images[image_index];
+    let at = format!("/images/{image_index}");
+    let bytes: Vec<u8> = match (&image.buffer_view, &image.uri) {
+        (Some(view), _) => {
+            let view = file
+                .document
+                .views()
+                .nth(view.value())
+                .ok_or_else(|| fail(at.clone(), "its buffer view does not exist".into()))?;
             let buffer = file
                 .buffers
                 .get(view.buffer().index())
@@ -348,7 +356,7 @@ pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
                 .ok_or_else(|| fail(at.clone(), "its buffer view runs past its buffer".into()))?
                 .to_vec()
         }
-        gltf::image::Source::Uri { uri, .. } => {
+        (None, Some(uri)) => {
             if let Some(rest) = uri.strip_prefix("data:") {
                 let (header, payload) = rest
                     .split_once(',')
@@ -380,6 +388,12 @@ pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
                 weft_meta::files::read_regular(&path, MAX_TEXTURE_FILE_BYTES)
                     .map_err(|e| fail(at.clone(), format!("cannot read image `{uri}`: {e}")))?
             }
+        }
+        (None, None) => {
+            return Err(fail(
+                at,
+                "the image has neither `bufferView` nor `uri`".into(),
+            ));
         }
     };
     decode_image(&bytes).map_err(|e| fail(at, e))
