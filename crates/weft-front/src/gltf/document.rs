@@ -321,7 +321,7 @@ fn check_extensions(
 }
 
 /// `data:<type>;base64,<payload>`: the payload of a buffer data URI.
-fn data_uri(uri: &str) -> Option<(&str, &str)> {
+pub(crate) fn data_uri(uri: &str) -> Option<(&str, &str)> {
     let rest = uri.strip_prefix("data:")?;
     let (header, payload) = rest.split_once(',')?;
     let media = header.strip_suffix(";base64")?;

@@ -357,12 +357,9 @@ pub fn gltf_texture(file: &GltfFile, index: usize) -> Result<Image, String> {
                 .to_vec()
         }
         (None, Some(uri)) => {
-            if let Some(rest) = uri.strip_prefix("data:") {
-                let (header, payload) = rest
-                    .split_once(',')
-                    .ok_or_else(|| fail(at.clone(), "a malformed data URI".into()))?;
-                let media = header
-                    .strip_suffix(";base64")
+            if uri.starts_with("data:") {
+                // The buffers' reader of data URIs (document.rs), for images.
+                let (media, payload) = crate::gltf::document::data_uri(uri)
                     .ok_or_else(|| fail(at.clone(), "a data URI that is not base64".into()))?;
                 if media != "image/png" && media != "image/jpeg" {
                     return Err(fail(
