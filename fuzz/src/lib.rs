@@ -1,5 +1,5 @@
 //! The bodies of weft's fuzz targets, shared by the libFuzzer binaries in
-//! `fuzz_targets/` and by the test suite's smoke run (`tests/fuzz_smoke.rs`
+//! `fuzz_targets/` and by the test suite's smoke run (`tests/inputs/fuzz_smoke.rs`
 //! includes this file with `#[path]`). Each takes arbitrary bytes and must
 //! return, whatever they are: every problem in the input is a diagnostic,
 //! never a panic, an abort or a hang. Diagnostics are rendered too, as the

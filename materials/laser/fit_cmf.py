@@ -11,7 +11,7 @@ centres mu, widths sigma, and their sums (the sensitivity at OPD = 0).
 
     python3 materials/laser/fit_cmf.py        # needs numpy; deterministic
 
-tests/laser_film.rs checks the shipped constants against the same target.
+tests/physics/laser_film.rs checks the shipped constants against the same target.
 """
 import numpy as np
 

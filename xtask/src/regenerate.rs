@@ -101,7 +101,7 @@ pub(crate) fn regenerate(root: &Path, check: bool) -> ExitCode {
 /// The bindings table of each material's README (`<!-- weft:bindings:… -->`,
 /// `weft_golden::bindings`), from the metadata just built: rewritten, or with
 /// `check` only compared. Returns the READMEs whose table changed (or would).
-/// A README without the markers is left alone (tests/metadata_contract.rs
+/// A README without the markers is left alone (tests/contract/metadata_contract.rs
 /// requires them in every material's README).
 pub(crate) fn readme_binding_tables(
     root: &Path,

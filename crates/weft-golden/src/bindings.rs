@@ -2,7 +2,7 @@
 //! `<!-- weft:bindings:begin -->` and `<!-- weft:bindings:end -->`): which
 //! bindings each tier's variants use, read from the material's metadata
 //! (`variants[].shader.bindings`). `cargo xtask regenerate` writes it after
-//! building; `tests/metadata_contract.rs` checks every README's table is the
+//! building; `tests/contract/metadata_contract.rs` checks every README's table is the
 //! one its committed metadata gives, so what a README says a tier binds
 //! cannot drift from what the tier binds.
 

@@ -5,7 +5,7 @@
 //! `materials/lib/thin_film.wgsl` itself, so what is measured is the
 //! shipped shader code. Written by `cargo xtask regenerate --reports`
 //! (`generated/reports/laser-film.md`, the table in materials/laser/README.md)
-//! and checked by `tests/laser_film.rs`.
+//! and checked by `tests/physics/laser_film.rs`.
 
 use std::fmt::Write as _;
 use weft_render::Gpu;

@@ -14,7 +14,7 @@
 //!   against the same view supersampled 4x4 and box-filtered.
 //!
 //! Each bound is stated with the reason for its number at its constant;
-//! `tests/glints.rs` asserts them. `cargo xtask bench glints --write` and
+//! `tests/physics/glints.rs` asserts them. `cargo xtask bench glints --write` and
 //! `cargo xtask regenerate --reports` write the figures to
 //! `generated/reports/glitter.glints.md` and between
 //! `<!-- weft:glints:begin -->` and `<!-- weft:glints:end -->` in

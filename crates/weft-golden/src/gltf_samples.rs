@@ -12,7 +12,7 @@
 //! - `tests/gltf/cutouts.glb`: alpha MASK with doubleSided, emission, BLEND,
 //!   and a frame with all four core maps (PNG and JPEG, KHR_texture_transform).
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
-//!   error names (tests/gltf_scenes.rs).
+//!   error names (tests/rendering/gltf_scenes.rs).
 //!
 //! `cargo xtask gltf-samples` writes the committed files; a test keeps
 //! them equal to this generator.

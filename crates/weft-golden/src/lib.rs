@@ -2,7 +2,7 @@
 //! set of cases per material on lavapipe from the generated files alone, tone
 //! map to sRGB8 and compare with committed goldens using FLIP (`nv-flip`).
 //!
-//! Shared by the render tests (`tests/render.rs`), `cargo xtask bless` (which
+//! Shared by the render tests (`tests/rendering/render.rs`), `cargo xtask bless` (which
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
 pub mod auto_tier;

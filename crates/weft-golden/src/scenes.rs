@@ -3,7 +3,7 @@
 //! drawn whole from its metadata and files alone under the sky of the
 //! material goldens.
 //!
-//! Shared by the scene tests (`tests/scenes.rs`), `cargo xtask bless` (which
+//! Shared by the scene tests (`tests/rendering/scenes.rs`), `cargo xtask bless` (which
 //! writes `tests/goldens/scenes/<scene>.png`) and `cargo xtask gallery`.
 
 use std::path::{Path, PathBuf};

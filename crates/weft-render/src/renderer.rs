@@ -2,7 +2,7 @@
 //! prepared (pipelines, bind groups, uniform) and drawn on a built-in scene.
 //!
 //! Group 0 (frame) and group 2 (object) are the engine interface
-//! (crates/weft-compiler/src/wgsl/engine_interface.wgsl); group 1 is the
+//! (crates/weft-compiler/src/compile/wgsl/engine_interface.wgsl); group 1 is the
 //! material, bound by parameter name from the metadata's `bindings`. The
 //! jobs live in their own modules: `pipelines.rs` (layouts and pipelines from
 //! metadata, `meta_wgpu.rs` the state conversions), `resources.rs`

@@ -8,6 +8,7 @@ use super::{repo, stderr, stdout};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
+use weft_tests::copy_dir;
 
 /// A scratch project: `materials/` with the shared library and `standard`.
 fn project() -> tempfile::TempDir {
@@ -19,19 +20,6 @@ fn project() -> tempfile::TempDir {
         );
     }
     tmp
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for e in std::fs::read_dir(from).unwrap() {
-        let e = e.unwrap();
-        let target = to.join(e.file_name());
-        if e.file_type().unwrap().is_dir() {
-            copy_dir(&e.path(), &target);
-        } else {
-            std::fs::copy(e.path(), &target).unwrap();
-        }
-    }
 }
 
 /// Runs `weft` in `dir`, killed (and the test failed) if it has not ended

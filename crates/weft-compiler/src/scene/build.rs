@@ -8,10 +8,10 @@
 use super::fold::{Folded, fold};
 use super::instance::{InstanceValues, instance_values, scene_transform};
 use super::tiers::{AutoTierRequest, TierChooser};
-use crate::compose::{self, validator};
-use crate::library::{CompiledMaterial, compile_material};
-use crate::variant::{CompiledVariant, emit_shader, material_textures, sha256_hex};
-use crate::{metadata, prelude};
+use crate::compile::compose::{self, validator};
+use crate::compile::material::{CompiledMaterial, compile_material};
+use crate::compile::variant::{CompiledVariant, emit_shader, material_textures, sha256_hex};
+use crate::compile::{metadata, prelude};
 use codespan_reporting::diagnostic::{Diagnostic, Label};
 use rayon::prelude::*;
 use sha2::{Digest, Sha256};
@@ -179,7 +179,7 @@ fn scene_inputs_hash(scene: &ResolvedScene, db: &SourceDb) -> String {
     h.update(compose::ENGINE_INTERFACE);
     h.update(db.text(scene.manifest.file));
     for m in &scene.materials {
-        h.update(crate::library::inputs_hash(m, db));
+        h.update(crate::compile::material::inputs_hash(m, db));
     }
     for inst in &scene.instances {
         for (param, image) in &inst.images {
@@ -304,9 +304,9 @@ fn build_instance(
             .map_err(|e| format!("the folded shader{what} fails validation: {}", e.as_inner()))
     };
     let info = validate(&module, "")?;
-    // Half-precision code: the same fold of the f32 composition (crate::half).
+    // Half-precision code: the same fold of the f32 composition (crate::compile::half).
     let fallback = match fallback {
-        Some(f) if crate::half::uses_f16(&module) => {
+        Some(f) if crate::compile::half::uses_f16(&module) => {
             let Folded { module: f, .. } = fold(f, &values.fold)?;
             let finfo = validate(&f, " (its f32 fallback)")?;
             Some((f, finfo))
@@ -315,7 +315,7 @@ fn build_instance(
     };
     // The id is the content hash, known only after emitting: emit under a
     // placeholder stem and rename.
-    let wgsl = crate::backends::emit_wgsl(&module, &info)?;
+    let wgsl = crate::compile::backends::emit_wgsl(&module, &info)?;
     let id = format!("{}.{}", m.name, &sha256_hex(wgsl.as_bytes())[..12]);
     let keywords = keyword_names(m, inst);
     let textures = material_textures(m, prelude, &m.tiers.values[tier], |k| {
@@ -353,7 +353,8 @@ pub fn build_resolved_scene(
         let prelude = prelude::generate(m);
         let composed = compose::compose(m, &prelude, db);
         let (module, _) = compose::parse_and_validate(&composed, m, diags)?;
-        let fallback = crate::half::fallback_module(m, &prelude, db, diags)?.map(|(_, f)| f);
+        let fallback =
+            crate::compile::half::fallback_module(m, &prelude, db, diags)?.map(|(_, f)| f);
         modules.push((prelude, module, composed, fallback));
     }
     let engine = compose::engine_interface_file(db);
@@ -481,7 +482,7 @@ pub fn build_resolved_scene(
         // The shader fits WebGPU's limits (or the material's `[limits]`).
         let mark = diags.len();
         let (_, module, composed, _) = &modules[inst.material];
-        let fits = crate::limits::check_variants(
+        let fits = crate::compile::limits::check_variants(
             m,
             &[format!("the shader of instance `{}`", inst.name)],
             composed,
@@ -550,7 +551,7 @@ pub fn build_resolved_scene(
         // The scene folder carries the baked tables its shader binds
         // (`resource.file`, a material's `[tables]`), at the path named.
         for t in &m.tables {
-            let path = crate::tables::resource(m, t).file.map(|f| f.path);
+            let path = crate::compile::tables::resource(m, t).file.map(|f| f.path);
             let bound = shader.bindings.iter().any(|b| {
                 b.resource
                     .as_ref()
@@ -561,7 +562,7 @@ pub fn build_resolved_scene(
             if let (true, Some(path)) = (bound, path) {
                 files.insert(
                     format!("{}/{path}", manifest.name),
-                    crate::tables::bake(t).to_vec(),
+                    crate::compile::tables::bake(t).to_vec(),
                 );
             }
         }
@@ -596,7 +597,7 @@ pub fn build_resolved_scene(
                     (_, ParamValue::Texture(t)) if inst.images.contains_key(&pi) => {
                         // The scene's image: carried once per distinct image.
                         let image = &inst.images[&pi];
-                        let file = crate::texture_files::scene_image_file(image, p.srgb);
+                        let file = crate::compile::texture_files::scene_image_file(image, p.srgb);
                         files.insert(
                             format!("{}/{}", manifest.name, file.path),
                             image.image.rgba8.clone(),
@@ -620,7 +621,7 @@ pub fn build_resolved_scene(
                             // The scene folder carries the image at the
                             // path the metadata names (self-contained:
                             // docs/scenes.md "The scene metadata").
-                            let file = crate::texture_files::resource_file(m, p);
+                            let file = crate::compile::texture_files::resource_file(m, p);
                             if let (Some(f), Some(image)) = (&file, &p.file) {
                                 files.insert(
                                     format!("{}/{}", manifest.name, f.path),
@@ -748,7 +749,7 @@ pub fn build_resolved_scene(
         )),
         shaders,
         instances,
-        languages: crate::engine_binding::languages(),
+        languages: crate::compile::engine_binding::languages(),
         conventions: Some(weft_meta::Conventions::current()),
         meshes,
         variants,

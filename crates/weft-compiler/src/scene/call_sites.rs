@@ -19,7 +19,7 @@
 
 use super::dead_calls::pure_functions;
 use super::evaluate::{const_key, is_constant};
-use crate::specialise::map_child_blocks;
+use crate::compile::specialise::map_child_blocks;
 use naga::{Arena, Block, Expression, Function, Handle, Module, Span, Statement};
 use std::collections::{BTreeMap, HashMap, HashSet};
 

@@ -3,7 +3,7 @@
 //! only consumer was pruned (e.g. a UV transform for a texture that became a
 //! constant) would still run; compaction then drops the helper itself.
 
-use crate::specialise::map_child_blocks;
+use crate::compile::specialise::map_child_blocks;
 use naga::{Block, Expression, Function, Handle, Module, Statement};
 use std::collections::HashSet;
 
@@ -11,7 +11,7 @@ use std::collections::HashSet;
 /// when the result would not validate (it always should).
 pub(super) fn remove_dead_calls(module: &mut Module) {
     for _ in 0..8 {
-        let Ok(info) = crate::compose::validator().validate(module) else {
+        let Ok(info) = crate::compile::compose::validator().validate(module) else {
             return;
         };
         let pure = pure_functions(module);
@@ -27,7 +27,10 @@ pub(super) fn remove_dead_calls(module: &mut Module) {
             return;
         }
         naga::compact::compact(&mut candidate, naga::compact::KeepUnused::No);
-        if crate::compose::validator().validate(&candidate).is_err() {
+        if crate::compile::compose::validator()
+            .validate(&candidate)
+            .is_err()
+        {
             return;
         }
         *module = candidate;

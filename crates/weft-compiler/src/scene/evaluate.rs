@@ -6,7 +6,7 @@
 //! WGSL front end treats `let` bindings as run-time values, so weft drives
 //! the evaluator itself, expression by expression.
 
-use crate::specialise::map_child_blocks;
+use crate::compile::specialise::map_child_blocks;
 use naga::{Constant, Expression, Handle, Module, Range, Span, Statement, Type};
 use std::collections::HashMap;
 

@@ -37,7 +37,7 @@ use super::dead_calls::remove_dead_calls;
 use super::evaluate::{anonymous_constant, evaluate_constants, filter_emits};
 use super::identities::simplify_identities;
 use super::locals::forward_locals;
-use crate::specialise::prune_function;
+use crate::compile::specialise::prune_function;
 use naga::{
     AddressSpace, Constant, Expression, Handle, Literal, Module, Span, StructMember, Type,
     TypeInner,
@@ -147,7 +147,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     module.entry_points = eps;
 
     // 2. Overrides -> literals, and the constant `if`s that alone decide pruned.
-    let bindings = crate::specialise::Bindings {
+    let bindings = crate::compile::specialise::Bindings {
         values: request
             .overrides
             .iter()
@@ -155,7 +155,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
             .collect(),
         drop_entry_points: request.drop_entry_points.clone(),
     };
-    let module = crate::specialise::specialise(&module, &bindings);
+    let module = crate::compile::specialise::specialise(&module, &bindings);
 
     // 3. Constant evaluation through the function bodies and into helpers,
     // to a fixed point.
@@ -169,7 +169,7 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
     // 5. The uniform keeps only the members still read.
     shrink_uniform(&mut module, &request.uniform_var)?;
     naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-    crate::half::declare_f16(&mut module);
+    crate::compile::half::declare_f16(&mut module);
     Ok(Folded {
         module,
         kept_in_uniform,
@@ -190,14 +190,16 @@ const MAX_ROUNDS: usize = 16;
 fn fold_to_fixed_point(module: &mut Module) -> Result<(), String> {
     let mut memo = super::call_sites::Memo::new();
     for round in 0..=MAX_ROUNDS {
-        let info = crate::compose::validator().validate(module).map_err(|e| {
-            let when = if round == 0 {
-                "after folding uniform reads"
-            } else {
-                "after specialising helpers"
-            };
-            format!("{when}: {}", error_chain(e.as_inner()))
-        })?;
+        let info = crate::compile::compose::validator()
+            .validate(module)
+            .map_err(|e| {
+                let when = if round == 0 {
+                    "after folding uniform reads"
+                } else {
+                    "after specialising helpers"
+                };
+                format!("{when}: {}", error_chain(e.as_inner()))
+            })?;
         evaluate_constants(module, &info);
         let mut changed = simplify_identities(module, &info);
         prune_all(module);
@@ -539,14 +541,19 @@ pub(super) mod test_support {
         let module = naga::front::wgsl::parse_str(src).expect("parses");
         let request = super::FoldRequest::default();
         let first = super::fold(&module, &request).expect("folds").module;
-        let info = crate::compose::validator()
+        let info = crate::compile::compose::validator()
             .validate(&first)
             .expect("the folded module validates");
-        let wgsl = crate::backends::emit_wgsl(&first, &info).expect("emits");
+        let wgsl = crate::compile::backends::emit_wgsl(&first, &info).expect("emits");
         // Folding is deterministic: a second fold emits the same bytes.
         let second = super::fold(&module, &request).expect("folds").module;
-        let info = crate::compose::validator().validate(&second).unwrap();
-        assert_eq!(crate::backends::emit_wgsl(&second, &info).unwrap(), wgsl);
+        let info = crate::compile::compose::validator()
+            .validate(&second)
+            .unwrap();
+        assert_eq!(
+            crate::compile::backends::emit_wgsl(&second, &info).unwrap(),
+            wgsl
+        );
         wgsl
     }
 }

@@ -395,7 +395,8 @@ fn redirect_block(block: Block, alias: &HashMap<Handle<Expression>, Handle<Expre
             Statement::Call { arguments, .. } => arguments.iter_mut().for_each(r),
             _ => {}
         }
-        let stmt = crate::specialise::map_child_blocks(stmt, &mut |b| redirect_block(b, alias));
+        let stmt =
+            crate::compile::specialise::map_child_blocks(stmt, &mut |b| redirect_block(b, alias));
         out.push(stmt, span);
     }
     out

@@ -3,8 +3,10 @@
 //! exactly as the runtime would have uploaded them), and which stay data.
 
 use super::fold::{ConstValue, FoldRequest};
-use crate::compose::{FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT, FEATURE_SH_AMBIENT};
-use crate::prelude::{TIER_OVERRIDE, UNIFORM_VAR, uniform_members};
+use crate::compile::compose::{
+    FEATURE_DIRECTIONAL_LIGHTS, FEATURE_ENVIRONMENT, FEATURE_SH_AMBIENT,
+};
+use crate::compile::prelude::{TIER_OVERRIDE, UNIFORM_VAR, uniform_members};
 use naga::Literal;
 use serde_json::{Value, json};
 use std::collections::BTreeMap;

@@ -122,7 +122,8 @@ fn drop_stores(block: Block, dead: &mut dyn FnMut(Handle<Expression>) -> bool) -
         {
             continue;
         }
-        let stmt = crate::specialise::map_child_blocks(stmt, &mut |b| drop_stores(b, dead));
+        let stmt =
+            crate::compile::specialise::map_child_blocks(stmt, &mut |b| drop_stores(b, dead));
         out.push(stmt, span);
     }
     out

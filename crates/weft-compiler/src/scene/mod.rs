@@ -96,7 +96,7 @@ pub fn build_scene(
     };
     // On compiler threads (naga's writers need deep stacks, see `nesting`),
     // as many as the caller's pool has.
-    let built = crate::nesting::compiler_pool(Some(rayon::current_num_threads()))
+    let built = crate::compile::nesting::compiler_pool(Some(rayon::current_num_threads()))
         .install(|| build_resolved_scene(scene, &mut db, &mut diags, options));
     match built {
         Some(mut out) if !diags.has_errors() => {

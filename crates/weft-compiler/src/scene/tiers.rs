@@ -3,7 +3,7 @@
 //! compiler must not depend on: `weft-golden` implements the chooser that
 //! renders on lavapipe, and the CLI wires it in.
 
-use crate::library::CompiledMaterial;
+use crate::compile::material::CompiledMaterial;
 use std::collections::BTreeMap;
 use weft_front::scene::model::SceneFeatures;
 

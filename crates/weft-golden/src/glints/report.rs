@@ -187,7 +187,7 @@ pub fn markdown_table(report: &GlintReport) -> String {
     );
     let _ = writeln!(
         md,
-        "\nMeasured on {} ({} for the cost, median of 10 frames) by `crates/weft-golden/src/glints.rs` (bounds and their reasons there; asserted by `tests/glints.rs`). Energy: Σ over the object of render − render at flake intensity 0 (black metal base) against the smooth tier's, 256², sphere and cloth × defaults and two spreads of size and twinkle (range), and dense flakes (density 0.9); extremes: 4 settings × grazing swatch, sphere, sphere lit from behind, cloth, 128², Rgba32Float, a pixel is bad when NaN, Inf, negative or > 65504; pan: the camera moved by half a pixel (eye and target), 256², FLIP over object pixels; distance: the object at {DISTANCE_FACTOR}× the distance at 128² against 512² box-filtered 4×4. Inputs hash {}.",
+        "\nMeasured on {} ({} for the cost, median of 10 frames) by `crates/weft-golden/src/glints.rs` (bounds and their reasons there; asserted by `tests/physics/glints.rs`). Energy: Σ over the object of render − render at flake intensity 0 (black metal base) against the smooth tier's, 256², sphere and cloth × defaults and two spreads of size and twinkle (range), and dense flakes (density 0.9); extremes: 4 settings × grazing swatch, sphere, sphere lit from behind, cloth, 128², Rgba32Float, a pixel is bad when NaN, Inf, negative or > 65504; pan: the camera moved by half a pixel (eye and target), 256², FLIP over object pixels; distance: the object at {DISTANCE_FACTOR}× the distance at 128² against 512² box-filtered 4×4. Inputs hash {}.",
         report.adapter, report.timer, report.inputs_hash
     );
     md

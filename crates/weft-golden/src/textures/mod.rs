@@ -1,6 +1,6 @@
 //! The character set's texture assets (issue 12): generated here, committed
 //! as small PNGs under `materials/<material>/textures/`, and checked to be
-//! current by `cargo xtask textures --check` and `tests/textures.rs`.
+//! current by `cargo xtask textures --check` and `tests/rendering/textures.rs`.
 //!
 //! Every generator is deterministic: f64 arithmetic with only +, −, ×, ÷ and
 //! √ (IEEE-exact everywhere), sin/cos from fixed series (`math`, not the

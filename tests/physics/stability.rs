@@ -1,0 +1,177 @@
+//! Numerical stability sweep (`weft stability` runs the same code): every
+//! shipped material, every canonical variant (and constant-keyword value),
+//! a parameter grid derived from the metadata (each parameter at min / mid /
+//! max with the others at their defaults, plus all-min and all-max corners),
+//! crossed with the geometric extremes of `weft_render::probe` (N·V and N·L
+//! at 1, 1e-4, 0 and negative, L = ±V, grazing, H parallel to the tangent,
+//! degenerate tangents and normals). Outputs are read from an Rgba32Float
+//! target on lavapipe; any NaN, Inf, negative or > 65504 channel fails.
+//!
+//! `a_nan_at_grazing_angles_is_found` proves the sweep can fail: it builds a
+//! copy of the standard material with an unguarded N·V and expects the
+//! failures exactly at the grazing and back-facing cases.
+//!
+//! With no Vulkan adapter these tests fail with what to install; they never skip.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use weft_render::probe::{
+    BadKind, Probe, SweepReport, failures_by_case, generated_materials, sweep_material,
+    sweep_renderer,
+};
+use weft_render::{Light, Luts, Material, Renderer};
+use weft_tests::{copy_dir, repo};
+
+fn renderer(generated: &Path) -> Renderer {
+    let luts = Luts::load_dir(generated).unwrap();
+    sweep_renderer(&luts)
+        .unwrap_or_else(|e| panic!("the stability sweep needs a Vulkan adapter: {e}"))
+}
+
+fn probe() -> Probe {
+    Probe::stability(Light::default().radiance)
+}
+
+fn sweep(renderer: &mut Renderer, probe: &Probe, metas: &[PathBuf]) -> SweepReport {
+    let mut report = SweepReport::default();
+    for meta in metas {
+        let started = Instant::now();
+        sweep_material(renderer, probe, meta, &mut report, &mut |_, _| {}).unwrap();
+        let m = report.materials.last().unwrap();
+        println!(
+            "{}: {} variant(s) ({} aliases skipped), {} settings, {} draws, {} bad, {:.1}s",
+            m.material,
+            m.variants,
+            m.aliases,
+            m.renders,
+            m.draws,
+            m.bad,
+            started.elapsed().as_secs_f64()
+        );
+    }
+    report
+}
+
+#[test]
+fn every_shipped_material_is_finite_non_negative_and_bounded() {
+    let started = Instant::now();
+    let generated = repo().join("generated");
+    let mut renderer = renderer(&generated);
+    println!("adapter: {}", renderer.gpu().describe());
+    let metas = generated_materials(&generated).unwrap();
+    assert!(!metas.is_empty(), "no materials in {}", generated.display());
+    let report = sweep(&mut renderer, &probe(), &metas);
+    println!(
+        "{} in {:.1}s",
+        report.summary(),
+        started.elapsed().as_secs_f64()
+    );
+    if report.bad() > 0 {
+        let mut msg = String::new();
+        for (case, (n, kinds)) in failures_by_case(&report.failures) {
+            msg += &format!("  {case}: {n} (variant, setting) pair(s), {kinds:?}\n");
+        }
+        for f in report.failures.iter().take(40) {
+            msg += &format!("  {f}\n");
+        }
+        panic!(
+            "{}\nby case, then the first failures:\n{msg}",
+            report.summary()
+        );
+    }
+}
+
+/// The probe really draws every tile: the standard material writes alpha =
+/// base alpha = 1 on every pixel it shades (the background's alpha is 0),
+/// and is lit wherever N·V and N·L are clearly positive.
+#[test]
+fn the_probe_covers_every_tile() {
+    let generated = repo().join("generated");
+    let mut renderer = renderer(&generated);
+    let probe = probe();
+    let material = Material::load(generated.join("standard/standard.meta.json")).unwrap();
+    let prepared = renderer
+        .prepare(&material, &probe.render_options())
+        .unwrap();
+    let tiles = probe.evaluate(&mut renderer, &prepared).unwrap();
+    assert_eq!(tiles.len(), probe.cases.len());
+    for (case, pixels) in probe.cases.iter().zip(&tiles) {
+        assert_eq!(pixels.len(), (probe.cell * probe.cell) as usize);
+        for px in pixels {
+            assert_eq!(px[3], 1.0, "{}: pixel not drawn: {px:?}", case.name);
+            if case.n_dot_v() > 0.1 && case.n_dot_l() > 0.1 {
+                assert!(px[0] > 0.0 && px[1] > 0.0, "{}: unlit {px:?}", case.name);
+            }
+        }
+    }
+}
+
+/// A deliberately broken copy of the standard material: the guarded
+/// `weft_clamp_cos(dot(n, v))` becomes `dot(n, v)` and the returned alpha is
+/// multiplied by `sqrt(n_dot_v) / sqrt(n_dot_v)` (1 for N·V > 0, NaN for
+/// N·V <= 0: 0/0 at exactly 0, sqrt of a negative below). The sweep must
+/// report NaN at every back-facing case, and (without a normal map, which
+/// bends the normal) nowhere N·V >= 1e-4.
+#[test]
+fn a_nan_at_grazing_angles_is_found() {
+    let tmp = tempfile::tempdir().unwrap();
+    let materials = tmp.path().join("materials");
+    copy_dir(&repo().join("materials/lib"), &materials.join("lib"));
+    copy_dir(
+        &repo().join("materials/standard"),
+        &materials.join("standard"),
+    );
+    let wgsl = materials.join("standard/standard.wgsl");
+    let source = std::fs::read_to_string(&wgsl).unwrap();
+    let guarded = "let n_dot_v = weft_clamp_cos(dot(n, v));";
+    let ret = "return vec4<f32>(radiance, alpha);";
+    assert!(source.contains(guarded) && source.contains(ret));
+    let broken = source.replace(guarded, "let n_dot_v = dot(n, v);").replace(
+        ret,
+        "return vec4<f32>(radiance, alpha * sqrt(n_dot_v) / sqrt(n_dot_v));",
+    );
+    std::fs::write(&wgsl, broken).unwrap();
+    let out = weft_compiler::build_library(
+        &materials,
+        &weft_compiler::BuildOptions::default(),
+        &|_, _, _| {},
+    )
+    .unwrap_or_else(|_| panic!("the broken copy does not compile"));
+    let generated = tmp.path().join("generated");
+    weft_compiler::output::write_atomically(&generated, &out.files, &[]).unwrap();
+
+    let mut renderer = renderer(&generated);
+    let probe = probe();
+    let report = sweep(
+        &mut renderer,
+        &probe,
+        &[generated.join("standard/standard.meta.json")],
+    );
+    println!("{}", report.summary());
+    assert!(report.bad() > 0, "the sweep found nothing");
+    for f in &report.failures {
+        assert_eq!(f.kind, BadKind::NaN, "{f}");
+        // A normal map bends the shading normal away from the geometric
+        // one, so only variants without it map failures to N.V exactly.
+        if !f.variant.contains("normal_map-on") {
+            assert!(f.n_dot_v <= 0.0, "failure where N.V > 0: {f}");
+        }
+    }
+    let by_case = failures_by_case(&report.failures);
+    for (case, (n, _)) in &by_case {
+        println!("  {case}: {n}");
+    }
+    // Every case that looks from below the surface fails, in every variant
+    // and setting that keeps the normal (normal maps bend it; all variants
+    // without one must fail).
+    for case in probe.cases.iter().filter(|c| c.n_dot_v() < -0.1) {
+        let n = by_case.get(&case.name).map_or(0, |e| e.0);
+        assert!(
+            n > 0,
+            "`{}` (N.V = {}) was not reported",
+            case.name,
+            case.n_dot_v()
+        );
+    }
+    assert!(by_case.keys().any(|c| c.contains("N.V=0 ")));
+}
