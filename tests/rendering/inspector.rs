@@ -650,7 +650,8 @@ fn export_is_deterministic_and_complete() {
         "api/environment.bin",
         "api/meshes/cloth.bin",
         "api/materials/standard.json",
-        "api/spirv/standard/fast.normal_map-off.sphere_map-off.spv.txt",
+        // standard's constant keywords (ALPHA_TEST, EMISSION) name each file set.
+        "api/spirv/standard/fast.normal_map-off.sphere_map-off+alpha_test-off+emission-off.spv.txt",
     ] {
         assert!(
             fa.iter().any(|(p, _)| p == must),

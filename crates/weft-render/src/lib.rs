@@ -37,16 +37,16 @@
 //! mapping happens on the CPU.
 
 mod bindings;
-mod bust;
+use weft_runtime::bust;
 mod draw;
 mod engine_uniforms;
-mod environment;
-mod error;
+use weft_runtime::environment;
+use weft_runtime::error;
 mod gpu;
-mod image;
-mod luts;
-mod material;
-pub mod math;
+use weft_runtime::image;
+use weft_runtime::luts;
+use weft_runtime::material;
+pub use weft_runtime::math;
 mod mesh_files;
 mod meta_wgpu;
 mod pipelines;
@@ -54,14 +54,14 @@ mod preview;
 pub mod probe;
 mod renderer;
 mod resources;
-mod scene;
+use weft_runtime::scene;
 mod scene_draw;
-mod scene_library;
-mod texture_files;
+use weft_runtime::scene_library;
+use weft_runtime::texture_files;
 mod tiles;
 mod timing;
-mod uniform;
-mod values;
+use weft_runtime::uniform;
+use weft_runtime::values;
 
 pub use bust::{
     BustPart, EYE_CENTRES, EYE_RADIUS, HAIR_END, HEAD_CENTRE, HEAD_JAW, HEAD_RADII, bust_parts,
@@ -94,4 +94,5 @@ pub use values::{
     sample_curve, srgb_to_linear,
 };
 pub use weft_meta;
+pub use weft_runtime;
 pub use wgpu;

@@ -105,21 +105,20 @@ impl Default for PreviewOptions {
 impl PreviewOptions {
     /// The scene with the requested light direction.
     pub fn scene(&self) -> Scene {
-        let mut scene = match &self.mesh {
-            Some(mesh) => Scene::framing((**mesh).clone()),
-            None => Scene::new(self.scene),
-        };
-        if let Some(d) = self.light_direction {
-            scene.light.direction = math::normalize(d);
-        }
-        scene
+        self.lit().0
     }
 
     /// The sky with its sun where the light is.
     pub fn sky_params(&self) -> SkyParams {
-        let mut sky = self.sky;
-        sky.sun_direction = self.scene().light.direction;
-        sky
+        self.lit().1
+    }
+
+    fn lit(&self) -> (Scene, SkyParams) {
+        let scene = match &self.mesh {
+            Some(mesh) => Scene::framing((**mesh).clone()),
+            None => Scene::new(self.scene),
+        };
+        weft_runtime::lit(scene, self.light_direction, self.sky)
     }
 
     pub fn render_options(&self) -> RenderOptions {

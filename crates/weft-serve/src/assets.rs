@@ -6,7 +6,7 @@
 
 use serde_json::{Value, json};
 use std::sync::Arc;
-use weft_render::{EnvironmentMaps, PreviewOptions, Scene, SceneKind};
+use weft_runtime::{EnvironmentMaps, Scene, SceneKind, SkyParams};
 
 /// `environment.json` (layout and SH) and `environment.bin` (texels).
 pub struct Environment {
@@ -24,15 +24,12 @@ pub fn environment() -> Environment {
 
 /// The sky `weft preview --light x,y,z` renders under: the direct light
 /// and the sky's sun both along `light` (None: the default light), computed
-/// by the same `PreviewOptions::sky_params` and `EnvironmentMaps::sky`.
+/// by the same `weft_runtime::lit` and `EnvironmentMaps::sky` as the preview.
 pub fn environment_for(light: Option<[f32; 3]>) -> Environment {
-    let options = PreviewOptions {
-        light_direction: light,
-        ..PreviewOptions::default()
-    };
-    let sky = options.sky_params();
+    let (scene, sky) =
+        weft_runtime::lit(Scene::new(SceneKind::Sphere), light, SkyParams::default());
     let env = EnvironmentMaps::sky(&sky);
-    let light = options.scene().light;
+    let light = scene.light;
     let mut bin = Vec::new();
     let mut mips = Vec::new();
     for level in &env.mips {

@@ -22,7 +22,7 @@ use crate::query::Query;
 use serde_json::json;
 use std::collections::{BTreeMap, VecDeque};
 use std::sync::{Arc, Mutex, OnceLock};
-use weft_render::SceneKind;
+use weft_runtime::SceneKind;
 
 /// The page's files, embedded.
 pub const PAGE: &[(&str, &str, &str)] = &[

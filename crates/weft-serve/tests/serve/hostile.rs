@@ -382,7 +382,12 @@ fn signals_stop_the_server_and_remove_its_cache() {
     for signal in ["INT", "TERM"] {
         let tmp = tempfile::tempdir().unwrap();
         let mut child = Command::new(std::env::current_exe().unwrap())
-            .args(["--exact", "signal_child", "--ignored", "--nocapture"])
+            .args([
+                "--exact",
+                "hostile::signal_child",
+                "--ignored",
+                "--nocapture",
+            ])
             .env(CHILD, dir.path())
             .env("TMPDIR", tmp.path())
             .stdout(Stdio::null())

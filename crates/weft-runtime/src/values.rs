@@ -222,7 +222,7 @@ pub enum StoredValue {
     Gradient(Vec<u8>),
 }
 
-pub(crate) fn default_value(p: &Parameter) -> Result<StoredValue> {
+pub fn default_value(p: &Parameter) -> Result<StoredValue> {
     match p.kind {
         ParamKind::Color => {
             if let Some(ColorInfo { linear_default, .. }) = &p.color {
@@ -252,7 +252,7 @@ pub(crate) fn default_value(p: &Parameter) -> Result<StoredValue> {
 
 /// Whether [`normalise`] checks declared ranges (finiteness is always checked).
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Ranges {
+pub enum Ranges {
     Check,
     /// Values as uploaded by a scene build: already checked against the
     /// ranges as edited; their linear round trip may sit an ulp outside.
@@ -280,7 +280,7 @@ fn check_range(p: &Parameter, values: &[f64], ranges: Ranges) -> Result<()> {
     Ok(())
 }
 
-pub(crate) fn normalise(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
+pub fn normalise(p: &Parameter, value: Value, ranges: Ranges) -> Result<StoredValue> {
     match p.kind {
         ParamKind::Float => {
             let x = match value {

@@ -429,6 +429,22 @@ impl Scene {
     }
 }
 
+/// `scene` with its light turned towards `direction` (None: the scene's
+/// own), and `sky` with its sun where that light is: what `weft preview
+/// --light` draws under and the inspector bakes for the browser, computed
+/// in one place so the two agree.
+pub fn lit(
+    mut scene: Scene,
+    direction: Option<Vec3>,
+    mut sky: crate::environment::SkyParams,
+) -> (Scene, crate::environment::SkyParams) {
+    if let Some(d) = direction {
+        scene.light.direction = math::normalize(d);
+    }
+    sky.sun_direction = scene.light.direction;
+    (scene, sky)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use weft_meta::uniform::{EncodeError, UniformValue, write_member};
 use weft_meta::{UniformLayout, UniformMember};
 
-pub(crate) use weft_meta::uniform::{json_number, json_numbers};
+pub use weft_meta::uniform::{json_number, json_numbers};
 
 /// A metadata error from the encoder (a layout that does not fit its block,
 /// a member of the wrong type).
@@ -53,6 +53,6 @@ fn bad(m: &UniformMember, e: EncodeError) -> Error {
 }
 
 /// Samples packed 4 per vec4, written flat or as rows of 4 numbers.
-pub(crate) fn json_samples(v: &serde_json::Value) -> Option<Vec<f64>> {
+pub fn json_samples(v: &serde_json::Value) -> Option<Vec<f64>> {
     weft_meta::uniform::json_rows(v, 4)
 }

@@ -11,7 +11,7 @@ use weft_meta::uniform::{
     ParamValue as Upload, TILING_OFFSET_DEFAULT, TILING_OFFSET_TYPE, write_member,
 };
 // The value types are part of this module's API (`crate::material::Value`, ...).
-pub(crate) use crate::values::{CurveValue, StoredValue, Value};
+pub use crate::values::{CurveValue, StoredValue, Value};
 use crate::values::{Ranges, default_value, normalise};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -181,7 +181,7 @@ impl Material {
 
     /// Sets a parameter to a value as a scene build uploaded it (colours
     /// linear, curves as samples): type-checked but not range-checked.
-    pub(crate) fn set_as_uploaded(&mut self, name: &str, value: Value) -> Result<()> {
+    pub fn set_as_uploaded(&mut self, name: &str, value: Value) -> Result<()> {
         let p = self.parameter(name)?.clone();
         let stored = normalise(&p, value, Ranges::Skip)?;
         self.store(&p, stored);
@@ -478,12 +478,12 @@ impl Material {
 }
 
 /// An int parameter's value as an instance count (rounded, at least 0).
-pub(crate) fn instance_count_of(x: f64) -> u32 {
+pub fn instance_count_of(x: f64) -> u32 {
     x.round().clamp(0.0, f64::from(u32::MAX)) as u32
 }
 
 /// The constant for keyword value `value`: its index in `c.values`.
-pub(crate) fn constant_value(c: &PipelineConstant, value: &str) -> Result<f64> {
+pub fn constant_value(c: &PipelineConstant, value: &str) -> Result<f64> {
     c.values
         .iter()
         .position(|x| x == value)
@@ -499,7 +499,7 @@ pub(crate) fn constant_value(c: &PipelineConstant, value: &str) -> Result<f64> {
 
 /// A pipeline constant's `default_value` as the number WebGPU takes
 /// (bools 0/1): what a constant no keyword sets is drawn with.
-pub(crate) fn constant_default(c: &PipelineConstant) -> Result<f64> {
+pub fn constant_default(c: &PipelineConstant) -> Result<f64> {
     match &c.default_value {
         serde_json::Value::Bool(b) => Ok(f64::from(u8::from(*b))),
         serde_json::Value::Number(n) => n.as_f64().ok_or_else(|| {

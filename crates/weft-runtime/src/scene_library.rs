@@ -13,7 +13,7 @@ use weft_meta::scene::SceneInstance;
 use weft_meta::{ParamKind, Parameter, TextureDefault};
 
 /// The materials of one `generated/` folder, each loaded once.
-pub(crate) struct Library {
+pub struct Library {
     generated: PathBuf,
     materials: HashMap<String, Material>,
 }

@@ -11,7 +11,7 @@
 use crate::math::Vec3;
 use std::f64::consts::PI;
 // The probe (probe.rs) takes the tables from here with the environment.
-pub(crate) use crate::luts::Luts;
+pub use crate::luts::Luts;
 
 /// One mip level of a cube: 6 faces of `size * size` linear RGB texels.
 #[derive(Clone, Debug, PartialEq)]

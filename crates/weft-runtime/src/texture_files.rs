@@ -9,7 +9,7 @@ use weft_meta::ResourceFile;
 
 /// The texels of `file` (its `path` relative to the library root), under the
 /// first of `roots` that holds it; checked against its size and format.
-pub(crate) fn read(roots: &[PathBuf], file: &ResourceFile) -> Result<TextureValue> {
+pub fn read(roots: &[PathBuf], file: &ResourceFile) -> Result<TextureValue> {
     if !matches!(file.format.as_str(), "rgba8unorm" | "rgba8unorm_srgb") {
         return Err(Error::Metadata(format!(
             "texture file `{}` has format `{}`; weft-render reads rgba8unorm and rgba8unorm_srgb",
@@ -53,7 +53,7 @@ pub(crate) fn read(roots: &[PathBuf], file: &ResourceFile) -> Result<TextureValu
 
 /// Where a material's files are looked for: the library root, the folder
 /// above its metadata's.
-pub(crate) fn material_roots(dir: &Path) -> Vec<PathBuf> {
+pub fn material_roots(dir: &Path) -> Vec<PathBuf> {
     vec![dir.parent().unwrap_or(Path::new(".")).to_path_buf()]
 }
 
@@ -62,7 +62,7 @@ pub(crate) fn material_roots(dir: &Path) -> Vec<PathBuf> {
 /// — for folders built before it did — a project build's library root
 /// (`generated/scenes/<scene>/` -> `generated/`) and the folder above the
 /// scene's.
-pub(crate) fn scene_roots(dir: &Path) -> Vec<PathBuf> {
+pub fn scene_roots(dir: &Path) -> Vec<PathBuf> {
     let up = dir.parent().unwrap_or(Path::new("."));
     vec![dir.to_path_buf(), up.join(".."), up.to_path_buf()]
 }

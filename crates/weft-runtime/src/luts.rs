@@ -20,8 +20,8 @@ pub const SPLIT_SUM_LUT_FILE: &str = "luts/split_sum_ggx_64x64_1024spp.rg16f";
 pub const SHEEN_LUT_FILE: &str = "luts/charlie_albedo_32x32_8192spp.r16f";
 
 /// The `resource.id`s of the baked tables.
-pub(crate) const SPLIT_SUM_LUT_ID: &str = weft_meta::engine::SPLIT_SUM_LUT;
-pub(crate) const SHEEN_LUT_ID: &str = weft_meta::engine::SHEEN_ALBEDO_LUT;
+pub const SPLIT_SUM_LUT_ID: &str = weft_meta::engine::SPLIT_SUM_LUT;
+pub const SHEEN_LUT_ID: &str = weft_meta::engine::SHEEN_ALBEDO_LUT;
 
 /// The generated folder of a material's metadata: `<meta dir>/..`.
 fn generated_dir(meta_path: &Path) -> &Path {
