@@ -1,6 +1,7 @@
 //! Keeps ARCHITECTURE.md a true map: every path it names in backticks
 //! exists, every bare file name it names (`fold.rs`) exists somewhere in the
-//! code, and every crate of the workspace has its entry. Run by the test
+//! code, and every crate, top folder and folder inside a crate's `src/` has
+//! its entry. Run by the test
 //! below (so by `cargo test --workspace`); only tests use it.
 
 use std::collections::BTreeSet;
@@ -71,8 +72,35 @@ pub fn architecture_problems(root: &Path) -> Result<Vec<String>, String> {
         .filter_map(|e| e.file_name().into_string().ok())
         .map(|n| format!("crates/{n}"))
         .collect();
-    members.extend(["xtask".into(), "tests".into(), "fuzz".into()]);
+    // Every top folder (`.ci` too; build output and other hidden folders
+    // are not the code's).
+    for e in std::fs::read_dir(root).map_err(|e| format!("{}: {e}", root.display()))? {
+        let e = e.map_err(|e| format!("{}: {e}", root.display()))?;
+        let name = e.file_name().to_string_lossy().into_owned();
+        let hidden = name.starts_with('.') && name != ".ci";
+        if e.path().is_dir() && !hidden && name != "target" && name != "crates" {
+            members.push(name);
+        }
+    }
+    // Every folder inside a crate's or xtask's `src/`: the stages a crate is
+    // split into are what the map is for.
+    let src_dirs = members
+        .iter()
+        .filter(|m| m.starts_with("crates/") || *m == "xtask")
+        .map(|m| format!("{m}/src"))
+        .collect::<Vec<_>>();
+    for src in src_dirs {
+        let Ok(entries) = std::fs::read_dir(root.join(&src)) else {
+            continue;
+        };
+        for e in entries.filter_map(|e| e.ok()) {
+            if e.path().is_dir() {
+                members.push(format!("{src}/{}", e.file_name().to_string_lossy()));
+            }
+        }
+    }
     members.sort();
+    members.dedup();
     for m in members {
         if !text.contains(&format!("`{m}`")) && !text.contains(&format!("`{m}/`")) {
             problems.push(format!("`{m}` has no entry"));
@@ -133,6 +161,12 @@ mod tests {
         std::fs::write(root.join("crates/a/src/fold.rs"), "").unwrap();
         std::fs::create_dir_all(root.join("crates/b")).unwrap();
         std::fs::create_dir_all(root.join("fuzz")).unwrap();
+        std::fs::create_dir_all(root.join("xtask")).unwrap();
+        std::fs::create_dir_all(root.join("tests")).unwrap();
+        std::fs::create_dir_all(root.join("crates/a/src/stages")).unwrap();
+        std::fs::create_dir_all(root.join("docs")).unwrap();
+        std::fs::create_dir_all(root.join("target")).unwrap();
+        std::fs::create_dir_all(root.join(".git")).unwrap();
         std::fs::write(root.join("crates/b/Cargo.toml"), "").unwrap();
         std::fs::write(
             root.join("ARCHITECTURE.md"),
@@ -145,7 +179,9 @@ mod tests {
             [
                 "no file `gone.rs` in the code",
                 "`crates/a/src/missing.rs` does not exist",
+                "`crates/a/src/stages` has no entry",
                 "`crates/b` has no entry",
+                "`docs` has no entry",
             ]
         );
     }
