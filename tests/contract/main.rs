@@ -14,5 +14,6 @@ mod hlsl_compilers;
 mod hlsl_d3d;
 mod independent_engine;
 mod metadata_contract;
+mod readme;
 mod texture_files;
 mod tint;

@@ -348,7 +348,7 @@ fn drawing_builds_no_pipeline_and_every_instance_draws() {
 /// (the chooser caches its renders), so this compares the compiler's output.
 #[test]
 fn scene_builds_are_byte_deterministic() {
-    let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)
+    let chooser = weft_auto::LavapipeTierChooser::new(None)
         .unwrap()
         .with_reports_dir(generated().join("reports"));
     let options = weft_compiler::SceneBuildOptions {

@@ -12,13 +12,27 @@ pub fn doc_block(doc: &str, name: &str) -> String {
         .find(&end)
         .unwrap_or_else(|| panic!("no {end}"))
         + start;
-    let block = doc[start..stop].trim();
-    let block = block
-        .strip_prefix("```wgsl")
-        .or_else(|| block.strip_prefix("```toml"))
+    // A block inside a list item is indented like the fence before it.
+    let indent = doc[..start]
+        .lines()
+        .last()
+        .map_or(0, |l| l.len() - l.trim_start().len());
+    let dedented: String = doc[start..stop]
+        .lines()
+        .map(|l| &l[l.len().min(indent).min(l.len() - l.trim_start().len())..])
+        .collect::<Vec<_>>()
+        .join("\n");
+    let block = dedented.trim();
+    let block = ["```wgsl", "```toml", "```rust"]
+        .iter()
+        .find_map(|fence| block.strip_prefix(fence))
         .expect("fenced block");
     let block = block.strip_suffix("```").expect("closing fence");
-    block.trim_start_matches('\n').to_string()
+    let mut block = block.trim_start_matches('\n').to_string();
+    if indent > 0 && !block.ends_with('\n') {
+        block.push('\n');
+    }
+    block
 }
 
 use std::collections::BTreeSet;

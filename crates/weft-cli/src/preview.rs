@@ -400,7 +400,7 @@ fn preview_scene(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), St
 /// `luts/`, reused from the project's `generated/` when it has them) and
 /// returns the `.scene.json`.
 fn build_scene_into(manifest: &Path, out: &Path, color: Color) -> Result<PathBuf, String> {
-    let chooser = weft_golden::auto_tier::LavapipeTierChooser::new(None)?;
+    let chooser = weft_auto::LavapipeTierChooser::new(None)?;
     let options = weft_compiler::SceneBuildOptions {
         tier_chooser: Some(&chooser),
         ..Default::default()

@@ -18,14 +18,13 @@ pub fn build_scene_command(
     color: Color,
 ) -> bool {
     let started = std::time::Instant::now();
-    let chooser =
-        match weft_golden::auto_tier::LavapipeTierChooser::new(tier_costs.map(PathBuf::as_path)) {
-            Ok(c) => c,
-            Err(e) => {
-                eprintln!("error: {e}");
-                return false;
-            }
-        };
+    let chooser = match weft_auto::LavapipeTierChooser::new(tier_costs.map(PathBuf::as_path)) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return false;
+        }
+    };
     let options = SceneBuildOptions {
         tier_chooser: Some(&chooser),
         gltf_materials,
@@ -93,7 +92,7 @@ pub fn build_scene_command(
             if let Some(choice) = &inst.tier_choice {
                 println!(
                     "{}",
-                    weft_golden::auto_tier::describe_choice(&inst.name, &inst.tier, choice)
+                    weft_auto::describe_choice(&inst.name, &inst.tier, choice)
                 );
             }
         }

@@ -37,6 +37,12 @@ pub use library::{
 };
 pub use scene::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_scene};
 
+/// The README's `build.rs` example (`docs/example/build.rs`; a test keeps
+/// the README's copy equal to it), compiled by `cargo test` as a doc test so
+/// the API it shows cannot drift from the one `build.rs` users call.
+#[doc = concat!("```no_run\n", include_str!("../../../docs/example/build.rs"), "```")]
+mod readme_build_rs_example {}
+
 /// The stages never reach the plumbing: no file under `compile/`, `scene/`
 /// or `bake/` names `crate::build` or one of its modules (re-exported at the
 /// root, so `crate::output` would hide the dependency).

@@ -5,7 +5,6 @@
 //! Shared by the render tests (`tests/rendering/render.rs`), `cargo xtask bless` (which
 //! rewrites goldens) and `cargo xtask gallery` (contact sheet + gallery.md).
 
-pub mod auto_tier;
 pub mod bindings;
 pub mod cost_tables;
 pub mod error_grid;
@@ -27,13 +26,15 @@ use std::path::{Path, PathBuf};
 use weft_meta::{KeywordMode, MaterialMetadata};
 use weft_render::{
     EnvironmentMaps, HdrImage, Luts, Material, MaterialOptions, PreviewOptions, RenderOptions,
-    Renderer, SceneKind, ShaderLanguage, Tonemap,
+    Renderer, SceneKind, ShaderLanguage,
 };
 
 /// Goldens are small: enough to see every lobe, cheap on 2 cores.
 pub const GOLDEN_SIZE: u32 = 96;
-/// Tone mapping of goldens and gallery images.
-pub const TONEMAP: Tonemap = Tonemap::Aces;
+/// Tone mapping of goldens and gallery images, and the sRGB8 pixels a
+/// golden holds: the `auto` chooser's, so goldens, benches and the chooser
+/// compare alike.
+pub use weft_auto::{TONEMAP, to_ldr};
 /// A case passes when the FLIP mean against its golden is at most this.
 /// lavapipe renders bit-identically run to run; the margin absorbs LLVM/CPU
 /// differences between machines. The perturbation test shows a wrong sign,
@@ -233,11 +234,6 @@ impl Harness {
         edit(&mut material, &mut scene)?;
         self.renderer.render(&material, &scene, &options)
     }
-}
-
-/// The sRGB8 RGBA pixels a golden holds.
-pub fn to_ldr(image: &HdrImage) -> Vec<u8> {
-    image.to_srgb8(TONEMAP, 1.0)
 }
 
 /// Where a case's golden lives: `<goldens>/<material>/<case>.png`.

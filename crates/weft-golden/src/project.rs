@@ -4,9 +4,9 @@
 //! measured on the local Vulkan adapter with the bench reports of
 //! `<root>/generated/reports`.
 
-use crate::auto_tier::LavapipeTierChooser;
 use codespan_reporting::diagnostic::Diagnostic;
 use std::path::Path;
+use weft_auto::LavapipeTierChooser;
 use weft_compiler::{BuildOptions, BuildOutput, SceneBuildOptions, build_library};
 use weft_front::{Diagnostics, SourceDb};
 

@@ -10,14 +10,13 @@
 //! material `<name>.measurements.json` ([`weft_meta::Measurements`], which
 //! inspectors attach to the metadata) and `<name>.pareto.svg`.
 
-mod image_error;
 mod measure;
 mod report;
 mod spirv;
 #[cfg(test)]
 mod tests;
 
-pub use image_error::{ImageError, flip_map, image_error, quantile};
+// The error measure is the `auto` chooser's (weft-auto), written once.
 pub use measure::run;
 pub(crate) use report::cost_cell;
 pub use report::{
@@ -25,6 +24,7 @@ pub use report::{
     write_reports,
 };
 pub use spirv::spirv_instruction_counts;
+pub use weft_auto::image_error::{ImageError, flip_map, image_error, quantile};
 
 use std::path::{Path, PathBuf};
 use weft_meta::Measurements;

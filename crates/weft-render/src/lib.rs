@@ -58,7 +58,6 @@ use weft_runtime::scene;
 mod scene_draw;
 use weft_runtime::scene_library;
 use weft_runtime::texture_files;
-mod tiles;
 mod timing;
 use weft_runtime::uniform;
 use weft_runtime::values;

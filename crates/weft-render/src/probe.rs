@@ -30,6 +30,10 @@ mod cases;
 mod classify;
 mod grid;
 mod sweep;
+mod tiles;
+
+pub use tiles::Tile;
+
 #[cfg(test)]
 mod tests;
 
@@ -44,7 +48,7 @@ pub use sweep::{
 use crate::error::Result;
 use crate::image::HdrImage;
 use crate::math::Vec3;
-use crate::renderer::{Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage, Tile};
+use crate::renderer::{Background, ColorFormat, RenderOptions, Renderer, ShaderLanguage};
 use cases::case_scene;
 
 /// The probe scene: one tile per geometric case.

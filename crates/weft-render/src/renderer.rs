@@ -33,7 +33,7 @@ use std::sync::Arc;
 use weft_meta::{Binding, BindingKind, ParamKind, Pass};
 
 // Probe tiles are drawn by `tiles.rs`; `Tile` stays reachable here too.
-pub use crate::tiles::Tile;
+pub use crate::probe::Tile;
 
 /// Colour target format of a render.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]

@@ -206,7 +206,7 @@ fn time_builds(
             )
             .map_err(|(db, d)| d.render_plain(&db))?;
         } else {
-            let chooser = crate::auto_tier::LavapipeTierChooser::new(None)?
+            let chooser = weft_auto::LavapipeTierChooser::new(None)?
                 .with_reports_dir(generated.join("reports"));
             let options = weft_compiler::SceneBuildOptions {
                 tier_chooser: Some(&chooser),

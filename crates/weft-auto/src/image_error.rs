@@ -1,7 +1,16 @@
 //! The error of an image against a reference over object pixels (FLIP on
 //! the tone-mapped image, relative RMSE on the linear one) and quantiles.
 
-use weft_render::HdrImage;
+use weft_render::{HdrImage, Tonemap};
+
+/// The tone mapping every comparison of HDR renders goes through (goldens,
+/// benches, the `auto` chooser): ACES, exposure 1.
+pub const TONEMAP: Tonemap = Tonemap::Aces;
+
+/// An HDR render as the sRGB8 RGBA image FLIP compares.
+pub fn to_ldr(image: &HdrImage) -> Vec<u8> {
+    image.to_srgb8(TONEMAP, 1.0)
+}
 
 /// The q-quantile (nearest rank) of `values`; NaN when empty.
 pub fn quantile(values: &[f64], q: f64) -> f64 {
@@ -42,7 +51,7 @@ pub fn flip_map(reference: &HdrImage, test: &HdrImage) -> (Vec<f32>, Vec<bool>) 
         .map(|(a, b)| *a != [0.0; 4] || *b != [0.0; 4])
         .collect();
     let rgb = |img: &HdrImage| -> Vec<u8> {
-        crate::to_ldr(img)
+        to_ldr(img)
             .chunks_exact(4)
             .flat_map(|p| [p[0], p[1], p[2]])
             .collect()

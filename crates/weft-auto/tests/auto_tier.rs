@@ -9,9 +9,9 @@ use serde_json::{Value, json};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
+use weft_auto::{LavapipeTierChooser, describe_choice};
 use weft_compiler::library::CompiledMaterial;
 use weft_compiler::scene::{AutoTierDecision, AutoTierRequest, TierChooser};
-use weft_golden::auto_tier::{LavapipeTierChooser, describe_choice};
 use weft_meta::gpu_model::ModelSummary;
 use weft_meta::{MaterialMetadata, ParamKind};
 

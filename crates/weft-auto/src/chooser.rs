@@ -8,7 +8,7 @@
 //! `screen_size`, under the scene's engine features (a feature that is off is
 //! drawn black/zero, as `weft_render::SceneLighting` does). Each tier's error
 //! is the FLIP mean over object pixels against the reference tier
-//! ([`crate::shading::image_error`], as the bench measures it). Costs come
+//! ([`crate::image_error::image_error`], as the bench measures it). Costs come
 //! from the committed GPU model (`generated/reports/gpu-model.json`: AMD's
 //! compiler on Mesa RADV's null device, the executed cost of the candidate's
 //! variant on the scene's `gpu_family`, ÷ `standard` `fast`), so a choice
@@ -362,7 +362,7 @@ impl TierChooser for LavapipeTierChooser {
             } else {
                 let image = self.image(state, request, variant, kind)?;
                 round(
-                    crate::shading::image_error(&reference_image, &image).flip_mean,
+                    crate::image_error::image_error(&reference_image, &image).flip_mean,
                     FLIP_DECIMALS,
                 )
             };

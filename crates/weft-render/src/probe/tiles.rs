@@ -1,5 +1,5 @@
 //! Many small independent renders of one prepared material in one target
-//! (the stability probe's tiles, `probe.rs`).
+//! (the stability probe's tiles: `Renderer::render_tiles`).
 
 use crate::draw::{FrameView, RenderTargets, clear_color};
 use crate::engine_uniforms::{frame_bytes, object_bytes};
