@@ -47,6 +47,17 @@ fn run(root: &Path) -> Result<(), String> {
     let chromium = which("chromium").ok_or(
         "`chromium` not found: install it with `apt-get install -y chromium` (see .ci/run)",
     )?;
+    // Without a CJK font the Chinese screenshot is boxes; refuse rather
+    // than commit it.
+    let cjk = std::process::Command::new("fc-list")
+        .arg(":lang=zh")
+        .output()
+        .map_err(|e| format!("`fc-list` (fontconfig): {e}"))?;
+    if cjk.stdout.is_empty() {
+        return Err(
+            "no font covers Chinese: install one with `apt-get install -y fonts-noto-cjk`".into(),
+        );
+    }
     let server = weft_serve::Server::start(weft_serve::ServeOptions {
         reports: Some(root.join("generated/reports")),
         ..weft_serve::ServeOptions::new(root.join("materials"))
