@@ -9,6 +9,7 @@
 
 pub mod build;
 mod call_sites;
+mod checks;
 mod dead_calls;
 mod evaluate;
 pub mod fold;
@@ -16,6 +17,7 @@ mod identities;
 pub mod instance;
 mod locals;
 mod loops;
+mod record;
 pub mod tiers;
 
 pub use build::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_resolved_scene};
