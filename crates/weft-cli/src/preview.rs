@@ -1,6 +1,7 @@
 //! `weft preview`: render one material variant, or a whole scene, to a PNG.
 
-use crate::{Color, build, report};
+use crate::library_build::build;
+use crate::{Color, report};
 use clap::ValueEnum;
 use std::path::{Path, PathBuf};
 use weft_compiler::{BuildOptions, output};

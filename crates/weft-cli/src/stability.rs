@@ -1,6 +1,7 @@
 //! `weft stability`: sweep parameters and degenerate geometry for NaN/Inf/negative output.
 
-use crate::{Color, build, report};
+use crate::library_build::build;
+use crate::{Color, report};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use weft_compiler::{BuildOptions, output};
