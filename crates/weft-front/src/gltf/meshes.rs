@@ -173,75 +173,118 @@ pub fn read_primitive(
             "export triangles (mode 4); points, lines, strips and fans are not drawn",
         ));
     }
-    let get = |semantic: Semantic,
-               allowed: &[(DataType, Dimensions)],
-               what: &str|
-     -> Result<Option<gltf::Accessor>, GltfError> {
-        match prim.get(&semantic) {
-            None => Ok(None),
-            Some(a) => {
-                check_accessor(file, &a, allowed, &format!("{pointer} {what}"))?;
-                Ok(Some(a))
+    let attributes = Attributes::checked(file, &prim, &pointer)?;
+    let (data, indices) = read_streams(file, &prim, &attributes, &pointer)?;
+    Ok(complete_streams(data, indices, &attributes))
+}
+
+/// Which attributes the primitive has, each accessor checked (type, count,
+/// byte ranges) before anything is read.
+struct Attributes {
+    position: usize,
+    count: usize,
+    normal: bool,
+    tangent: bool,
+    uv0: bool,
+    uv1: bool,
+    color: bool,
+}
+
+impl Attributes {
+    fn checked(
+        file: &GltfFile,
+        prim: &gltf::Primitive,
+        pointer: &str,
+    ) -> Result<Attributes, GltfError> {
+        let get = |semantic: Semantic,
+                   allowed: &[(DataType, Dimensions)],
+                   what: &str|
+         -> Result<Option<gltf::Accessor>, GltfError> {
+            match prim.get(&semantic) {
+                None => Ok(None),
+                Some(a) => {
+                    check_accessor(file, &a, allowed, &format!("{pointer} {what}"))?;
+                    Ok(Some(a))
+                }
+            }
+        };
+        let position = get(Semantic::Positions, &[(F32, Dimensions::Vec3)], "POSITION")?
+            .ok_or_else(|| {
+                file.error(
+                    &format!("{pointer}/attributes"),
+                    "the primitive has no POSITION".into(),
+                    "every drawn primitive needs positions",
+                )
+            })?;
+        let count = position.count();
+        let normal = get(Semantic::Normals, &[(F32, Dimensions::Vec3)], "NORMAL")?;
+        let tangent = get(Semantic::Tangents, &[(F32, Dimensions::Vec4)], "TANGENT")?;
+        let uv_types = [
+            (F32, Dimensions::Vec2),
+            (DataType::U8, Dimensions::Vec2),
+            (DataType::U16, Dimensions::Vec2),
+        ];
+        let uv0 = get(Semantic::TexCoords(0), &uv_types, "TEXCOORD_0")?;
+        let uv1 = get(Semantic::TexCoords(1), &uv_types, "TEXCOORD_1")?;
+        let color_types = [
+            (F32, Dimensions::Vec3),
+            (F32, Dimensions::Vec4),
+            (DataType::U8, Dimensions::Vec3),
+            (DataType::U8, Dimensions::Vec4),
+            (DataType::U16, Dimensions::Vec3),
+            (DataType::U16, Dimensions::Vec4),
+        ];
+        let color = get(Semantic::Colors(0), &color_types, "COLOR_0")?;
+        for (a, name) in [
+            (&normal, "NORMAL"),
+            (&tangent, "TANGENT"),
+            (&uv0, "TEXCOORD_0"),
+            (&uv1, "TEXCOORD_1"),
+            (&color, "COLOR_0"),
+        ] {
+            if let Some(a) = a
+                && a.count() != count
+            {
+                return Err(file.error(
+                    &format!("/accessors/{}", a.index()),
+                    format!("{name} has {} elements, POSITION {count}", a.count()),
+                    "every attribute of a primitive has one element per vertex",
+                ));
             }
         }
-    };
-    let position =
-        get(Semantic::Positions, &[(F32, Dimensions::Vec3)], "POSITION")?.ok_or_else(|| {
-            file.error(
-                &format!("{pointer}/attributes"),
-                "the primitive has no POSITION".into(),
-                "every drawn primitive needs positions",
-            )
-        })?;
-    let count = position.count();
-    let normal = get(Semantic::Normals, &[(F32, Dimensions::Vec3)], "NORMAL")?;
-    let tangent = get(Semantic::Tangents, &[(F32, Dimensions::Vec4)], "TANGENT")?;
-    let uv_types = [
-        (F32, Dimensions::Vec2),
-        (DataType::U8, Dimensions::Vec2),
-        (DataType::U16, Dimensions::Vec2),
-    ];
-    let uv0 = get(Semantic::TexCoords(0), &uv_types, "TEXCOORD_0")?;
-    let uv1 = get(Semantic::TexCoords(1), &uv_types, "TEXCOORD_1")?;
-    let color_types = [
-        (F32, Dimensions::Vec3),
-        (F32, Dimensions::Vec4),
-        (DataType::U8, Dimensions::Vec3),
-        (DataType::U8, Dimensions::Vec4),
-        (DataType::U16, Dimensions::Vec3),
-        (DataType::U16, Dimensions::Vec4),
-    ];
-    let color = get(Semantic::Colors(0), &color_types, "COLOR_0")?;
-    for (a, name) in [
-        (&normal, "NORMAL"),
-        (&tangent, "TANGENT"),
-        (&uv0, "TEXCOORD_0"),
-        (&uv1, "TEXCOORD_1"),
-        (&color, "COLOR_0"),
-    ] {
-        if let Some(a) = a
-            && a.count() != count
-        {
-            return Err(file.error(
-                &format!("/accessors/{}", a.index()),
-                format!("{name} has {} elements, POSITION {count}", a.count()),
-                "every attribute of a primitive has one element per vertex",
-            ));
+        if let Some(idx) = prim.indices() {
+            let types = [
+                (DataType::U8, Dimensions::Scalar),
+                (DataType::U16, Dimensions::Scalar),
+                (DataType::U32, Dimensions::Scalar),
+            ];
+            check_accessor(file, &idx, &types, &format!("{pointer} indices"))?;
         }
+        Ok(Attributes {
+            position: position.index(),
+            count,
+            normal: normal.is_some(),
+            tangent: tangent.is_some(),
+            uv0: uv0.is_some(),
+            uv1: uv1.is_some(),
+            color: color.is_some(),
+        })
     }
-    if let Some(idx) = prim.indices() {
-        let types = [
-            (DataType::U8, Dimensions::Scalar),
-            (DataType::U16, Dimensions::Scalar),
-            (DataType::U32, Dimensions::Scalar),
-        ];
-        check_accessor(file, &idx, &types, &format!("{pointer} indices"))?;
-    }
+}
 
+/// The streams the file has, read (positions finite, indices a whole number
+/// of triangles and in range; normals and tangents made unit length).
+fn read_streams(
+    file: &GltfFile,
+    prim: &gltf::Primitive,
+    attributes: &Attributes,
+    pointer: &str,
+) -> Result<(MeshData, Vec<u32>), GltfError> {
+    let count = attributes.count;
     let reader = prim.reader(|b| file.buffers.get(b.index()).map(Vec::as_slice));
     let unreadable = |what: &str| {
         file.error(
-            &pointer,
+            pointer,
             format!("{what} could not be read"),
             "re-export the file",
         )
@@ -255,7 +298,7 @@ pub fn read_primitive(
     };
     if data.positions.iter().flatten().any(|x| !x.is_finite()) {
         return Err(file.error(
-            &format!("/accessors/{}", position.index()),
+            &format!("/accessors/{}", attributes.position),
             "a position is not finite".into(),
             "re-export the file",
         ));
@@ -270,7 +313,7 @@ pub fn read_primitive(
     };
     if !indices.len().is_multiple_of(3) {
         return Err(file.error(
-            &pointer,
+            pointer,
             format!(
                 "{} indices is not a whole number of triangles",
                 indices.len()
@@ -285,37 +328,35 @@ pub fn read_primitive(
             "re-export the file",
         ));
     }
-    let mut generated = Vec::new();
-    let mut indices = indices;
-    if normal.is_some() {
+    if attributes.normal {
         data.normals = reader
             .read_normals()
             .ok_or_else(|| unreadable("NORMAL"))?
             .map(|n| unit_or(n, [0.0, 0.0, 1.0]))
             .collect();
     }
-    if uv0.is_some() {
+    if attributes.uv0 {
         data.uv0 = reader
             .read_tex_coords(0)
             .ok_or_else(|| unreadable("TEXCOORD_0"))?
             .into_f32()
             .collect();
     }
-    if uv1.is_some() {
+    if attributes.uv1 {
         data.uv1 = reader
             .read_tex_coords(1)
             .ok_or_else(|| unreadable("TEXCOORD_1"))?
             .into_f32()
             .collect();
     }
-    if color.is_some() {
+    if attributes.color {
         data.colors = reader
             .read_colors(0)
             .ok_or_else(|| unreadable("COLOR_0"))?
             .into_rgba_f32()
             .collect();
     }
-    if tangent.is_some() && normal.is_some() {
+    if attributes.tangent && attributes.normal {
         data.tangents = reader
             .read_tangents()
             .ok_or_else(|| unreadable("TANGENT"))?
@@ -325,9 +366,20 @@ pub fn read_primitive(
             })
             .collect();
     }
-    if normal.is_none() {
-        // glTF: without normals, flat normals — one vertex per corner. (A
-        // file's tangents without normals are dropped: MikkTSpace redoes them.)
+    Ok((data, indices))
+}
+
+/// What glTF says a renderer makes when the file lacks it: flat normals
+/// (one vertex per corner), MikkTSpace tangents; the other streams hold what
+/// the renderer binds for them.
+fn complete_streams(
+    mut data: MeshData,
+    mut indices: Vec<u32>,
+    attributes: &Attributes,
+) -> PrimitiveMesh {
+    let mut generated = Vec::new();
+    if !attributes.normal {
+        // A file's tangents without normals are dropped: MikkTSpace redoes them.
         generated.push("flat normals (the file has none)");
         data.positions = per_corner(&data.positions, &indices);
         data.uv0 = per_corner(&data.uv0, &indices);
@@ -338,7 +390,7 @@ pub fn read_primitive(
         data.normals = flat_normals(&data.positions);
     }
     if data.tangents.is_empty() {
-        if uv0.is_some() {
+        if attributes.uv0 {
             generated.push("MikkTSpace tangents (the file has none)");
             data.tangents = mikktspace_tangents(&data, &indices);
         } else {
@@ -346,12 +398,11 @@ pub fn read_primitive(
         }
     }
     let provided = Provided {
-        uv0: uv0.is_some(),
-        uv1: uv1.is_some(),
-        color: color.is_some(),
-        tangent: tangent.is_some() || uv0.is_some(),
+        uv0: attributes.uv0,
+        uv1: attributes.uv1,
+        color: attributes.color,
+        tangent: attributes.tangent || attributes.uv0,
     };
-    // The streams a file lacks hold what the renderer binds for them.
     let v = data.positions.len();
     if data.uv0.is_empty() {
         data.uv0 = vec![[0.0; 2]; v];
@@ -363,11 +414,11 @@ pub fn read_primitive(
         data.colors = vec![[1.0; 4]; v];
     }
     data.indices = indices;
-    Ok(PrimitiveMesh {
+    PrimitiveMesh {
         data,
         provided,
         generated,
-    })
+    }
 }
 
 /// `v` as it is when unit length (glTF requires unit normals and tangents:
