@@ -454,139 +454,193 @@ pub fn map_material(
     let base = color([r, g, b], a);
     let metallic = decimal(pbr.metallic_factor());
     let roughness = decimal(pbr.roughness_factor());
-    let mut losses = Vec::new();
     let mut out = MaterialMapping {
         gltf_name,
         double_sided: m.double_sided(),
         blend: m.alpha_mode() == gltf::material::AlphaMode::Blend,
         ..MaterialMapping::default()
     };
-    if let Some(sheen) = exts.get("KHR_materials_sheen") {
-        let sheen_color = rgb(sheen.get("sheenColorFactor"), [0.0; 3]);
-        let sheen_roughness = num(sheen.get("sheenRoughnessFactor"), 0.0).clamp(0.0, 1.0);
-        // velvet's sheen colour is saturate(F0 + scatter colour) with F0 =
-        // 0.04 for a dielectric base: scatter = sheenColor − 0.04.
-        let scatter = sheen_color.map(|c| (c - 0.04).max(0.0));
-        if sheen_color.iter().any(|&c| c < 0.04) {
-            losses.push(
-                "sheenColorFactor below 0.04 (velvet's sheen colour includes the base's F0 0.04)"
-                    .into(),
-            );
-        }
-        losses.push(
-            "the base layer's GGX specular lobe (velvet has only the sheen over a Lambert base)"
-                .into(),
-        );
-        if metallic > 0.0 {
-            losses.push(format!(
-                "metallicFactor {metallic} (velvet's base is drawn dielectric under the sheen)"
-            ));
-        }
-        out.material = "velvet".into();
-        out.tier = Some("reference".into());
-        out.params = vec![
-            ("base_color".into(), base),
-            ("metallic".into(), float(0.0)),
-            (
-                "smoothness".into(),
-                float(round6(1.0 - sheen_roughness * sheen_roughness)),
-            ),
-            ("scatter_color".into(), color(scatter, 1.0)),
-        ];
-        out.rule = "KHR_materials_sheen";
+    let factors = Factors {
+        base,
+        roughness,
+        metallic,
+    };
+    out.losses = if let Some(sheen) = exts.get("KHR_materials_sheen") {
+        map_sheen(sheen, factors, &mut out)
     } else if let Some(film) = exts.get("KHR_materials_iridescence") {
-        out.material = "laser".into();
-        out.tier = Some("fast".into());
-        let ior = num(film.get("iridescenceIor"), 1.3);
-        if !(1.0..=2.0).contains(&ior) {
-            losses.push(format!(
-                "iridescenceIor {ior} (laser's film_ior is in [1, 2]: clamped)"
-            ));
-        }
-        let tmin = num(film.get("iridescenceThicknessMinimum"), 100.0);
-        let tmax = num(film.get("iridescenceThicknessMaximum"), 400.0);
-        // Without a thickness texture glTF takes the maximum everywhere, as
-        // laser does without its offset map.
-        for (t, name) in [
-            (tmin, "iridescenceThicknessMinimum"),
-            (tmax, "iridescenceThicknessMaximum"),
-        ] {
-            if !(0.0..=1000.0).contains(&t) {
-                losses.push(format!(
-                    "{name} {t} nm (laser's range is 0–1000 nm: clamped)"
-                ));
-            }
-        }
-        out.params = vec![
-            ("base_color".into(), base),
-            ("roughness".into(), float(roughness)),
-            ("metallic".into(), float(metallic)),
-            (
-                "film_strength".into(),
-                float(num(film.get("iridescenceFactor"), 0.0).clamp(0.0, 1.0)),
-            ),
-            ("film_ior".into(), float(ior.clamp(1.0, 2.0))),
-            ("thickness_min".into(), float(tmin.clamp(0.0, 1000.0))),
-            ("thickness_max".into(), float(tmax.clamp(0.0, 1000.0))),
-        ];
-        out.rule = "KHR_materials_iridescence";
+        map_iridescence(film, factors, &mut out)
     } else if let Some(aniso) = exts.get("KHR_materials_anisotropy") {
-        let strength = num(aniso.get("anisotropyStrength"), 0.0).clamp(0.0, 1.0);
-        let rotation = num(aniso.get("anisotropyRotation"), 0.0);
-        if rotation != 0.0 {
-            losses.push(format!(
-                "anisotropyRotation {rotation} rad (silk's fibres run along the mesh tangent)"
-            ));
-        }
-        // glTF: α_t = mix(α, 1, s²), α_b = α. silk's GGX (Disney):
-        // α_t / α_b = 1 / (1 − 0.9 k). Match the ratio at the material's α.
-        let alpha = (roughness * roughness).max(1e-4);
-        let ratio = (alpha + (1.0 - alpha) * strength * strength) / alpha;
-        let k = ((1.0 - 1.0 / ratio) / 0.9).clamp(0.0, 1.0);
-        if k >= 1.0 && ratio > 10.0 {
-            losses.push(format!(
-                "anisotropy ratio {ratio:.1} (silk's GGX stretches at most 10:1)"
-            ));
-        }
-        out.material = "silk".into();
-        out.keywords = vec![("ANISO_MODEL".into(), toml_string("ggx"))];
-        out.params = vec![
-            ("base_color".into(), base),
-            ("smoothness".into(), float(round6(1.0 - roughness))),
-            ("metallic".into(), float(metallic)),
-            ("anisotropy".into(), float(round6(k))),
-        ];
-        out.rule = "KHR_materials_anisotropy";
+        map_anisotropy(aniso, factors, &mut out)
     } else {
-        out.material = "standard".into();
-        out.params = vec![
-            ("base_color".into(), base),
-            ("roughness".into(), float(roughness)),
-            ("metallic".into(), float(metallic)),
-        ];
-        if let Some(spec) = m.specular() {
-            // standard's specular_strength scales F0 (0.04 dielectric): glTF's
-            // specularFactor × specularColorFactor's max does the same.
-            let f = decimal(spec.specular_factor());
-            let c = spec.specular_color_factor();
-            let strength = f * decimal(c.iter().fold(0.0f32, |a, &x| a.max(x)));
-            out.params.push((
-                "specular_strength".into(),
-                float(round6(strength.clamp(0.0, 4.0))),
-            ));
-            if c[0] != c[1] || c[1] != c[2] {
-                losses.push(
-                    "specularColorFactor's hue (standard scales F0 by one number: its maximum)"
-                        .into(),
-                );
-            }
-        }
-        out.rule = "core";
-    }
-    out.losses = losses;
+        map_core(&m, factors, &mut out)
+    };
     map_textures(file, index, gltf_ref, &mut out);
     map_emission_and_alpha(&m, &mut out);
     Ok(out)
+}
+
+/// The core factors every rule starts from: base colour (as a TOML value),
+/// roughness, metallic.
+struct Factors {
+    base: String,
+    roughness: f64,
+    metallic: f64,
+}
+
+/// `KHR_materials_sheen` → velvet's reference (Charlie sheen, albedo
+/// scaling). Returns what the mapping loses.
+fn map_sheen(sheen: &Value, factors: Factors, out: &mut MaterialMapping) -> Vec<String> {
+    let Factors { base, metallic, .. } = factors;
+    let mut losses = Vec::new();
+    let sheen_color = rgb(sheen.get("sheenColorFactor"), [0.0; 3]);
+    let sheen_roughness = num(sheen.get("sheenRoughnessFactor"), 0.0).clamp(0.0, 1.0);
+    // velvet's sheen colour is saturate(F0 + scatter colour) with F0 =
+    // 0.04 for a dielectric base: scatter = sheenColor − 0.04.
+    let scatter = sheen_color.map(|c| (c - 0.04).max(0.0));
+    if sheen_color.iter().any(|&c| c < 0.04) {
+        losses.push(
+            "sheenColorFactor below 0.04 (velvet's sheen colour includes the base's F0 0.04)"
+                .into(),
+        );
+    }
+    losses.push(
+        "the base layer's GGX specular lobe (velvet has only the sheen over a Lambert base)".into(),
+    );
+    if metallic > 0.0 {
+        losses.push(format!(
+            "metallicFactor {metallic} (velvet's base is drawn dielectric under the sheen)"
+        ));
+    }
+    out.material = "velvet".into();
+    out.tier = Some("reference".into());
+    out.params = vec![
+        ("base_color".into(), base),
+        ("metallic".into(), float(0.0)),
+        (
+            "smoothness".into(),
+            float(round6(1.0 - sheen_roughness * sheen_roughness)),
+        ),
+        ("scatter_color".into(), color(scatter, 1.0)),
+    ];
+    out.rule = "KHR_materials_sheen";
+    losses
+}
+
+/// `KHR_materials_iridescence` → laser's fast tier (Belcour & Barla's film).
+fn map_iridescence(film: &Value, factors: Factors, out: &mut MaterialMapping) -> Vec<String> {
+    let Factors {
+        base,
+        roughness,
+        metallic,
+    } = factors;
+    let mut losses = Vec::new();
+    out.material = "laser".into();
+    out.tier = Some("fast".into());
+    let ior = num(film.get("iridescenceIor"), 1.3);
+    if !(1.0..=2.0).contains(&ior) {
+        losses.push(format!(
+            "iridescenceIor {ior} (laser's film_ior is in [1, 2]: clamped)"
+        ));
+    }
+    let tmin = num(film.get("iridescenceThicknessMinimum"), 100.0);
+    let tmax = num(film.get("iridescenceThicknessMaximum"), 400.0);
+    // Without a thickness texture glTF takes the maximum everywhere, as
+    // laser does without its offset map.
+    for (t, name) in [
+        (tmin, "iridescenceThicknessMinimum"),
+        (tmax, "iridescenceThicknessMaximum"),
+    ] {
+        if !(0.0..=1000.0).contains(&t) {
+            losses.push(format!(
+                "{name} {t} nm (laser's range is 0–1000 nm: clamped)"
+            ));
+        }
+    }
+    out.params = vec![
+        ("base_color".into(), base),
+        ("roughness".into(), float(roughness)),
+        ("metallic".into(), float(metallic)),
+        (
+            "film_strength".into(),
+            float(num(film.get("iridescenceFactor"), 0.0).clamp(0.0, 1.0)),
+        ),
+        ("film_ior".into(), float(ior.clamp(1.0, 2.0))),
+        ("thickness_min".into(), float(tmin.clamp(0.0, 1000.0))),
+        ("thickness_max".into(), float(tmax.clamp(0.0, 1000.0))),
+    ];
+    out.rule = "KHR_materials_iridescence";
+    losses
+}
+
+/// `KHR_materials_anisotropy` → silk's anisotropic GGX, the stretch matched.
+fn map_anisotropy(aniso: &Value, factors: Factors, out: &mut MaterialMapping) -> Vec<String> {
+    let Factors {
+        base,
+        roughness,
+        metallic,
+    } = factors;
+    let mut losses = Vec::new();
+    let strength = num(aniso.get("anisotropyStrength"), 0.0).clamp(0.0, 1.0);
+    let rotation = num(aniso.get("anisotropyRotation"), 0.0);
+    if rotation != 0.0 {
+        losses.push(format!(
+            "anisotropyRotation {rotation} rad (silk's fibres run along the mesh tangent)"
+        ));
+    }
+    // glTF: α_t = mix(α, 1, s²), α_b = α. silk's GGX (Disney):
+    // α_t / α_b = 1 / (1 − 0.9 k). Match the ratio at the material's α.
+    let alpha = (roughness * roughness).max(1e-4);
+    let ratio = (alpha + (1.0 - alpha) * strength * strength) / alpha;
+    let k = ((1.0 - 1.0 / ratio) / 0.9).clamp(0.0, 1.0);
+    if k >= 1.0 && ratio > 10.0 {
+        losses.push(format!(
+            "anisotropy ratio {ratio:.1} (silk's GGX stretches at most 10:1)"
+        ));
+    }
+    out.material = "silk".into();
+    out.keywords = vec![("ANISO_MODEL".into(), toml_string("ggx"))];
+    out.params = vec![
+        ("base_color".into(), base),
+        ("smoothness".into(), float(round6(1.0 - roughness))),
+        ("metallic".into(), float(metallic)),
+        ("anisotropy".into(), float(round6(k))),
+    ];
+    out.rule = "KHR_materials_anisotropy";
+    losses
+}
+
+/// Core metallic-roughness (and `KHR_materials_specular`) → standard.
+fn map_core(m: &gltf::Material, factors: Factors, out: &mut MaterialMapping) -> Vec<String> {
+    let Factors {
+        base,
+        roughness,
+        metallic,
+    } = factors;
+    let mut losses = Vec::new();
+    out.material = "standard".into();
+    out.params = vec![
+        ("base_color".into(), base),
+        ("roughness".into(), float(roughness)),
+        ("metallic".into(), float(metallic)),
+    ];
+    if let Some(spec) = m.specular() {
+        // standard's specular_strength scales F0 (0.04 dielectric): glTF's
+        // specularFactor × specularColorFactor's max does the same.
+        let f = decimal(spec.specular_factor());
+        let c = spec.specular_color_factor();
+        let strength = f * decimal(c.iter().fold(0.0f32, |a, &x| a.max(x)));
+        out.params.push((
+            "specular_strength".into(),
+            float(round6(strength.clamp(0.0, 4.0))),
+        ));
+        if c[0] != c[1] || c[1] != c[2] {
+            losses.push(
+                "specularColorFactor's hue (standard scales F0 by one number: its maximum)".into(),
+            );
+        }
+    }
+    out.rule = "core";
+    losses
 }
 
 /// Emission, `alphaMode` `MASK` and `doubleSided`: standard carries all
