@@ -296,35 +296,62 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
             ));
         }
     }
-    for t in &used {
+    transform_losses(file, &used, tiling, &mut out.losses);
+    map_emissive_texture(file, &json, gltf_ref, tiling, out);
+    extension_texture_losses(&json, &mut out.losses);
+}
+
+/// What the maps' texture references lose: rotation, a transform other
+/// than the base map's (every map is read with its tiling), another UV set,
+/// a sampler other than trilinear repeat.
+fn transform_losses(
+    file: &GltfFile,
+    used: &[&TextureRef],
+    tiling: Option<[f64; 4]>,
+    losses: &mut Vec<String>,
+) {
+    for t in used {
         if t.rotation != 0.0 {
-            out.losses.push(format!(
+            losses.push(format!(
                 "{}'s KHR_texture_transform rotation {} rad (weft's tiling is scale and offset)",
                 t.key, t.rotation
             ));
         }
         // Every map is read with the base map's tiling (identity without one).
         if t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
-            out.losses.push(format!(
+            losses.push(format!(
                 "{}'s KHR_texture_transform (the material's maps share the base colour texture's)",
                 t.key
             ));
         }
         if t.tex_coord != 0 {
-            out.losses.push(format!(
+            losses.push(format!(
                 "{}'s texCoord {} (weft's materials read TEXCOORD_0)",
                 t.key, t.tex_coord
             ));
         }
-        sampler_losses(file, t, &mut out.losses);
+        sampler_losses(file, t, losses);
     }
+}
+
+/// glTF's emissive texture → standard's `emissive_map` (glTF multiplies the
+/// texture by emissiveFactor, default black: a texture without a factor
+/// emits nothing).
+fn map_emissive_texture(
+    file: &GltfFile,
+    json: &Value,
+    gltf_ref: &str,
+    tiling: Option<[f64; 4]>,
+    out: &mut MaterialMapping,
+) {
+    let material = out.material.clone();
     let emits = json
         .get("emissiveFactor")
         .and_then(Value::as_array)
         .is_some_and(|f| f.iter().any(|x| x.as_f64().unwrap_or(0.0) > 0.0));
     // glTF multiplies the texture by emissiveFactor (default black): a
     // texture without a factor emits nothing.
-    if let Some(t) = texture_ref(&json, "emissiveTexture").filter(|_| emits) {
+    if let Some(t) = texture_ref(json, "emissiveTexture").filter(|_| emits) {
         if material == "standard" {
             out.params.push((
                 "emissive_map".into(),
@@ -343,6 +370,11 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
             ));
         }
     }
+}
+
+/// Textures of extensions whose factors are mapped (or not at all): named as
+/// losses, since only the factors are carried.
+fn extension_texture_losses(json: &Value, losses: &mut Vec<String>) {
     for (has, name) in [
         (
             json.pointer("/extensions/KHR_materials_specular/specularTexture")
@@ -356,8 +388,7 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
         ),
     ] {
         if has {
-            out.losses
-                .push(format!("{name} (not carried: the factor alone is used)"));
+            losses.push(format!("{name} (not carried: the factor alone is used)"));
         }
     }
     if let Some(Value::Object(exts)) = json.get("extensions") {
@@ -367,7 +398,7 @@ fn map_textures(file: &GltfFile, index: usize, gltf_ref: &str, out: &mut Materia
         {
             if let Value::Object(fields) = v {
                 for k in fields.keys().filter(|k| k.ends_with("Texture")) {
-                    out.losses.push(format!("{ext}.{k} (not carried)"));
+                    losses.push(format!("{ext}.{k} (not carried)"));
                 }
             }
         }
