@@ -477,6 +477,7 @@ fn furnace_lobes() -> (Vec<String>, Vec<String>) {
 
 #[test]
 fn lobes_conserve_energy() {
+    let _gpu = weft_tests::gpu_serial();
     let (known, unknown) = furnace_lobes();
     if !known.is_empty() {
         println!(
@@ -520,6 +521,7 @@ fn white_environment() -> EnvironmentMaps {
 
 #[test]
 fn standard_white_furnace() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let luts = Luts::load_dir(&generated).unwrap();
     let gpu = Gpu::new().unwrap_or_else(|e| panic!("the energy check needs a Vulkan adapter: {e}"));
@@ -629,6 +631,7 @@ fn standard_white_furnace() {
 /// table's E ≤ 1) and is 1 − F0 at normal view.
 #[test]
 fn standard_direct_diffuse_weight_against_lambert() {
+    let _gpu = weft_tests::gpu_serial();
     let columns = [0.045f32, 0.1, 0.3, 0.5, 1.0];
     println!("n.v \\ r | {columns:?}");
     for nv in [1.0f32, 0.5, 0.2, 0.1, 0.05, 0.01] {

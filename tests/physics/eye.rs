@@ -212,6 +212,7 @@ fn distance(a: [f64; 2], b: [f64; 2]) -> f64 {
 
 #[test]
 fn the_reference_matches_an_f64_ray_trace_at_every_view_angle() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let mut cases = Vec::new();
     for theta in [0.0, 15.0, 30.0, 45.0, 60.0, 75.0] {
@@ -271,6 +272,7 @@ fn the_reference_matches_an_f64_ray_trace_at_every_view_angle() {
 
 #[test]
 fn without_refraction_the_iris_is_seen_along_the_straight_line() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let (z_i, _, _) = cornea();
     let cases: Vec<Case> = [0.0, 30.0, 60.0]
@@ -301,6 +303,7 @@ fn without_refraction_the_iris_is_seen_along_the_straight_line() {
 
 #[test]
 fn parallax_agrees_with_refraction_at_normal_incidence_and_diverges_towards_grazing() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let angles = [0.0, 5.0, 15.0, 30.0, 45.0, 60.0, 75.0];
     let points = eyeball_points();
@@ -371,6 +374,7 @@ fn parallax_agrees_with_refraction_at_normal_incidence_and_diverges_towards_graz
 
 #[test]
 fn the_cornea_magnifies_the_iris() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let cases: Vec<Case> = eyeball_points()
         .into_iter()

@@ -131,6 +131,7 @@ fn mirrored(img: &HdrImage) -> HdrImage {
 
 #[test]
 fn a_texel_is_lit_while_the_light_stays_inside_its_threshold() {
+    let _gpu = weft_tests::gpu_serial();
     let mut s = Setup::new();
     // Threshold 0.4 everywhere (102/255), a hard edge.
     let flat = || grey_map(4, 4, |_| 0.4);
@@ -161,6 +162,7 @@ fn a_texel_is_lit_while_the_light_stays_inside_its_threshold() {
 
 #[test]
 fn the_shadow_mask_multiplies_the_sdf_result() {
+    let _gpu = weft_tests::gpu_serial();
     let mut s = Setup::new();
     let flat = || grey_map(4, 4, |_| 1.0);
     let l = light(0.6, -1.0);
@@ -176,6 +178,7 @@ fn the_shadow_mask_multiplies_the_sdf_result() {
 
 #[test]
 fn the_map_is_read_mirrored_for_a_light_from_the_right() {
+    let _gpu = weft_tests::gpu_serial();
     let mut s = Setup::new();
     // Not symmetric: high thresholds (lit long) towards u = 0, the −X side.
     let ramp = || grey_map(64, 4, |u| 1.05 - u);

@@ -20,6 +20,7 @@ fn meta_path() -> PathBuf {
 
 #[test]
 fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
+    let _gpu = weft_tests::gpu_serial();
     let material = Material::load(meta_path()).expect("generated/fur");
     let meta = material.metadata();
     assert_eq!(instance_parameter(meta), Some("shell_count"));
@@ -69,6 +70,7 @@ fn shells_are_one_instanced_transparent_pass_over_an_opaque_skin() {
 
 #[test]
 fn more_shells_converge_to_the_reference_count() {
+    let _gpu = weft_tests::gpu_serial();
     let options = ShellOptions {
         sizes: vec![96],
         counts: vec![4, 32],
@@ -106,6 +108,7 @@ fn more_shells_converge_to_the_reference_count() {
 /// silhouette band.
 #[test]
 fn the_fin_experiment_draws_fins_at_the_silhouette_only() {
+    let _gpu = weft_tests::gpu_serial();
     use weft_golden::fins::{FinOpacity, FinRule, build, scene_with_fins};
     use weft_golden::silhouette::sphere_band;
     let repo = generated().parent().unwrap().to_path_buf();

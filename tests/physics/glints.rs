@@ -32,6 +32,7 @@ fn bench() -> GlintBench {
 /// density 0.9) in `weft_golden::glints`.
 #[test]
 fn glint_energy_converges_to_the_smooth_lobe() {
+    let _gpu = weft_tests::gpu_serial();
     let rows = bench().energy().expect("energy renders");
     assert_eq!(
         rows.len(),
@@ -69,6 +70,7 @@ fn glint_energy_converges_to_the_smooth_lobe() {
 
 #[test]
 fn no_nan_at_grazing_and_density_extremes() {
+    let _gpu = weft_tests::gpu_serial();
     let extremes = bench().extremes().expect("extreme renders");
     assert_eq!(
         extremes.rows.len(),
@@ -99,6 +101,7 @@ fn no_nan_at_grazing_and_density_extremes() {
 /// `weft_golden::glints` with their reasons.
 #[test]
 fn a_half_pixel_camera_shift_does_not_make_the_surface_flicker() {
+    let _gpu = weft_tests::gpu_serial();
     let pan = bench().pan().expect("pan renders");
     assert_eq!(pan.rows.len(), 2 * 3, "sphere, cloth × 3 tiers");
     let mut failures = Vec::new();
@@ -154,6 +157,7 @@ fn a_half_pixel_camera_shift_does_not_make_the_surface_flicker() {
 /// and shading alone) is printed.
 #[test]
 fn distant_glitter_does_not_alias_into_noise() {
+    let _gpu = weft_tests::gpu_serial();
     let rows = bench().distant().expect("distant renders");
     assert_eq!(rows.len(), 2 * 3, "sphere, cloth × 3 tiers");
     let mut failures = Vec::new();

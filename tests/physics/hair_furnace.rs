@@ -366,6 +366,7 @@ const S_TOLERANCE: f64 = 5e-3;
 
 #[test]
 fn wgsl_matches_an_independent_f64_evaluation() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let fibres = [
         BROWN,
@@ -441,6 +442,7 @@ fn wgsl_matches_an_independent_f64_evaluation() {
 /// converged average (measured worst 0.6 %; 32 offsets: 3.4 % at β_n 0.15).
 #[test]
 fn the_reference_average_over_the_fibre_width_converges() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let mut points = Vec::new();
     for beta_n in [0.15, 0.3, 0.6] {
@@ -553,6 +555,7 @@ fn assert_furnace(label: &str, cases: &[FurnaceCase]) {
 /// 0.5, 0.7, 0.9}, ω_o at three inclinations.
 #[test]
 fn white_furnace() {
+    let _gpu = weft_tests::gpu_serial();
     let betas = [0.1, 0.3, 0.5, 0.7, 0.9];
     let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
     let mut cases = Vec::new();
@@ -572,6 +575,7 @@ fn white_furnace() {
 /// grazing ω_o with β_m 0.1.
 #[test]
 fn white_furnace_with_tilted_scales() {
+    let _gpu = weft_tests::gpu_serial();
     let betas = [0.1, 0.5, 0.9];
     let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
     let mut cases = Vec::new();
@@ -647,6 +651,7 @@ fn f64_longitudinal_peak(fibre: &Fibre, theta_o: f64, lobe: usize) -> f64 {
 /// bends the shift, within ±1.5α of -4α: the model gives -4.4α at β_m 0.2).
 #[test]
 fn cuticle_tilt_moves_r_and_trt_highlights_as_pbrt() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let alpha = 3.0;
     let beta_m = 0.2;
@@ -695,6 +700,7 @@ fn cuticle_tilt_moves_r_and_trt_highlights_as_pbrt() {
 /// A_0, f64), which absorption cannot remove.
 #[test]
 fn absorption_removes_energy() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let o = unit(25.0, 0.0);
     let i = unit(-25.0, 90.0);

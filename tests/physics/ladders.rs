@@ -44,6 +44,7 @@ fn generated() -> PathBuf {
 
 #[test]
 fn approximation_tiers_stay_within_the_target_over_the_grid() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = generated();
     let luts = Luts::load_dir(&generated).expect("generated/ LUTs");
     let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
@@ -112,6 +113,7 @@ fn approximation_tiers_stay_within_the_target_over_the_grid() {
 
 #[test]
 fn every_tier_is_the_reference_an_approximation_or_a_look() {
+    let _gpu = weft_tests::gpu_serial();
     for (_, meta) in weft_golden::materials(&generated()).expect("generated/") {
         let t = &meta.tiers;
         for tier in &t.values {
@@ -139,6 +141,7 @@ fn every_tier_is_the_reference_an_approximation_or_a_look() {
 
 #[test]
 fn measured_tier_tables_are_the_reports() {
+    let _gpu = weft_tests::gpu_serial();
     use weft_golden::cost_tables::{choosing_tables, ladder_table, model_section};
     use weft_golden::shading::replace_marked;
     let repo = generated().parent().unwrap().to_path_buf();

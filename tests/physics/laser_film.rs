@@ -114,6 +114,7 @@ fn f64x3(v: [f32; 3]) -> [f64; 3] {
 
 #[test]
 fn cmf_fit_has_an_equal_energy_white() {
+    let _gpu = weft_tests::gpu_serial();
     // CIE 1931's CMFs integrate to the same value for X, Y and Z (the
     // equal-energy white is x = y = 1/3); the fit must keep that within 1 %,
     // or every film colour would carry a cast.
@@ -135,6 +136,7 @@ fn cmf_fit_has_an_equal_energy_white() {
 
 #[test]
 fn spectral_reference_matches_an_independent_f64_airy() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let source = thin_film_source();
     let points: Vec<(f32, f32)> = [0.05f32, 0.3, 0.6, 0.9, 1.0]
@@ -177,6 +179,7 @@ const FAST_CHART_FLIP: f32 = 0.05;
 
 #[test]
 fn reference_converges_and_fast_stays_within_its_bar() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let source = thin_film_source();
     for case in CASES {
@@ -216,6 +219,7 @@ fn reference_converges_and_fast_stays_within_its_bar() {
 
 #[test]
 fn zero_thickness_is_the_bare_base() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let source = thin_film_source();
     let dielectric = FilmCase {
@@ -244,6 +248,7 @@ fn zero_thickness_is_the_bare_base() {
 
 #[test]
 fn extremes_stay_finite_and_in_range() {
+    let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
     let source = thin_film_source();
     let stacks = [
@@ -320,6 +325,7 @@ fn vec4_const(source: &str, name: &str) -> [f64; 4] {
 
 #[test]
 fn fast_sensitivity_gaussians_fit_the_reference_cmfs() {
+    let _gpu = weft_tests::gpu_serial();
     // The fast tier's Gaussians (materials/laser/fit_cmf.py) against the
     // reference's CMFs per unit wavenumber, over 380-780 nm: relative RMS
     // within 1.1 % for x, y and z (the fit: 0.8 %, 0.3 %, 1.0 %). A stale or

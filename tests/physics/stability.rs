@@ -54,6 +54,7 @@ fn sweep(renderer: &mut Renderer, probe: &Probe, metas: &[PathBuf]) -> SweepRepo
 
 #[test]
 fn every_shipped_material_is_finite_non_negative_and_bounded() {
+    let _gpu = weft_tests::gpu_serial();
     let started = Instant::now();
     let generated = repo().join("generated");
     let mut renderer = renderer(&generated);
@@ -86,6 +87,7 @@ fn every_shipped_material_is_finite_non_negative_and_bounded() {
 /// and is lit wherever N·V and N·L are clearly positive.
 #[test]
 fn the_probe_covers_every_tile() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let mut renderer = renderer(&generated);
     let probe = probe();
@@ -114,6 +116,7 @@ fn the_probe_covers_every_tile() {
 /// bends the normal) nowhere N·V >= 1e-4.
 #[test]
 fn a_nan_at_grazing_angles_is_found() {
+    let _gpu = weft_tests::gpu_serial();
     let tmp = tempfile::tempdir().unwrap();
     let materials = tmp.path().join("materials");
     copy_dir(&repo().join("materials/lib"), &materials.join("lib"));

@@ -139,6 +139,7 @@ const FROM_RIGHT: [f32; 3] = [1.0, 0.0, 0.4];
 
 #[test]
 fn the_shadow_falls_only_on_the_stencil_bit_darkens_once_and_moves_with_the_light() {
+    let _gpu = weft_tests::gpu_serial();
     let (left, on_scene, off_scene) = pictures(FROM_LEFT);
     let (right, _, _) = pictures(FROM_RIGHT);
 

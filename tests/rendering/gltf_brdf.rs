@@ -165,6 +165,7 @@ fn material_from(
 
 #[test]
 fn a_core_pbr_gltf_renders_the_gltf_specifications_brdf() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let luts = Luts::load_dir(&generated).unwrap();
     let gpu = Gpu::new().unwrap_or_else(|e| {
@@ -352,6 +353,7 @@ fn sheen_albedo(mu: f64, sheen_roughness: f64) -> f64 {
 /// a declared loss); both differences are printed and quoted in docs/gltf.md.
 #[test]
 fn a_sheen_gltf_renders_the_sample_renderers_sheen() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let luts = Luts::load_dir(&generated).unwrap();
     let gpu = Gpu::new().unwrap_or_else(|e| {

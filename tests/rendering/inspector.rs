@@ -313,6 +313,7 @@ fn save(image: &HdrImage, name: &str) -> PathBuf {
 
 #[test]
 fn default_render_matches_weft_preview_for_every_material() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     let names: Vec<String> = page
         .server
@@ -372,6 +373,7 @@ fn default_render_matches_weft_preview_for_every_material() {
 
 #[test]
 fn panel_controls_drive_the_preview() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     let before = page.capture();
@@ -501,6 +503,7 @@ fn panel_controls_drive_the_preview() {
 
 #[test]
 fn edits_on_disk_reach_the_page_and_broken_edits_show_their_diagnostic() {
+    let _gpu = weft_tests::gpu_serial();
     let dir = tempfile::tempdir().unwrap();
     copy_dir(&repo().join("materials"), dir.path());
     let page = Page::open(dir.path());
@@ -551,6 +554,7 @@ fn edits_on_disk_reach_the_page_and_broken_edits_show_their_diagnostic() {
 
 #[test]
 fn page_bakes_curves_and_gradients_byte_for_byte_like_weft_meta() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     // A fixed pseudo-random set of curves and gradients, plus edge cases.
     let mut seed = 0x2545_f491_4f6c_dd1du64;
@@ -622,6 +626,7 @@ fn page_bakes_curves_and_gradients_byte_for_byte_like_weft_meta() {
 
 #[test]
 fn export_is_deterministic_and_complete() {
+    let _gpu = weft_tests::gpu_serial();
     let a = tempfile::tempdir().unwrap();
     let b = tempfile::tempdir().unwrap();
     let options = ServeOptions {
@@ -686,6 +691,7 @@ fn walk(root: &Path, dir: &Path, out: &mut Vec<(String, Vec<u8>)>) {
 /// tiling/offset member.
 #[test]
 fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("tests/fixtures/materials"));
     page.select("switches");
     let flat = page.capture();
@@ -867,6 +873,7 @@ fn serve_static(root: PathBuf) -> u16 {
 /// event stream), under a sub-folder of a site.
 #[test]
 fn exported_inspector_works_from_a_static_server() {
+    let _gpu = weft_tests::gpu_serial();
     let site = tempfile::tempdir().unwrap();
     let options = ServeOptions {
         reports: Some(repo().join("generated/reports")),
@@ -923,6 +930,7 @@ fn preview_lit(material: &str, light: [f32; 3]) -> HdrImage {
 /// `weft preview --light` of the same direction.
 #[test]
 fn light_direction_moves_the_sun_and_matches_weft_preview() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     let default_light = page.capture();
@@ -1139,6 +1147,7 @@ fn halves(a: &HdrImage, b: &HdrImage) -> [f64; 4] {
 /// the panorama's bright spot is reflected.
 #[test]
 fn cube_parameter_takes_an_equirectangular_panorama() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     page.eval(
@@ -1251,6 +1260,7 @@ fn cube_parameter_takes_an_equirectangular_panorama() {
 /// right way up, not the built-in black default.
 #[test]
 fn fixture_texture_file_is_fetched_and_bound_the_right_way_up() {
+    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("tests/fixtures/materials"));
     page.select("imaged");
     let img = page.capture();

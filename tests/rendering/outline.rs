@@ -25,6 +25,7 @@ fn velvet() -> weft_meta::MaterialMetadata {
 
 #[test]
 fn the_outline_pass_exists_exactly_where_its_keyword_is_on() {
+    let _gpu = weft_tests::gpu_serial();
     let meta = velvet();
     let outline = meta
         .passes
@@ -136,6 +137,7 @@ fn assert_width(what: &str, (left, right): (usize, usize), expected: f32) {
 
 #[test]
 fn the_outline_is_as_wide_as_asked_in_pixels_at_any_distance_up_to_the_clamp() {
+    let _gpu = weft_tests::gpu_serial();
     let mut s = Setup::new();
     for width in [2.0f32, 6.0] {
         let w = format!("{width}");

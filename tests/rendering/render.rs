@@ -69,6 +69,7 @@ fn compare(goldens: &Path, case: &Case, ldr: &[u8], write_artifacts: bool) -> Re
 
 #[test]
 fn every_material_matches_its_goldens() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let goldens = repo().join("tests/goldens");
     let mut h = harness(&generated);
@@ -108,6 +109,7 @@ fn every_material_matches_its_goldens() {
 /// The WGSL and the SPIR-V of the same variant render the same image.
 #[test]
 fn wgsl_and_spirv_render_the_same_images() {
+    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let mut h = harness(&generated);
     for (meta_path, meta) in materials(&generated).unwrap() {
@@ -137,6 +139,7 @@ fn wgsl_and_spirv_render_the_same_images() {
 /// its golden, while the unperturbed copy passes.
 #[test]
 fn perturbed_shaders_fail_their_goldens() {
+    let _gpu = weft_tests::gpu_serial();
     let goldens = repo().join("tests/goldens");
     // (what, file, original text, replacement, case name)
     let perturbations = [
@@ -257,6 +260,7 @@ const TANGENT_FLIPPED_GOLDEN_MIN: f32 = 0.05;
 ///   built-in meshes' tangents and not with w negated.
 #[test]
 fn the_stated_tangent_frame_is_the_one_drawn() {
+    let _gpu = weft_tests::gpu_serial();
     use weft_render::{Scene, TextureValue, math};
     let generated = repo().join("generated");
     let goldens = repo().join("tests/goldens");

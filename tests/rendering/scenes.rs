@@ -84,6 +84,7 @@ fn fold_error(specialised: &HdrImage, other: &HdrImage) -> f64 {
 
 #[test]
 fn folding_keeps_the_picture() {
+    let _gpu = weft_tests::gpu_serial();
     let mut h = harness();
     for (name, scene) in scenes() {
         let specialised = render(&mut h, &name, &scene, &SceneShaders::Specialised);
@@ -130,6 +131,7 @@ fn contrasting(c: &serde_json::Value) -> serde_json::Value {
 /// instance's shader. Both change the picture beyond the threshold.
 #[test]
 fn a_wrong_folded_constant_or_shader_changes_the_picture() {
+    let _gpu = weft_tests::gpu_serial();
     let mut h = harness();
     let materials: BTreeMap<String, weft_meta::MaterialMetadata> =
         weft_golden::materials(&generated())
@@ -251,6 +253,7 @@ fn compare_golden(name: &str, ldr: &[u8]) -> Result<f32, String> {
 
 #[test]
 fn every_scene_matches_its_golden() {
+    let _gpu = weft_tests::gpu_serial();
     let mut h = harness();
     let scenes = scenes();
     let mut failures = Vec::new();
@@ -296,6 +299,7 @@ fn project(camera: &weft_render::Camera, p: [f32; 3], (w, h): (u32, u32)) -> (u3
 /// its passes at least once and covers the pixel its origin projects to.
 #[test]
 fn drawing_builds_no_pipeline_and_every_instance_draws() {
+    let _gpu = weft_tests::gpu_serial();
     let mut h = harness();
     let size = (128, 96);
     let options = weft_golden::scenes::render_options(size, BLACK);
@@ -348,6 +352,7 @@ fn drawing_builds_no_pipeline_and_every_instance_draws() {
 /// (the chooser caches its renders), so this compares the compiler's output.
 #[test]
 fn scene_builds_are_byte_deterministic() {
+    let _gpu = weft_tests::gpu_serial();
     let chooser = weft_auto::LavapipeTierChooser::new(None)
         .unwrap()
         .with_reports_dir(generated().join("reports"));
@@ -382,6 +387,7 @@ fn scene_builds_are_byte_deterministic() {
 /// is the renderer's `Light::default()`; and the renderer draws with it.
 #[test]
 fn every_scene_states_the_light_it_is_drawn_with() {
+    let _gpu = weft_tests::gpu_serial();
     use weft_meta::scene::{DEFAULT_LIGHT_COLOR, DEFAULT_LIGHT_DIRECTION};
     let default = weft_render::Light::default();
     assert_eq!(default.direction, DEFAULT_LIGHT_DIRECTION.map(|c| c as f32));
