@@ -1,7 +1,7 @@
 //! The physics of the shipped materials, each against a reference written
 //! from its paper or a peer's published formulas (not from weft's WGSL):
 //! furnaces, fibre and cloth BSDFs, films, glints, skin, eyes, faces, fur,
-//! tier ladders and the numerical-stability sweep.
+//! and tier ladders (the stability sweep is its own binary, `stability`).
 
 mod energy;
 mod eye;
@@ -14,4 +14,3 @@ mod laser_film;
 mod microcylinder;
 mod silk_energy;
 mod skin;
-mod stability;

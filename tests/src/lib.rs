@@ -1,6 +1,6 @@
 //! The one support library of weft's integration tests. The tests are four
 //! binaries by area (`contract/`, `inputs/`, `physics/`, `rendering/`, each a
-//! `main.rs` with one module per concern); what more than one of them needs
+//! `main.rs` with one module per concern, and `stability/` alone); what more than one of them needs
 //! lives here, written once: where the workspace is, tree copies, and the
 //! readers of docs, schemas and shader lists. The crates' own
 //! integration tests use it too (as a dev-dependency). GPU set-up and image

@@ -1,7 +1,7 @@
 //! Numerical-stability probe: evaluates a material's fragment stage for many
 //! exact geometric configurations (N, T, V, L) in one small render, and
 //! sweeps every variant and a parameter grid derived from the metadata
-//! (`weft stability`, `tests/physics/stability.rs`).
+//! (`weft stability`, `tests/stability/main.rs`).
 //!
 //! # The probe scene
 //!
