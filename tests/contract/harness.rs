@@ -100,6 +100,7 @@ pub fn options() -> RenderOptions {
         // engine may do); the f16 files are compared with them in
         // tests/contract/half_precision.rs.
         f32_fallback: true,
+        uniforms_as_storage: false,
     }
 }
 

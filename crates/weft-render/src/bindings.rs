@@ -133,7 +133,9 @@ impl Renderer {
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("material"),
                 contents: &contents,
+                // STORAGE: `RenderOptions::uniforms_as_storage` binds it so.
                 usage: wgpu::BufferUsages::UNIFORM
+                    | wgpu::BufferUsages::STORAGE
                     | wgpu::BufferUsages::COPY_DST
                     | wgpu::BufferUsages::COPY_SRC,
             }))

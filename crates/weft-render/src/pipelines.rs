@@ -24,6 +24,8 @@ pub(crate) struct ShaderInput<'a> {
     pub shader: &'a VariantShader,
     /// Draw a half-precision shader's f32 files even when the device has `shader-f16`.
     pub f32_fallback: bool,
+    /// `RenderOptions::uniforms_as_storage` (WGSL only).
+    pub uniforms_as_storage: bool,
     /// `Some`: this SPIR-V file (relative to `dir`); `None`: the WGSL file.
     pub spirv_file: Option<String>,
     /// Values of the WGSL `override`s.
@@ -78,10 +80,11 @@ impl Renderer {
             })
             .collect();
         let key = format!(
-            "{}|{:?}|{}|{:?}|{:?}|{:?}|{:?}",
+            "{}|{:?}|{}|{}|{:?}|{:?}|{:?}|{:?}",
             input.cache_id,
             input.language(),
             input.f32_fallback,
+            input.uniforms_as_storage,
             format,
             input.constants,
             input.spirv_file,
@@ -162,9 +165,12 @@ fn shader_source(gpu: &Gpu, input: &ShaderInput) -> Result<wgpu::ShaderSource<'s
                 })?
                 .path;
             let path = input.dir.join(rel);
-            let text =
+            let mut text =
                 weft_meta::files::read_regular_string(&path, weft_meta::files::MAX_TEXT_BYTES)
                     .map_err(io_err(&path))?;
+            if input.uniforms_as_storage {
+                text = text.replace("var<uniform>", "var<storage, read>");
+            }
             wgpu::ShaderSource::Wgsl(text.into())
         }
         Some(rel) => {
@@ -221,7 +227,15 @@ fn build_pipelines(
                 .bindings
                 .iter()
                 .filter(|b| b.group == g)
-                .map(binding_layout_entry)
+                .map(|b| {
+                    let entry = binding_layout_entry(b)?;
+                    Ok(
+                        match input.uniforms_as_storage && input.spirv_file.is_none() {
+                            true => uniform_as_storage(entry),
+                            false => entry,
+                        },
+                    )
+                })
                 .collect::<Result<Vec<_>>>()?;
             let layout = gpu.checked("bind group layout", || {
                 device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -383,6 +397,19 @@ pub(crate) fn spirv_file_for(
                 "variant `{id}` has no SPIR-V file for keywords {keywords:?}"
             ))
         })
+}
+
+/// A uniform-buffer layout entry as a read-only storage buffer
+/// (`RenderOptions::uniforms_as_storage`); other entries unchanged.
+fn uniform_as_storage(mut entry: wgpu::BindGroupLayoutEntry) -> wgpu::BindGroupLayoutEntry {
+    if let wgpu::BindingType::Buffer {
+        ty: ty @ wgpu::BufferBindingType::Uniform,
+        ..
+    } = &mut entry.ty
+    {
+        *ty = wgpu::BufferBindingType::Storage { read_only: true };
+    }
+    entry
 }
 
 /// A layout entry from a binding kind alone: only for weft-render's own

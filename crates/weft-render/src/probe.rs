@@ -106,6 +106,8 @@ impl Probe {
             format: ColorFormat::Rgba32Float,
             language: ShaderLanguage::Wgsl,
             background: Background::Color([0.0; 4]),
+            // Bounded memory on lavapipe (see the field's doc).
+            uniforms_as_storage: true,
             ..RenderOptions::default()
         }
     }

@@ -98,6 +98,14 @@ pub struct RenderOptions {
     /// with `shader-f16`, where its `f16_files` are drawn by default (the
     /// stability sweep compares the two).
     pub f32_fallback: bool,
+    /// Bind the WGSL's `var<uniform>` blocks as read-only storage buffers
+    /// (same WGSL layout, same arithmetic). The stability probe sets it:
+    /// Mesa 22.3's lavapipe inlines uniform values that decide a branch
+    /// into a freshly JIT-compiled shader at every pipeline or bind-group
+    /// change and never frees it (about 0.75 MB a draw for `standard`), so
+    /// a sweep of a million draws exhausted memory; storage buffers are
+    /// never inlined. Ignored for SPIR-V.
+    pub uniforms_as_storage: bool,
 }
 
 impl Default for RenderOptions {
@@ -111,6 +119,7 @@ impl Default for RenderOptions {
             exposure: 1.0,
             time: 0.0,
             f32_fallback: false,
+            uniforms_as_storage: false,
         }
     }
 }
@@ -252,6 +261,15 @@ impl Renderer {
         self.pipelines_created
     }
 
+    /// Drops the cached material pipelines (prepared materials keep theirs
+    /// alive until they are dropped). A long run over many materials — the
+    /// stability sweep — calls it between materials: on lavapipe every
+    /// pipeline holds its JIT-compiled code, and keeping all of a library's
+    /// pipelines grew one process past 20 GiB.
+    pub fn release_pipelines(&mut self) {
+        self.cache.clear();
+    }
+
     /// Replaces the environment (prepared materials keep the old one).
     pub fn set_environment(&mut self, env: &EnvironmentMaps) -> Result<()> {
         self.env = upload_environment(&self.gpu, env);
@@ -307,6 +325,7 @@ impl Renderer {
             dir: material.dir(),
             shader,
             f32_fallback: options.f32_fallback,
+            uniforms_as_storage: options.uniforms_as_storage,
             spirv_file: match options.language {
                 ShaderLanguage::Wgsl => None,
                 ShaderLanguage::SpirV => {

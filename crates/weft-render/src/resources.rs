@@ -328,7 +328,10 @@ pub(crate) fn uniform_buffer(gpu: &Gpu, label: &str, size: u64) -> wgpu::Buffer 
     gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
         size,
-        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        // STORAGE: `RenderOptions::uniforms_as_storage` binds it so.
+        usage: wgpu::BufferUsages::UNIFORM
+            | wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: false,
     })
 }

@@ -451,6 +451,7 @@ impl Renderer {
             dir: &scene.dir,
             shader,
             f32_fallback: options.f32_fallback,
+            uniforms_as_storage: options.uniforms_as_storage,
             spirv_file: match options.language {
                 ShaderLanguage::Wgsl => None,
                 ShaderLanguage::SpirV => Some(spirv_file_for(shader, &entry.id, &inst.keywords)?),

@@ -294,6 +294,8 @@ pub fn sweep_material(
             }
             progress(summary.renders, total);
         }
+        // This job's pipelines are not drawn again: keep memory flat.
+        renderer.release_pipelines();
     }
     report.materials.push(summary);
     Ok(())
