@@ -29,9 +29,27 @@ use weft_render::{Light, Luts, Material, Renderer};
 use weft_tests::{copy_dir, repo};
 
 fn renderer(generated: &Path) -> Renderer {
+    single_threaded_lavapipe();
     let luts = Luts::load_dir(generated).unwrap();
     sweep_renderer(&luts)
         .unwrap_or_else(|e| panic!("the stability sweep needs a Vulkan adapter: {e}"))
+}
+
+/// The sweep draws 2 x 2-pixel tiles, where llvmpipe's rasteriser threads
+/// spend more time waiting at their barriers than drawing: laser's sweep
+/// took 21.7 s with two threads and 13.6 s with none (`LP_NUM_THREADS=0`,
+/// which draws on the calling thread; same pixels). An `LP_NUM_THREADS`
+/// already set is kept.
+fn single_threaded_lavapipe() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        if std::env::var_os("LP_NUM_THREADS").is_none() {
+            // SAFETY: every test here calls this holding `gpu_serial`
+            // before it creates a device, so no other thread is inside
+            // Mesa (the only reader of the environment through libc).
+            unsafe { std::env::set_var("LP_NUM_THREADS", "0") };
+        }
+    });
 }
 
 fn probe() -> Probe {
