@@ -42,13 +42,15 @@ pub fn copy_dir(from: &Path, to: &Path) {
     }
 }
 
-/// One GPU-using test at a time within a test binary (the `physics` and
-/// `rendering` binaries call this first in every test). With the tests of
-/// many modules in one process, Mesa 22.3's lavapipe corrupted its heap
-/// while the stability sweep ran beside other modules' devices ("free():
-/// corrupted unsorted chunks", CI, 2026-11-27); separate binaries never ran
-/// them side by side. lavapipe spreads each draw over every core, so running
-/// them one by one costs little wall time.
+/// One GPU-using test at a time within a test binary (the `physics`,
+/// `rendering` and `stability` binaries call this first in every test).
+/// With the tests of many modules in one process, Mesa 22.3's lavapipe
+/// corrupted its heap while the stability sweep ran beside other modules'
+/// devices ("free(): corrupted unsorted chunks", CI, 2026-11-27; the sweep
+/// was then leaking gigabytes of JIT-compiled shaders, see
+/// docs/performance.md "Fresh clone"); separate binaries never ran them side
+/// by side. lavapipe spreads each draw over every core, so running them one
+/// by one costs little wall time.
 pub fn gpu_serial() -> std::sync::MutexGuard<'static, ()> {
     static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
     // A test that panicked holding it leaves nothing to repair.
