@@ -213,9 +213,9 @@ fn every_hlsl_entry_point_compiles_with_fxc_and_its_registers_match() {
 /// at once.
 static SETUP: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
-/// Every entry point (and the negative controls) through `MODES[mode]`.
-fn compiles_in_mode(mode: usize) {
-    let modes: Vec<&Mode> = vec![&MODES[mode]];
+/// Every entry point (and the negative controls) through `MODES[index]`.
+fn compiles_in_mode(index: usize) {
+    let mode = &MODES[index];
     let setup = SETUP.lock().unwrap_or_else(|e| e.into_inner());
     let dir = tools_dir();
     let dlls = dir.join("bin");
@@ -240,24 +240,22 @@ fn compiles_in_mode(mode: usize) {
     let jobs = hlsl::jobs();
     let entries = hlsl::assert_complete(&jobs);
 
-    // One line per (mode, file, entry point); ids index `lines`.
+    // One line per (file, entry point); ids index `lines`.
     let tmp = tempfile::tempdir().unwrap();
     let mut list = String::new();
-    let mut lines: Vec<(usize, usize, String, Stage)> = Vec::new();
-    for (m, mode) in modes.iter().enumerate() {
-        for (j, job) in jobs.iter().enumerate() {
-            for (entry, stage) in &job.entries {
-                let mut fields = vec![
-                    lines.len().to_string(),
-                    mode.tool.to_string(),
-                    job.path.display().to_string(),
-                    entry.clone(),
-                    profile(*stage, mode.shader_model),
-                ];
-                fields.extend(mode.args.iter().map(|a| a.to_string()));
-                list += &(fields.join("\t") + "\n");
-                lines.push((m, j, entry.clone(), *stage));
-            }
+    let mut lines: Vec<(usize, String, Stage)> = Vec::new();
+    for (j, job) in jobs.iter().enumerate() {
+        for (entry, stage) in &job.entries {
+            let mut fields = vec![
+                lines.len().to_string(),
+                mode.tool.to_string(),
+                job.path.display().to_string(),
+                entry.clone(),
+                profile(*stage, mode.shader_model),
+            ];
+            fields.extend(mode.args.iter().map(|a| a.to_string()));
+            list += &(fields.join("\t") + "\n");
+            lines.push((j, entry.clone(), *stage));
         }
     }
     // The negative controls and weft's HLSL for them: naga's vector `?:` must
@@ -267,26 +265,24 @@ fn compiles_in_mode(mode: usize) {
         for (kind, text) in [("raw", &c.raw), ("weft", &c.weft)] {
             let path = tmp.path().join(format!("{}.{kind}.hlsl", c.name));
             std::fs::write(&path, text).unwrap();
-            for mode in &modes {
-                // HLSL 2021: DXC's default, to DXIL and to SPIR-V.
-                let hlsl_2021 = mode.tool == "dxc" && !mode.args.contains(&"-HV");
-                let rejected = kind == "raw" && c.name == "vector_select" && hlsl_2021;
-                if kind == "raw" && !rejected {
-                    continue;
-                }
-                let id = lines.len() + controls.len();
-                let mut fields = vec![
-                    id.to_string(),
-                    mode.tool.to_string(),
-                    path.display().to_string(),
-                    "fs_main".to_string(),
-                    profile(Stage::Fragment, mode.shader_model),
-                ];
-                fields.extend(mode.args.iter().map(|a| a.to_string()));
-                list += &(fields.join("\t") + "\n");
-                let what = format!("{}: {} {kind}", mode.name, c.name);
-                controls.push((id, what, !rejected));
+            // HLSL 2021: DXC's default, to DXIL and to SPIR-V.
+            let hlsl_2021 = mode.tool == "dxc" && !mode.args.contains(&"-HV");
+            let rejected = kind == "raw" && c.name == "vector_select" && hlsl_2021;
+            if kind == "raw" && !rejected {
+                continue;
             }
+            let id = lines.len() + controls.len();
+            let mut fields = vec![
+                id.to_string(),
+                mode.tool.to_string(),
+                path.display().to_string(),
+                "fs_main".to_string(),
+                profile(Stage::Fragment, mode.shader_model),
+            ];
+            fields.extend(mode.args.iter().map(|a| a.to_string()));
+            list += &(fields.join("\t") + "\n");
+            let what = format!("{}: {} {kind}", mode.name, c.name);
+            controls.push((id, what, !rejected));
         }
     }
     let list_path = tmp.path().join("jobs.txt");
@@ -362,15 +358,15 @@ fn compiles_in_mode(mode: usize) {
         }
     }
 
-    let mut passed = vec![0usize; modes.len()];
+    let mut passed = 0usize;
     // Per file, the resources some entry point reflects in some mode: a
     // metadata binding none does was dropped by every optimiser (reported,
     // not an error: its sample is dead in that variant).
     let mut seen: Vec<Vec<String>> = vec![Vec::new(); jobs.len()];
     let mut messages: Vec<String> = Vec::new();
     let mut warnings: BTreeMap<&str, usize> = BTreeMap::new();
-    for (id, (m, j, entry, stage)) in lines.iter().enumerate() {
-        let (mode, job) = (modes[*m], &jobs[*j]);
+    for (id, (j, entry, stage)) in lines.iter().enumerate() {
+        let job = &jobs[*j];
         match &results[&id] {
             Outcome::Error(e) => {
                 let head: String = e.lines().take(8).collect::<Vec<_>>().join("\n");
@@ -394,7 +390,7 @@ fn compiles_in_mode(mode: usize) {
                     hlsl::check_registers(job, mode.name, resources, scope, str::to_string)
                 };
                 if errors.is_empty() {
-                    passed[*m] += 1;
+                    passed += 1;
                 }
                 messages.extend(errors.into_iter().map(|e| format!("{e} ({entry})")));
             }
@@ -408,15 +404,13 @@ fn compiles_in_mode(mode: usize) {
             }
         }
     }
-    let summary: Vec<String> = (modes.iter().zip(&passed))
-        .map(|(mode, n)| format!("{}: {n}/{entries}", mode.name))
-        .collect();
+    let summary = format!("{}: {passed}/{entries}", mode.name);
     eprintln!(
         "{header}; {} files, {entries} entry points; {}; {seconds:.0} s under wine; \
          entry points with warnings: {warnings:?}; {} metadata bindings no compiler \
          keeps (dead in that variant){}",
         jobs.len(),
-        summary.join(", "),
+        summary,
         unused.len(),
         unused
             .first()
@@ -426,7 +420,7 @@ fn compiles_in_mode(mode: usize) {
     assert!(
         messages.is_empty(),
         "{}; {} errors:\n{}",
-        summary.join(", "),
+        summary,
         messages.len(),
         messages[..messages.len().min(20)].join("\n")
     );

@@ -3,9 +3,9 @@
 //! mapping loses (transforms weft cannot express, samplers, extension
 //! textures it does not read).
 
-use super::super::document::GltfFile;
+// The parent's helpers (`num`, `float`, `round6`, `toml_string`) and types
+// (`MaterialMapping`, `Literal`, `GltfFile`, `Value`).
 use super::*;
-use serde_json::Value;
 
 /// A glTF `textureInfo` as weft reads it.
 #[derive(Clone, Debug, PartialEq)]
