@@ -255,6 +255,9 @@ fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if matches!(cli.command, Command::Stability(_)) {
+        stability::draw_on_one_lavapipe_thread();
+    }
     match cli.command {
         Command::Serve(args) => weft_serve::command(&args, cli.quiet),
         Command::Build {
