@@ -28,6 +28,10 @@ struct WeftMaterial {
     float parallax_height;
     float matcap_intensity;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -195,6 +199,12 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
 EyeCornea eye_cornea(float iris_radius, float height) {
     float r_1 = clamp(iris_radius, 0.05, 0.95);
     float h_1 = max(height, 0.01);
@@ -328,31 +338,32 @@ void main() {
     mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
     mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
     mat3x3 normal3_1 = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec3 _e26 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e36 = weft_safe_normalize((transpose(model3_) * _e28), vec3(0.0, 0.0, 1.0));
-    vec3 _e43 = weft_safe_normalize((transpose(normal3_1) * _e26), vec3(0.0, 0.0, 1.0));
-    vec3 _e49 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), _e28);
-    float _e52 = _group_1_binding_0_fs.backlight_dimming;
-    float dimming = (1.0 - (clamp(_e52, 0.0, 1.0) * clamp(-(dot(_e49, _e29)), 0.0, 1.0)));
-    vec3 _e60 = weft_main_light_radiance();
+    WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e23.v;
+    vec3 n_3 = _e23.n;
+    vec3 _e26 = weft_main_light_direction();
+    vec3 _e33 = weft_safe_normalize((transpose(model3_) * n_3), vec3(0.0, 0.0, 1.0));
+    vec3 _e40 = weft_safe_normalize((transpose(normal3_1) * v_3), vec3(0.0, 0.0, 1.0));
+    vec3 _e46 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), n_3);
+    float _e49 = _group_1_binding_0_fs.backlight_dimming;
+    float dimming = (1.0 - (clamp(_e49, 0.0, 1.0) * clamp(-(dot(_e46, _e26)), 0.0, 1.0)));
+    vec3 _e57 = weft_main_light_radiance();
     {
-        float _e64 = _group_1_binding_0_fs.iris_radius;
-        float _e67 = _group_1_binding_0_fs.cornea_height;
-        EyeCornea _e68 = eye_cornea(_e64, _e67);
-        float _e71 = _group_1_binding_0_fs.cornea_ior;
-        float ior_3 = max(_e71, 1.0);
+        float _e61 = _group_1_binding_0_fs.iris_radius;
+        float _e64 = _group_1_binding_0_fs.cornea_height;
+        EyeCornea _e65 = eye_cornea(_e61, _e64);
+        float _e68 = _group_1_binding_0_fs.cornea_ior;
+        float ior_3 = max(_e68, 1.0);
         {
-            EyeLookup _e75 = eye_parallax(_e36, _e43, _e68, ior_3);
-            look = _e75;
+            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            look = _e72;
         }
-        EyeLookup _e76 = look;
-        vec3 _e77 = eye_physical(_e76, _e28, _e26, _e29, normal3_1, ior_3, _e60);
-        color = _e77;
+        EyeLookup _e73 = look;
+        vec3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_1, ior_3, _e57);
+        color = _e74;
     }
-    vec3 _e78 = color;
-    vec3 radiance = clamp((_e78 * dimming), vec3(0.0), vec3(65504.0));
+    vec3 _e75 = color;
+    vec3 radiance = clamp((_e75 * dimming), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }

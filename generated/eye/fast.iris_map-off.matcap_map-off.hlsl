@@ -36,6 +36,13 @@ struct WeftMaterial {
     int _end_pad_0;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +97,16 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 Texture2D<float4> sclera_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -235,6 +242,21 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     float2 uv = float2(saturate(n_dot_v_1), saturate(roughness_5));
     float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
     return _e8.xy;
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
 }
 
 EyeCornea ConstructEyeCornea(float arg0, float arg1, float arg2) {
@@ -420,7 +442,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 color = (float3)0;
     EyeLookup look = (EyeLookup)0;
 
@@ -428,30 +450,31 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3x3 model3_1 = float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     float4x4 nm_1 = weft_object.normal_matrix;
     float3x3 normal3_2 = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    const float3 _e26 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    const float3 _e29 = weft_main_light_direction();
-    const float3 _e36 = weft_safe_normalize(mul(_e28, transpose(model3_1)), float3(0.0, 0.0, 1.0));
-    const float3 _e43 = weft_safe_normalize(mul(_e26, transpose(normal3_2)), float3(0.0, 0.0, 1.0));
-    const float3 _e49 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), _e28);
-    float _e52 = material.backlight_dimming;
-    float dimming = (1.0 - (saturate(_e52) * saturate(-(dot(_e49, _e29)))));
-    const float3 _e60 = weft_main_light_radiance();
+    const WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_3 = _e23.v;
+    float3 n_3 = _e23.n;
+    const float3 _e26 = weft_main_light_direction();
+    const float3 _e33 = weft_safe_normalize(mul(n_3, transpose(model3_1)), float3(0.0, 0.0, 1.0));
+    const float3 _e40 = weft_safe_normalize(mul(v_3, transpose(normal3_2)), float3(0.0, 0.0, 1.0));
+    const float3 _e46 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), n_3);
+    float _e49 = material.backlight_dimming;
+    float dimming = (1.0 - (saturate(_e49) * saturate(-(dot(_e46, _e26)))));
+    const float3 _e57 = weft_main_light_radiance();
     {
-        float _e64 = material.iris_radius;
-        float _e67 = material.cornea_height;
-        const EyeCornea _e68 = eye_cornea(_e64, _e67);
-        float _e71 = material.cornea_ior;
-        float ior_3 = max(_e71, 1.0);
+        float _e61 = material.iris_radius;
+        float _e64 = material.cornea_height;
+        const EyeCornea _e65 = eye_cornea(_e61, _e64);
+        float _e68 = material.cornea_ior;
+        float ior_3 = max(_e68, 1.0);
         {
-            const EyeLookup _e75 = eye_parallax(_e36, _e43, _e68, ior_3);
-            look = _e75;
+            const EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            look = _e72;
         }
-        EyeLookup _e76 = look;
-        const float3 _e77 = eye_physical(_e76, _e28, _e26, _e29, normal3_2, ior_3, _e60);
-        color = _e77;
+        EyeLookup _e73 = look;
+        const float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_3, _e57);
+        color = _e74;
     }
-    float3 _e78 = color;
-    float3 radiance = clamp((_e78 * dimming), (0.0).xxx, (65504.0).xxx);
+    float3 _e75 = color;
+    float3 radiance = clamp((_e75 * dimming), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

@@ -39,6 +39,10 @@ struct WeftMaterial {
     float matcap_intensity;
     char _pad13[4];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -239,6 +243,16 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
 EyeCornea eye_cornea(
     float iris_radius,
     float height
@@ -430,8 +444,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -453,37 +467,38 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> iris_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> sclera_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 color = {};
     EyeLookup look = {};
     metal::float4x4 model_1 = weft_object.model;
     metal::float3x3 model3_1 = metal::float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     metal::float4x4 nm_1 = weft_object.normal_matrix;
     metal::float3x3 normal3_2 = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    metal::float3 _e26 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    metal::float3 _e29 = weft_main_light_direction(weft_frame);
-    metal::float3 _e36 = weft_safe_normalize(metal::transpose(model3_1) * _e28, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e43 = weft_safe_normalize(metal::transpose(normal3_2) * _e26, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e49 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), _e28);
-    float _e52 = material.backlight_dimming;
-    float dimming = 1.0 - (metal::saturate(_e52) * metal::saturate(-(metal::dot(_e49, _e29))));
-    metal::float3 _e60 = weft_main_light_radiance(weft_frame);
+    WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e23.v;
+    metal::float3 n_3 = _e23.n;
+    metal::float3 _e26 = weft_main_light_direction(weft_frame);
+    metal::float3 _e33 = weft_safe_normalize(metal::transpose(model3_1) * n_3, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e40 = weft_safe_normalize(metal::transpose(normal3_2) * v_3, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e46 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_3);
+    float _e49 = material.backlight_dimming;
+    float dimming = 1.0 - (metal::saturate(_e49) * metal::saturate(-(metal::dot(_e46, _e26))));
+    metal::float3 _e57 = weft_main_light_radiance(weft_frame);
     {
-        float _e64 = material.iris_radius;
-        float _e67 = material.cornea_height;
-        EyeCornea _e68 = eye_cornea(_e64, _e67);
-        float _e71 = material.cornea_ior;
-        float ior_3 = metal::max(_e71, 1.0);
+        float _e61 = material.iris_radius;
+        float _e64 = material.cornea_height;
+        EyeCornea _e65 = eye_cornea(_e61, _e64);
+        float _e68 = material.cornea_ior;
+        float ior_3 = metal::max(_e68, 1.0);
         {
-            EyeLookup _e75 = eye_parallax(_e36, _e43, _e68, ior_3);
-            look = _e75;
+            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            look = _e72;
         }
-        EyeLookup _e76 = look;
-        metal::float3 _e77 = eye_physical(_e76, _e28, _e26, _e29, normal3_2, ior_3, _e60, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
-        color = _e77;
+        EyeLookup _e73 = look;
+        metal::float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_3, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
+        color = _e74;
     }
-    metal::float3 _e78 = color;
-    metal::float3 radiance = metal::clamp(_e78 * dimming, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e75 = color;
+    metal::float3 radiance = metal::clamp(_e75 * dimming, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

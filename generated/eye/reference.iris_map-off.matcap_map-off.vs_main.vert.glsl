@@ -28,6 +28,10 @@ struct WeftMaterial {
     float parallax_height;
     float matcap_intensity;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -176,6 +180,12 @@ float weft_specular_mip(float roughness_3) {
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return ((r * (1.7 - (0.7 * r))) * max_mip);
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 EyeCornea eye_cornea(float iris_radius, float height) {

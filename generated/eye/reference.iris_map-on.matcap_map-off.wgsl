@@ -30,6 +30,11 @@ struct WeftMaterial {
     matcap_intensity: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -207,6 +212,12 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
 fn eye_cornea(iris_radius: f32, height: f32) -> EyeCornea {
     let r_1 = clamp(iris_radius, 0.05f, 0.95f);
     let h_1 = max(height, 0.01f);
@@ -350,30 +361,31 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let model3_1 = mat3x3<f32>(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     let nm_1 = weft_object.normal_matrix;
     let normal3_2 = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    let _e26 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    let _e29 = weft_main_light_direction();
-    let _e36 = weft_safe_normalize((transpose(model3_1) * _e28), vec3<f32>(0f, 0f, 1f));
-    let _e43 = weft_safe_normalize((transpose(normal3_2) * _e26), vec3<f32>(0f, 0f, 1f));
-    let _e49 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), _e28);
-    let _e52 = material.backlight_dimming;
-    let dimming = (1f - (saturate(_e52) * saturate(-(dot(_e49, _e29)))));
-    let _e60 = weft_main_light_radiance();
+    let _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e23.v;
+    let n_4 = _e23.n;
+    let _e26 = weft_main_light_direction();
+    let _e33 = weft_safe_normalize((transpose(model3_1) * n_4), vec3<f32>(0f, 0f, 1f));
+    let _e40 = weft_safe_normalize((transpose(normal3_2) * v_3), vec3<f32>(0f, 0f, 1f));
+    let _e46 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_4);
+    let _e49 = material.backlight_dimming;
+    let dimming = (1f - (saturate(_e49) * saturate(-(dot(_e46, _e26)))));
+    let _e57 = weft_main_light_radiance();
     {
-        let _e64 = material.iris_radius;
-        let _e67 = material.cornea_height;
-        let _e68 = eye_cornea(_e64, _e67);
-        let _e71 = material.cornea_ior;
-        let ior_3 = max(_e71, 1f);
+        let _e61 = material.iris_radius;
+        let _e64 = material.cornea_height;
+        let _e65 = eye_cornea(_e61, _e64);
+        let _e68 = material.cornea_ior;
+        let ior_3 = max(_e68, 1f);
         {
-            let _e75 = eye_refracted(_e36, _e43, _e68, ior_3);
-            look = _e75;
+            let _e72 = eye_refracted(_e33, _e40, _e65, ior_3);
+            look = _e72;
         }
-        let _e76 = look;
-        let _e77 = eye_physical(_e76, _e28, _e26, _e29, normal3_2, ior_3, _e60);
-        color = _e77;
+        let _e73 = look;
+        let _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_3, _e57);
+        color = _e74;
     }
-    let _e78 = color;
-    let radiance = clamp((_e78 * dimming), vec3(0f), vec3(65504f));
+    let _e75 = color;
+    let radiance = clamp((_e75 * dimming), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

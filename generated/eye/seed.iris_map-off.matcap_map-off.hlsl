@@ -36,6 +36,13 @@ struct WeftMaterial {
     int _end_pad_0;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -79,16 +86,16 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 Texture2D<float4> sclera_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -144,6 +151,21 @@ float3 weft_sh_irradiance(float3 n)
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
 }
 
 float2 eye_seed_uv(float2 uv, float3 v_1, float height)
@@ -210,7 +232,7 @@ float3 eye_procedural_matcap(float2 uv_2)
     return ((key + (0.25 * bounce))).xxx;
 }
 
-float3 eye_seed(float3 p, float3 v_eye, float3 n_1, float3 world_position_1, float3 light)
+float3 eye_seed(float3 p, float3 v_eye, float3 n_1, float3 world_position_2, float3 light)
 {
     float3 matcap = (float3)0;
 
@@ -222,7 +244,7 @@ float3 eye_seed(float3 p, float3 v_eye, float3 n_1, float3 world_position_1, flo
     float4x4 view = weft_frame.view;
     float3x3 view3_ = float3x3(view[0].xyz, view[1].xyz, view[2].xyz);
     const float3 _e31 = weft_safe_normalize(mul(n_1, view3_), float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(mul(float4(world_position_1, 1.0), view).xyz, float3(0.0, 0.0, -1.0));
+    const float3 _e40 = weft_safe_normalize(mul(float4(world_position_2, 1.0), view).xyz, float3(0.0, 0.0, -1.0));
     float3 vxn = cross(_e40, _e31);
     float2 matcap_uv = float2((0.5 - (0.5 * vxn.y)), (0.5 - (0.5 * vxn.x)));
     {
@@ -263,7 +285,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 color = (float3)0;
     EyeLookup look = (EyeLookup)0;
 
@@ -271,20 +293,21 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3x3 model3_1 = float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     float4x4 nm_1 = weft_object.normal_matrix;
     float3x3 normal3_1 = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    const float3 _e26 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    const float3 _e29 = weft_main_light_direction();
-    const float3 _e36 = weft_safe_normalize(mul(_e28, transpose(model3_1)), float3(0.0, 0.0, 1.0));
-    const float3 _e43 = weft_safe_normalize(mul(_e26, transpose(normal3_1)), float3(0.0, 0.0, 1.0));
-    const float3 _e49 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), _e28);
-    float _e52 = material.backlight_dimming;
-    float dimming = (1.0 - (saturate(_e52) * saturate(-(dot(_e49, _e29)))));
-    const float3 _e60 = weft_main_light_radiance();
+    const WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e23.v;
+    float3 n_2 = _e23.n;
+    const float3 _e26 = weft_main_light_direction();
+    const float3 _e33 = weft_safe_normalize(mul(n_2, transpose(model3_1)), float3(0.0, 0.0, 1.0));
+    const float3 _e40 = weft_safe_normalize(mul(v_2, transpose(normal3_1)), float3(0.0, 0.0, 1.0));
+    const float3 _e46 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), n_2);
+    float _e49 = material.backlight_dimming;
+    float dimming = (1.0 - (saturate(_e49) * saturate(-(dot(_e46, _e26)))));
+    const float3 _e57 = weft_main_light_radiance();
     {
-        const float3 _e63 = eye_seed(_e36, _e43, _e28, in_1.world_position, _e60);
-        color = _e63;
+        const float3 _e60 = eye_seed(_e33, _e40, n_2, in_1.world_position, _e57);
+        color = _e60;
     }
-    float3 _e64 = color;
-    float3 radiance = clamp((_e64 * dimming), (0.0).xxx, (65504.0).xxx);
+    float3 _e61 = color;
+    float3 radiance = clamp((_e61 * dimming), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

@@ -28,6 +28,10 @@ struct WeftMaterial {
     float parallax_height;
     float matcap_intensity;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -118,6 +122,12 @@ vec3 weft_sh_irradiance(vec3 n) {
     return max(_e91, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
 vec2 eye_seed_uv(vec2 uv, vec3 v_1, float height) {
     return (uv + (height * vec2(v_1.x, -(v_1.y))));
 }
@@ -168,7 +178,7 @@ vec3 eye_albedo(vec2 q, bool front) {
     return clamp(mix(_e37, sclera, to_sclera), vec3(0.0), vec3(1.0));
 }
 
-vec3 eye_seed(vec3 p, vec3 v_eye, vec3 n_1, vec3 world_position_1, vec3 light) {
+vec3 eye_seed(vec3 p, vec3 v_eye, vec3 n_1, vec3 world_position_2, vec3 light) {
     vec3 matcap = vec3(0.0);
     vec2 _e6 = eye_uv_from_xy(p.xy);
     float _e9 = _group_1_binding_0_fs.parallax_height;
@@ -178,7 +188,7 @@ vec3 eye_seed(vec3 p, vec3 v_eye, vec3 n_1, vec3 world_position_1, vec3 light) {
     mat4x4 view = _group_0_binding_0_fs.view;
     mat3x3 view3_ = mat3x3(view[0].xyz, view[1].xyz, view[2].xyz);
     vec3 _e31 = weft_safe_normalize((view3_ * n_1), vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize((view * vec4(world_position_1, 1.0)).xyz, vec3(0.0, 0.0, -1.0));
+    vec3 _e40 = weft_safe_normalize((view * vec4(world_position_2, 1.0)).xyz, vec3(0.0, 0.0, -1.0));
     vec3 vxn = cross(_e40, _e31);
     vec2 matcap_uv = vec2((0.5 - (0.5 * vxn.y)), (0.5 - (0.5 * vxn.x)));
     {
@@ -200,21 +210,22 @@ void main() {
     mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
     mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
     mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec3 _e26 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    vec3 _e29 = weft_main_light_direction();
-    vec3 _e36 = weft_safe_normalize((transpose(model3_) * _e28), vec3(0.0, 0.0, 1.0));
-    vec3 _e43 = weft_safe_normalize((transpose(normal3_) * _e26), vec3(0.0, 0.0, 1.0));
-    vec3 _e49 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), _e28);
-    float _e52 = _group_1_binding_0_fs.backlight_dimming;
-    float dimming = (1.0 - (clamp(_e52, 0.0, 1.0) * clamp(-(dot(_e49, _e29)), 0.0, 1.0)));
-    vec3 _e60 = weft_main_light_radiance();
+    WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_2 = _e23.v;
+    vec3 n_2 = _e23.n;
+    vec3 _e26 = weft_main_light_direction();
+    vec3 _e33 = weft_safe_normalize((transpose(model3_) * n_2), vec3(0.0, 0.0, 1.0));
+    vec3 _e40 = weft_safe_normalize((transpose(normal3_) * v_2), vec3(0.0, 0.0, 1.0));
+    vec3 _e46 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), n_2);
+    float _e49 = _group_1_binding_0_fs.backlight_dimming;
+    float dimming = (1.0 - (clamp(_e49, 0.0, 1.0) * clamp(-(dot(_e46, _e26)), 0.0, 1.0)));
+    vec3 _e57 = weft_main_light_radiance();
     {
-        vec3 _e63 = eye_seed(_e36, _e43, _e28, in_1.world_position, _e60);
-        color = _e63;
+        vec3 _e60 = eye_seed(_e33, _e40, n_2, in_1.world_position, _e57);
+        color = _e60;
     }
-    vec3 _e64 = color;
-    vec3 radiance = clamp((_e64 * dimming), vec3(0.0), vec3(65504.0));
+    vec3 _e61 = color;
+    vec3 radiance = clamp((_e61 * dimming), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }

@@ -39,6 +39,10 @@ struct WeftMaterial {
     float matcap_intensity;
     char _pad13[4];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -130,6 +134,16 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
 metal::float2 eye_seed_uv(
     metal::float2 uv,
     metal::float3 v_1,
@@ -202,7 +216,7 @@ metal::float3 eye_seed(
     metal::float3 p,
     metal::float3 v_eye,
     metal::float3 n_1,
-    metal::float3 world_position_1,
+    metal::float3 world_position_2,
     metal::float3 light,
     constant WeftFrame& weft_frame,
     constant WeftMaterial& material,
@@ -220,7 +234,7 @@ metal::float3 eye_seed(
     metal::float4x4 view = weft_frame.view;
     metal::float3x3 view3_ = metal::float3x3(view[0].xyz, view[1].xyz, view[2].xyz);
     metal::float3 _e31 = weft_safe_normalize(view3_ * n_1, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e40 = weft_safe_normalize((view * metal::float4(world_position_1, 1.0)).xyz, metal::float3(0.0, 0.0, -1.0));
+    metal::float3 _e40 = weft_safe_normalize((view * metal::float4(world_position_2, 1.0)).xyz, metal::float3(0.0, 0.0, -1.0));
     metal::float3 vxn = metal::cross(_e40, _e31);
     metal::float2 matcap_uv = metal::float2(0.5 - (0.5 * vxn.y), 0.5 - (0.5 * vxn.x));
     {
@@ -276,8 +290,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_2 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_3 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -295,27 +309,28 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> sclera_map [[texture(0)]]
 , metal::texture2d<float, metal::access::sample> matcap_map [[texture(1)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 color = {};
     EyeLookup look = {};
     metal::float4x4 model_1 = weft_object.model;
     metal::float3x3 model3_1 = metal::float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     metal::float4x4 nm_1 = weft_object.normal_matrix;
     metal::float3x3 normal3_1 = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    metal::float3 _e26 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    metal::float3 _e29 = weft_main_light_direction(weft_frame);
-    metal::float3 _e36 = weft_safe_normalize(metal::transpose(model3_1) * _e28, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e43 = weft_safe_normalize(metal::transpose(normal3_1) * _e26, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e49 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), _e28);
-    float _e52 = material.backlight_dimming;
-    float dimming = 1.0 - (metal::saturate(_e52) * metal::saturate(-(metal::dot(_e49, _e29))));
-    metal::float3 _e60 = weft_main_light_radiance(weft_frame);
+    WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e23.v;
+    metal::float3 n_2 = _e23.n;
+    metal::float3 _e26 = weft_main_light_direction(weft_frame);
+    metal::float3 _e33 = weft_safe_normalize(metal::transpose(model3_1) * n_2, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e40 = weft_safe_normalize(metal::transpose(normal3_1) * v_2, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e46 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_2);
+    float _e49 = material.backlight_dimming;
+    float dimming = 1.0 - (metal::saturate(_e49) * metal::saturate(-(metal::dot(_e46, _e26))));
+    metal::float3 _e57 = weft_main_light_radiance(weft_frame);
     {
-        metal::float3 _e63 = eye_seed(_e36, _e43, _e28, in_1.world_position, _e60, weft_frame, material, material_sampler, material_clamp_sampler, sclera_map, matcap_map);
-        color = _e63;
+        metal::float3 _e60 = eye_seed(_e33, _e40, n_2, in_1.world_position, _e57, weft_frame, material, material_sampler, material_clamp_sampler, sclera_map, matcap_map);
+        color = _e60;
     }
-    metal::float3 _e64 = color;
-    metal::float3 radiance = metal::clamp(_e64 * dimming, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e61 = color;
+    metal::float3 radiance = metal::clamp(_e61 * dimming, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

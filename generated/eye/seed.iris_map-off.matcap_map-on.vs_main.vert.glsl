@@ -28,6 +28,10 @@ struct WeftMaterial {
     float parallax_height;
     float matcap_intensity;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -113,6 +117,12 @@ vec3 weft_sh_irradiance(vec3 n) {
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 vec2 eye_seed_uv(vec2 uv, vec3 v_1, float height) {

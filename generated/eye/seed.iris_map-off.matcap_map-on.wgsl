@@ -30,6 +30,11 @@ struct WeftMaterial {
     matcap_intensity: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -123,6 +128,12 @@ fn weft_sh_irradiance(n: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
 fn eye_seed_uv(uv: vec2<f32>, v_1: vec3<f32>, height: f32) -> vec2<f32> {
     return (uv + (height * vec2<f32>(v_1.x, -(v_1.y))));
 }
@@ -175,7 +186,7 @@ fn eye_albedo(q: vec2<f32>, front: bool) -> vec3<f32> {
     return saturate(mix(_e37, sclera, to_sclera));
 }
 
-fn eye_seed(p: vec3<f32>, v_eye: vec3<f32>, n_1: vec3<f32>, world_position_1: vec3<f32>, light: vec3<f32>) -> vec3<f32> {
+fn eye_seed(p: vec3<f32>, v_eye: vec3<f32>, n_1: vec3<f32>, world_position_2: vec3<f32>, light: vec3<f32>) -> vec3<f32> {
     var matcap: vec3<f32>;
 
     let _e6 = eye_uv_from_xy(p.xy);
@@ -186,7 +197,7 @@ fn eye_seed(p: vec3<f32>, v_eye: vec3<f32>, n_1: vec3<f32>, world_position_1: ve
     let view = weft_frame.view;
     let view3_ = mat3x3<f32>(view[0].xyz, view[1].xyz, view[2].xyz);
     let _e31 = weft_safe_normalize((view3_ * n_1), vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize((view * vec4<f32>(world_position_1, 1f)).xyz, vec3<f32>(0f, 0f, -1f));
+    let _e40 = weft_safe_normalize((view * vec4<f32>(world_position_2, 1f)).xyz, vec3<f32>(0f, 0f, -1f));
     let vxn = cross(_e40, _e31);
     let matcap_uv = vec2<f32>((0.5f - (0.5f * vxn.y)), (0.5f - (0.5f * vxn.x)));
     {
@@ -232,20 +243,21 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let model3_1 = mat3x3<f32>(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
     let nm_1 = weft_object.normal_matrix;
     let normal3_1 = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    let _e26 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e28 = weft_safe_normalize(in_1.world_normal, _e26);
-    let _e29 = weft_main_light_direction();
-    let _e36 = weft_safe_normalize((transpose(model3_1) * _e28), vec3<f32>(0f, 0f, 1f));
-    let _e43 = weft_safe_normalize((transpose(normal3_1) * _e26), vec3<f32>(0f, 0f, 1f));
-    let _e49 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), _e28);
-    let _e52 = material.backlight_dimming;
-    let dimming = (1f - (saturate(_e52) * saturate(-(dot(_e49, _e29)))));
-    let _e60 = weft_main_light_radiance();
+    let _e23 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e23.v;
+    let n_2 = _e23.n;
+    let _e26 = weft_main_light_direction();
+    let _e33 = weft_safe_normalize((transpose(model3_1) * n_2), vec3<f32>(0f, 0f, 1f));
+    let _e40 = weft_safe_normalize((transpose(normal3_1) * v_2), vec3<f32>(0f, 0f, 1f));
+    let _e46 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_2);
+    let _e49 = material.backlight_dimming;
+    let dimming = (1f - (saturate(_e49) * saturate(-(dot(_e46, _e26)))));
+    let _e57 = weft_main_light_radiance();
     {
-        let _e63 = eye_seed(_e36, _e43, _e28, in_1.world_position, _e60);
-        color = _e63;
+        let _e60 = eye_seed(_e33, _e40, n_2, in_1.world_position, _e57);
+        color = _e60;
     }
-    let _e64 = color;
-    let radiance = clamp((_e64 * dimming), vec3(0f), vec3(65504f));
+    let _e61 = color;
+    let radiance = clamp((_e61 * dimming), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -27,6 +27,18 @@ struct WeftMaterial {
     float outline_width;
     float outline_max_distance;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -165,17 +177,30 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    float _e6 = weft_clamp_cos(dot(n_1, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(vec3 n_1, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
-    float n_dot_h = clamp(dot(n_1, h), 0.0, 1.0);
+float skin_seed_specular(vec3 n_2, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_2, h), 0.0, 1.0);
     float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = clamp(dot(n_1, l), 0.0, 1.0);
+    float nl = clamp(dot(n_2, l), 0.0, 1.0);
     float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -223,43 +248,41 @@ void main() {
     float mask_1 = clamp(_e31.x, 0.0, 1.0);
     vec4 _e36 = texture(_group_1_binding_5_fs, vec2(_e5));
     float shadow_mask = clamp(_e36.x, 0.0, 1.0);
-    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    vec3 _e47 = fwidth(_e46);
-    float dn = length(_e47);
-    vec3 _e50 = fwidth(in_1.world_position);
-    float dp = length(_e50);
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_2 = _e41.v;
+    vec3 n_3 = _e41.n;
+    vec3 _e44 = fwidth(n_3);
+    float dn = length(_e44);
+    vec3 _e47 = fwidth(in_1.world_position);
+    float dp = length(_e47);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float _e59 = _group_1_binding_0_fs.curvature_factor;
-    float curvature = clamp((max(_e59, 0.0) * estimated), 0.01, 0.99);
-    vec3 _e66 = weft_main_light_direction();
-    vec3 _e68 = weft_safe_normalize((_e66 + _e44), _e46);
-    float n_dot_l = clamp(dot(_e46, _e66), 0.0, 1.0);
-    FaceLight _e71 = face_light(_e66);
-    float _e74 = _group_1_binding_0_fs.face_soft_shadow;
-    float _e75 = face_sdf_shadow(_e5, _e71, _e74);
-    bias = (_e75 * shadow_mask);
-    float _e78 = bias;
-    float _e81 = _group_1_binding_0_fs.dark_bound;
-    float _e84 = _group_1_binding_0_fs.bright_bound;
-    bias = clamp(_e78, _e81, _e84);
-    float _e86 = bias;
-    vec4 _e88 = table_skin_lut(vec2(_e86, curvature));
-    vec3 falloff = max(_e88.xyz, vec3(0.0));
-    float _e96 = _group_1_binding_0_fs.lobe_weight;
-    float _e97 = skin_seed_specular(_e46, _e66, _e68, (roughness_4 * roughness_4), mask_1, _e96);
-    float specular = ((_e97 * f0_1) * n_dot_l);
+    float _e56 = _group_1_binding_0_fs.curvature_factor;
+    float curvature = clamp((max(_e56, 0.0) * estimated), 0.01, 0.99);
+    WeftLightGeometry _e63 = weft_main_light_geometry(n_3, v_2);
+    FaceLight _e65 = face_light(_e63.l);
+    float _e68 = _group_1_binding_0_fs.face_soft_shadow;
+    float _e69 = face_sdf_shadow(_e5, _e65, _e68);
+    bias = (_e69 * shadow_mask);
+    float _e72 = bias;
+    float _e75 = _group_1_binding_0_fs.dark_bound;
+    float _e78 = _group_1_binding_0_fs.bright_bound;
+    bias = clamp(_e72, _e75, _e78);
+    float _e80 = bias;
+    vec4 _e82 = table_skin_lut(vec2(_e80, curvature));
+    vec3 falloff = max(_e82.xyz, vec3(0.0));
+    float _e92 = _group_1_binding_0_fs.lobe_weight;
+    float _e93 = skin_seed_specular(n_3, _e63.l, _e63.h, (roughness_4 * roughness_4), mask_1, _e92);
+    float specular = ((_e93 * f0_1) * _e63.n_dot_l);
     vec3 kd = vec3((1.0 - f0_1));
-    vec3 _e103 = weft_main_light_radiance();
-    vec3 _e104 = weft_diffuse_lambert(albedo_1);
-    vec3 direct = ((((kd * _e104) * falloff) + vec3(specular)) * _e103);
-    float _e111 = weft_clamp_cos(dot(_e46, _e44));
-    vec2 _e113 = weft_env_brdf_lut(_e111, roughness_4);
-    vec3 _e114 = weft_env_brdf_from_lut(vec3(f0_1), _e113);
-    vec3 _e115 = weft_sh_irradiance(_e46);
-    vec3 indirect_diffuse = ((_e115 * kd) * albedo_1);
-    vec3 _e120 = weft_prefiltered_radiance(reflect(-(_e44), _e46), roughness_4);
-    vec3 indirect_specular = ((_e120 * _e114) * mask_1);
+    vec3 _e100 = weft_main_light_radiance();
+    vec3 _e101 = weft_diffuse_lambert(albedo_1);
+    vec3 direct = ((((kd * _e101) * falloff) + vec3(specular)) * _e100);
+    vec2 _e109 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4);
+    vec3 _e110 = weft_env_brdf_from_lut(vec3(f0_1), _e109);
+    vec3 _e111 = weft_sh_irradiance(n_3);
+    vec3 indirect_diffuse = ((_e111 * kd) * albedo_1);
+    vec3 _e116 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_4);
+    vec3 indirect_specular = ((_e116 * _e110) * mask_1);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -82,16 +100,16 @@ Texture2D<float4> specular_mask : register(t6, space1);
 Texture2D<float4> skin_lut : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -195,19 +213,54 @@ float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
     return _e8.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_1, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    const float _e6 = weft_clamp_cos(dot(n_1, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(float3 n_1, float3 l, float3 h, float roughness_3, float mask, float lobe_weight)
+float skin_seed_specular(float3 n_2, float3 l, float3 h, float roughness_3, float mask, float lobe_weight)
 {
-    float n_dot_h = saturate(dot(n_1, h));
+    float n_dot_h = saturate(dot(n_2, h));
     float l_dot_h = saturate(dot(l, h));
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = saturate(dot(n_1, l));
+    float nl = saturate(dot(n_2, l));
     float s_ao = lerp(0.100112915, 1.0, saturate((-0.3 + (nl * nl))));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -268,7 +321,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float bias = (float)0;
 
     float4 _e4 = material.base_map_st;
@@ -286,43 +339,41 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float mask_1 = saturate(_e31.x);
     float4 _e36 = shadow_mask_map.Sample(material_sampler, _e5);
     float shadow_mask = saturate(_e36.x);
-    const float3 _e44 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    float3 _e47 = fwidth(_e46);
-    float dn = length(_e47);
-    float3 _e50 = fwidth(in_1.world_position);
-    float dp = length(_e50);
+    const WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e41.v;
+    float3 n_3 = _e41.n;
+    float3 _e44 = fwidth(n_3);
+    float dn = length(_e44);
+    float3 _e47 = fwidth(in_1.world_position);
+    float dp = length(_e47);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float _e59 = material.curvature_factor;
-    float curvature = clamp((max(_e59, 0.0) * estimated), 0.01, 0.99);
-    const float3 _e66 = weft_main_light_direction();
-    const float3 _e68 = weft_safe_normalize((_e66 + _e44), _e46);
-    float n_dot_l = saturate(dot(_e46, _e66));
-    const FaceLight _e71 = face_light(_e66);
-    float _e74 = material.face_soft_shadow;
-    const float _e75 = face_sdf_shadow(_e5, _e71, _e74);
-    bias = (_e75 * shadow_mask);
-    float _e78 = bias;
-    float _e81 = material.dark_bound;
-    float _e84 = material.bright_bound;
-    bias = clamp(_e78, _e81, _e84);
-    float _e86 = bias;
-    const float4 _e88 = table_skin_lut(float2(_e86, curvature));
-    float3 falloff = max(_e88.xyz, (0.0).xxx);
-    float _e96 = material.lobe_weight;
-    const float _e97 = skin_seed_specular(_e46, _e66, _e68, (roughness_4 * roughness_4), mask_1, _e96);
-    float specular = ((_e97 * f0_1) * n_dot_l);
+    float _e56 = material.curvature_factor;
+    float curvature = clamp((max(_e56, 0.0) * estimated), 0.01, 0.99);
+    const WeftLightGeometry _e63 = weft_main_light_geometry(n_3, v_2);
+    const FaceLight _e65 = face_light(_e63.l);
+    float _e68 = material.face_soft_shadow;
+    const float _e69 = face_sdf_shadow(_e5, _e65, _e68);
+    bias = (_e69 * shadow_mask);
+    float _e72 = bias;
+    float _e75 = material.dark_bound;
+    float _e78 = material.bright_bound;
+    bias = clamp(_e72, _e75, _e78);
+    float _e80 = bias;
+    const float4 _e82 = table_skin_lut(float2(_e80, curvature));
+    float3 falloff = max(_e82.xyz, (0.0).xxx);
+    float _e92 = material.lobe_weight;
+    const float _e93 = skin_seed_specular(n_3, _e63.l, _e63.h, (roughness_4 * roughness_4), mask_1, _e92);
+    float specular = ((_e93 * f0_1) * _e63.n_dot_l);
     float3 kd = ((1.0 - f0_1)).xxx;
-    const float3 _e103 = weft_main_light_radiance();
-    const float3 _e104 = weft_diffuse_lambert(albedo_1);
-    float3 direct = ((((kd * _e104) * falloff) + (specular).xxx) * _e103);
-    const float _e111 = weft_clamp_cos(dot(_e46, _e44));
-    const float2 _e113 = weft_env_brdf_lut(_e111, roughness_4);
-    const float3 _e114 = weft_env_brdf_from_lut((f0_1).xxx, _e113);
-    const float3 _e115 = weft_sh_irradiance(_e46);
-    float3 indirect_diffuse = ((_e115 * kd) * albedo_1);
-    const float3 _e120 = weft_prefiltered_radiance(reflect(-(_e44), _e46), roughness_4);
-    float3 indirect_specular = ((_e120 * _e114) * mask_1);
+    const float3 _e100 = weft_main_light_radiance();
+    const float3 _e101 = weft_diffuse_lambert(albedo_1);
+    float3 direct = ((((kd * _e101) * falloff) + (specular).xxx) * _e100);
+    const float2 _e109 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4);
+    const float3 _e110 = weft_env_brdf_from_lut((f0_1).xxx, _e109);
+    const float3 _e111 = weft_sh_irradiance(n_3);
+    float3 indirect_diffuse = ((_e111 * kd) * albedo_1);
+    const float3 _e116 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_4);
+    float3 indirect_specular = ((_e116 * _e110) * mask_1);
     float3 color = ((direct + indirect_diffuse) + indirect_specular);
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -174,17 +188,30 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_1: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    let _e6 = weft_clamp_cos(dot(n_1, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_seed_specular(n_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n_1, h));
+fn skin_seed_specular(n_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
+    let n_dot_h = saturate(dot(n_2, h));
     let l_dot_h = saturate(dot(l, h));
     let r2_ = (roughness_3 * roughness_3);
     let normalization = ((roughness_3 * 4f) + 2f);
     let d = (((n_dot_h * n_dot_h) * (r2_ - 1f)) + 1.00001f);
-    let nl = saturate(dot(n_1, l));
+    let nl = saturate(dot(n_2, l));
     let s_ao = mix(0.100112915f, 1f, saturate((-0.3f + (nl * nl))));
     let denom = (((d * d) * max(0.1f, (l_dot_h * l_dot_h))) * normalization);
     let ggx = (r2_ / denom);
@@ -257,43 +284,41 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let mask_1 = saturate(_e31.x);
     let _e36 = textureSample(shadow_mask_map, material_sampler, _e5);
     let shadow_mask = saturate(_e36.x);
-    let _e44 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    let _e47 = fwidth(_e46);
-    let dn = length(_e47);
-    let _e50 = fwidth(in_1.world_position);
-    let dp = length(_e50);
+    let _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e41.v;
+    let n_3 = _e41.n;
+    let _e44 = fwidth(n_3);
+    let dn = length(_e44);
+    let _e47 = fwidth(in_1.world_position);
+    let dp = length(_e47);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e59 = material.curvature_factor;
-    let curvature = clamp((max(_e59, 0f) * estimated), 0.01f, 0.99f);
-    let _e66 = weft_main_light_direction();
-    let _e68 = weft_safe_normalize((_e66 + _e44), _e46);
-    let n_dot_l = saturate(dot(_e46, _e66));
-    let _e71 = face_light(_e66);
-    let _e74 = material.face_soft_shadow;
-    let _e75 = face_sdf_shadow(_e5, _e71, _e74);
-    bias = (_e75 * shadow_mask);
-    let _e78 = bias;
-    let _e81 = material.dark_bound;
-    let _e84 = material.bright_bound;
-    bias = clamp(_e78, _e81, _e84);
-    let _e86 = bias;
-    let _e88 = table_skin_lut(vec2<f32>(_e86, curvature));
-    let falloff = max(_e88.xyz, vec3(0f));
-    let _e96 = material.lobe_weight;
-    let _e97 = skin_seed_specular(_e46, _e66, _e68, (roughness_4 * roughness_4), mask_1, _e96);
-    let specular = ((_e97 * f0_1) * n_dot_l);
+    let _e56 = material.curvature_factor;
+    let curvature = clamp((max(_e56, 0f) * estimated), 0.01f, 0.99f);
+    let _e63 = weft_main_light_geometry(n_3, v_2);
+    let _e65 = face_light(_e63.l);
+    let _e68 = material.face_soft_shadow;
+    let _e69 = face_sdf_shadow(_e5, _e65, _e68);
+    bias = (_e69 * shadow_mask);
+    let _e72 = bias;
+    let _e75 = material.dark_bound;
+    let _e78 = material.bright_bound;
+    bias = clamp(_e72, _e75, _e78);
+    let _e80 = bias;
+    let _e82 = table_skin_lut(vec2<f32>(_e80, curvature));
+    let falloff = max(_e82.xyz, vec3(0f));
+    let _e92 = material.lobe_weight;
+    let _e93 = skin_seed_specular(n_3, _e63.l, _e63.h, (roughness_4 * roughness_4), mask_1, _e92);
+    let specular = ((_e93 * f0_1) * _e63.n_dot_l);
     let kd = vec3((1f - f0_1));
-    let _e103 = weft_main_light_radiance();
-    let _e104 = weft_diffuse_lambert(albedo_1);
-    let direct = ((((kd * _e104) * falloff) + vec3(specular)) * _e103);
-    let _e111 = weft_clamp_cos(dot(_e46, _e44));
-    let _e113 = weft_env_brdf_lut(_e111, roughness_4);
-    let _e114 = weft_env_brdf_from_lut(vec3(f0_1), _e113);
-    let _e115 = weft_sh_irradiance(_e46);
-    let indirect_diffuse = ((_e115 * kd) * albedo_1);
-    let _e120 = weft_prefiltered_radiance(reflect(-(_e44), _e46), roughness_4);
-    let indirect_specular = ((_e120 * _e114) * mask_1);
+    let _e100 = weft_main_light_radiance();
+    let _e101 = weft_diffuse_lambert(albedo_1);
+    let direct = ((((kd * _e101) * falloff) + vec3(specular)) * _e100);
+    let _e109 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4);
+    let _e110 = weft_env_brdf_from_lut(vec3(f0_1), _e109);
+    let _e111 = weft_sh_irradiance(n_3);
+    let indirect_diffuse = ((_e111 * kd) * albedo_1);
+    let _e116 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_4);
+    let indirect_specular = ((_e116 * _e110) * mask_1);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -87,13 +99,13 @@ vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(vec3 n_1, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
-    float n_dot_h = clamp(dot(n_1, h), 0.0, 1.0);
+float skin_seed_specular(vec3 n_2, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_2, h), 0.0, 1.0);
     float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = clamp(dot(n_1, l), 0.0, 1.0);
+    float nl = clamp(dot(n_2, l), 0.0, 1.0);
     float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);

@@ -44,6 +44,19 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     metal::float4 clip_position;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -198,6 +211,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_1,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_1);
+    float _e6 = weft_clamp_cos(metal::dot(n_1, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_1, _e2)), metal::saturate(metal::dot(n_1, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv_1,
     metal::float4 st
@@ -206,19 +240,19 @@ metal::float2 weft_transform_uv(
 }
 
 float skin_seed_specular(
-    metal::float3 n_1,
+    metal::float3 n_2,
     metal::float3 l,
     metal::float3 h,
     float roughness_3,
     float mask,
     float lobe_weight
 ) {
-    float n_dot_h = metal::saturate(metal::dot(n_1, h));
+    float n_dot_h = metal::saturate(metal::dot(n_2, h));
     float l_dot_h = metal::saturate(metal::dot(l, h));
     float r2_ = roughness_3 * roughness_3;
     float normalization = (roughness_3 * 4.0) + 2.0;
     float d = ((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001;
-    float nl = metal::saturate(metal::dot(n_1, l));
+    float nl = metal::saturate(metal::dot(n_2, l));
     float s_ao = metal::mix(0.100112915, 1.0, metal::saturate(-0.3 + (nl * nl)));
     float denom = ((d * d) * metal::max(0.1, l_dot_h * l_dot_h)) * normalization;
     float ggx = r2_ / denom;
@@ -365,8 +399,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -391,7 +425,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> specular_mask [[texture(5)]]
 , metal::texture2d<float, metal::access::sample> skin_lut [[texture(6)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.world_tangent, varyings_3.uv0_ };
+    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_ };
     float bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_2.uv0_, _e4);
@@ -408,43 +442,41 @@ fragment fs_mainOutput fs_main(
     float mask_1 = metal::saturate(_e31.x);
     metal::float4 _e36 = shadow_mask_map.sample(material_sampler, _e5);
     float shadow_mask = metal::saturate(_e36.x);
-    metal::float3 _e44 = weft_view_direction(in_2.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e46 = weft_safe_normalize(in_2.world_normal, _e44);
-    metal::float3 _e47 = metal::fwidth(_e46);
-    float dn = metal::length(_e47);
-    metal::float3 _e50 = metal::fwidth(in_2.world_position);
-    float dp = metal::length(_e50);
+    WeftSurface _e41 = weft_surface(in_2.world_position, in_2.world_normal, weft_frame);
+    metal::float3 v_2 = _e41.v;
+    metal::float3 n_3 = _e41.n;
+    metal::float3 _e44 = metal::fwidth(n_3);
+    float dn = metal::length(_e44);
+    metal::float3 _e47 = metal::fwidth(in_2.world_position);
+    float dp = metal::length(_e47);
     float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
-    float _e59 = material.curvature_factor;
-    float curvature = metal::clamp(metal::max(_e59, 0.0) * estimated, 0.01, 0.99);
-    metal::float3 _e66 = weft_main_light_direction(weft_frame);
-    metal::float3 _e68 = weft_safe_normalize(_e66 + _e44, _e46);
-    float n_dot_l = metal::saturate(metal::dot(_e46, _e66));
-    FaceLight _e71 = face_light(_e66, weft_object);
-    float _e74 = material.face_soft_shadow;
-    float _e75 = face_sdf_shadow(_e5, _e71, _e74, material_sampler, face_sdf_map);
-    bias = _e75 * shadow_mask;
-    float _e78 = bias;
-    float _e81 = material.dark_bound;
-    float _e84 = material.bright_bound;
-    bias = metal::clamp(_e78, _e81, _e84);
-    float _e86 = bias;
-    metal::float4 _e88 = table_skin_lut(metal::float2(_e86, curvature), material_clamp_sampler, skin_lut);
-    metal::float3 falloff = metal::max(_e88.xyz, metal::float3(0.0));
-    float _e96 = material.lobe_weight;
-    float _e97 = skin_seed_specular(_e46, _e66, _e68, roughness_4 * roughness_4, mask_1, _e96);
-    float specular = (_e97 * f0_1) * n_dot_l;
+    float _e56 = material.curvature_factor;
+    float curvature = metal::clamp(metal::max(_e56, 0.0) * estimated, 0.01, 0.99);
+    WeftLightGeometry _e63 = weft_main_light_geometry(n_3, v_2, weft_frame);
+    FaceLight _e65 = face_light(_e63.l, weft_object);
+    float _e68 = material.face_soft_shadow;
+    float _e69 = face_sdf_shadow(_e5, _e65, _e68, material_sampler, face_sdf_map);
+    bias = _e69 * shadow_mask;
+    float _e72 = bias;
+    float _e75 = material.dark_bound;
+    float _e78 = material.bright_bound;
+    bias = metal::clamp(_e72, _e75, _e78);
+    float _e80 = bias;
+    metal::float4 _e82 = table_skin_lut(metal::float2(_e80, curvature), material_clamp_sampler, skin_lut);
+    metal::float3 falloff = metal::max(_e82.xyz, metal::float3(0.0));
+    float _e92 = material.lobe_weight;
+    float _e93 = skin_seed_specular(n_3, _e63.l, _e63.h, roughness_4 * roughness_4, mask_1, _e92);
+    float specular = (_e93 * f0_1) * _e63.n_dot_l;
     metal::float3 kd = metal::float3(1.0 - f0_1);
-    metal::float3 _e103 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e104 = weft_diffuse_lambert(albedo_1);
-    metal::float3 direct = (((kd * _e104) * falloff) + metal::float3(specular)) * _e103;
-    float _e111 = weft_clamp_cos(metal::dot(_e46, _e44));
-    metal::float2 _e113 = weft_env_brdf_lut(_e111, roughness_4, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e114 = weft_env_brdf_from_lut(metal::float3(f0_1), _e113);
-    metal::float3 _e115 = weft_sh_irradiance(_e46, weft_frame);
-    metal::float3 indirect_diffuse = (_e115 * kd) * albedo_1;
-    metal::float3 _e120 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e46), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular = (_e120 * _e114) * mask_1;
+    metal::float3 _e100 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e101 = weft_diffuse_lambert(albedo_1);
+    metal::float3 direct = (((kd * _e101) * falloff) + metal::float3(specular)) * _e100;
+    metal::float2 _e109 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e110 = weft_env_brdf_from_lut(metal::float3(f0_1), _e109);
+    metal::float3 _e111 = weft_sh_irradiance(n_3, weft_frame);
+    metal::float3 indirect_diffuse = (_e111 * kd) * albedo_1;
+    metal::float3 _e116 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_3), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e116 * _e110) * mask_1;
     metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };

@@ -37,6 +37,18 @@ struct WeftMaterial {
     vec4 strand_color;
     float strand_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct FurInput {
     vec3 position;
     vec3 normal;

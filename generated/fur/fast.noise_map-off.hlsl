@@ -52,6 +52,24 @@ struct WeftMaterial {
     int _end_pad_2;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct FurInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -113,8 +131,8 @@ Texture2D<float4> height_map : register(t6, space1);
 Texture2D<float4> force_map : register(t7, space1);
 
 struct VertexOutput_vs_skin {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float3 strand_1 : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
@@ -127,8 +145,8 @@ struct VertexOutput_vs_skin {
 };
 
 struct VertexOutput_vs_shell {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float3 strand_2 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
@@ -141,8 +159,8 @@ struct VertexOutput_vs_shell {
 };
 
 struct FragmentInput_fs_skin {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_2 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_3 : LOC1;
     float3 strand_3 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
@@ -155,8 +173,8 @@ struct FragmentInput_fs_skin {
 };
 
 struct FragmentInput_fs_shell {
-    float3 world_position_4 : LOC0;
-    float3 world_normal_3 : LOC1;
+    float3 world_position_5 : LOC0;
+    float3 world_normal_4 : LOC1;
     float3 strand_4 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
@@ -327,6 +345,41 @@ float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4)
     return saturate(_e8.x);
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_1, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    const float _e6 = weft_clamp_cos(dot(n_1, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
 float2 fur_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -348,36 +401,34 @@ FurLight fur_vertex_light(float3 p_1, float3 normal, float3 strand)
 
     float _e5 = material.smoothness;
     float smoothness_1 = saturate(_e5);
-    const float3 _e11 = weft_view_direction(p_1, float3(0.0, 0.0, 1.0));
-    const float3 _e12 = weft_safe_normalize(normal, _e11);
-    const float3 _e13 = weft_safe_normalize(strand, _e12);
-    const float3 _e14 = weft_main_light_direction();
-    const float3 _e16 = weft_safe_normalize((_e14 + _e11), _e12);
-    const float _e18 = weft_clamp_cos(dot(_e12, _e11));
-    float n_dot_l_2 = saturate(dot(_e12, _e14));
-    const float3 _e21 = weft_main_light_radiance();
-    const float _e24 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
-    const float _e25 = weft_sheen_albedo(_e18, _e24);
-    const float _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
-    const float3 _e31 = weft_sheen_charlie((1.0).xxx, saturate(dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
-    const float3 _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
-    float3 sheen = ((_e31 * _e21) + (_e35 * _e25));
-    const float _e38 = fur_strand_exponent(smoothness_1);
-    float t_dot_l = clamp(dot(_e13, _e14), -1.0, 1.0);
+    const WeftSurface _e7 = weft_surface(p_1, normal);
+    float3 v_3 = _e7.v;
+    float3 n_2 = _e7.n;
+    const float3 _e10 = weft_safe_normalize(strand, n_2);
+    const WeftLightGeometry _e11 = weft_main_light_geometry(n_2, v_3);
+    const float3 _e12 = weft_main_light_radiance();
+    const float _e15 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
+    const float _e17 = weft_sheen_albedo(_e11.n_dot_v, _e15);
+    const float _e19 = weft_sheen_albedo(_e11.n_dot_l, _e15);
+    const float3 _e25 = weft_sheen_charlie((1.0).xxx, _e11.n_dot_h, _e11.n_dot_v, _e11.n_dot_l, _e15);
+    const float3 _e29 = weft_prefiltered_radiance(reflect(-(v_3), n_2), _e15);
+    float3 sheen = ((_e25 * _e12) + (_e29 * _e17));
+    const float _e32 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = clamp(dot(_e10, _e11.l), -1.0, 1.0);
     float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI);
-    float _e60 = material.strand_strength;
-    const float _e63 = fur_strand_norm(_e38);
-    float lobe_1 = (((max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2);
-    out_.diffuse = float4((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
-    const float3 _e74 = weft_sh_irradiance(_e12);
-    out_.ambient = float4(_e74, _e26);
-    const float _e81 = weft_pow5_((1.0 - saturate(dot(_e14, _e16))));
-    out_.sheen = float4(sheen, _e81);
-    out_.strand = float4((_e21 * lobe_1), cone_angle);
-    out_.n_dot_v = saturate(dot(_e12, _e11));
-    FurLight _e89 = out_;
-    const FurLight furlight = _e89;
+    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e10, v_3), -1.0, 1.0))) - WEFT_PI);
+    float _e55 = material.strand_strength;
+    const float _e58 = fur_strand_norm(_e32);
+    float lobe_1 = (((max(_e55, 0.0) * _e58) * sin_l) * _e11.n_dot_l);
+    out_.diffuse = float4((_e12 * (WEFT_INV_PI * _e11.n_dot_l)), _e17);
+    const float3 _e71 = weft_sh_irradiance(n_2);
+    out_.ambient = float4(_e71, _e19);
+    const float _e80 = weft_pow5_((1.0 - saturate(dot(_e11.l, _e11.h))));
+    out_.sheen = float4(sheen, _e80);
+    out_.strand = float4((_e12 * lobe_1), cone_angle);
+    out_.n_dot_v = saturate(dot(n_2, v_3));
+    FurLight _e88 = out_;
+    const FurLight furlight = _e88;
     return furlight;
 }
 
@@ -568,14 +619,14 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_3, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_4, fragmentinput_fs_skin.world_normal_3, fragmentinput_fs_skin.strand_3, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_4, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_5, fragmentinput_fs_shell.world_normal_4, fragmentinput_fs_shell.strand_4, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
     const float4 _e1 = fur_shell(in_3);
     return _e1;
 }

@@ -50,6 +50,19 @@ struct WeftMaterial {
     float strand_strength;
     char _pad22[12];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct FurInput {
     metal::float3 position;
     metal::float3 normal;
@@ -292,6 +305,27 @@ float weft_sheen_albedo(
     return metal::saturate(_e8.x);
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_1,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_1);
+    float _e6 = weft_clamp_cos(metal::dot(n_1, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_1, _e2)), metal::saturate(metal::dot(n_1, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
 metal::float2 fur_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -325,36 +359,34 @@ FurLight fur_vertex_light(
     FurLight out = {};
     float _e5 = material.smoothness;
     float smoothness_1 = metal::saturate(_e5);
-    metal::float3 _e11 = weft_view_direction(p_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e12 = weft_safe_normalize(normal, _e11);
-    metal::float3 _e13 = weft_safe_normalize(strand, _e12);
-    metal::float3 _e14 = weft_main_light_direction(weft_frame);
-    metal::float3 _e16 = weft_safe_normalize(_e14 + _e11, _e12);
-    float _e18 = weft_clamp_cos(metal::dot(_e12, _e11));
-    float n_dot_l_2 = metal::saturate(metal::dot(_e12, _e14));
-    metal::float3 _e21 = weft_main_light_radiance(weft_frame);
-    float _e24 = weft_sheen_clamp_roughness(1.0 - smoothness_1);
-    float _e25 = weft_sheen_albedo(_e18, _e24, weft_lut_sampler, weft_sheen_lut);
-    float _e26 = weft_sheen_albedo(n_dot_l_2, _e24, weft_lut_sampler, weft_sheen_lut);
-    metal::float3 _e31 = weft_sheen_charlie(metal::float3(1.0), metal::saturate(metal::dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
-    metal::float3 _e35 = weft_prefiltered_radiance(metal::reflect(-(_e11), _e12), _e24, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 sheen = (_e31 * _e21) + (_e35 * _e25);
-    float _e38 = fur_strand_exponent(smoothness_1);
-    float t_dot_l = metal::clamp(metal::dot(_e13, _e14), -1.0, 1.0);
+    WeftSurface _e7 = weft_surface(p_1, normal, weft_frame);
+    metal::float3 v_3 = _e7.v;
+    metal::float3 n_2 = _e7.n;
+    metal::float3 _e10 = weft_safe_normalize(strand, n_2);
+    WeftLightGeometry _e11 = weft_main_light_geometry(n_2, v_3, weft_frame);
+    metal::float3 _e12 = weft_main_light_radiance(weft_frame);
+    float _e15 = weft_sheen_clamp_roughness(1.0 - smoothness_1);
+    float _e17 = weft_sheen_albedo(_e11.n_dot_v, _e15, weft_lut_sampler, weft_sheen_lut);
+    float _e19 = weft_sheen_albedo(_e11.n_dot_l, _e15, weft_lut_sampler, weft_sheen_lut);
+    metal::float3 _e25 = weft_sheen_charlie(metal::float3(1.0), _e11.n_dot_h, _e11.n_dot_v, _e11.n_dot_l, _e15);
+    metal::float3 _e29 = weft_prefiltered_radiance(metal::reflect(-(v_3), n_2), _e15, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 sheen = (_e25 * _e12) + (_e29 * _e17);
+    float _e32 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = metal::clamp(metal::dot(_e10, _e11.l), -1.0, 1.0);
     float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
-    float cone_angle = (metal::acos(t_dot_l) + metal::acos(metal::clamp(metal::dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI;
-    float _e60 = material.strand_strength;
-    float _e63 = fur_strand_norm(_e38);
-    float lobe_1 = ((metal::max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2;
-    out.diffuse = metal::float4(_e21 * (WEFT_INV_PI * n_dot_l_2), _e25);
-    metal::float3 _e74 = weft_sh_irradiance(_e12, weft_frame);
-    out.ambient = metal::float4(_e74, _e26);
-    float _e81 = weft_pow5_(1.0 - metal::saturate(metal::dot(_e14, _e16)));
-    out.sheen = metal::float4(sheen, _e81);
-    out.strand = metal::float4(_e21 * lobe_1, cone_angle);
-    out.n_dot_v = metal::saturate(metal::dot(_e12, _e11));
-    FurLight _e89 = out;
-    return _e89;
+    float cone_angle = (metal::acos(t_dot_l) + metal::acos(metal::clamp(metal::dot(_e10, v_3), -1.0, 1.0))) - WEFT_PI;
+    float _e55 = material.strand_strength;
+    float _e58 = fur_strand_norm(_e32);
+    float lobe_1 = ((metal::max(_e55, 0.0) * _e58) * sin_l) * _e11.n_dot_l;
+    out.diffuse = metal::float4(_e12 * (WEFT_INV_PI * _e11.n_dot_l), _e17);
+    metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
+    out.ambient = metal::float4(_e71, _e19);
+    float _e80 = weft_pow5_(1.0 - metal::saturate(metal::dot(_e11.l, _e11.h)));
+    out.sheen = metal::float4(sheen, _e80);
+    out.strand = metal::float4(_e12 * lobe_1, cone_angle);
+    out.n_dot_v = metal::saturate(metal::dot(n_2, v_3));
+    FurLight _e88 = out;
+    return _e88;
 }
 
 FurVaryings fur_vertex(
@@ -598,8 +630,8 @@ vertex vs_shellOutput vs_shell(
 
 
 struct fs_skinInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand_1 [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -620,15 +652,15 @@ fragment fs_skinOutput fs_skin(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand_1, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_2, varyings_2.world_normal_1, varyings_2.strand_1, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
     metal::float4 _e1 = fur_shade(in_2, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
 
 
 struct fs_shellInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand_1 [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -650,7 +682,7 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand_1, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.strand_1, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
     metal::float4 _e1 = fur_shell(in_3, material, material_sampler, base_map, spot_map, noise_map);
     return fs_shellOutput { _e1 };
 }

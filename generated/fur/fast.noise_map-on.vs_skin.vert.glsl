@@ -37,6 +37,18 @@ struct WeftMaterial {
     vec4 strand_color;
     float strand_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct FurInput {
     vec3 position;
     vec3 normal;
@@ -241,6 +253,19 @@ float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
     return clamp(_e8.x, 0.0, 1.0);
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    float _e6 = weft_clamp_cos(dot(n_1, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -257,36 +282,34 @@ FurLight fur_vertex_light(vec3 p_1, vec3 normal, vec3 strand) {
     FurLight out_ = FurLight(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), 0.0);
     float _e5 = _group_1_binding_0_vs.smoothness;
     float smoothness_1 = clamp(_e5, 0.0, 1.0);
-    vec3 _e11 = weft_view_direction(p_1, vec3(0.0, 0.0, 1.0));
-    vec3 _e12 = weft_safe_normalize(normal, _e11);
-    vec3 _e13 = weft_safe_normalize(strand, _e12);
-    vec3 _e14 = weft_main_light_direction();
-    vec3 _e16 = weft_safe_normalize((_e14 + _e11), _e12);
-    float _e18 = weft_clamp_cos(dot(_e12, _e11));
-    float n_dot_l_2 = clamp(dot(_e12, _e14), 0.0, 1.0);
-    vec3 _e21 = weft_main_light_radiance();
-    float _e24 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
-    float _e25 = weft_sheen_albedo(_e18, _e24);
-    float _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
-    vec3 _e31 = weft_sheen_charlie(vec3(1.0), clamp(dot(_e12, _e16), 0.0, 1.0), _e18, n_dot_l_2, _e24);
-    vec3 _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
-    vec3 sheen = ((_e31 * _e21) + (_e35 * _e25));
-    float _e38 = fur_strand_exponent(smoothness_1);
-    float t_dot_l = clamp(dot(_e13, _e14), -1.0, 1.0);
+    WeftSurface _e7 = weft_surface(p_1, normal);
+    vec3 v_3 = _e7.v;
+    vec3 n_2 = _e7.n;
+    vec3 _e10 = weft_safe_normalize(strand, n_2);
+    WeftLightGeometry _e11 = weft_main_light_geometry(n_2, v_3);
+    vec3 _e12 = weft_main_light_radiance();
+    float _e15 = weft_sheen_clamp_roughness((1.0 - smoothness_1));
+    float _e17 = weft_sheen_albedo(_e11.n_dot_v, _e15);
+    float _e19 = weft_sheen_albedo(_e11.n_dot_l, _e15);
+    vec3 _e25 = weft_sheen_charlie(vec3(1.0), _e11.n_dot_h, _e11.n_dot_v, _e11.n_dot_l, _e15);
+    vec3 _e29 = weft_prefiltered_radiance(reflect(-(v_3), n_2), _e15);
+    vec3 sheen = ((_e25 * _e12) + (_e29 * _e17));
+    float _e32 = fur_strand_exponent(smoothness_1);
+    float t_dot_l = clamp(dot(_e10, _e11.l), -1.0, 1.0);
     float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
-    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1.0, 1.0))) - WEFT_PI);
-    float _e60 = _group_1_binding_0_vs.strand_strength;
-    float _e63 = fur_strand_norm(_e38);
-    float lobe_1 = (((max(_e60, 0.0) * _e63) * sin_l) * n_dot_l_2);
-    out_.diffuse = vec4((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
-    vec3 _e74 = weft_sh_irradiance(_e12);
-    out_.ambient = vec4(_e74, _e26);
-    float _e81 = weft_pow5_((1.0 - clamp(dot(_e14, _e16), 0.0, 1.0)));
-    out_.sheen = vec4(sheen, _e81);
-    out_.strand = vec4((_e21 * lobe_1), cone_angle);
-    out_.n_dot_v = clamp(dot(_e12, _e11), 0.0, 1.0);
-    FurLight _e89 = out_;
-    return _e89;
+    float cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e10, v_3), -1.0, 1.0))) - WEFT_PI);
+    float _e55 = _group_1_binding_0_vs.strand_strength;
+    float _e58 = fur_strand_norm(_e32);
+    float lobe_1 = (((max(_e55, 0.0) * _e58) * sin_l) * _e11.n_dot_l);
+    out_.diffuse = vec4((_e12 * (WEFT_INV_PI * _e11.n_dot_l)), _e17);
+    vec3 _e71 = weft_sh_irradiance(n_2);
+    out_.ambient = vec4(_e71, _e19);
+    float _e80 = weft_pow5_((1.0 - clamp(dot(_e11.l, _e11.h), 0.0, 1.0)));
+    out_.sheen = vec4(sheen, _e80);
+    out_.strand = vec4((_e12 * lobe_1), cone_angle);
+    out_.n_dot_v = clamp(dot(n_2, v_3), 0.0, 1.0);
+    FurLight _e88 = out_;
+    return _e88;
 }
 
 FurVaryings fur_vertex(FurInput in_4, float offset) {

@@ -39,6 +39,20 @@ struct WeftMaterial {
     strand_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct FurInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -246,6 +260,19 @@ fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_4: f32) -> f32 {
     return saturate(_e8.x);
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_1: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    let _e6 = weft_clamp_cos(dot(n_1, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_2, _e4)));
+}
+
 fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -263,36 +290,34 @@ fn fur_vertex_light(p_1: vec3<f32>, normal: vec3<f32>, strand: vec3<f32>) -> Fur
 
     let _e5 = material.smoothness;
     let smoothness_1 = saturate(_e5);
-    let _e11 = weft_view_direction(p_1, vec3<f32>(0f, 0f, 1f));
-    let _e12 = weft_safe_normalize(normal, _e11);
-    let _e13 = weft_safe_normalize(strand, _e12);
-    let _e14 = weft_main_light_direction();
-    let _e16 = weft_safe_normalize((_e14 + _e11), _e12);
-    let _e18 = weft_clamp_cos(dot(_e12, _e11));
-    let n_dot_l_2 = saturate(dot(_e12, _e14));
-    let _e21 = weft_main_light_radiance();
-    let _e24 = weft_sheen_clamp_roughness((1f - smoothness_1));
-    let _e25 = weft_sheen_albedo(_e18, _e24);
-    let _e26 = weft_sheen_albedo(n_dot_l_2, _e24);
-    let _e31 = weft_sheen_charlie(vec3(1f), saturate(dot(_e12, _e16)), _e18, n_dot_l_2, _e24);
-    let _e35 = weft_prefiltered_radiance(reflect(-(_e11), _e12), _e24);
-    let sheen = ((_e31 * _e21) + (_e35 * _e25));
-    let _e38 = fur_strand_exponent(smoothness_1);
-    let t_dot_l = clamp(dot(_e13, _e14), -1f, 1f);
+    let _e7 = weft_surface(p_1, normal);
+    let v_3 = _e7.v;
+    let n_2 = _e7.n;
+    let _e10 = weft_safe_normalize(strand, n_2);
+    let _e11 = weft_main_light_geometry(n_2, v_3);
+    let _e12 = weft_main_light_radiance();
+    let _e15 = weft_sheen_clamp_roughness((1f - smoothness_1));
+    let _e17 = weft_sheen_albedo(_e11.n_dot_v, _e15);
+    let _e19 = weft_sheen_albedo(_e11.n_dot_l, _e15);
+    let _e25 = weft_sheen_charlie(vec3(1f), _e11.n_dot_h, _e11.n_dot_v, _e11.n_dot_l, _e15);
+    let _e29 = weft_prefiltered_radiance(reflect(-(v_3), n_2), _e15);
+    let sheen = ((_e25 * _e12) + (_e29 * _e17));
+    let _e32 = fur_strand_exponent(smoothness_1);
+    let t_dot_l = clamp(dot(_e10, _e11.l), -1f, 1f);
     let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
-    let cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e13, _e11), -1f, 1f))) - WEFT_PI);
-    let _e60 = material.strand_strength;
-    let _e63 = fur_strand_norm(_e38);
-    let lobe_1 = (((max(_e60, 0f) * _e63) * sin_l) * n_dot_l_2);
-    out.diffuse = vec4<f32>((_e21 * (WEFT_INV_PI * n_dot_l_2)), _e25);
-    let _e74 = weft_sh_irradiance(_e12);
-    out.ambient = vec4<f32>(_e74, _e26);
-    let _e81 = weft_pow5_((1f - saturate(dot(_e14, _e16))));
-    out.sheen = vec4<f32>(sheen, _e81);
-    out.strand = vec4<f32>((_e21 * lobe_1), cone_angle);
-    out.n_dot_v = saturate(dot(_e12, _e11));
-    let _e89 = out;
-    return _e89;
+    let cone_angle = ((acos(t_dot_l) + acos(clamp(dot(_e10, v_3), -1f, 1f))) - WEFT_PI);
+    let _e55 = material.strand_strength;
+    let _e58 = fur_strand_norm(_e32);
+    let lobe_1 = (((max(_e55, 0f) * _e58) * sin_l) * _e11.n_dot_l);
+    out.diffuse = vec4<f32>((_e12 * (WEFT_INV_PI * _e11.n_dot_l)), _e17);
+    let _e71 = weft_sh_irradiance(n_2);
+    out.ambient = vec4<f32>(_e71, _e19);
+    let _e80 = weft_pow5_((1f - saturate(dot(_e11.l, _e11.h))));
+    out.sheen = vec4<f32>(sheen, _e80);
+    out.strand = vec4<f32>((_e12 * lobe_1), cone_angle);
+    out.n_dot_v = saturate(dot(n_2, v_3));
+    let _e88 = out;
+    return _e88;
 }
 
 fn fur_vertex(in_4: FurInput, offset: f32) -> FurVaryings {

@@ -52,6 +52,24 @@ struct WeftMaterial {
     int _end_pad_2;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct FurInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -102,8 +120,8 @@ Texture2D<float4> height_map : register(t6, space1);
 Texture2D<float4> force_map : register(t7, space1);
 
 struct VertexOutput_vs_skin {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float3 strand : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
@@ -116,8 +134,8 @@ struct VertexOutput_vs_skin {
 };
 
 struct VertexOutput_vs_shell {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float3 strand_1 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
@@ -130,8 +148,8 @@ struct VertexOutput_vs_shell {
 };
 
 struct FragmentInput_fs_skin {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_2 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_3 : LOC1;
     float3 strand_2 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
@@ -144,8 +162,8 @@ struct FragmentInput_fs_skin {
 };
 
 struct FragmentInput_fs_shell {
-    float3 world_position_4 : LOC0;
-    float3 world_normal_3 : LOC1;
+    float3 world_position_5 : LOC0;
+    float3 world_normal_4 : LOC1;
     float3 strand_3 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
@@ -327,6 +345,41 @@ float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4)
     return saturate(_e8.x);
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_1, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    const float _e6 = weft_clamp_cos(dot(n_1, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
 float2 fur_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -425,10 +478,10 @@ float fur_noise(float2 uv0_)
     return _e19;
 }
 
-float2 fur_kajiya_kay_cone(float3 t, float3 l, float3 v_2)
+float2 fur_kajiya_kay_cone(float3 t, float3 l, float3 v_3)
 {
     float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
-    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_3), -1.0, 1.0);
     float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
     float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
     return float2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
@@ -454,57 +507,53 @@ float4 fur_shade(FurVaryings in_5)
         float _e35 = material.smoothness;
         float smoothness_1 = saturate(_e35);
         float roughness_2 = (1.0 - smoothness_1);
-        const float3 _e44 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
-        const float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        const float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        const float3 _e49 = weft_main_light_direction();
-        const float3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        const float _e53 = weft_clamp_cos(dot(_e46, _e44));
-        float n_dot_l_2 = saturate(dot(_e46, _e49));
-        float n_dot_h_2 = saturate(dot(_e46, _e51));
-        float l_dot_h = saturate(dot(_e49, _e51));
+        const WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        float3 v_4 = _e41.v;
+        float3 n_2 = _e41.n;
+        const float3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        const WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_4);
+        float l_dot_h = saturate(dot(_e46.l, _e46.h));
         float3 f0_1 = lerp((0.04).xxx, base, metallic);
         float3 diffuse_albedo = (base * (1.0 - metallic));
-        const float3 _e66 = weft_main_light_radiance();
-        const float3 _e67 = weft_sh_irradiance(_e46);
+        const float3 _e57 = weft_main_light_radiance();
+        const float3 _e58 = weft_sh_irradiance(n_2);
         {
-            float4 _e70 = material.sheen_color;
-            float3 sheen_color_3 = saturate((f0_1 + max(_e70.xyz, (0.0).xxx)));
-            const float _e77 = weft_sheen_clamp_roughness(roughness_2);
-            const float _e78 = weft_sheen_albedo(_e53, _e77);
-            const float _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
-            const float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-            const float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
-            const float3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
-            const float _e83 = fur_strand_exponent(smoothness_1);
-            const float2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
-            float strand_4 = (pow(_e84.x, _e83) * _e84.y);
-            const float3 _e89 = weft_f_schlick(f0_1, l_dot_h);
-            float4 _e92 = material.strand_color;
-            float3 strand_color = (max(_e92.xyz, (0.0).xxx) * _e89);
-            float _e100 = material.strand_strength;
-            const float _e103 = fur_strand_norm(_e83);
-            float3 strand_lobe = (strand_color * (((max(_e100, 0.0) * _e103) * strand_4) * n_dot_l_2));
-            const float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-            float3 base_direct = (_e108 * (_e81 * n_dot_l_2));
-            float3 direct = (((_e82 + base_direct) + strand_lobe) * _e66);
-            const float3 _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
-            float3 env_sheen = ((_e116 * sheen_color_3) * _e78);
-            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
+            float4 _e61 = material.sheen_color;
+            float3 sheen_color_3 = saturate((f0_1 + max(_e61.xyz, (0.0).xxx)));
+            const float _e68 = weft_sheen_clamp_roughness(roughness_2);
+            const float _e70 = weft_sheen_albedo(_e46.n_dot_v, _e68);
+            const float _e72 = weft_sheen_albedo(_e46.n_dot_l, _e68);
+            const float _e73 = weft_sheen_albedo_scaling_view(sheen_color_3, _e70);
+            const float _e74 = weft_sheen_albedo_scaling(sheen_color_3, _e70, _e72);
+            const float3 _e78 = weft_sheen_charlie(sheen_color_3, _e46.n_dot_h, _e46.n_dot_v, _e46.n_dot_l, _e68);
+            const float _e79 = fur_strand_exponent(smoothness_1);
+            const float2 _e81 = fur_kajiya_kay_cone(_e45, _e46.l, v_4);
+            float strand_4 = (pow(_e81.x, _e79) * _e81.y);
+            const float3 _e86 = weft_f_schlick(f0_1, l_dot_h);
+            float4 _e89 = material.strand_color;
+            float3 strand_color = (max(_e89.xyz, (0.0).xxx) * _e86);
+            float _e97 = material.strand_strength;
+            const float _e100 = fur_strand_norm(_e79);
+            float3 strand_lobe = (strand_color * (((max(_e97, 0.0) * _e100) * strand_4) * _e46.n_dot_l));
+            const float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+            float3 base_direct = (_e106 * (_e74 * _e46.n_dot_l));
+            float3 direct = (((_e78 + base_direct) + strand_lobe) * _e57);
+            const float3 _e115 = weft_prefiltered_radiance(reflect(-(v_4), n_2), _e68);
+            float3 env_sheen = ((_e115 * sheen_color_3) * _e70);
+            color = ((direct + ((_e58 * diffuse_albedo) * _e73)) + env_sheen);
         }
     }
-    float _e125 = material.fur_occlusion;
-    float occlusion = (1.0 - (saturate(_e125) * (1.0 - in_5.offset)));
-    float3 _e133 = color;
-    float3 radiance = clamp((_e133 * occlusion), (0.0).xxx, (65504.0).xxx);
+    float _e124 = material.fur_occlusion;
+    float occlusion = (1.0 - (saturate(_e124) * (1.0 - in_5.offset)));
+    float3 _e132 = color;
+    float3 radiance = clamp((_e132 * occlusion), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }
 
 float fur_fade_n_dot_v(FurVaryings in_6)
 {
-    const float3 _e6 = weft_view_direction(in_6.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return saturate(dot(_e8, _e6));
+    const WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return saturate(dot(_e3.n, _e3.v));
 }
 
 float4 fur_shell(FurVaryings in_7)
@@ -551,14 +600,14 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_4, fragmentinput_fs_skin.world_normal_3, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_5, fragmentinput_fs_shell.world_normal_4, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
     const float4 _e1 = fur_shell(in_3);
     return _e1;
 }

@@ -50,6 +50,19 @@ struct WeftMaterial {
     float strand_strength;
     char _pad22[12];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct FurInput {
     metal::float3 position;
     metal::float3 normal;
@@ -298,6 +311,27 @@ float weft_sheen_albedo(
     return metal::saturate(_e8.x);
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_1,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_1);
+    float _e6 = weft_clamp_cos(metal::dot(n_1, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_1, _e2)), metal::saturate(metal::dot(n_1, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
 metal::float2 fur_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -415,10 +449,10 @@ float fur_noise(
 metal::float2 fur_kajiya_kay_cone(
     metal::float3 t,
     metal::float3 l,
-    metal::float3 v_2
+    metal::float3 v_3
 ) {
     float t_dot_l = metal::clamp(metal::dot(t, l), -1.0, 1.0);
-    float t_dot_v = metal::clamp(metal::dot(t, v_2), -1.0, 1.0);
+    float t_dot_v = metal::clamp(metal::dot(t, v_3), -1.0, 1.0);
     float sin_l = metal::sqrt(metal::max(1.0 - (t_dot_l * t_dot_l), 0.0));
     float sin_v = metal::sqrt(metal::max(1.0 - (t_dot_v * t_dot_v), 0.0));
     return metal::float2(metal::max((sin_l * sin_v) - (t_dot_l * t_dot_v), 0.0), sin_l);
@@ -453,49 +487,46 @@ metal::float4 fur_shade(
         float _e35 = material.smoothness;
         float smoothness_1 = metal::saturate(_e35);
         float roughness_2 = 1.0 - smoothness_1;
-        metal::float3 _e44 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-        metal::float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        metal::float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        metal::float3 _e49 = weft_main_light_direction(weft_frame);
-        metal::float3 _e51 = weft_safe_normalize(_e49 + _e44, _e46);
-        float _e53 = weft_clamp_cos(metal::dot(_e46, _e44));
-        float n_dot_l_2 = metal::saturate(metal::dot(_e46, _e49));
-        float n_dot_h_2 = metal::saturate(metal::dot(_e46, _e51));
-        float l_dot_h = metal::saturate(metal::dot(_e49, _e51));
+        WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal, weft_frame);
+        metal::float3 v_4 = _e41.v;
+        metal::float3 n_2 = _e41.n;
+        metal::float3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_4, weft_frame);
+        float l_dot_h = metal::saturate(metal::dot(_e46.l, _e46.h));
         metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
         metal::float3 diffuse_albedo = base * (1.0 - metallic);
-        metal::float3 _e66 = weft_main_light_radiance(weft_frame);
-        metal::float3 _e67 = weft_sh_irradiance(_e46, weft_frame);
+        metal::float3 _e57 = weft_main_light_radiance(weft_frame);
+        metal::float3 _e58 = weft_sh_irradiance(n_2, weft_frame);
         {
-            metal::float4 _e70 = material.sheen_color;
-            metal::float3 sheen_color_3 = metal::saturate(f0_1 + metal::max(_e70.xyz, metal::float3(0.0)));
-            float _e77 = weft_sheen_clamp_roughness(roughness_2);
-            float _e78 = weft_sheen_albedo(_e53, _e77, weft_lut_sampler, weft_sheen_lut);
-            float _e79 = weft_sheen_albedo(n_dot_l_2, _e77, weft_lut_sampler, weft_sheen_lut);
-            float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-            float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
-            metal::float3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
-            float _e83 = fur_strand_exponent(smoothness_1);
-            metal::float2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
-            float strand = metal::pow(_e84.x, _e83) * _e84.y;
-            metal::float3 _e89 = weft_f_schlick(f0_1, l_dot_h);
-            metal::float4 _e92 = material.strand_color;
-            metal::float3 strand_color = metal::max(_e92.xyz, metal::float3(0.0)) * _e89;
-            float _e100 = material.strand_strength;
-            float _e103 = fur_strand_norm(_e83);
-            metal::float3 strand_lobe = strand_color * (((metal::max(_e100, 0.0) * _e103) * strand) * n_dot_l_2);
-            metal::float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-            metal::float3 base_direct = _e108 * (_e81 * n_dot_l_2);
-            metal::float3 direct = ((_e82 + base_direct) + strand_lobe) * _e66;
-            metal::float3 _e116 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e46), _e77, weft_frame, weft_environment, weft_environment_sampler);
-            metal::float3 env_sheen = (_e116 * sheen_color_3) * _e78;
-            color = (direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen;
+            metal::float4 _e61 = material.sheen_color;
+            metal::float3 sheen_color_3 = metal::saturate(f0_1 + metal::max(_e61.xyz, metal::float3(0.0)));
+            float _e68 = weft_sheen_clamp_roughness(roughness_2);
+            float _e70 = weft_sheen_albedo(_e46.n_dot_v, _e68, weft_lut_sampler, weft_sheen_lut);
+            float _e72 = weft_sheen_albedo(_e46.n_dot_l, _e68, weft_lut_sampler, weft_sheen_lut);
+            float _e73 = weft_sheen_albedo_scaling_view(sheen_color_3, _e70);
+            float _e74 = weft_sheen_albedo_scaling(sheen_color_3, _e70, _e72);
+            metal::float3 _e78 = weft_sheen_charlie(sheen_color_3, _e46.n_dot_h, _e46.n_dot_v, _e46.n_dot_l, _e68);
+            float _e79 = fur_strand_exponent(smoothness_1);
+            metal::float2 _e81 = fur_kajiya_kay_cone(_e45, _e46.l, v_4);
+            float strand = metal::pow(_e81.x, _e79) * _e81.y;
+            metal::float3 _e86 = weft_f_schlick(f0_1, l_dot_h);
+            metal::float4 _e89 = material.strand_color;
+            metal::float3 strand_color = metal::max(_e89.xyz, metal::float3(0.0)) * _e86;
+            float _e97 = material.strand_strength;
+            float _e100 = fur_strand_norm(_e79);
+            metal::float3 strand_lobe = strand_color * (((metal::max(_e97, 0.0) * _e100) * strand) * _e46.n_dot_l);
+            metal::float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 base_direct = _e106 * (_e74 * _e46.n_dot_l);
+            metal::float3 direct = ((_e78 + base_direct) + strand_lobe) * _e57;
+            metal::float3 _e115 = weft_prefiltered_radiance(metal::reflect(-(v_4), n_2), _e68, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 env_sheen = (_e115 * sheen_color_3) * _e70;
+            color = (direct + ((_e58 * diffuse_albedo) * _e73)) + env_sheen;
         }
     }
-    float _e125 = material.fur_occlusion;
-    float occlusion = 1.0 - (metal::saturate(_e125) * (1.0 - in_5.offset));
-    metal::float3 _e133 = color;
-    metal::float3 radiance = metal::clamp(_e133 * occlusion, metal::float3(0.0), metal::float3(65504.0));
+    float _e124 = material.fur_occlusion;
+    float occlusion = 1.0 - (metal::saturate(_e124) * (1.0 - in_5.offset));
+    metal::float3 _e132 = color;
+    metal::float3 radiance = metal::clamp(_e132 * occlusion, metal::float3(0.0), metal::float3(65504.0));
     return metal::float4(radiance, alpha);
 }
 
@@ -503,9 +534,8 @@ float fur_fade_n_dot_v(
     FurVaryings in_6,
     constant WeftFrame& weft_frame
 ) {
-    metal::float3 _e6 = weft_view_direction(in_6.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return metal::saturate(metal::dot(_e8, _e6));
+    WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal, weft_frame);
+    return metal::saturate(metal::dot(_e3.n, _e3.v));
 }
 
 metal::float4 fur_shell(
@@ -614,8 +644,8 @@ vertex vs_shellOutput vs_shell(
 
 
 struct fs_skinInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -641,15 +671,15 @@ fragment fs_skinOutput fs_skin(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_2, varyings_2.world_normal_1, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
     metal::float4 _e1 = fur_shade(in_2, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
 
 
 struct fs_shellInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -675,7 +705,7 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(3)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
     metal::float4 _e1 = fur_shell(in_3, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material, material_sampler, base_map, spot_map);
     return fs_shellOutput { _e1 };
 }

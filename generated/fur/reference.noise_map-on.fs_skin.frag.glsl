@@ -37,6 +37,18 @@ struct WeftMaterial {
     vec4 strand_color;
     float strand_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct FurInput {
     vec3 position;
     vec3 normal;
@@ -239,6 +251,19 @@ float weft_sheen_albedo(float n_dot_x, float sheen_roughness_4) {
     return clamp(_e8.x, 0.0, 1.0);
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    float _e6 = weft_clamp_cos(dot(n_1, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -251,9 +276,9 @@ float fur_strand_norm(float p) {
     return sqrt(((((2.0 * p) + 1.0) * 0.25) * WEFT_INV_PI));
 }
 
-vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_2) {
+vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_3) {
     float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
-    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_3), -1.0, 1.0);
     float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
     float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
     return vec2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
@@ -277,56 +302,52 @@ vec4 fur_shade(FurVaryings in_5) {
         float _e35 = _group_1_binding_0_fs.smoothness;
         float smoothness_1 = clamp(_e35, 0.0, 1.0);
         float roughness_2 = (1.0 - smoothness_1);
-        vec3 _e44 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
-        vec3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        vec3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        vec3 _e49 = weft_main_light_direction();
-        vec3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        float _e53 = weft_clamp_cos(dot(_e46, _e44));
-        float n_dot_l_2 = clamp(dot(_e46, _e49), 0.0, 1.0);
-        float n_dot_h_2 = clamp(dot(_e46, _e51), 0.0, 1.0);
-        float l_dot_h = clamp(dot(_e49, _e51), 0.0, 1.0);
+        WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        vec3 v_4 = _e41.v;
+        vec3 n_2 = _e41.n;
+        vec3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_4);
+        float l_dot_h = clamp(dot(_e46.l, _e46.h), 0.0, 1.0);
         vec3 f0_1 = mix(vec3(0.04), base, metallic);
         vec3 diffuse_albedo = (base * (1.0 - metallic));
-        vec3 _e66 = weft_main_light_radiance();
-        vec3 _e67 = weft_sh_irradiance(_e46);
+        vec3 _e57 = weft_main_light_radiance();
+        vec3 _e58 = weft_sh_irradiance(n_2);
         {
-            vec4 _e70 = _group_1_binding_0_fs.sheen_color;
-            vec3 sheen_color_3 = clamp((f0_1 + max(_e70.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-            float _e77 = weft_sheen_clamp_roughness(roughness_2);
-            float _e78 = weft_sheen_albedo(_e53, _e77);
-            float _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
-            float _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-            float _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
-            vec3 _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
-            float _e83 = fur_strand_exponent(smoothness_1);
-            vec2 _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
-            float strand = (pow(_e84.x, _e83) * _e84.y);
-            vec3 _e89 = weft_f_schlick(f0_1, l_dot_h);
-            vec4 _e92 = _group_1_binding_0_fs.strand_color;
-            vec3 strand_color = (max(_e92.xyz, vec3(0.0)) * _e89);
-            float _e100 = _group_1_binding_0_fs.strand_strength;
-            float _e103 = fur_strand_norm(_e83);
-            vec3 strand_lobe = (strand_color * (((max(_e100, 0.0) * _e103) * strand) * n_dot_l_2));
-            vec3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-            vec3 base_direct = (_e108 * (_e81 * n_dot_l_2));
-            vec3 direct = (((_e82 + base_direct) + strand_lobe) * _e66);
-            vec3 _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
-            vec3 env_sheen = ((_e116 * sheen_color_3) * _e78);
-            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
+            vec4 _e61 = _group_1_binding_0_fs.sheen_color;
+            vec3 sheen_color_3 = clamp((f0_1 + max(_e61.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e68 = weft_sheen_clamp_roughness(roughness_2);
+            float _e70 = weft_sheen_albedo(_e46.n_dot_v, _e68);
+            float _e72 = weft_sheen_albedo(_e46.n_dot_l, _e68);
+            float _e73 = weft_sheen_albedo_scaling_view(sheen_color_3, _e70);
+            float _e74 = weft_sheen_albedo_scaling(sheen_color_3, _e70, _e72);
+            vec3 _e78 = weft_sheen_charlie(sheen_color_3, _e46.n_dot_h, _e46.n_dot_v, _e46.n_dot_l, _e68);
+            float _e79 = fur_strand_exponent(smoothness_1);
+            vec2 _e81 = fur_kajiya_kay_cone(_e45, _e46.l, v_4);
+            float strand = (pow(_e81.x, _e79) * _e81.y);
+            vec3 _e86 = weft_f_schlick(f0_1, l_dot_h);
+            vec4 _e89 = _group_1_binding_0_fs.strand_color;
+            vec3 strand_color = (max(_e89.xyz, vec3(0.0)) * _e86);
+            float _e97 = _group_1_binding_0_fs.strand_strength;
+            float _e100 = fur_strand_norm(_e79);
+            vec3 strand_lobe = (strand_color * (((max(_e97, 0.0) * _e100) * strand) * _e46.n_dot_l));
+            vec3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 base_direct = (_e106 * (_e74 * _e46.n_dot_l));
+            vec3 direct = (((_e78 + base_direct) + strand_lobe) * _e57);
+            vec3 _e115 = weft_prefiltered_radiance(reflect(-(v_4), n_2), _e68);
+            vec3 env_sheen = ((_e115 * sheen_color_3) * _e70);
+            color = ((direct + ((_e58 * diffuse_albedo) * _e73)) + env_sheen);
         }
     }
-    float _e125 = _group_1_binding_0_fs.fur_occlusion;
-    float occlusion = (1.0 - (clamp(_e125, 0.0, 1.0) * (1.0 - in_5.offset)));
-    vec3 _e133 = color;
-    vec3 radiance = clamp((_e133 * occlusion), vec3(0.0), vec3(65504.0));
+    float _e124 = _group_1_binding_0_fs.fur_occlusion;
+    float occlusion = (1.0 - (clamp(_e124, 0.0, 1.0) * (1.0 - in_5.offset)));
+    vec3 _e132 = color;
+    vec3 radiance = clamp((_e132 * occlusion), vec3(0.0), vec3(65504.0));
     return vec4(radiance, alpha);
 }
 
 float fur_fade_n_dot_v(FurVaryings in_6) {
-    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return clamp(dot(_e8, _e6), 0.0, 1.0);
+    WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return clamp(dot(_e3.n, _e3.v), 0.0, 1.0);
 }
 
 void main() {

@@ -37,6 +37,18 @@ struct WeftMaterial {
     vec4 strand_color;
     float strand_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct FurInput {
     vec3 position;
     vec3 normal;
@@ -226,6 +238,19 @@ float weft_specular_mip(float roughness) {
     return ((r_2 * (1.7 - (0.7 * r_2))) * max_mip);
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    float _e6 = weft_clamp_cos(dot(n_1, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -274,18 +299,17 @@ FurVaryings fur_vertex(FurInput in_4, float offset) {
     return _e103;
 }
 
-vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_2) {
+vec2 fur_kajiya_kay_cone(vec3 t, vec3 l, vec3 v_3) {
     float t_dot_l = clamp(dot(t, l), -1.0, 1.0);
-    float t_dot_v = clamp(dot(t, v_2), -1.0, 1.0);
+    float t_dot_v = clamp(dot(t, v_3), -1.0, 1.0);
     float sin_l = sqrt(max((1.0 - (t_dot_l * t_dot_l)), 0.0));
     float sin_v = sqrt(max((1.0 - (t_dot_v * t_dot_v)), 0.0));
     return vec2(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0.0), sin_l);
 }
 
 float fur_fade_n_dot_v(FurVaryings in_6) {
-    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return clamp(dot(_e8, _e6), 0.0, 1.0);
+    WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return clamp(dot(_e3.n, _e3.v), 0.0, 1.0);
 }
 
 void main() {

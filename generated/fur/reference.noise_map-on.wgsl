@@ -39,6 +39,20 @@ struct WeftMaterial {
     strand_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct FurInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -247,6 +261,19 @@ fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_4: f32) -> f32 {
     return saturate(_e8.x);
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_1: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_1);
+    let _e6 = weft_clamp_cos(dot(n_1, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_2, _e4)));
+}
+
 fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -305,9 +332,9 @@ fn fur_noise(uv0_: vec2<f32>) -> f32 {
     }
 }
 
-fn fur_kajiya_kay_cone(t: vec3<f32>, l: vec3<f32>, v_2: vec3<f32>) -> vec2<f32> {
+fn fur_kajiya_kay_cone(t: vec3<f32>, l: vec3<f32>, v_3: vec3<f32>) -> vec2<f32> {
     let t_dot_l = clamp(dot(t, l), -1f, 1f);
-    let t_dot_v = clamp(dot(t, v_2), -1f, 1f);
+    let t_dot_v = clamp(dot(t, v_3), -1f, 1f);
     let sin_l = sqrt(max((1f - (t_dot_l * t_dot_l)), 0f));
     let sin_v = sqrt(max((1f - (t_dot_v * t_dot_v)), 0f));
     return vec2<f32>(max(((sin_l * sin_v) - (t_dot_l * t_dot_v)), 0f), sin_l);
@@ -332,56 +359,52 @@ fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
         let _e35 = material.smoothness;
         let smoothness_1 = saturate(_e35);
         let roughness_2 = (1f - smoothness_1);
-        let _e44 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
-        let _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        let _e48 = weft_safe_normalize(in_5.strand, _e46);
-        let _e49 = weft_main_light_direction();
-        let _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        let _e53 = weft_clamp_cos(dot(_e46, _e44));
-        let n_dot_l_2 = saturate(dot(_e46, _e49));
-        let n_dot_h_2 = saturate(dot(_e46, _e51));
-        let l_dot_h = saturate(dot(_e49, _e51));
+        let _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        let v_4 = _e41.v;
+        let n_2 = _e41.n;
+        let _e45 = weft_safe_normalize(in_5.strand, n_2);
+        let _e46 = weft_main_light_geometry(n_2, v_4);
+        let l_dot_h = saturate(dot(_e46.l, _e46.h));
         let f0_1 = mix(vec3(0.04f), base, metallic);
         let diffuse_albedo = (base * (1f - metallic));
-        let _e66 = weft_main_light_radiance();
-        let _e67 = weft_sh_irradiance(_e46);
+        let _e57 = weft_main_light_radiance();
+        let _e58 = weft_sh_irradiance(n_2);
         {
-            let _e70 = material.sheen_color;
-            let sheen_color_3 = saturate((f0_1 + max(_e70.xyz, vec3(0f))));
-            let _e77 = weft_sheen_clamp_roughness(roughness_2);
-            let _e78 = weft_sheen_albedo(_e53, _e77);
-            let _e79 = weft_sheen_albedo(n_dot_l_2, _e77);
-            let _e80 = weft_sheen_albedo_scaling_view(sheen_color_3, _e78);
-            let _e81 = weft_sheen_albedo_scaling(sheen_color_3, _e78, _e79);
-            let _e82 = weft_sheen_charlie(sheen_color_3, n_dot_h_2, _e53, n_dot_l_2, _e77);
-            let _e83 = fur_strand_exponent(smoothness_1);
-            let _e84 = fur_kajiya_kay_cone(_e48, _e49, _e44);
-            let strand = (pow(_e84.x, _e83) * _e84.y);
-            let _e89 = weft_f_schlick(f0_1, l_dot_h);
-            let _e92 = material.strand_color;
-            let strand_color = (max(_e92.xyz, vec3(0f)) * _e89);
-            let _e100 = material.strand_strength;
-            let _e103 = fur_strand_norm(_e83);
-            let strand_lobe = (strand_color * (((max(_e100, 0f) * _e103) * strand) * n_dot_l_2));
-            let _e108 = weft_diffuse_lambert(diffuse_albedo);
-            let base_direct = (_e108 * (_e81 * n_dot_l_2));
-            let direct = (((_e82 + base_direct) + strand_lobe) * _e66);
-            let _e116 = weft_prefiltered_radiance(reflect(-(_e44), _e46), _e77);
-            let env_sheen = ((_e116 * sheen_color_3) * _e78);
-            color = ((direct + ((_e67 * diffuse_albedo) * _e80)) + env_sheen);
+            let _e61 = material.sheen_color;
+            let sheen_color_3 = saturate((f0_1 + max(_e61.xyz, vec3(0f))));
+            let _e68 = weft_sheen_clamp_roughness(roughness_2);
+            let _e70 = weft_sheen_albedo(_e46.n_dot_v, _e68);
+            let _e72 = weft_sheen_albedo(_e46.n_dot_l, _e68);
+            let _e73 = weft_sheen_albedo_scaling_view(sheen_color_3, _e70);
+            let _e74 = weft_sheen_albedo_scaling(sheen_color_3, _e70, _e72);
+            let _e78 = weft_sheen_charlie(sheen_color_3, _e46.n_dot_h, _e46.n_dot_v, _e46.n_dot_l, _e68);
+            let _e79 = fur_strand_exponent(smoothness_1);
+            let _e81 = fur_kajiya_kay_cone(_e45, _e46.l, v_4);
+            let strand = (pow(_e81.x, _e79) * _e81.y);
+            let _e86 = weft_f_schlick(f0_1, l_dot_h);
+            let _e89 = material.strand_color;
+            let strand_color = (max(_e89.xyz, vec3(0f)) * _e86);
+            let _e97 = material.strand_strength;
+            let _e100 = fur_strand_norm(_e79);
+            let strand_lobe = (strand_color * (((max(_e97, 0f) * _e100) * strand) * _e46.n_dot_l));
+            let _e106 = weft_diffuse_lambert(diffuse_albedo);
+            let base_direct = (_e106 * (_e74 * _e46.n_dot_l));
+            let direct = (((_e78 + base_direct) + strand_lobe) * _e57);
+            let _e115 = weft_prefiltered_radiance(reflect(-(v_4), n_2), _e68);
+            let env_sheen = ((_e115 * sheen_color_3) * _e70);
+            color = ((direct + ((_e58 * diffuse_albedo) * _e73)) + env_sheen);
         }
     }
-    let _e125 = material.fur_occlusion;
-    let occlusion = (1f - (saturate(_e125) * (1f - in_5.offset)));
-    let _e133 = color;
-    let radiance = clamp((_e133 * occlusion), vec3(0f), vec3(65504f));
+    let _e124 = material.fur_occlusion;
+    let occlusion = (1f - (saturate(_e124) * (1f - in_5.offset)));
+    let _e132 = color;
+    let radiance = clamp((_e132 * occlusion), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }
 
 fn fur_fade_n_dot_v(in_6: FurVaryings) -> f32 {
-    let _e6 = weft_view_direction(in_6.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return saturate(dot(_e8, _e6));
+    let _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return saturate(dot(_e3.n, _e3.v));
 }
 
 fn fur_shell(in_7: FurVaryings) -> vec4<f32> {

@@ -37,6 +37,18 @@ struct WeftMaterial {
     vec4 strand_color;
     float strand_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct FurInput {
     vec3 position;
     vec3 normal;
@@ -186,6 +198,19 @@ vec3 weft_sh_irradiance(vec3 n) {
     return max(_e91, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    float _e6 = weft_clamp_cos(dot(n_1, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 fur_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -244,42 +269,38 @@ vec4 fur_shade(FurVaryings in_5) {
         float _e35 = _group_1_binding_0_fs.smoothness;
         float smoothness = clamp(_e35, 0.0, 1.0);
         float roughness_2 = (1.0 - smoothness);
-        vec3 _e44 = weft_view_direction(in_5.world_position, vec3(0.0, 0.0, 1.0));
-        vec3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        vec3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        vec3 _e49 = weft_main_light_direction();
-        vec3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        float _e53 = weft_clamp_cos(dot(_e46, _e44));
-        float n_dot_l_2 = clamp(dot(_e46, _e49), 0.0, 1.0);
-        float n_dot_h_1 = clamp(dot(_e46, _e51), 0.0, 1.0);
-        float l_dot_h = clamp(dot(_e49, _e51), 0.0, 1.0);
+        WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        vec3 v_2 = _e41.v;
+        vec3 n_2 = _e41.n;
+        vec3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_2);
+        float l_dot_h = clamp(dot(_e46.l, _e46.h), 0.0, 1.0);
         vec3 f0_1 = mix(vec3(0.04), base, metallic);
         vec3 diffuse_albedo = (base * (1.0 - metallic));
-        vec3 _e66 = weft_main_light_radiance();
-        vec3 _e67 = weft_sh_irradiance(_e46);
+        vec3 _e57 = weft_main_light_radiance();
+        vec3 _e58 = weft_sh_irradiance(n_2);
         {
-            float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
-            vec3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-            float _e70 = weft_fabric_d(n_dot_h_1);
-            vec3 specular = ((_e70 * _e68) * _e69);
-            vec3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-            vec4 _e76 = _group_1_binding_0_fs.sheen_color;
-            float _e80 = _group_1_binding_0_fs.scatter_scale;
-            vec3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
-            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+            float _e61 = weft_v_schlick_ggx(_e46.n_dot_v, _e46.n_dot_l, roughness_2);
+            vec3 _e62 = weft_f_schlick(f0_1, l_dot_h);
+            float _e64 = weft_fabric_d(_e46.n_dot_h);
+            vec3 specular = ((_e64 * _e61) * _e62);
+            vec3 _e67 = weft_diffuse_lambert(diffuse_albedo);
+            vec4 _e70 = _group_1_binding_0_fs.sheen_color;
+            float _e76 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e77 = weft_fabric_scatter(_e70.xyz, _e46.n_dot_l, _e46.n_dot_v, _e76);
+            color = (((((_e67 + specular) * _e57) * _e46.n_dot_l) + (_e58 * diffuse_albedo)) + _e77);
         }
     }
-    float _e90 = _group_1_binding_0_fs.fur_occlusion;
-    float occlusion = (1.0 - (clamp(_e90, 0.0, 1.0) * (1.0 - in_5.offset)));
-    vec3 _e98 = color;
-    vec3 radiance = clamp((_e98 * occlusion), vec3(0.0), vec3(65504.0));
+    float _e87 = _group_1_binding_0_fs.fur_occlusion;
+    float occlusion = (1.0 - (clamp(_e87, 0.0, 1.0) * (1.0 - in_5.offset)));
+    vec3 _e95 = color;
+    vec3 radiance = clamp((_e95 * occlusion), vec3(0.0), vec3(65504.0));
     return vec4(radiance, alpha);
 }
 
 float fur_fade_n_dot_v(FurVaryings in_6) {
-    vec3 _e6 = weft_view_direction(in_6.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return clamp(dot(_e8, _e6), 0.0, 1.0);
+    WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return clamp(dot(_e3.n, _e3.v), 0.0, 1.0);
 }
 
 vec4 fur_shell(FurVaryings in_7) {

@@ -39,6 +39,20 @@ struct WeftMaterial {
     strand_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct FurInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -188,6 +202,19 @@ fn weft_sh_irradiance(n: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_1: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    let _e6 = weft_clamp_cos(dot(n_1, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn fur_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -284,42 +311,38 @@ fn fur_shade(in_5: FurVaryings) -> vec4<f32> {
         let _e35 = material.smoothness;
         let smoothness = saturate(_e35);
         let roughness_2 = (1f - smoothness);
-        let _e44 = weft_view_direction(in_5.world_position, vec3<f32>(0f, 0f, 1f));
-        let _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        let _e48 = weft_safe_normalize(in_5.strand, _e46);
-        let _e49 = weft_main_light_direction();
-        let _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        let _e53 = weft_clamp_cos(dot(_e46, _e44));
-        let n_dot_l_2 = saturate(dot(_e46, _e49));
-        let n_dot_h_1 = saturate(dot(_e46, _e51));
-        let l_dot_h = saturate(dot(_e49, _e51));
+        let _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        let v_2 = _e41.v;
+        let n_2 = _e41.n;
+        let _e45 = weft_safe_normalize(in_5.strand, n_2);
+        let _e46 = weft_main_light_geometry(n_2, v_2);
+        let l_dot_h = saturate(dot(_e46.l, _e46.h));
         let f0_1 = mix(vec3(0.04f), base, metallic);
         let diffuse_albedo = (base * (1f - metallic));
-        let _e66 = weft_main_light_radiance();
-        let _e67 = weft_sh_irradiance(_e46);
+        let _e57 = weft_main_light_radiance();
+        let _e58 = weft_sh_irradiance(n_2);
         {
-            let _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
-            let _e69 = weft_f_schlick(f0_1, l_dot_h);
-            let _e70 = weft_fabric_d(n_dot_h_1);
-            let specular = ((_e70 * _e68) * _e69);
-            let _e73 = weft_diffuse_lambert(diffuse_albedo);
-            let _e76 = material.sheen_color;
-            let _e80 = material.scatter_scale;
-            let _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
-            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+            let _e61 = weft_v_schlick_ggx(_e46.n_dot_v, _e46.n_dot_l, roughness_2);
+            let _e62 = weft_f_schlick(f0_1, l_dot_h);
+            let _e64 = weft_fabric_d(_e46.n_dot_h);
+            let specular = ((_e64 * _e61) * _e62);
+            let _e67 = weft_diffuse_lambert(diffuse_albedo);
+            let _e70 = material.sheen_color;
+            let _e76 = material.scatter_scale;
+            let _e77 = weft_fabric_scatter(_e70.xyz, _e46.n_dot_l, _e46.n_dot_v, _e76);
+            color = (((((_e67 + specular) * _e57) * _e46.n_dot_l) + (_e58 * diffuse_albedo)) + _e77);
         }
     }
-    let _e90 = material.fur_occlusion;
-    let occlusion = (1f - (saturate(_e90) * (1f - in_5.offset)));
-    let _e98 = color;
-    let radiance = clamp((_e98 * occlusion), vec3(0f), vec3(65504f));
+    let _e87 = material.fur_occlusion;
+    let occlusion = (1f - (saturate(_e87) * (1f - in_5.offset)));
+    let _e95 = color;
+    let radiance = clamp((_e95 * occlusion), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }
 
 fn fur_fade_n_dot_v(in_6: FurVaryings) -> f32 {
-    let _e6 = weft_view_direction(in_6.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return saturate(dot(_e8, _e6));
+    let _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return saturate(dot(_e3.n, _e3.v));
 }
 
 fn fur_shell(in_7: FurVaryings) -> vec4<f32> {

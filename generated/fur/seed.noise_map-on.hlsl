@@ -52,6 +52,24 @@ struct WeftMaterial {
     int _end_pad_2;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct FurInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -98,8 +116,8 @@ Texture2D<float4> height_map : register(t6, space1);
 Texture2D<float4> force_map : register(t7, space1);
 
 struct VertexOutput_vs_skin {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float3 strand : LOC2;
     float2 uv0_1 : LOC3;
     float offset_1 : LOC4;
@@ -112,8 +130,8 @@ struct VertexOutput_vs_skin {
 };
 
 struct VertexOutput_vs_shell {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float3 strand_1 : LOC2;
     float2 uv0_2 : LOC3;
     float offset_2 : LOC4;
@@ -126,8 +144,8 @@ struct VertexOutput_vs_shell {
 };
 
 struct FragmentInput_fs_skin {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_2 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_3 : LOC1;
     float3 strand_2 : LOC2;
     float2 uv0_3 : LOC3;
     float offset_3 : LOC4;
@@ -140,8 +158,8 @@ struct FragmentInput_fs_skin {
 };
 
 struct FragmentInput_fs_shell {
-    float3 world_position_4 : LOC0;
-    float3 world_normal_3 : LOC1;
+    float3 world_position_5 : LOC0;
+    float3 world_normal_4 : LOC1;
     float3 strand_3 : LOC2;
     float2 uv0_4 : LOC3;
     float offset_4 : LOC4;
@@ -268,6 +286,41 @@ float3 weft_sh_irradiance(float3 n)
     return max(_e91, (0.0).xxx);
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_1, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_1);
+    const float _e6 = weft_clamp_cos(dot(n_1, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_1, _e2)), saturate(dot(n_1, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 fur_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -342,43 +395,39 @@ float4 fur_shade(FurVaryings in_5)
         float _e35 = material.smoothness;
         float smoothness = saturate(_e35);
         float roughness_2 = (1.0 - smoothness);
-        const float3 _e44 = weft_view_direction(in_5.world_position, float3(0.0, 0.0, 1.0));
-        const float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        const float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        const float3 _e49 = weft_main_light_direction();
-        const float3 _e51 = weft_safe_normalize((_e49 + _e44), _e46);
-        const float _e53 = weft_clamp_cos(dot(_e46, _e44));
-        float n_dot_l_2 = saturate(dot(_e46, _e49));
-        float n_dot_h_1 = saturate(dot(_e46, _e51));
-        float l_dot_h = saturate(dot(_e49, _e51));
+        const WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal);
+        float3 v_2 = _e41.v;
+        float3 n_2 = _e41.n;
+        const float3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        const WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_2);
+        float l_dot_h = saturate(dot(_e46.l, _e46.h));
         float3 f0_1 = lerp((0.04).xxx, base, metallic);
         float3 diffuse_albedo = (base * (1.0 - metallic));
-        const float3 _e66 = weft_main_light_radiance();
-        const float3 _e67 = weft_sh_irradiance(_e46);
+        const float3 _e57 = weft_main_light_radiance();
+        const float3 _e58 = weft_sh_irradiance(n_2);
         {
-            const float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
-            const float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-            const float _e70 = weft_fabric_d(n_dot_h_1);
-            float3 specular = ((_e70 * _e68) * _e69);
-            const float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-            float4 _e76 = material.sheen_color;
-            float _e80 = material.scatter_scale;
-            const float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
-            color = (((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81);
+            const float _e61 = weft_v_schlick_ggx(_e46.n_dot_v, _e46.n_dot_l, roughness_2);
+            const float3 _e62 = weft_f_schlick(f0_1, l_dot_h);
+            const float _e64 = weft_fabric_d(_e46.n_dot_h);
+            float3 specular = ((_e64 * _e61) * _e62);
+            const float3 _e67 = weft_diffuse_lambert(diffuse_albedo);
+            float4 _e70 = material.sheen_color;
+            float _e76 = material.scatter_scale;
+            const float3 _e77 = weft_fabric_scatter(_e70.xyz, _e46.n_dot_l, _e46.n_dot_v, _e76);
+            color = (((((_e67 + specular) * _e57) * _e46.n_dot_l) + (_e58 * diffuse_albedo)) + _e77);
         }
     }
-    float _e90 = material.fur_occlusion;
-    float occlusion = (1.0 - (saturate(_e90) * (1.0 - in_5.offset)));
-    float3 _e98 = color;
-    float3 radiance = clamp((_e98 * occlusion), (0.0).xxx, (65504.0).xxx);
+    float _e87 = material.fur_occlusion;
+    float occlusion = (1.0 - (saturate(_e87) * (1.0 - in_5.offset)));
+    float3 _e95 = color;
+    float3 radiance = clamp((_e95 * occlusion), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }
 
 float fur_fade_n_dot_v(FurVaryings in_6)
 {
-    const float3 _e6 = weft_view_direction(in_6.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return saturate(dot(_e8, _e6));
+    const WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal);
+    return saturate(dot(_e3.n, _e3.v));
 }
 
 float4 fur_shell(FurVaryings in_7)
@@ -425,14 +474,14 @@ VertexOutput_vs_shell vs_shell(FurInput in_1, uint instance : SV_InstanceID)
 
 float4 fs_skin(FragmentInput_fs_skin fragmentinput_fs_skin) : SV_Target0
 {
-    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_3, fragmentinput_fs_skin.world_normal_2, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
+    FurVaryings in_2 = { fragmentinput_fs_skin.clip_position_2, fragmentinput_fs_skin.world_position_4, fragmentinput_fs_skin.world_normal_3, fragmentinput_fs_skin.strand_2, fragmentinput_fs_skin.uv0_3, fragmentinput_fs_skin.offset_3, fragmentinput_fs_skin.light_diffuse_2, fragmentinput_fs_skin.light_ambient_2, fragmentinput_fs_skin.light_sheen_2, fragmentinput_fs_skin.light_strand_2, fragmentinput_fs_skin.light_n_dot_v_2 };
     const float4 _e1 = fur_shade(in_2);
     return float4(_e1.xyz, 1.0);
 }
 
 float4 fs_shell(FragmentInput_fs_shell fragmentinput_fs_shell) : SV_Target0
 {
-    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_4, fragmentinput_fs_shell.world_normal_3, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
+    FurVaryings in_3 = { fragmentinput_fs_shell.clip_position_3, fragmentinput_fs_shell.world_position_5, fragmentinput_fs_shell.world_normal_4, fragmentinput_fs_shell.strand_3, fragmentinput_fs_shell.uv0_4, fragmentinput_fs_shell.offset_4, fragmentinput_fs_shell.light_diffuse_3, fragmentinput_fs_shell.light_ambient_3, fragmentinput_fs_shell.light_sheen_3, fragmentinput_fs_shell.light_strand_3, fragmentinput_fs_shell.light_n_dot_v_3 };
     const float4 _e1 = fur_shell(in_3);
     return _e1;
 }

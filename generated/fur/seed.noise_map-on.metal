@@ -50,6 +50,19 @@ struct WeftMaterial {
     float strand_strength;
     char _pad22[12];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct FurInput {
     metal::float3 position;
     metal::float3 normal;
@@ -223,6 +236,27 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_1,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_1);
+    float _e6 = weft_clamp_cos(metal::dot(n_1, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_1, _e2)), metal::saturate(metal::dot(n_1, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 fur_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -314,35 +348,32 @@ metal::float4 fur_shade(
         float _e35 = material.smoothness;
         float smoothness = metal::saturate(_e35);
         float roughness_2 = 1.0 - smoothness;
-        metal::float3 _e44 = weft_view_direction(in_5.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-        metal::float3 _e46 = weft_safe_normalize(in_5.world_normal, _e44);
-        metal::float3 _e48 = weft_safe_normalize(in_5.strand, _e46);
-        metal::float3 _e49 = weft_main_light_direction(weft_frame);
-        metal::float3 _e51 = weft_safe_normalize(_e49 + _e44, _e46);
-        float _e53 = weft_clamp_cos(metal::dot(_e46, _e44));
-        float n_dot_l_2 = metal::saturate(metal::dot(_e46, _e49));
-        float n_dot_h_1 = metal::saturate(metal::dot(_e46, _e51));
-        float l_dot_h = metal::saturate(metal::dot(_e49, _e51));
+        WeftSurface _e41 = weft_surface(in_5.world_position, in_5.world_normal, weft_frame);
+        metal::float3 v_2 = _e41.v;
+        metal::float3 n_2 = _e41.n;
+        metal::float3 _e45 = weft_safe_normalize(in_5.strand, n_2);
+        WeftLightGeometry _e46 = weft_main_light_geometry(n_2, v_2, weft_frame);
+        float l_dot_h = metal::saturate(metal::dot(_e46.l, _e46.h));
         metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
         metal::float3 diffuse_albedo = base * (1.0 - metallic);
-        metal::float3 _e66 = weft_main_light_radiance(weft_frame);
-        metal::float3 _e67 = weft_sh_irradiance(_e46, weft_frame);
+        metal::float3 _e57 = weft_main_light_radiance(weft_frame);
+        metal::float3 _e58 = weft_sh_irradiance(n_2, weft_frame);
         {
-            float _e68 = weft_v_schlick_ggx(_e53, n_dot_l_2, roughness_2);
-            metal::float3 _e69 = weft_f_schlick(f0_1, l_dot_h);
-            float _e70 = weft_fabric_d(n_dot_h_1);
-            metal::float3 specular = (_e70 * _e68) * _e69;
-            metal::float3 _e73 = weft_diffuse_lambert(diffuse_albedo);
-            metal::float4 _e76 = material.sheen_color;
-            float _e80 = material.scatter_scale;
-            metal::float3 _e81 = weft_fabric_scatter(_e76.xyz, n_dot_l_2, _e53, _e80);
-            color = ((((_e73 + specular) * _e66) * n_dot_l_2) + (_e67 * diffuse_albedo)) + _e81;
+            float _e61 = weft_v_schlick_ggx(_e46.n_dot_v, _e46.n_dot_l, roughness_2);
+            metal::float3 _e62 = weft_f_schlick(f0_1, l_dot_h);
+            float _e64 = weft_fabric_d(_e46.n_dot_h);
+            metal::float3 specular = (_e64 * _e61) * _e62;
+            metal::float3 _e67 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float4 _e70 = material.sheen_color;
+            float _e76 = material.scatter_scale;
+            metal::float3 _e77 = weft_fabric_scatter(_e70.xyz, _e46.n_dot_l, _e46.n_dot_v, _e76);
+            color = ((((_e67 + specular) * _e57) * _e46.n_dot_l) + (_e58 * diffuse_albedo)) + _e77;
         }
     }
-    float _e90 = material.fur_occlusion;
-    float occlusion = 1.0 - (metal::saturate(_e90) * (1.0 - in_5.offset));
-    metal::float3 _e98 = color;
-    metal::float3 radiance = metal::clamp(_e98 * occlusion, metal::float3(0.0), metal::float3(65504.0));
+    float _e87 = material.fur_occlusion;
+    float occlusion = 1.0 - (metal::saturate(_e87) * (1.0 - in_5.offset));
+    metal::float3 _e95 = color;
+    metal::float3 radiance = metal::clamp(_e95 * occlusion, metal::float3(0.0), metal::float3(65504.0));
     return metal::float4(radiance, alpha);
 }
 
@@ -350,9 +381,8 @@ float fur_fade_n_dot_v(
     FurVaryings in_6,
     constant WeftFrame& weft_frame
 ) {
-    metal::float3 _e6 = weft_view_direction(in_6.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e8 = weft_safe_normalize(in_6.world_normal, _e6);
-    return metal::saturate(metal::dot(_e8, _e6));
+    WeftSurface _e3 = weft_surface(in_6.world_position, in_6.world_normal, weft_frame);
+    return metal::saturate(metal::dot(_e3.n, _e3.v));
 }
 
 metal::float4 fur_shell(
@@ -458,8 +488,8 @@ vertex vs_shellOutput vs_shell(
 
 
 struct fs_skinInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -481,15 +511,15 @@ fragment fs_skinOutput fs_skin(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(1)]]
 ) {
-    const FurVaryings in_2 = { clip_position, varyings_2.world_position_1, varyings_2.world_normal, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
+    const FurVaryings in_2 = { clip_position, varyings_2.world_position_2, varyings_2.world_normal_1, varyings_2.strand, varyings_2.uv0_1, varyings_2.offset_1, {}, varyings_2.light_diffuse, varyings_2.light_ambient, varyings_2.light_sheen, varyings_2.light_strand, varyings_2.light_n_dot_v };
     metal::float4 _e1 = fur_shade(in_2, weft_frame, material, material_sampler, base_map, spot_map);
     return fs_skinOutput { metal::float4(_e1.xyz, 1.0) };
 }
 
 
 struct fs_shellInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float3 strand [[user(loc2), center_perspective]];
     metal::float2 uv0_1 [[user(loc3), center_perspective]];
     float offset_1 [[user(loc4), center_perspective]];
@@ -512,7 +542,7 @@ fragment fs_shellOutput fs_shell(
 , metal::texture2d<float, metal::access::sample> spot_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(2)]]
 ) {
-    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
+    const FurVaryings in_3 = { clip_position_1, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.strand, varyings_3.uv0_1, varyings_3.offset_1, {}, varyings_3.light_diffuse, varyings_3.light_ambient, varyings_3.light_sheen, varyings_3.light_strand, varyings_3.light_n_dot_v };
     metal::float4 _e1 = fur_shell(in_3, weft_frame, material, material_sampler, base_map, spot_map, noise_map);
     return fs_shellOutput { _e1 };
 }

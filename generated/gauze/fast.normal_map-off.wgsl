@@ -32,6 +32,20 @@ struct WeftMaterial {
     sampling_density: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -184,16 +198,30 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal), world_normal, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_2);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -242,29 +270,29 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_spec_ggx_aniso(v_2: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
-    let _e9 = weft_safe_normalize((v_2 + l_1), vec3<f32>(0f, 0f, 1f));
+fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
     let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    let _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_3: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_1 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_3[2];
+    let n_5 = frame_3[2];
     let dir_1 = select(frame_3[0], frame_3[1], (k_1 >= 0f));
-    let aniso_t = cross(dir_1, v_3);
+    let aniso_t = cross(dir_1, v_4);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -334,75 +362,69 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let _e51 = material.mesh_gap;
     let _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     let mesh = (mesh_tex * _e52);
-    let _e59 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let face = select(-1f, 1f, front_facing);
-    let _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
-    let _e67 = n;
-    let _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-    let cos_v = min(abs(dot(_e65, _e59)), 1f);
+    let _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_5 = _e56.v;
+    let n_geom = _e56.n;
+    n = n_geom;
+    let _e60 = n;
+    let _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    let cos_v = min(abs(dot(n_geom, v_5)), 1f);
     let sin_v = sqrt(max((1f - (cos_v * cos_v)), 0f));
-    let _e82 = material.thread_density;
-    let density = clamp(_e82, 0f, 200f);
+    let _e75 = material.thread_density;
+    let density = clamp(_e75, 0f, 200f);
     let s_3 = pow(max(sin_v, 0.00000001f), density);
-    let _e91 = material.thread_transmittance;
-    let transmittance = clamp(_e91, 1f, 1000f);
+    let _e84 = material.thread_transmittance;
+    let transmittance = clamp(_e84, 1f, 1000f);
     let thread_opacity = saturate((1f - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)));
     let alpha = saturate(((1f - ((1f - s_3) * (1f - (mesh * thread_opacity)))) * base_alpha));
     let coverage = saturate(((1f - ((1f - s_3) * (1f - mesh))) * base_alpha));
-    let _e122 = material.pattern_rotation;
-    let rot = radians(_e122);
-    let _e124 = weft_rotate_tangent_frame(_e69, rot);
+    let _e115 = material.pattern_rotation;
+    let rot = radians(_e115);
+    let _e117 = weft_rotate_tangent_frame(_e62, rot);
+    let _e120 = material.pattern_threshold;
+    let above_hard = select(0f, 1f, (pattern > _e120));
     let _e127 = material.pattern_threshold;
-    let above_hard = select(0f, 1f, (pattern > _e127));
-    let _e134 = material.pattern_threshold;
-    let above_aa = saturate((((pattern - _e134) / max(pattern_w, 0.0001f)) + 0.5f));
-    let _e142 = weft_main_light_direction();
-    let _e144 = n;
-    let _e145 = weft_safe_normalize((_e142 + _e59), _e144);
-    let _e146 = n;
-    let _e148 = weft_clamp_cos(dot(_e146, _e59));
-    let _e149 = n;
-    let n_dot_l = saturate(dot(_e149, _e142));
-    let v_dot_h_1 = saturate(dot(_e59, _e145));
-    let _e154 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    let _e155 = weft_main_light_radiance();
-    let _e158 = material.scatter_color;
-    let scatter = max(_e158.xyz, vec3(0f));
+    let above_aa = saturate((((pattern - _e127) / max(pattern_w, 0.0001f)) + 0.5f));
+    let _e135 = n;
+    let _e136 = weft_main_light_geometry(_e135, v_5);
+    let _e137 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    let _e138 = weft_main_light_radiance();
+    let _e141 = material.scatter_color;
+    let scatter = max(_e141.xyz, vec3(0f));
     let tint = saturate(scatter);
     let f0_2 = vec3(0.04f);
     {
         {
-            let _e172 = weft_rotate_tangent_frame(_e69, (rot * above_aa));
-            let _e173 = weft_aniso_to_frame(_e172, _e59);
-            let _e174 = weft_aniso_to_frame(_e172, _e142);
-            let _e177 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
-            lobe = _e177;
+            let _e155 = weft_rotate_tangent_frame(_e62, (rot * above_aa));
+            let _e156 = weft_aniso_to_frame(_e155, v_5);
+            let _e158 = weft_aniso_to_frame(_e155, _e136.l);
+            let _e161 = weft_spec_ggx_aniso(_e156, _e158, _e137.x, _e137.y);
+            lobe = _e161;
         }
-        let _e178 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e179 = lobe;
-        spec_direct = ((((_e179 * _e178) * tint) * noise) * _e155);
-        let _e186 = weft_f_schlick(f0_2, _e148);
-        diffuse_kd = (vec3(1f) - (tint * _e186));
-        let _e189 = weft_env_brdf_lut(_e148, roughness_6);
-        let _e190 = weft_env_brdf_from_lut(f0_2, _e189);
-        env_brdf = (_e190 * tint);
-        let _e194 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e194), vec3(0f));
+        let _e163 = weft_f_schlick(f0_2, _e136.v_dot_h);
+        let _e164 = lobe;
+        spec_direct = ((((_e164 * _e163) * tint) * noise) * _e138);
+        let _e172 = weft_f_schlick(f0_2, _e136.n_dot_v);
+        diffuse_kd = (vec3(1f) - (tint * _e172));
+        let _e176 = weft_env_brdf_lut(_e136.n_dot_v, roughness_6);
+        let _e177 = weft_env_brdf_from_lut(f0_2, _e176);
+        env_brdf = (_e177 * tint);
+        let _e181 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e181), vec3(0f));
     }
-    let _e199 = diffuse_kd;
-    let _e200 = weft_diffuse_lambert(base);
-    let diffuse_direct = (((_e199 * _e200) * _e155) * n_dot_l);
-    let _e204 = n;
-    let _e205 = weft_sh_irradiance(_e204);
-    let _e206 = ambient_kd;
-    let diffuse_indirect = ((_e205 * _e206) * base);
-    let _e209 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
-    let _e212 = weft_prefiltered_radiance(reflect(-(_e59), _e209), roughness_6);
-    let _e213 = env_brdf;
-    let spec_indirect = ((_e212 * _e213) * noise);
-    let _e218 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e218 + spec_indirect)));
+    let _e186 = diffuse_kd;
+    let _e187 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e186 * _e187) * _e138) * _e136.n_dot_l);
+    let _e192 = n;
+    let _e193 = weft_sh_irradiance(_e192);
+    let _e194 = ambient_kd;
+    let diffuse_indirect = ((_e193 * _e194) * base);
+    let _e197 = weft_aniso_bent_normal(_e62, v_5, anisotropy_2, roughness_6);
+    let _e200 = weft_prefiltered_radiance(reflect(-(v_5), _e197), roughness_6);
+    let _e201 = env_brdf;
+    let spec_indirect = ((_e200 * _e201) * noise);
+    let _e206 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e206 + spec_indirect)));
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

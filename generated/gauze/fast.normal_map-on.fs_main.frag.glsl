@@ -30,6 +30,18 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -178,26 +190,47 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -246,29 +279,29 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e9 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_3, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_4, float anisotropy_1, float roughness_5) {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_4[2];
+    vec3 n_6 = frame_4[2];
     vec3 dir_1 = ((k_1 >= 0.0) ? frame_4[1] : frame_4[0]);
-    vec3 aniso_t = cross(dir_1, v_3);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -315,86 +348,78 @@ void main() {
     float _e51 = _group_1_binding_0_fs.mesh_gap;
     float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = (mesh_tex * _e52);
-    vec3 _e59 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    vec3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
+    WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_6 = _e56.v;
+    vec3 n_geom = _e56.n;
+    n = n_geom;
     {
-        mat3x3 _e68 = weft_tangent_frame(_e65, in_1.world_tangent);
-        vec4 _e72 = _group_1_binding_0_fs.normal_map_st;
-        vec2 _e73 = weft_transform_uv(in_1.uv0_, _e72);
-        vec4 _e76 = texture(_group_1_binding_4_fs, vec2(_e73));
-        vec3 texel_1 = _e76.xyz;
-        float _e80 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e81 = weft_unpack_normal(texel_1, _e80);
-        vec3 _e82 = weft_normal_from_tangent_space(_e68, _e81);
-        n = _e82;
+        vec4 _e63 = _group_1_binding_0_fs.normal_map_st;
+        vec2 _e64 = weft_transform_uv(in_1.uv0_, _e63);
+        vec4 _e67 = texture(_group_1_binding_4_fs, vec2(_e64));
+        vec3 texel_2 = _e67.xyz;
+        float _e72 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e73 = weft_mapped_normal(n_geom, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    vec3 _e83 = n;
-    mat3x3 _e85 = weft_tangent_frame(_e83, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e65, _e59)), 1.0);
+    vec3 _e74 = n;
+    mat3x3 _e76 = weft_tangent_frame(_e74, in_1.world_tangent);
+    float cos_v = min(abs(dot(n_geom, v_6)), 1.0);
     float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float _e98 = _group_1_binding_0_fs.thread_density;
-    float density = clamp(_e98, 0.0, 200.0);
+    float _e89 = _group_1_binding_0_fs.thread_density;
+    float density = clamp(_e89, 0.0, 200.0);
     float s_3 = pow(max(sin_v, 1e-8), density);
-    float _e107 = _group_1_binding_0_fs.thread_transmittance;
-    float transmittance = clamp(_e107, 1.0, 1000.0);
+    float _e98 = _group_1_binding_0_fs.thread_transmittance;
+    float transmittance = clamp(_e98, 1.0, 1000.0);
     float thread_opacity = clamp((1.0 - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)), 0.0, 1.0);
     float alpha = clamp(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha), 0.0, 1.0);
     float coverage = clamp(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha), 0.0, 1.0);
-    float _e138 = _group_1_binding_0_fs.pattern_rotation;
-    float rot = radians(_e138);
-    mat3x3 _e140 = weft_rotate_tangent_frame(_e85, rot);
-    float _e143 = _group_1_binding_0_fs.pattern_threshold;
-    float above_hard = ((pattern > _e143) ? 1.0 : 0.0);
-    float _e150 = _group_1_binding_0_fs.pattern_threshold;
-    float above_aa = clamp((((pattern - _e150) / max(pattern_w, 0.0001)) + 0.5), 0.0, 1.0);
-    vec3 _e158 = weft_main_light_direction();
-    vec3 _e160 = n;
-    vec3 _e161 = weft_safe_normalize((_e158 + _e59), _e160);
-    vec3 _e162 = n;
-    float _e164 = weft_clamp_cos(dot(_e162, _e59));
-    vec3 _e165 = n;
-    float n_dot_l = clamp(dot(_e165, _e158), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e59, _e161), 0.0, 1.0);
-    vec2 _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    vec3 _e171 = weft_main_light_radiance();
-    vec4 _e174 = _group_1_binding_0_fs.scatter_color;
-    vec3 scatter = max(_e174.xyz, vec3(0.0));
+    float _e129 = _group_1_binding_0_fs.pattern_rotation;
+    float rot = radians(_e129);
+    mat3x3 _e131 = weft_rotate_tangent_frame(_e76, rot);
+    float _e134 = _group_1_binding_0_fs.pattern_threshold;
+    float above_hard = ((pattern > _e134) ? 1.0 : 0.0);
+    float _e141 = _group_1_binding_0_fs.pattern_threshold;
+    float above_aa = clamp((((pattern - _e141) / max(pattern_w, 0.0001)) + 0.5), 0.0, 1.0);
+    vec3 _e149 = n;
+    WeftLightGeometry _e150 = weft_main_light_geometry(_e149, v_6);
+    vec2 _e151 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    vec3 _e152 = weft_main_light_radiance();
+    vec4 _e155 = _group_1_binding_0_fs.scatter_color;
+    vec3 scatter = max(_e155.xyz, vec3(0.0));
     vec3 tint = clamp(scatter, vec3(0.0), vec3(1.0));
     vec3 f0_2 = vec3(0.04);
     {
         {
-            mat3x3 _e188 = weft_rotate_tangent_frame(_e85, (rot * above_aa));
-            vec3 _e189 = weft_aniso_to_frame(_e188, _e59);
-            vec3 _e190 = weft_aniso_to_frame(_e188, _e158);
-            float _e193 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
-            lobe = _e193;
+            mat3x3 _e169 = weft_rotate_tangent_frame(_e76, (rot * above_aa));
+            vec3 _e170 = weft_aniso_to_frame(_e169, v_6);
+            vec3 _e172 = weft_aniso_to_frame(_e169, _e150.l);
+            float _e175 = weft_spec_ggx_aniso(_e170, _e172, _e151.x, _e151.y);
+            lobe = _e175;
         }
-        vec3 _e194 = weft_f_schlick(f0_2, v_dot_h_1);
-        float _e195 = lobe;
-        spec_direct = ((((_e195 * _e194) * tint) * noise) * _e171);
-        vec3 _e202 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = (vec3(1.0) - (tint * _e202));
-        vec2 _e205 = weft_env_brdf_lut(_e164, roughness_6);
-        vec3 _e206 = weft_env_brdf_from_lut(f0_2, _e205);
-        env_brdf = (_e206 * tint);
-        vec3 _e210 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e210), vec3(0.0));
+        vec3 _e177 = weft_f_schlick(f0_2, _e150.v_dot_h);
+        float _e178 = lobe;
+        spec_direct = ((((_e178 * _e177) * tint) * noise) * _e152);
+        vec3 _e186 = weft_f_schlick(f0_2, _e150.n_dot_v);
+        diffuse_kd = (vec3(1.0) - (tint * _e186));
+        vec2 _e190 = weft_env_brdf_lut(_e150.n_dot_v, roughness_6);
+        vec3 _e191 = weft_env_brdf_from_lut(f0_2, _e190);
+        env_brdf = (_e191 * tint);
+        vec3 _e195 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e195), vec3(0.0));
     }
-    vec3 _e215 = diffuse_kd;
-    vec3 _e216 = weft_diffuse_lambert(base);
-    vec3 diffuse_direct = (((_e215 * _e216) * _e171) * n_dot_l);
-    vec3 _e220 = n;
-    vec3 _e221 = weft_sh_irradiance(_e220);
-    vec3 _e222 = ambient_kd;
-    vec3 diffuse_indirect = ((_e221 * _e222) * base);
-    vec3 _e225 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    vec3 _e228 = weft_prefiltered_radiance(reflect(-(_e59), _e225), roughness_6);
-    vec3 _e229 = env_brdf;
-    vec3 spec_indirect = ((_e228 * _e229) * noise);
-    vec3 _e234 = spec_direct;
-    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e234 + spec_indirect)));
+    vec3 _e200 = diffuse_kd;
+    vec3 _e201 = weft_diffuse_lambert(base);
+    vec3 diffuse_direct = (((_e200 * _e201) * _e152) * _e150.n_dot_l);
+    vec3 _e206 = n;
+    vec3 _e207 = weft_sh_irradiance(_e206);
+    vec3 _e208 = ambient_kd;
+    vec3 diffuse_indirect = ((_e207 * _e208) * base);
+    vec3 _e211 = weft_aniso_bent_normal(_e76, v_6, anisotropy_2, roughness_6);
+    vec3 _e214 = weft_prefiltered_radiance(reflect(-(v_6), _e211), roughness_6);
+    vec3 _e215 = env_brdf;
+    vec3 spec_indirect = ((_e214 * _e215) * noise);
+    vec3 _e220 = spec_direct;
+    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e220 + spec_indirect)));
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

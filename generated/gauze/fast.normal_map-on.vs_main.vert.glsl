@@ -30,6 +30,18 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -155,26 +167,47 @@ float weft_specular_mip(float roughness_1) {
     return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -223,29 +256,29 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e9 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_3, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_4, vec3 v_4, float anisotropy_1, float roughness_5) {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_4[2];
+    vec3 n_6 = frame_4[2];
     vec3 dir_1 = ((k_1 >= 0.0) ? frame_4[1] : frame_4[0]);
-    vec3 aniso_t = cross(dir_1, v_3);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 

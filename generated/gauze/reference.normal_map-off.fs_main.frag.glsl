@@ -30,6 +30,18 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -176,16 +188,30 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -234,29 +260,29 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_2, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e9 = weft_safe_normalize((v_2 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_3, vec3 v_3, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_3, vec3 v_4, float anisotropy_1, float roughness_5) {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_3[2];
+    vec3 n_5 = frame_3[2];
     vec3 dir_1 = ((k_1 >= 0.0) ? frame_3[1] : frame_3[0]);
-    vec3 aniso_t = cross(dir_1, v_3);
+    vec3 aniso_t = cross(dir_1, v_4);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -303,77 +329,71 @@ void main() {
     float _e51 = _group_1_binding_0_fs.mesh_gap;
     float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = (mesh_tex * _e52);
-    vec3 _e59 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    vec3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
-    vec3 _e67 = n;
-    mat3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e65, _e59)), 1.0);
+    WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_5 = _e56.v;
+    vec3 n_geom = _e56.n;
+    n = n_geom;
+    vec3 _e60 = n;
+    mat3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    float cos_v = min(abs(dot(n_geom, v_5)), 1.0);
     float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float _e82 = _group_1_binding_0_fs.thread_density;
-    float density = clamp(_e82, 0.0, 200.0);
+    float _e75 = _group_1_binding_0_fs.thread_density;
+    float density = clamp(_e75, 0.0, 200.0);
     float s_3 = pow(max(sin_v, 1e-8), density);
-    float _e91 = _group_1_binding_0_fs.thread_transmittance;
-    float transmittance = clamp(_e91, 1.0, 1000.0);
+    float _e84 = _group_1_binding_0_fs.thread_transmittance;
+    float transmittance = clamp(_e84, 1.0, 1000.0);
     float thread_opacity = clamp((1.0 - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)), 0.0, 1.0);
     float alpha = clamp(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha), 0.0, 1.0);
     float coverage = clamp(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha), 0.0, 1.0);
-    float _e122 = _group_1_binding_0_fs.pattern_rotation;
-    float rot = radians(_e122);
-    mat3x3 _e124 = weft_rotate_tangent_frame(_e69, rot);
+    float _e115 = _group_1_binding_0_fs.pattern_rotation;
+    float rot = radians(_e115);
+    mat3x3 _e117 = weft_rotate_tangent_frame(_e62, rot);
+    float _e120 = _group_1_binding_0_fs.pattern_threshold;
+    float above_hard = ((pattern > _e120) ? 1.0 : 0.0);
     float _e127 = _group_1_binding_0_fs.pattern_threshold;
-    float above_hard = ((pattern > _e127) ? 1.0 : 0.0);
-    float _e134 = _group_1_binding_0_fs.pattern_threshold;
-    float above_aa = clamp((((pattern - _e134) / max(pattern_w, 0.0001)) + 0.5), 0.0, 1.0);
-    vec3 _e142 = weft_main_light_direction();
-    vec3 _e144 = n;
-    vec3 _e145 = weft_safe_normalize((_e142 + _e59), _e144);
-    vec3 _e146 = n;
-    float _e148 = weft_clamp_cos(dot(_e146, _e59));
-    vec3 _e149 = n;
-    float n_dot_l = clamp(dot(_e149, _e142), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e59, _e145), 0.0, 1.0);
-    vec2 _e154 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    vec3 _e155 = weft_main_light_radiance();
-    vec4 _e158 = _group_1_binding_0_fs.scatter_color;
-    vec3 scatter = max(_e158.xyz, vec3(0.0));
+    float above_aa = clamp((((pattern - _e127) / max(pattern_w, 0.0001)) + 0.5), 0.0, 1.0);
+    vec3 _e135 = n;
+    WeftLightGeometry _e136 = weft_main_light_geometry(_e135, v_5);
+    vec2 _e137 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    vec3 _e138 = weft_main_light_radiance();
+    vec4 _e141 = _group_1_binding_0_fs.scatter_color;
+    vec3 scatter = max(_e141.xyz, vec3(0.0));
     vec3 tint = clamp(scatter, vec3(0.0), vec3(1.0));
     vec3 f0_2 = vec3(0.04);
     {
         {
-            vec3 _e171 = weft_aniso_to_frame(_e69, _e59);
-            vec3 _e172 = weft_aniso_to_frame(_e69, _e142);
-            vec3 _e173 = weft_aniso_to_frame(_e124, _e59);
-            vec3 _e174 = weft_aniso_to_frame(_e124, _e142);
-            float _e177 = weft_spec_ggx_aniso(_e171, _e172, _e154.x, _e154.y);
-            float _e180 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
-            lobe = mix(_e177, _e180, above_aa);
+            vec3 _e154 = weft_aniso_to_frame(_e62, v_5);
+            vec3 _e156 = weft_aniso_to_frame(_e62, _e136.l);
+            vec3 _e157 = weft_aniso_to_frame(_e117, v_5);
+            vec3 _e159 = weft_aniso_to_frame(_e117, _e136.l);
+            float _e162 = weft_spec_ggx_aniso(_e154, _e156, _e137.x, _e137.y);
+            float _e165 = weft_spec_ggx_aniso(_e157, _e159, _e137.x, _e137.y);
+            lobe = mix(_e162, _e165, above_aa);
         }
-        vec3 _e182 = weft_f_schlick(f0_2, v_dot_h_1);
-        float _e183 = lobe;
-        spec_direct = ((((_e183 * _e182) * tint) * noise) * _e155);
-        vec3 _e190 = weft_f_schlick(f0_2, _e148);
-        diffuse_kd = (vec3(1.0) - (tint * _e190));
-        vec2 _e193 = weft_env_brdf_lut(_e148, roughness_6);
-        vec3 _e194 = weft_env_brdf_from_lut(f0_2, _e193);
-        env_brdf = (_e194 * tint);
-        vec3 _e198 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e198), vec3(0.0));
+        vec3 _e168 = weft_f_schlick(f0_2, _e136.v_dot_h);
+        float _e169 = lobe;
+        spec_direct = ((((_e169 * _e168) * tint) * noise) * _e138);
+        vec3 _e177 = weft_f_schlick(f0_2, _e136.n_dot_v);
+        diffuse_kd = (vec3(1.0) - (tint * _e177));
+        vec2 _e181 = weft_env_brdf_lut(_e136.n_dot_v, roughness_6);
+        vec3 _e182 = weft_env_brdf_from_lut(f0_2, _e181);
+        env_brdf = (_e182 * tint);
+        vec3 _e186 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e186), vec3(0.0));
     }
-    vec3 _e203 = diffuse_kd;
-    vec3 _e204 = weft_diffuse_lambert(base);
-    vec3 diffuse_direct = (((_e203 * _e204) * _e155) * n_dot_l);
-    vec3 _e208 = n;
-    vec3 _e209 = weft_sh_irradiance(_e208);
-    vec3 _e210 = ambient_kd;
-    vec3 diffuse_indirect = ((_e209 * _e210) * base);
-    vec3 _e213 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
-    vec3 _e216 = weft_prefiltered_radiance(reflect(-(_e59), _e213), roughness_6);
-    vec3 _e217 = env_brdf;
-    vec3 spec_indirect = ((_e216 * _e217) * noise);
-    vec3 _e222 = spec_direct;
-    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e222 + spec_indirect)));
+    vec3 _e191 = diffuse_kd;
+    vec3 _e192 = weft_diffuse_lambert(base);
+    vec3 diffuse_direct = (((_e191 * _e192) * _e138) * _e136.n_dot_l);
+    vec3 _e197 = n;
+    vec3 _e198 = weft_sh_irradiance(_e197);
+    vec3 _e199 = ambient_kd;
+    vec3 diffuse_indirect = ((_e198 * _e199) * base);
+    vec3 _e202 = weft_aniso_bent_normal(_e62, v_5, anisotropy_2, roughness_6);
+    vec3 _e205 = weft_prefiltered_radiance(reflect(-(v_5), _e202), roughness_6);
+    vec3 _e206 = env_brdf;
+    vec3 spec_indirect = ((_e205 * _e206) * noise);
+    vec3 _e211 = spec_direct;
+    vec3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e211 + spec_indirect)));
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

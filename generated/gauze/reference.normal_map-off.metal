@@ -40,6 +40,19 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -210,19 +223,42 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal : -(world_normal);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float2 weft_transform_uv(
@@ -300,43 +336,43 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 float weft_spec_ggx_aniso(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l_1,
     float alpha_t_3,
     float alpha_b_3
 ) {
-    metal::float3 _e9 = weft_safe_normalize(v_2 + l_1, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e9 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_3,
-    metal::float3 v_3,
+    metal::float3 v_4,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_3[2];
+    metal::float3 n_5 = frame_3[2];
     metal::float3 dir_1 = (k_1 >= 0.0) ? frame_3[1] : frame_3[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_3);
+    metal::float3 aniso_t = metal::cross(dir_1, v_4);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -396,8 +432,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -420,7 +456,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> pattern_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 spec_direct = {};
     metal::float3 env_brdf = {};
@@ -451,77 +487,71 @@ fragment fs_mainOutput fs_main(
     float _e51 = material.mesh_gap;
     float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = mesh_tex * _e52;
-    metal::float3 _e59 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    float face = front_facing ? 1.0 : -1.0;
-    metal::float3 _e65 = weft_safe_normalize(in_1.world_normal * face, _e59);
-    n = _e65;
-    metal::float3 _e67 = n;
-    metal::float3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-    float cos_v = metal::min(metal::abs(metal::dot(_e65, _e59)), 1.0);
+    WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_5 = _e56.v;
+    metal::float3 n_geom = _e56.n;
+    n = n_geom;
+    metal::float3 _e60 = n;
+    metal::float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    float cos_v = metal::min(metal::abs(metal::dot(n_geom, v_5)), 1.0);
     float sin_v = metal::sqrt(metal::max(1.0 - (cos_v * cos_v), 0.0));
-    float _e82 = material.thread_density;
-    float density = metal::clamp(_e82, 0.0, 200.0);
+    float _e75 = material.thread_density;
+    float density = metal::clamp(_e75, 0.0, 200.0);
     float s_3 = metal::pow(metal::max(sin_v, 0.00000001), density);
-    float _e91 = material.thread_transmittance;
-    float transmittance = metal::clamp(_e91, 1.0, 1000.0);
+    float _e84 = material.thread_transmittance;
+    float transmittance = metal::clamp(_e84, 1.0, 1000.0);
     float thread_opacity = metal::saturate(1.0 - (metal::log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE));
     float alpha = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha);
     float coverage = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha);
-    float _e122 = material.pattern_rotation;
-    float rot = ((_e122) * 0.017453292519943295474);
-    metal::float3x3 _e124 = weft_rotate_tangent_frame(_e69, rot);
+    float _e115 = material.pattern_rotation;
+    float rot = ((_e115) * 0.017453292519943295474);
+    metal::float3x3 _e117 = weft_rotate_tangent_frame(_e62, rot);
+    float _e120 = material.pattern_threshold;
+    float above_hard = (pattern > _e120) ? 1.0 : 0.0;
     float _e127 = material.pattern_threshold;
-    float above_hard = (pattern > _e127) ? 1.0 : 0.0;
-    float _e134 = material.pattern_threshold;
-    float above_aa = metal::saturate(((pattern - _e134) / metal::max(pattern_w, 0.0001)) + 0.5);
-    metal::float3 _e142 = weft_main_light_direction(weft_frame);
-    metal::float3 _e144 = n;
-    metal::float3 _e145 = weft_safe_normalize(_e142 + _e59, _e144);
-    metal::float3 _e146 = n;
-    float _e148 = weft_clamp_cos(metal::dot(_e146, _e59));
-    metal::float3 _e149 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e149, _e142));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e59, _e145));
-    metal::float2 _e154 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    metal::float3 _e155 = weft_main_light_radiance(weft_frame);
-    metal::float4 _e158 = material.scatter_color;
-    metal::float3 scatter = metal::max(_e158.xyz, metal::float3(0.0));
+    float above_aa = metal::saturate(((pattern - _e127) / metal::max(pattern_w, 0.0001)) + 0.5);
+    metal::float3 _e135 = n;
+    WeftLightGeometry _e136 = weft_main_light_geometry(_e135, v_5, weft_frame);
+    metal::float2 _e137 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    metal::float3 _e138 = weft_main_light_radiance(weft_frame);
+    metal::float4 _e141 = material.scatter_color;
+    metal::float3 scatter = metal::max(_e141.xyz, metal::float3(0.0));
     metal::float3 tint = metal::saturate(scatter);
     metal::float3 f0_2 = metal::float3(0.04);
     {
         {
-            metal::float3 _e171 = weft_aniso_to_frame(_e69, _e59);
-            metal::float3 _e172 = weft_aniso_to_frame(_e69, _e142);
-            metal::float3 _e173 = weft_aniso_to_frame(_e124, _e59);
-            metal::float3 _e174 = weft_aniso_to_frame(_e124, _e142);
-            float _e177 = weft_spec_ggx_aniso(_e171, _e172, _e154.x, _e154.y);
-            float _e180 = weft_spec_ggx_aniso(_e173, _e174, _e154.x, _e154.y);
-            lobe = metal::mix(_e177, _e180, above_aa);
+            metal::float3 _e154 = weft_aniso_to_frame(_e62, v_5);
+            metal::float3 _e156 = weft_aniso_to_frame(_e62, _e136.l);
+            metal::float3 _e157 = weft_aniso_to_frame(_e117, v_5);
+            metal::float3 _e159 = weft_aniso_to_frame(_e117, _e136.l);
+            float _e162 = weft_spec_ggx_aniso(_e154, _e156, _e137.x, _e137.y);
+            float _e165 = weft_spec_ggx_aniso(_e157, _e159, _e137.x, _e137.y);
+            lobe = metal::mix(_e162, _e165, above_aa);
         }
-        metal::float3 _e182 = weft_f_schlick(f0_2, v_dot_h_1);
-        float _e183 = lobe;
-        spec_direct = (((_e183 * _e182) * tint) * noise) * _e155;
-        metal::float3 _e190 = weft_f_schlick(f0_2, _e148);
-        diffuse_kd = metal::float3(1.0) - (tint * _e190);
-        metal::float2 _e193 = weft_env_brdf_lut(_e148, roughness_6, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e194 = weft_env_brdf_from_lut(f0_2, _e193);
-        env_brdf = _e194 * tint;
-        metal::float3 _e198 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e198, metal::float3(0.0));
+        metal::float3 _e168 = weft_f_schlick(f0_2, _e136.v_dot_h);
+        float _e169 = lobe;
+        spec_direct = (((_e169 * _e168) * tint) * noise) * _e138;
+        metal::float3 _e177 = weft_f_schlick(f0_2, _e136.n_dot_v);
+        diffuse_kd = metal::float3(1.0) - (tint * _e177);
+        metal::float2 _e181 = weft_env_brdf_lut(_e136.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e182 = weft_env_brdf_from_lut(f0_2, _e181);
+        env_brdf = _e182 * tint;
+        metal::float3 _e186 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e186, metal::float3(0.0));
     }
-    metal::float3 _e203 = diffuse_kd;
-    metal::float3 _e204 = weft_diffuse_lambert(base);
-    metal::float3 diffuse_direct = ((_e203 * _e204) * _e155) * n_dot_l;
-    metal::float3 _e208 = n;
-    metal::float3 _e209 = weft_sh_irradiance(_e208, weft_frame);
-    metal::float3 _e210 = ambient_kd;
-    metal::float3 diffuse_indirect = (_e209 * _e210) * base;
-    metal::float3 _e213 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_6);
-    metal::float3 _e216 = weft_prefiltered_radiance(metal::reflect(-(_e59), _e213), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e217 = env_brdf;
-    metal::float3 spec_indirect = (_e216 * _e217) * noise;
-    metal::float3 _e222 = spec_direct;
-    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e222 + spec_indirect));
+    metal::float3 _e191 = diffuse_kd;
+    metal::float3 _e192 = weft_diffuse_lambert(base);
+    metal::float3 diffuse_direct = ((_e191 * _e192) * _e138) * _e136.n_dot_l;
+    metal::float3 _e197 = n;
+    metal::float3 _e198 = weft_sh_irradiance(_e197, weft_frame);
+    metal::float3 _e199 = ambient_kd;
+    metal::float3 diffuse_indirect = (_e198 * _e199) * base;
+    metal::float3 _e202 = weft_aniso_bent_normal(_e62, v_5, anisotropy_2, roughness_6);
+    metal::float3 _e205 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e202), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e206 = env_brdf;
+    metal::float3 spec_indirect = (_e205 * _e206) * noise;
+    metal::float3 _e211 = spec_direct;
+    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e211 + spec_indirect));
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

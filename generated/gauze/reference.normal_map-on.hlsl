@@ -37,6 +37,24 @@ struct WeftMaterial {
     float sampling_density;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -83,20 +101,20 @@ Texture2D<float4> noise_map : register(t6, space1);
 Texture2D<float4> pattern_map : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_pow5_(float x)
@@ -214,29 +232,73 @@ float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_1, float3 world_normal, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_2);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_2);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_4.xy * strength), max(v_4.z, 0.001));
+    float3 v_5 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -292,32 +354,32 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e5 = weft_clamp_cos(v_2.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(float3 v_2, float3 l_1, float alpha_t_3, float alpha_b_3)
+float weft_spec_ggx_aniso(float3 v_3, float3 l_1, float alpha_t_3, float alpha_b_3)
 {
-    const float3 _e9 = weft_safe_normalize((v_2 + l_1), float3(0.0, 0.0, 1.0));
+    const float3 _e9 = weft_safe_normalize((v_3 + l_1), float3(0.0, 0.0, 1.0));
     const float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_4, float3 v_3, float anisotropy_1, float roughness_5)
+float3 weft_aniso_bent_normal(float3x3 frame_4, float3 v_4, float anisotropy_1, float roughness_5)
 {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_4[2];
+    float3 n_6 = frame_4[2];
     float3 dir_1 = ((k_1 >= 0.0) ? frame_4[1] : frame_4[0]);
-    float3 aniso_t = cross(dir_1, v_3);
+    float3 aniso_t = cross(dir_1, v_4);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -359,8 +421,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float3 spec_direct = (float3)0;
     float3 env_brdf = (float3)0;
@@ -392,88 +454,80 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float _e51 = material.mesh_gap;
     const float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = (mesh_tex * _e52);
-    const float3 _e59 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    const float3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
+    const WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_6 = _e56.v;
+    float3 n_geom = _e56.n;
+    n = n_geom;
     {
-        const float3x3 _e68 = weft_tangent_frame(_e65, in_1.world_tangent);
-        float4 _e72 = material.normal_map_st;
-        const float2 _e73 = weft_transform_uv(in_1.uv0_, _e72);
-        float4 _e76 = normal_map.Sample(material_sampler, _e73);
-        float3 texel_1 = _e76.xyz;
-        float _e80 = material.normal_strength;
-        const float3 _e81 = weft_unpack_normal(texel_1, _e80);
-        const float3 _e82 = weft_normal_from_tangent_space(_e68, _e81);
-        n = _e82;
+        float4 _e63 = material.normal_map_st;
+        const float2 _e64 = weft_transform_uv(in_1.uv0_, _e63);
+        float4 _e67 = normal_map.Sample(material_sampler, _e64);
+        float3 texel_2 = _e67.xyz;
+        float _e72 = material.normal_strength;
+        const float3 _e73 = weft_mapped_normal(n_geom, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    float3 _e83 = n;
-    const float3x3 _e85 = weft_tangent_frame(_e83, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e65, _e59)), 1.0);
+    float3 _e74 = n;
+    const float3x3 _e76 = weft_tangent_frame(_e74, in_1.world_tangent);
+    float cos_v = min(abs(dot(n_geom, v_6)), 1.0);
     float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float _e98 = material.thread_density;
-    float density = clamp(_e98, 0.0, 200.0);
+    float _e89 = material.thread_density;
+    float density = clamp(_e89, 0.0, 200.0);
     float s_3 = pow(max(sin_v, 1e-8), density);
-    float _e107 = material.thread_transmittance;
-    float transmittance = clamp(_e107, 1.0, 1000.0);
+    float _e98 = material.thread_transmittance;
+    float transmittance = clamp(_e98, 1.0, 1000.0);
     float thread_opacity = saturate((1.0 - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)));
     float alpha = saturate(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha));
     float coverage = saturate(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha));
-    float _e138 = material.pattern_rotation;
-    float rot = radians(_e138);
-    const float3x3 _e140 = weft_rotate_tangent_frame(_e85, rot);
-    float _e143 = material.pattern_threshold;
-    float above_hard = ((pattern > _e143) ? 1.0 : 0.0);
-    float _e150 = material.pattern_threshold;
-    float above_aa = saturate((((pattern - _e150) / max(pattern_w, 0.0001)) + 0.5));
-    const float3 _e158 = weft_main_light_direction();
-    float3 _e160 = n;
-    const float3 _e161 = weft_safe_normalize((_e158 + _e59), _e160);
-    float3 _e162 = n;
-    const float _e164 = weft_clamp_cos(dot(_e162, _e59));
-    float3 _e165 = n;
-    float n_dot_l = saturate(dot(_e165, _e158));
-    float v_dot_h_1 = saturate(dot(_e59, _e161));
-    const float2 _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    const float3 _e171 = weft_main_light_radiance();
-    float4 _e174 = material.scatter_color;
-    float3 scatter = max(_e174.xyz, (0.0).xxx);
+    float _e129 = material.pattern_rotation;
+    float rot = radians(_e129);
+    const float3x3 _e131 = weft_rotate_tangent_frame(_e76, rot);
+    float _e134 = material.pattern_threshold;
+    float above_hard = ((pattern > _e134) ? 1.0 : 0.0);
+    float _e141 = material.pattern_threshold;
+    float above_aa = saturate((((pattern - _e141) / max(pattern_w, 0.0001)) + 0.5));
+    float3 _e149 = n;
+    const WeftLightGeometry _e150 = weft_main_light_geometry(_e149, v_6);
+    const float2 _e151 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    const float3 _e152 = weft_main_light_radiance();
+    float4 _e155 = material.scatter_color;
+    float3 scatter = max(_e155.xyz, (0.0).xxx);
     float3 tint = saturate(scatter);
     float3 f0_2 = (0.04).xxx;
     {
         {
-            const float3 _e187 = weft_aniso_to_frame(_e85, _e59);
-            const float3 _e188 = weft_aniso_to_frame(_e85, _e158);
-            const float3 _e189 = weft_aniso_to_frame(_e140, _e59);
-            const float3 _e190 = weft_aniso_to_frame(_e140, _e158);
-            const float _e193 = weft_spec_ggx_aniso(_e187, _e188, _e170.x, _e170.y);
-            const float _e196 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
-            lobe = lerp(_e193, _e196, above_aa);
+            const float3 _e168 = weft_aniso_to_frame(_e76, v_6);
+            const float3 _e170 = weft_aniso_to_frame(_e76, _e150.l);
+            const float3 _e171 = weft_aniso_to_frame(_e131, v_6);
+            const float3 _e173 = weft_aniso_to_frame(_e131, _e150.l);
+            const float _e176 = weft_spec_ggx_aniso(_e168, _e170, _e151.x, _e151.y);
+            const float _e179 = weft_spec_ggx_aniso(_e171, _e173, _e151.x, _e151.y);
+            lobe = lerp(_e176, _e179, above_aa);
         }
-        const float3 _e198 = weft_f_schlick(f0_2, v_dot_h_1);
-        float _e199 = lobe;
-        spec_direct = ((((_e199 * _e198) * tint) * noise_) * _e171);
-        const float3 _e206 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = ((1.0).xxx - (tint * _e206));
-        const float2 _e209 = weft_env_brdf_lut(_e164, roughness_6);
-        const float3 _e210 = weft_env_brdf_from_lut(f0_2, _e209);
-        env_brdf = (_e210 * tint);
-        float3 _e214 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e214), (0.0).xxx);
+        const float3 _e182 = weft_f_schlick(f0_2, _e150.v_dot_h);
+        float _e183 = lobe;
+        spec_direct = ((((_e183 * _e182) * tint) * noise_) * _e152);
+        const float3 _e191 = weft_f_schlick(f0_2, _e150.n_dot_v);
+        diffuse_kd = ((1.0).xxx - (tint * _e191));
+        const float2 _e195 = weft_env_brdf_lut(_e150.n_dot_v, roughness_6);
+        const float3 _e196 = weft_env_brdf_from_lut(f0_2, _e195);
+        env_brdf = (_e196 * tint);
+        float3 _e200 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e200), (0.0).xxx);
     }
-    float3 _e219 = diffuse_kd;
-    const float3 _e220 = weft_diffuse_lambert(base);
-    float3 diffuse_direct = (((_e219 * _e220) * _e171) * n_dot_l);
-    float3 _e224 = n;
-    const float3 _e225 = weft_sh_irradiance(_e224);
-    float3 _e226 = ambient_kd;
-    float3 diffuse_indirect = ((_e225 * _e226) * base);
-    const float3 _e229 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    const float3 _e232 = weft_prefiltered_radiance(reflect(-(_e59), _e229), roughness_6);
-    float3 _e233 = env_brdf;
-    float3 spec_indirect = ((_e232 * _e233) * noise_);
-    float3 _e238 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e238 + spec_indirect)));
+    float3 _e205 = diffuse_kd;
+    const float3 _e206 = weft_diffuse_lambert(base);
+    float3 diffuse_direct = (((_e205 * _e206) * _e152) * _e150.n_dot_l);
+    float3 _e211 = n;
+    const float3 _e212 = weft_sh_irradiance(_e211);
+    float3 _e213 = ambient_kd;
+    float3 diffuse_indirect = ((_e212 * _e213) * base);
+    const float3 _e216 = weft_aniso_bent_normal(_e76, v_6, anisotropy_2, roughness_6);
+    const float3 _e219 = weft_prefiltered_radiance(reflect(-(v_6), _e216), roughness_6);
+    float3 _e220 = env_brdf;
+    float3 spec_indirect = ((_e219 * _e220) * noise_);
+    float3 _e225 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e225 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

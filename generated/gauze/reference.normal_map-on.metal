@@ -40,6 +40,19 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -210,27 +223,50 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal : -(world_normal);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
+    metal::float3 v_5 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_5.xy * strength, metal::max(v_5.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -239,6 +275,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -316,43 +364,43 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 float weft_spec_ggx_aniso(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l_1,
     float alpha_t_3,
     float alpha_b_3
 ) {
-    metal::float3 _e9 = weft_safe_normalize(v_2 + l_1, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e9 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_4,
-    metal::float3 v_3,
+    metal::float3 v_4,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_4[2];
+    metal::float3 n_6 = frame_4[2];
     metal::float3 dir_1 = (k_1 >= 0.0) ? frame_4[1] : frame_4[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_3);
+    metal::float3 aniso_t = metal::cross(dir_1, v_4);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -373,7 +421,7 @@ float gauze_grid_coverage(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -388,7 +436,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -412,8 +460,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -437,7 +485,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(5)]]
 , metal::texture2d<float, metal::access::sample> pattern_map [[texture(6)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 spec_direct = {};
     metal::float3 env_brdf = {};
@@ -468,88 +516,80 @@ fragment fs_mainOutput fs_main(
     float _e51 = material.mesh_gap;
     float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = mesh_tex * _e52;
-    metal::float3 _e59 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    float face = front_facing ? 1.0 : -1.0;
-    metal::float3 _e65 = weft_safe_normalize(in_1.world_normal * face, _e59);
-    n = _e65;
+    WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_6 = _e56.v;
+    metal::float3 n_geom = _e56.n;
+    n = n_geom;
     {
-        metal::float3x3 _e68 = weft_tangent_frame(_e65, in_1.world_tangent);
-        metal::float4 _e72 = material.normal_map_st;
-        metal::float2 _e73 = weft_transform_uv(in_1.uv0_, _e72);
-        metal::float4 _e76 = normal_map.sample(material_sampler, _e73);
-        metal::float3 texel_1 = _e76.xyz;
-        float _e80 = material.normal_strength;
-        metal::float3 _e81 = weft_unpack_normal(texel_1, _e80);
-        metal::float3 _e82 = weft_normal_from_tangent_space(_e68, _e81);
-        n = _e82;
+        metal::float4 _e63 = material.normal_map_st;
+        metal::float2 _e64 = weft_transform_uv(in_1.uv0_, _e63);
+        metal::float4 _e67 = normal_map.sample(material_sampler, _e64);
+        metal::float3 texel_2 = _e67.xyz;
+        float _e72 = material.normal_strength;
+        metal::float3 _e73 = weft_mapped_normal(n_geom, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    metal::float3 _e83 = n;
-    metal::float3x3 _e85 = weft_tangent_frame(_e83, in_1.world_tangent);
-    float cos_v = metal::min(metal::abs(metal::dot(_e65, _e59)), 1.0);
+    metal::float3 _e74 = n;
+    metal::float3x3 _e76 = weft_tangent_frame(_e74, in_1.world_tangent);
+    float cos_v = metal::min(metal::abs(metal::dot(n_geom, v_6)), 1.0);
     float sin_v = metal::sqrt(metal::max(1.0 - (cos_v * cos_v), 0.0));
-    float _e98 = material.thread_density;
-    float density = metal::clamp(_e98, 0.0, 200.0);
+    float _e89 = material.thread_density;
+    float density = metal::clamp(_e89, 0.0, 200.0);
     float s_3 = metal::pow(metal::max(sin_v, 0.00000001), density);
-    float _e107 = material.thread_transmittance;
-    float transmittance = metal::clamp(_e107, 1.0, 1000.0);
+    float _e98 = material.thread_transmittance;
+    float transmittance = metal::clamp(_e98, 1.0, 1000.0);
     float thread_opacity = metal::saturate(1.0 - (metal::log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE));
     float alpha = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha);
     float coverage = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha);
-    float _e138 = material.pattern_rotation;
-    float rot = ((_e138) * 0.017453292519943295474);
-    metal::float3x3 _e140 = weft_rotate_tangent_frame(_e85, rot);
-    float _e143 = material.pattern_threshold;
-    float above_hard = (pattern > _e143) ? 1.0 : 0.0;
-    float _e150 = material.pattern_threshold;
-    float above_aa = metal::saturate(((pattern - _e150) / metal::max(pattern_w, 0.0001)) + 0.5);
-    metal::float3 _e158 = weft_main_light_direction(weft_frame);
-    metal::float3 _e160 = n;
-    metal::float3 _e161 = weft_safe_normalize(_e158 + _e59, _e160);
-    metal::float3 _e162 = n;
-    float _e164 = weft_clamp_cos(metal::dot(_e162, _e59));
-    metal::float3 _e165 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e165, _e158));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e59, _e161));
-    metal::float2 _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    metal::float3 _e171 = weft_main_light_radiance(weft_frame);
-    metal::float4 _e174 = material.scatter_color;
-    metal::float3 scatter = metal::max(_e174.xyz, metal::float3(0.0));
+    float _e129 = material.pattern_rotation;
+    float rot = ((_e129) * 0.017453292519943295474);
+    metal::float3x3 _e131 = weft_rotate_tangent_frame(_e76, rot);
+    float _e134 = material.pattern_threshold;
+    float above_hard = (pattern > _e134) ? 1.0 : 0.0;
+    float _e141 = material.pattern_threshold;
+    float above_aa = metal::saturate(((pattern - _e141) / metal::max(pattern_w, 0.0001)) + 0.5);
+    metal::float3 _e149 = n;
+    WeftLightGeometry _e150 = weft_main_light_geometry(_e149, v_6, weft_frame);
+    metal::float2 _e151 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    metal::float3 _e152 = weft_main_light_radiance(weft_frame);
+    metal::float4 _e155 = material.scatter_color;
+    metal::float3 scatter = metal::max(_e155.xyz, metal::float3(0.0));
     metal::float3 tint = metal::saturate(scatter);
     metal::float3 f0_2 = metal::float3(0.04);
     {
         {
-            metal::float3 _e187 = weft_aniso_to_frame(_e85, _e59);
-            metal::float3 _e188 = weft_aniso_to_frame(_e85, _e158);
-            metal::float3 _e189 = weft_aniso_to_frame(_e140, _e59);
-            metal::float3 _e190 = weft_aniso_to_frame(_e140, _e158);
-            float _e193 = weft_spec_ggx_aniso(_e187, _e188, _e170.x, _e170.y);
-            float _e196 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
-            lobe = metal::mix(_e193, _e196, above_aa);
+            metal::float3 _e168 = weft_aniso_to_frame(_e76, v_6);
+            metal::float3 _e170 = weft_aniso_to_frame(_e76, _e150.l);
+            metal::float3 _e171 = weft_aniso_to_frame(_e131, v_6);
+            metal::float3 _e173 = weft_aniso_to_frame(_e131, _e150.l);
+            float _e176 = weft_spec_ggx_aniso(_e168, _e170, _e151.x, _e151.y);
+            float _e179 = weft_spec_ggx_aniso(_e171, _e173, _e151.x, _e151.y);
+            lobe = metal::mix(_e176, _e179, above_aa);
         }
-        metal::float3 _e198 = weft_f_schlick(f0_2, v_dot_h_1);
-        float _e199 = lobe;
-        spec_direct = (((_e199 * _e198) * tint) * noise) * _e171;
-        metal::float3 _e206 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = metal::float3(1.0) - (tint * _e206);
-        metal::float2 _e209 = weft_env_brdf_lut(_e164, roughness_6, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e210 = weft_env_brdf_from_lut(f0_2, _e209);
-        env_brdf = _e210 * tint;
-        metal::float3 _e214 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e214, metal::float3(0.0));
+        metal::float3 _e182 = weft_f_schlick(f0_2, _e150.v_dot_h);
+        float _e183 = lobe;
+        spec_direct = (((_e183 * _e182) * tint) * noise) * _e152;
+        metal::float3 _e191 = weft_f_schlick(f0_2, _e150.n_dot_v);
+        diffuse_kd = metal::float3(1.0) - (tint * _e191);
+        metal::float2 _e195 = weft_env_brdf_lut(_e150.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e196 = weft_env_brdf_from_lut(f0_2, _e195);
+        env_brdf = _e196 * tint;
+        metal::float3 _e200 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e200, metal::float3(0.0));
     }
-    metal::float3 _e219 = diffuse_kd;
-    metal::float3 _e220 = weft_diffuse_lambert(base);
-    metal::float3 diffuse_direct = ((_e219 * _e220) * _e171) * n_dot_l;
-    metal::float3 _e224 = n;
-    metal::float3 _e225 = weft_sh_irradiance(_e224, weft_frame);
-    metal::float3 _e226 = ambient_kd;
-    metal::float3 diffuse_indirect = (_e225 * _e226) * base;
-    metal::float3 _e229 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    metal::float3 _e232 = weft_prefiltered_radiance(metal::reflect(-(_e59), _e229), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e233 = env_brdf;
-    metal::float3 spec_indirect = (_e232 * _e233) * noise;
-    metal::float3 _e238 = spec_direct;
-    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e238 + spec_indirect));
+    metal::float3 _e205 = diffuse_kd;
+    metal::float3 _e206 = weft_diffuse_lambert(base);
+    metal::float3 diffuse_direct = ((_e205 * _e206) * _e152) * _e150.n_dot_l;
+    metal::float3 _e211 = n;
+    metal::float3 _e212 = weft_sh_irradiance(_e211, weft_frame);
+    metal::float3 _e213 = ambient_kd;
+    metal::float3 diffuse_indirect = (_e212 * _e213) * base;
+    metal::float3 _e216 = weft_aniso_bent_normal(_e76, v_6, anisotropy_2, roughness_6);
+    metal::float3 _e219 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e216), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e220 = env_brdf;
+    metal::float3 spec_indirect = (_e219 * _e220) * noise;
+    metal::float3 _e225 = spec_direct;
+    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e225 + spec_indirect));
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

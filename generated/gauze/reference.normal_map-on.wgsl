@@ -32,6 +32,20 @@ struct WeftMaterial {
     sampling_density: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -186,26 +200,47 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal), world_normal, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_2);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_4 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
+    let v_5 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_5.xy * strength), max(v_5.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -254,29 +289,29 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_spec_ggx_aniso(v_2: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
-    let _e9 = weft_safe_normalize((v_2 + l_1), vec3<f32>(0f, 0f, 1f));
+fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
     let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    let _e14 = weft_v_smith_ggx_aniso_correlated(v_2, l_1, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-fn weft_aniso_bent_normal(frame_4: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_4: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_1 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_4[2];
+    let n_6 = frame_4[2];
     let dir_1 = select(frame_4[0], frame_4[1], (k_1 >= 0f));
-    let aniso_t = cross(dir_1, v_3);
+    let aniso_t = cross(dir_1, v_4);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -346,88 +381,80 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let _e51 = material.mesh_gap;
     let _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     let mesh = (mesh_tex * _e52);
-    let _e59 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let face = select(-1f, 1f, front_facing);
-    let _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
+    let _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_6 = _e56.v;
+    let n_geom = _e56.n;
+    n = n_geom;
     {
-        let _e68 = weft_tangent_frame(_e65, in_1.world_tangent);
-        let _e72 = material.normal_map_st;
-        let _e73 = weft_transform_uv(in_1.uv0_, _e72);
-        let _e76 = textureSample(normal_map, material_sampler, _e73);
-        let texel_1 = _e76.xyz;
-        let _e80 = material.normal_strength;
-        let _e81 = weft_unpack_normal(texel_1, _e80);
-        let _e82 = weft_normal_from_tangent_space(_e68, _e81);
-        n = _e82;
+        let _e63 = material.normal_map_st;
+        let _e64 = weft_transform_uv(in_1.uv0_, _e63);
+        let _e67 = textureSample(normal_map, material_sampler, _e64);
+        let texel_2 = _e67.xyz;
+        let _e72 = material.normal_strength;
+        let _e73 = weft_mapped_normal(n_geom, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    let _e83 = n;
-    let _e85 = weft_tangent_frame(_e83, in_1.world_tangent);
-    let cos_v = min(abs(dot(_e65, _e59)), 1f);
+    let _e74 = n;
+    let _e76 = weft_tangent_frame(_e74, in_1.world_tangent);
+    let cos_v = min(abs(dot(n_geom, v_6)), 1f);
     let sin_v = sqrt(max((1f - (cos_v * cos_v)), 0f));
-    let _e98 = material.thread_density;
-    let density = clamp(_e98, 0f, 200f);
+    let _e89 = material.thread_density;
+    let density = clamp(_e89, 0f, 200f);
     let s_3 = pow(max(sin_v, 0.00000001f), density);
-    let _e107 = material.thread_transmittance;
-    let transmittance = clamp(_e107, 1f, 1000f);
+    let _e98 = material.thread_transmittance;
+    let transmittance = clamp(_e98, 1f, 1000f);
     let thread_opacity = saturate((1f - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)));
     let alpha = saturate(((1f - ((1f - s_3) * (1f - (mesh * thread_opacity)))) * base_alpha));
     let coverage = saturate(((1f - ((1f - s_3) * (1f - mesh))) * base_alpha));
-    let _e138 = material.pattern_rotation;
-    let rot = radians(_e138);
-    let _e140 = weft_rotate_tangent_frame(_e85, rot);
-    let _e143 = material.pattern_threshold;
-    let above_hard = select(0f, 1f, (pattern > _e143));
-    let _e150 = material.pattern_threshold;
-    let above_aa = saturate((((pattern - _e150) / max(pattern_w, 0.0001f)) + 0.5f));
-    let _e158 = weft_main_light_direction();
-    let _e160 = n;
-    let _e161 = weft_safe_normalize((_e158 + _e59), _e160);
-    let _e162 = n;
-    let _e164 = weft_clamp_cos(dot(_e162, _e59));
-    let _e165 = n;
-    let n_dot_l = saturate(dot(_e165, _e158));
-    let v_dot_h_1 = saturate(dot(_e59, _e161));
-    let _e170 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
-    let _e171 = weft_main_light_radiance();
-    let _e174 = material.scatter_color;
-    let scatter = max(_e174.xyz, vec3(0f));
+    let _e129 = material.pattern_rotation;
+    let rot = radians(_e129);
+    let _e131 = weft_rotate_tangent_frame(_e76, rot);
+    let _e134 = material.pattern_threshold;
+    let above_hard = select(0f, 1f, (pattern > _e134));
+    let _e141 = material.pattern_threshold;
+    let above_aa = saturate((((pattern - _e141) / max(pattern_w, 0.0001f)) + 0.5f));
+    let _e149 = n;
+    let _e150 = weft_main_light_geometry(_e149, v_6);
+    let _e151 = weft_aniso_alpha_kulla(roughness_6, anisotropy_2);
+    let _e152 = weft_main_light_radiance();
+    let _e155 = material.scatter_color;
+    let scatter = max(_e155.xyz, vec3(0f));
     let tint = saturate(scatter);
     let f0_2 = vec3(0.04f);
     {
         {
-            let _e187 = weft_aniso_to_frame(_e85, _e59);
-            let _e188 = weft_aniso_to_frame(_e85, _e158);
-            let _e189 = weft_aniso_to_frame(_e140, _e59);
-            let _e190 = weft_aniso_to_frame(_e140, _e158);
-            let _e193 = weft_spec_ggx_aniso(_e187, _e188, _e170.x, _e170.y);
-            let _e196 = weft_spec_ggx_aniso(_e189, _e190, _e170.x, _e170.y);
-            lobe = mix(_e193, _e196, above_aa);
+            let _e168 = weft_aniso_to_frame(_e76, v_6);
+            let _e170 = weft_aniso_to_frame(_e76, _e150.l);
+            let _e171 = weft_aniso_to_frame(_e131, v_6);
+            let _e173 = weft_aniso_to_frame(_e131, _e150.l);
+            let _e176 = weft_spec_ggx_aniso(_e168, _e170, _e151.x, _e151.y);
+            let _e179 = weft_spec_ggx_aniso(_e171, _e173, _e151.x, _e151.y);
+            lobe = mix(_e176, _e179, above_aa);
         }
-        let _e198 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e199 = lobe;
-        spec_direct = ((((_e199 * _e198) * tint) * noise) * _e171);
-        let _e206 = weft_f_schlick(f0_2, _e164);
-        diffuse_kd = (vec3(1f) - (tint * _e206));
-        let _e209 = weft_env_brdf_lut(_e164, roughness_6);
-        let _e210 = weft_env_brdf_from_lut(f0_2, _e209);
-        env_brdf = (_e210 * tint);
-        let _e214 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e214), vec3(0f));
+        let _e182 = weft_f_schlick(f0_2, _e150.v_dot_h);
+        let _e183 = lobe;
+        spec_direct = ((((_e183 * _e182) * tint) * noise) * _e152);
+        let _e191 = weft_f_schlick(f0_2, _e150.n_dot_v);
+        diffuse_kd = (vec3(1f) - (tint * _e191));
+        let _e195 = weft_env_brdf_lut(_e150.n_dot_v, roughness_6);
+        let _e196 = weft_env_brdf_from_lut(f0_2, _e195);
+        env_brdf = (_e196 * tint);
+        let _e200 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e200), vec3(0f));
     }
-    let _e219 = diffuse_kd;
-    let _e220 = weft_diffuse_lambert(base);
-    let diffuse_direct = (((_e219 * _e220) * _e171) * n_dot_l);
-    let _e224 = n;
-    let _e225 = weft_sh_irradiance(_e224);
-    let _e226 = ambient_kd;
-    let diffuse_indirect = ((_e225 * _e226) * base);
-    let _e229 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_6);
-    let _e232 = weft_prefiltered_radiance(reflect(-(_e59), _e229), roughness_6);
-    let _e233 = env_brdf;
-    let spec_indirect = ((_e232 * _e233) * noise);
-    let _e238 = spec_direct;
-    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e238 + spec_indirect)));
+    let _e205 = diffuse_kd;
+    let _e206 = weft_diffuse_lambert(base);
+    let diffuse_direct = (((_e205 * _e206) * _e152) * _e150.n_dot_l);
+    let _e211 = n;
+    let _e212 = weft_sh_irradiance(_e211);
+    let _e213 = ambient_kd;
+    let diffuse_indirect = ((_e212 * _e213) * base);
+    let _e216 = weft_aniso_bent_normal(_e76, v_6, anisotropy_2, roughness_6);
+    let _e219 = weft_prefiltered_radiance(reflect(-(v_6), _e216), roughness_6);
+    let _e220 = env_brdf;
+    let spec_indirect = ((_e219 * _e220) * noise);
+    let _e225 = spec_direct;
+    let color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e225 + spec_indirect)));
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -37,6 +37,24 @@ struct WeftMaterial {
     float sampling_density;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -80,20 +98,20 @@ Texture2D<float4> noise_map : register(t6, space1);
 Texture2D<float4> pattern_map : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_pow4_(float x)
@@ -230,17 +248,53 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
     return max(c_2.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_1, float3 world_normal, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_2);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_2);
+    return float3x3(t, b_1, n_4);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -294,15 +348,15 @@ float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_do
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_2, float anisotropy_1, float roughness_7)
+float3 weft_aniso_bent_normal(float3x3 frame_3, float3 v_3, float anisotropy_1, float roughness_7)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_3[2];
+    float3 n_5 = frame_3[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_3[1] : frame_3[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -344,8 +398,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float3 spec_direct = (float3)0;
     float3 env_brdf = (float3)0;
@@ -377,71 +431,65 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float _e51 = material.mesh_gap;
     const float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = (mesh_tex * _e52);
-    const float3 _e59 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float face = (front_facing ? 1.0 : -1.0);
-    const float3 _e65 = weft_safe_normalize((in_1.world_normal * face), _e59);
-    n = _e65;
-    float3 _e67 = n;
-    const float3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-    float cos_v = min(abs(dot(_e65, _e59)), 1.0);
+    const WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_4 = _e56.v;
+    float3 n_geom = _e56.n;
+    n = n_geom;
+    float3 _e60 = n;
+    const float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
+    float cos_v = min(abs(dot(n_geom, v_4)), 1.0);
     float sin_v = sqrt(max((1.0 - (cos_v * cos_v)), 0.0));
-    float _e82 = material.thread_density;
-    float density = clamp(_e82, 0.0, 200.0);
+    float _e75 = material.thread_density;
+    float density = clamp(_e75, 0.0, 200.0);
     float s_3 = pow(max(sin_v, 1e-8), density);
-    float _e91 = material.thread_transmittance;
-    float transmittance = clamp(_e91, 1.0, 1000.0);
+    float _e84 = material.thread_transmittance;
+    float transmittance = clamp(_e84, 1.0, 1000.0);
     float thread_opacity = saturate((1.0 - (log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE)));
     float alpha = saturate(((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha));
     float coverage = saturate(((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha));
-    float _e122 = material.pattern_rotation;
-    float rot = radians(_e122);
-    const float3x3 _e124 = weft_rotate_tangent_frame(_e69, rot);
+    float _e115 = material.pattern_rotation;
+    float rot = radians(_e115);
+    const float3x3 _e117 = weft_rotate_tangent_frame(_e62, rot);
+    float _e120 = material.pattern_threshold;
+    float above_hard = ((pattern > _e120) ? 1.0 : 0.0);
     float _e127 = material.pattern_threshold;
-    float above_hard = ((pattern > _e127) ? 1.0 : 0.0);
-    float _e134 = material.pattern_threshold;
-    float above_aa = saturate((((pattern - _e134) / max(pattern_w, 0.0001)) + 0.5));
-    const float3 _e142 = weft_main_light_direction();
-    float3 _e144 = n;
-    const float3 _e145 = weft_safe_normalize((_e142 + _e59), _e144);
-    float3 _e146 = n;
-    const float _e148 = weft_clamp_cos(dot(_e146, _e59));
-    float3 _e149 = n;
-    float n_dot_l_1 = saturate(dot(_e149, _e142));
-    float v_dot_h = saturate(dot(_e59, _e145));
-    const float2 _e154 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    const float3 _e155 = weft_main_light_radiance();
-    float4 _e158 = material.scatter_color;
-    float3 scatter = max(_e158.xyz, (0.0).xxx);
+    float above_aa = saturate((((pattern - _e127) / max(pattern_w, 0.0001)) + 0.5));
+    float3 _e135 = n;
+    const WeftLightGeometry _e136 = weft_main_light_geometry(_e135, v_4);
+    const float2 _e137 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    const float3 _e138 = weft_main_light_radiance();
+    float4 _e141 = material.scatter_color;
+    float3 scatter = max(_e141.xyz, (0.0).xxx);
     float3 tint = saturate(scatter);
     float3 f0_2 = (0.04).xxx;
     {
-        const float3x3 _e171 = weft_rotate_tangent_frame(_e69, (rot * above_hard));
-        const float3 _e172 = weft_aniso_to_frame(_e171, _e145);
-        const float _e178 = weft_d_ggx_aniso_unnormalized(_e172.x, _e172.y, _e172.z, _e154.x, _e154.y);
-        const float _e179 = weft_v_schlick_ggx(_e148, n_dot_l_1, roughness_8);
-        float _e182 = material.anisotropic_intensity;
-        float _e187 = material.scatter_intensity;
-        float gain = (max(_e182, 0.0) * max(_e187, 0.0));
-        spec_direct = ((((((_e178 * _e179) * n_dot_l_1) * gain) * noise_) * scatter) * _e155);
+        const float3x3 _e154 = weft_rotate_tangent_frame(_e62, (rot * above_hard));
+        const float3 _e156 = weft_aniso_to_frame(_e154, _e136.h);
+        const float _e162 = weft_d_ggx_aniso_unnormalized(_e156.x, _e156.y, _e156.z, _e137.x, _e137.y);
+        const float _e165 = weft_v_schlick_ggx(_e136.n_dot_v, _e136.n_dot_l, roughness_8);
+        float _e168 = material.anisotropic_intensity;
+        float _e173 = material.scatter_intensity;
+        float gain = (max(_e168, 0.0) * max(_e173, 0.0));
+        spec_direct = ((((((_e162 * _e165) * _e136.n_dot_l) * gain) * noise_) * scatter) * _e138);
         diffuse_kd = (1.0).xxx;
-        const float3 _e199 = weft_env_brdf_approx(f0_2, _e148, roughness_8);
-        env_brdf = _e199;
-        const float3 _e202 = weft_f_schlick_roughness(f0_2, _e148, roughness_8);
-        ambient_kd = ((1.0).xxx - _e202);
+        const float3 _e187 = weft_env_brdf_approx(f0_2, _e136.n_dot_v, roughness_8);
+        env_brdf = _e187;
+        const float3 _e191 = weft_f_schlick_roughness(f0_2, _e136.n_dot_v, roughness_8);
+        ambient_kd = ((1.0).xxx - _e191);
     }
-    float3 _e204 = diffuse_kd;
-    const float3 _e205 = weft_diffuse_lambert(base);
-    float3 diffuse_direct = (((_e204 * _e205) * _e155) * n_dot_l_1);
-    float3 _e209 = n;
-    const float3 _e210 = weft_sh_irradiance(_e209);
-    float3 _e211 = ambient_kd;
-    float3 diffuse_indirect = ((_e210 * _e211) * base);
-    const float3 _e214 = weft_aniso_bent_normal(_e69, _e59, anisotropy_2, roughness_8);
-    const float3 _e217 = weft_prefiltered_radiance(reflect(-(_e59), _e214), roughness_8);
-    float3 _e218 = env_brdf;
-    float3 spec_indirect = ((_e217 * _e218) * noise_);
-    float3 _e223 = spec_direct;
-    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e223 + spec_indirect)));
+    float3 _e193 = diffuse_kd;
+    const float3 _e194 = weft_diffuse_lambert(base);
+    float3 diffuse_direct = (((_e193 * _e194) * _e138) * _e136.n_dot_l);
+    float3 _e199 = n;
+    const float3 _e200 = weft_sh_irradiance(_e199);
+    float3 _e201 = ambient_kd;
+    float3 diffuse_indirect = ((_e200 * _e201) * base);
+    const float3 _e204 = weft_aniso_bent_normal(_e62, v_4, anisotropy_2, roughness_8);
+    const float3 _e207 = weft_prefiltered_radiance(reflect(-(v_4), _e204), roughness_8);
+    float3 _e208 = env_brdf;
+    float3 spec_indirect = ((_e207 * _e208) * noise_);
+    float3 _e213 = spec_direct;
+    float3 color = ((alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e213 + spec_indirect)));
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

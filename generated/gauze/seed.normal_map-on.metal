@@ -40,6 +40,19 @@ struct WeftMaterial {
     float pattern_rotation;
     float sampling_density;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -232,27 +245,50 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_2.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal : -(world_normal);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -261,6 +297,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -337,17 +385,17 @@ float weft_d_ggx_aniso_unnormalized(
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_4,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
     float roughness_7
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_4[2];
+    metal::float3 n_6 = frame_4[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_4[1] : frame_4[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_7));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -368,7 +416,7 @@ float gauze_grid_coverage(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -383,7 +431,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -407,8 +455,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -430,7 +478,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> pattern_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 spec_direct = {};
     metal::float3 env_brdf = {};
@@ -461,82 +509,74 @@ fragment fs_mainOutput fs_main(
     float _e51 = material.mesh_gap;
     float _e52 = gauze_grid_coverage(uv_s, grid_w, _e51);
     float mesh = mesh_tex * _e52;
-    metal::float3 _e59 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    float face = front_facing ? 1.0 : -1.0;
-    metal::float3 _e65 = weft_safe_normalize(in_1.world_normal * face, _e59);
-    n = _e65;
+    WeftSurface _e56 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_5 = _e56.v;
+    metal::float3 n_geom = _e56.n;
+    n = n_geom;
     {
-        metal::float3x3 _e68 = weft_tangent_frame(_e65, in_1.world_tangent);
-        metal::float4 _e72 = material.normal_map_st;
-        metal::float2 _e73 = weft_transform_uv(in_1.uv0_, _e72);
-        metal::float4 _e76 = normal_map.sample(material_sampler, _e73);
-        metal::float3 texel_1 = _e76.xyz;
-        float _e80 = material.normal_strength;
-        metal::float3 _e81 = weft_unpack_normal(texel_1, _e80);
-        metal::float3 _e82 = weft_normal_from_tangent_space(_e68, _e81);
-        n = _e82;
+        metal::float4 _e63 = material.normal_map_st;
+        metal::float2 _e64 = weft_transform_uv(in_1.uv0_, _e63);
+        metal::float4 _e67 = normal_map.sample(material_sampler, _e64);
+        metal::float3 texel_2 = _e67.xyz;
+        float _e72 = material.normal_strength;
+        metal::float3 _e73 = weft_mapped_normal(n_geom, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    metal::float3 _e83 = n;
-    metal::float3x3 _e85 = weft_tangent_frame(_e83, in_1.world_tangent);
-    float cos_v = metal::min(metal::abs(metal::dot(_e65, _e59)), 1.0);
+    metal::float3 _e74 = n;
+    metal::float3x3 _e76 = weft_tangent_frame(_e74, in_1.world_tangent);
+    float cos_v = metal::min(metal::abs(metal::dot(n_geom, v_5)), 1.0);
     float sin_v = metal::sqrt(metal::max(1.0 - (cos_v * cos_v), 0.0));
-    float _e98 = material.thread_density;
-    float density = metal::clamp(_e98, 0.0, 200.0);
+    float _e89 = material.thread_density;
+    float density = metal::clamp(_e89, 0.0, 200.0);
     float s_3 = metal::pow(metal::max(sin_v, 0.00000001), density);
-    float _e107 = material.thread_transmittance;
-    float transmittance = metal::clamp(_e107, 1.0, 1000.0);
+    float _e98 = material.thread_transmittance;
+    float transmittance = metal::clamp(_e98, 1.0, 1000.0);
     float thread_opacity = metal::saturate(1.0 - (metal::log(transmittance) / GAUZE_LN_MAX_TRANSMITTANCE));
     float alpha = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - (mesh * thread_opacity)))) * base_alpha);
     float coverage = metal::saturate((1.0 - ((1.0 - s_3) * (1.0 - mesh))) * base_alpha);
-    float _e138 = material.pattern_rotation;
-    float rot = ((_e138) * 0.017453292519943295474);
-    metal::float3x3 _e140 = weft_rotate_tangent_frame(_e85, rot);
-    float _e143 = material.pattern_threshold;
-    float above_hard = (pattern > _e143) ? 1.0 : 0.0;
-    float _e150 = material.pattern_threshold;
-    float above_aa = metal::saturate(((pattern - _e150) / metal::max(pattern_w, 0.0001)) + 0.5);
-    metal::float3 _e158 = weft_main_light_direction(weft_frame);
-    metal::float3 _e160 = n;
-    metal::float3 _e161 = weft_safe_normalize(_e158 + _e59, _e160);
-    metal::float3 _e162 = n;
-    float _e164 = weft_clamp_cos(metal::dot(_e162, _e59));
-    metal::float3 _e165 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e165, _e158));
-    float v_dot_h = metal::saturate(metal::dot(_e59, _e161));
-    metal::float2 _e170 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    metal::float3 _e171 = weft_main_light_radiance(weft_frame);
-    metal::float4 _e174 = material.scatter_color;
-    metal::float3 scatter = metal::max(_e174.xyz, metal::float3(0.0));
+    float _e129 = material.pattern_rotation;
+    float rot = ((_e129) * 0.017453292519943295474);
+    metal::float3x3 _e131 = weft_rotate_tangent_frame(_e76, rot);
+    float _e134 = material.pattern_threshold;
+    float above_hard = (pattern > _e134) ? 1.0 : 0.0;
+    float _e141 = material.pattern_threshold;
+    float above_aa = metal::saturate(((pattern - _e141) / metal::max(pattern_w, 0.0001)) + 0.5);
+    metal::float3 _e149 = n;
+    WeftLightGeometry _e150 = weft_main_light_geometry(_e149, v_5, weft_frame);
+    metal::float2 _e151 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    metal::float3 _e152 = weft_main_light_radiance(weft_frame);
+    metal::float4 _e155 = material.scatter_color;
+    metal::float3 scatter = metal::max(_e155.xyz, metal::float3(0.0));
     metal::float3 tint = metal::saturate(scatter);
     metal::float3 f0_2 = metal::float3(0.04);
     {
-        metal::float3x3 _e187 = weft_rotate_tangent_frame(_e85, rot * above_hard);
-        metal::float3 _e188 = weft_aniso_to_frame(_e187, _e161);
-        float _e194 = weft_d_ggx_aniso_unnormalized(_e188.x, _e188.y, _e188.z, _e170.x, _e170.y);
-        float _e195 = weft_v_schlick_ggx(_e164, n_dot_l_1, roughness_8);
-        float _e198 = material.anisotropic_intensity;
-        float _e203 = material.scatter_intensity;
-        float gain = metal::max(_e198, 0.0) * metal::max(_e203, 0.0);
-        spec_direct = (((((_e194 * _e195) * n_dot_l_1) * gain) * noise) * scatter) * _e171;
+        metal::float3x3 _e168 = weft_rotate_tangent_frame(_e76, rot * above_hard);
+        metal::float3 _e170 = weft_aniso_to_frame(_e168, _e150.h);
+        float _e176 = weft_d_ggx_aniso_unnormalized(_e170.x, _e170.y, _e170.z, _e151.x, _e151.y);
+        float _e179 = weft_v_schlick_ggx(_e150.n_dot_v, _e150.n_dot_l, roughness_8);
+        float _e182 = material.anisotropic_intensity;
+        float _e187 = material.scatter_intensity;
+        float gain = metal::max(_e182, 0.0) * metal::max(_e187, 0.0);
+        spec_direct = (((((_e176 * _e179) * _e150.n_dot_l) * gain) * noise) * scatter) * _e152;
         diffuse_kd = metal::float3(1.0);
-        metal::float3 _e215 = weft_env_brdf_approx(f0_2, _e164, roughness_8);
-        env_brdf = _e215;
-        metal::float3 _e218 = weft_f_schlick_roughness(f0_2, _e164, roughness_8);
-        ambient_kd = metal::float3(1.0) - _e218;
+        metal::float3 _e201 = weft_env_brdf_approx(f0_2, _e150.n_dot_v, roughness_8);
+        env_brdf = _e201;
+        metal::float3 _e205 = weft_f_schlick_roughness(f0_2, _e150.n_dot_v, roughness_8);
+        ambient_kd = metal::float3(1.0) - _e205;
     }
-    metal::float3 _e220 = diffuse_kd;
-    metal::float3 _e221 = weft_diffuse_lambert(base);
-    metal::float3 diffuse_direct = ((_e220 * _e221) * _e171) * n_dot_l_1;
-    metal::float3 _e225 = n;
-    metal::float3 _e226 = weft_sh_irradiance(_e225, weft_frame);
-    metal::float3 _e227 = ambient_kd;
-    metal::float3 diffuse_indirect = (_e226 * _e227) * base;
-    metal::float3 _e230 = weft_aniso_bent_normal(_e85, _e59, anisotropy_2, roughness_8);
-    metal::float3 _e233 = weft_prefiltered_radiance(metal::reflect(-(_e59), _e230), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e234 = env_brdf;
-    metal::float3 spec_indirect = (_e233 * _e234) * noise;
-    metal::float3 _e239 = spec_direct;
-    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e239 + spec_indirect));
+    metal::float3 _e207 = diffuse_kd;
+    metal::float3 _e208 = weft_diffuse_lambert(base);
+    metal::float3 diffuse_direct = ((_e207 * _e208) * _e152) * _e150.n_dot_l;
+    metal::float3 _e213 = n;
+    metal::float3 _e214 = weft_sh_irradiance(_e213, weft_frame);
+    metal::float3 _e215 = ambient_kd;
+    metal::float3 diffuse_indirect = (_e214 * _e215) * base;
+    metal::float3 _e218 = weft_aniso_bent_normal(_e76, v_5, anisotropy_2, roughness_8);
+    metal::float3 _e221 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e218), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e222 = env_brdf;
+    metal::float3 spec_indirect = (_e221 * _e222) * noise;
+    metal::float3 _e227 = spec_direct;
+    metal::float3 color = (alpha * (diffuse_direct + diffuse_indirect)) + (coverage * (_e227 + spec_indirect));
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float twinkle;
     float density_variation;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -232,16 +244,29 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_2, n_4);
+    vec3 b_2 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_2, n_5);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -249,53 +274,11 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
 }
 
 uvec4 glint_pcg4d(uvec4 v_in) {
-    uvec4 v_1 = uvec4(0u);
-    v_1 = ((v_in * 1664525u) + uvec4(1013904223u));
-    uint _e8 = v_1.x;
-    uint _e10 = v_1.y;
-    uint _e12 = v_1.w;
-    v_1.x = (_e8 + (_e10 * _e12));
-    uint _e16 = v_1.y;
-    uint _e18 = v_1.z;
-    uint _e20 = v_1.x;
-    v_1.y = (_e16 + (_e18 * _e20));
-    uint _e24 = v_1.z;
-    uint _e26 = v_1.x;
-    uint _e28 = v_1.y;
-    v_1.z = (_e24 + (_e26 * _e28));
-    uint _e32 = v_1.w;
-    uint _e34 = v_1.y;
-    uint _e36 = v_1.z;
-    v_1.w = (_e32 + (_e34 * _e36));
-    uvec4 _e39 = v_1;
-    uvec4 _e40 = v_1;
-    v_1 = (_e39 ^ (_e40 >> uvec4(16u)));
-    uint _e46 = v_1.x;
-    uint _e48 = v_1.y;
-    uint _e50 = v_1.w;
-    v_1.x = (_e46 + (_e48 * _e50));
-    uint _e54 = v_1.y;
-    uint _e56 = v_1.z;
-    uint _e58 = v_1.x;
-    v_1.y = (_e54 + (_e56 * _e58));
-    uint _e62 = v_1.z;
-    uint _e64 = v_1.x;
-    uint _e66 = v_1.y;
-    v_1.z = (_e62 + (_e64 * _e66));
-    uint _e70 = v_1.w;
-    uint _e72 = v_1.y;
-    uint _e74 = v_1.z;
-    v_1.w = (_e70 + (_e72 * _e74));
-    uvec4 _e77 = v_1;
-    return _e77;
-}
-
-uvec3 glint_pcg3d(uvec3 v_in_1) {
-    uvec3 v_2 = uvec3(0u);
-    v_2 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uvec4 v_2 = uvec4(0u);
+    v_2 = ((v_in * 1664525u) + uvec4(1013904223u));
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.z;
+    uint _e12 = v_2.w;
     v_2.x = (_e8 + (_e10 * _e12));
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -305,31 +288,73 @@ uvec3 glint_pcg3d(uvec3 v_in_1) {
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    uvec3 _e31 = v_2;
-    uvec3 _e32 = v_2;
-    v_2 = (_e31 ^ (_e32 >> uvec3(16u)));
-    uint _e38 = v_2.x;
-    uint _e40 = v_2.y;
-    uint _e42 = v_2.z;
-    v_2.x = (_e38 + (_e40 * _e42));
-    uint _e46 = v_2.y;
-    uint _e48 = v_2.z;
-    uint _e50 = v_2.x;
-    v_2.y = (_e46 + (_e48 * _e50));
-    uint _e54 = v_2.z;
-    uint _e56 = v_2.x;
-    uint _e58 = v_2.y;
-    v_2.z = (_e54 + (_e56 * _e58));
-    uvec3 _e61 = v_2;
+    uint _e32 = v_2.w;
+    uint _e34 = v_2.y;
+    uint _e36 = v_2.z;
+    v_2.w = (_e32 + (_e34 * _e36));
+    uvec4 _e39 = v_2;
+    uvec4 _e40 = v_2;
+    v_2 = (_e39 ^ (_e40 >> uvec4(16u)));
+    uint _e46 = v_2.x;
+    uint _e48 = v_2.y;
+    uint _e50 = v_2.w;
+    v_2.x = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.y;
+    uint _e56 = v_2.z;
+    uint _e58 = v_2.x;
+    v_2.y = (_e54 + (_e56 * _e58));
+    uint _e62 = v_2.z;
+    uint _e64 = v_2.x;
+    uint _e66 = v_2.y;
+    v_2.z = (_e62 + (_e64 * _e66));
+    uint _e70 = v_2.w;
+    uint _e72 = v_2.y;
+    uint _e74 = v_2.z;
+    v_2.w = (_e70 + (_e72 * _e74));
+    uvec4 _e77 = v_2;
+    return _e77;
+}
+
+uvec3 glint_pcg3d(uvec3 v_in_1) {
+    uvec3 v_3 = uvec3(0u);
+    v_3 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uint _e8 = v_3.x;
+    uint _e10 = v_3.y;
+    uint _e12 = v_3.z;
+    v_3.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_3.y;
+    uint _e18 = v_3.z;
+    uint _e20 = v_3.x;
+    v_3.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_3.z;
+    uint _e26 = v_3.x;
+    uint _e28 = v_3.y;
+    v_3.z = (_e24 + (_e26 * _e28));
+    uvec3 _e31 = v_3;
+    uvec3 _e32 = v_3;
+    v_3 = (_e31 ^ (_e32 >> uvec3(16u)));
+    uint _e38 = v_3.x;
+    uint _e40 = v_3.y;
+    uint _e42 = v_3.z;
+    v_3.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_3.y;
+    uint _e48 = v_3.z;
+    uint _e50 = v_3.x;
+    v_3.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_3.z;
+    uint _e56 = v_3.x;
+    uint _e58 = v_3.y;
+    v_3.z = (_e54 + (_e56 * _e58));
+    uvec3 _e61 = v_3;
     return _e61;
 }
 
-vec3 glint_unit3_(uvec3 v_3) {
-    return ((vec3((v_3 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
+vec3 glint_unit3_(uvec3 v_4) {
+    return ((vec3((v_4 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
 }
 
-vec4 glint_unit4_(uvec4 v_4) {
-    return ((vec4((v_4 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
+vec4 glint_unit4_(uvec4 v_5) {
+    return ((vec4((v_5 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
 }
 
 float glint_hash13_(vec3 p_in) {
@@ -799,72 +824,66 @@ void main() {
     float occlusion = _e31.x;
     float _e35 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e35), 0.0, 1.0);
-    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_6 = _e41.v;
+    n = _e41.n;
+    vec3 _e45 = n;
+    mat3x3 _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     vec3 _e48 = n;
-    mat3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
-    vec3 _e51 = weft_main_light_direction();
-    vec3 _e53 = n;
-    vec3 _e54 = weft_safe_normalize((_e51 + _e44), _e53);
-    vec3 _e55 = n;
-    float _e57 = weft_clamp_cos(dot(_e55, _e44));
-    vec3 _e58 = n;
-    float n_dot_l_1 = clamp(dot(_e58, _e51), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e44, _e54), 0.0, 1.0);
-    vec3 _e63 = weft_main_light_radiance();
+    WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_6);
+    vec3 _e50 = weft_main_light_radiance();
     vec3 f0_2 = mix(vec3(0.04), base_1, metallic);
     vec3 diffuse_albedo = (base_1 * (1.0 - metallic));
-    float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
-    vec2 _e71 = weft_env_brdf_lut(_e57, roughness_7);
-    vec3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
-    vec3 kd = max((vec3(1.0) - _e72), vec3(0.0));
-    vec3 _e79 = n;
-    float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
-    vec3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 specular = ((_e80 * _e70) * _e82);
-    vec3 _e84 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 direct = ((((kd * _e84) + specular) * _e63) * n_dot_l_1);
-    vec3 _e90 = n;
-    vec3 _e92 = weft_prefiltered_radiance(reflect(-(_e44), _e90), roughness_7);
-    vec3 _e95 = n;
-    vec3 _e96 = weft_sh_irradiance(_e95);
-    vec3 indirect = (((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo));
+    float _e59 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, roughness_7);
+    vec2 _e61 = weft_env_brdf_lut(_e49.n_dot_v, roughness_7);
+    vec3 _e62 = weft_env_brdf_from_lut(f0_2, _e61);
+    vec3 kd = max((vec3(1.0) - _e62), vec3(0.0));
+    vec3 _e69 = n;
+    float _e71 = weft_d_ggx_nh(_e69, _e49.h, roughness_7);
+    vec3 _e74 = weft_f_schlick(f0_2, _e49.v_dot_h);
+    vec3 specular = ((_e71 * _e59) * _e74);
+    vec3 _e76 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 direct = ((((kd * _e76) + specular) * _e50) * _e49.n_dot_l);
+    vec3 _e83 = n;
+    vec3 _e85 = weft_prefiltered_radiance(reflect(-(v_6), _e83), roughness_7);
+    vec3 _e88 = n;
+    vec3 _e89 = weft_sh_irradiance(_e88);
+    vec3 indirect = (((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e105 = _group_1_binding_0_fs.flake_intensity;
-    float intensity = max(_e105, 0.0);
+    float _e98 = _group_1_binding_0_fs.flake_intensity;
+    float intensity = max(_e98, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e49.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e115 = local;
-    if (_e115) {
-        float _e118 = _group_1_binding_0_fs.flake_roughness;
-        float r_f = clamp(_e118, 0.05, 1.0);
-        vec3 _e122 = n;
-        float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
-        float _e125 = weft_d_ggx(1.0, r_f);
+    bool _e109 = local;
+    if (_e109) {
+        float _e112 = _group_1_binding_0_fs.flake_roughness;
+        float r_f = clamp(_e112, 0.05, 1.0);
+        vec3 _e116 = n;
+        float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
+        float _e120 = weft_d_ggx(1.0, r_f);
         {
-            vec2 slope_3 = vec2(dot(_e50[0], _e54), dot(_e50[1], _e54));
-            GlintParams _e132 = glitter_params();
-            GlintEllipse _e133 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e136 = _group_1_binding_0_fs.flake_size;
-            float screen_scale_2 = clamp(_e136, 1.0, 8.0);
-            GlintGrids _e140 = glint_grids(_e5, _e133, screen_scale_2);
-            float _e144 = glint_ndf(_e132, _e140, slope_3, _e123, _e125, (0u == TIER_FAST));
-            d_flakes = _e144;
+            vec2 slope_3 = vec2(dot(_e47[0], _e49.h), dot(_e47[1], _e49.h));
+            GlintParams _e129 = glitter_params();
+            GlintEllipse _e130 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e133 = _group_1_binding_0_fs.flake_size;
+            float screen_scale_2 = clamp(_e133, 1.0, 8.0);
+            GlintGrids _e137 = glint_grids(_e5, _e130, screen_scale_2);
+            float _e141 = glint_ndf(_e129, _e137, slope_3, _e118, _e120, (0u == TIER_FAST));
+            d_flakes = _e141;
         }
-        vec4 _e147 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e147.xyz, vec3(0.0), vec3(1.0));
-        float _e150 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        vec3 _e151 = color;
-        float _e152 = d_flakes;
-        vec3 _e155 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e151 + (((((intensity * _e152) * _e150) * _e155) * _e63) * n_dot_l_1));
+        vec4 _e144 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e144.xyz, vec3(0.0), vec3(1.0));
+        float _e149 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
+        vec3 _e150 = color;
+        float _e151 = d_flakes;
+        vec3 _e155 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+        color = (_e150 + (((((intensity * _e151) * _e149) * _e155) * _e50) * _e49.n_dot_l));
     }
-    vec3 _e160 = color;
-    vec3 radiance = clamp(_e160, vec3(0.0), vec3(65504.0));
+    vec3 _e161 = color;
+    vec3 radiance = clamp(_e161, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

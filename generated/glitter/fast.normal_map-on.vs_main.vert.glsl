@@ -28,6 +28,18 @@ struct WeftMaterial {
     float twinkle;
     float density_variation;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -215,21 +227,34 @@ float weft_specular_mip(float roughness_4) {
     return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_2, n_4);
+    vec3 b_2 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_2, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
+    vec3 v_6 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -237,58 +262,23 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
 uvec4 glint_pcg4d(uvec4 v_in) {
-    uvec4 v_1 = uvec4(0u);
-    v_1 = ((v_in * 1664525u) + uvec4(1013904223u));
-    uint _e8 = v_1.x;
-    uint _e10 = v_1.y;
-    uint _e12 = v_1.w;
-    v_1.x = (_e8 + (_e10 * _e12));
-    uint _e16 = v_1.y;
-    uint _e18 = v_1.z;
-    uint _e20 = v_1.x;
-    v_1.y = (_e16 + (_e18 * _e20));
-    uint _e24 = v_1.z;
-    uint _e26 = v_1.x;
-    uint _e28 = v_1.y;
-    v_1.z = (_e24 + (_e26 * _e28));
-    uint _e32 = v_1.w;
-    uint _e34 = v_1.y;
-    uint _e36 = v_1.z;
-    v_1.w = (_e32 + (_e34 * _e36));
-    uvec4 _e39 = v_1;
-    uvec4 _e40 = v_1;
-    v_1 = (_e39 ^ (_e40 >> uvec4(16u)));
-    uint _e46 = v_1.x;
-    uint _e48 = v_1.y;
-    uint _e50 = v_1.w;
-    v_1.x = (_e46 + (_e48 * _e50));
-    uint _e54 = v_1.y;
-    uint _e56 = v_1.z;
-    uint _e58 = v_1.x;
-    v_1.y = (_e54 + (_e56 * _e58));
-    uint _e62 = v_1.z;
-    uint _e64 = v_1.x;
-    uint _e66 = v_1.y;
-    v_1.z = (_e62 + (_e64 * _e66));
-    uint _e70 = v_1.w;
-    uint _e72 = v_1.y;
-    uint _e74 = v_1.z;
-    v_1.w = (_e70 + (_e72 * _e74));
-    uvec4 _e77 = v_1;
-    return _e77;
-}
-
-uvec3 glint_pcg3d(uvec3 v_in_1) {
-    uvec3 v_2 = uvec3(0u);
-    v_2 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uvec4 v_2 = uvec4(0u);
+    v_2 = ((v_in * 1664525u) + uvec4(1013904223u));
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.z;
+    uint _e12 = v_2.w;
     v_2.x = (_e8 + (_e10 * _e12));
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -298,31 +288,73 @@ uvec3 glint_pcg3d(uvec3 v_in_1) {
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    uvec3 _e31 = v_2;
-    uvec3 _e32 = v_2;
-    v_2 = (_e31 ^ (_e32 >> uvec3(16u)));
-    uint _e38 = v_2.x;
-    uint _e40 = v_2.y;
-    uint _e42 = v_2.z;
-    v_2.x = (_e38 + (_e40 * _e42));
-    uint _e46 = v_2.y;
-    uint _e48 = v_2.z;
-    uint _e50 = v_2.x;
-    v_2.y = (_e46 + (_e48 * _e50));
-    uint _e54 = v_2.z;
-    uint _e56 = v_2.x;
-    uint _e58 = v_2.y;
-    v_2.z = (_e54 + (_e56 * _e58));
-    uvec3 _e61 = v_2;
+    uint _e32 = v_2.w;
+    uint _e34 = v_2.y;
+    uint _e36 = v_2.z;
+    v_2.w = (_e32 + (_e34 * _e36));
+    uvec4 _e39 = v_2;
+    uvec4 _e40 = v_2;
+    v_2 = (_e39 ^ (_e40 >> uvec4(16u)));
+    uint _e46 = v_2.x;
+    uint _e48 = v_2.y;
+    uint _e50 = v_2.w;
+    v_2.x = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.y;
+    uint _e56 = v_2.z;
+    uint _e58 = v_2.x;
+    v_2.y = (_e54 + (_e56 * _e58));
+    uint _e62 = v_2.z;
+    uint _e64 = v_2.x;
+    uint _e66 = v_2.y;
+    v_2.z = (_e62 + (_e64 * _e66));
+    uint _e70 = v_2.w;
+    uint _e72 = v_2.y;
+    uint _e74 = v_2.z;
+    v_2.w = (_e70 + (_e72 * _e74));
+    uvec4 _e77 = v_2;
+    return _e77;
+}
+
+uvec3 glint_pcg3d(uvec3 v_in_1) {
+    uvec3 v_3 = uvec3(0u);
+    v_3 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uint _e8 = v_3.x;
+    uint _e10 = v_3.y;
+    uint _e12 = v_3.z;
+    v_3.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_3.y;
+    uint _e18 = v_3.z;
+    uint _e20 = v_3.x;
+    v_3.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_3.z;
+    uint _e26 = v_3.x;
+    uint _e28 = v_3.y;
+    v_3.z = (_e24 + (_e26 * _e28));
+    uvec3 _e31 = v_3;
+    uvec3 _e32 = v_3;
+    v_3 = (_e31 ^ (_e32 >> uvec3(16u)));
+    uint _e38 = v_3.x;
+    uint _e40 = v_3.y;
+    uint _e42 = v_3.z;
+    v_3.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_3.y;
+    uint _e48 = v_3.z;
+    uint _e50 = v_3.x;
+    v_3.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_3.z;
+    uint _e56 = v_3.x;
+    uint _e58 = v_3.y;
+    v_3.z = (_e54 + (_e56 * _e58));
+    uvec3 _e61 = v_3;
     return _e61;
 }
 
-vec3 glint_unit3_(uvec3 v_3) {
-    return ((vec3((v_3 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
+vec3 glint_unit3_(uvec3 v_4) {
+    return ((vec3((v_4 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
 }
 
-vec4 glint_unit4_(uvec4 v_4) {
-    return ((vec4((v_4 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
+vec4 glint_unit4_(uvec4 v_5) {
+    return ((vec4((v_5 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
 }
 
 float glint_hash13_(vec3 p_in) {
@@ -427,8 +459,8 @@ vec3 glint_gaussian3_(vec3 u, bool poly_normals) {
 }
 
 vec2 glint_corner(vec2 c_1, bool poly_normals_1) {
-    uvec2 texel_1 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
-    uvec4 _e13 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
+    uvec2 texel_2 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
+    uvec4 _e13 = glint_pcg4d(uvec4(texel_2, 6777961u, 1953785202u));
     vec4 _e14 = glint_unit4_(_e13);
     float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
     return vec2(_e14.x, (1.4142135 * _e21));

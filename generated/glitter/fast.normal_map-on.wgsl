@@ -30,6 +30,20 @@ struct WeftMaterial {
     density_variation: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -247,21 +261,34 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_2, n_4);
+    let b_2 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_2, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_5 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_5.xy * strength), max(v_5.z, 0.001f));
+    let v_6 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_6.xy * strength), max(v_6.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -269,60 +296,24 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
 fn glint_pcg4d(v_in: vec4<u32>) -> vec4<u32> {
-    var v_1: vec4<u32>;
+    var v_2: vec4<u32>;
 
-    v_1 = ((v_in * 1664525u) + vec4(1013904223u));
-    let _e8 = v_1.x;
-    let _e10 = v_1.y;
-    let _e12 = v_1.w;
-    v_1.x = (_e8 + (_e10 * _e12));
-    let _e16 = v_1.y;
-    let _e18 = v_1.z;
-    let _e20 = v_1.x;
-    v_1.y = (_e16 + (_e18 * _e20));
-    let _e24 = v_1.z;
-    let _e26 = v_1.x;
-    let _e28 = v_1.y;
-    v_1.z = (_e24 + (_e26 * _e28));
-    let _e32 = v_1.w;
-    let _e34 = v_1.y;
-    let _e36 = v_1.z;
-    v_1.w = (_e32 + (_e34 * _e36));
-    let _e39 = v_1;
-    let _e40 = v_1;
-    v_1 = (_e39 ^ (_e40 >> vec4(16u)));
-    let _e46 = v_1.x;
-    let _e48 = v_1.y;
-    let _e50 = v_1.w;
-    v_1.x = (_e46 + (_e48 * _e50));
-    let _e54 = v_1.y;
-    let _e56 = v_1.z;
-    let _e58 = v_1.x;
-    v_1.y = (_e54 + (_e56 * _e58));
-    let _e62 = v_1.z;
-    let _e64 = v_1.x;
-    let _e66 = v_1.y;
-    v_1.z = (_e62 + (_e64 * _e66));
-    let _e70 = v_1.w;
-    let _e72 = v_1.y;
-    let _e74 = v_1.z;
-    v_1.w = (_e70 + (_e72 * _e74));
-    let _e77 = v_1;
-    return _e77;
-}
-
-fn glint_pcg3d(v_in_1: vec3<u32>) -> vec3<u32> {
-    var v_2: vec3<u32>;
-
-    v_2 = ((v_in_1 * 1664525u) + vec3(1013904223u));
+    v_2 = ((v_in * 1664525u) + vec4(1013904223u));
     let _e8 = v_2.x;
     let _e10 = v_2.y;
-    let _e12 = v_2.z;
+    let _e12 = v_2.w;
     v_2.x = (_e8 + (_e10 * _e12));
     let _e16 = v_2.y;
     let _e18 = v_2.z;
@@ -332,31 +323,74 @@ fn glint_pcg3d(v_in_1: vec3<u32>) -> vec3<u32> {
     let _e26 = v_2.x;
     let _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    let _e31 = v_2;
-    let _e32 = v_2;
-    v_2 = (_e31 ^ (_e32 >> vec3(16u)));
-    let _e38 = v_2.x;
-    let _e40 = v_2.y;
-    let _e42 = v_2.z;
-    v_2.x = (_e38 + (_e40 * _e42));
-    let _e46 = v_2.y;
-    let _e48 = v_2.z;
-    let _e50 = v_2.x;
-    v_2.y = (_e46 + (_e48 * _e50));
-    let _e54 = v_2.z;
-    let _e56 = v_2.x;
-    let _e58 = v_2.y;
-    v_2.z = (_e54 + (_e56 * _e58));
-    let _e61 = v_2;
+    let _e32 = v_2.w;
+    let _e34 = v_2.y;
+    let _e36 = v_2.z;
+    v_2.w = (_e32 + (_e34 * _e36));
+    let _e39 = v_2;
+    let _e40 = v_2;
+    v_2 = (_e39 ^ (_e40 >> vec4(16u)));
+    let _e46 = v_2.x;
+    let _e48 = v_2.y;
+    let _e50 = v_2.w;
+    v_2.x = (_e46 + (_e48 * _e50));
+    let _e54 = v_2.y;
+    let _e56 = v_2.z;
+    let _e58 = v_2.x;
+    v_2.y = (_e54 + (_e56 * _e58));
+    let _e62 = v_2.z;
+    let _e64 = v_2.x;
+    let _e66 = v_2.y;
+    v_2.z = (_e62 + (_e64 * _e66));
+    let _e70 = v_2.w;
+    let _e72 = v_2.y;
+    let _e74 = v_2.z;
+    v_2.w = (_e70 + (_e72 * _e74));
+    let _e77 = v_2;
+    return _e77;
+}
+
+fn glint_pcg3d(v_in_1: vec3<u32>) -> vec3<u32> {
+    var v_3: vec3<u32>;
+
+    v_3 = ((v_in_1 * 1664525u) + vec3(1013904223u));
+    let _e8 = v_3.x;
+    let _e10 = v_3.y;
+    let _e12 = v_3.z;
+    v_3.x = (_e8 + (_e10 * _e12));
+    let _e16 = v_3.y;
+    let _e18 = v_3.z;
+    let _e20 = v_3.x;
+    v_3.y = (_e16 + (_e18 * _e20));
+    let _e24 = v_3.z;
+    let _e26 = v_3.x;
+    let _e28 = v_3.y;
+    v_3.z = (_e24 + (_e26 * _e28));
+    let _e31 = v_3;
+    let _e32 = v_3;
+    v_3 = (_e31 ^ (_e32 >> vec3(16u)));
+    let _e38 = v_3.x;
+    let _e40 = v_3.y;
+    let _e42 = v_3.z;
+    v_3.x = (_e38 + (_e40 * _e42));
+    let _e46 = v_3.y;
+    let _e48 = v_3.z;
+    let _e50 = v_3.x;
+    v_3.y = (_e46 + (_e48 * _e50));
+    let _e54 = v_3.z;
+    let _e56 = v_3.x;
+    let _e58 = v_3.y;
+    v_3.z = (_e54 + (_e56 * _e58));
+    let _e61 = v_3;
     return _e61;
 }
 
-fn glint_unit3_(v_3: vec3<u32>) -> vec3<f32> {
-    return ((vec3<f32>((v_3 >> vec3(8u))) + vec3(0.5f)) * 0.000000059604645f);
+fn glint_unit3_(v_4: vec3<u32>) -> vec3<f32> {
+    return ((vec3<f32>((v_4 >> vec3(8u))) + vec3(0.5f)) * 0.000000059604645f);
 }
 
-fn glint_unit4_(v_4: vec4<u32>) -> vec4<f32> {
-    return ((vec4<f32>((v_4 >> vec4(8u))) + vec4(0.5f)) * 0.000000059604645f);
+fn glint_unit4_(v_5: vec4<u32>) -> vec4<f32> {
+    return ((vec4<f32>((v_5 >> vec4(8u))) + vec4(0.5f)) * 0.000000059604645f);
 }
 
 fn glint_hash13_(p_in: vec3<f32>) -> f32 {
@@ -463,8 +497,8 @@ fn glint_gaussian3_(u: vec3<f32>, poly_normals: bool) -> vec3<f32> {
 }
 
 fn glint_corner(c_1: vec2<f32>, poly_normals_1: bool) -> vec2<f32> {
-    let texel_1 = vec2<u32>((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64f))))));
-    let _e13 = glint_pcg4d(vec4<u32>(texel_1, 6777961u, 1953785202u));
+    let texel_2 = vec2<u32>((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64f))))));
+    let _e13 = glint_pcg4d(vec4<u32>(texel_2, 6777961u, 1953785202u));
     let _e14 = glint_unit4_(_e13);
     let _e21 = glint_erfinv_by(((2f * _e14.y) - 1f), poly_normals_1);
     return vec2<f32>(_e14.x, (1.4142135f * _e21));
@@ -859,81 +893,73 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e31.x;
     let _e35 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e35));
-    let _e44 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    let _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_7 = _e41.v;
+    n = _e41.n;
     {
-        let _e50 = textureSample(normal_map, material_sampler, _e5);
-        let texel_2 = _e50.xyz;
-        let _e52 = n;
-        let _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        let _e57 = material.normal_strength;
-        let _e58 = weft_unpack_normal(texel_2, _e57);
-        let _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        let _e47 = textureSample(normal_map, material_sampler, _e5);
+        let texel_3 = _e47.xyz;
+        let _e49 = n;
+        let _e53 = material.normal_strength;
+        let _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_3, _e53);
+        n = _e54;
     }
-    let _e60 = n;
-    let _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    let _e63 = weft_main_light_direction();
-    let _e65 = n;
-    let _e66 = weft_safe_normalize((_e63 + _e44), _e65);
-    let _e67 = n;
-    let _e69 = weft_clamp_cos(dot(_e67, _e44));
-    let _e70 = n;
-    let n_dot_l_1 = saturate(dot(_e70, _e63));
-    let v_dot_h_1 = saturate(dot(_e44, _e66));
-    let _e75 = weft_main_light_radiance();
+    let _e55 = n;
+    let _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    let _e58 = n;
+    let _e59 = weft_main_light_geometry(_e58, v_7);
+    let _e60 = weft_main_light_radiance();
     let f0_2 = mix(vec3(0.04f), base_1, metallic);
     let diffuse_albedo = (base_1 * (1f - metallic));
-    let _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    let _e83 = weft_env_brdf_lut(_e69, roughness_7);
-    let _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    let kd = max((vec3(1f) - _e84), vec3(0f));
-    let _e91 = n;
-    let _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    let _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    let specular = ((_e92 * _e82) * _e94);
-    let _e96 = weft_diffuse_lambert(diffuse_albedo);
-    let direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
-    let _e102 = n;
-    let _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
-    let _e107 = n;
-    let _e108 = weft_sh_irradiance(_e107);
-    let indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    let _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    let _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7);
+    let _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    let kd = max((vec3(1f) - _e72), vec3(0f));
+    let _e79 = n;
+    let _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    let _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    let specular = ((_e81 * _e69) * _e84);
+    let _e86 = weft_diffuse_lambert(diffuse_albedo);
+    let direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
+    let _e93 = n;
+    let _e95 = weft_prefiltered_radiance(reflect(-(v_7), _e93), roughness_7);
+    let _e98 = n;
+    let _e99 = weft_sh_irradiance(_e98);
+    let indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    let _e117 = material.flake_intensity;
-    let intensity = max(_e117, 0f);
+    let _e108 = material.flake_intensity;
+    let intensity = max(_e108, 0f);
     if (intensity > 0f) {
-        local = (n_dot_l_1 > 0f);
+        local = (_e59.n_dot_l > 0f);
     } else {
         local = false;
     }
-    let _e127 = local;
-    if _e127 {
-        let _e130 = material.flake_roughness;
-        let r_f = clamp(_e130, 0.05f, 1f);
-        let _e134 = n;
-        let _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        let _e137 = weft_d_ggx(1f, r_f);
+    let _e119 = local;
+    if _e119 {
+        let _e122 = material.flake_roughness;
+        let r_f = clamp(_e122, 0.05f, 1f);
+        let _e126 = n;
+        let _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        let _e130 = weft_d_ggx(1f, r_f);
         {
-            let slope_3 = vec2<f32>(dot(_e62[0], _e66), dot(_e62[1], _e66));
-            let _e144 = glitter_params();
-            let _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
-            let _e148 = material.flake_size;
-            let screen_scale_2 = clamp(_e148, 1f, 8f);
-            let _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            let _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, (0u == TIER_FAST));
-            d_flakes = _e156;
+            let slope_3 = vec2<f32>(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
+            let _e139 = glitter_params();
+            let _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
+            let _e143 = material.flake_size;
+            let screen_scale_2 = clamp(_e143, 1f, 8f);
+            let _e147 = glint_grids(_e5, _e140, screen_scale_2);
+            let _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, (0u == TIER_FAST));
+            d_flakes = _e151;
         }
-        let _e159 = material.flake_color;
-        let flake_f0_ = saturate(_e159.xyz);
-        let _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        let _e163 = color;
-        let _e164 = d_flakes;
-        let _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1));
+        let _e154 = material.flake_color;
+        let flake_f0_ = saturate(_e154.xyz);
+        let _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        let _e160 = color;
+        let _e161 = d_flakes;
+        let _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = (_e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l));
     }
-    let _e172 = color;
-    let radiance = clamp(_e172, vec3(0f), vec3(65504f));
+    let _e171 = color;
+    let radiance = clamp(_e171, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

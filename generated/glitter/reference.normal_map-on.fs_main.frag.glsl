@@ -28,6 +28,18 @@ struct WeftMaterial {
     float twinkle;
     float density_variation;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -234,21 +246,34 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_2, n_4);
+    vec3 b_2 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_2, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
+    vec3 v_6 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -256,58 +281,23 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
 uvec4 glint_pcg4d(uvec4 v_in) {
-    uvec4 v_1 = uvec4(0u);
-    v_1 = ((v_in * 1664525u) + uvec4(1013904223u));
-    uint _e8 = v_1.x;
-    uint _e10 = v_1.y;
-    uint _e12 = v_1.w;
-    v_1.x = (_e8 + (_e10 * _e12));
-    uint _e16 = v_1.y;
-    uint _e18 = v_1.z;
-    uint _e20 = v_1.x;
-    v_1.y = (_e16 + (_e18 * _e20));
-    uint _e24 = v_1.z;
-    uint _e26 = v_1.x;
-    uint _e28 = v_1.y;
-    v_1.z = (_e24 + (_e26 * _e28));
-    uint _e32 = v_1.w;
-    uint _e34 = v_1.y;
-    uint _e36 = v_1.z;
-    v_1.w = (_e32 + (_e34 * _e36));
-    uvec4 _e39 = v_1;
-    uvec4 _e40 = v_1;
-    v_1 = (_e39 ^ (_e40 >> uvec4(16u)));
-    uint _e46 = v_1.x;
-    uint _e48 = v_1.y;
-    uint _e50 = v_1.w;
-    v_1.x = (_e46 + (_e48 * _e50));
-    uint _e54 = v_1.y;
-    uint _e56 = v_1.z;
-    uint _e58 = v_1.x;
-    v_1.y = (_e54 + (_e56 * _e58));
-    uint _e62 = v_1.z;
-    uint _e64 = v_1.x;
-    uint _e66 = v_1.y;
-    v_1.z = (_e62 + (_e64 * _e66));
-    uint _e70 = v_1.w;
-    uint _e72 = v_1.y;
-    uint _e74 = v_1.z;
-    v_1.w = (_e70 + (_e72 * _e74));
-    uvec4 _e77 = v_1;
-    return _e77;
-}
-
-uvec3 glint_pcg3d(uvec3 v_in_1) {
-    uvec3 v_2 = uvec3(0u);
-    v_2 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uvec4 v_2 = uvec4(0u);
+    v_2 = ((v_in * 1664525u) + uvec4(1013904223u));
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.z;
+    uint _e12 = v_2.w;
     v_2.x = (_e8 + (_e10 * _e12));
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -317,31 +307,73 @@ uvec3 glint_pcg3d(uvec3 v_in_1) {
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    uvec3 _e31 = v_2;
-    uvec3 _e32 = v_2;
-    v_2 = (_e31 ^ (_e32 >> uvec3(16u)));
-    uint _e38 = v_2.x;
-    uint _e40 = v_2.y;
-    uint _e42 = v_2.z;
-    v_2.x = (_e38 + (_e40 * _e42));
-    uint _e46 = v_2.y;
-    uint _e48 = v_2.z;
-    uint _e50 = v_2.x;
-    v_2.y = (_e46 + (_e48 * _e50));
-    uint _e54 = v_2.z;
-    uint _e56 = v_2.x;
-    uint _e58 = v_2.y;
-    v_2.z = (_e54 + (_e56 * _e58));
-    uvec3 _e61 = v_2;
+    uint _e32 = v_2.w;
+    uint _e34 = v_2.y;
+    uint _e36 = v_2.z;
+    v_2.w = (_e32 + (_e34 * _e36));
+    uvec4 _e39 = v_2;
+    uvec4 _e40 = v_2;
+    v_2 = (_e39 ^ (_e40 >> uvec4(16u)));
+    uint _e46 = v_2.x;
+    uint _e48 = v_2.y;
+    uint _e50 = v_2.w;
+    v_2.x = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.y;
+    uint _e56 = v_2.z;
+    uint _e58 = v_2.x;
+    v_2.y = (_e54 + (_e56 * _e58));
+    uint _e62 = v_2.z;
+    uint _e64 = v_2.x;
+    uint _e66 = v_2.y;
+    v_2.z = (_e62 + (_e64 * _e66));
+    uint _e70 = v_2.w;
+    uint _e72 = v_2.y;
+    uint _e74 = v_2.z;
+    v_2.w = (_e70 + (_e72 * _e74));
+    uvec4 _e77 = v_2;
+    return _e77;
+}
+
+uvec3 glint_pcg3d(uvec3 v_in_1) {
+    uvec3 v_3 = uvec3(0u);
+    v_3 = ((v_in_1 * 1664525u) + uvec3(1013904223u));
+    uint _e8 = v_3.x;
+    uint _e10 = v_3.y;
+    uint _e12 = v_3.z;
+    v_3.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_3.y;
+    uint _e18 = v_3.z;
+    uint _e20 = v_3.x;
+    v_3.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_3.z;
+    uint _e26 = v_3.x;
+    uint _e28 = v_3.y;
+    v_3.z = (_e24 + (_e26 * _e28));
+    uvec3 _e31 = v_3;
+    uvec3 _e32 = v_3;
+    v_3 = (_e31 ^ (_e32 >> uvec3(16u)));
+    uint _e38 = v_3.x;
+    uint _e40 = v_3.y;
+    uint _e42 = v_3.z;
+    v_3.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_3.y;
+    uint _e48 = v_3.z;
+    uint _e50 = v_3.x;
+    v_3.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_3.z;
+    uint _e56 = v_3.x;
+    uint _e58 = v_3.y;
+    v_3.z = (_e54 + (_e56 * _e58));
+    uvec3 _e61 = v_3;
     return _e61;
 }
 
-vec3 glint_unit3_(uvec3 v_3) {
-    return ((vec3((v_3 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
+vec3 glint_unit3_(uvec3 v_4) {
+    return ((vec3((v_4 >> uvec3(8u))) + vec3(0.5)) * 5.9604645e-8);
 }
 
-vec4 glint_unit4_(uvec4 v_4) {
-    return ((vec4((v_4 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
+vec4 glint_unit4_(uvec4 v_5) {
+    return ((vec4((v_5 >> uvec4(8u))) + vec4(0.5)) * 5.9604645e-8);
 }
 
 float glint_hash13_(vec3 p_in) {
@@ -446,8 +478,8 @@ vec3 glint_gaussian3_(vec3 u, bool poly_normals) {
 }
 
 vec2 glint_corner(vec2 c_1, bool poly_normals_1) {
-    uvec2 texel_1 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
-    uvec4 _e13 = glint_pcg4d(uvec4(texel_1, 6777961u, 1953785202u));
+    uvec2 texel_2 = uvec2((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64.0))))));
+    uvec4 _e13 = glint_pcg4d(uvec4(texel_2, 6777961u, 1953785202u));
     vec4 _e14 = glint_unit4_(_e13);
     float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
     return vec2(_e14.x, (1.4142135 * _e21));
@@ -811,82 +843,74 @@ void main() {
     float occlusion = _e31.x;
     float _e35 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e35), 0.0, 1.0);
-    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_7 = _e41.v;
+    n = _e41.n;
     {
-        vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_2 = _e50.xyz;
-        vec3 _e52 = n;
-        mat3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        float _e57 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e58 = weft_unpack_normal(texel_2, _e57);
-        vec3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_3 = _e47.xyz;
+        vec3 _e49 = n;
+        float _e53 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_3, _e53);
+        n = _e54;
     }
-    vec3 _e60 = n;
-    mat3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    vec3 _e63 = weft_main_light_direction();
-    vec3 _e65 = n;
-    vec3 _e66 = weft_safe_normalize((_e63 + _e44), _e65);
-    vec3 _e67 = n;
-    float _e69 = weft_clamp_cos(dot(_e67, _e44));
-    vec3 _e70 = n;
-    float n_dot_l_1 = clamp(dot(_e70, _e63), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e44, _e66), 0.0, 1.0);
-    vec3 _e75 = weft_main_light_radiance();
+    vec3 _e55 = n;
+    mat3x3 _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    vec3 _e58 = n;
+    WeftLightGeometry _e59 = weft_main_light_geometry(_e58, v_7);
+    vec3 _e60 = weft_main_light_radiance();
     vec3 f0_2 = mix(vec3(0.04), base_1, metallic);
     vec3 diffuse_albedo = (base_1 * (1.0 - metallic));
-    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    vec2 _e83 = weft_env_brdf_lut(_e69, roughness_7);
-    vec3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    vec3 kd = max((vec3(1.0) - _e84), vec3(0.0));
-    vec3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    vec3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 specular = ((_e92 * _e82) * _e94);
-    vec3 _e96 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
-    vec3 _e102 = n;
-    vec3 _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
-    vec3 _e107 = n;
-    vec3 _e108 = weft_sh_irradiance(_e107);
-    vec3 indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    float _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    vec2 _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7);
+    vec3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    vec3 kd = max((vec3(1.0) - _e72), vec3(0.0));
+    vec3 _e79 = n;
+    float _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    vec3 _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    vec3 specular = ((_e81 * _e69) * _e84);
+    vec3 _e86 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
+    vec3 _e93 = n;
+    vec3 _e95 = weft_prefiltered_radiance(reflect(-(v_7), _e93), roughness_7);
+    vec3 _e98 = n;
+    vec3 _e99 = weft_sh_irradiance(_e98);
+    vec3 indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e117 = _group_1_binding_0_fs.flake_intensity;
-    float intensity = max(_e117, 0.0);
+    float _e108 = _group_1_binding_0_fs.flake_intensity;
+    float intensity = max(_e108, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e59.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e127 = local;
-    if (_e127) {
-        float _e130 = _group_1_binding_0_fs.flake_roughness;
-        float r_f = clamp(_e130, 0.05, 1.0);
-        vec3 _e134 = n;
-        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        float _e137 = weft_d_ggx(1.0, r_f);
+    bool _e119 = local;
+    if (_e119) {
+        float _e122 = _group_1_binding_0_fs.flake_roughness;
+        float r_f = clamp(_e122, 0.05, 1.0);
+        vec3 _e126 = n;
+        float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        float _e130 = weft_d_ggx(1.0, r_f);
         {
-            vec2 slope_3 = vec2(dot(_e62[0], _e66), dot(_e62[1], _e66));
-            GlintParams _e144 = glitter_params();
-            GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e148 = _group_1_binding_0_fs.flake_size;
-            float screen_scale_2 = clamp(_e148, 1.0, 8.0);
-            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            float _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, (1u == TIER_FAST));
-            d_flakes = _e156;
+            vec2 slope_3 = vec2(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
+            GlintParams _e139 = glitter_params();
+            GlintEllipse _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e143 = _group_1_binding_0_fs.flake_size;
+            float screen_scale_2 = clamp(_e143, 1.0, 8.0);
+            GlintGrids _e147 = glint_grids(_e5, _e140, screen_scale_2);
+            float _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, (1u == TIER_FAST));
+            d_flakes = _e151;
         }
-        vec4 _e159 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e159.xyz, vec3(0.0), vec3(1.0));
-        float _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        vec3 _e163 = color;
-        float _e164 = d_flakes;
-        vec3 _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1));
+        vec4 _e154 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e154.xyz, vec3(0.0), vec3(1.0));
+        float _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        vec3 _e160 = color;
+        float _e161 = d_flakes;
+        vec3 _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = (_e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l));
     }
-    vec3 _e172 = color;
-    vec3 radiance = clamp(_e172, vec3(0.0), vec3(65504.0));
+    vec3 _e171 = color;
+    vec3 radiance = clamp(_e171, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

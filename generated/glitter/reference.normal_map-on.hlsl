@@ -36,6 +36,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -119,16 +137,16 @@ Texture2D<float4> normal_map : register(t4, space1);
 Texture2D<float4> occlusion_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -288,29 +306,72 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_2 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_2, n_4);
+    float3 b_2 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_2, n_5);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_5 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_5.xy * strength), max(v_5.z, 0.001));
+    float3 v_6 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -320,56 +381,12 @@ float2 weft_transform_uv(float2 uv, float4 st)
 
 uint4 glint_pcg4d(uint4 v_in)
 {
-    uint4 v_1 = (uint4)0;
+    uint4 v_2 = (uint4)0;
 
-    v_1 = ((v_in * 1664525u) + (1013904223u).xxxx);
-    uint _e8 = v_1.x;
-    uint _e10 = v_1.y;
-    uint _e12 = v_1.w;
-    v_1.x = (_e8 + (_e10 * _e12));
-    uint _e16 = v_1.y;
-    uint _e18 = v_1.z;
-    uint _e20 = v_1.x;
-    v_1.y = (_e16 + (_e18 * _e20));
-    uint _e24 = v_1.z;
-    uint _e26 = v_1.x;
-    uint _e28 = v_1.y;
-    v_1.z = (_e24 + (_e26 * _e28));
-    uint _e32 = v_1.w;
-    uint _e34 = v_1.y;
-    uint _e36 = v_1.z;
-    v_1.w = (_e32 + (_e34 * _e36));
-    uint4 _e39 = v_1;
-    uint4 _e40 = v_1;
-    v_1 = (_e39 ^ (_e40 >> (16u).xxxx));
-    uint _e46 = v_1.x;
-    uint _e48 = v_1.y;
-    uint _e50 = v_1.w;
-    v_1.x = (_e46 + (_e48 * _e50));
-    uint _e54 = v_1.y;
-    uint _e56 = v_1.z;
-    uint _e58 = v_1.x;
-    v_1.y = (_e54 + (_e56 * _e58));
-    uint _e62 = v_1.z;
-    uint _e64 = v_1.x;
-    uint _e66 = v_1.y;
-    v_1.z = (_e62 + (_e64 * _e66));
-    uint _e70 = v_1.w;
-    uint _e72 = v_1.y;
-    uint _e74 = v_1.z;
-    v_1.w = (_e70 + (_e72 * _e74));
-    uint4 _e77 = v_1;
-    return _e77;
-}
-
-uint3 glint_pcg3d(uint3 v_in_1)
-{
-    uint3 v_2 = (uint3)0;
-
-    v_2 = ((v_in_1 * 1664525u) + (1013904223u).xxx);
+    v_2 = ((v_in * 1664525u) + (1013904223u).xxxx);
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.z;
+    uint _e12 = v_2.w;
     v_2.x = (_e8 + (_e10 * _e12));
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -379,33 +396,77 @@ uint3 glint_pcg3d(uint3 v_in_1)
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    uint3 _e31 = v_2;
-    uint3 _e32 = v_2;
-    v_2 = (_e31 ^ (_e32 >> (16u).xxx));
-    uint _e38 = v_2.x;
-    uint _e40 = v_2.y;
-    uint _e42 = v_2.z;
-    v_2.x = (_e38 + (_e40 * _e42));
-    uint _e46 = v_2.y;
-    uint _e48 = v_2.z;
-    uint _e50 = v_2.x;
-    v_2.y = (_e46 + (_e48 * _e50));
-    uint _e54 = v_2.z;
-    uint _e56 = v_2.x;
-    uint _e58 = v_2.y;
-    v_2.z = (_e54 + (_e56 * _e58));
-    uint3 _e61 = v_2;
+    uint _e32 = v_2.w;
+    uint _e34 = v_2.y;
+    uint _e36 = v_2.z;
+    v_2.w = (_e32 + (_e34 * _e36));
+    uint4 _e39 = v_2;
+    uint4 _e40 = v_2;
+    v_2 = (_e39 ^ (_e40 >> (16u).xxxx));
+    uint _e46 = v_2.x;
+    uint _e48 = v_2.y;
+    uint _e50 = v_2.w;
+    v_2.x = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.y;
+    uint _e56 = v_2.z;
+    uint _e58 = v_2.x;
+    v_2.y = (_e54 + (_e56 * _e58));
+    uint _e62 = v_2.z;
+    uint _e64 = v_2.x;
+    uint _e66 = v_2.y;
+    v_2.z = (_e62 + (_e64 * _e66));
+    uint _e70 = v_2.w;
+    uint _e72 = v_2.y;
+    uint _e74 = v_2.z;
+    v_2.w = (_e70 + (_e72 * _e74));
+    uint4 _e77 = v_2;
+    return _e77;
+}
+
+uint3 glint_pcg3d(uint3 v_in_1)
+{
+    uint3 v_3 = (uint3)0;
+
+    v_3 = ((v_in_1 * 1664525u) + (1013904223u).xxx);
+    uint _e8 = v_3.x;
+    uint _e10 = v_3.y;
+    uint _e12 = v_3.z;
+    v_3.x = (_e8 + (_e10 * _e12));
+    uint _e16 = v_3.y;
+    uint _e18 = v_3.z;
+    uint _e20 = v_3.x;
+    v_3.y = (_e16 + (_e18 * _e20));
+    uint _e24 = v_3.z;
+    uint _e26 = v_3.x;
+    uint _e28 = v_3.y;
+    v_3.z = (_e24 + (_e26 * _e28));
+    uint3 _e31 = v_3;
+    uint3 _e32 = v_3;
+    v_3 = (_e31 ^ (_e32 >> (16u).xxx));
+    uint _e38 = v_3.x;
+    uint _e40 = v_3.y;
+    uint _e42 = v_3.z;
+    v_3.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_3.y;
+    uint _e48 = v_3.z;
+    uint _e50 = v_3.x;
+    v_3.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_3.z;
+    uint _e56 = v_3.x;
+    uint _e58 = v_3.y;
+    v_3.z = (_e54 + (_e56 * _e58));
+    uint3 _e61 = v_3;
     return _e61;
 }
 
-float3 glint_unit3_(uint3 v_3)
+float3 glint_unit3_(uint3 v_4)
 {
-    return ((float3((v_3 >> (8u).xxx)) + (0.5).xxx) * 5.9604645e-8);
+    return ((float3((v_4 >> (8u).xxx)) + (0.5).xxx) * 5.9604645e-8);
 }
 
-float4 glint_unit4_(uint4 v_4)
+float4 glint_unit4_(uint4 v_5)
 {
-    return ((float4((v_4 >> (8u).xxxx)) + (0.5).xxxx) * 5.9604645e-8);
+    return ((float4((v_5 >> (8u).xxxx)) + (0.5).xxxx) * 5.9604645e-8);
 }
 
 float glint_hash13_(float3 p_in)
@@ -522,8 +583,8 @@ uint2 naga_f2u32(float2 value) {
 
 float2 glint_corner(float2 c_1, bool poly_normals_1)
 {
-    uint2 texel_1 = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
-    const uint4 _e13 = glint_pcg4d(uint4(texel_1, 6777961u, 1953785202u));
+    uint2 texel_2 = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
+    const uint4 _e13 = glint_pcg4d(uint4(texel_2, 6777961u, 1953785202u));
     const float4 _e14 = glint_unit4_(_e13);
     const float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
     return float2(_e14.x, (1.4142135 * _e21));
@@ -930,7 +991,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
     bool local = (bool)0;
@@ -953,81 +1014,73 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float occlusion = _e31.x;
     float _e35 = material.occlusion_strength;
     float ao = saturate(lerp(1.0, occlusion, _e35));
-    const float3 _e44 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    const WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_7 = _e41.v;
+    n = _e41.n;
     {
-        float4 _e50 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_2 = _e50.xyz;
-        float3 _e52 = n;
-        const float3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        float _e57 = material.normal_strength;
-        const float3 _e58 = weft_unpack_normal(texel_2, _e57);
-        const float3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        float4 _e47 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_3 = _e47.xyz;
+        float3 _e49 = n;
+        float _e53 = material.normal_strength;
+        const float3 _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_3, _e53);
+        n = _e54;
     }
-    float3 _e60 = n;
-    const float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    const float3 _e63 = weft_main_light_direction();
-    float3 _e65 = n;
-    const float3 _e66 = weft_safe_normalize((_e63 + _e44), _e65);
-    float3 _e67 = n;
-    const float _e69 = weft_clamp_cos(dot(_e67, _e44));
-    float3 _e70 = n;
-    float n_dot_l_1 = saturate(dot(_e70, _e63));
-    float v_dot_h_1 = saturate(dot(_e44, _e66));
-    const float3 _e75 = weft_main_light_radiance();
+    float3 _e55 = n;
+    const float3x3 _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    float3 _e58 = n;
+    const WeftLightGeometry _e59 = weft_main_light_geometry(_e58, v_7);
+    const float3 _e60 = weft_main_light_radiance();
     float3 f0_2 = lerp((0.04).xxx, base_1, metallic);
     float3 diffuse_albedo = (base_1 * (1.0 - metallic));
-    const float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    const float2 _e83 = weft_env_brdf_lut(_e69, roughness_7);
-    const float3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    float3 kd = max(((1.0).xxx - _e84), (0.0).xxx);
-    float3 _e91 = n;
-    const float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    const float3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    float3 specular = ((_e92 * _e82) * _e94);
-    const float3 _e96 = weft_diffuse_lambert(diffuse_albedo);
-    float3 direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
-    float3 _e102 = n;
-    const float3 _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
-    float3 _e107 = n;
-    const float3 _e108 = weft_sh_irradiance(_e107);
-    float3 indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    const float _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    const float2 _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7);
+    const float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    float3 kd = max(((1.0).xxx - _e72), (0.0).xxx);
+    float3 _e79 = n;
+    const float _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    const float3 _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    float3 specular = ((_e81 * _e69) * _e84);
+    const float3 _e86 = weft_diffuse_lambert(diffuse_albedo);
+    float3 direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
+    float3 _e93 = n;
+    const float3 _e95 = weft_prefiltered_radiance(reflect(-(v_7), _e93), roughness_7);
+    float3 _e98 = n;
+    const float3 _e99 = weft_sh_irradiance(_e98);
+    float3 indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e117 = material.flake_intensity;
-    float intensity = max(_e117, 0.0);
+    float _e108 = material.flake_intensity;
+    float intensity = max(_e108, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e59.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e127 = local;
-    if (_e127) {
-        float _e130 = material.flake_roughness;
-        float r_f = clamp(_e130, 0.05, 1.0);
-        float3 _e134 = n;
-        const float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        const float _e137 = weft_d_ggx(1.0, r_f);
+    bool _e119 = local;
+    if (_e119) {
+        float _e122 = material.flake_roughness;
+        float r_f = clamp(_e122, 0.05, 1.0);
+        float3 _e126 = n;
+        const float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        const float _e130 = weft_d_ggx(1.0, r_f);
         {
-            float2 slope_3 = float2(dot(_e62[0], _e66), dot(_e62[1], _e66));
-            const GlintParams _e144 = glitter_params();
-            const GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e148 = material.flake_size;
-            float screen_scale_2 = clamp(_e148, 1.0, 8.0);
-            const GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            const float _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, (1u == TIER_FAST));
-            d_flakes = _e156;
+            float2 slope_3 = float2(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
+            const GlintParams _e139 = glitter_params();
+            const GlintEllipse _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e143 = material.flake_size;
+            float screen_scale_2 = clamp(_e143, 1.0, 8.0);
+            const GlintGrids _e147 = glint_grids(_e5, _e140, screen_scale_2);
+            const float _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, (1u == TIER_FAST));
+            d_flakes = _e151;
         }
-        float4 _e159 = material.flake_color;
-        float3 flake_f0_ = saturate(_e159.xyz);
-        const float _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        float3 _e163 = color;
-        float _e164 = d_flakes;
-        const float3 _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1));
+        float4 _e154 = material.flake_color;
+        float3 flake_f0_ = saturate(_e154.xyz);
+        const float _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        float3 _e160 = color;
+        float _e161 = d_flakes;
+        const float3 _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = (_e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l));
     }
-    float3 _e172 = color;
-    float3 radiance = clamp(_e172, (0.0).xxx, (65504.0).xxx);
+    float3 _e171 = color;
+    float3 radiance = clamp(_e171, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

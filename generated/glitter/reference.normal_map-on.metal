@@ -39,6 +39,19 @@ struct WeftMaterial {
     float density_variation;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -284,27 +297,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_2, n_4);
+    metal::float3 b_2 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_2, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_5 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_5.xy * strength, metal::max(v_5.z, 0.001));
+    metal::float3 v_6 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_6.xy * strength, metal::max(v_6.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -313,6 +347,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -325,55 +371,11 @@ metal::float2 weft_transform_uv(
 metal::uint4 glint_pcg4d(
     metal::uint4 v_in
 ) {
-    metal::uint4 v_1 = {};
-    v_1 = (v_in * 1664525u) + metal::uint4(1013904223u);
-    uint _e8 = v_1.x;
-    uint _e10 = v_1.y;
-    uint _e12 = v_1.w;
-    v_1.x = _e8 + (_e10 * _e12);
-    uint _e16 = v_1.y;
-    uint _e18 = v_1.z;
-    uint _e20 = v_1.x;
-    v_1.y = _e16 + (_e18 * _e20);
-    uint _e24 = v_1.z;
-    uint _e26 = v_1.x;
-    uint _e28 = v_1.y;
-    v_1.z = _e24 + (_e26 * _e28);
-    uint _e32 = v_1.w;
-    uint _e34 = v_1.y;
-    uint _e36 = v_1.z;
-    v_1.w = _e32 + (_e34 * _e36);
-    metal::uint4 _e39 = v_1;
-    metal::uint4 _e40 = v_1;
-    v_1 = _e39 ^ (_e40 >> metal::uint4(16u));
-    uint _e46 = v_1.x;
-    uint _e48 = v_1.y;
-    uint _e50 = v_1.w;
-    v_1.x = _e46 + (_e48 * _e50);
-    uint _e54 = v_1.y;
-    uint _e56 = v_1.z;
-    uint _e58 = v_1.x;
-    v_1.y = _e54 + (_e56 * _e58);
-    uint _e62 = v_1.z;
-    uint _e64 = v_1.x;
-    uint _e66 = v_1.y;
-    v_1.z = _e62 + (_e64 * _e66);
-    uint _e70 = v_1.w;
-    uint _e72 = v_1.y;
-    uint _e74 = v_1.z;
-    v_1.w = _e70 + (_e72 * _e74);
-    metal::uint4 _e77 = v_1;
-    return _e77;
-}
-
-metal::uint3 glint_pcg3d(
-    metal::uint3 v_in_1
-) {
-    metal::uint3 v_2 = {};
-    v_2 = (v_in_1 * 1664525u) + metal::uint3(1013904223u);
+    metal::uint4 v_2 = {};
+    v_2 = (v_in * 1664525u) + metal::uint4(1013904223u);
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.z;
+    uint _e12 = v_2.w;
     v_2.x = _e8 + (_e10 * _e12);
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -383,35 +385,79 @@ metal::uint3 glint_pcg3d(
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = _e24 + (_e26 * _e28);
-    metal::uint3 _e31 = v_2;
-    metal::uint3 _e32 = v_2;
-    v_2 = _e31 ^ (_e32 >> metal::uint3(16u));
-    uint _e38 = v_2.x;
-    uint _e40 = v_2.y;
-    uint _e42 = v_2.z;
-    v_2.x = _e38 + (_e40 * _e42);
-    uint _e46 = v_2.y;
-    uint _e48 = v_2.z;
-    uint _e50 = v_2.x;
-    v_2.y = _e46 + (_e48 * _e50);
-    uint _e54 = v_2.z;
-    uint _e56 = v_2.x;
-    uint _e58 = v_2.y;
-    v_2.z = _e54 + (_e56 * _e58);
-    metal::uint3 _e61 = v_2;
+    uint _e32 = v_2.w;
+    uint _e34 = v_2.y;
+    uint _e36 = v_2.z;
+    v_2.w = _e32 + (_e34 * _e36);
+    metal::uint4 _e39 = v_2;
+    metal::uint4 _e40 = v_2;
+    v_2 = _e39 ^ (_e40 >> metal::uint4(16u));
+    uint _e46 = v_2.x;
+    uint _e48 = v_2.y;
+    uint _e50 = v_2.w;
+    v_2.x = _e46 + (_e48 * _e50);
+    uint _e54 = v_2.y;
+    uint _e56 = v_2.z;
+    uint _e58 = v_2.x;
+    v_2.y = _e54 + (_e56 * _e58);
+    uint _e62 = v_2.z;
+    uint _e64 = v_2.x;
+    uint _e66 = v_2.y;
+    v_2.z = _e62 + (_e64 * _e66);
+    uint _e70 = v_2.w;
+    uint _e72 = v_2.y;
+    uint _e74 = v_2.z;
+    v_2.w = _e70 + (_e72 * _e74);
+    metal::uint4 _e77 = v_2;
+    return _e77;
+}
+
+metal::uint3 glint_pcg3d(
+    metal::uint3 v_in_1
+) {
+    metal::uint3 v_3 = {};
+    v_3 = (v_in_1 * 1664525u) + metal::uint3(1013904223u);
+    uint _e8 = v_3.x;
+    uint _e10 = v_3.y;
+    uint _e12 = v_3.z;
+    v_3.x = _e8 + (_e10 * _e12);
+    uint _e16 = v_3.y;
+    uint _e18 = v_3.z;
+    uint _e20 = v_3.x;
+    v_3.y = _e16 + (_e18 * _e20);
+    uint _e24 = v_3.z;
+    uint _e26 = v_3.x;
+    uint _e28 = v_3.y;
+    v_3.z = _e24 + (_e26 * _e28);
+    metal::uint3 _e31 = v_3;
+    metal::uint3 _e32 = v_3;
+    v_3 = _e31 ^ (_e32 >> metal::uint3(16u));
+    uint _e38 = v_3.x;
+    uint _e40 = v_3.y;
+    uint _e42 = v_3.z;
+    v_3.x = _e38 + (_e40 * _e42);
+    uint _e46 = v_3.y;
+    uint _e48 = v_3.z;
+    uint _e50 = v_3.x;
+    v_3.y = _e46 + (_e48 * _e50);
+    uint _e54 = v_3.z;
+    uint _e56 = v_3.x;
+    uint _e58 = v_3.y;
+    v_3.z = _e54 + (_e56 * _e58);
+    metal::uint3 _e61 = v_3;
     return _e61;
 }
 
 metal::float3 glint_unit3_(
-    metal::uint3 v_3
+    metal::uint3 v_4
 ) {
-    return (static_cast<metal::float3>(v_3 >> metal::uint3(8u)) + metal::float3(0.5)) * 0.000000059604645;
+    return (static_cast<metal::float3>(v_4 >> metal::uint3(8u)) + metal::float3(0.5)) * 0.000000059604645;
 }
 
 metal::float4 glint_unit4_(
-    metal::uint4 v_4
+    metal::uint4 v_5
 ) {
-    return (static_cast<metal::float4>(v_4 >> metal::uint4(8u)) + metal::float4(0.5)) * 0.000000059604645;
+    return (static_cast<metal::float4>(v_5 >> metal::uint4(8u)) + metal::float4(0.5)) * 0.000000059604645;
 }
 
 float glint_hash13_(
@@ -535,8 +581,8 @@ metal::float2 glint_corner(
     metal::float2 c_1,
     bool poly_normals_1
 ) {
-    metal::uint2 texel_1 = naga_f2u32(c_1 - (GLINT_TABLE_SIZE * metal::floor(c_1 / metal::float2(64.0))));
-    metal::uint4 _e13 = glint_pcg4d(metal::uint4(texel_1, 6777961u, 1953785202u));
+    metal::uint2 texel_2 = naga_f2u32(c_1 - (GLINT_TABLE_SIZE * metal::floor(c_1 / metal::float2(64.0))));
+    metal::uint4 _e13 = glint_pcg4d(metal::uint4(texel_2, 6777961u, 1953785202u));
     metal::float4 _e14 = glint_unit4_(_e13);
     float _e21 = glint_erfinv_by((2.0 * _e14.y) - 1.0, poly_normals_1);
     return metal::float2(_e14.x, 1.4142135 * _e21);
@@ -958,7 +1004,7 @@ GlintParams glitter_params(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -973,7 +1019,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -997,8 +1043,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -1019,7 +1065,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     bool local = {};
@@ -1041,81 +1087,73 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e31.x;
     float _e35 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e35));
-    metal::float3 _e44 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_7 = _e41.v;
+    n = _e41.n;
     {
-        metal::float4 _e50 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_2 = _e50.xyz;
-        metal::float3 _e52 = n;
-        metal::float3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        float _e57 = material.normal_strength;
-        metal::float3 _e58 = weft_unpack_normal(texel_2, _e57);
-        metal::float3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        metal::float4 _e47 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_3 = _e47.xyz;
+        metal::float3 _e49 = n;
+        float _e53 = material.normal_strength;
+        metal::float3 _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_3, _e53);
+        n = _e54;
     }
-    metal::float3 _e60 = n;
-    metal::float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    metal::float3 _e63 = weft_main_light_direction(weft_frame);
-    metal::float3 _e65 = n;
-    metal::float3 _e66 = weft_safe_normalize(_e63 + _e44, _e65);
-    metal::float3 _e67 = n;
-    float _e69 = weft_clamp_cos(metal::dot(_e67, _e44));
-    metal::float3 _e70 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e70, _e63));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e44, _e66));
-    metal::float3 _e75 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e55 = n;
+    metal::float3x3 _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    metal::float3 _e58 = n;
+    WeftLightGeometry _e59 = weft_main_light_geometry(_e58, v_7, weft_frame);
+    metal::float3 _e60 = weft_main_light_radiance(weft_frame);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base_1, metallic);
     metal::float3 diffuse_albedo = base_1 * (1.0 - metallic);
-    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    metal::float2 _e83 = weft_env_brdf_lut(_e69, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e84, metal::float3(0.0));
-    metal::float3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    metal::float3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 specular = (_e92 * _e82) * _e94;
-    metal::float3 _e96 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 direct = (((kd * _e96) + specular) * _e75) * n_dot_l_1;
-    metal::float3 _e102 = n;
-    metal::float3 _e104 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e102), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e107 = n;
-    metal::float3 _e108 = weft_sh_irradiance(_e107, weft_frame);
-    metal::float3 indirect = ((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo);
+    float _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    metal::float2 _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e72, metal::float3(0.0));
+    metal::float3 _e79 = n;
+    float _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    metal::float3 _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    metal::float3 specular = (_e81 * _e69) * _e84;
+    metal::float3 _e86 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 direct = (((kd * _e86) + specular) * _e60) * _e59.n_dot_l;
+    metal::float3 _e93 = n;
+    metal::float3 _e95 = weft_prefiltered_radiance(metal::reflect(-(v_7), _e93), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e98 = n;
+    metal::float3 _e99 = weft_sh_irradiance(_e98, weft_frame);
+    metal::float3 indirect = ((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo);
     color = direct + indirect;
-    float _e117 = material.flake_intensity;
-    float intensity = metal::max(_e117, 0.0);
+    float _e108 = material.flake_intensity;
+    float intensity = metal::max(_e108, 0.0);
     if (intensity > 0.0) {
-        local = n_dot_l_1 > 0.0;
+        local = _e59.n_dot_l > 0.0;
     } else {
         local = false;
     }
-    bool _e127 = local;
-    if (_e127) {
-        float _e130 = material.flake_roughness;
-        float r_f = metal::clamp(_e130, 0.05, 1.0);
-        metal::float3 _e134 = n;
-        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        float _e137 = weft_d_ggx(1.0, r_f);
+    bool _e119 = local;
+    if (_e119) {
+        float _e122 = material.flake_roughness;
+        float r_f = metal::clamp(_e122, 0.05, 1.0);
+        metal::float3 _e126 = n;
+        float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        float _e130 = weft_d_ggx(1.0, r_f);
         {
-            metal::float2 slope_3 = metal::float2(metal::dot(_e62[0], _e66), metal::dot(_e62[1], _e66));
-            GlintParams _e144 = glitter_params(material);
-            GlintEllipse _e145 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e148 = material.flake_size;
-            float screen_scale_2 = metal::clamp(_e148, 1.0, 8.0);
-            GlintGrids _e152 = glint_grids(_e5, _e145, screen_scale_2);
-            float _e156 = glint_ndf(_e144, _e152, slope_3, _e135, _e137, 1u == TIER_FAST);
-            d_flakes = _e156;
+            metal::float2 slope_3 = metal::float2(metal::dot(_e57[0], _e59.h), metal::dot(_e57[1], _e59.h));
+            GlintParams _e139 = glitter_params(material);
+            GlintEllipse _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e143 = material.flake_size;
+            float screen_scale_2 = metal::clamp(_e143, 1.0, 8.0);
+            GlintGrids _e147 = glint_grids(_e5, _e140, screen_scale_2);
+            float _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, 1u == TIER_FAST);
+            d_flakes = _e151;
         }
-        metal::float4 _e159 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e159.xyz);
-        float _e162 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        metal::float3 _e163 = color;
-        float _e164 = d_flakes;
-        metal::float3 _e167 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = _e163 + (((((intensity * _e164) * _e162) * _e167) * _e75) * n_dot_l_1);
+        metal::float4 _e154 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e154.xyz);
+        float _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        metal::float3 _e160 = color;
+        float _e161 = d_flakes;
+        metal::float3 _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = _e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l);
     }
-    metal::float3 _e172 = color;
-    metal::float3 radiance = metal::clamp(_e172, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e171 = color;
+    metal::float3 radiance = metal::clamp(_e171, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

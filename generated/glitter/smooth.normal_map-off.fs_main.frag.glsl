@@ -28,6 +28,18 @@ struct WeftMaterial {
     float twinkle;
     float density_variation;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -205,16 +217,29 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -244,65 +269,59 @@ void main() {
     float occlusion = _e31.x;
     float _e35 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e35), 0.0, 1.0);
-    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_2 = _e41.v;
+    n = _e41.n;
+    vec3 _e45 = n;
+    mat3x3 _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     vec3 _e48 = n;
-    mat3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
-    vec3 _e51 = weft_main_light_direction();
-    vec3 _e53 = n;
-    vec3 _e54 = weft_safe_normalize((_e51 + _e44), _e53);
-    vec3 _e55 = n;
-    float _e57 = weft_clamp_cos(dot(_e55, _e44));
-    vec3 _e58 = n;
-    float n_dot_l_1 = clamp(dot(_e58, _e51), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e44, _e54), 0.0, 1.0);
-    vec3 _e63 = weft_main_light_radiance();
+    WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_2);
+    vec3 _e50 = weft_main_light_radiance();
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
-    vec2 _e71 = weft_env_brdf_lut(_e57, roughness_7);
-    vec3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
-    vec3 kd = max((vec3(1.0) - _e72), vec3(0.0));
-    vec3 _e79 = n;
-    float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
-    vec3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 specular = ((_e80 * _e70) * _e82);
-    vec3 _e84 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 direct = ((((kd * _e84) + specular) * _e63) * n_dot_l_1);
-    vec3 _e90 = n;
-    vec3 _e92 = weft_prefiltered_radiance(reflect(-(_e44), _e90), roughness_7);
-    vec3 _e95 = n;
-    vec3 _e96 = weft_sh_irradiance(_e95);
-    vec3 indirect = (((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo));
+    float _e59 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, roughness_7);
+    vec2 _e61 = weft_env_brdf_lut(_e49.n_dot_v, roughness_7);
+    vec3 _e62 = weft_env_brdf_from_lut(f0_2, _e61);
+    vec3 kd = max((vec3(1.0) - _e62), vec3(0.0));
+    vec3 _e69 = n;
+    float _e71 = weft_d_ggx_nh(_e69, _e49.h, roughness_7);
+    vec3 _e74 = weft_f_schlick(f0_2, _e49.v_dot_h);
+    vec3 specular = ((_e71 * _e59) * _e74);
+    vec3 _e76 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 direct = ((((kd * _e76) + specular) * _e50) * _e49.n_dot_l);
+    vec3 _e83 = n;
+    vec3 _e85 = weft_prefiltered_radiance(reflect(-(v_2), _e83), roughness_7);
+    vec3 _e88 = n;
+    vec3 _e89 = weft_sh_irradiance(_e88);
+    vec3 indirect = (((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e105 = _group_1_binding_0_fs.flake_intensity;
-    float intensity = max(_e105, 0.0);
+    float _e98 = _group_1_binding_0_fs.flake_intensity;
+    float intensity = max(_e98, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e49.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e115 = local;
-    if (_e115) {
-        float _e118 = _group_1_binding_0_fs.flake_roughness;
-        float r_f = clamp(_e118, 0.05, 1.0);
-        vec3 _e122 = n;
-        float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
-        float _e125 = weft_d_ggx(1.0, r_f);
+    bool _e109 = local;
+    if (_e109) {
+        float _e112 = _group_1_binding_0_fs.flake_roughness;
+        float r_f = clamp(_e112, 0.05, 1.0);
+        vec3 _e116 = n;
+        float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
+        float _e120 = weft_d_ggx(1.0, r_f);
         {
-            d_flakes = _e123;
+            d_flakes = _e118;
         }
-        vec4 _e129 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e129.xyz, vec3(0.0), vec3(1.0));
-        float _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        vec3 _e133 = color;
-        float _e134 = d_flakes;
-        vec3 _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1));
+        vec4 _e124 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
+        float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
+        vec3 _e130 = color;
+        float _e131 = d_flakes;
+        vec3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
-    vec3 _e142 = color;
-    vec3 radiance = clamp(_e142, vec3(0.0), vec3(65504.0));
+    vec3 _e141 = color;
+    vec3 radiance = clamp(_e141, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -36,6 +36,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -83,16 +101,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> occlusion_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -247,17 +265,52 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -292,7 +345,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
     bool local = (bool)0;
@@ -315,64 +368,58 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float occlusion = _e31.x;
     float _e35 = material.occlusion_strength;
     float ao = saturate(lerp(1.0, occlusion, _e35));
-    const float3 _e44 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    const WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e41.v;
+    n = _e41.n;
+    float3 _e45 = n;
+    const float3x3 _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     float3 _e48 = n;
-    const float3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
-    const float3 _e51 = weft_main_light_direction();
-    float3 _e53 = n;
-    const float3 _e54 = weft_safe_normalize((_e51 + _e44), _e53);
-    float3 _e55 = n;
-    const float _e57 = weft_clamp_cos(dot(_e55, _e44));
-    float3 _e58 = n;
-    float n_dot_l_1 = saturate(dot(_e58, _e51));
-    float v_dot_h_1 = saturate(dot(_e44, _e54));
-    const float3 _e63 = weft_main_light_radiance();
+    const WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_2);
+    const float3 _e50 = weft_main_light_radiance();
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
-    const float2 _e71 = weft_env_brdf_lut(_e57, roughness_7);
-    const float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
-    float3 kd = max(((1.0).xxx - _e72), (0.0).xxx);
-    float3 _e79 = n;
-    const float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
-    const float3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
-    float3 specular = ((_e80 * _e70) * _e82);
-    const float3 _e84 = weft_diffuse_lambert(diffuse_albedo);
-    float3 direct = ((((kd * _e84) + specular) * _e63) * n_dot_l_1);
-    float3 _e90 = n;
-    const float3 _e92 = weft_prefiltered_radiance(reflect(-(_e44), _e90), roughness_7);
-    float3 _e95 = n;
-    const float3 _e96 = weft_sh_irradiance(_e95);
-    float3 indirect = (((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo));
+    const float _e59 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, roughness_7);
+    const float2 _e61 = weft_env_brdf_lut(_e49.n_dot_v, roughness_7);
+    const float3 _e62 = weft_env_brdf_from_lut(f0_2, _e61);
+    float3 kd = max(((1.0).xxx - _e62), (0.0).xxx);
+    float3 _e69 = n;
+    const float _e71 = weft_d_ggx_nh(_e69, _e49.h, roughness_7);
+    const float3 _e74 = weft_f_schlick(f0_2, _e49.v_dot_h);
+    float3 specular = ((_e71 * _e59) * _e74);
+    const float3 _e76 = weft_diffuse_lambert(diffuse_albedo);
+    float3 direct = ((((kd * _e76) + specular) * _e50) * _e49.n_dot_l);
+    float3 _e83 = n;
+    const float3 _e85 = weft_prefiltered_radiance(reflect(-(v_2), _e83), roughness_7);
+    float3 _e88 = n;
+    const float3 _e89 = weft_sh_irradiance(_e88);
+    float3 indirect = (((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e105 = material.flake_intensity;
-    float intensity = max(_e105, 0.0);
+    float _e98 = material.flake_intensity;
+    float intensity = max(_e98, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e49.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e115 = local;
-    if (_e115) {
-        float _e118 = material.flake_roughness;
-        float r_f = clamp(_e118, 0.05, 1.0);
-        float3 _e122 = n;
-        const float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
-        const float _e125 = weft_d_ggx(1.0, r_f);
+    bool _e109 = local;
+    if (_e109) {
+        float _e112 = material.flake_roughness;
+        float r_f = clamp(_e112, 0.05, 1.0);
+        float3 _e116 = n;
+        const float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
+        const float _e120 = weft_d_ggx(1.0, r_f);
         {
-            d_flakes = _e123;
+            d_flakes = _e118;
         }
-        float4 _e129 = material.flake_color;
-        float3 flake_f0_ = saturate(_e129.xyz);
-        const float _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        float3 _e133 = color;
-        float _e134 = d_flakes;
-        const float3 _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1));
+        float4 _e124 = material.flake_color;
+        float3 flake_f0_ = saturate(_e124.xyz);
+        const float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
+        float3 _e130 = color;
+        float _e131 = d_flakes;
+        const float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
-    float3 _e142 = color;
-    float3 radiance = clamp(_e142, (0.0).xxx, (65504.0).xxx);
+    float3 _e141 = color;
+    float3 radiance = clamp(_e141, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

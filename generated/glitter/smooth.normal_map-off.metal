@@ -39,6 +39,19 @@ struct WeftMaterial {
     float density_variation;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -255,19 +268,40 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float2 weft_transform_uv(
@@ -319,8 +353,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -340,7 +374,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     bool local = {};
@@ -362,64 +396,58 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e31.x;
     float _e35 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e35));
-    metal::float3 _e44 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e41.v;
+    n = _e41.n;
+    metal::float3 _e45 = n;
+    metal::float3x3 _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     metal::float3 _e48 = n;
-    metal::float3x3 _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
-    metal::float3 _e51 = weft_main_light_direction(weft_frame);
-    metal::float3 _e53 = n;
-    metal::float3 _e54 = weft_safe_normalize(_e51 + _e44, _e53);
-    metal::float3 _e55 = n;
-    float _e57 = weft_clamp_cos(metal::dot(_e55, _e44));
-    metal::float3 _e58 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e58, _e51));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e44, _e54));
-    metal::float3 _e63 = weft_main_light_radiance(weft_frame);
+    WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_2, weft_frame);
+    metal::float3 _e50 = weft_main_light_radiance(weft_frame);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    float _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
-    metal::float2 _e71 = weft_env_brdf_lut(_e57, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e72, metal::float3(0.0));
-    metal::float3 _e79 = n;
-    float _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
-    metal::float3 _e82 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 specular = (_e80 * _e70) * _e82;
-    metal::float3 _e84 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 direct = (((kd * _e84) + specular) * _e63) * n_dot_l_1;
-    metal::float3 _e90 = n;
-    metal::float3 _e92 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e90), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e95 = n;
-    metal::float3 _e96 = weft_sh_irradiance(_e95, weft_frame);
-    metal::float3 indirect = ((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo);
+    float _e59 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, roughness_7);
+    metal::float2 _e61 = weft_env_brdf_lut(_e49.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e62 = weft_env_brdf_from_lut(f0_2, _e61);
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e62, metal::float3(0.0));
+    metal::float3 _e69 = n;
+    float _e71 = weft_d_ggx_nh(_e69, _e49.h, roughness_7);
+    metal::float3 _e74 = weft_f_schlick(f0_2, _e49.v_dot_h);
+    metal::float3 specular = (_e71 * _e59) * _e74;
+    metal::float3 _e76 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 direct = (((kd * _e76) + specular) * _e50) * _e49.n_dot_l;
+    metal::float3 _e83 = n;
+    metal::float3 _e85 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e83), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e88 = n;
+    metal::float3 _e89 = weft_sh_irradiance(_e88, weft_frame);
+    metal::float3 indirect = ((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo);
     color = direct + indirect;
-    float _e105 = material.flake_intensity;
-    float intensity = metal::max(_e105, 0.0);
+    float _e98 = material.flake_intensity;
+    float intensity = metal::max(_e98, 0.0);
     if (intensity > 0.0) {
-        local = n_dot_l_1 > 0.0;
+        local = _e49.n_dot_l > 0.0;
     } else {
         local = false;
     }
-    bool _e115 = local;
-    if (_e115) {
-        float _e118 = material.flake_roughness;
-        float r_f = metal::clamp(_e118, 0.05, 1.0);
-        metal::float3 _e122 = n;
-        float _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
-        float _e125 = weft_d_ggx(1.0, r_f);
+    bool _e109 = local;
+    if (_e109) {
+        float _e112 = material.flake_roughness;
+        float r_f = metal::clamp(_e112, 0.05, 1.0);
+        metal::float3 _e116 = n;
+        float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
+        float _e120 = weft_d_ggx(1.0, r_f);
         {
-            d_flakes = _e123;
+            d_flakes = _e118;
         }
-        metal::float4 _e129 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e129.xyz);
-        float _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        metal::float3 _e133 = color;
-        float _e134 = d_flakes;
-        metal::float3 _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = _e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1);
+        metal::float4 _e124 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e124.xyz);
+        float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
+        metal::float3 _e130 = color;
+        float _e131 = d_flakes;
+        metal::float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+        color = _e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l);
     }
-    metal::float3 _e142 = color;
-    metal::float3 radiance = metal::clamp(_e142, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e141 = color;
+    metal::float3 radiance = metal::clamp(_e141, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

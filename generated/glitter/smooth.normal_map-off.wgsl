@@ -30,6 +30,20 @@ struct WeftMaterial {
     density_variation: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -213,16 +227,29 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -276,64 +303,58 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e31.x;
     let _e35 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e35));
-    let _e44 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    let _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e41.v;
+    n = _e41.n;
+    let _e45 = n;
+    let _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     let _e48 = n;
-    let _e50 = weft_tangent_frame(_e48, in_1.world_tangent);
-    let _e51 = weft_main_light_direction();
-    let _e53 = n;
-    let _e54 = weft_safe_normalize((_e51 + _e44), _e53);
-    let _e55 = n;
-    let _e57 = weft_clamp_cos(dot(_e55, _e44));
-    let _e58 = n;
-    let n_dot_l_1 = saturate(dot(_e58, _e51));
-    let v_dot_h_1 = saturate(dot(_e44, _e54));
-    let _e63 = weft_main_light_radiance();
+    let _e49 = weft_main_light_geometry(_e48, v_2);
+    let _e50 = weft_main_light_radiance();
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e70 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, roughness_7);
-    let _e71 = weft_env_brdf_lut(_e57, roughness_7);
-    let _e72 = weft_env_brdf_from_lut(f0_2, _e71);
-    let kd = max((vec3(1f) - _e72), vec3(0f));
-    let _e79 = n;
-    let _e80 = weft_d_ggx_nh(_e79, _e54, roughness_7);
-    let _e82 = weft_f_schlick(f0_2, v_dot_h_1);
-    let specular = ((_e80 * _e70) * _e82);
-    let _e84 = weft_diffuse_lambert(diffuse_albedo);
-    let direct = ((((kd * _e84) + specular) * _e63) * n_dot_l_1);
-    let _e90 = n;
-    let _e92 = weft_prefiltered_radiance(reflect(-(_e44), _e90), roughness_7);
-    let _e95 = n;
-    let _e96 = weft_sh_irradiance(_e95);
-    let indirect = (((_e92 * _e72) * ao) + (((_e96 * ao) * kd) * diffuse_albedo));
+    let _e59 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, roughness_7);
+    let _e61 = weft_env_brdf_lut(_e49.n_dot_v, roughness_7);
+    let _e62 = weft_env_brdf_from_lut(f0_2, _e61);
+    let kd = max((vec3(1f) - _e62), vec3(0f));
+    let _e69 = n;
+    let _e71 = weft_d_ggx_nh(_e69, _e49.h, roughness_7);
+    let _e74 = weft_f_schlick(f0_2, _e49.v_dot_h);
+    let specular = ((_e71 * _e59) * _e74);
+    let _e76 = weft_diffuse_lambert(diffuse_albedo);
+    let direct = ((((kd * _e76) + specular) * _e50) * _e49.n_dot_l);
+    let _e83 = n;
+    let _e85 = weft_prefiltered_radiance(reflect(-(v_2), _e83), roughness_7);
+    let _e88 = n;
+    let _e89 = weft_sh_irradiance(_e88);
+    let indirect = (((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    let _e105 = material.flake_intensity;
-    let intensity = max(_e105, 0f);
+    let _e98 = material.flake_intensity;
+    let intensity = max(_e98, 0f);
     if (intensity > 0f) {
-        local = (n_dot_l_1 > 0f);
+        local = (_e49.n_dot_l > 0f);
     } else {
         local = false;
     }
-    let _e115 = local;
-    if _e115 {
-        let _e118 = material.flake_roughness;
-        let r_f = clamp(_e118, 0.05f, 1f);
-        let _e122 = n;
-        let _e123 = weft_d_ggx_nh(_e122, _e54, r_f);
-        let _e125 = weft_d_ggx(1f, r_f);
+    let _e109 = local;
+    if _e109 {
+        let _e112 = material.flake_roughness;
+        let r_f = clamp(_e112, 0.05f, 1f);
+        let _e116 = n;
+        let _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
+        let _e120 = weft_d_ggx(1f, r_f);
         {
-            d_flakes = _e123;
+            d_flakes = _e118;
         }
-        let _e129 = material.flake_color;
-        let flake_f0_ = saturate(_e129.xyz);
-        let _e132 = weft_v_smith_ggx_correlated(_e57, n_dot_l_1, r_f);
-        let _e133 = color;
-        let _e134 = d_flakes;
-        let _e137 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e133 + (((((intensity * _e134) * _e132) * _e137) * _e63) * n_dot_l_1));
+        let _e124 = material.flake_color;
+        let flake_f0_ = saturate(_e124.xyz);
+        let _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
+        let _e130 = color;
+        let _e131 = d_flakes;
+        let _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
-    let _e142 = color;
-    let radiance = clamp(_e142, vec3(0f), vec3(65504f));
+    let _e141 = color;
+    let radiance = clamp(_e141, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

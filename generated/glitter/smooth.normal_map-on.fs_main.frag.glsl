@@ -28,6 +28,18 @@ struct WeftMaterial {
     float twinkle;
     float density_variation;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -207,26 +219,46 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -256,75 +288,67 @@ void main() {
     float occlusion = _e31.x;
     float _e35 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e35), 0.0, 1.0);
-    vec3 _e44 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e41.v;
+    n = _e41.n;
     {
-        vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e50.xyz;
-        vec3 _e52 = n;
-        mat3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        float _e57 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e58 = weft_unpack_normal(texel_1, _e57);
-        vec3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e47.xyz;
+        vec3 _e49 = n;
+        float _e53 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_2, _e53);
+        n = _e54;
     }
-    vec3 _e60 = n;
-    mat3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    vec3 _e63 = weft_main_light_direction();
-    vec3 _e65 = n;
-    vec3 _e66 = weft_safe_normalize((_e63 + _e44), _e65);
-    vec3 _e67 = n;
-    float _e69 = weft_clamp_cos(dot(_e67, _e44));
-    vec3 _e70 = n;
-    float n_dot_l_1 = clamp(dot(_e70, _e63), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e44, _e66), 0.0, 1.0);
-    vec3 _e75 = weft_main_light_radiance();
+    vec3 _e55 = n;
+    mat3x3 _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    vec3 _e58 = n;
+    WeftLightGeometry _e59 = weft_main_light_geometry(_e58, v_3);
+    vec3 _e60 = weft_main_light_radiance();
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    vec2 _e83 = weft_env_brdf_lut(_e69, roughness_7);
-    vec3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    vec3 kd = max((vec3(1.0) - _e84), vec3(0.0));
-    vec3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    vec3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 specular = ((_e92 * _e82) * _e94);
-    vec3 _e96 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
-    vec3 _e102 = n;
-    vec3 _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
-    vec3 _e107 = n;
-    vec3 _e108 = weft_sh_irradiance(_e107);
-    vec3 indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    float _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    vec2 _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7);
+    vec3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    vec3 kd = max((vec3(1.0) - _e72), vec3(0.0));
+    vec3 _e79 = n;
+    float _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    vec3 _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    vec3 specular = ((_e81 * _e69) * _e84);
+    vec3 _e86 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
+    vec3 _e93 = n;
+    vec3 _e95 = weft_prefiltered_radiance(reflect(-(v_3), _e93), roughness_7);
+    vec3 _e98 = n;
+    vec3 _e99 = weft_sh_irradiance(_e98);
+    vec3 indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    float _e117 = _group_1_binding_0_fs.flake_intensity;
-    float intensity = max(_e117, 0.0);
+    float _e108 = _group_1_binding_0_fs.flake_intensity;
+    float intensity = max(_e108, 0.0);
     if ((intensity > 0.0)) {
-        local = (n_dot_l_1 > 0.0);
+        local = (_e59.n_dot_l > 0.0);
     } else {
         local = false;
     }
-    bool _e127 = local;
-    if (_e127) {
-        float _e130 = _group_1_binding_0_fs.flake_roughness;
-        float r_f = clamp(_e130, 0.05, 1.0);
-        vec3 _e134 = n;
-        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        float _e137 = weft_d_ggx(1.0, r_f);
+    bool _e119 = local;
+    if (_e119) {
+        float _e122 = _group_1_binding_0_fs.flake_roughness;
+        float r_f = clamp(_e122, 0.05, 1.0);
+        vec3 _e126 = n;
+        float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        float _e130 = weft_d_ggx(1.0, r_f);
         {
-            d_flakes = _e135;
+            d_flakes = _e128;
         }
-        vec4 _e141 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e141.xyz, vec3(0.0), vec3(1.0));
-        float _e144 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        vec3 _e145 = color;
-        float _e146 = d_flakes;
-        vec3 _e149 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e145 + (((((intensity * _e146) * _e144) * _e149) * _e75) * n_dot_l_1));
+        vec4 _e134 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e134.xyz, vec3(0.0), vec3(1.0));
+        float _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        vec3 _e140 = color;
+        float _e141 = d_flakes;
+        vec3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = (_e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l));
     }
-    vec3 _e154 = color;
-    vec3 radiance = clamp(_e154, vec3(0.0), vec3(65504.0));
+    vec3 _e151 = color;
+    vec3 radiance = clamp(_e151, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -39,6 +39,19 @@ struct WeftMaterial {
     float density_variation;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -255,27 +268,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_1 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_1.xy * strength, metal::max(v_1.z, 0.001));
+    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -284,6 +318,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -296,7 +342,7 @@ metal::float2 weft_transform_uv(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -311,7 +357,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -335,8 +381,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -357,7 +403,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     bool local = {};
@@ -379,74 +425,66 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e31.x;
     float _e35 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e35));
-    metal::float3 _e44 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e41.v;
+    n = _e41.n;
     {
-        metal::float4 _e50 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e50.xyz;
-        metal::float3 _e52 = n;
-        metal::float3x3 _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        float _e57 = material.normal_strength;
-        metal::float3 _e58 = weft_unpack_normal(texel_1, _e57);
-        metal::float3 _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        metal::float4 _e47 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e47.xyz;
+        metal::float3 _e49 = n;
+        float _e53 = material.normal_strength;
+        metal::float3 _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_2, _e53);
+        n = _e54;
     }
-    metal::float3 _e60 = n;
-    metal::float3x3 _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    metal::float3 _e63 = weft_main_light_direction(weft_frame);
-    metal::float3 _e65 = n;
-    metal::float3 _e66 = weft_safe_normalize(_e63 + _e44, _e65);
-    metal::float3 _e67 = n;
-    float _e69 = weft_clamp_cos(metal::dot(_e67, _e44));
-    metal::float3 _e70 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e70, _e63));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e44, _e66));
-    metal::float3 _e75 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e55 = n;
+    metal::float3x3 _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    metal::float3 _e58 = n;
+    WeftLightGeometry _e59 = weft_main_light_geometry(_e58, v_3, weft_frame);
+    metal::float3 _e60 = weft_main_light_radiance(weft_frame);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    float _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    metal::float2 _e83 = weft_env_brdf_lut(_e69, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e84, metal::float3(0.0));
-    metal::float3 _e91 = n;
-    float _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    metal::float3 _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 specular = (_e92 * _e82) * _e94;
-    metal::float3 _e96 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 direct = (((kd * _e96) + specular) * _e75) * n_dot_l_1;
-    metal::float3 _e102 = n;
-    metal::float3 _e104 = weft_prefiltered_radiance(metal::reflect(-(_e44), _e102), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e107 = n;
-    metal::float3 _e108 = weft_sh_irradiance(_e107, weft_frame);
-    metal::float3 indirect = ((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo);
+    float _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    metal::float2 _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e72, metal::float3(0.0));
+    metal::float3 _e79 = n;
+    float _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    metal::float3 _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    metal::float3 specular = (_e81 * _e69) * _e84;
+    metal::float3 _e86 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 direct = (((kd * _e86) + specular) * _e60) * _e59.n_dot_l;
+    metal::float3 _e93 = n;
+    metal::float3 _e95 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e93), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e98 = n;
+    metal::float3 _e99 = weft_sh_irradiance(_e98, weft_frame);
+    metal::float3 indirect = ((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo);
     color = direct + indirect;
-    float _e117 = material.flake_intensity;
-    float intensity = metal::max(_e117, 0.0);
+    float _e108 = material.flake_intensity;
+    float intensity = metal::max(_e108, 0.0);
     if (intensity > 0.0) {
-        local = n_dot_l_1 > 0.0;
+        local = _e59.n_dot_l > 0.0;
     } else {
         local = false;
     }
-    bool _e127 = local;
-    if (_e127) {
-        float _e130 = material.flake_roughness;
-        float r_f = metal::clamp(_e130, 0.05, 1.0);
-        metal::float3 _e134 = n;
-        float _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        float _e137 = weft_d_ggx(1.0, r_f);
+    bool _e119 = local;
+    if (_e119) {
+        float _e122 = material.flake_roughness;
+        float r_f = metal::clamp(_e122, 0.05, 1.0);
+        metal::float3 _e126 = n;
+        float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        float _e130 = weft_d_ggx(1.0, r_f);
         {
-            d_flakes = _e135;
+            d_flakes = _e128;
         }
-        metal::float4 _e141 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e141.xyz);
-        float _e144 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        metal::float3 _e145 = color;
-        float _e146 = d_flakes;
-        metal::float3 _e149 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = _e145 + (((((intensity * _e146) * _e144) * _e149) * _e75) * n_dot_l_1);
+        metal::float4 _e134 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e134.xyz);
+        float _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        metal::float3 _e140 = color;
+        float _e141 = d_flakes;
+        metal::float3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = _e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l);
     }
-    metal::float3 _e154 = color;
-    metal::float3 radiance = metal::clamp(_e154, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e151 = color;
+    metal::float3 radiance = metal::clamp(_e151, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     density_variation: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,26 +229,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -288,74 +322,66 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e31.x;
     let _e35 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e35));
-    let _e44 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e46 = weft_safe_normalize(in_1.world_normal, _e44);
-    n = _e46;
+    let _e41 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e41.v;
+    n = _e41.n;
     {
-        let _e50 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e50.xyz;
-        let _e52 = n;
-        let _e54 = weft_tangent_frame(_e52, in_1.world_tangent);
-        let _e57 = material.normal_strength;
-        let _e58 = weft_unpack_normal(texel_1, _e57);
-        let _e59 = weft_normal_from_tangent_space(_e54, _e58);
-        n = _e59;
+        let _e47 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e47.xyz;
+        let _e49 = n;
+        let _e53 = material.normal_strength;
+        let _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_2, _e53);
+        n = _e54;
     }
-    let _e60 = n;
-    let _e62 = weft_tangent_frame(_e60, in_1.world_tangent);
-    let _e63 = weft_main_light_direction();
-    let _e65 = n;
-    let _e66 = weft_safe_normalize((_e63 + _e44), _e65);
-    let _e67 = n;
-    let _e69 = weft_clamp_cos(dot(_e67, _e44));
-    let _e70 = n;
-    let n_dot_l_1 = saturate(dot(_e70, _e63));
-    let v_dot_h_1 = saturate(dot(_e44, _e66));
-    let _e75 = weft_main_light_radiance();
+    let _e55 = n;
+    let _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
+    let _e58 = n;
+    let _e59 = weft_main_light_geometry(_e58, v_3);
+    let _e60 = weft_main_light_radiance();
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e82 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, roughness_7);
-    let _e83 = weft_env_brdf_lut(_e69, roughness_7);
-    let _e84 = weft_env_brdf_from_lut(f0_2, _e83);
-    let kd = max((vec3(1f) - _e84), vec3(0f));
-    let _e91 = n;
-    let _e92 = weft_d_ggx_nh(_e91, _e66, roughness_7);
-    let _e94 = weft_f_schlick(f0_2, v_dot_h_1);
-    let specular = ((_e92 * _e82) * _e94);
-    let _e96 = weft_diffuse_lambert(diffuse_albedo);
-    let direct = ((((kd * _e96) + specular) * _e75) * n_dot_l_1);
-    let _e102 = n;
-    let _e104 = weft_prefiltered_radiance(reflect(-(_e44), _e102), roughness_7);
-    let _e107 = n;
-    let _e108 = weft_sh_irradiance(_e107);
-    let indirect = (((_e104 * _e84) * ao) + (((_e108 * ao) * kd) * diffuse_albedo));
+    let _e69 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, roughness_7);
+    let _e71 = weft_env_brdf_lut(_e59.n_dot_v, roughness_7);
+    let _e72 = weft_env_brdf_from_lut(f0_2, _e71);
+    let kd = max((vec3(1f) - _e72), vec3(0f));
+    let _e79 = n;
+    let _e81 = weft_d_ggx_nh(_e79, _e59.h, roughness_7);
+    let _e84 = weft_f_schlick(f0_2, _e59.v_dot_h);
+    let specular = ((_e81 * _e69) * _e84);
+    let _e86 = weft_diffuse_lambert(diffuse_albedo);
+    let direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
+    let _e93 = n;
+    let _e95 = weft_prefiltered_radiance(reflect(-(v_3), _e93), roughness_7);
+    let _e98 = n;
+    let _e99 = weft_sh_irradiance(_e98);
+    let indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
     color = (direct + indirect);
-    let _e117 = material.flake_intensity;
-    let intensity = max(_e117, 0f);
+    let _e108 = material.flake_intensity;
+    let intensity = max(_e108, 0f);
     if (intensity > 0f) {
-        local = (n_dot_l_1 > 0f);
+        local = (_e59.n_dot_l > 0f);
     } else {
         local = false;
     }
-    let _e127 = local;
-    if _e127 {
-        let _e130 = material.flake_roughness;
-        let r_f = clamp(_e130, 0.05f, 1f);
-        let _e134 = n;
-        let _e135 = weft_d_ggx_nh(_e134, _e66, r_f);
-        let _e137 = weft_d_ggx(1f, r_f);
+    let _e119 = local;
+    if _e119 {
+        let _e122 = material.flake_roughness;
+        let r_f = clamp(_e122, 0.05f, 1f);
+        let _e126 = n;
+        let _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
+        let _e130 = weft_d_ggx(1f, r_f);
         {
-            d_flakes = _e135;
+            d_flakes = _e128;
         }
-        let _e141 = material.flake_color;
-        let flake_f0_ = saturate(_e141.xyz);
-        let _e144 = weft_v_smith_ggx_correlated(_e69, n_dot_l_1, r_f);
-        let _e145 = color;
-        let _e146 = d_flakes;
-        let _e149 = weft_f_schlick(flake_f0_, v_dot_h_1);
-        color = (_e145 + (((((intensity * _e146) * _e144) * _e149) * _e75) * n_dot_l_1));
+        let _e134 = material.flake_color;
+        let flake_f0_ = saturate(_e134.xyz);
+        let _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
+        let _e140 = color;
+        let _e141 = d_flakes;
+        let _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+        color = (_e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l));
     }
-    let _e154 = color;
-    let radiance = clamp(_e154, vec3(0f), vec3(65504f));
+    let _e151 = color;
+    let radiance = clamp(_e151, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -52,6 +52,13 @@ struct WeftMaterial {
     int _end_pad_2;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -138,16 +145,16 @@ Texture2D<float4> jitter_map : register(t5, space1);
 Texture2D<float4> uv_rotate_mask : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -224,6 +231,21 @@ float3 weft_sh_irradiance(float3 n_1)
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -644,7 +666,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -655,38 +677,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 base_rgba = (_e8 * _e11);
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
-    const float3 _e22 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e24 = weft_safe_normalize(in_1.world_normal, _e22);
-    const float3x3 _e26 = weft_tangent_frame(_e24, in_1.world_tangent);
-    const float3 _e28 = hair_strand(_e26, in_1.uv0_);
-    const float _e30 = hair_jitter(in_1.uv0_);
-    const float3 _e31 = weft_main_light_direction();
-    const float3 _e32 = weft_main_light_radiance();
-    const float3 _e33 = weft_sh_irradiance(_e24);
-    float n_dot_l = dot(_e24, _e31);
+    const WeftSurface _e19 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e19.v;
+    float3 n_3 = _e19.n;
+    const float3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
+    const float3 _e25 = hair_strand(_e23, in_1.uv0_);
+    const float _e27 = hair_jitter(in_1.uv0_);
+    const float3 _e28 = weft_main_light_direction();
+    const float3 _e29 = weft_main_light_radiance();
+    const float3 _e30 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e28);
     {
-        const float3 _e38 = weft_safe_normalize((_e28 + (_e30 * _e24)), _e28);
-        float _e41 = material.azimuthal_roughness;
-        const float3 _e42 = weft_hair_sigma_a_from_color(base, _e41);
-        float _e45 = material.ior;
-        float _e48 = material.roughness;
-        float _e51 = material.azimuthal_roughness;
-        float _e54 = material.scale_angle;
-        const WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
-        const WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
+        const float3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
+        float _e38 = material.azimuthal_roughness;
+        const float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
+        float _e42 = material.ior;
+        float _e45 = material.roughness;
+        float _e48 = material.azimuthal_roughness;
+        float _e51 = material.scale_angle;
+        const WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
+        const WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
         {
-            const WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_FAST_CELLS);
-            lobes = _e59;
+            const WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_FAST_CELLS);
+            lobes = _e56;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e66 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e66));
-        float3 _e70 = lobes.s;
-        float3 direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e79 = lobes.back;
-        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
+        float3 _e63 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e63));
+        float3 _e67 = lobes.s;
+        float3 direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e76 = lobes.back;
+        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
     }
-    float3 _e83 = color;
-    float3 radiance = clamp(_e83, (0.0).xxx, (65504.0).xxx);
+    float3 _e80 = color;
+    float3 radiance = clamp(_e80, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

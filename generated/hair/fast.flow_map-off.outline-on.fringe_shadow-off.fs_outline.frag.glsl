@@ -47,6 +47,10 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;

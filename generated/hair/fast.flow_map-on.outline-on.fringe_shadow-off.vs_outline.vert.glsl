@@ -47,6 +47,10 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -171,6 +175,12 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {

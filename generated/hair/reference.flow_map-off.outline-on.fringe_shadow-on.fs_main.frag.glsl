@@ -53,6 +53,10 @@ struct WeftFringeShadowVertex {
 struct WeftFringeShadowVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -184,6 +188,12 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -542,39 +552,40 @@ void main() {
     vec4 base_rgba = (_e8 * _e11);
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
-    vec3 _e22 = weft_view_direction(in_3.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e24 = weft_safe_normalize(in_3.world_normal, _e22);
-    mat3x3 _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
-    vec3 _e28 = hair_strand(_e26, in_3.uv0_);
-    float _e30 = hair_jitter(in_3.uv0_);
-    vec3 _e31 = weft_main_light_direction();
-    vec3 _e32 = weft_main_light_radiance();
-    vec3 _e33 = weft_sh_irradiance(_e24);
-    float n_dot_l = dot(_e24, _e31);
+    WeftSurface _e19 = weft_surface(in_3.world_position, in_3.world_normal);
+    vec3 v_2 = _e19.v;
+    vec3 n_3 = _e19.n;
+    mat3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
+    vec3 _e25 = hair_strand(_e23, in_3.uv0_);
+    float _e27 = hair_jitter(in_3.uv0_);
+    vec3 _e28 = weft_main_light_direction();
+    vec3 _e29 = weft_main_light_radiance();
+    vec3 _e30 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e28);
     {
-        vec3 _e38 = weft_safe_normalize((_e28 + (_e30 * _e24)), _e28);
-        float _e41 = _group_1_binding_0_fs.azimuthal_roughness;
-        vec3 _e42 = weft_hair_sigma_a_from_color(base, _e41);
-        float _e45 = _group_1_binding_0_fs.ior;
-        float _e48 = _group_1_binding_0_fs.roughness;
-        float _e51 = _group_1_binding_0_fs.azimuthal_roughness;
-        float _e54 = _group_1_binding_0_fs.scale_angle;
-        WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
-        WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
+        vec3 _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
+        float _e38 = _group_1_binding_0_fs.azimuthal_roughness;
+        vec3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
+        float _e42 = _group_1_binding_0_fs.ior;
+        float _e45 = _group_1_binding_0_fs.roughness;
+        float _e48 = _group_1_binding_0_fs.azimuthal_roughness;
+        float _e51 = _group_1_binding_0_fs.scale_angle;
+        WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
+        WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
         {
-            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
-            lobes = _e59;
+            WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
+            lobes = _e56;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        vec3 _e66 = lobes.back;
-        vec3 multiple = (base * (vec3(1.0) - _e66));
-        vec3 _e70 = lobes.s;
-        vec3 direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
-        vec3 _e79 = lobes.back;
-        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
+        vec3 _e63 = lobes.back;
+        vec3 multiple = (base * (vec3(1.0) - _e63));
+        vec3 _e67 = lobes.s;
+        vec3 direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * clamp(n_dot_l, 0.0, 1.0))));
+        vec3 _e76 = lobes.back;
+        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
     }
-    vec3 _e83 = color;
-    vec3 radiance = clamp(_e83, vec3(0.0), vec3(65504.0));
+    vec3 _e80 = color;
+    vec3 radiance = clamp(_e80, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

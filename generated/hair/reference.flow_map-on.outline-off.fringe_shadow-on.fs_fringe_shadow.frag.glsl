@@ -46,6 +46,10 @@ struct WeftFringeShadowVertex {
 struct WeftFringeShadowVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;

@@ -66,6 +66,10 @@ struct WeftFringeShadowVertex {
 struct WeftFringeShadowVaryings {
     metal::float4 clip_position;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -205,6 +209,16 @@ metal::float3 weft_sh_irradiance(
     e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -819,8 +833,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
 };
@@ -838,7 +852,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(3)]]
 ) {
-    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_1, varyings_5.world_normal, varyings_5.world_tangent, varyings_5.uv0_2 };
+    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_2, varyings_5.world_normal_1, varyings_5.world_tangent, varyings_5.uv0_2 };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -848,38 +862,39 @@ fragment fs_mainOutput fs_main(
     metal::float4 base_rgba = _e8 * _e11;
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
-    metal::float3 _e22 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e24 = weft_safe_normalize(in_3.world_normal, _e22);
-    metal::float3x3 _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
-    metal::float3 _e28 = hair_strand(_e26, in_3.uv0_, material, material_sampler, flow_map);
-    float _e30 = hair_jitter(in_3.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e31 = weft_main_light_direction(weft_frame);
-    metal::float3 _e32 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e33 = weft_sh_irradiance(_e24, weft_frame);
-    float n_dot_l = metal::dot(_e24, _e31);
+    WeftSurface _e19 = weft_surface(in_3.world_position, in_3.world_normal, weft_frame);
+    metal::float3 v_2 = _e19.v;
+    metal::float3 n_3 = _e19.n;
+    metal::float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
+    metal::float3 _e25 = hair_strand(_e23, in_3.uv0_, material, material_sampler, flow_map);
+    float _e27 = hair_jitter(in_3.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e28 = weft_main_light_direction(weft_frame);
+    metal::float3 _e29 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e30 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e28);
     {
-        metal::float3 _e38 = weft_safe_normalize(_e28 + (_e30 * _e24), _e28);
-        float _e41 = material.azimuthal_roughness;
-        metal::float3 _e42 = weft_hair_sigma_a_from_color(base, _e41);
-        float _e45 = material.ior;
-        float _e48 = material.roughness;
-        float _e51 = material.azimuthal_roughness;
-        float _e54 = material.scale_angle;
-        WeftHair _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
-        WeftHairAngles _e56 = weft_hair_angles(_e38, _e22, _e31);
+        metal::float3 _e35 = weft_safe_normalize(_e25 + (_e27 * n_3), _e25);
+        float _e38 = material.azimuthal_roughness;
+        metal::float3 _e39 = weft_hair_sigma_a_from_color(base, _e38);
+        float _e42 = material.ior;
+        float _e45 = material.roughness;
+        float _e48 = material.azimuthal_roughness;
+        float _e51 = material.scale_angle;
+        WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
+        WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
         {
-            WeftHairLobes _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
-            lobes = _e59;
+            WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
+            lobes = _e56;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e66 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e66);
-        metal::float3 _e70 = lobes.s;
-        metal::float3 direct = (_e70 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e79 = lobes.back;
-        color = (direct * _e32) + (_e33 * (multiple + _e79));
+        metal::float3 _e63 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e63);
+        metal::float3 _e67 = lobes.s;
+        metal::float3 direct = (_e67 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e76 = lobes.back;
+        color = (direct * _e29) + (_e30 * (multiple + _e76));
     }
-    metal::float3 _e83 = color;
-    metal::float3 radiance = metal::clamp(_e83, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e80 = color;
+    metal::float3 radiance = metal::clamp(_e80, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

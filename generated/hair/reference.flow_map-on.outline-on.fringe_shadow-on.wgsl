@@ -59,6 +59,11 @@ struct WeftFringeShadowVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -198,6 +203,12 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
+}
+
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -673,38 +684,39 @@ fn fs_main(in_3: WeftVaryings) -> @location(0) vec4<f32> {
     let base_rgba = (_e8 * _e11);
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
-    let _e22 = weft_view_direction(in_3.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e24 = weft_safe_normalize(in_3.world_normal, _e22);
-    let _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
-    let _e28 = hair_strand(_e26, in_3.uv0_);
-    let _e30 = hair_jitter(in_3.uv0_);
-    let _e31 = weft_main_light_direction();
-    let _e32 = weft_main_light_radiance();
-    let _e33 = weft_sh_irradiance(_e24);
-    let n_dot_l = dot(_e24, _e31);
+    let _e19 = weft_surface(in_3.world_position, in_3.world_normal);
+    let v_2 = _e19.v;
+    let n_3 = _e19.n;
+    let _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
+    let _e25 = hair_strand(_e23, in_3.uv0_);
+    let _e27 = hair_jitter(in_3.uv0_);
+    let _e28 = weft_main_light_direction();
+    let _e29 = weft_main_light_radiance();
+    let _e30 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e28);
     {
-        let _e38 = weft_safe_normalize((_e28 + (_e30 * _e24)), _e28);
-        let _e41 = material.azimuthal_roughness;
-        let _e42 = weft_hair_sigma_a_from_color(base, _e41);
-        let _e45 = material.ior;
-        let _e48 = material.roughness;
-        let _e51 = material.azimuthal_roughness;
-        let _e54 = material.scale_angle;
-        let _e55 = weft_hair_params(_e42, _e45, _e48, _e51, _e54);
-        let _e56 = weft_hair_angles(_e38, _e22, _e31);
+        let _e35 = weft_safe_normalize((_e25 + (_e27 * n_3)), _e25);
+        let _e38 = material.azimuthal_roughness;
+        let _e39 = weft_hair_sigma_a_from_color(base, _e38);
+        let _e42 = material.ior;
+        let _e45 = material.roughness;
+        let _e48 = material.azimuthal_roughness;
+        let _e51 = material.scale_angle;
+        let _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
+        let _e53 = weft_hair_angles(_e35, v_2, _e28);
         {
-            let _e59 = weft_hair_mean(_e55, _e56, HAIR_REFERENCE_CELLS);
-            lobes = _e59;
+            let _e56 = weft_hair_mean(_e52, _e53, HAIR_REFERENCE_CELLS);
+            lobes = _e56;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e66 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e66));
-        let _e70 = lobes.s;
-        let direct = ((_e70 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e79 = lobes.back;
-        color = ((direct * _e32) + (_e33 * (multiple + _e79)));
+        let _e63 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e63));
+        let _e67 = lobes.s;
+        let direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e76 = lobes.back;
+        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
     }
-    let _e83 = color;
-    let radiance = clamp(_e83, vec3(0f), vec3(65504f));
+    let _e80 = color;
+    let radiance = clamp(_e80, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

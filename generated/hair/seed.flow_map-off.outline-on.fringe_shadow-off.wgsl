@@ -51,6 +51,11 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -154,6 +159,12 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
+}
+
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -312,35 +323,36 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let base_rgba = (_e8 * _e11);
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
-    let _e22 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e24 = weft_safe_normalize(in_2.world_normal, _e22);
-    let _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
-    let _e28 = hair_strand(_e26, in_2.uv0_);
-    let _e30 = hair_jitter(in_2.uv0_);
-    let _e31 = weft_main_light_direction();
-    let _e32 = weft_main_light_radiance();
-    let _e33 = weft_sh_irradiance(_e24);
-    let n_dot_l = dot(_e24, _e31);
+    let _e19 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_1 = _e19.v;
+    let n_3 = _e19.n;
+    let _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
+    let _e25 = hair_strand(_e23, in_2.uv0_);
+    let _e27 = hair_jitter(in_2.uv0_);
+    let _e28 = weft_main_light_direction();
+    let _e29 = weft_main_light_radiance();
+    let _e30 = weft_sh_irradiance(n_3);
+    let n_dot_l = dot(n_3, _e28);
     {
-        let _e37 = weft_safe_normalize((_e31 + _e22), _e24);
-        let _e40 = material.primary_shift;
-        let _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
-        let _e47 = material.secondary_shift;
-        let _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
-        let _e54 = material.primary_color;
-        let _e58 = material.primary_intensity;
-        let _e61 = material.primary_exponent;
-        let _e62 = hair_kajiya_kay(_e44, _e37, _e61);
-        let primary = (_e54.xyz * (_e58 * _e62));
-        let _e67 = material.secondary_color;
-        let _e71 = material.secondary_intensity;
-        let _e74 = material.secondary_exponent;
-        let _e75 = hair_kajiya_kay(_e51, _e37, _e74);
-        let secondary = (_e67.xyz * (_e71 * _e75));
-        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * saturate(n_dot_l));
-        color = (direct + (_e33 * base));
+        let _e34 = weft_safe_normalize((_e28 + v_1), n_3);
+        let _e37 = material.primary_shift;
+        let _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
+        let _e44 = material.secondary_shift;
+        let _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
+        let _e51 = material.primary_color;
+        let _e55 = material.primary_intensity;
+        let _e58 = material.primary_exponent;
+        let _e59 = hair_kajiya_kay(_e41, _e34, _e58);
+        let primary = (_e51.xyz * (_e55 * _e59));
+        let _e64 = material.secondary_color;
+        let _e68 = material.secondary_intensity;
+        let _e71 = material.secondary_exponent;
+        let _e72 = hair_kajiya_kay(_e48, _e34, _e71);
+        let secondary = (_e64.xyz * (_e68 * _e72));
+        let direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * saturate(n_dot_l));
+        color = (direct + (_e30 * base));
     }
-    let _e87 = color;
-    let radiance = clamp(_e87, vec3(0f), vec3(65504f));
+    let _e84 = color;
+    let radiance = clamp(_e84, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -69,6 +69,13 @@ struct WeftFringeShadowVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -128,16 +135,16 @@ struct VertexOutput_vs_fringe_shadow {
 };
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_2 : LOC3;
     float4 clip_position_2 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_3 : LOC3;
     float4 clip_position_3 : SV_Position;
@@ -201,6 +208,21 @@ float3 weft_sh_irradiance(float3 n_1)
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -401,7 +423,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_2)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_3 = { fragmentinput_fs_main.clip_position_3, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
+    WeftVaryings in_3 = { fragmentinput_fs_main.clip_position_3, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_3 };
     float3 color = (float3)0;
     WeftHairLobes lobes = (WeftHairLobes)0;
 
@@ -412,35 +434,36 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 base_rgba = (_e8 * _e11);
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
-    const float3 _e22 = weft_view_direction(in_3.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e24 = weft_safe_normalize(in_3.world_normal, _e22);
-    const float3x3 _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
-    const float3 _e28 = hair_strand(_e26, in_3.uv0_);
-    const float _e30 = hair_jitter(in_3.uv0_);
-    const float3 _e31 = weft_main_light_direction();
-    const float3 _e32 = weft_main_light_radiance();
-    const float3 _e33 = weft_sh_irradiance(_e24);
-    float n_dot_l = dot(_e24, _e31);
+    const WeftSurface _e19 = weft_surface(in_3.world_position, in_3.world_normal);
+    float3 v_1 = _e19.v;
+    float3 n_3 = _e19.n;
+    const float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
+    const float3 _e25 = hair_strand(_e23, in_3.uv0_);
+    const float _e27 = hair_jitter(in_3.uv0_);
+    const float3 _e28 = weft_main_light_direction();
+    const float3 _e29 = weft_main_light_radiance();
+    const float3 _e30 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e28);
     {
-        const float3 _e37 = weft_safe_normalize((_e31 + _e22), _e24);
-        float _e40 = material.primary_shift;
-        const float3 _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
-        float _e47 = material.secondary_shift;
-        const float3 _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
-        float4 _e54 = material.primary_color;
-        float _e58 = material.primary_intensity;
-        float _e61 = material.primary_exponent;
-        const float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
-        float3 primary = (_e54.xyz * (_e58 * _e62));
-        float4 _e67 = material.secondary_color;
-        float _e71 = material.secondary_intensity;
-        float _e74 = material.secondary_exponent;
-        const float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
-        float3 secondary = (_e67.xyz * (_e71 * _e75));
-        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * saturate(n_dot_l));
-        color = (direct + (_e33 * base));
+        const float3 _e34 = weft_safe_normalize((_e28 + v_1), n_3);
+        float _e37 = material.primary_shift;
+        const float3 _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
+        float _e44 = material.secondary_shift;
+        const float3 _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
+        float4 _e51 = material.primary_color;
+        float _e55 = material.primary_intensity;
+        float _e58 = material.primary_exponent;
+        const float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
+        float3 primary = (_e51.xyz * (_e55 * _e59));
+        float4 _e64 = material.secondary_color;
+        float _e68 = material.secondary_intensity;
+        float _e71 = material.secondary_exponent;
+        const float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
+        float3 secondary = (_e64.xyz * (_e68 * _e72));
+        float3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * saturate(n_dot_l));
+        color = (direct + (_e30 * base));
     }
-    float3 _e87 = color;
-    float3 radiance = clamp(_e87, (0.0).xxx, (65504.0).xxx);
+    float3 _e84 = color;
+    float3 radiance = clamp(_e84, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -66,6 +66,10 @@ struct WeftFringeShadowVertex {
 struct WeftFringeShadowVaryings {
     metal::float4 clip_position;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -168,6 +172,16 @@ metal::float3 weft_sh_irradiance(
     e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -431,8 +445,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_2 [[user(loc3), center_perspective]];
 };
@@ -449,7 +463,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> jitter_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> uv_rotate_mask [[texture(2)]]
 ) {
-    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_1, varyings_5.world_normal, varyings_5.world_tangent, varyings_5.uv0_2 };
+    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_2, varyings_5.world_normal_1, varyings_5.world_tangent, varyings_5.uv0_2 };
     metal::float3 color = {};
     WeftHairLobes lobes = {};
     metal::float4 _e4 = material.base_map_st;
@@ -459,35 +473,36 @@ fragment fs_mainOutput fs_main(
     metal::float4 base_rgba = _e8 * _e11;
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
-    metal::float3 _e22 = weft_view_direction(in_3.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e24 = weft_safe_normalize(in_3.world_normal, _e22);
-    metal::float3x3 _e26 = weft_tangent_frame(_e24, in_3.world_tangent);
-    metal::float3 _e28 = hair_strand(_e26, in_3.uv0_, material);
-    float _e30 = hair_jitter(in_3.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
-    metal::float3 _e31 = weft_main_light_direction(weft_frame);
-    metal::float3 _e32 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e33 = weft_sh_irradiance(_e24, weft_frame);
-    float n_dot_l = metal::dot(_e24, _e31);
+    WeftSurface _e19 = weft_surface(in_3.world_position, in_3.world_normal, weft_frame);
+    metal::float3 v_1 = _e19.v;
+    metal::float3 n_3 = _e19.n;
+    metal::float3x3 _e23 = weft_tangent_frame(n_3, in_3.world_tangent);
+    metal::float3 _e25 = hair_strand(_e23, in_3.uv0_, material);
+    float _e27 = hair_jitter(in_3.uv0_, material, material_sampler, jitter_map, uv_rotate_mask);
+    metal::float3 _e28 = weft_main_light_direction(weft_frame);
+    metal::float3 _e29 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e30 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e28);
     {
-        metal::float3 _e37 = weft_safe_normalize(_e31 + _e22, _e24);
-        float _e40 = material.primary_shift;
-        metal::float3 _e44 = weft_safe_normalize(_e28 + ((_e40 + _e30) * _e24), _e28);
-        float _e47 = material.secondary_shift;
-        metal::float3 _e51 = weft_safe_normalize(_e28 + ((_e47 + _e30) * _e24), _e28);
-        metal::float4 _e54 = material.primary_color;
-        float _e58 = material.primary_intensity;
-        float _e61 = material.primary_exponent;
-        float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
-        metal::float3 primary = _e54.xyz * (_e58 * _e62);
-        metal::float4 _e67 = material.secondary_color;
-        float _e71 = material.secondary_intensity;
-        float _e74 = material.secondary_exponent;
-        float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
-        metal::float3 secondary = _e67.xyz * (_e71 * _e75);
-        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * metal::saturate(n_dot_l);
-        color = direct + (_e33 * base);
+        metal::float3 _e34 = weft_safe_normalize(_e28 + v_1, n_3);
+        float _e37 = material.primary_shift;
+        metal::float3 _e41 = weft_safe_normalize(_e25 + ((_e37 + _e27) * n_3), _e25);
+        float _e44 = material.secondary_shift;
+        metal::float3 _e48 = weft_safe_normalize(_e25 + ((_e44 + _e27) * n_3), _e25);
+        metal::float4 _e51 = material.primary_color;
+        float _e55 = material.primary_intensity;
+        float _e58 = material.primary_exponent;
+        float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
+        metal::float3 primary = _e51.xyz * (_e55 * _e59);
+        metal::float4 _e64 = material.secondary_color;
+        float _e68 = material.secondary_intensity;
+        float _e71 = material.secondary_exponent;
+        float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
+        metal::float3 secondary = _e64.xyz * (_e68 * _e72);
+        metal::float3 direct = ((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * metal::saturate(n_dot_l);
+        color = direct + (_e30 * base);
     }
-    metal::float3 _e87 = color;
-    metal::float3 radiance = metal::clamp(_e87, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e84 = color;
+    metal::float3 radiance = metal::clamp(_e84, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -46,6 +46,10 @@ struct WeftFringeShadowVertex {
 struct WeftFringeShadowVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -150,6 +154,12 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 t_in = tangent.xyz;
     vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -240,36 +250,37 @@ void main() {
     vec4 base_rgba = (_e8 * _e11);
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
     float alpha = clamp(base_rgba.w, 0.0, 1.0);
-    vec3 _e22 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e24 = weft_safe_normalize(in_2.world_normal, _e22);
-    mat3x3 _e26 = weft_tangent_frame(_e24, in_2.world_tangent);
-    vec3 _e28 = hair_strand(_e26, in_2.uv0_);
-    float _e30 = hair_jitter(in_2.uv0_);
-    vec3 _e31 = weft_main_light_direction();
-    vec3 _e32 = weft_main_light_radiance();
-    vec3 _e33 = weft_sh_irradiance(_e24);
-    float n_dot_l = dot(_e24, _e31);
+    WeftSurface _e19 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_1 = _e19.v;
+    vec3 n_3 = _e19.n;
+    mat3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
+    vec3 _e25 = hair_strand(_e23, in_2.uv0_);
+    float _e27 = hair_jitter(in_2.uv0_);
+    vec3 _e28 = weft_main_light_direction();
+    vec3 _e29 = weft_main_light_radiance();
+    vec3 _e30 = weft_sh_irradiance(n_3);
+    float n_dot_l = dot(n_3, _e28);
     {
-        vec3 _e37 = weft_safe_normalize((_e31 + _e22), _e24);
-        float _e40 = _group_1_binding_0_fs.primary_shift;
-        vec3 _e44 = weft_safe_normalize((_e28 + ((_e40 + _e30) * _e24)), _e28);
-        float _e47 = _group_1_binding_0_fs.secondary_shift;
-        vec3 _e51 = weft_safe_normalize((_e28 + ((_e47 + _e30) * _e24)), _e28);
-        vec4 _e54 = _group_1_binding_0_fs.primary_color;
-        float _e58 = _group_1_binding_0_fs.primary_intensity;
-        float _e61 = _group_1_binding_0_fs.primary_exponent;
-        float _e62 = hair_kajiya_kay(_e44, _e37, _e61);
-        vec3 primary = (_e54.xyz * (_e58 * _e62));
-        vec4 _e67 = _group_1_binding_0_fs.secondary_color;
-        float _e71 = _group_1_binding_0_fs.secondary_intensity;
-        float _e74 = _group_1_binding_0_fs.secondary_exponent;
-        float _e75 = hair_kajiya_kay(_e51, _e37, _e74);
-        vec3 secondary = (_e67.xyz * (_e71 * _e75));
-        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e32) * clamp(n_dot_l, 0.0, 1.0));
-        color = (direct + (_e33 * base));
+        vec3 _e34 = weft_safe_normalize((_e28 + v_1), n_3);
+        float _e37 = _group_1_binding_0_fs.primary_shift;
+        vec3 _e41 = weft_safe_normalize((_e25 + ((_e37 + _e27) * n_3)), _e25);
+        float _e44 = _group_1_binding_0_fs.secondary_shift;
+        vec3 _e48 = weft_safe_normalize((_e25 + ((_e44 + _e27) * n_3)), _e25);
+        vec4 _e51 = _group_1_binding_0_fs.primary_color;
+        float _e55 = _group_1_binding_0_fs.primary_intensity;
+        float _e58 = _group_1_binding_0_fs.primary_exponent;
+        float _e59 = hair_kajiya_kay(_e41, _e34, _e58);
+        vec3 primary = (_e51.xyz * (_e55 * _e59));
+        vec4 _e64 = _group_1_binding_0_fs.secondary_color;
+        float _e68 = _group_1_binding_0_fs.secondary_intensity;
+        float _e71 = _group_1_binding_0_fs.secondary_exponent;
+        float _e72 = hair_kajiya_kay(_e48, _e34, _e71);
+        vec3 secondary = (_e64.xyz * (_e68 * _e72));
+        vec3 direct = (((((base + primary) + secondary) * WEFT_INV_PI) * _e29) * clamp(n_dot_l, 0.0, 1.0));
+        color = (direct + (_e30 * base));
     }
-    vec3 _e87 = color;
-    vec3 radiance = clamp(_e87, vec3(0.0), vec3(65504.0));
+    vec3 _e84 = color;
+    vec3 radiance = clamp(_e84, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -122,16 +140,16 @@ Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> offset_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -270,6 +288,41 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
     float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
     return _e8.xy;
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -461,7 +514,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -491,73 +544,66 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    float3 _e66 = n;
-    float n_dot_l_1 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h = saturate(dot(_e69, _e62));
-    float v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
+    float3 _e56 = n;
+    const WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
-    float3 _e81 = surface_base;
-    float3 f0_4 = lerp((0.04).xxx, _e81, metallic);
-    float3 _e83 = surface_base;
-    float3 diffuse_albedo = (_e83 * (1.0 - metallic));
-    const float2 _e87 = weft_env_brdf_lut(_e65, roughness_6);
-    const float3 _e88 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e88;
-    const float3 _e90 = weft_env_brdf_from_lut(f0_4, _e87);
-    e_spec = _e90;
+    float3 _e66 = surface_base;
+    float3 f0_4 = lerp((0.04).xxx, _e66, metallic);
+    float3 _e68 = surface_base;
+    float3 diffuse_albedo = (_e68 * (1.0 - metallic));
+    const float2 _e73 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    const float3 _e75 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e75;
+    const float3 _e77 = weft_env_brdf_from_lut(f0_4, _e73);
+    e_spec = _e77;
     {
-        float _e94 = material.thickness_min;
-        float _e97 = material.thickness_max;
-        float d1_1 = lerp(_e94, _e97, offsets.x);
-        float _e102 = material.thickness_min;
-        float _e105 = material.thickness_max;
-        float d2_1 = lerp(_e102, _e105, offsets.y);
-        float _e110 = material.film_strength;
-        float strength = saturate(_e110);
-        light_cos = v_dot_h_1;
+        float _e81 = material.thickness_min;
+        float _e84 = material.thickness_max;
+        float d1_1 = lerp(_e81, _e84, offsets.x);
+        float _e89 = material.thickness_min;
+        float _e92 = material.thickness_max;
+        float d2_1 = lerp(_e89, _e92, offsets.y);
+        float _e97 = material.film_strength;
+        float strength = saturate(_e97);
+        light_cos = _e57.v_dot_h;
         {
-            float _e115 = film_cos;
-            const float3 _e116 = laser_film_fast(_e115, d1_1, d2_1, f0_4);
-            film_view = _e116;
-            float _e117 = light_cos;
-            const float3 _e118 = laser_film_fast(_e117, d1_1, d2_1, f0_4);
-            film_light = _e118;
+            float _e103 = film_cos;
+            const float3 _e104 = laser_film_fast(_e103, d1_1, d2_1, f0_4);
+            film_view = _e104;
+            float _e105 = light_cos;
+            const float3 _e106 = laser_film_fast(_e105, d1_1, d2_1, f0_4);
+            film_light = _e106;
         }
-        float3 _e119 = f_light;
-        float3 _e120 = film_light;
-        f_light = lerp(_e119, _e120, strength);
-        float3 _e122 = e_spec;
-        float3 _e123 = film_view;
-        e_spec = lerp(_e122, (_e123 * (_e87.x + _e87.y)), strength);
+        float3 _e107 = f_light;
+        float3 _e108 = film_light;
+        f_light = lerp(_e107, _e108, strength);
+        float3 _e110 = e_spec;
+        float3 _e111 = film_view;
+        e_spec = lerp(_e110, (_e111 * (_e73.x + _e73.y)), strength);
     }
-    float3 _e131 = e_spec;
-    float3 kd = max(((1.0).xxx - _e131), (0.0).xxx);
-    const float _e136 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    float3 _e137 = n;
-    const float _e138 = weft_d_ggx_nh(_e137, _e62, roughness_6);
-    float3 _e140 = f_light;
-    float3 specular = ((_e138 * _e136) * _e140);
-    const float3 _e142 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e142);
-    const float3 _e145 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e145) * n_dot_l_1);
-    float3 _e149 = n;
-    const float3 _e151 = weft_prefiltered_radiance(reflect(-(_e55), _e149), roughness_6);
-    float3 _e152 = e_spec;
-    float3 indirect_specular = ((_e151 * _e152) * ao);
-    float3 _e155 = n;
-    const float3 _e156 = weft_sh_irradiance(_e155);
-    float3 indirect_diffuse = (((_e156 * ao) * kd) * diffuse_albedo);
+    float3 _e119 = e_spec;
+    float3 kd = max(((1.0).xxx - _e119), (0.0).xxx);
+    const float _e126 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    float3 _e127 = n;
+    const float _e129 = weft_d_ggx_nh(_e127, _e57.h, roughness_6);
+    float3 _e131 = f_light;
+    float3 specular = ((_e129 * _e126) * _e131);
+    const float3 _e133 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e133);
+    const float3 _e136 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e136) * _e57.n_dot_l);
+    float3 _e141 = n;
+    const float3 _e143 = weft_prefiltered_radiance(reflect(-(v_2), _e141), roughness_6);
+    float3 _e144 = e_spec;
+    float3 indirect_specular = ((_e143 * _e144) * ao);
+    float3 _e147 = n;
+    const float3 _e148 = weft_sh_irradiance(_e147);
+    float3 indirect_diffuse = (((_e148 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

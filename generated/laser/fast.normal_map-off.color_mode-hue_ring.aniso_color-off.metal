@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -266,6 +279,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -470,8 +504,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -492,7 +526,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -521,73 +555,66 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e55, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e55));
-    metal::float3 _e66 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e62));
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
+    metal::float3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2, weft_frame);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
-    metal::float3 _e81 = surface_base;
-    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e81, metallic);
-    metal::float3 _e83 = surface_base;
-    metal::float3 diffuse_albedo = _e83 * (1.0 - metallic);
-    metal::float2 _e87 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e88 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e88;
-    metal::float3 _e90 = weft_env_brdf_from_lut(f0_4, _e87);
-    e_spec = _e90;
+    metal::float3 _e66 = surface_base;
+    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e66, metallic);
+    metal::float3 _e68 = surface_base;
+    metal::float3 diffuse_albedo = _e68 * (1.0 - metallic);
+    metal::float2 _e73 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e75 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e75;
+    metal::float3 _e77 = weft_env_brdf_from_lut(f0_4, _e73);
+    e_spec = _e77;
     {
-        float _e94 = material.thickness_min;
-        float _e97 = material.thickness_max;
-        float d1_1 = metal::mix(_e94, _e97, offsets.x);
-        float _e102 = material.thickness_min;
-        float _e105 = material.thickness_max;
-        float d2_1 = metal::mix(_e102, _e105, offsets.y);
-        float _e110 = material.film_strength;
-        float strength = metal::saturate(_e110);
-        light_cos = v_dot_h_1;
+        float _e81 = material.thickness_min;
+        float _e84 = material.thickness_max;
+        float d1_1 = metal::mix(_e81, _e84, offsets.x);
+        float _e89 = material.thickness_min;
+        float _e92 = material.thickness_max;
+        float d2_1 = metal::mix(_e89, _e92, offsets.y);
+        float _e97 = material.film_strength;
+        float strength = metal::saturate(_e97);
+        light_cos = _e57.v_dot_h;
         {
-            float _e115 = film_cos;
-            metal::float3 _e116 = laser_film_fast(_e115, d1_1, d2_1, f0_4, material);
-            film_view = _e116;
-            float _e117 = light_cos;
-            metal::float3 _e118 = laser_film_fast(_e117, d1_1, d2_1, f0_4, material);
-            film_light = _e118;
+            float _e103 = film_cos;
+            metal::float3 _e104 = laser_film_fast(_e103, d1_1, d2_1, f0_4, material);
+            film_view = _e104;
+            float _e105 = light_cos;
+            metal::float3 _e106 = laser_film_fast(_e105, d1_1, d2_1, f0_4, material);
+            film_light = _e106;
         }
-        metal::float3 _e119 = f_light;
-        metal::float3 _e120 = film_light;
-        f_light = metal::mix(_e119, _e120, strength);
-        metal::float3 _e122 = e_spec;
-        metal::float3 _e123 = film_view;
-        e_spec = metal::mix(_e122, _e123 * (_e87.x + _e87.y), strength);
+        metal::float3 _e107 = f_light;
+        metal::float3 _e108 = film_light;
+        f_light = metal::mix(_e107, _e108, strength);
+        metal::float3 _e110 = e_spec;
+        metal::float3 _e111 = film_view;
+        e_spec = metal::mix(_e110, _e111 * (_e73.x + _e73.y), strength);
     }
-    metal::float3 _e131 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e131, metal::float3(0.0));
-    float _e136 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    metal::float3 _e137 = n;
-    float _e138 = weft_d_ggx_nh(_e137, _e62, roughness_6);
-    metal::float3 _e140 = f_light;
-    metal::float3 specular = (_e138 * _e136) * _e140;
-    metal::float3 _e142 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e142;
-    metal::float3 _e145 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e145) * n_dot_l_1;
-    metal::float3 _e149 = n;
-    metal::float3 _e151 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e149), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e152 = e_spec;
-    metal::float3 indirect_specular = (_e151 * _e152) * ao;
-    metal::float3 _e155 = n;
-    metal::float3 _e156 = weft_sh_irradiance(_e155, weft_frame);
-    metal::float3 indirect_diffuse = ((_e156 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e119 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e119, metal::float3(0.0));
+    float _e126 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    metal::float3 _e127 = n;
+    float _e129 = weft_d_ggx_nh(_e127, _e57.h, roughness_6);
+    metal::float3 _e131 = f_light;
+    metal::float3 specular = (_e129 * _e126) * _e131;
+    metal::float3 _e133 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e133;
+    metal::float3 _e136 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e136) * _e57.n_dot_l;
+    metal::float3 _e141 = n;
+    metal::float3 _e143 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e141), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e144 = e_spec;
+    metal::float3 indirect_specular = (_e143 * _e144) * ao;
+    metal::float3 _e147 = n;
+    metal::float3 _e148 = weft_sh_irradiance(_e147, weft_frame);
+    metal::float3 indirect_diffuse = ((_e148 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -229,6 +243,19 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -402,73 +429,66 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e55));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
+    let _e56 = n;
+    let _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
-    let _e81 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e81, metallic);
-    let _e83 = surface_base;
-    let diffuse_albedo = (_e83 * (1f - metallic));
-    let _e87 = weft_env_brdf_lut(_e65, roughness_6);
-    let _e88 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e88;
-    let _e90 = weft_env_brdf_from_lut(f0_4, _e87);
-    e_spec = _e90;
+    let _e66 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e66, metallic);
+    let _e68 = surface_base;
+    let diffuse_albedo = (_e68 * (1f - metallic));
+    let _e73 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    let _e75 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e75;
+    let _e77 = weft_env_brdf_from_lut(f0_4, _e73);
+    e_spec = _e77;
     {
-        let _e94 = material.thickness_min;
-        let _e97 = material.thickness_max;
-        let d1_1 = mix(_e94, _e97, offsets.x);
-        let _e102 = material.thickness_min;
-        let _e105 = material.thickness_max;
-        let d2_1 = mix(_e102, _e105, offsets.y);
-        let _e110 = material.film_strength;
-        let strength = saturate(_e110);
-        light_cos = v_dot_h_1;
+        let _e81 = material.thickness_min;
+        let _e84 = material.thickness_max;
+        let d1_1 = mix(_e81, _e84, offsets.x);
+        let _e89 = material.thickness_min;
+        let _e92 = material.thickness_max;
+        let d2_1 = mix(_e89, _e92, offsets.y);
+        let _e97 = material.film_strength;
+        let strength = saturate(_e97);
+        light_cos = _e57.v_dot_h;
         {
-            let _e115 = film_cos;
-            let _e116 = laser_film_fast(_e115, d1_1, d2_1, f0_4);
-            film_view = _e116;
-            let _e117 = light_cos;
-            let _e118 = laser_film_fast(_e117, d1_1, d2_1, f0_4);
-            film_light = _e118;
+            let _e103 = film_cos;
+            let _e104 = laser_film_fast(_e103, d1_1, d2_1, f0_4);
+            film_view = _e104;
+            let _e105 = light_cos;
+            let _e106 = laser_film_fast(_e105, d1_1, d2_1, f0_4);
+            film_light = _e106;
         }
-        let _e119 = f_light;
-        let _e120 = film_light;
-        f_light = mix(_e119, _e120, strength);
-        let _e122 = e_spec;
-        let _e123 = film_view;
-        e_spec = mix(_e122, (_e123 * (_e87.x + _e87.y)), strength);
+        let _e107 = f_light;
+        let _e108 = film_light;
+        f_light = mix(_e107, _e108, strength);
+        let _e110 = e_spec;
+        let _e111 = film_view;
+        e_spec = mix(_e110, (_e111 * (_e73.x + _e73.y)), strength);
     }
-    let _e131 = e_spec;
-    let kd = max((vec3(1f) - _e131), vec3(0f));
-    let _e136 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    let _e137 = n;
-    let _e138 = weft_d_ggx_nh(_e137, _e62, roughness_6);
-    let _e140 = f_light;
-    let specular = ((_e138 * _e136) * _e140);
-    let _e142 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e142);
-    let _e145 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e145) * n_dot_l_1);
-    let _e149 = n;
-    let _e151 = weft_prefiltered_radiance(reflect(-(_e55), _e149), roughness_6);
-    let _e152 = e_spec;
-    let indirect_specular = ((_e151 * _e152) * ao);
-    let _e155 = n;
-    let _e156 = weft_sh_irradiance(_e155);
-    let indirect_diffuse = (((_e156 * ao) * kd) * diffuse_albedo);
+    let _e119 = e_spec;
+    let kd = max((vec3(1f) - _e119), vec3(0f));
+    let _e126 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e127 = n;
+    let _e129 = weft_d_ggx_nh(_e127, _e57.h, roughness_6);
+    let _e131 = f_light;
+    let specular = ((_e129 * _e126) * _e131);
+    let _e133 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e133);
+    let _e136 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e136) * _e57.n_dot_l);
+    let _e141 = n;
+    let _e143 = weft_prefiltered_radiance(reflect(-(v_2), _e141), roughness_6);
+    let _e144 = e_spec;
+    let indirect_specular = ((_e143 * _e144) * ao);
+    let _e147 = n;
+    let _e148 = weft_sh_irradiance(_e147);
+    let indirect_diffuse = (((_e148 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

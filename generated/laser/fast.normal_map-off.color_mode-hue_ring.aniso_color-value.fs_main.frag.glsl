@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -226,16 +238,29 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -347,17 +372,17 @@ vec3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_
     return clamp((0.5 * _e58), vec3(0.0), vec3(1.0));
 }
 
-float laser_cos_in_plane(vec3 n_5, vec3 v_1, vec3 direction) {
-    vec3 p_1 = cross(direction, n_5);
+float laser_cos_in_plane(vec3 n_6, vec3 v_2, vec3 direction) {
+    vec3 p_1 = cross(direction, n_6);
     float p_len = length(p_1);
     if ((p_len < 0.0001)) {
-        float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     vec3 p_unit = (p_1 / vec3(p_len));
-    vec3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    vec3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    float _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -402,91 +427,84 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e62), 0.0, 1.0);
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
+    vec3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        mat3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        mat3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float _e83 = _group_1_binding_0_fs.color_direction;
-            float angle = radians(_e83);
+            float _e68 = _group_1_binding_0_fs.color_direction;
+            float angle = radians(_e68);
             direction_ts = vec2(cos(angle), sin(angle));
         }
-        float _e90 = direction_ts.x;
-        float _e94 = direction_ts.y;
-        vec3 direction_1 = ((_e76[0] * _e90) + (_e76[1] * _e94));
-        vec3 _e97 = n;
-        float _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
-        film_cos = _e98;
+        float _e75 = direction_ts.x;
+        float _e79 = direction_ts.y;
+        vec3 direction_1 = ((_e61[0] * _e75) + (_e61[1] * _e79));
+        vec3 _e82 = n;
+        float _e83 = laser_cos_in_plane(_e82, v_3, direction_1);
+        film_cos = _e83;
     }
     surface_base = base;
-    vec3 _e102 = surface_base;
-    vec3 f0_4 = mix(vec3(0.04), _e102, metallic);
-    vec3 _e104 = surface_base;
-    vec3 diffuse_albedo = (_e104 * (1.0 - metallic));
-    vec2 _e108 = weft_env_brdf_lut(_e65, roughness_6);
-    vec3 _e109 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e109;
-    vec3 _e111 = weft_env_brdf_from_lut(f0_4, _e108);
-    e_spec = _e111;
+    vec3 _e87 = surface_base;
+    vec3 f0_4 = mix(vec3(0.04), _e87, metallic);
+    vec3 _e89 = surface_base;
+    vec3 diffuse_albedo = (_e89 * (1.0 - metallic));
+    vec2 _e94 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    vec3 _e96 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e96;
+    vec3 _e98 = weft_env_brdf_from_lut(f0_4, _e94);
+    e_spec = _e98;
     {
-        float _e115 = _group_1_binding_0_fs.thickness_min;
-        float _e118 = _group_1_binding_0_fs.thickness_max;
-        float d1_1 = mix(_e115, _e118, offsets.x);
-        float _e123 = _group_1_binding_0_fs.thickness_min;
-        float _e126 = _group_1_binding_0_fs.thickness_max;
-        float d2_1 = mix(_e123, _e126, offsets.y);
-        float _e131 = _group_1_binding_0_fs.film_strength;
-        float strength = clamp(_e131, 0.0, 1.0);
-        light_cos = v_dot_h_1;
+        float _e102 = _group_1_binding_0_fs.thickness_min;
+        float _e105 = _group_1_binding_0_fs.thickness_max;
+        float d1_1 = mix(_e102, _e105, offsets.x);
+        float _e110 = _group_1_binding_0_fs.thickness_min;
+        float _e113 = _group_1_binding_0_fs.thickness_max;
+        float d2_1 = mix(_e110, _e113, offsets.y);
+        float _e118 = _group_1_binding_0_fs.film_strength;
+        float strength = clamp(_e118, 0.0, 1.0);
+        light_cos = _e57.v_dot_h;
         {
-            float _e134 = film_cos;
-            light_cos = _e134;
+            float _e122 = film_cos;
+            light_cos = _e122;
         }
         {
-            float _e137 = film_cos;
-            vec3 _e138 = laser_film_fast(_e137, d1_1, d2_1, f0_4);
-            film_view = _e138;
-            float _e139 = light_cos;
-            vec3 _e140 = laser_film_fast(_e139, d1_1, d2_1, f0_4);
-            film_light = _e140;
+            float _e125 = film_cos;
+            vec3 _e126 = laser_film_fast(_e125, d1_1, d2_1, f0_4);
+            film_view = _e126;
+            float _e127 = light_cos;
+            vec3 _e128 = laser_film_fast(_e127, d1_1, d2_1, f0_4);
+            film_light = _e128;
         }
-        vec3 _e141 = f_light;
-        vec3 _e142 = film_light;
-        f_light = mix(_e141, _e142, strength);
-        vec3 _e144 = e_spec;
-        vec3 _e145 = film_view;
-        e_spec = mix(_e144, (_e145 * (_e108.x + _e108.y)), strength);
+        vec3 _e129 = f_light;
+        vec3 _e130 = film_light;
+        f_light = mix(_e129, _e130, strength);
+        vec3 _e132 = e_spec;
+        vec3 _e133 = film_view;
+        e_spec = mix(_e132, (_e133 * (_e94.x + _e94.y)), strength);
     }
-    vec3 _e153 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e153), vec3(0.0));
-    float _e158 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    vec3 _e159 = n;
-    float _e160 = weft_d_ggx_nh(_e159, _e62, roughness_6);
-    vec3 _e162 = f_light;
-    vec3 specular = ((_e160 * _e158) * _e162);
-    vec3 _e164 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e164);
-    vec3 _e167 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e167) * n_dot_l_1);
-    vec3 _e171 = n;
-    vec3 _e173 = weft_prefiltered_radiance(reflect(-(_e55), _e171), roughness_6);
-    vec3 _e174 = e_spec;
-    vec3 indirect_specular = ((_e173 * _e174) * ao);
-    vec3 _e177 = n;
-    vec3 _e178 = weft_sh_irradiance(_e177);
-    vec3 indirect_diffuse = (((_e178 * ao) * kd) * diffuse_albedo);
+    vec3 _e141 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e141), vec3(0.0));
+    float _e148 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    vec3 _e149 = n;
+    float _e151 = weft_d_ggx_nh(_e149, _e57.h, roughness_6);
+    vec3 _e153 = f_light;
+    vec3 specular = ((_e151 * _e148) * _e153);
+    vec3 _e155 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e155);
+    vec3 _e158 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e158) * _e57.n_dot_l);
+    vec3 _e163 = n;
+    vec3 _e165 = weft_prefiltered_radiance(reflect(-(v_3), _e163), roughness_6);
+    vec3 _e166 = e_spec;
+    vec3 indirect_specular = ((_e165 * _e166) * ao);
+    vec3 _e169 = n;
+    vec3 _e170 = weft_sh_irradiance(_e169);
+    vec3 indirect_diffuse = (((_e170 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -275,19 +288,40 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float2 weft_transform_uv(
@@ -436,20 +470,20 @@ metal::float3 weft_film_fourier(
 }
 
 float laser_cos_in_plane(
-    metal::float3 n_5,
-    metal::float3 v_1,
+    metal::float3 n_6,
+    metal::float3 v_2,
     metal::float3 direction
 ) {
-    metal::float3 p_1 = metal::cross(direction, n_5);
+    metal::float3 p_1 = metal::cross(direction, n_6);
     float p_len = metal::length(p_1);
     if (p_len < 0.0001) {
-        float _e8 = weft_clamp_cos(metal::dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(metal::dot(n_6, v_2));
         return _e8;
     }
     metal::float3 p_unit = p_1 / metal::float3(p_len);
-    metal::float3 v_in_plane = v_1 - (metal::dot(v_1, p_unit) * p_unit);
+    metal::float3 v_in_plane = v_2 - (metal::dot(v_2, p_unit) * p_unit);
     float len = metal::length(v_in_plane);
-    float _e19 = weft_clamp_cos(metal::dot(n_5, v_in_plane) / metal::max(len, 0.0001));
+    float _e19 = weft_clamp_cos(metal::dot(n_6, v_in_plane) / metal::max(len, 0.0001));
     return _e19;
 }
 
@@ -512,8 +546,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -534,7 +568,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -563,91 +597,84 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e55, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e55));
-    metal::float3 _e66 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e62));
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
+    metal::float3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3, weft_frame);
+    film_cos = _e57.n_dot_v;
     {
-        metal::float3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        metal::float3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float _e83 = material.color_direction;
-            float angle = ((_e83) * 0.017453292519943295474);
+            float _e68 = material.color_direction;
+            float angle = ((_e68) * 0.017453292519943295474);
             direction_ts = metal::float2(metal::cos(angle), metal::sin(angle));
         }
-        float _e90 = direction_ts.x;
-        float _e94 = direction_ts.y;
-        metal::float3 direction_1 = (_e76[0] * _e90) + (_e76[1] * _e94);
-        metal::float3 _e97 = n;
-        float _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
-        film_cos = _e98;
+        float _e75 = direction_ts.x;
+        float _e79 = direction_ts.y;
+        metal::float3 direction_1 = (_e61[0] * _e75) + (_e61[1] * _e79);
+        metal::float3 _e82 = n;
+        float _e83 = laser_cos_in_plane(_e82, v_3, direction_1);
+        film_cos = _e83;
     }
     surface_base = base;
-    metal::float3 _e102 = surface_base;
-    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e102, metallic);
-    metal::float3 _e104 = surface_base;
-    metal::float3 diffuse_albedo = _e104 * (1.0 - metallic);
-    metal::float2 _e108 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e109 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e109;
-    metal::float3 _e111 = weft_env_brdf_from_lut(f0_4, _e108);
-    e_spec = _e111;
+    metal::float3 _e87 = surface_base;
+    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e87, metallic);
+    metal::float3 _e89 = surface_base;
+    metal::float3 diffuse_albedo = _e89 * (1.0 - metallic);
+    metal::float2 _e94 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e96 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e96;
+    metal::float3 _e98 = weft_env_brdf_from_lut(f0_4, _e94);
+    e_spec = _e98;
     {
-        float _e115 = material.thickness_min;
-        float _e118 = material.thickness_max;
-        float d1_1 = metal::mix(_e115, _e118, offsets.x);
-        float _e123 = material.thickness_min;
-        float _e126 = material.thickness_max;
-        float d2_1 = metal::mix(_e123, _e126, offsets.y);
-        float _e131 = material.film_strength;
-        float strength = metal::saturate(_e131);
-        light_cos = v_dot_h_1;
+        float _e102 = material.thickness_min;
+        float _e105 = material.thickness_max;
+        float d1_1 = metal::mix(_e102, _e105, offsets.x);
+        float _e110 = material.thickness_min;
+        float _e113 = material.thickness_max;
+        float d2_1 = metal::mix(_e110, _e113, offsets.y);
+        float _e118 = material.film_strength;
+        float strength = metal::saturate(_e118);
+        light_cos = _e57.v_dot_h;
         {
-            float _e134 = film_cos;
-            light_cos = _e134;
+            float _e122 = film_cos;
+            light_cos = _e122;
         }
         {
-            float _e137 = film_cos;
-            metal::float3 _e138 = laser_film_fast(_e137, d1_1, d2_1, f0_4, material);
-            film_view = _e138;
-            float _e139 = light_cos;
-            metal::float3 _e140 = laser_film_fast(_e139, d1_1, d2_1, f0_4, material);
-            film_light = _e140;
+            float _e125 = film_cos;
+            metal::float3 _e126 = laser_film_fast(_e125, d1_1, d2_1, f0_4, material);
+            film_view = _e126;
+            float _e127 = light_cos;
+            metal::float3 _e128 = laser_film_fast(_e127, d1_1, d2_1, f0_4, material);
+            film_light = _e128;
         }
-        metal::float3 _e141 = f_light;
-        metal::float3 _e142 = film_light;
-        f_light = metal::mix(_e141, _e142, strength);
-        metal::float3 _e144 = e_spec;
-        metal::float3 _e145 = film_view;
-        e_spec = metal::mix(_e144, _e145 * (_e108.x + _e108.y), strength);
+        metal::float3 _e129 = f_light;
+        metal::float3 _e130 = film_light;
+        f_light = metal::mix(_e129, _e130, strength);
+        metal::float3 _e132 = e_spec;
+        metal::float3 _e133 = film_view;
+        e_spec = metal::mix(_e132, _e133 * (_e94.x + _e94.y), strength);
     }
-    metal::float3 _e153 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e153, metal::float3(0.0));
-    float _e158 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    metal::float3 _e159 = n;
-    float _e160 = weft_d_ggx_nh(_e159, _e62, roughness_6);
-    metal::float3 _e162 = f_light;
-    metal::float3 specular = (_e160 * _e158) * _e162;
-    metal::float3 _e164 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e164;
-    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e167) * n_dot_l_1;
-    metal::float3 _e171 = n;
-    metal::float3 _e173 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e171), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e174 = e_spec;
-    metal::float3 indirect_specular = (_e173 * _e174) * ao;
-    metal::float3 _e177 = n;
-    metal::float3 _e178 = weft_sh_irradiance(_e177, weft_frame);
-    metal::float3 indirect_diffuse = ((_e178 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e141 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e141, metal::float3(0.0));
+    float _e148 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    metal::float3 _e149 = n;
+    float _e151 = weft_d_ggx_nh(_e149, _e57.h, roughness_6);
+    metal::float3 _e153 = f_light;
+    metal::float3 specular = (_e151 * _e148) * _e153;
+    metal::float3 _e155 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e155;
+    metal::float3 _e158 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e158) * _e57.n_dot_l;
+    metal::float3 _e163 = n;
+    metal::float3 _e165 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e163), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e166 = e_spec;
+    metal::float3 indirect_specular = (_e165 * _e166) * ao;
+    metal::float3 _e169 = n;
+    metal::float3 _e170 = weft_sh_irradiance(_e169, weft_frame);
+    metal::float3 indirect_diffuse = ((_e170 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

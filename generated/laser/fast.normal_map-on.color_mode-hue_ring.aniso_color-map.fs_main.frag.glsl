@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -230,26 +242,46 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -361,17 +393,17 @@ vec3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_
     return clamp((0.5 * _e58), vec3(0.0), vec3(1.0));
 }
 
-float laser_cos_in_plane(vec3 n_5, vec3 v_1, vec3 direction) {
-    vec3 p_1 = cross(direction, n_5);
+float laser_cos_in_plane(vec3 n_7, vec3 v_2, vec3 direction) {
+    vec3 p_1 = cross(direction, n_7);
     float p_len = length(p_1);
     if ((p_len < 0.0001)) {
-        float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     vec3 p_unit = (p_1 / vec3(p_len));
-    vec3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    vec3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    float _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -416,100 +448,91 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_4 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        mat3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        vec4 _e63 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e63.xyz;
-        float _e67 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e68 = weft_unpack_normal(texel_1, _e67);
-        vec3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        vec4 _e58 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e58.xyz;
+        float _e63 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = n;
-    vec3 _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    vec3 _e74 = n;
-    float _e76 = weft_clamp_cos(dot(_e74, _e55));
-    vec3 _e77 = n;
-    float n_dot_l_1 = clamp(dot(_e77, _e70), 0.0, 1.0);
-    vec3 _e80 = n;
-    float n_dot_h = clamp(dot(_e80, _e73), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e73), 0.0, 1.0);
-    film_cos = _e76;
+    vec3 _e65 = n;
+    WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        mat3x3 _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        mat3x3 _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            vec4 _e94 = texture(_group_1_binding_8_fs, vec2(_e5));
-            vec2 flow = ((_e94.xy * 2.0) - vec2(1.0));
+            vec4 _e77 = texture(_group_1_binding_8_fs, vec2(_e5));
+            vec2 flow = ((_e77.xy * 2.0) - vec2(1.0));
             direction_ts = ((dot(flow, flow) > 1e-6) ? flow : vec2(1.0, 0.0));
         }
-        float _e110 = direction_ts.x;
-        float _e114 = direction_ts.y;
-        vec3 direction_1 = ((_e87[0] * _e110) + (_e87[1] * _e114));
-        vec3 _e117 = n;
-        float _e118 = laser_cos_in_plane(_e117, _e55, direction_1);
-        film_cos = _e118;
+        float _e93 = direction_ts.x;
+        float _e97 = direction_ts.y;
+        vec3 direction_1 = ((_e70[0] * _e93) + (_e70[1] * _e97));
+        vec3 _e100 = n;
+        float _e101 = laser_cos_in_plane(_e100, v_4, direction_1);
+        film_cos = _e101;
     }
     surface_base = base;
-    vec3 _e122 = surface_base;
-    vec3 f0_4 = mix(vec3(0.04), _e122, metallic);
-    vec3 _e124 = surface_base;
-    vec3 diffuse_albedo = (_e124 * (1.0 - metallic));
-    vec2 _e128 = weft_env_brdf_lut(_e76, roughness_6);
-    vec3 _e129 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e129;
-    vec3 _e131 = weft_env_brdf_from_lut(f0_4, _e128);
-    e_spec = _e131;
+    vec3 _e105 = surface_base;
+    vec3 f0_4 = mix(vec3(0.04), _e105, metallic);
+    vec3 _e107 = surface_base;
+    vec3 diffuse_albedo = (_e107 * (1.0 - metallic));
+    vec2 _e112 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    vec3 _e114 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e114;
+    vec3 _e116 = weft_env_brdf_from_lut(f0_4, _e112);
+    e_spec = _e116;
     {
-        float _e135 = _group_1_binding_0_fs.thickness_min;
-        float _e138 = _group_1_binding_0_fs.thickness_max;
-        float d1_1 = mix(_e135, _e138, offsets.x);
-        float _e143 = _group_1_binding_0_fs.thickness_min;
-        float _e146 = _group_1_binding_0_fs.thickness_max;
-        float d2_1 = mix(_e143, _e146, offsets.y);
-        float _e151 = _group_1_binding_0_fs.film_strength;
-        float strength_1 = clamp(_e151, 0.0, 1.0);
-        light_cos = v_dot_h_1;
+        float _e120 = _group_1_binding_0_fs.thickness_min;
+        float _e123 = _group_1_binding_0_fs.thickness_max;
+        float d1_1 = mix(_e120, _e123, offsets.x);
+        float _e128 = _group_1_binding_0_fs.thickness_min;
+        float _e131 = _group_1_binding_0_fs.thickness_max;
+        float d2_1 = mix(_e128, _e131, offsets.y);
+        float _e136 = _group_1_binding_0_fs.film_strength;
+        float strength_2 = clamp(_e136, 0.0, 1.0);
+        light_cos = _e66.v_dot_h;
         {
-            float _e154 = film_cos;
-            light_cos = _e154;
+            float _e140 = film_cos;
+            light_cos = _e140;
         }
         {
-            float _e157 = film_cos;
-            vec3 _e158 = laser_film_fast(_e157, d1_1, d2_1, f0_4);
-            film_view = _e158;
-            float _e159 = light_cos;
-            vec3 _e160 = laser_film_fast(_e159, d1_1, d2_1, f0_4);
-            film_light = _e160;
+            float _e143 = film_cos;
+            vec3 _e144 = laser_film_fast(_e143, d1_1, d2_1, f0_4);
+            film_view = _e144;
+            float _e145 = light_cos;
+            vec3 _e146 = laser_film_fast(_e145, d1_1, d2_1, f0_4);
+            film_light = _e146;
         }
-        vec3 _e161 = f_light;
-        vec3 _e162 = film_light;
-        f_light = mix(_e161, _e162, strength_1);
-        vec3 _e164 = e_spec;
-        vec3 _e165 = film_view;
-        e_spec = mix(_e164, (_e165 * (_e128.x + _e128.y)), strength_1);
+        vec3 _e147 = f_light;
+        vec3 _e148 = film_light;
+        f_light = mix(_e147, _e148, strength_2);
+        vec3 _e150 = e_spec;
+        vec3 _e151 = film_view;
+        e_spec = mix(_e150, (_e151 * (_e112.x + _e112.y)), strength_2);
     }
-    vec3 _e173 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e173), vec3(0.0));
-    float _e178 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    vec3 _e179 = n;
-    float _e180 = weft_d_ggx_nh(_e179, _e73, roughness_6);
-    vec3 _e182 = f_light;
-    vec3 specular = ((_e180 * _e178) * _e182);
-    vec3 _e184 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e184);
-    vec3 _e187 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e187) * n_dot_l_1);
-    vec3 _e191 = n;
-    vec3 _e193 = weft_prefiltered_radiance(reflect(-(_e55), _e191), roughness_6);
-    vec3 _e194 = e_spec;
-    vec3 indirect_specular = ((_e193 * _e194) * ao);
-    vec3 _e197 = n;
-    vec3 _e198 = weft_sh_irradiance(_e197);
-    vec3 indirect_diffuse = (((_e198 * ao) * kd) * diffuse_albedo);
+    vec3 _e159 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e159), vec3(0.0));
+    float _e166 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    vec3 _e167 = n;
+    float _e169 = weft_d_ggx_nh(_e167, _e66.h, roughness_6);
+    vec3 _e171 = f_light;
+    vec3 specular = ((_e169 * _e166) * _e171);
+    vec3 _e173 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e173);
+    vec3 _e176 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e176) * _e66.n_dot_l);
+    vec3 _e181 = n;
+    vec3 _e183 = weft_prefiltered_radiance(reflect(-(v_4), _e181), roughness_6);
+    vec3 _e184 = e_spec;
+    vec3 indirect_specular = ((_e183 * _e184) * ao);
+    vec3 _e187 = n;
+    vec3 _e188 = weft_sh_irradiance(_e187);
+    vec3 indirect_diffuse = (((_e188 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -240,26 +254,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -370,17 +404,17 @@ fn weft_film_fourier(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, ba
     return clamp((0.5f * _e58), vec3(0f), vec3(1f));
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p_1 = cross(direction, n_5);
+fn laser_cos_in_plane(n_7: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p_1 = cross(direction, n_7);
     let p_len = length(p_1);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     let p_unit = (p_1 / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -449,100 +483,91 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
     {
-        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        let _e63 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e63.xyz;
-        let _e67 = material.normal_strength;
-        let _e68 = weft_unpack_normal(texel_1, _e67);
-        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        let _e58 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e58.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e55));
-    let _e77 = n;
-    let n_dot_l_1 = saturate(dot(_e77, _e70));
-    let _e80 = n;
-    let n_dot_h = saturate(dot(_e80, _e73));
-    let v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    let _e65 = n;
+    let _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        let _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e94 = textureSample(direction_map, material_sampler, _e5);
-            let flow = ((_e94.xy * 2f) - vec2(1f));
+            let _e77 = textureSample(direction_map, material_sampler, _e5);
+            let flow = ((_e77.xy * 2f) - vec2(1f));
             direction_ts = select(vec2<f32>(1f, 0f), flow, (dot(flow, flow) > 0.000001f));
         }
-        let _e110 = direction_ts.x;
-        let _e114 = direction_ts.y;
-        let direction_1 = ((_e87[0] * _e110) + (_e87[1] * _e114));
-        let _e117 = n;
-        let _e118 = laser_cos_in_plane(_e117, _e55, direction_1);
-        film_cos = _e118;
+        let _e93 = direction_ts.x;
+        let _e97 = direction_ts.y;
+        let direction_1 = ((_e70[0] * _e93) + (_e70[1] * _e97));
+        let _e100 = n;
+        let _e101 = laser_cos_in_plane(_e100, v_4, direction_1);
+        film_cos = _e101;
     }
     surface_base = base;
-    let _e122 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e122, metallic);
-    let _e124 = surface_base;
-    let diffuse_albedo = (_e124 * (1f - metallic));
-    let _e128 = weft_env_brdf_lut(_e76, roughness_6);
-    let _e129 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e129;
-    let _e131 = weft_env_brdf_from_lut(f0_4, _e128);
-    e_spec = _e131;
+    let _e105 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e105, metallic);
+    let _e107 = surface_base;
+    let diffuse_albedo = (_e107 * (1f - metallic));
+    let _e112 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    let _e114 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e114;
+    let _e116 = weft_env_brdf_from_lut(f0_4, _e112);
+    e_spec = _e116;
     {
-        let _e135 = material.thickness_min;
-        let _e138 = material.thickness_max;
-        let d1_1 = mix(_e135, _e138, offsets.x);
-        let _e143 = material.thickness_min;
-        let _e146 = material.thickness_max;
-        let d2_1 = mix(_e143, _e146, offsets.y);
-        let _e151 = material.film_strength;
-        let strength_1 = saturate(_e151);
-        light_cos = v_dot_h_1;
+        let _e120 = material.thickness_min;
+        let _e123 = material.thickness_max;
+        let d1_1 = mix(_e120, _e123, offsets.x);
+        let _e128 = material.thickness_min;
+        let _e131 = material.thickness_max;
+        let d2_1 = mix(_e128, _e131, offsets.y);
+        let _e136 = material.film_strength;
+        let strength_2 = saturate(_e136);
+        light_cos = _e66.v_dot_h;
         {
-            let _e154 = film_cos;
-            light_cos = _e154;
+            let _e140 = film_cos;
+            light_cos = _e140;
         }
         {
-            let _e157 = film_cos;
-            let _e158 = laser_film_fast(_e157, d1_1, d2_1, f0_4);
-            film_view = _e158;
-            let _e159 = light_cos;
-            let _e160 = laser_film_fast(_e159, d1_1, d2_1, f0_4);
-            film_light = _e160;
+            let _e143 = film_cos;
+            let _e144 = laser_film_fast(_e143, d1_1, d2_1, f0_4);
+            film_view = _e144;
+            let _e145 = light_cos;
+            let _e146 = laser_film_fast(_e145, d1_1, d2_1, f0_4);
+            film_light = _e146;
         }
-        let _e161 = f_light;
-        let _e162 = film_light;
-        f_light = mix(_e161, _e162, strength_1);
-        let _e164 = e_spec;
-        let _e165 = film_view;
-        e_spec = mix(_e164, (_e165 * (_e128.x + _e128.y)), strength_1);
+        let _e147 = f_light;
+        let _e148 = film_light;
+        f_light = mix(_e147, _e148, strength_2);
+        let _e150 = e_spec;
+        let _e151 = film_view;
+        e_spec = mix(_e150, (_e151 * (_e112.x + _e112.y)), strength_2);
     }
-    let _e173 = e_spec;
-    let kd = max((vec3(1f) - _e173), vec3(0f));
-    let _e178 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    let _e179 = n;
-    let _e180 = weft_d_ggx_nh(_e179, _e73, roughness_6);
-    let _e182 = f_light;
-    let specular = ((_e180 * _e178) * _e182);
-    let _e184 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e184);
-    let _e187 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e187) * n_dot_l_1);
-    let _e191 = n;
-    let _e193 = weft_prefiltered_radiance(reflect(-(_e55), _e191), roughness_6);
-    let _e194 = e_spec;
-    let indirect_specular = ((_e193 * _e194) * ao);
-    let _e197 = n;
-    let _e198 = weft_sh_irradiance(_e197);
-    let indirect_diffuse = (((_e198 * ao) * kd) * diffuse_albedo);
+    let _e159 = e_spec;
+    let kd = max((vec3(1f) - _e159), vec3(0f));
+    let _e166 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e167 = n;
+    let _e169 = weft_d_ggx_nh(_e167, _e66.h, roughness_6);
+    let _e171 = f_light;
+    let specular = ((_e169 * _e166) * _e171);
+    let _e173 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e173);
+    let _e176 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e176) * _e66.n_dot_l);
+    let _e181 = n;
+    let _e183 = weft_prefiltered_radiance(reflect(-(v_4), _e181), roughness_6);
+    let _e184 = e_spec;
+    let indirect_specular = ((_e183 * _e184) * ao);
+    let _e187 = n;
+    let _e188 = weft_sh_irradiance(_e187);
+    let indirect_diffuse = (((_e188 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

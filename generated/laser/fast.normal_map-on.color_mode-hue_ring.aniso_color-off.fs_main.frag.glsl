@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -228,26 +240,46 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -400,82 +432,73 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        mat3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        vec4 _e63 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e63.xyz;
-        float _e67 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e68 = weft_unpack_normal(texel_1, _e67);
-        vec3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        vec4 _e58 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e58.xyz;
+        float _e63 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = n;
-    vec3 _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    vec3 _e74 = n;
-    float _e76 = weft_clamp_cos(dot(_e74, _e55));
-    vec3 _e77 = n;
-    float n_dot_l_1 = clamp(dot(_e77, _e70), 0.0, 1.0);
-    vec3 _e80 = n;
-    float n_dot_h = clamp(dot(_e80, _e73), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e73), 0.0, 1.0);
-    film_cos = _e76;
+    vec3 _e65 = n;
+    WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_3);
+    film_cos = _e66.n_dot_v;
     surface_base = base;
-    vec3 _e92 = surface_base;
-    vec3 f0_4 = mix(vec3(0.04), _e92, metallic);
-    vec3 _e94 = surface_base;
-    vec3 diffuse_albedo = (_e94 * (1.0 - metallic));
-    vec2 _e98 = weft_env_brdf_lut(_e76, roughness_6);
-    vec3 _e99 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e99;
-    vec3 _e101 = weft_env_brdf_from_lut(f0_4, _e98);
-    e_spec = _e101;
+    vec3 _e75 = surface_base;
+    vec3 f0_4 = mix(vec3(0.04), _e75, metallic);
+    vec3 _e77 = surface_base;
+    vec3 diffuse_albedo = (_e77 * (1.0 - metallic));
+    vec2 _e82 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    vec3 _e84 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e84;
+    vec3 _e86 = weft_env_brdf_from_lut(f0_4, _e82);
+    e_spec = _e86;
     {
-        float _e105 = _group_1_binding_0_fs.thickness_min;
-        float _e108 = _group_1_binding_0_fs.thickness_max;
-        float d1_1 = mix(_e105, _e108, offsets.x);
-        float _e113 = _group_1_binding_0_fs.thickness_min;
-        float _e116 = _group_1_binding_0_fs.thickness_max;
-        float d2_1 = mix(_e113, _e116, offsets.y);
-        float _e121 = _group_1_binding_0_fs.film_strength;
-        float strength_1 = clamp(_e121, 0.0, 1.0);
-        light_cos = v_dot_h_1;
+        float _e90 = _group_1_binding_0_fs.thickness_min;
+        float _e93 = _group_1_binding_0_fs.thickness_max;
+        float d1_1 = mix(_e90, _e93, offsets.x);
+        float _e98 = _group_1_binding_0_fs.thickness_min;
+        float _e101 = _group_1_binding_0_fs.thickness_max;
+        float d2_1 = mix(_e98, _e101, offsets.y);
+        float _e106 = _group_1_binding_0_fs.film_strength;
+        float strength_2 = clamp(_e106, 0.0, 1.0);
+        light_cos = _e66.v_dot_h;
         {
-            float _e126 = film_cos;
-            vec3 _e127 = laser_film_fast(_e126, d1_1, d2_1, f0_4);
-            film_view = _e127;
-            float _e128 = light_cos;
-            vec3 _e129 = laser_film_fast(_e128, d1_1, d2_1, f0_4);
-            film_light = _e129;
+            float _e112 = film_cos;
+            vec3 _e113 = laser_film_fast(_e112, d1_1, d2_1, f0_4);
+            film_view = _e113;
+            float _e114 = light_cos;
+            vec3 _e115 = laser_film_fast(_e114, d1_1, d2_1, f0_4);
+            film_light = _e115;
         }
-        vec3 _e130 = f_light;
-        vec3 _e131 = film_light;
-        f_light = mix(_e130, _e131, strength_1);
-        vec3 _e133 = e_spec;
-        vec3 _e134 = film_view;
-        e_spec = mix(_e133, (_e134 * (_e98.x + _e98.y)), strength_1);
+        vec3 _e116 = f_light;
+        vec3 _e117 = film_light;
+        f_light = mix(_e116, _e117, strength_2);
+        vec3 _e119 = e_spec;
+        vec3 _e120 = film_view;
+        e_spec = mix(_e119, (_e120 * (_e82.x + _e82.y)), strength_2);
     }
-    vec3 _e142 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e142), vec3(0.0));
-    float _e147 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    vec3 _e148 = n;
-    float _e149 = weft_d_ggx_nh(_e148, _e73, roughness_6);
-    vec3 _e151 = f_light;
-    vec3 specular = ((_e149 * _e147) * _e151);
-    vec3 _e153 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e153);
-    vec3 _e156 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e156) * n_dot_l_1);
-    vec3 _e160 = n;
-    vec3 _e162 = weft_prefiltered_radiance(reflect(-(_e55), _e160), roughness_6);
-    vec3 _e163 = e_spec;
-    vec3 indirect_specular = ((_e162 * _e163) * ao);
-    vec3 _e166 = n;
-    vec3 _e167 = weft_sh_irradiance(_e166);
-    vec3 indirect_diffuse = (((_e167 * ao) * kd) * diffuse_albedo);
+    vec3 _e128 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e128), vec3(0.0));
+    float _e135 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    vec3 _e136 = n;
+    float _e138 = weft_d_ggx_nh(_e136, _e66.h, roughness_6);
+    vec3 _e140 = f_light;
+    vec3 specular = ((_e138 * _e135) * _e140);
+    vec3 _e142 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e142);
+    vec3 _e145 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e145) * _e66.n_dot_l);
+    vec3 _e150 = n;
+    vec3 _e152 = weft_prefiltered_radiance(reflect(-(v_3), _e150), roughness_6);
+    vec3 _e153 = e_spec;
+    vec3 indirect_specular = ((_e152 * _e153) * ao);
+    vec3 _e156 = n;
+    vec3 _e157 = weft_sh_irradiance(_e156);
+    vec3 indirect_diffuse = (((_e157 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -114,16 +132,16 @@ Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> direction_map : register(t8, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -267,17 +285,52 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -445,18 +498,18 @@ float3 weft_film_spectral(float cos_theta1_1, float thickness_nm_2, float film_i
     return clamp((rgb / rgb_white), (0.0).xxx, (1.0).xxx);
 }
 
-float laser_cos_in_plane(float3 n_5, float3 v_1, float3 direction)
+float laser_cos_in_plane(float3 n_6, float3 v_2, float3 direction)
 {
-    float3 p_1 = cross(direction, n_5);
+    float3 p_1 = cross(direction, n_6);
     float p_len = length(p_1);
     if ((p_len < 0.0001)) {
-        const float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        const float _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     float3 p_unit = (p_1 / (p_len).xxx);
-    float3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    float3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    const float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    const float _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -499,7 +552,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -529,91 +582,84 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    float3 _e66 = n;
-    float n_dot_l_1 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h = saturate(dot(_e69, _e62));
-    float v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_3 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
+    float3 _e56 = n;
+    const WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        const float3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        const float3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float4 _e83 = direction_map.Sample(material_sampler, _e5);
-            float2 flow = ((_e83.xy * 2.0) - (1.0).xx);
+            float4 _e68 = direction_map.Sample(material_sampler, _e5);
+            float2 flow = ((_e68.xy * 2.0) - (1.0).xx);
             direction_ts = ((dot(flow, flow) > 1e-6) ? flow : float2(1.0, 0.0));
         }
-        float _e99 = direction_ts.x;
-        float _e103 = direction_ts.y;
-        float3 direction_1 = ((_e76[0] * _e99) + (_e76[1] * _e103));
-        float3 _e106 = n;
-        const float _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
-        film_cos = _e107;
+        float _e84 = direction_ts.x;
+        float _e88 = direction_ts.y;
+        float3 direction_1 = ((_e61[0] * _e84) + (_e61[1] * _e88));
+        float3 _e91 = n;
+        const float _e92 = laser_cos_in_plane(_e91, v_3, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
-    float3 _e111 = surface_base;
-    float3 f0_4 = lerp((0.04).xxx, _e111, metallic);
-    float3 _e113 = surface_base;
-    float3 diffuse_albedo = (_e113 * (1.0 - metallic));
-    const float2 _e117 = weft_env_brdf_lut(_e65, roughness_6);
-    const float3 _e118 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e118;
-    const float3 _e120 = weft_env_brdf_from_lut(f0_4, _e117);
-    e_spec = _e120;
+    float3 _e96 = surface_base;
+    float3 f0_4 = lerp((0.04).xxx, _e96, metallic);
+    float3 _e98 = surface_base;
+    float3 diffuse_albedo = (_e98 * (1.0 - metallic));
+    const float2 _e103 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    const float3 _e105 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e105;
+    const float3 _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    e_spec = _e107;
     {
-        float _e124 = material.thickness_min;
-        float _e127 = material.thickness_max;
-        float d1_1 = lerp(_e124, _e127, offsets.x);
-        float _e132 = material.thickness_min;
-        float _e135 = material.thickness_max;
-        float d2_1 = lerp(_e132, _e135, offsets.y);
-        float _e140 = material.film_strength;
-        float strength = saturate(_e140);
-        light_cos = v_dot_h_1;
+        float _e111 = material.thickness_min;
+        float _e114 = material.thickness_max;
+        float d1_1 = lerp(_e111, _e114, offsets.x);
+        float _e119 = material.thickness_min;
+        float _e122 = material.thickness_max;
+        float d2_1 = lerp(_e119, _e122, offsets.y);
+        float _e127 = material.film_strength;
+        float strength = saturate(_e127);
+        light_cos = _e57.v_dot_h;
         {
-            float _e143 = film_cos;
-            light_cos = _e143;
+            float _e131 = film_cos;
+            light_cos = _e131;
         }
         {
-            float _e146 = film_cos;
-            const float3 _e147 = laser_film_reference(_e146, d1_1, d2_1, f0_4);
-            film_view = _e147;
-            float _e148 = light_cos;
-            const float3 _e149 = laser_film_reference(_e148, d1_1, d2_1, f0_4);
-            film_light = _e149;
+            float _e134 = film_cos;
+            const float3 _e135 = laser_film_reference(_e134, d1_1, d2_1, f0_4);
+            film_view = _e135;
+            float _e136 = light_cos;
+            const float3 _e137 = laser_film_reference(_e136, d1_1, d2_1, f0_4);
+            film_light = _e137;
         }
-        float3 _e150 = f_light;
-        float3 _e151 = film_light;
-        f_light = lerp(_e150, _e151, strength);
-        float3 _e153 = e_spec;
-        float3 _e154 = film_view;
-        e_spec = lerp(_e153, (_e154 * (_e117.x + _e117.y)), strength);
+        float3 _e138 = f_light;
+        float3 _e139 = film_light;
+        f_light = lerp(_e138, _e139, strength);
+        float3 _e141 = e_spec;
+        float3 _e142 = film_view;
+        e_spec = lerp(_e141, (_e142 * (_e103.x + _e103.y)), strength);
     }
-    float3 _e162 = e_spec;
-    float3 kd = max(((1.0).xxx - _e162), (0.0).xxx);
-    const float _e167 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    float3 _e168 = n;
-    const float _e169 = weft_d_ggx_nh(_e168, _e62, roughness_6);
-    float3 _e171 = f_light;
-    float3 specular = ((_e169 * _e167) * _e171);
-    const float3 _e173 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e173);
-    const float3 _e176 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e176) * n_dot_l_1);
-    float3 _e180 = n;
-    const float3 _e182 = weft_prefiltered_radiance(reflect(-(_e55), _e180), roughness_6);
-    float3 _e183 = e_spec;
-    float3 indirect_specular = ((_e182 * _e183) * ao);
-    float3 _e186 = n;
-    const float3 _e187 = weft_sh_irradiance(_e186);
-    float3 indirect_diffuse = (((_e187 * ao) * kd) * diffuse_albedo);
+    float3 _e150 = e_spec;
+    float3 kd = max(((1.0).xxx - _e150), (0.0).xxx);
+    const float _e157 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    float3 _e158 = n;
+    const float _e160 = weft_d_ggx_nh(_e158, _e57.h, roughness_6);
+    float3 _e162 = f_light;
+    float3 specular = ((_e160 * _e157) * _e162);
+    const float3 _e164 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e164);
+    const float3 _e167 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e167) * _e57.n_dot_l);
+    float3 _e172 = n;
+    const float3 _e174 = weft_prefiltered_radiance(reflect(-(v_3), _e172), roughness_6);
+    float3 _e175 = e_spec;
+    float3 indirect_specular = ((_e174 * _e175) * ao);
+    float3 _e178 = n;
+    const float3 _e179 = weft_sh_irradiance(_e178);
+    float3 indirect_diffuse = (((_e179 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

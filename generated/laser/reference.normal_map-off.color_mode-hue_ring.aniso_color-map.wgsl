@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -232,16 +246,29 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -375,17 +402,17 @@ fn weft_film_spectral(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, b
     return clamp((rgb / rgb_white), vec3(0f), vec3(1f));
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p_1 = cross(direction, n_5);
+fn laser_cos_in_plane(n_6: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p_1 = cross(direction, n_6);
     let p_len = length(p_1);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     let p_unit = (p_1 / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -454,91 +481,84 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e55));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
+    let _e56 = n;
+    let _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        let _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e83 = textureSample(direction_map, material_sampler, _e5);
-            let flow = ((_e83.xy * 2f) - vec2(1f));
+            let _e68 = textureSample(direction_map, material_sampler, _e5);
+            let flow = ((_e68.xy * 2f) - vec2(1f));
             direction_ts = select(vec2<f32>(1f, 0f), flow, (dot(flow, flow) > 0.000001f));
         }
-        let _e99 = direction_ts.x;
-        let _e103 = direction_ts.y;
-        let direction_1 = ((_e76[0] * _e99) + (_e76[1] * _e103));
-        let _e106 = n;
-        let _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
-        film_cos = _e107;
+        let _e84 = direction_ts.x;
+        let _e88 = direction_ts.y;
+        let direction_1 = ((_e61[0] * _e84) + (_e61[1] * _e88));
+        let _e91 = n;
+        let _e92 = laser_cos_in_plane(_e91, v_3, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
-    let _e111 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e111, metallic);
-    let _e113 = surface_base;
-    let diffuse_albedo = (_e113 * (1f - metallic));
-    let _e117 = weft_env_brdf_lut(_e65, roughness_6);
-    let _e118 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e118;
-    let _e120 = weft_env_brdf_from_lut(f0_4, _e117);
-    e_spec = _e120;
+    let _e96 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e96, metallic);
+    let _e98 = surface_base;
+    let diffuse_albedo = (_e98 * (1f - metallic));
+    let _e103 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    let _e105 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e105;
+    let _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    e_spec = _e107;
     {
-        let _e124 = material.thickness_min;
-        let _e127 = material.thickness_max;
-        let d1_1 = mix(_e124, _e127, offsets.x);
-        let _e132 = material.thickness_min;
-        let _e135 = material.thickness_max;
-        let d2_1 = mix(_e132, _e135, offsets.y);
-        let _e140 = material.film_strength;
-        let strength = saturate(_e140);
-        light_cos = v_dot_h_1;
+        let _e111 = material.thickness_min;
+        let _e114 = material.thickness_max;
+        let d1_1 = mix(_e111, _e114, offsets.x);
+        let _e119 = material.thickness_min;
+        let _e122 = material.thickness_max;
+        let d2_1 = mix(_e119, _e122, offsets.y);
+        let _e127 = material.film_strength;
+        let strength = saturate(_e127);
+        light_cos = _e57.v_dot_h;
         {
-            let _e143 = film_cos;
-            light_cos = _e143;
+            let _e131 = film_cos;
+            light_cos = _e131;
         }
         {
-            let _e146 = film_cos;
-            let _e147 = laser_film_reference(_e146, d1_1, d2_1, f0_4);
-            film_view = _e147;
-            let _e148 = light_cos;
-            let _e149 = laser_film_reference(_e148, d1_1, d2_1, f0_4);
-            film_light = _e149;
+            let _e134 = film_cos;
+            let _e135 = laser_film_reference(_e134, d1_1, d2_1, f0_4);
+            film_view = _e135;
+            let _e136 = light_cos;
+            let _e137 = laser_film_reference(_e136, d1_1, d2_1, f0_4);
+            film_light = _e137;
         }
-        let _e150 = f_light;
-        let _e151 = film_light;
-        f_light = mix(_e150, _e151, strength);
-        let _e153 = e_spec;
-        let _e154 = film_view;
-        e_spec = mix(_e153, (_e154 * (_e117.x + _e117.y)), strength);
+        let _e138 = f_light;
+        let _e139 = film_light;
+        f_light = mix(_e138, _e139, strength);
+        let _e141 = e_spec;
+        let _e142 = film_view;
+        e_spec = mix(_e141, (_e142 * (_e103.x + _e103.y)), strength);
     }
-    let _e162 = e_spec;
-    let kd = max((vec3(1f) - _e162), vec3(0f));
-    let _e167 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    let _e168 = n;
-    let _e169 = weft_d_ggx_nh(_e168, _e62, roughness_6);
-    let _e171 = f_light;
-    let specular = ((_e169 * _e167) * _e171);
-    let _e173 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e173);
-    let _e176 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e176) * n_dot_l_1);
-    let _e180 = n;
-    let _e182 = weft_prefiltered_radiance(reflect(-(_e55), _e180), roughness_6);
-    let _e183 = e_spec;
-    let indirect_specular = ((_e182 * _e183) * ao);
-    let _e186 = n;
-    let _e187 = weft_sh_irradiance(_e186);
-    let indirect_diffuse = (((_e187 * ao) * kd) * diffuse_albedo);
+    let _e150 = e_spec;
+    let kd = max((vec3(1f) - _e150), vec3(0f));
+    let _e157 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e158 = n;
+    let _e160 = weft_d_ggx_nh(_e158, _e57.h, roughness_6);
+    let _e162 = f_light;
+    let specular = ((_e160 * _e157) * _e162);
+    let _e164 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e164);
+    let _e167 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e167) * _e57.n_dot_l);
+    let _e172 = n;
+    let _e174 = weft_prefiltered_radiance(reflect(-(v_3), _e172), roughness_6);
+    let _e175 = e_spec;
+    let indirect_specular = ((_e174 * _e175) * ao);
+    let _e178 = n;
+    let _e179 = weft_sh_irradiance(_e178);
+    let indirect_diffuse = (((_e179 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -214,6 +226,19 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -387,73 +412,66 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e62), 0.0, 1.0);
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_2 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
+    vec3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
-    vec3 _e81 = surface_base;
-    vec3 f0_4 = mix(vec3(0.04), _e81, metallic);
-    vec3 _e83 = surface_base;
-    vec3 diffuse_albedo = (_e83 * (1.0 - metallic));
-    vec2 _e87 = weft_env_brdf_lut(_e65, roughness_6);
-    vec3 _e88 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e88;
-    vec3 _e90 = weft_env_brdf_from_lut(f0_4, _e87);
-    e_spec = _e90;
+    vec3 _e66 = surface_base;
+    vec3 f0_4 = mix(vec3(0.04), _e66, metallic);
+    vec3 _e68 = surface_base;
+    vec3 diffuse_albedo = (_e68 * (1.0 - metallic));
+    vec2 _e73 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    vec3 _e75 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e75;
+    vec3 _e77 = weft_env_brdf_from_lut(f0_4, _e73);
+    e_spec = _e77;
     {
-        float _e94 = _group_1_binding_0_fs.thickness_min;
-        float _e97 = _group_1_binding_0_fs.thickness_max;
-        float d1_1 = mix(_e94, _e97, offsets.x);
-        float _e102 = _group_1_binding_0_fs.thickness_min;
-        float _e105 = _group_1_binding_0_fs.thickness_max;
-        float d2_1 = mix(_e102, _e105, offsets.y);
-        float _e110 = _group_1_binding_0_fs.film_strength;
-        float strength = clamp(_e110, 0.0, 1.0);
-        light_cos = v_dot_h_1;
+        float _e81 = _group_1_binding_0_fs.thickness_min;
+        float _e84 = _group_1_binding_0_fs.thickness_max;
+        float d1_1 = mix(_e81, _e84, offsets.x);
+        float _e89 = _group_1_binding_0_fs.thickness_min;
+        float _e92 = _group_1_binding_0_fs.thickness_max;
+        float d2_1 = mix(_e89, _e92, offsets.y);
+        float _e97 = _group_1_binding_0_fs.film_strength;
+        float strength = clamp(_e97, 0.0, 1.0);
+        light_cos = _e57.v_dot_h;
         {
-            float _e115 = film_cos;
-            vec3 _e116 = laser_film_reference(_e115, d1_1, d2_1, f0_4);
-            film_view = _e116;
-            float _e117 = light_cos;
-            vec3 _e118 = laser_film_reference(_e117, d1_1, d2_1, f0_4);
-            film_light = _e118;
+            float _e103 = film_cos;
+            vec3 _e104 = laser_film_reference(_e103, d1_1, d2_1, f0_4);
+            film_view = _e104;
+            float _e105 = light_cos;
+            vec3 _e106 = laser_film_reference(_e105, d1_1, d2_1, f0_4);
+            film_light = _e106;
         }
-        vec3 _e119 = f_light;
-        vec3 _e120 = film_light;
-        f_light = mix(_e119, _e120, strength);
-        vec3 _e122 = e_spec;
-        vec3 _e123 = film_view;
-        e_spec = mix(_e122, (_e123 * (_e87.x + _e87.y)), strength);
+        vec3 _e107 = f_light;
+        vec3 _e108 = film_light;
+        f_light = mix(_e107, _e108, strength);
+        vec3 _e110 = e_spec;
+        vec3 _e111 = film_view;
+        e_spec = mix(_e110, (_e111 * (_e73.x + _e73.y)), strength);
     }
-    vec3 _e131 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e131), vec3(0.0));
-    float _e136 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    vec3 _e137 = n;
-    float _e138 = weft_d_ggx_nh(_e137, _e62, roughness_6);
-    vec3 _e140 = f_light;
-    vec3 specular = ((_e138 * _e136) * _e140);
-    vec3 _e142 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e142);
-    vec3 _e145 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e145) * n_dot_l_1);
-    vec3 _e149 = n;
-    vec3 _e151 = weft_prefiltered_radiance(reflect(-(_e55), _e149), roughness_6);
-    vec3 _e152 = e_spec;
-    vec3 indirect_specular = ((_e151 * _e152) * ao);
-    vec3 _e155 = n;
-    vec3 _e156 = weft_sh_irradiance(_e155);
-    vec3 indirect_diffuse = (((_e156 * ao) * kd) * diffuse_albedo);
+    vec3 _e119 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e119), vec3(0.0));
+    float _e126 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    vec3 _e127 = n;
+    float _e129 = weft_d_ggx_nh(_e127, _e57.h, roughness_6);
+    vec3 _e131 = f_light;
+    vec3 specular = ((_e129 * _e126) * _e131);
+    vec3 _e133 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e133);
+    vec3 _e136 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e136) * _e57.n_dot_l);
+    vec3 _e141 = n;
+    vec3 _e143 = weft_prefiltered_radiance(reflect(-(v_2), _e141), roughness_6);
+    vec3 _e144 = e_spec;
+    vec3 indirect_specular = ((_e143 * _e144) * ao);
+    vec3 _e147 = n;
+    vec3 _e148 = weft_sh_irradiance(_e147);
+    vec3 indirect_diffuse = (((_e148 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -230,16 +244,29 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -373,17 +400,17 @@ fn weft_film_spectral(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, b
     return clamp((rgb / rgb_white), vec3(0f), vec3(1f));
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p_1 = cross(direction, n_5);
+fn laser_cos_in_plane(n_6: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p_1 = cross(direction, n_6);
     let p_len = length(p_1);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     let p_unit = (p_1 / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -452,91 +479,84 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e55));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
+    let _e56 = n;
+    let _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        let _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e83 = material.color_direction;
-            let angle = radians(_e83);
+            let _e68 = material.color_direction;
+            let angle = radians(_e68);
             direction_ts = vec2<f32>(cos(angle), sin(angle));
         }
-        let _e90 = direction_ts.x;
-        let _e94 = direction_ts.y;
-        let direction_1 = ((_e76[0] * _e90) + (_e76[1] * _e94));
-        let _e97 = n;
-        let _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
-        film_cos = _e98;
+        let _e75 = direction_ts.x;
+        let _e79 = direction_ts.y;
+        let direction_1 = ((_e61[0] * _e75) + (_e61[1] * _e79));
+        let _e82 = n;
+        let _e83 = laser_cos_in_plane(_e82, v_3, direction_1);
+        film_cos = _e83;
     }
     surface_base = base;
-    let _e102 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e102, metallic);
-    let _e104 = surface_base;
-    let diffuse_albedo = (_e104 * (1f - metallic));
-    let _e108 = weft_env_brdf_lut(_e65, roughness_6);
-    let _e109 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e109;
-    let _e111 = weft_env_brdf_from_lut(f0_4, _e108);
-    e_spec = _e111;
+    let _e87 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e87, metallic);
+    let _e89 = surface_base;
+    let diffuse_albedo = (_e89 * (1f - metallic));
+    let _e94 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    let _e96 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    f_light = _e96;
+    let _e98 = weft_env_brdf_from_lut(f0_4, _e94);
+    e_spec = _e98;
     {
-        let _e115 = material.thickness_min;
-        let _e118 = material.thickness_max;
-        let d1_1 = mix(_e115, _e118, offsets.x);
-        let _e123 = material.thickness_min;
-        let _e126 = material.thickness_max;
-        let d2_1 = mix(_e123, _e126, offsets.y);
-        let _e131 = material.film_strength;
-        let strength = saturate(_e131);
-        light_cos = v_dot_h_1;
+        let _e102 = material.thickness_min;
+        let _e105 = material.thickness_max;
+        let d1_1 = mix(_e102, _e105, offsets.x);
+        let _e110 = material.thickness_min;
+        let _e113 = material.thickness_max;
+        let d2_1 = mix(_e110, _e113, offsets.y);
+        let _e118 = material.film_strength;
+        let strength = saturate(_e118);
+        light_cos = _e57.v_dot_h;
         {
-            let _e134 = film_cos;
-            light_cos = _e134;
+            let _e122 = film_cos;
+            light_cos = _e122;
         }
         {
-            let _e137 = film_cos;
-            let _e138 = laser_film_reference(_e137, d1_1, d2_1, f0_4);
-            film_view = _e138;
-            let _e139 = light_cos;
-            let _e140 = laser_film_reference(_e139, d1_1, d2_1, f0_4);
-            film_light = _e140;
+            let _e125 = film_cos;
+            let _e126 = laser_film_reference(_e125, d1_1, d2_1, f0_4);
+            film_view = _e126;
+            let _e127 = light_cos;
+            let _e128 = laser_film_reference(_e127, d1_1, d2_1, f0_4);
+            film_light = _e128;
         }
-        let _e141 = f_light;
-        let _e142 = film_light;
-        f_light = mix(_e141, _e142, strength);
-        let _e144 = e_spec;
-        let _e145 = film_view;
-        e_spec = mix(_e144, (_e145 * (_e108.x + _e108.y)), strength);
+        let _e129 = f_light;
+        let _e130 = film_light;
+        f_light = mix(_e129, _e130, strength);
+        let _e132 = e_spec;
+        let _e133 = film_view;
+        e_spec = mix(_e132, (_e133 * (_e94.x + _e94.y)), strength);
     }
-    let _e153 = e_spec;
-    let kd = max((vec3(1f) - _e153), vec3(0f));
-    let _e158 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    let _e159 = n;
-    let _e160 = weft_d_ggx_nh(_e159, _e62, roughness_6);
-    let _e162 = f_light;
-    let specular = ((_e160 * _e158) * _e162);
-    let _e164 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e164);
-    let _e167 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e167) * n_dot_l_1);
-    let _e171 = n;
-    let _e173 = weft_prefiltered_radiance(reflect(-(_e55), _e171), roughness_6);
-    let _e174 = e_spec;
-    let indirect_specular = ((_e173 * _e174) * ao);
-    let _e177 = n;
-    let _e178 = weft_sh_irradiance(_e177);
-    let indirect_diffuse = (((_e178 * ao) * kd) * diffuse_albedo);
+    let _e141 = e_spec;
+    let kd = max((vec3(1f) - _e141), vec3(0f));
+    let _e148 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e149 = n;
+    let _e151 = weft_d_ggx_nh(_e149, _e57.h, roughness_6);
+    let _e153 = f_light;
+    let specular = ((_e151 * _e148) * _e153);
+    let _e155 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e155);
+    let _e158 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e158) * _e57.n_dot_l);
+    let _e163 = n;
+    let _e165 = weft_prefiltered_radiance(reflect(-(v_3), _e163), roughness_6);
+    let _e166 = e_spec;
+    let indirect_specular = ((_e165 * _e166) * ao);
+    let _e169 = n;
+    let _e170 = weft_sh_irradiance(_e169);
+    let indirect_diffuse = (((_e170 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -232,26 +246,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -450,82 +484,73 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
     {
-        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        let _e63 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e63.xyz;
-        let _e67 = material.normal_strength;
-        let _e68 = weft_unpack_normal(texel_1, _e67);
-        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        let _e58 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e58.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e55));
-    let _e77 = n;
-    let n_dot_l_1 = saturate(dot(_e77, _e70));
-    let _e80 = n;
-    let n_dot_h = saturate(dot(_e80, _e73));
-    let v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    let _e65 = n;
+    let _e66 = weft_main_light_geometry(_e65, v_3);
+    film_cos = _e66.n_dot_v;
     surface_base = base;
-    let _e92 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e92, metallic);
-    let _e94 = surface_base;
-    let diffuse_albedo = (_e94 * (1f - metallic));
-    let _e98 = weft_env_brdf_lut(_e76, roughness_6);
-    let _e99 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e99;
-    let _e101 = weft_env_brdf_from_lut(f0_4, _e98);
-    e_spec = _e101;
+    let _e75 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e75, metallic);
+    let _e77 = surface_base;
+    let diffuse_albedo = (_e77 * (1f - metallic));
+    let _e82 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    let _e84 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e84;
+    let _e86 = weft_env_brdf_from_lut(f0_4, _e82);
+    e_spec = _e86;
     {
-        let _e105 = material.thickness_min;
-        let _e108 = material.thickness_max;
-        let d1_1 = mix(_e105, _e108, offsets.x);
-        let _e113 = material.thickness_min;
-        let _e116 = material.thickness_max;
-        let d2_1 = mix(_e113, _e116, offsets.y);
-        let _e121 = material.film_strength;
-        let strength_1 = saturate(_e121);
-        light_cos = v_dot_h_1;
+        let _e90 = material.thickness_min;
+        let _e93 = material.thickness_max;
+        let d1_1 = mix(_e90, _e93, offsets.x);
+        let _e98 = material.thickness_min;
+        let _e101 = material.thickness_max;
+        let d2_1 = mix(_e98, _e101, offsets.y);
+        let _e106 = material.film_strength;
+        let strength_2 = saturate(_e106);
+        light_cos = _e66.v_dot_h;
         {
-            let _e126 = film_cos;
-            let _e127 = laser_film_reference(_e126, d1_1, d2_1, f0_4);
-            film_view = _e127;
-            let _e128 = light_cos;
-            let _e129 = laser_film_reference(_e128, d1_1, d2_1, f0_4);
-            film_light = _e129;
+            let _e112 = film_cos;
+            let _e113 = laser_film_reference(_e112, d1_1, d2_1, f0_4);
+            film_view = _e113;
+            let _e114 = light_cos;
+            let _e115 = laser_film_reference(_e114, d1_1, d2_1, f0_4);
+            film_light = _e115;
         }
-        let _e130 = f_light;
-        let _e131 = film_light;
-        f_light = mix(_e130, _e131, strength_1);
-        let _e133 = e_spec;
-        let _e134 = film_view;
-        e_spec = mix(_e133, (_e134 * (_e98.x + _e98.y)), strength_1);
+        let _e116 = f_light;
+        let _e117 = film_light;
+        f_light = mix(_e116, _e117, strength_2);
+        let _e119 = e_spec;
+        let _e120 = film_view;
+        e_spec = mix(_e119, (_e120 * (_e82.x + _e82.y)), strength_2);
     }
-    let _e142 = e_spec;
-    let kd = max((vec3(1f) - _e142), vec3(0f));
-    let _e147 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    let _e148 = n;
-    let _e149 = weft_d_ggx_nh(_e148, _e73, roughness_6);
-    let _e151 = f_light;
-    let specular = ((_e149 * _e147) * _e151);
-    let _e153 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e153);
-    let _e156 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e156) * n_dot_l_1);
-    let _e160 = n;
-    let _e162 = weft_prefiltered_radiance(reflect(-(_e55), _e160), roughness_6);
-    let _e163 = e_spec;
-    let indirect_specular = ((_e162 * _e163) * ao);
-    let _e166 = n;
-    let _e167 = weft_sh_irradiance(_e166);
-    let indirect_diffuse = (((_e167 * ao) * kd) * diffuse_albedo);
+    let _e128 = e_spec;
+    let kd = max((vec3(1f) - _e128), vec3(0f));
+    let _e135 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e136 = n;
+    let _e138 = weft_d_ggx_nh(_e136, _e66.h, roughness_6);
+    let _e140 = f_light;
+    let specular = ((_e138 * _e135) * _e140);
+    let _e142 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e142);
+    let _e145 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e145) * _e66.n_dot_l);
+    let _e150 = n;
+    let _e152 = weft_prefiltered_radiance(reflect(-(v_3), _e150), roughness_6);
+    let _e153 = e_spec;
+    let indirect_specular = ((_e152 * _e153) * ao);
+    let _e156 = n;
+    let _e157 = weft_sh_irradiance(_e156);
+    let indirect_diffuse = (((_e157 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -270,27 +283,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -299,6 +333,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -476,20 +522,20 @@ metal::float3 weft_film_spectral(
 }
 
 float laser_cos_in_plane(
-    metal::float3 n_5,
-    metal::float3 v_1,
+    metal::float3 n_7,
+    metal::float3 v_2,
     metal::float3 direction
 ) {
-    metal::float3 p_1 = metal::cross(direction, n_5);
+    metal::float3 p_1 = metal::cross(direction, n_7);
     float p_len = metal::length(p_1);
     if (p_len < 0.0001) {
-        float _e8 = weft_clamp_cos(metal::dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(metal::dot(n_7, v_2));
         return _e8;
     }
     metal::float3 p_unit = p_1 / metal::float3(p_len);
-    metal::float3 v_in_plane = v_1 - (metal::dot(v_1, p_unit) * p_unit);
+    metal::float3 v_in_plane = v_2 - (metal::dot(v_2, p_unit) * p_unit);
     float len = metal::length(v_in_plane);
-    float _e19 = weft_clamp_cos(metal::dot(n_5, v_in_plane) / metal::max(len, 0.0001));
+    float _e19 = weft_clamp_cos(metal::dot(n_7, v_in_plane) / metal::max(len, 0.0001));
     return _e19;
 }
 
@@ -513,7 +559,7 @@ metal::float3 laser_film_reference(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -528,7 +574,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -552,8 +598,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -575,7 +621,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -604,100 +650,91 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        metal::float3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        metal::float4 _e63 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e63.xyz;
-        float _e67 = material.normal_strength;
-        metal::float3 _e68 = weft_unpack_normal(texel_1, _e67);
-        metal::float3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        metal::float4 _e58 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e58.xyz;
+        float _e63 = material.normal_strength;
+        metal::float3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = n;
-    metal::float3 _e73 = weft_safe_normalize(_e70 + _e55, _e72);
-    metal::float3 _e74 = n;
-    float _e76 = weft_clamp_cos(metal::dot(_e74, _e55));
-    metal::float3 _e77 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e77, _e70));
-    metal::float3 _e80 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e80, _e73));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e73));
-    film_cos = _e76;
+    metal::float3 _e65 = n;
+    WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_4, weft_frame);
+    film_cos = _e66.n_dot_v;
     {
-        metal::float3x3 _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        metal::float3x3 _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float _e94 = material.color_direction;
-            float angle = ((_e94) * 0.017453292519943295474);
+            float _e77 = material.color_direction;
+            float angle = ((_e77) * 0.017453292519943295474);
             direction_ts = metal::float2(metal::cos(angle), metal::sin(angle));
         }
-        float _e101 = direction_ts.x;
-        float _e105 = direction_ts.y;
-        metal::float3 direction_1 = (_e87[0] * _e101) + (_e87[1] * _e105);
-        metal::float3 _e108 = n;
-        float _e109 = laser_cos_in_plane(_e108, _e55, direction_1);
-        film_cos = _e109;
+        float _e84 = direction_ts.x;
+        float _e88 = direction_ts.y;
+        metal::float3 direction_1 = (_e70[0] * _e84) + (_e70[1] * _e88);
+        metal::float3 _e91 = n;
+        float _e92 = laser_cos_in_plane(_e91, v_4, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
-    metal::float3 _e113 = surface_base;
-    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e113, metallic);
-    metal::float3 _e115 = surface_base;
-    metal::float3 diffuse_albedo = _e115 * (1.0 - metallic);
-    metal::float2 _e119 = weft_env_brdf_lut(_e76, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e120 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e120;
-    metal::float3 _e122 = weft_env_brdf_from_lut(f0_4, _e119);
-    e_spec = _e122;
+    metal::float3 _e96 = surface_base;
+    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e96, metallic);
+    metal::float3 _e98 = surface_base;
+    metal::float3 diffuse_albedo = _e98 * (1.0 - metallic);
+    metal::float2 _e103 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e105 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e105;
+    metal::float3 _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    e_spec = _e107;
     {
-        float _e126 = material.thickness_min;
-        float _e129 = material.thickness_max;
-        float d1_1 = metal::mix(_e126, _e129, offsets.x);
-        float _e134 = material.thickness_min;
-        float _e137 = material.thickness_max;
-        float d2_1 = metal::mix(_e134, _e137, offsets.y);
-        float _e142 = material.film_strength;
-        float strength_1 = metal::saturate(_e142);
-        light_cos = v_dot_h_1;
+        float _e111 = material.thickness_min;
+        float _e114 = material.thickness_max;
+        float d1_1 = metal::mix(_e111, _e114, offsets.x);
+        float _e119 = material.thickness_min;
+        float _e122 = material.thickness_max;
+        float d2_1 = metal::mix(_e119, _e122, offsets.y);
+        float _e127 = material.film_strength;
+        float strength_2 = metal::saturate(_e127);
+        light_cos = _e66.v_dot_h;
         {
-            float _e145 = film_cos;
-            light_cos = _e145;
+            float _e131 = film_cos;
+            light_cos = _e131;
         }
         {
-            float _e148 = film_cos;
-            metal::float3 _e149 = laser_film_reference(_e148, d1_1, d2_1, f0_4, material);
-            film_view = _e149;
-            float _e150 = light_cos;
-            metal::float3 _e151 = laser_film_reference(_e150, d1_1, d2_1, f0_4, material);
-            film_light = _e151;
+            float _e134 = film_cos;
+            metal::float3 _e135 = laser_film_reference(_e134, d1_1, d2_1, f0_4, material);
+            film_view = _e135;
+            float _e136 = light_cos;
+            metal::float3 _e137 = laser_film_reference(_e136, d1_1, d2_1, f0_4, material);
+            film_light = _e137;
         }
-        metal::float3 _e152 = f_light;
-        metal::float3 _e153 = film_light;
-        f_light = metal::mix(_e152, _e153, strength_1);
-        metal::float3 _e155 = e_spec;
-        metal::float3 _e156 = film_view;
-        e_spec = metal::mix(_e155, _e156 * (_e119.x + _e119.y), strength_1);
+        metal::float3 _e138 = f_light;
+        metal::float3 _e139 = film_light;
+        f_light = metal::mix(_e138, _e139, strength_2);
+        metal::float3 _e141 = e_spec;
+        metal::float3 _e142 = film_view;
+        e_spec = metal::mix(_e141, _e142 * (_e103.x + _e103.y), strength_2);
     }
-    metal::float3 _e164 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e164, metal::float3(0.0));
-    float _e169 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    metal::float3 _e170 = n;
-    float _e171 = weft_d_ggx_nh(_e170, _e73, roughness_6);
-    metal::float3 _e173 = f_light;
-    metal::float3 specular = (_e171 * _e169) * _e173;
-    metal::float3 _e175 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e175;
-    metal::float3 _e178 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e178) * n_dot_l_1;
-    metal::float3 _e182 = n;
-    metal::float3 _e184 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e182), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e185 = e_spec;
-    metal::float3 indirect_specular = (_e184 * _e185) * ao;
-    metal::float3 _e188 = n;
-    metal::float3 _e189 = weft_sh_irradiance(_e188, weft_frame);
-    metal::float3 indirect_diffuse = ((_e189 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e150 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e150, metal::float3(0.0));
+    float _e157 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    metal::float3 _e158 = n;
+    float _e160 = weft_d_ggx_nh(_e158, _e66.h, roughness_6);
+    metal::float3 _e162 = f_light;
+    metal::float3 specular = (_e160 * _e157) * _e162;
+    metal::float3 _e164 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e164;
+    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e167) * _e66.n_dot_l;
+    metal::float3 _e172 = n;
+    metal::float3 _e174 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e172), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e175 = e_spec;
+    metal::float3 indirect_specular = (_e174 * _e175) * ao;
+    metal::float3 _e178 = n;
+    metal::float3 _e179 = weft_sh_irradiance(_e178, weft_frame);
+    metal::float3 indirect_diffuse = ((_e179 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

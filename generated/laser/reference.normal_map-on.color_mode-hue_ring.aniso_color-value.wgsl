@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -232,26 +246,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -385,17 +419,17 @@ fn weft_film_spectral(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, b
     return clamp((rgb / rgb_white), vec3(0f), vec3(1f));
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p_1 = cross(direction, n_5);
+fn laser_cos_in_plane(n_7: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p_1 = cross(direction, n_7);
     let p_len = length(p_1);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     let p_unit = (p_1 / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -464,100 +498,91 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
     {
-        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        let _e63 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e63.xyz;
-        let _e67 = material.normal_strength;
-        let _e68 = weft_unpack_normal(texel_1, _e67);
-        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        let _e58 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e58.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e55));
-    let _e77 = n;
-    let n_dot_l_1 = saturate(dot(_e77, _e70));
-    let _e80 = n;
-    let n_dot_h = saturate(dot(_e80, _e73));
-    let v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    let _e65 = n;
+    let _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        let _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e94 = material.color_direction;
-            let angle = radians(_e94);
+            let _e77 = material.color_direction;
+            let angle = radians(_e77);
             direction_ts = vec2<f32>(cos(angle), sin(angle));
         }
-        let _e101 = direction_ts.x;
-        let _e105 = direction_ts.y;
-        let direction_1 = ((_e87[0] * _e101) + (_e87[1] * _e105));
-        let _e108 = n;
-        let _e109 = laser_cos_in_plane(_e108, _e55, direction_1);
-        film_cos = _e109;
+        let _e84 = direction_ts.x;
+        let _e88 = direction_ts.y;
+        let direction_1 = ((_e70[0] * _e84) + (_e70[1] * _e88));
+        let _e91 = n;
+        let _e92 = laser_cos_in_plane(_e91, v_4, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
-    let _e113 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e113, metallic);
-    let _e115 = surface_base;
-    let diffuse_albedo = (_e115 * (1f - metallic));
-    let _e119 = weft_env_brdf_lut(_e76, roughness_6);
-    let _e120 = weft_f_schlick(f0_4, v_dot_h_1);
-    f_light = _e120;
-    let _e122 = weft_env_brdf_from_lut(f0_4, _e119);
-    e_spec = _e122;
+    let _e96 = surface_base;
+    let f0_4 = mix(vec3(0.04f), _e96, metallic);
+    let _e98 = surface_base;
+    let diffuse_albedo = (_e98 * (1f - metallic));
+    let _e103 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    let _e105 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    f_light = _e105;
+    let _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    e_spec = _e107;
     {
-        let _e126 = material.thickness_min;
-        let _e129 = material.thickness_max;
-        let d1_1 = mix(_e126, _e129, offsets.x);
-        let _e134 = material.thickness_min;
-        let _e137 = material.thickness_max;
-        let d2_1 = mix(_e134, _e137, offsets.y);
-        let _e142 = material.film_strength;
-        let strength_1 = saturate(_e142);
-        light_cos = v_dot_h_1;
+        let _e111 = material.thickness_min;
+        let _e114 = material.thickness_max;
+        let d1_1 = mix(_e111, _e114, offsets.x);
+        let _e119 = material.thickness_min;
+        let _e122 = material.thickness_max;
+        let d2_1 = mix(_e119, _e122, offsets.y);
+        let _e127 = material.film_strength;
+        let strength_2 = saturate(_e127);
+        light_cos = _e66.v_dot_h;
         {
-            let _e145 = film_cos;
-            light_cos = _e145;
+            let _e131 = film_cos;
+            light_cos = _e131;
         }
         {
-            let _e148 = film_cos;
-            let _e149 = laser_film_reference(_e148, d1_1, d2_1, f0_4);
-            film_view = _e149;
-            let _e150 = light_cos;
-            let _e151 = laser_film_reference(_e150, d1_1, d2_1, f0_4);
-            film_light = _e151;
+            let _e134 = film_cos;
+            let _e135 = laser_film_reference(_e134, d1_1, d2_1, f0_4);
+            film_view = _e135;
+            let _e136 = light_cos;
+            let _e137 = laser_film_reference(_e136, d1_1, d2_1, f0_4);
+            film_light = _e137;
         }
-        let _e152 = f_light;
-        let _e153 = film_light;
-        f_light = mix(_e152, _e153, strength_1);
-        let _e155 = e_spec;
-        let _e156 = film_view;
-        e_spec = mix(_e155, (_e156 * (_e119.x + _e119.y)), strength_1);
+        let _e138 = f_light;
+        let _e139 = film_light;
+        f_light = mix(_e138, _e139, strength_2);
+        let _e141 = e_spec;
+        let _e142 = film_view;
+        e_spec = mix(_e141, (_e142 * (_e103.x + _e103.y)), strength_2);
     }
-    let _e164 = e_spec;
-    let kd = max((vec3(1f) - _e164), vec3(0f));
-    let _e169 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    let _e170 = n;
-    let _e171 = weft_d_ggx_nh(_e170, _e73, roughness_6);
-    let _e173 = f_light;
-    let specular = ((_e171 * _e169) * _e173);
-    let _e175 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e175);
-    let _e178 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e178) * n_dot_l_1);
-    let _e182 = n;
-    let _e184 = weft_prefiltered_radiance(reflect(-(_e55), _e182), roughness_6);
-    let _e185 = e_spec;
-    let indirect_specular = ((_e184 * _e185) * ao);
-    let _e188 = n;
-    let _e189 = weft_sh_irradiance(_e188);
-    let indirect_diffuse = (((_e189 * ao) * kd) * diffuse_albedo);
+    let _e150 = e_spec;
+    let kd = max((vec3(1f) - _e150), vec3(0f));
+    let _e157 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e158 = n;
+    let _e160 = weft_d_ggx_nh(_e158, _e66.h, roughness_6);
+    let _e162 = f_light;
+    let specular = ((_e160 * _e157) * _e162);
+    let _e164 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e164);
+    let _e167 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e167) * _e66.n_dot_l);
+    let _e172 = n;
+    let _e174 = weft_prefiltered_radiance(reflect(-(v_4), _e172), roughness_6);
+    let _e175 = e_spec;
+    let indirect_specular = ((_e174 * _e175) * ao);
+    let _e178 = n;
+    let _e179 = weft_sh_irradiance(_e178);
+    let indirect_diffuse = (((_e179 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

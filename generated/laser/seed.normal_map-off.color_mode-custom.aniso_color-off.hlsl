@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -103,16 +121,16 @@ Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> color_ramp : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -254,6 +272,41 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -349,7 +402,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -379,53 +432,46 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    float3 _e66 = n;
-    float n_dot_l_1 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h = saturate(dot(_e69, _e62));
-    float v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
+    float3 _e56 = n;
+    const WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
     {
-        float _e79 = film_cos;
-        const float3 _e80 = laser_seed_color(_e79, offsets);
-        surface_base = (base * _e80);
+        float _e64 = film_cos;
+        const float3 _e65 = laser_seed_color(_e64, offsets);
+        surface_base = (base * _e65);
     }
-    float3 _e84 = surface_base;
-    float3 f0_2 = lerp((0.04).xxx, _e84, metallic);
-    float3 _e86 = surface_base;
-    float3 diffuse_albedo = (_e86 * (1.0 - metallic));
-    const float2 _e90 = weft_env_brdf_lut(_e65, roughness_6);
-    const float3 _e91 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e91;
-    const float3 _e93 = weft_env_brdf_from_lut(f0_2, _e90);
-    e_spec = _e93;
-    float3 _e97 = e_spec;
-    float3 kd = max(((1.0).xxx - _e97), (0.0).xxx);
-    const float _e102 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    float3 _e103 = n;
-    const float _e104 = weft_d_ggx_nh(_e103, _e62, roughness_6);
-    float3 _e106 = f_light;
-    float3 specular = ((_e104 * _e102) * _e106);
-    const float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e108);
-    const float3 _e111 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e111) * n_dot_l_1);
-    float3 _e115 = n;
-    const float3 _e117 = weft_prefiltered_radiance(reflect(-(_e55), _e115), roughness_6);
-    float3 _e118 = e_spec;
-    float3 indirect_specular = ((_e117 * _e118) * ao);
-    float3 _e121 = n;
-    const float3 _e122 = weft_sh_irradiance(_e121);
-    float3 indirect_diffuse = (((_e122 * ao) * kd) * diffuse_albedo);
+    float3 _e69 = surface_base;
+    float3 f0_2 = lerp((0.04).xxx, _e69, metallic);
+    float3 _e71 = surface_base;
+    float3 diffuse_albedo = (_e71 * (1.0 - metallic));
+    const float2 _e76 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    const float3 _e78 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e78;
+    const float3 _e80 = weft_env_brdf_from_lut(f0_2, _e76);
+    e_spec = _e80;
+    float3 _e84 = e_spec;
+    float3 kd = max(((1.0).xxx - _e84), (0.0).xxx);
+    const float _e91 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    float3 _e92 = n;
+    const float _e94 = weft_d_ggx_nh(_e92, _e57.h, roughness_6);
+    float3 _e96 = f_light;
+    float3 specular = ((_e94 * _e91) * _e96);
+    const float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e98);
+    const float3 _e101 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e101) * _e57.n_dot_l);
+    float3 _e106 = n;
+    const float3 _e108 = weft_prefiltered_radiance(reflect(-(v_2), _e106), roughness_6);
+    float3 _e109 = e_spec;
+    float3 indirect_specular = ((_e108 * _e109) * ao);
+    float3 _e112 = n;
+    const float3 _e113 = weft_sh_irradiance(_e112);
+    float3 indirect_diffuse = (((_e113 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

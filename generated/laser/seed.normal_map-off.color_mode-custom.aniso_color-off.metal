@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -259,6 +272,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -376,8 +410,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -400,7 +434,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> color_ramp [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -429,53 +463,46 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e55, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e55));
-    metal::float3 _e66 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e62));
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
+    metal::float3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2, weft_frame);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
     {
-        float _e79 = film_cos;
-        metal::float3 _e80 = laser_seed_color(_e79, offsets, material, material_clamp_sampler, color_ramp);
-        surface_base = base * _e80;
+        float _e64 = film_cos;
+        metal::float3 _e65 = laser_seed_color(_e64, offsets, material, material_clamp_sampler, color_ramp);
+        surface_base = base * _e65;
     }
-    metal::float3 _e84 = surface_base;
-    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e84, metallic);
-    metal::float3 _e86 = surface_base;
-    metal::float3 diffuse_albedo = _e86 * (1.0 - metallic);
-    metal::float2 _e90 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e91 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e91;
-    metal::float3 _e93 = weft_env_brdf_from_lut(f0_2, _e90);
-    e_spec = _e93;
-    metal::float3 _e97 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e97, metal::float3(0.0));
-    float _e102 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    metal::float3 _e103 = n;
-    float _e104 = weft_d_ggx_nh(_e103, _e62, roughness_6);
-    metal::float3 _e106 = f_light;
-    metal::float3 specular = (_e104 * _e102) * _e106;
-    metal::float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e108;
-    metal::float3 _e111 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e111) * n_dot_l_1;
-    metal::float3 _e115 = n;
-    metal::float3 _e117 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e115), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e118 = e_spec;
-    metal::float3 indirect_specular = (_e117 * _e118) * ao;
-    metal::float3 _e121 = n;
-    metal::float3 _e122 = weft_sh_irradiance(_e121, weft_frame);
-    metal::float3 indirect_diffuse = ((_e122 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e69 = surface_base;
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e69, metallic);
+    metal::float3 _e71 = surface_base;
+    metal::float3 diffuse_albedo = _e71 * (1.0 - metallic);
+    metal::float2 _e76 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e78 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e78;
+    metal::float3 _e80 = weft_env_brdf_from_lut(f0_2, _e76);
+    e_spec = _e80;
+    metal::float3 _e84 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e84, metal::float3(0.0));
+    float _e91 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    metal::float3 _e92 = n;
+    float _e94 = weft_d_ggx_nh(_e92, _e57.h, roughness_6);
+    metal::float3 _e96 = f_light;
+    metal::float3 specular = (_e94 * _e91) * _e96;
+    metal::float3 _e98 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e98;
+    metal::float3 _e101 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e101) * _e57.n_dot_l;
+    metal::float3 _e106 = n;
+    metal::float3 _e108 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e106), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e109 = e_spec;
+    metal::float3 indirect_specular = (_e108 * _e109) * ao;
+    metal::float3 _e112 = n;
+    metal::float3 _e113 = weft_sh_irradiance(_e112, weft_frame);
+    metal::float3 indirect_diffuse = ((_e113 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -102,16 +120,16 @@ Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> direction_map : register(t8, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -255,17 +273,52 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -273,18 +326,18 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float laser_cos_in_plane(float3 n_5, float3 v_1, float3 direction)
+float laser_cos_in_plane(float3 n_6, float3 v_2, float3 direction)
 {
-    float3 p = cross(direction, n_5);
+    float3 p = cross(direction, n_6);
     float p_len = length(p);
     if ((p_len < 0.0001)) {
-        const float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        const float _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     float3 p_unit = (p / (p_len).xxx);
-    float3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    float3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    const float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    const float _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -348,7 +401,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -378,67 +431,60 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    float3 _e66 = n;
-    float n_dot_l_1 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h = saturate(dot(_e69, _e62));
-    float v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_3 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
+    float3 _e56 = n;
+    const WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        const float3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        const float3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float4 _e83 = direction_map.Sample(material_sampler, _e5);
-            float2 flow = ((_e83.xy * 2.0) - (1.0).xx);
+            float4 _e68 = direction_map.Sample(material_sampler, _e5);
+            float2 flow = ((_e68.xy * 2.0) - (1.0).xx);
             direction_ts = ((dot(flow, flow) > 1e-6) ? flow : float2(1.0, 0.0));
         }
-        float _e99 = direction_ts.x;
-        float _e103 = direction_ts.y;
-        float3 direction_1 = ((_e76[0] * _e99) + (_e76[1] * _e103));
-        float3 _e106 = n;
-        const float _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
-        film_cos = _e107;
+        float _e84 = direction_ts.x;
+        float _e88 = direction_ts.y;
+        float3 direction_1 = ((_e61[0] * _e84) + (_e61[1] * _e88));
+        float3 _e91 = n;
+        const float _e92 = laser_cos_in_plane(_e91, v_3, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
     {
-        float _e109 = film_cos;
-        const float3 _e110 = laser_seed_color(_e109, offsets);
-        surface_base = (base * _e110);
+        float _e94 = film_cos;
+        const float3 _e95 = laser_seed_color(_e94, offsets);
+        surface_base = (base * _e95);
     }
-    float3 _e114 = surface_base;
-    float3 f0_2 = lerp((0.04).xxx, _e114, metallic);
-    float3 _e116 = surface_base;
-    float3 diffuse_albedo = (_e116 * (1.0 - metallic));
-    const float2 _e120 = weft_env_brdf_lut(_e65, roughness_6);
-    const float3 _e121 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e121;
-    const float3 _e123 = weft_env_brdf_from_lut(f0_2, _e120);
-    e_spec = _e123;
-    float3 _e127 = e_spec;
-    float3 kd = max(((1.0).xxx - _e127), (0.0).xxx);
-    const float _e132 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    float3 _e133 = n;
-    const float _e134 = weft_d_ggx_nh(_e133, _e62, roughness_6);
-    float3 _e136 = f_light;
-    float3 specular = ((_e134 * _e132) * _e136);
-    const float3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e138);
-    const float3 _e141 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e141) * n_dot_l_1);
-    float3 _e145 = n;
-    const float3 _e147 = weft_prefiltered_radiance(reflect(-(_e55), _e145), roughness_6);
-    float3 _e148 = e_spec;
-    float3 indirect_specular = ((_e147 * _e148) * ao);
-    float3 _e151 = n;
-    const float3 _e152 = weft_sh_irradiance(_e151);
-    float3 indirect_diffuse = (((_e152 * ao) * kd) * diffuse_albedo);
+    float3 _e99 = surface_base;
+    float3 f0_2 = lerp((0.04).xxx, _e99, metallic);
+    float3 _e101 = surface_base;
+    float3 diffuse_albedo = (_e101 * (1.0 - metallic));
+    const float2 _e106 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    const float3 _e108 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e108;
+    const float3 _e110 = weft_env_brdf_from_lut(f0_2, _e106);
+    e_spec = _e110;
+    float3 _e114 = e_spec;
+    float3 kd = max(((1.0).xxx - _e114), (0.0).xxx);
+    const float _e121 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    float3 _e122 = n;
+    const float _e124 = weft_d_ggx_nh(_e122, _e57.h, roughness_6);
+    float3 _e126 = f_light;
+    float3 specular = ((_e124 * _e121) * _e126);
+    const float3 _e128 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e128);
+    const float3 _e131 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e131) * _e57.n_dot_l);
+    float3 _e136 = n;
+    const float3 _e138 = weft_prefiltered_radiance(reflect(-(v_3), _e136), roughness_6);
+    float3 _e139 = e_spec;
+    float3 indirect_specular = ((_e138 * _e139) * ao);
+    float3 _e142 = n;
+    const float3 _e143 = weft_sh_irradiance(_e142);
+    float3 indirect_diffuse = (((_e143 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

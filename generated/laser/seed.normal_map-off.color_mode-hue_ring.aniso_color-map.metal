@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -259,19 +272,40 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float2 weft_transform_uv(
@@ -282,20 +316,20 @@ metal::float2 weft_transform_uv(
 }
 
 float laser_cos_in_plane(
-    metal::float3 n_5,
-    metal::float3 v_1,
+    metal::float3 n_6,
+    metal::float3 v_2,
     metal::float3 direction
 ) {
-    metal::float3 p = metal::cross(direction, n_5);
+    metal::float3 p = metal::cross(direction, n_6);
     float p_len = metal::length(p);
     if (p_len < 0.0001) {
-        float _e8 = weft_clamp_cos(metal::dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(metal::dot(n_6, v_2));
         return _e8;
     }
     metal::float3 p_unit = p / metal::float3(p_len);
-    metal::float3 v_in_plane = v_1 - (metal::dot(v_1, p_unit) * p_unit);
+    metal::float3 v_in_plane = v_2 - (metal::dot(v_2, p_unit) * p_unit);
     float len = metal::length(v_in_plane);
-    float _e19 = weft_clamp_cos(metal::dot(n_5, v_in_plane) / metal::max(len, 0.0001));
+    float _e19 = weft_clamp_cos(metal::dot(n_6, v_in_plane) / metal::max(len, 0.0001));
     return _e19;
 }
 
@@ -377,8 +411,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -400,7 +434,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> direction_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -429,67 +463,60 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e55, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e55));
-    metal::float3 _e66 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e62));
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
+    metal::float3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3, weft_frame);
+    film_cos = _e57.n_dot_v;
     {
-        metal::float3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        metal::float3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            metal::float4 _e83 = direction_map.sample(material_sampler, _e5);
-            metal::float2 flow = (_e83.xy * 2.0) - metal::float2(1.0);
+            metal::float4 _e68 = direction_map.sample(material_sampler, _e5);
+            metal::float2 flow = (_e68.xy * 2.0) - metal::float2(1.0);
             direction_ts = (metal::dot(flow, flow) > 0.000001) ? flow : metal::float2(1.0, 0.0);
         }
-        float _e99 = direction_ts.x;
-        float _e103 = direction_ts.y;
-        metal::float3 direction_1 = (_e76[0] * _e99) + (_e76[1] * _e103);
-        metal::float3 _e106 = n;
-        float _e107 = laser_cos_in_plane(_e106, _e55, direction_1);
-        film_cos = _e107;
+        float _e84 = direction_ts.x;
+        float _e88 = direction_ts.y;
+        metal::float3 direction_1 = (_e61[0] * _e84) + (_e61[1] * _e88);
+        metal::float3 _e91 = n;
+        float _e92 = laser_cos_in_plane(_e91, v_3, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
     {
-        float _e109 = film_cos;
-        metal::float3 _e110 = laser_seed_color(_e109, offsets, material);
-        surface_base = base * _e110;
+        float _e94 = film_cos;
+        metal::float3 _e95 = laser_seed_color(_e94, offsets, material);
+        surface_base = base * _e95;
     }
-    metal::float3 _e114 = surface_base;
-    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e114, metallic);
-    metal::float3 _e116 = surface_base;
-    metal::float3 diffuse_albedo = _e116 * (1.0 - metallic);
-    metal::float2 _e120 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e121 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e121;
-    metal::float3 _e123 = weft_env_brdf_from_lut(f0_2, _e120);
-    e_spec = _e123;
-    metal::float3 _e127 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e127, metal::float3(0.0));
-    float _e132 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    metal::float3 _e133 = n;
-    float _e134 = weft_d_ggx_nh(_e133, _e62, roughness_6);
-    metal::float3 _e136 = f_light;
-    metal::float3 specular = (_e134 * _e132) * _e136;
-    metal::float3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e138;
-    metal::float3 _e141 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e141) * n_dot_l_1;
-    metal::float3 _e145 = n;
-    metal::float3 _e147 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e145), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e148 = e_spec;
-    metal::float3 indirect_specular = (_e147 * _e148) * ao;
-    metal::float3 _e151 = n;
-    metal::float3 _e152 = weft_sh_irradiance(_e151, weft_frame);
-    metal::float3 indirect_diffuse = ((_e152 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e99 = surface_base;
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e99, metallic);
+    metal::float3 _e101 = surface_base;
+    metal::float3 diffuse_albedo = _e101 * (1.0 - metallic);
+    metal::float2 _e106 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e108 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e108;
+    metal::float3 _e110 = weft_env_brdf_from_lut(f0_2, _e106);
+    e_spec = _e110;
+    metal::float3 _e114 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e114, metal::float3(0.0));
+    float _e121 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    metal::float3 _e122 = n;
+    float _e124 = weft_d_ggx_nh(_e122, _e57.h, roughness_6);
+    metal::float3 _e126 = f_light;
+    metal::float3 specular = (_e124 * _e121) * _e126;
+    metal::float3 _e128 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e128;
+    metal::float3 _e131 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e131) * _e57.n_dot_l;
+    metal::float3 _e136 = n;
+    metal::float3 _e138 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e136), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e139 = e_spec;
+    metal::float3 indirect_specular = (_e138 * _e139) * ao;
+    metal::float3 _e142 = n;
+    metal::float3 _e143 = weft_sh_irradiance(_e142, weft_frame);
+    metal::float3 indirect_diffuse = ((_e143 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -207,6 +219,19 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -271,53 +296,46 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e62), 0.0, 1.0);
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_2 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
+    vec3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
     {
-        float _e79 = film_cos;
-        vec3 _e80 = laser_seed_color(_e79, offsets);
-        surface_base = (base * _e80);
+        float _e64 = film_cos;
+        vec3 _e65 = laser_seed_color(_e64, offsets);
+        surface_base = (base * _e65);
     }
-    vec3 _e84 = surface_base;
-    vec3 f0_2 = mix(vec3(0.04), _e84, metallic);
-    vec3 _e86 = surface_base;
-    vec3 diffuse_albedo = (_e86 * (1.0 - metallic));
-    vec2 _e90 = weft_env_brdf_lut(_e65, roughness_6);
-    vec3 _e91 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e91;
-    vec3 _e93 = weft_env_brdf_from_lut(f0_2, _e90);
-    e_spec = _e93;
-    vec3 _e97 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e97), vec3(0.0));
-    float _e102 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    vec3 _e103 = n;
-    float _e104 = weft_d_ggx_nh(_e103, _e62, roughness_6);
-    vec3 _e106 = f_light;
-    vec3 specular = ((_e104 * _e102) * _e106);
-    vec3 _e108 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e108);
-    vec3 _e111 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e111) * n_dot_l_1);
-    vec3 _e115 = n;
-    vec3 _e117 = weft_prefiltered_radiance(reflect(-(_e55), _e115), roughness_6);
-    vec3 _e118 = e_spec;
-    vec3 indirect_specular = ((_e117 * _e118) * ao);
-    vec3 _e121 = n;
-    vec3 _e122 = weft_sh_irradiance(_e121);
-    vec3 indirect_diffuse = (((_e122 * ao) * kd) * diffuse_albedo);
+    vec3 _e69 = surface_base;
+    vec3 f0_2 = mix(vec3(0.04), _e69, metallic);
+    vec3 _e71 = surface_base;
+    vec3 diffuse_albedo = (_e71 * (1.0 - metallic));
+    vec2 _e76 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    vec3 _e78 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e78;
+    vec3 _e80 = weft_env_brdf_from_lut(f0_2, _e76);
+    e_spec = _e80;
+    vec3 _e84 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e84), vec3(0.0));
+    float _e91 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    vec3 _e92 = n;
+    float _e94 = weft_d_ggx_nh(_e92, _e57.h, roughness_6);
+    vec3 _e96 = f_light;
+    vec3 specular = ((_e94 * _e91) * _e96);
+    vec3 _e98 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e98);
+    vec3 _e101 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e101) * _e57.n_dot_l);
+    vec3 _e106 = n;
+    vec3 _e108 = weft_prefiltered_radiance(reflect(-(v_2), _e106), roughness_6);
+    vec3 _e109 = e_spec;
+    vec3 indirect_specular = ((_e108 * _e109) * ao);
+    vec3 _e112 = n;
+    vec3 _e113 = weft_sh_irradiance(_e112);
+    vec3 indirect_diffuse = (((_e113 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

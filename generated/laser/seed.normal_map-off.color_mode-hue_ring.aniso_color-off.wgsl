@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,6 +229,19 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -304,53 +331,46 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e55));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
+    let _e56 = n;
+    let _e57 = weft_main_light_geometry(_e56, v_2);
+    film_cos = _e57.n_dot_v;
     surface_base = base;
     {
-        let _e79 = film_cos;
-        let _e80 = laser_seed_color(_e79, offsets);
-        surface_base = (base * _e80);
+        let _e64 = film_cos;
+        let _e65 = laser_seed_color(_e64, offsets);
+        surface_base = (base * _e65);
     }
-    let _e84 = surface_base;
-    let f0_2 = mix(vec3(0.04f), _e84, metallic);
-    let _e86 = surface_base;
-    let diffuse_albedo = (_e86 * (1f - metallic));
-    let _e90 = weft_env_brdf_lut(_e65, roughness_6);
-    let _e91 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e91;
-    let _e93 = weft_env_brdf_from_lut(f0_2, _e90);
-    e_spec = _e93;
-    let _e97 = e_spec;
-    let kd = max((vec3(1f) - _e97), vec3(0f));
-    let _e102 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    let _e103 = n;
-    let _e104 = weft_d_ggx_nh(_e103, _e62, roughness_6);
-    let _e106 = f_light;
-    let specular = ((_e104 * _e102) * _e106);
-    let _e108 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e108);
-    let _e111 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e111) * n_dot_l_1);
-    let _e115 = n;
-    let _e117 = weft_prefiltered_radiance(reflect(-(_e55), _e115), roughness_6);
-    let _e118 = e_spec;
-    let indirect_specular = ((_e117 * _e118) * ao);
-    let _e121 = n;
-    let _e122 = weft_sh_irradiance(_e121);
-    let indirect_diffuse = (((_e122 * ao) * kd) * diffuse_albedo);
+    let _e69 = surface_base;
+    let f0_2 = mix(vec3(0.04f), _e69, metallic);
+    let _e71 = surface_base;
+    let diffuse_albedo = (_e71 * (1f - metallic));
+    let _e76 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    let _e78 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e78;
+    let _e80 = weft_env_brdf_from_lut(f0_2, _e76);
+    e_spec = _e80;
+    let _e84 = e_spec;
+    let kd = max((vec3(1f) - _e84), vec3(0f));
+    let _e91 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e92 = n;
+    let _e94 = weft_d_ggx_nh(_e92, _e57.h, roughness_6);
+    let _e96 = f_light;
+    let specular = ((_e94 * _e91) * _e96);
+    let _e98 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e98);
+    let _e101 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e101) * _e57.n_dot_l);
+    let _e106 = n;
+    let _e108 = weft_prefiltered_radiance(reflect(-(v_2), _e106), roughness_6);
+    let _e109 = e_spec;
+    let indirect_specular = ((_e108 * _e109) * ao);
+    let _e112 = n;
+    let _e113 = weft_sh_irradiance(_e112);
+    let indirect_diffuse = (((_e113 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -214,33 +226,46 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float laser_cos_in_plane(vec3 n_5, vec3 v_1, vec3 direction) {
-    vec3 p = cross(direction, n_5);
+float laser_cos_in_plane(vec3 n_6, vec3 v_2, vec3 direction) {
+    vec3 p = cross(direction, n_6);
     float p_len = length(p);
     if ((p_len < 0.0001)) {
-        float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     vec3 p_unit = (p / vec3(p_len));
-    vec3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    vec3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    float _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -304,67 +329,60 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e55));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e62), 0.0, 1.0);
-    film_cos = _e65;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
+    vec3 _e56 = n;
+    WeftLightGeometry _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        mat3x3 _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        mat3x3 _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float _e83 = _group_1_binding_0_fs.color_direction;
-            float angle = radians(_e83);
+            float _e68 = _group_1_binding_0_fs.color_direction;
+            float angle = radians(_e68);
             direction_ts = vec2(cos(angle), sin(angle));
         }
-        float _e90 = direction_ts.x;
-        float _e94 = direction_ts.y;
-        vec3 direction_1 = ((_e76[0] * _e90) + (_e76[1] * _e94));
-        vec3 _e97 = n;
-        float _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
-        film_cos = _e98;
+        float _e75 = direction_ts.x;
+        float _e79 = direction_ts.y;
+        vec3 direction_1 = ((_e61[0] * _e75) + (_e61[1] * _e79));
+        vec3 _e82 = n;
+        float _e83 = laser_cos_in_plane(_e82, v_3, direction_1);
+        film_cos = _e83;
     }
     surface_base = base;
     {
-        float _e100 = film_cos;
-        vec3 _e101 = laser_seed_color(_e100, offsets);
-        surface_base = (base * _e101);
+        float _e85 = film_cos;
+        vec3 _e86 = laser_seed_color(_e85, offsets);
+        surface_base = (base * _e86);
     }
-    vec3 _e105 = surface_base;
-    vec3 f0_2 = mix(vec3(0.04), _e105, metallic);
-    vec3 _e107 = surface_base;
-    vec3 diffuse_albedo = (_e107 * (1.0 - metallic));
-    vec2 _e111 = weft_env_brdf_lut(_e65, roughness_6);
-    vec3 _e112 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e112;
-    vec3 _e114 = weft_env_brdf_from_lut(f0_2, _e111);
-    e_spec = _e114;
-    vec3 _e118 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e118), vec3(0.0));
-    float _e123 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    vec3 _e124 = n;
-    float _e125 = weft_d_ggx_nh(_e124, _e62, roughness_6);
-    vec3 _e127 = f_light;
-    vec3 specular = ((_e125 * _e123) * _e127);
-    vec3 _e129 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e129);
-    vec3 _e132 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e132) * n_dot_l_1);
-    vec3 _e136 = n;
-    vec3 _e138 = weft_prefiltered_radiance(reflect(-(_e55), _e136), roughness_6);
-    vec3 _e139 = e_spec;
-    vec3 indirect_specular = ((_e138 * _e139) * ao);
-    vec3 _e142 = n;
-    vec3 _e143 = weft_sh_irradiance(_e142);
-    vec3 indirect_diffuse = (((_e143 * ao) * kd) * diffuse_albedo);
+    vec3 _e90 = surface_base;
+    vec3 f0_2 = mix(vec3(0.04), _e90, metallic);
+    vec3 _e92 = surface_base;
+    vec3 diffuse_albedo = (_e92 * (1.0 - metallic));
+    vec2 _e97 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    vec3 _e99 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e99;
+    vec3 _e101 = weft_env_brdf_from_lut(f0_2, _e97);
+    e_spec = _e101;
+    vec3 _e105 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e105), vec3(0.0));
+    float _e112 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    vec3 _e113 = n;
+    float _e115 = weft_d_ggx_nh(_e113, _e57.h, roughness_6);
+    vec3 _e117 = f_light;
+    vec3 specular = ((_e115 * _e112) * _e117);
+    vec3 _e119 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e119);
+    vec3 _e122 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e122) * _e57.n_dot_l);
+    vec3 _e127 = n;
+    vec3 _e129 = weft_prefiltered_radiance(reflect(-(v_3), _e127), roughness_6);
+    vec3 _e130 = e_spec;
+    vec3 indirect_specular = ((_e129 * _e130) * ao);
+    vec3 _e133 = n;
+    vec3 _e134 = weft_sh_irradiance(_e133);
+    vec3 indirect_diffuse = (((_e134 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -222,33 +236,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p = cross(direction, n_5);
+fn laser_cos_in_plane(n_6: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p = cross(direction, n_6);
     let p_len = length(p);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
     let p_unit = (p / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -337,67 +364,60 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e55), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e55));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e55, _e62));
-    film_cos = _e65;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
+    let _e56 = n;
+    let _e57 = weft_main_light_geometry(_e56, v_3);
+    film_cos = _e57.n_dot_v;
     {
-        let _e76 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e61 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e83 = material.color_direction;
-            let angle = radians(_e83);
+            let _e68 = material.color_direction;
+            let angle = radians(_e68);
             direction_ts = vec2<f32>(cos(angle), sin(angle));
         }
-        let _e90 = direction_ts.x;
-        let _e94 = direction_ts.y;
-        let direction_1 = ((_e76[0] * _e90) + (_e76[1] * _e94));
-        let _e97 = n;
-        let _e98 = laser_cos_in_plane(_e97, _e55, direction_1);
-        film_cos = _e98;
+        let _e75 = direction_ts.x;
+        let _e79 = direction_ts.y;
+        let direction_1 = ((_e61[0] * _e75) + (_e61[1] * _e79));
+        let _e82 = n;
+        let _e83 = laser_cos_in_plane(_e82, v_3, direction_1);
+        film_cos = _e83;
     }
     surface_base = base;
     {
-        let _e100 = film_cos;
-        let _e101 = laser_seed_color(_e100, offsets);
-        surface_base = (base * _e101);
+        let _e85 = film_cos;
+        let _e86 = laser_seed_color(_e85, offsets);
+        surface_base = (base * _e86);
     }
-    let _e105 = surface_base;
-    let f0_2 = mix(vec3(0.04f), _e105, metallic);
-    let _e107 = surface_base;
-    let diffuse_albedo = (_e107 * (1f - metallic));
-    let _e111 = weft_env_brdf_lut(_e65, roughness_6);
-    let _e112 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e112;
-    let _e114 = weft_env_brdf_from_lut(f0_2, _e111);
-    e_spec = _e114;
-    let _e118 = e_spec;
-    let kd = max((vec3(1f) - _e118), vec3(0f));
-    let _e123 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-    let _e124 = n;
-    let _e125 = weft_d_ggx_nh(_e124, _e62, roughness_6);
-    let _e127 = f_light;
-    let specular = ((_e125 * _e123) * _e127);
-    let _e129 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e129);
-    let _e132 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e132) * n_dot_l_1);
-    let _e136 = n;
-    let _e138 = weft_prefiltered_radiance(reflect(-(_e55), _e136), roughness_6);
-    let _e139 = e_spec;
-    let indirect_specular = ((_e138 * _e139) * ao);
-    let _e142 = n;
-    let _e143 = weft_sh_irradiance(_e142);
-    let indirect_diffuse = (((_e143 * ao) * kd) * diffuse_albedo);
+    let _e90 = surface_base;
+    let f0_2 = mix(vec3(0.04f), _e90, metallic);
+    let _e92 = surface_base;
+    let diffuse_albedo = (_e92 * (1f - metallic));
+    let _e97 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
+    let _e99 = weft_f_schlick(f0_2, _e57.v_dot_h);
+    f_light = _e99;
+    let _e101 = weft_env_brdf_from_lut(f0_2, _e97);
+    e_spec = _e101;
+    let _e105 = e_spec;
+    let kd = max((vec3(1f) - _e105), vec3(0f));
+    let _e112 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e113 = n;
+    let _e115 = weft_d_ggx_nh(_e113, _e57.h, roughness_6);
+    let _e117 = f_light;
+    let specular = ((_e115 * _e112) * _e117);
+    let _e119 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e119);
+    let _e122 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e122) * _e57.n_dot_l);
+    let _e127 = n;
+    let _e129 = weft_prefiltered_radiance(reflect(-(v_3), _e127), roughness_6);
+    let _e130 = e_spec;
+    let indirect_specular = ((_e129 * _e130) * ao);
+    let _e133 = n;
+    let _e134 = weft_sh_irradiance(_e133);
+    let indirect_diffuse = (((_e134 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

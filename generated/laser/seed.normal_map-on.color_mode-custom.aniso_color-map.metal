@@ -43,6 +43,19 @@ struct WeftMaterial {
     float thickness_max;
     char _pad17[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -268,27 +281,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -299,6 +333,18 @@ metal::float3 weft_normal_from_tangent_space(
     return _e4;
 }
 
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -307,20 +353,20 @@ metal::float2 weft_transform_uv(
 }
 
 float laser_cos_in_plane(
-    metal::float3 n_5,
-    metal::float3 v_1,
+    metal::float3 n_7,
+    metal::float3 v_2,
     metal::float3 direction
 ) {
-    metal::float3 p = metal::cross(direction, n_5);
+    metal::float3 p = metal::cross(direction, n_7);
     float p_len = metal::length(p);
     if (p_len < 0.0001) {
-        float _e8 = weft_clamp_cos(metal::dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(metal::dot(n_7, v_2));
         return _e8;
     }
     metal::float3 p_unit = p / metal::float3(p_len);
-    metal::float3 v_in_plane = v_1 - (metal::dot(v_1, p_unit) * p_unit);
+    metal::float3 v_in_plane = v_2 - (metal::dot(v_2, p_unit) * p_unit);
     float len = metal::length(v_in_plane);
-    float _e19 = weft_clamp_cos(metal::dot(n_5, v_in_plane) / metal::max(len, 0.0001));
+    float _e19 = weft_clamp_cos(metal::dot(n_7, v_in_plane) / metal::max(len, 0.0001));
     return _e19;
 }
 
@@ -395,7 +441,7 @@ metal::float3 laser_seed_color(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -410,7 +456,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -434,8 +480,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -460,7 +506,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> color_ramp [[texture(6)]]
 , metal::texture2d<float, metal::access::sample> direction_map [[texture(7)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float film_cos = {};
     metal::float2 direction_ts = metal::float2(1.0, 0.0);
@@ -489,76 +535,67 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     metal::float4 _e47 = offset_map.sample(material_sampler, _e46);
     metal::float2 offsets = metal::saturate(_e47.xy);
-    metal::float3 _e55 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e52.v;
+    metal::float3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        metal::float3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        metal::float4 _e63 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e63.xyz;
-        float _e67 = material.normal_strength;
-        metal::float3 _e68 = weft_unpack_normal(texel_1, _e67);
-        metal::float3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        metal::float4 _e58 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e58.xyz;
+        float _e63 = material.normal_strength;
+        metal::float3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = n;
-    metal::float3 _e73 = weft_safe_normalize(_e70 + _e55, _e72);
-    metal::float3 _e74 = n;
-    float _e76 = weft_clamp_cos(metal::dot(_e74, _e55));
-    metal::float3 _e77 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e77, _e70));
-    metal::float3 _e80 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e80, _e73));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e55, _e73));
-    film_cos = _e76;
+    metal::float3 _e65 = n;
+    WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_4, weft_frame);
+    film_cos = _e66.n_dot_v;
     {
-        metal::float3x3 _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        metal::float3x3 _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            metal::float4 _e94 = direction_map.sample(material_sampler, _e5);
-            metal::float2 flow = (_e94.xy * 2.0) - metal::float2(1.0);
+            metal::float4 _e77 = direction_map.sample(material_sampler, _e5);
+            metal::float2 flow = (_e77.xy * 2.0) - metal::float2(1.0);
             direction_ts = (metal::dot(flow, flow) > 0.000001) ? flow : metal::float2(1.0, 0.0);
         }
-        float _e110 = direction_ts.x;
-        float _e114 = direction_ts.y;
-        metal::float3 direction_1 = (_e87[0] * _e110) + (_e87[1] * _e114);
-        metal::float3 _e117 = n;
-        float _e118 = laser_cos_in_plane(_e117, _e55, direction_1);
-        film_cos = _e118;
+        float _e93 = direction_ts.x;
+        float _e97 = direction_ts.y;
+        metal::float3 direction_1 = (_e70[0] * _e93) + (_e70[1] * _e97);
+        metal::float3 _e100 = n;
+        float _e101 = laser_cos_in_plane(_e100, v_4, direction_1);
+        film_cos = _e101;
     }
     surface_base = base;
     {
-        float _e120 = film_cos;
-        metal::float3 _e121 = laser_seed_color(_e120, offsets, material, material_clamp_sampler, color_ramp);
-        surface_base = base * _e121;
+        float _e103 = film_cos;
+        metal::float3 _e104 = laser_seed_color(_e103, offsets, material, material_clamp_sampler, color_ramp);
+        surface_base = base * _e104;
     }
-    metal::float3 _e125 = surface_base;
-    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e125, metallic);
-    metal::float3 _e127 = surface_base;
-    metal::float3 diffuse_albedo = _e127 * (1.0 - metallic);
-    metal::float2 _e131 = weft_env_brdf_lut(_e76, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e132 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e132;
-    metal::float3 _e134 = weft_env_brdf_from_lut(f0_2, _e131);
-    e_spec = _e134;
-    metal::float3 _e138 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e138, metal::float3(0.0));
-    float _e143 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    metal::float3 _e144 = n;
-    float _e145 = weft_d_ggx_nh(_e144, _e73, roughness_6);
-    metal::float3 _e147 = f_light;
-    metal::float3 specular = (_e145 * _e143) * _e147;
-    metal::float3 _e149 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e149;
-    metal::float3 _e152 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e152) * n_dot_l_1;
-    metal::float3 _e156 = n;
-    metal::float3 _e158 = weft_prefiltered_radiance(metal::reflect(-(_e55), _e156), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e159 = e_spec;
-    metal::float3 indirect_specular = (_e158 * _e159) * ao;
-    metal::float3 _e162 = n;
-    metal::float3 _e163 = weft_sh_irradiance(_e162, weft_frame);
-    metal::float3 indirect_diffuse = ((_e163 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e108 = surface_base;
+    metal::float3 f0_2 = metal::mix(metal::float3(0.04), _e108, metallic);
+    metal::float3 _e110 = surface_base;
+    metal::float3 diffuse_albedo = _e110 * (1.0 - metallic);
+    metal::float2 _e115 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e117 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e117;
+    metal::float3 _e119 = weft_env_brdf_from_lut(f0_2, _e115);
+    e_spec = _e119;
+    metal::float3 _e123 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e123, metal::float3(0.0));
+    float _e130 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    metal::float3 _e131 = n;
+    float _e133 = weft_d_ggx_nh(_e131, _e66.h, roughness_6);
+    metal::float3 _e135 = f_light;
+    metal::float3 specular = (_e133 * _e130) * _e135;
+    metal::float3 _e137 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e137;
+    metal::float3 _e140 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e140) * _e66.n_dot_l;
+    metal::float3 _e145 = n;
+    metal::float3 _e147 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e145), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e148 = e_spec;
+    metal::float3 indirect_specular = (_e147 * _e148) * ao;
+    metal::float3 _e151 = n;
+    metal::float3 _e152 = weft_sh_irradiance(_e151, weft_frame);
+    metal::float3 indirect_diffuse = ((_e152 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -235,21 +249,34 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -257,21 +284,28 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn laser_cos_in_plane(n_5: vec3<f32>, v_1: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p = cross(direction, n_5);
+fn laser_cos_in_plane(n_7: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let p = cross(direction, n_7);
     let p_len = length(p);
     if (p_len < 0.0001f) {
-        let _e8 = weft_clamp_cos(dot(n_5, v_1));
+        let _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     let p_unit = (p / vec3(p_len));
-    let v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
-    let _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001f)));
+    let _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001f)));
     return _e19;
 }
 
@@ -389,76 +423,67 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
     {
-        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        let _e63 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e63.xyz;
-        let _e67 = material.normal_strength;
-        let _e68 = weft_unpack_normal(texel_1, _e67);
-        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        let _e58 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e58.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e55));
-    let _e77 = n;
-    let n_dot_l_1 = saturate(dot(_e77, _e70));
-    let _e80 = n;
-    let n_dot_h = saturate(dot(_e80, _e73));
-    let v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    let _e65 = n;
+    let _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        let _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        let _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            let _e94 = textureSample(direction_map, material_sampler, _e5);
-            let flow = ((_e94.xy * 2f) - vec2(1f));
+            let _e77 = textureSample(direction_map, material_sampler, _e5);
+            let flow = ((_e77.xy * 2f) - vec2(1f));
             direction_ts = select(vec2<f32>(1f, 0f), flow, (dot(flow, flow) > 0.000001f));
         }
-        let _e110 = direction_ts.x;
-        let _e114 = direction_ts.y;
-        let direction_1 = ((_e87[0] * _e110) + (_e87[1] * _e114));
-        let _e117 = n;
-        let _e118 = laser_cos_in_plane(_e117, _e55, direction_1);
-        film_cos = _e118;
+        let _e93 = direction_ts.x;
+        let _e97 = direction_ts.y;
+        let direction_1 = ((_e70[0] * _e93) + (_e70[1] * _e97));
+        let _e100 = n;
+        let _e101 = laser_cos_in_plane(_e100, v_4, direction_1);
+        film_cos = _e101;
     }
     surface_base = base;
     {
-        let _e120 = film_cos;
-        let _e121 = laser_seed_color(_e120, offsets);
-        surface_base = (base * _e121);
+        let _e103 = film_cos;
+        let _e104 = laser_seed_color(_e103, offsets);
+        surface_base = (base * _e104);
     }
-    let _e125 = surface_base;
-    let f0_2 = mix(vec3(0.04f), _e125, metallic);
-    let _e127 = surface_base;
-    let diffuse_albedo = (_e127 * (1f - metallic));
-    let _e131 = weft_env_brdf_lut(_e76, roughness_6);
-    let _e132 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e132;
-    let _e134 = weft_env_brdf_from_lut(f0_2, _e131);
-    e_spec = _e134;
-    let _e138 = e_spec;
-    let kd = max((vec3(1f) - _e138), vec3(0f));
-    let _e143 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    let _e144 = n;
-    let _e145 = weft_d_ggx_nh(_e144, _e73, roughness_6);
-    let _e147 = f_light;
-    let specular = ((_e145 * _e143) * _e147);
-    let _e149 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e149);
-    let _e152 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e152) * n_dot_l_1);
-    let _e156 = n;
-    let _e158 = weft_prefiltered_radiance(reflect(-(_e55), _e156), roughness_6);
-    let _e159 = e_spec;
-    let indirect_specular = ((_e158 * _e159) * ao);
-    let _e162 = n;
-    let _e163 = weft_sh_irradiance(_e162);
-    let indirect_diffuse = (((_e163 * ao) * kd) * diffuse_albedo);
+    let _e108 = surface_base;
+    let f0_2 = mix(vec3(0.04f), _e108, metallic);
+    let _e110 = surface_base;
+    let diffuse_albedo = (_e110 * (1f - metallic));
+    let _e115 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    let _e117 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e117;
+    let _e119 = weft_env_brdf_from_lut(f0_2, _e115);
+    e_spec = _e119;
+    let _e123 = e_spec;
+    let kd = max((vec3(1f) - _e123), vec3(0f));
+    let _e130 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e131 = n;
+    let _e133 = weft_d_ggx_nh(_e131, _e66.h, roughness_6);
+    let _e135 = f_light;
+    let specular = ((_e133 * _e130) * _e135);
+    let _e137 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e137);
+    let _e140 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e140) * _e66.n_dot_l);
+    let _e145 = n;
+    let _e147 = weft_prefiltered_radiance(reflect(-(v_4), _e145), roughness_6);
+    let _e148 = e_spec;
+    let indirect_specular = ((_e147 * _e148) * ao);
+    let _e151 = n;
+    let _e152 = weft_sh_irradiance(_e151);
+    let indirect_diffuse = (((_e152 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

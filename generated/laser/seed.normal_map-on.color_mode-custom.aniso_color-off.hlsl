@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -104,16 +122,16 @@ Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> color_ramp : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -263,29 +281,72 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -383,7 +444,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -413,62 +474,53 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_3 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        const float3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        float4 _e63 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e63.xyz;
-        float _e67 = material.normal_strength;
-        const float3 _e68 = weft_unpack_normal(texel_1, _e67);
-        const float3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        float4 _e58 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e58.xyz;
+        float _e63 = material.normal_strength;
+        const float3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    const float3 _e70 = weft_main_light_direction();
-    float3 _e72 = n;
-    const float3 _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    float3 _e74 = n;
-    const float _e76 = weft_clamp_cos(dot(_e74, _e55));
-    float3 _e77 = n;
-    float n_dot_l_1 = saturate(dot(_e77, _e70));
-    float3 _e80 = n;
-    float n_dot_h = saturate(dot(_e80, _e73));
-    float v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    float3 _e65 = n;
+    const WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_3);
+    film_cos = _e66.n_dot_v;
     surface_base = base;
     {
-        float _e90 = film_cos;
-        const float3 _e91 = laser_seed_color(_e90, offsets);
-        surface_base = (base * _e91);
+        float _e73 = film_cos;
+        const float3 _e74 = laser_seed_color(_e73, offsets);
+        surface_base = (base * _e74);
     }
-    float3 _e95 = surface_base;
-    float3 f0_2 = lerp((0.04).xxx, _e95, metallic);
-    float3 _e97 = surface_base;
-    float3 diffuse_albedo = (_e97 * (1.0 - metallic));
-    const float2 _e101 = weft_env_brdf_lut(_e76, roughness_6);
-    const float3 _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e102;
-    const float3 _e104 = weft_env_brdf_from_lut(f0_2, _e101);
-    e_spec = _e104;
-    float3 _e108 = e_spec;
-    float3 kd = max(((1.0).xxx - _e108), (0.0).xxx);
-    const float _e113 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    float3 _e114 = n;
-    const float _e115 = weft_d_ggx_nh(_e114, _e73, roughness_6);
-    float3 _e117 = f_light;
-    float3 specular = ((_e115 * _e113) * _e117);
-    const float3 _e119 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e119);
-    const float3 _e122 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e122) * n_dot_l_1);
-    float3 _e126 = n;
-    const float3 _e128 = weft_prefiltered_radiance(reflect(-(_e55), _e126), roughness_6);
-    float3 _e129 = e_spec;
-    float3 indirect_specular = ((_e128 * _e129) * ao);
-    float3 _e132 = n;
-    const float3 _e133 = weft_sh_irradiance(_e132);
-    float3 indirect_diffuse = (((_e133 * ao) * kd) * diffuse_albedo);
+    float3 _e78 = surface_base;
+    float3 f0_2 = lerp((0.04).xxx, _e78, metallic);
+    float3 _e80 = surface_base;
+    float3 diffuse_albedo = (_e80 * (1.0 - metallic));
+    const float2 _e85 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    const float3 _e87 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e87;
+    const float3 _e89 = weft_env_brdf_from_lut(f0_2, _e85);
+    e_spec = _e89;
+    float3 _e93 = e_spec;
+    float3 kd = max(((1.0).xxx - _e93), (0.0).xxx);
+    const float _e100 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    float3 _e101 = n;
+    const float _e103 = weft_d_ggx_nh(_e101, _e66.h, roughness_6);
+    float3 _e105 = f_light;
+    float3 specular = ((_e103 * _e100) * _e105);
+    const float3 _e107 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e107);
+    const float3 _e110 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e110) * _e66.n_dot_l);
+    float3 _e115 = n;
+    const float3 _e117 = weft_prefiltered_radiance(reflect(-(v_3), _e115), roughness_6);
+    float3 _e118 = e_spec;
+    float3 indirect_specular = ((_e117 * _e118) * ao);
+    float3 _e121 = n;
+    const float3 _e122 = weft_sh_irradiance(_e121);
+    float3 indirect_diffuse = (((_e122 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

@@ -34,6 +34,20 @@ struct WeftMaterial {
     thickness_max: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -233,26 +247,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -373,62 +407,53 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e46 = weft_transform_uv(in_1.uv0_, _e45);
     let _e47 = textureSample(offset_map, material_sampler, _e46);
     let offsets = saturate(_e47.xy);
-    let _e55 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    let _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e52.v;
+    let geometric_n = _e52.n;
+    n = geometric_n;
     {
-        let _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        let _e63 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e63.xyz;
-        let _e67 = material.normal_strength;
-        let _e68 = weft_unpack_normal(texel_1, _e67);
-        let _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        let _e58 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e58.xyz;
+        let _e63 = material.normal_strength;
+        let _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    let _e70 = weft_main_light_direction();
-    let _e72 = n;
-    let _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    let _e74 = n;
-    let _e76 = weft_clamp_cos(dot(_e74, _e55));
-    let _e77 = n;
-    let n_dot_l_1 = saturate(dot(_e77, _e70));
-    let _e80 = n;
-    let n_dot_h = saturate(dot(_e80, _e73));
-    let v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    let _e65 = n;
+    let _e66 = weft_main_light_geometry(_e65, v_3);
+    film_cos = _e66.n_dot_v;
     surface_base = base;
     {
-        let _e90 = film_cos;
-        let _e91 = laser_seed_color(_e90, offsets);
-        surface_base = (base * _e91);
+        let _e73 = film_cos;
+        let _e74 = laser_seed_color(_e73, offsets);
+        surface_base = (base * _e74);
     }
-    let _e95 = surface_base;
-    let f0_2 = mix(vec3(0.04f), _e95, metallic);
-    let _e97 = surface_base;
-    let diffuse_albedo = (_e97 * (1f - metallic));
-    let _e101 = weft_env_brdf_lut(_e76, roughness_6);
-    let _e102 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e102;
-    let _e104 = weft_env_brdf_from_lut(f0_2, _e101);
-    e_spec = _e104;
-    let _e108 = e_spec;
-    let kd = max((vec3(1f) - _e108), vec3(0f));
-    let _e113 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    let _e114 = n;
-    let _e115 = weft_d_ggx_nh(_e114, _e73, roughness_6);
-    let _e117 = f_light;
-    let specular = ((_e115 * _e113) * _e117);
-    let _e119 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e119);
-    let _e122 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e122) * n_dot_l_1);
-    let _e126 = n;
-    let _e128 = weft_prefiltered_radiance(reflect(-(_e55), _e126), roughness_6);
-    let _e129 = e_spec;
-    let indirect_specular = ((_e128 * _e129) * ao);
-    let _e132 = n;
-    let _e133 = weft_sh_irradiance(_e132);
-    let indirect_diffuse = (((_e133 * ao) * kd) * diffuse_albedo);
+    let _e78 = surface_base;
+    let f0_2 = mix(vec3(0.04f), _e78, metallic);
+    let _e80 = surface_base;
+    let diffuse_albedo = (_e80 * (1f - metallic));
+    let _e85 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    let _e87 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e87;
+    let _e89 = weft_env_brdf_from_lut(f0_2, _e85);
+    e_spec = _e89;
+    let _e93 = e_spec;
+    let kd = max((vec3(1f) - _e93), vec3(0f));
+    let _e100 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e101 = n;
+    let _e103 = weft_d_ggx_nh(_e101, _e66.h, roughness_6);
+    let _e105 = f_light;
+    let specular = ((_e103 * _e100) * _e105);
+    let _e107 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e107);
+    let _e110 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e110) * _e66.n_dot_l);
+    let _e115 = n;
+    let _e117 = weft_prefiltered_radiance(reflect(-(v_3), _e115), roughness_6);
+    let _e118 = e_spec;
+    let indirect_specular = ((_e117 * _e118) * ao);
+    let _e121 = n;
+    let _e122 = weft_sh_irradiance(_e121);
+    let indirect_diffuse = (((_e122 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -32,6 +32,18 @@ struct WeftMaterial {
     float thickness_min;
     float thickness_max;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -223,21 +235,34 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -245,21 +270,28 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float laser_cos_in_plane(vec3 n_5, vec3 v_1, vec3 direction) {
-    vec3 p = cross(direction, n_5);
+float laser_cos_in_plane(vec3 n_7, vec3 v_2, vec3 direction) {
+    vec3 p = cross(direction, n_7);
     float p_len = length(p);
     if ((p_len < 0.0001)) {
-        float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        float _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     vec3 p_unit = (p / vec3(p_len));
-    vec3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    vec3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    float _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -351,76 +383,67 @@ void main() {
     vec2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     vec4 _e47 = texture(_group_1_binding_6_fs, vec2(_e46));
     vec2 offsets = clamp(_e47.xy, vec2(0.0), vec2(1.0));
-    vec3 _e55 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_4 = _e52.v;
+    vec3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        mat3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        vec4 _e63 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e63.xyz;
-        float _e67 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e68 = weft_unpack_normal(texel_1, _e67);
-        vec3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        vec4 _e58 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e58.xyz;
+        float _e63 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = n;
-    vec3 _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    vec3 _e74 = n;
-    float _e76 = weft_clamp_cos(dot(_e74, _e55));
-    vec3 _e77 = n;
-    float n_dot_l_1 = clamp(dot(_e77, _e70), 0.0, 1.0);
-    vec3 _e80 = n;
-    float n_dot_h = clamp(dot(_e80, _e73), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e55, _e73), 0.0, 1.0);
-    film_cos = _e76;
+    vec3 _e65 = n;
+    WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        mat3x3 _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        mat3x3 _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float _e94 = _group_1_binding_0_fs.color_direction;
-            float angle = radians(_e94);
+            float _e77 = _group_1_binding_0_fs.color_direction;
+            float angle = radians(_e77);
             direction_ts = vec2(cos(angle), sin(angle));
         }
-        float _e101 = direction_ts.x;
-        float _e105 = direction_ts.y;
-        vec3 direction_1 = ((_e87[0] * _e101) + (_e87[1] * _e105));
-        vec3 _e108 = n;
-        float _e109 = laser_cos_in_plane(_e108, _e55, direction_1);
-        film_cos = _e109;
+        float _e84 = direction_ts.x;
+        float _e88 = direction_ts.y;
+        vec3 direction_1 = ((_e70[0] * _e84) + (_e70[1] * _e88));
+        vec3 _e91 = n;
+        float _e92 = laser_cos_in_plane(_e91, v_4, direction_1);
+        film_cos = _e92;
     }
     surface_base = base;
     {
-        float _e111 = film_cos;
-        vec3 _e112 = laser_seed_color(_e111, offsets);
-        surface_base = (base * _e112);
+        float _e94 = film_cos;
+        vec3 _e95 = laser_seed_color(_e94, offsets);
+        surface_base = (base * _e95);
     }
-    vec3 _e116 = surface_base;
-    vec3 f0_2 = mix(vec3(0.04), _e116, metallic);
-    vec3 _e118 = surface_base;
-    vec3 diffuse_albedo = (_e118 * (1.0 - metallic));
-    vec2 _e122 = weft_env_brdf_lut(_e76, roughness_6);
-    vec3 _e123 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e123;
-    vec3 _e125 = weft_env_brdf_from_lut(f0_2, _e122);
-    e_spec = _e125;
-    vec3 _e129 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e129), vec3(0.0));
-    float _e134 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    vec3 _e135 = n;
-    float _e136 = weft_d_ggx_nh(_e135, _e73, roughness_6);
-    vec3 _e138 = f_light;
-    vec3 specular = ((_e136 * _e134) * _e138);
-    vec3 _e140 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e140);
-    vec3 _e143 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e143) * n_dot_l_1);
-    vec3 _e147 = n;
-    vec3 _e149 = weft_prefiltered_radiance(reflect(-(_e55), _e147), roughness_6);
-    vec3 _e150 = e_spec;
-    vec3 indirect_specular = ((_e149 * _e150) * ao);
-    vec3 _e153 = n;
-    vec3 _e154 = weft_sh_irradiance(_e153);
-    vec3 indirect_diffuse = (((_e154 * ao) * kd) * diffuse_albedo);
+    vec3 _e99 = surface_base;
+    vec3 f0_2 = mix(vec3(0.04), _e99, metallic);
+    vec3 _e101 = surface_base;
+    vec3 diffuse_albedo = (_e101 * (1.0 - metallic));
+    vec2 _e106 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    vec3 _e108 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e108;
+    vec3 _e110 = weft_env_brdf_from_lut(f0_2, _e106);
+    e_spec = _e110;
+    vec3 _e114 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e114), vec3(0.0));
+    float _e121 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    vec3 _e122 = n;
+    float _e124 = weft_d_ggx_nh(_e122, _e66.h, roughness_6);
+    vec3 _e126 = f_light;
+    vec3 specular = ((_e124 * _e121) * _e126);
+    vec3 _e128 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e128);
+    vec3 _e131 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e131) * _e66.n_dot_l);
+    vec3 _e136 = n;
+    vec3 _e138 = weft_prefiltered_radiance(reflect(-(v_4), _e136), roughness_6);
+    vec3 _e139 = e_spec;
+    vec3 indirect_specular = ((_e138 * _e139) * ao);
+    vec3 _e142 = n;
+    vec3 _e143 = weft_sh_irradiance(_e142);
+    vec3 indirect_diffuse = (((_e143 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

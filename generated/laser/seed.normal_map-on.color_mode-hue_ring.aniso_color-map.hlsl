@@ -40,6 +40,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -103,16 +121,16 @@ Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> direction_map : register(t8, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -256,23 +274,58 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -281,23 +334,31 @@ float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
     return _e4;
 }
 
+float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
 }
 
-float laser_cos_in_plane(float3 n_5, float3 v_1, float3 direction)
+float laser_cos_in_plane(float3 n_7, float3 v_2, float3 direction)
 {
-    float3 p = cross(direction, n_5);
+    float3 p = cross(direction, n_7);
     float p_len = length(p);
     if ((p_len < 0.0001)) {
-        const float _e8 = weft_clamp_cos(dot(n_5, v_1));
+        const float _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
     float3 p_unit = (p / (p_len).xxx);
-    float3 v_in_plane = (v_1 - (dot(v_1, p_unit) * p_unit));
+    float3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
-    const float _e19 = weft_clamp_cos((dot(n_5, v_in_plane) / max(len, 0.0001)));
+    const float _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001)));
     return _e19;
 }
 
@@ -361,7 +422,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float film_cos = (float)0;
     float2 direction_ts = float2(1.0, 0.0);
@@ -391,76 +452,67 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e46 = weft_transform_uv(in_1.uv0_, _e45);
     float4 _e47 = offset_map.Sample(material_sampler, _e46);
     float2 offsets = saturate(_e47.xy);
-    const float3 _e55 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e57 = weft_safe_normalize(in_1.world_normal, _e55);
-    n = _e57;
+    const WeftSurface _e52 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_4 = _e52.v;
+    float3 geometric_n = _e52.n;
+    n = geometric_n;
     {
-        const float3x3 _e60 = weft_tangent_frame(_e57, in_1.world_tangent);
-        float4 _e63 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e63.xyz;
-        float _e67 = material.normal_strength;
-        const float3 _e68 = weft_unpack_normal(texel_1, _e67);
-        const float3 _e69 = weft_normal_from_tangent_space(_e60, _e68);
-        n = _e69;
+        float4 _e58 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e58.xyz;
+        float _e63 = material.normal_strength;
+        const float3 _e64 = weft_mapped_normal(geometric_n, in_1.world_tangent, texel_2, _e63);
+        n = _e64;
     }
-    const float3 _e70 = weft_main_light_direction();
-    float3 _e72 = n;
-    const float3 _e73 = weft_safe_normalize((_e70 + _e55), _e72);
-    float3 _e74 = n;
-    const float _e76 = weft_clamp_cos(dot(_e74, _e55));
-    float3 _e77 = n;
-    float n_dot_l_1 = saturate(dot(_e77, _e70));
-    float3 _e80 = n;
-    float n_dot_h = saturate(dot(_e80, _e73));
-    float v_dot_h_1 = saturate(dot(_e55, _e73));
-    film_cos = _e76;
+    float3 _e65 = n;
+    const WeftLightGeometry _e66 = weft_main_light_geometry(_e65, v_4);
+    film_cos = _e66.n_dot_v;
     {
-        const float3x3 _e87 = weft_tangent_frame(_e57, in_1.world_tangent);
+        const float3x3 _e70 = weft_tangent_frame(geometric_n, in_1.world_tangent);
         {
-            float4 _e94 = direction_map.Sample(material_sampler, _e5);
-            float2 flow = ((_e94.xy * 2.0) - (1.0).xx);
+            float4 _e77 = direction_map.Sample(material_sampler, _e5);
+            float2 flow = ((_e77.xy * 2.0) - (1.0).xx);
             direction_ts = ((dot(flow, flow) > 1e-6) ? flow : float2(1.0, 0.0));
         }
-        float _e110 = direction_ts.x;
-        float _e114 = direction_ts.y;
-        float3 direction_1 = ((_e87[0] * _e110) + (_e87[1] * _e114));
-        float3 _e117 = n;
-        const float _e118 = laser_cos_in_plane(_e117, _e55, direction_1);
-        film_cos = _e118;
+        float _e93 = direction_ts.x;
+        float _e97 = direction_ts.y;
+        float3 direction_1 = ((_e70[0] * _e93) + (_e70[1] * _e97));
+        float3 _e100 = n;
+        const float _e101 = laser_cos_in_plane(_e100, v_4, direction_1);
+        film_cos = _e101;
     }
     surface_base = base;
     {
-        float _e120 = film_cos;
-        const float3 _e121 = laser_seed_color(_e120, offsets);
-        surface_base = (base * _e121);
+        float _e103 = film_cos;
+        const float3 _e104 = laser_seed_color(_e103, offsets);
+        surface_base = (base * _e104);
     }
-    float3 _e125 = surface_base;
-    float3 f0_2 = lerp((0.04).xxx, _e125, metallic);
-    float3 _e127 = surface_base;
-    float3 diffuse_albedo = (_e127 * (1.0 - metallic));
-    const float2 _e131 = weft_env_brdf_lut(_e76, roughness_6);
-    const float3 _e132 = weft_f_schlick(f0_2, v_dot_h_1);
-    f_light = _e132;
-    const float3 _e134 = weft_env_brdf_from_lut(f0_2, _e131);
-    e_spec = _e134;
-    float3 _e138 = e_spec;
-    float3 kd = max(((1.0).xxx - _e138), (0.0).xxx);
-    const float _e143 = weft_v_smith_ggx_correlated(_e76, n_dot_l_1, roughness_6);
-    float3 _e144 = n;
-    const float _e145 = weft_d_ggx_nh(_e144, _e73, roughness_6);
-    float3 _e147 = f_light;
-    float3 specular = ((_e145 * _e143) * _e147);
-    const float3 _e149 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e149);
-    const float3 _e152 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e152) * n_dot_l_1);
-    float3 _e156 = n;
-    const float3 _e158 = weft_prefiltered_radiance(reflect(-(_e55), _e156), roughness_6);
-    float3 _e159 = e_spec;
-    float3 indirect_specular = ((_e158 * _e159) * ao);
-    float3 _e162 = n;
-    const float3 _e163 = weft_sh_irradiance(_e162);
-    float3 indirect_diffuse = (((_e163 * ao) * kd) * diffuse_albedo);
+    float3 _e108 = surface_base;
+    float3 f0_2 = lerp((0.04).xxx, _e108, metallic);
+    float3 _e110 = surface_base;
+    float3 diffuse_albedo = (_e110 * (1.0 - metallic));
+    const float2 _e115 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
+    const float3 _e117 = weft_f_schlick(f0_2, _e66.v_dot_h);
+    f_light = _e117;
+    const float3 _e119 = weft_env_brdf_from_lut(f0_2, _e115);
+    e_spec = _e119;
+    float3 _e123 = e_spec;
+    float3 kd = max(((1.0).xxx - _e123), (0.0).xxx);
+    const float _e130 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    float3 _e131 = n;
+    const float _e133 = weft_d_ggx_nh(_e131, _e66.h, roughness_6);
+    float3 _e135 = f_light;
+    float3 specular = ((_e133 * _e130) * _e135);
+    const float3 _e137 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e137);
+    const float3 _e140 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e140) * _e66.n_dot_l);
+    float3 _e145 = n;
+    const float3 _e147 = weft_prefiltered_radiance(reflect(-(v_4), _e145), roughness_6);
+    float3 _e148 = e_spec;
+    float3 indirect_specular = ((_e147 * _e148) * ao);
+    float3 _e151 = n;
+    const float3 _e152 = weft_sh_irradiance(_e151);
+    float3 indirect_diffuse = (((_e152 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

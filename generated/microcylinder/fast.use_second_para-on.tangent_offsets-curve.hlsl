@@ -50,6 +50,13 @@ struct WeftMaterial {
     float4 albedo_map_st;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -153,16 +160,16 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 Texture2D<float4> albedo_map : register(t3, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -255,6 +262,21 @@ float3 weft_sh_irradiance(float3 n_1)
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -572,7 +594,7 @@ McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float4 s1_ = (0.0).xxxx;
     float4 s2_ = (0.0).xxxx;
 
@@ -598,42 +620,43 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float a2_1 = (true ? saturate(_e53) : 0.0);
     float _e60 = material.brightness;
     float brightness = max(_e60, 0.0);
-    const float3 _e68 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    const float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    float3 t_5 = _e72[0];
-    float3 b_3 = _e72[1];
-    const float3 _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001 - dot(_e70, _e68)), 0.0))), _e70);
-    const float3 _e83 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_5, b_3, _e70);
-    McFrame weft = ConstructMcFrame(b_3, t_5, _e70);
+    const WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_raw = _e65.v;
+    float3 n_3 = _e65.n;
+    const float3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
+    float3 t_5 = _e69[0];
+    float3 b_3 = _e69[1];
+    const float3 _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001 - dot(n_3, v_raw)), 0.0))), n_3);
+    const float3 _e80 = weft_main_light_direction();
+    McFrame warp = ConstructMcFrame(t_5, b_3, n_3);
+    McFrame weft = ConstructMcFrame(b_3, t_5, n_3);
     {
         {
             {
-                float4 _e94[9] = material.thread1_curve;
-                const float4 _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
-                s1_ = _e95;
+                float4 _e91[9] = material.thread1_curve;
+                const float4 _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
+                s1_ = _e92;
                 {
-                    float4 _e98[9] = material.thread2_curve;
-                    const float4 _e99 = mc_thread_curve_fast(weft, _e83, _e82, _e46, _e98);
-                    s2_ = _e99;
+                    float4 _e95[9] = material.thread2_curve;
+                    const float4 _e96 = mc_thread_curve_fast(weft, _e80, _e79, _e46, _e95);
+                    s2_ = _e96;
                 }
             }
         }
     }
-    float4 _e100 = s1_;
-    float4 _e101 = s2_;
-    const float3 _e104 = mc_combine(_e100, _e101, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
-    const float3 _e105 = weft_main_light_radiance();
-    float3 direct = (_e104 * _e105);
-    const float _e109 = microcylinder_mean_fresnel(_e29.eta);
-    float3 amb1_ = (_e29.albedo + (_e109).xxx);
-    const float _e114 = microcylinder_mean_fresnel(_e46.eta);
-    float3 amb2_ = (_e46.albedo + (_e114).xxx);
+    float4 _e97 = s1_;
+    float4 _e98 = s2_;
+    const float3 _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    const float3 _e102 = weft_main_light_radiance();
+    float3 direct = (_e101 * _e102);
+    const float _e106 = microcylinder_mean_fresnel(_e29.eta);
+    float3 amb1_ = (_e29.albedo + (_e106).xxx);
+    const float _e111 = microcylinder_mean_fresnel(_e46.eta);
+    float3 amb2_ = (_e46.albedo + (_e111).xxx);
     float cov = (a1_1 + a2_1);
     float3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / (max(cov, 0.0001)).xxx) : amb1_);
-    const float3 _e128 = weft_sh_irradiance(_e70);
-    float3 ambient = (_e128 * ambient_albedo);
+    const float3 _e125 = weft_sh_irradiance(n_3);
+    float3 ambient = (_e125 * ambient_albedo);
     float3 radiance = clamp(((direct + ambient) * brightness), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

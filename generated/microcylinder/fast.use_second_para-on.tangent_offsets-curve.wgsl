@@ -39,6 +39,11 @@ struct WeftMaterial {
     albedo_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -207,6 +212,12 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
+}
+
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -473,42 +484,43 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let a2_1 = select(0f, saturate(_e53), true);
     let _e60 = material.brightness;
     let brightness = max(_e60, 0f);
-    let _e68 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    let t_5 = _e72[0];
-    let b_3 = _e72[1];
-    let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
-    let _e83 = weft_main_light_direction();
-    let warp = McFrame(t_5, b_3, _e70);
-    let weft = McFrame(b_3, t_5, _e70);
+    let _e65 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_raw = _e65.v;
+    let n_3 = _e65.n;
+    let _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
+    let t_5 = _e69[0];
+    let b_3 = _e69[1];
+    let _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001f - dot(n_3, v_raw)), 0f))), n_3);
+    let _e80 = weft_main_light_direction();
+    let warp = McFrame(t_5, b_3, n_3);
+    let weft = McFrame(b_3, t_5, n_3);
     {
         {
             {
-                let _e94 = material.thread1_curve;
-                let _e95 = mc_thread_curve_fast(warp, _e83, _e82, _e29, _e94);
-                s1_ = _e95;
+                let _e91 = material.thread1_curve;
+                let _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
+                s1_ = _e92;
                 {
-                    let _e98 = material.thread2_curve;
-                    let _e99 = mc_thread_curve_fast(weft, _e83, _e82, _e46, _e98);
-                    s2_ = _e99;
+                    let _e95 = material.thread2_curve;
+                    let _e96 = mc_thread_curve_fast(weft, _e80, _e79, _e46, _e95);
+                    s2_ = _e96;
                 }
             }
         }
     }
-    let _e100 = s1_;
-    let _e101 = s2_;
-    let _e104 = mc_combine(_e100, _e101, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
-    let _e105 = weft_main_light_radiance();
-    let direct = (_e104 * _e105);
-    let _e109 = microcylinder_mean_fresnel(_e29.eta);
-    let amb1_ = (_e29.albedo + vec3(_e109));
-    let _e114 = microcylinder_mean_fresnel(_e46.eta);
-    let amb2_ = (_e46.albedo + vec3(_e114));
+    let _e97 = s1_;
+    let _e98 = s2_;
+    let _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    let _e102 = weft_main_light_radiance();
+    let direct = (_e101 * _e102);
+    let _e106 = microcylinder_mean_fresnel(_e29.eta);
+    let amb1_ = (_e29.albedo + vec3(_e106));
+    let _e111 = microcylinder_mean_fresnel(_e46.eta);
+    let amb2_ = (_e46.albedo + vec3(_e111));
     let cov = (a1_1 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
-    let _e128 = weft_sh_irradiance(_e70);
-    let ambient = (_e128 * ambient_albedo);
+    let _e125 = weft_sh_irradiance(n_3);
+    let ambient = (_e125 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

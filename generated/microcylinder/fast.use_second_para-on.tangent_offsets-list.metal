@@ -49,6 +49,10 @@ struct WeftMaterial {
     char _pad21[8];
     metal::float4 albedo_map_st;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -226,6 +230,16 @@ metal::float3 weft_sh_irradiance(
     e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -584,8 +598,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -600,7 +614,7 @@ fragment fs_mainOutput fs_main(
 , metal::sampler material_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> albedo_map [[texture(0)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float4 s1_ = metal::float4(0.0);
     metal::float4 s2_ = metal::float4(0.0);
     metal::float4 _e4 = material.albedo_map_st;
@@ -625,46 +639,47 @@ fragment fs_mainOutput fs_main(
     float a2_1 = true ? metal::saturate(_e53) : 0.0;
     float _e60 = material.brightness;
     float brightness = metal::max(_e60, 0.0);
-    metal::float3 _e68 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    metal::float3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    metal::float3 t_3 = _e72[0];
-    metal::float3 b_4 = _e72[1];
-    metal::float3 _e82 = weft_safe_normalize(_e68 + (_e70 * metal::max(0.001 - metal::dot(_e70, _e68), 0.0)), _e70);
-    metal::float3 _e83 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_3, b_4, _e70};
-    McFrame weft = McFrame {b_4, t_3, _e70};
+    WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_raw = _e65.v;
+    metal::float3 n_4 = _e65.n;
+    metal::float3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    metal::float3 t_3 = _e69[0];
+    metal::float3 b_4 = _e69[1];
+    metal::float3 _e79 = weft_safe_normalize(v_raw + (n_4 * metal::max(0.001 - metal::dot(n_4, v_raw), 0.0)), n_4);
+    metal::float3 _e80 = weft_main_light_direction(weft_frame);
+    McFrame warp = McFrame {t_3, b_4, n_4};
+    McFrame weft = McFrame {b_4, t_3, n_4};
     {
         {
             {
-                metal::float4 _e94 = material.thread1_offsets_a;
-                metal::float4 _e97 = material.thread1_offsets_b;
-                int _e100 = material.thread1_offset_count;
-                metal::float4 _e101 = mc_thread_list_fast(warp, _e83, _e82, _e29, _e94, _e97, _e100);
-                s1_ = _e101;
+                metal::float4 _e91 = material.thread1_offsets_a;
+                metal::float4 _e94 = material.thread1_offsets_b;
+                int _e97 = material.thread1_offset_count;
+                metal::float4 _e98 = mc_thread_list_fast(warp, _e80, _e79, _e29, _e91, _e94, _e97);
+                s1_ = _e98;
                 {
-                    metal::float4 _e104 = material.thread2_offsets_a;
-                    metal::float4 _e107 = material.thread2_offsets_b;
-                    int _e110 = material.thread2_offset_count;
-                    metal::float4 _e111 = mc_thread_list_fast(weft, _e83, _e82, _e46, _e104, _e107, _e110);
-                    s2_ = _e111;
+                    metal::float4 _e101 = material.thread2_offsets_a;
+                    metal::float4 _e104 = material.thread2_offsets_b;
+                    int _e107 = material.thread2_offset_count;
+                    metal::float4 _e108 = mc_thread_list_fast(weft, _e80, _e79, _e46, _e101, _e104, _e107);
+                    s2_ = _e108;
                 }
             }
         }
     }
-    metal::float4 _e112 = s1_;
-    metal::float4 _e113 = s2_;
-    metal::float3 _e116 = mc_combine(_e112, _e113, a1_2, a2_1, metal::dot(_e70, _e83), metal::dot(_e70, _e82));
-    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = _e116 * _e117;
-    float _e121 = microcylinder_mean_fresnel(_e29.eta);
-    metal::float3 amb1_ = _e29.albedo + metal::float3(_e121);
-    float _e126 = microcylinder_mean_fresnel(_e46.eta);
-    metal::float3 amb2_ = _e46.albedo + metal::float3(_e126);
+    metal::float4 _e109 = s1_;
+    metal::float4 _e110 = s2_;
+    metal::float3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, metal::dot(n_4, _e80), metal::dot(n_4, _e79));
+    metal::float3 _e114 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e113 * _e114;
+    float _e118 = microcylinder_mean_fresnel(_e29.eta);
+    metal::float3 amb1_ = _e29.albedo + metal::float3(_e118);
+    float _e123 = microcylinder_mean_fresnel(_e46.eta);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(_e123);
     float cov = a1_2 + a2_1;
     metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
-    metal::float3 _e140 = weft_sh_irradiance(_e70, weft_frame);
-    metal::float3 ambient = _e140 * ambient_albedo;
+    metal::float3 _e137 = weft_sh_irradiance(n_4, weft_frame);
+    metal::float3 ambient = _e137 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

@@ -37,6 +37,10 @@ struct WeftMaterial {
     float brightness;
     vec4 albedo_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -187,6 +191,12 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -443,37 +453,38 @@ void main() {
     float a2_1 = (false ? clamp(_e53, 0.0, 1.0) : 0.0);
     float _e60 = _group_1_binding_0_fs.brightness;
     float brightness = max(_e60, 0.0);
-    vec3 _e68 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    mat3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    vec3 t_5 = _e72[0];
-    vec3 b_3 = _e72[1];
-    vec3 _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001 - dot(_e70, _e68)), 0.0))), _e70);
-    vec3 _e83 = weft_main_light_direction();
-    McFrame warp = McFrame(t_5, b_3, _e70);
-    McFrame weft = McFrame(b_3, t_5, _e70);
+    WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_raw = _e65.v;
+    vec3 n_3 = _e65.n;
+    mat3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
+    vec3 t_5 = _e69[0];
+    vec3 b_3 = _e69[1];
+    vec3 _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001 - dot(n_3, v_raw)), 0.0))), n_3);
+    vec3 _e80 = weft_main_light_direction();
+    McFrame warp = McFrame(t_5, b_3, n_3);
+    McFrame weft = McFrame(b_3, t_5, n_3);
     {
         {
             {
-                vec4 _e94[9] = _group_1_binding_0_fs.thread1_curve;
-                vec4 _e95 = mc_thread_curve_low(warp, _e83, _e82, _e29, _e94);
-                s1_ = _e95;
+                vec4 _e91[9] = _group_1_binding_0_fs.thread1_curve;
+                vec4 _e92 = mc_thread_curve_low(warp, _e80, _e79, _e29, _e91);
+                s1_ = _e92;
             }
         }
     }
-    vec4 _e96 = s1_;
-    vec4 _e97 = s2_;
-    vec3 _e100 = mc_combine(_e96, _e97, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
-    vec3 _e101 = weft_main_light_radiance();
-    vec3 direct = (_e100 * _e101);
-    float _e105 = microcylinder_mean_fresnel(_e29.eta);
-    vec3 amb1_ = (_e29.albedo + vec3(_e105));
-    float _e110 = microcylinder_mean_fresnel(_e46.eta);
-    vec3 amb2_ = (_e46.albedo + vec3(_e110));
+    vec4 _e93 = s1_;
+    vec4 _e94 = s2_;
+    vec3 _e97 = mc_combine(_e93, _e94, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    vec3 _e98 = weft_main_light_radiance();
+    vec3 direct = (_e97 * _e98);
+    float _e102 = microcylinder_mean_fresnel(_e29.eta);
+    vec3 amb1_ = (_e29.albedo + vec3(_e102));
+    float _e107 = microcylinder_mean_fresnel(_e46.eta);
+    vec3 amb2_ = (_e46.albedo + vec3(_e107));
     float cov = (a1_1 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
-    vec3 _e124 = weft_sh_irradiance(_e70);
-    vec3 ambient = (_e124 * ambient_albedo);
+    vec3 _e121 = weft_sh_irradiance(n_3);
+    vec3 ambient = (_e121 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

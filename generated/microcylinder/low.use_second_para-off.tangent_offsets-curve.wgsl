@@ -39,6 +39,11 @@ struct WeftMaterial {
     albedo_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -195,6 +200,12 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
+}
+
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
@@ -478,37 +489,38 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let a2_1 = select(0f, saturate(_e53), false);
     let _e60 = material.brightness;
     let brightness = max(_e60, 0f);
-    let _e68 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    let _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    let t_5 = _e72[0];
-    let b_3 = _e72[1];
-    let _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001f - dot(_e70, _e68)), 0f))), _e70);
-    let _e83 = weft_main_light_direction();
-    let warp = McFrame(t_5, b_3, _e70);
-    let weft = McFrame(b_3, t_5, _e70);
+    let _e65 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_raw = _e65.v;
+    let n_3 = _e65.n;
+    let _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
+    let t_5 = _e69[0];
+    let b_3 = _e69[1];
+    let _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001f - dot(n_3, v_raw)), 0f))), n_3);
+    let _e80 = weft_main_light_direction();
+    let warp = McFrame(t_5, b_3, n_3);
+    let weft = McFrame(b_3, t_5, n_3);
     {
         {
             {
-                let _e94 = material.thread1_curve;
-                let _e95 = mc_thread_curve_low(warp, _e83, _e82, _e29, _e94);
-                s1_ = _e95;
+                let _e91 = material.thread1_curve;
+                let _e92 = mc_thread_curve_low(warp, _e80, _e79, _e29, _e91);
+                s1_ = _e92;
             }
         }
     }
-    let _e96 = s1_;
-    let _e97 = s2_;
-    let _e100 = mc_combine(_e96, _e97, a1_1, a2_1, dot(_e70, _e83), dot(_e70, _e82));
-    let _e101 = weft_main_light_radiance();
-    let direct = (_e100 * _e101);
-    let _e105 = microcylinder_mean_fresnel(_e29.eta);
-    let amb1_ = (_e29.albedo + vec3(_e105));
-    let _e110 = microcylinder_mean_fresnel(_e46.eta);
-    let amb2_ = (_e46.albedo + vec3(_e110));
+    let _e93 = s1_;
+    let _e94 = s2_;
+    let _e97 = mc_combine(_e93, _e94, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    let _e98 = weft_main_light_radiance();
+    let direct = (_e97 * _e98);
+    let _e102 = microcylinder_mean_fresnel(_e29.eta);
+    let amb1_ = (_e29.albedo + vec3(_e102));
+    let _e107 = microcylinder_mean_fresnel(_e46.eta);
+    let amb2_ = (_e46.albedo + vec3(_e107));
     let cov = (a1_1 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
-    let _e124 = weft_sh_irradiance(_e70);
-    let ambient = (_e124 * ambient_albedo);
+    let _e121 = weft_sh_irradiance(n_3);
+    let ambient = (_e121 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -37,6 +37,10 @@ struct WeftMaterial {
     float brightness;
     vec4 albedo_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -187,6 +191,12 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
 }
 
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
@@ -469,46 +479,47 @@ void main() {
     float a2_1 = (true ? clamp(_e53, 0.0, 1.0) : 0.0);
     float _e60 = _group_1_binding_0_fs.brightness;
     float brightness = max(_e60, 0.0);
-    vec3 _e68 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e70 = weft_safe_normalize(in_1.world_normal, _e68);
-    mat3x3 _e72 = weft_tangent_frame(_e70, in_1.world_tangent);
-    vec3 t_3 = _e72[0];
-    vec3 b_4 = _e72[1];
-    vec3 _e82 = weft_safe_normalize((_e68 + (_e70 * max((0.001 - dot(_e70, _e68)), 0.0))), _e70);
-    vec3 _e83 = weft_main_light_direction();
-    McFrame warp = McFrame(t_3, b_4, _e70);
-    McFrame weft = McFrame(b_4, t_3, _e70);
+    WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_raw = _e65.v;
+    vec3 n_4 = _e65.n;
+    mat3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    vec3 t_3 = _e69[0];
+    vec3 b_4 = _e69[1];
+    vec3 _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001 - dot(n_4, v_raw)), 0.0))), n_4);
+    vec3 _e80 = weft_main_light_direction();
+    McFrame warp = McFrame(t_3, b_4, n_4);
+    McFrame weft = McFrame(b_4, t_3, n_4);
     {
         {
             {
-                vec4 _e94 = _group_1_binding_0_fs.thread1_offsets_a;
-                vec4 _e97 = _group_1_binding_0_fs.thread1_offsets_b;
-                int _e100 = _group_1_binding_0_fs.thread1_offset_count;
-                vec4 _e101 = mc_thread_list_low(warp, _e83, _e82, _e29, _e94, _e97, _e100);
-                s1_ = _e101;
+                vec4 _e91 = _group_1_binding_0_fs.thread1_offsets_a;
+                vec4 _e94 = _group_1_binding_0_fs.thread1_offsets_b;
+                int _e97 = _group_1_binding_0_fs.thread1_offset_count;
+                vec4 _e98 = mc_thread_list_low(warp, _e80, _e79, _e29, _e91, _e94, _e97);
+                s1_ = _e98;
                 {
-                    vec4 _e104 = _group_1_binding_0_fs.thread2_offsets_a;
-                    vec4 _e107 = _group_1_binding_0_fs.thread2_offsets_b;
-                    int _e110 = _group_1_binding_0_fs.thread2_offset_count;
-                    vec4 _e111 = mc_thread_list_low(weft, _e83, _e82, _e46, _e104, _e107, _e110);
-                    s2_ = _e111;
+                    vec4 _e101 = _group_1_binding_0_fs.thread2_offsets_a;
+                    vec4 _e104 = _group_1_binding_0_fs.thread2_offsets_b;
+                    int _e107 = _group_1_binding_0_fs.thread2_offset_count;
+                    vec4 _e108 = mc_thread_list_low(weft, _e80, _e79, _e46, _e101, _e104, _e107);
+                    s2_ = _e108;
                 }
             }
         }
     }
-    vec4 _e112 = s1_;
-    vec4 _e113 = s2_;
-    vec3 _e116 = mc_combine(_e112, _e113, a1_2, a2_1, dot(_e70, _e83), dot(_e70, _e82));
-    vec3 _e117 = weft_main_light_radiance();
-    vec3 direct = (_e116 * _e117);
-    float _e121 = microcylinder_mean_fresnel(_e29.eta);
-    vec3 amb1_ = (_e29.albedo + vec3(_e121));
-    float _e126 = microcylinder_mean_fresnel(_e46.eta);
-    vec3 amb2_ = (_e46.albedo + vec3(_e126));
+    vec4 _e109 = s1_;
+    vec4 _e110 = s2_;
+    vec3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, dot(n_4, _e80), dot(n_4, _e79));
+    vec3 _e114 = weft_main_light_radiance();
+    vec3 direct = (_e113 * _e114);
+    float _e118 = microcylinder_mean_fresnel(_e29.eta);
+    vec3 amb1_ = (_e29.albedo + vec3(_e118));
+    float _e123 = microcylinder_mean_fresnel(_e46.eta);
+    vec3 amb2_ = (_e46.albedo + vec3(_e123));
     float cov = (a1_2 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
-    vec3 _e140 = weft_sh_irradiance(_e70);
-    vec3 ambient = (_e140 * ambient_albedo);
+    vec3 _e137 = weft_sh_irradiance(n_4);
+    vec3 ambient = (_e137 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

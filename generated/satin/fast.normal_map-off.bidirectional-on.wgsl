@@ -29,6 +29,20 @@ struct WeftMaterial {
     anisotropy: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -191,16 +205,29 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_2);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -234,29 +261,29 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_2.z);
+fn weft_v_smith_ggx_aniso_correlated(v_3: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_3.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_3.x), (alpha_b_2 * v_3.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
-    let _e9 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
+fn weft_spec_ggx_aniso(v_4: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_4 + l_1), vec3<f32>(0f, 0f, 1f));
     let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    let _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_5: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_1[2];
+    let n_5 = frame_1[2];
     let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_4);
+    let aniso_t = cross(dir_1, v_5);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -274,21 +301,21 @@ fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
     return _e14;
 }
 
-fn satin_env(frame_2: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+fn satin_env(frame_2: mat3x3<f32>, v_6: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
     var bent_1: vec3<f32>;
     var c_1: vec3<f32>;
 
-    let _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    let _e4 = weft_aniso_bent_normal(frame_2, v_6, k, roughness_6);
     bent_1 = _e4;
     let _e7 = bent_1;
-    let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_6), _e7), roughness_6);
     c_1 = _e9;
     {
-        let _e12 = weft_aniso_bent_normal(frame_2, v_5, -(k), roughness_6);
+        let _e12 = weft_aniso_bent_normal(frame_2, v_6, -(k), roughness_6);
         bent_1 = _e12;
         let _e13 = c_1;
         let _e15 = bent_1;
-        let _e17 = weft_prefiltered_radiance(reflect(-(v_5), _e15), roughness_6);
+        let _e17 = weft_prefiltered_radiance(reflect(-(v_6), _e15), roughness_6);
         c_1 = (0.5f * (_e13 + _e17));
     }
     let _e21 = c_1;
@@ -352,73 +379,67 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
     let noise = (0.5f + (0.5f * saturate(_e62.x)));
-    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    let _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_7 = _e71.v;
+    n = _e71.n;
+    let _e75 = n;
+    let _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     let _e78 = n;
-    let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    let _e81 = weft_main_light_direction();
-    let _e83 = n;
-    let _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    let _e85 = n;
-    let _e87 = weft_clamp_cos(dot(_e85, _e74));
-    let _e88 = n;
-    let n_dot_l = saturate(dot(_e88, _e81));
-    let v_dot_h_1 = saturate(dot(_e74, _e84));
-    let _e93 = weft_main_light_radiance();
-    let _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e96;
-    let _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    let _e79 = weft_main_light_geometry(_e78, v_7);
+    let _e80 = weft_main_light_radiance();
+    let _e83 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e83;
+    let _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e107 = material.specular_color;
-    let c1_ = saturate(_e107.xyz);
-    let _e112 = material.second_specular_color;
-    let c2_ = saturate(_e112.xyz);
-    let _e115 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e94 = material.specular_color;
+    let c1_ = saturate(_e94.xyz);
+    let _e99 = material.second_specular_color;
+    let c2_ = saturate(_e99.xyz);
+    let _e103 = weft_f_schlick(f0_2, _e79.v_dot_h);
     {
-        let _e120 = weft_max3_(c1_);
-        let t1_ = mix(c1_, vec3(_e120), 0.5f);
-        let _e124 = weft_max3_(c2_);
-        let t2_ = mix(c2_, vec3(_e124), 0.5f);
-        let _e129 = weft_max3_((t1_ + t2_));
-        let norm = (1f / max(1f, _e129));
+        let _e108 = weft_max3_(c1_);
+        let t1_ = mix(c1_, vec3(_e108), 0.5f);
+        let _e112 = weft_max3_(c2_);
+        let t2_ = mix(c2_, vec3(_e112), 0.5f);
+        let _e117 = weft_max3_((t1_ + t2_));
+        let norm = (1f / max(1f, _e117));
         let w1_ = (t1_ * norm);
         let w2_ = (t2_ * norm);
-        let _e136 = weft_aniso_to_frame(_e80, _e74);
-        let _e137 = weft_aniso_to_frame(_e80, _e81);
-        let _e139 = layers.narrow;
-        let _e140 = satin_lobe_reference(_e136, _e137, _e139);
-        let _e142 = layers.wide;
-        let _e143 = satin_lobe_reference(_e136, _e137, _e142);
-        specular = (((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise) * _e93);
-        let _e153 = weft_f_schlick(f0_2, _e87);
-        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e153)), vec3(0f));
-        let _e159 = weft_env_brdf_lut(_e87, roughness_7);
-        let _e160 = weft_env_brdf_from_lut(f0_2, _e159);
-        let e1_ = (_e160 * w1_);
-        let _e162 = weft_env_brdf_lut(_e87, roughness2_);
-        let _e163 = weft_env_brdf_from_lut(f0_2, _e162);
-        let e2_ = (_e163 * w2_);
+        let _e124 = weft_aniso_to_frame(_e77, v_7);
+        let _e126 = weft_aniso_to_frame(_e77, _e79.l);
+        let _e128 = layers.narrow;
+        let _e129 = satin_lobe_reference(_e124, _e126, _e128);
+        let _e131 = layers.wide;
+        let _e132 = satin_lobe_reference(_e124, _e126, _e131);
+        specular = (((((w1_ * _e129) + (w2_ * _e132)) * _e103) * noise) * _e80);
+        let _e143 = weft_f_schlick(f0_2, _e79.n_dot_v);
+        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e143)), vec3(0f));
+        let _e150 = weft_env_brdf_lut(_e79.n_dot_v, roughness_7);
+        let _e151 = weft_env_brdf_from_lut(f0_2, _e150);
+        let e1_ = (_e151 * w1_);
+        let _e154 = weft_env_brdf_lut(_e79.n_dot_v, roughness2_);
+        let _e155 = weft_env_brdf_from_lut(f0_2, _e154);
+        let e2_ = (_e155 * w2_);
         {
-            let _e165 = weft_max3_(e1_);
-            let _e166 = weft_max3_(e2_);
-            let r_env = select(roughness2_, roughness_7, (_e165 >= _e166));
-            let _e169 = satin_env(_e80, _e74, anisotropy_2, r_env);
-            indirect_specular = ((_e169 * (e1_ + e2_)) * noise);
+            let _e157 = weft_max3_(e1_);
+            let _e158 = weft_max3_(e2_);
+            let r_env = select(roughness2_, roughness_7, (_e157 >= _e158));
+            let _e161 = satin_env(_e77, v_7, anisotropy_2, r_env);
+            indirect_specular = ((_e161 * (e1_ + e2_)) * noise);
         }
         ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
-    let _e180 = diffuse_kd;
-    let _e181 = weft_diffuse_lambert(diffuse_albedo);
-    let _e185 = specular;
-    let direct = ((((_e180 * _e181) * _e93) * n_dot_l) + _e185);
-    let _e187 = indirect_specular;
-    let _e189 = n;
-    let _e190 = weft_sh_irradiance(_e189);
-    let _e192 = ambient_kd;
-    let indirect = ((_e187 * ao) + (((_e190 * ao) * _e192) * diffuse_albedo));
+    let _e172 = diffuse_kd;
+    let _e173 = weft_diffuse_lambert(diffuse_albedo);
+    let _e178 = specular;
+    let direct = ((((_e172 * _e173) * _e80) * _e79.n_dot_l) + _e178);
+    let _e180 = indirect_specular;
+    let _e182 = n;
+    let _e183 = weft_sh_irradiance(_e182);
+    let _e185 = ambient_kd;
+    let indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -29,6 +29,20 @@ struct WeftMaterial {
     anisotropy: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -184,16 +198,29 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_2);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -211,14 +238,14 @@ fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
     return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
 }
 
-fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_1: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
-    let n_5 = frame_1[2];
+    let n_6 = frame_1[2];
     let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_1);
+    let aniso_t = cross(dir_1, v_2);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
+    let _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -236,7 +263,7 @@ fn weft_half_f_schlick(f0_2: vec3<f32>, v_dot_h_1: f32) -> vec3<f32> {
     return (f0_2 + ((vec3(1f) - f0_2) * _e7));
 }
 
-fn weft_half_spec_ggx_aniso(v_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha: vec2<f32>) -> f32 {
+fn weft_half_spec_ggx_aniso(v_3: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha: vec2<f32>) -> f32 {
     let a_3 = max(alpha, vec2(0.007921f));
     let inv_a = vec2<f32>((vec2(1f) / a_3));
     let ah = vec2<f32>(a_3);
@@ -244,23 +271,23 @@ fn weft_half_spec_ggx_aniso(v_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha: v
     let y = (h.y * inv_a.y);
     let q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01f);
     let d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987f);
-    let nv = max(v_2.z, 0.001f);
+    let nv = max(v_3.z, 0.001f);
     let nl = saturate(l.z);
-    let lv = (nl * length(vec3<f32>((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    let lv = (nl * length(vec3<f32>((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     let ll = (nv * length(vec3<f32>((ah.x * l.x), (ah.y * l.y), nl)));
     let v_n_dot_l = ((0.5f * nl) / max((lv + ll), 0.0001f));
     let _e65 = weft_half_min_max((d * v_n_dot_l));
     return select(0f, _e65, (h.z > 0f));
 }
 
-fn satin_env(frame_2: mat3x3<f32>, v_3: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+fn satin_env(frame_2: mat3x3<f32>, v_4: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
     var bent_1: vec3<f32>;
     var c_1: vec3<f32>;
 
-    let _e4 = weft_aniso_bent_normal(frame_2, v_3, k, roughness_6);
+    let _e4 = weft_aniso_bent_normal(frame_2, v_4, k, roughness_6);
     bent_1 = _e4;
     let _e7 = bent_1;
-    let _e9 = weft_prefiltered_radiance(reflect(-(v_3), _e7), roughness_6);
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_4), _e7), roughness_6);
     c_1 = _e9;
     let _e11 = c_1;
     return _e11;
@@ -275,10 +302,10 @@ fn satin_lobe_low(vf: vec3<f32>, lf: vec3<f32>, hf: vec3<f32>, a: vec2<f32>) -> 
     return _e6;
 }
 
-fn satin_low(frame_3: mat3x3<f32>, n_4: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>, h_1: vec3<f32>, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_7: f32, roughness2_: f32, anisotropy_2: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>) -> vec3<f32> {
-    let _e16 = weft_clamp_cos(dot(n_4, v_4));
-    let n_dot_l = f32(saturate(dot(n_4, l_1)));
-    let v_dot_h_2 = f32(saturate(dot(v_4, h_1)));
+fn satin_low(frame_3: mat3x3<f32>, n_5: vec3<f32>, v_5: vec3<f32>, lit: WeftLightGeometry, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_7: f32, roughness2_: f32, anisotropy_2: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>) -> vec3<f32> {
+    let n_dot_v_1 = lit.n_dot_v;
+    let n_dot_l = f32(lit.n_dot_l);
+    let v_dot_h_2 = f32(lit.v_dot_h);
     let f0_3 = vec3<f32>(f0_in);
     let c1_ = vec3<f32>(c1_in);
     let c2_ = vec3<f32>(c2_in);
@@ -290,33 +317,33 @@ fn satin_low(frame_3: mat3x3<f32>, n_4: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32
     let w2_ = (t2_ * norm);
     let r_low = max(roughness_7, WEFT_MIN_ROUGHNESS_HALF);
     let r2_low = max(roughness2_, WEFT_MIN_ROUGHNESS_HALF);
-    let _e58 = weft_aniso_to_frame(frame_3, v_4);
-    let vf_1 = vec3<f32>(_e58);
-    let _e60 = weft_aniso_to_frame(frame_3, l_1);
-    let lf_1 = vec3<f32>(_e60);
-    let _e62 = weft_aniso_to_frame(frame_3, h_1);
-    let hf_1 = vec3<f32>(_e62);
-    let _e64 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    let _e54 = weft_aniso_to_frame(frame_3, v_5);
+    let vf_1 = vec3<f32>(_e54);
+    let _e57 = weft_aniso_to_frame(frame_3, lit.l);
+    let lf_1 = vec3<f32>(_e57);
+    let _e60 = weft_aniso_to_frame(frame_3, lit.h);
+    let hf_1 = vec3<f32>(_e60);
+    let _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    let _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
+    let _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
     let _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    let _e66 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    let _e67 = satin_lobe_low(vf_1, lf_1, hf_1, _e66);
-    let _e68 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    let specular_1 = (((vec3<f32>((w1_ * _e68)) * f32(_e65)) + (vec3<f32>((w2_ * _e68)) * f32(_e67))) * (noise * light));
-    let _e84 = weft_half_f_schlick(f0_3, f32(_e16));
-    let diffuse_kd_1 = max((vec3(1f) - ((w1_ + w2_) * _e84)), vec3(0f));
-    let _e90 = weft_env_brdf_lut_nearest(_e16, roughness_7);
-    let _e91 = weft_env_brdf_from_lut(f0_in, _e90);
-    let e1_ = (vec3<f32>(_e91) * w1_);
-    let _e94 = weft_env_brdf_lut_nearest(_e16, roughness2_);
-    let _e95 = weft_env_brdf_from_lut(f0_in, _e94);
-    let e2_ = (vec3<f32>(_e95) * w2_);
+    let _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    let specular_1 = (((vec3<f32>((w1_ * _e66)) * f32(_e63)) + (vec3<f32>((w2_ * _e66)) * f32(_e65))) * (noise * light));
+    let _e82 = weft_half_f_schlick(f0_3, f32(n_dot_v_1));
+    let diffuse_kd_1 = max((vec3(1f) - ((w1_ + w2_) * _e82)), vec3(0f));
+    let _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    let _e89 = weft_env_brdf_from_lut(f0_in, _e88);
+    let e1_ = (vec3<f32>(_e89) * w1_);
+    let _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    let _e93 = weft_env_brdf_from_lut(f0_in, _e92);
+    let e2_ = (vec3<f32>(_e93) * w2_);
     let r_env = select(roughness2_, roughness_7, (max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))));
-    let _e110 = satin_env(frame_3, v_4, anisotropy_2, r_env);
-    let indirect_specular_1 = ((_e110 * vec3<f32>((e1_ + e2_))) * noise);
+    let _e108 = satin_env(frame_3, v_5, anisotropy_2, r_env);
+    let indirect_specular_1 = ((_e108 * vec3<f32>((e1_ + e2_))) * noise);
     let ambient_kd_1 = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     let direct = (((diffuse_albedo * vec3<f32>((diffuse_kd_1 * (n_dot_l * 0.31830987f)))) * light) + specular_1);
-    let _e130 = weft_sh_irradiance(n_4);
-    let indirect = ((indirect_specular_1 * ao) + (((_e130 * ao) * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
+    let _e128 = weft_sh_irradiance(n_5);
+    let indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -377,34 +404,28 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
     let noise_1 = (0.5f + (0.5f * saturate(_e62.x)));
-    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    let _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_6 = _e71.v;
+    n = _e71.n;
+    let _e75 = n;
+    let _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     let _e78 = n;
-    let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    let _e81 = weft_main_light_direction();
-    let _e83 = n;
-    let _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    let _e85 = n;
-    let _e87 = weft_clamp_cos(dot(_e85, _e74));
-    let _e88 = n;
-    let n_dot_l_1 = saturate(dot(_e88, _e81));
-    let v_dot_h_3 = saturate(dot(_e74, _e84));
-    let _e93 = weft_main_light_radiance();
-    let _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
-    layers.narrow = _e96;
-    let _e98 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
-    layers.wide = _e98;
+    let _e79 = weft_main_light_geometry(_e78, v_6);
+    let _e80 = weft_main_light_radiance();
+    let _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
+    layers.narrow = _e83;
+    let _e85 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
+    layers.wide = _e85;
     let f0_4 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
-    let _e107 = material.specular_color;
-    let c1_1 = saturate(_e107.xyz);
-    let _e112 = material.second_specular_color;
-    let c2_1 = saturate(_e112.xyz);
-    let _e115 = weft_f_schlick(f0_4, v_dot_h_3);
+    let _e94 = material.specular_color;
+    let c1_1 = saturate(_e94.xyz);
+    let _e99 = material.second_specular_color;
+    let c2_1 = saturate(_e99.xyz);
+    let _e103 = weft_f_schlick(f0_4, _e79.v_dot_h);
     {
-        let _e116 = n;
-        let _e117 = satin_low(_e80, _e116, _e74, _e81, _e84, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e93);
-        return vec4<f32>(clamp(_e117, vec3(0f), vec3(65504f)), alpha_1);
+        let _e104 = n;
+        let _e105 = satin_low(_e77, _e104, v_6, _e79, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e80);
+        return vec4<f32>(clamp(_e105, vec3(0f), vec3(65504f)), alpha_1);
     }
 }

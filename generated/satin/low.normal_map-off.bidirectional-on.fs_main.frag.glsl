@@ -27,6 +27,18 @@ struct WeftMaterial {
     float second_layer_width;
     float anisotropy;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -176,16 +188,29 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -203,14 +228,14 @@ vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
     return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_1, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float roughness_5) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_5 = frame_1[2];
+    vec3 n_6 = frame_1[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
+    vec3 _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -228,7 +253,7 @@ vec3 weft_half_f_schlick(vec3 f0_2, float v_dot_h_1) {
     return (f0_2 + ((vec3(1.0) - f0_2) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha) {
+float weft_half_spec_ggx_aniso(vec3 v_3, vec3 l, vec3 h, vec2 alpha) {
     vec2 a_3 = max(alpha, vec2(0.007921));
     vec2 inv_a = vec2((vec2(1.0) / a_3));
     vec2 ah = vec2(a_3);
@@ -236,29 +261,29 @@ float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha) {
     float y = (h.y * inv_a.y);
     float q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01);
     float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
-    float nv = max(v_2.z, 0.001);
+    float nv = max(v_3.z, 0.001);
     float nl = clamp(l.z, 0.0, 1.0);
-    float lv = (nl * length(vec3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float lv = (nl * length(vec3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
     float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
     float _e65 = weft_half_min_max((d * v_n_dot_l));
     return ((h.z > 0.0) ? _e65 : 0.0);
 }
 
-vec3 satin_env(mat3x3 frame_2, vec3 v_3, float k, float roughness_6) {
+vec3 satin_env(mat3x3 frame_2, vec3 v_4, float k, float roughness_6) {
     vec3 bent_1 = vec3(0.0);
     vec3 c_1 = vec3(0.0);
-    vec3 _e4 = weft_aniso_bent_normal(frame_2, v_3, k, roughness_6);
+    vec3 _e4 = weft_aniso_bent_normal(frame_2, v_4, k, roughness_6);
     bent_1 = _e4;
     vec3 _e7 = bent_1;
-    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_3), _e7), roughness_6);
+    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_4), _e7), roughness_6);
     c_1 = _e9;
     {
-        vec3 _e12 = weft_aniso_bent_normal(frame_2, v_3, -(k), roughness_6);
+        vec3 _e12 = weft_aniso_bent_normal(frame_2, v_4, -(k), roughness_6);
         bent_1 = _e12;
         vec3 _e13 = c_1;
         vec3 _e15 = bent_1;
-        vec3 _e17 = weft_prefiltered_radiance(reflect(-(v_3), _e15), roughness_6);
+        vec3 _e17 = weft_prefiltered_radiance(reflect(-(v_4), _e15), roughness_6);
         c_1 = (0.5 * (_e13 + _e17));
     }
     vec3 _e21 = c_1;
@@ -278,10 +303,10 @@ float satin_lobe_low(vec3 vf, vec3 lf, vec3 hf, vec2 a) {
     return _e12;
 }
 
-vec3 satin_low(mat3x3 frame_3, vec3 n_4, vec3 v_4, vec3 l_1, vec3 h_1, vec3 f0_in, vec3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, vec3 c1_in, vec3 c2_in, float noise, float ao, vec3 light) {
-    float _e16 = weft_clamp_cos(dot(n_4, v_4));
-    float n_dot_l = float(clamp(dot(n_4, l_1), 0.0, 1.0));
-    float v_dot_h_2 = float(clamp(dot(v_4, h_1), 0.0, 1.0));
+vec3 satin_low(mat3x3 frame_3, vec3 n_5, vec3 v_5, WeftLightGeometry lit, vec3 f0_in, vec3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, vec3 c1_in, vec3 c2_in, float noise, float ao, vec3 light) {
+    float n_dot_v_1 = lit.n_dot_v;
+    float n_dot_l = float(lit.n_dot_l);
+    float v_dot_h_2 = float(lit.v_dot_h);
     vec3 f0_3 = vec3(f0_in);
     vec3 c1_ = vec3(c1_in);
     vec3 c2_ = vec3(c2_in);
@@ -293,33 +318,33 @@ vec3 satin_low(mat3x3 frame_3, vec3 n_4, vec3 v_4, vec3 l_1, vec3 h_1, vec3 f0_i
     vec3 w2_ = (t2_ * norm);
     float r_low = max(roughness_7, WEFT_MIN_ROUGHNESS_HALF);
     float r2_low = max(roughness2_, WEFT_MIN_ROUGHNESS_HALF);
-    vec3 _e58 = weft_aniso_to_frame(frame_3, v_4);
-    vec3 vf_1 = vec3(_e58);
-    vec3 _e60 = weft_aniso_to_frame(frame_3, l_1);
-    vec3 lf_1 = vec3(_e60);
-    vec3 _e62 = weft_aniso_to_frame(frame_3, h_1);
-    vec3 hf_1 = vec3(_e62);
-    vec2 _e64 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    vec3 _e54 = weft_aniso_to_frame(frame_3, v_5);
+    vec3 vf_1 = vec3(_e54);
+    vec3 _e57 = weft_aniso_to_frame(frame_3, lit.l);
+    vec3 lf_1 = vec3(_e57);
+    vec3 _e60 = weft_aniso_to_frame(frame_3, lit.h);
+    vec3 hf_1 = vec3(_e60);
+    vec2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    float _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
+    vec2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
     float _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    vec2 _e66 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    float _e67 = satin_lobe_low(vf_1, lf_1, hf_1, _e66);
-    vec3 _e68 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    vec3 specular_1 = (((vec3((w1_ * _e68)) * float(_e65)) + (vec3((w2_ * _e68)) * float(_e67))) * (noise * light));
-    vec3 _e84 = weft_half_f_schlick(f0_3, float(_e16));
-    vec3 diffuse_kd_1 = max((vec3(1.0) - ((w1_ + w2_) * _e84)), vec3(0.0));
-    vec2 _e90 = weft_env_brdf_lut_nearest(_e16, roughness_7);
-    vec3 _e91 = weft_env_brdf_from_lut(f0_in, _e90);
-    vec3 e1_ = (vec3(_e91) * w1_);
-    vec2 _e94 = weft_env_brdf_lut_nearest(_e16, roughness2_);
-    vec3 _e95 = weft_env_brdf_from_lut(f0_in, _e94);
-    vec3 e2_ = (vec3(_e95) * w2_);
+    vec3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    vec3 specular_1 = (((vec3((w1_ * _e66)) * float(_e63)) + (vec3((w2_ * _e66)) * float(_e65))) * (noise * light));
+    vec3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
+    vec3 diffuse_kd_1 = max((vec3(1.0) - ((w1_ + w2_) * _e82)), vec3(0.0));
+    vec2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    vec3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
+    vec3 e1_ = (vec3(_e89) * w1_);
+    vec2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    vec3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
+    vec3 e2_ = (vec3(_e93) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);
-    vec3 _e110 = satin_env(frame_3, v_4, anisotropy_2, r_env);
-    vec3 indirect_specular_1 = ((_e110 * vec3((e1_ + e2_))) * noise);
+    vec3 _e108 = satin_env(frame_3, v_5, anisotropy_2, r_env);
+    vec3 indirect_specular_1 = ((_e108 * vec3((e1_ + e2_))) * noise);
     vec3 ambient_kd_1 = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     vec3 direct = (((diffuse_albedo * vec3((diffuse_kd_1 * (n_dot_l * 0.31830987)))) * light) + specular_1);
-    vec3 _e130 = weft_sh_irradiance(n_4);
-    vec3 indirect = ((indirect_specular_1 * ao) + (((_e130 * ao) * vec3(ambient_kd_1)) * diffuse_albedo));
+    vec3 _e128 = weft_sh_irradiance(n_5);
+    vec3 indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * vec3(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -356,35 +381,29 @@ void main() {
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
     float noise_1 = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
-    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_6 = _e71.v;
+    n = _e71.n;
+    vec3 _e75 = n;
+    mat3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     vec3 _e78 = n;
-    mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    vec3 _e81 = weft_main_light_direction();
-    vec3 _e83 = n;
-    vec3 _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    vec3 _e85 = n;
-    float _e87 = weft_clamp_cos(dot(_e85, _e74));
-    vec3 _e88 = n;
-    float n_dot_l_1 = clamp(dot(_e88, _e81), 0.0, 1.0);
-    float v_dot_h_3 = clamp(dot(_e74, _e84), 0.0, 1.0);
-    vec3 _e93 = weft_main_light_radiance();
-    vec2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
-    layers.narrow = _e96;
-    vec2 _e98 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
-    layers.wide = _e98;
+    WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_6);
+    vec3 _e80 = weft_main_light_radiance();
+    vec2 _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
+    layers.narrow = _e83;
+    vec2 _e85 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
+    layers.wide = _e85;
     vec3 f0_4 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    vec4 _e107 = _group_1_binding_0_fs.specular_color;
-    vec3 c1_1 = clamp(_e107.xyz, vec3(0.0), vec3(1.0));
-    vec4 _e112 = _group_1_binding_0_fs.second_specular_color;
-    vec3 c2_1 = clamp(_e112.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e115 = weft_f_schlick(f0_4, v_dot_h_3);
+    vec4 _e94 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_1 = clamp(_e94.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e99 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_1 = clamp(_e99.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e103 = weft_f_schlick(f0_4, _e79.v_dot_h);
     {
-        vec3 _e116 = n;
-        vec3 _e117 = satin_low(_e80, _e116, _e74, _e81, _e84, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e93);
-        _fs2p_location0 = vec4(clamp(_e117, vec3(0.0), vec3(65504.0)), alpha_1);
+        vec3 _e104 = n;
+        vec3 _e105 = satin_low(_e77, _e104, v_6, _e79, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e80);
+        _fs2p_location0 = vec4(clamp(_e105, vec3(0.0), vec3(65504.0)), alpha_1);
         return;
     }
 }

@@ -38,6 +38,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +108,16 @@ Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> noise_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -223,34 +241,77 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
 {
     float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    int2 texel_2 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_2, int(0)));
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_2);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_2);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_5 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_5.xy * strength), max(v_5.z, 0.001));
+    float3 v_6 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_6.xy * strength), max(v_6.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -271,15 +332,15 @@ float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
     return max(float2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), (0.001).xx);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy_1, float roughness_5)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_5)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_5 = frame_2[2];
+    float3 n_7 = frame_2[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_t = cross(dir_1, v_2);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_5))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
+    const float3 _e22 = weft_safe_normalize(lerp(n_7, aniso_n, bend), n_7);
     return _e22;
 }
 
@@ -300,7 +361,7 @@ float3 weft_half_f_schlick(float3 f0_2, float v_dot_h_1)
     return (f0_2 + (((1.0).xxx - f0_2) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(float3 v_2, float3 l, float3 h, float2 alpha)
+float weft_half_spec_ggx_aniso(float3 v_3, float3 l, float3 h, float2 alpha)
 {
     float2 a_3 = max(alpha, (0.007921).xx);
     float2 inv_a = float2(((1.0).xx / a_3));
@@ -309,24 +370,24 @@ float weft_half_spec_ggx_aniso(float3 v_2, float3 l, float3 h, float2 alpha)
     float y = (h.y * inv_a.y);
     float q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01);
     float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
-    float nv = max(v_2.z, 0.001);
+    float nv = max(v_3.z, 0.001);
     float nl = saturate(l.z);
-    float lv = (nl * length(float3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float lv = (nl * length(float3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     float ll = (nv * length(float3((ah.x * l.x), (ah.y * l.y), nl)));
     float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
     const float _e65 = weft_half_min_max((d * v_n_dot_l));
     return ((h.z > 0.0) ? _e65 : 0.0);
 }
 
-float3 satin_env(float3x3 frame_3, float3 v_3, float k, float roughness_6)
+float3 satin_env(float3x3 frame_3, float3 v_4, float k, float roughness_6)
 {
     float3 bent_1 = (float3)0;
     float3 c_1 = (float3)0;
 
-    const float3 _e4 = weft_aniso_bent_normal(frame_3, v_3, k, roughness_6);
+    const float3 _e4 = weft_aniso_bent_normal(frame_3, v_4, k, roughness_6);
     bent_1 = _e4;
     float3 _e7 = bent_1;
-    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_3), _e7), roughness_6);
+    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_4), _e7), roughness_6);
     c_1 = _e9;
     float3 _e11 = c_1;
     return _e11;
@@ -342,11 +403,11 @@ float satin_lobe_low(float3 vf, float3 lf, float3 hf, float2 a)
     return _e6;
 }
 
-float3 satin_low(float3x3 frame_4, float3 n_4, float3 v_4, float3 l_1, float3 h_1, float3 f0_in, float3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, float3 c1_in, float3 c2_in, float noise_, float ao, float3 light)
+float3 satin_low(float3x3 frame_4, float3 n_6, float3 v_5, WeftLightGeometry lit_, float3 f0_in, float3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, float3 c1_in, float3 c2_in, float noise_, float ao, float3 light)
 {
-    const float _e16 = weft_clamp_cos(dot(n_4, v_4));
-    float n_dot_l = float(saturate(dot(n_4, l_1)));
-    float v_dot_h_2 = float(saturate(dot(v_4, h_1)));
+    float n_dot_v_1 = lit_.n_dot_v;
+    float n_dot_l = float(lit_.n_dot_l);
+    float v_dot_h_2 = float(lit_.v_dot_h);
     float3 f0_3 = float3(f0_in);
     float3 c1_ = float3(c1_in);
     float3 c2_ = float3(c2_in);
@@ -358,33 +419,33 @@ float3 satin_low(float3x3 frame_4, float3 n_4, float3 v_4, float3 l_1, float3 h_
     float3 w2_ = (t2_ * norm);
     float r_low = max(roughness_7, WEFT_MIN_ROUGHNESS_HALF);
     float r2_low = max(roughness2_, WEFT_MIN_ROUGHNESS_HALF);
-    const float3 _e58 = weft_aniso_to_frame(frame_4, v_4);
-    float3 vf_1 = float3(_e58);
-    const float3 _e60 = weft_aniso_to_frame(frame_4, l_1);
-    float3 lf_1 = float3(_e60);
-    const float3 _e62 = weft_aniso_to_frame(frame_4, h_1);
-    float3 hf_1 = float3(_e62);
-    const float2 _e64 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    const float3 _e54 = weft_aniso_to_frame(frame_4, v_5);
+    float3 vf_1 = float3(_e54);
+    const float3 _e57 = weft_aniso_to_frame(frame_4, lit_.l);
+    float3 lf_1 = float3(_e57);
+    const float3 _e60 = weft_aniso_to_frame(frame_4, lit_.h);
+    float3 hf_1 = float3(_e60);
+    const float2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    const float _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
+    const float2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
     const float _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    const float2 _e66 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    const float _e67 = satin_lobe_low(vf_1, lf_1, hf_1, _e66);
-    const float3 _e68 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    float3 specular_1 = (((float3((w1_ * _e68)) * float(_e65)) + (float3((w2_ * _e68)) * float(_e67))) * (noise_ * light));
-    const float3 _e84 = weft_half_f_schlick(f0_3, float(_e16));
-    float3 diffuse_kd_1 = max(((1.0).xxx - ((w1_ + w2_) * _e84)), (0.0).xxx);
-    const float2 _e90 = weft_env_brdf_lut_nearest(_e16, roughness_7);
-    const float3 _e91 = weft_env_brdf_from_lut(f0_in, _e90);
-    float3 e1_ = (float3(_e91) * w1_);
-    const float2 _e94 = weft_env_brdf_lut_nearest(_e16, roughness2_);
-    const float3 _e95 = weft_env_brdf_from_lut(f0_in, _e94);
-    float3 e2_ = (float3(_e95) * w2_);
+    const float3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    float3 specular_1 = (((float3((w1_ * _e66)) * float(_e63)) + (float3((w2_ * _e66)) * float(_e65))) * (noise_ * light));
+    const float3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
+    float3 diffuse_kd_1 = max(((1.0).xxx - ((w1_ + w2_) * _e82)), (0.0).xxx);
+    const float2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    const float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
+    float3 e1_ = (float3(_e89) * w1_);
+    const float2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    const float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
+    float3 e2_ = (float3(_e93) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);
-    const float3 _e110 = satin_env(frame_4, v_4, anisotropy_2, r_env);
-    float3 indirect_specular_1 = ((_e110 * float3((e1_ + e2_))) * noise_);
+    const float3 _e108 = satin_env(frame_4, v_5, anisotropy_2, r_env);
+    float3 indirect_specular_1 = ((_e108 * float3((e1_ + e2_))) * noise_);
     float3 ambient_kd_1 = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     float3 direct = (((diffuse_albedo * float3((diffuse_kd_1 * (n_dot_l * 0.31830987)))) * light) + specular_1);
-    const float3 _e130 = weft_sh_irradiance(n_4);
-    float3 indirect = ((indirect_specular_1 * ao) + (((_e130 * ao) * float3(ambient_kd_1)) * diffuse_albedo));
+    const float3 _e128 = weft_sh_irradiance(n_6);
+    float3 indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * float3(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -415,7 +476,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     SatinLayers layers = (SatinLayers)0;
     float3 specular = (float3)0;
@@ -448,44 +509,36 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     float4 _e62 = noise_map.Sample(material_sampler, _e59);
     float noise_1 = (0.5 + (0.5 * saturate(_e62.x)));
-    const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    const WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_7 = _e71.v;
+    n = _e71.n;
     {
-        float3 _e78 = n;
-        const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        float4 _e83 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_2 = _e83.xyz;
-        float _e87 = material.normal_strength;
-        const float3 _e88 = weft_unpack_normal(texel_2, _e87);
-        const float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        float4 _e77 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_3 = _e77.xyz;
+        float3 _e79 = n;
+        float _e83 = material.normal_strength;
+        const float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_3, _e83);
+        n = _e84;
     }
-    float3 _e90 = n;
-    const float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    const float3 _e93 = weft_main_light_direction();
-    float3 _e95 = n;
-    const float3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    float3 _e97 = n;
-    const float _e99 = weft_clamp_cos(dot(_e97, _e74));
-    float3 _e100 = n;
-    float n_dot_l_1 = saturate(dot(_e100, _e93));
-    float v_dot_h_3 = saturate(dot(_e74, _e96));
-    const float3 _e105 = weft_main_light_radiance();
-    const float2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
-    layers.narrow = _e108;
-    const float2 _e110 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
-    layers.wide = _e110;
+    float3 _e85 = n;
+    const float3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    float3 _e88 = n;
+    const WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_7);
+    const float3 _e90 = weft_main_light_radiance();
+    const float2 _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
+    layers.narrow = _e93;
+    const float2 _e95 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
+    layers.wide = _e95;
     float3 f0_4 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    float4 _e119 = material.specular_color;
-    float3 c1_1 = saturate(_e119.xyz);
-    float4 _e124 = material.second_specular_color;
-    float3 c2_1 = saturate(_e124.xyz);
-    const float3 _e127 = weft_f_schlick(f0_4, v_dot_h_3);
+    float4 _e104 = material.specular_color;
+    float3 c1_1 = saturate(_e104.xyz);
+    float4 _e109 = material.second_specular_color;
+    float3 c2_1 = saturate(_e109.xyz);
+    const float3 _e113 = weft_f_schlick(f0_4, _e89.v_dot_h);
     {
-        float3 _e128 = n;
-        const float3 _e129 = satin_low(_e92, _e128, _e74, _e93, _e96, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e105);
-        return float4(clamp(_e129, (0.0).xxx, (65504.0).xxx), alpha_1);
+        float3 _e114 = n;
+        const float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90);
+        return float4(clamp(_e115, (0.0).xxx, (65504.0).xxx), alpha_1);
     }
 }

@@ -40,6 +40,19 @@ struct WeftMaterial {
     float anisotropy;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -211,32 +224,53 @@ metal::float2 weft_env_brdf_lut_nearest(
 ) {
     metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    metal::int2 texel_2 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_2), 0);
     return _e16.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_5 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_5.xy * strength, metal::max(v_5.z, 0.001));
+    metal::float3 v_6 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_6.xy * strength, metal::max(v_6.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -245,6 +279,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -273,17 +319,17 @@ metal::float2 weft_aniso_alpha_kulla(
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_1,
+    metal::float3 v_2,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_5 = frame_2[2];
+    metal::float3 n_7 = frame_2[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_1);
+    metal::float3 aniso_t = metal::cross(dir_1, v_2);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_5, aniso_n, bend), n_5);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_7, aniso_n, bend), n_7);
     return _e22;
 }
 
@@ -309,7 +355,7 @@ metal::float3 weft_half_f_schlick(
 }
 
 weft_half weft_half_spec_ggx_aniso(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l,
     metal::float3 h,
     metal::float2 alpha
@@ -321,9 +367,9 @@ weft_half weft_half_spec_ggx_aniso(
     float y = h.y * inv_a.y;
     float q = metal::max(((x_4 * x_4) + (y * y)) + (h.z * h.z), 0.01);
     float d = (((inv_a.x * inv_a.y) / q) / q) * 0.31830987;
-    float nv = metal::max(v_2.z, 0.001);
+    float nv = metal::max(v_3.z, 0.001);
     float nl = metal::saturate(l.z);
-    float lv = nl * metal::length(metal::float3(ah.x * v_2.x, ah.y * v_2.y, nv));
+    float lv = nl * metal::length(metal::float3(ah.x * v_3.x, ah.y * v_3.y, nv));
     float ll = nv * metal::length(metal::float3(ah.x * l.x, ah.y * l.y, nl));
     float v_n_dot_l = (0.5 * nl) / metal::max(lv + ll, 0.0001);
     weft_half _e65 = weft_half_min_max(d * v_n_dot_l);
@@ -332,7 +378,7 @@ weft_half weft_half_spec_ggx_aniso(
 
 metal::float3 satin_env(
     metal::float3x3 frame_3,
-    metal::float3 v_3,
+    metal::float3 v_4,
     float k,
     float roughness_6,
     constant WeftFrame& weft_frame,
@@ -341,10 +387,10 @@ metal::float3 satin_env(
 ) {
     metal::float3 bent_1 = {};
     metal::float3 c_1 = {};
-    metal::float3 _e4 = weft_aniso_bent_normal(frame_3, v_3, k, roughness_6);
+    metal::float3 _e4 = weft_aniso_bent_normal(frame_3, v_4, k, roughness_6);
     bent_1 = _e4;
     metal::float3 _e7 = bent_1;
-    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
     c_1 = _e9;
     metal::float3 _e11 = c_1;
     return _e11;
@@ -365,10 +411,9 @@ weft_half satin_lobe_low(
 
 metal::float3 satin_low(
     metal::float3x3 frame_4,
-    metal::float3 n_4,
-    metal::float3 v_4,
-    metal::float3 l_1,
-    metal::float3 h_1,
+    metal::float3 n_6,
+    metal::float3 v_5,
+    WeftLightGeometry lit,
     metal::float3 f0_in,
     metal::float3 diffuse_albedo,
     float roughness_7,
@@ -384,9 +429,9 @@ metal::float3 satin_low(
     metal::sampler weft_environment_sampler,
     metal::texture2d<float, metal::access::sample> weft_brdf_lut
 ) {
-    float _e16 = weft_clamp_cos(metal::dot(n_4, v_4));
-    float n_dot_l = static_cast<float>(metal::saturate(metal::dot(n_4, l_1)));
-    float v_dot_h_2 = static_cast<float>(metal::saturate(metal::dot(v_4, h_1)));
+    float n_dot_v_1 = lit.n_dot_v;
+    float n_dot_l = static_cast<float>(lit.n_dot_l);
+    float v_dot_h_2 = static_cast<float>(lit.v_dot_h);
     metal::float3 f0_3 = static_cast<metal::float3>(f0_in);
     metal::float3 c1_ = static_cast<metal::float3>(c1_in);
     metal::float3 c2_ = static_cast<metal::float3>(c2_in);
@@ -398,40 +443,40 @@ metal::float3 satin_low(
     metal::float3 w2_ = t2_ * norm;
     float r_low = metal::max(roughness_7, WEFT_MIN_ROUGHNESS_HALF);
     float r2_low = metal::max(roughness2_, WEFT_MIN_ROUGHNESS_HALF);
-    metal::float3 _e58 = weft_aniso_to_frame(frame_4, v_4);
-    metal::float3 vf_1 = static_cast<metal::float3>(_e58);
-    metal::float3 _e60 = weft_aniso_to_frame(frame_4, l_1);
-    metal::float3 lf_1 = static_cast<metal::float3>(_e60);
-    metal::float3 _e62 = weft_aniso_to_frame(frame_4, h_1);
-    metal::float3 hf_1 = static_cast<metal::float3>(_e62);
-    metal::float2 _e64 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    metal::float3 _e54 = weft_aniso_to_frame(frame_4, v_5);
+    metal::float3 vf_1 = static_cast<metal::float3>(_e54);
+    metal::float3 _e57 = weft_aniso_to_frame(frame_4, lit.l);
+    metal::float3 lf_1 = static_cast<metal::float3>(_e57);
+    metal::float3 _e60 = weft_aniso_to_frame(frame_4, lit.h);
+    metal::float3 hf_1 = static_cast<metal::float3>(_e60);
+    metal::float2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
+    weft_half _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
+    metal::float2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
     weft_half _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    metal::float2 _e66 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    weft_half _e67 = satin_lobe_low(vf_1, lf_1, hf_1, _e66);
-    metal::float3 _e68 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    metal::float3 specular_1 = ((static_cast<metal::float3>(w1_ * _e68) * static_cast<float>(_e65)) + (static_cast<metal::float3>(w2_ * _e68) * static_cast<float>(_e67))) * (noise * light);
-    metal::float3 _e84 = weft_half_f_schlick(f0_3, static_cast<float>(_e16));
-    metal::float3 diffuse_kd_1 = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e84), metal::float3(0.0));
-    metal::float2 _e90 = weft_env_brdf_lut_nearest(_e16, roughness_7, weft_brdf_lut);
-    metal::float3 _e91 = weft_env_brdf_from_lut(f0_in, _e90);
-    metal::float3 e1_ = static_cast<metal::float3>(_e91) * w1_;
-    metal::float2 _e94 = weft_env_brdf_lut_nearest(_e16, roughness2_, weft_brdf_lut);
-    metal::float3 _e95 = weft_env_brdf_from_lut(f0_in, _e94);
-    metal::float3 e2_ = static_cast<metal::float3>(_e95) * w2_;
+    metal::float3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    metal::float3 specular_1 = ((static_cast<metal::float3>(w1_ * _e66) * static_cast<float>(_e63)) + (static_cast<metal::float3>(w2_ * _e66) * static_cast<float>(_e65))) * (noise * light);
+    metal::float3 _e82 = weft_half_f_schlick(f0_3, static_cast<float>(n_dot_v_1));
+    metal::float3 diffuse_kd_1 = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e82), metal::float3(0.0));
+    metal::float2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7, weft_brdf_lut);
+    metal::float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
+    metal::float3 e1_ = static_cast<metal::float3>(_e89) * w1_;
+    metal::float2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_, weft_brdf_lut);
+    metal::float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
+    metal::float3 e2_ = static_cast<metal::float3>(_e93) * w2_;
     float r_env = (metal::max(e1_.x, metal::max(e1_.y, e1_.z)) >= metal::max(e2_.x, metal::max(e2_.y, e2_.z))) ? roughness_7 : roughness2_;
-    metal::float3 _e110 = satin_env(frame_4, v_4, anisotropy_2, r_env, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular_1 = (_e110 * static_cast<metal::float3>(e1_ + e2_)) * noise;
+    metal::float3 _e108 = satin_env(frame_4, v_5, anisotropy_2, r_env, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular_1 = (_e108 * static_cast<metal::float3>(e1_ + e2_)) * noise;
     metal::float3 ambient_kd_1 = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     metal::float3 direct = ((diffuse_albedo * static_cast<metal::float3>(diffuse_kd_1 * (n_dot_l * 0.31830987))) * light) + specular_1;
-    metal::float3 _e130 = weft_sh_irradiance(n_4, weft_frame);
-    metal::float3 indirect = (indirect_specular_1 * ao) + (((_e130 * ao) * static_cast<metal::float3>(ambient_kd_1)) * diffuse_albedo);
+    metal::float3 _e128 = weft_sh_irradiance(n_6, weft_frame);
+    metal::float3 indirect = (indirect_specular_1 * ao) + (((_e128 * ao) * static_cast<metal::float3>(ambient_kd_1)) * diffuse_albedo);
     return direct + indirect;
 }
 
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -446,7 +491,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -470,8 +515,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -492,7 +537,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     SatinLayers layers = {};
     metal::float3 specular = {};
@@ -524,44 +569,36 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
     float noise_1 = 0.5 + (0.5 * metal::saturate(_e62.x));
-    metal::float3 _e74 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_7 = _e71.v;
+    n = _e71.n;
     {
-        metal::float3 _e78 = n;
-        metal::float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        metal::float4 _e83 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_2 = _e83.xyz;
-        float _e87 = material.normal_strength;
-        metal::float3 _e88 = weft_unpack_normal(texel_2, _e87);
-        metal::float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        metal::float4 _e77 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_3 = _e77.xyz;
+        metal::float3 _e79 = n;
+        float _e83 = material.normal_strength;
+        metal::float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_3, _e83);
+        n = _e84;
     }
-    metal::float3 _e90 = n;
-    metal::float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    metal::float3 _e93 = weft_main_light_direction(weft_frame);
-    metal::float3 _e95 = n;
-    metal::float3 _e96 = weft_safe_normalize(_e93 + _e74, _e95);
-    metal::float3 _e97 = n;
-    float _e99 = weft_clamp_cos(metal::dot(_e97, _e74));
-    metal::float3 _e100 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e100, _e93));
-    float v_dot_h_3 = metal::saturate(metal::dot(_e74, _e96));
-    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
-    layers.narrow = _e108;
-    metal::float2 _e110 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
-    layers.wide = _e110;
+    metal::float3 _e85 = n;
+    metal::float3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    metal::float3 _e88 = n;
+    WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_7, weft_frame);
+    metal::float3 _e90 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_3);
+    layers.narrow = _e93;
+    metal::float2 _e95 = weft_aniso_alpha_kulla(roughness2_1, anisotropy_3);
+    layers.wide = _e95;
     metal::float3 f0_4 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
-    metal::float4 _e119 = material.specular_color;
-    metal::float3 c1_1 = metal::saturate(_e119.xyz);
-    metal::float4 _e124 = material.second_specular_color;
-    metal::float3 c2_1 = metal::saturate(_e124.xyz);
-    metal::float3 _e127 = weft_f_schlick(f0_4, v_dot_h_3);
+    metal::float4 _e104 = material.specular_color;
+    metal::float3 c1_1 = metal::saturate(_e104.xyz);
+    metal::float4 _e109 = material.second_specular_color;
+    metal::float3 c2_1 = metal::saturate(_e109.xyz);
+    metal::float3 _e113 = weft_f_schlick(f0_4, _e89.v_dot_h);
     {
-        metal::float3 _e128 = n;
-        metal::float3 _e129 = satin_low(_e92, _e128, _e74, _e93, _e96, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e105, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
-        return fs_mainOutput { metal::float4(metal::clamp(_e129, metal::float3(0.0), metal::float3(65504.0)), alpha_1) };
+        metal::float3 _e114 = n;
+        metal::float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        return fs_mainOutput { metal::float4(metal::clamp(_e115, metal::float3(0.0), metal::float3(65504.0)), alpha_1) };
     }
 }

@@ -27,6 +27,18 @@ struct WeftMaterial {
     float second_layer_width;
     float anisotropy;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -182,16 +194,29 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -225,29 +250,29 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_2.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_3, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_3.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_3.x), (alpha_b_2 * v_3.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_4, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_4 + l_1), vec3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_4, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_5, float anisotropy_1, float roughness_5) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_1[2];
+    vec3 n_5 = frame_1[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    vec3 aniso_t = cross(dir_1, v_4);
+    vec3 aniso_t = cross(dir_1, v_5);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -259,13 +284,13 @@ float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
     return _e7;
 }
 
-vec3 satin_env(mat3x3 frame_2, vec3 v_5, float k, float roughness_6) {
+vec3 satin_env(mat3x3 frame_2, vec3 v_6, float k, float roughness_6) {
     vec3 bent_1 = vec3(0.0);
     vec3 c_1 = vec3(0.0);
-    vec3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    vec3 _e4 = weft_aniso_bent_normal(frame_2, v_6, k, roughness_6);
     bent_1 = _e4;
     vec3 _e7 = bent_1;
-    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_6), _e7), roughness_6);
     c_1 = _e9;
     vec3 _e11 = c_1;
     return _e11;
@@ -304,71 +329,65 @@ void main() {
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
     float noise = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
-    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_7 = _e71.v;
+    n = _e71.n;
+    vec3 _e75 = n;
+    mat3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     vec3 _e78 = n;
-    mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    vec3 _e81 = weft_main_light_direction();
-    vec3 _e83 = n;
-    vec3 _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    vec3 _e85 = n;
-    float _e87 = weft_clamp_cos(dot(_e85, _e74));
-    vec3 _e88 = n;
-    float n_dot_l = clamp(dot(_e88, _e81), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e74, _e84), 0.0, 1.0);
-    vec3 _e93 = weft_main_light_radiance();
-    vec2 _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e96;
-    vec2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_7);
+    vec3 _e80 = weft_main_light_radiance();
+    vec2 _e83 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e83;
+    vec2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec4 _e107 = _group_1_binding_0_fs.specular_color;
-    vec3 c1_ = clamp(_e107.xyz, vec3(0.0), vec3(1.0));
-    vec4 _e112 = _group_1_binding_0_fs.second_specular_color;
-    vec3 c2_ = clamp(_e112.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
+    vec4 _e94 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_ = clamp(_e94.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e99 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_ = clamp(_e99.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e103 = weft_f_schlick(f0_2, _e79.v_dot_h);
     {
-        float _e120 = weft_max3_(c1_);
-        vec3 t1_ = mix(c1_, vec3(_e120), 0.5);
-        float _e124 = weft_max3_(c2_);
-        vec3 t2_ = mix(c2_, vec3(_e124), 0.5);
-        float _e129 = weft_max3_((t1_ + t2_));
-        float norm = (1.0 / max(1.0, _e129));
+        float _e108 = weft_max3_(c1_);
+        vec3 t1_ = mix(c1_, vec3(_e108), 0.5);
+        float _e112 = weft_max3_(c2_);
+        vec3 t2_ = mix(c2_, vec3(_e112), 0.5);
+        float _e117 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e117));
         vec3 w1_ = (t1_ * norm);
         vec3 w2_ = (t2_ * norm);
-        vec3 _e136 = weft_aniso_to_frame(_e80, _e74);
-        vec3 _e137 = weft_aniso_to_frame(_e80, _e81);
-        vec2 _e139 = layers.narrow;
-        float _e140 = satin_lobe_reference(_e136, _e137, _e139);
-        vec2 _e142 = layers.wide;
-        float _e143 = satin_lobe_reference(_e136, _e137, _e142);
-        specular = (((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise) * _e93);
-        vec3 _e153 = weft_f_schlick(f0_2, _e87);
-        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e153)), vec3(0.0));
-        vec2 _e159 = weft_env_brdf_lut(_e87, roughness_7);
-        vec3 _e160 = weft_env_brdf_from_lut(f0_2, _e159);
-        vec3 e1_ = (_e160 * w1_);
-        vec2 _e162 = weft_env_brdf_lut(_e87, roughness2_);
-        vec3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
-        vec3 e2_ = (_e163 * w2_);
+        vec3 _e124 = weft_aniso_to_frame(_e77, v_7);
+        vec3 _e126 = weft_aniso_to_frame(_e77, _e79.l);
+        vec2 _e128 = layers.narrow;
+        float _e129 = satin_lobe_reference(_e124, _e126, _e128);
+        vec2 _e131 = layers.wide;
+        float _e132 = satin_lobe_reference(_e124, _e126, _e131);
+        specular = (((((w1_ * _e129) + (w2_ * _e132)) * _e103) * noise) * _e80);
+        vec3 _e143 = weft_f_schlick(f0_2, _e79.n_dot_v);
+        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e143)), vec3(0.0));
+        vec2 _e150 = weft_env_brdf_lut(_e79.n_dot_v, roughness_7);
+        vec3 _e151 = weft_env_brdf_from_lut(f0_2, _e150);
+        vec3 e1_ = (_e151 * w1_);
+        vec2 _e154 = weft_env_brdf_lut(_e79.n_dot_v, roughness2_);
+        vec3 _e155 = weft_env_brdf_from_lut(f0_2, _e154);
+        vec3 e2_ = (_e155 * w2_);
         {
-            vec3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
-            vec3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
-            indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise);
+            vec3 _e157 = satin_env(_e77, v_7, anisotropy_2, roughness_7);
+            vec3 _e159 = satin_env(_e77, v_7, anisotropy_2, roughness2_);
+            indirect_specular = (((_e157 * e1_) + (_e159 * e2_)) * noise);
         }
         ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
-    vec3 _e178 = diffuse_kd;
-    vec3 _e179 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 _e183 = specular;
-    vec3 direct = ((((_e178 * _e179) * _e93) * n_dot_l) + _e183);
-    vec3 _e185 = indirect_specular;
-    vec3 _e187 = n;
-    vec3 _e188 = weft_sh_irradiance(_e187);
-    vec3 _e190 = ambient_kd;
-    vec3 indirect = ((_e185 * ao) + (((_e188 * ao) * _e190) * diffuse_albedo));
+    vec3 _e170 = diffuse_kd;
+    vec3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e176 = specular;
+    vec3 direct = ((((_e170 * _e171) * _e80) * _e79.n_dot_l) + _e176);
+    vec3 _e178 = indirect_specular;
+    vec3 _e180 = n;
+    vec3 _e181 = weft_sh_irradiance(_e180);
+    vec3 _e183 = ambient_kd;
+    vec3 indirect = ((_e178 * ao) + (((_e181 * ao) * _e183) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

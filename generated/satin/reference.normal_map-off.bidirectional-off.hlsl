@@ -38,6 +38,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +108,16 @@ Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> noise_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -225,17 +243,52 @@ float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_2);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_2);
+    return float3x3(t, b_1, n_4);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -274,32 +327,32 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_3, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_2.z);
+    const float _e5 = weft_clamp_cos(v_3.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float lv = (_e7 * length(float3((alpha_t_2 * v_3.x), (alpha_b_2 * v_3.y), _e5)));
     float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(float3 v_3, float3 l_1, float alpha_t_3, float alpha_b_3)
+float weft_spec_ggx_aniso(float3 v_4, float3 l_1, float alpha_t_3, float alpha_b_3)
 {
-    const float3 _e9 = weft_safe_normalize((v_3 + l_1), float3(0.0, 0.0, 1.0));
+    const float3 _e9 = weft_safe_normalize((v_4 + l_1), float3(0.0, 0.0, 1.0));
     const float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    const float _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_4, float anisotropy_1, float roughness_5)
+float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_5, float anisotropy_1, float roughness_5)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_1[2];
+    float3 n_5 = frame_1[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    float3 aniso_t = cross(dir_1, v_4);
+    float3 aniso_t = cross(dir_1, v_5);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_5))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -313,15 +366,15 @@ float satin_lobe_reference(float3 vf, float3 lf, float2 a)
     return _e7;
 }
 
-float3 satin_env(float3x3 frame_2, float3 v_5, float k, float roughness_6)
+float3 satin_env(float3x3 frame_2, float3 v_6, float k, float roughness_6)
 {
     float3 bent_1 = (float3)0;
     float3 c_1 = (float3)0;
 
-    const float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    const float3 _e4 = weft_aniso_bent_normal(frame_2, v_6, k, roughness_6);
     bent_1 = _e4;
     float3 _e7 = bent_1;
-    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    const float3 _e9 = weft_prefiltered_radiance(reflect(-(v_6), _e7), roughness_6);
     c_1 = _e9;
     float3 _e11 = c_1;
     return _e11;
@@ -354,7 +407,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     SatinLayers layers = (SatinLayers)0;
     float3 specular = (float3)0;
@@ -387,71 +440,65 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     float4 _e62 = noise_map.Sample(material_sampler, _e59);
     float noise_ = (0.5 + (0.5 * saturate(_e62.x)));
-    const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    const WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_7 = _e71.v;
+    n = _e71.n;
+    float3 _e75 = n;
+    const float3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     float3 _e78 = n;
-    const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    const float3 _e81 = weft_main_light_direction();
-    float3 _e83 = n;
-    const float3 _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    float3 _e85 = n;
-    const float _e87 = weft_clamp_cos(dot(_e85, _e74));
-    float3 _e88 = n;
-    float n_dot_l = saturate(dot(_e88, _e81));
-    float v_dot_h_1 = saturate(dot(_e74, _e84));
-    const float3 _e93 = weft_main_light_radiance();
-    const float2 _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e96;
-    const float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    const WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_7);
+    const float3 _e80 = weft_main_light_radiance();
+    const float2 _e83 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e83;
+    const float2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    float4 _e107 = material.specular_color;
-    float3 c1_ = saturate(_e107.xyz);
-    float4 _e112 = material.second_specular_color;
-    float3 c2_ = saturate(_e112.xyz);
-    const float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
+    float4 _e94 = material.specular_color;
+    float3 c1_ = saturate(_e94.xyz);
+    float4 _e99 = material.second_specular_color;
+    float3 c2_ = saturate(_e99.xyz);
+    const float3 _e103 = weft_f_schlick(f0_2, _e79.v_dot_h);
     {
-        const float _e120 = weft_max3_(c1_);
-        float3 t1_ = lerp(c1_, (_e120).xxx, 0.5);
-        const float _e124 = weft_max3_(c2_);
-        float3 t2_ = lerp(c2_, (_e124).xxx, 0.5);
-        const float _e129 = weft_max3_((t1_ + t2_));
-        float norm = (1.0 / max(1.0, _e129));
+        const float _e108 = weft_max3_(c1_);
+        float3 t1_ = lerp(c1_, (_e108).xxx, 0.5);
+        const float _e112 = weft_max3_(c2_);
+        float3 t2_ = lerp(c2_, (_e112).xxx, 0.5);
+        const float _e117 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e117));
         float3 w1_ = (t1_ * norm);
         float3 w2_ = (t2_ * norm);
-        const float3 _e136 = weft_aniso_to_frame(_e80, _e74);
-        const float3 _e137 = weft_aniso_to_frame(_e80, _e81);
-        float2 _e139 = layers.narrow;
-        const float _e140 = satin_lobe_reference(_e136, _e137, _e139);
-        float2 _e142 = layers.wide;
-        const float _e143 = satin_lobe_reference(_e136, _e137, _e142);
-        specular = (((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise_) * _e93);
-        const float3 _e153 = weft_f_schlick(f0_2, _e87);
-        diffuse_kd = max(((1.0).xxx - ((w1_ + w2_) * _e153)), (0.0).xxx);
-        const float2 _e159 = weft_env_brdf_lut(_e87, roughness_7);
-        const float3 _e160 = weft_env_brdf_from_lut(f0_2, _e159);
-        float3 e1_ = (_e160 * w1_);
-        const float2 _e162 = weft_env_brdf_lut(_e87, roughness2_);
-        const float3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
-        float3 e2_ = (_e163 * w2_);
+        const float3 _e124 = weft_aniso_to_frame(_e77, v_7);
+        const float3 _e126 = weft_aniso_to_frame(_e77, _e79.l);
+        float2 _e128 = layers.narrow;
+        const float _e129 = satin_lobe_reference(_e124, _e126, _e128);
+        float2 _e131 = layers.wide;
+        const float _e132 = satin_lobe_reference(_e124, _e126, _e131);
+        specular = (((((w1_ * _e129) + (w2_ * _e132)) * _e103) * noise_) * _e80);
+        const float3 _e143 = weft_f_schlick(f0_2, _e79.n_dot_v);
+        diffuse_kd = max(((1.0).xxx - ((w1_ + w2_) * _e143)), (0.0).xxx);
+        const float2 _e150 = weft_env_brdf_lut(_e79.n_dot_v, roughness_7);
+        const float3 _e151 = weft_env_brdf_from_lut(f0_2, _e150);
+        float3 e1_ = (_e151 * w1_);
+        const float2 _e154 = weft_env_brdf_lut(_e79.n_dot_v, roughness2_);
+        const float3 _e155 = weft_env_brdf_from_lut(f0_2, _e154);
+        float3 e2_ = (_e155 * w2_);
         {
-            const float3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7);
-            const float3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_);
-            indirect_specular = (((_e165 * e1_) + (_e167 * e2_)) * noise_);
+            const float3 _e157 = satin_env(_e77, v_7, anisotropy_2, roughness_7);
+            const float3 _e159 = satin_env(_e77, v_7, anisotropy_2, roughness2_);
+            indirect_specular = (((_e157 * e1_) + (_e159 * e2_)) * noise_);
         }
         ambient_kd = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     }
-    float3 _e178 = diffuse_kd;
-    const float3 _e179 = weft_diffuse_lambert(diffuse_albedo);
-    float3 _e183 = specular;
-    float3 direct = ((((_e178 * _e179) * _e93) * n_dot_l) + _e183);
-    float3 _e185 = indirect_specular;
-    float3 _e187 = n;
-    const float3 _e188 = weft_sh_irradiance(_e187);
-    float3 _e190 = ambient_kd;
-    float3 indirect = ((_e185 * ao) + (((_e188 * ao) * _e190) * diffuse_albedo));
+    float3 _e170 = diffuse_kd;
+    const float3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e176 = specular;
+    float3 direct = ((((_e170 * _e171) * _e80) * _e79.n_dot_l) + _e176);
+    float3 _e178 = indirect_specular;
+    float3 _e180 = n;
+    const float3 _e181 = weft_sh_irradiance(_e180);
+    float3 _e183 = ambient_kd;
+    float3 indirect = ((_e178 * ao) + (((_e181 * ao) * _e183) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

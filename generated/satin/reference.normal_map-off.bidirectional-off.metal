@@ -39,6 +39,19 @@ struct WeftMaterial {
     float anisotropy;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -222,19 +235,40 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float2 weft_transform_uv(
@@ -290,43 +324,43 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_2.z);
+    float _e5 = weft_clamp_cos(v_3.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_3.x, alpha_b_2 * v_3.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 float weft_spec_ggx_aniso(
-    metal::float3 v_3,
+    metal::float3 v_4,
     metal::float3 l_1,
     float alpha_t_3,
     float alpha_b_3
 ) {
-    metal::float3 _e9 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e9 = weft_safe_normalize(v_4 + l_1, metal::float3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_1,
-    metal::float3 v_4,
+    metal::float3 v_5,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_1[2];
+    metal::float3 n_5 = frame_1[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_1[1] : frame_1[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_4);
+    metal::float3 aniso_t = metal::cross(dir_1, v_5);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -344,7 +378,7 @@ float satin_lobe_reference(
 
 metal::float3 satin_env(
     metal::float3x3 frame_2,
-    metal::float3 v_5,
+    metal::float3 v_6,
     float k,
     float roughness_6,
     constant WeftFrame& weft_frame,
@@ -353,10 +387,10 @@ metal::float3 satin_env(
 ) {
     metal::float3 bent_1 = {};
     metal::float3 c_1 = {};
-    metal::float3 _e4 = weft_aniso_bent_normal(frame_2, v_5, k, roughness_6);
+    metal::float3 _e4 = weft_aniso_bent_normal(frame_2, v_6, k, roughness_6);
     bent_1 = _e4;
     metal::float3 _e7 = bent_1;
-    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
     c_1 = _e9;
     metal::float3 _e11 = c_1;
     return _e11;
@@ -404,8 +438,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -426,7 +460,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     SatinLayers layers = {};
     metal::float3 specular = {};
@@ -458,71 +492,65 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
     float noise = 0.5 + (0.5 * metal::saturate(_e62.x));
-    metal::float3 _e74 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_7 = _e71.v;
+    n = _e71.n;
+    metal::float3 _e75 = n;
+    metal::float3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     metal::float3 _e78 = n;
-    metal::float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    metal::float3 _e81 = weft_main_light_direction(weft_frame);
-    metal::float3 _e83 = n;
-    metal::float3 _e84 = weft_safe_normalize(_e81 + _e74, _e83);
-    metal::float3 _e85 = n;
-    float _e87 = weft_clamp_cos(metal::dot(_e85, _e74));
-    metal::float3 _e88 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e88, _e81));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e74, _e84));
-    metal::float3 _e93 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e96 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e96;
-    metal::float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_7, weft_frame);
+    metal::float3 _e80 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e83 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e83;
+    metal::float2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float4 _e107 = material.specular_color;
-    metal::float3 c1_ = metal::saturate(_e107.xyz);
-    metal::float4 _e112 = material.second_specular_color;
-    metal::float3 c2_ = metal::saturate(_e112.xyz);
-    metal::float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float4 _e94 = material.specular_color;
+    metal::float3 c1_ = metal::saturate(_e94.xyz);
+    metal::float4 _e99 = material.second_specular_color;
+    metal::float3 c2_ = metal::saturate(_e99.xyz);
+    metal::float3 _e103 = weft_f_schlick(f0_2, _e79.v_dot_h);
     {
-        float _e120 = weft_max3_(c1_);
-        metal::float3 t1_ = metal::mix(c1_, metal::float3(_e120), 0.5);
-        float _e124 = weft_max3_(c2_);
-        metal::float3 t2_ = metal::mix(c2_, metal::float3(_e124), 0.5);
-        float _e129 = weft_max3_(t1_ + t2_);
-        float norm = 1.0 / metal::max(1.0, _e129);
+        float _e108 = weft_max3_(c1_);
+        metal::float3 t1_ = metal::mix(c1_, metal::float3(_e108), 0.5);
+        float _e112 = weft_max3_(c2_);
+        metal::float3 t2_ = metal::mix(c2_, metal::float3(_e112), 0.5);
+        float _e117 = weft_max3_(t1_ + t2_);
+        float norm = 1.0 / metal::max(1.0, _e117);
         metal::float3 w1_ = t1_ * norm;
         metal::float3 w2_ = t2_ * norm;
-        metal::float3 _e136 = weft_aniso_to_frame(_e80, _e74);
-        metal::float3 _e137 = weft_aniso_to_frame(_e80, _e81);
-        metal::float2 _e139 = layers.narrow;
-        float _e140 = satin_lobe_reference(_e136, _e137, _e139);
-        metal::float2 _e142 = layers.wide;
-        float _e143 = satin_lobe_reference(_e136, _e137, _e142);
-        specular = ((((w1_ * _e140) + (w2_ * _e143)) * _e115) * noise) * _e93;
-        metal::float3 _e153 = weft_f_schlick(f0_2, _e87);
-        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e153), metal::float3(0.0));
-        metal::float2 _e159 = weft_env_brdf_lut(_e87, roughness_7, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e160 = weft_env_brdf_from_lut(f0_2, _e159);
-        metal::float3 e1_ = _e160 * w1_;
-        metal::float2 _e162 = weft_env_brdf_lut(_e87, roughness2_, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e163 = weft_env_brdf_from_lut(f0_2, _e162);
-        metal::float3 e2_ = _e163 * w2_;
+        metal::float3 _e124 = weft_aniso_to_frame(_e77, v_7);
+        metal::float3 _e126 = weft_aniso_to_frame(_e77, _e79.l);
+        metal::float2 _e128 = layers.narrow;
+        float _e129 = satin_lobe_reference(_e124, _e126, _e128);
+        metal::float2 _e131 = layers.wide;
+        float _e132 = satin_lobe_reference(_e124, _e126, _e131);
+        specular = ((((w1_ * _e129) + (w2_ * _e132)) * _e103) * noise) * _e80;
+        metal::float3 _e143 = weft_f_schlick(f0_2, _e79.n_dot_v);
+        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e143), metal::float3(0.0));
+        metal::float2 _e150 = weft_env_brdf_lut(_e79.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e151 = weft_env_brdf_from_lut(f0_2, _e150);
+        metal::float3 e1_ = _e151 * w1_;
+        metal::float2 _e154 = weft_env_brdf_lut(_e79.n_dot_v, roughness2_, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e155 = weft_env_brdf_from_lut(f0_2, _e154);
+        metal::float3 e2_ = _e155 * w2_;
         {
-            metal::float3 _e165 = satin_env(_e80, _e74, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-            metal::float3 _e167 = satin_env(_e80, _e74, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
-            indirect_specular = ((_e165 * e1_) + (_e167 * e2_)) * noise;
+            metal::float3 _e157 = satin_env(_e77, v_7, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 _e159 = satin_env(_e77, v_7, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
+            indirect_specular = ((_e157 * e1_) + (_e159 * e2_)) * noise;
         }
         ambient_kd = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     }
-    metal::float3 _e178 = diffuse_kd;
-    metal::float3 _e179 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 _e183 = specular;
-    metal::float3 direct = (((_e178 * _e179) * _e93) * n_dot_l) + _e183;
-    metal::float3 _e185 = indirect_specular;
-    metal::float3 _e187 = n;
-    metal::float3 _e188 = weft_sh_irradiance(_e187, weft_frame);
-    metal::float3 _e190 = ambient_kd;
-    metal::float3 indirect = (_e185 * ao) + (((_e188 * ao) * _e190) * diffuse_albedo);
+    metal::float3 _e170 = diffuse_kd;
+    metal::float3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e176 = specular;
+    metal::float3 direct = (((_e170 * _e171) * _e80) * _e79.n_dot_l) + _e176;
+    metal::float3 _e178 = indirect_specular;
+    metal::float3 _e180 = n;
+    metal::float3 _e181 = weft_sh_irradiance(_e180, weft_frame);
+    metal::float3 _e183 = ambient_kd;
+    metal::float3 indirect = (_e178 * ao) + (((_e181 * ao) * _e183) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -27,6 +27,18 @@ struct WeftMaterial {
     float second_layer_width;
     float anisotropy;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -184,26 +196,46 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_2);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_2);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_6 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_6.xy * strength), max(v_6.z, 0.001));
+    vec3 v_7 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_7.xy * strength), max(v_7.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -237,29 +269,29 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_2.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_3, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_3.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_3.x), (alpha_b_2 * v_3.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float weft_spec_ggx_aniso(vec3 v_3, vec3 l_1, float alpha_t_3, float alpha_b_3) {
-    vec3 _e9 = weft_safe_normalize((v_3 + l_1), vec3(0.0, 0.0, 1.0));
+float weft_spec_ggx_aniso(vec3 v_4, vec3 l_1, float alpha_t_3, float alpha_b_3) {
+    vec3 _e9 = weft_safe_normalize((v_4 + l_1), vec3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * clamp(l_1.z, 0.0, 1.0));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_4, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_5, float anisotropy_1, float roughness_5) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_2[2];
+    vec3 n_6 = frame_2[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_4);
+    vec3 aniso_t = cross(dir_1, v_5);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -276,20 +308,20 @@ float satin_lobe_reference(vec3 vf, vec3 lf, vec2 a) {
     return _e14;
 }
 
-vec3 satin_env(mat3x3 frame_3, vec3 v_5, float k, float roughness_6) {
+vec3 satin_env(mat3x3 frame_3, vec3 v_6, float k, float roughness_6) {
     vec3 bent_1 = vec3(0.0);
     vec3 c_1 = vec3(0.0);
-    vec3 _e4 = weft_aniso_bent_normal(frame_3, v_5, k, roughness_6);
+    vec3 _e4 = weft_aniso_bent_normal(frame_3, v_6, k, roughness_6);
     bent_1 = _e4;
     vec3 _e7 = bent_1;
-    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    vec3 _e9 = weft_prefiltered_radiance(reflect(-(v_6), _e7), roughness_6);
     c_1 = _e9;
     {
-        vec3 _e12 = weft_aniso_bent_normal(frame_3, v_5, -(k), roughness_6);
+        vec3 _e12 = weft_aniso_bent_normal(frame_3, v_6, -(k), roughness_6);
         bent_1 = _e12;
         vec3 _e13 = c_1;
         vec3 _e15 = bent_1;
-        vec3 _e17 = weft_prefiltered_radiance(reflect(-(v_5), _e15), roughness_6);
+        vec3 _e17 = weft_prefiltered_radiance(reflect(-(v_6), _e15), roughness_6);
         c_1 = (0.5 * (_e13 + _e17));
     }
     vec3 _e21 = c_1;
@@ -329,81 +361,73 @@ void main() {
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
     float noise = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
-    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_8 = _e71.v;
+    n = _e71.n;
     {
-        vec3 _e78 = n;
-        mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        vec4 _e83 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e83.xyz;
-        float _e87 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e88 = weft_unpack_normal(texel_1, _e87);
-        vec3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        vec4 _e77 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e77.xyz;
+        vec3 _e79 = n;
+        float _e83 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    vec3 _e90 = n;
-    mat3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    vec3 _e93 = weft_main_light_direction();
-    vec3 _e95 = n;
-    vec3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    vec3 _e97 = n;
-    float _e99 = weft_clamp_cos(dot(_e97, _e74));
-    vec3 _e100 = n;
-    float n_dot_l = clamp(dot(_e100, _e93), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e74, _e96), 0.0, 1.0);
-    vec3 _e105 = weft_main_light_radiance();
-    vec2 _e108 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e108;
-    vec2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    vec3 _e85 = n;
+    mat3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    vec3 _e88 = n;
+    WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_8);
+    vec3 _e90 = weft_main_light_radiance();
+    vec2 _e93 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e93;
+    vec2 _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec4 _e119 = _group_1_binding_0_fs.specular_color;
-    vec3 c1_ = clamp(_e119.xyz, vec3(0.0), vec3(1.0));
-    vec4 _e124 = _group_1_binding_0_fs.second_specular_color;
-    vec3 c2_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e127 = weft_f_schlick(f0_2, v_dot_h_1);
+    vec4 _e104 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_ = clamp(_e104.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e109 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_ = clamp(_e109.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e113 = weft_f_schlick(f0_2, _e89.v_dot_h);
     {
-        float _e132 = weft_max3_(c1_);
-        vec3 t1_ = mix(c1_, vec3(_e132), 0.5);
-        float _e136 = weft_max3_(c2_);
-        vec3 t2_ = mix(c2_, vec3(_e136), 0.5);
-        float _e141 = weft_max3_((t1_ + t2_));
-        float norm = (1.0 / max(1.0, _e141));
+        float _e118 = weft_max3_(c1_);
+        vec3 t1_ = mix(c1_, vec3(_e118), 0.5);
+        float _e122 = weft_max3_(c2_);
+        vec3 t2_ = mix(c2_, vec3(_e122), 0.5);
+        float _e127 = weft_max3_((t1_ + t2_));
+        float norm = (1.0 / max(1.0, _e127));
         vec3 w1_ = (t1_ * norm);
         vec3 w2_ = (t2_ * norm);
-        vec3 _e148 = weft_aniso_to_frame(_e92, _e74);
-        vec3 _e149 = weft_aniso_to_frame(_e92, _e93);
-        vec2 _e151 = layers.narrow;
-        float _e152 = satin_lobe_reference(_e148, _e149, _e151);
-        vec2 _e154 = layers.wide;
-        float _e155 = satin_lobe_reference(_e148, _e149, _e154);
-        specular = (((((w1_ * _e152) + (w2_ * _e155)) * _e127) * noise) * _e105);
-        vec3 _e165 = weft_f_schlick(f0_2, _e99);
-        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e165)), vec3(0.0));
-        vec2 _e171 = weft_env_brdf_lut(_e99, roughness_7);
-        vec3 _e172 = weft_env_brdf_from_lut(f0_2, _e171);
-        vec3 e1_ = (_e172 * w1_);
-        vec2 _e174 = weft_env_brdf_lut(_e99, roughness2_);
-        vec3 _e175 = weft_env_brdf_from_lut(f0_2, _e174);
-        vec3 e2_ = (_e175 * w2_);
+        vec3 _e134 = weft_aniso_to_frame(_e87, v_8);
+        vec3 _e136 = weft_aniso_to_frame(_e87, _e89.l);
+        vec2 _e138 = layers.narrow;
+        float _e139 = satin_lobe_reference(_e134, _e136, _e138);
+        vec2 _e141 = layers.wide;
+        float _e142 = satin_lobe_reference(_e134, _e136, _e141);
+        specular = (((((w1_ * _e139) + (w2_ * _e142)) * _e113) * noise) * _e90);
+        vec3 _e153 = weft_f_schlick(f0_2, _e89.n_dot_v);
+        diffuse_kd = max((vec3(1.0) - ((w1_ + w2_) * _e153)), vec3(0.0));
+        vec2 _e160 = weft_env_brdf_lut(_e89.n_dot_v, roughness_7);
+        vec3 _e161 = weft_env_brdf_from_lut(f0_2, _e160);
+        vec3 e1_ = (_e161 * w1_);
+        vec2 _e164 = weft_env_brdf_lut(_e89.n_dot_v, roughness2_);
+        vec3 _e165 = weft_env_brdf_from_lut(f0_2, _e164);
+        vec3 e2_ = (_e165 * w2_);
         {
-            vec3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
-            vec3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
-            indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+            vec3 _e167 = satin_env(_e87, v_8, anisotropy_2, roughness_7);
+            vec3 _e169 = satin_env(_e87, v_8, anisotropy_2, roughness2_);
+            indirect_specular = (((_e167 * e1_) + (_e169 * e2_)) * noise);
         }
         ambient_kd = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     }
-    vec3 _e190 = diffuse_kd;
-    vec3 _e191 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 _e195 = specular;
-    vec3 direct = ((((_e190 * _e191) * _e105) * n_dot_l) + _e195);
-    vec3 _e197 = indirect_specular;
-    vec3 _e199 = n;
-    vec3 _e200 = weft_sh_irradiance(_e199);
-    vec3 _e202 = ambient_kd;
-    vec3 indirect = ((_e197 * ao) + (((_e200 * ao) * _e202) * diffuse_albedo));
+    vec3 _e180 = diffuse_kd;
+    vec3 _e181 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e186 = specular;
+    vec3 direct = ((((_e180 * _e181) * _e90) * _e89.n_dot_l) + _e186);
+    vec3 _e188 = indirect_specular;
+    vec3 _e190 = n;
+    vec3 _e191 = weft_sh_irradiance(_e190);
+    vec3 _e193 = ambient_kd;
+    vec3 indirect = ((_e188 * ao) + (((_e191 * ao) * _e193) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

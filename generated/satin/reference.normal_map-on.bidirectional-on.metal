@@ -39,6 +39,19 @@ struct WeftMaterial {
     float anisotropy;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -222,27 +235,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_2;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_2;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_6 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_6.xy * strength, metal::max(v_6.z, 0.001));
+    metal::float3 v_7 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_7.xy * strength, metal::max(v_7.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -251,6 +285,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -306,43 +352,43 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_2.z);
+    float _e5 = weft_clamp_cos(v_3.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_3.x, alpha_b_2 * v_3.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 float weft_spec_ggx_aniso(
-    metal::float3 v_3,
+    metal::float3 v_4,
     metal::float3 l_1,
     float alpha_t_3,
     float alpha_b_3
 ) {
-    metal::float3 _e9 = weft_safe_normalize(v_3 + l_1, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e9 = weft_safe_normalize(v_4 + l_1, metal::float3(0.0, 0.0, 1.0));
     float _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    float _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    float _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return (_e13 * _e14) * metal::saturate(l_1.z);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_4,
+    metal::float3 v_5,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_2[2];
+    metal::float3 n_6 = frame_2[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_4);
+    metal::float3 aniso_t = metal::cross(dir_1, v_5);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -365,7 +411,7 @@ float satin_lobe_reference(
 
 metal::float3 satin_env(
     metal::float3x3 frame_3,
-    metal::float3 v_5,
+    metal::float3 v_6,
     float k,
     float roughness_6,
     constant WeftFrame& weft_frame,
@@ -374,17 +420,17 @@ metal::float3 satin_env(
 ) {
     metal::float3 bent_1 = {};
     metal::float3 c_1 = {};
-    metal::float3 _e4 = weft_aniso_bent_normal(frame_3, v_5, k, roughness_6);
+    metal::float3 _e4 = weft_aniso_bent_normal(frame_3, v_6, k, roughness_6);
     bent_1 = _e4;
     metal::float3 _e7 = bent_1;
-    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e9 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e7), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
     c_1 = _e9;
     {
-        metal::float3 _e12 = weft_aniso_bent_normal(frame_3, v_5, -(k), roughness_6);
+        metal::float3 _e12 = weft_aniso_bent_normal(frame_3, v_6, -(k), roughness_6);
         bent_1 = _e12;
         metal::float3 _e13 = c_1;
         metal::float3 _e15 = bent_1;
-        metal::float3 _e17 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e15), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e17 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e15), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
         c_1 = 0.5 * (_e13 + _e17);
     }
     metal::float3 _e21 = c_1;
@@ -394,7 +440,7 @@ metal::float3 satin_env(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -409,7 +455,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -433,8 +479,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -456,7 +502,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     SatinLayers layers = {};
     metal::float3 specular = {};
@@ -488,81 +534,73 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
     float noise = 0.5 + (0.5 * metal::saturate(_e62.x));
-    metal::float3 _e74 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_8 = _e71.v;
+    n = _e71.n;
     {
-        metal::float3 _e78 = n;
-        metal::float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        metal::float4 _e83 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e83.xyz;
-        float _e87 = material.normal_strength;
-        metal::float3 _e88 = weft_unpack_normal(texel_1, _e87);
-        metal::float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        metal::float4 _e77 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e77.xyz;
+        metal::float3 _e79 = n;
+        float _e83 = material.normal_strength;
+        metal::float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    metal::float3 _e90 = n;
-    metal::float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    metal::float3 _e93 = weft_main_light_direction(weft_frame);
-    metal::float3 _e95 = n;
-    metal::float3 _e96 = weft_safe_normalize(_e93 + _e74, _e95);
-    metal::float3 _e97 = n;
-    float _e99 = weft_clamp_cos(metal::dot(_e97, _e74));
-    metal::float3 _e100 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e100, _e93));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e74, _e96));
-    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e108 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e108;
-    metal::float2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    metal::float3 _e85 = n;
+    metal::float3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    metal::float3 _e88 = n;
+    WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_8, weft_frame);
+    metal::float3 _e90 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e93 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e93;
+    metal::float2 _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float4 _e119 = material.specular_color;
-    metal::float3 c1_ = metal::saturate(_e119.xyz);
-    metal::float4 _e124 = material.second_specular_color;
-    metal::float3 c2_ = metal::saturate(_e124.xyz);
-    metal::float3 _e127 = weft_f_schlick(f0_2, v_dot_h_1);
+    metal::float4 _e104 = material.specular_color;
+    metal::float3 c1_ = metal::saturate(_e104.xyz);
+    metal::float4 _e109 = material.second_specular_color;
+    metal::float3 c2_ = metal::saturate(_e109.xyz);
+    metal::float3 _e113 = weft_f_schlick(f0_2, _e89.v_dot_h);
     {
-        float _e132 = weft_max3_(c1_);
-        metal::float3 t1_ = metal::mix(c1_, metal::float3(_e132), 0.5);
-        float _e136 = weft_max3_(c2_);
-        metal::float3 t2_ = metal::mix(c2_, metal::float3(_e136), 0.5);
-        float _e141 = weft_max3_(t1_ + t2_);
-        float norm = 1.0 / metal::max(1.0, _e141);
+        float _e118 = weft_max3_(c1_);
+        metal::float3 t1_ = metal::mix(c1_, metal::float3(_e118), 0.5);
+        float _e122 = weft_max3_(c2_);
+        metal::float3 t2_ = metal::mix(c2_, metal::float3(_e122), 0.5);
+        float _e127 = weft_max3_(t1_ + t2_);
+        float norm = 1.0 / metal::max(1.0, _e127);
         metal::float3 w1_ = t1_ * norm;
         metal::float3 w2_ = t2_ * norm;
-        metal::float3 _e148 = weft_aniso_to_frame(_e92, _e74);
-        metal::float3 _e149 = weft_aniso_to_frame(_e92, _e93);
-        metal::float2 _e151 = layers.narrow;
-        float _e152 = satin_lobe_reference(_e148, _e149, _e151);
-        metal::float2 _e154 = layers.wide;
-        float _e155 = satin_lobe_reference(_e148, _e149, _e154);
-        specular = ((((w1_ * _e152) + (w2_ * _e155)) * _e127) * noise) * _e105;
-        metal::float3 _e165 = weft_f_schlick(f0_2, _e99);
-        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e165), metal::float3(0.0));
-        metal::float2 _e171 = weft_env_brdf_lut(_e99, roughness_7, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e172 = weft_env_brdf_from_lut(f0_2, _e171);
-        metal::float3 e1_ = _e172 * w1_;
-        metal::float2 _e174 = weft_env_brdf_lut(_e99, roughness2_, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e175 = weft_env_brdf_from_lut(f0_2, _e174);
-        metal::float3 e2_ = _e175 * w2_;
+        metal::float3 _e134 = weft_aniso_to_frame(_e87, v_8);
+        metal::float3 _e136 = weft_aniso_to_frame(_e87, _e89.l);
+        metal::float2 _e138 = layers.narrow;
+        float _e139 = satin_lobe_reference(_e134, _e136, _e138);
+        metal::float2 _e141 = layers.wide;
+        float _e142 = satin_lobe_reference(_e134, _e136, _e141);
+        specular = ((((w1_ * _e139) + (w2_ * _e142)) * _e113) * noise) * _e90;
+        metal::float3 _e153 = weft_f_schlick(f0_2, _e89.n_dot_v);
+        diffuse_kd = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e153), metal::float3(0.0));
+        metal::float2 _e160 = weft_env_brdf_lut(_e89.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e161 = weft_env_brdf_from_lut(f0_2, _e160);
+        metal::float3 e1_ = _e161 * w1_;
+        metal::float2 _e164 = weft_env_brdf_lut(_e89.n_dot_v, roughness2_, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e165 = weft_env_brdf_from_lut(f0_2, _e164);
+        metal::float3 e2_ = _e165 * w2_;
         {
-            metal::float3 _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-            metal::float3 _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
-            indirect_specular = ((_e177 * e1_) + (_e179 * e2_)) * noise;
+            metal::float3 _e167 = satin_env(_e87, v_8, anisotropy_2, roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 _e169 = satin_env(_e87, v_8, anisotropy_2, roughness2_, weft_frame, weft_environment, weft_environment_sampler);
+            indirect_specular = ((_e167 * e1_) + (_e169 * e2_)) * noise;
         }
         ambient_kd = metal::max((metal::float3(1.0) - e1_) - e2_, metal::float3(0.0));
     }
-    metal::float3 _e190 = diffuse_kd;
-    metal::float3 _e191 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 _e195 = specular;
-    metal::float3 direct = (((_e190 * _e191) * _e105) * n_dot_l) + _e195;
-    metal::float3 _e197 = indirect_specular;
-    metal::float3 _e199 = n;
-    metal::float3 _e200 = weft_sh_irradiance(_e199, weft_frame);
-    metal::float3 _e202 = ambient_kd;
-    metal::float3 indirect = (_e197 * ao) + (((_e200 * ao) * _e202) * diffuse_albedo);
+    metal::float3 _e180 = diffuse_kd;
+    metal::float3 _e181 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e186 = specular;
+    metal::float3 direct = (((_e180 * _e181) * _e90) * _e89.n_dot_l) + _e186;
+    metal::float3 _e188 = indirect_specular;
+    metal::float3 _e190 = n;
+    metal::float3 _e191 = weft_sh_irradiance(_e190, weft_frame);
+    metal::float3 _e193 = ambient_kd;
+    metal::float3 indirect = (_e188 * ao) + (((_e191 * ao) * _e193) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -29,6 +29,20 @@ struct WeftMaterial {
     anisotropy: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -193,26 +207,46 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_2);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_2);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_6 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_6.xy * strength), max(v_6.z, 0.001f));
+    let v_7 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_7.xy * strength), max(v_7.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -246,29 +280,29 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_2.z);
+fn weft_v_smith_ggx_aniso_correlated(v_3: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_3.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_3.x), (alpha_b_2 * v_3.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_spec_ggx_aniso(v_3: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
-    let _e9 = weft_safe_normalize((v_3 + l_1), vec3<f32>(0f, 0f, 1f));
+fn weft_spec_ggx_aniso(v_4: vec3<f32>, l_1: vec3<f32>, alpha_t_3: f32, alpha_b_3: f32) -> f32 {
+    let _e9 = weft_safe_normalize((v_4 + l_1), vec3<f32>(0f, 0f, 1f));
     let _e13 = weft_d_ggx_aniso(_e9.x, _e9.y, _e9.z, alpha_t_3, alpha_b_3);
-    let _e14 = weft_v_smith_ggx_aniso_correlated(v_3, l_1, alpha_t_3, alpha_b_3);
+    let _e14 = weft_v_smith_ggx_aniso_correlated(v_4, l_1, alpha_t_3, alpha_b_3);
     return ((_e13 * _e14) * saturate(l_1.z));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_4: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_5: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_2[2];
+    let n_6 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_4);
+    let aniso_t = cross(dir_1, v_5);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_2) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -286,21 +320,21 @@ fn satin_lobe_reference(vf: vec3<f32>, lf: vec3<f32>, a: vec2<f32>) -> f32 {
     return _e14;
 }
 
-fn satin_env(frame_3: mat3x3<f32>, v_5: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
+fn satin_env(frame_3: mat3x3<f32>, v_6: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
     var bent_1: vec3<f32>;
     var c_1: vec3<f32>;
 
-    let _e4 = weft_aniso_bent_normal(frame_3, v_5, k, roughness_6);
+    let _e4 = weft_aniso_bent_normal(frame_3, v_6, k, roughness_6);
     bent_1 = _e4;
     let _e7 = bent_1;
-    let _e9 = weft_prefiltered_radiance(reflect(-(v_5), _e7), roughness_6);
+    let _e9 = weft_prefiltered_radiance(reflect(-(v_6), _e7), roughness_6);
     c_1 = _e9;
     {
-        let _e12 = weft_aniso_bent_normal(frame_3, v_5, -(k), roughness_6);
+        let _e12 = weft_aniso_bent_normal(frame_3, v_6, -(k), roughness_6);
         bent_1 = _e12;
         let _e13 = c_1;
         let _e15 = bent_1;
-        let _e17 = weft_prefiltered_radiance(reflect(-(v_5), _e15), roughness_6);
+        let _e17 = weft_prefiltered_radiance(reflect(-(v_6), _e15), roughness_6);
         c_1 = (0.5f * (_e13 + _e17));
     }
     let _e21 = c_1;
@@ -364,81 +398,73 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
     let noise = (0.5f + (0.5f * saturate(_e62.x)));
-    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    let _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_8 = _e71.v;
+    n = _e71.n;
     {
-        let _e78 = n;
-        let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        let _e83 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e83.xyz;
-        let _e87 = material.normal_strength;
-        let _e88 = weft_unpack_normal(texel_1, _e87);
-        let _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        let _e77 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e77.xyz;
+        let _e79 = n;
+        let _e83 = material.normal_strength;
+        let _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    let _e90 = n;
-    let _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    let _e93 = weft_main_light_direction();
-    let _e95 = n;
-    let _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    let _e97 = n;
-    let _e99 = weft_clamp_cos(dot(_e97, _e74));
-    let _e100 = n;
-    let n_dot_l = saturate(dot(_e100, _e93));
-    let v_dot_h_1 = saturate(dot(_e74, _e96));
-    let _e105 = weft_main_light_radiance();
-    let _e108 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
-    layers.narrow = _e108;
-    let _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    let _e85 = n;
+    let _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    let _e88 = n;
+    let _e89 = weft_main_light_geometry(_e88, v_8);
+    let _e90 = weft_main_light_radiance();
+    let _e93 = weft_aniso_alpha_kulla(roughness_7, anisotropy_2);
+    layers.narrow = _e93;
+    let _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e119 = material.specular_color;
-    let c1_ = saturate(_e119.xyz);
-    let _e124 = material.second_specular_color;
-    let c2_ = saturate(_e124.xyz);
-    let _e127 = weft_f_schlick(f0_2, v_dot_h_1);
+    let _e104 = material.specular_color;
+    let c1_ = saturate(_e104.xyz);
+    let _e109 = material.second_specular_color;
+    let c2_ = saturate(_e109.xyz);
+    let _e113 = weft_f_schlick(f0_2, _e89.v_dot_h);
     {
-        let _e132 = weft_max3_(c1_);
-        let t1_ = mix(c1_, vec3(_e132), 0.5f);
-        let _e136 = weft_max3_(c2_);
-        let t2_ = mix(c2_, vec3(_e136), 0.5f);
-        let _e141 = weft_max3_((t1_ + t2_));
-        let norm = (1f / max(1f, _e141));
+        let _e118 = weft_max3_(c1_);
+        let t1_ = mix(c1_, vec3(_e118), 0.5f);
+        let _e122 = weft_max3_(c2_);
+        let t2_ = mix(c2_, vec3(_e122), 0.5f);
+        let _e127 = weft_max3_((t1_ + t2_));
+        let norm = (1f / max(1f, _e127));
         let w1_ = (t1_ * norm);
         let w2_ = (t2_ * norm);
-        let _e148 = weft_aniso_to_frame(_e92, _e74);
-        let _e149 = weft_aniso_to_frame(_e92, _e93);
-        let _e151 = layers.narrow;
-        let _e152 = satin_lobe_reference(_e148, _e149, _e151);
-        let _e154 = layers.wide;
-        let _e155 = satin_lobe_reference(_e148, _e149, _e154);
-        specular = (((((w1_ * _e152) + (w2_ * _e155)) * _e127) * noise) * _e105);
-        let _e165 = weft_f_schlick(f0_2, _e99);
-        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e165)), vec3(0f));
-        let _e171 = weft_env_brdf_lut(_e99, roughness_7);
-        let _e172 = weft_env_brdf_from_lut(f0_2, _e171);
-        let e1_ = (_e172 * w1_);
-        let _e174 = weft_env_brdf_lut(_e99, roughness2_);
-        let _e175 = weft_env_brdf_from_lut(f0_2, _e174);
-        let e2_ = (_e175 * w2_);
+        let _e134 = weft_aniso_to_frame(_e87, v_8);
+        let _e136 = weft_aniso_to_frame(_e87, _e89.l);
+        let _e138 = layers.narrow;
+        let _e139 = satin_lobe_reference(_e134, _e136, _e138);
+        let _e141 = layers.wide;
+        let _e142 = satin_lobe_reference(_e134, _e136, _e141);
+        specular = (((((w1_ * _e139) + (w2_ * _e142)) * _e113) * noise) * _e90);
+        let _e153 = weft_f_schlick(f0_2, _e89.n_dot_v);
+        diffuse_kd = max((vec3(1f) - ((w1_ + w2_) * _e153)), vec3(0f));
+        let _e160 = weft_env_brdf_lut(_e89.n_dot_v, roughness_7);
+        let _e161 = weft_env_brdf_from_lut(f0_2, _e160);
+        let e1_ = (_e161 * w1_);
+        let _e164 = weft_env_brdf_lut(_e89.n_dot_v, roughness2_);
+        let _e165 = weft_env_brdf_from_lut(f0_2, _e164);
+        let e2_ = (_e165 * w2_);
         {
-            let _e177 = satin_env(_e92, _e74, anisotropy_2, roughness_7);
-            let _e179 = satin_env(_e92, _e74, anisotropy_2, roughness2_);
-            indirect_specular = (((_e177 * e1_) + (_e179 * e2_)) * noise);
+            let _e167 = satin_env(_e87, v_8, anisotropy_2, roughness_7);
+            let _e169 = satin_env(_e87, v_8, anisotropy_2, roughness2_);
+            indirect_specular = (((_e167 * e1_) + (_e169 * e2_)) * noise);
         }
         ambient_kd = max(((vec3(1f) - e1_) - e2_), vec3(0f));
     }
-    let _e190 = diffuse_kd;
-    let _e191 = weft_diffuse_lambert(diffuse_albedo);
-    let _e195 = specular;
-    let direct = ((((_e190 * _e191) * _e105) * n_dot_l) + _e195);
-    let _e197 = indirect_specular;
-    let _e199 = n;
-    let _e200 = weft_sh_irradiance(_e199);
-    let _e202 = ambient_kd;
-    let indirect = ((_e197 * ao) + (((_e200 * ao) * _e202) * diffuse_albedo));
+    let _e180 = diffuse_kd;
+    let _e181 = weft_diffuse_lambert(diffuse_albedo);
+    let _e186 = specular;
+    let direct = ((((_e180 * _e181) * _e90) * _e89.n_dot_l) + _e186);
+    let _e188 = indirect_specular;
+    let _e190 = n;
+    let _e191 = weft_sh_irradiance(_e190);
+    let _e193 = ambient_kd;
+    let indirect = ((_e188 * ao) + (((_e191 * ao) * _e193) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -27,6 +27,18 @@ struct WeftMaterial {
     float second_layer_width;
     float anisotropy;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -202,16 +214,29 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
     return max(c_3.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -243,14 +268,14 @@ float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_do
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float roughness_7) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_3, float anisotropy_1, float roughness_7) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_1[2];
+    vec3 n_5 = frame_1[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -301,64 +326,58 @@ void main() {
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
     float noise = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
-    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_4 = _e71.v;
+    n = _e71.n;
+    vec3 _e75 = n;
+    mat3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     vec3 _e78 = n;
-    mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    vec3 _e81 = weft_main_light_direction();
-    vec3 _e83 = n;
-    vec3 _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    vec3 _e85 = n;
-    float _e87 = weft_clamp_cos(dot(_e85, _e74));
-    vec3 _e88 = n;
-    float n_dot_l_1 = clamp(dot(_e88, _e81), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e74, _e84), 0.0, 1.0);
-    vec3 _e93 = weft_main_light_radiance();
-    vec2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e96;
-    vec2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_4);
+    vec3 _e80 = weft_main_light_radiance();
+    vec2 _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e83;
+    vec2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec4 _e107 = _group_1_binding_0_fs.specular_color;
-    vec3 c1_ = clamp(_e107.xyz, vec3(0.0), vec3(1.0));
-    vec4 _e112 = _group_1_binding_0_fs.second_specular_color;
-    vec3 c2_ = clamp(_e112.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec4 _e94 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_ = clamp(_e94.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e99 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_ = clamp(_e99.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e103 = weft_f_schlick(f0_3, _e79.v_dot_h);
     {
-        vec3 _e120 = weft_aniso_to_frame(_e80, _e84);
-        vec2 _e122 = layers.narrow;
-        float _e123 = satin_d_seed(_e120, _e122);
-        vec2 _e125 = layers.wide;
-        float _e126 = satin_d_seed(_e120, _e125);
-        float d2_ = (_e126 / width);
-        float _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        float _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        vec3 _e130 = satin_light_blend(c1_, _e93);
-        vec3 _e131 = satin_light_blend(c2_, _e93);
-        float _e134 = _group_1_binding_0_fs.specular_intensity;
-        float mag = max(_e134, 0.0);
-        specular = ((((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1.0) - _e115);
-        vec3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
-        vec3 _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        vec3 _e152 = bent;
-        vec3 _e154 = weft_prefiltered_radiance(reflect(-(_e74), _e152), roughness_8);
-        indirect_specular = ((_e154 * _e150) * noise);
-        vec3 _e159 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = (vec3(1.0) - _e159);
+        vec3 _e109 = weft_aniso_to_frame(_e77, _e79.h);
+        vec2 _e111 = layers.narrow;
+        float _e112 = satin_d_seed(_e109, _e111);
+        vec2 _e114 = layers.wide;
+        float _e115 = satin_d_seed(_e109, _e114);
+        float d2_ = (_e115 / width);
+        float _e119 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness_8);
+        float _e122 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness2_);
+        vec3 _e123 = satin_light_blend(c1_, _e80);
+        vec3 _e124 = satin_light_blend(c2_, _e80);
+        float _e127 = _group_1_binding_0_fs.specular_intensity;
+        float mag = max(_e127, 0.0);
+        specular = ((((_e112 * _e119) * _e123) + ((d2_ * _e122) * _e124)) * ((mag * noise) * _e79.n_dot_l));
+        diffuse_kd = (vec3(1.0) - _e103);
+        vec3 _e142 = weft_aniso_bent_normal(_e77, v_4, anisotropy_2, roughness_8);
+        bent = _e142;
+        vec3 _e145 = weft_env_brdf_approx(f0_3, _e79.n_dot_v, roughness_8);
+        vec3 _e147 = bent;
+        vec3 _e149 = weft_prefiltered_radiance(reflect(-(v_4), _e147), roughness_8);
+        indirect_specular = ((_e149 * _e145) * noise);
+        vec3 _e155 = weft_f_schlick_roughness(f0_3, _e79.n_dot_v, roughness_8);
+        ambient_kd = (vec3(1.0) - _e155);
     }
-    vec3 _e161 = diffuse_kd;
-    vec3 _e162 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 _e166 = specular;
-    vec3 direct = ((((_e161 * _e162) * _e93) * n_dot_l_1) + _e166);
-    vec3 _e168 = indirect_specular;
-    vec3 _e170 = n;
-    vec3 _e171 = weft_sh_irradiance(_e170);
-    vec3 _e173 = ambient_kd;
-    vec3 indirect = ((_e168 * ao) + (((_e171 * ao) * _e173) * diffuse_albedo));
+    vec3 _e157 = diffuse_kd;
+    vec3 _e158 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e163 = specular;
+    vec3 direct = ((((_e157 * _e158) * _e80) * _e79.n_dot_l) + _e163);
+    vec3 _e165 = indirect_specular;
+    vec3 _e167 = n;
+    vec3 _e168 = weft_sh_irradiance(_e167);
+    vec3 _e170 = ambient_kd;
+    vec3 indirect = ((_e165 * ao) + (((_e168 * ao) * _e170) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

@@ -39,6 +39,19 @@ struct WeftMaterial {
     float anisotropy;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -252,19 +265,40 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_3.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float2 weft_transform_uv(
@@ -319,17 +353,17 @@ float weft_d_ggx_aniso_unnormalized(
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_1,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
     float roughness_7
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_1[2];
+    metal::float3 n_5 = frame_1[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_1[1] : frame_1[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_7));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -395,8 +429,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -415,7 +449,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     SatinLayers layers = {};
     metal::float3 specular = {};
@@ -447,64 +481,58 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
     float noise = 0.5 + (0.5 * metal::saturate(_e62.x));
-    metal::float3 _e74 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e71.v;
+    n = _e71.n;
+    metal::float3 _e75 = n;
+    metal::float3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     metal::float3 _e78 = n;
-    metal::float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    metal::float3 _e81 = weft_main_light_direction(weft_frame);
-    metal::float3 _e83 = n;
-    metal::float3 _e84 = weft_safe_normalize(_e81 + _e74, _e83);
-    metal::float3 _e85 = n;
-    float _e87 = weft_clamp_cos(metal::dot(_e85, _e74));
-    metal::float3 _e88 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e88, _e81));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e74, _e84));
-    metal::float3 _e93 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e96;
-    metal::float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_4, weft_frame);
+    metal::float3 _e80 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e83;
+    metal::float2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float4 _e107 = material.specular_color;
-    metal::float3 c1_ = metal::saturate(_e107.xyz);
-    metal::float4 _e112 = material.second_specular_color;
-    metal::float3 c2_ = metal::saturate(_e112.xyz);
-    metal::float3 _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float4 _e94 = material.specular_color;
+    metal::float3 c1_ = metal::saturate(_e94.xyz);
+    metal::float4 _e99 = material.second_specular_color;
+    metal::float3 c2_ = metal::saturate(_e99.xyz);
+    metal::float3 _e103 = weft_f_schlick(f0_3, _e79.v_dot_h);
     {
-        metal::float3 _e120 = weft_aniso_to_frame(_e80, _e84);
-        metal::float2 _e122 = layers.narrow;
-        float _e123 = satin_d_seed(_e120, _e122);
-        metal::float2 _e125 = layers.wide;
-        float _e126 = satin_d_seed(_e120, _e125);
-        float d2_ = _e126 / width;
-        float _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        float _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        metal::float3 _e130 = satin_light_blend(c1_, _e93);
-        metal::float3 _e131 = satin_light_blend(c2_, _e93);
-        float _e134 = material.specular_intensity;
-        float mag = metal::max(_e134, 0.0);
-        specular = (((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise) * n_dot_l_1);
-        diffuse_kd = metal::float3(1.0) - _e115;
-        metal::float3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
-        metal::float3 _e150 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        metal::float3 _e152 = bent;
-        metal::float3 _e154 = weft_prefiltered_radiance(metal::reflect(-(_e74), _e152), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular = (_e154 * _e150) * noise;
-        metal::float3 _e159 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = metal::float3(1.0) - _e159;
+        metal::float3 _e109 = weft_aniso_to_frame(_e77, _e79.h);
+        metal::float2 _e111 = layers.narrow;
+        float _e112 = satin_d_seed(_e109, _e111);
+        metal::float2 _e114 = layers.wide;
+        float _e115 = satin_d_seed(_e109, _e114);
+        float d2_ = _e115 / width;
+        float _e119 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness_8);
+        float _e122 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness2_);
+        metal::float3 _e123 = satin_light_blend(c1_, _e80);
+        metal::float3 _e124 = satin_light_blend(c2_, _e80);
+        float _e127 = material.specular_intensity;
+        float mag = metal::max(_e127, 0.0);
+        specular = (((_e112 * _e119) * _e123) + ((d2_ * _e122) * _e124)) * ((mag * noise) * _e79.n_dot_l);
+        diffuse_kd = metal::float3(1.0) - _e103;
+        metal::float3 _e142 = weft_aniso_bent_normal(_e77, v_4, anisotropy_2, roughness_8);
+        bent = _e142;
+        metal::float3 _e145 = weft_env_brdf_approx(f0_3, _e79.n_dot_v, roughness_8);
+        metal::float3 _e147 = bent;
+        metal::float3 _e149 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e147), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
+        indirect_specular = (_e149 * _e145) * noise;
+        metal::float3 _e155 = weft_f_schlick_roughness(f0_3, _e79.n_dot_v, roughness_8);
+        ambient_kd = metal::float3(1.0) - _e155;
     }
-    metal::float3 _e161 = diffuse_kd;
-    metal::float3 _e162 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 _e166 = specular;
-    metal::float3 direct = (((_e161 * _e162) * _e93) * n_dot_l_1) + _e166;
-    metal::float3 _e168 = indirect_specular;
-    metal::float3 _e170 = n;
-    metal::float3 _e171 = weft_sh_irradiance(_e170, weft_frame);
-    metal::float3 _e173 = ambient_kd;
-    metal::float3 indirect = (_e168 * ao) + (((_e171 * ao) * _e173) * diffuse_albedo);
+    metal::float3 _e157 = diffuse_kd;
+    metal::float3 _e158 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e163 = specular;
+    metal::float3 direct = (((_e157 * _e158) * _e80) * _e79.n_dot_l) + _e163;
+    metal::float3 _e165 = indirect_specular;
+    metal::float3 _e167 = n;
+    metal::float3 _e168 = weft_sh_irradiance(_e167, weft_frame);
+    metal::float3 _e170 = ambient_kd;
+    metal::float3 indirect = (_e165 * ao) + (((_e168 * ao) * _e170) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

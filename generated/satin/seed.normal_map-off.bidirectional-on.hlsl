@@ -38,6 +38,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -88,16 +106,16 @@ Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> noise_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -248,17 +266,52 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
     return max(c_3.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -295,15 +348,15 @@ float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_do
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_2, float anisotropy_1, float roughness_7)
+float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_3, float anisotropy_1, float roughness_7)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_1[2];
+    float3 n_5 = frame_1[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_1[1] : frame_1[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -356,7 +409,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     SatinLayers layers = (SatinLayers)0;
     float3 specular = (float3)0;
@@ -389,68 +442,62 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     float4 _e62 = noise_map.Sample(material_sampler, _e59);
     float noise_ = (0.5 + (0.5 * saturate(_e62.x)));
-    const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    const WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_4 = _e71.v;
+    n = _e71.n;
+    float3 _e75 = n;
+    const float3x3 _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     float3 _e78 = n;
-    const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    const float3 _e81 = weft_main_light_direction();
-    float3 _e83 = n;
-    const float3 _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    float3 _e85 = n;
-    const float _e87 = weft_clamp_cos(dot(_e85, _e74));
-    float3 _e88 = n;
-    float n_dot_l_1 = saturate(dot(_e88, _e81));
-    float v_dot_h_1 = saturate(dot(_e74, _e84));
-    const float3 _e93 = weft_main_light_radiance();
-    const float2 _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e96;
-    const float2 _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    const WeftLightGeometry _e79 = weft_main_light_geometry(_e78, v_4);
+    const float3 _e80 = weft_main_light_radiance();
+    const float2 _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e83;
+    const float2 _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    float4 _e107 = material.specular_color;
-    float3 c1_ = saturate(_e107.xyz);
-    float4 _e112 = material.second_specular_color;
-    float3 c2_ = saturate(_e112.xyz);
-    const float3 _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    float4 _e94 = material.specular_color;
+    float3 c1_ = saturate(_e94.xyz);
+    float4 _e99 = material.second_specular_color;
+    float3 c2_ = saturate(_e99.xyz);
+    const float3 _e103 = weft_f_schlick(f0_3, _e79.v_dot_h);
     {
-        const float3 _e120 = weft_aniso_to_frame(_e80, _e84);
-        float2 _e122 = layers.narrow;
-        const float _e123 = satin_d_seed(_e120, _e122);
-        float2 _e125 = layers.wide;
-        const float _e126 = satin_d_seed(_e120, _e125);
-        float d2_ = (_e126 / width);
-        const float _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        const float _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        const float3 _e130 = satin_light_blend(c1_, _e93);
-        const float3 _e131 = satin_light_blend(c2_, _e93);
-        float _e134 = material.specular_intensity;
-        float mag = max(_e134, 0.0);
-        specular = ((((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise_) * n_dot_l_1));
-        diffuse_kd = ((1.0).xxx - _e115);
-        const float3 _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
+        const float3 _e109 = weft_aniso_to_frame(_e77, _e79.h);
+        float2 _e111 = layers.narrow;
+        const float _e112 = satin_d_seed(_e109, _e111);
+        float2 _e114 = layers.wide;
+        const float _e115 = satin_d_seed(_e109, _e114);
+        float d2_ = (_e115 / width);
+        const float _e119 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness_8);
+        const float _e122 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness2_);
+        const float3 _e123 = satin_light_blend(c1_, _e80);
+        const float3 _e124 = satin_light_blend(c2_, _e80);
+        float _e127 = material.specular_intensity;
+        float mag = max(_e127, 0.0);
+        specular = ((((_e112 * _e119) * _e123) + ((d2_ * _e122) * _e124)) * ((mag * noise_) * _e79.n_dot_l));
+        diffuse_kd = ((1.0).xxx - _e103);
+        const float3 _e142 = weft_aniso_bent_normal(_e77, v_4, anisotropy_2, roughness_8);
+        bent = _e142;
         {
-            float3 _e150 = n;
-            bent = _e150;
+            float3 _e144 = n;
+            bent = _e144;
         }
-        const float3 _e151 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        float3 _e153 = bent;
-        const float3 _e155 = weft_prefiltered_radiance(reflect(-(_e74), _e153), roughness_8);
-        indirect_specular = ((_e155 * _e151) * noise_);
-        const float3 _e160 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = ((1.0).xxx - _e160);
+        const float3 _e146 = weft_env_brdf_approx(f0_3, _e79.n_dot_v, roughness_8);
+        float3 _e148 = bent;
+        const float3 _e150 = weft_prefiltered_radiance(reflect(-(v_4), _e148), roughness_8);
+        indirect_specular = ((_e150 * _e146) * noise_);
+        const float3 _e156 = weft_f_schlick_roughness(f0_3, _e79.n_dot_v, roughness_8);
+        ambient_kd = ((1.0).xxx - _e156);
     }
-    float3 _e162 = diffuse_kd;
-    const float3 _e163 = weft_diffuse_lambert(diffuse_albedo);
-    float3 _e167 = specular;
-    float3 direct = ((((_e162 * _e163) * _e93) * n_dot_l_1) + _e167);
-    float3 _e169 = indirect_specular;
-    float3 _e171 = n;
-    const float3 _e172 = weft_sh_irradiance(_e171);
-    float3 _e174 = ambient_kd;
-    float3 indirect = ((_e169 * ao) + (((_e172 * ao) * _e174) * diffuse_albedo));
+    float3 _e158 = diffuse_kd;
+    const float3 _e159 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e164 = specular;
+    float3 direct = ((((_e158 * _e159) * _e80) * _e79.n_dot_l) + _e164);
+    float3 _e166 = indirect_specular;
+    float3 _e168 = n;
+    const float3 _e169 = weft_sh_irradiance(_e168);
+    float3 _e171 = ambient_kd;
+    float3 indirect = ((_e166 * ao) + (((_e169 * ao) * _e171) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -29,6 +29,20 @@ struct WeftMaterial {
     anisotropy: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -209,16 +223,29 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     return max(c_3.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -250,14 +277,14 @@ fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32,
     return select(0f, d_1, (n_dot_h_1 > 0f));
 }
 
-fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_1[2];
+    let n_5 = frame_1[2];
     let dir_1 = select(frame_1[0], frame_1[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -338,68 +365,62 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
     let noise = (0.5f + (0.5f * saturate(_e62.x)));
-    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    let _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e71.v;
+    n = _e71.n;
+    let _e75 = n;
+    let _e77 = weft_tangent_frame(_e75, in_1.world_tangent);
     let _e78 = n;
-    let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-    let _e81 = weft_main_light_direction();
-    let _e83 = n;
-    let _e84 = weft_safe_normalize((_e81 + _e74), _e83);
-    let _e85 = n;
-    let _e87 = weft_clamp_cos(dot(_e85, _e74));
-    let _e88 = n;
-    let n_dot_l_1 = saturate(dot(_e88, _e81));
-    let v_dot_h_1 = saturate(dot(_e74, _e84));
-    let _e93 = weft_main_light_radiance();
-    let _e96 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e96;
-    let _e98 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e98;
+    let _e79 = weft_main_light_geometry(_e78, v_4);
+    let _e80 = weft_main_light_radiance();
+    let _e83 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e83;
+    let _e85 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e85;
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e107 = material.specular_color;
-    let c1_ = saturate(_e107.xyz);
-    let _e112 = material.second_specular_color;
-    let c2_ = saturate(_e112.xyz);
-    let _e115 = weft_f_schlick(f0_3, v_dot_h_1);
+    let _e94 = material.specular_color;
+    let c1_ = saturate(_e94.xyz);
+    let _e99 = material.second_specular_color;
+    let c2_ = saturate(_e99.xyz);
+    let _e103 = weft_f_schlick(f0_3, _e79.v_dot_h);
     {
-        let _e120 = weft_aniso_to_frame(_e80, _e84);
-        let _e122 = layers.narrow;
-        let _e123 = satin_d_seed(_e120, _e122);
-        let _e125 = layers.wide;
-        let _e126 = satin_d_seed(_e120, _e125);
-        let d2_ = (_e126 / width);
-        let _e128 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness_8);
-        let _e129 = weft_v_schlick_ggx(_e87, n_dot_l_1, roughness2_);
-        let _e130 = satin_light_blend(c1_, _e93);
-        let _e131 = satin_light_blend(c2_, _e93);
-        let _e134 = material.specular_intensity;
-        let mag = max(_e134, 0f);
-        specular = ((((_e123 * _e128) * _e130) + ((d2_ * _e129) * _e131)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1f) - _e115);
-        let _e148 = weft_aniso_bent_normal(_e80, _e74, anisotropy_2, roughness_8);
-        bent = _e148;
+        let _e109 = weft_aniso_to_frame(_e77, _e79.h);
+        let _e111 = layers.narrow;
+        let _e112 = satin_d_seed(_e109, _e111);
+        let _e114 = layers.wide;
+        let _e115 = satin_d_seed(_e109, _e114);
+        let d2_ = (_e115 / width);
+        let _e119 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness_8);
+        let _e122 = weft_v_schlick_ggx(_e79.n_dot_v, _e79.n_dot_l, roughness2_);
+        let _e123 = satin_light_blend(c1_, _e80);
+        let _e124 = satin_light_blend(c2_, _e80);
+        let _e127 = material.specular_intensity;
+        let mag = max(_e127, 0f);
+        specular = ((((_e112 * _e119) * _e123) + ((d2_ * _e122) * _e124)) * ((mag * noise) * _e79.n_dot_l));
+        diffuse_kd = (vec3(1f) - _e103);
+        let _e142 = weft_aniso_bent_normal(_e77, v_4, anisotropy_2, roughness_8);
+        bent = _e142;
         {
-            let _e150 = n;
-            bent = _e150;
+            let _e144 = n;
+            bent = _e144;
         }
-        let _e151 = weft_env_brdf_approx(f0_3, _e87, roughness_8);
-        let _e153 = bent;
-        let _e155 = weft_prefiltered_radiance(reflect(-(_e74), _e153), roughness_8);
-        indirect_specular = ((_e155 * _e151) * noise);
-        let _e160 = weft_f_schlick_roughness(f0_3, _e87, roughness_8);
-        ambient_kd = (vec3(1f) - _e160);
+        let _e146 = weft_env_brdf_approx(f0_3, _e79.n_dot_v, roughness_8);
+        let _e148 = bent;
+        let _e150 = weft_prefiltered_radiance(reflect(-(v_4), _e148), roughness_8);
+        indirect_specular = ((_e150 * _e146) * noise);
+        let _e156 = weft_f_schlick_roughness(f0_3, _e79.n_dot_v, roughness_8);
+        ambient_kd = (vec3(1f) - _e156);
     }
-    let _e162 = diffuse_kd;
-    let _e163 = weft_diffuse_lambert(diffuse_albedo);
-    let _e167 = specular;
-    let direct = ((((_e162 * _e163) * _e93) * n_dot_l_1) + _e167);
-    let _e169 = indirect_specular;
-    let _e171 = n;
-    let _e172 = weft_sh_irradiance(_e171);
-    let _e174 = ambient_kd;
-    let indirect = ((_e169 * ao) + (((_e172 * ao) * _e174) * diffuse_albedo));
+    let _e158 = diffuse_kd;
+    let _e159 = weft_diffuse_lambert(diffuse_albedo);
+    let _e164 = specular;
+    let direct = ((((_e158 * _e159) * _e80) * _e79.n_dot_l) + _e164);
+    let _e166 = indirect_specular;
+    let _e168 = n;
+    let _e169 = weft_sh_irradiance(_e168);
+    let _e171 = ambient_kd;
+    let indirect = ((_e166 * ao) + (((_e169 * ao) * _e171) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

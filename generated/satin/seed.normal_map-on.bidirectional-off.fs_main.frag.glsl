@@ -27,6 +27,18 @@ struct WeftMaterial {
     float second_layer_width;
     float anisotropy;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -204,26 +216,46 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
     return max(c_3.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -255,14 +287,14 @@ float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_do
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_7) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_3, float anisotropy_1, float roughness_7) {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_2[2];
+    vec3 n_6 = frame_2[2];
     vec3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * clamp((5.0 * clamp(roughness_7, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -313,74 +345,66 @@ void main() {
     vec2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     vec4 _e62 = texture(_group_1_binding_6_fs, vec2(_e59));
     float noise = (0.5 + (0.5 * clamp(_e62.x, 0.0, 1.0)));
-    vec3 _e74 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_5 = _e71.v;
+    n = _e71.n;
     {
-        vec3 _e78 = n;
-        mat3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        vec4 _e83 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e83.xyz;
-        float _e87 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e88 = weft_unpack_normal(texel_1, _e87);
-        vec3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        vec4 _e77 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e77.xyz;
+        vec3 _e79 = n;
+        float _e83 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    vec3 _e90 = n;
-    mat3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    vec3 _e93 = weft_main_light_direction();
-    vec3 _e95 = n;
-    vec3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    vec3 _e97 = n;
-    float _e99 = weft_clamp_cos(dot(_e97, _e74));
-    vec3 _e100 = n;
-    float n_dot_l_1 = clamp(dot(_e100, _e93), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e74, _e96), 0.0, 1.0);
-    vec3 _e105 = weft_main_light_radiance();
-    vec2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e108;
-    vec2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    vec3 _e85 = n;
+    mat3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    vec3 _e88 = n;
+    WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_5);
+    vec3 _e90 = weft_main_light_radiance();
+    vec2 _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e93;
+    vec2 _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec4 _e119 = _group_1_binding_0_fs.specular_color;
-    vec3 c1_ = clamp(_e119.xyz, vec3(0.0), vec3(1.0));
-    vec4 _e124 = _group_1_binding_0_fs.second_specular_color;
-    vec3 c2_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
-    vec3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    vec4 _e104 = _group_1_binding_0_fs.specular_color;
+    vec3 c1_ = clamp(_e104.xyz, vec3(0.0), vec3(1.0));
+    vec4 _e109 = _group_1_binding_0_fs.second_specular_color;
+    vec3 c2_ = clamp(_e109.xyz, vec3(0.0), vec3(1.0));
+    vec3 _e113 = weft_f_schlick(f0_3, _e89.v_dot_h);
     {
-        vec3 _e132 = weft_aniso_to_frame(_e92, _e96);
-        vec2 _e134 = layers.narrow;
-        float _e135 = satin_d_seed(_e132, _e134);
-        vec2 _e137 = layers.wide;
-        float _e138 = satin_d_seed(_e132, _e137);
-        float d2_ = (_e138 / width);
-        float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
-        float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
-        vec3 _e142 = satin_light_blend(c1_, _e105);
-        vec3 _e143 = satin_light_blend(c2_, _e105);
-        float _e146 = _group_1_binding_0_fs.specular_intensity;
-        float mag = max(_e146, 0.0);
-        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1.0) - _e127);
-        vec3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
-        bent = _e160;
-        vec3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
-        vec3 _e164 = bent;
-        vec3 _e166 = weft_prefiltered_radiance(reflect(-(_e74), _e164), roughness_8);
-        indirect_specular = ((_e166 * _e162) * noise);
-        vec3 _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
-        ambient_kd = (vec3(1.0) - _e171);
+        vec3 _e119 = weft_aniso_to_frame(_e87, _e89.h);
+        vec2 _e121 = layers.narrow;
+        float _e122 = satin_d_seed(_e119, _e121);
+        vec2 _e124 = layers.wide;
+        float _e125 = satin_d_seed(_e119, _e124);
+        float d2_ = (_e125 / width);
+        float _e129 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness_8);
+        float _e132 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness2_);
+        vec3 _e133 = satin_light_blend(c1_, _e90);
+        vec3 _e134 = satin_light_blend(c2_, _e90);
+        float _e137 = _group_1_binding_0_fs.specular_intensity;
+        float mag = max(_e137, 0.0);
+        specular = ((((_e122 * _e129) * _e133) + ((d2_ * _e132) * _e134)) * ((mag * noise) * _e89.n_dot_l));
+        diffuse_kd = (vec3(1.0) - _e113);
+        vec3 _e152 = weft_aniso_bent_normal(_e87, v_5, anisotropy_2, roughness_8);
+        bent = _e152;
+        vec3 _e155 = weft_env_brdf_approx(f0_3, _e89.n_dot_v, roughness_8);
+        vec3 _e157 = bent;
+        vec3 _e159 = weft_prefiltered_radiance(reflect(-(v_5), _e157), roughness_8);
+        indirect_specular = ((_e159 * _e155) * noise);
+        vec3 _e165 = weft_f_schlick_roughness(f0_3, _e89.n_dot_v, roughness_8);
+        ambient_kd = (vec3(1.0) - _e165);
     }
-    vec3 _e173 = diffuse_kd;
-    vec3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 _e178 = specular;
-    vec3 direct = ((((_e173 * _e174) * _e105) * n_dot_l_1) + _e178);
-    vec3 _e180 = indirect_specular;
-    vec3 _e182 = n;
-    vec3 _e183 = weft_sh_irradiance(_e182);
-    vec3 _e185 = ambient_kd;
-    vec3 indirect = ((_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo));
+    vec3 _e167 = diffuse_kd;
+    vec3 _e168 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 _e173 = specular;
+    vec3 direct = ((((_e167 * _e168) * _e90) * _e89.n_dot_l) + _e173);
+    vec3 _e175 = indirect_specular;
+    vec3 _e177 = n;
+    vec3 _e178 = weft_sh_irradiance(_e177);
+    vec3 _e180 = ambient_kd;
+    vec3 indirect = ((_e175 * ao) + (((_e178 * ao) * _e180) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;

@@ -39,6 +39,19 @@ struct WeftMaterial {
     float anisotropy;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -252,27 +265,48 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_3.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -281,6 +315,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -335,17 +381,17 @@ float weft_d_ggx_aniso_unnormalized(
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
     float roughness_7
 ) {
     float k_2 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_4 = frame_2[2];
+    metal::float3 n_6 = frame_2[2];
     metal::float3 dir_1 = (k_2 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_2) * metal::saturate(5.0 * metal::saturate(roughness_7));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -372,7 +418,7 @@ float satin_d_seed(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -387,7 +433,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -411,8 +457,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -432,7 +478,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> noise_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     SatinLayers layers = {};
     metal::float3 specular = {};
@@ -464,74 +510,66 @@ fragment fs_mainOutput fs_main(
     metal::float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     metal::float4 _e62 = noise_map.sample(material_sampler, _e59);
     float noise = 0.5 + (0.5 * metal::saturate(_e62.x));
-    metal::float3 _e74 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_5 = _e71.v;
+    n = _e71.n;
     {
-        metal::float3 _e78 = n;
-        metal::float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        metal::float4 _e83 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e83.xyz;
-        float _e87 = material.normal_strength;
-        metal::float3 _e88 = weft_unpack_normal(texel_1, _e87);
-        metal::float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        metal::float4 _e77 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e77.xyz;
+        metal::float3 _e79 = n;
+        float _e83 = material.normal_strength;
+        metal::float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    metal::float3 _e90 = n;
-    metal::float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    metal::float3 _e93 = weft_main_light_direction(weft_frame);
-    metal::float3 _e95 = n;
-    metal::float3 _e96 = weft_safe_normalize(_e93 + _e74, _e95);
-    metal::float3 _e97 = n;
-    float _e99 = weft_clamp_cos(metal::dot(_e97, _e74));
-    metal::float3 _e100 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e100, _e93));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e74, _e96));
-    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
-    metal::float2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e108;
-    metal::float2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    metal::float3 _e85 = n;
+    metal::float3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    metal::float3 _e88 = n;
+    WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_5, weft_frame);
+    metal::float3 _e90 = weft_main_light_radiance(weft_frame);
+    metal::float2 _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e93;
+    metal::float2 _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float4 _e119 = material.specular_color;
-    metal::float3 c1_ = metal::saturate(_e119.xyz);
-    metal::float4 _e124 = material.second_specular_color;
-    metal::float3 c2_ = metal::saturate(_e124.xyz);
-    metal::float3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    metal::float4 _e104 = material.specular_color;
+    metal::float3 c1_ = metal::saturate(_e104.xyz);
+    metal::float4 _e109 = material.second_specular_color;
+    metal::float3 c2_ = metal::saturate(_e109.xyz);
+    metal::float3 _e113 = weft_f_schlick(f0_3, _e89.v_dot_h);
     {
-        metal::float3 _e132 = weft_aniso_to_frame(_e92, _e96);
-        metal::float2 _e134 = layers.narrow;
-        float _e135 = satin_d_seed(_e132, _e134);
-        metal::float2 _e137 = layers.wide;
-        float _e138 = satin_d_seed(_e132, _e137);
-        float d2_ = _e138 / width;
-        float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
-        float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
-        metal::float3 _e142 = satin_light_blend(c1_, _e105);
-        metal::float3 _e143 = satin_light_blend(c2_, _e105);
-        float _e146 = material.specular_intensity;
-        float mag = metal::max(_e146, 0.0);
-        specular = (((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1);
-        diffuse_kd = metal::float3(1.0) - _e127;
-        metal::float3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
-        bent = _e160;
-        metal::float3 _e162 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
-        metal::float3 _e164 = bent;
-        metal::float3 _e166 = weft_prefiltered_radiance(metal::reflect(-(_e74), _e164), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular = (_e166 * _e162) * noise;
-        metal::float3 _e171 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
-        ambient_kd = metal::float3(1.0) - _e171;
+        metal::float3 _e119 = weft_aniso_to_frame(_e87, _e89.h);
+        metal::float2 _e121 = layers.narrow;
+        float _e122 = satin_d_seed(_e119, _e121);
+        metal::float2 _e124 = layers.wide;
+        float _e125 = satin_d_seed(_e119, _e124);
+        float d2_ = _e125 / width;
+        float _e129 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness_8);
+        float _e132 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness2_);
+        metal::float3 _e133 = satin_light_blend(c1_, _e90);
+        metal::float3 _e134 = satin_light_blend(c2_, _e90);
+        float _e137 = material.specular_intensity;
+        float mag = metal::max(_e137, 0.0);
+        specular = (((_e122 * _e129) * _e133) + ((d2_ * _e132) * _e134)) * ((mag * noise) * _e89.n_dot_l);
+        diffuse_kd = metal::float3(1.0) - _e113;
+        metal::float3 _e152 = weft_aniso_bent_normal(_e87, v_5, anisotropy_2, roughness_8);
+        bent = _e152;
+        metal::float3 _e155 = weft_env_brdf_approx(f0_3, _e89.n_dot_v, roughness_8);
+        metal::float3 _e157 = bent;
+        metal::float3 _e159 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e157), roughness_8, weft_frame, weft_environment, weft_environment_sampler);
+        indirect_specular = (_e159 * _e155) * noise;
+        metal::float3 _e165 = weft_f_schlick_roughness(f0_3, _e89.n_dot_v, roughness_8);
+        ambient_kd = metal::float3(1.0) - _e165;
     }
-    metal::float3 _e173 = diffuse_kd;
-    metal::float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 _e178 = specular;
-    metal::float3 direct = (((_e173 * _e174) * _e105) * n_dot_l_1) + _e178;
-    metal::float3 _e180 = indirect_specular;
-    metal::float3 _e182 = n;
-    metal::float3 _e183 = weft_sh_irradiance(_e182, weft_frame);
-    metal::float3 _e185 = ambient_kd;
-    metal::float3 indirect = (_e180 * ao) + (((_e183 * ao) * _e185) * diffuse_albedo);
+    metal::float3 _e167 = diffuse_kd;
+    metal::float3 _e168 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 _e173 = specular;
+    metal::float3 direct = (((_e167 * _e168) * _e90) * _e89.n_dot_l) + _e173;
+    metal::float3 _e175 = indirect_specular;
+    metal::float3 _e177 = n;
+    metal::float3 _e178 = weft_sh_irradiance(_e177, weft_frame);
+    metal::float3 _e180 = ambient_kd;
+    metal::float3 indirect = (_e175 * ao) + (((_e178 * ao) * _e180) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -38,6 +38,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -89,16 +107,16 @@ Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> noise_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -249,29 +267,72 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
     return max(c_3.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -308,15 +369,15 @@ float weft_d_ggx_aniso_unnormalized(float t_dot_h_1, float b_dot_h_1, float n_do
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_7)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_3, float anisotropy_1, float roughness_7)
 {
     float k_2 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_4 = frame_2[2];
+    float3 n_6 = frame_2[2];
     float3 dir_1 = ((k_2 >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_2) * saturate((5.0 * saturate(roughness_7))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -369,7 +430,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     SatinLayers layers = (SatinLayers)0;
     float3 specular = (float3)0;
@@ -402,78 +463,70 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float2 _e59 = weft_transform_uv(in_1.uv0_, _e58);
     float4 _e62 = noise_map.Sample(material_sampler, _e59);
     float noise_ = (0.5 + (0.5 * saturate(_e62.x)));
-    const float3 _e74 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    const WeftSurface _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_5 = _e71.v;
+    n = _e71.n;
     {
-        float3 _e78 = n;
-        const float3x3 _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        float4 _e83 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e83.xyz;
-        float _e87 = material.normal_strength;
-        const float3 _e88 = weft_unpack_normal(texel_1, _e87);
-        const float3 _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        float4 _e77 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e77.xyz;
+        float3 _e79 = n;
+        float _e83 = material.normal_strength;
+        const float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    float3 _e90 = n;
-    const float3x3 _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    const float3 _e93 = weft_main_light_direction();
-    float3 _e95 = n;
-    const float3 _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    float3 _e97 = n;
-    const float _e99 = weft_clamp_cos(dot(_e97, _e74));
-    float3 _e100 = n;
-    float n_dot_l_1 = saturate(dot(_e100, _e93));
-    float v_dot_h_1 = saturate(dot(_e74, _e96));
-    const float3 _e105 = weft_main_light_radiance();
-    const float2 _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e108;
-    const float2 _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    float3 _e85 = n;
+    const float3x3 _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    float3 _e88 = n;
+    const WeftLightGeometry _e89 = weft_main_light_geometry(_e88, v_5);
+    const float3 _e90 = weft_main_light_radiance();
+    const float2 _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e93;
+    const float2 _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    float4 _e119 = material.specular_color;
-    float3 c1_ = saturate(_e119.xyz);
-    float4 _e124 = material.second_specular_color;
-    float3 c2_ = saturate(_e124.xyz);
-    const float3 _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    float4 _e104 = material.specular_color;
+    float3 c1_ = saturate(_e104.xyz);
+    float4 _e109 = material.second_specular_color;
+    float3 c2_ = saturate(_e109.xyz);
+    const float3 _e113 = weft_f_schlick(f0_3, _e89.v_dot_h);
     {
-        const float3 _e132 = weft_aniso_to_frame(_e92, _e96);
-        float2 _e134 = layers.narrow;
-        const float _e135 = satin_d_seed(_e132, _e134);
-        float2 _e137 = layers.wide;
-        const float _e138 = satin_d_seed(_e132, _e137);
-        float d2_ = (_e138 / width);
-        const float _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
-        const float _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
-        const float3 _e142 = satin_light_blend(c1_, _e105);
-        const float3 _e143 = satin_light_blend(c2_, _e105);
-        float _e146 = material.specular_intensity;
-        float mag = max(_e146, 0.0);
-        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise_) * n_dot_l_1));
-        diffuse_kd = ((1.0).xxx - _e127);
-        const float3 _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
-        bent = _e160;
+        const float3 _e119 = weft_aniso_to_frame(_e87, _e89.h);
+        float2 _e121 = layers.narrow;
+        const float _e122 = satin_d_seed(_e119, _e121);
+        float2 _e124 = layers.wide;
+        const float _e125 = satin_d_seed(_e119, _e124);
+        float d2_ = (_e125 / width);
+        const float _e129 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness_8);
+        const float _e132 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness2_);
+        const float3 _e133 = satin_light_blend(c1_, _e90);
+        const float3 _e134 = satin_light_blend(c2_, _e90);
+        float _e137 = material.specular_intensity;
+        float mag = max(_e137, 0.0);
+        specular = ((((_e122 * _e129) * _e133) + ((d2_ * _e132) * _e134)) * ((mag * noise_) * _e89.n_dot_l));
+        diffuse_kd = ((1.0).xxx - _e113);
+        const float3 _e152 = weft_aniso_bent_normal(_e87, v_5, anisotropy_2, roughness_8);
+        bent = _e152;
         {
-            float3 _e162 = n;
-            bent = _e162;
+            float3 _e154 = n;
+            bent = _e154;
         }
-        const float3 _e163 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
-        float3 _e165 = bent;
-        const float3 _e167 = weft_prefiltered_radiance(reflect(-(_e74), _e165), roughness_8);
-        indirect_specular = ((_e167 * _e163) * noise_);
-        const float3 _e172 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
-        ambient_kd = ((1.0).xxx - _e172);
+        const float3 _e156 = weft_env_brdf_approx(f0_3, _e89.n_dot_v, roughness_8);
+        float3 _e158 = bent;
+        const float3 _e160 = weft_prefiltered_radiance(reflect(-(v_5), _e158), roughness_8);
+        indirect_specular = ((_e160 * _e156) * noise_);
+        const float3 _e166 = weft_f_schlick_roughness(f0_3, _e89.n_dot_v, roughness_8);
+        ambient_kd = ((1.0).xxx - _e166);
     }
-    float3 _e174 = diffuse_kd;
-    const float3 _e175 = weft_diffuse_lambert(diffuse_albedo);
-    float3 _e179 = specular;
-    float3 direct = ((((_e174 * _e175) * _e105) * n_dot_l_1) + _e179);
-    float3 _e181 = indirect_specular;
-    float3 _e183 = n;
-    const float3 _e184 = weft_sh_irradiance(_e183);
-    float3 _e186 = ambient_kd;
-    float3 indirect = ((_e181 * ao) + (((_e184 * ao) * _e186) * diffuse_albedo));
+    float3 _e168 = diffuse_kd;
+    const float3 _e169 = weft_diffuse_lambert(diffuse_albedo);
+    float3 _e174 = specular;
+    float3 direct = ((((_e168 * _e169) * _e90) * _e89.n_dot_l) + _e174);
+    float3 _e176 = indirect_specular;
+    float3 _e178 = n;
+    const float3 _e179 = weft_sh_irradiance(_e178);
+    float3 _e181 = ambient_kd;
+    float3 indirect = ((_e176 * ao) + (((_e179 * ao) * _e181) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

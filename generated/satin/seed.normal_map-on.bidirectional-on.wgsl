@@ -29,6 +29,20 @@ struct WeftMaterial {
     anisotropy: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -211,26 +225,46 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     return max(c_3.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -262,14 +296,14 @@ fn weft_d_ggx_aniso_unnormalized(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32,
     return select(0f, d_1, (n_dot_h_1 > 0f));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_7: f32) -> vec3<f32> {
     let k_2 = clamp(anisotropy_1, -1f, 1f);
-    let n_4 = frame_2[2];
+    let n_6 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k_2 >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_2) * saturate((5f * saturate(roughness_7))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_6, aniso_n, bend), n_6);
     return _e22;
 }
 
@@ -350,78 +384,70 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e59 = weft_transform_uv(in_1.uv0_, _e58);
     let _e62 = textureSample(noise_map, material_sampler, _e59);
     let noise = (0.5f + (0.5f * saturate(_e62.x)));
-    let _e74 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e76 = weft_safe_normalize(in_1.world_normal, _e74);
-    n = _e76;
+    let _e71 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e71.v;
+    n = _e71.n;
     {
-        let _e78 = n;
-        let _e80 = weft_tangent_frame(_e78, in_1.world_tangent);
-        let _e83 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e83.xyz;
-        let _e87 = material.normal_strength;
-        let _e88 = weft_unpack_normal(texel_1, _e87);
-        let _e89 = weft_normal_from_tangent_space(_e80, _e88);
-        n = _e89;
+        let _e77 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e77.xyz;
+        let _e79 = n;
+        let _e83 = material.normal_strength;
+        let _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
+        n = _e84;
     }
-    let _e90 = n;
-    let _e92 = weft_tangent_frame(_e90, in_1.world_tangent);
-    let _e93 = weft_main_light_direction();
-    let _e95 = n;
-    let _e96 = weft_safe_normalize((_e93 + _e74), _e95);
-    let _e97 = n;
-    let _e99 = weft_clamp_cos(dot(_e97, _e74));
-    let _e100 = n;
-    let n_dot_l_1 = saturate(dot(_e100, _e93));
-    let v_dot_h_1 = saturate(dot(_e74, _e96));
-    let _e105 = weft_main_light_radiance();
-    let _e108 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
-    layers.narrow = _e108;
-    let _e110 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
-    layers.wide = _e110;
+    let _e85 = n;
+    let _e87 = weft_tangent_frame(_e85, in_1.world_tangent);
+    let _e88 = n;
+    let _e89 = weft_main_light_geometry(_e88, v_5);
+    let _e90 = weft_main_light_radiance();
+    let _e93 = weft_aniso_alpha_kulla(roughness_8, anisotropy_2);
+    layers.narrow = _e93;
+    let _e95 = weft_aniso_alpha_kulla(roughness2_, anisotropy_2);
+    layers.wide = _e95;
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e119 = material.specular_color;
-    let c1_ = saturate(_e119.xyz);
-    let _e124 = material.second_specular_color;
-    let c2_ = saturate(_e124.xyz);
-    let _e127 = weft_f_schlick(f0_3, v_dot_h_1);
+    let _e104 = material.specular_color;
+    let c1_ = saturate(_e104.xyz);
+    let _e109 = material.second_specular_color;
+    let c2_ = saturate(_e109.xyz);
+    let _e113 = weft_f_schlick(f0_3, _e89.v_dot_h);
     {
-        let _e132 = weft_aniso_to_frame(_e92, _e96);
-        let _e134 = layers.narrow;
-        let _e135 = satin_d_seed(_e132, _e134);
-        let _e137 = layers.wide;
-        let _e138 = satin_d_seed(_e132, _e137);
-        let d2_ = (_e138 / width);
-        let _e140 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness_8);
-        let _e141 = weft_v_schlick_ggx(_e99, n_dot_l_1, roughness2_);
-        let _e142 = satin_light_blend(c1_, _e105);
-        let _e143 = satin_light_blend(c2_, _e105);
-        let _e146 = material.specular_intensity;
-        let mag = max(_e146, 0f);
-        specular = ((((_e135 * _e140) * _e142) + ((d2_ * _e141) * _e143)) * ((mag * noise) * n_dot_l_1));
-        diffuse_kd = (vec3(1f) - _e127);
-        let _e160 = weft_aniso_bent_normal(_e92, _e74, anisotropy_2, roughness_8);
-        bent = _e160;
+        let _e119 = weft_aniso_to_frame(_e87, _e89.h);
+        let _e121 = layers.narrow;
+        let _e122 = satin_d_seed(_e119, _e121);
+        let _e124 = layers.wide;
+        let _e125 = satin_d_seed(_e119, _e124);
+        let d2_ = (_e125 / width);
+        let _e129 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness_8);
+        let _e132 = weft_v_schlick_ggx(_e89.n_dot_v, _e89.n_dot_l, roughness2_);
+        let _e133 = satin_light_blend(c1_, _e90);
+        let _e134 = satin_light_blend(c2_, _e90);
+        let _e137 = material.specular_intensity;
+        let mag = max(_e137, 0f);
+        specular = ((((_e122 * _e129) * _e133) + ((d2_ * _e132) * _e134)) * ((mag * noise) * _e89.n_dot_l));
+        diffuse_kd = (vec3(1f) - _e113);
+        let _e152 = weft_aniso_bent_normal(_e87, v_5, anisotropy_2, roughness_8);
+        bent = _e152;
         {
-            let _e162 = n;
-            bent = _e162;
+            let _e154 = n;
+            bent = _e154;
         }
-        let _e163 = weft_env_brdf_approx(f0_3, _e99, roughness_8);
-        let _e165 = bent;
-        let _e167 = weft_prefiltered_radiance(reflect(-(_e74), _e165), roughness_8);
-        indirect_specular = ((_e167 * _e163) * noise);
-        let _e172 = weft_f_schlick_roughness(f0_3, _e99, roughness_8);
-        ambient_kd = (vec3(1f) - _e172);
+        let _e156 = weft_env_brdf_approx(f0_3, _e89.n_dot_v, roughness_8);
+        let _e158 = bent;
+        let _e160 = weft_prefiltered_radiance(reflect(-(v_5), _e158), roughness_8);
+        indirect_specular = ((_e160 * _e156) * noise);
+        let _e166 = weft_f_schlick_roughness(f0_3, _e89.n_dot_v, roughness_8);
+        ambient_kd = (vec3(1f) - _e166);
     }
-    let _e174 = diffuse_kd;
-    let _e175 = weft_diffuse_lambert(diffuse_albedo);
-    let _e179 = specular;
-    let direct = ((((_e174 * _e175) * _e105) * n_dot_l_1) + _e179);
-    let _e181 = indirect_specular;
-    let _e183 = n;
-    let _e184 = weft_sh_irradiance(_e183);
-    let _e186 = ambient_kd;
-    let indirect = ((_e181 * ao) + (((_e184 * ao) * _e186) * diffuse_albedo));
+    let _e168 = diffuse_kd;
+    let _e169 = weft_diffuse_lambert(diffuse_albedo);
+    let _e174 = specular;
+    let direct = ((((_e168 * _e169) * _e90) * _e89.n_dot_l) + _e174);
+    let _e176 = indirect_specular;
+    let _e178 = n;
+    let _e179 = weft_sh_irradiance(_e178);
+    let _e181 = ambient_kd;
+    let indirect = ((_e176 * ao) + (((_e179 * ao) * _e181) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

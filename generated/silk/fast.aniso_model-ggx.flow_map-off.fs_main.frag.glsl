@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -184,21 +196,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -241,22 +266,22 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_3, float anisotropy_1, float roughness_5) {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -289,79 +314,75 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    vec3 _e59 = fibre;
-    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
-    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h_2 = clamp(dot(_e56, _e72), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
-    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_5 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    vec3 _e56 = fibre;
+    mat3x3 _e60 = weft_tangent_frame(_e53, vec4(_e56, in_1.world_tangent.w));
+    uint _e63 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5);
+    vec3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    vec3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    vec3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_2 = _group_1_binding_0_fs.anisotropy;
     {
         {
-            vec2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            vec2 _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
                 {
-                    float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                    vis = _e94;
+                    float _e83 = weft_v_smith_ggx_aniso_correlated(_e68, _e70, _e77.x, _e77.y);
+                    vis = _e83;
                 }
-                float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                float _e102 = vis;
-                lobe.value = ((_e101 * _e102) * n_dot_l);
+                float _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                float _e91 = vis;
+                lobe.value = ((_e90 * _e91) * _e67.n_dot_l);
             }
         }
     }
-    vec3 _e105 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
-    vec3 _e108 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e112 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e108) * _e112) * n_dot_l_diffuse);
-    float _e116 = lobe.value;
-    vec3 direct = ((diffuse + (_e108 * _e116)) * _e105);
-    reflect_n = _e56;
+    vec3 _e95 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e67.l), 0.0, 1.0);
+    vec3 _e100 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    vec3 _e104 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e100) * _e104) * n_dot_l_diffuse);
+    float _e108 = lobe.value;
+    vec3 direct = ((diffuse + (_e100 * _e108)) * _e95);
+    reflect_n = _e53;
     {
         {
-            float _e125 = lobe.ibl_roughness;
-            vec2 _e126 = weft_env_brdf_lut_nearest(_e74, _e125);
-            scale_bias = _e126;
+            float _e118 = lobe.ibl_roughness;
+            vec2 _e119 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e118);
+            scale_bias = _e119;
         }
-        vec2 _e127 = scale_bias;
-        vec3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
-        env_brdf = _e128;
-        vec3 _e131 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e131), vec3(0.0));
-        vec2 _e137 = lobe.alpha;
-        float _e138 = silk_lobe_anisotropy(_e137);
-        float _e140 = lobe.ibl_roughness;
-        vec3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
-        reflect_n = _e141;
+        vec2 _e120 = scale_bias;
+        vec3 _e121 = weft_env_brdf_from_lut(f0_2, _e120);
+        env_brdf = _e121;
+        vec3 _e124 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e124), vec3(0.0));
+        vec2 _e130 = lobe.alpha;
+        float _e131 = silk_lobe_anisotropy(_e130);
+        float _e133 = lobe.ibl_roughness;
+        vec3 _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
+        reflect_n = _e134;
     }
-    vec3 _e143 = reflect_n;
-    float _e146 = lobe.ibl_roughness;
-    vec3 _e147 = weft_prefiltered_radiance(reflect(-(_e38), _e143), _e146);
-    vec3 _e148 = env_brdf;
-    vec3 _e150 = weft_sh_irradiance(n_diff);
-    vec3 _e151 = ambient_kd;
-    vec3 indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
+    vec3 _e136 = reflect_n;
+    float _e139 = lobe.ibl_roughness;
+    vec3 _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
+    vec3 _e141 = env_brdf;
+    vec3 _e143 = weft_sh_irradiance(n_diff);
+    vec3 _e144 = ambient_kd;
+    vec3 indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

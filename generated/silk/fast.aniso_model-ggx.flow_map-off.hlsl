@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -89,16 +107,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> aniso_normal_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -232,23 +250,58 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -297,24 +350,24 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e5 = weft_clamp_cos(v_2.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv + ll));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_5)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_3, float anisotropy_1, float roughness_5)
 {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    float3 n_3 = frame_2[2];
+    float3 n_4 = frame_2[2];
     float3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * saturate((5.0 * saturate(roughness_5))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -352,7 +405,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -375,79 +428,75 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    float3 _e59 = fibre;
-    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    const float3 _e70 = weft_main_light_direction();
-    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = saturate(dot(_e56, _e70));
-    float n_dot_h_2 = saturate(dot(_e56, _e72));
-    float v_dot_h_1 = saturate(dot(_e38, _e72));
-    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_5 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    float3 _e56 = fibre;
+    const float3x3 _e60 = weft_tangent_frame(_e53, float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5);
+    const float3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    const float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    const float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_2 = material.anisotropy;
     {
         {
-            const float2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            const float2 _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
                 {
-                    const float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                    vis = _e94;
+                    const float _e83 = weft_v_smith_ggx_aniso_correlated(_e68, _e70, _e77.x, _e77.y);
+                    vis = _e83;
                 }
-                const float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                float _e102 = vis;
-                lobe.value = ((_e101 * _e102) * n_dot_l);
+                const float _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                float _e91 = vis;
+                lobe.value = ((_e90 * _e91) * _e67.n_dot_l);
             }
         }
     }
-    const float3 _e105 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    const float3 _e108 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e112 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e108) * _e112) * n_dot_l_diffuse);
-    float _e116 = lobe.value;
-    float3 direct = ((diffuse + (_e108 * _e116)) * _e105);
-    reflect_n = _e56;
+    const float3 _e95 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    const float3 _e100 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    const float3 _e104 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e100) * _e104) * n_dot_l_diffuse);
+    float _e108 = lobe.value;
+    float3 direct = ((diffuse + (_e100 * _e108)) * _e95);
+    reflect_n = _e53;
     {
         {
-            float _e125 = lobe.ibl_roughness;
-            const float2 _e126 = weft_env_brdf_lut_nearest(_e74, _e125);
-            scale_bias = _e126;
+            float _e118 = lobe.ibl_roughness;
+            const float2 _e119 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e118);
+            scale_bias = _e119;
         }
-        float2 _e127 = scale_bias;
-        const float3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
-        env_brdf = _e128;
-        float3 _e131 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e131), (0.0).xxx);
-        float2 _e137 = lobe.alpha;
-        const float _e138 = silk_lobe_anisotropy(_e137);
-        float _e140 = lobe.ibl_roughness;
-        const float3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
-        reflect_n = _e141;
+        float2 _e120 = scale_bias;
+        const float3 _e121 = weft_env_brdf_from_lut(f0_2, _e120);
+        env_brdf = _e121;
+        float3 _e124 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e124), (0.0).xxx);
+        float2 _e130 = lobe.alpha;
+        const float _e131 = silk_lobe_anisotropy(_e130);
+        float _e133 = lobe.ibl_roughness;
+        const float3 _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
+        reflect_n = _e134;
     }
-    float3 _e143 = reflect_n;
-    float _e146 = lobe.ibl_roughness;
-    const float3 _e147 = weft_prefiltered_radiance(reflect(-(_e38), _e143), _e146);
-    float3 _e148 = env_brdf;
-    const float3 _e150 = weft_sh_irradiance(n_diff);
-    float3 _e151 = ambient_kd;
-    float3 indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
+    float3 _e136 = reflect_n;
+    float _e139 = lobe.ibl_roughness;
+    const float3 _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
+    float3 _e141 = env_brdf;
+    const float3 _e143 = weft_sh_irradiance(n_diff);
+    float3 _e144 = ambient_kd;
+    float3 indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -37,6 +37,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -226,27 +239,48 @@ metal::float2 weft_env_brdf_lut_nearest(
     return _e16.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    return metal::float3x3(t, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -314,31 +348,31 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_3 = frame_2[2];
+    metal::float3 n_4 = frame_2[2];
     metal::float3 dir_1 = (k_1 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -392,8 +426,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -413,7 +447,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> flow_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -435,87 +469,83 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_5 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        metal::float4 _e61 = flow_map.sample(material_sampler, _e5);
-        metal::float2 flow = (_e61.xy * 2.0) - metal::float2(1.0);
-        metal::float3 dir_2 = (_e42[0] * flow.x) + (_e42[1] * flow.y);
-        float _e78 = material.flow_strength;
-        metal::float3 _e82 = weft_safe_normalize(metal::mix(_e42[0], dir_2, metal::saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        metal::float4 _e58 = flow_map.sample(material_sampler, _e5);
+        metal::float2 flow = (_e58.xy * 2.0) - metal::float2(1.0);
+        metal::float3 dir_2 = (_e39[0] * flow.x) + (_e39[1] * flow.y);
+        float _e75 = material.flow_strength;
+        metal::float3 _e79 = weft_safe_normalize(metal::mix(_e39[0], dir_2, metal::saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    metal::float3 _e83 = fibre;
-    metal::float3x3 _e87 = weft_tangent_frame(_e56, metal::float4(_e83, in_1.world_tangent.w));
-    uint _e90 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff = (_e90 != 0u) ? _e56 : _e40;
-    metal::float3 _e94 = weft_main_light_direction(weft_frame);
-    metal::float3 _e96 = weft_safe_normalize(_e94 + _e38, _e56);
-    float _e98 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l = metal::saturate(metal::dot(_e56, _e94));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e96));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e96));
-    metal::float3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    metal::float3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    metal::float3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    metal::float3 _e80 = fibre;
+    metal::float3x3 _e84 = weft_tangent_frame(_e53, metal::float4(_e80, in_1.world_tangent.w));
+    uint _e87 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e87 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_5, weft_frame);
+    metal::float3 _e92 = weft_aniso_to_frame(_e84, v_5);
+    metal::float3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    metal::float3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_2 = material.anisotropy;
     {
         {
-            metal::float2 _e112 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e112;
+            metal::float2 _e101 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e101;
             lobe.ibl_roughness = roughness_6;
             {
                 {
-                    float _e118 = weft_v_smith_ggx_aniso_correlated(_e105, _e106, _e112.x, _e112.y);
-                    vis = _e118;
+                    float _e107 = weft_v_smith_ggx_aniso_correlated(_e92, _e94, _e101.x, _e101.y);
+                    vis = _e107;
                 }
-                float _e125 = weft_d_ggx_aniso(_e107.x, _e107.y, _e107.z, _e112.x, _e112.y);
-                float _e126 = vis;
-                lobe.value = (_e125 * _e126) * n_dot_l;
+                float _e114 = weft_d_ggx_aniso(_e96.x, _e96.y, _e96.z, _e101.x, _e101.y);
+                float _e115 = vis;
+                lobe.value = (_e114 * _e115) * _e91.n_dot_l;
             }
         }
     }
-    metal::float3 _e129 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e94));
-    metal::float3 _e132 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e136 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e132) * _e136) * n_dot_l_diffuse;
-    float _e140 = lobe.value;
-    metal::float3 direct = (diffuse + (_e132 * _e140)) * _e129;
-    reflect_n = _e56;
+    metal::float3 _e119 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e91.l));
+    metal::float3 _e124 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    metal::float3 _e128 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e124) * _e128) * n_dot_l_diffuse;
+    float _e132 = lobe.value;
+    metal::float3 direct = (diffuse + (_e124 * _e132)) * _e119;
+    reflect_n = _e53;
     {
         {
-            float _e149 = lobe.ibl_roughness;
-            metal::float2 _e150 = weft_env_brdf_lut_nearest(_e98, _e149, weft_brdf_lut);
-            scale_bias = _e150;
+            float _e142 = lobe.ibl_roughness;
+            metal::float2 _e143 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e142, weft_brdf_lut);
+            scale_bias = _e143;
         }
-        metal::float2 _e151 = scale_bias;
-        metal::float3 _e152 = weft_env_brdf_from_lut(f0_2, _e151);
-        env_brdf = _e152;
-        metal::float3 _e155 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e155, metal::float3(0.0));
-        metal::float2 _e161 = lobe.alpha;
-        float _e162 = silk_lobe_anisotropy(_e161);
-        float _e164 = lobe.ibl_roughness;
-        metal::float3 _e165 = weft_aniso_bent_normal(_e87, _e38, _e162, _e164);
-        reflect_n = _e165;
+        metal::float2 _e144 = scale_bias;
+        metal::float3 _e145 = weft_env_brdf_from_lut(f0_2, _e144);
+        env_brdf = _e145;
+        metal::float3 _e148 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e148, metal::float3(0.0));
+        metal::float2 _e154 = lobe.alpha;
+        float _e155 = silk_lobe_anisotropy(_e154);
+        float _e157 = lobe.ibl_roughness;
+        metal::float3 _e158 = weft_aniso_bent_normal(_e84, v_5, _e155, _e157);
+        reflect_n = _e158;
     }
-    metal::float3 _e167 = reflect_n;
-    float _e170 = lobe.ibl_roughness;
-    metal::float3 _e171 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e167), _e170, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e172 = env_brdf;
-    metal::float3 _e174 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e175 = ambient_kd;
-    metal::float3 indirect = (_e171 * _e172) + ((_e174 * _e175) * diffuse_albedo);
+    metal::float3 _e160 = reflect_n;
+    float _e163 = lobe.ibl_roughness;
+    metal::float3 _e164 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e160), _e163, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e165 = env_brdf;
+    metal::float3 _e167 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e168 = ambient_kd;
+    metal::float3 indirect = (_e164 * _e165) + ((_e167 * _e168) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

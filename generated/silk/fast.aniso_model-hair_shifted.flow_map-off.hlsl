@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -89,16 +107,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> aniso_normal_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -255,23 +273,58 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -308,24 +361,24 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e5 = weft_clamp_cos(v_2.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv_1 = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv_1 = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll_1 = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv_1 + ll_1));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_6)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_3, float anisotropy, float roughness_6)
 {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float3 n_4 = frame_2[2];
+    float3 n_5 = frame_2[2];
     float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * saturate((5.0 * saturate(roughness_6))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -384,7 +437,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -407,96 +460,92 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    float3 _e59 = fibre;
-    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    const float3 _e70 = weft_main_light_direction();
-    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e70));
-    float n_dot_h_2 = saturate(dot(_e56, _e72));
-    float v_dot_h_1 = saturate(dot(_e38, _e72));
-    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_5 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    float3 _e56 = fibre;
+    const float3x3 _e60 = weft_tangent_frame(_e53, float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5);
+    const float3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    const float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    const float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e90 = material.aniso_gloss;
-            const float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = material.aniso_mask;
-            float mask = saturate(_e94);
-            float _e98 = material.aniso_spec;
-            float spec_scale = lerp(max(_e98, 0.0), 1.0, mask);
-            float2 a_hair = float2(max(_e91, SILK_MIN_ALPHA), 1.0);
-            const float _e107 = weft_clamp_roughness(roughness_7);
-            const float _e108 = weft_clamp_roughness(roughness_7);
-            float a_iso = (_e107 * _e108);
+            float _e79 = material.aniso_gloss;
+            const float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = material.aniso_mask;
+            float mask = saturate(_e83);
+            float _e87 = material.aniso_spec;
+            float spec_scale = lerp(max(_e87, 0.0), 1.0, mask);
+            float2 a_hair = float2(max(_e80, SILK_MIN_ALPHA), 1.0);
+            const float _e96 = weft_clamp_roughness(roughness_7);
+            const float _e97 = weft_clamp_roughness(roughness_7);
+            float a_iso = (_e96 * _e97);
             lobe.alpha = lerp(a_hair, (a_iso).xx, mask);
-            const float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = lerp(_e114, roughness_7, mask);
+            const float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = lerp(_e103, roughness_7, mask);
             {
                 {
-                    float _e118 = material.tangent_shift;
-                    const float3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                    const float3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                    const float3 _e121 = weft_aniso_to_frame(_e119, _e70);
-                    const float3 _e122 = weft_aniso_to_frame(_e119, _e72);
-                    const float _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                    const float _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                    float aniso = ((_e128 * _e131) * saturate(_e121.z));
-                    const float _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                    const float _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                    float iso = ((_e136 * _e137) * n_dot_l_1);
+                    float _e107 = material.tangent_shift;
+                    const float3x3 _e108 = silk_tilt_frame(_e60, _e107);
+                    const float3 _e109 = weft_aniso_to_frame(_e108, v_5);
+                    const float3 _e111 = weft_aniso_to_frame(_e108, _e67.l);
+                    const float3 _e113 = weft_aniso_to_frame(_e108, _e67.h);
+                    const float _e119 = weft_d_ggx_aniso(_e113.x, _e113.y, _e113.z, a_hair.x, a_hair.y);
+                    const float _e122 = weft_v_smith_ggx_aniso_correlated(_e109, _e111, a_hair.x, a_hair.y);
+                    float aniso = ((_e119 * _e122) * saturate(_e111.z));
+                    const float _e128 = weft_d_ggx_nh(_e53, _e67.h, roughness_7);
+                    const float _e131 = weft_v_smith_ggx_correlated(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                    float iso = ((_e128 * _e131) * _e67.n_dot_l);
                     lobe.value = (lerp(aniso, iso, mask) * spec_scale);
                 }
             }
         }
     }
-    const float3 _e143 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    const float3 _e146 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e150 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e146) * _e150) * n_dot_l_diffuse);
-    float _e154 = lobe.value;
-    float3 direct = ((diffuse + (_e146 * _e154)) * _e143);
-    reflect_n = _e56;
+    const float3 _e138 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    const float3 _e143 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    const float3 _e147 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e143) * _e147) * n_dot_l_diffuse);
+    float _e151 = lobe.value;
+    float3 direct = ((diffuse + (_e143 * _e151)) * _e138);
+    reflect_n = _e53;
     {
         {
-            float _e163 = lobe.ibl_roughness;
-            const float2 _e164 = weft_env_brdf_lut_nearest(_e74, _e163);
-            scale_bias = _e164;
+            float _e161 = lobe.ibl_roughness;
+            const float2 _e162 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e161);
+            scale_bias = _e162;
         }
-        float2 _e165 = scale_bias;
-        const float3 _e166 = weft_env_brdf_from_lut(f0_2, _e165);
-        env_brdf = _e166;
-        float3 _e169 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e169), (0.0).xxx);
-        float2 _e175 = lobe.alpha;
-        const float _e176 = silk_lobe_anisotropy(_e175);
-        float _e178 = lobe.ibl_roughness;
-        const float3 _e179 = weft_aniso_bent_normal(_e63, _e38, _e176, _e178);
-        reflect_n = _e179;
+        float2 _e163 = scale_bias;
+        const float3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
+        env_brdf = _e164;
+        float3 _e167 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e167), (0.0).xxx);
+        float2 _e173 = lobe.alpha;
+        const float _e174 = silk_lobe_anisotropy(_e173);
+        float _e176 = lobe.ibl_roughness;
+        const float3 _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
+        reflect_n = _e177;
     }
-    float3 _e181 = reflect_n;
-    float _e184 = lobe.ibl_roughness;
-    const float3 _e185 = weft_prefiltered_radiance(reflect(-(_e38), _e181), _e184);
-    float3 _e186 = env_brdf;
-    const float3 _e188 = weft_sh_irradiance(n_diff);
-    float3 _e189 = ambient_kd;
-    float3 indirect = ((_e185 * _e186) + ((_e188 * _e189) * diffuse_albedo));
+    float3 _e179 = reflect_n;
+    float _e182 = lobe.ibl_roughness;
+    const float3 _e183 = weft_prefiltered_radiance(reflect(-(v_5), _e179), _e182);
+    float3 _e184 = env_brdf;
+    const float3 _e186 = weft_sh_irradiance(n_diff);
+    float3 _e187 = ambient_kd;
+    float3 indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -207,21 +219,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -253,22 +278,22 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(vec3 v_1, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_1.z);
+float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv_1 = (_e7 * length(vec3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv_1 = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll_1 = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv_1 + ll_1));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_6) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_3, float anisotropy, float roughness_6) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    vec3 n_4 = frame_2[2];
+    vec3 n_5 = frame_2[2];
     vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_2);
+    vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * clamp((5.0 * clamp(roughness_6, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    vec3 _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -319,104 +344,100 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_5 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        vec4 _e61 = texture(_group_1_binding_5_fs, vec2(_e5));
-        vec2 flow = ((_e61.xy * 2.0) - vec2(1.0));
-        vec3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = _group_1_binding_0_fs.flow_strength;
-        vec3 _e82 = weft_safe_normalize(mix(_e42[0], dir_2, clamp(_e78, 0.0, 1.0)), _e42[0]);
-        fibre = _e82;
+        vec4 _e58 = texture(_group_1_binding_5_fs, vec2(_e5));
+        vec2 flow = ((_e58.xy * 2.0) - vec2(1.0));
+        vec3 dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = _group_1_binding_0_fs.flow_strength;
+        vec3 _e79 = weft_safe_normalize(mix(_e39[0], dir_2, clamp(_e75, 0.0, 1.0)), _e39[0]);
+        fibre = _e79;
     }
-    vec3 _e83 = fibre;
-    mat3x3 _e87 = weft_tangent_frame(_e56, vec4(_e83, in_1.world_tangent.w));
-    uint _e90 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e90 != 0u) ? _e56 : _e40);
-    vec3 _e94 = weft_main_light_direction();
-    vec3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = clamp(dot(_e56, _e94), 0.0, 1.0);
-    float n_dot_h_2 = clamp(dot(_e56, _e96), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e96), 0.0, 1.0);
-    vec3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    vec3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    vec3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    vec3 _e80 = fibre;
+    mat3x3 _e84 = weft_tangent_frame(_e53, vec4(_e80, in_1.world_tangent.w));
+    uint _e87 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e87 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_5);
+    vec3 _e92 = weft_aniso_to_frame(_e84, v_5);
+    vec3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    vec3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_1 = _group_1_binding_0_fs.anisotropy;
     {
         {
-            float _e114 = _group_1_binding_0_fs.aniso_gloss;
-            float _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            float _e118 = _group_1_binding_0_fs.aniso_mask;
-            float mask = clamp(_e118, 0.0, 1.0);
-            float _e122 = _group_1_binding_0_fs.aniso_spec;
-            float spec_scale = mix(max(_e122, 0.0), 1.0, mask);
-            vec2 a_hair = vec2(max(_e115, SILK_MIN_ALPHA), 1.0);
-            float _e131 = weft_clamp_roughness(roughness_7);
-            float _e132 = weft_clamp_roughness(roughness_7);
-            float a_iso = (_e131 * _e132);
+            float _e103 = _group_1_binding_0_fs.aniso_gloss;
+            float _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            float _e107 = _group_1_binding_0_fs.aniso_mask;
+            float mask = clamp(_e107, 0.0, 1.0);
+            float _e111 = _group_1_binding_0_fs.aniso_spec;
+            float spec_scale = mix(max(_e111, 0.0), 1.0, mask);
+            vec2 a_hair = vec2(max(_e104, SILK_MIN_ALPHA), 1.0);
+            float _e120 = weft_clamp_roughness(roughness_7);
+            float _e121 = weft_clamp_roughness(roughness_7);
+            float a_iso = (_e120 * _e121);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            float _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e138, roughness_7, mask);
+            float _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e127, roughness_7, mask);
             {
                 {
-                    float _e142 = _group_1_binding_0_fs.tangent_shift;
-                    mat3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                    vec3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                    vec3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                    vec3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                    float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                    float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                    float aniso = ((_e152 * _e155) * clamp(_e145.z, 0.0, 1.0));
-                    float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                    float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                    float iso = ((_e160 * _e161) * n_dot_l_1);
+                    float _e131 = _group_1_binding_0_fs.tangent_shift;
+                    mat3x3 _e132 = silk_tilt_frame(_e84, _e131);
+                    vec3 _e133 = weft_aniso_to_frame(_e132, v_5);
+                    vec3 _e135 = weft_aniso_to_frame(_e132, _e91.l);
+                    vec3 _e137 = weft_aniso_to_frame(_e132, _e91.h);
+                    float _e143 = weft_d_ggx_aniso(_e137.x, _e137.y, _e137.z, a_hair.x, a_hair.y);
+                    float _e146 = weft_v_smith_ggx_aniso_correlated(_e133, _e135, a_hair.x, a_hair.y);
+                    float aniso = ((_e143 * _e146) * clamp(_e135.z, 0.0, 1.0));
+                    float _e152 = weft_d_ggx_nh(_e53, _e91.h, roughness_7);
+                    float _e155 = weft_v_smith_ggx_correlated(_e91.n_dot_v, _e91.n_dot_l, roughness_7);
+                    float iso = ((_e152 * _e155) * _e91.n_dot_l);
                     lobe.value = (mix(aniso, iso, mask) * spec_scale);
                 }
             }
         }
     }
-    vec3 _e167 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e94), 0.0, 1.0);
-    vec3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e170) * _e174) * n_dot_l_diffuse);
-    float _e178 = lobe.value;
-    vec3 direct = ((diffuse + (_e170 * _e178)) * _e167);
-    reflect_n = _e56;
+    vec3 _e162 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e91.l), 0.0, 1.0);
+    vec3 _e167 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    vec3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e167) * _e171) * n_dot_l_diffuse);
+    float _e175 = lobe.value;
+    vec3 direct = ((diffuse + (_e167 * _e175)) * _e162);
+    reflect_n = _e53;
     {
         {
-            float _e187 = lobe.ibl_roughness;
-            vec2 _e188 = weft_env_brdf_lut_nearest(_e98, _e187);
-            scale_bias = _e188;
+            float _e185 = lobe.ibl_roughness;
+            vec2 _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
+            scale_bias = _e186;
         }
-        vec2 _e189 = scale_bias;
-        vec3 _e190 = weft_env_brdf_from_lut(f0_2, _e189);
-        env_brdf = _e190;
-        vec3 _e193 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e193), vec3(0.0));
-        vec2 _e199 = lobe.alpha;
-        float _e200 = silk_lobe_anisotropy(_e199);
-        float _e202 = lobe.ibl_roughness;
-        vec3 _e203 = weft_aniso_bent_normal(_e87, _e38, _e200, _e202);
-        reflect_n = _e203;
+        vec2 _e187 = scale_bias;
+        vec3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
+        env_brdf = _e188;
+        vec3 _e191 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e191), vec3(0.0));
+        vec2 _e197 = lobe.alpha;
+        float _e198 = silk_lobe_anisotropy(_e197);
+        float _e200 = lobe.ibl_roughness;
+        vec3 _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
+        reflect_n = _e201;
     }
-    vec3 _e205 = reflect_n;
-    float _e208 = lobe.ibl_roughness;
-    vec3 _e209 = weft_prefiltered_radiance(reflect(-(_e38), _e205), _e208);
-    vec3 _e210 = env_brdf;
-    vec3 _e212 = weft_sh_irradiance(n_diff);
-    vec3 _e213 = ambient_kd;
-    vec3 indirect = ((_e209 * _e210) + ((_e212 * _e213) * diffuse_albedo));
+    vec3 _e203 = reflect_n;
+    float _e206 = lobe.ibl_roughness;
+    vec3 _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
+    vec3 _e208 = env_brdf;
+    vec3 _e210 = weft_sh_irradiance(n_diff);
+    vec3 _e211 = ambient_kd;
+    vec3 indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

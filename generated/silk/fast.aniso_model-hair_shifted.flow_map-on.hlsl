@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +108,16 @@ Texture2D<float4> aniso_normal_map : register(t4, space1);
 Texture2D<float4> flow_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -256,23 +274,58 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -309,24 +362,24 @@ float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float 
     return ((n_dot_h_1 > 0.0) ? d_1 : 0.0);
 }
 
-float weft_v_smith_ggx_aniso_correlated(float3 v_1, float3 l, float alpha_t_2, float alpha_b_2)
+float weft_v_smith_ggx_aniso_correlated(float3 v_2, float3 l, float alpha_t_2, float alpha_b_2)
 {
-    const float _e5 = weft_clamp_cos(v_1.z);
+    const float _e5 = weft_clamp_cos(v_2.z);
     const float _e7 = weft_clamp_cos(l.z);
-    float lv_1 = (_e7 * length(float3((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    float lv_1 = (_e7 * length(float3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     float ll_1 = (_e5 * length(float3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5 / (lv_1 + ll_1));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_6)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_3, float anisotropy, float roughness_6)
 {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float3 n_4 = frame_2[2];
+    float3 n_5 = frame_2[2];
     float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_2);
+    float3 aniso_t = cross(dir_1, v_3);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * saturate((5.0 * saturate(roughness_6))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
+    const float3 _e22 = weft_safe_normalize(lerp(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -385,7 +438,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -408,104 +461,100 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_5 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        float4 _e61 = flow_map.Sample(material_sampler, _e5);
-        float2 flow = ((_e61.xy * 2.0) - (1.0).xx);
-        float3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = material.flow_strength;
-        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_2, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        float4 _e58 = flow_map.Sample(material_sampler, _e5);
+        float2 flow = ((_e58.xy * 2.0) - (1.0).xx);
+        float3 dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = material.flow_strength;
+        const float3 _e79 = weft_safe_normalize(lerp(_e39[0], dir_2, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    float3 _e83 = fibre;
-    const float3x3 _e87 = weft_tangent_frame(_e56, float4(_e83, in_1.world_tangent.w));
-    uint _e90 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e90 != 0u) ? _e56 : _e40);
-    const float3 _e94 = weft_main_light_direction();
-    const float3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    const float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e94));
-    float n_dot_h_2 = saturate(dot(_e56, _e96));
-    float v_dot_h_1 = saturate(dot(_e38, _e96));
-    const float3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    const float3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    const float3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    float3 _e80 = fibre;
+    const float3x3 _e84 = weft_tangent_frame(_e53, float4(_e80, in_1.world_tangent.w));
+    uint _e87 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e87 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_5);
+    const float3 _e92 = weft_aniso_to_frame(_e84, v_5);
+    const float3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    const float3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e114 = material.aniso_gloss;
-            const float _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            float _e118 = material.aniso_mask;
-            float mask = saturate(_e118);
-            float _e122 = material.aniso_spec;
-            float spec_scale = lerp(max(_e122, 0.0), 1.0, mask);
-            float2 a_hair = float2(max(_e115, SILK_MIN_ALPHA), 1.0);
-            const float _e131 = weft_clamp_roughness(roughness_7);
-            const float _e132 = weft_clamp_roughness(roughness_7);
-            float a_iso = (_e131 * _e132);
+            float _e103 = material.aniso_gloss;
+            const float _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            float _e107 = material.aniso_mask;
+            float mask = saturate(_e107);
+            float _e111 = material.aniso_spec;
+            float spec_scale = lerp(max(_e111, 0.0), 1.0, mask);
+            float2 a_hair = float2(max(_e104, SILK_MIN_ALPHA), 1.0);
+            const float _e120 = weft_clamp_roughness(roughness_7);
+            const float _e121 = weft_clamp_roughness(roughness_7);
+            float a_iso = (_e120 * _e121);
             lobe.alpha = lerp(a_hair, (a_iso).xx, mask);
-            const float _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = lerp(_e138, roughness_7, mask);
+            const float _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = lerp(_e127, roughness_7, mask);
             {
                 {
-                    float _e142 = material.tangent_shift;
-                    const float3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                    const float3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                    const float3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                    const float3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                    const float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                    const float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                    float aniso = ((_e152 * _e155) * saturate(_e145.z));
-                    const float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                    const float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                    float iso = ((_e160 * _e161) * n_dot_l_1);
+                    float _e131 = material.tangent_shift;
+                    const float3x3 _e132 = silk_tilt_frame(_e84, _e131);
+                    const float3 _e133 = weft_aniso_to_frame(_e132, v_5);
+                    const float3 _e135 = weft_aniso_to_frame(_e132, _e91.l);
+                    const float3 _e137 = weft_aniso_to_frame(_e132, _e91.h);
+                    const float _e143 = weft_d_ggx_aniso(_e137.x, _e137.y, _e137.z, a_hair.x, a_hair.y);
+                    const float _e146 = weft_v_smith_ggx_aniso_correlated(_e133, _e135, a_hair.x, a_hair.y);
+                    float aniso = ((_e143 * _e146) * saturate(_e135.z));
+                    const float _e152 = weft_d_ggx_nh(_e53, _e91.h, roughness_7);
+                    const float _e155 = weft_v_smith_ggx_correlated(_e91.n_dot_v, _e91.n_dot_l, roughness_7);
+                    float iso = ((_e152 * _e155) * _e91.n_dot_l);
                     lobe.value = (lerp(aniso, iso, mask) * spec_scale);
                 }
             }
         }
     }
-    const float3 _e167 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    const float3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e170) * _e174) * n_dot_l_diffuse);
-    float _e178 = lobe.value;
-    float3 direct = ((diffuse + (_e170 * _e178)) * _e167);
-    reflect_n = _e56;
+    const float3 _e162 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    const float3 _e167 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    const float3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e167) * _e171) * n_dot_l_diffuse);
+    float _e175 = lobe.value;
+    float3 direct = ((diffuse + (_e167 * _e175)) * _e162);
+    reflect_n = _e53;
     {
         {
-            float _e187 = lobe.ibl_roughness;
-            const float2 _e188 = weft_env_brdf_lut_nearest(_e98, _e187);
-            scale_bias = _e188;
+            float _e185 = lobe.ibl_roughness;
+            const float2 _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
+            scale_bias = _e186;
         }
-        float2 _e189 = scale_bias;
-        const float3 _e190 = weft_env_brdf_from_lut(f0_2, _e189);
-        env_brdf = _e190;
-        float3 _e193 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e193), (0.0).xxx);
-        float2 _e199 = lobe.alpha;
-        const float _e200 = silk_lobe_anisotropy(_e199);
-        float _e202 = lobe.ibl_roughness;
-        const float3 _e203 = weft_aniso_bent_normal(_e87, _e38, _e200, _e202);
-        reflect_n = _e203;
+        float2 _e187 = scale_bias;
+        const float3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
+        env_brdf = _e188;
+        float3 _e191 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e191), (0.0).xxx);
+        float2 _e197 = lobe.alpha;
+        const float _e198 = silk_lobe_anisotropy(_e197);
+        float _e200 = lobe.ibl_roughness;
+        const float3 _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
+        reflect_n = _e201;
     }
-    float3 _e205 = reflect_n;
-    float _e208 = lobe.ibl_roughness;
-    const float3 _e209 = weft_prefiltered_radiance(reflect(-(_e38), _e205), _e208);
-    float3 _e210 = env_brdf;
-    const float3 _e212 = weft_sh_irradiance(n_diff);
-    float3 _e213 = ambient_kd;
-    float3 indirect = ((_e209 * _e210) + ((_e212 * _e213) * diffuse_albedo));
+    float3 _e203 = reflect_n;
+    float _e206 = lobe.ibl_roughness;
+    const float3 _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
+    float3 _e208 = env_brdf;
+    const float3 _e210 = weft_sh_irradiance(n_diff);
+    float3 _e211 = ambient_kd;
+    float3 indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

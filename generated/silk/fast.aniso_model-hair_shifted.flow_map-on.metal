@@ -37,6 +37,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -255,27 +268,48 @@ metal::float2 weft_env_brdf_lut_nearest(
     return _e16.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -329,31 +363,31 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv_1 = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv_1 = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll_1 = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv_1 + ll_1);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy,
     float roughness_6
 ) {
     float k = metal::clamp(anisotropy, -1.0, 1.0);
-    metal::float3 n_4 = frame_2[2];
+    metal::float3 n_5 = frame_2[2];
     metal::float3 dir_1 = (k >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k) * metal::saturate(5.0 * metal::saturate(roughness_6));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -433,8 +467,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -454,7 +488,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> flow_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -476,104 +510,100 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_5 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        metal::float4 _e61 = flow_map.sample(material_sampler, _e5);
-        metal::float2 flow = (_e61.xy * 2.0) - metal::float2(1.0);
-        metal::float3 dir_2 = (_e42[0] * flow.x) + (_e42[1] * flow.y);
-        float _e78 = material.flow_strength;
-        metal::float3 _e82 = weft_safe_normalize(metal::mix(_e42[0], dir_2, metal::saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        metal::float4 _e58 = flow_map.sample(material_sampler, _e5);
+        metal::float2 flow = (_e58.xy * 2.0) - metal::float2(1.0);
+        metal::float3 dir_2 = (_e39[0] * flow.x) + (_e39[1] * flow.y);
+        float _e75 = material.flow_strength;
+        metal::float3 _e79 = weft_safe_normalize(metal::mix(_e39[0], dir_2, metal::saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    metal::float3 _e83 = fibre;
-    metal::float3x3 _e87 = weft_tangent_frame(_e56, metal::float4(_e83, in_1.world_tangent.w));
-    uint _e90 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff = (_e90 != 0u) ? _e56 : _e40;
-    metal::float3 _e94 = weft_main_light_direction(weft_frame);
-    metal::float3 _e96 = weft_safe_normalize(_e94 + _e38, _e56);
-    float _e98 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e94));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e96));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e96));
-    metal::float3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    metal::float3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    metal::float3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    metal::float3 _e80 = fibre;
+    metal::float3x3 _e84 = weft_tangent_frame(_e53, metal::float4(_e80, in_1.world_tangent.w));
+    uint _e87 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e87 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_5, weft_frame);
+    metal::float3 _e92 = weft_aniso_to_frame(_e84, v_5);
+    metal::float3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    metal::float3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e114 = material.aniso_gloss;
-            float _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            float _e118 = material.aniso_mask;
-            float mask = metal::saturate(_e118);
-            float _e122 = material.aniso_spec;
-            float spec_scale = metal::mix(metal::max(_e122, 0.0), 1.0, mask);
-            metal::float2 a_hair = metal::float2(metal::max(_e115, SILK_MIN_ALPHA), 1.0);
-            float _e131 = weft_clamp_roughness(roughness_7);
-            float _e132 = weft_clamp_roughness(roughness_7);
-            float a_iso = _e131 * _e132;
+            float _e103 = material.aniso_gloss;
+            float _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            float _e107 = material.aniso_mask;
+            float mask = metal::saturate(_e107);
+            float _e111 = material.aniso_spec;
+            float spec_scale = metal::mix(metal::max(_e111, 0.0), 1.0, mask);
+            metal::float2 a_hair = metal::float2(metal::max(_e104, SILK_MIN_ALPHA), 1.0);
+            float _e120 = weft_clamp_roughness(roughness_7);
+            float _e121 = weft_clamp_roughness(roughness_7);
+            float a_iso = _e120 * _e121;
             lobe.alpha = metal::mix(a_hair, metal::float2(a_iso), mask);
-            float _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = metal::mix(_e138, roughness_7, mask);
+            float _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = metal::mix(_e127, roughness_7, mask);
             {
                 {
-                    float _e142 = material.tangent_shift;
-                    metal::float3x3 _e143 = silk_tilt_frame(_e87, _e142);
-                    metal::float3 _e144 = weft_aniso_to_frame(_e143, _e38);
-                    metal::float3 _e145 = weft_aniso_to_frame(_e143, _e94);
-                    metal::float3 _e146 = weft_aniso_to_frame(_e143, _e96);
-                    float _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                    float _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                    float aniso = (_e152 * _e155) * metal::saturate(_e145.z);
-                    float _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                    float _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                    float iso = (_e160 * _e161) * n_dot_l_1;
+                    float _e131 = material.tangent_shift;
+                    metal::float3x3 _e132 = silk_tilt_frame(_e84, _e131);
+                    metal::float3 _e133 = weft_aniso_to_frame(_e132, v_5);
+                    metal::float3 _e135 = weft_aniso_to_frame(_e132, _e91.l);
+                    metal::float3 _e137 = weft_aniso_to_frame(_e132, _e91.h);
+                    float _e143 = weft_d_ggx_aniso(_e137.x, _e137.y, _e137.z, a_hair.x, a_hair.y);
+                    float _e146 = weft_v_smith_ggx_aniso_correlated(_e133, _e135, a_hair.x, a_hair.y);
+                    float aniso = (_e143 * _e146) * metal::saturate(_e135.z);
+                    float _e152 = weft_d_ggx_nh(_e53, _e91.h, roughness_7);
+                    float _e155 = weft_v_smith_ggx_correlated(_e91.n_dot_v, _e91.n_dot_l, roughness_7);
+                    float iso = (_e152 * _e155) * _e91.n_dot_l;
                     lobe.value = metal::mix(aniso, iso, mask) * spec_scale;
                 }
             }
         }
     }
-    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e94));
-    metal::float3 _e170 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e174 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e170) * _e174) * n_dot_l_diffuse;
-    float _e178 = lobe.value;
-    metal::float3 direct = (diffuse + (_e170 * _e178)) * _e167;
-    reflect_n = _e56;
+    metal::float3 _e162 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e91.l));
+    metal::float3 _e167 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    metal::float3 _e171 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e167) * _e171) * n_dot_l_diffuse;
+    float _e175 = lobe.value;
+    metal::float3 direct = (diffuse + (_e167 * _e175)) * _e162;
+    reflect_n = _e53;
     {
         {
-            float _e187 = lobe.ibl_roughness;
-            metal::float2 _e188 = weft_env_brdf_lut_nearest(_e98, _e187, weft_brdf_lut);
-            scale_bias = _e188;
+            float _e185 = lobe.ibl_roughness;
+            metal::float2 _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185, weft_brdf_lut);
+            scale_bias = _e186;
         }
-        metal::float2 _e189 = scale_bias;
-        metal::float3 _e190 = weft_env_brdf_from_lut(f0_2, _e189);
-        env_brdf = _e190;
-        metal::float3 _e193 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e193, metal::float3(0.0));
-        metal::float2 _e199 = lobe.alpha;
-        float _e200 = silk_lobe_anisotropy(_e199);
-        float _e202 = lobe.ibl_roughness;
-        metal::float3 _e203 = weft_aniso_bent_normal(_e87, _e38, _e200, _e202);
-        reflect_n = _e203;
+        metal::float2 _e187 = scale_bias;
+        metal::float3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
+        env_brdf = _e188;
+        metal::float3 _e191 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e191, metal::float3(0.0));
+        metal::float2 _e197 = lobe.alpha;
+        float _e198 = silk_lobe_anisotropy(_e197);
+        float _e200 = lobe.ibl_roughness;
+        metal::float3 _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
+        reflect_n = _e201;
     }
-    metal::float3 _e205 = reflect_n;
-    float _e208 = lobe.ibl_roughness;
-    metal::float3 _e209 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e205), _e208, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e210 = env_brdf;
-    metal::float3 _e212 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e213 = ambient_kd;
-    metal::float3 indirect = (_e209 * _e210) + ((_e212 * _e213) * diffuse_albedo);
+    metal::float3 _e203 = reflect_n;
+    float _e206 = lobe.ibl_roughness;
+    metal::float3 _e207 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e203), _e206, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e208 = env_brdf;
+    metal::float3 _e210 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e211 = ambient_kd;
+    metal::float3 indirect = (_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

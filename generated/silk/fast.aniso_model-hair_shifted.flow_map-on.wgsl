@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,21 +229,34 @@ fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -261,22 +288,22 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d_1, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv_1 = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv_1 = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll_1 = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv_1 + ll_1));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_6: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_3: vec3<f32>, anisotropy: f32, roughness_6: f32) -> vec3<f32> {
     let k = clamp(anisotropy, -1f, 1f);
-    let n_4 = frame_2[2];
+    let n_5 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k) * saturate((5f * saturate(roughness_6))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -351,104 +378,100 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_2 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_2, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_2 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        let _e61 = textureSample(flow_map, material_sampler, _e5);
-        let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_2, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        let _e58 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e58.xy * 2f) - vec2(1f));
+        let dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        let _e75 = material.flow_strength;
+        let _e79 = weft_safe_normalize(mix(_e39[0], dir_2, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    let _e83 = fibre;
-    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
-    let _e90 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e90 != 0u));
-    let _e94 = weft_main_light_direction();
-    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e94));
-    let n_dot_h_2 = saturate(dot(_e56, _e96));
-    let v_dot_h_1 = saturate(dot(_e38, _e96));
-    let _e105 = weft_aniso_to_frame(_e87, _e38);
-    let _e106 = weft_aniso_to_frame(_e87, _e94);
-    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let _e80 = fibre;
+    let _e84 = weft_tangent_frame(_e53, vec4<f32>(_e80, in_1.world_tangent.w));
+    let _e87 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e87 != 0u));
+    let _e91 = weft_main_light_geometry(_e53, v_5);
+    let _e92 = weft_aniso_to_frame(_e84, v_5);
+    let _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    let _e96 = weft_aniso_to_frame(_e84, _e91.h);
     let k_1 = material.anisotropy;
     {
         {
-            let _e114 = material.aniso_gloss;
-            let _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            let _e118 = material.aniso_mask;
-            let mask = saturate(_e118);
-            let _e122 = material.aniso_spec;
-            let spec_scale = mix(max(_e122, 0f), 1f, mask);
-            let a_hair = vec2<f32>(max(_e115, SILK_MIN_ALPHA), 1f);
-            let _e131 = weft_clamp_roughness(roughness_7);
-            let _e132 = weft_clamp_roughness(roughness_7);
-            let a_iso = (_e131 * _e132);
+            let _e103 = material.aniso_gloss;
+            let _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            let _e107 = material.aniso_mask;
+            let mask = saturate(_e107);
+            let _e111 = material.aniso_spec;
+            let spec_scale = mix(max(_e111, 0f), 1f, mask);
+            let a_hair = vec2<f32>(max(_e104, SILK_MIN_ALPHA), 1f);
+            let _e120 = weft_clamp_roughness(roughness_7);
+            let _e121 = weft_clamp_roughness(roughness_7);
+            let a_iso = (_e120 * _e121);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            let _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e138, roughness_7, mask);
+            let _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e127, roughness_7, mask);
             {
                 {
-                    let _e142 = material.tangent_shift;
-                    let _e143 = silk_tilt_frame(_e87, _e142);
-                    let _e144 = weft_aniso_to_frame(_e143, _e38);
-                    let _e145 = weft_aniso_to_frame(_e143, _e94);
-                    let _e146 = weft_aniso_to_frame(_e143, _e96);
-                    let _e152 = weft_d_ggx_aniso(_e146.x, _e146.y, _e146.z, a_hair.x, a_hair.y);
-                    let _e155 = weft_v_smith_ggx_aniso_correlated(_e144, _e145, a_hair.x, a_hair.y);
-                    let aniso = ((_e152 * _e155) * saturate(_e145.z));
-                    let _e160 = weft_d_ggx_nh(_e56, _e96, roughness_7);
-                    let _e161 = weft_v_smith_ggx_correlated(_e98, n_dot_l_1, roughness_7);
-                    let iso = ((_e160 * _e161) * n_dot_l_1);
+                    let _e131 = material.tangent_shift;
+                    let _e132 = silk_tilt_frame(_e84, _e131);
+                    let _e133 = weft_aniso_to_frame(_e132, v_5);
+                    let _e135 = weft_aniso_to_frame(_e132, _e91.l);
+                    let _e137 = weft_aniso_to_frame(_e132, _e91.h);
+                    let _e143 = weft_d_ggx_aniso(_e137.x, _e137.y, _e137.z, a_hair.x, a_hair.y);
+                    let _e146 = weft_v_smith_ggx_aniso_correlated(_e133, _e135, a_hair.x, a_hair.y);
+                    let aniso = ((_e143 * _e146) * saturate(_e135.z));
+                    let _e152 = weft_d_ggx_nh(_e53, _e91.h, roughness_7);
+                    let _e155 = weft_v_smith_ggx_correlated(_e91.n_dot_v, _e91.n_dot_l, roughness_7);
+                    let iso = ((_e152 * _e155) * _e91.n_dot_l);
                     lobe.value = (mix(aniso, iso, mask) * spec_scale);
                 }
             }
         }
     }
-    let _e167 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    let _e170 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e174 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e170) * _e174) * n_dot_l_diffuse);
-    let _e178 = lobe.value;
-    let direct = ((diffuse + (_e170 * _e178)) * _e167);
-    reflect_n = _e56;
+    let _e162 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    let _e167 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    let _e171 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e167) * _e171) * n_dot_l_diffuse);
+    let _e175 = lobe.value;
+    let direct = ((diffuse + (_e167 * _e175)) * _e162);
+    reflect_n = _e53;
     {
         {
-            let _e187 = lobe.ibl_roughness;
-            let _e188 = weft_env_brdf_lut_nearest(_e98, _e187);
-            scale_bias = _e188;
+            let _e185 = lobe.ibl_roughness;
+            let _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
+            scale_bias = _e186;
         }
-        let _e189 = scale_bias;
-        let _e190 = weft_env_brdf_from_lut(f0_2, _e189);
-        env_brdf = _e190;
-        let _e193 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e193), vec3(0f));
-        let _e199 = lobe.alpha;
-        let _e200 = silk_lobe_anisotropy(_e199);
-        let _e202 = lobe.ibl_roughness;
-        let _e203 = weft_aniso_bent_normal(_e87, _e38, _e200, _e202);
-        reflect_n = _e203;
+        let _e187 = scale_bias;
+        let _e188 = weft_env_brdf_from_lut(f0_2, _e187);
+        env_brdf = _e188;
+        let _e191 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e191), vec3(0f));
+        let _e197 = lobe.alpha;
+        let _e198 = silk_lobe_anisotropy(_e197);
+        let _e200 = lobe.ibl_roughness;
+        let _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
+        reflect_n = _e201;
     }
-    let _e205 = reflect_n;
-    let _e208 = lobe.ibl_roughness;
-    let _e209 = weft_prefiltered_radiance(reflect(-(_e38), _e205), _e208);
-    let _e210 = env_brdf;
-    let _e212 = weft_sh_irradiance(n_diff);
-    let _e213 = ambient_kd;
-    let indirect = ((_e209 * _e210) + ((_e212 * _e213) * diffuse_albedo));
+    let _e203 = reflect_n;
+    let _e206 = lobe.ibl_roughness;
+    let _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
+    let _e208 = env_brdf;
+    let _e210 = weft_sh_irradiance(n_diff);
+    let _e211 = ambient_kd;
+    let indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

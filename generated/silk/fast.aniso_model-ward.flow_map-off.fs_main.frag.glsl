@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -180,21 +192,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -210,14 +235,14 @@ vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
     return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_3) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_3) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * clamp((5.0 * clamp(roughness_3, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -232,17 +257,17 @@ vec2 silk_ward_alpha_seed(float smoothness, float anisotropy_2) {
     return (vec2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_bounded(vec3 v_2, vec3 l, vec2 alpha) {
+float silk_ward_bounded(vec3 v_3, vec3 l, vec2 alpha) {
     bool local = false;
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    vec3 hv = (v_2 + l);
+    vec3 hv = (v_3 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / ax);
     float y = (hv.y / ay);
     float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_2.z > 0.0)) {
+    if ((v_3.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;
@@ -284,73 +309,69 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    vec3 _e59 = fibre;
-    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
-    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e56, _e72), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
-    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_5 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    vec3 _e56 = fibre;
+    mat3x3 _e60 = weft_tangent_frame(_e53, vec4(_e56, in_1.world_tangent.w));
+    uint _e63 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5);
+    vec3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    vec3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    vec3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = _group_1_binding_0_fs.anisotropy;
     {
-        vec2 _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e88;
-        float _e91 = silk_ibl_roughness(_e88);
-        lobe.ibl_roughness = _e91;
+        vec2 _e77 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e77;
+        float _e80 = silk_ibl_roughness(_e77);
+        lobe.ibl_roughness = _e80;
         {
-            float _e93 = silk_ward_bounded(_e81, _e82, _e88);
-            lobe.value = (_e93 * n_dot_l);
+            float _e82 = silk_ward_bounded(_e68, _e70, _e77);
+            lobe.value = (_e82 * _e67.n_dot_l);
         }
     }
-    vec3 _e95 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
-    vec3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e102 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e98) * _e102) * n_dot_l_diffuse);
-    float _e106 = lobe.value;
-    vec3 direct = ((diffuse + (_e98 * _e106)) * _e95);
-    reflect_n = _e56;
+    vec3 _e85 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e67.l), 0.0, 1.0);
+    vec3 _e90 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    vec3 _e94 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e90) * _e94) * n_dot_l_diffuse);
+    float _e98 = lobe.value;
+    vec3 direct = ((diffuse + (_e90 * _e98)) * _e85);
+    reflect_n = _e53;
     {
         {
-            float _e115 = lobe.ibl_roughness;
-            vec2 _e116 = weft_env_brdf_lut_nearest(_e74, _e115);
-            scale_bias = _e116;
+            float _e108 = lobe.ibl_roughness;
+            vec2 _e109 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e108);
+            scale_bias = _e109;
         }
-        vec2 _e117 = scale_bias;
-        vec3 _e118 = weft_env_brdf_from_lut(f0_2, _e117);
-        env_brdf = _e118;
-        vec3 _e121 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e121), vec3(0.0));
-        vec2 _e127 = lobe.alpha;
-        float _e128 = silk_lobe_anisotropy(_e127);
-        float _e130 = lobe.ibl_roughness;
-        vec3 _e131 = weft_aniso_bent_normal(_e63, _e38, _e128, _e130);
-        reflect_n = _e131;
+        vec2 _e110 = scale_bias;
+        vec3 _e111 = weft_env_brdf_from_lut(f0_2, _e110);
+        env_brdf = _e111;
+        vec3 _e114 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e114), vec3(0.0));
+        vec2 _e120 = lobe.alpha;
+        float _e121 = silk_lobe_anisotropy(_e120);
+        float _e123 = lobe.ibl_roughness;
+        vec3 _e124 = weft_aniso_bent_normal(_e60, v_5, _e121, _e123);
+        reflect_n = _e124;
     }
-    vec3 _e133 = reflect_n;
-    float _e136 = lobe.ibl_roughness;
-    vec3 _e137 = weft_prefiltered_radiance(reflect(-(_e38), _e133), _e136);
-    vec3 _e138 = env_brdf;
-    vec3 _e140 = weft_sh_irradiance(n_diff);
-    vec3 _e141 = ambient_kd;
-    vec3 indirect = ((_e137 * _e138) + ((_e140 * _e141) * diffuse_albedo));
+    vec3 _e126 = reflect_n;
+    float _e129 = lobe.ibl_roughness;
+    vec3 _e130 = weft_prefiltered_radiance(reflect(-(v_5), _e126), _e129);
+    vec3 _e131 = env_brdf;
+    vec3 _e133 = weft_sh_irradiance(n_diff);
+    vec3 _e134 = ambient_kd;
+    vec3 indirect = ((_e130 * _e131) + ((_e133 * _e134) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -161,21 +173,34 @@ float weft_specular_mip(float roughness) {
     return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -191,14 +216,14 @@ vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
     return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_3) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_3) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * clamp((5.0 * clamp(roughness_3, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -213,17 +238,17 @@ vec2 silk_ward_alpha_seed(float smoothness, float anisotropy_2) {
     return (vec2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_bounded(vec3 v_2, vec3 l, vec2 alpha) {
+float silk_ward_bounded(vec3 v_3, vec3 l, vec2 alpha) {
     bool local = false;
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    vec3 hv = (v_2 + l);
+    vec3 hv = (v_3 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / ax);
     float y = (hv.y / ay);
     float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_2.z > 0.0)) {
+    if ((v_3.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -188,21 +202,34 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -218,14 +245,14 @@ fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_1: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
     let k = clamp(anisotropy, -1f, 1f);
-    let n_3 = frame_2[2];
+    let n_4 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
-    let aniso_t = cross(dir_1, v_1);
+    let aniso_t = cross(dir_1, v_2);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k) * saturate((5f * saturate(roughness_3))));
-    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -240,18 +267,18 @@ fn silk_ward_alpha_seed(smoothness: f32, anisotropy_2: f32) -> vec2<f32> {
     return (vec2<f32>(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5f);
 }
 
-fn silk_ward_bounded(v_2: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>) -> f32 {
+fn silk_ward_bounded(v_3: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>) -> f32 {
     var local: bool;
 
     let ax = max(alpha.x, SILK_MIN_ALPHA);
     let ay = max(alpha.y, SILK_MIN_ALPHA);
-    let hv = (v_2 + l);
+    let hv = (v_3 + l);
     let hn = max(hv.z, 0.0001f);
     let hn2_ = (hn * hn);
     let x_2 = (hv.x / ax);
     let y = (hv.y / ay);
     let f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if (v_2.z > 0f) {
+    if (v_3.z > 0f) {
         local = (l.z > 0f);
     } else {
         local = false;
@@ -317,73 +344,69 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_2 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_2, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l = saturate(dot(_e56, _e70));
-    let n_dot_h = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_2 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_5);
+    let _e68 = weft_aniso_to_frame(_e60, v_5);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_1 = material.anisotropy;
     {
-        let _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e88;
-        let _e91 = silk_ibl_roughness(_e88);
-        lobe.ibl_roughness = _e91;
+        let _e77 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e77;
+        let _e80 = silk_ibl_roughness(_e77);
+        lobe.ibl_roughness = _e80;
         {
-            let _e93 = silk_ward_bounded(_e81, _e82, _e88);
-            lobe.value = (_e93 * n_dot_l);
+            let _e82 = silk_ward_bounded(_e68, _e70, _e77);
+            lobe.value = (_e82 * _e67.n_dot_l);
         }
     }
-    let _e95 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e98 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e102 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e98) * _e102) * n_dot_l_diffuse);
-    let _e106 = lobe.value;
-    let direct = ((diffuse + (_e98 * _e106)) * _e95);
-    reflect_n = _e56;
+    let _e85 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e90 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    let _e94 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e90) * _e94) * n_dot_l_diffuse);
+    let _e98 = lobe.value;
+    let direct = ((diffuse + (_e90 * _e98)) * _e85);
+    reflect_n = _e53;
     {
         {
-            let _e115 = lobe.ibl_roughness;
-            let _e116 = weft_env_brdf_lut_nearest(_e74, _e115);
-            scale_bias = _e116;
+            let _e108 = lobe.ibl_roughness;
+            let _e109 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e108);
+            scale_bias = _e109;
         }
-        let _e117 = scale_bias;
-        let _e118 = weft_env_brdf_from_lut(f0_2, _e117);
-        env_brdf = _e118;
-        let _e121 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e121), vec3(0f));
-        let _e127 = lobe.alpha;
-        let _e128 = silk_lobe_anisotropy(_e127);
-        let _e130 = lobe.ibl_roughness;
-        let _e131 = weft_aniso_bent_normal(_e63, _e38, _e128, _e130);
-        reflect_n = _e131;
+        let _e110 = scale_bias;
+        let _e111 = weft_env_brdf_from_lut(f0_2, _e110);
+        env_brdf = _e111;
+        let _e114 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e114), vec3(0f));
+        let _e120 = lobe.alpha;
+        let _e121 = silk_lobe_anisotropy(_e120);
+        let _e123 = lobe.ibl_roughness;
+        let _e124 = weft_aniso_bent_normal(_e60, v_5, _e121, _e123);
+        reflect_n = _e124;
     }
-    let _e133 = reflect_n;
-    let _e136 = lobe.ibl_roughness;
-    let _e137 = weft_prefiltered_radiance(reflect(-(_e38), _e133), _e136);
-    let _e138 = env_brdf;
-    let _e140 = weft_sh_irradiance(n_diff);
-    let _e141 = ambient_kd;
-    let indirect = ((_e137 * _e138) + ((_e140 * _e141) * diffuse_albedo));
+    let _e126 = reflect_n;
+    let _e129 = lobe.ibl_roughness;
+    let _e130 = weft_prefiltered_radiance(reflect(-(v_5), _e126), _e129);
+    let _e131 = env_brdf;
+    let _e133 = weft_sh_irradiance(n_diff);
+    let _e134 = ambient_kd;
+    let indirect = ((_e130 * _e131) + ((_e133 * _e134) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -182,21 +194,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
+    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -212,14 +237,14 @@ vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
     return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_3) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_3) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * clamp((5.0 * clamp(roughness_3, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -234,17 +259,17 @@ vec2 silk_ward_alpha_seed(float smoothness, float anisotropy_2) {
     return (vec2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_bounded(vec3 v_2, vec3 l, vec2 alpha) {
+float silk_ward_bounded(vec3 v_3, vec3 l, vec2 alpha) {
     bool local = false;
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    vec3 hv = (v_2 + l);
+    vec3 hv = (v_3 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / ax);
     float y = (hv.y / ay);
     float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_2.z > 0.0)) {
+    if ((v_3.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;
@@ -286,81 +311,77 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_5 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        vec4 _e61 = texture(_group_1_binding_5_fs, vec2(_e5));
-        vec2 flow = ((_e61.xy * 2.0) - vec2(1.0));
-        vec3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = _group_1_binding_0_fs.flow_strength;
-        vec3 _e82 = weft_safe_normalize(mix(_e42[0], dir_2, clamp(_e78, 0.0, 1.0)), _e42[0]);
-        fibre = _e82;
+        vec4 _e58 = texture(_group_1_binding_5_fs, vec2(_e5));
+        vec2 flow = ((_e58.xy * 2.0) - vec2(1.0));
+        vec3 dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = _group_1_binding_0_fs.flow_strength;
+        vec3 _e79 = weft_safe_normalize(mix(_e39[0], dir_2, clamp(_e75, 0.0, 1.0)), _e39[0]);
+        fibre = _e79;
     }
-    vec3 _e83 = fibre;
-    mat3x3 _e87 = weft_tangent_frame(_e56, vec4(_e83, in_1.world_tangent.w));
-    uint _e90 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e90 != 0u) ? _e56 : _e40);
-    vec3 _e94 = weft_main_light_direction();
-    vec3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = clamp(dot(_e56, _e94), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e56, _e96), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e96), 0.0, 1.0);
-    vec3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    vec3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    vec3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    vec3 _e80 = fibre;
+    mat3x3 _e84 = weft_tangent_frame(_e53, vec4(_e80, in_1.world_tangent.w));
+    uint _e87 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e87 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_5);
+    vec3 _e92 = weft_aniso_to_frame(_e84, v_5);
+    vec3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    vec3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_1 = _group_1_binding_0_fs.anisotropy;
     {
-        vec2 _e112 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e112;
-        float _e115 = silk_ibl_roughness(_e112);
-        lobe.ibl_roughness = _e115;
+        vec2 _e101 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e101;
+        float _e104 = silk_ibl_roughness(_e101);
+        lobe.ibl_roughness = _e104;
         {
-            float _e117 = silk_ward_bounded(_e105, _e106, _e112);
-            lobe.value = (_e117 * n_dot_l);
+            float _e106 = silk_ward_bounded(_e92, _e94, _e101);
+            lobe.value = (_e106 * _e91.n_dot_l);
         }
     }
-    vec3 _e119 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e94), 0.0, 1.0);
-    vec3 _e122 = weft_f_schlick(f0_2, v_dot_h_1);
-    vec3 _e126 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e122) * _e126) * n_dot_l_diffuse);
-    float _e130 = lobe.value;
-    vec3 direct = ((diffuse + (_e122 * _e130)) * _e119);
-    reflect_n = _e56;
+    vec3 _e109 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e91.l), 0.0, 1.0);
+    vec3 _e114 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    vec3 _e118 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e114) * _e118) * n_dot_l_diffuse);
+    float _e122 = lobe.value;
+    vec3 direct = ((diffuse + (_e114 * _e122)) * _e109);
+    reflect_n = _e53;
     {
         {
-            float _e139 = lobe.ibl_roughness;
-            vec2 _e140 = weft_env_brdf_lut_nearest(_e98, _e139);
-            scale_bias = _e140;
+            float _e132 = lobe.ibl_roughness;
+            vec2 _e133 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e132);
+            scale_bias = _e133;
         }
-        vec2 _e141 = scale_bias;
-        vec3 _e142 = weft_env_brdf_from_lut(f0_2, _e141);
-        env_brdf = _e142;
-        vec3 _e145 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e145), vec3(0.0));
-        vec2 _e151 = lobe.alpha;
-        float _e152 = silk_lobe_anisotropy(_e151);
-        float _e154 = lobe.ibl_roughness;
-        vec3 _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
-        reflect_n = _e155;
+        vec2 _e134 = scale_bias;
+        vec3 _e135 = weft_env_brdf_from_lut(f0_2, _e134);
+        env_brdf = _e135;
+        vec3 _e138 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e138), vec3(0.0));
+        vec2 _e144 = lobe.alpha;
+        float _e145 = silk_lobe_anisotropy(_e144);
+        float _e147 = lobe.ibl_roughness;
+        vec3 _e148 = weft_aniso_bent_normal(_e84, v_5, _e145, _e147);
+        reflect_n = _e148;
     }
-    vec3 _e157 = reflect_n;
-    float _e160 = lobe.ibl_roughness;
-    vec3 _e161 = weft_prefiltered_radiance(reflect(-(_e38), _e157), _e160);
-    vec3 _e162 = env_brdf;
-    vec3 _e164 = weft_sh_irradiance(n_diff);
-    vec3 _e165 = ambient_kd;
-    vec3 indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
+    vec3 _e150 = reflect_n;
+    float _e153 = lobe.ibl_roughness;
+    vec3 _e154 = weft_prefiltered_radiance(reflect(-(v_5), _e150), _e153);
+    vec3 _e155 = env_brdf;
+    vec3 _e157 = weft_sh_irradiance(n_diff);
+    vec3 _e158 = ambient_kd;
+    vec3 indirect = ((_e154 * _e155) + ((_e157 * _e158) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

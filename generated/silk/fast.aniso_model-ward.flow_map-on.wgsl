@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -190,21 +204,34 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -220,14 +247,14 @@ fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_1: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
     let k = clamp(anisotropy, -1f, 1f);
-    let n_3 = frame_2[2];
+    let n_4 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
-    let aniso_t = cross(dir_1, v_1);
+    let aniso_t = cross(dir_1, v_2);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k) * saturate((5f * saturate(roughness_3))));
-    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -242,18 +269,18 @@ fn silk_ward_alpha_seed(smoothness: f32, anisotropy_2: f32) -> vec2<f32> {
     return (vec2<f32>(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5f);
 }
 
-fn silk_ward_bounded(v_2: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>) -> f32 {
+fn silk_ward_bounded(v_3: vec3<f32>, l: vec3<f32>, alpha: vec2<f32>) -> f32 {
     var local: bool;
 
     let ax = max(alpha.x, SILK_MIN_ALPHA);
     let ay = max(alpha.y, SILK_MIN_ALPHA);
-    let hv = (v_2 + l);
+    let hv = (v_3 + l);
     let hn = max(hv.z, 0.0001f);
     let hn2_ = (hn * hn);
     let x_2 = (hv.x / ax);
     let y = (hv.y / ay);
     let f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if (v_2.z > 0f) {
+    if (v_3.z > 0f) {
         local = (l.z > 0f);
     } else {
         local = false;
@@ -319,81 +346,77 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_2 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_2, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_2 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        let _e61 = textureSample(flow_map, material_sampler, _e5);
-        let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_2, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        let _e58 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e58.xy * 2f) - vec2(1f));
+        let dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        let _e75 = material.flow_strength;
+        let _e79 = weft_safe_normalize(mix(_e39[0], dir_2, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    let _e83 = fibre;
-    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
-    let _e90 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e90 != 0u));
-    let _e94 = weft_main_light_direction();
-    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l = saturate(dot(_e56, _e94));
-    let n_dot_h = saturate(dot(_e56, _e96));
-    let v_dot_h_1 = saturate(dot(_e38, _e96));
-    let _e105 = weft_aniso_to_frame(_e87, _e38);
-    let _e106 = weft_aniso_to_frame(_e87, _e94);
-    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let _e80 = fibre;
+    let _e84 = weft_tangent_frame(_e53, vec4<f32>(_e80, in_1.world_tangent.w));
+    let _e87 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e87 != 0u));
+    let _e91 = weft_main_light_geometry(_e53, v_5);
+    let _e92 = weft_aniso_to_frame(_e84, v_5);
+    let _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    let _e96 = weft_aniso_to_frame(_e84, _e91.h);
     let k_1 = material.anisotropy;
     {
-        let _e112 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e112;
-        let _e115 = silk_ibl_roughness(_e112);
-        lobe.ibl_roughness = _e115;
+        let _e101 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e101;
+        let _e104 = silk_ibl_roughness(_e101);
+        lobe.ibl_roughness = _e104;
         {
-            let _e117 = silk_ward_bounded(_e105, _e106, _e112);
-            lobe.value = (_e117 * n_dot_l);
+            let _e106 = silk_ward_bounded(_e92, _e94, _e101);
+            lobe.value = (_e106 * _e91.n_dot_l);
         }
     }
-    let _e119 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    let _e122 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e126 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e122) * _e126) * n_dot_l_diffuse);
-    let _e130 = lobe.value;
-    let direct = ((diffuse + (_e122 * _e130)) * _e119);
-    reflect_n = _e56;
+    let _e109 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    let _e114 = weft_f_schlick(f0_2, _e91.v_dot_h);
+    let _e118 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e114) * _e118) * n_dot_l_diffuse);
+    let _e122 = lobe.value;
+    let direct = ((diffuse + (_e114 * _e122)) * _e109);
+    reflect_n = _e53;
     {
         {
-            let _e139 = lobe.ibl_roughness;
-            let _e140 = weft_env_brdf_lut_nearest(_e98, _e139);
-            scale_bias = _e140;
+            let _e132 = lobe.ibl_roughness;
+            let _e133 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e132);
+            scale_bias = _e133;
         }
-        let _e141 = scale_bias;
-        let _e142 = weft_env_brdf_from_lut(f0_2, _e141);
-        env_brdf = _e142;
-        let _e145 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e145), vec3(0f));
-        let _e151 = lobe.alpha;
-        let _e152 = silk_lobe_anisotropy(_e151);
-        let _e154 = lobe.ibl_roughness;
-        let _e155 = weft_aniso_bent_normal(_e87, _e38, _e152, _e154);
-        reflect_n = _e155;
+        let _e134 = scale_bias;
+        let _e135 = weft_env_brdf_from_lut(f0_2, _e134);
+        env_brdf = _e135;
+        let _e138 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e138), vec3(0f));
+        let _e144 = lobe.alpha;
+        let _e145 = silk_lobe_anisotropy(_e144);
+        let _e147 = lobe.ibl_roughness;
+        let _e148 = weft_aniso_bent_normal(_e84, v_5, _e145, _e147);
+        reflect_n = _e148;
     }
-    let _e157 = reflect_n;
-    let _e160 = lobe.ibl_roughness;
-    let _e161 = weft_prefiltered_radiance(reflect(-(_e38), _e157), _e160);
-    let _e162 = env_brdf;
-    let _e164 = weft_sh_irradiance(n_diff);
-    let _e165 = ambient_kd;
-    let indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
+    let _e150 = reflect_n;
+    let _e153 = lobe.ibl_roughness;
+    let _e154 = weft_prefiltered_radiance(reflect(-(v_5), _e150), _e153);
+    let _e155 = env_brdf;
+    let _e157 = weft_sh_irradiance(n_diff);
+    let _e158 = ambient_kd;
+    let indirect = ((_e154 * _e155) + ((_e157 * _e158) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

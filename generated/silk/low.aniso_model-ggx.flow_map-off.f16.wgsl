@@ -32,6 +32,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -175,21 +189,34 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_4 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
+    let v_5 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_5.xy * strength), max(v_5.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -216,14 +243,14 @@ fn weft_aniso_alpha_burley(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
     return max(ab, vec2(0.001f));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_1: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_1 = clamp(anisotropy_1, -1f, 1f);
-    let n_3 = frame_2[2];
+    let n_4 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k_1 >= 0f));
-    let aniso_t = cross(dir_1, v_1);
+    let aniso_t = cross(dir_1, v_2);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -247,7 +274,7 @@ fn weft_half_f_schlick(f0_: vec3<f16>, v_dot_h: f16) -> vec3<f16> {
     return (f0_ + ((vec3(1h) - f0_) * _e7));
 }
 
-fn weft_half_spec_ggx_aniso(v_2: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha_1: vec2<f32>) -> f16 {
+fn weft_half_spec_ggx_aniso(v_3: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha_1: vec2<f32>) -> f16 {
     let a_2 = max(alpha_1, vec2(0.007921f));
     let inv_a = vec2<f16>((vec2(1f) / a_2));
     let ah = vec2<f16>(a_2);
@@ -255,16 +282,16 @@ fn weft_half_spec_ggx_aniso(v_2: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha_1:
     let y = (h.y * inv_a.y);
     let q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.010002136h);
     let d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31835938h);
-    let nv = max(v_2.z, 0.0010004044h);
+    let nv = max(v_3.z, 0.0010004044h);
     let nl = saturate(l.z);
-    let lv = (nl * length(vec3<f16>((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    let lv = (nl * length(vec3<f16>((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     let ll = (nv * length(vec3<f16>((ah.x * l.x), (ah.y * l.y), nl)));
     let v_n_dot_l = ((0.5h * nl) / max((lv + ll), 0.000100016594h));
     let _e65 = weft_half_min_max((d * v_n_dot_l));
     return select(0h, _e65, (h.z > 0h));
 }
 
-fn silk_low(frame_3: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_3: vec3<f32>, n_dot_v_1: f32, v_dot_h_1: f32, n_dot_l_diffuse: f32, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, lobe_1: SilkLobe, light: vec3<f32>) -> vec3<f32> {
+fn silk_low(frame_3: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_4: vec3<f32>, n_dot_v_1: f32, v_dot_h_1: f32, n_dot_l_diffuse: f32, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, lobe_1: SilkLobe, light: vec3<f32>) -> vec3<f32> {
     let f0_1 = vec3<f16>(f0_in);
     let _e13 = weft_half_f_schlick(f0_1, f16(v_dot_h_1));
     let kd = ((vec3(1h) - _e13) * (f16(n_dot_l_diffuse) * 0.31835938h));
@@ -274,8 +301,8 @@ fn silk_low(frame_3: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_3: vec
     let env_brdf_1 = ((f0_1 * f16(lut.x)) + vec3(f16(lut.y)));
     let ambient_kd_1 = max((vec3(1h) - env_brdf_1), vec3(0h));
     let _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    let _e47 = weft_aniso_bent_normal(frame_3, v_3, _e45, lobe_1.ibl_roughness);
-    let _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    let _e47 = weft_aniso_bent_normal(frame_3, v_4, _e45, lobe_1.ibl_roughness);
+    let _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     let _e54 = weft_sh_irradiance(n_diff);
     let indirect = ((_e51 * vec3<f32>(env_brdf_1)) + ((_e54 * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), vec3(0f), vec3(65504f));
@@ -328,48 +355,44 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_2 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_2, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff_1 = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l = saturate(dot(_e56, _e70));
-    let n_dot_h = saturate(dot(_e56, _e72));
-    let v_dot_h_2 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_6 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_2 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff_1 = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_6);
+    let _e68 = weft_aniso_to_frame(_e60, v_6);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_2 = material.anisotropy;
     {
         {
-            let _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            let _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
-                let _e93 = weft_aniso_alpha_burley(max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
-                let _e98 = weft_half_spec_ggx_aniso(vec3<f16>(_e81), vec3<f16>(_e82), vec3<f16>(_e83), _e93);
-                lobe.value = f32(_e98);
+                let _e82 = weft_aniso_alpha_burley(max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
+                let _e87 = weft_half_spec_ggx_aniso(vec3<f16>(_e68), vec3<f16>(_e70), vec3<f16>(_e72), _e82);
+                lobe.value = f32(_e87);
             }
         }
     }
-    let _e100 = weft_main_light_radiance();
-    let n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e70));
+    let _e89 = weft_main_light_radiance();
+    let n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e67.l));
     {
-        let _e103 = lobe;
-        let _e104 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e103, _e100);
-        return vec4<f32>(_e104, alpha_out);
+        let _e95 = lobe;
+        let _e96 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e95, _e89);
+        return vec4<f32>(_e96, alpha_out);
     }
 }

@@ -38,6 +38,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -198,27 +211,48 @@ metal::float2 weft_env_brdf_lut_nearest(
     return _e16.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    return metal::float3x3(t, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
+    metal::float3 v_5 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_5.xy * strength, metal::max(v_5.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -259,17 +293,17 @@ metal::float2 weft_aniso_alpha_burley(
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_1,
+    metal::float3 v_2,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_3 = frame_2[2];
+    metal::float3 n_4 = frame_2[2];
     metal::float3 dir_1 = (k_1 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_1);
+    metal::float3 aniso_t = metal::cross(dir_1, v_2);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -303,7 +337,7 @@ metal::float3 weft_half_f_schlick(
 }
 
 weft_half weft_half_spec_ggx_aniso(
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l,
     metal::float3 h,
     metal::float2 alpha_1
@@ -315,9 +349,9 @@ weft_half weft_half_spec_ggx_aniso(
     float y = h.y * inv_a.y;
     float q = metal::max(((x_3 * x_3) + (y * y)) + (h.z * h.z), 0.01);
     float d = (((inv_a.x * inv_a.y) / q) / q) * 0.31830987;
-    float nv = metal::max(v_2.z, 0.001);
+    float nv = metal::max(v_3.z, 0.001);
     float nl = metal::saturate(l.z);
-    float lv = nl * metal::length(metal::float3(ah.x * v_2.x, ah.y * v_2.y, nv));
+    float lv = nl * metal::length(metal::float3(ah.x * v_3.x, ah.y * v_3.y, nv));
     float ll = nv * metal::length(metal::float3(ah.x * l.x, ah.y * l.y, nl));
     float v_n_dot_l = (0.5 * nl) / metal::max(lv + ll, 0.0001);
     weft_half _e65 = weft_half_min_max(d * v_n_dot_l);
@@ -328,7 +362,7 @@ metal::float3 silk_low(
     metal::float3x3 frame_3,
     metal::float3 n_spec,
     metal::float3 n_diff,
-    metal::float3 v_3,
+    metal::float3 v_4,
     float n_dot_v_1,
     float v_dot_h_1,
     float n_dot_l_diffuse,
@@ -350,8 +384,8 @@ metal::float3 silk_low(
     metal::float3 env_brdf_1 = (f0_1 * static_cast<float>(lut.x)) + metal::float3(static_cast<float>(lut.y));
     metal::float3 ambient_kd_1 = metal::max(metal::float3(1.0) - env_brdf_1, metal::float3(0.0));
     float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    metal::float3 _e47 = weft_aniso_bent_normal(frame_3, v_3, _e45, lobe_1.ibl_roughness);
-    metal::float3 _e51 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e47), lobe_1.ibl_roughness, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e47 = weft_aniso_bent_normal(frame_3, v_4, _e45, lobe_1.ibl_roughness);
+    metal::float3 _e51 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e47), lobe_1.ibl_roughness, weft_frame, weft_environment, weft_environment_sampler);
     metal::float3 _e54 = weft_sh_irradiance(n_diff, weft_frame);
     metal::float3 indirect = (_e51 * static_cast<metal::float3>(env_brdf_1)) + ((_e54 * static_cast<metal::float3>(ambient_kd_1)) * diffuse_albedo);
     return metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
@@ -399,8 +433,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -419,7 +453,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -441,48 +475,44 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    metal::float3 _e59 = fibre;
-    metal::float3x3 _e63 = weft_tangent_frame(_e56, metal::float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff_1 = (_e66 != 0u) ? _e56 : _e40;
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
-    float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l = metal::saturate(metal::dot(_e56, _e70));
-    float n_dot_h = metal::saturate(metal::dot(_e56, _e72));
-    float v_dot_h_2 = metal::saturate(metal::dot(_e38, _e72));
-    metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_6 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    metal::float3 _e56 = fibre;
+    metal::float3x3 _e60 = weft_tangent_frame(_e53, metal::float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff_1 = (_e63 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_6, weft_frame);
+    metal::float3 _e68 = weft_aniso_to_frame(_e60, v_6);
+    metal::float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    metal::float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_2 = material.anisotropy;
     {
         {
-            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            metal::float2 _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
-                metal::float2 _e93 = weft_aniso_alpha_burley(metal::max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
-                weft_half _e98 = weft_half_spec_ggx_aniso(static_cast<metal::float3>(_e81), static_cast<metal::float3>(_e82), static_cast<metal::float3>(_e83), _e93);
-                lobe.value = static_cast<float>(_e98);
+                metal::float2 _e82 = weft_aniso_alpha_burley(metal::max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
+                weft_half _e87 = weft_half_spec_ggx_aniso(static_cast<metal::float3>(_e68), static_cast<metal::float3>(_e70), static_cast<metal::float3>(_e72), _e82);
+                lobe.value = static_cast<float>(_e87);
             }
         }
     }
-    metal::float3 _e100 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse_1 = metal::saturate(metal::dot(n_diff_1, _e70));
+    metal::float3 _e89 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse_1 = metal::saturate(metal::dot(n_diff_1, _e67.l));
     {
-        SilkLobe _e103 = lobe;
-        metal::float3 _e104 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e103, _e100, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
-        return fs_mainOutput { metal::float4(_e104, alpha_out) };
+        SilkLobe _e95 = lobe;
+        metal::float3 _e96 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e95, _e89, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        return fs_mainOutput { metal::float4(_e96, alpha_out) };
     }
 }

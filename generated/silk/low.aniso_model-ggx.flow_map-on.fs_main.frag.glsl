@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -167,21 +179,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -208,14 +233,14 @@ vec2 weft_aniso_alpha_burley(float roughness_4, float anisotropy) {
     return max(ab, vec2(0.001));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy_1, float roughness_5) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy_1, float roughness_5) {
     float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -239,7 +264,7 @@ vec3 weft_half_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha_1) {
+float weft_half_spec_ggx_aniso(vec3 v_3, vec3 l, vec3 h, vec2 alpha_1) {
     vec2 a_2 = max(alpha_1, vec2(0.007921));
     vec2 inv_a = vec2((vec2(1.0) / a_2));
     vec2 ah = vec2(a_2);
@@ -247,16 +272,16 @@ float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha_1) {
     float y = (h.y * inv_a.y);
     float q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01);
     float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
-    float nv = max(v_2.z, 0.001);
+    float nv = max(v_3.z, 0.001);
     float nl = clamp(l.z, 0.0, 1.0);
-    float lv = (nl * length(vec3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float lv = (nl * length(vec3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
     float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
     float _e65 = weft_half_min_max((d * v_n_dot_l));
     return ((h.z > 0.0) ? _e65 : 0.0);
 }
 
-vec3 silk_low(mat3x3 frame_3, vec3 n_spec, vec3 n_diff, vec3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, vec3 f0_in, vec3 diffuse_albedo, SilkLobe lobe_1, vec3 light) {
+vec3 silk_low(mat3x3 frame_3, vec3 n_spec, vec3 n_diff, vec3 v_4, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, vec3 f0_in, vec3 diffuse_albedo, SilkLobe lobe_1, vec3 light) {
     vec3 f0_1 = vec3(f0_in);
     vec3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
     vec3 kd = ((vec3(1.0) - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
@@ -266,8 +291,8 @@ vec3 silk_low(mat3x3 frame_3, vec3 n_spec, vec3 n_diff, vec3 v_3, float n_dot_v_
     vec3 env_brdf_1 = ((f0_1 * float(lut.x)) + vec3(float(lut.y)));
     vec3 ambient_kd_1 = max((vec3(1.0) - env_brdf_1), vec3(0.0));
     float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    vec3 _e47 = weft_aniso_bent_normal(frame_3, v_3, _e45, lobe_1.ibl_roughness);
-    vec3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    vec3 _e47 = weft_aniso_bent_normal(frame_3, v_4, _e45, lobe_1.ibl_roughness);
+    vec3 _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     vec3 _e54 = weft_sh_irradiance(n_diff);
     vec3 indirect = ((_e51 * vec3(env_brdf_1)) + ((_e54 * vec3(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), vec3(0.0), vec3(65504.0));
@@ -296,57 +321,53 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_6 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        vec4 _e61 = texture(_group_1_binding_5_fs, vec2(_e5));
-        vec2 flow = ((_e61.xy * 2.0) - vec2(1.0));
-        vec3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = _group_1_binding_0_fs.flow_strength;
-        vec3 _e82 = weft_safe_normalize(mix(_e42[0], dir_2, clamp(_e78, 0.0, 1.0)), _e42[0]);
-        fibre = _e82;
+        vec4 _e58 = texture(_group_1_binding_5_fs, vec2(_e5));
+        vec2 flow = ((_e58.xy * 2.0) - vec2(1.0));
+        vec3 dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = _group_1_binding_0_fs.flow_strength;
+        vec3 _e79 = weft_safe_normalize(mix(_e39[0], dir_2, clamp(_e75, 0.0, 1.0)), _e39[0]);
+        fibre = _e79;
     }
-    vec3 _e83 = fibre;
-    mat3x3 _e87 = weft_tangent_frame(_e56, vec4(_e83, in_1.world_tangent.w));
-    uint _e90 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff_1 = ((_e90 != 0u) ? _e56 : _e40);
-    vec3 _e94 = weft_main_light_direction();
-    vec3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = clamp(dot(_e56, _e94), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e56, _e96), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e38, _e96), 0.0, 1.0);
-    vec3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    vec3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    vec3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    vec3 _e80 = fibre;
+    mat3x3 _e84 = weft_tangent_frame(_e53, vec4(_e80, in_1.world_tangent.w));
+    uint _e87 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff_1 = ((_e87 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_6);
+    vec3 _e92 = weft_aniso_to_frame(_e84, v_6);
+    vec3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    vec3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_2 = _group_1_binding_0_fs.anisotropy;
     {
         {
-            vec2 _e112 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e112;
+            vec2 _e101 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e101;
             lobe.ibl_roughness = roughness_6;
             {
-                vec2 _e117 = weft_aniso_alpha_burley(max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
-                float _e122 = weft_half_spec_ggx_aniso(vec3(_e105), vec3(_e106), vec3(_e107), _e117);
-                lobe.value = float(_e122);
+                vec2 _e106 = weft_aniso_alpha_burley(max(roughness_6, WEFT_MIN_ROUGHNESS_HALF), k_2);
+                float _e111 = weft_half_spec_ggx_aniso(vec3(_e92), vec3(_e94), vec3(_e96), _e106);
+                lobe.value = float(_e111);
             }
         }
     }
-    vec3 _e124 = weft_main_light_radiance();
-    float n_dot_l_diffuse_1 = clamp(dot(n_diff_1, _e94), 0.0, 1.0);
+    vec3 _e113 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = clamp(dot(n_diff_1, _e91.l), 0.0, 1.0);
     {
-        SilkLobe _e127 = lobe;
-        vec3 _e128 = silk_low(_e87, _e56, n_diff_1, _e38, _e98, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e127, _e124);
-        _fs2p_location0 = vec4(_e128, alpha_out);
+        SilkLobe _e119 = lobe;
+        vec3 _e120 = silk_low(_e84, _e53, n_diff_1, v_6, _e91.n_dot_v, _e91.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e119, _e113);
+        _fs2p_location0 = vec4(_e120, alpha_out);
         return;
     }
 }

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -165,21 +177,34 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
     return _e16.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+    vec3 v_5 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -195,14 +220,14 @@ vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x) {
     return vec3(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
 }
 
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_1, float anisotropy, float roughness_4) {
+vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_2, float anisotropy, float roughness_4) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    vec3 n_3 = frame_2[2];
+    vec3 n_4 = frame_2[2];
     vec3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    vec3 aniso_t = cross(dir_1, v_1);
+    vec3 aniso_t = cross(dir_1, v_2);
     vec3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * clamp((5.0 * clamp(roughness_4, 0.0, 1.0)), 0.0, 1.0));
-    vec3 _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -240,7 +265,7 @@ vec3 weft_half_f_schlick(vec3 f0_, float v_dot_h) {
     return (f0_ + ((vec3(1.0) - f0_) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha_1) {
+float weft_half_spec_ggx_aniso(vec3 v_3, vec3 l, vec3 h, vec2 alpha_1) {
     vec2 a_1 = max(alpha_1, vec2(0.007921));
     vec2 inv_a = vec2((vec2(1.0) / a_1));
     vec2 ah = vec2(a_1);
@@ -248,9 +273,9 @@ float weft_half_spec_ggx_aniso(vec3 v_2, vec3 l, vec3 h, vec2 alpha_1) {
     float y = (h.y * inv_a.y);
     float q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01);
     float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
-    float nv = max(v_2.z, 0.001);
+    float nv = max(v_3.z, 0.001);
     float nl = clamp(l.z, 0.0, 1.0);
-    float lv = (nl * length(vec3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float lv = (nl * length(vec3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
     float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
     float _e65 = weft_half_min_max((d * v_n_dot_l));
@@ -261,7 +286,7 @@ float silk_ibl_roughness(vec2 alpha_2) {
     return clamp(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))), 0.0, 1.0);
 }
 
-vec3 silk_low(mat3x3 frame_4, vec3 n_spec, vec3 n_diff, vec3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, vec3 f0_in, vec3 diffuse_albedo, SilkLobe lobe_1, vec3 light) {
+vec3 silk_low(mat3x3 frame_4, vec3 n_spec, vec3 n_diff, vec3 v_4, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, vec3 f0_in, vec3 diffuse_albedo, SilkLobe lobe_1, vec3 light) {
     vec3 f0_1 = vec3(f0_in);
     vec3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
     vec3 kd = ((vec3(1.0) - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
@@ -271,8 +296,8 @@ vec3 silk_low(mat3x3 frame_4, vec3 n_spec, vec3 n_diff, vec3 v_3, float n_dot_v_
     vec3 env_brdf_1 = ((f0_1 * float(lut.x)) + vec3(float(lut.y)));
     vec3 ambient_kd_1 = max((vec3(1.0) - env_brdf_1), vec3(0.0));
     float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    vec3 _e47 = weft_aniso_bent_normal(frame_4, v_3, _e45, lobe_1.ibl_roughness);
-    vec3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    vec3 _e47 = weft_aniso_bent_normal(frame_4, v_4, _e45, lobe_1.ibl_roughness);
+    vec3 _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     vec3 _e54 = weft_sh_irradiance(n_diff);
     vec3 indirect = ((_e51 * vec3(env_brdf_1)) + ((_e54 * vec3(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), vec3(0.0), vec3(65504.0));
@@ -301,70 +326,66 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_2 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_2, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    vec3 _e59 = fibre;
-    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
-    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff_1 = ((_e66 != 0u) ? _e56 : _e40);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e56, _e72), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e38, _e72), 0.0, 1.0);
-    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_6 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_2 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    vec3 _e56 = fibre;
+    mat3x3 _e60 = weft_tangent_frame(_e53, vec4(_e56, in_1.world_tangent.w));
+    uint _e63 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff_1 = ((_e63 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_6);
+    vec3 _e68 = weft_aniso_to_frame(_e60, v_6);
+    vec3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    vec3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = _group_1_binding_0_fs.anisotropy;
     {
         {
-            float _e90 = _group_1_binding_0_fs.aniso_gloss;
-            float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = _group_1_binding_0_fs.aniso_mask;
-            float mask = clamp(_e94, 0.0, 1.0);
-            float _e98 = _group_1_binding_0_fs.aniso_spec;
-            float spec_scale = mix(max(_e98, 0.0), 1.0, mask);
-            vec2 a_hair = vec2(max(_e91, SILK_MIN_ALPHA), 1.0);
-            float _e107 = weft_clamp_roughness(roughness_5);
-            float _e108 = weft_clamp_roughness(roughness_5);
-            float a_iso = (_e107 * _e108);
+            float _e79 = _group_1_binding_0_fs.aniso_gloss;
+            float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = _group_1_binding_0_fs.aniso_mask;
+            float mask = clamp(_e83, 0.0, 1.0);
+            float _e87 = _group_1_binding_0_fs.aniso_spec;
+            float spec_scale = mix(max(_e87, 0.0), 1.0, mask);
+            vec2 a_hair = vec2(max(_e80, SILK_MIN_ALPHA), 1.0);
+            float _e96 = weft_clamp_roughness(roughness_5);
+            float _e97 = weft_clamp_roughness(roughness_5);
+            float a_iso = (_e96 * _e97);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e114, roughness_5, mask);
+            float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e103, roughness_5, mask);
             {
                 {
-                    float _e118 = _group_1_binding_0_fs.tangent_shift;
-                    mat3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                    vec3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                    vec3 tv = vec3(_e120);
-                    vec3 _e122 = weft_aniso_to_frame(_e119, _e70);
-                    vec3 tl = vec3(_e122);
-                    vec3 _e124 = weft_aniso_to_frame(_e119, _e72);
-                    vec3 th = vec3(_e124);
-                    float _e126 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+                    float _e107 = _group_1_binding_0_fs.tangent_shift;
+                    mat3x3 _e108 = silk_tilt_frame(_e60, _e107);
+                    vec3 _e109 = weft_aniso_to_frame(_e108, v_6);
+                    vec3 tv = vec3(_e109);
+                    vec3 _e112 = weft_aniso_to_frame(_e108, _e67.l);
+                    vec3 tl = vec3(_e112);
+                    vec3 _e115 = weft_aniso_to_frame(_e108, _e67.h);
+                    vec3 th = vec3(_e115);
+                    float _e117 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
                     float r_low = max(roughness_5, WEFT_MIN_ROUGHNESS_HALF);
-                    float _e134 = weft_half_spec_ggx_aniso(vec3(_e81), vec3(_e82), vec3(_e83), vec2((r_low * r_low)));
-                    lobe.value = (float(mix(_e126, _e134, float(mask))) * spec_scale);
+                    float _e125 = weft_half_spec_ggx_aniso(vec3(_e68), vec3(_e70), vec3(_e72), vec2((r_low * r_low)));
+                    lobe.value = (float(mix(_e117, _e125, float(mask))) * spec_scale);
                 }
             }
         }
     }
-    vec3 _e140 = weft_main_light_radiance();
-    float n_dot_l_diffuse_1 = clamp(dot(n_diff_1, _e70), 0.0, 1.0);
+    vec3 _e131 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = clamp(dot(n_diff_1, _e67.l), 0.0, 1.0);
     {
-        SilkLobe _e143 = lobe;
-        vec3 _e144 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e143, _e140);
-        _fs2p_location0 = vec4(_e144, alpha_out);
+        SilkLobe _e137 = lobe;
+        vec3 _e138 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e137, _e131);
+        _fs2p_location0 = vec4(_e138, alpha_out);
         return;
     }
 }

@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -89,16 +107,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> aniso_normal_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -209,23 +227,58 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_4.xy * strength), max(v_4.z, 0.001));
+    float3 v_5 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -244,15 +297,15 @@ float3 weft_aniso_to_frame(float3x3 frame_1, float3 x)
     return float3(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy, float roughness_4)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_4)
 {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float3 n_3 = frame_2[2];
+    float3 n_4 = frame_2[2];
     float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_t = cross(dir_1, v_2);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * saturate((5.0 * saturate(roughness_4))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -296,7 +349,7 @@ float3 weft_half_f_schlick(float3 f0_, float v_dot_h)
     return (f0_ + (((1.0).xxx - f0_) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(float3 v_2, float3 l, float3 h, float2 alpha_1)
+float weft_half_spec_ggx_aniso(float3 v_3, float3 l, float3 h, float2 alpha_1)
 {
     float2 a_1 = max(alpha_1, (0.007921).xx);
     float2 inv_a = float2(((1.0).xx / a_1));
@@ -305,9 +358,9 @@ float weft_half_spec_ggx_aniso(float3 v_2, float3 l, float3 h, float2 alpha_1)
     float y = (h.y * inv_a.y);
     float q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01);
     float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
-    float nv = max(v_2.z, 0.001);
+    float nv = max(v_3.z, 0.001);
     float nl = saturate(l.z);
-    float lv = (nl * length(float3((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    float lv = (nl * length(float3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     float ll = (nv * length(float3((ah.x * l.x), (ah.y * l.y), nl)));
     float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
     const float _e65 = weft_half_min_max((d * v_n_dot_l));
@@ -319,7 +372,7 @@ float silk_ibl_roughness(float2 alpha_2)
     return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))));
 }
 
-float3 silk_low(float3x3 frame_4, float3 n_spec, float3 n_diff, float3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, float3 f0_in, float3 diffuse_albedo, SilkLobe lobe_1, float3 light)
+float3 silk_low(float3x3 frame_4, float3 n_spec, float3 n_diff, float3 v_4, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, float3 f0_in, float3 diffuse_albedo, SilkLobe lobe_1, float3 light)
 {
     float3 f0_1 = float3(f0_in);
     const float3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
@@ -330,8 +383,8 @@ float3 silk_low(float3x3 frame_4, float3 n_spec, float3 n_diff, float3 v_3, floa
     float3 env_brdf_1 = ((f0_1 * float(lut.x)) + (float(lut.y)).xxx);
     float3 ambient_kd_1 = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
     const float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    const float3 _e47 = weft_aniso_bent_normal(frame_4, v_3, _e45, lobe_1.ibl_roughness);
-    const float3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    const float3 _e47 = weft_aniso_bent_normal(frame_4, v_4, _e45, lobe_1.ibl_roughness);
+    const float3 _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     const float3 _e54 = weft_sh_irradiance(n_diff);
     float3 indirect = ((_e51 * float3(env_brdf_1)) + ((_e54 * float3(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
@@ -364,7 +417,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -387,69 +440,65 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    float3 _e59 = fibre;
-    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    float3 n_diff_1 = ((_e66 != 0u) ? _e56 : _e40);
-    const float3 _e70 = weft_main_light_direction();
-    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = saturate(dot(_e56, _e70));
-    float n_dot_h = saturate(dot(_e56, _e72));
-    float v_dot_h_2 = saturate(dot(_e38, _e72));
-    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_6 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    float3 _e56 = fibre;
+    const float3x3 _e60 = weft_tangent_frame(_e53, float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    float3 n_diff_1 = ((_e63 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_6);
+    const float3 _e68 = weft_aniso_to_frame(_e60, v_6);
+    const float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    const float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e90 = material.aniso_gloss;
-            const float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = material.aniso_mask;
-            float mask = saturate(_e94);
-            float _e98 = material.aniso_spec;
-            float spec_scale = lerp(max(_e98, 0.0), 1.0, mask);
-            float2 a_hair = float2(max(_e91, SILK_MIN_ALPHA), 1.0);
-            const float _e107 = weft_clamp_roughness(roughness_5);
-            const float _e108 = weft_clamp_roughness(roughness_5);
-            float a_iso = (_e107 * _e108);
+            float _e79 = material.aniso_gloss;
+            const float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = material.aniso_mask;
+            float mask = saturate(_e83);
+            float _e87 = material.aniso_spec;
+            float spec_scale = lerp(max(_e87, 0.0), 1.0, mask);
+            float2 a_hair = float2(max(_e80, SILK_MIN_ALPHA), 1.0);
+            const float _e96 = weft_clamp_roughness(roughness_5);
+            const float _e97 = weft_clamp_roughness(roughness_5);
+            float a_iso = (_e96 * _e97);
             lobe.alpha = lerp(a_hair, (a_iso).xx, mask);
-            const float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = lerp(_e114, roughness_5, mask);
+            const float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = lerp(_e103, roughness_5, mask);
             {
                 {
-                    float _e118 = material.tangent_shift;
-                    const float3x3 _e119 = silk_tilt_frame(_e63, _e118);
-                    const float3 _e120 = weft_aniso_to_frame(_e119, _e38);
-                    float3 tv = float3(_e120);
-                    const float3 _e122 = weft_aniso_to_frame(_e119, _e70);
-                    float3 tl = float3(_e122);
-                    const float3 _e124 = weft_aniso_to_frame(_e119, _e72);
-                    float3 th = float3(_e124);
-                    const float _e126 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+                    float _e107 = material.tangent_shift;
+                    const float3x3 _e108 = silk_tilt_frame(_e60, _e107);
+                    const float3 _e109 = weft_aniso_to_frame(_e108, v_6);
+                    float3 tv = float3(_e109);
+                    const float3 _e112 = weft_aniso_to_frame(_e108, _e67.l);
+                    float3 tl = float3(_e112);
+                    const float3 _e115 = weft_aniso_to_frame(_e108, _e67.h);
+                    float3 th = float3(_e115);
+                    const float _e117 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
                     float r_low = max(roughness_5, WEFT_MIN_ROUGHNESS_HALF);
-                    const float _e134 = weft_half_spec_ggx_aniso(float3(_e81), float3(_e82), float3(_e83), ((r_low * r_low)).xx);
-                    lobe.value = (float(lerp(_e126, _e134, float(mask))) * spec_scale);
+                    const float _e125 = weft_half_spec_ggx_aniso(float3(_e68), float3(_e70), float3(_e72), ((r_low * r_low)).xx);
+                    lobe.value = (float(lerp(_e117, _e125, float(mask))) * spec_scale);
                 }
             }
         }
     }
-    const float3 _e140 = weft_main_light_radiance();
-    float n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e70));
+    const float3 _e131 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e67.l));
     {
-        SilkLobe _e143 = lobe;
-        const float3 _e144 = silk_low(_e63, _e56, n_diff_1, _e38, _e74, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e143, _e140);
-        return float4(_e144, alpha_out);
+        SilkLobe _e137 = lobe;
+        const float3 _e138 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e137, _e131);
+        return float4(_e138, alpha_out);
     }
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -175,21 +189,34 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e16.xy;
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_4 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
+    let v_5 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_5.xy * strength), max(v_5.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -205,14 +232,14 @@ fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_1: vec3<f32>, anisotropy: f32, roughness_4: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_4: f32) -> vec3<f32> {
     let k = clamp(anisotropy, -1f, 1f);
-    let n_3 = frame_2[2];
+    let n_4 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
-    let aniso_t = cross(dir_1, v_1);
+    let aniso_t = cross(dir_1, v_2);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k) * saturate((5f * saturate(roughness_4))));
-    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -250,7 +277,7 @@ fn weft_half_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
     return (f0_ + ((vec3(1f) - f0_) * _e7));
 }
 
-fn weft_half_spec_ggx_aniso(v_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha_1: vec2<f32>) -> f32 {
+fn weft_half_spec_ggx_aniso(v_3: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha_1: vec2<f32>) -> f32 {
     let a_1 = max(alpha_1, vec2(0.007921f));
     let inv_a = vec2<f32>((vec2(1f) / a_1));
     let ah = vec2<f32>(a_1);
@@ -258,9 +285,9 @@ fn weft_half_spec_ggx_aniso(v_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, alpha_1:
     let y = (h.y * inv_a.y);
     let q = max((((x_3 * x_3) + (y * y)) + (h.z * h.z)), 0.01f);
     let d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987f);
-    let nv = max(v_2.z, 0.001f);
+    let nv = max(v_3.z, 0.001f);
     let nl = saturate(l.z);
-    let lv = (nl * length(vec3<f32>((ah.x * v_2.x), (ah.y * v_2.y), nv)));
+    let lv = (nl * length(vec3<f32>((ah.x * v_3.x), (ah.y * v_3.y), nv)));
     let ll = (nv * length(vec3<f32>((ah.x * l.x), (ah.y * l.y), nl)));
     let v_n_dot_l = ((0.5f * nl) / max((lv + ll), 0.0001f));
     let _e65 = weft_half_min_max((d * v_n_dot_l));
@@ -271,7 +298,7 @@ fn silk_ibl_roughness(alpha_2: vec2<f32>) -> f32 {
     return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0f))));
 }
 
-fn silk_low(frame_4: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_3: vec3<f32>, n_dot_v_1: f32, v_dot_h_1: f32, n_dot_l_diffuse: f32, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, lobe_1: SilkLobe, light: vec3<f32>) -> vec3<f32> {
+fn silk_low(frame_4: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_4: vec3<f32>, n_dot_v_1: f32, v_dot_h_1: f32, n_dot_l_diffuse: f32, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, lobe_1: SilkLobe, light: vec3<f32>) -> vec3<f32> {
     let f0_1 = vec3<f32>(f0_in);
     let _e13 = weft_half_f_schlick(f0_1, f32(v_dot_h_1));
     let kd = ((vec3(1f) - _e13) * (f32(n_dot_l_diffuse) * 0.31830987f));
@@ -281,8 +308,8 @@ fn silk_low(frame_4: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_3: vec
     let env_brdf_1 = ((f0_1 * f32(lut.x)) + vec3(f32(lut.y)));
     let ambient_kd_1 = max((vec3(1f) - env_brdf_1), vec3(0f));
     let _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    let _e47 = weft_aniso_bent_normal(frame_4, v_3, _e45, lobe_1.ibl_roughness);
-    let _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    let _e47 = weft_aniso_bent_normal(frame_4, v_4, _e45, lobe_1.ibl_roughness);
+    let _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     let _e54 = weft_sh_irradiance(n_diff);
     let indirect = ((_e51 * vec3<f32>(env_brdf_1)) + ((_e54 * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), vec3(0f), vec3(65504f));
@@ -335,77 +362,73 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_2 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_2, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_6 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_2 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        let _e61 = textureSample(flow_map, material_sampler, _e5);
-        let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_2, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        let _e58 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e58.xy * 2f) - vec2(1f));
+        let dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        let _e75 = material.flow_strength;
+        let _e79 = weft_safe_normalize(mix(_e39[0], dir_2, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    let _e83 = fibre;
-    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
-    let _e90 = material.diffuse_uses_aniso_normal;
-    let n_diff_1 = select(_e40, _e56, (_e90 != 0u));
-    let _e94 = weft_main_light_direction();
-    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l = saturate(dot(_e56, _e94));
-    let n_dot_h = saturate(dot(_e56, _e96));
-    let v_dot_h_2 = saturate(dot(_e38, _e96));
-    let _e105 = weft_aniso_to_frame(_e87, _e38);
-    let _e106 = weft_aniso_to_frame(_e87, _e94);
-    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let _e80 = fibre;
+    let _e84 = weft_tangent_frame(_e53, vec4<f32>(_e80, in_1.world_tangent.w));
+    let _e87 = material.diffuse_uses_aniso_normal;
+    let n_diff_1 = select(n_geo, _e53, (_e87 != 0u));
+    let _e91 = weft_main_light_geometry(_e53, v_6);
+    let _e92 = weft_aniso_to_frame(_e84, v_6);
+    let _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    let _e96 = weft_aniso_to_frame(_e84, _e91.h);
     let k_1 = material.anisotropy;
     {
         {
-            let _e114 = material.aniso_gloss;
-            let _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            let _e118 = material.aniso_mask;
-            let mask = saturate(_e118);
-            let _e122 = material.aniso_spec;
-            let spec_scale = mix(max(_e122, 0f), 1f, mask);
-            let a_hair = vec2<f32>(max(_e115, SILK_MIN_ALPHA), 1f);
-            let _e131 = weft_clamp_roughness(roughness_5);
-            let _e132 = weft_clamp_roughness(roughness_5);
-            let a_iso = (_e131 * _e132);
+            let _e103 = material.aniso_gloss;
+            let _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            let _e107 = material.aniso_mask;
+            let mask = saturate(_e107);
+            let _e111 = material.aniso_spec;
+            let spec_scale = mix(max(_e111, 0f), 1f, mask);
+            let a_hair = vec2<f32>(max(_e104, SILK_MIN_ALPHA), 1f);
+            let _e120 = weft_clamp_roughness(roughness_5);
+            let _e121 = weft_clamp_roughness(roughness_5);
+            let a_iso = (_e120 * _e121);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            let _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e138, roughness_5, mask);
+            let _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e127, roughness_5, mask);
             {
                 {
-                    let _e142 = material.tangent_shift;
-                    let _e143 = silk_tilt_frame(_e87, _e142);
-                    let _e144 = weft_aniso_to_frame(_e143, _e38);
-                    let tv = vec3<f32>(_e144);
-                    let _e146 = weft_aniso_to_frame(_e143, _e94);
-                    let tl = vec3<f32>(_e146);
-                    let _e148 = weft_aniso_to_frame(_e143, _e96);
-                    let th = vec3<f32>(_e148);
-                    let _e150 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
+                    let _e131 = material.tangent_shift;
+                    let _e132 = silk_tilt_frame(_e84, _e131);
+                    let _e133 = weft_aniso_to_frame(_e132, v_6);
+                    let tv = vec3<f32>(_e133);
+                    let _e136 = weft_aniso_to_frame(_e132, _e91.l);
+                    let tl = vec3<f32>(_e136);
+                    let _e139 = weft_aniso_to_frame(_e132, _e91.h);
+                    let th = vec3<f32>(_e139);
+                    let _e141 = weft_half_spec_ggx_aniso(tv, tl, th, a_hair);
                     let r_low = max(roughness_5, WEFT_MIN_ROUGHNESS_HALF);
-                    let _e158 = weft_half_spec_ggx_aniso(vec3<f32>(_e105), vec3<f32>(_e106), vec3<f32>(_e107), vec2((r_low * r_low)));
-                    lobe.value = (f32(mix(_e150, _e158, f32(mask))) * spec_scale);
+                    let _e149 = weft_half_spec_ggx_aniso(vec3<f32>(_e92), vec3<f32>(_e94), vec3<f32>(_e96), vec2((r_low * r_low)));
+                    lobe.value = (f32(mix(_e141, _e149, f32(mask))) * spec_scale);
                 }
             }
         }
     }
-    let _e164 = weft_main_light_radiance();
-    let n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e94));
+    let _e155 = weft_main_light_radiance();
+    let n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e91.l));
     {
-        let _e167 = lobe;
-        let _e168 = silk_low(_e87, _e56, n_diff_1, _e38, _e98, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e167, _e164);
-        return vec4<f32>(_e168, alpha_out);
+        let _e161 = lobe;
+        let _e162 = silk_low(_e84, _e53, n_diff_1, v_6, _e91.n_dot_v, _e91.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e161, _e155);
+        return vec4<f32>(_e162, alpha_out);
     }
 }

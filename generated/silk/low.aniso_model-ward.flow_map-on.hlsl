@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +108,16 @@ Texture2D<float4> aniso_normal_map : register(t4, space1);
 Texture2D<float4> flow_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -205,23 +223,58 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_4.xy * strength), max(v_4.z, 0.001));
+    float3 v_5 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_5.xy * strength), max(v_5.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -240,15 +293,15 @@ float3 weft_aniso_to_frame(float3x3 frame_1, float3 x)
     return float3(dot(frame_1[0], x), dot(frame_1[1], x), dot(frame_1[2], x));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy, float roughness_3)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_3)
 {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float3 n_3 = frame_2[2];
+    float3 n_4 = frame_2[2];
     float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_t = cross(dir_1, v_2);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * saturate((5.0 * saturate(roughness_3))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -265,19 +318,19 @@ float2 silk_ward_alpha_seed(float smoothness, float anisotropy_2)
     return (float2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_bounded(float3 v_2, float3 l, float2 alpha)
+float silk_ward_bounded(float3 v_3, float3 l, float2 alpha)
 {
     bool local = (bool)0;
 
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    float3 hv = (v_2 + l);
+    float3 hv = (v_3 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / ax);
     float y = (hv.y / ay);
     float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_2.z > 0.0)) {
+    if ((v_3.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;
@@ -310,7 +363,7 @@ float silk_ibl_roughness(float2 alpha_2)
     return saturate(sqrt(sqrt(max((alpha_2.x * alpha_2.y), 0.0))));
 }
 
-float3 silk_low(float3x3 frame_3, float3 n_spec, float3 n_diff, float3 v_3, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, float3 f0_in, float3 diffuse_albedo, SilkLobe lobe_1, float3 light)
+float3 silk_low(float3x3 frame_3, float3 n_spec, float3 n_diff, float3 v_4, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, float3 f0_in, float3 diffuse_albedo, SilkLobe lobe_1, float3 light)
 {
     float3 f0_1 = float3(f0_in);
     const float3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
@@ -321,8 +374,8 @@ float3 silk_low(float3x3 frame_3, float3 n_spec, float3 n_diff, float3 v_3, floa
     float3 env_brdf_1 = ((f0_1 * float(lut.x)) + (float(lut.y)).xxx);
     float3 ambient_kd_1 = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
     const float _e45 = silk_lobe_anisotropy(lobe_1.alpha);
-    const float3 _e47 = weft_aniso_bent_normal(frame_3, v_3, _e45, lobe_1.ibl_roughness);
-    const float3 _e51 = weft_prefiltered_radiance(reflect(-(v_3), _e47), lobe_1.ibl_roughness);
+    const float3 _e47 = weft_aniso_bent_normal(frame_3, v_4, _e45, lobe_1.ibl_roughness);
+    const float3 _e51 = weft_prefiltered_radiance(reflect(-(v_4), _e47), lobe_1.ibl_roughness);
     const float3 _e54 = weft_sh_irradiance(n_diff);
     float3 indirect = ((_e51 * float3(env_brdf_1)) + ((_e54 * float3(ambient_kd_1)) * diffuse_albedo));
     return clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
@@ -355,7 +408,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -378,54 +431,50 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_2 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_2, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_6 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_2 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        float4 _e61 = flow_map.Sample(material_sampler, _e5);
-        float2 flow = ((_e61.xy * 2.0) - (1.0).xx);
-        float3 dir_2 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = material.flow_strength;
-        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_2, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        float4 _e58 = flow_map.Sample(material_sampler, _e5);
+        float2 flow = ((_e58.xy * 2.0) - (1.0).xx);
+        float3 dir_2 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = material.flow_strength;
+        const float3 _e79 = weft_safe_normalize(lerp(_e39[0], dir_2, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    float3 _e83 = fibre;
-    const float3x3 _e87 = weft_tangent_frame(_e56, float4(_e83, in_1.world_tangent.w));
-    uint _e90 = material.diffuse_uses_aniso_normal;
-    float3 n_diff_1 = ((_e90 != 0u) ? _e56 : _e40);
-    const float3 _e94 = weft_main_light_direction();
-    const float3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    const float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = saturate(dot(_e56, _e94));
-    float n_dot_h = saturate(dot(_e56, _e96));
-    float v_dot_h_2 = saturate(dot(_e38, _e96));
-    const float3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    const float3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    const float3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    float3 _e80 = fibre;
+    const float3x3 _e84 = weft_tangent_frame(_e53, float4(_e80, in_1.world_tangent.w));
+    uint _e87 = material.diffuse_uses_aniso_normal;
+    float3 n_diff_1 = ((_e87 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_6);
+    const float3 _e92 = weft_aniso_to_frame(_e84, v_6);
+    const float3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    const float3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k_1 = material.anisotropy;
     {
-        const float2 _e112 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e112;
-        const float _e115 = silk_ibl_roughness(_e112);
-        lobe.ibl_roughness = _e115;
+        const float2 _e101 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e101;
+        const float _e104 = silk_ibl_roughness(_e101);
+        lobe.ibl_roughness = _e104;
         {
-            const float _e117 = silk_ward_bounded(_e105, _e106, _e112);
-            lobe.value = (_e117 * n_dot_l);
+            const float _e106 = silk_ward_bounded(_e92, _e94, _e101);
+            lobe.value = (_e106 * _e91.n_dot_l);
         }
     }
-    const float3 _e119 = weft_main_light_radiance();
-    float n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e94));
+    const float3 _e109 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = saturate(dot(n_diff_1, _e91.l));
     {
-        SilkLobe _e122 = lobe;
-        const float3 _e123 = silk_low(_e87, _e56, n_diff_1, _e38, _e98, v_dot_h_2, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e122, _e119);
-        return float4(_e123, alpha_out);
+        SilkLobe _e115 = lobe;
+        const float3 _e116 = silk_low(_e84, _e53, n_diff_1, v_6, _e91.n_dot_v, _e91.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e115, _e109);
+        return float4(_e116, alpha_out);
     }
 }

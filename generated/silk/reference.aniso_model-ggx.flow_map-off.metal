@@ -37,6 +37,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -221,27 +234,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    return metal::float3x3(t, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
+    metal::float3 v_4 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_4.xy * strength, metal::max(v_4.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -309,31 +343,31 @@ float weft_d_ggx_aniso(
 }
 
 float weft_v_smith_ggx_aniso_correlated(
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l,
     float alpha_t_2,
     float alpha_b_2
 ) {
-    float _e5 = weft_clamp_cos(v_1.z);
+    float _e5 = weft_clamp_cos(v_2.z);
     float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_1.x, alpha_b_2 * v_1.y, _e5));
+    float lv = _e7 * metal::length(metal::float3(alpha_t_2 * v_2.x, alpha_b_2 * v_2.y, _e5));
     float ll = _e5 * metal::length(metal::float3(alpha_t_2 * l.x, alpha_b_2 * l.y, _e7));
     return 0.5 / (lv + ll);
 }
 
 metal::float3 weft_aniso_bent_normal(
     metal::float3x3 frame_2,
-    metal::float3 v_2,
+    metal::float3 v_3,
     float anisotropy_1,
     float roughness_5
 ) {
     float k_1 = metal::clamp(anisotropy_1, -1.0, 1.0);
-    metal::float3 n_3 = frame_2[2];
+    metal::float3 n_4 = frame_2[2];
     metal::float3 dir_1 = (k_1 >= 0.0) ? frame_2[1] : frame_2[0];
-    metal::float3 aniso_t = metal::cross(dir_1, v_2);
+    metal::float3 aniso_t = metal::cross(dir_1, v_3);
     metal::float3 aniso_n = metal::cross(aniso_t, dir_1);
     float bend = metal::abs(k_1) * metal::saturate(5.0 * metal::saturate(roughness_5));
-    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_3, aniso_n, bend), n_3);
+    metal::float3 _e22 = weft_safe_normalize(metal::mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -387,8 +421,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -408,7 +442,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -430,79 +464,75 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    metal::float3 _e59 = fibre;
-    metal::float3x3 _e63 = weft_tangent_frame(_e56, metal::float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff = (_e66 != 0u) ? _e56 : _e40;
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
-    float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l = metal::saturate(metal::dot(_e56, _e70));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e72));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
-    metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_5 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    metal::float3 _e56 = fibre;
+    metal::float3x3 _e60 = weft_tangent_frame(_e53, metal::float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e63 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5, weft_frame);
+    metal::float3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    metal::float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    metal::float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_2 = material.anisotropy;
     {
         {
-            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            metal::float2 _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
                 {
-                    float _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                    vis = _e94;
+                    float _e83 = weft_v_smith_ggx_aniso_correlated(_e68, _e70, _e77.x, _e77.y);
+                    vis = _e83;
                 }
-                float _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                float _e102 = vis;
-                lobe.value = (_e101 * _e102) * n_dot_l;
+                float _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                float _e91 = vis;
+                lobe.value = (_e90 * _e91) * _e67.n_dot_l;
             }
         }
     }
-    metal::float3 _e105 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
-    metal::float3 _e108 = weft_f_schlick(f0_2, v_dot_h_1);
-    metal::float3 _e112 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e108) * _e112) * n_dot_l_diffuse;
-    float _e116 = lobe.value;
-    metal::float3 direct = (diffuse + (_e108 * _e116)) * _e105;
-    reflect_n = _e56;
+    metal::float3 _e95 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e67.l));
+    metal::float3 _e100 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    metal::float3 _e104 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e100) * _e104) * n_dot_l_diffuse;
+    float _e108 = lobe.value;
+    metal::float3 direct = (diffuse + (_e100 * _e108)) * _e95;
+    reflect_n = _e53;
     {
         {
-            float _e125 = lobe.ibl_roughness;
-            metal::float2 _e126 = weft_env_brdf_lut(_e74, _e125, weft_brdf_lut, weft_lut_sampler);
-            scale_bias = _e126;
+            float _e118 = lobe.ibl_roughness;
+            metal::float2 _e119 = weft_env_brdf_lut(_e67.n_dot_v, _e118, weft_brdf_lut, weft_lut_sampler);
+            scale_bias = _e119;
         }
-        metal::float2 _e127 = scale_bias;
-        metal::float3 _e128 = weft_env_brdf_from_lut(f0_2, _e127);
-        env_brdf = _e128;
-        metal::float3 _e131 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e131, metal::float3(0.0));
-        metal::float2 _e137 = lobe.alpha;
-        float _e138 = silk_lobe_anisotropy(_e137);
-        float _e140 = lobe.ibl_roughness;
-        metal::float3 _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
-        reflect_n = _e141;
+        metal::float2 _e120 = scale_bias;
+        metal::float3 _e121 = weft_env_brdf_from_lut(f0_2, _e120);
+        env_brdf = _e121;
+        metal::float3 _e124 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e124, metal::float3(0.0));
+        metal::float2 _e130 = lobe.alpha;
+        float _e131 = silk_lobe_anisotropy(_e130);
+        float _e133 = lobe.ibl_roughness;
+        metal::float3 _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
+        reflect_n = _e134;
     }
-    metal::float3 _e143 = reflect_n;
-    float _e146 = lobe.ibl_roughness;
-    metal::float3 _e147 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e143), _e146, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e148 = env_brdf;
-    metal::float3 _e150 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e151 = ambient_kd;
-    metal::float3 indirect = (_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo);
+    metal::float3 _e136 = reflect_n;
+    float _e139 = lobe.ibl_roughness;
+    metal::float3 _e140 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e136), _e139, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e141 = env_brdf;
+    metal::float3 _e143 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e144 = ambient_kd;
+    metal::float3 indirect = (_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

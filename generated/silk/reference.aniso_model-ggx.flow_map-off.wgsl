@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -191,21 +205,34 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -248,22 +275,22 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv + ll));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_3: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
     let k_1 = clamp(anisotropy_1, -1f, 1f);
-    let n_3 = frame_2[2];
+    let n_4 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k_1 >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k_1) * saturate((5f * saturate(roughness_5))));
-    let _e22 = weft_safe_normalize(mix(n_3, aniso_n, bend), n_3);
+    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -320,79 +347,75 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l = saturate(dot(_e56, _e70));
-    let n_dot_h_2 = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_5);
+    let _e68 = weft_aniso_to_frame(_e60, v_5);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_2 = material.anisotropy;
     {
         {
-            let _e88 = weft_aniso_alpha_burley(roughness_6, k_2);
-            lobe.alpha = _e88;
+            let _e77 = weft_aniso_alpha_burley(roughness_6, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_6;
             {
                 {
-                    let _e94 = weft_v_smith_ggx_aniso_correlated(_e81, _e82, _e88.x, _e88.y);
-                    vis = _e94;
+                    let _e83 = weft_v_smith_ggx_aniso_correlated(_e68, _e70, _e77.x, _e77.y);
+                    vis = _e83;
                 }
-                let _e101 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                let _e102 = vis;
-                lobe.value = ((_e101 * _e102) * n_dot_l);
+                let _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                let _e91 = vis;
+                lobe.value = ((_e90 * _e91) * _e67.n_dot_l);
             }
         }
     }
-    let _e105 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e108 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e112 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e108) * _e112) * n_dot_l_diffuse);
-    let _e116 = lobe.value;
-    let direct = ((diffuse + (_e108 * _e116)) * _e105);
-    reflect_n = _e56;
+    let _e95 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e100 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    let _e104 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e100) * _e104) * n_dot_l_diffuse);
+    let _e108 = lobe.value;
+    let direct = ((diffuse + (_e100 * _e108)) * _e95);
+    reflect_n = _e53;
     {
         {
-            let _e125 = lobe.ibl_roughness;
-            let _e126 = weft_env_brdf_lut(_e74, _e125);
-            scale_bias = _e126;
+            let _e118 = lobe.ibl_roughness;
+            let _e119 = weft_env_brdf_lut(_e67.n_dot_v, _e118);
+            scale_bias = _e119;
         }
-        let _e127 = scale_bias;
-        let _e128 = weft_env_brdf_from_lut(f0_2, _e127);
-        env_brdf = _e128;
-        let _e131 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e131), vec3(0f));
-        let _e137 = lobe.alpha;
-        let _e138 = silk_lobe_anisotropy(_e137);
-        let _e140 = lobe.ibl_roughness;
-        let _e141 = weft_aniso_bent_normal(_e63, _e38, _e138, _e140);
-        reflect_n = _e141;
+        let _e120 = scale_bias;
+        let _e121 = weft_env_brdf_from_lut(f0_2, _e120);
+        env_brdf = _e121;
+        let _e124 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e124), vec3(0f));
+        let _e130 = lobe.alpha;
+        let _e131 = silk_lobe_anisotropy(_e130);
+        let _e133 = lobe.ibl_roughness;
+        let _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
+        reflect_n = _e134;
     }
-    let _e143 = reflect_n;
-    let _e146 = lobe.ibl_roughness;
-    let _e147 = weft_prefiltered_radiance(reflect(-(_e38), _e143), _e146);
-    let _e148 = env_brdf;
-    let _e150 = weft_sh_irradiance(n_diff);
-    let _e151 = ambient_kd;
-    let indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
+    let _e136 = reflect_n;
+    let _e139 = lobe.ibl_roughness;
+    let _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
+    let _e141 = env_brdf;
+    let _e143 = weft_sh_irradiance(n_diff);
+    let _e144 = ambient_kd;
+    let indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

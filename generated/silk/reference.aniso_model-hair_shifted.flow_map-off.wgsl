@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -212,21 +226,34 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_3 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
+    let v_4 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_4.xy * strength), max(v_4.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -258,22 +285,22 @@ fn weft_d_ggx_aniso(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32, alpha_t_1: f
     return select(0f, d_1, (n_dot_h_1 > 0f));
 }
 
-fn weft_v_smith_ggx_aniso_correlated(v_1: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
-    let _e5 = weft_clamp_cos(v_1.z);
+fn weft_v_smith_ggx_aniso_correlated(v_2: vec3<f32>, l: vec3<f32>, alpha_t_2: f32, alpha_b_2: f32) -> f32 {
+    let _e5 = weft_clamp_cos(v_2.z);
     let _e7 = weft_clamp_cos(l.z);
-    let lv_1 = (_e7 * length(vec3<f32>((alpha_t_2 * v_1.x), (alpha_b_2 * v_1.y), _e5)));
+    let lv_1 = (_e7 * length(vec3<f32>((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
     let ll_1 = (_e5 * length(vec3<f32>((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
     return (0.5f / (lv_1 + ll_1));
 }
 
-fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_2: vec3<f32>, anisotropy: f32, roughness_6: f32) -> vec3<f32> {
+fn weft_aniso_bent_normal(frame_2: mat3x3<f32>, v_3: vec3<f32>, anisotropy: f32, roughness_6: f32) -> vec3<f32> {
     let k = clamp(anisotropy, -1f, 1f);
-    let n_4 = frame_2[2];
+    let n_5 = frame_2[2];
     let dir_1 = select(frame_2[0], frame_2[1], (k >= 0f));
-    let aniso_t = cross(dir_1, v_2);
+    let aniso_t = cross(dir_1, v_3);
     let aniso_n = cross(aniso_t, dir_1);
     let bend = (abs(k) * saturate((5f * saturate(roughness_6))));
-    let _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
+    let _e22 = weft_safe_normalize(mix(n_5, aniso_n, bend), n_5);
     return _e22;
 }
 
@@ -348,96 +375,92 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e70));
-    let n_dot_h_2 = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_5 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_5);
+    let _e68 = weft_aniso_to_frame(_e60, v_5);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_1 = material.anisotropy;
     {
         {
-            let _e90 = material.aniso_gloss;
-            let _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            let _e94 = material.aniso_mask;
-            let mask = saturate(_e94);
-            let _e98 = material.aniso_spec;
-            let spec_scale = mix(max(_e98, 0f), 1f, mask);
-            let a_hair = vec2<f32>(max(_e91, SILK_MIN_ALPHA), 1f);
-            let _e107 = weft_clamp_roughness(roughness_7);
-            let _e108 = weft_clamp_roughness(roughness_7);
-            let a_iso = (_e107 * _e108);
+            let _e79 = material.aniso_gloss;
+            let _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            let _e83 = material.aniso_mask;
+            let mask = saturate(_e83);
+            let _e87 = material.aniso_spec;
+            let spec_scale = mix(max(_e87, 0f), 1f, mask);
+            let a_hair = vec2<f32>(max(_e80, SILK_MIN_ALPHA), 1f);
+            let _e96 = weft_clamp_roughness(roughness_7);
+            let _e97 = weft_clamp_roughness(roughness_7);
+            let a_iso = (_e96 * _e97);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            let _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e114, roughness_7, mask);
+            let _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e103, roughness_7, mask);
             {
                 {
-                    let _e118 = material.tangent_shift;
-                    let _e119 = silk_tilt_frame(_e63, _e118);
-                    let _e120 = weft_aniso_to_frame(_e119, _e38);
-                    let _e121 = weft_aniso_to_frame(_e119, _e70);
-                    let _e122 = weft_aniso_to_frame(_e119, _e72);
-                    let _e128 = weft_d_ggx_aniso(_e122.x, _e122.y, _e122.z, a_hair.x, a_hair.y);
-                    let _e131 = weft_v_smith_ggx_aniso_correlated(_e120, _e121, a_hair.x, a_hair.y);
-                    let aniso = ((_e128 * _e131) * saturate(_e121.z));
-                    let _e136 = weft_d_ggx_nh(_e56, _e72, roughness_7);
-                    let _e137 = weft_v_smith_ggx_correlated(_e74, n_dot_l_1, roughness_7);
-                    let iso = ((_e136 * _e137) * n_dot_l_1);
+                    let _e107 = material.tangent_shift;
+                    let _e108 = silk_tilt_frame(_e60, _e107);
+                    let _e109 = weft_aniso_to_frame(_e108, v_5);
+                    let _e111 = weft_aniso_to_frame(_e108, _e67.l);
+                    let _e113 = weft_aniso_to_frame(_e108, _e67.h);
+                    let _e119 = weft_d_ggx_aniso(_e113.x, _e113.y, _e113.z, a_hair.x, a_hair.y);
+                    let _e122 = weft_v_smith_ggx_aniso_correlated(_e109, _e111, a_hair.x, a_hair.y);
+                    let aniso = ((_e119 * _e122) * saturate(_e111.z));
+                    let _e128 = weft_d_ggx_nh(_e53, _e67.h, roughness_7);
+                    let _e131 = weft_v_smith_ggx_correlated(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                    let iso = ((_e128 * _e131) * _e67.n_dot_l);
                     lobe.value = (mix(aniso, iso, mask) * spec_scale);
                 }
             }
         }
     }
-    let _e143 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e146 = weft_f_schlick(f0_2, v_dot_h_1);
-    let _e150 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e146) * _e150) * n_dot_l_diffuse);
-    let _e154 = lobe.value;
-    let direct = ((diffuse + (_e146 * _e154)) * _e143);
-    reflect_n = _e56;
+    let _e138 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e143 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    let _e147 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e143) * _e147) * n_dot_l_diffuse);
+    let _e151 = lobe.value;
+    let direct = ((diffuse + (_e143 * _e151)) * _e138);
+    reflect_n = _e53;
     {
         {
-            let _e163 = lobe.ibl_roughness;
-            let _e164 = weft_env_brdf_lut(_e74, _e163);
-            scale_bias = _e164;
+            let _e161 = lobe.ibl_roughness;
+            let _e162 = weft_env_brdf_lut(_e67.n_dot_v, _e161);
+            scale_bias = _e162;
         }
-        let _e165 = scale_bias;
-        let _e166 = weft_env_brdf_from_lut(f0_2, _e165);
-        env_brdf = _e166;
-        let _e169 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e169), vec3(0f));
-        let _e175 = lobe.alpha;
-        let _e176 = silk_lobe_anisotropy(_e175);
-        let _e178 = lobe.ibl_roughness;
-        let _e179 = weft_aniso_bent_normal(_e63, _e38, _e176, _e178);
-        reflect_n = _e179;
+        let _e163 = scale_bias;
+        let _e164 = weft_env_brdf_from_lut(f0_2, _e163);
+        env_brdf = _e164;
+        let _e167 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e167), vec3(0f));
+        let _e173 = lobe.alpha;
+        let _e174 = silk_lobe_anisotropy(_e173);
+        let _e176 = lobe.ibl_roughness;
+        let _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
+        reflect_n = _e177;
     }
-    let _e181 = reflect_n;
-    let _e184 = lobe.ibl_roughness;
-    let _e185 = weft_prefiltered_radiance(reflect(-(_e38), _e181), _e184);
-    let _e186 = env_brdf;
-    let _e188 = weft_sh_irradiance(n_diff);
-    let _e189 = ambient_kd;
-    let indirect = ((_e185 * _e186) + ((_e188 * _e189) * diffuse_albedo));
+    let _e179 = reflect_n;
+    let _e182 = lobe.ibl_roughness;
+    let _e183 = weft_prefiltered_radiance(reflect(-(v_5), _e179), _e182);
+    let _e184 = env_brdf;
+    let _e186 = weft_sh_irradiance(n_diff);
+    let _e187 = ambient_kd;
+    let indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

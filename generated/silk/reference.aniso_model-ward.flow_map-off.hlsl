@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -90,16 +108,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> aniso_normal_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -215,23 +233,58 @@ float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_3.xy * strength), max(v_3.z, 0.001));
+    float3 v_4 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_4.xy * strength), max(v_4.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -250,15 +303,15 @@ float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_1)
     return float3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
 }
 
-float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_1, float anisotropy, float roughness_3)
+float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy, float roughness_3)
 {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float3 n_3 = frame_2[2];
+    float3 n_4 = frame_2[2];
     float3 dir_1 = ((k >= 0.0) ? frame_2[1] : frame_2[0]);
-    float3 aniso_t = cross(dir_1, v_1);
+    float3 aniso_t = cross(dir_1, v_2);
     float3 aniso_n = cross(aniso_t, dir_1);
     float bend = (abs(k) * saturate((5.0 * saturate(roughness_3))));
-    const float3 _e22 = weft_safe_normalize(lerp(n_3, aniso_n, bend), n_3);
+    const float3 _e22 = weft_safe_normalize(lerp(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
@@ -275,19 +328,19 @@ float2 silk_ward_alpha_seed(float smoothness, float anisotropy_2)
     return (float2(max(SILK_MIN_ALPHA, (a_1 / _e6)), max(SILK_MIN_ALPHA, (a_1 * _e6))) * 5.0);
 }
 
-float silk_ward_bounded(float3 v_2, float3 l, float2 alpha)
+float silk_ward_bounded(float3 v_3, float3 l, float2 alpha)
 {
     bool local = (bool)0;
 
     float ax = max(alpha.x, SILK_MIN_ALPHA);
     float ay = max(alpha.y, SILK_MIN_ALPHA);
-    float3 hv = (v_2 + l);
+    float3 hv = (v_3 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / ax);
     float y = (hv.y / ay);
     float f = ((dot(hv, hv) / ((((WEFT_PI * ax) * ay) * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_2.z > 0.0)) {
+    if ((v_3.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;
@@ -335,7 +388,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -358,73 +411,69 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    float3 _e59 = fibre;
-    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    const float3 _e70 = weft_main_light_direction();
-    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l = saturate(dot(_e56, _e70));
-    float n_dot_h = saturate(dot(_e56, _e72));
-    float v_dot_h_1 = saturate(dot(_e38, _e72));
-    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_5 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    float3 _e56 = fibre;
+    const float3x3 _e60 = weft_tangent_frame(_e53, float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_5);
+    const float3 _e68 = weft_aniso_to_frame(_e60, v_5);
+    const float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    const float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = material.anisotropy;
     {
-        const float2 _e88 = silk_ward_alpha_seed(smoothness_1, k_1);
-        lobe.alpha = _e88;
-        const float _e91 = silk_ibl_roughness(_e88);
-        lobe.ibl_roughness = _e91;
+        const float2 _e77 = silk_ward_alpha_seed(smoothness_1, k_1);
+        lobe.alpha = _e77;
+        const float _e80 = silk_ibl_roughness(_e77);
+        lobe.ibl_roughness = _e80;
         {
-            const float _e93 = silk_ward_bounded(_e81, _e82, _e88);
-            lobe.value = (_e93 * n_dot_l);
+            const float _e82 = silk_ward_bounded(_e68, _e70, _e77);
+            lobe.value = (_e82 * _e67.n_dot_l);
         }
     }
-    const float3 _e95 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    const float3 _e98 = weft_f_schlick(f0_2, v_dot_h_1);
-    const float3 _e102 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e98) * _e102) * n_dot_l_diffuse);
-    float _e106 = lobe.value;
-    float3 direct = ((diffuse + (_e98 * _e106)) * _e95);
-    reflect_n = _e56;
+    const float3 _e85 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    const float3 _e90 = weft_f_schlick(f0_2, _e67.v_dot_h);
+    const float3 _e94 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e90) * _e94) * n_dot_l_diffuse);
+    float _e98 = lobe.value;
+    float3 direct = ((diffuse + (_e90 * _e98)) * _e85);
+    reflect_n = _e53;
     {
         {
-            float _e115 = lobe.ibl_roughness;
-            const float2 _e116 = weft_env_brdf_lut(_e74, _e115);
-            scale_bias = _e116;
+            float _e108 = lobe.ibl_roughness;
+            const float2 _e109 = weft_env_brdf_lut(_e67.n_dot_v, _e108);
+            scale_bias = _e109;
         }
-        float2 _e117 = scale_bias;
-        const float3 _e118 = weft_env_brdf_from_lut(f0_2, _e117);
-        env_brdf = _e118;
-        float3 _e121 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e121), (0.0).xxx);
-        float2 _e127 = lobe.alpha;
-        const float _e128 = silk_lobe_anisotropy(_e127);
-        float _e130 = lobe.ibl_roughness;
-        const float3 _e131 = weft_aniso_bent_normal(_e63, _e38, _e128, _e130);
-        reflect_n = _e131;
+        float2 _e110 = scale_bias;
+        const float3 _e111 = weft_env_brdf_from_lut(f0_2, _e110);
+        env_brdf = _e111;
+        float3 _e114 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e114), (0.0).xxx);
+        float2 _e120 = lobe.alpha;
+        const float _e121 = silk_lobe_anisotropy(_e120);
+        float _e123 = lobe.ibl_roughness;
+        const float3 _e124 = weft_aniso_bent_normal(_e60, v_5, _e121, _e123);
+        reflect_n = _e124;
     }
-    float3 _e133 = reflect_n;
-    float _e136 = lobe.ibl_roughness;
-    const float3 _e137 = weft_prefiltered_radiance(reflect(-(_e38), _e133), _e136);
-    float3 _e138 = env_brdf;
-    const float3 _e140 = weft_sh_irradiance(n_diff);
-    float3 _e141 = ambient_kd;
-    float3 indirect = ((_e137 * _e138) + ((_e140 * _e141) * diffuse_albedo));
+    float3 _e126 = reflect_n;
+    float _e129 = lobe.ibl_roughness;
+    const float3 _e130 = weft_prefiltered_radiance(reflect(-(v_5), _e126), _e129);
+    float3 _e131 = env_brdf;
+    const float3 _e133 = weft_sh_irradiance(n_diff);
+    float3 _e134 = ambient_kd;
+    float3 indirect = ((_e130 * _e131) + ((_e133 * _e134) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

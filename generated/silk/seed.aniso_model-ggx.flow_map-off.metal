@@ -37,6 +37,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -251,27 +264,48 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_2,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t) * s_1;
-    return metal::float3x3(t, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
+    return metal::float3x3(t, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -380,8 +414,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -399,7 +433,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(2)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -421,70 +455,66 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    metal::float3 _e59 = fibre;
-    metal::float3x3 _e63 = weft_tangent_frame(_e56, metal::float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff = (_e66 != 0u) ? _e56 : _e40;
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
-    float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e70));
-    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e72));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
-    metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    metal::float3 _e56 = fibre;
+    metal::float3x3 _e60 = weft_tangent_frame(_e53, metal::float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e63 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_4, weft_frame);
+    metal::float3 _e68 = weft_aniso_to_frame(_e60, v_4);
+    metal::float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    metal::float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_2 = material.anisotropy;
     {
         {
-            metal::float2 _e88 = weft_aniso_alpha_burley(roughness_7, k_2);
-            lobe.alpha = _e88;
+            metal::float2 _e77 = weft_aniso_alpha_burley(roughness_7, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_7;
             {
                 {
-                    float _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                    vis = _e92;
+                    float _e83 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                    vis = _e83;
                 }
-                float _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                float _e100 = vis;
-                lobe.value = (_e99 * _e100) * n_dot_l_1;
+                float _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                float _e91 = vis;
+                lobe.value = (_e90 * _e91) * _e67.n_dot_l;
             }
         }
     }
-    metal::float3 _e103 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
-    metal::float3 _e106 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e110 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e106) * _e110) * n_dot_l_diffuse;
-    float _e114 = lobe.value;
-    metal::float3 direct = (diffuse + (_e106 * _e114)) * _e103;
-    reflect_n = _e56;
+    metal::float3 _e95 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e67.l));
+    metal::float3 _e100 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    metal::float3 _e104 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e100) * _e104) * n_dot_l_diffuse;
+    float _e108 = lobe.value;
+    metal::float3 direct = (diffuse + (_e100 * _e108)) * _e95;
+    reflect_n = _e53;
     {
-        float _e122 = lobe.ibl_roughness;
-        metal::float3 _e123 = weft_env_brdf_approx(f0_3, _e74, _e122);
-        env_brdf = _e123;
-        float _e127 = lobe.ibl_roughness;
-        metal::float3 _e128 = weft_f_schlick_roughness(f0_3, _e74, _e127);
-        ambient_kd = metal::float3(1.0) - _e128;
+        float _e117 = lobe.ibl_roughness;
+        metal::float3 _e118 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e117);
+        env_brdf = _e118;
+        float _e123 = lobe.ibl_roughness;
+        metal::float3 _e124 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e123);
+        ambient_kd = metal::float3(1.0) - _e124;
     }
-    metal::float3 _e131 = reflect_n;
-    float _e134 = lobe.ibl_roughness;
-    metal::float3 _e135 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e131), _e134, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e136 = env_brdf;
-    metal::float3 _e138 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e139 = ambient_kd;
-    metal::float3 indirect = (_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo);
+    metal::float3 _e127 = reflect_n;
+    float _e130 = lobe.ibl_roughness;
+    metal::float3 _e131 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e127), _e130, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e132 = env_brdf;
+    metal::float3 _e134 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e135 = ambient_kd;
+    metal::float3 indirect = (_e131 * _e132) + ((_e134 * _e135) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -209,21 +223,34 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -313,70 +340,66 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e70));
-    let n_dot_h_2 = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_4);
+    let _e68 = weft_aniso_to_frame(_e60, v_4);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_2 = material.anisotropy;
     {
         {
-            let _e88 = weft_aniso_alpha_burley(roughness_7, k_2);
-            lobe.alpha = _e88;
+            let _e77 = weft_aniso_alpha_burley(roughness_7, k_2);
+            lobe.alpha = _e77;
             lobe.ibl_roughness = roughness_7;
             {
                 {
-                    let _e92 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                    vis = _e92;
+                    let _e83 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                    vis = _e83;
                 }
-                let _e99 = weft_d_ggx_aniso(_e83.x, _e83.y, _e83.z, _e88.x, _e88.y);
-                let _e100 = vis;
-                lobe.value = ((_e99 * _e100) * n_dot_l_1);
+                let _e90 = weft_d_ggx_aniso(_e72.x, _e72.y, _e72.z, _e77.x, _e77.y);
+                let _e91 = vis;
+                lobe.value = ((_e90 * _e91) * _e67.n_dot_l);
             }
         }
     }
-    let _e103 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e106 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e110 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e106) * _e110) * n_dot_l_diffuse);
-    let _e114 = lobe.value;
-    let direct = ((diffuse + (_e106 * _e114)) * _e103);
-    reflect_n = _e56;
+    let _e95 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e100 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    let _e104 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e100) * _e104) * n_dot_l_diffuse);
+    let _e108 = lobe.value;
+    let direct = ((diffuse + (_e100 * _e108)) * _e95);
+    reflect_n = _e53;
     {
-        let _e122 = lobe.ibl_roughness;
-        let _e123 = weft_env_brdf_approx(f0_3, _e74, _e122);
-        env_brdf = _e123;
-        let _e127 = lobe.ibl_roughness;
-        let _e128 = weft_f_schlick_roughness(f0_3, _e74, _e127);
-        ambient_kd = (vec3(1f) - _e128);
+        let _e117 = lobe.ibl_roughness;
+        let _e118 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e117);
+        env_brdf = _e118;
+        let _e123 = lobe.ibl_roughness;
+        let _e124 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e123);
+        ambient_kd = (vec3(1f) - _e124);
     }
-    let _e131 = reflect_n;
-    let _e134 = lobe.ibl_roughness;
-    let _e135 = weft_prefiltered_radiance(reflect(-(_e38), _e131), _e134);
-    let _e136 = env_brdf;
-    let _e138 = weft_sh_irradiance(n_diff);
-    let _e139 = ambient_kd;
-    let indirect = ((_e135 * _e136) + ((_e138 * _e139) * diffuse_albedo));
+    let _e127 = reflect_n;
+    let _e130 = lobe.ibl_roughness;
+    let _e131 = weft_prefiltered_radiance(reflect(-(v_4), _e127), _e130);
+    let _e132 = env_brdf;
+    let _e134 = weft_sh_irradiance(n_diff);
+    let _e135 = ambient_kd;
+    let indirect = ((_e131 * _e132) + ((_e134 * _e135) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -212,21 +224,34 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3(t_1, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t_1) * s_1);
+    return mat3x3(t_1, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -242,8 +267,8 @@ vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_2) {
     return vec3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
 }
 
-vec3 silk_jitter_tangent(vec3 t, vec3 n_3, float shift) {
-    vec3 _e5 = weft_safe_normalize((t + (shift * n_3)), t);
+vec3 silk_jitter_tangent(vec3 t, vec3 n_4, float shift) {
+    vec3 _e5 = weft_safe_normalize((t + (shift * n_4)), t);
     return _e5;
 }
 
@@ -254,12 +279,12 @@ float silk_hair_mx_seed(float smoothness, float gloss) {
     return (rx_safe * rx_safe);
 }
 
-float silk_hair_d_seed(vec3 x_axis, vec3 n_4, vec3 h, float mx) {
+float silk_hair_d_seed(vec3 x_axis, vec3 n_5, vec3 h, float mx) {
     float m = max(mx, 1e-8);
-    vec3 y_axis = cross(n_4, x_axis);
+    vec3 y_axis = cross(n_5, x_axis);
     float xh = dot(x_axis, h);
     float yh = dot(y_axis, h);
-    float nh = clamp(dot(n_4, h), 0.0, 1.0);
+    float nh = clamp(dot(n_5, h), 0.0, 1.0);
     float d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001);
     return (1.0 / (((WEFT_PI * m) * d_1) * d_1));
 }
@@ -291,80 +316,76 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_1 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_1, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    vec3 _e59 = fibre;
-    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
-    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h_1 = clamp(dot(_e56, _e72), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
-    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_4 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_1 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    vec3 _e56 = fibre;
+    mat3x3 _e60 = weft_tangent_frame(_e53, vec4(_e56, in_1.world_tangent.w));
+    uint _e63 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_4);
+    vec3 _e68 = weft_aniso_to_frame(_e60, v_4);
+    vec3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    vec3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = _group_1_binding_0_fs.anisotropy;
     {
         {
-            float _e90 = _group_1_binding_0_fs.aniso_gloss;
-            float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = _group_1_binding_0_fs.aniso_mask;
-            float mask = clamp(_e94, 0.0, 1.0);
-            float _e98 = _group_1_binding_0_fs.aniso_spec;
-            float spec_scale = mix(max(_e98, 0.0), 1.0, mask);
-            vec2 a_hair = vec2(max(_e91, SILK_MIN_ALPHA), 1.0);
-            float _e107 = weft_clamp_roughness(roughness_7);
-            float _e108 = weft_clamp_roughness(roughness_7);
-            float a_iso = (_e107 * _e108);
+            float _e79 = _group_1_binding_0_fs.aniso_gloss;
+            float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = _group_1_binding_0_fs.aniso_mask;
+            float mask = clamp(_e83, 0.0, 1.0);
+            float _e87 = _group_1_binding_0_fs.aniso_spec;
+            float spec_scale = mix(max(_e87, 0.0), 1.0, mask);
+            vec2 a_hair = vec2(max(_e80, SILK_MIN_ALPHA), 1.0);
+            float _e96 = weft_clamp_roughness(roughness_7);
+            float _e97 = weft_clamp_roughness(roughness_7);
+            float a_iso = (_e96 * _e97);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e114, roughness_7, mask);
+            float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e103, roughness_7, mask);
             {
-                float _e120 = _group_1_binding_0_fs.tangent_shift;
-                vec3 _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                float _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                float _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = (mix(_e123, _e124, mask) * spec_scale);
-                float _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e128) * n_dot_l_1);
+                float _e109 = _group_1_binding_0_fs.tangent_shift;
+                vec3 _e110 = silk_jitter_tangent(_e60[0], _e60[2], _e109);
+                float _e113 = silk_hair_d_seed(_e110, _e60[2], _e67.h, _e80);
+                float _e115 = weft_d_ggx(_e67.n_dot_h, roughness_7);
+                float d_2 = (mix(_e113, _e115, mask) * spec_scale);
+                float _e121 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                lobe.value = ((d_2 * _e121) * _e67.n_dot_l);
             }
         }
     }
-    vec3 _e131 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
-    vec3 _e134 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e134) * _e138) * n_dot_l_diffuse);
-    float _e142 = lobe.value;
-    vec3 direct = ((diffuse + (_e134 * _e142)) * _e131);
-    reflect_n = _e56;
+    vec3 _e125 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e67.l), 0.0, 1.0);
+    vec3 _e130 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    vec3 _e134 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e130) * _e134) * n_dot_l_diffuse);
+    float _e138 = lobe.value;
+    vec3 direct = ((diffuse + (_e130 * _e138)) * _e125);
+    reflect_n = _e53;
     {
-        float _e150 = lobe.ibl_roughness;
-        vec3 _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        float _e155 = lobe.ibl_roughness;
-        vec3 _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = (vec3(1.0) - _e156);
+        float _e147 = lobe.ibl_roughness;
+        vec3 _e148 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e147);
+        env_brdf = _e148;
+        float _e153 = lobe.ibl_roughness;
+        vec3 _e154 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e153);
+        ambient_kd = (vec3(1.0) - _e154);
     }
-    vec3 _e159 = reflect_n;
-    float _e162 = lobe.ibl_roughness;
-    vec3 _e163 = weft_prefiltered_radiance(reflect(-(_e38), _e159), _e162);
-    vec3 _e164 = env_brdf;
-    vec3 _e166 = weft_sh_irradiance(n_diff);
-    vec3 _e167 = ambient_kd;
-    vec3 indirect = ((_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo));
+    vec3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    vec3 _e161 = weft_prefiltered_radiance(reflect(-(v_4), _e157), _e160);
+    vec3 _e162 = env_brdf;
+    vec3 _e164 = weft_sh_irradiance(n_diff);
+    vec3 _e165 = ambient_kd;
+    vec3 indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -88,16 +106,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> aniso_normal_map : register(t4, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -254,23 +272,58 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_6)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t_1 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t_1) * s_1);
-    return float3x3(t_1, b_1, n_2);
+    float3 b_1 = (cross(n_3, t_1) * s_1);
+    return float3x3(t_1, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -289,9 +342,9 @@ float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_2)
     return float3(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
 }
 
-float3 silk_jitter_tangent(float3 t, float3 n_3, float shift)
+float3 silk_jitter_tangent(float3 t, float3 n_4, float shift)
 {
-    const float3 _e5 = weft_safe_normalize((t + (shift * n_3)), t);
+    const float3 _e5 = weft_safe_normalize((t + (shift * n_4)), t);
     return _e5;
 }
 
@@ -303,13 +356,13 @@ float silk_hair_mx_seed(float smoothness, float gloss)
     return (rx_safe * rx_safe);
 }
 
-float silk_hair_d_seed(float3 x_axis, float3 n_4, float3 h, float mx)
+float silk_hair_d_seed(float3 x_axis, float3 n_5, float3 h, float mx)
 {
     float m = max(mx, 1e-8);
-    float3 y_axis = cross(n_4, x_axis);
+    float3 y_axis = cross(n_5, x_axis);
     float xh = dot(x_axis, h);
     float yh = dot(y_axis, h);
-    float nh = saturate(dot(n_4, h));
+    float nh = saturate(dot(n_5, h));
     float d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001);
     return (1.0 / (((WEFT_PI * m) * d_1) * d_1));
 }
@@ -346,7 +399,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -369,80 +422,76 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    float3 _e59 = fibre;
-    const float3x3 _e63 = weft_tangent_frame(_e56, float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    const float3 _e70 = weft_main_light_direction();
-    const float3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    const float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e70));
-    float n_dot_h_1 = saturate(dot(_e56, _e72));
-    float v_dot_h_1 = saturate(dot(_e38, _e72));
-    const float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    const float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    const float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_4 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    float3 _e56 = fibre;
+    const float3x3 _e60 = weft_tangent_frame(_e53, float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_4);
+    const float3 _e68 = weft_aniso_to_frame(_e60, v_4);
+    const float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    const float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e90 = material.aniso_gloss;
-            const float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = material.aniso_mask;
-            float mask = saturate(_e94);
-            float _e98 = material.aniso_spec;
-            float spec_scale = lerp(max(_e98, 0.0), 1.0, mask);
-            float2 a_hair = float2(max(_e91, SILK_MIN_ALPHA), 1.0);
-            const float _e107 = weft_clamp_roughness(roughness_7);
-            const float _e108 = weft_clamp_roughness(roughness_7);
-            float a_iso = (_e107 * _e108);
+            float _e79 = material.aniso_gloss;
+            const float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = material.aniso_mask;
+            float mask = saturate(_e83);
+            float _e87 = material.aniso_spec;
+            float spec_scale = lerp(max(_e87, 0.0), 1.0, mask);
+            float2 a_hair = float2(max(_e80, SILK_MIN_ALPHA), 1.0);
+            const float _e96 = weft_clamp_roughness(roughness_7);
+            const float _e97 = weft_clamp_roughness(roughness_7);
+            float a_iso = (_e96 * _e97);
             lobe.alpha = lerp(a_hair, (a_iso).xx, mask);
-            const float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = lerp(_e114, roughness_7, mask);
+            const float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = lerp(_e103, roughness_7, mask);
             {
-                float _e120 = material.tangent_shift;
-                const float3 _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                const float _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                const float _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = (lerp(_e123, _e124, mask) * spec_scale);
-                const float _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e128) * n_dot_l_1);
+                float _e109 = material.tangent_shift;
+                const float3 _e110 = silk_jitter_tangent(_e60[0], _e60[2], _e109);
+                const float _e113 = silk_hair_d_seed(_e110, _e60[2], _e67.h, _e80);
+                const float _e115 = weft_d_ggx(_e67.n_dot_h, roughness_7);
+                float d_2 = (lerp(_e113, _e115, mask) * spec_scale);
+                const float _e121 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                lobe.value = ((d_2 * _e121) * _e67.n_dot_l);
             }
         }
     }
-    const float3 _e131 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    const float3 _e134 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e134) * _e138) * n_dot_l_diffuse);
-    float _e142 = lobe.value;
-    float3 direct = ((diffuse + (_e134 * _e142)) * _e131);
-    reflect_n = _e56;
+    const float3 _e125 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    const float3 _e130 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    const float3 _e134 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e130) * _e134) * n_dot_l_diffuse);
+    float _e138 = lobe.value;
+    float3 direct = ((diffuse + (_e130 * _e138)) * _e125);
+    reflect_n = _e53;
     {
-        float _e150 = lobe.ibl_roughness;
-        const float3 _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        float _e155 = lobe.ibl_roughness;
-        const float3 _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = ((1.0).xxx - _e156);
+        float _e147 = lobe.ibl_roughness;
+        const float3 _e148 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e147);
+        env_brdf = _e148;
+        float _e153 = lobe.ibl_roughness;
+        const float3 _e154 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e153);
+        ambient_kd = ((1.0).xxx - _e154);
     }
-    float3 _e159 = reflect_n;
-    float _e162 = lobe.ibl_roughness;
-    const float3 _e163 = weft_prefiltered_radiance(reflect(-(_e38), _e159), _e162);
-    float3 _e164 = env_brdf;
-    const float3 _e166 = weft_sh_irradiance(n_diff);
-    float3 _e167 = ambient_kd;
-    float3 indirect = ((_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo));
+    float3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    const float3 _e161 = weft_prefiltered_radiance(reflect(-(v_4), _e157), _e160);
+    float3 _e162 = env_brdf;
+    const float3 _e164 = weft_sh_irradiance(n_diff);
+    float3 _e165 = ambient_kd;
+    float3 indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -37,6 +37,19 @@ struct WeftMaterial {
     float flow_strength;
     char _pad13[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -264,27 +277,48 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_2,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_2, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_3,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 _e13 = weft_any_perpendicular(n_3);
     metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_2, t_1) * s_1;
-    return metal::float3x3(t_1, b_1, n_2);
+    metal::float3 b_1 = metal::cross(n_3, t_1) * s_1;
+    return metal::float3x3(t_1, b_1, n_3);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -311,10 +345,10 @@ metal::float3 weft_aniso_to_frame(
 
 metal::float3 silk_jitter_tangent(
     metal::float3 t,
-    metal::float3 n_3,
+    metal::float3 n_4,
     float shift
 ) {
-    metal::float3 _e5 = weft_safe_normalize(t + (shift * n_3), t);
+    metal::float3 _e5 = weft_safe_normalize(t + (shift * n_4), t);
     return _e5;
 }
 
@@ -330,15 +364,15 @@ float silk_hair_mx_seed(
 
 float silk_hair_d_seed(
     metal::float3 x_axis,
-    metal::float3 n_4,
+    metal::float3 n_5,
     metal::float3 h,
     float mx
 ) {
     float m = metal::max(mx, 0.00000001);
-    metal::float3 y_axis = metal::cross(n_4, x_axis);
+    metal::float3 y_axis = metal::cross(n_5, x_axis);
     float xh = metal::dot(x_axis, h);
     float yh = metal::dot(y_axis, h);
-    float nh = metal::saturate(metal::dot(n_4, h));
+    float nh = metal::saturate(metal::dot(n_5, h));
     float d_1 = metal::max((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh), 0.0001);
     return 1.0 / (((WEFT_PI * m) * d_1) * d_1);
 }
@@ -391,8 +425,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -410,7 +444,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(2)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 fibre = {};
     SilkLobe lobe = {};
     float vis = {};
@@ -432,80 +466,76 @@ fragment fs_mainOutput fs_main(
     float metallic = metal::saturate(_e25);
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e38 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    metal::float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    metal::float4 _e46 = material.aniso_normal_map_st;
-    metal::float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    metal::float4 _e50 = aniso_normal_map.sample(material_sampler, _e47);
-    metal::float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    metal::float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    metal::float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    metal::float3 _e59 = fibre;
-    metal::float3x3 _e63 = weft_tangent_frame(_e56, metal::float4(_e59, in_1.world_tangent.w));
-    uint _e66 = material.diffuse_uses_aniso_normal;
-    metal::float3 n_diff = (_e66 != 0u) ? _e56 : _e40;
-    metal::float3 _e70 = weft_main_light_direction(weft_frame);
-    metal::float3 _e72 = weft_safe_normalize(_e70 + _e38, _e56);
-    float _e74 = weft_clamp_cos(metal::dot(_e56, _e38));
-    float n_dot_l_1 = metal::saturate(metal::dot(_e56, _e70));
-    float n_dot_h_1 = metal::saturate(metal::dot(_e56, _e72));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e38, _e72));
-    metal::float3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    metal::float3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    metal::float3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e35.v;
+    metal::float3 n_geo = _e35.n;
+    metal::float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    metal::float4 _e43 = material.aniso_normal_map_st;
+    metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
+    metal::float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    metal::float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    metal::float3 _e56 = fibre;
+    metal::float3x3 _e60 = weft_tangent_frame(_e53, metal::float4(_e56, in_1.world_tangent.w));
+    uint _e63 = material.diffuse_uses_aniso_normal;
+    metal::float3 n_diff = (_e63 != 0u) ? _e53 : n_geo;
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_4, weft_frame);
+    metal::float3 _e68 = weft_aniso_to_frame(_e60, v_4);
+    metal::float3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    metal::float3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k_1 = material.anisotropy;
     {
         {
-            float _e90 = material.aniso_gloss;
-            float _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            float _e94 = material.aniso_mask;
-            float mask = metal::saturate(_e94);
-            float _e98 = material.aniso_spec;
-            float spec_scale = metal::mix(metal::max(_e98, 0.0), 1.0, mask);
-            metal::float2 a_hair = metal::float2(metal::max(_e91, SILK_MIN_ALPHA), 1.0);
-            float _e107 = weft_clamp_roughness(roughness_7);
-            float _e108 = weft_clamp_roughness(roughness_7);
-            float a_iso = _e107 * _e108;
+            float _e79 = material.aniso_gloss;
+            float _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            float _e83 = material.aniso_mask;
+            float mask = metal::saturate(_e83);
+            float _e87 = material.aniso_spec;
+            float spec_scale = metal::mix(metal::max(_e87, 0.0), 1.0, mask);
+            metal::float2 a_hair = metal::float2(metal::max(_e80, SILK_MIN_ALPHA), 1.0);
+            float _e96 = weft_clamp_roughness(roughness_7);
+            float _e97 = weft_clamp_roughness(roughness_7);
+            float a_iso = _e96 * _e97;
             lobe.alpha = metal::mix(a_hair, metal::float2(a_iso), mask);
-            float _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = metal::mix(_e114, roughness_7, mask);
+            float _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = metal::mix(_e103, roughness_7, mask);
             {
-                float _e120 = material.tangent_shift;
-                metal::float3 _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                float _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                float _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                float d_2 = metal::mix(_e123, _e124, mask) * spec_scale;
-                float _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = (d_2 * _e128) * n_dot_l_1;
+                float _e109 = material.tangent_shift;
+                metal::float3 _e110 = silk_jitter_tangent(_e60[0], _e60[2], _e109);
+                float _e113 = silk_hair_d_seed(_e110, _e60[2], _e67.h, _e80);
+                float _e115 = weft_d_ggx(_e67.n_dot_h, roughness_7);
+                float d_2 = metal::mix(_e113, _e115, mask) * spec_scale;
+                float _e121 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                lobe.value = (d_2 * _e121) * _e67.n_dot_l;
             }
         }
     }
-    metal::float3 _e131 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e70));
-    metal::float3 _e134 = weft_f_schlick(f0_3, v_dot_h_1);
-    metal::float3 _e138 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e134) * _e138) * n_dot_l_diffuse;
-    float _e142 = lobe.value;
-    metal::float3 direct = (diffuse + (_e134 * _e142)) * _e131;
-    reflect_n = _e56;
+    metal::float3 _e125 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse = metal::saturate(metal::dot(n_diff, _e67.l));
+    metal::float3 _e130 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    metal::float3 _e134 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e130) * _e134) * n_dot_l_diffuse;
+    float _e138 = lobe.value;
+    metal::float3 direct = (diffuse + (_e130 * _e138)) * _e125;
+    reflect_n = _e53;
     {
-        float _e150 = lobe.ibl_roughness;
-        metal::float3 _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        float _e155 = lobe.ibl_roughness;
-        metal::float3 _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = metal::float3(1.0) - _e156;
+        float _e147 = lobe.ibl_roughness;
+        metal::float3 _e148 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e147);
+        env_brdf = _e148;
+        float _e153 = lobe.ibl_roughness;
+        metal::float3 _e154 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e153);
+        ambient_kd = metal::float3(1.0) - _e154;
     }
-    metal::float3 _e159 = reflect_n;
-    float _e162 = lobe.ibl_roughness;
-    metal::float3 _e163 = weft_prefiltered_radiance(metal::reflect(-(_e38), _e159), _e162, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e164 = env_brdf;
-    metal::float3 _e166 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e167 = ambient_kd;
-    metal::float3 indirect = (_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo);
+    metal::float3 _e157 = reflect_n;
+    float _e160 = lobe.ibl_roughness;
+    metal::float3 _e161 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e157), _e160, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e162 = env_brdf;
+    metal::float3 _e164 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e165 = ambient_kd;
+    metal::float3 indirect = (_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -219,21 +233,34 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3<f32>(t_1, b_1, n_2);
+    let b_1 = (cross(n_3, t_1) * s_1);
+    return mat3x3<f32>(t_1, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -249,8 +276,8 @@ fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
 }
 
-fn silk_jitter_tangent(t: vec3<f32>, n_3: vec3<f32>, shift: f32) -> vec3<f32> {
-    let _e5 = weft_safe_normalize((t + (shift * n_3)), t);
+fn silk_jitter_tangent(t: vec3<f32>, n_4: vec3<f32>, shift: f32) -> vec3<f32> {
+    let _e5 = weft_safe_normalize((t + (shift * n_4)), t);
     return _e5;
 }
 
@@ -261,12 +288,12 @@ fn silk_hair_mx_seed(smoothness: f32, gloss: f32) -> f32 {
     return (rx_safe * rx_safe);
 }
 
-fn silk_hair_d_seed(x_axis: vec3<f32>, n_4: vec3<f32>, h: vec3<f32>, mx: f32) -> f32 {
+fn silk_hair_d_seed(x_axis: vec3<f32>, n_5: vec3<f32>, h: vec3<f32>, mx: f32) -> f32 {
     let m = max(mx, 0.00000001f);
-    let y_axis = cross(n_4, x_axis);
+    let y_axis = cross(n_5, x_axis);
     let xh = dot(x_axis, h);
     let yh = dot(y_axis, h);
-    let nh = saturate(dot(n_4, h));
+    let nh = saturate(dot(n_5, h));
     let d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001f);
     return (1f / (((WEFT_PI * m) * d_1) * d_1));
 }
@@ -322,80 +349,76 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e70));
-    let n_dot_h_1 = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_4);
+    let _e68 = weft_aniso_to_frame(_e60, v_4);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k_1 = material.anisotropy;
     {
         {
-            let _e90 = material.aniso_gloss;
-            let _e91 = silk_hair_mx_seed(smoothness_1, _e90);
-            let _e94 = material.aniso_mask;
-            let mask = saturate(_e94);
-            let _e98 = material.aniso_spec;
-            let spec_scale = mix(max(_e98, 0f), 1f, mask);
-            let a_hair = vec2<f32>(max(_e91, SILK_MIN_ALPHA), 1f);
-            let _e107 = weft_clamp_roughness(roughness_7);
-            let _e108 = weft_clamp_roughness(roughness_7);
-            let a_iso = (_e107 * _e108);
+            let _e79 = material.aniso_gloss;
+            let _e80 = silk_hair_mx_seed(smoothness_1, _e79);
+            let _e83 = material.aniso_mask;
+            let mask = saturate(_e83);
+            let _e87 = material.aniso_spec;
+            let spec_scale = mix(max(_e87, 0f), 1f, mask);
+            let a_hair = vec2<f32>(max(_e80, SILK_MIN_ALPHA), 1f);
+            let _e96 = weft_clamp_roughness(roughness_7);
+            let _e97 = weft_clamp_roughness(roughness_7);
+            let a_iso = (_e96 * _e97);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            let _e114 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e114, roughness_7, mask);
+            let _e103 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e103, roughness_7, mask);
             {
-                let _e120 = material.tangent_shift;
-                let _e121 = silk_jitter_tangent(_e63[0], _e63[2], _e120);
-                let _e123 = silk_hair_d_seed(_e121, _e63[2], _e72, _e91);
-                let _e124 = weft_d_ggx(n_dot_h_1, roughness_7);
-                let d_2 = (mix(_e123, _e124, mask) * spec_scale);
-                let _e128 = weft_v_schlick_ggx(_e74, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e128) * n_dot_l_1);
+                let _e109 = material.tangent_shift;
+                let _e110 = silk_jitter_tangent(_e60[0], _e60[2], _e109);
+                let _e113 = silk_hair_d_seed(_e110, _e60[2], _e67.h, _e80);
+                let _e115 = weft_d_ggx(_e67.n_dot_h, roughness_7);
+                let d_2 = (mix(_e113, _e115, mask) * spec_scale);
+                let _e121 = weft_v_schlick_ggx(_e67.n_dot_v, _e67.n_dot_l, roughness_7);
+                lobe.value = ((d_2 * _e121) * _e67.n_dot_l);
             }
         }
     }
-    let _e131 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e134 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e138 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e134) * _e138) * n_dot_l_diffuse);
-    let _e142 = lobe.value;
-    let direct = ((diffuse + (_e134 * _e142)) * _e131);
-    reflect_n = _e56;
+    let _e125 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e130 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    let _e134 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e130) * _e134) * n_dot_l_diffuse);
+    let _e138 = lobe.value;
+    let direct = ((diffuse + (_e130 * _e138)) * _e125);
+    reflect_n = _e53;
     {
-        let _e150 = lobe.ibl_roughness;
-        let _e151 = weft_env_brdf_approx(f0_3, _e74, _e150);
-        env_brdf = _e151;
-        let _e155 = lobe.ibl_roughness;
-        let _e156 = weft_f_schlick_roughness(f0_3, _e74, _e155);
-        ambient_kd = (vec3(1f) - _e156);
+        let _e147 = lobe.ibl_roughness;
+        let _e148 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e147);
+        env_brdf = _e148;
+        let _e153 = lobe.ibl_roughness;
+        let _e154 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e153);
+        ambient_kd = (vec3(1f) - _e154);
     }
-    let _e159 = reflect_n;
-    let _e162 = lobe.ibl_roughness;
-    let _e163 = weft_prefiltered_radiance(reflect(-(_e38), _e159), _e162);
-    let _e164 = env_brdf;
-    let _e166 = weft_sh_irradiance(n_diff);
-    let _e167 = ambient_kd;
-    let indirect = ((_e163 * _e164) + ((_e166 * _e167) * diffuse_albedo));
+    let _e157 = reflect_n;
+    let _e160 = lobe.ibl_roughness;
+    let _e161 = weft_prefiltered_radiance(reflect(-(v_4), _e157), _e160);
+    let _e162 = env_brdf;
+    let _e164 = weft_sh_irradiance(n_diff);
+    let _e165 = ambient_kd;
+    let indirect = ((_e161 * _e162) + ((_e164 * _e165) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -221,21 +235,34 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t_1) * s_1);
-    return mat3x3<f32>(t_1, b_1, n_2);
+    let b_1 = (cross(n_3, t_1) * s_1);
+    return mat3x3<f32>(t_1, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -251,8 +278,8 @@ fn weft_aniso_to_frame(frame_1: mat3x3<f32>, x_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(frame_1[0], x_2), dot(frame_1[1], x_2), dot(frame_1[2], x_2));
 }
 
-fn silk_jitter_tangent(t: vec3<f32>, n_3: vec3<f32>, shift: f32) -> vec3<f32> {
-    let _e5 = weft_safe_normalize((t + (shift * n_3)), t);
+fn silk_jitter_tangent(t: vec3<f32>, n_4: vec3<f32>, shift: f32) -> vec3<f32> {
+    let _e5 = weft_safe_normalize((t + (shift * n_4)), t);
     return _e5;
 }
 
@@ -263,12 +290,12 @@ fn silk_hair_mx_seed(smoothness: f32, gloss: f32) -> f32 {
     return (rx_safe * rx_safe);
 }
 
-fn silk_hair_d_seed(x_axis: vec3<f32>, n_4: vec3<f32>, h: vec3<f32>, mx: f32) -> f32 {
+fn silk_hair_d_seed(x_axis: vec3<f32>, n_5: vec3<f32>, h: vec3<f32>, mx: f32) -> f32 {
     let m = max(mx, 0.00000001f);
-    let y_axis = cross(n_4, x_axis);
+    let y_axis = cross(n_5, x_axis);
     let xh = dot(x_axis, h);
     let yh = dot(y_axis, h);
-    let nh = saturate(dot(n_4, h));
+    let nh = saturate(dot(n_5, h));
     let d_1 = max(((((xh * xh) / (m * m)) + (yh * yh)) + (nh * nh)), 0.0001f);
     return (1f / (((WEFT_PI * m) * d_1) * d_1));
 }
@@ -324,88 +351,84 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        let _e61 = textureSample(flow_map, material_sampler, _e5);
-        let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_1, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        let _e58 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e58.xy * 2f) - vec2(1f));
+        let dir_1 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        let _e75 = material.flow_strength;
+        let _e79 = weft_safe_normalize(mix(_e39[0], dir_1, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    let _e83 = fibre;
-    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
-    let _e90 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e90 != 0u));
-    let _e94 = weft_main_light_direction();
-    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e94));
-    let n_dot_h_1 = saturate(dot(_e56, _e96));
-    let v_dot_h_1 = saturate(dot(_e38, _e96));
-    let _e105 = weft_aniso_to_frame(_e87, _e38);
-    let _e106 = weft_aniso_to_frame(_e87, _e94);
-    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let _e80 = fibre;
+    let _e84 = weft_tangent_frame(_e53, vec4<f32>(_e80, in_1.world_tangent.w));
+    let _e87 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e87 != 0u));
+    let _e91 = weft_main_light_geometry(_e53, v_4);
+    let _e92 = weft_aniso_to_frame(_e84, v_4);
+    let _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    let _e96 = weft_aniso_to_frame(_e84, _e91.h);
     let k_1 = material.anisotropy;
     {
         {
-            let _e114 = material.aniso_gloss;
-            let _e115 = silk_hair_mx_seed(smoothness_1, _e114);
-            let _e118 = material.aniso_mask;
-            let mask = saturate(_e118);
-            let _e122 = material.aniso_spec;
-            let spec_scale = mix(max(_e122, 0f), 1f, mask);
-            let a_hair = vec2<f32>(max(_e115, SILK_MIN_ALPHA), 1f);
-            let _e131 = weft_clamp_roughness(roughness_7);
-            let _e132 = weft_clamp_roughness(roughness_7);
-            let a_iso = (_e131 * _e132);
+            let _e103 = material.aniso_gloss;
+            let _e104 = silk_hair_mx_seed(smoothness_1, _e103);
+            let _e107 = material.aniso_mask;
+            let mask = saturate(_e107);
+            let _e111 = material.aniso_spec;
+            let spec_scale = mix(max(_e111, 0f), 1f, mask);
+            let a_hair = vec2<f32>(max(_e104, SILK_MIN_ALPHA), 1f);
+            let _e120 = weft_clamp_roughness(roughness_7);
+            let _e121 = weft_clamp_roughness(roughness_7);
+            let a_iso = (_e120 * _e121);
             lobe.alpha = mix(a_hair, vec2(a_iso), mask);
-            let _e138 = silk_ibl_roughness(a_hair);
-            lobe.ibl_roughness = mix(_e138, roughness_7, mask);
+            let _e127 = silk_ibl_roughness(a_hair);
+            lobe.ibl_roughness = mix(_e127, roughness_7, mask);
             {
-                let _e144 = material.tangent_shift;
-                let _e145 = silk_jitter_tangent(_e87[0], _e87[2], _e144);
-                let _e147 = silk_hair_d_seed(_e145, _e87[2], _e96, _e115);
-                let _e148 = weft_d_ggx(n_dot_h_1, roughness_7);
-                let d_2 = (mix(_e147, _e148, mask) * spec_scale);
-                let _e152 = weft_v_schlick_ggx(_e98, n_dot_l_1, roughness_7);
-                lobe.value = ((d_2 * _e152) * n_dot_l_1);
+                let _e133 = material.tangent_shift;
+                let _e134 = silk_jitter_tangent(_e84[0], _e84[2], _e133);
+                let _e137 = silk_hair_d_seed(_e134, _e84[2], _e91.h, _e104);
+                let _e139 = weft_d_ggx(_e91.n_dot_h, roughness_7);
+                let d_2 = (mix(_e137, _e139, mask) * spec_scale);
+                let _e145 = weft_v_schlick_ggx(_e91.n_dot_v, _e91.n_dot_l, roughness_7);
+                lobe.value = ((d_2 * _e145) * _e91.n_dot_l);
             }
         }
     }
-    let _e155 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    let _e158 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e162 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e158) * _e162) * n_dot_l_diffuse);
-    let _e166 = lobe.value;
-    let direct = ((diffuse + (_e158 * _e166)) * _e155);
-    reflect_n = _e56;
+    let _e149 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    let _e154 = weft_f_schlick(f0_3, _e91.v_dot_h);
+    let _e158 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e154) * _e158) * n_dot_l_diffuse);
+    let _e162 = lobe.value;
+    let direct = ((diffuse + (_e154 * _e162)) * _e149);
+    reflect_n = _e53;
     {
-        let _e174 = lobe.ibl_roughness;
-        let _e175 = weft_env_brdf_approx(f0_3, _e98, _e174);
-        env_brdf = _e175;
-        let _e179 = lobe.ibl_roughness;
-        let _e180 = weft_f_schlick_roughness(f0_3, _e98, _e179);
-        ambient_kd = (vec3(1f) - _e180);
+        let _e171 = lobe.ibl_roughness;
+        let _e172 = weft_env_brdf_approx(f0_3, _e91.n_dot_v, _e171);
+        env_brdf = _e172;
+        let _e177 = lobe.ibl_roughness;
+        let _e178 = weft_f_schlick_roughness(f0_3, _e91.n_dot_v, _e177);
+        ambient_kd = (vec3(1f) - _e178);
     }
-    let _e183 = reflect_n;
-    let _e186 = lobe.ibl_roughness;
-    let _e187 = weft_prefiltered_radiance(reflect(-(_e38), _e183), _e186);
-    let _e188 = env_brdf;
-    let _e190 = weft_sh_irradiance(n_diff);
-    let _e191 = ambient_kd;
-    let indirect = ((_e187 * _e188) + ((_e190 * _e191) * diffuse_albedo));
+    let _e181 = reflect_n;
+    let _e184 = lobe.ibl_roughness;
+    let _e185 = weft_prefiltered_radiance(reflect(-(v_4), _e181), _e184);
+    let _e186 = env_brdf;
+    let _e188 = weft_sh_irradiance(n_diff);
+    let _e189 = ambient_kd;
+    let indirect = ((_e185 * _e186) + ((_e188 * _e189) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

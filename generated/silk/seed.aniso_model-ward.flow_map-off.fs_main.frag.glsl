@@ -28,6 +28,18 @@ struct WeftMaterial {
     float aniso_mask;
     float flow_strength;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -189,21 +201,34 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_3) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_2);
+    vec3 _e13 = weft_any_perpendicular(n_3);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_2, t) * s_1);
-    return mat3x3(t, b_1, n_2);
+    vec3 b_1 = (cross(n_3, t) * s_1);
+    return mat3x3(t, b_1, n_3);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -267,64 +292,60 @@ void main() {
     float metallic = clamp(_e25, 0.0, 1.0);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e38 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    mat3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    vec4 _e46 = _group_1_binding_0_fs.aniso_normal_map_st;
-    vec2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    vec4 _e50 = texture(_group_1_binding_4_fs, vec2(_e47));
-    vec3 texel_1 = _e50.xyz;
-    float _e54 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e55 = weft_unpack_normal(texel_1, _e54);
-    vec3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    vec3 _e59 = fibre;
-    mat3x3 _e63 = weft_tangent_frame(_e56, vec4(_e59, in_1.world_tangent.w));
-    uint _e66 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
-    vec3 n_diff = ((_e66 != 0u) ? _e56 : _e40);
-    vec3 _e70 = weft_main_light_direction();
-    vec3 _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    float _e74 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = clamp(dot(_e56, _e70), 0.0, 1.0);
-    float n_dot_h = clamp(dot(_e56, _e72), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e38, _e72), 0.0, 1.0);
-    vec3 _e81 = weft_aniso_to_frame(_e63, _e38);
-    vec3 _e82 = weft_aniso_to_frame(_e63, _e70);
-    vec3 _e83 = weft_aniso_to_frame(_e63, _e72);
+    WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_4 = _e35.v;
+    vec3 n_geo = _e35.n;
+    mat3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
+    vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
+    vec3 texel_1 = _e47.xyz;
+    float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
+    vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    vec3 _e56 = fibre;
+    mat3x3 _e60 = weft_tangent_frame(_e53, vec4(_e56, in_1.world_tangent.w));
+    uint _e63 = _group_1_binding_0_fs.diffuse_uses_aniso_normal;
+    vec3 n_diff = ((_e63 != 0u) ? _e53 : n_geo);
+    WeftLightGeometry _e67 = weft_main_light_geometry(_e53, v_4);
+    vec3 _e68 = weft_aniso_to_frame(_e60, v_4);
+    vec3 _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    vec3 _e72 = weft_aniso_to_frame(_e60, _e67.h);
     float k = _group_1_binding_0_fs.anisotropy;
     {
-        vec2 _e88 = silk_ward_alpha_seed(smoothness_1, k);
-        lobe.alpha = _e88;
-        float _e91 = silk_ibl_roughness(_e88);
-        lobe.ibl_roughness = _e91;
+        vec2 _e77 = silk_ward_alpha_seed(smoothness_1, k);
+        lobe.alpha = _e77;
+        float _e80 = silk_ibl_roughness(_e77);
+        lobe.ibl_roughness = _e80;
         {
-            float _e93 = silk_ward_seed(_e83, n_dot_l_1, _e74, _e88);
-            lobe.value = (_e93 * n_dot_l_1);
+            float _e84 = silk_ward_seed(_e72, _e67.n_dot_l, _e67.n_dot_v, _e77);
+            lobe.value = (_e84 * _e67.n_dot_l);
         }
     }
-    vec3 _e95 = weft_main_light_radiance();
-    float n_dot_l_diffuse = clamp(dot(n_diff, _e70), 0.0, 1.0);
-    vec3 _e98 = weft_f_schlick(f0_3, v_dot_h_1);
-    vec3 _e102 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (((vec3(1.0) - _e98) * _e102) * n_dot_l_diffuse);
-    float _e106 = lobe.value;
-    vec3 direct = ((diffuse + (_e98 * _e106)) * _e95);
-    reflect_n = _e56;
+    vec3 _e87 = weft_main_light_radiance();
+    float n_dot_l_diffuse = clamp(dot(n_diff, _e67.l), 0.0, 1.0);
+    vec3 _e92 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    vec3 _e96 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (((vec3(1.0) - _e92) * _e96) * n_dot_l_diffuse);
+    float _e100 = lobe.value;
+    vec3 direct = ((diffuse + (_e92 * _e100)) * _e87);
+    reflect_n = _e53;
     {
-        float _e114 = lobe.ibl_roughness;
-        vec3 _e115 = weft_env_brdf_approx(f0_3, _e74, _e114);
-        env_brdf = _e115;
-        float _e119 = lobe.ibl_roughness;
-        vec3 _e120 = weft_f_schlick_roughness(f0_3, _e74, _e119);
-        ambient_kd = (vec3(1.0) - _e120);
+        float _e109 = lobe.ibl_roughness;
+        vec3 _e110 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e109);
+        env_brdf = _e110;
+        float _e115 = lobe.ibl_roughness;
+        vec3 _e116 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e115);
+        ambient_kd = (vec3(1.0) - _e116);
     }
-    vec3 _e123 = reflect_n;
-    float _e126 = lobe.ibl_roughness;
-    vec3 _e127 = weft_prefiltered_radiance(reflect(-(_e38), _e123), _e126);
-    vec3 _e128 = env_brdf;
-    vec3 _e130 = weft_sh_irradiance(n_diff);
-    vec3 _e131 = ambient_kd;
-    vec3 indirect = ((_e127 * _e128) + ((_e130 * _e131) * diffuse_albedo));
+    vec3 _e119 = reflect_n;
+    float _e122 = lobe.ibl_roughness;
+    vec3 _e123 = weft_prefiltered_radiance(reflect(-(v_4), _e119), _e122);
+    vec3 _e124 = env_brdf;
+    vec3 _e126 = weft_sh_irradiance(n_diff);
+    vec3 _e127 = ambient_kd;
+    vec3 indirect = ((_e123 * _e124) + ((_e126 * _e127) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -196,21 +210,34 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_3: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -298,64 +325,60 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
-    let _e59 = fibre;
-    let _e63 = weft_tangent_frame(_e56, vec4<f32>(_e59, in_1.world_tangent.w));
-    let _e66 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e66 != 0u));
-    let _e70 = weft_main_light_direction();
-    let _e72 = weft_safe_normalize((_e70 + _e38), _e56);
-    let _e74 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e70));
-    let n_dot_h = saturate(dot(_e56, _e72));
-    let v_dot_h_1 = saturate(dot(_e38, _e72));
-    let _e81 = weft_aniso_to_frame(_e63, _e38);
-    let _e82 = weft_aniso_to_frame(_e63, _e70);
-    let _e83 = weft_aniso_to_frame(_e63, _e72);
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
+    let _e56 = fibre;
+    let _e60 = weft_tangent_frame(_e53, vec4<f32>(_e56, in_1.world_tangent.w));
+    let _e63 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e63 != 0u));
+    let _e67 = weft_main_light_geometry(_e53, v_4);
+    let _e68 = weft_aniso_to_frame(_e60, v_4);
+    let _e70 = weft_aniso_to_frame(_e60, _e67.l);
+    let _e72 = weft_aniso_to_frame(_e60, _e67.h);
     let k = material.anisotropy;
     {
-        let _e88 = silk_ward_alpha_seed(smoothness_1, k);
-        lobe.alpha = _e88;
-        let _e91 = silk_ibl_roughness(_e88);
-        lobe.ibl_roughness = _e91;
+        let _e77 = silk_ward_alpha_seed(smoothness_1, k);
+        lobe.alpha = _e77;
+        let _e80 = silk_ibl_roughness(_e77);
+        lobe.ibl_roughness = _e80;
         {
-            let _e93 = silk_ward_seed(_e83, n_dot_l_1, _e74, _e88);
-            lobe.value = (_e93 * n_dot_l_1);
+            let _e84 = silk_ward_seed(_e72, _e67.n_dot_l, _e67.n_dot_v, _e77);
+            lobe.value = (_e84 * _e67.n_dot_l);
         }
     }
-    let _e95 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e70));
-    let _e98 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e102 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e98) * _e102) * n_dot_l_diffuse);
-    let _e106 = lobe.value;
-    let direct = ((diffuse + (_e98 * _e106)) * _e95);
-    reflect_n = _e56;
+    let _e87 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e67.l));
+    let _e92 = weft_f_schlick(f0_3, _e67.v_dot_h);
+    let _e96 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e92) * _e96) * n_dot_l_diffuse);
+    let _e100 = lobe.value;
+    let direct = ((diffuse + (_e92 * _e100)) * _e87);
+    reflect_n = _e53;
     {
-        let _e114 = lobe.ibl_roughness;
-        let _e115 = weft_env_brdf_approx(f0_3, _e74, _e114);
-        env_brdf = _e115;
-        let _e119 = lobe.ibl_roughness;
-        let _e120 = weft_f_schlick_roughness(f0_3, _e74, _e119);
-        ambient_kd = (vec3(1f) - _e120);
+        let _e109 = lobe.ibl_roughness;
+        let _e110 = weft_env_brdf_approx(f0_3, _e67.n_dot_v, _e109);
+        env_brdf = _e110;
+        let _e115 = lobe.ibl_roughness;
+        let _e116 = weft_f_schlick_roughness(f0_3, _e67.n_dot_v, _e115);
+        ambient_kd = (vec3(1f) - _e116);
     }
-    let _e123 = reflect_n;
-    let _e126 = lobe.ibl_roughness;
-    let _e127 = weft_prefiltered_radiance(reflect(-(_e38), _e123), _e126);
-    let _e128 = env_brdf;
-    let _e130 = weft_sh_irradiance(n_diff);
-    let _e131 = ambient_kd;
-    let indirect = ((_e127 * _e128) + ((_e130 * _e131) * diffuse_albedo));
+    let _e119 = reflect_n;
+    let _e122 = lobe.ibl_roughness;
+    let _e123 = weft_prefiltered_radiance(reflect(-(v_4), _e119), _e122);
+    let _e124 = env_brdf;
+    let _e126 = weft_sh_irradiance(n_diff);
+    let _e127 = ambient_kd;
+    let indirect = ((_e123 * _e124) + ((_e126 * _e127) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

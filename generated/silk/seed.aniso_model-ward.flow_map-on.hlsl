@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -89,16 +107,16 @@ Texture2D<float4> aniso_normal_map : register(t4, space1);
 Texture2D<float4> flow_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -229,23 +247,58 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_3)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_2);
+    const float3 _e13 = weft_any_perpendicular(n_3);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_2, t) * s_1);
-    return float3x3(t, b_1, n_2);
+    float3 b_1 = (cross(n_3, t) * s_1);
+    return float3x3(t, b_1, n_3);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -320,7 +373,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 fibre = (float3)0;
     SilkLobe lobe = (SilkLobe)0;
     float vis = (float)0;
@@ -343,72 +396,68 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float metallic = saturate(_e25);
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e38 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    const float3x3 _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    float4 _e46 = material.aniso_normal_map_st;
-    const float2 _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    float4 _e50 = aniso_normal_map.Sample(material_sampler, _e47);
-    float3 texel_1 = _e50.xyz;
-    float _e54 = material.aniso_normal_strength;
-    const float3 _e55 = weft_unpack_normal(texel_1, _e54);
-    const float3 _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    const WeftSurface _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_4 = _e35.v;
+    float3 n_geo = _e35.n;
+    const float3x3 _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    float4 _e43 = material.aniso_normal_map_st;
+    const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
+    float3 texel_1 = _e47.xyz;
+    float _e51 = material.aniso_normal_strength;
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
+    const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        float4 _e61 = flow_map.Sample(material_sampler, _e5);
-        float2 flow = ((_e61.xy * 2.0) - (1.0).xx);
-        float3 dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        float _e78 = material.flow_strength;
-        const float3 _e82 = weft_safe_normalize(lerp(_e42[0], dir_1, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        float4 _e58 = flow_map.Sample(material_sampler, _e5);
+        float2 flow = ((_e58.xy * 2.0) - (1.0).xx);
+        float3 dir_1 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        float _e75 = material.flow_strength;
+        const float3 _e79 = weft_safe_normalize(lerp(_e39[0], dir_1, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    float3 _e83 = fibre;
-    const float3x3 _e87 = weft_tangent_frame(_e56, float4(_e83, in_1.world_tangent.w));
-    uint _e90 = material.diffuse_uses_aniso_normal;
-    float3 n_diff = ((_e90 != 0u) ? _e56 : _e40);
-    const float3 _e94 = weft_main_light_direction();
-    const float3 _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    const float _e98 = weft_clamp_cos(dot(_e56, _e38));
-    float n_dot_l_1 = saturate(dot(_e56, _e94));
-    float n_dot_h = saturate(dot(_e56, _e96));
-    float v_dot_h_1 = saturate(dot(_e38, _e96));
-    const float3 _e105 = weft_aniso_to_frame(_e87, _e38);
-    const float3 _e106 = weft_aniso_to_frame(_e87, _e94);
-    const float3 _e107 = weft_aniso_to_frame(_e87, _e96);
+    float3 _e80 = fibre;
+    const float3x3 _e84 = weft_tangent_frame(_e53, float4(_e80, in_1.world_tangent.w));
+    uint _e87 = material.diffuse_uses_aniso_normal;
+    float3 n_diff = ((_e87 != 0u) ? _e53 : n_geo);
+    const WeftLightGeometry _e91 = weft_main_light_geometry(_e53, v_4);
+    const float3 _e92 = weft_aniso_to_frame(_e84, v_4);
+    const float3 _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    const float3 _e96 = weft_aniso_to_frame(_e84, _e91.h);
     float k = material.anisotropy;
     {
-        const float2 _e112 = silk_ward_alpha_seed(smoothness_1, k);
-        lobe.alpha = _e112;
-        const float _e115 = silk_ibl_roughness(_e112);
-        lobe.ibl_roughness = _e115;
+        const float2 _e101 = silk_ward_alpha_seed(smoothness_1, k);
+        lobe.alpha = _e101;
+        const float _e104 = silk_ibl_roughness(_e101);
+        lobe.ibl_roughness = _e104;
         {
-            const float _e117 = silk_ward_seed(_e107, n_dot_l_1, _e98, _e112);
-            lobe.value = (_e117 * n_dot_l_1);
+            const float _e108 = silk_ward_seed(_e96, _e91.n_dot_l, _e91.n_dot_v, _e101);
+            lobe.value = (_e108 * _e91.n_dot_l);
         }
     }
-    const float3 _e119 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    const float3 _e122 = weft_f_schlick(f0_3, v_dot_h_1);
-    const float3 _e126 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = ((((1.0).xxx - _e122) * _e126) * n_dot_l_diffuse);
-    float _e130 = lobe.value;
-    float3 direct = ((diffuse + (_e122 * _e130)) * _e119);
-    reflect_n = _e56;
+    const float3 _e111 = weft_main_light_radiance();
+    float n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    const float3 _e116 = weft_f_schlick(f0_3, _e91.v_dot_h);
+    const float3 _e120 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = ((((1.0).xxx - _e116) * _e120) * n_dot_l_diffuse);
+    float _e124 = lobe.value;
+    float3 direct = ((diffuse + (_e116 * _e124)) * _e111);
+    reflect_n = _e53;
     {
-        float _e138 = lobe.ibl_roughness;
-        const float3 _e139 = weft_env_brdf_approx(f0_3, _e98, _e138);
-        env_brdf = _e139;
-        float _e143 = lobe.ibl_roughness;
-        const float3 _e144 = weft_f_schlick_roughness(f0_3, _e98, _e143);
-        ambient_kd = ((1.0).xxx - _e144);
+        float _e133 = lobe.ibl_roughness;
+        const float3 _e134 = weft_env_brdf_approx(f0_3, _e91.n_dot_v, _e133);
+        env_brdf = _e134;
+        float _e139 = lobe.ibl_roughness;
+        const float3 _e140 = weft_f_schlick_roughness(f0_3, _e91.n_dot_v, _e139);
+        ambient_kd = ((1.0).xxx - _e140);
     }
-    float3 _e147 = reflect_n;
-    float _e150 = lobe.ibl_roughness;
-    const float3 _e151 = weft_prefiltered_radiance(reflect(-(_e38), _e147), _e150);
-    float3 _e152 = env_brdf;
-    const float3 _e154 = weft_sh_irradiance(n_diff);
-    float3 _e155 = ambient_kd;
-    float3 indirect = ((_e151 * _e152) + ((_e154 * _e155) * diffuse_albedo));
+    float3 _e143 = reflect_n;
+    float _e146 = lobe.ibl_roughness;
+    const float3 _e147 = weft_prefiltered_radiance(reflect(-(v_4), _e143), _e146);
+    float3 _e148 = env_brdf;
+    const float3 _e150 = weft_sh_irradiance(n_diff);
+    float3 _e151 = ambient_kd;
+    float3 indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     flow_strength: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -198,21 +212,34 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_3: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
+    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_2);
+    let _e13 = weft_any_perpendicular(n_3);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_2, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_2);
+    let b_1 = (cross(n_3, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_3);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -300,72 +327,68 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let metallic = saturate(_e25);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e38 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e40 = weft_safe_normalize(in_1.world_normal, _e38);
-    let _e42 = weft_tangent_frame(_e40, in_1.world_tangent);
-    let _e46 = material.aniso_normal_map_st;
-    let _e47 = weft_transform_uv(in_1.uv0_, _e46);
-    let _e50 = textureSample(aniso_normal_map, material_sampler, _e47);
-    let texel_1 = _e50.xyz;
-    let _e54 = material.aniso_normal_strength;
-    let _e55 = weft_unpack_normal(texel_1, _e54);
-    let _e56 = weft_normal_from_tangent_space(_e42, _e55);
-    fibre = _e42[0];
+    let _e35 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e35.v;
+    let n_geo = _e35.n;
+    let _e39 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    let _e43 = material.aniso_normal_map_st;
+    let _e44 = weft_transform_uv(in_1.uv0_, _e43);
+    let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
+    let texel_1 = _e47.xyz;
+    let _e51 = material.aniso_normal_strength;
+    let _e52 = weft_unpack_normal(texel_1, _e51);
+    let _e53 = weft_normal_from_tangent_space(_e39, _e52);
+    fibre = _e39[0];
     {
-        let _e61 = textureSample(flow_map, material_sampler, _e5);
-        let flow = ((_e61.xy * 2f) - vec2(1f));
-        let dir_1 = ((_e42[0] * flow.x) + (_e42[1] * flow.y));
-        let _e78 = material.flow_strength;
-        let _e82 = weft_safe_normalize(mix(_e42[0], dir_1, saturate(_e78)), _e42[0]);
-        fibre = _e82;
+        let _e58 = textureSample(flow_map, material_sampler, _e5);
+        let flow = ((_e58.xy * 2f) - vec2(1f));
+        let dir_1 = ((_e39[0] * flow.x) + (_e39[1] * flow.y));
+        let _e75 = material.flow_strength;
+        let _e79 = weft_safe_normalize(mix(_e39[0], dir_1, saturate(_e75)), _e39[0]);
+        fibre = _e79;
     }
-    let _e83 = fibre;
-    let _e87 = weft_tangent_frame(_e56, vec4<f32>(_e83, in_1.world_tangent.w));
-    let _e90 = material.diffuse_uses_aniso_normal;
-    let n_diff = select(_e40, _e56, (_e90 != 0u));
-    let _e94 = weft_main_light_direction();
-    let _e96 = weft_safe_normalize((_e94 + _e38), _e56);
-    let _e98 = weft_clamp_cos(dot(_e56, _e38));
-    let n_dot_l_1 = saturate(dot(_e56, _e94));
-    let n_dot_h = saturate(dot(_e56, _e96));
-    let v_dot_h_1 = saturate(dot(_e38, _e96));
-    let _e105 = weft_aniso_to_frame(_e87, _e38);
-    let _e106 = weft_aniso_to_frame(_e87, _e94);
-    let _e107 = weft_aniso_to_frame(_e87, _e96);
+    let _e80 = fibre;
+    let _e84 = weft_tangent_frame(_e53, vec4<f32>(_e80, in_1.world_tangent.w));
+    let _e87 = material.diffuse_uses_aniso_normal;
+    let n_diff = select(n_geo, _e53, (_e87 != 0u));
+    let _e91 = weft_main_light_geometry(_e53, v_4);
+    let _e92 = weft_aniso_to_frame(_e84, v_4);
+    let _e94 = weft_aniso_to_frame(_e84, _e91.l);
+    let _e96 = weft_aniso_to_frame(_e84, _e91.h);
     let k = material.anisotropy;
     {
-        let _e112 = silk_ward_alpha_seed(smoothness_1, k);
-        lobe.alpha = _e112;
-        let _e115 = silk_ibl_roughness(_e112);
-        lobe.ibl_roughness = _e115;
+        let _e101 = silk_ward_alpha_seed(smoothness_1, k);
+        lobe.alpha = _e101;
+        let _e104 = silk_ibl_roughness(_e101);
+        lobe.ibl_roughness = _e104;
         {
-            let _e117 = silk_ward_seed(_e107, n_dot_l_1, _e98, _e112);
-            lobe.value = (_e117 * n_dot_l_1);
+            let _e108 = silk_ward_seed(_e96, _e91.n_dot_l, _e91.n_dot_v, _e101);
+            lobe.value = (_e108 * _e91.n_dot_l);
         }
     }
-    let _e119 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_diff, _e94));
-    let _e122 = weft_f_schlick(f0_3, v_dot_h_1);
-    let _e126 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (((vec3(1f) - _e122) * _e126) * n_dot_l_diffuse);
-    let _e130 = lobe.value;
-    let direct = ((diffuse + (_e122 * _e130)) * _e119);
-    reflect_n = _e56;
+    let _e111 = weft_main_light_radiance();
+    let n_dot_l_diffuse = saturate(dot(n_diff, _e91.l));
+    let _e116 = weft_f_schlick(f0_3, _e91.v_dot_h);
+    let _e120 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (((vec3(1f) - _e116) * _e120) * n_dot_l_diffuse);
+    let _e124 = lobe.value;
+    let direct = ((diffuse + (_e116 * _e124)) * _e111);
+    reflect_n = _e53;
     {
-        let _e138 = lobe.ibl_roughness;
-        let _e139 = weft_env_brdf_approx(f0_3, _e98, _e138);
-        env_brdf = _e139;
-        let _e143 = lobe.ibl_roughness;
-        let _e144 = weft_f_schlick_roughness(f0_3, _e98, _e143);
-        ambient_kd = (vec3(1f) - _e144);
+        let _e133 = lobe.ibl_roughness;
+        let _e134 = weft_env_brdf_approx(f0_3, _e91.n_dot_v, _e133);
+        env_brdf = _e134;
+        let _e139 = lobe.ibl_roughness;
+        let _e140 = weft_f_schlick_roughness(f0_3, _e91.n_dot_v, _e139);
+        ambient_kd = (vec3(1f) - _e140);
     }
-    let _e147 = reflect_n;
-    let _e150 = lobe.ibl_roughness;
-    let _e151 = weft_prefiltered_radiance(reflect(-(_e38), _e147), _e150);
-    let _e152 = env_brdf;
-    let _e154 = weft_sh_irradiance(n_diff);
-    let _e155 = ambient_kd;
-    let indirect = ((_e151 * _e152) + ((_e154 * _e155) * diffuse_albedo));
+    let _e143 = reflect_n;
+    let _e146 = lobe.ibl_roughness;
+    let _e147 = weft_prefiltered_radiance(reflect(-(v_4), _e143), _e146);
+    let _e148 = env_brdf;
+    let _e150 = weft_sh_irradiance(n_diff);
+    let _e151 = ambient_kd;
+    let indirect = ((_e147 * _e148) + ((_e150 * _e151) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

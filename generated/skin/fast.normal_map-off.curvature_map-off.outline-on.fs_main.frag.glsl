@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -203,17 +215,30 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(vec3 n_3, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+float skin_dual_ggx(vec3 n_4, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -241,62 +266,57 @@ void main() {
     float f0_3 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_2 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
-    n = _e41;
-    vec3 _e65 = weft_main_light_direction();
-    vec3 _e67 = n;
-    vec3 _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    vec3 _e69 = n;
-    float _e71 = weft_clamp_cos(dot(_e69, _e39));
-    vec3 _e72 = n;
-    float n_dot_l_2 = clamp(dot(_e72, _e65), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e39, _e68), 0.0, 1.0);
-    vec3 _e77 = n;
-    float _e85 = _group_1_binding_0_fs.dark_bound;
-    float _e88 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e77, _e65) * 0.5) + 0.5), _e85, _e88);
+    n = n_geom;
+    vec3 _e62 = n;
+    WeftLightGeometry _e63 = weft_main_light_geometry(_e62, v_2);
+    vec3 _e64 = n;
+    float _e73 = _group_1_binding_0_fs.dark_bound;
+    float _e76 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e64, _e63.l) * 0.5) + 0.5), _e73, _e76);
     {
         {
-            float _e91 = curvature;
-            vec4 _e93 = table_skin_lut(vec2(u, _e91));
-            falloff = _e93.xyz;
+            float _e79 = curvature;
+            vec4 _e81 = table_skin_lut(vec2(u, _e79));
+            falloff = _e81.xyz;
         }
     }
-    vec3 _e95 = falloff;
-    falloff = max(_e95, vec3(0.0));
-    vec2 _e100 = weft_env_brdf_lut(_e71, roughness_7);
-    vec3 _e101 = weft_env_brdf_from_lut(vec3(f0_3), _e100);
+    vec3 _e83 = falloff;
+    falloff = max(_e83, vec3(0.0));
+    vec2 _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_7);
+    vec3 _e90 = weft_env_brdf_from_lut(vec3(f0_3), _e89);
     {
-        vec3 _e104 = n;
-        float _e107 = _group_1_binding_0_fs.lobe_weight;
-        float _e108 = skin_dual_ggx(_e104, _e68, _e71, n_dot_l_2, v_dot_h_2, roughness_7, _e107, f0_3);
-        specular = ((_e108 * n_dot_l_2) * mask);
-        kd = max((vec3(1.0) - _e101), vec3(0.0));
+        vec3 _e93 = n;
+        float _e100 = _group_1_binding_0_fs.lobe_weight;
+        float _e101 = skin_dual_ggx(_e93, _e63.h, _e63.n_dot_v, _e63.n_dot_l, _e63.v_dot_h, roughness_7, _e100, f0_3);
+        specular = ((_e101 * _e63.n_dot_l) * mask);
+        kd = max((vec3(1.0) - _e90), vec3(0.0));
     }
-    vec3 _e117 = weft_main_light_radiance();
-    vec3 _e118 = kd;
-    vec3 _e119 = weft_diffuse_lambert(albedo_1);
-    vec3 _e121 = falloff;
-    float _e123 = specular;
-    vec3 direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
+    vec3 _e111 = weft_main_light_radiance();
+    vec3 _e112 = kd;
+    vec3 _e113 = weft_diffuse_lambert(albedo_1);
+    vec3 _e115 = falloff;
+    float _e117 = specular;
+    vec3 direct = ((((_e112 * _e113) * _e115) + vec3(_e117)) * _e111);
+    vec3 _e121 = n;
+    vec3 _e122 = weft_sh_irradiance(_e121);
+    vec3 _e123 = kd;
+    vec3 indirect_diffuse = ((_e122 * _e123) * albedo_1);
     vec3 _e127 = n;
-    vec3 _e128 = weft_sh_irradiance(_e127);
-    vec3 _e129 = kd;
-    vec3 indirect_diffuse = ((_e128 * _e129) * albedo_1);
-    vec3 _e133 = n;
-    vec3 _e135 = weft_prefiltered_radiance(reflect(-(_e39), _e133), roughness_7);
-    vec3 indirect_specular = ((_e135 * _e101) * mask);
+    vec3 _e129 = weft_prefiltered_radiance(reflect(-(v_2), _e127), roughness_7);
+    vec3 indirect_specular = ((_e129 * _e90) * mask);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

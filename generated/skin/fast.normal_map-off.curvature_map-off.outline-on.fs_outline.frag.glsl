@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -122,13 +134,13 @@ vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(vec3 n_3, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+float skin_dual_ggx(vec3 n_4, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);

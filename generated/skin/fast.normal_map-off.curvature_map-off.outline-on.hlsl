@@ -41,6 +41,24 @@ struct WeftOutlineVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -93,16 +111,16 @@ struct VertexOutput_vs_outline {
 };
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position_1 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_2 : SV_Position;
@@ -246,19 +264,54 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(float3 n_3, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
+float skin_dual_ggx(float3 n_4, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
 {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    const float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    const float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     const float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    const float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    const float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     const float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     const float3 _e25 = weft_f_schlick((f0_2).xxx, v_dot_h_1);
@@ -343,7 +396,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float curvature = (float)0;
     float3 n = (float3)0;
     float3 falloff = (float3)0;
@@ -363,62 +416,57 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float f0_3 = clamp(_e25, 0.0, 1.0);
     float4 _e31 = specular_mask.Sample(material_sampler, _e5);
     float mask = saturate(_e31.x);
-    const float3 _e39 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    float3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    float3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    const WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    float3 v_2 = _e36.v;
+    float3 n_geom = _e36.n;
+    float3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    float3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float4 _e54 = curvature_map.Sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = max(_e58, 0.0);
+    float4 _e51 = curvature_map.Sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = saturate((factor * estimated));
-    n = _e41;
-    const float3 _e65 = weft_main_light_direction();
-    float3 _e67 = n;
-    const float3 _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    float3 _e69 = n;
-    const float _e71 = weft_clamp_cos(dot(_e69, _e39));
-    float3 _e72 = n;
-    float n_dot_l_2 = saturate(dot(_e72, _e65));
-    float v_dot_h_2 = saturate(dot(_e39, _e68));
-    float3 _e77 = n;
-    float _e85 = material.dark_bound;
-    float _e88 = material.bright_bound;
-    float u = clamp(((dot(_e77, _e65) * 0.5) + 0.5), _e85, _e88);
+    n = n_geom;
+    float3 _e62 = n;
+    const WeftLightGeometry _e63 = weft_main_light_geometry(_e62, v_2);
+    float3 _e64 = n;
+    float _e73 = material.dark_bound;
+    float _e76 = material.bright_bound;
+    float u = clamp(((dot(_e64, _e63.l) * 0.5) + 0.5), _e73, _e76);
     {
         {
-            float _e91 = curvature;
-            const float4 _e93 = table_skin_lut(float2(u, _e91));
-            falloff = _e93.xyz;
+            float _e79 = curvature;
+            const float4 _e81 = table_skin_lut(float2(u, _e79));
+            falloff = _e81.xyz;
         }
     }
-    float3 _e95 = falloff;
-    falloff = max(_e95, (0.0).xxx);
-    const float2 _e100 = weft_env_brdf_lut(_e71, roughness_7);
-    const float3 _e101 = weft_env_brdf_from_lut((f0_3).xxx, _e100);
+    float3 _e83 = falloff;
+    falloff = max(_e83, (0.0).xxx);
+    const float2 _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_7);
+    const float3 _e90 = weft_env_brdf_from_lut((f0_3).xxx, _e89);
     {
-        float3 _e104 = n;
-        float _e107 = material.lobe_weight;
-        const float _e108 = skin_dual_ggx(_e104, _e68, _e71, n_dot_l_2, v_dot_h_2, roughness_7, _e107, f0_3);
-        specular = ((_e108 * n_dot_l_2) * mask);
-        kd = max(((1.0).xxx - _e101), (0.0).xxx);
+        float3 _e93 = n;
+        float _e100 = material.lobe_weight;
+        const float _e101 = skin_dual_ggx(_e93, _e63.h, _e63.n_dot_v, _e63.n_dot_l, _e63.v_dot_h, roughness_7, _e100, f0_3);
+        specular = ((_e101 * _e63.n_dot_l) * mask);
+        kd = max(((1.0).xxx - _e90), (0.0).xxx);
     }
-    const float3 _e117 = weft_main_light_radiance();
-    float3 _e118 = kd;
-    const float3 _e119 = weft_diffuse_lambert(albedo_1);
-    float3 _e121 = falloff;
-    float _e123 = specular;
-    float3 direct = ((((_e118 * _e119) * _e121) + (_e123).xxx) * _e117);
+    const float3 _e111 = weft_main_light_radiance();
+    float3 _e112 = kd;
+    const float3 _e113 = weft_diffuse_lambert(albedo_1);
+    float3 _e115 = falloff;
+    float _e117 = specular;
+    float3 direct = ((((_e112 * _e113) * _e115) + (_e117).xxx) * _e111);
+    float3 _e121 = n;
+    const float3 _e122 = weft_sh_irradiance(_e121);
+    float3 _e123 = kd;
+    float3 indirect_diffuse = ((_e122 * _e123) * albedo_1);
     float3 _e127 = n;
-    const float3 _e128 = weft_sh_irradiance(_e127);
-    float3 _e129 = kd;
-    float3 indirect_diffuse = ((_e128 * _e129) * albedo_1);
-    float3 _e133 = n;
-    const float3 _e135 = weft_prefiltered_radiance(reflect(-(_e39), _e133), roughness_7);
-    float3 indirect_specular = ((_e135 * _e101) * mask);
+    const float3 _e129 = weft_prefiltered_radiance(reflect(-(v_2), _e127), roughness_7);
+    float3 indirect_specular = ((_e129 * _e90) * mask);
     float3 color = ((direct + indirect_diffuse) + indirect_specular);
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

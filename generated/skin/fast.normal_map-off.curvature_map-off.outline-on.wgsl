@@ -38,6 +38,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,17 +229,30 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_dual_ggx(n_3: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+fn skin_dual_ggx(n_4: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
     let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
     let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
-    let _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    let _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     let lobe0_ = (_e18 * _e19);
-    let _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    let _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     let lobe1_ = (_e21 * _e22);
     let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -325,62 +352,57 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_3 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_2.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_2 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_2.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
-    let _e65 = weft_main_light_direction();
-    let _e67 = n;
-    let _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    let _e69 = n;
-    let _e71 = weft_clamp_cos(dot(_e69, _e39));
-    let _e72 = n;
-    let n_dot_l_2 = saturate(dot(_e72, _e65));
-    let v_dot_h_2 = saturate(dot(_e39, _e68));
-    let _e77 = n;
-    let _e85 = material.dark_bound;
-    let _e88 = material.bright_bound;
-    let u = clamp(((dot(_e77, _e65) * 0.5f) + 0.5f), _e85, _e88);
+    n = n_geom;
+    let _e62 = n;
+    let _e63 = weft_main_light_geometry(_e62, v_2);
+    let _e64 = n;
+    let _e73 = material.dark_bound;
+    let _e76 = material.bright_bound;
+    let u = clamp(((dot(_e64, _e63.l) * 0.5f) + 0.5f), _e73, _e76);
     {
         {
-            let _e91 = curvature;
-            let _e93 = table_skin_lut(vec2<f32>(u, _e91));
-            falloff = _e93.xyz;
+            let _e79 = curvature;
+            let _e81 = table_skin_lut(vec2<f32>(u, _e79));
+            falloff = _e81.xyz;
         }
     }
-    let _e95 = falloff;
-    falloff = max(_e95, vec3(0f));
-    let _e100 = weft_env_brdf_lut(_e71, roughness_7);
-    let _e101 = weft_env_brdf_from_lut(vec3(f0_3), _e100);
+    let _e83 = falloff;
+    falloff = max(_e83, vec3(0f));
+    let _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_7);
+    let _e90 = weft_env_brdf_from_lut(vec3(f0_3), _e89);
     {
-        let _e104 = n;
-        let _e107 = material.lobe_weight;
-        let _e108 = skin_dual_ggx(_e104, _e68, _e71, n_dot_l_2, v_dot_h_2, roughness_7, _e107, f0_3);
-        specular = ((_e108 * n_dot_l_2) * mask);
-        kd = max((vec3(1f) - _e101), vec3(0f));
+        let _e93 = n;
+        let _e100 = material.lobe_weight;
+        let _e101 = skin_dual_ggx(_e93, _e63.h, _e63.n_dot_v, _e63.n_dot_l, _e63.v_dot_h, roughness_7, _e100, f0_3);
+        specular = ((_e101 * _e63.n_dot_l) * mask);
+        kd = max((vec3(1f) - _e90), vec3(0f));
     }
-    let _e117 = weft_main_light_radiance();
-    let _e118 = kd;
-    let _e119 = weft_diffuse_lambert(albedo_1);
-    let _e121 = falloff;
-    let _e123 = specular;
-    let direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
+    let _e111 = weft_main_light_radiance();
+    let _e112 = kd;
+    let _e113 = weft_diffuse_lambert(albedo_1);
+    let _e115 = falloff;
+    let _e117 = specular;
+    let direct = ((((_e112 * _e113) * _e115) + vec3(_e117)) * _e111);
+    let _e121 = n;
+    let _e122 = weft_sh_irradiance(_e121);
+    let _e123 = kd;
+    let indirect_diffuse = ((_e122 * _e123) * albedo_1);
     let _e127 = n;
-    let _e128 = weft_sh_irradiance(_e127);
-    let _e129 = kd;
-    let indirect_diffuse = ((_e128 * _e129) * albedo_1);
-    let _e133 = n;
-    let _e135 = weft_prefiltered_radiance(reflect(-(_e39), _e133), roughness_7);
-    let indirect_specular = ((_e135 * _e101) * mask);
+    let _e129 = weft_prefiltered_radiance(reflect(-(v_2), _e127), roughness_7);
+    let indirect_specular = ((_e129 * _e90) * mask);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -32,6 +32,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -80,16 +98,16 @@ Texture2D<float4> specular_mask : register(t6, space1);
 Texture2D<float4> skin_lut : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -233,19 +251,54 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(float3 n_3, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
+float skin_dual_ggx(float3 n_4, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
 {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    const float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    const float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     const float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    const float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    const float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     const float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     const float3 _e25 = weft_f_schlick((f0_2).xxx, v_dot_h_1);
@@ -280,7 +333,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float curvature = (float)0;
     float3 n = (float3)0;
     float3 falloff = (float3)0;
@@ -300,65 +353,60 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float f0_3 = clamp(_e25, 0.0, 1.0);
     float4 _e31 = specular_mask.Sample(material_sampler, _e5);
     float mask = saturate(_e31.x);
-    const float3 _e39 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    float3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    float3 _e45 = fwidth(in_1.world_position);
-    float dp = length(_e45);
+    const WeftSurface _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_2 = _e36.v;
+    float3 n_geom = _e36.n;
+    float3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    float3 _e42 = fwidth(in_1.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float4 _e54 = curvature_map.Sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = max(_e58, 0.0);
+    float4 _e51 = curvature_map.Sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = saturate((factor * estimated));
     {
         curvature = saturate((factor * mapped));
     }
-    n = _e41;
-    const float3 _e67 = weft_main_light_direction();
-    float3 _e69 = n;
-    const float3 _e70 = weft_safe_normalize((_e67 + _e39), _e69);
-    float3 _e71 = n;
-    const float _e73 = weft_clamp_cos(dot(_e71, _e39));
-    float3 _e74 = n;
-    float n_dot_l_2 = saturate(dot(_e74, _e67));
-    float v_dot_h_2 = saturate(dot(_e39, _e70));
-    float3 _e79 = n;
-    float _e87 = material.dark_bound;
-    float _e90 = material.bright_bound;
-    float u = clamp(((dot(_e79, _e67) * 0.5) + 0.5), _e87, _e90);
+    n = n_geom;
+    float3 _e64 = n;
+    const WeftLightGeometry _e65 = weft_main_light_geometry(_e64, v_2);
+    float3 _e66 = n;
+    float _e75 = material.dark_bound;
+    float _e78 = material.bright_bound;
+    float u = clamp(((dot(_e66, _e65.l) * 0.5) + 0.5), _e75, _e78);
     {
         {
-            float _e93 = curvature;
-            const float4 _e95 = table_skin_lut(float2(u, _e93));
-            falloff = _e95.xyz;
+            float _e81 = curvature;
+            const float4 _e83 = table_skin_lut(float2(u, _e81));
+            falloff = _e83.xyz;
         }
     }
-    float3 _e97 = falloff;
-    falloff = max(_e97, (0.0).xxx);
-    const float2 _e102 = weft_env_brdf_lut(_e73, roughness_7);
-    const float3 _e103 = weft_env_brdf_from_lut((f0_3).xxx, _e102);
+    float3 _e85 = falloff;
+    falloff = max(_e85, (0.0).xxx);
+    const float2 _e91 = weft_env_brdf_lut(_e65.n_dot_v, roughness_7);
+    const float3 _e92 = weft_env_brdf_from_lut((f0_3).xxx, _e91);
     {
-        float3 _e106 = n;
-        float _e109 = material.lobe_weight;
-        const float _e110 = skin_dual_ggx(_e106, _e70, _e73, n_dot_l_2, v_dot_h_2, roughness_7, _e109, f0_3);
-        specular = ((_e110 * n_dot_l_2) * mask);
-        kd = max(((1.0).xxx - _e103), (0.0).xxx);
+        float3 _e95 = n;
+        float _e102 = material.lobe_weight;
+        const float _e103 = skin_dual_ggx(_e95, _e65.h, _e65.n_dot_v, _e65.n_dot_l, _e65.v_dot_h, roughness_7, _e102, f0_3);
+        specular = ((_e103 * _e65.n_dot_l) * mask);
+        kd = max(((1.0).xxx - _e92), (0.0).xxx);
     }
-    const float3 _e119 = weft_main_light_radiance();
-    float3 _e120 = kd;
-    const float3 _e121 = weft_diffuse_lambert(albedo_1);
-    float3 _e123 = falloff;
-    float _e125 = specular;
-    float3 direct = ((((_e120 * _e121) * _e123) + (_e125).xxx) * _e119);
+    const float3 _e113 = weft_main_light_radiance();
+    float3 _e114 = kd;
+    const float3 _e115 = weft_diffuse_lambert(albedo_1);
+    float3 _e117 = falloff;
+    float _e119 = specular;
+    float3 direct = ((((_e114 * _e115) * _e117) + (_e119).xxx) * _e113);
+    float3 _e123 = n;
+    const float3 _e124 = weft_sh_irradiance(_e123);
+    float3 _e125 = kd;
+    float3 indirect_diffuse = ((_e124 * _e125) * albedo_1);
     float3 _e129 = n;
-    const float3 _e130 = weft_sh_irradiance(_e129);
-    float3 _e131 = kd;
-    float3 indirect_diffuse = ((_e130 * _e131) * albedo_1);
-    float3 _e135 = n;
-    const float3 _e137 = weft_prefiltered_radiance(reflect(-(_e39), _e135), roughness_7);
-    float3 indirect_specular = ((_e137 * _e103) * mask);
+    const float3 _e131 = weft_prefiltered_radiance(reflect(-(v_2), _e129), roughness_7);
+    float3 indirect_specular = ((_e131 * _e92) * mask);
     float3 color = ((direct + indirect_diffuse) + indirect_specular);
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

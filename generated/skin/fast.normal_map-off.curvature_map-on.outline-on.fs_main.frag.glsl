@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -203,17 +215,30 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(vec3 n_3, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+float skin_dual_ggx(vec3 n_4, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -241,65 +266,60 @@ void main() {
     float f0_3 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_2 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
     {
         curvature = clamp((factor * mapped), 0.0, 1.0);
     }
-    n = _e41;
-    vec3 _e67 = weft_main_light_direction();
-    vec3 _e69 = n;
-    vec3 _e70 = weft_safe_normalize((_e67 + _e39), _e69);
-    vec3 _e71 = n;
-    float _e73 = weft_clamp_cos(dot(_e71, _e39));
-    vec3 _e74 = n;
-    float n_dot_l_2 = clamp(dot(_e74, _e67), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e39, _e70), 0.0, 1.0);
-    vec3 _e79 = n;
-    float _e87 = _group_1_binding_0_fs.dark_bound;
-    float _e90 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e79, _e67) * 0.5) + 0.5), _e87, _e90);
+    n = n_geom;
+    vec3 _e64 = n;
+    WeftLightGeometry _e65 = weft_main_light_geometry(_e64, v_2);
+    vec3 _e66 = n;
+    float _e75 = _group_1_binding_0_fs.dark_bound;
+    float _e78 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e66, _e65.l) * 0.5) + 0.5), _e75, _e78);
     {
         {
-            float _e93 = curvature;
-            vec4 _e95 = table_skin_lut(vec2(u, _e93));
-            falloff = _e95.xyz;
+            float _e81 = curvature;
+            vec4 _e83 = table_skin_lut(vec2(u, _e81));
+            falloff = _e83.xyz;
         }
     }
-    vec3 _e97 = falloff;
-    falloff = max(_e97, vec3(0.0));
-    vec2 _e102 = weft_env_brdf_lut(_e73, roughness_7);
-    vec3 _e103 = weft_env_brdf_from_lut(vec3(f0_3), _e102);
+    vec3 _e85 = falloff;
+    falloff = max(_e85, vec3(0.0));
+    vec2 _e91 = weft_env_brdf_lut(_e65.n_dot_v, roughness_7);
+    vec3 _e92 = weft_env_brdf_from_lut(vec3(f0_3), _e91);
     {
-        vec3 _e106 = n;
-        float _e109 = _group_1_binding_0_fs.lobe_weight;
-        float _e110 = skin_dual_ggx(_e106, _e70, _e73, n_dot_l_2, v_dot_h_2, roughness_7, _e109, f0_3);
-        specular = ((_e110 * n_dot_l_2) * mask);
-        kd = max((vec3(1.0) - _e103), vec3(0.0));
+        vec3 _e95 = n;
+        float _e102 = _group_1_binding_0_fs.lobe_weight;
+        float _e103 = skin_dual_ggx(_e95, _e65.h, _e65.n_dot_v, _e65.n_dot_l, _e65.v_dot_h, roughness_7, _e102, f0_3);
+        specular = ((_e103 * _e65.n_dot_l) * mask);
+        kd = max((vec3(1.0) - _e92), vec3(0.0));
     }
-    vec3 _e119 = weft_main_light_radiance();
-    vec3 _e120 = kd;
-    vec3 _e121 = weft_diffuse_lambert(albedo_1);
-    vec3 _e123 = falloff;
-    float _e125 = specular;
-    vec3 direct = ((((_e120 * _e121) * _e123) + vec3(_e125)) * _e119);
+    vec3 _e113 = weft_main_light_radiance();
+    vec3 _e114 = kd;
+    vec3 _e115 = weft_diffuse_lambert(albedo_1);
+    vec3 _e117 = falloff;
+    float _e119 = specular;
+    vec3 direct = ((((_e114 * _e115) * _e117) + vec3(_e119)) * _e113);
+    vec3 _e123 = n;
+    vec3 _e124 = weft_sh_irradiance(_e123);
+    vec3 _e125 = kd;
+    vec3 indirect_diffuse = ((_e124 * _e125) * albedo_1);
     vec3 _e129 = n;
-    vec3 _e130 = weft_sh_irradiance(_e129);
-    vec3 _e131 = kd;
-    vec3 indirect_diffuse = ((_e130 * _e131) * albedo_1);
-    vec3 _e135 = n;
-    vec3 _e137 = weft_prefiltered_radiance(reflect(-(_e39), _e135), roughness_7);
-    vec3 indirect_specular = ((_e137 * _e103) * mask);
+    vec3 _e131 = weft_prefiltered_radiance(reflect(-(v_2), _e129), roughness_7);
+    vec3 indirect_specular = ((_e131 * _e92) * mask);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

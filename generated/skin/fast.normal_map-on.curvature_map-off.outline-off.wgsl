@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,21 +229,34 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -237,17 +264,24 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_dual_ggx(n_5: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+fn skin_dual_ggx(n_7: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
     let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
     let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
-    let _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    let _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     let lobe0_ = (_e18 * _e19);
-    let _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    let _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     let lobe1_ = (_e21 * _e22);
     let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -299,72 +333,65 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_3 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_1.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_1.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
+    n = n_geom;
     {
-        let _e65 = n;
-        let _e67 = weft_tangent_frame(_e65, in_1.world_tangent);
-        let _e70 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e70.xyz;
-        let _e74 = material.normal_strength;
-        let _e75 = weft_unpack_normal(texel_1, _e74);
-        let _e76 = weft_normal_from_tangent_space(_e67, _e75);
-        n = _e76;
+        let _e64 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e64.xyz;
+        let _e66 = n;
+        let _e70 = material.normal_strength;
+        let _e71 = weft_mapped_normal(_e66, in_1.world_tangent, texel_2, _e70);
+        n = _e71;
     }
-    let _e77 = weft_main_light_direction();
-    let _e79 = n;
-    let _e80 = weft_safe_normalize((_e77 + _e39), _e79);
-    let _e81 = n;
-    let _e83 = weft_clamp_cos(dot(_e81, _e39));
-    let _e84 = n;
-    let n_dot_l_2 = saturate(dot(_e84, _e77));
-    let v_dot_h_2 = saturate(dot(_e39, _e80));
-    let _e89 = n;
-    let _e97 = material.dark_bound;
-    let _e100 = material.bright_bound;
-    let u = clamp(((dot(_e89, _e77) * 0.5f) + 0.5f), _e97, _e100);
+    let _e72 = n;
+    let _e73 = weft_main_light_geometry(_e72, v_3);
+    let _e74 = n;
+    let _e83 = material.dark_bound;
+    let _e86 = material.bright_bound;
+    let u = clamp(((dot(_e74, _e73.l) * 0.5f) + 0.5f), _e83, _e86);
     {
         {
-            let _e103 = curvature;
-            let _e105 = table_skin_lut(vec2<f32>(u, _e103));
-            falloff = _e105.xyz;
+            let _e89 = curvature;
+            let _e91 = table_skin_lut(vec2<f32>(u, _e89));
+            falloff = _e91.xyz;
         }
     }
-    let _e107 = falloff;
-    falloff = max(_e107, vec3(0f));
-    let _e112 = weft_env_brdf_lut(_e83, roughness_7);
-    let _e113 = weft_env_brdf_from_lut(vec3(f0_3), _e112);
+    let _e93 = falloff;
+    falloff = max(_e93, vec3(0f));
+    let _e99 = weft_env_brdf_lut(_e73.n_dot_v, roughness_7);
+    let _e100 = weft_env_brdf_from_lut(vec3(f0_3), _e99);
     {
-        let _e116 = n;
-        let _e119 = material.lobe_weight;
-        let _e120 = skin_dual_ggx(_e116, _e80, _e83, n_dot_l_2, v_dot_h_2, roughness_7, _e119, f0_3);
-        specular = ((_e120 * n_dot_l_2) * mask);
-        kd = max((vec3(1f) - _e113), vec3(0f));
+        let _e103 = n;
+        let _e110 = material.lobe_weight;
+        let _e111 = skin_dual_ggx(_e103, _e73.h, _e73.n_dot_v, _e73.n_dot_l, _e73.v_dot_h, roughness_7, _e110, f0_3);
+        specular = ((_e111 * _e73.n_dot_l) * mask);
+        kd = max((vec3(1f) - _e100), vec3(0f));
     }
-    let _e129 = weft_main_light_radiance();
-    let _e130 = kd;
-    let _e131 = weft_diffuse_lambert(albedo_1);
-    let _e133 = falloff;
-    let _e135 = specular;
-    let direct = ((((_e130 * _e131) * _e133) + vec3(_e135)) * _e129);
-    let _e139 = n;
-    let _e140 = weft_sh_irradiance(_e139);
-    let _e141 = kd;
-    let indirect_diffuse = ((_e140 * _e141) * albedo_1);
-    let _e145 = n;
-    let _e147 = weft_prefiltered_radiance(reflect(-(_e39), _e145), roughness_7);
-    let indirect_specular = ((_e147 * _e113) * mask);
+    let _e121 = weft_main_light_radiance();
+    let _e122 = kd;
+    let _e123 = weft_diffuse_lambert(albedo_1);
+    let _e125 = falloff;
+    let _e127 = specular;
+    let direct = ((((_e122 * _e123) * _e125) + vec3(_e127)) * _e121);
+    let _e131 = n;
+    let _e132 = weft_sh_irradiance(_e131);
+    let _e133 = kd;
+    let indirect_diffuse = ((_e132 * _e133) * albedo_1);
+    let _e137 = n;
+    let _e139 = weft_prefiltered_radiance(reflect(-(v_3), _e137), roughness_7);
+    let indirect_specular = ((_e139 * _e100) * mask);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

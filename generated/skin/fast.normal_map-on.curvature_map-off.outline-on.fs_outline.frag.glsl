@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -125,21 +137,21 @@ vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -147,17 +159,24 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(vec3 n_5, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+float skin_dual_ggx(vec3 n_7, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    float _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);

@@ -41,6 +41,24 @@ struct WeftOutlineVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -94,16 +112,16 @@ struct VertexOutput_vs_outline {
 };
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position_1 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_2 : SV_Position;
@@ -255,23 +273,58 @@ float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -280,19 +333,27 @@ float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
     return _e4;
 }
 
+float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(float3 n_5, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
+float skin_dual_ggx(float3 n_7, float3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2)
 {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    const float _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    const float _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     const float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    const float _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    const float _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     const float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     const float3 _e25 = weft_f_schlick((f0_2).xxx, v_dot_h_1);
@@ -377,7 +438,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float curvature = (float)0;
     float3 n = (float3)0;
     float3 falloff = (float3)0;
@@ -397,72 +458,65 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float f0_3 = clamp(_e25, 0.0, 1.0);
     float4 _e31 = specular_mask.Sample(material_sampler, _e5);
     float mask = saturate(_e31.x);
-    const float3 _e39 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    float3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    float3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    const WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    float3 v_3 = _e36.v;
+    float3 n_geom = _e36.n;
+    float3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    float3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float4 _e54 = curvature_map.Sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = max(_e58, 0.0);
+    float4 _e51 = curvature_map.Sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = saturate((factor * estimated));
-    n = _e41;
+    n = n_geom;
     {
-        float3 _e65 = n;
-        const float3x3 _e67 = weft_tangent_frame(_e65, in_2.world_tangent);
-        float4 _e70 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e70.xyz;
-        float _e74 = material.normal_strength;
-        const float3 _e75 = weft_unpack_normal(texel_1, _e74);
-        const float3 _e76 = weft_normal_from_tangent_space(_e67, _e75);
-        n = _e76;
+        float4 _e64 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e64.xyz;
+        float3 _e66 = n;
+        float _e70 = material.normal_strength;
+        const float3 _e71 = weft_mapped_normal(_e66, in_2.world_tangent, texel_2, _e70);
+        n = _e71;
     }
-    const float3 _e77 = weft_main_light_direction();
-    float3 _e79 = n;
-    const float3 _e80 = weft_safe_normalize((_e77 + _e39), _e79);
-    float3 _e81 = n;
-    const float _e83 = weft_clamp_cos(dot(_e81, _e39));
-    float3 _e84 = n;
-    float n_dot_l_2 = saturate(dot(_e84, _e77));
-    float v_dot_h_2 = saturate(dot(_e39, _e80));
-    float3 _e89 = n;
-    float _e97 = material.dark_bound;
-    float _e100 = material.bright_bound;
-    float u = clamp(((dot(_e89, _e77) * 0.5) + 0.5), _e97, _e100);
+    float3 _e72 = n;
+    const WeftLightGeometry _e73 = weft_main_light_geometry(_e72, v_3);
+    float3 _e74 = n;
+    float _e83 = material.dark_bound;
+    float _e86 = material.bright_bound;
+    float u = clamp(((dot(_e74, _e73.l) * 0.5) + 0.5), _e83, _e86);
     {
         {
-            float _e103 = curvature;
-            const float4 _e105 = table_skin_lut(float2(u, _e103));
-            falloff = _e105.xyz;
+            float _e89 = curvature;
+            const float4 _e91 = table_skin_lut(float2(u, _e89));
+            falloff = _e91.xyz;
         }
     }
-    float3 _e107 = falloff;
-    falloff = max(_e107, (0.0).xxx);
-    const float2 _e112 = weft_env_brdf_lut(_e83, roughness_7);
-    const float3 _e113 = weft_env_brdf_from_lut((f0_3).xxx, _e112);
+    float3 _e93 = falloff;
+    falloff = max(_e93, (0.0).xxx);
+    const float2 _e99 = weft_env_brdf_lut(_e73.n_dot_v, roughness_7);
+    const float3 _e100 = weft_env_brdf_from_lut((f0_3).xxx, _e99);
     {
-        float3 _e116 = n;
-        float _e119 = material.lobe_weight;
-        const float _e120 = skin_dual_ggx(_e116, _e80, _e83, n_dot_l_2, v_dot_h_2, roughness_7, _e119, f0_3);
-        specular = ((_e120 * n_dot_l_2) * mask);
-        kd = max(((1.0).xxx - _e113), (0.0).xxx);
+        float3 _e103 = n;
+        float _e110 = material.lobe_weight;
+        const float _e111 = skin_dual_ggx(_e103, _e73.h, _e73.n_dot_v, _e73.n_dot_l, _e73.v_dot_h, roughness_7, _e110, f0_3);
+        specular = ((_e111 * _e73.n_dot_l) * mask);
+        kd = max(((1.0).xxx - _e100), (0.0).xxx);
     }
-    const float3 _e129 = weft_main_light_radiance();
-    float3 _e130 = kd;
-    const float3 _e131 = weft_diffuse_lambert(albedo_1);
-    float3 _e133 = falloff;
-    float _e135 = specular;
-    float3 direct = ((((_e130 * _e131) * _e133) + (_e135).xxx) * _e129);
-    float3 _e139 = n;
-    const float3 _e140 = weft_sh_irradiance(_e139);
-    float3 _e141 = kd;
-    float3 indirect_diffuse = ((_e140 * _e141) * albedo_1);
-    float3 _e145 = n;
-    const float3 _e147 = weft_prefiltered_radiance(reflect(-(_e39), _e145), roughness_7);
-    float3 indirect_specular = ((_e147 * _e113) * mask);
+    const float3 _e121 = weft_main_light_radiance();
+    float3 _e122 = kd;
+    const float3 _e123 = weft_diffuse_lambert(albedo_1);
+    float3 _e125 = falloff;
+    float _e127 = specular;
+    float3 direct = ((((_e122 * _e123) * _e125) + (_e127).xxx) * _e121);
+    float3 _e131 = n;
+    const float3 _e132 = weft_sh_irradiance(_e131);
+    float3 _e133 = kd;
+    float3 indirect_diffuse = ((_e132 * _e133) * albedo_1);
+    float3 _e137 = n;
+    const float3 _e139 = weft_prefiltered_radiance(reflect(-(v_3), _e137), roughness_7);
+    float3 indirect_specular = ((_e139 * _e100) * mask);
     float3 color = ((direct + indirect_diffuse) + indirect_specular);
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

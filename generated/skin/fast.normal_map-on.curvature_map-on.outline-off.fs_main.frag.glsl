@@ -27,6 +27,18 @@ struct WeftMaterial {
     float outline_width;
     float outline_max_distance;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -205,21 +217,34 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -227,17 +252,24 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_dual_ggx(vec3 n_5, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
+float skin_dual_ggx(vec3 n_7, vec3 h_1, float n_dot_v_2, float n_dot_l_1, float v_dot_h_1, float roughness_6, float w, float f0_2) {
     float r0_ = clamp((roughness_6 * 0.75), 0.0, 1.0);
     float r1_ = clamp((roughness_6 * 1.3), 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = (_e18 * _e19);
-    float _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = (_e21 * _e22);
     vec3 _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -265,75 +297,68 @@ void main() {
     float f0_3 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_1.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_1.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
     {
         curvature = clamp((factor * mapped), 0.0, 1.0);
     }
-    n = _e41;
+    n = n_geom;
     {
-        vec3 _e67 = n;
-        mat3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-        vec4 _e72 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e72.xyz;
-        float _e76 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e77 = weft_unpack_normal(texel_1, _e76);
-        vec3 _e78 = weft_normal_from_tangent_space(_e69, _e77);
-        n = _e78;
+        vec4 _e66 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e66.xyz;
+        vec3 _e68 = n;
+        float _e72 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e73 = weft_mapped_normal(_e68, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    vec3 _e79 = weft_main_light_direction();
-    vec3 _e81 = n;
-    vec3 _e82 = weft_safe_normalize((_e79 + _e39), _e81);
-    vec3 _e83 = n;
-    float _e85 = weft_clamp_cos(dot(_e83, _e39));
-    vec3 _e86 = n;
-    float n_dot_l_2 = clamp(dot(_e86, _e79), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e39, _e82), 0.0, 1.0);
-    vec3 _e91 = n;
-    float _e99 = _group_1_binding_0_fs.dark_bound;
-    float _e102 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e91, _e79) * 0.5) + 0.5), _e99, _e102);
+    vec3 _e74 = n;
+    WeftLightGeometry _e75 = weft_main_light_geometry(_e74, v_3);
+    vec3 _e76 = n;
+    float _e85 = _group_1_binding_0_fs.dark_bound;
+    float _e88 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e76, _e75.l) * 0.5) + 0.5), _e85, _e88);
     {
         {
-            float _e105 = curvature;
-            vec4 _e107 = table_skin_lut(vec2(u, _e105));
-            falloff = _e107.xyz;
+            float _e91 = curvature;
+            vec4 _e93 = table_skin_lut(vec2(u, _e91));
+            falloff = _e93.xyz;
         }
     }
-    vec3 _e109 = falloff;
-    falloff = max(_e109, vec3(0.0));
-    vec2 _e114 = weft_env_brdf_lut(_e85, roughness_7);
-    vec3 _e115 = weft_env_brdf_from_lut(vec3(f0_3), _e114);
+    vec3 _e95 = falloff;
+    falloff = max(_e95, vec3(0.0));
+    vec2 _e101 = weft_env_brdf_lut(_e75.n_dot_v, roughness_7);
+    vec3 _e102 = weft_env_brdf_from_lut(vec3(f0_3), _e101);
     {
-        vec3 _e118 = n;
-        float _e121 = _group_1_binding_0_fs.lobe_weight;
-        float _e122 = skin_dual_ggx(_e118, _e82, _e85, n_dot_l_2, v_dot_h_2, roughness_7, _e121, f0_3);
-        specular = ((_e122 * n_dot_l_2) * mask);
-        kd = max((vec3(1.0) - _e115), vec3(0.0));
+        vec3 _e105 = n;
+        float _e112 = _group_1_binding_0_fs.lobe_weight;
+        float _e113 = skin_dual_ggx(_e105, _e75.h, _e75.n_dot_v, _e75.n_dot_l, _e75.v_dot_h, roughness_7, _e112, f0_3);
+        specular = ((_e113 * _e75.n_dot_l) * mask);
+        kd = max((vec3(1.0) - _e102), vec3(0.0));
     }
-    vec3 _e131 = weft_main_light_radiance();
-    vec3 _e132 = kd;
-    vec3 _e133 = weft_diffuse_lambert(albedo_1);
-    vec3 _e135 = falloff;
-    float _e137 = specular;
-    vec3 direct = ((((_e132 * _e133) * _e135) + vec3(_e137)) * _e131);
-    vec3 _e141 = n;
-    vec3 _e142 = weft_sh_irradiance(_e141);
-    vec3 _e143 = kd;
-    vec3 indirect_diffuse = ((_e142 * _e143) * albedo_1);
-    vec3 _e147 = n;
-    vec3 _e149 = weft_prefiltered_radiance(reflect(-(_e39), _e147), roughness_7);
-    vec3 indirect_specular = ((_e149 * _e115) * mask);
+    vec3 _e123 = weft_main_light_radiance();
+    vec3 _e124 = kd;
+    vec3 _e125 = weft_diffuse_lambert(albedo_1);
+    vec3 _e127 = falloff;
+    float _e129 = specular;
+    vec3 direct = ((((_e124 * _e125) * _e127) + vec3(_e129)) * _e123);
+    vec3 _e133 = n;
+    vec3 _e134 = weft_sh_irradiance(_e133);
+    vec3 _e135 = kd;
+    vec3 indirect_diffuse = ((_e134 * _e135) * albedo_1);
+    vec3 _e139 = n;
+    vec3 _e141 = weft_prefiltered_radiance(reflect(-(v_3), _e139), roughness_7);
+    vec3 indirect_specular = ((_e141 * _e102) * mask);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

@@ -37,6 +37,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -249,27 +262,48 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_1 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_1.xy * strength, metal::max(v_1.z, 0.001));
+    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -280,6 +314,18 @@ metal::float3 weft_normal_from_tangent_space(
     return _e4;
 }
 
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv_1,
     metal::float4 st
@@ -288,7 +334,7 @@ metal::float2 weft_transform_uv(
 }
 
 float skin_dual_ggx(
-    metal::float3 n_5,
+    metal::float3 n_7,
     metal::float3 h_1,
     float n_dot_v_2,
     float n_dot_l_1,
@@ -299,10 +345,10 @@ float skin_dual_ggx(
 ) {
     float r0_ = metal::clamp(roughness_6 * 0.75, 0.0, 1.0);
     float r1_ = metal::clamp(roughness_6 * 1.3, 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = _e18 * _e19;
-    float _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = _e21 * _e22;
     metal::float3 _e25 = weft_f_schlick(metal::float3(f0_2), v_dot_h_1);
@@ -313,7 +359,7 @@ float skin_dual_ggx(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -328,7 +374,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -352,8 +398,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -377,7 +423,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> specular_mask [[texture(5)]]
 , metal::texture2d<float, metal::access::sample> skin_lut [[texture(6)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     float curvature = {};
     metal::float3 n = {};
     metal::float3 falloff = {};
@@ -396,75 +442,68 @@ fragment fs_mainOutput fs_main(
     float f0_3 = metal::clamp(_e25, 0.0, 1.0);
     metal::float4 _e31 = specular_mask.sample(material_sampler, _e5);
     float mask = metal::saturate(_e31.x);
-    metal::float3 _e39 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    metal::float3 _e42 = metal::fwidth(_e41);
-    float dn = metal::length(_e42);
-    metal::float3 _e45 = metal::fwidth(in_1.world_position);
-    float dp = metal::length(_e45);
+    WeftSurface _e36 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e36.v;
+    metal::float3 n_geom = _e36.n;
+    metal::float3 _e39 = metal::fwidth(n_geom);
+    float dn = metal::length(_e39);
+    metal::float3 _e42 = metal::fwidth(in_1.world_position);
+    float dp = metal::length(_e42);
     float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
-    metal::float4 _e54 = curvature_map.sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = metal::max(_e58, 0.0);
+    metal::float4 _e51 = curvature_map.sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = metal::max(_e55, 0.0);
     curvature = metal::saturate(factor * estimated);
     {
         curvature = metal::saturate(factor * mapped);
     }
-    n = _e41;
+    n = n_geom;
     {
-        metal::float3 _e67 = n;
-        metal::float3x3 _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-        metal::float4 _e72 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e72.xyz;
-        float _e76 = material.normal_strength;
-        metal::float3 _e77 = weft_unpack_normal(texel_1, _e76);
-        metal::float3 _e78 = weft_normal_from_tangent_space(_e69, _e77);
-        n = _e78;
+        metal::float4 _e66 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e66.xyz;
+        metal::float3 _e68 = n;
+        float _e72 = material.normal_strength;
+        metal::float3 _e73 = weft_mapped_normal(_e68, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    metal::float3 _e79 = weft_main_light_direction(weft_frame);
-    metal::float3 _e81 = n;
-    metal::float3 _e82 = weft_safe_normalize(_e79 + _e39, _e81);
-    metal::float3 _e83 = n;
-    float _e85 = weft_clamp_cos(metal::dot(_e83, _e39));
-    metal::float3 _e86 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e86, _e79));
-    float v_dot_h_2 = metal::saturate(metal::dot(_e39, _e82));
-    metal::float3 _e91 = n;
-    float _e99 = material.dark_bound;
-    float _e102 = material.bright_bound;
-    float u = metal::clamp((metal::dot(_e91, _e79) * 0.5) + 0.5, _e99, _e102);
+    metal::float3 _e74 = n;
+    WeftLightGeometry _e75 = weft_main_light_geometry(_e74, v_3, weft_frame);
+    metal::float3 _e76 = n;
+    float _e85 = material.dark_bound;
+    float _e88 = material.bright_bound;
+    float u = metal::clamp((metal::dot(_e76, _e75.l) * 0.5) + 0.5, _e85, _e88);
     {
         {
-            float _e105 = curvature;
-            metal::float4 _e107 = table_skin_lut(metal::float2(u, _e105), material_clamp_sampler, skin_lut);
-            falloff = _e107.xyz;
+            float _e91 = curvature;
+            metal::float4 _e93 = table_skin_lut(metal::float2(u, _e91), material_clamp_sampler, skin_lut);
+            falloff = _e93.xyz;
         }
     }
-    metal::float3 _e109 = falloff;
-    falloff = metal::max(_e109, metal::float3(0.0));
-    metal::float2 _e114 = weft_env_brdf_lut(_e85, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e115 = weft_env_brdf_from_lut(metal::float3(f0_3), _e114);
+    metal::float3 _e95 = falloff;
+    falloff = metal::max(_e95, metal::float3(0.0));
+    metal::float2 _e101 = weft_env_brdf_lut(_e75.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e102 = weft_env_brdf_from_lut(metal::float3(f0_3), _e101);
     {
-        metal::float3 _e118 = n;
-        float _e121 = material.lobe_weight;
-        float _e122 = skin_dual_ggx(_e118, _e82, _e85, n_dot_l_2, v_dot_h_2, roughness_7, _e121, f0_3);
-        specular = (_e122 * n_dot_l_2) * mask;
-        kd = metal::max(metal::float3(1.0) - _e115, metal::float3(0.0));
+        metal::float3 _e105 = n;
+        float _e112 = material.lobe_weight;
+        float _e113 = skin_dual_ggx(_e105, _e75.h, _e75.n_dot_v, _e75.n_dot_l, _e75.v_dot_h, roughness_7, _e112, f0_3);
+        specular = (_e113 * _e75.n_dot_l) * mask;
+        kd = metal::max(metal::float3(1.0) - _e102, metal::float3(0.0));
     }
-    metal::float3 _e131 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e132 = kd;
-    metal::float3 _e133 = weft_diffuse_lambert(albedo_1);
-    metal::float3 _e135 = falloff;
-    float _e137 = specular;
-    metal::float3 direct = (((_e132 * _e133) * _e135) + metal::float3(_e137)) * _e131;
-    metal::float3 _e141 = n;
-    metal::float3 _e142 = weft_sh_irradiance(_e141, weft_frame);
-    metal::float3 _e143 = kd;
-    metal::float3 indirect_diffuse = (_e142 * _e143) * albedo_1;
-    metal::float3 _e147 = n;
-    metal::float3 _e149 = weft_prefiltered_radiance(metal::reflect(-(_e39), _e147), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular = (_e149 * _e115) * mask;
+    metal::float3 _e123 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e124 = kd;
+    metal::float3 _e125 = weft_diffuse_lambert(albedo_1);
+    metal::float3 _e127 = falloff;
+    float _e129 = specular;
+    metal::float3 direct = (((_e124 * _e125) * _e127) + metal::float3(_e129)) * _e123;
+    metal::float3 _e133 = n;
+    metal::float3 _e134 = weft_sh_irradiance(_e133, weft_frame);
+    metal::float3 _e135 = kd;
+    metal::float3 indirect_diffuse = (_e134 * _e135) * albedo_1;
+    metal::float3 _e139 = n;
+    metal::float3 _e141 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e139), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e141 * _e102) * mask;
     metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };

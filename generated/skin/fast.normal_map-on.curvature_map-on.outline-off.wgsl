@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -215,21 +229,34 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -237,17 +264,24 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_dual_ggx(n_5: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+fn skin_dual_ggx(n_7: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
     let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
     let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
-    let _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    let _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     let lobe0_ = (_e18 * _e19);
-    let _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    let _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     let lobe1_ = (_e21 * _e22);
     let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -299,75 +333,68 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_3 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_1.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_1.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
     {
         curvature = saturate((factor * mapped));
     }
-    n = _e41;
+    n = n_geom;
     {
-        let _e67 = n;
-        let _e69 = weft_tangent_frame(_e67, in_1.world_tangent);
-        let _e72 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e72.xyz;
-        let _e76 = material.normal_strength;
-        let _e77 = weft_unpack_normal(texel_1, _e76);
-        let _e78 = weft_normal_from_tangent_space(_e69, _e77);
-        n = _e78;
+        let _e66 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e66.xyz;
+        let _e68 = n;
+        let _e72 = material.normal_strength;
+        let _e73 = weft_mapped_normal(_e68, in_1.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    let _e79 = weft_main_light_direction();
-    let _e81 = n;
-    let _e82 = weft_safe_normalize((_e79 + _e39), _e81);
-    let _e83 = n;
-    let _e85 = weft_clamp_cos(dot(_e83, _e39));
-    let _e86 = n;
-    let n_dot_l_2 = saturate(dot(_e86, _e79));
-    let v_dot_h_2 = saturate(dot(_e39, _e82));
-    let _e91 = n;
-    let _e99 = material.dark_bound;
-    let _e102 = material.bright_bound;
-    let u = clamp(((dot(_e91, _e79) * 0.5f) + 0.5f), _e99, _e102);
+    let _e74 = n;
+    let _e75 = weft_main_light_geometry(_e74, v_3);
+    let _e76 = n;
+    let _e85 = material.dark_bound;
+    let _e88 = material.bright_bound;
+    let u = clamp(((dot(_e76, _e75.l) * 0.5f) + 0.5f), _e85, _e88);
     {
         {
-            let _e105 = curvature;
-            let _e107 = table_skin_lut(vec2<f32>(u, _e105));
-            falloff = _e107.xyz;
+            let _e91 = curvature;
+            let _e93 = table_skin_lut(vec2<f32>(u, _e91));
+            falloff = _e93.xyz;
         }
     }
-    let _e109 = falloff;
-    falloff = max(_e109, vec3(0f));
-    let _e114 = weft_env_brdf_lut(_e85, roughness_7);
-    let _e115 = weft_env_brdf_from_lut(vec3(f0_3), _e114);
+    let _e95 = falloff;
+    falloff = max(_e95, vec3(0f));
+    let _e101 = weft_env_brdf_lut(_e75.n_dot_v, roughness_7);
+    let _e102 = weft_env_brdf_from_lut(vec3(f0_3), _e101);
     {
-        let _e118 = n;
-        let _e121 = material.lobe_weight;
-        let _e122 = skin_dual_ggx(_e118, _e82, _e85, n_dot_l_2, v_dot_h_2, roughness_7, _e121, f0_3);
-        specular = ((_e122 * n_dot_l_2) * mask);
-        kd = max((vec3(1f) - _e115), vec3(0f));
+        let _e105 = n;
+        let _e112 = material.lobe_weight;
+        let _e113 = skin_dual_ggx(_e105, _e75.h, _e75.n_dot_v, _e75.n_dot_l, _e75.v_dot_h, roughness_7, _e112, f0_3);
+        specular = ((_e113 * _e75.n_dot_l) * mask);
+        kd = max((vec3(1f) - _e102), vec3(0f));
     }
-    let _e131 = weft_main_light_radiance();
-    let _e132 = kd;
-    let _e133 = weft_diffuse_lambert(albedo_1);
-    let _e135 = falloff;
-    let _e137 = specular;
-    let direct = ((((_e132 * _e133) * _e135) + vec3(_e137)) * _e131);
-    let _e141 = n;
-    let _e142 = weft_sh_irradiance(_e141);
-    let _e143 = kd;
-    let indirect_diffuse = ((_e142 * _e143) * albedo_1);
-    let _e147 = n;
-    let _e149 = weft_prefiltered_radiance(reflect(-(_e39), _e147), roughness_7);
-    let indirect_specular = ((_e149 * _e115) * mask);
+    let _e123 = weft_main_light_radiance();
+    let _e124 = kd;
+    let _e125 = weft_diffuse_lambert(albedo_1);
+    let _e127 = falloff;
+    let _e129 = specular;
+    let direct = ((((_e124 * _e125) * _e127) + vec3(_e129)) * _e123);
+    let _e133 = n;
+    let _e134 = weft_sh_irradiance(_e133);
+    let _e135 = kd;
+    let indirect_diffuse = ((_e134 * _e135) * albedo_1);
+    let _e139 = n;
+    let _e141 = weft_prefiltered_radiance(reflect(-(v_3), _e139), roughness_7);
+    let indirect_specular = ((_e141 * _e102) * mask);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

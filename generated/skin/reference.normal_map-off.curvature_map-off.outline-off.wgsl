@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -195,6 +209,19 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -253,13 +280,13 @@ fn skin_preintegrated(cos_theta: f32, curvature_1: f32, shape: vec3<f32>, x_max:
     return select(vec3(flat), (_e103 / max(_e104, vec3(0.000000000000000000000000000001f))), (_e109 > vec3(0f)));
 }
 
-fn skin_dual_ggx(n_3: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+fn skin_dual_ggx(n_4: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
     let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
     let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
-    let _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    let _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     let lobe0_ = (_e18 * _e19);
-    let _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    let _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     let lobe1_ = (_e21 * _e22);
     let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -311,60 +338,55 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_3 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_1.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_1.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
-    let _e65 = weft_main_light_direction();
-    let _e67 = n;
-    let _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    let _e69 = n;
-    let _e71 = weft_clamp_cos(dot(_e69, _e39));
-    let _e72 = n;
-    let n_dot_l_2 = saturate(dot(_e72, _e65));
-    let v_dot_h_2 = saturate(dot(_e39, _e68));
-    let _e77 = n;
-    let _e85 = material.dark_bound;
-    let _e88 = material.bright_bound;
-    let u = clamp(((dot(_e77, _e65) * 0.5f) + 0.5f), _e85, _e88);
+    n = n_geom;
+    let _e62 = n;
+    let _e63 = weft_main_light_geometry(_e62, v_2);
+    let _e64 = n;
+    let _e73 = material.dark_bound;
+    let _e76 = material.bright_bound;
+    let u = clamp(((dot(_e64, _e63.l) * 0.5f) + 0.5f), _e73, _e76);
     {
-        let _e95 = curvature;
-        let _e98 = skin_preintegrated(((2f * u) - 1f), _e95, skin_lut_shape, skin_lut_ring);
-        falloff = _e98;
+        let _e83 = curvature;
+        let _e86 = skin_preintegrated(((2f * u) - 1f), _e83, skin_lut_shape, skin_lut_ring);
+        falloff = _e86;
     }
-    let _e99 = falloff;
-    falloff = max(_e99, vec3(0f));
-    let _e104 = weft_env_brdf_lut(_e71, roughness_7);
-    let _e105 = weft_env_brdf_from_lut(vec3(f0_3), _e104);
+    let _e87 = falloff;
+    falloff = max(_e87, vec3(0f));
+    let _e93 = weft_env_brdf_lut(_e63.n_dot_v, roughness_7);
+    let _e94 = weft_env_brdf_from_lut(vec3(f0_3), _e93);
     {
-        let _e108 = n;
-        let _e111 = material.lobe_weight;
-        let _e112 = skin_dual_ggx(_e108, _e68, _e71, n_dot_l_2, v_dot_h_2, roughness_7, _e111, f0_3);
-        specular = ((_e112 * n_dot_l_2) * mask);
-        kd = max((vec3(1f) - _e105), vec3(0f));
+        let _e97 = n;
+        let _e104 = material.lobe_weight;
+        let _e105 = skin_dual_ggx(_e97, _e63.h, _e63.n_dot_v, _e63.n_dot_l, _e63.v_dot_h, roughness_7, _e104, f0_3);
+        specular = ((_e105 * _e63.n_dot_l) * mask);
+        kd = max((vec3(1f) - _e94), vec3(0f));
     }
-    let _e121 = weft_main_light_radiance();
-    let _e122 = kd;
-    let _e123 = weft_diffuse_lambert(albedo_1);
-    let _e125 = falloff;
-    let _e127 = specular;
-    let direct = ((((_e122 * _e123) * _e125) + vec3(_e127)) * _e121);
+    let _e115 = weft_main_light_radiance();
+    let _e116 = kd;
+    let _e117 = weft_diffuse_lambert(albedo_1);
+    let _e119 = falloff;
+    let _e121 = specular;
+    let direct = ((((_e116 * _e117) * _e119) + vec3(_e121)) * _e115);
+    let _e125 = n;
+    let _e126 = weft_sh_irradiance(_e125);
+    let _e127 = kd;
+    let indirect_diffuse = ((_e126 * _e127) * albedo_1);
     let _e131 = n;
-    let _e132 = weft_sh_irradiance(_e131);
-    let _e133 = kd;
-    let indirect_diffuse = ((_e132 * _e133) * albedo_1);
-    let _e137 = n;
-    let _e139 = weft_prefiltered_radiance(reflect(-(_e39), _e137), roughness_7);
-    let indirect_specular = ((_e139 * _e105) * mask);
+    let _e133 = weft_prefiltered_radiance(reflect(-(v_2), _e131), roughness_7);
+    let indirect_specular = ((_e133 * _e94) * mask);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

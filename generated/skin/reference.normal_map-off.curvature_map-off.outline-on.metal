@@ -44,6 +44,19 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     metal::float4 clip_position;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -236,6 +249,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -307,7 +341,7 @@ metal::float3 skin_preintegrated(
 }
 
 float skin_dual_ggx(
-    metal::float3 n_3,
+    metal::float3 n_4,
     metal::float3 h_1,
     float n_dot_v_2,
     float n_dot_l_1,
@@ -318,10 +352,10 @@ float skin_dual_ggx(
 ) {
     float r0_ = metal::clamp(roughness_6 * 0.75, 0.0, 1.0);
     float r1_ = metal::clamp(roughness_6 * 1.3, 0.0, 1.0);
-    float _e18 = weft_d_ggx_nh(n_3, h_1, r0_);
+    float _e18 = weft_d_ggx_nh(n_4, h_1, r0_);
     float _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     float lobe0_ = _e18 * _e19;
-    float _e21 = weft_d_ggx_nh(n_3, h_1, r1_);
+    float _e21 = weft_d_ggx_nh(n_4, h_1, r1_);
     float _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     float lobe1_ = _e21 * _e22;
     metal::float3 _e25 = weft_f_schlick(metal::float3(f0_2), v_dot_h_1);
@@ -437,8 +471,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -459,7 +493,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> curvature_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> specular_mask [[texture(4)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.world_tangent, varyings_3.uv0_ };
+    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_ };
     float curvature = {};
     metal::float3 n = {};
     metal::float3 falloff = {};
@@ -478,60 +512,55 @@ fragment fs_mainOutput fs_main(
     float f0_3 = metal::clamp(_e25, 0.0, 1.0);
     metal::float4 _e31 = specular_mask.sample(material_sampler, _e5);
     float mask = metal::saturate(_e31.x);
-    metal::float3 _e39 = weft_view_direction(in_2.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    metal::float3 _e42 = metal::fwidth(_e41);
-    float dn = metal::length(_e42);
-    metal::float3 _e45 = metal::fwidth(in_2.world_position);
-    float dp = metal::length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal, weft_frame);
+    metal::float3 v_2 = _e36.v;
+    metal::float3 n_geom = _e36.n;
+    metal::float3 _e39 = metal::fwidth(n_geom);
+    float dn = metal::length(_e39);
+    metal::float3 _e42 = metal::fwidth(in_2.world_position);
+    float dp = metal::length(_e42);
     float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
-    metal::float4 _e54 = curvature_map.sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = metal::max(_e58, 0.0);
+    metal::float4 _e51 = curvature_map.sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = metal::max(_e55, 0.0);
     curvature = metal::saturate(factor * estimated);
-    n = _e41;
-    metal::float3 _e65 = weft_main_light_direction(weft_frame);
-    metal::float3 _e67 = n;
-    metal::float3 _e68 = weft_safe_normalize(_e65 + _e39, _e67);
-    metal::float3 _e69 = n;
-    float _e71 = weft_clamp_cos(metal::dot(_e69, _e39));
-    metal::float3 _e72 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e72, _e65));
-    float v_dot_h_2 = metal::saturate(metal::dot(_e39, _e68));
-    metal::float3 _e77 = n;
-    float _e85 = material.dark_bound;
-    float _e88 = material.bright_bound;
-    float u = metal::clamp((metal::dot(_e77, _e65) * 0.5) + 0.5, _e85, _e88);
+    n = n_geom;
+    metal::float3 _e62 = n;
+    WeftLightGeometry _e63 = weft_main_light_geometry(_e62, v_2, weft_frame);
+    metal::float3 _e64 = n;
+    float _e73 = material.dark_bound;
+    float _e76 = material.bright_bound;
+    float u = metal::clamp((metal::dot(_e64, _e63.l) * 0.5) + 0.5, _e73, _e76);
     {
-        float _e95 = curvature;
-        metal::float3 _e98 = skin_preintegrated((2.0 * u) - 1.0, _e95, skin_lut_shape, skin_lut_ring);
-        falloff = _e98;
+        float _e83 = curvature;
+        metal::float3 _e86 = skin_preintegrated((2.0 * u) - 1.0, _e83, skin_lut_shape, skin_lut_ring);
+        falloff = _e86;
     }
-    metal::float3 _e99 = falloff;
-    falloff = metal::max(_e99, metal::float3(0.0));
-    metal::float2 _e104 = weft_env_brdf_lut(_e71, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e105 = weft_env_brdf_from_lut(metal::float3(f0_3), _e104);
+    metal::float3 _e87 = falloff;
+    falloff = metal::max(_e87, metal::float3(0.0));
+    metal::float2 _e93 = weft_env_brdf_lut(_e63.n_dot_v, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e94 = weft_env_brdf_from_lut(metal::float3(f0_3), _e93);
     {
-        metal::float3 _e108 = n;
-        float _e111 = material.lobe_weight;
-        float _e112 = skin_dual_ggx(_e108, _e68, _e71, n_dot_l_2, v_dot_h_2, roughness_7, _e111, f0_3);
-        specular = (_e112 * n_dot_l_2) * mask;
-        kd = metal::max(metal::float3(1.0) - _e105, metal::float3(0.0));
+        metal::float3 _e97 = n;
+        float _e104 = material.lobe_weight;
+        float _e105 = skin_dual_ggx(_e97, _e63.h, _e63.n_dot_v, _e63.n_dot_l, _e63.v_dot_h, roughness_7, _e104, f0_3);
+        specular = (_e105 * _e63.n_dot_l) * mask;
+        kd = metal::max(metal::float3(1.0) - _e94, metal::float3(0.0));
     }
-    metal::float3 _e121 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e122 = kd;
-    metal::float3 _e123 = weft_diffuse_lambert(albedo_1);
-    metal::float3 _e125 = falloff;
-    float _e127 = specular;
-    metal::float3 direct = (((_e122 * _e123) * _e125) + metal::float3(_e127)) * _e121;
+    metal::float3 _e115 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e116 = kd;
+    metal::float3 _e117 = weft_diffuse_lambert(albedo_1);
+    metal::float3 _e119 = falloff;
+    float _e121 = specular;
+    metal::float3 direct = (((_e116 * _e117) * _e119) + metal::float3(_e121)) * _e115;
+    metal::float3 _e125 = n;
+    metal::float3 _e126 = weft_sh_irradiance(_e125, weft_frame);
+    metal::float3 _e127 = kd;
+    metal::float3 indirect_diffuse = (_e126 * _e127) * albedo_1;
     metal::float3 _e131 = n;
-    metal::float3 _e132 = weft_sh_irradiance(_e131, weft_frame);
-    metal::float3 _e133 = kd;
-    metal::float3 indirect_diffuse = (_e132 * _e133) * albedo_1;
-    metal::float3 _e137 = n;
-    metal::float3 _e139 = weft_prefiltered_radiance(metal::reflect(-(_e39), _e137), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular = (_e139 * _e105) * mask;
+    metal::float3 _e133 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e131), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e133 * _e94) * mask;
     metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };

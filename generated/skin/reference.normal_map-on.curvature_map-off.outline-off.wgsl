@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -204,26 +218,46 @@ fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -284,13 +318,13 @@ fn skin_preintegrated(cos_theta: f32, curvature_1: f32, shape: vec3<f32>, x_max:
     return select(vec3(flat), (_e103 / max(_e104, vec3(0.000000000000000000000000000001f))), (_e109 > vec3(0f)));
 }
 
-fn skin_dual_ggx(n_5: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
+fn skin_dual_ggx(n_7: vec3<f32>, h_1: vec3<f32>, n_dot_v_2: f32, n_dot_l_1: f32, v_dot_h_1: f32, roughness_6: f32, w: f32, f0_2: f32) -> f32 {
     let r0_ = clamp((roughness_6 * 0.75f), 0f, 1f);
     let r1_ = clamp((roughness_6 * 1.3f), 0f, 1f);
-    let _e18 = weft_d_ggx_nh(n_5, h_1, r0_);
+    let _e18 = weft_d_ggx_nh(n_7, h_1, r0_);
     let _e19 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r0_);
     let lobe0_ = (_e18 * _e19);
-    let _e21 = weft_d_ggx_nh(n_5, h_1, r1_);
+    let _e21 = weft_d_ggx_nh(n_7, h_1, r1_);
     let _e22 = weft_v_smith_ggx_correlated(n_dot_v_2, n_dot_l_1, r1_);
     let lobe1_ = (_e21 * _e22);
     let _e25 = weft_f_schlick(vec3(f0_2), v_dot_h_1);
@@ -342,70 +376,63 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_3 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_1.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_1.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
+    n = n_geom;
     {
-        let _e65 = n;
-        let _e67 = weft_tangent_frame(_e65, in_1.world_tangent);
-        let _e70 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e70.xyz;
-        let _e74 = material.normal_strength;
-        let _e75 = weft_unpack_normal(texel_1, _e74);
-        let _e76 = weft_normal_from_tangent_space(_e67, _e75);
-        n = _e76;
+        let _e64 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e64.xyz;
+        let _e66 = n;
+        let _e70 = material.normal_strength;
+        let _e71 = weft_mapped_normal(_e66, in_1.world_tangent, texel_2, _e70);
+        n = _e71;
     }
-    let _e77 = weft_main_light_direction();
-    let _e79 = n;
-    let _e80 = weft_safe_normalize((_e77 + _e39), _e79);
-    let _e81 = n;
-    let _e83 = weft_clamp_cos(dot(_e81, _e39));
-    let _e84 = n;
-    let n_dot_l_2 = saturate(dot(_e84, _e77));
-    let v_dot_h_2 = saturate(dot(_e39, _e80));
-    let _e89 = n;
-    let _e97 = material.dark_bound;
-    let _e100 = material.bright_bound;
-    let u = clamp(((dot(_e89, _e77) * 0.5f) + 0.5f), _e97, _e100);
+    let _e72 = n;
+    let _e73 = weft_main_light_geometry(_e72, v_3);
+    let _e74 = n;
+    let _e83 = material.dark_bound;
+    let _e86 = material.bright_bound;
+    let u = clamp(((dot(_e74, _e73.l) * 0.5f) + 0.5f), _e83, _e86);
     {
-        let _e107 = curvature;
-        let _e110 = skin_preintegrated(((2f * u) - 1f), _e107, skin_lut_shape, skin_lut_ring);
-        falloff = _e110;
+        let _e93 = curvature;
+        let _e96 = skin_preintegrated(((2f * u) - 1f), _e93, skin_lut_shape, skin_lut_ring);
+        falloff = _e96;
     }
-    let _e111 = falloff;
-    falloff = max(_e111, vec3(0f));
-    let _e116 = weft_env_brdf_lut(_e83, roughness_7);
-    let _e117 = weft_env_brdf_from_lut(vec3(f0_3), _e116);
+    let _e97 = falloff;
+    falloff = max(_e97, vec3(0f));
+    let _e103 = weft_env_brdf_lut(_e73.n_dot_v, roughness_7);
+    let _e104 = weft_env_brdf_from_lut(vec3(f0_3), _e103);
     {
-        let _e120 = n;
-        let _e123 = material.lobe_weight;
-        let _e124 = skin_dual_ggx(_e120, _e80, _e83, n_dot_l_2, v_dot_h_2, roughness_7, _e123, f0_3);
-        specular = ((_e124 * n_dot_l_2) * mask);
-        kd = max((vec3(1f) - _e117), vec3(0f));
+        let _e107 = n;
+        let _e114 = material.lobe_weight;
+        let _e115 = skin_dual_ggx(_e107, _e73.h, _e73.n_dot_v, _e73.n_dot_l, _e73.v_dot_h, roughness_7, _e114, f0_3);
+        specular = ((_e115 * _e73.n_dot_l) * mask);
+        kd = max((vec3(1f) - _e104), vec3(0f));
     }
-    let _e133 = weft_main_light_radiance();
-    let _e134 = kd;
-    let _e135 = weft_diffuse_lambert(albedo_1);
-    let _e137 = falloff;
-    let _e139 = specular;
-    let direct = ((((_e134 * _e135) * _e137) + vec3(_e139)) * _e133);
-    let _e143 = n;
-    let _e144 = weft_sh_irradiance(_e143);
-    let _e145 = kd;
-    let indirect_diffuse = ((_e144 * _e145) * albedo_1);
-    let _e149 = n;
-    let _e151 = weft_prefiltered_radiance(reflect(-(_e39), _e149), roughness_7);
-    let indirect_specular = ((_e151 * _e117) * mask);
+    let _e125 = weft_main_light_radiance();
+    let _e126 = kd;
+    let _e127 = weft_diffuse_lambert(albedo_1);
+    let _e129 = falloff;
+    let _e131 = specular;
+    let direct = ((((_e126 * _e127) * _e129) + vec3(_e131)) * _e125);
+    let _e135 = n;
+    let _e136 = weft_sh_irradiance(_e135);
+    let _e137 = kd;
+    let indirect_diffuse = ((_e136 * _e137) * albedo_1);
+    let _e141 = n;
+    let _e143 = weft_prefiltered_radiance(reflect(-(v_3), _e141), roughness_7);
+    let indirect_specular = ((_e143 * _e104) * mask);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -37,6 +37,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad12[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -190,6 +203,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv_1,
     metal::float4 st
@@ -198,19 +232,19 @@ metal::float2 weft_transform_uv(
 }
 
 float skin_seed_specular(
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float3 l,
     metal::float3 h,
     float roughness_3,
     float mask,
     float lobe_weight
 ) {
-    float n_dot_h = metal::saturate(metal::dot(n_2, h));
+    float n_dot_h = metal::saturate(metal::dot(n_3, h));
     float l_dot_h = metal::saturate(metal::dot(l, h));
     float r2_ = roughness_3 * roughness_3;
     float normalization = (roughness_3 * 4.0) + 2.0;
     float d = ((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001;
-    float nl = metal::saturate(metal::dot(n_2, l));
+    float nl = metal::saturate(metal::dot(n_3, l));
     float s_ao = metal::mix(0.100112915, 1.0, metal::saturate(-0.3 + (nl * nl)));
     float denom = ((d * d) * metal::max(0.1, l_dot_h * l_dot_h)) * normalization;
     float ggx = r2_ / denom;
@@ -260,8 +294,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -284,7 +318,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> specular_mask [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> seed_lut [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     float curvature = {};
     metal::float3 n = {};
     metal::float3 falloff = {};
@@ -303,63 +337,58 @@ fragment fs_mainOutput fs_main(
     float f0_1 = metal::clamp(_e25, 0.0, 1.0);
     metal::float4 _e31 = specular_mask.sample(material_sampler, _e5);
     float mask_1 = metal::saturate(_e31.x);
-    metal::float3 _e39 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    metal::float3 _e42 = metal::fwidth(_e41);
-    float dn = metal::length(_e42);
-    metal::float3 _e45 = metal::fwidth(in_1.world_position);
-    float dp = metal::length(_e45);
+    WeftSurface _e36 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e36.v;
+    metal::float3 n_geom = _e36.n;
+    metal::float3 _e39 = metal::fwidth(n_geom);
+    float dn = metal::length(_e39);
+    metal::float3 _e42 = metal::fwidth(in_1.world_position);
+    float dp = metal::length(_e42);
     float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
-    metal::float4 _e54 = curvature_map.sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = metal::max(_e58, 0.0);
+    metal::float4 _e51 = curvature_map.sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = metal::max(_e55, 0.0);
     curvature = metal::saturate(factor * estimated);
-    n = _e41;
-    metal::float3 _e65 = weft_main_light_direction(weft_frame);
-    metal::float3 _e67 = n;
-    metal::float3 _e68 = weft_safe_normalize(_e65 + _e39, _e67);
-    metal::float3 _e69 = n;
-    float _e71 = weft_clamp_cos(metal::dot(_e69, _e39));
-    metal::float3 _e72 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e72, _e65));
-    float v_dot_h = metal::saturate(metal::dot(_e39, _e68));
-    metal::float3 _e77 = n;
-    float _e85 = material.dark_bound;
-    float _e88 = material.bright_bound;
-    float u = metal::clamp((metal::dot(_e77, _e65) * 0.5) + 0.5, _e85, _e88);
+    n = n_geom;
+    metal::float3 _e62 = n;
+    WeftLightGeometry _e63 = weft_main_light_geometry(_e62, v_2, weft_frame);
+    metal::float3 _e64 = n;
+    float _e73 = material.dark_bound;
+    float _e76 = material.bright_bound;
+    float u = metal::clamp((metal::dot(_e64, _e63.l) * 0.5) + 0.5, _e73, _e76);
     {
         {
-            float _e91 = curvature;
-            metal::float4 _e93 = table_seed_lut(metal::float2(u, _e91), material_clamp_sampler, seed_lut);
-            falloff = _e93.xyz;
+            float _e79 = curvature;
+            metal::float4 _e81 = table_seed_lut(metal::float2(u, _e79), material_clamp_sampler, seed_lut);
+            falloff = _e81.xyz;
         }
     }
-    metal::float3 _e95 = falloff;
-    falloff = metal::max(_e95, metal::float3(0.0));
-    metal::float2 _e100 = weft_env_brdf_lut(_e71, roughness_4, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e101 = weft_env_brdf_from_lut(metal::float3(f0_1), _e100);
+    metal::float3 _e83 = falloff;
+    falloff = metal::max(_e83, metal::float3(0.0));
+    metal::float2 _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e90 = weft_env_brdf_from_lut(metal::float3(f0_1), _e89);
     {
         float linear_roughness = roughness_4 * roughness_4;
-        metal::float3 _e105 = n;
-        float _e108 = material.lobe_weight;
-        float _e109 = skin_seed_specular(_e105, _e65, _e68, linear_roughness, mask_1, _e108);
-        specular = (_e109 * f0_1) * n_dot_l;
+        metal::float3 _e94 = n;
+        float _e99 = material.lobe_weight;
+        float _e100 = skin_seed_specular(_e94, _e63.l, _e63.h, linear_roughness, mask_1, _e99);
+        specular = (_e100 * f0_1) * _e63.n_dot_l;
         kd = metal::float3(1.0 - f0_1);
     }
-    metal::float3 _e115 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e116 = kd;
-    metal::float3 _e117 = weft_diffuse_lambert(albedo_1);
-    metal::float3 _e119 = falloff;
-    float _e121 = specular;
-    metal::float3 direct = (((_e116 * _e117) * _e119) + metal::float3(_e121)) * _e115;
-    metal::float3 _e125 = n;
-    metal::float3 _e126 = weft_sh_irradiance(_e125, weft_frame);
-    metal::float3 _e127 = kd;
-    metal::float3 indirect_diffuse = (_e126 * _e127) * albedo_1;
-    metal::float3 _e131 = n;
-    metal::float3 _e133 = weft_prefiltered_radiance(metal::reflect(-(_e39), _e131), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular = (_e133 * _e101) * mask_1;
+    metal::float3 _e107 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e108 = kd;
+    metal::float3 _e109 = weft_diffuse_lambert(albedo_1);
+    metal::float3 _e111 = falloff;
+    float _e113 = specular;
+    metal::float3 direct = (((_e108 * _e109) * _e111) + metal::float3(_e113)) * _e107;
+    metal::float3 _e117 = n;
+    metal::float3 _e118 = weft_sh_irradiance(_e117, weft_frame);
+    metal::float3 _e119 = kd;
+    metal::float3 indirect_diffuse = (_e118 * _e119) * albedo_1;
+    metal::float3 _e123 = n;
+    metal::float3 _e125 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e123), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e125 * _e90) * mask_1;
     metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };

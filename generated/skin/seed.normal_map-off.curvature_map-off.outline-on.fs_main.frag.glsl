@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -168,17 +180,30 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(vec3 n_2, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
-    float n_dot_h = clamp(dot(n_2, h), 0.0, 1.0);
+float skin_seed_specular(vec3 n_3, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_3, h), 0.0, 1.0);
     float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = clamp(dot(n_2, l), 0.0, 1.0);
+    float nl = clamp(dot(n_3, l), 0.0, 1.0);
     float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -206,63 +231,58 @@ void main() {
     float f0_1 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask_1 = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_2 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
-    n = _e41;
-    vec3 _e65 = weft_main_light_direction();
-    vec3 _e67 = n;
-    vec3 _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    vec3 _e69 = n;
-    float _e71 = weft_clamp_cos(dot(_e69, _e39));
-    vec3 _e72 = n;
-    float n_dot_l = clamp(dot(_e72, _e65), 0.0, 1.0);
-    float v_dot_h = clamp(dot(_e39, _e68), 0.0, 1.0);
-    vec3 _e77 = n;
-    float _e85 = _group_1_binding_0_fs.dark_bound;
-    float _e88 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e77, _e65) * 0.5) + 0.5), _e85, _e88);
+    n = n_geom;
+    vec3 _e62 = n;
+    WeftLightGeometry _e63 = weft_main_light_geometry(_e62, v_2);
+    vec3 _e64 = n;
+    float _e73 = _group_1_binding_0_fs.dark_bound;
+    float _e76 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e64, _e63.l) * 0.5) + 0.5), _e73, _e76);
     {
         {
-            float _e91 = curvature;
-            vec4 _e93 = table_seed_lut(vec2(u, _e91));
-            falloff = _e93.xyz;
+            float _e79 = curvature;
+            vec4 _e81 = table_seed_lut(vec2(u, _e79));
+            falloff = _e81.xyz;
         }
     }
-    vec3 _e95 = falloff;
-    falloff = max(_e95, vec3(0.0));
-    vec2 _e100 = weft_env_brdf_lut(_e71, roughness_4);
-    vec3 _e101 = weft_env_brdf_from_lut(vec3(f0_1), _e100);
+    vec3 _e83 = falloff;
+    falloff = max(_e83, vec3(0.0));
+    vec2 _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4);
+    vec3 _e90 = weft_env_brdf_from_lut(vec3(f0_1), _e89);
     {
         float linear_roughness = (roughness_4 * roughness_4);
-        vec3 _e105 = n;
-        float _e108 = _group_1_binding_0_fs.lobe_weight;
-        float _e109 = skin_seed_specular(_e105, _e65, _e68, linear_roughness, mask_1, _e108);
-        specular = ((_e109 * f0_1) * n_dot_l);
+        vec3 _e94 = n;
+        float _e99 = _group_1_binding_0_fs.lobe_weight;
+        float _e100 = skin_seed_specular(_e94, _e63.l, _e63.h, linear_roughness, mask_1, _e99);
+        specular = ((_e100 * f0_1) * _e63.n_dot_l);
         kd = vec3((1.0 - f0_1));
     }
-    vec3 _e115 = weft_main_light_radiance();
-    vec3 _e116 = kd;
-    vec3 _e117 = weft_diffuse_lambert(albedo_1);
-    vec3 _e119 = falloff;
-    float _e121 = specular;
-    vec3 direct = ((((_e116 * _e117) * _e119) + vec3(_e121)) * _e115);
-    vec3 _e125 = n;
-    vec3 _e126 = weft_sh_irradiance(_e125);
-    vec3 _e127 = kd;
-    vec3 indirect_diffuse = ((_e126 * _e127) * albedo_1);
-    vec3 _e131 = n;
-    vec3 _e133 = weft_prefiltered_radiance(reflect(-(_e39), _e131), roughness_4);
-    vec3 indirect_specular = ((_e133 * _e101) * mask_1);
+    vec3 _e107 = weft_main_light_radiance();
+    vec3 _e108 = kd;
+    vec3 _e109 = weft_diffuse_lambert(albedo_1);
+    vec3 _e111 = falloff;
+    float _e113 = specular;
+    vec3 direct = ((((_e108 * _e109) * _e111) + vec3(_e113)) * _e107);
+    vec3 _e117 = n;
+    vec3 _e118 = weft_sh_irradiance(_e117);
+    vec3 _e119 = kd;
+    vec3 indirect_diffuse = ((_e118 * _e119) * albedo_1);
+    vec3 _e123 = n;
+    vec3 _e125 = weft_prefiltered_radiance(reflect(-(v_2), _e123), roughness_4);
+    vec3 indirect_specular = ((_e125 * _e90) * mask_1);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

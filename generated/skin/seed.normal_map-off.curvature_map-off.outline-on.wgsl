@@ -38,6 +38,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -180,17 +194,30 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_seed_specular(n_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n_2, h));
+fn skin_seed_specular(n_3: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
+    let n_dot_h = saturate(dot(n_3, h));
     let l_dot_h = saturate(dot(l, h));
     let r2_ = (roughness_3 * roughness_3);
     let normalization = ((roughness_3 * 4f) + 2f);
     let d = (((n_dot_h * n_dot_h) * (r2_ - 1f)) + 1.00001f);
-    let nl = saturate(dot(n_2, l));
+    let nl = saturate(dot(n_3, l));
     let s_ao = mix(0.100112915f, 1f, saturate((-0.3f + (nl * nl))));
     let denom = (((d * d) * max(0.1f, (l_dot_h * l_dot_h))) * normalization);
     let ggx = (r2_ / denom);
@@ -290,63 +317,58 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_1 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask_1 = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_2.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_2 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_2.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
-    let _e65 = weft_main_light_direction();
-    let _e67 = n;
-    let _e68 = weft_safe_normalize((_e65 + _e39), _e67);
-    let _e69 = n;
-    let _e71 = weft_clamp_cos(dot(_e69, _e39));
-    let _e72 = n;
-    let n_dot_l = saturate(dot(_e72, _e65));
-    let v_dot_h = saturate(dot(_e39, _e68));
-    let _e77 = n;
-    let _e85 = material.dark_bound;
-    let _e88 = material.bright_bound;
-    let u = clamp(((dot(_e77, _e65) * 0.5f) + 0.5f), _e85, _e88);
+    n = n_geom;
+    let _e62 = n;
+    let _e63 = weft_main_light_geometry(_e62, v_2);
+    let _e64 = n;
+    let _e73 = material.dark_bound;
+    let _e76 = material.bright_bound;
+    let u = clamp(((dot(_e64, _e63.l) * 0.5f) + 0.5f), _e73, _e76);
     {
         {
-            let _e91 = curvature;
-            let _e93 = table_seed_lut(vec2<f32>(u, _e91));
-            falloff = _e93.xyz;
+            let _e79 = curvature;
+            let _e81 = table_seed_lut(vec2<f32>(u, _e79));
+            falloff = _e81.xyz;
         }
     }
-    let _e95 = falloff;
-    falloff = max(_e95, vec3(0f));
-    let _e100 = weft_env_brdf_lut(_e71, roughness_4);
-    let _e101 = weft_env_brdf_from_lut(vec3(f0_1), _e100);
+    let _e83 = falloff;
+    falloff = max(_e83, vec3(0f));
+    let _e89 = weft_env_brdf_lut(_e63.n_dot_v, roughness_4);
+    let _e90 = weft_env_brdf_from_lut(vec3(f0_1), _e89);
     {
         let linear_roughness = (roughness_4 * roughness_4);
-        let _e105 = n;
-        let _e108 = material.lobe_weight;
-        let _e109 = skin_seed_specular(_e105, _e65, _e68, linear_roughness, mask_1, _e108);
-        specular = ((_e109 * f0_1) * n_dot_l);
+        let _e94 = n;
+        let _e99 = material.lobe_weight;
+        let _e100 = skin_seed_specular(_e94, _e63.l, _e63.h, linear_roughness, mask_1, _e99);
+        specular = ((_e100 * f0_1) * _e63.n_dot_l);
         kd = vec3((1f - f0_1));
     }
-    let _e115 = weft_main_light_radiance();
-    let _e116 = kd;
-    let _e117 = weft_diffuse_lambert(albedo_1);
-    let _e119 = falloff;
-    let _e121 = specular;
-    let direct = ((((_e116 * _e117) * _e119) + vec3(_e121)) * _e115);
-    let _e125 = n;
-    let _e126 = weft_sh_irradiance(_e125);
-    let _e127 = kd;
-    let indirect_diffuse = ((_e126 * _e127) * albedo_1);
-    let _e131 = n;
-    let _e133 = weft_prefiltered_radiance(reflect(-(_e39), _e131), roughness_4);
-    let indirect_specular = ((_e133 * _e101) * mask_1);
+    let _e107 = weft_main_light_radiance();
+    let _e108 = kd;
+    let _e109 = weft_diffuse_lambert(albedo_1);
+    let _e111 = falloff;
+    let _e113 = specular;
+    let direct = ((((_e108 * _e109) * _e111) + vec3(_e113)) * _e107);
+    let _e117 = n;
+    let _e118 = weft_sh_irradiance(_e117);
+    let _e119 = kd;
+    let indirect_diffuse = ((_e118 * _e119) * albedo_1);
+    let _e123 = n;
+    let _e125 = weft_prefiltered_radiance(reflect(-(v_2), _e123), roughness_4);
+    let indirect_specular = ((_e125 * _e90) * mask_1);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -29,6 +29,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -171,17 +185,30 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_seed_specular(n_2: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n_2, h));
+fn skin_seed_specular(n_3: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
+    let n_dot_h = saturate(dot(n_3, h));
     let l_dot_h = saturate(dot(l, h));
     let r2_ = (roughness_3 * roughness_3);
     let normalization = ((roughness_3 * 4f) + 2f);
     let d = (((n_dot_h * n_dot_h) * (r2_ - 1f)) + 1.00001f);
-    let nl = saturate(dot(n_2, l));
+    let nl = saturate(dot(n_3, l));
     let s_ao = mix(0.100112915f, 1f, saturate((-0.3f + (nl * nl))));
     let denom = (((d * d) * max(0.1f, (l_dot_h * l_dot_h))) * normalization);
     let ggx = (r2_ / denom);
@@ -233,66 +260,61 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_1 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask_1 = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_1.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_1.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
     {
         curvature = saturate((factor * mapped));
     }
-    n = _e41;
-    let _e67 = weft_main_light_direction();
-    let _e69 = n;
-    let _e70 = weft_safe_normalize((_e67 + _e39), _e69);
-    let _e71 = n;
-    let _e73 = weft_clamp_cos(dot(_e71, _e39));
-    let _e74 = n;
-    let n_dot_l = saturate(dot(_e74, _e67));
-    let v_dot_h = saturate(dot(_e39, _e70));
-    let _e79 = n;
-    let _e87 = material.dark_bound;
-    let _e90 = material.bright_bound;
-    let u = clamp(((dot(_e79, _e67) * 0.5f) + 0.5f), _e87, _e90);
+    n = n_geom;
+    let _e64 = n;
+    let _e65 = weft_main_light_geometry(_e64, v_2);
+    let _e66 = n;
+    let _e75 = material.dark_bound;
+    let _e78 = material.bright_bound;
+    let u = clamp(((dot(_e66, _e65.l) * 0.5f) + 0.5f), _e75, _e78);
     {
         {
-            let _e93 = curvature;
-            let _e95 = table_seed_lut(vec2<f32>(u, _e93));
-            falloff = _e95.xyz;
+            let _e81 = curvature;
+            let _e83 = table_seed_lut(vec2<f32>(u, _e81));
+            falloff = _e83.xyz;
         }
     }
-    let _e97 = falloff;
-    falloff = max(_e97, vec3(0f));
-    let _e102 = weft_env_brdf_lut(_e73, roughness_4);
-    let _e103 = weft_env_brdf_from_lut(vec3(f0_1), _e102);
+    let _e85 = falloff;
+    falloff = max(_e85, vec3(0f));
+    let _e91 = weft_env_brdf_lut(_e65.n_dot_v, roughness_4);
+    let _e92 = weft_env_brdf_from_lut(vec3(f0_1), _e91);
     {
         let linear_roughness = (roughness_4 * roughness_4);
-        let _e107 = n;
-        let _e110 = material.lobe_weight;
-        let _e111 = skin_seed_specular(_e107, _e67, _e70, linear_roughness, mask_1, _e110);
-        specular = ((_e111 * f0_1) * n_dot_l);
+        let _e96 = n;
+        let _e101 = material.lobe_weight;
+        let _e102 = skin_seed_specular(_e96, _e65.l, _e65.h, linear_roughness, mask_1, _e101);
+        specular = ((_e102 * f0_1) * _e65.n_dot_l);
         kd = vec3((1f - f0_1));
     }
-    let _e117 = weft_main_light_radiance();
-    let _e118 = kd;
-    let _e119 = weft_diffuse_lambert(albedo_1);
-    let _e121 = falloff;
-    let _e123 = specular;
-    let direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
-    let _e127 = n;
-    let _e128 = weft_sh_irradiance(_e127);
-    let _e129 = kd;
-    let indirect_diffuse = ((_e128 * _e129) * albedo_1);
-    let _e133 = n;
-    let _e135 = weft_prefiltered_radiance(reflect(-(_e39), _e133), roughness_4);
-    let indirect_specular = ((_e135 * _e103) * mask_1);
+    let _e109 = weft_main_light_radiance();
+    let _e110 = kd;
+    let _e111 = weft_diffuse_lambert(albedo_1);
+    let _e113 = falloff;
+    let _e115 = specular;
+    let direct = ((((_e110 * _e111) * _e113) + vec3(_e115)) * _e109);
+    let _e119 = n;
+    let _e120 = weft_sh_irradiance(_e119);
+    let _e121 = kd;
+    let indirect_diffuse = ((_e120 * _e121) * albedo_1);
+    let _e125 = n;
+    let _e127 = weft_prefiltered_radiance(reflect(-(v_2), _e125), roughness_4);
+    let indirect_specular = ((_e127 * _e92) * mask_1);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

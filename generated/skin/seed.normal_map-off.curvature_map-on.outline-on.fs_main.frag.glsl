@@ -34,6 +34,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -168,17 +180,30 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(vec3 n_2, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
-    float n_dot_h = clamp(dot(n_2, h), 0.0, 1.0);
+float skin_seed_specular(vec3 n_3, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_3, h), 0.0, 1.0);
     float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = clamp(dot(n_2, l), 0.0, 1.0);
+    float nl = clamp(dot(n_3, l), 0.0, 1.0);
     float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -206,66 +231,61 @@ void main() {
     float f0_1 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask_1 = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_2 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
     {
         curvature = clamp((factor * mapped), 0.0, 1.0);
     }
-    n = _e41;
-    vec3 _e67 = weft_main_light_direction();
-    vec3 _e69 = n;
-    vec3 _e70 = weft_safe_normalize((_e67 + _e39), _e69);
-    vec3 _e71 = n;
-    float _e73 = weft_clamp_cos(dot(_e71, _e39));
-    vec3 _e74 = n;
-    float n_dot_l = clamp(dot(_e74, _e67), 0.0, 1.0);
-    float v_dot_h = clamp(dot(_e39, _e70), 0.0, 1.0);
-    vec3 _e79 = n;
-    float _e87 = _group_1_binding_0_fs.dark_bound;
-    float _e90 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e79, _e67) * 0.5) + 0.5), _e87, _e90);
+    n = n_geom;
+    vec3 _e64 = n;
+    WeftLightGeometry _e65 = weft_main_light_geometry(_e64, v_2);
+    vec3 _e66 = n;
+    float _e75 = _group_1_binding_0_fs.dark_bound;
+    float _e78 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e66, _e65.l) * 0.5) + 0.5), _e75, _e78);
     {
         {
-            float _e93 = curvature;
-            vec4 _e95 = table_seed_lut(vec2(u, _e93));
-            falloff = _e95.xyz;
+            float _e81 = curvature;
+            vec4 _e83 = table_seed_lut(vec2(u, _e81));
+            falloff = _e83.xyz;
         }
     }
-    vec3 _e97 = falloff;
-    falloff = max(_e97, vec3(0.0));
-    vec2 _e102 = weft_env_brdf_lut(_e73, roughness_4);
-    vec3 _e103 = weft_env_brdf_from_lut(vec3(f0_1), _e102);
+    vec3 _e85 = falloff;
+    falloff = max(_e85, vec3(0.0));
+    vec2 _e91 = weft_env_brdf_lut(_e65.n_dot_v, roughness_4);
+    vec3 _e92 = weft_env_brdf_from_lut(vec3(f0_1), _e91);
     {
         float linear_roughness = (roughness_4 * roughness_4);
-        vec3 _e107 = n;
-        float _e110 = _group_1_binding_0_fs.lobe_weight;
-        float _e111 = skin_seed_specular(_e107, _e67, _e70, linear_roughness, mask_1, _e110);
-        specular = ((_e111 * f0_1) * n_dot_l);
+        vec3 _e96 = n;
+        float _e101 = _group_1_binding_0_fs.lobe_weight;
+        float _e102 = skin_seed_specular(_e96, _e65.l, _e65.h, linear_roughness, mask_1, _e101);
+        specular = ((_e102 * f0_1) * _e65.n_dot_l);
         kd = vec3((1.0 - f0_1));
     }
-    vec3 _e117 = weft_main_light_radiance();
-    vec3 _e118 = kd;
-    vec3 _e119 = weft_diffuse_lambert(albedo_1);
-    vec3 _e121 = falloff;
-    float _e123 = specular;
-    vec3 direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
-    vec3 _e127 = n;
-    vec3 _e128 = weft_sh_irradiance(_e127);
-    vec3 _e129 = kd;
-    vec3 indirect_diffuse = ((_e128 * _e129) * albedo_1);
-    vec3 _e133 = n;
-    vec3 _e135 = weft_prefiltered_radiance(reflect(-(_e39), _e133), roughness_4);
-    vec3 indirect_specular = ((_e135 * _e103) * mask_1);
+    vec3 _e109 = weft_main_light_radiance();
+    vec3 _e110 = kd;
+    vec3 _e111 = weft_diffuse_lambert(albedo_1);
+    vec3 _e113 = falloff;
+    float _e115 = specular;
+    vec3 direct = ((((_e110 * _e111) * _e113) + vec3(_e115)) * _e109);
+    vec3 _e119 = n;
+    vec3 _e120 = weft_sh_irradiance(_e119);
+    vec3 _e121 = kd;
+    vec3 indirect_diffuse = ((_e120 * _e121) * albedo_1);
+    vec3 _e125 = n;
+    vec3 _e127 = weft_prefiltered_radiance(reflect(-(v_2), _e125), roughness_4);
+    vec3 indirect_specular = ((_e127 * _e92) * mask_1);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

@@ -44,6 +44,19 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     metal::float4 clip_position;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -197,6 +210,27 @@ metal::float2 weft_env_brdf_lut(
     return _e8.xy;
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv_1,
     metal::float4 st
@@ -205,19 +239,19 @@ metal::float2 weft_transform_uv(
 }
 
 float skin_seed_specular(
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float3 l,
     metal::float3 h,
     float roughness_3,
     float mask,
     float lobe_weight
 ) {
-    float n_dot_h = metal::saturate(metal::dot(n_2, h));
+    float n_dot_h = metal::saturate(metal::dot(n_3, h));
     float l_dot_h = metal::saturate(metal::dot(l, h));
     float r2_ = roughness_3 * roughness_3;
     float normalization = (roughness_3 * 4.0) + 2.0;
     float d = ((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001;
-    float nl = metal::saturate(metal::dot(n_2, l));
+    float nl = metal::saturate(metal::dot(n_3, l));
     float s_ao = metal::mix(0.100112915, 1.0, metal::saturate(-0.3 + (nl * nl)));
     float denom = ((d * d) * metal::max(0.1, l_dot_h * l_dot_h)) * normalization;
     float ggx = r2_ / denom;
@@ -333,8 +367,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -357,7 +391,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> specular_mask [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> seed_lut [[texture(5)]]
 ) {
-    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_1, varyings_3.world_normal, varyings_3.world_tangent, varyings_3.uv0_ };
+    const WeftVaryings in_2 = { clip_position, varyings_3.world_position_2, varyings_3.world_normal_1, varyings_3.world_tangent, varyings_3.uv0_ };
     float curvature = {};
     metal::float3 n = {};
     metal::float3 falloff = {};
@@ -376,66 +410,61 @@ fragment fs_mainOutput fs_main(
     float f0_1 = metal::clamp(_e25, 0.0, 1.0);
     metal::float4 _e31 = specular_mask.sample(material_sampler, _e5);
     float mask_1 = metal::saturate(_e31.x);
-    metal::float3 _e39 = weft_view_direction(in_2.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    metal::float3 _e42 = metal::fwidth(_e41);
-    float dn = metal::length(_e42);
-    metal::float3 _e45 = metal::fwidth(in_2.world_position);
-    float dp = metal::length(_e45);
+    WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal, weft_frame);
+    metal::float3 v_2 = _e36.v;
+    metal::float3 n_geom = _e36.n;
+    metal::float3 _e39 = metal::fwidth(n_geom);
+    float dn = metal::length(_e39);
+    metal::float3 _e42 = metal::fwidth(in_2.world_position);
+    float dp = metal::length(_e42);
     float estimated = (dp > 0.000000000001) ? (dn / dp) : 0.0;
-    metal::float4 _e54 = curvature_map.sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = metal::max(_e58, 0.0);
+    metal::float4 _e51 = curvature_map.sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = metal::max(_e55, 0.0);
     curvature = metal::saturate(factor * estimated);
     {
         curvature = metal::saturate(factor * mapped);
     }
-    n = _e41;
-    metal::float3 _e67 = weft_main_light_direction(weft_frame);
-    metal::float3 _e69 = n;
-    metal::float3 _e70 = weft_safe_normalize(_e67 + _e39, _e69);
-    metal::float3 _e71 = n;
-    float _e73 = weft_clamp_cos(metal::dot(_e71, _e39));
-    metal::float3 _e74 = n;
-    float n_dot_l = metal::saturate(metal::dot(_e74, _e67));
-    float v_dot_h = metal::saturate(metal::dot(_e39, _e70));
-    metal::float3 _e79 = n;
-    float _e87 = material.dark_bound;
-    float _e90 = material.bright_bound;
-    float u = metal::clamp((metal::dot(_e79, _e67) * 0.5) + 0.5, _e87, _e90);
+    n = n_geom;
+    metal::float3 _e64 = n;
+    WeftLightGeometry _e65 = weft_main_light_geometry(_e64, v_2, weft_frame);
+    metal::float3 _e66 = n;
+    float _e75 = material.dark_bound;
+    float _e78 = material.bright_bound;
+    float u = metal::clamp((metal::dot(_e66, _e65.l) * 0.5) + 0.5, _e75, _e78);
     {
         {
-            float _e93 = curvature;
-            metal::float4 _e95 = table_seed_lut(metal::float2(u, _e93), material_clamp_sampler, seed_lut);
-            falloff = _e95.xyz;
+            float _e81 = curvature;
+            metal::float4 _e83 = table_seed_lut(metal::float2(u, _e81), material_clamp_sampler, seed_lut);
+            falloff = _e83.xyz;
         }
     }
-    metal::float3 _e97 = falloff;
-    falloff = metal::max(_e97, metal::float3(0.0));
-    metal::float2 _e102 = weft_env_brdf_lut(_e73, roughness_4, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e103 = weft_env_brdf_from_lut(metal::float3(f0_1), _e102);
+    metal::float3 _e85 = falloff;
+    falloff = metal::max(_e85, metal::float3(0.0));
+    metal::float2 _e91 = weft_env_brdf_lut(_e65.n_dot_v, roughness_4, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e92 = weft_env_brdf_from_lut(metal::float3(f0_1), _e91);
     {
         float linear_roughness = roughness_4 * roughness_4;
-        metal::float3 _e107 = n;
-        float _e110 = material.lobe_weight;
-        float _e111 = skin_seed_specular(_e107, _e67, _e70, linear_roughness, mask_1, _e110);
-        specular = (_e111 * f0_1) * n_dot_l;
+        metal::float3 _e96 = n;
+        float _e101 = material.lobe_weight;
+        float _e102 = skin_seed_specular(_e96, _e65.l, _e65.h, linear_roughness, mask_1, _e101);
+        specular = (_e102 * f0_1) * _e65.n_dot_l;
         kd = metal::float3(1.0 - f0_1);
     }
-    metal::float3 _e117 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e118 = kd;
-    metal::float3 _e119 = weft_diffuse_lambert(albedo_1);
-    metal::float3 _e121 = falloff;
-    float _e123 = specular;
-    metal::float3 direct = (((_e118 * _e119) * _e121) + metal::float3(_e123)) * _e117;
-    metal::float3 _e127 = n;
-    metal::float3 _e128 = weft_sh_irradiance(_e127, weft_frame);
-    metal::float3 _e129 = kd;
-    metal::float3 indirect_diffuse = (_e128 * _e129) * albedo_1;
-    metal::float3 _e133 = n;
-    metal::float3 _e135 = weft_prefiltered_radiance(metal::reflect(-(_e39), _e133), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular = (_e135 * _e103) * mask_1;
+    metal::float3 _e109 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e110 = kd;
+    metal::float3 _e111 = weft_diffuse_lambert(albedo_1);
+    metal::float3 _e113 = falloff;
+    float _e115 = specular;
+    metal::float3 direct = (((_e110 * _e111) * _e113) + metal::float3(_e115)) * _e109;
+    metal::float3 _e119 = n;
+    metal::float3 _e120 = weft_sh_irradiance(_e119, weft_frame);
+    metal::float3 _e121 = kd;
+    metal::float3 indirect_diffuse = (_e120 * _e121) * albedo_1;
+    metal::float3 _e125 = n;
+    metal::float3 _e127 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e125), roughness_4, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular = (_e127 * _e92) * mask_1;
     metal::float3 color = (direct + indirect_diffuse) + indirect_specular;
     metal::float3 radiance = metal::clamp(color, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };

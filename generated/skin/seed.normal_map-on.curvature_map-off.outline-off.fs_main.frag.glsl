@@ -27,6 +27,18 @@ struct WeftMaterial {
     float outline_width;
     float outline_max_distance;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -170,21 +182,34 @@ vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     return _e8.xy;
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
@@ -192,17 +217,24 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(vec3 n_4, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
-    float n_dot_h = clamp(dot(n_4, h), 0.0, 1.0);
+float skin_seed_specular(vec3 n_6, vec3 l, vec3 h, float roughness_3, float mask, float lobe_weight) {
+    float n_dot_h = clamp(dot(n_6, h), 0.0, 1.0);
     float l_dot_h = clamp(dot(l, h), 0.0, 1.0);
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = clamp(dot(n_4, l), 0.0, 1.0);
+    float nl = clamp(dot(n_6, l), 0.0, 1.0);
     float s_ao = mix(0.100112915, 1.0, clamp((-0.3 + (nl * nl)), 0.0, 1.0));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -230,73 +262,66 @@ void main() {
     float f0_1 = clamp(_e25, 0.0, 1.0);
     vec4 _e31 = texture(_group_1_binding_6_fs, vec2(_e5));
     float mask_1 = clamp(_e31.x, 0.0, 1.0);
-    vec3 _e39 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e41 = weft_safe_normalize(in_1.world_normal, _e39);
-    vec3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    vec3 _e45 = fwidth(in_1.world_position);
-    float dp = length(_e45);
+    WeftSurface _e36 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_3 = _e36.v;
+    vec3 n_geom = _e36.n;
+    vec3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    vec3 _e42 = fwidth(in_1.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    vec4 _e54 = texture(_group_1_binding_5_fs, vec2(_e5));
-    float mapped = _e54.x;
-    float _e58 = _group_1_binding_0_fs.curvature_factor;
-    float factor = max(_e58, 0.0);
+    vec4 _e51 = texture(_group_1_binding_5_fs, vec2(_e5));
+    float mapped = _e51.x;
+    float _e55 = _group_1_binding_0_fs.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = clamp((factor * estimated), 0.0, 1.0);
-    n = _e41;
+    n = n_geom;
     {
-        vec3 _e65 = n;
-        mat3x3 _e67 = weft_tangent_frame(_e65, in_1.world_tangent);
-        vec4 _e70 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e70.xyz;
-        float _e74 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e75 = weft_unpack_normal(texel_1, _e74);
-        vec3 _e76 = weft_normal_from_tangent_space(_e67, _e75);
-        n = _e76;
+        vec4 _e64 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e64.xyz;
+        vec3 _e66 = n;
+        float _e70 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e71 = weft_mapped_normal(_e66, in_1.world_tangent, texel_2, _e70);
+        n = _e71;
     }
-    vec3 _e77 = weft_main_light_direction();
-    vec3 _e79 = n;
-    vec3 _e80 = weft_safe_normalize((_e77 + _e39), _e79);
-    vec3 _e81 = n;
-    float _e83 = weft_clamp_cos(dot(_e81, _e39));
-    vec3 _e84 = n;
-    float n_dot_l = clamp(dot(_e84, _e77), 0.0, 1.0);
-    float v_dot_h = clamp(dot(_e39, _e80), 0.0, 1.0);
-    vec3 _e89 = n;
-    float _e97 = _group_1_binding_0_fs.dark_bound;
-    float _e100 = _group_1_binding_0_fs.bright_bound;
-    float u = clamp(((dot(_e89, _e77) * 0.5) + 0.5), _e97, _e100);
+    vec3 _e72 = n;
+    WeftLightGeometry _e73 = weft_main_light_geometry(_e72, v_3);
+    vec3 _e74 = n;
+    float _e83 = _group_1_binding_0_fs.dark_bound;
+    float _e86 = _group_1_binding_0_fs.bright_bound;
+    float u = clamp(((dot(_e74, _e73.l) * 0.5) + 0.5), _e83, _e86);
     {
         {
-            float _e103 = curvature;
-            vec4 _e105 = table_seed_lut(vec2(u, _e103));
-            falloff = _e105.xyz;
+            float _e89 = curvature;
+            vec4 _e91 = table_seed_lut(vec2(u, _e89));
+            falloff = _e91.xyz;
         }
     }
-    vec3 _e107 = falloff;
-    falloff = max(_e107, vec3(0.0));
-    vec2 _e112 = weft_env_brdf_lut(_e83, roughness_4);
-    vec3 _e113 = weft_env_brdf_from_lut(vec3(f0_1), _e112);
+    vec3 _e93 = falloff;
+    falloff = max(_e93, vec3(0.0));
+    vec2 _e99 = weft_env_brdf_lut(_e73.n_dot_v, roughness_4);
+    vec3 _e100 = weft_env_brdf_from_lut(vec3(f0_1), _e99);
     {
         float linear_roughness = (roughness_4 * roughness_4);
-        vec3 _e117 = n;
-        float _e120 = _group_1_binding_0_fs.lobe_weight;
-        float _e121 = skin_seed_specular(_e117, _e77, _e80, linear_roughness, mask_1, _e120);
-        specular = ((_e121 * f0_1) * n_dot_l);
+        vec3 _e104 = n;
+        float _e109 = _group_1_binding_0_fs.lobe_weight;
+        float _e110 = skin_seed_specular(_e104, _e73.l, _e73.h, linear_roughness, mask_1, _e109);
+        specular = ((_e110 * f0_1) * _e73.n_dot_l);
         kd = vec3((1.0 - f0_1));
     }
-    vec3 _e127 = weft_main_light_radiance();
-    vec3 _e128 = kd;
-    vec3 _e129 = weft_diffuse_lambert(albedo_1);
-    vec3 _e131 = falloff;
-    float _e133 = specular;
-    vec3 direct = ((((_e128 * _e129) * _e131) + vec3(_e133)) * _e127);
-    vec3 _e137 = n;
-    vec3 _e138 = weft_sh_irradiance(_e137);
-    vec3 _e139 = kd;
-    vec3 indirect_diffuse = ((_e138 * _e139) * albedo_1);
-    vec3 _e143 = n;
-    vec3 _e145 = weft_prefiltered_radiance(reflect(-(_e39), _e143), roughness_4);
-    vec3 indirect_specular = ((_e145 * _e113) * mask_1);
+    vec3 _e117 = weft_main_light_radiance();
+    vec3 _e118 = kd;
+    vec3 _e119 = weft_diffuse_lambert(albedo_1);
+    vec3 _e121 = falloff;
+    float _e123 = specular;
+    vec3 direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
+    vec3 _e127 = n;
+    vec3 _e128 = weft_sh_irradiance(_e127);
+    vec3 _e129 = kd;
+    vec3 indirect_diffuse = ((_e128 * _e129) * albedo_1);
+    vec3 _e133 = n;
+    vec3 _e135 = weft_prefiltered_radiance(reflect(-(v_3), _e133), roughness_4);
+    vec3 indirect_specular = ((_e135 * _e100) * mask_1);
     vec3 color = ((direct + indirect_diffuse) + indirect_specular);
     vec3 radiance = clamp(color, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);

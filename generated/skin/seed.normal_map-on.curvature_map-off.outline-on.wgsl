@@ -38,6 +38,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -189,21 +203,34 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -211,17 +238,24 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_seed_specular(n_4: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n_4, h));
+fn skin_seed_specular(n_6: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
+    let n_dot_h = saturate(dot(n_6, h));
     let l_dot_h = saturate(dot(l, h));
     let r2_ = (roughness_3 * roughness_3);
     let normalization = ((roughness_3 * 4f) + 2f);
     let d = (((n_dot_h * n_dot_h) * (r2_ - 1f)) + 1.00001f);
-    let nl = saturate(dot(n_4, l));
+    let nl = saturate(dot(n_6, l));
     let s_ao = mix(0.100112915f, 1f, saturate((-0.3f + (nl * nl))));
     let denom = (((d * d) * max(0.1f, (l_dot_h * l_dot_h))) * normalization);
     let ggx = (r2_ / denom);
@@ -321,73 +355,66 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_1 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask_1 = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_2.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_3 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_2.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
-    n = _e41;
+    n = n_geom;
     {
-        let _e65 = n;
-        let _e67 = weft_tangent_frame(_e65, in_2.world_tangent);
-        let _e70 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e70.xyz;
-        let _e74 = material.normal_strength;
-        let _e75 = weft_unpack_normal(texel_1, _e74);
-        let _e76 = weft_normal_from_tangent_space(_e67, _e75);
-        n = _e76;
+        let _e64 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e64.xyz;
+        let _e66 = n;
+        let _e70 = material.normal_strength;
+        let _e71 = weft_mapped_normal(_e66, in_2.world_tangent, texel_2, _e70);
+        n = _e71;
     }
-    let _e77 = weft_main_light_direction();
-    let _e79 = n;
-    let _e80 = weft_safe_normalize((_e77 + _e39), _e79);
-    let _e81 = n;
-    let _e83 = weft_clamp_cos(dot(_e81, _e39));
-    let _e84 = n;
-    let n_dot_l = saturate(dot(_e84, _e77));
-    let v_dot_h = saturate(dot(_e39, _e80));
-    let _e89 = n;
-    let _e97 = material.dark_bound;
-    let _e100 = material.bright_bound;
-    let u = clamp(((dot(_e89, _e77) * 0.5f) + 0.5f), _e97, _e100);
+    let _e72 = n;
+    let _e73 = weft_main_light_geometry(_e72, v_3);
+    let _e74 = n;
+    let _e83 = material.dark_bound;
+    let _e86 = material.bright_bound;
+    let u = clamp(((dot(_e74, _e73.l) * 0.5f) + 0.5f), _e83, _e86);
     {
         {
-            let _e103 = curvature;
-            let _e105 = table_seed_lut(vec2<f32>(u, _e103));
-            falloff = _e105.xyz;
+            let _e89 = curvature;
+            let _e91 = table_seed_lut(vec2<f32>(u, _e89));
+            falloff = _e91.xyz;
         }
     }
-    let _e107 = falloff;
-    falloff = max(_e107, vec3(0f));
-    let _e112 = weft_env_brdf_lut(_e83, roughness_4);
-    let _e113 = weft_env_brdf_from_lut(vec3(f0_1), _e112);
+    let _e93 = falloff;
+    falloff = max(_e93, vec3(0f));
+    let _e99 = weft_env_brdf_lut(_e73.n_dot_v, roughness_4);
+    let _e100 = weft_env_brdf_from_lut(vec3(f0_1), _e99);
     {
         let linear_roughness = (roughness_4 * roughness_4);
-        let _e117 = n;
-        let _e120 = material.lobe_weight;
-        let _e121 = skin_seed_specular(_e117, _e77, _e80, linear_roughness, mask_1, _e120);
-        specular = ((_e121 * f0_1) * n_dot_l);
+        let _e104 = n;
+        let _e109 = material.lobe_weight;
+        let _e110 = skin_seed_specular(_e104, _e73.l, _e73.h, linear_roughness, mask_1, _e109);
+        specular = ((_e110 * f0_1) * _e73.n_dot_l);
         kd = vec3((1f - f0_1));
     }
-    let _e127 = weft_main_light_radiance();
-    let _e128 = kd;
-    let _e129 = weft_diffuse_lambert(albedo_1);
-    let _e131 = falloff;
-    let _e133 = specular;
-    let direct = ((((_e128 * _e129) * _e131) + vec3(_e133)) * _e127);
-    let _e137 = n;
-    let _e138 = weft_sh_irradiance(_e137);
-    let _e139 = kd;
-    let indirect_diffuse = ((_e138 * _e139) * albedo_1);
-    let _e143 = n;
-    let _e145 = weft_prefiltered_radiance(reflect(-(_e39), _e143), roughness_4);
-    let indirect_specular = ((_e145 * _e113) * mask_1);
+    let _e117 = weft_main_light_radiance();
+    let _e118 = kd;
+    let _e119 = weft_diffuse_lambert(albedo_1);
+    let _e121 = falloff;
+    let _e123 = specular;
+    let direct = ((((_e118 * _e119) * _e121) + vec3(_e123)) * _e117);
+    let _e127 = n;
+    let _e128 = weft_sh_irradiance(_e127);
+    let _e129 = kd;
+    let indirect_diffuse = ((_e128 * _e129) * albedo_1);
+    let _e133 = n;
+    let _e135 = weft_prefiltered_radiance(reflect(-(v_3), _e133), roughness_4);
+    let indirect_specular = ((_e135 * _e100) * mask_1);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

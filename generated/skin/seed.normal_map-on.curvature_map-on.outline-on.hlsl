@@ -41,6 +41,24 @@ struct WeftOutlineVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -94,16 +112,16 @@ struct VertexOutput_vs_outline {
 };
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position_1 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_2 : SV_Position;
@@ -215,23 +233,58 @@ float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
     return _e8.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
@@ -240,19 +293,27 @@ float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
     return _e4;
 }
 
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-float skin_seed_specular(float3 n_4, float3 l, float3 h, float roughness_3, float mask, float lobe_weight)
+float skin_seed_specular(float3 n_6, float3 l, float3 h, float roughness_3, float mask, float lobe_weight)
 {
-    float n_dot_h = saturate(dot(n_4, h));
+    float n_dot_h = saturate(dot(n_6, h));
     float l_dot_h = saturate(dot(l, h));
     float r2_ = (roughness_3 * roughness_3);
     float normalization = ((roughness_3 * 4.0) + 2.0);
     float d = (((n_dot_h * n_dot_h) * (r2_ - 1.0)) + 1.00001);
-    float nl = saturate(dot(n_4, l));
+    float nl = saturate(dot(n_6, l));
     float s_ao = lerp(0.100112915, 1.0, saturate((-0.3 + (nl * nl))));
     float denom = (((d * d) * max(0.1, (l_dot_h * l_dot_h))) * normalization);
     float ggx = (r2_ / denom);
@@ -337,7 +398,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float curvature = (float)0;
     float3 n = (float3)0;
     float3 falloff = (float3)0;
@@ -357,76 +418,69 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float f0_1 = clamp(_e25, 0.0, 1.0);
     float4 _e31 = specular_mask.Sample(material_sampler, _e5);
     float mask_1 = saturate(_e31.x);
-    const float3 _e39 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    float3 _e42 = fwidth(_e41);
-    float dn = length(_e42);
-    float3 _e45 = fwidth(in_2.world_position);
-    float dp = length(_e45);
+    const WeftSurface _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    float3 v_3 = _e36.v;
+    float3 n_geom = _e36.n;
+    float3 _e39 = fwidth(n_geom);
+    float dn = length(_e39);
+    float3 _e42 = fwidth(in_2.world_position);
+    float dp = length(_e42);
     float estimated = ((dp > 1e-12) ? (dn / dp) : 0.0);
-    float4 _e54 = curvature_map.Sample(material_sampler, _e5);
-    float mapped = _e54.x;
-    float _e58 = material.curvature_factor;
-    float factor = max(_e58, 0.0);
+    float4 _e51 = curvature_map.Sample(material_sampler, _e5);
+    float mapped = _e51.x;
+    float _e55 = material.curvature_factor;
+    float factor = max(_e55, 0.0);
     curvature = saturate((factor * estimated));
     {
         curvature = saturate((factor * mapped));
     }
-    n = _e41;
+    n = n_geom;
     {
-        float3 _e67 = n;
-        const float3x3 _e69 = weft_tangent_frame(_e67, in_2.world_tangent);
-        float4 _e72 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e72.xyz;
-        float _e76 = material.normal_strength;
-        const float3 _e77 = weft_unpack_normal(texel_1, _e76);
-        const float3 _e78 = weft_normal_from_tangent_space(_e69, _e77);
-        n = _e78;
+        float4 _e66 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e66.xyz;
+        float3 _e68 = n;
+        float _e72 = material.normal_strength;
+        const float3 _e73 = weft_mapped_normal(_e68, in_2.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    const float3 _e79 = weft_main_light_direction();
-    float3 _e81 = n;
-    const float3 _e82 = weft_safe_normalize((_e79 + _e39), _e81);
-    float3 _e83 = n;
-    const float _e85 = weft_clamp_cos(dot(_e83, _e39));
-    float3 _e86 = n;
-    float n_dot_l = saturate(dot(_e86, _e79));
-    float v_dot_h = saturate(dot(_e39, _e82));
-    float3 _e91 = n;
-    float _e99 = material.dark_bound;
-    float _e102 = material.bright_bound;
-    float u = clamp(((dot(_e91, _e79) * 0.5) + 0.5), _e99, _e102);
+    float3 _e74 = n;
+    const WeftLightGeometry _e75 = weft_main_light_geometry(_e74, v_3);
+    float3 _e76 = n;
+    float _e85 = material.dark_bound;
+    float _e88 = material.bright_bound;
+    float u = clamp(((dot(_e76, _e75.l) * 0.5) + 0.5), _e85, _e88);
     {
         {
-            float _e105 = curvature;
-            const float4 _e107 = table_seed_lut(float2(u, _e105));
-            falloff = _e107.xyz;
+            float _e91 = curvature;
+            const float4 _e93 = table_seed_lut(float2(u, _e91));
+            falloff = _e93.xyz;
         }
     }
-    float3 _e109 = falloff;
-    falloff = max(_e109, (0.0).xxx);
-    const float2 _e114 = weft_env_brdf_lut(_e85, roughness_4);
-    const float3 _e115 = weft_env_brdf_from_lut((f0_1).xxx, _e114);
+    float3 _e95 = falloff;
+    falloff = max(_e95, (0.0).xxx);
+    const float2 _e101 = weft_env_brdf_lut(_e75.n_dot_v, roughness_4);
+    const float3 _e102 = weft_env_brdf_from_lut((f0_1).xxx, _e101);
     {
         float linear_roughness = (roughness_4 * roughness_4);
-        float3 _e119 = n;
-        float _e122 = material.lobe_weight;
-        const float _e123 = skin_seed_specular(_e119, _e79, _e82, linear_roughness, mask_1, _e122);
-        specular = ((_e123 * f0_1) * n_dot_l);
+        float3 _e106 = n;
+        float _e111 = material.lobe_weight;
+        const float _e112 = skin_seed_specular(_e106, _e75.l, _e75.h, linear_roughness, mask_1, _e111);
+        specular = ((_e112 * f0_1) * _e75.n_dot_l);
         kd = ((1.0 - f0_1)).xxx;
     }
-    const float3 _e129 = weft_main_light_radiance();
-    float3 _e130 = kd;
-    const float3 _e131 = weft_diffuse_lambert(albedo_1);
-    float3 _e133 = falloff;
-    float _e135 = specular;
-    float3 direct = ((((_e130 * _e131) * _e133) + (_e135).xxx) * _e129);
-    float3 _e139 = n;
-    const float3 _e140 = weft_sh_irradiance(_e139);
-    float3 _e141 = kd;
-    float3 indirect_diffuse = ((_e140 * _e141) * albedo_1);
-    float3 _e145 = n;
-    const float3 _e147 = weft_prefiltered_radiance(reflect(-(_e39), _e145), roughness_4);
-    float3 indirect_specular = ((_e147 * _e115) * mask_1);
+    const float3 _e119 = weft_main_light_radiance();
+    float3 _e120 = kd;
+    const float3 _e121 = weft_diffuse_lambert(albedo_1);
+    float3 _e123 = falloff;
+    float _e125 = specular;
+    float3 direct = ((((_e120 * _e121) * _e123) + (_e125).xxx) * _e119);
+    float3 _e129 = n;
+    const float3 _e130 = weft_sh_irradiance(_e129);
+    float3 _e131 = kd;
+    float3 indirect_diffuse = ((_e130 * _e131) * albedo_1);
+    float3 _e135 = n;
+    const float3 _e137 = weft_prefiltered_radiance(reflect(-(v_3), _e135), roughness_4);
+    float3 indirect_specular = ((_e137 * _e102) * mask_1);
     float3 color = ((direct + indirect_diffuse) + indirect_specular);
     float3 radiance = clamp(color, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);

@@ -38,6 +38,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -189,21 +203,34 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     return _e8.xy;
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -211,17 +238,24 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
+}
+
 fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv_1 * st.xy) + st.zw);
 }
 
-fn skin_seed_specular(n_4: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
-    let n_dot_h = saturate(dot(n_4, h));
+fn skin_seed_specular(n_6: vec3<f32>, l: vec3<f32>, h: vec3<f32>, roughness_3: f32, mask: f32, lobe_weight: f32) -> f32 {
+    let n_dot_h = saturate(dot(n_6, h));
     let l_dot_h = saturate(dot(l, h));
     let r2_ = (roughness_3 * roughness_3);
     let normalization = ((roughness_3 * 4f) + 2f);
     let d = (((n_dot_h * n_dot_h) * (r2_ - 1f)) + 1.00001f);
-    let nl = saturate(dot(n_4, l));
+    let nl = saturate(dot(n_6, l));
     let s_ao = mix(0.100112915f, 1f, saturate((-0.3f + (nl * nl))));
     let denom = (((d * d) * max(0.1f, (l_dot_h * l_dot_h))) * normalization);
     let ggx = (r2_ / denom);
@@ -321,76 +355,69 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let f0_1 = clamp(_e25, 0f, 1f);
     let _e31 = textureSample(specular_mask, material_sampler, _e5);
     let mask_1 = saturate(_e31.x);
-    let _e39 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e41 = weft_safe_normalize(in_2.world_normal, _e39);
-    let _e42 = fwidth(_e41);
-    let dn = length(_e42);
-    let _e45 = fwidth(in_2.world_position);
-    let dp = length(_e45);
+    let _e36 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_3 = _e36.v;
+    let n_geom = _e36.n;
+    let _e39 = fwidth(n_geom);
+    let dn = length(_e39);
+    let _e42 = fwidth(in_2.world_position);
+    let dp = length(_e42);
     let estimated = select(0f, (dn / dp), (dp > 0.000000000001f));
-    let _e54 = textureSample(curvature_map, material_sampler, _e5);
-    let mapped = _e54.x;
-    let _e58 = material.curvature_factor;
-    let factor = max(_e58, 0f);
+    let _e51 = textureSample(curvature_map, material_sampler, _e5);
+    let mapped = _e51.x;
+    let _e55 = material.curvature_factor;
+    let factor = max(_e55, 0f);
     curvature = saturate((factor * estimated));
     {
         curvature = saturate((factor * mapped));
     }
-    n = _e41;
+    n = n_geom;
     {
-        let _e67 = n;
-        let _e69 = weft_tangent_frame(_e67, in_2.world_tangent);
-        let _e72 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e72.xyz;
-        let _e76 = material.normal_strength;
-        let _e77 = weft_unpack_normal(texel_1, _e76);
-        let _e78 = weft_normal_from_tangent_space(_e69, _e77);
-        n = _e78;
+        let _e66 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e66.xyz;
+        let _e68 = n;
+        let _e72 = material.normal_strength;
+        let _e73 = weft_mapped_normal(_e68, in_2.world_tangent, texel_2, _e72);
+        n = _e73;
     }
-    let _e79 = weft_main_light_direction();
-    let _e81 = n;
-    let _e82 = weft_safe_normalize((_e79 + _e39), _e81);
-    let _e83 = n;
-    let _e85 = weft_clamp_cos(dot(_e83, _e39));
-    let _e86 = n;
-    let n_dot_l = saturate(dot(_e86, _e79));
-    let v_dot_h = saturate(dot(_e39, _e82));
-    let _e91 = n;
-    let _e99 = material.dark_bound;
-    let _e102 = material.bright_bound;
-    let u = clamp(((dot(_e91, _e79) * 0.5f) + 0.5f), _e99, _e102);
+    let _e74 = n;
+    let _e75 = weft_main_light_geometry(_e74, v_3);
+    let _e76 = n;
+    let _e85 = material.dark_bound;
+    let _e88 = material.bright_bound;
+    let u = clamp(((dot(_e76, _e75.l) * 0.5f) + 0.5f), _e85, _e88);
     {
         {
-            let _e105 = curvature;
-            let _e107 = table_seed_lut(vec2<f32>(u, _e105));
-            falloff = _e107.xyz;
+            let _e91 = curvature;
+            let _e93 = table_seed_lut(vec2<f32>(u, _e91));
+            falloff = _e93.xyz;
         }
     }
-    let _e109 = falloff;
-    falloff = max(_e109, vec3(0f));
-    let _e114 = weft_env_brdf_lut(_e85, roughness_4);
-    let _e115 = weft_env_brdf_from_lut(vec3(f0_1), _e114);
+    let _e95 = falloff;
+    falloff = max(_e95, vec3(0f));
+    let _e101 = weft_env_brdf_lut(_e75.n_dot_v, roughness_4);
+    let _e102 = weft_env_brdf_from_lut(vec3(f0_1), _e101);
     {
         let linear_roughness = (roughness_4 * roughness_4);
-        let _e119 = n;
-        let _e122 = material.lobe_weight;
-        let _e123 = skin_seed_specular(_e119, _e79, _e82, linear_roughness, mask_1, _e122);
-        specular = ((_e123 * f0_1) * n_dot_l);
+        let _e106 = n;
+        let _e111 = material.lobe_weight;
+        let _e112 = skin_seed_specular(_e106, _e75.l, _e75.h, linear_roughness, mask_1, _e111);
+        specular = ((_e112 * f0_1) * _e75.n_dot_l);
         kd = vec3((1f - f0_1));
     }
-    let _e129 = weft_main_light_radiance();
-    let _e130 = kd;
-    let _e131 = weft_diffuse_lambert(albedo_1);
-    let _e133 = falloff;
-    let _e135 = specular;
-    let direct = ((((_e130 * _e131) * _e133) + vec3(_e135)) * _e129);
-    let _e139 = n;
-    let _e140 = weft_sh_irradiance(_e139);
-    let _e141 = kd;
-    let indirect_diffuse = ((_e140 * _e141) * albedo_1);
-    let _e145 = n;
-    let _e147 = weft_prefiltered_radiance(reflect(-(_e39), _e145), roughness_4);
-    let indirect_specular = ((_e147 * _e115) * mask_1);
+    let _e119 = weft_main_light_radiance();
+    let _e120 = kd;
+    let _e121 = weft_diffuse_lambert(albedo_1);
+    let _e123 = falloff;
+    let _e125 = specular;
+    let direct = ((((_e120 * _e121) * _e123) + vec3(_e125)) * _e119);
+    let _e129 = n;
+    let _e130 = weft_sh_irradiance(_e129);
+    let _e131 = kd;
+    let indirect_diffuse = ((_e130 * _e131) * albedo_1);
+    let _e135 = n;
+    let _e137 = weft_prefiltered_radiance(reflect(-(v_3), _e135), roughness_4);
+    let indirect_specular = ((_e137 * _e102) * mask_1);
     let color = ((direct + indirect_diffuse) + indirect_specular);
     let radiance = clamp(color, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);

@@ -28,6 +28,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -216,6 +230,20 @@ fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32
     return reflect(_e26, _e17);
 }
 
+fn weft_surface_two_sided(world_position_2: vec3<f32>, world_normal_1: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_2, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal_1), world_normal_1, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -232,12 +260,12 @@ fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_4: vec3<f32>, world_position_3: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     {
-        let _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        let _e4 = weft_sphere_map_direction(n_4, world_position_3);
         let _e7 = textureSample(sphere_map, material_clamp_sampler, _e4);
         let sph = max(_e7.xyz, vec3(0f));
         let _e12 = color;
@@ -312,61 +340,52 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e52));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e52, _e62));
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_2 = _e49.v;
+    n = _e49.n;
+    let _e53 = n;
+    let _e54 = weft_main_light_geometry(_e53, v_2);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e84 = weft_v_smith_ggx_correlated_newton(_e65, n_dot_l_1, roughness_6);
-            visibility = _e84;
-            let _e85 = weft_env_brdf_lut_nearest(_e65, roughness_6);
-            let _e86 = weft_env_brdf_from_lut(f0_2, _e85);
-            env_brdf = _e86;
-            let _e89 = env_brdf;
-            ambient_kd = max((vec3(1f) - _e89), vec3(0f));
-            let _e94 = ambient_kd;
-            direct_kd = _e94;
+            let _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
+            visibility = _e67;
+            let _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6);
+            let _e70 = weft_env_brdf_from_lut(f0_2, _e69);
+            env_brdf = _e70;
+            let _e73 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e73), vec3(0f));
+            let _e78 = ambient_kd;
+            direct_kd = _e78;
         }
     }
     if (specular_strength > 0f) {
-        let _e103 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e104 = n;
-        let _e105 = weft_d_ggx_nh(_e104, _e62, roughness_6);
-        let _e106 = visibility;
-        specular = (((_e105 * _e106) * _e103) * specular_strength);
-        let _e111 = n;
-        let _e113 = weft_prefiltered_radiance(reflect(-(_e52), _e111), roughness_6);
-        let _e114 = env_brdf;
-        indirect_specular = ((_e113 * _e114) * (ao * specular_strength));
+        let _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
+        let _e89 = n;
+        let _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
+        let _e92 = visibility;
+        specular = (((_e91 * _e92) * _e88) * specular_strength);
+        let _e97 = n;
+        let _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
+        let _e100 = env_brdf;
+        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
     }
-    let _e118 = direct_kd;
-    let _e119 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e118 * _e119);
-    let _e121 = specular;
-    let _e123 = weft_main_light_radiance();
-    let direct = (((diffuse + _e121) * _e123) * n_dot_l_1);
-    let _e126 = n;
-    let _e127 = weft_sh_irradiance(_e126);
-    let _e129 = ambient_kd;
-    let indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
-    let _e132 = indirect_specular;
-    let color_1 = ((direct + _e132) + indirect_diffuse);
-    let _e135 = n;
-    let _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
-    let radiance = clamp((_e137 + _e22), vec3(0f), vec3(65504f));
+    let _e104 = direct_kd;
+    let _e105 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e104 * _e105);
+    let _e107 = specular;
+    let _e109 = weft_main_light_radiance();
+    let direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
+    let _e113 = n;
+    let _e114 = weft_sh_irradiance(_e113);
+    let _e116 = ambient_kd;
+    let indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
+    let _e119 = indirect_specular;
+    let color_1 = ((direct + _e119) + indirect_diffuse);
+    let _e122 = n;
+    let _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
+    let radiance = clamp((_e124 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

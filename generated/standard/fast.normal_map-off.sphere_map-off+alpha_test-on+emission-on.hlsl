@@ -32,6 +32,24 @@ struct WeftMaterial {
     float4 base_map_st;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -82,20 +100,20 @@ Texture2D<float4> base_map : register(t4, space1);
 Texture2D<float4> rmo_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_pow5_(float x)
@@ -243,6 +261,42 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
     return _e16.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_1, float3 world_normal, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -261,7 +315,7 @@ float3 standard_emission(float2 uv_1)
     return (0.0).xxx;
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_3, float3 world_position_1)
+float3 standard_sphere_map(float3 color_in, float3 n_4, float3 world_position_2)
 {
     float3 color = (float3)0;
 
@@ -311,8 +365,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -339,61 +393,52 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float ao = saturate(lerp(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength = max(_e44, 0.0);
-    const float3 _e52 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    const float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e52));
-    float3 _e66 = n;
-    float n_dot_l_1 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h = saturate(dot(_e69, _e62));
-    float v_dot_h_1 = saturate(dot(_e52, _e62));
+    const WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_2 = _e49.v;
+    n = _e49.n;
+    float3 _e53 = n;
+    const WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_2);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
         {
-            const float _e84 = weft_v_smith_ggx_correlated_newton(_e65, n_dot_l_1, roughness_6);
-            visibility = _e84;
-            const float2 _e85 = weft_env_brdf_lut_nearest(_e65, roughness_6);
-            const float3 _e86 = weft_env_brdf_from_lut(f0_2, _e85);
-            env_brdf = _e86;
-            float3 _e89 = env_brdf;
-            ambient_kd = max(((1.0).xxx - _e89), (0.0).xxx);
-            float3 _e94 = ambient_kd;
-            direct_kd = _e94;
+            const float _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
+            visibility = _e67;
+            const float2 _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6);
+            const float3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
+            env_brdf = _e70;
+            float3 _e73 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e73), (0.0).xxx);
+            float3 _e78 = ambient_kd;
+            direct_kd = _e78;
         }
     }
     if ((specular_strength > 0.0)) {
-        const float3 _e103 = weft_f_schlick(f0_2, v_dot_h_1);
-        float3 _e104 = n;
-        const float _e105 = weft_d_ggx_nh(_e104, _e62, roughness_6);
-        float _e106 = visibility;
-        specular = (((_e105 * _e106) * _e103) * specular_strength);
-        float3 _e111 = n;
-        const float3 _e113 = weft_prefiltered_radiance(reflect(-(_e52), _e111), roughness_6);
-        float3 _e114 = env_brdf;
-        indirect_specular = ((_e113 * _e114) * (ao * specular_strength));
+        const float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
+        float3 _e89 = n;
+        const float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
+        float _e92 = visibility;
+        specular = (((_e91 * _e92) * _e88) * specular_strength);
+        float3 _e97 = n;
+        const float3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
+        float3 _e100 = env_brdf;
+        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
     }
-    float3 _e118 = direct_kd;
-    const float3 _e119 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e118 * _e119);
-    float3 _e121 = specular;
-    const float3 _e123 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e121) * _e123) * n_dot_l_1);
-    float3 _e126 = n;
-    const float3 _e127 = weft_sh_irradiance(_e126);
-    float3 _e129 = ambient_kd;
-    float3 indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
-    float3 _e132 = indirect_specular;
-    float3 color_1 = ((direct + _e132) + indirect_diffuse);
-    float3 _e135 = n;
-    const float3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
-    float3 radiance = clamp((_e137 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e104 = direct_kd;
+    const float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e104 * _e105);
+    float3 _e107 = specular;
+    const float3 _e109 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
+    float3 _e113 = n;
+    const float3 _e114 = weft_sh_irradiance(_e113);
+    float3 _e116 = ambient_kd;
+    float3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
+    float3 _e119 = indirect_specular;
+    float3 color_1 = ((direct + _e119) + indirect_diffuse);
+    float3 _e122 = n;
+    const float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
+    float3 radiance = clamp((_e124 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

@@ -32,6 +32,24 @@ struct WeftMaterial {
     float4 base_map_st;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -85,20 +103,20 @@ Texture2D<float4> rmo_map : register(t6, space1);
 TextureCube<float4> sphere_map : register(t7, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_4 : LOC0;
-    float3 world_normal_2 : LOC1;
+    float3 world_position_5 : LOC0;
+    float3 world_normal_3 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_pow5_(float x)
@@ -249,8 +267,8 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
 {
     float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_2 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    int2 texel_1 = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    int2 texel_2 = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_2, int(0)));
     return _e16.xy;
 }
 
@@ -264,29 +282,73 @@ float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
     return reflect(_e26, _e17);
 }
 
-float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_2, float3 world_normal_1, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_2, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal_1 : -(world_normal_1));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_4);
+    const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_4, t) * s_1);
-    return float3x3(t, b_1, n_4);
+    float3 b_1 = (cross(n_5, t) * s_1);
+    return float3x3(t, b_1, n_5);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -298,22 +360,22 @@ float3 standard_emission(float2 uv_1)
 {
     if (EMISSION) {
         float _e4 = material.emissive_strength;
-        float strength_1 = max(_e4, 0.0);
+        float strength_2 = max(_e4, 0.0);
         float4 _e9 = material.emissive;
         float3 emissive = max(_e9.xyz, (0.0).xxx);
         float4 _e17 = emissive_map.Sample(material_sampler, uv_1);
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return (0.0).xxx;
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_5, float3 world_position_2)
+float3 standard_sphere_map(float3 color_in, float3 n_7, float3 world_position_3)
 {
     float3 color = (float3)0;
 
     color = color_in;
     {
-        const float3 _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        const float3 _e4 = weft_sphere_map_direction(n_7, world_position_3);
         float4 _e7 = sphere_map.Sample(material_clamp_sampler, _e4);
         float3 sph = max(_e7.xyz, (0.0).xxx);
         float3 _e12 = color;
@@ -365,8 +427,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_5, fragmentinput_fs_main.world_normal_3, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -393,71 +455,60 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float ao = saturate(lerp(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength = max(_e44, 0.0);
-    const float3 _e52 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    const float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    const WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_3 = _e49.v;
+    n = _e49.n;
     {
-        float3 _e59 = n;
-        const float3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        float4 _e64 = normal_map.Sample(material_sampler, _e6);
-        float3 texel_2 = _e64.xyz;
-        float _e68 = material.normal_strength;
-        const float3 _e69 = weft_unpack_normal(texel_2, _e68);
-        const float3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        float4 _e55 = normal_map.Sample(material_sampler, _e6);
+        float3 texel_3 = _e55.xyz;
+        float3 _e57 = n;
+        float _e61 = material.normal_strength;
+        const float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    const float3 _e71 = weft_main_light_direction();
-    float3 _e73 = n;
-    const float3 _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    float3 _e75 = n;
-    const float _e77 = weft_clamp_cos(dot(_e75, _e52));
-    float3 _e78 = n;
-    float n_dot_l_1 = saturate(dot(_e78, _e71));
-    float3 _e81 = n;
-    float n_dot_h = saturate(dot(_e81, _e74));
-    float v_dot_h_1 = saturate(dot(_e52, _e74));
+    float3 _e63 = n;
+    const WeftLightGeometry _e64 = weft_main_light_geometry(_e63, v_3);
     float3 f0_2 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
     {
         {
-            const float _e96 = weft_v_smith_ggx_correlated_newton(_e77, n_dot_l_1, roughness_6);
-            visibility = _e96;
-            const float2 _e97 = weft_env_brdf_lut_nearest(_e77, roughness_6);
-            const float3 _e98 = weft_env_brdf_from_lut(f0_2, _e97);
-            env_brdf = _e98;
-            float3 _e101 = env_brdf;
-            ambient_kd = max(((1.0).xxx - _e101), (0.0).xxx);
-            float3 _e106 = ambient_kd;
-            direct_kd = _e106;
+            const float _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
+            visibility = _e77;
+            const float2 _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6);
+            const float3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
+            env_brdf = _e80;
+            float3 _e83 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e83), (0.0).xxx);
+            float3 _e88 = ambient_kd;
+            direct_kd = _e88;
         }
     }
     if ((specular_strength > 0.0)) {
-        const float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
-        float3 _e116 = n;
-        const float _e117 = weft_d_ggx_nh(_e116, _e74, roughness_6);
-        float _e118 = visibility;
-        specular = (((_e117 * _e118) * _e115) * specular_strength);
-        float3 _e123 = n;
-        const float3 _e125 = weft_prefiltered_radiance(reflect(-(_e52), _e123), roughness_6);
-        float3 _e126 = env_brdf;
-        indirect_specular = ((_e125 * _e126) * (ao * specular_strength));
+        const float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
+        float3 _e99 = n;
+        const float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
+        float _e102 = visibility;
+        specular = (((_e101 * _e102) * _e98) * specular_strength);
+        float3 _e107 = n;
+        const float3 _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
+        float3 _e110 = env_brdf;
+        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
     }
-    float3 _e130 = direct_kd;
-    const float3 _e131 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e130 * _e131);
-    float3 _e133 = specular;
-    const float3 _e135 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e133) * _e135) * n_dot_l_1);
-    float3 _e138 = n;
-    const float3 _e139 = weft_sh_irradiance(_e138);
-    float3 _e141 = ambient_kd;
-    float3 indirect_diffuse = (((_e139 * ao) * _e141) * diffuse_albedo);
-    float3 _e144 = indirect_specular;
-    float3 color_1 = ((direct + _e144) + indirect_diffuse);
-    float3 _e147 = n;
-    const float3 _e149 = standard_sphere_map(color_1, _e147, in_1.world_position);
-    float3 radiance = clamp((_e149 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e114 = direct_kd;
+    const float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e114 * _e115);
+    float3 _e117 = specular;
+    const float3 _e119 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
+    float3 _e123 = n;
+    const float3 _e124 = weft_sh_irradiance(_e123);
+    float3 _e126 = ambient_kd;
+    float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
+    float3 _e129 = indirect_specular;
+    float3 color_1 = ((direct + _e129) + indirect_diffuse);
+    float3 _e132 = n;
+    const float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
+    float3 radiance = clamp((_e134 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

@@ -28,6 +28,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -211,8 +225,8 @@ fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let _e3 = textureDimensions(weft_brdf_lut);
     let size = vec2<f32>(_e3);
     let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel_1 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    let texel_2 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_2, 0i);
     return _e16.xy;
 }
 
@@ -225,26 +239,47 @@ fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32
     return reflect(_e26, _e17);
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface_two_sided(world_position_2: vec3<f32>, world_normal_1: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_2, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal_1), world_normal_1, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -254,21 +289,21 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
 fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     if EMISSION {
         let _e4 = material.emissive_strength;
-        let strength_1 = max(_e4, 0f);
+        let strength_2 = max(_e4, 0f);
         let _e9 = material.emissive;
         let emissive = max(_e9.xyz, vec3(0f));
         let _e17 = textureSample(emissive_map, material_sampler, uv_1);
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_7: vec3<f32>, world_position_3: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     {
-        let _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        let _e4 = weft_sphere_map_direction(n_7, world_position_3);
         let _e7 = textureSample(sphere_map, material_clamp_sampler, _e4);
         let sph = max(_e7.xyz, vec3(0f));
         let _e12 = color;
@@ -343,71 +378,60 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_3 = _e49.v;
+    n = _e49.n;
     {
-        let _e59 = n;
-        let _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        let _e64 = textureSample(normal_map, material_sampler, _e6);
-        let texel_2 = _e64.xyz;
-        let _e68 = material.normal_strength;
-        let _e69 = weft_unpack_normal(texel_2, _e68);
-        let _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        let _e55 = textureSample(normal_map, material_sampler, _e6);
+        let texel_3 = _e55.xyz;
+        let _e57 = n;
+        let _e61 = material.normal_strength;
+        let _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    let _e71 = weft_main_light_direction();
-    let _e73 = n;
-    let _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    let _e75 = n;
-    let _e77 = weft_clamp_cos(dot(_e75, _e52));
-    let _e78 = n;
-    let n_dot_l_1 = saturate(dot(_e78, _e71));
-    let _e81 = n;
-    let n_dot_h = saturate(dot(_e81, _e74));
-    let v_dot_h_1 = saturate(dot(_e52, _e74));
+    let _e63 = n;
+    let _e64 = weft_main_light_geometry(_e63, v_3);
     let f0_2 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e96 = weft_v_smith_ggx_correlated_newton(_e77, n_dot_l_1, roughness_6);
-            visibility = _e96;
-            let _e97 = weft_env_brdf_lut_nearest(_e77, roughness_6);
-            let _e98 = weft_env_brdf_from_lut(f0_2, _e97);
-            env_brdf = _e98;
-            let _e101 = env_brdf;
-            ambient_kd = max((vec3(1f) - _e101), vec3(0f));
-            let _e106 = ambient_kd;
-            direct_kd = _e106;
+            let _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
+            visibility = _e77;
+            let _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6);
+            let _e80 = weft_env_brdf_from_lut(f0_2, _e79);
+            env_brdf = _e80;
+            let _e83 = env_brdf;
+            ambient_kd = max((vec3(1f) - _e83), vec3(0f));
+            let _e88 = ambient_kd;
+            direct_kd = _e88;
         }
     }
     if (specular_strength > 0f) {
-        let _e115 = weft_f_schlick(f0_2, v_dot_h_1);
-        let _e116 = n;
-        let _e117 = weft_d_ggx_nh(_e116, _e74, roughness_6);
-        let _e118 = visibility;
-        specular = (((_e117 * _e118) * _e115) * specular_strength);
-        let _e123 = n;
-        let _e125 = weft_prefiltered_radiance(reflect(-(_e52), _e123), roughness_6);
-        let _e126 = env_brdf;
-        indirect_specular = ((_e125 * _e126) * (ao * specular_strength));
+        let _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
+        let _e99 = n;
+        let _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
+        let _e102 = visibility;
+        specular = (((_e101 * _e102) * _e98) * specular_strength);
+        let _e107 = n;
+        let _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
+        let _e110 = env_brdf;
+        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
     }
-    let _e130 = direct_kd;
-    let _e131 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e130 * _e131);
-    let _e133 = specular;
-    let _e135 = weft_main_light_radiance();
-    let direct = (((diffuse + _e133) * _e135) * n_dot_l_1);
-    let _e138 = n;
-    let _e139 = weft_sh_irradiance(_e138);
-    let _e141 = ambient_kd;
-    let indirect_diffuse = (((_e139 * ao) * _e141) * diffuse_albedo);
-    let _e144 = indirect_specular;
-    let color_1 = ((direct + _e144) + indirect_diffuse);
-    let _e147 = n;
-    let _e149 = standard_sphere_map(color_1, _e147, in_1.world_position);
-    let radiance = clamp((_e149 + _e22), vec3(0f), vec3(65504f));
+    let _e114 = direct_kd;
+    let _e115 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e114 * _e115);
+    let _e117 = specular;
+    let _e119 = weft_main_light_radiance();
+    let direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
+    let _e123 = n;
+    let _e124 = weft_sh_irradiance(_e123);
+    let _e126 = ambient_kd;
+    let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
+    let _e129 = indirect_specular;
+    let color_1 = ((direct + _e129) + indirect_diffuse);
+    let _e132 = n;
+    let _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
+    let radiance = clamp((_e134 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -36,6 +36,19 @@ struct WeftMaterial {
     char _pad10[4];
     metal::float4 base_map_st;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -244,32 +257,55 @@ metal::float2 weft_env_brdf_lut_nearest(
 ) {
     metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
+    metal::int2 texel_2 = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_2), 0);
     return _e16.xy;
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal : -(world_normal);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_4,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
+    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_5,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
+    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_4);
+    metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
-    return metal::float3x3(t, b_1, n_4);
+    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    return metal::float3x3(t, b_1, n_5);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_1 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_1.xy * strength, metal::max(v_1.z, 0.001));
+    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -278,6 +314,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_6,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -295,19 +343,19 @@ metal::float3 standard_emission(
 ) {
     if (EMISSION) {
         float _e4 = material.emissive_strength;
-        float strength_1 = metal::max(_e4, 0.0);
+        float strength_2 = metal::max(_e4, 0.0);
         metal::float4 _e9 = material.emissive;
         metal::float3 emissive = metal::max(_e9.xyz, metal::float3(0.0));
         metal::float4 _e17 = emissive_map.sample(material_sampler, uv_1);
-        return (emissive * strength_1) * _e17.xyz;
+        return (emissive * strength_2) * _e17.xyz;
     }
     return metal::float3(0.0);
 }
 
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
-    metal::float3 n_5,
-    metal::float3 world_position_1
+    metal::float3 n_7,
+    metal::float3 world_position_2
 ) {
     metal::float3 color = {};
     color = color_in;
@@ -334,7 +382,7 @@ void standard_alpha_test(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -349,7 +397,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -373,8 +421,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_2 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_3 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -396,7 +444,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(4)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -422,71 +470,60 @@ fragment fs_mainOutput fs_main(
     float ao = metal::saturate(metal::mix(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength = metal::max(_e44, 0.0);
-    metal::float3 _e52 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
-    metal::float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_3 = _e49.v;
+    n = _e49.n;
     {
-        metal::float3 _e59 = n;
-        metal::float3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        metal::float4 _e64 = normal_map.sample(material_sampler, _e6);
-        metal::float3 texel_2 = _e64.xyz;
-        float _e68 = material.normal_strength;
-        metal::float3 _e69 = weft_unpack_normal(texel_2, _e68);
-        metal::float3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        metal::float4 _e55 = normal_map.sample(material_sampler, _e6);
+        metal::float3 texel_3 = _e55.xyz;
+        metal::float3 _e57 = n;
+        float _e61 = material.normal_strength;
+        metal::float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    metal::float3 _e71 = weft_main_light_direction(weft_frame);
-    metal::float3 _e73 = n;
-    metal::float3 _e74 = weft_safe_normalize(_e71 + _e52, _e73);
-    metal::float3 _e75 = n;
-    float _e77 = weft_clamp_cos(metal::dot(_e75, _e52));
-    metal::float3 _e78 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e78, _e71));
-    metal::float3 _e81 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e81, _e74));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e52, _e74));
+    metal::float3 _e63 = n;
+    WeftLightGeometry _e64 = weft_main_light_geometry(_e63, v_3, weft_frame);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
         {
-            float _e96 = weft_v_smith_ggx_correlated_newton(_e77, n_dot_l_1, roughness_6);
-            visibility = _e96;
-            metal::float2 _e97 = weft_env_brdf_lut_nearest(_e77, roughness_6, weft_brdf_lut);
-            metal::float3 _e98 = weft_env_brdf_from_lut(f0_2, _e97);
-            env_brdf = _e98;
-            metal::float3 _e101 = env_brdf;
-            ambient_kd = metal::max(metal::float3(1.0) - _e101, metal::float3(0.0));
-            metal::float3 _e106 = ambient_kd;
-            direct_kd = _e106;
+            float _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
+            visibility = _e77;
+            metal::float2 _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6, weft_brdf_lut);
+            metal::float3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
+            env_brdf = _e80;
+            metal::float3 _e83 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e83, metal::float3(0.0));
+            metal::float3 _e88 = ambient_kd;
+            direct_kd = _e88;
         }
     }
     if (specular_strength > 0.0) {
-        metal::float3 _e115 = weft_f_schlick(f0_2, v_dot_h_1);
-        metal::float3 _e116 = n;
-        float _e117 = weft_d_ggx_nh(_e116, _e74, roughness_6);
-        float _e118 = visibility;
-        specular = ((_e117 * _e118) * _e115) * specular_strength;
-        metal::float3 _e123 = n;
-        metal::float3 _e125 = weft_prefiltered_radiance(metal::reflect(-(_e52), _e123), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e126 = env_brdf;
-        indirect_specular = (_e125 * _e126) * (ao * specular_strength);
+        metal::float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
+        metal::float3 _e99 = n;
+        float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
+        float _e102 = visibility;
+        specular = ((_e101 * _e102) * _e98) * specular_strength;
+        metal::float3 _e107 = n;
+        metal::float3 _e109 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e107), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e110 = env_brdf;
+        indirect_specular = (_e109 * _e110) * (ao * specular_strength);
     }
-    metal::float3 _e130 = direct_kd;
-    metal::float3 _e131 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e130 * _e131;
-    metal::float3 _e133 = specular;
-    metal::float3 _e135 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e133) * _e135) * n_dot_l_1;
-    metal::float3 _e138 = n;
-    metal::float3 _e139 = weft_sh_irradiance(_e138, weft_frame);
-    metal::float3 _e141 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e139 * ao) * _e141) * diffuse_albedo;
-    metal::float3 _e144 = indirect_specular;
-    metal::float3 color_1 = (direct + _e144) + indirect_diffuse;
-    metal::float3 _e147 = n;
-    metal::float3 _e149 = standard_sphere_map(color_1, _e147, in_1.world_position);
-    metal::float3 radiance = metal::clamp(_e149 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e114 = direct_kd;
+    metal::float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e114 * _e115;
+    metal::float3 _e117 = specular;
+    metal::float3 _e119 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e117) * _e119) * _e64.n_dot_l;
+    metal::float3 _e123 = n;
+    metal::float3 _e124 = weft_sh_irradiance(_e123, weft_frame);
+    metal::float3 _e126 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e124 * ao) * _e126) * diffuse_albedo;
+    metal::float3 _e129 = indirect_specular;
+    metal::float3 color_1 = (direct + _e129) + indirect_diffuse;
+    metal::float3 _e132 = n;
+    metal::float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e134 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

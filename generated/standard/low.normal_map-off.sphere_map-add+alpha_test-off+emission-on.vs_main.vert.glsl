@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -140,6 +152,20 @@ vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
     vec3 p_vs = (view * vec4(world_position_1, 1.0)).xyz;
     vec3 _e26 = weft_safe_normalize(p_vs, vec3(0.0, 0.0, -1.0));
     return reflect(_e26, _e17);
+}
+
+WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_2, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal_1 : -(world_normal_1));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {

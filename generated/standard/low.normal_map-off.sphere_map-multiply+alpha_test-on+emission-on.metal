@@ -37,6 +37,19 @@ struct WeftMaterial {
     char _pad10[4];
     metal::float4 base_map_st;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -196,6 +209,29 @@ metal::float3 weft_sphere_map_direction(
     return metal::reflect(_e26, _e17);
 }
 
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_2,
+    metal::float3 world_normal_1,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_2, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal_1 : -(world_normal_1);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -268,10 +304,9 @@ metal::float3 standard_emission(
 }
 
 metal::float3 standard_low(
-    metal::float3 n_2,
-    metal::float3 v_1,
-    metal::float3 l,
-    metal::float3 h,
+    metal::float3 n_3,
+    metal::float3 v_2,
+    WeftLightGeometry lit,
     metal::float3 f0_in,
     metal::float3 diffuse_albedo,
     float roughness_in,
@@ -284,45 +319,43 @@ metal::float3 standard_low(
 ) {
     metal::float3 direct_n_dot_l = {};
     metal::float3 indirect_specular_1 = metal::float3(0.0);
-    float _e10 = weft_clamp_cos(metal::dot(n_2, v_1));
-    float n_dot_v_2 = static_cast<float>(_e10);
-    float n_dot_l_1 = static_cast<float>(metal::saturate(metal::dot(n_2, l)));
-    float n_dot_h_1 = static_cast<float>(metal::saturate(metal::dot(n_2, h)));
-    float v_dot_h_1 = static_cast<float>(metal::saturate(metal::dot(v_1, h)));
-    metal::float3 n_cross_h = metal::cross(n_2, h);
+    float n_dot_v_2 = static_cast<float>(lit.n_dot_v);
+    float n_dot_l_1 = static_cast<float>(lit.n_dot_l);
+    float n_dot_h_1 = static_cast<float>(lit.n_dot_h);
+    float v_dot_h_1 = static_cast<float>(lit.v_dot_h);
+    metal::float3 n_cross_h = metal::cross(n_3, lit.h);
     float one_minus_n_dot_h2_1 = static_cast<float>(metal::dot(n_cross_h, n_cross_h));
     float roughness_3 = static_cast<float>(metal::max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = roughness_3 * roughness_3;
     metal::float3 f0_2 = static_cast<metal::float3>(f0_in);
-    float _e30 = weft_clamp_cos(metal::dot(n_2, v_1));
-    metal::float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in, weft_brdf_lut);
-    metal::float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    metal::float3 env_brdf_1 = static_cast<metal::float3>(_e32);
+    metal::float2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in, weft_brdf_lut);
+    metal::float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    metal::float3 env_brdf_1 = static_cast<metal::float3>(_e27);
     metal::float3 kd = metal::max(metal::float3(1.0) - env_brdf_1, metal::float3(0.0));
     direct_n_dot_l = static_cast<metal::float3>(kd * (n_dot_l_1 * 0.31830987)) * diffuse_albedo;
     if (specular_strength > 0.0) {
-        weft_half _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        weft_half _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        metal::float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        weft_half _e55 = weft_half_min_max(_e51 * _e52);
-        metal::float3 _e56 = direct_n_dot_l;
-        direct_n_dot_l = _e56 + (static_cast<metal::float3>(_e53 * _e55) * specular_strength);
-        metal::float3 _e63 = weft_prefiltered_radiance(metal::reflect(-(v_1), n_2), roughness_in, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular_1 = (_e63 * static_cast<metal::float3>(env_brdf_1)) * (ao * specular_strength);
+        weft_half _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        weft_half _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        metal::float3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        weft_half _e50 = weft_half_min_max(_e46 * _e47);
+        metal::float3 _e51 = direct_n_dot_l;
+        direct_n_dot_l = _e51 + (static_cast<metal::float3>(_e48 * _e50) * specular_strength);
+        metal::float3 _e58 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_3), roughness_in, weft_frame, weft_environment, weft_environment_sampler);
+        indirect_specular_1 = (_e58 * static_cast<metal::float3>(env_brdf_1)) * (ao * specular_strength);
     }
-    metal::float3 _e68 = direct_n_dot_l;
-    metal::float3 _e69 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = _e68 * _e69;
-    metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
-    metal::float3 indirect_diffuse = ((_e71 * ao) * static_cast<metal::float3>(kd)) * diffuse_albedo;
-    metal::float3 _e76 = indirect_specular_1;
-    return (direct + _e76) + indirect_diffuse;
+    metal::float3 _e63 = direct_n_dot_l;
+    metal::float3 _e64 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e63 * _e64;
+    metal::float3 _e66 = weft_sh_irradiance(n_3, weft_frame);
+    metal::float3 indirect_diffuse = ((_e66 * ao) * static_cast<metal::float3>(kd)) * diffuse_albedo;
+    metal::float3 _e71 = indirect_specular_1;
+    return (direct + _e71) + indirect_diffuse;
 }
 
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
-    metal::float3 n_3,
-    metal::float3 world_position_2,
+    metal::float3 n_4,
+    metal::float3 world_position_3,
     constant WeftFrame& weft_frame,
     constant WeftMaterial& material,
     metal::sampler material_clamp_sampler,
@@ -331,7 +364,7 @@ metal::float3 standard_sphere_map(
     metal::float3 color = {};
     color = color_in;
     {
-        metal::float3 _e4 = weft_sphere_map_direction(n_3, world_position_2, weft_frame);
+        metal::float3 _e4 = weft_sphere_map_direction(n_4, world_position_3, weft_frame);
         metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
         metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
         metal::float3 _e12 = color;
@@ -400,8 +433,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_3 [[user(loc0), center_perspective]];
-    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
+    metal::float3 world_position_4 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_2 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -424,7 +457,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texturecube<float, metal::access::sample> sphere_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_4, varyings_1.world_normal_2, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -450,28 +483,19 @@ fragment fs_mainOutput fs_main(
     float ao_1 = metal::saturate(metal::mix(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength_1 = metal::max(_e44, 0.0);
-    metal::float3 _e52 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
-    metal::float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e52, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e52));
-    metal::float3 _e66 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h_2 = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_2 = metal::saturate(metal::dot(_e52, _e62));
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_3 = _e49.v;
+    n = _e49.n;
+    metal::float3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3, weft_frame);
     metal::float3 f0_3 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
     {
-        metal::float3 _e80 = n;
-        metal::float3 _e81 = standard_low(_e80, _e52, _e59, _e62, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
-        metal::float3 _e82 = n;
-        metal::float3 _e84 = standard_sphere_map(_e81, _e82, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-        metal::float3 radiance = metal::clamp(_e84 + _e22, metal::float3(0.0), metal::float3(65504.0));
+        metal::float3 _e61 = n;
+        metal::float3 _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e63 = n;
+        metal::float3 _e65 = standard_sphere_map(_e62, _e63, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+        metal::float3 radiance = metal::clamp(_e65 + _e22, metal::float3(0.0), metal::float3(65504.0));
         standard_alpha_test(alpha_4, material);
         return fs_mainOutput { metal::float4(radiance, alpha_4) };
     }

@@ -30,6 +30,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -177,6 +191,20 @@ fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32
     return reflect(_e26, _e17);
 }
 
+fn weft_surface_two_sided(world_position_2: vec3<f32>, world_normal_1: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_2, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal_1), world_normal_1, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -225,51 +253,49 @@ fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn standard_low(n_2: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_in: f32, ao: f32, specular_strength: f32) -> vec3<f32> {
+fn standard_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_in: f32, ao: f32, specular_strength: f32) -> vec3<f32> {
     var direct_n_dot_l: vec3<f32>;
     var indirect_specular_1: vec3<f32> = vec3(0f);
 
-    let _e10 = weft_clamp_cos(dot(n_2, v_1));
-    let n_dot_v_2 = f16(_e10);
-    let n_dot_l_1 = f16(saturate(dot(n_2, l)));
-    let n_dot_h_1 = f16(saturate(dot(n_2, h)));
-    let v_dot_h_1 = f16(saturate(dot(v_1, h)));
-    let n_cross_h = cross(n_2, h);
+    let n_dot_v_2 = f16(lit.n_dot_v);
+    let n_dot_l_1 = f16(lit.n_dot_l);
+    let n_dot_h_1 = f16(lit.n_dot_h);
+    let v_dot_h_1 = f16(lit.v_dot_h);
+    let n_cross_h = cross(n_3, lit.h);
     let one_minus_n_dot_h2_1 = f16(dot(n_cross_h, n_cross_h));
     let roughness_3 = f16(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha_3 = (roughness_3 * roughness_3);
     let f0_2 = vec3<f16>(f0_in);
-    let _e30 = weft_clamp_cos(dot(n_2, v_1));
-    let _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    let _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    let env_brdf_1 = vec3<f16>(_e32);
+    let _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    let _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    let env_brdf_1 = vec3<f16>(_e27);
     let kd = max((vec3(1h) - env_brdf_1), vec3(0h));
     direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31835938h))) * diffuse_albedo);
     if (specular_strength > 0f) {
-        let _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        let _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        let _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        let _e55 = weft_half_min_max((_e51 * _e52));
-        let _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (vec3<f32>((_e53 * _e55)) * specular_strength));
-        let _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_2), roughness_in);
-        indirect_specular_1 = ((_e63 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
+        let _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        let _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        let _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        let _e50 = weft_half_min_max((_e46 * _e47));
+        let _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (vec3<f32>((_e48 * _e50)) * specular_strength));
+        let _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_in);
+        indirect_specular_1 = ((_e58 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
     }
-    let _e68 = direct_n_dot_l;
-    let _e69 = weft_main_light_radiance();
-    let direct = (_e68 * _e69);
-    let _e71 = weft_sh_irradiance(n_2);
-    let indirect_diffuse = (((_e71 * ao) * vec3<f32>(kd)) * diffuse_albedo);
-    let _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    let _e63 = direct_n_dot_l;
+    let _e64 = weft_main_light_radiance();
+    let direct = (_e63 * _e64);
+    let _e66 = weft_sh_irradiance(n_3);
+    let indirect_diffuse = (((_e66 * ao) * vec3<f32>(kd)) * diffuse_albedo);
+    let _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_4: vec3<f32>, world_position_3: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     {
-        let _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        let _e4 = weft_sphere_map_direction(n_4, world_position_3);
         let _e7 = textureSample(sphere_map, material_clamp_sampler, _e4);
         let sph = max(_e7.xyz, vec3(0f));
         let _e12 = color;
@@ -344,28 +370,19 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao_1 = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength_1 = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e52));
-    let _e66 = n;
-    let n_dot_l_2 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h_2 = saturate(dot(_e69, _e62));
-    let v_dot_h_2 = saturate(dot(_e52, _e62));
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_3 = _e49.v;
+    n = _e49.n;
+    let _e53 = n;
+    let _e54 = weft_main_light_geometry(_e53, v_3);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
     {
-        let _e80 = n;
-        let _e81 = standard_low(_e80, _e52, _e59, _e62, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        let _e82 = n;
-        let _e84 = standard_sphere_map(_e81, _e82, in_1.world_position);
-        let radiance = clamp((_e84 + _e22), vec3(0f), vec3(65504f));
+        let _e61 = n;
+        let _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        let _e63 = n;
+        let _e65 = standard_sphere_map(_e62, _e63, in_1.world_position);
+        let radiance = clamp((_e65 + _e22), vec3(0f), vec3(65504f));
         standard_alpha_test(alpha_4);
         return vec4<f32>(radiance, alpha_4);
     }

@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -154,6 +166,20 @@ vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
     return _e16.xy;
 }
 
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -202,45 +228,43 @@ vec3 standard_emission(vec2 uv_1) {
     return vec3(0.0);
 }
 
-vec3 standard_low(vec3 n_2, vec3 v_1, vec3 l, vec3 h, vec3 f0_in, vec3 diffuse_albedo, float roughness_in, float ao, float specular_strength) {
+vec3 standard_low(vec3 n_3, vec3 v_2, WeftLightGeometry lit, vec3 f0_in, vec3 diffuse_albedo, float roughness_in, float ao, float specular_strength) {
     vec3 direct_n_dot_l = vec3(0.0);
     vec3 indirect_specular_1 = vec3(0.0);
-    float _e10 = weft_clamp_cos(dot(n_2, v_1));
-    float n_dot_v_2 = float(_e10);
-    float n_dot_l_1 = float(clamp(dot(n_2, l), 0.0, 1.0));
-    float n_dot_h_1 = float(clamp(dot(n_2, h), 0.0, 1.0));
-    float v_dot_h_1 = float(clamp(dot(v_1, h), 0.0, 1.0));
-    vec3 n_cross_h = cross(n_2, h);
+    float n_dot_v_2 = float(lit.n_dot_v);
+    float n_dot_l_1 = float(lit.n_dot_l);
+    float n_dot_h_1 = float(lit.n_dot_h);
+    float v_dot_h_1 = float(lit.v_dot_h);
+    vec3 n_cross_h = cross(n_3, lit.h);
     float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     vec3 f0_2 = vec3(f0_in);
-    float _e30 = weft_clamp_cos(dot(n_2, v_1));
-    vec2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    vec3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    vec3 env_brdf_1 = vec3(_e32);
+    vec2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    vec3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    vec3 env_brdf_1 = vec3(_e27);
     vec3 kd = max((vec3(1.0) - env_brdf_1), vec3(0.0));
     direct_n_dot_l = (vec3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        float _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        float _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        vec3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        float _e55 = weft_half_min_max((_e51 * _e52));
-        vec3 _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (vec3((_e53 * _e55)) * specular_strength));
-        vec3 _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_2), roughness_in);
-        indirect_specular_1 = ((_e63 * vec3(env_brdf_1)) * (ao * specular_strength));
+        float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        vec3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        float _e50 = weft_half_min_max((_e46 * _e47));
+        vec3 _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (vec3((_e48 * _e50)) * specular_strength));
+        vec3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_in);
+        indirect_specular_1 = ((_e58 * vec3(env_brdf_1)) * (ao * specular_strength));
     }
-    vec3 _e68 = direct_n_dot_l;
-    vec3 _e69 = weft_main_light_radiance();
-    vec3 direct = (_e68 * _e69);
-    vec3 _e71 = weft_sh_irradiance(n_2);
-    vec3 indirect_diffuse = (((_e71 * ao) * vec3(kd)) * diffuse_albedo);
-    vec3 _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    vec3 _e63 = direct_n_dot_l;
+    vec3 _e64 = weft_main_light_radiance();
+    vec3 direct = (_e63 * _e64);
+    vec3 _e66 = weft_sh_irradiance(n_3);
+    vec3 indirect_diffuse = (((_e66 * ao) * vec3(kd)) * diffuse_albedo);
+    vec3 _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_1) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_4, vec3 world_position_2) {
     vec3 color = vec3(0.0);
     color = color_in;
     vec3 _e4 = color;
@@ -288,28 +312,19 @@ void main() {
     float ao_1 = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
     float _e44 = _group_1_binding_0_fs.specular_strength;
     float specular_strength_1 = max(_e44, 0.0);
-    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e52));
-    vec3 _e66 = n;
-    float n_dot_l_2 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h_2 = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e52, _e62), 0.0, 1.0);
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_3 = _e49.v;
+    n = _e49.n;
+    vec3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
     {
-        vec3 _e80 = n;
-        vec3 _e81 = standard_low(_e80, _e52, _e59, _e62, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        vec3 _e82 = n;
-        vec3 _e84 = standard_sphere_map(_e81, _e82, in_1.world_position);
-        vec3 radiance = clamp((_e84 + _e22), vec3(0.0), vec3(65504.0));
+        vec3 _e61 = n;
+        vec3 _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        vec3 _e63 = n;
+        vec3 _e65 = standard_sphere_map(_e62, _e63, in_1.world_position);
+        vec3 radiance = clamp((_e65 + _e22), vec3(0.0), vec3(65504.0));
         standard_alpha_test(alpha_4);
         _fs2p_location0 = vec4(radiance, alpha_4);
         return;

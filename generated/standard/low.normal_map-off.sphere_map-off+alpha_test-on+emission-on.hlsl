@@ -32,6 +32,24 @@ struct WeftMaterial {
     float4 base_map_st;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -82,20 +100,20 @@ Texture2D<float4> base_map : register(t4, space1);
 Texture2D<float4> rmo_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_clamp_cos(float c)
@@ -196,6 +214,42 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
     return _e16.xy;
 }
 
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_1, float3 world_normal, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -251,47 +305,45 @@ float3 standard_emission(float2 uv_1)
     return (0.0).xxx;
 }
 
-float3 standard_low(float3 n_2, float3 v_1, float3 l, float3 h, float3 f0_in, float3 diffuse_albedo, float roughness_in, float ao, float specular_strength)
+float3 standard_low(float3 n_3, float3 v_2, WeftLightGeometry lit_, float3 f0_in, float3 diffuse_albedo, float roughness_in, float ao, float specular_strength)
 {
     float3 direct_n_dot_l = (float3)0;
     float3 indirect_specular_1 = (0.0).xxx;
 
-    const float _e10 = weft_clamp_cos(dot(n_2, v_1));
-    float n_dot_v_2 = float(_e10);
-    float n_dot_l_1 = float(saturate(dot(n_2, l)));
-    float n_dot_h_1 = float(saturate(dot(n_2, h)));
-    float v_dot_h_1 = float(saturate(dot(v_1, h)));
-    float3 n_cross_h = cross(n_2, h);
+    float n_dot_v_2 = float(lit_.n_dot_v);
+    float n_dot_l_1 = float(lit_.n_dot_l);
+    float n_dot_h_1 = float(lit_.n_dot_h);
+    float v_dot_h_1 = float(lit_.v_dot_h);
+    float3 n_cross_h = cross(n_3, lit_.h);
     float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     float3 f0_2 = float3(f0_in);
-    const float _e30 = weft_clamp_cos(dot(n_2, v_1));
-    const float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    const float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    float3 env_brdf_1 = float3(_e32);
+    const float2 _e26 = weft_env_brdf_lut_nearest(lit_.n_dot_v, roughness_in);
+    const float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    float3 env_brdf_1 = float3(_e27);
     float3 kd = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
     direct_n_dot_l = (float3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        const float _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        const float _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        const float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        const float _e55 = weft_half_min_max((_e51 * _e52));
-        float3 _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (float3((_e53 * _e55)) * specular_strength));
-        const float3 _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_2), roughness_in);
-        indirect_specular_1 = ((_e63 * float3(env_brdf_1)) * (ao * specular_strength));
+        const float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        const float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        const float3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        const float _e50 = weft_half_min_max((_e46 * _e47));
+        float3 _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (float3((_e48 * _e50)) * specular_strength));
+        const float3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_in);
+        indirect_specular_1 = ((_e58 * float3(env_brdf_1)) * (ao * specular_strength));
     }
-    float3 _e68 = direct_n_dot_l;
-    const float3 _e69 = weft_main_light_radiance();
-    float3 direct = (_e68 * _e69);
-    const float3 _e71 = weft_sh_irradiance(n_2);
-    float3 indirect_diffuse = (((_e71 * ao) * float3(kd)) * diffuse_albedo);
-    float3 _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    float3 _e63 = direct_n_dot_l;
+    const float3 _e64 = weft_main_light_radiance();
+    float3 direct = (_e63 * _e64);
+    const float3 _e66 = weft_sh_irradiance(n_3);
+    float3 indirect_diffuse = (((_e66 * ao) * float3(kd)) * diffuse_albedo);
+    float3 _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_3, float3 world_position_1)
+float3 standard_sphere_map(float3 color_in, float3 n_4, float3 world_position_2)
 {
     float3 color = (float3)0;
 
@@ -341,8 +393,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -369,28 +421,19 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float ao_1 = saturate(lerp(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength_1 = max(_e44, 0.0);
-    const float3 _e52 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    const float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    const float3 _e59 = weft_main_light_direction();
-    float3 _e61 = n;
-    const float3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    float3 _e63 = n;
-    const float _e65 = weft_clamp_cos(dot(_e63, _e52));
-    float3 _e66 = n;
-    float n_dot_l_2 = saturate(dot(_e66, _e59));
-    float3 _e69 = n;
-    float n_dot_h_2 = saturate(dot(_e69, _e62));
-    float v_dot_h_2 = saturate(dot(_e52, _e62));
+    const WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_3 = _e49.v;
+    n = _e49.n;
+    float3 _e53 = n;
+    const WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3);
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
     {
-        float3 _e80 = n;
-        const float3 _e81 = standard_low(_e80, _e52, _e59, _e62, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        float3 _e82 = n;
-        const float3 _e84 = standard_sphere_map(_e81, _e82, in_1.world_position);
-        float3 radiance = clamp((_e84 + _e22), (0.0).xxx, (65504.0).xxx);
+        float3 _e61 = n;
+        const float3 _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        float3 _e63 = n;
+        const float3 _e65 = standard_sphere_map(_e62, _e63, in_1.world_position);
+        float3 radiance = clamp((_e65 + _e22), (0.0).xxx, (65504.0).xxx);
         standard_alpha_test(alpha_4);
         return float4(radiance, alpha_4);
     }

@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -160,8 +172,8 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
 vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
     vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
     vec2 uv_2 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_2 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
+    ivec2 texel_2 = ivec2(min((uv_2 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_2, 0);
     return _e16.xy;
 }
 
@@ -174,26 +186,47 @@ vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
     return reflect(_e26, _e17);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_2, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal_1 : -(world_normal_1));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -235,58 +268,56 @@ vec3 weft_half_f_schlick(vec3 f0_1, float v_dot_h) {
 vec3 standard_emission(vec2 uv_1) {
     if (EMISSION) {
         float _e4 = _group_1_binding_0_fs.emissive_strength;
-        float strength_1 = max(_e4, 0.0);
+        float strength_2 = max(_e4, 0.0);
         vec4 _e9 = _group_1_binding_0_fs.emissive;
         vec3 emissive = max(_e9.xyz, vec3(0.0));
         vec4 _e17 = texture(_group_1_binding_3_fs, vec2(uv_1));
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return vec3(0.0);
 }
 
-vec3 standard_low(vec3 n_4, vec3 v_1, vec3 l, vec3 h, vec3 f0_in, vec3 diffuse_albedo, float roughness_in, float ao, float specular_strength) {
+vec3 standard_low(vec3 n_6, vec3 v_2, WeftLightGeometry lit, vec3 f0_in, vec3 diffuse_albedo, float roughness_in, float ao, float specular_strength) {
     vec3 direct_n_dot_l = vec3(0.0);
     vec3 indirect_specular_1 = vec3(0.0);
-    float _e10 = weft_clamp_cos(dot(n_4, v_1));
-    float n_dot_v_2 = float(_e10);
-    float n_dot_l_1 = float(clamp(dot(n_4, l), 0.0, 1.0));
-    float n_dot_h_1 = float(clamp(dot(n_4, h), 0.0, 1.0));
-    float v_dot_h_1 = float(clamp(dot(v_1, h), 0.0, 1.0));
-    vec3 n_cross_h = cross(n_4, h);
+    float n_dot_v_2 = float(lit.n_dot_v);
+    float n_dot_l_1 = float(lit.n_dot_l);
+    float n_dot_h_1 = float(lit.n_dot_h);
+    float v_dot_h_1 = float(lit.v_dot_h);
+    vec3 n_cross_h = cross(n_6, lit.h);
     float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     vec3 f0_2 = vec3(f0_in);
-    float _e30 = weft_clamp_cos(dot(n_4, v_1));
-    vec2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    vec3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    vec3 env_brdf_1 = vec3(_e32);
+    vec2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    vec3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    vec3 env_brdf_1 = vec3(_e27);
     vec3 kd = max((vec3(1.0) - env_brdf_1), vec3(0.0));
     direct_n_dot_l = (vec3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        float _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        float _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        vec3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        float _e55 = weft_half_min_max((_e51 * _e52));
-        vec3 _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (vec3((_e53 * _e55)) * specular_strength));
-        vec3 _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_4), roughness_in);
-        indirect_specular_1 = ((_e63 * vec3(env_brdf_1)) * (ao * specular_strength));
+        float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        vec3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        float _e50 = weft_half_min_max((_e46 * _e47));
+        vec3 _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (vec3((_e48 * _e50)) * specular_strength));
+        vec3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
+        indirect_specular_1 = ((_e58 * vec3(env_brdf_1)) * (ao * specular_strength));
     }
-    vec3 _e68 = direct_n_dot_l;
-    vec3 _e69 = weft_main_light_radiance();
-    vec3 direct = (_e68 * _e69);
-    vec3 _e71 = weft_sh_irradiance(n_4);
-    vec3 indirect_diffuse = (((_e71 * ao) * vec3(kd)) * diffuse_albedo);
-    vec3 _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    vec3 _e63 = direct_n_dot_l;
+    vec3 _e64 = weft_main_light_radiance();
+    vec3 direct = (_e63 * _e64);
+    vec3 _e66 = weft_sh_irradiance(n_6);
+    vec3 indirect_diffuse = (((_e66 * ao) * vec3(kd)) * diffuse_albedo);
+    vec3 _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position_2) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_7, vec3 world_position_3) {
     vec3 color = vec3(0.0);
     color = color_in;
     {
-        vec3 _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        vec3 _e4 = weft_sphere_map_direction(n_7, world_position_3);
         vec4 _e7 = texture(_group_1_binding_7_fs, vec3(_e4));
         vec3 sph = max(_e7.xyz, vec3(0.0));
         vec3 _e12 = color;
@@ -338,38 +369,27 @@ void main() {
     float ao_1 = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
     float _e44 = _group_1_binding_0_fs.specular_strength;
     float specular_strength_1 = max(_e44, 0.0);
-    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_4 = _e49.v;
+    n = _e49.n;
     {
-        vec3 _e59 = n;
-        mat3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        vec4 _e64 = texture(_group_1_binding_5_fs, vec2(_e6));
-        vec3 texel_2 = _e64.xyz;
-        float _e68 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e69 = weft_unpack_normal(texel_2, _e68);
-        vec3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        vec4 _e55 = texture(_group_1_binding_5_fs, vec2(_e6));
+        vec3 texel_3 = _e55.xyz;
+        vec3 _e57 = n;
+        float _e61 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    vec3 _e71 = weft_main_light_direction();
-    vec3 _e73 = n;
-    vec3 _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    vec3 _e75 = n;
-    float _e77 = weft_clamp_cos(dot(_e75, _e52));
-    vec3 _e78 = n;
-    float n_dot_l_2 = clamp(dot(_e78, _e71), 0.0, 1.0);
-    vec3 _e81 = n;
-    float n_dot_h_2 = clamp(dot(_e81, _e74), 0.0, 1.0);
-    float v_dot_h_2 = clamp(dot(_e52, _e74), 0.0, 1.0);
+    vec3 _e63 = n;
+    WeftLightGeometry _e64 = weft_main_light_geometry(_e63, v_4);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
     {
-        vec3 _e92 = n;
-        vec3 _e93 = standard_low(_e92, _e52, _e71, _e74, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        vec3 _e94 = n;
-        vec3 _e96 = standard_sphere_map(_e93, _e94, in_1.world_position);
-        vec3 radiance = clamp((_e96 + _e22), vec3(0.0), vec3(65504.0));
+        vec3 _e71 = n;
+        vec3 _e72 = standard_low(_e71, v_4, _e64, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        vec3 _e73 = n;
+        vec3 _e75 = standard_sphere_map(_e72, _e73, in_1.world_position);
+        vec3 radiance = clamp((_e75 + _e22), vec3(0.0), vec3(65504.0));
         standard_alpha_test(alpha_4);
         _fs2p_location0 = vec4(radiance, alpha_4);
         return;

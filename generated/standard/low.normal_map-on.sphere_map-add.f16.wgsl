@@ -30,6 +30,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -172,8 +186,8 @@ fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let _e3 = textureDimensions(weft_brdf_lut);
     let size = vec2<f32>(_e3);
     let uv_2 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel_1 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
+    let texel_2 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_brdf_lut, texel_2, 0i);
     return _e16.xy;
 }
 
@@ -186,26 +200,47 @@ fn weft_sphere_map_direction(world_normal: vec3<f32>, world_position_1: vec3<f32
     return reflect(_e26, _e17);
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface_two_sided(world_position_2: vec3<f32>, world_normal_1: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_2, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal_1), world_normal_1, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -247,60 +282,58 @@ fn weft_half_f_schlick(f0_1: vec3<f16>, v_dot_h: f16) -> vec3<f16> {
 fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     if EMISSION {
         let _e4 = material.emissive_strength;
-        let strength_1 = max(_e4, 0f);
+        let strength_2 = max(_e4, 0f);
         let _e9 = material.emissive;
         let emissive = max(_e9.xyz, vec3(0f));
         let _e17 = textureSample(emissive_map, material_sampler, uv_1);
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return vec3(0f);
 }
 
-fn standard_low(n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_in: f32, ao: f32, specular_strength: f32) -> vec3<f32> {
+fn standard_low(n_6: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_in: f32, ao: f32, specular_strength: f32) -> vec3<f32> {
     var direct_n_dot_l: vec3<f32>;
     var indirect_specular_1: vec3<f32> = vec3(0f);
 
-    let _e10 = weft_clamp_cos(dot(n_4, v_1));
-    let n_dot_v_2 = f16(_e10);
-    let n_dot_l_1 = f16(saturate(dot(n_4, l)));
-    let n_dot_h_1 = f16(saturate(dot(n_4, h)));
-    let v_dot_h_1 = f16(saturate(dot(v_1, h)));
-    let n_cross_h = cross(n_4, h);
+    let n_dot_v_2 = f16(lit.n_dot_v);
+    let n_dot_l_1 = f16(lit.n_dot_l);
+    let n_dot_h_1 = f16(lit.n_dot_h);
+    let v_dot_h_1 = f16(lit.v_dot_h);
+    let n_cross_h = cross(n_6, lit.h);
     let one_minus_n_dot_h2_1 = f16(dot(n_cross_h, n_cross_h));
     let roughness_3 = f16(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha_3 = (roughness_3 * roughness_3);
     let f0_2 = vec3<f16>(f0_in);
-    let _e30 = weft_clamp_cos(dot(n_4, v_1));
-    let _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    let _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    let env_brdf_1 = vec3<f16>(_e32);
+    let _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    let _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    let env_brdf_1 = vec3<f16>(_e27);
     let kd = max((vec3(1h) - env_brdf_1), vec3(0h));
     direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31835938h))) * diffuse_albedo);
     if (specular_strength > 0f) {
-        let _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        let _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        let _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        let _e55 = weft_half_min_max((_e51 * _e52));
-        let _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (vec3<f32>((_e53 * _e55)) * specular_strength));
-        let _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_4), roughness_in);
-        indirect_specular_1 = ((_e63 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
+        let _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        let _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        let _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        let _e50 = weft_half_min_max((_e46 * _e47));
+        let _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (vec3<f32>((_e48 * _e50)) * specular_strength));
+        let _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
+        indirect_specular_1 = ((_e58 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
     }
-    let _e68 = direct_n_dot_l;
-    let _e69 = weft_main_light_radiance();
-    let direct = (_e68 * _e69);
-    let _e71 = weft_sh_irradiance(n_4);
-    let indirect_diffuse = (((_e71 * ao) * vec3<f32>(kd)) * diffuse_albedo);
-    let _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    let _e63 = direct_n_dot_l;
+    let _e64 = weft_main_light_radiance();
+    let direct = (_e63 * _e64);
+    let _e66 = weft_sh_irradiance(n_6);
+    let indirect_diffuse = (((_e66 * ao) * vec3<f32>(kd)) * diffuse_albedo);
+    let _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_7: vec3<f32>, world_position_3: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
     {
-        let _e4 = weft_sphere_map_direction(n_5, world_position_2);
+        let _e4 = weft_sphere_map_direction(n_7, world_position_3);
         let _e7 = textureSample(sphere_map, material_clamp_sampler, _e4);
         let sph = max(_e7.xyz, vec3(0f));
         let _e12 = color;
@@ -375,38 +408,27 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao_1 = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength_1 = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_4 = _e49.v;
+    n = _e49.n;
     {
-        let _e59 = n;
-        let _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        let _e64 = textureSample(normal_map, material_sampler, _e6);
-        let texel_2 = _e64.xyz;
-        let _e68 = material.normal_strength;
-        let _e69 = weft_unpack_normal(texel_2, _e68);
-        let _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        let _e55 = textureSample(normal_map, material_sampler, _e6);
+        let texel_3 = _e55.xyz;
+        let _e57 = n;
+        let _e61 = material.normal_strength;
+        let _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    let _e71 = weft_main_light_direction();
-    let _e73 = n;
-    let _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    let _e75 = n;
-    let _e77 = weft_clamp_cos(dot(_e75, _e52));
-    let _e78 = n;
-    let n_dot_l_2 = saturate(dot(_e78, _e71));
-    let _e81 = n;
-    let n_dot_h_2 = saturate(dot(_e81, _e74));
-    let v_dot_h_2 = saturate(dot(_e52, _e74));
+    let _e63 = n;
+    let _e64 = weft_main_light_geometry(_e63, v_4);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
     {
-        let _e92 = n;
-        let _e93 = standard_low(_e92, _e52, _e71, _e74, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        let _e94 = n;
-        let _e96 = standard_sphere_map(_e93, _e94, in_1.world_position);
-        let radiance = clamp((_e96 + _e22), vec3(0f), vec3(65504f));
+        let _e71 = n;
+        let _e72 = standard_low(_e71, v_4, _e64, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        let _e73 = n;
+        let _e75 = standard_sphere_map(_e72, _e73, in_1.world_position);
+        let radiance = clamp((_e75 + _e22), vec3(0f), vec3(65504f));
         standard_alpha_test(alpha_4);
         return vec4<f32>(radiance, alpha_4);
     }

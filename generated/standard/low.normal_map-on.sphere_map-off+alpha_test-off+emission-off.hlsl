@@ -32,6 +32,24 @@ struct WeftMaterial {
     float4 base_map_st;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -83,20 +101,20 @@ Texture2D<float4> normal_map : register(t5, space1);
 Texture2D<float4> rmo_map : register(t6, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_3 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_4 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
-    bool front_facing_1 : SV_IsFrontFace;
+    bool front_facing_2 : SV_IsFrontFace;
 };
 
 float weft_clamp_cos(float c)
@@ -200,34 +218,78 @@ float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
 {
     float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_2 = float2(saturate(n_dot_v), saturate(roughness_2));
-    int2 texel_1 = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
+    int2 texel_2 = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_brdf_lut.Load(int3(texel_2, int(0)));
     return _e16.xy;
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface_two_sided(float3 world_position_1, float3 world_normal, bool front_facing_1)
+{
+    const float3 _e7 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    float3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    const float3 _e10 = weft_safe_normalize(facing, _e7);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e7, _e10);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -276,56 +338,54 @@ float3 standard_emission(float2 uv_1)
 {
     if (EMISSION) {
         float _e4 = material.emissive_strength;
-        float strength_1 = max(_e4, 0.0);
+        float strength_2 = max(_e4, 0.0);
         float4 _e9 = material.emissive;
         float3 emissive = max(_e9.xyz, (0.0).xxx);
         float4 _e17 = emissive_map.Sample(material_sampler, uv_1);
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return (0.0).xxx;
 }
 
-float3 standard_low(float3 n_4, float3 v_1, float3 l, float3 h, float3 f0_in, float3 diffuse_albedo, float roughness_in, float ao, float specular_strength)
+float3 standard_low(float3 n_6, float3 v_2, WeftLightGeometry lit_, float3 f0_in, float3 diffuse_albedo, float roughness_in, float ao, float specular_strength)
 {
     float3 direct_n_dot_l = (float3)0;
     float3 indirect_specular_1 = (0.0).xxx;
 
-    const float _e10 = weft_clamp_cos(dot(n_4, v_1));
-    float n_dot_v_2 = float(_e10);
-    float n_dot_l_1 = float(saturate(dot(n_4, l)));
-    float n_dot_h_1 = float(saturate(dot(n_4, h)));
-    float v_dot_h_1 = float(saturate(dot(v_1, h)));
-    float3 n_cross_h = cross(n_4, h);
+    float n_dot_v_2 = float(lit_.n_dot_v);
+    float n_dot_l_1 = float(lit_.n_dot_l);
+    float n_dot_h_1 = float(lit_.n_dot_h);
+    float v_dot_h_1 = float(lit_.v_dot_h);
+    float3 n_cross_h = cross(n_6, lit_.h);
     float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     float3 f0_2 = float3(f0_in);
-    const float _e30 = weft_clamp_cos(dot(n_4, v_1));
-    const float2 _e31 = weft_env_brdf_lut_nearest(_e30, roughness_in);
-    const float3 _e32 = weft_env_brdf_from_lut(f0_in, _e31);
-    float3 env_brdf_1 = float3(_e32);
+    const float2 _e26 = weft_env_brdf_lut_nearest(lit_.n_dot_v, roughness_in);
+    const float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
+    float3 env_brdf_1 = float3(_e27);
     float3 kd = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
     direct_n_dot_l = (float3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        const float _e51 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        const float _e52 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        const float3 _e53 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        const float _e55 = weft_half_min_max((_e51 * _e52));
-        float3 _e56 = direct_n_dot_l;
-        direct_n_dot_l = (_e56 + (float3((_e53 * _e55)) * specular_strength));
-        const float3 _e63 = weft_prefiltered_radiance(reflect(-(v_1), n_4), roughness_in);
-        indirect_specular_1 = ((_e63 * float3(env_brdf_1)) * (ao * specular_strength));
+        const float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        const float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        const float3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        const float _e50 = weft_half_min_max((_e46 * _e47));
+        float3 _e51 = direct_n_dot_l;
+        direct_n_dot_l = (_e51 + (float3((_e48 * _e50)) * specular_strength));
+        const float3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
+        indirect_specular_1 = ((_e58 * float3(env_brdf_1)) * (ao * specular_strength));
     }
-    float3 _e68 = direct_n_dot_l;
-    const float3 _e69 = weft_main_light_radiance();
-    float3 direct = (_e68 * _e69);
-    const float3 _e71 = weft_sh_irradiance(n_4);
-    float3 indirect_diffuse = (((_e71 * ao) * float3(kd)) * diffuse_albedo);
-    float3 _e76 = indirect_specular_1;
-    return ((direct + _e76) + indirect_diffuse);
+    float3 _e63 = direct_n_dot_l;
+    const float3 _e64 = weft_main_light_radiance();
+    float3 direct = (_e63 * _e64);
+    const float3 _e66 = weft_sh_irradiance(n_6);
+    float3 indirect_diffuse = (((_e66 * ao) * float3(kd)) * diffuse_albedo);
+    float3 _e71 = indirect_specular_1;
+    return ((direct + _e71) + indirect_diffuse);
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_5, float3 world_position_1)
+float3 standard_sphere_map(float3 color_in, float3 n_7, float3 world_position_2)
 {
     float3 color = (float3)0;
 
@@ -375,8 +435,8 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
-    bool front_facing = fragmentinput_fs_main.front_facing_1;
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_4, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    bool front_facing = fragmentinput_fs_main.front_facing_2;
     float3 n = (float3)0;
     float visibility = (float)0;
     float3 env_brdf = (float3)0;
@@ -403,38 +463,27 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float ao_1 = saturate(lerp(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength_1 = max(_e44, 0.0);
-    const float3 _e52 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    float3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    const float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    const WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_4 = _e49.v;
+    n = _e49.n;
     {
-        float3 _e59 = n;
-        const float3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        float4 _e64 = normal_map.Sample(material_sampler, _e6);
-        float3 texel_2 = _e64.xyz;
-        float _e68 = material.normal_strength;
-        const float3 _e69 = weft_unpack_normal(texel_2, _e68);
-        const float3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        float4 _e55 = normal_map.Sample(material_sampler, _e6);
+        float3 texel_3 = _e55.xyz;
+        float3 _e57 = n;
+        float _e61 = material.normal_strength;
+        const float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        n = _e62;
     }
-    const float3 _e71 = weft_main_light_direction();
-    float3 _e73 = n;
-    const float3 _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    float3 _e75 = n;
-    const float _e77 = weft_clamp_cos(dot(_e75, _e52));
-    float3 _e78 = n;
-    float n_dot_l_2 = saturate(dot(_e78, _e71));
-    float3 _e81 = n;
-    float n_dot_h_2 = saturate(dot(_e81, _e74));
-    float v_dot_h_2 = saturate(dot(_e52, _e74));
+    float3 _e63 = n;
+    const WeftLightGeometry _e64 = weft_main_light_geometry(_e63, v_4);
     float3 f0_3 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
     {
-        float3 _e92 = n;
-        const float3 _e93 = standard_low(_e92, _e52, _e71, _e74, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
-        float3 _e94 = n;
-        const float3 _e96 = standard_sphere_map(_e93, _e94, in_1.world_position);
-        float3 radiance = clamp((_e96 + _e22), (0.0).xxx, (65504.0).xxx);
+        float3 _e71 = n;
+        const float3 _e72 = standard_low(_e71, v_4, _e64, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1);
+        float3 _e73 = n;
+        const float3 _e75 = standard_sphere_map(_e72, _e73, in_1.world_position);
+        float3 radiance = clamp((_e75 + _e22), (0.0).xxx, (65504.0).xxx);
         standard_alpha_test(alpha_4);
         return float4(radiance, alpha_4);
     }

@@ -36,6 +36,19 @@ struct WeftMaterial {
     char _pad10[4];
     metal::float4 base_map_st;
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -246,6 +259,29 @@ metal::float3 weft_sphere_map_direction(
     return metal::reflect(_e26, _e17);
 }
 
+WeftSurface weft_surface_two_sided(
+    metal::float3 world_position_2,
+    metal::float3 world_normal_1,
+    bool front_facing_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e7 = weft_view_direction(world_position_2, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 facing = front_facing_1 ? world_normal_1 : -(world_normal_1);
+    metal::float3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface {_e7, _e10};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -272,8 +308,8 @@ metal::float3 standard_emission(
 
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
-    metal::float3 n_3,
-    metal::float3 world_position_2,
+    metal::float3 n_4,
+    metal::float3 world_position_3,
     constant WeftFrame& weft_frame,
     constant WeftMaterial& material,
     metal::sampler material_clamp_sampler,
@@ -282,7 +318,7 @@ metal::float3 standard_sphere_map(
     metal::float3 color = {};
     color = color_in;
     {
-        metal::float3 _e4 = weft_sphere_map_direction(n_3, world_position_2, weft_frame);
+        metal::float3 _e4 = weft_sphere_map_direction(n_4, world_position_3, weft_frame);
         metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
         metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
         metal::float3 _e12 = color;
@@ -351,8 +387,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_3 [[user(loc0), center_perspective]];
-    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
+    metal::float3 world_position_4 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_2 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -376,7 +412,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
 , metal::texturecube<float, metal::access::sample> sphere_map [[texture(5)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_4, varyings_1.world_normal_2, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     float visibility = {};
     metal::float3 env_brdf = {};
@@ -402,59 +438,50 @@ fragment fs_mainOutput fs_main(
     float ao = metal::saturate(metal::mix(1.0, rmo.z, _e38));
     float _e44 = material.specular_strength;
     float specular_strength = metal::max(_e44, 0.0);
-    metal::float3 _e52 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 geometric_normal = front_facing ? in_1.world_normal : -(in_1.world_normal);
-    metal::float3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    metal::float3 _e59 = weft_main_light_direction(weft_frame);
-    metal::float3 _e61 = n;
-    metal::float3 _e62 = weft_safe_normalize(_e59 + _e52, _e61);
-    metal::float3 _e63 = n;
-    float _e65 = weft_clamp_cos(metal::dot(_e63, _e52));
-    metal::float3 _e66 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e66, _e59));
-    metal::float3 _e69 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e69, _e62));
-    float v_dot_h_1 = metal::saturate(metal::dot(_e52, _e62));
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_2 = _e49.v;
+    n = _e49.n;
+    metal::float3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_2, weft_frame);
     metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
     {
-        float _e84 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-        visibility = _e84;
-        metal::float2 _e85 = weft_env_brdf_lut(_e65, roughness_6, weft_brdf_lut, weft_lut_sampler);
-        metal::float3 _e86 = weft_env_brdf_from_lut(f0_2, _e85);
-        env_brdf = _e86;
-        metal::float3 _e89 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e89, metal::float3(0.0));
-        metal::float3 _e94 = ambient_kd;
-        direct_kd = _e94;
+        float _e67 = weft_v_smith_ggx_correlated(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
+        visibility = _e67;
+        metal::float2 _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
+        env_brdf = _e70;
+        metal::float3 _e73 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e73, metal::float3(0.0));
+        metal::float3 _e78 = ambient_kd;
+        direct_kd = _e78;
     }
     if (specular_strength > 0.0) {
-        metal::float3 _e103 = weft_f_schlick(f0_2, v_dot_h_1);
-        metal::float3 _e104 = n;
-        float _e105 = weft_d_ggx_nh(_e104, _e62, roughness_6);
-        float _e106 = visibility;
-        specular = ((_e105 * _e106) * _e103) * specular_strength;
-        metal::float3 _e111 = n;
-        metal::float3 _e113 = weft_prefiltered_radiance(metal::reflect(-(_e52), _e111), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e114 = env_brdf;
-        indirect_specular = (_e113 * _e114) * (ao * specular_strength);
+        metal::float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
+        metal::float3 _e89 = n;
+        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
+        float _e92 = visibility;
+        specular = ((_e91 * _e92) * _e88) * specular_strength;
+        metal::float3 _e97 = n;
+        metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e97), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e100 = env_brdf;
+        indirect_specular = (_e99 * _e100) * (ao * specular_strength);
     }
-    metal::float3 _e118 = direct_kd;
-    metal::float3 _e119 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e118 * _e119;
-    metal::float3 _e121 = specular;
-    metal::float3 _e123 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e121) * _e123) * n_dot_l_1;
-    metal::float3 _e126 = n;
-    metal::float3 _e127 = weft_sh_irradiance(_e126, weft_frame);
-    metal::float3 _e129 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e127 * ao) * _e129) * diffuse_albedo;
-    metal::float3 _e132 = indirect_specular;
-    metal::float3 color_1 = (direct + _e132) + indirect_diffuse;
-    metal::float3 _e135 = n;
-    metal::float3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e137 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e104 = direct_kd;
+    metal::float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e104 * _e105;
+    metal::float3 _e107 = specular;
+    metal::float3 _e109 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e107) * _e109) * _e54.n_dot_l;
+    metal::float3 _e113 = n;
+    metal::float3 _e114 = weft_sh_irradiance(_e113, weft_frame);
+    metal::float3 _e116 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e114 * ao) * _e116) * diffuse_albedo;
+    metal::float3 _e119 = indirect_specular;
+    metal::float3 color_1 = (direct + _e119) + indirect_diffuse;
+    metal::float3 _e122 = n;
+    metal::float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e124 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

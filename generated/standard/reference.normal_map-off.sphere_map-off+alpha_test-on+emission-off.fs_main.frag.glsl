@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -191,6 +203,20 @@ vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     return _e8.xy;
 }
 
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -207,7 +233,7 @@ vec3 standard_emission(vec2 uv_1) {
     return vec3(0.0);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_1) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_4, vec3 world_position_2) {
     vec3 color = vec3(0.0);
     color = color_in;
     vec3 _e4 = color;
@@ -255,59 +281,50 @@ void main() {
     float ao = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
     float _e44 = _group_1_binding_0_fs.specular_strength;
     float specular_strength = max(_e44, 0.0);
-    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e52));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e52, _e62), 0.0, 1.0);
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_2 = _e49.v;
+    n = _e49.n;
+    vec3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_2);
     vec3 f0_2 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
-        float _e84 = weft_v_smith_ggx_correlated(_e65, n_dot_l_1, roughness_6);
-        visibility = _e84;
-        vec2 _e85 = weft_env_brdf_lut(_e65, roughness_6);
-        vec3 _e86 = weft_env_brdf_from_lut(f0_2, _e85);
-        env_brdf = _e86;
-        vec3 _e89 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e89), vec3(0.0));
-        vec3 _e94 = ambient_kd;
-        direct_kd = _e94;
+        float _e67 = weft_v_smith_ggx_correlated(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
+        visibility = _e67;
+        vec2 _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6);
+        vec3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
+        env_brdf = _e70;
+        vec3 _e73 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e73), vec3(0.0));
+        vec3 _e78 = ambient_kd;
+        direct_kd = _e78;
     }
     if ((specular_strength > 0.0)) {
-        vec3 _e103 = weft_f_schlick(f0_2, v_dot_h_1);
-        vec3 _e104 = n;
-        float _e105 = weft_d_ggx_nh(_e104, _e62, roughness_6);
-        float _e106 = visibility;
-        specular = (((_e105 * _e106) * _e103) * specular_strength);
-        vec3 _e111 = n;
-        vec3 _e113 = weft_prefiltered_radiance(reflect(-(_e52), _e111), roughness_6);
-        vec3 _e114 = env_brdf;
-        indirect_specular = ((_e113 * _e114) * (ao * specular_strength));
+        vec3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
+        vec3 _e89 = n;
+        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
+        float _e92 = visibility;
+        specular = (((_e91 * _e92) * _e88) * specular_strength);
+        vec3 _e97 = n;
+        vec3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
+        vec3 _e100 = env_brdf;
+        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
     }
-    vec3 _e118 = direct_kd;
-    vec3 _e119 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e118 * _e119);
-    vec3 _e121 = specular;
-    vec3 _e123 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e121) * _e123) * n_dot_l_1);
-    vec3 _e126 = n;
-    vec3 _e127 = weft_sh_irradiance(_e126);
-    vec3 _e129 = ambient_kd;
-    vec3 indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
-    vec3 _e132 = indirect_specular;
-    vec3 color_1 = ((direct + _e132) + indirect_diffuse);
-    vec3 _e135 = n;
-    vec3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
-    vec3 radiance = clamp((_e137 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e104 = direct_kd;
+    vec3 _e105 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e104 * _e105);
+    vec3 _e107 = specular;
+    vec3 _e109 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
+    vec3 _e113 = n;
+    vec3 _e114 = weft_sh_irradiance(_e113);
+    vec3 _e116 = ambient_kd;
+    vec3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
+    vec3 _e119 = indirect_specular;
+    vec3 color_1 = ((direct + _e119) + indirect_diffuse);
+    vec3 _e122 = n;
+    vec3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
+    vec3 radiance = clamp((_e124 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -211,6 +223,20 @@ vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
     return reflect(_e26, _e17);
 }
 
+WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_2, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal_1 : -(world_normal_1));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -227,11 +253,11 @@ vec3 standard_emission(vec2 uv_1) {
     return vec3(0.0);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_2) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_4, vec3 world_position_3) {
     vec3 color = vec3(0.0);
     color = color_in;
     {
-        vec3 _e4 = weft_sphere_map_direction(n_3, world_position_2);
+        vec3 _e4 = weft_sphere_map_direction(n_4, world_position_3);
         vec4 _e7 = texture(_group_1_binding_7_fs, vec3(_e4));
         vec3 sph = max(_e7.xyz, vec3(0.0));
         vec3 _e12 = color;
@@ -283,60 +309,51 @@ void main() {
     float ao = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
     float _e44 = _group_1_binding_0_fs.specular_strength;
     float specular_strength = max(_e44, 0.0);
-    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    vec3 _e59 = weft_main_light_direction();
-    vec3 _e61 = n;
-    vec3 _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    vec3 _e63 = n;
-    float _e65 = weft_clamp_cos(dot(_e63, _e52));
-    vec3 _e66 = n;
-    float n_dot_l_1 = clamp(dot(_e66, _e59), 0.0, 1.0);
-    vec3 _e69 = n;
-    float n_dot_h = clamp(dot(_e69, _e62), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e52, _e62), 0.0, 1.0);
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_3 = _e49.v;
+    n = _e49.n;
+    vec3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
         {
-            float _e84 = weft_v_schlick_ggx(_e65, n_dot_l_1, roughness_7);
-            visibility = _e84;
-            vec3 _e85 = weft_env_brdf_approx(f0_3, _e65, roughness_7);
-            env_brdf = _e85;
-            vec3 _e88 = weft_f_schlick_roughness(f0_3, _e65, roughness_7);
-            ambient_kd = (vec3(1.0) - _e88);
-            vec3 _e92 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1.0) - _e92);
+            float _e67 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_7);
+            visibility = _e67;
+            vec3 _e69 = weft_env_brdf_approx(f0_3, _e54.n_dot_v, roughness_7);
+            env_brdf = _e69;
+            vec3 _e73 = weft_f_schlick_roughness(f0_3, _e54.n_dot_v, roughness_7);
+            ambient_kd = (vec3(1.0) - _e73);
+            vec3 _e78 = weft_f_schlick(f0_3, _e54.v_dot_h);
+            direct_kd = (vec3(1.0) - _e78);
         }
     }
     if ((specular_strength > 0.0)) {
-        vec3 _e102 = weft_f_schlick(f0_3, v_dot_h_1);
-        vec3 _e103 = n;
-        float _e104 = weft_d_ggx_nh(_e103, _e62, roughness_7);
-        float _e105 = visibility;
-        specular = (((_e104 * _e105) * _e102) * specular_strength);
-        vec3 _e110 = n;
-        vec3 _e112 = weft_prefiltered_radiance(reflect(-(_e52), _e110), roughness_7);
-        vec3 _e113 = env_brdf;
-        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
+        vec3 _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
+        vec3 _e90 = n;
+        float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
+        float _e93 = visibility;
+        specular = (((_e92 * _e93) * _e89) * specular_strength);
+        vec3 _e98 = n;
+        vec3 _e100 = weft_prefiltered_radiance(reflect(-(v_3), _e98), roughness_7);
+        vec3 _e101 = env_brdf;
+        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
     }
-    vec3 _e117 = direct_kd;
-    vec3 _e118 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e117 * _e118);
-    vec3 _e120 = specular;
-    vec3 _e122 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e120) * _e122) * n_dot_l_1);
-    vec3 _e125 = n;
-    vec3 _e126 = weft_sh_irradiance(_e125);
-    vec3 _e128 = ambient_kd;
-    vec3 indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
-    vec3 _e131 = indirect_specular;
-    vec3 color_1 = ((direct + _e131) + indirect_diffuse);
-    vec3 _e134 = n;
-    vec3 _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
-    vec3 radiance = clamp((_e136 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e105 = direct_kd;
+    vec3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e105 * _e106);
+    vec3 _e108 = specular;
+    vec3 _e110 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
+    vec3 _e114 = n;
+    vec3 _e115 = weft_sh_irradiance(_e114);
+    vec3 _e117 = ambient_kd;
+    vec3 indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
+    vec3 _e120 = indirect_specular;
+    vec3 color_1 = ((direct + _e120) + indirect_diffuse);
+    vec3 _e123 = n;
+    vec3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    vec3 radiance = clamp((_e125 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

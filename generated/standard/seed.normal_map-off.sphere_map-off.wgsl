@@ -28,6 +28,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -207,6 +221,20 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
+fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal), world_normal, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_2, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -223,7 +251,7 @@ fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_4: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
@@ -295,60 +323,51 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
-    let _e59 = weft_main_light_direction();
-    let _e61 = n;
-    let _e62 = weft_safe_normalize((_e59 + _e52), _e61);
-    let _e63 = n;
-    let _e65 = weft_clamp_cos(dot(_e63, _e52));
-    let _e66 = n;
-    let n_dot_l_1 = saturate(dot(_e66, _e59));
-    let _e69 = n;
-    let n_dot_h = saturate(dot(_e69, _e62));
-    let v_dot_h_1 = saturate(dot(_e52, _e62));
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_3 = _e49.v;
+    n = _e49.n;
+    let _e53 = n;
+    let _e54 = weft_main_light_geometry(_e53, v_3);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e84 = weft_v_schlick_ggx(_e65, n_dot_l_1, roughness_7);
-            visibility = _e84;
-            let _e85 = weft_env_brdf_approx(f0_3, _e65, roughness_7);
-            env_brdf = _e85;
-            let _e88 = weft_f_schlick_roughness(f0_3, _e65, roughness_7);
-            ambient_kd = (vec3(1f) - _e88);
-            let _e92 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1f) - _e92);
+            let _e67 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_7);
+            visibility = _e67;
+            let _e69 = weft_env_brdf_approx(f0_3, _e54.n_dot_v, roughness_7);
+            env_brdf = _e69;
+            let _e73 = weft_f_schlick_roughness(f0_3, _e54.n_dot_v, roughness_7);
+            ambient_kd = (vec3(1f) - _e73);
+            let _e78 = weft_f_schlick(f0_3, _e54.v_dot_h);
+            direct_kd = (vec3(1f) - _e78);
         }
     }
     if (specular_strength > 0f) {
-        let _e102 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e103 = n;
-        let _e104 = weft_d_ggx_nh(_e103, _e62, roughness_7);
-        let _e105 = visibility;
-        specular = (((_e104 * _e105) * _e102) * specular_strength);
-        let _e110 = n;
-        let _e112 = weft_prefiltered_radiance(reflect(-(_e52), _e110), roughness_7);
-        let _e113 = env_brdf;
-        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
+        let _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
+        let _e90 = n;
+        let _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
+        let _e93 = visibility;
+        specular = (((_e92 * _e93) * _e89) * specular_strength);
+        let _e98 = n;
+        let _e100 = weft_prefiltered_radiance(reflect(-(v_3), _e98), roughness_7);
+        let _e101 = env_brdf;
+        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
     }
-    let _e117 = direct_kd;
-    let _e118 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e117 * _e118);
-    let _e120 = specular;
-    let _e122 = weft_main_light_radiance();
-    let direct = (((diffuse + _e120) * _e122) * n_dot_l_1);
-    let _e125 = n;
-    let _e126 = weft_sh_irradiance(_e125);
-    let _e128 = ambient_kd;
-    let indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
-    let _e131 = indirect_specular;
-    let color_1 = ((direct + _e131) + indirect_diffuse);
-    let _e134 = n;
-    let _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
-    let radiance = clamp((_e136 + _e22), vec3(0f), vec3(65504f));
+    let _e105 = direct_kd;
+    let _e106 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e105 * _e106);
+    let _e108 = specular;
+    let _e110 = weft_main_light_radiance();
+    let direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
+    let _e114 = n;
+    let _e115 = weft_sh_irradiance(_e114);
+    let _e117 = ambient_kd;
+    let indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
+    let _e120 = indirect_specular;
+    let color_1 = ((direct + _e120) + indirect_diffuse);
+    let _e123 = n;
+    let _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    let radiance = clamp((_e125 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -205,26 +217,47 @@ vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
     return reflect(_e26, _e17);
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_2, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal_1 : -(world_normal_1));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {

@@ -26,6 +26,18 @@ struct WeftMaterial {
     float sphere_strength;
     vec4 base_map_st;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -209,26 +221,47 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_6) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
+WeftSurface weft_surface_two_sided(vec3 world_position_1, vec3 world_normal, bool front_facing_1) {
+    vec3 _e7 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 facing = (front_facing_1 ? world_normal : -(world_normal));
+    vec3 _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_4);
+    float _e6 = weft_clamp_cos(dot(n_4, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_4);
+    vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_4, t) * s_1);
-    return mat3x3(t, b_1, n_4);
+    vec3 b_1 = (cross(n_5, t) * s_1);
+    return mat3x3(t, b_1, n_5);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -238,16 +271,16 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
 vec3 standard_emission(vec2 uv_1) {
     if (EMISSION) {
         float _e4 = _group_1_binding_0_fs.emissive_strength;
-        float strength_1 = max(_e4, 0.0);
+        float strength_2 = max(_e4, 0.0);
         vec4 _e9 = _group_1_binding_0_fs.emissive;
         vec3 emissive = max(_e9.xyz, vec3(0.0));
         vec4 _e17 = texture(_group_1_binding_3_fs, vec2(uv_1));
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return vec3(0.0);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_5, vec3 world_position_1) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_7, vec3 world_position_2) {
     vec3 color = vec3(0.0);
     color = color_in;
     vec3 _e4 = color;
@@ -295,70 +328,59 @@ void main() {
     float ao = clamp(mix(1.0, rmo.z, _e38), 0.0, 1.0);
     float _e44 = _group_1_binding_0_fs.specular_strength;
     float specular_strength = max(_e44, 0.0);
-    vec3 _e52 = weft_view_direction(in_1.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 geometric_normal = (front_facing ? in_1.world_normal : -(in_1.world_normal));
-    vec3 _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    WeftSurface _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_4 = _e49.v;
+    n = _e49.n;
     {
-        vec3 _e59 = n;
-        mat3x3 _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        vec4 _e64 = texture(_group_1_binding_5_fs, vec2(_e6));
-        vec3 texel_1 = _e64.xyz;
-        float _e68 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e69 = weft_unpack_normal(texel_1, _e68);
-        vec3 _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        vec4 _e55 = texture(_group_1_binding_5_fs, vec2(_e6));
+        vec3 texel_2 = _e55.xyz;
+        vec3 _e57 = n;
+        float _e61 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
+        n = _e62;
     }
-    vec3 _e71 = weft_main_light_direction();
-    vec3 _e73 = n;
-    vec3 _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    vec3 _e75 = n;
-    float _e77 = weft_clamp_cos(dot(_e75, _e52));
-    vec3 _e78 = n;
-    float n_dot_l_1 = clamp(dot(_e78, _e71), 0.0, 1.0);
-    vec3 _e81 = n;
-    float n_dot_h = clamp(dot(_e81, _e74), 0.0, 1.0);
-    float v_dot_h_1 = clamp(dot(_e52, _e74), 0.0, 1.0);
+    vec3 _e63 = n;
+    WeftLightGeometry _e64 = weft_main_light_geometry(_e63, v_4);
     vec3 f0_3 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
     {
         {
-            float _e96 = weft_v_schlick_ggx(_e77, n_dot_l_1, roughness_7);
-            visibility = _e96;
-            vec3 _e97 = weft_env_brdf_approx(f0_3, _e77, roughness_7);
-            env_brdf = _e97;
-            vec3 _e100 = weft_f_schlick_roughness(f0_3, _e77, roughness_7);
-            ambient_kd = (vec3(1.0) - _e100);
-            vec3 _e104 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1.0) - _e104);
+            float _e77 = weft_v_schlick_ggx(_e64.n_dot_v, _e64.n_dot_l, roughness_7);
+            visibility = _e77;
+            vec3 _e79 = weft_env_brdf_approx(f0_3, _e64.n_dot_v, roughness_7);
+            env_brdf = _e79;
+            vec3 _e83 = weft_f_schlick_roughness(f0_3, _e64.n_dot_v, roughness_7);
+            ambient_kd = (vec3(1.0) - _e83);
+            vec3 _e88 = weft_f_schlick(f0_3, _e64.v_dot_h);
+            direct_kd = (vec3(1.0) - _e88);
         }
     }
     if ((specular_strength > 0.0)) {
-        vec3 _e114 = weft_f_schlick(f0_3, v_dot_h_1);
-        vec3 _e115 = n;
-        float _e116 = weft_d_ggx_nh(_e115, _e74, roughness_7);
-        float _e117 = visibility;
-        specular = (((_e116 * _e117) * _e114) * specular_strength);
-        vec3 _e122 = n;
-        vec3 _e124 = weft_prefiltered_radiance(reflect(-(_e52), _e122), roughness_7);
-        vec3 _e125 = env_brdf;
-        indirect_specular = ((_e124 * _e125) * (ao * specular_strength));
+        vec3 _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
+        vec3 _e100 = n;
+        float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
+        float _e103 = visibility;
+        specular = (((_e102 * _e103) * _e99) * specular_strength);
+        vec3 _e108 = n;
+        vec3 _e110 = weft_prefiltered_radiance(reflect(-(v_4), _e108), roughness_7);
+        vec3 _e111 = env_brdf;
+        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
     }
-    vec3 _e129 = direct_kd;
-    vec3 _e130 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e129 * _e130);
-    vec3 _e132 = specular;
-    vec3 _e134 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e132) * _e134) * n_dot_l_1);
-    vec3 _e137 = n;
-    vec3 _e138 = weft_sh_irradiance(_e137);
-    vec3 _e140 = ambient_kd;
-    vec3 indirect_diffuse = (((_e138 * ao) * _e140) * diffuse_albedo);
-    vec3 _e143 = indirect_specular;
-    vec3 color_1 = ((direct + _e143) + indirect_diffuse);
-    vec3 _e146 = n;
-    vec3 _e148 = standard_sphere_map(color_1, _e146, in_1.world_position);
-    vec3 radiance = clamp((_e148 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e115 = direct_kd;
+    vec3 _e116 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e115 * _e116);
+    vec3 _e118 = specular;
+    vec3 _e120 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
+    vec3 _e124 = n;
+    vec3 _e125 = weft_sh_irradiance(_e124);
+    vec3 _e127 = ambient_kd;
+    vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
+    vec3 _e130 = indirect_specular;
+    vec3 color_1 = ((direct + _e130) + indirect_diffuse);
+    vec3 _e133 = n;
+    vec3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
+    vec3 radiance = clamp((_e135 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -28,6 +28,20 @@ struct WeftMaterial {
     base_map_st: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -216,26 +230,47 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_6: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
+    let _e7 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let facing = select(-(world_normal), world_normal, front_facing_1);
+    let _e10 = weft_safe_normalize(facing, _e7);
+    return WeftSurface(_e7, _e10);
+}
+
+fn weft_main_light_geometry(n_4: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_4);
+    let _e6 = weft_clamp_cos(dot(n_4, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_2, _e4)));
+}
+
+fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
+    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_4);
+    let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_4, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_4);
+    let b_1 = (cross(n_5, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_5);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_6, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -245,16 +280,16 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
 fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     if EMISSION {
         let _e4 = material.emissive_strength;
-        let strength_1 = max(_e4, 0f);
+        let strength_2 = max(_e4, 0f);
         let _e9 = material.emissive;
         let emissive = max(_e9.xyz, vec3(0f));
         let _e17 = textureSample(emissive_map, material_sampler, uv_1);
-        return ((emissive * strength_1) * _e17.xyz);
+        return ((emissive * strength_2) * _e17.xyz);
     }
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_5: vec3<f32>, world_position_1: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_7: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
@@ -326,70 +361,59 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     let ao = saturate(mix(1f, rmo.z, _e38));
     let _e44 = material.specular_strength;
     let specular_strength = max(_e44, 0f);
-    let _e52 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let geometric_normal = select(-(in_1.world_normal), in_1.world_normal, front_facing);
-    let _e57 = weft_safe_normalize(geometric_normal, _e52);
-    n = _e57;
+    let _e49 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    let v_4 = _e49.v;
+    n = _e49.n;
     {
-        let _e59 = n;
-        let _e61 = weft_tangent_frame(_e59, in_1.world_tangent);
-        let _e64 = textureSample(normal_map, material_sampler, _e6);
-        let texel_1 = _e64.xyz;
-        let _e68 = material.normal_strength;
-        let _e69 = weft_unpack_normal(texel_1, _e68);
-        let _e70 = weft_normal_from_tangent_space(_e61, _e69);
-        n = _e70;
+        let _e55 = textureSample(normal_map, material_sampler, _e6);
+        let texel_2 = _e55.xyz;
+        let _e57 = n;
+        let _e61 = material.normal_strength;
+        let _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
+        n = _e62;
     }
-    let _e71 = weft_main_light_direction();
-    let _e73 = n;
-    let _e74 = weft_safe_normalize((_e71 + _e52), _e73);
-    let _e75 = n;
-    let _e77 = weft_clamp_cos(dot(_e75, _e52));
-    let _e78 = n;
-    let n_dot_l_1 = saturate(dot(_e78, _e71));
-    let _e81 = n;
-    let n_dot_h = saturate(dot(_e81, _e74));
-    let v_dot_h_1 = saturate(dot(_e52, _e74));
+    let _e63 = n;
+    let _e64 = weft_main_light_geometry(_e63, v_4);
     let f0_3 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
     {
         {
-            let _e96 = weft_v_schlick_ggx(_e77, n_dot_l_1, roughness_7);
-            visibility = _e96;
-            let _e97 = weft_env_brdf_approx(f0_3, _e77, roughness_7);
-            env_brdf = _e97;
-            let _e100 = weft_f_schlick_roughness(f0_3, _e77, roughness_7);
-            ambient_kd = (vec3(1f) - _e100);
-            let _e104 = weft_f_schlick(f0_3, v_dot_h_1);
-            direct_kd = (vec3(1f) - _e104);
+            let _e77 = weft_v_schlick_ggx(_e64.n_dot_v, _e64.n_dot_l, roughness_7);
+            visibility = _e77;
+            let _e79 = weft_env_brdf_approx(f0_3, _e64.n_dot_v, roughness_7);
+            env_brdf = _e79;
+            let _e83 = weft_f_schlick_roughness(f0_3, _e64.n_dot_v, roughness_7);
+            ambient_kd = (vec3(1f) - _e83);
+            let _e88 = weft_f_schlick(f0_3, _e64.v_dot_h);
+            direct_kd = (vec3(1f) - _e88);
         }
     }
     if (specular_strength > 0f) {
-        let _e114 = weft_f_schlick(f0_3, v_dot_h_1);
-        let _e115 = n;
-        let _e116 = weft_d_ggx_nh(_e115, _e74, roughness_7);
-        let _e117 = visibility;
-        specular = (((_e116 * _e117) * _e114) * specular_strength);
-        let _e122 = n;
-        let _e124 = weft_prefiltered_radiance(reflect(-(_e52), _e122), roughness_7);
-        let _e125 = env_brdf;
-        indirect_specular = ((_e124 * _e125) * (ao * specular_strength));
+        let _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
+        let _e100 = n;
+        let _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
+        let _e103 = visibility;
+        specular = (((_e102 * _e103) * _e99) * specular_strength);
+        let _e108 = n;
+        let _e110 = weft_prefiltered_radiance(reflect(-(v_4), _e108), roughness_7);
+        let _e111 = env_brdf;
+        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
     }
-    let _e129 = direct_kd;
-    let _e130 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e129 * _e130);
-    let _e132 = specular;
-    let _e134 = weft_main_light_radiance();
-    let direct = (((diffuse + _e132) * _e134) * n_dot_l_1);
-    let _e137 = n;
-    let _e138 = weft_sh_irradiance(_e137);
-    let _e140 = ambient_kd;
-    let indirect_diffuse = (((_e138 * ao) * _e140) * diffuse_albedo);
-    let _e143 = indirect_specular;
-    let color_1 = ((direct + _e143) + indirect_diffuse);
-    let _e146 = n;
-    let _e148 = standard_sphere_map(color_1, _e146, in_1.world_position);
-    let radiance = clamp((_e148 + _e22), vec3(0f), vec3(65504f));
+    let _e115 = direct_kd;
+    let _e116 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e115 * _e116);
+    let _e118 = specular;
+    let _e120 = weft_main_light_radiance();
+    let direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
+    let _e124 = n;
+    let _e125 = weft_sh_irradiance(_e124);
+    let _e127 = ambient_kd;
+    let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
+    let _e130 = indirect_specular;
+    let color_1 = ((direct + _e130) + indirect_diffuse);
+    let _e133 = n;
+    let _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
+    let radiance = clamp((_e135 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -37,6 +37,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -83,16 +101,16 @@ Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> occlusion_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -178,6 +196,41 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     const float _e4 = weft_specular_mip(roughness_1);
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_2)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
+    return weftlightgeometry;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -281,7 +334,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
     float3 sheen = (float3)0;
@@ -303,49 +356,42 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao = saturate(lerp(1.0, occlusion, _e33));
-    const float3 _e42 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    const float3 _e46 = weft_main_light_direction();
-    float3 _e48 = n;
-    const float3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    float3 _e50 = n;
-    const float _e52 = weft_clamp_cos(dot(_e50, _e42));
-    float3 _e53 = n;
-    float n_dot_l_2 = saturate(dot(_e53, _e46));
-    float3 _e56 = n;
-    float n_dot_h_2 = saturate(dot(_e56, _e49));
-    float l_dot_h = saturate(dot(_e46, _e49));
+    const WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_3 = _e39.v;
+    n = _e39.n;
+    float3 _e43 = n;
+    const WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_3);
+    float l_dot_h = saturate(dot(_e44.l, _e44.h));
     float3 f0_ = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e67 = weft_main_light_radiance();
-    float3 _e68 = n;
-    const float3 _e69 = weft_sh_irradiance(_e68);
-    float3 ambient = (_e69 * ao);
+    const float3 _e55 = weft_main_light_radiance();
+    float3 _e56 = n;
+    const float3 _e57 = weft_sh_irradiance(_e56);
+    float3 ambient = (_e57 * ao);
     {
         {
-            float4 _e74 = material.scatter_color;
-            float3 sheen_color_2 = saturate((f0_ + max(_e74.xyz, (0.0).xxx)));
-            const float _e81 = weft_sheen_clamp_roughness(roughness_2);
-            const float _e82 = weft_sheen_albedo(_e52, _e81);
-            const float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+            float4 _e62 = material.scatter_color;
+            float3 sheen_color_2 = saturate((f0_ + max(_e62.xyz, (0.0).xxx)));
+            const float _e69 = weft_sheen_clamp_roughness(roughness_2);
+            const float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
+            const float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
             {
-                const float3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
-                sheen = _e86;
-                scaling = _e83;
+                const float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+                sheen = _e78;
+                scaling = _e72;
             }
-            const float3 _e87 = weft_diffuse_lambert(diffuse_albedo);
-            float _e88 = scaling;
-            float3 base_direct = (_e87 * (_e88 * n_dot_l_2));
-            float3 _e91 = sheen;
-            float3 direct = ((_e91 + base_direct) * _e67);
-            float3 _e95 = n;
-            const float3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
-            float3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
+            const float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
+            float _e80 = scaling;
+            float3 base_direct = (_e79 * (_e80 * _e44.n_dot_l));
+            float3 _e84 = sheen;
+            float3 direct = ((_e84 + base_direct) * _e55);
+            float3 _e88 = n;
+            const float3 _e90 = weft_prefiltered_radiance(reflect(-(v_3), _e88), _e69);
+            float3 env_sheen = ((_e90 * sheen_color_2) * (_e71 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
         }
     }
-    float3 _e105 = color;
-    float3 radiance = clamp(_e105, (0.0).xxx, (65504.0).xxx);
+    float3 _e98 = color;
+    float3 radiance = clamp(_e98, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

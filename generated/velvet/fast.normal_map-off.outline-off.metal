@@ -38,6 +38,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad11[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -166,6 +179,27 @@ metal::float3 weft_prefiltered_radiance(
     float _e4 = weft_specular_mip(roughness_1, weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_2,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_2, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_2));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_2, _e4))};
 }
 
 metal::float2 weft_transform_uv(
@@ -307,8 +341,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -328,7 +362,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     metal::float3 sheen = {};
@@ -349,49 +383,42 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e33));
-    metal::float3 _e42 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    metal::float3 _e46 = weft_main_light_direction(weft_frame);
-    metal::float3 _e48 = n;
-    metal::float3 _e49 = weft_safe_normalize(_e46 + _e42, _e48);
-    metal::float3 _e50 = n;
-    float _e52 = weft_clamp_cos(metal::dot(_e50, _e42));
-    metal::float3 _e53 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e53, _e46));
-    metal::float3 _e56 = n;
-    float n_dot_h_2 = metal::saturate(metal::dot(_e56, _e49));
-    float l_dot_h = metal::saturate(metal::dot(_e46, _e49));
+    WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e39.v;
+    n = _e39.n;
+    metal::float3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_3, weft_frame);
+    float l_dot_h = metal::saturate(metal::dot(_e44.l, _e44.h));
     metal::float3 f0_ = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e67 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e68 = n;
-    metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
-    metal::float3 ambient = _e69 * ao;
+    metal::float3 _e55 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e56 = n;
+    metal::float3 _e57 = weft_sh_irradiance(_e56, weft_frame);
+    metal::float3 ambient = _e57 * ao;
     {
         {
-            metal::float4 _e74 = material.scatter_color;
-            metal::float3 sheen_color_2 = metal::saturate(f0_ + metal::max(_e74.xyz, metal::float3(0.0)));
-            float _e81 = weft_sheen_clamp_roughness(roughness_2);
-            float _e82 = weft_sheen_albedo(_e52, _e81, weft_lut_sampler, weft_sheen_lut);
-            float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+            metal::float4 _e62 = material.scatter_color;
+            metal::float3 sheen_color_2 = metal::saturate(f0_ + metal::max(_e62.xyz, metal::float3(0.0)));
+            float _e69 = weft_sheen_clamp_roughness(roughness_2);
+            float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69, weft_lut_sampler, weft_sheen_lut);
+            float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
             {
-                metal::float3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
-                sheen = _e86;
-                scaling = _e83;
+                metal::float3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+                sheen = _e78;
+                scaling = _e72;
             }
-            metal::float3 _e87 = weft_diffuse_lambert(diffuse_albedo);
-            float _e88 = scaling;
-            metal::float3 base_direct = _e87 * (_e88 * n_dot_l_2);
-            metal::float3 _e91 = sheen;
-            metal::float3 direct = (_e91 + base_direct) * _e67;
-            metal::float3 _e95 = n;
-            metal::float3 _e97 = weft_prefiltered_radiance(metal::reflect(-(_e42), _e95), _e81, weft_frame, weft_environment, weft_environment_sampler);
-            metal::float3 env_sheen = (_e97 * sheen_color_2) * (_e82 * ao);
-            color = (direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen;
+            metal::float3 _e79 = weft_diffuse_lambert(diffuse_albedo);
+            float _e80 = scaling;
+            metal::float3 base_direct = _e79 * (_e80 * _e44.n_dot_l);
+            metal::float3 _e84 = sheen;
+            metal::float3 direct = (_e84 + base_direct) * _e55;
+            metal::float3 _e88 = n;
+            metal::float3 _e90 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e88), _e69, weft_frame, weft_environment, weft_environment_sampler);
+            metal::float3 env_sheen = (_e90 * sheen_color_2) * (_e71 * ao);
+            color = (direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen;
         }
     }
-    metal::float3 _e105 = color;
-    metal::float3 radiance = metal::clamp(_e105, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e98 = color;
+    metal::float3 radiance = metal::clamp(_e98, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

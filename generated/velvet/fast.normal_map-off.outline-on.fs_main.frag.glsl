@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -150,6 +162,19 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -237,50 +262,43 @@ void main() {
     float occlusion = _e29.x;
     float _e33 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
-    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
-    vec3 _e46 = weft_main_light_direction();
-    vec3 _e48 = n;
-    vec3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    vec3 _e50 = n;
-    float _e52 = weft_clamp_cos(dot(_e50, _e42));
-    vec3 _e53 = n;
-    float n_dot_l_2 = clamp(dot(_e53, _e46), 0.0, 1.0);
-    vec3 _e56 = n;
-    float n_dot_h_2 = clamp(dot(_e56, _e49), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e46, _e49), 0.0, 1.0);
+    WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_3 = _e39.v;
+    n = _e39.n;
+    vec3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_3);
+    float l_dot_h = clamp(dot(_e44.l, _e44.h), 0.0, 1.0);
     vec3 f0_ = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e67 = weft_main_light_radiance();
-    vec3 _e68 = n;
-    vec3 _e69 = weft_sh_irradiance(_e68);
-    vec3 ambient = (_e69 * ao);
+    vec3 _e55 = weft_main_light_radiance();
+    vec3 _e56 = n;
+    vec3 _e57 = weft_sh_irradiance(_e56);
+    vec3 ambient = (_e57 * ao);
     {
         {
-            vec4 _e74 = _group_1_binding_0_fs.scatter_color;
-            vec3 sheen_color_2 = clamp((f0_ + max(_e74.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
-            float _e81 = weft_sheen_clamp_roughness(roughness_2);
-            float _e82 = weft_sheen_albedo(_e52, _e81);
-            float _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+            vec4 _e62 = _group_1_binding_0_fs.scatter_color;
+            vec3 sheen_color_2 = clamp((f0_ + max(_e62.xyz, vec3(0.0))), vec3(0.0), vec3(1.0));
+            float _e69 = weft_sheen_clamp_roughness(roughness_2);
+            float _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
+            float _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
             {
-                vec3 _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
-                sheen = _e86;
-                scaling = _e83;
+                vec3 _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+                sheen = _e78;
+                scaling = _e72;
             }
-            vec3 _e87 = weft_diffuse_lambert(diffuse_albedo);
-            float _e88 = scaling;
-            vec3 base_direct = (_e87 * (_e88 * n_dot_l_2));
-            vec3 _e91 = sheen;
-            vec3 direct = ((_e91 + base_direct) * _e67);
-            vec3 _e95 = n;
-            vec3 _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
-            vec3 env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
+            vec3 _e79 = weft_diffuse_lambert(diffuse_albedo);
+            float _e80 = scaling;
+            vec3 base_direct = (_e79 * (_e80 * _e44.n_dot_l));
+            vec3 _e84 = sheen;
+            vec3 direct = ((_e84 + base_direct) * _e55);
+            vec3 _e88 = n;
+            vec3 _e90 = weft_prefiltered_radiance(reflect(-(v_3), _e88), _e69);
+            vec3 env_sheen = ((_e90 * sheen_color_2) * (_e71 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
         }
     }
-    vec3 _e105 = color;
-    vec3 radiance = clamp(_e105, vec3(0.0), vec3(65504.0));
+    vec3 _e98 = color;
+    vec3 radiance = clamp(_e98, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

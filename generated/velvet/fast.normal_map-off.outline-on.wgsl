@@ -37,6 +37,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -158,6 +172,19 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_1);
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
+}
+
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_2: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_2, _e4)));
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -319,49 +346,42 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e29.x;
     let _e33 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e33));
-    let _e42 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
-    let _e46 = weft_main_light_direction();
-    let _e48 = n;
-    let _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    let _e50 = n;
-    let _e52 = weft_clamp_cos(dot(_e50, _e42));
-    let _e53 = n;
-    let n_dot_l_2 = saturate(dot(_e53, _e46));
-    let _e56 = n;
-    let n_dot_h_2 = saturate(dot(_e56, _e49));
-    let l_dot_h = saturate(dot(_e46, _e49));
+    let _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_3 = _e39.v;
+    n = _e39.n;
+    let _e43 = n;
+    let _e44 = weft_main_light_geometry(_e43, v_3);
+    let l_dot_h = saturate(dot(_e44.l, _e44.h));
     let f0_ = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e67 = weft_main_light_radiance();
-    let _e68 = n;
-    let _e69 = weft_sh_irradiance(_e68);
-    let ambient = (_e69 * ao);
+    let _e55 = weft_main_light_radiance();
+    let _e56 = n;
+    let _e57 = weft_sh_irradiance(_e56);
+    let ambient = (_e57 * ao);
     {
         {
-            let _e74 = material.scatter_color;
-            let sheen_color_2 = saturate((f0_ + max(_e74.xyz, vec3(0f))));
-            let _e81 = weft_sheen_clamp_roughness(roughness_2);
-            let _e82 = weft_sheen_albedo(_e52, _e81);
-            let _e83 = weft_sheen_albedo_scaling_view(sheen_color_2, _e82);
+            let _e62 = material.scatter_color;
+            let sheen_color_2 = saturate((f0_ + max(_e62.xyz, vec3(0f))));
+            let _e69 = weft_sheen_clamp_roughness(roughness_2);
+            let _e71 = weft_sheen_albedo(_e44.n_dot_v, _e69);
+            let _e72 = weft_sheen_albedo_scaling_view(sheen_color_2, _e71);
             {
-                let _e86 = weft_sheen_charlie(sheen_color_2, n_dot_h_2, _e52, n_dot_l_2, _e81);
-                sheen = _e86;
-                scaling = _e83;
+                let _e78 = weft_sheen_charlie(sheen_color_2, _e44.n_dot_h, _e44.n_dot_v, _e44.n_dot_l, _e69);
+                sheen = _e78;
+                scaling = _e72;
             }
-            let _e87 = weft_diffuse_lambert(diffuse_albedo);
-            let _e88 = scaling;
-            let base_direct = (_e87 * (_e88 * n_dot_l_2));
-            let _e91 = sheen;
-            let direct = ((_e91 + base_direct) * _e67);
-            let _e95 = n;
-            let _e97 = weft_prefiltered_radiance(reflect(-(_e42), _e95), _e81);
-            let env_sheen = ((_e97 * sheen_color_2) * (_e82 * ao));
-            color = ((direct + ((ambient * diffuse_albedo) * _e83)) + env_sheen);
+            let _e79 = weft_diffuse_lambert(diffuse_albedo);
+            let _e80 = scaling;
+            let base_direct = (_e79 * (_e80 * _e44.n_dot_l));
+            let _e84 = sheen;
+            let direct = ((_e84 + base_direct) * _e55);
+            let _e88 = n;
+            let _e90 = weft_prefiltered_radiance(reflect(-(v_3), _e88), _e69);
+            let env_sheen = ((_e90 * sheen_color_2) * (_e71 * ao));
+            color = ((direct + ((ambient * diffuse_albedo) * _e72)) + env_sheen);
         }
     }
-    let _e105 = color;
-    let radiance = clamp(_e105, vec3(0f), vec3(65504f));
+    let _e98 = color;
+    let radiance = clamp(_e98, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -38,6 +38,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad11[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -156,6 +169,27 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -211,10 +245,9 @@ float weft_sheen_albedo_nearest(
 }
 
 metal::float3 velvet_low(
-    metal::float3 n_2,
-    metal::float3 v_1,
-    metal::float3 l,
-    metal::float3 h,
+    metal::float3 n_3,
+    metal::float3 v_2,
+    WeftLightGeometry lit,
     metal::float3 f0_,
     metal::float3 diffuse_albedo,
     float roughness_2,
@@ -227,28 +260,28 @@ metal::float3 velvet_low(
     metal::texture2d<float, metal::access::sample> weft_sheen_lut,
     constant WeftMaterial& material
 ) {
-    float _e10 = weft_sheen_clamp_roughness(roughness_2);
-    float _e12 = weft_clamp_cos(metal::dot(n_2, v_1));
-    float n_dot_l = metal::saturate(metal::dot(n_2, l));
-    metal::float4 _e17 = material.scatter_color;
-    metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e17.xyz, metal::float3(0.0))));
-    float _e25 = weft_sheen_albedo_nearest(_e12, _e10, weft_sheen_lut);
-    half e_v = static_cast<half>(_e25);
+    float _e9 = weft_sheen_clamp_roughness(roughness_2);
+    float n_dot_v = lit.n_dot_v;
+    float n_dot_l = lit.n_dot_l;
+    metal::float4 _e14 = material.scatter_color;
+    metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e14.xyz, metal::float3(0.0))));
+    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9, weft_sheen_lut);
+    half e_v = static_cast<half>(_e22);
     half scaling_1 = metal::saturate(1.0h - (metal::max(sheen_color.x, metal::max(sheen_color.y, sheen_color.z)) * e_v));
-    float inv_r = 1.0 / _e10;
-    float noh = metal::saturate(metal::dot(n_2, h));
+    float inv_r = 1.0 / _e9;
+    float noh = lit.n_dot_h;
     half sin_pow = static_cast<half>(metal::pow(metal::max((1.0 - noh) * (1.0 + noh), 0.0), 0.5 * inv_r));
     half d_1 = (static_cast<half>(2.0 + inv_r) * sin_pow) * 0.15917969h;
-    float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    half g2_ = static_cast<half>(1.0 / ((1.0 + _e57) + _e60));
-    half nv = metal::max(static_cast<half>(_e12), 0.0010004044h);
+    float _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    float _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    half g2_ = static_cast<half>(1.0 / ((1.0 + _e53) + _e56));
+    half nv = metal::max(static_cast<half>(n_dot_v), 0.0010004044h);
     half v_n_dot_l = (n_dot_l > 0.0) ? (g2_ / (4.0h * nv)) : 0.0h;
     metal::float3 sheen_1 = static_cast<metal::float3>(sheen_color * (d_1 * v_n_dot_l));
     metal::float3 base_direct = diffuse_albedo * static_cast<float>((scaling_1 * static_cast<half>(n_dot_l)) * 0.31835938h);
     metal::float3 direct = (sheen_1 + base_direct) * light;
-    metal::float3 _e88 = weft_prefiltered_radiance(metal::reflect(-(v_1), n_2), _e10, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 env_sheen = (_e88 * static_cast<metal::float3>(sheen_color * e_v)) * ao;
+    metal::float3 _e84 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_3), _e9, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 env_sheen = (_e84 * static_cast<metal::float3>(sheen_color * e_v)) * ao;
     return (direct + ((ambient * diffuse_albedo) * static_cast<float>(scaling_1))) + env_sheen;
 }
 
@@ -294,8 +327,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -314,7 +347,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     metal::float3 sheen = {};
@@ -335,31 +368,24 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao_1 = metal::saturate(metal::mix(1.0, occlusion, _e33));
-    metal::float3 _e42 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    metal::float3 _e46 = weft_main_light_direction(weft_frame);
-    metal::float3 _e48 = n;
-    metal::float3 _e49 = weft_safe_normalize(_e46 + _e42, _e48);
-    metal::float3 _e50 = n;
-    float _e52 = weft_clamp_cos(metal::dot(_e50, _e42));
-    metal::float3 _e53 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e53, _e46));
-    metal::float3 _e56 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e56, _e49));
-    float l_dot_h = metal::saturate(metal::dot(_e46, _e49));
+    WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e39.v;
+    n = _e39.n;
+    metal::float3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_3, weft_frame);
+    float l_dot_h = metal::saturate(metal::dot(_e44.l, _e44.h));
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
-    metal::float3 _e67 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e68 = n;
-    metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
-    metal::float3 ambient_1 = _e69 * ao_1;
+    metal::float3 _e55 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e56 = n;
+    metal::float3 _e57 = weft_sh_irradiance(_e56, weft_frame);
+    metal::float3 ambient_1 = _e57 * ao_1;
     {
-        metal::float3 _e72 = n;
-        metal::float3 _e73 = velvet_low(_e72, _e42, _e46, _e49, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e67, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
-        color = _e73;
+        metal::float3 _e60 = n;
+        metal::float3 _e61 = velvet_low(_e60, v_3, _e44, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e55, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
+        color = _e61;
     }
-    metal::float3 _e74 = color;
-    metal::float3 radiance = metal::clamp(_e74, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e62 = color;
+    metal::float3 radiance = metal::clamp(_e62, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

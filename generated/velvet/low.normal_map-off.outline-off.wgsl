@@ -28,6 +28,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -141,6 +155,19 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -177,29 +204,29 @@ fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness_1: f32) -> f32 {
     return saturate(_e16.x);
 }
 
-fn velvet_low(n_2: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
-    let _e10 = weft_sheen_clamp_roughness(roughness_2);
-    let _e12 = weft_clamp_cos(dot(n_2, v_1));
-    let n_dot_l = saturate(dot(n_2, l));
-    let _e17 = material.scatter_color;
-    let sheen_color = vec3<f32>(saturate((f0_ + max(_e17.xyz, vec3(0f)))));
-    let _e25 = weft_sheen_albedo_nearest(_e12, _e10);
-    let e_v = f32(_e25);
+fn velvet_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
+    let _e9 = weft_sheen_clamp_roughness(roughness_2);
+    let n_dot_v = lit.n_dot_v;
+    let n_dot_l = lit.n_dot_l;
+    let _e14 = material.scatter_color;
+    let sheen_color = vec3<f32>(saturate((f0_ + max(_e14.xyz, vec3(0f)))));
+    let _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    let e_v = f32(_e22);
     let scaling_1 = saturate((1f - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
-    let inv_r = (1f / _e10);
-    let noh = saturate(dot(n_2, h));
+    let inv_r = (1f / _e9);
+    let noh = lit.n_dot_h;
     let sin_pow = f32(pow(max(((1f - noh) * (1f + noh)), 0f), (0.5f * inv_r)));
     let d_1 = ((f32((2f + inv_r)) * sin_pow) * 0.15915494f);
-    let _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    let _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    let g2_ = f32((1f / ((1f + _e57) + _e60)));
-    let nv = max(f32(_e12), 0.001f);
+    let _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    let _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    let g2_ = f32((1f / ((1f + _e53) + _e56)));
+    let nv = max(f32(n_dot_v), 0.001f);
     let v_n_dot_l = select(0f, (g2_ / (4f * nv)), (n_dot_l > 0f));
     let sheen_1 = vec3<f32>((sheen_color * (d_1 * v_n_dot_l)));
     let base_direct = (diffuse_albedo * f32(((scaling_1 * f32(n_dot_l)) * 0.31830987f)));
     let direct = ((sheen_1 + base_direct) * light);
-    let _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_2), _e10);
-    let env_sheen = ((_e88 * vec3<f32>((sheen_color * e_v))) * ao);
+    let _e84 = weft_prefiltered_radiance(reflect(-(v_2), n_3), _e9);
+    let env_sheen = ((_e84 * vec3<f32>((sheen_color * e_v))) * ao);
     return ((direct + ((ambient * diffuse_albedo) * f32(scaling_1))) + env_sheen);
 }
 
@@ -249,31 +276,24 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e29.x;
     let _e33 = material.occlusion_strength;
     let ao_1 = saturate(mix(1f, occlusion, _e33));
-    let _e42 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    let _e46 = weft_main_light_direction();
-    let _e48 = n;
-    let _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    let _e50 = n;
-    let _e52 = weft_clamp_cos(dot(_e50, _e42));
-    let _e53 = n;
-    let n_dot_l_1 = saturate(dot(_e53, _e46));
-    let _e56 = n;
-    let n_dot_h = saturate(dot(_e56, _e49));
-    let l_dot_h = saturate(dot(_e46, _e49));
+    let _e39 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_3 = _e39.v;
+    n = _e39.n;
+    let _e43 = n;
+    let _e44 = weft_main_light_geometry(_e43, v_3);
+    let l_dot_h = saturate(dot(_e44.l, _e44.h));
     let f0_1 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
-    let _e67 = weft_main_light_radiance();
-    let _e68 = n;
-    let _e69 = weft_sh_irradiance(_e68);
-    let ambient_1 = (_e69 * ao_1);
+    let _e55 = weft_main_light_radiance();
+    let _e56 = n;
+    let _e57 = weft_sh_irradiance(_e56);
+    let ambient_1 = (_e57 * ao_1);
     {
-        let _e72 = n;
-        let _e73 = velvet_low(_e72, _e42, _e46, _e49, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e67, ambient_1);
-        color = _e73;
+        let _e60 = n;
+        let _e61 = velvet_low(_e60, v_3, _e44, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e55, ambient_1);
+        color = _e61;
     }
-    let _e74 = color;
-    let radiance = clamp(_e74, vec3(0f), vec3(65504f));
+    let _e62 = color;
+    let radiance = clamp(_e62, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

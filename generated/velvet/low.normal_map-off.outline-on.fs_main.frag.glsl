@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -142,6 +154,19 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -177,29 +202,29 @@ float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1) {
     return clamp(_e16.x, 0.0, 1.0);
 }
 
-vec3 velvet_low(vec3 n_2, vec3 v_1, vec3 l, vec3 h, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
-    float _e10 = weft_sheen_clamp_roughness(roughness_2);
-    float _e12 = weft_clamp_cos(dot(n_2, v_1));
-    float n_dot_l = clamp(dot(n_2, l), 0.0, 1.0);
-    vec4 _e17 = _group_1_binding_0_fs.scatter_color;
-    vec3 sheen_color = vec3(clamp((f0_ + max(_e17.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
-    float _e25 = weft_sheen_albedo_nearest(_e12, _e10);
-    float e_v = float(_e25);
+vec3 velvet_low(vec3 n_3, vec3 v_2, WeftLightGeometry lit, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
+    float _e9 = weft_sheen_clamp_roughness(roughness_2);
+    float n_dot_v = lit.n_dot_v;
+    float n_dot_l = lit.n_dot_l;
+    vec4 _e14 = _group_1_binding_0_fs.scatter_color;
+    vec3 sheen_color = vec3(clamp((f0_ + max(_e14.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
+    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    float e_v = float(_e22);
     float scaling_1 = clamp((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)), 0.0, 1.0);
-    float inv_r = (1.0 / _e10);
-    float noh = clamp(dot(n_2, h), 0.0, 1.0);
+    float inv_r = (1.0 / _e9);
+    float noh = lit.n_dot_h;
     float sin_pow = float(pow(max(((1.0 - noh) * (1.0 + noh)), 0.0), (0.5 * inv_r)));
     float d_1 = ((float((2.0 + inv_r)) * sin_pow) * 0.15915494);
-    float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    float g2_ = float((1.0 / ((1.0 + _e57) + _e60)));
-    float nv = max(float(_e12), 0.001);
+    float _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    float _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    float g2_ = float((1.0 / ((1.0 + _e53) + _e56)));
+    float nv = max(float(n_dot_v), 0.001);
     float v_n_dot_l = ((n_dot_l > 0.0) ? (g2_ / (4.0 * nv)) : 0.0);
     vec3 sheen_1 = vec3((sheen_color * (d_1 * v_n_dot_l)));
     vec3 base_direct = (diffuse_albedo * float(((scaling_1 * float(n_dot_l)) * 0.31830987)));
     vec3 direct = ((sheen_1 + base_direct) * light);
-    vec3 _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_2), _e10);
-    vec3 env_sheen = ((_e88 * vec3((sheen_color * e_v))) * ao);
+    vec3 _e84 = weft_prefiltered_radiance(reflect(-(v_2), n_3), _e9);
+    vec3 env_sheen = ((_e84 * vec3((sheen_color * e_v))) * ao);
     return ((direct + ((ambient * diffuse_albedo) * float(scaling_1))) + env_sheen);
 }
 
@@ -225,32 +250,25 @@ void main() {
     float occlusion = _e29.x;
     float _e33 = _group_1_binding_0_fs.occlusion_strength;
     float ao_1 = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
-    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
-    vec3 _e46 = weft_main_light_direction();
-    vec3 _e48 = n;
-    vec3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    vec3 _e50 = n;
-    float _e52 = weft_clamp_cos(dot(_e50, _e42));
-    vec3 _e53 = n;
-    float n_dot_l_1 = clamp(dot(_e53, _e46), 0.0, 1.0);
-    vec3 _e56 = n;
-    float n_dot_h = clamp(dot(_e56, _e49), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e46, _e49), 0.0, 1.0);
+    WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_3 = _e39.v;
+    n = _e39.n;
+    vec3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_3);
+    float l_dot_h = clamp(dot(_e44.l, _e44.h), 0.0, 1.0);
     vec3 f0_1 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    vec3 _e67 = weft_main_light_radiance();
-    vec3 _e68 = n;
-    vec3 _e69 = weft_sh_irradiance(_e68);
-    vec3 ambient_1 = (_e69 * ao_1);
+    vec3 _e55 = weft_main_light_radiance();
+    vec3 _e56 = n;
+    vec3 _e57 = weft_sh_irradiance(_e56);
+    vec3 ambient_1 = (_e57 * ao_1);
     {
-        vec3 _e72 = n;
-        vec3 _e73 = velvet_low(_e72, _e42, _e46, _e49, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e67, ambient_1);
-        color = _e73;
+        vec3 _e60 = n;
+        vec3 _e61 = velvet_low(_e60, v_3, _e44, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e55, ambient_1);
+        color = _e61;
     }
-    vec3 _e74 = color;
-    vec3 radiance = clamp(_e74, vec3(0.0), vec3(65504.0));
+    vec3 _e62 = color;
+    vec3 radiance = clamp(_e62, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -38,6 +38,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad11[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -165,27 +178,48 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
+    metal::float3 v_3 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_3.xy * strength, metal::max(v_3.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -194,6 +228,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -245,16 +291,15 @@ float weft_sheen_albedo_nearest(
     metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_sheen_lut.get_width(), weft_sheen_lut.get_height()));
     float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e6);
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_sheen_lut.read(metal::uint2(texel_1), 0);
+    metal::int2 texel_2 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
+    metal::float4 _e16 = weft_sheen_lut.read(metal::uint2(texel_2), 0);
     return metal::saturate(_e16.x);
 }
 
 metal::float3 velvet_low(
-    metal::float3 n_4,
-    metal::float3 v_1,
-    metal::float3 l,
-    metal::float3 h,
+    metal::float3 n_6,
+    metal::float3 v_2,
+    WeftLightGeometry lit,
     metal::float3 f0_,
     metal::float3 diffuse_albedo,
     float roughness_2,
@@ -267,35 +312,35 @@ metal::float3 velvet_low(
     metal::texture2d<float, metal::access::sample> weft_sheen_lut,
     constant WeftMaterial& material
 ) {
-    float _e10 = weft_sheen_clamp_roughness(roughness_2);
-    float _e12 = weft_clamp_cos(metal::dot(n_4, v_1));
-    float n_dot_l = metal::saturate(metal::dot(n_4, l));
-    metal::float4 _e17 = material.scatter_color;
-    metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e17.xyz, metal::float3(0.0))));
-    float _e25 = weft_sheen_albedo_nearest(_e12, _e10, weft_sheen_lut);
-    half e_v = static_cast<half>(_e25);
+    float _e9 = weft_sheen_clamp_roughness(roughness_2);
+    float n_dot_v = lit.n_dot_v;
+    float n_dot_l = lit.n_dot_l;
+    metal::float4 _e14 = material.scatter_color;
+    metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e14.xyz, metal::float3(0.0))));
+    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9, weft_sheen_lut);
+    half e_v = static_cast<half>(_e22);
     half scaling_1 = metal::saturate(1.0h - (metal::max(sheen_color.x, metal::max(sheen_color.y, sheen_color.z)) * e_v));
-    float inv_r = 1.0 / _e10;
-    float noh = metal::saturate(metal::dot(n_4, h));
+    float inv_r = 1.0 / _e9;
+    float noh = lit.n_dot_h;
     half sin_pow = static_cast<half>(metal::pow(metal::max((1.0 - noh) * (1.0 + noh), 0.0), 0.5 * inv_r));
     half d_1 = (static_cast<half>(2.0 + inv_r) * sin_pow) * 0.15917969h;
-    float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    half g2_ = static_cast<half>(1.0 / ((1.0 + _e57) + _e60));
-    half nv = metal::max(static_cast<half>(_e12), 0.0010004044h);
+    float _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    float _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    half g2_ = static_cast<half>(1.0 / ((1.0 + _e53) + _e56));
+    half nv = metal::max(static_cast<half>(n_dot_v), 0.0010004044h);
     half v_n_dot_l = (n_dot_l > 0.0) ? (g2_ / (4.0h * nv)) : 0.0h;
     metal::float3 sheen_1 = static_cast<metal::float3>(sheen_color * (d_1 * v_n_dot_l));
     metal::float3 base_direct = diffuse_albedo * static_cast<float>((scaling_1 * static_cast<half>(n_dot_l)) * 0.31835938h);
     metal::float3 direct = (sheen_1 + base_direct) * light;
-    metal::float3 _e88 = weft_prefiltered_radiance(metal::reflect(-(v_1), n_4), _e10, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 env_sheen = (_e88 * static_cast<metal::float3>(sheen_color * e_v)) * ao;
+    metal::float3 _e84 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_6), _e9, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 env_sheen = (_e84 * static_cast<metal::float3>(sheen_color * e_v)) * ao;
     return (direct + ((ambient * diffuse_albedo) * static_cast<float>(scaling_1))) + env_sheen;
 }
 
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -310,7 +355,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -334,8 +379,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -355,7 +400,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(4)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     metal::float3 sheen = {};
@@ -376,41 +421,32 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao_1 = metal::saturate(metal::mix(1.0, occlusion, _e33));
-    metal::float3 _e42 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
+    WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_4 = _e39.v;
+    n = _e39.n;
     {
-        metal::float3 _e46 = n;
-        metal::float3x3 _e48 = weft_tangent_frame(_e46, in_1.world_tangent);
-        metal::float4 _e51 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_2 = _e51.xyz;
-        float _e55 = material.normal_strength;
-        metal::float3 _e56 = weft_unpack_normal(texel_2, _e55);
-        metal::float3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        metal::float4 _e45 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_3 = _e45.xyz;
+        metal::float3 _e47 = n;
+        float _e51 = material.normal_strength;
+        metal::float3 _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_3, _e51);
+        n = _e52;
     }
-    metal::float3 _e58 = weft_main_light_direction(weft_frame);
-    metal::float3 _e60 = n;
-    metal::float3 _e61 = weft_safe_normalize(_e58 + _e42, _e60);
-    metal::float3 _e62 = n;
-    float _e64 = weft_clamp_cos(metal::dot(_e62, _e42));
-    metal::float3 _e65 = n;
-    float n_dot_l_1 = metal::saturate(metal::dot(_e65, _e58));
-    metal::float3 _e68 = n;
-    float n_dot_h = metal::saturate(metal::dot(_e68, _e61));
-    float l_dot_h = metal::saturate(metal::dot(_e58, _e61));
+    metal::float3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_4, weft_frame);
+    float l_dot_h = metal::saturate(metal::dot(_e54.l, _e54.h));
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
-    metal::float3 _e79 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e80 = n;
-    metal::float3 _e81 = weft_sh_irradiance(_e80, weft_frame);
-    metal::float3 ambient_1 = _e81 * ao_1;
+    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e66 = n;
+    metal::float3 _e67 = weft_sh_irradiance(_e66, weft_frame);
+    metal::float3 ambient_1 = _e67 * ao_1;
     {
-        metal::float3 _e84 = n;
-        metal::float3 _e85 = velvet_low(_e84, _e42, _e58, _e61, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e79, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
-        color = _e85;
+        metal::float3 _e70 = n;
+        metal::float3 _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
+        color = _e71;
     }
-    metal::float3 _e86 = color;
-    metal::float3 radiance = metal::clamp(_e86, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e72 = color;
+    metal::float3 radiance = metal::clamp(_e72, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -37,6 +37,24 @@ struct WeftMaterial {
     int _end_pad_1;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -83,16 +101,16 @@ Texture2D<float4> normal_map : register(t4, space1);
 Texture2D<float4> occlusion_map : register(t5, space1);
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
@@ -178,29 +196,72 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_2.xy * strength), max(v_2.z, 0.001));
+    float3 v_3 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -249,35 +310,35 @@ float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1)
     float2 size = float2(NagaDimensions2D(weft_sheen_lut));
     const float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
     float2 uv_1 = float2(saturate(n_dot_x), _e6);
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_sheen_lut.Load(int3(texel_1, int(0)));
+    int2 texel_2 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
+    float4 _e16 = weft_sheen_lut.Load(int3(texel_2, int(0)));
     return saturate(_e16.x);
 }
 
-float3 velvet_low(float3 n_4, float3 v_1, float3 l, float3 h, float3 f0_, float3 diffuse_albedo, float roughness_2, float ao, float3 light, float3 ambient)
+float3 velvet_low(float3 n_6, float3 v_2, WeftLightGeometry lit_, float3 f0_, float3 diffuse_albedo, float roughness_2, float ao, float3 light, float3 ambient)
 {
-    const float _e10 = weft_sheen_clamp_roughness(roughness_2);
-    const float _e12 = weft_clamp_cos(dot(n_4, v_1));
-    float n_dot_l = saturate(dot(n_4, l));
-    float4 _e17 = material.scatter_color;
-    float3 sheen_color = float3(saturate((f0_ + max(_e17.xyz, (0.0).xxx))));
-    const float _e25 = weft_sheen_albedo_nearest(_e12, _e10);
-    float e_v = float(_e25);
+    const float _e9 = weft_sheen_clamp_roughness(roughness_2);
+    float n_dot_v = lit_.n_dot_v;
+    float n_dot_l = lit_.n_dot_l;
+    float4 _e14 = material.scatter_color;
+    float3 sheen_color = float3(saturate((f0_ + max(_e14.xyz, (0.0).xxx))));
+    const float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    float e_v = float(_e22);
     float scaling_1 = saturate((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
-    float inv_r = (1.0 / _e10);
-    float noh = saturate(dot(n_4, h));
+    float inv_r = (1.0 / _e9);
+    float noh = lit_.n_dot_h;
     float sin_pow = float(pow(max(((1.0 - noh) * (1.0 + noh)), 0.0), (0.5 * inv_r)));
     float d_1 = ((float((2.0 + inv_r)) * sin_pow) * 0.15915494);
-    const float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    const float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    float g2_ = float((1.0 / ((1.0 + _e57) + _e60)));
-    float nv = max(float(_e12), 0.001);
+    const float _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    const float _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    float g2_ = float((1.0 / ((1.0 + _e53) + _e56)));
+    float nv = max(float(n_dot_v), 0.001);
     float v_n_dot_l = ((n_dot_l > 0.0) ? (g2_ / (4.0 * nv)) : 0.0);
     float3 sheen_1 = float3((sheen_color * (d_1 * v_n_dot_l)));
     float3 base_direct = (diffuse_albedo * float(((scaling_1 * float(n_dot_l)) * 0.31830987)));
     float3 direct = ((sheen_1 + base_direct) * light);
-    const float3 _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_4), _e10);
-    float3 env_sheen = ((_e88 * float3((sheen_color * e_v))) * ao);
+    const float3 _e84 = weft_prefiltered_radiance(reflect(-(v_2), n_6), _e9);
+    float3 env_sheen = ((_e84 * float3((sheen_color * e_v))) * ao);
     return ((direct + ((ambient * diffuse_albedo) * float(scaling_1))) + env_sheen);
 }
 
@@ -308,7 +369,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
     float3 sheen = (float3)0;
@@ -330,41 +391,32 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao_1 = saturate(lerp(1.0, occlusion, _e33));
-    const float3 _e42 = weft_view_direction(in_1.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
+    const WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal);
+    float3 v_4 = _e39.v;
+    n = _e39.n;
     {
-        float3 _e46 = n;
-        const float3x3 _e48 = weft_tangent_frame(_e46, in_1.world_tangent);
-        float4 _e51 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_2 = _e51.xyz;
-        float _e55 = material.normal_strength;
-        const float3 _e56 = weft_unpack_normal(texel_2, _e55);
-        const float3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        float4 _e45 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_3 = _e45.xyz;
+        float3 _e47 = n;
+        float _e51 = material.normal_strength;
+        const float3 _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_3, _e51);
+        n = _e52;
     }
-    const float3 _e58 = weft_main_light_direction();
-    float3 _e60 = n;
-    const float3 _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    float3 _e62 = n;
-    const float _e64 = weft_clamp_cos(dot(_e62, _e42));
-    float3 _e65 = n;
-    float n_dot_l_1 = saturate(dot(_e65, _e58));
-    float3 _e68 = n;
-    float n_dot_h = saturate(dot(_e68, _e61));
-    float l_dot_h = saturate(dot(_e58, _e61));
+    float3 _e53 = n;
+    const WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_4);
+    float l_dot_h = saturate(dot(_e54.l, _e54.h));
     float3 f0_1 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    const float3 _e79 = weft_main_light_radiance();
-    float3 _e80 = n;
-    const float3 _e81 = weft_sh_irradiance(_e80);
-    float3 ambient_1 = (_e81 * ao_1);
+    const float3 _e65 = weft_main_light_radiance();
+    float3 _e66 = n;
+    const float3 _e67 = weft_sh_irradiance(_e66);
+    float3 ambient_1 = (_e67 * ao_1);
     {
-        float3 _e84 = n;
-        const float3 _e85 = velvet_low(_e84, _e42, _e58, _e61, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e79, ambient_1);
-        color = _e85;
+        float3 _e70 = n;
+        const float3 _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1);
+        color = _e71;
     }
-    float3 _e86 = color;
-    float3 radiance = clamp(_e86, (0.0).xxx, (65504.0).xxx);
+    float3 _e72 = color;
+    float3 radiance = clamp(_e72, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -28,6 +28,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -150,26 +164,46 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_2 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -203,34 +237,34 @@ fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness_1: f32) -> f32 {
     let size = vec2<f32>(_e3);
     let _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
     let uv_1 = vec2<f32>(saturate(n_dot_x), _e6);
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_sheen_lut, texel_1, 0i);
+    let texel_2 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
+    let _e16 = textureLoad(weft_sheen_lut, texel_2, 0i);
     return saturate(_e16.x);
 }
 
-fn velvet_low(n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>, h: vec3<f32>, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
-    let _e10 = weft_sheen_clamp_roughness(roughness_2);
-    let _e12 = weft_clamp_cos(dot(n_4, v_1));
-    let n_dot_l = saturate(dot(n_4, l));
-    let _e17 = material.scatter_color;
-    let sheen_color = vec3<f32>(saturate((f0_ + max(_e17.xyz, vec3(0f)))));
-    let _e25 = weft_sheen_albedo_nearest(_e12, _e10);
-    let e_v = f32(_e25);
+fn velvet_low(n_6: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
+    let _e9 = weft_sheen_clamp_roughness(roughness_2);
+    let n_dot_v = lit.n_dot_v;
+    let n_dot_l = lit.n_dot_l;
+    let _e14 = material.scatter_color;
+    let sheen_color = vec3<f32>(saturate((f0_ + max(_e14.xyz, vec3(0f)))));
+    let _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    let e_v = f32(_e22);
     let scaling_1 = saturate((1f - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
-    let inv_r = (1f / _e10);
-    let noh = saturate(dot(n_4, h));
+    let inv_r = (1f / _e9);
+    let noh = lit.n_dot_h;
     let sin_pow = f32(pow(max(((1f - noh) * (1f + noh)), 0f), (0.5f * inv_r)));
     let d_1 = ((f32((2f + inv_r)) * sin_pow) * 0.15915494f);
-    let _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    let _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    let g2_ = f32((1f / ((1f + _e57) + _e60)));
-    let nv = max(f32(_e12), 0.001f);
+    let _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    let _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    let g2_ = f32((1f / ((1f + _e53) + _e56)));
+    let nv = max(f32(n_dot_v), 0.001f);
     let v_n_dot_l = select(0f, (g2_ / (4f * nv)), (n_dot_l > 0f));
     let sheen_1 = vec3<f32>((sheen_color * (d_1 * v_n_dot_l)));
     let base_direct = (diffuse_albedo * f32(((scaling_1 * f32(n_dot_l)) * 0.31830987f)));
     let direct = ((sheen_1 + base_direct) * light);
-    let _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_4), _e10);
-    let env_sheen = ((_e88 * vec3<f32>((sheen_color * e_v))) * ao);
+    let _e84 = weft_prefiltered_radiance(reflect(-(v_2), n_6), _e9);
+    let env_sheen = ((_e84 * vec3<f32>((sheen_color * e_v))) * ao);
     return ((direct + ((ambient * diffuse_albedo) * f32(scaling_1))) + env_sheen);
 }
 
@@ -280,41 +314,32 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e29.x;
     let _e33 = material.occlusion_strength;
     let ao_1 = saturate(mix(1f, occlusion, _e33));
-    let _e42 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
+    let _e39 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_4 = _e39.v;
+    n = _e39.n;
     {
-        let _e46 = n;
-        let _e48 = weft_tangent_frame(_e46, in_1.world_tangent);
-        let _e51 = textureSample(normal_map, material_sampler, _e5);
-        let texel_2 = _e51.xyz;
-        let _e55 = material.normal_strength;
-        let _e56 = weft_unpack_normal(texel_2, _e55);
-        let _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        let _e45 = textureSample(normal_map, material_sampler, _e5);
+        let texel_3 = _e45.xyz;
+        let _e47 = n;
+        let _e51 = material.normal_strength;
+        let _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_3, _e51);
+        n = _e52;
     }
-    let _e58 = weft_main_light_direction();
-    let _e60 = n;
-    let _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    let _e62 = n;
-    let _e64 = weft_clamp_cos(dot(_e62, _e42));
-    let _e65 = n;
-    let n_dot_l_1 = saturate(dot(_e65, _e58));
-    let _e68 = n;
-    let n_dot_h = saturate(dot(_e68, _e61));
-    let l_dot_h = saturate(dot(_e58, _e61));
+    let _e53 = n;
+    let _e54 = weft_main_light_geometry(_e53, v_4);
+    let l_dot_h = saturate(dot(_e54.l, _e54.h));
     let f0_1 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo_1 = (base * (1f - metallic));
-    let _e79 = weft_main_light_radiance();
-    let _e80 = n;
-    let _e81 = weft_sh_irradiance(_e80);
-    let ambient_1 = (_e81 * ao_1);
+    let _e65 = weft_main_light_radiance();
+    let _e66 = n;
+    let _e67 = weft_sh_irradiance(_e66);
+    let ambient_1 = (_e67 * ao_1);
     {
-        let _e84 = n;
-        let _e85 = velvet_low(_e84, _e42, _e58, _e61, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e79, ambient_1);
-        color = _e85;
+        let _e70 = n;
+        let _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1);
+        color = _e71;
     }
-    let _e86 = color;
-    let radiance = clamp(_e86, vec3(0f), vec3(65504f));
+    let _e72 = color;
+    let radiance = clamp(_e72, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

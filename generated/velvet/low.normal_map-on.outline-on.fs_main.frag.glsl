@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -151,26 +163,46 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
+    vec3 v_3 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_3.xy * strength), max(v_3.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -203,34 +235,34 @@ float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1) {
     vec2 size = vec2(uvec2(textureSize(_group_0_binding_5_fs, 0).xy));
     float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
     vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e6);
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_5_fs, texel_1, 0);
+    ivec2 texel_2 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
+    vec4 _e16 = texelFetch(_group_0_binding_5_fs, texel_2, 0);
     return clamp(_e16.x, 0.0, 1.0);
 }
 
-vec3 velvet_low(vec3 n_4, vec3 v_1, vec3 l, vec3 h, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
-    float _e10 = weft_sheen_clamp_roughness(roughness_2);
-    float _e12 = weft_clamp_cos(dot(n_4, v_1));
-    float n_dot_l = clamp(dot(n_4, l), 0.0, 1.0);
-    vec4 _e17 = _group_1_binding_0_fs.scatter_color;
-    vec3 sheen_color = vec3(clamp((f0_ + max(_e17.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
-    float _e25 = weft_sheen_albedo_nearest(_e12, _e10);
-    float e_v = float(_e25);
+vec3 velvet_low(vec3 n_6, vec3 v_2, WeftLightGeometry lit, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
+    float _e9 = weft_sheen_clamp_roughness(roughness_2);
+    float n_dot_v = lit.n_dot_v;
+    float n_dot_l = lit.n_dot_l;
+    vec4 _e14 = _group_1_binding_0_fs.scatter_color;
+    vec3 sheen_color = vec3(clamp((f0_ + max(_e14.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
+    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    float e_v = float(_e22);
     float scaling_1 = clamp((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)), 0.0, 1.0);
-    float inv_r = (1.0 / _e10);
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
+    float inv_r = (1.0 / _e9);
+    float noh = lit.n_dot_h;
     float sin_pow = float(pow(max(((1.0 - noh) * (1.0 + noh)), 0.0), (0.5 * inv_r)));
     float d_1 = ((float((2.0 + inv_r)) * sin_pow) * 0.15915494);
-    float _e57 = weft_sheen_lambda_one_exp(_e12, _e10);
-    float _e60 = weft_sheen_lambda_one_exp(n_dot_l, _e10);
-    float g2_ = float((1.0 / ((1.0 + _e57) + _e60)));
-    float nv = max(float(_e12), 0.001);
+    float _e53 = weft_sheen_lambda_one_exp(n_dot_v, _e9);
+    float _e56 = weft_sheen_lambda_one_exp(n_dot_l, _e9);
+    float g2_ = float((1.0 / ((1.0 + _e53) + _e56)));
+    float nv = max(float(n_dot_v), 0.001);
     float v_n_dot_l = ((n_dot_l > 0.0) ? (g2_ / (4.0 * nv)) : 0.0);
     vec3 sheen_1 = vec3((sheen_color * (d_1 * v_n_dot_l)));
     vec3 base_direct = (diffuse_albedo * float(((scaling_1 * float(n_dot_l)) * 0.31830987)));
     vec3 direct = ((sheen_1 + base_direct) * light);
-    vec3 _e88 = weft_prefiltered_radiance(reflect(-(v_1), n_4), _e10);
-    vec3 env_sheen = ((_e88 * vec3((sheen_color * e_v))) * ao);
+    vec3 _e84 = weft_prefiltered_radiance(reflect(-(v_2), n_6), _e9);
+    vec3 env_sheen = ((_e84 * vec3((sheen_color * e_v))) * ao);
     return ((direct + ((ambient * diffuse_albedo) * float(scaling_1))) + env_sheen);
 }
 
@@ -256,42 +288,33 @@ void main() {
     float occlusion = _e29.x;
     float _e33 = _group_1_binding_0_fs.occlusion_strength;
     float ao_1 = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
-    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
+    WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_4 = _e39.v;
+    n = _e39.n;
     {
-        vec3 _e46 = n;
-        mat3x3 _e48 = weft_tangent_frame(_e46, in_2.world_tangent);
-        vec4 _e51 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_2 = _e51.xyz;
-        float _e55 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e56 = weft_unpack_normal(texel_2, _e55);
-        vec3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        vec4 _e45 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_3 = _e45.xyz;
+        vec3 _e47 = n;
+        float _e51 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e52 = weft_mapped_normal(_e47, in_2.world_tangent, texel_3, _e51);
+        n = _e52;
     }
-    vec3 _e58 = weft_main_light_direction();
-    vec3 _e60 = n;
-    vec3 _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    vec3 _e62 = n;
-    float _e64 = weft_clamp_cos(dot(_e62, _e42));
-    vec3 _e65 = n;
-    float n_dot_l_1 = clamp(dot(_e65, _e58), 0.0, 1.0);
-    vec3 _e68 = n;
-    float n_dot_h = clamp(dot(_e68, _e61), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e58, _e61), 0.0, 1.0);
+    vec3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_4);
+    float l_dot_h = clamp(dot(_e54.l, _e54.h), 0.0, 1.0);
     vec3 f0_1 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo_1 = (base * (1.0 - metallic));
-    vec3 _e79 = weft_main_light_radiance();
-    vec3 _e80 = n;
-    vec3 _e81 = weft_sh_irradiance(_e80);
-    vec3 ambient_1 = (_e81 * ao_1);
+    vec3 _e65 = weft_main_light_radiance();
+    vec3 _e66 = n;
+    vec3 _e67 = weft_sh_irradiance(_e66);
+    vec3 ambient_1 = (_e67 * ao_1);
     {
-        vec3 _e84 = n;
-        vec3 _e85 = velvet_low(_e84, _e42, _e58, _e61, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e79, ambient_1);
-        color = _e85;
+        vec3 _e70 = n;
+        vec3 _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1);
+        color = _e71;
     }
-    vec3 _e86 = color;
-    vec3 radiance = clamp(_e86, vec3(0.0), vec3(65504.0));
+    vec3 _e72 = color;
+    vec3 radiance = clamp(_e72, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;

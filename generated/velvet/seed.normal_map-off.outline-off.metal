@@ -38,6 +38,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad11[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -181,6 +194,27 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
+    metal::float3 n_2,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv,
     metal::float4 st
@@ -257,8 +291,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -274,7 +308,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> base_map [[texture(0)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(1)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     metal::float3 sheen = {};
@@ -295,40 +329,33 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e33));
-    metal::float3 _e42 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    metal::float3 _e46 = weft_main_light_direction(weft_frame);
-    metal::float3 _e48 = n;
-    metal::float3 _e49 = weft_safe_normalize(_e46 + _e42, _e48);
-    metal::float3 _e50 = n;
-    float _e52 = weft_clamp_cos(metal::dot(_e50, _e42));
-    metal::float3 _e53 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e53, _e46));
-    metal::float3 _e56 = n;
-    float n_dot_h_1 = metal::saturate(metal::dot(_e56, _e49));
-    float l_dot_h = metal::saturate(metal::dot(_e46, _e49));
+    WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_2 = _e39.v;
+    n = _e39.n;
+    metal::float3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_2, weft_frame);
+    float l_dot_h = metal::saturate(metal::dot(_e44.l, _e44.h));
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e67 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e68 = n;
-    metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
-    metal::float3 ambient = _e69 * ao;
+    metal::float3 _e55 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e56 = n;
+    metal::float3 _e57 = weft_sh_irradiance(_e56, weft_frame);
+    metal::float3 ambient = _e57 * ao;
     {
         {
-            float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-            metal::float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-            float _e74 = weft_fabric_d(n_dot_h_1);
-            metal::float3 specular = (_e74 * _e72) * _e73;
-            metal::float3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-            metal::float3 direct = ((_e77 + specular) * _e67) * n_dot_l_2;
-            metal::float4 _e83 = material.scatter_color;
-            float _e87 = material.scatter_scale;
-            metal::float3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-            color = (direct + (ambient * diffuse_albedo)) + _e88;
+            float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+            metal::float3 _e63 = weft_f_schlick(f0_1, l_dot_h);
+            float _e65 = weft_fabric_d(_e44.n_dot_h);
+            metal::float3 specular = (_e65 * _e62) * _e63;
+            metal::float3 _e68 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 direct = ((_e68 + specular) * _e55) * _e44.n_dot_l;
+            metal::float4 _e75 = material.scatter_color;
+            float _e81 = material.scatter_scale;
+            metal::float3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+            color = (direct + (ambient * diffuse_albedo)) + _e82;
         }
     }
-    metal::float3 _e92 = color;
-    metal::float3 radiance = metal::clamp(_e92, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e86 = color;
+    metal::float3 radiance = metal::clamp(_e86, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

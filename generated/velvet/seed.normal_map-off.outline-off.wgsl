@@ -28,6 +28,20 @@ struct WeftMaterial {
     outline_max_distance: f32,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -154,6 +168,19 @@ fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -221,40 +248,33 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e29.x;
     let _e33 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e33));
-    let _e42 = weft_view_direction(in_1.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
-    let _e46 = weft_main_light_direction();
-    let _e48 = n;
-    let _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    let _e50 = n;
-    let _e52 = weft_clamp_cos(dot(_e50, _e42));
-    let _e53 = n;
-    let n_dot_l_2 = saturate(dot(_e53, _e46));
-    let _e56 = n;
-    let n_dot_h_1 = saturate(dot(_e56, _e49));
-    let l_dot_h = saturate(dot(_e46, _e49));
+    let _e39 = weft_surface(in_1.world_position, in_1.world_normal);
+    let v_2 = _e39.v;
+    n = _e39.n;
+    let _e43 = n;
+    let _e44 = weft_main_light_geometry(_e43, v_2);
+    let l_dot_h = saturate(dot(_e44.l, _e44.h));
     let f0_1 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e67 = weft_main_light_radiance();
-    let _e68 = n;
-    let _e69 = weft_sh_irradiance(_e68);
-    let ambient = (_e69 * ao);
+    let _e55 = weft_main_light_radiance();
+    let _e56 = n;
+    let _e57 = weft_sh_irradiance(_e56);
+    let ambient = (_e57 * ao);
     {
         {
-            let _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-            let _e73 = weft_f_schlick(f0_1, l_dot_h);
-            let _e74 = weft_fabric_d(n_dot_h_1);
-            let specular = ((_e74 * _e72) * _e73);
-            let _e77 = weft_diffuse_lambert(diffuse_albedo);
-            let direct = (((_e77 + specular) * _e67) * n_dot_l_2);
-            let _e83 = material.scatter_color;
-            let _e87 = material.scatter_scale;
-            let _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-            color = ((direct + (ambient * diffuse_albedo)) + _e88);
+            let _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+            let _e63 = weft_f_schlick(f0_1, l_dot_h);
+            let _e65 = weft_fabric_d(_e44.n_dot_h);
+            let specular = ((_e65 * _e62) * _e63);
+            let _e68 = weft_diffuse_lambert(diffuse_albedo);
+            let direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
+            let _e75 = material.scatter_color;
+            let _e81 = material.scatter_scale;
+            let _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+            color = ((direct + (ambient * diffuse_albedo)) + _e82);
         }
     }
-    let _e92 = color;
-    let radiance = clamp(_e92, vec3(0f), vec3(65504f));
+    let _e86 = color;
+    let radiance = clamp(_e86, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

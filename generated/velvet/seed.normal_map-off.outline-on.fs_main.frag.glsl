@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -157,6 +169,19 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -200,41 +225,34 @@ void main() {
     float occlusion = _e29.x;
     float _e33 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
-    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
-    vec3 _e46 = weft_main_light_direction();
-    vec3 _e48 = n;
-    vec3 _e49 = weft_safe_normalize((_e46 + _e42), _e48);
-    vec3 _e50 = n;
-    float _e52 = weft_clamp_cos(dot(_e50, _e42));
-    vec3 _e53 = n;
-    float n_dot_l_2 = clamp(dot(_e53, _e46), 0.0, 1.0);
-    vec3 _e56 = n;
-    float n_dot_h_1 = clamp(dot(_e56, _e49), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e46, _e49), 0.0, 1.0);
+    WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_2 = _e39.v;
+    n = _e39.n;
+    vec3 _e43 = n;
+    WeftLightGeometry _e44 = weft_main_light_geometry(_e43, v_2);
+    float l_dot_h = clamp(dot(_e44.l, _e44.h), 0.0, 1.0);
     vec3 f0_1 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e67 = weft_main_light_radiance();
-    vec3 _e68 = n;
-    vec3 _e69 = weft_sh_irradiance(_e68);
-    vec3 ambient = (_e69 * ao);
+    vec3 _e55 = weft_main_light_radiance();
+    vec3 _e56 = n;
+    vec3 _e57 = weft_sh_irradiance(_e56);
+    vec3 ambient = (_e57 * ao);
     {
         {
-            float _e72 = weft_v_schlick_ggx(_e52, n_dot_l_2, roughness_2);
-            vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
-            float _e74 = weft_fabric_d(n_dot_h_1);
-            vec3 specular = ((_e74 * _e72) * _e73);
-            vec3 _e77 = weft_diffuse_lambert(diffuse_albedo);
-            vec3 direct = (((_e77 + specular) * _e67) * n_dot_l_2);
-            vec4 _e83 = _group_1_binding_0_fs.scatter_color;
-            float _e87 = _group_1_binding_0_fs.scatter_scale;
-            vec3 _e88 = weft_fabric_scatter(_e83.xyz, n_dot_l_2, _e52, _e87);
-            color = ((direct + (ambient * diffuse_albedo)) + _e88);
+            float _e62 = weft_v_schlick_ggx(_e44.n_dot_v, _e44.n_dot_l, roughness_2);
+            vec3 _e63 = weft_f_schlick(f0_1, l_dot_h);
+            float _e65 = weft_fabric_d(_e44.n_dot_h);
+            vec3 specular = ((_e65 * _e62) * _e63);
+            vec3 _e68 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 direct = (((_e68 + specular) * _e55) * _e44.n_dot_l);
+            vec4 _e75 = _group_1_binding_0_fs.scatter_color;
+            float _e81 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e82 = weft_fabric_scatter(_e75.xyz, _e44.n_dot_l, _e44.n_dot_v, _e81);
+            color = ((direct + (ambient * diffuse_albedo)) + _e82);
         }
     }
-    vec3 _e92 = color;
-    vec3 radiance = clamp(_e92, vec3(0.0), vec3(65504.0));
+    vec3 _e86 = color;
+    vec3 radiance = clamp(_e86, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -38,6 +38,19 @@ struct WeftMaterial {
     float outline_max_distance;
     char _pad11[8];
 };
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftLightGeometry {
+    metal::float3 l;
+    metal::packed_float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    char _pad6[4];
+};
 struct WeftVertexInput {
     metal::float3 position;
     metal::float3 normal;
@@ -190,27 +203,48 @@ metal::float3 weft_sh_irradiance(
     return metal::max(_e91, metal::float3(0.0));
 }
 
-metal::float3x3 weft_tangent_frame(
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
+    metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface {_e6, _e7};
+}
+
+WeftLightGeometry weft_main_light_geometry(
     metal::float3 n_3,
+    metal::float3 v_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_main_light_direction(weft_frame);
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_3 * metal::dot(n_3, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_3);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_3, t) * s_1;
-    return metal::float3x3(t, b_1, n_3);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
     metal::float3 texel,
     float strength
 ) {
-    metal::float3 v_1 = (texel * 2.0) - metal::float3(1.0);
-    return metal::float3(v_1.xy * strength, metal::max(v_1.z, 0.001));
+    metal::float3 v_2 = (texel * 2.0) - metal::float3(1.0);
+    return metal::float3(v_2.xy * strength, metal::max(v_2.z, 0.001));
 }
 
 metal::float3 weft_normal_from_tangent_space(
@@ -219,6 +253,18 @@ metal::float3 weft_normal_from_tangent_space(
 ) {
     metal::float3 _e4 = weft_safe_normalize(frame * n_ts, frame[2]);
     return _e4;
+}
+
+metal::float3 weft_mapped_normal(
+    metal::float3 n_5,
+    metal::float4 tangent_1,
+    metal::float3 texel_1,
+    float strength_1
+) {
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 metal::float2 weft_transform_uv(
@@ -258,7 +304,7 @@ metal::float3 weft_fabric_scatter(
 struct vs_mainInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
-    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float4 tangent_2 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
 struct vs_mainOutput {
@@ -273,7 +319,7 @@ vertex vs_mainOutput vs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
-    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
+    const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
     WeftVaryings out = {};
     metal::float4x4 model = weft_object.model;
     metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
@@ -297,8 +343,8 @@ vertex vs_mainOutput vs_main(
 
 
 struct fs_mainInput {
-    metal::float3 world_position_1 [[user(loc0), center_perspective]];
-    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
 };
@@ -315,7 +361,7 @@ fragment fs_mainOutput fs_main(
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(1)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(2)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_1, varyings_1.world_normal, varyings_1.world_tangent, varyings_1.uv0_ };
+    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
     metal::float3 color = {};
     metal::float3 sheen = {};
@@ -336,50 +382,41 @@ fragment fs_mainOutput fs_main(
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao = metal::saturate(metal::mix(1.0, occlusion, _e33));
-    metal::float3 _e42 = weft_view_direction(in_1.world_position, metal::float3(0.0, 0.0, 1.0), weft_frame);
-    metal::float3 _e44 = weft_safe_normalize(in_1.world_normal, _e42);
-    n = _e44;
+    WeftSurface _e39 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
+    metal::float3 v_3 = _e39.v;
+    n = _e39.n;
     {
-        metal::float3 _e46 = n;
-        metal::float3x3 _e48 = weft_tangent_frame(_e46, in_1.world_tangent);
-        metal::float4 _e51 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_1 = _e51.xyz;
-        float _e55 = material.normal_strength;
-        metal::float3 _e56 = weft_unpack_normal(texel_1, _e55);
-        metal::float3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        metal::float4 _e45 = normal_map.sample(material_sampler, _e5);
+        metal::float3 texel_2 = _e45.xyz;
+        metal::float3 _e47 = n;
+        float _e51 = material.normal_strength;
+        metal::float3 _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_2, _e51);
+        n = _e52;
     }
-    metal::float3 _e58 = weft_main_light_direction(weft_frame);
-    metal::float3 _e60 = n;
-    metal::float3 _e61 = weft_safe_normalize(_e58 + _e42, _e60);
-    metal::float3 _e62 = n;
-    float _e64 = weft_clamp_cos(metal::dot(_e62, _e42));
-    metal::float3 _e65 = n;
-    float n_dot_l_2 = metal::saturate(metal::dot(_e65, _e58));
-    metal::float3 _e68 = n;
-    float n_dot_h_1 = metal::saturate(metal::dot(_e68, _e61));
-    float l_dot_h = metal::saturate(metal::dot(_e58, _e61));
+    metal::float3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3, weft_frame);
+    float l_dot_h = metal::saturate(metal::dot(_e54.l, _e54.h));
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base, metallic);
     metal::float3 diffuse_albedo = base * (1.0 - metallic);
-    metal::float3 _e79 = weft_main_light_radiance(weft_frame);
-    metal::float3 _e80 = n;
-    metal::float3 _e81 = weft_sh_irradiance(_e80, weft_frame);
-    metal::float3 ambient = _e81 * ao;
+    metal::float3 _e65 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e66 = n;
+    metal::float3 _e67 = weft_sh_irradiance(_e66, weft_frame);
+    metal::float3 ambient = _e67 * ao;
     {
         {
-            float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-            metal::float3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-            float _e86 = weft_fabric_d(n_dot_h_1);
-            metal::float3 specular = (_e86 * _e84) * _e85;
-            metal::float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-            metal::float3 direct = ((_e89 + specular) * _e79) * n_dot_l_2;
-            metal::float4 _e95 = material.scatter_color;
-            float _e99 = material.scatter_scale;
-            metal::float3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-            color = (direct + (ambient * diffuse_albedo)) + _e100;
+            float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+            metal::float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            float _e75 = weft_fabric_d(_e54.n_dot_h);
+            metal::float3 specular = (_e75 * _e72) * _e73;
+            metal::float3 _e78 = weft_diffuse_lambert(diffuse_albedo);
+            metal::float3 direct = ((_e78 + specular) * _e65) * _e54.n_dot_l;
+            metal::float4 _e85 = material.scatter_color;
+            float _e91 = material.scatter_scale;
+            metal::float3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+            color = (direct + (ambient * diffuse_albedo)) + _e92;
         }
     }
-    metal::float3 _e104 = color;
-    metal::float3 radiance = metal::clamp(_e104, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e96 = color;
+    metal::float3 radiance = metal::clamp(_e96, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -33,6 +33,18 @@ struct WeftOutlineVertex {
 struct WeftOutlineVaryings {
     vec4 clip_position;
 };
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
 struct WeftVertexInput {
     vec3 position;
     vec3 normal;
@@ -166,26 +178,46 @@ vec3 weft_sh_irradiance(vec3 n_2) {
     return max(_e91, vec3(0.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
+    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+}
+
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_3);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_3, t) * s_1);
-    return mat3x3(t, b_1, n_3);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_1 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_1.xy * strength), max(v_1.z, 0.001));
+    vec3 v_2 = ((texel * 2.0) - vec3(1.0));
+    return vec3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -231,51 +263,42 @@ void main() {
     float occlusion = _e29.x;
     float _e33 = _group_1_binding_0_fs.occlusion_strength;
     float ao = clamp(mix(1.0, occlusion, _e33), 0.0, 1.0);
-    vec3 _e42 = weft_view_direction(in_2.world_position, vec3(0.0, 0.0, 1.0));
-    vec3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
+    WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    vec3 v_3 = _e39.v;
+    n = _e39.n;
     {
-        vec3 _e46 = n;
-        mat3x3 _e48 = weft_tangent_frame(_e46, in_2.world_tangent);
-        vec4 _e51 = texture(_group_1_binding_4_fs, vec2(_e5));
-        vec3 texel_1 = _e51.xyz;
-        float _e55 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e56 = weft_unpack_normal(texel_1, _e55);
-        vec3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        vec4 _e45 = texture(_group_1_binding_4_fs, vec2(_e5));
+        vec3 texel_2 = _e45.xyz;
+        vec3 _e47 = n;
+        float _e51 = _group_1_binding_0_fs.normal_strength;
+        vec3 _e52 = weft_mapped_normal(_e47, in_2.world_tangent, texel_2, _e51);
+        n = _e52;
     }
-    vec3 _e58 = weft_main_light_direction();
-    vec3 _e60 = n;
-    vec3 _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    vec3 _e62 = n;
-    float _e64 = weft_clamp_cos(dot(_e62, _e42));
-    vec3 _e65 = n;
-    float n_dot_l_2 = clamp(dot(_e65, _e58), 0.0, 1.0);
-    vec3 _e68 = n;
-    float n_dot_h_1 = clamp(dot(_e68, _e61), 0.0, 1.0);
-    float l_dot_h = clamp(dot(_e58, _e61), 0.0, 1.0);
+    vec3 _e53 = n;
+    WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3);
+    float l_dot_h = clamp(dot(_e54.l, _e54.h), 0.0, 1.0);
     vec3 f0_1 = mix(vec3(0.04), base, metallic);
     vec3 diffuse_albedo = (base * (1.0 - metallic));
-    vec3 _e79 = weft_main_light_radiance();
-    vec3 _e80 = n;
-    vec3 _e81 = weft_sh_irradiance(_e80);
-    vec3 ambient = (_e81 * ao);
+    vec3 _e65 = weft_main_light_radiance();
+    vec3 _e66 = n;
+    vec3 _e67 = weft_sh_irradiance(_e66);
+    vec3 ambient = (_e67 * ao);
     {
         {
-            float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-            vec3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-            float _e86 = weft_fabric_d(n_dot_h_1);
-            vec3 specular = ((_e86 * _e84) * _e85);
-            vec3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-            vec3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-            vec4 _e95 = _group_1_binding_0_fs.scatter_color;
-            float _e99 = _group_1_binding_0_fs.scatter_scale;
-            vec3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-            color = ((direct + (ambient * diffuse_albedo)) + _e100);
+            float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+            vec3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            float _e75 = weft_fabric_d(_e54.n_dot_h);
+            vec3 specular = ((_e75 * _e72) * _e73);
+            vec3 _e78 = weft_diffuse_lambert(diffuse_albedo);
+            vec3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+            vec4 _e85 = _group_1_binding_0_fs.scatter_color;
+            float _e91 = _group_1_binding_0_fs.scatter_scale;
+            vec3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+            color = ((direct + (ambient * diffuse_albedo)) + _e92);
         }
     }
-    vec3 _e104 = color;
-    vec3 radiance = clamp(_e104, vec3(0.0), vec3(65504.0));
+    vec3 _e96 = color;
+    vec3 radiance = clamp(_e96, vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha);
     return;
 }

@@ -46,6 +46,24 @@ struct WeftOutlineVaryings {
     float4 clip_position : SV_Position;
 };
 
+struct WeftSurface {
+    float3 v;
+    int _pad1_0;
+    float3 n;
+    int _end_pad_0;
+};
+
+struct WeftLightGeometry {
+    float3 l;
+    int _pad1_0;
+    float3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+    int _end_pad_0;
+};
+
 struct WeftVertexInput {
     float3 position : LOC0;
     float3 normal : LOC1;
@@ -92,16 +110,16 @@ struct VertexOutput_vs_outline {
 };
 
 struct VertexOutput_vs_main {
-    float3 world_position_1 : LOC0;
-    float3 world_normal : LOC1;
+    float3 world_position_2 : LOC0;
+    float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
     float4 clip_position_1 : SV_Position;
 };
 
 struct FragmentInput_fs_main {
-    float3 world_position_2 : LOC0;
-    float3 world_normal_1 : LOC1;
+    float3 world_position_3 : LOC0;
+    float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
     float4 clip_position_2 : SV_Position;
@@ -210,29 +228,72 @@ float3 weft_sh_irradiance(float3 n_2)
     return max(_e91, (0.0).xxx);
 }
 
-float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
+WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
+    WeftSurface ret = (WeftSurface)0;
+    ret.v = arg0;
+    ret.n = arg1;
+    return ret;
+}
+
+WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
+{
+    const float3 _e6 = weft_view_direction(world_position_1, float3(0.0, 0.0, 1.0));
+    const float3 _e7 = weft_safe_normalize(world_normal, _e6);
+    const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
+    return weftsurface;
+}
+
+WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5) {
+    WeftLightGeometry ret = (WeftLightGeometry)0;
+    ret.l = arg0;
+    ret.h = arg1;
+    ret.n_dot_v = arg2;
+    ret.n_dot_l = arg3;
+    ret.n_dot_h = arg4;
+    ret.v_dot_h = arg5;
+    return ret;
+}
+
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+{
+    const float3 _e2 = weft_main_light_direction();
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    return weftlightgeometry;
+}
+
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_3);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_3, t) * s_1);
-    return float3x3(t, b_1, n_3);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
 {
-    float3 v_1 = ((texel * 2.0) - (1.0).xxx);
-    return float3((v_1.xy * strength), max(v_1.z, 0.001));
+    float3 v_2 = ((texel * 2.0) - (1.0).xxx);
+    return float3((v_2.xy * strength), max(v_2.z, 0.001));
 }
 
 float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
 {
     const float3 _e4 = weft_safe_normalize(mul(n_ts, frame), frame[2]);
     return _e4;
+}
+
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
+{
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
+    const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
+    const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -337,7 +398,7 @@ VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_2, fragmentinput_fs_main.world_normal_1, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    WeftVaryings in_2 = { fragmentinput_fs_main.clip_position_2, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
     float3 n = (float3)0;
     float3 color = (float3)0;
     float3 sheen = (float3)0;
@@ -359,50 +420,41 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float occlusion = _e29.x;
     float _e33 = material.occlusion_strength;
     float ao = saturate(lerp(1.0, occlusion, _e33));
-    const float3 _e42 = weft_view_direction(in_2.world_position, float3(0.0, 0.0, 1.0));
-    const float3 _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
+    const WeftSurface _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    float3 v_3 = _e39.v;
+    n = _e39.n;
     {
-        float3 _e46 = n;
-        const float3x3 _e48 = weft_tangent_frame(_e46, in_2.world_tangent);
-        float4 _e51 = normal_map.Sample(material_sampler, _e5);
-        float3 texel_1 = _e51.xyz;
-        float _e55 = material.normal_strength;
-        const float3 _e56 = weft_unpack_normal(texel_1, _e55);
-        const float3 _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        float4 _e45 = normal_map.Sample(material_sampler, _e5);
+        float3 texel_2 = _e45.xyz;
+        float3 _e47 = n;
+        float _e51 = material.normal_strength;
+        const float3 _e52 = weft_mapped_normal(_e47, in_2.world_tangent, texel_2, _e51);
+        n = _e52;
     }
-    const float3 _e58 = weft_main_light_direction();
-    float3 _e60 = n;
-    const float3 _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    float3 _e62 = n;
-    const float _e64 = weft_clamp_cos(dot(_e62, _e42));
-    float3 _e65 = n;
-    float n_dot_l_2 = saturate(dot(_e65, _e58));
-    float3 _e68 = n;
-    float n_dot_h_1 = saturate(dot(_e68, _e61));
-    float l_dot_h = saturate(dot(_e58, _e61));
+    float3 _e53 = n;
+    const WeftLightGeometry _e54 = weft_main_light_geometry(_e53, v_3);
+    float l_dot_h = saturate(dot(_e54.l, _e54.h));
     float3 f0_1 = lerp((0.04).xxx, base, metallic);
     float3 diffuse_albedo = (base * (1.0 - metallic));
-    const float3 _e79 = weft_main_light_radiance();
-    float3 _e80 = n;
-    const float3 _e81 = weft_sh_irradiance(_e80);
-    float3 ambient = (_e81 * ao);
+    const float3 _e65 = weft_main_light_radiance();
+    float3 _e66 = n;
+    const float3 _e67 = weft_sh_irradiance(_e66);
+    float3 ambient = (_e67 * ao);
     {
         {
-            const float _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-            const float3 _e85 = weft_f_schlick(f0_1, l_dot_h);
-            const float _e86 = weft_fabric_d(n_dot_h_1);
-            float3 specular = ((_e86 * _e84) * _e85);
-            const float3 _e89 = weft_diffuse_lambert(diffuse_albedo);
-            float3 direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-            float4 _e95 = material.scatter_color;
-            float _e99 = material.scatter_scale;
-            const float3 _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-            color = ((direct + (ambient * diffuse_albedo)) + _e100);
+            const float _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+            const float3 _e73 = weft_f_schlick(f0_1, l_dot_h);
+            const float _e75 = weft_fabric_d(_e54.n_dot_h);
+            float3 specular = ((_e75 * _e72) * _e73);
+            const float3 _e78 = weft_diffuse_lambert(diffuse_albedo);
+            float3 direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+            float4 _e85 = material.scatter_color;
+            float _e91 = material.scatter_scale;
+            const float3 _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+            color = ((direct + (ambient * diffuse_albedo)) + _e92);
         }
     }
-    float3 _e104 = color;
-    float3 radiance = clamp(_e104, (0.0).xxx, (65504.0).xxx);
+    float3 _e96 = color;
+    float3 radiance = clamp(_e96, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -37,6 +37,20 @@ struct WeftOutlineVaryings {
     @builtin(position) clip_position: vec4<f32>,
 }
 
+struct WeftSurface {
+    v: vec3<f32>,
+    n: vec3<f32>,
+}
+
+struct WeftLightGeometry {
+    l: vec3<f32>,
+    h: vec3<f32>,
+    n_dot_v: f32,
+    n_dot_l: f32,
+    n_dot_h: f32,
+    v_dot_h: f32,
+}
+
 struct WeftVertexInput {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -172,26 +186,46 @@ fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     return max(_e91, vec3(0f));
 }
 
-fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
+    let _e6 = weft_view_direction(world_position_1, vec3<f32>(0f, 0f, 1f));
+    let _e7 = weft_safe_normalize(world_normal, _e6);
+    return WeftSurface(_e6, _e7);
+}
+
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+    let _e2 = weft_main_light_direction();
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+}
+
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_3 * dot(n_3, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_3);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_3, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_3);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_1 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_1.xy * strength), max(v_1.z, 0.001f));
+    let v_2 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_2.xy * strength), max(v_2.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     let _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
     return _e4;
+}
+
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
+    let _e5 = weft_unpack_normal(texel_1, strength_1);
+    let _e6 = weft_normal_from_tangent_space(_e4, _e5);
+    return _e6;
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -309,50 +343,41 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let occlusion = _e29.x;
     let _e33 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e33));
-    let _e42 = weft_view_direction(in_2.world_position, vec3<f32>(0f, 0f, 1f));
-    let _e44 = weft_safe_normalize(in_2.world_normal, _e42);
-    n = _e44;
+    let _e39 = weft_surface(in_2.world_position, in_2.world_normal);
+    let v_3 = _e39.v;
+    n = _e39.n;
     {
-        let _e46 = n;
-        let _e48 = weft_tangent_frame(_e46, in_2.world_tangent);
-        let _e51 = textureSample(normal_map, material_sampler, _e5);
-        let texel_1 = _e51.xyz;
-        let _e55 = material.normal_strength;
-        let _e56 = weft_unpack_normal(texel_1, _e55);
-        let _e57 = weft_normal_from_tangent_space(_e48, _e56);
-        n = _e57;
+        let _e45 = textureSample(normal_map, material_sampler, _e5);
+        let texel_2 = _e45.xyz;
+        let _e47 = n;
+        let _e51 = material.normal_strength;
+        let _e52 = weft_mapped_normal(_e47, in_2.world_tangent, texel_2, _e51);
+        n = _e52;
     }
-    let _e58 = weft_main_light_direction();
-    let _e60 = n;
-    let _e61 = weft_safe_normalize((_e58 + _e42), _e60);
-    let _e62 = n;
-    let _e64 = weft_clamp_cos(dot(_e62, _e42));
-    let _e65 = n;
-    let n_dot_l_2 = saturate(dot(_e65, _e58));
-    let _e68 = n;
-    let n_dot_h_1 = saturate(dot(_e68, _e61));
-    let l_dot_h = saturate(dot(_e58, _e61));
+    let _e53 = n;
+    let _e54 = weft_main_light_geometry(_e53, v_3);
+    let l_dot_h = saturate(dot(_e54.l, _e54.h));
     let f0_1 = mix(vec3(0.04f), base, metallic);
     let diffuse_albedo = (base * (1f - metallic));
-    let _e79 = weft_main_light_radiance();
-    let _e80 = n;
-    let _e81 = weft_sh_irradiance(_e80);
-    let ambient = (_e81 * ao);
+    let _e65 = weft_main_light_radiance();
+    let _e66 = n;
+    let _e67 = weft_sh_irradiance(_e66);
+    let ambient = (_e67 * ao);
     {
         {
-            let _e84 = weft_v_schlick_ggx(_e64, n_dot_l_2, roughness_2);
-            let _e85 = weft_f_schlick(f0_1, l_dot_h);
-            let _e86 = weft_fabric_d(n_dot_h_1);
-            let specular = ((_e86 * _e84) * _e85);
-            let _e89 = weft_diffuse_lambert(diffuse_albedo);
-            let direct = (((_e89 + specular) * _e79) * n_dot_l_2);
-            let _e95 = material.scatter_color;
-            let _e99 = material.scatter_scale;
-            let _e100 = weft_fabric_scatter(_e95.xyz, n_dot_l_2, _e64, _e99);
-            color = ((direct + (ambient * diffuse_albedo)) + _e100);
+            let _e72 = weft_v_schlick_ggx(_e54.n_dot_v, _e54.n_dot_l, roughness_2);
+            let _e73 = weft_f_schlick(f0_1, l_dot_h);
+            let _e75 = weft_fabric_d(_e54.n_dot_h);
+            let specular = ((_e75 * _e72) * _e73);
+            let _e78 = weft_diffuse_lambert(diffuse_albedo);
+            let direct = (((_e78 + specular) * _e65) * _e54.n_dot_l);
+            let _e85 = material.scatter_color;
+            let _e91 = material.scatter_scale;
+            let _e92 = weft_fabric_scatter(_e85.xyz, _e54.n_dot_l, _e54.n_dot_v, _e91);
+            color = ((direct + (ambient * diffuse_albedo)) + _e92);
         }
     }
-    let _e104 = color;
-    let radiance = clamp(_e104, vec3(0f), vec3(65504f));
+    let _e96 = color;
+    let radiance = clamp(_e96, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -37,8 +37,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // World: view, normal, light. Eye frame: world normals map back to object
     // space by the model's transpose (n_world ~ M^-T n_obj), directions by the
     // normal matrix's transpose (M^-1 = (M^-T)^T).
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    let n = surface.n;
     let l = weft_main_light_direction();
     let p = weft_safe_normalize(transpose(model3) * n, vec3<f32>(0.0, 0.0, 1.0));
     let v_eye = weft_safe_normalize(transpose(normal3) * v, vec3<f32>(0.0, 0.0, 1.0));

@@ -58,33 +58,31 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let shadow_mask = saturate(textureSample(shadow_mask_map, material_sampler, uv).r);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    let n = surface.n;
     // The seed's curvature (sec. 3.1): |fwidth(N)| / |fwidth(P)| x factor,
     // clamped to [0.01, 0.99] so the lookup stays off the table's edges.
     let dn = length(fwidth(n));
     let dp = length(fwidth(in.world_position));
     let estimated = select(0.0, dn / dp, dp > 1e-12);
     let curvature = clamp(max(material.curvature_factor, 0.0) * estimated, 0.01, 0.99);
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_l = saturate(dot(n, l));
+    let lit = weft_main_light_geometry(n, v);
 
     // ------------------------------------------------------------ SDF shadow
-    var bias = face_sdf_shadow(uv, face_light(l), material.face_soft_shadow) * shadow_mask;
+    var bias = face_sdf_shadow(uv, face_light(lit.l), material.face_soft_shadow) * shadow_mask;
     bias = clamp(bias, material.dark_bound, material.bright_bound);
     // The skin's table read with the shadow in place of N.L * 0.5 + 0.5.
     let falloff = max(table_skin_lut(vec2<f32>(bias, curvature)).rgb, vec3<f32>(0.0));
 
     // ------------------------------------------------------------ specular
-    let specular = skin_seed_specular(n, l, h, roughness * roughness, mask, material.lobe_weight) * f0 * n_dot_l;
+    let specular = skin_seed_specular(n, lit.l, lit.h, roughness * roughness, mask, material.lobe_weight) * f0 * lit.n_dot_l;
     let kd = vec3<f32>(1.0 - f0);
     let light = weft_main_light_radiance();
     let direct = (kd * weft_diffuse_lambert(albedo) * falloff + vec3<f32>(specular)) * light;
 
     // ------------------------------------------------------------ indirect
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let env_brdf = weft_env_brdf_from_lut(vec3<f32>(f0), weft_env_brdf_lut(n_dot_v, roughness));
+    let env_brdf = weft_env_brdf_from_lut(vec3<f32>(f0), weft_env_brdf_lut(lit.n_dot_v, roughness));
     let indirect_diffuse = weft_sh_irradiance(n) * kd * albedo;
     let indirect_specular = weft_prefiltered_radiance(reflect(-v, n), roughness) * env_brdf * mask;
     let color = direct + indirect_diffuse + indirect_specular;

@@ -1,4 +1,5 @@
 // @include "lib/sheen_lighting.wgsl"
+// @include "lib/surface.wgsl"
 //
 // fur: shell fur (seed 001 sec. 8, seed 003). Two passes: `skin` (opaque,
 // vs_skin/fs_skin) is the surface itself, the roots of the fur; `shells`
@@ -216,28 +217,26 @@ struct FurLight {
 
 fn fur_vertex_light(p: vec3<f32>, normal: vec3<f32>, strand: vec3<f32>) -> FurLight {
     let smoothness = saturate(material.smoothness);
-    let v = weft_view_direction(p, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(normal, v);
+    let surface = weft_surface(p, normal);
+    let v = surface.v;
+    let n = surface.n;
     let t = weft_safe_normalize(strand, n);
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
+    let lit = weft_main_light_geometry(n, v);
     let light = weft_main_light_radiance();
     let sheen_r = weft_sheen_clamp_roughness(1.0 - smoothness);
-    let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
-    let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
-    let sheen = weft_sheen_charlie(vec3<f32>(1.0), saturate(dot(n, h)), n_dot_v, n_dot_l, sheen_r) * light
+    let e_v = weft_sheen_albedo(lit.n_dot_v, sheen_r);
+    let e_l = weft_sheen_albedo(lit.n_dot_l, sheen_r);
+    let sheen = weft_sheen_charlie(vec3<f32>(1.0), lit.n_dot_h, lit.n_dot_v, lit.n_dot_l, sheen_r) * light
         + weft_prefiltered_radiance(reflect(-v, n), sheen_r) * e_v;
     let p_exp = fur_strand_exponent(smoothness);
-    let t_dot_l = clamp(dot(t, l), -1.0, 1.0);
+    let t_dot_l = clamp(dot(t, lit.l), -1.0, 1.0);
     let sin_l = sqrt(max(1.0 - t_dot_l * t_dot_l, 0.0));
     let cone_angle = acos(t_dot_l) + acos(clamp(dot(t, v), -1.0, 1.0)) - WEFT_PI;
-    let lobe = max(material.strand_strength, 0.0) * fur_strand_norm(p_exp) * sin_l * n_dot_l;
+    let lobe = max(material.strand_strength, 0.0) * fur_strand_norm(p_exp) * sin_l * lit.n_dot_l;
     var out: FurLight;
-    out.diffuse = vec4<f32>(light * (WEFT_INV_PI * n_dot_l), e_v);
+    out.diffuse = vec4<f32>(light * (WEFT_INV_PI * lit.n_dot_l), e_v);
     out.ambient = vec4<f32>(weft_sh_irradiance(n), e_l);
-    out.sheen = vec4<f32>(sheen, weft_pow5(1.0 - saturate(dot(l, h))));
+    out.sheen = vec4<f32>(sheen, weft_pow5(1.0 - saturate(dot(lit.l, lit.h))));
     out.strand = vec4<f32>(light * lobe, cone_angle);
     out.n_dot_v = saturate(dot(n, v));
     return out;
@@ -277,15 +276,12 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
         let smoothness = saturate(material.smoothness);
         let roughness = 1.0 - smoothness;
 
-        let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-        let n = weft_safe_normalize(in.world_normal, v);
+        let surface = weft_surface(in.world_position, in.world_normal);
+        let v = surface.v;
+        let n = surface.n;
         let t = weft_safe_normalize(in.strand, n);
-        let l = weft_main_light_direction();
-        let h = weft_safe_normalize(l + v, n);
-        let n_dot_v = weft_clamp_cos(dot(n, v));
-        let n_dot_l = saturate(dot(n, l));
-        let n_dot_h = saturate(dot(n, h));
-        let l_dot_h = saturate(dot(l, h));
+        let lit = weft_main_light_geometry(n, v);
+        let l_dot_h = saturate(dot(lit.l, lit.h));
 
         let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
         let diffuse_albedo = base * (1.0 - metallic);
@@ -294,22 +290,22 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
 
         if WEFT_TIER == TIER_SEED {
             // Seed 003: velvet's look on the shells (materials/velvet seed tier).
-            let visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+            let visibility = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness);
             let f = weft_f_schlick(f0, l_dot_h);
-            let specular = weft_fabric_d(n_dot_h) * visibility * f;
+            let specular = weft_fabric_d(lit.n_dot_h) * visibility * f;
             let diffuse = weft_diffuse_lambert(diffuse_albedo);
-            let scatter = weft_fabric_scatter(material.sheen_color.rgb, n_dot_l, n_dot_v, material.scatter_scale);
-            color = (diffuse + specular) * light * n_dot_l + ambient * diffuse_albedo + scatter;
+            let scatter = weft_fabric_scatter(material.sheen_color.rgb, lit.n_dot_l, lit.n_dot_v, material.scatter_scale);
+            color = (diffuse + specular) * light * lit.n_dot_l + ambient * diffuse_albedo + scatter;
         } else {
             let sheen_color = saturate(f0 + max(material.sheen_color.rgb, vec3<f32>(0.0)));
             let sheen_r = weft_sheen_clamp_roughness(roughness);
-            let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
-            let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
+            let e_v = weft_sheen_albedo(lit.n_dot_v, sheen_r);
+            let e_l = weft_sheen_albedo(lit.n_dot_l, sheen_r);
             let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
             let scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
-            let sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            let sheen = weft_sheen_charlie(sheen_color, lit.n_dot_h, lit.n_dot_v, lit.n_dot_l, sheen_r);
             let p = fur_strand_exponent(smoothness);
-            let kk = fur_kajiya_kay_cone(t, l, v);
+            let kk = fur_kajiya_kay_cone(t, lit.l, v);
             let strand = pow(kk.x, p) * kk.y;
             // The fibre's surface reflection (the R lobe of hair models):
             // Schlick Fresnel on the metallic-workflow F0, so dielectric
@@ -318,8 +314,8 @@ fn fur_shade(in: FurVaryings) -> vec4<f32> {
             // light is below the skin's horizon (n.l).
             let fresnel = weft_f_schlick(f0, l_dot_h);
             let strand_color = max(material.strand_color.rgb, vec3<f32>(0.0)) * fresnel;
-            let strand_lobe = strand_color * (max(material.strand_strength, 0.0) * fur_strand_norm(p) * strand * n_dot_l);
-            let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
+            let strand_lobe = strand_color * (max(material.strand_strength, 0.0) * fur_strand_norm(p) * strand * lit.n_dot_l);
+            let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * lit.n_dot_l);
             let direct = (sheen + base_direct + strand_lobe) * light;
             let env_sheen = weft_prefiltered_radiance(reflect(-v, n), sheen_r) * sheen_color * e_v;
             color = direct + ambient * diffuse_albedo * ambient_scaling + env_sheen;
@@ -337,9 +333,8 @@ fn fur_fade_n_dot_v(in: FurVaryings) -> f32 {
     if WEFT_TIER == TIER_FAST {
         return in.light_n_dot_v;
     }
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
-    return saturate(dot(n, v));
+    let surface = weft_surface(in.world_position, in.world_normal);
+    return saturate(dot(surface.n, surface.v));
 }
 
 @fragment

@@ -75,17 +75,15 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     let mesh = mesh_tex * gauze_grid_coverage(uv_s, grid_w, material.mesh_gap);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    // Double-sided: back faces shade with the flipped normal. A degenerate
-    // interpolated normal falls back to v (the surface faces the viewer).
-    let face = select(-1.0, 1.0, front_facing);
-    let n_geom = weft_safe_normalize(in.world_normal * face, v);
+    // Double-sided: back faces shade with the flipped normal (lib/surface.wgsl).
+    let surface = weft_surface_two_sided(in.world_position, in.world_normal, front_facing);
+    let v = surface.v;
+    let n_geom = surface.n;
     var n = n_geom;
     if NORMAL_MAP {
-        let frame0 = weft_tangent_frame(n_geom, in.world_tangent);
         let nuv = weft_transform_uv(in.uv0, material.normal_map_st);
         let texel = textureSample(normal_map, material_sampler, nuv).rgb;
-        n = weft_normal_from_tangent_space(frame0, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n_geom, in.world_tangent, texel, material.normal_strength);
     }
     // Tangent frame of the (mapped) shading normal; a zero or normal-parallel
     // tangent falls back to an arbitrary perpendicular inside weft_tangent_frame.
@@ -116,14 +114,7 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     let above_hard = select(0.0, 1.0, pattern > material.pattern_threshold);
     let above_aa = saturate((pattern - material.pattern_threshold) / max(pattern_w, 1e-4) + 0.5);
 
-    let l = weft_main_light_direction();
-    // l = -v: zero half vector, fall back to n (n.l <= 0 then, so it is
-    // multiplied out).
-    let h = weft_safe_normalize(l + v, n);
-    // View below the shading normal (normal maps) is treated as grazing.
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
     let alphas = weft_aniso_alpha_kulla(roughness, anisotropy);
     let light = weft_main_light_radiance();
 
@@ -140,9 +131,9 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
         var lobe: f32;
         if WEFT_TIER == TIER_REFERENCE {
             let vf = weft_aniso_to_frame(frame, v);
-            let lf = weft_aniso_to_frame(frame, l);
+            let lf = weft_aniso_to_frame(frame, lit.l);
             let vr = weft_aniso_to_frame(frame_rot, v);
-            let lr = weft_aniso_to_frame(frame_rot, l);
+            let lr = weft_aniso_to_frame(frame_rot, lit.l);
             // D V n.l of each frame (finite; 0 below the horizon).
             let lobe0 = weft_spec_ggx_aniso(vf, lf, alphas.x, alphas.y);
             let lobe1 = weft_spec_ggx_aniso(vr, lr, alphas.x, alphas.y);
@@ -151,32 +142,32 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
             // fast: one lobe, in the frame turned by the blended angle (the
             // same as the reference away from the threshold's AA band).
             let fb = weft_rotate_tangent_frame(frame, rot * above_aa);
-            lobe = weft_spec_ggx_aniso(weft_aniso_to_frame(fb, v), weft_aniso_to_frame(fb, l), alphas.x, alphas.y);
+            lobe = weft_spec_ggx_aniso(weft_aniso_to_frame(fb, v), weft_aniso_to_frame(fb, lit.l), alphas.x, alphas.y);
         }
-        let f = weft_f_schlick(f0, v_dot_h);
+        let f = weft_f_schlick(f0, lit.v_dot_h);
         // Tint <= 1 and F <= 1: directional albedo <= 1 (lib/anisotropic.wgsl).
         spec_direct = lobe * f * tint * noise * light;
         // Diffuse gets what the tinted lobe cannot reflect, 1 - tint F(n.v)
         // (not 1 - F(v.h): that lets the total albedo reach 1.8 at grazing
         // views with sharp lobes; this one measures <= 1.0007, see README).
-        diffuse_kd = vec3<f32>(1.0) - tint * weft_f_schlick(f0, n_dot_v);
-        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness)) * tint;
+        diffuse_kd = vec3<f32>(1.0) - tint * weft_f_schlick(f0, lit.n_dot_v);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, roughness)) * tint;
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
     } else {
         // The seed's D; the frame is chosen by the hard threshold.
         let fr = weft_rotate_tangent_frame(frame, rot * above_hard);
-        let hf = weft_aniso_to_frame(fr, h);
+        let hf = weft_aniso_to_frame(fr, lit.h);
         let d = weft_d_ggx_aniso_unnormalized(hf.x, hf.y, hf.z, alphas.x, alphas.y);
-        let vis = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+        let vis = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness);
         let gain = max(material.anisotropic_intensity, 0.0) * max(material.scatter_intensity, 0.0);
-        spec_direct = (d * vis * n_dot_l * gain * noise) * scatter * light;
+        spec_direct = (d * vis * lit.n_dot_l * gain * noise) * scatter * light;
         diffuse_kd = vec3<f32>(1.0);
-        env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
-        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
+        env_brdf = weft_env_brdf_approx(f0, lit.n_dot_v, roughness);
+        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, lit.n_dot_v, roughness);
     }
 
     // ------------------------------------------------------------ diffuse
-    let diffuse_direct = diffuse_kd * weft_diffuse_lambert(base) * light * n_dot_l;
+    let diffuse_direct = diffuse_kd * weft_diffuse_lambert(base) * light * lit.n_dot_l;
     let diffuse_indirect = weft_sh_irradiance(n) * ambient_kd * base;
 
     // ------------------------------------------------------------ environment specular

@@ -44,31 +44,27 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let ao = saturate(mix(1.0, occlusion, material.occlusion_strength));
 
     // ------------------------------------------------------------ geometry
-    // Fallbacks: +z view if the camera sits on the point, v for a degenerate
-    // interpolated normal, n for l = -v (zero half vector).
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    var n = weft_safe_normalize(in.world_normal, v);
+    // Fallbacks and clamps: lib/surface.wgsl.
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    var n = surface.n;
     if NORMAL_MAP {
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(weft_tangent_frame(n, in.world_tangent), weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n, in.world_tangent, texel, material.normal_strength);
     }
     // The flakes' tangent frame around the shading normal.
     let frame = weft_tangent_frame(n, in.world_tangent);
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
     let light = weft_main_light_radiance();
 
     // ------------------------------------------------------------ base
     let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
     let diffuse_albedo = base * (1.0 - metallic);
-    let visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
-    let env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+    let visibility = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, roughness);
+    let env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, roughness));
     let kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
-    let specular = weft_d_ggx_nh(n, h, roughness) * visibility * weft_f_schlick(f0, v_dot_h);
-    let direct = (kd * weft_diffuse_lambert(diffuse_albedo) + specular) * light * n_dot_l;
+    let specular = weft_d_ggx_nh(n, lit.h, roughness) * visibility * weft_f_schlick(f0, lit.v_dot_h);
+    let direct = (kd * weft_diffuse_lambert(diffuse_albedo) + specular) * light * lit.n_dot_l;
     let indirect = weft_prefiltered_radiance(reflect(-v, n), roughness) * env_brdf * ao
         + weft_sh_irradiance(n) * ao * kd * diffuse_albedo;
     var color = direct + indirect;
@@ -77,9 +73,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // Skipped at zero intensity or with the light below the horizon (a
     // uniform branch for the intensity; n.l per pixel).
     let intensity = max(material.flake_intensity, 0.0);
-    if intensity > 0.0 && n_dot_l > 0.0 {
+    if intensity > 0.0 && lit.n_dot_l > 0.0 {
         let r_f = clamp(material.flake_roughness, 0.05, 1.0);
-        let d = weft_d_ggx_nh(n, h, r_f);
+        let d = weft_d_ggx_nh(n, lit.h, r_f);
         let d_max = weft_d_ggx(1.0, r_f);
         var d_flakes: f32;
         if WEFT_TIER == TIER_SMOOTH {
@@ -87,7 +83,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         } else {
             // Tangent-space half vector: its slope h.xy addresses the
             // flakes' slope cells.
-            let slope = vec2<f32>(dot(frame[0], h), dot(frame[1], h));
+            let slope = vec2<f32>(dot(frame[0], lit.h), dot(frame[1], lit.h));
             let params = glitter_params();
             let ellipse = glint_ellipse(duv_dx, duv_dy);
             let screen_scale = clamp(material.flake_size, 1.0, 8.0);
@@ -97,8 +93,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             d_flakes = glint_ndf(params, grids, slope, d, d_max, WEFT_TIER == TIER_FAST);
         }
         let flake_f0 = saturate(material.flake_color.rgb);
-        let v_f = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, r_f);
-        color += intensity * d_flakes * v_f * weft_f_schlick(flake_f0, v_dot_h) * light * n_dot_l;
+        let v_f = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, r_f);
+        color += intensity * d_flakes * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l;
     }
 
     // Never negative, at most the fp16 maximum (Rgba16Float targets).

@@ -24,7 +24,7 @@
 //               shifted highlight, over Lambert diffuse and SH ambient.
 
 // Cells across the fibre in the h average (equal cells in γ_o). The
-// reference's count is converged (tests/hair_furnace.rs: within 0.6 % of
+// reference's count is converged (tests/physics/hair_furnace.rs: within 0.6 % of
 // 2048 intervals; 32 cells are 3.4 % off at β_n 0.15); fast's keeps a
 // margin under the ladder's worst FLIP 0.05 (10 cells: 0.045, 12: 0.036).
 const HAIR_REFERENCE_CELLS: u32 = 64u;
@@ -43,8 +43,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let alpha = saturate(base_rgba.a);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    let n = surface.n;
     let frame = weft_tangent_frame(n, in.world_tangent);
     let strand = hair_strand(frame, in.uv0);
     let shift = hair_jitter(in.uv0);

@@ -34,23 +34,18 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let offsets = saturate(textureSample(offset_map, material_sampler, weft_transform_uv(in.uv0, material.offset_map_st)).rg);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let geometric_n = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    let geometric_n = surface.n;
     var n = geometric_n;
     if NORMAL_MAP {
-        let frame = weft_tangent_frame(geometric_n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(frame, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(geometric_n, in.world_tangent, texel, material.normal_strength);
     }
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let n_dot_h = saturate(dot(n, h));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
 
     // The angle the film colour follows (seed 5.2.7).
-    var film_cos = n_dot_v;
+    var film_cos = lit.n_dot_v;
     if ANISO_COLOR != ANISO_COLOR_OFF {
         let frame = weft_tangent_frame(geometric_n, in.world_tangent);
         var direction_ts = vec2<f32>(1.0, 0.0);
@@ -75,8 +70,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     }
     let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), surface_base, metallic);
     let diffuse_albedo = surface_base * (1.0 - metallic);
-    let split_sum = weft_env_brdf_lut(n_dot_v, roughness);
-    var f_light = weft_f_schlick(f0, v_dot_h);
+    let split_sum = weft_env_brdf_lut(lit.n_dot_v, roughness);
+    var f_light = weft_f_schlick(f0, lit.v_dot_h);
     // Directional albedo of the specular lobe: Schlick's split sum f0 A + B.
     var e_spec = weft_env_brdf_from_lut(f0, split_sum);
     if WEFT_TIER != TIER_SEED {
@@ -85,7 +80,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let strength = saturate(material.film_strength);
         // The light's film angle is v.h; with anisotropic colour the film
         // follows the chosen angle for the light too.
-        var light_cos = v_dot_h;
+        var light_cos = lit.v_dot_h;
         if ANISO_COLOR != ANISO_COLOR_OFF {
             light_cos = film_cos;
         }
@@ -105,10 +100,10 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 
     // ------------------------------------------------------------ lighting
     let kd = max(vec3<f32>(1.0) - e_spec, vec3<f32>(0.0));
-    let visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
-    let specular = weft_d_ggx_nh(n, h, roughness) * visibility * f_light;
+    let visibility = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, roughness);
+    let specular = weft_d_ggx_nh(n, lit.h, roughness) * visibility * f_light;
     let diffuse = kd * weft_diffuse_lambert(diffuse_albedo);
-    let direct = (diffuse + specular) * weft_main_light_radiance() * n_dot_l;
+    let direct = (diffuse + specular) * weft_main_light_radiance() * lit.n_dot_l;
     let indirect_specular = weft_prefiltered_radiance(reflect(-v, n), roughness) * e_spec * ao;
     let indirect_diffuse = weft_sh_irradiance(n) * ao * kd * diffuse_albedo;
     let color = direct + indirect_specular + indirect_diffuse;

@@ -1,7 +1,7 @@
 // Eye geometry (materials/eye): where the view ray through a point of the
 // eyeball meets the iris, by refraction through a spherical cornea (the
 // reference) or by the parallax approximation (fast, and the seed's offset).
-// Pure functions of their arguments, no bindings: tests/eye.rs evaluates them
+// Pure functions of their arguments, no bindings: tests/physics/eye.rs evaluates them
 // on the GPU with a compute kernel and checks them against an f64 ray trace.
 //
 // The eye's frame: the eyeball is the unit sphere at the origin, +z is the
@@ -104,7 +104,7 @@ fn eye_refracted(p: vec3<f32>, v: vec3<f32>, c: EyeCornea, ior: f32) -> EyeLooku
 // the seed's offset (view xy times a depth) with the depth the reference's
 // geometry gives, plus the cornea's magnification (the m.xy term, zero on
 // the axis). Exact at normal incidence on the axis; the error grows with the
-// angle (tests/eye.rs). Outside the limbus: the sclera at p.
+// angle (tests/physics/eye.rs). Outside the limbus: the sclera at p.
 fn eye_parallax(p: vec3<f32>, v: vec3<f32>, c: EyeCornea, ior: f32) -> EyeLookup {
     let limbus = sqrt(1.0 - c.z_iris * c.z_iris);
     let rho = length(p.xy);

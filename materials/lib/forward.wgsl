@@ -1,4 +1,4 @@
-// @include "lib/lighting.wgsl"
+// @include "lib/surface.wgsl"
 //
 // weft forward library: the standard vertex stage (vs_main) and the
 // fragment-side helpers that go with its varyings.
@@ -78,6 +78,13 @@ fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
 // normal if the transformed vector vanishes.
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
     return weft_safe_normalize(frame * n_ts, frame[2]);
+}
+
+// A normal map's normal: the texel (linear rgb in [0, 1], scaled by
+// `strength`) in the tangent frame of the unit normal n and the interpolated
+// tangent.
+fn weft_mapped_normal(n: vec3<f32>, tangent: vec4<f32>, texel: vec3<f32>, strength: f32) -> vec3<f32> {
+    return weft_normal_from_tangent_space(weft_tangent_frame(n, tangent), weft_unpack_normal(texel, strength));
 }
 
 // Unity-style texture transform: uv * tiling + offset (st = xy tiling, zw offset).

@@ -120,7 +120,7 @@ fn weft_hair_i0(x: f32) -> f32 {
 // x - ½ log(2πx) + log(1 + 1/(8x) + 9/(128x²)) (relative error of I_0 below
 // 5e-5 at x = 12, less beyond). pbrt-v3's LogI0 adds 1/(16x) instead of
 // log(1 + 1/(8x)) (the term inside the ½): 0.5 % low at x = 12, found by
-// tests/hair_furnace.rs's f64 comparison.
+// tests/physics/hair_furnace.rs's f64 comparison.
 fn weft_hair_log_i0(x: f32) -> f32 {
     if x > 12.0 {
         let r = 1.0 / x;

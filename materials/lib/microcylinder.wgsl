@@ -6,7 +6,7 @@
 // ACM TOG 32(2):14 (seed 000; research notes sec. 1).
 //
 // PURE functions: every input is an argument; nothing here reads `material`,
-// `weft_frame` or any binding, so tests/microcylinder.rs evaluates exactly
+// `weft_frame` or any binding, so tests/physics/microcylinder.rs evaluates exactly
 // these functions in a compute shader and compares them with an f64 model.
 // Needs WEFT_PI (engine interface) and weft_f_dielectric / weft_pow5 (brdf.wgsl).
 //
@@ -34,7 +34,7 @@
 //   L_r = L_i * (a1 S_1 + a2 S_2) / Q,   Q = a1 P_1 + a2 P_2 + (1 - a1 - a2)(n.w_i)
 // i.e. mc_combine returns the BRDF times n.w_i. Q depends on both directions
 // through P, but its gap term only on w_i: the model is NOT reciprocal
-// (measured in tests/microcylinder.rs, documented in the material README).
+// (measured in tests/physics/microcylinder.rs, documented in the material README).
 //
 // Tiers:
 //   reference: angles with atan2 (well conditioned near +-pi/2 and 0),

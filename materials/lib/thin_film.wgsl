@@ -1,6 +1,6 @@
 // Thin-film interference (iridescence): the reflectance of the stack
 // outside (air, IOR 1) | film (IOR n2, thickness d) | base, as linear RGB.
-// Used by materials/laser; measured by tests/laser_film.rs and the laser
+// Used by materials/laser; measured by tests/physics/laser_film.rs and the laser
 // film report (weft-golden's film module evaluates these functions on the GPU).
 //
 // Two evaluations of the same physics:
@@ -31,7 +31,7 @@ const WEFT_FILM_PI: f32 = 3.14159265358979;
 // phase step 4 pi n d cos / lambda^2 x 4 nm stays under 0.7 rad for the
 // thickest film the laser material accepts (IOR 2, 1000 nm); against 201
 // samples the colours differ by at most 0.02 CIELAB Delta E 2000
-// (tests/laser_film.rs).
+// (tests/physics/laser_film.rs).
 const WEFT_FILM_SAMPLES: u32 = 101u;
 const WEFT_FILM_LAMBDA_MIN: f32 = 380.0;
 const WEFT_FILM_LAMBDA_MAX: f32 = 780.0;

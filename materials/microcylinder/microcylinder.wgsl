@@ -70,11 +70,11 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let brightness = max(material.brightness, 0.0);
 
     // ------------------------------------------------------------ geometry
-    // v falls back to +z if the camera sits on the point; a degenerate normal
-    // falls back to v. weft_tangent_frame handles zero-length and
-    // non-orthogonal tangents (any perpendicular is used).
-    let v_raw = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v_raw);
+    // Fallbacks: lib/surface.wgsl. weft_tangent_frame handles zero-length
+    // and non-orthogonal tangents (any perpendicular is used).
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v_raw = surface.v;
+    let n = surface.n;
     let frame = weft_tangent_frame(n, in.world_tangent);
     let t = frame[0];
     let b = frame[1];

@@ -110,22 +110,16 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let noise = 0.5 + 0.5 * saturate(textureSample(noise_map, material_sampler, nuv).r);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    var n = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    var n = surface.n;
     if NORMAL_MAP {
-        let frame0 = weft_tangent_frame(n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(frame0, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n, in.world_tangent, texel, material.normal_strength);
     }
     // Frame of the shading normal (zero / parallel tangents fall back inside).
     let frame = weft_tangent_frame(n, in.world_tangent);
-    let l = weft_main_light_direction();
-    // l = -v: zero half vector, fall back to n (then n.l <= 0, multiplied out).
-    let h = weft_safe_normalize(l + v, n);
-    // Views below the shading normal are treated as grazing (1e-4).
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
     let light = weft_main_light_radiance();
 
     var layers: SatinLayers;
@@ -137,10 +131,10 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // Colours in their physical range (a negative colour would subtract light).
     let c1 = saturate(material.specular_color.rgb);
     let c2 = saturate(material.second_specular_color.rgb);
-    let f = weft_f_schlick(f0, v_dot_h);
+    let f = weft_f_schlick(f0, lit.v_dot_h);
 
     if WEFT_TIER == TIER_LOW {
-        let color = satin_low(frame, n, v, l, h, f0, diffuse_albedo, roughness, roughness2, anisotropy, c1, c2, noise, ao, light);
+        let color = satin_low(frame, n, v, lit, f0, diffuse_albedo, roughness, roughness2, anisotropy, c1, c2, noise, ao, light);
         return vec4<f32>(clamp(color, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF)), alpha);
     }
 
@@ -157,7 +151,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let w1 = t1 * norm;
         let w2 = t2 * norm;
         let vf = weft_aniso_to_frame(frame, v);
-        let lf = weft_aniso_to_frame(frame, l);
+        let lf = weft_aniso_to_frame(frame, lit.l);
         let lobe1 = satin_lobe_reference(vf, lf, layers.narrow);
         let lobe2 = satin_lobe_reference(vf, lf, layers.wide);
         // The lobes already include n.l.
@@ -166,11 +160,11 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // (1 - F(v.h)) of the standard material lets the sum reach 1.8 at
         // grazing views with sharp lobes; with F(n.v) the measured maximum of
         // the total directional albedo is 1.0007 (README, "Energy").
-        diffuse_kd = max(vec3<f32>(1.0) - (w1 + w2) * weft_f_schlick(f0, n_dot_v), vec3<f32>(0.0));
+        diffuse_kd = max(vec3<f32>(1.0) - (w1 + w2) * weft_f_schlick(f0, lit.n_dot_v), vec3<f32>(0.0));
         // Environment: each layer's split-sum albedo (isotropic LUT at its
         // roughness) times its own prefiltered lookup.
-        let e1 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness)) * w1;
-        let e2 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness2)) * w2;
+        let e1 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, roughness)) * w1;
+        let e2 = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, roughness2)) * w2;
         if WEFT_TIER == TIER_REFERENCE {
             indirect_specular = (satin_env(frame, v, anisotropy, roughness) * e1
                 + satin_env(frame, v, anisotropy, roughness2) * e2) * noise;
@@ -182,16 +176,16 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         }
         ambient_kd = max(vec3<f32>(1.0) - e1 - e2, vec3<f32>(0.0));
     } else {
-        let hf = weft_aniso_to_frame(frame, h);
+        let hf = weft_aniso_to_frame(frame, lit.h);
         let d1 = satin_d_seed(hf, layers.narrow);
         let d2 = satin_d_seed(hf, layers.wide) / width;
-        let vis1 = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
-        let vis2 = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness2);
+        let vis1 = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness);
+        let vis2 = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness2);
         // Seed 7.2.3: the colours already carry the light.
         let s1 = satin_light_blend(c1, light);
         let s2 = satin_light_blend(c2, light);
         let mag = max(material.specular_intensity, 0.0);
-        specular = (d1 * vis1 * s1 + d2 * vis2 * s2) * (mag * noise * n_dot_l);
+        specular = (d1 * vis1 * s1 + d2 * vis2 * s2) * (mag * noise * lit.n_dot_l);
         diffuse_kd = vec3<f32>(1.0) - f;
         // The standard seed tier's environment, along the bent reflection.
         var bent = weft_aniso_bent_normal(frame, v, anisotropy, roughness);
@@ -199,13 +193,13 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             // Both directions at once: close to isotropic, use the normal.
             bent = n;
         }
-        let env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
+        let env_brdf = weft_env_brdf_approx(f0, lit.n_dot_v, roughness);
         indirect_specular = weft_prefiltered_radiance(reflect(-v, bent), roughness) * env_brdf * noise;
-        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
+        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, lit.n_dot_v, roughness);
     }
 
     // ------------------------------------------------------------ combine
-    let direct = diffuse_kd * weft_diffuse_lambert(diffuse_albedo) * light * n_dot_l + specular;
+    let direct = diffuse_kd * weft_diffuse_lambert(diffuse_albedo) * light * lit.n_dot_l + specular;
     let indirect = indirect_specular * ao + weft_sh_irradiance(n) * ao * ambient_kd * diffuse_albedo;
     // Never negative, at most the fp16 maximum (a sharp lobe at grazing under
     // a bright light can exceed it).
@@ -231,13 +225,13 @@ fn satin_lobe_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>,
 }
 
 fn satin_low(
-    frame: mat3x3<f32>, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, h: vec3<f32>,
+    frame: mat3x3<f32>, n: vec3<f32>, v: vec3<f32>, lit: WeftLightGeometry,
     f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness: f32, roughness2: f32,
     anisotropy: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>,
 ) -> vec3<f32> {
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = weft_half(saturate(dot(n, l)));
-    let v_dot_h = weft_half(saturate(dot(v, h)));
+    let n_dot_v = lit.n_dot_v;
+    let n_dot_l = weft_half(lit.n_dot_l);
+    let v_dot_h = weft_half(lit.v_dot_h);
     let f0 = vec3<weft_half>(f0_in);
     let c1 = vec3<weft_half>(c1_in);
     let c2 = vec3<weft_half>(c2_in);
@@ -250,8 +244,8 @@ fn satin_low(
     let r_low = max(roughness, WEFT_MIN_ROUGHNESS_HALF);
     let r2_low = max(roughness2, WEFT_MIN_ROUGHNESS_HALF);
     let vf = vec3<weft_half>(weft_aniso_to_frame(frame, v));
-    let lf = vec3<weft_half>(weft_aniso_to_frame(frame, l));
-    let hf = vec3<weft_half>(weft_aniso_to_frame(frame, h));
+    let lf = vec3<weft_half>(weft_aniso_to_frame(frame, lit.l));
+    let hf = vec3<weft_half>(weft_aniso_to_frame(frame, lit.h));
     let lobe1 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r_low, anisotropy));
     let lobe2 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r2_low, anisotropy));
     let f = weft_half_f_schlick(f0, v_dot_h);

@@ -78,8 +78,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let mask = saturate(textureSample(specular_mask, material_sampler, uv).r);
 
     // ------------------------------------------------------------ geometry
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n_geom = weft_safe_normalize(in.world_normal, v);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    let n_geom = surface.n;
     // Curvature 1/r before any branch (derivatives need uniform control
     // flow): the seed's |fwidth(N)| / |fwidth(P)| x factor, or the map.
     let dn = length(fwidth(n_geom));
@@ -93,18 +94,13 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     }
     var n = n_geom;
     if NORMAL_MAP {
-        let frame = weft_tangent_frame(n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(frame, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n, in.world_tangent, texel, material.normal_strength);
     }
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
     // The table's u: signed N.L mapped to [0, 1], clamped to the artist's
     // bounds (the seed's _SkinSSSDarkBound / _SkinSSSBrightBound).
-    let u = clamp(dot(n, l) * 0.5 + 0.5, material.dark_bound, material.bright_bound);
+    let u = clamp(dot(n, lit.l) * 0.5 + 0.5, material.dark_bound, material.bright_bound);
 
     // ------------------------------------------------------------ diffuse falloff
     var falloff: vec3<f32>;
@@ -118,15 +114,15 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     falloff = max(falloff, vec3<f32>(0.0));
 
     // ------------------------------------------------------------ specular
-    let env_brdf = weft_env_brdf_from_lut(vec3<f32>(f0), weft_env_brdf_lut(n_dot_v, roughness));
+    let env_brdf = weft_env_brdf_from_lut(vec3<f32>(f0), weft_env_brdf_lut(lit.n_dot_v, roughness));
     var specular: f32;
     var kd: vec3<f32>;
     if WEFT_TIER == TIER_SEED {
         let linear_roughness = roughness * roughness;
-        specular = skin_seed_specular(n, l, h, linear_roughness, mask, material.lobe_weight) * f0 * n_dot_l;
+        specular = skin_seed_specular(n, lit.l, lit.h, linear_roughness, mask, material.lobe_weight) * f0 * lit.n_dot_l;
         kd = vec3<f32>(1.0 - f0);
     } else {
-        specular = skin_dual_ggx(n, h, n_dot_v, n_dot_l, v_dot_h, roughness, material.lobe_weight, f0) * n_dot_l * mask;
+        specular = skin_dual_ggx(n, lit.h, lit.n_dot_v, lit.n_dot_l, lit.v_dot_h, roughness, material.lobe_weight, f0) * lit.n_dot_l * mask;
         // Diffuse gets what the specular layer did not reflect (1 - E).
         kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
     }

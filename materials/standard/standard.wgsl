@@ -50,35 +50,22 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     let specular_strength = max(material.specular_strength, 0.0);
 
     // ------------------------------------------------------------ geometry
-    // v falls back to +z if the camera sits on the point; a degenerate
-    // interpolated normal falls back to v (the surface then faces the viewer).
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    // A back face (drawn only when an instance turns culling off: glTF
-    // doubleSided) shades with the flipped normal, as glTF asks.
-    let geometric_normal = select(-in.world_normal, in.world_normal, front_facing);
-    var n = weft_safe_normalize(geometric_normal, v);
+    // Back faces are drawn only when an instance turns culling off (glTF
+    // doubleSided); they shade with the flipped normal (lib/surface.wgsl).
+    let surface = weft_surface_two_sided(in.world_position, in.world_normal, front_facing);
+    let v = surface.v;
+    var n = surface.n;
     if NORMAL_MAP {
-        let frame = weft_tangent_frame(n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(frame, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n, in.world_tangent, texel, material.normal_strength);
     }
-    let l = weft_main_light_direction();
-    // l = -v gives a zero half vector: fall back to n (n.l <= 0 there or at
-    // grazing, so the direct term is multiplied by 0 anyway).
-    let h = weft_safe_normalize(l + v, n);
-    // Views below the shading normal (normal maps, interpolation) are treated
-    // as grazing: n.v floored at 1e-4 rather than dropped.
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    // Light below the horizon contributes nothing: n.l = 0 multiplies it out.
-    let n_dot_l = saturate(dot(n, l));
-    let n_dot_h = saturate(dot(n, h));
-    let v_dot_h = saturate(dot(v, h));
+    let lit = weft_main_light_geometry(n, v);
 
     let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
     let diffuse_albedo = base * (1.0 - metallic);
 
     if WEFT_TIER == TIER_LOW {
-        let color = standard_low(n, v, l, h, f0, diffuse_albedo, roughness, ao, specular_strength);
+        let color = standard_low(n, v, lit, f0, diffuse_albedo, roughness, ao, specular_strength);
         let radiance = clamp(standard_sphere_map(color, n, in.world_position) + emitted, vec3<f32>(0.0), vec3<f32>(WEFT_MAX_HALF));
         standard_alpha_test(alpha);
         return vec4<f32>(radiance, alpha);
@@ -91,8 +78,8 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     // Weight of the direct diffuse lobe.
     var direct_kd: vec3<f32>;
     if WEFT_TIER == TIER_REFERENCE {
-        visibility = weft_v_smith_ggx_correlated(n_dot_v, n_dot_l, roughness);
-        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(n_dot_v, roughness));
+        visibility = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, roughness);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, roughness));
         // Diffuse ambient gets the energy the specular lobe did not reflect
         // (Filament: Fd * (1 - E)); E <= 1, the max() is for interpolation.
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
@@ -102,17 +89,17 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
         // E + (1 - E) rho <= 1.
         direct_kd = ambient_kd;
     } else if WEFT_TIER == TIER_SEED {
-        visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
-        env_brdf = weft_env_brdf_approx(f0, n_dot_v, roughness);
-        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, n_dot_v, roughness);
-        direct_kd = vec3<f32>(1.0) - weft_f_schlick(f0, v_dot_h);
+        visibility = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness);
+        env_brdf = weft_env_brdf_approx(f0, lit.n_dot_v, roughness);
+        ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, lit.n_dot_v, roughness);
+        direct_kd = vec3<f32>(1.0) - weft_f_schlick(f0, lit.v_dot_h);
     } else {
         // The reference without its square roots: Hammon's linear form of
         // the correlated visibility refined by one Newton step (Hammon's
         // alone is up to 29 % low at grazing light); the same split-sum table
         // read at its nearest texel, and 1 - E diffuse weighting.
-        visibility = weft_v_smith_ggx_correlated_newton(n_dot_v, n_dot_l, roughness);
-        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut_nearest(n_dot_v, roughness));
+        visibility = weft_v_smith_ggx_correlated_newton(lit.n_dot_v, lit.n_dot_l, roughness);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut_nearest(lit.n_dot_v, roughness));
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
         direct_kd = ambient_kd;
     }
@@ -128,13 +115,13 @@ fn fs_main(in: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @loca
     var specular = vec3<f32>(0.0);
     var indirect_specular = vec3<f32>(0.0);
     if specular_strength > 0.0 {
-        let f = weft_f_schlick(f0, v_dot_h);
-        specular = weft_d_ggx_nh(n, h, roughness) * visibility * f * specular_strength;
+        let f = weft_f_schlick(f0, lit.v_dot_h);
+        specular = weft_d_ggx_nh(n, lit.h, roughness) * visibility * f * specular_strength;
         let prefiltered = weft_prefiltered_radiance(reflect(-v, n), roughness);
         indirect_specular = prefiltered * env_brdf * (ao * specular_strength);
     }
     let diffuse = direct_kd * weft_diffuse_lambert(diffuse_albedo);
-    let direct = (diffuse + specular) * weft_main_light_radiance() * n_dot_l;
+    let direct = (diffuse + specular) * weft_main_light_radiance() * lit.n_dot_l;
 
     // ------------------------------------------------------------ indirect
     // SH already returns E / pi.
@@ -204,15 +191,15 @@ fn standard_sphere_map(color_in: vec3<f32>, n: vec3<f32>, world_position: vec3<f
 // dimensionless and bounded (lib/half.wgsl), so a bright light cannot
 // overflow them. Roughness is floored at 0.089 (f16's GGX peak limit).
 fn standard_low(
-    n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, h: vec3<f32>,
+    n: vec3<f32>, v: vec3<f32>, lit: WeftLightGeometry,
     f0_in: vec3<f32>, diffuse_albedo: vec3<f32>,
     roughness_in: f32, ao: f32, specular_strength: f32,
 ) -> vec3<f32> {
-    let n_dot_v = weft_half(weft_clamp_cos(dot(n, v)));
-    let n_dot_l = weft_half(saturate(dot(n, l)));
-    let n_dot_h = weft_half(saturate(dot(n, h)));
-    let v_dot_h = weft_half(saturate(dot(v, h)));
-    let n_cross_h = cross(n, h);
+    let n_dot_v = weft_half(lit.n_dot_v);
+    let n_dot_l = weft_half(lit.n_dot_l);
+    let n_dot_h = weft_half(lit.n_dot_h);
+    let v_dot_h = weft_half(lit.v_dot_h);
+    let n_cross_h = cross(n, lit.h);
     let one_minus_n_dot_h2 = weft_half(dot(n_cross_h, n_cross_h));
     let roughness = weft_half(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha = roughness * roughness;
@@ -220,7 +207,7 @@ fn standard_low(
     // The split-sum table at its nearest texel, as fast reads it (f32 fetch,
     // a dimensionless pair): Karis's analytic fit in its place was measured
     // at worst FLIP 0.25 (README).
-    let lut = weft_env_brdf_lut_nearest(weft_clamp_cos(dot(n, v)), roughness_in);
+    let lut = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
     let env_brdf = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, lut));
     let kd = max(vec3<weft_half>(1.0) - env_brdf, vec3<weft_half>(0.0));
     // Direct diffuse BRDF times n.l: kd / pi n.l (half), times the albedo.

@@ -54,23 +54,16 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     let ao = saturate(mix(1.0, occlusion, material.occlusion_strength));
 
     // ------------------------------------------------------------ geometry
-    // Fallbacks: +z view if the camera sits on the point, v for a degenerate
-    // interpolated normal, n for l = -v (zero half vector).
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    var n = weft_safe_normalize(in.world_normal, v);
+    // Fallbacks and clamps: lib/surface.wgsl.
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let v = surface.v;
+    var n = surface.n;
     if NORMAL_MAP {
-        let frame = weft_tangent_frame(n, in.world_tangent);
         let texel = textureSample(normal_map, material_sampler, uv).rgb;
-        n = weft_normal_from_tangent_space(frame, weft_unpack_normal(texel, material.normal_strength));
+        n = weft_mapped_normal(n, in.world_tangent, texel, material.normal_strength);
     }
-    let l = weft_main_light_direction();
-    let h = weft_safe_normalize(l + v, n);
-    // n.v floored at 1e-4 (views below the shading normal count as grazing);
-    // light below the horizon contributes nothing (n.l = 0).
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
-    let n_dot_h = saturate(dot(n, h));
-    let l_dot_h = saturate(dot(l, h));
+    let lit = weft_main_light_geometry(n, v);
+    let l_dot_h = saturate(dot(lit.l, lit.h));
 
     // Metallic workflow as in Unity's BRDF1: specular colour and diffuse colour.
     let f0 = mix(vec3<f32>(WEFT_DIELECTRIC_F0), base, metallic);
@@ -80,20 +73,20 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 
     var color: vec3<f32>;
     if WEFT_TIER == TIER_LOW {
-        color = velvet_low(n, v, l, h, f0, diffuse_albedo, roughness, ao, light, ambient);
+        color = velvet_low(n, v, lit, f0, diffuse_albedo, roughness, ao, light, ambient);
     } else if WEFT_TIER == TIER_SEED {
         // -------------------------------------------------------- seed (look)
         // BRDF1 with GGXTerm -> FabricD. In weft's units (Lambert with 1/pi)
         // Unity's specularTerm = V D pi becomes D V; FabricD is used as the
         // seed writes it (no 1/pi), so lobe and diffuse keep the seed's ratio.
-        let visibility = weft_v_schlick_ggx(n_dot_v, n_dot_l, roughness);
+        let visibility = weft_v_schlick_ggx(lit.n_dot_v, lit.n_dot_l, roughness);
         let f = weft_f_schlick(f0, l_dot_h);
-        let specular = weft_fabric_d(n_dot_h) * visibility * f;
+        let specular = weft_fabric_d(lit.n_dot_h) * visibility * f;
         let diffuse = weft_diffuse_lambert(diffuse_albedo);
-        let direct = (diffuse + specular) * light * n_dot_l;
+        let direct = (diffuse + specular) * light * lit.n_dot_l;
         // Fabric scatter, exactly as the seed adds it (not multiplied by the
         // light colour). No indirect specular (seed: "去掉标准PBR的间接光反射").
-        let scatter = weft_fabric_scatter(material.scatter_color.rgb, n_dot_l, n_dot_v, material.scatter_scale);
+        let scatter = weft_fabric_scatter(material.scatter_color.rgb, lit.n_dot_l, lit.n_dot_v, material.scatter_scale);
         color = direct + ambient * diffuse_albedo + scatter;
     } else {
         // Sheen colour: the seed's two fibre tints (F0 on the FabricD lobe and
@@ -101,21 +94,21 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         // max3(C) <= 1 so the albedo scaling stays in [0, 1].
         let sheen_color = saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0)));
         let sheen_r = weft_sheen_clamp_roughness(roughness);
-        let e_v = weft_sheen_albedo(n_dot_v, sheen_r);
+        let e_v = weft_sheen_albedo(lit.n_dot_v, sheen_r);
         let ambient_scaling = weft_sheen_albedo_scaling_view(sheen_color, e_v);
         var sheen: vec3<f32>;
         var scaling: f32;
         if WEFT_TIER == TIER_REFERENCE {
             // ---------------------------------------------------- reference
-            let e_l = weft_sheen_albedo(n_dot_l, sheen_r);
-            sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            let e_l = weft_sheen_albedo(lit.n_dot_l, sheen_r);
+            sheen = weft_sheen_charlie(sheen_color, lit.n_dot_h, lit.n_dot_v, lit.n_dot_l, sheen_r);
             scaling = weft_sheen_albedo_scaling(sheen_color, e_v, e_l);
         } else {
             // ---------------------------------------------------- fast
-            sheen = weft_sheen_charlie(sheen_color, n_dot_h, n_dot_v, n_dot_l, sheen_r);
+            sheen = weft_sheen_charlie(sheen_color, lit.n_dot_h, lit.n_dot_v, lit.n_dot_l, sheen_r);
             scaling = ambient_scaling;
         }
-        let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * n_dot_l);
+        let base_direct = weft_diffuse_lambert(diffuse_albedo) * (scaling * lit.n_dot_l);
         let direct = (sheen + base_direct) * light;
 
         // Ambient: the base gets the energy the sheen did not reflect
@@ -140,13 +133,13 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // sin^(1/r) in [0, 1], 2 + 1/r <= 16.3, D <= 2.6, G2 in [0, 1], G2 / (4 n.v)
 // <= 250 (n.v floored at 1e-3), D V n.l <= 650.
 fn velvet_low(
-    n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, h: vec3<f32>,
+    n: vec3<f32>, v: vec3<f32>, lit: WeftLightGeometry,
     f0: vec3<f32>, diffuse_albedo: vec3<f32>, roughness: f32, ao: f32,
     light: vec3<f32>, ambient: vec3<f32>,
 ) -> vec3<f32> {
     let sheen_r = weft_sheen_clamp_roughness(roughness);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let n_dot_l = saturate(dot(n, l));
+    let n_dot_v = lit.n_dot_v;
+    let n_dot_l = lit.n_dot_l;
     let sheen_color = vec3<weft_half>(saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0))));
     // One albedo fetch, nearest texel, for direct and ambient (fast: filtered).
     let e_v = weft_half(weft_sheen_albedo_nearest(n_dot_v, sheen_r));
@@ -157,7 +150,7 @@ fn velvet_low(
     // normal range, and sin^(1/r) of it (3.5e-4 at r = 1) would be lost,
     // visibly under a bright light (`weft stability`).
     let inv_r = 1.0 / sheen_r;
-    let noh = saturate(dot(n, h));
+    let noh = lit.n_dot_h;
     let sin_pow = weft_half(pow(max((1.0 - noh) * (1.0 + noh), 0.0), 0.5 * inv_r));
     let d = weft_half(2.0 + inv_r) * sin_pow * weft_half(0.5 * WEFT_INV_PI);
     // V n.l = G2 / (4 n.v) (n.l cancels; 0 below the horizon): G2 from the

@@ -153,7 +153,7 @@ fn perturbed_shaders_fail_their_goldens() {
         ),
         (
             "wrong sign of N.L",
-            "standard/standard.wgsl",
+            "lib/surface.wgsl",
             "saturate(dot(n, l))",
             "saturate(dot(n, -l))",
             "default",

@@ -17,6 +17,10 @@
 //! JIT-compiles and leaks a shader at every draw of a shader whose branch
 //! reads a uniform, and this binary grew past 20 GiB.
 //!
+//! The tests run side by side (libtest's threads), unlike the other GPU
+//! binaries' (`weft_tests::gpu_serial`): each draws on its calling thread
+//! (`LP_NUM_THREADS=0`), so one at a time would leave a core idle.
+//!
 //! With no Vulkan adapter these tests fail with what to install; they never skip.
 
 use std::path::{Path, PathBuf};
@@ -44,9 +48,10 @@ fn single_threaded_lavapipe() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         if std::env::var_os("LP_NUM_THREADS").is_none() {
-            // SAFETY: every test here calls this holding `gpu_serial`
-            // before it creates a device, so no other thread is inside
-            // Mesa (the only reader of the environment through libc).
+            // SAFETY: every test here calls this before it creates a
+            // device, and `call_once` holds the others until it returns, so
+            // no thread is inside Mesa yet (the only reader of the
+            // environment through libc).
             unsafe { std::env::set_var("LP_NUM_THREADS", "0") };
         }
     });
@@ -87,7 +92,6 @@ fn material_name(meta: &Path) -> String {
 /// The sweep over one shipped material: every canonical variant (and
 /// constant-keyword value) x the parameter grid x the geometric cases.
 fn sweep_shipped_material(name: &str) {
-    let _gpu = weft_tests::gpu_serial();
     let started = Instant::now();
     let generated = repo().join("generated");
     let mut renderer = renderer(&generated);
@@ -174,7 +178,6 @@ fn every_shipped_material_is_swept() {
 /// and is lit wherever N·V and N·L are clearly positive.
 #[test]
 fn the_probe_covers_every_tile() {
-    let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
     let mut renderer = renderer(&generated);
     let probe = probe();
@@ -195,15 +198,15 @@ fn the_probe_covers_every_tile() {
     }
 }
 
-/// A deliberately broken copy of the standard material: the guarded
-/// `weft_clamp_cos(dot(n, v))` becomes `dot(n, v)` and the returned alpha is
-/// multiplied by `sqrt(n_dot_v) / sqrt(n_dot_v)` (1 for N·V > 0, NaN for
+/// A deliberately broken copy of the standard material: the guarded n·v
+/// (`weft_clamp_cos(dot(n, v))` in lib/surface.wgsl's
+/// `weft_main_light_geometry`) becomes `dot(n, v)` and the returned alpha is
+/// multiplied by `sqrt(n·v) / sqrt(n·v)` (1 for N·V > 0, NaN for
 /// N·V <= 0: 0/0 at exactly 0, sqrt of a negative below). The sweep must
 /// report NaN at every back-facing case, and (without a normal map, which
 /// bends the normal) nowhere N·V >= 1e-4.
 #[test]
 fn a_nan_at_grazing_angles_is_found() {
-    let _gpu = weft_tests::gpu_serial();
     let tmp = tempfile::tempdir().unwrap();
     let materials = tmp.path().join("materials");
     copy_dir(&repo().join("materials/lib"), &materials.join("lib"));
@@ -211,16 +214,22 @@ fn a_nan_at_grazing_angles_is_found() {
         &repo().join("materials/standard"),
         &materials.join("standard"),
     );
-    let wgsl = materials.join("standard/standard.wgsl");
-    let source = std::fs::read_to_string(&wgsl).unwrap();
-    let guarded = "let n_dot_v = weft_clamp_cos(dot(n, v));";
-    let ret = "return vec4<f32>(radiance, alpha);";
-    assert!(source.contains(guarded) && source.contains(ret));
-    let broken = source.replace(guarded, "let n_dot_v = dot(n, v);").replace(
-        ret,
-        "return vec4<f32>(radiance, alpha * sqrt(n_dot_v) / sqrt(n_dot_v));",
+    let break_in = |file: &str, from: &str, to: &str| {
+        let path = materials.join(file);
+        let source = std::fs::read_to_string(&path).unwrap();
+        assert!(source.contains(from), "`{from}` not in {file}");
+        std::fs::write(&path, source.replace(from, to)).unwrap();
+    };
+    break_in(
+        "lib/surface.wgsl",
+        "weft_clamp_cos(dot(n, v)),",
+        "dot(n, v),",
     );
-    std::fs::write(&wgsl, broken).unwrap();
+    break_in(
+        "standard/standard.wgsl",
+        "return vec4<f32>(radiance, alpha);",
+        "return vec4<f32>(radiance, alpha * sqrt(lit.n_dot_v) / sqrt(lit.n_dot_v));",
+    );
     let out = weft_compiler::build_library(
         &materials,
         &weft_compiler::BuildOptions::default(),

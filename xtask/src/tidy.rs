@@ -1,8 +1,10 @@
 //! Keeps ARCHITECTURE.md a true map: every path it names in backticks
 //! exists, every bare file name it names (`fold.rs`) exists somewhere in the
 //! code, and every crate, top folder and folder inside a crate's `src/` has
-//! its entry. Run by the test
-//! below (so by `cargo test --workspace`); only tests use it.
+//! its entry. Keeps the materials' sources true too: a test, crate or doc
+//! path named in a material's WGSL, TOML or README exists (files move; the
+//! comments that cite them must follow). Run by the tests below (so by
+//! `cargo test --workspace`); only tests use it.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -109,6 +111,73 @@ pub fn architecture_problems(root: &Path) -> Result<Vec<String>, String> {
     Ok(problems)
 }
 
+/// Paths under `tests/`, `crates/`, `docs/` or `xtask/` that a file in
+/// `materials/` names (in a comment, a tooltip or its README) and that do not
+/// exist, as `file: path`.
+pub fn material_source_problems(root: &Path) -> Result<Vec<String>, String> {
+    let mut files = Vec::new();
+    material_sources(&root.join("materials"), &mut files)?;
+    files.sort();
+    let mut problems = Vec::new();
+    for file in files {
+        let text =
+            std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+        let shown = file
+            .strip_prefix(root)
+            .unwrap_or(&file)
+            .display()
+            .to_string();
+        for path in named_paths(&text) {
+            if !root.join(path).exists() {
+                problems.push(format!("{shown}: `{path}` does not exist"));
+            }
+        }
+    }
+    Ok(problems)
+}
+
+/// The WGSL, TOML and Markdown files under `dir`.
+fn material_sources(dir: &Path, out: &mut Vec<std::path::PathBuf>) -> Result<(), String> {
+    for e in std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let path = e.map_err(|e| format!("{}: {e}", dir.display()))?.path();
+        if path.is_dir() {
+            material_sources(&path, out)?;
+        } else if matches!(
+            path.extension().and_then(|x| x.to_str()),
+            Some("wgsl" | "toml" | "md")
+        ) {
+            out.push(path);
+        }
+    }
+    Ok(())
+}
+
+/// Repository paths with a file extension that start at one of the code or
+/// docs folders (`tests/physics/eye.rs`), not preceded by a path character
+/// (so `../lib/x.wgsl` and `generated/docs/x.md` are not taken).
+fn named_paths(text: &str) -> Vec<&str> {
+    let is_path_char = |c: char| c.is_ascii_alphanumeric() || "_-./".contains(c);
+    let mut paths = Vec::new();
+    for prefix in ["tests/", "crates/", "docs/", "xtask/"] {
+        for (at, _) in text.match_indices(prefix) {
+            if text[..at].chars().next_back().is_some_and(is_path_char) {
+                continue;
+            }
+            let len = text[at..]
+                .find(|c: char| !is_path_char(c))
+                .unwrap_or(text.len() - at);
+            let path = text[at..at + len].trim_end_matches('.');
+            let file = path.rsplit('/').next().unwrap_or("");
+            if file.rsplit_once('.').is_some_and(|(stem, ext)| {
+                !stem.is_empty() && (EXTENSIONS.contains(&ext) || ext == "md")
+            }) {
+                paths.push(path);
+            }
+        }
+    }
+    paths
+}
+
 /// The text between each pair of backticks (code spans; fenced blocks' lines too).
 fn backticked(text: &str) -> Vec<&str> {
     text.split('`')
@@ -149,6 +218,32 @@ mod tests {
             problems.is_empty(),
             "ARCHITECTURE.md is out of date:\n{}",
             problems.join("\n")
+        );
+    }
+
+    #[test]
+    fn paths_the_materials_cite_exist() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let problems = material_source_problems(root).unwrap();
+        assert!(
+            problems.is_empty(),
+            "a material cites a file that is not there (moved? update the comment):\n{}",
+            problems.join("\n")
+        );
+    }
+
+    #[test]
+    fn named_paths_take_repository_paths_only() {
+        let text = "// measured by tests/physics/eye.rs, see docs/energy.md.\n\
+                    // ../lib/x.wgsl and generated/docs/y.md and tests/ alone are not taken;\n\
+                    // (crates/weft-meta/src/uniform.rs: the encoder)";
+        assert_eq!(
+            named_paths(text),
+            [
+                "tests/physics/eye.rs",
+                "crates/weft-meta/src/uniform.rs",
+                "docs/energy.md"
+            ]
         );
     }
 

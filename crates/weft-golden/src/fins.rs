@@ -81,9 +81,8 @@ fn fs_shell_body(in: FurVaryings) -> @location(0) vec4<f32> {
     if !FIN_FADE_SHELLS {
         return shell;
     }
-    let v = weft_view_direction(in.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(in.world_normal, v);
-    let band = saturate(1.0 - abs(dot(n, v)) / FIN_BAND);
+    let surface = weft_surface(in.world_position, in.world_normal);
+    let band = saturate(1.0 - abs(dot(surface.n, surface.v)) / FIN_BAND);
     return vec4<f32>(shell.rgb, shell.a * (1.0 - band));
 }
 

@@ -108,10 +108,12 @@ pub(super) fn wrap_fragment(wgsl: &str, entry: &str, body: &str) -> Result<Strin
 fn {entry}({}) -> @location(0) vec4<f32> {{
     var c = {base}({});
     let vin = {varyings};
-    let v = weft_view_direction(vin.world_position, vec3<f32>(0.0, 0.0, 1.0));
-    let n = weft_safe_normalize(vin.world_normal, v);
-    let n_dot_v = weft_clamp_cos(dot(n, v));
-    let l = weft_main_light_direction();
+    let surface = weft_surface(vin.world_position, vin.world_normal);
+    let v = surface.v;
+    let n = surface.n;
+    let lit = weft_main_light_geometry(n, v);
+    let n_dot_v = lit.n_dot_v;
+    let l = lit.l;
 {body}    return c;
 }}
 ",

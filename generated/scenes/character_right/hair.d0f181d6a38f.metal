@@ -1,0 +1,787 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct type_5 {
+    metal::float4 inner[9];
+};
+struct WeftFrame {
+    metal::float4x4 view_proj;
+    metal::float4x4 view;
+    metal::float4 camera_position;
+    metal::float4 light_direction;
+    metal::float4 light_color;
+    type_5 sh;
+    metal::float4 params;
+    metal::float4 viewport;
+};
+struct WeftObject {
+    metal::float4x4 model;
+    metal::float4x4 normal_matrix;
+};
+struct WeftOutlineVertex {
+    metal::float3 position;
+    metal::float3 normal;
+};
+struct WeftOutlineVaryings {
+    metal::float4 clip_position;
+};
+struct WeftFringeShadowVertex {
+    metal::float3 position;
+};
+struct WeftFringeShadowVaryings {
+    metal::float4 clip_position;
+};
+struct WeftSurface {
+    metal::float3 v;
+    metal::float3 n;
+};
+struct WeftVertexInput {
+    metal::float3 position;
+    metal::float3 normal;
+    metal::float4 tangent;
+    metal::float2 uv0_;
+    char _pad4[8];
+};
+struct WeftVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+};
+struct WeftHair {
+    metal::packed_float3 sigma_a;
+    float eta;
+    metal::float4 v;
+    float s;
+    char _pad4[12];
+    metal::float3 sin2k;
+    metal::float3 cos2k;
+};
+struct WeftHairAttenuation {
+    float a0_;
+    char _pad1[12];
+    metal::float3 a1_;
+    metal::float3 a2_;
+    metal::packed_float3 a3_;
+    float gamma_t;
+};
+struct WeftHairLobes {
+    metal::float3 s;
+    metal::float3 albedo;
+    metal::float3 back;
+};
+struct WeftHairAngles {
+    metal::float4 theta;
+    float phi;
+    char _pad2[12];
+};
+constant float WEFT_PI = 3.1415927;
+constant float WEFT_INV_PI = 0.31830987;
+constant uint TIER_FAST = 0u;
+constant uint TIER_REFERENCE = 1u;
+constant uint TIER_SEED = 2u;
+constant float WEFT_MIN_ROUGHNESS = 0.045;
+constant float WEFT_MIN_N_DOT = 0.0001;
+constant float WEFT_MAX_HALF = 65504.0;
+constant float WEFT_DIELECTRIC_F0_ = 0.04;
+constant float WEFT_HAIR_MIN_BETA_M = 0.05;
+constant float WEFT_HAIR_MIN_BETA_N = 0.05;
+constant uint HAIR_REFERENCE_CELLS = 64u;
+constant uint HAIR_FAST_CELLS = 12u;
+constant float HAIR_TERMINATOR = 0.25;
+
+metal::float3 weft_safe_normalize(
+    metal::float3 v,
+    metal::float3 fallback
+) {
+    float len2_ = metal::dot(v, v);
+    return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
+}
+
+metal::float3 weft_any_perpendicular(
+    metal::float3 n
+) {
+    float s_8 = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a_1 = -1.0 / (s_8 + n.z);
+    float b = (n.x * n.y) * a_1;
+    return metal::float3(1.0 + (((s_8 * n.x) * n.x) * a_1), s_8 * b, -(s_8) * n.x);
+}
+
+float weft_f_dielectric(
+    float cos_i,
+    float eta
+) {
+    float c = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
+    float g2_ = ((eta * eta) - 1.0) + (c * c);
+    float g = metal::sqrt(metal::max(g2_, 0.0));
+    float gmc = g - c;
+    float gpc = metal::max(g + c, 0.0000001);
+    float a_2 = gmc / gpc;
+    float b_1 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
+    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1)));
+    return (g2_ < 0.0) ? 1.0 : f;
+}
+
+metal::float3 weft_safe_normalize_k1_(
+    metal::float3 v_1
+) {
+    float len2_1 = metal::dot(v_1, v_1);
+    return (len2_1 > 0.00000000000000000001) ? (v_1 * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : metal::float3(0.0, 0.0, 1.0);
+}
+
+metal::float3 weft_main_light_direction(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_direction;
+    metal::float3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
+}
+
+metal::float3 weft_main_light_radiance(
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e2 = weft_frame.light_color;
+    return metal::max(_e2.xyz, metal::float3(0.0));
+}
+
+metal::float3 weft_sh_irradiance(
+    metal::float3 n_1,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 e = {};
+    type_5 sh = weft_frame.sh;
+    e = sh.inner[0].xyz * 0.282095;
+    metal::float3 _e9 = e;
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    metal::float3 _e17 = e;
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    metal::float3 _e25 = e;
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    metal::float3 _e33 = e;
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    metal::float3 _e43 = e;
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    metal::float3 _e53 = e;
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    metal::float3 _e67 = e;
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    metal::float3 _e77 = e;
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    metal::float3 _e91 = e;
+    return metal::max(_e91, metal::float3(0.0));
+}
+
+metal::float3 weft_view_direction_k2_(
+    metal::float3 world_position,
+    constant WeftFrame& weft_frame
+) {
+    metal::float4 _e4 = weft_frame.camera_position;
+    metal::float3 _e7 = weft_safe_normalize_k1_(_e4.xyz - world_position);
+    return _e7;
+}
+
+WeftSurface weft_surface(
+    metal::float3 world_position_1,
+    metal::float3 world_normal,
+    constant WeftFrame& weft_frame
+) {
+    metal::float3 _e2 = weft_view_direction_k2_(world_position_1, weft_frame);
+    metal::float3 _e3 = weft_safe_normalize(world_normal, _e2);
+    return WeftSurface {_e2, _e3};
+}
+
+metal::float3x3 weft_tangent_frame(
+    metal::float3 n_2,
+    metal::float4 tangent
+) {
+    metal::float3 t_in = tangent.xyz;
+    metal::float3 t_proj = t_in - (n_2 * metal::dot(n_2, t_in));
+    float len2_2 = metal::dot(t_proj, t_proj);
+    bool ok = len2_2 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
+    metal::float3 _e13 = weft_any_perpendicular(n_2);
+    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : _e13;
+    float s_9 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_2 = metal::cross(n_2, t_1) * s_9;
+    return metal::float3x3(t_1, b_2, n_2);
+}
+
+float weft_hair_sqr(
+    float x
+) {
+    return x * x;
+}
+
+float weft_hair_safe_sqrt(
+    float x_1
+) {
+    return metal::sqrt(metal::max(x_1, 0.0));
+}
+
+float weft_hair_i0_(
+    float x_2
+) {
+    float term = 1.0;
+    float sum = 1.0;
+    int i = 1;
+    float q = (0.25 * x_2) * x_2;
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e22 = i;
+            i = as_type<int>(as_type<uint>(_e22) + as_type<uint>(1));
+        }
+        loop_init = false;
+        int _e10 = i;
+        if (_e10 < 16) {
+        } else {
+            break;
+        }
+        {
+            int _e13 = i;
+            float k_1 = static_cast<float>(_e13);
+            float _e15 = term;
+            term = _e15 * (q / (k_1 * k_1));
+            float _e19 = sum;
+            float _e20 = term;
+            sum = _e19 + _e20;
+        }
+    }
+    float _e25 = sum;
+    return _e25;
+}
+
+float weft_hair_log_i0_(
+    float x_3
+) {
+    if (x_3 > 12.0) {
+        float r = 1.0 / x_3;
+        return (x_3 - (0.5 * metal::log(6.2831855 * x_3))) + metal::log(1.0 + (r * (0.125 + (0.0703125 * r))));
+    }
+    float _e20 = weft_hair_i0_(x_3);
+    return metal::log(_e20);
+}
+
+float weft_hair_mp(
+    float cos_i_1,
+    float cos_o,
+    float sin_i,
+    float sin_o,
+    float v_2
+) {
+    float a_3 = (cos_i_1 * cos_o) / v_2;
+    float b_3 = (sin_i * sin_o) / v_2;
+    if (v_2 <= 0.1) {
+        float _e11 = weft_hair_log_i0_(a_3);
+        return metal::exp((((_e11 - b_3) - (1.0 / v_2)) + 0.6931472) + metal::log(1.0 / (2.0 * v_2)));
+    }
+    float _e27 = weft_hair_i0_(a_3);
+    return (metal::exp(-(b_3)) * _e27) / ((metal::sinh(1.0 / v_2) * 2.0) * v_2);
+}
+
+metal::float4 weft_hair_longitudinal(
+    WeftHair hair,
+    float sin_o_1,
+    float cos_o_1,
+    float sin_i_1,
+    float cos_i_2
+) {
+    float sin_r = (sin_o_1 * hair.cos2k.y) - (cos_o_1 * hair.sin2k.y);
+    float cos_r = metal::abs((cos_o_1 * hair.cos2k.y) + (sin_o_1 * hair.sin2k.y));
+    float sin_tt = (sin_o_1 * hair.cos2k.x) + (cos_o_1 * hair.sin2k.x);
+    float cos_tt = metal::abs((cos_o_1 * hair.cos2k.x) - (sin_o_1 * hair.sin2k.x));
+    float sin_trt = (sin_o_1 * hair.cos2k.z) + (cos_o_1 * hair.sin2k.z);
+    float cos_trt = metal::abs((cos_o_1 * hair.cos2k.z) - (sin_o_1 * hair.sin2k.z));
+    float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair.v.x);
+    float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair.v.y);
+    float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair.v.z);
+    float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair.v.w);
+    return metal::float4(_e52, _e55, _e58, _e61);
+}
+
+float weft_hair_logistic(
+    float x_4,
+    float s
+) {
+    float e_1 = metal::exp(-(metal::abs(x_4)) / s);
+    float _e8 = weft_hair_sqr(1.0 + e_1);
+    return e_1 / (s * _e8);
+}
+
+float weft_hair_trimmed_logistic(
+    float x_5,
+    float s_1
+) {
+    float e_2 = metal::exp(-3.1415927 / s_1);
+    float _e5 = weft_hair_logistic(x_5, s_1);
+    return (_e5 * (1.0 + e_2)) / (1.0 - e_2);
+}
+
+float weft_hair_etap(
+    WeftHair hair_1,
+    float sin_o_2,
+    float cos_o_2
+) {
+    return metal::sqrt((hair_1.eta * hair_1.eta) - (sin_o_2 * sin_o_2)) / metal::max(cos_o_2, 0.0001);
+}
+
+WeftHairAttenuation weft_hair_attenuation(
+    WeftHair hair_2,
+    float sin_o_3,
+    float cos_o_3,
+    float h
+) {
+    WeftHairAttenuation a = {};
+    float sin_t = sin_o_3 / hair_2.eta;
+    float _e9 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
+    float _e10 = weft_hair_etap(hair_2, sin_o_3, cos_o_3);
+    float sin_gamma_t = metal::clamp(h / _e10, -1.0, 1.0);
+    float _e18 = weft_hair_safe_sqrt(1.0 - (sin_gamma_t * sin_gamma_t));
+    metal::float3 t_2 = metal::exp(-(hair_2.sigma_a) * ((2.0 * _e18) / metal::max(_e9, 0.0001)));
+    float _e31 = weft_hair_safe_sqrt(1.0 - (h * h));
+    float _e34 = weft_f_dielectric(cos_o_3 * _e31, hair_2.eta);
+    a.a0_ = _e34;
+    a.a1_ = ((1.0 - _e34) * (1.0 - _e34)) * t_2;
+    metal::float3 _e46 = a.a1_;
+    a.a2_ = (_e46 * t_2) * _e34;
+    metal::float3 _e51 = a.a2_;
+    a.a3_ = ((_e51 * t_2) * _e34) / (metal::float3(1.0) - (t_2 * _e34));
+    a.gamma_t = metal::asin(sin_gamma_t);
+    WeftHairAttenuation _e60 = a;
+    return _e60;
+}
+
+WeftHairAngles weft_hair_angles(
+    metal::float3 t,
+    metal::float3 o,
+    metal::float3 i_1
+) {
+    WeftHairAngles out_3 = {};
+    float sin_o_4 = metal::clamp(metal::dot(o, t), -1.0, 1.0);
+    float sin_i_2 = metal::clamp(metal::dot(i_1, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt(1.0 - (sin_o_4 * sin_o_4));
+    float _e20 = weft_hair_safe_sqrt(1.0 - (sin_i_2 * sin_i_2));
+    out_3.theta = metal::float4(sin_o_4, _e16, sin_i_2, _e20);
+    metal::float3 o_perp = o - (sin_o_4 * t);
+    metal::float3 i_perp = i_1 - (sin_i_2 * t);
+    float len2_3 = metal::dot(o_perp, o_perp) * metal::dot(i_perp, i_perp);
+    float cos_phi = (len2_3 > 0.000000000001) ? (metal::dot(o_perp, i_perp) * metal::rsqrt(metal::max(len2_3, 0.000000000000000000000000000001))) : 1.0;
+    out_3.phi = metal::acos(metal::clamp(cos_phi, -1.0, 1.0));
+    WeftHairAngles _e43 = out_3;
+    return _e43;
+}
+
+float weft_hair_logistic_cdf(
+    float x_6,
+    float s_2
+) {
+    return 1.0 / (1.0 + metal::exp(-(x_6) / s_2));
+}
+
+float weft_hair_logistic_cdf_k3_(
+    float s_3
+) {
+    return 1.0 / (1.0 + metal::exp(3.1415927 / s_3));
+}
+
+float weft_hair_logistic_cdf_k4_(
+    float s_4
+) {
+    return 1.0 / (1.0 + metal::exp(-3.1415927 / s_4));
+}
+
+float weft_hair_trimmed_integral(
+    float lo,
+    float hi,
+    float s_5
+) {
+    float sum_1 = {};
+    float _e3 = weft_hair_logistic_cdf_k3_(s_5);
+    float _e4 = weft_hair_logistic_cdf_k4_(s_5);
+    float a_4 = metal::clamp(lo, -3.1415927, WEFT_PI);
+    float b_4 = metal::clamp(hi, -3.1415927, WEFT_PI);
+    float _e11 = weft_hair_logistic_cdf(b_4, s_5);
+    float _e12 = weft_hair_logistic_cdf(a_4, s_5);
+    sum_1 = _e11 - _e12;
+    if (hi > WEFT_PI) {
+        float _e17 = sum_1;
+        float _e22 = weft_hair_logistic_cdf(metal::min(hi - 6.2831855, WEFT_PI), s_5);
+        sum_1 = _e17 + (_e22 - _e3);
+    }
+    if (lo < -3.1415927) {
+        float _e27 = sum_1;
+        float _e32 = weft_hair_logistic_cdf(metal::max(lo + 6.2831855, -3.1415927), s_5);
+        sum_1 = _e27 + (_e4 - _e32);
+    }
+    float _e35 = sum_1;
+    return _e35 / (_e4 - _e3);
+}
+
+float weft_hair_np_cell(
+    float d0_,
+    float d1_,
+    float s_6
+) {
+    float mid = 0.5 * (d0_ + d1_);
+    float m = mid - (6.2831855 * metal::rint(mid / 6.2831855));
+    float half_ = metal::min(0.5 * metal::abs(d1_ - d0_), WEFT_PI);
+    if (half_ < 0.0001) {
+        float _e20 = weft_hair_trimmed_logistic(m, s_6);
+        return _e20;
+    }
+    float _e23 = weft_hair_trimmed_integral(m - half_, m + half_, s_6);
+    return _e23 / (2.0 * half_);
+}
+
+metal::float3 hair_strand(
+    metal::float3x3 frame,
+    metal::float2 uv0_
+) {
+    metal::float2 ts = {};
+    ts = metal::float2(0.0, 1.0);
+    float _e6 = ts.x;
+    float _e10 = ts.y;
+    metal::float3 _e14 = weft_safe_normalize((frame[0] * _e6) + (frame[1] * _e10), frame[1]);
+    return _e14;
+}
+
+float hair_hash(
+    uint x_7
+) {
+    uint state = (x_7 * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
+}
+
+metal::float2 weft_transform_uv_k5_(
+    metal::float2 uv
+) {
+    return uv + metal::float2(0.0, 0.0);
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+float hair_value_noise_k6_(
+    float x_8
+) {
+    float cell = metal::floor(x_8);
+    float f_1 = x_8 - cell;
+    float c0_ = cell - (128.0 * metal::floor(cell / 128.0));
+    float c1_ = ((c0_ + 1.0) >= 128.0) ? 0.0 : (c0_ + 1.0);
+    float _e17 = hair_hash(naga_f2u32(c0_));
+    float _e19 = hair_hash(naga_f2u32(c1_));
+    return metal::mix(_e17, _e19, (f_1 * f_1) * (3.0 - (2.0 * f_1))) - 0.5;
+}
+
+float hair_jitter(
+    metal::float2 uv0_1,
+    metal::sampler material_sampler,
+    metal::texture2d<float, metal::access::sample> jitter_map
+) {
+    metal::float2 rotated = metal::float2((-0.00000004371139 * uv0_1.x) + uv0_1.y, (-1.0 * uv0_1.x) + (-0.00000004371139 * uv0_1.y));
+    metal::float2 _e16 = weft_transform_uv_k5_(uv0_1);
+    metal::float4 _e19 = jitter_map.sample(material_sampler, _e16);
+    float j = _e19.x;
+    float across = _e16.x;
+    float _e25 = hair_value_noise_k6_(across * 128.0);
+    return j + (0.2 * _e25);
+}
+
+metal::float3 weft_safe_normalize_k7_(
+    metal::float3 v_3
+) {
+    float len2_4 = metal::dot(v_3, v_3);
+    return (len2_4 > 0.00000000000000000001) ? (v_3 * metal::rsqrt(metal::max(len2_4, 0.00000000000000000001))) : metal::float3(0.0);
+}
+
+WeftHairLobes weft_hair_mean_k10_(
+    WeftHair hair_3,
+    WeftHairAngles angles
+) {
+    metal::float3 s_7 = metal::float3(0.0);
+    metal::float3 albedo = metal::float3(0.0);
+    metal::float3 back = metal::float3(0.0);
+    float weights = 0.0;
+    float g0_ = -1.5707964;
+    metal::float3 d0_1 = {};
+    uint k = 0u;
+    WeftHairLobes out_4 = {};
+    metal::float4 th = angles.theta;
+    metal::float4 _e8 = weft_hair_longitudinal(hair_3, angles.theta.x, angles.theta.y, angles.theta.z, angles.theta.w);
+    float _e11 = weft_hair_etap(hair_3, angles.theta.x, angles.theta.y);
+    d0_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * metal::asin(metal::clamp(-1.0 / _e11, -1.0, 1.0))) - metal::float3(-3.1415927)) + metal::float3(0.0, 3.1415927, 6.2831855));
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e130 = k;
+            k = _e130 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e42 = k;
+        if (_e42 < 12u) {
+        } else {
+            break;
+        }
+        {
+            float _e44 = g0_;
+            float g1_ = _e44 + 0.2617994;
+            float gamma_t1_ = metal::asin(metal::clamp(metal::sin(g1_) / _e11, -1.0, 1.0));
+            metal::float3 d1_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * gamma_t1_) - metal::float3(2.0 * g1_)) + metal::float3(0.0, 3.1415927, 6.2831855));
+            float _e63 = g0_;
+            float gm = _e63 + 0.1308997;
+            float w = metal::cos(gm);
+            WeftHairAttenuation _e70 = weft_hair_attenuation(hair_3, angles.theta.x, angles.theta.y, metal::sin(gm));
+            float _e75 = d0_1.x;
+            float _e78 = weft_hair_np_cell(_e75, d1_1.x, hair_3.s);
+            float _e84 = d0_1.y;
+            float _e87 = weft_hair_np_cell(_e84, d1_1.y, hair_3.s);
+            float _e95 = d0_1.z;
+            float _e98 = weft_hair_np_cell(_e95, d1_1.z, hair_3.s);
+            metal::float3 lobes_1 = ((metal::float3((_e8.x * _e70.a0_) * _e78) + ((_e8.y * _e70.a1_) * _e87)) + ((_e8.z * _e70.a2_) * _e98)) + ((_e8.w * _e70.a3_) * 0.15915494);
+            metal::float3 _e107 = s_7;
+            s_7 = _e107 + (w * lobes_1);
+            metal::float3 _e110 = albedo;
+            albedo = _e110 + (w * (((metal::float3(_e70.a0_) + _e70.a1_) + _e70.a2_) + _e70.a3_));
+            metal::float3 _e121 = back;
+            back = _e121 + (w * (metal::float3(_e70.a0_) + _e70.a2_));
+            float _e128 = weights;
+            weights = _e128 + w;
+            g0_ = g1_;
+            d0_1 = d1_1;
+        }
+    }
+    metal::float3 _e135 = s_7;
+    float _e136 = weights;
+    out_4.s = _e135 / metal::float3(_e136);
+    metal::float3 _e140 = albedo;
+    float _e141 = weights;
+    out_4.albedo = _e140 / metal::float3(_e141);
+    metal::float3 _e145 = back;
+    float _e146 = weights;
+    out_4.back = _e145 / metal::float3(_e146);
+    WeftHairLobes _e149 = out_4;
+    return _e149;
+}
+
+WeftHair weft_hair_params_k14_(
+) {
+    WeftHair hair_4 = {};
+    hair_4.sigma_a = metal::float3(0.19707139, 0.44586682, 0.7557883);
+    hair_4.eta = 1.55;
+    hair_4.v = metal::float4(0.03157018, 0.007892545, 0.12628073, 0.12628073);
+    hair_4.s = 0.11715981;
+    hair_4.sin2k = metal::float3(0.034899496, 0.06975647, 0.1391731);
+    hair_4.cos2k = metal::float3(0.99939084, 0.9975641, 0.9902682);
+    WeftHair _e26 = hair_4;
+    return _e26;
+}
+
+struct vs_outlineInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+};
+struct vs_outlineOutput {
+    metal::float4 clip_position [[position]];
+};
+vertex vs_outlineOutput vs_outline(
+  vs_outlineInput varyings [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
+) {
+    const WeftOutlineVertex in = { varyings.position, varyings.normal };
+    bool local = {};
+    bool local_1 = {};
+    WeftOutlineVaryings out = {};
+    metal::float4x4 _e3 = weft_object.model;
+    metal::float4 world = _e3 * metal::float4(in.position, 1.0);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3 normal = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal;
+    metal::float4x4 _e22 = weft_frame.view_proj;
+    metal::float4 clip = _e22 * metal::float4(world.xyz, 1.0);
+    metal::float4 _e29 = weft_frame.viewport;
+    metal::float2 size = _e29.xy;
+    metal::float4x4 _e33 = weft_frame.view_proj;
+    metal::float2 screen_normal = (_e33 * metal::float4(normal, 0.0)).xy * size;
+    float len = metal::length(screen_normal);
+    if (len > 0.000001) {
+        float _e47 = weft_frame.viewport.x;
+        local = _e47 > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e51 = local;
+    if (_e51) {
+        local_1 = clip.w > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool usable = local_1;
+    metal::float2 direction = usable ? (screen_normal / metal::float2(metal::max(len, 0.000001))) : metal::float2(0.0);
+    float distance = metal::min(clip.w, 10.0);
+    metal::float4 _e74 = weft_frame.viewport;
+    metal::float2 offset = (((direction * 1.5) * 2.0) * _e74.zw) * distance;
+    out.clip_position = metal::float4(clip.xy + offset, clip.zw);
+    WeftOutlineVaryings _e84 = out;
+    const auto _tmp = _e84;
+    return vs_outlineOutput { _tmp.clip_position };
+}
+
+
+struct fs_outlineOutput {
+    metal::float4 member_1 [[color(0)]];
+};
+fragment fs_outlineOutput fs_outline(
+) {
+    return fs_outlineOutput { metal::float4(metal::float3(0.0, 0.0, 0.0), 1.0) };
+}
+
+
+struct vs_fringe_shadowInput {
+    metal::float3 position [[attribute(0)]];
+};
+struct vs_fringe_shadowOutput {
+    metal::float4 clip_position [[position]];
+};
+vertex vs_fringe_shadowOutput vs_fringe_shadow(
+  vs_fringe_shadowInput varyings_2 [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
+) {
+    const WeftFringeShadowVertex in_1 = { varyings_2.position };
+    bool local_2 = {};
+    WeftFringeShadowVaryings out_1 = {};
+    metal::float4x4 _e3 = weft_object.model;
+    metal::float3 world_1 = (_e3 * metal::float4(in_1.position, 1.0)).xyz;
+    metal::float4x4 _e11 = weft_frame.view_proj;
+    metal::float4 clip_1 = _e11 * metal::float4(world_1, 1.0);
+    metal::float4 _e17 = weft_frame.light_direction;
+    metal::float3 l = _e17.xyz;
+    float l_len = metal::length(l);
+    metal::float3 travel = (l_len > 0.000001) ? (-(l) / metal::float3(metal::max(l_len, 0.000001))) : metal::float3(0.0);
+    metal::float4x4 _e32 = weft_frame.view_proj;
+    metal::float4 pushed = _e32 * metal::float4(world_1 + (travel * 0.16), 1.0);
+    if (clip_1.w > 0.000001) {
+        local_2 = pushed.w > 0.000001;
+    } else {
+        local_2 = false;
+    }
+    bool usable_1 = local_2;
+    metal::float2 offset_ndc = usable_1 ? ((pushed.xy / metal::float2(metal::max(pushed.w, 0.000001))) - (clip_1.xy / metal::float2(metal::max(clip_1.w, 0.000001)))) : metal::float2(0.0);
+    out_1.clip_position = metal::float4(clip_1.xy + (offset_ndc * clip_1.w), clip_1.zw);
+    WeftFringeShadowVaryings _e71 = out_1;
+    const auto _tmp_1 = _e71;
+    return vs_fringe_shadowOutput { _tmp_1.clip_position };
+}
+
+
+struct fs_fringe_shadowOutput {
+    metal::float4 member_3 [[color(0)]];
+};
+fragment fs_fringe_shadowOutput fs_fringe_shadow(
+) {
+    return fs_fringe_shadowOutput { metal::float4(metal::float3(0.5704816, 0.34239164, 0.34239164), 1.0) };
+}
+
+
+struct vs_mainInput {
+    metal::float3 position [[attribute(0)]];
+    metal::float3 normal [[attribute(1)]];
+    metal::float4 tangent_1 [[attribute(2)]];
+    metal::float2 uv0_2 [[attribute(3)]];
+};
+struct vs_mainOutput {
+    metal::float4 clip_position [[position]];
+    metal::float3 world_position [[user(loc0), center_perspective]];
+    metal::float3 world_normal [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_ [[user(loc3), center_perspective]];
+};
+vertex vs_mainOutput vs_main(
+  vs_mainInput varyings_4 [[stage_in]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, constant WeftObject& weft_object [[buffer(1)]]
+) {
+    const WeftVertexInput in_2 = { varyings_4.position, varyings_4.normal, varyings_4.tangent_1, varyings_4.uv0_2 };
+    WeftVaryings out_2 = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm_1 = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
+    metal::float4 world_2 = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out_2.clip_position = _e43 * metal::float4(world_2.xyz, 1.0);
+    out_2.world_position = world_2.xyz;
+    metal::float3 _e53 = weft_safe_normalize_k7_(normal3_ * in_2.normal);
+    out_2.world_normal = _e53;
+    metal::float3 _e58 = weft_safe_normalize_k7_(model3_ * in_2.tangent.xyz);
+    out_2.world_tangent = metal::float4(_e58, bitangent_sign);
+    out_2.uv0_ = in_2.uv0_;
+    WeftVaryings _e62 = out_2;
+    const auto _tmp_2 = _e62;
+    return vs_mainOutput { _tmp_2.clip_position, _tmp_2.world_position, _tmp_2.world_normal, _tmp_2.world_tangent, _tmp_2.uv0_ };
+}
+
+
+struct fs_mainInput {
+    metal::float3 world_position_2 [[user(loc0), center_perspective]];
+    metal::float3 world_normal_1 [[user(loc1), center_perspective]];
+    metal::float4 world_tangent [[user(loc2), center_perspective]];
+    metal::float2 uv0_2 [[user(loc3), center_perspective]];
+};
+struct fs_mainOutput {
+    metal::float4 member_5 [[color(0)]];
+};
+fragment fs_mainOutput fs_main(
+  fs_mainInput varyings_5 [[stage_in]]
+, metal::float4 clip_position [[position]]
+, constant WeftFrame& weft_frame [[buffer(0)]]
+, metal::sampler material_sampler [[sampler(0)]]
+, metal::texture2d<float, metal::access::sample> jitter_map [[texture(0)]]
+) {
+    const WeftVaryings in_3 = { clip_position, varyings_5.world_position_2, varyings_5.world_normal_1, varyings_5.world_tangent, varyings_5.uv0_2 };
+    metal::float3 color = {};
+    WeftHairLobes lobes = {};
+    WeftSurface _e6 = weft_surface(in_3.world_position, in_3.world_normal, weft_frame);
+    metal::float3 v_4 = _e6.v;
+    metal::float3 n_3 = _e6.n;
+    metal::float3x3 _e10 = weft_tangent_frame(n_3, in_3.world_tangent);
+    metal::float3 _e12 = hair_strand(_e10, in_3.uv0_);
+    float _e14 = hair_jitter(in_3.uv0_, material_sampler, jitter_map);
+    metal::float3 _e15 = weft_main_light_direction(weft_frame);
+    metal::float3 _e16 = weft_main_light_radiance(weft_frame);
+    metal::float3 _e17 = weft_sh_irradiance(n_3, weft_frame);
+    float n_dot_l = metal::dot(n_3, _e15);
+    {
+        metal::float3 _e22 = weft_safe_normalize(_e12 + (_e14 * n_3), _e12);
+        WeftHair _e24 = weft_hair_params_k14_();
+        WeftHairAngles _e25 = weft_hair_angles(_e22, v_4, _e15);
+        {
+            WeftHairLobes _e27 = weft_hair_mean_k10_(_e24, _e25);
+            lobes = _e27;
+        }
+        float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
+        metal::float3 _e33 = lobes.back;
+        metal::float3 multiple = metal::float3(0.073238954, 0.019606648, 0.0059810597) * (metal::float3(1.0) - _e33);
+        metal::float3 _e37 = lobes.s;
+        metal::float3 direct = (_e37 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e46 = lobes.back;
+        color = (direct * _e16) + (_e17 * (multiple + _e46));
+    }
+    metal::float3 _e50 = color;
+    metal::float3 radiance = metal::clamp(_e50, metal::float3(0.0), metal::float3(65504.0));
+    return fs_mainOutput { metal::float4(radiance, 1.0) };
+}
