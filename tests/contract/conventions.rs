@@ -214,7 +214,7 @@ fn glslang() -> PathBuf {
 /// What glslang's reflection (`-q`) says one compiled GLSL file binds:
 /// uniform blocks and opaque (sampler) uniforms by name, with the binding
 /// written in the file (-1: none).
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 struct Compiled {
     blocks: BTreeMap<String, i64>,
     samplers: BTreeMap<String, i64>,
@@ -456,11 +456,35 @@ fn check_variant(label: &str, tables: &[(String, &GlslReflection)]) -> Vec<Strin
     failures
 }
 
+/// `compile` once per distinct (text, stage): variants share many files
+/// (a vertex stage is often the same for every fragment keyword, a scene
+/// shader can equal its library variant), 553 distinct texts of 700 files.
+struct GlslCompiles<'a> {
+    glslang: &'a Path,
+    out_dir: &'a Path,
+    done: std::collections::HashMap<(String, &'static str), Result<Compiled, String>>,
+}
+
+impl GlslCompiles<'_> {
+    fn compile(&mut self, path: &Path, stage: Stage) -> Result<Compiled, String> {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let stage_name = match stage {
+            Stage::Vertex => "vert",
+            Stage::Fragment => "frag",
+            Stage::Compute => "comp",
+        };
+        let (glslang, out_dir) = (self.glslang, self.out_dir);
+        self.done
+            .entry((text, stage_name))
+            .or_insert_with(|| compile(glslang, path, stage, out_dir))
+            .clone()
+    }
+}
+
 /// Every GLSL file of `shader` (in `dir`): compiled, checked against its
 /// table and the variant's bindings, the stages checked together.
 fn check_glsl_shader(
-    glslang: &Path,
-    tmp: &Path,
+    compiles: &mut GlslCompiles,
     label: &str,
     dir: &Path,
     shader: &VariantShader,
@@ -487,7 +511,7 @@ fn check_glsl_shader(
             failures.push(format!("{file_label}: names no entry point of the variant"));
             continue;
         };
-        match compile(glslang, &dir.join(&f.path), stage, tmp) {
+        match compiles.compile(&dir.join(&f.path), stage) {
             Ok(c) => {
                 compared += c.blocks.len() + c.samplers.len();
                 failures.extend(check_file(&file_label, table, &c, shader, stage));
@@ -505,6 +529,11 @@ fn every_glsl_binding_resolves_by_its_table() {
     let started = std::time::Instant::now();
     let glslang = glslang();
     let tmp = tempfile::tempdir().unwrap();
+    let mut compiles = GlslCompiles {
+        glslang: &glslang,
+        out_dir: tmp.path(),
+        done: Default::default(),
+    };
     let lib = Library::load(&harness::generated()).unwrap();
     // The fixtures add a `constant`-mode keyword: one file per value and stage.
     let (_fixtures_dir, fixtures) = harness::fixture_library();
@@ -515,7 +544,7 @@ fn every_glsl_binding_resolves_by_its_table() {
         for (v, shader) in canonical_variants(meta).unwrap() {
             let label = format!("{}/{}", meta.name, v.id);
             let (n, b, f) =
-                check_glsl_shader(&glslang, tmp.path(), &label, path.parent().unwrap(), shader);
+                check_glsl_shader(&mut compiles, &label, path.parent().unwrap(), shader);
             files += n;
             bindings += b;
             variants += 1;
@@ -526,13 +555,8 @@ fn every_glsl_binding_resolves_by_its_table() {
         let meta: &SceneMetadata = meta;
         for sh in &meta.shaders {
             let label = format!("scene {} shader {}", meta.name, sh.id);
-            let (n, b, f) = check_glsl_shader(
-                &glslang,
-                tmp.path(),
-                &label,
-                path.parent().unwrap(),
-                &sh.shader,
-            );
+            let (n, b, f) =
+                check_glsl_shader(&mut compiles, &label, path.parent().unwrap(), &sh.shader);
             files += n;
             bindings += b;
             scene_shaders += 1;
