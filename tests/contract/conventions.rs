@@ -244,13 +244,8 @@ fn fetched_only(source: &str, name: &str) -> bool {
 /// Compiles `path` as a `stage` shader with OpenGL semantics (`-G`, as a GL
 /// driver would) and reads its reflection.
 fn compile(glslang: &Path, path: &Path, stage: Stage, out_dir: &Path) -> Result<Compiled, String> {
-    let stage = match stage {
-        Stage::Vertex => "vert",
-        Stage::Fragment => "frag",
-        Stage::Compute => "comp",
-    };
     let out = Command::new(glslang)
-        .args(["-G", "-q", "-S", stage])
+        .args(["-G", "-q", "-S", glslang_stage(stage)])
         .arg(path)
         .arg("-o")
         .arg(out_dir.join("out.spv"))
@@ -456,9 +451,18 @@ fn check_variant(label: &str, tables: &[(String, &GlslReflection)]) -> Vec<Strin
     failures
 }
 
+/// glslangValidator's name for a stage (`-S`).
+fn glslang_stage(stage: Stage) -> &'static str {
+    match stage {
+        Stage::Vertex => "vert",
+        Stage::Fragment => "frag",
+        Stage::Compute => "comp",
+    }
+}
+
 /// `compile` once per distinct (text, stage): variants share many files
 /// (a vertex stage is often the same for every fragment keyword, a scene
-/// shader can equal its library variant), 553 distinct texts of 700 files.
+/// shader can equal its library variant): 553 distinct texts of 721 files.
 struct GlslCompiles<'a> {
     glslang: &'a Path,
     out_dir: &'a Path,
@@ -468,14 +472,9 @@ struct GlslCompiles<'a> {
 impl GlslCompiles<'_> {
     fn compile(&mut self, path: &Path, stage: Stage) -> Result<Compiled, String> {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-        let stage_name = match stage {
-            Stage::Vertex => "vert",
-            Stage::Fragment => "frag",
-            Stage::Compute => "comp",
-        };
         let (glslang, out_dir) = (self.glslang, self.out_dir);
         self.done
-            .entry((text, stage_name))
+            .entry((text, glslang_stage(stage)))
             .or_insert_with(|| compile(glslang, path, stage, out_dir))
             .clone()
     }

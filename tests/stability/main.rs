@@ -39,22 +39,13 @@ fn renderer(generated: &Path) -> Renderer {
         .unwrap_or_else(|e| panic!("the stability sweep needs a Vulkan adapter: {e}"))
 }
 
-/// The sweep draws 2 x 2-pixel tiles, where llvmpipe's rasteriser threads
-/// spend more time waiting at their barriers than drawing: laser's sweep
-/// took 21.7 s with two threads and 13.6 s with none (`LP_NUM_THREADS=0`,
-/// which draws on the calling thread; same pixels). An `LP_NUM_THREADS`
-/// already set is kept.
+/// `LP_NUM_THREADS=0` for the whole binary (`weft stability` sets it too).
 fn single_threaded_lavapipe() {
     static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        if std::env::var_os("LP_NUM_THREADS").is_none() {
-            // SAFETY: every test here calls this before it creates a
-            // device, and `call_once` holds the others until it returns, so
-            // no thread is inside Mesa yet (the only reader of the
-            // environment through libc).
-            unsafe { std::env::set_var("LP_NUM_THREADS", "0") };
-        }
-    });
+    // SAFETY: every test here calls this before it creates a device, and
+    // `call_once` holds the others until it returns, so no thread is inside
+    // Mesa yet (the only reader of the environment through libc).
+    ONCE.call_once(|| unsafe { weft_render::probe::draw_sweeps_on_the_calling_thread() });
 }
 
 fn probe() -> Probe {

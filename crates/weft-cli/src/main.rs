@@ -256,7 +256,8 @@ fn load_metadata(path: &Path, color: Color) -> Option<Vec<MaterialMetadata>> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     if matches!(cli.command, Command::Stability(_)) {
-        stability::draw_on_one_lavapipe_thread();
+        // SAFETY: first in `main`, before any thread or device exists.
+        unsafe { weft_render::probe::draw_sweeps_on_the_calling_thread() };
     }
     match cli.command {
         Command::Serve(args) => weft_serve::command(&args, cli.quiet),

@@ -33,19 +33,6 @@ pub(crate) struct StabilityArgs {
     show: usize,
 }
 
-/// On lavapipe the sweep's 2 x 2-pixel tiles keep llvmpipe's rasteriser
-/// threads waiting at their barriers more than drawing; with
-/// `LP_NUM_THREADS=0` it draws on the calling thread, the same pixels, and
-/// the stability tests' sweep took 204 s instead of 374 s. An
-/// `LP_NUM_THREADS` the user set is kept; other drivers ignore it.
-pub(crate) fn draw_on_one_lavapipe_thread() {
-    if std::env::var_os("LP_NUM_THREADS").is_none() {
-        // SAFETY: called first in `main`, before any thread exists (nothing
-        // else can be reading the environment).
-        unsafe { std::env::set_var("LP_NUM_THREADS", "0") };
-    }
-}
-
 /// `weft stability`: Ok(true) when nothing bad was found.
 pub(crate) fn stability(args: &StabilityArgs, quiet: bool, color: Color) -> Result<bool, String> {
     use weft_render::probe::{

@@ -41,8 +41,8 @@ pub use cases::{GeometricCase, geometric_cases};
 pub use classify::{BadKind, MAX_HALF, VISIBLE, classify, classify_half};
 pub use grid::{Setting, parameter_settings, variant_reads};
 pub use sweep::{
-    Failure, MaterialSweep, SweepReport, failures_by_case, generated_materials, sweep_material,
-    sweep_renderer,
+    Failure, MaterialSweep, SweepReport, draw_sweeps_on_the_calling_thread, failures_by_case,
+    generated_materials, sweep_material, sweep_renderer,
 };
 
 use crate::error::Result;

@@ -128,6 +128,23 @@ impl SweepReport {
     }
 }
 
+/// Makes lavapipe draw on the calling thread (`LP_NUM_THREADS=0`) unless
+/// the user set `LP_NUM_THREADS`; other drivers ignore it. A sweep draws
+/// 2 x 2-pixel tiles, where llvmpipe's rasteriser threads spend more time at
+/// their barriers than drawing: laser's sweep took 21.7 s with two threads
+/// and 13.6 s with none (same pixels), the stability tests 374 s and 204 s.
+///
+/// # Safety
+/// Sets an environment variable: call it before any Vulkan device exists
+/// and while no other thread can be reading the environment (first in
+/// `main`, or under a lock every other such thread waits on).
+pub unsafe fn draw_sweeps_on_the_calling_thread() {
+    if std::env::var_os("LP_NUM_THREADS").is_none() {
+        // SAFETY: the caller's contract above.
+        unsafe { std::env::set_var("LP_NUM_THREADS", "0") };
+    }
+}
+
 /// A renderer for sweeps: a small procedural sky (16² faces; the sweep
 /// checks finiteness, not appearance) and the LUTs of a generated folder.
 pub fn sweep_renderer(luts: &Luts) -> Result<Renderer> {
