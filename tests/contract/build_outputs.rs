@@ -157,9 +157,11 @@ fn every_spirv_passes_spirv_val() {
 
 #[test]
 fn every_hlsl_compiles_with_glslang_for_each_stage() {
+    use rayon::prelude::*;
     let glslang = tool("glslangValidator", "glslang-tools");
     let dir = tempfile::tempdir().unwrap();
-    let (mut count, mut scene_count) = (0, 0);
+    // (file, entry point, stage, is a scene shader), one glslang run each.
+    let mut runs = Vec::new();
     for s in all_shaders() {
         for hlsl in &s.shader.files["hlsl"] {
             let name = s.file(&hlsl.path);
@@ -171,26 +173,34 @@ fn every_hlsl_compiles_with_glslang_for_each_stage() {
                     Stage::Fragment => "frag",
                     Stage::Compute => "comp",
                 };
-                let out = Command::new(&glslang)
-                    .args(["-D", "-V", "-S", stage, "-e", &ep.name])
-                    .arg(&path)
-                    .arg("-o")
-                    .arg(dir.path().join("out.spv"))
-                    .output()
-                    .unwrap();
-                assert!(
-                    out.status.success(),
-                    "glslang rejects {name} ({stage} {}):\n{}",
-                    ep.name,
-                    String::from_utf8_lossy(&out.stdout)
-                );
-                count += 1;
-                if s.material.is_none() {
-                    scene_count += 1;
-                }
+                runs.push((
+                    name.clone(),
+                    path.clone(),
+                    ep.name.clone(),
+                    stage,
+                    s.material.is_none(),
+                ));
             }
         }
     }
+    runs.par_iter()
+        .enumerate()
+        .for_each(|(i, (name, path, entry, stage, _))| {
+            let out = Command::new(&glslang)
+                .args(["-D", "-V", "-S", stage, "-e", entry])
+                .arg(path)
+                .arg("-o")
+                .arg(dir.path().join(format!("{i}.spv")))
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "glslang rejects {name} ({stage} {entry}):\n{}",
+                String::from_utf8_lossy(&out.stdout)
+            );
+        });
+    let count = runs.len();
+    let scene_count = runs.iter().filter(|r| r.4).count();
     assert!(
         count >= 24,
         "expected every HLSL entry point checked, got {count}"

@@ -631,7 +631,6 @@ fn standard_white_furnace() {
 /// table's E ≤ 1) and is 1 − F0 at normal view.
 #[test]
 fn standard_direct_diffuse_weight_against_lambert() {
-    let _gpu = weft_tests::gpu_serial();
     let columns = [0.045f32, 0.1, 0.3, 0.5, 1.0];
     println!("n.v \\ r | {columns:?}");
     for nv in [1.0f32, 0.5, 0.2, 0.1, 0.05, 0.01] {

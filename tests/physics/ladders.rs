@@ -113,7 +113,6 @@ fn approximation_tiers_stay_within_the_target_over_the_grid() {
 
 #[test]
 fn every_tier_is_the_reference_an_approximation_or_a_look() {
-    let _gpu = weft_tests::gpu_serial();
     for (_, meta) in weft_golden::materials(&generated()).expect("generated/") {
         let t = &meta.tiers;
         for tier in &t.values {
@@ -141,7 +140,6 @@ fn every_tier_is_the_reference_an_approximation_or_a_look() {
 
 #[test]
 fn measured_tier_tables_are_the_reports() {
-    let _gpu = weft_tests::gpu_serial();
     use weft_golden::cost_tables::{choosing_tables, ladder_table, model_section};
     use weft_golden::shading::replace_marked;
     let repo = generated().parent().unwrap().to_path_buf();

@@ -114,7 +114,6 @@ fn f64x3(v: [f32; 3]) -> [f64; 3] {
 
 #[test]
 fn cmf_fit_has_an_equal_energy_white() {
-    let _gpu = weft_tests::gpu_serial();
     // CIE 1931's CMFs integrate to the same value for X, Y and Z (the
     // equal-energy white is x = y = 1/3); the fit must keep that within 1 %,
     // or every film colour would carry a cast.
@@ -325,7 +324,6 @@ fn vec4_const(source: &str, name: &str) -> [f64; 4] {
 
 #[test]
 fn fast_sensitivity_gaussians_fit_the_reference_cmfs() {
-    let _gpu = weft_tests::gpu_serial();
     // The fast tier's Gaussians (materials/laser/fit_cmf.py) against the
     // reference's CMFs per unit wavenumber, over 380-780 nm: relative RMS
     // within 1.1 % for x, y and z (the fit: 0.8 %, 0.3 %, 1.0 %). A stale or

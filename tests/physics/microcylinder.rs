@@ -1163,7 +1163,6 @@ fn gpu_extremes_are_finite_and_non_negative() {
 
 #[test]
 fn reciprocity_of_the_published_model() {
-    let _gpu = weft_tests::gpu_serial();
     // f(wi, wr) = L_r / (L_i n.wi) = (a1 S1 + a2 S2) / (Q n.wi). f_s, M and P
     // are symmetric in (wi, wr); S carries cos(theta_i) and Q's gap term
     // (1 - a1 - a2) n.wi depends on wi only, so the published form is not.
@@ -1279,7 +1278,6 @@ fn reciprocity_of_the_published_model() {
 
 #[test]
 fn normalisations_and_quadrature() {
-    let _gpu = weft_tests::gpu_serial();
     // The surface and volume Gaussians have unit area over the real line.
     for deg in [0.5, 2.5, 12.0, 30.0, 60.0] {
         let g = f64::to_radians(deg);
@@ -1369,7 +1367,6 @@ fn normalisations_and_quadrature() {
 
 #[test]
 fn ambient_factor_report() {
-    let _gpu = weft_tests::gpu_serial();
     // fs_main's ambient is E(n)/pi x sum_j a_j (A_j + F_avg(eta_j)) / (a1 + a2),
     // F_avg = f0 + (1 - f0)/21 (mean of Schlick). The model's
     // own response to uniform unit radiance is R(wr) = integral of L_r/L_i
@@ -1435,7 +1432,6 @@ fn ambient_factor_report() {
 /// other reading.
 #[test]
 fn volume_fresnel_readings_on_table_ii() {
-    let _gpu = weft_tests::gpu_serial();
     let m = load_material();
     for fab in preset_fabrics(&m) {
         let mut other = fab.clone();

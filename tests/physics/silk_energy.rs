@@ -155,7 +155,6 @@ const ROUGHNESS: [(f64, f64); 8] = [
 
 #[test]
 fn quadrature_reproduces_ndf_normalisation() {
-    let _gpu = weft_tests::gpu_serial();
     // Weak white furnace (Heitz 2014): integral of D(h) (n.h) dh = 1, here for
     // Beckmann (the Ward exponent) and GGX through the same h-grid.
     for &(ax, ay) in &ROUGHNESS {
@@ -188,7 +187,6 @@ fn quadrature_reproduces_ndf_normalisation() {
 
 #[test]
 fn ward_normalisation_white_furnace() {
-    let _gpu = weft_tests::gpu_serial();
     println!("Directional albedo E(v), rho_s = F = 1 (f64 quadrature, 768 x 384 half vectors)");
     println!(
         "{:>12} {:>12} | {:>9} {:>9} {:>9} {:>9} {:>9}",

@@ -134,7 +134,6 @@ fn exact(cos_theta: f64, curvature: f64, s: f64, x_max: f64) -> f64 {
 
 #[test]
 fn the_baked_tables_match_an_independent_integral() {
-    let _gpu = weft_tests::gpu_serial();
     let tables = tables();
     assert_eq!(tables.len(), 2, "skin_lut and seed_lut");
     for (name, size, shape, half_ring) in tables {
@@ -169,7 +168,6 @@ fn the_baked_tables_match_an_independent_integral() {
 
 #[test]
 fn the_reference_quadrature_has_converged() {
-    let _gpu = weft_tests::gpu_serial();
     // The reference tier's per-pixel integral uses this scheme with 64
     // points (skin.wgsl, skin_preintegrated); the bake uses SKIN_BAKE_POINTS.
     let (_, _, shape, _) = tables().into_iter().find(|t| t.0 == "skin_lut").unwrap();
@@ -192,7 +190,6 @@ fn the_reference_quadrature_has_converged() {
 
 #[test]
 fn curvature_wraps_light_past_the_terminator_red_most() {
-    let _gpu = weft_tests::gpu_serial();
     let (_, _, shape, _) = tables().into_iter().find(|t| t.0 == "skin_lut").unwrap();
     // Just beyond the terminator (N.L = −0.1): flat skin gets nothing.
     let mut last = [0.0; 3];

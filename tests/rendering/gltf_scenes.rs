@@ -17,7 +17,6 @@ use weft_tests::repo;
 
 #[test]
 fn committed_gltf_samples_are_what_the_generator_makes() {
-    let _gpu = weft_tests::gpu_serial();
     for (path, bytes) in gltf_samples::committed_files() {
         let on_disk = std::fs::read(repo().join(&path))
             .unwrap_or_else(|e| panic!("{path}: {e}; run `cargo xtask gltf-samples`"));
@@ -38,7 +37,6 @@ fn build_error(path: &Path) -> String {
 
 #[test]
 fn hostile_gltf_files_fail_at_their_json_pointer() {
-    let _gpu = weft_tests::gpu_serial();
     let cases = gltf_samples::hostile();
     assert!(cases.len() >= 12);
     for (name, _, pointer, phrase) in cases {
@@ -81,7 +79,6 @@ fn number(v: serde_json::Value) -> f64 {
 
 #[test]
 fn gltf_materials_map_as_documented() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, _) = showroom();
     let by_name = |n: &str| meta.instances.iter().find(|i| i.name == n).unwrap();
     // KHR_materials_sheen → velvet reference; α = sheenRoughness² (the
@@ -182,7 +179,6 @@ fn gltf_materials_map_as_documented() {
 
 #[test]
 fn gltf_meshes_ship_in_the_scene_folder_as_the_file_holds_them() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, files) = showroom();
     let mesh = |name: &str| {
         let entry = &meta.meshes[name];
@@ -242,7 +238,6 @@ fn gltf_meshes_ship_in_the_scene_folder_as_the_file_holds_them() {
 /// +v): checked against the UV gradient of each triangle, computed here.
 #[test]
 fn generated_tangents_follow_the_tangent_frame() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, files) = showroom();
     let name = &meta
         .instances
@@ -292,7 +287,6 @@ fn generated_tangents_follow_the_tangent_frame() {
 
 #[test]
 fn a_character_from_gltf_extras_builds_with_its_weft_materials() {
-    let _gpu = weft_tests::gpu_serial();
     let out = build_scene(
         &repo().join("tests/gltf/bust.gltf"),
         &SceneBuildOptions::default(),
@@ -349,7 +343,6 @@ fn cutouts() -> (SceneMetadata, std::collections::BTreeMap<String, Vec<u8>>) {
 
 #[test]
 fn gltf_textures_become_the_scene_folders_images() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, files) = cutouts();
     let frame = meta
         .instances
@@ -443,7 +436,6 @@ fn image_scene(params: &str, images: &[(&str, Vec<u8>)]) -> (tempfile::TempDir, 
 
 #[test]
 fn a_scene_binds_png_and_jpeg_images_written_beside_it() {
-    let _gpu = weft_tests::gpu_serial();
     let png = gltf_samples::png_rgba(4, 2, |x, y| [x as u8 * 60, y as u8 * 200, 7, 255]);
     let jpeg = gltf_samples::wood_metallic_roughness();
     let (_dir, manifest) = image_scene(
@@ -464,7 +456,6 @@ fn a_scene_binds_png_and_jpeg_images_written_beside_it() {
 
 #[test]
 fn bad_scene_images_are_errors_at_the_value() {
-    let _gpu = weft_tests::gpu_serial();
     let png = gltf_samples::png_rgba(2, 2, |_, _| [1, 2, 3, 255]);
     for (params, phrase) in [
         (
@@ -509,7 +500,6 @@ fn bad_scene_images_are_errors_at_the_value() {
 
 #[test]
 fn an_auto_tier_left_without_screen_size_takes_the_cameras_view() {
-    let _gpu = weft_tests::gpu_serial();
     // The shipped showroom leaves the satin ball's `screen_size` out: the
     // build derives it from the file's camera (docs/gltf.md "Camera").
     let path = repo().join("generated/scenes/showroom/showroom.scene.json");
@@ -535,7 +525,6 @@ fn an_auto_tier_left_without_screen_size_takes_the_cameras_view() {
 
 #[test]
 fn the_funnel_counts_what_the_scene_keeps() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, files) = showroom();
     let f = meta.funnel.as_ref().expect("a funnel");
     assert_eq!(
@@ -570,7 +559,6 @@ fn the_funnel_counts_what_the_scene_keeps() {
 
 #[test]
 fn an_instance_overrides_its_passes_render_state() {
-    let _gpu = weft_tests::gpu_serial();
     let (_dir, manifest) = image_scene("base_color = [1.0, 1.0, 1.0, 0.5]", &[]);
     let text = std::fs::read_to_string(&manifest).unwrap();
     std::fs::write(
@@ -601,7 +589,6 @@ fn an_instance_overrides_its_passes_render_state() {
 
 #[test]
 fn alpha_modes_sides_and_emission_map_onto_standard_and_the_render_state() {
-    let _gpu = weft_tests::gpu_serial();
     let (meta, _) = cutouts();
     let meta = &meta;
     let by_name = |n: &str| meta.instances.iter().find(|i| i.name == n).unwrap();

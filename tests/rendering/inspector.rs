@@ -19,6 +19,8 @@
 //!   engine's cube faces (`weft_render::cube_direction`) and bound.
 //!
 //! A missing browser or WebGPU adapter fails (never skips) with what to install.
+//! Only the renders in this process (`preview`) take `weft_tests::gpu_serial`;
+//! each page's Chromium runs beside the binary's other tests.
 
 use base64::Engine;
 use headless_chrome::{Browser, LaunchOptions, Tab};
@@ -289,17 +291,23 @@ fn stochastic_difference(a: &HdrImage, b: &HdrImage) -> (f64, f64) {
     (sum / n.max(1) as f64, moved)
 }
 
-fn preview(material: &str) -> HdrImage {
+/// `weft preview`'s image of `material`'s default variant (with `--light`
+/// when `light` is given), drawn in this process: the only part of these
+/// tests that needs the GPU lock (the page renders in Chromium's own
+/// processes).
+fn preview(material: &str, light: Option<[f32; 3]>) -> HdrImage {
+    let _gpu = weft_tests::gpu_serial();
     let meta = repo().join(format!("generated/{material}/{material}.meta.json"));
     let m = weft_render::Material::load(&meta).unwrap();
     let luts = weft_render::Luts::for_metadata(&meta).unwrap();
     let options = weft_render::PreviewOptions {
         width: SIZE,
         height: SIZE,
+        light_direction: light,
         ..Default::default()
     };
     weft_render::render_preview(&m, &luts, &options)
-        .unwrap_or_else(|e| panic!("weft preview {material}: {e}"))
+        .unwrap_or_else(|e| panic!("weft preview {material} (light {light:?}): {e}"))
         .0
 }
 
@@ -313,7 +321,6 @@ fn save(image: &HdrImage, name: &str) -> PathBuf {
 
 #[test]
 fn default_render_matches_weft_preview_for_every_material() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     let names: Vec<String> = page
         .server
@@ -336,7 +343,7 @@ fn default_render_matches_weft_preview_for_every_material() {
         page.select(name);
         let variant = page.eval("window.weftInspector.variantId()");
         let browser = page.capture();
-        let lavapipe = preview(name);
+        let lavapipe = preview(name, None);
         let mean = flip_mean(&lavapipe, &browser);
         report.push(format!(
             "{name} ({}): FLIP mean {mean:.5}",
@@ -373,7 +380,6 @@ fn default_render_matches_weft_preview_for_every_material() {
 
 #[test]
 fn panel_controls_drive_the_preview() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     let before = page.capture();
@@ -503,7 +509,6 @@ fn panel_controls_drive_the_preview() {
 
 #[test]
 fn edits_on_disk_reach_the_page_and_broken_edits_show_their_diagnostic() {
-    let _gpu = weft_tests::gpu_serial();
     let dir = tempfile::tempdir().unwrap();
     copy_dir(&repo().join("materials"), dir.path());
     let page = Page::open(dir.path());
@@ -554,7 +559,6 @@ fn edits_on_disk_reach_the_page_and_broken_edits_show_their_diagnostic() {
 
 #[test]
 fn page_bakes_curves_and_gradients_byte_for_byte_like_weft_meta() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     // A fixed pseudo-random set of curves and gradients, plus edge cases.
     let mut seed = 0x2545_f491_4f6c_dd1du64;
@@ -626,7 +630,6 @@ fn page_bakes_curves_and_gradients_byte_for_byte_like_weft_meta() {
 
 #[test]
 fn export_is_deterministic_and_complete() {
-    let _gpu = weft_tests::gpu_serial();
     let a = tempfile::tempdir().unwrap();
     let b = tempfile::tempdir().unwrap();
     let options = ServeOptions {
@@ -691,7 +694,6 @@ fn walk(root: &Path, dir: &Path, out: &mut Vec<(String, Vec<u8>)>) {
 /// tiling/offset member.
 #[test]
 fn fixture_controls_constant_keyword_gradient_curve_and_tiling() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("tests/fixtures/materials"));
     page.select("switches");
     let flat = page.capture();
@@ -873,7 +875,6 @@ fn serve_static(root: PathBuf) -> u16 {
 /// event stream), under a sub-folder of a site.
 #[test]
 fn exported_inspector_works_from_a_static_server() {
-    let _gpu = weft_tests::gpu_serial();
     let site = tempfile::tempdir().unwrap();
     let options = ServeOptions {
         reports: Some(repo().join("generated/reports")),
@@ -901,7 +902,7 @@ fn exported_inspector_works_from_a_static_server() {
         page.eval("document.getElementById('preview-error').hidden"),
         json!(true)
     );
-    let lavapipe = preview("velvet");
+    let lavapipe = preview("velvet", None);
     let mean = flip_mean(&lavapipe, &image);
     assert!(
         mean <= FLIP_BOUND,
@@ -909,28 +910,11 @@ fn exported_inspector_works_from_a_static_server() {
     );
 }
 
-/// `weft preview --light x,y,z`'s image of `material`'s default variant.
-fn preview_lit(material: &str, light: [f32; 3]) -> HdrImage {
-    let meta = repo().join(format!("generated/{material}/{material}.meta.json"));
-    let m = weft_render::Material::load(&meta).unwrap();
-    let luts = weft_render::Luts::for_metadata(&meta).unwrap();
-    let options = weft_render::PreviewOptions {
-        width: SIZE,
-        height: SIZE,
-        light_direction: Some(light),
-        ..Default::default()
-    };
-    weft_render::render_preview(&m, &luts, &options)
-        .unwrap_or_else(|e| panic!("weft preview {material} --light {light:?}: {e}"))
-        .0
-}
-
 /// Moving the light moves the sky's sun too: the server computes the
 /// environment (cube, SH) for the new sun and the page's picture matches
 /// `weft preview --light` of the same direction.
 #[test]
 fn light_direction_moves_the_sun_and_matches_weft_preview() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     let default_light = page.capture();
@@ -978,10 +962,11 @@ fn light_direction_moves_the_sun_and_matches_weft_preview() {
         );
     }
     let moved = page.capture();
-    let lavapipe = preview_lit("standard", light);
+    let lavapipe = preview("standard", Some(light));
     let lavapipe_default_sky = {
         // What the page drew before the sun followed the light: the light
         // moved, the sky's sun at the default (for the report only).
+        let _gpu = weft_tests::gpu_serial();
         let meta = repo().join("generated/standard/standard.meta.json");
         let m = weft_render::Material::load(&meta).unwrap();
         let luts = weft_render::Luts::for_metadata(&meta).unwrap();
@@ -1147,7 +1132,6 @@ fn halves(a: &HdrImage, b: &HdrImage) -> [f64; 4] {
 /// the panorama's bright spot is reflected.
 #[test]
 fn cube_parameter_takes_an_equirectangular_panorama() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("materials"));
     page.select("standard");
     page.eval(
@@ -1260,7 +1244,6 @@ fn cube_parameter_takes_an_equirectangular_panorama() {
 /// right way up, not the built-in black default.
 #[test]
 fn fixture_texture_file_is_fetched_and_bound_the_right_way_up() {
-    let _gpu = weft_tests::gpu_serial();
     let page = Page::open(&repo().join("tests/fixtures/materials"));
     page.select("imaged");
     let img = page.capture();

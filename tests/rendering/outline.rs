@@ -25,7 +25,6 @@ fn velvet() -> weft_meta::MaterialMetadata {
 
 #[test]
 fn the_outline_pass_exists_exactly_where_its_keyword_is_on() {
-    let _gpu = weft_tests::gpu_serial();
     let meta = velvet();
     let outline = meta
         .passes

@@ -13,7 +13,6 @@ fn root() -> &'static Path {
 /// small PNG, and decodes back to the generated texels.
 #[test]
 fn committed_pngs_are_reproduced_byte_for_byte() {
-    let _gpu = weft_tests::gpu_serial();
     for t in textures::all() {
         let committed = std::fs::read(root().join(t.path))
             .unwrap_or_else(|e| panic!("{}: {e} (run `cargo xtask textures`)", t.path));
@@ -71,7 +70,6 @@ impl Sdf {
 /// 8-bit rounding, ± 1/255).
 #[test]
 fn face_sdf_reproduces_its_nested_masks() {
-    let _gpu = weft_tests::gpu_serial();
     let masks = face_sdf::masks();
     assert_eq!(masks.len(), face_sdf::MASKS + 1);
     for k in 1..masks.len() {
@@ -112,7 +110,6 @@ fn face_sdf_reproduces_its_nested_masks() {
 /// cast shadow.
 #[test]
 fn face_sdf_is_smooth() {
-    let _gpu = weft_tests::gpu_serial();
     let sdf = Sdf::new();
     let mut counts = [0usize; 256];
     let mut total = 0;
@@ -151,7 +148,6 @@ fn face_sdf_is_smooth() {
 /// on the −X half.
 #[test]
 fn face_sdf_lights_the_near_half_and_grows_towards_the_front() {
-    let _gpu = weft_tests::gpu_serial();
     let sdf = Sdf::new();
     let fraction = |deg: f64| {
         let (mut lit, mut all) = (0usize, 0usize);
@@ -197,7 +193,6 @@ fn face_sdf_lights_the_near_half_and_grows_towards_the_front() {
 /// T(u) + T(1 − u) = 1 of a bare head (its shadow falls on the far cheek).
 #[test]
 fn face_sdf_mirrored_texels_differ() {
-    let _gpu = weft_tests::gpu_serial();
     let sdf = Sdf::new();
     let (mut diff, mut higher, mut count) = (0.0, 0usize, 0usize);
     let mut asym = 0.0f64;
@@ -230,7 +225,6 @@ fn face_sdf_mirrored_texels_differ() {
 /// strand, and not the constant "keep the mesh's direction" texel.
 #[test]
 fn flow_map_is_unit_tangent_plane_directions() {
-    let _gpu = weft_tests::gpu_serial();
     let t = flow::texture();
     let mut off_axis = 0usize;
     for y in 0..t.height as usize {

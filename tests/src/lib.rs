@@ -42,9 +42,12 @@ pub fn copy_dir(from: &Path, to: &Path) {
     }
 }
 
-/// One GPU-using test at a time within a test binary (the `physics` and
-/// `rendering` binaries call this first in every test; `stability`'s
-/// sweeps, each on one thread, run side by side).
+/// One GPU-using test at a time within a test binary: the `physics` and
+/// `rendering` tests that create a wgpu device (themselves or through a
+/// helper, a renderer, a preview or the inspector's page) call this first;
+/// tests that only build, bake or integrate on the CPU do not, and run
+/// beside them. (`stability`'s sweeps, each on one thread, run side by
+/// side.)
 /// With the tests of many modules in one process, Mesa 22.3's lavapipe
 /// corrupted its heap while the stability sweep ran beside other modules'
 /// devices ("free(): corrupted unsorted chunks", CI, 2026-11-27; the sweep

@@ -264,45 +264,48 @@ fn values_at(m: &weft_front::Material, bound: Option<bool>) -> Vec<ParamValue> {
 
 #[test]
 fn every_variant_folds_at_every_range_end_and_emits_every_language() {
+    use rayon::prelude::*;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../materials");
     let mut folded = 0;
     for toml in weft_compiler::library::discover(&root).unwrap() {
         let name = toml.file_stem().unwrap().to_string_lossy().into_owned();
         let (m, module, prelude) = load(&name);
         let portable = load_portable(&name);
-        for key in weft_front::variants::variants(&m) {
-            for bound in [None, Some(false), Some(true)] {
-                let mut inst = instance(&m, &[]);
-                inst.values = values_at(&m, bound);
-                for &(k, v) in &key.keywords {
-                    inst.keywords[k] = v;
-                }
-                let values = instance_values(&m, &inst, key.tier, &SceneFeatures::default());
-                let (f, _) = folded_wgsl(&module, &values.fold);
-                let info = compose::validator().validate(&f).unwrap();
-                let portable = portable.as_ref().map(|p| {
-                    let (p, _) = folded_wgsl(p, &values.fold);
-                    let info = compose::validator().validate(&p).unwrap();
-                    (p, info)
-                });
-                weft_compiler::variant::emit_shader(
-                    &m,
-                    (&f, &info),
-                    portable.as_ref().map(|(p, i)| (p, i)),
-                    format!("{name}.test"),
-                    &prelude,
-                    &weft_compiler::variant::material_textures(
-                        &m,
-                        &prelude,
-                        &m.tiers.values[key.tier],
-                        |_| None,
-                    ),
-                    &[Vec::new()],
-                )
-                .unwrap_or_else(|e| panic!("{name} {} at {bound:?}: {e}", key.id(&m)));
-                folded += 1;
+        let cases: Vec<_> = (weft_front::variants::variants(&m).into_iter())
+            .flat_map(|key| [None, Some(false), Some(true)].map(|bound| (key.clone(), bound)))
+            .collect();
+        // Each case is independent: spread them over the cores.
+        cases.par_iter().for_each(|(key, bound)| {
+            let mut inst = instance(&m, &[]);
+            inst.values = values_at(&m, *bound);
+            for &(k, v) in &key.keywords {
+                inst.keywords[k] = v;
             }
-        }
+            let values = instance_values(&m, &inst, key.tier, &SceneFeatures::default());
+            let (f, _) = folded_wgsl(&module, &values.fold);
+            let info = compose::validator().validate(&f).unwrap();
+            let portable = portable.as_ref().map(|p| {
+                let (p, _) = folded_wgsl(p, &values.fold);
+                let info = compose::validator().validate(&p).unwrap();
+                (p, info)
+            });
+            weft_compiler::variant::emit_shader(
+                &m,
+                (&f, &info),
+                portable.as_ref().map(|(p, i)| (p, i)),
+                format!("{name}.test"),
+                &prelude,
+                &weft_compiler::variant::material_textures(
+                    &m,
+                    &prelude,
+                    &m.tiers.values[key.tier],
+                    |_| None,
+                ),
+                &[Vec::new()],
+            )
+            .unwrap_or_else(|e| panic!("{name} {} at {bound:?}: {e}", key.id(&m)));
+        });
+        folded += cases.len();
     }
     assert!(folded >= 48 * 3, "{folded}");
 }
