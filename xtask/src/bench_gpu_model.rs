@@ -17,6 +17,11 @@ pub struct GpuModelArgs {
     /// `RADV_FORCE_FAMILY` values (repeatable; default navi21 and gfx1100).
     #[arg(long = "family", value_name = "FAMILY")]
     families: Vec<String>,
+    /// Only these materials (repeatable; `standard` is always added, the
+    /// baseline of every ratio) and no scenes: a quick look while editing a
+    /// material's WGSL. Cannot be combined with --write.
+    #[arg(long = "material", value_name = "NAME", conflicts_with = "write")]
+    materials: Vec<String>,
     /// Also write generated/reports/gpu-model.md and gpu-model.json.
     #[arg(long)]
     write: bool,
@@ -35,6 +40,7 @@ impl GpuModelArgs {
     pub fn write_defaults() -> GpuModelArgs {
         GpuModelArgs {
             families: Vec::new(),
+            materials: Vec::new(),
             write: true,
             json: None,
             disassembly: None,
@@ -64,10 +70,7 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
     let exe = std::env::current_exe().map_err(|e| format!("locating xtask: {e}"))?;
     let options = Options {
         generated: root.join("generated"),
-        selection: Selection {
-            scenes: true,
-            ..Default::default()
-        },
+        selection: selection(&args.materials),
         families: families.clone(),
         // Always: the loop-aware model reads it (then it is dropped or written out).
         disassembly: true,
@@ -124,6 +127,25 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
         println!("wrote {}", json_path.display());
     }
     Ok(())
+}
+
+/// Everything, or the named materials and the baseline without scenes.
+fn selection(materials: &[String]) -> Selection {
+    if materials.is_empty() {
+        return Selection {
+            scenes: true,
+            ..Default::default()
+        };
+    }
+    let mut only = materials.to_vec();
+    if !only.iter().any(|m| m == "standard") {
+        only.push("standard".into());
+    }
+    Selection {
+        materials: Some(only),
+        tiers: None,
+        scenes: false,
+    }
 }
 
 /// Moves the disassembly out of the figures into one file per executable.
