@@ -90,8 +90,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
             film_view = laser_film_reference(film_cos, d1, d2, f0);
             film_light = laser_film_reference(light_cos, d1, d2, f0);
         } else {
-            film_view = laser_film_fast(film_cos, d1, d2, f0);
-            film_light = laser_film_fast(light_cos, d1, d2, f0);
+            film_view = weft_film_fourier_layers(film_cos, d1, d2, material.film_ior, f0);
+            film_light = weft_film_fourier_layers(light_cos, d1, d2, material.film_ior, f0);
         }
         f_light = mix(f_light, film_light, strength);
         // The film's reflectance times the lobe's albedo with F = 1 (A + B).
@@ -135,14 +135,6 @@ fn laser_film_reference(cos_theta: f32, d1: f32, d2: f32, f0: vec3<f32>) -> vec3
         return first;
     }
     return 0.5 * (first + weft_film_spectral(cos_theta, d2, material.film_ior, f0));
-}
-
-fn laser_film_fast(cos_theta: f32, d1: f32, d2: f32, f0: vec3<f32>) -> vec3<f32> {
-    let first = weft_film_fourier(cos_theta, d1, material.film_ior, f0);
-    if abs(d1 - d2) < 0.5 {
-        return first;
-    }
-    return 0.5 * (first + weft_film_fourier(cos_theta, d2, material.film_ior, f0));
 }
 
 // ---------------------------------------------------------------- seed look

@@ -211,6 +211,12 @@ fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
     let sb = phase * WEFT_FILM_LOBE_SIGMA_B;
     let ta = WEFT_FILM_LOBE_WEIGHT_A * cos(phase * WEFT_FILM_LOBE_MU_A) * exp(-0.5 * sa * sa);
     let tb = WEFT_FILM_LOBE_WEIGHT_B * cos(phase * WEFT_FILM_LOBE_MU_B) * exp(-0.5 * sb * sb);
+    return weft_film_lobes_to_rgb(ta, tb);
+}
+
+// The eight lobes' terms (packed as the weights) summed into XYZ, to linear
+// Rec. 709, normalised by the value at opd = 0.
+fn weft_film_lobes_to_rgb(ta: vec4<f32>, tb: vec4<f32>) -> vec3<f32> {
     let xyz = vec3<f32>(ta.x + ta.y + ta.z, ta.w + tb.x + tb.y, tb.z + tb.w);
     return (WEFT_XYZ_TO_REC709 * xyz) / (WEFT_XYZ_TO_REC709 * WEFT_FILM_SENSITIVITY_AT_ZERO);
 }
@@ -218,35 +224,88 @@ fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
 // weft_film_sensitivity's XYZ at opd = 0: the sums of the weights.
 const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976, 106.97481, 105.75710);
 
+// The Airy series' oscillating part, orders 1 to WEFT_FILM_ORDERS (= 4):
+// sum over m of 2 (C_s,m + C_p,m) S(m opd). S(m opd) is the same sum of
+// lobes as weft_film_sensitivity with each lobe's cosine at m x and its
+// Gaussian at m sigma, so one cosine and one exponential per lobe serve
+// all four orders: cos(m x) by Chebyshev's recurrence
+// (cos 2x = 2 cos^2 x - 1, cos 3x = 2 cos x cos 2x - cos x, cos 4x =
+// 2 cos^2 2x - 1) and exp(-(m s)^2 / 2) = g^(m^2) by squaring (g^4, g^9 =
+// g^8 g, g^16). The same sum as four weft_film_sensitivity calls, with a
+// quarter of their transcendentals.
+fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
+    let phase = 2.0 * WEFT_FILM_PI * opd_nm * 1.0e-3;
+    let sa = phase * WEFT_FILM_LOBE_SIGMA_A;
+    let sb = phase * WEFT_FILM_LOBE_SIGMA_B;
+    let ca1 = cos(phase * WEFT_FILM_LOBE_MU_A);
+    let cb1 = cos(phase * WEFT_FILM_LOBE_MU_B);
+    let ga1 = exp(-0.5 * sa * sa);
+    let gb1 = exp(-0.5 * sb * sb);
+    let ca2 = 2.0 * ca1 * ca1 - 1.0;
+    let cb2 = 2.0 * cb1 * cb1 - 1.0;
+    let ca3 = 2.0 * ca1 * ca2 - ca1;
+    let cb3 = 2.0 * cb1 * cb2 - cb1;
+    let ca4 = 2.0 * ca2 * ca2 - 1.0;
+    let cb4 = 2.0 * cb2 * cb2 - 1.0;
+    let ga2 = (ga1 * ga1) * (ga1 * ga1);
+    let gb2 = (gb1 * gb1) * (gb1 * gb1);
+    let ga3 = (ga2 * ga2) * ga1;
+    let gb3 = (gb2 * gb2) * gb1;
+    let ga4 = (ga2 * ga2) * (ga2 * ga2);
+    let gb4 = (gb2 * gb2) * (gb2 * gb2);
+    // C_m = first ratio^m per polarisation.
+    let k1s = s.first * s.ratio;
+    let k1p = p.first * p.ratio;
+    let k2s = k1s * s.ratio;
+    let k2p = k1p * p.ratio;
+    let k3s = k2s * s.ratio;
+    let k3p = k2p * p.ratio;
+    let k4s = k3s * s.ratio;
+    let k4p = k3p * p.ratio;
+    let w_a = WEFT_FILM_LOBE_WEIGHT_A;
+    let w_b = WEFT_FILM_LOBE_WEIGHT_B;
+    return 2.0 * ((k1s + k1p) * weft_film_lobes_to_rgb(w_a * ca1 * ga1, w_b * cb1 * gb1)
+        + (k2s + k2p) * weft_film_lobes_to_rgb(w_a * ca2 * ga2, w_b * cb2 * gb2)
+        + (k3s + k3p) * weft_film_lobes_to_rgb(w_a * ca3 * ga3, w_b * cb3 * gb3)
+        + (k4s + k4p) * weft_film_lobes_to_rgb(w_a * ca4 * ga4, w_b * cb4 * gb4));
+}
+
 // The fast form: Belcour & Barla's Fourier evaluation of the Airy series.
 // The amplitudes are the exact signed Fresnel ones per polarisation (s, p),
 // as in their paper (the KHR sample code's Schlick amplitudes do not vanish
 // for an index-matched film and are far off at grazing angles); a base
 // channel's phase (0 or pi for real amplitudes) is the sign of r21 r23, so
 // one spectral sensitivity per order serves every channel and both
-// polarisations; orders 1 to WEFT_FILM_ORDERS of the series.
+// polarisations; orders 1 to WEFT_FILM_ORDERS of the series
+// (weft_film_orders).
 fn weft_film_fourier(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
     let stack = weft_film_stack(cos_theta1, thickness_nm, film_ior, base_f0);
     if stack.total_internal_reflection {
         return vec3<f32>(1.0);
     }
-    let n2 = stack.n2;
-    let cos2 = stack.cos2;
-    let a12 = stack.r12;
-    let a23 = stack.r23;
-    let opd = 2.0 * n2 * max(thickness_nm, 0.0) * cos2;
+    let s = weft_film_series(stack.r12.x, stack.r23[0]);
+    let p = weft_film_series(stack.r12.y, stack.r23[1]);
+    let opd = 2.0 * stack.n2 * max(thickness_nm, 0.0) * stack.cos2;
+    return clamp(0.5 * (s.dc + p.dc + weft_film_orders(opd, s, p)), vec3<f32>(0.0), vec3<f32>(1.0));
+}
 
-    let s = weft_film_series(a12.x, a23[0]);
-    let p = weft_film_series(a12.y, a23[1]);
-    var reflectance = s.dc + p.dc;
-    var c_s = s.first;
-    var c_p = p.first;
-    for (var m = 1u; m <= WEFT_FILM_ORDERS; m++) {
-        c_s *= s.ratio;
-        c_p *= p.ratio;
-        reflectance += 2.0 * (c_s + c_p) * weft_film_sensitivity(f32(m) * opd);
+// Two film layers of thicknesses d1 and d2 over one base, averaged (the
+// laser material's offset map): one stack - its angles and amplitudes - for
+// both, at the mean thickness's IOR fade (the layers' own fades differ only
+// where one is under WEFT_FILM_FADE_NM), and each layer's own path
+// difference.
+fn weft_film_fourier_layers(cos_theta1: f32, d1: f32, d2: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
+    let d_mean = 0.5 * (max(d1, 0.0) + max(d2, 0.0));
+    let stack = weft_film_stack(cos_theta1, d_mean, film_ior, base_f0);
+    if stack.total_internal_reflection {
+        return vec3<f32>(1.0);
     }
-    return clamp(0.5 * reflectance, vec3<f32>(0.0), vec3<f32>(1.0));
+    let s = weft_film_series(stack.r12.x, stack.r23[0]);
+    let p = weft_film_series(stack.r12.y, stack.r23[1]);
+    let path = 2.0 * stack.n2 * stack.cos2;
+    let r1 = s.dc + p.dc + weft_film_orders(path * max(d1, 0.0), s, p);
+    let r2 = s.dc + p.dc + weft_film_orders(path * max(d2, 0.0), s, p);
+    return clamp(0.25 * (r1 + r2), vec3<f32>(0.0), vec3<f32>(1.0));
 }
 
 // The Fourier series of one polarisation's Airy reflectance:
@@ -266,6 +325,8 @@ fn weft_film_series(r12: f32, r23: vec3<f32>) -> WeftFilmSeries {
     let big_r23 = r23 * r23;
     let big_r123 = min(big_r12 * big_r23, vec3<f32>(0.9999));
     let rs = t121 * t121 * big_r23 / (vec3<f32>(1.0) - big_r123);
-    let sign = select(vec3<f32>(1.0), vec3<f32>(-1.0), -r12 * r23 < vec3<f32>(0.0));
-    return WeftFilmSeries(vec3<f32>(big_r12) + rs, rs - vec3<f32>(t121), sqrt(big_r123) * sign);
+    // sqrt(R123) with the sign of r21 r23 = -r12 r23 is -r12 r23 itself
+    // (clamped as R123 is): no square root.
+    let ratio = clamp(-r12 * r23, vec3<f32>(-0.99995), vec3<f32>(0.99995));
+    return WeftFilmSeries(vec3<f32>(big_r12) + rs, rs - vec3<f32>(t121), ratio);
 }
