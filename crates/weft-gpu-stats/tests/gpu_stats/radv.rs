@@ -389,11 +389,6 @@ const COSTLIER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
         "the split-sum LUT at its nearest texel (coordinate maths in ALU) in place of the filtered fetch",
     ),
     ("silk", "low", "fast's terms in f16, at f32's cost"),
-    (
-        "eye",
-        "fast",
-        "the parallax offset costs what the traced cornea ray does (within 0.3 %)",
-    ),
 ];
 
 #[test]
