@@ -11,8 +11,9 @@
 //               split-sum scale/bias A, B); GGX D, height-correlated Smith,
 //               the baked split-sum LUT, diffuse weighted by 1 - E.
 //   fast      = an approximation of the reference: the film in Belcour &
-//               Barla's Fourier form (weft_film_fourier) at the same angles;
-//               the rest as the reference.
+//               Barla's Fourier form at the same angles, both layers from
+//               one stack per angle (weft_film_fourier_layers); the rest
+//               as the reference.
 //   seed      = a look: the seed's hue ring (or custom ramp) multiplied into
 //               the albedo, then the reference's lighting with a plain
 //               Schlick Fresnel (no film).

@@ -279,14 +279,9 @@ fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f
 // polarisations; orders 1 to WEFT_FILM_ORDERS of the series
 // (weft_film_orders).
 fn weft_film_fourier(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
-    let stack = weft_film_stack(cos_theta1, thickness_nm, film_ior, base_f0);
-    if stack.total_internal_reflection {
-        return vec3<f32>(1.0);
-    }
-    let s = weft_film_series(stack.r12.x, stack.r23[0]);
-    let p = weft_film_series(stack.r12.y, stack.r23[1]);
-    let opd = 2.0 * stack.n2 * max(thickness_nm, 0.0) * stack.cos2;
-    return clamp(0.5 * (s.dc + p.dc + weft_film_orders(opd, s, p)), vec3<f32>(0.0), vec3<f32>(1.0));
+    // One layer is two equal ones: the measured function (tests/physics/
+    // laser_film.rs, `cargo xtask bench film`) is the laser's fast code.
+    return weft_film_fourier_layers(cos_theta1, thickness_nm, thickness_nm, film_ior, base_f0);
 }
 
 // Two film layers of thicknesses d1 and d2 over one base, averaged (the
