@@ -33,10 +33,13 @@ pub struct GpuModelArgs {
     /// (<family>/<spirv stem>.<pass>.<stage>.s), for reading loops.
     #[arg(long, value_name = "DIR")]
     disassembly: Option<std::path::PathBuf>,
+    /// Print only what was written, not the report (regenerate's use).
+    #[arg(skip)]
+    quiet: bool,
 }
 
 impl GpuModelArgs {
-    /// The default families, written (as `regenerate --reports` runs it).
+    /// The default families, written, the report not printed (as `regenerate` runs it).
     pub fn write_defaults() -> GpuModelArgs {
         GpuModelArgs {
             families: Vec::new(),
@@ -44,6 +47,7 @@ impl GpuModelArgs {
             write: true,
             json: None,
             disassembly: None,
+            quiet: true,
         }
     }
 }
@@ -107,7 +111,9 @@ fn run(root: &Path, args: &GpuModelArgs) -> Result<(), String> {
             .flat_map(|p| p.stages.iter_mut())
             .for_each(|s| s.disassembly = None),
     }
-    print!("{md}");
+    if !args.quiet {
+        print!("{md}");
+    }
     if args.write {
         let reports = root.join("generated/reports");
         std::fs::create_dir_all(&reports).map_err(|e| format!("{}: {e}", reports.display()))?;

@@ -50,7 +50,10 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Rewrite generated/ from materials/ (atomically, removing stale files),
-    /// then the bindings table of each material's README (`<!-- weft:bindings:… -->`).
+    /// then the bindings table of each material's README (`<!-- weft:bindings:… -->`),
+    /// then the GPU model (`bench gpu-model --write`; the scenes are built
+    /// again when the library's modelled costs changed, since `auto` tiers
+    /// read them).
     Regenerate {
         /// Do not write: fail and list the stale files if generated/ or a README's
         /// bindings table is out of date.
@@ -163,6 +166,50 @@ enum Bench {
     },
 }
 
+/// `regenerate`, with the GPU model kept in step: the library is built,
+/// AMD's compiler models it (`bench gpu-model --write`), and where the
+/// library's figures changed the project is built again, so that
+/// `tier = "auto"` choices - costed from generated/reports/gpu-model.json -
+/// use the new library's costs, and the scene shaders that build makes are
+/// modelled in turn. Scene figures do not feed back into choices, so two
+/// rounds settle it. Without RADV the committed model stays, with a warning.
+fn regenerate_modelled(root: &Path) -> ExitCode {
+    let status = regenerate(root, false);
+    if status != ExitCode::SUCCESS {
+        return status;
+    }
+    let reports = root.join("generated/reports");
+    let library_costs = || {
+        weft_meta::gpu_model::ModelSummary::load(&reports)
+            .ok()
+            .map(|m| {
+                m.families
+                    .into_iter()
+                    .map(|f| (f.family, f.variants))
+                    .collect::<Vec<_>>()
+            })
+    };
+    let before = library_costs();
+    if let Err(e) = weft_gpu_stats::radv_available() {
+        eprintln!(
+            "warning: the GPU model was not refreshed ({e}); `tier = \"auto\"` was costed from \
+             the committed generated/reports/gpu-model.json"
+        );
+        return ExitCode::SUCCESS;
+    }
+    let model = bench_gpu_model::GpuModelArgs::write_defaults();
+    let modelled = bench_gpu_model::bench_gpu_model(root, &model);
+    if modelled != ExitCode::SUCCESS || library_costs() == before {
+        return modelled;
+    }
+    println!("the library's modelled costs changed: building the scenes' auto tiers on them");
+    let status = regenerate(root, false);
+    if status != ExitCode::SUCCESS {
+        return status;
+    }
+    bench_gpu_model::bench_gpu_model(root, &model)
+}
+
 /// The checkout xtask works on: its own, or `WEFT_ROOT` when set (a prebuilt
 /// xtask run against another worktree of the repository).
 fn workspace_root() -> PathBuf {
@@ -180,16 +227,12 @@ fn main() -> ExitCode {
     let root = workspace_root();
     match cli.command {
         Command::Regenerate { check, reports } => {
-            let status = regenerate(&root, check);
+            if check {
+                return regenerate(&root, true);
+            }
+            let status = regenerate_modelled(&root);
             if !reports || status != ExitCode::SUCCESS {
                 return status;
-            }
-            // The GPU model of the new library first: the tier tables the
-            // shading bench writes put its columns beside the timings.
-            let model = bench_gpu_model::GpuModelArgs::write_defaults();
-            let modelled = bench_gpu_model::bench_gpu_model(&root, &model);
-            if modelled != ExitCode::SUCCESS {
-                return modelled;
             }
             let measured = bench_shading(
                 &root,
@@ -204,17 +247,7 @@ fn main() -> ExitCode {
             if film != ExitCode::SUCCESS {
                 return film;
             }
-            let glints = bench_glints(&root, true, "cargo xtask regenerate --reports");
-            if glints != ExitCode::SUCCESS {
-                return glints;
-            }
-            // Scene builds read the model (`tier = "auto"` costs): build
-            // again on the new one, then model the scene shaders built.
-            let status = regenerate(&root, false);
-            if status != ExitCode::SUCCESS {
-                return status;
-            }
-            bench_gpu_model::bench_gpu_model(&root, &model)
+            bench_glints(&root, true, "cargo xtask regenerate --reports")
         }
         Command::Bless { force } => bless(&root, force),
         Command::Gallery => gallery(&root),

@@ -12,7 +12,10 @@
 //! from the committed GPU model (`generated/reports/gpu-model.json`: AMD's
 //! compiler on Mesa RADV's null device, the executed cost of the candidate's
 //! variant on the scene's `gpu_family`, ÷ `standard` `fast`), so a choice
-//! depends on no machine's load, or from a user file (`--tier-costs`). The choice
+//! depends on no machine's load, or from a user file (`--tier-costs`). The
+//! model is looked up by variant id, so after a WGSL change it describes the
+//! old code until it is rewritten: `cargo xtask regenerate` rewrites it and
+//! builds the scenes again when the library's figures moved. The choice
 //! is the cheapest tier within the error budget; ties in cost go to the more
 //! accurate tier. FLIP is rounded to 4 decimals and costs to 3 before they
 //! are compared and recorded, so the decision and the record are byte-stable.

@@ -52,6 +52,12 @@ pub struct Options {
     pub worker: WorkerCommand,
 }
 
+/// Whether RADV's manifest is in the loader's standard folders: `Ok`, or the
+/// error `collect` would fail with (it names the package to install).
+pub fn radv_available() -> Result<()> {
+    icd::find_radv_icd(&icd::standard_icd_dirs()).map(|_| ())
+}
+
 /// Compiles the selected pipelines for each family, one child process per
 /// family, and returns the figures in family order. Fails naming the package
 /// `mesa-vulkan-drivers` when RADV is not installed.
