@@ -77,24 +77,32 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         let r_f = clamp(material.flake_roughness, 0.05, 1.0);
         let d = weft_d_ggx_nh(n, lit.h, r_f);
         let d_max = weft_d_ggx(1.0, r_f);
-        var d_flakes: f32;
-        if WEFT_TIER == TIER_SMOOTH {
-            d_flakes = d;
-        } else {
+        let flake_f0 = saturate(material.flake_color.rgb);
+        let v_f = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, r_f);
+        if WEFT_TIER == TIER_FAST {
+            // The lobe's factors other than D first: three numbers live
+            // across the glint loop instead of the inputs of V and F.
+            let lobe = intensity * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l;
             // Tangent-space half vector: its slope h.xy addresses the
             // flakes' slope cells.
             let slope = vec2<f32>(dot(frame[0], lit.h), dot(frame[1], lit.h));
-            let params = glitter_params();
             let ellipse = glint_ellipse(duv_dx, duv_dy);
             let screen_scale = clamp(material.flake_size, 1.0, 8.0);
-            let grids = glint_grids(uv, ellipse, screen_scale);
-            // fast: the same grids, cells and gates; the normal numbers of
-            // the flake counts from a polynomial erfinv.
-            d_flakes = glint_ndf(params, grids, slope, d, d_max, WEFT_TIER == TIER_FAST);
+            color += glint_ndf_fast(glitter_params(), uv, ellipse, screen_scale, slope, d, d_max) * lobe;
+        } else {
+            var d_flakes: f32;
+            if WEFT_TIER == TIER_SMOOTH {
+                d_flakes = d;
+            } else {
+                let slope = vec2<f32>(dot(frame[0], lit.h), dot(frame[1], lit.h));
+                let params = glitter_params();
+                let ellipse = glint_ellipse(duv_dx, duv_dy);
+                let screen_scale = clamp(material.flake_size, 1.0, 8.0);
+                let grids = glint_grids(uv, ellipse, screen_scale);
+                d_flakes = glint_ndf(params, grids, slope, d, d_max, false);
+            }
+            color += intensity * d_flakes * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l;
         }
-        let flake_f0 = saturate(material.flake_color.rgb);
-        let v_f = weft_v_smith_ggx_correlated(lit.n_dot_v, lit.n_dot_l, r_f);
-        color += intensity * d_flakes * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l;
     }
 
     // Never negative, at most the fp16 maximum (Rgba16Float targets).

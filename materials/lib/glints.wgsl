@@ -380,7 +380,36 @@ struct GlintGrids {
     g3: GlintGrid,
 }
 
+// The tetrahedron of the footprint's (rotation, anisotropy, level) point:
+// its vertices (rotation index / 2, ratio index, level index), their
+// barycentric weights and the bins the indices select.
+struct GlintTetra {
+    p0: vec3<f32>,
+    p1: vec3<f32>,
+    p2: vec3<f32>,
+    p3: vec3<f32>,
+    w: vec4<f32>,
+    center: bool,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
 fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids {
+    let t = glint_tetra(e, screen_scale);
+    // Rotation index 0, 1, 2 = bin0, binH, bin1 (x * 2); the centre's
+    // isotropic vertices (ratio index 0) are not rotated.
+    var out: GlintGrids;
+    out.g0 = glint_vertex_grid(uv, t.p0, t.w.x, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g1 = glint_vertex_grid(uv, t.p1, t.w.y, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g2 = glint_vertex_grid(uv, t.p2, t.w.z, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g3 = glint_vertex_grid(uv, t.p3, t.w.w, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    return out;
+}
+
+fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
     let ratio_e = min(e.major / (e.minor + 1e-8 * e.major), GLINT_MAX_RATIO);
     // Level of detail.
     let lod = glint_lod(e, screen_scale);
@@ -482,15 +511,18 @@ fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids 
             }
         }
     }
-    let w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
-
-    // Rotation index 0, 1, 2 = bin0, binH, bin1 (x * 2); the centre's
-    // isotropic vertices (ratio index 0) are not rotated.
-    var out: GlintGrids;
-    out.g0 = glint_vertex_grid(uv, p0, w.x, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g1 = glint_vertex_grid(uv, p1, w.y, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g2 = glint_vertex_grid(uv, p2, w.z, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g3 = glint_vertex_grid(uv, p3, w.w, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    var out: GlintTetra;
+    out.p0 = p0;
+    out.p1 = p1;
+    out.p2 = p2;
+    out.p3 = p3;
+    out.w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
+    out.center = center;
+    out.bin0 = theta_bin0;
+    out.bin_h = theta_bin_h;
+    out.bin1 = theta_bin1;
+    out.lod0 = lod0;
+    out.ratio0 = ratio0;
     return out;
 }
 
@@ -522,5 +554,120 @@ fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d
         + glint_sample_grid(params, grids.g1, slope, target_ndf, poly_normals)
         + glint_sample_grid(params, grids.g2, slope, target_ndf, poly_normals)
         + glint_sample_grid(params, grids.g3, slope, target_ndf, poly_normals);
+    return min(sum / params.micro_roughness, 20.0) * d_max;
+}
+
+// ---------------------------------------------------------------- fast
+
+const GLINT_FAST_MODE: u32 = 0u;
+
+// Standard normal number of the polynomial inverse CDF from a 32-bit hash:
+// x = 2u - 1 with u = h / 2^32.
+fn glint_normal_fast(h: u32) -> f32 {
+    let x = clamp(fma(f32(h), 1.0 / 2147483648.0, -1.0), -0.95, 0.95);
+    let x2 = x * x;
+    return x * (1.22250 + x2 * (0.754680 + x2 * (-1.263127 + x2 * 1.568366)));
+}
+
+// The lattice point (x, y) of the table: pcg4d(x, y, 0x676c69, 0x74746572)
+// with the first round's constant terms folded (ax = x a + c, zax = Z ax,
+// by = W (y a + c), yb = y a + c + Z by, per coordinate), gate and count.
+fn glint_corner_hits(ax: u32, zax: u32, by: u32, yb: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
+    var x = ax + by;
+    var y = yb + zax;
+    var z = 0xd224ab4u + x * y;
+    var w = 0x6ee58629u + y * z;
+    x ^= x >> 16u;
+    y ^= y >> 16u;
+    z ^= z >> 16u;
+    w ^= w >> 16u;
+    x += y * w;
+    y += z * x;
+    let gate = saturate(fma(f32(x), gate_a, gate_b));
+    let count = max(floor(fma(glint_normal_fast(y), deviation, mean1)), 1.0);
+    return gate * count;
+}
+
+fn glint_cell_fast(s_in: vec2<f32>, offset: vec2<f32>, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
+    let s = s_in + offset * GLINT_TABLE_SIZE;
+    let cell = floor(s);
+    let l = s - cell;
+    let ci = vec2<u32>(cell);
+    let t0 = ci & vec2<u32>(63u);
+    let t1 = (ci + vec2<u32>(1u)) & vec2<u32>(63u);
+    let ax = vec2<u32>(t0.x, t1.x) * 1664525u + vec2<u32>(1013904223u);
+    let zax = ax * 0xd224ab4u;
+    let ay = vec2<u32>(t0.y, t1.y) * 1664525u + vec2<u32>(1013904223u);
+    let by = ay * 0x6ee58629u;
+    let yb = ay + by * 0xd224ab4u;
+    let h00 = glint_corner_hits(ax.x, zax.x, by.x, yb.x, gate_a, gate_b, deviation, mean1);
+    let h01 = glint_corner_hits(ax.x, zax.x, by.y, yb.y, gate_a, gate_b, deviation, mean1);
+    let h10 = glint_corner_hits(ax.y, zax.y, by.x, yb.x, gate_a, gate_b, deviation, mean1);
+    let h11 = glint_corner_hits(ax.y, zax.y, by.y, yb.y, gate_a, gate_b, deviation, mean1);
+    let x0 = mix(h00, h10, l.x);
+    let x1 = mix(h01, h11, l.x);
+    return mix(x0, x1, l.y);
+}
+
+fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
+    let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
+    let base = floor(skewed);
+    let f = skewed - base;
+    let fz = 1.0 - f.x - f.y;
+    let s = select(0.0, 1.0, fz < 0.0);
+    let s2 = 2.0 * s - 1.0;
+    let id = vec2<i32>(base);
+    let si = i32(s);
+    let c0 = id + vec2<i32>(si, si);
+    let c1 = id + vec2<i32>(si, 1 - si);
+    let c2 = id + vec2<i32>(1 - si, si);
+    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+
+    let bias = 2147483648u;
+    let r0 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c0.x) + bias, bitcast<u32>(c0.y) + bias, grid.seed)));
+    let r1 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c1.x) + bias, bitcast<u32>(c1.y) + bias, grid.seed)));
+    let r2 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c2.x) + bias, bitcast<u32>(c2.y) + bias, grid.seed)));
+
+    let z = 1.41421356 * vec3<f32>(glint_erfinv_poly(2.0 * r0.x - 1.0), glint_erfinv_poly(2.0 * r1.x - 1.0), glint_erfinv_poly(2.0 * r2.x - 1.0));
+    let log_density = clamp(z * params.density_randomization + params.log_density, vec3<f32>(0.0), vec3<f32>(50.0));
+    let count = max(vec3<f32>(1e-8), grid.cell_area * exp(log_density));
+    let blended = count * grid.weight;
+
+    let one_hit = vec3<f32>(1.0) - exp2(blended * log2_q);
+    let others = max(blended - 1.0, vec3<f32>(0.0));
+    let mean1 = others * p + 1.0;
+    let deviation = sqrt(others * (p * (1.0 - p)));
+    let width = max(0.1 * saturate(one_hit * 10.0) * saturate((1.0 - one_hit) * 10.0), vec3<f32>(1e-30));
+    let gate_scale = 0.5 / width;
+    let gate_b = (one_hit + width) * gate_scale;
+    let gate_a = gate_scale * (-1.0 / 4294967296.0);
+
+    let h0 = glint_cell_fast(s_slope, r0.yz, gate_a.x, gate_b.x, deviation.x, mean1.x);
+    let h1 = glint_cell_fast(s_slope, r1.yz, gate_a.y, gate_b.y, deviation.y, mean1.y);
+    let h2 = glint_cell_fast(s_slope, r2.yz, gate_a.z, gate_b.z, deviation.z, mean1.z);
+    return dot(vec3<f32>(h0, h1, h2) / count, bary);
+}
+
+// A tetrahedron vertex as 4 bits: rotation index (0, 1, 2), ratio index
+// << 2, level index << 3 (exact: the coordinates are 0, 0.5, 1).
+fn glint_vertex_code(p: vec3<f32>) -> u32 {
+    return u32(p.x * 2.0) | (u32(p.y) << 2u) | (u32(p.z) << 3u);
+}
+
+fn glint_ndf_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    let t = glint_tetra(e, screen_scale);
+    let codes = glint_vertex_code(t.p0) | (glint_vertex_code(t.p1) << 4u)
+        | (glint_vertex_code(t.p2) << 8u) | (glint_vertex_code(t.p3) << 12u);
+    let p = params.micro_roughness * (d / d_max);
+    let log2_q = log2(1.0 - p);
+    let s_slope = abs(slope) / params.micro_roughness;
+    var sum = 0.0;
+    for (var i = 0u; i < 4u; i++) {
+        let c = (codes >> (4u * i)) & 15u;
+        let v = vec3<f32>(f32(c & 3u) * 0.5, f32((c >> 2u) & 1u), f32(c >> 3u));
+        let w = select(select(select(t.w.w, t.w.z, i == 2u), t.w.y, i == 1u), t.w.x, i == 0u);
+        let g = glint_vertex_grid(uv, v, w, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+        sum += glint_sample_grid_fast(params, g, s_slope, p, log2_q);
+    }
     return min(sum / params.micro_roughness, 20.0) * d_max;
 }
