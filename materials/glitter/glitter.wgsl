@@ -82,13 +82,18 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         if WEFT_TIER == TIER_FAST {
             // The lobe's factors other than D first: three numbers live
             // across the glint loop instead of the inputs of V and F.
-            let lobe = intensity * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l;
+            let params = glitter_params();
+            let lobe = intensity * v_f * weft_f_schlick(flake_f0, lit.v_dot_h) * light * lit.n_dot_l
+                * (d_max / params.micro_roughness);
             // Tangent-space half vector: its slope h.xy addresses the
             // flakes' slope cells.
             let slope = vec2<f32>(dot(frame[0], lit.h), dot(frame[1], lit.h));
             let ellipse = glint_ellipse(duv_dx, duv_dy);
             let screen_scale = clamp(material.flake_size, 1.0, 8.0);
-            color += glint_ndf_fast(glitter_params(), uv, ellipse, screen_scale, slope, d, d_max) * lobe;
+            // D_flakes = min(hits / s, 20) D_max (glint_ndf_fast), D_max / s
+            // folded into the lobe.
+            let hits = glint_hits_fast(params, uv, ellipse, screen_scale, slope, d, d_max);
+            color += min(hits, 20.0 * params.micro_roughness) * lobe;
         } else {
             var d_flakes: f32;
             if WEFT_TIER == TIER_SMOOTH {

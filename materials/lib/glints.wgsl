@@ -564,7 +564,7 @@ const GLINT_FAST_MODE: u32 = 0u;
 // Standard normal number of the polynomial inverse CDF from a 32-bit hash:
 // x = 2u - 1 with u = h / 2^32.
 fn glint_normal_fast(h: u32) -> f32 {
-    let x = clamp(fma(f32(h), 1.0 / 2147483648.0, -1.0), -0.95, 0.95);
+    let x = fma(f32(h), 1.0 / 2147483648.0, -1.0);
     let x2 = x * x;
     return x * (1.22250 + x2 * (0.754680 + x2 * (-1.263127 + x2 * 1.568366)));
 }
@@ -572,9 +572,9 @@ fn glint_normal_fast(h: u32) -> f32 {
 // The lattice point (x, y) of the table: pcg4d(x, y, 0x676c69, 0x74746572)
 // with the first round's constant terms folded (ax = x a + c, zax = Z ax,
 // by = W (y a + c), yb = y a + c + Z by, per coordinate), gate and count.
-fn glint_corner_hits(ax: u32, zax: u32, by: u32, yb: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
-    var x = ax + by;
-    var y = yb + zax;
+fn glint_corner_hits(ax: u32, ay: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
+    var x = ax + ay * 0x6ee58629u;
+    var y = ay + x * 0xd224ab4u;
     var z = 0xd224ab4u + x * y;
     var w = 0x6ee58629u + y * z;
     x ^= x >> 16u;
@@ -588,25 +588,43 @@ fn glint_corner_hits(ax: u32, zax: u32, by: u32, yb: u32, gate_a: f32, gate_b: f
     return gate * count;
 }
 
-fn glint_cell_fast(s_in: vec2<f32>, offset: vec2<f32>, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
-    let s = s_in + offset * GLINT_TABLE_SIZE;
+// One simplex cell of a grid: its random numbers (pcg3d of its id and the
+// grid's seed: log-density deviate, table offset), its flake count and
+// binomial law, and the hits at the four table corners around the slope,
+// bilinearly blended; returns hits / flake count.
+fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c: vec2<i32>, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
+    let h = glint_pcg3d(vec3<u32>(bitcast<u32>(c.x) + 2147483648u, bitcast<u32>(c.y) + 2147483648u, grid.seed));
+    // Log-normal flake count around the density (the reference's clamp).
+    let log_density = clamp(glint_normal_fast(h.x) * params.density_randomization + params.log_density, 0.0, 50.0);
+    let count = max(1e-8, grid.cell_area * exp(log_density));
+    let blended = count * grid.weight;
+    // Binomial law: P(at least one hit) with its smoothed gate, mean and
+    // deviation of the others (+ 1: the count of a gated corner).
+    let miss = exp2(blended * log2_q);
+    let one_hit = 1.0 - miss;
+    let others = max(blended - 1.0, 0.0);
+    let mean1 = others * p + 1.0;
+    let deviation = sqrt(others * (p * (1.0 - p)));
+    let width = max(0.1 * saturate(one_hit * 10.0) * saturate(miss * 10.0), 1e-30);
+    let inv = 0.5 / width;
+    let gate_a = inv * (-1.0 / 4294967296.0);
+    let gate_b = fma(one_hit, inv, 0.5);
+    // Slope table position: the reference's (h >> 8 + 0.5) / 2^24 x 64.
+    let s = fma(vec2<f32>(h.yz >> vec2<u32>(8u)), vec2<f32>(GLINT_TABLE_SIZE / 16777216.0), s_slope);
     let cell = floor(s);
     let l = s - cell;
     let ci = vec2<u32>(cell);
     let t0 = ci & vec2<u32>(63u);
     let t1 = (ci + vec2<u32>(1u)) & vec2<u32>(63u);
     let ax = vec2<u32>(t0.x, t1.x) * 1664525u + vec2<u32>(1013904223u);
-    let zax = ax * 0xd224ab4u;
     let ay = vec2<u32>(t0.y, t1.y) * 1664525u + vec2<u32>(1013904223u);
-    let by = ay * 0x6ee58629u;
-    let yb = ay + by * 0xd224ab4u;
-    let h00 = glint_corner_hits(ax.x, zax.x, by.x, yb.x, gate_a, gate_b, deviation, mean1);
-    let h01 = glint_corner_hits(ax.x, zax.x, by.y, yb.y, gate_a, gate_b, deviation, mean1);
-    let h10 = glint_corner_hits(ax.y, zax.y, by.x, yb.x, gate_a, gate_b, deviation, mean1);
-    let h11 = glint_corner_hits(ax.y, zax.y, by.y, yb.y, gate_a, gate_b, deviation, mean1);
+    let h00 = glint_corner_hits(ax.x, ay.x, gate_a, gate_b, deviation, mean1);
+    let h01 = glint_corner_hits(ax.x, ay.y, gate_a, gate_b, deviation, mean1);
+    let h10 = glint_corner_hits(ax.y, ay.x, gate_a, gate_b, deviation, mean1);
+    let h11 = glint_corner_hits(ax.y, ay.y, gate_a, gate_b, deviation, mean1);
     let x0 = mix(h00, h10, l.x);
     let x1 = mix(h01, h11, l.x);
-    return mix(x0, x1, l.y);
+    return mix(x0, x1, l.y) / count;
 }
 
 fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
@@ -618,56 +636,45 @@ fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f3
     let s2 = 2.0 * s - 1.0;
     let id = vec2<i32>(base);
     let si = i32(s);
-    let c0 = id + vec2<i32>(si, si);
-    let c1 = id + vec2<i32>(si, 1 - si);
-    let c2 = id + vec2<i32>(1 - si, si);
-    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
-
-    let bias = 2147483648u;
-    let r0 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c0.x) + bias, bitcast<u32>(c0.y) + bias, grid.seed)));
-    let r1 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c1.x) + bias, bitcast<u32>(c1.y) + bias, grid.seed)));
-    let r2 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c2.x) + bias, bitcast<u32>(c2.y) + bias, grid.seed)));
-
-    let z = 1.41421356 * vec3<f32>(glint_erfinv_poly(2.0 * r0.x - 1.0), glint_erfinv_poly(2.0 * r1.x - 1.0), glint_erfinv_poly(2.0 * r2.x - 1.0));
-    let log_density = clamp(z * params.density_randomization + params.log_density, vec3<f32>(0.0), vec3<f32>(50.0));
-    let count = max(vec3<f32>(1e-8), grid.cell_area * exp(log_density));
-    let blended = count * grid.weight;
-
-    let one_hit = vec3<f32>(1.0) - exp2(blended * log2_q);
-    let others = max(blended - 1.0, vec3<f32>(0.0));
-    let mean1 = others * p + 1.0;
-    let deviation = sqrt(others * (p * (1.0 - p)));
-    let width = max(0.1 * saturate(one_hit * 10.0) * saturate((1.0 - one_hit) * 10.0), vec3<f32>(1e-30));
-    let gate_scale = 0.5 / width;
-    let gate_b = (one_hit + width) * gate_scale;
-    let gate_a = gate_scale * (-1.0 / 4294967296.0);
-
-    let h0 = glint_cell_fast(s_slope, r0.yz, gate_a.x, gate_b.x, deviation.x, mean1.x);
-    let h1 = glint_cell_fast(s_slope, r1.yz, gate_a.y, gate_b.y, deviation.y, mean1.y);
-    let h2 = glint_cell_fast(s_slope, r2.yz, gate_a.z, gate_b.z, deviation.z, mean1.z);
-    return dot(vec3<f32>(h0, h1, h2) / count, bary);
+    var sum = -fz * s2 * glint_cell_fast(params, grid, id + vec2<i32>(si, si), s_slope, p, log2_q);
+    sum += (s - f.y * s2) * glint_cell_fast(params, grid, id + vec2<i32>(si, 1 - si), s_slope, p, log2_q);
+    sum += (s - f.x * s2) * glint_cell_fast(params, grid, id + vec2<i32>(1 - si, si), s_slope, p, log2_q);
+    return sum;
 }
 
-// A tetrahedron vertex as 4 bits: rotation index (0, 1, 2), ratio index
-// << 2, level index << 3 (exact: the coordinates are 0, 0.5, 1).
-fn glint_vertex_code(p: vec3<f32>) -> u32 {
-    return u32(p.x * 2.0) | (u32(p.y) << 2u) | (u32(p.z) << 3u);
+// A tetrahedron vertex as 4 bits: rotation index (0, 1, 2 = bin0, binH,
+// bin1; 3 = unrotated, the centre's isotropic vertices), ratio index << 2,
+// level index << 3 (exact: the coordinates are 0, 0.5 or 1).
+fn glint_vertex_code(p: vec3<f32>, center: bool) -> u32 {
+    let rot = select(u32(p.x * 2.0), 3u, center && p.y == 0.0);
+    return rot | (u32(p.y) << 2u) | (u32(p.z) << 3u);
 }
 
-fn glint_ndf_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+// The fast tier's sum over the four grids of weight x hits / N (the
+// reference's, before / s x D_max): the grids one at a time in a loop, the
+// tetrahedron's vertices packed into 16 bits, so that little stays live.
+fn glint_hits_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
     let t = glint_tetra(e, screen_scale);
-    let codes = glint_vertex_code(t.p0) | (glint_vertex_code(t.p1) << 4u)
-        | (glint_vertex_code(t.p2) << 8u) | (glint_vertex_code(t.p3) << 12u);
+    let codes = glint_vertex_code(t.p0, t.center) | (glint_vertex_code(t.p1, t.center) << 4u)
+        | (glint_vertex_code(t.p2, t.center) << 8u) | (glint_vertex_code(t.p3, t.center) << 12u);
     let p = params.micro_roughness * (d / d_max);
     let log2_q = log2(1.0 - p);
-    let s_slope = abs(slope) / params.micro_roughness;
+    // The slope in table cells, with the offset's + 0.5 / 2^24 x 64.
+    let s_slope = abs(slope) / params.micro_roughness + GLINT_TABLE_SIZE * 0.5 / 16777216.0;
     var sum = 0.0;
     for (var i = 0u; i < 4u; i++) {
         let c = (codes >> (4u * i)) & 15u;
-        let v = vec3<f32>(f32(c & 3u) * 0.5, f32((c >> 2u) & 1u), f32(c >> 3u));
-        let w = select(select(select(t.w.w, t.w.z, i == 2u), t.w.y, i == 1u), t.w.x, i == 0u);
-        let g = glint_vertex_grid(uv, v, w, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
-        sum += glint_sample_grid_fast(params, g, s_slope, p, log2_q);
+        let rot = c & 3u;
+        let theta = select(select(select(0.0, t.bin1, rot == 2u), t.bin_h, rot == 1u), t.bin0, rot == 0u);
+        let ratio = select(t.ratio0, t.ratio0 * 2.0, (c & 4u) != 0u);
+        let lod = t.lod0 + f32(c >> 3u);
+        let w = select(select(select(1.0 - t.w.x - t.w.y - t.w.z, t.w.z, i == 2u), t.w.y, i == 1u), t.w.x, i == 0u);
+        sum += glint_sample_grid_fast(params, glint_make_grid(uv, lod, theta, ratio, w), s_slope, p, log2_q);
     }
-    return min(sum / params.micro_roughness, 20.0) * d_max;
+    return sum;
+}
+
+// The fast tier's glint NDF (as glint_ndf: at most 20 D_max).
+fn glint_ndf_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    return min(glint_hits_fast(params, uv, e, screen_scale, slope, d, d_max) / params.micro_roughness, 20.0) * d_max;
 }
