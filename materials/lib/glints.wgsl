@@ -636,9 +636,13 @@ fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f3
     let s2 = 2.0 * s - 1.0;
     let id = vec2<i32>(base);
     let si = i32(s);
-    var sum = -fz * s2 * glint_cell_fast(params, grid, id + vec2<i32>(si, si), s_slope, p, log2_q);
-    sum += (s - f.y * s2) * glint_cell_fast(params, grid, id + vec2<i32>(si, 1 - si), s_slope, p, log2_q);
-    sum += (s - f.x * s2) * glint_cell_fast(params, grid, id + vec2<i32>(1 - si, si), s_slope, p, log2_q);
+    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+    var sum = 0.0;
+    for (var k = 0; k < 3; k++) {
+        let c = id + vec2<i32>(select(si, 1 - si, k == 2), select(si, 1 - si, k == 1));
+        let b = select(select(bary.z, bary.y, k == 1), bary.x, k == 0);
+        sum += b * glint_cell_fast(params, grid, c, s_slope, p, log2_q);
+    }
     return sum;
 }
 
