@@ -409,7 +409,21 @@ fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids 
     return out;
 }
 
-fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
+// The footprint's point in the (rotation, anisotropy, level) space: the
+// cell's origin (bins, lod0, ratio0) and the point's position in it.
+struct GlintFootprintCell {
+    theta_lerp: f32,
+    ratio_lerp: f32,
+    lod_lerp: f32,
+    center: bool,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
+fn glint_footprint_cell(e: GlintEllipse, screen_scale: f32) -> GlintFootprintCell {
     let ratio_e = min(e.major / (e.minor + 1e-8 * e.major), GLINT_MAX_RATIO);
     // Level of detail.
     let lod = glint_lod(e, screen_scale);
@@ -433,15 +447,32 @@ fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
     let theta = atan2(-e.major_dir.x, e.major_dir.y);
     let theta_q = theta / q;
     let h0 = floor(theta_q);
-    var theta_lerp = saturate(theta_q - h0);
+    let theta_lerp = saturate(theta_q - h0);
     let i0 = h0 - per_pi * floor(h0 / per_pi);
     let i1 = (i0 + 1.0) - per_pi * floor((i0 + 1.0) / per_pi);
     let theta_bin0 = i0 * q;
     let theta_bin_h = (i0 + 0.5) * q;
     let theta_bin1 = i1 * q;
+    var out: GlintFootprintCell;
+    out.theta_lerp = theta_lerp;
+    out.ratio_lerp = ratio_lerp;
+    out.lod_lerp = lod_lerp;
+    out.center = ratio0 == 1.0;
+    out.bin0 = theta_bin0;
+    out.bin_h = theta_bin_h;
+    out.bin1 = theta_bin1;
+    out.lod0 = lod0;
+    out.ratio0 = ratio0;
+    return out;
+}
 
+fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
+    let k = glint_footprint_cell(e, screen_scale);
+    var theta_lerp = k.theta_lerp;
+    let ratio_lerp = k.ratio_lerp;
+    let lod_lerp = k.lod_lerp;
     // Tetrahedron of the (rotation, ratio, level) cell holding the point.
-    let center = ratio0 == 1.0;
+    let center = k.center;
     var p0: vec3<f32>;
     var p1: vec3<f32>;
     var p2: vec3<f32>;
@@ -518,11 +549,11 @@ fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
     out.p3 = p3;
     out.w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
     out.center = center;
-    out.bin0 = theta_bin0;
-    out.bin_h = theta_bin_h;
-    out.bin1 = theta_bin1;
-    out.lod0 = lod0;
-    out.ratio0 = ratio0;
+    out.bin0 = k.bin0;
+    out.bin_h = k.bin_h;
+    out.bin1 = k.bin1;
+    out.lod0 = k.lod0;
+    out.ratio0 = k.ratio0;
     return out;
 }
 
@@ -558,8 +589,6 @@ fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d
 }
 
 // ---------------------------------------------------------------- fast
-
-const GLINT_FAST_MODE: u32 = 0u;
 
 // Standard normal number of the polynomial inverse CDF from a 32-bit hash:
 // x = 2u - 1 with u = h / 2^32.
@@ -646,21 +675,81 @@ fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f3
     return sum;
 }
 
-// A tetrahedron vertex as 4 bits: rotation index (0, 1, 2 = bin0, binH,
-// bin1; 3 = unrotated, the centre's isotropic vertices), ratio index << 2,
-// level index << 3 (exact: the coordinates are 0, 0.5 or 1).
-fn glint_vertex_code(p: vec3<f32>, center: bool) -> u32 {
-    let rot = select(u32(p.x * 2.0), 3u, center && p.y == 0.0);
-    return rot | (u32(p.y) << 2u) | (u32(p.z) << 3u);
+// A vertex of the tetrahedron as 4 bits (exact: its coordinates are 0,
+// 0.5 or 1): rotation index (0, 1, 2 = bin0, binH, bin1; 3 = unrotated, the
+// centre's isotropic vertices), ratio index << 2, level index << 3.
+// glint_tetra's tetrahedra as codes, four to a constant (p0 | p1 << 4 |
+// p2 << 8 | p3 << 12), in the reference's order. Non-centre vertices a..j:
+// a 4, b 0, c 5, d 2, e 6, f 12, g 8, h 13, i 10, j 14; centre vertices:
+// a 4, b 3, c 6, d 12, e 11, f 14.
+const GLINT_TET_A_UP: u32 = 4u | (12u << 4u) | (13u << 8u) | (8u << 12u);    // a f h g
+const GLINT_TET_A_DOWN: u32 = 5u | (4u << 4u) | (13u << 8u) | (8u << 12u);  // c a h g
+const GLINT_TET_A_LOW: u32 = 0u | (4u << 4u) | (5u << 8u) | (8u << 12u);    // b a c g
+const GLINT_TET_B_UP: u32 = 0u | (8u << 4u) | (10u << 8u) | (5u << 12u);    // b g i c
+const GLINT_TET_B_DOWN: u32 = 2u | (0u << 4u) | (5u << 8u) | (10u << 12u);  // d b c i
+const GLINT_TET_B_HIGH: u32 = 5u | (8u << 4u) | (13u << 8u) | (10u << 12u); // c g h i
+const GLINT_TET_C_UP: u32 = 5u | (14u << 4u) | (13u << 8u) | (10u << 12u);  // c j h i
+const GLINT_TET_C_DOWN: u32 = 6u | (10u << 4u) | (5u << 8u) | (14u << 12u); // e i c j
+const GLINT_TET_C_LOW: u32 = 2u | (6u << 4u) | (5u << 8u) | (10u << 12u);   // d e c i
+const GLINT_TET_CENTER_UP: u32 = 4u | (11u << 4u) | (12u << 8u) | (14u << 12u);   // a e d f
+const GLINT_TET_CENTER_DOWN: u32 = 14u | (11u << 4u) | (6u << 8u) | (4u << 12u);  // f e c a
+const GLINT_TET_CENTER_LOW: u32 = 3u | (4u << 4u) | (6u << 8u) | (11u << 12u);    // b a c e
+
+// A vertex's coordinates from its code (exact).
+fn glint_vertex_of_code(c: u32) -> vec3<f32> {
+    let rot = c & 3u;
+    return vec3<f32>(select(f32(rot) * 0.5, 0.0, rot == 3u), f32((c >> 2u) & 1u), f32(c >> 3u));
+}
+
+// glint_tetra without branches: every test of the reference's decision
+// tree evaluated (the same expressions), the tetrahedron picked by selects
+// as packed codes; the same vertices and weights.
+struct GlintTetraFast {
+    codes: u32,
+    w: vec4<f32>,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
+fn glint_tetra_fast(e: GlintEllipse, screen_scale: f32) -> GlintTetraFast {
+    let k = glint_footprint_cell(e, screen_scale);
+    let t = k.theta_lerp;
+    let r = k.ratio_lerp;
+    let l = k.lod_lerp;
+    let upper = l > 1.0 - r;
+    let upper_left = (l - (1.0 - r)) / max(r, 1e-8);
+    let half_width = 0.5 * (1.0 - r);
+    let center_codes = select(GLINT_TET_CENTER_LOW, select(GLINT_TET_CENTER_DOWN, GLINT_TET_CENTER_UP, upper_left > t), upper);
+    let a_codes = select(GLINT_TET_A_LOW, select(GLINT_TET_A_DOWN, GLINT_TET_A_UP, upper_left > t * 2.0 / max(r, 1e-8)), upper);
+    let b_codes = select(GLINT_TET_B_HIGH, select(GLINT_TET_B_DOWN, GLINT_TET_B_UP,
+        l / max(1.0 - r, 1e-8) > (t - (0.5 - half_width)) / max(2.0 * half_width, 1e-8)), l < 1.0 - r);
+    let c_codes = select(GLINT_TET_C_LOW, select(GLINT_TET_C_DOWN, GLINT_TET_C_UP,
+        upper_left > ((t - 0.5) * 2.0 - (1.0 - r)) / max(r, 1e-8)), upper);
+    let prism_a = t < 0.5 && t * 2.0 < r;
+    let prism_b = 1.0 - (t - 0.5) * 2.0 > r;
+    let codes = select(select(select(c_codes, b_codes, prism_b), a_codes, prism_a), center_codes, k.center);
+    let point = vec3<f32>(select(t, t * r, k.center), r, l);
+    var out: GlintTetraFast;
+    out.codes = codes;
+    out.w = glint_tetra_weights(point, glint_vertex_of_code(codes & 15u), glint_vertex_of_code((codes >> 4u) & 15u),
+        glint_vertex_of_code((codes >> 8u) & 15u), glint_vertex_of_code(codes >> 12u));
+    out.bin0 = k.bin0;
+    out.bin_h = k.bin_h;
+    out.bin1 = k.bin1;
+    out.lod0 = k.lod0;
+    out.ratio0 = k.ratio0;
+    return out;
 }
 
 // The fast tier's sum over the four grids of weight x hits / N (the
 // reference's, before / s x D_max): the grids one at a time in a loop, the
 // tetrahedron's vertices packed into 16 bits, so that little stays live.
 fn glint_hits_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
-    let t = glint_tetra(e, screen_scale);
-    let codes = glint_vertex_code(t.p0, t.center) | (glint_vertex_code(t.p1, t.center) << 4u)
-        | (glint_vertex_code(t.p2, t.center) << 8u) | (glint_vertex_code(t.p3, t.center) << 12u);
+    let t = glint_tetra_fast(e, screen_scale);
+    let codes = t.codes;
     let p = params.micro_roughness * (d / d_max);
     let log2_q = log2(1.0 - p);
     // The slope in table cells, with the offset's + 0.5 / 2^24 x 64.
