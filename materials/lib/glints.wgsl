@@ -43,8 +43,9 @@
 // - The binomial's mean and deviation use max(N - 1, 0): with fewer than one
 //   flake in a blended cell the published sqrt takes a negative argument.
 // - Barycentric weights in the tetrahedron by Cramer's rule.
-// The fast tier evaluates the same grids and cells with the standard normal
-// numbers (flake counts) from a polynomial erfinv (glint_erfinv_poly).
+// The fast tier (glint_hits_fast, end of file) evaluates the same grids,
+// cells, table corners and hashes with the standard normal numbers from a
+// polynomial (glint_normal_fast), without branches, one grid at a time.
 // The guards of the paper are kept: log density clamped to [0, 50], flake
 // count >= 1e-8, ellipse ratio over (minor + 1e-8), result <= 20 D_max.
 
@@ -157,12 +158,11 @@ fn glint_erfinv(x: f32) -> f32 {
     return p * x;
 }
 
-// The fast tier's erfinv: a degree-7 odd polynomial, least-squares fit of
+// A polynomial erfinv: a degree-7 odd polynomial, least-squares fit of
 // Giles' erfinv over |x| <= 0.95 (standard normal numbers within +-1.96,
 // error <= 0.033 there), x clamped to that range: the 5 % of draws further
-// out get +-1.96. Four multiply-adds instead of a log and two polynomial
-// branches; erfinv was roughly a third of the reference's frame on lavapipe
-// (README, "fast").
+// out get +-1.96. The previous fast tier's (glint_ndf with poly_normals);
+// the fast tier now uses glint_normal_fast (the same fit, unclamped).
 fn glint_erfinv_poly(x_in: f32) -> f32 {
     let x = clamp(x_in, -0.95, 0.95);
     let x2 = x * x;
@@ -576,9 +576,9 @@ fn glint_vertex_grid(
 // The glint NDF at the tangent-space half vector's slope h.xy, for a target
 // NDF value d (D(h)) and its maximum d_max: sum of the grids' hit fractions
 // / s x D_max, at most 20 D_max (the paper's guard at grazing footprints).
-// `poly_normals` (the fast tier): the standard normal numbers from
-// glint_erfinv_poly; the gates' uniform numbers, grids and cells are the
-// same, so the same flakes sparkle.
+// `poly_normals`: the standard normal numbers from glint_erfinv_poly (the
+// previous fast tier; the reference passes false); the gates' uniform
+// numbers, grids and cells are the same, so the same flakes sparkle.
 fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d_max: f32, poly_normals: bool) -> f32 {
     let target_ndf = d / d_max;
     let sum = glint_sample_grid(params, grids.g0, slope, target_ndf, poly_normals)
@@ -589,18 +589,40 @@ fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d
 }
 
 // ---------------------------------------------------------------- fast
+//
+// The fast tier (glint_hits_fast): the reference's glint NDF on the same
+// four grids, twelve cells and 48 table corners with the same hashes (the
+// same gates: the same flakes sparkle), written for the GPU:
+// - table addressing in integers (lattice point & 63, as the reference's
+//   c - 64 floor(c / 64)), pcg4d's constant inputs folded by the compiler,
+//   only the two words used (gate, count);
+// - uniform numbers straight from the hash words (f32(h) / 2^32: the same
+//   number to 2^-24), the smoothed gate as one clamped multiply-add;
+// - every standard normal number (cell log-density, corner counts) from a
+//   degree-7 odd polynomial of x = 2u - 1 (glint_normal_fast), no log;
+// - the reference's tetrahedron decision tree without branches
+//   (glint_tetra_fast: the same tests, the vertices as packed codes, the
+//   same barycentric weights);
+// - the grids one at a time in a loop and the cells one after the other,
+//   so that 64 VGPRs suffice (60 on gfx1100).
 
-// Standard normal number of the polynomial inverse CDF from a 32-bit hash:
-// x = 2u - 1 with u = h / 2^32.
+// Standard normal number from a 32-bit hash h (u = h / 2^32, x = 2u - 1):
+// sqrt(2) erfinv(x) by a degree-7 odd polynomial, least-squares fit over
+// |x| <= 0.95 (error <= 0.034 there), unclamped: out to |x| = 1 it rises to
+// 2.28 where the true tails reach 2.6 to 5.3 (rms error 0.078 over u,
+// against 0.120 with the 1.96 clamp of glint_erfinv_poly).
 fn glint_normal_fast(h: u32) -> f32 {
     let x = fma(f32(h), 1.0 / 2147483648.0, -1.0);
     let x2 = x * x;
     return x * (1.22250 + x2 * (0.754680 + x2 * (-1.263127 + x2 * 1.568366)));
 }
 
-// The lattice point (x, y) of the table: pcg4d(x, y, 0x676c69, 0x74746572)
-// with the first round's constant terms folded (ax = x a + c, zax = Z ax,
-// by = W (y a + c), yb = y a + c + Z by, per coordinate), gate and count.
+// Hits at the table's lattice point (x, y): pcg4d(x, y, 0x676c69,
+// 0x74746572) of the reference's glint_corner with its first multiply-adds
+// done per coordinate (ax = x a + c, ay = y a + c) and the constant lanes
+// folded (Z = 0x676c69 a + c, W = 0x74746572 a + c); the gate from word x,
+// 1 + the count of the others from word y (max(., 1) = 1 + the reference's
+// clamp at 0; its clamp at N never binds: p <= 0.05 and |z| <= 2.3).
 fn glint_corner_hits(ax: u32, ay: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
     var x = ax + ay * 0x6ee58629u;
     var y = ay + x * 0xd224ab4u;
@@ -656,6 +678,8 @@ fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c: vec2<i32>, s_slope: 
     return mix(x0, x1, l.y) / count;
 }
 
+// One grid (glint_sample_grid): its three simplex cells blended by the
+// point's barycentric coordinates.
 fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
     let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
     let base = floor(skewed);
