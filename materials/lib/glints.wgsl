@@ -43,8 +43,9 @@
 // - The binomial's mean and deviation use max(N - 1, 0): with fewer than one
 //   flake in a blended cell the published sqrt takes a negative argument.
 // - Barycentric weights in the tetrahedron by Cramer's rule.
-// The fast tier evaluates the same grids and cells with the standard normal
-// numbers (flake counts) from a polynomial erfinv (glint_erfinv_poly).
+// The fast tier (glint_hits_fast, end of file) evaluates the same grids,
+// cells, table corners and hashes with the standard normal numbers from a
+// polynomial (glint_normal_fast), without branches, one grid at a time.
 // The guards of the paper are kept: log density clamped to [0, 50], flake
 // count >= 1e-8, ellipse ratio over (minor + 1e-8), result <= 20 D_max.
 
@@ -157,12 +158,11 @@ fn glint_erfinv(x: f32) -> f32 {
     return p * x;
 }
 
-// The fast tier's erfinv: a degree-7 odd polynomial, least-squares fit of
+// A polynomial erfinv: a degree-7 odd polynomial, least-squares fit of
 // Giles' erfinv over |x| <= 0.95 (standard normal numbers within +-1.96,
 // error <= 0.033 there), x clamped to that range: the 5 % of draws further
-// out get +-1.96. Four multiply-adds instead of a log and two polynomial
-// branches; erfinv was roughly a third of the reference's frame on lavapipe
-// (README, "fast").
+// out get +-1.96. The previous fast tier's (glint_ndf with poly_normals);
+// the fast tier now uses glint_normal_fast (the same fit, unclamped).
 fn glint_erfinv_poly(x_in: f32) -> f32 {
     let x = clamp(x_in, -0.95, 0.95);
     let x2 = x * x;
@@ -380,7 +380,50 @@ struct GlintGrids {
     g3: GlintGrid,
 }
 
+// The tetrahedron of the footprint's (rotation, anisotropy, level) point:
+// its vertices (rotation index / 2, ratio index, level index), their
+// barycentric weights and the bins the indices select.
+struct GlintTetra {
+    p0: vec3<f32>,
+    p1: vec3<f32>,
+    p2: vec3<f32>,
+    p3: vec3<f32>,
+    w: vec4<f32>,
+    center: bool,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
 fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids {
+    let t = glint_tetra(e, screen_scale);
+    // Rotation index 0, 1, 2 = bin0, binH, bin1 (x * 2); the centre's
+    // isotropic vertices (ratio index 0) are not rotated.
+    var out: GlintGrids;
+    out.g0 = glint_vertex_grid(uv, t.p0, t.w.x, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g1 = glint_vertex_grid(uv, t.p1, t.w.y, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g2 = glint_vertex_grid(uv, t.p2, t.w.z, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    out.g3 = glint_vertex_grid(uv, t.p3, t.w.w, t.center, t.bin0, t.bin_h, t.bin1, t.lod0, t.ratio0);
+    return out;
+}
+
+// The footprint's point in the (rotation, anisotropy, level) space: the
+// cell's origin (bins, lod0, ratio0) and the point's position in it.
+struct GlintFootprintCell {
+    theta_lerp: f32,
+    ratio_lerp: f32,
+    lod_lerp: f32,
+    center: bool,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
+fn glint_footprint_cell(e: GlintEllipse, screen_scale: f32) -> GlintFootprintCell {
     let ratio_e = min(e.major / (e.minor + 1e-8 * e.major), GLINT_MAX_RATIO);
     // Level of detail.
     let lod = glint_lod(e, screen_scale);
@@ -404,15 +447,32 @@ fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids 
     let theta = atan2(-e.major_dir.x, e.major_dir.y);
     let theta_q = theta / q;
     let h0 = floor(theta_q);
-    var theta_lerp = saturate(theta_q - h0);
+    let theta_lerp = saturate(theta_q - h0);
     let i0 = h0 - per_pi * floor(h0 / per_pi);
     let i1 = (i0 + 1.0) - per_pi * floor((i0 + 1.0) / per_pi);
     let theta_bin0 = i0 * q;
     let theta_bin_h = (i0 + 0.5) * q;
     let theta_bin1 = i1 * q;
+    var out: GlintFootprintCell;
+    out.theta_lerp = theta_lerp;
+    out.ratio_lerp = ratio_lerp;
+    out.lod_lerp = lod_lerp;
+    out.center = ratio0 == 1.0;
+    out.bin0 = theta_bin0;
+    out.bin_h = theta_bin_h;
+    out.bin1 = theta_bin1;
+    out.lod0 = lod0;
+    out.ratio0 = ratio0;
+    return out;
+}
 
+fn glint_tetra(e: GlintEllipse, screen_scale: f32) -> GlintTetra {
+    let k = glint_footprint_cell(e, screen_scale);
+    var theta_lerp = k.theta_lerp;
+    let ratio_lerp = k.ratio_lerp;
+    let lod_lerp = k.lod_lerp;
     // Tetrahedron of the (rotation, ratio, level) cell holding the point.
-    let center = ratio0 == 1.0;
+    let center = k.center;
     var p0: vec3<f32>;
     var p1: vec3<f32>;
     var p2: vec3<f32>;
@@ -482,15 +542,18 @@ fn glint_grids(uv: vec2<f32>, e: GlintEllipse, screen_scale: f32) -> GlintGrids 
             }
         }
     }
-    let w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
-
-    // Rotation index 0, 1, 2 = bin0, binH, bin1 (x * 2); the centre's
-    // isotropic vertices (ratio index 0) are not rotated.
-    var out: GlintGrids;
-    out.g0 = glint_vertex_grid(uv, p0, w.x, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g1 = glint_vertex_grid(uv, p1, w.y, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g2 = glint_vertex_grid(uv, p2, w.z, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
-    out.g3 = glint_vertex_grid(uv, p3, w.w, center, theta_bin0, theta_bin_h, theta_bin1, lod0, ratio0);
+    var out: GlintTetra;
+    out.p0 = p0;
+    out.p1 = p1;
+    out.p2 = p2;
+    out.p3 = p3;
+    out.w = glint_tetra_weights(vec3<f32>(theta_lerp, ratio_lerp, lod_lerp), p0, p1, p2, p3);
+    out.center = center;
+    out.bin0 = k.bin0;
+    out.bin_h = k.bin_h;
+    out.bin1 = k.bin1;
+    out.lod0 = k.lod0;
+    out.ratio0 = k.ratio0;
     return out;
 }
 
@@ -513,9 +576,9 @@ fn glint_vertex_grid(
 // The glint NDF at the tangent-space half vector's slope h.xy, for a target
 // NDF value d (D(h)) and its maximum d_max: sum of the grids' hit fractions
 // / s x D_max, at most 20 D_max (the paper's guard at grazing footprints).
-// `poly_normals` (the fast tier): the standard normal numbers from
-// glint_erfinv_poly; the gates' uniform numbers, grids and cells are the
-// same, so the same flakes sparkle.
+// `poly_normals`: the standard normal numbers from glint_erfinv_poly (the
+// previous fast tier; the reference passes false); the gates' uniform
+// numbers, grids and cells are the same, so the same flakes sparkle.
 fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d_max: f32, poly_normals: bool) -> f32 {
     let target_ndf = d / d_max;
     let sum = glint_sample_grid(params, grids.g0, slope, target_ndf, poly_normals)
@@ -523,4 +586,212 @@ fn glint_ndf(params: GlintParams, grids: GlintGrids, slope: vec2<f32>, d: f32, d
         + glint_sample_grid(params, grids.g2, slope, target_ndf, poly_normals)
         + glint_sample_grid(params, grids.g3, slope, target_ndf, poly_normals);
     return min(sum / params.micro_roughness, 20.0) * d_max;
+}
+
+// ---------------------------------------------------------------- fast
+//
+// The fast tier (glint_hits_fast): the reference's glint NDF on the same
+// four grids, twelve cells and 48 table corners with the same hashes (the
+// same gates: the same flakes sparkle), written for the GPU:
+// - table addressing in integers (lattice point & 63, as the reference's
+//   c - 64 floor(c / 64)), pcg4d's constant inputs folded by the compiler,
+//   only the two words used (gate, count);
+// - uniform numbers straight from the hash words (f32(h) / 2^32: the same
+//   number to 2^-24), the smoothed gate as one clamped multiply-add;
+// - every standard normal number (cell log-density, corner counts) from a
+//   degree-7 odd polynomial of x = 2u - 1 (glint_normal_fast), no log;
+// - the reference's tetrahedron decision tree without branches
+//   (glint_tetra_fast: the same tests, the vertices as packed codes, the
+//   same barycentric weights);
+// - the grids one at a time in a loop and the cells one after the other,
+//   so that 64 VGPRs suffice (60 on gfx1100).
+
+// Standard normal number from a 32-bit hash h (u = h / 2^32, x = 2u - 1):
+// sqrt(2) erfinv(x) by a degree-7 odd polynomial, least-squares fit over
+// |x| <= 0.95 (error <= 0.034 there), unclamped: out to |x| = 1 it rises to
+// 2.28 where the true tails reach 2.6 to 5.3 (rms error 0.078 over u,
+// against 0.120 with the 1.96 clamp of glint_erfinv_poly).
+fn glint_normal_fast(h: u32) -> f32 {
+    let x = fma(f32(h), 1.0 / 2147483648.0, -1.0);
+    let x2 = x * x;
+    return x * (1.22250 + x2 * (0.754680 + x2 * (-1.263127 + x2 * 1.568366)));
+}
+
+// Hits at the table's lattice point (x, y): pcg4d(x, y, 0x676c69,
+// 0x74746572) of the reference's glint_corner with its first multiply-adds
+// done per coordinate (ax = x a + c, ay = y a + c) and the constant lanes
+// folded (Z = 0x676c69 a + c, W = 0x74746572 a + c); the gate from word x,
+// 1 + the count of the others from word y (max(., 1) = 1 + the reference's
+// clamp at 0; its clamp at N never binds: p <= 0.05 and |z| <= 2.3).
+fn glint_corner_hits(ax: u32, ay: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1: f32) -> f32 {
+    var x = ax + ay * 0x6ee58629u;
+    var y = ay + x * 0xd224ab4u;
+    var z = 0xd224ab4u + x * y;
+    var w = 0x6ee58629u + y * z;
+    x ^= x >> 16u;
+    y ^= y >> 16u;
+    z ^= z >> 16u;
+    w ^= w >> 16u;
+    x += y * w;
+    y += z * x;
+    let gate = saturate(fma(f32(x), gate_a, gate_b));
+    let count = max(floor(fma(glint_normal_fast(y), deviation, mean1)), 1.0);
+    return gate * count;
+}
+
+// One simplex cell of a grid: its random numbers (pcg3d of its id and the
+// grid's seed: log-density deviate, table offset), its flake count and
+// binomial law, and the hits at the four table corners around the slope,
+// bilinearly blended; returns hits / flake count.
+fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c: vec2<i32>, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
+    let h = glint_pcg3d(vec3<u32>(bitcast<u32>(c.x) + 2147483648u, bitcast<u32>(c.y) + 2147483648u, grid.seed));
+    // Log-normal flake count around the density (the reference's clamp).
+    let log_density = clamp(glint_normal_fast(h.x) * params.density_randomization + params.log_density, 0.0, 50.0);
+    let count = max(1e-8, grid.cell_area * exp(log_density));
+    let blended = count * grid.weight;
+    // Binomial law: P(at least one hit) with its smoothed gate, mean and
+    // deviation of the others (+ 1: the count of a gated corner).
+    let miss = exp2(blended * log2_q);
+    let one_hit = 1.0 - miss;
+    let others = max(blended - 1.0, 0.0);
+    let mean1 = others * p + 1.0;
+    let deviation = sqrt(others * (p * (1.0 - p)));
+    let width = max(0.1 * saturate(one_hit * 10.0) * saturate(miss * 10.0), 1e-30);
+    let inv = 0.5 / width;
+    let gate_a = inv * (-1.0 / 4294967296.0);
+    let gate_b = fma(one_hit, inv, 0.5);
+    // Slope table position: the reference's (h >> 8 + 0.5) / 2^24 x 64.
+    let s = fma(vec2<f32>(h.yz >> vec2<u32>(8u)), vec2<f32>(GLINT_TABLE_SIZE / 16777216.0), s_slope);
+    let cell = floor(s);
+    let l = s - cell;
+    let ci = vec2<u32>(cell);
+    let t0 = ci & vec2<u32>(63u);
+    let t1 = (ci + vec2<u32>(1u)) & vec2<u32>(63u);
+    let ax = vec2<u32>(t0.x, t1.x) * 1664525u + vec2<u32>(1013904223u);
+    let ay = vec2<u32>(t0.y, t1.y) * 1664525u + vec2<u32>(1013904223u);
+    let h00 = glint_corner_hits(ax.x, ay.x, gate_a, gate_b, deviation, mean1);
+    let h01 = glint_corner_hits(ax.x, ay.y, gate_a, gate_b, deviation, mean1);
+    let h10 = glint_corner_hits(ax.y, ay.x, gate_a, gate_b, deviation, mean1);
+    let h11 = glint_corner_hits(ax.y, ay.y, gate_a, gate_b, deviation, mean1);
+    let x0 = mix(h00, h10, l.x);
+    let x1 = mix(h01, h11, l.x);
+    return mix(x0, x1, l.y) / count;
+}
+
+// One grid (glint_sample_grid): its three simplex cells blended by the
+// point's barycentric coordinates.
+fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
+    let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
+    let base = floor(skewed);
+    let f = skewed - base;
+    let fz = 1.0 - f.x - f.y;
+    let s = select(0.0, 1.0, fz < 0.0);
+    let s2 = 2.0 * s - 1.0;
+    let id = vec2<i32>(base);
+    let si = i32(s);
+    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+    var sum = 0.0;
+    for (var k = 0; k < 3; k++) {
+        let c = id + vec2<i32>(select(si, 1 - si, k == 2), select(si, 1 - si, k == 1));
+        let b = select(select(bary.z, bary.y, k == 1), bary.x, k == 0);
+        sum += b * glint_cell_fast(params, grid, c, s_slope, p, log2_q);
+    }
+    return sum;
+}
+
+// A vertex of the tetrahedron as 4 bits (exact: its coordinates are 0,
+// 0.5 or 1): rotation index (0, 1, 2 = bin0, binH, bin1; 3 = unrotated, the
+// centre's isotropic vertices), ratio index << 2, level index << 3.
+// glint_tetra's tetrahedra as codes, four to a constant (p0 | p1 << 4 |
+// p2 << 8 | p3 << 12), in the reference's order. Non-centre vertices a..j:
+// a 4, b 0, c 5, d 2, e 6, f 12, g 8, h 13, i 10, j 14; centre vertices:
+// a 4, b 3, c 6, d 12, e 11, f 14.
+const GLINT_TET_A_UP: u32 = 4u | (12u << 4u) | (13u << 8u) | (8u << 12u);    // a f h g
+const GLINT_TET_A_DOWN: u32 = 5u | (4u << 4u) | (13u << 8u) | (8u << 12u);  // c a h g
+const GLINT_TET_A_LOW: u32 = 0u | (4u << 4u) | (5u << 8u) | (8u << 12u);    // b a c g
+const GLINT_TET_B_UP: u32 = 0u | (8u << 4u) | (10u << 8u) | (5u << 12u);    // b g i c
+const GLINT_TET_B_DOWN: u32 = 2u | (0u << 4u) | (5u << 8u) | (10u << 12u);  // d b c i
+const GLINT_TET_B_HIGH: u32 = 5u | (8u << 4u) | (13u << 8u) | (10u << 12u); // c g h i
+const GLINT_TET_C_UP: u32 = 5u | (14u << 4u) | (13u << 8u) | (10u << 12u);  // c j h i
+const GLINT_TET_C_DOWN: u32 = 6u | (10u << 4u) | (5u << 8u) | (14u << 12u); // e i c j
+const GLINT_TET_C_LOW: u32 = 2u | (6u << 4u) | (5u << 8u) | (10u << 12u);   // d e c i
+const GLINT_TET_CENTER_UP: u32 = 4u | (11u << 4u) | (12u << 8u) | (14u << 12u);   // a e d f
+const GLINT_TET_CENTER_DOWN: u32 = 14u | (11u << 4u) | (6u << 8u) | (4u << 12u);  // f e c a
+const GLINT_TET_CENTER_LOW: u32 = 3u | (4u << 4u) | (6u << 8u) | (11u << 12u);    // b a c e
+
+// A vertex's coordinates from its code (exact).
+fn glint_vertex_of_code(c: u32) -> vec3<f32> {
+    let rot = c & 3u;
+    return vec3<f32>(select(f32(rot) * 0.5, 0.0, rot == 3u), f32((c >> 2u) & 1u), f32(c >> 3u));
+}
+
+// glint_tetra without branches: every test of the reference's decision
+// tree evaluated (the same expressions), the tetrahedron picked by selects
+// as packed codes; the same vertices and weights.
+struct GlintTetraFast {
+    codes: u32,
+    w: vec4<f32>,
+    bin0: f32,
+    bin_h: f32,
+    bin1: f32,
+    lod0: f32,
+    ratio0: f32,
+}
+
+fn glint_tetra_fast(e: GlintEllipse, screen_scale: f32) -> GlintTetraFast {
+    let k = glint_footprint_cell(e, screen_scale);
+    let t = k.theta_lerp;
+    let r = k.ratio_lerp;
+    let l = k.lod_lerp;
+    let upper = l > 1.0 - r;
+    let upper_left = (l - (1.0 - r)) / max(r, 1e-8);
+    let half_width = 0.5 * (1.0 - r);
+    let center_codes = select(GLINT_TET_CENTER_LOW, select(GLINT_TET_CENTER_DOWN, GLINT_TET_CENTER_UP, upper_left > t), upper);
+    let a_codes = select(GLINT_TET_A_LOW, select(GLINT_TET_A_DOWN, GLINT_TET_A_UP, upper_left > t * 2.0 / max(r, 1e-8)), upper);
+    let b_codes = select(GLINT_TET_B_HIGH, select(GLINT_TET_B_DOWN, GLINT_TET_B_UP,
+        l / max(1.0 - r, 1e-8) > (t - (0.5 - half_width)) / max(2.0 * half_width, 1e-8)), l < 1.0 - r);
+    let c_codes = select(GLINT_TET_C_LOW, select(GLINT_TET_C_DOWN, GLINT_TET_C_UP,
+        upper_left > ((t - 0.5) * 2.0 - (1.0 - r)) / max(r, 1e-8)), upper);
+    let prism_a = t < 0.5 && t * 2.0 < r;
+    let prism_b = 1.0 - (t - 0.5) * 2.0 > r;
+    let codes = select(select(select(c_codes, b_codes, prism_b), a_codes, prism_a), center_codes, k.center);
+    let point = vec3<f32>(select(t, t * r, k.center), r, l);
+    var out: GlintTetraFast;
+    out.codes = codes;
+    out.w = glint_tetra_weights(point, glint_vertex_of_code(codes & 15u), glint_vertex_of_code((codes >> 4u) & 15u),
+        glint_vertex_of_code((codes >> 8u) & 15u), glint_vertex_of_code(codes >> 12u));
+    out.bin0 = k.bin0;
+    out.bin_h = k.bin_h;
+    out.bin1 = k.bin1;
+    out.lod0 = k.lod0;
+    out.ratio0 = k.ratio0;
+    return out;
+}
+
+// The fast tier's sum over the four grids of weight x hits / N (the
+// reference's, before / s x D_max): the grids one at a time in a loop, the
+// tetrahedron's vertices packed into 16 bits, so that little stays live.
+fn glint_hits_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    let t = glint_tetra_fast(e, screen_scale);
+    let codes = t.codes;
+    let p = params.micro_roughness * (d / d_max);
+    let log2_q = log2(1.0 - p);
+    // The slope in table cells, with the offset's + 0.5 / 2^24 x 64.
+    let s_slope = abs(slope) / params.micro_roughness + GLINT_TABLE_SIZE * 0.5 / 16777216.0;
+    var sum = 0.0;
+    for (var i = 0u; i < 4u; i++) {
+        let c = (codes >> (4u * i)) & 15u;
+        let rot = c & 3u;
+        let theta = select(select(select(0.0, t.bin1, rot == 2u), t.bin_h, rot == 1u), t.bin0, rot == 0u);
+        let ratio = select(t.ratio0, t.ratio0 * 2.0, (c & 4u) != 0u);
+        let lod = t.lod0 + f32(c >> 3u);
+        let w = select(select(select(1.0 - t.w.x - t.w.y - t.w.z, t.w.z, i == 2u), t.w.y, i == 1u), t.w.x, i == 0u);
+        sum += glint_sample_grid_fast(params, glint_make_grid(uv, lod, theta, ratio, w), s_slope, p, log2_q);
+    }
+    return sum;
+}
+
+// The fast tier's glint NDF (as glint_ndf: at most 20 D_max).
+fn glint_ndf_fast(params: GlintParams, uv: vec2<f32>, e: GlintEllipse, screen_scale: f32, slope: vec2<f32>, d: f32, d_max: f32) -> f32 {
+    return min(glint_hits_fast(params, uv, e, screen_scale, slope, d, d_max) / params.micro_roughness, 20.0) * d_max;
 }
