@@ -653,7 +653,8 @@ struct McFastSet {
     s_lo: f32,
     s_hi: f32,
     eta2: f32,
-    t0: f32,
+    // (1 - F0)^2: Schlick's transmission in and out at normal incidence.
+    t02: f32,
 }
 
 // u(x) = exp(-x^2 / (2 (20 deg)^2)) of the angle x whose cosine is c:
@@ -675,7 +676,8 @@ fn mc_fresnel_exact(c_in: f32, eta2: f32) -> f32 {
     let ec = eta2 * c;
     let a = (g - c) * (ec + g);
     let b = (ec - g) * (g + c);
-    let d = max((g + c) * (ec + g), 1e-12);
+    // d >= 4 c^2 >= 4e-8 (g >= c, eta^2 >= 1).
+    let d = (g + c) * (ec + g);
     return saturate(0.5 * (a * a + b * b) / (d * d));
 }
 
@@ -704,15 +706,15 @@ fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McF
     return McFastSet(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok),
                      1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
                      clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG),
-                     th.eta * th.eta, 1.0 - f0);
+                     th.eta * th.eta, (1.0 - f0) * (1.0 - f0));
 }
 
 // The factors at the offset with (cos, sin) = (ca, sa), as mc_low_node in
 // f32 with the cheaper forms listed above. sin(theta_i) + sin(theta_r) =
 // 2 sin(theta_h) cos(theta_d). Skipped (zero) as the reference skips a sample.
 fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
-    let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
-    let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
+    let si = q.wi.x * ca + q.wi.z * sa;
+    let sr = q.wr.x * ca + q.wr.z * sa;
     let ni = q.wi.z * ca - q.wi.x * sa;
     let nr = q.wr.z * ca - q.wr.x * sa;
     let ci2 = q.wi.y * q.wi.y + ni * ni;
@@ -730,7 +732,7 @@ fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
     let inv_cd = inverseSqrt(cd2);
     let x = mc_asin_fast(clamp(0.5 * (si + sr) * inv_cd, -1.0, 1.0));
     let f_r = mc_fresnel_exact(cd2 * inv_cd * cos_half_phi, q.eta2);
-    let f_t = q.t0 * q.t0 * mc_schlick_t(ci) * mc_schlick_t(cr);
+    let f_t = q.t02 * mc_schlick_t(ci) * mc_schlick_t(cr);
     let base = select(0.0, m * p * ci * inv_cd * inv_cd, ok);
     return McFastNode(x, f_r * cos_half_phi * base, f_t * base / max(ci + cr, 2e-4), select(0.0, p, ok));
 }
