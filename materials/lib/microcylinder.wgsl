@@ -663,8 +663,23 @@ struct McFastSet {
 // truncation grows).
 fn mc_u_of_cos(c: f32) -> f32 {
     let h = 0.5 - 0.5 * clamp(c, -1.0, 1.0);
-    let x2 = h * (1.0 + h * (0.333333333333 + h * 0.177777777778));
+    let x2 = h * (1.0 + 0.333333333333 * h);
     return exp(-4.0 * MC_U_INV_TWO_SIGMA2 * x2);
+}
+
+// mc_correlate rearranged: M_i M_r + u (min(M_i, M_r) - M_i M_r).
+fn mc_fast_correlate(ci: f32, cr: f32, u: f32) -> f32 {
+    let mi = max(ci, 0.0);
+    let mr = max(cr, 0.0);
+    let prod = mi * mr;
+    return prod + u * (min(mi, mr) - prod);
+}
+
+// asin(x) = sign(x) (pi/2 - acos(|x|)), acos as mc_acos_fast (|error| < 6.8e-5 rad).
+fn mc_fast_asin(x: f32) -> f32 {
+    let ax = min(abs(x), 1.0);
+    let r = 0.5 * WEFT_PI - sqrt(1.0 - ax) * (1.5707288 + ax * (-0.2121144 + ax * (0.0742610 - 0.0187293 * ax)));
+    return select(r, -r, x < 0.0);
 }
 
 // Exact unpolarised dielectric reflectance for eta^2 >= 1 (the value of
@@ -726,11 +741,11 @@ fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
     let cr = cr2 * inv_cr;
     let cos_phi_d = (q.wi.y * q.wr.y + ni * nr) * inv_ci * inv_cr;
     let cos_half_phi = sqrt(saturate(0.5 + 0.5 * cos_phi_d));
-    let m = mc_correlate(ni * inv_ci, nr * inv_cr, mc_u_of_cos(cos_phi_d));
-    let p = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    let m = mc_fast_correlate(ni * inv_ci, nr * inv_cr, mc_u_of_cos(cos_phi_d));
+    let p = mc_fast_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
     let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
     let inv_cd = inverseSqrt(cd2);
-    let x = mc_asin_fast(clamp(0.5 * (si + sr) * inv_cd, -1.0, 1.0));
+    let x = mc_fast_asin(clamp(0.5 * (si + sr) * inv_cd, -1.0, 1.0));
     let f_r = mc_fresnel_exact(cd2 * inv_cd * cos_half_phi, q.eta2);
     let f_t = q.t02 * mc_schlick_t(ci) * mc_schlick_t(cr);
     let base = select(0.0, m * p * ci * inv_cd * inv_cd, ok);
