@@ -44,17 +44,24 @@
 //     weighted by its arc length; offset lists linearly interpolated with
 //     midpoint sub-steps <= 1 deg, at most 64 per segment: relative error
 //     < 3e-3 against a 0.02 deg quadrature for Table II, measured in the test).
-//   fast: the same offset distribution and the same lobe, integrated with
-//     three nodes per range of offsets instead of one lobe per degree (see
-//     "fast tier" below): each range clipped to the offsets where M P > 0
-//     (an interval, found in closed form), a 3-point Gauss-Legendre rule for
-//     the slowly varying factors, and the Gaussians in theta_h averaged
-//     exactly (erf) over each node's cell instead of sampled. Offset lists:
-//     every segment is one range (two halves beyond 60 deg); curves: one
-//     range in t over the whole profile (slope taken as linear in t through
-//     its values at t = 0, 1/2, 1), arc-length weighted. Angle forms without
-//     transcendentals (half-angle identities, a 4-term polynomial acos/asin,
-//     |error| < 6.8e-5 rad); exact dielectric Fresnel as in the reference.
+//   fast: the same offset distribution and the same lobe (M, P, Q, the
+//     surface and volume terms), integrated with a few nodes per range of
+//     offsets instead of one lobe per degree ("fast tier" below): each range
+//     clipped to the offsets where M P > 0 (an interval, in closed form);
+//     offset lists by the 3-node rule of the section "node rule" (as low),
+//     curves by one range in t and two nodes (Gauss-Legendre, or the
+//     2-point Gauss-Jacobi rule for the weight (t - t0)^2 (t1 - t)^2 where
+//     both ends of the range are support bounds, where M P vanishes
+//     quadratically); the surface Gaussian in theta_h averaged exactly
+//     (erf) over each node's cell, the volume Gaussian (twice as wide)
+//     sampled at the nodes. Node factors: exact dielectric F_r (one
+//     division), Schlick's transmission in and out, theta_h from one
+//     polynomial asin, u() from a series in cos (no acos). Cost 3.87x /
+//     3.83x standard fast (navi21 / gfx1100 model) against 6.84x / 6.76x
+//     for the 3-node tier it replaces (README "fast").
+//   low: the 3-node rule of the section "node rule" with each node's
+//     factors in half precision (mc_low_node; unchanged by the fast tier's
+//     rewrite).
 //
 // Guards (the same constants are used by the f64 model in the test):
 //   - a sample whose w_i or w_r lies within 0.0057 deg of u' (or of v for
@@ -273,10 +280,11 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
     return acc / f32(n - 1);
 }
 
-// ---------------------------------------------------------------- fast tier
-// The fast tier integrates the same tangent-offset distribution as the
-// reference with three nodes per range of offsets instead of one lobe per
-// degree:
+// ---------------------------------------------------------------- node rule
+// The 3-node rule (low's rule for lists and curves; the fast tier's rule for
+// offset lists, with its own node factors, "fast tier" below). It integrates
+// the same tangent-offset distribution as the reference with three nodes per
+// range of offsets instead of one lobe per degree:
 //   1. Support: every term of S and P carries M and P, which vanish unless
 //      n'.w_i > 0 and n'.w_r > 0. With w = (x, y, z) along (u, v, n) and
 //      s = tan(alpha), n'.w = cos(alpha) (z - x s): each direction bounds the
@@ -288,7 +296,8 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
 //      needs many nodes.
 //   2. A 3-point Gauss-Legendre rule on the clipped range for the slowly
 //      varying factors (Fresnel, cos(phi_d/2), M, P, cos(theta),
-//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_fast_node.
+//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_low_node,
+//      mc_fast_node.
 //   3. The narrow Gaussians in theta_h are not sampled but averaged over
 //      each node's cell of the rule (cell widths 5/18, 8/18, 5/18), theta_h
 //      linear across a cell: mean g = (cdf(x_b/gamma) - cdf(x_a/gamma)) /
@@ -474,8 +483,9 @@ fn mc_combine(t1: vec4<f32>, t2: vec4<f32>, a1: f32, a2: f32, n_dot_wi: f32, n_d
 }
 
 // ---------------------------------------------------------------- low
-// The fast tier's rule (the same ranges, support clipping, 3 nodes and
-// erf-exact cell means) with the slowly varying factors at each node in
+// The 3-node rule of the section "node rule" (the same ranges, support
+// clipping, 3 nodes and erf-exact cell means of both Gaussians; fast's rule
+// before its rewrite) with the slowly varying factors at each node in
 // half precision (weft_half: f16 where the device has shader-f16, else the
 // f32 fallback): mc_low_node. theta_h, the support and the Gaussians' cell
 // means stay f32: the Gaussians are as narrow as 2.5 deg, and their cdf
@@ -603,12 +613,15 @@ fn mc_thread_curve_low(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
 //   - node factors (mc_fast_node): F_r exact (Walter et al. 2007, the same
 //     reflectance as weft_f_dielectric in a one-division form); the
 //     transmissions in and out by Schlick, (1 - F0)(1 - (1 - cos)^5) each
-//     (measured: exact -> Schlick moved the worst FLIP by 0.0003; Schlick for
-//     F_r as well costs 0.15, README); theta_h = asin((sin theta_i +
-//     sin theta_r) / (2 cos theta_d)), one polynomial asin instead of two, with
-//     cos theta_d and 1 / cos^2(theta_d) from one inverseSqrt; u(phi_d) and
-//     u(psi_d) from the cosine by the series phi^2 = 4 (h + h^2/3 + 8h^3/45),
-//     h = (1 - cos phi)/2 = sin^2(phi/2) (no acos; |error of u| < 2e-3);
+//     (relative error of 1 - F < 6 % for cos >= 0.2 and eta 1.345-1.54, up
+//     to 21 % at grazing; measured: exact -> Schlick moved the worst FLIP by
+//     0.0003; Schlick for F_r as well costs 0.15, README); theta_h =
+//     asin((sin theta_i + sin theta_r) / (2 cos theta_d)), one polynomial
+//     asin instead of two, with cos theta_d and 1 / cos^2(theta_d) from one
+//     inverseSqrt; u(phi_d) and u(psi_d) from the cosine by the series
+//     phi^2 = 4 (h + h^2/3 + ...), h = (1 - cos phi)/2 = sin^2(phi/2) (no
+//     acos; |error of u| < 8.4e-4); the correlation blend as
+//     M_i M_r + u (min - M_i M_r) (mc_fast_correlate);
 //   - the volume Gaussian g(gamma_v) (twice gamma_s in every Table II row)
 //     sampled at the nodes (the plain Gauss rule); only the narrow surface
 //     Gaussian is averaged over each node's cell (erf);
@@ -658,9 +671,9 @@ struct McFastSet {
 }
 
 // u(x) = exp(-x^2 / (2 (20 deg)^2)) of the angle x whose cosine is c:
-// x^2 = 4 asin^2(sqrt(h)), h = (1 - c)/2, by its series to h^3 (relative
-// error of x^2 < 4e-4 up to 60 deg, where u = 0.011; u < 1e-5 where the
-// truncation grows).
+// x^2 = 4 asin^2(sqrt(h)), h = (1 - c)/2 = sin^2(x/2), by its series
+// h + h^2/3 + 8h^3/45 + ... to h^2 (|error of u| < 8.4e-4, largest near
+// 49 deg; u < 1e-5 beyond 90 deg where the truncation grows).
 fn mc_u_of_cos(c: f32) -> f32 {
     let h = 0.5 - 0.5 * clamp(c, -1.0, 1.0);
     let x2 = h * (1.0 + 0.333333333333 * h);
