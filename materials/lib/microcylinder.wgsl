@@ -44,17 +44,24 @@
 //     weighted by its arc length; offset lists linearly interpolated with
 //     midpoint sub-steps <= 1 deg, at most 64 per segment: relative error
 //     < 3e-3 against a 0.02 deg quadrature for Table II, measured in the test).
-//   fast: the same offset distribution and the same lobe, integrated with
-//     three nodes per range of offsets instead of one lobe per degree (see
-//     "fast tier" below): each range clipped to the offsets where M P > 0
-//     (an interval, found in closed form), a 3-point Gauss-Legendre rule for
-//     the slowly varying factors, and the Gaussians in theta_h averaged
-//     exactly (erf) over each node's cell instead of sampled. Offset lists:
-//     every segment is one range (two halves beyond 60 deg); curves: one
-//     range in t over the whole profile (slope taken as linear in t through
-//     its values at t = 0, 1/2, 1), arc-length weighted. Angle forms without
-//     transcendentals (half-angle identities, a 4-term polynomial acos/asin,
-//     |error| < 6.8e-5 rad); exact dielectric Fresnel as in the reference.
+//   fast: the same offset distribution and the same lobe (M, P, Q, the
+//     surface and volume terms), integrated with a few nodes per range of
+//     offsets instead of one lobe per degree ("fast tier" below): each range
+//     clipped to the offsets where M P > 0 (an interval, in closed form);
+//     offset lists by the 3-node rule of the section "node rule" (as low),
+//     curves by one range in t and two nodes (Gauss-Legendre, or the
+//     2-point Gauss-Jacobi rule for the weight (t - t0)^2 (t1 - t)^2 where
+//     both ends of the range are support bounds, where M P vanishes
+//     quadratically); the surface Gaussian in theta_h averaged exactly
+//     (erf) over each node's cell, the volume Gaussian (twice as wide)
+//     sampled at the nodes. Node factors: exact dielectric F_r (one
+//     division), Schlick's transmission in and out, theta_h from one
+//     polynomial asin, u() from a series in cos (no acos). Cost 3.87x /
+//     3.83x standard fast (navi21 / gfx1100 model) against 6.84x / 6.76x
+//     for the 3-node tier it replaces (README "fast").
+//   low: the 3-node rule of the section "node rule" with each node's
+//     factors in half precision (mc_low_node; unchanged by the fast tier's
+//     rewrite).
 //
 // Guards (the same constants are used by the f64 model in the test):
 //   - a sample whose w_i or w_r lies within 0.0057 deg of u' (or of v for
@@ -273,10 +280,11 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
     return acc / f32(n - 1);
 }
 
-// ---------------------------------------------------------------- fast tier
-// The fast tier integrates the same tangent-offset distribution as the
-// reference with three nodes per range of offsets instead of one lobe per
-// degree:
+// ---------------------------------------------------------------- node rule
+// The 3-node rule (low's rule for lists and curves; the fast tier's rule for
+// offset lists, with its own node factors, "fast tier" below). It integrates
+// the same tangent-offset distribution as the reference with three nodes per
+// range of offsets instead of one lobe per degree:
 //   1. Support: every term of S and P carries M and P, which vanish unless
 //      n'.w_i > 0 and n'.w_r > 0. With w = (x, y, z) along (u, v, n) and
 //      s = tan(alpha), n'.w = cos(alpha) (z - x s): each direction bounds the
@@ -288,7 +296,8 @@ fn mc_thread_list_reference(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThr
 //      needs many nodes.
 //   2. A 3-point Gauss-Legendre rule on the clipped range for the slowly
 //      varying factors (Fresnel, cos(phi_d/2), M, P, cos(theta),
-//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_fast_node.
+//      1/cos^2(theta_d), 1/(cos theta_i + cos theta_r)): mc_low_node,
+//      mc_fast_node.
 //   3. The narrow Gaussians in theta_h are not sampled but averaged over
 //      each node's cell of the rule (cell widths 5/18, 8/18, 5/18), theta_h
 //      linear across a cell: mean g = (cdf(x_b/gamma) - cdf(x_a/gamma)) /
@@ -409,39 +418,6 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
                      clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG), th.eta);
 }
 
-// The factors at the offset with (cos, sin) = (ca, sa): the reference lobe's
-// terms without its Gaussians. Tilting about v rotates the (x, z)
-// components: sin(theta) = x ca + z sa, n'.w = z ca - x sa, and
-// cos^2(theta) = y^2 + (n'.w)^2 (the projection normal to u', exact where
-// 1 - sin^2 cancels). theta_h and cos^2(theta_d) from half-angle identities
-// and the polynomial asin/acos; Fresnel exact (weft_f_dielectric), as in the
-// reference. Skipped (zero) as the reference skips a sample.
-fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
-    let si = clamp(q.wi.x * ca + q.wi.z * sa, -1.0, 1.0);
-    let sr = clamp(q.wr.x * ca + q.wr.z * sa, -1.0, 1.0);
-    let ni = q.wi.z * ca - q.wi.x * sa;
-    let nr = q.wr.z * ca - q.wr.x * sa;
-    let ci2 = q.wi.y * q.wi.y + ni * ni;
-    let cr2 = q.wr.y * q.wr.y + nr * nr;
-    let ok = min(ci2, cr2) >= MC_MIN_PROJ2 && q.ok != 0.0;
-    let inv_ci = inverseSqrt(max(ci2, MC_MIN_PROJ2));
-    let inv_cr = inverseSqrt(max(cr2, MC_MIN_PROJ2));
-    let ci = ci2 * inv_ci;
-    let cr = cr2 * inv_cr;
-    let cos_phi_d = clamp((q.wi.y * q.wr.y + ni * nr) * inv_ci * inv_cr, -1.0, 1.0);
-    let cos_half_phi = sqrt(0.5 + 0.5 * cos_phi_d);
-    let phi_d = mc_acos_fast(cos_phi_d);
-    let u_phi = exp(-phi_d * phi_d * MC_U_INV_TWO_SIGMA2);
-    let m = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
-    let p = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
-    let x = 0.5 * (mc_asin_fast(si) + mc_asin_fast(sr));
-    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
-    let f_r = weft_f_dielectric(sqrt(cd2) * cos_half_phi, q.eta);
-    let f_t = (1.0 - weft_f_dielectric(ci, q.eta)) * (1.0 - weft_f_dielectric(cr, q.eta));
-    let base = select(0.0, m * p * ci / cd2, ok);
-    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / max(ci + cr, 2e-4), select(0.0, p, ok));
-}
-
 // The rule on one range, given its three nodes and their weights r (the
 // Gauss-Legendre weight times the range's width times any density):
 // (sum r S rgb, sum r P).
@@ -455,69 +431,6 @@ fn mc_fast_gl3(q: McFastPre, th: McThread, n0: McFastNode, n1: McFastNode, n2: M
     let surface = dot(gs, s);
     let volume = (1.0 - th.kd) * dot(gv, v) + th.kd * (v.x + v.y + v.z);
     return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
-}
-
-// Offset list piece: the mean over the offsets uniform in [a0, a1] (either
-// order, radians), clipped to the support (lo, hi) first (the clipped-off
-// part contributes 0). A flat piece (|a1 - a0| < MC_FAST_MIN_SPAN) puts all
-// three nodes on its one offset with weights summing to 1, and its cells have
-// zero width: the point lobe, by the same code.
-const MC_FAST_MIN_SPAN: f32 = 1e-4;
-fn mc_fast_segment(q: McFastPre, th: McThread, a0: f32, a1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
-    let span = abs(a1 - a0);
-    let flat = span < MC_FAST_MIN_SPAN;
-    let lo = clamp(lo_s, min(a0, a1), max(a0, a1));
-    let hi = clamp(hi_s, lo, max(a0, a1));
-    let w = hi - lo;
-    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
-    let ca = cos(al);
-    let sa = sin(al);
-    let n0 = mc_fast_node(q, ca.x, sa.x);
-    let n1 = mc_fast_node(q, ca.y, sa.y);
-    let n2 = mc_fast_node(q, ca.z, sa.z);
-    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * select(w / max(span, MC_FAST_MIN_SPAN), 1.0, flat);
-    return mc_fast_gl3(q, th, n0, n1, n2, r);
-}
-
-// Fast, offset list: the same piecewise-linear tangent curve as the
-// reference; each segment is one piece, or two halves when it spans more
-// than MC_FAST_SPLIT_DEG, each by mc_fast_segment; segments weighted equally.
-// One loop over the pieces, no branches (a CPU rasteriser runs both sides
-// of a branch).
-const MC_FAST_SPLIT_DEG: f32 = 60.0;
-fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k: i32) -> i32 {
-    let span = abs(mc_offset_at(offsets_a, offsets_b, k + 1) - mc_offset_at(offsets_a, offsets_b, k));
-    return select(1, 2, span > MC_FAST_SPLIT_DEG);
-}
-fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
-    let n = clamp(count, 1, MC_MAX_OFFSETS);
-    let q = mc_fast_pre(fr, wi, wr, th);
-    let lo_s = atan(q.s_lo);
-    let hi_s = atan(q.s_hi);
-    // A single control point: one flat piece on it.
-    let segments = max(n - 1, 1);
-    // Pieces over the n - 1 segments (straight-line: a loop costs more).
-    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
-    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
-    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
-    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
-    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
-    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
-    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
-    var acc = vec4<f32>(0.0);
-    var k = 0;
-    var h = 0;
-    for (var i = 0; i < pieces; i++) {
-        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
-        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
-        let fm = f32(m);
-        acc += mc_fast_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
-        h += 1;
-        k = select(k, k + 1, h >= m);
-        h = select(h, 0, h >= m);
-    }
-    return acc / f32(segments);
 }
 
 // Curve, one half of the profile (t from ta to ta + 1/2, slope linear from
@@ -552,38 +465,6 @@ fn mc_fast_half_length(sa: f32, sb: f32) -> f32 {
     return select(0.5 * (mc_arc_primitive(sb) - mc_arc_primitive(sa)) / ds, 0.5 * sqrt(1.0 + sm * sm), abs(ds) < MC_FAST_MIN_DSLOPE);
 }
 
-// Fast, tangent curve. The profile's slope at t = 0, 1/2, 1 (second-order
-// one-sided differences of the baked samples at the ends, the central
-// difference at 1/2), taken as linear in t on each half (exact for a
-// quadratic profile such as the default). The rule runs in t over the hull
-// of the two halves' support intervals, each node weighted by its arc length
-// sqrt(1 + s^2), offset alpha = atan(s) (cos = 1 / sqrt(1 + s^2)); the sum is
-// divided by the whole profile's arc length. One range for any profile: a
-// profile whose slope is not monotone (a gap inside the hull) is integrated
-// less accurately, never by more nodes.
-const MC_FAST_MIN_DSLOPE: f32 = 1e-4;
-fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let q = mc_fast_pre(fr, wi, wr, th);
-    let n = f32(MC_CURVE_SEGMENTS);
-    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
-    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
-    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
-    let h0 = mc_fast_half_clip(q, s0, s1, 0.0);
-    let h1 = mc_fast_half_clip(q, s1, s2, 0.5);
-    let t0 = min(h0.x, h1.x);
-    let t1 = max(max(h0.y, h1.y), t0);
-    let w = t1 - t0;
-    let t = vec3<f32>(t0 + MC_GL3_T * w, t0 + 0.5 * w, t1 - MC_GL3_T * w);
-    let sl = vec3<f32>(mc_fast_slope(s0, s1, s2, t.x), mc_fast_slope(s0, s1, s2, t.y), mc_fast_slope(s0, s1, s2, t.z));
-    let inv_len = inverseSqrt(1.0 + sl * sl);
-    let n0 = mc_fast_node(q, inv_len.x, sl.x * inv_len.x);
-    let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
-    let n2 = mc_fast_node(q, inv_len.z, sl.z * inv_len.z);
-    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w / inv_len;
-    let total = mc_fast_half_length(s0, s1) + mc_fast_half_length(s1, s2);
-    return mc_fast_gl3(q, th, n0, n1, n2, r) / max(total, 1e-6);
-}
-
 // ---------------------------------------------------------------- cloth
 
 // Combines two thread sets (a = coverage ratios, a2 = 0 for one set) into
@@ -602,8 +483,9 @@ fn mc_combine(t1: vec4<f32>, t2: vec4<f32>, a1: f32, a2: f32, n_dot_wi: f32, n_d
 }
 
 // ---------------------------------------------------------------- low
-// The fast tier's rule (the same ranges, support clipping, 3 nodes and
-// erf-exact cell means) with the slowly varying factors at each node in
+// The 3-node rule of the section "node rule" (the same ranges, support
+// clipping, 3 nodes and erf-exact cell means of both Gaussians; fast's rule
+// before its rewrite) with the slowly varying factors at each node in
 // half precision (weft_half: f16 where the device has shader-f16, else the
 // f32 fallback): mc_low_node. theta_h, the support and the Gaussians' cell
 // means stay f32: the Gaussians are as narrow as 2.5 deg, and their cdf
@@ -722,4 +604,329 @@ fn mc_thread_curve_low(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
     let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * w / inv_len;
     let total = mc_fast_half_length(s0, s1) + mc_fast_half_length(s1, s2);
     return mc_fast_gl3(q, th, n0, n1, n2, r) / max(total, 1e-6);
+}
+
+// ---------------------------------------------------------------- fast tier
+// The fast tier integrates the reference's offset distribution with the
+// support-clipped node rule of the section above, with fewer and cheaper
+// nodes where the loop-aware AMD model (README "fast") showed the cost:
+//   - node factors (mc_fast_node): F_r exact (Walter et al. 2007, the same
+//     reflectance as weft_f_dielectric in a one-division form); the
+//     transmissions in and out by Schlick, (1 - F0)(1 - (1 - cos)^5) each
+//     (relative error of 1 - F < 6 % for cos >= 0.2 and eta 1.345-1.54, up
+//     to 21 % at grazing; measured: exact -> Schlick moved the worst FLIP by
+//     0.0003; Schlick for F_r as well costs 0.15, README); theta_h =
+//     asin((sin theta_i + sin theta_r) / (2 cos theta_d)), one polynomial
+//     asin instead of two, with cos theta_d and 1 / cos^2(theta_d) from one
+//     inverseSqrt; u(phi_d) and u(psi_d) from the cosine by the series
+//     phi^2 = 4 (h + h^2/3 + ...), h = (1 - cos phi)/2 = sin^2(phi/2) (no
+//     acos; |error of u| < 8.4e-4); the correlation blend as
+//     M_i M_r + u (min - M_i M_r) (mc_fast_correlate);
+//   - the volume Gaussian g(gamma_v) (twice gamma_s in every Table II row)
+//     sampled at the nodes (the plain Gauss rule); only the narrow surface
+//     Gaussian is averaged over each node's cell (erf);
+//   - offset lists: the 3-node rule on each segment (halved beyond 60 deg);
+//   - curves: one range in t (the hull of the halves' support intervals) and
+//     two nodes. Where the range ends at a curve end (t = 0 or 1) the
+//     2-point Gauss-Legendre rule (nodes 1/2 -+ sqrt(3)/6, weights 1/2);
+//     where both ends are support bounds, the 2-point Gauss-Jacobi rule for
+//     the weight (t - t0)^2 (t1 - t)^2 (nodes 1/2 -+ 1/(2 sqrt(7)), weights
+//     98/270 of the width each): a support bound is a zero of n'.w_i or
+//     n'.w_r, a factor of both M and P, so the integrand vanishes
+//     quadratically there (Gauss-Legendre's pair integrates t^2 (1 - t)^2
+//     17 % low; this pair integrates it times any cubic exactly; rim light
+//     is this case). The surface Gaussian is averaged over the cells
+//     [0, 1/2] and [1/2, 1] of the range (theta_h linear through the nodes,
+//     both cells of equal width in theta_h: one division); the profile's
+//     arc length by 2-point Gauss-Legendre on each half (exact for a
+//     straight slope, < 1e-5 relative for the default arch).
+// mc_thread_list_fast / mc_thread_curve_fast keep their signatures
+// (tests/physics/microcylinder.rs calls them).
+
+// Offset-list pieces (shared with low): segments beyond MC_FAST_SPLIT_DEG
+// are integrated as two halves.
+const MC_FAST_MIN_SPAN: f32 = 1e-4;
+const MC_FAST_MIN_DSLOPE: f32 = 1e-4;
+const MC_FAST_SPLIT_DEG: f32 = 60.0;
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k: i32) -> i32 {
+    let span = abs(mc_offset_at(offsets_a, offsets_b, k + 1) - mc_offset_at(offsets_a, offsets_b, k));
+    return select(1, 2, span > MC_FAST_SPLIT_DEG);
+}
+
+// Per thread set, as McFastPre, with eta^2 and Schlick's 1 - F0 instead of eta.
+struct McFastSet {
+    wi: vec3<f32>,
+    wr: vec3<f32>,
+    inv_ri: f32,
+    inv_rr: f32,
+    u_psi: f32,
+    ok: f32,
+    inv_gamma_s: f32,
+    inv_gamma_v: f32,
+    s_lo: f32,
+    s_hi: f32,
+    eta2: f32,
+    // (1 - F0)^2: Schlick's transmission in and out at normal incidence.
+    t02: f32,
+}
+
+// u(x) = exp(-x^2 / (2 (20 deg)^2)) of the angle x whose cosine is c:
+// x^2 = 4 asin^2(sqrt(h)), h = (1 - c)/2 = sin^2(x/2), by its series
+// h + h^2/3 + 8h^3/45 + ... to h^2 (|error of u| < 8.4e-4, largest near
+// 49 deg; u < 1e-5 beyond 90 deg where the truncation grows).
+fn mc_u_of_cos(c: f32) -> f32 {
+    let h = 0.5 - 0.5 * clamp(c, -1.0, 1.0);
+    let x2 = h * (1.0 + 0.333333333333 * h);
+    return exp(-4.0 * MC_U_INV_TWO_SIGMA2 * x2);
+}
+
+// mc_correlate rearranged: M_i M_r + u (min(M_i, M_r) - M_i M_r).
+fn mc_fast_correlate(ci: f32, cr: f32, u: f32) -> f32 {
+    let mi = max(ci, 0.0);
+    let mr = max(cr, 0.0);
+    let prod = mi * mr;
+    return prod + u * (min(mi, mr) - prod);
+}
+
+// asin(x) = sign(x) (pi/2 - acos(|x|)), acos as mc_acos_fast (|error| < 6.8e-5 rad).
+fn mc_fast_asin(x: f32) -> f32 {
+    let ax = min(abs(x), 1.0);
+    let r = 0.5 * WEFT_PI - sqrt(1.0 - ax) * (1.5707288 + ax * (-0.2121144 + ax * (0.0742610 - 0.0187293 * ax)));
+    return select(r, -r, x < 0.0);
+}
+
+// Exact unpolarised dielectric reflectance for eta^2 >= 1 (the value of
+// weft_f_dielectric): Rs = ((g - c)/(g + c))^2, Rp = ((eta^2 c - g)/(eta^2 c
+// + g))^2, g = sqrt(eta^2 - 1 + c^2), over one common denominator.
+fn mc_fresnel_exact(c_in: f32, eta2: f32) -> f32 {
+    let c = clamp(c_in, WEFT_MIN_N_DOT, 1.0);
+    let g = sqrt(max(eta2 - 1.0 + c * c, 0.0));
+    let ec = eta2 * c;
+    let a = (g - c) * (ec + g);
+    let b = (ec - g) * (g + c);
+    // d >= 4 c^2 >= 4e-8 (g >= c, eta^2 >= 1).
+    let d = (g + c) * (ec + g);
+    return saturate(0.5 * (a * a + b * b) / (d * d));
+}
+
+// Schlick's transmission 1 - F without the (1 - F0) factor: 1 - (1 - c)^5.
+fn mc_schlick_t(c: f32) -> f32 {
+    let x = 1.0 - saturate(c);
+    let x2 = x * x;
+    return 1.0 - x2 * x2 * x;
+}
+
+// As mc_fast_pre: frame components, psi, the support in slope space.
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
+    let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
+    let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
+    let ri2 = li.x * li.x + li.z * li.z;
+    let rr2 = lr.x * lr.x + lr.z * lr.z;
+    let ok = min(ri2, rr2) >= MC_MIN_PROJ2;
+    let inv_ri = inverseSqrt(max(ri2, MC_MIN_PROJ2));
+    let inv_rr = inverseSqrt(max(rr2, MC_MIN_PROJ2));
+    let u_psi = mc_u_of_cos((li.x * lr.x + li.z * lr.z) * inv_ri * inv_rr);
+    let bi = li.z / select(max(li.x, 1e-12), min(li.x, -1e-12), li.x < 0.0);
+    let br = lr.z / select(max(lr.x, 1e-12), min(lr.x, -1e-12), lr.x < 0.0);
+    let s_lo = max(select(-MC_FAST_BIG, bi, li.x < 0.0), select(-MC_FAST_BIG, br, lr.x < 0.0));
+    let s_hi = min(select(MC_FAST_BIG, bi, li.x > 0.0), select(MC_FAST_BIG, br, lr.x > 0.0));
+    let f0 = weft_f0_from_ior(th.eta);
+    return McFastSet(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok),
+                     1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
+                     clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG),
+                     th.eta * th.eta, (1.0 - f0) * (1.0 - f0));
+}
+
+// The factors at the offset with (cos, sin) = (ca, sa), as mc_low_node in
+// f32 with the cheaper forms listed above. sin(theta_i) + sin(theta_r) =
+// 2 sin(theta_h) cos(theta_d). Skipped (zero) as the reference skips a sample.
+fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
+    let si = q.wi.x * ca + q.wi.z * sa;
+    let sr = q.wr.x * ca + q.wr.z * sa;
+    let ni = q.wi.z * ca - q.wi.x * sa;
+    let nr = q.wr.z * ca - q.wr.x * sa;
+    let ci2 = q.wi.y * q.wi.y + ni * ni;
+    let cr2 = q.wr.y * q.wr.y + nr * nr;
+    let ok = min(ci2, cr2) >= MC_MIN_PROJ2 && q.ok != 0.0;
+    let inv_ci = inverseSqrt(max(ci2, MC_MIN_PROJ2));
+    let inv_cr = inverseSqrt(max(cr2, MC_MIN_PROJ2));
+    let ci = ci2 * inv_ci;
+    let cr = cr2 * inv_cr;
+    let cos_phi_d = (q.wi.y * q.wr.y + ni * nr) * inv_ci * inv_cr;
+    let cos_half_phi = sqrt(saturate(0.5 + 0.5 * cos_phi_d));
+    let m = mc_fast_correlate(ni * inv_ci, nr * inv_cr, mc_u_of_cos(cos_phi_d));
+    let p = mc_fast_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
+    let cd2 = max(0.5 + 0.5 * (ci * cr + si * sr), MC_MIN_COS2_THETA_D);
+    let inv_cd = inverseSqrt(cd2);
+    let x = mc_fast_asin(clamp(0.5 * (si + sr) * inv_cd, -1.0, 1.0));
+    let f_r = mc_fresnel_exact(cd2 * inv_cd * cos_half_phi, q.eta2);
+    let f_t = q.t02 * mc_schlick_t(ci) * mc_schlick_t(cr);
+    let base = select(0.0, m * p * ci * inv_cd * inv_cd, ok);
+    return McFastNode(x, f_r * cos_half_phi * base, f_t * base / max(ci + cr, 2e-4), select(0.0, p, ok));
+}
+
+// The Gaussian g(gamma_v, theta_h) at three or two nodes (the plain rule).
+fn mc_fast_volume3(x: vec3<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t = x * inv_gamma;
+    return exp(-0.5 * t * t) * (MC_INV_SQRT_TWO_PI * inv_gamma);
+}
+fn mc_fast_volume2(x: vec2<f32>, inv_gamma: f32) -> vec2<f32> {
+    let t = x * inv_gamma;
+    return exp(-0.5 * t * t) * (MC_INV_SQRT_TWO_PI * inv_gamma);
+}
+
+// The 3-node rule on one range (as mc_fast_gl3): the surface Gaussian
+// averaged over the cells (mc_cell_means), the volume Gaussian at the nodes.
+fn mc_fast_rule3(q: McFastSet, th: McThread, n0: McFastNode, n1: McFastNode, n2: McFastNode, r: vec3<f32>) -> vec4<f32> {
+    let xe = vec4<f32>(n0.x + MC_GL3_E0 * (n1.x - n0.x), n0.x + MC_GL3_E1 * (n1.x - n0.x),
+                       n2.x - MC_GL3_E1 * (n2.x - n1.x), n2.x - MC_GL3_E0 * (n2.x - n1.x));
+    let gs = mc_cell_means(xe, q.inv_gamma_s);
+    let gv = mc_fast_volume3(vec3<f32>(n0.x, n1.x, n2.x), q.inv_gamma_v);
+    let s = r * vec3<f32>(n0.s, n1.s, n2.s);
+    let v = r * vec3<f32>(n0.v, n1.v, n2.v);
+    let surface = dot(gs, s);
+    let volume = (1.0 - th.kd) * dot(gv, v) + th.kd * (v.x + v.y + v.z);
+    return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec3<f32>(n0.p, n1.p, n2.p)));
+}
+
+// Offset list piece (as mc_low_segment): uniform offsets in [a0, a1],
+// clipped to the support, 3 nodes; a flat piece is the point lobe.
+fn mc_fast_segment(q: McFastSet, th: McThread, a0: f32, a1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span = abs(a1 - a0);
+    let flat = span < MC_FAST_MIN_SPAN;
+    let lo = clamp(lo_s, min(a0, a1), max(a0, a1));
+    let hi = clamp(hi_s, lo, max(a0, a1));
+    let w = hi - lo;
+    let al = vec3<f32>(lo + MC_GL3_T * w, lo + 0.5 * w, hi - MC_GL3_T * w);
+    let ca = cos(al);
+    let sa = sin(al);
+    let n0 = mc_fast_node(q, ca.x, sa.x);
+    let n1 = mc_fast_node(q, ca.y, sa.y);
+    let n2 = mc_fast_node(q, ca.z, sa.z);
+    let r = vec3<f32>(MC_GL3_W0, MC_GL3_W1, MC_GL3_W0) * select(w / max(span, MC_FAST_MIN_SPAN), 1.0, flat);
+    return mc_fast_rule3(q, th, n0, n1, n2, r);
+}
+
+// Fast, offset list: the same pieces as the reference's polyline (each
+// segment one piece, two halves beyond MC_FAST_SPLIT_DEG), segments weighted
+// equally; one loop over the pieces, no branches.
+fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
+    let n = clamp(count, 1, MC_MAX_OFFSETS);
+    let q = mc_fast_setup(fr, wi, wr, th);
+    let lo_s = atan(q.s_lo);
+    let hi_s = atan(q.s_hi);
+    // A single control point: one flat piece on it.
+    let segments = max(n - 1, 1);
+    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
+    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
+    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
+    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
+    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
+    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
+    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
+    var acc = vec4<f32>(0.0);
+    var k = 0;
+    var h = 0;
+    for (var i = 0; i < pieces; i++) {
+        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
+        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
+        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
+        let fm = f32(m);
+        acc += mc_fast_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
+        h += 1;
+        k = select(k, k + 1, h >= m);
+        h = select(h, 0, h >= m);
+    }
+    return acc / f32(segments);
+}
+
+// Curve, one half (as mc_fast_half_clip): the t in [ta, ta + 1/2] whose
+// slope (linear from sa to sb) lies in (s_lo, s_hi), as (t0, t1); empty as
+// (2, -1). A flat half (|sb - sa| < MC_FAST_MIN_DSLOPE) is taken with that
+// slope step, so that its interval is all or nothing.
+fn mc_fast_clip(s_lo: f32, s_hi: f32, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
+    let ds = sb - sa;
+    let inv = 1.0 / select(ds, select(-MC_FAST_MIN_DSLOPE, MC_FAST_MIN_DSLOPE, ds >= 0.0), abs(ds) < MC_FAST_MIN_DSLOPE);
+    let u0 = (s_lo - sa) * inv;
+    let u1 = (s_hi - sa) * inv;
+    let u = saturate(vec2<f32>(min(u0, u1), max(u0, u1)));
+    return select(vec2<f32>(2.0, -1.0), ta + 0.5 * u, u.x < u.y);
+}
+
+// Arc length of a half (t over 1/2, slope linear from sa to sb) by 2-point
+// Gauss-Legendre.
+fn mc_fast_half_len(sa: f32, sb: f32) -> f32 {
+    let s = vec2<f32>(mix(sa, sb, MC_GL2_T), mix(sa, sb, 1.0 - MC_GL2_T));
+    let l = sqrt(1.0 + s * s);
+    return 0.25 * (l.x + l.y);
+}
+
+// Two-node rules on [0, 1]: Gauss-Legendre (node offset from the ends, weight)
+// and Gauss-Jacobi for the weight t^2 (1 - t)^2 (nodes 1/2 -+ 1/(2 sqrt 7):
+// (1/60) / (3/14)^2 = 98/270 of the width each).
+const MC_GL2_T: f32 = 0.211324865405;
+const MC_GJ2_T: f32 = 0.311017764983;
+const MC_GJ2_W: f32 = 0.362962962963;
+
+// Standard normal at each t: (pdf, cdf - 1/2), as mc_normal4.
+fn mc_normal3(t: vec3<f32>) -> array<vec3<f32>, 2> {
+    let e = exp(-0.5 * t * t);
+    let z = abs(t) * 0.707106781187;
+    let k = 1.0 / (1.0 + 0.3275911 * z);
+    let poly = k * (0.254829592 + k * (-0.284496736 + k * (1.421413741 + k * (-1.453152027 + k * 1.061405429))));
+    let half = 0.5 - 0.5 * poly * e;
+    return array<vec3<f32>, 2>(e * MC_INV_SQRT_TWO_PI, select(-half, half, t >= vec3<f32>(0.0)));
+}
+
+// The 2-node rule on one range: nodes at tn and 1 - tn of it, weights r;
+// theta_h linear through the nodes gives the cell edges at 0, 1/2, 1
+// (e = tn / (1 - 2 tn) node steps beyond the nodes); the surface Gaussian
+// averaged over each cell (mean of the edge pdfs below 0.1 gamma, as
+// mc_cell_means), the volume Gaussian at the nodes.
+fn mc_fast_rule2(q: McFastSet, th: McThread, n0: McFastNode, n1: McFastNode, r: vec2<f32>, e: f32) -> vec4<f32> {
+    let d = n1.x - n0.x;
+    let xe = vec3<f32>(n0.x - e * d, 0.5 * (n0.x + n1.x), n1.x + e * d);
+    // Both cells span the same width in theta_h.
+    let dx = (0.5 + e) * d;
+    let nd = mc_normal3(xe * q.inv_gamma_s);
+    let wide = abs(dx) * q.inv_gamma_s >= MC_FAST_MIN_DT;
+    let exact = (nd[1].yz - nd[1].xy) / select(1.0, dx, wide);
+    let trap = 0.5 * q.inv_gamma_s * (nd[0].xy + nd[0].yz);
+    let gs = max(select(trap, exact, wide), vec2<f32>(0.0));
+    let gv = mc_fast_volume2(vec2<f32>(n0.x, n1.x), q.inv_gamma_v);
+    let s = r * vec2<f32>(n0.s, n1.s);
+    let v = r * vec2<f32>(n0.v, n1.v);
+    let surface = dot(gs, s);
+    let volume = (1.0 - th.kd) * dot(gv, v) + th.kd * (v.x + v.y);
+    return vec4<f32>(vec3<f32>(surface) + volume * th.albedo, dot(r, vec2<f32>(n0.p, n1.p)));
+}
+
+// Fast, tangent curve: the profile's slope at t = 0, 1/2, 1 (as the low
+// tier), linear in t on each half; one range in t over the hull of the two
+// halves' support intervals; two nodes (Gauss-Jacobi where both ends of the
+// range are support bounds, else Gauss-Legendre), each weighted by its arc
+// length sqrt(1 + s^2), offset atan(s); divided by the profile's arc length.
+fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+    let q = mc_fast_setup(fr, wi, wr, th);
+    let n = f32(MC_CURVE_SEGMENTS);
+    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
+    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
+    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
+    let h0 = mc_fast_clip(q.s_lo, q.s_hi, s0, s1, 0.0);
+    let h1 = mc_fast_clip(q.s_lo, q.s_hi, s1, s2, 0.5);
+    let t0 = min(h0.x, h1.x);
+    let t1 = max(max(h0.y, h1.y), t0);
+    let w = t1 - t0;
+    // Both ends support bounds (not the profile's ends): Gauss-Jacobi.
+    let bump = t0 > 1e-4 && t1 < 1.0 - 1e-4;
+    let tn = select(MC_GL2_T, MC_GJ2_T, bump);
+    let t = vec2<f32>(t0 + tn * w, t1 - tn * w);
+    let sl = vec2<f32>(mc_fast_slope(s0, s1, s2, t.x), mc_fast_slope(s0, s1, s2, t.y));
+    let l2 = 1.0 + sl * sl;
+    let inv_len = inverseSqrt(l2);
+    let n0 = mc_fast_node(q, inv_len.x, sl.x * inv_len.x);
+    let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
+    let r = select(0.5, MC_GJ2_W, bump) * w * (l2 * inv_len);
+    let total = mc_fast_half_len(s0, s1) + mc_fast_half_len(s1, s2);
+    return mc_fast_rule2(q, th, n0, n1, r, tn / (1.0 - 2.0 * tn)) / max(total, 1e-6);
 }

@@ -10,16 +10,25 @@
 // the formulas); this file reads the uniforms and sums over the main light:
 //
 // Tiers (WEFT_TIER):
-//   fast      = the same offset distribution with 3 nodes per range of
-//               offsets: each range clipped to the offsets where M P > 0, a
-//               3-point Gauss-Legendre rule for the slowly varying factors,
-//               the theta_h Gaussians averaged exactly (erf) over each
-//               node's cell; offset-list segments are ranges (halved beyond
-//               60 deg), a curve is one range in t (slope linear through
-//               t = 0, 1/2, 1), arc-length weighted; transcendental-free
-//               angle forms; exact dielectric Fresnel as in the reference.
-//   low       = an approximation of the reference: the fast tier's rule
-//               (the same ranges, clipping, 3 nodes, erf-exact cell means)
+//   fast      = the same offset distribution and lobe with a few nodes per
+//               range of offsets, each range clipped to the offsets where
+//               M P > 0: offset-list segments (halved beyond 60 deg) by a
+//               3-point Gauss-Legendre rule; a curve by one range in t
+//               (slope linear through t = 0, 1/2, 1, arc-length weighted)
+//               and 2 nodes (Gauss-Legendre, or the 2-point Gauss-Jacobi
+//               rule for the weight (t - t0)^2 (t1 - t)^2 where both ends
+//               are support bounds and M P vanishes quadratically); the
+//               surface Gaussian in theta_h averaged exactly (erf) over each
+//               node's cell, the volume Gaussian (twice as wide) sampled at
+//               the nodes; exact dielectric F_r in a one-division form,
+//               Schlick's transmission in and out; transcendental-light
+//               angle forms (one polynomial asin for theta_h, u() from a
+//               series in cos). 3.87x / 3.83x standard fast (navi21 /
+//               gfx1100 loop-aware model), worst FLIP 0.048 (README).
+//   low       = an approximation of the reference: the 3-node rule (the
+//               same clipped ranges, 3 nodes for lists and curves, erf-exact
+//               cell means of both Gaussians: fast's rule before the cost
+//               work)
 //               with each node's slowly varying factors (masking and
 //               reweighting blends, cos(phi_d/2), cos^2(theta_d), the three
 //               exact Fresnel terms) in weft_half (f16 with shader-f16, the
