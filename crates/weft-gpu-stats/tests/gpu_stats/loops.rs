@@ -50,31 +50,29 @@ fn reference_tiers_cost_more_than_fast_once_loops_count() {
             m.material, m.tier
         );
     }
-    let (fast, reference) = (
-        tier(&models, "hair", "fast"),
-        tier(&models, "hair", "reference"),
-    );
-    // Same machine code but for the bound (12 vs 64 cells): equal static cost.
-    assert_eq!(fast.static_cost, reference.static_cost);
-    assert_eq!((fast.loops, reference.loops), (1, 1));
-    // Executed: at most 64/12 (the code outside the loop runs once in both);
-    // above 4 because the cell loop is most of the fast tier's executed cost.
-    let ratio = reference.executed_cost / fast.executed_cost;
-    assert!(
-        ratio > 4.0 && ratio <= 64.0 / 12.0,
-        "hair reference / fast = {ratio}"
-    );
-    for material in ["laser", "microcylinder"] {
+    // A loop-free tier executes each block once; a loop adds its body's
+    // repeats (every loop here runs at least twice).
+    for m in &models {
+        if m.loops == 0 {
+            assert_eq!(m.executed_cost, m.static_cost, "{m:?}");
+        } else {
+            assert!(m.executed_cost > m.static_cost, "{m:?}");
+        }
+    }
+    for material in ["hair", "laser", "microcylinder"] {
         let (fast, reference) = (
             tier(&models, material, "fast"),
             tier(&models, material, "reference"),
         );
-        // Statically the reference tier looks cheaper (its loop counted once) …
+        // Static figures count each reference's loops once (laser's and
+        // microcylinder's static costs are within 6 % of fast's); executed,
+        // its trip counts multiply them ...
+        assert!(reference.loops >= 1, "{material}: {reference:?}");
         assert!(
-            reference.static_cost < fast.static_cost,
-            "{material}: {reference:?} {fast:?}"
+            reference.executed_cost > 4.0 * reference.static_cost,
+            "{material}: {reference:?}"
         );
-        // … executed, it is the dearer one, as llvmpipe measures.
+        // ... executed, it is the dearer one, as llvmpipe measures.
         assert!(
             reference.executed_cost > 3.0 * fast.executed_cost,
             "{material}: {reference:?} {fast:?}"
