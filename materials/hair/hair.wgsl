@@ -75,7 +75,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         if WEFT_TIER == TIER_REFERENCE {
             lobes = weft_hair_mean(hair, angles, HAIR_REFERENCE_CELLS);
         } else {
-            lobes = weft_hair_mean(hair, angles, HAIR_FAST_CELLS);
+            lobes = weft_hair_fast(hair, t, v, l);
         }
         let body = smoothstep(-HAIR_TERMINATOR, HAIR_TERMINATOR, n_dot_l);
         // Multiple scattering between fibres (README, "Colour"): the fibres
