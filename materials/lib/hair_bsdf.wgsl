@@ -450,13 +450,11 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
     let a3 = a2 * ft / (vec3<f32>(1.0) - ft);
     // N_TRT: a trimmed logistic about φ = 0 of scale √(s² + w²), w² fitted
     // to the spread of Φ_2 = 4γ_t - 2γ_o about its caustics (README).
-    let w2 = exp(clamp(-13.768 + a * (114.96 + a * (-324.66 + a * 265.59)) + hair.s * (4.0492 - 7.4955 * a), -12.0, 6.0));
-    // A von Mises lobe exp(κ (cos φ - 1)) / (2π e^(-κ) I_0(κ)) with the
-    // logistic's peak, κ = π / (8 s²) (no acos).
-    let kappa = 0.392699 / (hair.s * hair.s + w2);
-    let tk = 1.0 / (1.0 + 0.7 * kappa);
-    let e_kappa = (1.0 + tk * (1.0 - tk) * (0.181903 + tk * (-0.401835 + tk * 3.1851))) * inverseSqrt(1.0 + 2.0 * WEFT_PI * kappa);
-    let n_trt = weft_hair_trimmed_logistic(acos(cos_phi), sqrt(hair.s * hair.s + w2));
+    let s2_fit = -9.2609 + a * (72.357 + a * (-153.75 + a * (-67.745 + a * 239.74)))
+        + hair.s * ((65.993 + a * (-624.68 + a * (1704.7 + a * (-1105.8 - a * 430.94))))
+        + hair.s * (-107.38 + a * (1069.8 + a * (-3127.5 + a * 2706.6))));
+    let s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), hair.s * hair.s));
+    let n_trt = weft_hair_trimmed_logistic(acos(cos_phi), s_trt);
 
     var out: WeftHairLobes;
     out.s = mp.x * r + mp.y * tt_lobe + mp.z * (a2 * n_trt + a3 * (0.5 * WEFT_INV_PI));
