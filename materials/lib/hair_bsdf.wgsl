@@ -407,7 +407,10 @@ fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> W
         cos_o * hair.cos2k.x - sin_o * hair.sin2k.x,
         cos_o * hair.cos2k.z - sin_o * hair.sin2k.z));
     let inv_v = vec3<f32>(1.0, 4.0, 0.25) / hair.v.x;
-    let norm = inv_v / (vec3<f32>(1.0) - exp(-2.0 * inv_v));
+    // 1 / (v (1 - e^(-2/v))) with e^(-2/v_R) = (e^(-2/v_TRT))^4, e^(-2/v_TT) = (e^(-2/v_R))^4.
+    let e_trt = exp(-0.5 * inv_v.x);
+    let e_r = weft_hair_sqr(e_trt * e_trt);
+    let norm = inv_v / (vec3<f32>(1.0) - vec3<f32>(e_r, weft_hair_sqr(e_r * e_r), e_trt));
     let x = cos_i * co * inv_v;
     let tt = 1.0 / (1.0 + 0.7 * x);
     let bessel = (1.0 + tt * (1.0 - tt) * (0.181903 + tt * (-0.401835 + tt * 3.1851))) * inverseSqrt(1.0 + 2.0 * WEFT_PI * x);
