@@ -72,8 +72,7 @@ fn weft_hair_logistic_scale(beta_n: f32) -> f32 {
 // azimuthal roughness β_n. c is floored at 1e-4 (log 0).
 fn weft_hair_sigma_a_from_color(c: vec3<f32>, beta_n: f32) -> vec3<f32> {
     let b = clamp(beta_n, WEFT_HAIR_MIN_BETA_N, 1.0);
-    let b2 = b * b;
-    let d = 5.969 - 0.215 * b + 2.532 * b2 - 10.73 * b2 * b + 5.574 * b2 * b2 + 0.245 * b2 * b2 * b;
+    let d = 5.969 - 0.215 * b + 2.532 * b * b - 10.73 * pow(b, 3.0) + 5.574 * pow(b, 4.0) + 0.245 * pow(b, 5.0);
     let l = log(clamp(c, vec3<f32>(1e-4), vec3<f32>(1.0))) / d;
     return l * l;
 }
