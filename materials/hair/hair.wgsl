@@ -16,19 +16,22 @@
 //               over the fibre's width with HAIR_REFERENCE_CELLS cells
 //               (N_p integrated per cell); multiple scattering between
 //               fibres as a Lambert lobe carrying the colour's remainder.
-//   fast      = an approximation of the reference: the same model with
-//               HAIR_FAST_CELLS cells across the fibre (README: the
-//               count against the error).
+//   fast      = an approximation of the reference (weft_hair_fast): the
+//               same M_p (d'Eon's, with a closed-form e^(-x) I_0(x)) and
+//               the h-average in closed form after Karis 2016: R and TT
+//               at the offset whose exit azimuth is φ, weighted by the
+//               smooth-limit density |dh/dφ| / 2 and blurred by the
+//               logistic; TRT a logistic about φ = 0 of a fitted width;
+//               ⟨A_0⟩, ⟨A_2⟩ at fitted offsets. No loop. README: its
+//               error against the reference and its cost.
 //   seed      = a look: the seed's Kajiya-Kay, smoothstep(-1, 0, t.h)
 //               sin(t, h)^exponent intensity, plus Scheuermann's second
 //               shifted highlight, over Lambert diffuse and SH ambient.
 
-// Cells across the fibre in the h average (equal cells in γ_o). The
-// reference's count is converged (tests/physics/hair_furnace.rs: within 0.6 % of
-// 2048 intervals; 32 cells are 3.4 % off at β_n 0.15); fast's keeps a
-// margin under the ladder's worst FLIP 0.05 (10 cells: 0.045, 12: 0.036).
+// Cells across the fibre in the reference's h average (equal cells in γ_o):
+// converged (tests/physics/hair_furnace.rs: within 0.6 % of 2048
+// intervals; 32 cells are 3.4 % off at β_n 0.15).
 const HAIR_REFERENCE_CELLS: u32 = 64u;
-const HAIR_FAST_CELLS: u32 = 12u;
 // Body shadow: light more than this far below the surface (in n.l) is
 // blocked by the head behind the hair; the band up to +this is the thin
 // layer at the terminator where light still passes (README).
@@ -75,7 +78,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         if WEFT_TIER == TIER_REFERENCE {
             lobes = weft_hair_mean(hair, angles, HAIR_REFERENCE_CELLS);
         } else {
-            lobes = weft_hair_mean(hair, angles, HAIR_FAST_CELLS);
+            lobes = weft_hair_fast(hair, t, v, l);
         }
         let body = smoothstep(-HAIR_TERMINATOR, HAIR_TERMINATOR, n_dot_l);
         // Multiple scattering between fibres (README, "Colour"): the fibres

@@ -352,3 +352,145 @@ fn weft_hair_mean(hair: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHai
     out.back = back / weights;
     return out;
 }
+
+// ---------------------------------------------------------------- fast
+
+// The fast tier: the same model (S = Σ_p M_p ⟨A_p N_p⟩_h + M_3 ⟨A_3⟩ / 2π,
+// averaged over the fibre's width h) with the average over h in closed
+// form instead of weft_hair_mean's cells, after Karis 2016 ("Physically
+// Based Hair Shading in Unreal", SIGGRAPH course): each lobe at the offset h
+// where its exit azimuth Φ_p(h) meets φ, weighted by the smooth-limit
+// density |dh/dΦ_p| / 2 (Marschner et al. 2003), then spread by the
+// logistic of scale s. Unlike Karis's fits (one η, no β_n), every term
+// follows η, β_m, β_n, α and σ_a. Measured against the reference in
+// materials/hair/README.md ("fast").
+
+// The TT offset for one azimuth, given sin(φ/2) and a = 1/η'. Φ_1 = 2γ_t -
+// 2γ_o + π = φ with sin γ_t = a sin γ_o solves in closed form: tan γ_o =
+// cos(φ/2) / (sin(φ/2) - a). With ρ² = 1 - 2a sin(φ/2) + a²: cos γ_o =
+// (sin(φ/2) - a)/ρ, cos γ_t = (1 - a sin(φ/2))/ρ, and the density
+// |dh/dΦ_1| / 2 = ½ / |2a/cos γ_t - 2/cos γ_o| = cos γ_o cos γ_t / (4ρ)
+// (cos γ_t - a cos γ_o = ρ). Returns (cos γ_o, cos γ_t, density); no TT
+// path reaches sin(φ/2) <= a (|φ| below 2 asin(a)): density 0.
+fn weft_hair_fast_tt_density(sin_half: f32, a: f32) -> vec3<f32> {
+    let rho2 = 1.0 - 2.0 * a * sin_half + a * a;
+    let inv_rho = inverseSqrt(max(rho2, 1e-8));
+    let cos_go = max(sin_half - a, 0.0) * inv_rho;
+    let cos_gt = (1.0 - a * sin_half) * inv_rho;
+    return vec3<f32>(cos_go, cos_gt, 0.25 * cos_go * cos_gt * inv_rho);
+}
+
+// ⟨A_1 N_1⟩_h: the density at φ + δ and φ - δ (given sin((φ ± δ)/2)),
+// averaged: the logistic's blur, which takes 5-18 % off the smooth limit's
+// peak at φ = π and fills the edge at 2 asin(a); A_1 = (1 - F)² T at the
+// first point only (φ + δ folds back about π, so it lies inside the lobe
+// whenever the other does): F at cos θ_o cos γ_o, T = exp(-σ_a 2 cos γ_t /
+// cos θ_t) (chord = 2 / cos θ_t), as weft_hair_attenuation.
+fn weft_hair_fast_tt(sin_plus: f32, sin_minus: f32, a: f32, cos_o: f32, eta: f32, sigma_a: vec3<f32>, chord: f32) -> vec3<f32> {
+    let p = weft_hair_fast_tt_density(sin_plus, a);
+    let m = weft_hair_fast_tt_density(sin_minus, a);
+    let f_tt = weft_f_dielectric(cos_o * p.x, eta);
+    return exp(-sigma_a * (chord * p.y)) * (weft_hair_sqr(1.0 - f_tt) * 0.5 * (p.z + m.z));
+}
+
+// The fast tier's lobes for the strand tangent t and the unit directions
+// towards the viewer (o) and the light (i); the fields mean what
+// weft_hair_mean's do (s: the cosine-weighted S; back: ⟨A_0 + A_2⟩).
+fn weft_hair_fast(hair: WeftHair, t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> WeftHairLobes {
+    // Angles as weft_hair_angles, φ through its cosine and half angles
+    // (no acos on this path but N_TRT's).
+    let sin_o = clamp(dot(o, t), -1.0, 1.0);
+    let sin_i = clamp(dot(i, t), -1.0, 1.0);
+    let cos_o = weft_hair_safe_sqrt(1.0 - sin_o * sin_o);
+    let cos_i = weft_hair_safe_sqrt(1.0 - sin_i * sin_i);
+    let o_perp = o - sin_o * t;
+    let i_perp = i - sin_i * t;
+    let len2 = dot(o_perp, o_perp) * dot(i_perp, i_perp);
+    let cos_phi = clamp(select(1.0, dot(o_perp, i_perp) * inverseSqrt(max(len2, 1e-30)), len2 > 1e-12), -1.0, 1.0);
+    let cos_half = sqrt(0.5 + 0.5 * cos_phi);
+    let sin_half = sqrt(0.5 - 0.5 * cos_phi);
+
+    // M_p of R, TT, TRT (the residual takes TRT's: the same variance 4v,
+    // tilted by 4α instead of 0; it is 1-4 % of S). d'Eon et al. 2011 eq. 7
+    // rewritten without overflow: csch(1/v)/(2v) e^(-b) I_0(x) =
+    // exp((cos(θ_i + θ_o') - 1)/v) · e^(-x) I_0(x) / (v (1 - e^(-2/v))),
+    // x = cos θ_i cos θ_o' / v, b = sin θ_i sin θ_o' / v - exact but for
+    // e^(-x) I_0(x) ≈ (1 + u(1-u)(0.1819 - 0.4018u + 3.1851u²)) / √(1 + 2πx),
+    // u = 1/(1 + 0.7x): relative error < 0.3 % for every x >= 0 (least
+    // squares against numpy's i0; the series / asymptotic split of the
+    // reference, weft_hair_log_i0, is not needed). Tilts of θ_o as
+    // weft_hair_longitudinal (issue 28): R -2α, TT +α, TRT +4α.
+    let so = vec3<f32>(
+        sin_o * hair.cos2k.y - cos_o * hair.sin2k.y,
+        sin_o * hair.cos2k.x + cos_o * hair.sin2k.x,
+        sin_o * hair.cos2k.z + cos_o * hair.sin2k.z);
+    let co = abs(vec3<f32>(
+        cos_o * hair.cos2k.y + sin_o * hair.sin2k.y,
+        cos_o * hair.cos2k.x - sin_o * hair.sin2k.x,
+        cos_o * hair.cos2k.z - sin_o * hair.sin2k.z));
+    let inv_v = vec3<f32>(1.0, 4.0, 0.25) / hair.v.x;
+    // e^(-2/v_R) = (e^(-2/v_TRT))^4, e^(-2/v_TT) = (e^(-2/v_R))^4: one exp.
+    let e_trt = exp(-0.5 * inv_v.x);
+    let e_r = weft_hair_sqr(e_trt * e_trt);
+    let norm = inv_v / (vec3<f32>(1.0) - vec3<f32>(e_r, weft_hair_sqr(e_r * e_r), e_trt));
+    let x = cos_i * co * inv_v;
+    let u = 1.0 / (1.0 + 0.7 * x);
+    let bessel = (1.0 + u * (1.0 - u) * (0.181903 + u * (-0.401835 + u * 3.1851))) * inverseSqrt(1.0 + 2.0 * WEFT_PI * x);
+    let mp = exp(min((cos_i * co - sin_i * so - 1.0) * inv_v, vec3<f32>(0.0))) * bessel * norm;
+
+    let sin_t = sin_o / hair.eta;
+    let chord = 2.0 / max(weft_hair_safe_sqrt(1.0 - sin_t * sin_t), 1e-4);
+    // a = 1/η' = cos θ_o / √(η² - sin² θ_o) (Bravais).
+    let a = cos_o * inverseSqrt(max(hair.eta * hair.eta - sin_o * sin_o, 1e-8));
+    // The logistic's standard deviation is πs/√3; the blur's half-step in
+    // φ/2 is δ/2 = 0.45 πs/√3 (0.45 fitted: the two-point mean of TT's
+    // smooth limit within 2-4 % of the 3000-offset average at β_n 0.3-0.4).
+    let d = 0.45 * WEFT_PI * 0.577350 * hair.s;
+    let sd = sin(d);
+    let cd = cos(d);
+
+    // R: Φ_0 = -2γ_o meets φ at γ_o = -φ/2 only, so ⟨N_R⟩_h = |dh/dφ| / 2 =
+    // cos(φ/2) / 4 and A_R = F(cos θ_o cos(φ/2)) (Karis 2016's N_R and A_R).
+    // The logistic rounds the kink at φ = π where cos(φ/2) -> 0 and F -> 1:
+    // cos(φ/2) -> √(cos²(φ/2) + (σ/4)²), σ = πs/√3 (σ/4 = 0.4534 s, fitted:
+    // the value at φ = π within 7 % of the reference's at β_n 0.3-0.4).
+    let c_r = sqrt(min(0.5 + 0.5 * cos_phi + weft_hair_sqr(0.4534 * hair.s), 1.0));
+    let r = 0.25 * c_r * weft_f_dielectric(cos_o * c_r, hair.eta);
+
+    // TT: sin((φ ± δ)/2) by the angle sum.
+    let tt_lobe = weft_hair_fast_tt(sin_half * cd + cos_half * sd, sin_half * cd - cos_half * sd, a, cos_o, hair.eta, hair.sigma_a, chord);
+
+    // ⟨A_0⟩ (F) and ⟨A_2⟩ = ⟨(1 - F)² F T²⟩ each at one offset, h_F = 0.624 +
+    // 0.190 cos θ_o and h_2 = 0.482 + 0.278 cos θ_o (fitted to 3000-offset
+    // averages over η 1.4-1.7, σ_a 0-1, θ_o 0-76°: ⟨A_0⟩ within 2.8 %,
+    // ⟨A_0 + A_2⟩ within 3 %, ⟨A_2⟩ -8 %/+11 %; Karis takes h = √3/2 for
+    // TRT); the residual A_3 = A_2 F T / (1 - F T) from them (a few % of S).
+    let h_f = 0.6243 + 0.1898 * cos_o;
+    let mean_f = weft_f_dielectric(cos_o * weft_hair_safe_sqrt(1.0 - h_f * h_f), hair.eta);
+    let h2 = 0.4824 + 0.2778 * cos_o;
+    let f2 = weft_f_dielectric(cos_o * weft_hair_safe_sqrt(1.0 - h2 * h2), hair.eta);
+    let t2 = exp(-hair.sigma_a * (chord * weft_hair_safe_sqrt(1.0 - h2 * h2 * a * a)));
+    let a2 = weft_hair_sqr(1.0 - f2) * f2 * t2 * t2;
+    let ft = mean_f * t2;
+    let a3 = a2 * ft / (vec3<f32>(1.0) - ft);
+
+    // N_TRT: Φ_2 = 4γ_t - 2γ_o + 2π has caustics near ±20° (η' 1.55) that
+    // merge at η' ~ 1.7 and give way to a broad lobe beyond; with the
+    // logistic on top, a trimmed logistic about φ = 0 whose scale s_TRT has
+    // the reference's peak: log s_TRT² fitted over a = 1/η' and s (least
+    // squares, 192 cases: η 1.45-1.65, θ_o 0-76°, β_n 0.2-0.6; s_TRT within
+    // 8.5 % at the grid's β_n; Karis's fixed exp(17 cos φ - 16.78) is this
+    // lobe for one η and β_n). Never narrower than the logistic itself.
+    let s2_fit = -9.2609 + a * (72.357 + a * (-153.75 + a * (-67.745 + a * 239.74)))
+        + hair.s * ((65.993 + a * (-624.68 + a * (1704.7 + a * (-1105.8 - a * 430.94))))
+        + hair.s * (-107.38 + a * (1069.8 + a * (-3127.5 + a * 2706.6))));
+    let s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), hair.s * hair.s));
+    let n_trt = weft_hair_trimmed_logistic(acos(cos_phi), s_trt);
+
+    var out: WeftHairLobes;
+    out.s = mp.x * r + mp.y * tt_lobe + mp.z * (a2 * n_trt + a3 * (0.5 * WEFT_INV_PI));
+    out.back = mean_f + a2;
+    // Σ ⟨A_p⟩ with ⟨A_1⟩ at h_2 (not used by hair.wgsl).
+    out.albedo = mean_f + weft_hair_sqr(1.0 - f2) * t2 + a2 + a3;
+    return out;
+}
