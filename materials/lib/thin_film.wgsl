@@ -235,39 +235,49 @@ const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976, 106.97481,
 // quarter of their transcendentals.
 fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
     let phase = 2.0 * WEFT_FILM_PI * opd_nm * 1.0e-3;
-    let sa = phase * WEFT_FILM_LOBE_SIGMA_A;
-    let sb = phase * WEFT_FILM_LOBE_SIGMA_B;
-    let ca1 = cos(phase * WEFT_FILM_LOBE_MU_A);
-    let cb1 = cos(phase * WEFT_FILM_LOBE_MU_B);
-    let ga1 = exp(-0.5 * sa * sa);
-    let gb1 = exp(-0.5 * sb * sb);
-    let ca2 = 2.0 * ca1 * ca1 - 1.0;
-    let cb2 = 2.0 * cb1 * cb1 - 1.0;
-    let ca3 = 2.0 * ca1 * ca2 - ca1;
-    let cb3 = 2.0 * cb1 * cb2 - cb1;
-    let ca4 = 2.0 * ca2 * ca2 - 1.0;
-    let cb4 = 2.0 * cb2 * cb2 - 1.0;
-    let ga2 = (ga1 * ga1) * (ga1 * ga1);
-    let gb2 = (gb1 * gb1) * (gb1 * gb1);
-    let ga3 = (ga2 * ga2) * ga1;
-    let gb3 = (gb2 * gb2) * gb1;
-    let ga4 = (ga2 * ga2) * (ga2 * ga2);
-    let gb4 = (gb2 * gb2) * (gb2 * gb2);
-    // C_m = first ratio^m per polarisation.
-    let k1s = s.first * s.ratio;
-    let k1p = p.first * p.ratio;
-    let k2s = k1s * s.ratio;
-    let k2p = k1p * p.ratio;
-    let k3s = k2s * s.ratio;
-    let k3p = k2p * p.ratio;
-    let k4s = k3s * s.ratio;
-    let k4p = k3p * p.ratio;
-    let w_a = WEFT_FILM_LOBE_WEIGHT_A;
-    let w_b = WEFT_FILM_LOBE_WEIGHT_B;
-    return 2.0 * ((k1s + k1p) * weft_film_lobes_to_rgb(w_a * ca1 * ga1, w_b * cb1 * gb1)
-        + (k2s + k2p) * weft_film_lobes_to_rgb(w_a * ca2 * ga2, w_b * cb2 * gb2)
-        + (k3s + k3p) * weft_film_lobes_to_rgb(w_a * ca3 * ga3, w_b * cb3 * gb3)
-        + (k4s + k4p) * weft_film_lobes_to_rgb(w_a * ca4 * ga4, w_b * cb4 * gb4));
+    // C_m = first ratio^m per polarisation, per base channel.
+    let k1 = s.first * s.ratio + p.first * p.ratio;
+    let k2 = s.first * s.ratio * s.ratio + p.first * p.ratio * p.ratio;
+    let k3 = s.first * s.ratio * s.ratio * s.ratio + p.first * p.ratio * p.ratio * p.ratio;
+    let k4 = s.first * (s.ratio * s.ratio) * (s.ratio * s.ratio) + p.first * (p.ratio * p.ratio) * (p.ratio * p.ratio);
+    // Lobe by lobe (x1 x2 x3 y1 | y2 y3 z1 z2), so that only one lobe's
+    // recurrences are live at a time (all at once needed 136 VGPRs on
+    // RDNA2, against 80 before the recurrences).
+    let x = weft_film_rgb_of_xyz(0u);
+    let y = weft_film_rgb_of_xyz(1u);
+    let z = weft_film_rgb_of_xyz(2u);
+    let a = WEFT_FILM_LOBE_WEIGHT_A;
+    let b = WEFT_FILM_LOBE_WEIGHT_B;
+    var sum = a.x * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.x, WEFT_FILM_LOBE_SIGMA_A.x, k1, k2, k3, k4);
+    sum += a.y * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.y, WEFT_FILM_LOBE_SIGMA_A.y, k1, k2, k3, k4);
+    sum += a.z * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.z, WEFT_FILM_LOBE_SIGMA_A.z, k1, k2, k3, k4);
+    sum += a.w * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.w, WEFT_FILM_LOBE_SIGMA_A.w, k1, k2, k3, k4);
+    sum += b.x * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.x, WEFT_FILM_LOBE_SIGMA_B.x, k1, k2, k3, k4);
+    sum += b.y * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.y, WEFT_FILM_LOBE_SIGMA_B.y, k1, k2, k3, k4);
+    sum += b.z * z * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.z, WEFT_FILM_LOBE_SIGMA_B.z, k1, k2, k3, k4);
+    sum += b.w * z * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.w, WEFT_FILM_LOBE_SIGMA_B.w, k1, k2, k3, k4);
+    return 2.0 * sum;
+}
+
+// One lobe's sum over the orders, per base channel: sum of k_m cos(m x)
+// g^(m^2), x = phase mu, g = exp(-(phase sigma)^2 / 2).
+fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1: vec3<f32>, k2: vec3<f32>, k3: vec3<f32>, k4: vec3<f32>) -> vec3<f32> {
+    let c1 = cos(phase * mu);
+    let sg = phase * sigma;
+    let g1 = exp(-0.5 * sg * sg);
+    let c2 = 2.0 * c1 * c1 - 1.0;
+    let c3 = 2.0 * c1 * c2 - c1;
+    let c4 = 2.0 * c2 * c2 - 1.0;
+    let g2 = (g1 * g1) * (g1 * g1);
+    let g3 = (g2 * g2) * g1;
+    let g4 = (g2 * g2) * (g2 * g2);
+    return k1 * (c1 * g1) + k2 * (c2 * g2) + k3 * (c3 * g3) + k4 * (c4 * g4);
+}
+
+// Linear Rec. 709 of a unit of X (0), Y (1) or Z (2), divided by the
+// sensitivity's value at opd = 0 (as weft_film_lobes_to_rgb): constants.
+fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
+    return WEFT_XYZ_TO_REC709[axis] / (WEFT_XYZ_TO_REC709 * WEFT_FILM_SENSITIVITY_AT_ZERO);
 }
 
 // The fast form: Belcour & Barla's Fourier evaluation of the Airy series.
