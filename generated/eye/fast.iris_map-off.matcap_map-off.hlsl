@@ -112,6 +112,12 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
+float weft_pow5_(float x)
+{
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
 float weft_clamp_cos(float c)
 {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
@@ -139,17 +145,10 @@ float weft_d_ggx_nh(float3 n, float3 h, float roughness_1)
     return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_f_dielectric(float cos_i, float eta)
+float3 weft_f_schlick(float3 f0_, float v_dot_h)
 {
-    float c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = (((eta * eta) - 1.0) + (c_5 * c_5));
-    float g = sqrt(max(g2_, 0.0));
-    float gmc = (g - c_5);
-    float gpc = max((g + c_5), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b = (((c_5 * gpc) - 1.0) / max(((c_5 * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b * b))));
-    return ((g2_ < 0.0) ? 1.0 : f);
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (f0_ + (((1.0).xxx - f0_) * _e5));
 }
 
 float weft_f0_from_ior(float ior)
@@ -161,8 +160,8 @@ float weft_f0_from_ior(float ior)
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2)
 {
     const float _e3 = weft_clamp_roughness(roughness_2);
-    float a_3 = (_e3 * _e3);
-    float a2_1 = (a_3 * a_3);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
@@ -170,10 +169,10 @@ float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_
     return (0.5 / (lv + ll));
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_, float2 scale_bias)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
     float2 sb = saturate(scale_bias);
-    return ((f0_ * sb.x) + (sb.y).xxx);
+    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_main_light_direction()
@@ -233,8 +232,8 @@ float weft_specular_mip(float roughness_3)
 float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
 {
     const float _e4 = weft_specular_mip(roughness_4);
-    float4 c_6 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_6.xyz, (0.0).xxx);
+    float4 c_5 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_5.xyz, (0.0).xxx);
 }
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
@@ -372,7 +371,14 @@ float3 eye_albedo(float2 q, bool front)
     return saturate(lerp(_e37, sclera, to_sclera));
 }
 
-float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3 normal3_, float ior_2, float3 light)
+float eye_fresnel(float cos_i, float ior_2)
+{
+    const float _e2 = weft_f0_from_ior(ior_2);
+    const float3 _e4 = weft_f_schlick((_e2).xxx, cos_i);
+    return _e4.x;
+}
+
+float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3 normal3_, float ior_3, float3 light)
 {
     bool local_1 = (bool)0;
 
@@ -389,26 +395,26 @@ float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3
     const float _e32 = weft_clamp_cos(dot(_e30, v_2));
     float s_dot_l = saturate(dot(_e30, l));
     const float3 _e36 = weft_safe_normalize((l + v_2), _e30);
-    const float _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    const float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     const float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     const float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    const float _e44 = weft_f0_from_ior(ior_2);
-    float3 f0_1 = (_e44).xxx;
+    const float _e44 = weft_f0_from_ior(ior_3);
+    float3 f0_2 = (_e44).xxx;
     const float3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     const float2 _e49 = weft_env_brdf_lut(_e32, _e27);
-    const float3 _e50 = weft_env_brdf_from_lut(f0_1, _e49);
+    const float3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
     float3 env = (_e48 * _e50);
     float _e56 = material.specular_strength;
     float3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    const float _e60 = weft_f_dielectric(_e32, ior_2);
+    const float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = (1.0 - _e60);
-    const float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    const float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = (1.0 - _e63);
     const float3 _e71 = weft_sh_irradiance(n_2);
     float3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
     const float3 _e79 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), normal3_), n_2);
-    float3 l_in = refract(-(l), _e30, (1.0 / ior_2));
+    float3 l_in = refract(-(l), _e30, (1.0 / ior_3));
     float iris_cos = ((s_dot_l > 0.0) ? saturate(dot(_e79, -(l_in))) : 0.0);
     const float3 _e96 = weft_sh_irradiance(_e79);
     float3 iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -465,13 +471,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float _e64 = material.cornea_height;
         const EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = material.cornea_ior;
-        float ior_3 = max(_e68, 1.0);
+        float ior_4 = max(_e68, 1.0);
         {
-            const EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            const EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        const float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_3, _e57);
+        const float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_4, _e57);
         color = _e74;
     }
     float3 _e75 = color;

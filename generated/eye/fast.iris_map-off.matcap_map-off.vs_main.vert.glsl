@@ -78,6 +78,11 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
@@ -101,16 +106,9 @@ float weft_d_ggx_nh(vec3 n, vec3 h, float roughness_1) {
     return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_f_dielectric(float cos_i, float eta) {
-    float c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = (((eta * eta) - 1.0) + (c_5 * c_5));
-    float g = sqrt(max(g2_, 0.0));
-    float gmc = (g - c_5);
-    float gpc = max((g + c_5), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b = (((c_5 * gpc) - 1.0) / max(((c_5 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b * b))), 0.0, 1.0);
-    return ((g2_ < 0.0) ? 1.0 : f);
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
 float weft_f0_from_ior(float ior) {
@@ -120,8 +118,8 @@ float weft_f0_from_ior(float ior) {
 
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_3 = (_e3 * _e3);
-    float a2_1 = (a_3 * a_3);
+    float a_2 = (_e3 * _e3);
+    float a2_1 = (a_2 * a_2);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
@@ -129,9 +127,9 @@ float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_
     return (0.5 / (lv + ll));
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
     vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((f0_ * sb.x) + vec3(sb.y));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -232,6 +230,12 @@ EyeLookup eye_parallax(vec3 p, vec3 v_1, EyeCornea c_3, float ior_1) {
 
 vec2 eye_uv_from_xy(vec2 xy_1) {
     return vec2((0.5 + (0.5 * xy_1.x)), (0.5 - (0.5 * xy_1.y)));
+}
+
+float eye_fresnel(float cos_i, float ior_2) {
+    float _e2 = weft_f0_from_ior(ior_2);
+    vec3 _e4 = weft_f_schlick(vec3(_e2), cos_i);
+    return _e4.x;
 }
 
 void main() {

@@ -91,6 +91,11 @@ var material_sampler: sampler;
 @group(1) @binding(4) 
 var sclera_map: texture_2d<f32>;
 
+fn weft_pow5_(x: f32) -> f32 {
+    let x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
 fn weft_clamp_cos(c: f32) -> f32 {
     return clamp(c, WEFT_MIN_N_DOT, 1f);
 }
@@ -114,16 +119,9 @@ fn weft_d_ggx_nh(n: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
     return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
-fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
-    let c_5 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
-    let g2_ = (((eta * eta) - 1f) + (c_5 * c_5));
-    let g = sqrt(max(g2_, 0f));
-    let gmc = (g - c_5);
-    let gpc = max((g + c_5), 0.0000001f);
-    let a_2 = (gmc / gpc);
-    let b = (((c_5 * gpc) - 1f) / max(((c_5 * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b * b))));
-    return select(f, 1f, (g2_ < 0f));
+fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
+    return (f0_ + ((vec3(1f) - f0_) * _e5));
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
@@ -133,8 +131,8 @@ fn weft_f0_from_ior(ior: f32) -> f32 {
 
 fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_2);
-    let a_3 = (_e3 * _e3);
-    let a2_1 = (a_3 * a_3);
+    let a_2 = (_e3 * _e3);
+    let a2_1 = (a_2 * a_2);
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
     let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
@@ -142,9 +140,9 @@ fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> 
     return (0.5f / (lv + ll));
 }
 
-fn weft_env_brdf_from_lut(f0_: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
     let sb = saturate(scale_bias);
-    return ((f0_ * sb.x) + vec3(sb.y));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -198,8 +196,8 @@ fn weft_specular_mip(roughness_3: f32) -> f32 {
 
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_4);
-    let c_6 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_6.xyz, vec3(0f));
+    let c_5 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_5.xyz, vec3(0f));
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
@@ -301,7 +299,13 @@ fn eye_albedo(q: vec2<f32>, front: bool) -> vec3<f32> {
     return saturate(mix(_e37, sclera, to_sclera));
 }
 
-fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_2: f32, light: vec3<f32>) -> vec3<f32> {
+fn eye_fresnel(cos_i: f32, ior_2: f32) -> f32 {
+    let _e2 = weft_f0_from_ior(ior_2);
+    let _e4 = weft_f_schlick(vec3(_e2), cos_i);
+    return _e4.x;
+}
+
+fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_3: f32, light: vec3<f32>) -> vec3<f32> {
     var local_1: bool;
 
     if !((look_1.through_cornea > 0f)) {
@@ -317,26 +321,26 @@ fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>,
     let _e32 = weft_clamp_cos(dot(_e30, v_2));
     let s_dot_l = saturate(dot(_e30, l));
     let _e36 = weft_safe_normalize((l + v_2), _e30);
-    let _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    let _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     let _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     let _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     let direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    let _e44 = weft_f0_from_ior(ior_2);
-    let f0_1 = vec3(_e44);
+    let _e44 = weft_f0_from_ior(ior_3);
+    let f0_2 = vec3(_e44);
     let _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     let _e49 = weft_env_brdf_lut(_e32, _e27);
-    let _e50 = weft_env_brdf_from_lut(f0_1, _e49);
+    let _e50 = weft_env_brdf_from_lut(f0_2, _e49);
     let env = (_e48 * _e50);
     let _e56 = material.specular_strength;
     let specular = (((light * direct_spec) + env) * max(_e56, 0f));
-    let _e60 = weft_f_dielectric(_e32, ior_2);
+    let _e60 = eye_fresnel(_e32, ior_3);
     let t_v = (1f - _e60);
-    let _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    let _e63 = eye_fresnel(s_dot_l, ior_3);
     let t_l = (1f - _e63);
     let _e71 = weft_sh_irradiance(n_2);
     let sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
     let _e79 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
-    let l_in = refract(-(l), _e30, (1f / ior_2));
+    let l_in = refract(-(l), _e30, (1f / ior_3));
     let iris_cos = select(0f, saturate(dot(_e79, -(l_in))), (s_dot_l > 0f));
     let _e96 = weft_sh_irradiance(_e79);
     let iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -390,13 +394,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e64 = material.cornea_height;
         let _e65 = eye_cornea(_e61, _e64);
         let _e68 = material.cornea_ior;
-        let ior_3 = max(_e68, 1f);
+        let ior_4 = max(_e68, 1f);
         {
-            let _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            let _e72 = eye_parallax(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         let _e73 = look;
-        let _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_3, _e57);
+        let _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_4, _e57);
         color = _e74;
     }
     let _e75 = color;

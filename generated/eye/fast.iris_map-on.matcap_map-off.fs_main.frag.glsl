@@ -85,6 +85,11 @@ layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
@@ -108,16 +113,9 @@ float weft_d_ggx_nh(vec3 n, vec3 h, float roughness_1) {
     return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_f_dielectric(float cos_i, float eta) {
-    float c_4 = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = (((eta * eta) - 1.0) + (c_4 * c_4));
-    float g = sqrt(max(g2_, 0.0));
-    float gmc = (g - c_4);
-    float gpc = max((g + c_4), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b = (((c_4 * gpc) - 1.0) / max(((c_4 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_1) * a_1) * (1.0 + (b * b))), 0.0, 1.0);
-    return ((g2_ < 0.0) ? 1.0 : f);
+vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (f0_ + ((vec3(1.0) - f0_) * _e5));
 }
 
 float weft_f0_from_ior(float ior) {
@@ -127,8 +125,8 @@ float weft_f0_from_ior(float ior) {
 
 float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = (_e3 * _e3);
-    float a2_1 = (a_2 * a_2);
+    float a_1 = (_e3 * _e3);
+    float a2_1 = (a_1 * a_1);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
@@ -136,9 +134,9 @@ float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_
     return (0.5 / (lv + ll));
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_, vec2 scale_bias) {
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
     vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
-    return ((f0_ * sb.x) + vec3(sb.y));
+    return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
 vec3 weft_main_light_direction() {
@@ -191,8 +189,8 @@ float weft_specular_mip(float roughness_3) {
 
 vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     float _e4 = weft_specular_mip(roughness_4);
-    vec4 c_5 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_5.xyz, vec3(0.0));
+    vec4 c_4 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_4.xyz, vec3(0.0));
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
@@ -273,7 +271,13 @@ vec3 eye_albedo(vec2 q, bool front) {
     return clamp(mix(_e46, sclera, to_sclera), vec3(0.0), vec3(1.0));
 }
 
-vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_2, vec3 light) {
+float eye_fresnel(float cos_i, float ior_2) {
+    float _e2 = weft_f0_from_ior(ior_2);
+    vec3 _e4 = weft_f_schlick(vec3(_e2), cos_i);
+    return _e4.x;
+}
+
+vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_3, vec3 light) {
     bool local_1 = false;
     if (!((look_1.through_cornea > 0.0))) {
         local_1 = (look_1.normal.z > 0.0);
@@ -288,26 +292,26 @@ vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_,
     float _e32 = weft_clamp_cos(dot(_e30, v_2));
     float s_dot_l = clamp(dot(_e30, l), 0.0, 1.0);
     vec3 _e36 = weft_safe_normalize((l + v_2), _e30);
-    float _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    float _e44 = weft_f0_from_ior(ior_2);
-    vec3 f0_1 = vec3(_e44);
+    float _e44 = weft_f0_from_ior(ior_3);
+    vec3 f0_2 = vec3(_e44);
     vec3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     vec2 _e49 = weft_env_brdf_lut(_e32, _e27);
-    vec3 _e50 = weft_env_brdf_from_lut(f0_1, _e49);
+    vec3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
     vec3 env = (_e48 * _e50);
     float _e56 = _group_1_binding_0_fs.specular_strength;
     vec3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    float _e60 = weft_f_dielectric(_e32, ior_2);
+    float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = (1.0 - _e60);
-    float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = (1.0 - _e63);
     vec3 _e71 = weft_sh_irradiance(n_2);
     vec3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * clamp(dot(n_2, l), 0.0, 1.0))) + _e71));
     vec3 _e79 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
-    vec3 l_in = refract(-(l), _e30, (1.0 / ior_2));
+    vec3 l_in = refract(-(l), _e30, (1.0 / ior_3));
     float iris_cos = ((s_dot_l > 0.0) ? clamp(dot(_e79, -(l_in)), 0.0, 1.0) : 0.0);
     vec3 _e96 = weft_sh_irradiance(_e79);
     vec3 iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -337,13 +341,13 @@ void main() {
         float _e64 = _group_1_binding_0_fs.cornea_height;
         EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = _group_1_binding_0_fs.cornea_ior;
-        float ior_3 = max(_e68, 1.0);
+        float ior_4 = max(_e68, 1.0);
         {
-            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        vec3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_1, ior_3, _e57);
+        vec3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_1, ior_4, _e57);
         color = _e74;
     }
     vec3 _e75 = color;

@@ -79,6 +79,13 @@ constant float WEFT_MIN_N_DOT = 0.0001;
 constant float WEFT_MAX_HALF = 65504.0;
 constant float WEFT_DIELECTRIC_F0_ = 0.04;
 
+float weft_pow5_(
+    float x
+) {
+    float x2_ = x * x;
+    return (x2_ * x2_) * x;
+}
+
 float weft_clamp_cos(
     float c
 ) {
@@ -113,19 +120,12 @@ float weft_d_ggx_nh(
     return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
-float weft_f_dielectric(
-    float cos_i,
-    float eta
+metal::float3 weft_f_schlick(
+    metal::float3 f0_,
+    float v_dot_h
 ) {
-    float c_4 = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = ((eta * eta) - 1.0) + (c_4 * c_4);
-    float g = metal::sqrt(metal::max(g2_, 0.0));
-    float gmc = g - c_4;
-    float gpc = metal::max(g + c_4, 0.0000001);
-    float a_1 = gmc / gpc;
-    float b = ((c_4 * gpc) - 1.0) / metal::max((c_4 * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_1) * a_1) * (1.0 + (b * b)));
-    return (g2_ < 0.0) ? 1.0 : f;
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
 }
 
 float weft_f0_from_ior(
@@ -141,8 +141,8 @@ float weft_v_smith_ggx_correlated(
     float roughness_2
 ) {
     float _e3 = weft_clamp_roughness(roughness_2);
-    float a_2 = _e3 * _e3;
-    float a2_1 = a_2 * a_2;
+    float a_1 = _e3 * _e3;
+    float a2_1 = a_1 * a_1;
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
@@ -151,11 +151,11 @@ float weft_v_smith_ggx_correlated(
 }
 
 metal::float3 weft_env_brdf_from_lut(
-    metal::float3 f0_,
+    metal::float3 f0_1,
     metal::float2 scale_bias
 ) {
     metal::float2 sb = metal::saturate(scale_bias);
-    return (f0_ * sb.x) + metal::float3(sb.y);
+    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_main_light_direction(
@@ -228,8 +228,8 @@ metal::float3 weft_prefiltered_radiance(
     metal::sampler weft_environment_sampler
 ) {
     float _e4 = weft_specular_mip(roughness_4, weft_frame);
-    metal::float4 c_5 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
-    return metal::max(c_5.xyz, metal::float3(0.0));
+    metal::float4 c_4 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
+    return metal::max(c_4.xyz, metal::float3(0.0));
 }
 
 metal::float2 weft_env_brdf_lut(
@@ -343,13 +343,22 @@ metal::float3 eye_albedo(
     return metal::saturate(metal::mix(_e46, sclera, to_sclera));
 }
 
+float eye_fresnel(
+    float cos_i,
+    float ior_2
+) {
+    float _e2 = weft_f0_from_ior(ior_2);
+    metal::float3 _e4 = weft_f_schlick(metal::float3(_e2), cos_i);
+    return _e4.x;
+}
+
 metal::float3 eye_physical(
     EyeLookup look_1,
     metal::float3 n_2,
     metal::float3 v_2,
     metal::float3 l,
     metal::float3x3 normal3_,
-    float ior_2,
+    float ior_3,
     metal::float3 light,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
@@ -376,26 +385,26 @@ metal::float3 eye_physical(
     float _e32 = weft_clamp_cos(metal::dot(_e30, v_2));
     float s_dot_l = metal::saturate(metal::dot(_e30, l));
     metal::float3 _e36 = weft_safe_normalize(l + v_2, _e30);
-    float _e38 = weft_f_dielectric(metal::dot(v_2, _e36), ior_2);
+    float _e38 = eye_fresnel(metal::dot(v_2, _e36), ior_3);
     float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = ((_e39 * _e40) * _e38) * s_dot_l;
-    float _e44 = weft_f0_from_ior(ior_2);
-    metal::float3 f0_1 = metal::float3(_e44);
+    float _e44 = weft_f0_from_ior(ior_3);
+    metal::float3 f0_2 = metal::float3(_e44);
     metal::float3 _e48 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e30), _e27, weft_frame, weft_environment, weft_environment_sampler);
     metal::float2 _e49 = weft_env_brdf_lut(_e32, _e27, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e50 = weft_env_brdf_from_lut(f0_1, _e49);
+    metal::float3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
     metal::float3 env = _e48 * _e50;
     float _e56 = material.specular_strength;
     metal::float3 specular = ((light * direct_spec) + env) * metal::max(_e56, 0.0);
-    float _e60 = weft_f_dielectric(_e32, ior_2);
+    float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = 1.0 - _e60;
-    float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = 1.0 - _e63;
     metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
     metal::float3 sclera_1 = _e20 * ((light * (WEFT_INV_PI * metal::saturate(metal::dot(n_2, l)))) + _e71);
     metal::float3 _e79 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_2);
-    metal::float3 l_in = metal::refract(-(l), _e30, 1.0 / ior_2);
+    metal::float3 l_in = metal::refract(-(l), _e30, 1.0 / ior_3);
     float iris_cos = (s_dot_l > 0.0) ? metal::saturate(metal::dot(_e79, -(l_in))) : 0.0;
     metal::float3 _e96 = weft_sh_irradiance(_e79, weft_frame);
     metal::float3 iris_2 = (_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96);
@@ -489,13 +498,13 @@ fragment fs_mainOutput fs_main(
         float _e64 = material.cornea_height;
         EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = material.cornea_ior;
-        float ior_3 = metal::max(_e68, 1.0);
+        float ior_4 = metal::max(_e68, 1.0);
         {
-            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_3);
+            EyeLookup _e72 = eye_parallax(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        metal::float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_3, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
+        metal::float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_4, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
         color = _e74;
     }
     metal::float3 _e75 = color;

@@ -372,7 +372,15 @@ float3 eye_albedo(float2 q, bool front)
     return saturate(lerp(_e37, sclera, to_sclera));
 }
 
-float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3 normal3_, float ior_2, float3 light)
+float eye_fresnel(float cos_i_1, float ior_2)
+{
+    {
+        const float _e2 = weft_f_dielectric(cos_i_1, ior_2);
+        return _e2;
+    }
+}
+
+float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3 normal3_, float ior_3, float3 light)
 {
     bool local_2 = (bool)0;
 
@@ -389,11 +397,11 @@ float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3
     const float _e32 = weft_clamp_cos(dot(_e30, v_2));
     float s_dot_l = saturate(dot(_e30, l));
     const float3 _e36 = weft_safe_normalize((l + v_2), _e30);
-    const float _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    const float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     const float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     const float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    const float _e44 = weft_f0_from_ior(ior_2);
+    const float _e44 = weft_f0_from_ior(ior_3);
     float3 f0_1 = (_e44).xxx;
     const float3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     const float2 _e49 = weft_env_brdf_lut(_e32, _e27);
@@ -401,14 +409,14 @@ float3 eye_physical(EyeLookup look_1, float3 n_2, float3 v_2, float3 l, float3x3
     float3 env = (_e48 * _e50);
     float _e56 = material.specular_strength;
     float3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    const float _e60 = weft_f_dielectric(_e32, ior_2);
+    const float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = (1.0 - _e60);
-    const float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    const float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = (1.0 - _e63);
     const float3 _e71 = weft_sh_irradiance(n_2);
     float3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
     const float3 _e79 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), normal3_), n_2);
-    float3 l_in = refract(-(l), _e30, (1.0 / ior_2));
+    float3 l_in = refract(-(l), _e30, (1.0 / ior_3));
     float iris_cos = ((s_dot_l > 0.0) ? saturate(dot(_e79, -(l_in))) : 0.0);
     const float3 _e96 = weft_sh_irradiance(_e79);
     float3 iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -465,13 +473,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float _e64 = material.cornea_height;
         const EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = material.cornea_ior;
-        float ior_3 = max(_e68, 1.0);
+        float ior_4 = max(_e68, 1.0);
         {
-            const EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_3);
+            const EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        const float3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_3, _e57);
+        const float3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_4, _e57);
         color = _e74;
     }
     float3 _e75 = color;

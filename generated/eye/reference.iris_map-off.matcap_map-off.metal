@@ -362,13 +362,23 @@ metal::float3 eye_albedo(
     return metal::saturate(metal::mix(_e37, sclera, to_sclera));
 }
 
+float eye_fresnel(
+    float cos_i_1,
+    float ior_2
+) {
+    {
+        float _e2 = weft_f_dielectric(cos_i_1, ior_2);
+        return _e2;
+    }
+}
+
 metal::float3 eye_physical(
     EyeLookup look_1,
     metal::float3 n_2,
     metal::float3 v_2,
     metal::float3 l,
     metal::float3x3 normal3_,
-    float ior_2,
+    float ior_3,
     metal::float3 light,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
@@ -393,11 +403,11 @@ metal::float3 eye_physical(
     float _e32 = weft_clamp_cos(metal::dot(_e30, v_2));
     float s_dot_l = metal::saturate(metal::dot(_e30, l));
     metal::float3 _e36 = weft_safe_normalize(l + v_2, _e30);
-    float _e38 = weft_f_dielectric(metal::dot(v_2, _e36), ior_2);
+    float _e38 = eye_fresnel(metal::dot(v_2, _e36), ior_3);
     float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = ((_e39 * _e40) * _e38) * s_dot_l;
-    float _e44 = weft_f0_from_ior(ior_2);
+    float _e44 = weft_f0_from_ior(ior_3);
     metal::float3 f0_1 = metal::float3(_e44);
     metal::float3 _e48 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e30), _e27, weft_frame, weft_environment, weft_environment_sampler);
     metal::float2 _e49 = weft_env_brdf_lut(_e32, _e27, weft_brdf_lut, weft_lut_sampler);
@@ -405,14 +415,14 @@ metal::float3 eye_physical(
     metal::float3 env = _e48 * _e50;
     float _e56 = material.specular_strength;
     metal::float3 specular = ((light * direct_spec) + env) * metal::max(_e56, 0.0);
-    float _e60 = weft_f_dielectric(_e32, ior_2);
+    float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = 1.0 - _e60;
-    float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = 1.0 - _e63;
     metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
     metal::float3 sclera_1 = _e20 * ((light * (WEFT_INV_PI * metal::saturate(metal::dot(n_2, l)))) + _e71);
     metal::float3 _e79 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_2);
-    metal::float3 l_in = metal::refract(-(l), _e30, 1.0 / ior_2);
+    metal::float3 l_in = metal::refract(-(l), _e30, 1.0 / ior_3);
     float iris_cos = (s_dot_l > 0.0) ? metal::saturate(metal::dot(_e79, -(l_in))) : 0.0;
     metal::float3 _e96 = weft_sh_irradiance(_e79, weft_frame);
     metal::float3 iris_1 = (_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96);
@@ -504,13 +514,13 @@ fragment fs_mainOutput fs_main(
         float _e64 = material.cornea_height;
         EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = material.cornea_ior;
-        float ior_3 = metal::max(_e68, 1.0);
+        float ior_4 = metal::max(_e68, 1.0);
         {
-            EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_3);
+            EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        metal::float3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_3, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, sclera_map);
+        metal::float3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_4, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, sclera_map);
         color = _e74;
     }
     metal::float3 _e75 = color;

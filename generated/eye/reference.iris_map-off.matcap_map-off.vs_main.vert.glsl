@@ -235,6 +235,13 @@ vec2 eye_uv_from_xy(vec2 xy) {
     return vec2((0.5 + (0.5 * xy.x)), (0.5 - (0.5 * xy.y)));
 }
 
+float eye_fresnel(float cos_i_1, float ior_2) {
+    {
+        float _e2 = weft_f_dielectric(cos_i_1, ior_2);
+        return _e2;
+    }
+}
+
 void main() {
     WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
     WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));

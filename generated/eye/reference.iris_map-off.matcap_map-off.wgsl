@@ -302,7 +302,14 @@ fn eye_albedo(q: vec2<f32>, front: bool) -> vec3<f32> {
     return saturate(mix(_e37, sclera, to_sclera));
 }
 
-fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_2: f32, light: vec3<f32>) -> vec3<f32> {
+fn eye_fresnel(cos_i_1: f32, ior_2: f32) -> f32 {
+    {
+        let _e2 = weft_f_dielectric(cos_i_1, ior_2);
+        return _e2;
+    }
+}
+
+fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_3: f32, light: vec3<f32>) -> vec3<f32> {
     var local_2: bool;
 
     if !((look_1.through_cornea > 0f)) {
@@ -318,11 +325,11 @@ fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>,
     let _e32 = weft_clamp_cos(dot(_e30, v_2));
     let s_dot_l = saturate(dot(_e30, l));
     let _e36 = weft_safe_normalize((l + v_2), _e30);
-    let _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    let _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     let _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     let _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     let direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    let _e44 = weft_f0_from_ior(ior_2);
+    let _e44 = weft_f0_from_ior(ior_3);
     let f0_1 = vec3(_e44);
     let _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     let _e49 = weft_env_brdf_lut(_e32, _e27);
@@ -330,14 +337,14 @@ fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>,
     let env = (_e48 * _e50);
     let _e56 = material.specular_strength;
     let specular = (((light * direct_spec) + env) * max(_e56, 0f));
-    let _e60 = weft_f_dielectric(_e32, ior_2);
+    let _e60 = eye_fresnel(_e32, ior_3);
     let t_v = (1f - _e60);
-    let _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    let _e63 = eye_fresnel(s_dot_l, ior_3);
     let t_l = (1f - _e63);
     let _e71 = weft_sh_irradiance(n_2);
     let sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
     let _e79 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
-    let l_in = refract(-(l), _e30, (1f / ior_2));
+    let l_in = refract(-(l), _e30, (1f / ior_3));
     let iris_cos = select(0f, saturate(dot(_e79, -(l_in))), (s_dot_l > 0f));
     let _e96 = weft_sh_irradiance(_e79);
     let iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -391,13 +398,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e64 = material.cornea_height;
         let _e65 = eye_cornea(_e61, _e64);
         let _e68 = material.cornea_ior;
-        let ior_3 = max(_e68, 1f);
+        let ior_4 = max(_e68, 1f);
         {
-            let _e72 = eye_refracted(_e33, _e40, _e65, ior_3);
+            let _e72 = eye_refracted(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         let _e73 = look;
-        let _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_3, _e57);
+        let _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_2, ior_4, _e57);
         color = _e74;
     }
     let _e75 = color;

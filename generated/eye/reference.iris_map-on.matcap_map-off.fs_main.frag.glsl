@@ -274,7 +274,14 @@ vec3 eye_albedo(vec2 q, bool front) {
     return clamp(mix(_e46, sclera, to_sclera), vec3(0.0), vec3(1.0));
 }
 
-vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_2, vec3 light) {
+float eye_fresnel(float cos_i_1, float ior_2) {
+    {
+        float _e2 = weft_f_dielectric(cos_i_1, ior_2);
+        return _e2;
+    }
+}
+
+vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_3, vec3 light) {
     bool local_2 = false;
     if (!((look_1.through_cornea > 0.0))) {
         local_2 = (look_1.normal.z > 0.0);
@@ -289,11 +296,11 @@ vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_,
     float _e32 = weft_clamp_cos(dot(_e30, v_2));
     float s_dot_l = clamp(dot(_e30, l), 0.0, 1.0);
     vec3 _e36 = weft_safe_normalize((l + v_2), _e30);
-    float _e38 = weft_f_dielectric(dot(v_2, _e36), ior_2);
+    float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
     float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
     float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
     float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    float _e44 = weft_f0_from_ior(ior_2);
+    float _e44 = weft_f0_from_ior(ior_3);
     vec3 f0_1 = vec3(_e44);
     vec3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
     vec2 _e49 = weft_env_brdf_lut(_e32, _e27);
@@ -301,14 +308,14 @@ vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_,
     vec3 env = (_e48 * _e50);
     float _e56 = _group_1_binding_0_fs.specular_strength;
     vec3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    float _e60 = weft_f_dielectric(_e32, ior_2);
+    float _e60 = eye_fresnel(_e32, ior_3);
     float t_v = (1.0 - _e60);
-    float _e63 = weft_f_dielectric(s_dot_l, ior_2);
+    float _e63 = eye_fresnel(s_dot_l, ior_3);
     float t_l = (1.0 - _e63);
     vec3 _e71 = weft_sh_irradiance(n_2);
     vec3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * clamp(dot(n_2, l), 0.0, 1.0))) + _e71));
     vec3 _e79 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
-    vec3 l_in = refract(-(l), _e30, (1.0 / ior_2));
+    vec3 l_in = refract(-(l), _e30, (1.0 / ior_3));
     float iris_cos = ((s_dot_l > 0.0) ? clamp(dot(_e79, -(l_in)), 0.0, 1.0) : 0.0);
     vec3 _e96 = weft_sh_irradiance(_e79);
     vec3 iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
@@ -338,13 +345,13 @@ void main() {
         float _e64 = _group_1_binding_0_fs.cornea_height;
         EyeCornea _e65 = eye_cornea(_e61, _e64);
         float _e68 = _group_1_binding_0_fs.cornea_ior;
-        float ior_3 = max(_e68, 1.0);
+        float ior_4 = max(_e68, 1.0);
         {
-            EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_3);
+            EyeLookup _e72 = eye_refracted(_e33, _e40, _e65, ior_4);
             look = _e72;
         }
         EyeLookup _e73 = look;
-        vec3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_1, ior_3, _e57);
+        vec3 _e74 = eye_physical(_e73, n_4, v_3, _e26, normal3_1, ior_4, _e57);
         color = _e74;
     }
     vec3 _e75 = color;

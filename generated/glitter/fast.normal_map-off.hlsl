@@ -83,25 +83,38 @@ struct GlintParams {
     float density_randomization;
 };
 
-struct GlintSlopeRand {
-    float4 gate_rand;
-    float4 gaussian;
-    float2 lerp_;
-    int _end_pad_0;
-    int _end_pad_1;
-};
-
 struct GlintEllipse {
     float2 major_dir;
     float major;
     float minor;
 };
 
-struct GlintGrids {
-    GlintGrid g0_;
-    GlintGrid g1_;
-    GlintGrid g2_;
-    GlintGrid g3_;
+struct GlintFootprintCell {
+    float theta_lerp;
+    float ratio_lerp;
+    float lod_lerp;
+    bool center_;
+    float bin0_;
+    float bin_h;
+    float bin1_;
+    float lod0_;
+    float ratio0_;
+};
+
+struct GlintTetraFast {
+    uint codes;
+    int _pad1_0;
+    int _pad1_1;
+    int _pad1_2;
+    float4 w;
+    float bin0_;
+    float bin_h;
+    float bin1_;
+    float lod0_;
+    float ratio0_;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 static const float WEFT_PI = 3.1415927;
@@ -119,6 +132,18 @@ static const float GLINT_TABLE_SIZE = 64.0;
 static const float GLINT_MIN_LOD = -20.0;
 static const float GLINT_MAX_LOD = 20.0;
 static const float GLINT_MAX_RATIO = 16.0;
+static const uint GLINT_TET_A_UP = 36292u;
+static const uint GLINT_TET_A_DOWN = 36165u;
+static const uint GLINT_TET_A_LOW = 34112u;
+static const uint GLINT_TET_B_UP = 23168u;
+static const uint GLINT_TET_B_DOWN = 42242u;
+static const uint GLINT_TET_B_HIGH = 44421u;
+static const uint GLINT_TET_C_UP = 44517u;
+static const uint GLINT_TET_C_DOWN = 58790u;
+static const uint GLINT_TET_C_LOW = 42338u;
+static const uint GLINT_TET_CENTER_UP = 60596u;
+static const uint GLINT_TET_CENTER_DOWN = 18110u;
+static const uint GLINT_TET_CENTER_LOW = 46659u;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -150,11 +175,6 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
-
-float4 weft_select4_f32bit(bool4 weft_sel_c, float4 weft_sel_a, float4 weft_sel_b)
-{
-    return float4((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z), (weft_sel_c.w ? weft_sel_a.w : weft_sel_b.w));
-}
 
 float weft_pow5_(float x)
 {
@@ -285,23 +305,23 @@ float3 weft_sh_irradiance(float3 n_3)
 
 float weft_specular_mip(float roughness_4)
 {
-    float r_1 = saturate(roughness_4);
+    float r = saturate(roughness_4);
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return ((r_1 * (1.7 - (0.7 * r_1))) * max_mip);
+    return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
 float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
 {
     const float _e4 = weft_specular_mip(roughness_5);
-    float4 c_3 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
-    return max(c_3.xyz, (0.0).xxx);
+    float4 c_4 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
+    return max(c_4.xyz, (0.0).xxx);
 }
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
 {
-    float2 uv_5 = float2(saturate(n_dot_v_1), saturate(roughness_6));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_5, 0.0);
+    float2 uv_4 = float2(saturate(n_dot_v_1), saturate(roughness_6));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_4, 0.0);
     return _e8.xy;
 }
 
@@ -358,14 +378,14 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-uint4 glint_pcg4d(uint4 v_in)
+uint3 glint_pcg3d(uint3 v_in)
 {
-    uint4 v_2 = (uint4)0;
+    uint3 v_2 = (uint3)0;
 
-    v_2 = ((v_in * 1664525u) + (1013904223u).xxxx);
+    v_2 = ((v_in * 1664525u) + (1013904223u).xxx);
     uint _e8 = v_2.x;
     uint _e10 = v_2.y;
-    uint _e12 = v_2.w;
+    uint _e12 = v_2.z;
     v_2.x = (_e8 + (_e10 * _e12));
     uint _e16 = v_2.y;
     uint _e18 = v_2.z;
@@ -375,77 +395,23 @@ uint4 glint_pcg4d(uint4 v_in)
     uint _e26 = v_2.x;
     uint _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    uint _e32 = v_2.w;
-    uint _e34 = v_2.y;
-    uint _e36 = v_2.z;
-    v_2.w = (_e32 + (_e34 * _e36));
-    uint4 _e39 = v_2;
-    uint4 _e40 = v_2;
-    v_2 = (_e39 ^ (_e40 >> (16u).xxxx));
-    uint _e46 = v_2.x;
-    uint _e48 = v_2.y;
-    uint _e50 = v_2.w;
-    v_2.x = (_e46 + (_e48 * _e50));
-    uint _e54 = v_2.y;
-    uint _e56 = v_2.z;
-    uint _e58 = v_2.x;
-    v_2.y = (_e54 + (_e56 * _e58));
-    uint _e62 = v_2.z;
-    uint _e64 = v_2.x;
-    uint _e66 = v_2.y;
-    v_2.z = (_e62 + (_e64 * _e66));
-    uint _e70 = v_2.w;
-    uint _e72 = v_2.y;
-    uint _e74 = v_2.z;
-    v_2.w = (_e70 + (_e72 * _e74));
-    uint4 _e77 = v_2;
-    return _e77;
-}
-
-uint3 glint_pcg3d(uint3 v_in_1)
-{
-    uint3 v_3 = (uint3)0;
-
-    v_3 = ((v_in_1 * 1664525u) + (1013904223u).xxx);
-    uint _e8 = v_3.x;
-    uint _e10 = v_3.y;
-    uint _e12 = v_3.z;
-    v_3.x = (_e8 + (_e10 * _e12));
-    uint _e16 = v_3.y;
-    uint _e18 = v_3.z;
-    uint _e20 = v_3.x;
-    v_3.y = (_e16 + (_e18 * _e20));
-    uint _e24 = v_3.z;
-    uint _e26 = v_3.x;
-    uint _e28 = v_3.y;
-    v_3.z = (_e24 + (_e26 * _e28));
-    uint3 _e31 = v_3;
-    uint3 _e32 = v_3;
-    v_3 = (_e31 ^ (_e32 >> (16u).xxx));
-    uint _e38 = v_3.x;
-    uint _e40 = v_3.y;
-    uint _e42 = v_3.z;
-    v_3.x = (_e38 + (_e40 * _e42));
-    uint _e46 = v_3.y;
-    uint _e48 = v_3.z;
-    uint _e50 = v_3.x;
-    v_3.y = (_e46 + (_e48 * _e50));
-    uint _e54 = v_3.z;
-    uint _e56 = v_3.x;
-    uint _e58 = v_3.y;
-    v_3.z = (_e54 + (_e56 * _e58));
-    uint3 _e61 = v_3;
+    uint3 _e31 = v_2;
+    uint3 _e32 = v_2;
+    v_2 = (_e31 ^ (_e32 >> (16u).xxx));
+    uint _e38 = v_2.x;
+    uint _e40 = v_2.y;
+    uint _e42 = v_2.z;
+    v_2.x = (_e38 + (_e40 * _e42));
+    uint _e46 = v_2.y;
+    uint _e48 = v_2.z;
+    uint _e50 = v_2.x;
+    v_2.y = (_e46 + (_e48 * _e50));
+    uint _e54 = v_2.z;
+    uint _e56 = v_2.x;
+    uint _e58 = v_2.y;
+    v_2.z = (_e54 + (_e56 * _e58));
+    uint3 _e61 = v_2;
     return _e61;
-}
-
-float3 glint_unit3_(uint3 v_4)
-{
-    return ((float3((v_4 >> (8u).xxx)) + (0.5).xxx) * 5.9604645e-8);
-}
-
-float4 glint_unit4_(uint4 v_5)
-{
-    return ((float4((v_5 >> (8u).xxxx)) + (0.5).xxxx) * 5.9604645e-8);
 }
 
 float glint_hash13_(float3 p_in)
@@ -463,198 +429,9 @@ float glint_hash13_(float3 p_in)
     return frac(((_e16 + _e18) * _e21));
 }
 
-float glint_erfinv(float x_1)
-{
-    float w = (float)0;
-    float p = (float)0;
-
-    w = -(log(max(((1.0 - x_1) * (1.0 + x_1)), 1e-30)));
-    float _e12 = w;
-    if ((_e12 < 5.0)) {
-        float _e15 = w;
-        w = (_e15 - 2.5);
-        p = 2.8102264e-8;
-        float _e19 = p;
-        float _e20 = w;
-        p = (3.4327394e-7 + (_e19 * _e20));
-        float _e24 = p;
-        float _e25 = w;
-        p = (-3.5233877e-6 + (_e24 * _e25));
-        float _e29 = p;
-        float _e30 = w;
-        p = (-4.3915065e-6 + (_e29 * _e30));
-        float _e34 = p;
-        float _e35 = w;
-        p = (0.00021858087 + (_e34 * _e35));
-        float _e39 = p;
-        float _e40 = w;
-        p = (-0.001253725 + (_e39 * _e40));
-        float _e44 = p;
-        float _e45 = w;
-        p = (-0.0041776816 + (_e44 * _e45));
-        float _e49 = p;
-        float _e50 = w;
-        p = (0.24664073 + (_e49 * _e50));
-        float _e54 = p;
-        float _e55 = w;
-        p = (1.5014094 + (_e54 * _e55));
-    } else {
-        float _e59 = w;
-        w = (sqrt(_e59) - 3.0);
-        p = -0.00020021426;
-        float _e64 = p;
-        float _e65 = w;
-        p = (0.00010095056 + (_e64 * _e65));
-        float _e69 = p;
-        float _e70 = w;
-        p = (0.0013493432 + (_e69 * _e70));
-        float _e74 = p;
-        float _e75 = w;
-        p = (-0.0036734284 + (_e74 * _e75));
-        float _e79 = p;
-        float _e80 = w;
-        p = (0.0057395077 + (_e79 * _e80));
-        float _e84 = p;
-        float _e85 = w;
-        p = (-0.0076224613 + (_e84 * _e85));
-        float _e89 = p;
-        float _e90 = w;
-        p = (0.0094388705 + (_e89 * _e90));
-        float _e94 = p;
-        float _e95 = w;
-        p = (1.001674 + (_e94 * _e95));
-        float _e99 = p;
-        float _e100 = w;
-        p = (2.8329768 + (_e99 * _e100));
-    }
-    float _e104 = p;
-    return (_e104 * x_1);
-}
-
-float glint_erfinv_poly(float x_in)
-{
-    float x_3 = clamp(x_in, -0.95, 0.95);
-    float x2_1 = (x_3 * x_3);
-    return (x_3 * (0.864441 + (x2_1 * (0.533641 + (x2_1 * (-0.893165 + (x2_1 * 1.108999)))))));
-}
-
-float glint_erfinv_by(float x_2, bool poly)
-{
-    if (poly) {
-        const float _e2 = glint_erfinv_poly(x_2);
-        return _e2;
-    }
-    const float _e3 = glint_erfinv(x_2);
-    return _e3;
-}
-
-float3 glint_gaussian3_(float3 u, bool poly_normals)
-{
-    const float _e7 = glint_erfinv_by(((2.0 * u.x) - 1.0), poly_normals);
-    const float _e13 = glint_erfinv_by(((2.0 * u.y) - 1.0), poly_normals);
-    const float _e19 = glint_erfinv_by(((2.0 * u.z) - 1.0), poly_normals);
-    return (1.4142135 * float3(_e7, _e13, _e19));
-}
-
-uint2 naga_f2u32(float2 value) {
-    return uint2(clamp(value, 0.0, 4294967000.0));
-}
-
-float2 glint_corner(float2 c_1, bool poly_normals_1)
-{
-    uint2 texel = naga_f2u32((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / (64.0).xx)))));
-    const uint4 _e13 = glint_pcg4d(uint4(texel, 6777961u, 1953785202u));
-    const float4 _e14 = glint_unit4_(_e13);
-    const float _e21 = glint_erfinv_by(((2.0 * _e14.y) - 1.0), poly_normals_1);
-    return float2(_e14.x, (1.4142135 * _e21));
-}
-
-GlintSlopeRand glint_slope_rand(float micro_roughness, float2 slope, float2 offset, bool poly_normals_2)
-{
-    GlintSlopeRand out_1 = (GlintSlopeRand)0;
-
-    float2 s_2 = ((abs(slope) / (micro_roughness).xx) + (offset * GLINT_TABLE_SIZE));
-    float2 cell = floor(s_2);
-    const float2 _e11 = glint_corner(cell, poly_normals_2);
-    const float2 _e16 = glint_corner((cell + float2(0.0, 1.0)), poly_normals_2);
-    const float2 _e21 = glint_corner((cell + float2(1.0, 0.0)), poly_normals_2);
-    const float2 _e26 = glint_corner((cell + float2(1.0, 1.0)), poly_normals_2);
-    out_1.gate_rand = float4(_e11.x, _e16.x, _e21.x, _e26.x);
-    out_1.gaussian = float4(_e11.y, _e16.y, _e21.y, _e26.y);
-    out_1.lerp_ = (s_2 - cell);
-    GlintSlopeRand _e42 = out_1;
-    const GlintSlopeRand glintsloperand = _e42;
-    return glintsloperand;
-}
-
-float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float mean, float deviation, float count)
-{
-    float4 gate = (float4)0;
-
-    if ((smooth_width > 1e-7)) {
-        gate = saturate(((r.gate_rand - ((one_hit + smooth_width)).xxxx) / ((-2.0 * smooth_width)).xxxx));
-    } else {
-        const float4 _e25 = weft_select4_f32bit((r.gate_rand < (one_hit).xxxx), (1.0).xxxx, (0.0).xxxx);
-        gate = _e25;
-    }
-    float4 gauss = clamp(floor(((r.gaussian * deviation) + (mean).xxxx)), (0.0).xxxx, (count).xxxx);
-    float4 _e35 = gate;
-    float4 hits = (_e35 * ((1.0).xxxx + gauss));
-    float x0_ = lerp(hits.x, hits.z, r.lerp_.x);
-    float x1_ = lerp(hits.y, hits.w, r.lerp_.x);
-    return lerp(x0_, x1_, r.lerp_.y);
-}
-
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-int naga_f2i32(float value) {
-    return int(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf, bool poly_normals_3)
-{
-    float2 skewed = float2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
-    float2 base = floor(skewed);
-    float2 f = (skewed - base);
-    float fz = ((1.0 - f.x) - f.y);
-    float s_3 = ((fz < 0.0) ? 1.0 : 0.0);
-    float s2_ = ((2.0 * s_3) - 1.0);
-    int2 id = naga_f2i32(base);
-    int si = naga_f2i32(s_3);
-    int2 c0_ = asint(asuint(id) + asuint(int2(si, si)));
-    int2 c1_ = asint(asuint(id) + asuint(int2(si, asint(asuint(int(1)) - asuint(si)))));
-    int2 c2_ = asint(asuint(id) + asuint(int2(asint(asuint(int(1)) - asuint(si)), si)));
-    float3 bary = float3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    const uint3 _e63 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
-    const float3 _e64 = glint_unit3_(_e63);
-    const uint3 _e73 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
-    const float3 _e74 = glint_unit3_(_e73);
-    const uint3 _e83 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
-    const float3 _e84 = glint_unit3_(_e83);
-    const GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    const GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    const GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    const float3 _e98 = glint_gaussian3_(float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    float3 log_density = clamp(((_e98 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
-    float3 count_1 = max((1e-8).xxx, (grid.cell_area * exp(log_density)));
-    float3 blended = (count_1 * grid.weight);
-    float p_4 = (params.micro_roughness * target_ndf);
-    float3 one_hit_1 = ((1.0).xxx - pow(((1.0 - p_4)).xxx, blended));
-    float3 others = max((blended - (1.0).xxx), (0.0).xxx);
-    float3 mean_1 = (others * p_4);
-    float3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
-    float3 smooth_width_1 = ((0.1 * saturate((one_hit_1 * 10.0))) * saturate((((1.0).xxx - one_hit_1) * 10.0)));
-    const float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    const float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    const float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((float3(_e155, _e161, _e167) / count_1), bary);
-}
-
 GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
 {
-    GlintEllipse out_2 = (GlintEllipse)0;
+    GlintEllipse out_1 = (GlintEllipse)0;
 
     float a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
     float b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
@@ -665,22 +442,22 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
     float l2_ = max((half_trace - disc), 0.0);
     float2 e_a = float2(b_3, (l1_ - a_5));
     float2 e_b = float2((l1_ - d_4), b_3);
-    float2 e_3 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
-    float e_len2_ = dot(e_3, e_3);
-    out_2.major_dir = ((e_len2_ > 1e-37) ? (e_3 * rsqrt(max(e_len2_, 1e-37))) : float2(1.0, 0.0));
-    out_2.major = max(sqrt(l1_), 1e-12);
-    float _e68 = out_2.major;
-    out_2.minor = max(sqrt(l2_), (_e68 / 64.0));
-    GlintEllipse _e72 = out_2;
+    float2 e_5 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
+    float e_len2_ = dot(e_5, e_5);
+    out_1.major_dir = ((e_len2_ > 1e-37) ? (e_5 * rsqrt(max(e_len2_, 1e-37))) : float2(1.0, 0.0));
+    out_1.major = max(sqrt(l1_), 1e-12);
+    float _e68 = out_1.major;
+    out_1.minor = max(sqrt(l2_), (_e68 / 64.0));
+    GlintEllipse _e72 = out_1;
     const GlintEllipse glintellipse = _e72;
     return glintellipse;
 }
 
 float2 glint_rotate(float2 uv_1, float angle)
 {
-    float c_4 = cos(angle);
-    float s_4 = sin(angle);
-    return float2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+    float c_5 = cos(angle);
+    float s_2 = sin(angle);
+    return float2(((c_5 * uv_1.x) + (s_2 * uv_1.y)), ((c_5 * uv_1.y) - (s_2 * uv_1.x)));
 }
 
 uint naga_f2u32(float value) {
@@ -709,17 +486,17 @@ GlintGrid glint_make_grid(float2 uv_2, float lod_1, float theta_1, float ratio_1
     return glintgrid;
 }
 
-float4 glint_tetra_weights(float3 p_1, float3 a, float3 b, float3 c_2, float3 d)
+float4 glint_tetra_weights(float3 p, float3 a, float3 b, float3 c_1, float3 d)
 {
-    float3 c1_1 = (a - d);
-    float3 c2_1 = (b - d);
-    float3 c3_ = (c_2 - d);
-    float3 q = (p_1 - d);
-    float det = dot(c1_1, cross(c2_1, c3_));
+    float3 c1_ = (a - d);
+    float3 c2_ = (b - d);
+    float3 c3_ = (c_1 - d);
+    float3 q = (p - d);
+    float det = dot(c1_, cross(c2_, c3_));
     float inv = (1.0 / det);
-    float w1_ = (dot(q, cross(c2_1, c3_)) * inv);
-    float w2_ = (dot(c1_1, cross(q, c3_)) * inv);
-    float w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    float w1_ = (dot(q, cross(c2_, c3_)) * inv);
+    float w2_ = (dot(c1_, cross(q, c3_)) * inv);
+    float w3_ = (dot(c1_, cross(c2_, q)) * inv);
     return float4(w1_, w2_, w3_, (((1.0 - w1_) - w2_) - w3_));
 }
 
@@ -728,204 +505,275 @@ float glint_lod(GlintEllipse e_1, float screen_scale)
     return clamp(log2(((e_1.minor * screen_scale) * 0.5)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
+GlintFootprintCell glint_footprint_cell(GlintEllipse e_2, float screen_scale_1)
 {
-    float theta_2 = (float)0;
-    bool local_1 = (bool)0;
-
-    float rot_index = (p_2.x * 2.0);
-    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
-    if (center_) {
-        local_1 = (p_2.y == 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e25 = local_1;
-    if (_e25) {
-        theta_2 = 0.0;
-    }
-    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
-    float lod_2 = (lod0_ + p_2.z);
-    float _e35 = theta_2;
-    const GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
-    const GlintGrid glintgrid_1 = _e36;
-    return glintgrid_1;
-}
-
-GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
-{
-    float theta_lerp = (float)0;
-    float3 p0_ = (float3)0;
-    float3 p1_ = (float3)0;
-    float3 p2_ = (float3)0;
-    float3 p3_1 = (float3)0;
-    bool local_2 = (bool)0;
-    GlintGrids out_3 = (GlintGrids)0;
+    GlintFootprintCell out_2 = (GlintFootprintCell)0;
 
     float ratio_e = min((e_2.major / (e_2.minor + (1e-8 * e_2.major))), GLINT_MAX_RATIO);
-    const float _e12 = glint_lod(e_2, screen_scale_1);
-    float lod0_1 = floor(_e12);
-    float lod_lerp = (_e12 - lod0_1);
-    float ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
-    float ratio1_ = (ratio0_1 * 2.0);
-    float ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
-    float q_1 = (0.7853982 / max(ratio0_1, 2.0));
-    float per_pi = (4.0 * max(ratio0_1, 2.0));
-    float theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
-    float theta_q = (theta_3 / q_1);
+    const float _e11 = glint_lod(e_2, screen_scale_1);
+    float lod0_ = floor(_e11);
+    float lod_lerp = (_e11 - lod0_);
+    float ratio0_ = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
+    float ratio1_ = (ratio0_ * 2.0);
+    float ratio_lerp = saturate(((ratio_e - ratio0_) / (ratio1_ - ratio0_)));
+    float q_1 = (0.7853982 / max(ratio0_, 2.0));
+    float per_pi = (4.0 * max(ratio0_, 2.0));
+    float theta_2 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    float theta_q = (theta_2 / q_1);
     float h0_ = floor(theta_q);
-    theta_lerp = saturate((theta_q - h0_));
+    float theta_lerp = saturate((theta_q - h0_));
     float i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
     float i1_ = ((i0_ + 1.0) - (per_pi * floor(((i0_ + 1.0) / per_pi))));
     float theta_bin0_ = (i0_ * q_1);
     float theta_bin_h = ((i0_ + 0.5) * q_1);
     float theta_bin1_ = (i1_ * q_1);
-    bool center_1 = (ratio0_1 == 1.0);
-    if (center_1) {
-        float3 a_6 = float3(0.0, 1.0, 0.0);
-        float3 b_4 = float3(0.0, 0.0, 0.0);
-        float3 c_5 = float3(1.0, 1.0, 0.0);
-        float3 d_5 = float3(0.0, 1.0, 1.0);
-        float3 ee = float3(0.0, 0.0, 1.0);
-        float3 f_1 = float3(1.0, 1.0, 1.0);
-        if ((lod_lerp > (1.0 - ratio_lerp))) {
-            float _e103 = theta_lerp;
-            if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > _e103)) {
-                p0_ = a_6;
-                p1_ = ee;
-                p2_ = d_5;
-                p3_1 = f_1;
-            } else {
-                p0_ = f_1;
-                p1_ = ee;
-                p2_ = c_5;
-                p3_1 = a_6;
-            }
-        } else {
-            p0_ = b_4;
-            p1_ = a_6;
-            p2_ = c_5;
-            p3_1 = ee;
-        }
-        float _e105 = theta_lerp;
-        theta_lerp = (_e105 * ratio_lerp);
-    } else {
-        float3 a_7 = float3(0.0, 1.0, 0.0);
-        float3 b_5 = float3(0.0, 0.0, 0.0);
-        float3 c_6 = float3(0.5, 1.0, 0.0);
-        float3 d_6 = float3(1.0, 0.0, 0.0);
-        float3 ee_1 = float3(1.0, 1.0, 0.0);
-        float3 f_2 = float3(0.0, 1.0, 1.0);
-        float3 g_1 = float3(0.0, 0.0, 1.0);
-        float3 h_1 = float3(0.5, 1.0, 1.0);
-        float3 i = float3(1.0, 0.0, 1.0);
-        float3 j = float3(1.0, 1.0, 1.0);
-        float _e147 = theta_lerp;
-        if ((_e147 < 0.5)) {
-            float _e152 = theta_lerp;
-            local_2 = ((_e152 * 2.0) < ratio_lerp);
-        } else {
-            local_2 = false;
-        }
-        bool _e157 = local_2;
-        if (_e157) {
-            if ((lod_lerp > (1.0 - ratio_lerp))) {
-                float _e167 = theta_lerp;
-                if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((_e167 * 2.0) / max(ratio_lerp, 1e-8)))) {
-                    p0_ = a_7;
-                    p1_ = f_2;
-                    p2_ = h_1;
-                    p3_1 = g_1;
-                } else {
-                    p0_ = c_6;
-                    p1_ = a_7;
-                    p2_ = h_1;
-                    p3_1 = g_1;
-                }
-            } else {
-                p0_ = b_5;
-                p1_ = a_7;
-                p2_ = c_6;
-                p3_1 = g_1;
-            }
-        } else {
-            float _e174 = theta_lerp;
-            if (((1.0 - ((_e174 - 0.5) * 2.0)) > ratio_lerp)) {
-                if ((lod_lerp < (1.0 - ratio_lerp))) {
-                    float half_width = (0.5 * (1.0 - ratio_lerp));
-                    float _e194 = theta_lerp;
-                    if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e194 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
-                        p0_ = b_5;
-                        p1_ = g_1;
-                        p2_ = i;
-                        p3_1 = c_6;
-                    } else {
-                        p0_ = d_6;
-                        p1_ = b_5;
-                        p2_ = c_6;
-                        p3_1 = i;
-                    }
-                } else {
-                    p0_ = c_6;
-                    p1_ = g_1;
-                    p2_ = h_1;
-                    p3_1 = i;
-                }
-            } else {
-                if ((lod_lerp > (1.0 - ratio_lerp))) {
-                    float _e213 = theta_lerp;
-                    if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e213 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
-                        p0_ = c_6;
-                        p1_ = j;
-                        p2_ = h_1;
-                        p3_1 = i;
-                    } else {
-                        p0_ = ee_1;
-                        p1_ = i;
-                        p2_ = c_6;
-                        p3_1 = j;
-                    }
-                } else {
-                    p0_ = d_6;
-                    p1_ = ee_1;
-                    p2_ = c_6;
-                    p3_1 = i;
-                }
-            }
-        }
-    }
-    float _e225 = theta_lerp;
-    float3 _e227 = p0_;
-    float3 _e228 = p1_;
-    float3 _e229 = p2_;
-    float3 _e230 = p3_1;
-    const float4 _e231 = glint_tetra_weights(float3(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
-    float3 _e234 = p0_;
-    const GlintGrid _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e236;
-    float3 _e238 = p1_;
-    const GlintGrid _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e240;
-    float3 _e242 = p2_;
-    const GlintGrid _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e244;
-    float3 _e246 = p3_1;
-    const GlintGrid _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e248;
-    GlintGrids _e249 = out_3;
-    const GlintGrids glintgrids = _e249;
-    return glintgrids;
+    out_2.theta_lerp = theta_lerp;
+    out_2.ratio_lerp = ratio_lerp;
+    out_2.lod_lerp = lod_lerp;
+    out_2.center_ = (ratio0_ == 1.0);
+    out_2.bin0_ = theta_bin0_;
+    out_2.bin_h = theta_bin_h;
+    out_2.bin1_ = theta_bin1_;
+    out_2.lod0_ = lod0_;
+    out_2.ratio0_ = ratio0_;
+    GlintFootprintCell _e74 = out_2;
+    const GlintFootprintCell glintfootprintcell = _e74;
+    return glintfootprintcell;
 }
 
-float glint_ndf(GlintParams params_1, GlintGrids grids, float2 slope_2, float d_1, float d_max, bool poly_normals_4)
+float glint_normal_fast(uint h_1)
 {
-    float target_ndf_1 = (d_1 / d_max);
-    const float _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
-    const float _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
-    const float _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
-    const float _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
-    float sum = (((_e8 + _e10) + _e13) + _e16);
-    return (min((sum / params_1.micro_roughness), 20.0) * d_max);
+    float x_2 = mad(float(h_1), 4.656613e-10, -1.0);
+    float x2_1 = (x_2 * x_2);
+    return (x_2 * (1.2225 + (x2_1 * (0.75468 + (x2_1 * (-1.263127 + (x2_1 * 1.568366)))))));
+}
+
+float glint_corner_hits(uint ax, uint ay, float gate_a, float gate_b, float deviation, float mean1_)
+{
+    uint x_1 = (uint)0;
+    uint y = (uint)0;
+    uint z = (uint)0;
+    uint w = (uint)0;
+
+    x_1 = (ax + (ay * 1860535849u));
+    uint _e10 = x_1;
+    y = (ay + (_e10 * 220351156u));
+    uint _e16 = x_1;
+    uint _e17 = y;
+    z = (220351156u + (_e16 * _e17));
+    uint _e22 = y;
+    uint _e23 = z;
+    w = (1860535849u + (_e22 * _e23));
+    uint _e27 = x_1;
+    uint _e28 = x_1;
+    x_1 = (_e27 ^ (_e28 >> 16u));
+    uint _e32 = y;
+    uint _e33 = y;
+    y = (_e32 ^ (_e33 >> 16u));
+    uint _e37 = z;
+    uint _e38 = z;
+    z = (_e37 ^ (_e38 >> 16u));
+    uint _e42 = w;
+    uint _e43 = w;
+    w = (_e42 ^ (_e43 >> 16u));
+    uint _e47 = x_1;
+    uint _e48 = y;
+    uint _e49 = w;
+    x_1 = (_e47 + (_e48 * _e49));
+    uint _e52 = y;
+    uint _e53 = z;
+    uint _e54 = x_1;
+    y = (_e52 + (_e53 * _e54));
+    uint _e57 = x_1;
+    float gate = saturate(mad(float(_e57), gate_a, gate_b));
+    uint _e61 = y;
+    const float _e62 = glint_normal_fast(_e61);
+    float count = max(floor(mad(_e62, deviation, mean1_)), 1.0);
+    return (gate * count);
+}
+
+uint2 naga_f2u32(float2 value) {
+    return uint2(clamp(value, 0.0, 4294967000.0));
+}
+
+float glint_cell_fast(GlintParams params, GlintGrid grid, int2 c_2, float2 s_slope, float p_1, float log2_q)
+{
+    const uint3 _e16 = glint_pcg3d(uint3((asuint(c_2.x) + 2147483648u), (asuint(c_2.y) + 2147483648u), grid.seed));
+    const float _e18 = glint_normal_fast(_e16.x);
+    float log_density = clamp(((_e18 * params.density_randomization) + params.log_density), 0.0, 50.0);
+    float count_1 = max(1e-8, (grid.cell_area * exp(log_density)));
+    float blended = (count_1 * grid.weight);
+    float miss = exp2((blended * log2_q));
+    float one_hit = (1.0 - miss);
+    float others = max((blended - 1.0), 0.0);
+    float mean1_1 = ((others * p_1) + 1.0);
+    float deviation_1 = sqrt((others * (p_1 * (1.0 - p_1))));
+    float width = max(((0.1 * saturate((one_hit * 10.0))) * saturate((miss * 10.0))), 1e-30);
+    float inv_1 = (0.5 / width);
+    float gate_a_1 = (inv_1 * -2.3283064e-10);
+    float gate_b_1 = mad(one_hit, inv_1, 0.5);
+    float2 s_3 = mad(float2((_e16.yz >> (8u).xx)), (3.8146973e-6).xx, s_slope);
+    float2 cell = floor(s_3);
+    float2 l = (s_3 - cell);
+    uint2 ci = naga_f2u32(cell);
+    uint2 t0_ = (ci & (63u).xx);
+    uint2 t1_ = ((ci + (1u).xx) & (63u).xx);
+    uint2 ax_1 = ((uint2(t0_.x, t1_.x) * 1664525u) + (1013904223u).xx);
+    uint2 ay_1 = ((uint2(t0_.y, t1_.y) * 1664525u) + (1013904223u).xx);
+    const float _e104 = glint_corner_hits(ax_1.x, ay_1.x, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    const float _e107 = glint_corner_hits(ax_1.x, ay_1.y, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    const float _e110 = glint_corner_hits(ax_1.y, ay_1.x, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    const float _e113 = glint_corner_hits(ax_1.y, ay_1.y, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    float x0_ = lerp(_e104, _e110, l.x);
+    float x1_ = lerp(_e107, _e113, l.x);
+    return (lerp(x0_, x1_, l.y) / count_1);
+}
+
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int naga_f2i32(float value) {
+    return int(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+float glint_sample_grid_fast(GlintParams params_1, GlintGrid grid_1, float2 s_slope_1, float p_2, float log2_q_1)
+{
+    float sum = 0.0;
+    int k = int(0);
+
+    float2 skewed = float2((grid_1.uv.x - (0.57735026 * grid_1.uv.y)), (1.1547005 * grid_1.uv.y));
+    float2 base = floor(skewed);
+    float2 f = (skewed - base);
+    float fz = ((1.0 - f.x) - f.y);
+    float s_4 = ((fz < 0.0) ? 1.0 : 0.0);
+    float s2_ = ((2.0 * s_4) - 1.0);
+    int2 id = naga_f2i32(base);
+    int si = naga_f2i32(s_4);
+    float3 bary = float3((-(fz) * s2_), (s_4 - (f.y * s2_)), (s_4 - (f.x * s2_)));
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            int _e81 = k;
+            k = asint(asuint(_e81) + asuint(int(1)));
+        }
+        loop_init = false;
+        int _e48 = k;
+        if ((_e48 < int(3))) {
+        } else {
+            break;
+        }
+        {
+            int _e53 = k;
+            int _e59 = k;
+            int2 c_6 = asint(asuint(id) + asuint(int2(((_e53 == int(2)) ? asint(asuint(int(1)) - asuint(si)) : si), ((_e59 == int(1)) ? asint(asuint(int(1)) - asuint(si)) : si))));
+            int _e67 = k;
+            int _e72 = k;
+            float b_4 = ((_e72 == int(0)) ? bary.x : ((_e67 == int(1)) ? bary.y : bary.z));
+            float _e76 = sum;
+            const float _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = (_e76 + (b_4 * _e77));
+        }
+    }
+    float _e83 = sum;
+    return _e83;
+}
+
+float3 glint_vertex_of_code(uint c_3)
+{
+    uint rot = (c_3 & 3u);
+    return float3(((rot == 3u) ? 0.0 : (float(rot) * 0.5)), float(((c_3 >> 2u) & 1u)), float((c_3 >> 3u)));
+}
+
+GlintTetraFast glint_tetra_fast(GlintEllipse e_3, float screen_scale_2)
+{
+    bool local_1 = (bool)0;
+    GlintTetraFast out_3 = (GlintTetraFast)0;
+
+    const GlintFootprintCell _e2 = glint_footprint_cell(e_3, screen_scale_2);
+    float t_2 = _e2.theta_lerp;
+    float r_1 = _e2.ratio_lerp;
+    float l_1 = _e2.lod_lerp;
+    bool upper = (l_1 > (1.0 - r_1));
+    float upper_left = ((l_1 - (1.0 - r_1)) / max(r_1, 1e-8));
+    float half_width = (0.5 * (1.0 - r_1));
+    uint center_codes = (upper ? ((upper_left > t_2) ? GLINT_TET_CENTER_UP : GLINT_TET_CENTER_DOWN) : GLINT_TET_CENTER_LOW);
+    uint a_codes = (upper ? ((upper_left > ((t_2 * 2.0) / max(r_1, 1e-8))) ? GLINT_TET_A_UP : GLINT_TET_A_DOWN) : GLINT_TET_A_LOW);
+    uint b_codes = ((l_1 < (1.0 - r_1)) ? (((l_1 / max((1.0 - r_1), 1e-8)) > ((t_2 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8))) ? GLINT_TET_B_UP : GLINT_TET_B_DOWN) : GLINT_TET_B_HIGH);
+    uint c_codes = (upper ? ((upper_left > ((((t_2 - 0.5) * 2.0) - (1.0 - r_1)) / max(r_1, 1e-8))) ? GLINT_TET_C_UP : GLINT_TET_C_DOWN) : GLINT_TET_C_LOW);
+    if ((t_2 < 0.5)) {
+        local_1 = ((t_2 * 2.0) < r_1);
+    } else {
+        local_1 = false;
+    }
+    bool prism_a = local_1;
+    bool prism_b = ((1.0 - ((t_2 - 0.5) * 2.0)) > r_1);
+    uint codes = (_e2.center_ ? center_codes : (prism_a ? a_codes : (prism_b ? b_codes : c_codes)));
+    float3 point_ = float3((_e2.center_ ? (t_2 * r_1) : t_2), r_1, l_1);
+    out_3.codes = codes;
+    const float3 _e103 = glint_vertex_of_code((codes & 15u));
+    const float3 _e108 = glint_vertex_of_code(((codes >> 4u) & 15u));
+    const float3 _e113 = glint_vertex_of_code(((codes >> 8u) & 15u));
+    const float3 _e116 = glint_vertex_of_code((codes >> 12u));
+    const float4 _e117 = glint_tetra_weights(point_, _e103, _e108, _e113, _e116);
+    out_3.w = _e117;
+    out_3.bin0_ = _e2.bin0_;
+    out_3.bin_h = _e2.bin_h;
+    out_3.bin1_ = _e2.bin1_;
+    out_3.lod0_ = _e2.lod0_;
+    out_3.ratio0_ = _e2.ratio0_;
+    GlintTetraFast _e128 = out_3;
+    const GlintTetraFast glinttetrafast = _e128;
+    return glinttetrafast;
+}
+
+float glint_hits_fast(GlintParams params_2, float2 uv_3, GlintEllipse e_4, float screen_scale_3, float2 slope, float d_1, float d_max)
+{
+    float sum_1 = 0.0;
+    uint i = 0u;
+
+    const GlintTetraFast _e7 = glint_tetra_fast(e_4, screen_scale_3);
+    uint codes_1 = _e7.codes;
+    float p_4 = (params_2.micro_roughness * (d_1 / d_max));
+    float log2_q_2 = log2((1.0 - p_4));
+    float2 s_slope_2 = ((abs(slope) / (params_2.micro_roughness).xx) + (1.9073486e-6).xx);
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e97 = i;
+            i = (_e97 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e26 = i;
+        if ((_e26 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e30 = i;
+            uint c_7 = ((codes_1 >> (4u * _e30)) & 15u);
+            uint rot_1 = (c_7 & 3u);
+            float theta_3 = ((rot_1 == 0u) ? _e7.bin0_ : ((rot_1 == 1u) ? _e7.bin_h : ((rot_1 == 2u) ? _e7.bin1_ : 0.0)));
+            float ratio_2 = (((c_7 & 4u) != 0u) ? (_e7.ratio0_ * 2.0) : _e7.ratio0_);
+            float lod_2 = (_e7.lod0_ + float((c_7 >> 3u)));
+            uint _e76 = i;
+            uint _e82 = i;
+            uint _e88 = i;
+            float w_1 = ((_e88 == 0u) ? _e7.w.x : ((_e82 == 1u) ? _e7.w.y : ((_e76 == 2u) ? _e7.w.z : (((1.0 - _e7.w.x) - _e7.w.y) - _e7.w.z))));
+            float _e92 = sum_1;
+            const GlintGrid _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            const float _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
+            sum_1 = (_e92 + _e94);
+        }
+    }
+    float _e99 = sum_1;
+    return _e99;
 }
 
 GlintParams glitter_params()
@@ -994,12 +842,12 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float _e35 = material.occlusion_strength;
     float ao = saturate(lerp(1.0, occlusion, _e35));
     const WeftSurface _e41 = weft_surface(in_1.world_position, in_1.world_normal);
-    float3 v_6 = _e41.v;
+    float3 v_3 = _e41.v;
     n = _e41.n;
     float3 _e45 = n;
     const float3x3 _e47 = weft_tangent_frame(_e45, in_1.world_tangent);
     float3 _e48 = n;
-    const WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_6);
+    const WeftLightGeometry _e49 = weft_main_light_geometry(_e48, v_3);
     const float3 _e50 = weft_main_light_radiance();
     float3 f0_2 = lerp((0.04).xxx, base_1, metallic);
     float3 diffuse_albedo = (base_1 * (1.0 - metallic));
@@ -1014,7 +862,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e76 = weft_diffuse_lambert(diffuse_albedo);
     float3 direct = ((((kd * _e76) + specular) * _e50) * _e49.n_dot_l);
     float3 _e83 = n;
-    const float3 _e85 = weft_prefiltered_radiance(reflect(-(v_6), _e83), roughness_7);
+    const float3 _e85 = weft_prefiltered_radiance(reflect(-(v_3), _e83), roughness_7);
     float3 _e88 = n;
     const float3 _e89 = weft_sh_irradiance(_e88);
     float3 indirect = (((_e85 * _e62) * ao) + (((_e89 * ao) * kd) * diffuse_albedo));
@@ -1033,25 +881,23 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e116 = n;
         const float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         const float _e120 = weft_d_ggx(1.0, r_f);
+        float4 _e123 = material.flake_color;
+        float3 flake_f0_ = saturate(_e123.xyz);
+        const float _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            float2 slope_3 = float2(dot(_e47[0], _e49.h), dot(_e47[1], _e49.h));
             const GlintParams _e129 = glitter_params();
-            const GlintEllipse _e130 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e133 = material.flake_size;
-            float screen_scale_2 = clamp(_e133, 1.0, 8.0);
-            const GlintGrids _e137 = glint_grids(_e5, _e130, screen_scale_2);
-            const float _e141 = glint_ndf(_e129, _e137, slope_3, _e118, _e120, (0u == TIER_FAST));
-            d_flakes = _e141;
+            const float3 _e132 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            float3 lobe = (((((intensity * _e128) * _e132) * _e50) * _e49.n_dot_l) * (_e120 / _e129.micro_roughness));
+            float2 slope_1 = float2(dot(_e47[0], _e49.h), dot(_e47[1], _e49.h));
+            const GlintEllipse _e147 = glint_ellipse(duv_dx_1, duv_dy_1);
+            float _e150 = material.flake_size;
+            float screen_scale_4 = clamp(_e150, 1.0, 8.0);
+            const float _e154 = glint_hits_fast(_e129, _e5, _e147, screen_scale_4, slope_1, _e118, _e120);
+            float3 _e155 = color;
+            color = (_e155 + (min(_e154, (20.0 * _e129.micro_roughness)) * lobe));
         }
-        float4 _e144 = material.flake_color;
-        float3 flake_f0_ = saturate(_e144.xyz);
-        const float _e149 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        float3 _e150 = color;
-        float _e151 = d_flakes;
-        const float3 _e155 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = (_e150 + (((((intensity * _e151) * _e149) * _e155) * _e50) * _e49.n_dot_l));
     }
-    float3 _e161 = color;
-    float3 radiance = clamp(_e161, (0.0).xxx, (65504.0).xxx);
+    float3 _e162 = color;
+    float3 radiance = clamp(_e162, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

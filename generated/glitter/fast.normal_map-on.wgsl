@@ -72,23 +72,32 @@ struct GlintParams {
     density_randomization: f32,
 }
 
-struct GlintSlopeRand {
-    gate_rand: vec4<f32>,
-    gaussian: vec4<f32>,
-    lerp: vec2<f32>,
-}
-
 struct GlintEllipse {
     major_dir: vec2<f32>,
     major: f32,
     minor: f32,
 }
 
-struct GlintGrids {
-    g0_: GlintGrid,
-    g1_: GlintGrid,
-    g2_: GlintGrid,
-    g3_: GlintGrid,
+struct GlintFootprintCell {
+    theta_lerp: f32,
+    ratio_lerp: f32,
+    lod_lerp: f32,
+    center: bool,
+    bin0_: f32,
+    bin_h: f32,
+    bin1_: f32,
+    lod0_: f32,
+    ratio0_: f32,
+}
+
+struct GlintTetraFast {
+    codes: u32,
+    w: vec4<f32>,
+    bin0_: f32,
+    bin_h: f32,
+    bin1_: f32,
+    lod0_: f32,
+    ratio0_: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -106,6 +115,18 @@ const GLINT_TABLE_SIZE: f32 = 64f;
 const GLINT_MIN_LOD: f32 = -20f;
 const GLINT_MAX_LOD: f32 = 20f;
 const GLINT_MAX_RATIO: f32 = 16f;
+const GLINT_TET_A_UP: u32 = 36292u;
+const GLINT_TET_A_DOWN: u32 = 36165u;
+const GLINT_TET_A_LOW: u32 = 34112u;
+const GLINT_TET_B_UP: u32 = 23168u;
+const GLINT_TET_B_DOWN: u32 = 42242u;
+const GLINT_TET_B_HIGH: u32 = 44421u;
+const GLINT_TET_C_UP: u32 = 44517u;
+const GLINT_TET_C_DOWN: u32 = 58790u;
+const GLINT_TET_C_LOW: u32 = 42338u;
+const GLINT_TET_CENTER_UP: u32 = 60596u;
+const GLINT_TET_CENTER_DOWN: u32 = 18110u;
+const GLINT_TET_CENTER_LOW: u32 = 46659u;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -243,21 +264,21 @@ fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn weft_specular_mip(roughness_4: f32) -> f32 {
-    let r_1 = saturate(roughness_4);
+    let r = saturate(roughness_4);
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
-    return ((r_1 * (1.7f - (0.7f * r_1))) * max_mip);
+    return ((r * (1.7f - (0.7f * r))) * max_mip);
 }
 
 fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
     let _e4 = weft_specular_mip(roughness_5);
-    let c_3 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
-    return max(c_3.xyz, vec3(0f));
+    let c_4 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
+    return max(c_4.xyz, vec3(0f));
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
-    let uv_5 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_5, 0f);
+    let uv_4 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_4, 0f);
     return _e8.xy;
 }
 
@@ -287,8 +308,8 @@ fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
-    let v_6 = ((texel * 2f) - vec3(1f));
-    return vec3<f32>((v_6.xy * strength), max(v_6.z, 0.001f));
+    let v_3 = ((texel * 2f) - vec3(1f));
+    return vec3<f32>((v_3.xy * strength), max(v_3.z, 0.001f));
 }
 
 fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f32> {
@@ -307,13 +328,13 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn glint_pcg4d(v_in: vec4<u32>) -> vec4<u32> {
-    var v_2: vec4<u32>;
+fn glint_pcg3d(v_in: vec3<u32>) -> vec3<u32> {
+    var v_2: vec3<u32>;
 
-    v_2 = ((v_in * 1664525u) + vec4(1013904223u));
+    v_2 = ((v_in * 1664525u) + vec3(1013904223u));
     let _e8 = v_2.x;
     let _e10 = v_2.y;
-    let _e12 = v_2.w;
+    let _e12 = v_2.z;
     v_2.x = (_e8 + (_e10 * _e12));
     let _e16 = v_2.y;
     let _e18 = v_2.z;
@@ -323,74 +344,23 @@ fn glint_pcg4d(v_in: vec4<u32>) -> vec4<u32> {
     let _e26 = v_2.x;
     let _e28 = v_2.y;
     v_2.z = (_e24 + (_e26 * _e28));
-    let _e32 = v_2.w;
-    let _e34 = v_2.y;
-    let _e36 = v_2.z;
-    v_2.w = (_e32 + (_e34 * _e36));
-    let _e39 = v_2;
-    let _e40 = v_2;
-    v_2 = (_e39 ^ (_e40 >> vec4(16u)));
-    let _e46 = v_2.x;
-    let _e48 = v_2.y;
-    let _e50 = v_2.w;
-    v_2.x = (_e46 + (_e48 * _e50));
-    let _e54 = v_2.y;
-    let _e56 = v_2.z;
-    let _e58 = v_2.x;
-    v_2.y = (_e54 + (_e56 * _e58));
-    let _e62 = v_2.z;
-    let _e64 = v_2.x;
-    let _e66 = v_2.y;
-    v_2.z = (_e62 + (_e64 * _e66));
-    let _e70 = v_2.w;
-    let _e72 = v_2.y;
-    let _e74 = v_2.z;
-    v_2.w = (_e70 + (_e72 * _e74));
-    let _e77 = v_2;
-    return _e77;
-}
-
-fn glint_pcg3d(v_in_1: vec3<u32>) -> vec3<u32> {
-    var v_3: vec3<u32>;
-
-    v_3 = ((v_in_1 * 1664525u) + vec3(1013904223u));
-    let _e8 = v_3.x;
-    let _e10 = v_3.y;
-    let _e12 = v_3.z;
-    v_3.x = (_e8 + (_e10 * _e12));
-    let _e16 = v_3.y;
-    let _e18 = v_3.z;
-    let _e20 = v_3.x;
-    v_3.y = (_e16 + (_e18 * _e20));
-    let _e24 = v_3.z;
-    let _e26 = v_3.x;
-    let _e28 = v_3.y;
-    v_3.z = (_e24 + (_e26 * _e28));
-    let _e31 = v_3;
-    let _e32 = v_3;
-    v_3 = (_e31 ^ (_e32 >> vec3(16u)));
-    let _e38 = v_3.x;
-    let _e40 = v_3.y;
-    let _e42 = v_3.z;
-    v_3.x = (_e38 + (_e40 * _e42));
-    let _e46 = v_3.y;
-    let _e48 = v_3.z;
-    let _e50 = v_3.x;
-    v_3.y = (_e46 + (_e48 * _e50));
-    let _e54 = v_3.z;
-    let _e56 = v_3.x;
-    let _e58 = v_3.y;
-    v_3.z = (_e54 + (_e56 * _e58));
-    let _e61 = v_3;
+    let _e31 = v_2;
+    let _e32 = v_2;
+    v_2 = (_e31 ^ (_e32 >> vec3(16u)));
+    let _e38 = v_2.x;
+    let _e40 = v_2.y;
+    let _e42 = v_2.z;
+    v_2.x = (_e38 + (_e40 * _e42));
+    let _e46 = v_2.y;
+    let _e48 = v_2.z;
+    let _e50 = v_2.x;
+    v_2.y = (_e46 + (_e48 * _e50));
+    let _e54 = v_2.z;
+    let _e56 = v_2.x;
+    let _e58 = v_2.y;
+    v_2.z = (_e54 + (_e56 * _e58));
+    let _e61 = v_2;
     return _e61;
-}
-
-fn glint_unit3_(v_4: vec3<u32>) -> vec3<f32> {
-    return ((vec3<f32>((v_4 >> vec3(8u))) + vec3(0.5f)) * 0.000000059604645f);
-}
-
-fn glint_unit4_(v_5: vec4<u32>) -> vec4<f32> {
-    return ((vec4<f32>((v_5 >> vec4(8u))) + vec4(0.5f)) * 0.000000059604645f);
 }
 
 fn glint_hash13_(p_in: vec3<f32>) -> f32 {
@@ -407,175 +377,8 @@ fn glint_hash13_(p_in: vec3<f32>) -> f32 {
     return fract(((_e16 + _e18) * _e21));
 }
 
-fn glint_erfinv(x_1: f32) -> f32 {
-    var w: f32;
-    var p: f32;
-
-    w = -(log(max(((1f - x_1) * (1f + x_1)), 0.000000000000000000000000000001f)));
-    let _e12 = w;
-    if (_e12 < 5f) {
-        let _e15 = w;
-        w = (_e15 - 2.5f);
-        p = 0.000000028102264f;
-        let _e19 = p;
-        let _e20 = w;
-        p = (0.00000034327394f + (_e19 * _e20));
-        let _e24 = p;
-        let _e25 = w;
-        p = (-0.0000035233877f + (_e24 * _e25));
-        let _e29 = p;
-        let _e30 = w;
-        p = (-0.0000043915065f + (_e29 * _e30));
-        let _e34 = p;
-        let _e35 = w;
-        p = (0.00021858087f + (_e34 * _e35));
-        let _e39 = p;
-        let _e40 = w;
-        p = (-0.001253725f + (_e39 * _e40));
-        let _e44 = p;
-        let _e45 = w;
-        p = (-0.0041776816f + (_e44 * _e45));
-        let _e49 = p;
-        let _e50 = w;
-        p = (0.24664073f + (_e49 * _e50));
-        let _e54 = p;
-        let _e55 = w;
-        p = (1.5014094f + (_e54 * _e55));
-    } else {
-        let _e59 = w;
-        w = (sqrt(_e59) - 3f);
-        p = -0.00020021426f;
-        let _e64 = p;
-        let _e65 = w;
-        p = (0.00010095056f + (_e64 * _e65));
-        let _e69 = p;
-        let _e70 = w;
-        p = (0.0013493432f + (_e69 * _e70));
-        let _e74 = p;
-        let _e75 = w;
-        p = (-0.0036734284f + (_e74 * _e75));
-        let _e79 = p;
-        let _e80 = w;
-        p = (0.0057395077f + (_e79 * _e80));
-        let _e84 = p;
-        let _e85 = w;
-        p = (-0.0076224613f + (_e84 * _e85));
-        let _e89 = p;
-        let _e90 = w;
-        p = (0.0094388705f + (_e89 * _e90));
-        let _e94 = p;
-        let _e95 = w;
-        p = (1.001674f + (_e94 * _e95));
-        let _e99 = p;
-        let _e100 = w;
-        p = (2.8329768f + (_e99 * _e100));
-    }
-    let _e104 = p;
-    return (_e104 * x_1);
-}
-
-fn glint_erfinv_poly(x_in: f32) -> f32 {
-    let x_3 = clamp(x_in, -0.95f, 0.95f);
-    let x2_1 = (x_3 * x_3);
-    return (x_3 * (0.864441f + (x2_1 * (0.533641f + (x2_1 * (-0.893165f + (x2_1 * 1.108999f)))))));
-}
-
-fn glint_erfinv_by(x_2: f32, poly: bool) -> f32 {
-    if poly {
-        let _e2 = glint_erfinv_poly(x_2);
-        return _e2;
-    }
-    let _e3 = glint_erfinv(x_2);
-    return _e3;
-}
-
-fn glint_gaussian3_(u: vec3<f32>, poly_normals: bool) -> vec3<f32> {
-    let _e7 = glint_erfinv_by(((2f * u.x) - 1f), poly_normals);
-    let _e13 = glint_erfinv_by(((2f * u.y) - 1f), poly_normals);
-    let _e19 = glint_erfinv_by(((2f * u.z) - 1f), poly_normals);
-    return (1.4142135f * vec3<f32>(_e7, _e13, _e19));
-}
-
-fn glint_corner(c_1: vec2<f32>, poly_normals_1: bool) -> vec2<f32> {
-    let texel_2 = vec2<u32>((c_1 - (GLINT_TABLE_SIZE * floor((c_1 / vec2(64f))))));
-    let _e13 = glint_pcg4d(vec4<u32>(texel_2, 6777961u, 1953785202u));
-    let _e14 = glint_unit4_(_e13);
-    let _e21 = glint_erfinv_by(((2f * _e14.y) - 1f), poly_normals_1);
-    return vec2<f32>(_e14.x, (1.4142135f * _e21));
-}
-
-fn glint_slope_rand(micro_roughness: f32, slope: vec2<f32>, offset: vec2<f32>, poly_normals_2: bool) -> GlintSlopeRand {
-    var out_1: GlintSlopeRand;
-
-    let s_2 = ((abs(slope) / vec2(micro_roughness)) + (offset * GLINT_TABLE_SIZE));
-    let cell = floor(s_2);
-    let _e11 = glint_corner(cell, poly_normals_2);
-    let _e16 = glint_corner((cell + vec2<f32>(0f, 1f)), poly_normals_2);
-    let _e21 = glint_corner((cell + vec2<f32>(1f, 0f)), poly_normals_2);
-    let _e26 = glint_corner((cell + vec2<f32>(1f, 1f)), poly_normals_2);
-    out_1.gate_rand = vec4<f32>(_e11.x, _e16.x, _e21.x, _e26.x);
-    out_1.gaussian = vec4<f32>(_e11.y, _e16.y, _e21.y, _e26.y);
-    out_1.lerp = (s_2 - cell);
-    let _e42 = out_1;
-    return _e42;
-}
-
-fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32, deviation: f32, count: f32) -> f32 {
-    var gate: vec4<f32>;
-
-    if (smooth_width > 0.0000001f) {
-        gate = saturate(((r.gate_rand - vec4((one_hit + smooth_width))) / vec4((-2f * smooth_width))));
-    } else {
-        gate = select(vec4(0f), vec4(1f), (r.gate_rand < vec4(one_hit)));
-    }
-    let gauss = clamp(floor(((r.gaussian * deviation) + vec4(mean))), vec4(0f), vec4(count));
-    let _e35 = gate;
-    let hits = (_e35 * (vec4(1f) + gauss));
-    let x0_ = mix(hits.x, hits.z, r.lerp.x);
-    let x1_ = mix(hits.y, hits.w, r.lerp.x);
-    return mix(x0_, x1_, r.lerp.y);
-}
-
-fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, target_ndf: f32, poly_normals_3: bool) -> f32 {
-    let skewed = vec2<f32>((grid.uv.x - (0.57735026f * grid.uv.y)), (1.1547005f * grid.uv.y));
-    let base = floor(skewed);
-    let f = (skewed - base);
-    let fz = ((1f - f.x) - f.y);
-    let s_3 = select(0f, 1f, (fz < 0f));
-    let s2_ = ((2f * s_3) - 1f);
-    let id = vec2<i32>(base);
-    let si = i32(s_3);
-    let c0_ = (id + vec2<i32>(si, si));
-    let c1_ = (id + vec2<i32>(si, (1i - si)));
-    let c2_ = (id + vec2<i32>((1i - si), si));
-    let bary = vec3<f32>((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    let _e63 = glint_pcg3d(vec3<u32>((bitcast<u32>(c0_.x) + 2147483648u), (bitcast<u32>(c0_.y) + 2147483648u), grid.seed));
-    let _e64 = glint_unit3_(_e63);
-    let _e73 = glint_pcg3d(vec3<u32>((bitcast<u32>(c1_.x) + 2147483648u), (bitcast<u32>(c1_.y) + 2147483648u), grid.seed));
-    let _e74 = glint_unit3_(_e73);
-    let _e83 = glint_pcg3d(vec3<u32>((bitcast<u32>(c2_.x) + 2147483648u), (bitcast<u32>(c2_.y) + 2147483648u), grid.seed));
-    let _e84 = glint_unit3_(_e83);
-    let _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    let _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    let _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    let _e98 = glint_gaussian3_(vec3<f32>(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    let log_density = clamp(((_e98 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
-    let count_1 = max(vec3(0.00000001f), (grid.cell_area * exp(log_density)));
-    let blended = (count_1 * grid.weight);
-    let p_4 = (params.micro_roughness * target_ndf);
-    let one_hit_1 = (vec3(1f) - pow(vec3((1f - p_4)), blended));
-    let others = max((blended - vec3(1f)), vec3(0f));
-    let mean_1 = (others * p_4);
-    let deviation_1 = sqrt((others * (p_4 * (1f - p_4))));
-    let smooth_width_1 = ((0.1f * saturate((one_hit_1 * 10f))) * saturate(((vec3(1f) - one_hit_1) * 10f)));
-    let _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    let _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    let _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((vec3<f32>(_e155, _e161, _e167) / count_1), bary);
-}
-
 fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
-    var out_2: GlintEllipse;
+    var out_1: GlintEllipse;
 
     let a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
     let b_3 = ((duv_dx.x * duv_dx.y) + (duv_dy.x * duv_dy.y));
@@ -586,20 +389,20 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     let l2_ = max((half_trace - disc), 0f);
     let e_a = vec2<f32>(b_3, (l1_ - a_5));
     let e_b = vec2<f32>((l1_ - d_4), b_3);
-    let e_3 = select(e_b, e_a, (dot(e_a, e_a) > dot(e_b, e_b)));
-    let e_len2_ = dot(e_3, e_3);
-    out_2.major_dir = select(vec2<f32>(1f, 0f), (e_3 * inverseSqrt(max(e_len2_, 0.0000000000000000000000000000000000001f))), (e_len2_ > 0.0000000000000000000000000000000000001f));
-    out_2.major = max(sqrt(l1_), 0.000000000001f);
-    let _e68 = out_2.major;
-    out_2.minor = max(sqrt(l2_), (_e68 / 64f));
-    let _e72 = out_2;
+    let e_5 = select(e_b, e_a, (dot(e_a, e_a) > dot(e_b, e_b)));
+    let e_len2_ = dot(e_5, e_5);
+    out_1.major_dir = select(vec2<f32>(1f, 0f), (e_5 * inverseSqrt(max(e_len2_, 0.0000000000000000000000000000000000001f))), (e_len2_ > 0.0000000000000000000000000000000000001f));
+    out_1.major = max(sqrt(l1_), 0.000000000001f);
+    let _e68 = out_1.major;
+    out_1.minor = max(sqrt(l2_), (_e68 / 64f));
+    let _e72 = out_1;
     return _e72;
 }
 
 fn glint_rotate(uv_1: vec2<f32>, angle: f32) -> vec2<f32> {
-    let c_4 = cos(angle);
-    let s_4 = sin(angle);
-    return vec2<f32>(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+    let c_5 = cos(angle);
+    let s_2 = sin(angle);
+    return vec2<f32>(((c_5 * uv_1.x) + (s_2 * uv_1.y)), ((c_5 * uv_1.y) - (s_2 * uv_1.x)));
 }
 
 fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
@@ -621,16 +424,16 @@ fn glint_make_grid(uv_2: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weig
     return _e22;
 }
 
-fn glint_tetra_weights(p_1: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c_2: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
-    let c1_1 = (a - d);
-    let c2_1 = (b - d);
-    let c3_ = (c_2 - d);
-    let q = (p_1 - d);
-    let det = dot(c1_1, cross(c2_1, c3_));
+fn glint_tetra_weights(p: vec3<f32>, a: vec3<f32>, b: vec3<f32>, c_1: vec3<f32>, d: vec3<f32>) -> vec4<f32> {
+    let c1_ = (a - d);
+    let c2_ = (b - d);
+    let c3_ = (c_1 - d);
+    let q = (p - d);
+    let det = dot(c1_, cross(c2_, c3_));
     let inv = (1f / det);
-    let w1_ = (dot(q, cross(c2_1, c3_)) * inv);
-    let w2_ = (dot(c1_1, cross(q, c3_)) * inv);
-    let w3_ = (dot(c1_1, cross(c2_1, q)) * inv);
+    let w1_ = (dot(q, cross(c2_, c3_)) * inv);
+    let w2_ = (dot(c1_, cross(q, c3_)) * inv);
+    let w3_ = (dot(c1_, cross(c2_, q)) * inv);
     return vec4<f32>(w1_, w2_, w3_, (((1f - w1_) - w2_) - w3_));
 }
 
@@ -638,199 +441,243 @@ fn glint_lod(e_1: GlintEllipse, screen_scale: f32) -> f32 {
     return clamp(log2(((e_1.minor * screen_scale) * 0.5f)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
-    var theta_2: f32;
-    var local_1: bool;
-
-    let rot_index = (p_2.x * 2f);
-    theta_2 = select(select(bin1_, bin_h, (rot_index < 1.5f)), bin0_, (rot_index < 0.5f));
-    if center {
-        local_1 = (p_2.y == 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e25 = local_1;
-    if _e25 {
-        theta_2 = 0f;
-    }
-    let ratio_2 = select(ratio0_, (ratio0_ * 2f), (p_2.y > 0.5f));
-    let lod_2 = (lod0_ + p_2.z);
-    let _e35 = theta_2;
-    let _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
-    return _e36;
-}
-
-fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> GlintGrids {
-    var theta_lerp: f32;
-    var p0_: vec3<f32>;
-    var p1_: vec3<f32>;
-    var p2_: vec3<f32>;
-    var p3_1: vec3<f32>;
-    var local_2: bool;
-    var out_3: GlintGrids;
+fn glint_footprint_cell(e_2: GlintEllipse, screen_scale_1: f32) -> GlintFootprintCell {
+    var out_2: GlintFootprintCell;
 
     let ratio_e = min((e_2.major / (e_2.minor + (0.00000001f * e_2.major))), GLINT_MAX_RATIO);
-    let _e12 = glint_lod(e_2, screen_scale_1);
-    let lod0_1 = floor(_e12);
-    let lod_lerp = (_e12 - lod0_1);
-    let ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1f)))), 1f);
-    let ratio1_ = (ratio0_1 * 2f);
-    let ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
-    let q_1 = (0.7853982f / max(ratio0_1, 2f));
-    let per_pi = (4f * max(ratio0_1, 2f));
-    let theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
-    let theta_q = (theta_3 / q_1);
+    let _e11 = glint_lod(e_2, screen_scale_1);
+    let lod0_ = floor(_e11);
+    let lod_lerp = (_e11 - lod0_);
+    let ratio0_ = max(exp2(floor(log2(max(ratio_e, 1f)))), 1f);
+    let ratio1_ = (ratio0_ * 2f);
+    let ratio_lerp = saturate(((ratio_e - ratio0_) / (ratio1_ - ratio0_)));
+    let q_1 = (0.7853982f / max(ratio0_, 2f));
+    let per_pi = (4f * max(ratio0_, 2f));
+    let theta_2 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
+    let theta_q = (theta_2 / q_1);
     let h0_ = floor(theta_q);
-    theta_lerp = saturate((theta_q - h0_));
+    let theta_lerp = saturate((theta_q - h0_));
     let i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
     let i1_ = ((i0_ + 1f) - (per_pi * floor(((i0_ + 1f) / per_pi))));
     let theta_bin0_ = (i0_ * q_1);
     let theta_bin_h = ((i0_ + 0.5f) * q_1);
     let theta_bin1_ = (i1_ * q_1);
-    let center_1 = (ratio0_1 == 1f);
-    if center_1 {
-        let a_6 = vec3<f32>(0f, 1f, 0f);
-        let b_4 = vec3<f32>(0f, 0f, 0f);
-        let c_5 = vec3<f32>(1f, 1f, 0f);
-        let d_5 = vec3<f32>(0f, 1f, 1f);
-        let ee = vec3<f32>(0f, 0f, 1f);
-        let f_1 = vec3<f32>(1f, 1f, 1f);
-        if (lod_lerp > (1f - ratio_lerp)) {
-            let _e103 = theta_lerp;
-            if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > _e103) {
-                p0_ = a_6;
-                p1_ = ee;
-                p2_ = d_5;
-                p3_1 = f_1;
-            } else {
-                p0_ = f_1;
-                p1_ = ee;
-                p2_ = c_5;
-                p3_1 = a_6;
-            }
-        } else {
-            p0_ = b_4;
-            p1_ = a_6;
-            p2_ = c_5;
-            p3_1 = ee;
-        }
-        let _e105 = theta_lerp;
-        theta_lerp = (_e105 * ratio_lerp);
-    } else {
-        let a_7 = vec3<f32>(0f, 1f, 0f);
-        let b_5 = vec3<f32>(0f, 0f, 0f);
-        let c_6 = vec3<f32>(0.5f, 1f, 0f);
-        let d_6 = vec3<f32>(1f, 0f, 0f);
-        let ee_1 = vec3<f32>(1f, 1f, 0f);
-        let f_2 = vec3<f32>(0f, 1f, 1f);
-        let g_1 = vec3<f32>(0f, 0f, 1f);
-        let h_1 = vec3<f32>(0.5f, 1f, 1f);
-        let i = vec3<f32>(1f, 0f, 1f);
-        let j = vec3<f32>(1f, 1f, 1f);
-        let _e147 = theta_lerp;
-        if (_e147 < 0.5f) {
-            let _e152 = theta_lerp;
-            local_2 = ((_e152 * 2f) < ratio_lerp);
-        } else {
-            local_2 = false;
-        }
-        let _e157 = local_2;
-        if _e157 {
-            if (lod_lerp > (1f - ratio_lerp)) {
-                let _e167 = theta_lerp;
-                if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((_e167 * 2f) / max(ratio_lerp, 0.00000001f))) {
-                    p0_ = a_7;
-                    p1_ = f_2;
-                    p2_ = h_1;
-                    p3_1 = g_1;
-                } else {
-                    p0_ = c_6;
-                    p1_ = a_7;
-                    p2_ = h_1;
-                    p3_1 = g_1;
-                }
-            } else {
-                p0_ = b_5;
-                p1_ = a_7;
-                p2_ = c_6;
-                p3_1 = g_1;
-            }
-        } else {
-            let _e174 = theta_lerp;
-            if ((1f - ((_e174 - 0.5f) * 2f)) > ratio_lerp) {
-                if (lod_lerp < (1f - ratio_lerp)) {
-                    let half_width = (0.5f * (1f - ratio_lerp));
-                    let _e194 = theta_lerp;
-                    if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e194 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
-                        p0_ = b_5;
-                        p1_ = g_1;
-                        p2_ = i;
-                        p3_1 = c_6;
-                    } else {
-                        p0_ = d_6;
-                        p1_ = b_5;
-                        p2_ = c_6;
-                        p3_1 = i;
-                    }
-                } else {
-                    p0_ = c_6;
-                    p1_ = g_1;
-                    p2_ = h_1;
-                    p3_1 = i;
-                }
-            } else {
-                if (lod_lerp > (1f - ratio_lerp)) {
-                    let _e213 = theta_lerp;
-                    if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e213 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
-                        p0_ = c_6;
-                        p1_ = j;
-                        p2_ = h_1;
-                        p3_1 = i;
-                    } else {
-                        p0_ = ee_1;
-                        p1_ = i;
-                        p2_ = c_6;
-                        p3_1 = j;
-                    }
-                } else {
-                    p0_ = d_6;
-                    p1_ = ee_1;
-                    p2_ = c_6;
-                    p3_1 = i;
-                }
-            }
-        }
-    }
-    let _e225 = theta_lerp;
-    let _e227 = p0_;
-    let _e228 = p1_;
-    let _e229 = p2_;
-    let _e230 = p3_1;
-    let _e231 = glint_tetra_weights(vec3<f32>(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
-    let _e234 = p0_;
-    let _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e236;
-    let _e238 = p1_;
-    let _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e240;
-    let _e242 = p2_;
-    let _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e244;
-    let _e246 = p3_1;
-    let _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e248;
-    let _e249 = out_3;
-    return _e249;
+    out_2.theta_lerp = theta_lerp;
+    out_2.ratio_lerp = ratio_lerp;
+    out_2.lod_lerp = lod_lerp;
+    out_2.center = (ratio0_ == 1f);
+    out_2.bin0_ = theta_bin0_;
+    out_2.bin_h = theta_bin_h;
+    out_2.bin1_ = theta_bin1_;
+    out_2.lod0_ = lod0_;
+    out_2.ratio0_ = ratio0_;
+    let _e74 = out_2;
+    return _e74;
 }
 
-fn glint_ndf(params_1: GlintParams, grids: GlintGrids, slope_2: vec2<f32>, d_1: f32, d_max: f32, poly_normals_4: bool) -> f32 {
-    let target_ndf_1 = (d_1 / d_max);
-    let _e8 = glint_sample_grid(params_1, grids.g0_, slope_2, target_ndf_1, poly_normals_4);
-    let _e10 = glint_sample_grid(params_1, grids.g1_, slope_2, target_ndf_1, poly_normals_4);
-    let _e13 = glint_sample_grid(params_1, grids.g2_, slope_2, target_ndf_1, poly_normals_4);
-    let _e16 = glint_sample_grid(params_1, grids.g3_, slope_2, target_ndf_1, poly_normals_4);
-    let sum = (((_e8 + _e10) + _e13) + _e16);
-    return (min((sum / params_1.micro_roughness), 20f) * d_max);
+fn glint_normal_fast(h_1: u32) -> f32 {
+    let x_2 = fma(f32(h_1), 0.0000000004656613f, -1f);
+    let x2_1 = (x_2 * x_2);
+    return (x_2 * (1.2225f + (x2_1 * (0.75468f + (x2_1 * (-1.263127f + (x2_1 * 1.568366f)))))));
+}
+
+fn glint_corner_hits(ax: u32, ay: u32, gate_a: f32, gate_b: f32, deviation: f32, mean1_: f32) -> f32 {
+    var x_1: u32;
+    var y: u32;
+    var z: u32;
+    var w: u32;
+
+    x_1 = (ax + (ay * 1860535849u));
+    let _e10 = x_1;
+    y = (ay + (_e10 * 220351156u));
+    let _e16 = x_1;
+    let _e17 = y;
+    z = (220351156u + (_e16 * _e17));
+    let _e22 = y;
+    let _e23 = z;
+    w = (1860535849u + (_e22 * _e23));
+    let _e27 = x_1;
+    let _e28 = x_1;
+    x_1 = (_e27 ^ (_e28 >> 16u));
+    let _e32 = y;
+    let _e33 = y;
+    y = (_e32 ^ (_e33 >> 16u));
+    let _e37 = z;
+    let _e38 = z;
+    z = (_e37 ^ (_e38 >> 16u));
+    let _e42 = w;
+    let _e43 = w;
+    w = (_e42 ^ (_e43 >> 16u));
+    let _e47 = x_1;
+    let _e48 = y;
+    let _e49 = w;
+    x_1 = (_e47 + (_e48 * _e49));
+    let _e52 = y;
+    let _e53 = z;
+    let _e54 = x_1;
+    y = (_e52 + (_e53 * _e54));
+    let _e57 = x_1;
+    let gate = saturate(fma(f32(_e57), gate_a, gate_b));
+    let _e61 = y;
+    let _e62 = glint_normal_fast(_e61);
+    let count = max(floor(fma(_e62, deviation, mean1_)), 1f);
+    return (gate * count);
+}
+
+fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c_2: vec2<i32>, s_slope: vec2<f32>, p_1: f32, log2_q: f32) -> f32 {
+    let _e16 = glint_pcg3d(vec3<u32>((bitcast<u32>(c_2.x) + 2147483648u), (bitcast<u32>(c_2.y) + 2147483648u), grid.seed));
+    let _e18 = glint_normal_fast(_e16.x);
+    let log_density = clamp(((_e18 * params.density_randomization) + params.log_density), 0f, 50f);
+    let count_1 = max(0.00000001f, (grid.cell_area * exp(log_density)));
+    let blended = (count_1 * grid.weight);
+    let miss = exp2((blended * log2_q));
+    let one_hit = (1f - miss);
+    let others = max((blended - 1f), 0f);
+    let mean1_1 = ((others * p_1) + 1f);
+    let deviation_1 = sqrt((others * (p_1 * (1f - p_1))));
+    let width = max(((0.1f * saturate((one_hit * 10f))) * saturate((miss * 10f))), 0.000000000000000000000000000001f);
+    let inv_1 = (0.5f / width);
+    let gate_a_1 = (inv_1 * -0.00000000023283064f);
+    let gate_b_1 = fma(one_hit, inv_1, 0.5f);
+    let s_3 = fma(vec2<f32>((_e16.yz >> vec2(8u))), vec2(0.0000038146973f), s_slope);
+    let cell = floor(s_3);
+    let l = (s_3 - cell);
+    let ci = vec2<u32>(cell);
+    let t0_ = (ci & vec2(63u));
+    let t1_ = ((ci + vec2(1u)) & vec2(63u));
+    let ax_1 = ((vec2<u32>(t0_.x, t1_.x) * 1664525u) + vec2(1013904223u));
+    let ay_1 = ((vec2<u32>(t0_.y, t1_.y) * 1664525u) + vec2(1013904223u));
+    let _e104 = glint_corner_hits(ax_1.x, ay_1.x, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    let _e107 = glint_corner_hits(ax_1.x, ay_1.y, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    let _e110 = glint_corner_hits(ax_1.y, ay_1.x, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    let _e113 = glint_corner_hits(ax_1.y, ay_1.y, gate_a_1, gate_b_1, deviation_1, mean1_1);
+    let x0_ = mix(_e104, _e110, l.x);
+    let x1_ = mix(_e107, _e113, l.x);
+    return (mix(x0_, x1_, l.y) / count_1);
+}
+
+fn glint_sample_grid_fast(params_1: GlintParams, grid_1: GlintGrid, s_slope_1: vec2<f32>, p_2: f32, log2_q_1: f32) -> f32 {
+    var sum: f32 = 0f;
+    var k: i32 = 0i;
+
+    let skewed = vec2<f32>((grid_1.uv.x - (0.57735026f * grid_1.uv.y)), (1.1547005f * grid_1.uv.y));
+    let base = floor(skewed);
+    let f = (skewed - base);
+    let fz = ((1f - f.x) - f.y);
+    let s_4 = select(0f, 1f, (fz < 0f));
+    let s2_ = ((2f * s_4) - 1f);
+    let id = vec2<i32>(base);
+    let si = i32(s_4);
+    let bary = vec3<f32>((-(fz) * s2_), (s_4 - (f.y * s2_)), (s_4 - (f.x * s2_)));
+    loop {
+        let _e48 = k;
+        if (_e48 < 3i) {
+        } else {
+            break;
+        }
+        {
+            let _e53 = k;
+            let _e59 = k;
+            let c_6 = (id + vec2<i32>(select(si, (1i - si), (_e53 == 2i)), select(si, (1i - si), (_e59 == 1i))));
+            let _e67 = k;
+            let _e72 = k;
+            let b_4 = select(select(bary.z, bary.y, (_e67 == 1i)), bary.x, (_e72 == 0i));
+            let _e76 = sum;
+            let _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = (_e76 + (b_4 * _e77));
+        }
+        continuing {
+            let _e81 = k;
+            k = (_e81 + 1i);
+        }
+    }
+    let _e83 = sum;
+    return _e83;
+}
+
+fn glint_vertex_of_code(c_3: u32) -> vec3<f32> {
+    let rot = (c_3 & 3u);
+    return vec3<f32>(select((f32(rot) * 0.5f), 0f, (rot == 3u)), f32(((c_3 >> 2u) & 1u)), f32((c_3 >> 3u)));
+}
+
+fn glint_tetra_fast(e_3: GlintEllipse, screen_scale_2: f32) -> GlintTetraFast {
+    var local_1: bool;
+    var out_3: GlintTetraFast;
+
+    let _e2 = glint_footprint_cell(e_3, screen_scale_2);
+    let t_2 = _e2.theta_lerp;
+    let r_1 = _e2.ratio_lerp;
+    let l_1 = _e2.lod_lerp;
+    let upper = (l_1 > (1f - r_1));
+    let upper_left = ((l_1 - (1f - r_1)) / max(r_1, 0.00000001f));
+    let half_width = (0.5f * (1f - r_1));
+    let center_codes = select(GLINT_TET_CENTER_LOW, select(GLINT_TET_CENTER_DOWN, GLINT_TET_CENTER_UP, (upper_left > t_2)), upper);
+    let a_codes = select(GLINT_TET_A_LOW, select(GLINT_TET_A_DOWN, GLINT_TET_A_UP, (upper_left > ((t_2 * 2f) / max(r_1, 0.00000001f)))), upper);
+    let b_codes = select(GLINT_TET_B_HIGH, select(GLINT_TET_B_DOWN, GLINT_TET_B_UP, ((l_1 / max((1f - r_1), 0.00000001f)) > ((t_2 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f)))), (l_1 < (1f - r_1)));
+    let c_codes = select(GLINT_TET_C_LOW, select(GLINT_TET_C_DOWN, GLINT_TET_C_UP, (upper_left > ((((t_2 - 0.5f) * 2f) - (1f - r_1)) / max(r_1, 0.00000001f)))), upper);
+    if (t_2 < 0.5f) {
+        local_1 = ((t_2 * 2f) < r_1);
+    } else {
+        local_1 = false;
+    }
+    let prism_a = local_1;
+    let prism_b = ((1f - ((t_2 - 0.5f) * 2f)) > r_1);
+    let codes = select(select(select(c_codes, b_codes, prism_b), a_codes, prism_a), center_codes, _e2.center);
+    let point = vec3<f32>(select(t_2, (t_2 * r_1), _e2.center), r_1, l_1);
+    out_3.codes = codes;
+    let _e103 = glint_vertex_of_code((codes & 15u));
+    let _e108 = glint_vertex_of_code(((codes >> 4u) & 15u));
+    let _e113 = glint_vertex_of_code(((codes >> 8u) & 15u));
+    let _e116 = glint_vertex_of_code((codes >> 12u));
+    let _e117 = glint_tetra_weights(point, _e103, _e108, _e113, _e116);
+    out_3.w = _e117;
+    out_3.bin0_ = _e2.bin0_;
+    out_3.bin_h = _e2.bin_h;
+    out_3.bin1_ = _e2.bin1_;
+    out_3.lod0_ = _e2.lod0_;
+    out_3.ratio0_ = _e2.ratio0_;
+    let _e128 = out_3;
+    return _e128;
+}
+
+fn glint_hits_fast(params_2: GlintParams, uv_3: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32, slope: vec2<f32>, d_1: f32, d_max: f32) -> f32 {
+    var sum_1: f32 = 0f;
+    var i: u32 = 0u;
+
+    let _e7 = glint_tetra_fast(e_4, screen_scale_3);
+    let codes_1 = _e7.codes;
+    let p_4 = (params_2.micro_roughness * (d_1 / d_max));
+    let log2_q_2 = log2((1f - p_4));
+    let s_slope_2 = ((abs(slope) / vec2(params_2.micro_roughness)) + vec2(0.0000019073486f));
+    loop {
+        let _e26 = i;
+        if (_e26 < 4u) {
+        } else {
+            break;
+        }
+        {
+            let _e30 = i;
+            let c_7 = ((codes_1 >> (4u * _e30)) & 15u);
+            let rot_1 = (c_7 & 3u);
+            let theta_3 = select(select(select(0f, _e7.bin1_, (rot_1 == 2u)), _e7.bin_h, (rot_1 == 1u)), _e7.bin0_, (rot_1 == 0u));
+            let ratio_2 = select(_e7.ratio0_, (_e7.ratio0_ * 2f), ((c_7 & 4u) != 0u));
+            let lod_2 = (_e7.lod0_ + f32((c_7 >> 3u)));
+            let _e76 = i;
+            let _e82 = i;
+            let _e88 = i;
+            let w_1 = select(select(select((((1f - _e7.w.x) - _e7.w.y) - _e7.w.z), _e7.w.z, (_e76 == 2u)), _e7.w.y, (_e82 == 1u)), _e7.w.x, (_e88 == 0u));
+            let _e92 = sum_1;
+            let _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            let _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
+            sum_1 = (_e92 + _e94);
+        }
+        continuing {
+            let _e97 = i;
+            i = (_e97 + 1u);
+        }
+    }
+    let _e99 = sum_1;
+    return _e99;
 }
 
 fn glitter_params() -> GlintParams {
@@ -894,20 +741,20 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e35 = material.occlusion_strength;
     let ao = saturate(mix(1f, occlusion, _e35));
     let _e41 = weft_surface(in_1.world_position, in_1.world_normal);
-    let v_7 = _e41.v;
+    let v_4 = _e41.v;
     n = _e41.n;
     {
         let _e47 = textureSample(normal_map, material_sampler, _e5);
-        let texel_3 = _e47.xyz;
+        let texel_2 = _e47.xyz;
         let _e49 = n;
         let _e53 = material.normal_strength;
-        let _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_3, _e53);
+        let _e54 = weft_mapped_normal(_e49, in_1.world_tangent, texel_2, _e53);
         n = _e54;
     }
     let _e55 = n;
     let _e57 = weft_tangent_frame(_e55, in_1.world_tangent);
     let _e58 = n;
-    let _e59 = weft_main_light_geometry(_e58, v_7);
+    let _e59 = weft_main_light_geometry(_e58, v_4);
     let _e60 = weft_main_light_radiance();
     let f0_2 = mix(vec3(0.04f), base_1, metallic);
     let diffuse_albedo = (base_1 * (1f - metallic));
@@ -922,7 +769,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e86 = weft_diffuse_lambert(diffuse_albedo);
     let direct = ((((kd * _e86) + specular) * _e60) * _e59.n_dot_l);
     let _e93 = n;
-    let _e95 = weft_prefiltered_radiance(reflect(-(v_7), _e93), roughness_7);
+    let _e95 = weft_prefiltered_radiance(reflect(-(v_4), _e93), roughness_7);
     let _e98 = n;
     let _e99 = weft_sh_irradiance(_e98);
     let indirect = (((_e95 * _e72) * ao) + (((_e99 * ao) * kd) * diffuse_albedo));
@@ -941,25 +788,23 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e126 = n;
         let _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
         let _e130 = weft_d_ggx(1f, r_f);
+        let _e133 = material.flake_color;
+        let flake_f0_ = saturate(_e133.xyz);
+        let _e138 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
         {
-            let slope_3 = vec2<f32>(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
             let _e139 = glitter_params();
-            let _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
-            let _e143 = material.flake_size;
-            let screen_scale_2 = clamp(_e143, 1f, 8f);
-            let _e147 = glint_grids(_e5, _e140, screen_scale_2);
-            let _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, (0u == TIER_FAST));
-            d_flakes = _e151;
+            let _e142 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+            let lobe = (((((intensity * _e138) * _e142) * _e60) * _e59.n_dot_l) * (_e130 / _e139.micro_roughness));
+            let slope_1 = vec2<f32>(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
+            let _e157 = glint_ellipse(duv_dx_1, duv_dy_1);
+            let _e160 = material.flake_size;
+            let screen_scale_4 = clamp(_e160, 1f, 8f);
+            let _e164 = glint_hits_fast(_e139, _e5, _e157, screen_scale_4, slope_1, _e128, _e130);
+            let _e165 = color;
+            color = (_e165 + (min(_e164, (20f * _e139.micro_roughness)) * lobe));
         }
-        let _e154 = material.flake_color;
-        let flake_f0_ = saturate(_e154.xyz);
-        let _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
-        let _e160 = color;
-        let _e161 = d_flakes;
-        let _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
-        color = (_e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l));
     }
-    let _e171 = color;
-    let radiance = clamp(_e171, vec3(0f), vec3(65504f));
+    let _e172 = color;
+    let radiance = clamp(_e172, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

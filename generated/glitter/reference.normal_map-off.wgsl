@@ -91,6 +91,32 @@ struct GlintGrids {
     g3_: GlintGrid,
 }
 
+struct GlintTetra {
+    p0_: vec3<f32>,
+    p1_: vec3<f32>,
+    p2_: vec3<f32>,
+    p3_: vec3<f32>,
+    w: vec4<f32>,
+    center: bool,
+    bin0_: f32,
+    bin_h: f32,
+    bin1_: f32,
+    lod0_: f32,
+    ratio0_: f32,
+}
+
+struct GlintFootprintCell {
+    theta_lerp: f32,
+    ratio_lerp: f32,
+    lod_lerp: f32,
+    center: bool,
+    bin0_: f32,
+    bin_h: f32,
+    bin1_: f32,
+    lod0_: f32,
+    ratio0_: f32,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TIER_FAST: u32 = 0u;
@@ -106,6 +132,18 @@ const GLINT_TABLE_SIZE: f32 = 64f;
 const GLINT_MIN_LOD: f32 = -20f;
 const GLINT_MAX_LOD: f32 = 20f;
 const GLINT_MAX_RATIO: f32 = 16f;
+const GLINT_TET_A_UP: u32 = 36292u;
+const GLINT_TET_A_DOWN: u32 = 36165u;
+const GLINT_TET_A_LOW: u32 = 34112u;
+const GLINT_TET_B_UP: u32 = 23168u;
+const GLINT_TET_B_DOWN: u32 = 42242u;
+const GLINT_TET_B_HIGH: u32 = 44421u;
+const GLINT_TET_C_UP: u32 = 44517u;
+const GLINT_TET_C_DOWN: u32 = 58790u;
+const GLINT_TET_C_LOW: u32 = 42338u;
+const GLINT_TET_CENTER_UP: u32 = 60596u;
+const GLINT_TET_CENTER_DOWN: u32 = 18110u;
+const GLINT_TET_CENTER_LOW: u32 = 46659u;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -567,9 +605,9 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     let l2_ = max((half_trace - disc), 0f);
     let e_a = vec2<f32>(b_3, (l1_ - a_5));
     let e_b = vec2<f32>((l1_ - d_4), b_3);
-    let e_3 = select(e_b, e_a, (dot(e_a, e_a) > dot(e_b, e_b)));
-    let e_len2_ = dot(e_3, e_3);
-    out_2.major_dir = select(vec2<f32>(1f, 0f), (e_3 * inverseSqrt(max(e_len2_, 0.0000000000000000000000000000000000001f))), (e_len2_ > 0.0000000000000000000000000000000000001f));
+    let e_5 = select(e_b, e_a, (dot(e_a, e_a) > dot(e_b, e_b)));
+    let e_len2_ = dot(e_5, e_5);
+    out_2.major_dir = select(vec2<f32>(1f, 0f), (e_5 * inverseSqrt(max(e_len2_, 0.0000000000000000000000000000000000001f))), (e_len2_ > 0.0000000000000000000000000000000000001f));
     out_2.major = max(sqrt(l1_), 0.000000000001f);
     let _e68 = out_2.major;
     out_2.minor = max(sqrt(l2_), (_e68 / 64f));
@@ -619,41 +657,13 @@ fn glint_lod(e_1: GlintEllipse, screen_scale: f32) -> f32 {
     return clamp(log2(((e_1.minor * screen_scale) * 0.5f)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
-    var theta_2: f32;
-    var local_1: bool;
-
-    let rot_index = (p_2.x * 2f);
-    theta_2 = select(select(bin1_, bin_h, (rot_index < 1.5f)), bin0_, (rot_index < 0.5f));
-    if center {
-        local_1 = (p_2.y == 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e25 = local_1;
-    if _e25 {
-        theta_2 = 0f;
-    }
-    let ratio_2 = select(ratio0_, (ratio0_ * 2f), (p_2.y > 0.5f));
-    let lod_2 = (lod0_ + p_2.z);
-    let _e35 = theta_2;
-    let _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
-    return _e36;
-}
-
-fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> GlintGrids {
-    var theta_lerp: f32;
-    var p0_: vec3<f32>;
-    var p1_: vec3<f32>;
-    var p2_: vec3<f32>;
-    var p3_1: vec3<f32>;
-    var local_2: bool;
-    var out_3: GlintGrids;
+fn glint_footprint_cell(e_2: GlintEllipse, screen_scale_1: f32) -> GlintFootprintCell {
+    var out_3: GlintFootprintCell;
 
     let ratio_e = min((e_2.major / (e_2.minor + (0.00000001f * e_2.major))), GLINT_MAX_RATIO);
-    let _e12 = glint_lod(e_2, screen_scale_1);
-    let lod0_1 = floor(_e12);
-    let lod_lerp = (_e12 - lod0_1);
+    let _e11 = glint_lod(e_2, screen_scale_1);
+    let lod0_1 = floor(_e11);
+    let lod_lerp = (_e11 - lod0_1);
     let ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1f)))), 1f);
     let ratio1_ = (ratio0_1 * 2f);
     let ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
@@ -662,13 +672,39 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
     let theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
     let theta_q = (theta_3 / q_1);
     let h0_ = floor(theta_q);
-    theta_lerp = saturate((theta_q - h0_));
+    let theta_lerp_1 = saturate((theta_q - h0_));
     let i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
     let i1_ = ((i0_ + 1f) - (per_pi * floor(((i0_ + 1f) / per_pi))));
     let theta_bin0_ = (i0_ * q_1);
     let theta_bin_h = ((i0_ + 0.5f) * q_1);
     let theta_bin1_ = (i1_ * q_1);
-    let center_1 = (ratio0_1 == 1f);
+    out_3.theta_lerp = theta_lerp_1;
+    out_3.ratio_lerp = ratio_lerp;
+    out_3.lod_lerp = lod_lerp;
+    out_3.center = (ratio0_1 == 1f);
+    out_3.bin0_ = theta_bin0_;
+    out_3.bin_h = theta_bin_h;
+    out_3.bin1_ = theta_bin1_;
+    out_3.lod0_ = lod0_1;
+    out_3.ratio0_ = ratio0_1;
+    let _e74 = out_3;
+    return _e74;
+}
+
+fn glint_tetra(e_3: GlintEllipse, screen_scale_2: f32) -> GlintTetra {
+    var theta_lerp: f32;
+    var p0_: vec3<f32>;
+    var p1_: vec3<f32>;
+    var p2_: vec3<f32>;
+    var p3_1: vec3<f32>;
+    var local_1: bool;
+    var out_4: GlintTetra;
+
+    let _e2 = glint_footprint_cell(e_3, screen_scale_2);
+    theta_lerp = _e2.theta_lerp;
+    let ratio_lerp_1 = _e2.ratio_lerp;
+    let lod_lerp_1 = _e2.lod_lerp;
+    let center_1 = _e2.center;
     if center_1 {
         let a_6 = vec3<f32>(0f, 1f, 0f);
         let b_4 = vec3<f32>(0f, 0f, 0f);
@@ -676,9 +712,9 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
         let d_5 = vec3<f32>(0f, 1f, 1f);
         let ee = vec3<f32>(0f, 0f, 1f);
         let f_1 = vec3<f32>(1f, 1f, 1f);
-        if (lod_lerp > (1f - ratio_lerp)) {
-            let _e103 = theta_lerp;
-            if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > _e103) {
+        if (lod_lerp_1 > (1f - ratio_lerp_1)) {
+            let _e45 = theta_lerp;
+            if (((lod_lerp_1 - (1f - ratio_lerp_1)) / max(ratio_lerp_1, 0.00000001f)) > _e45) {
                 p0_ = a_6;
                 p1_ = ee;
                 p2_ = d_5;
@@ -695,8 +731,8 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             p2_ = c_5;
             p3_1 = ee;
         }
-        let _e105 = theta_lerp;
-        theta_lerp = (_e105 * ratio_lerp);
+        let _e47 = theta_lerp;
+        theta_lerp = (_e47 * ratio_lerp_1);
     } else {
         let a_7 = vec3<f32>(0f, 1f, 0f);
         let b_5 = vec3<f32>(0f, 0f, 0f);
@@ -708,18 +744,18 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
         let h_1 = vec3<f32>(0.5f, 1f, 1f);
         let i = vec3<f32>(1f, 0f, 1f);
         let j = vec3<f32>(1f, 1f, 1f);
-        let _e147 = theta_lerp;
-        if (_e147 < 0.5f) {
-            let _e152 = theta_lerp;
-            local_2 = ((_e152 * 2f) < ratio_lerp);
+        let _e89 = theta_lerp;
+        if (_e89 < 0.5f) {
+            let _e94 = theta_lerp;
+            local_1 = ((_e94 * 2f) < ratio_lerp_1);
         } else {
-            local_2 = false;
+            local_1 = false;
         }
-        let _e157 = local_2;
-        if _e157 {
-            if (lod_lerp > (1f - ratio_lerp)) {
-                let _e167 = theta_lerp;
-                if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((_e167 * 2f) / max(ratio_lerp, 0.00000001f))) {
+        let _e99 = local_1;
+        if _e99 {
+            if (lod_lerp_1 > (1f - ratio_lerp_1)) {
+                let _e109 = theta_lerp;
+                if (((lod_lerp_1 - (1f - ratio_lerp_1)) / max(ratio_lerp_1, 0.00000001f)) > ((_e109 * 2f) / max(ratio_lerp_1, 0.00000001f))) {
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
@@ -737,12 +773,12 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                 p3_1 = g_1;
             }
         } else {
-            let _e174 = theta_lerp;
-            if ((1f - ((_e174 - 0.5f) * 2f)) > ratio_lerp) {
-                if (lod_lerp < (1f - ratio_lerp)) {
-                    let half_width = (0.5f * (1f - ratio_lerp));
-                    let _e194 = theta_lerp;
-                    if ((lod_lerp / max((1f - ratio_lerp), 0.00000001f)) > ((_e194 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
+            let _e116 = theta_lerp;
+            if ((1f - ((_e116 - 0.5f) * 2f)) > ratio_lerp_1) {
+                if (lod_lerp_1 < (1f - ratio_lerp_1)) {
+                    let half_width = (0.5f * (1f - ratio_lerp_1));
+                    let _e136 = theta_lerp;
+                    if ((lod_lerp_1 / max((1f - ratio_lerp_1), 0.00000001f)) > ((_e136 - (0.5f - half_width)) / max((2f * half_width), 0.00000001f))) {
                         p0_ = b_5;
                         p1_ = g_1;
                         p2_ = i;
@@ -760,9 +796,9 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
                     p3_1 = i;
                 }
             } else {
-                if (lod_lerp > (1f - ratio_lerp)) {
-                    let _e213 = theta_lerp;
-                    if (((lod_lerp - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f)) > ((((_e213 - 0.5f) * 2f) - (1f - ratio_lerp)) / max(ratio_lerp, 0.00000001f))) {
+                if (lod_lerp_1 > (1f - ratio_lerp_1)) {
+                    let _e155 = theta_lerp;
+                    if (((lod_lerp_1 - (1f - ratio_lerp_1)) / max(ratio_lerp_1, 0.00000001f)) > ((((_e155 - 0.5f) * 2f) - (1f - ratio_lerp_1)) / max(ratio_lerp_1, 0.00000001f))) {
                         p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
@@ -782,26 +818,67 @@ fn glint_grids(uv_4: vec2<f32>, e_2: GlintEllipse, screen_scale_1: f32) -> Glint
             }
         }
     }
-    let _e225 = theta_lerp;
-    let _e227 = p0_;
-    let _e228 = p1_;
-    let _e229 = p2_;
-    let _e230 = p3_1;
-    let _e231 = glint_tetra_weights(vec3<f32>(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
-    let _e234 = p0_;
-    let _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e236;
-    let _e238 = p1_;
-    let _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e240;
-    let _e242 = p2_;
-    let _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e244;
-    let _e246 = p3_1;
-    let _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e248;
-    let _e249 = out_3;
-    return _e249;
+    let _e169 = p0_;
+    out_4.p0_ = _e169;
+    let _e171 = p1_;
+    out_4.p1_ = _e171;
+    let _e173 = p2_;
+    out_4.p2_ = _e173;
+    let _e175 = p3_1;
+    out_4.p3_ = _e175;
+    let _e177 = theta_lerp;
+    let _e179 = p0_;
+    let _e180 = p1_;
+    let _e181 = p2_;
+    let _e182 = p3_1;
+    let _e183 = glint_tetra_weights(vec3<f32>(_e177, ratio_lerp_1, lod_lerp_1), _e179, _e180, _e181, _e182);
+    out_4.w = _e183;
+    out_4.center = center_1;
+    out_4.bin0_ = _e2.bin0_;
+    out_4.bin_h = _e2.bin_h;
+    out_4.bin1_ = _e2.bin1_;
+    out_4.lod0_ = _e2.lod0_;
+    out_4.ratio0_ = _e2.ratio0_;
+    let _e195 = out_4;
+    return _e195;
+}
+
+fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
+    var theta_2: f32;
+    var local_2: bool;
+
+    let rot_index = (p_2.x * 2f);
+    theta_2 = select(select(bin1_, bin_h, (rot_index < 1.5f)), bin0_, (rot_index < 0.5f));
+    if center {
+        local_2 = (p_2.y == 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e25 = local_2;
+    if _e25 {
+        theta_2 = 0f;
+    }
+    let ratio_2 = select(ratio0_, (ratio0_ * 2f), (p_2.y > 0.5f));
+    let lod_2 = (lod0_ + p_2.z);
+    let _e35 = theta_2;
+    let _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    return _e36;
+}
+
+fn glint_grids(uv_4: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32) -> GlintGrids {
+    var out_5: GlintGrids;
+
+    let _e3 = glint_tetra(e_4, screen_scale_3);
+    let _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g0_ = _e15;
+    let _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g1_ = _e26;
+    let _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g2_ = _e37;
+    let _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g3_ = _e48;
+    let _e49 = out_5;
+    return _e49;
 }
 
 fn glint_ndf(params_1: GlintParams, grids: GlintGrids, slope_2: vec2<f32>, d_1: f32, d_max: f32, poly_normals_4: bool) -> f32 {
@@ -914,25 +991,27 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e116 = n;
         let _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         let _e120 = weft_d_ggx(1f, r_f);
+        let _e123 = material.flake_color;
+        let flake_f0_ = saturate(_e123.xyz);
+        let _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            let slope_3 = vec2<f32>(dot(_e47[0], _e49.h), dot(_e47[1], _e49.h));
-            let _e129 = glitter_params();
-            let _e130 = glint_ellipse(duv_dx_1, duv_dy_1);
-            let _e133 = material.flake_size;
-            let screen_scale_2 = clamp(_e133, 1f, 8f);
-            let _e137 = glint_grids(_e5, _e130, screen_scale_2);
-            let _e141 = glint_ndf(_e129, _e137, slope_3, _e118, _e120, (1u == TIER_FAST));
-            d_flakes = _e141;
+            {
+                let slope_3 = vec2<f32>(dot(_e47[0], _e49.h), dot(_e47[1], _e49.h));
+                let _e137 = glitter_params();
+                let _e138 = glint_ellipse(duv_dx_1, duv_dy_1);
+                let _e141 = material.flake_size;
+                let screen_scale_4 = clamp(_e141, 1f, 8f);
+                let _e145 = glint_grids(_e5, _e138, screen_scale_4);
+                let _e147 = glint_ndf(_e137, _e145, slope_3, _e118, _e120, false);
+                d_flakes = _e147;
+            }
+            let _e148 = color;
+            let _e149 = d_flakes;
+            let _e153 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            color = (_e148 + (((((intensity * _e149) * _e128) * _e153) * _e50) * _e49.n_dot_l));
         }
-        let _e144 = material.flake_color;
-        let flake_f0_ = saturate(_e144.xyz);
-        let _e149 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        let _e150 = color;
-        let _e151 = d_flakes;
-        let _e155 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = (_e150 + (((((intensity * _e151) * _e149) * _e155) * _e50) * _e49.n_dot_l));
     }
-    let _e161 = color;
-    let radiance = clamp(_e161, vec3(0f), vec3(65504f));
+    let _e159 = color;
+    let radiance = clamp(_e159, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -104,6 +104,38 @@ struct GlintGrids {
     GlintGrid g3_;
 };
 
+struct GlintTetra {
+    float3 p0_;
+    int _pad1_0;
+    float3 p1_;
+    int _pad2_0;
+    float3 p2_;
+    int _pad3_0;
+    float3 p3_;
+    int _pad4_0;
+    float4 w;
+    bool center_;
+    float bin0_;
+    float bin_h;
+    float bin1_;
+    float lod0_;
+    float ratio0_;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct GlintFootprintCell {
+    float theta_lerp;
+    float ratio_lerp;
+    float lod_lerp;
+    bool center_;
+    float bin0_;
+    float bin_h;
+    float bin1_;
+    float lod0_;
+    float ratio0_;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TIER_FAST = 0u;
@@ -119,6 +151,18 @@ static const float GLINT_TABLE_SIZE = 64.0;
 static const float GLINT_MIN_LOD = -20.0;
 static const float GLINT_MAX_LOD = 20.0;
 static const float GLINT_MAX_RATIO = 16.0;
+static const uint GLINT_TET_A_UP = 36292u;
+static const uint GLINT_TET_A_DOWN = 36165u;
+static const uint GLINT_TET_A_LOW = 34112u;
+static const uint GLINT_TET_B_UP = 23168u;
+static const uint GLINT_TET_B_DOWN = 42242u;
+static const uint GLINT_TET_B_HIGH = 44421u;
+static const uint GLINT_TET_C_UP = 44517u;
+static const uint GLINT_TET_C_DOWN = 58790u;
+static const uint GLINT_TET_C_LOW = 42338u;
+static const uint GLINT_TET_CENTER_UP = 60596u;
+static const uint GLINT_TET_CENTER_DOWN = 18110u;
+static const uint GLINT_TET_CENTER_LOW = 46659u;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -686,9 +730,9 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
     float l2_ = max((half_trace - disc), 0.0);
     float2 e_a = float2(b_3, (l1_ - a_5));
     float2 e_b = float2((l1_ - d_4), b_3);
-    float2 e_3 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
-    float e_len2_ = dot(e_3, e_3);
-    out_2.major_dir = ((e_len2_ > 1e-37) ? (e_3 * rsqrt(max(e_len2_, 1e-37))) : float2(1.0, 0.0));
+    float2 e_5 = ((dot(e_a, e_a) > dot(e_b, e_b)) ? e_a : e_b);
+    float e_len2_ = dot(e_5, e_5);
+    out_2.major_dir = ((e_len2_ > 1e-37) ? (e_5 * rsqrt(max(e_len2_, 1e-37))) : float2(1.0, 0.0));
     out_2.major = max(sqrt(l1_), 1e-12);
     float _e68 = out_2.major;
     out_2.minor = max(sqrt(l2_), (_e68 / 64.0));
@@ -749,44 +793,14 @@ float glint_lod(GlintEllipse e_1, float screen_scale)
     return clamp(log2(((e_1.minor * screen_scale) * 0.5)), GLINT_MIN_LOD, GLINT_MAX_LOD);
 }
 
-GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
+GlintFootprintCell glint_footprint_cell(GlintEllipse e_2, float screen_scale_1)
 {
-    float theta_2 = (float)0;
-    bool local_1 = (bool)0;
-
-    float rot_index = (p_2.x * 2.0);
-    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
-    if (center_) {
-        local_1 = (p_2.y == 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e25 = local_1;
-    if (_e25) {
-        theta_2 = 0.0;
-    }
-    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
-    float lod_2 = (lod0_ + p_2.z);
-    float _e35 = theta_2;
-    const GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
-    const GlintGrid glintgrid_1 = _e36;
-    return glintgrid_1;
-}
-
-GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
-{
-    float theta_lerp = (float)0;
-    float3 p0_ = (float3)0;
-    float3 p1_ = (float3)0;
-    float3 p2_ = (float3)0;
-    float3 p3_1 = (float3)0;
-    bool local_2 = (bool)0;
-    GlintGrids out_3 = (GlintGrids)0;
+    GlintFootprintCell out_3 = (GlintFootprintCell)0;
 
     float ratio_e = min((e_2.major / (e_2.minor + (1e-8 * e_2.major))), GLINT_MAX_RATIO);
-    const float _e12 = glint_lod(e_2, screen_scale_1);
-    float lod0_1 = floor(_e12);
-    float lod_lerp = (_e12 - lod0_1);
+    const float _e11 = glint_lod(e_2, screen_scale_1);
+    float lod0_1 = floor(_e11);
+    float lod_lerp = (_e11 - lod0_1);
     float ratio0_1 = max(exp2(floor(log2(max(ratio_e, 1.0)))), 1.0);
     float ratio1_ = (ratio0_1 * 2.0);
     float ratio_lerp = saturate(((ratio_e - ratio0_1) / (ratio1_ - ratio0_1)));
@@ -795,13 +809,41 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
     float theta_3 = atan2(-(e_2.major_dir.x), e_2.major_dir.y);
     float theta_q = (theta_3 / q_1);
     float h0_ = floor(theta_q);
-    theta_lerp = saturate((theta_q - h0_));
+    float theta_lerp_1 = saturate((theta_q - h0_));
     float i0_ = (h0_ - (per_pi * floor((h0_ / per_pi))));
     float i1_ = ((i0_ + 1.0) - (per_pi * floor(((i0_ + 1.0) / per_pi))));
     float theta_bin0_ = (i0_ * q_1);
     float theta_bin_h = ((i0_ + 0.5) * q_1);
     float theta_bin1_ = (i1_ * q_1);
-    bool center_1 = (ratio0_1 == 1.0);
+    out_3.theta_lerp = theta_lerp_1;
+    out_3.ratio_lerp = ratio_lerp;
+    out_3.lod_lerp = lod_lerp;
+    out_3.center_ = (ratio0_1 == 1.0);
+    out_3.bin0_ = theta_bin0_;
+    out_3.bin_h = theta_bin_h;
+    out_3.bin1_ = theta_bin1_;
+    out_3.lod0_ = lod0_1;
+    out_3.ratio0_ = ratio0_1;
+    GlintFootprintCell _e74 = out_3;
+    const GlintFootprintCell glintfootprintcell = _e74;
+    return glintfootprintcell;
+}
+
+GlintTetra glint_tetra(GlintEllipse e_3, float screen_scale_2)
+{
+    float theta_lerp = (float)0;
+    float3 p0_ = (float3)0;
+    float3 p1_ = (float3)0;
+    float3 p2_ = (float3)0;
+    float3 p3_1 = (float3)0;
+    bool local_1 = (bool)0;
+    GlintTetra out_4 = (GlintTetra)0;
+
+    const GlintFootprintCell _e2 = glint_footprint_cell(e_3, screen_scale_2);
+    theta_lerp = _e2.theta_lerp;
+    float ratio_lerp_1 = _e2.ratio_lerp;
+    float lod_lerp_1 = _e2.lod_lerp;
+    bool center_1 = _e2.center_;
     if (center_1) {
         float3 a_6 = float3(0.0, 1.0, 0.0);
         float3 b_4 = float3(0.0, 0.0, 0.0);
@@ -809,9 +851,9 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
         float3 d_5 = float3(0.0, 1.0, 1.0);
         float3 ee = float3(0.0, 0.0, 1.0);
         float3 f_1 = float3(1.0, 1.0, 1.0);
-        if ((lod_lerp > (1.0 - ratio_lerp))) {
-            float _e103 = theta_lerp;
-            if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > _e103)) {
+        if ((lod_lerp_1 > (1.0 - ratio_lerp_1))) {
+            float _e45 = theta_lerp;
+            if ((((lod_lerp_1 - (1.0 - ratio_lerp_1)) / max(ratio_lerp_1, 1e-8)) > _e45)) {
                 p0_ = a_6;
                 p1_ = ee;
                 p2_ = d_5;
@@ -828,8 +870,8 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
             p2_ = c_5;
             p3_1 = ee;
         }
-        float _e105 = theta_lerp;
-        theta_lerp = (_e105 * ratio_lerp);
+        float _e47 = theta_lerp;
+        theta_lerp = (_e47 * ratio_lerp_1);
     } else {
         float3 a_7 = float3(0.0, 1.0, 0.0);
         float3 b_5 = float3(0.0, 0.0, 0.0);
@@ -841,18 +883,18 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
         float3 h_1 = float3(0.5, 1.0, 1.0);
         float3 i = float3(1.0, 0.0, 1.0);
         float3 j = float3(1.0, 1.0, 1.0);
-        float _e147 = theta_lerp;
-        if ((_e147 < 0.5)) {
-            float _e152 = theta_lerp;
-            local_2 = ((_e152 * 2.0) < ratio_lerp);
+        float _e89 = theta_lerp;
+        if ((_e89 < 0.5)) {
+            float _e94 = theta_lerp;
+            local_1 = ((_e94 * 2.0) < ratio_lerp_1);
         } else {
-            local_2 = false;
+            local_1 = false;
         }
-        bool _e157 = local_2;
-        if (_e157) {
-            if ((lod_lerp > (1.0 - ratio_lerp))) {
-                float _e167 = theta_lerp;
-                if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((_e167 * 2.0) / max(ratio_lerp, 1e-8)))) {
+        bool _e99 = local_1;
+        if (_e99) {
+            if ((lod_lerp_1 > (1.0 - ratio_lerp_1))) {
+                float _e109 = theta_lerp;
+                if ((((lod_lerp_1 - (1.0 - ratio_lerp_1)) / max(ratio_lerp_1, 1e-8)) > ((_e109 * 2.0) / max(ratio_lerp_1, 1e-8)))) {
                     p0_ = a_7;
                     p1_ = f_2;
                     p2_ = h_1;
@@ -870,12 +912,12 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                 p3_1 = g_1;
             }
         } else {
-            float _e174 = theta_lerp;
-            if (((1.0 - ((_e174 - 0.5) * 2.0)) > ratio_lerp)) {
-                if ((lod_lerp < (1.0 - ratio_lerp))) {
-                    float half_width = (0.5 * (1.0 - ratio_lerp));
-                    float _e194 = theta_lerp;
-                    if (((lod_lerp / max((1.0 - ratio_lerp), 1e-8)) > ((_e194 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
+            float _e116 = theta_lerp;
+            if (((1.0 - ((_e116 - 0.5) * 2.0)) > ratio_lerp_1)) {
+                if ((lod_lerp_1 < (1.0 - ratio_lerp_1))) {
+                    float half_width = (0.5 * (1.0 - ratio_lerp_1));
+                    float _e136 = theta_lerp;
+                    if (((lod_lerp_1 / max((1.0 - ratio_lerp_1), 1e-8)) > ((_e136 - (0.5 - half_width)) / max((2.0 * half_width), 1e-8)))) {
                         p0_ = b_5;
                         p1_ = g_1;
                         p2_ = i;
@@ -893,9 +935,9 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
                     p3_1 = i;
                 }
             } else {
-                if ((lod_lerp > (1.0 - ratio_lerp))) {
-                    float _e213 = theta_lerp;
-                    if ((((lod_lerp - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)) > ((((_e213 - 0.5) * 2.0) - (1.0 - ratio_lerp)) / max(ratio_lerp, 1e-8)))) {
+                if ((lod_lerp_1 > (1.0 - ratio_lerp_1))) {
+                    float _e155 = theta_lerp;
+                    if ((((lod_lerp_1 - (1.0 - ratio_lerp_1)) / max(ratio_lerp_1, 1e-8)) > ((((_e155 - 0.5) * 2.0) - (1.0 - ratio_lerp_1)) / max(ratio_lerp_1, 1e-8)))) {
                         p0_ = c_6;
                         p1_ = j;
                         p2_ = h_1;
@@ -915,26 +957,71 @@ GlintGrids glint_grids(float2 uv_4, GlintEllipse e_2, float screen_scale_1)
             }
         }
     }
-    float _e225 = theta_lerp;
-    float3 _e227 = p0_;
-    float3 _e228 = p1_;
-    float3 _e229 = p2_;
-    float3 _e230 = p3_1;
-    const float4 _e231 = glint_tetra_weights(float3(_e225, ratio_lerp, lod_lerp), _e227, _e228, _e229, _e230);
-    float3 _e234 = p0_;
-    const GlintGrid _e236 = glint_vertex_grid(uv_4, _e234, _e231.x, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g0_ = _e236;
-    float3 _e238 = p1_;
-    const GlintGrid _e240 = glint_vertex_grid(uv_4, _e238, _e231.y, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g1_ = _e240;
-    float3 _e242 = p2_;
-    const GlintGrid _e244 = glint_vertex_grid(uv_4, _e242, _e231.z, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g2_ = _e244;
-    float3 _e246 = p3_1;
-    const GlintGrid _e248 = glint_vertex_grid(uv_4, _e246, _e231.w, center_1, theta_bin0_, theta_bin_h, theta_bin1_, lod0_1, ratio0_1);
-    out_3.g3_ = _e248;
-    GlintGrids _e249 = out_3;
-    const GlintGrids glintgrids = _e249;
+    float3 _e169 = p0_;
+    out_4.p0_ = _e169;
+    float3 _e171 = p1_;
+    out_4.p1_ = _e171;
+    float3 _e173 = p2_;
+    out_4.p2_ = _e173;
+    float3 _e175 = p3_1;
+    out_4.p3_ = _e175;
+    float _e177 = theta_lerp;
+    float3 _e179 = p0_;
+    float3 _e180 = p1_;
+    float3 _e181 = p2_;
+    float3 _e182 = p3_1;
+    const float4 _e183 = glint_tetra_weights(float3(_e177, ratio_lerp_1, lod_lerp_1), _e179, _e180, _e181, _e182);
+    out_4.w = _e183;
+    out_4.center_ = center_1;
+    out_4.bin0_ = _e2.bin0_;
+    out_4.bin_h = _e2.bin_h;
+    out_4.bin1_ = _e2.bin1_;
+    out_4.lod0_ = _e2.lod0_;
+    out_4.ratio0_ = _e2.ratio0_;
+    GlintTetra _e195 = out_4;
+    const GlintTetra glinttetra = _e195;
+    return glinttetra;
+}
+
+GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
+{
+    float theta_2 = (float)0;
+    bool local_2 = (bool)0;
+
+    float rot_index = (p_2.x * 2.0);
+    theta_2 = ((rot_index < 0.5) ? bin0_ : ((rot_index < 1.5) ? bin_h : bin1_));
+    if (center_) {
+        local_2 = (p_2.y == 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e25 = local_2;
+    if (_e25) {
+        theta_2 = 0.0;
+    }
+    float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
+    float lod_2 = (lod0_ + p_2.z);
+    float _e35 = theta_2;
+    const GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    const GlintGrid glintgrid_1 = _e36;
+    return glintgrid_1;
+}
+
+GlintGrids glint_grids(float2 uv_4, GlintEllipse e_4, float screen_scale_3)
+{
+    GlintGrids out_5 = (GlintGrids)0;
+
+    const GlintTetra _e3 = glint_tetra(e_4, screen_scale_3);
+    const GlintGrid _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g0_ = _e15;
+    const GlintGrid _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g1_ = _e26;
+    const GlintGrid _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g2_ = _e37;
+    const GlintGrid _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    out_5.g3_ = _e48;
+    GlintGrids _e49 = out_5;
+    const GlintGrids glintgrids = _e49;
     return glintgrids;
 }
 
@@ -1062,25 +1149,27 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e126 = n;
         const float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
         const float _e130 = weft_d_ggx(1.0, r_f);
+        float4 _e133 = material.flake_color;
+        float3 flake_f0_ = saturate(_e133.xyz);
+        const float _e138 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
         {
-            float2 slope_3 = float2(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
-            const GlintParams _e139 = glitter_params();
-            const GlintEllipse _e140 = glint_ellipse(duv_dx_1, duv_dy_1);
-            float _e143 = material.flake_size;
-            float screen_scale_2 = clamp(_e143, 1.0, 8.0);
-            const GlintGrids _e147 = glint_grids(_e5, _e140, screen_scale_2);
-            const float _e151 = glint_ndf(_e139, _e147, slope_3, _e128, _e130, (1u == TIER_FAST));
-            d_flakes = _e151;
+            {
+                float2 slope_3 = float2(dot(_e57[0], _e59.h), dot(_e57[1], _e59.h));
+                const GlintParams _e147 = glitter_params();
+                const GlintEllipse _e148 = glint_ellipse(duv_dx_1, duv_dy_1);
+                float _e151 = material.flake_size;
+                float screen_scale_4 = clamp(_e151, 1.0, 8.0);
+                const GlintGrids _e155 = glint_grids(_e5, _e148, screen_scale_4);
+                const float _e157 = glint_ndf(_e147, _e155, slope_3, _e128, _e130, false);
+                d_flakes = _e157;
+            }
+            float3 _e158 = color;
+            float _e159 = d_flakes;
+            const float3 _e163 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+            color = (_e158 + (((((intensity * _e159) * _e138) * _e163) * _e60) * _e59.n_dot_l));
         }
-        float4 _e154 = material.flake_color;
-        float3 flake_f0_ = saturate(_e154.xyz);
-        const float _e159 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
-        float3 _e160 = color;
-        float _e161 = d_flakes;
-        const float3 _e165 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
-        color = (_e160 + (((((intensity * _e161) * _e159) * _e165) * _e60) * _e59.n_dot_l));
     }
-    float3 _e171 = color;
-    float3 radiance = clamp(_e171, (0.0).xxx, (65504.0).xxx);
+    float3 _e169 = color;
+    float3 radiance = clamp(_e169, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -68,6 +68,18 @@ const float GLINT_TABLE_SIZE = 64.0;
 const float GLINT_MIN_LOD = -20.0;
 const float GLINT_MAX_LOD = 20.0;
 const float GLINT_MAX_RATIO = 16.0;
+const uint GLINT_TET_A_UP = 36292u;
+const uint GLINT_TET_A_DOWN = 36165u;
+const uint GLINT_TET_A_LOW = 34112u;
+const uint GLINT_TET_B_UP = 23168u;
+const uint GLINT_TET_B_DOWN = 42242u;
+const uint GLINT_TET_B_HIGH = 44421u;
+const uint GLINT_TET_C_UP = 44517u;
+const uint GLINT_TET_C_DOWN = 58790u;
+const uint GLINT_TET_C_LOW = 42338u;
+const uint GLINT_TET_CENTER_UP = 60596u;
+const uint GLINT_TET_CENTER_DOWN = 18110u;
+const uint GLINT_TET_CENTER_LOW = 46659u;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -309,16 +321,18 @@ void main() {
         vec3 _e116 = n;
         float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         float _e120 = weft_d_ggx(1.0, r_f);
+        vec4 _e123 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e123.xyz, vec3(0.0), vec3(1.0));
+        float _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            d_flakes = _e118;
+            {
+                d_flakes = _e118;
+            }
+            vec3 _e130 = color;
+            float _e131 = d_flakes;
+            vec3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            color = (_e130 + (((((intensity * _e131) * _e128) * _e135) * _e50) * _e49.n_dot_l));
         }
-        vec4 _e124 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e124.xyz, vec3(0.0), vec3(1.0));
-        float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        vec3 _e130 = color;
-        float _e131 = d_flakes;
-        vec3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
     vec3 _e141 = color;
     vec3 radiance = clamp(_e141, vec3(0.0), vec3(65504.0));

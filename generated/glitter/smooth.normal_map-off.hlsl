@@ -84,6 +84,18 @@ static const float GLINT_TABLE_SIZE = 64.0;
 static const float GLINT_MIN_LOD = -20.0;
 static const float GLINT_MAX_LOD = 20.0;
 static const float GLINT_MAX_RATIO = 16.0;
+static const uint GLINT_TET_A_UP = 36292u;
+static const uint GLINT_TET_A_DOWN = 36165u;
+static const uint GLINT_TET_A_LOW = 34112u;
+static const uint GLINT_TET_B_UP = 23168u;
+static const uint GLINT_TET_B_DOWN = 42242u;
+static const uint GLINT_TET_B_HIGH = 44421u;
+static const uint GLINT_TET_C_UP = 44517u;
+static const uint GLINT_TET_C_DOWN = 58790u;
+static const uint GLINT_TET_C_LOW = 42338u;
+static const uint GLINT_TET_CENTER_UP = 60596u;
+static const uint GLINT_TET_CENTER_DOWN = 18110u;
+static const uint GLINT_TET_CENTER_LOW = 46659u;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -408,16 +420,18 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e116 = n;
         const float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         const float _e120 = weft_d_ggx(1.0, r_f);
+        float4 _e123 = material.flake_color;
+        float3 flake_f0_ = saturate(_e123.xyz);
+        const float _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            d_flakes = _e118;
+            {
+                d_flakes = _e118;
+            }
+            float3 _e130 = color;
+            float _e131 = d_flakes;
+            const float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            color = (_e130 + (((((intensity * _e131) * _e128) * _e135) * _e50) * _e49.n_dot_l));
         }
-        float4 _e124 = material.flake_color;
-        float3 flake_f0_ = saturate(_e124.xyz);
-        const float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        float3 _e130 = color;
-        float _e131 = d_flakes;
-        const float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
     float3 _e141 = color;
     float3 radiance = clamp(_e141, (0.0).xxx, (65504.0).xxx);

@@ -82,6 +82,18 @@ constant float GLINT_TABLE_SIZE = 64.0;
 constant float GLINT_MIN_LOD = -20.0;
 constant float GLINT_MAX_LOD = 20.0;
 constant float GLINT_MAX_RATIO = 16.0;
+constant uint GLINT_TET_A_UP = 36292u;
+constant uint GLINT_TET_A_DOWN = 36165u;
+constant uint GLINT_TET_A_LOW = 34112u;
+constant uint GLINT_TET_B_UP = 23168u;
+constant uint GLINT_TET_B_DOWN = 42242u;
+constant uint GLINT_TET_B_HIGH = 44421u;
+constant uint GLINT_TET_C_UP = 44517u;
+constant uint GLINT_TET_C_DOWN = 58790u;
+constant uint GLINT_TET_C_LOW = 42338u;
+constant uint GLINT_TET_CENTER_UP = 60596u;
+constant uint GLINT_TET_CENTER_DOWN = 18110u;
+constant uint GLINT_TET_CENTER_LOW = 46659u;
 
 float weft_pow5_(
     float x
@@ -436,16 +448,18 @@ fragment fs_mainOutput fs_main(
         metal::float3 _e116 = n;
         float _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         float _e120 = weft_d_ggx(1.0, r_f);
+        metal::float4 _e123 = material.flake_color;
+        metal::float3 flake_f0_ = metal::saturate(_e123.xyz);
+        float _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            d_flakes = _e118;
+            {
+                d_flakes = _e118;
+            }
+            metal::float3 _e130 = color;
+            float _e131 = d_flakes;
+            metal::float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            color = _e130 + (((((intensity * _e131) * _e128) * _e135) * _e50) * _e49.n_dot_l);
         }
-        metal::float4 _e124 = material.flake_color;
-        metal::float3 flake_f0_ = metal::saturate(_e124.xyz);
-        float _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        metal::float3 _e130 = color;
-        float _e131 = d_flakes;
-        metal::float3 _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = _e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l);
     }
     metal::float3 _e141 = color;
     metal::float3 radiance = metal::clamp(_e141, metal::float3(0.0), metal::float3(65504.0));

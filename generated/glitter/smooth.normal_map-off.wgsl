@@ -74,6 +74,18 @@ const GLINT_TABLE_SIZE: f32 = 64f;
 const GLINT_MIN_LOD: f32 = -20f;
 const GLINT_MAX_LOD: f32 = 20f;
 const GLINT_MAX_RATIO: f32 = 16f;
+const GLINT_TET_A_UP: u32 = 36292u;
+const GLINT_TET_A_DOWN: u32 = 36165u;
+const GLINT_TET_A_LOW: u32 = 34112u;
+const GLINT_TET_B_UP: u32 = 23168u;
+const GLINT_TET_B_DOWN: u32 = 42242u;
+const GLINT_TET_B_HIGH: u32 = 44421u;
+const GLINT_TET_C_UP: u32 = 44517u;
+const GLINT_TET_C_DOWN: u32 = 58790u;
+const GLINT_TET_C_LOW: u32 = 42338u;
+const GLINT_TET_CENTER_UP: u32 = 60596u;
+const GLINT_TET_CENTER_DOWN: u32 = 18110u;
+const GLINT_TET_CENTER_LOW: u32 = 46659u;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -343,16 +355,18 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e116 = n;
         let _e118 = weft_d_ggx_nh(_e116, _e49.h, r_f);
         let _e120 = weft_d_ggx(1f, r_f);
+        let _e123 = material.flake_color;
+        let flake_f0_ = saturate(_e123.xyz);
+        let _e128 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
         {
-            d_flakes = _e118;
+            {
+                d_flakes = _e118;
+            }
+            let _e130 = color;
+            let _e131 = d_flakes;
+            let _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
+            color = (_e130 + (((((intensity * _e131) * _e128) * _e135) * _e50) * _e49.n_dot_l));
         }
-        let _e124 = material.flake_color;
-        let flake_f0_ = saturate(_e124.xyz);
-        let _e129 = weft_v_smith_ggx_correlated(_e49.n_dot_v, _e49.n_dot_l, r_f);
-        let _e130 = color;
-        let _e131 = d_flakes;
-        let _e135 = weft_f_schlick(flake_f0_, _e49.v_dot_h);
-        color = (_e130 + (((((intensity * _e131) * _e129) * _e135) * _e50) * _e49.n_dot_l));
     }
     let _e141 = color;
     let radiance = clamp(_e141, vec3(0f), vec3(65504f));

@@ -68,6 +68,18 @@ const float GLINT_TABLE_SIZE = 64.0;
 const float GLINT_MIN_LOD = -20.0;
 const float GLINT_MAX_LOD = 20.0;
 const float GLINT_MAX_RATIO = 16.0;
+const uint GLINT_TET_A_UP = 36292u;
+const uint GLINT_TET_A_DOWN = 36165u;
+const uint GLINT_TET_A_LOW = 34112u;
+const uint GLINT_TET_B_UP = 23168u;
+const uint GLINT_TET_B_DOWN = 42242u;
+const uint GLINT_TET_B_HIGH = 44421u;
+const uint GLINT_TET_C_UP = 44517u;
+const uint GLINT_TET_C_DOWN = 58790u;
+const uint GLINT_TET_C_LOW = 42338u;
+const uint GLINT_TET_CENTER_UP = 60596u;
+const uint GLINT_TET_CENTER_DOWN = 18110u;
+const uint GLINT_TET_CENTER_LOW = 46659u;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -336,16 +348,18 @@ void main() {
         vec3 _e126 = n;
         float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
         float _e130 = weft_d_ggx(1.0, r_f);
+        vec4 _e133 = _group_1_binding_0_fs.flake_color;
+        vec3 flake_f0_ = clamp(_e133.xyz, vec3(0.0), vec3(1.0));
+        float _e138 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
         {
-            d_flakes = _e128;
+            {
+                d_flakes = _e128;
+            }
+            vec3 _e140 = color;
+            float _e141 = d_flakes;
+            vec3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+            color = (_e140 + (((((intensity * _e141) * _e138) * _e145) * _e60) * _e59.n_dot_l));
         }
-        vec4 _e134 = _group_1_binding_0_fs.flake_color;
-        vec3 flake_f0_ = clamp(_e134.xyz, vec3(0.0), vec3(1.0));
-        float _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
-        vec3 _e140 = color;
-        float _e141 = d_flakes;
-        vec3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
-        color = (_e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l));
     }
     vec3 _e151 = color;
     vec3 radiance = clamp(_e151, vec3(0.0), vec3(65504.0));

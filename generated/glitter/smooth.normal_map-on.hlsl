@@ -84,6 +84,18 @@ static const float GLINT_TABLE_SIZE = 64.0;
 static const float GLINT_MIN_LOD = -20.0;
 static const float GLINT_MAX_LOD = 20.0;
 static const float GLINT_MAX_RATIO = 16.0;
+static const uint GLINT_TET_A_UP = 36292u;
+static const uint GLINT_TET_A_DOWN = 36165u;
+static const uint GLINT_TET_A_LOW = 34112u;
+static const uint GLINT_TET_B_UP = 23168u;
+static const uint GLINT_TET_B_DOWN = 42242u;
+static const uint GLINT_TET_B_HIGH = 44421u;
+static const uint GLINT_TET_C_UP = 44517u;
+static const uint GLINT_TET_C_DOWN = 58790u;
+static const uint GLINT_TET_C_LOW = 42338u;
+static const uint GLINT_TET_CENTER_UP = 60596u;
+static const uint GLINT_TET_CENTER_DOWN = 18110u;
+static const uint GLINT_TET_CENTER_LOW = 46659u;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -437,16 +449,18 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float3 _e126 = n;
         const float _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
         const float _e130 = weft_d_ggx(1.0, r_f);
+        float4 _e133 = material.flake_color;
+        float3 flake_f0_ = saturate(_e133.xyz);
+        const float _e138 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
         {
-            d_flakes = _e128;
+            {
+                d_flakes = _e128;
+            }
+            float3 _e140 = color;
+            float _e141 = d_flakes;
+            const float3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+            color = (_e140 + (((((intensity * _e141) * _e138) * _e145) * _e60) * _e59.n_dot_l));
         }
-        float4 _e134 = material.flake_color;
-        float3 flake_f0_ = saturate(_e134.xyz);
-        const float _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
-        float3 _e140 = color;
-        float _e141 = d_flakes;
-        const float3 _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
-        color = (_e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l));
     }
     float3 _e151 = color;
     float3 radiance = clamp(_e151, (0.0).xxx, (65504.0).xxx);

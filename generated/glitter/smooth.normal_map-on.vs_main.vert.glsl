@@ -68,6 +68,18 @@ const float GLINT_TABLE_SIZE = 64.0;
 const float GLINT_MIN_LOD = -20.0;
 const float GLINT_MAX_LOD = 20.0;
 const float GLINT_MAX_RATIO = 16.0;
+const uint GLINT_TET_A_UP = 36292u;
+const uint GLINT_TET_A_DOWN = 36165u;
+const uint GLINT_TET_A_LOW = 34112u;
+const uint GLINT_TET_B_UP = 23168u;
+const uint GLINT_TET_B_DOWN = 42242u;
+const uint GLINT_TET_B_HIGH = 44421u;
+const uint GLINT_TET_C_UP = 44517u;
+const uint GLINT_TET_C_DOWN = 58790u;
+const uint GLINT_TET_C_LOW = 42338u;
+const uint GLINT_TET_CENTER_UP = 60596u;
+const uint GLINT_TET_CENTER_DOWN = 18110u;
+const uint GLINT_TET_CENTER_LOW = 46659u;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

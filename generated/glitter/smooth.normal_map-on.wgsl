@@ -74,6 +74,18 @@ const GLINT_TABLE_SIZE: f32 = 64f;
 const GLINT_MIN_LOD: f32 = -20f;
 const GLINT_MAX_LOD: f32 = 20f;
 const GLINT_MAX_RATIO: f32 = 16f;
+const GLINT_TET_A_UP: u32 = 36292u;
+const GLINT_TET_A_DOWN: u32 = 36165u;
+const GLINT_TET_A_LOW: u32 = 34112u;
+const GLINT_TET_B_UP: u32 = 23168u;
+const GLINT_TET_B_DOWN: u32 = 42242u;
+const GLINT_TET_B_HIGH: u32 = 44421u;
+const GLINT_TET_C_UP: u32 = 44517u;
+const GLINT_TET_C_DOWN: u32 = 58790u;
+const GLINT_TET_C_LOW: u32 = 42338u;
+const GLINT_TET_CENTER_UP: u32 = 60596u;
+const GLINT_TET_CENTER_DOWN: u32 = 18110u;
+const GLINT_TET_CENTER_LOW: u32 = 46659u;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -370,16 +382,18 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         let _e126 = n;
         let _e128 = weft_d_ggx_nh(_e126, _e59.h, r_f);
         let _e130 = weft_d_ggx(1f, r_f);
+        let _e133 = material.flake_color;
+        let flake_f0_ = saturate(_e133.xyz);
+        let _e138 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
         {
-            d_flakes = _e128;
+            {
+                d_flakes = _e128;
+            }
+            let _e140 = color;
+            let _e141 = d_flakes;
+            let _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
+            color = (_e140 + (((((intensity * _e141) * _e138) * _e145) * _e60) * _e59.n_dot_l));
         }
-        let _e134 = material.flake_color;
-        let flake_f0_ = saturate(_e134.xyz);
-        let _e139 = weft_v_smith_ggx_correlated(_e59.n_dot_v, _e59.n_dot_l, r_f);
-        let _e140 = color;
-        let _e141 = d_flakes;
-        let _e145 = weft_f_schlick(flake_f0_, _e59.v_dot_h);
-        color = (_e140 + (((((intensity * _e141) * _e139) * _e145) * _e60) * _e59.n_dot_l));
     }
     let _e151 = color;
     let radiance = clamp(_e151, vec3(0f), vec3(65504f));

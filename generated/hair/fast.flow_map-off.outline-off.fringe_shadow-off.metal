@@ -81,14 +81,6 @@ struct WeftHair {
     metal::float3 sin2k;
     metal::float3 cos2k;
 };
-struct WeftHairAttenuation {
-    float a0_;
-    char _pad1[12];
-    metal::float3 a1_;
-    metal::float3 a2_;
-    metal::packed_float3 a3_;
-    float gamma_t;
-};
 struct WeftHairLobes {
     metal::float3 s;
     metal::float3 albedo;
@@ -111,7 +103,6 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_HAIR_MIN_BETA_M = 0.05;
 constant float WEFT_HAIR_MIN_BETA_N = 0.05;
 constant uint HAIR_REFERENCE_CELLS = 64u;
-constant uint HAIR_FAST_CELLS = 12u;
 constant float HAIR_TERMINATOR = 0.25;
 
 metal::float3 weft_safe_normalize(
@@ -125,10 +116,10 @@ metal::float3 weft_safe_normalize(
 metal::float3 weft_any_perpendicular(
     metal::float3 n
 ) {
-    float s_6 = (n.z >= 0.0) ? 1.0 : -1.0;
-    float a_1 = -1.0 / (s_6 + n.z);
-    float b = (n.x * n.y) * a_1;
-    return metal::float3(1.0 + (((s_6 * n.x) * n.x) * a_1), s_6 * b, -(s_6) * n.x);
+    float s_2 = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a_2 = -1.0 / (s_2 + n.z);
+    float b = (n.x * n.y) * a_2;
+    return metal::float3(1.0 + (((s_2 * n.x) * n.x) * a_2), s_2 * b, -(s_2) * n.x);
 }
 
 float weft_f_dielectric(
@@ -140,9 +131,9 @@ float weft_f_dielectric(
     float g = metal::sqrt(metal::max(g2_, 0.0));
     float gmc = g - c_1;
     float gpc = metal::max(g + c_1, 0.0000001);
-    float a_2 = gmc / gpc;
+    float a_3 = gmc / gpc;
     float b_1 = ((c_1 * gpc) - 1.0) / metal::max((c_1 * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1)));
+    float f = metal::saturate(((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1)));
     return (g2_ < 0.0) ? 1.0 : f;
 }
 
@@ -217,10 +208,10 @@ metal::float3x3 weft_tangent_frame(
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_2);
-    metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
-    float s_7 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t_1) * s_7;
-    return metal::float3x3(t_1, b_2, n_2);
+    metal::float3 t_2 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
+    float s_3 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_2 = metal::cross(n_2, t_2) * s_3;
+    return metal::float3x3(t_2, b_2, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -287,8 +278,8 @@ WeftHair weft_hair_params(
     hair.v = metal::float4(_e13, 0.25 * _e13, 4.0 * _e13, 4.0 * _e13);
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = ((alpha_deg) * 0.017453292519943295474);
-    float s0_ = metal::sin(a_3);
+    float a_4 = ((alpha_deg) * 0.017453292519943295474);
+    float s0_ = metal::sin(a_4);
     float _e29 = weft_hair_safe_sqrt(1.0 - (s0_ * s0_));
     float s1_ = (2.0 * _e29) * s0_;
     float c1_ = (_e29 * _e29) - (s0_ * s0_);
@@ -300,155 +291,37 @@ WeftHair weft_hair_params(
     return _e46;
 }
 
-float weft_hair_i0_(
-    float x_2
-) {
-    float term = 1.0;
-    float sum = 1.0;
-    int i = 1;
-    float q = (0.25 * x_2) * x_2;
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            int _e22 = i;
-            i = as_type<int>(as_type<uint>(_e22) + as_type<uint>(1));
-        }
-        loop_init = false;
-        int _e10 = i;
-        if (_e10 < 16) {
-        } else {
-            break;
-        }
-        {
-            int _e13 = i;
-            float k_1 = static_cast<float>(_e13);
-            float _e15 = term;
-            term = _e15 * (q / (k_1 * k_1));
-            float _e19 = sum;
-            float _e20 = term;
-            sum = _e19 + _e20;
-        }
-    }
-    float _e25 = sum;
-    return _e25;
-}
-
-float weft_hair_log_i0_(
-    float x_3
-) {
-    if (x_3 > 12.0) {
-        float r = 1.0 / x_3;
-        return (x_3 - (0.5 * metal::log(6.2831855 * x_3))) + metal::log(1.0 + (r * (0.125 + (0.0703125 * r))));
-    }
-    float _e20 = weft_hair_i0_(x_3);
-    return metal::log(_e20);
-}
-
-float weft_hair_mp(
-    float cos_i_1,
-    float cos_o,
-    float sin_i,
-    float sin_o,
-    float v_1
-) {
-    float a_4 = (cos_i_1 * cos_o) / v_1;
-    float b_6 = (sin_i * sin_o) / v_1;
-    if (v_1 <= 0.1) {
-        float _e11 = weft_hair_log_i0_(a_4);
-        return metal::exp((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + metal::log(1.0 / (2.0 * v_1)));
-    }
-    float _e27 = weft_hair_i0_(a_4);
-    return (metal::exp(-(b_6)) * _e27) / ((metal::sinh(1.0 / v_1) * 2.0) * v_1);
-}
-
-metal::float4 weft_hair_longitudinal(
-    WeftHair hair_1,
-    float sin_o_1,
-    float cos_o_1,
-    float sin_i_1,
-    float cos_i_2
-) {
-    float sin_r = (sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y);
-    float cos_r = metal::abs((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y));
-    float sin_tt = (sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x);
-    float cos_tt = metal::abs((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x));
-    float sin_trt = (sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z);
-    float cos_trt = metal::abs((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z));
-    float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
-    float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
-    float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
-    float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
-    return metal::float4(_e52, _e55, _e58, _e61);
-}
-
 float weft_hair_logistic(
-    float x_4,
+    float x_2,
     float s
 ) {
-    float e_1 = metal::exp(-(metal::abs(x_4)) / s);
+    float e_1 = metal::exp(-(metal::abs(x_2)) / s);
     float _e8 = weft_hair_sqr(1.0 + e_1);
     return e_1 / (s * _e8);
 }
 
 float weft_hair_trimmed_logistic(
-    float x_5,
+    float x_3,
     float s_1
 ) {
     float e_2 = metal::exp(-3.1415927 / s_1);
-    float _e5 = weft_hair_logistic(x_5, s_1);
+    float _e5 = weft_hair_logistic(x_3, s_1);
     return (_e5 * (1.0 + e_2)) / (1.0 - e_2);
-}
-
-float weft_hair_etap(
-    WeftHair hair_2,
-    float sin_o_2,
-    float cos_o_2
-) {
-    return metal::sqrt((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2)) / metal::max(cos_o_2, 0.0001);
-}
-
-WeftHairAttenuation weft_hair_attenuation(
-    WeftHair hair_3,
-    float sin_o_3,
-    float cos_o_3,
-    float h
-) {
-    WeftHairAttenuation a = {};
-    float sin_t = sin_o_3 / hair_3.eta;
-    float _e9 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
-    float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = metal::clamp(h / _e10, -1.0, 1.0);
-    float _e18 = weft_hair_safe_sqrt(1.0 - (sin_gamma_t * sin_gamma_t));
-    metal::float3 t_2 = metal::exp(-(hair_3.sigma_a) * ((2.0 * _e18) / metal::max(_e9, 0.0001)));
-    float _e31 = weft_hair_safe_sqrt(1.0 - (h * h));
-    float _e34 = weft_f_dielectric(cos_o_3 * _e31, hair_3.eta);
-    a.a0_ = _e34;
-    a.a1_ = ((1.0 - _e34) * (1.0 - _e34)) * t_2;
-    metal::float3 _e46 = a.a1_;
-    a.a2_ = (_e46 * t_2) * _e34;
-    metal::float3 _e51 = a.a2_;
-    a.a3_ = ((_e51 * t_2) * _e34) / (metal::float3(1.0) - (t_2 * _e34));
-    a.gamma_t = metal::asin(sin_gamma_t);
-    WeftHairAttenuation _e61 = a;
-    return _e61;
 }
 
 WeftHairAngles weft_hair_angles(
     metal::float3 t,
     metal::float3 o,
-    metal::float3 i_1
+    metal::float3 i
 ) {
     WeftHairAngles out_1 = {};
-    float sin_o_4 = metal::clamp(metal::dot(o, t), -1.0, 1.0);
-    float sin_i_2 = metal::clamp(metal::dot(i_1, t), -1.0, 1.0);
-    float _e16 = weft_hair_safe_sqrt(1.0 - (sin_o_4 * sin_o_4));
-    float _e20 = weft_hair_safe_sqrt(1.0 - (sin_i_2 * sin_i_2));
-    out_1.theta = metal::float4(sin_o_4, _e16, sin_i_2, _e20);
-    metal::float3 o_perp = o - (sin_o_4 * t);
-    metal::float3 i_perp = i_1 - (sin_i_2 * t);
+    float sin_o = metal::clamp(metal::dot(o, t), -1.0, 1.0);
+    float sin_i = metal::clamp(metal::dot(i, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt(1.0 - (sin_o * sin_o));
+    float _e20 = weft_hair_safe_sqrt(1.0 - (sin_i * sin_i));
+    out_1.theta = metal::float4(sin_o, _e16, sin_i, _e20);
+    metal::float3 o_perp = o - (sin_o * t);
+    metal::float3 i_perp = i - (sin_i * t);
     float len2_2 = metal::dot(o_perp, o_perp) * metal::dot(i_perp, i_perp);
     float cos_phi = (len2_2 > 0.000000000001) ? (metal::dot(o_perp, i_perp) * metal::rsqrt(metal::max(len2_2, 0.000000000000000000000000000001))) : 1.0;
     out_1.phi = metal::acos(metal::clamp(cos_phi, -1.0, 1.0));
@@ -456,131 +329,94 @@ WeftHairAngles weft_hair_angles(
     return _e43;
 }
 
-float weft_hair_logistic_cdf(
-    float x_6,
-    float s_2
+metal::float3 weft_hair_fast_tt_density(
+    float sin_half,
+    float a
 ) {
-    return 1.0 / (1.0 + metal::exp(-(x_6) / s_2));
+    float rho2_ = (1.0 - ((2.0 * a) * sin_half)) + (a * a);
+    float inv_rho = metal::rsqrt(metal::max(rho2_, 0.00000001));
+    float cos_go = metal::max(sin_half - a, 0.0) * inv_rho;
+    float cos_gt = (1.0 - (a * sin_half)) * inv_rho;
+    return metal::float3(cos_go, cos_gt, ((0.25 * cos_go) * cos_gt) * inv_rho);
 }
 
-float weft_hair_trimmed_integral(
-    float lo,
-    float hi,
-    float s_3
+metal::float3 weft_hair_fast_tt(
+    float sin_plus,
+    float sin_minus,
+    float a_1,
+    float cos_o,
+    float eta_2,
+    metal::float3 sigma_a_1,
+    float chord
 ) {
-    float sum_1 = {};
-    float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
-    float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = metal::clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = metal::clamp(hi, -3.1415927, WEFT_PI);
-    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
-    sum_1 = _e13 - _e14;
-    if (hi > WEFT_PI) {
-        float _e19 = sum_1;
-        float _e24 = weft_hair_logistic_cdf(metal::min(hi - 6.2831855, WEFT_PI), s_3);
-        sum_1 = _e19 + (_e24 - _e4);
-    }
-    if (lo < -3.1415927) {
-        float _e29 = sum_1;
-        float _e34 = weft_hair_logistic_cdf(metal::max(lo + 6.2831855, -3.1415927), s_3);
-        sum_1 = _e29 + (_e6 - _e34);
-    }
-    float _e37 = sum_1;
-    return _e37 / (_e6 - _e4);
+    metal::float3 _e7 = weft_hair_fast_tt_density(sin_plus, a_1);
+    metal::float3 _e8 = weft_hair_fast_tt_density(sin_minus, a_1);
+    float _e11 = weft_f_dielectric(cos_o * _e7.x, eta_2);
+    float _e19 = weft_hair_sqr(1.0 - _e11);
+    return metal::exp(-(sigma_a_1) * (chord * _e7.y)) * ((_e19 * 0.5) * (_e7.z + _e8.z));
 }
 
-float weft_hair_np_cell(
-    float d0_,
-    float d1_,
-    float s_4
+WeftHairLobes weft_hair_fast(
+    WeftHair hair_1,
+    metal::float3 t_1,
+    metal::float3 o_1,
+    metal::float3 i_1
 ) {
-    float mid = 0.5 * (d0_ + d1_);
-    float m = mid - (6.2831855 * metal::rint(mid / 6.2831855));
-    float half_ = metal::min(0.5 * metal::abs(d1_ - d0_), WEFT_PI);
-    if (half_ < 0.0001) {
-        float _e20 = weft_hair_trimmed_logistic(m, s_4);
-        return _e20;
-    }
-    float _e23 = weft_hair_trimmed_integral(m - half_, m + half_, s_4);
-    return _e23 / (2.0 * half_);
-}
-
-WeftHairLobes weft_hair_mean(
-    WeftHair hair_4,
-    WeftHairAngles angles,
-    uint count
-) {
-    metal::float3 s_5 = metal::float3(0.0);
-    metal::float3 albedo = metal::float3(0.0);
-    metal::float3 back = metal::float3(0.0);
-    float weights = 0.0;
-    float g0_ = -1.5707964;
-    metal::float3 d0_1 = {};
-    uint k = 0u;
     WeftHairLobes out_2 = {};
-    metal::float4 th = angles.theta;
-    metal::float4 _e8 = weft_hair_longitudinal(hair_4, angles.theta.x, angles.theta.y, angles.theta.z, angles.theta.w);
-    float _e11 = weft_hair_etap(hair_4, angles.theta.x, angles.theta.y);
-    uint cells = metal::max(count, 1u);
-    float step = WEFT_PI / static_cast<float>(cells);
-    float _e35 = g0_;
-    float _e43 = g0_;
-    d0_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * metal::asin(metal::clamp(metal::sin(_e35) / _e11, -1.0, 1.0))) - metal::float3(2.0 * _e43)) + metal::float3(0.0, 3.1415927, 6.2831855));
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e153 = k;
-            k = _e153 + 1u;
-        }
-        loop_init_1 = false;
-        uint _e58 = k;
-        if (_e58 < cells) {
-        } else {
-            break;
-        }
-        {
-            float _e60 = g0_;
-            float g1_ = _e60 + step;
-            float gamma_t1_ = metal::asin(metal::clamp(metal::sin(g1_) / _e11, -1.0, 1.0));
-            metal::float3 d1_1 = metal::float3(angles.phi) - (((metal::float3(0.0, 2.0, 4.0) * gamma_t1_) - metal::float3(2.0 * g1_)) + metal::float3(0.0, 3.1415927, 6.2831855));
-            float _e85 = g0_;
-            float gm = _e85 + (0.5 * step);
-            float w = metal::cos(gm);
-            WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, angles.theta.x, angles.theta.y, metal::sin(gm));
-            float _e98 = d0_1.x;
-            float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
-            float _e107 = d0_1.y;
-            float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
-            float _e118 = d0_1.z;
-            float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
-            metal::float3 lobes_1 = ((metal::float3((_e8.x * _e93.a0_) * _e101) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494);
-            metal::float3 _e130 = s_5;
-            s_5 = _e130 + (w * lobes_1);
-            metal::float3 _e133 = albedo;
-            albedo = _e133 + (w * (((metal::float3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_));
-            metal::float3 _e144 = back;
-            back = _e144 + (w * (metal::float3(_e93.a0_) + _e93.a2_));
-            float _e151 = weights;
-            weights = _e151 + w;
-            g0_ = g1_;
-            d0_1 = d1_1;
-        }
-    }
-    metal::float3 _e158 = s_5;
-    float _e159 = weights;
-    out_2.s = _e158 / metal::float3(_e159);
-    metal::float3 _e163 = albedo;
-    float _e164 = weights;
-    out_2.albedo = _e163 / metal::float3(_e164);
-    metal::float3 _e168 = back;
-    float _e169 = weights;
-    out_2.back = _e168 / metal::float3(_e169);
-    WeftHairLobes _e172 = out_2;
-    return _e172;
+    float sin_o_1 = metal::clamp(metal::dot(o_1, t_1), -1.0, 1.0);
+    float sin_i_1 = metal::clamp(metal::dot(i_1, t_1), -1.0, 1.0);
+    float _e15 = weft_hair_safe_sqrt(1.0 - (sin_o_1 * sin_o_1));
+    float _e19 = weft_hair_safe_sqrt(1.0 - (sin_i_1 * sin_i_1));
+    metal::float3 o_perp_1 = o_1 - (sin_o_1 * t_1);
+    metal::float3 i_perp_1 = i_1 - (sin_i_1 * t_1);
+    float len2_3 = metal::dot(o_perp_1, o_perp_1) * metal::dot(i_perp_1, i_perp_1);
+    float cos_phi_1 = metal::clamp((len2_3 > 0.000000000001) ? (metal::dot(o_perp_1, i_perp_1) * metal::rsqrt(metal::max(len2_3, 0.000000000000000000000000000001))) : 1.0, -1.0, 1.0);
+    float cos_half = metal::sqrt(0.5 + (0.5 * cos_phi_1));
+    float sin_half_1 = metal::sqrt(0.5 - (0.5 * cos_phi_1));
+    metal::float3 so = metal::float3((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y), (sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x), (sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z));
+    metal::float3 co = metal::abs(metal::float3((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y), (_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x), (_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
+    metal::float3 inv_v = metal::float3(1.0, 4.0, 0.25) / metal::float3(hair_1.v.x);
+    float e_trt = metal::exp(-0.5 * inv_v.x);
+    float _e107 = weft_hair_sqr(e_trt * e_trt);
+    float _e111 = weft_hair_sqr(_e107 * _e107);
+    metal::float3 norm = inv_v / (metal::float3(1.0) - metal::float3(_e107, _e111, e_trt));
+    metal::float3 x_6 = (_e19 * co) * inv_v;
+    metal::float3 u = metal::float3(1.0) / (metal::float3(1.0) + (0.7 * x_6));
+    metal::float3 bessel = (metal::float3(1.0) + ((u * (metal::float3(1.0) - u)) * (metal::float3(0.181903) + (u * (metal::float3(-0.401835) + (u * 3.1851)))))) * metal::rsqrt(metal::float3(1.0) + (6.2831855 * x_6));
+    metal::float3 mp = (metal::exp(metal::min((((_e19 * co) - (sin_i_1 * so)) - metal::float3(1.0)) * inv_v, metal::float3(0.0))) * bessel) * norm;
+    float sin_t = sin_o_1 / hair_1.eta;
+    float _e167 = weft_hair_safe_sqrt(1.0 - (sin_t * sin_t));
+    float chord_1 = 2.0 / metal::max(_e167, 0.0001);
+    float a_5 = _e15 * metal::rsqrt(metal::max((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1), 0.00000001));
+    float d_1 = 0.8162094 * hair_1.s;
+    float sd = metal::sin(d_1);
+    float cd = metal::cos(d_1);
+    float _e193 = weft_hair_sqr(0.4534 * hair_1.s);
+    float c_r = metal::sqrt(metal::min((0.5 + (0.5 * cos_phi_1)) + _e193, 1.0));
+    float _e202 = weft_f_dielectric(_e15 * c_r, hair_1.eta);
+    float r = (0.25 * c_r) * _e202;
+    metal::float3 _e212 = weft_hair_fast_tt((sin_half_1 * cd) + (cos_half * sd), (sin_half_1 * cd) - (cos_half * sd), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float h_f = 0.6243 + (0.1898 * _e15);
+    float _e220 = weft_hair_safe_sqrt(1.0 - (h_f * h_f));
+    float _e223 = weft_f_dielectric(_e15 * _e220, hair_1.eta);
+    float h2_ = 0.4824 + (0.2778 * _e15);
+    float _e231 = weft_hair_safe_sqrt(1.0 - (h2_ * h2_));
+    float _e234 = weft_f_dielectric(_e15 * _e231, hair_1.eta);
+    float _e242 = weft_hair_safe_sqrt(1.0 - (((h2_ * h2_) * a_5) * a_5));
+    metal::float3 t2_ = metal::exp(-(hair_1.sigma_a) * (chord_1 * _e242));
+    float _e248 = weft_hair_sqr(1.0 - _e234);
+    metal::float3 a2_ = ((_e248 * _e234) * t2_) * t2_;
+    metal::float3 ft = _e223 * t2_;
+    metal::float3 a3_ = (a2_ * ft) / (metal::float3(1.0) - ft);
+    float s2_fit = (-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6)))))))));
+    float s_trt = metal::sqrt(metal::max(metal::exp(metal::clamp(s2_fit, -9.0, 2.5)), hair_1.s * hair_1.s));
+    float _e310 = weft_hair_trimmed_logistic(metal::acos(cos_phi_1), s_trt);
+    out_2.s = (metal::float3(mp.x * r) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494)));
+    out_2.back = metal::float3(_e223) + a2_;
+    float _e332 = weft_hair_sqr(1.0 - _e234);
+    out_2.albedo = ((metal::float3(_e223) + (_e332 * t2_)) + a2_) + a3_;
+    WeftHairLobes _e338 = out_2;
+    return _e338;
 }
 
 metal::float3 hair_strand(
@@ -598,9 +434,9 @@ metal::float3 hair_strand(
 }
 
 float hair_hash(
-    uint x_7
+    uint x_4
 ) {
-    uint state = (x_7 * 747796405u) + 2891336453u;
+    uint state = (x_4 * 747796405u) + 2891336453u;
     uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return static_cast<float>((word >> 22u) ^ word) * 0.00000000023283064;
 }
@@ -610,12 +446,12 @@ uint naga_f2u32(float value) {
 }
 
 float hair_value_noise(
-    float x_8,
+    float x_5,
     float period
 ) {
     float p = metal::max(metal::rint(period), 1.0);
-    float cell = metal::floor(x_8);
-    float f_1 = x_8 - cell;
+    float cell = metal::floor(x_5);
+    float f_1 = x_5 - cell;
     float c0_ = cell - (p * metal::floor(cell / p));
     float c1_1 = ((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0);
     float _e19 = hair_hash(naga_f2u32(c0_));
@@ -635,8 +471,8 @@ float hair_jitter(
     float _e9 = material.anisotropic_direction;
     float a_6 = ((_e9) * 0.017453292519943295474);
     float c_2 = metal::cos(a_6);
-    float s_8 = metal::sin(a_6);
-    metal::float2 rotated = metal::float2((c_2 * uv0_1.x) + (s_8 * uv0_1.y), (-(s_8) * uv0_1.x) + (c_2 * uv0_1.y));
+    float s_4 = metal::sin(a_6);
+    metal::float2 rotated = metal::float2((c_2 * uv0_1.x) + (s_4 * uv0_1.y), (-(s_4) * uv0_1.x) + (c_2 * uv0_1.y));
     metal::float4 _e30 = material.jitter_map_st;
     metal::float2 _e31 = weft_transform_uv((mask > 0.5) ? rotated : uv0_1, _e30);
     metal::float4 _e34 = jitter_map.sample(material_sampler, _e31);
@@ -722,7 +558,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 base = metal::saturate(base_rgba.xyz);
     float alpha = metal::saturate(base_rgba.w);
     WeftSurface _e19 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
-    metal::float3 v_2 = _e19.v;
+    metal::float3 v_1 = _e19.v;
     metal::float3 n_3 = _e19.n;
     metal::float3x3 _e23 = weft_tangent_frame(n_3, in_1.world_tangent);
     metal::float3 _e25 = hair_strand(_e23, in_1.uv0_, material);
@@ -740,20 +576,20 @@ fragment fs_mainOutput fs_main(
         float _e48 = material.azimuthal_roughness;
         float _e51 = material.scale_angle;
         WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
+        WeftHairAngles _e53 = weft_hair_angles(_e35, v_1, _e28);
         {
-            WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_FAST_CELLS);
-            lobes = _e56;
+            WeftHairLobes _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
+            lobes = _e55;
         }
         float body = metal::smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        metal::float3 _e63 = lobes.back;
-        metal::float3 multiple = base * (metal::float3(1.0) - _e63);
-        metal::float3 _e67 = lobes.s;
-        metal::float3 direct = (_e67 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
-        metal::float3 _e76 = lobes.back;
-        color = (direct * _e29) + (_e30 * (multiple + _e76));
+        metal::float3 _e62 = lobes.back;
+        metal::float3 multiple = base * (metal::float3(1.0) - _e62);
+        metal::float3 _e66 = lobes.s;
+        metal::float3 direct = (_e66 * body) + (multiple * (WEFT_INV_PI * metal::saturate(n_dot_l)));
+        metal::float3 _e75 = lobes.back;
+        color = (direct * _e29) + (_e30 * (multiple + _e75));
     }
-    metal::float3 _e80 = color;
-    metal::float3 radiance = metal::clamp(_e80, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e79 = color;
+    metal::float3 radiance = metal::clamp(_e79, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha) };
 }

@@ -79,14 +79,6 @@ struct WeftHair {
     cos2k: vec3<f32>,
 }
 
-struct WeftHairAttenuation {
-    a0_: f32,
-    a1_: vec3<f32>,
-    a2_: vec3<f32>,
-    a3_: vec3<f32>,
-    gamma_t: f32,
-}
-
 struct WeftHairLobes {
     s: vec3<f32>,
     albedo: vec3<f32>,
@@ -110,7 +102,6 @@ const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
 const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
 const HAIR_REFERENCE_CELLS: u32 = 64u;
-const HAIR_FAST_CELLS: u32 = 12u;
 const HAIR_TERMINATOR: f32 = 0.25f;
 
 @group(0) @binding(0) 
@@ -134,10 +125,10 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 }
 
 fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
-    let s_6 = select(-1f, 1f, (n.z >= 0f));
-    let a_1 = (-1f / (s_6 + n.z));
-    let b = ((n.x * n.y) * a_1);
-    return vec3<f32>((1f + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+    let s_2 = select(-1f, 1f, (n.z >= 0f));
+    let a_2 = (-1f / (s_2 + n.z));
+    let b = ((n.x * n.y) * a_2);
+    return vec3<f32>((1f + (((s_2 * n.x) * n.x) * a_2)), (s_2 * b), (-(s_2) * n.x));
 }
 
 fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
@@ -146,9 +137,9 @@ fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
     let g = sqrt(max(g2_, 0f));
     let gmc = (g - c_1);
     let gpc = max((g + c_1), 0.0000001f);
-    let a_2 = (gmc / gpc);
+    let a_3 = (gmc / gpc);
     let b_1 = (((c_1 * gpc) - 1f) / max(((c_1 * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_1 * b_1))));
+    let f = saturate((((0.5f * a_3) * a_3) * (1f + (b_1 * b_1))));
     return select(f, 1f, (g2_ < 0f));
 }
 
@@ -206,10 +197,10 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_2);
-    let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
-    let s_7 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t_1) * s_7);
-    return mat3x3<f32>(t_1, b_2, n_2);
+    let t_2 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
+    let s_3 = select(1f, -1f, (tangent.w < 0f));
+    let b_2 = (cross(n_2, t_2) * s_3);
+    return mat3x3<f32>(t_2, b_2, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -257,8 +248,8 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     hair.v = vec4<f32>(_e13, (0.25f * _e13), (4f * _e13), (4f * _e13));
     let _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    let a_3 = radians(alpha_deg);
-    let s0_ = sin(a_3);
+    let a_4 = radians(alpha_deg);
+    let s0_ = sin(a_4);
     let _e29 = weft_hair_safe_sqrt((1f - (s0_ * s0_)));
     let s1_ = ((2f * _e29) * s0_);
     let c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -270,118 +261,28 @@ fn weft_hair_params(sigma_a: vec3<f32>, eta_1: f32, beta_m_1: f32, beta_n_2: f32
     return _e46;
 }
 
-fn weft_hair_i0_(x_2: f32) -> f32 {
-    var term: f32 = 1f;
-    var sum: f32 = 1f;
-    var i: i32 = 1i;
-
-    let q = ((0.25f * x_2) * x_2);
-    loop {
-        let _e10 = i;
-        if (_e10 < 16i) {
-        } else {
-            break;
-        }
-        {
-            let _e13 = i;
-            let k_1 = f32(_e13);
-            let _e15 = term;
-            term = (_e15 * (q / (k_1 * k_1)));
-            let _e19 = sum;
-            let _e20 = term;
-            sum = (_e19 + _e20);
-        }
-        continuing {
-            let _e22 = i;
-            i = (_e22 + 1i);
-        }
-    }
-    let _e25 = sum;
-    return _e25;
-}
-
-fn weft_hair_log_i0_(x_3: f32) -> f32 {
-    if (x_3 > 12f) {
-        let r = (1f / x_3);
-        return ((x_3 - (0.5f * log((6.2831855f * x_3)))) + log((1f + (r * (0.125f + (0.0703125f * r))))));
-    }
-    let _e20 = weft_hair_i0_(x_3);
-    return log(_e20);
-}
-
-fn weft_hair_mp(cos_i_1: f32, cos_o: f32, sin_i: f32, sin_o: f32, v_1: f32) -> f32 {
-    let a_4 = ((cos_i_1 * cos_o) / v_1);
-    let b_6 = ((sin_i * sin_o) / v_1);
-    if (v_1 <= 0.1f) {
-        let _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1f / v_1)) + 0.6931472f) + log((1f / (2f * v_1)))));
-    }
-    let _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1f / v_1)) * 2f) * v_1));
-}
-
-fn weft_hair_longitudinal(hair_1: WeftHair, sin_o_1: f32, cos_o_1: f32, sin_i_1: f32, cos_i_2: f32) -> vec4<f32> {
-    let sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
-    let cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
-    let sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
-    let cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
-    let sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
-    let cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
-    let _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
-    let _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
-    let _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
-    let _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
-    return vec4<f32>(_e52, _e55, _e58, _e61);
-}
-
-fn weft_hair_logistic(x_4: f32, s: f32) -> f32 {
-    let e_1 = exp((-(abs(x_4)) / s));
+fn weft_hair_logistic(x_2: f32, s: f32) -> f32 {
+    let e_1 = exp((-(abs(x_2)) / s));
     let _e8 = weft_hair_sqr((1f + e_1));
     return (e_1 / (s * _e8));
 }
 
-fn weft_hair_trimmed_logistic(x_5: f32, s_1: f32) -> f32 {
+fn weft_hair_trimmed_logistic(x_3: f32, s_1: f32) -> f32 {
     let e_2 = exp((-3.1415927f / s_1));
-    let _e5 = weft_hair_logistic(x_5, s_1);
+    let _e5 = weft_hair_logistic(x_3, s_1);
     return ((_e5 * (1f + e_2)) / (1f - e_2));
 }
 
-fn weft_hair_etap(hair_2: WeftHair, sin_o_2: f32, cos_o_2: f32) -> f32 {
-    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001f));
-}
-
-fn weft_hair_attenuation(hair_3: WeftHair, sin_o_3: f32, cos_o_3: f32, h: f32) -> WeftHairAttenuation {
-    var a: WeftHairAttenuation;
-
-    let sin_t = (sin_o_3 / hair_3.eta);
-    let _e9 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
-    let _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    let sin_gamma_t = clamp((h / _e10), -1f, 1f);
-    let _e18 = weft_hair_safe_sqrt((1f - (sin_gamma_t * sin_gamma_t)));
-    let t_2 = exp((-(hair_3.sigma_a) * ((2f * _e18) / max(_e9, 0.0001f))));
-    let _e31 = weft_hair_safe_sqrt((1f - (h * h)));
-    let _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
-    a.a0_ = _e34;
-    a.a1_ = (((1f - _e34) * (1f - _e34)) * t_2);
-    let _e46 = a.a1_;
-    a.a2_ = ((_e46 * t_2) * _e34);
-    let _e51 = a.a2_;
-    a.a3_ = (((_e51 * t_2) * _e34) / (vec3(1f) - (t_2 * _e34)));
-    a.gamma_t = asin(sin_gamma_t);
-    let _e61 = a;
-    return _e61;
-}
-
-fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i_1: vec3<f32>) -> WeftHairAngles {
+fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i: vec3<f32>) -> WeftHairAngles {
     var out_2: WeftHairAngles;
 
-    let sin_o_4 = clamp(dot(o, t), -1f, 1f);
-    let sin_i_2 = clamp(dot(i_1, t), -1f, 1f);
-    let _e16 = weft_hair_safe_sqrt((1f - (sin_o_4 * sin_o_4)));
-    let _e20 = weft_hair_safe_sqrt((1f - (sin_i_2 * sin_i_2)));
-    out_2.theta = vec4<f32>(sin_o_4, _e16, sin_i_2, _e20);
-    let o_perp = (o - (sin_o_4 * t));
-    let i_perp = (i_1 - (sin_i_2 * t));
+    let sin_o = clamp(dot(o, t), -1f, 1f);
+    let sin_i = clamp(dot(i, t), -1f, 1f);
+    let _e16 = weft_hair_safe_sqrt((1f - (sin_o * sin_o)));
+    let _e20 = weft_hair_safe_sqrt((1f - (sin_i * sin_i)));
+    out_2.theta = vec4<f32>(sin_o, _e16, sin_i, _e20);
+    let o_perp = (o - (sin_o * t));
+    let i_perp = (i - (sin_i * t));
     let len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     let cos_phi = select(1f, (dot(o_perp, i_perp) * inverseSqrt(max(len2_2, 0.000000000000000000000000000001f))), (len2_2 > 0.000000000001f));
     out_2.phi = acos(clamp(cos_phi, -1f, 1f));
@@ -389,113 +290,79 @@ fn weft_hair_angles(t: vec3<f32>, o: vec3<f32>, i_1: vec3<f32>) -> WeftHairAngle
     return _e43;
 }
 
-fn weft_hair_logistic_cdf(x_6: f32, s_2: f32) -> f32 {
-    return (1f / (1f + exp((-(x_6) / s_2))));
+fn weft_hair_fast_tt_density(sin_half: f32, a: f32) -> vec3<f32> {
+    let rho2_ = ((1f - ((2f * a) * sin_half)) + (a * a));
+    let inv_rho = inverseSqrt(max(rho2_, 0.00000001f));
+    let cos_go = (max((sin_half - a), 0f) * inv_rho);
+    let cos_gt = ((1f - (a * sin_half)) * inv_rho);
+    return vec3<f32>(cos_go, cos_gt, (((0.25f * cos_go) * cos_gt) * inv_rho));
 }
 
-fn weft_hair_trimmed_integral(lo: f32, hi: f32, s_3: f32) -> f32 {
-    var sum_1: f32;
-
-    let _e4 = weft_hair_logistic_cdf(-3.1415927f, s_3);
-    let _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    let a_5 = clamp(lo, -3.1415927f, WEFT_PI);
-    let b_7 = clamp(hi, -3.1415927f, WEFT_PI);
-    let _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    let _e14 = weft_hair_logistic_cdf(a_5, s_3);
-    sum_1 = (_e13 - _e14);
-    if (hi > WEFT_PI) {
-        let _e19 = sum_1;
-        let _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855f), WEFT_PI), s_3);
-        sum_1 = (_e19 + (_e24 - _e4));
-    }
-    if (lo < -3.1415927f) {
-        let _e29 = sum_1;
-        let _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855f), -3.1415927f), s_3);
-        sum_1 = (_e29 + (_e6 - _e34));
-    }
-    let _e37 = sum_1;
-    return (_e37 / (_e6 - _e4));
+fn weft_hair_fast_tt(sin_plus: f32, sin_minus: f32, a_1: f32, cos_o: f32, eta_2: f32, sigma_a_1: vec3<f32>, chord: f32) -> vec3<f32> {
+    let _e7 = weft_hair_fast_tt_density(sin_plus, a_1);
+    let _e8 = weft_hair_fast_tt_density(sin_minus, a_1);
+    let _e11 = weft_f_dielectric((cos_o * _e7.x), eta_2);
+    let _e19 = weft_hair_sqr((1f - _e11));
+    return (exp((-(sigma_a_1) * (chord * _e7.y))) * ((_e19 * 0.5f) * (_e7.z + _e8.z)));
 }
 
-fn weft_hair_np_cell(d0_: f32, d1_: f32, s_4: f32) -> f32 {
-    let mid = (0.5f * (d0_ + d1_));
-    let m = (mid - (6.2831855f * round((mid / 6.2831855f))));
-    let half = min((0.5f * abs((d1_ - d0_))), WEFT_PI);
-    if (half < 0.0001f) {
-        let _e20 = weft_hair_trimmed_logistic(m, s_4);
-        return _e20;
-    }
-    let _e23 = weft_hair_trimmed_integral((m - half), (m + half), s_4);
-    return (_e23 / (2f * half));
-}
-
-fn weft_hair_mean(hair_4: WeftHair, angles: WeftHairAngles, count: u32) -> WeftHairLobes {
-    var s_5: vec3<f32> = vec3(0f);
-    var albedo: vec3<f32> = vec3(0f);
-    var back: vec3<f32> = vec3(0f);
-    var weights: f32 = 0f;
-    var g0_: f32 = -1.5707964f;
-    var d0_1: vec3<f32>;
-    var k: u32 = 0u;
+fn weft_hair_fast(hair_1: WeftHair, t_1: vec3<f32>, o_1: vec3<f32>, i_1: vec3<f32>) -> WeftHairLobes {
     var out_3: WeftHairLobes;
 
-    let th = angles.theta;
-    let _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
-    let _e11 = weft_hair_etap(hair_4, th.x, th.y);
-    let cells = max(count, 1u);
-    let step_ = (WEFT_PI / f32(cells));
-    let _e35 = g0_;
-    let _e43 = g0_;
-    d0_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * asin(clamp((sin(_e35) / _e11), -1f, 1f))) - vec3((2f * _e43))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
-    loop {
-        let _e58 = k;
-        if (_e58 < cells) {
-        } else {
-            break;
-        }
-        {
-            let _e60 = g0_;
-            let g1_ = (_e60 + step_);
-            let gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1f, 1f));
-            let d1_1 = (vec3(angles.phi) - (((vec3<f32>(0f, 2f, 4f) * gamma_t1_) - vec3((2f * g1_))) + vec3<f32>(0f, 3.1415927f, 6.2831855f)));
-            let _e85 = g0_;
-            let gm = (_e85 + (0.5f * step_));
-            let w = cos(gm);
-            let _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            let _e98 = d0_1.x;
-            let _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
-            let _e107 = d0_1.y;
-            let _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
-            let _e118 = d0_1.z;
-            let _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
-            let lobes_1 = (((vec3(((_e8.x * _e93.a0_) * _e101)) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494f));
-            let _e130 = s_5;
-            s_5 = (_e130 + (w * lobes_1));
-            let _e133 = albedo;
-            albedo = (_e133 + (w * (((vec3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_)));
-            let _e144 = back;
-            back = (_e144 + (w * (vec3(_e93.a0_) + _e93.a2_)));
-            let _e151 = weights;
-            weights = (_e151 + w);
-            g0_ = g1_;
-            d0_1 = d1_1;
-        }
-        continuing {
-            let _e153 = k;
-            k = (_e153 + 1u);
-        }
-    }
-    let _e158 = s_5;
-    let _e159 = weights;
-    out_3.s = (_e158 / vec3(_e159));
-    let _e163 = albedo;
-    let _e164 = weights;
-    out_3.albedo = (_e163 / vec3(_e164));
-    let _e168 = back;
-    let _e169 = weights;
-    out_3.back = (_e168 / vec3(_e169));
-    let _e172 = out_3;
-    return _e172;
+    let sin_o_1 = clamp(dot(o_1, t_1), -1f, 1f);
+    let sin_i_1 = clamp(dot(i_1, t_1), -1f, 1f);
+    let _e15 = weft_hair_safe_sqrt((1f - (sin_o_1 * sin_o_1)));
+    let _e19 = weft_hair_safe_sqrt((1f - (sin_i_1 * sin_i_1)));
+    let o_perp_1 = (o_1 - (sin_o_1 * t_1));
+    let i_perp_1 = (i_1 - (sin_i_1 * t_1));
+    let len2_3 = (dot(o_perp_1, o_perp_1) * dot(i_perp_1, i_perp_1));
+    let cos_phi_1 = clamp(select(1f, (dot(o_perp_1, i_perp_1) * inverseSqrt(max(len2_3, 0.000000000000000000000000000001f))), (len2_3 > 0.000000000001f)), -1f, 1f);
+    let cos_half = sqrt((0.5f + (0.5f * cos_phi_1)));
+    let sin_half_1 = sqrt((0.5f - (0.5f * cos_phi_1)));
+    let so = vec3<f32>(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
+    let co = abs(vec3<f32>(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
+    let inv_v = (vec3<f32>(1f, 4f, 0.25f) / vec3(hair_1.v.x));
+    let e_trt = exp((-0.5f * inv_v.x));
+    let _e107 = weft_hair_sqr((e_trt * e_trt));
+    let _e111 = weft_hair_sqr((_e107 * _e107));
+    let norm = (inv_v / (vec3(1f) - vec3<f32>(_e107, _e111, e_trt)));
+    let x_6 = ((_e19 * co) * inv_v);
+    let u = (vec3(1f) / (vec3(1f) + (0.7f * x_6)));
+    let bessel = ((vec3(1f) + ((u * (vec3(1f) - u)) * (vec3(0.181903f) + (u * (vec3(-0.401835f) + (u * 3.1851f)))))) * inverseSqrt((vec3(1f) + (6.2831855f * x_6))));
+    let mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1f)) * inv_v), vec3(0f))) * bessel) * norm);
+    let sin_t = (sin_o_1 / hair_1.eta);
+    let _e167 = weft_hair_safe_sqrt((1f - (sin_t * sin_t)));
+    let chord_1 = (2f / max(_e167, 0.0001f));
+    let a_5 = (_e15 * inverseSqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 0.00000001f)));
+    let d_1 = (0.8162094f * hair_1.s);
+    let sd = sin(d_1);
+    let cd = cos(d_1);
+    let _e193 = weft_hair_sqr((0.4534f * hair_1.s));
+    let c_r = sqrt(min(((0.5f + (0.5f * cos_phi_1)) + _e193), 1f));
+    let _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    let r = ((0.25f * c_r) * _e202);
+    let _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    let h_f = (0.6243f + (0.1898f * _e15));
+    let _e220 = weft_hair_safe_sqrt((1f - (h_f * h_f)));
+    let _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    let h2_ = (0.4824f + (0.2778f * _e15));
+    let _e231 = weft_hair_safe_sqrt((1f - (h2_ * h2_)));
+    let _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
+    let _e242 = weft_hair_safe_sqrt((1f - (((h2_ * h2_) * a_5) * a_5)));
+    let t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
+    let _e248 = weft_hair_sqr((1f - _e234));
+    let a2_ = (((_e248 * _e234) * t2_) * t2_);
+    let ft = (_e223 * t2_);
+    let a3_ = ((a2_ * ft) / (vec3(1f) - ft));
+    let s2_fit = ((-9.2609f + (a_5 * (72.357f + (a_5 * (-153.75f + (a_5 * (-67.745f + (a_5 * 239.74f)))))))) + (hair_1.s * ((65.993f + (a_5 * (-624.68f + (a_5 * (1704.7f + (a_5 * (-1105.8f - (a_5 * 430.94f)))))))) + (hair_1.s * (-107.38f + (a_5 * (1069.8f + (a_5 * (-3127.5f + (a_5 * 2706.6f))))))))));
+    let s_trt = sqrt(max(exp(clamp(s2_fit, -9f, 2.5f)), (hair_1.s * hair_1.s)));
+    let _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_3.s = ((vec3((mp.x * r)) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494f))));
+    out_3.back = (vec3(_e223) + a2_);
+    let _e332 = weft_hair_sqr((1f - _e234));
+    out_3.albedo = (((vec3(_e223) + (_e332 * t2_)) + a2_) + a3_);
+    let _e338 = out_3;
+    return _e338;
 }
 
 fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
@@ -509,16 +376,16 @@ fn hair_strand(frame: mat3x3<f32>, uv0_: vec2<f32>) -> vec3<f32> {
     return _e25;
 }
 
-fn hair_hash(x_7: u32) -> f32 {
-    let state = ((x_7 * 747796405u) + 2891336453u);
+fn hair_hash(x_4: u32) -> f32 {
+    let state = ((x_4 * 747796405u) + 2891336453u);
     let word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (f32(((word >> 22u) ^ word)) * 0.00000000023283064f);
 }
 
-fn hair_value_noise(x_8: f32, period: f32) -> f32 {
+fn hair_value_noise(x_5: f32, period: f32) -> f32 {
     let p = max(round(period), 1f);
-    let cell = floor(x_8);
-    let f_1 = (x_8 - cell);
+    let cell = floor(x_5);
+    let f_1 = (x_5 - cell);
     let c0_ = (cell - (p * floor((cell / p))));
     let c1_1 = select((c0_ + 1f), 0f, ((c0_ + 1f) >= p));
     let _e19 = hair_hash(u32(c0_));
@@ -532,8 +399,8 @@ fn hair_jitter(uv0_1: vec2<f32>) -> f32 {
     let _e9 = material.anisotropic_direction;
     let a_6 = radians(_e9);
     let c_2 = cos(a_6);
-    let s_8 = sin(a_6);
-    let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
+    let s_4 = sin(a_6);
+    let rotated = vec2<f32>(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
     let _e30 = material.jitter_map_st;
     let _e31 = weft_transform_uv(select(uv0_1, rotated, (mask > 0.5f)), _e30);
     let _e34 = textureSample(jitter_map, material_sampler, _e31);
@@ -619,7 +486,7 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
     let base = saturate(base_rgba.xyz);
     let alpha = saturate(base_rgba.w);
     let _e19 = weft_surface(in_2.world_position, in_2.world_normal);
-    let v_2 = _e19.v;
+    let v_1 = _e19.v;
     let n_3 = _e19.n;
     let _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     let _e25 = hair_strand(_e23, in_2.uv0_);
@@ -637,20 +504,20 @@ fn fs_main(in_2: WeftVaryings) -> @location(0) vec4<f32> {
         let _e48 = material.azimuthal_roughness;
         let _e51 = material.scale_angle;
         let _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        let _e53 = weft_hair_angles(_e35, v_2, _e28);
+        let _e53 = weft_hair_angles(_e35, v_1, _e28);
         {
-            let _e56 = weft_hair_mean(_e52, _e53, HAIR_FAST_CELLS);
-            lobes = _e56;
+            let _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
+            lobes = _e55;
         }
         let body = smoothstep(-0.25f, HAIR_TERMINATOR, n_dot_l);
-        let _e63 = lobes.back;
-        let multiple = (base * (vec3(1f) - _e63));
-        let _e67 = lobes.s;
-        let direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        let _e76 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
+        let _e62 = lobes.back;
+        let multiple = (base * (vec3(1f) - _e62));
+        let _e66 = lobes.s;
+        let direct = ((_e66 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        let _e75 = lobes.back;
+        color = ((direct * _e29) + (_e30 * (multiple + _e75)));
     }
-    let _e80 = color;
-    let radiance = clamp(_e80, vec3(0f), vec3(65504f));
+    let _e79 = color;
+    let radiance = clamp(_e79, vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha);
 }

@@ -78,13 +78,6 @@ struct WeftHair {
     vec3 sin2k;
     vec3 cos2k;
 };
-struct WeftHairAttenuation {
-    float a0_;
-    vec3 a1_;
-    vec3 a2_;
-    vec3 a3_;
-    float gamma_t;
-};
 struct WeftHairLobes {
     vec3 s;
     vec3 albedo;
@@ -106,7 +99,6 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_HAIR_MIN_BETA_M = 0.05;
 const float WEFT_HAIR_MIN_BETA_N = 0.05;
 const uint HAIR_REFERENCE_CELLS = 64u;
-const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
@@ -124,10 +116,10 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
-    float s_6 = ((n.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_6 + n.z));
-    float b = ((n.x * n.y) * a_1);
-    return vec3((1.0 + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+    float s_2 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_2 = (-1.0 / (s_2 + n.z));
+    float b = ((n.x * n.y) * a_2);
+    return vec3((1.0 + (((s_2 * n.x) * n.x) * a_2)), (s_2 * b), (-(s_2) * n.x));
 }
 
 float weft_f_dielectric(float cos_i, float eta) {
@@ -136,9 +128,9 @@ float weft_f_dielectric(float cos_i, float eta) {
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_2 = (gmc / gpc);
+    float a_3 = (gmc / gpc);
     float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
+    float f = clamp((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -195,10 +187,10 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_2);
-    vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_1) * s_7);
-    return mat3x3(t_1, b_2, n_2);
+    vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_2 = (cross(n_2, t_2) * s_3);
+    return mat3x3(t_2, b_2, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -245,8 +237,8 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     hair.v = vec4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = radians(alpha_deg);
-    float s0_ = sin(a_3);
+    float a_4 = radians(alpha_deg);
+    float s0_ = sin(a_4);
     float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -258,117 +250,27 @@ WeftHair weft_hair_params(vec3 sigma_a, float eta_1, float beta_m_1, float beta_
     return _e46;
 }
 
-float weft_hair_i0_(float x_2) {
-    float term = 1.0;
-    float sum = 1.0;
-    int i = 1;
-    float q = ((0.25 * x_2) * x_2);
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            int _e22 = i;
-            i = (_e22 + 1);
-        }
-        loop_init = false;
-        int _e10 = i;
-        if ((_e10 < 16)) {
-        } else {
-            break;
-        }
-        {
-            int _e13 = i;
-            float k_1 = float(_e13);
-            float _e15 = term;
-            term = (_e15 * (q / (k_1 * k_1)));
-            float _e19 = sum;
-            float _e20 = term;
-            sum = (_e19 + _e20);
-        }
-    }
-    float _e25 = sum;
-    return _e25;
-}
-
-float weft_hair_log_i0_(float x_3) {
-    if ((x_3 > 12.0)) {
-        float r = (1.0 / x_3);
-        return ((x_3 - (0.5 * log((6.2831855 * x_3)))) + log((1.0 + (r * (0.125 + (0.0703125 * r))))));
-    }
-    float _e20 = weft_hair_i0_(x_3);
-    return log(_e20);
-}
-
-float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1) {
-    float a_4 = ((cos_i_1 * cos_o) / v_1);
-    float b_6 = ((sin_i * sin_o) / v_1);
-    if ((v_1 <= 0.1)) {
-        float _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
-    }
-    float _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
-}
-
-vec4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2) {
-    float sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
-    float cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
-    float sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
-    float cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
-    float sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
-    float cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
-    float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
-    float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
-    float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
-    float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
-    return vec4(_e52, _e55, _e58, _e61);
-}
-
-float weft_hair_logistic(float x_4, float s) {
-    float e_1 = exp((-(abs(x_4)) / s));
+float weft_hair_logistic(float x_2, float s) {
+    float e_1 = exp((-(abs(x_2)) / s));
     float _e8 = weft_hair_sqr((1.0 + e_1));
     return (e_1 / (s * _e8));
 }
 
-float weft_hair_trimmed_logistic(float x_5, float s_1) {
+float weft_hair_trimmed_logistic(float x_3, float s_1) {
     float e_2 = exp((-3.1415927 / s_1));
-    float _e5 = weft_hair_logistic(x_5, s_1);
+    float _e5 = weft_hair_logistic(x_3, s_1);
     return ((_e5 * (1.0 + e_2)) / (1.0 - e_2));
 }
 
-float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2) {
-    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
-}
-
-WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h) {
-    WeftHairAttenuation a = WeftHairAttenuation(0.0, vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
-    float sin_t = (sin_o_3 / hair_3.eta);
-    float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
-    float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
-    vec3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
-    float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
-    float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
-    a.a0_ = _e34;
-    a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
-    vec3 _e46 = a.a1_;
-    a.a2_ = ((_e46 * t_2) * _e34);
-    vec3 _e51 = a.a2_;
-    a.a3_ = (((_e51 * t_2) * _e34) / (vec3(1.0) - (t_2 * _e34)));
-    a.gamma_t = asin(sin_gamma_t);
-    WeftHairAttenuation _e61 = a;
-    return _e61;
-}
-
-WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
+WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i) {
     WeftHairAngles out_3 = WeftHairAngles(vec4(0.0), 0.0);
-    float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
-    float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
-    float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
-    float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_3.theta = vec4(sin_o_4, _e16, sin_i_2, _e20);
-    vec3 o_perp = (o - (sin_o_4 * t));
-    vec3 i_perp = (i_1 - (sin_i_2 * t));
+    float sin_o = clamp(dot(o, t), -1.0, 1.0);
+    float sin_i = clamp(dot(i, t), -1.0, 1.0);
+    float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o * sin_o)));
+    float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i * sin_i)));
+    out_3.theta = vec4(sin_o, _e16, sin_i, _e20);
+    vec3 o_perp = (o - (sin_o * t));
+    vec3 i_perp = (i - (sin_i * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * inversesqrt(max(len2_2, 1e-30))) : 1.0);
     out_3.phi = acos(clamp(cos_phi, -1.0, 1.0));
@@ -376,113 +278,78 @@ WeftHairAngles weft_hair_angles(vec3 t, vec3 o, vec3 i_1) {
     return _e43;
 }
 
-float weft_hair_logistic_cdf(float x_6, float s_2) {
-    return (1.0 / (1.0 + exp((-(x_6) / s_2))));
+vec3 weft_hair_fast_tt_density(float sin_half, float a) {
+    float rho2_ = ((1.0 - ((2.0 * a) * sin_half)) + (a * a));
+    float inv_rho = inversesqrt(max(rho2_, 1e-8));
+    float cos_go = (max((sin_half - a), 0.0) * inv_rho);
+    float cos_gt = ((1.0 - (a * sin_half)) * inv_rho);
+    return vec3(cos_go, cos_gt, (((0.25 * cos_go) * cos_gt) * inv_rho));
 }
 
-float weft_hair_trimmed_integral(float lo, float hi, float s_3) {
-    float sum_1 = 0.0;
-    float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
-    float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
-    float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    float _e14 = weft_hair_logistic_cdf(a_5, s_3);
-    sum_1 = (_e13 - _e14);
-    if ((hi > WEFT_PI)) {
-        float _e19 = sum_1;
-        float _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855), WEFT_PI), s_3);
-        sum_1 = (_e19 + (_e24 - _e4));
-    }
-    if ((lo < -3.1415927)) {
-        float _e29 = sum_1;
-        float _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855), -3.1415927), s_3);
-        sum_1 = (_e29 + (_e6 - _e34));
-    }
-    float _e37 = sum_1;
-    return (_e37 / (_e6 - _e4));
+vec3 weft_hair_fast_tt(float sin_plus, float sin_minus, float a_1, float cos_o, float eta_2, vec3 sigma_a_1, float chord) {
+    vec3 _e7 = weft_hair_fast_tt_density(sin_plus, a_1);
+    vec3 _e8 = weft_hair_fast_tt_density(sin_minus, a_1);
+    float _e11 = weft_f_dielectric((cos_o * _e7.x), eta_2);
+    float _e19 = weft_hair_sqr((1.0 - _e11));
+    return (exp((-(sigma_a_1) * (chord * _e7.y))) * ((_e19 * 0.5) * (_e7.z + _e8.z)));
 }
 
-float weft_hair_np_cell(float d0_, float d1_, float s_4) {
-    float mid = (0.5 * (d0_ + d1_));
-    float m = (mid - (6.2831855 * roundEven((mid / 6.2831855))));
-    float half_ = min((0.5 * abs((d1_ - d0_))), WEFT_PI);
-    if ((half_ < 0.0001)) {
-        float _e20 = weft_hair_trimmed_logistic(m, s_4);
-        return _e20;
-    }
-    float _e23 = weft_hair_trimmed_integral((m - half_), (m + half_), s_4);
-    return (_e23 / (2.0 * half_));
-}
-
-WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count) {
-    vec3 s_5 = vec3(0.0);
-    vec3 albedo = vec3(0.0);
-    vec3 back = vec3(0.0);
-    float weights = 0.0;
-    float g0_ = -1.5707964;
-    vec3 d0_1 = vec3(0.0);
-    uint k = 0u;
+WeftHairLobes weft_hair_fast(WeftHair hair_1, vec3 t_1, vec3 o_1, vec3 i_1) {
     WeftHairLobes out_4 = WeftHairLobes(vec3(0.0), vec3(0.0), vec3(0.0));
-    vec4 th = angles.theta;
-    vec4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
-    float _e11 = weft_hair_etap(hair_4, th.x, th.y);
-    uint cells = max(count, 1u);
-    float step_ = (WEFT_PI / float(cells));
-    float _e35 = g0_;
-    float _e43 = g0_;
-    d0_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * asin(clamp((sin(_e35) / _e11), -1.0, 1.0))) - vec3((2.0 * _e43))) + vec3(0.0, 3.1415927, 6.2831855)));
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e153 = k;
-            k = (_e153 + 1u);
-        }
-        loop_init_1 = false;
-        uint _e58 = k;
-        if ((_e58 < cells)) {
-        } else {
-            break;
-        }
-        {
-            float _e60 = g0_;
-            float g1_ = (_e60 + step_);
-            float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
-            vec3 d1_1 = (vec3(angles.phi) - (((vec3(0.0, 2.0, 4.0) * gamma_t1_) - vec3((2.0 * g1_))) + vec3(0.0, 3.1415927, 6.2831855)));
-            float _e85 = g0_;
-            float gm = (_e85 + (0.5 * step_));
-            float w = cos(gm);
-            WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            float _e98 = d0_1.x;
-            float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
-            float _e107 = d0_1.y;
-            float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
-            float _e118 = d0_1.z;
-            float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
-            vec3 lobes_1 = (((vec3(((_e8.x * _e93.a0_) * _e101)) + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494));
-            vec3 _e130 = s_5;
-            s_5 = (_e130 + (w * lobes_1));
-            vec3 _e133 = albedo;
-            albedo = (_e133 + (w * (((vec3(_e93.a0_) + _e93.a1_) + _e93.a2_) + _e93.a3_)));
-            vec3 _e144 = back;
-            back = (_e144 + (w * (vec3(_e93.a0_) + _e93.a2_)));
-            float _e151 = weights;
-            weights = (_e151 + w);
-            g0_ = g1_;
-            d0_1 = d1_1;
-        }
-    }
-    vec3 _e158 = s_5;
-    float _e159 = weights;
-    out_4.s = (_e158 / vec3(_e159));
-    vec3 _e163 = albedo;
-    float _e164 = weights;
-    out_4.albedo = (_e163 / vec3(_e164));
-    vec3 _e168 = back;
-    float _e169 = weights;
-    out_4.back = (_e168 / vec3(_e169));
-    WeftHairLobes _e172 = out_4;
-    return _e172;
+    float sin_o_1 = clamp(dot(o_1, t_1), -1.0, 1.0);
+    float sin_i_1 = clamp(dot(i_1, t_1), -1.0, 1.0);
+    float _e15 = weft_hair_safe_sqrt((1.0 - (sin_o_1 * sin_o_1)));
+    float _e19 = weft_hair_safe_sqrt((1.0 - (sin_i_1 * sin_i_1)));
+    vec3 o_perp_1 = (o_1 - (sin_o_1 * t_1));
+    vec3 i_perp_1 = (i_1 - (sin_i_1 * t_1));
+    float len2_3 = (dot(o_perp_1, o_perp_1) * dot(i_perp_1, i_perp_1));
+    float cos_phi_1 = clamp(((len2_3 > 1e-12) ? (dot(o_perp_1, i_perp_1) * inversesqrt(max(len2_3, 1e-30))) : 1.0), -1.0, 1.0);
+    float cos_half = sqrt((0.5 + (0.5 * cos_phi_1)));
+    float sin_half_1 = sqrt((0.5 - (0.5 * cos_phi_1)));
+    vec3 so = vec3(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
+    vec3 co = abs(vec3(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
+    vec3 inv_v = (vec3(1.0, 4.0, 0.25) / vec3(hair_1.v.x));
+    float e_trt = exp((-0.5 * inv_v.x));
+    float _e107 = weft_hair_sqr((e_trt * e_trt));
+    float _e111 = weft_hair_sqr((_e107 * _e107));
+    vec3 norm = (inv_v / (vec3(1.0) - vec3(_e107, _e111, e_trt)));
+    vec3 x_6 = ((_e19 * co) * inv_v);
+    vec3 u = (vec3(1.0) / (vec3(1.0) + (0.7 * x_6)));
+    vec3 bessel = ((vec3(1.0) + ((u * (vec3(1.0) - u)) * (vec3(0.181903) + (u * (vec3(-0.401835) + (u * 3.1851)))))) * inversesqrt((vec3(1.0) + (6.2831855 * x_6))));
+    vec3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - vec3(1.0)) * inv_v), vec3(0.0))) * bessel) * norm);
+    float sin_t = (sin_o_1 / hair_1.eta);
+    float _e167 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float chord_1 = (2.0 / max(_e167, 0.0001));
+    float a_5 = (_e15 * inversesqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float d_1 = (0.8162094 * hair_1.s);
+    float sd = sin(d_1);
+    float cd = cos(d_1);
+    float _e193 = weft_hair_sqr((0.4534 * hair_1.s));
+    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + _e193), 1.0));
+    float _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    float r = ((0.25 * c_r) * _e202);
+    vec3 _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float h_f = (0.6243 + (0.1898 * _e15));
+    float _e220 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
+    float _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    float h2_ = (0.4824 + (0.2778 * _e15));
+    float _e231 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
+    float _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
+    float _e242 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    vec3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
+    float _e248 = weft_hair_sqr((1.0 - _e234));
+    vec3 a2_ = (((_e248 * _e234) * t2_) * t2_);
+    vec3 ft = (_e223 * t2_);
+    vec3 a3_ = ((a2_ * ft) / (vec3(1.0) - ft));
+    float s2_fit = ((-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6))))))))));
+    float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
+    float _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_4.s = ((vec3((mp.x * r)) + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494))));
+    out_4.back = (vec3(_e223) + a2_);
+    float _e332 = weft_hair_sqr((1.0 - _e234));
+    out_4.albedo = (((vec3(_e223) + (_e332 * t2_)) + a2_) + a3_);
+    WeftHairLobes _e338 = out_4;
+    return _e338;
 }
 
 vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
@@ -495,16 +362,16 @@ vec3 hair_strand(mat3x3 frame, vec2 uv0_) {
     return _e25;
 }
 
-float hair_hash(uint x_7) {
-    uint state = ((x_7 * 747796405u) + 2891336453u);
+float hair_hash(uint x_4) {
+    uint state = ((x_4 * 747796405u) + 2891336453u);
     uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
 
-float hair_value_noise(float x_8, float period) {
+float hair_value_noise(float x_5, float period) {
     float p = max(roundEven(period), 1.0);
-    float cell = floor(x_8);
-    float f_1 = (x_8 - cell);
+    float cell = floor(x_5);
+    float f_1 = (x_5 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
     float _e19 = hair_hash(uint(c0_));

@@ -97,19 +97,6 @@ struct WeftHair {
     int _end_pad_0;
 };
 
-struct WeftHairAttenuation {
-    float a0_;
-    int _pad1_0;
-    int _pad1_1;
-    int _pad1_2;
-    float3 a1_;
-    int _pad2_0;
-    float3 a2_;
-    int _pad3_0;
-    float3 a3_;
-    float gamma_t;
-};
-
 struct WeftHairLobes {
     float3 s;
     int _pad1_0;
@@ -139,7 +126,6 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_HAIR_MIN_BETA_M = 0.05;
 static const float WEFT_HAIR_MIN_BETA_N = 0.05;
 static const uint HAIR_REFERENCE_CELLS = 64u;
-static const uint HAIR_FAST_CELLS = 12u;
 static const float HAIR_TERMINATOR = 0.25;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
@@ -182,10 +168,10 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 
 float3 weft_any_perpendicular(float3 n)
 {
-    float s_6 = ((n.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_6 + n.z));
-    float b = ((n.x * n.y) * a_1);
-    return float3((1.0 + (((s_6 * n.x) * n.x) * a_1)), (s_6 * b), (-(s_6) * n.x));
+    float s_2 = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a_2 = (-1.0 / (s_2 + n.z));
+    float b = ((n.x * n.y) * a_2);
+    return float3((1.0 + (((s_2 * n.x) * n.x) * a_2)), (s_2 * b), (-(s_2) * n.x));
 }
 
 float weft_f_dielectric(float cos_i, float eta)
@@ -195,9 +181,9 @@ float weft_f_dielectric(float cos_i, float eta)
     float g = sqrt(max(g2_, 0.0));
     float gmc = (g - c_1);
     float gpc = max((g + c_1), 1e-7);
-    float a_2 = (gmc / gpc);
+    float a_3 = (gmc / gpc);
     float b_1 = (((c_1 * gpc) - 1.0) / max(((c_1 * gmc) + 1.0), 1e-7));
-    float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b_1 * b_1))));
+    float f = saturate((((0.5 * a_3) * a_3) * (1.0 + (b_1 * b_1))));
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
@@ -269,10 +255,10 @@ float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     const float3 _e13 = weft_any_perpendicular(n_2);
-    float3 t_1 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
-    float s_7 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_2 = (cross(n_2, t_1) * s_7);
-    return float3x3(t_1, b_2, n_2);
+    float3 t_2 = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
+    float s_3 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_2 = (cross(n_2, t_2) * s_3);
+    return float3x3(t_2, b_2, n_2);
 }
 
 float2 weft_transform_uv(float2 uv, float4 st)
@@ -327,8 +313,8 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     hair.v = float4(_e13, (0.25 * _e13), (4.0 * _e13), (4.0 * _e13));
     const float _e23 = weft_hair_logistic_scale(beta_n_2);
     hair.s = _e23;
-    float a_3 = radians(alpha_deg);
-    float s0_ = sin(a_3);
+    float a_4 = radians(alpha_deg);
+    float s0_ = sin(a_4);
     const float _e29 = weft_hair_safe_sqrt((1.0 - (s0_ * s0_)));
     float s1_ = ((2.0 * _e29) * s0_);
     float c1_ = ((_e29 * _e29) - (s0_ * s0_));
@@ -341,133 +327,31 @@ WeftHair weft_hair_params(float3 sigma_a, float eta_1, float beta_m_1, float bet
     return wefthair;
 }
 
-float weft_hair_i0_(float x_2)
+float weft_hair_logistic(float x_2, float s)
 {
-    float term = 1.0;
-    float sum = 1.0;
-    int i = int(1);
-
-    float q = ((0.25 * x_2) * x_2);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            int _e22 = i;
-            i = asint(asuint(_e22) + asuint(int(1)));
-        }
-        loop_init = false;
-        int _e10 = i;
-        if ((_e10 < int(16))) {
-        } else {
-            break;
-        }
-        {
-            int _e13 = i;
-            float k_1 = float(_e13);
-            float _e15 = term;
-            term = (_e15 * (q / (k_1 * k_1)));
-            float _e19 = sum;
-            float _e20 = term;
-            sum = (_e19 + _e20);
-        }
-    }
-    float _e25 = sum;
-    return _e25;
-}
-
-float weft_hair_log_i0_(float x_3)
-{
-    if ((x_3 > 12.0)) {
-        float r = (1.0 / x_3);
-        return ((x_3 - (0.5 * log((6.2831855 * x_3)))) + log((1.0 + (r * (0.125 + (0.0703125 * r))))));
-    }
-    const float _e20 = weft_hair_i0_(x_3);
-    return log(_e20);
-}
-
-float weft_hair_mp(float cos_i_1, float cos_o, float sin_i, float sin_o, float v_1)
-{
-    float a_4 = ((cos_i_1 * cos_o) / v_1);
-    float b_6 = ((sin_i * sin_o) / v_1);
-    if ((v_1 <= 0.1)) {
-        const float _e11 = weft_hair_log_i0_(a_4);
-        return exp(((((_e11 - b_6) - (1.0 / v_1)) + 0.6931472) + log((1.0 / (2.0 * v_1)))));
-    }
-    const float _e27 = weft_hair_i0_(a_4);
-    return ((exp(-(b_6)) * _e27) / ((sinh((1.0 / v_1)) * 2.0) * v_1));
-}
-
-float4 weft_hair_longitudinal(WeftHair hair_1, float sin_o_1, float cos_o_1, float sin_i_1, float cos_i_2)
-{
-    float sin_r = ((sin_o_1 * hair_1.cos2k.y) - (cos_o_1 * hair_1.sin2k.y));
-    float cos_r = abs(((cos_o_1 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)));
-    float sin_tt = ((sin_o_1 * hair_1.cos2k.x) + (cos_o_1 * hair_1.sin2k.x));
-    float cos_tt = abs(((cos_o_1 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)));
-    float sin_trt = ((sin_o_1 * hair_1.cos2k.z) + (cos_o_1 * hair_1.sin2k.z));
-    float cos_trt = abs(((cos_o_1 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z)));
-    const float _e52 = weft_hair_mp(cos_i_2, cos_r, sin_i_1, sin_r, hair_1.v.x);
-    const float _e55 = weft_hair_mp(cos_i_2, cos_tt, sin_i_1, sin_tt, hair_1.v.y);
-    const float _e58 = weft_hair_mp(cos_i_2, cos_trt, sin_i_1, sin_trt, hair_1.v.z);
-    const float _e61 = weft_hair_mp(cos_i_2, cos_o_1, sin_i_1, sin_o_1, hair_1.v.w);
-    return float4(_e52, _e55, _e58, _e61);
-}
-
-float weft_hair_logistic(float x_4, float s)
-{
-    float e_1 = exp((-(abs(x_4)) / s));
+    float e_1 = exp((-(abs(x_2)) / s));
     const float _e8 = weft_hair_sqr((1.0 + e_1));
     return (e_1 / (s * _e8));
 }
 
-float weft_hair_trimmed_logistic(float x_5, float s_1)
+float weft_hair_trimmed_logistic(float x_3, float s_1)
 {
     float e_2 = exp((-3.1415927 / s_1));
-    const float _e5 = weft_hair_logistic(x_5, s_1);
+    const float _e5 = weft_hair_logistic(x_3, s_1);
     return ((_e5 * (1.0 + e_2)) / (1.0 - e_2));
 }
 
-float weft_hair_etap(WeftHair hair_2, float sin_o_2, float cos_o_2)
-{
-    return (sqrt(((hair_2.eta * hair_2.eta) - (sin_o_2 * sin_o_2))) / max(cos_o_2, 0.0001));
-}
-
-WeftHairAttenuation weft_hair_attenuation(WeftHair hair_3, float sin_o_3, float cos_o_3, float h)
-{
-    WeftHairAttenuation a = (WeftHairAttenuation)0;
-
-    float sin_t = (sin_o_3 / hair_3.eta);
-    const float _e9 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
-    const float _e10 = weft_hair_etap(hair_3, sin_o_3, cos_o_3);
-    float sin_gamma_t = clamp((h / _e10), -1.0, 1.0);
-    const float _e18 = weft_hair_safe_sqrt((1.0 - (sin_gamma_t * sin_gamma_t)));
-    float3 t_2 = exp((-(hair_3.sigma_a) * ((2.0 * _e18) / max(_e9, 0.0001))));
-    const float _e31 = weft_hair_safe_sqrt((1.0 - (h * h)));
-    const float _e34 = weft_f_dielectric((cos_o_3 * _e31), hair_3.eta);
-    a.a0_ = _e34;
-    a.a1_ = (((1.0 - _e34) * (1.0 - _e34)) * t_2);
-    float3 _e46 = a.a1_;
-    a.a2_ = ((_e46 * t_2) * _e34);
-    float3 _e51 = a.a2_;
-    a.a3_ = (((_e51 * t_2) * _e34) / ((1.0).xxx - (t_2 * _e34)));
-    a.gamma_t = asin(sin_gamma_t);
-    WeftHairAttenuation _e61 = a;
-    const WeftHairAttenuation wefthairattenuation = _e61;
-    return wefthairattenuation;
-}
-
-WeftHairAngles weft_hair_angles(float3 t, float3 o, float3 i_1)
+WeftHairAngles weft_hair_angles(float3 t, float3 o, float3 i)
 {
     WeftHairAngles out_2 = (WeftHairAngles)0;
 
-    float sin_o_4 = clamp(dot(o, t), -1.0, 1.0);
-    float sin_i_2 = clamp(dot(i_1, t), -1.0, 1.0);
-    const float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o_4 * sin_o_4)));
-    const float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i_2 * sin_i_2)));
-    out_2.theta = float4(sin_o_4, _e16, sin_i_2, _e20);
-    float3 o_perp = (o - (sin_o_4 * t));
-    float3 i_perp = (i_1 - (sin_i_2 * t));
+    float sin_o = clamp(dot(o, t), -1.0, 1.0);
+    float sin_i = clamp(dot(i, t), -1.0, 1.0);
+    const float _e16 = weft_hair_safe_sqrt((1.0 - (sin_o * sin_o)));
+    const float _e20 = weft_hair_safe_sqrt((1.0 - (sin_i * sin_i)));
+    out_2.theta = float4(sin_o, _e16, sin_i, _e20);
+    float3 o_perp = (o - (sin_o * t));
+    float3 i_perp = (i - (sin_i * t));
     float len2_2 = (dot(o_perp, o_perp) * dot(i_perp, i_perp));
     float cos_phi = ((len2_2 > 1e-12) ? (dot(o_perp, i_perp) * rsqrt(max(len2_2, 1e-30))) : 1.0);
     out_2.phi = acos(clamp(cos_phi, -1.0, 1.0));
@@ -476,122 +360,82 @@ WeftHairAngles weft_hair_angles(float3 t, float3 o, float3 i_1)
     return wefthairangles;
 }
 
-float weft_hair_logistic_cdf(float x_6, float s_2)
+float3 weft_hair_fast_tt_density(float sin_half, float a)
 {
-    return (1.0 / (1.0 + exp((-(x_6) / s_2))));
+    float rho2_ = ((1.0 - ((2.0 * a) * sin_half)) + (a * a));
+    float inv_rho = rsqrt(max(rho2_, 1e-8));
+    float cos_go = (max((sin_half - a), 0.0) * inv_rho);
+    float cos_gt = ((1.0 - (a * sin_half)) * inv_rho);
+    return float3(cos_go, cos_gt, (((0.25 * cos_go) * cos_gt) * inv_rho));
 }
 
-float weft_hair_trimmed_integral(float lo, float hi, float s_3)
+float3 weft_hair_fast_tt(float sin_plus, float sin_minus, float a_1, float cos_o, float eta_2, float3 sigma_a_1, float chord)
 {
-    float sum_1 = (float)0;
-
-    const float _e4 = weft_hair_logistic_cdf(-3.1415927, s_3);
-    const float _e6 = weft_hair_logistic_cdf(WEFT_PI, s_3);
-    float a_5 = clamp(lo, -3.1415927, WEFT_PI);
-    float b_7 = clamp(hi, -3.1415927, WEFT_PI);
-    const float _e13 = weft_hair_logistic_cdf(b_7, s_3);
-    const float _e14 = weft_hair_logistic_cdf(a_5, s_3);
-    sum_1 = (_e13 - _e14);
-    if ((hi > WEFT_PI)) {
-        float _e19 = sum_1;
-        const float _e24 = weft_hair_logistic_cdf(min((hi - 6.2831855), WEFT_PI), s_3);
-        sum_1 = (_e19 + (_e24 - _e4));
-    }
-    if ((lo < -3.1415927)) {
-        float _e29 = sum_1;
-        const float _e34 = weft_hair_logistic_cdf(max((lo + 6.2831855), -3.1415927), s_3);
-        sum_1 = (_e29 + (_e6 - _e34));
-    }
-    float _e37 = sum_1;
-    return (_e37 / (_e6 - _e4));
+    const float3 _e7 = weft_hair_fast_tt_density(sin_plus, a_1);
+    const float3 _e8 = weft_hair_fast_tt_density(sin_minus, a_1);
+    const float _e11 = weft_f_dielectric((cos_o * _e7.x), eta_2);
+    const float _e19 = weft_hair_sqr((1.0 - _e11));
+    return (exp((-(sigma_a_1) * (chord * _e7.y))) * ((_e19 * 0.5) * (_e7.z + _e8.z)));
 }
 
-float weft_hair_np_cell(float d0_, float d1_, float s_4)
+WeftHairLobes weft_hair_fast(WeftHair hair_1, float3 t_1, float3 o_1, float3 i_1)
 {
-    float mid = (0.5 * (d0_ + d1_));
-    float m = (mid - (6.2831855 * round((mid / 6.2831855))));
-    float half_ = min((0.5 * abs((d1_ - d0_))), WEFT_PI);
-    if ((half_ < 0.0001)) {
-        const float _e20 = weft_hair_trimmed_logistic(m, s_4);
-        return _e20;
-    }
-    const float _e23 = weft_hair_trimmed_integral((m - half_), (m + half_), s_4);
-    return (_e23 / (2.0 * half_));
-}
-
-WeftHairLobes weft_hair_mean(WeftHair hair_4, WeftHairAngles angles, uint count)
-{
-    float3 s_5 = (0.0).xxx;
-    float3 albedo = (0.0).xxx;
-    float3 back = (0.0).xxx;
-    float weights = 0.0;
-    float g0_ = -1.5707964;
-    float3 d0_1 = (float3)0;
-    uint k = 0u;
     WeftHairLobes out_3 = (WeftHairLobes)0;
 
-    float4 th = angles.theta;
-    const float4 _e8 = weft_hair_longitudinal(hair_4, th.x, th.y, th.z, th.w);
-    const float _e11 = weft_hair_etap(hair_4, th.x, th.y);
-    uint cells = max(count, 1u);
-    float step_ = (WEFT_PI / float(cells));
-    float _e35 = g0_;
-    float _e43 = g0_;
-    d0_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * asin(clamp((sin(_e35) / _e11), -1.0, 1.0))) - ((2.0 * _e43)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e153 = k;
-            k = (_e153 + 1u);
-        }
-        loop_init_1 = false;
-        uint _e58 = k;
-        if ((_e58 < cells)) {
-        } else {
-            break;
-        }
-        {
-            float _e60 = g0_;
-            float g1_ = (_e60 + step_);
-            float gamma_t1_ = asin(clamp((sin(g1_) / _e11), -1.0, 1.0));
-            float3 d1_1 = ((angles.phi).xxx - (((float3(0.0, 2.0, 4.0) * gamma_t1_) - ((2.0 * g1_)).xxx) + float3(0.0, 3.1415927, 6.2831855)));
-            float _e85 = g0_;
-            float gm = (_e85 + (0.5 * step_));
-            float w = cos(gm);
-            const WeftHairAttenuation _e93 = weft_hair_attenuation(hair_4, th.x, th.y, sin(gm));
-            float _e98 = d0_1.x;
-            const float _e101 = weft_hair_np_cell(_e98, d1_1.x, hair_4.s);
-            float _e107 = d0_1.y;
-            const float _e110 = weft_hair_np_cell(_e107, d1_1.y, hair_4.s);
-            float _e118 = d0_1.z;
-            const float _e121 = weft_hair_np_cell(_e118, d1_1.z, hair_4.s);
-            float3 lobes_1 = ((((((_e8.x * _e93.a0_) * _e101)).xxx + ((_e8.y * _e93.a1_) * _e110)) + ((_e8.z * _e93.a2_) * _e121)) + ((_e8.w * _e93.a3_) * 0.15915494));
-            float3 _e130 = s_5;
-            s_5 = (_e130 + (w * lobes_1));
-            float3 _e133 = albedo;
-            albedo = (_e133 + (w * ((((_e93.a0_).xxx + _e93.a1_) + _e93.a2_) + _e93.a3_)));
-            float3 _e144 = back;
-            back = (_e144 + (w * ((_e93.a0_).xxx + _e93.a2_)));
-            float _e151 = weights;
-            weights = (_e151 + w);
-            g0_ = g1_;
-            d0_1 = d1_1;
-        }
-    }
-    float3 _e158 = s_5;
-    float _e159 = weights;
-    out_3.s = (_e158 / (_e159).xxx);
-    float3 _e163 = albedo;
-    float _e164 = weights;
-    out_3.albedo = (_e163 / (_e164).xxx);
-    float3 _e168 = back;
-    float _e169 = weights;
-    out_3.back = (_e168 / (_e169).xxx);
-    WeftHairLobes _e172 = out_3;
-    const WeftHairLobes wefthairlobes = _e172;
+    float sin_o_1 = clamp(dot(o_1, t_1), -1.0, 1.0);
+    float sin_i_1 = clamp(dot(i_1, t_1), -1.0, 1.0);
+    const float _e15 = weft_hair_safe_sqrt((1.0 - (sin_o_1 * sin_o_1)));
+    const float _e19 = weft_hair_safe_sqrt((1.0 - (sin_i_1 * sin_i_1)));
+    float3 o_perp_1 = (o_1 - (sin_o_1 * t_1));
+    float3 i_perp_1 = (i_1 - (sin_i_1 * t_1));
+    float len2_3 = (dot(o_perp_1, o_perp_1) * dot(i_perp_1, i_perp_1));
+    float cos_phi_1 = clamp(((len2_3 > 1e-12) ? (dot(o_perp_1, i_perp_1) * rsqrt(max(len2_3, 1e-30))) : 1.0), -1.0, 1.0);
+    float cos_half = sqrt((0.5 + (0.5 * cos_phi_1)));
+    float sin_half_1 = sqrt((0.5 - (0.5 * cos_phi_1)));
+    float3 so = float3(((sin_o_1 * hair_1.cos2k.y) - (_e15 * hair_1.sin2k.y)), ((sin_o_1 * hair_1.cos2k.x) + (_e15 * hair_1.sin2k.x)), ((sin_o_1 * hair_1.cos2k.z) + (_e15 * hair_1.sin2k.z)));
+    float3 co = abs(float3(((_e15 * hair_1.cos2k.y) + (sin_o_1 * hair_1.sin2k.y)), ((_e15 * hair_1.cos2k.x) - (sin_o_1 * hair_1.sin2k.x)), ((_e15 * hair_1.cos2k.z) - (sin_o_1 * hair_1.sin2k.z))));
+    float3 inv_v = (float3(1.0, 4.0, 0.25) / (hair_1.v.x).xxx);
+    float e_trt = exp((-0.5 * inv_v.x));
+    const float _e107 = weft_hair_sqr((e_trt * e_trt));
+    const float _e111 = weft_hair_sqr((_e107 * _e107));
+    float3 norm = (inv_v / ((1.0).xxx - float3(_e107, _e111, e_trt)));
+    float3 x_6 = ((_e19 * co) * inv_v);
+    float3 u = ((1.0).xxx / ((1.0).xxx + (0.7 * x_6)));
+    float3 bessel = (((1.0).xxx + ((u * ((1.0).xxx - u)) * ((0.181903).xxx + (u * ((-0.401835).xxx + (u * 3.1851)))))) * rsqrt(((1.0).xxx + (6.2831855 * x_6))));
+    float3 mp = ((exp(min(((((_e19 * co) - (sin_i_1 * so)) - (1.0).xxx) * inv_v), (0.0).xxx)) * bessel) * norm);
+    float sin_t = (sin_o_1 / hair_1.eta);
+    const float _e167 = weft_hair_safe_sqrt((1.0 - (sin_t * sin_t)));
+    float chord_1 = (2.0 / max(_e167, 0.0001));
+    float a_5 = (_e15 * rsqrt(max(((hair_1.eta * hair_1.eta) - (sin_o_1 * sin_o_1)), 1e-8)));
+    float d_1 = (0.8162094 * hair_1.s);
+    float sd = sin(d_1);
+    float cd = cos(d_1);
+    const float _e193 = weft_hair_sqr((0.4534 * hair_1.s));
+    float c_r = sqrt(min(((0.5 + (0.5 * cos_phi_1)) + _e193), 1.0));
+    const float _e202 = weft_f_dielectric((_e15 * c_r), hair_1.eta);
+    float r = ((0.25 * c_r) * _e202);
+    const float3 _e212 = weft_hair_fast_tt(((sin_half_1 * cd) + (cos_half * sd)), ((sin_half_1 * cd) - (cos_half * sd)), a_5, _e15, hair_1.eta, hair_1.sigma_a, chord_1);
+    float h_f = (0.6243 + (0.1898 * _e15));
+    const float _e220 = weft_hair_safe_sqrt((1.0 - (h_f * h_f)));
+    const float _e223 = weft_f_dielectric((_e15 * _e220), hair_1.eta);
+    float h2_ = (0.4824 + (0.2778 * _e15));
+    const float _e231 = weft_hair_safe_sqrt((1.0 - (h2_ * h2_)));
+    const float _e234 = weft_f_dielectric((_e15 * _e231), hair_1.eta);
+    const float _e242 = weft_hair_safe_sqrt((1.0 - (((h2_ * h2_) * a_5) * a_5)));
+    float3 t2_ = exp((-(hair_1.sigma_a) * (chord_1 * _e242)));
+    const float _e248 = weft_hair_sqr((1.0 - _e234));
+    float3 a2_ = (((_e248 * _e234) * t2_) * t2_);
+    float3 ft = (_e223 * t2_);
+    float3 a3_ = ((a2_ * ft) / ((1.0).xxx - ft));
+    float s2_fit = ((-9.2609 + (a_5 * (72.357 + (a_5 * (-153.75 + (a_5 * (-67.745 + (a_5 * 239.74)))))))) + (hair_1.s * ((65.993 + (a_5 * (-624.68 + (a_5 * (1704.7 + (a_5 * (-1105.8 - (a_5 * 430.94)))))))) + (hair_1.s * (-107.38 + (a_5 * (1069.8 + (a_5 * (-3127.5 + (a_5 * 2706.6))))))))));
+    float s_trt = sqrt(max(exp(clamp(s2_fit, -9.0, 2.5)), (hair_1.s * hair_1.s)));
+    const float _e310 = weft_hair_trimmed_logistic(acos(cos_phi_1), s_trt);
+    out_3.s = ((((mp.x * r)).xxx + (mp.y * _e212)) + (mp.z * ((a2_ * _e310) + (a3_ * 0.15915494))));
+    out_3.back = ((_e223).xxx + a2_);
+    const float _e332 = weft_hair_sqr((1.0 - _e234));
+    out_3.albedo = ((((_e223).xxx + (_e332 * t2_)) + a2_) + a3_);
+    WeftHairLobes _e338 = out_3;
+    const WeftHairLobes wefthairlobes = _e338;
     return wefthairlobes;
 }
 
@@ -604,9 +448,9 @@ float3 hair_strand(float3x3 frame, float2 uv0_)
     {
         float4 _e17 = flow_map.Sample(material_sampler, uv0_);
         float2 f_1 = ((_e17.xy * 2.0) - (1.0).xx);
-        float len2_3 = dot(f_1, f_1);
+        float len2_4 = dot(f_1, f_1);
         float2 _e25 = ts;
-        ts = ((len2_3 > 0.0001) ? (f_1 * rsqrt(max(len2_3, 1e-12))) : _e25);
+        ts = ((len2_4 > 0.0001) ? (f_1 * rsqrt(max(len2_4, 1e-12))) : _e25);
     }
     float _e35 = ts.x;
     float _e39 = ts.y;
@@ -614,9 +458,9 @@ float3 hair_strand(float3x3 frame, float2 uv0_)
     return _e43;
 }
 
-float hair_hash(uint x_7)
+float hair_hash(uint x_4)
 {
-    uint state = ((x_7 * 747796405u) + 2891336453u);
+    uint state = ((x_4 * 747796405u) + 2891336453u);
     uint word = (((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u);
     return (float(((word >> 22u) ^ word)) * 2.3283064e-10);
 }
@@ -625,11 +469,11 @@ uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-float hair_value_noise(float x_8, float period)
+float hair_value_noise(float x_5, float period)
 {
     float p = max(round(period), 1.0);
-    float cell = floor(x_8);
-    float f_2 = (x_8 - cell);
+    float cell = floor(x_5);
+    float f_2 = (x_5 - cell);
     float c0_ = (cell - (p * floor((cell / p))));
     float c1_1 = (((c0_ + 1.0) >= p) ? 0.0 : (c0_ + 1.0));
     const float _e19 = hair_hash(naga_f2u32(c0_));
@@ -644,8 +488,8 @@ float hair_jitter(float2 uv0_1)
     float _e9 = material.anisotropic_direction;
     float a_6 = radians(_e9);
     float c_2 = cos(a_6);
-    float s_8 = sin(a_6);
-    float2 rotated = float2(((c_2 * uv0_1.x) + (s_8 * uv0_1.y)), ((-(s_8) * uv0_1.x) + (c_2 * uv0_1.y)));
+    float s_4 = sin(a_6);
+    float2 rotated = float2(((c_2 * uv0_1.x) + (s_4 * uv0_1.y)), ((-(s_4) * uv0_1.x) + (c_2 * uv0_1.y)));
     float4 _e30 = material.jitter_map_st;
     const float2 _e31 = weft_transform_uv(((mask > 0.5) ? rotated : uv0_1), _e30);
     float4 _e34 = jitter_map.Sample(material_sampler, _e31);
@@ -749,7 +593,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 base = saturate(base_rgba.xyz);
     float alpha = saturate(base_rgba.w);
     const WeftSurface _e19 = weft_surface(in_2.world_position, in_2.world_normal);
-    float3 v_2 = _e19.v;
+    float3 v_1 = _e19.v;
     float3 n_3 = _e19.n;
     const float3x3 _e23 = weft_tangent_frame(n_3, in_2.world_tangent);
     const float3 _e25 = hair_strand(_e23, in_2.uv0_);
@@ -767,20 +611,20 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         float _e48 = material.azimuthal_roughness;
         float _e51 = material.scale_angle;
         const WeftHair _e52 = weft_hair_params(_e39, _e42, _e45, _e48, _e51);
-        const WeftHairAngles _e53 = weft_hair_angles(_e35, v_2, _e28);
+        const WeftHairAngles _e53 = weft_hair_angles(_e35, v_1, _e28);
         {
-            const WeftHairLobes _e56 = weft_hair_mean(_e52, _e53, HAIR_FAST_CELLS);
-            lobes = _e56;
+            const WeftHairLobes _e55 = weft_hair_fast(_e52, _e35, v_1, _e28);
+            lobes = _e55;
         }
         float body = smoothstep(-0.25, HAIR_TERMINATOR, n_dot_l);
-        float3 _e63 = lobes.back;
-        float3 multiple = (base * ((1.0).xxx - _e63));
-        float3 _e67 = lobes.s;
-        float3 direct = ((_e67 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
-        float3 _e76 = lobes.back;
-        color = ((direct * _e29) + (_e30 * (multiple + _e76)));
+        float3 _e62 = lobes.back;
+        float3 multiple = (base * ((1.0).xxx - _e62));
+        float3 _e66 = lobes.s;
+        float3 direct = ((_e66 * body) + (multiple * (WEFT_INV_PI * saturate(n_dot_l))));
+        float3 _e75 = lobes.back;
+        color = ((direct * _e29) + (_e30 * (multiple + _e75)));
     }
-    float3 _e80 = color;
-    float3 radiance = clamp(_e80, (0.0).xxx, (65504.0).xxx);
+    float3 _e79 = color;
+    float3 radiance = clamp(_e79, (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha);
 }

@@ -95,7 +95,6 @@ static const float WEFT_DIELECTRIC_F0_ = 0.04;
 static const float WEFT_HAIR_MIN_BETA_M = 0.05;
 static const float WEFT_HAIR_MIN_BETA_N = 0.05;
 static const uint HAIR_REFERENCE_CELLS = 64u;
-static const uint HAIR_FAST_CELLS = 12u;
 static const float HAIR_TERMINATOR = 0.25;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }

@@ -87,7 +87,6 @@ const float WEFT_DIELECTRIC_F0_ = 0.04;
 const float WEFT_HAIR_MIN_BETA_M = 0.05;
 const float WEFT_HAIR_MIN_BETA_N = 0.05;
 const uint HAIR_REFERENCE_CELLS = 64u;
-const uint HAIR_FAST_CELLS = 12u;
 const float HAIR_TERMINATOR = 0.25;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };

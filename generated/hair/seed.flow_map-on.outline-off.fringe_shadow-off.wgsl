@@ -80,7 +80,6 @@ const WEFT_DIELECTRIC_F0_: f32 = 0.04f;
 const WEFT_HAIR_MIN_BETA_M: f32 = 0.05f;
 const WEFT_HAIR_MIN_BETA_N: f32 = 0.05f;
 const HAIR_REFERENCE_CELLS: u32 = 64u;
-const HAIR_FAST_CELLS: u32 = 12u;
 const HAIR_TERMINATOR: f32 = 0.25f;
 
 @group(0) @binding(0) 

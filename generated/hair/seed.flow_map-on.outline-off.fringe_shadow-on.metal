@@ -95,7 +95,6 @@ constant float WEFT_DIELECTRIC_F0_ = 0.04;
 constant float WEFT_HAIR_MIN_BETA_M = 0.05;
 constant float WEFT_HAIR_MIN_BETA_N = 0.05;
 constant uint HAIR_REFERENCE_CELLS = 64u;
-constant uint HAIR_FAST_CELLS = 12u;
 constant float HAIR_TERMINATOR = 0.25;
 
 metal::float3 weft_safe_normalize(

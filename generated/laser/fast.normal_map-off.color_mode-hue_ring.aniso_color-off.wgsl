@@ -261,8 +261,8 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
 }
 
 fn weft_ior_from_f0_(f0_2: vec3<f32>) -> vec3<f32> {
-    let s = sqrt(clamp(f0_2, vec3(0f), vec3(0.9999f)));
-    return ((vec3(1f) + s) / (vec3(1f) - s));
+    let s_1 = sqrt(clamp(f0_2, vec3(0f), vec3(0.9999f)));
+    return ((vec3(1f) + s_1) / (vec3(1f) - s_1));
 }
 
 fn weft_film_ior(film_ior: f32, thickness_nm: f32) -> f32 {
@@ -277,9 +277,9 @@ fn weft_fresnel_amplitudes(n_i: f32, n_t: f32, cos_i: f32, cos_t: f32) -> vec2<f
 
 fn weft_film_base_amplitudes(n2_: f32, cos2_: f32, n3_: vec3<f32>, sin1_sq: f32) -> array<vec3<f32>, 2> {
     let cos3_ = sqrt(max((vec3(1f) - (vec3(sin1_sq) / (n3_ * n3_))), vec3(0f)));
-    let s_1 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(0.000000000001f)));
-    let p = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
-    return array<vec3<f32>, 2>(s_1, p);
+    let s_2 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(0.000000000001f)));
+    let p_1 = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
+    return array<vec3<f32>, 2>(s_2, p_1);
 }
 
 fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> WeftFilmStack {
@@ -297,14 +297,59 @@ fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
-    let phase = ((6.2831855f * opd_nm) * 0.001f);
-    let sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
-    let sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
-    let ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5f * sa) * sa)));
-    let tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5f * sb_1) * sb_1)));
-    let xyz = vec3<f32>(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
-    return ((WEFT_XYZ_TO_REC709_ * xyz) / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
+    return (WEFT_XYZ_TO_REC709_[axis] / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+}
+
+fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1_: vec3<f32>, k2_: vec3<f32>, k3_: vec3<f32>, k4_: vec3<f32>) -> vec3<f32> {
+    let c1_ = cos((phase * mu));
+    let sg = (phase * sigma);
+    let g1_ = exp(((-0.5f * sg) * sg));
+    let c2_ = (((2f * c1_) * c1_) - 1f);
+    let c3_ = (((2f * c1_) * c2_) - c1_);
+    let c4_ = (((2f * c2_) * c2_) - 1f);
+    let g2_ = ((g1_ * g1_) * (g1_ * g1_));
+    let g3_ = ((g2_ * g2_) * g1_);
+    let g4_ = ((g2_ * g2_) * (g2_ * g2_));
+    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+}
+
+fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
+    var sum: vec3<f32>;
+
+    let phase_1 = ((6.2831855f * opd_nm) * 0.001f);
+    let k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
+    let k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    let k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    let k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    let _e60 = weft_film_rgb_of_xyz(0u);
+    let _e62 = weft_film_rgb_of_xyz(1u);
+    let _e64 = weft_film_rgb_of_xyz(2u);
+    let _e71 = weft_film_lobe_orders(phase_1, 1.64821f, 0.112563f, k1_1, k2_1, k3_1, k4_1);
+    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
+    let _e74 = sum;
+    let _e79 = weft_film_lobe_orders(phase_1, 2.23783f, 0.097781f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
+    let _e82 = sum;
+    let _e87 = weft_film_lobe_orders(phase_1, 1.51945f, 0.0710853f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
+    let _e90 = sum;
+    let _e95 = weft_film_lobe_orders(phase_1, 1.95281f, 0.142693f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
+    let _e98 = sum;
+    let _e103 = weft_film_lobe_orders(phase_1, 1.87261f, 0.0790523f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
+    let _e106 = sum;
+    let _e111 = weft_film_lobe_orders(phase_1, 1.72342f, 0.0996288f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
+    let _e114 = sum;
+    let _e119 = weft_film_lobe_orders(phase_1, 2.31367f, 0.0384759f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
+    let _e122 = sum;
+    let _e127 = weft_film_lobe_orders(phase_1, 2.20514f, 0.109465f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
+    let _e130 = sum;
+    return (2f * _e130);
 }
 
 fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
@@ -313,66 +358,24 @@ fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
     let big_r23_ = (r23_ * r23_);
     let big_r123_ = min((big_r12_ * big_r23_), vec3(0.9999f));
     let rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1f) - big_r123_));
-    let sign_ = select(vec3(1f), vec3(-1f), ((-(r12_) * r23_) < vec3(0f)));
-    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
+    let ratio = clamp((-(r12_) * r23_), vec3(-0.99995f), vec3(0.99995f));
+    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
 }
 
-fn weft_film_fourier(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
-    var reflectance: vec3<f32>;
-    var c_s: vec3<f32>;
-    var c_p: vec3<f32>;
-    var m: u32 = 1u;
-
-    let _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if _e4.total_internal_reflection {
+fn weft_film_fourier_layers(cos_theta1_1: f32, d1_: f32, d2_: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
+    let d_mean = (0.5f * (max(d1_, 0f) + max(d2_, 0f)));
+    let _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if _e12.total_internal_reflection {
         return vec3(1f);
     }
-    let n2_1 = _e4.n2_;
-    let cos2_2 = _e4.cos2_;
-    let a12_ = _e4.r12_;
-    let a23_ = _e4.r23_;
-    let opd = (((2f * n2_1) * max(thickness_nm_2, 0f)) * cos2_2);
-    let _e20 = weft_film_series(a12_.x, a23_[0]);
-    let _e23 = weft_film_series(a12_.y, a23_[1]);
-    reflectance = (_e20.dc + _e23.dc);
-    c_s = _e20.first;
-    c_p = _e23.first;
-    loop {
-        let _e34 = m;
-        if (_e34 <= WEFT_FILM_ORDERS) {
-        } else {
-            break;
-        }
-        {
-            let _e37 = c_s;
-            c_s = (_e37 * _e20.ratio);
-            let _e40 = c_p;
-            c_p = (_e40 * _e23.ratio);
-            let _e43 = reflectance;
-            let _e44 = c_s;
-            let _e45 = c_p;
-            let _e49 = m;
-            let _e52 = weft_film_sensitivity((f32(_e49) * opd));
-            reflectance = (_e43 + ((2f * (_e44 + _e45)) * _e52));
-        }
-        continuing {
-            let _e56 = m;
-            m = (_e56 + 1u);
-        }
-    }
-    let _e58 = reflectance;
-    return clamp((0.5f * _e58), vec3(0f), vec3(1f));
-}
-
-fn laser_film_fast(cos_theta: f32, d1_: f32, d2_: f32, f0_3: vec3<f32>) -> vec3<f32> {
-    let _e6 = material.film_ior;
-    let _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if (abs((d1_ - d2_)) < 0.5f) {
-        return _e7;
-    }
-    let _e14 = material.film_ior;
-    let _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return (0.5f * (_e7 + _e15));
+    let _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
+    let _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
+    let path = ((2f * _e12.n2_) * _e12.cos2_);
+    let _e37 = weft_film_orders((path * max(d1_, 0f)), _e20, _e25);
+    let r1_ = ((_e20.dc + _e25.dc) + _e37);
+    let _e45 = weft_film_orders((path * max(d2_, 0f)), _e20, _e25);
+    let r2_ = ((_e20.dc + _e25.dc) + _e45);
+    return clamp((0.25f * (r1_ + r2_)), vec3(0f), vec3(1f));
 }
 
 @vertex 
@@ -438,13 +441,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     film_cos = _e57.n_dot_v;
     surface_base = base;
     let _e66 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e66, metallic);
+    let f0_3 = mix(vec3(0.04f), _e66, metallic);
     let _e68 = surface_base;
     let diffuse_albedo = (_e68 * (1f - metallic));
     let _e73 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
-    let _e75 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    let _e75 = weft_f_schlick(f0_3, _e57.v_dot_h);
     f_light = _e75;
-    let _e77 = weft_env_brdf_from_lut(f0_4, _e73);
+    let _e77 = weft_env_brdf_from_lut(f0_3, _e73);
     e_spec = _e77;
     {
         let _e81 = material.thickness_min;
@@ -458,37 +461,39 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         light_cos = _e57.v_dot_h;
         {
             let _e103 = film_cos;
-            let _e104 = laser_film_fast(_e103, d1_1, d2_1, f0_4);
-            film_view = _e104;
-            let _e105 = light_cos;
-            let _e106 = laser_film_fast(_e105, d1_1, d2_1, f0_4);
-            film_light = _e106;
+            let _e106 = material.film_ior;
+            let _e107 = weft_film_fourier_layers(_e103, d1_1, d2_1, _e106, f0_3);
+            film_view = _e107;
+            let _e108 = light_cos;
+            let _e111 = material.film_ior;
+            let _e112 = weft_film_fourier_layers(_e108, d1_1, d2_1, _e111, f0_3);
+            film_light = _e112;
         }
-        let _e107 = f_light;
-        let _e108 = film_light;
-        f_light = mix(_e107, _e108, strength);
-        let _e110 = e_spec;
-        let _e111 = film_view;
-        e_spec = mix(_e110, (_e111 * (_e73.x + _e73.y)), strength);
+        let _e113 = f_light;
+        let _e114 = film_light;
+        f_light = mix(_e113, _e114, strength);
+        let _e116 = e_spec;
+        let _e117 = film_view;
+        e_spec = mix(_e116, (_e117 * (_e73.x + _e73.y)), strength);
     }
-    let _e119 = e_spec;
-    let kd = max((vec3(1f) - _e119), vec3(0f));
-    let _e126 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
-    let _e127 = n;
-    let _e129 = weft_d_ggx_nh(_e127, _e57.h, roughness_6);
-    let _e131 = f_light;
-    let specular = ((_e129 * _e126) * _e131);
-    let _e133 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e133);
-    let _e136 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e136) * _e57.n_dot_l);
-    let _e141 = n;
-    let _e143 = weft_prefiltered_radiance(reflect(-(v_2), _e141), roughness_6);
-    let _e144 = e_spec;
-    let indirect_specular = ((_e143 * _e144) * ao);
+    let _e125 = e_spec;
+    let kd = max((vec3(1f) - _e125), vec3(0f));
+    let _e132 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    let _e133 = n;
+    let _e135 = weft_d_ggx_nh(_e133, _e57.h, roughness_6);
+    let _e137 = f_light;
+    let specular = ((_e135 * _e132) * _e137);
+    let _e139 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e139);
+    let _e142 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e142) * _e57.n_dot_l);
     let _e147 = n;
-    let _e148 = weft_sh_irradiance(_e147);
-    let indirect_diffuse = (((_e148 * ao) * kd) * diffuse_albedo);
+    let _e149 = weft_prefiltered_radiance(reflect(-(v_2), _e147), roughness_6);
+    let _e150 = e_spec;
+    let indirect_specular = ((_e149 * _e150) * ao);
+    let _e153 = n;
+    let _e154 = weft_sh_irradiance(_e153);
+    let indirect_diffuse = (((_e154 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

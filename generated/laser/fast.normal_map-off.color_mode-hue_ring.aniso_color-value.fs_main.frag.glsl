@@ -137,10 +137,10 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 }
 
 vec3 weft_any_perpendicular(vec3 n_1) {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a);
-    return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
@@ -258,8 +258,8 @@ mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_5);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_5, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_5, t) * s_2);
     return mat3x3(t, b_1, n_5);
 }
 
@@ -268,8 +268,8 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
 }
 
 vec3 weft_ior_from_f0_(vec3 f0_2) {
-    vec3 s_2 = sqrt(clamp(f0_2, vec3(0.0), vec3(0.9999)));
-    return ((vec3(1.0) + s_2) / (vec3(1.0) - s_2));
+    vec3 s_3 = sqrt(clamp(f0_2, vec3(0.0), vec3(0.9999)));
+    return ((vec3(1.0) + s_3) / (vec3(1.0) - s_3));
 }
 
 float weft_film_ior(float film_ior, float thickness_nm) {
@@ -284,9 +284,9 @@ vec2 weft_fresnel_amplitudes(float n_i, float n_t, float cos_i, float cos_t) {
 
 vec3[2] weft_film_base_amplitudes(float n2_, float cos2_, vec3 n3_, float sin1_sq) {
     vec3 cos3_ = sqrt(max((vec3(1.0) - (vec3(sin1_sq) / (n3_ * n3_))), vec3(0.0)));
-    vec3 s_3 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(1e-12)));
-    vec3 p = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(1e-12)));
-    return vec3[2](s_3, p);
+    vec3 s_4 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(1e-12)));
+    vec3 p_1 = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(1e-12)));
+    return vec3[2](s_4, p_1);
 }
 
 WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float film_ior_1, vec3 base_f0_) {
@@ -304,14 +304,58 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-vec3 weft_film_sensitivity(float opd_nm) {
-    float phase = ((6.2831855 * opd_nm) * 0.001);
-    vec4 sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
-    vec4 sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
-    vec4 ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5 * sa) * sa)));
-    vec4 tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5 * sb_1) * sb_1)));
-    vec3 xyz = vec3(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
-    return ((WEFT_XYZ_TO_REC709_ * xyz) / vec3(130.93048, 100.96242, 95.96065));
+vec3 weft_film_rgb_of_xyz(uint axis) {
+    return (WEFT_XYZ_TO_REC709_[axis] / vec3(130.93048, 100.96242, 95.96065));
+}
+
+vec3 weft_film_lobe_orders(float phase, float mu, float sigma, vec3 k1_, vec3 k2_, vec3 k3_, vec3 k4_) {
+    float c1_ = cos((phase * mu));
+    float sg = (phase * sigma);
+    float g1_ = exp(((-0.5 * sg) * sg));
+    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
+    float c3_ = (((2.0 * c1_) * c2_) - c1_);
+    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
+    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
+    float g3_ = ((g2_ * g2_) * g1_);
+    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
+    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+}
+
+vec3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p) {
+    vec3 sum = vec3(0.0);
+    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
+    vec3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
+    vec3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    vec3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    vec3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    vec3 _e60 = weft_film_rgb_of_xyz(0u);
+    vec3 _e62 = weft_film_rgb_of_xyz(1u);
+    vec3 _e64 = weft_film_rgb_of_xyz(2u);
+    vec3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
+    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
+    vec3 _e74 = sum;
+    vec3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
+    vec3 _e82 = sum;
+    vec3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
+    vec3 _e90 = sum;
+    vec3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
+    vec3 _e98 = sum;
+    vec3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
+    vec3 _e106 = sum;
+    vec3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
+    vec3 _e114 = sum;
+    vec3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
+    vec3 _e122 = sum;
+    vec3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
+    vec3 _e130 = sum;
+    return (2.0 * _e130);
 }
 
 WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
@@ -320,81 +364,38 @@ WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
     vec3 big_r23_ = (r23_ * r23_);
     vec3 big_r123_ = min((big_r12_ * big_r23_), vec3(0.9999));
     vec3 rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1.0) - big_r123_));
-    vec3 sign_ = mix(vec3(1.0), vec3(-1.0), lessThan((-(r12_) * r23_), vec3(0.0)));
-    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
+    vec3 ratio = clamp((-(r12_) * r23_), vec3(-0.99995), vec3(0.99995));
+    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
 }
 
-vec3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_2, vec3 base_f0_1) {
-    vec3 reflectance = vec3(0.0);
-    vec3 c_s = vec3(0.0);
-    vec3 c_p = vec3(0.0);
-    uint m = 1u;
-    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if (_e4.total_internal_reflection) {
+vec3 weft_film_fourier_layers(float cos_theta1_1, float d1_, float d2_, float film_ior_2, vec3 base_f0_1) {
+    float d_mean = (0.5 * (max(d1_, 0.0) + max(d2_, 0.0)));
+    WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if (_e12.total_internal_reflection) {
         return vec3(1.0);
     }
-    float n2_1 = _e4.n2_;
-    float cos2_2 = _e4.cos2_;
-    vec2 a12_ = _e4.r12_;
-    vec3 a23_[2] = _e4.r23_;
-    float opd = (((2.0 * n2_1) * max(thickness_nm_2, 0.0)) * cos2_2);
-    WeftFilmSeries _e20 = weft_film_series(a12_.x, a23_[0]);
-    WeftFilmSeries _e23 = weft_film_series(a12_.y, a23_[1]);
-    reflectance = (_e20.dc + _e23.dc);
-    c_s = _e20.first;
-    c_p = _e23.first;
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e56 = m;
-            m = (_e56 + 1u);
-        }
-        loop_init = false;
-        uint _e34 = m;
-        if ((_e34 <= WEFT_FILM_ORDERS)) {
-        } else {
-            break;
-        }
-        {
-            vec3 _e37 = c_s;
-            c_s = (_e37 * _e20.ratio);
-            vec3 _e40 = c_p;
-            c_p = (_e40 * _e23.ratio);
-            vec3 _e43 = reflectance;
-            vec3 _e44 = c_s;
-            vec3 _e45 = c_p;
-            uint _e49 = m;
-            vec3 _e52 = weft_film_sensitivity((float(_e49) * opd));
-            reflectance = (_e43 + ((2.0 * (_e44 + _e45)) * _e52));
-        }
-    }
-    vec3 _e58 = reflectance;
-    return clamp((0.5 * _e58), vec3(0.0), vec3(1.0));
+    WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
+    WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
+    float path = ((2.0 * _e12.n2_) * _e12.cos2_);
+    vec3 _e37 = weft_film_orders((path * max(d1_, 0.0)), _e20, _e25);
+    vec3 r1_ = ((_e20.dc + _e25.dc) + _e37);
+    vec3 _e45 = weft_film_orders((path * max(d2_, 0.0)), _e20, _e25);
+    vec3 r2_ = ((_e20.dc + _e25.dc) + _e45);
+    return clamp((0.25 * (r1_ + r2_)), vec3(0.0), vec3(1.0));
 }
 
 float laser_cos_in_plane(vec3 n_6, vec3 v_2, vec3 direction) {
-    vec3 p_1 = cross(direction, n_6);
-    float p_len = length(p_1);
+    vec3 p_2 = cross(direction, n_6);
+    float p_len = length(p_2);
     if ((p_len < 0.0001)) {
         float _e8 = weft_clamp_cos(dot(n_6, v_2));
         return _e8;
     }
-    vec3 p_unit = (p_1 / vec3(p_len));
+    vec3 p_unit = (p_2 / vec3(p_len));
     vec3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
     float _e19 = weft_clamp_cos((dot(n_6, v_in_plane) / max(len, 0.0001)));
     return _e19;
-}
-
-vec3 laser_film_fast(float cos_theta, float d1_, float d2_, vec3 f0_3) {
-    float _e6 = _group_1_binding_0_fs.film_ior;
-    vec3 _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if ((abs((d1_ - d2_)) < 0.5)) {
-        return _e7;
-    }
-    float _e14 = _group_1_binding_0_fs.film_ior;
-    vec3 _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return (0.5 * (_e7 + _e15));
 }
 
 void main() {
@@ -450,13 +451,13 @@ void main() {
     }
     surface_base = base;
     vec3 _e87 = surface_base;
-    vec3 f0_4 = mix(vec3(0.04), _e87, metallic);
+    vec3 f0_3 = mix(vec3(0.04), _e87, metallic);
     vec3 _e89 = surface_base;
     vec3 diffuse_albedo = (_e89 * (1.0 - metallic));
     vec2 _e94 = weft_env_brdf_lut(_e57.n_dot_v, roughness_6);
-    vec3 _e96 = weft_f_schlick(f0_4, _e57.v_dot_h);
+    vec3 _e96 = weft_f_schlick(f0_3, _e57.v_dot_h);
     f_light = _e96;
-    vec3 _e98 = weft_env_brdf_from_lut(f0_4, _e94);
+    vec3 _e98 = weft_env_brdf_from_lut(f0_3, _e94);
     e_spec = _e98;
     {
         float _e102 = _group_1_binding_0_fs.thickness_min;
@@ -474,37 +475,39 @@ void main() {
         }
         {
             float _e125 = film_cos;
-            vec3 _e126 = laser_film_fast(_e125, d1_1, d2_1, f0_4);
-            film_view = _e126;
-            float _e127 = light_cos;
-            vec3 _e128 = laser_film_fast(_e127, d1_1, d2_1, f0_4);
-            film_light = _e128;
+            float _e128 = _group_1_binding_0_fs.film_ior;
+            vec3 _e129 = weft_film_fourier_layers(_e125, d1_1, d2_1, _e128, f0_3);
+            film_view = _e129;
+            float _e130 = light_cos;
+            float _e133 = _group_1_binding_0_fs.film_ior;
+            vec3 _e134 = weft_film_fourier_layers(_e130, d1_1, d2_1, _e133, f0_3);
+            film_light = _e134;
         }
-        vec3 _e129 = f_light;
-        vec3 _e130 = film_light;
-        f_light = mix(_e129, _e130, strength);
-        vec3 _e132 = e_spec;
-        vec3 _e133 = film_view;
-        e_spec = mix(_e132, (_e133 * (_e94.x + _e94.y)), strength);
+        vec3 _e135 = f_light;
+        vec3 _e136 = film_light;
+        f_light = mix(_e135, _e136, strength);
+        vec3 _e138 = e_spec;
+        vec3 _e139 = film_view;
+        e_spec = mix(_e138, (_e139 * (_e94.x + _e94.y)), strength);
     }
-    vec3 _e141 = e_spec;
-    vec3 kd = max((vec3(1.0) - _e141), vec3(0.0));
-    float _e148 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
-    vec3 _e149 = n;
-    float _e151 = weft_d_ggx_nh(_e149, _e57.h, roughness_6);
-    vec3 _e153 = f_light;
-    vec3 specular = ((_e151 * _e148) * _e153);
-    vec3 _e155 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (kd * _e155);
-    vec3 _e158 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + specular) * _e158) * _e57.n_dot_l);
-    vec3 _e163 = n;
-    vec3 _e165 = weft_prefiltered_radiance(reflect(-(v_3), _e163), roughness_6);
-    vec3 _e166 = e_spec;
-    vec3 indirect_specular = ((_e165 * _e166) * ao);
+    vec3 _e147 = e_spec;
+    vec3 kd = max((vec3(1.0) - _e147), vec3(0.0));
+    float _e154 = weft_v_smith_ggx_correlated(_e57.n_dot_v, _e57.n_dot_l, roughness_6);
+    vec3 _e155 = n;
+    float _e157 = weft_d_ggx_nh(_e155, _e57.h, roughness_6);
+    vec3 _e159 = f_light;
+    vec3 specular = ((_e157 * _e154) * _e159);
+    vec3 _e161 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (kd * _e161);
+    vec3 _e164 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + specular) * _e164) * _e57.n_dot_l);
     vec3 _e169 = n;
-    vec3 _e170 = weft_sh_irradiance(_e169);
-    vec3 indirect_diffuse = (((_e170 * ao) * kd) * diffuse_albedo);
+    vec3 _e171 = weft_prefiltered_radiance(reflect(-(v_3), _e169), roughness_6);
+    vec3 _e172 = e_spec;
+    vec3 indirect_specular = ((_e171 * _e172) * ao);
+    vec3 _e175 = n;
+    vec3 _e176 = weft_sh_irradiance(_e175);
+    vec3 indirect_diffuse = (((_e176 * ao) * kd) * diffuse_albedo);
     vec3 color = ((direct + indirect_specular) + indirect_diffuse);
     _fs2p_location0 = vec4(clamp(color, vec3(0.0), vec3(65504.0)), alpha);
     return;

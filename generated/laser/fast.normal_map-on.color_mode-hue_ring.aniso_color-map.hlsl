@@ -157,11 +157,6 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float3 weft_select3_f32bit(bool3 weft_sel_c, float3 weft_sel_a, float3 weft_sel_b)
-{
-    return float3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
-}
-
 float weft_pow5_(float x)
 {
     float x2_ = (x * x);
@@ -186,10 +181,10 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 
 float3 weft_any_perpendicular(float3 n_1)
 {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a);
-    return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
@@ -343,8 +338,8 @@ float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_5, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_5, t) * s_2);
     return float3x3(t, b_1, n_5);
 }
 
@@ -375,8 +370,8 @@ float2 weft_transform_uv(float2 uv, float4 st)
 
 float3 weft_ior_from_f0_(float3 f0_2)
 {
-    float3 s_2 = sqrt(clamp(f0_2, (0.0).xxx, (0.9999).xxx));
-    return (((1.0).xxx + s_2) / ((1.0).xxx - s_2));
+    float3 s_3 = sqrt(clamp(f0_2, (0.0).xxx, (0.9999).xxx));
+    return (((1.0).xxx + s_3) / ((1.0).xxx - s_3));
 }
 
 float weft_film_ior(float film_ior, float thickness_nm)
@@ -401,9 +396,9 @@ typedef float3 ret_weft_film_base_amplitudes[2];
 ret_weft_film_base_amplitudes weft_film_base_amplitudes(float n2_, float cos2_, float3 n3_, float sin1_sq)
 {
     float3 cos3_ = sqrt(max(((1.0).xxx - ((sin1_sq).xxx / (n3_ * n3_))), (0.0).xxx));
-    float3 s_3 = ((((n2_ * cos2_)).xxx - (n3_ * cos3_)) / max((((n2_ * cos2_)).xxx + (n3_ * cos3_)), (1e-12).xxx));
-    float3 p = (((n3_ * cos2_) - ((n2_).xxx * cos3_)) / max(((n3_ * cos2_) + ((n2_).xxx * cos3_)), (1e-12).xxx));
-    return Constructarray2_float3_(s_3, p);
+    float3 s_4 = ((((n2_ * cos2_)).xxx - (n3_ * cos3_)) / max((((n2_ * cos2_)).xxx + (n3_ * cos3_)), (1e-12).xxx));
+    float3 p_1 = (((n3_ * cos2_) - ((n2_).xxx * cos3_)) / max(((n3_ * cos2_) + ((n2_).xxx * cos3_)), (1e-12).xxx));
+    return Constructarray2_float3_(s_4, p_1);
 }
 
 WeftFilmStack ConstructWeftFilmStack(float arg0, float arg1, float2 arg2, float3 arg3[2], bool arg4) {
@@ -434,15 +429,62 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return weftfilmstack_1;
 }
 
-float3 weft_film_sensitivity(float opd_nm)
+float3 weft_film_rgb_of_xyz(uint axis)
 {
-    float phase = ((6.2831855 * opd_nm) * 0.001);
-    float4 sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
-    float4 sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
-    float4 ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5 * sa) * sa)));
-    float4 tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5 * sb_1) * sb_1)));
-    float3 xyz = float3(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
-    return (mul(xyz, WEFT_XYZ_TO_REC709_) / float3(130.93048, 100.96242, 95.96065));
+    return (WEFT_XYZ_TO_REC709_[min(uint(axis), 2u)] / float3(130.93048, 100.96242, 95.96065));
+}
+
+float3 weft_film_lobe_orders(float phase, float mu, float sigma, float3 k1_, float3 k2_, float3 k3_, float3 k4_)
+{
+    float c1_ = cos((phase * mu));
+    float sg = (phase * sigma);
+    float g1_ = exp(((-0.5 * sg) * sg));
+    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
+    float c3_ = (((2.0 * c1_) * c2_) - c1_);
+    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
+    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
+    float g3_ = ((g2_ * g2_) * g1_);
+    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
+    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+}
+
+float3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p)
+{
+    float3 sum = (float3)0;
+
+    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
+    float3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
+    float3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    float3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    float3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    const float3 _e60 = weft_film_rgb_of_xyz(0u);
+    const float3 _e62 = weft_film_rgb_of_xyz(1u);
+    const float3 _e64 = weft_film_rgb_of_xyz(2u);
+    const float3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
+    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
+    float3 _e74 = sum;
+    const float3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
+    float3 _e82 = sum;
+    const float3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
+    float3 _e90 = sum;
+    const float3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
+    float3 _e98 = sum;
+    const float3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
+    float3 _e106 = sum;
+    const float3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
+    float3 _e114 = sum;
+    const float3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
+    float3 _e122 = sum;
+    const float3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
+    float3 _e130 = sum;
+    return (2.0 * _e130);
 }
 
 WeftFilmSeries ConstructWeftFilmSeries(float3 arg0, float3 arg1, float3 arg2) {
@@ -460,89 +502,41 @@ WeftFilmSeries weft_film_series(float r12_, float3 r23_)
     float3 big_r23_ = (r23_ * r23_);
     float3 big_r123_ = min((big_r12_ * big_r23_), (0.9999).xxx);
     float3 rs_1 = (((t121_ * t121_) * big_r23_) / ((1.0).xxx - big_r123_));
-    const float3 _e25 = weft_select3_f32bit(((-(r12_) * r23_) < (0.0).xxx), (-1.0).xxx, (1.0).xxx);
-    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), (sqrt(big_r123_) * _e25));
+    float3 ratio = clamp((-(r12_) * r23_), (-0.99995).xxx, (0.99995).xxx);
+    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), ratio);
     return weftfilmseries;
 }
 
-float3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_2, float3 base_f0_1)
+float3 weft_film_fourier_layers(float cos_theta1_1, float d1_, float d2_, float film_ior_2, float3 base_f0_1)
 {
-    float3 reflectance = (float3)0;
-    float3 c_s = (float3)0;
-    float3 c_p = (float3)0;
-    uint m = 1u;
-
-    const WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if (_e4.total_internal_reflection) {
+    float d_mean = (0.5 * (max(d1_, 0.0) + max(d2_, 0.0)));
+    const WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if (_e12.total_internal_reflection) {
         return (1.0).xxx;
     }
-    float n2_1 = _e4.n2_;
-    float cos2_2 = _e4.cos2_;
-    float2 a12_ = _e4.r12_;
-    float3 a23_[2] = _e4.r23_;
-    float opd = (((2.0 * n2_1) * max(thickness_nm_2, 0.0)) * cos2_2);
-    const WeftFilmSeries _e20 = weft_film_series(a12_.x, a23_[0]);
-    const WeftFilmSeries _e23 = weft_film_series(a12_.y, a23_[1]);
-    reflectance = (_e20.dc + _e23.dc);
-    c_s = _e20.first;
-    c_p = _e23.first;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e56 = m;
-            m = (_e56 + 1u);
-        }
-        loop_init = false;
-        uint _e34 = m;
-        if ((_e34 <= WEFT_FILM_ORDERS)) {
-        } else {
-            break;
-        }
-        {
-            float3 _e37 = c_s;
-            c_s = (_e37 * _e20.ratio);
-            float3 _e40 = c_p;
-            c_p = (_e40 * _e23.ratio);
-            float3 _e43 = reflectance;
-            float3 _e44 = c_s;
-            float3 _e45 = c_p;
-            uint _e49 = m;
-            const float3 _e52 = weft_film_sensitivity((float(_e49) * opd));
-            reflectance = (_e43 + ((2.0 * (_e44 + _e45)) * _e52));
-        }
-    }
-    float3 _e58 = reflectance;
-    return clamp((0.5 * _e58), (0.0).xxx, (1.0).xxx);
+    const WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
+    const WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
+    float path = ((2.0 * _e12.n2_) * _e12.cos2_);
+    const float3 _e37 = weft_film_orders((path * max(d1_, 0.0)), _e20, _e25);
+    float3 r1_ = ((_e20.dc + _e25.dc) + _e37);
+    const float3 _e45 = weft_film_orders((path * max(d2_, 0.0)), _e20, _e25);
+    float3 r2_ = ((_e20.dc + _e25.dc) + _e45);
+    return clamp((0.25 * (r1_ + r2_)), (0.0).xxx, (1.0).xxx);
 }
 
 float laser_cos_in_plane(float3 n_7, float3 v_2, float3 direction)
 {
-    float3 p_1 = cross(direction, n_7);
-    float p_len = length(p_1);
+    float3 p_2 = cross(direction, n_7);
+    float p_len = length(p_2);
     if ((p_len < 0.0001)) {
         const float _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
-    float3 p_unit = (p_1 / (p_len).xxx);
+    float3 p_unit = (p_2 / (p_len).xxx);
     float3 v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     float len = length(v_in_plane);
     const float _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001)));
     return _e19;
-}
-
-float3 laser_film_fast(float cos_theta, float d1_, float d2_, float3 f0_3)
-{
-    float _e6 = material.film_ior;
-    const float3 _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if ((abs((d1_ - d2_)) < 0.5)) {
-        return _e7;
-    }
-    float _e14 = material.film_ior;
-    const float3 _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return (0.5 * (_e7 + _e15));
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -632,13 +626,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     surface_base = base;
     float3 _e105 = surface_base;
-    float3 f0_4 = lerp((0.04).xxx, _e105, metallic);
+    float3 f0_3 = lerp((0.04).xxx, _e105, metallic);
     float3 _e107 = surface_base;
     float3 diffuse_albedo = (_e107 * (1.0 - metallic));
     const float2 _e112 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
-    const float3 _e114 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    const float3 _e114 = weft_f_schlick(f0_3, _e66.v_dot_h);
     f_light = _e114;
-    const float3 _e116 = weft_env_brdf_from_lut(f0_4, _e112);
+    const float3 _e116 = weft_env_brdf_from_lut(f0_3, _e112);
     e_spec = _e116;
     {
         float _e120 = material.thickness_min;
@@ -656,37 +650,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         }
         {
             float _e143 = film_cos;
-            const float3 _e144 = laser_film_fast(_e143, d1_1, d2_1, f0_4);
-            film_view = _e144;
-            float _e145 = light_cos;
-            const float3 _e146 = laser_film_fast(_e145, d1_1, d2_1, f0_4);
-            film_light = _e146;
+            float _e146 = material.film_ior;
+            const float3 _e147 = weft_film_fourier_layers(_e143, d1_1, d2_1, _e146, f0_3);
+            film_view = _e147;
+            float _e148 = light_cos;
+            float _e151 = material.film_ior;
+            const float3 _e152 = weft_film_fourier_layers(_e148, d1_1, d2_1, _e151, f0_3);
+            film_light = _e152;
         }
-        float3 _e147 = f_light;
-        float3 _e148 = film_light;
-        f_light = lerp(_e147, _e148, strength_2);
-        float3 _e150 = e_spec;
-        float3 _e151 = film_view;
-        e_spec = lerp(_e150, (_e151 * (_e112.x + _e112.y)), strength_2);
+        float3 _e153 = f_light;
+        float3 _e154 = film_light;
+        f_light = lerp(_e153, _e154, strength_2);
+        float3 _e156 = e_spec;
+        float3 _e157 = film_view;
+        e_spec = lerp(_e156, (_e157 * (_e112.x + _e112.y)), strength_2);
     }
-    float3 _e159 = e_spec;
-    float3 kd = max(((1.0).xxx - _e159), (0.0).xxx);
-    const float _e166 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
-    float3 _e167 = n;
-    const float _e169 = weft_d_ggx_nh(_e167, _e66.h, roughness_6);
-    float3 _e171 = f_light;
-    float3 specular = ((_e169 * _e166) * _e171);
-    const float3 _e173 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e173);
-    const float3 _e176 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e176) * _e66.n_dot_l);
-    float3 _e181 = n;
-    const float3 _e183 = weft_prefiltered_radiance(reflect(-(v_4), _e181), roughness_6);
-    float3 _e184 = e_spec;
-    float3 indirect_specular = ((_e183 * _e184) * ao);
+    float3 _e165 = e_spec;
+    float3 kd = max(((1.0).xxx - _e165), (0.0).xxx);
+    const float _e172 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    float3 _e173 = n;
+    const float _e175 = weft_d_ggx_nh(_e173, _e66.h, roughness_6);
+    float3 _e177 = f_light;
+    float3 specular = ((_e175 * _e172) * _e177);
+    const float3 _e179 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e179);
+    const float3 _e182 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e182) * _e66.n_dot_l);
     float3 _e187 = n;
-    const float3 _e188 = weft_sh_irradiance(_e187);
-    float3 indirect_diffuse = (((_e188 * ao) * kd) * diffuse_albedo);
+    const float3 _e189 = weft_prefiltered_radiance(reflect(-(v_4), _e187), roughness_6);
+    float3 _e190 = e_spec;
+    float3 indirect_specular = ((_e189 * _e190) * ao);
+    float3 _e193 = n;
+    const float3 _e194 = weft_sh_irradiance(_e193);
+    float3 indirect_diffuse = (((_e194 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

@@ -156,11 +156,6 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float3 weft_select3_f32bit(bool3 weft_sel_c, float3 weft_sel_a, float3 weft_sel_b)
-{
-    return float3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
-}
-
 float weft_pow5_(float x)
 {
     float x2_ = (x * x);
@@ -185,10 +180,10 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 
 float3 weft_any_perpendicular(float3 n_1)
 {
-    float s = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s + n_1.z));
+    float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s_1 + n_1.z));
     float b = ((n_1.x * n_1.y) * a);
-    return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
@@ -342,8 +337,8 @@ float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     const float3 _e13 = weft_any_perpendicular(n_5);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
-    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_5, t) * s_1);
+    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    float3 b_1 = (cross(n_5, t) * s_2);
     return float3x3(t, b_1, n_5);
 }
 
@@ -374,8 +369,8 @@ float2 weft_transform_uv(float2 uv, float4 st)
 
 float3 weft_ior_from_f0_(float3 f0_2)
 {
-    float3 s_2 = sqrt(clamp(f0_2, (0.0).xxx, (0.9999).xxx));
-    return (((1.0).xxx + s_2) / ((1.0).xxx - s_2));
+    float3 s_3 = sqrt(clamp(f0_2, (0.0).xxx, (0.9999).xxx));
+    return (((1.0).xxx + s_3) / ((1.0).xxx - s_3));
 }
 
 float weft_film_ior(float film_ior, float thickness_nm)
@@ -400,9 +395,9 @@ typedef float3 ret_weft_film_base_amplitudes[2];
 ret_weft_film_base_amplitudes weft_film_base_amplitudes(float n2_, float cos2_, float3 n3_, float sin1_sq)
 {
     float3 cos3_ = sqrt(max(((1.0).xxx - ((sin1_sq).xxx / (n3_ * n3_))), (0.0).xxx));
-    float3 s_3 = ((((n2_ * cos2_)).xxx - (n3_ * cos3_)) / max((((n2_ * cos2_)).xxx + (n3_ * cos3_)), (1e-12).xxx));
-    float3 p = (((n3_ * cos2_) - ((n2_).xxx * cos3_)) / max(((n3_ * cos2_) + ((n2_).xxx * cos3_)), (1e-12).xxx));
-    return Constructarray2_float3_(s_3, p);
+    float3 s_4 = ((((n2_ * cos2_)).xxx - (n3_ * cos3_)) / max((((n2_ * cos2_)).xxx + (n3_ * cos3_)), (1e-12).xxx));
+    float3 p_1 = (((n3_ * cos2_) - ((n2_).xxx * cos3_)) / max(((n3_ * cos2_) + ((n2_).xxx * cos3_)), (1e-12).xxx));
+    return Constructarray2_float3_(s_4, p_1);
 }
 
 WeftFilmStack ConstructWeftFilmStack(float arg0, float arg1, float2 arg2, float3 arg3[2], bool arg4) {
@@ -433,15 +428,62 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return weftfilmstack_1;
 }
 
-float3 weft_film_sensitivity(float opd_nm)
+float3 weft_film_rgb_of_xyz(uint axis)
 {
-    float phase = ((6.2831855 * opd_nm) * 0.001);
-    float4 sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
-    float4 sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
-    float4 ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5 * sa) * sa)));
-    float4 tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5 * sb_1) * sb_1)));
-    float3 xyz = float3(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
-    return (mul(xyz, WEFT_XYZ_TO_REC709_) / float3(130.93048, 100.96242, 95.96065));
+    return (WEFT_XYZ_TO_REC709_[min(uint(axis), 2u)] / float3(130.93048, 100.96242, 95.96065));
+}
+
+float3 weft_film_lobe_orders(float phase, float mu, float sigma, float3 k1_, float3 k2_, float3 k3_, float3 k4_)
+{
+    float c1_ = cos((phase * mu));
+    float sg = (phase * sigma);
+    float g1_ = exp(((-0.5 * sg) * sg));
+    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
+    float c3_ = (((2.0 * c1_) * c2_) - c1_);
+    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
+    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
+    float g3_ = ((g2_ * g2_) * g1_);
+    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
+    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+}
+
+float3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p)
+{
+    float3 sum = (float3)0;
+
+    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
+    float3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
+    float3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    float3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    float3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    const float3 _e60 = weft_film_rgb_of_xyz(0u);
+    const float3 _e62 = weft_film_rgb_of_xyz(1u);
+    const float3 _e64 = weft_film_rgb_of_xyz(2u);
+    const float3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
+    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
+    float3 _e74 = sum;
+    const float3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
+    float3 _e82 = sum;
+    const float3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
+    float3 _e90 = sum;
+    const float3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
+    float3 _e98 = sum;
+    const float3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
+    float3 _e106 = sum;
+    const float3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
+    float3 _e114 = sum;
+    const float3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
+    float3 _e122 = sum;
+    const float3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
+    float3 _e130 = sum;
+    return (2.0 * _e130);
 }
 
 WeftFilmSeries ConstructWeftFilmSeries(float3 arg0, float3 arg1, float3 arg2) {
@@ -459,74 +501,26 @@ WeftFilmSeries weft_film_series(float r12_, float3 r23_)
     float3 big_r23_ = (r23_ * r23_);
     float3 big_r123_ = min((big_r12_ * big_r23_), (0.9999).xxx);
     float3 rs_1 = (((t121_ * t121_) * big_r23_) / ((1.0).xxx - big_r123_));
-    const float3 _e25 = weft_select3_f32bit(((-(r12_) * r23_) < (0.0).xxx), (-1.0).xxx, (1.0).xxx);
-    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), (sqrt(big_r123_) * _e25));
+    float3 ratio = clamp((-(r12_) * r23_), (-0.99995).xxx, (0.99995).xxx);
+    const WeftFilmSeries weftfilmseries = ConstructWeftFilmSeries(((big_r12_).xxx + rs_1), (rs_1 - (t121_).xxx), ratio);
     return weftfilmseries;
 }
 
-float3 weft_film_fourier(float cos_theta1_1, float thickness_nm_2, float film_ior_2, float3 base_f0_1)
+float3 weft_film_fourier_layers(float cos_theta1_1, float d1_, float d2_, float film_ior_2, float3 base_f0_1)
 {
-    float3 reflectance = (float3)0;
-    float3 c_s = (float3)0;
-    float3 c_p = (float3)0;
-    uint m = 1u;
-
-    const WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if (_e4.total_internal_reflection) {
+    float d_mean = (0.5 * (max(d1_, 0.0) + max(d2_, 0.0)));
+    const WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if (_e12.total_internal_reflection) {
         return (1.0).xxx;
     }
-    float n2_1 = _e4.n2_;
-    float cos2_2 = _e4.cos2_;
-    float2 a12_ = _e4.r12_;
-    float3 a23_[2] = _e4.r23_;
-    float opd = (((2.0 * n2_1) * max(thickness_nm_2, 0.0)) * cos2_2);
-    const WeftFilmSeries _e20 = weft_film_series(a12_.x, a23_[0]);
-    const WeftFilmSeries _e23 = weft_film_series(a12_.y, a23_[1]);
-    reflectance = (_e20.dc + _e23.dc);
-    c_s = _e20.first;
-    c_p = _e23.first;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e56 = m;
-            m = (_e56 + 1u);
-        }
-        loop_init = false;
-        uint _e34 = m;
-        if ((_e34 <= WEFT_FILM_ORDERS)) {
-        } else {
-            break;
-        }
-        {
-            float3 _e37 = c_s;
-            c_s = (_e37 * _e20.ratio);
-            float3 _e40 = c_p;
-            c_p = (_e40 * _e23.ratio);
-            float3 _e43 = reflectance;
-            float3 _e44 = c_s;
-            float3 _e45 = c_p;
-            uint _e49 = m;
-            const float3 _e52 = weft_film_sensitivity((float(_e49) * opd));
-            reflectance = (_e43 + ((2.0 * (_e44 + _e45)) * _e52));
-        }
-    }
-    float3 _e58 = reflectance;
-    return clamp((0.5 * _e58), (0.0).xxx, (1.0).xxx);
-}
-
-float3 laser_film_fast(float cos_theta, float d1_, float d2_, float3 f0_3)
-{
-    float _e6 = material.film_ior;
-    const float3 _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if ((abs((d1_ - d2_)) < 0.5)) {
-        return _e7;
-    }
-    float _e14 = material.film_ior;
-    const float3 _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return (0.5 * (_e7 + _e15));
+    const WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
+    const WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
+    float path = ((2.0 * _e12.n2_) * _e12.cos2_);
+    const float3 _e37 = weft_film_orders((path * max(d1_, 0.0)), _e20, _e25);
+    float3 r1_ = ((_e20.dc + _e25.dc) + _e37);
+    const float3 _e45 = weft_film_orders((path * max(d2_, 0.0)), _e20, _e25);
+    float3 r2_ = ((_e20.dc + _e25.dc) + _e45);
+    return clamp((0.25 * (r1_ + r2_)), (0.0).xxx, (1.0).xxx);
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -602,13 +596,13 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     film_cos = _e66.n_dot_v;
     surface_base = base;
     float3 _e75 = surface_base;
-    float3 f0_4 = lerp((0.04).xxx, _e75, metallic);
+    float3 f0_3 = lerp((0.04).xxx, _e75, metallic);
     float3 _e77 = surface_base;
     float3 diffuse_albedo = (_e77 * (1.0 - metallic));
     const float2 _e82 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
-    const float3 _e84 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    const float3 _e84 = weft_f_schlick(f0_3, _e66.v_dot_h);
     f_light = _e84;
-    const float3 _e86 = weft_env_brdf_from_lut(f0_4, _e82);
+    const float3 _e86 = weft_env_brdf_from_lut(f0_3, _e82);
     e_spec = _e86;
     {
         float _e90 = material.thickness_min;
@@ -622,37 +616,39 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         light_cos = _e66.v_dot_h;
         {
             float _e112 = film_cos;
-            const float3 _e113 = laser_film_fast(_e112, d1_1, d2_1, f0_4);
-            film_view = _e113;
-            float _e114 = light_cos;
-            const float3 _e115 = laser_film_fast(_e114, d1_1, d2_1, f0_4);
-            film_light = _e115;
+            float _e115 = material.film_ior;
+            const float3 _e116 = weft_film_fourier_layers(_e112, d1_1, d2_1, _e115, f0_3);
+            film_view = _e116;
+            float _e117 = light_cos;
+            float _e120 = material.film_ior;
+            const float3 _e121 = weft_film_fourier_layers(_e117, d1_1, d2_1, _e120, f0_3);
+            film_light = _e121;
         }
-        float3 _e116 = f_light;
-        float3 _e117 = film_light;
-        f_light = lerp(_e116, _e117, strength_2);
-        float3 _e119 = e_spec;
-        float3 _e120 = film_view;
-        e_spec = lerp(_e119, (_e120 * (_e82.x + _e82.y)), strength_2);
+        float3 _e122 = f_light;
+        float3 _e123 = film_light;
+        f_light = lerp(_e122, _e123, strength_2);
+        float3 _e125 = e_spec;
+        float3 _e126 = film_view;
+        e_spec = lerp(_e125, (_e126 * (_e82.x + _e82.y)), strength_2);
     }
-    float3 _e128 = e_spec;
-    float3 kd = max(((1.0).xxx - _e128), (0.0).xxx);
-    const float _e135 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
-    float3 _e136 = n;
-    const float _e138 = weft_d_ggx_nh(_e136, _e66.h, roughness_6);
-    float3 _e140 = f_light;
-    float3 specular = ((_e138 * _e135) * _e140);
-    const float3 _e142 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (kd * _e142);
-    const float3 _e145 = weft_main_light_radiance();
-    float3 direct = (((diffuse + specular) * _e145) * _e66.n_dot_l);
-    float3 _e150 = n;
-    const float3 _e152 = weft_prefiltered_radiance(reflect(-(v_3), _e150), roughness_6);
-    float3 _e153 = e_spec;
-    float3 indirect_specular = ((_e152 * _e153) * ao);
+    float3 _e134 = e_spec;
+    float3 kd = max(((1.0).xxx - _e134), (0.0).xxx);
+    const float _e141 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    float3 _e142 = n;
+    const float _e144 = weft_d_ggx_nh(_e142, _e66.h, roughness_6);
+    float3 _e146 = f_light;
+    float3 specular = ((_e144 * _e141) * _e146);
+    const float3 _e148 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (kd * _e148);
+    const float3 _e151 = weft_main_light_radiance();
+    float3 direct = (((diffuse + specular) * _e151) * _e66.n_dot_l);
     float3 _e156 = n;
-    const float3 _e157 = weft_sh_irradiance(_e156);
-    float3 indirect_diffuse = (((_e157 * ao) * kd) * diffuse_albedo);
+    const float3 _e158 = weft_prefiltered_radiance(reflect(-(v_3), _e156), roughness_6);
+    float3 _e159 = e_spec;
+    float3 indirect_specular = ((_e158 * _e159) * ao);
+    float3 _e162 = n;
+    const float3 _e163 = weft_sh_irradiance(_e162);
+    float3 indirect_diffuse = (((_e163 * ao) * kd) * diffuse_albedo);
     float3 color = ((direct + indirect_specular) + indirect_diffuse);
     return float4(clamp(color, (0.0).xxx, (65504.0).xxx), alpha);
 }

@@ -146,10 +146,10 @@ metal::float3 weft_safe_normalize(
 metal::float3 weft_any_perpendicular(
     metal::float3 n_1
 ) {
-    float s = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a = -1.0 / (s + n_1.z);
+    float s_1 = (n_1.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s_1 + n_1.z);
     float b = (n_1.x * n_1.y) * a;
-    return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
+    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a), s_1 * b, -(s_1) * n_1.x);
 }
 
 float weft_d_ggx_nh(
@@ -319,8 +319,8 @@ metal::float3x3 weft_tangent_frame(
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_5);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
-    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
+    float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_5, t) * s_2;
     return metal::float3x3(t, b_1, n_5);
 }
 
@@ -362,8 +362,8 @@ metal::float2 weft_transform_uv(
 metal::float3 weft_ior_from_f0_(
     metal::float3 f0_2
 ) {
-    metal::float3 s_2 = metal::sqrt(metal::clamp(f0_2, metal::float3(0.0), metal::float3(0.9999)));
-    return (metal::float3(1.0) + s_2) / (metal::float3(1.0) - s_2);
+    metal::float3 s_3 = metal::sqrt(metal::clamp(f0_2, metal::float3(0.0), metal::float3(0.9999)));
+    return (metal::float3(1.0) + s_3) / (metal::float3(1.0) - s_3);
 }
 
 float weft_film_ior(
@@ -391,9 +391,9 @@ type_12 weft_film_base_amplitudes(
     float sin1_sq
 ) {
     metal::float3 cos3_ = metal::sqrt(metal::max(metal::float3(1.0) - (metal::float3(sin1_sq) / (n3_ * n3_)), metal::float3(0.0)));
-    metal::float3 s_3 = (metal::float3(n2_ * cos2_) - (n3_ * cos3_)) / metal::max(metal::float3(n2_ * cos2_) + (n3_ * cos3_), metal::float3(0.000000000001));
-    metal::float3 p = ((n3_ * cos2_) - (metal::float3(n2_) * cos3_)) / metal::max((n3_ * cos2_) + (metal::float3(n2_) * cos3_), metal::float3(0.000000000001));
-    return type_12 {{s_3, p}};
+    metal::float3 s_4 = (metal::float3(n2_ * cos2_) - (n3_ * cos3_)) / metal::max(metal::float3(n2_ * cos2_) + (n3_ * cos3_), metal::float3(0.000000000001));
+    metal::float3 p_1 = ((n3_ * cos2_) - (metal::float3(n2_) * cos3_)) / metal::max((n3_ * cos2_) + (metal::float3(n2_) * cos3_), metal::float3(0.000000000001));
+    return type_12 {{s_4, p_1}};
 }
 
 WeftFilmStack weft_film_stack(
@@ -416,16 +416,72 @@ WeftFilmStack weft_film_stack(
     return WeftFilmStack {_e10, cos2_1, _e29, _e31, false};
 }
 
-metal::float3 weft_film_sensitivity(
-    float opd_nm
+metal::float3 weft_film_rgb_of_xyz(
+    uint axis
 ) {
-    float phase = (6.2831855 * opd_nm) * 0.001;
-    metal::float4 sa = phase * WEFT_FILM_LOBE_SIGMA_A;
-    metal::float4 sb_1 = phase * WEFT_FILM_LOBE_SIGMA_B;
-    metal::float4 ta = (WEFT_FILM_LOBE_WEIGHT_A * metal::cos(phase * WEFT_FILM_LOBE_MU_A)) * metal::exp((-0.5 * sa) * sa);
-    metal::float4 tb = (WEFT_FILM_LOBE_WEIGHT_B * metal::cos(phase * WEFT_FILM_LOBE_MU_B)) * metal::exp((-0.5 * sb_1) * sb_1);
-    metal::float3 xyz = metal::float3((ta.x + ta.y) + ta.z, (ta.w + tb.x) + tb.y, tb.z + tb.w);
-    return (WEFT_XYZ_TO_REC709_ * xyz) / metal::float3(130.93048, 100.96242, 95.96065);
+    return WEFT_XYZ_TO_REC709_[axis] / metal::float3(130.93048, 100.96242, 95.96065);
+}
+
+metal::float3 weft_film_lobe_orders(
+    float phase,
+    float mu,
+    float sigma,
+    metal::float3 k1_,
+    metal::float3 k2_,
+    metal::float3 k3_,
+    metal::float3 k4_
+) {
+    float c1_ = metal::cos(phase * mu);
+    float sg = phase * sigma;
+    float g1_ = metal::exp((-0.5 * sg) * sg);
+    float c2_ = ((2.0 * c1_) * c1_) - 1.0;
+    float c3_ = ((2.0 * c1_) * c2_) - c1_;
+    float c4_ = ((2.0 * c2_) * c2_) - 1.0;
+    float g2_ = (g1_ * g1_) * (g1_ * g1_);
+    float g3_ = (g2_ * g2_) * g1_;
+    float g4_ = (g2_ * g2_) * (g2_ * g2_);
+    return (((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_));
+}
+
+metal::float3 weft_film_orders(
+    float opd_nm,
+    WeftFilmSeries s,
+    WeftFilmSeries p
+) {
+    metal::float3 sum = {};
+    float phase_1 = (6.2831855 * opd_nm) * 0.001;
+    metal::float3 k1_1 = (s.first * s.ratio) + (p.first * p.ratio);
+    metal::float3 k2_1 = ((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio);
+    metal::float3 k3_1 = (((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio);
+    metal::float3 k4_1 = ((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio));
+    metal::float3 _e60 = weft_film_rgb_of_xyz(0u);
+    metal::float3 _e62 = weft_film_rgb_of_xyz(1u);
+    metal::float3 _e64 = weft_film_rgb_of_xyz(2u);
+    metal::float3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
+    sum = (WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71;
+    metal::float3 _e74 = sum;
+    metal::float3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
+    sum = _e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79);
+    metal::float3 _e82 = sum;
+    metal::float3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
+    sum = _e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87);
+    metal::float3 _e90 = sum;
+    metal::float3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
+    sum = _e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95);
+    metal::float3 _e98 = sum;
+    metal::float3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
+    sum = _e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103);
+    metal::float3 _e106 = sum;
+    metal::float3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
+    sum = _e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111);
+    metal::float3 _e114 = sum;
+    metal::float3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
+    sum = _e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119);
+    metal::float3 _e122 = sum;
+    metal::float3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
+    sum = _e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127);
+    metal::float3 _e130 = sum;
+    return 2.0 * _e130;
 }
 
 WeftFilmSeries weft_film_series(
@@ -437,64 +493,30 @@ WeftFilmSeries weft_film_series(
     metal::float3 big_r23_ = r23_ * r23_;
     metal::float3 big_r123_ = metal::min(big_r12_ * big_r23_, metal::float3(0.9999));
     metal::float3 rs_1 = ((t121_ * t121_) * big_r23_) / (metal::float3(1.0) - big_r123_);
-    metal::float3 sign = metal::select(metal::float3(1.0), metal::float3(-1.0), (-(r12_) * r23_) < metal::float3(0.0));
-    return WeftFilmSeries {metal::float3(big_r12_) + rs_1, rs_1 - metal::float3(t121_), metal::sqrt(big_r123_) * sign};
+    metal::float3 ratio = metal::clamp(-(r12_) * r23_, metal::float3(-0.99995), metal::float3(0.99995));
+    return WeftFilmSeries {metal::float3(big_r12_) + rs_1, rs_1 - metal::float3(t121_), ratio};
 }
 
-metal::float3 weft_film_fourier(
+metal::float3 weft_film_fourier_layers(
     float cos_theta1_1,
-    float thickness_nm_2,
+    float d1_,
+    float d2_,
     float film_ior_2,
     metal::float3 base_f0_1
 ) {
-    metal::float3 reflectance = {};
-    metal::float3 c_s = {};
-    metal::float3 c_p = {};
-    uint m = 1u;
-    WeftFilmStack _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if (_e4.total_internal_reflection) {
+    float d_mean = 0.5 * (metal::max(d1_, 0.0) + metal::max(d2_, 0.0));
+    WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if (_e12.total_internal_reflection) {
         return metal::float3(1.0);
     }
-    float n2_1 = _e4.n2_;
-    float cos2_2 = _e4.cos2_;
-    metal::float2 a12_ = _e4.r12_;
-    type_12 a23_ = _e4.r23_;
-    float opd = ((2.0 * n2_1) * metal::max(thickness_nm_2, 0.0)) * cos2_2;
-    WeftFilmSeries _e20 = weft_film_series(_e4.r12_.x, _e4.r23_.inner[0]);
-    WeftFilmSeries _e23 = weft_film_series(_e4.r12_.y, _e4.r23_.inner[1]);
-    reflectance = _e20.dc + _e23.dc;
-    c_s = _e20.first;
-    c_p = _e23.first;
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e56 = m;
-            m = _e56 + 1u;
-        }
-        loop_init = false;
-        uint _e34 = m;
-        if (_e34 <= WEFT_FILM_ORDERS) {
-        } else {
-            break;
-        }
-        {
-            metal::float3 _e37 = c_s;
-            c_s = _e37 * _e20.ratio;
-            metal::float3 _e40 = c_p;
-            c_p = _e40 * _e23.ratio;
-            metal::float3 _e43 = reflectance;
-            metal::float3 _e44 = c_s;
-            metal::float3 _e45 = c_p;
-            uint _e49 = m;
-            metal::float3 _e52 = weft_film_sensitivity(static_cast<float>(_e49) * opd);
-            reflectance = _e43 + ((2.0 * (_e44 + _e45)) * _e52);
-        }
-    }
-    metal::float3 _e58 = reflectance;
-    return metal::clamp(0.5 * _e58, metal::float3(0.0), metal::float3(1.0));
+    WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_.inner[0]);
+    WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_.inner[1]);
+    float path = (2.0 * _e12.n2_) * _e12.cos2_;
+    metal::float3 _e37 = weft_film_orders(path * metal::max(d1_, 0.0), _e20, _e25);
+    metal::float3 r1_ = (_e20.dc + _e25.dc) + _e37;
+    metal::float3 _e45 = weft_film_orders(path * metal::max(d2_, 0.0), _e20, _e25);
+    metal::float3 r2_ = (_e20.dc + _e25.dc) + _e45;
+    return metal::clamp(0.25 * (r1_ + r2_), metal::float3(0.0), metal::float3(1.0));
 }
 
 float laser_cos_in_plane(
@@ -502,34 +524,17 @@ float laser_cos_in_plane(
     metal::float3 v_2,
     metal::float3 direction
 ) {
-    metal::float3 p_1 = metal::cross(direction, n_7);
-    float p_len = metal::length(p_1);
+    metal::float3 p_2 = metal::cross(direction, n_7);
+    float p_len = metal::length(p_2);
     if (p_len < 0.0001) {
         float _e8 = weft_clamp_cos(metal::dot(n_7, v_2));
         return _e8;
     }
-    metal::float3 p_unit = p_1 / metal::float3(p_len);
+    metal::float3 p_unit = p_2 / metal::float3(p_len);
     metal::float3 v_in_plane = v_2 - (metal::dot(v_2, p_unit) * p_unit);
     float len = metal::length(v_in_plane);
     float _e19 = weft_clamp_cos(metal::dot(n_7, v_in_plane) / metal::max(len, 0.0001));
     return _e19;
-}
-
-metal::float3 laser_film_fast(
-    float cos_theta,
-    float d1_,
-    float d2_,
-    metal::float3 f0_3,
-    constant WeftMaterial& material
-) {
-    float _e6 = material.film_ior;
-    metal::float3 _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if (metal::abs(d1_ - d2_) < 0.5) {
-        return _e7;
-    }
-    float _e14 = material.film_ior;
-    metal::float3 _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return 0.5 * (_e7 + _e15);
 }
 
 struct vs_mainInput {
@@ -656,13 +661,13 @@ fragment fs_mainOutput fs_main(
     }
     surface_base = base;
     metal::float3 _e96 = surface_base;
-    metal::float3 f0_4 = metal::mix(metal::float3(0.04), _e96, metallic);
+    metal::float3 f0_3 = metal::mix(metal::float3(0.04), _e96, metallic);
     metal::float3 _e98 = surface_base;
     metal::float3 diffuse_albedo = _e98 * (1.0 - metallic);
     metal::float2 _e103 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e105 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    metal::float3 _e105 = weft_f_schlick(f0_3, _e66.v_dot_h);
     f_light = _e105;
-    metal::float3 _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    metal::float3 _e107 = weft_env_brdf_from_lut(f0_3, _e103);
     e_spec = _e107;
     {
         float _e111 = material.thickness_min;
@@ -680,37 +685,39 @@ fragment fs_mainOutput fs_main(
         }
         {
             float _e134 = film_cos;
-            metal::float3 _e135 = laser_film_fast(_e134, d1_1, d2_1, f0_4, material);
-            film_view = _e135;
-            float _e136 = light_cos;
-            metal::float3 _e137 = laser_film_fast(_e136, d1_1, d2_1, f0_4, material);
-            film_light = _e137;
+            float _e137 = material.film_ior;
+            metal::float3 _e138 = weft_film_fourier_layers(_e134, d1_1, d2_1, _e137, f0_3);
+            film_view = _e138;
+            float _e139 = light_cos;
+            float _e142 = material.film_ior;
+            metal::float3 _e143 = weft_film_fourier_layers(_e139, d1_1, d2_1, _e142, f0_3);
+            film_light = _e143;
         }
-        metal::float3 _e138 = f_light;
-        metal::float3 _e139 = film_light;
-        f_light = metal::mix(_e138, _e139, strength_2);
-        metal::float3 _e141 = e_spec;
-        metal::float3 _e142 = film_view;
-        e_spec = metal::mix(_e141, _e142 * (_e103.x + _e103.y), strength_2);
+        metal::float3 _e144 = f_light;
+        metal::float3 _e145 = film_light;
+        f_light = metal::mix(_e144, _e145, strength_2);
+        metal::float3 _e147 = e_spec;
+        metal::float3 _e148 = film_view;
+        e_spec = metal::mix(_e147, _e148 * (_e103.x + _e103.y), strength_2);
     }
-    metal::float3 _e150 = e_spec;
-    metal::float3 kd = metal::max(metal::float3(1.0) - _e150, metal::float3(0.0));
-    float _e157 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
-    metal::float3 _e158 = n;
-    float _e160 = weft_d_ggx_nh(_e158, _e66.h, roughness_6);
-    metal::float3 _e162 = f_light;
-    metal::float3 specular = (_e160 * _e157) * _e162;
-    metal::float3 _e164 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = kd * _e164;
-    metal::float3 _e167 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + specular) * _e167) * _e66.n_dot_l;
-    metal::float3 _e172 = n;
-    metal::float3 _e174 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e172), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e175 = e_spec;
-    metal::float3 indirect_specular = (_e174 * _e175) * ao;
+    metal::float3 _e156 = e_spec;
+    metal::float3 kd = metal::max(metal::float3(1.0) - _e156, metal::float3(0.0));
+    float _e163 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    metal::float3 _e164 = n;
+    float _e166 = weft_d_ggx_nh(_e164, _e66.h, roughness_6);
+    metal::float3 _e168 = f_light;
+    metal::float3 specular = (_e166 * _e163) * _e168;
+    metal::float3 _e170 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = kd * _e170;
+    metal::float3 _e173 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + specular) * _e173) * _e66.n_dot_l;
     metal::float3 _e178 = n;
-    metal::float3 _e179 = weft_sh_irradiance(_e178, weft_frame);
-    metal::float3 indirect_diffuse = ((_e179 * ao) * kd) * diffuse_albedo;
+    metal::float3 _e180 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e178), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e181 = e_spec;
+    metal::float3 indirect_specular = (_e180 * _e181) * ao;
+    metal::float3 _e184 = n;
+    metal::float3 _e185 = weft_sh_irradiance(_e184, weft_frame);
+    metal::float3 indirect_diffuse = ((_e185 * ao) * kd) * diffuse_albedo;
     metal::float3 color = (direct + indirect_specular) + indirect_diffuse;
     return fs_mainOutput { metal::float4(metal::clamp(color, metal::float3(0.0), metal::float3(65504.0)), alpha) };
 }

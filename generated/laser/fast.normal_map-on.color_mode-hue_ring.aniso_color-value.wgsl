@@ -150,10 +150,10 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 }
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
-    let s = select(-1f, 1f, (n_1.z >= 0f));
-    let a = (-1f / (s + n_1.z));
+    let s_1 = select(-1f, 1f, (n_1.z >= 0f));
+    let a = (-1f / (s_1 + n_1.z));
     let b = ((n_1.x * n_1.y) * a);
-    return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
@@ -272,8 +272,8 @@ fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_5);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
-    let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_5, t) * s_1);
+    let s_2 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_5, t) * s_2);
     return mat3x3<f32>(t, b_1, n_5);
 }
 
@@ -299,8 +299,8 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
 }
 
 fn weft_ior_from_f0_(f0_2: vec3<f32>) -> vec3<f32> {
-    let s_2 = sqrt(clamp(f0_2, vec3(0f), vec3(0.9999f)));
-    return ((vec3(1f) + s_2) / (vec3(1f) - s_2));
+    let s_3 = sqrt(clamp(f0_2, vec3(0f), vec3(0.9999f)));
+    return ((vec3(1f) + s_3) / (vec3(1f) - s_3));
 }
 
 fn weft_film_ior(film_ior: f32, thickness_nm: f32) -> f32 {
@@ -315,9 +315,9 @@ fn weft_fresnel_amplitudes(n_i: f32, n_t: f32, cos_i: f32, cos_t: f32) -> vec2<f
 
 fn weft_film_base_amplitudes(n2_: f32, cos2_: f32, n3_: vec3<f32>, sin1_sq: f32) -> array<vec3<f32>, 2> {
     let cos3_ = sqrt(max((vec3(1f) - (vec3(sin1_sq) / (n3_ * n3_))), vec3(0f)));
-    let s_3 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(0.000000000001f)));
-    let p = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
-    return array<vec3<f32>, 2>(s_3, p);
+    let s_4 = ((vec3((n2_ * cos2_)) - (n3_ * cos3_)) / max((vec3((n2_ * cos2_)) + (n3_ * cos3_)), vec3(0.000000000001f)));
+    let p_1 = (((n3_ * cos2_) - (vec3(n2_) * cos3_)) / max(((n3_ * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
+    return array<vec3<f32>, 2>(s_4, p_1);
 }
 
 fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_f0_: vec3<f32>) -> WeftFilmStack {
@@ -335,14 +335,59 @@ fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
-    let phase = ((6.2831855f * opd_nm) * 0.001f);
-    let sa = (phase * WEFT_FILM_LOBE_SIGMA_A);
-    let sb_1 = (phase * WEFT_FILM_LOBE_SIGMA_B);
-    let ta = ((WEFT_FILM_LOBE_WEIGHT_A * cos((phase * WEFT_FILM_LOBE_MU_A))) * exp(((-0.5f * sa) * sa)));
-    let tb = ((WEFT_FILM_LOBE_WEIGHT_B * cos((phase * WEFT_FILM_LOBE_MU_B))) * exp(((-0.5f * sb_1) * sb_1)));
-    let xyz = vec3<f32>(((ta.x + ta.y) + ta.z), ((ta.w + tb.x) + tb.y), (tb.z + tb.w));
-    return ((WEFT_XYZ_TO_REC709_ * xyz) / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
+    return (WEFT_XYZ_TO_REC709_[axis] / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+}
+
+fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1_: vec3<f32>, k2_: vec3<f32>, k3_: vec3<f32>, k4_: vec3<f32>) -> vec3<f32> {
+    let c1_ = cos((phase * mu));
+    let sg = (phase * sigma);
+    let g1_ = exp(((-0.5f * sg) * sg));
+    let c2_ = (((2f * c1_) * c1_) - 1f);
+    let c3_ = (((2f * c1_) * c2_) - c1_);
+    let c4_ = (((2f * c2_) * c2_) - 1f);
+    let g2_ = ((g1_ * g1_) * (g1_ * g1_));
+    let g3_ = ((g2_ * g2_) * g1_);
+    let g4_ = ((g2_ * g2_) * (g2_ * g2_));
+    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+}
+
+fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
+    var sum: vec3<f32>;
+
+    let phase_1 = ((6.2831855f * opd_nm) * 0.001f);
+    let k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
+    let k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    let k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    let k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    let _e60 = weft_film_rgb_of_xyz(0u);
+    let _e62 = weft_film_rgb_of_xyz(1u);
+    let _e64 = weft_film_rgb_of_xyz(2u);
+    let _e71 = weft_film_lobe_orders(phase_1, 1.64821f, 0.112563f, k1_1, k2_1, k3_1, k4_1);
+    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
+    let _e74 = sum;
+    let _e79 = weft_film_lobe_orders(phase_1, 2.23783f, 0.097781f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
+    let _e82 = sum;
+    let _e87 = weft_film_lobe_orders(phase_1, 1.51945f, 0.0710853f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
+    let _e90 = sum;
+    let _e95 = weft_film_lobe_orders(phase_1, 1.95281f, 0.142693f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
+    let _e98 = sum;
+    let _e103 = weft_film_lobe_orders(phase_1, 1.87261f, 0.0790523f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
+    let _e106 = sum;
+    let _e111 = weft_film_lobe_orders(phase_1, 1.72342f, 0.0996288f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
+    let _e114 = sum;
+    let _e119 = weft_film_lobe_orders(phase_1, 2.31367f, 0.0384759f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
+    let _e122 = sum;
+    let _e127 = weft_film_lobe_orders(phase_1, 2.20514f, 0.109465f, k1_1, k2_1, k3_1, k4_1);
+    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
+    let _e130 = sum;
+    return (2f * _e130);
 }
 
 fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
@@ -351,80 +396,38 @@ fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
     let big_r23_ = (r23_ * r23_);
     let big_r123_ = min((big_r12_ * big_r23_), vec3(0.9999f));
     let rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1f) - big_r123_));
-    let sign_ = select(vec3(1f), vec3(-1f), ((-(r12_) * r23_) < vec3(0f)));
-    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), (sqrt(big_r123_) * sign_));
+    let ratio = clamp((-(r12_) * r23_), vec3(-0.99995f), vec3(0.99995f));
+    return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
 }
 
-fn weft_film_fourier(cos_theta1_1: f32, thickness_nm_2: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
-    var reflectance: vec3<f32>;
-    var c_s: vec3<f32>;
-    var c_p: vec3<f32>;
-    var m: u32 = 1u;
-
-    let _e4 = weft_film_stack(cos_theta1_1, thickness_nm_2, film_ior_2, base_f0_1);
-    if _e4.total_internal_reflection {
+fn weft_film_fourier_layers(cos_theta1_1: f32, d1_: f32, d2_: f32, film_ior_2: f32, base_f0_1: vec3<f32>) -> vec3<f32> {
+    let d_mean = (0.5f * (max(d1_, 0f) + max(d2_, 0f)));
+    let _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
+    if _e12.total_internal_reflection {
         return vec3(1f);
     }
-    let n2_1 = _e4.n2_;
-    let cos2_2 = _e4.cos2_;
-    let a12_ = _e4.r12_;
-    let a23_ = _e4.r23_;
-    let opd = (((2f * n2_1) * max(thickness_nm_2, 0f)) * cos2_2);
-    let _e20 = weft_film_series(a12_.x, a23_[0]);
-    let _e23 = weft_film_series(a12_.y, a23_[1]);
-    reflectance = (_e20.dc + _e23.dc);
-    c_s = _e20.first;
-    c_p = _e23.first;
-    loop {
-        let _e34 = m;
-        if (_e34 <= WEFT_FILM_ORDERS) {
-        } else {
-            break;
-        }
-        {
-            let _e37 = c_s;
-            c_s = (_e37 * _e20.ratio);
-            let _e40 = c_p;
-            c_p = (_e40 * _e23.ratio);
-            let _e43 = reflectance;
-            let _e44 = c_s;
-            let _e45 = c_p;
-            let _e49 = m;
-            let _e52 = weft_film_sensitivity((f32(_e49) * opd));
-            reflectance = (_e43 + ((2f * (_e44 + _e45)) * _e52));
-        }
-        continuing {
-            let _e56 = m;
-            m = (_e56 + 1u);
-        }
-    }
-    let _e58 = reflectance;
-    return clamp((0.5f * _e58), vec3(0f), vec3(1f));
+    let _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
+    let _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
+    let path = ((2f * _e12.n2_) * _e12.cos2_);
+    let _e37 = weft_film_orders((path * max(d1_, 0f)), _e20, _e25);
+    let r1_ = ((_e20.dc + _e25.dc) + _e37);
+    let _e45 = weft_film_orders((path * max(d2_, 0f)), _e20, _e25);
+    let r2_ = ((_e20.dc + _e25.dc) + _e45);
+    return clamp((0.25f * (r1_ + r2_)), vec3(0f), vec3(1f));
 }
 
 fn laser_cos_in_plane(n_7: vec3<f32>, v_2: vec3<f32>, direction: vec3<f32>) -> f32 {
-    let p_1 = cross(direction, n_7);
-    let p_len = length(p_1);
+    let p_2 = cross(direction, n_7);
+    let p_len = length(p_2);
     if (p_len < 0.0001f) {
         let _e8 = weft_clamp_cos(dot(n_7, v_2));
         return _e8;
     }
-    let p_unit = (p_1 / vec3(p_len));
+    let p_unit = (p_2 / vec3(p_len));
     let v_in_plane = (v_2 - (dot(v_2, p_unit) * p_unit));
     let len = length(v_in_plane);
     let _e19 = weft_clamp_cos((dot(n_7, v_in_plane) / max(len, 0.0001f)));
     return _e19;
-}
-
-fn laser_film_fast(cos_theta: f32, d1_: f32, d2_: f32, f0_3: vec3<f32>) -> vec3<f32> {
-    let _e6 = material.film_ior;
-    let _e7 = weft_film_fourier(cos_theta, d1_, _e6, f0_3);
-    if (abs((d1_ - d2_)) < 0.5f) {
-        return _e7;
-    }
-    let _e14 = material.film_ior;
-    let _e15 = weft_film_fourier(cos_theta, d2_, _e14, f0_3);
-    return (0.5f * (_e7 + _e15));
 }
 
 @vertex 
@@ -511,13 +514,13 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     }
     surface_base = base;
     let _e96 = surface_base;
-    let f0_4 = mix(vec3(0.04f), _e96, metallic);
+    let f0_3 = mix(vec3(0.04f), _e96, metallic);
     let _e98 = surface_base;
     let diffuse_albedo = (_e98 * (1f - metallic));
     let _e103 = weft_env_brdf_lut(_e66.n_dot_v, roughness_6);
-    let _e105 = weft_f_schlick(f0_4, _e66.v_dot_h);
+    let _e105 = weft_f_schlick(f0_3, _e66.v_dot_h);
     f_light = _e105;
-    let _e107 = weft_env_brdf_from_lut(f0_4, _e103);
+    let _e107 = weft_env_brdf_from_lut(f0_3, _e103);
     e_spec = _e107;
     {
         let _e111 = material.thickness_min;
@@ -535,37 +538,39 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
         }
         {
             let _e134 = film_cos;
-            let _e135 = laser_film_fast(_e134, d1_1, d2_1, f0_4);
-            film_view = _e135;
-            let _e136 = light_cos;
-            let _e137 = laser_film_fast(_e136, d1_1, d2_1, f0_4);
-            film_light = _e137;
+            let _e137 = material.film_ior;
+            let _e138 = weft_film_fourier_layers(_e134, d1_1, d2_1, _e137, f0_3);
+            film_view = _e138;
+            let _e139 = light_cos;
+            let _e142 = material.film_ior;
+            let _e143 = weft_film_fourier_layers(_e139, d1_1, d2_1, _e142, f0_3);
+            film_light = _e143;
         }
-        let _e138 = f_light;
-        let _e139 = film_light;
-        f_light = mix(_e138, _e139, strength_2);
-        let _e141 = e_spec;
-        let _e142 = film_view;
-        e_spec = mix(_e141, (_e142 * (_e103.x + _e103.y)), strength_2);
+        let _e144 = f_light;
+        let _e145 = film_light;
+        f_light = mix(_e144, _e145, strength_2);
+        let _e147 = e_spec;
+        let _e148 = film_view;
+        e_spec = mix(_e147, (_e148 * (_e103.x + _e103.y)), strength_2);
     }
-    let _e150 = e_spec;
-    let kd = max((vec3(1f) - _e150), vec3(0f));
-    let _e157 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
-    let _e158 = n;
-    let _e160 = weft_d_ggx_nh(_e158, _e66.h, roughness_6);
-    let _e162 = f_light;
-    let specular = ((_e160 * _e157) * _e162);
-    let _e164 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (kd * _e164);
-    let _e167 = weft_main_light_radiance();
-    let direct = (((diffuse + specular) * _e167) * _e66.n_dot_l);
-    let _e172 = n;
-    let _e174 = weft_prefiltered_radiance(reflect(-(v_4), _e172), roughness_6);
-    let _e175 = e_spec;
-    let indirect_specular = ((_e174 * _e175) * ao);
+    let _e156 = e_spec;
+    let kd = max((vec3(1f) - _e156), vec3(0f));
+    let _e163 = weft_v_smith_ggx_correlated(_e66.n_dot_v, _e66.n_dot_l, roughness_6);
+    let _e164 = n;
+    let _e166 = weft_d_ggx_nh(_e164, _e66.h, roughness_6);
+    let _e168 = f_light;
+    let specular = ((_e166 * _e163) * _e168);
+    let _e170 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (kd * _e170);
+    let _e173 = weft_main_light_radiance();
+    let direct = (((diffuse + specular) * _e173) * _e66.n_dot_l);
     let _e178 = n;
-    let _e179 = weft_sh_irradiance(_e178);
-    let indirect_diffuse = (((_e179 * ao) * kd) * diffuse_albedo);
+    let _e180 = weft_prefiltered_radiance(reflect(-(v_4), _e178), roughness_6);
+    let _e181 = e_spec;
+    let indirect_specular = ((_e180 * _e181) * ao);
+    let _e184 = n;
+    let _e185 = weft_sh_irradiance(_e184);
+    let indirect_diffuse = (((_e185 * ao) * kd) * diffuse_albedo);
     let color = ((direct + indirect_specular) + indirect_diffuse);
     return vec4<f32>(clamp(color, vec3(0f), vec3(65504f)), alpha);
 }

@@ -66,7 +66,13 @@ struct McFrame {
     vec3 v;
     vec3 n;
 };
-struct McFastPre {
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct McFastSet {
     vec3 wi;
     vec3 wr;
     float inv_ri;
@@ -77,13 +83,8 @@ struct McFastPre {
     float inv_gamma_v;
     float s_lo;
     float s_hi;
-    float eta;
-};
-struct McFastNode {
-    float x;
-    float s;
-    float v;
-    float p;
+    float eta2_;
+    float t02_;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -119,9 +120,12 @@ const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
 const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
-const float MC_FAST_MIN_DSLOPE = 0.0001;
+const float MC_GL2_T = 0.21132487;
+const float MC_GJ2_T = 0.31101775;
+const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -142,27 +146,15 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 }
 
 vec3 weft_any_perpendicular(vec3 n) {
-    float s_1 = ((n.z >= 0.0) ? 1.0 : -1.0);
-    float a = (-1.0 / (s_1 + n.z));
+    float s = ((n.z >= 0.0) ? 1.0 : -1.0);
+    float a = (-1.0 / (s + n.z));
     float b = ((n.x * n.y) * a);
-    return vec3((1.0 + (((s_1 * n.x) * n.x) * a)), (s_1 * b), (-(s_1) * n.x));
-}
-
-float weft_f_dielectric(float cos_i, float eta) {
-    float c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = (((eta * eta) - 1.0) + (c * c));
-    float g = sqrt(max(g2_, 0.0));
-    float gmc = (g - c);
-    float gpc = max((g + c), 1e-7);
-    float a_1 = (gmc / gpc);
-    float b_1 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1))), 0.0, 1.0);
-    return ((g2_ < 0.0) ? 1.0 : f);
+    return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
 float weft_f0_from_ior(float ior) {
-    float q_3 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
-    return (q_3 * q_3);
+    float q_2 = ((ior - 1.0) / max((ior + 1.0), 0.0001));
+    return (q_2 * q_2);
 }
 
 vec3 weft_main_light_direction() {
@@ -219,52 +211,78 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_2 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
-    float s_2 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_2 = (cross(n_2, t_2) * s_2);
-    return mat3x3(t_2, b_2, n_2);
+    float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
+    vec3 b_1 = (cross(n_2, t_2) * s_1);
+    return mat3x3(t_2, b_1, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float mc_correlate(float ci, float cr, float u) {
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t) {
+    return ((t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0))));
+}
+
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local = false;
+    bool local_1 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_3 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_3 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return (lit ? (s_2 / vec3(max(q_3, MC_MIN_Q))) : vec3(0.0));
+}
+
+float mc_u_of_cos(float c) {
+    float h = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
+    float x2_ = (h * (1.0 + (0.33333334 * h)));
+    return exp((-16.414074 * x2_));
+}
+
+float mc_fast_correlate(float ci, float cr, float u) {
     float mi = max(ci, 0.0);
     float mr = max(cr, 0.0);
-    return ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
+    float prod = (mi * mr);
+    return (prod + (u * (min(mi, mr) - prod)));
 }
 
-float mc_acos_fast(float x) {
+float mc_fast_asin(float x) {
     float ax = min(abs(x), 1.0);
-    float r_1 = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
-    return ((x < 0.0) ? (WEFT_PI - r_1) : r_1);
+    float r_1 = (1.5707964 - (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))))));
+    return ((x < 0.0) ? -(r_1) : r_1);
 }
 
-float mc_asin_fast(float x_1) {
-    float _e2 = mc_acos_fast(x_1);
-    return (1.5707964 - _e2);
+float mc_fresnel_exact(float c_in, float eta2_) {
+    float c_2 = clamp(c_in, WEFT_MIN_N_DOT, 1.0);
+    float g = sqrt(max(((eta2_ - 1.0) + (c_2 * c_2)), 0.0));
+    float ec = (eta2_ * c_2);
+    float a_1 = ((g - c_2) * (ec + g));
+    float b_2 = ((ec - g) * (g + c_2));
+    float d = ((g + c_2) * (ec + g));
+    return clamp(((0.5 * ((a_1 * a_1) + (b_2 * b_2))) / (d * d)), 0.0, 1.0);
 }
 
-vec4[2] mc_normal4_(vec4 t) {
-    vec4 e_1 = exp(((-0.5 * t) * t));
-    vec4 z = (abs(t) * 0.70710677);
-    vec4 k = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k * (vec4(0.2548296) + (k * (vec4(-0.28449672) + (k * (vec4(1.4214138) + (k * (vec4(-1.4531521) + (k * 1.0614054)))))))));
-    vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
-    return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
+float mc_schlick_t(float c_1) {
+    float x_2 = (1.0 - clamp(c_1, 0.0, 1.0));
+    float x2_1 = (x_2 * x_2);
+    return (1.0 - ((x2_1 * x2_1) * x_2));
 }
 
-vec3 mc_cell_means(vec4 xe, float inv_gamma) {
-    vec4 t_3 = (xe * inv_gamma);
-    vec4 _e3[2] = mc_normal4_(t_3);
-    vec3 dt = (t_3.yzw - t_3.xyz);
-    bvec3 wide = greaterThanEqual(abs(dt), vec3(0.1));
-    vec3 exact = ((_e3[1].yzw - _e3[1].xyz) / mix(vec3(1.0), dt, wide));
-    vec3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
-    return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
-}
-
-McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
+McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     float ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -272,154 +290,135 @@ McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     bool ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
     float inv_ri = inversesqrt(max(ri2_, MC_MIN_PROJ2_));
     float inv_rr = inversesqrt(max(rr2_, MC_MIN_PROJ2_));
-    float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
-    float _e50 = mc_acos_fast(cos_psi_d);
-    float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    float _e50 = mc_u_of_cos(((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr));
     float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
-    float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
-    float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
+    float s_lo_1 = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
+    float s_hi_1 = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
+    float _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo_1, -1000000.0, MC_FAST_BIG), clamp(s_hi_1, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
 }
 
-McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
-    bool local = false;
-    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
-    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
+McFastNode mc_fast_node(McFastSet q, float ca, float sa) {
+    bool local_2 = false;
+    float si = ((q.wi.x * ca) + (q.wi.z * sa));
+    float sr = ((q.wr.x * ca) + (q.wr.z * sa));
     float ni = ((q.wi.z * ca) - (q.wi.x * sa));
     float nr = ((q.wr.z * ca) - (q.wr.x * sa));
     float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
-        local = (q.ok != 0.0);
+        local_2 = (q.ok != 0.0);
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool ok_2 = local;
+    bool ok_2 = local_2;
     float inv_ci = inversesqrt(max(ci2_, MC_MIN_PROJ2_));
     float inv_cr = inversesqrt(max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = (ci2_ * inv_ci);
     float cr_1 = (cr2_ * inv_cr);
-    float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
-    float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
-    float _e86 = mc_acos_fast(cos_phi_d);
-    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
-    float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    float _e101 = mc_asin_fast(si);
-    float _e102 = mc_asin_fast(sr);
-    float x_2 = (0.5 * (_e101 + _e102));
+    float cos_phi_d = ((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr);
+    float cos_half_phi = sqrt(clamp((0.5 + (0.5 * cos_phi_d)), 0.0, 1.0));
+    float _e80 = mc_u_of_cos(cos_phi_d);
+    float _e81 = mc_fast_correlate((ni * inv_ci), (nr * inv_cr), _e80);
+    float _e87 = mc_fast_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    float _e120 = weft_f_dielectric(ci_1, q.eta);
-    float _e124 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = ((1.0 - _e120) * (1.0 - _e124));
-    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
-    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e100 : 0.0));
+    float inv_cd = inversesqrt(cd2_);
+    float _e105 = mc_fast_asin(clamp(((0.5 * (si + sr)) * inv_cd), -1.0, 1.0));
+    float _e109 = mc_fresnel_exact(((cd2_ * inv_cd) * cos_half_phi), q.eta2_);
+    float _e111 = mc_schlick_t(ci_1);
+    float _e113 = mc_schlick_t(cr_1);
+    float f_t = ((q.t02_ * _e111) * _e113);
+    float base = (ok_2 ? ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd) : 0.0);
+    return McFastNode(_e105, ((_e109 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e87 : 0.0));
 }
 
-vec4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
-    vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
-    vec3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    vec3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
-    vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_3);
-    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
-    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
+vec2 mc_fast_volume2_(vec2 x_1, float inv_gamma) {
+    vec2 t_3 = (x_1 * inv_gamma);
+    return (exp(((-0.5 * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma));
 }
 
-vec2 mc_fast_half_clip(McFastPre q_2, float sa_1, float sb, float ta) {
-    bool local_1 = false;
+vec2 mc_fast_clip(float s_lo, float s_hi, float sa_1, float sb, float ta) {
     float ds = (sb - sa_1);
-    bool flat_ = (abs(ds) < MC_FAST_MIN_DSLOPE);
-    float inv = (1.0 / (flat_ ? 1.0 : ds));
-    float u0_ = ((q_2.s_lo - sa_1) * inv);
-    float u1_ = ((q_2.s_hi - sa_1) * inv);
-    if ((sa_1 > q_2.s_lo)) {
-        local_1 = (sa_1 < q_2.s_hi);
-    } else {
-        local_1 = false;
-    }
-    bool _e31 = local_1;
-    vec2 uf = (_e31 ? vec2(0.0, 1.0) : vec2(1.0, 0.0));
-    vec2 u_1 = (flat_ ? uf : vec2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
+    float inv = (1.0 / ((abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds));
+    float u0_ = ((s_lo - sa_1) * inv);
+    float u1_ = ((s_hi - sa_1) * inv);
+    vec2 u_1 = clamp(vec2(min(u0_, u1_), max(u0_, u1_)), vec2(0.0), vec2(1.0));
     return ((u_1.x < u_1.y) ? (vec2(ta) + (0.5 * u_1)) : vec2(2.0, -1.0));
 }
 
-float mc_fast_slope(float s0_, float s1_1, float s2_1, float t_1) {
-    return ((t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0))));
+float mc_fast_half_len(float sa_2, float sb_1) {
+    vec2 s_3 = vec2(mix(sa_2, sb_1, MC_GL2_T), mix(sa_2, sb_1, 0.7886751));
+    vec2 l = sqrt((vec2(1.0) + (s_3 * s_3)));
+    return (0.25 * (l.x + l.y));
 }
 
-float mc_arc_primitive(float s) {
-    float h = sqrt((1.0 + (s * s)));
-    return (0.5 * ((s * h) + (sign(s) * log((abs(s) + h)))));
+vec3[2] mc_normal3_(vec3 t_1) {
+    vec3 e_2 = exp(((-0.5 * t_1) * t_1));
+    vec3 z = (abs(t_1) * 0.70710677);
+    vec3 k = (vec3(1.0) / (vec3(1.0) + (0.3275911 * z)));
+    vec3 poly = (k * (vec3(0.2548296) + (k * (vec3(-0.28449672) + (k * (vec3(1.4214138) + (k * (vec3(-1.4531521) + (k * 1.0614054)))))))));
+    vec3 half_ = (vec3(0.5) - ((0.5 * poly) * e_2));
+    return vec3[2]((e_2 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t_1, vec3(0.0))));
 }
 
-float mc_fast_half_length(float sa_2, float sb_1) {
-    float ds_1 = (sb_1 - sa_2);
-    float sm = (0.5 * (sa_2 + sb_1));
-    float _e6 = mc_arc_primitive(sb_1);
-    float _e7 = mc_arc_primitive(sa_2);
-    return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
+vec4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, vec2 r, float e_1) {
+    float d_1 = (n1_.x - n0_.x);
+    vec3 xe = vec3((n0_.x - (e_1 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_1 * d_1)));
+    float dx = ((0.5 + e_1) * d_1);
+    vec3 _e26[2] = mc_normal3_((xe * q_1.inv_gamma_s));
+    bool wide = ((abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT);
+    vec2 exact = ((_e26[1].yz - _e26[1].xy) / vec2((wide ? dx : 1.0)));
+    vec2 trap = ((0.5 * q_1.inv_gamma_s) * (_e26[0].xy + _e26[0].yz));
+    vec2 gs = max((wide ? exact : trap), vec2(0.0));
+    vec2 _e58 = mc_fast_volume2_(vec2(n0_.x, n1_.x), q_1.inv_gamma_v);
+    vec2 s_4 = (r * vec2(n0_.s, n1_.s));
+    vec2 v_1 = (r * vec2(n0_.v, n1_.v));
+    float surface = dot(gs, s_4);
+    float volume = (((1.0 - th_1.kd) * dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
+    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2(n0_.p, n1_.p)));
 }
 
 vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec4 heights[9]) {
-    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    bool local_3 = false;
+    McFastSet _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
     float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
     float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
     float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
-    vec2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
-    vec2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
-    float t0_ = min(_e46.x, _e48.x);
-    float t1_1 = max(max(_e46.y, _e48.y), t0_);
+    vec2 _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0.0);
+    vec2 _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5);
+    float t0_ = min(_e48.x, _e52.x);
+    float t1_1 = max(max(_e48.y, _e52.y), t0_);
     float w = (t1_1 - t0_);
-    vec3 t_4 = vec3((t0_ + (MC_GL3_T * w)), (t0_ + (0.5 * w)), (t1_1 - (MC_GL3_T * w)));
-    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
-    vec3 sl = vec3(_e68, _e70, _e72);
-    vec3 inv_len = inversesqrt((vec3(1.0) + (sl * sl)));
-    McFastNode _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
-    McFastNode _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
-    McFastNode _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
-    vec3 r_2 = ((vec3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len);
-    float _e100 = mc_fast_half_length(s0_1, s1_2);
-    float _e101 = mc_fast_half_length(s1_2, s2_2);
-    float total = (_e100 + _e101);
-    vec4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
-    return (_e103 / vec4(max(total, 1e-6)));
-}
-
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
-    bool local_2 = false;
-    bool local_3 = false;
-    float c1_ = clamp(a1_, 0.0, 1.0);
-    float c2_ = clamp(a2_, 0.0, 1.0);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
-    if ((n_dot_wi > 0.0)) {
-        local_2 = (n_dot_wr > 0.0);
-    } else {
-        local_2 = false;
-    }
-    bool _e37 = local_2;
-    if (_e37) {
-        local_3 = (q_4 > MC_MIN_Q);
+    if ((t0_ > 0.0001)) {
+        local_3 = (t1_1 < 0.9999);
     } else {
         local_3 = false;
     }
-    bool lit = local_3;
-    return (lit ? (s_4 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+    bool bump = local_3;
+    float tn = (bump ? MC_GJ2_T : MC_GL2_T);
+    vec2 t_4 = vec2((t0_ + (tn * w)), (t1_1 - (tn * w)));
+    float _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    vec2 sl = vec2(_e78, _e80);
+    vec2 l2_ = (vec2(1.0) + (sl * sl));
+    vec2 inv_len = inversesqrt(l2_);
+    McFastNode _e91 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    McFastNode _e96 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    vec2 r_2 = (((bump ? MC_GJ2_W : 0.5) * w) * (l2_ * inv_len));
+    float _e103 = mc_fast_half_len(s0_1, s1_2);
+    float _e104 = mc_fast_half_len(s1_2, s2_2);
+    float total = (_e103 + _e104);
+    vec4 _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, (tn / (1.0 - (2.0 * tn))));
+    return (_e111 / vec4(max(total, 1e-6)));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
     return McThread(clamp((color * tint), vec3(0.0), vec3(1.0)), clamp(ior_1, 1.0, 4.0), clamp(isotropy, 0.0, 1.0), (max(gamma_s_deg, 0.0) * MC_DEG), (max(gamma_v_deg, 0.0) * MC_DEG));
 }
 
-float microcylinder_mean_fresnel(float eta_1) {
-    float _e1 = weft_f0_from_ior(eta_1);
+float microcylinder_mean_fresnel(float eta) {
+    float _e1 = weft_f0_from_ior(eta);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 

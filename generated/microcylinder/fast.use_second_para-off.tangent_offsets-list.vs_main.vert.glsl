@@ -66,7 +66,13 @@ struct McFrame {
     vec3 v;
     vec3 n;
 };
-struct McFastPre {
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct McFastSet {
     vec3 wi;
     vec3 wr;
     float inv_ri;
@@ -77,13 +83,8 @@ struct McFastPre {
     float inv_gamma_v;
     float s_lo;
     float s_hi;
-    float eta;
-};
-struct McFastNode {
-    float x;
-    float s;
-    float v;
-    float p;
+    float eta2_;
+    float t02_;
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
@@ -119,9 +120,12 @@ const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
 const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
-const float MC_FAST_MIN_DSLOPE = 0.0001;
+const float MC_GL2_T = 0.21132487;
+const float MC_GJ2_T = 0.31101775;
+const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -146,18 +150,6 @@ vec3 weft_any_perpendicular(vec3 n) {
     float a_1 = (-1.0 / (s + n.z));
     float b_1 = ((n.x * n.y) * a_1);
     return vec3((1.0 + (((s * n.x) * n.x) * a_1)), (s * b_1), (-(s) * n.x));
-}
-
-float weft_f_dielectric(float cos_i, float eta) {
-    float c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = (((eta * eta) - 1.0) + (c * c));
-    float g = sqrt(max(g2_, 0.0));
-    float gmc = (g - c);
-    float gpc = max((g + c), 1e-7);
-    float a_2 = (gmc / gpc);
-    float b_2 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 1e-7));
-    float f = clamp((((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2))), 0.0, 1.0);
-    return ((g2_ < 0.0) ? 1.0 : f);
 }
 
 float weft_f0_from_ior(float ior) {
@@ -220,29 +212,12 @@ mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 _e13 = weft_any_perpendicular(n_2);
     vec3 t_1 = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_3 = (cross(n_2, t_1) * s_1);
-    return mat3x3(t_1, b_3, n_2);
+    vec3 b_2 = (cross(n_2, t_1) * s_1);
+    return mat3x3(t_1, b_2, n_2);
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
-}
-
-float mc_correlate(float ci, float cr, float u) {
-    float mi = max(ci, 0.0);
-    float mr = max(cr, 0.0);
-    return ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
-}
-
-float mc_acos_fast(float x) {
-    float ax = min(abs(x), 1.0);
-    float r_1 = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
-    return ((x < 0.0) ? (WEFT_PI - r_1) : r_1);
-}
-
-float mc_asin_fast(float x_1) {
-    float _e2 = mc_acos_fast(x_1);
-    return (1.5707964 - _e2);
 }
 
 float mc_offset_at(vec4 a, vec4 b, int k) {
@@ -268,7 +243,72 @@ vec3 mc_cell_means(vec4 xe, float inv_gamma) {
     return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
 }
 
-McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local = false;
+    bool local_1 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return (lit ? (s_2 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+}
+
+int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span = abs((_e5 - _e6));
+    return ((span > MC_FAST_SPLIT_DEG) ? 2 : 1);
+}
+
+float mc_u_of_cos(float c) {
+    float h_1 = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
+    float x2_ = (h_1 * (1.0 + (0.33333334 * h_1)));
+    return exp((-16.414074 * x2_));
+}
+
+float mc_fast_correlate(float ci, float cr, float u) {
+    float mi = max(ci, 0.0);
+    float mr = max(cr, 0.0);
+    float prod = (mi * mr);
+    return (prod + (u * (min(mi, mr) - prod)));
+}
+
+float mc_fast_asin(float x) {
+    float ax = min(abs(x), 1.0);
+    float r_1 = (1.5707964 - (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))))));
+    return ((x < 0.0) ? -(r_1) : r_1);
+}
+
+float mc_fresnel_exact(float c_in, float eta2_) {
+    float c_2 = clamp(c_in, WEFT_MIN_N_DOT, 1.0);
+    float g = sqrt(max(((eta2_ - 1.0) + (c_2 * c_2)), 0.0));
+    float ec = (eta2_ * c_2);
+    float a_2 = ((g - c_2) * (ec + g));
+    float b_3 = ((ec - g) * (g + c_2));
+    float d = ((g + c_2) * (ec + g));
+    return clamp(((0.5 * ((a_2 * a_2) + (b_3 * b_3))) / (d * d)), 0.0, 1.0);
+}
+
+float mc_schlick_t(float c_1) {
+    float x_2 = (1.0 - clamp(c_1, 0.0, 1.0));
+    float x2_1 = (x_2 * x_2);
+    return (1.0 - ((x2_1 * x2_1) * x_2));
+}
+
+McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     float ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -276,68 +316,70 @@ McFastPre mc_fast_pre(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     bool ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
     float inv_ri = inversesqrt(max(ri2_, MC_MIN_PROJ2_));
     float inv_rr = inversesqrt(max(rr2_, MC_MIN_PROJ2_));
-    float cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
-    float _e50 = mc_acos_fast(cos_psi_d);
-    float u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    float _e50 = mc_u_of_cos(((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr));
     float bi = (li.z / ((li.x < 0.0) ? min(li.x, -1e-12) : max(li.x, 1e-12)));
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
     float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
     float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta);
+    float _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
 }
 
-McFastNode mc_fast_node(McFastPre q, float ca, float sa) {
-    bool local = false;
-    float si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1.0, 1.0);
-    float sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1.0, 1.0);
+McFastNode mc_fast_node(McFastSet q, float ca, float sa) {
+    bool local_2 = false;
+    float si = ((q.wi.x * ca) + (q.wi.z * sa));
+    float sr = ((q.wr.x * ca) + (q.wr.z * sa));
     float ni = ((q.wi.z * ca) - (q.wi.x * sa));
     float nr = ((q.wr.z * ca) - (q.wr.x * sa));
     float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
-        local = (q.ok != 0.0);
+        local_2 = (q.ok != 0.0);
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool ok_2 = local;
+    bool ok_2 = local_2;
     float inv_ci = inversesqrt(max(ci2_, MC_MIN_PROJ2_));
     float inv_cr = inversesqrt(max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = (ci2_ * inv_ci);
     float cr_1 = (cr2_ * inv_cr);
-    float cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1.0, 1.0);
-    float cos_half_phi = sqrt((0.5 + (0.5 * cos_phi_d)));
-    float _e86 = mc_acos_fast(cos_phi_d);
-    float u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
-    float _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    float _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    float _e101 = mc_asin_fast(si);
-    float _e102 = mc_asin_fast(sr);
-    float x_2 = (0.5 * (_e101 + _e102));
+    float cos_phi_d = ((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr);
+    float cos_half_phi = sqrt(clamp((0.5 + (0.5 * cos_phi_d)), 0.0, 1.0));
+    float _e80 = mc_u_of_cos(cos_phi_d);
+    float _e81 = mc_fast_correlate((ni * inv_ci), (nr * inv_cr), _e80);
+    float _e87 = mc_fast_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
     float cd2_ = max((0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    float _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    float _e120 = weft_f_dielectric(ci_1, q.eta);
-    float _e124 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = ((1.0 - _e120) * (1.0 - _e124));
-    float base = (ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0);
-    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e100 : 0.0));
+    float inv_cd = inversesqrt(cd2_);
+    float _e105 = mc_fast_asin(clamp(((0.5 * (si + sr)) * inv_cd), -1.0, 1.0));
+    float _e109 = mc_fresnel_exact(((cd2_ * inv_cd) * cos_half_phi), q.eta2_);
+    float _e111 = mc_schlick_t(ci_1);
+    float _e113 = mc_schlick_t(cr_1);
+    float f_t = ((q.t02_ * _e111) * _e113);
+    float base = (ok_2 ? ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd) : 0.0);
+    return McFastNode(_e105, ((_e109 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002)), (ok_2 ? _e87 : 0.0));
 }
 
-vec4 mc_fast_gl3_(McFastPre q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
+vec3 mc_fast_volume3_(vec3 x_1, float inv_gamma_1) {
+    vec3 t_3 = (x_1 * inv_gamma_1);
+    return (exp(((-0.5 * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma_1));
+}
+
+vec4 mc_fast_rule3_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, McFastNode n2_, vec3 r) {
     vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     vec3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    vec3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    vec3 s_2 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 _e42 = mc_fast_volume3_(vec3(n0_.x, n1_.x, n2_.x), q_1.inv_gamma_v);
+    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
     vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_2);
-    float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    float surface = dot(_e36, s_3);
+    float volume = (((1.0 - th_1.kd) * dot(_e42, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
-vec4 mc_fast_segment(McFastPre q_2, McThread th_2, float a0_, float a1_, float lo_s, float hi_s) {
-    float span = abs((a1_ - a0_));
-    bool flat_ = (span < MC_FAST_MIN_SPAN);
-    float lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
-    float hi = clamp(hi_s, lo, max(a0_, a1_));
+vec4 mc_fast_segment(McFastSet q_2, McThread th_2, float a0_, float a1_1, float lo_s, float hi_s) {
+    float span_1 = abs((a1_1 - a0_));
+    bool flat_ = (span_1 < MC_FAST_MIN_SPAN);
+    float lo = clamp(lo_s, min(a0_, a1_1), max(a0_, a1_1));
+    float hi = clamp(hi_s, lo, max(a0_, a1_1));
     float w = (hi - lo);
     vec3 al = vec3((lo + (MC_GL3_T * w)), (lo + (0.5 * w)), (hi - (MC_GL3_T * w)));
     vec3 ca_1 = cos(al);
@@ -345,16 +387,9 @@ vec4 mc_fast_segment(McFastPre q_2, McThread th_2, float a0_, float a1_, float l
     McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
     McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
     McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
-    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (flat_ ? 1.0 : (w / max(span, MC_FAST_MIN_SPAN))));
-    vec4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (flat_ ? 1.0 : (w / max(span_1, MC_FAST_MIN_SPAN))));
+    vec4 _e47 = mc_fast_rule3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
-}
-
-int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    float span_1 = abs((_e5 - _e6));
-    return ((span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1);
 }
 
 vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_1, vec4 offsets_b_1, int count) {
@@ -363,7 +398,7 @@ vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4
     int h = 0;
     int i = 0;
     int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     float lo_s_1 = atan(_e10.s_lo);
     float hi_s_1 = atan(_e10.s_hi);
     int segments = max((n_3 - 1), 1);
@@ -417,35 +452,12 @@ vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4
     return (_e146 / vec4(float(segments)));
 }
 
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_1, float a2_, float n_dot_wi, float n_dot_wr) {
-    bool local_1 = false;
-    bool local_2 = false;
-    float c1_ = clamp(a1_1, 0.0, 1.0);
-    float c2_ = clamp(a2_, 0.0, 1.0);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
-    if ((n_dot_wi > 0.0)) {
-        local_1 = (n_dot_wr > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = (q_4 > MC_MIN_Q);
-    } else {
-        local_2 = false;
-    }
-    bool lit = local_2;
-    return (lit ? (s_3 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
-}
-
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
     return McThread(clamp((color * tint), vec3(0.0), vec3(1.0)), clamp(ior_1, 1.0, 4.0), clamp(isotropy, 0.0, 1.0), (max(gamma_s_deg, 0.0) * MC_DEG), (max(gamma_v_deg, 0.0) * MC_DEG));
 }
 
-float microcylinder_mean_fresnel(float eta_1) {
-    float _e1 = weft_f0_from_ior(eta_1);
+float microcylinder_mean_fresnel(float eta) {
+    float _e1 = weft_f0_from_ior(eta);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 

@@ -81,7 +81,13 @@ struct McFrame {
     metal::float3 v;
     metal::float3 n;
 };
-struct McFastPre {
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct McFastSet {
     metal::float3 wi;
     metal::packed_float3 wr;
     float inv_ri;
@@ -92,16 +98,12 @@ struct McFastPre {
     float inv_gamma_v;
     float s_lo;
     float s_hi;
-    float eta;
-};
-struct McFastNode {
-    float x;
-    float s;
-    float v;
-    float p;
+    float eta2_;
+    float t02_;
+    char _pad12[12];
 };
 struct type_12 {
-    metal::float4 inner[2];
+    metal::float3 inner[2];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -137,9 +139,12 @@ constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
 constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
-constant float MC_FAST_MIN_DSLOPE = 0.0001;
+constant float MC_GL2_T = 0.21132487;
+constant float MC_GJ2_T = 0.31101775;
+constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -152,32 +157,17 @@ metal::float3 weft_safe_normalize(
 metal::float3 weft_any_perpendicular(
     metal::float3 n
 ) {
-    float s_1 = (n.z >= 0.0) ? 1.0 : -1.0;
-    float a = -1.0 / (s_1 + n.z);
+    float s = (n.z >= 0.0) ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
     float b = (n.x * n.y) * a;
-    return metal::float3(1.0 + (((s_1 * n.x) * n.x) * a), s_1 * b, -(s_1) * n.x);
-}
-
-float weft_f_dielectric(
-    float cos_i,
-    float eta
-) {
-    float c = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = ((eta * eta) - 1.0) + (c * c);
-    float g = metal::sqrt(metal::max(g2_, 0.0));
-    float gmc = g - c;
-    float gpc = metal::max(g + c, 0.0000001);
-    float a_1 = gmc / gpc;
-    float b_1 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_1) * a_1) * (1.0 + (b_1 * b_1)));
-    return (g2_ < 0.0) ? 1.0 : f;
+    return metal::float3(1.0 + (((s * n.x) * n.x) * a), s * b, -(s) * n.x);
 }
 
 float weft_f0_from_ior(
     float ior
 ) {
-    float q_3 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
-    return q_3 * q_3;
+    float q_2 = (ior - 1.0) / metal::max(ior + 1.0, 0.0001);
+    return q_2 * q_2;
 }
 
 metal::float3 weft_main_light_direction(
@@ -252,9 +242,9 @@ metal::float3x3 weft_tangent_frame(
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
     metal::float3 _e13 = weft_any_perpendicular(n_2);
     metal::float3 t_2 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
-    float s_2 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_2 = metal::cross(n_2, t_2) * s_2;
-    return metal::float3x3(t_2, b_2, n_2);
+    float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
+    metal::float3 b_1 = metal::cross(n_2, t_2) * s_1;
+    return metal::float3x3(t_2, b_1, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -264,56 +254,94 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
-float mc_correlate(
+float mc_fast_slope(
+    float s0_,
+    float s1_1,
+    float s2_1,
+    float t
+) {
+    return (t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0)));
+}
+
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local = {};
+    bool local_1 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_3 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_2 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local = n_dot_wr > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = q_3 > MC_MIN_Q;
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return lit ? (s_2 / metal::float3(metal::max(q_3, MC_MIN_Q))) : metal::float3(0.0);
+}
+
+float mc_u_of_cos(
+    float c
+) {
+    float h = 0.5 - (0.5 * metal::clamp(c, -1.0, 1.0));
+    float x2_ = h * (1.0 + (0.33333334 * h));
+    return metal::exp(-16.414074 * x2_);
+}
+
+float mc_fast_correlate(
     float ci,
     float cr,
     float u
 ) {
     float mi = metal::max(ci, 0.0);
     float mr = metal::max(cr, 0.0);
-    return (((1.0 - u) * mi) * mr) + (u * metal::min(mi, mr));
+    float prod = mi * mr;
+    return prod + (u * (metal::min(mi, mr) - prod));
 }
 
-float mc_acos_fast(
+float mc_fast_asin(
     float x
 ) {
     float ax = metal::min(metal::abs(x), 1.0);
-    float r_1 = metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))));
-    return (x < 0.0) ? (WEFT_PI - r_1) : r_1;
+    float r_1 = 1.5707964 - (metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
+    return (x < 0.0) ? -(r_1) : r_1;
 }
 
-float mc_asin_fast(
-    float x_1
+float mc_fresnel_exact(
+    float c_in,
+    float eta2_
 ) {
-    float _e2 = mc_acos_fast(x_1);
-    return 1.5707964 - _e2;
+    float c_2 = metal::clamp(c_in, WEFT_MIN_N_DOT, 1.0);
+    float g = metal::sqrt(metal::max((eta2_ - 1.0) + (c_2 * c_2), 0.0));
+    float ec = eta2_ * c_2;
+    float a_1 = (g - c_2) * (ec + g);
+    float b_2 = (ec - g) * (g + c_2);
+    float d = (g + c_2) * (ec + g);
+    return metal::saturate((0.5 * ((a_1 * a_1) + (b_2 * b_2))) / (d * d));
 }
 
-type_12 mc_normal4_(
-    metal::float4 t
+float mc_schlick_t(
+    float c_1
 ) {
-    metal::float4 e_1 = metal::exp((-0.5 * t) * t);
-    metal::float4 z = metal::abs(t) * 0.70710677;
-    metal::float4 k = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
-    metal::float4 poly = k * (metal::float4(0.2548296) + (k * (metal::float4(-0.28449672) + (k * (metal::float4(1.4214138) + (k * (metal::float4(-1.4531521) + (k * 1.0614054))))))));
-    metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
-    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+    float x_2 = 1.0 - metal::saturate(c_1);
+    float x2_1 = x_2 * x_2;
+    return 1.0 - ((x2_1 * x2_1) * x_2);
 }
 
-metal::float3 mc_cell_means(
-    metal::float4 xe,
-    float inv_gamma
-) {
-    metal::float4 t_3 = xe * inv_gamma;
-    type_12 _e3 = mc_normal4_(t_3);
-    metal::float3 dt = t_3.yzw - t_3.xyz;
-    metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
-    metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
-    metal::float3 trap = 0.5 * (_e3.inner[0].xyz + _e3.inner[0].yzw);
-    return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
-}
-
-McFastPre mc_fast_pre(
+McFastSet mc_fast_setup(
     McFrame fr,
     metal::float3 wi,
     metal::float3 wr,
@@ -326,122 +354,118 @@ McFastPre mc_fast_pre(
     bool ok_1 = metal::min(ri2_, rr2_) >= MC_MIN_PROJ2_;
     float inv_ri = metal::rsqrt(metal::max(ri2_, MC_MIN_PROJ2_));
     float inv_rr = metal::rsqrt(metal::max(rr2_, MC_MIN_PROJ2_));
-    float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
-    float _e50 = mc_acos_fast(cos_psi_d);
-    float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
+    float _e50 = mc_u_of_cos((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
     float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
-    float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
-    float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
-    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
+    float s_lo_1 = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
+    float s_hi_1 = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
+    float _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo_1, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi_1, -1000000.0, MC_FAST_BIG), th.eta * th.eta, (1.0 - _e98) * (1.0 - _e98)};
 }
 
 McFastNode mc_fast_node(
-    McFastPre q,
+    McFastSet q,
     float ca,
     float sa
 ) {
-    bool local = {};
-    float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa), -1.0, 1.0);
-    float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa), -1.0, 1.0);
+    bool local_2 = {};
+    float si = (q.wi.x * ca) + (q.wi.z * sa);
+    float sr = (q.wr[0] * ca) + (q.wr[2] * sa);
     float ni = (q.wi.z * ca) - (q.wi.x * sa);
     float nr = (q.wr[2] * ca) - (q.wr[0] * sa);
     float ci2_ = (q.wi.y * q.wi.y) + (ni * ni);
     float cr2_ = (q.wr[1] * q.wr[1]) + (nr * nr);
     if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
-        local = q.ok != 0.0;
+        local_2 = q.ok != 0.0;
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool ok_2 = local;
+    bool ok_2 = local_2;
     float inv_ci = metal::rsqrt(metal::max(ci2_, MC_MIN_PROJ2_));
     float inv_cr = metal::rsqrt(metal::max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = ci2_ * inv_ci;
     float cr_1 = cr2_ * inv_cr;
-    float cos_phi_d = metal::clamp((((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
-    float cos_half_phi = metal::sqrt(0.5 + (0.5 * cos_phi_d));
-    float _e86 = mc_acos_fast(cos_phi_d);
-    float u_phi = metal::exp((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_);
-    float _e94 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
-    float _e100 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
-    float _e101 = mc_asin_fast(si);
-    float _e102 = mc_asin_fast(sr);
-    float x_2 = 0.5 * (_e101 + _e102);
+    float cos_phi_d = (((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr;
+    float cos_half_phi = metal::sqrt(metal::saturate(0.5 + (0.5 * cos_phi_d)));
+    float _e80 = mc_u_of_cos(cos_phi_d);
+    float _e81 = mc_fast_correlate(ni * inv_ci, nr * inv_cr, _e80);
+    float _e87 = mc_fast_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
     float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
-    float _e118 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
-    float _e120 = weft_f_dielectric(ci_1, q.eta);
-    float _e124 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = (1.0 - _e120) * (1.0 - _e124);
-    float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
-    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e100 : 0.0};
+    float inv_cd = metal::rsqrt(cd2_);
+    float _e105 = mc_fast_asin(metal::clamp((0.5 * (si + sr)) * inv_cd, -1.0, 1.0));
+    float _e109 = mc_fresnel_exact((cd2_ * inv_cd) * cos_half_phi, q.eta2_);
+    float _e111 = mc_schlick_t(ci_1);
+    float _e113 = mc_schlick_t(cr_1);
+    float f_t = (q.t02_ * _e111) * _e113;
+    float base = ok_2 ? ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd) : 0.0;
+    return McFastNode {_e105, (_e109 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e87 : 0.0};
 }
 
-metal::float4 mc_fast_gl3_(
-    McFastPre q_1,
-    McThread th_1,
-    McFastNode n0_,
-    McFastNode n1_,
-    McFastNode n2_,
-    metal::float3 r
+metal::float2 mc_fast_volume2_(
+    metal::float2 x_1,
+    float inv_gamma
 ) {
-    metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
-    metal::float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    metal::float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
-    metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
-    float surface = metal::dot(_e36, s_3);
-    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
-    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
+    metal::float2 t_3 = x_1 * inv_gamma;
+    return metal::exp((-0.5 * t_3) * t_3) * (MC_INV_SQRT_TWO_PI * inv_gamma);
 }
 
-metal::float2 mc_fast_half_clip(
-    McFastPre q_2,
+metal::float2 mc_fast_clip(
+    float s_lo,
+    float s_hi,
     float sa_1,
     float sb,
     float ta
 ) {
-    bool local_1 = {};
     float ds = sb - sa_1;
-    bool flat = metal::abs(ds) < MC_FAST_MIN_DSLOPE;
-    float inv = 1.0 / (flat ? 1.0 : ds);
-    float u0_ = (q_2.s_lo - sa_1) * inv;
-    float u1_ = (q_2.s_hi - sa_1) * inv;
-    if (sa_1 > q_2.s_lo) {
-        local_1 = sa_1 < q_2.s_hi;
-    } else {
-        local_1 = false;
-    }
-    bool _e31 = local_1;
-    metal::float2 uf = _e31 ? metal::float2(0.0, 1.0) : metal::float2(1.0, 0.0);
-    metal::float2 u_1 = flat ? uf : metal::float2(metal::max(metal::min(u0_, u1_), 0.0), metal::min(metal::max(u0_, u1_), 1.0));
+    float inv = 1.0 / ((metal::abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds);
+    float u0_ = (s_lo - sa_1) * inv;
+    float u1_ = (s_hi - sa_1) * inv;
+    metal::float2 u_1 = metal::saturate(metal::float2(metal::min(u0_, u1_), metal::max(u0_, u1_)));
     return (u_1.x < u_1.y) ? (metal::float2(ta) + (0.5 * u_1)) : metal::float2(2.0, -1.0);
 }
 
-float mc_fast_slope(
-    float s0_,
-    float s1_1,
-    float s2_1,
-    float t_1
-) {
-    return (t_1 < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t_1))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t_1) - 1.0)));
-}
-
-float mc_arc_primitive(
-    float s
-) {
-    float h = metal::sqrt(1.0 + (s * s));
-    return 0.5 * ((s * h) + (metal::sign(s) * metal::log(metal::abs(s) + h)));
-}
-
-float mc_fast_half_length(
+float mc_fast_half_len(
     float sa_2,
     float sb_1
 ) {
-    float ds_1 = sb_1 - sa_2;
-    float sm = 0.5 * (sa_2 + sb_1);
-    float _e6 = mc_arc_primitive(sb_1);
-    float _e7 = mc_arc_primitive(sa_2);
-    return (metal::abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * metal::sqrt(1.0 + (sm * sm))) : ((0.5 * (_e6 - _e7)) / ds_1);
+    metal::float2 s_3 = metal::float2(metal::mix(sa_2, sb_1, MC_GL2_T), metal::mix(sa_2, sb_1, 0.7886751));
+    metal::float2 l = metal::sqrt(metal::float2(1.0) + (s_3 * s_3));
+    return 0.25 * (l.x + l.y);
+}
+
+type_12 mc_normal3_(
+    metal::float3 t_1
+) {
+    metal::float3 e_2 = metal::exp((-0.5 * t_1) * t_1);
+    metal::float3 z = metal::abs(t_1) * 0.70710677;
+    metal::float3 k = metal::float3(1.0) / (metal::float3(1.0) + (0.3275911 * z));
+    metal::float3 poly = k * (metal::float3(0.2548296) + (k * (metal::float3(-0.28449672) + (k * (metal::float3(1.4214138) + (k * (metal::float3(-1.4531521) + (k * 1.0614054))))))));
+    metal::float3 half_ = metal::float3(0.5) - ((0.5 * poly) * e_2);
+    return type_12 {{e_2 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t_1 >= metal::float3(0.0))}};
+}
+
+metal::float4 mc_fast_rule2_(
+    McFastSet q_1,
+    McThread th_1,
+    McFastNode n0_,
+    McFastNode n1_,
+    metal::float2 r,
+    float e_1
+) {
+    float d_1 = n1_.x - n0_.x;
+    metal::float3 xe = metal::float3(n0_.x - (e_1 * d_1), 0.5 * (n0_.x + n1_.x), n1_.x + (e_1 * d_1));
+    float dx = (0.5 + e_1) * d_1;
+    type_12 _e26 = mc_normal3_(xe * q_1.inv_gamma_s);
+    bool wide = (metal::abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT;
+    metal::float2 exact = (_e26.inner[1].yz - _e26.inner[1].xy) / metal::float2(wide ? dx : 1.0);
+    metal::float2 trap = (0.5 * q_1.inv_gamma_s) * (_e26.inner[0].xy + _e26.inner[0].yz);
+    metal::float2 gs = metal::max(wide ? exact : trap, metal::float2(0.0));
+    metal::float2 _e58 = mc_fast_volume2_(metal::float2(n0_.x, n1_.x), q_1.inv_gamma_v);
+    metal::float2 s_4 = r * metal::float2(n0_.s, n1_.s);
+    metal::float2 v_1 = r * metal::float2(n0_.v, n1_.v);
+    float surface = metal::dot(gs, s_4);
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y));
+    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float2(n0_.p, n1_.p)));
 }
 
 metal::float4 mc_thread_curve_fast(
@@ -451,60 +475,37 @@ metal::float4 mc_thread_curve_fast(
     McThread th_2,
     type_5 heights
 ) {
-    McFastPre _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    bool local_3 = {};
+    McFastSet _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
     float s0_1 = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
     float s1_2 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
     float s2_2 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
-    metal::float2 _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0.0);
-    metal::float2 _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5);
-    float t0_ = metal::min(_e46.x, _e48.x);
-    float t1_1 = metal::max(metal::max(_e46.y, _e48.y), t0_);
+    metal::float2 _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0.0);
+    metal::float2 _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5);
+    float t0_ = metal::min(_e48.x, _e52.x);
+    float t1_1 = metal::max(metal::max(_e48.y, _e52.y), t0_);
     float w = t1_1 - t0_;
-    metal::float3 t_4 = metal::float3(t0_ + (MC_GL3_T * w), t0_ + (0.5 * w), t1_1 - (MC_GL3_T * w));
-    float _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    float _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    float _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
-    metal::float3 sl = metal::float3(_e68, _e70, _e72);
-    metal::float3 inv_len = metal::rsqrt(metal::float3(1.0) + (sl * sl));
-    McFastNode _e83 = mc_fast_node(_e5, inv_len.x, sl.x * inv_len.x);
-    McFastNode _e88 = mc_fast_node(_e5, inv_len.y, sl.y * inv_len.y);
-    McFastNode _e93 = mc_fast_node(_e5, inv_len.z, sl.z * inv_len.z);
-    metal::float3 r_2 = (metal::float3(0.2777778, 0.44444445, 0.2777778) * w) / inv_len;
-    float _e100 = mc_fast_half_length(s0_1, s1_2);
-    float _e101 = mc_fast_half_length(s1_2, s2_2);
-    float total = _e100 + _e101;
-    metal::float4 _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
-    return _e103 / metal::float4(metal::max(total, 0.000001));
-}
-
-metal::float3 mc_combine(
-    metal::float4 t1_,
-    metal::float4 t2_,
-    float a1_,
-    float a2_,
-    float n_dot_wi,
-    float n_dot_wr
-) {
-    bool local_2 = {};
-    bool local_3 = {};
-    float c1_ = metal::saturate(a1_);
-    float c2_ = metal::saturate(a2_);
-    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_4 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
-    if (n_dot_wi > 0.0) {
-        local_2 = n_dot_wr > 0.0;
-    } else {
-        local_2 = false;
-    }
-    bool _e37 = local_2;
-    if (_e37) {
-        local_3 = q_4 > MC_MIN_Q;
+    if (t0_ > 0.0001) {
+        local_3 = t1_1 < 0.9999;
     } else {
         local_3 = false;
     }
-    bool lit = local_3;
-    return lit ? (s_4 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+    bool bump = local_3;
+    float tn = bump ? MC_GJ2_T : MC_GL2_T;
+    metal::float2 t_4 = metal::float2(t0_ + (tn * w), t1_1 - (tn * w));
+    float _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    float _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    metal::float2 sl = metal::float2(_e78, _e80);
+    metal::float2 l2_ = metal::float2(1.0) + (sl * sl);
+    metal::float2 inv_len = metal::rsqrt(l2_);
+    McFastNode _e91 = mc_fast_node(_e5, inv_len.x, sl.x * inv_len.x);
+    McFastNode _e96 = mc_fast_node(_e5, inv_len.y, sl.y * inv_len.y);
+    metal::float2 r_2 = ((bump ? MC_GJ2_W : 0.5) * w) * (l2_ * inv_len);
+    float _e103 = mc_fast_half_len(s0_1, s1_2);
+    float _e104 = mc_fast_half_len(s1_2, s2_2);
+    float total = _e103 + _e104;
+    metal::float4 _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, tn / (1.0 - (2.0 * tn)));
+    return _e111 / metal::float4(metal::max(total, 0.000001));
 }
 
 McThread microcylinder_thread(
@@ -519,9 +520,9 @@ McThread microcylinder_thread(
 }
 
 float microcylinder_mean_fresnel(
-    float eta_1
+    float eta
 ) {
-    float _e1 = weft_f0_from_ior(eta_1);
+    float _e1 = weft_f0_from_ior(eta);
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 

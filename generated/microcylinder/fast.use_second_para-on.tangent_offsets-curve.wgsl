@@ -73,7 +73,14 @@ struct McFrame {
     n: vec3<f32>,
 }
 
-struct McFastPre {
+struct McFastNode {
+    x: f32,
+    s: f32,
+    v: f32,
+    p: f32,
+}
+
+struct McFastSet {
     wi: vec3<f32>,
     wr: vec3<f32>,
     inv_ri: f32,
@@ -84,14 +91,8 @@ struct McFastPre {
     inv_gamma_v: f32,
     s_lo: f32,
     s_hi: f32,
-    eta: f32,
-}
-
-struct McFastNode {
-    x: f32,
-    s: f32,
-    v: f32,
-    p: f32,
+    eta2_: f32,
+    t02_: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -128,9 +129,12 @@ const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
 const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
+const MC_GL2_T: f32 = 0.21132487f;
+const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -149,27 +153,15 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 }
 
 fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
-    let s_1 = select(-1f, 1f, (n.z >= 0f));
-    let a = (-1f / (s_1 + n.z));
+    let s = select(-1f, 1f, (n.z >= 0f));
+    let a = (-1f / (s + n.z));
     let b = ((n.x * n.y) * a);
-    return vec3<f32>((1f + (((s_1 * n.x) * n.x) * a)), (s_1 * b), (-(s_1) * n.x));
-}
-
-fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
-    let c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
-    let g2_ = (((eta * eta) - 1f) + (c * c));
-    let g = sqrt(max(g2_, 0f));
-    let gmc = (g - c);
-    let gpc = max((g + c), 0.0000001f);
-    let a_1 = (gmc / gpc);
-    let b_1 = (((c * gpc) - 1f) / max(((c * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_1) * a_1) * (1f + (b_1 * b_1))));
-    return select(f, 1f, (g2_ < 0f));
+    return vec3<f32>((1f + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
-    let q_3 = ((ior - 1f) / max((ior + 1f), 0.0001f));
-    return (q_3 * q_3);
+    let q_2 = ((ior - 1f) / max((ior + 1f), 0.0001f));
+    return (q_2 * q_2);
 }
 
 fn weft_main_light_direction() -> vec3<f32> {
@@ -227,52 +219,79 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
     let _e13 = weft_any_perpendicular(n_2);
     let t_2 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
-    let s_2 = select(1f, -1f, (tangent.w < 0f));
-    let b_2 = (cross(n_2, t_2) * s_2);
-    return mat3x3<f32>(t_2, b_2, n_2);
+    let s_1 = select(1f, -1f, (tangent.w < 0f));
+    let b_1 = (cross(n_2, t_2) * s_1);
+    return mat3x3<f32>(t_2, b_1, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn mc_correlate(ci: f32, cr: f32, u: f32) -> f32 {
+fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t: f32) -> f32 {
+    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t))), (t < 0.5f));
+}
+
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+    var local: bool;
+    var local_1: bool;
+
+    let c1_ = saturate(a1_);
+    let c2_ = saturate(a2_);
+    let gap = max(((1f - c1_) - c2_), 0f);
+    let q_3 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    if (n_dot_wi > 0f) {
+        local = (n_dot_wr > 0f);
+    } else {
+        local = false;
+    }
+    let _e37 = local;
+    if _e37 {
+        local_1 = (q_3 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    let lit = local_1;
+    return select(vec3(0f), (s_2 / vec3(max(q_3, MC_MIN_Q))), lit);
+}
+
+fn mc_u_of_cos(c: f32) -> f32 {
+    let h = (0.5f - (0.5f * clamp(c, -1f, 1f)));
+    let x2_ = (h * (1f + (0.33333334f * h)));
+    return exp((-16.414074f * x2_));
+}
+
+fn mc_fast_correlate(ci: f32, cr: f32, u: f32) -> f32 {
     let mi = max(ci, 0f);
     let mr = max(cr, 0f);
-    return ((((1f - u) * mi) * mr) + (u * min(mi, mr)));
+    let prod = (mi * mr);
+    return (prod + (u * (min(mi, mr) - prod)));
 }
 
-fn mc_acos_fast(x: f32) -> f32 {
+fn mc_fast_asin(x: f32) -> f32 {
     let ax = min(abs(x), 1f);
-    let r_1 = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
-    return select(r_1, (WEFT_PI - r_1), (x < 0f));
+    let r_1 = (1.5707964f - (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax))))))));
+    return select(r_1, -(r_1), (x < 0f));
 }
 
-fn mc_asin_fast(x_1: f32) -> f32 {
-    let _e2 = mc_acos_fast(x_1);
-    return (1.5707964f - _e2);
+fn mc_fresnel_exact(c_in: f32, eta2_: f32) -> f32 {
+    let c_2 = clamp(c_in, WEFT_MIN_N_DOT, 1f);
+    let g = sqrt(max(((eta2_ - 1f) + (c_2 * c_2)), 0f));
+    let ec = (eta2_ * c_2);
+    let a_1 = ((g - c_2) * (ec + g));
+    let b_2 = ((ec - g) * (g + c_2));
+    let d = ((g + c_2) * (ec + g));
+    return saturate(((0.5f * ((a_1 * a_1) + (b_2 * b_2))) / (d * d)));
 }
 
-fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
-    let e_1 = exp(((-0.5f * t) * t));
-    let z = (abs(t) * 0.70710677f);
-    let k = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k * (vec4(0.2548296f) + (k * (vec4(-0.28449672f) + (k * (vec4(1.4214138f) + (k * (vec4(-1.4531521f) + (k * 1.0614054f)))))))));
-    let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
-    return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
+fn mc_schlick_t(c_1: f32) -> f32 {
+    let x_2 = (1f - saturate(c_1));
+    let x2_1 = (x_2 * x_2);
+    return (1f - ((x2_1 * x2_1) * x_2));
 }
 
-fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
-    let t_3 = (xe * inv_gamma);
-    let _e3 = mc_normal4_(t_3);
-    let dt = (t_3.yzw - t_3.xyz);
-    let wide = (abs(dt) >= vec3(0.1f));
-    let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
-    let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
-    return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
-}
-
-fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     let ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -280,157 +299,137 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
     let ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
     let inv_ri = inverseSqrt(max(ri2_, MC_MIN_PROJ2_));
     let inv_rr = inverseSqrt(max(rr2_, MC_MIN_PROJ2_));
-    let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
-    let _e50 = mc_acos_fast(cos_psi_d);
-    let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    let _e50 = mc_u_of_cos(((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr));
     let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
     let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
-    let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
-    let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
+    let s_lo_1 = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
+    let s_hi_1 = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
+    let _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo_1, -1000000f, MC_FAST_BIG), clamp(s_hi_1, -1000000f, MC_FAST_BIG), (th.eta * th.eta), ((1f - _e98) * (1f - _e98)));
 }
 
-fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
-    var local: bool;
+fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
+    var local_2: bool;
 
-    let si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1f, 1f);
-    let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1f, 1f);
+    let si = ((q.wi.x * ca) + (q.wi.z * sa));
+    let sr = ((q.wr.x * ca) + (q.wr.z * sa));
     let ni = ((q.wi.z * ca) - (q.wi.x * sa));
     let nr = ((q.wr.z * ca) - (q.wr.x * sa));
     let ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     let cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
-        local = (q.ok != 0f);
+        local_2 = (q.ok != 0f);
     } else {
-        local = false;
+        local_2 = false;
     }
-    let ok_2 = local;
+    let ok_2 = local_2;
     let inv_ci = inverseSqrt(max(ci2_, MC_MIN_PROJ2_));
     let inv_cr = inverseSqrt(max(cr2_, MC_MIN_PROJ2_));
     let ci_1 = (ci2_ * inv_ci);
     let cr_1 = (cr2_ * inv_cr);
-    let cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
-    let cos_half_phi = sqrt((0.5f + (0.5f * cos_phi_d)));
-    let _e86 = mc_acos_fast(cos_phi_d);
-    let u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
-    let _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    let _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    let _e101 = mc_asin_fast(si);
-    let _e102 = mc_asin_fast(sr);
-    let x_2 = (0.5f * (_e101 + _e102));
+    let cos_phi_d = ((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr);
+    let cos_half_phi = sqrt(saturate((0.5f + (0.5f * cos_phi_d))));
+    let _e80 = mc_u_of_cos(cos_phi_d);
+    let _e81 = mc_fast_correlate((ni * inv_ci), (nr * inv_cr), _e80);
+    let _e87 = mc_fast_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
     let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    let _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    let _e120 = weft_f_dielectric(ci_1, q.eta);
-    let _e124 = weft_f_dielectric(cr_1, q.eta);
-    let f_t = ((1f - _e120) * (1f - _e124));
-    let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
-    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e100, ok_2));
+    let inv_cd = inverseSqrt(cd2_);
+    let _e105 = mc_fast_asin(clamp(((0.5f * (si + sr)) * inv_cd), -1f, 1f));
+    let _e109 = mc_fresnel_exact(((cd2_ * inv_cd) * cos_half_phi), q.eta2_);
+    let _e111 = mc_schlick_t(ci_1);
+    let _e113 = mc_schlick_t(cr_1);
+    let f_t = ((q.t02_ * _e111) * _e113);
+    let base = select(0f, ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd), ok_2);
+    return McFastNode(_e105, ((_e109 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e87, ok_2));
 }
 
-fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
-    let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
-    let _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    let _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
-    let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
-    let surface = dot(_e36, s_3);
-    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
-    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
+fn mc_fast_volume2_(x_1: vec2<f32>, inv_gamma: f32) -> vec2<f32> {
+    let t_3 = (x_1 * inv_gamma);
+    return (exp(((-0.5f * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma));
 }
 
-fn mc_fast_half_clip(q_2: McFastPre, sa_1: f32, sb: f32, ta: f32) -> vec2<f32> {
-    var local_1: bool;
-
+fn mc_fast_clip(s_lo: f32, s_hi: f32, sa_1: f32, sb: f32, ta: f32) -> vec2<f32> {
     let ds = (sb - sa_1);
-    let flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
-    let inv = (1f / select(ds, 1f, flat));
-    let u0_ = ((q_2.s_lo - sa_1) * inv);
-    let u1_ = ((q_2.s_hi - sa_1) * inv);
-    if (sa_1 > q_2.s_lo) {
-        local_1 = (sa_1 < q_2.s_hi);
-    } else {
-        local_1 = false;
-    }
-    let _e31 = local_1;
-    let uf = select(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f), _e31);
-    let u_1 = select(vec2<f32>(max(min(u0_, u1_), 0f), min(max(u0_, u1_), 1f)), uf, flat);
+    let inv = (1f / select(ds, select(-0.0001f, MC_FAST_MIN_DSLOPE, (ds >= 0f)), (abs(ds) < MC_FAST_MIN_DSLOPE)));
+    let u0_ = ((s_lo - sa_1) * inv);
+    let u1_ = ((s_hi - sa_1) * inv);
+    let u_1 = saturate(vec2<f32>(min(u0_, u1_), max(u0_, u1_)));
     return select(vec2<f32>(2f, -1f), (vec2(ta) + (0.5f * u_1)), (u_1.x < u_1.y));
 }
 
-fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t_1: f32) -> f32 {
-    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t_1) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t_1))), (t_1 < 0.5f));
+fn mc_fast_half_len(sa_2: f32, sb_1: f32) -> f32 {
+    let s_3 = vec2<f32>(mix(sa_2, sb_1, MC_GL2_T), mix(sa_2, sb_1, 0.7886751f));
+    let l = sqrt((vec2(1f) + (s_3 * s_3)));
+    return (0.25f * (l.x + l.y));
 }
 
-fn mc_arc_primitive(s: f32) -> f32 {
-    let h = sqrt((1f + (s * s)));
-    return (0.5f * ((s * h) + (sign(s) * log((abs(s) + h)))));
+fn mc_normal3_(t_1: vec3<f32>) -> array<vec3<f32>, 2> {
+    let e_2 = exp(((-0.5f * t_1) * t_1));
+    let z = (abs(t_1) * 0.70710677f);
+    let k = (vec3(1f) / (vec3(1f) + (0.3275911f * z)));
+    let poly = (k * (vec3(0.2548296f) + (k * (vec3(-0.28449672f) + (k * (vec3(1.4214138f) + (k * (vec3(-1.4531521f) + (k * 1.0614054f)))))))));
+    let half = (vec3(0.5f) - ((0.5f * poly) * e_2));
+    return array<vec3<f32>, 2>((e_2 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t_1 >= vec3(0f))));
 }
 
-fn mc_fast_half_length(sa_2: f32, sb_1: f32) -> f32 {
-    let ds_1 = (sb_1 - sa_2);
-    let sm = (0.5f * (sa_2 + sb_1));
-    let _e6 = mc_arc_primitive(sb_1);
-    let _e7 = mc_arc_primitive(sa_2);
-    return select(((0.5f * (_e6 - _e7)) / ds_1), (0.5f * sqrt((1f + (sm * sm)))), (abs(ds_1) < MC_FAST_MIN_DSLOPE));
+fn mc_fast_rule2_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNode, r: vec2<f32>, e_1: f32) -> vec4<f32> {
+    let d_1 = (n1_.x - n0_.x);
+    let xe = vec3<f32>((n0_.x - (e_1 * d_1)), (0.5f * (n0_.x + n1_.x)), (n1_.x + (e_1 * d_1)));
+    let dx = ((0.5f + e_1) * d_1);
+    let _e26 = mc_normal3_((xe * q_1.inv_gamma_s));
+    let wide = ((abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT);
+    let exact = ((_e26[1].yz - _e26[1].xy) / vec2(select(1f, dx, wide)));
+    let trap = ((0.5f * q_1.inv_gamma_s) * (_e26[0].xy + _e26[0].yz));
+    let gs = max(select(trap, exact, wide), vec2(0f));
+    let _e58 = mc_fast_volume2_(vec2<f32>(n0_.x, n1_.x), q_1.inv_gamma_v);
+    let s_4 = (r * vec2<f32>(n0_.s, n1_.s));
+    let v_1 = (r * vec2<f32>(n0_.v, n1_.v));
+    let surface = dot(gs, s_4);
+    let volume = (((1f - th_1.kd) * dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
+    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2<f32>(n0_.p, n1_.p)));
 }
 
 fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let _e5 = mc_fast_pre(fr_1, wi_1, wr_1, th_2);
+    var local_3: bool;
+
+    let _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
     let s0_1 = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
     let s1_2 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
     let s2_2 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
-    let _e46 = mc_fast_half_clip(_e5, s0_1, s1_2, 0f);
-    let _e48 = mc_fast_half_clip(_e5, s1_2, s2_2, 0.5f);
-    let t0_ = min(_e46.x, _e48.x);
-    let t1_1 = max(max(_e46.y, _e48.y), t0_);
+    let _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0f);
+    let _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5f);
+    let t0_ = min(_e48.x, _e52.x);
+    let t1_1 = max(max(_e48.y, _e52.y), t0_);
     let w = (t1_1 - t0_);
-    let t_4 = vec3<f32>((t0_ + (MC_GL3_T * w)), (t0_ + (0.5f * w)), (t1_1 - (MC_GL3_T * w)));
-    let _e68 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    let _e70 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    let _e72 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.z);
-    let sl = vec3<f32>(_e68, _e70, _e72);
-    let inv_len = inverseSqrt((vec3(1f) + (sl * sl)));
-    let _e83 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
-    let _e88 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
-    let _e93 = mc_fast_node(_e5, inv_len.z, (sl.z * inv_len.z));
-    let r_2 = ((vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * w) / inv_len);
-    let _e100 = mc_fast_half_length(s0_1, s1_2);
-    let _e101 = mc_fast_half_length(s1_2, s2_2);
-    let total = (_e100 + _e101);
-    let _e103 = mc_fast_gl3_(_e5, th_2, _e83, _e88, _e93, r_2);
-    return (_e103 / vec4(max(total, 0.000001f)));
-}
-
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
-    var local_2: bool;
-    var local_3: bool;
-
-    let c1_ = saturate(a1_);
-    let c2_ = saturate(a2_);
-    let gap = max(((1f - c1_) - c2_), 0f);
-    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
-    if (n_dot_wi > 0f) {
-        local_2 = (n_dot_wr > 0f);
-    } else {
-        local_2 = false;
-    }
-    let _e37 = local_2;
-    if _e37 {
-        local_3 = (q_4 > MC_MIN_Q);
+    if (t0_ > 0.0001f) {
+        local_3 = (t1_1 < 0.9999f);
     } else {
         local_3 = false;
     }
-    let lit = local_3;
-    return select(vec3(0f), (s_4 / vec3(max(q_4, MC_MIN_Q))), lit);
+    let bump = local_3;
+    let tn = select(MC_GL2_T, MC_GJ2_T, bump);
+    let t_4 = vec2<f32>((t0_ + (tn * w)), (t1_1 - (tn * w)));
+    let _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
+    let _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
+    let sl = vec2<f32>(_e78, _e80);
+    let l2_ = (vec2(1f) + (sl * sl));
+    let inv_len = inverseSqrt(l2_);
+    let _e91 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
+    let _e96 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    let r_2 = ((select(0.5f, MC_GJ2_W, bump) * w) * (l2_ * inv_len));
+    let _e103 = mc_fast_half_len(s0_1, s1_2);
+    let _e104 = mc_fast_half_len(s1_2, s2_2);
+    let total = (_e103 + _e104);
+    let _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, (tn / (1f - (2f * tn))));
+    return (_e111 / vec4(max(total, 0.000001f)));
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
     return McThread(saturate((color * tint)), clamp(ior_1, 1f, 4f), saturate(isotropy), (max(gamma_s_deg, 0f) * MC_DEG), (max(gamma_v_deg, 0f) * MC_DEG));
 }
 
-fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
-    let _e1 = weft_f0_from_ior(eta_1);
+fn microcylinder_mean_fresnel(eta: f32) -> f32 {
+    let _e1 = weft_f0_from_ior(eta);
     return (_e1 + ((1f - _e1) / 21f));
 }
 

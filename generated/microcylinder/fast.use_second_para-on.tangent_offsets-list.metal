@@ -81,7 +81,16 @@ struct McFrame {
     metal::float3 v;
     metal::float3 n;
 };
-struct McFastPre {
+struct McFastNode {
+    float x;
+    float s;
+    float v;
+    float p;
+};
+struct type_12 {
+    metal::float4 inner[2];
+};
+struct McFastSet {
     metal::float3 wi;
     metal::packed_float3 wr;
     float inv_ri;
@@ -92,16 +101,9 @@ struct McFastPre {
     float inv_gamma_v;
     float s_lo;
     float s_hi;
-    float eta;
-};
-struct McFastNode {
-    float x;
-    float s;
-    float v;
-    float p;
-};
-struct type_12 {
-    metal::float4 inner[2];
+    float eta2_;
+    float t02_;
+    char _pad12[12];
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -137,9 +139,12 @@ constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
 constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
-constant float MC_FAST_MIN_DSLOPE = 0.0001;
+constant float MC_GL2_T = 0.21132487;
+constant float MC_GJ2_T = 0.31101775;
+constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -156,21 +161,6 @@ metal::float3 weft_any_perpendicular(
     float a_1 = -1.0 / (s + n.z);
     float b_1 = (n.x * n.y) * a_1;
     return metal::float3(1.0 + (((s * n.x) * n.x) * a_1), s * b_1, -(s) * n.x);
-}
-
-float weft_f_dielectric(
-    float cos_i,
-    float eta
-) {
-    float c = metal::clamp(metal::abs(cos_i), WEFT_MIN_N_DOT, 1.0);
-    float g2_ = ((eta * eta) - 1.0) + (c * c);
-    float g = metal::sqrt(metal::max(g2_, 0.0));
-    float gmc = g - c;
-    float gpc = metal::max(g + c, 0.0000001);
-    float a_2 = gmc / gpc;
-    float b_2 = ((c * gpc) - 1.0) / metal::max((c * gmc) + 1.0, 0.0000001);
-    float f = metal::saturate(((0.5 * a_2) * a_2) * (1.0 + (b_2 * b_2)));
-    return (g2_ < 0.0) ? 1.0 : f;
 }
 
 float weft_f0_from_ior(
@@ -253,8 +243,8 @@ metal::float3x3 weft_tangent_frame(
     metal::float3 _e13 = weft_any_perpendicular(n_2);
     metal::float3 t_1 = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_3 = metal::cross(n_2, t_1) * s_1;
-    return metal::float3x3(t_1, b_3, n_2);
+    metal::float3 b_2 = metal::cross(n_2, t_1) * s_1;
+    return metal::float3x3(t_1, b_2, n_2);
 }
 
 metal::float2 weft_transform_uv(
@@ -262,31 +252,6 @@ metal::float2 weft_transform_uv(
     metal::float4 st
 ) {
     return (uv * st.xy) + st.zw;
-}
-
-float mc_correlate(
-    float ci,
-    float cr,
-    float u
-) {
-    float mi = metal::max(ci, 0.0);
-    float mr = metal::max(cr, 0.0);
-    return (((1.0 - u) * mi) * mr) + (u * metal::min(mi, mr));
-}
-
-float mc_acos_fast(
-    float x
-) {
-    float ax = metal::min(metal::abs(x), 1.0);
-    float r_1 = metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax))))));
-    return (x < 0.0) ? (WEFT_PI - r_1) : r_1;
-}
-
-float mc_asin_fast(
-    float x_1
-) {
-    float _e2 = mc_acos_fast(x_1);
-    return 1.5707964 - _e2;
 }
 
 float mc_offset_at(
@@ -321,7 +286,96 @@ metal::float3 mc_cell_means(
     return metal::max(metal::select(trap, exact, wide), metal::float3(0.0)) * inv_gamma;
 }
 
-McFastPre mc_fast_pre(
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local = {};
+    bool local_1 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_2 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local = n_dot_wr > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = q_4 > MC_MIN_Q;
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return lit ? (s_2 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+}
+
+int mc_fast_pieces(
+    metal::float4 offsets_a,
+    metal::float4 offsets_b,
+    int k_1
+) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span = metal::abs(_e5 - _e6);
+    return (span > MC_FAST_SPLIT_DEG) ? 2 : 1;
+}
+
+float mc_u_of_cos(
+    float c
+) {
+    float h_1 = 0.5 - (0.5 * metal::clamp(c, -1.0, 1.0));
+    float x2_ = h_1 * (1.0 + (0.33333334 * h_1));
+    return metal::exp(-16.414074 * x2_);
+}
+
+float mc_fast_correlate(
+    float ci,
+    float cr,
+    float u
+) {
+    float mi = metal::max(ci, 0.0);
+    float mr = metal::max(cr, 0.0);
+    float prod = mi * mr;
+    return prod + (u * (metal::min(mi, mr) - prod));
+}
+
+float mc_fast_asin(
+    float x
+) {
+    float ax = metal::min(metal::abs(x), 1.0);
+    float r_1 = 1.5707964 - (metal::sqrt(1.0 - ax) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
+    return (x < 0.0) ? -(r_1) : r_1;
+}
+
+float mc_fresnel_exact(
+    float c_in,
+    float eta2_
+) {
+    float c_2 = metal::clamp(c_in, WEFT_MIN_N_DOT, 1.0);
+    float g = metal::sqrt(metal::max((eta2_ - 1.0) + (c_2 * c_2), 0.0));
+    float ec = eta2_ * c_2;
+    float a_2 = (g - c_2) * (ec + g);
+    float b_3 = (ec - g) * (g + c_2);
+    float d = (g + c_2) * (ec + g);
+    return metal::saturate((0.5 * ((a_2 * a_2) + (b_3 * b_3))) / (d * d));
+}
+
+float mc_schlick_t(
+    float c_1
+) {
+    float x_2 = 1.0 - metal::saturate(c_1);
+    float x2_1 = x_2 * x_2;
+    return 1.0 - ((x2_1 * x2_1) * x_2);
+}
+
+McFastSet mc_fast_setup(
     McFrame fr,
     metal::float3 wi,
     metal::float3 wr,
@@ -334,58 +388,63 @@ McFastPre mc_fast_pre(
     bool ok_1 = metal::min(ri2_, rr2_) >= MC_MIN_PROJ2_;
     float inv_ri = metal::rsqrt(metal::max(ri2_, MC_MIN_PROJ2_));
     float inv_rr = metal::rsqrt(metal::max(rr2_, MC_MIN_PROJ2_));
-    float cos_psi_d = (((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr;
-    float _e50 = mc_acos_fast(cos_psi_d);
-    float u_psi = metal::exp((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_);
+    float _e50 = mc_u_of_cos((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
     float bi = li.z / ((li.x < 0.0) ? metal::min(li.x, -0.000000000001) : metal::max(li.x, 0.000000000001));
     float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
     float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
     float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
-    return McFastPre {li, lr, inv_ri, inv_rr, u_psi, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta};
+    float _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta * th.eta, (1.0 - _e98) * (1.0 - _e98)};
 }
 
 McFastNode mc_fast_node(
-    McFastPre q,
+    McFastSet q,
     float ca,
     float sa
 ) {
-    bool local = {};
-    float si = metal::clamp((q.wi.x * ca) + (q.wi.z * sa), -1.0, 1.0);
-    float sr = metal::clamp((q.wr[0] * ca) + (q.wr[2] * sa), -1.0, 1.0);
+    bool local_2 = {};
+    float si = (q.wi.x * ca) + (q.wi.z * sa);
+    float sr = (q.wr[0] * ca) + (q.wr[2] * sa);
     float ni = (q.wi.z * ca) - (q.wi.x * sa);
     float nr = (q.wr[2] * ca) - (q.wr[0] * sa);
     float ci2_ = (q.wi.y * q.wi.y) + (ni * ni);
     float cr2_ = (q.wr[1] * q.wr[1]) + (nr * nr);
     if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
-        local = q.ok != 0.0;
+        local_2 = q.ok != 0.0;
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool ok_2 = local;
+    bool ok_2 = local_2;
     float inv_ci = metal::rsqrt(metal::max(ci2_, MC_MIN_PROJ2_));
     float inv_cr = metal::rsqrt(metal::max(cr2_, MC_MIN_PROJ2_));
     float ci_1 = ci2_ * inv_ci;
     float cr_1 = cr2_ * inv_cr;
-    float cos_phi_d = metal::clamp((((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr, -1.0, 1.0);
-    float cos_half_phi = metal::sqrt(0.5 + (0.5 * cos_phi_d));
-    float _e86 = mc_acos_fast(cos_phi_d);
-    float u_phi = metal::exp((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_);
-    float _e94 = mc_correlate(ni * inv_ci, nr * inv_cr, u_phi);
-    float _e100 = mc_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
-    float _e101 = mc_asin_fast(si);
-    float _e102 = mc_asin_fast(sr);
-    float x_2 = 0.5 * (_e101 + _e102);
+    float cos_phi_d = (((q.wi.y * q.wr[1]) + (ni * nr)) * inv_ci) * inv_cr;
+    float cos_half_phi = metal::sqrt(metal::saturate(0.5 + (0.5 * cos_phi_d)));
+    float _e80 = mc_u_of_cos(cos_phi_d);
+    float _e81 = mc_fast_correlate(ni * inv_ci, nr * inv_cr, _e80);
+    float _e87 = mc_fast_correlate(ni * q.inv_ri, nr * q.inv_rr, q.u_psi);
     float cd2_ = metal::max(0.5 + (0.5 * ((ci_1 * cr_1) + (si * sr))), MC_MIN_COS2_THETA_D);
-    float _e118 = weft_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, q.eta);
-    float _e120 = weft_f_dielectric(ci_1, q.eta);
-    float _e124 = weft_f_dielectric(cr_1, q.eta);
-    float f_t = (1.0 - _e120) * (1.0 - _e124);
-    float base = ok_2 ? (((_e94 * _e100) * ci_1) / cd2_) : 0.0;
-    return McFastNode {x_2, (_e118 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e100 : 0.0};
+    float inv_cd = metal::rsqrt(cd2_);
+    float _e105 = mc_fast_asin(metal::clamp((0.5 * (si + sr)) * inv_cd, -1.0, 1.0));
+    float _e109 = mc_fresnel_exact((cd2_ * inv_cd) * cos_half_phi, q.eta2_);
+    float _e111 = mc_schlick_t(ci_1);
+    float _e113 = mc_schlick_t(cr_1);
+    float f_t = (q.t02_ * _e111) * _e113;
+    float base = ok_2 ? ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd) : 0.0;
+    return McFastNode {_e105, (_e109 * cos_half_phi) * base, (f_t * base) / metal::max(ci_1 + cr_1, 0.0002), ok_2 ? _e87 : 0.0};
 }
 
-metal::float4 mc_fast_gl3_(
-    McFastPre q_1,
+metal::float3 mc_fast_volume3_(
+    metal::float3 x_1,
+    float inv_gamma_1
+) {
+    metal::float3 t_3 = x_1 * inv_gamma_1;
+    return metal::exp((-0.5 * t_3) * t_3) * (MC_INV_SQRT_TWO_PI * inv_gamma_1);
+}
+
+metal::float4 mc_fast_rule3_(
+    McFastSet q_1,
     McThread th_1,
     McFastNode n0_,
     McFastNode n1_,
@@ -394,26 +453,26 @@ metal::float4 mc_fast_gl3_(
 ) {
     metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
     metal::float3 _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    metal::float3 _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    metal::float3 s_2 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 _e42 = mc_fast_volume3_(metal::float3(n0_.x, n1_.x, n2_.x), q_1.inv_gamma_v);
+    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
     metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
-    float surface = metal::dot(_e36, s_2);
-    float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
+    float surface = metal::dot(_e36, s_3);
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e42, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
     return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
 }
 
 metal::float4 mc_fast_segment(
-    McFastPre q_2,
+    McFastSet q_2,
     McThread th_2,
     float a0_,
-    float a1_,
+    float a1_1,
     float lo_s,
     float hi_s
 ) {
-    float span = metal::abs(a1_ - a0_);
-    bool flat = span < MC_FAST_MIN_SPAN;
-    float lo = metal::clamp(lo_s, metal::min(a0_, a1_), metal::max(a0_, a1_));
-    float hi = metal::clamp(hi_s, lo, metal::max(a0_, a1_));
+    float span_1 = metal::abs(a1_1 - a0_);
+    bool flat = span_1 < MC_FAST_MIN_SPAN;
+    float lo = metal::clamp(lo_s, metal::min(a0_, a1_1), metal::max(a0_, a1_1));
+    float hi = metal::clamp(hi_s, lo, metal::max(a0_, a1_1));
     float w = hi - lo;
     metal::float3 al = metal::float3(lo + (MC_GL3_T * w), lo + (0.5 * w), hi - (MC_GL3_T * w));
     metal::float3 ca_1 = metal::cos(al);
@@ -421,20 +480,9 @@ metal::float4 mc_fast_segment(
     McFastNode _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
     McFastNode _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
     McFastNode _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
-    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span, MC_FAST_MIN_SPAN)));
-    metal::float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span_1, MC_FAST_MIN_SPAN)));
+    metal::float4 _e47 = mc_fast_rule3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
-}
-
-int mc_fast_pieces(
-    metal::float4 offsets_a,
-    metal::float4 offsets_b,
-    int k_1
-) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    float span_1 = metal::abs(_e5 - _e6);
-    return (span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1;
 }
 
 metal::float4 mc_thread_list_fast(
@@ -451,7 +499,7 @@ metal::float4 mc_thread_list_fast(
     int h = 0;
     int i = 0;
     int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
-    McFastPre _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     float lo_s_1 = metal::atan(_e10.s_lo);
     float hi_s_1 = metal::atan(_e10.s_hi);
     int segments = metal::max(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)), 1);
@@ -508,36 +556,6 @@ metal::float4 mc_thread_list_fast(
     return _e146 / metal::float4(static_cast<float>(segments));
 }
 
-metal::float3 mc_combine(
-    metal::float4 t1_,
-    metal::float4 t2_,
-    float a1_1,
-    float a2_,
-    float n_dot_wi,
-    float n_dot_wr
-) {
-    bool local_1 = {};
-    bool local_2 = {};
-    float c1_ = metal::saturate(a1_1);
-    float c2_ = metal::saturate(a2_);
-    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
-    if (n_dot_wi > 0.0) {
-        local_1 = n_dot_wr > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = q_4 > MC_MIN_Q;
-    } else {
-        local_2 = false;
-    }
-    bool lit = local_2;
-    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
-}
-
 McThread microcylinder_thread(
     metal::float3 color,
     float ior_1,
@@ -550,9 +568,9 @@ McThread microcylinder_thread(
 }
 
 float microcylinder_mean_fresnel(
-    float eta_1
+    float eta
 ) {
-    float _e1 = weft_f0_from_ior(eta_1);
+    float _e1 = weft_f0_from_ior(eta);
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
@@ -643,12 +661,12 @@ fragment fs_mainOutput fs_main(
     metal::float3 v_raw = _e65.v;
     metal::float3 n_4 = _e65.n;
     metal::float3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
-    metal::float3 t_3 = _e69[0];
+    metal::float3 t_4 = _e69[0];
     metal::float3 b_4 = _e69[1];
     metal::float3 _e79 = weft_safe_normalize(v_raw + (n_4 * metal::max(0.001 - metal::dot(n_4, v_raw), 0.0)), n_4);
     metal::float3 _e80 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_3, b_4, n_4};
-    McFrame weft = McFrame {b_4, t_3, n_4};
+    McFrame warp = McFrame {t_4, b_4, n_4};
+    McFrame weft = McFrame {b_4, t_4, n_4};
     {
         {
             {

@@ -73,7 +73,14 @@ struct McFrame {
     n: vec3<f32>,
 }
 
-struct McFastPre {
+struct McFastNode {
+    x: f32,
+    s: f32,
+    v: f32,
+    p: f32,
+}
+
+struct McFastSet {
     wi: vec3<f32>,
     wr: vec3<f32>,
     inv_ri: f32,
@@ -84,14 +91,8 @@ struct McFastPre {
     inv_gamma_v: f32,
     s_lo: f32,
     s_hi: f32,
-    eta: f32,
-}
-
-struct McFastNode {
-    x: f32,
-    s: f32,
-    v: f32,
-    p: f32,
+    eta2_: f32,
+    t02_: f32,
 }
 
 const WEFT_PI: f32 = 3.1415927f;
@@ -128,9 +129,12 @@ const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
 const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
+const MC_GL2_T: f32 = 0.21132487f;
+const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -153,18 +157,6 @@ fn weft_any_perpendicular(n: vec3<f32>) -> vec3<f32> {
     let a_1 = (-1f / (s + n.z));
     let b_1 = ((n.x * n.y) * a_1);
     return vec3<f32>((1f + (((s * n.x) * n.x) * a_1)), (s * b_1), (-(s) * n.x));
-}
-
-fn weft_f_dielectric(cos_i: f32, eta: f32) -> f32 {
-    let c = clamp(abs(cos_i), WEFT_MIN_N_DOT, 1f);
-    let g2_ = (((eta * eta) - 1f) + (c * c));
-    let g = sqrt(max(g2_, 0f));
-    let gmc = (g - c);
-    let gpc = max((g + c), 0.0000001f);
-    let a_2 = (gmc / gpc);
-    let b_2 = (((c * gpc) - 1f) / max(((c * gmc) + 1f), 0.0000001f));
-    let f = saturate((((0.5f * a_2) * a_2) * (1f + (b_2 * b_2))));
-    return select(f, 1f, (g2_ < 0f));
 }
 
 fn weft_f0_from_ior(ior: f32) -> f32 {
@@ -228,29 +220,12 @@ fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let _e13 = weft_any_perpendicular(n_2);
     let t_1 = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_3 = (cross(n_2, t_1) * s_1);
-    return mat3x3<f32>(t_1, b_3, n_2);
+    let b_2 = (cross(n_2, t_1) * s_1);
+    return mat3x3<f32>(t_1, b_2, n_2);
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
-}
-
-fn mc_correlate(ci: f32, cr: f32, u: f32) -> f32 {
-    let mi = max(ci, 0f);
-    let mr = max(cr, 0f);
-    return ((((1f - u) * mi) * mr) + (u * min(mi, mr)));
-}
-
-fn mc_acos_fast(x: f32) -> f32 {
-    let ax = min(abs(x), 1f);
-    let r_1 = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
-    return select(r_1, (WEFT_PI - r_1), (x < 0f));
-}
-
-fn mc_asin_fast(x_1: f32) -> f32 {
-    let _e2 = mc_acos_fast(x_1);
-    return (1.5707964f - _e2);
 }
 
 fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
@@ -276,7 +251,73 @@ fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
     return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
 }
 
-fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastPre {
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+    var local: bool;
+    var local_1: bool;
+
+    let c1_ = saturate(a1_);
+    let c2_ = saturate(a2_);
+    let gap = max(((1f - c1_) - c2_), 0f);
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    if (n_dot_wi > 0f) {
+        local = (n_dot_wr > 0f);
+    } else {
+        local = false;
+    }
+    let _e37 = local;
+    if _e37 {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    let lit = local_1;
+    return select(vec3(0f), (s_2 / vec3(max(q_4, MC_MIN_Q))), lit);
+}
+
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
+    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
+    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    let span = abs((_e5 - _e6));
+    return select(1i, 2i, (span > MC_FAST_SPLIT_DEG));
+}
+
+fn mc_u_of_cos(c: f32) -> f32 {
+    let h_1 = (0.5f - (0.5f * clamp(c, -1f, 1f)));
+    let x2_ = (h_1 * (1f + (0.33333334f * h_1)));
+    return exp((-16.414074f * x2_));
+}
+
+fn mc_fast_correlate(ci: f32, cr: f32, u: f32) -> f32 {
+    let mi = max(ci, 0f);
+    let mr = max(cr, 0f);
+    let prod = (mi * mr);
+    return (prod + (u * (min(mi, mr) - prod)));
+}
+
+fn mc_fast_asin(x: f32) -> f32 {
+    let ax = min(abs(x), 1f);
+    let r_1 = (1.5707964f - (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax))))))));
+    return select(r_1, -(r_1), (x < 0f));
+}
+
+fn mc_fresnel_exact(c_in: f32, eta2_: f32) -> f32 {
+    let c_2 = clamp(c_in, WEFT_MIN_N_DOT, 1f);
+    let g = sqrt(max(((eta2_ - 1f) + (c_2 * c_2)), 0f));
+    let ec = (eta2_ * c_2);
+    let a_2 = ((g - c_2) * (ec + g));
+    let b_3 = ((ec - g) * (g + c_2));
+    let d = ((g + c_2) * (ec + g));
+    return saturate(((0.5f * ((a_2 * a_2) + (b_3 * b_3))) / (d * d)));
+}
+
+fn mc_schlick_t(c_1: f32) -> f32 {
+    let x_2 = (1f - saturate(c_1));
+    let x2_1 = (x_2 * x_2);
+    return (1f - ((x2_1 * x2_1) * x_2));
+}
+
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     let ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -284,69 +325,71 @@ fn mc_fast_pre(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFas
     let ok_1 = (min(ri2_, rr2_) >= MC_MIN_PROJ2_);
     let inv_ri = inverseSqrt(max(ri2_, MC_MIN_PROJ2_));
     let inv_rr = inverseSqrt(max(rr2_, MC_MIN_PROJ2_));
-    let cos_psi_d = ((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr);
-    let _e50 = mc_acos_fast(cos_psi_d);
-    let u_psi = exp(((-(_e50) * _e50) * MC_U_INV_TWO_SIGMA2_));
+    let _e50 = mc_u_of_cos(((((li.x * lr.x) + (li.z * lr.z)) * inv_ri) * inv_rr));
     let bi = (li.z / select(max(li.x, 0.000000000001f), min(li.x, -0.000000000001f), (li.x < 0f)));
     let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
     let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
     let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
-    return McFastPre(li, lr, inv_ri, inv_rr, u_psi, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), th.eta);
+    let _e98 = weft_f0_from_ior(th.eta);
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), (th.eta * th.eta), ((1f - _e98) * (1f - _e98)));
 }
 
-fn mc_fast_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
-    var local: bool;
+fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
+    var local_2: bool;
 
-    let si = clamp(((q.wi.x * ca) + (q.wi.z * sa)), -1f, 1f);
-    let sr = clamp(((q.wr.x * ca) + (q.wr.z * sa)), -1f, 1f);
+    let si = ((q.wi.x * ca) + (q.wi.z * sa));
+    let sr = ((q.wr.x * ca) + (q.wr.z * sa));
     let ni = ((q.wi.z * ca) - (q.wi.x * sa));
     let nr = ((q.wr.z * ca) - (q.wr.x * sa));
     let ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     let cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
-        local = (q.ok != 0f);
+        local_2 = (q.ok != 0f);
     } else {
-        local = false;
+        local_2 = false;
     }
-    let ok_2 = local;
+    let ok_2 = local_2;
     let inv_ci = inverseSqrt(max(ci2_, MC_MIN_PROJ2_));
     let inv_cr = inverseSqrt(max(cr2_, MC_MIN_PROJ2_));
     let ci_1 = (ci2_ * inv_ci);
     let cr_1 = (cr2_ * inv_cr);
-    let cos_phi_d = clamp(((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr), -1f, 1f);
-    let cos_half_phi = sqrt((0.5f + (0.5f * cos_phi_d)));
-    let _e86 = mc_acos_fast(cos_phi_d);
-    let u_phi = exp(((-(_e86) * _e86) * MC_U_INV_TWO_SIGMA2_));
-    let _e94 = mc_correlate((ni * inv_ci), (nr * inv_cr), u_phi);
-    let _e100 = mc_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
-    let _e101 = mc_asin_fast(si);
-    let _e102 = mc_asin_fast(sr);
-    let x_2 = (0.5f * (_e101 + _e102));
+    let cos_phi_d = ((((q.wi.y * q.wr.y) + (ni * nr)) * inv_ci) * inv_cr);
+    let cos_half_phi = sqrt(saturate((0.5f + (0.5f * cos_phi_d))));
+    let _e80 = mc_u_of_cos(cos_phi_d);
+    let _e81 = mc_fast_correlate((ni * inv_ci), (nr * inv_cr), _e80);
+    let _e87 = mc_fast_correlate((ni * q.inv_ri), (nr * q.inv_rr), q.u_psi);
     let cd2_ = max((0.5f + (0.5f * ((ci_1 * cr_1) + (si * sr)))), MC_MIN_COS2_THETA_D);
-    let _e118 = weft_f_dielectric((sqrt(cd2_) * cos_half_phi), q.eta);
-    let _e120 = weft_f_dielectric(ci_1, q.eta);
-    let _e124 = weft_f_dielectric(cr_1, q.eta);
-    let f_t = ((1f - _e120) * (1f - _e124));
-    let base = select(0f, (((_e94 * _e100) * ci_1) / cd2_), ok_2);
-    return McFastNode(x_2, ((_e118 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e100, ok_2));
+    let inv_cd = inverseSqrt(cd2_);
+    let _e105 = mc_fast_asin(clamp(((0.5f * (si + sr)) * inv_cd), -1f, 1f));
+    let _e109 = mc_fresnel_exact(((cd2_ * inv_cd) * cos_half_phi), q.eta2_);
+    let _e111 = mc_schlick_t(ci_1);
+    let _e113 = mc_schlick_t(cr_1);
+    let f_t = ((q.t02_ * _e111) * _e113);
+    let base = select(0f, ((((_e81 * _e87) * ci_1) * inv_cd) * inv_cd), ok_2);
+    return McFastNode(_e105, ((_e109 * cos_half_phi) * base), ((f_t * base) / max((ci_1 + cr_1), 0.0002f)), select(0f, _e87, ok_2));
 }
 
-fn mc_fast_gl3_(q_1: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
+fn mc_fast_volume3_(x_1: vec3<f32>, inv_gamma_1: f32) -> vec3<f32> {
+    let t_3 = (x_1 * inv_gamma_1);
+    return (exp(((-0.5f * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma_1));
+}
+
+fn mc_fast_rule3_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNode, n2_: McFastNode, r: vec3<f32>) -> vec4<f32> {
     let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     let _e36 = mc_cell_means(xe_1, q_1.inv_gamma_s);
-    let _e38 = mc_cell_means(xe_1, q_1.inv_gamma_v);
-    let s_2 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let _e42 = mc_fast_volume3_(vec3<f32>(n0_.x, n1_.x, n2_.x), q_1.inv_gamma_v);
+    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
     let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
-    let surface = dot(_e36, s_2);
-    let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
+    let surface = dot(_e36, s_3);
+    let volume = (((1f - th_1.kd) * dot(_e42, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
 }
 
-fn mc_fast_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
-    let span = abs((a1_ - a0_));
-    let flat = (span < MC_FAST_MIN_SPAN);
-    let lo = clamp(lo_s, min(a0_, a1_), max(a0_, a1_));
-    let hi = clamp(hi_s, lo, max(a0_, a1_));
+fn mc_fast_segment(q_2: McFastSet, th_2: McThread, a0_: f32, a1_1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
+    let span_1 = abs((a1_1 - a0_));
+    let flat = (span_1 < MC_FAST_MIN_SPAN);
+    let lo = clamp(lo_s, min(a0_, a1_1), max(a0_, a1_1));
+    let hi = clamp(hi_s, lo, max(a0_, a1_1));
     let w = (hi - lo);
     let al = vec3<f32>((lo + (MC_GL3_T * w)), (lo + (0.5f * w)), (hi - (MC_GL3_T * w)));
     let ca_1 = cos(al);
@@ -354,16 +397,9 @@ fn mc_fast_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_: f32, lo_s: f32
     let _e30 = mc_fast_node(q_2, ca_1.x, sa_1.x);
     let _e33 = mc_fast_node(q_2, ca_1.y, sa_1.y);
     let _e36 = mc_fast_node(q_2, ca_1.z, sa_1.z);
-    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span, MC_FAST_MIN_SPAN)), 1f, flat));
-    let _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
+    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span_1, MC_FAST_MIN_SPAN)), 1f, flat));
+    let _e47 = mc_fast_rule3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
-}
-
-fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
-    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
-    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    let span_1 = abs((_e5 - _e6));
-    return select(1i, 2i, (span_1 > MC_FAST_SPLIT_DEG));
 }
 
 fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, count: i32) -> vec4<f32> {
@@ -373,7 +409,7 @@ fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: Mc
     var i: i32 = 0i;
 
     let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
-    let _e10 = mc_fast_pre(fr_1, wi_1, wr_1, th_3);
+    let _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     let lo_s_1 = atan(_e10.s_lo);
     let hi_s_1 = atan(_e10.s_hi);
     let segments = max((n_3 - 1i), 1i);
@@ -425,36 +461,12 @@ fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: Mc
     return (_e146 / vec4(f32(segments)));
 }
 
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_1: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
-    var local_1: bool;
-    var local_2: bool;
-
-    let c1_ = saturate(a1_1);
-    let c2_ = saturate(a2_);
-    let gap = max(((1f - c1_) - c2_), 0f);
-    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
-    if (n_dot_wi > 0f) {
-        local_1 = (n_dot_wr > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e37 = local_1;
-    if _e37 {
-        local_2 = (q_4 > MC_MIN_Q);
-    } else {
-        local_2 = false;
-    }
-    let lit = local_2;
-    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
-}
-
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
     return McThread(saturate((color * tint)), clamp(ior_1, 1f, 4f), saturate(isotropy), (max(gamma_s_deg, 0f) * MC_DEG), (max(gamma_v_deg, 0f) * MC_DEG));
 }
 
-fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
-    let _e1 = weft_f0_from_ior(eta_1);
+fn microcylinder_mean_fresnel(eta: f32) -> f32 {
+    let _e1 = weft_f0_from_ior(eta);
     return (_e1 + ((1f - _e1) / 21f));
 }
 
@@ -512,12 +524,12 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let v_raw = _e65.v;
     let n_4 = _e65.n;
     let _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
-    let t_3 = _e69[0];
+    let t_4 = _e69[0];
     let b_4 = _e69[1];
     let _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001f - dot(n_4, v_raw)), 0f))), n_4);
     let _e80 = weft_main_light_direction();
-    let warp = McFrame(t_3, b_4, n_4);
-    let weft = McFrame(b_4, t_3, n_4);
+    let warp = McFrame(t_4, b_4, n_4);
+    let weft = McFrame(b_4, t_4, n_4);
     {
         {
             {

@@ -138,9 +138,12 @@ constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
 constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
-constant float MC_FAST_MIN_DSLOPE = 0.0001;
+constant float MC_GL2_T = 0.21132487;
+constant float MC_GJ2_T = 0.31101775;
+constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,

@@ -119,9 +119,12 @@ const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
 const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
-const float MC_FAST_MIN_DSLOPE = 0.0001;
+const float MC_GL2_T = 0.21132487;
+const float MC_GJ2_T = 0.31101775;
+const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -291,13 +294,6 @@ vec4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, Mc
     return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
-int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    float span = abs((_e5 - _e6));
-    return ((span > MC_FAST_SPLIT_DEG) ? 2 : 1);
-}
-
 vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
     bool local = false;
     bool local_1 = false;
@@ -369,8 +365,8 @@ McFastNode mc_low_node(McFastPre q_1, float ca, float sa) {
 }
 
 vec4 mc_low_segment(McFastPre q_2, McThread th_2, float a0_, float a1_1, float lo_s, float hi_s) {
-    float span_1 = abs((a1_1 - a0_));
-    bool flat_ = (span_1 < MC_FAST_MIN_SPAN);
+    float span = abs((a1_1 - a0_));
+    bool flat_ = (span < MC_FAST_MIN_SPAN);
     float lo = clamp(lo_s, min(a0_, a1_1), max(a0_, a1_1));
     float hi = clamp(hi_s, lo, max(a0_, a1_1));
     float w = (hi - lo);
@@ -380,9 +376,16 @@ vec4 mc_low_segment(McFastPre q_2, McThread th_2, float a0_, float a1_1, float l
     McFastNode _e30 = mc_low_node(q_2, ca_1.x, sa_1.x);
     McFastNode _e33 = mc_low_node(q_2, ca_1.y, sa_1.y);
     McFastNode _e36 = mc_low_node(q_2, ca_1.z, sa_1.z);
-    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (flat_ ? 1.0 : (w / max(span_1, MC_FAST_MIN_SPAN))));
+    vec3 r_2 = (vec3(0.2777778, 0.44444445, 0.2777778) * (flat_ ? 1.0 : (w / max(span, MC_FAST_MIN_SPAN))));
     vec4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
+}
+
+int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = abs((_e5 - _e6));
+    return ((span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1);
 }
 
 vec4 mc_thread_list_low(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_1, vec4 offsets_b_1, int count) {

@@ -119,9 +119,12 @@ const float MC_GL3_W1_ = 0.44444445;
 const float MC_GL3_E0_ = -0.29099444;
 const float MC_GL3_E1_ = 0.42621785;
 const float MC_FAST_BIG = 1000000.0;
+const float MC_FAST_MIN_DSLOPE = 0.0001;
 const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
-const float MC_FAST_MIN_DSLOPE = 0.0001;
+const float MC_GL2_T = 0.21132487;
+const float MC_GJ2_T = 0.31101775;
+const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

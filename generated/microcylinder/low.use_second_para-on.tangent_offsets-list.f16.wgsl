@@ -130,9 +130,12 @@ const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
 const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
+const MC_GL2_T: f32 = 0.21132487f;
+const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -301,13 +304,6 @@ fn mc_fast_gl3_(q: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, 
     return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
 }
 
-fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
-    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
-    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    let span = abs((_e5 - _e6));
-    return select(1i, 2i, (span > MC_FAST_SPLIT_DEG));
-}
-
 fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
     var local: bool;
     var local_1: bool;
@@ -381,8 +377,8 @@ fn mc_low_node(q_1: McFastPre, ca: f32, sa: f32) -> McFastNode {
 }
 
 fn mc_low_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_1: f32, lo_s: f32, hi_s: f32) -> vec4<f32> {
-    let span_1 = abs((a1_1 - a0_));
-    let flat = (span_1 < MC_FAST_MIN_SPAN);
+    let span = abs((a1_1 - a0_));
+    let flat = (span < MC_FAST_MIN_SPAN);
     let lo = clamp(lo_s, min(a0_, a1_1), max(a0_, a1_1));
     let hi = clamp(hi_s, lo, max(a0_, a1_1));
     let w = (hi - lo);
@@ -392,9 +388,16 @@ fn mc_low_segment(q_2: McFastPre, th_2: McThread, a0_: f32, a1_1: f32, lo_s: f32
     let _e30 = mc_low_node(q_2, ca_1.x, sa_1.x);
     let _e33 = mc_low_node(q_2, ca_1.y, sa_1.y);
     let _e36 = mc_low_node(q_2, ca_1.z, sa_1.z);
-    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span_1, MC_FAST_MIN_SPAN)), 1f, flat));
+    let r_2 = (vec3<f32>(0.2777778f, 0.44444445f, 0.2777778f) * select((w / max(span, MC_FAST_MIN_SPAN)), 1f, flat));
     let _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
+}
+
+fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
+    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
+    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    let span_1 = abs((_e5 - _e6));
+    return select(1i, 2i, (span_1 > MC_FAST_SPLIT_DEG));
 }
 
 fn mc_thread_list_low(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, count: i32) -> vec4<f32> {

@@ -146,9 +146,12 @@ static const float MC_GL3_W1_ = 0.44444445;
 static const float MC_GL3_E0_ = -0.29099444;
 static const float MC_GL3_E1_ = 0.42621785;
 static const float MC_FAST_BIG = 1000000.0;
+static const float MC_FAST_MIN_DSLOPE = 0.0001;
 static const float MC_FAST_MIN_SPAN = 0.0001;
 static const float MC_FAST_SPLIT_DEG = 60.0;
-static const float MC_FAST_MIN_DSLOPE = 0.0001;
+static const float MC_GL2_T = 0.21132487;
+static const float MC_GJ2_T = 0.31101775;
+static const float MC_GJ2_W = 0.36296296;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
@@ -404,14 +407,6 @@ float4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, 
     return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
 }
 
-int mc_fast_pieces(float4 offsets_a, float4 offsets_b, int k_1)
-{
-    const float _e5 = mc_offset_at(offsets_a, offsets_b, asint(asuint(k_1) + asuint(int(1))));
-    const float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    float span = abs((_e5 - _e6));
-    return ((span > MC_FAST_SPLIT_DEG) ? int(2) : int(1));
-}
-
 float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
 {
     bool local = (bool)0;
@@ -498,8 +493,8 @@ McFastNode mc_low_node(McFastPre q_1, float ca, float sa)
 
 float4 mc_low_segment(McFastPre q_2, McThread th_2, float a0_, float a1_1, float lo_s, float hi_s)
 {
-    float span_1 = abs((a1_1 - a0_));
-    bool flat = (span_1 < MC_FAST_MIN_SPAN);
+    float span = abs((a1_1 - a0_));
+    bool flat = (span < MC_FAST_MIN_SPAN);
     float lo = clamp(lo_s, min(a0_, a1_1), max(a0_, a1_1));
     float hi = clamp(hi_s, lo, max(a0_, a1_1));
     float w = (hi - lo);
@@ -509,9 +504,17 @@ float4 mc_low_segment(McFastPre q_2, McThread th_2, float a0_, float a1_1, float
     const McFastNode _e30 = mc_low_node(q_2, ca_1.x, sa_1.x);
     const McFastNode _e33 = mc_low_node(q_2, ca_1.y, sa_1.y);
     const McFastNode _e36 = mc_low_node(q_2, ca_1.z, sa_1.z);
-    float3 r_2 = (float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / max(span_1, MC_FAST_MIN_SPAN))));
+    float3 r_2 = (float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / max(span, MC_FAST_MIN_SPAN))));
     const float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
+}
+
+int mc_fast_pieces(float4 offsets_a, float4 offsets_b, int k_1)
+{
+    const float _e5 = mc_offset_at(offsets_a, offsets_b, asint(asuint(k_1) + asuint(int(1))));
+    const float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = abs((_e5 - _e6));
+    return ((span_1 > MC_FAST_SPLIT_DEG) ? int(2) : int(1));
 }
 
 float4 mc_thread_list_low(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 offsets_a_1, float4 offsets_b_1, int count)

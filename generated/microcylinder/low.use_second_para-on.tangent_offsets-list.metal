@@ -138,9 +138,12 @@ constant float MC_GL3_W1_ = 0.44444445;
 constant float MC_GL3_E0_ = -0.29099444;
 constant float MC_GL3_E1_ = 0.42621785;
 constant float MC_FAST_BIG = 1000000.0;
+constant float MC_FAST_MIN_DSLOPE = 0.0001;
 constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
-constant float MC_FAST_MIN_DSLOPE = 0.0001;
+constant float MC_GL2_T = 0.21132487;
+constant float MC_GJ2_T = 0.31101775;
+constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(
     metal::float3 v,
@@ -353,17 +356,6 @@ metal::float4 mc_fast_gl3_(
     return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
 }
 
-int mc_fast_pieces(
-    metal::float4 offsets_a,
-    metal::float4 offsets_b,
-    int k_1
-) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
-    float span = metal::abs(_e5 - _e6);
-    return (span > MC_FAST_SPLIT_DEG) ? 2 : 1;
-}
-
 metal::float3 mc_combine(
     metal::float4 t1_,
     metal::float4 t2_,
@@ -453,8 +445,8 @@ metal::float4 mc_low_segment(
     float lo_s,
     float hi_s
 ) {
-    float span_1 = metal::abs(a1_1 - a0_);
-    bool flat = span_1 < MC_FAST_MIN_SPAN;
+    float span = metal::abs(a1_1 - a0_);
+    bool flat = span < MC_FAST_MIN_SPAN;
     float lo = metal::clamp(lo_s, metal::min(a0_, a1_1), metal::max(a0_, a1_1));
     float hi = metal::clamp(hi_s, lo, metal::max(a0_, a1_1));
     float w = hi - lo;
@@ -464,9 +456,20 @@ metal::float4 mc_low_segment(
     McFastNode _e30 = mc_low_node(q_2, ca_1.x, sa_1.x);
     McFastNode _e33 = mc_low_node(q_2, ca_1.y, sa_1.y);
     McFastNode _e36 = mc_low_node(q_2, ca_1.z, sa_1.z);
-    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span_1, MC_FAST_MIN_SPAN)));
+    metal::float3 r_2 = metal::float3(0.2777778, 0.44444445, 0.2777778) * (flat ? 1.0 : (w / metal::max(span, MC_FAST_MIN_SPAN)));
     metal::float4 _e47 = mc_fast_gl3_(q_2, th_2, _e30, _e33, _e36, r_2);
     return _e47;
+}
+
+int mc_fast_pieces(
+    metal::float4 offsets_a,
+    metal::float4 offsets_b,
+    int k_1
+) {
+    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
+    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float span_1 = metal::abs(_e5 - _e6);
+    return (span_1 > MC_FAST_SPLIT_DEG) ? 2 : 1;
 }
 
 metal::float4 mc_thread_list_low(

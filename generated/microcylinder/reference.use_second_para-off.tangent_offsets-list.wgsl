@@ -114,9 +114,12 @@ const MC_GL3_W1_: f32 = 0.44444445f;
 const MC_GL3_E0_: f32 = -0.29099444f;
 const MC_GL3_E1_: f32 = 0.42621785f;
 const MC_FAST_BIG: f32 = 1000000f;
+const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
 const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
-const MC_FAST_MIN_DSLOPE: f32 = 0.0001f;
+const MC_GL2_T: f32 = 0.21132487f;
+const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;

@@ -135,9 +135,12 @@ static const float MC_GL3_W1_ = 0.44444445;
 static const float MC_GL3_E0_ = -0.29099444;
 static const float MC_GL3_E1_ = 0.42621785;
 static const float MC_FAST_BIG = 1000000.0;
+static const float MC_FAST_MIN_DSLOPE = 0.0001;
 static const float MC_FAST_MIN_SPAN = 0.0001;
 static const float MC_FAST_SPLIT_DEG = 60.0;
-static const float MC_FAST_MIN_DSLOPE = 0.0001;
+static const float MC_GL2_T = 0.21132487;
+static const float MC_GJ2_T = 0.31101775;
+static const float MC_GJ2_W = 0.36296296;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
