@@ -101,6 +101,14 @@ fn test_pcg(state: ptr<function, u32>) -> f32 {
     return f32(((word >> 22u) ^ word) >> 8u) * (1.0 / 16777216.0);
 }
 
+// A direction uniform on the sphere.
+fn test_sphere(state: ptr<function, u32>) -> vec3<f32> {
+    let z = 1.0 - 2.0 * test_pcg(state);
+    let r = sqrt(max(1.0 - z * z, 0.0));
+    let phi = 2.0 * WEFT_PI * test_pcg(state);
+    return vec3<f32>(z, r * cos(phi), r * sin(phi));
+}
+
 @compute @workgroup_size(64)
 fn hair_furnace(@builtin(global_invocation_id) id: vec3<u32>) {
     let k = id.x;
@@ -115,10 +123,7 @@ fn hair_furnace(@builtin(global_invocation_id) id: vec3<u32>) {
     var sum = 0.0;
     var sum2 = 0.0;
     for (var j = 0u; j < samples; j += 1u) {
-        let z = 1.0 - 2.0 * test_pcg(&state);
-        let r = sqrt(max(1.0 - z * z, 0.0));
-        let phi = 2.0 * WEFT_PI * test_pcg(&state);
-        let i = vec3<f32>(z, r * cos(phi), r * sin(phi));
+        let i = test_sphere(&state);
         let gamma_o = asin(-1.0 + 2.0 * test_pcg(&state));
         let x = 4.0 * WEFT_PI * test_lobes_at(hair, a.xyz, i, atan2(i.z, i.y) - atan2(a.z, a.y), gamma_o).s.x;
         sum += x;
@@ -143,10 +148,7 @@ fn hair_furnace_fast(@builtin(global_invocation_id) id: vec3<u32>) {
     var sum = 0.0;
     var sum2 = 0.0;
     for (var j = 0u; j < samples; j += 1u) {
-        let z = 1.0 - 2.0 * test_pcg(&state);
-        let r = sqrt(max(1.0 - z * z, 0.0));
-        let phi = 2.0 * WEFT_PI * test_pcg(&state);
-        let i = vec3<f32>(z, r * cos(phi), r * sin(phi));
+        let i = test_sphere(&state);
         let x = 4.0 * WEFT_PI * weft_hair_fast(hair, vec3<f32>(1.0, 0.0, 0.0), a.xyz, i).s.x;
         sum += x;
         sum2 += x * x;
@@ -593,16 +595,7 @@ fn assert_furnace(
 #[test]
 fn white_furnace() {
     let _gpu = weft_tests::gpu_serial();
-    let betas = [0.1, 0.3, 0.5, 0.7, 0.9];
-    let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
-    let mut cases = Vec::new();
-    for &beta_m in &betas {
-        for &beta_n in &betas {
-            for o in outgoing {
-                cases.push((beta_m, beta_n, 0.0, o));
-            }
-        }
-    }
+    let cases = furnace_cases(&[0.0], &[0.1, 0.3, 0.5, 0.7, 0.9]);
     assert_furnace("α = 0", "hair_furnace", PBRT_FURNACE, &cases);
 }
 
@@ -613,18 +606,7 @@ fn white_furnace() {
 #[test]
 fn white_furnace_with_tilted_scales() {
     let _gpu = weft_tests::gpu_serial();
-    let betas = [0.1, 0.5, 0.9];
-    let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
-    let mut cases = Vec::new();
-    for alpha in [2.0, 3.0] {
-        for &beta_m in &betas {
-            for &beta_n in &betas {
-                for o in outgoing {
-                    cases.push((beta_m, beta_n, alpha, o));
-                }
-            }
-        }
-    }
+    let cases = furnace_cases(&[2.0, 3.0], &[0.1, 0.5, 0.9]);
     assert_furnace("α = 2°, 3°", "hair_furnace", PBRT_FURNACE, &cases);
 }
 
@@ -636,19 +618,25 @@ fn white_furnace_with_tilted_scales() {
 #[test]
 fn white_furnace_of_the_fast_tier() {
     let _gpu = weft_tests::gpu_serial();
-    let betas = [0.1, 0.5, 0.9];
+    let cases = furnace_cases(&[0.0, 2.0], &[0.1, 0.5, 0.9]);
+    assert_furnace("fast, α = 0°, 2°", "hair_furnace_fast", 0.95..=1.10, &cases);
+}
+
+/// Every α × β_m × β_n, each at three ω_o: θ_o = 0°, 35° and -70° (near
+/// grazing), at three azimuths.
+fn furnace_cases(alphas: &[f64], betas: &[f64]) -> Vec<FurnaceCase> {
     let outgoing = [unit(0.0, 0.0), unit(35.0, 60.0), unit(-70.0, 200.0)];
     let mut cases = Vec::new();
-    for alpha in [0.0, 2.0] {
-        for &beta_m in &betas {
-            for &beta_n in &betas {
+    for &alpha in alphas {
+        for &beta_m in betas {
+            for &beta_n in betas {
                 for o in outgoing {
                     cases.push((beta_m, beta_n, alpha, o));
                 }
             }
         }
     }
-    assert_furnace("fast, α = 0°, 2°", "hair_furnace_fast", 0.95..=1.10, &cases);
+    cases
 }
 
 /// The GPU's M_p of lobes R and TRT (weft_hair_longitudinal) over θ_i in
