@@ -246,25 +246,38 @@ fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32
     return mix(x0, x1, r.lerp.y);
 }
 
+// The simplex cell of a point of a grid (skewed: equilateral triangles of
+// unit side): the cell's integer corner, whether it is the upper triangle
+// (si = 1), and the point's barycentric weights on its three vertices.
+struct GlintSimplex {
+    id: vec2<i32>,
+    si: i32,
+    bary: vec3<f32>,
+}
+
+fn glint_simplex(uv: vec2<f32>) -> GlintSimplex {
+    let skewed = vec2<f32>(uv.x - 0.57735027 * uv.y, 1.15470054 * uv.y);
+    let base = floor(skewed);
+    let f = skewed - base;
+    let fz = 1.0 - f.x - f.y;
+    let s = select(0.0, 1.0, fz < 0.0);
+    let s2 = 2.0 * s - 1.0;
+    return GlintSimplex(vec2<i32>(base), i32(s), vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2));
+}
+
 // One grid: the three simplex cells around the point, each with its own
 // flake count (log-normal around the density) and slope table offset; the
 // cells' hit fractions blended by the point's barycentric coordinates.
 // `target_ndf` = D(h) / D_max. Returns sum of weight x hits / N (its
 // expectation is weight x p).
 fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope: vec2<f32>, target_ndf: f32, poly_normals: bool) -> f32 {
-    // Skewed (simplex) grid: equilateral triangles of unit side.
-    let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
-    let base = floor(skewed);
-    let f = skewed - base;
-    let fz = 1.0 - f.x - f.y;
-    let s = select(0.0, 1.0, fz < 0.0);
-    let s2 = 2.0 * s - 1.0;
-    let id = vec2<i32>(base);
-    let si = i32(s);
+    let cell = glint_simplex(grid.uv);
+    let id = cell.id;
+    let si = cell.si;
     let c0 = id + vec2<i32>(si, si);
     let c1 = id + vec2<i32>(si, 1 - si);
     let c2 = id + vec2<i32>(1 - si, si);
-    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+    let bary = cell.bary;
 
     let bias = 2147483648u;
     let r0 = glint_unit3(glint_pcg3d(vec3<u32>(bitcast<u32>(c0.x) + bias, bitcast<u32>(c0.y) + bias, grid.seed)));
@@ -681,15 +694,10 @@ fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c: vec2<i32>, s_slope: 
 // One grid (glint_sample_grid): its three simplex cells blended by the
 // point's barycentric coordinates.
 fn glint_sample_grid_fast(params: GlintParams, grid: GlintGrid, s_slope: vec2<f32>, p: f32, log2_q: f32) -> f32 {
-    let skewed = vec2<f32>(grid.uv.x - 0.57735027 * grid.uv.y, 1.15470054 * grid.uv.y);
-    let base = floor(skewed);
-    let f = skewed - base;
-    let fz = 1.0 - f.x - f.y;
-    let s = select(0.0, 1.0, fz < 0.0);
-    let s2 = 2.0 * s - 1.0;
-    let id = vec2<i32>(base);
-    let si = i32(s);
-    let bary = vec3<f32>(-fz * s2, s - f.y * s2, s - f.x * s2);
+    let cell = glint_simplex(grid.uv);
+    let id = cell.id;
+    let si = cell.si;
+    let bary = cell.bary;
     var sum = 0.0;
     for (var k = 0; k < 3; k++) {
         let c = id + vec2<i32>(select(si, 1 - si, k == 2), select(si, 1 - si, k == 1));

@@ -560,25 +560,16 @@ fn mc_thread_list_low(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, o
     let lo_s = atan(q.s_lo);
     let hi_s = atan(q.s_hi);
     let segments = max(n - 1, 1);
-    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
-    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
-    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
-    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
-    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
-    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
-    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
+    let pieces = mc_list_piece_count(offsets_a, offsets_b, n);
     var acc = vec4<f32>(0.0);
     var k = 0;
     var h = 0;
     for (var i = 0; i < pieces; i++) {
-        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
-        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
-        let fm = f32(m);
-        acc += mc_low_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
-        h += 1;
-        k = select(k, k + 1, h >= m);
-        h = select(h, 0, h >= m);
+        let piece = mc_list_piece(offsets_a, offsets_b, n, k, h);
+        acc += mc_low_segment(q, th, piece.x, piece.y, lo_s, hi_s) * piece.z;
+        let next = mc_list_next(offsets_a, offsets_b, n, k, h);
+        k = next.x;
+        h = next.y;
     }
     return acc / f32(segments);
 }
@@ -651,6 +642,35 @@ const MC_FAST_SPLIT_DEG: f32 = 60.0;
 fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k: i32) -> i32 {
     let span = abs(mc_offset_at(offsets_a, offsets_b, k + 1) - mc_offset_at(offsets_a, offsets_b, k));
     return select(1, 2, span > MC_FAST_SPLIT_DEG);
+}
+
+// The pieces of an offset list of n points (fast and low walk the same
+// ones): each of the n - 1 segments is one piece, or two halves beyond
+// MC_FAST_SPLIT_DEG; a single point is one flat piece.
+fn mc_list_piece_count(offsets_a: vec4<f32>, offsets_b: vec4<f32>, n: i32) -> i32 {
+    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
+    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
+    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
+    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
+    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
+    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
+    return max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
+}
+
+// Piece h of segment k: its ends in radians and its share 1/m of the
+// segment (x, y, z).
+fn mc_list_piece(offsets_a: vec4<f32>, offsets_b: vec4<f32>, n: i32, k: i32, h: i32) -> vec3<f32> {
+    let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
+    let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
+    let fm = f32(select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1));
+    return vec3<f32>(mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), 1.0 / fm);
+}
+
+// The next (segment, piece) after piece h of segment k.
+fn mc_list_next(offsets_a: vec4<f32>, offsets_b: vec4<f32>, n: i32, k: i32, h: i32) -> vec2<i32> {
+    let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
+    let next = h + 1;
+    return select(vec2<i32>(k, next), vec2<i32>(k + 1, 0), next >= m);
 }
 
 // Per thread set, as McFastPre, with eta^2 and Schlick's 1 - F0 instead of eta.
@@ -817,25 +837,16 @@ fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
     let hi_s = atan(q.s_hi);
     // A single control point: one flat piece on it.
     let segments = max(n - 1, 1);
-    let spans = abs(vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a);
-    let spans_b = abs(offsets_b.yzw - offsets_b.xyz);
-    let live = vec4<i32>(0, 1, 2, 3) < vec4<i32>(n - 1);
-    let live_b = vec3<i32>(4, 5, 6) < vec3<i32>(n - 1);
-    let per = select(vec4<i32>(0), select(vec4<i32>(1), vec4<i32>(2), spans > vec4<f32>(MC_FAST_SPLIT_DEG)), live);
-    let per_b = select(vec3<i32>(0), select(vec3<i32>(1), vec3<i32>(2), spans_b > vec3<f32>(MC_FAST_SPLIT_DEG)), live_b);
-    let pieces = max(per.x + per.y + per.z + per.w + per_b.x + per_b.y + per_b.z, 1);
+    let pieces = mc_list_piece_count(offsets_a, offsets_b, n);
     var acc = vec4<f32>(0.0);
     var k = 0;
     var h = 0;
     for (var i = 0; i < pieces; i++) {
-        let d0 = mc_offset_at(offsets_a, offsets_b, k) * MC_DEG;
-        let d1 = select(d0, mc_offset_at(offsets_a, offsets_b, k + 1) * MC_DEG, n > 1);
-        let m = select(1, mc_fast_pieces(offsets_a, offsets_b, k), n > 1);
-        let fm = f32(m);
-        acc += mc_fast_segment(q, th, mix(d0, d1, f32(h) / fm), mix(d0, d1, f32(h + 1) / fm), lo_s, hi_s) / fm;
-        h += 1;
-        k = select(k, k + 1, h >= m);
-        h = select(h, 0, h >= m);
+        let piece = mc_list_piece(offsets_a, offsets_b, n, k, h);
+        acc += mc_fast_segment(q, th, piece.x, piece.y, lo_s, hi_s) * piece.z;
+        let next = mc_list_next(offsets_a, offsets_b, n, k, h);
+        k = next.x;
+        h = next.y;
     }
     return acc / f32(segments);
 }
