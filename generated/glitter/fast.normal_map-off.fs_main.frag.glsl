@@ -64,6 +64,11 @@ struct GlintParams {
     float micro_roughness;
     float density_randomization;
 };
+struct GlintSimplex {
+    ivec2 id;
+    int si;
+    vec3 bary;
+};
 struct GlintEllipse {
     vec2 major_dir;
     float major;
@@ -260,8 +265,8 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
-    vec2 uv_4 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_4), 0.0);
+    vec2 uv_5 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_5), 0.0);
     return _e8.xy;
 }
 
@@ -341,6 +346,16 @@ float glint_hash13_(vec3 p_in) {
     return fract(((_e16 + _e18) * _e21));
 }
 
+GlintSimplex glint_simplex(vec2 uv_1) {
+    vec2 skewed = vec2((uv_1.x - (0.57735026 * uv_1.y)), (1.1547005 * uv_1.y));
+    vec2 base = floor(skewed);
+    vec2 f = (skewed - base);
+    float fz = ((1.0 - f.x) - f.y);
+    float s_2 = ((fz < 0.0) ? 1.0 : 0.0);
+    float s2_ = ((2.0 * s_2) - 1.0);
+    return GlintSimplex(ivec2(base), int(s_2), vec3((-(fz) * s2_), (s_2 - (f.y * s2_)), (s_2 - (f.x * s2_))));
+}
+
 GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
     GlintEllipse out_1 = GlintEllipse(vec2(0.0), 0.0, 0.0);
     float a_5 = ((duv_dx.x * duv_dx.x) + (duv_dy.x * duv_dy.x));
@@ -362,10 +377,10 @@ GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
     return _e72;
 }
 
-vec2 glint_rotate(vec2 uv_1, float angle) {
+vec2 glint_rotate(vec2 uv_2, float angle) {
     float c_5 = cos(angle);
-    float s_2 = sin(angle);
-    return vec2(((c_5 * uv_1.x) + (s_2 * uv_1.y)), ((c_5 * uv_1.y) - (s_2 * uv_1.x)));
+    float s_3 = sin(angle);
+    return vec2(((c_5 * uv_2.x) + (s_3 * uv_2.y)), ((c_5 * uv_2.y) - (s_3 * uv_2.x)));
 }
 
 uint glint_grid_seed(float lod, float theta, float ratio) {
@@ -374,9 +389,9 @@ uint glint_grid_seed(float lod, float theta, float ratio) {
     return uint(min((_e10 * 4294967300.0), 4294967000.0));
 }
 
-GlintGrid glint_make_grid(vec2 uv_2, float lod_1, float theta_1, float ratio_1, float weight) {
+GlintGrid glint_make_grid(vec2 uv_3, float lod_1, float theta_1, float ratio_1, float weight) {
     GlintGrid g = GlintGrid(vec2(0.0), 0u, 0.0, 0.0);
-    vec2 _e7 = glint_rotate(uv_2, theta_1);
+    vec2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / vec2(1.0, ratio_1));
     uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -499,9 +514,9 @@ float glint_cell_fast(GlintParams params, GlintGrid grid, ivec2 c_2, vec2 s_slop
     float inv_1 = (0.5 / width);
     float gate_a_1 = (inv_1 * -2.3283064e-10);
     float gate_b_1 = fma(one_hit, inv_1, 0.5);
-    vec2 s_3 = fma(vec2((_e16.yz >> uvec2(8u))), vec2(3.8146973e-6), s_slope);
-    vec2 cell = floor(s_3);
-    vec2 l = (s_3 - cell);
+    vec2 s_4 = fma(vec2((_e16.yz >> uvec2(8u))), vec2(3.8146973e-6), s_slope);
+    vec2 cell = floor(s_4);
+    vec2 l = (s_4 - cell);
     uvec2 ci = uvec2(cell);
     uvec2 t0_ = (ci & uvec2(63u));
     uvec2 t1_ = ((ci + uvec2(1u)) & uvec2(63u));
@@ -519,41 +534,36 @@ float glint_cell_fast(GlintParams params, GlintGrid grid, ivec2 c_2, vec2 s_slop
 float glint_sample_grid_fast(GlintParams params_1, GlintGrid grid_1, vec2 s_slope_1, float p_2, float log2_q_1) {
     float sum = 0.0;
     int k = 0;
-    vec2 skewed = vec2((grid_1.uv.x - (0.57735026 * grid_1.uv.y)), (1.1547005 * grid_1.uv.y));
-    vec2 base = floor(skewed);
-    vec2 f = (skewed - base);
-    float fz = ((1.0 - f.x) - f.y);
-    float s_4 = ((fz < 0.0) ? 1.0 : 0.0);
-    float s2_ = ((2.0 * s_4) - 1.0);
-    ivec2 id = ivec2(base);
-    int si = int(s_4);
-    vec3 bary = vec3((-(fz) * s2_), (s_4 - (f.y * s2_)), (s_4 - (f.x * s2_)));
+    GlintSimplex _e6 = glint_simplex(grid_1.uv);
+    ivec2 id = _e6.id;
+    int si = _e6.si;
+    vec3 bary = _e6.bary;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e81 = k;
-            k = (_e81 + 1);
+            int _e47 = k;
+            k = (_e47 + 1);
         }
         loop_init = false;
-        int _e48 = k;
-        if ((_e48 < 3)) {
+        int _e14 = k;
+        if ((_e14 < 3)) {
         } else {
             break;
         }
         {
-            int _e53 = k;
-            int _e59 = k;
-            ivec2 c_6 = (id + ivec2(((_e53 == 2) ? (1 - si) : si), ((_e59 == 1) ? (1 - si) : si)));
-            int _e67 = k;
-            int _e72 = k;
-            float b_4 = ((_e72 == 0) ? bary.x : ((_e67 == 1) ? bary.y : bary.z));
-            float _e76 = sum;
-            float _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
-            sum = (_e76 + (b_4 * _e77));
+            int _e19 = k;
+            int _e25 = k;
+            ivec2 c_6 = (id + ivec2(((_e19 == 2) ? (1 - si) : si), ((_e25 == 1) ? (1 - si) : si)));
+            int _e33 = k;
+            int _e38 = k;
+            float b_4 = ((_e38 == 0) ? bary.x : ((_e33 == 1) ? bary.y : bary.z));
+            float _e42 = sum;
+            float _e43 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = (_e42 + (b_4 * _e43));
         }
     }
-    float _e83 = sum;
-    return _e83;
+    float _e49 = sum;
+    return _e49;
 }
 
 vec3 glint_vertex_of_code(uint c_3) {
@@ -600,7 +610,7 @@ GlintTetraFast glint_tetra_fast(GlintEllipse e_3, float screen_scale_2) {
     return _e128;
 }
 
-float glint_hits_fast(GlintParams params_2, vec2 uv_3, GlintEllipse e_4, float screen_scale_3, vec2 slope, float d_1, float d_max) {
+float glint_hits_fast(GlintParams params_2, vec2 uv_4, GlintEllipse e_4, float screen_scale_3, vec2 slope, float d_1, float d_max) {
     float sum_1 = 0.0;
     uint i = 0u;
     GlintTetraFast _e7 = glint_tetra_fast(e_4, screen_scale_3);
@@ -632,7 +642,7 @@ float glint_hits_fast(GlintParams params_2, vec2 uv_3, GlintEllipse e_4, float s
             uint _e88 = i;
             float w_1 = ((_e88 == 0u) ? _e7.w.x : ((_e82 == 1u) ? _e7.w.y : ((_e76 == 2u) ? _e7.w.z : (((1.0 - _e7.w.x) - _e7.w.y) - _e7.w.z))));
             float _e92 = sum_1;
-            GlintGrid _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            GlintGrid _e93 = glint_make_grid(uv_4, lod_2, theta_3, ratio_2, w_1);
             float _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
             sum_1 = (_e92 + _e94);
         }

@@ -72,6 +72,12 @@ struct GlintParams {
     density_randomization: f32,
 }
 
+struct GlintSimplex {
+    id: vec2<i32>,
+    si: i32,
+    bary: vec3<f32>,
+}
+
 struct GlintEllipse {
     major_dir: vec2<f32>,
     major: f32,
@@ -275,8 +281,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
-    let uv_4 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_4, 0f);
+    let uv_5 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_5, 0f);
     return _e8.xy;
 }
 
@@ -358,6 +364,16 @@ fn glint_hash13_(p_in: vec3<f32>) -> f32 {
     return fract(((_e16 + _e18) * _e21));
 }
 
+fn glint_simplex(uv_1: vec2<f32>) -> GlintSimplex {
+    let skewed = vec2<f32>((uv_1.x - (0.57735026f * uv_1.y)), (1.1547005f * uv_1.y));
+    let base = floor(skewed);
+    let f = (skewed - base);
+    let fz = ((1f - f.x) - f.y);
+    let s_2 = select(0f, 1f, (fz < 0f));
+    let s2_ = ((2f * s_2) - 1f);
+    return GlintSimplex(vec2<i32>(base), i32(s_2), vec3<f32>((-(fz) * s2_), (s_2 - (f.y * s2_)), (s_2 - (f.x * s2_))));
+}
+
 fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     var out_1: GlintEllipse;
 
@@ -380,10 +396,10 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     return _e72;
 }
 
-fn glint_rotate(uv_1: vec2<f32>, angle: f32) -> vec2<f32> {
+fn glint_rotate(uv_2: vec2<f32>, angle: f32) -> vec2<f32> {
     let c_5 = cos(angle);
-    let s_2 = sin(angle);
-    return vec2<f32>(((c_5 * uv_1.x) + (s_2 * uv_1.y)), ((c_5 * uv_1.y) - (s_2 * uv_1.x)));
+    let s_3 = sin(angle);
+    return vec2<f32>(((c_5 * uv_2.x) + (s_3 * uv_2.y)), ((c_5 * uv_2.y) - (s_3 * uv_2.x)));
 }
 
 fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
@@ -392,10 +408,10 @@ fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
     return u32(min((_e10 * 4294967300f), 4294967000f));
 }
 
-fn glint_make_grid(uv_2: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weight: f32) -> GlintGrid {
+fn glint_make_grid(uv_3: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weight: f32) -> GlintGrid {
     var g: GlintGrid;
 
-    let _e7 = glint_rotate(uv_2, theta_1);
+    let _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / vec2<f32>(1f, ratio_1));
     let _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -520,9 +536,9 @@ fn glint_cell_fast(params: GlintParams, grid: GlintGrid, c_2: vec2<i32>, s_slope
     let inv_1 = (0.5f / width);
     let gate_a_1 = (inv_1 * -0.00000000023283064f);
     let gate_b_1 = fma(one_hit, inv_1, 0.5f);
-    let s_3 = fma(vec2<f32>((_e16.yz >> vec2(8u))), vec2(0.0000038146973f), s_slope);
-    let cell = floor(s_3);
-    let l = (s_3 - cell);
+    let s_4 = fma(vec2<f32>((_e16.yz >> vec2(8u))), vec2(0.0000038146973f), s_slope);
+    let cell = floor(s_4);
+    let l = (s_4 - cell);
     let ci = vec2<u32>(cell);
     let t0_ = (ci & vec2(63u));
     let t1_ = ((ci + vec2(1u)) & vec2(63u));
@@ -541,39 +557,34 @@ fn glint_sample_grid_fast(params_1: GlintParams, grid_1: GlintGrid, s_slope_1: v
     var sum: f32 = 0f;
     var k: i32 = 0i;
 
-    let skewed = vec2<f32>((grid_1.uv.x - (0.57735026f * grid_1.uv.y)), (1.1547005f * grid_1.uv.y));
-    let base = floor(skewed);
-    let f = (skewed - base);
-    let fz = ((1f - f.x) - f.y);
-    let s_4 = select(0f, 1f, (fz < 0f));
-    let s2_ = ((2f * s_4) - 1f);
-    let id = vec2<i32>(base);
-    let si = i32(s_4);
-    let bary = vec3<f32>((-(fz) * s2_), (s_4 - (f.y * s2_)), (s_4 - (f.x * s2_)));
+    let _e6 = glint_simplex(grid_1.uv);
+    let id = _e6.id;
+    let si = _e6.si;
+    let bary = _e6.bary;
     loop {
-        let _e48 = k;
-        if (_e48 < 3i) {
+        let _e14 = k;
+        if (_e14 < 3i) {
         } else {
             break;
         }
         {
-            let _e53 = k;
-            let _e59 = k;
-            let c_6 = (id + vec2<i32>(select(si, (1i - si), (_e53 == 2i)), select(si, (1i - si), (_e59 == 1i))));
-            let _e67 = k;
-            let _e72 = k;
-            let b_4 = select(select(bary.z, bary.y, (_e67 == 1i)), bary.x, (_e72 == 0i));
-            let _e76 = sum;
-            let _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
-            sum = (_e76 + (b_4 * _e77));
+            let _e19 = k;
+            let _e25 = k;
+            let c_6 = (id + vec2<i32>(select(si, (1i - si), (_e19 == 2i)), select(si, (1i - si), (_e25 == 1i))));
+            let _e33 = k;
+            let _e38 = k;
+            let b_4 = select(select(bary.z, bary.y, (_e33 == 1i)), bary.x, (_e38 == 0i));
+            let _e42 = sum;
+            let _e43 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = (_e42 + (b_4 * _e43));
         }
         continuing {
-            let _e81 = k;
-            k = (_e81 + 1i);
+            let _e47 = k;
+            k = (_e47 + 1i);
         }
     }
-    let _e83 = sum;
-    return _e83;
+    let _e49 = sum;
+    return _e49;
 }
 
 fn glint_vertex_of_code(c_3: u32) -> vec3<f32> {
@@ -621,7 +632,7 @@ fn glint_tetra_fast(e_3: GlintEllipse, screen_scale_2: f32) -> GlintTetraFast {
     return _e128;
 }
 
-fn glint_hits_fast(params_2: GlintParams, uv_3: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32, slope: vec2<f32>, d_1: f32, d_max: f32) -> f32 {
+fn glint_hits_fast(params_2: GlintParams, uv_4: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32, slope: vec2<f32>, d_1: f32, d_max: f32) -> f32 {
     var sum_1: f32 = 0f;
     var i: u32 = 0u;
 
@@ -648,7 +659,7 @@ fn glint_hits_fast(params_2: GlintParams, uv_3: vec2<f32>, e_4: GlintEllipse, sc
             let _e88 = i;
             let w_1 = select(select(select((((1f - _e7.w.x) - _e7.w.y) - _e7.w.z), _e7.w.z, (_e76 == 2u)), _e7.w.y, (_e82 == 1u)), _e7.w.x, (_e88 == 0u));
             let _e92 = sum_1;
-            let _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            let _e93 = glint_make_grid(uv_4, lod_2, theta_3, ratio_2, w_1);
             let _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
             sum_1 = (_e92 + _e94);
         }

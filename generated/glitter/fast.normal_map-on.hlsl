@@ -83,6 +83,14 @@ struct GlintParams {
     float density_randomization;
 };
 
+struct GlintSimplex {
+    int2 id;
+    int si;
+    int _pad2_0;
+    float3 bary;
+    int _end_pad_0;
+};
+
 struct GlintEllipse {
     float2 major_dir;
     float major;
@@ -321,8 +329,8 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
 {
-    float2 uv_4 = float2(saturate(n_dot_v_1), saturate(roughness_6));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_4, 0.0);
+    float2 uv_5 = float2(saturate(n_dot_v_1), saturate(roughness_6));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_5, 0.0);
     return _e8.xy;
 }
 
@@ -450,6 +458,34 @@ float glint_hash13_(float3 p_in)
     return frac(((_e16 + _e18) * _e21));
 }
 
+GlintSimplex ConstructGlintSimplex(int2 arg0, int arg1, float3 arg2) {
+    GlintSimplex ret = (GlintSimplex)0;
+    ret.id = arg0;
+    ret.si = arg1;
+    ret.bary = arg2;
+    return ret;
+}
+
+int2 naga_f2i32(float2 value) {
+    return int2(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int naga_f2i32(float value) {
+    return int(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+GlintSimplex glint_simplex(float2 uv_1)
+{
+    float2 skewed = float2((uv_1.x - (0.57735026 * uv_1.y)), (1.1547005 * uv_1.y));
+    float2 base = floor(skewed);
+    float2 f = (skewed - base);
+    float fz = ((1.0 - f.x) - f.y);
+    float s_2 = ((fz < 0.0) ? 1.0 : 0.0);
+    float s2_ = ((2.0 * s_2) - 1.0);
+    const GlintSimplex glintsimplex = ConstructGlintSimplex(naga_f2i32(base), naga_f2i32(s_2), float3((-(fz) * s2_), (s_2 - (f.y * s2_)), (s_2 - (f.x * s2_))));
+    return glintsimplex;
+}
+
 GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
 {
     GlintEllipse out_1 = (GlintEllipse)0;
@@ -474,11 +510,11 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
     return glintellipse;
 }
 
-float2 glint_rotate(float2 uv_1, float angle)
+float2 glint_rotate(float2 uv_2, float angle)
 {
     float c_5 = cos(angle);
-    float s_2 = sin(angle);
-    return float2(((c_5 * uv_1.x) + (s_2 * uv_1.y)), ((c_5 * uv_1.y) - (s_2 * uv_1.x)));
+    float s_3 = sin(angle);
+    return float2(((c_5 * uv_2.x) + (s_3 * uv_2.y)), ((c_5 * uv_2.y) - (s_3 * uv_2.x)));
 }
 
 uint naga_f2u32(float value) {
@@ -492,11 +528,11 @@ uint glint_grid_seed(float lod, float theta, float ratio)
     return naga_f2u32(min((_e10 * 4294967300.0), 4294967000.0));
 }
 
-GlintGrid glint_make_grid(float2 uv_2, float lod_1, float theta_1, float ratio_1, float weight)
+GlintGrid glint_make_grid(float2 uv_3, float lod_1, float theta_1, float ratio_1, float weight)
 {
     GlintGrid g = (GlintGrid)0;
 
-    const float2 _e7 = glint_rotate(uv_2, theta_1);
+    const float2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / float2(1.0, ratio_1));
     const uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -633,9 +669,9 @@ float glint_cell_fast(GlintParams params, GlintGrid grid, int2 c_2, float2 s_slo
     float inv_1 = (0.5 / width);
     float gate_a_1 = (inv_1 * -2.3283064e-10);
     float gate_b_1 = mad(one_hit, inv_1, 0.5);
-    float2 s_3 = mad(float2((_e16.yz >> (8u).xx)), (3.8146973e-6).xx, s_slope);
-    float2 cell = floor(s_3);
-    float2 l = (s_3 - cell);
+    float2 s_4 = mad(float2((_e16.yz >> (8u).xx)), (3.8146973e-6).xx, s_slope);
+    float2 cell = floor(s_4);
+    float2 l = (s_4 - cell);
     uint2 ci = naga_f2u32(cell);
     uint2 t0_ = (ci & (63u).xx);
     uint2 t1_ = ((ci + (1u).xx) & (63u).xx);
@@ -650,57 +686,44 @@ float glint_cell_fast(GlintParams params, GlintGrid grid, int2 c_2, float2 s_slo
     return (lerp(x0_, x1_, l.y) / count_1);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-int naga_f2i32(float value) {
-    return int(clamp(value, -2147483600.0, 2147483500.0));
-}
-
 float glint_sample_grid_fast(GlintParams params_1, GlintGrid grid_1, float2 s_slope_1, float p_2, float log2_q_1)
 {
     float sum = 0.0;
     int k = int(0);
 
-    float2 skewed = float2((grid_1.uv.x - (0.57735026 * grid_1.uv.y)), (1.1547005 * grid_1.uv.y));
-    float2 base = floor(skewed);
-    float2 f = (skewed - base);
-    float fz = ((1.0 - f.x) - f.y);
-    float s_4 = ((fz < 0.0) ? 1.0 : 0.0);
-    float s2_ = ((2.0 * s_4) - 1.0);
-    int2 id = naga_f2i32(base);
-    int si = naga_f2i32(s_4);
-    float3 bary = float3((-(fz) * s2_), (s_4 - (f.y * s2_)), (s_4 - (f.x * s2_)));
+    const GlintSimplex _e6 = glint_simplex(grid_1.uv);
+    int2 id = _e6.id;
+    int si = _e6.si;
+    float3 bary = _e6.bary;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e81 = k;
-            k = asint(asuint(_e81) + asuint(int(1)));
+            int _e47 = k;
+            k = asint(asuint(_e47) + asuint(int(1)));
         }
         loop_init = false;
-        int _e48 = k;
-        if ((_e48 < int(3))) {
+        int _e14 = k;
+        if ((_e14 < int(3))) {
         } else {
             break;
         }
         {
-            int _e53 = k;
-            int _e59 = k;
-            int2 c_6 = asint(asuint(id) + asuint(int2(((_e53 == int(2)) ? asint(asuint(int(1)) - asuint(si)) : si), ((_e59 == int(1)) ? asint(asuint(int(1)) - asuint(si)) : si))));
-            int _e67 = k;
-            int _e72 = k;
-            float b_4 = ((_e72 == int(0)) ? bary.x : ((_e67 == int(1)) ? bary.y : bary.z));
-            float _e76 = sum;
-            const float _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
-            sum = (_e76 + (b_4 * _e77));
+            int _e19 = k;
+            int _e25 = k;
+            int2 c_6 = asint(asuint(id) + asuint(int2(((_e19 == int(2)) ? asint(asuint(int(1)) - asuint(si)) : si), ((_e25 == int(1)) ? asint(asuint(int(1)) - asuint(si)) : si))));
+            int _e33 = k;
+            int _e38 = k;
+            float b_4 = ((_e38 == int(0)) ? bary.x : ((_e33 == int(1)) ? bary.y : bary.z));
+            float _e42 = sum;
+            const float _e43 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = (_e42 + (b_4 * _e43));
         }
     }
-    float _e83 = sum;
-    return _e83;
+    float _e49 = sum;
+    return _e49;
 }
 
 float3 glint_vertex_of_code(uint c_3)
@@ -751,7 +774,7 @@ GlintTetraFast glint_tetra_fast(GlintEllipse e_3, float screen_scale_2)
     return glinttetrafast;
 }
 
-float glint_hits_fast(GlintParams params_2, float2 uv_3, GlintEllipse e_4, float screen_scale_3, float2 slope, float d_1, float d_max)
+float glint_hits_fast(GlintParams params_2, float2 uv_4, GlintEllipse e_4, float screen_scale_3, float2 slope, float d_1, float d_max)
 {
     float sum_1 = 0.0;
     uint i = 0u;
@@ -788,7 +811,7 @@ float glint_hits_fast(GlintParams params_2, float2 uv_3, GlintEllipse e_4, float
             uint _e88 = i;
             float w_1 = ((_e88 == 0u) ? _e7.w.x : ((_e82 == 1u) ? _e7.w.y : ((_e76 == 2u) ? _e7.w.z : (((1.0 - _e7.w.x) - _e7.w.y) - _e7.w.z))));
             float _e92 = sum_1;
-            const GlintGrid _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            const GlintGrid _e93 = glint_make_grid(uv_4, lod_2, theta_3, ratio_2, w_1);
             const float _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
             sum_1 = (_e92 + _e94);
         }

@@ -79,6 +79,12 @@ struct GlintParams {
     float micro_roughness;
     float density_randomization;
 };
+struct GlintSimplex {
+    metal::int2 id;
+    int si;
+    char _pad2[4];
+    metal::float3 bary;
+};
 struct GlintEllipse {
     metal::float2 major_dir;
     float major;
@@ -315,8 +321,8 @@ metal::float2 weft_env_brdf_lut(
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
 ) {
-    metal::float2 uv_4 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_4, metal::level(0.0));
+    metal::float2 uv_5 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_5, metal::level(0.0));
     return _e8.xy;
 }
 
@@ -442,6 +448,26 @@ float glint_hash13_(
     return metal::fract((_e16 + _e18) * _e21);
 }
 
+metal::int2 naga_f2i32(metal::float2 value) {
+    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+GlintSimplex glint_simplex(
+    metal::float2 uv_1
+) {
+    metal::float2 skewed = metal::float2(uv_1.x - (0.57735026 * uv_1.y), 1.1547005 * uv_1.y);
+    metal::float2 base = metal::floor(skewed);
+    metal::float2 f = skewed - base;
+    float fz = (1.0 - f.x) - f.y;
+    float s_2 = (fz < 0.0) ? 1.0 : 0.0;
+    float s2_ = (2.0 * s_2) - 1.0;
+    return GlintSimplex {naga_f2i32(base), naga_f2i32(s_2), {}, metal::float3(-(fz) * s2_, s_2 - (f.y * s2_), s_2 - (f.x * s2_))};
+}
+
 GlintEllipse glint_ellipse(
     metal::float2 duv_dx,
     metal::float2 duv_dy
@@ -467,12 +493,12 @@ GlintEllipse glint_ellipse(
 }
 
 metal::float2 glint_rotate(
-    metal::float2 uv_1,
+    metal::float2 uv_2,
     float angle
 ) {
     float c_5 = metal::cos(angle);
-    float s_2 = metal::sin(angle);
-    return metal::float2((c_5 * uv_1.x) + (s_2 * uv_1.y), (c_5 * uv_1.y) - (s_2 * uv_1.x));
+    float s_3 = metal::sin(angle);
+    return metal::float2((c_5 * uv_2.x) + (s_3 * uv_2.y), (c_5 * uv_2.y) - (s_3 * uv_2.x));
 }
 
 uint naga_f2u32(float value) {
@@ -490,14 +516,14 @@ uint glint_grid_seed(
 }
 
 GlintGrid glint_make_grid(
-    metal::float2 uv_2,
+    metal::float2 uv_3,
     float lod_1,
     float theta_1,
     float ratio_1,
     float weight
 ) {
     GlintGrid g = {};
-    metal::float2 _e7 = glint_rotate(uv_2, theta_1);
+    metal::float2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = (_e7 * metal::exp2(-(lod_1))) / metal::float2(1.0, ratio_1);
     uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -652,9 +678,9 @@ float glint_cell_fast(
     float inv_1 = 0.5 / width;
     float gate_a_1 = inv_1 * -0.00000000023283064;
     float gate_b_1 = metal::fma(one_hit, inv_1, 0.5);
-    metal::float2 s_3 = metal::fma(static_cast<metal::float2>(_e16.yz >> metal::uint2(8u)), metal::float2(0.0000038146973), s_slope);
-    metal::float2 cell = metal::floor(s_3);
-    metal::float2 l = s_3 - cell;
+    metal::float2 s_4 = metal::fma(static_cast<metal::float2>(_e16.yz >> metal::uint2(8u)), metal::float2(0.0000038146973), s_slope);
+    metal::float2 cell = metal::floor(s_4);
+    metal::float2 l = s_4 - cell;
     metal::uint2 ci = naga_f2u32(cell);
     metal::uint2 t0_ = ci & metal::uint2(63u);
     metal::uint2 t1_ = (ci + metal::uint2(1u)) & metal::uint2(63u);
@@ -669,14 +695,6 @@ float glint_cell_fast(
     return metal::mix(x0_, x1_, l.y) / count_1;
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-int naga_f2i32(float value) {
-    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
 float glint_sample_grid_fast(
     GlintParams params_1,
     GlintGrid grid_1,
@@ -686,44 +704,39 @@ float glint_sample_grid_fast(
 ) {
     float sum = 0.0;
     int k = 0;
-    metal::float2 skewed = metal::float2(grid_1.uv.x - (0.57735026 * grid_1.uv.y), 1.1547005 * grid_1.uv.y);
-    metal::float2 base = metal::floor(skewed);
-    metal::float2 f = skewed - base;
-    float fz = (1.0 - f.x) - f.y;
-    float s_4 = (fz < 0.0) ? 1.0 : 0.0;
-    float s2_ = (2.0 * s_4) - 1.0;
-    metal::int2 id = naga_f2i32(base);
-    int si = naga_f2i32(s_4);
-    metal::float3 bary = metal::float3(-(fz) * s2_, s_4 - (f.y * s2_), s_4 - (f.x * s2_));
+    GlintSimplex _e6 = glint_simplex(grid_1.uv);
+    metal::int2 id = _e6.id;
+    int si = _e6.si;
+    metal::float3 bary = _e6.bary;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e81 = k;
-            k = as_type<int>(as_type<uint>(_e81) + as_type<uint>(1));
+            int _e47 = k;
+            k = as_type<int>(as_type<uint>(_e47) + as_type<uint>(1));
         }
         loop_init = false;
-        int _e48 = k;
-        if (_e48 < 3) {
+        int _e14 = k;
+        if (_e14 < 3) {
         } else {
             break;
         }
         {
-            int _e53 = k;
-            int _e59 = k;
-            metal::int2 c_6 = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2((_e53 == 2) ? as_type<int>(as_type<uint>(1) - as_type<uint>(si)) : si, (_e59 == 1) ? as_type<int>(as_type<uint>(1) - as_type<uint>(si)) : si)));
-            int _e67 = k;
-            int _e72 = k;
-            float b_4 = (_e72 == 0) ? bary.x : ((_e67 == 1) ? bary.y : bary.z);
-            float _e76 = sum;
-            float _e77 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
-            sum = _e76 + (b_4 * _e77);
+            int _e19 = k;
+            int _e25 = k;
+            metal::int2 c_6 = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2((_e19 == 2) ? as_type<int>(as_type<uint>(1) - as_type<uint>(si)) : si, (_e25 == 1) ? as_type<int>(as_type<uint>(1) - as_type<uint>(si)) : si)));
+            int _e33 = k;
+            int _e38 = k;
+            float b_4 = (_e38 == 0) ? _e6.bary.x : ((_e33 == 1) ? _e6.bary.y : _e6.bary.z);
+            float _e42 = sum;
+            float _e43 = glint_cell_fast(params_1, grid_1, c_6, s_slope_1, p_2, log2_q_1);
+            sum = _e42 + (b_4 * _e43);
         }
     }
-    float _e83 = sum;
-    return _e83;
+    float _e49 = sum;
+    return _e49;
 }
 
 metal::float3 glint_vertex_of_code(
@@ -777,7 +790,7 @@ GlintTetraFast glint_tetra_fast(
 
 float glint_hits_fast(
     GlintParams params_2,
-    metal::float2 uv_3,
+    metal::float2 uv_4,
     GlintEllipse e_4,
     float screen_scale_3,
     metal::float2 slope,
@@ -818,7 +831,7 @@ float glint_hits_fast(
             uint _e88 = i;
             float w_1 = (_e88 == 0u) ? _e7.w.x : ((_e82 == 1u) ? _e7.w.y : ((_e76 == 2u) ? _e7.w.z : (((1.0 - _e7.w.x) - _e7.w.y) - _e7.w.z)));
             float _e92 = sum_1;
-            GlintGrid _e93 = glint_make_grid(uv_3, lod_2, theta_3, ratio_2, w_1);
+            GlintGrid _e93 = glint_make_grid(uv_4, lod_2, theta_3, ratio_2, w_1);
             float _e94 = glint_sample_grid_fast(params_2, _e93, s_slope_2, p_4, log2_q_2);
             sum_1 = _e92 + _e94;
         }

@@ -85,6 +85,12 @@ struct GlintSlopeRand {
     metal::float2 lerp;
     char _pad3[8];
 };
+struct GlintSimplex {
+    metal::int2 id;
+    int si;
+    char _pad2[4];
+    metal::float3 bary;
+};
 struct GlintEllipse {
     metal::float2 major_dir;
     float major;
@@ -331,8 +337,8 @@ metal::float2 weft_env_brdf_lut(
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
 ) {
-    metal::float2 uv_5 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_5, metal::level(0.0));
+    metal::float2 uv_6 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_6));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_6, metal::level(0.0));
     return _e8.xy;
 }
 
@@ -649,6 +655,18 @@ int naga_f2i32(float value) {
     return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
 }
 
+GlintSimplex glint_simplex(
+    metal::float2 uv_1
+) {
+    metal::float2 skewed = metal::float2(uv_1.x - (0.57735026 * uv_1.y), 1.1547005 * uv_1.y);
+    metal::float2 base = metal::floor(skewed);
+    metal::float2 f = skewed - base;
+    float fz = (1.0 - f.x) - f.y;
+    float s_3 = (fz < 0.0) ? 1.0 : 0.0;
+    float s2_ = (2.0 * s_3) - 1.0;
+    return GlintSimplex {naga_f2i32(base), naga_f2i32(s_3), {}, metal::float3(-(fz) * s2_, s_3 - (f.y * s2_), s_3 - (f.x * s2_))};
+}
+
 float glint_sample_grid(
     GlintParams params,
     GlintGrid grid,
@@ -656,29 +674,24 @@ float glint_sample_grid(
     float target_ndf,
     bool poly_normals_3
 ) {
-    metal::float2 skewed = metal::float2(grid.uv.x - (0.57735026 * grid.uv.y), 1.1547005 * grid.uv.y);
-    metal::float2 base = metal::floor(skewed);
-    metal::float2 f = skewed - base;
-    float fz = (1.0 - f.x) - f.y;
-    float s_3 = (fz < 0.0) ? 1.0 : 0.0;
-    float s2_ = (2.0 * s_3) - 1.0;
-    metal::int2 id = naga_f2i32(base);
-    int si = naga_f2i32(s_3);
+    GlintSimplex _e6 = glint_simplex(grid.uv);
+    metal::int2 id = _e6.id;
+    int si = _e6.si;
     metal::int2 c0_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(si, si)));
     metal::int2 c1_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(si, as_type<int>(as_type<uint>(1) - as_type<uint>(si)))));
     metal::int2 c2_ = as_type<metal::int2>(as_type<metal::uint2>(id) + as_type<metal::uint2>(metal::int2(as_type<int>(as_type<uint>(1) - as_type<uint>(si)), si)));
-    metal::float3 bary = metal::float3(-(fz) * s2_, s_3 - (f.y * s2_), s_3 - (f.x * s2_));
-    metal::uint3 _e63 = glint_pcg3d(metal::uint3(as_type<uint>(c0_.x) + 2147483648u, as_type<uint>(c0_.y) + 2147483648u, grid.seed));
-    metal::float3 _e64 = glint_unit3_(_e63);
-    metal::uint3 _e73 = glint_pcg3d(metal::uint3(as_type<uint>(c1_.x) + 2147483648u, as_type<uint>(c1_.y) + 2147483648u, grid.seed));
-    metal::float3 _e74 = glint_unit3_(_e73);
-    metal::uint3 _e83 = glint_pcg3d(metal::uint3(as_type<uint>(c2_.x) + 2147483648u, as_type<uint>(c2_.y) + 2147483648u, grid.seed));
-    metal::float3 _e84 = glint_unit3_(_e83);
-    GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    metal::float3 _e98 = glint_gaussian3_(metal::float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    metal::float3 log_density = metal::clamp((_e98 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
+    metal::float3 bary = _e6.bary;
+    metal::uint3 _e29 = glint_pcg3d(metal::uint3(as_type<uint>(c0_.x) + 2147483648u, as_type<uint>(c0_.y) + 2147483648u, grid.seed));
+    metal::float3 _e30 = glint_unit3_(_e29);
+    metal::uint3 _e39 = glint_pcg3d(metal::uint3(as_type<uint>(c1_.x) + 2147483648u, as_type<uint>(c1_.y) + 2147483648u, grid.seed));
+    metal::float3 _e40 = glint_unit3_(_e39);
+    metal::uint3 _e49 = glint_pcg3d(metal::uint3(as_type<uint>(c2_.x) + 2147483648u, as_type<uint>(c2_.y) + 2147483648u, grid.seed));
+    metal::float3 _e50 = glint_unit3_(_e49);
+    GlintSlopeRand _e53 = glint_slope_rand(params.micro_roughness, slope_1, _e30.yz, poly_normals_3);
+    GlintSlopeRand _e56 = glint_slope_rand(params.micro_roughness, slope_1, _e40.yz, poly_normals_3);
+    GlintSlopeRand _e59 = glint_slope_rand(params.micro_roughness, slope_1, _e50.yz, poly_normals_3);
+    metal::float3 _e64 = glint_gaussian3_(metal::float3(_e30.x, _e40.x, _e50.x), poly_normals_3);
+    metal::float3 log_density = metal::clamp((_e64 * params.density_randomization) + metal::float3(params.log_density), metal::float3(0.0), metal::float3(50.0));
     metal::float3 count_1 = metal::max(metal::float3(0.00000001), grid.cell_area * metal::exp(log_density));
     metal::float3 blended = count_1 * grid.weight;
     float p_4 = params.micro_roughness * target_ndf;
@@ -687,10 +700,10 @@ float glint_sample_grid(
     metal::float3 mean_1 = others * p_4;
     metal::float3 deviation_1 = metal::sqrt(others * (p_4 * (1.0 - p_4)));
     metal::float3 smooth_width_1 = (0.1 * metal::saturate(one_hit_1 * 10.0)) * metal::saturate((metal::float3(1.0) - one_hit_1) * 10.0);
-    float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return metal::dot(metal::float3(_e155, _e161, _e167) / count_1, bary);
+    float _e121 = glint_cell_hits(_e53, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e127 = glint_cell_hits(_e56, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e133 = glint_cell_hits(_e59, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return metal::dot(metal::float3(_e121, _e127, _e133) / count_1, bary);
 }
 
 GlintEllipse glint_ellipse(
@@ -718,12 +731,12 @@ GlintEllipse glint_ellipse(
 }
 
 metal::float2 glint_rotate(
-    metal::float2 uv_1,
+    metal::float2 uv_2,
     float angle
 ) {
     float c_4 = metal::cos(angle);
     float s_4 = metal::sin(angle);
-    return metal::float2((c_4 * uv_1.x) + (s_4 * uv_1.y), (c_4 * uv_1.y) - (s_4 * uv_1.x));
+    return metal::float2((c_4 * uv_2.x) + (s_4 * uv_2.y), (c_4 * uv_2.y) - (s_4 * uv_2.x));
 }
 
 uint naga_f2u32(float value) {
@@ -741,14 +754,14 @@ uint glint_grid_seed(
 }
 
 GlintGrid glint_make_grid(
-    metal::float2 uv_2,
+    metal::float2 uv_3,
     float lod_1,
     float theta_1,
     float ratio_1,
     float weight
 ) {
     GlintGrid g = {};
-    metal::float2 _e7 = glint_rotate(uv_2, theta_1);
+    metal::float2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = (_e7 * metal::exp2(-(lod_1))) / metal::float2(1.0, ratio_1);
     uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -975,7 +988,7 @@ GlintTetra glint_tetra(
 }
 
 GlintGrid glint_vertex_grid(
-    metal::float2 uv_3,
+    metal::float2 uv_4,
     metal::float3 p_2,
     float weight_1,
     bool center,
@@ -1001,24 +1014,24 @@ GlintGrid glint_vertex_grid(
     float ratio_2 = (p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_;
     float lod_2 = lod0_ + p_2.z;
     float _e35 = theta_2;
-    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    GlintGrid _e36 = glint_make_grid(uv_4, lod_2, _e35, ratio_2, weight_1);
     return _e36;
 }
 
 GlintGrids glint_grids(
-    metal::float2 uv_4,
+    metal::float2 uv_5,
     GlintEllipse e_4,
     float screen_scale_3
 ) {
     GlintGrids out_5 = {};
     GlintTetra _e3 = glint_tetra(e_4, screen_scale_3);
-    GlintGrid _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e15 = glint_vertex_grid(uv_5, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g0_ = _e15;
-    GlintGrid _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e26 = glint_vertex_grid(uv_5, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g1_ = _e26;
-    GlintGrid _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e37 = glint_vertex_grid(uv_5, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g2_ = _e37;
-    GlintGrid _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e48 = glint_vertex_grid(uv_5, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g3_ = _e48;
     GlintGrids _e49 = out_5;
     return _e49;

@@ -69,6 +69,11 @@ struct GlintSlopeRand {
     vec4 gaussian;
     vec2 lerp;
 };
+struct GlintSimplex {
+    ivec2 id;
+    int si;
+    vec3 bary;
+};
 struct GlintEllipse {
     vec2 major_dir;
     float major;
@@ -277,8 +282,8 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_5) {
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6) {
-    vec2 uv_5 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_5), 0.0);
+    vec2 uv_6 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_6, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_6), 0.0);
     return _e8.xy;
 }
 
@@ -551,30 +556,35 @@ float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float
     return mix(x0_, x1_, r.lerp.y);
 }
 
-float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float target_ndf, bool poly_normals_3) {
-    vec2 skewed = vec2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
+GlintSimplex glint_simplex(vec2 uv_1) {
+    vec2 skewed = vec2((uv_1.x - (0.57735026 * uv_1.y)), (1.1547005 * uv_1.y));
     vec2 base = floor(skewed);
     vec2 f = (skewed - base);
     float fz = ((1.0 - f.x) - f.y);
     float s_3 = ((fz < 0.0) ? 1.0 : 0.0);
     float s2_ = ((2.0 * s_3) - 1.0);
-    ivec2 id = ivec2(base);
-    int si = int(s_3);
+    return GlintSimplex(ivec2(base), int(s_3), vec3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_))));
+}
+
+float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float target_ndf, bool poly_normals_3) {
+    GlintSimplex _e6 = glint_simplex(grid.uv);
+    ivec2 id = _e6.id;
+    int si = _e6.si;
     ivec2 c0_ = (id + ivec2(si, si));
     ivec2 c1_ = (id + ivec2(si, (1 - si)));
     ivec2 c2_ = (id + ivec2((1 - si), si));
-    vec3 bary = vec3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    uvec3 _e63 = glint_pcg3d(uvec3((uint(c0_.x) + 2147483648u), (uint(c0_.y) + 2147483648u), grid.seed));
-    vec3 _e64 = glint_unit3_(_e63);
-    uvec3 _e73 = glint_pcg3d(uvec3((uint(c1_.x) + 2147483648u), (uint(c1_.y) + 2147483648u), grid.seed));
-    vec3 _e74 = glint_unit3_(_e73);
-    uvec3 _e83 = glint_pcg3d(uvec3((uint(c2_.x) + 2147483648u), (uint(c2_.y) + 2147483648u), grid.seed));
-    vec3 _e84 = glint_unit3_(_e83);
-    GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    vec3 _e98 = glint_gaussian3_(vec3(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    vec3 log_density = clamp(((_e98 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
+    vec3 bary = _e6.bary;
+    uvec3 _e29 = glint_pcg3d(uvec3((uint(c0_.x) + 2147483648u), (uint(c0_.y) + 2147483648u), grid.seed));
+    vec3 _e30 = glint_unit3_(_e29);
+    uvec3 _e39 = glint_pcg3d(uvec3((uint(c1_.x) + 2147483648u), (uint(c1_.y) + 2147483648u), grid.seed));
+    vec3 _e40 = glint_unit3_(_e39);
+    uvec3 _e49 = glint_pcg3d(uvec3((uint(c2_.x) + 2147483648u), (uint(c2_.y) + 2147483648u), grid.seed));
+    vec3 _e50 = glint_unit3_(_e49);
+    GlintSlopeRand _e53 = glint_slope_rand(params.micro_roughness, slope_1, _e30.yz, poly_normals_3);
+    GlintSlopeRand _e56 = glint_slope_rand(params.micro_roughness, slope_1, _e40.yz, poly_normals_3);
+    GlintSlopeRand _e59 = glint_slope_rand(params.micro_roughness, slope_1, _e50.yz, poly_normals_3);
+    vec3 _e64 = glint_gaussian3_(vec3(_e30.x, _e40.x, _e50.x), poly_normals_3);
+    vec3 log_density = clamp(((_e64 * params.density_randomization) + vec3(params.log_density)), vec3(0.0), vec3(50.0));
     vec3 count_1 = max(vec3(1e-8), (grid.cell_area * exp(log_density)));
     vec3 blended = (count_1 * grid.weight);
     float p_4 = (params.micro_roughness * target_ndf);
@@ -583,10 +593,10 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, vec2 slope_1, float 
     vec3 mean_1 = (others * p_4);
     vec3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     vec3 smooth_width_1 = ((0.1 * clamp((one_hit_1 * 10.0), vec3(0.0), vec3(1.0))) * clamp(((vec3(1.0) - one_hit_1) * 10.0), vec3(0.0), vec3(1.0)));
-    float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((vec3(_e155, _e161, _e167) / count_1), bary);
+    float _e121 = glint_cell_hits(_e53, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    float _e127 = glint_cell_hits(_e56, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    float _e133 = glint_cell_hits(_e59, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((vec3(_e121, _e127, _e133) / count_1), bary);
 }
 
 GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
@@ -610,10 +620,10 @@ GlintEllipse glint_ellipse(vec2 duv_dx, vec2 duv_dy) {
     return _e72;
 }
 
-vec2 glint_rotate(vec2 uv_1, float angle) {
+vec2 glint_rotate(vec2 uv_2, float angle) {
     float c_4 = cos(angle);
     float s_4 = sin(angle);
-    return vec2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2(((c_4 * uv_2.x) + (s_4 * uv_2.y)), ((c_4 * uv_2.y) - (s_4 * uv_2.x)));
 }
 
 uint glint_grid_seed(float lod, float theta, float ratio) {
@@ -622,9 +632,9 @@ uint glint_grid_seed(float lod, float theta, float ratio) {
     return uint(min((_e10 * 4294967300.0), 4294967000.0));
 }
 
-GlintGrid glint_make_grid(vec2 uv_2, float lod_1, float theta_1, float ratio_1, float weight) {
+GlintGrid glint_make_grid(vec2 uv_3, float lod_1, float theta_1, float ratio_1, float weight) {
     GlintGrid g = GlintGrid(vec2(0.0), 0u, 0.0, 0.0);
-    vec2 _e7 = glint_rotate(uv_2, theta_1);
+    vec2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / vec2(1.0, ratio_1));
     uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -835,7 +845,7 @@ GlintTetra glint_tetra(GlintEllipse e_3, float screen_scale_2) {
     return _e195;
 }
 
-GlintGrid glint_vertex_grid(vec2 uv_3, vec3 p_2, float weight_1, bool center, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_) {
+GlintGrid glint_vertex_grid(vec2 uv_4, vec3 p_2, float weight_1, bool center, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_) {
     float theta_2 = 0.0;
     bool local_2 = false;
     float rot_index = (p_2.x * 2.0);
@@ -852,20 +862,20 @@ GlintGrid glint_vertex_grid(vec2 uv_3, vec3 p_2, float weight_1, bool center, fl
     float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
     float lod_2 = (lod0_ + p_2.z);
     float _e35 = theta_2;
-    GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    GlintGrid _e36 = glint_make_grid(uv_4, lod_2, _e35, ratio_2, weight_1);
     return _e36;
 }
 
-GlintGrids glint_grids(vec2 uv_4, GlintEllipse e_4, float screen_scale_3) {
+GlintGrids glint_grids(vec2 uv_5, GlintEllipse e_4, float screen_scale_3) {
     GlintGrids out_5 = GlintGrids(GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0), GlintGrid(vec2(0.0), 0u, 0.0, 0.0));
     GlintTetra _e3 = glint_tetra(e_4, screen_scale_3);
-    GlintGrid _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e15 = glint_vertex_grid(uv_5, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g0_ = _e15;
-    GlintGrid _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e26 = glint_vertex_grid(uv_5, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g1_ = _e26;
-    GlintGrid _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e37 = glint_vertex_grid(uv_5, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g2_ = _e37;
-    GlintGrid _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    GlintGrid _e48 = glint_vertex_grid(uv_5, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g3_ = _e48;
     GlintGrids _e49 = out_5;
     return _e49;

@@ -91,6 +91,14 @@ struct GlintSlopeRand {
     int _end_pad_1;
 };
 
+struct GlintSimplex {
+    int2 id;
+    int si;
+    int _pad2_0;
+    float3 bary;
+    int _end_pad_0;
+};
+
 struct GlintEllipse {
     float2 major_dir;
     float major;
@@ -345,8 +353,8 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_5)
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_6)
 {
-    float2 uv_5 = float2(saturate(n_dot_v_1), saturate(roughness_6));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_5, 0.0);
+    float2 uv_6 = float2(saturate(n_dot_v_1), saturate(roughness_6));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_6, 0.0);
     return _e8.xy;
 }
 
@@ -670,6 +678,14 @@ float glint_cell_hits(GlintSlopeRand r, float one_hit, float smooth_width, float
     return lerp(x0_, x1_, r.lerp_.y);
 }
 
+GlintSimplex ConstructGlintSimplex(int2 arg0, int arg1, float3 arg2) {
+    GlintSimplex ret = (GlintSimplex)0;
+    ret.id = arg0;
+    ret.si = arg1;
+    ret.bary = arg2;
+    return ret;
+}
+
 int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
@@ -678,31 +694,38 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf, bool poly_normals_3)
+GlintSimplex glint_simplex(float2 uv_1)
 {
-    float2 skewed = float2((grid.uv.x - (0.57735026 * grid.uv.y)), (1.1547005 * grid.uv.y));
+    float2 skewed = float2((uv_1.x - (0.57735026 * uv_1.y)), (1.1547005 * uv_1.y));
     float2 base = floor(skewed);
     float2 f = (skewed - base);
     float fz = ((1.0 - f.x) - f.y);
     float s_3 = ((fz < 0.0) ? 1.0 : 0.0);
     float s2_ = ((2.0 * s_3) - 1.0);
-    int2 id = naga_f2i32(base);
-    int si = naga_f2i32(s_3);
+    const GlintSimplex glintsimplex = ConstructGlintSimplex(naga_f2i32(base), naga_f2i32(s_3), float3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_))));
+    return glintsimplex;
+}
+
+float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, float target_ndf, bool poly_normals_3)
+{
+    const GlintSimplex _e6 = glint_simplex(grid.uv);
+    int2 id = _e6.id;
+    int si = _e6.si;
     int2 c0_ = asint(asuint(id) + asuint(int2(si, si)));
     int2 c1_ = asint(asuint(id) + asuint(int2(si, asint(asuint(int(1)) - asuint(si)))));
     int2 c2_ = asint(asuint(id) + asuint(int2(asint(asuint(int(1)) - asuint(si)), si)));
-    float3 bary = float3((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    const uint3 _e63 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
-    const float3 _e64 = glint_unit3_(_e63);
-    const uint3 _e73 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
-    const float3 _e74 = glint_unit3_(_e73);
-    const uint3 _e83 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
-    const float3 _e84 = glint_unit3_(_e83);
-    const GlintSlopeRand _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    const GlintSlopeRand _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    const GlintSlopeRand _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    const float3 _e98 = glint_gaussian3_(float3(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    float3 log_density = clamp(((_e98 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
+    float3 bary = _e6.bary;
+    const uint3 _e29 = glint_pcg3d(uint3((asuint(c0_.x) + 2147483648u), (asuint(c0_.y) + 2147483648u), grid.seed));
+    const float3 _e30 = glint_unit3_(_e29);
+    const uint3 _e39 = glint_pcg3d(uint3((asuint(c1_.x) + 2147483648u), (asuint(c1_.y) + 2147483648u), grid.seed));
+    const float3 _e40 = glint_unit3_(_e39);
+    const uint3 _e49 = glint_pcg3d(uint3((asuint(c2_.x) + 2147483648u), (asuint(c2_.y) + 2147483648u), grid.seed));
+    const float3 _e50 = glint_unit3_(_e49);
+    const GlintSlopeRand _e53 = glint_slope_rand(params.micro_roughness, slope_1, _e30.yz, poly_normals_3);
+    const GlintSlopeRand _e56 = glint_slope_rand(params.micro_roughness, slope_1, _e40.yz, poly_normals_3);
+    const GlintSlopeRand _e59 = glint_slope_rand(params.micro_roughness, slope_1, _e50.yz, poly_normals_3);
+    const float3 _e64 = glint_gaussian3_(float3(_e30.x, _e40.x, _e50.x), poly_normals_3);
+    float3 log_density = clamp(((_e64 * params.density_randomization) + (params.log_density).xxx), (0.0).xxx, (50.0).xxx);
     float3 count_1 = max((1e-8).xxx, (grid.cell_area * exp(log_density)));
     float3 blended = (count_1 * grid.weight);
     float p_4 = (params.micro_roughness * target_ndf);
@@ -711,10 +734,10 @@ float glint_sample_grid(GlintParams params, GlintGrid grid, float2 slope_1, floa
     float3 mean_1 = (others * p_4);
     float3 deviation_1 = sqrt((others * (p_4 * (1.0 - p_4))));
     float3 smooth_width_1 = ((0.1 * saturate((one_hit_1 * 10.0))) * saturate((((1.0).xxx - one_hit_1) * 10.0)));
-    const float _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    const float _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    const float _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((float3(_e155, _e161, _e167) / count_1), bary);
+    const float _e121 = glint_cell_hits(_e53, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    const float _e127 = glint_cell_hits(_e56, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    const float _e133 = glint_cell_hits(_e59, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((float3(_e121, _e127, _e133) / count_1), bary);
 }
 
 GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
@@ -741,11 +764,11 @@ GlintEllipse glint_ellipse(float2 duv_dx, float2 duv_dy)
     return glintellipse;
 }
 
-float2 glint_rotate(float2 uv_1, float angle)
+float2 glint_rotate(float2 uv_2, float angle)
 {
     float c_4 = cos(angle);
     float s_4 = sin(angle);
-    return float2(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+    return float2(((c_4 * uv_2.x) + (s_4 * uv_2.y)), ((c_4 * uv_2.y) - (s_4 * uv_2.x)));
 }
 
 uint naga_f2u32(float value) {
@@ -759,11 +782,11 @@ uint glint_grid_seed(float lod, float theta, float ratio)
     return naga_f2u32(min((_e10 * 4294967300.0), 4294967000.0));
 }
 
-GlintGrid glint_make_grid(float2 uv_2, float lod_1, float theta_1, float ratio_1, float weight)
+GlintGrid glint_make_grid(float2 uv_3, float lod_1, float theta_1, float ratio_1, float weight)
 {
     GlintGrid g = (GlintGrid)0;
 
-    const float2 _e7 = glint_rotate(uv_2, theta_1);
+    const float2 _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / float2(1.0, ratio_1));
     const uint _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -983,7 +1006,7 @@ GlintTetra glint_tetra(GlintEllipse e_3, float screen_scale_2)
     return glinttetra;
 }
 
-GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
+GlintGrid glint_vertex_grid(float2 uv_4, float3 p_2, float weight_1, bool center_, float bin0_, float bin_h, float bin1_, float lod0_, float ratio0_)
 {
     float theta_2 = (float)0;
     bool local_2 = (bool)0;
@@ -1002,23 +1025,23 @@ GlintGrid glint_vertex_grid(float2 uv_3, float3 p_2, float weight_1, bool center
     float ratio_2 = ((p_2.y > 0.5) ? (ratio0_ * 2.0) : ratio0_);
     float lod_2 = (lod0_ + p_2.z);
     float _e35 = theta_2;
-    const GlintGrid _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    const GlintGrid _e36 = glint_make_grid(uv_4, lod_2, _e35, ratio_2, weight_1);
     const GlintGrid glintgrid_1 = _e36;
     return glintgrid_1;
 }
 
-GlintGrids glint_grids(float2 uv_4, GlintEllipse e_4, float screen_scale_3)
+GlintGrids glint_grids(float2 uv_5, GlintEllipse e_4, float screen_scale_3)
 {
     GlintGrids out_5 = (GlintGrids)0;
 
     const GlintTetra _e3 = glint_tetra(e_4, screen_scale_3);
-    const GlintGrid _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    const GlintGrid _e15 = glint_vertex_grid(uv_5, _e3.p0_, _e3.w.x, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g0_ = _e15;
-    const GlintGrid _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    const GlintGrid _e26 = glint_vertex_grid(uv_5, _e3.p1_, _e3.w.y, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g1_ = _e26;
-    const GlintGrid _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    const GlintGrid _e37 = glint_vertex_grid(uv_5, _e3.p2_, _e3.w.z, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g2_ = _e37;
-    const GlintGrid _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    const GlintGrid _e48 = glint_vertex_grid(uv_5, _e3.p3_, _e3.w.w, _e3.center_, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g3_ = _e48;
     GlintGrids _e49 = out_5;
     const GlintGrids glintgrids = _e49;

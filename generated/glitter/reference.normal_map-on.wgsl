@@ -78,6 +78,12 @@ struct GlintSlopeRand {
     lerp: vec2<f32>,
 }
 
+struct GlintSimplex {
+    id: vec2<i32>,
+    si: i32,
+    bary: vec3<f32>,
+}
+
 struct GlintEllipse {
     major_dir: vec2<f32>,
     major: f32,
@@ -294,8 +300,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_5: f32) -> vec3<f32> {
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_6: f32) -> vec2<f32> {
-    let uv_5 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_5, 0f);
+    let uv_6 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_6));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_6, 0f);
     return _e8.xy;
 }
 
@@ -574,30 +580,35 @@ fn glint_cell_hits(r: GlintSlopeRand, one_hit: f32, smooth_width: f32, mean: f32
     return mix(x0_, x1_, r.lerp.y);
 }
 
-fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, target_ndf: f32, poly_normals_3: bool) -> f32 {
-    let skewed = vec2<f32>((grid.uv.x - (0.57735026f * grid.uv.y)), (1.1547005f * grid.uv.y));
+fn glint_simplex(uv_1: vec2<f32>) -> GlintSimplex {
+    let skewed = vec2<f32>((uv_1.x - (0.57735026f * uv_1.y)), (1.1547005f * uv_1.y));
     let base = floor(skewed);
     let f = (skewed - base);
     let fz = ((1f - f.x) - f.y);
     let s_3 = select(0f, 1f, (fz < 0f));
     let s2_ = ((2f * s_3) - 1f);
-    let id = vec2<i32>(base);
-    let si = i32(s_3);
+    return GlintSimplex(vec2<i32>(base), i32(s_3), vec3<f32>((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_))));
+}
+
+fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, target_ndf: f32, poly_normals_3: bool) -> f32 {
+    let _e6 = glint_simplex(grid.uv);
+    let id = _e6.id;
+    let si = _e6.si;
     let c0_ = (id + vec2<i32>(si, si));
     let c1_ = (id + vec2<i32>(si, (1i - si)));
     let c2_ = (id + vec2<i32>((1i - si), si));
-    let bary = vec3<f32>((-(fz) * s2_), (s_3 - (f.y * s2_)), (s_3 - (f.x * s2_)));
-    let _e63 = glint_pcg3d(vec3<u32>((bitcast<u32>(c0_.x) + 2147483648u), (bitcast<u32>(c0_.y) + 2147483648u), grid.seed));
-    let _e64 = glint_unit3_(_e63);
-    let _e73 = glint_pcg3d(vec3<u32>((bitcast<u32>(c1_.x) + 2147483648u), (bitcast<u32>(c1_.y) + 2147483648u), grid.seed));
-    let _e74 = glint_unit3_(_e73);
-    let _e83 = glint_pcg3d(vec3<u32>((bitcast<u32>(c2_.x) + 2147483648u), (bitcast<u32>(c2_.y) + 2147483648u), grid.seed));
-    let _e84 = glint_unit3_(_e83);
-    let _e87 = glint_slope_rand(params.micro_roughness, slope_1, _e64.yz, poly_normals_3);
-    let _e90 = glint_slope_rand(params.micro_roughness, slope_1, _e74.yz, poly_normals_3);
-    let _e93 = glint_slope_rand(params.micro_roughness, slope_1, _e84.yz, poly_normals_3);
-    let _e98 = glint_gaussian3_(vec3<f32>(_e64.x, _e74.x, _e84.x), poly_normals_3);
-    let log_density = clamp(((_e98 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
+    let bary = _e6.bary;
+    let _e29 = glint_pcg3d(vec3<u32>((bitcast<u32>(c0_.x) + 2147483648u), (bitcast<u32>(c0_.y) + 2147483648u), grid.seed));
+    let _e30 = glint_unit3_(_e29);
+    let _e39 = glint_pcg3d(vec3<u32>((bitcast<u32>(c1_.x) + 2147483648u), (bitcast<u32>(c1_.y) + 2147483648u), grid.seed));
+    let _e40 = glint_unit3_(_e39);
+    let _e49 = glint_pcg3d(vec3<u32>((bitcast<u32>(c2_.x) + 2147483648u), (bitcast<u32>(c2_.y) + 2147483648u), grid.seed));
+    let _e50 = glint_unit3_(_e49);
+    let _e53 = glint_slope_rand(params.micro_roughness, slope_1, _e30.yz, poly_normals_3);
+    let _e56 = glint_slope_rand(params.micro_roughness, slope_1, _e40.yz, poly_normals_3);
+    let _e59 = glint_slope_rand(params.micro_roughness, slope_1, _e50.yz, poly_normals_3);
+    let _e64 = glint_gaussian3_(vec3<f32>(_e30.x, _e40.x, _e50.x), poly_normals_3);
+    let log_density = clamp(((_e64 * params.density_randomization) + vec3(params.log_density)), vec3(0f), vec3(50f));
     let count_1 = max(vec3(0.00000001f), (grid.cell_area * exp(log_density)));
     let blended = (count_1 * grid.weight);
     let p_4 = (params.micro_roughness * target_ndf);
@@ -606,10 +617,10 @@ fn glint_sample_grid(params: GlintParams, grid: GlintGrid, slope_1: vec2<f32>, t
     let mean_1 = (others * p_4);
     let deviation_1 = sqrt((others * (p_4 * (1f - p_4))));
     let smooth_width_1 = ((0.1f * saturate((one_hit_1 * 10f))) * saturate(((vec3(1f) - one_hit_1) * 10f)));
-    let _e155 = glint_cell_hits(_e87, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
-    let _e161 = glint_cell_hits(_e90, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
-    let _e167 = glint_cell_hits(_e93, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
-    return dot((vec3<f32>(_e155, _e161, _e167) / count_1), bary);
+    let _e121 = glint_cell_hits(_e53, one_hit_1.x, smooth_width_1.x, mean_1.x, deviation_1.x, blended.x);
+    let _e127 = glint_cell_hits(_e56, one_hit_1.y, smooth_width_1.y, mean_1.y, deviation_1.y, blended.y);
+    let _e133 = glint_cell_hits(_e59, one_hit_1.z, smooth_width_1.z, mean_1.z, deviation_1.z, blended.z);
+    return dot((vec3<f32>(_e121, _e127, _e133) / count_1), bary);
 }
 
 fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
@@ -634,10 +645,10 @@ fn glint_ellipse(duv_dx: vec2<f32>, duv_dy: vec2<f32>) -> GlintEllipse {
     return _e72;
 }
 
-fn glint_rotate(uv_1: vec2<f32>, angle: f32) -> vec2<f32> {
+fn glint_rotate(uv_2: vec2<f32>, angle: f32) -> vec2<f32> {
     let c_4 = cos(angle);
     let s_4 = sin(angle);
-    return vec2<f32>(((c_4 * uv_1.x) + (s_4 * uv_1.y)), ((c_4 * uv_1.y) - (s_4 * uv_1.x)));
+    return vec2<f32>(((c_4 * uv_2.x) + (s_4 * uv_2.y)), ((c_4 * uv_2.y) - (s_4 * uv_2.x)));
 }
 
 fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
@@ -646,10 +657,10 @@ fn glint_grid_seed(lod: f32, theta: f32, ratio: f32) -> u32 {
     return u32(min((_e10 * 4294967300f), 4294967000f));
 }
 
-fn glint_make_grid(uv_2: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weight: f32) -> GlintGrid {
+fn glint_make_grid(uv_3: vec2<f32>, lod_1: f32, theta_1: f32, ratio_1: f32, weight: f32) -> GlintGrid {
     var g: GlintGrid;
 
-    let _e7 = glint_rotate(uv_2, theta_1);
+    let _e7 = glint_rotate(uv_3, theta_1);
     g.uv = ((_e7 * exp2(-(lod_1))) / vec2<f32>(1f, ratio_1));
     let _e15 = glint_grid_seed(lod_1, theta_1, ratio_1);
     g.seed = _e15;
@@ -862,7 +873,7 @@ fn glint_tetra(e_3: GlintEllipse, screen_scale_2: f32) -> GlintTetra {
     return _e195;
 }
 
-fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
+fn glint_vertex_grid(uv_4: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: bool, bin0_: f32, bin_h: f32, bin1_: f32, lod0_: f32, ratio0_: f32) -> GlintGrid {
     var theta_2: f32;
     var local_2: bool;
 
@@ -880,21 +891,21 @@ fn glint_vertex_grid(uv_3: vec2<f32>, p_2: vec3<f32>, weight_1: f32, center: boo
     let ratio_2 = select(ratio0_, (ratio0_ * 2f), (p_2.y > 0.5f));
     let lod_2 = (lod0_ + p_2.z);
     let _e35 = theta_2;
-    let _e36 = glint_make_grid(uv_3, lod_2, _e35, ratio_2, weight_1);
+    let _e36 = glint_make_grid(uv_4, lod_2, _e35, ratio_2, weight_1);
     return _e36;
 }
 
-fn glint_grids(uv_4: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32) -> GlintGrids {
+fn glint_grids(uv_5: vec2<f32>, e_4: GlintEllipse, screen_scale_3: f32) -> GlintGrids {
     var out_5: GlintGrids;
 
     let _e3 = glint_tetra(e_4, screen_scale_3);
-    let _e15 = glint_vertex_grid(uv_4, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    let _e15 = glint_vertex_grid(uv_5, _e3.p0_, _e3.w.x, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g0_ = _e15;
-    let _e26 = glint_vertex_grid(uv_4, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    let _e26 = glint_vertex_grid(uv_5, _e3.p1_, _e3.w.y, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g1_ = _e26;
-    let _e37 = glint_vertex_grid(uv_4, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    let _e37 = glint_vertex_grid(uv_5, _e3.p2_, _e3.w.z, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g2_ = _e37;
-    let _e48 = glint_vertex_grid(uv_4, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
+    let _e48 = glint_vertex_grid(uv_5, _e3.p3_, _e3.w.w, _e3.center, _e3.bin0_, _e3.bin_h, _e3.bin1_, _e3.lod0_, _e3.ratio0_);
     out_5.g3_ = _e48;
     let _e49 = out_5;
     return _e49;

@@ -317,8 +317,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
 {
     float4 e_1 = exp(((-0.5 * t) * t));
     float4 z = (abs(t) * 0.70710677);
-    float4 k_3 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
-    float4 poly = (k_3 * ((0.2548296).xxxx + (k_3 * ((-0.28449672).xxxx + (k_3 * ((1.4214138).xxxx + (k_3 * ((-1.4531521).xxxx + (k_3 * 1.0614054)))))))));
+    float4 k_5 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
+    float4 poly = (k_5 * ((0.2548296).xxxx + (k_5 * ((-0.28449672).xxxx + (k_5 * ((1.4214138).xxxx + (k_5 * ((-1.4531521).xxxx + (k_5 * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
     const float4 _e46 = weft_select4_f32bit((t >= (0.0).xxxx), half_, -(half_));
     return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
@@ -362,18 +362,50 @@ float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, 
     return (lit_ ? (s_2 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
-int mc_fast_pieces(float4 offsets_a, float4 offsets_b, int k_1)
+int mc_list_piece_count(float4 offsets_a, float4 offsets_b, int n_3)
 {
-    const float _e5 = mc_offset_at(offsets_a, offsets_b, asint(asuint(k_1) + asuint(int(1))));
-    const float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float4 spans = abs((float4(offsets_a.yzw, offsets_b.x) - offsets_a));
+    float3 spans_b = abs((offsets_b.yzw - offsets_b.xyz));
+    bool4 live = (int4(int(0), int(1), int(2), int(3)) < (asint(asuint(n_3) - asuint(int(1)))).xxxx);
+    bool3 live_b = (int3(int(4), int(5), int(6)) < (asint(asuint(n_3) - asuint(int(1)))).xxx);
+    const int4 _e38 = weft_select4_i32bit((spans > (60.0).xxxx), (int(2)).xxxx, (int(1)).xxxx);
+    const int4 _e39 = weft_select4_i32bit(live, _e38, (int(0)).xxxx);
+    const int3 _e49 = weft_select3_i32bit((spans_b > (60.0).xxx), (int(2)).xxx, (int(1)).xxx);
+    const int3 _e50 = weft_select3_i32bit(live_b, _e49, (int(0)).xxx);
+    return max(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(_e39.x) + asuint(_e39.y))) + asuint(_e39.z))) + asuint(_e39.w))) + asuint(_e50.x))) + asuint(_e50.y))) + asuint(_e50.z)), int(1));
+}
+
+int mc_fast_pieces(float4 offsets_a_1, float4 offsets_b_1, int k_1)
+{
+    const float _e5 = mc_offset_at(offsets_a_1, offsets_b_1, asint(asuint(k_1) + asuint(int(1))));
+    const float _e6 = mc_offset_at(offsets_a_1, offsets_b_1, k_1);
     float span = abs((_e5 - _e6));
     return ((span > MC_FAST_SPLIT_DEG) ? int(2) : int(1));
 }
 
+float3 mc_list_piece(float4 offsets_a_2, float4 offsets_b_2, int n_4, int k_2, int h)
+{
+    const float _e5 = mc_offset_at(offsets_a_2, offsets_b_2, k_2);
+    float d0_ = (_e5 * MC_DEG);
+    const float _e10 = mc_offset_at(offsets_a_2, offsets_b_2, asint(asuint(k_2) + asuint(int(1))));
+    float d1_ = ((n_4 > int(1)) ? (_e10 * MC_DEG) : d0_);
+    const int _e16 = mc_fast_pieces(offsets_a_2, offsets_b_2, k_2);
+    float fm = float(((n_4 > int(1)) ? _e16 : int(1)));
+    return float3(lerp(d0_, d1_, (float(h) / fm)), lerp(d0_, d1_, (float(asint(asuint(h) + asuint(int(1)))) / fm)), (1.0 / fm));
+}
+
+int2 mc_list_next(float4 offsets_a_3, float4 offsets_b_3, int n_5, int k_3, int h_1)
+{
+    const int _e5 = mc_fast_pieces(offsets_a_3, offsets_b_3, k_3);
+    int m = ((n_5 > int(1)) ? _e5 : int(1));
+    int next = asint(asuint(h_1) + asuint(int(1)));
+    return ((next >= m) ? int2(asint(asuint(k_3) + asuint(int(1))), int(0)) : int2(k_3, next));
+}
+
 float mc_u_of_cos(float c)
 {
-    float h_1 = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
-    float x2_ = (h_1 * (1.0 + (0.33333334 * h_1)));
+    float h_3 = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
+    float x2_ = (h_3 * (1.0 + (0.33333334 * h_3)));
     return exp((-16.414074 * x2_));
 }
 
@@ -528,71 +560,50 @@ float4 mc_fast_segment(McFastSet q_2, McThread th_2, float a0_, float a1_1, floa
     return _e47;
 }
 
-float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 offsets_a_1, float4 offsets_b_1, int count)
+float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 offsets_a_4, float4 offsets_b_4, int count)
 {
     float4 acc = (0.0).xxxx;
-    int k_2 = int(0);
-    int h = int(0);
+    int k_4 = int(0);
+    int h_2 = int(0);
     int i = int(0);
 
-    int n_3 = clamp(count, int(1), MC_MAX_OFFSETS);
+    int n_6 = clamp(count, int(1), MC_MAX_OFFSETS);
     const McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     float lo_s_1 = atan(_e10.s_lo);
     float hi_s_1 = atan(_e10.s_hi);
-    int segments = max(asint(asuint(n_3) - asuint(int(1))), int(1));
-    float4 spans = abs((float4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
-    float3 spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
-    bool4 live = (int4(int(0), int(1), int(2), int(3)) < (asint(asuint(n_3) - asuint(int(1)))).xxxx);
-    bool3 live_b = (int3(int(4), int(5), int(6)) < (asint(asuint(n_3) - asuint(int(1)))).xxx);
-    const int4 _e54 = weft_select4_i32bit((spans > (60.0).xxxx), (int(2)).xxxx, (int(1)).xxxx);
-    const int4 _e55 = weft_select4_i32bit(live, _e54, (int(0)).xxxx);
-    const int3 _e65 = weft_select3_i32bit((spans_b > (60.0).xxx), (int(2)).xxx, (int(1)).xxx);
-    const int3 _e66 = weft_select3_i32bit(live_b, _e65, (int(0)).xxx);
-    int pieces = max(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(asint(asuint(_e55.x) + asuint(_e55.y))) + asuint(_e55.z))) + asuint(_e55.w))) + asuint(_e66.x))) + asuint(_e66.y))) + asuint(_e66.z)), int(1));
+    int segments = max(asint(asuint(n_6) - asuint(int(1))), int(1));
+    const int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e144 = i;
-            i = asint(asuint(_e144) + asuint(int(1)));
+            int _e47 = i;
+            i = asint(asuint(_e47) + asuint(int(1)));
         }
         loop_init = false;
-        int _e91 = i;
-        if ((_e91 < pieces)) {
+        int _e29 = i;
+        if ((_e29 < _e19)) {
         } else {
             break;
         }
         {
-            int _e93 = k_2;
-            const float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
-            float d0_ = (_e94 * MC_DEG);
-            int _e97 = k_2;
-            const float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, asint(asuint(_e97) + asuint(int(1))));
-            float d1_ = ((n_3 > int(1)) ? (_e100 * MC_DEG) : d0_);
-            int _e106 = k_2;
-            const int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
-            int m = ((n_3 > int(1)) ? _e107 : int(1));
-            float fm = float(m);
-            float4 _e113 = acc;
-            int _e114 = h;
-            int _e118 = h;
-            const float4 _e124 = mc_fast_segment(_e10, th_3, lerp(d0_, d1_, (float(_e114) / fm)), lerp(d0_, d1_, (float(asint(asuint(_e118) + asuint(int(1)))) / fm)), lo_s_1, hi_s_1);
-            acc = (_e113 + (_e124 / (fm).xxxx));
-            int _e128 = h;
-            h = asint(asuint(_e128) + asuint(int(1)));
-            int _e131 = k_2;
-            int _e132 = k_2;
-            int _e135 = h;
-            k_2 = ((_e135 >= m) ? asint(asuint(_e132) + asuint(int(1))) : _e131);
-            int _e138 = h;
-            int _e139 = h;
-            h = ((_e139 >= m) ? int(0) : _e138);
+            int _e31 = k_4;
+            int _e32 = h_2;
+            const float3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
+            float4 _e34 = acc;
+            const float4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
+            acc = (_e34 + (_e37 * _e33.z));
+            int _e41 = k_4;
+            int _e42 = h_2;
+            const int2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
+            k_4 = _e43.x;
+            h_2 = _e43.y;
         }
     }
-    float4 _e146 = acc;
-    return (_e146 / (float(segments)).xxxx);
+    float4 _e49 = acc;
+    return (_e49 / (float(segments)).xxxx);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -680,14 +691,14 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float brightness = max(_e60, 0.0);
     const WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal);
     float3 v_raw = _e65.v;
-    float3 n_4 = _e65.n;
-    const float3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    float3 n_7 = _e65.n;
+    const float3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     float3 t_4 = _e69[0];
     float3 b_4 = _e69[1];
-    const float3 _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001 - dot(n_4, v_raw)), 0.0))), n_4);
+    const float3 _e79 = weft_safe_normalize((v_raw + (n_7 * max((0.001 - dot(n_7, v_raw)), 0.0))), n_7);
     const float3 _e80 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_4, b_4, n_4);
-    McFrame weft = ConstructMcFrame(b_4, t_4, n_4);
+    McFrame warp = ConstructMcFrame(t_4, b_4, n_7);
+    McFrame weft = ConstructMcFrame(b_4, t_4, n_7);
     {
         {
             {
@@ -701,7 +712,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     float4 _e99 = s1_;
     float4 _e100 = s2_;
-    const float3 _e103 = mc_combine(_e99, _e100, a1_2, a2_1, dot(n_4, _e80), dot(n_4, _e79));
+    const float3 _e103 = mc_combine(_e99, _e100, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
     const float3 _e104 = weft_main_light_radiance();
     float3 direct = (_e103 * _e104);
     const float _e108 = microcylinder_mean_fresnel(_e29.eta);
@@ -710,7 +721,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 amb2_ = (_e46.albedo + (_e113).xxx);
     float cov = (a1_2 + a2_1);
     float3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / (max(cov, 0.0001)).xxx) : amb1_);
-    const float3 _e127 = weft_sh_irradiance(n_4);
+    const float3 _e127 = weft_sh_irradiance(n_7);
     float3 ambient = (_e127 * ambient_albedo);
     float3 radiance = clamp(((direct + ambient) * brightness), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);

@@ -226,8 +226,8 @@ float mc_offset_at(vec4 a, vec4 b, int k) {
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
-    vec4 k_3 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k_3 * (vec4(0.2548296) + (k_3 * (vec4(-0.28449672) + (k_3 * (vec4(1.4214138) + (k_3 * (vec4(-1.4531521) + (k_3 * 1.0614054)))))))));
+    vec4 k_5 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k_5 * (vec4(0.2548296) + (k_5 * (vec4(-0.28449672) + (k_5 * (vec4(1.4214138) + (k_5 * (vec4(-1.4531521) + (k_5 * 1.0614054)))))))));
     vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
     return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
 }
@@ -265,16 +265,43 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float 
     return (lit ? (s_2 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
-int mc_fast_pieces(vec4 offsets_a, vec4 offsets_b, int k_1) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+int mc_list_piece_count(vec4 offsets_a, vec4 offsets_b, int n_3) {
+    vec4 spans = abs((vec4(offsets_a.yzw, offsets_b.x) - offsets_a));
+    vec3 spans_b = abs((offsets_b.yzw - offsets_b.xyz));
+    bvec4 live = lessThan(ivec4(0, 1, 2, 3), ivec4((n_3 - 1)));
+    bvec3 live_b = lessThan(ivec3(4, 5, 6), ivec3((n_3 - 1)));
+    ivec4 per = mix(ivec4(0), mix(ivec4(1), ivec4(2), greaterThan(spans, vec4(60.0))), live);
+    ivec3 per_b = mix(ivec3(0), mix(ivec3(1), ivec3(2), greaterThan(spans_b, vec3(60.0))), live_b);
+    return max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1);
+}
+
+int mc_fast_pieces(vec4 offsets_a_1, vec4 offsets_b_1, int k_1) {
+    float _e5 = mc_offset_at(offsets_a_1, offsets_b_1, (k_1 + 1));
+    float _e6 = mc_offset_at(offsets_a_1, offsets_b_1, k_1);
     float span = abs((_e5 - _e6));
     return ((span > MC_FAST_SPLIT_DEG) ? 2 : 1);
 }
 
+vec3 mc_list_piece(vec4 offsets_a_2, vec4 offsets_b_2, int n_4, int k_2, int h) {
+    float _e5 = mc_offset_at(offsets_a_2, offsets_b_2, k_2);
+    float d0_ = (_e5 * MC_DEG);
+    float _e10 = mc_offset_at(offsets_a_2, offsets_b_2, (k_2 + 1));
+    float d1_ = ((n_4 > 1) ? (_e10 * MC_DEG) : d0_);
+    int _e16 = mc_fast_pieces(offsets_a_2, offsets_b_2, k_2);
+    float fm = float(((n_4 > 1) ? _e16 : 1));
+    return vec3(mix(d0_, d1_, (float(h) / fm)), mix(d0_, d1_, (float((h + 1)) / fm)), (1.0 / fm));
+}
+
+ivec2 mc_list_next(vec4 offsets_a_3, vec4 offsets_b_3, int n_5, int k_3, int h_1) {
+    int _e5 = mc_fast_pieces(offsets_a_3, offsets_b_3, k_3);
+    int m = ((n_5 > 1) ? _e5 : 1);
+    int next = (h_1 + 1);
+    return ((next >= m) ? ivec2((k_3 + 1), 0) : ivec2(k_3, next));
+}
+
 float mc_u_of_cos(float c) {
-    float h_1 = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
-    float x2_ = (h_1 * (1.0 + (0.33333334 * h_1)));
+    float h_3 = (0.5 - (0.5 * clamp(c, -1.0, 1.0)));
+    float x2_ = (h_3 * (1.0 + (0.33333334 * h_3)));
     return exp((-16.414074 * x2_));
 }
 
@@ -391,64 +418,45 @@ vec4 mc_fast_segment(McFastSet q_2, McThread th_2, float a0_, float a1_1, float 
     return _e47;
 }
 
-vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_1, vec4 offsets_b_1, int count) {
+vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_4, vec4 offsets_b_4, int count) {
     vec4 acc = vec4(0.0);
-    int k_2 = 0;
-    int h = 0;
+    int k_4 = 0;
+    int h_2 = 0;
     int i = 0;
-    int n_3 = min(max(count, 1), MC_MAX_OFFSETS);
+    int n_6 = min(max(count, 1), MC_MAX_OFFSETS);
     McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     float lo_s_1 = atan(_e10.s_lo);
     float hi_s_1 = atan(_e10.s_hi);
-    int segments = max((n_3 - 1), 1);
-    vec4 spans = abs((vec4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
-    vec3 spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
-    bvec4 live = lessThan(ivec4(0, 1, 2, 3), ivec4((n_3 - 1)));
-    bvec3 live_b = lessThan(ivec3(4, 5, 6), ivec3((n_3 - 1)));
-    ivec4 per = mix(ivec4(0), mix(ivec4(1), ivec4(2), greaterThan(spans, vec4(60.0))), live);
-    ivec3 per_b = mix(ivec3(0), mix(ivec3(1), ivec3(2), greaterThan(spans_b, vec3(60.0))), live_b);
-    int pieces = max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1);
+    int segments = max((n_6 - 1), 1);
+    int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e144 = i;
-            i = (_e144 + 1);
+            int _e47 = i;
+            i = (_e47 + 1);
         }
         loop_init = false;
-        int _e91 = i;
-        if ((_e91 < pieces)) {
+        int _e29 = i;
+        if ((_e29 < _e19)) {
         } else {
             break;
         }
         {
-            int _e93 = k_2;
-            float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
-            float d0_ = (_e94 * MC_DEG);
-            int _e97 = k_2;
-            float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, (_e97 + 1));
-            float d1_ = ((n_3 > 1) ? (_e100 * MC_DEG) : d0_);
-            int _e106 = k_2;
-            int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
-            int m = ((n_3 > 1) ? _e107 : 1);
-            float fm = float(m);
-            vec4 _e113 = acc;
-            int _e114 = h;
-            int _e118 = h;
-            vec4 _e124 = mc_fast_segment(_e10, th_3, mix(d0_, d1_, (float(_e114) / fm)), mix(d0_, d1_, (float((_e118 + 1)) / fm)), lo_s_1, hi_s_1);
-            acc = (_e113 + (_e124 / vec4(fm)));
-            int _e128 = h;
-            h = (_e128 + 1);
-            int _e131 = k_2;
-            int _e132 = k_2;
-            int _e135 = h;
-            k_2 = ((_e135 >= m) ? (_e132 + 1) : _e131);
-            int _e138 = h;
-            int _e139 = h;
-            h = ((_e139 >= m) ? 0 : _e138);
+            int _e31 = k_4;
+            int _e32 = h_2;
+            vec3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
+            vec4 _e34 = acc;
+            vec4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
+            acc = (_e34 + (_e37 * _e33.z));
+            int _e41 = k_4;
+            int _e42 = h_2;
+            ivec2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
+            k_4 = _e43.x;
+            h_2 = _e43.y;
         }
     }
-    vec4 _e146 = acc;
-    return (_e146 / vec4(float(segments)));
+    vec4 _e49 = acc;
+    return (_e49 / vec4(float(segments)));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
@@ -488,14 +496,14 @@ void main() {
     float brightness = max(_e60, 0.0);
     WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal);
     vec3 v_raw = _e65.v;
-    vec3 n_4 = _e65.n;
-    mat3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    vec3 n_7 = _e65.n;
+    mat3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     vec3 t_4 = _e69[0];
     vec3 b_4 = _e69[1];
-    vec3 _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001 - dot(n_4, v_raw)), 0.0))), n_4);
+    vec3 _e79 = weft_safe_normalize((v_raw + (n_7 * max((0.001 - dot(n_7, v_raw)), 0.0))), n_7);
     vec3 _e80 = weft_main_light_direction();
-    McFrame warp = McFrame(t_4, b_4, n_4);
-    McFrame weft = McFrame(b_4, t_4, n_4);
+    McFrame warp = McFrame(t_4, b_4, n_7);
+    McFrame weft = McFrame(b_4, t_4, n_7);
     {
         {
             {
@@ -516,7 +524,7 @@ void main() {
     }
     vec4 _e109 = s1_;
     vec4 _e110 = s2_;
-    vec3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, dot(n_4, _e80), dot(n_4, _e79));
+    vec3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
     vec3 _e114 = weft_main_light_radiance();
     vec3 direct = (_e113 * _e114);
     float _e118 = microcylinder_mean_fresnel(_e29.eta);
@@ -525,7 +533,7 @@ void main() {
     vec3 amb2_ = (_e46.albedo + vec3(_e123));
     float cov = (a1_2 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
-    vec3 _e137 = weft_sh_irradiance(n_4);
+    vec3 _e137 = weft_sh_irradiance(n_7);
     vec3 ambient = (_e137 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);

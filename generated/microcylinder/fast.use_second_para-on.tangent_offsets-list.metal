@@ -87,7 +87,7 @@ struct McFastNode {
     float v;
     float p;
 };
-struct type_12 {
+struct type_13 {
     metal::float4 inner[2];
 };
 struct McFastSet {
@@ -262,15 +262,15 @@ float mc_offset_at(
     return ((k >= 4) ? b : a)[k & 3];
 }
 
-type_12 mc_normal4_(
+type_13 mc_normal4_(
     metal::float4 t
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
     metal::float4 z = metal::abs(t) * 0.70710677;
-    metal::float4 k_3 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
-    metal::float4 poly = k_3 * (metal::float4(0.2548296) + (k_3 * (metal::float4(-0.28449672) + (k_3 * (metal::float4(1.4214138) + (k_3 * (metal::float4(-1.4531521) + (k_3 * 1.0614054))))))));
+    metal::float4 k_5 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
+    metal::float4 poly = k_5 * (metal::float4(0.2548296) + (k_5 * (metal::float4(-0.28449672) + (k_5 * (metal::float4(1.4214138) + (k_5 * (metal::float4(-1.4531521) + (k_5 * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
-    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+    return type_13 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
 
 metal::float3 mc_cell_means(
@@ -278,7 +278,7 @@ metal::float3 mc_cell_means(
     float inv_gamma
 ) {
     metal::float4 t_2 = xe * inv_gamma;
-    type_12 _e3 = mc_normal4_(t_2);
+    type_13 _e3 = mc_normal4_(t_2);
     metal::float3 dt = t_2.yzw - t_2.xyz;
     metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
     metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
@@ -316,22 +316,65 @@ metal::float3 mc_combine(
     return lit ? (s_2 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
-int mc_fast_pieces(
+int mc_list_piece_count(
     metal::float4 offsets_a,
     metal::float4 offsets_b,
+    int n_3
+) {
+    metal::float4 spans = metal::abs(metal::float4(offsets_a.yzw, offsets_b.x) - offsets_a);
+    metal::float3 spans_b = metal::abs(offsets_b.yzw - offsets_b.xyz);
+    metal::bool4 live = metal::int4(0, 1, 2, 3) < metal::int4(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::bool3 live_b = metal::int3(4, 5, 6) < metal::int3(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
+    metal::int4 per = metal::select(metal::int4(0), metal::select(metal::int4(1), metal::int4(2), spans > metal::float4(60.0)), live);
+    metal::int3 per_b = metal::select(metal::int3(0), metal::select(metal::int3(1), metal::int3(2), spans_b > metal::float3(60.0)), live_b);
+    return metal::max(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(per.x) + as_type<uint>(per.y))) + as_type<uint>(per.z))) + as_type<uint>(per.w))) + as_type<uint>(per_b.x))) + as_type<uint>(per_b.y))) + as_type<uint>(per_b.z)), 1);
+}
+
+int mc_fast_pieces(
+    metal::float4 offsets_a_1,
+    metal::float4 offsets_b_1,
     int k_1
 ) {
-    float _e5 = mc_offset_at(offsets_a, offsets_b, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
-    float _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+    float _e5 = mc_offset_at(offsets_a_1, offsets_b_1, as_type<int>(as_type<uint>(k_1) + as_type<uint>(1)));
+    float _e6 = mc_offset_at(offsets_a_1, offsets_b_1, k_1);
     float span = metal::abs(_e5 - _e6);
     return (span > MC_FAST_SPLIT_DEG) ? 2 : 1;
+}
+
+metal::float3 mc_list_piece(
+    metal::float4 offsets_a_2,
+    metal::float4 offsets_b_2,
+    int n_4,
+    int k_2,
+    int h
+) {
+    float _e5 = mc_offset_at(offsets_a_2, offsets_b_2, k_2);
+    float d0_ = _e5 * MC_DEG;
+    float _e10 = mc_offset_at(offsets_a_2, offsets_b_2, as_type<int>(as_type<uint>(k_2) + as_type<uint>(1)));
+    float d1_ = (n_4 > 1) ? (_e10 * MC_DEG) : d0_;
+    int _e16 = mc_fast_pieces(offsets_a_2, offsets_b_2, k_2);
+    float fm = static_cast<float>((n_4 > 1) ? _e16 : 1);
+    return metal::float3(metal::mix(d0_, d1_, static_cast<float>(h) / fm), metal::mix(d0_, d1_, static_cast<float>(as_type<int>(as_type<uint>(h) + as_type<uint>(1))) / fm), 1.0 / fm);
+}
+
+metal::int2 mc_list_next(
+    metal::float4 offsets_a_3,
+    metal::float4 offsets_b_3,
+    int n_5,
+    int k_3,
+    int h_1
+) {
+    int _e5 = mc_fast_pieces(offsets_a_3, offsets_b_3, k_3);
+    int m = (n_5 > 1) ? _e5 : 1;
+    int next = as_type<int>(as_type<uint>(h_1) + as_type<uint>(1));
+    return (next >= m) ? metal::int2(as_type<int>(as_type<uint>(k_3) + as_type<uint>(1)), 0) : metal::int2(k_3, next);
 }
 
 float mc_u_of_cos(
     float c
 ) {
-    float h_1 = 0.5 - (0.5 * metal::clamp(c, -1.0, 1.0));
-    float x2_ = h_1 * (1.0 + (0.33333334 * h_1));
+    float h_3 = 0.5 - (0.5 * metal::clamp(c, -1.0, 1.0));
+    float x2_ = h_3 * (1.0 + (0.33333334 * h_3));
     return metal::exp(-16.414074 * x2_);
 }
 
@@ -490,70 +533,51 @@ metal::float4 mc_thread_list_fast(
     metal::float3 wi_1,
     metal::float3 wr_1,
     McThread th_3,
-    metal::float4 offsets_a_1,
-    metal::float4 offsets_b_1,
+    metal::float4 offsets_a_4,
+    metal::float4 offsets_b_4,
     int count
 ) {
     metal::float4 acc = metal::float4(0.0);
-    int k_2 = 0;
-    int h = 0;
+    int k_4 = 0;
+    int h_2 = 0;
     int i = 0;
-    int n_3 = metal::clamp(count, 1, MC_MAX_OFFSETS);
+    int n_6 = metal::clamp(count, 1, MC_MAX_OFFSETS);
     McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     float lo_s_1 = metal::atan(_e10.s_lo);
     float hi_s_1 = metal::atan(_e10.s_hi);
-    int segments = metal::max(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)), 1);
-    metal::float4 spans = metal::abs(metal::float4(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1);
-    metal::float3 spans_b = metal::abs(offsets_b_1.yzw - offsets_b_1.xyz);
-    metal::bool4 live = metal::int4(0, 1, 2, 3) < metal::int4(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
-    metal::bool3 live_b = metal::int3(4, 5, 6) < metal::int3(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
-    metal::int4 per = metal::select(metal::int4(0), metal::select(metal::int4(1), metal::int4(2), spans > metal::float4(60.0)), live);
-    metal::int3 per_b = metal::select(metal::int3(0), metal::select(metal::int3(1), metal::int3(2), spans_b > metal::float3(60.0)), live_b);
-    int pieces = metal::max(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(per.x) + as_type<uint>(per.y))) + as_type<uint>(per.z))) + as_type<uint>(per.w))) + as_type<uint>(per_b.x))) + as_type<uint>(per_b.y))) + as_type<uint>(per_b.z)), 1);
+    int segments = metal::max(as_type<int>(as_type<uint>(n_6) - as_type<uint>(1)), 1);
+    int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e144 = i;
-            i = as_type<int>(as_type<uint>(_e144) + as_type<uint>(1));
+            int _e47 = i;
+            i = as_type<int>(as_type<uint>(_e47) + as_type<uint>(1));
         }
         loop_init = false;
-        int _e91 = i;
-        if (_e91 < pieces) {
+        int _e29 = i;
+        if (_e29 < _e19) {
         } else {
             break;
         }
         {
-            int _e93 = k_2;
-            float _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
-            float d0_ = _e94 * MC_DEG;
-            int _e97 = k_2;
-            float _e100 = mc_offset_at(offsets_a_1, offsets_b_1, as_type<int>(as_type<uint>(_e97) + as_type<uint>(1)));
-            float d1_ = (n_3 > 1) ? (_e100 * MC_DEG) : d0_;
-            int _e106 = k_2;
-            int _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
-            int m = (n_3 > 1) ? _e107 : 1;
-            float fm = static_cast<float>(m);
-            metal::float4 _e113 = acc;
-            int _e114 = h;
-            int _e118 = h;
-            metal::float4 _e124 = mc_fast_segment(_e10, th_3, metal::mix(d0_, d1_, static_cast<float>(_e114) / fm), metal::mix(d0_, d1_, static_cast<float>(as_type<int>(as_type<uint>(_e118) + as_type<uint>(1))) / fm), lo_s_1, hi_s_1);
-            acc = _e113 + (_e124 / metal::float4(fm));
-            int _e128 = h;
-            h = as_type<int>(as_type<uint>(_e128) + as_type<uint>(1));
-            int _e131 = k_2;
-            int _e132 = k_2;
-            int _e135 = h;
-            k_2 = (_e135 >= m) ? as_type<int>(as_type<uint>(_e132) + as_type<uint>(1)) : _e131;
-            int _e138 = h;
-            int _e139 = h;
-            h = (_e139 >= m) ? 0 : _e138;
+            int _e31 = k_4;
+            int _e32 = h_2;
+            metal::float3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
+            metal::float4 _e34 = acc;
+            metal::float4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
+            acc = _e34 + (_e37 * _e33.z);
+            int _e41 = k_4;
+            int _e42 = h_2;
+            metal::int2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
+            k_4 = _e43.x;
+            h_2 = _e43.y;
         }
     }
-    metal::float4 _e146 = acc;
-    return _e146 / metal::float4(static_cast<float>(segments));
+    metal::float4 _e49 = acc;
+    return _e49 / metal::float4(static_cast<float>(segments));
 }
 
 McThread microcylinder_thread(
@@ -659,14 +683,14 @@ fragment fs_mainOutput fs_main(
     float brightness = metal::max(_e60, 0.0);
     WeftSurface _e65 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
     metal::float3 v_raw = _e65.v;
-    metal::float3 n_4 = _e65.n;
-    metal::float3x3 _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    metal::float3 n_7 = _e65.n;
+    metal::float3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     metal::float3 t_4 = _e69[0];
     metal::float3 b_4 = _e69[1];
-    metal::float3 _e79 = weft_safe_normalize(v_raw + (n_4 * metal::max(0.001 - metal::dot(n_4, v_raw), 0.0)), n_4);
+    metal::float3 _e79 = weft_safe_normalize(v_raw + (n_7 * metal::max(0.001 - metal::dot(n_7, v_raw), 0.0)), n_7);
     metal::float3 _e80 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_4, b_4, n_4};
-    McFrame weft = McFrame {b_4, t_4, n_4};
+    McFrame warp = McFrame {t_4, b_4, n_7};
+    McFrame weft = McFrame {b_4, t_4, n_7};
     {
         {
             {
@@ -687,7 +711,7 @@ fragment fs_mainOutput fs_main(
     }
     metal::float4 _e109 = s1_;
     metal::float4 _e110 = s2_;
-    metal::float3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, metal::dot(n_4, _e80), metal::dot(n_4, _e79));
+    metal::float3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, metal::dot(n_7, _e80), metal::dot(n_7, _e79));
     metal::float3 _e114 = weft_main_light_radiance(weft_frame);
     metal::float3 direct = _e113 * _e114;
     float _e118 = microcylinder_mean_fresnel(_e29.eta);
@@ -696,7 +720,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 amb2_ = _e46.albedo + metal::float3(_e123);
     float cov = a1_2 + a2_1;
     metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
-    metal::float3 _e137 = weft_sh_irradiance(n_4, weft_frame);
+    metal::float3 _e137 = weft_sh_irradiance(n_7, weft_frame);
     metal::float3 ambient = _e137 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };

@@ -235,8 +235,8 @@ fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
-    let k_3 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k_3 * (vec4(0.2548296f) + (k_3 * (vec4(-0.28449672f) + (k_3 * (vec4(1.4214138f) + (k_3 * (vec4(-1.4531521f) + (k_3 * 1.0614054f)))))))));
+    let k_5 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_5 * (vec4(0.2548296f) + (k_5 * (vec4(-0.28449672f) + (k_5 * (vec4(1.4214138f) + (k_5 * (vec4(-1.4531521f) + (k_5 * 1.0614054f)))))))));
     let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
     return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
 }
@@ -275,16 +275,43 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
     return select(vec3(0f), (s_2 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
-fn mc_fast_pieces(offsets_a: vec4<f32>, offsets_b: vec4<f32>, k_1: i32) -> i32 {
-    let _e5 = mc_offset_at(offsets_a, offsets_b, (k_1 + 1i));
-    let _e6 = mc_offset_at(offsets_a, offsets_b, k_1);
+fn mc_list_piece_count(offsets_a: vec4<f32>, offsets_b: vec4<f32>, n_3: i32) -> i32 {
+    let spans = abs((vec4<f32>(offsets_a.yzw, offsets_b.x) - offsets_a));
+    let spans_b = abs((offsets_b.yzw - offsets_b.xyz));
+    let live = (vec4<i32>(0i, 1i, 2i, 3i) < vec4((n_3 - 1i)));
+    let live_b = (vec3<i32>(4i, 5i, 6i) < vec3((n_3 - 1i)));
+    let per = select(vec4(0i), select(vec4(1i), vec4(2i), (spans > vec4(60f))), live);
+    let per_b = select(vec3(0i), select(vec3(1i), vec3(2i), (spans_b > vec3(60f))), live_b);
+    return max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1i);
+}
+
+fn mc_fast_pieces(offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, k_1: i32) -> i32 {
+    let _e5 = mc_offset_at(offsets_a_1, offsets_b_1, (k_1 + 1i));
+    let _e6 = mc_offset_at(offsets_a_1, offsets_b_1, k_1);
     let span = abs((_e5 - _e6));
     return select(1i, 2i, (span > MC_FAST_SPLIT_DEG));
 }
 
+fn mc_list_piece(offsets_a_2: vec4<f32>, offsets_b_2: vec4<f32>, n_4: i32, k_2: i32, h: i32) -> vec3<f32> {
+    let _e5 = mc_offset_at(offsets_a_2, offsets_b_2, k_2);
+    let d0_ = (_e5 * MC_DEG);
+    let _e10 = mc_offset_at(offsets_a_2, offsets_b_2, (k_2 + 1i));
+    let d1_ = select(d0_, (_e10 * MC_DEG), (n_4 > 1i));
+    let _e16 = mc_fast_pieces(offsets_a_2, offsets_b_2, k_2);
+    let fm = f32(select(1i, _e16, (n_4 > 1i)));
+    return vec3<f32>(mix(d0_, d1_, (f32(h) / fm)), mix(d0_, d1_, (f32((h + 1i)) / fm)), (1f / fm));
+}
+
+fn mc_list_next(offsets_a_3: vec4<f32>, offsets_b_3: vec4<f32>, n_5: i32, k_3: i32, h_1: i32) -> vec2<i32> {
+    let _e5 = mc_fast_pieces(offsets_a_3, offsets_b_3, k_3);
+    let m = select(1i, _e5, (n_5 > 1i));
+    let next = (h_1 + 1i);
+    return select(vec2<i32>(k_3, next), vec2<i32>((k_3 + 1i), 0i), (next >= m));
+}
+
 fn mc_u_of_cos(c: f32) -> f32 {
-    let h_1 = (0.5f - (0.5f * clamp(c, -1f, 1f)));
-    let x2_ = (h_1 * (1f + (0.33333334f * h_1)));
+    let h_3 = (0.5f - (0.5f * clamp(c, -1f, 1f)));
+    let x2_ = (h_3 * (1f + (0.33333334f * h_3)));
     return exp((-16.414074f * x2_));
 }
 
@@ -402,63 +429,44 @@ fn mc_fast_segment(q_2: McFastSet, th_2: McThread, a0_: f32, a1_1: f32, lo_s: f3
     return _e47;
 }
 
-fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_1: vec4<f32>, offsets_b_1: vec4<f32>, count: i32) -> vec4<f32> {
+fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_4: vec4<f32>, offsets_b_4: vec4<f32>, count: i32) -> vec4<f32> {
     var acc: vec4<f32> = vec4(0f);
-    var k_2: i32 = 0i;
-    var h: i32 = 0i;
+    var k_4: i32 = 0i;
+    var h_2: i32 = 0i;
     var i: i32 = 0i;
 
-    let n_3 = clamp(count, 1i, MC_MAX_OFFSETS);
+    let n_6 = clamp(count, 1i, MC_MAX_OFFSETS);
     let _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
     let lo_s_1 = atan(_e10.s_lo);
     let hi_s_1 = atan(_e10.s_hi);
-    let segments = max((n_3 - 1i), 1i);
-    let spans = abs((vec4<f32>(offsets_a_1.yzw, offsets_b_1.x) - offsets_a_1));
-    let spans_b = abs((offsets_b_1.yzw - offsets_b_1.xyz));
-    let live = (vec4<i32>(0i, 1i, 2i, 3i) < vec4((n_3 - 1i)));
-    let live_b = (vec3<i32>(4i, 5i, 6i) < vec3((n_3 - 1i)));
-    let per = select(vec4(0i), select(vec4(1i), vec4(2i), (spans > vec4(60f))), live);
-    let per_b = select(vec3(0i), select(vec3(1i), vec3(2i), (spans_b > vec3(60f))), live_b);
-    let pieces = max(((((((per.x + per.y) + per.z) + per.w) + per_b.x) + per_b.y) + per_b.z), 1i);
+    let segments = max((n_6 - 1i), 1i);
+    let _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     loop {
-        let _e91 = i;
-        if (_e91 < pieces) {
+        let _e29 = i;
+        if (_e29 < _e19) {
         } else {
             break;
         }
         {
-            let _e93 = k_2;
-            let _e94 = mc_offset_at(offsets_a_1, offsets_b_1, _e93);
-            let d0_ = (_e94 * MC_DEG);
-            let _e97 = k_2;
-            let _e100 = mc_offset_at(offsets_a_1, offsets_b_1, (_e97 + 1i));
-            let d1_ = select(d0_, (_e100 * MC_DEG), (n_3 > 1i));
-            let _e106 = k_2;
-            let _e107 = mc_fast_pieces(offsets_a_1, offsets_b_1, _e106);
-            let m = select(1i, _e107, (n_3 > 1i));
-            let fm = f32(m);
-            let _e113 = acc;
-            let _e114 = h;
-            let _e118 = h;
-            let _e124 = mc_fast_segment(_e10, th_3, mix(d0_, d1_, (f32(_e114) / fm)), mix(d0_, d1_, (f32((_e118 + 1i)) / fm)), lo_s_1, hi_s_1);
-            acc = (_e113 + (_e124 / vec4(fm)));
-            let _e128 = h;
-            h = (_e128 + 1i);
-            let _e131 = k_2;
-            let _e132 = k_2;
-            let _e135 = h;
-            k_2 = select(_e131, (_e132 + 1i), (_e135 >= m));
-            let _e138 = h;
-            let _e139 = h;
-            h = select(_e138, 0i, (_e139 >= m));
+            let _e31 = k_4;
+            let _e32 = h_2;
+            let _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
+            let _e34 = acc;
+            let _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
+            acc = (_e34 + (_e37 * _e33.z));
+            let _e41 = k_4;
+            let _e42 = h_2;
+            let _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
+            k_4 = _e43.x;
+            h_2 = _e43.y;
         }
         continuing {
-            let _e144 = i;
-            i = (_e144 + 1i);
+            let _e47 = i;
+            i = (_e47 + 1i);
         }
     }
-    let _e146 = acc;
-    return (_e146 / vec4(f32(segments)));
+    let _e49 = acc;
+    return (_e49 / vec4(f32(segments)));
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
@@ -522,14 +530,14 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let brightness = max(_e60, 0f);
     let _e65 = weft_surface(in_1.world_position, in_1.world_normal);
     let v_raw = _e65.v;
-    let n_4 = _e65.n;
-    let _e69 = weft_tangent_frame(n_4, in_1.world_tangent);
+    let n_7 = _e65.n;
+    let _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     let t_4 = _e69[0];
     let b_4 = _e69[1];
-    let _e79 = weft_safe_normalize((v_raw + (n_4 * max((0.001f - dot(n_4, v_raw)), 0f))), n_4);
+    let _e79 = weft_safe_normalize((v_raw + (n_7 * max((0.001f - dot(n_7, v_raw)), 0f))), n_7);
     let _e80 = weft_main_light_direction();
-    let warp = McFrame(t_4, b_4, n_4);
-    let weft = McFrame(b_4, t_4, n_4);
+    let warp = McFrame(t_4, b_4, n_7);
+    let weft = McFrame(b_4, t_4, n_7);
     {
         {
             {
@@ -550,7 +558,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     }
     let _e109 = s1_;
     let _e110 = s2_;
-    let _e113 = mc_combine(_e109, _e110, a1_2, a2_1, dot(n_4, _e80), dot(n_4, _e79));
+    let _e113 = mc_combine(_e109, _e110, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
     let _e114 = weft_main_light_radiance();
     let direct = (_e113 * _e114);
     let _e118 = microcylinder_mean_fresnel(_e29.eta);
@@ -559,7 +567,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let amb2_ = (_e46.albedo + vec3(_e123));
     let cov = (a1_2 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
-    let _e137 = weft_sh_irradiance(n_4);
+    let _e137 = weft_sh_irradiance(n_7);
     let ambient = (_e137 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
