@@ -108,7 +108,6 @@ constant metal::float4 WEFT_FILM_LOBE_MU_A = metal::float4(1.64821, 2.23783, 1.5
 constant metal::float4 WEFT_FILM_LOBE_MU_B = metal::float4(1.87261, 1.72342, 2.31367, 2.20514);
 constant metal::float4 WEFT_FILM_LOBE_SIGMA_A = metal::float4(0.112563, 0.097781, 0.0710853, 0.142693);
 constant metal::float4 WEFT_FILM_LOBE_SIGMA_B = metal::float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-constant uint WEFT_FILM_ORDERS = 4u;
 constant metal::float3 WEFT_FILM_SENSITIVITY_AT_ZERO = metal::float3(107.41976, 106.97481, 105.7571);
 
 float weft_pow5_(

@@ -89,7 +89,6 @@ const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1
 const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
 const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
 const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
-const WEFT_FILM_ORDERS: u32 = 4u;
 const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
 
 @group(0) @binding(0) 

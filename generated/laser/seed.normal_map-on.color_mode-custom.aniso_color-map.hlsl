@@ -99,7 +99,6 @@ static const float4 WEFT_FILM_LOBE_MU_A = float4(1.64821, 2.23783, 1.51945, 1.95
 static const float4 WEFT_FILM_LOBE_MU_B = float4(1.87261, 1.72342, 2.31367, 2.20514);
 static const float4 WEFT_FILM_LOBE_SIGMA_A = float4(0.112563, 0.097781, 0.0710853, 0.142693);
 static const float4 WEFT_FILM_LOBE_SIGMA_B = float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-static const uint WEFT_FILM_ORDERS = 4u;
 static const float3 WEFT_FILM_SENSITIVITY_AT_ZERO = float3(107.41976, 106.97481, 105.7571);
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }

@@ -83,7 +83,6 @@ const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
 const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
 const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
 const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-const uint WEFT_FILM_ORDERS = 4u;
 const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };

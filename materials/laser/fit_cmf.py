@@ -3,7 +3,7 @@
 
 The reference (lib/thin_film.wgsl, weft_film_spectral) integrates against the
 Wyman-Sloan-Shirley 2013 multi-lobe fit of the CIE 1931 CMFs over 380-780 nm.
-The fast tier (weft_film_sensitivity) needs the same CMFs as sums of Gaussians
+The fast tier (weft_film_orders, weft_film_lobe_orders) needs the same CMFs as sums of Gaussians
 in wavenumber k = 1/lambda (um^-1), whose cosine transforms are closed-form.
 This script fits them (Levenberg-Marquardt on log-amplitudes and log-widths,
 amplitude signs fixed) and prints the WGSL constants: weights a*sigma*sqrt(2 pi),

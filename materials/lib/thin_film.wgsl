@@ -198,41 +198,24 @@ const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821, 2.23783, 1.51945, 1.95
 const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261, 1.72342, 2.31367, 2.20514);
 const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563, 0.097781, 0.0710853, 0.142693);
 const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523, 0.0996288, 0.0384759, 0.109465);
-// Orders of the Airy series the fast form sums (4: the fifth adds under
-// 0.5 CIELAB units except on gold at grazing angles).
-const WEFT_FILM_ORDERS: u32 = 4u;
+// The fast form sums orders 1 to 4 of the Airy series (the fifth adds under
+// 0.5 CIELAB units except on gold at grazing angles): weft_film_orders.
+// Each order's sensitivity S(m OPD) is taken to linear Rec. 709 and divided
+// by its value at OPD = 0 so that - like the reference - a flat spectrum is
+// grey.
 
-// The sensitivity at optical path difference opd (nm) in linear Rec. 709,
-// divided by its value at opd = 0 so that - like the reference - a flat
-// spectrum is grey.
-fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
-    let phase = 2.0 * WEFT_FILM_PI * opd_nm * 1.0e-3;
-    let sa = phase * WEFT_FILM_LOBE_SIGMA_A;
-    let sb = phase * WEFT_FILM_LOBE_SIGMA_B;
-    let ta = WEFT_FILM_LOBE_WEIGHT_A * cos(phase * WEFT_FILM_LOBE_MU_A) * exp(-0.5 * sa * sa);
-    let tb = WEFT_FILM_LOBE_WEIGHT_B * cos(phase * WEFT_FILM_LOBE_MU_B) * exp(-0.5 * sb * sb);
-    return weft_film_lobes_to_rgb(ta, tb);
-}
-
-// The eight lobes' terms (packed as the weights) summed into XYZ, to linear
-// Rec. 709, normalised by the value at opd = 0.
-fn weft_film_lobes_to_rgb(ta: vec4<f32>, tb: vec4<f32>) -> vec3<f32> {
-    let xyz = vec3<f32>(ta.x + ta.y + ta.z, ta.w + tb.x + tb.y, tb.z + tb.w);
-    return (WEFT_XYZ_TO_REC709 * xyz) / (WEFT_XYZ_TO_REC709 * WEFT_FILM_SENSITIVITY_AT_ZERO);
-}
-
-// weft_film_sensitivity's XYZ at opd = 0: the sums of the weights.
+// The sensitivity's XYZ at OPD = 0: the sums of the weights.
 const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976, 106.97481, 105.75710);
 
-// The Airy series' oscillating part, orders 1 to WEFT_FILM_ORDERS (= 4):
-// sum over m of 2 (C_s,m + C_p,m) S(m opd). S(m opd) is the same sum of
-// lobes as weft_film_sensitivity with each lobe's cosine at m x and its
+// The Airy series' oscillating part, orders 1 to 4:
+// sum over m of 2 (C_s,m + C_p,m) S(m opd). S(m opd) is the sum of lobes
+// above with each lobe's cosine at m x and its
 // Gaussian at m sigma, so one cosine and one exponential per lobe serve
 // all four orders: cos(m x) by Chebyshev's recurrence
 // (cos 2x = 2 cos^2 x - 1, cos 3x = 2 cos x cos 2x - cos x, cos 4x =
 // 2 cos^2 2x - 1) and exp(-(m s)^2 / 2) = g^(m^2) by squaring (g^4, g^9 =
-// g^8 g, g^16). The same sum as four weft_film_sensitivity calls, with a
-// quarter of their transcendentals.
+// g^8 g, g^16). The same sum as evaluating S at each order, with a
+// quarter of the transcendentals.
 fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
     let phase = 2.0 * WEFT_FILM_PI * opd_nm * 1.0e-3;
     // C_m = first ratio^m per polarisation, per base channel.
@@ -275,7 +258,7 @@ fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1: vec3<f32>, k2: vec
 }
 
 // Linear Rec. 709 of a unit of X (0), Y (1) or Z (2), divided by the
-// sensitivity's value at opd = 0 (as weft_film_lobes_to_rgb): constants.
+// sensitivity's value at OPD = 0: constants.
 fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
     return WEFT_XYZ_TO_REC709[axis] / (WEFT_XYZ_TO_REC709 * WEFT_FILM_SENSITIVITY_AT_ZERO);
 }
@@ -286,8 +269,7 @@ fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
 // for an index-matched film and are far off at grazing angles); a base
 // channel's phase (0 or pi for real amplitudes) is the sign of r21 r23, so
 // one spectral sensitivity per order serves every channel and both
-// polarisations; orders 1 to WEFT_FILM_ORDERS of the series
-// (weft_film_orders).
+// polarisations; orders 1 to 4 of the series (weft_film_orders).
 fn weft_film_fourier(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0: vec3<f32>) -> vec3<f32> {
     // One layer is two equal ones: the measured function (tests/physics/
     // laser_film.rs, `cargo xtask bench film`) is the laser's fast code.
