@@ -30,81 +30,11 @@ fn gpu() -> Gpu {
 
 // ---------------------------------------------------------------- f64 model
 
-/// The Wyman-Sloan-Shirley 2013 multi-lobe CMF fit, in f64.
-fn cie_xyz(lambda: f64) -> [f64; 3] {
-    let g = |mu: f64, s1: f64, s2: f64| {
-        let t = (lambda - mu) / if lambda < mu { s1 } else { s2 };
-        (-0.5 * t * t).exp()
-    };
-    [
-        1.056 * g(599.8, 37.9, 31.0) + 0.362 * g(442.0, 16.0, 26.7) - 0.065 * g(501.1, 20.4, 26.2),
-        0.821 * g(568.8, 46.9, 40.5) + 0.286 * g(530.9, 16.3, 31.1),
-        1.217 * g(437.0, 11.8, 36.0) + 0.681 * g(459.0, 26.0, 13.8),
-    ]
-}
-
-fn ior_from_f0(f0: f64) -> f64 {
-    let s = f0.clamp(0.0, 0.9999).sqrt();
-    (1.0 + s) / (1.0 - s)
-}
-
-/// Reflectance of the stack air | film | base for one polarisation, from the
-/// complex amplitude r = (r12 + r23 e^{iδ}) / (1 + r12 r23 e^{iδ}).
-fn airy(r12: f64, r23: f64, delta: f64) -> f64 {
-    let (c, s) = (delta.cos(), delta.sin());
-    let (num_re, num_im) = (r12 + r23 * c, r23 * s);
-    let (den_re, den_im) = (1.0 + r12 * r23 * c, r12 * r23 * s);
-    (num_re * num_re + num_im * num_im) / (den_re * den_re + den_im * den_im)
-}
-
-/// Independent spectral reflectance, linear sRGB, white-normalised; channel
-/// c is the film over a base of channel c's IOR.
-fn film_f64(cos1: f64, d: f64, film_ior: f64, base_f0: [f64; 3]) -> [f64; 3] {
-    let n2 = 1.0 + (film_ior.max(1.0) - 1.0) * smoothstep(0.0, 30.0, d);
-    let sin1_sq = 1.0 - cos1 * cos1;
-    let cos2 = (1.0 - sin1_sq / (n2 * n2)).sqrt();
-    let to_rgb = |v: [f64; 3]| {
-        [
-            3.2404542 * v[0] - 1.5371385 * v[1] - 0.4985314 * v[2],
-            -0.9692660 * v[0] + 1.8760108 * v[1] + 0.0415560 * v[2],
-            0.0556434 * v[0] - 0.2040259 * v[1] + 1.0572252 * v[2],
-        ]
-    };
-    std::array::from_fn(|c| {
-        let n3 = ior_from_f0(base_f0[c]);
-        let cos3 = (1.0 - sin1_sq / (n3 * n3)).sqrt();
-        let rs12 = (cos1 - n2 * cos2) / (cos1 + n2 * cos2);
-        let rp12 = (n2 * cos1 - cos2) / (n2 * cos1 + cos2);
-        let rs23 = (n2 * cos2 - n3 * cos3) / (n2 * cos2 + n3 * cos3);
-        let rp23 = (n3 * cos2 - n2 * cos3) / (n3 * cos2 + n2 * cos3);
-        let (mut xyz, mut white) = ([0.0; 3], [0.0; 3]);
-        for i in 0..101 {
-            let lambda = 380.0 + 4.0 * i as f64;
-            let w = if i == 0 || i == 100 { 0.5 } else { 1.0 };
-            let delta = 4.0 * std::f64::consts::PI * n2 * d.max(0.0) * cos2 / lambda;
-            let r = 0.5 * (airy(rs12, rs23, delta) + airy(rp12, rp23, delta));
-            let cmf = cie_xyz(lambda);
-            for k in 0..3 {
-                xyz[k] += w * r * cmf[k];
-                white[k] += w * cmf[k];
-            }
-        }
-        (to_rgb(xyz)[c] / to_rgb(white)[c]).clamp(0.0, 1.0)
-    })
-}
-
-fn smoothstep(a: f64, b: f64, x: f64) -> f64 {
-    let t = ((x - a) / (b - a)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
-}
-
-/// Unpolarised exact Fresnel reflectance of a bare dielectric of IOR n.
-fn fresnel_f64(cos1: f64, n: f64) -> f64 {
-    let cos_t = (1.0 - (1.0 - cos1 * cos1) / (n * n)).sqrt();
-    let rs = (cos1 - n * cos_t) / (cos1 + n * cos_t);
-    let rp = (n * cos1 - cos_t) / (n * cos1 + cos_t);
-    0.5 * (rs * rs + rp * rp)
-}
+// The independent models live in `weft_tests::thin_film` (shared with the
+// glTF iridescence check).
+use weft_tests::thin_film::{
+    cie_xyz_wyman as cie_xyz, film_spectral as film_f64, fresnel_dielectric as fresnel_f64,
+};
 
 fn f64x3(v: [f32; 3]) -> [f64; 3] {
     v.map(f64::from)

@@ -32,7 +32,7 @@ use weft_render::{CubeLevel, EnvironmentMaps, Gpu, Luts, Material, Renderer};
 use weft_tests::repo;
 
 /// No environment light: every mip black, no SH.
-fn black_environment() -> EnvironmentMaps {
+pub(super) fn black_environment() -> EnvironmentMaps {
     let mips: Vec<CubeLevel> = [4u32, 2, 1]
         .iter()
         .map(|&size| CubeLevel {
@@ -47,19 +47,19 @@ fn black_environment() -> EnvironmentMaps {
     }
 }
 
-type V3 = [f64; 3];
+pub(super) type V3 = [f64; 3];
 
-fn dot(a: V3, b: V3) -> f64 {
+pub(super) fn dot(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn normalize(a: V3) -> V3 {
+pub(super) fn normalize(a: V3) -> V3 {
     let l = dot(a, a).sqrt();
     a.map(|x| x / l)
 }
 
 /// A unit direction at polar angle `theta` (degrees) from +Z, azimuth `phi`.
-fn dir(theta: f64, phi: f64) -> V3 {
+pub(super) fn dir(theta: f64, phi: f64) -> V3 {
     let (t, p) = (theta.to_radians(), phi.to_radians());
     [t.sin() * p.cos(), t.sin() * p.sin(), t.cos()]
 }
@@ -126,7 +126,7 @@ fn mapped_material(
 /// Material 0 of a glTF (JSON) mapped by weft's glTF front end onto
 /// `expected` (its tier `tier`), with the mapping's values set on the
 /// material's metadata as a scene sets them.
-fn material_from(
+pub(super) fn material_from(
     generated: &std::path::Path,
     json: &serde_json::Value,
     expected: &str,

@@ -6,6 +6,7 @@
 
 mod fringe_shadow;
 mod gltf_brdf;
+mod gltf_iridescence;
 mod gltf_scenes;
 mod inspector;
 mod outline;

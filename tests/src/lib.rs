@@ -10,6 +10,7 @@
 pub mod docs;
 pub mod schema;
 pub mod shaders;
+pub mod thin_film;
 
 use std::path::{Path, PathBuf};
 
