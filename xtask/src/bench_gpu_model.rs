@@ -150,6 +150,7 @@ fn selection(materials: &[String]) -> Selection {
     Selection {
         materials: Some(only),
         tiers: None,
+        variants: None,
         scenes: false,
     }
 }

@@ -14,6 +14,7 @@ mod bench;
 mod library_build;
 mod preview;
 mod scene_build;
+mod scene_model;
 mod stability;
 
 use bench::{BENCH_EXAMPLES, BenchArgs, bench, print_measurements};
@@ -85,6 +86,12 @@ enum Command {
         /// (generated/reports/gpu-model.json).
         #[arg(long, requires = "scene")]
         tier_costs: Option<PathBuf>,
+        /// With --scene: model what specialising saves on AMD's shader compiler
+        /// (Mesa RADV on its null device; no GPU needed, package mesa-vulkan-drivers),
+        /// for RDNA2 (navi21) and RDNA3 (gfx1100): printed with the funnel and
+        /// recorded in the scene metadata (`funnel.modelled`).
+        #[arg(long, requires = "scene")]
+        gpu_model: bool,
         /// Seconds to wait for another build writing into the same output folder
         /// (they are serialised by a lock file, `.<out>.lock`); 0 fails at once.
         #[arg(long, value_name = "SECONDS", default_value = "120", value_parser = parse_lock_timeout)]
@@ -160,6 +167,10 @@ enum Command {
     /// preview) on 127.0.0.1, rebuilt and pushed to the page on every change; or --export it.
     #[command(after_help = weft_serve::EXAMPLES)]
     Serve(weft_serve::ServeArgs),
+    /// Internal: compiles one GPU family's pipelines for `build --scene --gpu-model`
+    /// (a request on stdin, figures on stdout; weft_gpu_stats::worker).
+    #[command(name = "gpu-stats-worker", hide = true)]
+    GpuStatsWorker,
 }
 
 /// The longest `--lock-timeout`: a day. Longer waits are a mistake, and
@@ -261,21 +272,29 @@ fn main() -> ExitCode {
     }
     match cli.command {
         Command::Serve(args) => weft_serve::command(&args, cli.quiet),
+        Command::GpuStatsWorker => match weft_gpu_stats::worker::serve_stdio() {
+            0 => ExitCode::SUCCESS,
+            _ => ExitCode::FAILURE,
+        },
         Command::Build {
             scene: Some(scene),
             out,
             tier_costs,
             materials,
             lock_timeout,
+            gpu_model,
             ..
         } => {
             let out = out.unwrap_or_else(|| PathBuf::from("generated/scenes"));
             if scene_build::build_scene_command(
-                &scene,
-                &out,
-                materials.as_deref(),
-                tier_costs.as_ref(),
-                lock_timeout,
+                &scene_build::SceneBuild {
+                    scene: &scene,
+                    out: &out,
+                    gltf_materials: materials.as_deref(),
+                    tier_costs: tier_costs.as_ref(),
+                    lock_wait: lock_timeout,
+                    gpu_model,
+                },
                 cli.quiet,
                 cli.color,
             ) {

@@ -7,16 +7,29 @@ use std::time::Duration;
 use weft_compiler::SceneBuildOptions;
 use weft_compiler::ownership::{Input, check_apart};
 
+/// What `weft build --scene` was asked to do.
+pub struct SceneBuild<'a> {
+    pub scene: &'a Path,
+    /// The folder that receives `<scene>/`.
+    pub out: &'a Path,
+    /// A glTF scene's materials root (`--materials`).
+    pub gltf_materials: Option<&'a Path>,
+    pub tier_costs: Option<&'a PathBuf>,
+    pub lock_wait: Duration,
+    /// Model the specialisation's GPU saving (`--gpu-model`).
+    pub gpu_model: bool,
+}
+
 /// Builds the scene and writes it into `out` (which then holds `<scene>/`).
-pub fn build_scene_command(
-    scene: &Path,
-    out: &Path,
-    gltf_materials: Option<&Path>,
-    tier_costs: Option<&PathBuf>,
-    lock_wait: Duration,
-    quiet: bool,
-    color: Color,
-) -> bool {
+pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool {
+    let SceneBuild {
+        scene,
+        out,
+        gltf_materials,
+        tier_costs,
+        lock_wait,
+        gpu_model,
+    } = *args;
     let started = std::time::Instant::now();
     let chooser = match weft_auto::LavapipeTierChooser::new(tier_costs.map(PathBuf::as_path)) {
         Ok(c) => c,
@@ -47,6 +60,32 @@ pub fn build_scene_command(
         .into_iter()
         .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes)))
         .collect();
+    if gpu_model {
+        let families: Vec<String> = weft_gpu_stats::DEFAULT_FAMILIES
+            .iter()
+            .map(|f| f.to_string())
+            .collect();
+        match crate::scene_model::model_saving(
+            &result.metadata,
+            &files,
+            &result.materials_root,
+            &families,
+        ) {
+            Ok(modelled) => {
+                if let Some(f) = &mut result.metadata.funnel {
+                    f.modelled = modelled;
+                }
+                files.insert(
+                    format!("{}.scene.json", result.name),
+                    weft_compiler::scene::metadata_json(&result.metadata),
+                );
+            }
+            Err(e) => {
+                eprintln!("error: modelling the GPU cost (--gpu-model): {e}\nnothing was written");
+                return false;
+            }
+        }
+    }
     // Self-contained: the baked LUTs the shaders bind ride along at the
     // path their bindings name (`luts/…`), taken from ./generated when it
     // has them, else baked. Texture files and meshes are in `files` already.
@@ -129,5 +168,13 @@ pub fn describe_funnel(f: &weft_meta::scene::SceneFunnel) -> String {
         f.shaders,
         f.shader_bytes as f64 / 1024.0
     ));
-    format!("funnel: {}", steps.join(" → "))
+    if f.modelled.is_empty() {
+        format!(
+            "funnel: {} (the GPU cost saving: add --gpu-model)",
+            steps.join(" → ")
+        )
+    } else {
+        steps.push(crate::scene_model::describe(&f.modelled));
+        format!("funnel: {}", steps.join(" → "))
+    }
 }

@@ -19,6 +19,10 @@ pub struct Selection {
     /// Only variants of these tiers (none: every tier).
     #[serde(default)]
     pub tiers: Option<Vec<String>>,
+    /// Only these variants, as (material, variant id) (none: every variant):
+    /// a scene's generic variants, when only its saving is modelled.
+    #[serde(default)]
+    pub variants: Option<Vec<(String, String)>>,
     /// Also the scene shaders in `scenes/*/*.scene.json`.
     pub scenes: bool,
 }
@@ -95,6 +99,10 @@ fn material_jobs(
             .tiers
             .as_ref()
             .is_some_and(|t| !t.contains(&variant.tier))
+            || sel
+                .variants
+                .as_ref()
+                .is_some_and(|v| !v.iter().any(|(m, id)| m == name && *id == variant.id))
         {
             continue;
         }

@@ -10,6 +10,7 @@
 mod compile;
 mod device;
 pub mod error;
+pub mod funnel;
 pub mod icd;
 pub mod isa;
 pub mod jobs;

@@ -31,25 +31,9 @@ pub fn summarize(
             .filter(|c| *c > 0.0);
         let entries = fragment_entries(generated, f)?;
         let pipeline = |material: &str, variant: &str, pass: &str| {
-            f.pipelines.iter().find(|p| {
-                p.source.kind == "material"
-                    && p.source.material == material
-                    && p.source.variant == variant
-                    && p.source.precision == "f32"
-                    && p.pass == pass
-            })
+            material_pipeline(f, material, variant, pass)
         };
-        let cost_of = |p: &PipelineStats| -> Option<FragmentCost> {
-            let entry = entries.get(&(p.source.material.clone(), p.pass.clone()))?;
-            fragment_cost(generated, p, entry, None)
-        };
-        // The generic variant drawing a scene instance: its loops as many
-        // times as the instance's shader shows (model::model_at).
-        let generic_at = |g: &PipelineStats, scene: &PipelineStats| -> Option<FragmentCost> {
-            let entry = entries.get(&(g.source.material.clone(), g.pass.clone()))?;
-            let instance = loop_report::source_loops(generated, scene, entry);
-            fragment_cost(generated, g, entry, instance.as_deref())
-        };
+        let cost_of = |p: &PipelineStats| cost_of(generated, &entries, p);
         let mut tiers = Vec::new();
         for m in &models {
             let meta = read_meta(generated, &m.material)?;
@@ -101,23 +85,7 @@ pub fn summarize(
                 });
             }
         }
-        let mut scene_shaders = Vec::new();
-        for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
-            let s = &p.source;
-            let generic = pipeline(&s.material, &s.variant, &p.pass).and_then(|g| generic_at(g, p));
-            let (Some(specialised), Some(generic)) = (cost_of(p), generic) else {
-                continue;
-            };
-            scene_shaders.push(SceneShaderCost {
-                scene: s.scene.clone().unwrap_or_default(),
-                shader: s.shader.clone().unwrap_or_default(),
-                material: s.material.clone(),
-                variant: s.variant.clone(),
-                pass: p.pass.clone(),
-                specialised,
-                generic,
-            });
-        }
+        let scene_shaders = scene_costs(generated, f, &entries);
         out.push(FamilySummary {
             family: f.family.clone(),
             device_name: f.device_name.clone(),
@@ -131,6 +99,73 @@ pub fn summarize(
         command: command.into(),
         families: out,
     })
+}
+
+/// Each scene shader × pass of a family's figures beside the generic
+/// variant it specialises (fragment stage; the generic variant's loops run
+/// as many times as the scene shader's show). A pair whose generic variant
+/// was not compiled is left out.
+pub fn scene_shader_costs(generated: &Path, f: &FamilyStats) -> Result<Vec<SceneShaderCost>> {
+    Ok(scene_costs(generated, f, &fragment_entries(generated, f)?))
+}
+
+fn scene_costs(
+    generated: &Path,
+    f: &FamilyStats,
+    entries: &BTreeMap<(String, String), String>,
+) -> Vec<SceneShaderCost> {
+    // The generic variant drawing a scene instance: its loops as many
+    // times as the instance's shader shows (model::model_at).
+    let generic_at = |g: &PipelineStats, scene: &PipelineStats| -> Option<FragmentCost> {
+        let entry = entries.get(&(g.source.material.clone(), g.pass.clone()))?;
+        let instance = loop_report::source_loops(generated, scene, entry);
+        fragment_cost(generated, g, entry, instance.as_deref())
+    };
+    let mut scene_shaders = Vec::new();
+    for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
+        let s = &p.source;
+        let generic =
+            material_pipeline(f, &s.material, &s.variant, &p.pass).and_then(|g| generic_at(g, p));
+        let (Some(specialised), Some(generic)) = (cost_of(generated, entries, p), generic) else {
+            continue;
+        };
+        scene_shaders.push(SceneShaderCost {
+            scene: s.scene.clone().unwrap_or_default(),
+            shader: s.shader.clone().unwrap_or_default(),
+            material: s.material.clone(),
+            variant: s.variant.clone(),
+            pass: p.pass.clone(),
+            specialised,
+            generic,
+        });
+    }
+    scene_shaders
+}
+
+/// A library variant's f32 pipeline for one pass.
+fn material_pipeline<'a>(
+    f: &'a FamilyStats,
+    material: &str,
+    variant: &str,
+    pass: &str,
+) -> Option<&'a PipelineStats> {
+    f.pipelines.iter().find(|p| {
+        p.source.kind == "material"
+            && p.source.material == material
+            && p.source.variant == variant
+            && p.source.precision == "f32"
+            && p.pass == pass
+    })
+}
+
+/// A pipeline's fragment figures at its own loop counts.
+fn cost_of(
+    generated: &Path,
+    entries: &BTreeMap<(String, String), String>,
+    p: &PipelineStats,
+) -> Option<FragmentCost> {
+    let entry = entries.get(&(p.source.material.clone(), p.pass.clone()))?;
+    fragment_cost(generated, p, entry, None)
 }
 
 /// A pipeline's fragment figures; None without the stage or its disassembly.

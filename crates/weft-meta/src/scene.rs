@@ -29,7 +29,10 @@ pub const SCENE_SCHEMA_VERSION: u32 = 3;
 /// of meshes the scene folder carries (from glTF) with `file` and `radius`
 /// in place of `path`; an instance's `transform.model` may be any affine
 /// matrix (translation, rotation and scale are then read back from it).
-pub const SCENE_SCHEMA_MINOR: u32 = 5;
+/// 5: `funnel`. 6: `funnel.modelled`, the GPU model's cost of the
+/// instances against their generic variants (`weft build --scene …
+/// --gpu-model`).
+pub const SCENE_SCHEMA_MINOR: u32 = 6;
 
 /// The main light's direction (from the surface towards the light, world
 /// space; length ≈ 1, normalise it) when a scene manifest has no `[light]`:
@@ -279,8 +282,9 @@ pub struct SceneInstance {
 
 /// The build's funnel: how much of the source the scene keeps. Generic
 /// variants against unique shaders is what specialisation saves in count;
-/// the per-instance cost saving is in `generated/reports/scenes.md`
-/// (`cargo xtask bench gpu-model`).
+/// `modelled` what it saves in GPU cost, when the build was asked to model
+/// it (`weft build --scene … --gpu-model`; per instance in
+/// `generated/reports/scenes.md` for the shipped scenes).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneFunnel {
@@ -302,6 +306,36 @@ pub struct SceneFunnel {
     pub shaders: usize,
     /// Bytes of the shader files (every language) the scene folder carries.
     pub shader_bytes: u64,
+    /// Per GPU family, the instances' fragment cost with their specialised
+    /// shaders against their generic variants, from AMD's shader compiler
+    /// on Mesa RADV's null device (docs/performance.md); empty unless the
+    /// build was asked (`--gpu-model`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub modelled: Vec<FunnelModel>,
+}
+
+/// What specialising saves on one GPU family, summed over the scene's
+/// instances (material variants' stand-ins included; each instance counts
+/// once, whatever its size on screen) and the passes each draws, fragment
+/// stage.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(JsonSchema))]
+pub struct FunnelModel {
+    /// The `RADV_FORCE_FAMILY` value (`navi21`: RDNA2, `gfx1100`: RDNA3).
+    pub family: String,
+    /// The compiler that produced the figures (RADV's driver string, e.g.
+    /// `Mesa 22.3.6`): figures move with it.
+    pub driver: String,
+    /// Loop-aware executed cost (docs/performance.md) with the generic variants.
+    pub generic_cost: f64,
+    /// The same with the scene's specialised shaders.
+    pub specialised_cost: f64,
+    /// Static instructions with the generic variants.
+    pub generic_instructions: u64,
+    /// Static instructions with the specialised shaders.
+    pub specialised_instructions: u64,
+    /// 100 × (1 − specialised / generic) of the executed cost, rounded to 0.1.
+    pub cost_saving_percent: f64,
 }
 
 /// A texture to bind for a material texture binding.

@@ -21,6 +21,7 @@ mod record;
 pub mod tiers;
 
 pub use build::{MAX_SCENE_SHADERS, SceneBuildOptions, SceneOutput, build_resolved_scene};
+pub use record::metadata_json;
 pub use tiers::{AutoTierDecision, AutoTierRequest, TierChooser};
 
 use std::collections::BTreeMap;

@@ -305,11 +305,9 @@ pub(super) fn assemble(
         limits: scene_limits(&scene),
         funnel: Some(funnel),
     };
-    let mut json = serde_json::to_string_pretty(&metadata).expect("scene metadata serialises");
-    json.push('\n');
     files.insert(
         format!("{0}/{0}.scene.json", manifest.name),
-        json.into_bytes(),
+        metadata_json(&metadata),
     );
     super::SceneOutput {
         name: manifest.name.clone(),
@@ -319,6 +317,14 @@ pub(super) fn assemble(
         warnings: None,
         materials_root: manifest.materials_root.clone(),
     }
+}
+
+/// `<scene>.scene.json`'s bytes: pretty JSON and a final newline (also what
+/// `weft build --scene --gpu-model` writes again once the funnel's cost is in).
+pub fn metadata_json(metadata: &SceneMetadata) -> Vec<u8> {
+    let mut json = serde_json::to_string_pretty(metadata).expect("scene metadata serialises");
+    json.push('\n');
+    json.into_bytes()
 }
 
 pub(super) fn keyword_names(m: &Material, inst: &ResolvedInstance) -> BTreeMap<String, String> {
@@ -443,6 +449,7 @@ fn funnel(
         generic_variants: distinct.len(),
         shaders: shaders.len(),
         shader_bytes,
+        modelled: Vec::new(),
     }
 }
 

@@ -19,6 +19,7 @@ fn compile() -> Vec<FamilyStats> {
                     .to_vec(),
             ),
             tiers: Some(["fast", "reference"].map(String::from).to_vec()),
+            variants: None,
             scenes: false,
         },
         families: vec!["navi21".into()],

@@ -179,6 +179,7 @@ fn the_same_spirv_compiled_again_gives_identical_figures() {
     let sel = Selection {
         materials: Some(vec!["hair".into(), "satin".into(), "standard".into()]),
         tiers: None,
+        variants: None,
         scenes: true,
     };
     let again = weft_gpu_stats::collect(&options(sel)).unwrap_or_else(|e| panic!("{e}"));
