@@ -27,6 +27,7 @@ const EXPECTED: &[(&str, &[&str])] = &[
     ("bad_instance_name", &["bad-name"]),
     ("bad_light", &["out-of-range"]),
     ("bad_name", &["bad-name"]),
+    ("bad_sampler", &["unknown-key", "unknown-value"]),
     ("bad_scale", &["out-of-range"]),
     (
         "broken_material",

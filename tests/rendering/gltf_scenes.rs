@@ -619,3 +619,61 @@ fn alpha_modes_sides_and_emission_map_onto_standard_and_the_render_state() {
         assert!(p.color_targets[0].blend.is_some());
     }
 }
+
+/// glTF samplers reach the engine as the instance shader's
+/// `bindings[].sampler` (the state every engine creates its samplers from):
+/// the lace's sampler 1 (CLAMP_TO_EDGE × MIRRORED_REPEAT, magFilter NEAREST,
+/// minFilter LINEAR: no mip levels) on `material_sampler`; the frame, whose
+/// maps ask for trilinear repeat (stated or left out), keeps the material's.
+#[test]
+fn gltf_samplers_set_the_instance_shaders_sampler_state() {
+    use weft_meta::engine::{MATERIAL_GROUP, MATERIAL_SAMPLER_BINDING};
+    use weft_meta::{AddressMode, FilterMode};
+    let (meta, _) = cutouts();
+    let material_sampler = |instance: &str| {
+        let inst = meta.instances.iter().find(|i| i.name == instance).unwrap();
+        let shader = meta.shaders.iter().find(|s| s.id == inst.shader).unwrap();
+        shader
+            .shader
+            .bindings
+            .iter()
+            .find(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_SAMPLER_BINDING)
+            .and_then(|b| b.sampler.clone())
+            .unwrap_or_else(|| panic!("{instance}: no material sampler"))
+    };
+    let lace = material_sampler("lace_panel");
+    assert_eq!(
+        (
+            lace.address_mode_u,
+            lace.address_mode_v,
+            lace.mag_filter,
+            lace.min_filter,
+            lace.lod_max_clamp
+        ),
+        (
+            AddressMode::ClampToEdge,
+            AddressMode::MirrorRepeat,
+            FilterMode::Nearest,
+            FilterMode::Linear,
+            0.0
+        )
+    );
+    let frame = material_sampler("textured_frame");
+    assert_eq!(
+        (
+            frame.address_mode_u,
+            frame.address_mode_v,
+            frame.mag_filter,
+            frame.min_filter,
+            frame.mipmap_filter
+        ),
+        (
+            AddressMode::Repeat,
+            AddressMode::Repeat,
+            FilterMode::Linear,
+            FilterMode::Linear,
+            FilterMode::Linear
+        )
+    );
+    assert!(frame.lod_max_clamp >= 32.0);
+}

@@ -316,7 +316,7 @@ pub fn showroom() -> Vec<u8> {
 
 /// `tests/gltf/cutouts.glb`: glTF's alpha modes, sides and emission on core
 /// materials — a lace panel (MASK, doubleSided, turned so that its back
-/// face shows), a glowing bulb (emissive × KHR_materials_emissive_strength)
+/// face shows, its texture read through its own sampler), a glowing bulb (emissive × KHR_materials_emissive_strength)
 /// and a glass block (BLEND) — framed by weft (no camera).
 pub fn cutouts() -> Vec<u8> {
     let materials = json!([
@@ -392,8 +392,12 @@ pub fn cutouts() -> Vec<u8> {
             { "name": "frame", "primitives": [frame] },
         ],
         "materials": materials,
-        "textures": [ { "source": 0 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3, "sampler": 0 }, { "source": 4 } ],
-        "samplers": [ { "magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497 } ],
+        // The frame's maps: trilinear repeat, stated (sampler 0) or left
+        // out; the lace's: clamped across, mirrored along, nearest texels
+        // when magnified, no mip levels (sampler 1).
+        "textures": [ { "source": 0, "sampler": 1 }, { "source": 1, "sampler": 0 }, { "source": 2, "sampler": 0 }, { "source": 3, "sampler": 0 }, { "source": 4 } ],
+        "samplers": [ { "magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497 },
+                      { "magFilter": 9728, "minFilter": 9729, "wrapS": 33071, "wrapT": 33648 } ],
         "images": images,
         "buffers": [ { "byteLength": packed.bin.len() } ],
         "bufferViews": packed.views,

@@ -159,6 +159,8 @@ mod tests {
         check(&KeywordMode::ALL, KeywordMode::name);
         check(&ParamKind::ALL, ParamKind::name);
         check(&TextureDefault::ALL, TextureDefault::name);
+        check(&FilterMode::ALL, FilterMode::name);
+        check(&AddressMode::ALL, AddressMode::name);
     }
 
     #[test]

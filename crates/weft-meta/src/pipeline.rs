@@ -337,6 +337,11 @@ pub enum FilterMode {
     Linear,
 }
 
+value_names!(FilterMode {
+    Nearest => "nearest",
+    Linear => "linear",
+});
+
 /// What sampling outside [0, 1] reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(JsonSchema))]
@@ -349,6 +354,12 @@ pub enum AddressMode {
     /// The texture tiles, every other tile mirrored.
     MirrorRepeat,
 }
+
+value_names!(AddressMode {
+    ClampToEdge => "clamp_to_edge",
+    Repeat => "repeat",
+    MirrorRepeat => "mirror_repeat",
+});
 
 /// A sampler binding's layout entry and the sampler object to create for it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

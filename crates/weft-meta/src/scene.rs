@@ -222,7 +222,9 @@ impl SceneMetadata {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(JsonSchema))]
 pub struct SceneShader {
-    /// `<material>.<first 12 hex digits of the WGSL's SHA-256>`; also the file stem.
+    /// `<material>.<first 12 hex digits of the WGSL's SHA-256>` (taken over
+    /// the WGSL and the instance's `sampler` state when it sets one); also
+    /// the file stem.
     pub id: String,
     /// Name of the material the shader was built from.
     pub material: String,

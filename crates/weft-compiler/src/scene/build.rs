@@ -173,8 +173,8 @@ pub const MAX_SCENE_SHADERS: usize = 256;
 /// different keys that fold to the same code).
 fn specialisation_key(inst: &ResolvedInstance, tier: usize, values: &InstanceValues) -> String {
     format!(
-        "{}|{tier}|{:?}|{:?}",
-        inst.material, inst.keywords, values.fold
+        "{}|{tier}|{:?}|{:?}|{:?}",
+        inst.material, inst.keywords, values.fold, inst.overrides.sampler
     )
 }
 
@@ -213,14 +213,20 @@ fn build_instance(
         _ => None,
     };
     // The id is the content hash, known only after emitting: emit under a
-    // placeholder stem and rename.
+    // placeholder stem and rename. A sampler override is part of what the
+    // shader entry describes (its binding's state), so it is hashed too:
+    // instances that fold to one WGSL but sample differently get two entries.
     let wgsl = crate::compile::backends::emit_wgsl(&module, &info)?;
-    let id = format!("{}.{}", m.name, &sha256_hex(wgsl.as_bytes())[..12]);
+    let mut hashed = wgsl.clone().into_bytes();
+    if let Some(s) = &inst.overrides.sampler {
+        hashed.extend(format!("\0sampler {s:?}").bytes());
+    }
+    let id = format!("{}.{}", m.name, &sha256_hex(&hashed)[..12]);
     let keywords = keyword_names(m, inst);
     let textures = material_textures(m, prelude, &m.tiers.values[tier], |k| {
         keywords.get(k).map(String::as_str)
     });
-    let compiled = emit_shader(
+    let mut compiled = emit_shader(
         m,
         (&module, &info),
         fallback.as_ref().map(|(f, i)| (f, i)),
@@ -229,6 +235,18 @@ fn build_instance(
         &textures,
         &[Vec::new()],
     )?;
+    // The instance's sampler state where the shader reads its maps (a shader
+    // that folded every map away has no such binding left to set).
+    if let Some(over) = &inst.overrides.sampler {
+        for b in compiled.shader.bindings.iter_mut().filter(|b| {
+            b.group == weft_meta::engine::MATERIAL_GROUP
+                && b.binding == weft_meta::engine::MATERIAL_SAMPLER_BINDING
+        }) {
+            if let Some(s) = &mut b.sampler {
+                over.apply(s);
+            }
+        }
+    }
     Ok(compiled)
 }
 

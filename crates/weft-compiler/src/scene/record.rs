@@ -458,7 +458,7 @@ fn funnel(
 /// off, an opaque pass blended without depth writes in the transparent queue.
 fn overridden(
     p: &weft_front::model::Pass,
-    o: weft_front::scene::model::PassOverrides,
+    o: weft_front::scene::model::InstanceOverrides,
 ) -> weft_front::model::Pass {
     let mut p = p.clone();
     if o.double_sided && p.cull == weft_meta::CullMode::Back {

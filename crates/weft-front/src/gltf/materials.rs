@@ -62,6 +62,9 @@ pub struct MaterialMapping {
     pub double_sided: bool,
     /// glTF `alphaMode: BLEND`: the instance's passes blend (`blend = "alpha"`).
     pub blend: bool,
+    /// The glTF samplers of the maps bound, as the instance's `sampler = { … }`
+    /// (None: the material's trilinear repeat).
+    pub sampler: Option<Literal>,
 }
 
 /// Linear → sRGB-encoded (IEC 61966-2-1), for weft's sRGB-edited colours.
@@ -524,6 +527,7 @@ fn map_extras(
         rule: "extras.weft",
         double_sided: false,
         blend: false,
+        sampler: None,
     })
 }
 

@@ -653,6 +653,9 @@ fn instance_table(
     if mapping.blend {
         let _ = writeln!(out, "blend = \"alpha\"");
     }
+    if let Some(sampler) = &mapping.sampler {
+        let _ = writeln!(out, "sampler = {sampler}");
+    }
     if let (Some(v), Some(replaced)) = (&d.variant, replaced) {
         let _ = writeln!(
             out,
@@ -696,9 +699,11 @@ fn layer(mut base: MaterialMapping, o: &MaterialMapping) -> MaterialMapping {
     if !o.material.is_empty() && o.material != base.material {
         let mut out = o.clone();
         out.gltf_name = base.gltf_name;
-        // The render state is the glTF material's, whatever weft draws.
+        // The render state is the glTF material's, whatever weft draws; its
+        // maps (and their sampler) are the override's.
         out.double_sided = base.double_sided;
         out.blend = base.blend;
+        out.sampler = None;
         out.rule = "[gltf.materials]";
         return out;
     }

@@ -80,6 +80,7 @@ fn overrides(gltf: &Table, text: &str, cx: &mut Cx) -> Overrides {
             losses: Vec::new(),
             double_sided: false,
             blend: false,
+            sampler: None,
             rule: "[gltf.materials]",
         };
         out.insert(name.to_string(), mapping);

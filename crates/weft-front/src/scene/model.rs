@@ -202,19 +202,57 @@ pub struct InstanceDecl {
     /// `KHR_materials_variants`), not drawn otherwise.
     pub variant: Option<Spanned<InstanceVariant>>,
     /// The instance's render-state overrides (glTF `doubleSided`, `alphaMode`).
-    pub overrides: PassOverrides,
+    pub overrides: InstanceOverrides,
 }
 
-/// What an instance changes in its material's passes' render state
-/// (docs/scenes.md, `double_sided` and `blend`).
+/// What an instance changes in its material's render state (docs/scenes.md,
+/// `double_sided`, `blend` and `sampler`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct PassOverrides {
+pub struct InstanceOverrides {
     /// Passes that cull back faces draw both sides (the material shades a
     /// back face with its flipped normal).
     pub double_sided: bool,
     /// Opaque passes blend so, without depth writes, in the transparent
     /// queue (3000) when they were below it.
     pub blend: Option<weft_meta::BlendMode>,
+    /// The state of the sampler the material reads its maps through.
+    pub sampler: Option<SamplerOverride>,
+}
+
+/// `sampler = { … }`: the sampler a material reads its maps through
+/// (`material_sampler`, trilinear and repeating) set otherwise for one
+/// instance — glTF's samplers (docs/gltf.md, "Textures"). Fields left out
+/// keep the material's.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SamplerOverride {
+    pub address_mode_u: Option<weft_meta::AddressMode>,
+    pub address_mode_v: Option<weft_meta::AddressMode>,
+    pub mag_filter: Option<weft_meta::FilterMode>,
+    pub min_filter: Option<weft_meta::FilterMode>,
+    pub mipmap_filter: Option<weft_meta::FilterMode>,
+    /// `false`: only the full-resolution level is read (`lod_max_clamp` 0;
+    /// glTF's minFilter NEAREST or LINEAR).
+    pub mipmaps: Option<bool>,
+}
+
+impl SamplerOverride {
+    /// `sampler` with the fields this override sets.
+    pub fn apply(&self, sampler: &mut weft_meta::SamplerBinding) {
+        fn set<T: Copy>(field: &mut T, value: Option<T>) {
+            if let Some(v) = value {
+                *field = v;
+            }
+        }
+        set(&mut sampler.address_mode_u, self.address_mode_u);
+        set(&mut sampler.address_mode_v, self.address_mode_v);
+        set(&mut sampler.mag_filter, self.mag_filter);
+        set(&mut sampler.min_filter, self.min_filter);
+        set(&mut sampler.mipmap_filter, self.mipmap_filter);
+        if self.mipmaps == Some(false) {
+            sampler.lod_min_clamp = 0.0;
+            sampler.lod_max_clamp = 0.0;
+        }
+    }
 }
 
 /// A material variant's stand-in for another instance.
@@ -304,7 +342,7 @@ pub struct ResolvedInstance {
     /// Drawn only in place of another instance, for a material variant.
     pub variant: Option<InstanceVariant>,
     /// Render-state overrides of the material's passes.
-    pub overrides: PassOverrides,
+    pub overrides: InstanceOverrides,
     /// The `[[instances]]` table, for diagnostics the compiler raises.
     pub span: Span,
     pub tier_span: Span,

@@ -54,6 +54,16 @@ pub const INSTANCE_KEYS: &[&str] = &[
     "variant",
     "double_sided",
     "blend",
+    "sampler",
+];
+/// Keys of an instance's `sampler = { … }` (the state of `material_sampler`).
+pub const SAMPLER_KEYS: &[&str] = &[
+    "address_mode_u",
+    "address_mode_v",
+    "mag_filter",
+    "min_filter",
+    "mipmap_filter",
+    "mipmaps",
 ];
 /// Keys of an instance's `variant = { name = "…", replaces = "…" }`.
 pub const VARIANT_KEYS: &[&str] = &["name", "replaces"];

@@ -153,20 +153,16 @@ pub(super) fn map_textures(
             ));
         }
     }
-    transform_losses(file, &used, tiling, &mut out.losses);
-    map_emissive_texture(file, &json, gltf_ref, tiling, out);
+    transform_losses(&used, tiling, &mut out.losses);
+    let emissive = map_emissive_texture(&json, gltf_ref, tiling, out);
+    used.extend(emissive.as_ref());
+    map_sampler(file, &used, out);
     extension_texture_losses(&json, &mut out.losses);
 }
 
 /// What the maps' texture references lose: rotation, a transform other
-/// than the base map's (every map is read with its tiling), another UV set,
-/// a sampler other than trilinear repeat.
-fn transform_losses(
-    file: &GltfFile,
-    used: &[&TextureRef],
-    tiling: Option<[f64; 4]>,
-    losses: &mut Vec<String>,
-) {
+/// than the base map's (every map is read with its tiling), another UV set.
+fn transform_losses(used: &[&TextureRef], tiling: Option<[f64; 4]>, losses: &mut Vec<String>) {
     for t in used {
         if t.rotation != 0.0 {
             losses.push(format!(
@@ -187,20 +183,18 @@ fn transform_losses(
                 t.key, t.tex_coord
             ));
         }
-        sampler_losses(file, t, losses);
     }
 }
 
 /// glTF's emissive texture → standard's `emissive_map` (glTF multiplies the
 /// texture by emissiveFactor, default black: a texture without a factor
-/// emits nothing).
+/// emits nothing). Returns the texture when it is bound.
 fn map_emissive_texture(
-    file: &GltfFile,
     json: &Value,
     gltf_ref: &str,
     tiling: Option<[f64; 4]>,
     out: &mut MaterialMapping,
-) {
+) -> Option<TextureRef> {
     let material = out.material.clone();
     let emits = json
         .get("emissiveFactor")
@@ -208,25 +202,24 @@ fn map_emissive_texture(
         .is_some_and(|f| f.iter().any(|x| x.as_f64().unwrap_or(0.0) > 0.0));
     // glTF multiplies the texture by emissiveFactor (default black): a
     // texture without a factor emits nothing.
-    if let Some(t) = texture_ref(json, "emissiveTexture").filter(|_| emits) {
-        if material == "standard" {
-            out.params.push((
-                "emissive_map".into(),
-                image_value(gltf_ref, &format!("texture = {}", t.index), None),
-            ));
-            if t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
-                out.losses.push(
-                    "emissiveTexture's KHR_texture_transform (the material's maps share the base colour texture's)"
-                        .into(),
-                );
-            }
-            sampler_losses(file, &t, &mut out.losses);
-        } else {
-            out.losses.push(format!(
-                "emissiveTexture ({material} does not emit; standard does)"
-            ));
-        }
+    let t = texture_ref(json, "emissiveTexture").filter(|_| emits)?;
+    if material != "standard" {
+        out.losses.push(format!(
+            "emissiveTexture ({material} does not emit; standard does)"
+        ));
+        return None;
     }
+    out.params.push((
+        "emissive_map".into(),
+        image_value(gltf_ref, &format!("texture = {}", t.index), None),
+    ));
+    if t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
+        out.losses.push(
+            "emissiveTexture's KHR_texture_transform (the material's maps share the base colour texture's)"
+                .into(),
+        );
+    }
+    Some(t)
 }
 
 /// Textures of extensions whose factors are mapped (or not at all): named as
@@ -262,34 +255,162 @@ fn extension_texture_losses(json: &Value, losses: &mut Vec<String>) {
     }
 }
 
-/// weft's material sampler is trilinear and repeats: a glTF sampler that
-/// asks otherwise is a loss.
-fn sampler_losses(file: &GltfFile, t: &TextureRef, losses: &mut Vec<String>) {
-    use gltf::texture::{MagFilter, MinFilter, WrappingMode};
-    let Some(texture) = file.document.textures().nth(t.index) else {
+/// The glTF samplers of the maps bound → the instance's `sampler` (the state
+/// of `material_sampler`, through which a weft material reads every map).
+/// Maps that ask for different samplers get the first one's (the base
+/// colour texture's when there is one): a loss, named.
+fn map_sampler(file: &GltfFile, used: &[&TextureRef], out: &mut MaterialMapping) {
+    let asked: Vec<(&TextureRef, Option<usize>, Option<Literal>)> = used
+        .iter()
+        .map(|t| {
+            let sampler = file
+                .document
+                .textures()
+                .nth(t.index)
+                .map(|texture| texture.sampler());
+            let index = sampler.as_ref().and_then(|s| s.index());
+            (*t, index, sampler.as_ref().and_then(sampler_literal))
+        })
+        .collect();
+    let Some((_, _, first)) = asked.first() else {
         return;
     };
-    let sampler = texture.sampler();
-    let Some(i) = sampler.index() else { return };
-    let mut asks = Vec::new();
-    for (axis, mode) in [("wrapS", sampler.wrap_s()), ("wrapT", sampler.wrap_t())] {
-        if mode != WrappingMode::Repeat {
-            asks.push(format!("{axis} {mode:?}"));
-        }
+    out.sampler = first.clone();
+    let differing: Vec<String> = asked
+        .iter()
+        .filter(|(_, _, l)| l != first)
+        .map(|(t, i, _)| match i {
+            Some(i) => format!("{} (sampler {i})", t.key),
+            None => format!("{} (the default sampler)", t.key),
+        })
+        .collect();
+    if !differing.is_empty() {
+        out.losses.push(format!(
+            "{}'s sampler differs from {}'s (weft reads a material's maps through one sampler: {}'s)",
+            differing.join(", "),
+            asked[0].0.key,
+            asked[0].0.key
+        ));
+    }
+}
+
+/// A glTF sampler as the fields of weft's `sampler = { … }` it changes
+/// (None: trilinear and repeating, the material's own).
+fn sampler_literal(sampler: &gltf::texture::Sampler) -> Option<Literal> {
+    use gltf::texture::{MagFilter, MinFilter, WrappingMode};
+    let mut fields = Vec::new();
+    for (key, mode) in [
+        ("address_mode_u", sampler.wrap_s()),
+        ("address_mode_v", sampler.wrap_t()),
+    ] {
+        let name = match mode {
+            WrappingMode::Repeat => continue,
+            WrappingMode::ClampToEdge => "clamp_to_edge",
+            WrappingMode::MirroredRepeat => "mirror_repeat",
+        };
+        fields.push(format!("{key} = \"{name}\""));
     }
     if sampler.mag_filter() == Some(MagFilter::Nearest) {
-        asks.push("magFilter NEAREST".into());
+        fields.push("mag_filter = \"nearest\"".into());
     }
-    if let Some(min) = sampler.min_filter()
-        && min != MinFilter::LinearMipmapLinear
-    {
-        asks.push(format!("minFilter {min:?}"));
+    // glTF's minFilter: the texel filter, the filter between mip levels,
+    // and whether mip levels are read at all.
+    let (min_nearest, mip_nearest, mipmaps) = match sampler.min_filter() {
+        None | Some(MinFilter::LinearMipmapLinear) => (false, false, true),
+        Some(MinFilter::Nearest) => (true, false, false),
+        Some(MinFilter::Linear) => (false, false, false),
+        Some(MinFilter::NearestMipmapNearest) => (true, true, true),
+        Some(MinFilter::LinearMipmapNearest) => (false, true, true),
+        Some(MinFilter::NearestMipmapLinear) => (true, false, true),
+    };
+    if min_nearest {
+        fields.push("min_filter = \"nearest\"".into());
     }
-    let loss = format!(
-        "sampler {i}'s {} (weft's material sampler is trilinear and repeats)",
-        asks.join(", ")
-    );
-    if !asks.is_empty() && !losses.contains(&loss) {
-        losses.push(loss);
+    if mip_nearest {
+        fields.push("mipmap_filter = \"nearest\"".into());
+    }
+    if !mipmaps {
+        fields.push("mipmaps = false".into());
+    }
+    (!fields.is_empty()).then(|| format!("{{ {} }}", fields.join(", ")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Material 0 of a glTF whose textures 0 and 1 use `samplers`' entries
+    /// as `texture_samplers` says, mapped.
+    fn mapped(samplers: Value, texture_samplers: [Option<u64>; 2]) -> MaterialMapping {
+        let textures: Vec<Value> = texture_samplers
+            .iter()
+            .map(|s| match s {
+                Some(i) => serde_json::json!({ "source": 0, "sampler": i }),
+                None => serde_json::json!({ "source": 0 }),
+            })
+            .collect();
+        let json = serde_json::json!({
+            "asset": { "version": "2.0" },
+            "images": [ { "uri": "a.png" } ],
+            "samplers": samplers,
+            "textures": textures,
+            "materials": [ {
+                "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 },
+                    "metallicRoughnessTexture": { "index": 1 } } } ]
+        });
+        let mut warnings = Vec::new();
+        let file = GltfFile::from_bytes(
+            std::path::Path::new("t.gltf"),
+            None,
+            serde_json::to_vec(&json).unwrap(),
+            &mut warnings,
+        )
+        .unwrap();
+        super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+    }
+
+    #[test]
+    fn a_gltf_sampler_becomes_the_instances_sampler() {
+        // CLAMP_TO_EDGE, MIRRORED_REPEAT, NEAREST, LINEAR (no mip levels).
+        let samplers = serde_json::json!([
+            { "wrapS": 33071, "wrapT": 33648, "magFilter": 9728, "minFilter": 9729 }
+        ]);
+        let m = mapped(samplers, [Some(0), Some(0)]);
+        assert_eq!(
+            m.sampler.as_deref(),
+            Some(
+                "{ address_mode_u = \"clamp_to_edge\", address_mode_v = \"mirror_repeat\", \
+                 mag_filter = \"nearest\", mipmaps = false }"
+            )
+        );
+        assert!(m.losses.is_empty(), "{:?}", m.losses);
+        // Trilinear repeat, stated or left out, is the material's own.
+        let trilinear = serde_json::json!([
+            { "wrapS": 10497, "wrapT": 10497, "magFilter": 9729, "minFilter": 9987 }
+        ]);
+        let m = mapped(trilinear, [Some(0), None]);
+        assert_eq!(m.sampler, None);
+        assert!(m.losses.is_empty(), "{:?}", m.losses);
+    }
+
+    #[test]
+    fn maps_with_different_samplers_take_the_base_colours_and_say_so() {
+        let samplers = serde_json::json!([
+            { "minFilter": 9984 },
+            { "wrapS": 33071 }
+        ]);
+        let m = mapped(samplers, [Some(0), Some(1)]);
+        assert_eq!(
+            m.sampler.as_deref(),
+            Some("{ min_filter = \"nearest\", mipmap_filter = \"nearest\" }")
+        );
+        assert_eq!(
+            m.losses,
+            [
+                "pbrMetallicRoughness/metallicRoughnessTexture (sampler 1)'s sampler differs from \
+              pbrMetallicRoughness/baseColorTexture's (weft reads a material's maps through one \
+              sampler: pbrMetallicRoughness/baseColorTexture's)"
+            ]
+        );
     }
 }

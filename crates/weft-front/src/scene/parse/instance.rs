@@ -104,7 +104,7 @@ pub(super) fn parse_instance<'a, 'i>(item: &'a Value<'i>, cx: &mut Cx) -> Parsed
 }
 
 /// `double_sided = true` and `blend = "alpha"` (any blend mode but opaque).
-fn parse_overrides(t: &Table, cx: &mut Cx) -> PassOverrides {
+fn parse_overrides(t: &Table, cx: &mut Cx) -> InstanceOverrides {
     let double_sided = t.boolean("double_sided", cx).unwrap_or(false);
     let blend = t.string("blend", cx).and_then(|name| {
         let modes: Vec<&str> = weft_meta::BlendMode::ALL
@@ -126,10 +126,67 @@ fn parse_overrides(t: &Table, cx: &mut Cx) -> PassOverrides {
         }
         found
     });
-    PassOverrides {
+    InstanceOverrides {
         double_sided,
         blend,
+        sampler: parse_sampler(t, cx),
     }
+}
+
+/// `sampler = { address_mode_u = "clamp_to_edge", mag_filter = "nearest",
+/// mipmaps = false, … }`.
+fn parse_sampler(t: &Table, cx: &mut Cx) -> Option<SamplerOverride> {
+    let v = t.get("sampler")?;
+    let table = Table::new(v, "`sampler`", cx)?;
+    table.check_keys(SAMPLER_KEYS, cx);
+    fn pick<T: Copy>(
+        table: &Table,
+        key: &str,
+        all: &[T],
+        name: fn(T) -> &'static str,
+        cx: &mut Cx,
+    ) -> Option<T> {
+        let value = table.string(key, cx)?;
+        let found = all.iter().copied().find(|x| name(*x) == value);
+        if found.is_none() {
+            let names: Vec<&str> = all.iter().map(|x| name(*x)).collect();
+            cx.error_with_note(
+                "unknown-value",
+                format!("`{key} = \"{value}\"` is not a value of `sampler.{key}`"),
+                table.span_of(key),
+                "not one of the values",
+                suggestion_listing(&value, &names, "values"),
+            );
+        }
+        found
+    }
+    use weft_meta::{AddressMode, FilterMode};
+    Some(SamplerOverride {
+        address_mode_u: pick(
+            &table,
+            "address_mode_u",
+            &AddressMode::ALL,
+            AddressMode::name,
+            cx,
+        ),
+        address_mode_v: pick(
+            &table,
+            "address_mode_v",
+            &AddressMode::ALL,
+            AddressMode::name,
+            cx,
+        ),
+        mag_filter: pick(&table, "mag_filter", &FilterMode::ALL, FilterMode::name, cx),
+        min_filter: pick(&table, "min_filter", &FilterMode::ALL, FilterMode::name, cx),
+        mipmap_filter: pick(
+            &table,
+            "mipmap_filter",
+            &FilterMode::ALL,
+            FilterMode::name,
+            cx,
+        ),
+        mipmaps: table.boolean("mipmaps", cx),
+    })
 }
 
 /// `tier`, with `error_budget` and `screen_size` for `auto` (and only then).
