@@ -120,6 +120,10 @@ struct SceneArgs {
     /// folder (its values set as parameters) instead of the specialised shaders.
     #[arg(long, value_name = "GENERATED", requires = "scene_source")]
     library: Option<PathBuf>,
+    /// With a scene: draw it as material variant NAME shows it (glTF
+    /// KHR_materials_variants): each instance the variant replaces drawn by its stand-in.
+    #[arg(long, value_name = "NAME", requires = "scene_source")]
+    material_variant: Option<String>,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -365,7 +369,10 @@ fn preview_scene(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), St
             Luts::load_dir(&dir).map_err(|e| e.to_string())?
         }
     };
-    let scene = SceneFile::load(&scene_json).map_err(|e| e.to_string())?;
+    let mut scene = SceneFile::load(&scene_json).map_err(|e| e.to_string())?;
+    if let Some(variant) = &args.scene_mode.material_variant {
+        scene.metadata = scene.metadata.showing_variant(variant)?;
+    }
     let shaders = match &args.scene_mode.library {
         Some(generated) => SceneShaders::Library(generated.clone()),
         None => SceneShaders::Specialised,
@@ -377,8 +384,12 @@ fn preview_scene(args: &PreviewArgs, quiet: bool, color: Color) -> Result<(), St
     if !quiet {
         let meta = &scene.metadata;
         println!(
-            "rendered scene {} ({} instance(s), {} {} shader(s), {:?}, {}x{}) on {adapter} in {:.2}s -> {}{}",
+            "rendered scene {}{} ({} instance(s), {} {} shader(s), {:?}, {}x{}) on {adapter} in {:.2}s -> {}{}",
             meta.name,
+            args.scene_mode
+                .material_variant
+                .as_ref()
+                .map_or_else(String::new, |v| format!(" as variant `{v}` shows it")),
             meta.instances.len(),
             meta.shaders.len(),
             if args.scene_mode.library.is_some() {

@@ -208,6 +208,34 @@ impl SceneMetadata {
             .chain(self.variants.values().flat_map(|v| v.values()))
     }
 
+    /// The scene as drawn while material variant `name` is shown: each
+    /// instance the variant replaces swapped, in place, for its stand-in
+    /// (`variants`). An unknown name is an error listing the variants.
+    pub fn showing_variant(&self, name: &str) -> Result<SceneMetadata, String> {
+        let Some(stand_ins) = self.variants.get(name) else {
+            let known: Vec<&str> = self.variants.keys().map(String::as_str).collect();
+            return Err(if known.is_empty() {
+                format!(
+                    "scene `{}` has no material variants (glTF KHR_materials_variants)",
+                    self.name
+                )
+            } else {
+                format!(
+                    "scene `{}` has no material variant `{name}`; its variants: {}",
+                    self.name,
+                    known.join(", ")
+                )
+            });
+        };
+        let mut out = self.clone();
+        for inst in &mut out.instances {
+            if let Some(stand_in) = stand_ins.get(&inst.name) {
+                *inst = stand_in.clone();
+            }
+        }
+        Ok(out)
+    }
+
     /// The light the scene is drawn with: `light`, completed with the
     /// defaults where a file older than schema 3.3 left them out.
     pub fn light_used(&self) -> SceneLight {

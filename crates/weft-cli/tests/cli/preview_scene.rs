@@ -196,3 +196,71 @@ fn previews_a_material_on_a_gltf_mesh() {
         stderr(&o)
     );
 }
+
+/// `--material-variant`: the glTF showroom as its "linen cushions" variant
+/// shows it — the two cushions drawn by their stand-ins (another material),
+/// everything else as without it; an unknown variant is an error that
+/// lists the scene's variants.
+#[test]
+fn previews_a_material_variant() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let o = weft(&[
+        "build",
+        "--scene",
+        "scenes/showroom.scene.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let draw = |variant: Option<&str>, png: &Path| {
+        let mut args = vec![
+            "preview",
+            "--scene-dir",
+            out.to_str().unwrap(),
+            "-o",
+            png.to_str().unwrap(),
+            "--width",
+            "160",
+            "--height",
+            "100",
+        ];
+        if let Some(v) = variant {
+            args.extend(["--material-variant", v]);
+        }
+        weft(&args)
+    };
+    let (plain, linen) = (dir.path().join("plain.png"), dir.path().join("linen.png"));
+    let o = draw(None, &plain);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = draw(Some("linen cushions"), &linen);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("as variant `linen cushions`"));
+    // The pictures differ where the cushions are, and only a small part.
+    let pixels = |p: &Path| {
+        let mut d = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(p).unwrap()))
+            .read_info()
+            .unwrap();
+        let mut buf = vec![0; d.output_buffer_size().unwrap()];
+        d.next_frame(&mut buf).unwrap();
+        buf
+    };
+    let (a, b) = (pixels(&plain), pixels(&linen));
+    let changed = a
+        .chunks(4)
+        .zip(b.chunks(4))
+        .filter(|(x, y)| x.iter().zip(*y).any(|(p, q)| p.abs_diff(*q) > 8))
+        .count();
+    let total = a.len() / 4;
+    assert!(
+        changed > 0 && changed < total / 10,
+        "{changed} of {total} pixels changed"
+    );
+    let o = draw(Some("silk"), &dir.path().join("x.png"));
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("no material variant `silk`; its variants: linen cushions"),
+        "{}",
+        stderr(&o)
+    );
+}
