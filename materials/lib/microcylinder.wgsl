@@ -6,7 +6,7 @@
 // ACM TOG 32(2):14 (seed 000; research notes sec. 1).
 //
 // PURE functions: every input is an argument; nothing here reads `material`,
-// `weft_frame` or any binding, so tests/physics/microcylinder.rs evaluates exactly
+// `weft_frame` or any binding, so tests/physics/microcylinder/ evaluates exactly
 // these functions in a compute shader and compares them with an f64 model.
 // Needs WEFT_PI (engine interface) and weft_f_dielectric / weft_pow5 (brdf.wgsl).
 //
@@ -34,7 +34,7 @@
 //   L_r = L_i * (a1 S_1 + a2 S_2) / Q,   Q = a1 P_1 + a2 P_2 + (1 - a1 - a2)(n.w_i)
 // i.e. mc_combine returns the BRDF times n.w_i. Q depends on both directions
 // through P, but its gap term only on w_i: the model is NOT reciprocal
-// (measured in tests/physics/microcylinder.rs, documented in the material README).
+// (measured in tests/physics/microcylinder/, documented in the material README).
 //
 // Tiers:
 //   reference: angles with atan2 (well conditioned near +-pi/2 and 0),
@@ -632,7 +632,7 @@ fn mc_thread_curve_low(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
 //     arc length by 2-point Gauss-Legendre on each half (exact for a
 //     straight slope, < 1e-5 relative for the default arch).
 // mc_thread_list_fast / mc_thread_curve_fast keep their signatures
-// (tests/physics/microcylinder.rs calls them).
+// (tests/physics/microcylinder/ calls them).
 
 // Offset-list pieces (shared with low): segments beyond MC_FAST_SPLIT_DEG
 // are integrated as two halves.
