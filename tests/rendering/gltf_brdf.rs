@@ -49,6 +49,33 @@ pub(super) fn black_environment() -> EnvironmentMaps {
 
 pub(super) type V3 = [f64; 3];
 
+/// A renderer for the flat probe: lavapipe, the committed LUTs, no
+/// environment light.
+pub(super) fn flat_probe_renderer(generated: &std::path::Path) -> Renderer {
+    let luts = Luts::load_dir(generated).unwrap();
+    let gpu = Gpu::new().unwrap_or_else(|e| {
+        panic!("the flat-probe check needs a Vulkan adapter (install mesa-vulkan-drivers for lavapipe): {e}")
+    });
+    Renderer::new(gpu, &black_environment(), &luts).unwrap()
+}
+
+/// One flat tile (normal +Z, tangent +X) per (view, light) pair, unit
+/// light radiance, one pixel each.
+pub(super) fn flat_probe(geometry: &[(V3, V3)]) -> Probe {
+    let cases: Vec<GeometricCase> = geometry
+        .iter()
+        .enumerate()
+        .map(|(i, (v, l))| GeometricCase {
+            name: format!("case {i}"),
+            normal: [0.0, 0.0, 1.0],
+            tangent: [1.0, 0.0, 0.0, 1.0],
+            view: v.map(|x| x as f32),
+            light: l.map(|x| x as f32),
+        })
+        .collect();
+    Probe::new(cases, [1.0; 3], 1, 16)
+}
+
 pub(super) fn dot(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
@@ -167,11 +194,7 @@ pub(super) fn material_from(
 fn a_core_pbr_gltf_renders_the_gltf_specifications_brdf() {
     let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
-    let luts = Luts::load_dir(&generated).unwrap();
-    let gpu = Gpu::new().unwrap_or_else(|e| {
-        panic!("the flat-probe check needs a Vulkan adapter (install mesa-vulkan-drivers for lavapipe): {e}")
-    });
-    let mut renderer = Renderer::new(gpu, &black_environment(), &luts).unwrap();
+    let mut renderer = flat_probe_renderer(&generated);
     let n: V3 = [0.0, 0.0, 1.0];
     let mut geometry = Vec::new();
     for tv in [0.0, 30.0, 60.0, 80.0] {
@@ -181,18 +204,7 @@ fn a_core_pbr_gltf_renders_the_gltf_specifications_brdf() {
             }
         }
     }
-    let cases: Vec<GeometricCase> = geometry
-        .iter()
-        .enumerate()
-        .map(|(i, (v, l))| GeometricCase {
-            name: format!("case {i}"),
-            normal: [0.0, 0.0, 1.0],
-            tangent: [1.0, 0.0, 0.0, 1.0],
-            view: v.map(|x| x as f32),
-            light: l.map(|x| x as f32),
-        })
-        .collect();
-    let probe = Probe::new(cases, [1.0; 3], 1, 16);
+    let probe = flat_probe(&geometry);
     let base: V3 = [0.8, 0.3, 0.1];
     println!(
         "| metallic | roughness | worst relative vs sample renderer (height-correlated) | vs specification text (separable) |"
@@ -355,11 +367,7 @@ fn sheen_albedo(mu: f64, sheen_roughness: f64) -> f64 {
 fn a_sheen_gltf_renders_the_sample_renderers_sheen() {
     let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
-    let luts = Luts::load_dir(&generated).unwrap();
-    let gpu = Gpu::new().unwrap_or_else(|e| {
-        panic!("the flat-probe check needs a Vulkan adapter (install mesa-vulkan-drivers for lavapipe): {e}")
-    });
-    let mut renderer = Renderer::new(gpu, &black_environment(), &luts).unwrap();
+    let mut renderer = flat_probe_renderer(&generated);
     let n: V3 = [0.0, 0.0, 1.0];
     let mut geometry = Vec::new();
     for tv in [0.0, 30.0, 60.0, 75.0] {
@@ -369,18 +377,7 @@ fn a_sheen_gltf_renders_the_sample_renderers_sheen() {
             }
         }
     }
-    let cases: Vec<GeometricCase> = geometry
-        .iter()
-        .enumerate()
-        .map(|(i, (v, l))| GeometricCase {
-            name: format!("case {i}"),
-            normal: [0.0, 0.0, 1.0],
-            tangent: [1.0, 0.0, 0.0, 1.0],
-            view: v.map(|x| x as f32),
-            light: l.map(|x| x as f32),
-        })
-        .collect();
-    let probe = Probe::new(cases, [1.0; 3], 1, 16);
+    let probe = flat_probe(&geometry);
     let sheen: V3 = [0.55, 0.22, 0.3];
     let mut failures = Vec::new();
     println!(

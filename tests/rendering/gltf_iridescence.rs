@@ -21,11 +21,9 @@
 //! D·V·(n·l), checked to f32 rounding by `gltf_brdf` (metals), so what is
 //! compared is the film's reflectance F itself, as CIEDE2000 between colours.
 
-use super::gltf_brdf::{V3, black_environment, dir, dot, material_from, normalize};
+use super::gltf_brdf::{V3, dir, dot, flat_probe, flat_probe_renderer, material_from, normalize};
 use std::f64::consts::PI;
 use weft_golden::film::{delta_e2000, lab};
-use weft_render::probe::{GeometricCase, Probe};
-use weft_render::{Gpu, Luts, Renderer};
 use weft_tests::repo;
 use weft_tests::thin_film::{film_belcour_barla, film_gltf_notes, film_spectral};
 
@@ -96,11 +94,7 @@ fn mean_max(e: &[f64]) -> (f64, f64) {
 fn an_iridescence_gltf_renders_belcour_and_barlas_film() {
     let _gpu = weft_tests::gpu_serial();
     let generated = repo().join("generated");
-    let luts = Luts::load_dir(&generated).unwrap();
-    let gpu = Gpu::new().unwrap_or_else(|e| {
-        panic!("the flat-probe check needs a Vulkan adapter (install mesa-vulkan-drivers for lavapipe): {e}")
-    });
-    let mut renderer = Renderer::new(gpu, &black_environment(), &luts).unwrap();
+    let mut renderer = flat_probe_renderer(&generated);
     let n: V3 = [0.0, 0.0, 1.0];
     // Mirror pairs (h = n: v·h = n·v, the film's angle swept 0–80°) and
     // pairs off the mirror direction (v·h ≠ n·v), light opposite the view.
@@ -113,18 +107,7 @@ fn an_iridescence_gltf_renders_belcour_and_barlas_film() {
     for (tv, tl) in [(60.0, 80.0), (80.0, 60.0), (40.0, 70.0), (70.0, 40.0)] {
         geometry.push((dir(tv, 0.0), dir(tl, 180.0)));
     }
-    let cases: Vec<GeometricCase> = geometry
-        .iter()
-        .enumerate()
-        .map(|(i, (v, l))| GeometricCase {
-            name: format!("case {i}"),
-            normal: [0.0, 0.0, 1.0],
-            tangent: [1.0, 0.0, 0.0, 1.0],
-            view: v.map(|x| x as f32),
-            light: l.map(|x| x as f32),
-        })
-        .collect();
-    let probe = Probe::new(cases, [1.0; 3], 1, 16);
+    let probe = flat_probe(&geometry);
     println!(
         "| film IOR | thickness nm | base | drawn by | ΔE2000 mean / max vs the spectral Airy film (Wyman's CMFs, v·h) | vs Belcour & Barla (their sensitivity fit, v·h) | vs the glTF notes at v·h | vs the glTF notes at n·v (the sample renderer) |"
     );

@@ -108,6 +108,36 @@ impl<'a, 'i> Table<'a, 'i> {
         expect_string(v, &format!("`{key}` of {}", self.what), cx)
     }
 
+    /// The value of `key` among a metadata enum's values (`ALL`, spelled by
+    /// `name`); an unknown value is an `unknown-value` error with a hint.
+    pub fn one_of<T: Copy>(
+        &self,
+        key: &str,
+        options: &[T],
+        name: fn(T) -> &'static str,
+        cx: &mut Cx,
+    ) -> Option<T> {
+        let s = self.string(key, cx)?;
+        match options.iter().find(|v| name(**v) == s) {
+            Some(v) => Some(*v),
+            None => {
+                let names: Vec<&str> = options.iter().map(|v| name(*v)).collect();
+                let hint = crate::diag::did_you_mean(&s, names.iter().copied()).map_or_else(
+                    || format!("expected one of: {}", names.join(", ")),
+                    |x| format!("did you mean `{x}`?"),
+                );
+                cx.error_with_note(
+                    "unknown-value",
+                    format!("unknown `{key}` value `{s}` in {}", self.what),
+                    self.span_of(key),
+                    "unknown",
+                    hint,
+                );
+                None
+            }
+        }
+    }
+
     pub fn number(&self, key: &str, cx: &mut Cx) -> Option<f64> {
         let v = self.get(key)?;
         expect_number(v, &format!("`{key}` of {}", self.what), cx)

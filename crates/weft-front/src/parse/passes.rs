@@ -29,35 +29,6 @@ pub(super) fn default_pass(file: usize, span: Span) -> Pass {
     }
 }
 
-/// The value of `key` among a metadata enum's values (`ALL`, spelled by `name`).
-fn pick<T: Copy>(
-    t: &Table,
-    key: &str,
-    options: &[T],
-    name: fn(T) -> &'static str,
-    cx: &mut Cx,
-) -> Option<T> {
-    let s = t.string(key, cx)?;
-    match options.iter().find(|v| name(**v) == s) {
-        Some(v) => Some(*v),
-        None => {
-            let names: Vec<&str> = options.iter().map(|v| name(*v)).collect();
-            let hint = crate::diag::did_you_mean(&s, names.iter().copied()).map_or_else(
-                || format!("expected one of: {}", names.join(", ")),
-                |x| format!("did you mean `{x}`?"),
-            );
-            cx.error_with_note(
-                "unknown-value",
-                format!("unknown `{key}` value `{s}` in {}", t.what),
-                t.span_of(key),
-                "unknown",
-                hint,
-            );
-            None
-        }
-    }
-}
-
 /// A `[[pass]]` table (or a shared pass file's `[pass]`: `keys` differ).
 pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> Option<Pass> {
     let t = Table::new(v, what, cx)?;
@@ -68,17 +39,17 @@ pub(super) fn parse_pass(v: &Value, keys: &[&str], what: &str, cx: &mut Cx) -> O
     pass.fragment = t.string("fragment", cx).unwrap_or(pass.fragment);
     pass.vertex_span = t.span_of("vertex");
     pass.fragment_span = t.span_of("fragment");
-    if let Some(b) = pick(&t, "blend", &BlendMode::ALL, BlendMode::name, cx) {
+    if let Some(b) = t.one_of("blend", &BlendMode::ALL, BlendMode::name, cx) {
         pass.blend = b;
         if b != BlendMode::Opaque {
             pass.depth_write = false;
             pass.queue = 3000;
         }
     }
-    if let Some(c) = pick(&t, "cull", &CullMode::ALL, CullMode::name, cx) {
+    if let Some(c) = t.one_of("cull", &CullMode::ALL, CullMode::name, cx) {
         pass.cull = c;
     }
-    if let Some(d) = pick(&t, "depth_test", &DepthTest::ALL, DepthTest::name, cx) {
+    if let Some(d) = t.one_of("depth_test", &DepthTest::ALL, DepthTest::name, cx) {
         pass.depth_test = d;
     }
     if let Some(s) = t.get("stencil") {
@@ -143,12 +114,13 @@ fn parse_stencil(v: &Value, cx: &mut Cx) -> Option<StencilRenderState> {
         None => default,
     };
     let op = |key: &str, cx: &mut Cx| {
-        pick(&t, key, &StencilOperation::ALL, StencilOperation::name, cx)
+        t.one_of(key, &StencilOperation::ALL, StencilOperation::name, cx)
             .unwrap_or(StencilOperation::Keep)
     };
     Some(StencilRenderState {
         reference: byte("reference", 0, cx),
-        compare: pick(&t, "compare", &DepthTest::ALL, DepthTest::name, cx)
+        compare: t
+            .one_of("compare", &DepthTest::ALL, DepthTest::name, cx)
             .unwrap_or(DepthTest::Always),
         pass_op: op("pass_op", cx),
         fail_op: op("fail_op", cx),

@@ -136,55 +136,18 @@ fn parse_overrides(t: &Table, cx: &mut Cx) -> InstanceOverrides {
 /// `sampler = { address_mode_u = "clamp_to_edge", mag_filter = "nearest",
 /// mipmaps = false, … }`.
 fn parse_sampler(t: &Table, cx: &mut Cx) -> Option<SamplerOverride> {
+    use weft_meta::{AddressMode, FilterMode};
     let v = t.get("sampler")?;
     let table = Table::new(v, "`sampler`", cx)?;
     table.check_keys(SAMPLER_KEYS, cx);
-    fn pick<T: Copy>(
-        table: &Table,
-        key: &str,
-        all: &[T],
-        name: fn(T) -> &'static str,
-        cx: &mut Cx,
-    ) -> Option<T> {
-        let value = table.string(key, cx)?;
-        let found = all.iter().copied().find(|x| name(*x) == value);
-        if found.is_none() {
-            let names: Vec<&str> = all.iter().map(|x| name(*x)).collect();
-            cx.error_with_note(
-                "unknown-value",
-                format!("`{key} = \"{value}\"` is not a value of `sampler.{key}`"),
-                table.span_of(key),
-                "not one of the values",
-                suggestion_listing(&value, &names, "values"),
-            );
-        }
-        found
-    }
-    use weft_meta::{AddressMode, FilterMode};
+    let address = |key, cx: &mut Cx| table.one_of(key, &AddressMode::ALL, AddressMode::name, cx);
+    let filter = |key, cx: &mut Cx| table.one_of(key, &FilterMode::ALL, FilterMode::name, cx);
     Some(SamplerOverride {
-        address_mode_u: pick(
-            &table,
-            "address_mode_u",
-            &AddressMode::ALL,
-            AddressMode::name,
-            cx,
-        ),
-        address_mode_v: pick(
-            &table,
-            "address_mode_v",
-            &AddressMode::ALL,
-            AddressMode::name,
-            cx,
-        ),
-        mag_filter: pick(&table, "mag_filter", &FilterMode::ALL, FilterMode::name, cx),
-        min_filter: pick(&table, "min_filter", &FilterMode::ALL, FilterMode::name, cx),
-        mipmap_filter: pick(
-            &table,
-            "mipmap_filter",
-            &FilterMode::ALL,
-            FilterMode::name,
-            cx,
-        ),
+        address_mode_u: address("address_mode_u", cx),
+        address_mode_v: address("address_mode_v", cx),
+        mag_filter: filter("mag_filter", cx),
+        min_filter: filter("min_filter", cx),
+        mipmap_filter: filter("mipmap_filter", cx),
         mipmaps: table.boolean("mipmaps", cx),
     })
 }
