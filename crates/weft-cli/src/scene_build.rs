@@ -88,7 +88,7 @@ pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool
     }
     // Self-contained: the baked LUTs the shaders bind ride along at the
     // path their bindings name (`luts/…`), taken from ./generated when it
-    // has them, else baked. Texture files and meshes are in `files` already.
+    // has them, else baked. Texture files are in `files` already.
     let mut library = std::collections::BTreeMap::new();
     let generated = Path::new("generated");
     weft_compiler::library::add_library_files(
@@ -100,6 +100,24 @@ pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool
             .into_iter()
             .filter(|(path, _)| path.starts_with("luts/")),
     );
+    // And the built-in meshes the instances draw, at the path their
+    // `meshes` entries name (`meshes/<name>.mesh`): an engine reads a path
+    // in the scene folder first (docs/scenes.md), and a scene built here has
+    // no library above it. glTF meshes are in `files` already.
+    match weft_render::builtin_mesh_files() {
+        Ok(mut builtin) => files.extend(
+            result
+                .metadata
+                .meshes
+                .values()
+                .filter_map(|m| m.path.as_ref())
+                .filter_map(|p| Some((p.clone(), builtin.remove(p)?))),
+        ),
+        Err(e) => {
+            eprintln!("error: the built-in meshes: {e}; nothing was written");
+            return false;
+        }
+    }
     // Same machinery as a library build: `<out>/.<scene>.lock`, atomic swap.
     let dir = out.join(&result.name);
     let inputs = [

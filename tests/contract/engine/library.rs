@@ -418,8 +418,9 @@ pub fn scene_world(
 }
 
 /// A mesh of a scene, read from the file its `meshes` entry names: `path`
-/// relative to the library root `root`, `file` relative to the scene's
-/// folder `scene_dir` (docs/engine-interface.md).
+/// relative to the scene's folder `scene_dir` first, else to the library
+/// root `root`; `file` relative to the scene's folder
+/// (docs/engine-interface.md).
 pub fn scene_mesh(
     root: &Path,
     scene_dir: &Path,
@@ -434,6 +435,7 @@ pub fn scene_mesh(
         return Err(format!("mesh `{name}`: unknown format `{}`", entry.format));
     }
     let path = match (&entry.path, &entry.file) {
+        (Some(p), None) if scene_dir.join(p).is_file() => scene_dir.join(p),
         (Some(p), None) => root.join(p),
         (None, Some(f)) => scene_dir.join(f),
         _ => {

@@ -145,6 +145,25 @@ fn a_built_scene_folder_is_self_contained() {
         std::fs::create_dir_all(moved.parent().unwrap()).unwrap();
         std::fs::rename(out.join(name), &moved).unwrap();
         assert!(moved.join("luts").is_dir(), "{source}: the LUTs ride along");
+        // Every mesh the metadata names is in the folder: glTF meshes
+        // (`file`) and built-in ones (`path`), these byte-equal to the
+        // library's.
+        let meta: weft_meta::scene::SceneMetadata = serde_json::from_slice(
+            &std::fs::read(moved.join(format!("{name}.scene.json"))).unwrap(),
+        )
+        .unwrap();
+        for (mesh, entry) in &meta.meshes {
+            let rel = entry.file.as_ref().or(entry.path.as_ref()).unwrap();
+            let carried = std::fs::read(moved.join(rel))
+                .unwrap_or_else(|e| panic!("{source}: mesh `{mesh}` ({rel}): {e}"));
+            if entry.path.is_some() {
+                assert_eq!(
+                    carried,
+                    std::fs::read(repo().join("generated").join(rel)).unwrap(),
+                    "{source}: {rel}"
+                );
+            }
+        }
         let png = dir.path().join("scene.png");
         let o = weft(&[
             "preview",
