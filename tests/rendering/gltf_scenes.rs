@@ -677,3 +677,60 @@ fn gltf_samplers_set_the_instance_shaders_sampler_state() {
     );
     assert!(frame.lod_max_clamp >= 32.0);
 }
+
+/// A KHR_texture_transform with a rotation, shared by a material's maps, is
+/// baked into the primitive's uv0 (weft's tiling is scale and offset): the
+/// tile's mesh file holds the file's uv0 taken through translation ·
+/// rotation · scale, its tangents are the ones generated from the file's own
+/// uv0 (as a glTF viewer generates them), and the maps read it untiled.
+#[test]
+fn a_rotated_texture_transform_is_baked_into_the_meshes_uv0() {
+    let (meta, files) = cutouts();
+    let tiles = meta
+        .instances
+        .iter()
+        .find(|i| i.name == "rotated_tiles")
+        .unwrap();
+    let plain_frame = meta
+        .instances
+        .iter()
+        .find(|i| i.name == "textured_frame")
+        .unwrap();
+    assert!(
+        tiles.mesh.contains(".uv"),
+        "{}: a transformed copy of the primitive",
+        tiles.mesh
+    );
+    let st = constant(&meta, "rotated_tiles", "base_map_st");
+    assert_eq!(
+        st,
+        serde_json::json!([1.0, 1.0, 0.0, 0.0]),
+        "no tiling left"
+    );
+    let read = |name: &str| {
+        let file = meta.meshes[name].file.as_ref().unwrap();
+        MeshData::from_bytes(&files[&format!("{}/{file}", meta.name)]).unwrap()
+    };
+    let baked = read(&tiles.mesh);
+    // The same box as the frame's, its own (untransformed) uv0 equal.
+    let frame = read(&plain_frame.mesh);
+    assert_eq!(baked.positions.len(), frame.positions.len());
+    let (sin, cos) = 0.5f64.sin_cos();
+    for (got, uv) in baked.uv0.iter().zip(&frame.uv0) {
+        let (u, v) = (f64::from(uv[0]), f64::from(uv[1]));
+        let want = [
+            3.0 * cos * u + 2.0 * sin * v + 0.1,
+            -3.0 * sin * u + 2.0 * cos * v + 0.2,
+        ];
+        for k in 0..2 {
+            assert!(
+                (f64::from(got[k]) - want[k]).abs() < 1e-5,
+                "{got:?} from {uv:?}, want {want:?}"
+            );
+        }
+    }
+    assert_eq!(
+        baked.tangents, frame.tangents,
+        "tangents from the file's uv0"
+    );
+}

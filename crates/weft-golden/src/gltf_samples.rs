@@ -10,7 +10,8 @@
 //! - `tests/gltf/bust.gltf` (+ `.bin`): the character bust, each part's
 //!   material from `extras.weft` (face, eye, hair, skin).
 //! - `tests/gltf/cutouts.glb`: alpha MASK with doubleSided, emission, BLEND,
-//!   and a frame with all four core maps (PNG and JPEG, KHR_texture_transform).
+//!   a frame with all four core maps (PNG and JPEG, KHR_texture_transform),
+//!   a glTF sampler and a rotated texture transform.
 //! - [`hostile`]: files weft must refuse, each with the JSON pointer the
 //!   error names (tests/rendering/gltf_scenes.rs).
 //!
@@ -316,8 +317,10 @@ pub fn showroom() -> Vec<u8> {
 
 /// `tests/gltf/cutouts.glb`: glTF's alpha modes, sides and emission on core
 /// materials — a lace panel (MASK, doubleSided, turned so that its back
-/// face shows, its texture read through its own sampler), a glowing bulb (emissive × KHR_materials_emissive_strength)
-/// and a glass block (BLEND) — framed by weft (no camera).
+/// face shows, its texture read through its own sampler), a glowing bulb
+/// (emissive × KHR_materials_emissive_strength), a glass block (BLEND), a
+/// frame with the four core maps and a tile whose maps share a rotated
+/// KHR_texture_transform — framed by weft (no camera).
 pub fn cutouts() -> Vec<u8> {
     let materials = json!([
         { "name": "Lace",
@@ -342,6 +345,14 @@ pub fn cutouts() -> Vec<u8> {
           "occlusionTexture": { "index": 4, "strength": 0.7,
               "extensions": { "KHR_texture_transform": { "scale": [2.0, 1.0], "offset": [0.25, 0.0] } } },
           "extensions": { "KHR_materials_specular": { "specularFactor": 0.5 } } },
+        // One rotated KHR_texture_transform on both maps: baked into the
+        // primitive's uv0 (weft's tiling is scale and offset).
+        { "name": "Rotated tiles",
+          "pbrMetallicRoughness": { "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.6,
+              "baseColorTexture": { "index": 1,
+                  "extensions": { "KHR_texture_transform": { "offset": [0.1, 0.2], "rotation": 0.5, "scale": [3.0, 2.0] } } } },
+          "normalTexture": { "index": 2,
+              "extensions": { "KHR_texture_transform": { "offset": [0.1, 0.2], "rotation": 0.5, "scale": [3.0, 2.0] } } } },
     ]);
     let mut packed = Packed {
         bin: Vec::new(),
@@ -354,6 +365,7 @@ pub fn cutouts() -> Vec<u8> {
     let bulb = packed.primitive(&Prim::from_mesh(&sphere, 1, true), None);
     let glass = packed.primitive(&block([0.0; 3], [0.3, 0.3, 0.3], 2), None);
     let frame = packed.primitive(&block([0.0; 3], [0.5, 0.25, 0.2], 3), None);
+    let tiles = packed.primitive(&block([0.0; 3], [0.5, 0.25, 0.2], 4), None);
     // The images, stored in the BIN chunk: the lace's alpha PNG, then the
     // frame's maps as PNG and JPEG of three sizes (the occlusion map is
     // resampled into the RMO map's size).
@@ -378,18 +390,20 @@ pub fn cutouts() -> Vec<u8> {
         "asset": asset(),
         "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_texture_transform"],
         "scene": 0,
-        "scenes": [ { "name": "Cutouts", "nodes": [0, 1, 2, 3] } ],
+        "scenes": [ { "name": "Cutouts", "nodes": [0, 1, 2, 3, 4] } ],
         "nodes": [
             { "name": "Lace panel", "mesh": 0, "translation": [-1.0, 0.0, 0.0], "rotation": quat([0.0, 1.0, 0.0], 160.0), "scale": [0.6, 0.6, 0.6] },
             { "name": "Glow bulb", "mesh": 1, "translation": [0.2, 0.0, 0.0], "scale": [0.3, 0.3, 0.3] },
             { "name": "Glass block", "mesh": 2, "translation": [1.1, 0.0, 0.2] },
             { "name": "Textured frame", "mesh": 3, "translation": [0.0, -0.8, 0.0] },
+            { "name": "Rotated tiles", "mesh": 4, "translation": [1.2, -0.8, 0.0] },
         ],
         "meshes": [
             { "name": "lace", "primitives": [lace] },
             { "name": "bulb", "primitives": [bulb] },
             { "name": "glass", "primitives": [glass] },
             { "name": "frame", "primitives": [frame] },
+            { "name": "tiles", "primitives": [tiles] },
         ],
         "materials": materials,
         // The frame's maps: trilinear repeat, stated (sampler 0) or left

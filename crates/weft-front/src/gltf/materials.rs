@@ -65,6 +65,10 @@ pub struct MaterialMapping {
     /// The glTF samplers of the maps bound, as the instance's `sampler = { … }`
     /// (None: the material's trilinear repeat).
     pub sampler: Option<Literal>,
+    /// The maps' KHR_texture_transform when it rotates, baked into the
+    /// primitive's uv0 (`mesh = { …, uv_transform }`; the maps then have no
+    /// tiling of their own).
+    pub uv_transform: Option<[f64; 6]>,
 }
 
 /// Linear → sRGB-encoded (IEC 61966-2-1), for weft's sRGB-edited colours.
@@ -528,6 +532,7 @@ fn map_extras(
         double_sided: false,
         blend: false,
         sampler: None,
+        uv_transform: None,
     })
 }
 

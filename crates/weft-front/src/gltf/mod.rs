@@ -96,11 +96,24 @@ impl FileMesh {
     }
 }
 
+/// A primitive read once per scene: file, mesh, primitive, uv transform (bits).
+type MeshKey = (PathBuf, usize, usize, Option<[u64; 6]>);
+
+/// Eight hex digits naming a uv transform in a mesh's name (FNV-1a over its
+/// bits: stable on every machine).
+fn transform_hash(t: &[f64; 6]) -> String {
+    let mut h: u32 = 0x811c_9dc5;
+    for b in t.iter().flat_map(|x| x.to_bits().to_le_bytes()) {
+        h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+    }
+    format!("{h:08x}")
+}
+
 /// Opened files and read primitives, each once per scene.
 #[derive(Default)]
 pub struct GltfCache {
     files: BTreeMap<PathBuf, Result<Arc<GltfFile>, GltfError>>,
-    meshes: BTreeMap<(PathBuf, usize, usize), Arc<FileMesh>>,
+    meshes: BTreeMap<MeshKey, Arc<FileMesh>>,
     pub warnings: Warnings,
 }
 
@@ -128,12 +141,16 @@ impl GltfCache {
         opened
     }
 
-    /// Primitive `primitive` of mesh `mesh` in `path`.
+    /// Primitive `primitive` of mesh `mesh` in `path`, its TEXCOORD_0 taken
+    /// through `uv_transform` ([`MeshSpec::Gltf`](crate::scene::model::MeshSpec)'s)
+    /// when given — after tangents are generated from the file's own UVs, as
+    /// a glTF viewer generates them — and named for it (`….uv<hash>`).
     pub fn mesh(
         &mut self,
         path: &Path,
         mesh: usize,
         primitive: usize,
+        uv_transform: Option<[f64; 6]>,
     ) -> Result<Arc<FileMesh>, GltfError> {
         let file = self.file(path)?;
         let key = (
@@ -142,11 +159,12 @@ impl GltfCache {
                 .unwrap_or_else(|_| file.path.clone()),
             mesh,
             primitive,
+            uv_transform.map(|t| t.map(f64::to_bits)),
         );
         if let Some(m) = self.meshes.get(&key) {
             return Ok(m.clone());
         }
-        let read = meshes::read_primitive(&file, mesh, primitive)?;
+        let mut read = meshes::read_primitive(&file, mesh, primitive)?;
         let stem = scene::snake_name(
             &path
                 .file_stem()
@@ -154,8 +172,19 @@ impl GltfCache {
                 .unwrap_or_default(),
             "gltf",
         );
+        let mut name = format!("{stem}.mesh{mesh}.p{primitive}");
+        if let Some(t) = uv_transform {
+            for uv in &mut read.data.uv0 {
+                let (u, v) = (f64::from(uv[0]), f64::from(uv[1]));
+                *uv = [
+                    (t[0] * u + t[1] * v + t[2]) as f32,
+                    (t[3] * u + t[4] * v + t[5]) as f32,
+                ];
+            }
+            name.push_str(&format!(".uv{}", transform_hash(&t)));
+        }
         let m = Arc::new(FileMesh {
-            name: format!("{stem}.mesh{mesh}.p{primitive}"),
+            name,
             radius: read.data.radius(),
             bytes: read.data.to_bytes(),
             provided: read.provided,

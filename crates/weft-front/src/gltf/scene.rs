@@ -637,9 +637,13 @@ fn instance_table(
         let ds: Vec<String> = mapping.dynamic.iter().map(|d| toml_string(d)).collect();
         let _ = writeln!(out, "dynamic = [{}]", ds.join(", "));
     }
+    let uv_transform = mapping.uv_transform.map_or_else(String::new, |t| {
+        let t: Vec<String> = t.iter().map(|&x| float(round(x))).collect();
+        format!(", uv_transform = [{}]", t.join(", "))
+    });
     let _ = writeln!(
         out,
-        "mesh = {{ gltf = {}, mesh = {}, primitive = {} }}",
+        "mesh = {{ gltf = {}, mesh = {}, primitive = {}{uv_transform} }}",
         toml_string(relative),
         d.mesh,
         d.primitive
@@ -704,6 +708,7 @@ fn layer(mut base: MaterialMapping, o: &MaterialMapping) -> MaterialMapping {
         out.double_sided = base.double_sided;
         out.blend = base.blend;
         out.sampler = None;
+        out.uv_transform = None;
         out.rule = "[gltf.materials]";
         return out;
     }

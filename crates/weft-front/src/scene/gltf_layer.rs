@@ -81,6 +81,7 @@ fn overrides(gltf: &Table, text: &str, cx: &mut Cx) -> Overrides {
             double_sided: false,
             blend: false,
             sampler: None,
+            uv_transform: None,
             rule: "[gltf.materials]",
         };
         out.insert(name.to_string(), mapping);

@@ -66,6 +66,10 @@ pub enum MeshSpec {
         file: PathBuf,
         mesh: usize,
         primitive: usize,
+        /// `uv_transform = [a, b, c, d, e, f]`: TEXCOORD_0 taken to
+        /// (a u + b v + c, d u + e v + f) when the mesh is read — glTF's
+        /// KHR_texture_transform with a rotation, baked (docs/gltf.md).
+        uv_transform: Option<[f64; 6]>,
     },
 }
 

@@ -95,7 +95,8 @@ fn instance_mesh(
             file: path,
             mesh,
             primitive,
-        } => match gltf.mesh(&manifest_dir.join(path), *mesh, *primitive) {
+            uv_transform,
+        } => match gltf.mesh(&manifest_dir.join(path), *mesh, *primitive, *uv_transform) {
             Ok(m) => Some(InstanceMesh::File(m)),
             Err(e) => {
                 diags.push(

@@ -25,9 +25,13 @@ fn texture_ref(material: &Value, key: &'static str) -> Option<TextureRef> {
     let info = material.pointer(&format!("/{key}"))?;
     let index = usize::try_from(info.get("index")?.as_u64()?).ok()?;
     let t = info.pointer("/extensions/KHR_texture_transform");
+    // The gltf crate hands a textureInfo's transform to us at f32 precision
+    // and a normalTexture's at f64 (0.1 vs 0.10000000149…): both are read
+    // at f32, written shortest, so equal transforms compare equal.
+    let f32_value = |x: f64| (x as f32).to_string().parse().unwrap_or(x);
     let pair = |k: &str, d: f64| -> [f64; 2] {
         let a = t.and_then(|t| t.get(k)).and_then(Value::as_array);
-        [0, 1].map(|i| num(a.and_then(|a| a.get(i)), d))
+        [0, 1].map(|i| f32_value(num(a.and_then(|a| a.get(i)), d)))
     };
     let (scale, offset) = (pair("scale", 1.0), pair("offset", 0.0));
     let tex_coord = t
@@ -39,7 +43,7 @@ fn texture_ref(material: &Value, key: &'static str) -> Option<TextureRef> {
         index,
         key,
         tiling: [scale[0], scale[1], offset[0], offset[1]],
-        rotation: num(t.and_then(|t| t.get("rotation")), 0.0),
+        rotation: f32_value(num(t.and_then(|t| t.get("rotation")), 0.0)),
         tex_coord,
     })
 }
@@ -81,7 +85,32 @@ pub(super) fn map_textures(
     let normal = texture_ref(&json, "normalTexture");
     let mr = texture_ref(&json, "pbrMetallicRoughness/metallicRoughnessTexture");
     let occlusion = texture_ref(&json, "occlusionTexture");
-    let tiling = base.as_ref().map(|b| b.tiling);
+    let emissive =
+        texture_ref(&json, "emissiveTexture").filter(|_| material == "standard" && emits(&json));
+    // The maps this material binds, and whether their one transform has a
+    // rotation: weft's tiling is scale and offset, so such a transform is
+    // baked into the primitive's uv0 instead (the maps then read it as is).
+    let bound: Vec<&TextureRef> = [
+        base.as_ref(),
+        normal.as_ref().filter(|_| has_normal),
+        mr.as_ref().filter(|_| has_rmo),
+        occlusion
+            .as_ref()
+            .filter(|_| has_rmo || material == "velvet"),
+        emissive.as_ref(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    let baked = bound.iter().any(|t| t.rotation != 0.0)
+        && bound.iter().all(|t| {
+            t.tiling == bound[0].tiling && t.rotation == bound[0].rotation && t.tex_coord == 0
+        });
+    if baked {
+        out.uv_transform = Some(uv_matrix(bound[0]));
+    }
+    // What the maps are read with: the base map's tiling, or none when baked.
+    let tiling = base.as_ref().map(|b| b.tiling).filter(|_| !baked);
     let mut used: Vec<&TextureRef> = Vec::new();
     if let Some(b) = &base {
         out.params.push((
@@ -153,9 +182,12 @@ pub(super) fn map_textures(
             ));
         }
     }
-    transform_losses(&used, tiling, &mut out.losses);
-    let emissive = map_emissive_texture(&json, gltf_ref, tiling, out);
-    used.extend(emissive.as_ref());
+    if !baked {
+        transform_losses(&used, tiling, &mut out.losses);
+    }
+    if map_emissive_texture(&json, emissive.as_ref(), gltf_ref, tiling, baked, out) {
+        used.extend(emissive.as_ref());
+    }
     map_sampler(file, &used, out);
     extension_texture_losses(&json, &mut out.losses);
 }
@@ -188,38 +220,52 @@ fn transform_losses(used: &[&TextureRef], tiling: Option<[f64; 4]>, losses: &mut
 
 /// glTF's emissive texture → standard's `emissive_map` (glTF multiplies the
 /// texture by emissiveFactor, default black: a texture without a factor
-/// emits nothing). Returns the texture when it is bound.
+/// emits nothing). `emissive` is the texture when standard binds it (it
+/// emits); true when it is bound.
 fn map_emissive_texture(
     json: &Value,
+    emissive: Option<&TextureRef>,
     gltf_ref: &str,
     tiling: Option<[f64; 4]>,
+    baked: bool,
     out: &mut MaterialMapping,
-) -> Option<TextureRef> {
-    let material = out.material.clone();
-    let emits = json
-        .get("emissiveFactor")
-        .and_then(Value::as_array)
-        .is_some_and(|f| f.iter().any(|x| x.as_f64().unwrap_or(0.0) > 0.0));
-    // glTF multiplies the texture by emissiveFactor (default black): a
-    // texture without a factor emits nothing.
-    let t = texture_ref(json, "emissiveTexture").filter(|_| emits)?;
-    if material != "standard" {
-        out.losses.push(format!(
-            "emissiveTexture ({material} does not emit; standard does)"
-        ));
-        return None;
-    }
+) -> bool {
+    let Some(t) = emissive else {
+        if texture_ref(json, "emissiveTexture").is_some() && emits(json) {
+            out.losses.push(format!(
+                "emissiveTexture ({} does not emit; standard does)",
+                out.material
+            ));
+        }
+        return false;
+    };
     out.params.push((
         "emissive_map".into(),
         image_value(gltf_ref, &format!("texture = {}", t.index), None),
     ));
-    if t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
+    if !baked && t.tiling != tiling.unwrap_or([1.0, 1.0, 0.0, 0.0]) {
         out.losses.push(
             "emissiveTexture's KHR_texture_transform (the material's maps share the base colour texture's)"
                 .into(),
         );
     }
-    Some(t)
+    true
+}
+
+/// Whether the material emits (glTF's emissiveFactor, default black).
+fn emits(json: &Value) -> bool {
+    json.get("emissiveFactor")
+        .and_then(Value::as_array)
+        .is_some_and(|f| f.iter().any(|x| x.as_f64().unwrap_or(0.0) > 0.0))
+}
+
+/// KHR_texture_transform as the affine map of uv0 it stands for,
+/// translation · rotation · scale (the extension's matrix), in
+/// `uv_transform`'s order [a, b, c, d, e, f]: (a u + b v + c, d u + e v + f).
+fn uv_matrix(t: &TextureRef) -> [f64; 6] {
+    let [sx, sy, ox, oy] = t.tiling;
+    let (sin, cos) = t.rotation.sin_cos();
+    [sx * cos, sy * sin, ox, -sx * sin, sy * cos, oy]
 }
 
 /// Textures of extensions whose factors are mapped (or not at all): named as
@@ -367,6 +413,74 @@ mod tests {
         )
         .unwrap();
         super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+    }
+
+    /// Material 0 with a base colour and a normal texture, each with the
+    /// KHR_texture_transform given, mapped.
+    fn transformed(base: Value, normal: Value) -> MaterialMapping {
+        let info = |index: u64, t: Value| serde_json::json!({ "index": index, "extensions": { "KHR_texture_transform": t } });
+        let json = serde_json::json!({
+            "asset": { "version": "2.0" },
+            "extensionsUsed": ["KHR_texture_transform"],
+            "images": [ { "uri": "a.png" } ],
+            "textures": [ { "source": 0 }, { "source": 0 } ],
+            "materials": [ {
+                "pbrMetallicRoughness": { "baseColorTexture": info(0, base) },
+                "normalTexture": info(1, normal) } ]
+        });
+        let mut warnings = Vec::new();
+        let file = GltfFile::from_bytes(
+            std::path::Path::new("t.gltf"),
+            None,
+            serde_json::to_vec(&json).unwrap(),
+            &mut warnings,
+        )
+        .unwrap();
+        super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+    }
+
+    #[test]
+    fn a_rotated_transform_shared_by_the_maps_is_baked_into_uv0() {
+        let t = serde_json::json!({ "offset": [0.1, 0.2], "rotation": 0.5, "scale": [3.0, 2.0] });
+        let m = transformed(t.clone(), t);
+        let [a, b, c, d, e, f] = m.uv_transform.unwrap_or_else(|| panic!("{m:?}"));
+        // The extension's matrix, translation · rotation · scale.
+        let (sin, cos) = 0.5f64.sin_cos();
+        for (got, want) in
+            [a, b, c, d, e, f]
+                .iter()
+                .zip([3.0 * cos, 2.0 * sin, 0.1, -3.0 * sin, 2.0 * cos, 0.2])
+        {
+            assert!((got - want).abs() < 1e-12, "{:?}", m.uv_transform);
+        }
+        // The maps read the baked uv0 as is: no tiling, nothing lost.
+        let base = &m.params.iter().find(|(k, _)| k == "base_map").unwrap().1;
+        assert!(
+            !base.contains("scale") && !base.contains("offset"),
+            "{base}"
+        );
+        assert!(m.losses.is_empty(), "{:?}", m.losses);
+    }
+
+    #[test]
+    fn maps_rotated_differently_keep_the_loss() {
+        let m = transformed(
+            serde_json::json!({ "rotation": 0.5 }),
+            serde_json::json!({ "rotation": 0.25 }),
+        );
+        assert_eq!(m.uv_transform, None);
+        assert!(
+            m.losses.iter().any(|l| l.contains("rotation 0.5 rad")),
+            "{:?}",
+            m.losses
+        );
+        // Scale and offset alone stay the base map's tiling, as before.
+        let m = transformed(
+            serde_json::json!({ "scale": [2.0, 1.0] }),
+            serde_json::json!({ "scale": [2.0, 1.0] }),
+        );
+        assert_eq!(m.uv_transform, None);
+        assert!(m.losses.is_empty(), "{:?}", m.losses);
     }
 
     #[test]

@@ -344,11 +344,27 @@ fn parse_mesh(t: &Table, at: &Span, cx: &mut Cx) -> Option<Spanned<MeshSpec>> {
         };
         let mesh = index("mesh", cx)?;
         let primitive = index("primitive", cx)?;
+        let uv_transform = match table.numbers("uv_transform", cx) {
+            None => None,
+            Some(n) if n.len() == 6 && n.iter().all(|x| fits_f32(*x)) => {
+                Some(std::array::from_fn(|i| n[i]))
+            }
+            Some(_) => {
+                cx.error(
+                    "bad-type",
+                    "`uv_transform` of `mesh` must be 6 finite numbers [a, b, c, d, e, f]",
+                    table.span_of("uv_transform"),
+                    "uv0 becomes (a u + b v + c, d u + e v + f)",
+                );
+                return None;
+            }
+        };
         return Some(Spanned {
             value: MeshSpec::Gltf {
                 file: PathBuf::from(file.value),
                 mesh,
                 primitive,
+                uv_transform,
             },
             span: v.span(),
         });
