@@ -60,32 +60,6 @@ pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool
         .into_iter()
         .filter_map(|(name, bytes)| Some((name.strip_prefix(&prefix)?.to_string(), bytes)))
         .collect();
-    if gpu_model {
-        let families: Vec<String> = weft_gpu_stats::DEFAULT_FAMILIES
-            .iter()
-            .map(|f| f.to_string())
-            .collect();
-        match crate::scene_model::model_saving(
-            &result.metadata,
-            &files,
-            &result.materials_root,
-            &families,
-        ) {
-            Ok(modelled) => {
-                if let Some(f) = &mut result.metadata.funnel {
-                    f.modelled = modelled;
-                }
-                files.insert(
-                    format!("{}.scene.json", result.name),
-                    weft_compiler::scene::metadata_json(&result.metadata),
-                );
-            }
-            Err(e) => {
-                eprintln!("error: modelling the GPU cost (--gpu-model): {e}\nnothing was written");
-                return false;
-            }
-        }
-    }
     // Self-contained: the baked LUTs the shaders bind ride along at the
     // path their bindings name (`luts/…`), taken from ./generated when it
     // has them, else baked. Texture files are in `files` already.
@@ -133,6 +107,34 @@ pub fn build_scene_command(args: &SceneBuild, quiet: bool, color: Color) -> bool
     if let Err(e) = check_apart(&dir, &inputs) {
         eprintln!("error: {e}; nothing was written");
         return false;
+    }
+    // Modelled once the output is known to lie apart from the inputs (a
+    // refused output costs no compile).
+    if gpu_model {
+        let families: Vec<String> = weft_gpu_stats::DEFAULT_FAMILIES
+            .iter()
+            .map(|f| f.to_string())
+            .collect();
+        match crate::scene_model::model_saving(
+            &result.metadata,
+            &files,
+            &result.materials_root,
+            &families,
+        ) {
+            Ok(modelled) => {
+                if let Some(f) = &mut result.metadata.funnel {
+                    f.modelled = modelled;
+                }
+                files.insert(
+                    format!("{}.scene.json", result.name),
+                    weft_compiler::scene::metadata_json(&result.metadata),
+                );
+            }
+            Err(e) => {
+                eprintln!("error: modelling the GPU cost (--gpu-model): {e}\nnothing was written");
+                return false;
+            }
+        }
     }
     let Some(lock) = lock_output(&dir, lock_wait, quiet) else {
         return false;
