@@ -734,3 +734,63 @@ fn a_rotated_texture_transform_is_baked_into_the_meshes_uv0() {
         "tangents from the file's uv0"
     );
 }
+
+/// A manifest's `sampler` on an instance: applied where the shader reads a
+/// map through `material_sampler`; on an instance whose shader reads none
+/// (every map a built-in default, folded away), a warning that it changes
+/// nothing.
+#[test]
+fn an_instance_sampler_applies_where_a_map_is_read_and_warns_elsewhere() {
+    use weft_meta::engine::{MATERIAL_GROUP, MATERIAL_SAMPLER_BINDING};
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("albedo.png"),
+        gltf_samples::png_rgba(2, 2, |x, _| [x as u8 * 200, 9, 9, 255]),
+    )
+    .unwrap();
+    let manifest = dir.path().join("s.scene.toml");
+    std::fs::write(
+        &manifest,
+        format!(
+            "[scene]\nname = \"s\"\nmaterials = {:?}\nvertex_inputs = [\"position\", \"normal\", \"tangent\", \"uv0\"]\n\n\
+             [[instances]]\nname = \"mapped\"\nmaterial = \"standard\"\nmesh = \"sphere\"\n\
+             params = {{ base_map = {{ file = \"albedo.png\" }} }}\n\
+             sampler = {{ address_mode_u = \"clamp_to_edge\", mag_filter = \"nearest\" }}\n\n\
+             [[instances]]\nname = \"plain\"\nmaterial = \"standard\"\nmesh = \"sphere\"\ntranslation = [2.0, 0.0, 0.0]\n\
+             sampler = {{ mag_filter = \"nearest\" }}\n",
+            repo().join("materials").display().to_string()
+        ),
+    )
+    .unwrap();
+    let out = build_scene(&manifest, &SceneBuildOptions::default())
+        .unwrap_or_else(|(db, diags)| panic!("{}", diags.render_plain(&db)));
+    let meta = &out.metadata;
+    let inst = meta.instances.iter().find(|i| i.name == "mapped").unwrap();
+    let shader = meta.shaders.iter().find(|s| s.id == inst.shader).unwrap();
+    let sampler = shader
+        .shader
+        .bindings
+        .iter()
+        .find(|b| b.group == MATERIAL_GROUP && b.binding == MATERIAL_SAMPLER_BINDING)
+        .and_then(|b| b.sampler.clone())
+        .expect("the map is read through material_sampler");
+    assert_eq!(
+        (
+            sampler.address_mode_u,
+            sampler.address_mode_v,
+            sampler.mag_filter
+        ),
+        (
+            weft_meta::AddressMode::ClampToEdge,
+            weft_meta::AddressMode::Repeat,
+            weft_meta::FilterMode::Nearest
+        )
+    );
+    let (db, warnings) = out.warnings.as_ref().expect("a warning");
+    let text = warnings.render_plain(db);
+    assert!(
+        text.contains("warning[unused-sampler]") && text.contains("instance `plain`"),
+        "{text}"
+    );
+    assert!(!text.contains("instance `mapped`"), "{text}");
+}

@@ -332,6 +332,7 @@ pub fn build_resolved_scene(
             continue;
         }
         checks::warn_unread_dynamic(manifest, inst, m, &variant, &compiled.shader, diags);
+        checks::warn_unused_sampler(manifest, inst, &compiled.shader, diags);
         let built = BuiltInstance {
             material: m,
             instance: inst,

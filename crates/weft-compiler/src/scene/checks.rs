@@ -164,6 +164,38 @@ pub(super) fn warn_unread_dynamic(
     }
 }
 
+/// An instance `sampler` whose shader reads no map through
+/// `material_sampler` (none bound, or every one folded away) sets nothing.
+pub(super) fn warn_unused_sampler(
+    manifest: &SceneManifest,
+    inst: &ResolvedInstance,
+    shader: &VariantShader,
+    diags: &mut Diagnostics,
+) {
+    let reads_maps = shader.bindings.iter().any(|b| {
+        b.group == weft_meta::engine::MATERIAL_GROUP
+            && b.binding == weft_meta::engine::MATERIAL_SAMPLER_BINDING
+    });
+    if inst.overrides.sampler.is_none() || reads_maps {
+        return;
+    }
+    diags.push(
+        Diagnostic::warning()
+            .with_code("unused-sampler")
+            .with_message(format!(
+                "instance `{}` sets `sampler`, but its shader reads no map through `material_sampler`",
+                inst.name
+            ))
+            .with_labels(vec![
+                Label::primary(manifest.file, inst.span.clone())
+                    .with_message("this instance's `sampler` changes nothing"),
+            ])
+            .with_notes(vec![
+                "give the instance a texture parameter (a map), or remove `sampler`".into(),
+            ]),
+    );
+}
+
 /// The manifest's `max_shaders`, if it has one, against the shaders built.
 pub(super) fn within_shader_budget(
     manifest: &SceneManifest,
