@@ -217,11 +217,11 @@ fn build_instance(
     // shader entry describes (its binding's state), so it is hashed too:
     // instances that fold to one WGSL but sample differently get two entries.
     let wgsl = crate::compile::backends::emit_wgsl(&module, &info)?;
-    let mut hashed = wgsl.clone().into_bytes();
-    if let Some(s) = &inst.overrides.sampler {
-        hashed.extend(format!("\0sampler {s:?}").bytes());
-    }
-    let id = format!("{}.{}", m.name, &sha256_hex(&hashed)[..12]);
+    let hash = match &inst.overrides.sampler {
+        None => sha256_hex(wgsl.as_bytes()),
+        Some(s) => sha256_hex(format!("{wgsl}\0sampler {s:?}").as_bytes()),
+    };
+    let id = format!("{}.{}", m.name, &hash[..12]);
     let keywords = keyword_names(m, inst);
     let textures = material_textures(m, prelude, &m.tiers.values[tier], |k| {
         keywords.get(k).map(String::as_str)
@@ -238,10 +238,12 @@ fn build_instance(
     // The instance's sampler state where the shader reads its maps (a shader
     // that folded every map away has no such binding left to set).
     if let Some(over) = &inst.overrides.sampler {
-        for b in compiled.shader.bindings.iter_mut().filter(|b| {
-            b.group == weft_meta::engine::MATERIAL_GROUP
-                && b.binding == weft_meta::engine::MATERIAL_SAMPLER_BINDING
-        }) {
+        for b in compiled
+            .shader
+            .bindings
+            .iter_mut()
+            .filter(|b| checks::is_material_sampler(b))
+        {
             if let Some(s) = &mut b.sampler {
                 over.apply(s);
             }

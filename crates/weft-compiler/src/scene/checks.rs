@@ -164,6 +164,12 @@ pub(super) fn warn_unread_dynamic(
     }
 }
 
+/// The binding of `material_sampler`, through which a material reads its maps.
+pub(super) fn is_material_sampler(b: &weft_meta::Binding) -> bool {
+    b.group == weft_meta::engine::MATERIAL_GROUP
+        && b.binding == weft_meta::engine::MATERIAL_SAMPLER_BINDING
+}
+
 /// An instance `sampler` whose shader reads no map through
 /// `material_sampler` (none bound, or every one folded away) sets nothing.
 pub(super) fn warn_unused_sampler(
@@ -172,10 +178,7 @@ pub(super) fn warn_unused_sampler(
     shader: &VariantShader,
     diags: &mut Diagnostics,
 ) {
-    let reads_maps = shader.bindings.iter().any(|b| {
-        b.group == weft_meta::engine::MATERIAL_GROUP
-            && b.binding == weft_meta::engine::MATERIAL_SAMPLER_BINDING
-    });
+    let reads_maps = shader.bindings.iter().any(is_material_sampler);
     if inst.overrides.sampler.is_none() || reads_maps {
         return;
     }

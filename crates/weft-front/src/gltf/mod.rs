@@ -99,14 +99,15 @@ impl FileMesh {
 /// A primitive read once per scene: file, mesh, primitive, uv transform (bits).
 type MeshKey = (PathBuf, usize, usize, Option<[u64; 6]>);
 
-/// Eight hex digits naming a uv transform in a mesh's name (FNV-1a over its
-/// bits: stable on every machine).
+/// Eight hex digits naming a uv transform in a mesh's name (the first of
+/// the SHA-256 of its bits: stable on every machine).
 fn transform_hash(t: &[f64; 6]) -> String {
-    let mut h: u32 = 0x811c_9dc5;
-    for b in t.iter().flat_map(|x| x.to_bits().to_le_bytes()) {
-        h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
-    }
-    format!("{h:08x}")
+    use sha2::Digest;
+    let bytes: Vec<u8> = t.iter().flat_map(|x| x.to_bits().to_le_bytes()).collect();
+    sha2::Sha256::digest(&bytes)[..4]
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 /// Opened files and read primitives, each once per scene.
