@@ -385,6 +385,19 @@ fn sampler_literal(sampler: &gltf::texture::Sampler) -> Option<Literal> {
 mod tests {
     use super::*;
 
+    /// Material 0 of a glTF (JSON) mapped.
+    fn map(json: &Value) -> MaterialMapping {
+        let mut warnings = Vec::new();
+        let file = GltfFile::from_bytes(
+            std::path::Path::new("t.gltf"),
+            None,
+            serde_json::to_vec(json).unwrap(),
+            &mut warnings,
+        )
+        .unwrap();
+        super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+    }
+
     /// Material 0 of a glTF whose textures 0 and 1 use `samplers`' entries
     /// as `texture_samplers` says, mapped.
     fn mapped(samplers: Value, texture_samplers: [Option<u64>; 2]) -> MaterialMapping {
@@ -404,15 +417,7 @@ mod tests {
                 "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 },
                     "metallicRoughnessTexture": { "index": 1 } } } ]
         });
-        let mut warnings = Vec::new();
-        let file = GltfFile::from_bytes(
-            std::path::Path::new("t.gltf"),
-            None,
-            serde_json::to_vec(&json).unwrap(),
-            &mut warnings,
-        )
-        .unwrap();
-        super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+        map(&json)
     }
 
     /// Material 0 with a base colour and a normal texture, each with the
@@ -428,15 +433,7 @@ mod tests {
                 "pbrMetallicRoughness": { "baseColorTexture": info(0, base) },
                 "normalTexture": info(1, normal) } ]
         });
-        let mut warnings = Vec::new();
-        let file = GltfFile::from_bytes(
-            std::path::Path::new("t.gltf"),
-            None,
-            serde_json::to_vec(&json).unwrap(),
-            &mut warnings,
-        )
-        .unwrap();
-        super::super::map_material(&file, Some(0), "t.gltf").unwrap()
+        map(&json)
     }
 
     #[test]
