@@ -1,6 +1,6 @@
 //! `cargo xtask-screenshots inspector` (xtask's `screenshots` feature): screenshots of the live inspector (`weft serve`)
 //! for the README — one material in English, one in Chinese — taken in
-//! headless Chromium (WebGPU on SwiftShader, as tests/rendering/inspector.rs runs it)
+//! headless Chromium (WebGPU on SwiftShader, as tests/rendering/inspector/ runs it)
 //! and written to docs/inspector/.
 
 use headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption;
