@@ -286,11 +286,6 @@ float2 weft_transform_uv(float2 uv, float4 st)
     return ((uv * st.xy) + st.zw);
 }
 
-float mc_fast_slope(float s0_, float s1_1, float s2_1, float t)
-{
-    return ((t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0))));
-}
-
 float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
 {
     bool local = (bool)0;
@@ -314,6 +309,11 @@ float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, 
     }
     bool lit_ = local_1;
     return (lit_ ? (s_2 / (max(q_3, MC_MIN_Q)).xxx) : (0.0).xxx);
+}
+
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t)
+{
+    return ((t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0))));
 }
 
 float mc_u_of_cos(float c)

@@ -254,15 +254,6 @@ metal::float2 weft_transform_uv(
     return (uv * st.xy) + st.zw;
 }
 
-float mc_fast_slope(
-    float s0_,
-    float s1_1,
-    float s2_1,
-    float t
-) {
-    return (t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0)));
-}
-
 metal::float3 mc_combine(
     metal::float4 t1_,
     metal::float4 t2_,
@@ -291,6 +282,15 @@ metal::float3 mc_combine(
     }
     bool lit = local_1;
     return lit ? (s_2 / metal::float3(metal::max(q_3, MC_MIN_Q))) : metal::float3(0.0);
+}
+
+float mc_fast_slope(
+    float s0_,
+    float s1_1,
+    float s2_1,
+    float t
+) {
+    return (t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0)));
 }
 
 float mc_u_of_cos(

@@ -306,6 +306,31 @@ float mc_offset_at(float4 a, float4 b, int k)
     return ((k >= int(4)) ? b : a)[min(uint((k & int(3))), 3u)];
 }
 
+float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+
+    float c1_ = saturate(a1_);
+    float c2_ = saturate(a2_);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit_ = local_1;
+    return (lit_ ? (s_2 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
+}
+
 typedef float4 ret_Constructarray2_float4_[2];
 ret_Constructarray2_float4_ Constructarray2_float4_(float4 arg0, float4 arg1) {
     float4 ret[2] = { arg0, arg1 };
@@ -335,31 +360,6 @@ float3 mc_cell_means(float4 xe, float inv_gamma)
     float3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
     const float3 _e27 = weft_select3_f32bit(wide, exact, trap);
     return (max(_e27, (0.0).xxx) * inv_gamma);
-}
-
-float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
-{
-    bool local = (bool)0;
-    bool local_1 = (bool)0;
-
-    float c1_ = saturate(a1_);
-    float c2_ = saturate(a2_);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    float3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
-    if ((n_dot_wi > 0.0)) {
-        local = (n_dot_wr > 0.0);
-    } else {
-        local = false;
-    }
-    bool _e37 = local;
-    if (_e37) {
-        local_1 = (q_4 > MC_MIN_Q);
-    } else {
-        local_1 = false;
-    }
-    bool lit_ = local_1;
-    return (lit_ ? (s_2 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
 int mc_list_piece_count(float4 offsets_a, float4 offsets_b, int n_3)

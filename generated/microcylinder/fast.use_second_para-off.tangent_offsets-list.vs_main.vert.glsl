@@ -224,25 +224,6 @@ float mc_offset_at(vec4 a, vec4 b, int k) {
     return ((k >= 4) ? b : a)[(k & 3)];
 }
 
-vec4[2] mc_normal4_(vec4 t) {
-    vec4 e_1 = exp(((-0.5 * t) * t));
-    vec4 z = (abs(t) * 0.70710677);
-    vec4 k_5 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k_5 * (vec4(0.2548296) + (k_5 * (vec4(-0.28449672) + (k_5 * (vec4(1.4214138) + (k_5 * (vec4(-1.4531521) + (k_5 * 1.0614054)))))))));
-    vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
-    return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
-}
-
-vec3 mc_cell_means(vec4 xe, float inv_gamma) {
-    vec4 t_2 = (xe * inv_gamma);
-    vec4 _e3[2] = mc_normal4_(t_2);
-    vec3 dt = (t_2.yzw - t_2.xyz);
-    bvec3 wide = greaterThanEqual(abs(dt), vec3(0.1));
-    vec3 exact = ((_e3[1].yzw - _e3[1].xyz) / mix(vec3(1.0), dt, wide));
-    vec3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
-    return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
-}
-
 vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
     bool local = false;
     bool local_1 = false;
@@ -264,6 +245,25 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float 
     }
     bool lit = local_1;
     return (lit ? (s_2 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+}
+
+vec4[2] mc_normal4_(vec4 t) {
+    vec4 e_1 = exp(((-0.5 * t) * t));
+    vec4 z = (abs(t) * 0.70710677);
+    vec4 k_5 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k_5 * (vec4(0.2548296) + (k_5 * (vec4(-0.28449672) + (k_5 * (vec4(1.4214138) + (k_5 * (vec4(-1.4531521) + (k_5 * 1.0614054)))))))));
+    vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
+    return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
+}
+
+vec3 mc_cell_means(vec4 xe, float inv_gamma) {
+    vec4 t_2 = (xe * inv_gamma);
+    vec4 _e3[2] = mc_normal4_(t_2);
+    vec3 dt = (t_2.yzw - t_2.xyz);
+    bvec3 wide = greaterThanEqual(abs(dt), vec3(0.1));
+    vec3 exact = ((_e3[1].yzw - _e3[1].xyz) / mix(vec3(1.0), dt, wide));
+    vec3 trap = (0.5 * (_e3[0].xyz + _e3[0].yzw));
+    return (max(mix(trap, exact, wide), vec3(0.0)) * inv_gamma);
 }
 
 int mc_list_piece_count(vec4 offsets_a, vec4 offsets_b, int n_3) {

@@ -220,10 +220,6 @@ vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
 
-float mc_fast_slope(float s0_, float s1_1, float s2_1, float t) {
-    return ((t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0))));
-}
-
 vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
     bool local = false;
     bool local_1 = false;
@@ -245,6 +241,10 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float 
     }
     bool lit = local_1;
     return (lit ? (s_2 / vec3(max(q_3, MC_MIN_Q))) : vec3(0.0));
+}
+
+float mc_fast_slope(float s0_, float s1_1, float s2_1, float t) {
+    return ((t < 0.5) ? (s0_ + ((s1_1 - s0_) * (2.0 * t))) : (s1_1 + ((s2_1 - s1_1) * ((2.0 * t) - 1.0))));
 }
 
 float mc_u_of_cos(float c) {

@@ -228,10 +228,6 @@ fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
 
-fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t: f32) -> f32 {
-    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t))), (t < 0.5f));
-}
-
 fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
     var local: bool;
     var local_1: bool;
@@ -254,6 +250,10 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
     }
     let lit = local_1;
     return select(vec3(0f), (s_2 / vec3(max(q_3, MC_MIN_Q))), lit);
+}
+
+fn mc_fast_slope(s0_: f32, s1_1: f32, s2_1: f32, t: f32) -> f32 {
+    return select((s1_1 + ((s2_1 - s1_1) * ((2f * t) - 1f))), (s0_ + ((s1_1 - s0_) * (2f * t))), (t < 0.5f));
 }
 
 fn mc_u_of_cos(c: f32) -> f32 {

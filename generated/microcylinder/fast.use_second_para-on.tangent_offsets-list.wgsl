@@ -232,25 +232,6 @@ fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
     return select(a, b, (k >= 4i))[(k & 3i)];
 }
 
-fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
-    let e_1 = exp(((-0.5f * t) * t));
-    let z = (abs(t) * 0.70710677f);
-    let k_5 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k_5 * (vec4(0.2548296f) + (k_5 * (vec4(-0.28449672f) + (k_5 * (vec4(1.4214138f) + (k_5 * (vec4(-1.4531521f) + (k_5 * 1.0614054f)))))))));
-    let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
-    return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
-}
-
-fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
-    let t_2 = (xe * inv_gamma);
-    let _e3 = mc_normal4_(t_2);
-    let dt = (t_2.yzw - t_2.xyz);
-    let wide = (abs(dt) >= vec3(0.1f));
-    let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
-    let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
-    return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
-}
-
 fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
     var local: bool;
     var local_1: bool;
@@ -273,6 +254,25 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
     }
     let lit = local_1;
     return select(vec3(0f), (s_2 / vec3(max(q_4, MC_MIN_Q))), lit);
+}
+
+fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
+    let e_1 = exp(((-0.5f * t) * t));
+    let z = (abs(t) * 0.70710677f);
+    let k_5 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_5 * (vec4(0.2548296f) + (k_5 * (vec4(-0.28449672f) + (k_5 * (vec4(1.4214138f) + (k_5 * (vec4(-1.4531521f) + (k_5 * 1.0614054f)))))))));
+    let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
+    return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
+}
+
+fn mc_cell_means(xe: vec4<f32>, inv_gamma: f32) -> vec3<f32> {
+    let t_2 = (xe * inv_gamma);
+    let _e3 = mc_normal4_(t_2);
+    let dt = (t_2.yzw - t_2.xyz);
+    let wide = (abs(dt) >= vec3(0.1f));
+    let exact = ((_e3[1].yzw - _e3[1].xyz) / select(vec3(1f), dt, wide));
+    let trap = (0.5f * (_e3[0].xyz + _e3[0].yzw));
+    return (max(select(trap, exact, wide), vec3(0f)) * inv_gamma);
 }
 
 fn mc_list_piece_count(offsets_a: vec4<f32>, offsets_b: vec4<f32>, n_3: i32) -> i32 {

@@ -252,6 +252,30 @@ fn mc_asin_fast(x_1: f32) -> f32 {
     return (1.5707964f - _e2);
 }
 
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+    var local: bool;
+    var local_1: bool;
+
+    let c1_ = saturate(a1_);
+    let c2_ = saturate(a2_);
+    let gap = max(((1f - c1_) - c2_), 0f);
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    if (n_dot_wi > 0f) {
+        local = (n_dot_wr > 0f);
+    } else {
+        local = false;
+    }
+    let _e37 = local;
+    if _e37 {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    let lit = local_1;
+    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
+}
+
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
@@ -293,15 +317,15 @@ fn mc_fast_gl3_(q: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, 
     let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     let _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     let _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let s_4 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
     let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
-    let surface = dot(_e36, s_3);
+    let surface = dot(_e36, s_4);
     let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
 }
 
 fn mc_fast_half_clip(q_1: McFastPre, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
-    var local: bool;
+    var local_2: bool;
 
     let ds = (sb - sa);
     let flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
@@ -309,11 +333,11 @@ fn mc_fast_half_clip(q_1: McFastPre, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
     let u0_ = ((q_1.s_lo - sa) * inv);
     let u1_ = ((q_1.s_hi - sa) * inv);
     if (sa > q_1.s_lo) {
-        local = (sa < q_1.s_hi);
+        local_2 = (sa < q_1.s_hi);
     } else {
-        local = false;
+        local_2 = false;
     }
-    let _e31 = local;
+    let _e31 = local_2;
     let uf = select(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f), _e31);
     let u = select(vec2<f32>(max(min(u0_, u1_), 0f), min(max(u0_, u1_), 1f)), uf, flat);
     return select(vec2<f32>(2f, -1f), (vec2(ta) + (0.5f * u)), (u.x < u.y));
@@ -334,30 +358,6 @@ fn mc_fast_half_length(sa_1: f32, sb_1: f32) -> f32 {
     let _e6 = mc_arc_primitive(sb_1);
     let _e7 = mc_arc_primitive(sa_1);
     return select(((0.5f * (_e6 - _e7)) / ds_1), (0.5f * sqrt((1f + (sm * sm)))), (abs(ds_1) < MC_FAST_MIN_DSLOPE));
-}
-
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
-    var local_1: bool;
-    var local_2: bool;
-
-    let c1_ = saturate(a1_);
-    let c2_ = saturate(a2_);
-    let gap = max(((1f - c1_) - c2_), 0f);
-    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
-    if (n_dot_wi > 0f) {
-        local_1 = (n_dot_wr > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e37 = local_1;
-    if _e37 {
-        local_2 = (q_4 > MC_MIN_Q);
-    } else {
-        local_2 = false;
-    }
-    let lit = local_2;
-    return select(vec3(0f), (s_4 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
 fn mc_low_node(q_2: McFastPre, ca: f32, sa_2: f32) -> McFastNode {

@@ -283,6 +283,36 @@ float mc_asin_fast(
     return 1.5707964 - _e2;
 }
 
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local = {};
+    bool local_1 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local = n_dot_wr > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = q_4 > MC_MIN_Q;
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+}
+
 type_12 mc_normal4_(
     metal::float4 t
 ) {
@@ -341,9 +371,9 @@ metal::float4 mc_fast_gl3_(
     metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
     metal::float3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     metal::float3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 s_4 = r * metal::float3(n0_.s, n1_.s, n2_.s);
     metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
-    float surface = metal::dot(_e36, s_3);
+    float surface = metal::dot(_e36, s_4);
     float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
     return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
 }
@@ -354,18 +384,18 @@ metal::float2 mc_fast_half_clip(
     float sb,
     float ta
 ) {
-    bool local = {};
+    bool local_2 = {};
     float ds = sb - sa;
     bool flat = metal::abs(ds) < MC_FAST_MIN_DSLOPE;
     float inv = 1.0 / (flat ? 1.0 : ds);
     float u0_ = (q_1.s_lo - sa) * inv;
     float u1_ = (q_1.s_hi - sa) * inv;
     if (sa > q_1.s_lo) {
-        local = sa < q_1.s_hi;
+        local_2 = sa < q_1.s_hi;
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool _e31 = local;
+    bool _e31 = local_2;
     metal::float2 uf = _e31 ? metal::float2(0.0, 1.0) : metal::float2(1.0, 0.0);
     metal::float2 u = flat ? uf : metal::float2(metal::max(metal::min(u0_, u1_), 0.0), metal::min(metal::max(u0_, u1_), 1.0));
     return (u.x < u.y) ? (metal::float2(ta) + (0.5 * u)) : metal::float2(2.0, -1.0);
@@ -396,36 +426,6 @@ float mc_fast_half_length(
     float _e6 = mc_arc_primitive(sb_1);
     float _e7 = mc_arc_primitive(sa_1);
     return (metal::abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * metal::sqrt(1.0 + (sm * sm))) : ((0.5 * (_e6 - _e7)) / ds_1);
-}
-
-metal::float3 mc_combine(
-    metal::float4 t1_,
-    metal::float4 t2_,
-    float a1_,
-    float a2_,
-    float n_dot_wi,
-    float n_dot_wr
-) {
-    bool local_1 = {};
-    bool local_2 = {};
-    float c1_ = metal::saturate(a1_);
-    float c2_ = metal::saturate(a2_);
-    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_4 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
-    if (n_dot_wi > 0.0) {
-        local_1 = n_dot_wr > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = q_4 > MC_MIN_Q;
-    } else {
-        local_2 = false;
-    }
-    bool lit = local_2;
-    return lit ? (s_4 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McFastNode mc_low_node(

@@ -242,6 +242,29 @@ float mc_asin_fast(float x_1) {
     return (1.5707964 - _e2);
 }
 
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local = false;
+    bool local_1 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return (lit ? (s_3 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+}
+
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
@@ -283,26 +306,26 @@ vec4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, Mc
     vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     vec3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     vec3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 s_4 = (r * vec3(n0_.s, n1_.s, n2_.s));
     vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_3);
+    float surface = dot(_e36, s_4);
     float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
 }
 
 vec2 mc_fast_half_clip(McFastPre q_1, float sa, float sb, float ta) {
-    bool local = false;
+    bool local_2 = false;
     float ds = (sb - sa);
     bool flat_ = (abs(ds) < MC_FAST_MIN_DSLOPE);
     float inv = (1.0 / (flat_ ? 1.0 : ds));
     float u0_ = ((q_1.s_lo - sa) * inv);
     float u1_ = ((q_1.s_hi - sa) * inv);
     if ((sa > q_1.s_lo)) {
-        local = (sa < q_1.s_hi);
+        local_2 = (sa < q_1.s_hi);
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool _e31 = local;
+    bool _e31 = local_2;
     vec2 uf = (_e31 ? vec2(0.0, 1.0) : vec2(1.0, 0.0));
     vec2 u = (flat_ ? uf : vec2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
     return ((u.x < u.y) ? (vec2(ta) + (0.5 * u)) : vec2(2.0, -1.0));
@@ -323,29 +346,6 @@ float mc_fast_half_length(float sa_1, float sb_1) {
     float _e6 = mc_arc_primitive(sb_1);
     float _e7 = mc_arc_primitive(sa_1);
     return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
-}
-
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
-    bool local_1 = false;
-    bool local_2 = false;
-    float c1_ = clamp(a1_, 0.0, 1.0);
-    float c2_ = clamp(a2_, 0.0, 1.0);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
-    if ((n_dot_wi > 0.0)) {
-        local_1 = (n_dot_wr > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = (q_4 > MC_MIN_Q);
-    } else {
-        local_2 = false;
-    }
-    bool lit = local_2;
-    return (lit ? (s_4 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
 McFastNode mc_low_node(McFastPre q_2, float ca, float sa_2) {

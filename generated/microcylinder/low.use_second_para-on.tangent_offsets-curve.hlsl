@@ -313,6 +313,31 @@ float mc_asin_fast(float x_1)
     return (1.5707964 - _e2);
 }
 
+float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+
+    float c1_ = saturate(a1_);
+    float c2_ = saturate(a2_);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit_ = local_1;
+    return (lit_ ? (s_3 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
+}
+
 typedef float4 ret_Constructarray2_float4_[2];
 ret_Constructarray2_float4_ Constructarray2_float4_(float4 arg0, float4 arg1) {
     float4 ret[2] = { arg0, arg1 };
@@ -385,16 +410,16 @@ float4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, 
     float4 xe_1 = float4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     const float3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     const float3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    float3 s_3 = (r * float3(n0_.s, n1_.s, n2_.s));
+    float3 s_4 = (r * float3(n0_.s, n1_.s, n2_.s));
     float3 v_1 = (r * float3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_3);
+    float surface = dot(_e36, s_4);
     float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
 }
 
 float2 mc_fast_half_clip(McFastPre q_1, float sa, float sb, float ta)
 {
-    bool local = (bool)0;
+    bool local_2 = (bool)0;
 
     float ds = (sb - sa);
     bool flat = (abs(ds) < MC_FAST_MIN_DSLOPE);
@@ -402,11 +427,11 @@ float2 mc_fast_half_clip(McFastPre q_1, float sa, float sb, float ta)
     float u0_ = ((q_1.s_lo - sa) * inv);
     float u1_ = ((q_1.s_hi - sa) * inv);
     if ((sa > q_1.s_lo)) {
-        local = (sa < q_1.s_hi);
+        local_2 = (sa < q_1.s_hi);
     } else {
-        local = false;
+        local_2 = false;
     }
-    bool _e31 = local;
+    bool _e31 = local_2;
     float2 uf = (_e31 ? float2(0.0, 1.0) : float2(1.0, 0.0));
     float2 u = (flat ? uf : float2(max(min(u0_, u1_), 0.0), min(max(u0_, u1_), 1.0)));
     return ((u.x < u.y) ? ((ta).xx + (0.5 * u)) : float2(2.0, -1.0));
@@ -430,31 +455,6 @@ float mc_fast_half_length(float sa_1, float sb_1)
     const float _e6 = mc_arc_primitive(sb_1);
     const float _e7 = mc_arc_primitive(sa_1);
     return ((abs(ds_1) < MC_FAST_MIN_DSLOPE) ? (0.5 * sqrt((1.0 + (sm * sm)))) : ((0.5 * (_e6 - _e7)) / ds_1));
-}
-
-float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
-{
-    bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
-
-    float c1_ = saturate(a1_);
-    float c2_ = saturate(a2_);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    float3 s_4 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
-    if ((n_dot_wi > 0.0)) {
-        local_1 = (n_dot_wr > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e37 = local_1;
-    if (_e37) {
-        local_2 = (q_4 > MC_MIN_Q);
-    } else {
-        local_2 = false;
-    }
-    bool lit_ = local_2;
-    return (lit_ ? (s_4 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
 McFastNode ConstructMcFastNode(float arg0, float arg1, float arg2, float arg3) {

@@ -291,6 +291,36 @@ float mc_offset_at(
     return ((k >= 4) ? b : a)[k & 3];
 }
 
+metal::float3 mc_combine(
+    metal::float4 t1_,
+    metal::float4 t2_,
+    float a1_,
+    float a2_,
+    float n_dot_wi,
+    float n_dot_wr
+) {
+    bool local = {};
+    bool local_1 = {};
+    float c1_ = metal::saturate(a1_);
+    float c2_ = metal::saturate(a2_);
+    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
+    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
+    metal::float3 s_2 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
+    if (n_dot_wi > 0.0) {
+        local = n_dot_wr > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = q_4 > MC_MIN_Q;
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return lit ? (s_2 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
+}
+
 type_13 mc_normal4_(
     metal::float4 t
 ) {
@@ -349,41 +379,11 @@ metal::float4 mc_fast_gl3_(
     metal::float4 xe_1 = metal::float4(n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x)), n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x)), n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x)), n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x)));
     metal::float3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     metal::float3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    metal::float3 s_2 = r * metal::float3(n0_.s, n1_.s, n2_.s);
+    metal::float3 s_3 = r * metal::float3(n0_.s, n1_.s, n2_.s);
     metal::float3 v_1 = r * metal::float3(n0_.v, n1_.v, n2_.v);
-    float surface = metal::dot(_e36, s_2);
+    float surface = metal::dot(_e36, s_3);
     float volume = ((1.0 - th_1.kd) * metal::dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z));
     return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float3(n0_.p, n1_.p, n2_.p)));
-}
-
-metal::float3 mc_combine(
-    metal::float4 t1_,
-    metal::float4 t2_,
-    float a1_,
-    float a2_,
-    float n_dot_wi,
-    float n_dot_wr
-) {
-    bool local = {};
-    bool local_1 = {};
-    float c1_ = metal::saturate(a1_);
-    float c2_ = metal::saturate(a2_);
-    float gap = metal::max((1.0 - c1_) - c2_, 0.0);
-    float q_4 = ((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * metal::max(n_dot_wi, 0.0));
-    metal::float3 s_3 = metal::max((c1_ * t1_.xyz) + (c2_ * t2_.xyz), metal::float3(0.0));
-    if (n_dot_wi > 0.0) {
-        local = n_dot_wr > 0.0;
-    } else {
-        local = false;
-    }
-    bool _e37 = local;
-    if (_e37) {
-        local_1 = q_4 > MC_MIN_Q;
-    } else {
-        local_1 = false;
-    }
-    bool lit = local_1;
-    return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
 McFastNode mc_low_node(

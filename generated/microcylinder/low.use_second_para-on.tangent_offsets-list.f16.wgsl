@@ -256,6 +256,30 @@ fn mc_offset_at(a: vec4<f32>, b: vec4<f32>, k: i32) -> f32 {
     return select(a, b, (k >= 4i))[(k & 3i)];
 }
 
+fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
+    var local: bool;
+    var local_1: bool;
+
+    let c1_ = saturate(a1_);
+    let c2_ = saturate(a2_);
+    let gap = max(((1f - c1_) - c2_), 0f);
+    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
+    let s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
+    if (n_dot_wi > 0f) {
+        local = (n_dot_wr > 0f);
+    } else {
+        local = false;
+    }
+    let _e37 = local;
+    if _e37 {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    let lit = local_1;
+    return select(vec3(0f), (s_2 / vec3(max(q_4, MC_MIN_Q))), lit);
+}
+
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
@@ -297,35 +321,11 @@ fn mc_fast_gl3_(q: McFastPre, th_1: McThread, n0_: McFastNode, n1_: McFastNode, 
     let xe_1 = vec4<f32>((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     let _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     let _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    let s_2 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
+    let s_3 = (r * vec3<f32>(n0_.s, n1_.s, n2_.s));
     let v_1 = (r * vec3<f32>(n0_.v, n1_.v, n2_.v));
-    let surface = dot(_e36, s_2);
+    let surface = dot(_e36, s_3);
     let volume = (((1f - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3<f32>(n0_.p, n1_.p, n2_.p)));
-}
-
-fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32, n_dot_wr: f32) -> vec3<f32> {
-    var local: bool;
-    var local_1: bool;
-
-    let c1_ = saturate(a1_);
-    let c2_ = saturate(a2_);
-    let gap = max(((1f - c1_) - c2_), 0f);
-    let q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0f)));
-    let s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0f));
-    if (n_dot_wi > 0f) {
-        local = (n_dot_wr > 0f);
-    } else {
-        local = false;
-    }
-    let _e37 = local;
-    if _e37 {
-        local_1 = (q_4 > MC_MIN_Q);
-    } else {
-        local_1 = false;
-    }
-    let lit = local_1;
-    return select(vec3(0f), (s_3 / vec3(max(q_4, MC_MIN_Q))), lit);
 }
 
 fn mc_low_node(q_1: McFastPre, ca: f32, sa: f32) -> McFastNode {

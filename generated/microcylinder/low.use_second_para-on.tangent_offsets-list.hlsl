@@ -328,6 +328,31 @@ float mc_offset_at(float4 a, float4 b, int k)
     return ((k >= int(4)) ? b : a)[min(uint((k & int(3))), 3u)];
 }
 
+float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+
+    float c1_ = saturate(a1_);
+    float c2_ = saturate(a2_);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    float3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit_ = local_1;
+    return (lit_ ? (s_2 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
+}
+
 typedef float4 ret_Constructarray2_float4_[2];
 ret_Constructarray2_float4_ Constructarray2_float4_(float4 arg0, float4 arg1) {
     float4 ret[2] = { arg0, arg1 };
@@ -400,36 +425,11 @@ float4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, 
     float4 xe_1 = float4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     const float3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     const float3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    float3 s_2 = (r * float3(n0_.s, n1_.s, n2_.s));
+    float3 s_3 = (r * float3(n0_.s, n1_.s, n2_.s));
     float3 v_1 = (r * float3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_2);
+    float surface = dot(_e36, s_3);
     float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float3(n0_.p, n1_.p, n2_.p)));
-}
-
-float3 mc_combine(float4 t1_, float4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr)
-{
-    bool local = (bool)0;
-    bool local_1 = (bool)0;
-
-    float c1_ = saturate(a1_);
-    float c2_ = saturate(a2_);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    float3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), (0.0).xxx);
-    if ((n_dot_wi > 0.0)) {
-        local = (n_dot_wr > 0.0);
-    } else {
-        local = false;
-    }
-    bool _e37 = local;
-    if (_e37) {
-        local_1 = (q_4 > MC_MIN_Q);
-    } else {
-        local_1 = false;
-    }
-    bool lit_ = local_1;
-    return (lit_ ? (s_3 / (max(q_4, MC_MIN_Q)).xxx) : (0.0).xxx);
 }
 
 McFastNode ConstructMcFastNode(float arg0, float arg1, float arg2, float arg3) {

@@ -246,6 +246,29 @@ float mc_offset_at(vec4 a, vec4 b, int k) {
     return ((k >= 4) ? b : a)[(k & 3)];
 }
 
+vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
+    bool local = false;
+    bool local_1 = false;
+    float c1_ = clamp(a1_, 0.0, 1.0);
+    float c2_ = clamp(a2_, 0.0, 1.0);
+    float gap = max(((1.0 - c1_) - c2_), 0.0);
+    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
+    vec3 s_2 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
+    if ((n_dot_wi > 0.0)) {
+        local = (n_dot_wr > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e37 = local;
+    if (_e37) {
+        local_1 = (q_4 > MC_MIN_Q);
+    } else {
+        local_1 = false;
+    }
+    bool lit = local_1;
+    return (lit ? (s_2 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
+}
+
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
@@ -287,34 +310,11 @@ vec4 mc_fast_gl3_(McFastPre q, McThread th_1, McFastNode n0_, McFastNode n1_, Mc
     vec4 xe_1 = vec4((n0_.x + (MC_GL3_E0_ * (n1_.x - n0_.x))), (n0_.x + (MC_GL3_E1_ * (n1_.x - n0_.x))), (n2_.x - (MC_GL3_E1_ * (n2_.x - n1_.x))), (n2_.x - (MC_GL3_E0_ * (n2_.x - n1_.x))));
     vec3 _e36 = mc_cell_means(xe_1, q.inv_gamma_s);
     vec3 _e38 = mc_cell_means(xe_1, q.inv_gamma_v);
-    vec3 s_2 = (r * vec3(n0_.s, n1_.s, n2_.s));
+    vec3 s_3 = (r * vec3(n0_.s, n1_.s, n2_.s));
     vec3 v_1 = (r * vec3(n0_.v, n1_.v, n2_.v));
-    float surface = dot(_e36, s_2);
+    float surface = dot(_e36, s_3);
     float volume = (((1.0 - th_1.kd) * dot(_e38, v_1)) + (th_1.kd * ((v_1.x + v_1.y) + v_1.z)));
     return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec3(n0_.p, n1_.p, n2_.p)));
-}
-
-vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float n_dot_wr) {
-    bool local = false;
-    bool local_1 = false;
-    float c1_ = clamp(a1_, 0.0, 1.0);
-    float c2_ = clamp(a2_, 0.0, 1.0);
-    float gap = max(((1.0 - c1_) - c2_), 0.0);
-    float q_4 = (((c1_ * t1_.w) + (c2_ * t2_.w)) + (gap * max(n_dot_wi, 0.0)));
-    vec3 s_3 = max(((c1_ * t1_.xyz) + (c2_ * t2_.xyz)), vec3(0.0));
-    if ((n_dot_wi > 0.0)) {
-        local = (n_dot_wr > 0.0);
-    } else {
-        local = false;
-    }
-    bool _e37 = local;
-    if (_e37) {
-        local_1 = (q_4 > MC_MIN_Q);
-    } else {
-        local_1 = false;
-    }
-    bool lit = local_1;
-    return (lit ? (s_3 / vec3(max(q_4, MC_MIN_Q))) : vec3(0.0));
 }
 
 McFastNode mc_low_node(McFastPre q_1, float ca, float sa) {

@@ -1,13 +1,15 @@
 // @include "lib/forward.wgsl"
 // @include "lib/microcylinder.wgsl"
+// @include "lib/microcylinder_nodes.wgsl"
 //
 // microcylinder: woven cloth from two thread sets (seed 000; Sadeghi,
 // Bisker, De Deken, Jensen 2013). Returns linear HDR radiance.
 //
 // Thread set 1 (warp) runs along the mesh tangent, thread set 2 (weft) along
 // the bitangent; each is tilted about the other by its tangent offsets. The
-// BSDF itself is the pure code of lib/microcylinder.wgsl (see its header for
-// the formulas); this file reads the uniforms and sums over the main light:
+// BSDF itself is the pure code of lib/microcylinder.wgsl (the model, the
+// reference; see its header for the formulas) and lib/microcylinder_nodes.wgsl
+// (the node rule of low and fast); this file reads the uniforms and sums over the main light:
 //
 // Tiers (WEFT_TIER):
 //   fast      = the same offset distribution and lobe with a few nodes per

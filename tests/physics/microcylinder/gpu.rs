@@ -134,15 +134,16 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
 "#;
 
 /// The compute module: the engine-interface constants the library uses, then
-/// lib/brdf.wgsl, lib/half.wgsl (with `weft_half` = f32), lib/microcylinder.wgsl
-/// and the entry point.
+/// lib/brdf.wgsl, lib/half.wgsl (with `weft_half` = f32), lib/microcylinder.wgsl,
+/// lib/microcylinder_nodes.wgsl and the entry point.
 pub(super) fn compose_shader() -> String {
     let root = materials_root();
     let read = |p: &str| {
         std::fs::read_to_string(root.join(p))
             .unwrap_or_else(|e| panic!("{}: {e}", root.join(p).display()))
     };
-    let lib = read("lib/microcylinder.wgsl");
+    // The model and reference, then the node-rule tiers (low, fast).
+    let lib = read("lib/microcylinder.wgsl") + "\n" + &read("lib/microcylinder_nodes.wgsl");
     assert!(
         lib.contains(&format!("const MC_CURVE_SAMPLES: u32 = {CURVE_SAMPLES}u;")),
         "MC_CURVE_SAMPLES in lib/microcylinder.wgsl must be {CURVE_SAMPLES}"
@@ -163,7 +164,7 @@ pub(super) fn compose_shader() -> String {
     ] {
         assert!(
             !code.contains(forbidden),
-            "lib/microcylinder.wgsl uses `{forbidden}`"
+            "lib/microcylinder{{,_nodes}}.wgsl uses `{forbidden}`"
         );
     }
     // The low tier's code in the library computes in `weft_half`
