@@ -96,6 +96,7 @@ struct WeftFilmSeries {
 
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
+static const float film_sensitivity_opd_max = 16000.0;
 static const uint COLOR_MODE_HUE_RING = 0u;
 static const uint COLOR_MODE_CUSTOM = 1u;
 static const uint ANISO_COLOR_OFF = 0u;
@@ -114,13 +115,6 @@ static const float WEFT_FILM_LAMBDA_MIN = 380.0;
 static const float WEFT_FILM_LAMBDA_MAX = 780.0;
 static const float WEFT_FILM_FADE_NM = 30.0;
 static const float3x3 WEFT_XYZ_TO_REC709_ = float3x3(float3(3.2404542, -0.969266, 0.0556434), float3(-1.5371385, 1.8760108, -0.2040259), float3(-0.4985314, 0.041556, 1.0572252));
-static const float4 WEFT_FILM_LOBE_WEIGHT_A = float4(112.289, 17.9875, -22.8564, 14.636);
-static const float4 WEFT_FILM_LOBE_WEIGHT_B = float4(27.8908, 64.448, 5.9984, 99.7587);
-static const float4 WEFT_FILM_LOBE_MU_A = float4(1.64821, 2.23783, 1.51945, 1.95281);
-static const float4 WEFT_FILM_LOBE_MU_B = float4(1.87261, 1.72342, 2.31367, 2.20514);
-static const float4 WEFT_FILM_LOBE_SIGMA_A = float4(0.112563, 0.097781, 0.0710853, 0.142693);
-static const float4 WEFT_FILM_LOBE_SIGMA_B = float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-static const float3 WEFT_FILM_SENSITIVITY_AT_ZERO = float3(107.41976, 106.97481, 105.7571);
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);
@@ -134,10 +128,12 @@ cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 #define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
+#define material_clamp_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[2]])
 Texture2D<float4> base_map : register(t3, space1);
 Texture2D<float4> rmo_map : register(t5, space1);
 Texture2D<float4> offset_map : register(t6, space1);
 Texture2D<float4> direction_map : register(t8, space1);
+Texture2D<float4> film_sensitivity : register(t9, space1);
 
 struct VertexOutput_vs_main {
     float3 world_position_2 : LOC0;
@@ -154,6 +150,14 @@ struct FragmentInput_fs_main {
     float2 uv0_1 : LOC3;
     float4 clip_position_1 : SV_Position;
 };
+
+float4 table_film_sensitivity(float2 uv)
+{
+    float2 size = float2(2048.0, 2.0);
+    float2 st_1 = (((clamp(uv, (0.0).xx, (1.0).xx) * (size - (1.0).xx)) + (0.5).xx) / size);
+    float4 _e20 = film_sensitivity.SampleLevel(material_clamp_sampler, st_1, 0.0);
+    return _e20;
+}
 
 float weft_pow5_(float x)
 {
@@ -288,8 +292,8 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
 
 float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
 {
-    float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    float2 uv_2 = float2(saturate(n_dot_v_1), saturate(roughness_5));
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_2, 0.0);
     return _e8.xy;
 }
 
@@ -341,9 +345,9 @@ float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
     return float3x3(t, b_1, n_5);
 }
 
-float2 weft_transform_uv(float2 uv, float4 st)
+float2 weft_transform_uv(float2 uv_1, float4 st)
 {
-    return ((uv * st.xy) + st.zw);
+    return ((uv_1 * st.xy) + st.zw);
 }
 
 float3 weft_ior_from_f0_(float3 f0_2)
@@ -407,62 +411,24 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return weftfilmstack_1;
 }
 
-float3 weft_film_rgb_of_xyz(uint axis)
+float3 weft_film_sensitivity(float opd_nm)
 {
-    return (WEFT_XYZ_TO_REC709_[min(uint(axis), 2u)] / float3(130.93048, 100.96242, 95.96065));
+    const float4 _e5 = table_film_sensitivity(float2((opd_nm / film_sensitivity_opd_max), 0.0));
+    return _e5.xyz;
 }
 
-float3 weft_film_lobe_orders(float phase, float mu, float sigma, float3 k1_, float3 k2_, float3 k3_, float3 k4_)
+float3 weft_film_orders(float opd_nm_1, WeftFilmSeries s, WeftFilmSeries p)
 {
-    float c1_ = cos((phase * mu));
-    float sg = (phase * sigma);
-    float g1_ = exp(((-0.5 * sg) * sg));
-    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
-    float c3_ = (((2.0 * c1_) * c2_) - c1_);
-    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
-    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    float g3_ = ((g2_ * g2_) * g1_);
-    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
-}
-
-float3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p)
-{
-    float3 sum = (float3)0;
-
-    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
-    float3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
-    float3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    float3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    float3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    const float3 _e60 = weft_film_rgb_of_xyz(0u);
-    const float3 _e62 = weft_film_rgb_of_xyz(1u);
-    const float3 _e64 = weft_film_rgb_of_xyz(2u);
-    const float3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
-    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
-    float3 _e74 = sum;
-    const float3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
-    float3 _e82 = sum;
-    const float3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
-    float3 _e90 = sum;
-    const float3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
-    float3 _e98 = sum;
-    const float3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
-    float3 _e106 = sum;
-    const float3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
-    float3 _e114 = sum;
-    const float3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
-    float3 _e122 = sum;
-    const float3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
-    float3 _e130 = sum;
-    return (2.0 * _e130);
+    float3 k1_ = ((s.first * s.ratio) + (p.first * p.ratio));
+    float3 k2_ = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    float3 k3_ = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    float3 k4_ = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    const float3 _e55 = weft_film_sensitivity(opd_nm_1);
+    const float3 _e59 = weft_film_sensitivity((2.0 * opd_nm_1));
+    const float3 _e64 = weft_film_sensitivity((3.0 * opd_nm_1));
+    const float3 _e69 = weft_film_sensitivity((4.0 * opd_nm_1));
+    float3 sum = ((((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69));
+    return (2.0 * sum);
 }
 
 WeftFilmSeries ConstructWeftFilmSeries(float3 arg0, float3 arg1, float3 arg2) {

@@ -89,6 +89,7 @@ struct WeftFilmSeries {
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
+constant float film_sensitivity_opd_max = 16000.0;
 constant uint COLOR_MODE_HUE_RING = 0u;
 constant uint COLOR_MODE_CUSTOM = 1u;
 constant uint ANISO_COLOR_OFF = 0u;
@@ -107,13 +108,17 @@ constant float WEFT_FILM_LAMBDA_MIN = 380.0;
 constant float WEFT_FILM_LAMBDA_MAX = 780.0;
 constant float WEFT_FILM_FADE_NM = 30.0;
 constant metal::float3x3 WEFT_XYZ_TO_REC709_ = metal::float3x3(metal::float3(3.2404542, -0.969266, 0.0556434), metal::float3(-1.5371385, 1.8760108, -0.2040259), metal::float3(-0.4985314, 0.041556, 1.0572252));
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_A = metal::float4(112.289, 17.9875, -22.8564, 14.636);
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_B = metal::float4(27.8908, 64.448, 5.9984, 99.7587);
-constant metal::float4 WEFT_FILM_LOBE_MU_A = metal::float4(1.64821, 2.23783, 1.51945, 1.95281);
-constant metal::float4 WEFT_FILM_LOBE_MU_B = metal::float4(1.87261, 1.72342, 2.31367, 2.20514);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_A = metal::float4(0.112563, 0.097781, 0.0710853, 0.142693);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_B = metal::float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-constant metal::float3 WEFT_FILM_SENSITIVITY_AT_ZERO = metal::float3(107.41976, 106.97481, 105.7571);
+
+metal::float4 table_film_sensitivity(
+    metal::float2 uv,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
+) {
+    metal::float2 size = metal::float2(2048.0, 2.0);
+    metal::float2 st_1 = ((metal::clamp(uv, metal::float2(0.0), metal::float2(1.0)) * (size - metal::float2(1.0))) + metal::float2(0.5)) / size;
+    metal::float4 _e20 = film_sensitivity.sample(material_clamp_sampler, st_1, metal::level(0.0));
+    return _e20;
+}
 
 float weft_pow5_(
     float x
@@ -273,8 +278,8 @@ metal::float2 weft_env_brdf_lut(
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
 ) {
-    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_2, metal::level(0.0));
     return _e8.xy;
 }
 
@@ -300,10 +305,10 @@ WeftLightGeometry weft_main_light_geometry(
 }
 
 metal::float2 weft_transform_uv(
-    metal::float2 uv,
+    metal::float2 uv_1,
     metal::float4 st
 ) {
-    return (uv * st.xy) + st.zw;
+    return (uv_1 * st.xy) + st.zw;
 }
 
 metal::float3 weft_ior_from_f0_(
@@ -363,72 +368,32 @@ WeftFilmStack weft_film_stack(
     return WeftFilmStack {_e10, cos2_1, _e29, _e31, false};
 }
 
-metal::float3 weft_film_rgb_of_xyz(
-    uint axis
+metal::float3 weft_film_sensitivity(
+    float opd_nm,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
-    return WEFT_XYZ_TO_REC709_[axis] / metal::float3(130.93048, 100.96242, 95.96065);
-}
-
-metal::float3 weft_film_lobe_orders(
-    float phase,
-    float mu,
-    float sigma,
-    metal::float3 k1_,
-    metal::float3 k2_,
-    metal::float3 k3_,
-    metal::float3 k4_
-) {
-    float c1_ = metal::cos(phase * mu);
-    float sg = phase * sigma;
-    float g1_ = metal::exp((-0.5 * sg) * sg);
-    float c2_ = ((2.0 * c1_) * c1_) - 1.0;
-    float c3_ = ((2.0 * c1_) * c2_) - c1_;
-    float c4_ = ((2.0 * c2_) * c2_) - 1.0;
-    float g2_ = (g1_ * g1_) * (g1_ * g1_);
-    float g3_ = (g2_ * g2_) * g1_;
-    float g4_ = (g2_ * g2_) * (g2_ * g2_);
-    return (((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_));
+    metal::float4 _e5 = table_film_sensitivity(metal::float2(opd_nm / film_sensitivity_opd_max, 0.0), material_clamp_sampler, film_sensitivity);
+    return _e5.xyz;
 }
 
 metal::float3 weft_film_orders(
-    float opd_nm,
+    float opd_nm_1,
     WeftFilmSeries s,
-    WeftFilmSeries p
+    WeftFilmSeries p,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
-    metal::float3 sum = {};
-    float phase_1 = (6.2831855 * opd_nm) * 0.001;
-    metal::float3 k1_1 = (s.first * s.ratio) + (p.first * p.ratio);
-    metal::float3 k2_1 = ((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio);
-    metal::float3 k3_1 = (((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio);
-    metal::float3 k4_1 = ((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio));
-    metal::float3 _e60 = weft_film_rgb_of_xyz(0u);
-    metal::float3 _e62 = weft_film_rgb_of_xyz(1u);
-    metal::float3 _e64 = weft_film_rgb_of_xyz(2u);
-    metal::float3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
-    sum = (WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71;
-    metal::float3 _e74 = sum;
-    metal::float3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
-    sum = _e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79);
-    metal::float3 _e82 = sum;
-    metal::float3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
-    sum = _e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87);
-    metal::float3 _e90 = sum;
-    metal::float3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
-    sum = _e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95);
-    metal::float3 _e98 = sum;
-    metal::float3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
-    sum = _e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103);
-    metal::float3 _e106 = sum;
-    metal::float3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
-    sum = _e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111);
-    metal::float3 _e114 = sum;
-    metal::float3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
-    sum = _e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119);
-    metal::float3 _e122 = sum;
-    metal::float3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
-    sum = _e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127);
-    metal::float3 _e130 = sum;
-    return 2.0 * _e130;
+    metal::float3 k1_ = (s.first * s.ratio) + (p.first * p.ratio);
+    metal::float3 k2_ = ((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio);
+    metal::float3 k3_ = (((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio);
+    metal::float3 k4_ = ((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio));
+    metal::float3 _e55 = weft_film_sensitivity(opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e59 = weft_film_sensitivity(2.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e64 = weft_film_sensitivity(3.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e69 = weft_film_sensitivity(4.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 sum = (((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69);
+    return 2.0 * sum;
 }
 
 WeftFilmSeries weft_film_series(
@@ -449,7 +414,9 @@ metal::float3 weft_film_fourier_layers(
     float d1_,
     float d2_,
     float film_ior_2,
-    metal::float3 base_f0_1
+    metal::float3 base_f0_1,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
     float d_mean = 0.5 * (metal::max(d1_, 0.0) + metal::max(d2_, 0.0));
     WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
@@ -459,9 +426,9 @@ metal::float3 weft_film_fourier_layers(
     WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_.inner[0]);
     WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_.inner[1]);
     float path = (2.0 * _e12.n2_) * _e12.cos2_;
-    metal::float3 _e37 = weft_film_orders(path * metal::max(d1_, 0.0), _e20, _e25);
+    metal::float3 _e37 = weft_film_orders(path * metal::max(d1_, 0.0), _e20, _e25, material_clamp_sampler, film_sensitivity);
     metal::float3 r1_ = (_e20.dc + _e25.dc) + _e37;
-    metal::float3 _e45 = weft_film_orders(path * metal::max(d2_, 0.0), _e20, _e25);
+    metal::float3 _e45 = weft_film_orders(path * metal::max(d2_, 0.0), _e20, _e25, material_clamp_sampler, film_sensitivity);
     metal::float3 r2_ = (_e20.dc + _e25.dc) + _e45;
     return metal::clamp(0.25 * (r1_ + r2_), metal::float3(0.0), metal::float3(1.0));
 }
@@ -526,9 +493,11 @@ fragment fs_mainOutput fs_main(
 , metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
 , metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_clamp_sampler [[sampler(3)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> offset_map [[texture(4)]]
+, metal::texture2d<float, metal::access::sample> film_sensitivity [[texture(5)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -589,11 +558,11 @@ fragment fs_mainOutput fs_main(
         {
             float _e103 = film_cos;
             float _e106 = material.film_ior;
-            metal::float3 _e107 = weft_film_fourier_layers(_e103, d1_1, d2_1, _e106, f0_3);
+            metal::float3 _e107 = weft_film_fourier_layers(_e103, d1_1, d2_1, _e106, f0_3, material_clamp_sampler, film_sensitivity);
             film_view = _e107;
             float _e108 = light_cos;
             float _e111 = material.film_ior;
-            metal::float3 _e112 = weft_film_fourier_layers(_e108, d1_1, d2_1, _e111, f0_3);
+            metal::float3 _e112 = weft_film_fourier_layers(_e108, d1_1, d2_1, _e111, f0_3, material_clamp_sampler, film_sensitivity);
             film_light = _e112;
         }
         metal::float3 _e113 = f_light;

@@ -71,6 +71,7 @@ struct WeftFilmSeries {
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
+const float film_sensitivity_opd_max = 16000.0;
 const uint COLOR_MODE_HUE_RING = 0u;
 const uint COLOR_MODE_CUSTOM = 1u;
 const uint ANISO_COLOR_OFF = 0u;
@@ -89,13 +90,6 @@ const float WEFT_FILM_LAMBDA_MIN = 380.0;
 const float WEFT_FILM_LAMBDA_MAX = 780.0;
 const float WEFT_FILM_FADE_NM = 30.0;
 const mat3x3 WEFT_XYZ_TO_REC709_ = mat3x3(vec3(3.2404542, -0.969266, 0.0556434), vec3(-1.5371385, 1.8760108, -0.2040259), vec3(-0.4985314, 0.041556, 1.0572252));
-const vec4 WEFT_FILM_LOBE_WEIGHT_A = vec4(112.289, 17.9875, -22.8564, 14.636);
-const vec4 WEFT_FILM_LOBE_WEIGHT_B = vec4(27.8908, 64.448, 5.9984, 99.7587);
-const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
-const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
-const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
-const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
@@ -224,8 +218,8 @@ WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
     return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
-vec2 weft_transform_uv(vec2 uv, vec4 st) {
-    return ((uv * st.xy) + st.zw);
+vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
+    return ((uv_1 * st.xy) + st.zw);
 }
 
 vec3 weft_ior_from_f0_(vec3 f0_2) {
@@ -265,60 +259,6 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-vec3 weft_film_rgb_of_xyz(uint axis) {
-    return (WEFT_XYZ_TO_REC709_[axis] / vec3(130.93048, 100.96242, 95.96065));
-}
-
-vec3 weft_film_lobe_orders(float phase, float mu, float sigma, vec3 k1_, vec3 k2_, vec3 k3_, vec3 k4_) {
-    float c1_ = cos((phase * mu));
-    float sg = (phase * sigma);
-    float g1_ = exp(((-0.5 * sg) * sg));
-    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
-    float c3_ = (((2.0 * c1_) * c2_) - c1_);
-    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
-    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    float g3_ = ((g2_ * g2_) * g1_);
-    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
-}
-
-vec3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p) {
-    vec3 sum = vec3(0.0);
-    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
-    vec3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
-    vec3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    vec3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    vec3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    vec3 _e60 = weft_film_rgb_of_xyz(0u);
-    vec3 _e62 = weft_film_rgb_of_xyz(1u);
-    vec3 _e64 = weft_film_rgb_of_xyz(2u);
-    vec3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
-    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
-    vec3 _e74 = sum;
-    vec3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
-    vec3 _e82 = sum;
-    vec3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
-    vec3 _e90 = sum;
-    vec3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
-    vec3 _e98 = sum;
-    vec3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
-    vec3 _e106 = sum;
-    vec3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
-    vec3 _e114 = sum;
-    vec3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
-    vec3 _e122 = sum;
-    vec3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
-    vec3 _e130 = sum;
-    return (2.0 * _e130);
-}
-
 WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
     float big_r12_ = (r12_ * r12_);
     float t121_ = (1.0 - big_r12_);
@@ -327,22 +267,6 @@ WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
     vec3 rs_1 = (((t121_ * t121_) * big_r23_) / (vec3(1.0) - big_r123_));
     vec3 ratio = clamp((-(r12_) * r23_), vec3(-0.99995), vec3(0.99995));
     return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
-}
-
-vec3 weft_film_fourier_layers(float cos_theta1_1, float d1_, float d2_, float film_ior_2, vec3 base_f0_1) {
-    float d_mean = (0.5 * (max(d1_, 0.0) + max(d2_, 0.0)));
-    WeftFilmStack _e12 = weft_film_stack(cos_theta1_1, d_mean, film_ior_2, base_f0_1);
-    if (_e12.total_internal_reflection) {
-        return vec3(1.0);
-    }
-    WeftFilmSeries _e20 = weft_film_series(_e12.r12_.x, _e12.r23_[0]);
-    WeftFilmSeries _e25 = weft_film_series(_e12.r12_.y, _e12.r23_[1]);
-    float path = ((2.0 * _e12.n2_) * _e12.cos2_);
-    vec3 _e37 = weft_film_orders((path * max(d1_, 0.0)), _e20, _e25);
-    vec3 r1_ = ((_e20.dc + _e25.dc) + _e37);
-    vec3 _e45 = weft_film_orders((path * max(d2_, 0.0)), _e20, _e25);
-    vec3 r2_ = ((_e20.dc + _e25.dc) + _e45);
-    return clamp((0.25 * (r1_ + r2_)), vec3(0.0), vec3(1.0));
 }
 
 void main() {

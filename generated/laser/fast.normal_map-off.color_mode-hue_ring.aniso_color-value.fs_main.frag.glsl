@@ -71,6 +71,7 @@ struct WeftFilmSeries {
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
+const float film_sensitivity_opd_max = 16000.0;
 const uint COLOR_MODE_HUE_RING = 0u;
 const uint COLOR_MODE_CUSTOM = 1u;
 const uint ANISO_COLOR_OFF = 0u;
@@ -89,13 +90,6 @@ const float WEFT_FILM_LAMBDA_MIN = 380.0;
 const float WEFT_FILM_LAMBDA_MAX = 780.0;
 const float WEFT_FILM_FADE_NM = 30.0;
 const mat3x3 WEFT_XYZ_TO_REC709_ = mat3x3(vec3(3.2404542, -0.969266, 0.0556434), vec3(-1.5371385, 1.8760108, -0.2040259), vec3(-0.4985314, 0.041556, 1.0572252));
-const vec4 WEFT_FILM_LOBE_WEIGHT_A = vec4(112.289, 17.9875, -22.8564, 14.636);
-const vec4 WEFT_FILM_LOBE_WEIGHT_B = vec4(27.8908, 64.448, 5.9984, 99.7587);
-const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
-const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
-const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
-const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -111,11 +105,20 @@ layout(binding = 3) uniform sampler2D _group_1_binding_5_fs;
 
 layout(binding = 4) uniform sampler2D _group_1_binding_6_fs;
 
+layout(binding = 5) uniform sampler2D _group_1_binding_9_fs;
+
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
+
+vec4 table_film_sensitivity(vec2 uv) {
+    vec2 size = vec2(2048.0, 2.0);
+    vec2 st_1 = (((clamp(uv, vec2(0.0), vec2(1.0)) * (size - vec2(1.0))) + vec2(0.5)) / size);
+    vec4 _e20 = textureLod(_group_1_binding_9_fs, vec2(st_1), 0.0);
+    return _e20;
+}
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -232,8 +235,8 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
 }
 
 vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
-    vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    vec2 uv_2 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_2), 0.0);
     return _e8.xy;
 }
 
@@ -262,8 +265,8 @@ mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
     return mat3x3(t, b_1, n_5);
 }
 
-vec2 weft_transform_uv(vec2 uv, vec4 st) {
-    return ((uv * st.xy) + st.zw);
+vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
+    return ((uv_1 * st.xy) + st.zw);
 }
 
 vec3 weft_ior_from_f0_(vec3 f0_2) {
@@ -303,58 +306,22 @@ WeftFilmStack weft_film_stack(float cos_theta1_, float thickness_nm_1, float fil
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-vec3 weft_film_rgb_of_xyz(uint axis) {
-    return (WEFT_XYZ_TO_REC709_[axis] / vec3(130.93048, 100.96242, 95.96065));
+vec3 weft_film_sensitivity(float opd_nm) {
+    vec4 _e5 = table_film_sensitivity(vec2((opd_nm / film_sensitivity_opd_max), 0.0));
+    return _e5.xyz;
 }
 
-vec3 weft_film_lobe_orders(float phase, float mu, float sigma, vec3 k1_, vec3 k2_, vec3 k3_, vec3 k4_) {
-    float c1_ = cos((phase * mu));
-    float sg = (phase * sigma);
-    float g1_ = exp(((-0.5 * sg) * sg));
-    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
-    float c3_ = (((2.0 * c1_) * c2_) - c1_);
-    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
-    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    float g3_ = ((g2_ * g2_) * g1_);
-    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
-}
-
-vec3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p) {
-    vec3 sum = vec3(0.0);
-    float phase_1 = ((6.2831855 * opd_nm) * 0.001);
-    vec3 k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
-    vec3 k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    vec3 k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    vec3 k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    vec3 _e60 = weft_film_rgb_of_xyz(0u);
-    vec3 _e62 = weft_film_rgb_of_xyz(1u);
-    vec3 _e64 = weft_film_rgb_of_xyz(2u);
-    vec3 _e71 = weft_film_lobe_orders(phase_1, 1.64821, 0.112563, k1_1, k2_1, k3_1, k4_1);
-    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
-    vec3 _e74 = sum;
-    vec3 _e79 = weft_film_lobe_orders(phase_1, 2.23783, 0.097781, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
-    vec3 _e82 = sum;
-    vec3 _e87 = weft_film_lobe_orders(phase_1, 1.51945, 0.0710853, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
-    vec3 _e90 = sum;
-    vec3 _e95 = weft_film_lobe_orders(phase_1, 1.95281, 0.142693, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
-    vec3 _e98 = sum;
-    vec3 _e103 = weft_film_lobe_orders(phase_1, 1.87261, 0.0790523, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
-    vec3 _e106 = sum;
-    vec3 _e111 = weft_film_lobe_orders(phase_1, 1.72342, 0.0996288, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
-    vec3 _e114 = sum;
-    vec3 _e119 = weft_film_lobe_orders(phase_1, 2.31367, 0.0384759, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
-    vec3 _e122 = sum;
-    vec3 _e127 = weft_film_lobe_orders(phase_1, 2.20514, 0.109465, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
-    vec3 _e130 = sum;
-    return (2.0 * _e130);
+vec3 weft_film_orders(float opd_nm_1, WeftFilmSeries s, WeftFilmSeries p) {
+    vec3 k1_ = ((s.first * s.ratio) + (p.first * p.ratio));
+    vec3 k2_ = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    vec3 k3_ = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    vec3 k4_ = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    vec3 _e55 = weft_film_sensitivity(opd_nm_1);
+    vec3 _e59 = weft_film_sensitivity((2.0 * opd_nm_1));
+    vec3 _e64 = weft_film_sensitivity((3.0 * opd_nm_1));
+    vec3 _e69 = weft_film_sensitivity((4.0 * opd_nm_1));
+    vec3 sum = ((((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69));
+    return (2.0 * sum);
 }
 
 WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {

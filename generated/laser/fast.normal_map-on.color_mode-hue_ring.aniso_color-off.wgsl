@@ -79,6 +79,7 @@ struct WeftFilmSeries {
 
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
+const film_sensitivity_opd_max: f32 = 16000f;
 const COLOR_MODE_HUE_RING: u32 = 0u;
 const COLOR_MODE_CUSTOM: u32 = 1u;
 const ANISO_COLOR_OFF: u32 = 0u;
@@ -97,13 +98,6 @@ const WEFT_FILM_LAMBDA_MIN: f32 = 380f;
 const WEFT_FILM_LAMBDA_MAX: f32 = 780f;
 const WEFT_FILM_FADE_NM: f32 = 30f;
 const WEFT_XYZ_TO_REC709_: mat3x3<f32> = mat3x3<f32>(vec3<f32>(3.2404542f, -0.969266f, 0.0556434f), vec3<f32>(-1.5371385f, 1.8760108f, -0.2040259f), vec3<f32>(-0.4985314f, 0.041556f, 1.0572252f));
-const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289f, 17.9875f, -22.8564f, 14.636f);
-const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908f, 64.448f, 5.9984f, 99.7587f);
-const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1.95281f);
-const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
-const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
-const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
-const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -121,6 +115,8 @@ var<uniform> weft_object: WeftObject;
 var<uniform> material: WeftMaterial;
 @group(1) @binding(1) 
 var material_sampler: sampler;
+@group(1) @binding(2) 
+var material_clamp_sampler: sampler;
 @group(1) @binding(3) 
 var base_map: texture_2d<f32>;
 @group(1) @binding(4) 
@@ -129,6 +125,15 @@ var normal_map: texture_2d<f32>;
 var rmo_map: texture_2d<f32>;
 @group(1) @binding(6) 
 var offset_map: texture_2d<f32>;
+@group(1) @binding(9) 
+var film_sensitivity: texture_2d<f32>;
+
+fn table_film_sensitivity(uv: vec2<f32>) -> vec4<f32> {
+    let size = vec2<f32>(2048f, 2f);
+    let st_1 = (((clamp(uv, vec2(0f), vec2(1f)) * (size - vec2(1f))) + vec2(0.5f)) / size);
+    let _e20 = textureSampleLevel(film_sensitivity, material_clamp_sampler, st_1, 0f);
+    return _e20;
+}
 
 fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
@@ -246,8 +251,8 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
 }
 
 fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
-    let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_2, 0f);
     return _e8.xy;
 }
 
@@ -293,8 +298,8 @@ fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, 
     return _e6;
 }
 
-fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
-    return ((uv * st.xy) + st.zw);
+fn weft_transform_uv(uv_1: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
+    return ((uv_1 * st.xy) + st.zw);
 }
 
 fn weft_ior_from_f0_(f0_2: vec3<f32>) -> vec3<f32> {
@@ -334,59 +339,22 @@ fn weft_film_stack(cos_theta1_: f32, thickness_nm_1: f32, film_ior_1: f32, base_
     return WeftFilmStack(_e10, cos2_1, _e29, _e31, false);
 }
 
-fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
-    return (WEFT_XYZ_TO_REC709_[axis] / vec3<f32>(130.93048f, 100.96242f, 95.96065f));
+fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
+    let _e5 = table_film_sensitivity(vec2<f32>((opd_nm / film_sensitivity_opd_max), 0f));
+    return _e5.xyz;
 }
 
-fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1_: vec3<f32>, k2_: vec3<f32>, k3_: vec3<f32>, k4_: vec3<f32>) -> vec3<f32> {
-    let c1_ = cos((phase * mu));
-    let sg = (phase * sigma);
-    let g1_ = exp(((-0.5f * sg) * sg));
-    let c2_ = (((2f * c1_) * c1_) - 1f);
-    let c3_ = (((2f * c1_) * c2_) - c1_);
-    let c4_ = (((2f * c2_) * c2_) - 1f);
-    let g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    let g3_ = ((g2_ * g2_) * g1_);
-    let g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
-}
-
-fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
-    var sum: vec3<f32>;
-
-    let phase_1 = ((6.2831855f * opd_nm) * 0.001f);
-    let k1_1 = ((s.first * s.ratio) + (p.first * p.ratio));
-    let k2_1 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    let k3_1 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    let k4_1 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    let _e60 = weft_film_rgb_of_xyz(0u);
-    let _e62 = weft_film_rgb_of_xyz(1u);
-    let _e64 = weft_film_rgb_of_xyz(2u);
-    let _e71 = weft_film_lobe_orders(phase_1, 1.64821f, 0.112563f, k1_1, k2_1, k3_1, k4_1);
-    sum = ((WEFT_FILM_LOBE_WEIGHT_A.x * _e60) * _e71);
-    let _e74 = sum;
-    let _e79 = weft_film_lobe_orders(phase_1, 2.23783f, 0.097781f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e74 + ((WEFT_FILM_LOBE_WEIGHT_A.y * _e60) * _e79));
-    let _e82 = sum;
-    let _e87 = weft_film_lobe_orders(phase_1, 1.51945f, 0.0710853f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e82 + ((WEFT_FILM_LOBE_WEIGHT_A.z * _e60) * _e87));
-    let _e90 = sum;
-    let _e95 = weft_film_lobe_orders(phase_1, 1.95281f, 0.142693f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e90 + ((WEFT_FILM_LOBE_WEIGHT_A.w * _e62) * _e95));
-    let _e98 = sum;
-    let _e103 = weft_film_lobe_orders(phase_1, 1.87261f, 0.0790523f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e98 + ((WEFT_FILM_LOBE_WEIGHT_B.x * _e62) * _e103));
-    let _e106 = sum;
-    let _e111 = weft_film_lobe_orders(phase_1, 1.72342f, 0.0996288f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e106 + ((WEFT_FILM_LOBE_WEIGHT_B.y * _e62) * _e111));
-    let _e114 = sum;
-    let _e119 = weft_film_lobe_orders(phase_1, 2.31367f, 0.0384759f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e114 + ((WEFT_FILM_LOBE_WEIGHT_B.z * _e64) * _e119));
-    let _e122 = sum;
-    let _e127 = weft_film_lobe_orders(phase_1, 2.20514f, 0.109465f, k1_1, k2_1, k3_1, k4_1);
-    sum = (_e122 + ((WEFT_FILM_LOBE_WEIGHT_B.w * _e64) * _e127));
-    let _e130 = sum;
-    return (2f * _e130);
+fn weft_film_orders(opd_nm_1: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
+    let k1_ = ((s.first * s.ratio) + (p.first * p.ratio));
+    let k2_ = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    let k3_ = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    let k4_ = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    let _e55 = weft_film_sensitivity(opd_nm_1);
+    let _e59 = weft_film_sensitivity((2f * opd_nm_1));
+    let _e64 = weft_film_sensitivity((3f * opd_nm_1));
+    let _e69 = weft_film_sensitivity((4f * opd_nm_1));
+    let sum = ((((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69));
+    return (2f * sum);
 }
 
 fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {

@@ -84,6 +84,7 @@ struct WeftFilmStack {
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
+constant float film_sensitivity_opd_max = 16000.0;
 constant uint COLOR_MODE_HUE_RING = 0u;
 constant uint COLOR_MODE_CUSTOM = 1u;
 constant uint ANISO_COLOR_OFF = 0u;
@@ -102,13 +103,6 @@ constant float WEFT_FILM_LAMBDA_MIN = 380.0;
 constant float WEFT_FILM_LAMBDA_MAX = 780.0;
 constant float WEFT_FILM_FADE_NM = 30.0;
 constant metal::float3x3 WEFT_XYZ_TO_REC709_ = metal::float3x3(metal::float3(3.2404542, -0.969266, 0.0556434), metal::float3(-1.5371385, 1.8760108, -0.2040259), metal::float3(-0.4985314, 0.041556, 1.0572252));
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_A = metal::float4(112.289, 17.9875, -22.8564, 14.636);
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_B = metal::float4(27.8908, 64.448, 5.9984, 99.7587);
-constant metal::float4 WEFT_FILM_LOBE_MU_A = metal::float4(1.64821, 2.23783, 1.51945, 1.95281);
-constant metal::float4 WEFT_FILM_LOBE_MU_B = metal::float4(1.87261, 1.72342, 2.31367, 2.20514);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_A = metal::float4(0.112563, 0.097781, 0.0710853, 0.142693);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_B = metal::float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-constant metal::float3 WEFT_FILM_SENSITIVITY_AT_ZERO = metal::float3(107.41976, 106.97481, 105.7571);
 
 float weft_pow5_(
     float x

@@ -87,6 +87,7 @@ struct WeftFilmStack {
 
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
+static const float film_sensitivity_opd_max = 16000.0;
 static const uint COLOR_MODE_HUE_RING = 0u;
 static const uint COLOR_MODE_CUSTOM = 1u;
 static const uint ANISO_COLOR_OFF = 0u;
@@ -105,13 +106,6 @@ static const float WEFT_FILM_LAMBDA_MIN = 380.0;
 static const float WEFT_FILM_LAMBDA_MAX = 780.0;
 static const float WEFT_FILM_FADE_NM = 30.0;
 static const float3x3 WEFT_XYZ_TO_REC709_ = float3x3(float3(3.2404542, -0.969266, 0.0556434), float3(-1.5371385, 1.8760108, -0.2040259), float3(-0.4985314, 0.041556, 1.0572252));
-static const float4 WEFT_FILM_LOBE_WEIGHT_A = float4(112.289, 17.9875, -22.8564, 14.636);
-static const float4 WEFT_FILM_LOBE_WEIGHT_B = float4(27.8908, 64.448, 5.9984, 99.7587);
-static const float4 WEFT_FILM_LOBE_MU_A = float4(1.64821, 2.23783, 1.51945, 1.95281);
-static const float4 WEFT_FILM_LOBE_MU_B = float4(1.87261, 1.72342, 2.31367, 2.20514);
-static const float4 WEFT_FILM_LOBE_SIGMA_A = float4(0.112563, 0.097781, 0.0710853, 0.142693);
-static const float4 WEFT_FILM_LOBE_SIGMA_B = float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-static const float3 WEFT_FILM_SENSITIVITY_AT_ZERO = float3(107.41976, 106.97481, 105.7571);
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
 TextureCube<float4> weft_environment : register(t1);

@@ -59,6 +59,7 @@ struct WeftVaryings {
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
+const float film_sensitivity_opd_max = 16000.0;
 const uint COLOR_MODE_HUE_RING = 0u;
 const uint COLOR_MODE_CUSTOM = 1u;
 const uint ANISO_COLOR_OFF = 0u;
@@ -77,13 +78,6 @@ const float WEFT_FILM_LAMBDA_MIN = 380.0;
 const float WEFT_FILM_LAMBDA_MAX = 780.0;
 const float WEFT_FILM_FADE_NM = 30.0;
 const mat3x3 WEFT_XYZ_TO_REC709_ = mat3x3(vec3(3.2404542, -0.969266, 0.0556434), vec3(-1.5371385, 1.8760108, -0.2040259), vec3(-0.4985314, 0.041556, 1.0572252));
-const vec4 WEFT_FILM_LOBE_WEIGHT_A = vec4(112.289, 17.9875, -22.8564, 14.636);
-const vec4 WEFT_FILM_LOBE_WEIGHT_B = vec4(27.8908, 64.448, 5.9984, 99.7587);
-const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
-const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
-const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
-const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 

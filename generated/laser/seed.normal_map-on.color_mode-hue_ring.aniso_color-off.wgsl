@@ -65,6 +65,7 @@ struct WeftVaryings {
 
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
+const film_sensitivity_opd_max: f32 = 16000f;
 const COLOR_MODE_HUE_RING: u32 = 0u;
 const COLOR_MODE_CUSTOM: u32 = 1u;
 const ANISO_COLOR_OFF: u32 = 0u;
@@ -83,13 +84,6 @@ const WEFT_FILM_LAMBDA_MIN: f32 = 380f;
 const WEFT_FILM_LAMBDA_MAX: f32 = 780f;
 const WEFT_FILM_FADE_NM: f32 = 30f;
 const WEFT_XYZ_TO_REC709_: mat3x3<f32> = mat3x3<f32>(vec3<f32>(3.2404542f, -0.969266f, 0.0556434f), vec3<f32>(-1.5371385f, 1.8760108f, -0.2040259f), vec3<f32>(-0.4985314f, 0.041556f, 1.0572252f));
-const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289f, 17.9875f, -22.8564f, 14.636f);
-const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908f, 64.448f, 5.9984f, 99.7587f);
-const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1.95281f);
-const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
-const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
-const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
-const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;

@@ -12,8 +12,9 @@
 //               the baked split-sum LUT, diffuse weighted by 1 - E.
 //   fast      = an approximation of the reference: the film in Belcour &
 //               Barla's Fourier form at the same angles, both layers from
-//               one stack per angle (weft_film_fourier_layers); the rest
-//               as the reference.
+//               one stack per angle (weft_film_fourier_layers), each Airy
+//               order's spectral integral read from the baked table
+//               `film_sensitivity` (laser.toml); the rest as the reference.
 //   seed      = a look: the seed's hue ring (or custom ramp) multiplied into
 //               the albedo, then the reference's lighting with a plain
 //               Schlick Fresnel (no film).
@@ -126,6 +127,13 @@ fn laser_cos_in_plane(n: vec3<f32>, v: vec3<f32>, direction: vec3<f32>) -> f32 {
     let len = length(v_in_plane);
     // A view along p sees the plane edge-on: grazing.
     return weft_clamp_cos(dot(n, v_in_plane) / max(len, 1e-4));
+}
+
+// The film's spectral sensitivity S(x) at a path difference in nm, which
+// lib/thin_film.wgsl's fast form asks its includer for: the baked table
+// (clamped past its end, where S has decayed to nothing).
+fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
+    return table_film_sensitivity(vec2<f32>(opd_nm / film_sensitivity_opd_max, 0.0)).rgb;
 }
 
 // The two film layers' reflectance, averaged; one evaluation when both

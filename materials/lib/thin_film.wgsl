@@ -12,8 +12,8 @@
 //     normalised so that a flat spectrum maps to that grey.
 //   weft_film_fourier - the fast form: Belcour & Barla 2017's Fourier
 //     evaluation of the Airy series (exact amplitudes per polarisation,
-//     orders 1-4), each term's spectral integral closed-form against
-//     Gaussians fitted to the reference's CMFs in wavenumber.
+//     orders 1-4), each term's spectral integral read from a table baked
+//     from the reference's CMFs (weft_film_sensitivity, below).
 // Both take the base as an RGB F0 (the metallic workflow's f0) and turn it
 // into a real IOR, as KHR_materials_iridescence does (a metal's complex IOR
 // is not modelled). Thickness in nanometres.
@@ -181,86 +181,31 @@ fn weft_film_spectral(cos_theta1: f32, thickness_nm: f32, film_ior: f32, base_f0
 
 // ---------------------------------------------------------------- fast
 
-// The reference's colour matching functions (weft_cie_xyz) as functions of
-// wavenumber k = 1/lambda (um^-1, with the Jacobian dlambda/dk) fitted by
-// Gaussians a exp(-(k - mu)^2 / (2 sigma^2)) - three for x (one negative),
-// three for y, two for z; relative RMS error 0.8 %, 0.3 %, 1.0 % over
-// 380-780 nm (the fit: materials/laser/README.md, "The fast form's CMF").
-// A Gaussian's cosine transform is closed-form, so the spectral integral of
-// cos(2 pi OPD k) is
-//   S(OPD) = sum a sigma sqrt(2 pi) cos(2 pi OPD mu) exp(-(2 pi OPD sigma)^2 / 2)
-// (Belcour & Barla 2017's device, with their four Gaussians refitted to the
-// reference's CMFs: theirs differ from them by ~2 CIELAB units on thick
-// films). Lobes packed x1 x2 x3 y1 | y2 y3 z1 z2; weights a sigma sqrt(2 pi).
-const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289, 17.9875, -22.8564, 14.636);
-const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908, 64.448, 5.9984, 99.7587);
-const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821, 2.23783, 1.51945, 1.95281);
-const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261, 1.72342, 2.31367, 2.20514);
-const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563, 0.097781, 0.0710853, 0.142693);
-const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523, 0.0996288, 0.0384759, 0.109465);
-// The fast form sums orders 1 to 4 of the Airy series (the fifth adds under
-// 0.5 CIELAB units except on gold at grazing angles): weft_film_orders.
-// Each order's sensitivity S(m OPD) is taken to linear Rec. 709 and divided
-// by its value at OPD = 0 so that - like the reference - a flat spectrum is
-// grey.
-
-// The sensitivity's XYZ at OPD = 0: the sums of the weights.
-const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976, 106.97481, 105.75710);
-
-// The Airy series' oscillating part, orders 1 to 4:
-// sum over m of 2 (C_s,m + C_p,m) S(m opd). S(m opd) is the sum of lobes
-// above with each lobe's cosine at m x and its
-// Gaussian at m sigma, so one cosine and one exponential per lobe serve
-// all four orders: cos(m x) by Chebyshev's recurrence
-// (cos 2x = 2 cos^2 x - 1, cos 3x = 2 cos x cos 2x - cos x, cos 4x =
-// 2 cos^2 2x - 1) and exp(-(m s)^2 / 2) = g^(m^2) by squaring (g^4, g^9 =
-// g^8 g, g^16). The same sum as evaluating S at each order, with a
-// quarter of the transcendentals.
+// The Airy series' oscillating part, orders 1 to 4 (the fifth adds under
+// 0.5 CIELAB units except on gold at grazing angles):
+// sum over m of 2 (C_s,m + C_p,m) S(m opd), where
+//   S(x) = integral of CMF(lambda) cos(2 pi x / lambda) over 380-780 nm,
+// in linear Rec. 709 over its value at x = 0 (so that, as in the reference,
+// a flat spectrum is grey), is the same function of the path difference for
+// every film: weft bakes it from the reference's own CMFs into a table
+// (`[tables]` recipe `thin_film_sensitivity`, weft_compiler::bake::film),
+// and the file that includes this one provides
+//   fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32>
+// reading it (materials/laser: its `film_sensitivity` table). Four fetches
+// replace Belcour & Barla's closed-form Gaussian transforms (eight fitted
+// lobes here before: 5.57x standard fast on the AMD model (navi21), now
+// 3.05x).
 fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
-    let phase = 2.0 * WEFT_FILM_PI * opd_nm * 1.0e-3;
     // C_m = first ratio^m per polarisation, per base channel.
     let k1 = s.first * s.ratio + p.first * p.ratio;
     let k2 = s.first * s.ratio * s.ratio + p.first * p.ratio * p.ratio;
     let k3 = s.first * s.ratio * s.ratio * s.ratio + p.first * p.ratio * p.ratio * p.ratio;
     let k4 = s.first * (s.ratio * s.ratio) * (s.ratio * s.ratio) + p.first * (p.ratio * p.ratio) * (p.ratio * p.ratio);
-    // Lobe by lobe (x1 x2 x3 y1 | y2 y3 z1 z2), so that only one lobe's
-    // recurrences are live at a time (all at once needed 136 VGPRs on
-    // RDNA2, against 80 before the recurrences).
-    let x = weft_film_rgb_of_xyz(0u);
-    let y = weft_film_rgb_of_xyz(1u);
-    let z = weft_film_rgb_of_xyz(2u);
-    let a = WEFT_FILM_LOBE_WEIGHT_A;
-    let b = WEFT_FILM_LOBE_WEIGHT_B;
-    var sum = a.x * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.x, WEFT_FILM_LOBE_SIGMA_A.x, k1, k2, k3, k4);
-    sum += a.y * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.y, WEFT_FILM_LOBE_SIGMA_A.y, k1, k2, k3, k4);
-    sum += a.z * x * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.z, WEFT_FILM_LOBE_SIGMA_A.z, k1, k2, k3, k4);
-    sum += a.w * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_A.w, WEFT_FILM_LOBE_SIGMA_A.w, k1, k2, k3, k4);
-    sum += b.x * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.x, WEFT_FILM_LOBE_SIGMA_B.x, k1, k2, k3, k4);
-    sum += b.y * y * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.y, WEFT_FILM_LOBE_SIGMA_B.y, k1, k2, k3, k4);
-    sum += b.z * z * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.z, WEFT_FILM_LOBE_SIGMA_B.z, k1, k2, k3, k4);
-    sum += b.w * z * weft_film_lobe_orders(phase, WEFT_FILM_LOBE_MU_B.w, WEFT_FILM_LOBE_SIGMA_B.w, k1, k2, k3, k4);
+    let sum = k1 * weft_film_sensitivity(opd_nm)
+        + k2 * weft_film_sensitivity(2.0 * opd_nm)
+        + k3 * weft_film_sensitivity(3.0 * opd_nm)
+        + k4 * weft_film_sensitivity(4.0 * opd_nm);
     return 2.0 * sum;
-}
-
-// One lobe's sum over the orders, per base channel: sum of k_m cos(m x)
-// g^(m^2), x = phase mu, g = exp(-(phase sigma)^2 / 2).
-fn weft_film_lobe_orders(phase: f32, mu: f32, sigma: f32, k1: vec3<f32>, k2: vec3<f32>, k3: vec3<f32>, k4: vec3<f32>) -> vec3<f32> {
-    let c1 = cos(phase * mu);
-    let sg = phase * sigma;
-    let g1 = exp(-0.5 * sg * sg);
-    let c2 = 2.0 * c1 * c1 - 1.0;
-    let c3 = 2.0 * c1 * c2 - c1;
-    let c4 = 2.0 * c2 * c2 - 1.0;
-    let g2 = (g1 * g1) * (g1 * g1);
-    let g3 = (g2 * g2) * g1;
-    let g4 = (g2 * g2) * (g2 * g2);
-    return k1 * (c1 * g1) + k2 * (c2 * g2) + k3 * (c3 * g3) + k4 * (c4 * g4);
-}
-
-// Linear Rec. 709 of a unit of X (0), Y (1) or Z (2), divided by the
-// sensitivity's value at OPD = 0: constants.
-fn weft_film_rgb_of_xyz(axis: u32) -> vec3<f32> {
-    return WEFT_XYZ_TO_REC709[axis] / (WEFT_XYZ_TO_REC709 * WEFT_FILM_SENSITIVITY_AT_ZERO);
 }
 
 // The fast form: Belcour & Barla's Fourier evaluation of the Airy series.

@@ -19,9 +19,10 @@ use std::path::PathBuf;
 use weft_golden::film::{self, CASES, FilmCase};
 use weft_render::Gpu;
 
-fn thin_film_source() -> String {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../materials/lib/thin_film.wgsl");
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+/// The library's film code and the laser's baked sensitivity table.
+fn film_code() -> film::FilmCode {
+    let materials = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../materials");
+    film::FilmCode::load(&materials).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn gpu() -> Gpu {
@@ -34,6 +35,7 @@ fn gpu() -> Gpu {
 // glTF iridescence check).
 use weft_tests::thin_film::{
     cie_xyz_wyman as cie_xyz, film_spectral as film_f64, fresnel_dielectric as fresnel_f64,
+    xyz_to_rec709,
 };
 
 fn f64x3(v: [f32; 3]) -> [f64; 3] {
@@ -67,13 +69,13 @@ fn cmf_fit_has_an_equal_energy_white() {
 fn spectral_reference_matches_an_independent_f64_airy() {
     let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
-    let source = thin_film_source();
+    let code = film_code();
     let points: Vec<(f32, f32)> = [0.05f32, 0.3, 0.6, 0.9, 1.0]
         .iter()
         .flat_map(|&c| [0.0f32, 15.0, 120.0, 333.0, 450.0, 777.0, 1000.0].map(move |d| (c, d)))
         .collect();
     for case in CASES {
-        let (gpu_reference, _) = film::evaluate_points(&gpu, &source, case, &points).unwrap();
+        let (gpu_reference, _) = film::evaluate_points(&gpu, &code, case, &points).unwrap();
         for (&(c, d), got) in points.iter().zip(&gpu_reference) {
             let want = film_f64(
                 f64::from(c),
@@ -96,23 +98,25 @@ fn spectral_reference_matches_an_independent_f64_airy() {
 }
 
 /// The fast form's bar over the whole chart, per stack: ΔE2000 mean at most
-/// 0.5 and 95th percentile at most 1 (one ΔE2000 is about one
-/// just-noticeable difference; measured: means 0.14 to 0.31, p95 0.32 to
-/// 0.62, generated/reports/laser-film.md), chart FLIP at most 0.05 (measured
-/// 0.010 to 0.021). Belcour & Barla's own four Gaussians measured means of
-/// 0.5 to 1.8 (their CMFs are not the reference's), the KHR sample code's
-/// form 3.2 to 8.5: the bar separates them.
-const FAST_MEAN_DELTA_E: f64 = 0.5;
-const FAST_P95_DELTA_E: f64 = 1.0;
-const FAST_CHART_FLIP: f32 = 0.05;
+/// 0.1 and 95th percentile at most 0.4 (one ΔE2000 is about one
+/// just-noticeable difference), chart FLIP at most 0.01. Measured with the
+/// baked sensitivity table: means 0.005 to 0.074, p95 0.013 to 0.30, FLIP
+/// 0.0013 to 0.0046 (generated/reports/laser-film.md); what is left is the
+/// series cut after its fourth order, on metal bases near grazing. The
+/// closed-form Gaussian fit it replaced measured means of 0.14 to 0.31,
+/// Belcour & Barla's own four Gaussians 0.5 to 1.8 (their CMFs are not the
+/// reference's), the KHR sample code's form 3.2 to 8.5.
+const FAST_MEAN_DELTA_E: f64 = 0.1;
+const FAST_P95_DELTA_E: f64 = 0.4;
+const FAST_CHART_FLIP: f32 = 0.01;
 
 #[test]
 fn reference_converges_and_fast_stays_within_its_bar() {
     let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
-    let source = thin_film_source();
+    let code = film_code();
     for case in CASES {
-        let m = film::measure(&gpu, &source, case).unwrap();
+        let m = film::measure(&gpu, &code, case).unwrap();
         eprintln!(
             "{}: fast ΔE2000 mean {:.3} p95 {:.3} max {:.3} at ({} nm, {:.2}); FLIP {:.4}; convergence max {:.4}",
             case.name,
@@ -150,7 +154,7 @@ fn reference_converges_and_fast_stays_within_its_bar() {
 fn zero_thickness_is_the_bare_base() {
     let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
-    let source = thin_film_source();
+    let code = film_code();
     let dielectric = FilmCase {
         name: "bare",
         label: "bare",
@@ -159,7 +163,7 @@ fn zero_thickness_is_the_bare_base() {
     };
     let cosines = [0.02f32, 0.2, 0.5, 0.8, 1.0];
     let points: Vec<(f32, f32)> = cosines.iter().map(|&c| (c, 0.0)).collect();
-    let (reference, fast) = film::evaluate_points(&gpu, &source, &dielectric, &points).unwrap();
+    let (reference, fast) = film::evaluate_points(&gpu, &code, &dielectric, &points).unwrap();
     for ((&c, r), f) in cosines.iter().zip(&reference).zip(&fast) {
         let exact = fresnel_f64(f64::from(c), 1.5) as f32;
         for k in 0..3 {
@@ -179,7 +183,7 @@ fn zero_thickness_is_the_bare_base() {
 fn extremes_stay_finite_and_in_range() {
     let _gpu = weft_tests::gpu_serial();
     let gpu = gpu();
-    let source = thin_film_source();
+    let code = film_code();
     let stacks = [
         // F0 = 1: the IOR from F0 diverges without the clamp.
         FilmCase {
@@ -213,7 +217,7 @@ fn extremes_stay_finite_and_in_range() {
         .flat_map(|&c| [0.0f32, 1e-3, 30.0, 1000.0, 5000.0, -10.0].map(move |d| (c, d)))
         .collect();
     for stack in &stacks {
-        let (reference, fast) = film::evaluate_points(&gpu, &source, stack, &points).unwrap();
+        let (reference, fast) = film::evaluate_points(&gpu, &code, stack, &points).unwrap();
         for ((p, r), f) in points.iter().zip(&reference).zip(&fast) {
             for v in r.iter().chain(f) {
                 assert!(
@@ -238,80 +242,61 @@ fn extremes_stay_finite_and_in_range() {
     }
 }
 
-/// The four numbers of `const NAME: vec4<f32> = vec4<f32>(a, b, c, d);` in the library.
-fn vec4_const(source: &str, name: &str) -> [f64; 4] {
-    let line = source
-        .lines()
-        .find(|l| l.starts_with(&format!("const {name}: vec4<f32>")))
-        .unwrap_or_else(|| panic!("thin_film.wgsl has no `const {name}`"));
-    let inner = &line[line.rfind('(').unwrap() + 1..line.rfind(')').unwrap()];
-    let v: Vec<f64> = inner
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect();
-    [v[0], v[1], v[2], v[3]]
-}
-
 #[test]
-fn fast_sensitivity_gaussians_fit_the_reference_cmfs() {
-    // The fast tier's Gaussians (materials/laser/fit_cmf.py) against the
-    // reference's CMFs per unit wavenumber, over 380-780 nm: relative RMS
-    // within 1.1 % for x, y and z (the fit: 0.8 %, 0.3 %, 1.0 %). A stale or
-    // mistyped constant moves it by far more.
-    let source = thin_film_source();
-    let get = |n: &str| {
-        let (a, b) = (
-            vec4_const(&source, &format!("{n}_A")),
-            vec4_const(&source, &format!("{n}_B")),
-        );
-        [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
-    };
-    let (w, mu, sigma) = (
-        get("WEFT_FILM_LOBE_WEIGHT"),
-        get("WEFT_FILM_LOBE_MU"),
-        get("WEFT_FILM_LOBE_SIGMA"),
-    );
-    let channels = [0..3, 3..6, 6..8];
-    let n = 2000;
-    let (k0, k1) = (1.0 / 0.780, 1.0 / 0.380);
-    for (c, lobes) in channels.iter().enumerate() {
-        let (mut err2, mut peak) = (0.0f64, 0.0f64);
-        for i in 0..n {
-            let k = k0 + (k1 - k0) * i as f64 / (n - 1) as f64;
-            let lambda = 1000.0 / k;
-            let target = cie_xyz(lambda)[c] * lambda * lambda / 1000.0;
-            let fitted: f64 = lobes
-                .clone()
-                .map(|j| {
-                    let a = w[j] / (sigma[j] * (2.0 * std::f64::consts::PI).sqrt());
-                    a * (-(k - mu[j]).powi(2) / (2.0 * sigma[j] * sigma[j])).exp()
-                })
-                .sum();
-            err2 += (fitted - target).powi(2);
-            peak = peak.max(target);
+fn sensitivity_table_matches_an_independent_cmf_integral() {
+    // The laser's baked table (weft_compiler::bake::film, read back as the
+    // f16 texels it ships) against S(x) = integral of CMF(lambda)
+    // cos(2 pi x / lambda) over 380-780 nm integrated here by Simpson's
+    // rule at 0.1 nm with the support library's CMFs and matrix, in linear
+    // Rec. 709 over its value at 0. Bar: 2e-3, four f16 steps at 1; the two
+    // integrals agree to ~1e-6, so this measures the table's storage.
+    let code = film_code();
+    let width = code.sensitivity.len();
+    assert!(width >= 1024, "{width} texels");
+    let n = 4000;
+    let h = 400.0 / n as f64;
+    let integral = |x: f64| {
+        let mut s = [0.0; 3];
+        for i in 0..=n {
+            let lambda = 380.0 + h * i as f64;
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            } * h
+                / 3.0;
+            let c = cie_xyz(lambda);
+            let phase = (2.0 * std::f64::consts::PI * x / lambda).cos();
+            for k in 0..3 {
+                s[k] += w * c[k] * phase;
+            }
         }
-        let rel_rms = (err2 / n as f64).sqrt() / peak;
-        assert!(
-            rel_rms < 0.011,
-            "{}: relative RMS {rel_rms:.4}",
-            ["x", "y", "z"][c]
-        );
+        xyz_to_rec709(s)
+    };
+    let at_zero = integral(0.0);
+    let mut worst = 0.0f64;
+    for i in (0..width).step_by(7).chain([width - 1]) {
+        let x = f64::from(code.opd_max_nm) * i as f64 / (width - 1) as f64;
+        let want = integral(x);
+        for c in 0..3 {
+            let d = (f64::from(code.sensitivity[i][c]) - want[c] / at_zero[c]).abs();
+            worst = worst.max(d);
+            assert!(
+                d < 2e-3,
+                "texel {i} (x = {x:.0} nm), channel {c}: table {} vs {}",
+                code.sensitivity[i][c],
+                want[c] / at_zero[c]
+            );
+        }
     }
-    // The sensitivity at OPD = 0 is the sum of the weights.
-    let line = source
-        .lines()
-        .find(|l| l.starts_with("const WEFT_FILM_SENSITIVITY_AT_ZERO"))
-        .unwrap();
-    let inner = &line[line.rfind('(').unwrap() + 1..line.rfind(')').unwrap()];
-    let at_zero: Vec<f64> = inner
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect();
-    for (c, lobes) in channels.iter().enumerate() {
-        let sum: f64 = lobes.clone().map(|j| w[j]).sum();
-        assert!(
-            (sum - at_zero[c]).abs() < 1e-5 * sum,
-            "{line}: channel {c} sums to {sum}"
-        );
-    }
+    println!("sensitivity table: worst |table - integral| {worst:.2e}");
+    // Past the table's end the fast form clamps to the last texel: it must
+    // have decayed to nothing.
+    assert!(
+        code.sensitivity[width - 1].iter().all(|v| v.abs() < 1e-3),
+        "{:?}",
+        code.sensitivity[width - 1]
+    );
 }

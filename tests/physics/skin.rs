@@ -29,6 +29,9 @@ fn tables() -> Vec<(String, [u32; 2], [f64; 3], bool)> {
             TableRecipe::PreintegratedSkin { shape, half_ring } => {
                 (t.name.clone(), t.size, shape, half_ring)
             }
+            TableRecipe::ThinFilmSensitivity { .. } => {
+                panic!("skin declares a film table `{}`", t.name)
+            }
         })
         .collect()
 }

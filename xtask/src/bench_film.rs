@@ -9,13 +9,11 @@ use std::process::ExitCode;
 pub(crate) fn bench_film(root: &Path, write: bool, command: &str) -> ExitCode {
     use weft_golden::film;
     let run = || -> Result<(), String> {
-        let lib = root.join("materials/lib/thin_film.wgsl");
-        let source =
-            std::fs::read_to_string(&lib).map_err(|e| format!("{}: {e}", lib.display()))?;
+        let code = film::FilmCode::load(&root.join("materials"))?;
         let gpu = weft_render::Gpu::new().map_err(|e| e.to_string())?;
         let measurements = film::CASES
             .iter()
-            .map(|case| film::measure(&gpu, &source, case))
+            .map(|case| film::measure(&gpu, &code, case))
             .collect::<Result<Vec<_>, _>>()?;
         print!("{}", film::markdown_table(&measurements));
         if write {

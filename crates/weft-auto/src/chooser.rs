@@ -508,6 +508,14 @@ fn write_material(
     for (name, bytes) in files {
         write_file(&folder.join(name), bytes)?;
     }
+    // A baked table's binding names its file by library path
+    // (`<material>/<table>`), which the renderer reads under its LUT root:
+    // the temporary folder. A table follows from the TOML alone, so every
+    // build of the material writes the same bytes there.
+    let table_extension = format!(".{}", weft_compiler::compile::tables::TABLE_EXTENSION);
+    for (name, bytes) in files.iter().filter(|(n, _)| n.ends_with(&table_extension)) {
+        write_file(&state.dir.path().join(&meta.name).join(name), bytes)?;
+    }
     let mut json = serde_json::to_string_pretty(meta).map_err(|e| e.to_string())?;
     json.push('\n');
     write_file(

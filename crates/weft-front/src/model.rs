@@ -272,6 +272,11 @@ pub enum TableRecipe {
     /// u = N·L · 0.5 + 0.5, v = curvature 1/r. `half_ring`: the seed's
     /// integral over ±π/2 instead of the whole ring.
     PreintegratedSkin { shape: [f64; 3], half_ring: bool },
+    /// The spectral sensitivity of thin-film interference (Belcour & Barla
+    /// 2017): S(x) = ∫ CMF(λ) cos(2π x / λ) dλ over 380–780 nm, taken to
+    /// linear Rec. 709 and divided per channel by its value at x = 0, for
+    /// optical path differences x = u · `opd_max_nm` (v unused).
+    ThinFilmSensitivity { opd_max_nm: f64 },
 }
 
 #[derive(Clone, Debug)]

@@ -27,8 +27,9 @@ pub const TOP_KEYS: &[&str] = &[
     "material", "groups", "params", "keywords", "tier", "variants", "presets", "pass", "limits",
     "tables",
 ];
-/// Keys of a `[tables.<name>]` entry.
-pub const TABLE_KEYS: &[&str] = &["recipe", "size", "shape", "ring"];
+/// Keys of a `[tables.<name>]` entry: the common ones (`recipe`, `size`) first,
+/// then every recipe's own.
+pub const TABLE_KEYS: &[&str] = &["recipe", "size", "shape", "ring", "opd_max"];
 pub const MATERIAL_KEYS: &[&str] = &[
     "name",
     "label",

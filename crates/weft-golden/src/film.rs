@@ -73,53 +73,136 @@ pub struct FilmChart {
     pub fast: Vec<[f32; 3]>,
 }
 
-/// The evaluation kernel appended to thin_film.wgsl: two vec4 in per cell
-/// (cos, thickness, film IOR, -; base F0, -), two vec4 out (reference, fast).
-const KERNEL: &str = r#"
+/// What the film's two forms run: `materials/lib/thin_film.wgsl` and the
+/// sensitivity table its fast form reads, baked as the laser material bakes
+/// it (its `[tables]` entry of recipe `thin_film_sensitivity`).
+#[derive(Clone, Debug)]
+pub struct FilmCode {
+    pub thin_film_wgsl: String,
+    /// The table's first row, texel by texel (rgb, as stored: f16 values).
+    pub sensitivity: Vec<Rgb>,
+    /// The path difference (nm) of the table's last texel.
+    pub opd_max_nm: f32,
+}
+
+impl FilmCode {
+    /// The library's film code and the laser material's table, from a
+    /// materials root (the folder with `lib/` and `laser/`).
+    pub fn load(materials: &std::path::Path) -> Result<FilmCode, String> {
+        let lib = materials.join("lib/thin_film.wgsl");
+        let thin_film_wgsl =
+            std::fs::read_to_string(&lib).map_err(|e| format!("{}: {e}", lib.display()))?;
+        let mut db = weft_front::diag::SourceDb::new();
+        let mut diags = weft_front::diag::Diagnostics::new();
+        let laser = weft_front::load_material(
+            &materials.join("laser/laser.toml"),
+            materials,
+            &mut db,
+            &mut diags,
+        )
+        .ok_or("materials/laser/laser.toml does not load (run `weft check` on it)")?;
+        let table = laser
+            .tables
+            .iter()
+            .find(|t| {
+                matches!(
+                    t.recipe,
+                    weft_front::model::TableRecipe::ThinFilmSensitivity { .. }
+                )
+            })
+            .ok_or("the laser material has no `thin_film_sensitivity` table")?;
+        let weft_front::model::TableRecipe::ThinFilmSensitivity { opd_max_nm } = table.recipe
+        else {
+            unreachable!("found above")
+        };
+        let bytes = weft_compiler::compile::tables::bake(table);
+        let half = |i: usize| half::f16::from_le_bytes([bytes[i], bytes[i + 1]]).to_f32();
+        let sensitivity = (0..table.size[0] as usize)
+            .map(|i| [half(8 * i), half(8 * i + 2), half(8 * i + 4)])
+            .collect();
+        Ok(FilmCode {
+            thin_film_wgsl,
+            sensitivity,
+            opd_max_nm: opd_max_nm as f32,
+        })
+    }
+
+    /// The same code with the reference's wavelength count replaced (the
+    /// convergence check evaluates the reference with more samples).
+    pub fn with_samples(&self, samples: u32) -> Result<FilmCode, String> {
+        let line = self
+            .thin_film_wgsl
+            .lines()
+            .find(|l| l.starts_with("const WEFT_FILM_SAMPLES: u32 = "))
+            .ok_or("thin_film.wgsl has no `const WEFT_FILM_SAMPLES: u32 = …` line")?;
+        Ok(FilmCode {
+            thin_film_wgsl: self
+                .thin_film_wgsl
+                .replace(line, &format!("const WEFT_FILM_SAMPLES: u32 = {samples}u;")),
+            ..self.clone()
+        })
+    }
+
+    /// The compute module: thin_film.wgsl, the sensitivity its includer
+    /// provides, and the kernel. The table rides in front of the cells in
+    /// the input buffer, filtered linearly between texel centres as the
+    /// material's sampler filters it.
+    fn kernel(&self) -> String {
+        let width = self.sensitivity.len();
+        format!(
+            r#"{lib}
 @group(0) @binding(0) var<storage, read> film_cells: array<vec4<f32>>;
 @group(0) @binding(1) var<storage, read_write> film_out: array<vec4<f32>>;
 
+const FILM_TABLE_WIDTH: u32 = {width}u;
+const FILM_TABLE_OPD_MAX: f32 = {opd_max:?};
+
+fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {{
+    let t = clamp(opd_nm / FILM_TABLE_OPD_MAX, 0.0, 1.0) * f32(FILM_TABLE_WIDTH - 1u);
+    let i = min(u32(t), FILM_TABLE_WIDTH - 2u);
+    return mix(film_cells[i].xyz, film_cells[i + 1u].xyz, t - f32(i));
+}}
+
 @compute @workgroup_size(64)
-fn film_chart(@builtin(global_invocation_id) id: vec3<u32>) {
+fn film_chart(@builtin(global_invocation_id) id: vec3<u32>) {{
     let i = id.x;
-    if i >= arrayLength(&film_out) / 2u {
+    if i >= arrayLength(&film_out) / 2u {{
         return;
-    }
-    let a = film_cells[2u * i];
-    let b = film_cells[2u * i + 1u];
+    }}
+    let a = film_cells[FILM_TABLE_WIDTH + 2u * i];
+    let b = film_cells[FILM_TABLE_WIDTH + 2u * i + 1u];
     film_out[2u * i] = vec4<f32>(weft_film_spectral(a.x, a.y, a.z, b.xyz), 0.0);
     film_out[2u * i + 1u] = vec4<f32>(weft_film_fourier(a.x, a.y, a.z, b.xyz), 0.0);
-}
-"#;
-
-/// The library source with its wavelength count replaced (the convergence
-/// check evaluates the reference with more samples).
-pub fn with_samples(thin_film_wgsl: &str, samples: u32) -> Result<String, String> {
-    let line = thin_film_wgsl
-        .lines()
-        .find(|l| l.starts_with("const WEFT_FILM_SAMPLES: u32 = "))
-        .ok_or("thin_film.wgsl has no `const WEFT_FILM_SAMPLES: u32 = …` line")?;
-    Ok(thin_film_wgsl.replace(line, &format!("const WEFT_FILM_SAMPLES: u32 = {samples}u;")))
+}}
+"#,
+            lib = self.thin_film_wgsl,
+            opd_max = self.opd_max_nm,
+        )
+    }
 }
 
 /// Evaluates both forms at arbitrary points (cos θ, thickness nm) for one stack.
 pub fn evaluate_points(
     gpu: &Gpu,
-    thin_film_wgsl: &str,
+    code: &FilmCode,
     case: &FilmCase,
     points: &[(f32, f32)],
 ) -> Result<(Vec<Rgb>, Vec<Rgb>), String> {
-    let mut input = Vec::with_capacity(points.len() * 32);
+    let mut input = Vec::with_capacity((code.sensitivity.len() * 16) + points.len() * 32);
+    for [r, g, b] in &code.sensitivity {
+        for x in [*r, *g, *b, 0.0] {
+            input.extend_from_slice(&x.to_le_bytes());
+        }
+    }
     for &(cos, thickness) in points {
         let [r, g, b] = case.base_f0;
         for x in [cos, thickness, case.film_ior, 0.0, r, g, b, 0.0] {
             input.extend_from_slice(&x.to_le_bytes());
         }
     }
-    let source = format!("{thin_film_wgsl}\n{KERNEL}");
     let bytes = gpu
         .run_compute(
-            &source,
+            &code.kernel(),
             "film_chart",
             &input,
             (points.len() * 32) as u64,
@@ -139,11 +222,11 @@ pub fn evaluate_points(
 }
 
 /// The whole chart for one stack.
-pub fn evaluate(gpu: &Gpu, thin_film_wgsl: &str, case: &FilmCase) -> Result<FilmChart, String> {
+pub fn evaluate(gpu: &Gpu, code: &FilmCode, case: &FilmCase) -> Result<FilmChart, String> {
     let points: Vec<(f32, f32)> = (0..THICKNESS_STEPS)
         .flat_map(|row| (0..COS_STEPS).map(move |col| (cos_at(col), thickness_at(row))))
         .collect();
-    let (reference, fast) = evaluate_points(gpu, thin_film_wgsl, case, &points)?;
+    let (reference, fast) = evaluate_points(gpu, code, case, &points)?;
     Ok(FilmChart {
         case: *case,
         reference,
@@ -319,13 +402,9 @@ pub struct FilmMeasurement {
     pub convergence: DeltaE,
 }
 
-pub fn measure(
-    gpu: &Gpu,
-    thin_film_wgsl: &str,
-    case: &FilmCase,
-) -> Result<FilmMeasurement, String> {
-    let chart = evaluate(gpu, thin_film_wgsl, case)?;
-    let denser = evaluate(gpu, &with_samples(thin_film_wgsl, 201)?, case)?;
+pub fn measure(gpu: &Gpu, code: &FilmCode, case: &FilmCase) -> Result<FilmMeasurement, String> {
+    let chart = evaluate(gpu, code, case)?;
+    let denser = evaluate(gpu, &code.with_samples(201)?, case)?;
     let exposure = exposure_for(&chart.reference);
     let flip = crate::flip(
         &chart_rgba(&chart.reference, exposure),

@@ -199,6 +199,12 @@ fn push_tables(
                 };
                 body.push(format!("const {n}_ring: f32 = {x_max};"));
             }
+            weft_front::model::TableRecipe::ThinFilmSensitivity { opd_max_nm } => {
+                body.push(format!(
+                    "const {n}_opd_max: f32 = {};",
+                    f32_lit(*opd_max_nm)
+                ));
+            }
         }
         lines.extend(body.into_iter().map(|l| (l, here.clone())));
         table_bindings.push((n.clone(), *binding));

@@ -12,9 +12,12 @@ use weft_meta::{EngineResource, ResourceFile};
 /// Texture format of every baked table.
 pub const TABLE_FORMAT: &str = "rgba16float";
 
+/// The extension of every baked table's file.
+pub const TABLE_EXTENSION: &str = "rgba16f";
+
 /// The table's file name in the material's folder.
 pub fn file_name(t: &BakedTable) -> String {
-    format!("{}.rgba16f", t.name)
+    format!("{}.{TABLE_EXTENSION}", t.name)
 }
 
 /// The table's texels (RGBA16Float, row 0 first), computed from the TOML.
@@ -30,6 +33,9 @@ pub fn bake(t: &BakedTable) -> Arc<Vec<u8>> {
     let bytes = Arc::new(match &t.recipe {
         TableRecipe::PreintegratedSkin { shape, half_ring } => {
             bake::skin::preintegrated_table(t.size, *shape, *half_ring)
+        }
+        TableRecipe::ThinFilmSensitivity { opd_max_nm } => {
+            bake::film::sensitivity_table(t.size, *opd_max_nm)
         }
     });
     cache
@@ -62,6 +68,19 @@ pub fn resource(m: &Material, t: &BakedTable) -> EngineResource {
             "N·L · 0.5 + 0.5, 0 at the left edge, 1 at the right; sampled at texel centres",
             "curvature 1/r (0 = flat), 0 at row 0, 1 at the last row; sampled at texel centres",
             "rgb: the diffuse falloff D(θ, r) per channel, a: 1",
+        ),
+        TableRecipe::ThinFilmSensitivity { opd_max_nm } => (
+            format!(
+                "The spectral sensitivity of thin-film interference (Belcour & Barla 2017): \
+                 S(x) = ∫ CMF(λ) cos(2π x / λ) dλ over 380–780 nm (CIE 1931 2°), in linear \
+                 Rec. 709, divided per channel by its value at x = 0, for optical path \
+                 differences x from 0 to {opd_max_nm} nm; baked by weft from the material's \
+                 [tables.{}]. Bind the file's texels.",
+                t.name
+            ),
+            "x / opd_max (x the optical path difference in nm), 0 at the left edge, 1 at the right; sampled at texel centres",
+            "unused: every row holds the same values",
+            "rgb: S(x) per channel, signed (1 at x = 0), a: 1",
         ),
     };
     EngineResource {

@@ -9,16 +9,28 @@ use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value};
 
 /// Recipes and what each is for (the hint of an unknown recipe).
-pub const RECIPES: &[(&str, &str)] = &[(
-    "preintegrated_skin",
-    "Penner & Borshukov's pre-integrated skin diffuse over the Burley profile",
-)];
+pub const RECIPES: &[(&str, &str)] = &[
+    (
+        "preintegrated_skin",
+        "Penner & Borshukov's pre-integrated skin diffuse over the Burley profile",
+    ),
+    (
+        "thin_film_sensitivity",
+        "the spectral sensitivity of thin-film interference over the optical path difference",
+    ),
+];
 
 /// `ring` values of `preintegrated_skin` and whether each is the half ring.
 pub const RINGS: &[(&str, bool)] = &[("full", false), ("half", true)];
 
-/// Texels per axis a table may have.
-pub const TABLE_SIZE_RANGE: [u32; 2] = [2, 512];
+/// Texels per axis a table may have (a one-dimensional function such as
+/// the film's oscillating sensitivity needs thousands along u; WebGPU
+/// guarantees 8192).
+pub const TABLE_SIZE_RANGE: [u32; 2] = [2, 4096];
+
+/// The longest optical path difference (nm) a `thin_film_sensitivity`
+/// table may cover: the sensitivity has decayed to nothing long before.
+pub const MAX_OPD_NM: f64 = 100_000.0;
 
 /// The most texels a material's tables may have in all (256²): baking
 /// integrates thousands of points per texel, and this keeps a build with
@@ -49,7 +61,6 @@ fn parse_table(
     cx: &mut Cx,
 ) -> Option<BakedTable> {
     let t = Table::new(v, format!("table `{name}`"), cx)?;
-    t.check_keys(TABLE_KEYS, cx);
     if !is_snake_ident(name) {
         cx.error_with_note(
             "bad-name",
@@ -141,9 +152,21 @@ fn table_size(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<[u32; 2
     })
 }
 
-/// `recipe` and the recipe's own keys.
+/// Keys every table has.
+const COMMON_KEYS: [&str; 2] = ["recipe", "size"];
+
+/// `recipe` and the recipe's own keys; a key of another recipe is unknown
+/// here.
 fn table_recipe(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<TableRecipe> {
-    Some(match t.string("recipe", cx).as_deref() {
+    let recipe = t.string("recipe", cx);
+    let own: &[&str] = match recipe.as_deref() {
+        Some("preintegrated_skin") => &["shape", "ring"],
+        Some("thin_film_sensitivity") => &["opd_max"],
+        _ => &TABLE_KEYS[COMMON_KEYS.len()..],
+    };
+    let allowed: Vec<&str> = COMMON_KEYS.iter().chain(own).copied().collect();
+    t.check_keys(&allowed, cx);
+    Some(match recipe.as_deref() {
         Some("preintegrated_skin") => {
             let shape = skin_shape(t, cx)?;
             let ring = t.string("ring", cx);
@@ -165,6 +188,9 @@ fn table_recipe(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<Table
             };
             TableRecipe::PreintegratedSkin { shape, half_ring }
         }
+        Some("thin_film_sensitivity") => TableRecipe::ThinFilmSensitivity {
+            opd_max_nm: film_opd_max(t, cx)?,
+        },
         Some(other) => {
             let names: Vec<&str> = RECIPES.iter().map(|(n, _)| *n).collect();
             let hint = crate::diag::did_you_mean(other, names.iter().copied()).map_or_else(
@@ -222,4 +248,29 @@ fn skin_shape(t: &Table, cx: &mut Cx) -> Option<[f64; 3]> {
         return None;
     }
     Some([s[0], s[1], s[2]])
+}
+
+/// The film table's `opd_max`: the longest optical path difference (nm) it
+/// covers, u = 1.
+fn film_opd_max(t: &Table, cx: &mut Cx) -> Option<f64> {
+    let Some(x) = t.number("opd_max", cx) else {
+        cx.error_with_note(
+            "missing-key",
+            "a `thin_film_sensitivity` table needs `opd_max`",
+            t.span.clone(),
+            "in this table",
+            "add `opd_max = 16000.0`: the longest optical path difference (nm) it covers, e.g. four Airy orders of a 1000 nm film of IOR 2",
+        );
+        return None;
+    };
+    if !(x.is_finite() && x > 0.0 && x <= MAX_OPD_NM) {
+        cx.error(
+            "out-of-range",
+            format!("`opd_max` is a path difference in nm in (0, {MAX_OPD_NM}]"),
+            t.span_of("opd_max"),
+            "here",
+        );
+        return None;
+    }
+    Some(x)
 }

@@ -67,6 +67,7 @@ struct WeftFilmSeries {
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
+constant float film_sensitivity_opd_max = 16000.0;
 constant uint COLOR_MODE_HUE_RING = 0u;
 constant uint COLOR_MODE_CUSTOM = 1u;
 constant uint ANISO_COLOR_OFF = 0u;
@@ -85,13 +86,16 @@ constant float WEFT_FILM_LAMBDA_MIN = 380.0;
 constant float WEFT_FILM_LAMBDA_MAX = 780.0;
 constant float WEFT_FILM_FADE_NM = 30.0;
 constant metal::float3x3 WEFT_XYZ_TO_REC709_ = metal::float3x3(metal::float3(3.2404542, -0.969266, 0.0556434), metal::float3(-1.5371385, 1.8760108, -0.2040259), metal::float3(-0.4985314, 0.041556, 1.0572252));
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_A = metal::float4(112.289, 17.9875, -22.8564, 14.636);
-constant metal::float4 WEFT_FILM_LOBE_WEIGHT_B = metal::float4(27.8908, 64.448, 5.9984, 99.7587);
-constant metal::float4 WEFT_FILM_LOBE_MU_A = metal::float4(1.64821, 2.23783, 1.51945, 1.95281);
-constant metal::float4 WEFT_FILM_LOBE_MU_B = metal::float4(1.87261, 1.72342, 2.31367, 2.20514);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_A = metal::float4(0.112563, 0.097781, 0.0710853, 0.142693);
-constant metal::float4 WEFT_FILM_LOBE_SIGMA_B = metal::float4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-constant metal::float3 WEFT_FILM_SENSITIVITY_AT_ZERO = metal::float3(107.41976, 106.97481, 105.7571);
+
+metal::float4 table_film_sensitivity(
+    metal::float2 uv,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
+) {
+    metal::float2 st = ((metal::clamp(uv, metal::float2(0.0), metal::float2(1.0)) * metal::float2(2047.0, 1.0)) + metal::float2(0.5)) / metal::float2(2048.0, 2.0);
+    metal::float4 _e13 = film_sensitivity.sample(material_clamp_sampler, st, metal::level(0.0));
+    return _e13;
+}
 
 float weft_pow5_(
     float x
@@ -203,194 +207,32 @@ metal::float2 weft_fresnel_amplitudes_k3_(
     return metal::float2(rs, rp);
 }
 
-metal::float3 weft_film_lobe_orders_k7_(
-    float phase,
-    metal::float3 k1_,
-    metal::float3 k2_,
-    metal::float3 k3_,
-    metal::float3 k4_
+metal::float3 weft_film_sensitivity(
+    float opd_nm,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
-    float c1_ = metal::cos(phase * 1.64821);
-    float sg = phase * 0.112563;
-    float g1_ = metal::exp((-0.5 * sg) * sg);
-    float c2_ = ((2.0 * c1_) * c1_) - 1.0;
-    float c3_ = ((2.0 * c1_) * c2_) - c1_;
-    float c4_ = ((2.0 * c2_) * c2_) - 1.0;
-    float g2_ = (g1_ * g1_) * (g1_ * g1_);
-    float g3_ = (g2_ * g2_) * g1_;
-    float g4_ = (g2_ * g2_) * (g2_ * g2_);
-    return (((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_));
-}
-
-metal::float3 weft_film_lobe_orders_k8_(
-    float phase_1,
-    metal::float3 k1_1,
-    metal::float3 k2_1,
-    metal::float3 k3_1,
-    metal::float3 k4_1
-) {
-    float c1_1 = metal::cos(phase_1 * 2.23783);
-    float sg_1 = phase_1 * 0.097781;
-    float g1_1 = metal::exp((-0.5 * sg_1) * sg_1);
-    float c2_1 = ((2.0 * c1_1) * c1_1) - 1.0;
-    float c3_1 = ((2.0 * c1_1) * c2_1) - c1_1;
-    float c4_1 = ((2.0 * c2_1) * c2_1) - 1.0;
-    float g2_1 = (g1_1 * g1_1) * (g1_1 * g1_1);
-    float g3_1 = (g2_1 * g2_1) * g1_1;
-    float g4_1 = (g2_1 * g2_1) * (g2_1 * g2_1);
-    return (((k1_1 * (c1_1 * g1_1)) + (k2_1 * (c2_1 * g2_1))) + (k3_1 * (c3_1 * g3_1))) + (k4_1 * (c4_1 * g4_1));
-}
-
-metal::float3 weft_film_lobe_orders_k9_(
-    float phase_2,
-    metal::float3 k1_2,
-    metal::float3 k2_2,
-    metal::float3 k3_2,
-    metal::float3 k4_2
-) {
-    float c1_2 = metal::cos(phase_2 * 1.51945);
-    float sg_2 = phase_2 * 0.0710853;
-    float g1_2 = metal::exp((-0.5 * sg_2) * sg_2);
-    float c2_2 = ((2.0 * c1_2) * c1_2) - 1.0;
-    float c3_2 = ((2.0 * c1_2) * c2_2) - c1_2;
-    float c4_2 = ((2.0 * c2_2) * c2_2) - 1.0;
-    float g2_2 = (g1_2 * g1_2) * (g1_2 * g1_2);
-    float g3_2 = (g2_2 * g2_2) * g1_2;
-    float g4_2 = (g2_2 * g2_2) * (g2_2 * g2_2);
-    return (((k1_2 * (c1_2 * g1_2)) + (k2_2 * (c2_2 * g2_2))) + (k3_2 * (c3_2 * g3_2))) + (k4_2 * (c4_2 * g4_2));
-}
-
-metal::float3 weft_film_lobe_orders_k10_(
-    float phase_3,
-    metal::float3 k1_3,
-    metal::float3 k2_3,
-    metal::float3 k3_3,
-    metal::float3 k4_3
-) {
-    float c1_3 = metal::cos(phase_3 * 1.95281);
-    float sg_3 = phase_3 * 0.142693;
-    float g1_3 = metal::exp((-0.5 * sg_3) * sg_3);
-    float c2_3 = ((2.0 * c1_3) * c1_3) - 1.0;
-    float c3_3 = ((2.0 * c1_3) * c2_3) - c1_3;
-    float c4_3 = ((2.0 * c2_3) * c2_3) - 1.0;
-    float g2_3 = (g1_3 * g1_3) * (g1_3 * g1_3);
-    float g3_3 = (g2_3 * g2_3) * g1_3;
-    float g4_3 = (g2_3 * g2_3) * (g2_3 * g2_3);
-    return (((k1_3 * (c1_3 * g1_3)) + (k2_3 * (c2_3 * g2_3))) + (k3_3 * (c3_3 * g3_3))) + (k4_3 * (c4_3 * g4_3));
-}
-
-metal::float3 weft_film_lobe_orders_k11_(
-    float phase_4,
-    metal::float3 k1_4,
-    metal::float3 k2_4,
-    metal::float3 k3_4,
-    metal::float3 k4_4
-) {
-    float c1_4 = metal::cos(phase_4 * 1.87261);
-    float sg_4 = phase_4 * 0.0790523;
-    float g1_4 = metal::exp((-0.5 * sg_4) * sg_4);
-    float c2_4 = ((2.0 * c1_4) * c1_4) - 1.0;
-    float c3_4 = ((2.0 * c1_4) * c2_4) - c1_4;
-    float c4_4 = ((2.0 * c2_4) * c2_4) - 1.0;
-    float g2_4 = (g1_4 * g1_4) * (g1_4 * g1_4);
-    float g3_4 = (g2_4 * g2_4) * g1_4;
-    float g4_4 = (g2_4 * g2_4) * (g2_4 * g2_4);
-    return (((k1_4 * (c1_4 * g1_4)) + (k2_4 * (c2_4 * g2_4))) + (k3_4 * (c3_4 * g3_4))) + (k4_4 * (c4_4 * g4_4));
-}
-
-metal::float3 weft_film_lobe_orders_k12_(
-    float phase_5,
-    metal::float3 k1_5,
-    metal::float3 k2_5,
-    metal::float3 k3_5,
-    metal::float3 k4_5
-) {
-    float c1_5 = metal::cos(phase_5 * 1.72342);
-    float sg_5 = phase_5 * 0.0996288;
-    float g1_5 = metal::exp((-0.5 * sg_5) * sg_5);
-    float c2_5 = ((2.0 * c1_5) * c1_5) - 1.0;
-    float c3_5 = ((2.0 * c1_5) * c2_5) - c1_5;
-    float c4_5 = ((2.0 * c2_5) * c2_5) - 1.0;
-    float g2_5 = (g1_5 * g1_5) * (g1_5 * g1_5);
-    float g3_5 = (g2_5 * g2_5) * g1_5;
-    float g4_5 = (g2_5 * g2_5) * (g2_5 * g2_5);
-    return (((k1_5 * (c1_5 * g1_5)) + (k2_5 * (c2_5 * g2_5))) + (k3_5 * (c3_5 * g3_5))) + (k4_5 * (c4_5 * g4_5));
-}
-
-metal::float3 weft_film_lobe_orders_k13_(
-    float phase_6,
-    metal::float3 k1_6,
-    metal::float3 k2_6,
-    metal::float3 k3_6,
-    metal::float3 k4_6
-) {
-    float c1_6 = metal::cos(phase_6 * 2.31367);
-    float sg_6 = phase_6 * 0.0384759;
-    float g1_6 = metal::exp((-0.5 * sg_6) * sg_6);
-    float c2_6 = ((2.0 * c1_6) * c1_6) - 1.0;
-    float c3_6 = ((2.0 * c1_6) * c2_6) - c1_6;
-    float c4_6 = ((2.0 * c2_6) * c2_6) - 1.0;
-    float g2_6 = (g1_6 * g1_6) * (g1_6 * g1_6);
-    float g3_6 = (g2_6 * g2_6) * g1_6;
-    float g4_6 = (g2_6 * g2_6) * (g2_6 * g2_6);
-    return (((k1_6 * (c1_6 * g1_6)) + (k2_6 * (c2_6 * g2_6))) + (k3_6 * (c3_6 * g3_6))) + (k4_6 * (c4_6 * g4_6));
-}
-
-metal::float3 weft_film_lobe_orders_k14_(
-    float phase_7,
-    metal::float3 k1_7,
-    metal::float3 k2_7,
-    metal::float3 k3_7,
-    metal::float3 k4_7
-) {
-    float c1_7 = metal::cos(phase_7 * 2.20514);
-    float sg_7 = phase_7 * 0.109465;
-    float g1_7 = metal::exp((-0.5 * sg_7) * sg_7);
-    float c2_7 = ((2.0 * c1_7) * c1_7) - 1.0;
-    float c3_7 = ((2.0 * c1_7) * c2_7) - c1_7;
-    float c4_7 = ((2.0 * c2_7) * c2_7) - 1.0;
-    float g2_7 = (g1_7 * g1_7) * (g1_7 * g1_7);
-    float g3_7 = (g2_7 * g2_7) * g1_7;
-    float g4_7 = (g2_7 * g2_7) * (g2_7 * g2_7);
-    return (((k1_7 * (c1_7 * g1_7)) + (k2_7 * (c2_7 * g2_7))) + (k3_7 * (c3_7 * g3_7))) + (k4_7 * (c4_7 * g4_7));
+    metal::float4 _e5 = table_film_sensitivity(metal::float2(opd_nm / film_sensitivity_opd_max, 0.0), material_clamp_sampler, film_sensitivity);
+    return _e5.xyz;
 }
 
 metal::float3 weft_film_orders(
-    float opd_nm,
+    float opd_nm_1,
     WeftFilmSeries s,
-    WeftFilmSeries p
+    WeftFilmSeries p,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
-    metal::float3 sum = {};
-    float phase_8 = (6.2831855 * opd_nm) * 0.001;
-    metal::float3 k1_8 = (s.first * s.ratio) + (p.first * p.ratio);
-    metal::float3 k2_8 = ((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio);
-    metal::float3 k3_8 = (((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio);
-    metal::float3 k4_8 = ((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio));
-    metal::float3 _e65 = weft_film_lobe_orders_k7_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = metal::float3(2.7790883, -1.0780041, 0.0651115) * _e65;
-    metal::float3 _e68 = sum;
-    metal::float3 _e70 = weft_film_lobe_orders_k8_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e68 + (metal::float3(0.4451803, -0.17268476, 0.010430167) * _e70);
-    metal::float3 _e73 = sum;
-    metal::float3 _e75 = weft_film_lobe_orders_k9_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e73 + (metal::float3(-0.56568277, 0.2194275, -0.013253431) * _e75);
-    metal::float3 _e78 = sum;
-    metal::float3 _e80 = weft_film_lobe_orders_k10_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e78 + (metal::float3(-0.17182827, 0.27195558, -0.031118203) * _e80);
-    metal::float3 _e83 = sum;
-    metal::float3 _e85 = weft_film_lobe_orders_k11_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e83 + (metal::float3(-0.32744113, 0.5182467, -0.059299782) * _e85);
-    metal::float3 _e88 = sum;
-    metal::float3 _e90 = weft_film_lobe_orders_k12_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e88 + (metal::float3(-0.7566267, 1.1975262, -0.13702555) * _e90);
-    metal::float3 _e93 = sum;
-    metal::float3 _e95 = weft_film_lobe_orders_k13_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e93 + (metal::float3(-0.022839531, 0.0024689338, 0.06608605) * _e95);
-    metal::float3 _e98 = sum;
-    metal::float3 _e100 = weft_film_lobe_orders_k14_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = _e98 + (metal::float3(-0.3798416, 0.041060552, 1.0990694) * _e100);
-    metal::float3 _e103 = sum;
-    return 2.0 * _e103;
+    metal::float3 k1_ = (s.first * s.ratio) + (p.first * p.ratio);
+    metal::float3 k2_ = ((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio);
+    metal::float3 k3_ = (((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio);
+    metal::float3 k4_ = ((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio));
+    metal::float3 _e55 = weft_film_sensitivity(opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e59 = weft_film_sensitivity(2.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e64 = weft_film_sensitivity(3.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 _e69 = weft_film_sensitivity(4.0 * opd_nm_1, material_clamp_sampler, film_sensitivity);
+    metal::float3 sum = (((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69);
+    return 2.0 * sum;
 }
 
 WeftFilmSeries weft_film_series(
@@ -406,29 +248,29 @@ WeftFilmSeries weft_film_series(
     return WeftFilmSeries {metal::float3(big_r12_) + rs_1, rs_1 - metal::float3(t121_), ratio};
 }
 
-metal::float3 weft_safe_normalize_k15_(
+metal::float3 weft_safe_normalize_k4_(
     metal::float3 v_3
 ) {
     float len2_2 = metal::dot(v_3, v_3);
     return (len2_2 > 0.00000000000000000001) ? (v_3 * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : metal::float3(0.0);
 }
 
-metal::float2 weft_env_brdf_lut_k17_(
+metal::float2 weft_env_brdf_lut_k6_(
     float n_dot_v,
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
 ) {
-    metal::float2 uv = metal::float2(metal::saturate(n_dot_v), 0.2);
-    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), 0.2);
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
     return _e8.xy;
 }
 
-float weft_film_ior_k29_(
+float weft_film_ior_k18_(
 ) {
     return metal::mix(1.0, 1.8, metal::smoothstep(0.0, WEFT_FILM_FADE_NM, 420.0));
 }
 
-float weft_v_smith_ggx_correlated_k19_(
+float weft_v_smith_ggx_correlated_k8_(
     float n_dot_v_1,
     float n_dot_l
 ) {
@@ -439,7 +281,7 @@ float weft_v_smith_ggx_correlated_k19_(
     return 0.5 / (lv + ll);
 }
 
-float weft_d_ggx_nh_k20_(
+float weft_d_ggx_nh_k9_(
     metal::float3 n_3,
     metal::float3 h
 ) {
@@ -449,7 +291,7 @@ float weft_d_ggx_nh_k20_(
     return 0.0016000002 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
 }
 
-float weft_specular_mip_k24_(
+float weft_specular_mip_k13_(
     constant WeftFrame& weft_frame
 ) {
     float _e5 = weft_frame.params.x;
@@ -457,32 +299,32 @@ float weft_specular_mip_k24_(
     return 0.312 * max_mip;
 }
 
-metal::float3 weft_prefiltered_radiance_k21_(
+metal::float3 weft_prefiltered_radiance_k10_(
     metal::float3 dir,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip_k24_(weft_frame);
+    float _e4 = weft_specular_mip_k13_(weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::float3 weft_f_schlick_k25_(
+metal::float3 weft_f_schlick_k14_(
     float v_dot_h
 ) {
     float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
     return metal::float3(0.8999996, 0.8999996, 0.8999996) + (metal::float3(0.10000038, 0.10000038, 0.10000038) * _e5);
 }
 
-metal::float3 weft_env_brdf_from_lut_k26_(
+metal::float3 weft_env_brdf_from_lut_k15_(
     metal::float2 scale_bias
 ) {
     metal::float2 sb = metal::saturate(scale_bias);
     return (metal::float3(0.8999996, 0.8999996, 0.8999996) * sb.x) + metal::float3(sb.y);
 }
 
-type_12 weft_film_base_amplitudes_k32_(
+type_12 weft_film_base_amplitudes_k21_(
     float n2_,
     float cos2_,
     float sin1_sq
@@ -493,35 +335,37 @@ type_12 weft_film_base_amplitudes_k32_(
     return type_12 {{s_1, p_1}};
 }
 
-WeftFilmStack weft_film_stack_k30_(
+WeftFilmStack weft_film_stack_k19_(
     float cos_theta1_
 ) {
     float cos1_ = metal::clamp(cos_theta1_, 0.0, 1.0);
     float sin1_sq_1 = 1.0 - (cos1_ * cos1_);
-    float _e10 = weft_film_ior_k29_();
+    float _e10 = weft_film_ior_k18_();
     float cos2_sq = 1.0 - (sin1_sq_1 / (_e10 * _e10));
     if (cos2_sq <= 0.0) {
         return WeftFilmStack {_e10, 0.0, metal::float2(1.0), type_12 {{metal::float3(1.0), metal::float3(1.0)}}, true};
     }
     float cos2_1 = metal::sqrt(cos2_sq);
     metal::float2 _e23 = weft_fresnel_amplitudes_k3_(_e10, cos1_, cos2_1);
-    type_12 _e24 = weft_film_base_amplitudes_k32_(_e10, cos2_1, sin1_sq_1);
+    type_12 _e24 = weft_film_base_amplitudes_k21_(_e10, cos2_1, sin1_sq_1);
     return WeftFilmStack {_e10, cos2_1, _e23, _e24, false};
 }
 
-metal::float3 weft_film_fourier_layers_k27_(
-    float cos_theta1_1
+metal::float3 weft_film_fourier_layers_k16_(
+    float cos_theta1_1,
+    metal::sampler material_clamp_sampler,
+    metal::texture2d<float, metal::access::sample> film_sensitivity
 ) {
-    WeftFilmStack _e6 = weft_film_stack_k30_(cos_theta1_1);
+    WeftFilmStack _e6 = weft_film_stack_k19_(cos_theta1_1);
     if (_e6.total_internal_reflection) {
         return metal::float3(1.0);
     }
     WeftFilmSeries _e13 = weft_film_series(_e6.r12_.x, _e6.r23_.inner[0]);
     WeftFilmSeries _e18 = weft_film_series(_e6.r12_.y, _e6.r23_.inner[1]);
     float path = (2.0 * _e6.n2_) * _e6.cos2_;
-    metal::float3 _e29 = weft_film_orders(path * 420.0, _e13, _e18);
+    metal::float3 _e29 = weft_film_orders(path * 420.0, _e13, _e18, material_clamp_sampler, film_sensitivity);
     metal::float3 r1_ = (_e13.dc + _e18.dc) + _e29;
-    metal::float3 _e36 = weft_film_orders(path * 420.0, _e13, _e18);
+    metal::float3 _e36 = weft_film_orders(path * 420.0, _e13, _e18, material_clamp_sampler, film_sensitivity);
     metal::float3 r2_ = (_e13.dc + _e18.dc) + _e36;
     return metal::clamp(0.25 * (r1_ + r2_), metal::float3(0.0), metal::float3(1.0));
 }
@@ -556,9 +400,9 @@ vertex vs_mainOutput vs_main(
     metal::float4x4 _e43 = weft_frame.view_proj;
     out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
     out.world_position = world.xyz;
-    metal::float3 _e53 = weft_safe_normalize_k15_(normal3_ * in.normal);
+    metal::float3 _e53 = weft_safe_normalize_k4_(normal3_ * in.normal);
     out.world_normal = _e53;
-    metal::float3 _e58 = weft_safe_normalize_k15_(model3_ * in.tangent.xyz);
+    metal::float3 _e58 = weft_safe_normalize_k4_(model3_ * in.tangent.xyz);
     out.world_tangent = metal::float4(_e58, bitangent_sign);
     out.uv0_ = in.uv0_;
     WeftVaryings _e62 = out;
@@ -584,6 +428,8 @@ fragment fs_mainOutput fs_main(
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
 , metal::sampler weft_lut_sampler [[sampler(1)]]
+, metal::sampler material_clamp_sampler [[sampler(2)]]
+, metal::texture2d<float, metal::access::sample> film_sensitivity [[texture(2)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -602,19 +448,19 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e15 = n;
     WeftLightGeometry _e16 = weft_main_light_geometry(_e15, v_4, weft_frame);
     film_cos = _e16.n_dot_v;
-    metal::float2 _e23 = weft_env_brdf_lut_k17_(_e16.n_dot_v, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e25 = weft_f_schlick_k25_(_e16.v_dot_h);
+    metal::float2 _e23 = weft_env_brdf_lut_k6_(_e16.n_dot_v, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e25 = weft_f_schlick_k14_(_e16.v_dot_h);
     f_light = _e25;
-    metal::float3 _e27 = weft_env_brdf_from_lut_k26_(_e23);
+    metal::float3 _e27 = weft_env_brdf_from_lut_k15_(_e23);
     e_spec = _e27;
     {
         light_cos = _e16.v_dot_h;
         {
             float _e36 = film_cos;
-            metal::float3 _e37 = weft_film_fourier_layers_k27_(_e36);
+            metal::float3 _e37 = weft_film_fourier_layers_k16_(_e36, material_clamp_sampler, film_sensitivity);
             film_view = _e37;
             float _e38 = light_cos;
-            metal::float3 _e39 = weft_film_fourier_layers_k27_(_e38);
+            metal::float3 _e39 = weft_film_fourier_layers_k16_(_e38, material_clamp_sampler, film_sensitivity);
             film_light = _e39;
         }
         metal::float3 _e40 = f_light;
@@ -626,16 +472,16 @@ fragment fs_mainOutput fs_main(
     }
     metal::float3 _e51 = e_spec;
     metal::float3 kd = metal::max(metal::float3(1.0) - _e51, metal::float3(0.0));
-    float _e57 = weft_v_smith_ggx_correlated_k19_(_e16.n_dot_v, _e16.n_dot_l);
+    float _e57 = weft_v_smith_ggx_correlated_k8_(_e16.n_dot_v, _e16.n_dot_l);
     metal::float3 _e58 = n;
-    float _e60 = weft_d_ggx_nh_k20_(_e58, _e16.h);
+    float _e60 = weft_d_ggx_nh_k9_(_e58, _e16.h);
     metal::float3 _e62 = f_light;
     metal::float3 specular = (_e60 * _e57) * _e62;
     metal::float3 diffuse = kd * metal::float3(0.0, 0.0, 0.0);
     metal::float3 _e67 = weft_main_light_radiance(weft_frame);
     metal::float3 direct = ((diffuse + specular) * _e67) * _e16.n_dot_l;
     metal::float3 _e72 = n;
-    metal::float3 _e74 = weft_prefiltered_radiance_k21_(metal::reflect(-(v_4), _e72), weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e74 = weft_prefiltered_radiance_k10_(metal::reflect(-(v_4), _e72), weft_frame, weft_environment, weft_environment_sampler);
     metal::float3 _e75 = e_spec;
     metal::float3 indirect_specular = _e74 * _e75;
     metal::float3 _e77 = n;

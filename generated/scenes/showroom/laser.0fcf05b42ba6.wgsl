@@ -59,6 +59,7 @@ struct WeftFilmSeries {
 
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
+const film_sensitivity_opd_max: f32 = 16000f;
 const COLOR_MODE_HUE_RING: u32 = 0u;
 const COLOR_MODE_CUSTOM: u32 = 1u;
 const ANISO_COLOR_OFF: u32 = 0u;
@@ -77,13 +78,6 @@ const WEFT_FILM_LAMBDA_MIN: f32 = 380f;
 const WEFT_FILM_LAMBDA_MAX: f32 = 780f;
 const WEFT_FILM_FADE_NM: f32 = 30f;
 const WEFT_XYZ_TO_REC709_: mat3x3<f32> = mat3x3<f32>(vec3<f32>(3.2404542f, -0.969266f, 0.0556434f), vec3<f32>(-1.5371385f, 1.8760108f, -0.2040259f), vec3<f32>(-0.4985314f, 0.041556f, 1.0572252f));
-const WEFT_FILM_LOBE_WEIGHT_A: vec4<f32> = vec4<f32>(112.289f, 17.9875f, -22.8564f, 14.636f);
-const WEFT_FILM_LOBE_WEIGHT_B: vec4<f32> = vec4<f32>(27.8908f, 64.448f, 5.9984f, 99.7587f);
-const WEFT_FILM_LOBE_MU_A: vec4<f32> = vec4<f32>(1.64821f, 2.23783f, 1.51945f, 1.95281f);
-const WEFT_FILM_LOBE_MU_B: vec4<f32> = vec4<f32>(1.87261f, 1.72342f, 2.31367f, 2.20514f);
-const WEFT_FILM_LOBE_SIGMA_A: vec4<f32> = vec4<f32>(0.112563f, 0.097781f, 0.0710853f, 0.142693f);
-const WEFT_FILM_LOBE_SIGMA_B: vec4<f32> = vec4<f32>(0.0790523f, 0.0996288f, 0.0384759f, 0.109465f);
-const WEFT_FILM_SENSITIVITY_AT_ZERO: vec3<f32> = vec3<f32>(107.41976f, 106.97481f, 105.7571f);
 
 @group(0) @binding(0) 
 var<uniform> weft_frame: WeftFrame;
@@ -97,6 +91,16 @@ var weft_brdf_lut: texture_2d<f32>;
 var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
+@group(1) @binding(2) 
+var material_clamp_sampler: sampler;
+@group(1) @binding(9) 
+var film_sensitivity: texture_2d<f32>;
+
+fn table_film_sensitivity(uv: vec2<f32>) -> vec4<f32> {
+    let st = (((clamp(uv, vec2(0f), vec2(1f)) * vec2<f32>(2047f, 1f)) + vec2(0.5f)) / vec2<f32>(2048f, 2f));
+    let _e13 = textureSampleLevel(film_sensitivity, material_clamp_sampler, st, 0f);
+    return _e13;
+}
 
 fn weft_pow5_(x: f32) -> f32 {
     let x2_ = (x * x);
@@ -178,143 +182,22 @@ fn weft_fresnel_amplitudes_k3_(n_t: f32, cos_i: f32, cos_t: f32) -> vec2<f32> {
     return vec2<f32>(rs, rp);
 }
 
-fn weft_film_lobe_orders_k7_(phase: f32, k1_: vec3<f32>, k2_: vec3<f32>, k3_: vec3<f32>, k4_: vec3<f32>) -> vec3<f32> {
-    let c1_ = cos((phase * 1.64821f));
-    let sg = (phase * 0.112563f);
-    let g1_ = exp(((-0.5f * sg) * sg));
-    let c2_ = (((2f * c1_) * c1_) - 1f);
-    let c3_ = (((2f * c1_) * c2_) - c1_);
-    let c4_ = (((2f * c2_) * c2_) - 1f);
-    let g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    let g3_ = ((g2_ * g2_) * g1_);
-    let g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+fn weft_film_sensitivity(opd_nm: f32) -> vec3<f32> {
+    let _e5 = table_film_sensitivity(vec2<f32>((opd_nm / film_sensitivity_opd_max), 0f));
+    return _e5.xyz;
 }
 
-fn weft_film_lobe_orders_k8_(phase_1: f32, k1_1: vec3<f32>, k2_1: vec3<f32>, k3_1: vec3<f32>, k4_1: vec3<f32>) -> vec3<f32> {
-    let c1_1 = cos((phase_1 * 2.23783f));
-    let sg_1 = (phase_1 * 0.097781f);
-    let g1_1 = exp(((-0.5f * sg_1) * sg_1));
-    let c2_1 = (((2f * c1_1) * c1_1) - 1f);
-    let c3_1 = (((2f * c1_1) * c2_1) - c1_1);
-    let c4_1 = (((2f * c2_1) * c2_1) - 1f);
-    let g2_1 = ((g1_1 * g1_1) * (g1_1 * g1_1));
-    let g3_1 = ((g2_1 * g2_1) * g1_1);
-    let g4_1 = ((g2_1 * g2_1) * (g2_1 * g2_1));
-    return ((((k1_1 * (c1_1 * g1_1)) + (k2_1 * (c2_1 * g2_1))) + (k3_1 * (c3_1 * g3_1))) + (k4_1 * (c4_1 * g4_1)));
-}
-
-fn weft_film_lobe_orders_k9_(phase_2: f32, k1_2: vec3<f32>, k2_2: vec3<f32>, k3_2: vec3<f32>, k4_2: vec3<f32>) -> vec3<f32> {
-    let c1_2 = cos((phase_2 * 1.51945f));
-    let sg_2 = (phase_2 * 0.0710853f);
-    let g1_2 = exp(((-0.5f * sg_2) * sg_2));
-    let c2_2 = (((2f * c1_2) * c1_2) - 1f);
-    let c3_2 = (((2f * c1_2) * c2_2) - c1_2);
-    let c4_2 = (((2f * c2_2) * c2_2) - 1f);
-    let g2_2 = ((g1_2 * g1_2) * (g1_2 * g1_2));
-    let g3_2 = ((g2_2 * g2_2) * g1_2);
-    let g4_2 = ((g2_2 * g2_2) * (g2_2 * g2_2));
-    return ((((k1_2 * (c1_2 * g1_2)) + (k2_2 * (c2_2 * g2_2))) + (k3_2 * (c3_2 * g3_2))) + (k4_2 * (c4_2 * g4_2)));
-}
-
-fn weft_film_lobe_orders_k10_(phase_3: f32, k1_3: vec3<f32>, k2_3: vec3<f32>, k3_3: vec3<f32>, k4_3: vec3<f32>) -> vec3<f32> {
-    let c1_3 = cos((phase_3 * 1.95281f));
-    let sg_3 = (phase_3 * 0.142693f);
-    let g1_3 = exp(((-0.5f * sg_3) * sg_3));
-    let c2_3 = (((2f * c1_3) * c1_3) - 1f);
-    let c3_3 = (((2f * c1_3) * c2_3) - c1_3);
-    let c4_3 = (((2f * c2_3) * c2_3) - 1f);
-    let g2_3 = ((g1_3 * g1_3) * (g1_3 * g1_3));
-    let g3_3 = ((g2_3 * g2_3) * g1_3);
-    let g4_3 = ((g2_3 * g2_3) * (g2_3 * g2_3));
-    return ((((k1_3 * (c1_3 * g1_3)) + (k2_3 * (c2_3 * g2_3))) + (k3_3 * (c3_3 * g3_3))) + (k4_3 * (c4_3 * g4_3)));
-}
-
-fn weft_film_lobe_orders_k11_(phase_4: f32, k1_4: vec3<f32>, k2_4: vec3<f32>, k3_4: vec3<f32>, k4_4: vec3<f32>) -> vec3<f32> {
-    let c1_4 = cos((phase_4 * 1.87261f));
-    let sg_4 = (phase_4 * 0.0790523f);
-    let g1_4 = exp(((-0.5f * sg_4) * sg_4));
-    let c2_4 = (((2f * c1_4) * c1_4) - 1f);
-    let c3_4 = (((2f * c1_4) * c2_4) - c1_4);
-    let c4_4 = (((2f * c2_4) * c2_4) - 1f);
-    let g2_4 = ((g1_4 * g1_4) * (g1_4 * g1_4));
-    let g3_4 = ((g2_4 * g2_4) * g1_4);
-    let g4_4 = ((g2_4 * g2_4) * (g2_4 * g2_4));
-    return ((((k1_4 * (c1_4 * g1_4)) + (k2_4 * (c2_4 * g2_4))) + (k3_4 * (c3_4 * g3_4))) + (k4_4 * (c4_4 * g4_4)));
-}
-
-fn weft_film_lobe_orders_k12_(phase_5: f32, k1_5: vec3<f32>, k2_5: vec3<f32>, k3_5: vec3<f32>, k4_5: vec3<f32>) -> vec3<f32> {
-    let c1_5 = cos((phase_5 * 1.72342f));
-    let sg_5 = (phase_5 * 0.0996288f);
-    let g1_5 = exp(((-0.5f * sg_5) * sg_5));
-    let c2_5 = (((2f * c1_5) * c1_5) - 1f);
-    let c3_5 = (((2f * c1_5) * c2_5) - c1_5);
-    let c4_5 = (((2f * c2_5) * c2_5) - 1f);
-    let g2_5 = ((g1_5 * g1_5) * (g1_5 * g1_5));
-    let g3_5 = ((g2_5 * g2_5) * g1_5);
-    let g4_5 = ((g2_5 * g2_5) * (g2_5 * g2_5));
-    return ((((k1_5 * (c1_5 * g1_5)) + (k2_5 * (c2_5 * g2_5))) + (k3_5 * (c3_5 * g3_5))) + (k4_5 * (c4_5 * g4_5)));
-}
-
-fn weft_film_lobe_orders_k13_(phase_6: f32, k1_6: vec3<f32>, k2_6: vec3<f32>, k3_6: vec3<f32>, k4_6: vec3<f32>) -> vec3<f32> {
-    let c1_6 = cos((phase_6 * 2.31367f));
-    let sg_6 = (phase_6 * 0.0384759f);
-    let g1_6 = exp(((-0.5f * sg_6) * sg_6));
-    let c2_6 = (((2f * c1_6) * c1_6) - 1f);
-    let c3_6 = (((2f * c1_6) * c2_6) - c1_6);
-    let c4_6 = (((2f * c2_6) * c2_6) - 1f);
-    let g2_6 = ((g1_6 * g1_6) * (g1_6 * g1_6));
-    let g3_6 = ((g2_6 * g2_6) * g1_6);
-    let g4_6 = ((g2_6 * g2_6) * (g2_6 * g2_6));
-    return ((((k1_6 * (c1_6 * g1_6)) + (k2_6 * (c2_6 * g2_6))) + (k3_6 * (c3_6 * g3_6))) + (k4_6 * (c4_6 * g4_6)));
-}
-
-fn weft_film_lobe_orders_k14_(phase_7: f32, k1_7: vec3<f32>, k2_7: vec3<f32>, k3_7: vec3<f32>, k4_7: vec3<f32>) -> vec3<f32> {
-    let c1_7 = cos((phase_7 * 2.20514f));
-    let sg_7 = (phase_7 * 0.109465f);
-    let g1_7 = exp(((-0.5f * sg_7) * sg_7));
-    let c2_7 = (((2f * c1_7) * c1_7) - 1f);
-    let c3_7 = (((2f * c1_7) * c2_7) - c1_7);
-    let c4_7 = (((2f * c2_7) * c2_7) - 1f);
-    let g2_7 = ((g1_7 * g1_7) * (g1_7 * g1_7));
-    let g3_7 = ((g2_7 * g2_7) * g1_7);
-    let g4_7 = ((g2_7 * g2_7) * (g2_7 * g2_7));
-    return ((((k1_7 * (c1_7 * g1_7)) + (k2_7 * (c2_7 * g2_7))) + (k3_7 * (c3_7 * g3_7))) + (k4_7 * (c4_7 * g4_7)));
-}
-
-fn weft_film_orders(opd_nm: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
-    var sum: vec3<f32>;
-
-    let phase_8 = ((6.2831855f * opd_nm) * 0.001f);
-    let k1_8 = ((s.first * s.ratio) + (p.first * p.ratio));
-    let k2_8 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    let k3_8 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    let k4_8 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    let _e65 = weft_film_lobe_orders_k7_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (vec3<f32>(2.7790883f, -1.0780041f, 0.0651115f) * _e65);
-    let _e68 = sum;
-    let _e70 = weft_film_lobe_orders_k8_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e68 + (vec3<f32>(0.4451803f, -0.17268476f, 0.010430167f) * _e70));
-    let _e73 = sum;
-    let _e75 = weft_film_lobe_orders_k9_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e73 + (vec3<f32>(-0.56568277f, 0.2194275f, -0.013253431f) * _e75));
-    let _e78 = sum;
-    let _e80 = weft_film_lobe_orders_k10_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e78 + (vec3<f32>(-0.17182827f, 0.27195558f, -0.031118203f) * _e80));
-    let _e83 = sum;
-    let _e85 = weft_film_lobe_orders_k11_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e83 + (vec3<f32>(-0.32744113f, 0.5182467f, -0.059299782f) * _e85));
-    let _e88 = sum;
-    let _e90 = weft_film_lobe_orders_k12_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e88 + (vec3<f32>(-0.7566267f, 1.1975262f, -0.13702555f) * _e90));
-    let _e93 = sum;
-    let _e95 = weft_film_lobe_orders_k13_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e93 + (vec3<f32>(-0.022839531f, 0.0024689338f, 0.06608605f) * _e95));
-    let _e98 = sum;
-    let _e100 = weft_film_lobe_orders_k14_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e98 + (vec3<f32>(-0.3798416f, 0.041060552f, 1.0990694f) * _e100));
-    let _e103 = sum;
-    return (2f * _e103);
+fn weft_film_orders(opd_nm_1: f32, s: WeftFilmSeries, p: WeftFilmSeries) -> vec3<f32> {
+    let k1_ = ((s.first * s.ratio) + (p.first * p.ratio));
+    let k2_ = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    let k3_ = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    let k4_ = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    let _e55 = weft_film_sensitivity(opd_nm_1);
+    let _e59 = weft_film_sensitivity((2f * opd_nm_1));
+    let _e64 = weft_film_sensitivity((3f * opd_nm_1));
+    let _e69 = weft_film_sensitivity((4f * opd_nm_1));
+    let sum = ((((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69));
+    return (2f * sum);
 }
 
 fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
@@ -327,22 +210,22 @@ fn weft_film_series(r12_: f32, r23_: vec3<f32>) -> WeftFilmSeries {
     return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
 }
 
-fn weft_safe_normalize_k15_(v_3: vec3<f32>) -> vec3<f32> {
+fn weft_safe_normalize_k4_(v_3: vec3<f32>) -> vec3<f32> {
     let len2_2 = dot(v_3, v_3);
     return select(vec3(0f), (v_3 * inverseSqrt(max(len2_2, 0.00000000000000000001f))), (len2_2 > 0.00000000000000000001f));
 }
 
-fn weft_env_brdf_lut_k17_(n_dot_v: f32) -> vec2<f32> {
-    let uv = vec2<f32>(saturate(n_dot_v), 0.2f);
-    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+fn weft_env_brdf_lut_k6_(n_dot_v: f32) -> vec2<f32> {
+    let uv_1 = vec2<f32>(saturate(n_dot_v), 0.2f);
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
     return _e8.xy;
 }
 
-fn weft_film_ior_k29_() -> f32 {
+fn weft_film_ior_k18_() -> f32 {
     return mix(1f, 1.8f, smoothstep(0f, WEFT_FILM_FADE_NM, 420f));
 }
 
-fn weft_v_smith_ggx_correlated_k19_(n_dot_v_1: f32, n_dot_l: f32) -> f32 {
+fn weft_v_smith_ggx_correlated_k8_(n_dot_v_1: f32, n_dot_l: f32) -> f32 {
     let _e6 = weft_clamp_cos(n_dot_v_1);
     let _e7 = weft_clamp_cos(n_dot_l);
     let lv = (_e7 * sqrt((((_e6 * _e6) * 0.9984f) + 0.0016000002f)));
@@ -350,58 +233,58 @@ fn weft_v_smith_ggx_correlated_k19_(n_dot_v_1: f32, n_dot_l: f32) -> f32 {
     return (0.5f / (lv + ll));
 }
 
-fn weft_d_ggx_nh_k20_(n_3: vec3<f32>, h: vec3<f32>) -> f32 {
+fn weft_d_ggx_nh_k9_(n_3: vec3<f32>, h: vec3<f32>) -> f32 {
     let noh = saturate(dot(n_3, h));
     let nxh = cross(n_3, h);
     let d = (dot(nxh, nxh) + ((noh * noh) * 0.0016000002f));
     return (0.0016000002f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
 }
 
-fn weft_specular_mip_k24_() -> f32 {
+fn weft_specular_mip_k13_() -> f32 {
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
     return (0.312f * max_mip);
 }
 
-fn weft_prefiltered_radiance_k21_(dir: vec3<f32>) -> vec3<f32> {
-    let _e4 = weft_specular_mip_k24_();
+fn weft_prefiltered_radiance_k10_(dir: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_specular_mip_k13_();
     let c_1 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_f_schlick_k25_(v_dot_h: f32) -> vec3<f32> {
+fn weft_f_schlick_k14_(v_dot_h: f32) -> vec3<f32> {
     let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
     return (vec3<f32>(0.8999996f, 0.8999996f, 0.8999996f) + (vec3<f32>(0.10000038f, 0.10000038f, 0.10000038f) * _e5));
 }
 
-fn weft_env_brdf_from_lut_k26_(scale_bias: vec2<f32>) -> vec3<f32> {
+fn weft_env_brdf_from_lut_k15_(scale_bias: vec2<f32>) -> vec3<f32> {
     let sb = saturate(scale_bias);
     return ((vec3<f32>(0.8999996f, 0.8999996f, 0.8999996f) * sb.x) + vec3(sb.y));
 }
 
-fn weft_film_base_amplitudes_k32_(n2_: f32, cos2_: f32, sin1_sq: f32) -> array<vec3<f32>, 2> {
+fn weft_film_base_amplitudes_k21_(n2_: f32, cos2_: f32, sin1_sq: f32) -> array<vec3<f32>, 2> {
     let cos3_ = sqrt(max((vec3(1f) - (vec3(sin1_sq) / vec3<f32>(1441.9869f, 1441.9869f, 1441.9869f))), vec3(0f)));
     let s_1 = ((vec3((n2_ * cos2_)) - (vec3<f32>(37.973503f, 37.973503f, 37.973503f) * cos3_)) / max((vec3((n2_ * cos2_)) + (vec3<f32>(37.973503f, 37.973503f, 37.973503f) * cos3_)), vec3(0.000000000001f)));
     let p_1 = (((vec3<f32>(37.973503f, 37.973503f, 37.973503f) * cos2_) - (vec3(n2_) * cos3_)) / max(((vec3<f32>(37.973503f, 37.973503f, 37.973503f) * cos2_) + (vec3(n2_) * cos3_)), vec3(0.000000000001f)));
     return array<vec3<f32>, 2>(s_1, p_1);
 }
 
-fn weft_film_stack_k30_(cos_theta1_: f32) -> WeftFilmStack {
+fn weft_film_stack_k19_(cos_theta1_: f32) -> WeftFilmStack {
     let cos1_ = clamp(cos_theta1_, 0f, 1f);
     let sin1_sq_1 = (1f - (cos1_ * cos1_));
-    let _e10 = weft_film_ior_k29_();
+    let _e10 = weft_film_ior_k18_();
     let cos2_sq = (1f - (sin1_sq_1 / (_e10 * _e10)));
     if (cos2_sq <= 0f) {
         return WeftFilmStack(_e10, 0f, vec2(1f), array<vec3<f32>, 2>(vec3(1f), vec3(1f)), true);
     }
     let cos2_1 = sqrt(cos2_sq);
     let _e23 = weft_fresnel_amplitudes_k3_(_e10, cos1_, cos2_1);
-    let _e24 = weft_film_base_amplitudes_k32_(_e10, cos2_1, sin1_sq_1);
+    let _e24 = weft_film_base_amplitudes_k21_(_e10, cos2_1, sin1_sq_1);
     return WeftFilmStack(_e10, cos2_1, _e23, _e24, false);
 }
 
-fn weft_film_fourier_layers_k27_(cos_theta1_1: f32) -> vec3<f32> {
-    let _e6 = weft_film_stack_k30_(cos_theta1_1);
+fn weft_film_fourier_layers_k16_(cos_theta1_1: f32) -> vec3<f32> {
+    let _e6 = weft_film_stack_k19_(cos_theta1_1);
     if _e6.total_internal_reflection {
         return vec3(1f);
     }
@@ -429,9 +312,9 @@ fn vs_main(in: WeftVertexInput) -> WeftVaryings {
     let _e43 = weft_frame.view_proj;
     out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
     out.world_position = world.xyz;
-    let _e53 = weft_safe_normalize_k15_((normal3_ * in.normal));
+    let _e53 = weft_safe_normalize_k4_((normal3_ * in.normal));
     out.world_normal = _e53;
-    let _e58 = weft_safe_normalize_k15_((model3_ * in.tangent.xyz));
+    let _e58 = weft_safe_normalize_k4_((model3_ * in.tangent.xyz));
     out.world_tangent = vec4<f32>(_e58, bitangent_sign);
     out.uv0_ = in.uv0_;
     let _e62 = out;
@@ -457,19 +340,19 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e15 = n;
     let _e16 = weft_main_light_geometry(_e15, v_4);
     film_cos = _e16.n_dot_v;
-    let _e23 = weft_env_brdf_lut_k17_(_e16.n_dot_v);
-    let _e25 = weft_f_schlick_k25_(_e16.v_dot_h);
+    let _e23 = weft_env_brdf_lut_k6_(_e16.n_dot_v);
+    let _e25 = weft_f_schlick_k14_(_e16.v_dot_h);
     f_light = _e25;
-    let _e27 = weft_env_brdf_from_lut_k26_(_e23);
+    let _e27 = weft_env_brdf_from_lut_k15_(_e23);
     e_spec = _e27;
     {
         light_cos = _e16.v_dot_h;
         {
             let _e36 = film_cos;
-            let _e37 = weft_film_fourier_layers_k27_(_e36);
+            let _e37 = weft_film_fourier_layers_k16_(_e36);
             film_view = _e37;
             let _e38 = light_cos;
-            let _e39 = weft_film_fourier_layers_k27_(_e38);
+            let _e39 = weft_film_fourier_layers_k16_(_e38);
             film_light = _e39;
         }
         let _e40 = f_light;
@@ -481,16 +364,16 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     }
     let _e51 = e_spec;
     let kd = max((vec3(1f) - _e51), vec3(0f));
-    let _e57 = weft_v_smith_ggx_correlated_k19_(_e16.n_dot_v, _e16.n_dot_l);
+    let _e57 = weft_v_smith_ggx_correlated_k8_(_e16.n_dot_v, _e16.n_dot_l);
     let _e58 = n;
-    let _e60 = weft_d_ggx_nh_k20_(_e58, _e16.h);
+    let _e60 = weft_d_ggx_nh_k9_(_e58, _e16.h);
     let _e62 = f_light;
     let specular = ((_e60 * _e57) * _e62);
     let diffuse = (kd * vec3<f32>(0f, 0f, 0f));
     let _e67 = weft_main_light_radiance();
     let direct = (((diffuse + specular) * _e67) * _e16.n_dot_l);
     let _e72 = n;
-    let _e74 = weft_prefiltered_radiance_k21_(reflect(-(v_4), _e72));
+    let _e74 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e72));
     let _e75 = e_spec;
     let indirect_specular = (_e74 * _e75);
     let _e77 = n;

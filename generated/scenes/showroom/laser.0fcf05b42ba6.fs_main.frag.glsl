@@ -52,6 +52,7 @@ struct WeftFilmSeries {
 };
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
+const float film_sensitivity_opd_max = 16000.0;
 const uint COLOR_MODE_HUE_RING = 0u;
 const uint COLOR_MODE_CUSTOM = 1u;
 const uint ANISO_COLOR_OFF = 0u;
@@ -70,13 +71,6 @@ const float WEFT_FILM_LAMBDA_MIN = 380.0;
 const float WEFT_FILM_LAMBDA_MAX = 780.0;
 const float WEFT_FILM_FADE_NM = 30.0;
 const mat3x3 WEFT_XYZ_TO_REC709_ = mat3x3(vec3(3.2404542, -0.969266, 0.0556434), vec3(-1.5371385, 1.8760108, -0.2040259), vec3(-0.4985314, 0.041556, 1.0572252));
-const vec4 WEFT_FILM_LOBE_WEIGHT_A = vec4(112.289, 17.9875, -22.8564, 14.636);
-const vec4 WEFT_FILM_LOBE_WEIGHT_B = vec4(27.8908, 64.448, 5.9984, 99.7587);
-const vec4 WEFT_FILM_LOBE_MU_A = vec4(1.64821, 2.23783, 1.51945, 1.95281);
-const vec4 WEFT_FILM_LOBE_MU_B = vec4(1.87261, 1.72342, 2.31367, 2.20514);
-const vec4 WEFT_FILM_LOBE_SIGMA_A = vec4(0.112563, 0.097781, 0.0710853, 0.142693);
-const vec4 WEFT_FILM_LOBE_SIGMA_B = vec4(0.0790523, 0.0996288, 0.0384759, 0.109465);
-const vec3 WEFT_FILM_SENSITIVITY_AT_ZERO = vec3(107.41976, 106.97481, 105.7571);
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
@@ -84,11 +78,19 @@ layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
 layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
 
+layout(binding = 2) uniform sampler2D _group_1_binding_9_fs;
+
 layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
+
+vec4 table_film_sensitivity(vec2 uv) {
+    vec2 st = (((clamp(uv, vec2(0.0), vec2(1.0)) * vec2(2047.0, 1.0)) + vec2(0.5)) / vec2(2048.0, 2.0));
+    vec4 _e13 = textureLod(_group_1_binding_9_fs, vec2(st), 0.0);
+    return _e13;
+}
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -169,142 +171,22 @@ vec2 weft_fresnel_amplitudes_k3_(float n_t, float cos_i, float cos_t) {
     return vec2(rs, rp);
 }
 
-vec3 weft_film_lobe_orders_k7_(float phase, vec3 k1_, vec3 k2_, vec3 k3_, vec3 k4_) {
-    float c1_ = cos((phase * 1.64821));
-    float sg = (phase * 0.112563);
-    float g1_ = exp(((-0.5 * sg) * sg));
-    float c2_ = (((2.0 * c1_) * c1_) - 1.0);
-    float c3_ = (((2.0 * c1_) * c2_) - c1_);
-    float c4_ = (((2.0 * c2_) * c2_) - 1.0);
-    float g2_ = ((g1_ * g1_) * (g1_ * g1_));
-    float g3_ = ((g2_ * g2_) * g1_);
-    float g4_ = ((g2_ * g2_) * (g2_ * g2_));
-    return ((((k1_ * (c1_ * g1_)) + (k2_ * (c2_ * g2_))) + (k3_ * (c3_ * g3_))) + (k4_ * (c4_ * g4_)));
+vec3 weft_film_sensitivity(float opd_nm) {
+    vec4 _e5 = table_film_sensitivity(vec2((opd_nm / film_sensitivity_opd_max), 0.0));
+    return _e5.xyz;
 }
 
-vec3 weft_film_lobe_orders_k8_(float phase_1, vec3 k1_1, vec3 k2_1, vec3 k3_1, vec3 k4_1) {
-    float c1_1 = cos((phase_1 * 2.23783));
-    float sg_1 = (phase_1 * 0.097781);
-    float g1_1 = exp(((-0.5 * sg_1) * sg_1));
-    float c2_1 = (((2.0 * c1_1) * c1_1) - 1.0);
-    float c3_1 = (((2.0 * c1_1) * c2_1) - c1_1);
-    float c4_1 = (((2.0 * c2_1) * c2_1) - 1.0);
-    float g2_1 = ((g1_1 * g1_1) * (g1_1 * g1_1));
-    float g3_1 = ((g2_1 * g2_1) * g1_1);
-    float g4_1 = ((g2_1 * g2_1) * (g2_1 * g2_1));
-    return ((((k1_1 * (c1_1 * g1_1)) + (k2_1 * (c2_1 * g2_1))) + (k3_1 * (c3_1 * g3_1))) + (k4_1 * (c4_1 * g4_1)));
-}
-
-vec3 weft_film_lobe_orders_k9_(float phase_2, vec3 k1_2, vec3 k2_2, vec3 k3_2, vec3 k4_2) {
-    float c1_2 = cos((phase_2 * 1.51945));
-    float sg_2 = (phase_2 * 0.0710853);
-    float g1_2 = exp(((-0.5 * sg_2) * sg_2));
-    float c2_2 = (((2.0 * c1_2) * c1_2) - 1.0);
-    float c3_2 = (((2.0 * c1_2) * c2_2) - c1_2);
-    float c4_2 = (((2.0 * c2_2) * c2_2) - 1.0);
-    float g2_2 = ((g1_2 * g1_2) * (g1_2 * g1_2));
-    float g3_2 = ((g2_2 * g2_2) * g1_2);
-    float g4_2 = ((g2_2 * g2_2) * (g2_2 * g2_2));
-    return ((((k1_2 * (c1_2 * g1_2)) + (k2_2 * (c2_2 * g2_2))) + (k3_2 * (c3_2 * g3_2))) + (k4_2 * (c4_2 * g4_2)));
-}
-
-vec3 weft_film_lobe_orders_k10_(float phase_3, vec3 k1_3, vec3 k2_3, vec3 k3_3, vec3 k4_3) {
-    float c1_3 = cos((phase_3 * 1.95281));
-    float sg_3 = (phase_3 * 0.142693);
-    float g1_3 = exp(((-0.5 * sg_3) * sg_3));
-    float c2_3 = (((2.0 * c1_3) * c1_3) - 1.0);
-    float c3_3 = (((2.0 * c1_3) * c2_3) - c1_3);
-    float c4_3 = (((2.0 * c2_3) * c2_3) - 1.0);
-    float g2_3 = ((g1_3 * g1_3) * (g1_3 * g1_3));
-    float g3_3 = ((g2_3 * g2_3) * g1_3);
-    float g4_3 = ((g2_3 * g2_3) * (g2_3 * g2_3));
-    return ((((k1_3 * (c1_3 * g1_3)) + (k2_3 * (c2_3 * g2_3))) + (k3_3 * (c3_3 * g3_3))) + (k4_3 * (c4_3 * g4_3)));
-}
-
-vec3 weft_film_lobe_orders_k11_(float phase_4, vec3 k1_4, vec3 k2_4, vec3 k3_4, vec3 k4_4) {
-    float c1_4 = cos((phase_4 * 1.87261));
-    float sg_4 = (phase_4 * 0.0790523);
-    float g1_4 = exp(((-0.5 * sg_4) * sg_4));
-    float c2_4 = (((2.0 * c1_4) * c1_4) - 1.0);
-    float c3_4 = (((2.0 * c1_4) * c2_4) - c1_4);
-    float c4_4 = (((2.0 * c2_4) * c2_4) - 1.0);
-    float g2_4 = ((g1_4 * g1_4) * (g1_4 * g1_4));
-    float g3_4 = ((g2_4 * g2_4) * g1_4);
-    float g4_4 = ((g2_4 * g2_4) * (g2_4 * g2_4));
-    return ((((k1_4 * (c1_4 * g1_4)) + (k2_4 * (c2_4 * g2_4))) + (k3_4 * (c3_4 * g3_4))) + (k4_4 * (c4_4 * g4_4)));
-}
-
-vec3 weft_film_lobe_orders_k12_(float phase_5, vec3 k1_5, vec3 k2_5, vec3 k3_5, vec3 k4_5) {
-    float c1_5 = cos((phase_5 * 1.72342));
-    float sg_5 = (phase_5 * 0.0996288);
-    float g1_5 = exp(((-0.5 * sg_5) * sg_5));
-    float c2_5 = (((2.0 * c1_5) * c1_5) - 1.0);
-    float c3_5 = (((2.0 * c1_5) * c2_5) - c1_5);
-    float c4_5 = (((2.0 * c2_5) * c2_5) - 1.0);
-    float g2_5 = ((g1_5 * g1_5) * (g1_5 * g1_5));
-    float g3_5 = ((g2_5 * g2_5) * g1_5);
-    float g4_5 = ((g2_5 * g2_5) * (g2_5 * g2_5));
-    return ((((k1_5 * (c1_5 * g1_5)) + (k2_5 * (c2_5 * g2_5))) + (k3_5 * (c3_5 * g3_5))) + (k4_5 * (c4_5 * g4_5)));
-}
-
-vec3 weft_film_lobe_orders_k13_(float phase_6, vec3 k1_6, vec3 k2_6, vec3 k3_6, vec3 k4_6) {
-    float c1_6 = cos((phase_6 * 2.31367));
-    float sg_6 = (phase_6 * 0.0384759);
-    float g1_6 = exp(((-0.5 * sg_6) * sg_6));
-    float c2_6 = (((2.0 * c1_6) * c1_6) - 1.0);
-    float c3_6 = (((2.0 * c1_6) * c2_6) - c1_6);
-    float c4_6 = (((2.0 * c2_6) * c2_6) - 1.0);
-    float g2_6 = ((g1_6 * g1_6) * (g1_6 * g1_6));
-    float g3_6 = ((g2_6 * g2_6) * g1_6);
-    float g4_6 = ((g2_6 * g2_6) * (g2_6 * g2_6));
-    return ((((k1_6 * (c1_6 * g1_6)) + (k2_6 * (c2_6 * g2_6))) + (k3_6 * (c3_6 * g3_6))) + (k4_6 * (c4_6 * g4_6)));
-}
-
-vec3 weft_film_lobe_orders_k14_(float phase_7, vec3 k1_7, vec3 k2_7, vec3 k3_7, vec3 k4_7) {
-    float c1_7 = cos((phase_7 * 2.20514));
-    float sg_7 = (phase_7 * 0.109465);
-    float g1_7 = exp(((-0.5 * sg_7) * sg_7));
-    float c2_7 = (((2.0 * c1_7) * c1_7) - 1.0);
-    float c3_7 = (((2.0 * c1_7) * c2_7) - c1_7);
-    float c4_7 = (((2.0 * c2_7) * c2_7) - 1.0);
-    float g2_7 = ((g1_7 * g1_7) * (g1_7 * g1_7));
-    float g3_7 = ((g2_7 * g2_7) * g1_7);
-    float g4_7 = ((g2_7 * g2_7) * (g2_7 * g2_7));
-    return ((((k1_7 * (c1_7 * g1_7)) + (k2_7 * (c2_7 * g2_7))) + (k3_7 * (c3_7 * g3_7))) + (k4_7 * (c4_7 * g4_7)));
-}
-
-vec3 weft_film_orders(float opd_nm, WeftFilmSeries s, WeftFilmSeries p) {
-    vec3 sum = vec3(0.0);
-    float phase_8 = ((6.2831855 * opd_nm) * 0.001);
-    vec3 k1_8 = ((s.first * s.ratio) + (p.first * p.ratio));
-    vec3 k2_8 = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
-    vec3 k3_8 = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
-    vec3 k4_8 = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
-    vec3 _e65 = weft_film_lobe_orders_k7_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (vec3(2.7790883, -1.0780041, 0.0651115) * _e65);
-    vec3 _e68 = sum;
-    vec3 _e70 = weft_film_lobe_orders_k8_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e68 + (vec3(0.4451803, -0.17268476, 0.010430167) * _e70));
-    vec3 _e73 = sum;
-    vec3 _e75 = weft_film_lobe_orders_k9_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e73 + (vec3(-0.56568277, 0.2194275, -0.013253431) * _e75));
-    vec3 _e78 = sum;
-    vec3 _e80 = weft_film_lobe_orders_k10_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e78 + (vec3(-0.17182827, 0.27195558, -0.031118203) * _e80));
-    vec3 _e83 = sum;
-    vec3 _e85 = weft_film_lobe_orders_k11_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e83 + (vec3(-0.32744113, 0.5182467, -0.059299782) * _e85));
-    vec3 _e88 = sum;
-    vec3 _e90 = weft_film_lobe_orders_k12_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e88 + (vec3(-0.7566267, 1.1975262, -0.13702555) * _e90));
-    vec3 _e93 = sum;
-    vec3 _e95 = weft_film_lobe_orders_k13_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e93 + (vec3(-0.022839531, 0.0024689338, 0.06608605) * _e95));
-    vec3 _e98 = sum;
-    vec3 _e100 = weft_film_lobe_orders_k14_(phase_8, k1_8, k2_8, k3_8, k4_8);
-    sum = (_e98 + (vec3(-0.3798416, 0.041060552, 1.0990694) * _e100));
-    vec3 _e103 = sum;
-    return (2.0 * _e103);
+vec3 weft_film_orders(float opd_nm_1, WeftFilmSeries s, WeftFilmSeries p) {
+    vec3 k1_ = ((s.first * s.ratio) + (p.first * p.ratio));
+    vec3 k2_ = (((s.first * s.ratio) * s.ratio) + ((p.first * p.ratio) * p.ratio));
+    vec3 k3_ = ((((s.first * s.ratio) * s.ratio) * s.ratio) + (((p.first * p.ratio) * p.ratio) * p.ratio));
+    vec3 k4_ = (((s.first * (s.ratio * s.ratio)) * (s.ratio * s.ratio)) + ((p.first * (p.ratio * p.ratio)) * (p.ratio * p.ratio)));
+    vec3 _e55 = weft_film_sensitivity(opd_nm_1);
+    vec3 _e59 = weft_film_sensitivity((2.0 * opd_nm_1));
+    vec3 _e64 = weft_film_sensitivity((3.0 * opd_nm_1));
+    vec3 _e69 = weft_film_sensitivity((4.0 * opd_nm_1));
+    vec3 sum = ((((k1_ * _e55) + (k2_ * _e59)) + (k3_ * _e64)) + (k4_ * _e69));
+    return (2.0 * sum);
 }
 
 WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
@@ -317,22 +199,22 @@ WeftFilmSeries weft_film_series(float r12_, vec3 r23_) {
     return WeftFilmSeries((vec3(big_r12_) + rs_1), (rs_1 - vec3(t121_)), ratio);
 }
 
-vec3 weft_safe_normalize_k15_(vec3 v_3) {
+vec3 weft_safe_normalize_k4_(vec3 v_3) {
     float len2_2 = dot(v_3, v_3);
     return ((len2_2 > 1e-20) ? (v_3 * inversesqrt(max(len2_2, 1e-20))) : vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_k17_(float n_dot_v) {
-    vec2 uv = vec2(clamp(n_dot_v, 0.0, 1.0), 0.2);
-    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+vec2 weft_env_brdf_lut_k6_(float n_dot_v) {
+    vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), 0.2);
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
     return _e8.xy;
 }
 
-float weft_film_ior_k29_() {
+float weft_film_ior_k18_() {
     return mix(1.0, 1.8, smoothstep(0.0, WEFT_FILM_FADE_NM, 420.0));
 }
 
-float weft_v_smith_ggx_correlated_k19_(float n_dot_v_1, float n_dot_l) {
+float weft_v_smith_ggx_correlated_k8_(float n_dot_v_1, float n_dot_l) {
     float _e6 = weft_clamp_cos(n_dot_v_1);
     float _e7 = weft_clamp_cos(n_dot_l);
     float lv = (_e7 * sqrt((((_e6 * _e6) * 0.9984) + 0.0016000002)));
@@ -340,58 +222,58 @@ float weft_v_smith_ggx_correlated_k19_(float n_dot_v_1, float n_dot_l) {
     return (0.5 / (lv + ll));
 }
 
-float weft_d_ggx_nh_k20_(vec3 n_3, vec3 h) {
+float weft_d_ggx_nh_k9_(vec3 n_3, vec3 h) {
     float noh = clamp(dot(n_3, h), 0.0, 1.0);
     vec3 nxh = cross(n_3, h);
     float d = (dot(nxh, nxh) + ((noh * noh) * 0.0016000002));
     return (0.0016000002 / (WEFT_PI * max((d * d), 1e-30)));
 }
 
-float weft_specular_mip_k24_() {
+float weft_specular_mip_k13_() {
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return (0.312 * max_mip);
 }
 
-vec3 weft_prefiltered_radiance_k21_(vec3 dir) {
-    float _e4 = weft_specular_mip_k24_();
+vec3 weft_prefiltered_radiance_k10_(vec3 dir) {
+    float _e4 = weft_specular_mip_k13_();
     vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec3 weft_f_schlick_k25_(float v_dot_h) {
+vec3 weft_f_schlick_k14_(float v_dot_h) {
     float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
     return (vec3(0.8999996, 0.8999996, 0.8999996) + (vec3(0.10000038, 0.10000038, 0.10000038) * _e5));
 }
 
-vec3 weft_env_brdf_from_lut_k26_(vec2 scale_bias) {
+vec3 weft_env_brdf_from_lut_k15_(vec2 scale_bias) {
     vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((vec3(0.8999996, 0.8999996, 0.8999996) * sb.x) + vec3(sb.y));
 }
 
-vec3[2] weft_film_base_amplitudes_k32_(float n2_, float cos2_, float sin1_sq) {
+vec3[2] weft_film_base_amplitudes_k21_(float n2_, float cos2_, float sin1_sq) {
     vec3 cos3_ = sqrt(max((vec3(1.0) - (vec3(sin1_sq) / vec3(1441.9869, 1441.9869, 1441.9869))), vec3(0.0)));
     vec3 s_1 = ((vec3((n2_ * cos2_)) - (vec3(37.973503, 37.973503, 37.973503) * cos3_)) / max((vec3((n2_ * cos2_)) + (vec3(37.973503, 37.973503, 37.973503) * cos3_)), vec3(1e-12)));
     vec3 p_1 = (((vec3(37.973503, 37.973503, 37.973503) * cos2_) - (vec3(n2_) * cos3_)) / max(((vec3(37.973503, 37.973503, 37.973503) * cos2_) + (vec3(n2_) * cos3_)), vec3(1e-12)));
     return vec3[2](s_1, p_1);
 }
 
-WeftFilmStack weft_film_stack_k30_(float cos_theta1_) {
+WeftFilmStack weft_film_stack_k19_(float cos_theta1_) {
     float cos1_ = clamp(cos_theta1_, 0.0, 1.0);
     float sin1_sq_1 = (1.0 - (cos1_ * cos1_));
-    float _e10 = weft_film_ior_k29_();
+    float _e10 = weft_film_ior_k18_();
     float cos2_sq = (1.0 - (sin1_sq_1 / (_e10 * _e10)));
     if ((cos2_sq <= 0.0)) {
         return WeftFilmStack(_e10, 0.0, vec2(1.0), vec3[2](vec3(1.0), vec3(1.0)), true);
     }
     float cos2_1 = sqrt(cos2_sq);
     vec2 _e23 = weft_fresnel_amplitudes_k3_(_e10, cos1_, cos2_1);
-    vec3 _e24[2] = weft_film_base_amplitudes_k32_(_e10, cos2_1, sin1_sq_1);
+    vec3 _e24[2] = weft_film_base_amplitudes_k21_(_e10, cos2_1, sin1_sq_1);
     return WeftFilmStack(_e10, cos2_1, _e23, _e24, false);
 }
 
-vec3 weft_film_fourier_layers_k27_(float cos_theta1_1) {
-    WeftFilmStack _e6 = weft_film_stack_k30_(cos_theta1_1);
+vec3 weft_film_fourier_layers_k16_(float cos_theta1_1) {
+    WeftFilmStack _e6 = weft_film_stack_k19_(cos_theta1_1);
     if (_e6.total_internal_reflection) {
         return vec3(1.0);
     }
@@ -423,19 +305,19 @@ void main() {
     vec3 _e15 = n;
     WeftLightGeometry _e16 = weft_main_light_geometry(_e15, v_4);
     film_cos = _e16.n_dot_v;
-    vec2 _e23 = weft_env_brdf_lut_k17_(_e16.n_dot_v);
-    vec3 _e25 = weft_f_schlick_k25_(_e16.v_dot_h);
+    vec2 _e23 = weft_env_brdf_lut_k6_(_e16.n_dot_v);
+    vec3 _e25 = weft_f_schlick_k14_(_e16.v_dot_h);
     f_light = _e25;
-    vec3 _e27 = weft_env_brdf_from_lut_k26_(_e23);
+    vec3 _e27 = weft_env_brdf_from_lut_k15_(_e23);
     e_spec = _e27;
     {
         light_cos = _e16.v_dot_h;
         {
             float _e36 = film_cos;
-            vec3 _e37 = weft_film_fourier_layers_k27_(_e36);
+            vec3 _e37 = weft_film_fourier_layers_k16_(_e36);
             film_view = _e37;
             float _e38 = light_cos;
-            vec3 _e39 = weft_film_fourier_layers_k27_(_e38);
+            vec3 _e39 = weft_film_fourier_layers_k16_(_e38);
             film_light = _e39;
         }
         vec3 _e40 = f_light;
@@ -447,16 +329,16 @@ void main() {
     }
     vec3 _e51 = e_spec;
     vec3 kd = max((vec3(1.0) - _e51), vec3(0.0));
-    float _e57 = weft_v_smith_ggx_correlated_k19_(_e16.n_dot_v, _e16.n_dot_l);
+    float _e57 = weft_v_smith_ggx_correlated_k8_(_e16.n_dot_v, _e16.n_dot_l);
     vec3 _e58 = n;
-    float _e60 = weft_d_ggx_nh_k20_(_e58, _e16.h);
+    float _e60 = weft_d_ggx_nh_k9_(_e58, _e16.h);
     vec3 _e62 = f_light;
     vec3 specular = ((_e60 * _e57) * _e62);
     vec3 diffuse = (kd * vec3(0.0, 0.0, 0.0));
     vec3 _e67 = weft_main_light_radiance();
     vec3 direct = (((diffuse + specular) * _e67) * _e16.n_dot_l);
     vec3 _e72 = n;
-    vec3 _e74 = weft_prefiltered_radiance_k21_(reflect(-(v_4), _e72));
+    vec3 _e74 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e72));
     vec3 _e75 = e_spec;
     vec3 indirect_specular = (_e74 * _e75);
     vec3 _e77 = n;
