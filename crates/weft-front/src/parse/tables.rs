@@ -71,8 +71,10 @@ fn parse_table(
         );
         return None;
     }
+    let recipe_name = t.string("recipe", cx);
+    check_table_keys(&t, recipe_name.as_deref(), cx);
     let size = table_size(&t, name, &span, cx)?;
-    let recipe = table_recipe(&t, name, &span, cx)?;
+    let recipe = table_recipe(&t, recipe_name.as_deref(), name, &span, cx)?;
     let texels: u64 = earlier
         .iter()
         .chain(std::iter::once(&BakedTable {
@@ -155,18 +157,27 @@ fn table_size(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<[u32; 2
 /// Keys every table has.
 const COMMON_KEYS: [&str; 2] = ["recipe", "size"];
 
-/// `recipe` and the recipe's own keys; a key of another recipe is unknown
-/// here.
-fn table_recipe(t: &Table, name: &str, span: &Span, cx: &mut Cx) -> Option<TableRecipe> {
-    let recipe = t.string("recipe", cx);
-    let own: &[&str] = match recipe.as_deref() {
+/// The common keys and the recipe's own; a key of another recipe is
+/// unknown here (every recipe's keys when the recipe is not known).
+fn check_table_keys(t: &Table, recipe: Option<&str>, cx: &mut Cx) {
+    let own: &[&str] = match recipe {
         Some("preintegrated_skin") => &["shape", "ring"],
         Some("thin_film_sensitivity") => &["opd_max"],
         _ => &TABLE_KEYS[COMMON_KEYS.len()..],
     };
     let allowed: Vec<&str> = COMMON_KEYS.iter().chain(own).copied().collect();
     t.check_keys(&allowed, cx);
-    Some(match recipe.as_deref() {
+}
+
+/// The recipe named `recipe` with its own keys.
+fn table_recipe(
+    t: &Table,
+    recipe: Option<&str>,
+    name: &str,
+    span: &Span,
+    cx: &mut Cx,
+) -> Option<TableRecipe> {
+    Some(match recipe {
         Some("preintegrated_skin") => {
             let shape = skin_shape(t, cx)?;
             let ring = t.string("ring", cx);
