@@ -101,20 +101,16 @@ impl FilmCode {
             &mut diags,
         )
         .ok_or("materials/laser/laser.toml does not load (run `weft check` on it)")?;
-        let table = laser
+        let (table, opd_max_nm) = laser
             .tables
             .iter()
-            .find(|t| {
-                matches!(
-                    t.recipe,
-                    weft_front::model::TableRecipe::ThinFilmSensitivity { .. }
-                )
+            .find_map(|t| match t.recipe {
+                weft_front::model::TableRecipe::ThinFilmSensitivity { opd_max_nm } => {
+                    Some((t, opd_max_nm))
+                }
+                _ => None,
             })
             .ok_or("the laser material has no `thin_film_sensitivity` table")?;
-        let weft_front::model::TableRecipe::ThinFilmSensitivity { opd_max_nm } = table.recipe
-        else {
-            unreachable!("found above")
-        };
         let bytes = weft_compiler::compile::tables::bake(table);
         let half = |i: usize| half::f16::from_le_bytes([bytes[i], bytes[i + 1]]).to_f32();
         let sensitivity = (0..table.size[0] as usize)
