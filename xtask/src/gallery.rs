@@ -203,23 +203,7 @@ pub(crate) fn gallery_markdown(
                     .join(", ")
             );
         }
-        let _ = writeln!(
-            md,
-            "Tiers: {}\n",
-            m.tiers
-                .values
-                .iter()
-                .map(|t| format!(
-                    "**{t}** — {}",
-                    m.tiers
-                        .descriptions
-                        .get(t)
-                        .map(|d| d.en.as_str())
-                        .unwrap_or("")
-                ))
-                .collect::<Vec<_>>()
-                .join("; ")
-        );
+        let _ = writeln!(md, "{}\n", tiers_line(m));
         if let Some(ms) = &m.measurements {
             let _ = writeln!(
                 md,
@@ -232,4 +216,48 @@ pub(crate) fn gallery_markdown(
         }
     }
     md
+}
+
+/// The material's tiers and what each computes, one line.
+fn tiers_line(m: &weft_meta::MaterialMetadata) -> String {
+    let tiers: Vec<String> = m
+        .tiers
+        .values
+        .iter()
+        .map(|t| {
+            let description = m.tiers.descriptions.get(t).map_or("", |d| d.en.as_str());
+            format!("**{t}** — {description}")
+        })
+        .collect();
+    format!("Tiers: {}", tiers.join("; "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tiers_line;
+
+    /// The committed gallery.md says what the committed metadata and reports
+    /// say: each material's description, tiers and measured tier table.
+    /// (Its images are rendered, on llvmpipe, which differs between CPUs,
+    /// so they are not checked here.)
+    #[test]
+    fn the_gallerys_text_is_current() {
+        let generated = crate::workspace_root().join("generated");
+        let md = std::fs::read_to_string(generated.join("gallery.md")).unwrap();
+        let rerun = "generated/gallery.md is stale: run `cargo xtask gallery`";
+        for (_, mut m) in weft_golden::materials(&generated).unwrap() {
+            let meta_path = generated
+                .join(&m.name)
+                .join(format!("{}.meta.json", m.name));
+            m.attach_measurements(&meta_path).unwrap();
+            if let Some(d) = &m.description {
+                assert!(md.contains(&d.en), "{}: description; {rerun}", m.name);
+            }
+            assert!(md.contains(&tiers_line(&m)), "{}: tiers; {rerun}", m.name);
+            if let Some(ms) = &m.measurements {
+                let table = weft_golden::shading::tier_table(ms, &m.inputs_hash);
+                assert!(md.contains(&table), "{}: measured tiers; {rerun}", m.name);
+            }
+        }
+    }
 }
