@@ -398,6 +398,10 @@ fn schema_matches_parser_keys() {
         property_names(&s, &prop(top, "limits"), "[limits]"),
         sorted(LIMITS_KEYS)
     );
+    assert_eq!(
+        property_names(&s, &map_values(&prop(top, "tables")), "[tables.*]"),
+        sorted(TABLE_KEYS)
+    );
     let defs = s.get("definitions").expect("definitions");
     assert_eq!(
         property_names(&s, &defs["keyframe"], "curve keyframe"),
@@ -470,7 +474,10 @@ fn schema_and_docs_list_the_parsers_values() {
     let ops = StencilOperation::ALL.map(StencilOperation::name);
     let kinds = KeywordKind::ALL.map(KeywordKind::name);
     let modes = KeywordMode::ALL.map(KeywordMode::name);
-    let recipes: Vec<&str> = weft_front::parse::RECIPES.iter().map(|(n, _)| *n).collect();
+    let recipes: Vec<&str> = weft_front::parse::RECIPES
+        .iter()
+        .map(|(n, _, _)| *n)
+        .collect();
     let rings: Vec<&str> = weft_front::parse::RINGS.iter().map(|(n, _)| *n).collect();
 
     // The editor schema, in the parser's order.

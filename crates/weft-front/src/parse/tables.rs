@@ -8,15 +8,18 @@ use crate::diag::Span;
 use crate::model::*;
 use crate::toml_reader::{Cx, Table, Value};
 
-/// Recipes and what each is for (the hint of an unknown recipe).
-pub const RECIPES: &[(&str, &str)] = &[
+/// Recipes: the name, what it is for (the hint of an unknown recipe) and
+/// its own keys besides `recipe` and `size` (`TABLE_KEYS` lists them all).
+pub const RECIPES: &[(&str, &str, &[&str])] = &[
     (
         "preintegrated_skin",
         "Penner & Borshukov's pre-integrated skin diffuse over the Burley profile",
+        &["shape", "ring"],
     ),
     (
         "thin_film_sensitivity",
         "the spectral sensitivity of thin-film interference over the optical path difference",
+        &["opd_max"],
     ),
 ];
 
@@ -160,11 +163,10 @@ const COMMON_KEYS: [&str; 2] = ["recipe", "size"];
 /// The common keys and the recipe's own; a key of another recipe is
 /// unknown here (every recipe's keys when the recipe is not known).
 fn check_table_keys(t: &Table, recipe: Option<&str>, cx: &mut Cx) {
-    let own: &[&str] = match recipe {
-        Some("preintegrated_skin") => &["shape", "ring"],
-        Some("thin_film_sensitivity") => &["opd_max"],
-        _ => &TABLE_KEYS[COMMON_KEYS.len()..],
-    };
+    let own = RECIPES
+        .iter()
+        .find(|(name, _, _)| Some(*name) == recipe)
+        .map_or(&TABLE_KEYS[COMMON_KEYS.len()..], |(_, _, keys)| *keys);
     let allowed: Vec<&str> = COMMON_KEYS.iter().chain(own).copied().collect();
     t.check_keys(&allowed, cx);
 }
@@ -203,12 +205,12 @@ fn table_recipe(
             opd_max_nm: film_opd_max(t, cx)?,
         },
         Some(other) => {
-            let names: Vec<&str> = RECIPES.iter().map(|(n, _)| *n).collect();
+            let names: Vec<&str> = RECIPES.iter().map(|(n, _, _)| *n).collect();
             let hint = crate::diag::did_you_mean(other, names.iter().copied()).map_or_else(
                 || {
                     let list: Vec<String> = RECIPES
                         .iter()
-                        .map(|(n, w)| format!("`{n}` ({w})"))
+                        .map(|(n, w, _)| format!("`{n}` ({w})"))
                         .collect();
                     format!("known recipes: {}", list.join(", "))
                 },
@@ -284,4 +286,18 @@ fn film_opd_max(t: &Table, cx: &mut Cx) -> Option<f64> {
         return None;
     }
     Some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_keys_are_the_common_ones_then_every_recipes_own() {
+        let mut all: Vec<&str> = COMMON_KEYS.to_vec();
+        for (_, _, own) in RECIPES {
+            all.extend(own.iter().copied());
+        }
+        assert_eq!(TABLE_KEYS, &all[..]);
+    }
 }
