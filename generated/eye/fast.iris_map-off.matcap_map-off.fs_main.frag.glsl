@@ -101,14 +101,14 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx_nh(vec3 n, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e2 * _e2);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(dot(n, h), 0.0, 1.0);
-    vec3 nxh = cross(n, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d) * d));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -121,15 +121,17 @@ float weft_f0_from_ior(float ior) {
     return (q_1 * q_1);
 }
 
-float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
     float a_2 = (_e3 * _e3);
     float a2_1 = (a_2 * a_2);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
-    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
-    return (0.5 / (lv + ll));
+    float gv = ((_e6 * (1.0 - a_2)) + a_2);
+    float gl = ((_e7 * (1.0 - a_2)) + a_2);
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
@@ -154,26 +156,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n.x) * n.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n.y) * n.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n.x) * n.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -293,7 +295,13 @@ float eye_fresnel(float cos_i, float ior_2) {
     return _e4.x;
 }
 
-vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_3, vec3 light) {
+float eye_ggx(vec3 s, vec3 h, float s_dot_v, float s_dot_l, float roughness_6) {
+    float _e7 = weft_d_ggx(clamp(dot(s, h), 0.0, 1.0), roughness_6);
+    float _e8 = weft_v_smith_ggx_correlated_newton(s_dot_v, s_dot_l, roughness_6);
+    return (_e7 * _e8);
+}
+
+vec3 eye_physical(EyeLookup look_1, vec3 n_1, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_3, vec3 light) {
     bool local_1 = false;
     if (!((look_1.through_cornea > 0.0))) {
         local_1 = (look_1.normal.z > 0.0);
@@ -304,34 +312,35 @@ vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_,
     vec3 _e20 = eye_albedo(look_1.iris, _e19);
     float _e23 = _group_1_binding_0_fs.cornea_smoothness;
     float _e27 = weft_clamp_roughness((1.0 - clamp(_e23, 0.0, 1.0)));
-    vec3 _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
+    vec3 _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_1);
     float _e32 = weft_clamp_cos(dot(_e30, v_2));
-    float s_dot_l = clamp(dot(_e30, l), 0.0, 1.0);
+    float s_dot_l_1 = clamp(dot(_e30, l), 0.0, 1.0);
     vec3 _e36 = weft_safe_normalize((l + v_2), _e30);
     float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
-    float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
-    float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
-    float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    float _e44 = weft_f0_from_ior(ior_3);
-    vec3 f0_2 = vec3(_e44);
-    vec3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
-    vec2 _e49 = weft_env_brdf_lut(_e32, _e27);
-    vec3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
-    vec3 env = (_e48 * _e50);
-    float _e56 = _group_1_binding_0_fs.specular_strength;
-    vec3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    float _e60 = eye_fresnel(_e32, ior_3);
-    float t_v = (1.0 - _e60);
-    float _e63 = eye_fresnel(s_dot_l, ior_3);
-    float t_l = (1.0 - _e63);
-    vec3 _e71 = weft_sh_irradiance(n_2);
-    vec3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * clamp(dot(n_2, l), 0.0, 1.0))) + _e71));
-    vec3 _e79 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
+    float _e39 = eye_ggx(_e30, _e36, _e32, s_dot_l_1, _e27);
+    float direct_spec = ((_e39 * _e38) * s_dot_l_1);
+    float _e42 = weft_f0_from_ior(ior_3);
+    vec3 f0_2 = vec3(_e42);
+    vec3 _e46 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
+    vec2 _e47 = weft_env_brdf_lut(_e32, _e27);
+    vec3 _e48 = weft_env_brdf_from_lut(f0_2, _e47);
+    vec3 env = (_e46 * _e48);
+    float _e54 = _group_1_binding_0_fs.specular_strength;
+    vec3 specular = (((light * direct_spec) + env) * max(_e54, 0.0));
+    bool on_iris = (look_1.through_cornea > 0.0);
+    vec3 _e66 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_1);
     vec3 l_in = refract(-(l), _e30, (1.0 / ior_3));
-    float iris_cos = ((s_dot_l > 0.0) ? clamp(dot(_e79, -(l_in)), 0.0, 1.0) : 0.0);
-    vec3 _e96 = weft_sh_irradiance(_e79);
-    vec3 iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
-    return (mix(sclera_1, iris_2, look_1.through_cornea) + specular);
+    float iris_cos = ((s_dot_l_1 > 0.0) ? clamp(dot(_e66, -(l_in)), 0.0, 1.0) : 0.0);
+    float _e78 = eye_fresnel(_e32, ior_3);
+    float t_v = (1.0 - _e78);
+    float _e81 = eye_fresnel(s_dot_l_1, ior_3);
+    float t_l = (1.0 - _e81);
+    vec3 diffuse_n = (on_iris ? _e66 : n_1);
+    float diffuse_cos = (on_iris ? (iris_cos * t_l) : clamp(dot(n_1, l), 0.0, 1.0));
+    float transmission = (on_iris ? t_v : 1.0);
+    vec3 _e95 = weft_sh_irradiance(diffuse_n);
+    vec3 diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e95));
+    return (diffuse + specular);
 }
 
 void main() {
@@ -344,11 +353,11 @@ void main() {
     mat3x3 normal3_1 = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
     WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
     vec3 v_3 = _e23.v;
-    vec3 n_3 = _e23.n;
+    vec3 n_2 = _e23.n;
     vec3 _e26 = weft_main_light_direction();
-    vec3 _e33 = weft_safe_normalize((transpose(model3_) * n_3), vec3(0.0, 0.0, 1.0));
+    vec3 _e33 = weft_safe_normalize((transpose(model3_) * n_2), vec3(0.0, 0.0, 1.0));
     vec3 _e40 = weft_safe_normalize((transpose(normal3_1) * v_3), vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), n_3);
+    vec3 _e46 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), n_2);
     float _e49 = _group_1_binding_0_fs.backlight_dimming;
     float dimming = (1.0 - (clamp(_e49, 0.0, 1.0) * clamp(-(dot(_e46, _e26)), 0.0, 1.0)));
     vec3 _e57 = weft_main_light_radiance();
@@ -363,7 +372,7 @@ void main() {
             look = _e72;
         }
         EyeLookup _e73 = look;
-        vec3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_1, ior_4, _e57);
+        vec3 _e74 = eye_physical(_e73, n_2, v_3, _e26, normal3_1, ior_4, _e57);
         color = _e74;
     }
     vec3 _e75 = color;

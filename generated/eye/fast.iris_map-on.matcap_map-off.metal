@@ -106,18 +106,17 @@ metal::float3 weft_safe_normalize(
     return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
-float weft_d_ggx_nh(
-    metal::float3 n,
-    metal::float3 h,
+float weft_d_ggx(
+    float n_dot_h,
     float roughness_1
 ) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = _e3 * _e3;
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a = _e2 * _e2;
     float a2_ = a * a;
-    float noh = metal::saturate(metal::dot(n, h));
-    metal::float3 nxh = metal::cross(n, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d) * d);
 }
 
 metal::float3 weft_f_schlick(
@@ -135,7 +134,7 @@ float weft_f0_from_ior(
     return q_1 * q_1;
 }
 
-float weft_v_smith_ggx_correlated(
+float weft_v_smith_ggx_correlated_newton(
     float n_dot_v,
     float n_dot_l,
     float roughness_2
@@ -145,9 +144,11 @@ float weft_v_smith_ggx_correlated(
     float a2_1 = a_1 * a_1;
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float lv = _e7 * metal::sqrt(((_e6 * _e6) * (1.0 - a2_1)) + a2_1);
-    float ll = _e6 * metal::sqrt(((_e7 * _e7) * (1.0 - a2_1)) + a2_1);
-    return 0.5 / (lv + ll);
+    float gv = (_e6 * (1.0 - a_1)) + a_1;
+    float gl = (_e7 * (1.0 - a_1)) + a_1;
+    float pv = (gv * _e6) + (a2_1 * (1.0 - _e6));
+    float pl = (gl * _e7) + (a2_1 * (1.0 - _e7));
+    return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
 metal::float3 weft_env_brdf_from_lut(
@@ -184,28 +185,28 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_1,
+    metal::float3 n,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n.x) * n.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n.y) * n.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n.x) * n.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
@@ -352,9 +353,21 @@ float eye_fresnel(
     return _e4.x;
 }
 
+float eye_ggx(
+    metal::float3 s,
+    metal::float3 h,
+    float s_dot_v,
+    float s_dot_l,
+    float roughness_6
+) {
+    float _e7 = weft_d_ggx(metal::saturate(metal::dot(s, h)), roughness_6);
+    float _e8 = weft_v_smith_ggx_correlated_newton(s_dot_v, s_dot_l, roughness_6);
+    return _e7 * _e8;
+}
+
 metal::float3 eye_physical(
     EyeLookup look_1,
-    metal::float3 n_2,
+    metal::float3 n_1,
     metal::float3 v_2,
     metal::float3 l,
     metal::float3x3 normal3_,
@@ -381,34 +394,35 @@ metal::float3 eye_physical(
     metal::float3 _e20 = eye_albedo(look_1.iris, _e19, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
     float _e23 = material.cornea_smoothness;
     float _e27 = weft_clamp_roughness(1.0 - metal::saturate(_e23));
-    metal::float3 _e30 = weft_safe_normalize(normal3_ * metal::float3(look_1.normal), n_2);
+    metal::float3 _e30 = weft_safe_normalize(normal3_ * metal::float3(look_1.normal), n_1);
     float _e32 = weft_clamp_cos(metal::dot(_e30, v_2));
-    float s_dot_l = metal::saturate(metal::dot(_e30, l));
+    float s_dot_l_1 = metal::saturate(metal::dot(_e30, l));
     metal::float3 _e36 = weft_safe_normalize(l + v_2, _e30);
     float _e38 = eye_fresnel(metal::dot(v_2, _e36), ior_3);
-    float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
-    float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
-    float direct_spec = ((_e39 * _e40) * _e38) * s_dot_l;
-    float _e44 = weft_f0_from_ior(ior_3);
-    metal::float3 f0_2 = metal::float3(_e44);
-    metal::float3 _e48 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e30), _e27, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float2 _e49 = weft_env_brdf_lut(_e32, _e27, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e50 = weft_env_brdf_from_lut(f0_2, _e49);
-    metal::float3 env = _e48 * _e50;
-    float _e56 = material.specular_strength;
-    metal::float3 specular = ((light * direct_spec) + env) * metal::max(_e56, 0.0);
-    float _e60 = eye_fresnel(_e32, ior_3);
-    float t_v = 1.0 - _e60;
-    float _e63 = eye_fresnel(s_dot_l, ior_3);
-    float t_l = 1.0 - _e63;
-    metal::float3 _e71 = weft_sh_irradiance(n_2, weft_frame);
-    metal::float3 sclera_1 = _e20 * ((light * (WEFT_INV_PI * metal::saturate(metal::dot(n_2, l)))) + _e71);
-    metal::float3 _e79 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_2);
+    float _e39 = eye_ggx(_e30, _e36, _e32, s_dot_l_1, _e27);
+    float direct_spec = (_e39 * _e38) * s_dot_l_1;
+    float _e42 = weft_f0_from_ior(ior_3);
+    metal::float3 f0_2 = metal::float3(_e42);
+    metal::float3 _e46 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e30), _e27, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float2 _e47 = weft_env_brdf_lut(_e32, _e27, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e48 = weft_env_brdf_from_lut(f0_2, _e47);
+    metal::float3 env = _e46 * _e48;
+    float _e54 = material.specular_strength;
+    metal::float3 specular = ((light * direct_spec) + env) * metal::max(_e54, 0.0);
+    bool on_iris = look_1.through_cornea > 0.0;
+    metal::float3 _e66 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_1);
     metal::float3 l_in = metal::refract(-(l), _e30, 1.0 / ior_3);
-    float iris_cos = (s_dot_l > 0.0) ? metal::saturate(metal::dot(_e79, -(l_in))) : 0.0;
-    metal::float3 _e96 = weft_sh_irradiance(_e79, weft_frame);
-    metal::float3 iris_2 = (_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96);
-    return metal::mix(sclera_1, iris_2, look_1.through_cornea) + specular;
+    float iris_cos = (s_dot_l_1 > 0.0) ? metal::saturate(metal::dot(_e66, -(l_in))) : 0.0;
+    float _e78 = eye_fresnel(_e32, ior_3);
+    float t_v = 1.0 - _e78;
+    float _e81 = eye_fresnel(s_dot_l_1, ior_3);
+    float t_l = 1.0 - _e81;
+    metal::float3 diffuse_n = on_iris ? _e66 : n_1;
+    float diffuse_cos = on_iris ? (iris_cos * t_l) : metal::saturate(metal::dot(n_1, l));
+    float transmission = on_iris ? t_v : 1.0;
+    metal::float3 _e95 = weft_sh_irradiance(diffuse_n, weft_frame);
+    metal::float3 diffuse = (_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e95);
+    return diffuse + specular;
 }
 
 struct vs_mainInput {
@@ -485,11 +499,11 @@ fragment fs_mainOutput fs_main(
     metal::float3x3 normal3_2 = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
     metal::float3 v_3 = _e23.v;
-    metal::float3 n_3 = _e23.n;
+    metal::float3 n_2 = _e23.n;
     metal::float3 _e26 = weft_main_light_direction(weft_frame);
-    metal::float3 _e33 = weft_safe_normalize(metal::transpose(model3_1) * n_3, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e33 = weft_safe_normalize(metal::transpose(model3_1) * n_2, metal::float3(0.0, 0.0, 1.0));
     metal::float3 _e40 = weft_safe_normalize(metal::transpose(normal3_2) * v_3, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e46 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_3);
+    metal::float3 _e46 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_2);
     float _e49 = material.backlight_dimming;
     float dimming = 1.0 - (metal::saturate(_e49) * metal::saturate(-(metal::dot(_e46, _e26))));
     metal::float3 _e57 = weft_main_light_radiance(weft_frame);
@@ -504,7 +518,7 @@ fragment fs_mainOutput fs_main(
             look = _e72;
         }
         EyeLookup _e73 = look;
-        metal::float3 _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_4, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
+        metal::float3 _e74 = eye_physical(_e73, n_2, v_3, _e26, normal3_2, ior_4, _e57, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler, material, material_sampler, material_clamp_sampler, iris_map, sclera_map);
         color = _e74;
     }
     metal::float3 _e75 = color;

@@ -96,14 +96,14 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx_nh(vec3 n, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a = (_e2 * _e2);
     float a2_ = (a * a);
-    float noh = clamp(dot(n, h), 0.0, 1.0);
-    vec3 nxh = cross(n, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d) * d));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -116,15 +116,17 @@ float weft_f0_from_ior(float ior) {
     return (q_1 * q_1);
 }
 
-float weft_v_smith_ggx_correlated(float n_dot_v, float n_dot_l, float roughness_2) {
+float weft_v_smith_ggx_correlated_newton(float n_dot_v, float n_dot_l, float roughness_2) {
     float _e3 = weft_clamp_roughness(roughness_2);
     float a_1 = (_e3 * _e3);
     float a2_1 = (a_1 * a_1);
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float lv = (_e7 * sqrt((((_e6 * _e6) * (1.0 - a2_1)) + a2_1)));
-    float ll = (_e6 * sqrt((((_e7 * _e7) * (1.0 - a2_1)) + a2_1)));
-    return (0.5 / (lv + ll));
+    float gv = ((_e6 * (1.0 - a_1)) + a_1);
+    float gl = ((_e7 * (1.0 - a_1)) + a_1);
+    float pv = ((gv * _e6) + (a2_1 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (a2_1 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
@@ -149,26 +151,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_1) {
+vec3 weft_sh_irradiance(vec3 n) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n.x) * n.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n.y) * n.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n.z) * n.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n.x) * n.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n.x * n.x) - (n.y * n.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -236,6 +238,12 @@ float eye_fresnel(float cos_i, float ior_2) {
     float _e2 = weft_f0_from_ior(ior_2);
     vec3 _e4 = weft_f_schlick(vec3(_e2), cos_i);
     return _e4.x;
+}
+
+float eye_ggx(vec3 s, vec3 h, float s_dot_v, float s_dot_l, float roughness_6) {
+    float _e7 = weft_d_ggx(clamp(dot(s, h), 0.0, 1.0), roughness_6);
+    float _e8 = weft_v_smith_ggx_correlated_newton(s_dot_v, s_dot_l, roughness_6);
+    return (_e7 * _e8);
 }
 
 void main() {

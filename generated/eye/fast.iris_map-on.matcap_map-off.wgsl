@@ -113,14 +113,14 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
-fn weft_d_ggx_nh(n: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_1);
-    let a = (_e3 * _e3);
+fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
+    let _e2 = weft_clamp_roughness(roughness_1);
+    let a = (_e2 * _e2);
     let a2_ = (a * a);
-    let noh = saturate(dot(n, h));
-    let nxh = cross(n, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d) * d));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -133,15 +133,17 @@ fn weft_f0_from_ior(ior: f32) -> f32 {
     return (q_1 * q_1);
 }
 
-fn weft_v_smith_ggx_correlated(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
+fn weft_v_smith_ggx_correlated_newton(n_dot_v: f32, n_dot_l: f32, roughness_2: f32) -> f32 {
     let _e3 = weft_clamp_roughness(roughness_2);
     let a_1 = (_e3 * _e3);
     let a2_1 = (a_1 * a_1);
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
-    let lv = (_e7 * sqrt((((_e6 * _e6) * (1f - a2_1)) + a2_1)));
-    let ll = (_e6 * sqrt((((_e7 * _e7) * (1f - a2_1)) + a2_1)));
-    return (0.5f / (lv + ll));
+    let gv = ((_e6 * (1f - a_1)) + a_1);
+    let gl = ((_e7 * (1f - a_1)) + a_1);
+    let pv = ((gv * _e6) + (a2_1 * (1f - _e6)));
+    let pl = ((gl * _e7) + (a2_1 * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
 fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
@@ -166,27 +168,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n.x) * n.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n.y) * n.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n.z) * n.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n.x) * n.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n.x * n.x) - (n.y * n.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -290,7 +292,13 @@ fn eye_fresnel(cos_i: f32, ior_2: f32) -> f32 {
     return _e4.x;
 }
 
-fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_3: f32, light: vec3<f32>) -> vec3<f32> {
+fn eye_ggx(s: vec3<f32>, h: vec3<f32>, s_dot_v: f32, s_dot_l: f32, roughness_6: f32) -> f32 {
+    let _e7 = weft_d_ggx(saturate(dot(s, h)), roughness_6);
+    let _e8 = weft_v_smith_ggx_correlated_newton(s_dot_v, s_dot_l, roughness_6);
+    return (_e7 * _e8);
+}
+
+fn eye_physical(look_1: EyeLookup, n_1: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_3: f32, light: vec3<f32>) -> vec3<f32> {
     var local_1: bool;
 
     if !((look_1.through_cornea > 0f)) {
@@ -302,34 +310,35 @@ fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>,
     let _e20 = eye_albedo(look_1.iris, _e19);
     let _e23 = material.cornea_smoothness;
     let _e27 = weft_clamp_roughness((1f - saturate(_e23)));
-    let _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
+    let _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_1);
     let _e32 = weft_clamp_cos(dot(_e30, v_2));
-    let s_dot_l = saturate(dot(_e30, l));
+    let s_dot_l_1 = saturate(dot(_e30, l));
     let _e36 = weft_safe_normalize((l + v_2), _e30);
     let _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
-    let _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
-    let _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
-    let direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    let _e44 = weft_f0_from_ior(ior_3);
-    let f0_2 = vec3(_e44);
-    let _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
-    let _e49 = weft_env_brdf_lut(_e32, _e27);
-    let _e50 = weft_env_brdf_from_lut(f0_2, _e49);
-    let env = (_e48 * _e50);
-    let _e56 = material.specular_strength;
-    let specular = (((light * direct_spec) + env) * max(_e56, 0f));
-    let _e60 = eye_fresnel(_e32, ior_3);
-    let t_v = (1f - _e60);
-    let _e63 = eye_fresnel(s_dot_l, ior_3);
-    let t_l = (1f - _e63);
-    let _e71 = weft_sh_irradiance(n_2);
-    let sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
-    let _e79 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
+    let _e39 = eye_ggx(_e30, _e36, _e32, s_dot_l_1, _e27);
+    let direct_spec = ((_e39 * _e38) * s_dot_l_1);
+    let _e42 = weft_f0_from_ior(ior_3);
+    let f0_2 = vec3(_e42);
+    let _e46 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
+    let _e47 = weft_env_brdf_lut(_e32, _e27);
+    let _e48 = weft_env_brdf_from_lut(f0_2, _e47);
+    let env = (_e46 * _e48);
+    let _e54 = material.specular_strength;
+    let specular = (((light * direct_spec) + env) * max(_e54, 0f));
+    let on_iris = (look_1.through_cornea > 0f);
+    let _e66 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_1);
     let l_in = refract(-(l), _e30, (1f / ior_3));
-    let iris_cos = select(0f, saturate(dot(_e79, -(l_in))), (s_dot_l > 0f));
-    let _e96 = weft_sh_irradiance(_e79);
-    let iris_2 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
-    return (mix(sclera_1, iris_2, look_1.through_cornea) + specular);
+    let iris_cos = select(0f, saturate(dot(_e66, -(l_in))), (s_dot_l_1 > 0f));
+    let _e78 = eye_fresnel(_e32, ior_3);
+    let t_v = (1f - _e78);
+    let _e81 = eye_fresnel(s_dot_l_1, ior_3);
+    let t_l = (1f - _e81);
+    let diffuse_n = select(n_1, _e66, on_iris);
+    let diffuse_cos = select(saturate(dot(n_1, l)), (iris_cos * t_l), on_iris);
+    let transmission = select(1f, t_v, on_iris);
+    let _e95 = weft_sh_irradiance(diffuse_n);
+    let diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e95));
+    return (diffuse + specular);
 }
 
 @vertex 
@@ -366,11 +375,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let normal3_2 = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     let _e23 = weft_surface(in_1.world_position, in_1.world_normal);
     let v_3 = _e23.v;
-    let n_3 = _e23.n;
+    let n_2 = _e23.n;
     let _e26 = weft_main_light_direction();
-    let _e33 = weft_safe_normalize((transpose(model3_1) * n_3), vec3<f32>(0f, 0f, 1f));
+    let _e33 = weft_safe_normalize((transpose(model3_1) * n_2), vec3<f32>(0f, 0f, 1f));
     let _e40 = weft_safe_normalize((transpose(normal3_2) * v_3), vec3<f32>(0f, 0f, 1f));
-    let _e46 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_3);
+    let _e46 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_2);
     let _e49 = material.backlight_dimming;
     let dimming = (1f - (saturate(_e49) * saturate(-(dot(_e46, _e26)))));
     let _e57 = weft_main_light_radiance();
@@ -385,7 +394,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
             look = _e72;
         }
         let _e73 = look;
-        let _e74 = eye_physical(_e73, n_3, v_3, _e26, normal3_2, ior_4, _e57);
+        let _e74 = eye_physical(_e73, n_2, v_3, _e26, normal3_2, ior_4, _e57);
         color = _e74;
     }
     let _e75 = color;

@@ -207,10 +207,10 @@ WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
 
 EyeCornea eye_cornea(float iris_radius, float height) {
     float r_1 = clamp(iris_radius, 0.05, 0.95);
-    float h_1 = max(height, 0.01);
+    float h_2 = max(height, 0.01);
     float z_iris_1 = sqrt((1.0 - (r_1 * r_1)));
-    float radius = (((r_1 * r_1) + (h_1 * h_1)) / (2.0 * h_1));
-    return EyeCornea(z_iris_1, ((z_iris_1 + h_1) - radius), radius);
+    float radius = (((r_1 * r_1) + (h_2 * h_2)) / (2.0 * h_2));
+    return EyeCornea(z_iris_1, ((z_iris_1 + h_2) - radius), radius);
 }
 
 vec2 eye_to_iris_plane(vec3 start, vec3 t, float z_iris) {
@@ -225,8 +225,8 @@ EyeLookup eye_refracted(vec3 p, vec3 v_1, EyeCornea c_1, float ior_1) {
     vec3 o = (p - centre);
     float b_1 = dot(o, v_1);
     float disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    float s = (-(b_1) + sqrt(max(disc, 0.0)));
-    vec3 hit = (p + (s * v_1));
+    float s_1 = (-(b_1) + sqrt(max(disc, 0.0)));
+    vec3 hit = (p + (s_1 * v_1));
     if (!((p.z <= 0.0))) {
         local = (disc <= 0.0);
     } else {
@@ -297,6 +297,14 @@ float eye_fresnel(float cos_i_1, float ior_2) {
     }
 }
 
+float eye_ggx(vec3 s, vec3 h_1, float s_dot_v, float s_dot_l, float roughness_6) {
+    {
+        float _e5 = weft_d_ggx_nh(s, h_1, roughness_6);
+        float _e6 = weft_v_smith_ggx_correlated(s_dot_v, s_dot_l, roughness_6);
+        return (_e5 * _e6);
+    }
+}
+
 vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_, float ior_3, vec3 light) {
     bool local_2 = false;
     if (!((look_1.through_cornea > 0.0))) {
@@ -310,32 +318,33 @@ vec3 eye_physical(EyeLookup look_1, vec3 n_2, vec3 v_2, vec3 l, mat3x3 normal3_,
     float _e27 = weft_clamp_roughness((1.0 - clamp(_e23, 0.0, 1.0)));
     vec3 _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
     float _e32 = weft_clamp_cos(dot(_e30, v_2));
-    float s_dot_l = clamp(dot(_e30, l), 0.0, 1.0);
+    float s_dot_l_1 = clamp(dot(_e30, l), 0.0, 1.0);
     vec3 _e36 = weft_safe_normalize((l + v_2), _e30);
     float _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
-    float _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
-    float _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
-    float direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    float _e44 = weft_f0_from_ior(ior_3);
-    vec3 f0_1 = vec3(_e44);
-    vec3 _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
-    vec2 _e49 = weft_env_brdf_lut(_e32, _e27);
-    vec3 _e50 = weft_env_brdf_from_lut(f0_1, _e49);
-    vec3 env = (_e48 * _e50);
-    float _e56 = _group_1_binding_0_fs.specular_strength;
-    vec3 specular = (((light * direct_spec) + env) * max(_e56, 0.0));
-    float _e60 = eye_fresnel(_e32, ior_3);
-    float t_v = (1.0 - _e60);
-    float _e63 = eye_fresnel(s_dot_l, ior_3);
-    float t_l = (1.0 - _e63);
-    vec3 _e71 = weft_sh_irradiance(n_2);
-    vec3 sclera_1 = (_e20 * ((light * (WEFT_INV_PI * clamp(dot(n_2, l), 0.0, 1.0))) + _e71));
-    vec3 _e79 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
+    float _e39 = eye_ggx(_e30, _e36, _e32, s_dot_l_1, _e27);
+    float direct_spec = ((_e39 * _e38) * s_dot_l_1);
+    float _e42 = weft_f0_from_ior(ior_3);
+    vec3 f0_1 = vec3(_e42);
+    vec3 _e46 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
+    vec2 _e47 = weft_env_brdf_lut(_e32, _e27);
+    vec3 _e48 = weft_env_brdf_from_lut(f0_1, _e47);
+    vec3 env = (_e46 * _e48);
+    float _e54 = _group_1_binding_0_fs.specular_strength;
+    vec3 specular = (((light * direct_spec) + env) * max(_e54, 0.0));
+    bool on_iris = (look_1.through_cornea > 0.0);
+    vec3 _e66 = weft_safe_normalize((normal3_ * vec3(0.0, 0.0, 1.0)), n_2);
     vec3 l_in = refract(-(l), _e30, (1.0 / ior_3));
-    float iris_cos = ((s_dot_l > 0.0) ? clamp(dot(_e79, -(l_in)), 0.0, 1.0) : 0.0);
-    vec3 _e96 = weft_sh_irradiance(_e79);
-    vec3 iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
-    return (mix(sclera_1, iris_1, look_1.through_cornea) + specular);
+    float iris_cos = ((s_dot_l_1 > 0.0) ? clamp(dot(_e66, -(l_in)), 0.0, 1.0) : 0.0);
+    float _e78 = eye_fresnel(_e32, ior_3);
+    float t_v = (1.0 - _e78);
+    float _e81 = eye_fresnel(s_dot_l_1, ior_3);
+    float t_l = (1.0 - _e81);
+    vec3 diffuse_n = (on_iris ? _e66 : n_2);
+    float diffuse_cos = (on_iris ? (iris_cos * t_l) : clamp(dot(n_2, l), 0.0, 1.0));
+    float transmission = (on_iris ? t_v : 1.0);
+    vec3 _e95 = weft_sh_irradiance(diffuse_n);
+    vec3 diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e95));
+    return (diffuse + specular);
 }
 
 void main() {

@@ -216,10 +216,10 @@ fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSur
 
 fn eye_cornea(iris_radius: f32, height: f32) -> EyeCornea {
     let r_1 = clamp(iris_radius, 0.05f, 0.95f);
-    let h_1 = max(height, 0.01f);
+    let h_2 = max(height, 0.01f);
     let z_iris_1 = sqrt((1f - (r_1 * r_1)));
-    let radius = (((r_1 * r_1) + (h_1 * h_1)) / (2f * h_1));
-    return EyeCornea(z_iris_1, ((z_iris_1 + h_1) - radius), radius);
+    let radius = (((r_1 * r_1) + (h_2 * h_2)) / (2f * h_2));
+    return EyeCornea(z_iris_1, ((z_iris_1 + h_2) - radius), radius);
 }
 
 fn eye_to_iris_plane(start: vec3<f32>, t: vec3<f32>, z_iris: f32) -> vec2<f32> {
@@ -235,8 +235,8 @@ fn eye_refracted(p: vec3<f32>, v_1: vec3<f32>, c_1: EyeCornea, ior_1: f32) -> Ey
     let o = (p - centre);
     let b_1 = dot(o, v_1);
     let disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    let s = (-(b_1) + sqrt(max(disc, 0f)));
-    let hit = (p + (s * v_1));
+    let s_1 = (-(b_1) + sqrt(max(disc, 0f)));
+    let hit = (p + (s_1 * v_1));
     if !((p.z <= 0f)) {
         local = (disc <= 0f);
     } else {
@@ -309,6 +309,14 @@ fn eye_fresnel(cos_i_1: f32, ior_2: f32) -> f32 {
     }
 }
 
+fn eye_ggx(s: vec3<f32>, h_1: vec3<f32>, s_dot_v: f32, s_dot_l: f32, roughness_6: f32) -> f32 {
+    {
+        let _e5 = weft_d_ggx_nh(s, h_1, roughness_6);
+        let _e6 = weft_v_smith_ggx_correlated(s_dot_v, s_dot_l, roughness_6);
+        return (_e5 * _e6);
+    }
+}
+
 fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, ior_3: f32, light: vec3<f32>) -> vec3<f32> {
     var local_2: bool;
 
@@ -323,32 +331,33 @@ fn eye_physical(look_1: EyeLookup, n_2: vec3<f32>, v_2: vec3<f32>, l: vec3<f32>,
     let _e27 = weft_clamp_roughness((1f - saturate(_e23)));
     let _e30 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
     let _e32 = weft_clamp_cos(dot(_e30, v_2));
-    let s_dot_l = saturate(dot(_e30, l));
+    let s_dot_l_1 = saturate(dot(_e30, l));
     let _e36 = weft_safe_normalize((l + v_2), _e30);
     let _e38 = eye_fresnel(dot(v_2, _e36), ior_3);
-    let _e39 = weft_d_ggx_nh(_e30, _e36, _e27);
-    let _e40 = weft_v_smith_ggx_correlated(_e32, s_dot_l, _e27);
-    let direct_spec = (((_e39 * _e40) * _e38) * s_dot_l);
-    let _e44 = weft_f0_from_ior(ior_3);
-    let f0_1 = vec3(_e44);
-    let _e48 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
-    let _e49 = weft_env_brdf_lut(_e32, _e27);
-    let _e50 = weft_env_brdf_from_lut(f0_1, _e49);
-    let env = (_e48 * _e50);
-    let _e56 = material.specular_strength;
-    let specular = (((light * direct_spec) + env) * max(_e56, 0f));
-    let _e60 = eye_fresnel(_e32, ior_3);
-    let t_v = (1f - _e60);
-    let _e63 = eye_fresnel(s_dot_l, ior_3);
-    let t_l = (1f - _e63);
-    let _e71 = weft_sh_irradiance(n_2);
-    let sclera_1 = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e71));
-    let _e79 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
+    let _e39 = eye_ggx(_e30, _e36, _e32, s_dot_l_1, _e27);
+    let direct_spec = ((_e39 * _e38) * s_dot_l_1);
+    let _e42 = weft_f0_from_ior(ior_3);
+    let f0_1 = vec3(_e42);
+    let _e46 = weft_prefiltered_radiance(reflect(-(v_2), _e30), _e27);
+    let _e47 = weft_env_brdf_lut(_e32, _e27);
+    let _e48 = weft_env_brdf_from_lut(f0_1, _e47);
+    let env = (_e46 * _e48);
+    let _e54 = material.specular_strength;
+    let specular = (((light * direct_spec) + env) * max(_e54, 0f));
+    let on_iris = (look_1.through_cornea > 0f);
+    let _e66 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
     let l_in = refract(-(l), _e30, (1f / ior_3));
-    let iris_cos = select(0f, saturate(dot(_e79, -(l_in))), (s_dot_l > 0f));
-    let _e96 = weft_sh_irradiance(_e79);
-    let iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e96));
-    return (mix(sclera_1, iris_1, look_1.through_cornea) + specular);
+    let iris_cos = select(0f, saturate(dot(_e66, -(l_in))), (s_dot_l_1 > 0f));
+    let _e78 = eye_fresnel(_e32, ior_3);
+    let t_v = (1f - _e78);
+    let _e81 = eye_fresnel(s_dot_l_1, ior_3);
+    let t_l = (1f - _e81);
+    let diffuse_n = select(n_2, _e66, on_iris);
+    let diffuse_cos = select(saturate(dot(n_2, l)), (iris_cos * t_l), on_iris);
+    let transmission = select(1f, t_v, on_iris);
+    let _e95 = weft_sh_irradiance(diffuse_n);
+    let diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e95));
+    return (diffuse + specular);
 }
 
 @vertex 

@@ -190,10 +190,10 @@ WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
 
 EyeCornea eye_cornea(float iris_radius, float height) {
     float r_1 = clamp(iris_radius, 0.05, 0.95);
-    float h_1 = max(height, 0.01);
+    float h_2 = max(height, 0.01);
     float z_iris_1 = sqrt((1.0 - (r_1 * r_1)));
-    float radius = (((r_1 * r_1) + (h_1 * h_1)) / (2.0 * h_1));
-    return EyeCornea(z_iris_1, ((z_iris_1 + h_1) - radius), radius);
+    float radius = (((r_1 * r_1) + (h_2 * h_2)) / (2.0 * h_2));
+    return EyeCornea(z_iris_1, ((z_iris_1 + h_2) - radius), radius);
 }
 
 vec2 eye_to_iris_plane(vec3 start, vec3 t, float z_iris) {
@@ -208,8 +208,8 @@ EyeLookup eye_refracted(vec3 p, vec3 v_1, EyeCornea c_1, float ior_1) {
     vec3 o = (p - centre);
     float b_1 = dot(o, v_1);
     float disc = ((b_1 * b_1) - (dot(o, o) - (c_1.radius * c_1.radius)));
-    float s = (-(b_1) + sqrt(max(disc, 0.0)));
-    vec3 hit = (p + (s * v_1));
+    float s_1 = (-(b_1) + sqrt(max(disc, 0.0)));
+    vec3 hit = (p + (s_1 * v_1));
     if (!((p.z <= 0.0))) {
         local = (disc <= 0.0);
     } else {
@@ -239,6 +239,14 @@ float eye_fresnel(float cos_i_1, float ior_2) {
     {
         float _e2 = weft_f_dielectric(cos_i_1, ior_2);
         return _e2;
+    }
+}
+
+float eye_ggx(vec3 s, vec3 h_1, float s_dot_v, float s_dot_l, float roughness_6) {
+    {
+        float _e5 = weft_d_ggx_nh(s, h_1, roughness_6);
+        float _e6 = weft_v_smith_ggx_correlated(s_dot_v, s_dot_l, roughness_6);
+        return (_e5 * _e6);
     }
 }
 

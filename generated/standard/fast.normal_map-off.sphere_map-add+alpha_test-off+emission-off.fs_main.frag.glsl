@@ -110,14 +110,14 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a = (_e2 * _e2);
     float a2_ = (a * a);
-    float noh = clamp(dot(n_1, h), 0.0, 1.0);
-    vec3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -164,26 +164,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_2) {
+vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -201,12 +201,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     vec2 uv_2 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    ivec2 texel = ivec2(min((uv_2 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_2), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -225,11 +223,11 @@ WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, b
     return WeftSurface(_e7, _e10);
 }
 
-WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
     vec3 _e2 = weft_main_light_direction();
-    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
-    float _e6 = weft_clamp_cos(dot(n_3, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
@@ -248,11 +246,11 @@ vec3 standard_emission(vec2 uv_1) {
     return vec3(0.0);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_4, vec3 world_position_3) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_3, vec3 world_position_3) {
     vec3 color = vec3(0.0);
     color = color_in;
     {
-        vec3 _e4 = weft_sphere_map_direction(n_4, world_position_3);
+        vec3 _e4 = weft_sphere_map_direction(n_3, world_position_3);
         vec4 _e7 = texture(_group_1_binding_7_fs, vec3(_e4));
         vec3 sph = max(_e7.xyz, vec3(0.0));
         vec3 _e12 = color;
@@ -286,6 +284,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -315,7 +314,7 @@ void main() {
         {
             float _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
             visibility = _e67;
-            vec2 _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6);
+            vec2 _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6);
             vec3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
             env_brdf = _e70;
             vec3 _e73 = env_brdf;
@@ -326,30 +325,33 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        vec3 _e89 = n;
-        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        vec3 _e97 = n;
-        vec3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        vec3 _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            float _e91 = weft_d_ggx(_e54.n_dot_h, roughness_6);
+            d = _e91;
+        }
+        float _e92 = d;
+        float _e93 = visibility;
+        specular = (((_e92 * _e93) * _e88) * specular_strength);
+        vec3 _e98 = n;
+        vec3 _e100 = weft_prefiltered_radiance(reflect(-(v_2), _e98), roughness_6);
+        vec3 _e101 = env_brdf;
+        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
     }
-    vec3 _e104 = direct_kd;
-    vec3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e104 * _e105);
-    vec3 _e107 = specular;
-    vec3 _e109 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    vec3 _e113 = n;
-    vec3 _e114 = weft_sh_irradiance(_e113);
-    vec3 _e116 = ambient_kd;
-    vec3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    vec3 _e119 = indirect_specular;
-    vec3 color_1 = ((direct + _e119) + indirect_diffuse);
-    vec3 _e122 = n;
-    vec3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    vec3 radiance = clamp((_e124 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e105 = direct_kd;
+    vec3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e105 * _e106);
+    vec3 _e108 = specular;
+    vec3 _e110 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
+    vec3 _e114 = n;
+    vec3 _e115 = weft_sh_irradiance(_e114);
+    vec3 _e117 = ambient_kd;
+    vec3 indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
+    vec3 _e120 = indirect_specular;
+    vec3 color_1 = ((direct + _e120) + indirect_diffuse);
+    vec3 _e123 = n;
+    vec3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    vec3 radiance = clamp((_e125 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -101,14 +101,14 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a = (_e2 * _e2);
     float a2_ = (a * a);
-    float noh = clamp(dot(n_1, h), 0.0, 1.0);
-    vec3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -155,26 +155,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_2) {
+vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -202,11 +202,11 @@ WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, b
     return WeftSurface(_e7, _e10);
 }
 
-WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
     vec3 _e2 = weft_main_light_direction();
-    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
-    float _e6 = weft_clamp_cos(dot(n_3, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
 vec2 weft_transform_uv(vec2 uv, vec4 st) {

@@ -91,6 +91,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -138,15 +139,15 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
     return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
 }
 
-float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
+float weft_d_ggx(float n_dot_h, float roughness_1)
 {
-    const float _e3 = weft_clamp_roughness(roughness_1);
-    float a = (_e3 * _e3);
+    const float _e2 = weft_clamp_roughness(roughness_1);
+    float a = (_e2 * _e2);
     float a2_ = (a * a);
-    float noh = saturate(dot(n_1, h));
-    float3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -200,28 +201,28 @@ float3 weft_view_direction(float3 world_position, float3 fallback_1)
     return _e7;
 }
 
-float3 weft_sh_irradiance(float3 n_2)
+float3 weft_sh_irradiance(float3 n_1)
 {
     float3 e = (float3)0;
 
     float4 sh[9] = weft_frame.sh;
     e = (sh[0].xyz * 0.282095);
     float3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
     float3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
     float3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
     float3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
     float3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
     float3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
     float3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
     float3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
 }
@@ -241,24 +242,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_2 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    int2 texel = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_2, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -288,12 +276,12 @@ WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg
     return ret;
 }
 
-WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
+WeftLightGeometry weft_main_light_geometry(float3 n_2, float3 v_1)
 {
     const float3 _e2 = weft_main_light_direction();
-    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
-    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
-    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    const float _e6 = weft_clamp_cos(dot(n_2, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
     return weftlightgeometry;
 }
 
@@ -315,7 +303,7 @@ float3 standard_emission(float2 uv_1)
     return (0.0).xxx;
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_4, float3 world_position_2)
+float3 standard_sphere_map(float3 color_in, float3 n_3, float3 world_position_2)
 {
     float3 color = (float3)0;
 
@@ -374,6 +362,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -404,7 +393,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
             visibility = _e67;
-            const float2 _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6);
+            const float2 _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6);
             const float3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
             env_brdf = _e70;
             float3 _e73 = env_brdf;
@@ -415,30 +404,33 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        float3 _e89 = n;
-        const float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        float3 _e97 = n;
-        const float3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        float3 _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            const float _e91 = weft_d_ggx(_e54.n_dot_h, roughness_6);
+            d = _e91;
+        }
+        float _e92 = d;
+        float _e93 = visibility;
+        specular = (((_e92 * _e93) * _e88) * specular_strength);
+        float3 _e98 = n;
+        const float3 _e100 = weft_prefiltered_radiance(reflect(-(v_2), _e98), roughness_6);
+        float3 _e101 = env_brdf;
+        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
     }
-    float3 _e104 = direct_kd;
-    const float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e104 * _e105);
-    float3 _e107 = specular;
-    const float3 _e109 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    float3 _e113 = n;
-    const float3 _e114 = weft_sh_irradiance(_e113);
-    float3 _e116 = ambient_kd;
-    float3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    float3 _e119 = indirect_specular;
-    float3 color_1 = ((direct + _e119) + indirect_diffuse);
-    float3 _e122 = n;
-    const float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    float3 radiance = clamp((_e124 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e105 = direct_kd;
+    const float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e105 * _e106);
+    float3 _e108 = specular;
+    const float3 _e110 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
+    float3 _e114 = n;
+    const float3 _e115 = weft_sh_irradiance(_e114);
+    float3 _e117 = ambient_kd;
+    float3 indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
+    float3 _e120 = indirect_specular;
+    float3 color_1 = ((direct + _e120) + indirect_diffuse);
+    float3 _e123 = n;
+    const float3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    float3 radiance = clamp((_e125 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

@@ -110,18 +110,17 @@ metal::float3 weft_safe_normalize(
     return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
 }
 
-float weft_d_ggx_nh(
-    metal::float3 n_1,
-    metal::float3 h,
+float weft_d_ggx(
+    float n_dot_h,
     float roughness_1
 ) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a = _e3 * _e3;
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a = _e2 * _e2;
     float a2_ = a * a;
-    float noh = metal::saturate(metal::dot(n_1, h));
-    metal::float3 nxh = metal::cross(n_1, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d_1 = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d_1) * d_1);
 }
 
 metal::float3 weft_f_schlick(
@@ -189,28 +188,28 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_2,
+    metal::float3 n_1,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_1.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_1.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_1.x) * n_1.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_1.y) * n_1.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_1.x) * n_1.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
@@ -237,20 +236,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::int2 texel = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_2, metal::level(0.0));
+    return _e8.xy;
 }
 
 WeftSurface weft_surface_two_sided(
@@ -266,14 +260,14 @@ WeftSurface weft_surface_two_sided(
 }
 
 WeftLightGeometry weft_main_light_geometry(
-    metal::float3 n_3,
+    metal::float3 n_2,
     metal::float3 v_1,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 _e2 = weft_main_light_direction(weft_frame);
-    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
-    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
-    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_2);
+    float _e6 = weft_clamp_cos(metal::dot(n_2, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_2, _e2)), metal::saturate(metal::dot(n_2, _e4)), metal::saturate(metal::dot(v_1, _e4))};
 }
 
 metal::float2 weft_transform_uv(
@@ -302,7 +296,7 @@ metal::float3 standard_emission(
 
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
-    metal::float3 n_4,
+    metal::float3 n_3,
     metal::float3 world_position_2
 ) {
     metal::float3 color = {};
@@ -385,8 +379,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> emissive_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
@@ -399,6 +394,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -428,7 +424,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
             visibility = _e67;
-            metal::float2 _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6, weft_brdf_lut);
+            metal::float2 _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
             metal::float3 _e70 = weft_env_brdf_from_lut(f0_2, _e69);
             env_brdf = _e70;
             metal::float3 _e73 = env_brdf;
@@ -439,30 +435,33 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        metal::float3 _e89 = n;
-        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = ((_e91 * _e92) * _e88) * specular_strength;
-        metal::float3 _e97 = n;
-        metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e97), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e100 = env_brdf;
-        indirect_specular = (_e99 * _e100) * (ao * specular_strength);
+        {
+            float _e91 = weft_d_ggx(_e54.n_dot_h, roughness_6);
+            d = _e91;
+        }
+        float _e92 = d;
+        float _e93 = visibility;
+        specular = ((_e92 * _e93) * _e88) * specular_strength;
+        metal::float3 _e98 = n;
+        metal::float3 _e100 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e98), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e101 = env_brdf;
+        indirect_specular = (_e100 * _e101) * (ao * specular_strength);
     }
-    metal::float3 _e104 = direct_kd;
-    metal::float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e104 * _e105;
-    metal::float3 _e107 = specular;
-    metal::float3 _e109 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e107) * _e109) * _e54.n_dot_l;
-    metal::float3 _e113 = n;
-    metal::float3 _e114 = weft_sh_irradiance(_e113, weft_frame);
-    metal::float3 _e116 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e114 * ao) * _e116) * diffuse_albedo;
-    metal::float3 _e119 = indirect_specular;
-    metal::float3 color_1 = (direct + _e119) + indirect_diffuse;
-    metal::float3 _e122 = n;
-    metal::float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    metal::float3 radiance = metal::clamp(_e124 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e105 = direct_kd;
+    metal::float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e105 * _e106;
+    metal::float3 _e108 = specular;
+    metal::float3 _e110 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e108) * _e110) * _e54.n_dot_l;
+    metal::float3 _e114 = n;
+    metal::float3 _e115 = weft_sh_irradiance(_e114, weft_frame);
+    metal::float3 _e117 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e115 * ao) * _e117) * diffuse_albedo;
+    metal::float3 _e120 = indirect_specular;
+    metal::float3 color_1 = (direct + _e120) + indirect_diffuse;
+    metal::float3 _e123 = n;
+    metal::float3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e125 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

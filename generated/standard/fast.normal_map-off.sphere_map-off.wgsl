@@ -85,6 +85,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -116,14 +118,14 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, (v * inverseSqrt(max(len2_, 0.00000000000000000001f))), (len2_ > 0.00000000000000000001f));
 }
 
-fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_1);
-    let a = (_e3 * _e3);
+fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
+    let _e2 = weft_clamp_roughness(roughness_1);
+    let a = (_e2 * _e2);
     let a2_ = (a * a);
-    let noh = saturate(dot(n_1, h));
-    let nxh = cross(n_1, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -170,27 +172,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_1: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_1.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_1.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_1.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_1.x) * n_1.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_1.y) * n_1.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_1.z) * n_1.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_1.x) * n_1.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -208,13 +210,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_2, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
@@ -224,11 +223,11 @@ fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, 
     return WeftSurface(_e7, _e10);
 }
 
-fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
     let _e2 = weft_main_light_direction();
-    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
-    let _e6 = weft_clamp_cos(dot(n_3, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_2);
+    let _e6 = weft_clamp_cos(dot(n_2, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
 }
 
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
@@ -247,7 +246,7 @@ fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_4: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_3: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
@@ -300,6 +299,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -330,7 +330,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
         {
             let _e67 = weft_v_smith_ggx_correlated_newton(_e54.n_dot_v, _e54.n_dot_l, roughness_6);
             visibility = _e67;
-            let _e69 = weft_env_brdf_lut_nearest(_e54.n_dot_v, roughness_6);
+            let _e69 = weft_env_brdf_lut(_e54.n_dot_v, roughness_6);
             let _e70 = weft_env_brdf_from_lut(f0_2, _e69);
             env_brdf = _e70;
             let _e73 = env_brdf;
@@ -341,30 +341,33 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        let _e89 = n;
-        let _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        let _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        let _e97 = n;
-        let _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        let _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            let _e91 = weft_d_ggx(_e54.n_dot_h, roughness_6);
+            d = _e91;
+        }
+        let _e92 = d;
+        let _e93 = visibility;
+        specular = (((_e92 * _e93) * _e88) * specular_strength);
+        let _e98 = n;
+        let _e100 = weft_prefiltered_radiance(reflect(-(v_2), _e98), roughness_6);
+        let _e101 = env_brdf;
+        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
     }
-    let _e104 = direct_kd;
-    let _e105 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e104 * _e105);
-    let _e107 = specular;
-    let _e109 = weft_main_light_radiance();
-    let direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    let _e113 = n;
-    let _e114 = weft_sh_irradiance(_e113);
-    let _e116 = ambient_kd;
-    let indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    let _e119 = indirect_specular;
-    let color_1 = ((direct + _e119) + indirect_diffuse);
-    let _e122 = n;
-    let _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    let radiance = clamp((_e124 + _e22), vec3(0f), vec3(65504f));
+    let _e105 = direct_kd;
+    let _e106 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e105 * _e106);
+    let _e108 = specular;
+    let _e110 = weft_main_light_radiance();
+    let direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
+    let _e114 = n;
+    let _e115 = weft_sh_irradiance(_e114);
+    let _e117 = ambient_kd;
+    let indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
+    let _e120 = indirect_specular;
+    let color_1 = ((direct + _e120) + indirect_diffuse);
+    let _e123 = n;
+    let _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
+    let radiance = clamp((_e125 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -119,14 +119,14 @@ vec3 weft_any_perpendicular(vec3 n_1) {
     return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e2 * _e2);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(dot(n_2, h), 0.0, 1.0);
-    vec3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -173,26 +173,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_3) {
+vec3 weft_sh_irradiance(vec3 n_2) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -210,12 +210,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     vec2 uv_2 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    ivec2 texel_2 = ivec2(min((uv_2 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_2, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_2), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -234,23 +232,23 @@ WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, b
     return WeftSurface(_e7, _e10);
 }
 
-WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
     vec3 _e2 = weft_main_light_direction();
-    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
-    float _e6 = weft_clamp_cos(dot(n_4, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_5);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_5, t) * s_1);
-    return mat3x3(t, b_1, n_5);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
@@ -263,8 +261,8 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
-vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
-    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
     vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
     vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
     return _e6;
@@ -286,11 +284,11 @@ vec3 standard_emission(vec2 uv_1) {
     return vec3(0.0);
 }
 
-vec3 standard_sphere_map(vec3 color_in, vec3 n_7, vec3 world_position_3) {
+vec3 standard_sphere_map(vec3 color_in, vec3 n_6, vec3 world_position_3) {
     vec3 color = vec3(0.0);
     color = color_in;
     {
-        vec3 _e4 = weft_sphere_map_direction(n_7, world_position_3);
+        vec3 _e4 = weft_sphere_map_direction(n_6, world_position_3);
         vec4 _e7 = texture(_group_1_binding_7_fs, vec3(_e4));
         vec3 sph = max(_e7.xyz, vec3(0.0));
         vec3 _e12 = color;
@@ -324,6 +322,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -347,10 +346,10 @@ void main() {
     n = _e49.n;
     {
         vec4 _e55 = texture(_group_1_binding_5_fs, vec2(_e6));
-        vec3 texel_3 = _e55.xyz;
+        vec3 texel_2 = _e55.xyz;
         vec3 _e57 = n;
         float _e61 = _group_1_binding_0_fs.normal_strength;
-        vec3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        vec3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
         n = _e62;
     }
     vec3 _e63 = n;
@@ -361,7 +360,7 @@ void main() {
         {
             float _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
             visibility = _e77;
-            vec2 _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6);
+            vec2 _e79 = weft_env_brdf_lut(_e64.n_dot_v, roughness_6);
             vec3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
             env_brdf = _e80;
             vec3 _e83 = env_brdf;
@@ -372,30 +371,33 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        vec3 _e99 = n;
-        float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        vec3 _e107 = n;
-        vec3 _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        vec3 _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            float _e101 = weft_d_ggx(_e64.n_dot_h, roughness_6);
+            d = _e101;
+        }
+        float _e102 = d;
+        float _e103 = visibility;
+        specular = (((_e102 * _e103) * _e98) * specular_strength);
+        vec3 _e108 = n;
+        vec3 _e110 = weft_prefiltered_radiance(reflect(-(v_3), _e108), roughness_6);
+        vec3 _e111 = env_brdf;
+        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
     }
-    vec3 _e114 = direct_kd;
-    vec3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e114 * _e115);
-    vec3 _e117 = specular;
-    vec3 _e119 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    vec3 _e123 = n;
-    vec3 _e124 = weft_sh_irradiance(_e123);
-    vec3 _e126 = ambient_kd;
-    vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    vec3 _e129 = indirect_specular;
-    vec3 color_1 = ((direct + _e129) + indirect_diffuse);
-    vec3 _e132 = n;
-    vec3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    vec3 radiance = clamp((_e134 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e115 = direct_kd;
+    vec3 _e116 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e115 * _e116);
+    vec3 _e118 = specular;
+    vec3 _e120 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
+    vec3 _e124 = n;
+    vec3 _e125 = weft_sh_irradiance(_e124);
+    vec3 _e127 = ambient_kd;
+    vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
+    vec3 _e130 = indirect_specular;
+    vec3 color_1 = ((direct + _e130) + indirect_diffuse);
+    vec3 _e133 = n;
+    vec3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
+    vec3 radiance = clamp((_e135 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -119,18 +119,17 @@ metal::float3 weft_any_perpendicular(
     return metal::float3(1.0 + (((s * n_1.x) * n_1.x) * a), s * b, -(s) * n_1.x);
 }
 
-float weft_d_ggx_nh(
-    metal::float3 n_2,
-    metal::float3 h,
+float weft_d_ggx(
+    float n_dot_h,
     float roughness_1
 ) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = _e3 * _e3;
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = _e2 * _e2;
     float a2_ = a_1 * a_1;
-    float noh = metal::saturate(metal::dot(n_2, h));
-    metal::float3 nxh = metal::cross(n_2, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d_1 = one_minus_noh2_ + ((noh * noh) * a2_);
+    return a2_ / ((WEFT_PI * d_1) * d_1);
 }
 
 metal::float3 weft_f_schlick(
@@ -198,28 +197,28 @@ metal::float3 weft_view_direction(
 }
 
 metal::float3 weft_sh_irradiance(
-    metal::float3 n_3,
+    metal::float3 n_2,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
     type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
-    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_3.y));
+    e = _e9 + (sh.inner[1].xyz * (0.488603 * n_2.y));
     metal::float3 _e17 = e;
-    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_3.z));
+    e = _e17 + (sh.inner[2].xyz * (0.488603 * n_2.z));
     metal::float3 _e25 = e;
-    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_3.x));
+    e = _e25 + (sh.inner[3].xyz * (0.488603 * n_2.x));
     metal::float3 _e33 = e;
-    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_3.x) * n_3.y));
+    e = _e33 + (sh.inner[4].xyz * ((1.092548 * n_2.x) * n_2.y));
     metal::float3 _e43 = e;
-    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_3.y) * n_3.z));
+    e = _e43 + (sh.inner[5].xyz * ((1.092548 * n_2.y) * n_2.z));
     metal::float3 _e53 = e;
-    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0)));
+    e = _e53 + (sh.inner[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0)));
     metal::float3 _e67 = e;
-    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_3.x) * n_3.z));
+    e = _e67 + (sh.inner[7].xyz * ((1.092548 * n_2.x) * n_2.z));
     metal::float3 _e77 = e;
-    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y))));
+    e = _e77 + (sh.inner[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y))));
     metal::float3 _e91 = e;
     return metal::max(_e91, metal::float3(0.0));
 }
@@ -246,20 +245,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::int2 texel_2 = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_2), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_2, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3 weft_sphere_map_direction(
@@ -288,29 +282,29 @@ WeftSurface weft_surface_two_sided(
 }
 
 WeftLightGeometry weft_main_light_geometry(
-    metal::float3 n_4,
+    metal::float3 n_3,
     metal::float3 v_1,
     constant WeftFrame& weft_frame
 ) {
     metal::float3 _e2 = weft_main_light_direction(weft_frame);
-    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_4);
-    float _e6 = weft_clamp_cos(metal::dot(n_4, v_1));
-    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
+    metal::float3 _e4 = weft_safe_normalize(_e2 + v_1, n_3);
+    float _e6 = weft_clamp_cos(metal::dot(n_3, v_1));
+    return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_3, _e2)), metal::saturate(metal::dot(n_3, _e4)), metal::saturate(metal::dot(v_1, _e4))};
 }
 
 metal::float3x3 weft_tangent_frame(
-    metal::float3 n_5,
+    metal::float3 n_4,
     metal::float4 tangent
 ) {
     metal::float3 t_in = tangent.xyz;
-    metal::float3 t_proj = t_in - (n_5 * metal::dot(n_5, t_in));
+    metal::float3 t_proj = t_in - (n_4 * metal::dot(n_4, t_in));
     float len2_1 = metal::dot(t_proj, t_proj);
     bool ok = len2_1 > metal::max(0.000001 * metal::dot(t_in, t_in), 0.00000000000000000001);
-    metal::float3 _e13 = weft_any_perpendicular(n_5);
+    metal::float3 _e13 = weft_any_perpendicular(n_4);
     metal::float3 t = ok ? (t_proj * metal::rsqrt(metal::max(len2_1, 0.00000000000000000001))) : _e13;
     float s_1 = (tangent.w < 0.0) ? -1.0 : 1.0;
-    metal::float3 b_1 = metal::cross(n_5, t) * s_1;
-    return metal::float3x3(t, b_1, n_5);
+    metal::float3 b_1 = metal::cross(n_4, t) * s_1;
+    return metal::float3x3(t, b_1, n_4);
 }
 
 metal::float3 weft_unpack_normal(
@@ -330,12 +324,12 @@ metal::float3 weft_normal_from_tangent_space(
 }
 
 metal::float3 weft_mapped_normal(
-    metal::float3 n_6,
+    metal::float3 n_5,
     metal::float4 tangent_1,
     metal::float3 texel_1,
     float strength_1
 ) {
-    metal::float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    metal::float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
     metal::float3 _e5 = weft_unpack_normal(texel_1, strength_1);
     metal::float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
     return _e6;
@@ -367,7 +361,7 @@ metal::float3 standard_emission(
 
 metal::float3 standard_sphere_map(
     metal::float3 color_in,
-    metal::float3 n_7,
+    metal::float3 n_6,
     metal::float3 world_position_3,
     constant WeftFrame& weft_frame,
     constant WeftMaterial& material,
@@ -377,7 +371,7 @@ metal::float3 standard_sphere_map(
     metal::float3 color = {};
     color = color_in;
     {
-        metal::float3 _e4 = weft_sphere_map_direction(n_7, world_position_3, weft_frame);
+        metal::float3 _e4 = weft_sphere_map_direction(n_6, world_position_3, weft_frame);
         metal::float4 _e7 = sphere_map.sample(material_clamp_sampler, _e4);
         metal::float3 sph = metal::max(_e7.xyz, metal::float3(0.0));
         metal::float3 _e12 = color;
@@ -462,9 +456,10 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::sampler material_clamp_sampler [[sampler(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_clamp_sampler [[sampler(3)]]
 , metal::texture2d<float, metal::access::sample> emissive_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(4)]]
@@ -479,6 +474,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -502,10 +498,10 @@ fragment fs_mainOutput fs_main(
     n = _e49.n;
     {
         metal::float4 _e55 = normal_map.sample(material_sampler, _e6);
-        metal::float3 texel_3 = _e55.xyz;
+        metal::float3 texel_2 = _e55.xyz;
         metal::float3 _e57 = n;
         float _e61 = material.normal_strength;
-        metal::float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        metal::float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
         n = _e62;
     }
     metal::float3 _e63 = n;
@@ -516,7 +512,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
             visibility = _e77;
-            metal::float2 _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6, weft_brdf_lut);
+            metal::float2 _e79 = weft_env_brdf_lut(_e64.n_dot_v, roughness_6, weft_brdf_lut, weft_lut_sampler);
             metal::float3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
             env_brdf = _e80;
             metal::float3 _e83 = env_brdf;
@@ -527,30 +523,33 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        metal::float3 _e99 = n;
-        float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = ((_e101 * _e102) * _e98) * specular_strength;
-        metal::float3 _e107 = n;
-        metal::float3 _e109 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e107), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e110 = env_brdf;
-        indirect_specular = (_e109 * _e110) * (ao * specular_strength);
+        {
+            float _e101 = weft_d_ggx(_e64.n_dot_h, roughness_6);
+            d = _e101;
+        }
+        float _e102 = d;
+        float _e103 = visibility;
+        specular = ((_e102 * _e103) * _e98) * specular_strength;
+        metal::float3 _e108 = n;
+        metal::float3 _e110 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e108), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e111 = env_brdf;
+        indirect_specular = (_e110 * _e111) * (ao * specular_strength);
     }
-    metal::float3 _e114 = direct_kd;
-    metal::float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e114 * _e115;
-    metal::float3 _e117 = specular;
-    metal::float3 _e119 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e117) * _e119) * _e64.n_dot_l;
-    metal::float3 _e123 = n;
-    metal::float3 _e124 = weft_sh_irradiance(_e123, weft_frame);
-    metal::float3 _e126 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e124 * ao) * _e126) * diffuse_albedo;
-    metal::float3 _e129 = indirect_specular;
-    metal::float3 color_1 = (direct + _e129) + indirect_diffuse;
-    metal::float3 _e132 = n;
-    metal::float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e134 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e115 = direct_kd;
+    metal::float3 _e116 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e115 * _e116;
+    metal::float3 _e118 = specular;
+    metal::float3 _e120 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e118) * _e120) * _e64.n_dot_l;
+    metal::float3 _e124 = n;
+    metal::float3 _e125 = weft_sh_irradiance(_e124, weft_frame);
+    metal::float3 _e127 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e125 * ao) * _e127) * diffuse_albedo;
+    metal::float3 _e130 = indirect_specular;
+    metal::float3 color_1 = (direct + _e130) + indirect_diffuse;
+    metal::float3 _e133 = n;
+    metal::float3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e135 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

@@ -108,14 +108,14 @@ vec3 weft_any_perpendicular(vec3 n_1) {
     return vec3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
-    float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
+float weft_d_ggx(float n_dot_h, float roughness_1) {
+    float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e2 * _e2);
     float a2_ = (a_1 * a_1);
-    float noh = clamp(dot(n_2, h), 0.0, 1.0);
-    vec3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -162,26 +162,26 @@ vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
     return _e7;
 }
 
-vec3 weft_sh_irradiance(vec3 n_3) {
+vec3 weft_sh_irradiance(vec3 n_2) {
     vec3 e = vec3(0.0);
     vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     vec3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     vec3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     vec3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     vec3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     vec3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     vec3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     vec3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     vec3 _e91 = e;
     return max(_e91, vec3(0.0));
 }
@@ -209,23 +209,23 @@ WeftSurface weft_surface_two_sided(vec3 world_position_2, vec3 world_normal_1, b
     return WeftSurface(_e7, _e10);
 }
 
-WeftLightGeometry weft_main_light_geometry(vec3 n_4, vec3 v_1) {
+WeftLightGeometry weft_main_light_geometry(vec3 n_3, vec3 v_1) {
     vec3 _e2 = weft_main_light_direction();
-    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
-    float _e6 = weft_clamp_cos(dot(n_4, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_4, _e2), 0.0, 1.0), clamp(dot(n_4, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_3, _e2), 0.0, 1.0), clamp(dot(n_3, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
-mat3x3 weft_tangent_frame(vec3 n_5, vec4 tangent) {
+mat3x3 weft_tangent_frame(vec3 n_4, vec4 tangent) {
     vec3 t_in = tangent.xyz;
-    vec3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
+    vec3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    vec3 _e13 = weft_any_perpendicular(n_5);
+    vec3 _e13 = weft_any_perpendicular(n_4);
     vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    vec3 b_1 = (cross(n_5, t) * s_1);
-    return mat3x3(t, b_1, n_5);
+    vec3 b_1 = (cross(n_4, t) * s_1);
+    return mat3x3(t, b_1, n_4);
 }
 
 vec3 weft_unpack_normal(vec3 texel, float strength) {
@@ -238,8 +238,8 @@ vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
     return _e4;
 }
 
-vec3 weft_mapped_normal(vec3 n_6, vec4 tangent_1, vec3 texel_1, float strength_1) {
-    mat3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+vec3 weft_mapped_normal(vec3 n_5, vec4 tangent_1, vec3 texel_1, float strength_1) {
+    mat3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
     vec3 _e5 = weft_unpack_normal(texel_1, strength_1);
     vec3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
     return _e6;

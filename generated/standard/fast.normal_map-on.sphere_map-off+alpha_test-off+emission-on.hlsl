@@ -91,6 +91,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -147,15 +148,15 @@ float3 weft_any_perpendicular(float3 n_1)
     return float3((1.0 + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
+float weft_d_ggx(float n_dot_h, float roughness_1)
 {
-    const float _e3 = weft_clamp_roughness(roughness_1);
-    float a_1 = (_e3 * _e3);
+    const float _e2 = weft_clamp_roughness(roughness_1);
+    float a_1 = (_e2 * _e2);
     float a2_ = (a_1 * a_1);
-    float noh = saturate(dot(n_2, h));
-    float3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -209,28 +210,28 @@ float3 weft_view_direction(float3 world_position, float3 fallback_1)
     return _e7;
 }
 
-float3 weft_sh_irradiance(float3 n_3)
+float3 weft_sh_irradiance(float3 n_2)
 {
     float3 e = (float3)0;
 
     float4 sh[9] = weft_frame.sh;
     e = (sh[0].xyz * 0.282095);
     float3 _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603 * n_3.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_2.y)));
     float3 _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603 * n_3.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_2.z)));
     float3 _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603 * n_3.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_2.x)));
     float3 _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548 * n_3.x) * n_3.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_2.x) * n_2.y)));
     float3 _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548 * n_3.y) * n_3.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_2.y) * n_2.z)));
     float3 _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_3.z) * n_3.z) - 1.0))));
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_2.z) * n_2.z) - 1.0))));
     float3 _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548 * n_3.x) * n_3.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_2.x) * n_2.z)));
     float3 _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     float3 _e91 = e;
     return max(_e91, (0.0).xxx);
 }
@@ -250,24 +251,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_2 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    int2 texel_2 = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_2, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_2, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -297,26 +285,26 @@ WeftLightGeometry ConstructWeftLightGeometry(float3 arg0, float3 arg1, float arg
     return ret;
 }
 
-WeftLightGeometry weft_main_light_geometry(float3 n_4, float3 v_1)
+WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
 {
     const float3 _e2 = weft_main_light_direction();
-    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_4);
-    const float _e6 = weft_clamp_cos(dot(n_4, v_1));
-    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    const float3 _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    const float _e6 = weft_clamp_cos(dot(n_3, v_1));
+    const WeftLightGeometry weftlightgeometry = ConstructWeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
     return weftlightgeometry;
 }
 
-float3x3 weft_tangent_frame(float3 n_5, float4 tangent)
+float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
-    float3 t_proj = (t_in - (n_5 * dot(n_5, t_in)));
+    float3 t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     float len2_1 = dot(t_proj, t_proj);
     bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
-    const float3 _e13 = weft_any_perpendicular(n_5);
+    const float3 _e13 = weft_any_perpendicular(n_4);
     float3 t = (ok ? (t_proj * rsqrt(max(len2_1, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
-    float3 b_1 = (cross(n_5, t) * s_1);
-    return float3x3(t, b_1, n_5);
+    float3 b_1 = (cross(n_4, t) * s_1);
+    return float3x3(t, b_1, n_4);
 }
 
 float3 weft_unpack_normal(float3 texel, float strength)
@@ -331,9 +319,9 @@ float3 weft_normal_from_tangent_space(float3x3 frame, float3 n_ts)
     return _e4;
 }
 
-float3 weft_mapped_normal(float3 n_6, float4 tangent_1, float3 texel_1, float strength_1)
+float3 weft_mapped_normal(float3 n_5, float4 tangent_1, float3 texel_1, float strength_1)
 {
-    const float3x3 _e4 = weft_tangent_frame(n_6, tangent_1);
+    const float3x3 _e4 = weft_tangent_frame(n_5, tangent_1);
     const float3 _e5 = weft_unpack_normal(texel_1, strength_1);
     const float3 _e6 = weft_normal_from_tangent_space(_e4, _e5);
     return _e6;
@@ -357,7 +345,7 @@ float3 standard_emission(float2 uv_1)
     return (0.0).xxx;
 }
 
-float3 standard_sphere_map(float3 color_in, float3 n_7, float3 world_position_2)
+float3 standard_sphere_map(float3 color_in, float3 n_6, float3 world_position_2)
 {
     float3 color = (float3)0;
 
@@ -416,6 +404,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -440,10 +429,10 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     n = _e49.n;
     {
         float4 _e55 = normal_map.Sample(material_sampler, _e6);
-        float3 texel_3 = _e55.xyz;
+        float3 texel_2 = _e55.xyz;
         float3 _e57 = n;
         float _e61 = material.normal_strength;
-        const float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        const float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
         n = _e62;
     }
     float3 _e63 = n;
@@ -454,7 +443,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
             visibility = _e77;
-            const float2 _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6);
+            const float2 _e79 = weft_env_brdf_lut(_e64.n_dot_v, roughness_6);
             const float3 _e80 = weft_env_brdf_from_lut(f0_2, _e79);
             env_brdf = _e80;
             float3 _e83 = env_brdf;
@@ -465,30 +454,33 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        float3 _e99 = n;
-        const float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        float3 _e107 = n;
-        const float3 _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        float3 _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            const float _e101 = weft_d_ggx(_e64.n_dot_h, roughness_6);
+            d = _e101;
+        }
+        float _e102 = d;
+        float _e103 = visibility;
+        specular = (((_e102 * _e103) * _e98) * specular_strength);
+        float3 _e108 = n;
+        const float3 _e110 = weft_prefiltered_radiance(reflect(-(v_3), _e108), roughness_6);
+        float3 _e111 = env_brdf;
+        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
     }
-    float3 _e114 = direct_kd;
-    const float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e114 * _e115);
-    float3 _e117 = specular;
-    const float3 _e119 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    float3 _e123 = n;
-    const float3 _e124 = weft_sh_irradiance(_e123);
-    float3 _e126 = ambient_kd;
-    float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    float3 _e129 = indirect_specular;
-    float3 color_1 = ((direct + _e129) + indirect_diffuse);
-    float3 _e132 = n;
-    const float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    float3 radiance = clamp((_e134 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e115 = direct_kd;
+    const float3 _e116 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e115 * _e116);
+    float3 _e118 = specular;
+    const float3 _e120 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
+    float3 _e124 = n;
+    const float3 _e125 = weft_sh_irradiance(_e124);
+    float3 _e127 = ambient_kd;
+    float3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
+    float3 _e130 = indirect_specular;
+    float3 color_1 = ((direct + _e130) + indirect_diffuse);
+    float3 _e133 = n;
+    const float3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
+    float3 radiance = clamp((_e135 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

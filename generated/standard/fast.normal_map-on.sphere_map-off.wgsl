@@ -85,6 +85,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -125,14 +127,14 @@ fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     return vec3<f32>((1f + (((s * n_1.x) * n_1.x) * a)), (s * b), (-(s) * n_1.x));
 }
 
-fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
-    let _e3 = weft_clamp_roughness(roughness_1);
-    let a_1 = (_e3 * _e3);
+fn weft_d_ggx(n_dot_h: f32, roughness_1: f32) -> f32 {
+    let _e2 = weft_clamp_roughness(roughness_1);
+    let a_1 = (_e2 * _e2);
     let a2_ = (a_1 * a_1);
-    let noh = saturate(dot(n_2, h));
-    let nxh = cross(n_2, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d_1 = (one_minus_noh2_ + ((noh * noh) * a2_));
+    return (a2_ / ((WEFT_PI * d_1) * d_1));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -179,27 +181,27 @@ fn weft_view_direction(world_position: vec3<f32>, fallback_1: vec3<f32>) -> vec3
     return _e7;
 }
 
-fn weft_sh_irradiance(n_3: vec3<f32>) -> vec3<f32> {
+fn weft_sh_irradiance(n_2: vec3<f32>) -> vec3<f32> {
     var e: vec3<f32>;
 
     let sh = weft_frame.sh;
     e = (sh[0].xyz * 0.282095f);
     let _e9 = e;
-    e = (_e9 + (sh[1].xyz * (0.488603f * n_3.y)));
+    e = (_e9 + (sh[1].xyz * (0.488603f * n_2.y)));
     let _e17 = e;
-    e = (_e17 + (sh[2].xyz * (0.488603f * n_3.z)));
+    e = (_e17 + (sh[2].xyz * (0.488603f * n_2.z)));
     let _e25 = e;
-    e = (_e25 + (sh[3].xyz * (0.488603f * n_3.x)));
+    e = (_e25 + (sh[3].xyz * (0.488603f * n_2.x)));
     let _e33 = e;
-    e = (_e33 + (sh[4].xyz * ((1.092548f * n_3.x) * n_3.y)));
+    e = (_e33 + (sh[4].xyz * ((1.092548f * n_2.x) * n_2.y)));
     let _e43 = e;
-    e = (_e43 + (sh[5].xyz * ((1.092548f * n_3.y) * n_3.z)));
+    e = (_e43 + (sh[5].xyz * ((1.092548f * n_2.y) * n_2.z)));
     let _e53 = e;
-    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_3.z) * n_3.z) - 1f))));
+    e = (_e53 + (sh[6].xyz * (0.315392f * (((3f * n_2.z) * n_2.z) - 1f))));
     let _e67 = e;
-    e = (_e67 + (sh[7].xyz * ((1.092548f * n_3.x) * n_3.z)));
+    e = (_e67 + (sh[7].xyz * ((1.092548f * n_2.x) * n_2.z)));
     let _e77 = e;
-    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_3.x * n_3.x) - (n_3.y * n_3.y)))));
+    e = (_e77 + (sh[8].xyz * (0.546274f * ((n_2.x * n_2.x) - (n_2.y * n_2.y)))));
     let _e91 = e;
     return max(_e91, vec3(0f));
 }
@@ -217,13 +219,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let uv_2 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel_2 = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_2, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_2, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
@@ -233,23 +232,23 @@ fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, 
     return WeftSurface(_e7, _e10);
 }
 
-fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
+fn weft_main_light_geometry(n_3: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry {
     let _e2 = weft_main_light_direction();
-    let _e4 = weft_safe_normalize((_e2 + v_1), n_4);
-    let _e6 = weft_clamp_cos(dot(n_4, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
+    let _e4 = weft_safe_normalize((_e2 + v_1), n_3);
+    let _e6 = weft_clamp_cos(dot(n_3, v_1));
+    return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_3, _e2)), saturate(dot(n_3, _e4)), saturate(dot(v_1, _e4)));
 }
 
-fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
+fn weft_tangent_frame(n_4: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
-    let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
+    let t_proj = (t_in - (n_4 * dot(n_4, t_in)));
     let len2_1 = dot(t_proj, t_proj);
     let ok = (len2_1 > max((0.000001f * dot(t_in, t_in)), 0.00000000000000000001f));
-    let _e13 = weft_any_perpendicular(n_5);
+    let _e13 = weft_any_perpendicular(n_4);
     let t = select(_e13, (t_proj * inverseSqrt(max(len2_1, 0.00000000000000000001f))), ok);
     let s_1 = select(1f, -1f, (tangent.w < 0f));
-    let b_1 = (cross(n_5, t) * s_1);
-    return mat3x3<f32>(t, b_1, n_5);
+    let b_1 = (cross(n_4, t) * s_1);
+    return mat3x3<f32>(t, b_1, n_4);
 }
 
 fn weft_unpack_normal(texel: vec3<f32>, strength: f32) -> vec3<f32> {
@@ -262,8 +261,8 @@ fn weft_normal_from_tangent_space(frame: mat3x3<f32>, n_ts: vec3<f32>) -> vec3<f
     return _e4;
 }
 
-fn weft_mapped_normal(n_6: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
-    let _e4 = weft_tangent_frame(n_6, tangent_1);
+fn weft_mapped_normal(n_5: vec3<f32>, tangent_1: vec4<f32>, texel_1: vec3<f32>, strength_1: f32) -> vec3<f32> {
+    let _e4 = weft_tangent_frame(n_5, tangent_1);
     let _e5 = weft_unpack_normal(texel_1, strength_1);
     let _e6 = weft_normal_from_tangent_space(_e4, _e5);
     return _e6;
@@ -285,7 +284,7 @@ fn standard_emission(uv_1: vec2<f32>) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn standard_sphere_map(color_in: vec3<f32>, n_7: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
+fn standard_sphere_map(color_in: vec3<f32>, n_6: vec3<f32>, world_position_2: vec3<f32>) -> vec3<f32> {
     var color: vec3<f32>;
 
     color = color_in;
@@ -338,6 +337,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -362,10 +362,10 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     n = _e49.n;
     {
         let _e55 = textureSample(normal_map, material_sampler, _e6);
-        let texel_3 = _e55.xyz;
+        let texel_2 = _e55.xyz;
         let _e57 = n;
         let _e61 = material.normal_strength;
-        let _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        let _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
         n = _e62;
     }
     let _e63 = n;
@@ -376,7 +376,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
         {
             let _e77 = weft_v_smith_ggx_correlated_newton(_e64.n_dot_v, _e64.n_dot_l, roughness_6);
             visibility = _e77;
-            let _e79 = weft_env_brdf_lut_nearest(_e64.n_dot_v, roughness_6);
+            let _e79 = weft_env_brdf_lut(_e64.n_dot_v, roughness_6);
             let _e80 = weft_env_brdf_from_lut(f0_2, _e79);
             env_brdf = _e80;
             let _e83 = env_brdf;
@@ -387,30 +387,33 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        let _e99 = n;
-        let _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        let _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        let _e107 = n;
-        let _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        let _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            let _e101 = weft_d_ggx(_e64.n_dot_h, roughness_6);
+            d = _e101;
+        }
+        let _e102 = d;
+        let _e103 = visibility;
+        specular = (((_e102 * _e103) * _e98) * specular_strength);
+        let _e108 = n;
+        let _e110 = weft_prefiltered_radiance(reflect(-(v_3), _e108), roughness_6);
+        let _e111 = env_brdf;
+        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
     }
-    let _e114 = direct_kd;
-    let _e115 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e114 * _e115);
-    let _e117 = specular;
-    let _e119 = weft_main_light_radiance();
-    let direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    let _e123 = n;
-    let _e124 = weft_sh_irradiance(_e123);
-    let _e126 = ambient_kd;
-    let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    let _e129 = indirect_specular;
-    let color_1 = ((direct + _e129) + indirect_diffuse);
-    let _e132 = n;
-    let _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    let radiance = clamp((_e134 + _e22), vec3(0f), vec3(65504f));
+    let _e115 = direct_kd;
+    let _e116 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e115 * _e116);
+    let _e118 = specular;
+    let _e120 = weft_main_light_radiance();
+    let direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
+    let _e124 = n;
+    let _e125 = weft_sh_irradiance(_e124);
+    let _e127 = ambient_kd;
+    let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
+    let _e130 = indirect_specular;
+    let color_1 = ((direct + _e130) + indirect_diffuse);
+    let _e133 = n;
+    let _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
+    let radiance = clamp((_e135 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

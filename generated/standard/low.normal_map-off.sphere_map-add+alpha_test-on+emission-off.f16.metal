@@ -180,20 +180,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::int2 texel = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_2, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3 weft_sphere_map_direction(
@@ -315,7 +310,8 @@ metal::float3 standard_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
     metal::float3 direct_n_dot_l = {};
     metal::float3 indirect_specular_1 = metal::float3(0.0);
@@ -328,7 +324,7 @@ metal::float3 standard_low(
     half roughness_3 = static_cast<half>(metal::max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     half alpha_3 = roughness_3 * roughness_3;
     metal::half3 f0_2 = static_cast<metal::half3>(f0_in);
-    metal::float2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in, weft_brdf_lut);
+    metal::float2 _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in, weft_brdf_lut, weft_lut_sampler);
     metal::float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
     metal::half3 env_brdf_1 = static_cast<metal::half3>(_e27);
     metal::half3 kd = metal::max(metal::half3(1.0h) - env_brdf_1, metal::half3(0.0h));
@@ -449,9 +445,10 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
-, metal::sampler material_clamp_sampler [[sampler(2)]]
+, metal::sampler material_sampler [[sampler(2)]]
+, metal::sampler material_clamp_sampler [[sampler(3)]]
 , metal::texture2d<float, metal::access::sample> emissive_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
@@ -465,6 +462,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -492,7 +490,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
     {
         metal::float3 _e61 = n;
-        metal::float3 _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e62 = standard_low(_e61, v_3, _e54, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
         metal::float3 _e63 = n;
         metal::float3 _e65 = standard_sphere_map(_e62, _e63, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
         metal::float3 radiance = metal::clamp(_e65 + _e22, metal::float3(0.0), metal::float3(65504.0));

@@ -91,6 +91,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -196,24 +197,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_2 = float2(saturate(n_dot_v), saturate(roughness_2));
-    int2 texel = naga_f2i32(min((uv_2 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_2, 0.0);
+    return _e8.xy;
 }
 
 float3 weft_sphere_map_direction(float3 world_normal, float3 world_position_1)
@@ -331,7 +319,7 @@ float3 standard_low(float3 n_3, float3 v_2, WeftLightGeometry lit_, float3 f0_in
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     float3 f0_2 = float3(f0_in);
-    const float2 _e26 = weft_env_brdf_lut_nearest(lit_.n_dot_v, roughness_in);
+    const float2 _e26 = weft_env_brdf_lut(lit_.n_dot_v, roughness_in);
     const float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
     float3 env_brdf_1 = float3(_e27);
     float3 kd = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
@@ -422,6 +410,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);

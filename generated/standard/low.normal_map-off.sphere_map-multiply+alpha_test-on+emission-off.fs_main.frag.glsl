@@ -160,12 +160,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     vec2 uv_2 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel = ivec2(min((uv_2 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_2), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_sphere_map_direction(vec3 world_normal, vec3 world_position_1) {
@@ -251,7 +249,7 @@ vec3 standard_low(vec3 n_3, vec3 v_2, WeftLightGeometry lit, vec3 f0_in, vec3 di
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     vec3 f0_2 = vec3(f0_in);
-    vec2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    vec2 _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
     vec3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
     vec3 env_brdf_1 = vec3(_e27);
     vec3 kd = max((vec3(1.0) - env_brdf_1), vec3(0.0));
@@ -313,6 +311,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;

@@ -85,6 +85,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -167,13 +169,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let uv_2 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel = vec2<i32>(min((uv_2 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_2, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface_two_sided(world_position_1: vec3<f32>, world_normal: vec3<f32>, front_facing_1: bool) -> WeftSurface {
@@ -251,7 +250,7 @@ fn standard_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_in: v
     let roughness_3 = f32(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha_3 = (roughness_3 * roughness_3);
     let f0_2 = vec3<f32>(f0_in);
-    let _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in);
+    let _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
     let _e27 = weft_env_brdf_from_lut(f0_in, _e26);
     let env_brdf_1 = vec3<f32>(_e27);
     let kd = max((vec3(1f) - env_brdf_1), vec3(0f));
@@ -328,6 +327,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);

@@ -189,20 +189,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_2 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::int2 texel_2 = naga_f2i32(metal::min(uv_2 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_2), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_2, metal::level(0.0));
+    return _e8.xy;
 }
 
 WeftSurface weft_surface_two_sided(
@@ -354,7 +349,8 @@ metal::float3 standard_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
     metal::float3 direct_n_dot_l = {};
     metal::float3 indirect_specular_1 = metal::float3(0.0);
@@ -367,7 +363,7 @@ metal::float3 standard_low(
     float roughness_3 = static_cast<float>(metal::max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = roughness_3 * roughness_3;
     metal::float3 f0_2 = static_cast<metal::float3>(f0_in);
-    metal::float2 _e26 = weft_env_brdf_lut_nearest(lit.n_dot_v, roughness_in, weft_brdf_lut);
+    metal::float2 _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in, weft_brdf_lut, weft_lut_sampler);
     metal::float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
     metal::float3 env_brdf_1 = static_cast<metal::float3>(_e27);
     metal::float3 kd = metal::max(metal::float3(1.0) - env_brdf_1, metal::float3(0.0));
@@ -476,8 +472,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> emissive_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(4)]]
@@ -491,6 +488,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -514,10 +512,10 @@ fragment fs_mainOutput fs_main(
     n = _e49.n;
     {
         metal::float4 _e55 = normal_map.sample(material_sampler, _e6);
-        metal::float3 texel_3 = _e55.xyz;
+        metal::float3 texel_2 = _e55.xyz;
         metal::float3 _e57 = n;
         float _e61 = material.normal_strength;
-        metal::float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_3, _e61);
+        metal::float3 _e62 = weft_mapped_normal(_e57, in_1.world_tangent, texel_2, _e61);
         n = _e62;
     }
     metal::float3 _e63 = n;
@@ -526,7 +524,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 diffuse_albedo_1 = base * (1.0 - metallic);
     {
         metal::float3 _e71 = n;
-        metal::float3 _e72 = standard_low(_e71, v_4, _e64, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e72 = standard_low(_e71, v_4, _e64, f0_3, diffuse_albedo_1, roughness_4, ao_1, specular_strength_1, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
         metal::float3 _e73 = n;
         metal::float3 _e75 = standard_sphere_map(_e72, _e73, in_1.world_position);
         metal::float3 radiance = metal::clamp(_e75 + _e22, metal::float3(0.0), metal::float3(65504.0));

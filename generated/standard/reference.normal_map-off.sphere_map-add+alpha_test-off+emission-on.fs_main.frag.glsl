@@ -116,8 +116,8 @@ float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
     float a2_ = (a * a);
     float noh = clamp(dot(n_1, h), 0.0, 1.0);
     vec3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -282,6 +282,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -320,30 +321,34 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        vec3 _e89 = n;
-        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        vec3 _e97 = n;
-        vec3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        vec3 _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            vec3 _e90 = n;
+            float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_6);
+            d = _e92;
+        }
+        float _e93 = d;
+        float _e94 = visibility;
+        specular = (((_e93 * _e94) * _e88) * specular_strength);
+        vec3 _e99 = n;
+        vec3 _e101 = weft_prefiltered_radiance(reflect(-(v_2), _e99), roughness_6);
+        vec3 _e102 = env_brdf;
+        indirect_specular = ((_e101 * _e102) * (ao * specular_strength));
     }
-    vec3 _e104 = direct_kd;
-    vec3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e104 * _e105);
-    vec3 _e107 = specular;
-    vec3 _e109 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    vec3 _e113 = n;
-    vec3 _e114 = weft_sh_irradiance(_e113);
-    vec3 _e116 = ambient_kd;
-    vec3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    vec3 _e119 = indirect_specular;
-    vec3 color_1 = ((direct + _e119) + indirect_diffuse);
-    vec3 _e122 = n;
-    vec3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    vec3 radiance = clamp((_e124 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e106 = direct_kd;
+    vec3 _e107 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e106 * _e107);
+    vec3 _e109 = specular;
+    vec3 _e111 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e109) * _e111) * _e54.n_dot_l);
+    vec3 _e115 = n;
+    vec3 _e116 = weft_sh_irradiance(_e115);
+    vec3 _e118 = ambient_kd;
+    vec3 indirect_diffuse = (((_e116 * ao) * _e118) * diffuse_albedo);
+    vec3 _e121 = indirect_specular;
+    vec3 color_1 = ((direct + _e121) + indirect_diffuse);
+    vec3 _e124 = n;
+    vec3 _e126 = standard_sphere_map(color_1, _e124, in_1.world_position);
+    vec3 radiance = clamp((_e126 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

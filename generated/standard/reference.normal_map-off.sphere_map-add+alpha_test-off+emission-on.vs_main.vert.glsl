@@ -107,8 +107,8 @@ float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
     float a2_ = (a * a);
     float noh = clamp(dot(n_1, h), 0.0, 1.0);
     vec3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {

@@ -148,8 +148,8 @@ float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
     float a2_ = (a * a);
     float noh = saturate(dot(n_1, h));
     float3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -380,6 +380,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -419,30 +420,34 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        float3 _e89 = n;
-        const float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        float3 _e97 = n;
-        const float3 _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        float3 _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            float3 _e90 = n;
+            const float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_6);
+            d = _e92;
+        }
+        float _e93 = d;
+        float _e94 = visibility;
+        specular = (((_e93 * _e94) * _e88) * specular_strength);
+        float3 _e99 = n;
+        const float3 _e101 = weft_prefiltered_radiance(reflect(-(v_2), _e99), roughness_6);
+        float3 _e102 = env_brdf;
+        indirect_specular = ((_e101 * _e102) * (ao * specular_strength));
     }
-    float3 _e104 = direct_kd;
-    const float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e104 * _e105);
-    float3 _e107 = specular;
-    const float3 _e109 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    float3 _e113 = n;
-    const float3 _e114 = weft_sh_irradiance(_e113);
-    float3 _e116 = ambient_kd;
-    float3 indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    float3 _e119 = indirect_specular;
-    float3 color_1 = ((direct + _e119) + indirect_diffuse);
-    float3 _e122 = n;
-    const float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    float3 radiance = clamp((_e124 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e106 = direct_kd;
+    const float3 _e107 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e106 * _e107);
+    float3 _e109 = specular;
+    const float3 _e111 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e109) * _e111) * _e54.n_dot_l);
+    float3 _e115 = n;
+    const float3 _e116 = weft_sh_irradiance(_e115);
+    float3 _e118 = ambient_kd;
+    float3 indirect_diffuse = (((_e116 * ao) * _e118) * diffuse_albedo);
+    float3 _e121 = indirect_specular;
+    float3 color_1 = ((direct + _e121) + indirect_diffuse);
+    float3 _e124 = n;
+    const float3 _e126 = standard_sphere_map(color_1, _e124, in_1.world_position);
+    float3 radiance = clamp((_e126 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

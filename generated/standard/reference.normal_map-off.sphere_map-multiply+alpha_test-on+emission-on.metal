@@ -120,8 +120,8 @@ float weft_d_ggx_nh(
     float a2_ = a * a;
     float noh = metal::saturate(metal::dot(n_1, h));
     metal::float3 nxh = metal::cross(n_1, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float d_1 = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d_1 * d_1, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -420,6 +420,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -458,30 +459,34 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        metal::float3 _e89 = n;
-        float _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        float _e92 = visibility;
-        specular = ((_e91 * _e92) * _e88) * specular_strength;
-        metal::float3 _e97 = n;
-        metal::float3 _e99 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e97), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e100 = env_brdf;
-        indirect_specular = (_e99 * _e100) * (ao * specular_strength);
+        {
+            metal::float3 _e90 = n;
+            float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_6);
+            d = _e92;
+        }
+        float _e93 = d;
+        float _e94 = visibility;
+        specular = ((_e93 * _e94) * _e88) * specular_strength;
+        metal::float3 _e99 = n;
+        metal::float3 _e101 = weft_prefiltered_radiance(metal::reflect(-(v_2), _e99), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e102 = env_brdf;
+        indirect_specular = (_e101 * _e102) * (ao * specular_strength);
     }
-    metal::float3 _e104 = direct_kd;
-    metal::float3 _e105 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e104 * _e105;
-    metal::float3 _e107 = specular;
-    metal::float3 _e109 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e107) * _e109) * _e54.n_dot_l;
-    metal::float3 _e113 = n;
-    metal::float3 _e114 = weft_sh_irradiance(_e113, weft_frame);
-    metal::float3 _e116 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e114 * ao) * _e116) * diffuse_albedo;
-    metal::float3 _e119 = indirect_specular;
-    metal::float3 color_1 = (direct + _e119) + indirect_diffuse;
-    metal::float3 _e122 = n;
-    metal::float3 _e124 = standard_sphere_map(color_1, _e122, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e124 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e106 = direct_kd;
+    metal::float3 _e107 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e106 * _e107;
+    metal::float3 _e109 = specular;
+    metal::float3 _e111 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e109) * _e111) * _e54.n_dot_l;
+    metal::float3 _e115 = n;
+    metal::float3 _e116 = weft_sh_irradiance(_e115, weft_frame);
+    metal::float3 _e118 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e116 * ao) * _e118) * diffuse_albedo;
+    metal::float3 _e121 = indirect_specular;
+    metal::float3 color_1 = (direct + _e121) + indirect_diffuse;
+    metal::float3 _e124 = n;
+    metal::float3 _e126 = standard_sphere_map(color_1, _e124, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e126 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

@@ -124,8 +124,8 @@ fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
     let a2_ = (a * a);
     let noh = saturate(dot(n_1, h));
     let nxh = cross(n_1, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -297,6 +297,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -336,30 +337,34 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e88 = weft_f_schlick(f0_2, _e54.v_dot_h);
-        let _e89 = n;
-        let _e91 = weft_d_ggx_nh(_e89, _e54.h, roughness_6);
-        let _e92 = visibility;
-        specular = (((_e91 * _e92) * _e88) * specular_strength);
-        let _e97 = n;
-        let _e99 = weft_prefiltered_radiance(reflect(-(v_2), _e97), roughness_6);
-        let _e100 = env_brdf;
-        indirect_specular = ((_e99 * _e100) * (ao * specular_strength));
+        {
+            let _e90 = n;
+            let _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_6);
+            d = _e92;
+        }
+        let _e93 = d;
+        let _e94 = visibility;
+        specular = (((_e93 * _e94) * _e88) * specular_strength);
+        let _e99 = n;
+        let _e101 = weft_prefiltered_radiance(reflect(-(v_2), _e99), roughness_6);
+        let _e102 = env_brdf;
+        indirect_specular = ((_e101 * _e102) * (ao * specular_strength));
     }
-    let _e104 = direct_kd;
-    let _e105 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e104 * _e105);
-    let _e107 = specular;
-    let _e109 = weft_main_light_radiance();
-    let direct = (((diffuse + _e107) * _e109) * _e54.n_dot_l);
-    let _e113 = n;
-    let _e114 = weft_sh_irradiance(_e113);
-    let _e116 = ambient_kd;
-    let indirect_diffuse = (((_e114 * ao) * _e116) * diffuse_albedo);
-    let _e119 = indirect_specular;
-    let color_1 = ((direct + _e119) + indirect_diffuse);
-    let _e122 = n;
-    let _e124 = standard_sphere_map(color_1, _e122, in_1.world_position);
-    let radiance = clamp((_e124 + _e22), vec3(0f), vec3(65504f));
+    let _e106 = direct_kd;
+    let _e107 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e106 * _e107);
+    let _e109 = specular;
+    let _e111 = weft_main_light_radiance();
+    let direct = (((diffuse + _e109) * _e111) * _e54.n_dot_l);
+    let _e115 = n;
+    let _e116 = weft_sh_irradiance(_e115);
+    let _e118 = ambient_kd;
+    let indirect_diffuse = (((_e116 * ao) * _e118) * diffuse_albedo);
+    let _e121 = indirect_specular;
+    let color_1 = ((direct + _e121) + indirect_diffuse);
+    let _e124 = n;
+    let _e126 = standard_sphere_map(color_1, _e124, in_1.world_position);
+    let radiance = clamp((_e126 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -137,8 +137,8 @@ fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
     let a2_ = (a_1 * a_1);
     let noh = saturate(dot(n_2, h));
     let nxh = cross(n_2, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -356,6 +356,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -403,30 +404,34 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        let _e99 = n;
-        let _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        let _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        let _e107 = n;
-        let _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        let _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            let _e100 = n;
+            let _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_6);
+            d = _e102;
+        }
+        let _e103 = d;
+        let _e104 = visibility;
+        specular = (((_e103 * _e104) * _e98) * specular_strength);
+        let _e109 = n;
+        let _e111 = weft_prefiltered_radiance(reflect(-(v_3), _e109), roughness_6);
+        let _e112 = env_brdf;
+        indirect_specular = ((_e111 * _e112) * (ao * specular_strength));
     }
-    let _e114 = direct_kd;
-    let _e115 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e114 * _e115);
-    let _e117 = specular;
-    let _e119 = weft_main_light_radiance();
-    let direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    let _e123 = n;
-    let _e124 = weft_sh_irradiance(_e123);
-    let _e126 = ambient_kd;
-    let indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    let _e129 = indirect_specular;
-    let color_1 = ((direct + _e129) + indirect_diffuse);
-    let _e132 = n;
-    let _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    let radiance = clamp((_e134 + _e22), vec3(0f), vec3(65504f));
+    let _e116 = direct_kd;
+    let _e117 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e116 * _e117);
+    let _e119 = specular;
+    let _e121 = weft_main_light_radiance();
+    let direct = (((diffuse + _e119) * _e121) * _e64.n_dot_l);
+    let _e125 = n;
+    let _e126 = weft_sh_irradiance(_e125);
+    let _e128 = ambient_kd;
+    let indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
+    let _e131 = indirect_specular;
+    let color_1 = ((direct + _e131) + indirect_diffuse);
+    let _e134 = n;
+    let _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
+    let radiance = clamp((_e136 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -129,8 +129,8 @@ float weft_d_ggx_nh(
     float a2_ = a_1 * a_1;
     float noh = metal::saturate(metal::dot(n_2, h));
     metal::float3 nxh = metal::cross(n_2, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float d_1 = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d_1 * d_1, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -473,6 +473,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -519,30 +520,34 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        metal::float3 _e99 = n;
-        float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = ((_e101 * _e102) * _e98) * specular_strength;
-        metal::float3 _e107 = n;
-        metal::float3 _e109 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e107), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e110 = env_brdf;
-        indirect_specular = (_e109 * _e110) * (ao * specular_strength);
+        {
+            metal::float3 _e100 = n;
+            float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_6);
+            d = _e102;
+        }
+        float _e103 = d;
+        float _e104 = visibility;
+        specular = ((_e103 * _e104) * _e98) * specular_strength;
+        metal::float3 _e109 = n;
+        metal::float3 _e111 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e109), roughness_6, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e112 = env_brdf;
+        indirect_specular = (_e111 * _e112) * (ao * specular_strength);
     }
-    metal::float3 _e114 = direct_kd;
-    metal::float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e114 * _e115;
-    metal::float3 _e117 = specular;
-    metal::float3 _e119 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e117) * _e119) * _e64.n_dot_l;
-    metal::float3 _e123 = n;
-    metal::float3 _e124 = weft_sh_irradiance(_e123, weft_frame);
-    metal::float3 _e126 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e124 * ao) * _e126) * diffuse_albedo;
-    metal::float3 _e129 = indirect_specular;
-    metal::float3 color_1 = (direct + _e129) + indirect_diffuse;
-    metal::float3 _e132 = n;
-    metal::float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e134 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e116 = direct_kd;
+    metal::float3 _e117 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e116 * _e117;
+    metal::float3 _e119 = specular;
+    metal::float3 _e121 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e119) * _e121) * _e64.n_dot_l;
+    metal::float3 _e125 = n;
+    metal::float3 _e126 = weft_sh_irradiance(_e125, weft_frame);
+    metal::float3 _e128 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e126 * ao) * _e128) * diffuse_albedo;
+    metal::float3 _e131 = indirect_specular;
+    metal::float3 color_1 = (direct + _e131) + indirect_diffuse;
+    metal::float3 _e134 = n;
+    metal::float3 _e136 = standard_sphere_map(color_1, _e134, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e136 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

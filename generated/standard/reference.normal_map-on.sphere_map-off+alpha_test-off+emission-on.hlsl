@@ -155,8 +155,8 @@ float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
     float a2_ = (a_1 * a_1);
     float noh = saturate(dot(n_2, h));
     float3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -402,6 +402,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -449,30 +450,34 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        float3 _e99 = n;
-        const float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        float3 _e107 = n;
-        const float3 _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        float3 _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            float3 _e100 = n;
+            const float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_6);
+            d = _e102;
+        }
+        float _e103 = d;
+        float _e104 = visibility;
+        specular = (((_e103 * _e104) * _e98) * specular_strength);
+        float3 _e109 = n;
+        const float3 _e111 = weft_prefiltered_radiance(reflect(-(v_3), _e109), roughness_6);
+        float3 _e112 = env_brdf;
+        indirect_specular = ((_e111 * _e112) * (ao * specular_strength));
     }
-    float3 _e114 = direct_kd;
-    const float3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e114 * _e115);
-    float3 _e117 = specular;
-    const float3 _e119 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    float3 _e123 = n;
-    const float3 _e124 = weft_sh_irradiance(_e123);
-    float3 _e126 = ambient_kd;
-    float3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    float3 _e129 = indirect_specular;
-    float3 color_1 = ((direct + _e129) + indirect_diffuse);
-    float3 _e132 = n;
-    const float3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    float3 radiance = clamp((_e134 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e116 = direct_kd;
+    const float3 _e117 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e116 * _e117);
+    float3 _e119 = specular;
+    const float3 _e121 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e119) * _e121) * _e64.n_dot_l);
+    float3 _e125 = n;
+    const float3 _e126 = weft_sh_irradiance(_e125);
+    float3 _e128 = ambient_kd;
+    float3 indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
+    float3 _e131 = indirect_specular;
+    float3 color_1 = ((direct + _e131) + indirect_diffuse);
+    float3 _e134 = n;
+    const float3 _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
+    float3 radiance = clamp((_e136 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

@@ -123,8 +123,8 @@ float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
     float a2_ = (a_1 * a_1);
     float noh = clamp(dot(n_2, h), 0.0, 1.0);
     vec3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -301,6 +301,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -347,30 +348,34 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e98 = weft_f_schlick(f0_2, _e64.v_dot_h);
-        vec3 _e99 = n;
-        float _e101 = weft_d_ggx_nh(_e99, _e64.h, roughness_6);
-        float _e102 = visibility;
-        specular = (((_e101 * _e102) * _e98) * specular_strength);
-        vec3 _e107 = n;
-        vec3 _e109 = weft_prefiltered_radiance(reflect(-(v_3), _e107), roughness_6);
-        vec3 _e110 = env_brdf;
-        indirect_specular = ((_e109 * _e110) * (ao * specular_strength));
+        {
+            vec3 _e100 = n;
+            float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_6);
+            d = _e102;
+        }
+        float _e103 = d;
+        float _e104 = visibility;
+        specular = (((_e103 * _e104) * _e98) * specular_strength);
+        vec3 _e109 = n;
+        vec3 _e111 = weft_prefiltered_radiance(reflect(-(v_3), _e109), roughness_6);
+        vec3 _e112 = env_brdf;
+        indirect_specular = ((_e111 * _e112) * (ao * specular_strength));
     }
-    vec3 _e114 = direct_kd;
-    vec3 _e115 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e114 * _e115);
-    vec3 _e117 = specular;
-    vec3 _e119 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e117) * _e119) * _e64.n_dot_l);
-    vec3 _e123 = n;
-    vec3 _e124 = weft_sh_irradiance(_e123);
-    vec3 _e126 = ambient_kd;
-    vec3 indirect_diffuse = (((_e124 * ao) * _e126) * diffuse_albedo);
-    vec3 _e129 = indirect_specular;
-    vec3 color_1 = ((direct + _e129) + indirect_diffuse);
-    vec3 _e132 = n;
-    vec3 _e134 = standard_sphere_map(color_1, _e132, in_1.world_position);
-    vec3 radiance = clamp((_e134 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e116 = direct_kd;
+    vec3 _e117 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e116 * _e117);
+    vec3 _e119 = specular;
+    vec3 _e121 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e119) * _e121) * _e64.n_dot_l);
+    vec3 _e125 = n;
+    vec3 _e126 = weft_sh_irradiance(_e125);
+    vec3 _e128 = ambient_kd;
+    vec3 indirect_diffuse = (((_e126 * ao) * _e128) * diffuse_albedo);
+    vec3 _e131 = indirect_specular;
+    vec3 color_1 = ((direct + _e131) + indirect_diffuse);
+    vec3 _e134 = n;
+    vec3 _e136 = standard_sphere_map(color_1, _e134, in_1.world_position);
+    vec3 radiance = clamp((_e136 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -133,8 +133,8 @@ float weft_d_ggx_nh(
     float a2_ = a * a;
     float noh = metal::saturate(metal::dot(n_1, h));
     metal::float3 nxh = metal::cross(n_1, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float d_1 = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d_1 * d_1, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -433,6 +433,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -472,30 +473,34 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
-        metal::float3 _e90 = n;
-        float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
-        float _e93 = visibility;
-        specular = ((_e92 * _e93) * _e89) * specular_strength;
-        metal::float3 _e98 = n;
-        metal::float3 _e100 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e98), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e101 = env_brdf;
-        indirect_specular = (_e100 * _e101) * (ao * specular_strength);
+        {
+            metal::float3 _e91 = n;
+            float _e93 = weft_d_ggx_nh(_e91, _e54.h, roughness_7);
+            d = _e93;
+        }
+        float _e94 = d;
+        float _e95 = visibility;
+        specular = ((_e94 * _e95) * _e89) * specular_strength;
+        metal::float3 _e100 = n;
+        metal::float3 _e102 = weft_prefiltered_radiance(metal::reflect(-(v_3), _e100), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e103 = env_brdf;
+        indirect_specular = (_e102 * _e103) * (ao * specular_strength);
     }
-    metal::float3 _e105 = direct_kd;
-    metal::float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e105 * _e106;
-    metal::float3 _e108 = specular;
-    metal::float3 _e110 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e108) * _e110) * _e54.n_dot_l;
-    metal::float3 _e114 = n;
-    metal::float3 _e115 = weft_sh_irradiance(_e114, weft_frame);
-    metal::float3 _e117 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e115 * ao) * _e117) * diffuse_albedo;
-    metal::float3 _e120 = indirect_specular;
-    metal::float3 color_1 = (direct + _e120) + indirect_diffuse;
-    metal::float3 _e123 = n;
-    metal::float3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e125 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e107 = direct_kd;
+    metal::float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e107 * _e108;
+    metal::float3 _e110 = specular;
+    metal::float3 _e112 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e110) * _e112) * _e54.n_dot_l;
+    metal::float3 _e116 = n;
+    metal::float3 _e117 = weft_sh_irradiance(_e116, weft_frame);
+    metal::float3 _e119 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e117 * ao) * _e119) * diffuse_albedo;
+    metal::float3 _e122 = indirect_specular;
+    metal::float3 color_1 = (direct + _e122) + indirect_diffuse;
+    metal::float3 _e125 = n;
+    metal::float3 _e127 = standard_sphere_map(color_1, _e125, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e127 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

@@ -157,8 +157,8 @@ float weft_d_ggx_nh(float3 n_1, float3 h, float roughness_1)
     float a2_ = (a * a);
     float noh = saturate(dot(n_1, h));
     float3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -391,6 +391,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -431,30 +432,34 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
-        float3 _e90 = n;
-        const float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
-        float _e93 = visibility;
-        specular = (((_e92 * _e93) * _e89) * specular_strength);
-        float3 _e98 = n;
-        const float3 _e100 = weft_prefiltered_radiance(reflect(-(v_3), _e98), roughness_7);
-        float3 _e101 = env_brdf;
-        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
+        {
+            float3 _e91 = n;
+            const float _e93 = weft_d_ggx_nh(_e91, _e54.h, roughness_7);
+            d = _e93;
+        }
+        float _e94 = d;
+        float _e95 = visibility;
+        specular = (((_e94 * _e95) * _e89) * specular_strength);
+        float3 _e100 = n;
+        const float3 _e102 = weft_prefiltered_radiance(reflect(-(v_3), _e100), roughness_7);
+        float3 _e103 = env_brdf;
+        indirect_specular = ((_e102 * _e103) * (ao * specular_strength));
     }
-    float3 _e105 = direct_kd;
-    const float3 _e106 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e105 * _e106);
-    float3 _e108 = specular;
-    const float3 _e110 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
-    float3 _e114 = n;
-    const float3 _e115 = weft_sh_irradiance(_e114);
-    float3 _e117 = ambient_kd;
-    float3 indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
-    float3 _e120 = indirect_specular;
-    float3 color_1 = ((direct + _e120) + indirect_diffuse);
-    float3 _e123 = n;
-    const float3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
-    float3 radiance = clamp((_e125 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e107 = direct_kd;
+    const float3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e107 * _e108);
+    float3 _e110 = specular;
+    const float3 _e112 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e110) * _e112) * _e54.n_dot_l);
+    float3 _e116 = n;
+    const float3 _e117 = weft_sh_irradiance(_e116);
+    float3 _e119 = ambient_kd;
+    float3 indirect_diffuse = (((_e117 * ao) * _e119) * diffuse_albedo);
+    float3 _e122 = indirect_specular;
+    float3 color_1 = ((direct + _e122) + indirect_diffuse);
+    float3 _e125 = n;
+    const float3 _e127 = standard_sphere_map(color_1, _e125, in_1.world_position);
+    float3 radiance = clamp((_e127 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

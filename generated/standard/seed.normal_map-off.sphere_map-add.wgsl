@@ -133,8 +133,8 @@ fn weft_d_ggx_nh(n_1: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
     let a2_ = (a * a);
     let noh = saturate(dot(n_1, h));
     let nxh = cross(n_1, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -325,6 +325,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -365,30 +366,34 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
-        let _e90 = n;
-        let _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
-        let _e93 = visibility;
-        specular = (((_e92 * _e93) * _e89) * specular_strength);
-        let _e98 = n;
-        let _e100 = weft_prefiltered_radiance(reflect(-(v_3), _e98), roughness_7);
-        let _e101 = env_brdf;
-        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
+        {
+            let _e91 = n;
+            let _e93 = weft_d_ggx_nh(_e91, _e54.h, roughness_7);
+            d = _e93;
+        }
+        let _e94 = d;
+        let _e95 = visibility;
+        specular = (((_e94 * _e95) * _e89) * specular_strength);
+        let _e100 = n;
+        let _e102 = weft_prefiltered_radiance(reflect(-(v_3), _e100), roughness_7);
+        let _e103 = env_brdf;
+        indirect_specular = ((_e102 * _e103) * (ao * specular_strength));
     }
-    let _e105 = direct_kd;
-    let _e106 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e105 * _e106);
-    let _e108 = specular;
-    let _e110 = weft_main_light_radiance();
-    let direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
-    let _e114 = n;
-    let _e115 = weft_sh_irradiance(_e114);
-    let _e117 = ambient_kd;
-    let indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
-    let _e120 = indirect_specular;
-    let color_1 = ((direct + _e120) + indirect_diffuse);
-    let _e123 = n;
-    let _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
-    let radiance = clamp((_e125 + _e22), vec3(0f), vec3(65504f));
+    let _e107 = direct_kd;
+    let _e108 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e107 * _e108);
+    let _e110 = specular;
+    let _e112 = weft_main_light_radiance();
+    let direct = (((diffuse + _e110) * _e112) * _e54.n_dot_l);
+    let _e116 = n;
+    let _e117 = weft_sh_irradiance(_e116);
+    let _e119 = ambient_kd;
+    let indirect_diffuse = (((_e117 * ao) * _e119) * diffuse_albedo);
+    let _e122 = indirect_specular;
+    let color_1 = ((direct + _e122) + indirect_diffuse);
+    let _e125 = n;
+    let _e127 = standard_sphere_map(color_1, _e125, in_1.world_position);
+    let radiance = clamp((_e127 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

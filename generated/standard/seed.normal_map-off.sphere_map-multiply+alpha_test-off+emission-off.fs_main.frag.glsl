@@ -123,8 +123,8 @@ float weft_d_ggx_nh(vec3 n_1, vec3 h, float roughness_1) {
     float a2_ = (a * a);
     float noh = clamp(dot(n_1, h), 0.0, 1.0);
     vec3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -291,6 +291,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -330,30 +331,34 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e89 = weft_f_schlick(f0_3, _e54.v_dot_h);
-        vec3 _e90 = n;
-        float _e92 = weft_d_ggx_nh(_e90, _e54.h, roughness_7);
-        float _e93 = visibility;
-        specular = (((_e92 * _e93) * _e89) * specular_strength);
-        vec3 _e98 = n;
-        vec3 _e100 = weft_prefiltered_radiance(reflect(-(v_3), _e98), roughness_7);
-        vec3 _e101 = env_brdf;
-        indirect_specular = ((_e100 * _e101) * (ao * specular_strength));
+        {
+            vec3 _e91 = n;
+            float _e93 = weft_d_ggx_nh(_e91, _e54.h, roughness_7);
+            d = _e93;
+        }
+        float _e94 = d;
+        float _e95 = visibility;
+        specular = (((_e94 * _e95) * _e89) * specular_strength);
+        vec3 _e100 = n;
+        vec3 _e102 = weft_prefiltered_radiance(reflect(-(v_3), _e100), roughness_7);
+        vec3 _e103 = env_brdf;
+        indirect_specular = ((_e102 * _e103) * (ao * specular_strength));
     }
-    vec3 _e105 = direct_kd;
-    vec3 _e106 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e105 * _e106);
-    vec3 _e108 = specular;
-    vec3 _e110 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e108) * _e110) * _e54.n_dot_l);
-    vec3 _e114 = n;
-    vec3 _e115 = weft_sh_irradiance(_e114);
-    vec3 _e117 = ambient_kd;
-    vec3 indirect_diffuse = (((_e115 * ao) * _e117) * diffuse_albedo);
-    vec3 _e120 = indirect_specular;
-    vec3 color_1 = ((direct + _e120) + indirect_diffuse);
-    vec3 _e123 = n;
-    vec3 _e125 = standard_sphere_map(color_1, _e123, in_1.world_position);
-    vec3 radiance = clamp((_e125 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e107 = direct_kd;
+    vec3 _e108 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e107 * _e108);
+    vec3 _e110 = specular;
+    vec3 _e112 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e110) * _e112) * _e54.n_dot_l);
+    vec3 _e116 = n;
+    vec3 _e117 = weft_sh_irradiance(_e116);
+    vec3 _e119 = ambient_kd;
+    vec3 indirect_diffuse = (((_e117 * ao) * _e119) * diffuse_albedo);
+    vec3 _e122 = indirect_specular;
+    vec3 color_1 = ((direct + _e122) + indirect_diffuse);
+    vec3 _e125 = n;
+    vec3 _e127 = standard_sphere_map(color_1, _e125, in_1.world_position);
+    vec3 radiance = clamp((_e127 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -142,8 +142,8 @@ float weft_d_ggx_nh(
     float a2_ = a_1 * a_1;
     float noh = metal::saturate(metal::dot(n_2, h));
     metal::float3 nxh = metal::cross(n_2, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
-    return a2_ / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float d_1 = metal::dot(nxh, nxh) + ((noh * noh) * a2_);
+    return a2_ / (WEFT_PI * metal::max(d_1 * d_1, 0.000000000000000000000000000001));
 }
 
 metal::float3 weft_f_schlick(
@@ -486,6 +486,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     metal::float4 _e5 = material.base_map_st;
     metal::float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     metal::float4 _e9 = material.base_color;
@@ -533,30 +534,34 @@ fragment fs_mainOutput fs_main(
     }
     if (specular_strength > 0.0) {
         metal::float3 _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
-        metal::float3 _e100 = n;
-        float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
-        float _e103 = visibility;
-        specular = ((_e102 * _e103) * _e99) * specular_strength;
-        metal::float3 _e108 = n;
-        metal::float3 _e110 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e108), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e111 = env_brdf;
-        indirect_specular = (_e110 * _e111) * (ao * specular_strength);
+        {
+            metal::float3 _e101 = n;
+            float _e103 = weft_d_ggx_nh(_e101, _e64.h, roughness_7);
+            d = _e103;
+        }
+        float _e104 = d;
+        float _e105 = visibility;
+        specular = ((_e104 * _e105) * _e99) * specular_strength;
+        metal::float3 _e110 = n;
+        metal::float3 _e112 = weft_prefiltered_radiance(metal::reflect(-(v_4), _e110), roughness_7, weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e113 = env_brdf;
+        indirect_specular = (_e112 * _e113) * (ao * specular_strength);
     }
-    metal::float3 _e115 = direct_kd;
-    metal::float3 _e116 = weft_diffuse_lambert(diffuse_albedo);
-    metal::float3 diffuse = _e115 * _e116;
-    metal::float3 _e118 = specular;
-    metal::float3 _e120 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e118) * _e120) * _e64.n_dot_l;
-    metal::float3 _e124 = n;
-    metal::float3 _e125 = weft_sh_irradiance(_e124, weft_frame);
-    metal::float3 _e127 = ambient_kd;
-    metal::float3 indirect_diffuse = ((_e125 * ao) * _e127) * diffuse_albedo;
-    metal::float3 _e130 = indirect_specular;
-    metal::float3 color_1 = (direct + _e130) + indirect_diffuse;
-    metal::float3 _e133 = n;
-    metal::float3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
-    metal::float3 radiance = metal::clamp(_e135 + _e22, metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e117 = direct_kd;
+    metal::float3 _e118 = weft_diffuse_lambert(diffuse_albedo);
+    metal::float3 diffuse = _e117 * _e118;
+    metal::float3 _e120 = specular;
+    metal::float3 _e122 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e120) * _e122) * _e64.n_dot_l;
+    metal::float3 _e126 = n;
+    metal::float3 _e127 = weft_sh_irradiance(_e126, weft_frame);
+    metal::float3 _e129 = ambient_kd;
+    metal::float3 indirect_diffuse = ((_e127 * ao) * _e129) * diffuse_albedo;
+    metal::float3 _e132 = indirect_specular;
+    metal::float3 color_1 = (direct + _e132) + indirect_diffuse;
+    metal::float3 _e135 = n;
+    metal::float3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position, weft_frame, material, material_clamp_sampler, sphere_map);
+    metal::float3 radiance = metal::clamp(_e137 + _e22, metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test(alpha_1, material);
     return fs_mainOutput { metal::float4(radiance, alpha_1) };
 }

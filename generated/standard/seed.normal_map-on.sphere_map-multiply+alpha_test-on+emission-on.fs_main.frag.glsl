@@ -132,8 +132,8 @@ float weft_d_ggx_nh(vec3 n_2, vec3 h, float roughness_1) {
     float a2_ = (a_1 * a_1);
     float noh = clamp(dot(n_2, h), 0.0, 1.0);
     vec3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -329,6 +329,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 _e5 = _group_1_binding_0_fs.base_map_st;
     vec2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
     vec4 _e9 = _group_1_binding_0_fs.base_color;
@@ -376,30 +377,34 @@ void main() {
     }
     if ((specular_strength > 0.0)) {
         vec3 _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
-        vec3 _e100 = n;
-        float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
-        float _e103 = visibility;
-        specular = (((_e102 * _e103) * _e99) * specular_strength);
-        vec3 _e108 = n;
-        vec3 _e110 = weft_prefiltered_radiance(reflect(-(v_4), _e108), roughness_7);
-        vec3 _e111 = env_brdf;
-        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
+        {
+            vec3 _e101 = n;
+            float _e103 = weft_d_ggx_nh(_e101, _e64.h, roughness_7);
+            d = _e103;
+        }
+        float _e104 = d;
+        float _e105 = visibility;
+        specular = (((_e104 * _e105) * _e99) * specular_strength);
+        vec3 _e110 = n;
+        vec3 _e112 = weft_prefiltered_radiance(reflect(-(v_4), _e110), roughness_7);
+        vec3 _e113 = env_brdf;
+        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
     }
-    vec3 _e115 = direct_kd;
-    vec3 _e116 = weft_diffuse_lambert(diffuse_albedo);
-    vec3 diffuse = (_e115 * _e116);
-    vec3 _e118 = specular;
-    vec3 _e120 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
-    vec3 _e124 = n;
-    vec3 _e125 = weft_sh_irradiance(_e124);
-    vec3 _e127 = ambient_kd;
-    vec3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    vec3 _e130 = indirect_specular;
-    vec3 color_1 = ((direct + _e130) + indirect_diffuse);
-    vec3 _e133 = n;
-    vec3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
-    vec3 radiance = clamp((_e135 + _e22), vec3(0.0), vec3(65504.0));
+    vec3 _e117 = direct_kd;
+    vec3 _e118 = weft_diffuse_lambert(diffuse_albedo);
+    vec3 diffuse = (_e117 * _e118);
+    vec3 _e120 = specular;
+    vec3 _e122 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e120) * _e122) * _e64.n_dot_l);
+    vec3 _e126 = n;
+    vec3 _e127 = weft_sh_irradiance(_e126);
+    vec3 _e129 = ambient_kd;
+    vec3 indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
+    vec3 _e132 = indirect_specular;
+    vec3 color_1 = ((direct + _e132) + indirect_diffuse);
+    vec3 _e135 = n;
+    vec3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
+    vec3 radiance = clamp((_e137 + _e22), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

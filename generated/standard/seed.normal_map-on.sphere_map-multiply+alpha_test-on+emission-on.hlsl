@@ -166,8 +166,8 @@ float weft_d_ggx_nh(float3 n_2, float3 h, float roughness_1)
     float a2_ = (a_1 * a_1);
     float noh = saturate(dot(n_2, h));
     float3 nxh = cross(n_2, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 1e-30)));
+    float d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 1e-30)));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -433,6 +433,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     float4 _e5 = material.base_map_st;
     const float2 _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -481,30 +482,34 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     if ((specular_strength > 0.0)) {
         const float3 _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
-        float3 _e100 = n;
-        const float _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
-        float _e103 = visibility;
-        specular = (((_e102 * _e103) * _e99) * specular_strength);
-        float3 _e108 = n;
-        const float3 _e110 = weft_prefiltered_radiance(reflect(-(v_4), _e108), roughness_7);
-        float3 _e111 = env_brdf;
-        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
+        {
+            float3 _e101 = n;
+            const float _e103 = weft_d_ggx_nh(_e101, _e64.h, roughness_7);
+            d = _e103;
+        }
+        float _e104 = d;
+        float _e105 = visibility;
+        specular = (((_e104 * _e105) * _e99) * specular_strength);
+        float3 _e110 = n;
+        const float3 _e112 = weft_prefiltered_radiance(reflect(-(v_4), _e110), roughness_7);
+        float3 _e113 = env_brdf;
+        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
     }
-    float3 _e115 = direct_kd;
-    const float3 _e116 = weft_diffuse_lambert(diffuse_albedo);
-    float3 diffuse = (_e115 * _e116);
-    float3 _e118 = specular;
-    const float3 _e120 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
-    float3 _e124 = n;
-    const float3 _e125 = weft_sh_irradiance(_e124);
-    float3 _e127 = ambient_kd;
-    float3 indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    float3 _e130 = indirect_specular;
-    float3 color_1 = ((direct + _e130) + indirect_diffuse);
-    float3 _e133 = n;
-    const float3 _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
-    float3 radiance = clamp((_e135 + _e22), (0.0).xxx, (65504.0).xxx);
+    float3 _e117 = direct_kd;
+    const float3 _e118 = weft_diffuse_lambert(diffuse_albedo);
+    float3 diffuse = (_e117 * _e118);
+    float3 _e120 = specular;
+    const float3 _e122 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e120) * _e122) * _e64.n_dot_l);
+    float3 _e126 = n;
+    const float3 _e127 = weft_sh_irradiance(_e126);
+    float3 _e129 = ambient_kd;
+    float3 indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
+    float3 _e132 = indirect_specular;
+    float3 color_1 = ((direct + _e132) + indirect_diffuse);
+    float3 _e135 = n;
+    const float3 _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
+    float3 radiance = clamp((_e137 + _e22), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test(alpha_1);
     return float4(radiance, alpha_1);
 }

@@ -138,8 +138,8 @@ fn weft_d_ggx_nh(n_2: vec3<f32>, h: vec3<f32>, roughness_1: f32) -> f32 {
     let a2_ = (a_1 * a_1);
     let noh = saturate(dot(n_2, h));
     let nxh = cross(n_2, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * a2_));
-    return (a2_ / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+    let d_1 = (dot(nxh, nxh) + ((noh * noh) * a2_));
+    return (a2_ / (WEFT_PI * max((d_1 * d_1), 0.000000000000000000000000000001f)));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -342,6 +342,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e5 = material.base_map_st;
     let _e6 = weft_transform_uv(in_1.uv0_, _e5);
@@ -390,30 +391,34 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     if (specular_strength > 0f) {
         let _e99 = weft_f_schlick(f0_3, _e64.v_dot_h);
-        let _e100 = n;
-        let _e102 = weft_d_ggx_nh(_e100, _e64.h, roughness_7);
-        let _e103 = visibility;
-        specular = (((_e102 * _e103) * _e99) * specular_strength);
-        let _e108 = n;
-        let _e110 = weft_prefiltered_radiance(reflect(-(v_4), _e108), roughness_7);
-        let _e111 = env_brdf;
-        indirect_specular = ((_e110 * _e111) * (ao * specular_strength));
+        {
+            let _e101 = n;
+            let _e103 = weft_d_ggx_nh(_e101, _e64.h, roughness_7);
+            d = _e103;
+        }
+        let _e104 = d;
+        let _e105 = visibility;
+        specular = (((_e104 * _e105) * _e99) * specular_strength);
+        let _e110 = n;
+        let _e112 = weft_prefiltered_radiance(reflect(-(v_4), _e110), roughness_7);
+        let _e113 = env_brdf;
+        indirect_specular = ((_e112 * _e113) * (ao * specular_strength));
     }
-    let _e115 = direct_kd;
-    let _e116 = weft_diffuse_lambert(diffuse_albedo);
-    let diffuse = (_e115 * _e116);
-    let _e118 = specular;
-    let _e120 = weft_main_light_radiance();
-    let direct = (((diffuse + _e118) * _e120) * _e64.n_dot_l);
-    let _e124 = n;
-    let _e125 = weft_sh_irradiance(_e124);
-    let _e127 = ambient_kd;
-    let indirect_diffuse = (((_e125 * ao) * _e127) * diffuse_albedo);
-    let _e130 = indirect_specular;
-    let color_1 = ((direct + _e130) + indirect_diffuse);
-    let _e133 = n;
-    let _e135 = standard_sphere_map(color_1, _e133, in_1.world_position);
-    let radiance = clamp((_e135 + _e22), vec3(0f), vec3(65504f));
+    let _e117 = direct_kd;
+    let _e118 = weft_diffuse_lambert(diffuse_albedo);
+    let diffuse = (_e117 * _e118);
+    let _e120 = specular;
+    let _e122 = weft_main_light_radiance();
+    let direct = (((diffuse + _e120) * _e122) * _e64.n_dot_l);
+    let _e126 = n;
+    let _e127 = weft_sh_irradiance(_e126);
+    let _e129 = ambient_kd;
+    let indirect_diffuse = (((_e127 * ao) * _e129) * diffuse_albedo);
+    let _e132 = indirect_specular;
+    let color_1 = ((direct + _e132) + indirect_diffuse);
+    let _e135 = n;
+    let _e137 = standard_sphere_map(color_1, _e135, in_1.world_position);
+    let radiance = clamp((_e137 + _e22), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

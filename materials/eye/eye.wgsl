@@ -129,27 +129,31 @@ fn eye_physical(
     // transmission 1 - F.
     let h = weft_safe_normalize(l + v, s);
     let f = eye_fresnel(dot(v, h), ior);
-    let direct_spec = weft_d_ggx_nh(s, h, roughness) * weft_v_smith_ggx_correlated(s_dot_v, s_dot_l, roughness) * f * s_dot_l;
+    let direct_spec = eye_ggx(s, h, s_dot_v, s_dot_l, roughness) * f * s_dot_l;
     let f0 = vec3<f32>(weft_f0_from_ior(ior));
     let env = weft_prefiltered_radiance(reflect(-v, s), roughness)
         * weft_env_brdf_from_lut(f0, weft_env_brdf_lut(s_dot_v, roughness));
     let specular = (light * direct_spec + env) * max(material.specular_strength, 0.0);
-    let t_v = 1.0 - eye_fresnel(s_dot_v, ior);
-    let t_l = 1.0 - eye_fresnel(s_dot_l, ior);
-
-    // Sclera: Lambert on the eyeball.
-    let sclera = albedo * (light * (WEFT_INV_PI * saturate(dot(n, l))) + weft_sh_irradiance(n));
-
-    // Iris: behind the cornea, on the plane facing the eye's axis. The view
-    // leaves through the cornea (transmission 1 - F(s.v)); the light enters
-    // through it, bent by Snell's law, with its own transmission.
+    // Diffuse: the sclera (Lambert on the eyeball) or, behind the cornea,
+    // the iris on the plane facing the eye's axis. The view leaves through
+    // the cornea (transmission 1 - F(s.v)); the light enters through it,
+    // bent by Snell's law, with its own transmission. through_cornea is
+    // exactly 0 or 1, so one SH evaluation at the chosen normal serves both
+    // (it was two, blended by that weight: the same value, ~40 more
+    // instructions on AMD's compiler).
+    let on_iris = look.through_cornea > 0.0;
     let iris_n = weft_safe_normalize(normal3 * vec3<f32>(0.0, 0.0, 1.0), n);
     let l_in = refract(-l, s, 1.0 / ior);
     // No light reaches the iris from behind the cornea's horizon.
     let iris_cos = select(0.0, saturate(dot(iris_n, -l_in)), s_dot_l > 0.0);
-    let iris = albedo * t_v * (light * (WEFT_INV_PI * iris_cos * t_l) + weft_sh_irradiance(iris_n));
+    let t_v = 1.0 - eye_fresnel(s_dot_v, ior);
+    let t_l = 1.0 - eye_fresnel(s_dot_l, ior);
+    let diffuse_n = select(n, iris_n, on_iris);
+    let diffuse_cos = select(saturate(dot(n, l)), iris_cos * t_l, on_iris);
+    let transmission = select(1.0, t_v, on_iris);
+    let diffuse = albedo * transmission * (light * (WEFT_INV_PI * diffuse_cos) + weft_sh_irradiance(diffuse_n));
 
-    return mix(sclera, iris, look.through_cornea) + specular;
+    return diffuse + specular;
 }
 
 // The tear film's Fresnel reflectance at cos_i: exact for a dielectric
@@ -163,6 +167,16 @@ fn eye_fresnel(cos_i: f32, ior: f32) -> f32 {
         return weft_f_dielectric(cos_i, ior);
     }
     return weft_f_schlick(vec3<f32>(weft_f0_from_ior(ior)), cos_i).x;
+}
+
+// GGX D V of the tear film: the reference's exact forms; in fast, standard's
+// fast lobe (Hammon's visibility refined by one Newton step, no square root;
+// D from n.h).
+fn eye_ggx(s: vec3<f32>, h: vec3<f32>, s_dot_v: f32, s_dot_l: f32, roughness: f32) -> f32 {
+    if WEFT_TIER == TIER_REFERENCE {
+        return weft_d_ggx_nh(s, h, roughness) * weft_v_smith_ggx_correlated(s_dot_v, s_dot_l, roughness);
+    }
+    return weft_d_ggx(saturate(dot(s, h)), roughness) * weft_v_smith_ggx_correlated_newton(s_dot_v, s_dot_l, roughness);
 }
 
 // ---------------------------------------------------------------- seed

@@ -377,17 +377,9 @@ fn reduction(specialised: u64, generic: u64) -> f64 {
 const COSTLIER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
     (
         "standard",
-        "fast",
-        "Hammon's visibility + one Newton step (a division) and a nearest-texel LUT read computed \
-         in ALU replace two square roots and a filtered fetch the hardware does for free. \
-         Measured alternatives (navi21 executed cost, reference 390): Newton + filtered fetch 389 \
-         with 40 VGPRs against 32; Hammon alone + filtered fetch 380, but Hammon alone was 0.063 \
-         worst FLIP (over the 0.05 bound). The reference is already at the cost floor",
-    ),
-    (
-        "standard",
         "low",
-        "fast's terms in f16: RDNA2/3 run them at f32's cost (no packed half math is formed)",
+        "fast's visibility and the reference's D in f16: RDNA2/3 run them at f32's cost (no \
+         packed half math is formed), and f16 needs the |n x h|^2 form of D that fast dropped",
     ),
     (
         "silk",

@@ -72,6 +72,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -195,20 +197,17 @@ fn weft_v_smith_ggx_correlated_newton_k5_(n_dot_v: f32, n_dot_l: f32) -> f32 {
     return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-fn weft_env_brdf_lut_nearest_k6_(n_dot_v_1: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut_k6_(n_dot_v_1: f32) -> vec2<f32> {
     let uv = vec2<f32>(saturate(n_dot_v_1), 0.55f);
-    let texel = vec2<i32>(min((uv * size), (size - vec2(1f))));
-    let _e15 = textureLoad(weft_brdf_lut, texel, 0i);
-    return _e15.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+    return _e8.xy;
 }
 
-fn weft_d_ggx_nh_k7_(n_4: vec3<f32>, h: vec3<f32>) -> f32 {
-    let noh = saturate(dot(n_4, h));
-    let nxh = cross(n_4, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * 0.09150626f));
-    return (0.09150626f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+fn weft_d_ggx_k7_(n_dot_h: f32) -> f32 {
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d_1 = (one_minus_noh2_ + ((noh * noh) * 0.09150626f));
+    return (0.09150626f / ((WEFT_PI * d_1) * d_1));
 }
 
 fn weft_specular_mip_k10_() -> f32 {
@@ -255,6 +254,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let base_rgba = material.base_color;
     let base = saturate(base_rgba.xyz);
@@ -269,7 +269,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
         {
             let _e31 = weft_v_smith_ggx_correlated_newton_k5_(_e22.n_dot_v, _e22.n_dot_l);
             visibility = _e31;
-            let _e33 = weft_env_brdf_lut_nearest_k6_(_e22.n_dot_v);
+            let _e33 = weft_env_brdf_lut_k6_(_e22.n_dot_v);
             let _e34 = weft_env_brdf_from_lut(f0_2, _e33);
             env_brdf = _e34;
             let _e36 = env_brdf;
@@ -280,30 +280,33 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     {
         let _e46 = weft_f_schlick(f0_2, _e22.v_dot_h);
-        let _e47 = n;
-        let _e49 = weft_d_ggx_nh_k7_(_e47, _e22.h);
-        let _e50 = visibility;
-        specular = (((_e49 * _e50) * _e46) * 0.5f);
-        let _e55 = n;
-        let _e57 = weft_prefiltered_radiance_k8_(reflect(-(v_4), _e55));
-        let _e58 = env_brdf;
-        indirect_specular = ((_e57 * _e58) * 0.5f);
+        {
+            let _e49 = weft_d_ggx_k7_(_e22.n_dot_h);
+            d = _e49;
+        }
+        let _e50 = d;
+        let _e51 = visibility;
+        specular = (((_e50 * _e51) * _e46) * 0.5f);
+        let _e56 = n;
+        let _e58 = weft_prefiltered_radiance_k8_(reflect(-(v_4), _e56));
+        let _e59 = env_brdf;
+        indirect_specular = ((_e58 * _e59) * 0.5f);
     }
-    let _e62 = direct_kd;
-    let _e63 = weft_diffuse_lambert(base);
-    let diffuse = (_e62 * _e63);
-    let _e65 = specular;
-    let _e67 = weft_main_light_radiance();
-    let direct = (((diffuse + _e65) * _e67) * _e22.n_dot_l);
-    let _e71 = n;
-    let _e72 = weft_sh_irradiance(_e71);
-    let _e73 = ambient_kd;
-    let indirect_diffuse = ((_e72 * _e73) * base);
-    let _e76 = indirect_specular;
-    let color_1 = ((direct + _e76) + indirect_diffuse);
-    let _e79 = n;
-    let _e81 = standard_sphere_map(color_1, _e79, in_1.world_position);
-    let radiance = clamp((_e81 + vec3(0f)), vec3(0f), vec3(65504f));
+    let _e63 = direct_kd;
+    let _e64 = weft_diffuse_lambert(base);
+    let diffuse = (_e63 * _e64);
+    let _e66 = specular;
+    let _e68 = weft_main_light_radiance();
+    let direct = (((diffuse + _e66) * _e68) * _e22.n_dot_l);
+    let _e72 = n;
+    let _e73 = weft_sh_irradiance(_e72);
+    let _e74 = ambient_kd;
+    let indirect_diffuse = ((_e73 * _e74) * base);
+    let _e77 = indirect_specular;
+    let color_1 = ((direct + _e77) + indirect_diffuse);
+    let _e80 = n;
+    let _e82 = standard_sphere_map(color_1, _e80, in_1.world_position);
+    let radiance = clamp((_e82 + vec3(0f)), vec3(0f), vec3(65504f));
     standard_alpha_test(alpha_1);
     return vec4<f32>(radiance, alpha_1);
 }

@@ -156,19 +156,17 @@ vec3 weft_safe_normalize_k3_(vec3 v_3) {
 float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.27749997) + 0.7225);
-    float gl = ((_e7 * 0.27749997) + 0.7225);
-    float pv = ((gv * _e6) + (0.5220063 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.5220063 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.7975) + 0.20249999);
+    float gl = ((_e7 * 0.7975) + 0.20249999);
+    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-vec2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
-    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.85);
-    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
-    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e15.xy;
+vec2 weft_env_brdf_lut_k6_(float n_dot_v_1) {
+    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.45);
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
@@ -181,17 +179,17 @@ vec3 weft_f_schlick_k8_(float v_dot_h) {
     return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_d_ggx_nh_k9_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.5220063));
-    return (0.5220063 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k9_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.041006245));
+    return (0.041006245 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k14_() {
     float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.93925005 * max_mip);
+    return (0.62325 * max_mip);
 }
 
 vec3 weft_prefiltered_radiance_k10_(vec3 dir) {
@@ -216,6 +214,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
     vec3 v_4 = _e13.v;
     n = _e13.n;
@@ -225,7 +224,7 @@ void main() {
         {
             float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
             visibility = _e27;
-            vec2 _e29 = weft_env_brdf_lut_nearest_k6_(_e18.n_dot_v);
+            vec2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v);
             vec3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
             env_brdf = _e30;
             vec3 _e32 = env_brdf;
@@ -236,29 +235,32 @@ void main() {
     }
     {
         vec3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
-        vec3 _e43 = n;
-        float _e45 = weft_d_ggx_nh_k9_(_e43, _e18.h);
-        float _e46 = visibility;
-        specular = ((_e45 * _e46) * _e42);
-        vec3 _e50 = n;
-        vec3 _e52 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e50));
-        vec3 _e53 = env_brdf;
-        indirect_specular = (_e52 * _e53);
+        {
+            float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = (((_e46 * _e47) * _e42) * 0.5);
+        vec3 _e52 = n;
+        vec3 _e54 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e52));
+        vec3 _e55 = env_brdf;
+        indirect_specular = ((_e54 * _e55) * 0.5);
     }
-    vec3 _e55 = direct_kd;
-    vec3 diffuse = (_e55 * vec3(0.19098607, 0.1750706, 0.14323957));
-    vec3 _e58 = specular;
-    vec3 _e60 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e58) * _e60) * _e18.n_dot_l);
-    vec3 _e64 = n;
-    vec3 _e65 = weft_sh_irradiance(_e64);
-    vec3 _e66 = ambient_kd;
-    vec3 indirect_diffuse = ((_e65 * _e66) * vec3(0.60000044, 0.55000055, 0.4500004));
-    vec3 _e69 = indirect_specular;
-    vec3 color_1 = ((direct + _e69) + indirect_diffuse);
-    vec3 _e72 = n;
-    vec3 _e74 = standard_sphere_map(color_1, _e72, in_1.world_position);
-    vec3 radiance = clamp((_e74 + vec3(0.0)), vec3(0.0), vec3(65504.0));
+    vec3 _e59 = direct_kd;
+    vec3 diffuse = (_e59 * vec3(0.101859, 0.06366192, 0.038197216));
+    vec3 _e62 = specular;
+    vec3 _e64 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e62) * _e64) * _e18.n_dot_l);
+    vec3 _e68 = n;
+    vec3 _e69 = weft_sh_irradiance(_e68);
+    vec3 _e70 = ambient_kd;
+    vec3 indirect_diffuse = ((_e69 * _e70) * vec3(0.31999952, 0.19999982, 0.120000094));
+    vec3 _e73 = indirect_specular;
+    vec3 color_1 = ((direct + _e73) + indirect_diffuse);
+    vec3 _e76 = n;
+    vec3 _e78 = standard_sphere_map(color_1, _e76, in_1.world_position);
+    vec3 radiance = clamp((_e78 + vec3(0.0)), vec3(0.0), vec3(65504.0));
     standard_alpha_test_k12_();
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

@@ -214,7 +214,7 @@ float3 weft_safe_normalize_k4_(float3 v_2)
     return ((len2_2 > 1e-20) ? (v_2 * rsqrt(max(len2_2, 1e-20))) : (0.0).xxx);
 }
 
-float3 weft_f_schlick_k19_(float v_dot_h)
+float3 weft_f_schlick_k20_(float v_dot_h)
 {
     const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
     return ((0.025042804).xxx + (float3(0.97495717, 0.97495717, 0.97495717) * _e5));
@@ -222,55 +222,64 @@ float3 weft_f_schlick_k19_(float v_dot_h)
 
 float eye_fresnel_k8_(float cos_i)
 {
-    const float3 _e2 = weft_f_schlick_k19_(cos_i);
+    const float3 _e2 = weft_f_schlick_k20_(cos_i);
     return _e2.x;
 }
 
-float weft_d_ggx_nh_k9_(float3 n_1, float3 h)
+float weft_d_ggx_k14_(float n_dot_h)
 {
-    float noh = saturate(dot(n_1, h));
-    float3 nxh = cross(n_1, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 1.2960001e-5));
-    return (1.2960001e-5 / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d = (one_minus_noh2_ + ((noh * noh) * 1.2960001e-5));
+    return (1.2960001e-5 / ((WEFT_PI * d) * d));
 }
 
-float weft_v_smith_ggx_correlated_k10_(float n_dot_v, float n_dot_l)
+float weft_v_smith_ggx_correlated_newton_k15_(float n_dot_v, float n_dot_l)
 {
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
-    float lv = (_e7 * sqrt((((_e6 * _e6) * 0.99998707) + 1.2960001e-5)));
-    float ll = (_e6 * sqrt((((_e7 * _e7) * 0.99998707) + 1.2960001e-5)));
-    return (0.5 / (lv + ll));
+    float gv = ((_e6 * 0.9964) + 0.0036000002);
+    float gl = ((_e7 * 0.9964) + 0.0036000002);
+    float pv = ((gv * _e6) + (1.2960001e-5 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (1.2960001e-5 * (1.0 - _e7)));
+    return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-float weft_specular_mip_k15_()
+float eye_ggx_k9_(float3 s, float3 h, float s_dot_v, float s_dot_l)
+{
+    const float _e7 = weft_d_ggx_k14_(saturate(dot(s, h)));
+    const float _e8 = weft_v_smith_ggx_correlated_newton_k15_(s_dot_v, s_dot_l);
+    return (_e7 * _e8);
+}
+
+float weft_specular_mip_k16_()
 {
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return (0.09948 * max_mip);
 }
 
-float3 weft_prefiltered_radiance_k12_(float3 dir)
+float3 weft_prefiltered_radiance_k11_(float3 dir)
 {
-    const float _e4 = weft_specular_mip_k15_();
+    const float _e4 = weft_specular_mip_k16_();
     float4 c_2 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_2.xyz, (0.0).xxx);
 }
 
-float2 weft_env_brdf_lut_k13_(float n_dot_v_1)
+float2 weft_env_brdf_lut_k12_(float n_dot_v_1)
 {
     float2 uv = float2(saturate(n_dot_v_1), 0.060000002);
     float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
     return _e8.xy;
 }
 
-float3 weft_env_brdf_from_lut_k18_(float2 scale_bias)
+float3 weft_env_brdf_from_lut_k19_(float2 scale_bias)
 {
     float2 sb = saturate(scale_bias);
     return (((0.025042804).xxx * sb.x) + (sb.y).xxx);
 }
 
-float3 eye_physical_k7_(EyeLookup look_1, float3 n_2, float3 v_3, float3 l, float3x3 normal3_, float3 light)
+float3 eye_physical_k7_(EyeLookup look_1, float3 n_1, float3 v_3, float3 l, float3x3 normal3_, float3 light)
 {
     bool local = (bool)0;
 
@@ -281,40 +290,41 @@ float3 eye_physical_k7_(EyeLookup look_1, float3 n_2, float3 v_3, float3 l, floa
     }
     bool _e19 = local;
     const float3 _e20 = eye_albedo(look_1.iris, _e19);
-    const float3 _e24 = weft_safe_normalize(mul(look_1.normal, normal3_), n_2);
+    const float3 _e24 = weft_safe_normalize(mul(look_1.normal, normal3_), n_1);
     const float _e26 = weft_clamp_cos(dot(_e24, v_3));
-    float s_dot_l = saturate(dot(_e24, l));
+    float s_dot_l_1 = saturate(dot(_e24, l));
     const float3 _e30 = weft_safe_normalize((l + v_3), _e24);
     const float _e32 = eye_fresnel_k8_(dot(v_3, _e30));
-    const float _e33 = weft_d_ggx_nh_k9_(_e24, _e30);
-    const float _e34 = weft_v_smith_ggx_correlated_k10_(_e26, s_dot_l);
-    float direct_spec = (((_e33 * _e34) * _e32) * s_dot_l);
-    const float3 _e41 = weft_prefiltered_radiance_k12_(reflect(-(v_3), _e24));
-    const float2 _e42 = weft_env_brdf_lut_k13_(_e26);
-    const float3 _e43 = weft_env_brdf_from_lut_k18_(_e42);
-    float3 env = (_e41 * _e43);
+    const float _e33 = eye_ggx_k9_(_e24, _e30, _e26, s_dot_l_1);
+    float direct_spec = ((_e33 * _e32) * s_dot_l_1);
+    const float3 _e39 = weft_prefiltered_radiance_k11_(reflect(-(v_3), _e24));
+    const float2 _e40 = weft_env_brdf_lut_k12_(_e26);
+    const float3 _e41 = weft_env_brdf_from_lut_k19_(_e40);
+    float3 env = (_e39 * _e41);
     float3 specular = ((light * direct_spec) + env);
-    const float _e47 = eye_fresnel_k8_(_e26);
-    float t_v = (1.0 - _e47);
-    const float _e50 = eye_fresnel_k8_(s_dot_l);
-    float t_l = (1.0 - _e50);
-    const float3 _e58 = weft_sh_irradiance(n_2);
-    float3 sclera = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e58));
-    const float3 _e63 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), normal3_), n_2);
+    bool on_iris = (look_1.through_cornea > 0.0);
+    const float3 _e50 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), normal3_), n_1);
     float3 l_in = refract(-(l), _e24, 0.7267442);
-    float iris_cos = ((s_dot_l > 0.0) ? saturate(dot(_e63, -(l_in))) : 0.0);
-    const float3 _e79 = weft_sh_irradiance(_e63);
-    float3 iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e79));
-    return (lerp(sclera, iris_1, look_1.through_cornea) + specular);
+    float iris_cos = ((s_dot_l_1 > 0.0) ? saturate(dot(_e50, -(l_in))) : 0.0);
+    const float _e61 = eye_fresnel_k8_(_e26);
+    float t_v = (1.0 - _e61);
+    const float _e64 = eye_fresnel_k8_(s_dot_l_1);
+    float t_l = (1.0 - _e64);
+    float3 diffuse_n = (on_iris ? _e50 : n_1);
+    float diffuse_cos = (on_iris ? (iris_cos * t_l) : saturate(dot(n_1, l)));
+    float transmission = (on_iris ? t_v : 1.0);
+    const float3 _e78 = weft_sh_irradiance(diffuse_n);
+    float3 diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e78));
+    return (diffuse + specular);
 }
 
-float eye_cornea_height_k16_(float rho_1)
+float eye_cornea_height_k17_(float rho_1)
 {
     float z = (0.5380625 + sqrt(max((0.35755965 - (rho_1 * rho_1)), 0.0)));
     return max((z - 0.8660254), 0.0);
 }
 
-float3 eye_cornea_normal_k17_(float2 xy)
+float3 eye_cornea_normal_k18_(float2 xy)
 {
     float z_1 = sqrt(max((0.35755965 - dot(xy, xy)), 0.0));
     return (float3(xy, z_1) / (0.5979629).xxx);
@@ -328,7 +338,7 @@ EyeLookup ConstructEyeLookup(float2 arg0, float3 arg1, float arg2) {
     return ret;
 }
 
-EyeLookup eye_parallax_k14_(float3 p, float3 v_4)
+EyeLookup eye_parallax_k13_(float3 p, float3 v_4)
 {
     bool local_1 = (bool)0;
 
@@ -343,14 +353,14 @@ EyeLookup eye_parallax_k14_(float3 p, float3 v_4)
         const EyeLookup eyelookup = ConstructEyeLookup(p.xy, p, 0.0);
         return eyelookup;
     }
-    const float _e21 = eye_cornea_height_k16_(rho_3);
+    const float _e21 = eye_cornea_height_k17_(rho_3);
     float d_1 = ((0.8660254 + _e21) - p.z);
     float2 e_raw = (p.xy + (d_1 * v_4.xy));
     float2 e_1 = (e_raw * min(1.0, (0.5 / max(length(e_raw), 1e-6))));
-    const float _e37 = eye_cornea_height_k16_(length(e_1));
-    const float3 _e38 = eye_cornea_normal_k17_(e_1);
-    float2 iris_2 = (e_1 - (_e37 * ((v_4.xy * 0.7267442) + (_e38.xy * 0.27325583))));
-    const EyeLookup eyelookup_1 = ConstructEyeLookup(iris_2, _e38, 1.0);
+    const float _e37 = eye_cornea_height_k17_(length(e_1));
+    const float3 _e38 = eye_cornea_normal_k18_(e_1);
+    float2 iris_1 = (e_1 - (_e37 * ((v_4.xy * 0.7267442) + (_e38.xy * 0.27325583))));
+    const EyeLookup eyelookup_1 = ConstructEyeLookup(iris_1, _e38, 1.0);
     return eyelookup_1;
 }
 
@@ -391,20 +401,20 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3x3 normal3_2 = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     const WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
     float3 v_5 = _e23.v;
-    float3 n_3 = _e23.n;
+    float3 n_2 = _e23.n;
     const float3 _e26 = weft_main_light_direction();
-    const float3 _e29 = weft_safe_normalize_k1_(mul(n_3, transpose(model3_1)));
+    const float3 _e29 = weft_safe_normalize_k1_(mul(n_2, transpose(model3_1)));
     const float3 _e32 = weft_safe_normalize_k1_(mul(v_5, transpose(normal3_2)));
-    const float3 _e35 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), n_3);
+    const float3 _e35 = weft_safe_normalize(mul(float3(0.0, 0.0, 1.0), model3_1), n_2);
     float dimming = (1.0 - (0.5 * saturate(-(dot(_e35, _e26)))));
     const float3 _e43 = weft_main_light_radiance();
     {
         {
-            const EyeLookup _e48 = eye_parallax_k14_(_e29, _e32);
+            const EyeLookup _e48 = eye_parallax_k13_(_e29, _e32);
             look = _e48;
         }
         EyeLookup _e49 = look;
-        const float3 _e50 = eye_physical_k7_(_e49, n_3, v_5, _e26, normal3_2, _e43);
+        const float3 _e50 = eye_physical_k7_(_e49, n_2, v_5, _e26, normal3_2, _e43);
         color = _e50;
     }
     float3 _e51 = color;

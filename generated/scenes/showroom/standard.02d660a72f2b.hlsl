@@ -71,6 +71,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 
 struct VertexOutput_vs_main {
@@ -221,24 +222,11 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l)
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut_k6_(float n_dot_v_1)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv = float2(saturate(n_dot_v_1), 0.45);
-    int2 texel = naga_f2i32(min((uv * size), (size - (1.0).xx)));
-    float4 _e15 = weft_brdf_lut.Load(int3(texel, int(0)));
-    return _e15.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
+    return _e8.xy;
 }
 
 float3 weft_env_brdf_from_lut_k7_(float2 scale_bias)
@@ -253,12 +241,12 @@ float3 weft_f_schlick_k8_(float v_dot_h)
     return (float3(0.04, 0.04, 0.04) + (float3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_d_ggx_nh_k9_(float3 n_4, float3 h)
+float weft_d_ggx_k9_(float n_dot_h)
 {
-    float noh = saturate(dot(n_4, h));
-    float3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
-    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.041006245));
+    return (0.041006245 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k14_()
@@ -318,6 +306,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
     const WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
     float3 v_4 = _e13.v;
@@ -328,7 +317,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
         {
             const float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
             visibility = _e27;
-            const float2 _e29 = weft_env_brdf_lut_nearest_k6_(_e18.n_dot_v);
+            const float2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v);
             const float3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
             env_brdf = _e30;
             float3 _e32 = env_brdf;
@@ -339,29 +328,32 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     }
     {
         const float3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
-        float3 _e43 = n;
-        const float _e45 = weft_d_ggx_nh_k9_(_e43, _e18.h);
-        float _e46 = visibility;
-        specular = (((_e45 * _e46) * _e42) * 0.5);
-        float3 _e51 = n;
-        const float3 _e53 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e51));
-        float3 _e54 = env_brdf;
-        indirect_specular = ((_e53 * _e54) * 0.5);
+        {
+            const float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = (((_e46 * _e47) * _e42) * 0.5);
+        float3 _e52 = n;
+        const float3 _e54 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e52));
+        float3 _e55 = env_brdf;
+        indirect_specular = ((_e54 * _e55) * 0.5);
     }
-    float3 _e58 = direct_kd;
-    float3 diffuse = (_e58 * float3(0.101859, 0.06366192, 0.038197216));
-    float3 _e61 = specular;
-    const float3 _e63 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e61) * _e63) * _e18.n_dot_l);
-    float3 _e67 = n;
-    const float3 _e68 = weft_sh_irradiance(_e67);
-    float3 _e69 = ambient_kd;
-    float3 indirect_diffuse = ((_e68 * _e69) * float3(0.31999952, 0.19999982, 0.120000094));
-    float3 _e72 = indirect_specular;
-    float3 color_1 = ((direct + _e72) + indirect_diffuse);
-    float3 _e75 = n;
-    const float3 _e77 = standard_sphere_map(color_1, _e75, in_1.world_position);
-    float3 radiance = clamp((_e77 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
+    float3 _e59 = direct_kd;
+    float3 diffuse = (_e59 * float3(0.101859, 0.06366192, 0.038197216));
+    float3 _e62 = specular;
+    const float3 _e64 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e62) * _e64) * _e18.n_dot_l);
+    float3 _e68 = n;
+    const float3 _e69 = weft_sh_irradiance(_e68);
+    float3 _e70 = ambient_kd;
+    float3 indirect_diffuse = ((_e69 * _e70) * float3(0.31999952, 0.19999982, 0.120000094));
+    float3 _e73 = indirect_specular;
+    float3 color_1 = ((direct + _e73) + indirect_diffuse);
+    float3 _e76 = n;
+    const float3 _e78 = standard_sphere_map(color_1, _e76, in_1.world_position);
+    float3 radiance = clamp((_e78 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
     standard_alpha_test_k12_();
     return float4(radiance, 1.0);
 }

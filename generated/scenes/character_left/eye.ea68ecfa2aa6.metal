@@ -189,7 +189,7 @@ metal::float3 weft_safe_normalize_k4_(
     return (len2_2 > 0.00000000000000000001) ? (v_2 * metal::rsqrt(metal::max(len2_2, 0.00000000000000000001))) : metal::float3(0.0);
 }
 
-metal::float3 weft_f_schlick_k19_(
+metal::float3 weft_f_schlick_k20_(
     float v_dot_h
 ) {
     float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
@@ -199,32 +199,44 @@ metal::float3 weft_f_schlick_k19_(
 float eye_fresnel_k8_(
     float cos_i
 ) {
-    metal::float3 _e2 = weft_f_schlick_k19_(cos_i);
+    metal::float3 _e2 = weft_f_schlick_k20_(cos_i);
     return _e2.x;
 }
 
-float weft_d_ggx_nh_k9_(
-    metal::float3 n_1,
-    metal::float3 h
+float weft_d_ggx_k14_(
+    float n_dot_h
 ) {
-    float noh = metal::saturate(metal::dot(n_1, h));
-    metal::float3 nxh = metal::cross(n_1, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * 0.000012960001);
-    return 0.000012960001 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d = one_minus_noh2_ + ((noh * noh) * 0.000012960001);
+    return 0.000012960001 / ((WEFT_PI * d) * d);
 }
 
-float weft_v_smith_ggx_correlated_k10_(
+float weft_v_smith_ggx_correlated_newton_k15_(
     float n_dot_v,
     float n_dot_l
 ) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float lv = _e7 * metal::sqrt(((_e6 * _e6) * 0.99998707) + 0.000012960001);
-    float ll = _e6 * metal::sqrt(((_e7 * _e7) * 0.99998707) + 0.000012960001);
-    return 0.5 / (lv + ll);
+    float gv = (_e6 * 0.9964) + 0.0036000002;
+    float gl = (_e7 * 0.9964) + 0.0036000002;
+    float pv = (gv * _e6) + (0.000012960001 * (1.0 - _e6));
+    float pl = (gl * _e7) + (0.000012960001 * (1.0 - _e7));
+    return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
-float weft_specular_mip_k15_(
+float eye_ggx_k9_(
+    metal::float3 s,
+    metal::float3 h,
+    float s_dot_v,
+    float s_dot_l
+) {
+    float _e7 = weft_d_ggx_k14_(metal::saturate(metal::dot(s, h)));
+    float _e8 = weft_v_smith_ggx_correlated_newton_k15_(s_dot_v, s_dot_l);
+    return _e7 * _e8;
+}
+
+float weft_specular_mip_k16_(
     constant WeftFrame& weft_frame
 ) {
     float _e5 = weft_frame.params.x;
@@ -232,18 +244,18 @@ float weft_specular_mip_k15_(
     return 0.09948 * max_mip;
 }
 
-metal::float3 weft_prefiltered_radiance_k12_(
+metal::float3 weft_prefiltered_radiance_k11_(
     metal::float3 dir,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip_k15_(weft_frame);
+    float _e4 = weft_specular_mip_k16_(weft_frame);
     metal::float4 c_2 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_2.xyz, metal::float3(0.0));
 }
 
-metal::float2 weft_env_brdf_lut_k13_(
+metal::float2 weft_env_brdf_lut_k12_(
     float n_dot_v_1,
     metal::texture2d<float, metal::access::sample> weft_brdf_lut,
     metal::sampler weft_lut_sampler
@@ -253,7 +265,7 @@ metal::float2 weft_env_brdf_lut_k13_(
     return _e8.xy;
 }
 
-metal::float3 weft_env_brdf_from_lut_k18_(
+metal::float3 weft_env_brdf_from_lut_k19_(
     metal::float2 scale_bias
 ) {
     metal::float2 sb = metal::saturate(scale_bias);
@@ -262,7 +274,7 @@ metal::float3 weft_env_brdf_from_lut_k18_(
 
 metal::float3 eye_physical_k7_(
     EyeLookup look_1,
-    metal::float3 n_2,
+    metal::float3 n_1,
     metal::float3 v_3,
     metal::float3 l,
     metal::float3x3 normal3_,
@@ -281,48 +293,49 @@ metal::float3 eye_physical_k7_(
     }
     bool _e19 = local;
     metal::float3 _e20 = eye_albedo(look_1.iris, _e19);
-    metal::float3 _e24 = weft_safe_normalize(normal3_ * metal::float3(look_1.normal), n_2);
+    metal::float3 _e24 = weft_safe_normalize(normal3_ * metal::float3(look_1.normal), n_1);
     float _e26 = weft_clamp_cos(metal::dot(_e24, v_3));
-    float s_dot_l = metal::saturate(metal::dot(_e24, l));
+    float s_dot_l_1 = metal::saturate(metal::dot(_e24, l));
     metal::float3 _e30 = weft_safe_normalize(l + v_3, _e24);
     float _e32 = eye_fresnel_k8_(metal::dot(v_3, _e30));
-    float _e33 = weft_d_ggx_nh_k9_(_e24, _e30);
-    float _e34 = weft_v_smith_ggx_correlated_k10_(_e26, s_dot_l);
-    float direct_spec = ((_e33 * _e34) * _e32) * s_dot_l;
-    metal::float3 _e41 = weft_prefiltered_radiance_k12_(metal::reflect(-(v_3), _e24), weft_frame, weft_environment, weft_environment_sampler);
-    metal::float2 _e42 = weft_env_brdf_lut_k13_(_e26, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e43 = weft_env_brdf_from_lut_k18_(_e42);
-    metal::float3 env = _e41 * _e43;
+    float _e33 = eye_ggx_k9_(_e24, _e30, _e26, s_dot_l_1);
+    float direct_spec = (_e33 * _e32) * s_dot_l_1;
+    metal::float3 _e39 = weft_prefiltered_radiance_k11_(metal::reflect(-(v_3), _e24), weft_frame, weft_environment, weft_environment_sampler);
+    metal::float2 _e40 = weft_env_brdf_lut_k12_(_e26, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e41 = weft_env_brdf_from_lut_k19_(_e40);
+    metal::float3 env = _e39 * _e41;
     metal::float3 specular = (light * direct_spec) + env;
-    float _e47 = eye_fresnel_k8_(_e26);
-    float t_v = 1.0 - _e47;
-    float _e50 = eye_fresnel_k8_(s_dot_l);
-    float t_l = 1.0 - _e50;
-    metal::float3 _e58 = weft_sh_irradiance(n_2, weft_frame);
-    metal::float3 sclera = _e20 * ((light * (WEFT_INV_PI * metal::saturate(metal::dot(n_2, l)))) + _e58);
-    metal::float3 _e63 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_2);
+    bool on_iris = look_1.through_cornea > 0.0;
+    metal::float3 _e50 = weft_safe_normalize(normal3_ * metal::float3(0.0, 0.0, 1.0), n_1);
     metal::float3 l_in = metal::refract(-(l), _e24, 0.7267442);
-    float iris_cos = (s_dot_l > 0.0) ? metal::saturate(metal::dot(_e63, -(l_in))) : 0.0;
-    metal::float3 _e79 = weft_sh_irradiance(_e63, weft_frame);
-    metal::float3 iris_1 = (_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e79);
-    return metal::mix(sclera, iris_1, look_1.through_cornea) + specular;
+    float iris_cos = (s_dot_l_1 > 0.0) ? metal::saturate(metal::dot(_e50, -(l_in))) : 0.0;
+    float _e61 = eye_fresnel_k8_(_e26);
+    float t_v = 1.0 - _e61;
+    float _e64 = eye_fresnel_k8_(s_dot_l_1);
+    float t_l = 1.0 - _e64;
+    metal::float3 diffuse_n = on_iris ? _e50 : n_1;
+    float diffuse_cos = on_iris ? (iris_cos * t_l) : metal::saturate(metal::dot(n_1, l));
+    float transmission = on_iris ? t_v : 1.0;
+    metal::float3 _e78 = weft_sh_irradiance(diffuse_n, weft_frame);
+    metal::float3 diffuse = (_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e78);
+    return diffuse + specular;
 }
 
-float eye_cornea_height_k16_(
+float eye_cornea_height_k17_(
     float rho_1
 ) {
     float z = 0.5380625 + metal::sqrt(metal::max(0.35755965 - (rho_1 * rho_1), 0.0));
     return metal::max(z - 0.8660254, 0.0);
 }
 
-metal::float3 eye_cornea_normal_k17_(
+metal::float3 eye_cornea_normal_k18_(
     metal::float2 xy
 ) {
     float z_1 = metal::sqrt(metal::max(0.35755965 - metal::dot(xy, xy), 0.0));
     return metal::float3(xy, z_1) / metal::float3(0.5979629);
 }
 
-EyeLookup eye_parallax_k14_(
+EyeLookup eye_parallax_k13_(
     metal::float3 p,
     metal::float3 v_4
 ) {
@@ -337,14 +350,14 @@ EyeLookup eye_parallax_k14_(
     if (_e15) {
         return EyeLookup {p.xy, {}, p, 0.0};
     }
-    float _e21 = eye_cornea_height_k16_(rho_3);
+    float _e21 = eye_cornea_height_k17_(rho_3);
     float d_1 = (0.8660254 + _e21) - p.z;
     metal::float2 e_raw = p.xy + (d_1 * v_4.xy);
     metal::float2 e_1 = e_raw * metal::min(1.0, 0.5 / metal::max(metal::length(e_raw), 0.000001));
-    float _e37 = eye_cornea_height_k16_(metal::length(e_1));
-    metal::float3 _e38 = eye_cornea_normal_k17_(e_1);
-    metal::float2 iris_2 = e_1 - (_e37 * ((v_4.xy * 0.7267442) + (_e38.xy * 0.27325583)));
-    return EyeLookup {iris_2, {}, _e38, 1.0};
+    float _e37 = eye_cornea_height_k17_(metal::length(e_1));
+    metal::float3 _e38 = eye_cornea_normal_k18_(e_1);
+    metal::float2 iris_1 = e_1 - (_e37 * ((v_4.xy * 0.7267442) + (_e38.xy * 0.27325583)));
+    return EyeLookup {iris_1, {}, _e38, 1.0};
 }
 
 struct vs_mainInput {
@@ -416,20 +429,20 @@ fragment fs_mainOutput fs_main(
     metal::float3x3 normal3_2 = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
     metal::float3 v_5 = _e23.v;
-    metal::float3 n_3 = _e23.n;
+    metal::float3 n_2 = _e23.n;
     metal::float3 _e26 = weft_main_light_direction(weft_frame);
-    metal::float3 _e29 = weft_safe_normalize_k1_(metal::transpose(model3_1) * n_3);
+    metal::float3 _e29 = weft_safe_normalize_k1_(metal::transpose(model3_1) * n_2);
     metal::float3 _e32 = weft_safe_normalize_k1_(metal::transpose(normal3_2) * v_5);
-    metal::float3 _e35 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_3);
+    metal::float3 _e35 = weft_safe_normalize(model3_1 * metal::float3(0.0, 0.0, 1.0), n_2);
     float dimming = 1.0 - (0.5 * metal::saturate(-(metal::dot(_e35, _e26))));
     metal::float3 _e43 = weft_main_light_radiance(weft_frame);
     {
         {
-            EyeLookup _e48 = eye_parallax_k14_(_e29, _e32);
+            EyeLookup _e48 = eye_parallax_k13_(_e29, _e32);
             look = _e48;
         }
         EyeLookup _e49 = look;
-        metal::float3 _e50 = eye_physical_k7_(_e49, n_3, v_5, _e26, normal3_2, _e43, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e50 = eye_physical_k7_(_e49, n_2, v_5, _e26, normal3_2, _e43, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
         color = _e50;
     }
     metal::float3 _e51 = color;

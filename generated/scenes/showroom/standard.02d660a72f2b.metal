@@ -49,9 +49,6 @@ struct WeftVaryings {
     metal::float2 uv0_;
     char _pad5[8];
 };
-struct WeftMaterial {
-    metal::float4 base_color;
-};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint SPHERE_MAP_OFF = 0u;
@@ -88,28 +85,6 @@ metal::float3 weft_safe_normalize(
 ) {
     float len2_ = metal::dot(v, v);
     return (len2_ > 0.00000000000000000001) ? (v * metal::rsqrt(metal::max(len2_, 0.00000000000000000001))) : fallback;
-}
-
-metal::float3 weft_f_schlick(
-    metal::float3 f0_,
-    float v_dot_h
-) {
-    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
-    return f0_ + ((metal::float3(1.0) - f0_) * _e5);
-}
-
-metal::float3 weft_diffuse_lambert(
-    metal::float3 albedo
-) {
-    return albedo * WEFT_INV_PI;
-}
-
-metal::float3 weft_env_brdf_from_lut(
-    metal::float3 f0_1,
-    metal::float2 scale_bias
-) {
-    metal::float2 sb = metal::saturate(scale_bias);
-    return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
 metal::float3 weft_safe_normalize_k1_(
@@ -204,14 +179,6 @@ metal::float3 standard_sphere_map(
     return _e4;
 }
 
-void standard_alpha_test(
-    float alpha
-) {
-    {
-        return;
-    }
-}
-
 metal::float3 weft_safe_normalize_k3_(
     metal::float3 v_3
 ) {
@@ -225,55 +192,70 @@ float weft_v_smith_ggx_correlated_newton_k5_(
 ) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = (_e6 * 0.6975) + 0.3025;
-    float gl = (_e7 * 0.6975) + 0.3025;
-    float pv = (gv * _e6) + (0.09150626 * (1.0 - _e6));
-    float pl = (gl * _e7) + (0.09150626 * (1.0 - _e7));
+    float gv = (_e6 * 0.7975) + 0.20249999;
+    float gl = (_e7 * 0.7975) + 0.20249999;
+    float pv = (gv * _e6) + (0.041006245 * (1.0 - _e6));
+    float pl = (gl * _e7) + (0.041006245 * (1.0 - _e7));
     return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest_k6_(
+metal::float2 weft_env_brdf_lut_k6_(
     float n_dot_v_1,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
-    metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), 0.55);
-    metal::int2 texel = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
-    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel), 0);
-    return _e15.xy;
+    metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), 0.45);
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
+    return _e8.xy;
 }
 
-float weft_d_ggx_nh_k7_(
-    metal::float3 n_4,
-    metal::float3 h
+metal::float3 weft_env_brdf_from_lut_k7_(
+    metal::float2 scale_bias
 ) {
-    float noh = metal::saturate(metal::dot(n_4, h));
-    metal::float3 nxh = metal::cross(n_4, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * 0.09150626);
-    return 0.09150626 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    metal::float2 sb = metal::saturate(scale_bias);
+    return (metal::float3(0.04, 0.04, 0.04) * sb.x) + metal::float3(sb.y);
 }
 
-float weft_specular_mip_k10_(
+metal::float3 weft_f_schlick_k8_(
+    float v_dot_h
+) {
+    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    return metal::float3(0.04, 0.04, 0.04) + (metal::float3(0.96, 0.96, 0.96) * _e5);
+}
+
+float weft_d_ggx_k9_(
+    float n_dot_h
+) {
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d_1 = one_minus_noh2_ + ((noh * noh) * 0.041006245);
+    return 0.041006245 / ((WEFT_PI * d_1) * d_1);
+}
+
+float weft_specular_mip_k14_(
     constant WeftFrame& weft_frame
 ) {
     float _e5 = weft_frame.params.x;
     float max_mip = metal::max(_e5 - 1.0, 0.0);
-    return 0.72325003 * max_mip;
+    return 0.62325 * max_mip;
 }
 
-metal::float3 weft_prefiltered_radiance_k8_(
+metal::float3 weft_prefiltered_radiance_k10_(
     metal::float3 dir,
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler
 ) {
-    float _e4 = weft_specular_mip_k10_(weft_frame);
+    float _e4 = weft_specular_mip_k14_(weft_frame);
     metal::float4 c_1 = weft_environment.sample(weft_environment_sampler, dir, metal::level(_e4));
     return metal::max(c_1.xyz, metal::float3(0.0));
+}
+
+void standard_alpha_test_k12_(
+) {
+    {
+        return;
+    }
 }
 
 struct vs_mainInput {
@@ -292,7 +274,7 @@ struct vs_mainOutput {
 vertex vs_mainOutput vs_main(
   vs_mainInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
-, constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftObject& weft_object [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent, varyings.uv0_ };
     WeftVaryings out = {};
@@ -334,7 +316,7 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
-, constant WeftMaterial& material [[buffer(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -344,54 +326,53 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
-    metal::float4 base_rgba = material.base_color;
-    metal::float3 base = metal::saturate(base_rgba.xyz);
-    float alpha_1 = metal::saturate(base_rgba.w);
-    WeftSurface _e17 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
-    metal::float3 v_4 = _e17.v;
-    n = _e17.n;
-    metal::float3 _e21 = n;
-    WeftLightGeometry _e22 = weft_main_light_geometry(_e21, v_4, weft_frame);
-    metal::float3 f0_2 = metal::mix(metal::float3(0.04), base, 0.0);
+    float d = {};
+    WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
+    metal::float3 v_4 = _e13.v;
+    n = _e13.n;
+    metal::float3 _e17 = n;
+    WeftLightGeometry _e18 = weft_main_light_geometry(_e17, v_4, weft_frame);
     {
         {
-            float _e31 = weft_v_smith_ggx_correlated_newton_k5_(_e22.n_dot_v, _e22.n_dot_l);
-            visibility = _e31;
-            metal::float2 _e33 = weft_env_brdf_lut_nearest_k6_(_e22.n_dot_v, weft_brdf_lut);
-            metal::float3 _e34 = weft_env_brdf_from_lut(f0_2, _e33);
-            env_brdf = _e34;
-            metal::float3 _e36 = env_brdf;
-            ambient_kd = metal::max(metal::float3(1.0) - _e36, metal::float3(0.0));
-            metal::float3 _e40 = ambient_kd;
-            direct_kd = _e40;
+            float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
+            visibility = _e27;
+            metal::float2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v, weft_brdf_lut, weft_lut_sampler);
+            metal::float3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
+            env_brdf = _e30;
+            metal::float3 _e32 = env_brdf;
+            ambient_kd = metal::max(metal::float3(1.0) - _e32, metal::float3(0.0));
+            metal::float3 _e36 = ambient_kd;
+            direct_kd = _e36;
         }
     }
     {
-        metal::float3 _e46 = weft_f_schlick(f0_2, _e22.v_dot_h);
-        metal::float3 _e47 = n;
-        float _e49 = weft_d_ggx_nh_k7_(_e47, _e22.h);
-        float _e50 = visibility;
-        specular = ((_e49 * _e50) * _e46) * 0.5;
-        metal::float3 _e55 = n;
-        metal::float3 _e57 = weft_prefiltered_radiance_k8_(metal::reflect(-(v_4), _e55), weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e58 = env_brdf;
-        indirect_specular = (_e57 * _e58) * 0.5;
+        metal::float3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
+        {
+            float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = ((_e46 * _e47) * _e42) * 0.5;
+        metal::float3 _e52 = n;
+        metal::float3 _e54 = weft_prefiltered_radiance_k10_(metal::reflect(-(v_4), _e52), weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e55 = env_brdf;
+        indirect_specular = (_e54 * _e55) * 0.5;
     }
-    metal::float3 _e62 = direct_kd;
-    metal::float3 _e63 = weft_diffuse_lambert(base);
-    metal::float3 diffuse = _e62 * _e63;
-    metal::float3 _e65 = specular;
-    metal::float3 _e67 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e65) * _e67) * _e22.n_dot_l;
-    metal::float3 _e71 = n;
-    metal::float3 _e72 = weft_sh_irradiance(_e71, weft_frame);
-    metal::float3 _e73 = ambient_kd;
-    metal::float3 indirect_diffuse = (_e72 * _e73) * base;
-    metal::float3 _e76 = indirect_specular;
-    metal::float3 color_1 = (direct + _e76) + indirect_diffuse;
-    metal::float3 _e79 = n;
-    metal::float3 _e81 = standard_sphere_map(color_1, _e79, in_1.world_position);
-    metal::float3 radiance = metal::clamp(_e81 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
-    standard_alpha_test(alpha_1);
-    return fs_mainOutput { metal::float4(radiance, alpha_1) };
+    metal::float3 _e59 = direct_kd;
+    metal::float3 diffuse = _e59 * metal::float3(0.101859, 0.06366192, 0.038197216);
+    metal::float3 _e62 = specular;
+    metal::float3 _e64 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e62) * _e64) * _e18.n_dot_l;
+    metal::float3 _e68 = n;
+    metal::float3 _e69 = weft_sh_irradiance(_e68, weft_frame);
+    metal::float3 _e70 = ambient_kd;
+    metal::float3 indirect_diffuse = (_e69 * _e70) * metal::float3(0.31999952, 0.19999982, 0.120000094);
+    metal::float3 _e73 = indirect_specular;
+    metal::float3 color_1 = (direct + _e73) + indirect_diffuse;
+    metal::float3 _e76 = n;
+    metal::float3 _e78 = standard_sphere_map(color_1, _e76, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e78 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
+    standard_alpha_test_k12_();
+    return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

@@ -187,11 +187,11 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-float weft_d_ggx_nh_k7_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.09150626));
-    return (0.09150626 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k7_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.09150626));
+    return (0.09150626 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k10_() {

@@ -174,11 +174,11 @@ vec3 weft_f_schlick_k8_(float v_dot_h) {
     return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_d_ggx_nh_k9_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.5220063));
-    return (0.5220063 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k9_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.5220063));
+    return (0.5220063 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k14_() {

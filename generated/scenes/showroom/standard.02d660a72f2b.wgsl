@@ -68,6 +68,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 
@@ -169,13 +171,10 @@ fn weft_v_smith_ggx_correlated_newton_k5_(n_dot_v: f32, n_dot_l: f32) -> f32 {
     return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-fn weft_env_brdf_lut_nearest_k6_(n_dot_v_1: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut_k6_(n_dot_v_1: f32) -> vec2<f32> {
     let uv = vec2<f32>(saturate(n_dot_v_1), 0.45f);
-    let texel = vec2<i32>(min((uv * size), (size - vec2(1f))));
-    let _e15 = textureLoad(weft_brdf_lut, texel, 0i);
-    return _e15.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
+    return _e8.xy;
 }
 
 fn weft_env_brdf_from_lut_k7_(scale_bias: vec2<f32>) -> vec3<f32> {
@@ -188,11 +187,11 @@ fn weft_f_schlick_k8_(v_dot_h: f32) -> vec3<f32> {
     return (vec3<f32>(0.04f, 0.04f, 0.04f) + (vec3<f32>(0.96f, 0.96f, 0.96f) * _e5));
 }
 
-fn weft_d_ggx_nh_k9_(n_4: vec3<f32>, h: vec3<f32>) -> f32 {
-    let noh = saturate(dot(n_4, h));
-    let nxh = cross(n_4, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245f));
-    return (0.041006245f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+fn weft_d_ggx_k9_(n_dot_h: f32) -> f32 {
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d_1 = (one_minus_noh2_ + ((noh * noh) * 0.041006245f));
+    return (0.041006245f / ((WEFT_PI * d_1) * d_1));
 }
 
 fn weft_specular_mip_k14_() -> f32 {
@@ -245,6 +244,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     var direct_kd: vec3<f32>;
     var specular: vec3<f32> = vec3(0f);
     var indirect_specular: vec3<f32> = vec3(0f);
+    var d: f32;
 
     let _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
     let v_4 = _e13.v;
@@ -255,7 +255,7 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
         {
             let _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
             visibility = _e27;
-            let _e29 = weft_env_brdf_lut_nearest_k6_(_e18.n_dot_v);
+            let _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v);
             let _e30 = weft_env_brdf_from_lut_k7_(_e29);
             env_brdf = _e30;
             let _e32 = env_brdf;
@@ -266,29 +266,32 @@ fn fs_main(in_1: WeftVaryings, @builtin(front_facing) front_facing: bool) -> @lo
     }
     {
         let _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
-        let _e43 = n;
-        let _e45 = weft_d_ggx_nh_k9_(_e43, _e18.h);
-        let _e46 = visibility;
-        specular = (((_e45 * _e46) * _e42) * 0.5f);
-        let _e51 = n;
-        let _e53 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e51));
-        let _e54 = env_brdf;
-        indirect_specular = ((_e53 * _e54) * 0.5f);
+        {
+            let _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        let _e46 = d;
+        let _e47 = visibility;
+        specular = (((_e46 * _e47) * _e42) * 0.5f);
+        let _e52 = n;
+        let _e54 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e52));
+        let _e55 = env_brdf;
+        indirect_specular = ((_e54 * _e55) * 0.5f);
     }
-    let _e58 = direct_kd;
-    let diffuse = (_e58 * vec3<f32>(0.101859f, 0.06366192f, 0.038197216f));
-    let _e61 = specular;
-    let _e63 = weft_main_light_radiance();
-    let direct = (((diffuse + _e61) * _e63) * _e18.n_dot_l);
-    let _e67 = n;
-    let _e68 = weft_sh_irradiance(_e67);
-    let _e69 = ambient_kd;
-    let indirect_diffuse = ((_e68 * _e69) * vec3<f32>(0.31999952f, 0.19999982f, 0.120000094f));
-    let _e72 = indirect_specular;
-    let color_1 = ((direct + _e72) + indirect_diffuse);
-    let _e75 = n;
-    let _e77 = standard_sphere_map(color_1, _e75, in_1.world_position);
-    let radiance = clamp((_e77 + vec3(0f)), vec3(0f), vec3(65504f));
+    let _e59 = direct_kd;
+    let diffuse = (_e59 * vec3<f32>(0.101859f, 0.06366192f, 0.038197216f));
+    let _e62 = specular;
+    let _e64 = weft_main_light_radiance();
+    let direct = (((diffuse + _e62) * _e64) * _e18.n_dot_l);
+    let _e68 = n;
+    let _e69 = weft_sh_irradiance(_e68);
+    let _e70 = ambient_kd;
+    let indirect_diffuse = ((_e69 * _e70) * vec3<f32>(0.31999952f, 0.19999982f, 0.120000094f));
+    let _e73 = indirect_specular;
+    let color_1 = ((direct + _e73) + indirect_diffuse);
+    let _e76 = n;
+    let _e78 = standard_sphere_map(color_1, _e76, in_1.world_position);
+    let radiance = clamp((_e78 + vec3(0f)), vec3(0f), vec3(65504f));
     standard_alpha_test_k12_();
     return vec4<f32>(radiance, 1f);
 }

@@ -188,19 +188,17 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-vec2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut_k6_(float n_dot_v_1) {
     vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.55);
-    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
-    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e15.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
 }
 
-float weft_d_ggx_nh_k7_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.09150626));
-    return (0.09150626 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k7_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.09150626));
+    return (0.09150626 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k10_() {
@@ -225,6 +223,7 @@ void main() {
     vec3 direct_kd = vec3(0.0);
     vec3 specular = vec3(0.0);
     vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
     vec4 base_rgba = _group_1_binding_0_fs.base_color;
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
     float alpha_1 = clamp(base_rgba.w, 0.0, 1.0);
@@ -238,7 +237,7 @@ void main() {
         {
             float _e31 = weft_v_smith_ggx_correlated_newton_k5_(_e22.n_dot_v, _e22.n_dot_l);
             visibility = _e31;
-            vec2 _e33 = weft_env_brdf_lut_nearest_k6_(_e22.n_dot_v);
+            vec2 _e33 = weft_env_brdf_lut_k6_(_e22.n_dot_v);
             vec3 _e34 = weft_env_brdf_from_lut(f0_2, _e33);
             env_brdf = _e34;
             vec3 _e36 = env_brdf;
@@ -249,30 +248,33 @@ void main() {
     }
     {
         vec3 _e46 = weft_f_schlick(f0_2, _e22.v_dot_h);
-        vec3 _e47 = n;
-        float _e49 = weft_d_ggx_nh_k7_(_e47, _e22.h);
-        float _e50 = visibility;
-        specular = (((_e49 * _e50) * _e46) * 0.5);
-        vec3 _e55 = n;
-        vec3 _e57 = weft_prefiltered_radiance_k8_(reflect(-(v_4), _e55));
-        vec3 _e58 = env_brdf;
-        indirect_specular = ((_e57 * _e58) * 0.5);
+        {
+            float _e49 = weft_d_ggx_k7_(_e22.n_dot_h);
+            d = _e49;
+        }
+        float _e50 = d;
+        float _e51 = visibility;
+        specular = (((_e50 * _e51) * _e46) * 0.5);
+        vec3 _e56 = n;
+        vec3 _e58 = weft_prefiltered_radiance_k8_(reflect(-(v_4), _e56));
+        vec3 _e59 = env_brdf;
+        indirect_specular = ((_e58 * _e59) * 0.5);
     }
-    vec3 _e62 = direct_kd;
-    vec3 _e63 = weft_diffuse_lambert(base);
-    vec3 diffuse = (_e62 * _e63);
-    vec3 _e65 = specular;
-    vec3 _e67 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e65) * _e67) * _e22.n_dot_l);
-    vec3 _e71 = n;
-    vec3 _e72 = weft_sh_irradiance(_e71);
-    vec3 _e73 = ambient_kd;
-    vec3 indirect_diffuse = ((_e72 * _e73) * base);
-    vec3 _e76 = indirect_specular;
-    vec3 color_1 = ((direct + _e76) + indirect_diffuse);
-    vec3 _e79 = n;
-    vec3 _e81 = standard_sphere_map(color_1, _e79, in_1.world_position);
-    vec3 radiance = clamp((_e81 + vec3(0.0)), vec3(0.0), vec3(65504.0));
+    vec3 _e63 = direct_kd;
+    vec3 _e64 = weft_diffuse_lambert(base);
+    vec3 diffuse = (_e63 * _e64);
+    vec3 _e66 = specular;
+    vec3 _e68 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e66) * _e68) * _e22.n_dot_l);
+    vec3 _e72 = n;
+    vec3 _e73 = weft_sh_irradiance(_e72);
+    vec3 _e74 = ambient_kd;
+    vec3 indirect_diffuse = ((_e73 * _e74) * base);
+    vec3 _e77 = indirect_specular;
+    vec3 color_1 = ((direct + _e77) + indirect_diffuse);
+    vec3 _e80 = n;
+    vec3 _e82 = standard_sphere_map(color_1, _e80, in_1.world_position);
+    vec3 radiance = clamp((_e82 + vec3(0.0)), vec3(0.0), vec3(65504.0));
     standard_alpha_test(alpha_1);
     _fs2p_location0 = vec4(radiance, alpha_1);
     return;

@@ -169,55 +169,63 @@ fn weft_safe_normalize_k4_(v_2: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), (v_2 * inverseSqrt(max(len2_2, 0.00000000000000000001f))), (len2_2 > 0.00000000000000000001f));
 }
 
-fn weft_f_schlick_k19_(v_dot_h: f32) -> vec3<f32> {
+fn weft_f_schlick_k20_(v_dot_h: f32) -> vec3<f32> {
     let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
     return (vec3(0.025042804f) + (vec3<f32>(0.97495717f, 0.97495717f, 0.97495717f) * _e5));
 }
 
 fn eye_fresnel_k8_(cos_i: f32) -> f32 {
-    let _e2 = weft_f_schlick_k19_(cos_i);
+    let _e2 = weft_f_schlick_k20_(cos_i);
     return _e2.x;
 }
 
-fn weft_d_ggx_nh_k9_(n_1: vec3<f32>, h: vec3<f32>) -> f32 {
-    let noh = saturate(dot(n_1, h));
-    let nxh = cross(n_1, h);
-    let d = (dot(nxh, nxh) + ((noh * noh) * 0.000012960001f));
-    return (0.000012960001f / (WEFT_PI * max((d * d), 0.000000000000000000000000000001f)));
+fn weft_d_ggx_k14_(n_dot_h: f32) -> f32 {
+    let noh = saturate(n_dot_h);
+    let one_minus_noh2_ = ((1f - noh) * (1f + noh));
+    let d = (one_minus_noh2_ + ((noh * noh) * 0.000012960001f));
+    return (0.000012960001f / ((WEFT_PI * d) * d));
 }
 
-fn weft_v_smith_ggx_correlated_k10_(n_dot_v: f32, n_dot_l: f32) -> f32 {
+fn weft_v_smith_ggx_correlated_newton_k15_(n_dot_v: f32, n_dot_l: f32) -> f32 {
     let _e6 = weft_clamp_cos(n_dot_v);
     let _e7 = weft_clamp_cos(n_dot_l);
-    let lv = (_e7 * sqrt((((_e6 * _e6) * 0.99998707f) + 0.000012960001f)));
-    let ll = (_e6 * sqrt((((_e7 * _e7) * 0.99998707f) + 0.000012960001f)));
-    return (0.5f / (lv + ll));
+    let gv = ((_e6 * 0.9964f) + 0.0036000002f);
+    let gl = ((_e7 * 0.9964f) + 0.0036000002f);
+    let pv = ((gv * _e6) + (0.000012960001f * (1f - _e6)));
+    let pl = ((gl * _e7) + (0.000012960001f * (1f - _e7)));
+    return (((0.5f * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-fn weft_specular_mip_k15_() -> f32 {
+fn eye_ggx_k9_(s: vec3<f32>, h: vec3<f32>, s_dot_v: f32, s_dot_l: f32) -> f32 {
+    let _e7 = weft_d_ggx_k14_(saturate(dot(s, h)));
+    let _e8 = weft_v_smith_ggx_correlated_newton_k15_(s_dot_v, s_dot_l);
+    return (_e7 * _e8);
+}
+
+fn weft_specular_mip_k16_() -> f32 {
     let _e5 = weft_frame.params.x;
     let max_mip = max((_e5 - 1f), 0f);
     return (0.09948f * max_mip);
 }
 
-fn weft_prefiltered_radiance_k12_(dir: vec3<f32>) -> vec3<f32> {
-    let _e4 = weft_specular_mip_k15_();
+fn weft_prefiltered_radiance_k11_(dir: vec3<f32>) -> vec3<f32> {
+    let _e4 = weft_specular_mip_k16_();
     let c_2 = textureSampleLevel(weft_environment, weft_environment_sampler, dir, _e4);
     return max(c_2.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_k13_(n_dot_v_1: f32) -> vec2<f32> {
+fn weft_env_brdf_lut_k12_(n_dot_v_1: f32) -> vec2<f32> {
     let uv = vec2<f32>(saturate(n_dot_v_1), 0.060000002f);
     let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0f);
     return _e8.xy;
 }
 
-fn weft_env_brdf_from_lut_k18_(scale_bias: vec2<f32>) -> vec3<f32> {
+fn weft_env_brdf_from_lut_k19_(scale_bias: vec2<f32>) -> vec3<f32> {
     let sb = saturate(scale_bias);
     return ((vec3(0.025042804f) * sb.x) + vec3(sb.y));
 }
 
-fn eye_physical_k7_(look_1: EyeLookup, n_2: vec3<f32>, v_3: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, light: vec3<f32>) -> vec3<f32> {
+fn eye_physical_k7_(look_1: EyeLookup, n_1: vec3<f32>, v_3: vec3<f32>, l: vec3<f32>, normal3_: mat3x3<f32>, light: vec3<f32>) -> vec3<f32> {
     var local: bool;
 
     if !((look_1.through_cornea > 0f)) {
@@ -227,44 +235,45 @@ fn eye_physical_k7_(look_1: EyeLookup, n_2: vec3<f32>, v_3: vec3<f32>, l: vec3<f
     }
     let _e19 = local;
     let _e20 = eye_albedo(look_1.iris, _e19);
-    let _e24 = weft_safe_normalize((normal3_ * look_1.normal), n_2);
+    let _e24 = weft_safe_normalize((normal3_ * look_1.normal), n_1);
     let _e26 = weft_clamp_cos(dot(_e24, v_3));
-    let s_dot_l = saturate(dot(_e24, l));
+    let s_dot_l_1 = saturate(dot(_e24, l));
     let _e30 = weft_safe_normalize((l + v_3), _e24);
     let _e32 = eye_fresnel_k8_(dot(v_3, _e30));
-    let _e33 = weft_d_ggx_nh_k9_(_e24, _e30);
-    let _e34 = weft_v_smith_ggx_correlated_k10_(_e26, s_dot_l);
-    let direct_spec = (((_e33 * _e34) * _e32) * s_dot_l);
-    let _e41 = weft_prefiltered_radiance_k12_(reflect(-(v_3), _e24));
-    let _e42 = weft_env_brdf_lut_k13_(_e26);
-    let _e43 = weft_env_brdf_from_lut_k18_(_e42);
-    let env = (_e41 * _e43);
+    let _e33 = eye_ggx_k9_(_e24, _e30, _e26, s_dot_l_1);
+    let direct_spec = ((_e33 * _e32) * s_dot_l_1);
+    let _e39 = weft_prefiltered_radiance_k11_(reflect(-(v_3), _e24));
+    let _e40 = weft_env_brdf_lut_k12_(_e26);
+    let _e41 = weft_env_brdf_from_lut_k19_(_e40);
+    let env = (_e39 * _e41);
     let specular = ((light * direct_spec) + env);
-    let _e47 = eye_fresnel_k8_(_e26);
-    let t_v = (1f - _e47);
-    let _e50 = eye_fresnel_k8_(s_dot_l);
-    let t_l = (1f - _e50);
-    let _e58 = weft_sh_irradiance(n_2);
-    let sclera = (_e20 * ((light * (WEFT_INV_PI * saturate(dot(n_2, l)))) + _e58));
-    let _e63 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_2);
+    let on_iris = (look_1.through_cornea > 0f);
+    let _e50 = weft_safe_normalize((normal3_ * vec3<f32>(0f, 0f, 1f)), n_1);
     let l_in = refract(-(l), _e24, 0.7267442f);
-    let iris_cos = select(0f, saturate(dot(_e63, -(l_in))), (s_dot_l > 0f));
-    let _e79 = weft_sh_irradiance(_e63);
-    let iris_1 = ((_e20 * t_v) * ((light * ((WEFT_INV_PI * iris_cos) * t_l)) + _e79));
-    return (mix(sclera, iris_1, look_1.through_cornea) + specular);
+    let iris_cos = select(0f, saturate(dot(_e50, -(l_in))), (s_dot_l_1 > 0f));
+    let _e61 = eye_fresnel_k8_(_e26);
+    let t_v = (1f - _e61);
+    let _e64 = eye_fresnel_k8_(s_dot_l_1);
+    let t_l = (1f - _e64);
+    let diffuse_n = select(n_1, _e50, on_iris);
+    let diffuse_cos = select(saturate(dot(n_1, l)), (iris_cos * t_l), on_iris);
+    let transmission = select(1f, t_v, on_iris);
+    let _e78 = weft_sh_irradiance(diffuse_n);
+    let diffuse = ((_e20 * transmission) * ((light * (WEFT_INV_PI * diffuse_cos)) + _e78));
+    return (diffuse + specular);
 }
 
-fn eye_cornea_height_k16_(rho_1: f32) -> f32 {
+fn eye_cornea_height_k17_(rho_1: f32) -> f32 {
     let z = (0.5380625f + sqrt(max((0.35755965f - (rho_1 * rho_1)), 0f)));
     return max((z - 0.8660254f), 0f);
 }
 
-fn eye_cornea_normal_k17_(xy: vec2<f32>) -> vec3<f32> {
+fn eye_cornea_normal_k18_(xy: vec2<f32>) -> vec3<f32> {
     let z_1 = sqrt(max((0.35755965f - dot(xy, xy)), 0f));
     return (vec3<f32>(xy, z_1) / vec3(0.5979629f));
 }
 
-fn eye_parallax_k14_(p: vec3<f32>, v_4: vec3<f32>) -> EyeLookup {
+fn eye_parallax_k13_(p: vec3<f32>, v_4: vec3<f32>) -> EyeLookup {
     var local_1: bool;
 
     let rho_3 = length(p.xy);
@@ -277,14 +286,14 @@ fn eye_parallax_k14_(p: vec3<f32>, v_4: vec3<f32>) -> EyeLookup {
     if _e15 {
         return EyeLookup(p.xy, p, 0f);
     }
-    let _e21 = eye_cornea_height_k16_(rho_3);
+    let _e21 = eye_cornea_height_k17_(rho_3);
     let d_1 = ((0.8660254f + _e21) - p.z);
     let e_raw = (p.xy + (d_1 * v_4.xy));
     let e_1 = (e_raw * min(1f, (0.5f / max(length(e_raw), 0.000001f))));
-    let _e37 = eye_cornea_height_k16_(length(e_1));
-    let _e38 = eye_cornea_normal_k17_(e_1);
-    let iris_2 = (e_1 - (_e37 * ((v_4.xy * 0.7267442f) + (_e38.xy * 0.27325583f))));
-    return EyeLookup(iris_2, _e38, 1f);
+    let _e37 = eye_cornea_height_k17_(length(e_1));
+    let _e38 = eye_cornea_normal_k18_(e_1);
+    let iris_1 = (e_1 - (_e37 * ((v_4.xy * 0.7267442f) + (_e38.xy * 0.27325583f))));
+    return EyeLookup(iris_1, _e38, 1f);
 }
 
 @vertex 
@@ -321,20 +330,20 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let normal3_2 = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     let _e23 = weft_surface(in_1.world_position, in_1.world_normal);
     let v_5 = _e23.v;
-    let n_3 = _e23.n;
+    let n_2 = _e23.n;
     let _e26 = weft_main_light_direction();
-    let _e29 = weft_safe_normalize_k1_((transpose(model3_1) * n_3));
+    let _e29 = weft_safe_normalize_k1_((transpose(model3_1) * n_2));
     let _e32 = weft_safe_normalize_k1_((transpose(normal3_2) * v_5));
-    let _e35 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_3);
+    let _e35 = weft_safe_normalize((model3_1 * vec3<f32>(0f, 0f, 1f)), n_2);
     let dimming = (1f - (0.5f * saturate(-(dot(_e35, _e26)))));
     let _e43 = weft_main_light_radiance();
     {
         {
-            let _e48 = eye_parallax_k14_(_e29, _e32);
+            let _e48 = eye_parallax_k13_(_e29, _e32);
             look = _e48;
         }
         let _e49 = look;
-        let _e50 = eye_physical_k7_(_e49, n_3, v_5, _e26, normal3_2, _e43);
+        let _e50 = eye_physical_k7_(_e49, n_2, v_5, _e26, normal3_2, _e43);
         color = _e50;
     }
     let _e51 = color;

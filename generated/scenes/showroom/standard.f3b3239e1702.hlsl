@@ -47,10 +47,6 @@ struct WeftVaryings {
     float2 uv0_ : LOC3;
 };
 
-struct WeftMaterial {
-    float4 base_color;
-};
-
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint SPHERE_MAP_OFF = 0u;
@@ -75,8 +71,8 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
-cbuffer material : register(b0, space1) { WeftMaterial material; }
 
 struct VertexOutput_vs_main {
     float3 world_position_3 : LOC0;
@@ -110,23 +106,6 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * rsqrt(max(len2_, 1e-20))) : fallback);
-}
-
-float3 weft_f_schlick(float3 f0_, float v_dot_h)
-{
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
-    return (f0_ + (((1.0).xxx - f0_) * _e5));
-}
-
-float3 weft_diffuse_lambert(float3 albedo)
-{
-    return (albedo * WEFT_INV_PI);
-}
-
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
-{
-    float2 sb = saturate(scale_bias);
-    return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
 float3 weft_safe_normalize_k1_(float3 v_1)
@@ -226,13 +205,6 @@ float3 standard_sphere_map(float3 color_in, float3 n_3, float3 world_position_2)
     return _e4;
 }
 
-void standard_alpha_test(float alpha)
-{
-    {
-        return;
-    }
-}
-
 float3 weft_safe_normalize_k3_(float3 v_3)
 {
     float len2_2 = dot(v_3, v_3);
@@ -243,53 +215,59 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l)
 {
     const float _e6 = weft_clamp_cos(n_dot_v);
     const float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.6975) + 0.3025);
-    float gl = ((_e7 * 0.6975) + 0.3025);
-    float pv = ((gv * _e6) + (0.09150626 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.09150626 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.27749997) + 0.7225);
+    float gl = ((_e7 * 0.27749997) + 0.7225);
+    float pv = ((gv * _e6) + (0.5220063 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.5220063 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut_k6_(float n_dot_v_1)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
+    float2 uv = float2(saturate(n_dot_v_1), 0.85);
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv, 0.0);
+    return _e8.xy;
 }
 
-float2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1)
+float3 weft_env_brdf_from_lut_k7_(float2 scale_bias)
 {
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
-    float2 uv = float2(saturate(n_dot_v_1), 0.55);
-    int2 texel = naga_f2i32(min((uv * size), (size - (1.0).xx)));
-    float4 _e15 = weft_brdf_lut.Load(int3(texel, int(0)));
-    return _e15.xy;
+    float2 sb = saturate(scale_bias);
+    return ((float3(0.04, 0.04, 0.04) * sb.x) + (sb.y).xxx);
 }
 
-float weft_d_ggx_nh_k7_(float3 n_4, float3 h)
+float3 weft_f_schlick_k8_(float v_dot_h)
 {
-    float noh = saturate(dot(n_4, h));
-    float3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.09150626));
-    return (0.09150626 / (WEFT_PI * max((d * d), 1e-30)));
+    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    return (float3(0.04, 0.04, 0.04) + (float3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_specular_mip_k10_()
+float weft_d_ggx_k9_(float n_dot_h)
+{
+    float noh = saturate(n_dot_h);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.5220063));
+    return (0.5220063 / ((WEFT_PI * d_1) * d_1));
+}
+
+float weft_specular_mip_k14_()
 {
     float _e5 = weft_frame.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.72325003 * max_mip);
+    return (0.93925005 * max_mip);
 }
 
-float3 weft_prefiltered_radiance_k8_(float3 dir)
+float3 weft_prefiltered_radiance_k10_(float3 dir)
 {
-    const float _e4 = weft_specular_mip_k10_();
+    const float _e4 = weft_specular_mip_k14_();
     float4 c_1 = weft_environment.SampleLevel(weft_environment_sampler, dir, _e4);
     return max(c_1.xyz, (0.0).xxx);
+}
+
+void standard_alpha_test_k12_()
+{
+    {
+        return;
+    }
 }
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
@@ -328,55 +306,54 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct_kd = (float3)0;
     float3 specular = (0.0).xxx;
     float3 indirect_specular = (0.0).xxx;
+    float d = (float)0;
 
-    float4 base_rgba = material.base_color;
-    float3 base = saturate(base_rgba.xyz);
-    float alpha_1 = saturate(base_rgba.w);
-    const WeftSurface _e17 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
-    float3 v_4 = _e17.v;
-    n = _e17.n;
-    float3 _e21 = n;
-    const WeftLightGeometry _e22 = weft_main_light_geometry(_e21, v_4);
-    float3 f0_2 = lerp((0.04).xxx, base, 0.0);
+    const WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    float3 v_4 = _e13.v;
+    n = _e13.n;
+    float3 _e17 = n;
+    const WeftLightGeometry _e18 = weft_main_light_geometry(_e17, v_4);
     {
         {
-            const float _e31 = weft_v_smith_ggx_correlated_newton_k5_(_e22.n_dot_v, _e22.n_dot_l);
-            visibility = _e31;
-            const float2 _e33 = weft_env_brdf_lut_nearest_k6_(_e22.n_dot_v);
-            const float3 _e34 = weft_env_brdf_from_lut(f0_2, _e33);
-            env_brdf = _e34;
-            float3 _e36 = env_brdf;
-            ambient_kd = max(((1.0).xxx - _e36), (0.0).xxx);
-            float3 _e40 = ambient_kd;
-            direct_kd = _e40;
+            const float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
+            visibility = _e27;
+            const float2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v);
+            const float3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
+            env_brdf = _e30;
+            float3 _e32 = env_brdf;
+            ambient_kd = max(((1.0).xxx - _e32), (0.0).xxx);
+            float3 _e36 = ambient_kd;
+            direct_kd = _e36;
         }
     }
     {
-        const float3 _e46 = weft_f_schlick(f0_2, _e22.v_dot_h);
-        float3 _e47 = n;
-        const float _e49 = weft_d_ggx_nh_k7_(_e47, _e22.h);
-        float _e50 = visibility;
-        specular = (((_e49 * _e50) * _e46) * 0.5);
-        float3 _e55 = n;
-        const float3 _e57 = weft_prefiltered_radiance_k8_(reflect(-(v_4), _e55));
-        float3 _e58 = env_brdf;
-        indirect_specular = ((_e57 * _e58) * 0.5);
+        const float3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
+        {
+            const float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = ((_e46 * _e47) * _e42);
+        float3 _e51 = n;
+        const float3 _e53 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e51));
+        float3 _e54 = env_brdf;
+        indirect_specular = (_e53 * _e54);
     }
-    float3 _e62 = direct_kd;
-    const float3 _e63 = weft_diffuse_lambert(base);
-    float3 diffuse = (_e62 * _e63);
-    float3 _e65 = specular;
-    const float3 _e67 = weft_main_light_radiance();
-    float3 direct = (((diffuse + _e65) * _e67) * _e22.n_dot_l);
-    float3 _e71 = n;
-    const float3 _e72 = weft_sh_irradiance(_e71);
-    float3 _e73 = ambient_kd;
-    float3 indirect_diffuse = ((_e72 * _e73) * base);
-    float3 _e76 = indirect_specular;
-    float3 color_1 = ((direct + _e76) + indirect_diffuse);
-    float3 _e79 = n;
-    const float3 _e81 = standard_sphere_map(color_1, _e79, in_1.world_position);
-    float3 radiance = clamp((_e81 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
-    standard_alpha_test(alpha_1);
-    return float4(radiance, alpha_1);
+    float3 _e56 = direct_kd;
+    float3 diffuse = (_e56 * float3(0.19098607, 0.1750706, 0.14323957));
+    float3 _e59 = specular;
+    const float3 _e61 = weft_main_light_radiance();
+    float3 direct = (((diffuse + _e59) * _e61) * _e18.n_dot_l);
+    float3 _e65 = n;
+    const float3 _e66 = weft_sh_irradiance(_e65);
+    float3 _e67 = ambient_kd;
+    float3 indirect_diffuse = ((_e66 * _e67) * float3(0.60000044, 0.55000055, 0.4500004));
+    float3 _e70 = indirect_specular;
+    float3 color_1 = ((direct + _e70) + indirect_diffuse);
+    float3 _e73 = n;
+    const float3 _e75 = standard_sphere_map(color_1, _e73, in_1.world_position);
+    float3 radiance = clamp((_e75 + (0.0).xxx), (0.0).xxx, (65504.0).xxx);
+    standard_alpha_test_k12_();
+    return float4(radiance, 1.0);
 }

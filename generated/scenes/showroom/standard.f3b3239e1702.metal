@@ -199,19 +199,14 @@ float weft_v_smith_ggx_correlated_newton_k5_(
     return ((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest_k6_(
+metal::float2 weft_env_brdf_lut_k6_(
     float n_dot_v_1,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv = metal::float2(metal::saturate(n_dot_v_1), 0.85);
-    metal::int2 texel = naga_f2i32(metal::min(uv * size, size - metal::float2(1.0)));
-    metal::float4 _e15 = weft_brdf_lut.read(metal::uint2(texel), 0);
-    return _e15.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv, metal::level(0.0));
+    return _e8.xy;
 }
 
 metal::float3 weft_env_brdf_from_lut_k7_(
@@ -228,14 +223,13 @@ metal::float3 weft_f_schlick_k8_(
     return metal::float3(0.04, 0.04, 0.04) + (metal::float3(0.96, 0.96, 0.96) * _e5);
 }
 
-float weft_d_ggx_nh_k9_(
-    metal::float3 n_4,
-    metal::float3 h
+float weft_d_ggx_k9_(
+    float n_dot_h
 ) {
-    float noh = metal::saturate(metal::dot(n_4, h));
-    metal::float3 nxh = metal::cross(n_4, h);
-    float d = metal::dot(nxh, nxh) + ((noh * noh) * 0.5220063);
-    return 0.5220063 / (WEFT_PI * metal::max(d * d, 0.000000000000000000000000000001));
+    float noh = metal::saturate(n_dot_h);
+    float one_minus_noh2_ = (1.0 - noh) * (1.0 + noh);
+    float d_1 = one_minus_noh2_ + ((noh * noh) * 0.5220063);
+    return 0.5220063 / ((WEFT_PI * d_1) * d_1);
 }
 
 float weft_specular_mip_k14_(
@@ -322,6 +316,7 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 ) {
     const WeftVaryings in_1 = { clip_position, varyings_1.world_position_3, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
     metal::float3 n = {};
@@ -331,6 +326,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct_kd = {};
     metal::float3 specular = metal::float3(0.0);
     metal::float3 indirect_specular = metal::float3(0.0);
+    float d = {};
     WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing, weft_frame);
     metal::float3 v_4 = _e13.v;
     n = _e13.n;
@@ -340,7 +336,7 @@ fragment fs_mainOutput fs_main(
         {
             float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
             visibility = _e27;
-            metal::float2 _e29 = weft_env_brdf_lut_nearest_k6_(_e18.n_dot_v, weft_brdf_lut);
+            metal::float2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v, weft_brdf_lut, weft_lut_sampler);
             metal::float3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
             env_brdf = _e30;
             metal::float3 _e32 = env_brdf;
@@ -351,29 +347,32 @@ fragment fs_mainOutput fs_main(
     }
     {
         metal::float3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
-        metal::float3 _e43 = n;
-        float _e45 = weft_d_ggx_nh_k9_(_e43, _e18.h);
-        float _e46 = visibility;
-        specular = (_e45 * _e46) * _e42;
-        metal::float3 _e50 = n;
-        metal::float3 _e52 = weft_prefiltered_radiance_k10_(metal::reflect(-(v_4), _e50), weft_frame, weft_environment, weft_environment_sampler);
-        metal::float3 _e53 = env_brdf;
-        indirect_specular = _e52 * _e53;
+        {
+            float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = (_e46 * _e47) * _e42;
+        metal::float3 _e51 = n;
+        metal::float3 _e53 = weft_prefiltered_radiance_k10_(metal::reflect(-(v_4), _e51), weft_frame, weft_environment, weft_environment_sampler);
+        metal::float3 _e54 = env_brdf;
+        indirect_specular = _e53 * _e54;
     }
-    metal::float3 _e55 = direct_kd;
-    metal::float3 diffuse = _e55 * metal::float3(0.19098607, 0.1750706, 0.14323957);
-    metal::float3 _e58 = specular;
-    metal::float3 _e60 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = ((diffuse + _e58) * _e60) * _e18.n_dot_l;
-    metal::float3 _e64 = n;
-    metal::float3 _e65 = weft_sh_irradiance(_e64, weft_frame);
-    metal::float3 _e66 = ambient_kd;
-    metal::float3 indirect_diffuse = (_e65 * _e66) * metal::float3(0.60000044, 0.55000055, 0.4500004);
-    metal::float3 _e69 = indirect_specular;
-    metal::float3 color_1 = (direct + _e69) + indirect_diffuse;
-    metal::float3 _e72 = n;
-    metal::float3 _e74 = standard_sphere_map(color_1, _e72, in_1.world_position);
-    metal::float3 radiance = metal::clamp(_e74 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
+    metal::float3 _e56 = direct_kd;
+    metal::float3 diffuse = _e56 * metal::float3(0.19098607, 0.1750706, 0.14323957);
+    metal::float3 _e59 = specular;
+    metal::float3 _e61 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = ((diffuse + _e59) * _e61) * _e18.n_dot_l;
+    metal::float3 _e65 = n;
+    metal::float3 _e66 = weft_sh_irradiance(_e65, weft_frame);
+    metal::float3 _e67 = ambient_kd;
+    metal::float3 indirect_diffuse = (_e66 * _e67) * metal::float3(0.60000044, 0.55000055, 0.4500004);
+    metal::float3 _e70 = indirect_specular;
+    metal::float3 color_1 = (direct + _e70) + indirect_diffuse;
+    metal::float3 _e73 = n;
+    metal::float3 _e75 = standard_sphere_map(color_1, _e73, in_1.world_position);
+    metal::float3 radiance = metal::clamp(_e75 + metal::float3(0.0), metal::float3(0.0), metal::float3(65504.0));
     standard_alpha_test_k12_();
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

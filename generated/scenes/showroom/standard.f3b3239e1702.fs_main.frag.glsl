@@ -55,18 +55,17 @@ const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 const float WEFT_MIN_N_DOT_HALF = 0.001;
 const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
-layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-layout(location = 2) in vec4 _p2vs_location2;
-layout(location = 3) in vec2 _p2vs_location3;
-layout(location = 0) smooth out vec3 _vs2fs_location0;
-layout(location = 1) smooth out vec3 _vs2fs_location1;
-layout(location = 2) smooth out vec4 _vs2fs_location2;
-layout(location = 3) smooth out vec2 _vs2fs_location3;
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
+
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -88,19 +87,19 @@ vec3 weft_safe_normalize_k1_(vec3 v_1) {
 }
 
 vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
     vec3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
     return _e4;
 }
 
 vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
     return max(_e2.xyz, vec3(0.0));
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
     e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
@@ -123,7 +122,7 @@ vec3 weft_sh_irradiance(vec3 n_1) {
 }
 
 vec3 weft_view_direction_k2_(vec3 world_position) {
-    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
     vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position));
     return _e7;
 }
@@ -157,11 +156,17 @@ vec3 weft_safe_normalize_k3_(vec3 v_3) {
 float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     float _e6 = weft_clamp_cos(n_dot_v);
     float _e7 = weft_clamp_cos(n_dot_l);
-    float gv = ((_e6 * 0.7975) + 0.20249999);
-    float gl = ((_e7 * 0.7975) + 0.20249999);
-    float pv = ((gv * _e6) + (0.041006245 * (1.0 - _e6)));
-    float pl = ((gl * _e7) + (0.041006245 * (1.0 - _e7)));
+    float gv = ((_e6 * 0.27749997) + 0.7225);
+    float gl = ((_e7 * 0.27749997) + 0.7225);
+    float pv = ((gv * _e6) + (0.5220063 * (1.0 - _e6)));
+    float pl = ((gl * _e7) + (0.5220063 * (1.0 - _e7)));
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
+}
+
+vec2 weft_env_brdf_lut_k6_(float n_dot_v_1) {
+    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.85);
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
 }
 
 vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
@@ -174,17 +179,23 @@ vec3 weft_f_schlick_k8_(float v_dot_h) {
     return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_d_ggx_nh_k9_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
-    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k9_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.5220063));
+    return (0.5220063 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k14_() {
-    float _e5 = _group_0_binding_0_vs.params.x;
+    float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
-    return (0.62325 * max_mip);
+    return (0.93925005 * max_mip);
+}
+
+vec3 weft_prefiltered_radiance_k10_(vec3 dir) {
+    float _e4 = weft_specular_mip_k14_();
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
 }
 
 void standard_alpha_test_k12_() {
@@ -194,30 +205,64 @@ void standard_alpha_test_k12_() {
 }
 
 void main() {
-    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
-    mat4x4 model = _group_2_binding_0_vs.model;
-    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec4 world = (model * vec4(in_.position, 1.0));
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
-    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
-    out_.world_position = world.xyz;
-    vec3 _e53 = weft_safe_normalize_k3_((normal3_ * in_.normal));
-    out_.world_normal = _e53;
-    vec3 _e58 = weft_safe_normalize_k3_((model3_ * in_.tangent.xyz));
-    out_.world_tangent = vec4(_e58, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e62 = out_;
-    gl_Position = _e62.clip_position;
-    _vs2fs_location0 = _e62.world_position;
-    _vs2fs_location1 = _e62.world_normal;
-    _vs2fs_location2 = _e62.world_tangent;
-    _vs2fs_location3 = _e62.uv0_;
-    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    bool front_facing = gl_FrontFacing;
+    vec3 n = vec3(0.0);
+    float visibility = 0.0;
+    vec3 env_brdf = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    vec3 direct_kd = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    vec3 indirect_specular = vec3(0.0);
+    float d = 0.0;
+    WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
+    vec3 v_4 = _e13.v;
+    n = _e13.n;
+    vec3 _e17 = n;
+    WeftLightGeometry _e18 = weft_main_light_geometry(_e17, v_4);
+    {
+        {
+            float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
+            visibility = _e27;
+            vec2 _e29 = weft_env_brdf_lut_k6_(_e18.n_dot_v);
+            vec3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
+            env_brdf = _e30;
+            vec3 _e32 = env_brdf;
+            ambient_kd = max((vec3(1.0) - _e32), vec3(0.0));
+            vec3 _e36 = ambient_kd;
+            direct_kd = _e36;
+        }
+    }
+    {
+        vec3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
+        {
+            float _e45 = weft_d_ggx_k9_(_e18.n_dot_h);
+            d = _e45;
+        }
+        float _e46 = d;
+        float _e47 = visibility;
+        specular = ((_e46 * _e47) * _e42);
+        vec3 _e51 = n;
+        vec3 _e53 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e51));
+        vec3 _e54 = env_brdf;
+        indirect_specular = (_e53 * _e54);
+    }
+    vec3 _e56 = direct_kd;
+    vec3 diffuse = (_e56 * vec3(0.19098607, 0.1750706, 0.14323957));
+    vec3 _e59 = specular;
+    vec3 _e61 = weft_main_light_radiance();
+    vec3 direct = (((diffuse + _e59) * _e61) * _e18.n_dot_l);
+    vec3 _e65 = n;
+    vec3 _e66 = weft_sh_irradiance(_e65);
+    vec3 _e67 = ambient_kd;
+    vec3 indirect_diffuse = ((_e66 * _e67) * vec3(0.60000044, 0.55000055, 0.4500004));
+    vec3 _e70 = indirect_specular;
+    vec3 color_1 = ((direct + _e70) + indirect_diffuse);
+    vec3 _e73 = n;
+    vec3 _e75 = standard_sphere_map(color_1, _e73, in_1.world_position);
+    vec3 radiance = clamp((_e75 + vec3(0.0)), vec3(0.0), vec3(65504.0));
+    standard_alpha_test_k12_();
+    _fs2p_location0 = vec4(radiance, 1.0);
     return;
 }
 

@@ -55,17 +55,18 @@ const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 const float WEFT_MIN_N_DOT_HALF = 0.001;
 const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
+layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
-layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
-
-layout(location = 0) smooth in vec3 _vs2fs_location0;
-layout(location = 1) smooth in vec3 _vs2fs_location1;
-layout(location = 2) smooth in vec4 _vs2fs_location2;
-layout(location = 3) smooth in vec2 _vs2fs_location3;
-layout(location = 0) out vec4 _fs2p_location0;
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
 
 float weft_pow5_(float x) {
     float x2_ = (x * x);
@@ -87,19 +88,19 @@ vec3 weft_safe_normalize_k1_(vec3 v_1) {
 }
 
 vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_fs.light_direction;
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
     vec3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
     return _e4;
 }
 
 vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_fs.light_color;
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
     return max(_e2.xyz, vec3(0.0));
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_fs.sh;
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
     e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
@@ -122,7 +123,7 @@ vec3 weft_sh_irradiance(vec3 n_1) {
 }
 
 vec3 weft_view_direction_k2_(vec3 world_position) {
-    vec4 _e4 = _group_0_binding_0_fs.camera_position;
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
     vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position));
     return _e7;
 }
@@ -163,14 +164,6 @@ float weft_v_smith_ggx_correlated_newton_k5_(float n_dot_v, float n_dot_l) {
     return (((0.5 * gv) * gl) / (((_e7 * gl) * pv) + ((_e6 * gv) * pl)));
 }
 
-vec2 weft_env_brdf_lut_nearest_k6_(float n_dot_v_1) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
-    vec2 uv = vec2(clamp(n_dot_v_1, 0.0, 1.0), 0.45);
-    ivec2 texel = ivec2(min((uv * size), (size - vec2(1.0))));
-    vec4 _e15 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e15.xy;
-}
-
 vec3 weft_env_brdf_from_lut_k7_(vec2 scale_bias) {
     vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
@@ -181,23 +174,17 @@ vec3 weft_f_schlick_k8_(float v_dot_h) {
     return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
 }
 
-float weft_d_ggx_nh_k9_(vec3 n_4, vec3 h) {
-    float noh = clamp(dot(n_4, h), 0.0, 1.0);
-    vec3 nxh = cross(n_4, h);
-    float d = (dot(nxh, nxh) + ((noh * noh) * 0.041006245));
-    return (0.041006245 / (WEFT_PI * max((d * d), 1e-30)));
+float weft_d_ggx_k9_(float n_dot_h) {
+    float noh = clamp(n_dot_h, 0.0, 1.0);
+    float one_minus_noh2_ = ((1.0 - noh) * (1.0 + noh));
+    float d_1 = (one_minus_noh2_ + ((noh * noh) * 0.041006245));
+    return (0.041006245 / ((WEFT_PI * d_1) * d_1));
 }
 
 float weft_specular_mip_k14_() {
-    float _e5 = _group_0_binding_0_fs.params.x;
+    float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return (0.62325 * max_mip);
-}
-
-vec3 weft_prefiltered_radiance_k10_(vec3 dir) {
-    float _e4 = weft_specular_mip_k14_();
-    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
-    return max(c_1.xyz, vec3(0.0));
 }
 
 void standard_alpha_test_k12_() {
@@ -207,60 +194,30 @@ void standard_alpha_test_k12_() {
 }
 
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
-    bool front_facing = gl_FrontFacing;
-    vec3 n = vec3(0.0);
-    float visibility = 0.0;
-    vec3 env_brdf = vec3(0.0);
-    vec3 ambient_kd = vec3(0.0);
-    vec3 direct_kd = vec3(0.0);
-    vec3 specular = vec3(0.0);
-    vec3 indirect_specular = vec3(0.0);
-    WeftSurface _e13 = weft_surface_two_sided(in_1.world_position, in_1.world_normal, front_facing);
-    vec3 v_4 = _e13.v;
-    n = _e13.n;
-    vec3 _e17 = n;
-    WeftLightGeometry _e18 = weft_main_light_geometry(_e17, v_4);
-    {
-        {
-            float _e27 = weft_v_smith_ggx_correlated_newton_k5_(_e18.n_dot_v, _e18.n_dot_l);
-            visibility = _e27;
-            vec2 _e29 = weft_env_brdf_lut_nearest_k6_(_e18.n_dot_v);
-            vec3 _e30 = weft_env_brdf_from_lut_k7_(_e29);
-            env_brdf = _e30;
-            vec3 _e32 = env_brdf;
-            ambient_kd = max((vec3(1.0) - _e32), vec3(0.0));
-            vec3 _e36 = ambient_kd;
-            direct_kd = _e36;
-        }
-    }
-    {
-        vec3 _e42 = weft_f_schlick_k8_(_e18.v_dot_h);
-        vec3 _e43 = n;
-        float _e45 = weft_d_ggx_nh_k9_(_e43, _e18.h);
-        float _e46 = visibility;
-        specular = (((_e45 * _e46) * _e42) * 0.5);
-        vec3 _e51 = n;
-        vec3 _e53 = weft_prefiltered_radiance_k10_(reflect(-(v_4), _e51));
-        vec3 _e54 = env_brdf;
-        indirect_specular = ((_e53 * _e54) * 0.5);
-    }
-    vec3 _e58 = direct_kd;
-    vec3 diffuse = (_e58 * vec3(0.101859, 0.06366192, 0.038197216));
-    vec3 _e61 = specular;
-    vec3 _e63 = weft_main_light_radiance();
-    vec3 direct = (((diffuse + _e61) * _e63) * _e18.n_dot_l);
-    vec3 _e67 = n;
-    vec3 _e68 = weft_sh_irradiance(_e67);
-    vec3 _e69 = ambient_kd;
-    vec3 indirect_diffuse = ((_e68 * _e69) * vec3(0.31999952, 0.19999982, 0.120000094));
-    vec3 _e72 = indirect_specular;
-    vec3 color_1 = ((direct + _e72) + indirect_diffuse);
-    vec3 _e75 = n;
-    vec3 _e77 = standard_sphere_map(color_1, _e75, in_1.world_position);
-    vec3 radiance = clamp((_e77 + vec3(0.0)), vec3(0.0), vec3(65504.0));
-    standard_alpha_test_k12_();
-    _fs2p_location0 = vec4(radiance, 1.0);
+    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e53 = weft_safe_normalize_k3_((normal3_ * in_.normal));
+    out_.world_normal = _e53;
+    vec3 _e58 = weft_safe_normalize_k3_((model3_ * in_.tangent.xyz));
+    out_.world_tangent = vec4(_e58, bitangent_sign);
+    out_.uv0_ = in_.uv0_;
+    WeftVaryings _e62 = out_;
+    gl_Position = _e62.clip_position;
+    _vs2fs_location0 = _e62.world_position;
+    _vs2fs_location1 = _e62.world_normal;
+    _vs2fs_location2 = _e62.world_tangent;
+    _vs2fs_location3 = _e62.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }
 
