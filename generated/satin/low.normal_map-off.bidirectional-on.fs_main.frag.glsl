@@ -180,12 +180,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
     return max(c_2.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
-    ivec2 texel = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -332,10 +330,10 @@ vec3 satin_low(mat3x3 frame_3, vec3 n_5, vec3 v_5, WeftLightGeometry lit, vec3 f
     vec3 specular_1 = (((vec3((w1_ * _e66)) * float(_e63)) + (vec3((w2_ * _e66)) * float(_e65))) * (noise * light));
     vec3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
     vec3 diffuse_kd_1 = max((vec3(1.0) - ((w1_ + w2_) * _e82)), vec3(0.0));
-    vec2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    vec2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
     vec3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
     vec3 e1_ = (vec3(_e89) * w1_);
-    vec2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    vec2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
     vec3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
     vec3 e2_ = (vec3(_e93) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);

@@ -98,6 +98,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -225,24 +226,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
     return max(c_2.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
-    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -425,10 +413,10 @@ float3 satin_low(float3x3 frame_3, float3 n_5, float3 v_5, WeftLightGeometry lit
     float3 specular_1 = (((float3((w1_ * _e66)) * float(_e63)) + (float3((w2_ * _e66)) * float(_e65))) * (noise_ * light));
     const float3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
     float3 diffuse_kd_1 = max(((1.0).xxx - ((w1_ + w2_) * _e82)), (0.0).xxx);
-    const float2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    const float2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
     const float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
     float3 e1_ = (float3(_e89) * w1_);
-    const float2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    const float2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
     const float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
     float3 e2_ = (float3(_e93) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);

@@ -213,20 +213,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_2.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v,
     float roughness_3,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_3));
-    metal::int2 texel_2 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_2), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(
@@ -440,7 +435,8 @@ metal::float3 satin_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
     float n_dot_v_1 = lit.n_dot_v;
     float n_dot_l = static_cast<float>(lit.n_dot_l);
@@ -470,10 +466,10 @@ metal::float3 satin_low(
     metal::float3 specular_1 = ((static_cast<metal::float3>(w1_ * _e66) * static_cast<float>(_e63)) + (static_cast<metal::float3>(w2_ * _e66) * static_cast<float>(_e65))) * (noise * light);
     metal::float3 _e82 = weft_half_f_schlick(f0_3, static_cast<float>(n_dot_v_1));
     metal::float3 diffuse_kd_1 = metal::max(metal::float3(1.0) - ((w1_ + w2_) * _e82), metal::float3(0.0));
-    metal::float2 _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7, weft_brdf_lut);
+    metal::float2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7, weft_brdf_lut, weft_lut_sampler);
     metal::float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
     metal::float3 e1_ = static_cast<metal::float3>(_e89) * w1_;
-    metal::float2 _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_, weft_brdf_lut);
+    metal::float2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_, weft_brdf_lut, weft_lut_sampler);
     metal::float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
     metal::float3 e2_ = static_cast<metal::float3>(_e93) * w2_;
     float r_env = (metal::max(e1_.x, metal::max(e1_.y, e1_.z)) >= metal::max(e2_.x, metal::max(e2_.y, e2_.z))) ? roughness_7 : roughness2_;
@@ -543,8 +539,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> rmo_map [[texture(4)]]
@@ -587,10 +584,10 @@ fragment fs_mainOutput fs_main(
     n = _e71.n;
     {
         metal::float4 _e77 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_3 = _e77.xyz;
+        metal::float3 texel_2 = _e77.xyz;
         metal::float3 _e79 = n;
         float _e83 = material.normal_strength;
-        metal::float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_3, _e83);
+        metal::float3 _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
         n = _e84;
     }
     metal::float3 _e85 = n;
@@ -611,7 +608,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e113 = weft_f_schlick(f0_4, _e89.v_dot_h);
     {
         metal::float3 _e114 = n;
-        metal::float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
         return fs_mainOutput { metal::float4(metal::clamp(_e115, metal::float3(0.0), metal::float3(65504.0)), alpha_1) };
     }
 }

@@ -86,6 +86,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -191,13 +193,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
     return max(c_2.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
-    let texel_2 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_2, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -363,10 +362,10 @@ fn satin_low(frame_4: mat3x3<f32>, n_6: vec3<f32>, v_5: vec3<f32>, lit: WeftLigh
     let specular_1 = (((vec3<f32>((w1_ * _e66)) * f32(_e63)) + (vec3<f32>((w2_ * _e66)) * f32(_e65))) * (noise * light));
     let _e82 = weft_half_f_schlick(f0_3, f32(n_dot_v_1));
     let diffuse_kd_1 = max((vec3(1f) - ((w1_ + w2_) * _e82)), vec3(0f));
-    let _e88 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness_7);
+    let _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
     let _e89 = weft_env_brdf_from_lut(f0_in, _e88);
     let e1_ = (vec3<f32>(_e89) * w1_);
-    let _e92 = weft_env_brdf_lut_nearest(n_dot_v_1, roughness2_);
+    let _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
     let _e93 = weft_env_brdf_from_lut(f0_in, _e92);
     let e2_ = (vec3<f32>(_e93) * w2_);
     let r_env = select(roughness2_, roughness_7, (max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))));
@@ -441,10 +440,10 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     n = _e71.n;
     {
         let _e77 = textureSample(normal_map, material_sampler, _e5);
-        let texel_3 = _e77.xyz;
+        let texel_2 = _e77.xyz;
         let _e79 = n;
         let _e83 = material.normal_strength;
-        let _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_3, _e83);
+        let _e84 = weft_mapped_normal(_e79, in_1.world_tangent, texel_2, _e83);
         n = _e84;
     }
     let _e85 = n;

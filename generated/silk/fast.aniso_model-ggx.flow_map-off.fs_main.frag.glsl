@@ -129,8 +129,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -188,12 +188,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_2) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_3) {
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_3, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -299,7 +297,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -321,9 +318,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     vec3 _e56 = fibre;
@@ -360,29 +357,25 @@ void main() {
     vec3 direct = ((diffuse + (_e100 * _e108)) * _e95);
     reflect_n = _e53;
     {
-        {
-            float _e118 = lobe.ibl_roughness;
-            vec2 _e119 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e118);
-            scale_bias = _e119;
-        }
-        vec2 _e120 = scale_bias;
-        vec3 _e121 = weft_env_brdf_from_lut(f0_2, _e120);
-        env_brdf = _e121;
-        vec3 _e124 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e124), vec3(0.0));
-        vec2 _e130 = lobe.alpha;
-        float _e131 = silk_lobe_anisotropy(_e130);
-        float _e133 = lobe.ibl_roughness;
-        vec3 _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
-        reflect_n = _e134;
+        float _e117 = lobe.ibl_roughness;
+        vec2 _e118 = weft_env_brdf_lut(_e67.n_dot_v, _e117);
+        vec3 _e119 = weft_env_brdf_from_lut(f0_2, _e118);
+        env_brdf = _e119;
+        vec3 _e122 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e122), vec3(0.0));
+        vec2 _e128 = lobe.alpha;
+        float _e129 = silk_lobe_anisotropy(_e128);
+        float _e131 = lobe.ibl_roughness;
+        vec3 _e132 = weft_aniso_bent_normal(_e60, v_5, _e129, _e131);
+        reflect_n = _e132;
     }
-    vec3 _e136 = reflect_n;
-    float _e139 = lobe.ibl_roughness;
-    vec3 _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
-    vec3 _e141 = env_brdf;
-    vec3 _e143 = weft_sh_irradiance(n_diff);
-    vec3 _e144 = ambient_kd;
-    vec3 indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
+    vec3 _e134 = reflect_n;
+    float _e137 = lobe.ibl_roughness;
+    vec3 _e138 = weft_prefiltered_radiance(reflect(-(v_5), _e134), _e137);
+    vec3 _e139 = env_brdf;
+    vec3 _e141 = weft_sh_irradiance(n_diff);
+    vec3 _e142 = ambient_kd;
+    vec3 indirect = ((_e138 * _e139) + ((_e141 * _e142) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -99,6 +99,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -163,9 +164,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float2 sb = saturate(scale_bias_1);
+    float2 sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -230,24 +231,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -412,7 +400,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -435,9 +422,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e43 = material.aniso_normal_map_st;
     const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
-    float3 texel_2 = _e47.xyz;
+    float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
     const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     float3 _e56 = fibre;
@@ -474,29 +461,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e100 * _e108)) * _e95);
     reflect_n = _e53;
     {
-        {
-            float _e118 = lobe.ibl_roughness;
-            const float2 _e119 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e118);
-            scale_bias = _e119;
-        }
-        float2 _e120 = scale_bias;
-        const float3 _e121 = weft_env_brdf_from_lut(f0_2, _e120);
-        env_brdf = _e121;
-        float3 _e124 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e124), (0.0).xxx);
-        float2 _e130 = lobe.alpha;
-        const float _e131 = silk_lobe_anisotropy(_e130);
-        float _e133 = lobe.ibl_roughness;
-        const float3 _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
-        reflect_n = _e134;
+        float _e117 = lobe.ibl_roughness;
+        const float2 _e118 = weft_env_brdf_lut(_e67.n_dot_v, _e117);
+        const float3 _e119 = weft_env_brdf_from_lut(f0_2, _e118);
+        env_brdf = _e119;
+        float3 _e122 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e122), (0.0).xxx);
+        float2 _e128 = lobe.alpha;
+        const float _e129 = silk_lobe_anisotropy(_e128);
+        float _e131 = lobe.ibl_roughness;
+        const float3 _e132 = weft_aniso_bent_normal(_e60, v_5, _e129, _e131);
+        reflect_n = _e132;
     }
-    float3 _e136 = reflect_n;
-    float _e139 = lobe.ibl_roughness;
-    const float3 _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
-    float3 _e141 = env_brdf;
-    const float3 _e143 = weft_sh_irradiance(n_diff);
-    float3 _e144 = ambient_kd;
-    float3 indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
+    float3 _e134 = reflect_n;
+    float _e137 = lobe.ibl_roughness;
+    const float3 _e138 = weft_prefiltered_radiance(reflect(-(v_5), _e134), _e137);
+    float3 _e139 = env_brdf;
+    const float3 _e141 = weft_sh_irradiance(n_diff);
+    float3 _e142 = ambient_kd;
+    float3 indirect = ((_e138 * _e139) + ((_e141 * _e142) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -137,8 +139,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -197,13 +199,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -332,7 +331,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -355,9 +353,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     let _e56 = fibre;
@@ -394,29 +392,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e100 * _e108)) * _e95);
     reflect_n = _e53;
     {
-        {
-            let _e118 = lobe.ibl_roughness;
-            let _e119 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e118);
-            scale_bias = _e119;
-        }
-        let _e120 = scale_bias;
-        let _e121 = weft_env_brdf_from_lut(f0_2, _e120);
-        env_brdf = _e121;
-        let _e124 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e124), vec3(0f));
-        let _e130 = lobe.alpha;
-        let _e131 = silk_lobe_anisotropy(_e130);
-        let _e133 = lobe.ibl_roughness;
-        let _e134 = weft_aniso_bent_normal(_e60, v_5, _e131, _e133);
-        reflect_n = _e134;
+        let _e117 = lobe.ibl_roughness;
+        let _e118 = weft_env_brdf_lut(_e67.n_dot_v, _e117);
+        let _e119 = weft_env_brdf_from_lut(f0_2, _e118);
+        env_brdf = _e119;
+        let _e122 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e122), vec3(0f));
+        let _e128 = lobe.alpha;
+        let _e129 = silk_lobe_anisotropy(_e128);
+        let _e131 = lobe.ibl_roughness;
+        let _e132 = weft_aniso_bent_normal(_e60, v_5, _e129, _e131);
+        reflect_n = _e132;
     }
-    let _e136 = reflect_n;
-    let _e139 = lobe.ibl_roughness;
-    let _e140 = weft_prefiltered_radiance(reflect(-(v_5), _e136), _e139);
-    let _e141 = env_brdf;
-    let _e143 = weft_sh_irradiance(n_diff);
-    let _e144 = ambient_kd;
-    let indirect = ((_e140 * _e141) + ((_e143 * _e144) * diffuse_albedo));
+    let _e134 = reflect_n;
+    let _e137 = lobe.ibl_roughness;
+    let _e138 = weft_prefiltered_radiance(reflect(-(v_5), _e134), _e137);
+    let _e139 = env_brdf;
+    let _e141 = weft_sh_irradiance(n_diff);
+    let _e142 = ambient_kd;
+    let indirect = ((_e138 * _e139) + ((_e141 * _e142) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

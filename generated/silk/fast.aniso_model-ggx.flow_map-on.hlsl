@@ -99,6 +99,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -164,9 +165,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float2 sb = saturate(scale_bias_1);
+    float2 sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -231,24 +232,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_2)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_3)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_3)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_3));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -413,7 +401,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -436,9 +423,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e43 = material.aniso_normal_map_st;
     const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
-    float3 texel_2 = _e47.xyz;
+    float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
     const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -483,29 +470,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e124 * _e132)) * _e119);
     reflect_n = _e53;
     {
-        {
-            float _e142 = lobe.ibl_roughness;
-            const float2 _e143 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e142);
-            scale_bias = _e143;
-        }
-        float2 _e144 = scale_bias;
-        const float3 _e145 = weft_env_brdf_from_lut(f0_2, _e144);
-        env_brdf = _e145;
-        float3 _e148 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e148), (0.0).xxx);
-        float2 _e154 = lobe.alpha;
-        const float _e155 = silk_lobe_anisotropy(_e154);
-        float _e157 = lobe.ibl_roughness;
-        const float3 _e158 = weft_aniso_bent_normal(_e84, v_5, _e155, _e157);
-        reflect_n = _e158;
+        float _e141 = lobe.ibl_roughness;
+        const float2 _e142 = weft_env_brdf_lut(_e91.n_dot_v, _e141);
+        const float3 _e143 = weft_env_brdf_from_lut(f0_2, _e142);
+        env_brdf = _e143;
+        float3 _e146 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e146), (0.0).xxx);
+        float2 _e152 = lobe.alpha;
+        const float _e153 = silk_lobe_anisotropy(_e152);
+        float _e155 = lobe.ibl_roughness;
+        const float3 _e156 = weft_aniso_bent_normal(_e84, v_5, _e153, _e155);
+        reflect_n = _e156;
     }
-    float3 _e160 = reflect_n;
-    float _e163 = lobe.ibl_roughness;
-    const float3 _e164 = weft_prefiltered_radiance(reflect(-(v_5), _e160), _e163);
-    float3 _e165 = env_brdf;
-    const float3 _e167 = weft_sh_irradiance(n_diff);
-    float3 _e168 = ambient_kd;
-    float3 indirect = ((_e164 * _e165) + ((_e167 * _e168) * diffuse_albedo));
+    float3 _e158 = reflect_n;
+    float _e161 = lobe.ibl_roughness;
+    const float3 _e162 = weft_prefiltered_radiance(reflect(-(v_5), _e158), _e161);
+    float3 _e163 = env_brdf;
+    const float3 _e165 = weft_sh_irradiance(n_diff);
+    float3 _e166 = ambient_kd;
+    float3 indirect = ((_e162 * _e163) + ((_e165 * _e166) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

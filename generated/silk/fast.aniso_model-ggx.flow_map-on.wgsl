@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -139,8 +141,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -199,13 +201,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_2: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_3: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_3));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -334,7 +333,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -357,9 +355,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -404,29 +402,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e124 * _e132)) * _e119);
     reflect_n = _e53;
     {
-        {
-            let _e142 = lobe.ibl_roughness;
-            let _e143 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e142);
-            scale_bias = _e143;
-        }
-        let _e144 = scale_bias;
-        let _e145 = weft_env_brdf_from_lut(f0_2, _e144);
-        env_brdf = _e145;
-        let _e148 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e148), vec3(0f));
-        let _e154 = lobe.alpha;
-        let _e155 = silk_lobe_anisotropy(_e154);
-        let _e157 = lobe.ibl_roughness;
-        let _e158 = weft_aniso_bent_normal(_e84, v_5, _e155, _e157);
-        reflect_n = _e158;
+        let _e141 = lobe.ibl_roughness;
+        let _e142 = weft_env_brdf_lut(_e91.n_dot_v, _e141);
+        let _e143 = weft_env_brdf_from_lut(f0_2, _e142);
+        env_brdf = _e143;
+        let _e146 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e146), vec3(0f));
+        let _e152 = lobe.alpha;
+        let _e153 = silk_lobe_anisotropy(_e152);
+        let _e155 = lobe.ibl_roughness;
+        let _e156 = weft_aniso_bent_normal(_e84, v_5, _e153, _e155);
+        reflect_n = _e156;
     }
-    let _e160 = reflect_n;
-    let _e163 = lobe.ibl_roughness;
-    let _e164 = weft_prefiltered_radiance(reflect(-(v_5), _e160), _e163);
-    let _e165 = env_brdf;
-    let _e167 = weft_sh_irradiance(n_diff);
-    let _e168 = ambient_kd;
-    let indirect = ((_e164 * _e165) + ((_e167 * _e168) * diffuse_albedo));
+    let _e158 = reflect_n;
+    let _e161 = lobe.ibl_roughness;
+    let _e162 = weft_prefiltered_radiance(reflect(-(v_5), _e158), _e161);
+    let _e163 = env_brdf;
+    let _e165 = weft_sh_irradiance(n_diff);
+    let _e166 = ambient_kd;
+    let indirect = ((_e162 * _e163) + ((_e165 * _e166) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

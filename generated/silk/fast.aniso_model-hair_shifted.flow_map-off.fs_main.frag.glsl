@@ -150,8 +150,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -209,12 +209,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -327,7 +325,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -349,9 +346,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     vec3 _e56 = fibre;
@@ -405,29 +402,25 @@ void main() {
     vec3 direct = ((diffuse + (_e143 * _e151)) * _e138);
     reflect_n = _e53;
     {
-        {
-            float _e161 = lobe.ibl_roughness;
-            vec2 _e162 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e161);
-            scale_bias = _e162;
-        }
-        vec2 _e163 = scale_bias;
-        vec3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
-        env_brdf = _e164;
-        vec3 _e167 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e167), vec3(0.0));
-        vec2 _e173 = lobe.alpha;
-        float _e174 = silk_lobe_anisotropy(_e173);
-        float _e176 = lobe.ibl_roughness;
-        vec3 _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
-        reflect_n = _e177;
+        float _e160 = lobe.ibl_roughness;
+        vec2 _e161 = weft_env_brdf_lut(_e67.n_dot_v, _e160);
+        vec3 _e162 = weft_env_brdf_from_lut(f0_2, _e161);
+        env_brdf = _e162;
+        vec3 _e165 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e165), vec3(0.0));
+        vec2 _e171 = lobe.alpha;
+        float _e172 = silk_lobe_anisotropy(_e171);
+        float _e174 = lobe.ibl_roughness;
+        vec3 _e175 = weft_aniso_bent_normal(_e60, v_5, _e172, _e174);
+        reflect_n = _e175;
     }
-    vec3 _e179 = reflect_n;
-    float _e182 = lobe.ibl_roughness;
-    vec3 _e183 = weft_prefiltered_radiance(reflect(-(v_5), _e179), _e182);
-    vec3 _e184 = env_brdf;
-    vec3 _e186 = weft_sh_irradiance(n_diff);
-    vec3 _e187 = ambient_kd;
-    vec3 indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
+    vec3 _e177 = reflect_n;
+    float _e180 = lobe.ibl_roughness;
+    vec3 _e181 = weft_prefiltered_radiance(reflect(-(v_5), _e177), _e180);
+    vec3 _e182 = env_brdf;
+    vec3 _e184 = weft_sh_irradiance(n_diff);
+    vec3 _e185 = ambient_kd;
+    vec3 indirect = ((_e181 * _e182) + ((_e184 * _e185) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -99,6 +99,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -186,9 +187,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float2 sb = saturate(scale_bias_1);
+    float2 sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -253,24 +254,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -444,7 +432,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -467,9 +454,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e43 = material.aniso_normal_map_st;
     const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
-    float3 texel_2 = _e47.xyz;
+    float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
     const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     float3 _e56 = fibre;
@@ -523,29 +510,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e143 * _e151)) * _e138);
     reflect_n = _e53;
     {
-        {
-            float _e161 = lobe.ibl_roughness;
-            const float2 _e162 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e161);
-            scale_bias = _e162;
-        }
-        float2 _e163 = scale_bias;
-        const float3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
-        env_brdf = _e164;
-        float3 _e167 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e167), (0.0).xxx);
-        float2 _e173 = lobe.alpha;
-        const float _e174 = silk_lobe_anisotropy(_e173);
-        float _e176 = lobe.ibl_roughness;
-        const float3 _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
-        reflect_n = _e177;
+        float _e160 = lobe.ibl_roughness;
+        const float2 _e161 = weft_env_brdf_lut(_e67.n_dot_v, _e160);
+        const float3 _e162 = weft_env_brdf_from_lut(f0_2, _e161);
+        env_brdf = _e162;
+        float3 _e165 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e165), (0.0).xxx);
+        float2 _e171 = lobe.alpha;
+        const float _e172 = silk_lobe_anisotropy(_e171);
+        float _e174 = lobe.ibl_roughness;
+        const float3 _e175 = weft_aniso_bent_normal(_e60, v_5, _e172, _e174);
+        reflect_n = _e175;
     }
-    float3 _e179 = reflect_n;
-    float _e182 = lobe.ibl_roughness;
-    const float3 _e183 = weft_prefiltered_radiance(reflect(-(v_5), _e179), _e182);
-    float3 _e184 = env_brdf;
-    const float3 _e186 = weft_sh_irradiance(n_diff);
-    float3 _e187 = ambient_kd;
-    float3 indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
+    float3 _e177 = reflect_n;
+    float _e180 = lobe.ibl_roughness;
+    const float3 _e181 = weft_prefiltered_radiance(reflect(-(v_5), _e177), _e180);
+    float3 _e182 = env_brdf;
+    const float3 _e184 = weft_sh_irradiance(n_diff);
+    float3 _e185 = ambient_kd;
+    float3 indirect = ((_e181 * _e182) + ((_e184 * _e185) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -172,9 +172,9 @@ metal::float3 weft_diffuse_lambert(
 
 metal::float3 weft_env_brdf_from_lut(
     metal::float3 f0_1,
-    metal::float2 scale_bias_1
+    metal::float2 scale_bias
 ) {
-    metal::float2 sb = metal::saturate(scale_bias_1);
+    metal::float2 sb = metal::saturate(scale_bias);
     return (f0_1 * sb.x) + metal::float3(sb.y);
 }
 
@@ -252,20 +252,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v_1,
     float roughness_5,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v_1), metal::saturate(roughness_5));
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(
@@ -482,8 +477,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
@@ -494,7 +490,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
-    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -516,9 +511,9 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e43 = material.aniso_normal_map_st;
     metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
-    metal::float3 texel_2 = _e47.xyz;
+    metal::float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    metal::float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    metal::float3 _e52 = weft_unpack_normal(texel_1, _e51);
     metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     metal::float3 _e56 = fibre;
@@ -572,29 +567,25 @@ fragment fs_mainOutput fs_main(
     metal::float3 direct = (diffuse + (_e143 * _e151)) * _e138;
     reflect_n = _e53;
     {
-        {
-            float _e161 = lobe.ibl_roughness;
-            metal::float2 _e162 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e161, weft_brdf_lut);
-            scale_bias = _e162;
-        }
-        metal::float2 _e163 = scale_bias;
-        metal::float3 _e164 = weft_env_brdf_from_lut(f0_2, _e163);
-        env_brdf = _e164;
-        metal::float3 _e167 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e167, metal::float3(0.0));
-        metal::float2 _e173 = lobe.alpha;
-        float _e174 = silk_lobe_anisotropy(_e173);
-        float _e176 = lobe.ibl_roughness;
-        metal::float3 _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
-        reflect_n = _e177;
+        float _e160 = lobe.ibl_roughness;
+        metal::float2 _e161 = weft_env_brdf_lut(_e67.n_dot_v, _e160, weft_brdf_lut, weft_lut_sampler);
+        metal::float3 _e162 = weft_env_brdf_from_lut(f0_2, _e161);
+        env_brdf = _e162;
+        metal::float3 _e165 = env_brdf;
+        ambient_kd = metal::max(metal::float3(1.0) - _e165, metal::float3(0.0));
+        metal::float2 _e171 = lobe.alpha;
+        float _e172 = silk_lobe_anisotropy(_e171);
+        float _e174 = lobe.ibl_roughness;
+        metal::float3 _e175 = weft_aniso_bent_normal(_e60, v_5, _e172, _e174);
+        reflect_n = _e175;
     }
-    metal::float3 _e179 = reflect_n;
-    float _e182 = lobe.ibl_roughness;
-    metal::float3 _e183 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e179), _e182, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e184 = env_brdf;
-    metal::float3 _e186 = weft_sh_irradiance(n_diff, weft_frame);
-    metal::float3 _e187 = ambient_kd;
-    metal::float3 indirect = (_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo);
+    metal::float3 _e177 = reflect_n;
+    float _e180 = lobe.ibl_roughness;
+    metal::float3 _e181 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e177), _e180, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e182 = env_brdf;
+    metal::float3 _e184 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 _e185 = ambient_kd;
+    metal::float3 indirect = (_e181 * _e182) + ((_e184 * _e185) * diffuse_albedo);
     metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, alpha_out) };
 }

@@ -145,8 +145,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 

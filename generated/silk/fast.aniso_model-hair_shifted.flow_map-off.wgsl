@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -158,8 +160,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -218,13 +220,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -360,7 +359,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -383,9 +381,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     let _e56 = fibre;
@@ -439,29 +437,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e143 * _e151)) * _e138);
     reflect_n = _e53;
     {
-        {
-            let _e161 = lobe.ibl_roughness;
-            let _e162 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e161);
-            scale_bias = _e162;
-        }
-        let _e163 = scale_bias;
-        let _e164 = weft_env_brdf_from_lut(f0_2, _e163);
-        env_brdf = _e164;
-        let _e167 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e167), vec3(0f));
-        let _e173 = lobe.alpha;
-        let _e174 = silk_lobe_anisotropy(_e173);
-        let _e176 = lobe.ibl_roughness;
-        let _e177 = weft_aniso_bent_normal(_e60, v_5, _e174, _e176);
-        reflect_n = _e177;
+        let _e160 = lobe.ibl_roughness;
+        let _e161 = weft_env_brdf_lut(_e67.n_dot_v, _e160);
+        let _e162 = weft_env_brdf_from_lut(f0_2, _e161);
+        env_brdf = _e162;
+        let _e165 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e165), vec3(0f));
+        let _e171 = lobe.alpha;
+        let _e172 = silk_lobe_anisotropy(_e171);
+        let _e174 = lobe.ibl_roughness;
+        let _e175 = weft_aniso_bent_normal(_e60, v_5, _e172, _e174);
+        reflect_n = _e175;
     }
-    let _e179 = reflect_n;
-    let _e182 = lobe.ibl_roughness;
-    let _e183 = weft_prefiltered_radiance(reflect(-(v_5), _e179), _e182);
-    let _e184 = env_brdf;
-    let _e186 = weft_sh_irradiance(n_diff);
-    let _e187 = ambient_kd;
-    let indirect = ((_e183 * _e184) + ((_e186 * _e187) * diffuse_albedo));
+    let _e177 = reflect_n;
+    let _e180 = lobe.ibl_roughness;
+    let _e181 = weft_prefiltered_radiance(reflect(-(v_5), _e177), _e180);
+    let _e182 = env_brdf;
+    let _e184 = weft_sh_irradiance(n_diff);
+    let _e185 = ambient_kd;
+    let indirect = ((_e181 * _e182) + ((_e184 * _e185) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -152,8 +152,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -211,12 +211,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_4) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5) {
     vec2 uv_1 = vec2(clamp(n_dot_v_1, 0.0, 1.0), clamp(roughness_5, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -329,7 +327,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -351,9 +348,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -415,29 +412,25 @@ void main() {
     vec3 direct = ((diffuse + (_e167 * _e175)) * _e162);
     reflect_n = _e53;
     {
-        {
-            float _e185 = lobe.ibl_roughness;
-            vec2 _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
-            scale_bias = _e186;
-        }
-        vec2 _e187 = scale_bias;
-        vec3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
-        env_brdf = _e188;
-        vec3 _e191 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e191), vec3(0.0));
-        vec2 _e197 = lobe.alpha;
-        float _e198 = silk_lobe_anisotropy(_e197);
-        float _e200 = lobe.ibl_roughness;
-        vec3 _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
-        reflect_n = _e201;
+        float _e184 = lobe.ibl_roughness;
+        vec2 _e185 = weft_env_brdf_lut(_e91.n_dot_v, _e184);
+        vec3 _e186 = weft_env_brdf_from_lut(f0_2, _e185);
+        env_brdf = _e186;
+        vec3 _e189 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e189), vec3(0.0));
+        vec2 _e195 = lobe.alpha;
+        float _e196 = silk_lobe_anisotropy(_e195);
+        float _e198 = lobe.ibl_roughness;
+        vec3 _e199 = weft_aniso_bent_normal(_e84, v_5, _e196, _e198);
+        reflect_n = _e199;
     }
-    vec3 _e203 = reflect_n;
-    float _e206 = lobe.ibl_roughness;
-    vec3 _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
-    vec3 _e208 = env_brdf;
-    vec3 _e210 = weft_sh_irradiance(n_diff);
-    vec3 _e211 = ambient_kd;
-    vec3 indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
+    vec3 _e201 = reflect_n;
+    float _e204 = lobe.ibl_roughness;
+    vec3 _e205 = weft_prefiltered_radiance(reflect(-(v_5), _e201), _e204);
+    vec3 _e206 = env_brdf;
+    vec3 _e208 = weft_sh_irradiance(n_diff);
+    vec3 _e209 = ambient_kd;
+    vec3 indirect = ((_e205 * _e206) + ((_e208 * _e209) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -99,6 +99,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -187,9 +188,9 @@ float3 weft_diffuse_lambert(float3 albedo)
     return (albedo * WEFT_INV_PI);
 }
 
-float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias_1)
+float3 weft_env_brdf_from_lut(float3 f0_1, float2 scale_bias)
 {
-    float2 sb = saturate(scale_bias_1);
+    float2 sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + (sb.y).xxx);
 }
 
@@ -254,24 +255,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_4)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v_1, float roughness_5)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v_1, float roughness_5)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v_1), saturate(roughness_5));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -445,7 +433,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -468,9 +455,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e43 = material.aniso_normal_map_st;
     const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
-    float3 texel_2 = _e47.xyz;
+    float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
     const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -532,29 +519,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e167 * _e175)) * _e162);
     reflect_n = _e53;
     {
-        {
-            float _e185 = lobe.ibl_roughness;
-            const float2 _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
-            scale_bias = _e186;
-        }
-        float2 _e187 = scale_bias;
-        const float3 _e188 = weft_env_brdf_from_lut(f0_2, _e187);
-        env_brdf = _e188;
-        float3 _e191 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e191), (0.0).xxx);
-        float2 _e197 = lobe.alpha;
-        const float _e198 = silk_lobe_anisotropy(_e197);
-        float _e200 = lobe.ibl_roughness;
-        const float3 _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
-        reflect_n = _e201;
+        float _e184 = lobe.ibl_roughness;
+        const float2 _e185 = weft_env_brdf_lut(_e91.n_dot_v, _e184);
+        const float3 _e186 = weft_env_brdf_from_lut(f0_2, _e185);
+        env_brdf = _e186;
+        float3 _e189 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e189), (0.0).xxx);
+        float2 _e195 = lobe.alpha;
+        const float _e196 = silk_lobe_anisotropy(_e195);
+        float _e198 = lobe.ibl_roughness;
+        const float3 _e199 = weft_aniso_bent_normal(_e84, v_5, _e196, _e198);
+        reflect_n = _e199;
     }
-    float3 _e203 = reflect_n;
-    float _e206 = lobe.ibl_roughness;
-    const float3 _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
-    float3 _e208 = env_brdf;
-    const float3 _e210 = weft_sh_irradiance(n_diff);
-    float3 _e211 = ambient_kd;
-    float3 indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
+    float3 _e201 = reflect_n;
+    float _e204 = lobe.ibl_roughness;
+    const float3 _e205 = weft_prefiltered_radiance(reflect(-(v_5), _e201), _e204);
+    float3 _e206 = env_brdf;
+    const float3 _e208 = weft_sh_irradiance(n_diff);
+    float3 _e209 = ambient_kd;
+    float3 indirect = ((_e205 * _e206) + ((_e208 * _e209) * diffuse_albedo));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, alpha_out);
 }

@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -160,8 +162,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -220,13 +222,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_4: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v_1: f32, roughness_5: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v_1), saturate(roughness_5));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -362,7 +361,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -385,9 +383,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -449,29 +447,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e167 * _e175)) * _e162);
     reflect_n = _e53;
     {
-        {
-            let _e185 = lobe.ibl_roughness;
-            let _e186 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e185);
-            scale_bias = _e186;
-        }
-        let _e187 = scale_bias;
-        let _e188 = weft_env_brdf_from_lut(f0_2, _e187);
-        env_brdf = _e188;
-        let _e191 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e191), vec3(0f));
-        let _e197 = lobe.alpha;
-        let _e198 = silk_lobe_anisotropy(_e197);
-        let _e200 = lobe.ibl_roughness;
-        let _e201 = weft_aniso_bent_normal(_e84, v_5, _e198, _e200);
-        reflect_n = _e201;
+        let _e184 = lobe.ibl_roughness;
+        let _e185 = weft_env_brdf_lut(_e91.n_dot_v, _e184);
+        let _e186 = weft_env_brdf_from_lut(f0_2, _e185);
+        env_brdf = _e186;
+        let _e189 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e189), vec3(0f));
+        let _e195 = lobe.alpha;
+        let _e196 = silk_lobe_anisotropy(_e195);
+        let _e198 = lobe.ibl_roughness;
+        let _e199 = weft_aniso_bent_normal(_e84, v_5, _e196, _e198);
+        reflect_n = _e199;
     }
-    let _e203 = reflect_n;
-    let _e206 = lobe.ibl_roughness;
-    let _e207 = weft_prefiltered_radiance(reflect(-(v_5), _e203), _e206);
-    let _e208 = env_brdf;
-    let _e210 = weft_sh_irradiance(n_diff);
-    let _e211 = ambient_kd;
-    let indirect = ((_e207 * _e208) + ((_e210 * _e211) * diffuse_albedo));
+    let _e201 = reflect_n;
+    let _e204 = lobe.ibl_roughness;
+    let _e205 = weft_prefiltered_radiance(reflect(-(v_5), _e201), _e204);
+    let _e206 = env_brdf;
+    let _e208 = weft_sh_irradiance(n_diff);
+    let _e209 = ambient_kd;
+    let indirect = ((_e205 * _e206) + ((_e208 * _e209) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

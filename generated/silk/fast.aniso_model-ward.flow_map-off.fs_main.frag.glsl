@@ -125,8 +125,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -184,12 +184,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -294,7 +292,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -316,9 +313,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     vec3 _e56 = fibre;
@@ -349,29 +346,25 @@ void main() {
     vec3 direct = ((diffuse + (_e90 * _e98)) * _e85);
     reflect_n = _e53;
     {
-        {
-            float _e108 = lobe.ibl_roughness;
-            vec2 _e109 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e108);
-            scale_bias = _e109;
-        }
-        vec2 _e110 = scale_bias;
-        vec3 _e111 = weft_env_brdf_from_lut(f0_2, _e110);
-        env_brdf = _e111;
-        vec3 _e114 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e114), vec3(0.0));
-        vec2 _e120 = lobe.alpha;
-        float _e121 = silk_lobe_anisotropy(_e120);
-        float _e123 = lobe.ibl_roughness;
-        vec3 _e124 = weft_aniso_bent_normal(_e60, v_5, _e121, _e123);
-        reflect_n = _e124;
+        float _e107 = lobe.ibl_roughness;
+        vec2 _e108 = weft_env_brdf_lut(_e67.n_dot_v, _e107);
+        vec3 _e109 = weft_env_brdf_from_lut(f0_2, _e108);
+        env_brdf = _e109;
+        vec3 _e112 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e112), vec3(0.0));
+        vec2 _e118 = lobe.alpha;
+        float _e119 = silk_lobe_anisotropy(_e118);
+        float _e121 = lobe.ibl_roughness;
+        vec3 _e122 = weft_aniso_bent_normal(_e60, v_5, _e119, _e121);
+        reflect_n = _e122;
     }
-    vec3 _e126 = reflect_n;
-    float _e129 = lobe.ibl_roughness;
-    vec3 _e130 = weft_prefiltered_radiance(reflect(-(v_5), _e126), _e129);
-    vec3 _e131 = env_brdf;
-    vec3 _e133 = weft_sh_irradiance(n_diff);
-    vec3 _e134 = ambient_kd;
-    vec3 indirect = ((_e130 * _e131) + ((_e133 * _e134) * diffuse_albedo));
+    vec3 _e124 = reflect_n;
+    float _e127 = lobe.ibl_roughness;
+    vec3 _e128 = weft_prefiltered_radiance(reflect(-(v_5), _e124), _e127);
+    vec3 _e129 = env_brdf;
+    vec3 _e131 = weft_sh_irradiance(n_diff);
+    vec3 _e132 = ambient_kd;
+    vec3 indirect = ((_e128 * _e129) + ((_e131 * _e132) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -133,8 +135,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -193,13 +195,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -328,7 +327,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -351,9 +349,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     let _e56 = fibre;
@@ -384,29 +382,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e90 * _e98)) * _e85);
     reflect_n = _e53;
     {
-        {
-            let _e108 = lobe.ibl_roughness;
-            let _e109 = weft_env_brdf_lut_nearest(_e67.n_dot_v, _e108);
-            scale_bias = _e109;
-        }
-        let _e110 = scale_bias;
-        let _e111 = weft_env_brdf_from_lut(f0_2, _e110);
-        env_brdf = _e111;
-        let _e114 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e114), vec3(0f));
-        let _e120 = lobe.alpha;
-        let _e121 = silk_lobe_anisotropy(_e120);
-        let _e123 = lobe.ibl_roughness;
-        let _e124 = weft_aniso_bent_normal(_e60, v_5, _e121, _e123);
-        reflect_n = _e124;
+        let _e107 = lobe.ibl_roughness;
+        let _e108 = weft_env_brdf_lut(_e67.n_dot_v, _e107);
+        let _e109 = weft_env_brdf_from_lut(f0_2, _e108);
+        env_brdf = _e109;
+        let _e112 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e112), vec3(0f));
+        let _e118 = lobe.alpha;
+        let _e119 = silk_lobe_anisotropy(_e118);
+        let _e121 = lobe.ibl_roughness;
+        let _e122 = weft_aniso_bent_normal(_e60, v_5, _e119, _e121);
+        reflect_n = _e122;
     }
-    let _e126 = reflect_n;
-    let _e129 = lobe.ibl_roughness;
-    let _e130 = weft_prefiltered_radiance(reflect(-(v_5), _e126), _e129);
-    let _e131 = env_brdf;
-    let _e133 = weft_sh_irradiance(n_diff);
-    let _e134 = ambient_kd;
-    let indirect = ((_e130 * _e131) + ((_e133 * _e134) * diffuse_albedo));
+    let _e124 = reflect_n;
+    let _e127 = lobe.ibl_roughness;
+    let _e128 = weft_prefiltered_radiance(reflect(-(v_5), _e124), _e127);
+    let _e129 = env_brdf;
+    let _e131 = weft_sh_irradiance(n_diff);
+    let _e132 = ambient_kd;
+    let indirect = ((_e128 * _e129) + ((_e131 * _e132) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

@@ -127,8 +127,8 @@ vec3 weft_diffuse_lambert(vec3 albedo) {
     return (albedo * WEFT_INV_PI);
 }
 
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -186,12 +186,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -296,7 +294,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -318,9 +315,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -359,29 +356,25 @@ void main() {
     vec3 direct = ((diffuse + (_e114 * _e122)) * _e109);
     reflect_n = _e53;
     {
-        {
-            float _e132 = lobe.ibl_roughness;
-            vec2 _e133 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e132);
-            scale_bias = _e133;
-        }
-        vec2 _e134 = scale_bias;
-        vec3 _e135 = weft_env_brdf_from_lut(f0_2, _e134);
-        env_brdf = _e135;
-        vec3 _e138 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e138), vec3(0.0));
-        vec2 _e144 = lobe.alpha;
-        float _e145 = silk_lobe_anisotropy(_e144);
-        float _e147 = lobe.ibl_roughness;
-        vec3 _e148 = weft_aniso_bent_normal(_e84, v_5, _e145, _e147);
-        reflect_n = _e148;
+        float _e131 = lobe.ibl_roughness;
+        vec2 _e132 = weft_env_brdf_lut(_e91.n_dot_v, _e131);
+        vec3 _e133 = weft_env_brdf_from_lut(f0_2, _e132);
+        env_brdf = _e133;
+        vec3 _e136 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e136), vec3(0.0));
+        vec2 _e142 = lobe.alpha;
+        float _e143 = silk_lobe_anisotropy(_e142);
+        float _e145 = lobe.ibl_roughness;
+        vec3 _e146 = weft_aniso_bent_normal(_e84, v_5, _e143, _e145);
+        reflect_n = _e146;
     }
-    vec3 _e150 = reflect_n;
-    float _e153 = lobe.ibl_roughness;
-    vec3 _e154 = weft_prefiltered_radiance(reflect(-(v_5), _e150), _e153);
-    vec3 _e155 = env_brdf;
-    vec3 _e157 = weft_sh_irradiance(n_diff);
-    vec3 _e158 = ambient_kd;
-    vec3 indirect = ((_e154 * _e155) + ((_e157 * _e158) * diffuse_albedo));
+    vec3 _e148 = reflect_n;
+    float _e151 = lobe.ibl_roughness;
+    vec3 _e152 = weft_prefiltered_radiance(reflect(-(v_5), _e148), _e151);
+    vec3 _e153 = env_brdf;
+    vec3 _e155 = weft_sh_irradiance(n_diff);
+    vec3 _e156 = ambient_kd;
+    vec3 indirect = ((_e152 * _e153) + ((_e155 * _e156) * diffuse_albedo));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, alpha_out);
     return;

@@ -92,6 +92,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -135,8 +137,8 @@ fn weft_diffuse_lambert(albedo: vec3<f32>) -> vec3<f32> {
     return (albedo * WEFT_INV_PI);
 }
 
-fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
+fn weft_env_brdf_from_lut(f0_1: vec3<f32>, scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
     return ((f0_1 * sb.x) + vec3(sb.y));
 }
 
@@ -195,13 +197,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -330,7 +329,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -353,9 +351,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     {
@@ -394,29 +392,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let direct = ((diffuse + (_e114 * _e122)) * _e109);
     reflect_n = _e53;
     {
-        {
-            let _e132 = lobe.ibl_roughness;
-            let _e133 = weft_env_brdf_lut_nearest(_e91.n_dot_v, _e132);
-            scale_bias = _e133;
-        }
-        let _e134 = scale_bias;
-        let _e135 = weft_env_brdf_from_lut(f0_2, _e134);
-        env_brdf = _e135;
-        let _e138 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e138), vec3(0f));
-        let _e144 = lobe.alpha;
-        let _e145 = silk_lobe_anisotropy(_e144);
-        let _e147 = lobe.ibl_roughness;
-        let _e148 = weft_aniso_bent_normal(_e84, v_5, _e145, _e147);
-        reflect_n = _e148;
+        let _e131 = lobe.ibl_roughness;
+        let _e132 = weft_env_brdf_lut(_e91.n_dot_v, _e131);
+        let _e133 = weft_env_brdf_from_lut(f0_2, _e132);
+        env_brdf = _e133;
+        let _e136 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e136), vec3(0f));
+        let _e142 = lobe.alpha;
+        let _e143 = silk_lobe_anisotropy(_e142);
+        let _e145 = lobe.ibl_roughness;
+        let _e146 = weft_aniso_bent_normal(_e84, v_5, _e143, _e145);
+        reflect_n = _e146;
     }
-    let _e150 = reflect_n;
-    let _e153 = lobe.ibl_roughness;
-    let _e154 = weft_prefiltered_radiance(reflect(-(v_5), _e150), _e153);
-    let _e155 = env_brdf;
-    let _e157 = weft_sh_irradiance(n_diff);
-    let _e158 = ambient_kd;
-    let indirect = ((_e154 * _e155) + ((_e157 * _e158) * diffuse_albedo));
+    let _e148 = reflect_n;
+    let _e151 = lobe.ibl_roughness;
+    let _e152 = weft_prefiltered_radiance(reflect(-(v_5), _e148), _e151);
+    let _e153 = env_brdf;
+    let _e155 = weft_sh_irradiance(n_diff);
+    let _e156 = ambient_kd;
+    let indirect = ((_e152 * _e153) + ((_e155 * _e156) * diffuse_albedo));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, alpha_out);
 }

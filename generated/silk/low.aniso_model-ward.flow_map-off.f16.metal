@@ -189,20 +189,15 @@ metal::float3 weft_prefiltered_radiance(
     return metal::max(c_1.xyz, metal::float3(0.0));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::float2 weft_env_brdf_lut_nearest(
+metal::float2 weft_env_brdf_lut(
     float n_dot_v,
     float roughness_2,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_brdf_lut.get_width(), weft_brdf_lut.get_height()));
     metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_v), metal::saturate(roughness_2));
-    metal::int2 texel_1 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_brdf_lut.read(metal::uint2(texel_1), 0);
-    return _e16.xy;
+    metal::float4 _e8 = weft_brdf_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(
@@ -370,13 +365,14 @@ metal::float3 silk_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
-    metal::texture2d<float, metal::access::sample> weft_brdf_lut
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
     metal::half3 f0_1 = static_cast<metal::half3>(f0_in);
     metal::half3 _e13 = weft_half_f_schlick(f0_1, static_cast<half>(v_dot_h_1));
     metal::half3 kd = (metal::half3(1.0h) - _e13) * (static_cast<half>(n_dot_l_diffuse) * 0.31835938h);
     metal::float3 direct = ((diffuse_albedo * static_cast<metal::float3>(kd)) + (static_cast<metal::float3>(_e13) * lobe_1.value)) * light;
-    metal::float2 _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness, weft_brdf_lut);
+    metal::float2 _e29 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness, weft_brdf_lut, weft_lut_sampler);
     metal::float2 lut = metal::saturate(_e29);
     metal::half3 env_brdf_1 = (f0_1 * static_cast<half>(lut.x)) + metal::half3(static_cast<half>(lut.y));
     metal::half3 ambient_kd_1 = metal::max(metal::half3(1.0h) - env_brdf_1, metal::half3(0.0h));
@@ -445,8 +441,9 @@ fragment fs_mainOutput fs_main(
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> weft_brdf_lut [[texture(1)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> aniso_normal_map [[texture(3)]]
 ) {
@@ -457,7 +454,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
-    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;
@@ -479,9 +475,9 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e43 = material.aniso_normal_map_st;
     metal::float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     metal::float4 _e47 = aniso_normal_map.sample(material_sampler, _e44);
-    metal::float3 texel_2 = _e47.xyz;
+    metal::float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    metal::float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    metal::float3 _e52 = weft_unpack_normal(texel_1, _e51);
     metal::float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     metal::float3 _e56 = fibre;
@@ -507,7 +503,7 @@ fragment fs_mainOutput fs_main(
     float n_dot_l_diffuse_1 = metal::saturate(metal::dot(n_diff_1, _e67.l));
     {
         SilkLobe _e91 = lobe;
-        metal::float3 _e92 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e91, _e85, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut);
+        metal::float3 _e92 = silk_low(_e60, _e53, n_diff_1, v_6, _e67.n_dot_v, _e67.v_dot_h, n_dot_l_diffuse_1, f0_2, diffuse_albedo_1, _e91, _e85, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
         return fs_mainOutput { metal::float4(_e92, alpha_out) };
     }
 }

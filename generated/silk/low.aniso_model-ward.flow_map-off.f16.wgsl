@@ -94,6 +94,8 @@ var weft_environment: texture_cube<f32>;
 var weft_environment_sampler: sampler;
 @group(0) @binding(3) 
 var weft_brdf_lut: texture_2d<f32>;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 @group(1) @binding(0) 
@@ -176,13 +178,10 @@ fn weft_prefiltered_radiance(dir: vec3<f32>, roughness_1: f32) -> vec3<f32> {
     return max(c_1.xyz, vec3(0f));
 }
 
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
-    let _e3 = textureDimensions(weft_brdf_lut);
-    let size = vec2<f32>(_e3);
+fn weft_env_brdf_lut(n_dot_v: f32, roughness_2: f32) -> vec2<f32> {
     let uv_1 = vec2<f32>(saturate(n_dot_v), saturate(roughness_2));
-    let texel_1 = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_brdf_lut, texel_1, 0i);
-    return _e16.xy;
+    let _e8 = textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv_1, 0f);
+    return _e8.xy;
 }
 
 fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSurface {
@@ -295,7 +294,7 @@ fn silk_low(frame_3: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_4: vec
     let _e13 = weft_half_f_schlick(f0_1, f16(v_dot_h_1));
     let kd = ((vec3(1h) - _e13) * (f16(n_dot_l_diffuse) * 0.31835938h));
     let direct = (((diffuse_albedo * vec3<f32>(kd)) + (vec3<f32>(_e13) * lobe_1.value)) * light);
-    let _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness);
+    let _e29 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
     let lut = saturate(_e29);
     let env_brdf_1 = ((f0_1 * f16(lut.x)) + vec3(f16(lut.y)));
     let ambient_kd_1 = max((vec3(1h) - env_brdf_1), vec3(0h));
@@ -338,7 +337,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -361,9 +359,9 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e43 = material.aniso_normal_map_st;
     let _e44 = weft_transform_uv(in_1.uv0_, _e43);
     let _e47 = textureSample(aniso_normal_map, material_sampler, _e44);
-    let texel_2 = _e47.xyz;
+    let texel_1 = _e47.xyz;
     let _e51 = material.aniso_normal_strength;
-    let _e52 = weft_unpack_normal(texel_2, _e51);
+    let _e52 = weft_unpack_normal(texel_1, _e51);
     let _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     let _e56 = fibre;

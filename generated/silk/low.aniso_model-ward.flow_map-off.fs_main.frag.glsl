@@ -165,12 +165,10 @@ vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
     return max(c_1.xyz, vec3(0.0));
 }
 
-vec2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_3_fs, 0).xy));
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
     vec2 uv_1 = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
-    ivec2 texel_1 = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_3_fs, texel_1, 0);
-    return _e16.xy;
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv_1), 0.0);
+    return _e8.xy;
 }
 
 WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
@@ -282,7 +280,7 @@ vec3 silk_low(mat3x3 frame_3, vec3 n_spec, vec3 n_diff, vec3 v_4, float n_dot_v_
     vec3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
     vec3 kd = ((vec3(1.0) - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
     vec3 direct = (((diffuse_albedo * vec3(kd)) + (vec3(_e13) * lobe_1.value)) * light);
-    vec2 _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness);
+    vec2 _e29 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
     vec2 lut = clamp(_e29, vec2(0.0), vec2(1.0));
     vec3 env_brdf_1 = ((f0_1 * float(lut.x)) + vec3(float(lut.y)));
     vec3 ambient_kd_1 = max((vec3(1.0) - env_brdf_1), vec3(0.0));
@@ -302,7 +300,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     vec4 _e4 = _group_1_binding_0_fs.base_map_st;
     vec2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     vec4 _e8 = _group_1_binding_0_fs.base_color;
@@ -324,9 +321,9 @@ void main() {
     vec4 _e43 = _group_1_binding_0_fs.aniso_normal_map_st;
     vec2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     vec4 _e47 = texture(_group_1_binding_4_fs, vec2(_e44));
-    vec3 texel_2 = _e47.xyz;
+    vec3 texel_1 = _e47.xyz;
     float _e51 = _group_1_binding_0_fs.aniso_normal_strength;
-    vec3 _e52 = weft_unpack_normal(texel_2, _e51);
+    vec3 _e52 = weft_unpack_normal(texel_1, _e51);
     vec3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     vec3 _e56 = fibre;

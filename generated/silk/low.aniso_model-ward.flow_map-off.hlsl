@@ -99,6 +99,7 @@ SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
 Texture2D<float4> weft_brdf_lut : register(t3);
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
 StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
@@ -202,24 +203,11 @@ float3 weft_prefiltered_radiance(float3 dir, float roughness_1)
     return max(c_1.xyz, (0.0).xxx);
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float2 weft_env_brdf_lut(float n_dot_v, float roughness_2)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float2 weft_env_brdf_lut_nearest(float n_dot_v, float roughness_2)
-{
-    float2 size = float2(NagaDimensions2D(weft_brdf_lut));
     float2 uv_1 = float2(saturate(n_dot_v), saturate(roughness_2));
-    int2 texel_1 = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_brdf_lut.Load(int3(texel_1, int(0)));
-    return _e16.xy;
+    float4 _e8 = weft_brdf_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return _e8.xy;
 }
 
 WeftSurface ConstructWeftSurface(float3 arg0, float3 arg1) {
@@ -368,7 +356,7 @@ float3 silk_low(float3x3 frame_3, float3 n_spec, float3 n_diff, float3 v_4, floa
     const float3 _e13 = weft_half_f_schlick(f0_1, float(v_dot_h_1));
     float3 kd = (((1.0).xxx - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
     float3 direct = (((diffuse_albedo * float3(kd)) + (float3(_e13) * lobe_1.value)) * light);
-    const float2 _e29 = weft_env_brdf_lut_nearest(n_dot_v_1, lobe_1.ibl_roughness);
+    const float2 _e29 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
     float2 lut = saturate(_e29);
     float3 env_brdf_1 = ((f0_1 * float(lut.x)) + (float(lut.y)).xxx);
     float3 ambient_kd_1 = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
@@ -414,7 +402,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
@@ -437,9 +424,9 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e43 = material.aniso_normal_map_st;
     const float2 _e44 = weft_transform_uv(in_1.uv0_, _e43);
     float4 _e47 = aniso_normal_map.Sample(material_sampler, _e44);
-    float3 texel_2 = _e47.xyz;
+    float3 texel_1 = _e47.xyz;
     float _e51 = material.aniso_normal_strength;
-    const float3 _e52 = weft_unpack_normal(texel_2, _e51);
+    const float3 _e52 = weft_unpack_normal(texel_1, _e51);
     const float3 _e53 = weft_normal_from_tangent_space(_e39, _e52);
     fibre = _e39[0];
     float3 _e56 = fibre;

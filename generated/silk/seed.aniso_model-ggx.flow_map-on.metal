@@ -441,7 +441,6 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
-    metal::float2 scale_bias = {};
     metal::float4 _e4 = material.base_map_st;
     metal::float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);
     metal::float4 _e8 = material.base_color;

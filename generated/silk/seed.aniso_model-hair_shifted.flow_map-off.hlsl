@@ -406,7 +406,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     float4 _e4 = material.base_map_st;
     const float2 _e5 = weft_transform_uv(in_1.uv0_, _e4);

@@ -309,7 +309,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e4 = material.base_map_st;
     let _e5 = weft_transform_uv(in_1.uv0_, _e4);

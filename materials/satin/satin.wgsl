@@ -43,7 +43,7 @@
 //               weft_half (f16 with shader-f16, the f32 fallback
 //               otherwise; weft_half_spec_ggx_aniso in lib/half.wgsl),
 //               roughness floored at 0.089 and each width at 0.089^2 for
-//               the lobes; the split-sum table read at its nearest texel;
+//               the lobes; the split-sum table filtered, as fast;
 //               one prefiltered lookup as fast, lighting in f32 (satin_low).
 // All: Lambert 1/pi, L2 SH ambient, AO, prefiltered environment along the
 // anisotropic bent reflection vector.
@@ -215,7 +215,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // prefiltered environment and the table fetch stay f32; the noise factor is
 // applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
 // limit) and each width at 0.089^2; the table and the environment keep the
-// material's roughness. The table is read at its nearest texel (no filter).
+// material's roughness. The table is read filtered, as fast (a nearest-texel read costs more on a GPU).
 fn satin_lobe_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a: vec2<f32>) -> weft_half {
     var s = weft_half_spec_ggx_aniso(vf, lf, hf, a);
     if BIDIRECTIONAL {
@@ -253,8 +253,8 @@ fn satin_low(
     // round past it, so it is formed in f32, with the noise (a texel).
     let specular = (vec3<f32>(w1 * f) * f32(lobe1) + vec3<f32>(w2 * f) * f32(lobe2)) * (noise * light);
     let diffuse_kd = max(vec3<weft_half>(1.0) - (w1 + w2) * weft_half_f_schlick(f0, weft_half(n_dot_v)), vec3<weft_half>(0.0));
-    let e1 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut_nearest(n_dot_v, roughness))) * w1;
-    let e2 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut_nearest(n_dot_v, roughness2))) * w2;
+    let e1 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut(n_dot_v, roughness))) * w1;
+    let e2 = vec3<weft_half>(weft_env_brdf_from_lut(f0_in, weft_env_brdf_lut(n_dot_v, roughness2))) * w2;
     let r_env = select(roughness2, roughness, max(e1.x, max(e1.y, e1.z)) >= max(e2.x, max(e2.y, e2.z)));
     let indirect_specular = satin_env(frame, v, anisotropy, r_env) * vec3<f32>(e1 + e2) * noise;
     let ambient_kd = max(vec3<weft_half>(1.0) - e1 - e2, vec3<weft_half>(0.0));

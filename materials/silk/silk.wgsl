@@ -16,13 +16,14 @@
 //                          lerp with isotropic GGX + Smith by the mask
 //             ggx          normalised anisotropic GGX + height-correlated Smith
 //             + split-sum LUT along reflect(-v, bent normal).
-//   fast      (default, approximates reference) the reference with the
-//             split-sum LUT read at its nearest texel (no bilinear filter,
-//             weft_env_brdf_lut_nearest). Other substitutions measured were
-//             no cheaper on the benchmark (fewer divisions / square roots in
-//             the lobes, skipping half of the hair mix) or further than FLIP
-//             0.05 (no bent normal: 0.21; GGX for Ward's Beckmann: 0.09;
-//             analytic environment-BRDF fits). Figures in README.md.
+//   fast      (default, approximates reference) the reference's code. It
+//             read the split-sum LUT at its nearest texel until 2026-11-28:
+//             cheaper on llvmpipe, dearer on a GPU (the sampler filters for
+//             free; the rounding is ALU). Other substitutions measured were
+//             no cheaper (fewer divisions / square roots in the lobes,
+//             skipping half of the hair mix) or further than FLIP 0.05 (no
+//             bent normal: 0.21; GGX for Ward's Beckmann: 0.09; analytic
+//             environment-BRDF fits). Figures in README.md.
 //   seed      a look (look = true), not an approximation: the seed's lobes,
 //             ward         the seed's AnisoD_Ward (Ward 1992, the seed's widths
 //                          5 (1 - s)^2 / aspect, 5 (1 - s)^2 aspect) x Schlick F
@@ -38,7 +39,7 @@
 //             roughness floored at 0.089 and each width at 0.089^2; Ward's
 //             lobe stays f32 (its prefactor reaches 1e22); Schlick F, the
 //             diffuse weight and the environment BRDF in weft_half; the
-//             split-sum table at its nearest texel as fast; lighting f32.
+//             split-sum table filtered, as fast; lighting f32.
 // All: Lambert diffuse x (1 - F), L2 SH ambient, metallic workflow.
 
 struct SilkLobe {
@@ -190,14 +191,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         env_brdf = weft_env_brdf_approx(f0, lit.n_dot_v, lobe.ibl_roughness);
         ambient_kd = vec3<f32>(1.0) - weft_f_schlick_roughness(f0, lit.n_dot_v, lobe.ibl_roughness);
     } else {
-        // fast: the table at its nearest texel (no bilinear filter).
-        var scale_bias: vec2<f32>;
-        if WEFT_TIER == TIER_FAST {
-            scale_bias = weft_env_brdf_lut_nearest(lit.n_dot_v, lobe.ibl_roughness);
-        } else {
-            scale_bias = weft_env_brdf_lut(lit.n_dot_v, lobe.ibl_roughness);
-        }
-        env_brdf = weft_env_brdf_from_lut(f0, scale_bias);
+        env_brdf = weft_env_brdf_from_lut(f0, weft_env_brdf_lut(lit.n_dot_v, lobe.ibl_roughness));
         ambient_kd = max(vec3<f32>(1.0) - env_brdf, vec3<f32>(0.0));
         reflect_n = weft_aniso_bent_normal(frame, v, silk_lobe_anisotropy(lobe.alpha), lobe.ibl_roughness);
     }
@@ -213,7 +207,7 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // ---------------------------------------------------------------- low
 // The fast tier's shading with its dimensionless terms in half precision
 // (weft_half): Schlick F, the diffuse weight 1 - F and n.l / pi, the
-// environment BRDF from the split-sum table (nearest texel, as fast) and
+// environment BRDF from the split-sum table (filtered, as fast) and
 // 1 - E. The lobe value comes in f32 (Ward's can exceed f16; the GGX lobes
 // were formed in half and are <= 65504), so F x lobe is formed in f32.
 // Light, SH and the prefiltered environment stay f32.
@@ -226,7 +220,7 @@ fn silk_low(
     let f = weft_half_f_schlick(f0, weft_half(v_dot_h));
     let kd = (vec3<weft_half>(1.0) - f) * (weft_half(n_dot_l_diffuse) * weft_half(WEFT_INV_PI));
     let direct = (diffuse_albedo * vec3<f32>(kd) + vec3<f32>(f) * lobe.value) * light;
-    let lut = saturate(weft_env_brdf_lut_nearest(n_dot_v, lobe.ibl_roughness));
+    let lut = saturate(weft_env_brdf_lut(n_dot_v, lobe.ibl_roughness));
     let env_brdf = f0 * weft_half(lut.x) + vec3<weft_half>(weft_half(lut.y));
     let ambient_kd = max(vec3<weft_half>(1.0) - env_brdf, vec3<weft_half>(0.0));
     let reflect_n = weft_aniso_bent_normal(frame, v, silk_lobe_anisotropy(lobe.alpha), lobe.ibl_roughness);

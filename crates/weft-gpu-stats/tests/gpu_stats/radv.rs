@@ -371,10 +371,11 @@ fn reduction(specialised: u64, generic: u64) -> f64 {
     100.0 * (1.0 - specialised as f64 / generic as f64)
 }
 
-/// Approximation tiers whose modelled cost is above their reference's, with
-/// the reason. The one place they are listed (docs/performance.md quotes
-/// it): the test fails when one is added, and when one is no longer true.
-const COSTLIER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
+/// Approximation tiers whose modelled cost is not below their reference's
+/// (above it, or equal), with the reason. The one place they are listed
+/// (docs/performance.md quotes it): the test fails when one is added, and when
+/// one is no longer true.
+const NOT_CHEAPER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
     (
         "standard",
         "low",
@@ -384,16 +385,16 @@ const COSTLIER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
     (
         "silk",
         "fast",
-        "the split-sum LUT at its nearest texel (coordinate maths in ALU) in place of the filtered fetch",
+        "the reference's code (equal cost): the reference is at the GPU's cost floor, and the \
+         one substitution fast made (a nearest-texel table read) cost more than it saved there",
     ),
-    ("silk", "low", "fast's terms in f16, at f32's cost"),
 ];
 
 #[test]
 fn approximation_tiers_cost_less_than_their_reference() {
     let model = weft_gpu_stats::summarize(&generated(), full(), MODEL_COMMAND)
         .unwrap_or_else(|e| panic!("{e}"));
-    let mut costlier = BTreeSet::new();
+    let mut not_cheaper = BTreeSet::new();
     let mut checked = 0;
     for f in &model.families {
         for t in &f.tiers {
@@ -405,20 +406,21 @@ fn approximation_tiers_cost_less_than_their_reference() {
                 .tier(&t.material, &meta.tiers.reference)
                 .unwrap_or_else(|| panic!("{}: no reference figures", t.material));
             checked += 1;
-            if t.fragment.executed_cost > reference.fragment.executed_cost {
-                costlier.insert((t.material.clone(), t.tier.clone()));
+            if t.fragment.executed_cost >= reference.fragment.executed_cost {
+                not_cheaper.insert((t.material.clone(), t.tier.clone()));
             }
         }
     }
     assert!(checked >= 30, "only {checked} approximation tiers checked");
-    let listed: BTreeSet<(String, String)> = COSTLIER_THAN_REFERENCE
+    let listed: BTreeSet<(String, String)> = NOT_CHEAPER_THAN_REFERENCE
         .iter()
         .map(|(m, t, _)| (m.to_string(), t.to_string()))
         .collect();
     assert_eq!(
-        costlier, listed,
-        "approximation tiers above their reference's modelled cost on navi21 or gfx1100 (left) \
-         against COSTLIER_THAN_REFERENCE (right): make the tier cheaper, or list it with the reason"
+        not_cheaper, listed,
+        "approximation tiers at or above their reference's modelled cost on navi21 or gfx1100 \
+         (left) against NOT_CHEAPER_THAN_REFERENCE (right): make the tier cheaper, or list it \
+         with the reason"
     );
 }
 

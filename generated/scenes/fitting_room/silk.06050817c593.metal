@@ -4,6 +4,7 @@
 
 using metal::uint;
 
+typedef float weft_half;
 struct type_5 {
     metal::float4 inner[9];
 };
@@ -74,13 +75,6 @@ constant float SILK_MIN_ALPHA = 0.001;
 constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 constant float WEFT_MIN_N_DOT_HALF = 0.001;
 constant float WEFT_MIN_ALPHA_HALF = 0.007921;
-
-float weft_pow5_(
-    float x
-) {
-    float x2_ = x * x;
-    return (x2_ * x2_) * x;
-}
 
 float weft_clamp_cos(
     float c
@@ -234,9 +228,9 @@ metal::float3x3 weft_tangent_frame(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame,
-    metal::float3 x_1
+    metal::float3 x
 ) {
-    return metal::float3(metal::dot(frame[0], x_1), metal::dot(frame[1], x_1), metal::dot(frame[2], x_1));
+    return metal::float3(metal::dot(frame[0], x), metal::dot(frame[1], x), metal::dot(frame[2], x));
 }
 
 metal::float3 weft_aniso_bent_normal(
@@ -263,6 +257,13 @@ float silk_lobe_anisotropy(
     return (at - ab) / (at + ab);
 }
 
+weft_half weft_half_pow5_(
+    weft_half x_1
+) {
+    weft_half x2_ = x_1 * x_1;
+    return (x2_ * x2_) * x_1;
+}
+
 metal::float3 weft_safe_normalize_k3_(
     metal::float3 v_4
 ) {
@@ -270,39 +271,63 @@ metal::float3 weft_safe_normalize_k3_(
     return (len2_3 > 0.00000000000000000001) ? (v_4 * metal::rsqrt(metal::max(len2_3, 0.00000000000000000001))) : metal::float3(0.0);
 }
 
-metal::float3 weft_f_schlick_k7_(
-    float v_dot_h
+metal::float3 weft_half_f_schlick_k9_(
+    weft_half v_dot_h
 ) {
-    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
+    weft_half _e5 = weft_half_pow5_(1.0 - v_dot_h);
     return metal::float3(0.14609632, 0.10047833, 0.11062463) + (metal::float3(0.85390365, 0.89952165, 0.8893754) * _e5);
 }
 
-metal::float3 weft_env_brdf_from_lut_k9_(
-    metal::float2 scale_bias_1
+metal::float3 silk_low_k7_(
+    metal::float3x3 frame_2,
+    metal::float3 n_spec,
+    metal::float3 n_diff,
+    metal::float3 v_5,
+    float n_dot_v_1,
+    float v_dot_h_1,
+    float n_dot_l_diffuse,
+    SilkLobe lobe_1,
+    metal::float3 light,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 sb = metal::saturate(scale_bias_1);
-    return (metal::float3(0.14609632, 0.10047833, 0.11062463) * sb.x) + metal::float3(sb.y);
+    metal::float3 _e13 = weft_half_f_schlick_k9_(static_cast<float>(v_dot_h_1));
+    metal::float3 kd = (metal::float3(1.0) - _e13) * (static_cast<float>(n_dot_l_diffuse) * 0.31830987);
+    metal::float3 direct = ((metal::float3(0.45638528, 0.27391332, 0.3144985) * static_cast<metal::float3>(kd)) + (static_cast<metal::float3>(_e13) * lobe_1.value)) * light;
+    metal::float2 _e28 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness, weft_brdf_lut, weft_lut_sampler);
+    metal::float2 lut = metal::saturate(_e28);
+    metal::float3 env_brdf_1 = (metal::float3(0.14609632, 0.10047833, 0.11062463) * static_cast<float>(lut.x)) + metal::float3(static_cast<float>(lut.y));
+    metal::float3 ambient_kd_1 = metal::max(metal::float3(1.0) - env_brdf_1, metal::float3(0.0));
+    float _e42 = silk_lobe_anisotropy(lobe_1.alpha);
+    metal::float3 _e44 = weft_aniso_bent_normal(frame_2, v_5, _e42, lobe_1.ibl_roughness);
+    metal::float3 _e48 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e44), lobe_1.ibl_roughness, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e51 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 indirect = (_e48 * static_cast<metal::float3>(env_brdf_1)) + ((_e51 * static_cast<metal::float3>(ambient_kd_1)) * metal::float3(0.45638528, 0.27391332, 0.3144985));
+    return metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
 }
 
-metal::float3 weft_normal_from_tangent_space_k11_(
-    metal::float3x3 frame_2
+metal::float3 weft_normal_from_tangent_space_k10_(
+    metal::float3x3 frame_3
 ) {
-    metal::float3 _e4 = weft_safe_normalize(frame_2 * metal::float3(metal::float2(0.002352977, 0.002352977), 1.0), frame_2[2]);
+    metal::float3 _e4 = weft_safe_normalize(frame_3 * metal::float3(metal::float2(0.002352977, 0.002352977), 1.0), frame_3[2]);
     return _e4;
 }
 
-float silk_ward_bounded_k13_(
-    metal::float3 v_5,
+float silk_ward_bounded_k12_(
+    metal::float3 v_6,
     metal::float3 l
 ) {
     bool local = {};
-    metal::float3 hv = v_5 + l;
+    metal::float3 hv = v_6 + l;
     float hn = metal::max(hv.z, 0.0001);
     float hn2_ = hn * hn;
     float x_2 = hv.x / 0.20215853;
     float y = hv.y / 0.047507256;
     float f = (metal::dot(hv, hv) / ((0.030171847 * hn2_) * hn2_)) * metal::exp(-(((x_2 * x_2) + (y * y))) / hn2_);
-    if (v_5.z > 0.0) {
+    if (v_6.z > 0.0) {
         local = l.z > 0.0;
     } else {
         local = false;
@@ -377,57 +402,30 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
-    metal::float2 scale_bias = {};
     WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
-    metal::float3 v_6 = _e11.v;
+    metal::float3 v_7 = _e11.v;
     metal::float3 n_geo = _e11.n;
     metal::float3x3 _e15 = weft_tangent_frame(n_geo, in_1.world_tangent);
-    metal::float3 _e17 = weft_normal_from_tangent_space_k11_(_e15);
+    metal::float3 _e17 = weft_normal_from_tangent_space_k10_(_e15);
     fibre = _e15[0];
     metal::float3 _e20 = fibre;
     metal::float3x3 _e24 = weft_tangent_frame(_e17, metal::float4(_e20, in_1.world_tangent.w));
-    WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_6, weft_frame);
-    metal::float3 _e26 = weft_aniso_to_frame(_e24, v_6);
+    WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_7, weft_frame);
+    metal::float3 _e26 = weft_aniso_to_frame(_e24, v_7);
     metal::float3 _e28 = weft_aniso_to_frame(_e24, _e25.l);
     {
         lobe.alpha = metal::float2(0.20215853, 0.047507256);
         lobe.ibl_roughness = 0.3130495;
         {
-            float _e36 = silk_ward_bounded_k13_(_e26, _e28);
+            float _e36 = silk_ward_bounded_k12_(_e26, _e28);
             lobe.value = _e36 * _e25.n_dot_l;
         }
     }
     metal::float3 _e39 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_geo, _e25.l));
-    metal::float3 _e44 = weft_f_schlick_k7_(_e25.v_dot_h);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e44) * metal::float3(0.14527194, 0.08718932, 0.10010798)) * n_dot_l_diffuse;
-    float _e51 = lobe.value;
-    metal::float3 direct = (diffuse + (_e44 * _e51)) * _e39;
-    reflect_n = _e17;
+    float n_dot_l_diffuse_1 = metal::saturate(metal::dot(n_geo, _e25.l));
     {
-        {
-            float _e61 = lobe.ibl_roughness;
-            metal::float2 _e62 = weft_env_brdf_lut(_e25.n_dot_v, _e61, weft_brdf_lut, weft_lut_sampler);
-            scale_bias = _e62;
-        }
-        metal::float2 _e63 = scale_bias;
-        metal::float3 _e64 = weft_env_brdf_from_lut_k9_(_e63);
-        env_brdf = _e64;
-        metal::float3 _e66 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e66, metal::float3(0.0));
-        metal::float2 _e71 = lobe.alpha;
-        float _e72 = silk_lobe_anisotropy(_e71);
-        float _e74 = lobe.ibl_roughness;
-        metal::float3 _e75 = weft_aniso_bent_normal(_e24, v_6, _e72, _e74);
-        reflect_n = _e75;
+        SilkLobe _e45 = lobe;
+        metal::float3 _e46 = silk_low_k7_(_e24, _e17, n_geo, v_7, _e25.n_dot_v, _e25.v_dot_h, n_dot_l_diffuse_1, _e45, _e39, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
+        return fs_mainOutput { metal::float4(_e46, 1.0) };
     }
-    metal::float3 _e77 = reflect_n;
-    float _e80 = lobe.ibl_roughness;
-    metal::float3 _e81 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e77), _e80, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e82 = env_brdf;
-    metal::float3 _e84 = weft_sh_irradiance(n_geo, weft_frame);
-    metal::float3 _e85 = ambient_kd;
-    metal::float3 indirect = (_e81 * _e82) + ((_e84 * _e85) * metal::float3(0.45638528, 0.27391332, 0.3144985));
-    metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
-    return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

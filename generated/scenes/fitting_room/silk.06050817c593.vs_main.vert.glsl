@@ -75,11 +75,6 @@ layout(location = 1) smooth out vec3 _vs2fs_location1;
 layout(location = 2) smooth out vec4 _vs2fs_location2;
 layout(location = 3) smooth out vec2 _vs2fs_location3;
 
-float weft_pow5_(float x) {
-    float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
-
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
@@ -174,8 +169,8 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     return mat3x3(t, b_1, n_3);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
-    return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x) {
+    return vec3(dot(frame[0], x), dot(frame[1], x), dot(frame[2], x));
 }
 
 vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_3, float anisotropy, float roughness_3) {
@@ -195,35 +190,35 @@ float silk_lobe_anisotropy(vec2 alpha) {
     return ((at - ab) / (at + ab));
 }
 
+float weft_half_pow5_(float x_1) {
+    float x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
 vec3 weft_safe_normalize_k3_(vec3 v_4) {
     float len2_3 = dot(v_4, v_4);
     return ((len2_3 > 1e-20) ? (v_4 * inversesqrt(max(len2_3, 1e-20))) : vec3(0.0));
 }
 
-vec3 weft_f_schlick_k7_(float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+vec3 weft_half_f_schlick_k9_(float v_dot_h) {
+    float _e5 = weft_half_pow5_((1.0 - v_dot_h));
     return (vec3(0.14609632, 0.10047833, 0.11062463) + (vec3(0.85390365, 0.89952165, 0.8893754) * _e5));
 }
 
-vec3 weft_env_brdf_from_lut_k9_(vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
-    return ((vec3(0.14609632, 0.10047833, 0.11062463) * sb.x) + vec3(sb.y));
-}
-
-vec3 weft_normal_from_tangent_space_k11_(mat3x3 frame_2) {
-    vec3 _e4 = weft_safe_normalize((frame_2 * vec3(vec2(0.002352977, 0.002352977), 1.0)), frame_2[2]);
+vec3 weft_normal_from_tangent_space_k10_(mat3x3 frame_3) {
+    vec3 _e4 = weft_safe_normalize((frame_3 * vec3(vec2(0.002352977, 0.002352977), 1.0)), frame_3[2]);
     return _e4;
 }
 
-float silk_ward_bounded_k13_(vec3 v_5, vec3 l) {
+float silk_ward_bounded_k12_(vec3 v_6, vec3 l) {
     bool local = false;
-    vec3 hv = (v_5 + l);
+    vec3 hv = (v_6 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / 0.20215853);
     float y = (hv.y / 0.047507256);
     float f = ((dot(hv, hv) / ((0.030171847 * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_5.z > 0.0)) {
+    if ((v_6.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;

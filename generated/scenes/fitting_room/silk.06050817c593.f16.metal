@@ -4,7 +4,8 @@
 
 using metal::uint;
 
-struct type_4 {
+typedef half weft_half;
+struct type_5 {
     metal::float4 inner[9];
 };
 struct WeftFrame {
@@ -13,7 +14,7 @@ struct WeftFrame {
     metal::float4 camera_position;
     metal::float4 light_direction;
     metal::float4 light_color;
-    type_4 sh;
+    type_5 sh;
     metal::float4 params;
     metal::float4 viewport;
 };
@@ -75,13 +76,6 @@ constant float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 constant float WEFT_MIN_N_DOT_HALF = 0.001;
 constant float WEFT_MIN_ALPHA_HALF = 0.007921;
 
-float weft_pow5_(
-    float x
-) {
-    float x2_ = x * x;
-    return (x2_ * x2_) * x;
-}
-
 float weft_clamp_cos(
     float c
 ) {
@@ -132,7 +126,7 @@ metal::float3 weft_sh_irradiance(
     constant WeftFrame& weft_frame
 ) {
     metal::float3 e = {};
-    type_4 sh = weft_frame.sh;
+    type_5 sh = weft_frame.sh;
     e = sh.inner[0].xyz * 0.282095;
     metal::float3 _e9 = e;
     e = _e9 + (sh.inner[1].xyz * (0.488603 * n_1.y));
@@ -234,9 +228,9 @@ metal::float3x3 weft_tangent_frame(
 
 metal::float3 weft_aniso_to_frame(
     metal::float3x3 frame,
-    metal::float3 x_1
+    metal::float3 x
 ) {
-    return metal::float3(metal::dot(frame[0], x_1), metal::dot(frame[1], x_1), metal::dot(frame[2], x_1));
+    return metal::float3(metal::dot(frame[0], x), metal::dot(frame[1], x), metal::dot(frame[2], x));
 }
 
 metal::float3 weft_aniso_bent_normal(
@@ -263,6 +257,13 @@ float silk_lobe_anisotropy(
     return (at - ab) / (at + ab);
 }
 
+weft_half weft_half_pow5_(
+    weft_half x_1
+) {
+    weft_half x2_ = x_1 * x_1;
+    return (x2_ * x2_) * x_1;
+}
+
 metal::float3 weft_safe_normalize_k3_(
     metal::float3 v_4
 ) {
@@ -270,56 +271,69 @@ metal::float3 weft_safe_normalize_k3_(
     return (len2_3 > 0.00000000000000000001) ? (v_4 * metal::rsqrt(metal::max(len2_3, 0.00000000000000000001))) : metal::float3(0.0);
 }
 
-metal::float3 weft_f_schlick_k7_(
-    float v_dot_h
+metal::half3 weft_half_f_schlick_k9_(
+    weft_half v_dot_h
 ) {
-    float _e5 = weft_pow5_(1.0 - metal::saturate(v_dot_h));
-    return metal::float3(0.04, 0.04, 0.04) + (metal::float3(0.96, 0.96, 0.96) * _e5);
+    weft_half _e5 = weft_half_pow5_(1.0h - v_dot_h);
+    return metal::half3(0.14611816h, 0.10046387h, 0.1105957h) + (metal::half3(0.8540039h, 0.89941406h, 0.88964844h) * _e5);
 }
 
-metal::float3 weft_env_brdf_from_lut_k9_(
-    metal::float2 scale_bias_1
+metal::float3 silk_low_k7_(
+    metal::float3x3 frame_2,
+    metal::float3 n_spec,
+    metal::float3 n_diff,
+    metal::float3 v_5,
+    float n_dot_v_1,
+    float v_dot_h_1,
+    float n_dot_l_diffuse,
+    SilkLobe lobe_1,
+    metal::float3 light,
+    constant WeftFrame& weft_frame,
+    metal::texturecube<float, metal::access::sample> weft_environment,
+    metal::sampler weft_environment_sampler,
+    metal::texture2d<float, metal::access::sample> weft_brdf_lut,
+    metal::sampler weft_lut_sampler
 ) {
-    metal::float2 sb = metal::saturate(scale_bias_1);
-    return (metal::float3(0.04, 0.04, 0.04) * sb.x) + metal::float3(sb.y);
+    metal::half3 _e13 = weft_half_f_schlick_k9_(static_cast<half>(v_dot_h_1));
+    metal::half3 kd = (metal::half3(1.0h) - _e13) * (static_cast<half>(n_dot_l_diffuse) * 0.31835938h);
+    metal::float3 direct = ((metal::float3(0.45638528, 0.27391332, 0.3144985) * static_cast<metal::float3>(kd)) + (static_cast<metal::float3>(_e13) * lobe_1.value)) * light;
+    metal::float2 _e28 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness, weft_brdf_lut, weft_lut_sampler);
+    metal::float2 lut = metal::saturate(_e28);
+    metal::half3 env_brdf_1 = (metal::half3(0.14611816h, 0.10046387h, 0.1105957h) * static_cast<half>(lut.x)) + metal::half3(static_cast<half>(lut.y));
+    metal::half3 ambient_kd_1 = metal::max(metal::half3(1.0h) - env_brdf_1, metal::half3(0.0h));
+    float _e42 = silk_lobe_anisotropy(lobe_1.alpha);
+    metal::float3 _e44 = weft_aniso_bent_normal(frame_2, v_5, _e42, lobe_1.ibl_roughness);
+    metal::float3 _e48 = weft_prefiltered_radiance(metal::reflect(-(v_5), _e44), lobe_1.ibl_roughness, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 _e51 = weft_sh_irradiance(n_diff, weft_frame);
+    metal::float3 indirect = (_e48 * static_cast<metal::float3>(env_brdf_1)) + ((_e51 * static_cast<metal::float3>(ambient_kd_1)) * metal::float3(0.45638528, 0.27391332, 0.3144985));
+    return metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
 }
 
-metal::float3 weft_normal_from_tangent_space_k11_(
-    metal::float3x3 frame_2
+metal::float3 weft_normal_from_tangent_space_k10_(
+    metal::float3x3 frame_3
 ) {
-    metal::float3 _e4 = weft_safe_normalize(frame_2 * metal::float3(metal::float2(0.003921628, 0.003921628), 1.0), frame_2[2]);
+    metal::float3 _e4 = weft_safe_normalize(frame_3 * metal::float3(metal::float2(0.002352977, 0.002352977), 1.0), frame_3[2]);
     return _e4;
 }
 
-float weft_v_smith_ggx_aniso_correlated_k12_(
-    metal::float3 v_5,
+float silk_ward_bounded_k12_(
+    metal::float3 v_6,
     metal::float3 l
 ) {
-    float _e5 = weft_clamp_cos(v_5.z);
-    float _e7 = weft_clamp_cos(l.z);
-    float lv = _e7 * metal::length(metal::float3(0.23174134 * v_5.x, 0.06475432 * v_5.y, _e5));
-    float ll = _e5 * metal::length(metal::float3(0.23174134 * l.x, 0.06475432 * l.y, _e7));
-    return 0.5 / (lv + ll);
-}
-
-float weft_aniso_ggx_q_k14_(
-    float t_dot_h,
-    float b_dot_h,
-    float n_dot_h
-) {
-    float x_2 = t_dot_h / 0.23174134;
-    float y = b_dot_h / 0.06475432;
-    return metal::max(((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h), 0.000001);
-}
-
-float weft_d_ggx_aniso_k13_(
-    float t_dot_h_1,
-    float b_dot_h_1,
-    float n_dot_h_1
-) {
-    float _e7 = weft_aniso_ggx_q_k14_(t_dot_h_1, b_dot_h_1, n_dot_h_1);
-    float d = 1.0 / ((0.047143534 * _e7) * _e7);
-    return (n_dot_h_1 > 0.0) ? d : 0.0;
+    bool local = {};
+    metal::float3 hv = v_6 + l;
+    float hn = metal::max(hv.z, 0.0001);
+    float hn2_ = hn * hn;
+    float x_2 = hv.x / 0.20215853;
+    float y = hv.y / 0.047507256;
+    float f = (metal::dot(hv, hv) / ((0.030171847 * hn2_) * hn2_)) * metal::exp(-(((x_2 * x_2) + (y * y))) / hn2_);
+    if (v_6.z > 0.0) {
+        local = l.z > 0.0;
+    } else {
+        local = false;
+    }
+    bool _e35 = local;
+    return _e35 ? f : 0.0;
 }
 
 struct vs_mainInput {
@@ -388,65 +402,30 @@ fragment fs_mainOutput fs_main(
     metal::float3 env_brdf = {};
     metal::float3 ambient_kd = {};
     metal::float3 reflect_n = {};
-    metal::float2 scale_bias = {};
     WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal, weft_frame);
-    metal::float3 v_6 = _e11.v;
+    metal::float3 v_7 = _e11.v;
     metal::float3 n_geo = _e11.n;
     metal::float3x3 _e15 = weft_tangent_frame(n_geo, in_1.world_tangent);
-    metal::float3 _e17 = weft_normal_from_tangent_space_k11_(_e15);
+    metal::float3 _e17 = weft_normal_from_tangent_space_k10_(_e15);
     fibre = _e15[0];
     metal::float3 _e20 = fibre;
     metal::float3x3 _e24 = weft_tangent_frame(_e17, metal::float4(_e20, in_1.world_tangent.w));
-    WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_6, weft_frame);
-    metal::float3 _e26 = weft_aniso_to_frame(_e24, v_6);
+    WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_7, weft_frame);
+    metal::float3 _e26 = weft_aniso_to_frame(_e24, v_7);
     metal::float3 _e28 = weft_aniso_to_frame(_e24, _e25.l);
-    metal::float3 _e30 = weft_aniso_to_frame(_e24, _e25.h);
     {
+        lobe.alpha = metal::float2(0.20215853, 0.047507256);
+        lobe.ibl_roughness = 0.3130495;
         {
-            lobe.alpha = metal::float2(0.23174134, 0.06475432);
-            lobe.ibl_roughness = 0.35000002;
-            {
-                {
-                    float _e37 = weft_v_smith_ggx_aniso_correlated_k12_(_e26, _e28);
-                    vis = _e37;
-                }
-                float _e42 = weft_d_ggx_aniso_k13_(_e30.x, _e30.y, _e30.z);
-                float _e43 = vis;
-                lobe.value = (_e42 * _e43) * _e25.n_dot_l;
-            }
+            float _e36 = silk_ward_bounded_k12_(_e26, _e28);
+            lobe.value = _e36 * _e25.n_dot_l;
         }
     }
-    metal::float3 _e47 = weft_main_light_radiance(weft_frame);
-    float n_dot_l_diffuse = metal::saturate(metal::dot(n_geo, _e25.l));
-    metal::float3 _e52 = weft_f_schlick_k7_(_e25.v_dot_h);
-    metal::float3 diffuse = ((metal::float3(1.0) - _e52) * metal::float3(0.222817, 0.14323957, 0.031830948)) * n_dot_l_diffuse;
-    float _e59 = lobe.value;
-    metal::float3 direct = (diffuse + (_e52 * _e59)) * _e47;
-    reflect_n = _e17;
+    metal::float3 _e39 = weft_main_light_radiance(weft_frame);
+    float n_dot_l_diffuse_1 = metal::saturate(metal::dot(n_geo, _e25.l));
     {
-        {
-            float _e69 = lobe.ibl_roughness;
-            metal::float2 _e70 = weft_env_brdf_lut(_e25.n_dot_v, _e69, weft_brdf_lut, weft_lut_sampler);
-            scale_bias = _e70;
-        }
-        metal::float2 _e71 = scale_bias;
-        metal::float3 _e72 = weft_env_brdf_from_lut_k9_(_e71);
-        env_brdf = _e72;
-        metal::float3 _e74 = env_brdf;
-        ambient_kd = metal::max(metal::float3(1.0) - _e74, metal::float3(0.0));
-        metal::float2 _e79 = lobe.alpha;
-        float _e80 = silk_lobe_anisotropy(_e79);
-        float _e82 = lobe.ibl_roughness;
-        metal::float3 _e83 = weft_aniso_bent_normal(_e24, v_6, _e80, _e82);
-        reflect_n = _e83;
+        SilkLobe _e45 = lobe;
+        metal::float3 _e46 = silk_low_k7_(_e24, _e17, n_geo, v_7, _e25.n_dot_v, _e25.v_dot_h, n_dot_l_diffuse_1, _e45, _e39, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
+        return fs_mainOutput { metal::float4(_e46, 1.0) };
     }
-    metal::float3 _e85 = reflect_n;
-    float _e88 = lobe.ibl_roughness;
-    metal::float3 _e89 = weft_prefiltered_radiance(metal::reflect(-(v_6), _e85), _e88, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 _e90 = env_brdf;
-    metal::float3 _e92 = weft_sh_irradiance(n_geo, weft_frame);
-    metal::float3 _e93 = ambient_kd;
-    metal::float3 indirect = (_e89 * _e90) + ((_e92 * _e93) * metal::float3(0.7000003, 0.4500004, 0.099999875));
-    metal::float3 radiance = metal::clamp(direct + indirect, metal::float3(0.0), metal::float3(65504.0));
-    return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

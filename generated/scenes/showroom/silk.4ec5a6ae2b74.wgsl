@@ -221,35 +221,37 @@ fn weft_safe_normalize_k3_(v_4: vec3<f32>) -> vec3<f32> {
 
 fn weft_f_schlick_k7_(v_dot_h: f32) -> vec3<f32> {
     let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
-    return (vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f) + (vec3<f32>(0.85390365f, 0.89952165f, 0.8893754f) * _e5));
+    return (vec3<f32>(0.04f, 0.04f, 0.04f) + (vec3<f32>(0.96f, 0.96f, 0.96f) * _e5));
 }
 
-fn weft_env_brdf_from_lut_k9_(scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
-    return ((vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f) * sb.x) + vec3(sb.y));
+fn weft_env_brdf_from_lut_k9_(scale_bias: vec2<f32>) -> vec3<f32> {
+    let sb = saturate(scale_bias);
+    return ((vec3<f32>(0.04f, 0.04f, 0.04f) * sb.x) + vec3(sb.y));
 }
 
 fn weft_normal_from_tangent_space_k11_(frame_2: mat3x3<f32>) -> vec3<f32> {
-    let _e4 = weft_safe_normalize((frame_2 * vec3<f32>(vec2<f32>(0.002352977f, 0.002352977f), 1f)), frame_2[2]);
+    let _e4 = weft_safe_normalize((frame_2 * vec3<f32>(vec2<f32>(0.003921628f, 0.003921628f), 1f)), frame_2[2]);
     return _e4;
 }
 
-fn silk_ward_bounded_k13_(v_5: vec3<f32>, l: vec3<f32>) -> f32 {
-    var local: bool;
+fn weft_v_smith_ggx_aniso_correlated_k12_(v_5: vec3<f32>, l: vec3<f32>) -> f32 {
+    let _e5 = weft_clamp_cos(v_5.z);
+    let _e7 = weft_clamp_cos(l.z);
+    let lv = (_e7 * length(vec3<f32>((0.23174134f * v_5.x), (0.06475432f * v_5.y), _e5)));
+    let ll = (_e5 * length(vec3<f32>((0.23174134f * l.x), (0.06475432f * l.y), _e7)));
+    return (0.5f / (lv + ll));
+}
 
-    let hv = (v_5 + l);
-    let hn = max(hv.z, 0.0001f);
-    let hn2_ = (hn * hn);
-    let x_2 = (hv.x / 0.20215853f);
-    let y = (hv.y / 0.047507256f);
-    let f = ((dot(hv, hv) / ((0.030171847f * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if (v_5.z > 0f) {
-        local = (l.z > 0f);
-    } else {
-        local = false;
-    }
-    let _e35 = local;
-    return select(0f, f, _e35);
+fn weft_aniso_ggx_q_k14_(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32) -> f32 {
+    let x_2 = (t_dot_h / 0.23174134f);
+    let y = (b_dot_h / 0.06475432f);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
+}
+
+fn weft_d_ggx_aniso_k13_(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32) -> f32 {
+    let _e7 = weft_aniso_ggx_q_k14_(t_dot_h_1, b_dot_h_1, n_dot_h_1);
+    let d = (1f / ((0.047143534f * _e7) * _e7));
+    return select(0f, d, (n_dot_h_1 > 0f));
 }
 
 @vertex 
@@ -283,7 +285,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e11 = weft_surface(in_1.world_position, in_1.world_normal);
     let v_6 = _e11.v;
@@ -296,45 +297,49 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e25 = weft_main_light_geometry(_e17, v_6);
     let _e26 = weft_aniso_to_frame(_e24, v_6);
     let _e28 = weft_aniso_to_frame(_e24, _e25.l);
+    let _e30 = weft_aniso_to_frame(_e24, _e25.h);
     {
-        lobe.alpha = vec2<f32>(0.20215853f, 0.047507256f);
-        lobe.ibl_roughness = 0.3130495f;
         {
-            let _e36 = silk_ward_bounded_k13_(_e26, _e28);
-            lobe.value = (_e36 * _e25.n_dot_l);
+            lobe.alpha = vec2<f32>(0.23174134f, 0.06475432f);
+            lobe.ibl_roughness = 0.35000002f;
+            {
+                {
+                    let _e37 = weft_v_smith_ggx_aniso_correlated_k12_(_e26, _e28);
+                    vis = _e37;
+                }
+                let _e42 = weft_d_ggx_aniso_k13_(_e30.x, _e30.y, _e30.z);
+                let _e43 = vis;
+                lobe.value = ((_e42 * _e43) * _e25.n_dot_l);
+            }
         }
     }
-    let _e39 = weft_main_light_radiance();
+    let _e47 = weft_main_light_radiance();
     let n_dot_l_diffuse = saturate(dot(n_geo, _e25.l));
-    let _e44 = weft_f_schlick_k7_(_e25.v_dot_h);
-    let diffuse = (((vec3(1f) - _e44) * vec3<f32>(0.14527194f, 0.08718932f, 0.10010798f)) * n_dot_l_diffuse);
-    let _e51 = lobe.value;
-    let direct = ((diffuse + (_e44 * _e51)) * _e39);
+    let _e52 = weft_f_schlick_k7_(_e25.v_dot_h);
+    let diffuse = (((vec3(1f) - _e52) * vec3<f32>(0.222817f, 0.14323957f, 0.031830948f)) * n_dot_l_diffuse);
+    let _e59 = lobe.value;
+    let direct = ((diffuse + (_e52 * _e59)) * _e47);
     reflect_n = _e17;
     {
-        {
-            let _e61 = lobe.ibl_roughness;
-            let _e62 = weft_env_brdf_lut(_e25.n_dot_v, _e61);
-            scale_bias = _e62;
-        }
-        let _e63 = scale_bias;
-        let _e64 = weft_env_brdf_from_lut_k9_(_e63);
-        env_brdf = _e64;
-        let _e66 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e66), vec3(0f));
-        let _e71 = lobe.alpha;
-        let _e72 = silk_lobe_anisotropy(_e71);
-        let _e74 = lobe.ibl_roughness;
-        let _e75 = weft_aniso_bent_normal(_e24, v_6, _e72, _e74);
-        reflect_n = _e75;
+        let _e68 = lobe.ibl_roughness;
+        let _e69 = weft_env_brdf_lut(_e25.n_dot_v, _e68);
+        let _e70 = weft_env_brdf_from_lut_k9_(_e69);
+        env_brdf = _e70;
+        let _e72 = env_brdf;
+        ambient_kd = max((vec3(1f) - _e72), vec3(0f));
+        let _e77 = lobe.alpha;
+        let _e78 = silk_lobe_anisotropy(_e77);
+        let _e80 = lobe.ibl_roughness;
+        let _e81 = weft_aniso_bent_normal(_e24, v_6, _e78, _e80);
+        reflect_n = _e81;
     }
-    let _e77 = reflect_n;
-    let _e80 = lobe.ibl_roughness;
-    let _e81 = weft_prefiltered_radiance(reflect(-(v_6), _e77), _e80);
-    let _e82 = env_brdf;
-    let _e84 = weft_sh_irradiance(n_geo);
-    let _e85 = ambient_kd;
-    let indirect = ((_e81 * _e82) + ((_e84 * _e85) * vec3<f32>(0.45638528f, 0.27391332f, 0.3144985f)));
+    let _e83 = reflect_n;
+    let _e86 = lobe.ibl_roughness;
+    let _e87 = weft_prefiltered_radiance(reflect(-(v_6), _e83), _e86);
+    let _e88 = env_brdf;
+    let _e90 = weft_sh_irradiance(n_geo);
+    let _e91 = ambient_kd;
+    let indirect = ((_e87 * _e88) + ((_e90 * _e91) * vec3<f32>(0.7000003f, 0.4500004f, 0.099999875f)));
     let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -81,11 +81,6 @@ var weft_lut_sampler: sampler;
 @group(2) @binding(0) 
 var<uniform> weft_object: WeftObject;
 
-fn weft_pow5_(x: f32) -> f32 {
-    let x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
-
 fn weft_clamp_cos(c: f32) -> f32 {
     return clamp(c, WEFT_MIN_N_DOT, 1f);
 }
@@ -193,8 +188,8 @@ fn weft_tangent_frame(n_3: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(t, b_1, n_3);
 }
 
-fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+fn weft_aniso_to_frame(frame: mat3x3<f32>, x: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(frame[0], x), dot(frame[1], x), dot(frame[2], x));
 }
 
 fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_3: vec3<f32>, anisotropy: f32, roughness_3: f32) -> vec3<f32> {
@@ -214,44 +209,58 @@ fn silk_lobe_anisotropy(alpha: vec2<f32>) -> f32 {
     return ((at - ab) / (at + ab));
 }
 
+fn weft_half_pow5_(x_1: f32) -> f32 {
+    let x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
 fn weft_safe_normalize_k3_(v_4: vec3<f32>) -> vec3<f32> {
     let len2_3 = dot(v_4, v_4);
     return select(vec3(0f), (v_4 * inverseSqrt(max(len2_3, 0.00000000000000000001f))), (len2_3 > 0.00000000000000000001f));
 }
 
-fn weft_f_schlick_k7_(v_dot_h: f32) -> vec3<f32> {
-    let _e5 = weft_pow5_((1f - saturate(v_dot_h)));
-    return (vec3<f32>(0.04f, 0.04f, 0.04f) + (vec3<f32>(0.96f, 0.96f, 0.96f) * _e5));
+fn weft_half_f_schlick_k9_(v_dot_h: f32) -> vec3<f32> {
+    let _e5 = weft_half_pow5_((1f - v_dot_h));
+    return (vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f) + (vec3<f32>(0.85390365f, 0.89952165f, 0.8893754f) * _e5));
 }
 
-fn weft_env_brdf_from_lut_k9_(scale_bias_1: vec2<f32>) -> vec3<f32> {
-    let sb = saturate(scale_bias_1);
-    return ((vec3<f32>(0.04f, 0.04f, 0.04f) * sb.x) + vec3(sb.y));
+fn silk_low_k7_(frame_2: mat3x3<f32>, n_spec: vec3<f32>, n_diff: vec3<f32>, v_5: vec3<f32>, n_dot_v_1: f32, v_dot_h_1: f32, n_dot_l_diffuse: f32, lobe_1: SilkLobe, light: vec3<f32>) -> vec3<f32> {
+    let _e13 = weft_half_f_schlick_k9_(f32(v_dot_h_1));
+    let kd = ((vec3(1f) - _e13) * (f32(n_dot_l_diffuse) * 0.31830987f));
+    let direct = (((vec3<f32>(0.45638528f, 0.27391332f, 0.3144985f) * vec3<f32>(kd)) + (vec3<f32>(_e13) * lobe_1.value)) * light);
+    let _e28 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
+    let lut = saturate(_e28);
+    let env_brdf_1 = ((vec3<f32>(0.14609632f, 0.10047833f, 0.11062463f) * f32(lut.x)) + vec3(f32(lut.y)));
+    let ambient_kd_1 = max((vec3(1f) - env_brdf_1), vec3(0f));
+    let _e42 = silk_lobe_anisotropy(lobe_1.alpha);
+    let _e44 = weft_aniso_bent_normal(frame_2, v_5, _e42, lobe_1.ibl_roughness);
+    let _e48 = weft_prefiltered_radiance(reflect(-(v_5), _e44), lobe_1.ibl_roughness);
+    let _e51 = weft_sh_irradiance(n_diff);
+    let indirect = ((_e48 * vec3<f32>(env_brdf_1)) + ((_e51 * vec3<f32>(ambient_kd_1)) * vec3<f32>(0.45638528f, 0.27391332f, 0.3144985f)));
+    return clamp((direct + indirect), vec3(0f), vec3(65504f));
 }
 
-fn weft_normal_from_tangent_space_k11_(frame_2: mat3x3<f32>) -> vec3<f32> {
-    let _e4 = weft_safe_normalize((frame_2 * vec3<f32>(vec2<f32>(0.003921628f, 0.003921628f), 1f)), frame_2[2]);
+fn weft_normal_from_tangent_space_k10_(frame_3: mat3x3<f32>) -> vec3<f32> {
+    let _e4 = weft_safe_normalize((frame_3 * vec3<f32>(vec2<f32>(0.002352977f, 0.002352977f), 1f)), frame_3[2]);
     return _e4;
 }
 
-fn weft_v_smith_ggx_aniso_correlated_k12_(v_5: vec3<f32>, l: vec3<f32>) -> f32 {
-    let _e5 = weft_clamp_cos(v_5.z);
-    let _e7 = weft_clamp_cos(l.z);
-    let lv = (_e7 * length(vec3<f32>((0.23174134f * v_5.x), (0.06475432f * v_5.y), _e5)));
-    let ll = (_e5 * length(vec3<f32>((0.23174134f * l.x), (0.06475432f * l.y), _e7)));
-    return (0.5f / (lv + ll));
-}
+fn silk_ward_bounded_k12_(v_6: vec3<f32>, l: vec3<f32>) -> f32 {
+    var local: bool;
 
-fn weft_aniso_ggx_q_k14_(t_dot_h: f32, b_dot_h: f32, n_dot_h: f32) -> f32 {
-    let x_2 = (t_dot_h / 0.23174134f);
-    let y = (b_dot_h / 0.06475432f);
-    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 0.000001f);
-}
-
-fn weft_d_ggx_aniso_k13_(t_dot_h_1: f32, b_dot_h_1: f32, n_dot_h_1: f32) -> f32 {
-    let _e7 = weft_aniso_ggx_q_k14_(t_dot_h_1, b_dot_h_1, n_dot_h_1);
-    let d = (1f / ((0.047143534f * _e7) * _e7));
-    return select(0f, d, (n_dot_h_1 > 0f));
+    let hv = (v_6 + l);
+    let hn = max(hv.z, 0.0001f);
+    let hn2_ = (hn * hn);
+    let x_2 = (hv.x / 0.20215853f);
+    let y = (hv.y / 0.047507256f);
+    let f = ((dot(hv, hv) / ((0.030171847f * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
+    if (v_6.z > 0f) {
+        local = (l.z > 0f);
+    } else {
+        local = false;
+    }
+    let _e35 = local;
+    return select(0f, f, _e35);
 }
 
 @vertex 
@@ -285,66 +294,31 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     var env_brdf: vec3<f32>;
     var ambient_kd: vec3<f32>;
     var reflect_n: vec3<f32>;
-    var scale_bias: vec2<f32>;
 
     let _e11 = weft_surface(in_1.world_position, in_1.world_normal);
-    let v_6 = _e11.v;
+    let v_7 = _e11.v;
     let n_geo = _e11.n;
     let _e15 = weft_tangent_frame(n_geo, in_1.world_tangent);
-    let _e17 = weft_normal_from_tangent_space_k11_(_e15);
+    let _e17 = weft_normal_from_tangent_space_k10_(_e15);
     fibre = _e15[0];
     let _e20 = fibre;
     let _e24 = weft_tangent_frame(_e17, vec4<f32>(_e20, in_1.world_tangent.w));
-    let _e25 = weft_main_light_geometry(_e17, v_6);
-    let _e26 = weft_aniso_to_frame(_e24, v_6);
+    let _e25 = weft_main_light_geometry(_e17, v_7);
+    let _e26 = weft_aniso_to_frame(_e24, v_7);
     let _e28 = weft_aniso_to_frame(_e24, _e25.l);
-    let _e30 = weft_aniso_to_frame(_e24, _e25.h);
     {
+        lobe.alpha = vec2<f32>(0.20215853f, 0.047507256f);
+        lobe.ibl_roughness = 0.3130495f;
         {
-            lobe.alpha = vec2<f32>(0.23174134f, 0.06475432f);
-            lobe.ibl_roughness = 0.35000002f;
-            {
-                {
-                    let _e37 = weft_v_smith_ggx_aniso_correlated_k12_(_e26, _e28);
-                    vis = _e37;
-                }
-                let _e42 = weft_d_ggx_aniso_k13_(_e30.x, _e30.y, _e30.z);
-                let _e43 = vis;
-                lobe.value = ((_e42 * _e43) * _e25.n_dot_l);
-            }
+            let _e36 = silk_ward_bounded_k12_(_e26, _e28);
+            lobe.value = (_e36 * _e25.n_dot_l);
         }
     }
-    let _e47 = weft_main_light_radiance();
-    let n_dot_l_diffuse = saturate(dot(n_geo, _e25.l));
-    let _e52 = weft_f_schlick_k7_(_e25.v_dot_h);
-    let diffuse = (((vec3(1f) - _e52) * vec3<f32>(0.222817f, 0.14323957f, 0.031830948f)) * n_dot_l_diffuse);
-    let _e59 = lobe.value;
-    let direct = ((diffuse + (_e52 * _e59)) * _e47);
-    reflect_n = _e17;
+    let _e39 = weft_main_light_radiance();
+    let n_dot_l_diffuse_1 = saturate(dot(n_geo, _e25.l));
     {
-        {
-            let _e69 = lobe.ibl_roughness;
-            let _e70 = weft_env_brdf_lut(_e25.n_dot_v, _e69);
-            scale_bias = _e70;
-        }
-        let _e71 = scale_bias;
-        let _e72 = weft_env_brdf_from_lut_k9_(_e71);
-        env_brdf = _e72;
-        let _e74 = env_brdf;
-        ambient_kd = max((vec3(1f) - _e74), vec3(0f));
-        let _e79 = lobe.alpha;
-        let _e80 = silk_lobe_anisotropy(_e79);
-        let _e82 = lobe.ibl_roughness;
-        let _e83 = weft_aniso_bent_normal(_e24, v_6, _e80, _e82);
-        reflect_n = _e83;
+        let _e45 = lobe;
+        let _e46 = silk_low_k7_(_e24, _e17, n_geo, v_7, _e25.n_dot_v, _e25.v_dot_h, n_dot_l_diffuse_1, _e45, _e39);
+        return vec4<f32>(_e46, 1f);
     }
-    let _e85 = reflect_n;
-    let _e88 = lobe.ibl_roughness;
-    let _e89 = weft_prefiltered_radiance(reflect(-(v_6), _e85), _e88);
-    let _e90 = env_brdf;
-    let _e92 = weft_sh_irradiance(n_geo);
-    let _e93 = ambient_kd;
-    let indirect = ((_e89 * _e90) + ((_e92 * _e93) * vec3<f32>(0.7000003f, 0.4500004f, 0.099999875f)));
-    let radiance = clamp((direct + indirect), vec3(0f), vec3(65504f));
-    return vec4<f32>(radiance, 1f);
 }

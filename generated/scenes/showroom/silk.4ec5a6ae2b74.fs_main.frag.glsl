@@ -216,8 +216,8 @@ vec3 weft_f_schlick_k7_(float v_dot_h) {
     return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
 }
 
-vec3 weft_env_brdf_from_lut_k9_(vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
+vec3 weft_env_brdf_from_lut_k9_(vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
     return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
 }
 
@@ -254,7 +254,6 @@ void main() {
     vec3 env_brdf = vec3(0.0);
     vec3 ambient_kd = vec3(0.0);
     vec3 reflect_n = vec3(0.0);
-    vec2 scale_bias = vec2(0.0);
     WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal);
     vec3 v_6 = _e11.v;
     vec3 n_geo = _e11.n;
@@ -290,29 +289,25 @@ void main() {
     vec3 direct = ((diffuse + (_e52 * _e59)) * _e47);
     reflect_n = _e17;
     {
-        {
-            float _e69 = lobe.ibl_roughness;
-            vec2 _e70 = weft_env_brdf_lut(_e25.n_dot_v, _e69);
-            scale_bias = _e70;
-        }
-        vec2 _e71 = scale_bias;
-        vec3 _e72 = weft_env_brdf_from_lut_k9_(_e71);
-        env_brdf = _e72;
-        vec3 _e74 = env_brdf;
-        ambient_kd = max((vec3(1.0) - _e74), vec3(0.0));
-        vec2 _e79 = lobe.alpha;
-        float _e80 = silk_lobe_anisotropy(_e79);
-        float _e82 = lobe.ibl_roughness;
-        vec3 _e83 = weft_aniso_bent_normal(_e24, v_6, _e80, _e82);
-        reflect_n = _e83;
+        float _e68 = lobe.ibl_roughness;
+        vec2 _e69 = weft_env_brdf_lut(_e25.n_dot_v, _e68);
+        vec3 _e70 = weft_env_brdf_from_lut_k9_(_e69);
+        env_brdf = _e70;
+        vec3 _e72 = env_brdf;
+        ambient_kd = max((vec3(1.0) - _e72), vec3(0.0));
+        vec2 _e77 = lobe.alpha;
+        float _e78 = silk_lobe_anisotropy(_e77);
+        float _e80 = lobe.ibl_roughness;
+        vec3 _e81 = weft_aniso_bent_normal(_e24, v_6, _e78, _e80);
+        reflect_n = _e81;
     }
-    vec3 _e85 = reflect_n;
-    float _e88 = lobe.ibl_roughness;
-    vec3 _e89 = weft_prefiltered_radiance(reflect(-(v_6), _e85), _e88);
-    vec3 _e90 = env_brdf;
-    vec3 _e92 = weft_sh_irradiance(n_geo);
-    vec3 _e93 = ambient_kd;
-    vec3 indirect = ((_e89 * _e90) + ((_e92 * _e93) * vec3(0.7000003, 0.4500004, 0.099999875)));
+    vec3 _e83 = reflect_n;
+    float _e86 = lobe.ibl_roughness;
+    vec3 _e87 = weft_prefiltered_radiance(reflect(-(v_6), _e83), _e86);
+    vec3 _e88 = env_brdf;
+    vec3 _e90 = weft_sh_irradiance(n_geo);
+    vec3 _e91 = ambient_kd;
+    vec3 indirect = ((_e87 * _e88) + ((_e90 * _e91) * vec3(0.7000003, 0.4500004, 0.099999875)));
     vec3 radiance = clamp((direct + indirect), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

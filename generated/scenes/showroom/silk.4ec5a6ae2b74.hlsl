@@ -283,9 +283,9 @@ float3 weft_f_schlick_k7_(float v_dot_h)
     return (float3(0.04, 0.04, 0.04) + (float3(0.96, 0.96, 0.96) * _e5));
 }
 
-float3 weft_env_brdf_from_lut_k9_(float2 scale_bias_1)
+float3 weft_env_brdf_from_lut_k9_(float2 scale_bias)
 {
-    float2 sb = saturate(scale_bias_1);
+    float2 sb = saturate(scale_bias);
     return ((float3(0.04, 0.04, 0.04) * sb.x) + (sb.y).xxx);
 }
 
@@ -352,7 +352,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     const WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal);
     float3 v_6 = _e11.v;
@@ -389,29 +388,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 direct = ((diffuse + (_e52 * _e59)) * _e47);
     reflect_n = _e17;
     {
-        {
-            float _e69 = lobe.ibl_roughness;
-            const float2 _e70 = weft_env_brdf_lut(_e25.n_dot_v, _e69);
-            scale_bias = _e70;
-        }
-        float2 _e71 = scale_bias;
-        const float3 _e72 = weft_env_brdf_from_lut_k9_(_e71);
-        env_brdf = _e72;
-        float3 _e74 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e74), (0.0).xxx);
-        float2 _e79 = lobe.alpha;
-        const float _e80 = silk_lobe_anisotropy(_e79);
-        float _e82 = lobe.ibl_roughness;
-        const float3 _e83 = weft_aniso_bent_normal(_e24, v_6, _e80, _e82);
-        reflect_n = _e83;
+        float _e68 = lobe.ibl_roughness;
+        const float2 _e69 = weft_env_brdf_lut(_e25.n_dot_v, _e68);
+        const float3 _e70 = weft_env_brdf_from_lut_k9_(_e69);
+        env_brdf = _e70;
+        float3 _e72 = env_brdf;
+        ambient_kd = max(((1.0).xxx - _e72), (0.0).xxx);
+        float2 _e77 = lobe.alpha;
+        const float _e78 = silk_lobe_anisotropy(_e77);
+        float _e80 = lobe.ibl_roughness;
+        const float3 _e81 = weft_aniso_bent_normal(_e24, v_6, _e78, _e80);
+        reflect_n = _e81;
     }
-    float3 _e85 = reflect_n;
-    float _e88 = lobe.ibl_roughness;
-    const float3 _e89 = weft_prefiltered_radiance(reflect(-(v_6), _e85), _e88);
-    float3 _e90 = env_brdf;
-    const float3 _e92 = weft_sh_irradiance(n_geo);
-    float3 _e93 = ambient_kd;
-    float3 indirect = ((_e89 * _e90) + ((_e92 * _e93) * float3(0.7000003, 0.4500004, 0.099999875)));
+    float3 _e83 = reflect_n;
+    float _e86 = lobe.ibl_roughness;
+    const float3 _e87 = weft_prefiltered_radiance(reflect(-(v_6), _e83), _e86);
+    float3 _e88 = env_brdf;
+    const float3 _e90 = weft_sh_irradiance(n_geo);
+    float3 _e91 = ambient_kd;
+    float3 indirect = ((_e87 * _e88) + ((_e90 * _e91) * float3(0.7000003, 0.4500004, 0.099999875)));
     float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

@@ -62,23 +62,17 @@ const float WEFT_MIN_ROUGHNESS_HALF = 0.089;
 const float WEFT_MIN_N_DOT_HALF = 0.001;
 const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
-layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
 
-layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+layout(binding = 0) uniform samplerCube _group_0_binding_1_fs;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-layout(location = 2) in vec4 _p2vs_location2;
-layout(location = 3) in vec2 _p2vs_location3;
-layout(location = 0) smooth out vec3 _vs2fs_location0;
-layout(location = 1) smooth out vec3 _vs2fs_location1;
-layout(location = 2) smooth out vec4 _vs2fs_location2;
-layout(location = 3) smooth out vec2 _vs2fs_location3;
+layout(binding = 1) uniform sampler2D _group_0_binding_3_fs;
 
-float weft_pow5_(float x) {
-    float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
+layout(location = 0) smooth in vec3 _vs2fs_location0;
+layout(location = 1) smooth in vec3 _vs2fs_location1;
+layout(location = 2) smooth in vec4 _vs2fs_location2;
+layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 0) out vec4 _fs2p_location0;
 
 float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
@@ -102,19 +96,19 @@ vec3 weft_safe_normalize_k1_(vec3 v_1) {
 }
 
 vec3 weft_main_light_direction() {
-    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec4 _e2 = _group_0_binding_0_fs.light_direction;
     vec3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
     return _e4;
 }
 
 vec3 weft_main_light_radiance() {
-    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    vec4 _e2 = _group_0_binding_0_fs.light_color;
     return max(_e2.xyz, vec3(0.0));
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
     vec3 e = vec3(0.0);
-    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    vec4 sh[9] = _group_0_binding_0_fs.sh;
     e = (sh[0].xyz * 0.282095);
     vec3 _e9 = e;
     e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
@@ -138,13 +132,25 @@ vec3 weft_sh_irradiance(vec3 n_1) {
 
 float weft_specular_mip(float roughness) {
     float r = clamp(roughness, 0.0, 1.0);
-    float _e5 = _group_0_binding_0_vs.params.x;
+    float _e5 = _group_0_binding_0_fs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
+vec3 weft_prefiltered_radiance(vec3 dir, float roughness_1) {
+    float _e4 = weft_specular_mip(roughness_1);
+    vec4 c_1 = textureLod(_group_0_binding_1_fs, vec3(dir), _e4);
+    return max(c_1.xyz, vec3(0.0));
+}
+
+vec2 weft_env_brdf_lut(float n_dot_v, float roughness_2) {
+    vec2 uv = vec2(clamp(n_dot_v, 0.0, 1.0), clamp(roughness_2, 0.0, 1.0));
+    vec4 _e8 = textureLod(_group_0_binding_3_fs, vec2(uv), 0.0);
+    return _e8.xy;
+}
+
 vec3 weft_view_direction_k2_(vec3 world_position) {
-    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec4 _e4 = _group_0_binding_0_fs.camera_position;
     vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position));
     return _e7;
 }
@@ -174,8 +180,8 @@ mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     return mat3x3(t, b_1, n_3);
 }
 
-vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
-    return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x) {
+    return vec3(dot(frame[0], x), dot(frame[1], x), dot(frame[2], x));
 }
 
 vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_3, float anisotropy, float roughness_3) {
@@ -195,71 +201,93 @@ float silk_lobe_anisotropy(vec2 alpha) {
     return ((at - ab) / (at + ab));
 }
 
+float weft_half_pow5_(float x_1) {
+    float x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
 vec3 weft_safe_normalize_k3_(vec3 v_4) {
     float len2_3 = dot(v_4, v_4);
     return ((len2_3 > 1e-20) ? (v_4 * inversesqrt(max(len2_3, 1e-20))) : vec3(0.0));
 }
 
-vec3 weft_f_schlick_k7_(float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
+vec3 weft_half_f_schlick_k9_(float v_dot_h) {
+    float _e5 = weft_half_pow5_((1.0 - v_dot_h));
+    return (vec3(0.14609632, 0.10047833, 0.11062463) + (vec3(0.85390365, 0.89952165, 0.8893754) * _e5));
 }
 
-vec3 weft_env_brdf_from_lut_k9_(vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
-    return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
+vec3 silk_low_k7_(mat3x3 frame_2, vec3 n_spec, vec3 n_diff, vec3 v_5, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, SilkLobe lobe_1, vec3 light) {
+    vec3 _e13 = weft_half_f_schlick_k9_(float(v_dot_h_1));
+    vec3 kd = ((vec3(1.0) - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
+    vec3 direct = (((vec3(0.45638528, 0.27391332, 0.3144985) * vec3(kd)) + (vec3(_e13) * lobe_1.value)) * light);
+    vec2 _e28 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
+    vec2 lut = clamp(_e28, vec2(0.0), vec2(1.0));
+    vec3 env_brdf_1 = ((vec3(0.14609632, 0.10047833, 0.11062463) * float(lut.x)) + vec3(float(lut.y)));
+    vec3 ambient_kd_1 = max((vec3(1.0) - env_brdf_1), vec3(0.0));
+    float _e42 = silk_lobe_anisotropy(lobe_1.alpha);
+    vec3 _e44 = weft_aniso_bent_normal(frame_2, v_5, _e42, lobe_1.ibl_roughness);
+    vec3 _e48 = weft_prefiltered_radiance(reflect(-(v_5), _e44), lobe_1.ibl_roughness);
+    vec3 _e51 = weft_sh_irradiance(n_diff);
+    vec3 indirect = ((_e48 * vec3(env_brdf_1)) + ((_e51 * vec3(ambient_kd_1)) * vec3(0.45638528, 0.27391332, 0.3144985)));
+    return clamp((direct + indirect), vec3(0.0), vec3(65504.0));
 }
 
-vec3 weft_normal_from_tangent_space_k11_(mat3x3 frame_2) {
-    vec3 _e4 = weft_safe_normalize((frame_2 * vec3(vec2(0.003921628, 0.003921628), 1.0)), frame_2[2]);
+vec3 weft_normal_from_tangent_space_k10_(mat3x3 frame_3) {
+    vec3 _e4 = weft_safe_normalize((frame_3 * vec3(vec2(0.002352977, 0.002352977), 1.0)), frame_3[2]);
     return _e4;
 }
 
-float weft_v_smith_ggx_aniso_correlated_k12_(vec3 v_5, vec3 l) {
-    float _e5 = weft_clamp_cos(v_5.z);
-    float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((0.23174134 * v_5.x), (0.06475432 * v_5.y), _e5)));
-    float ll = (_e5 * length(vec3((0.23174134 * l.x), (0.06475432 * l.y), _e7)));
-    return (0.5 / (lv + ll));
-}
-
-float weft_aniso_ggx_q_k14_(float t_dot_h, float b_dot_h, float n_dot_h) {
-    float x_2 = (t_dot_h / 0.23174134);
-    float y = (b_dot_h / 0.06475432);
-    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
-}
-
-float weft_d_ggx_aniso_k13_(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1) {
-    float _e7 = weft_aniso_ggx_q_k14_(t_dot_h_1, b_dot_h_1, n_dot_h_1);
-    float d = (1.0 / ((0.047143534 * _e7) * _e7));
-    return ((n_dot_h_1 > 0.0) ? d : 0.0);
+float silk_ward_bounded_k12_(vec3 v_6, vec3 l) {
+    bool local = false;
+    vec3 hv = (v_6 + l);
+    float hn = max(hv.z, 0.0001);
+    float hn2_ = (hn * hn);
+    float x_2 = (hv.x / 0.20215853);
+    float y = (hv.y / 0.047507256);
+    float f = ((dot(hv, hv) / ((0.030171847 * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
+    if ((v_6.z > 0.0)) {
+        local = (l.z > 0.0);
+    } else {
+        local = false;
+    }
+    bool _e35 = local;
+    return (_e35 ? f : 0.0);
 }
 
 void main() {
-    WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
-    mat4x4 model = _group_2_binding_0_vs.model;
-    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec4 world = (model * vec4(in_.position, 1.0));
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
-    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
-    out_.world_position = world.xyz;
-    vec3 _e53 = weft_safe_normalize_k3_((normal3_ * in_.normal));
-    out_.world_normal = _e53;
-    vec3 _e58 = weft_safe_normalize_k3_((model3_ * in_.tangent.xyz));
-    out_.world_tangent = vec4(_e58, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e62 = out_;
-    gl_Position = _e62.clip_position;
-    _vs2fs_location0 = _e62.world_position;
-    _vs2fs_location1 = _e62.world_normal;
-    _vs2fs_location2 = _e62.world_tangent;
-    _vs2fs_location3 = _e62.uv0_;
-    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
-    return;
+    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    vec3 fibre = vec3(0.0);
+    SilkLobe lobe = SilkLobe(0.0, vec2(0.0), 0.0);
+    float vis = 0.0;
+    vec3 env_brdf = vec3(0.0);
+    vec3 ambient_kd = vec3(0.0);
+    vec3 reflect_n = vec3(0.0);
+    WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal);
+    vec3 v_7 = _e11.v;
+    vec3 n_geo = _e11.n;
+    mat3x3 _e15 = weft_tangent_frame(n_geo, in_1.world_tangent);
+    vec3 _e17 = weft_normal_from_tangent_space_k10_(_e15);
+    fibre = _e15[0];
+    vec3 _e20 = fibre;
+    mat3x3 _e24 = weft_tangent_frame(_e17, vec4(_e20, in_1.world_tangent.w));
+    WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_7);
+    vec3 _e26 = weft_aniso_to_frame(_e24, v_7);
+    vec3 _e28 = weft_aniso_to_frame(_e24, _e25.l);
+    {
+        lobe.alpha = vec2(0.20215853, 0.047507256);
+        lobe.ibl_roughness = 0.3130495;
+        {
+            float _e36 = silk_ward_bounded_k12_(_e26, _e28);
+            lobe.value = (_e36 * _e25.n_dot_l);
+        }
+    }
+    vec3 _e39 = weft_main_light_radiance();
+    float n_dot_l_diffuse_1 = clamp(dot(n_geo, _e25.l), 0.0, 1.0);
+    {
+        SilkLobe _e45 = lobe;
+        vec3 _e46 = silk_low_k7_(_e24, _e17, n_geo, v_7, _e25.n_dot_v, _e25.v_dot_h, n_dot_l_diffuse_1, _e45, _e39);
+        _fs2p_location0 = vec4(_e46, 1.0);
+        return;
+    }
 }
 

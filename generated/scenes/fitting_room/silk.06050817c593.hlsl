@@ -100,12 +100,6 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-float weft_pow5_(float x)
-{
-    float x2_ = (x * x);
-    return ((x2_ * x2_) * x);
-}
-
 float weft_clamp_cos(float c)
 {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
@@ -247,9 +241,9 @@ float3x3 weft_tangent_frame(float3 n_3, float4 tangent)
     return float3x3(t, b_1, n_3);
 }
 
-float3 weft_aniso_to_frame(float3x3 frame, float3 x_1)
+float3 weft_aniso_to_frame(float3x3 frame, float3 x)
 {
-    return float3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
+    return float3(dot(frame[0], x), dot(frame[1], x), dot(frame[2], x));
 }
 
 float3 weft_aniso_bent_normal(float3x3 frame_1, float3 v_3, float anisotropy, float roughness_3)
@@ -271,41 +265,58 @@ float silk_lobe_anisotropy(float2 alpha)
     return ((at - ab) / (at + ab));
 }
 
+float weft_half_pow5_(float x_1)
+{
+    float x2_ = (x_1 * x_1);
+    return ((x2_ * x2_) * x_1);
+}
+
 float3 weft_safe_normalize_k3_(float3 v_4)
 {
     float len2_3 = dot(v_4, v_4);
     return ((len2_3 > 1e-20) ? (v_4 * rsqrt(max(len2_3, 1e-20))) : (0.0).xxx);
 }
 
-float3 weft_f_schlick_k7_(float v_dot_h)
+float3 weft_half_f_schlick_k9_(float v_dot_h)
 {
-    const float _e5 = weft_pow5_((1.0 - saturate(v_dot_h)));
+    const float _e5 = weft_half_pow5_((1.0 - v_dot_h));
     return (float3(0.14609632, 0.10047833, 0.11062463) + (float3(0.85390365, 0.89952165, 0.8893754) * _e5));
 }
 
-float3 weft_env_brdf_from_lut_k9_(float2 scale_bias_1)
+float3 silk_low_k7_(float3x3 frame_2, float3 n_spec, float3 n_diff, float3 v_5, float n_dot_v_1, float v_dot_h_1, float n_dot_l_diffuse, SilkLobe lobe_1, float3 light)
 {
-    float2 sb = saturate(scale_bias_1);
-    return ((float3(0.14609632, 0.10047833, 0.11062463) * sb.x) + (sb.y).xxx);
+    const float3 _e13 = weft_half_f_schlick_k9_(float(v_dot_h_1));
+    float3 kd = (((1.0).xxx - _e13) * (float(n_dot_l_diffuse) * 0.31830987));
+    float3 direct = (((float3(0.45638528, 0.27391332, 0.3144985) * float3(kd)) + (float3(_e13) * lobe_1.value)) * light);
+    const float2 _e28 = weft_env_brdf_lut(n_dot_v_1, lobe_1.ibl_roughness);
+    float2 lut = saturate(_e28);
+    float3 env_brdf_1 = ((float3(0.14609632, 0.10047833, 0.11062463) * float(lut.x)) + (float(lut.y)).xxx);
+    float3 ambient_kd_1 = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
+    const float _e42 = silk_lobe_anisotropy(lobe_1.alpha);
+    const float3 _e44 = weft_aniso_bent_normal(frame_2, v_5, _e42, lobe_1.ibl_roughness);
+    const float3 _e48 = weft_prefiltered_radiance(reflect(-(v_5), _e44), lobe_1.ibl_roughness);
+    const float3 _e51 = weft_sh_irradiance(n_diff);
+    float3 indirect = ((_e48 * float3(env_brdf_1)) + ((_e51 * float3(ambient_kd_1)) * float3(0.45638528, 0.27391332, 0.3144985)));
+    return clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
 }
 
-float3 weft_normal_from_tangent_space_k11_(float3x3 frame_2)
+float3 weft_normal_from_tangent_space_k10_(float3x3 frame_3)
 {
-    const float3 _e4 = weft_safe_normalize(mul(float3(float2(0.002352977, 0.002352977), 1.0), frame_2), frame_2[2]);
+    const float3 _e4 = weft_safe_normalize(mul(float3(float2(0.002352977, 0.002352977), 1.0), frame_3), frame_3[2]);
     return _e4;
 }
 
-float silk_ward_bounded_k13_(float3 v_5, float3 l)
+float silk_ward_bounded_k12_(float3 v_6, float3 l)
 {
     bool local = (bool)0;
 
-    float3 hv = (v_5 + l);
+    float3 hv = (v_6 + l);
     float hn = max(hv.z, 0.0001);
     float hn2_ = (hn * hn);
     float x_2 = (hv.x / 0.20215853);
     float y = (hv.y / 0.047507256);
     float f = ((dot(hv, hv) / ((0.030171847 * hn2_) * hn2_)) * exp((-(((x_2 * x_2) + (y * y))) / hn2_)));
-    if ((v_5.z > 0.0)) {
+    if ((v_6.z > 0.0)) {
         local = (l.z > 0.0);
     } else {
         local = false;
@@ -348,58 +359,31 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 env_brdf = (float3)0;
     float3 ambient_kd = (float3)0;
     float3 reflect_n = (float3)0;
-    float2 scale_bias = (float2)0;
 
     const WeftSurface _e11 = weft_surface(in_1.world_position, in_1.world_normal);
-    float3 v_6 = _e11.v;
+    float3 v_7 = _e11.v;
     float3 n_geo = _e11.n;
     const float3x3 _e15 = weft_tangent_frame(n_geo, in_1.world_tangent);
-    const float3 _e17 = weft_normal_from_tangent_space_k11_(_e15);
+    const float3 _e17 = weft_normal_from_tangent_space_k10_(_e15);
     fibre = _e15[0];
     float3 _e20 = fibre;
     const float3x3 _e24 = weft_tangent_frame(_e17, float4(_e20, in_1.world_tangent.w));
-    const WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_6);
-    const float3 _e26 = weft_aniso_to_frame(_e24, v_6);
+    const WeftLightGeometry _e25 = weft_main_light_geometry(_e17, v_7);
+    const float3 _e26 = weft_aniso_to_frame(_e24, v_7);
     const float3 _e28 = weft_aniso_to_frame(_e24, _e25.l);
     {
         lobe.alpha = float2(0.20215853, 0.047507256);
         lobe.ibl_roughness = 0.3130495;
         {
-            const float _e36 = silk_ward_bounded_k13_(_e26, _e28);
+            const float _e36 = silk_ward_bounded_k12_(_e26, _e28);
             lobe.value = (_e36 * _e25.n_dot_l);
         }
     }
     const float3 _e39 = weft_main_light_radiance();
-    float n_dot_l_diffuse = saturate(dot(n_geo, _e25.l));
-    const float3 _e44 = weft_f_schlick_k7_(_e25.v_dot_h);
-    float3 diffuse = ((((1.0).xxx - _e44) * float3(0.14527194, 0.08718932, 0.10010798)) * n_dot_l_diffuse);
-    float _e51 = lobe.value;
-    float3 direct = ((diffuse + (_e44 * _e51)) * _e39);
-    reflect_n = _e17;
+    float n_dot_l_diffuse_1 = saturate(dot(n_geo, _e25.l));
     {
-        {
-            float _e61 = lobe.ibl_roughness;
-            const float2 _e62 = weft_env_brdf_lut(_e25.n_dot_v, _e61);
-            scale_bias = _e62;
-        }
-        float2 _e63 = scale_bias;
-        const float3 _e64 = weft_env_brdf_from_lut_k9_(_e63);
-        env_brdf = _e64;
-        float3 _e66 = env_brdf;
-        ambient_kd = max(((1.0).xxx - _e66), (0.0).xxx);
-        float2 _e71 = lobe.alpha;
-        const float _e72 = silk_lobe_anisotropy(_e71);
-        float _e74 = lobe.ibl_roughness;
-        const float3 _e75 = weft_aniso_bent_normal(_e24, v_6, _e72, _e74);
-        reflect_n = _e75;
+        SilkLobe _e45 = lobe;
+        const float3 _e46 = silk_low_k7_(_e24, _e17, n_geo, v_7, _e25.n_dot_v, _e25.v_dot_h, n_dot_l_diffuse_1, _e45, _e39);
+        return float4(_e46, 1.0);
     }
-    float3 _e77 = reflect_n;
-    float _e80 = lobe.ibl_roughness;
-    const float3 _e81 = weft_prefiltered_radiance(reflect(-(v_6), _e77), _e80);
-    float3 _e82 = env_brdf;
-    const float3 _e84 = weft_sh_irradiance(n_geo);
-    float3 _e85 = ambient_kd;
-    float3 indirect = ((_e81 * _e82) + ((_e84 * _e85) * float3(0.45638528, 0.27391332, 0.3144985)));
-    float3 radiance = clamp((direct + indirect), (0.0).xxx, (65504.0).xxx);
-    return float4(radiance, 1.0);
 }

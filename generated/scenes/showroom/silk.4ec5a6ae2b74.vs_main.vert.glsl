@@ -13,21 +13,6 @@ struct WeftObject {
     mat4x4 model;
     mat4x4 normal_matrix;
 };
-struct WeftMaterial {
-    vec4 base_color;
-    vec4 base_map_st;
-    float smoothness;
-    float metallic;
-    uint diffuse_uses_aniso_normal;
-    float anisotropy;
-    vec4 aniso_normal_map_st;
-    float aniso_normal_strength;
-    float tangent_shift;
-    float aniso_gloss;
-    float aniso_spec;
-    float aniso_mask;
-    float flow_strength;
-};
 struct WeftSurface {
     vec3 v;
     vec3 n;
@@ -79,7 +64,7 @@ const float WEFT_MIN_ALPHA_HALF = 0.007921;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
 
-layout(std140, binding = 2) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
 
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;
@@ -99,10 +84,6 @@ float weft_clamp_cos(float c) {
     return clamp(c, WEFT_MIN_N_DOT, 1.0);
 }
 
-float weft_clamp_roughness(float roughness) {
-    return clamp(roughness, WEFT_MIN_ROUGHNESS, 1.0);
-}
-
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
     float len2_ = dot(v, v);
     return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
@@ -115,35 +96,20 @@ vec3 weft_any_perpendicular(vec3 n) {
     return vec3((1.0 + (((s * n.x) * n.x) * a)), (s * b), (-(s) * n.x));
 }
 
-vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
-    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
-    return (f0_ + ((vec3(1.0) - f0_) * _e5));
-}
-
-vec3 weft_diffuse_lambert(vec3 albedo) {
-    return (albedo * WEFT_INV_PI);
-}
-
-vec3 weft_env_brdf_from_lut(vec3 f0_1, vec2 scale_bias_1) {
-    vec2 sb = clamp(scale_bias_1, vec2(0.0), vec2(1.0));
-    return ((f0_1 * sb.x) + vec3(sb.y));
+vec3 weft_safe_normalize_k1_(vec3 v_1) {
+    float len2_1 = dot(v_1, v_1);
+    return ((len2_1 > 1e-20) ? (v_1 * inversesqrt(max(len2_1, 1e-20))) : vec3(0.0, 0.0, 1.0));
 }
 
 vec3 weft_main_light_direction() {
     vec4 _e2 = _group_0_binding_0_vs.light_direction;
-    vec3 _e8 = weft_safe_normalize(_e2.xyz, vec3(0.0, 0.0, 1.0));
-    return _e8;
+    vec3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
 }
 
 vec3 weft_main_light_radiance() {
     vec4 _e2 = _group_0_binding_0_vs.light_color;
     return max(_e2.xyz, vec3(0.0));
-}
-
-vec3 weft_view_direction(vec3 world_position, vec3 fallback_1) {
-    vec4 _e4 = _group_0_binding_0_vs.camera_position;
-    vec3 _e7 = weft_safe_normalize((_e4.xyz - world_position), fallback_1);
-    return _e7;
 }
 
 vec3 weft_sh_irradiance(vec3 n_1) {
@@ -170,106 +136,103 @@ vec3 weft_sh_irradiance(vec3 n_1) {
     return max(_e91, vec3(0.0));
 }
 
-float weft_specular_mip(float roughness_1) {
-    float r = clamp(roughness_1, 0.0, 1.0);
+float weft_specular_mip(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
     float _e5 = _group_0_binding_0_vs.params.x;
     float max_mip = max((_e5 - 1.0), 0.0);
     return ((r * (1.7 - (0.7 * r))) * max_mip);
 }
 
-WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
-    vec3 _e6 = weft_view_direction(world_position_1, vec3(0.0, 0.0, 1.0));
-    vec3 _e7 = weft_safe_normalize(world_normal, _e6);
-    return WeftSurface(_e6, _e7);
+vec3 weft_view_direction_k2_(vec3 world_position) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position));
+    return _e7;
 }
 
-WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e2 = weft_view_direction_k2_(world_position_1);
+    vec3 _e3 = weft_safe_normalize(world_normal, _e2);
+    return WeftSurface(_e2, _e3);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_2) {
     vec3 _e2 = weft_main_light_direction();
-    vec3 _e4 = weft_safe_normalize((_e2 + v_1), n_2);
-    float _e6 = weft_clamp_cos(dot(n_2, v_1));
-    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
 }
 
 mat3x3 weft_tangent_frame(vec3 n_3, vec4 tangent) {
     vec3 t_in = tangent.xyz;
     vec3 t_proj = (t_in - (n_3 * dot(n_3, t_in)));
-    float len2_1 = dot(t_proj, t_proj);
-    bool ok = (len2_1 > max((1e-6 * dot(t_in, t_in)), 1e-20));
+    float len2_2 = dot(t_proj, t_proj);
+    bool ok = (len2_2 > max((1e-6 * dot(t_in, t_in)), 1e-20));
     vec3 _e13 = weft_any_perpendicular(n_3);
-    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_1, 1e-20))) : _e13);
+    vec3 t = (ok ? (t_proj * inversesqrt(max(len2_2, 1e-20))) : _e13);
     float s_1 = ((tangent.w < 0.0) ? -1.0 : 1.0);
     vec3 b_1 = (cross(n_3, t) * s_1);
     return mat3x3(t, b_1, n_3);
 }
 
-vec3 weft_unpack_normal(vec3 texel, float strength) {
-    vec3 v_4 = ((texel * 2.0) - vec3(1.0));
-    return vec3((v_4.xy * strength), max(v_4.z, 0.001));
+vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
+    return vec3(dot(frame[0], x_1), dot(frame[1], x_1), dot(frame[2], x_1));
 }
 
-vec3 weft_normal_from_tangent_space(mat3x3 frame, vec3 n_ts) {
-    vec3 _e4 = weft_safe_normalize((frame * n_ts), frame[2]);
-    return _e4;
-}
-
-vec2 weft_transform_uv(vec2 uv, vec4 st) {
-    return ((uv * st.xy) + st.zw);
-}
-
-vec3 weft_aniso_to_frame(mat3x3 frame_1, vec3 x_1) {
-    return vec3(dot(frame_1[0], x_1), dot(frame_1[1], x_1), dot(frame_1[2], x_1));
-}
-
-vec2 weft_aniso_alpha_burley(float roughness_4, float anisotropy) {
-    float _e2 = weft_clamp_roughness(roughness_4);
-    float a_1 = (_e2 * _e2);
+vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_3, float anisotropy, float roughness_3) {
     float k = clamp(anisotropy, -1.0, 1.0);
-    float aspect = sqrt((1.0 - (0.9 * abs(k))));
-    float wide = (a_1 / aspect);
-    float narrow = (a_1 * aspect);
-    vec2 ab = ((k >= 0.0) ? vec2(wide, narrow) : vec2(narrow, wide));
-    return max(ab, vec2(0.001));
-}
-
-float weft_aniso_ggx_q(float t_dot_h, float b_dot_h, float n_dot_h, float alpha_t, float alpha_b) {
-    float at = max(alpha_t, WEFT_MIN_ANISO_ALPHA);
-    float ab_1 = max(alpha_b, WEFT_MIN_ANISO_ALPHA);
-    float x_2 = (t_dot_h / at);
-    float y = (b_dot_h / ab_1);
-    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
-}
-
-float weft_d_ggx_aniso(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1, float alpha_t_1, float alpha_b_1) {
-    float at_1 = max(alpha_t_1, WEFT_MIN_ANISO_ALPHA);
-    float ab_2 = max(alpha_b_1, WEFT_MIN_ANISO_ALPHA);
-    float _e9 = weft_aniso_ggx_q(t_dot_h_1, b_dot_h_1, n_dot_h_1, at_1, ab_2);
-    float d = (1.0 / ((((WEFT_PI * at_1) * ab_2) * _e9) * _e9));
-    return ((n_dot_h_1 > 0.0) ? d : 0.0);
-}
-
-float weft_v_smith_ggx_aniso_correlated(vec3 v_2, vec3 l, float alpha_t_2, float alpha_b_2) {
-    float _e5 = weft_clamp_cos(v_2.z);
-    float _e7 = weft_clamp_cos(l.z);
-    float lv = (_e7 * length(vec3((alpha_t_2 * v_2.x), (alpha_b_2 * v_2.y), _e5)));
-    float ll = (_e5 * length(vec3((alpha_t_2 * l.x), (alpha_b_2 * l.y), _e7)));
-    return (0.5 / (lv + ll));
-}
-
-vec3 weft_aniso_bent_normal(mat3x3 frame_2, vec3 v_3, float anisotropy_1, float roughness_5) {
-    float k_1 = clamp(anisotropy_1, -1.0, 1.0);
-    vec3 n_4 = frame_2[2];
-    vec3 dir_1 = ((k_1 >= 0.0) ? frame_2[1] : frame_2[0]);
+    vec3 n_4 = frame_1[2];
+    vec3 dir_1 = ((k >= 0.0) ? frame_1[1] : frame_1[0]);
     vec3 aniso_t = cross(dir_1, v_3);
     vec3 aniso_n = cross(aniso_t, dir_1);
-    float bend = (abs(k_1) * clamp((5.0 * clamp(roughness_5, 0.0, 1.0)), 0.0, 1.0));
+    float bend = (abs(k) * clamp((5.0 * clamp(roughness_3, 0.0, 1.0)), 0.0, 1.0));
     vec3 _e22 = weft_safe_normalize(mix(n_4, aniso_n, bend), n_4);
     return _e22;
 }
 
 float silk_lobe_anisotropy(vec2 alpha) {
-    float at_2 = max(alpha.x, SILK_MIN_ALPHA);
-    float ab_3 = max(alpha.y, SILK_MIN_ALPHA);
-    return ((at_2 - ab_3) / (at_2 + ab_3));
+    float at = max(alpha.x, SILK_MIN_ALPHA);
+    float ab = max(alpha.y, SILK_MIN_ALPHA);
+    return ((at - ab) / (at + ab));
+}
+
+vec3 weft_safe_normalize_k3_(vec3 v_4) {
+    float len2_3 = dot(v_4, v_4);
+    return ((len2_3 > 1e-20) ? (v_4 * inversesqrt(max(len2_3, 1e-20))) : vec3(0.0));
+}
+
+vec3 weft_f_schlick_k7_(float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (vec3(0.04, 0.04, 0.04) + (vec3(0.96, 0.96, 0.96) * _e5));
+}
+
+vec3 weft_env_brdf_from_lut_k9_(vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((vec3(0.04, 0.04, 0.04) * sb.x) + vec3(sb.y));
+}
+
+vec3 weft_normal_from_tangent_space_k11_(mat3x3 frame_2) {
+    vec3 _e4 = weft_safe_normalize((frame_2 * vec3(vec2(0.003921628, 0.003921628), 1.0)), frame_2[2]);
+    return _e4;
+}
+
+float weft_v_smith_ggx_aniso_correlated_k12_(vec3 v_5, vec3 l) {
+    float _e5 = weft_clamp_cos(v_5.z);
+    float _e7 = weft_clamp_cos(l.z);
+    float lv = (_e7 * length(vec3((0.23174134 * v_5.x), (0.06475432 * v_5.y), _e5)));
+    float ll = (_e5 * length(vec3((0.23174134 * l.x), (0.06475432 * l.y), _e7)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_aniso_ggx_q_k14_(float t_dot_h, float b_dot_h, float n_dot_h) {
+    float x_2 = (t_dot_h / 0.23174134);
+    float y = (b_dot_h / 0.06475432);
+    return max((((x_2 * x_2) + (y * y)) + (n_dot_h * n_dot_h)), 1e-6);
+}
+
+float weft_d_ggx_aniso_k13_(float t_dot_h_1, float b_dot_h_1, float n_dot_h_1) {
+    float _e7 = weft_aniso_ggx_q_k14_(t_dot_h_1, b_dot_h_1, n_dot_h_1);
+    float d = (1.0 / ((0.047143534 * _e7) * _e7));
+    return ((n_dot_h_1 > 0.0) ? d : 0.0);
 }
 
 void main() {
@@ -285,17 +248,17 @@ void main() {
     mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
     out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
     out_.world_position = world.xyz;
-    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
-    out_.world_normal = _e55;
-    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
-    out_.world_tangent = vec4(_e62, bitangent_sign);
+    vec3 _e53 = weft_safe_normalize_k3_((normal3_ * in_.normal));
+    out_.world_normal = _e53;
+    vec3 _e58 = weft_safe_normalize_k3_((model3_ * in_.tangent.xyz));
+    out_.world_tangent = vec4(_e58, bitangent_sign);
     out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    gl_Position = _e66.clip_position;
-    _vs2fs_location0 = _e66.world_position;
-    _vs2fs_location1 = _e66.world_normal;
-    _vs2fs_location2 = _e66.world_tangent;
-    _vs2fs_location3 = _e66.uv0_;
+    WeftVaryings _e62 = out_;
+    gl_Position = _e62.clip_position;
+    _vs2fs_location0 = _e62.world_position;
+    _vs2fs_location1 = _e62.world_normal;
+    _vs2fs_location2 = _e62.world_tangent;
+    _vs2fs_location3 = _e62.uv0_;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }
