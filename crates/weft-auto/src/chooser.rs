@@ -382,11 +382,14 @@ impl TierChooser for LavapipeTierChooser {
             ));
         }
         drop(guard);
-        // Cheapest first; equal cost: the more accurate; then the material's tier order.
+        // Cheapest first; equal cost: the more accurate; then the reference
+        // (a tier that computes what the reference does, as silk's `fast`,
+        // ties it on both); then the material's tier order.
         ranked.sort_by(|(ia, a), (ib, b)| {
             a.cost
                 .total_cmp(&b.cost)
                 .then(a.flip_mean.total_cmp(&b.flip_mean))
+                .then((&b.tier == reference).cmp(&(&a.tier == reference)))
                 .then(ia.cmp(ib))
         });
         let candidates: Vec<TierCandidate> = ranked.into_iter().map(|(_, c)| c).collect();

@@ -270,15 +270,17 @@ fn a_huge_budget_picks_the_cheapest_tier() {
         e.contains("no family `navi99`") && e.contains("navi21"),
         "{e}"
     );
-    let fast = d
+    // silk's `low` (half precision) differs from the reference a little;
+    // its `fast` is the reference's code (materials/silk/README.md).
+    let low = d
         .record
         .candidates
         .iter()
-        .find(|c| c.tier == "fast")
+        .find(|c| c.tier == "low")
         .unwrap();
     assert!(
-        fast.flip_mean > 0.0 && fast.flip_mean < 0.5,
-        "the fast tier differs from the reference, a little: {fast:?}"
+        low.flip_mean > 0.0 && low.flip_mean < 0.5,
+        "the low tier differs from the reference, a little: {low:?}"
     );
     // Byte-stable: a fresh chooser renders again and records the same figures.
     let fresh = LavapipeTierChooser::new(None)
@@ -315,8 +317,17 @@ fn a_zero_budget_picks_the_reference() {
             .iter()
             .filter(|c| c.tier != silk.0.tiers.reference)
             .collect();
+        // A zero budget admits only a tier that draws the reference's image
+        // (silk's `fast` is the reference's code; the tie goes to the
+        // reference); `low` differs.
         assert!(
-            others.iter().all(|c| c.flip_mean > 0.0 && !c.within_budget),
+            others
+                .iter()
+                .all(|c| c.within_budget == (c.flip_mean == 0.0)),
+            "{mesh}: {others:?}"
+        );
+        assert!(
+            others.iter().any(|c| c.flip_mean > 0.0),
             "{mesh}: {others:?}"
         );
     }
@@ -568,7 +579,7 @@ fn scene_features_reach_the_renderer() {
         d.record
             .candidates
             .iter()
-            .find(|c| c.tier == "fast")
+            .find(|c| c.tier == "low")
             .unwrap()
             .flip_mean
     };
