@@ -85,7 +85,7 @@ pub fn summarize(
                 });
             }
         }
-        let scene_shaders = scene_costs(generated, f, &entries);
+        let scene_shaders = scene_costs(generated, f, &entries)?;
         out.push(FamilySummary {
             family: f.family.clone(),
             device_name: f.device_name.clone(),
@@ -103,17 +103,20 @@ pub fn summarize(
 
 /// Each scene shader × pass of a family's figures beside the generic
 /// variant it specialises (fragment stage; the generic variant's loops run
-/// as many times as the scene shader's show). A pair whose generic variant
-/// was not compiled is left out.
+/// as many times as the scene shader's show). The generic variant is the one
+/// its id resolves to: a variant identical to another is an alias with no
+/// files of its own (`alias_of`). A pair whose generic variant was not
+/// compiled is left out.
 pub fn scene_shader_costs(generated: &Path, f: &FamilyStats) -> Result<Vec<SceneShaderCost>> {
-    Ok(scene_costs(generated, f, &fragment_entries(generated, f)?))
+    scene_costs(generated, f, &fragment_entries(generated, f)?)
 }
 
 fn scene_costs(
     generated: &Path,
     f: &FamilyStats,
     entries: &BTreeMap<(String, String), String>,
-) -> Vec<SceneShaderCost> {
+) -> Result<Vec<SceneShaderCost>> {
+    let mut metas: BTreeMap<String, MaterialMetadata> = BTreeMap::new();
     // The generic variant drawing a scene instance: its loops as many
     // times as the instance's shader shows (model::model_at).
     let generic_at = |g: &PipelineStats, scene: &PipelineStats| -> Option<FragmentCost> {
@@ -124,8 +127,14 @@ fn scene_costs(
     let mut scene_shaders = Vec::new();
     for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
         let s = &p.source;
+        if !metas.contains_key(&s.material) {
+            metas.insert(s.material.clone(), read_meta(generated, &s.material)?);
+        }
+        let canonical = metas[&s.material]
+            .resolve_variant(&s.variant)
+            .map_or(s.variant.as_str(), |v| v.id.as_str());
         let generic =
-            material_pipeline(f, &s.material, &s.variant, &p.pass).and_then(|g| generic_at(g, p));
+            material_pipeline(f, &s.material, canonical, &p.pass).and_then(|g| generic_at(g, p));
         let (Some(specialised), Some(generic)) = (cost_of(generated, entries, p), generic) else {
             continue;
         };
@@ -139,7 +148,7 @@ fn scene_costs(
             generic,
         });
     }
-    scene_shaders
+    Ok(scene_shaders)
 }
 
 /// A library variant's f32 pipeline for one pass.

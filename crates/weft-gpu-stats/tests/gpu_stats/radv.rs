@@ -134,6 +134,15 @@ fn every_variant_pass_and_scene_shader_has_figures_on_navi21_and_gfx1100() {
             .filter(|p| p.source.kind == "scene")
             .count();
         assert!(scenes >= 20, "{family}: {scenes} scene pipelines");
+        // Each scene pipeline is paired with the generic variant it
+        // specialises, an aliased variant (`alias_of`) through its target.
+        let paired = weft_gpu_stats::summary::scene_shader_costs(&generated(), f)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .len();
+        assert_eq!(
+            paired, scenes,
+            "{family}: scene pipelines with a generic pair"
+        );
         for p in &f.pipelines {
             for stage in ["vertex", "fragment"] {
                 let s = p
