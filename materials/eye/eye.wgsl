@@ -20,8 +20,9 @@
 //               the ray misses the cornea (sclera: Lambert + the same
 //               specular).
 //   fast      = the parallax lookup (eye_parallax: iris = p - v.xy h / IOR,
-//               the cornea normal above p) and Schlick's Fresnel for the
-//               tear film (eye_fresnel); otherwise the reference's lighting.
+//               the cornea normal above p), Schlick's Fresnel for the
+//               tear film (eye_fresnel) and standard fast's GGX lobe
+//               (eye_ggx); otherwise the reference's lighting.
 //   seed      = a look: the seed's offset uv + height * view_os.xy (y
 //               flipped), the matcap at the V x N-corrected view-space
 //               normal added to the albedo, lit without shadow (light / pi +
