@@ -101,7 +101,7 @@ struct McFastNode {
     float v;
     float p;
 };
-struct type_13 {
+struct type_12 {
     metal::float4 inner[2];
 };
 constant float WEFT_PI = 3.1415927;
@@ -321,7 +321,7 @@ metal::float3 mc_combine(
     return lit ? (s_2 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
-type_13 mc_normal4_(
+type_12 mc_normal4_(
     metal::float4 t
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
@@ -329,7 +329,7 @@ type_13 mc_normal4_(
     metal::float4 k_5 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
     metal::float4 poly = k_5 * (metal::float4(0.2548296) + (k_5 * (metal::float4(-0.28449672) + (k_5 * (metal::float4(1.4214138) + (k_5 * (metal::float4(-1.4531521) + (k_5 * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
-    return type_13 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
 
 metal::float3 mc_cell_means(
@@ -337,7 +337,7 @@ metal::float3 mc_cell_means(
     float inv_gamma
 ) {
     metal::float4 t_2 = xe * inv_gamma;
-    type_13 _e3 = mc_normal4_(t_2);
+    type_12 _e3 = mc_normal4_(t_2);
     metal::float3 dt = t_2.yzw - t_2.xyz;
     metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
     metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);

@@ -83,17 +83,9 @@ fn weft_env_brdf_lut(n_dot_v: f32, roughness: f32) -> vec2<f32> {
     return textureSampleLevel(weft_brdf_lut, weft_lut_sampler, uv, 0.0).rg;
 }
 
-// The same table read at its nearest texel (textureLoad: one texel, no
-// filtering), for fast tiers: on a software rasteriser the bilinear filter is
-// a measurable part of the fetch. The table holds texel centres, so the
-// nearest texel is (n.v, r) rounded to the grid: at most half a texel's step
-// (1 / 128 of the range) off in each coordinate.
-fn weft_env_brdf_lut_nearest(n_dot_v: f32, roughness: f32) -> vec2<f32> {
-    let size = vec2<f32>(textureDimensions(weft_brdf_lut));
-    let uv = vec2<f32>(saturate(n_dot_v), saturate(roughness));
-    let texel = vec2<i32>(min(uv * size, size - 1.0));
-    return textureLoad(weft_brdf_lut, texel, 0).rg;
-}
+// (No nearest-texel read of this table: standard, silk and satin used one
+// until 2026-11-28. It saves llvmpipe's software filter but costs ALU on a
+// GPU, whose sampler filters for free: materials/standard/README.md.)
 
 // ---------------------------------------------------------------- sphere map
 

@@ -16,7 +16,7 @@ fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness: f32) -> f32 {
 // The same table read at its nearest texel (textureLoad: one texel, no
 // filtering), for cheaper tiers: the table holds texel centres, so this
 // rounds (n.v, r) to the 32^2 grid, at most half a step (1/64) off in each
-// coordinate (as weft_env_brdf_lut_nearest for the split-sum table).
+// coordinate.
 fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness: f32) -> f32 {
     let size = vec2<f32>(textureDimensions(weft_sheen_lut));
     let uv = vec2<f32>(saturate(n_dot_x), weft_sheen_clamp_roughness(sheen_roughness));

@@ -215,7 +215,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // prefiltered environment and the table fetch stay f32; the noise factor is
 // applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
 // limit) and each width at 0.089^2; the table and the environment keep the
-// material's roughness. The table is read filtered, as fast (a nearest-texel read costs more on a GPU).
+// material's roughness. The table is read filtered, as fast (a nearest-texel
+// read costs more on a GPU).
 fn satin_lobe_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a: vec2<f32>) -> weft_half {
     var s = weft_half_spec_ggx_aniso(vf, lf, hf, a);
     if BIDIRECTIONAL {

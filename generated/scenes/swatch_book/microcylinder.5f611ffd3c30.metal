@@ -59,7 +59,7 @@ struct McFastNode {
     float v;
     float p;
 };
-struct type_11 {
+struct type_10 {
     metal::float4 inner[2];
 };
 struct McFastSet {
@@ -218,7 +218,7 @@ metal::float3x3 weft_tangent_frame(
     return metal::float3x3(t_1, b_1, n_2);
 }
 
-type_11 mc_normal4_(
+type_10 mc_normal4_(
     metal::float4 t
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
@@ -226,7 +226,7 @@ type_11 mc_normal4_(
     metal::float4 k_6 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
     metal::float4 poly = k_6 * (metal::float4(0.2548296) + (k_6 * (metal::float4(-0.28449672) + (k_6 * (metal::float4(1.4214138) + (k_6 * (metal::float4(-1.4531521) + (k_6 * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
-    return type_11 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+    return type_10 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
 
 metal::float3 mc_cell_means(
@@ -234,7 +234,7 @@ metal::float3 mc_cell_means(
     float inv_gamma
 ) {
     metal::float4 t_2 = xe * inv_gamma;
-    type_11 _e3 = mc_normal4_(t_2);
+    type_10 _e3 = mc_normal4_(t_2);
     metal::float3 dt = t_2.yzw - t_2.xyz;
     metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
     metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
