@@ -16,6 +16,7 @@ pub mod isa;
 pub mod jobs;
 pub mod loop_report;
 pub mod model;
+pub mod pairing;
 pub mod record;
 pub mod report;
 mod state;

@@ -5,6 +5,7 @@
 
 use crate::error::{Error, Result};
 use crate::loop_report::{self, TierModel};
+use crate::pairing::GenericVariants;
 use crate::record::{FamilyStats, PipelineStats, StageStats};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -153,7 +154,7 @@ pub fn markdown(generated: &Path, families: &[FamilyStats], command: &str) -> Re
         loop_table(&mut o, generated, f, &rows);
     }
     for f in families {
-        scene_table(&mut o, f);
+        scene_table(&mut o, generated, f)?;
     }
     Ok(o)
 }
@@ -361,15 +362,15 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
     );
 }
 
-fn scene_table(o: &mut String, f: &FamilyStats) {
-    let index = library_index(f);
+fn scene_table(o: &mut String, generated: &Path, f: &FamilyStats) -> Result<()> {
+    let mut generics = GenericVariants::new(generated);
     let scenes: Vec<&PipelineStats> = f
         .pipelines
         .iter()
         .filter(|p| p.source.kind == "scene")
         .collect();
     if scenes.is_empty() {
-        return;
+        return Ok(());
     }
     let _ = writeln!(
         o,
@@ -383,14 +384,7 @@ fn scene_table(o: &mut String, f: &FamilyStats) {
     let _ = writeln!(o, "|---|---|---|---|--:|--:|--:|");
     for p in scenes {
         let s = &p.source;
-        let generic = index
-            .get(&(
-                s.material.as_str(),
-                s.variant.as_str(),
-                "f32",
-                p.pass.as_str(),
-            ))
-            .and_then(|g| g.stage("fragment"));
+        let generic = generics.generic_of(f, p)?.and_then(|g| g.stage("fragment"));
         let fs = p.stage("fragment");
         let pair = |name: &str| format!("{} / {}", num(fig(fs, name)), num(fig(generic, name)));
         let _ = writeln!(
@@ -405,4 +399,5 @@ fn scene_table(o: &mut String, f: &FamilyStats) {
             pair(INVERSE_THROUGHPUT),
         );
     }
+    Ok(())
 }

@@ -4,13 +4,13 @@
 //! f32 files), each canonical library variant and each scene shader beside
 //! the generic variant it specialises, fragment stage.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::loop_report;
+use crate::pairing::{GenericVariants, material_pipeline, read_meta};
 use crate::record::{FamilyStats, PipelineStats};
 use crate::report::{INSTRUCTIONS, VGPRS, WAVES};
 use std::collections::BTreeMap;
 use std::path::Path;
-use weft_meta::MaterialMetadata;
 pub use weft_meta::gpu_model::{
     FILE_NAME, FamilySummary, FragmentCost, ModelSummary, SceneShaderCost, TierCost, VariantCost,
 };
@@ -116,7 +116,7 @@ fn scene_costs(
     f: &FamilyStats,
     entries: &BTreeMap<(String, String), String>,
 ) -> Result<Vec<SceneShaderCost>> {
-    let mut metas: BTreeMap<String, MaterialMetadata> = BTreeMap::new();
+    let mut generics = GenericVariants::new(generated);
     // The generic variant drawing a scene instance: its loops as many
     // times as the instance's shader shows (model::model_at).
     let generic_at = |g: &PipelineStats, scene: &PipelineStats| -> Option<FragmentCost> {
@@ -127,14 +127,7 @@ fn scene_costs(
     let mut scene_shaders = Vec::new();
     for p in f.pipelines.iter().filter(|p| p.source.kind == "scene") {
         let s = &p.source;
-        if !metas.contains_key(&s.material) {
-            metas.insert(s.material.clone(), read_meta(generated, &s.material)?);
-        }
-        let canonical = metas[&s.material]
-            .resolve_variant(&s.variant)
-            .map_or(s.variant.as_str(), |v| v.id.as_str());
-        let generic =
-            material_pipeline(f, &s.material, canonical, &p.pass).and_then(|g| generic_at(g, p));
+        let generic = generics.generic_of(f, p)?.and_then(|g| generic_at(g, p));
         let (Some(specialised), Some(generic)) = (cost_of(generated, entries, p), generic) else {
             continue;
         };
@@ -149,22 +142,6 @@ fn scene_costs(
         });
     }
     Ok(scene_shaders)
-}
-
-/// A library variant's f32 pipeline for one pass.
-fn material_pipeline<'a>(
-    f: &'a FamilyStats,
-    material: &str,
-    variant: &str,
-    pass: &str,
-) -> Option<&'a PipelineStats> {
-    f.pipelines.iter().find(|p| {
-        p.source.kind == "material"
-            && p.source.material == material
-            && p.source.variant == variant
-            && p.source.precision == "f32"
-            && p.pass == pass
-    })
 }
 
 /// A pipeline's fragment figures at its own loop counts.
@@ -204,15 +181,6 @@ fn combine(costs: &[FragmentCost]) -> Option<FragmentCost> {
 
 fn round(x: f64) -> f64 {
     (x * 1000.0).round() / 1000.0
-}
-
-fn read_meta(generated: &Path, material: &str) -> Result<MaterialMetadata> {
-    let path = generated
-        .join(material)
-        .join(format!("{material}.meta.json"));
-    let bytes =
-        std::fs::read(&path).map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
-    serde_json::from_slice(&bytes).map_err(|e| Error::Input(format!("{}: {e}", path.display())))
 }
 
 /// (material, pass) → the pass's fragment entry point, for every material

@@ -143,6 +143,22 @@ fn every_variant_pass_and_scene_shader_has_figures_on_navi21_and_gfx1100() {
             paired, scenes,
             "{family}: scene pipelines with a generic pair"
         );
+        // The report's table pairs them the same way: no scene row without
+        // its generic figures ("–").
+        let report =
+            weft_gpu_stats::report::markdown(&generated(), std::slice::from_ref(f), MODEL_COMMAND)
+                .unwrap_or_else(|e| panic!("{e}"));
+        let unpaired: Vec<&str> = report
+            .split("scene shaders against their generic variants")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{family}: no scene table"))
+            .lines()
+            .filter(|l| l.starts_with("| ") && l.contains(" / –"))
+            .collect();
+        assert!(
+            unpaired.is_empty(),
+            "{family}: scene rows without their generic variant: {unpaired:#?}"
+        );
         for p in &f.pipelines {
             for stage in ["vertex", "fragment"] {
                 let s = p
