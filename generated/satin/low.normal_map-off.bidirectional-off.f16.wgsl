@@ -123,9 +123,9 @@ fn weft_safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
 
 fn weft_any_perpendicular(n_1: vec3<f32>) -> vec3<f32> {
     let s_1 = select(-1f, 1f, (n_1.z >= 0f));
-    let a_1 = (-1f / (s_1 + n_1.z));
-    let b = ((n_1.x * n_1.y) * a_1);
-    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+    let a = (-1f / (s_1 + n_1.z));
+    let b = ((n_1.x * n_1.y) * a);
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 fn weft_f_schlick(f0_: vec3<f32>, v_dot_h: f32) -> vec3<f32> {
@@ -234,9 +234,9 @@ fn weft_aniso_to_frame(frame: mat3x3<f32>, x_1: vec3<f32>) -> vec3<f32> {
 
 fn weft_aniso_alpha_kulla(roughness_4: f32, anisotropy: f32) -> vec2<f32> {
     let _e2 = weft_clamp_roughness(roughness_4);
-    let a_2 = (_e2 * _e2);
+    let a_1 = (_e2 * _e2);
     let k_1 = clamp(anisotropy, -1f, 1f);
-    return max(vec2<f32>((a_2 * (1f + k_1)), (a_2 * (1f - k_1))), vec2(0.001f));
+    return max(vec2<f32>((a_1 * (1f + k_1)), (a_1 * (1f - k_1))), vec2(0.001f));
 }
 
 fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f32, roughness_5: f32) -> vec3<f32> {
@@ -250,13 +250,9 @@ fn weft_aniso_bent_normal(frame_1: mat3x3<f32>, v_2: vec3<f32>, anisotropy_1: f3
     return _e22;
 }
 
-fn weft_half_min_max(x_2: f16) -> f16 {
-    return min(x_2, 65504h);
-}
-
-fn weft_half_pow5_(x_3: f16) -> f16 {
-    let x2_1 = (x_3 * x_3);
-    return ((x2_1 * x2_1) * x_3);
+fn weft_half_pow5_(x_2: f16) -> f16 {
+    let x2_1 = (x_2 * x_2);
+    return ((x2_1 * x2_1) * x_2);
 }
 
 fn weft_half_f_schlick(f0_2: vec3<f16>, v_dot_h_1: f16) -> vec3<f16> {
@@ -264,21 +260,27 @@ fn weft_half_f_schlick(f0_2: vec3<f16>, v_dot_h_1: f16) -> vec3<f16> {
     return (f0_2 + ((vec3(1h) - f0_2) * _e7));
 }
 
-fn weft_half_spec_ggx_aniso(v_3: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha: vec2<f32>) -> f16 {
-    let a_3 = max(alpha, vec2(0.007921f));
-    let inv_a = vec2<f16>((vec2(1f) / a_3));
-    let ah = vec2<f16>(a_3);
-    let x_4 = (h.x * inv_a.x);
-    let y = (h.y * inv_a.y);
-    let q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.010002136h);
-    let d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31835938h);
+fn weft_half_spec_ggx_aniso2_(v_3: vec3<f16>, l: vec3<f16>, h: vec3<f16>, alpha_t: vec2<f32>, alpha_b: vec2<f32>) -> vec2<f16> {
+    let at = max(alpha_t, vec2(0.007921f));
+    let ab = max(alpha_b, vec2(0.007921f));
+    let inv_at = vec2<f16>((vec2(1f) / at));
+    let inv_ab = vec2<f16>((vec2(1f) / ab));
+    let at_h = vec2<f16>(at);
+    let ab_h = vec2<f16>(ab);
+    let x_3 = (h.x * inv_at);
+    let y = (h.y * inv_ab);
+    let q = max((((x_3 * x_3) + (y * y)) + vec2((h.z * h.z))), vec2(0.010002136h));
+    let d = ((((inv_at * inv_ab) / q) / q) * 0.31835938h);
     let nv = max(v_3.z, 0.0010004044h);
     let nl = saturate(l.z);
-    let lv = (nl * length(vec3<f16>((ah.x * v_3.x), (ah.y * v_3.y), nv)));
-    let ll = (nv * length(vec3<f16>((ah.x * l.x), (ah.y * l.y), nl)));
-    let v_n_dot_l = ((0.5h * nl) / max((lv + ll), 0.000100016594h));
-    let _e65 = weft_half_min_max((d * v_n_dot_l));
-    return select(0h, _e65, (h.z > 0h));
+    let vt = (at_h * v_3.x);
+    let vb = (ab_h * v_3.y);
+    let lt = (at_h * l.x);
+    let lb = (ab_h * l.y);
+    let lv = (nl * sqrt((((vt * vt) + (vb * vb)) + vec2((nv * nv)))));
+    let ll = (nv * sqrt((((lt * lt) + (lb * lb)) + vec2((nl * nl)))));
+    let v_n_dot_l = (vec2((0.5h * nl)) / max((lv + ll), vec2(0.000100016594h)));
+    return select(vec2(0h), min((d * v_n_dot_l), vec2(65504h)), (h.z > 0h));
 }
 
 fn satin_env(frame_2: mat3x3<f32>, v_4: vec3<f32>, k: f32, roughness_6: f32) -> vec3<f32> {
@@ -294,13 +296,15 @@ fn satin_env(frame_2: mat3x3<f32>, v_4: vec3<f32>, k: f32, roughness_6: f32) -> 
     return _e11;
 }
 
-fn satin_lobe_low(vf: vec3<f16>, lf: vec3<f16>, hf: vec3<f16>, a: vec2<f32>) -> f16 {
-    var s: f16;
+fn satin_lobes_low(vf: vec3<f16>, lf: vec3<f16>, hf: vec3<f16>, a1_: vec2<f32>, a2_: vec2<f32>) -> vec2<f16> {
+    var s: vec2<f16>;
 
-    let _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
-    s = _e4;
-    let _e6 = s;
-    return _e6;
+    let at_1 = vec2<f32>(a1_.x, a2_.x);
+    let ab_1 = vec2<f32>(a1_.y, a2_.y);
+    let _e11 = weft_half_spec_ggx_aniso2_(vf, lf, hf, at_1, ab_1);
+    s = _e11;
+    let _e13 = s;
+    return _e13;
 }
 
 fn satin_low(frame_3: mat3x3<f32>, n_5: vec3<f32>, v_5: vec3<f32>, lit: WeftLightGeometry, f0_in: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_7: f32, roughness2_: f32, anisotropy_2: f32, c1_in: vec3<f32>, c2_in: vec3<f32>, noise: f32, ao: f32, light: vec3<f32>) -> vec3<f32> {
@@ -325,26 +329,27 @@ fn satin_low(frame_3: mat3x3<f32>, n_5: vec3<f32>, v_5: vec3<f32>, lit: WeftLigh
     let _e60 = weft_aniso_to_frame(frame_3, lit.h);
     let hf_1 = vec3<f16>(_e60);
     let _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
-    let _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
-    let _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    let _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    let _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    let specular_1 = (((vec3<f32>((w1_ * _e66)) * f32(_e63)) + (vec3<f32>((w2_ * _e66)) * f32(_e65))) * (noise * light));
-    let _e82 = weft_half_f_schlick(f0_3, f16(n_dot_v_1));
-    let diffuse_kd_1 = max((vec3(1h) - ((w1_ + w2_) * _e82)), vec3(0h));
-    let _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
-    let _e89 = weft_env_brdf_from_lut(f0_in, _e88);
-    let e1_ = (vec3<f16>(_e89) * w1_);
-    let _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
-    let _e93 = weft_env_brdf_from_lut(f0_in, _e92);
-    let e2_ = (vec3<f16>(_e93) * w2_);
+    let _e63 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
+    let _e64 = satin_lobes_low(vf_1, lf_1, hf_1, _e62, _e63);
+    let lobe1_ = _e64.x;
+    let lobe2_ = _e64.y;
+    let _e67 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    let specular_1 = (((vec3<f32>((w1_ * _e67)) * f32(lobe1_)) + (vec3<f32>((w2_ * _e67)) * f32(lobe2_))) * (noise * light));
+    let _e83 = weft_half_f_schlick(f0_3, f16(n_dot_v_1));
+    let diffuse_kd_1 = max((vec3(1h) - ((w1_ + w2_) * _e83)), vec3(0h));
+    let _e89 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
+    let _e90 = weft_env_brdf_from_lut(f0_in, _e89);
+    let e1_ = (vec3<f16>(_e90) * w1_);
+    let _e93 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
+    let _e94 = weft_env_brdf_from_lut(f0_in, _e93);
+    let e2_ = (vec3<f16>(_e94) * w2_);
     let r_env = select(roughness2_, roughness_7, (max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))));
-    let _e108 = satin_env(frame_3, v_5, anisotropy_2, r_env);
-    let indirect_specular_1 = ((_e108 * vec3<f32>((e1_ + e2_))) * noise);
+    let _e109 = satin_env(frame_3, v_5, anisotropy_2, r_env);
+    let indirect_specular_1 = ((_e109 * vec3<f32>((e1_ + e2_))) * noise);
     let ambient_kd_1 = max(((vec3(1h) - e1_) - e2_), vec3(0h));
     let direct = (((diffuse_albedo * vec3<f32>((diffuse_kd_1 * (n_dot_l * 0.31835938h)))) * light) + specular_1);
-    let _e128 = weft_sh_irradiance(n_5);
-    let indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
+    let _e129 = weft_sh_irradiance(n_5);
+    let indirect = ((indirect_specular_1 * ao) + (((_e129 * ao) * vec3<f32>(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -387,7 +392,7 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e11 = textureSample(base_map, material_sampler, _e5);
     let base_rgba = (_e8 * _e11);
     let base = saturate(base_rgba.xyz);
-    let alpha_1 = saturate(base_rgba.w);
+    let alpha = saturate(base_rgba.w);
     let _e19 = textureSample(rmo_map, material_sampler, _e5);
     let rmo = _e19.xyz;
     let _e23 = material.roughness;
@@ -427,6 +432,6 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         let _e104 = n;
         let _e105 = satin_low(_e77, _e104, v_6, _e79, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e80);
-        return vec4<f32>(clamp(_e105, vec3(0f), vec3(65504f)), alpha_1);
+        return vec4<f32>(clamp(_e105, vec3(0f), vec3(65504f)), alpha);
     }
 }

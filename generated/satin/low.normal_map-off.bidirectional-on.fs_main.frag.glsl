@@ -111,9 +111,9 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 
 vec3 weft_any_perpendicular(vec3 n_1) {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a_1);
-    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -221,9 +221,9 @@ vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
 
 vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
     float _e2 = weft_clamp_roughness(roughness_4);
-    float a_2 = (_e2 * _e2);
+    float a_1 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
+    return max(vec2((a_1 * (1.0 + k_1)), (a_1 * (1.0 - k_1))), vec2(0.001));
 }
 
 vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float roughness_5) {
@@ -237,13 +237,9 @@ vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float 
     return _e22;
 }
 
-float weft_half_min_max(float x_2) {
-    return min(x_2, 65504.0);
-}
-
-float weft_half_pow5_(float x_3) {
-    float x2_1 = (x_3 * x_3);
-    return ((x2_1 * x2_1) * x_3);
+float weft_half_pow5_(float x_2) {
+    float x2_1 = (x_2 * x_2);
+    return ((x2_1 * x2_1) * x_2);
 }
 
 vec3 weft_half_f_schlick(vec3 f0_2, float v_dot_h_1) {
@@ -251,21 +247,27 @@ vec3 weft_half_f_schlick(vec3 f0_2, float v_dot_h_1) {
     return (f0_2 + ((vec3(1.0) - f0_2) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(vec3 v_3, vec3 l, vec3 h, vec2 alpha) {
-    vec2 a_3 = max(alpha, vec2(0.007921));
-    vec2 inv_a = vec2((vec2(1.0) / a_3));
-    vec2 ah = vec2(a_3);
-    float x_4 = (h.x * inv_a.x);
-    float y = (h.y * inv_a.y);
-    float q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01);
-    float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
+vec2 weft_half_spec_ggx_aniso2_(vec3 v_3, vec3 l, vec3 h, vec2 alpha_t, vec2 alpha_b) {
+    vec2 at = max(alpha_t, vec2(0.007921));
+    vec2 ab = max(alpha_b, vec2(0.007921));
+    vec2 inv_at = vec2((vec2(1.0) / at));
+    vec2 inv_ab = vec2((vec2(1.0) / ab));
+    vec2 at_h = vec2(at);
+    vec2 ab_h = vec2(ab);
+    vec2 x_3 = (h.x * inv_at);
+    vec2 y = (h.y * inv_ab);
+    vec2 q = max((((x_3 * x_3) + (y * y)) + vec2((h.z * h.z))), vec2(0.01));
+    vec2 d = ((((inv_at * inv_ab) / q) / q) * 0.31830987);
     float nv = max(v_3.z, 0.001);
     float nl = clamp(l.z, 0.0, 1.0);
-    float lv = (nl * length(vec3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
-    float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
-    float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
-    float _e65 = weft_half_min_max((d * v_n_dot_l));
-    return ((h.z > 0.0) ? _e65 : 0.0);
+    vec2 vt = (at_h * v_3.x);
+    vec2 vb = (ab_h * v_3.y);
+    vec2 lt = (at_h * l.x);
+    vec2 lb = (ab_h * l.y);
+    vec2 lv = (nl * sqrt((((vt * vt) + (vb * vb)) + vec2((nv * nv)))));
+    vec2 ll = (nv * sqrt((((lt * lt) + (lb * lb)) + vec2((nl * nl)))));
+    vec2 v_n_dot_l = (vec2((0.5 * nl)) / max((lv + ll), vec2(0.0001)));
+    return ((h.z > 0.0) ? min((d * v_n_dot_l), vec2(65504.0)) : vec2(0.0));
 }
 
 vec3 satin_env(mat3x3 frame_2, vec3 v_4, float k, float roughness_6) {
@@ -288,17 +290,19 @@ vec3 satin_env(mat3x3 frame_2, vec3 v_4, float k, float roughness_6) {
     return _e21;
 }
 
-float satin_lobe_low(vec3 vf, vec3 lf, vec3 hf, vec2 a) {
-    float s = 0.0;
-    float _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
-    s = _e4;
+vec2 satin_lobes_low(vec3 vf, vec3 lf, vec3 hf, vec2 a1_, vec2 a2_) {
+    vec2 s = vec2(0.0);
+    vec2 at_1 = vec2(a1_.x, a2_.x);
+    vec2 ab_1 = vec2(a1_.y, a2_.y);
+    vec2 _e11 = weft_half_spec_ggx_aniso2_(vf, lf, hf, at_1, ab_1);
+    s = _e11;
     {
-        float _e7 = s;
-        float _e9 = weft_half_spec_ggx_aniso(vf, lf, hf, a.yx);
-        s = (0.5 * (_e7 + _e9));
+        vec2 _e14 = s;
+        vec2 _e15 = weft_half_spec_ggx_aniso2_(vf, lf, hf, ab_1, at_1);
+        s = (0.5 * (_e14 + _e15));
     }
-    float _e12 = s;
-    return _e12;
+    vec2 _e18 = s;
+    return _e18;
 }
 
 vec3 satin_low(mat3x3 frame_3, vec3 n_5, vec3 v_5, WeftLightGeometry lit, vec3 f0_in, vec3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, vec3 c1_in, vec3 c2_in, float noise, float ao, vec3 light) {
@@ -323,26 +327,27 @@ vec3 satin_low(mat3x3 frame_3, vec3 n_5, vec3 v_5, WeftLightGeometry lit, vec3 f
     vec3 _e60 = weft_aniso_to_frame(frame_3, lit.h);
     vec3 hf_1 = vec3(_e60);
     vec2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
-    float _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
-    vec2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    float _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    vec3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    vec3 specular_1 = (((vec3((w1_ * _e66)) * float(_e63)) + (vec3((w2_ * _e66)) * float(_e65))) * (noise * light));
-    vec3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
-    vec3 diffuse_kd_1 = max((vec3(1.0) - ((w1_ + w2_) * _e82)), vec3(0.0));
-    vec2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
-    vec3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
-    vec3 e1_ = (vec3(_e89) * w1_);
-    vec2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
-    vec3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
-    vec3 e2_ = (vec3(_e93) * w2_);
+    vec2 _e63 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
+    vec2 _e64 = satin_lobes_low(vf_1, lf_1, hf_1, _e62, _e63);
+    float lobe1_ = _e64.x;
+    float lobe2_ = _e64.y;
+    vec3 _e67 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    vec3 specular_1 = (((vec3((w1_ * _e67)) * float(lobe1_)) + (vec3((w2_ * _e67)) * float(lobe2_))) * (noise * light));
+    vec3 _e83 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
+    vec3 diffuse_kd_1 = max((vec3(1.0) - ((w1_ + w2_) * _e83)), vec3(0.0));
+    vec2 _e89 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
+    vec3 _e90 = weft_env_brdf_from_lut(f0_in, _e89);
+    vec3 e1_ = (vec3(_e90) * w1_);
+    vec2 _e93 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
+    vec3 _e94 = weft_env_brdf_from_lut(f0_in, _e93);
+    vec3 e2_ = (vec3(_e94) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);
-    vec3 _e108 = satin_env(frame_3, v_5, anisotropy_2, r_env);
-    vec3 indirect_specular_1 = ((_e108 * vec3((e1_ + e2_))) * noise);
+    vec3 _e109 = satin_env(frame_3, v_5, anisotropy_2, r_env);
+    vec3 indirect_specular_1 = ((_e109 * vec3((e1_ + e2_))) * noise);
     vec3 ambient_kd_1 = max(((vec3(1.0) - e1_) - e2_), vec3(0.0));
     vec3 direct = (((diffuse_albedo * vec3((diffuse_kd_1 * (n_dot_l * 0.31830987)))) * light) + specular_1);
-    vec3 _e128 = weft_sh_irradiance(n_5);
-    vec3 indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * vec3(ambient_kd_1)) * diffuse_albedo));
+    vec3 _e129 = weft_sh_irradiance(n_5);
+    vec3 indirect = ((indirect_specular_1 * ao) + (((_e129 * ao) * vec3(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -361,7 +366,7 @@ void main() {
     vec4 _e11 = texture(_group_1_binding_3_fs, vec2(_e5));
     vec4 base_rgba = (_e8 * _e11);
     vec3 base = clamp(base_rgba.xyz, vec3(0.0), vec3(1.0));
-    float alpha_1 = clamp(base_rgba.w, 0.0, 1.0);
+    float alpha = clamp(base_rgba.w, 0.0, 1.0);
     vec4 _e19 = texture(_group_1_binding_5_fs, vec2(_e5));
     vec3 rmo = _e19.xyz;
     float _e23 = _group_1_binding_0_fs.roughness;
@@ -401,7 +406,7 @@ void main() {
     {
         vec3 _e104 = n;
         vec3 _e105 = satin_low(_e77, _e104, v_6, _e79, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e80);
-        _fs2p_location0 = vec4(clamp(_e105, vec3(0.0), vec3(65504.0)), alpha_1);
+        _fs2p_location0 = vec4(clamp(_e105, vec3(0.0), vec3(65504.0)), alpha);
         return;
     }
 }

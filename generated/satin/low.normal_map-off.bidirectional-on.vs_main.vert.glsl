@@ -104,9 +104,9 @@ vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
 
 vec3 weft_any_perpendicular(vec3 n_1) {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a_1);
-    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 vec3 weft_f_schlick(vec3 f0_, float v_dot_h) {
@@ -202,9 +202,9 @@ vec3 weft_aniso_to_frame(mat3x3 frame, vec3 x_1) {
 
 vec2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy) {
     float _e2 = weft_clamp_roughness(roughness_4);
-    float a_2 = (_e2 * _e2);
+    float a_1 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(vec2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), vec2(0.001));
+    return max(vec2((a_1 * (1.0 + k_1)), (a_1 * (1.0 - k_1))), vec2(0.001));
 }
 
 vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float roughness_5) {
@@ -218,13 +218,9 @@ vec3 weft_aniso_bent_normal(mat3x3 frame_1, vec3 v_2, float anisotropy_1, float 
     return _e22;
 }
 
-float weft_half_min_max(float x_2) {
-    return min(x_2, 65504.0);
-}
-
-float weft_half_pow5_(float x_3) {
-    float x2_1 = (x_3 * x_3);
-    return ((x2_1 * x2_1) * x_3);
+float weft_half_pow5_(float x_2) {
+    float x2_1 = (x_2 * x_2);
+    return ((x2_1 * x2_1) * x_2);
 }
 
 vec3 weft_half_f_schlick(vec3 f0_2, float v_dot_h_1) {
@@ -232,34 +228,42 @@ vec3 weft_half_f_schlick(vec3 f0_2, float v_dot_h_1) {
     return (f0_2 + ((vec3(1.0) - f0_2) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(vec3 v_3, vec3 l, vec3 h, vec2 alpha) {
-    vec2 a_3 = max(alpha, vec2(0.007921));
-    vec2 inv_a = vec2((vec2(1.0) / a_3));
-    vec2 ah = vec2(a_3);
-    float x_4 = (h.x * inv_a.x);
-    float y = (h.y * inv_a.y);
-    float q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01);
-    float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
+vec2 weft_half_spec_ggx_aniso2_(vec3 v_3, vec3 l, vec3 h, vec2 alpha_t, vec2 alpha_b) {
+    vec2 at = max(alpha_t, vec2(0.007921));
+    vec2 ab = max(alpha_b, vec2(0.007921));
+    vec2 inv_at = vec2((vec2(1.0) / at));
+    vec2 inv_ab = vec2((vec2(1.0) / ab));
+    vec2 at_h = vec2(at);
+    vec2 ab_h = vec2(ab);
+    vec2 x_3 = (h.x * inv_at);
+    vec2 y = (h.y * inv_ab);
+    vec2 q = max((((x_3 * x_3) + (y * y)) + vec2((h.z * h.z))), vec2(0.01));
+    vec2 d = ((((inv_at * inv_ab) / q) / q) * 0.31830987);
     float nv = max(v_3.z, 0.001);
     float nl = clamp(l.z, 0.0, 1.0);
-    float lv = (nl * length(vec3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
-    float ll = (nv * length(vec3((ah.x * l.x), (ah.y * l.y), nl)));
-    float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
-    float _e65 = weft_half_min_max((d * v_n_dot_l));
-    return ((h.z > 0.0) ? _e65 : 0.0);
+    vec2 vt = (at_h * v_3.x);
+    vec2 vb = (ab_h * v_3.y);
+    vec2 lt = (at_h * l.x);
+    vec2 lb = (ab_h * l.y);
+    vec2 lv = (nl * sqrt((((vt * vt) + (vb * vb)) + vec2((nv * nv)))));
+    vec2 ll = (nv * sqrt((((lt * lt) + (lb * lb)) + vec2((nl * nl)))));
+    vec2 v_n_dot_l = (vec2((0.5 * nl)) / max((lv + ll), vec2(0.0001)));
+    return ((h.z > 0.0) ? min((d * v_n_dot_l), vec2(65504.0)) : vec2(0.0));
 }
 
-float satin_lobe_low(vec3 vf, vec3 lf, vec3 hf, vec2 a) {
-    float s = 0.0;
-    float _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
-    s = _e4;
+vec2 satin_lobes_low(vec3 vf, vec3 lf, vec3 hf, vec2 a1_, vec2 a2_) {
+    vec2 s = vec2(0.0);
+    vec2 at_1 = vec2(a1_.x, a2_.x);
+    vec2 ab_1 = vec2(a1_.y, a2_.y);
+    vec2 _e11 = weft_half_spec_ggx_aniso2_(vf, lf, hf, at_1, ab_1);
+    s = _e11;
     {
-        float _e7 = s;
-        float _e9 = weft_half_spec_ggx_aniso(vf, lf, hf, a.yx);
-        s = (0.5 * (_e7 + _e9));
+        vec2 _e14 = s;
+        vec2 _e15 = weft_half_spec_ggx_aniso2_(vf, lf, hf, ab_1, at_1);
+        s = (0.5 * (_e14 + _e15));
     }
-    float _e12 = s;
-    return _e12;
+    vec2 _e18 = s;
+    return _e18;
 }
 
 void main() {

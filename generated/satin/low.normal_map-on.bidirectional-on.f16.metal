@@ -118,9 +118,9 @@ metal::float3 weft_any_perpendicular(
     metal::float3 n_1
 ) {
     float s_1 = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a_1 = -1.0 / (s_1 + n_1.z);
-    float b = (n_1.x * n_1.y) * a_1;
-    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a_1), s_1 * b, -(s_1) * n_1.x);
+    float a = -1.0 / (s_1 + n_1.z);
+    float b = (n_1.x * n_1.y) * a;
+    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a), s_1 * b, -(s_1) * n_1.x);
 }
 
 metal::float3 weft_f_schlick(
@@ -307,9 +307,9 @@ metal::float2 weft_aniso_alpha_kulla(
     float anisotropy
 ) {
     float _e2 = weft_clamp_roughness(roughness_4);
-    float a_2 = _e2 * _e2;
+    float a_1 = _e2 * _e2;
     float k_1 = metal::clamp(anisotropy, -1.0, 1.0);
-    return metal::max(metal::float2(a_2 * (1.0 + k_1), a_2 * (1.0 - k_1)), metal::float2(0.001));
+    return metal::max(metal::float2(a_1 * (1.0 + k_1), a_1 * (1.0 - k_1)), metal::float2(0.001));
 }
 
 metal::float3 weft_aniso_bent_normal(
@@ -328,17 +328,11 @@ metal::float3 weft_aniso_bent_normal(
     return _e22;
 }
 
-weft_half weft_half_min_max(
+weft_half weft_half_pow5_(
     weft_half x_2
 ) {
-    return metal::min(x_2, 65504.0h);
-}
-
-weft_half weft_half_pow5_(
-    weft_half x_3
-) {
-    weft_half x2_1 = x_3 * x_3;
-    return (x2_1 * x2_1) * x_3;
+    weft_half x2_1 = x_2 * x_2;
+    return (x2_1 * x2_1) * x_2;
 }
 
 metal::half3 weft_half_f_schlick(
@@ -349,26 +343,33 @@ metal::half3 weft_half_f_schlick(
     return f0_2 + ((metal::half3(1.0h) - f0_2) * _e7);
 }
 
-weft_half weft_half_spec_ggx_aniso(
+metal::half2 weft_half_spec_ggx_aniso2_(
     metal::half3 v_3,
     metal::half3 l,
     metal::half3 h,
-    metal::float2 alpha
+    metal::float2 alpha_t,
+    metal::float2 alpha_b
 ) {
-    metal::float2 a_3 = metal::max(alpha, metal::float2(0.007921));
-    metal::half2 inv_a = static_cast<metal::half2>(metal::float2(1.0) / a_3);
-    metal::half2 ah = static_cast<metal::half2>(a_3);
-    half x_4 = h.x * inv_a.x;
-    half y = h.y * inv_a.y;
-    half q = metal::max(((x_4 * x_4) + (y * y)) + (h.z * h.z), 0.010002136h);
-    half d = (((inv_a.x * inv_a.y) / q) / q) * 0.31835938h;
+    metal::float2 at = metal::max(alpha_t, metal::float2(0.007921));
+    metal::float2 ab = metal::max(alpha_b, metal::float2(0.007921));
+    metal::half2 inv_at = static_cast<metal::half2>(metal::float2(1.0) / at);
+    metal::half2 inv_ab = static_cast<metal::half2>(metal::float2(1.0) / ab);
+    metal::half2 at_h = static_cast<metal::half2>(at);
+    metal::half2 ab_h = static_cast<metal::half2>(ab);
+    metal::half2 x_3 = h.x * inv_at;
+    metal::half2 y = h.y * inv_ab;
+    metal::half2 q = metal::max(((x_3 * x_3) + (y * y)) + metal::half2(h.z * h.z), metal::half2(0.010002136h));
+    metal::half2 d = (((inv_at * inv_ab) / q) / q) * 0.31835938h;
     half nv = metal::max(v_3.z, 0.0010004044h);
     half nl = metal::saturate(l.z);
-    half lv = nl * metal::length(metal::half3(ah.x * v_3.x, ah.y * v_3.y, nv));
-    half ll = nv * metal::length(metal::half3(ah.x * l.x, ah.y * l.y, nl));
-    half v_n_dot_l = (0.5h * nl) / metal::max(lv + ll, 0.000100016594h);
-    weft_half _e65 = weft_half_min_max(d * v_n_dot_l);
-    return (h.z > 0.0h) ? _e65 : 0.0h;
+    metal::half2 vt = at_h * v_3.x;
+    metal::half2 vb = ab_h * v_3.y;
+    metal::half2 lt = at_h * l.x;
+    metal::half2 lb = ab_h * l.y;
+    metal::half2 lv = nl * metal::sqrt(((vt * vt) + (vb * vb)) + metal::half2(nv * nv));
+    metal::half2 ll = nv * metal::sqrt(((lt * lt) + (lb * lb)) + metal::half2(nl * nl));
+    metal::half2 v_n_dot_l = metal::half2(0.5h * nl) / metal::max(lv + ll, metal::half2(0.000100016594h));
+    return (h.z > 0.0h) ? metal::min(d * v_n_dot_l, metal::half2(65504.0h)) : metal::half2(0.0h);
 }
 
 metal::float3 satin_env(
@@ -399,22 +400,25 @@ metal::float3 satin_env(
     return _e21;
 }
 
-weft_half satin_lobe_low(
+metal::half2 satin_lobes_low(
     metal::half3 vf,
     metal::half3 lf,
     metal::half3 hf,
-    metal::float2 a
+    metal::float2 a1_,
+    metal::float2 a2_
 ) {
-    weft_half s = {};
-    weft_half _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
-    s = _e4;
+    metal::half2 s = {};
+    metal::float2 at_1 = metal::float2(a1_.x, a2_.x);
+    metal::float2 ab_1 = metal::float2(a1_.y, a2_.y);
+    metal::half2 _e11 = weft_half_spec_ggx_aniso2_(vf, lf, hf, at_1, ab_1);
+    s = _e11;
     {
-        weft_half _e7 = s;
-        weft_half _e9 = weft_half_spec_ggx_aniso(vf, lf, hf, a.yx);
-        s = 0.5h * (_e7 + _e9);
+        metal::half2 _e14 = s;
+        metal::half2 _e15 = weft_half_spec_ggx_aniso2_(vf, lf, hf, ab_1, at_1);
+        s = 0.5h * (_e14 + _e15);
     }
-    weft_half _e12 = s;
-    return _e12;
+    metal::half2 _e18 = s;
+    return _e18;
 }
 
 metal::float3 satin_low(
@@ -459,26 +463,27 @@ metal::float3 satin_low(
     metal::float3 _e60 = weft_aniso_to_frame(frame_4, lit.h);
     metal::half3 hf_1 = static_cast<metal::half3>(_e60);
     metal::float2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
-    weft_half _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
-    metal::float2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    weft_half _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    metal::half3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    metal::float3 specular_1 = ((static_cast<metal::float3>(w1_ * _e66) * static_cast<float>(_e63)) + (static_cast<metal::float3>(w2_ * _e66) * static_cast<float>(_e65))) * (noise * light);
-    metal::half3 _e82 = weft_half_f_schlick(f0_3, static_cast<half>(n_dot_v_1));
-    metal::half3 diffuse_kd_1 = metal::max(metal::half3(1.0h) - ((w1_ + w2_) * _e82), metal::half3(0.0h));
-    metal::float2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
-    metal::half3 e1_ = static_cast<metal::half3>(_e89) * w1_;
-    metal::float2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
-    metal::half3 e2_ = static_cast<metal::half3>(_e93) * w2_;
+    metal::float2 _e63 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
+    metal::half2 _e64 = satin_lobes_low(vf_1, lf_1, hf_1, _e62, _e63);
+    half lobe1_ = _e64.x;
+    half lobe2_ = _e64.y;
+    metal::half3 _e67 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    metal::float3 specular_1 = ((static_cast<metal::float3>(w1_ * _e67) * static_cast<float>(lobe1_)) + (static_cast<metal::float3>(w2_ * _e67) * static_cast<float>(lobe2_))) * (noise * light);
+    metal::half3 _e83 = weft_half_f_schlick(f0_3, static_cast<half>(n_dot_v_1));
+    metal::half3 diffuse_kd_1 = metal::max(metal::half3(1.0h) - ((w1_ + w2_) * _e83), metal::half3(0.0h));
+    metal::float2 _e89 = weft_env_brdf_lut(n_dot_v_1, roughness_7, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e90 = weft_env_brdf_from_lut(f0_in, _e89);
+    metal::half3 e1_ = static_cast<metal::half3>(_e90) * w1_;
+    metal::float2 _e93 = weft_env_brdf_lut(n_dot_v_1, roughness2_, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e94 = weft_env_brdf_from_lut(f0_in, _e93);
+    metal::half3 e2_ = static_cast<metal::half3>(_e94) * w2_;
     float r_env = (metal::max(e1_.x, metal::max(e1_.y, e1_.z)) >= metal::max(e2_.x, metal::max(e2_.y, e2_.z))) ? roughness_7 : roughness2_;
-    metal::float3 _e108 = satin_env(frame_4, v_5, anisotropy_2, r_env, weft_frame, weft_environment, weft_environment_sampler);
-    metal::float3 indirect_specular_1 = (_e108 * static_cast<metal::float3>(e1_ + e2_)) * noise;
+    metal::float3 _e109 = satin_env(frame_4, v_5, anisotropy_2, r_env, weft_frame, weft_environment, weft_environment_sampler);
+    metal::float3 indirect_specular_1 = (_e109 * static_cast<metal::float3>(e1_ + e2_)) * noise;
     metal::half3 ambient_kd_1 = metal::max((metal::half3(1.0h) - e1_) - e2_, metal::half3(0.0h));
     metal::float3 direct = ((diffuse_albedo * static_cast<metal::float3>(diffuse_kd_1 * (n_dot_l * 0.31835938h))) * light) + specular_1;
-    metal::float3 _e128 = weft_sh_irradiance(n_6, weft_frame);
-    metal::float3 indirect = (indirect_specular_1 * ao) + (((_e128 * ao) * static_cast<metal::float3>(ambient_kd_1)) * diffuse_albedo);
+    metal::float3 _e129 = weft_sh_irradiance(n_6, weft_frame);
+    metal::float3 indirect = (indirect_specular_1 * ao) + (((_e129 * ao) * static_cast<metal::float3>(ambient_kd_1)) * diffuse_albedo);
     return direct + indirect;
 }
 
@@ -561,7 +566,7 @@ fragment fs_mainOutput fs_main(
     metal::float4 _e11 = base_map.sample(material_sampler, _e5);
     metal::float4 base_rgba = _e8 * _e11;
     metal::float3 base = metal::saturate(base_rgba.xyz);
-    float alpha_1 = metal::saturate(base_rgba.w);
+    float alpha = metal::saturate(base_rgba.w);
     metal::float4 _e19 = rmo_map.sample(material_sampler, _e5);
     metal::float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
@@ -609,6 +614,6 @@ fragment fs_mainOutput fs_main(
     {
         metal::float3 _e114 = n;
         metal::float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90, weft_frame, weft_environment, weft_environment_sampler, weft_brdf_lut, weft_lut_sampler);
-        return fs_mainOutput { metal::float4(metal::clamp(_e115, metal::float3(0.0), metal::float3(65504.0)), alpha_1) };
+        return fs_mainOutput { metal::float4(metal::clamp(_e115, metal::float3(0.0), metal::float3(65504.0)), alpha) };
     }
 }

@@ -149,9 +149,9 @@ float3 weft_safe_normalize(float3 v, float3 fallback)
 float3 weft_any_perpendicular(float3 n_1)
 {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_1 = (-1.0 / (s_1 + n_1.z));
-    float b = ((n_1.x * n_1.y) * a_1);
-    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_1)), (s_1 * b), (-(s_1) * n_1.x));
+    float a = (-1.0 / (s_1 + n_1.z));
+    float b = ((n_1.x * n_1.y) * a);
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a)), (s_1 * b), (-(s_1) * n_1.x));
 }
 
 float3 weft_f_schlick(float3 f0_, float v_dot_h)
@@ -315,9 +315,9 @@ float3 weft_aniso_to_frame(float3x3 frame_1, float3 x_1)
 float2 weft_aniso_alpha_kulla(float roughness_4, float anisotropy)
 {
     const float _e2 = weft_clamp_roughness(roughness_4);
-    float a_2 = (_e2 * _e2);
+    float a_1 = (_e2 * _e2);
     float k_1 = clamp(anisotropy, -1.0, 1.0);
-    return max(float2((a_2 * (1.0 + k_1)), (a_2 * (1.0 - k_1))), (0.001).xx);
+    return max(float2((a_1 * (1.0 + k_1)), (a_1 * (1.0 - k_1))), (0.001).xx);
 }
 
 float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, float roughness_5)
@@ -332,15 +332,10 @@ float3 weft_aniso_bent_normal(float3x3 frame_2, float3 v_2, float anisotropy_1, 
     return _e22;
 }
 
-float weft_half_min_max(float x_2)
+float weft_half_pow5_(float x_2)
 {
-    return min(x_2, 65504.0);
-}
-
-float weft_half_pow5_(float x_3)
-{
-    float x2_1 = (x_3 * x_3);
-    return ((x2_1 * x2_1) * x_3);
+    float x2_1 = (x_2 * x_2);
+    return ((x2_1 * x2_1) * x_2);
 }
 
 float3 weft_half_f_schlick(float3 f0_2, float v_dot_h_1)
@@ -349,22 +344,28 @@ float3 weft_half_f_schlick(float3 f0_2, float v_dot_h_1)
     return (f0_2 + (((1.0).xxx - f0_2) * _e7));
 }
 
-float weft_half_spec_ggx_aniso(float3 v_3, float3 l, float3 h, float2 alpha)
+float2 weft_half_spec_ggx_aniso2_(float3 v_3, float3 l, float3 h, float2 alpha_t, float2 alpha_b)
 {
-    float2 a_3 = max(alpha, (0.007921).xx);
-    float2 inv_a = float2(((1.0).xx / a_3));
-    float2 ah = float2(a_3);
-    float x_4 = (h.x * inv_a.x);
-    float y = (h.y * inv_a.y);
-    float q = max((((x_4 * x_4) + (y * y)) + (h.z * h.z)), 0.01);
-    float d = ((((inv_a.x * inv_a.y) / q) / q) * 0.31830987);
+    float2 at = max(alpha_t, (0.007921).xx);
+    float2 ab = max(alpha_b, (0.007921).xx);
+    float2 inv_at = float2(((1.0).xx / at));
+    float2 inv_ab = float2(((1.0).xx / ab));
+    float2 at_h = float2(at);
+    float2 ab_h = float2(ab);
+    float2 x_3 = (h.x * inv_at);
+    float2 y = (h.y * inv_ab);
+    float2 q = max((((x_3 * x_3) + (y * y)) + ((h.z * h.z)).xx), (0.01).xx);
+    float2 d = ((((inv_at * inv_ab) / q) / q) * 0.31830987);
     float nv = max(v_3.z, 0.001);
     float nl = saturate(l.z);
-    float lv = (nl * length(float3((ah.x * v_3.x), (ah.y * v_3.y), nv)));
-    float ll = (nv * length(float3((ah.x * l.x), (ah.y * l.y), nl)));
-    float v_n_dot_l = ((0.5 * nl) / max((lv + ll), 0.0001));
-    const float _e65 = weft_half_min_max((d * v_n_dot_l));
-    return ((h.z > 0.0) ? _e65 : 0.0);
+    float2 vt = (at_h * v_3.x);
+    float2 vb = (ab_h * v_3.y);
+    float2 lt = (at_h * l.x);
+    float2 lb = (ab_h * l.y);
+    float2 lv = (nl * sqrt((((vt * vt) + (vb * vb)) + ((nv * nv)).xx)));
+    float2 ll = (nv * sqrt((((lt * lt) + (lb * lb)) + ((nl * nl)).xx)));
+    float2 v_n_dot_l = (((0.5 * nl)).xx / max((lv + ll), (0.0001).xx));
+    return ((h.z > 0.0) ? min((d * v_n_dot_l), (65504.0).xx) : (0.0).xx);
 }
 
 float3 satin_env(float3x3 frame_3, float3 v_4, float k, float roughness_6)
@@ -389,19 +390,21 @@ float3 satin_env(float3x3 frame_3, float3 v_4, float k, float roughness_6)
     return _e21;
 }
 
-float satin_lobe_low(float3 vf, float3 lf, float3 hf, float2 a)
+float2 satin_lobes_low(float3 vf, float3 lf, float3 hf, float2 a1_, float2 a2_)
 {
-    float s = (float)0;
+    float2 s = (float2)0;
 
-    const float _e4 = weft_half_spec_ggx_aniso(vf, lf, hf, a);
-    s = _e4;
+    float2 at_1 = float2(a1_.x, a2_.x);
+    float2 ab_1 = float2(a1_.y, a2_.y);
+    const float2 _e11 = weft_half_spec_ggx_aniso2_(vf, lf, hf, at_1, ab_1);
+    s = _e11;
     {
-        float _e7 = s;
-        const float _e9 = weft_half_spec_ggx_aniso(vf, lf, hf, a.yx);
-        s = (0.5 * (_e7 + _e9));
+        float2 _e14 = s;
+        const float2 _e15 = weft_half_spec_ggx_aniso2_(vf, lf, hf, ab_1, at_1);
+        s = (0.5 * (_e14 + _e15));
     }
-    float _e12 = s;
-    return _e12;
+    float2 _e18 = s;
+    return _e18;
 }
 
 float3 satin_low(float3x3 frame_4, float3 n_6, float3 v_5, WeftLightGeometry lit_, float3 f0_in, float3 diffuse_albedo, float roughness_7, float roughness2_, float anisotropy_2, float3 c1_in, float3 c2_in, float noise_, float ao, float3 light)
@@ -427,26 +430,27 @@ float3 satin_low(float3x3 frame_4, float3 n_6, float3 v_5, WeftLightGeometry lit
     const float3 _e60 = weft_aniso_to_frame(frame_4, lit_.h);
     float3 hf_1 = float3(_e60);
     const float2 _e62 = weft_aniso_alpha_kulla(r_low, anisotropy_2);
-    const float _e63 = satin_lobe_low(vf_1, lf_1, hf_1, _e62);
-    const float2 _e64 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
-    const float _e65 = satin_lobe_low(vf_1, lf_1, hf_1, _e64);
-    const float3 _e66 = weft_half_f_schlick(f0_3, v_dot_h_2);
-    float3 specular_1 = (((float3((w1_ * _e66)) * float(_e63)) + (float3((w2_ * _e66)) * float(_e65))) * (noise_ * light));
-    const float3 _e82 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
-    float3 diffuse_kd_1 = max(((1.0).xxx - ((w1_ + w2_) * _e82)), (0.0).xxx);
-    const float2 _e88 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
-    const float3 _e89 = weft_env_brdf_from_lut(f0_in, _e88);
-    float3 e1_ = (float3(_e89) * w1_);
-    const float2 _e92 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
-    const float3 _e93 = weft_env_brdf_from_lut(f0_in, _e92);
-    float3 e2_ = (float3(_e93) * w2_);
+    const float2 _e63 = weft_aniso_alpha_kulla(r2_low, anisotropy_2);
+    const float2 _e64 = satin_lobes_low(vf_1, lf_1, hf_1, _e62, _e63);
+    float lobe1_ = _e64.x;
+    float lobe2_ = _e64.y;
+    const float3 _e67 = weft_half_f_schlick(f0_3, v_dot_h_2);
+    float3 specular_1 = (((float3((w1_ * _e67)) * float(lobe1_)) + (float3((w2_ * _e67)) * float(lobe2_))) * (noise_ * light));
+    const float3 _e83 = weft_half_f_schlick(f0_3, float(n_dot_v_1));
+    float3 diffuse_kd_1 = max(((1.0).xxx - ((w1_ + w2_) * _e83)), (0.0).xxx);
+    const float2 _e89 = weft_env_brdf_lut(n_dot_v_1, roughness_7);
+    const float3 _e90 = weft_env_brdf_from_lut(f0_in, _e89);
+    float3 e1_ = (float3(_e90) * w1_);
+    const float2 _e93 = weft_env_brdf_lut(n_dot_v_1, roughness2_);
+    const float3 _e94 = weft_env_brdf_from_lut(f0_in, _e93);
+    float3 e2_ = (float3(_e94) * w2_);
     float r_env = ((max(e1_.x, max(e1_.y, e1_.z)) >= max(e2_.x, max(e2_.y, e2_.z))) ? roughness_7 : roughness2_);
-    const float3 _e108 = satin_env(frame_4, v_5, anisotropy_2, r_env);
-    float3 indirect_specular_1 = ((_e108 * float3((e1_ + e2_))) * noise_);
+    const float3 _e109 = satin_env(frame_4, v_5, anisotropy_2, r_env);
+    float3 indirect_specular_1 = ((_e109 * float3((e1_ + e2_))) * noise_);
     float3 ambient_kd_1 = max((((1.0).xxx - e1_) - e2_), (0.0).xxx);
     float3 direct = (((diffuse_albedo * float3((diffuse_kd_1 * (n_dot_l * 0.31830987)))) * light) + specular_1);
-    const float3 _e128 = weft_sh_irradiance(n_6);
-    float3 indirect = ((indirect_specular_1 * ao) + (((_e128 * ao) * float3(ambient_kd_1)) * diffuse_albedo));
+    const float3 _e129 = weft_sh_irradiance(n_6);
+    float3 indirect = ((indirect_specular_1 * ao) + (((_e129 * ao) * float3(ambient_kd_1)) * diffuse_albedo));
     return (direct + indirect);
 }
 
@@ -492,7 +496,7 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float4 _e11 = base_map.Sample(material_sampler, _e5);
     float4 base_rgba = (_e8 * _e11);
     float3 base = saturate(base_rgba.xyz);
-    float alpha_1 = saturate(base_rgba.w);
+    float alpha = saturate(base_rgba.w);
     float4 _e19 = rmo_map.Sample(material_sampler, _e5);
     float3 rmo = _e19.xyz;
     float _e23 = material.roughness;
@@ -540,6 +544,6 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         float3 _e114 = n;
         const float3 _e115 = satin_low(_e87, _e114, v_7, _e89, f0_4, diffuse_albedo_1, roughness_8, roughness2_1, anisotropy_3, c1_1, c2_1, noise_1, ao_1, _e90);
-        return float4(clamp(_e115, (0.0).xxx, (65504.0).xxx), alpha_1);
+        return float4(clamp(_e115, (0.0).xxx, (65504.0).xxx), alpha);
     }
 }

@@ -229,8 +229,9 @@ fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f16, n_dot_l: f16, alph
     let alpha2_ = (alpha_1 * alpha_1);
     let g_v = mix(nv, 1h, alpha_1);
     let g_l = mix(n_dot_l, 1h, alpha_1);
-    let q_v = (nv + ((alpha2_ * (1h - nv)) / g_v));
-    let q_l = (n_dot_l + ((alpha2_ * (1h - n_dot_l)) / g_l));
+    let inv_gg = (1h / (g_v * g_l));
+    let q_v = (nv + ((alpha2_ * (1h - nv)) * (g_l * inv_gg)));
+    let q_l = (n_dot_l + ((alpha2_ * (1h - n_dot_l)) * (g_v * inv_gg)));
     let denominator = ((n_dot_l * q_v) + (nv * q_l));
     return ((0.5h * n_dot_l) / max(denominator, 0.000100016594h));
 }
@@ -260,33 +261,32 @@ fn standard_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_in: v
     let n_dot_l_1 = f16(lit.n_dot_l);
     let n_dot_h_1 = f16(lit.n_dot_h);
     let v_dot_h_1 = f16(lit.v_dot_h);
-    let n_cross_h = cross(n_3, lit.h);
-    let one_minus_n_dot_h2_1 = f16(dot(n_cross_h, n_cross_h));
+    let one_minus_n_dot_h2_1 = f16(((1f - lit.n_dot_h) * (1f + lit.n_dot_h)));
     let roughness_3 = f16(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     let alpha_3 = (roughness_3 * roughness_3);
     let f0_2 = vec3<f16>(f0_in);
-    let _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
-    let _e27 = weft_env_brdf_from_lut(f0_in, _e26);
-    let env_brdf_1 = vec3<f16>(_e27);
+    let _e30 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
+    let _e31 = weft_env_brdf_from_lut(f0_in, _e30);
+    let env_brdf_1 = vec3<f16>(_e31);
     let kd = max((vec3(1h) - env_brdf_1), vec3(0h));
     direct_n_dot_l = (vec3<f32>((kd * (n_dot_l_1 * 0.31835938h))) * diffuse_albedo);
     if (specular_strength > 0f) {
-        let _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        let _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        let _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        let _e50 = weft_half_min_max((_e46 * _e47));
-        let _e51 = direct_n_dot_l;
-        direct_n_dot_l = (_e51 + (vec3<f32>((_e48 * _e50)) * specular_strength));
-        let _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_in);
-        indirect_specular_1 = ((_e58 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
+        let _e50 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        let _e51 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        let _e52 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        let _e54 = weft_half_min_max((_e50 * _e51));
+        let _e55 = direct_n_dot_l;
+        direct_n_dot_l = (_e55 + (vec3<f32>((_e52 * _e54)) * specular_strength));
+        let _e62 = weft_prefiltered_radiance(reflect(-(v_2), n_3), roughness_in);
+        indirect_specular_1 = ((_e62 * vec3<f32>(env_brdf_1)) * (ao * specular_strength));
     }
-    let _e63 = direct_n_dot_l;
-    let _e64 = weft_main_light_radiance();
-    let direct = (_e63 * _e64);
-    let _e66 = weft_sh_irradiance(n_3);
-    let indirect_diffuse = (((_e66 * ao) * vec3<f32>(kd)) * diffuse_albedo);
-    let _e71 = indirect_specular_1;
-    return ((direct + _e71) + indirect_diffuse);
+    let _e67 = direct_n_dot_l;
+    let _e68 = weft_main_light_radiance();
+    let direct = (_e67 * _e68);
+    let _e70 = weft_sh_irradiance(n_3);
+    let indirect_diffuse = (((_e70 * ao) * vec3<f32>(kd)) * diffuse_albedo);
+    let _e75 = indirect_specular_1;
+    return ((direct + _e75) + indirect_diffuse);
 }
 
 fn standard_sphere_map(color_in: vec3<f32>, n_4: vec3<f32>, world_position_3: vec3<f32>) -> vec3<f32> {

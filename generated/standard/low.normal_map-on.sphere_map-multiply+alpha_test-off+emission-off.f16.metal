@@ -319,8 +319,9 @@ weft_half weft_half_v_smith_ggx_correlated_newton_nl(
     weft_half alpha2_ = alpha_1 * alpha_1;
     half g_v = metal::mix(nv, 1.0h, alpha_1);
     half g_l = metal::mix(n_dot_l, 1.0h, alpha_1);
-    half q_v = nv + ((alpha2_ * (1.0h - nv)) / g_v);
-    weft_half q_l = n_dot_l + ((alpha2_ * (1.0h - n_dot_l)) / g_l);
+    half inv_gg = 1.0h / (g_v * g_l);
+    half q_v = nv + ((alpha2_ * (1.0h - nv)) * (g_l * inv_gg));
+    weft_half q_l = n_dot_l + ((alpha2_ * (1.0h - n_dot_l)) * (g_v * inv_gg));
     half denominator = (n_dot_l * q_v) + (nv * q_l);
     return (0.5h * n_dot_l) / metal::max(denominator, 0.000100016594h);
 }
@@ -371,33 +372,32 @@ metal::float3 standard_low(
     half n_dot_l_1 = static_cast<half>(lit.n_dot_l);
     half n_dot_h_1 = static_cast<half>(lit.n_dot_h);
     half v_dot_h_1 = static_cast<half>(lit.v_dot_h);
-    metal::float3 n_cross_h = metal::cross(n_6, lit.h);
-    half one_minus_n_dot_h2_1 = static_cast<half>(metal::dot(n_cross_h, n_cross_h));
+    half one_minus_n_dot_h2_1 = static_cast<half>((1.0 - lit.n_dot_h) * (1.0 + lit.n_dot_h));
     half roughness_3 = static_cast<half>(metal::max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     half alpha_3 = roughness_3 * roughness_3;
     metal::half3 f0_2 = static_cast<metal::half3>(f0_in);
-    metal::float2 _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in, weft_brdf_lut, weft_lut_sampler);
-    metal::float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
-    metal::half3 env_brdf_1 = static_cast<metal::half3>(_e27);
+    metal::float2 _e30 = weft_env_brdf_lut(lit.n_dot_v, roughness_in, weft_brdf_lut, weft_lut_sampler);
+    metal::float3 _e31 = weft_env_brdf_from_lut(f0_in, _e30);
+    metal::half3 env_brdf_1 = static_cast<metal::half3>(_e31);
     metal::half3 kd = metal::max(metal::half3(1.0h) - env_brdf_1, metal::half3(0.0h));
     direct_n_dot_l = static_cast<metal::float3>(kd * (n_dot_l_1 * 0.31835938h)) * diffuse_albedo;
     if (specular_strength > 0.0) {
-        weft_half _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        weft_half _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        metal::half3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        weft_half _e50 = weft_half_min_max(_e46 * _e47);
-        metal::float3 _e51 = direct_n_dot_l;
-        direct_n_dot_l = _e51 + (static_cast<metal::float3>(_e48 * _e50) * specular_strength);
-        metal::float3 _e58 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_6), roughness_in, weft_frame, weft_environment, weft_environment_sampler);
-        indirect_specular_1 = (_e58 * static_cast<metal::float3>(env_brdf_1)) * (ao * specular_strength);
+        weft_half _e50 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        weft_half _e51 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        metal::half3 _e52 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        weft_half _e54 = weft_half_min_max(_e50 * _e51);
+        metal::float3 _e55 = direct_n_dot_l;
+        direct_n_dot_l = _e55 + (static_cast<metal::float3>(_e52 * _e54) * specular_strength);
+        metal::float3 _e62 = weft_prefiltered_radiance(metal::reflect(-(v_2), n_6), roughness_in, weft_frame, weft_environment, weft_environment_sampler);
+        indirect_specular_1 = (_e62 * static_cast<metal::float3>(env_brdf_1)) * (ao * specular_strength);
     }
-    metal::float3 _e63 = direct_n_dot_l;
-    metal::float3 _e64 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = _e63 * _e64;
-    metal::float3 _e66 = weft_sh_irradiance(n_6, weft_frame);
-    metal::float3 indirect_diffuse = ((_e66 * ao) * static_cast<metal::float3>(kd)) * diffuse_albedo;
-    metal::float3 _e71 = indirect_specular_1;
-    return (direct + _e71) + indirect_diffuse;
+    metal::float3 _e67 = direct_n_dot_l;
+    metal::float3 _e68 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e67 * _e68;
+    metal::float3 _e70 = weft_sh_irradiance(n_6, weft_frame);
+    metal::float3 indirect_diffuse = ((_e70 * ao) * static_cast<metal::float3>(kd)) * diffuse_albedo;
+    metal::float3 _e75 = indirect_specular_1;
+    return (direct + _e75) + indirect_diffuse;
 }
 
 metal::float3 standard_sphere_map(

@@ -252,8 +252,9 @@ float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l,
     float alpha2_ = (alpha_1 * alpha_1);
     float g_v = mix(nv, 1.0, alpha_1);
     float g_l = mix(n_dot_l, 1.0, alpha_1);
-    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
-    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float inv_gg = (1.0 / (g_v * g_l));
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg)));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg)));
     float denominator = ((n_dot_l * q_v) + (nv * q_l));
     return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
@@ -282,33 +283,32 @@ vec3 standard_low(vec3 n_6, vec3 v_2, WeftLightGeometry lit, vec3 f0_in, vec3 di
     float n_dot_l_1 = float(lit.n_dot_l);
     float n_dot_h_1 = float(lit.n_dot_h);
     float v_dot_h_1 = float(lit.v_dot_h);
-    vec3 n_cross_h = cross(n_6, lit.h);
-    float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
+    float one_minus_n_dot_h2_1 = float(((1.0 - lit.n_dot_h) * (1.0 + lit.n_dot_h)));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     vec3 f0_2 = vec3(f0_in);
-    vec2 _e26 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
-    vec3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
-    vec3 env_brdf_1 = vec3(_e27);
+    vec2 _e30 = weft_env_brdf_lut(lit.n_dot_v, roughness_in);
+    vec3 _e31 = weft_env_brdf_from_lut(f0_in, _e30);
+    vec3 env_brdf_1 = vec3(_e31);
     vec3 kd = max((vec3(1.0) - env_brdf_1), vec3(0.0));
     direct_n_dot_l = (vec3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        vec3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        float _e50 = weft_half_min_max((_e46 * _e47));
-        vec3 _e51 = direct_n_dot_l;
-        direct_n_dot_l = (_e51 + (vec3((_e48 * _e50)) * specular_strength));
-        vec3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
-        indirect_specular_1 = ((_e58 * vec3(env_brdf_1)) * (ao * specular_strength));
+        float _e50 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        float _e51 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        vec3 _e52 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        float _e54 = weft_half_min_max((_e50 * _e51));
+        vec3 _e55 = direct_n_dot_l;
+        direct_n_dot_l = (_e55 + (vec3((_e52 * _e54)) * specular_strength));
+        vec3 _e62 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
+        indirect_specular_1 = ((_e62 * vec3(env_brdf_1)) * (ao * specular_strength));
     }
-    vec3 _e63 = direct_n_dot_l;
-    vec3 _e64 = weft_main_light_radiance();
-    vec3 direct = (_e63 * _e64);
-    vec3 _e66 = weft_sh_irradiance(n_6);
-    vec3 indirect_diffuse = (((_e66 * ao) * vec3(kd)) * diffuse_albedo);
-    vec3 _e71 = indirect_specular_1;
-    return ((direct + _e71) + indirect_diffuse);
+    vec3 _e67 = direct_n_dot_l;
+    vec3 _e68 = weft_main_light_radiance();
+    vec3 direct = (_e67 * _e68);
+    vec3 _e70 = weft_sh_irradiance(n_6);
+    vec3 indirect_diffuse = (((_e70 * ao) * vec3(kd)) * diffuse_albedo);
+    vec3 _e75 = indirect_specular_1;
+    return ((direct + _e75) + indirect_diffuse);
 }
 
 vec3 standard_sphere_map(vec3 color_in, vec3 n_7, vec3 world_position_3) {

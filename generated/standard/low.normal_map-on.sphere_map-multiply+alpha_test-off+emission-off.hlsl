@@ -322,8 +322,9 @@ float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l,
     float alpha2_ = (alpha_1 * alpha_1);
     float g_v = lerp(nv, 1.0, alpha_1);
     float g_l = lerp(n_dot_l, 1.0, alpha_1);
-    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
-    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float inv_gg = (1.0 / (g_v * g_l));
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg)));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg)));
     float denominator = ((n_dot_l * q_v) + (nv * q_l));
     return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
@@ -356,33 +357,32 @@ float3 standard_low(float3 n_6, float3 v_2, WeftLightGeometry lit_, float3 f0_in
     float n_dot_l_1 = float(lit_.n_dot_l);
     float n_dot_h_1 = float(lit_.n_dot_h);
     float v_dot_h_1 = float(lit_.v_dot_h);
-    float3 n_cross_h = cross(n_6, lit_.h);
-    float one_minus_n_dot_h2_1 = float(dot(n_cross_h, n_cross_h));
+    float one_minus_n_dot_h2_1 = float(((1.0 - lit_.n_dot_h) * (1.0 + lit_.n_dot_h)));
     float roughness_3 = float(max(roughness_in, WEFT_MIN_ROUGHNESS_HALF));
     float alpha_3 = (roughness_3 * roughness_3);
     float3 f0_2 = float3(f0_in);
-    const float2 _e26 = weft_env_brdf_lut(lit_.n_dot_v, roughness_in);
-    const float3 _e27 = weft_env_brdf_from_lut(f0_in, _e26);
-    float3 env_brdf_1 = float3(_e27);
+    const float2 _e30 = weft_env_brdf_lut(lit_.n_dot_v, roughness_in);
+    const float3 _e31 = weft_env_brdf_from_lut(f0_in, _e30);
+    float3 env_brdf_1 = float3(_e31);
     float3 kd = max(((1.0).xxx - env_brdf_1), (0.0).xxx);
     direct_n_dot_l = (float3((kd * (n_dot_l_1 * 0.31830987))) * diffuse_albedo);
     if ((specular_strength > 0.0)) {
-        const float _e46 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
-        const float _e47 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
-        const float3 _e48 = weft_half_f_schlick(f0_2, v_dot_h_1);
-        const float _e50 = weft_half_min_max((_e46 * _e47));
-        float3 _e51 = direct_n_dot_l;
-        direct_n_dot_l = (_e51 + (float3((_e48 * _e50)) * specular_strength));
-        const float3 _e58 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
-        indirect_specular_1 = ((_e58 * float3(env_brdf_1)) * (ao * specular_strength));
+        const float _e50 = weft_half_d_ggx(one_minus_n_dot_h2_1, n_dot_h_1, alpha_3);
+        const float _e51 = weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_2, n_dot_l_1, alpha_3);
+        const float3 _e52 = weft_half_f_schlick(f0_2, v_dot_h_1);
+        const float _e54 = weft_half_min_max((_e50 * _e51));
+        float3 _e55 = direct_n_dot_l;
+        direct_n_dot_l = (_e55 + (float3((_e52 * _e54)) * specular_strength));
+        const float3 _e62 = weft_prefiltered_radiance(reflect(-(v_2), n_6), roughness_in);
+        indirect_specular_1 = ((_e62 * float3(env_brdf_1)) * (ao * specular_strength));
     }
-    float3 _e63 = direct_n_dot_l;
-    const float3 _e64 = weft_main_light_radiance();
-    float3 direct = (_e63 * _e64);
-    const float3 _e66 = weft_sh_irradiance(n_6);
-    float3 indirect_diffuse = (((_e66 * ao) * float3(kd)) * diffuse_albedo);
-    float3 _e71 = indirect_specular_1;
-    return ((direct + _e71) + indirect_diffuse);
+    float3 _e67 = direct_n_dot_l;
+    const float3 _e68 = weft_main_light_radiance();
+    float3 direct = (_e67 * _e68);
+    const float3 _e70 = weft_sh_irradiance(n_6);
+    float3 indirect_diffuse = (((_e70 * ao) * float3(kd)) * diffuse_albedo);
+    float3 _e75 = indirect_specular_1;
+    return ((direct + _e75) + indirect_diffuse);
 }
 
 float3 standard_sphere_map(float3 color_in, float3 n_7, float3 world_position_3)

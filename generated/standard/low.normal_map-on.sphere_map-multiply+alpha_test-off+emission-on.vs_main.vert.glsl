@@ -229,8 +229,9 @@ float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l,
     float alpha2_ = (alpha_1 * alpha_1);
     float g_v = mix(nv, 1.0, alpha_1);
     float g_l = mix(n_dot_l, 1.0, alpha_1);
-    float q_v = (nv + ((alpha2_ * (1.0 - nv)) / g_v));
-    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) / g_l));
+    float inv_gg = (1.0 / (g_v * g_l));
+    float q_v = (nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg)));
+    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg)));
     float denominator = ((n_dot_l * q_v) + (nv * q_l));
     return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }

@@ -186,13 +186,11 @@ float weft_sheen_lambda_one_exp(float cos_theta, float r_1) {
     return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
-float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1) {
-    vec2 size = vec2(uvec2(textureSize(_group_0_binding_5_fs, 0).xy));
-    float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
-    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e6);
-    ivec2 texel = ivec2(min((uv_1 * size), (size - vec2(1.0))));
-    vec4 _e16 = texelFetch(_group_0_binding_5_fs, texel, 0);
-    return clamp(_e16.x, 0.0, 1.0);
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_1) {
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    vec2 uv_1 = vec2(clamp(n_dot_x, 0.0, 1.0), _e3);
+    vec4 _e8 = textureLod(_group_0_binding_5_fs, vec2(uv_1), 0.0);
+    return clamp(_e8.x, 0.0, 1.0);
 }
 
 vec3 velvet_low(vec3 n_3, vec3 v_2, WeftLightGeometry lit, vec3 f0_, vec3 diffuse_albedo, float roughness_2, float ao, vec3 light, vec3 ambient) {
@@ -201,7 +199,7 @@ vec3 velvet_low(vec3 n_3, vec3 v_2, WeftLightGeometry lit, vec3 f0_, vec3 diffus
     float n_dot_l = lit.n_dot_l;
     vec4 _e14 = _group_1_binding_0_fs.scatter_color;
     vec3 sheen_color = vec3(clamp((f0_ + max(_e14.xyz, vec3(0.0))), vec3(0.0), vec3(1.0)));
-    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    float _e22 = weft_sheen_albedo(n_dot_v, _e9);
     float e_v = float(_e22);
     float scaling_1 = clamp((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)), 0.0, 1.0);
     float inv_r = (1.0 / _e9);

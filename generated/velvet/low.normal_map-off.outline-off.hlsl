@@ -91,6 +91,7 @@ SamplerState nagaSamplerHeap[2048]: register(s0, space8);
 SamplerComparisonState nagaComparisonSamplerHeap[2048]: register(s0, space9);
 StructuredBuffer<uint> nagaGroup0SamplerIndexArray : register(t64, space0);
 #define weft_environment_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[2]])
+#define weft_lut_sampler (nagaSamplerHeap[nagaGroup0SamplerIndexArray[4]])
 Texture2D<float4> weft_sheen_lut : register(t5);
 cbuffer weft_object : register(b0, space2) { WeftObject weft_object; }
 cbuffer material : register(b0, space1) { WeftMaterial material; }
@@ -252,25 +253,12 @@ float weft_sheen_lambda_one_exp(float cos_theta, float r_1)
     return exp((low ? _e8 : ((2.0 * _e10) - _e8)));
 }
 
-int2 naga_f2i32(float2 value) {
-    return int2(clamp(value, -2147483600.0, 2147483500.0));
-}
-
-uint2 NagaDimensions2D(Texture2D<float4> tex)
+float weft_sheen_albedo(float n_dot_x, float sheen_roughness_1)
 {
-    uint4 ret;
-    tex.GetDimensions(0, ret.x, ret.y, ret.z);
-    return ret.xy;
-}
-
-float weft_sheen_albedo_nearest(float n_dot_x, float sheen_roughness_1)
-{
-    float2 size = float2(NagaDimensions2D(weft_sheen_lut));
-    const float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
-    float2 uv_1 = float2(saturate(n_dot_x), _e6);
-    int2 texel = naga_f2i32(min((uv_1 * size), (size - (1.0).xx)));
-    float4 _e16 = weft_sheen_lut.Load(int3(texel, int(0)));
-    return saturate(_e16.x);
+    const float _e3 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    float2 uv_1 = float2(saturate(n_dot_x), _e3);
+    float4 _e8 = weft_sheen_lut.SampleLevel(weft_lut_sampler, uv_1, 0.0);
+    return saturate(_e8.x);
 }
 
 float3 velvet_low(float3 n_3, float3 v_2, WeftLightGeometry lit_, float3 f0_, float3 diffuse_albedo, float roughness_2, float ao, float3 light, float3 ambient)
@@ -280,7 +268,7 @@ float3 velvet_low(float3 n_3, float3 v_2, WeftLightGeometry lit_, float3 f0_, fl
     float n_dot_l = lit_.n_dot_l;
     float4 _e14 = material.scatter_color;
     float3 sheen_color = float3(saturate((f0_ + max(_e14.xyz, (0.0).xxx))));
-    const float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    const float _e22 = weft_sheen_albedo(n_dot_v, _e9);
     float e_v = float(_e22);
     float scaling_1 = saturate((1.0 - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
     float inv_r = (1.0 / _e9);

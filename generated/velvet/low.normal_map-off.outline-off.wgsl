@@ -78,6 +78,8 @@ var<uniform> weft_frame: WeftFrame;
 var weft_environment: texture_cube<f32>;
 @group(0) @binding(2) 
 var weft_environment_sampler: sampler;
+@group(0) @binding(4) 
+var weft_lut_sampler: sampler;
 @group(0) @binding(5) 
 var weft_sheen_lut: texture_2d<f32>;
 @group(2) @binding(0) 
@@ -194,14 +196,11 @@ fn weft_sheen_lambda_one_exp(cos_theta: f32, r_1: f32) -> f32 {
     return exp(select(((2f * _e10) - _e8), _e8, low));
 }
 
-fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness_1: f32) -> f32 {
-    let _e3 = textureDimensions(weft_sheen_lut);
-    let size = vec2<f32>(_e3);
-    let _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
-    let uv_1 = vec2<f32>(saturate(n_dot_x), _e6);
-    let texel = vec2<i32>(min((uv_1 * size), (size - vec2(1f))));
-    let _e16 = textureLoad(weft_sheen_lut, texel, 0i);
-    return saturate(_e16.x);
+fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness_1: f32) -> f32 {
+    let _e3 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    let uv_1 = vec2<f32>(saturate(n_dot_x), _e3);
+    let _e8 = textureSampleLevel(weft_sheen_lut, weft_lut_sampler, uv_1, 0f);
+    return saturate(_e8.x);
 }
 
 fn velvet_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_: vec3<f32>, diffuse_albedo: vec3<f32>, roughness_2: f32, ao: f32, light: vec3<f32>, ambient: vec3<f32>) -> vec3<f32> {
@@ -210,7 +209,7 @@ fn velvet_low(n_3: vec3<f32>, v_2: vec3<f32>, lit: WeftLightGeometry, f0_: vec3<
     let n_dot_l = lit.n_dot_l;
     let _e14 = material.scatter_color;
     let sheen_color = vec3<f32>(saturate((f0_ + max(_e14.xyz, vec3(0f)))));
-    let _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9);
+    let _e22 = weft_sheen_albedo(n_dot_v, _e9);
     let e_v = f32(_e22);
     let scaling_1 = saturate((1f - (max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v)));
     let inv_r = (1f / _e9);

@@ -234,21 +234,16 @@ float weft_sheen_lambda_one_exp(
     return metal::exp(low ? _e8 : ((2.0 * _e10) - _e8));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-float weft_sheen_albedo_nearest(
+float weft_sheen_albedo(
     float n_dot_x,
     float sheen_roughness_1,
+    metal::sampler weft_lut_sampler,
     metal::texture2d<float, metal::access::sample> weft_sheen_lut
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_sheen_lut.get_width(), weft_sheen_lut.get_height()));
-    float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
-    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e6);
-    metal::int2 texel = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_sheen_lut.read(metal::uint2(texel), 0);
-    return metal::saturate(_e16.x);
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e3);
+    metal::float4 _e8 = weft_sheen_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return metal::saturate(_e8.x);
 }
 
 metal::float3 velvet_low(
@@ -264,6 +259,7 @@ metal::float3 velvet_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
     metal::texture2d<float, metal::access::sample> weft_sheen_lut,
     constant WeftMaterial& material
 ) {
@@ -272,7 +268,7 @@ metal::float3 velvet_low(
     float n_dot_l = lit.n_dot_l;
     metal::float4 _e14 = material.scatter_color;
     metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e14.xyz, metal::float3(0.0))));
-    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9, weft_sheen_lut);
+    float _e22 = weft_sheen_albedo(n_dot_v, _e9, weft_lut_sampler, weft_sheen_lut);
     half e_v = static_cast<half>(_e22);
     half scaling_1 = metal::saturate(1.0h - (metal::max(sheen_color.x, metal::max(sheen_color.y, sheen_color.z)) * e_v));
     float inv_r = 1.0 / _e9;
@@ -316,9 +312,9 @@ vertex vs_outlineOutput vs_outline(
     metal::float4x4 _e22 = weft_frame.view_proj;
     metal::float4 clip = _e22 * metal::float4(world.xyz, 1.0);
     metal::float4 _e29 = weft_frame.viewport;
-    metal::float2 size_1 = _e29.xy;
+    metal::float2 size = _e29.xy;
     metal::float4x4 _e33 = weft_frame.view_proj;
-    metal::float2 screen_normal = (_e33 * metal::float4(normal, 0.0)).xy * size_1;
+    metal::float2 screen_normal = (_e33 * metal::float4(normal, 0.0)).xy * size;
     float len = metal::length(screen_normal);
     if (len > 0.000001) {
         float _e47 = weft_frame.viewport.x;
@@ -414,9 +410,10 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(3)]]
 ) {
@@ -455,7 +452,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 ambient_1 = _e57 * ao_1;
     {
         metal::float3 _e60 = n;
-        metal::float3 _e61 = velvet_low(_e60, v_3, _e44, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e55, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
+        metal::float3 _e61 = velvet_low(_e60, v_3, _e44, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e55, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material);
         color = _e61;
     }
     metal::float3 _e62 = color;

@@ -279,21 +279,16 @@ float weft_sheen_lambda_one_exp(
     return metal::exp(low ? _e8 : ((2.0 * _e10) - _e8));
 }
 
-metal::int2 naga_f2i32(metal::float2 value) {
-    return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-float weft_sheen_albedo_nearest(
+float weft_sheen_albedo(
     float n_dot_x,
     float sheen_roughness_1,
+    metal::sampler weft_lut_sampler,
     metal::texture2d<float, metal::access::sample> weft_sheen_lut
 ) {
-    metal::float2 size = static_cast<metal::float2>(metal::uint2(weft_sheen_lut.get_width(), weft_sheen_lut.get_height()));
-    float _e6 = weft_sheen_clamp_roughness(sheen_roughness_1);
-    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e6);
-    metal::int2 texel_2 = naga_f2i32(metal::min(uv_1 * size, size - metal::float2(1.0)));
-    metal::float4 _e16 = weft_sheen_lut.read(metal::uint2(texel_2), 0);
-    return metal::saturate(_e16.x);
+    float _e3 = weft_sheen_clamp_roughness(sheen_roughness_1);
+    metal::float2 uv_1 = metal::float2(metal::saturate(n_dot_x), _e3);
+    metal::float4 _e8 = weft_sheen_lut.sample(weft_lut_sampler, uv_1, metal::level(0.0));
+    return metal::saturate(_e8.x);
 }
 
 metal::float3 velvet_low(
@@ -309,6 +304,7 @@ metal::float3 velvet_low(
     constant WeftFrame& weft_frame,
     metal::texturecube<float, metal::access::sample> weft_environment,
     metal::sampler weft_environment_sampler,
+    metal::sampler weft_lut_sampler,
     metal::texture2d<float, metal::access::sample> weft_sheen_lut,
     constant WeftMaterial& material
 ) {
@@ -317,7 +313,7 @@ metal::float3 velvet_low(
     float n_dot_l = lit.n_dot_l;
     metal::float4 _e14 = material.scatter_color;
     metal::half3 sheen_color = static_cast<metal::half3>(metal::saturate(f0_ + metal::max(_e14.xyz, metal::float3(0.0))));
-    float _e22 = weft_sheen_albedo_nearest(n_dot_v, _e9, weft_sheen_lut);
+    float _e22 = weft_sheen_albedo(n_dot_v, _e9, weft_lut_sampler, weft_sheen_lut);
     half e_v = static_cast<half>(_e22);
     half scaling_1 = metal::saturate(1.0h - (metal::max(sheen_color.x, metal::max(sheen_color.y, sheen_color.z)) * e_v));
     float inv_r = 1.0 / _e9;
@@ -393,9 +389,10 @@ fragment fs_mainOutput fs_main(
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , metal::texturecube<float, metal::access::sample> weft_environment [[texture(0)]]
 , metal::sampler weft_environment_sampler [[sampler(0)]]
+, metal::sampler weft_lut_sampler [[sampler(1)]]
 , metal::texture2d<float, metal::access::sample> weft_sheen_lut [[texture(1)]]
 , constant WeftMaterial& material [[buffer(1)]]
-, metal::sampler material_sampler [[sampler(1)]]
+, metal::sampler material_sampler [[sampler(2)]]
 , metal::texture2d<float, metal::access::sample> base_map [[texture(2)]]
 , metal::texture2d<float, metal::access::sample> normal_map [[texture(3)]]
 , metal::texture2d<float, metal::access::sample> occlusion_map [[texture(4)]]
@@ -426,10 +423,10 @@ fragment fs_mainOutput fs_main(
     n = _e39.n;
     {
         metal::float4 _e45 = normal_map.sample(material_sampler, _e5);
-        metal::float3 texel_3 = _e45.xyz;
+        metal::float3 texel_2 = _e45.xyz;
         metal::float3 _e47 = n;
         float _e51 = material.normal_strength;
-        metal::float3 _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_3, _e51);
+        metal::float3 _e52 = weft_mapped_normal(_e47, in_1.world_tangent, texel_2, _e51);
         n = _e52;
     }
     metal::float3 _e53 = n;
@@ -443,7 +440,7 @@ fragment fs_mainOutput fs_main(
     metal::float3 ambient_1 = _e67 * ao_1;
     {
         metal::float3 _e70 = n;
-        metal::float3 _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_sheen_lut, material);
+        metal::float3 _e71 = velvet_low(_e70, v_4, _e54, f0_1, diffuse_albedo_1, roughness_3, ao_1, _e65, ambient_1, weft_frame, weft_environment, weft_environment_sampler, weft_lut_sampler, weft_sheen_lut, material);
         color = _e71;
     }
     metal::float3 _e72 = color;

@@ -13,13 +13,6 @@ fn weft_sheen_albedo(n_dot_x: f32, sheen_roughness: f32) -> f32 {
     return saturate(textureSampleLevel(weft_sheen_lut, weft_lut_sampler, uv, 0.0).r);
 }
 
-// The same table read at its nearest texel (textureLoad: one texel, no
-// filtering), for cheaper tiers: the table holds texel centres, so this
-// rounds (n.v, r) to the 32^2 grid, at most half a step (1/64) off in each
-// coordinate.
-fn weft_sheen_albedo_nearest(n_dot_x: f32, sheen_roughness: f32) -> f32 {
-    let size = vec2<f32>(textureDimensions(weft_sheen_lut));
-    let uv = vec2<f32>(saturate(n_dot_x), weft_sheen_clamp_roughness(sheen_roughness));
-    let texel = vec2<i32>(min(uv * size, size - 1.0));
-    return saturate(textureLoad(weft_sheen_lut, texel, 0).r);
-}
+// No nearest-texel read of the table: it saved llvmpipe's software filter,
+// but on a GPU the sampler filters for free and rounding the coordinate in
+// ALU costs more (docs/performance.md, issue 24).

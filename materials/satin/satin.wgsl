@@ -41,7 +41,8 @@
 //   low       = an approximation of the reference in half precision: the
 //               fast tier's lobes, weights, Fresnel and diffuse weights in
 //               weft_half (f16 with shader-f16, the f32 fallback
-//               otherwise; weft_half_spec_ggx_aniso in lib/half.wgsl),
+//               otherwise; both lobes at once in one vec2<weft_half>,
+//               weft_half_spec_ggx_aniso2 in lib/half.wgsl),
 //               roughness floored at 0.089 and each width at 0.089^2 for
 //               the lobes; the split-sum table filtered, as fast;
 //               one prefiltered lookup as fast, lighting in f32 (satin_low).
@@ -210,17 +211,21 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // ---------------------------------------------------------------- low
 // The fast tier with every dimensionless term in half precision (weft_half:
 // f16 where the device has shader-f16, else the f32 fallback): the two
-// lobes' D V n.l (weft_half_spec_ggx_aniso), Schlick F, the layer weights,
-// the split-sum albedos and the diffuse weights. Light radiance, SH, the
+// lobes' D V n.l (weft_half_spec_ggx_aniso2: lane 0 the narrow lobe, lane 1
+// the wide one, so that AMD's compiler packs both lobes' f16 arithmetic
+// into one v_pk_* instruction each; README, "On AMD's compiler"), Schlick
+// F, the layer weights, the split-sum albedos and the diffuse weights. Light radiance, SH, the
 // prefiltered environment and the table fetch stay f32; the noise factor is
 // applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
 // limit) and each width at 0.089^2; the table and the environment keep the
 // material's roughness. The table is read filtered, as fast (a nearest-texel
 // read costs more on a GPU).
-fn satin_lobe_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a: vec2<f32>) -> weft_half {
-    var s = weft_half_spec_ggx_aniso(vf, lf, hf, a);
+fn satin_lobes_low(vf: vec3<weft_half>, lf: vec3<weft_half>, hf: vec3<weft_half>, a1: vec2<f32>, a2: vec2<f32>) -> vec2<weft_half> {
+    let at = vec2<f32>(a1.x, a2.x);
+    let ab = vec2<f32>(a1.y, a2.y);
+    var s = weft_half_spec_ggx_aniso2(vf, lf, hf, at, ab);
     if BIDIRECTIONAL {
-        s = weft_half(0.5) * (s + weft_half_spec_ggx_aniso(vf, lf, hf, a.yx));
+        s = weft_half(0.5) * (s + weft_half_spec_ggx_aniso2(vf, lf, hf, ab, at));
     }
     return s;
 }
@@ -247,8 +252,9 @@ fn satin_low(
     let vf = vec3<weft_half>(weft_aniso_to_frame(frame, v));
     let lf = vec3<weft_half>(weft_aniso_to_frame(frame, lit.l));
     let hf = vec3<weft_half>(weft_aniso_to_frame(frame, lit.h));
-    let lobe1 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r_low, anisotropy));
-    let lobe2 = satin_lobe_low(vf, lf, hf, weft_aniso_alpha_kulla(r2_low, anisotropy));
+    let lobes = satin_lobes_low(vf, lf, hf, weft_aniso_alpha_kulla(r_low, anisotropy), weft_aniso_alpha_kulla(r2_low, anisotropy));
+    let lobe1 = lobes.x;
+    let lobe2 = lobes.y;
     let f = weft_half_f_schlick(f0, v_dot_h);
     // The lobes include n.l. Each weighted lobe is <= 65504; their sum could
     // round past it, so it is formed in f32, with the noise (a texel).

@@ -35,8 +35,8 @@
 //               albedo scaling in weft_half (f16 with shader-f16, the f32 fallback
 //               otherwise); the Lambdas in f32 (they reach ~8e8) with one
 //               exp each instead of two (weft_sheen_lambda_one_exp: the
-//               same value), and the albedo table read at its nearest texel
-//               (velvet_low below; README).
+//               same value), and one albedo fetch, E(n.v), for direct
+//               and ambient (velvet_low below; README).
 
 @fragment
 fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
@@ -141,8 +141,9 @@ fn velvet_low(
     let n_dot_v = lit.n_dot_v;
     let n_dot_l = lit.n_dot_l;
     let sheen_color = vec3<weft_half>(saturate(f0 + max(material.scatter_color.rgb, vec3<f32>(0.0))));
-    // One albedo fetch, nearest texel, for direct and ambient (fast: filtered).
-    let e_v = weft_half(weft_sheen_albedo_nearest(n_dot_v, sheen_r));
+    // One albedo fetch, filtered as fast's, for direct and ambient (the
+    // nearest texel computed in ALU cost more on AMD's compiler: README).
+    let e_v = weft_half(weft_sheen_albedo(n_dot_v, sheen_r));
     let scaling = saturate(weft_half(1.0) - max(sheen_color.x, max(sheen_color.y, sheen_color.z)) * e_v);
     // Charlie D = (2 + 1/r) sin^(1/r) / (2 pi), sin^2 = (1 - n.h)(1 + n.h).
     // The power is taken in f32 and its result in [0, 1] is half: near the

@@ -400,20 +400,12 @@ fn reduction(specialised: u64, generic: u64) -> f64 {
 /// (above it, or equal), with the reason. The one place they are listed
 /// (docs/performance.md quotes it): the test fails when one is added, and when
 /// one is no longer true.
-const NOT_CHEAPER_THAN_REFERENCE: &[(&str, &str, &str)] = &[
-    (
-        "standard",
-        "low",
-        "fast's visibility and the reference's D in f16: RDNA2/3 run them at f32's cost (no \
-         packed half math is formed), and f16 needs the |n x h|^2 form of D that fast dropped",
-    ),
-    (
-        "silk",
-        "fast",
-        "the reference's code (equal cost): the reference is at the GPU's cost floor, and the \
+const NOT_CHEAPER_THAN_REFERENCE: &[(&str, &str, &str)] = &[(
+    "silk",
+    "fast",
+    "the reference's code (equal cost): the reference is at the GPU's cost floor, and the \
          one substitution fast made (a nearest-texel table read) cost more than it saved there",
-    ),
-];
+)];
 
 #[test]
 fn approximation_tiers_cost_less_than_their_reference() {
