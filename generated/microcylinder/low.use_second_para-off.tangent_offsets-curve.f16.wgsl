@@ -241,6 +241,18 @@ fn weft_half_f_dielectric(cos_i: f16, eta: f16) -> f16 {
     return select(f, 1h, (g2_ < 0h));
 }
 
+fn weft_half_f_dielectric2_(cos_i_1: vec2<f16>, eta_1: f16) -> vec2<f16> {
+    let c_1 = clamp(abs(cos_i_1), vec2(0.0010004044h), vec2(1h));
+    let g2_1 = (vec2(((eta_1 * eta_1) - 1h)) + (c_1 * c_1));
+    let g_1 = sqrt(max(g2_1, vec2(0h)));
+    let gmc_1 = (g_1 - c_1);
+    let gpc_1 = max((g_1 + c_1), vec2(0.0010004044h));
+    let a_2 = (gmc_1 / gpc_1);
+    let b_3 = (((c_1 * gpc_1) - vec2(1h)) / max(((c_1 * gmc_1) + vec2(1h)), vec2(0.0010004044h)));
+    let f_1 = saturate((((0.5h * a_2) * a_2) * (vec2(1h) + (b_3 * b_3))));
+    return select(f_1, vec2(1h), (g2_1 < vec2(0h)));
+}
+
 fn mc_acos_fast(x: f32) -> f32 {
     let ax = min(abs(x), 1f);
     let r_1 = (sqrt((1f - ax)) * (1.5707288f + (ax * (-0.2121144f + (ax * (0.074261f - (0.0187293f * ax)))))));
@@ -387,23 +399,20 @@ fn mc_low_node(q_2: McFastPre, ca: f32, sa_2: f32) -> McFastNode {
     let x_2 = (0.5f * (_e87 + _e88));
     let ci = f16(ci_f);
     let cr = f16(cr_f);
-    let eta_2 = f16(q_2.eta);
+    let eta_3 = f16(q_2.eta);
     let cos_half_phi = sqrt((0.5h + (0.5h * f16(cos_phi_d))));
-    let mi = max(f16((ni * inv_ci)), 0h);
-    let mr = max(f16((nr * inv_cr)), 0h);
-    let u_1 = f16(u_phi);
-    let m = ((((1h - u_1) * mi) * mr) + (u_1 * min(mi, mr)));
-    let p_i = max(f16((ni * q_2.inv_ri)), 0h);
-    let pr = max(f16((nr * q_2.inv_rr)), 0h);
-    let up = f16(q_2.u_psi);
-    let p = ((((1h - up) * p_i) * pr) + (up * min(p_i, pr)));
+    let at_i = max(vec2<f16>(vec2<f32>((ni * inv_ci), (ni * q_2.inv_ri))), vec2(0h));
+    let at_r = max(vec2<f16>(vec2<f32>((nr * inv_cr), (nr * q_2.inv_rr))), vec2(0h));
+    let blend = vec2<f16>(vec2<f32>(u_phi, q_2.u_psi));
+    let mask = ((((vec2(1h) - blend) * at_i) * at_r) + (blend * min(at_i, at_r)));
+    let m = mask.x;
+    let p = mask.y;
     let cd2_ = max((0.5h + (0.5h * f16(((ci_f * cr_f) + (si * sr))))), 0.000100016594h);
-    let _e149 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_2);
-    let _e151 = weft_half_f_dielectric(ci, eta_2);
-    let _e154 = weft_half_f_dielectric(cr, eta_2);
-    let f_t = ((1h - _e151) * (1h - _e154));
+    let _e143 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_3);
+    let _e145 = weft_half_f_dielectric2_(vec2<f16>(ci, cr), eta_3);
+    let f_t = ((1h - _e145.x) * (1h - _e145.y));
     let mp = ((m * p) / cd2_);
-    let s_5 = (((_e149 * cos_half_phi) * mp) * ci);
+    let s_5 = (((_e143 * cos_half_phi) * mp) * ci);
     let v_2 = ((f_t * mp) * (ci / max((ci + cr), 0.00020003319h)));
     return McFastNode(x_2, select(0f, f32(s_5), ok_2), select(0f, f32(v_2), ok_2), select(0f, f32(p), ok_2));
 }
@@ -439,8 +448,8 @@ fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg
     return McThread(saturate((color * tint)), clamp(ior_1, 1f, 4f), saturate(isotropy), (max(gamma_s_deg, 0f) * MC_DEG), (max(gamma_v_deg, 0f) * MC_DEG));
 }
 
-fn microcylinder_mean_fresnel(eta_1: f32) -> f32 {
-    let _e1 = weft_f0_from_ior(eta_1);
+fn microcylinder_mean_fresnel(eta_2: f32) -> f32 {
+    let _e1 = weft_f0_from_ior(eta_2);
     return (_e1 + ((1f - _e1) / 21f));
 }
 
@@ -499,11 +508,11 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let n_3 = _e65.n;
     let _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     let t_5 = _e69[0];
-    let b_3 = _e69[1];
+    let b_4 = _e69[1];
     let _e79 = weft_safe_normalize((v_raw + (n_3 * max((0.001f - dot(n_3, v_raw)), 0f))), n_3);
     let _e80 = weft_main_light_direction();
-    let warp = McFrame(t_5, b_3, n_3);
-    let weft = McFrame(b_3, t_5, n_3);
+    let warp = McFrame(t_5, b_4, n_3);
+    let weft = McFrame(b_4, t_5, n_3);
     {
         {
             {

@@ -268,6 +268,21 @@ weft_half weft_half_f_dielectric(
     return (g2_ < 0.0) ? 1.0 : f;
 }
 
+metal::float2 weft_half_f_dielectric2_(
+    metal::float2 cos_i_1,
+    weft_half eta_1
+) {
+    metal::float2 c_1 = metal::clamp(metal::abs(cos_i_1), metal::float2(0.001), metal::float2(1.0));
+    metal::float2 g2_1 = metal::float2((eta_1 * eta_1) - 1.0) + (c_1 * c_1);
+    metal::float2 g_1 = metal::sqrt(metal::max(g2_1, metal::float2(0.0)));
+    metal::float2 gmc_1 = g_1 - c_1;
+    metal::float2 gpc_1 = metal::max(g_1 + c_1, metal::float2(0.001));
+    metal::float2 a_3 = gmc_1 / gpc_1;
+    metal::float2 b_4 = ((c_1 * gpc_1) - metal::float2(1.0)) / metal::max((c_1 * gmc_1) + metal::float2(1.0), metal::float2(0.001));
+    metal::float2 f_1 = metal::saturate(((0.5 * a_3) * a_3) * (metal::float2(1.0) + (b_4 * b_4)));
+    return metal::select(f_1, metal::float2(1.0), g2_1 < metal::float2(0.0));
+}
+
 float mc_acos_fast(
     float x
 ) {
@@ -416,23 +431,20 @@ McFastNode mc_low_node(
     float x_2 = 0.5 * (_e87 + _e88);
     float ci = static_cast<float>(ci_f);
     float cr = static_cast<float>(cr_f);
-    float eta_2 = static_cast<float>(q_1.eta);
+    float eta_3 = static_cast<float>(q_1.eta);
     float cos_half_phi = metal::sqrt(0.5 + (0.5 * static_cast<float>(cos_phi_d)));
-    float mi = metal::max(static_cast<float>(ni * inv_ci), 0.0);
-    float mr = metal::max(static_cast<float>(nr * inv_cr), 0.0);
-    float u = static_cast<float>(u_phi);
-    float m = (((1.0 - u) * mi) * mr) + (u * metal::min(mi, mr));
-    float p_i = metal::max(static_cast<float>(ni * q_1.inv_ri), 0.0);
-    float pr = metal::max(static_cast<float>(nr * q_1.inv_rr), 0.0);
-    float up = static_cast<float>(q_1.u_psi);
-    float p = (((1.0 - up) * p_i) * pr) + (up * metal::min(p_i, pr));
+    metal::float2 at_i = metal::max(static_cast<metal::float2>(metal::float2(ni * inv_ci, ni * q_1.inv_ri)), metal::float2(0.0));
+    metal::float2 at_r = metal::max(static_cast<metal::float2>(metal::float2(nr * inv_cr, nr * q_1.inv_rr)), metal::float2(0.0));
+    metal::float2 blend = static_cast<metal::float2>(metal::float2(u_phi, q_1.u_psi));
+    metal::float2 mask = (((metal::float2(1.0) - blend) * at_i) * at_r) + (blend * metal::min(at_i, at_r));
+    float m = mask.x;
+    float p = mask.y;
     float cd2_ = metal::max(0.5 + (0.5 * static_cast<float>((ci_f * cr_f) + (si * sr))), 0.0001);
-    weft_half _e149 = weft_half_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, eta_2);
-    weft_half _e151 = weft_half_f_dielectric(ci, eta_2);
-    weft_half _e154 = weft_half_f_dielectric(cr, eta_2);
-    float f_t = (1.0 - _e151) * (1.0 - _e154);
+    weft_half _e143 = weft_half_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, eta_3);
+    metal::float2 _e145 = weft_half_f_dielectric2_(metal::float2(ci, cr), eta_3);
+    float f_t = (1.0 - _e145.x) * (1.0 - _e145.y);
     float mp = (m * p) / cd2_;
-    float s_4 = ((_e149 * cos_half_phi) * mp) * ci;
+    float s_4 = ((_e143 * cos_half_phi) * mp) * ci;
     float v_2 = (f_t * mp) * (ci / metal::max(ci + cr, 0.0002));
     return McFastNode {x_2, ok_2 ? static_cast<float>(s_4) : 0.0, ok_2 ? static_cast<float>(v_2) : 0.0, ok_2 ? static_cast<float>(p) : 0.0};
 }
@@ -579,9 +591,9 @@ McThread microcylinder_thread(
 }
 
 float microcylinder_mean_fresnel(
-    float eta_1
+    float eta_2
 ) {
-    float _e1 = weft_f0_from_ior(eta_1);
+    float _e1 = weft_f0_from_ior(eta_2);
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
@@ -673,11 +685,11 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_7 = _e65.n;
     metal::float3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     metal::float3 t_3 = _e69[0];
-    metal::float3 b_4 = _e69[1];
+    metal::float3 b_5 = _e69[1];
     metal::float3 _e79 = weft_safe_normalize(v_raw + (n_7 * metal::max(0.001 - metal::dot(n_7, v_raw), 0.0)), n_7);
     metal::float3 _e80 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_3, b_4, n_7};
-    McFrame weft = McFrame {b_4, t_3, n_7};
+    McFrame warp = McFrame {t_3, b_5, n_7};
+    McFrame weft = McFrame {b_5, t_3, n_7};
     {
         {
             {

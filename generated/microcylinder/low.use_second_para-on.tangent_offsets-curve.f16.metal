@@ -101,7 +101,7 @@ struct McFastNode {
     float v;
     float p;
 };
-struct type_12 {
+struct type_13 {
     metal::float4 inner[2];
 };
 constant float WEFT_PI = 3.1415927;
@@ -268,6 +268,21 @@ weft_half weft_half_f_dielectric(
     return (g2_ < 0.0h) ? 1.0h : f;
 }
 
+metal::half2 weft_half_f_dielectric2_(
+    metal::half2 cos_i_1,
+    weft_half eta_1
+) {
+    metal::half2 c_1 = metal::clamp(metal::abs(cos_i_1), metal::half2(0.0010004044h), metal::half2(1.0h));
+    metal::half2 g2_1 = metal::half2((eta_1 * eta_1) - 1.0h) + (c_1 * c_1);
+    metal::half2 g_1 = metal::sqrt(metal::max(g2_1, metal::half2(0.0h)));
+    metal::half2 gmc_1 = g_1 - c_1;
+    metal::half2 gpc_1 = metal::max(g_1 + c_1, metal::half2(0.0010004044h));
+    metal::half2 a_2 = gmc_1 / gpc_1;
+    metal::half2 b_3 = ((c_1 * gpc_1) - metal::half2(1.0h)) / metal::max((c_1 * gmc_1) + metal::half2(1.0h), metal::half2(0.0010004044h));
+    metal::half2 f_1 = metal::saturate(((0.5h * a_2) * a_2) * (metal::half2(1.0h) + (b_3 * b_3)));
+    return metal::select(f_1, metal::half2(1.0h), g2_1 < metal::half2(0.0h));
+}
+
 float mc_acos_fast(
     float x
 ) {
@@ -313,7 +328,7 @@ metal::float3 mc_combine(
     return lit ? (s_3 / metal::float3(metal::max(q_4, MC_MIN_Q))) : metal::float3(0.0);
 }
 
-type_12 mc_normal4_(
+type_13 mc_normal4_(
     metal::float4 t
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
@@ -321,7 +336,7 @@ type_12 mc_normal4_(
     metal::float4 k = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
     metal::float4 poly = k * (metal::float4(0.2548296) + (k * (metal::float4(-0.28449672) + (k * (metal::float4(1.4214138) + (k * (metal::float4(-1.4531521) + (k * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
-    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
+    return type_13 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
 
 metal::float3 mc_cell_means(
@@ -329,7 +344,7 @@ metal::float3 mc_cell_means(
     float inv_gamma
 ) {
     metal::float4 t_3 = xe * inv_gamma;
-    type_12 _e3 = mc_normal4_(t_3);
+    type_13 _e3 = mc_normal4_(t_3);
     metal::float3 dt = t_3.yzw - t_3.xyz;
     metal::bool3 wide = metal::abs(dt) >= metal::float3(0.1);
     metal::float3 exact = (_e3.inner[1].yzw - _e3.inner[1].xyz) / metal::select(metal::float3(1.0), dt, wide);
@@ -458,23 +473,20 @@ McFastNode mc_low_node(
     float x_2 = 0.5 * (_e87 + _e88);
     half ci = static_cast<half>(ci_f);
     half cr = static_cast<half>(cr_f);
-    half eta_2 = static_cast<half>(q_2.eta);
+    half eta_3 = static_cast<half>(q_2.eta);
     half cos_half_phi = metal::sqrt(0.5h + (0.5h * static_cast<half>(cos_phi_d)));
-    half mi = metal::max(static_cast<half>(ni * inv_ci), 0.0h);
-    half mr = metal::max(static_cast<half>(nr * inv_cr), 0.0h);
-    half u_1 = static_cast<half>(u_phi);
-    half m = (((1.0h - u_1) * mi) * mr) + (u_1 * metal::min(mi, mr));
-    half p_i = metal::max(static_cast<half>(ni * q_2.inv_ri), 0.0h);
-    half pr = metal::max(static_cast<half>(nr * q_2.inv_rr), 0.0h);
-    half up = static_cast<half>(q_2.u_psi);
-    half p = (((1.0h - up) * p_i) * pr) + (up * metal::min(p_i, pr));
+    metal::half2 at_i = metal::max(static_cast<metal::half2>(metal::float2(ni * inv_ci, ni * q_2.inv_ri)), metal::half2(0.0h));
+    metal::half2 at_r = metal::max(static_cast<metal::half2>(metal::float2(nr * inv_cr, nr * q_2.inv_rr)), metal::half2(0.0h));
+    metal::half2 blend = static_cast<metal::half2>(metal::float2(u_phi, q_2.u_psi));
+    metal::half2 mask = (((metal::half2(1.0h) - blend) * at_i) * at_r) + (blend * metal::min(at_i, at_r));
+    half m = mask.x;
+    half p = mask.y;
     half cd2_ = metal::max(0.5h + (0.5h * static_cast<half>((ci_f * cr_f) + (si * sr))), 0.000100016594h);
-    weft_half _e149 = weft_half_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, eta_2);
-    weft_half _e151 = weft_half_f_dielectric(ci, eta_2);
-    weft_half _e154 = weft_half_f_dielectric(cr, eta_2);
-    half f_t = (1.0h - _e151) * (1.0h - _e154);
+    weft_half _e143 = weft_half_f_dielectric(metal::sqrt(cd2_) * cos_half_phi, eta_3);
+    metal::half2 _e145 = weft_half_f_dielectric2_(metal::half2(ci, cr), eta_3);
+    half f_t = (1.0h - _e145.x) * (1.0h - _e145.y);
     half mp = (m * p) / cd2_;
-    half s_5 = ((_e149 * cos_half_phi) * mp) * ci;
+    half s_5 = ((_e143 * cos_half_phi) * mp) * ci;
     half v_2 = (f_t * mp) * (ci / metal::max(ci + cr, 0.00020003319h));
     return McFastNode {x_2, ok_2 ? static_cast<float>(s_5) : 0.0, ok_2 ? static_cast<float>(v_2) : 0.0, ok_2 ? static_cast<float>(p) : 0.0};
 }
@@ -524,9 +536,9 @@ McThread microcylinder_thread(
 }
 
 float microcylinder_mean_fresnel(
-    float eta_1
+    float eta_2
 ) {
-    float _e1 = weft_f0_from_ior(eta_1);
+    float _e1 = weft_f0_from_ior(eta_2);
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
@@ -618,11 +630,11 @@ fragment fs_mainOutput fs_main(
     metal::float3 n_3 = _e65.n;
     metal::float3x3 _e69 = weft_tangent_frame(n_3, in_1.world_tangent);
     metal::float3 t_5 = _e69[0];
-    metal::float3 b_3 = _e69[1];
+    metal::float3 b_4 = _e69[1];
     metal::float3 _e79 = weft_safe_normalize(v_raw + (n_3 * metal::max(0.001 - metal::dot(n_3, v_raw), 0.0)), n_3);
     metal::float3 _e80 = weft_main_light_direction(weft_frame);
-    McFrame warp = McFrame {t_5, b_3, n_3};
-    McFrame weft = McFrame {b_3, t_5, n_3};
+    McFrame warp = McFrame {t_5, b_4, n_3};
+    McFrame weft = McFrame {b_4, t_5, n_3};
     {
         {
             {

@@ -230,6 +230,18 @@ float weft_half_f_dielectric(float cos_i, float eta) {
     return ((g2_ < 0.0) ? 1.0 : f);
 }
 
+vec2 weft_half_f_dielectric2_(vec2 cos_i_1, float eta_1) {
+    vec2 c_1 = clamp(abs(cos_i_1), vec2(0.001), vec2(1.0));
+    vec2 g2_1 = (vec2(((eta_1 * eta_1) - 1.0)) + (c_1 * c_1));
+    vec2 g_1 = sqrt(max(g2_1, vec2(0.0)));
+    vec2 gmc_1 = (g_1 - c_1);
+    vec2 gpc_1 = max((g_1 + c_1), vec2(0.001));
+    vec2 a_3 = (gmc_1 / gpc_1);
+    vec2 b_4 = (((c_1 * gpc_1) - vec2(1.0)) / max(((c_1 * gmc_1) + vec2(1.0)), vec2(0.001)));
+    vec2 f_1 = clamp((((0.5 * a_3) * a_3) * (vec2(1.0) + (b_4 * b_4))), vec2(0.0), vec2(1.0));
+    return mix(f_1, vec2(1.0), lessThan(g2_1, vec2(0.0)));
+}
+
 float mc_acos_fast(float x) {
     float ax = min(abs(x), 1.0);
     float r_1 = (sqrt((1.0 - ax)) * (1.5707288 + (ax * (-0.2121144 + (ax * (0.074261 - (0.0187293 * ax)))))));
@@ -342,23 +354,20 @@ McFastNode mc_low_node(McFastPre q_1, float ca, float sa) {
     float x_2 = (0.5 * (_e87 + _e88));
     float ci = float(ci_f);
     float cr = float(cr_f);
-    float eta_2 = float(q_1.eta);
+    float eta_3 = float(q_1.eta);
     float cos_half_phi = sqrt((0.5 + (0.5 * float(cos_phi_d))));
-    float mi = max(float((ni * inv_ci)), 0.0);
-    float mr = max(float((nr * inv_cr)), 0.0);
-    float u = float(u_phi);
-    float m = ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
-    float p_i = max(float((ni * q_1.inv_ri)), 0.0);
-    float pr = max(float((nr * q_1.inv_rr)), 0.0);
-    float up = float(q_1.u_psi);
-    float p = ((((1.0 - up) * p_i) * pr) + (up * min(p_i, pr)));
+    vec2 at_i = max(vec2(vec2((ni * inv_ci), (ni * q_1.inv_ri))), vec2(0.0));
+    vec2 at_r = max(vec2(vec2((nr * inv_cr), (nr * q_1.inv_rr))), vec2(0.0));
+    vec2 blend = vec2(vec2(u_phi, q_1.u_psi));
+    vec2 mask = ((((vec2(1.0) - blend) * at_i) * at_r) + (blend * min(at_i, at_r)));
+    float m = mask.x;
+    float p = mask.y;
     float cd2_ = max((0.5 + (0.5 * float(((ci_f * cr_f) + (si * sr))))), 0.0001);
-    float _e149 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_2);
-    float _e151 = weft_half_f_dielectric(ci, eta_2);
-    float _e154 = weft_half_f_dielectric(cr, eta_2);
-    float f_t = ((1.0 - _e151) * (1.0 - _e154));
+    float _e143 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_3);
+    vec2 _e145 = weft_half_f_dielectric2_(vec2(ci, cr), eta_3);
+    float f_t = ((1.0 - _e145.x) * (1.0 - _e145.y));
     float mp = ((m * p) / cd2_);
-    float s_4 = (((_e149 * cos_half_phi) * mp) * ci);
+    float s_4 = (((_e143 * cos_half_phi) * mp) * ci);
     float v_2 = ((f_t * mp) * (ci / max((ci + cr), 0.0002)));
     return McFastNode(x_2, (ok_2 ? float(s_4) : 0.0), (ok_2 ? float(v_2) : 0.0), (ok_2 ? float(p) : 0.0));
 }
@@ -459,8 +468,8 @@ McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gam
     return McThread(clamp((color * tint), vec3(0.0), vec3(1.0)), clamp(ior_1, 1.0, 4.0), clamp(isotropy, 0.0, 1.0), (max(gamma_s_deg, 0.0) * MC_DEG), (max(gamma_v_deg, 0.0) * MC_DEG));
 }
 
-float microcylinder_mean_fresnel(float eta_1) {
-    float _e1 = weft_f0_from_ior(eta_1);
+float microcylinder_mean_fresnel(float eta_2) {
+    float _e1 = weft_f0_from_ior(eta_2);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
@@ -495,11 +504,11 @@ void main() {
     vec3 n_7 = _e65.n;
     mat3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     vec3 t_3 = _e69[0];
-    vec3 b_4 = _e69[1];
+    vec3 b_5 = _e69[1];
     vec3 _e79 = weft_safe_normalize((v_raw + (n_7 * max((0.001 - dot(n_7, v_raw)), 0.0))), n_7);
     vec3 _e80 = weft_main_light_direction();
-    McFrame warp = McFrame(t_3, b_4, n_7);
-    McFrame weft = McFrame(b_4, t_3, n_7);
+    McFrame warp = McFrame(t_3, b_5, n_7);
+    McFrame weft = McFrame(b_5, t_3, n_7);
     {
         {
             {

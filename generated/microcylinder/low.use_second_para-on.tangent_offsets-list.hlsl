@@ -178,24 +178,29 @@ struct FragmentInput_fs_main {
     float4 clip_position_1 : SV_Position;
 };
 
-int3 weft_select3_i32bit(bool3 weft_sel_c, int3 weft_sel_a, int3 weft_sel_b)
+float2 weft_select2_f32bit(bool2 weft_sel_c, float2 weft_sel_a, float2 weft_sel_b)
 {
-    return int3((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y), (weft_sel_c.z ? weft_sel_a.z : weft_sel_b.z));
+    return float2((weft_sel_c.x ? weft_sel_a.x : weft_sel_b.x), (weft_sel_c.y ? weft_sel_a.y : weft_sel_b.y));
 }
 
-float3 weft_select3_f32bit(bool3 weft_sel_c_1, float3 weft_sel_a_1, float3 weft_sel_b_1)
+int3 weft_select3_i32bit(bool3 weft_sel_c_1, int3 weft_sel_a_1, int3 weft_sel_b_1)
 {
-    return float3((weft_sel_c_1.x ? weft_sel_a_1.x : weft_sel_b_1.x), (weft_sel_c_1.y ? weft_sel_a_1.y : weft_sel_b_1.y), (weft_sel_c_1.z ? weft_sel_a_1.z : weft_sel_b_1.z));
+    return int3((weft_sel_c_1.x ? weft_sel_a_1.x : weft_sel_b_1.x), (weft_sel_c_1.y ? weft_sel_a_1.y : weft_sel_b_1.y), (weft_sel_c_1.z ? weft_sel_a_1.z : weft_sel_b_1.z));
 }
 
-int4 weft_select4_i32bit(bool4 weft_sel_c_2, int4 weft_sel_a_2, int4 weft_sel_b_2)
+float3 weft_select3_f32bit(bool3 weft_sel_c_2, float3 weft_sel_a_2, float3 weft_sel_b_2)
 {
-    return int4((weft_sel_c_2.x ? weft_sel_a_2.x : weft_sel_b_2.x), (weft_sel_c_2.y ? weft_sel_a_2.y : weft_sel_b_2.y), (weft_sel_c_2.z ? weft_sel_a_2.z : weft_sel_b_2.z), (weft_sel_c_2.w ? weft_sel_a_2.w : weft_sel_b_2.w));
+    return float3((weft_sel_c_2.x ? weft_sel_a_2.x : weft_sel_b_2.x), (weft_sel_c_2.y ? weft_sel_a_2.y : weft_sel_b_2.y), (weft_sel_c_2.z ? weft_sel_a_2.z : weft_sel_b_2.z));
 }
 
-float4 weft_select4_f32bit(bool4 weft_sel_c_3, float4 weft_sel_a_3, float4 weft_sel_b_3)
+int4 weft_select4_i32bit(bool4 weft_sel_c_3, int4 weft_sel_a_3, int4 weft_sel_b_3)
 {
-    return float4((weft_sel_c_3.x ? weft_sel_a_3.x : weft_sel_b_3.x), (weft_sel_c_3.y ? weft_sel_a_3.y : weft_sel_b_3.y), (weft_sel_c_3.z ? weft_sel_a_3.z : weft_sel_b_3.z), (weft_sel_c_3.w ? weft_sel_a_3.w : weft_sel_b_3.w));
+    return int4((weft_sel_c_3.x ? weft_sel_a_3.x : weft_sel_b_3.x), (weft_sel_c_3.y ? weft_sel_a_3.y : weft_sel_b_3.y), (weft_sel_c_3.z ? weft_sel_a_3.z : weft_sel_b_3.z), (weft_sel_c_3.w ? weft_sel_a_3.w : weft_sel_b_3.w));
+}
+
+float4 weft_select4_f32bit(bool4 weft_sel_c_4, float4 weft_sel_a_4, float4 weft_sel_b_4)
+{
+    return float4((weft_sel_c_4.x ? weft_sel_a_4.x : weft_sel_b_4.x), (weft_sel_c_4.y ? weft_sel_a_4.y : weft_sel_b_4.y), (weft_sel_c_4.z ? weft_sel_a_4.z : weft_sel_b_4.z), (weft_sel_c_4.w ? weft_sel_a_4.w : weft_sel_b_4.w));
 }
 
 float3 weft_safe_normalize(float3 v, float3 fallback)
@@ -308,6 +313,20 @@ float weft_half_f_dielectric(float cos_i, float eta)
     float b_3 = (((c * gpc) - 1.0) / max(((c * gmc) + 1.0), 0.001));
     float f = saturate((((0.5 * a_2) * a_2) * (1.0 + (b_3 * b_3))));
     return ((g2_ < 0.0) ? 1.0 : f);
+}
+
+float2 weft_half_f_dielectric2_(float2 cos_i_1, float eta_1)
+{
+    float2 c_1 = clamp(abs(cos_i_1), (0.001).xx, (1.0).xx);
+    float2 g2_1 = ((((eta_1 * eta_1) - 1.0)).xx + (c_1 * c_1));
+    float2 g_1 = sqrt(max(g2_1, (0.0).xx));
+    float2 gmc_1 = (g_1 - c_1);
+    float2 gpc_1 = max((g_1 + c_1), (0.001).xx);
+    float2 a_3 = (gmc_1 / gpc_1);
+    float2 b_4 = (((c_1 * gpc_1) - (1.0).xx) / max(((c_1 * gmc_1) + (1.0).xx), (0.001).xx));
+    float2 f_1 = saturate((((0.5 * a_3) * a_3) * ((1.0).xx + (b_4 * b_4))));
+    const float2 _e50 = weft_select2_f32bit((g2_1 < (0.0).xx), (1.0).xx, f_1);
+    return _e50;
 }
 
 float mc_acos_fast(float x)
@@ -469,23 +488,20 @@ McFastNode mc_low_node(McFastPre q_1, float ca, float sa)
     float x_2 = (0.5 * (_e87 + _e88));
     float ci = float(ci_f);
     float cr = float(cr_f);
-    float eta_2 = float(q_1.eta);
+    float eta_3 = float(q_1.eta);
     float cos_half_phi = sqrt((0.5 + (0.5 * float(cos_phi_d))));
-    float mi = max(float((ni * inv_ci)), 0.0);
-    float mr = max(float((nr * inv_cr)), 0.0);
-    float u = float(u_phi);
-    float m = ((((1.0 - u) * mi) * mr) + (u * min(mi, mr)));
-    float p_i = max(float((ni * q_1.inv_ri)), 0.0);
-    float pr = max(float((nr * q_1.inv_rr)), 0.0);
-    float up = float(q_1.u_psi);
-    float p = ((((1.0 - up) * p_i) * pr) + (up * min(p_i, pr)));
+    float2 at_i = max(float2(float2((ni * inv_ci), (ni * q_1.inv_ri))), (0.0).xx);
+    float2 at_r = max(float2(float2((nr * inv_cr), (nr * q_1.inv_rr))), (0.0).xx);
+    float2 blend = float2(float2(u_phi, q_1.u_psi));
+    float2 mask = (((((1.0).xx - blend) * at_i) * at_r) + (blend * min(at_i, at_r)));
+    float m = mask.x;
+    float p = mask.y;
     float cd2_ = max((0.5 + (0.5 * float(((ci_f * cr_f) + (si * sr))))), 0.0001);
-    const float _e149 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_2);
-    const float _e151 = weft_half_f_dielectric(ci, eta_2);
-    const float _e154 = weft_half_f_dielectric(cr, eta_2);
-    float f_t = ((1.0 - _e151) * (1.0 - _e154));
+    const float _e143 = weft_half_f_dielectric((sqrt(cd2_) * cos_half_phi), eta_3);
+    const float2 _e145 = weft_half_f_dielectric2_(float2(ci, cr), eta_3);
+    float f_t = ((1.0 - _e145.x) * (1.0 - _e145.y));
     float mp = ((m * p) / cd2_);
-    float s_4 = (((_e149 * cos_half_phi) * mp) * ci);
+    float s_4 = (((_e143 * cos_half_phi) * mp) * ci);
     float v_2 = ((f_t * mp) * (ci / max((ci + cr), 0.0002)));
     const McFastNode mcfastnode = ConstructMcFastNode(x_2, (ok_2 ? float(s_4) : 0.0), (ok_2 ? float(v_2) : 0.0), (ok_2 ? float(p) : 0.0));
     return mcfastnode;
@@ -611,9 +627,9 @@ McThread microcylinder_thread(float3 color, float ior_1, float isotropy, float g
     return mcthread;
 }
 
-float microcylinder_mean_fresnel(float eta_1)
+float microcylinder_mean_fresnel(float eta_2)
 {
-    const float _e1 = weft_f0_from_ior(eta_1);
+    const float _e1 = weft_f0_from_ior(eta_2);
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
@@ -683,11 +699,11 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     float3 n_7 = _e65.n;
     const float3x3 _e69 = weft_tangent_frame(n_7, in_1.world_tangent);
     float3 t_3 = _e69[0];
-    float3 b_4 = _e69[1];
+    float3 b_5 = _e69[1];
     const float3 _e79 = weft_safe_normalize((v_raw + (n_7 * max((0.001 - dot(n_7, v_raw)), 0.0))), n_7);
     const float3 _e80 = weft_main_light_direction();
-    McFrame warp = ConstructMcFrame(t_3, b_4, n_7);
-    McFrame weft = ConstructMcFrame(b_4, t_3, n_7);
+    McFrame warp = ConstructMcFrame(t_3, b_5, n_7);
+    McFrame weft = ConstructMcFrame(b_5, t_3, n_7);
     {
         {
             {

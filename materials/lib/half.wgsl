@@ -157,3 +157,18 @@ fn weft_half_f_dielectric(cos_i: weft_half, eta: weft_half) -> weft_half {
     let f = saturate(weft_half(0.5) * a * a * (weft_half(1.0) + b * b));
     return select(f, weft_half(1.0), g2 < weft_half(0.0));
 }
+
+// weft_half_f_dielectric at two cosines at once, one per lane (the same
+// values and bounds), so that a compiler packing f16 pairs (AMD's `v_pk_*`)
+// evaluates both in one instruction each.
+fn weft_half_f_dielectric2(cos_i: vec2<weft_half>, eta: weft_half) -> vec2<weft_half> {
+    let c = clamp(abs(cos_i), vec2<weft_half>(weft_half(WEFT_MIN_N_DOT_HALF)), vec2<weft_half>(1.0));
+    let g2 = vec2<weft_half>(eta * eta - weft_half(1.0)) + c * c;
+    let g = sqrt(max(g2, vec2<weft_half>(0.0)));
+    let gmc = g - c;
+    let gpc = max(g + c, vec2<weft_half>(1e-3));
+    let a = gmc / gpc;
+    let b = (c * gpc - vec2<weft_half>(1.0)) / max(c * gmc + vec2<weft_half>(1.0), vec2<weft_half>(1e-3));
+    let f = saturate(weft_half(0.5) * a * a * (vec2<weft_half>(1.0) + b * b));
+    return select(f, vec2<weft_half>(1.0), g2 < vec2<weft_half>(0.0));
+}

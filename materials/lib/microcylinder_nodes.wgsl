@@ -229,17 +229,20 @@ fn mc_low_node(q: McFastPre, ca: f32, sa: f32) -> McFastNode {
     let cr = weft_half(cr_f);
     let eta = weft_half(q.eta);
     let cos_half_phi = sqrt(weft_half(0.5) + weft_half(0.5) * weft_half(cos_phi_d));
-    let mi = max(weft_half(ni * inv_ci), weft_half(0.0));
-    let mr = max(weft_half(nr * inv_cr), weft_half(0.0));
-    let u = weft_half(u_phi);
-    let m = (weft_half(1.0) - u) * mi * mr + u * min(mi, mr);
-    let p_i = max(weft_half(ni * q.inv_ri), weft_half(0.0));
-    let pr = max(weft_half(nr * q.inv_rr), weft_half(0.0));
-    let up = weft_half(q.u_psi);
-    let p = (weft_half(1.0) - up) * p_i * pr + up * min(p_i, pr);
+    // The masking M (lane 0) and the reweighting P (lane 1) blend alike,
+    // and the two transmissions are one Fresnel at two cosines: each pair
+    // shares a vec2<weft_half>, which AMD's compiler packs (README,
+    // "`low` — the node rule in half precision").
+    let at_i = max(vec2<weft_half>(vec2<f32>(ni * inv_ci, ni * q.inv_ri)), vec2<weft_half>(0.0));
+    let at_r = max(vec2<weft_half>(vec2<f32>(nr * inv_cr, nr * q.inv_rr)), vec2<weft_half>(0.0));
+    let blend = vec2<weft_half>(vec2<f32>(u_phi, q.u_psi));
+    let mask = (vec2<weft_half>(1.0) - blend) * at_i * at_r + blend * min(at_i, at_r);
+    let m = mask.x;
+    let p = mask.y;
     let cd2 = max(weft_half(0.5) + weft_half(0.5) * weft_half(ci_f * cr_f + si * sr), weft_half(MC_MIN_COS2_THETA_D));
     let f_r = weft_half_f_dielectric(sqrt(cd2) * cos_half_phi, eta);
-    let f_t = (weft_half(1.0) - weft_half_f_dielectric(ci, eta)) * (weft_half(1.0) - weft_half_f_dielectric(cr, eta));
+    let f_in_out = weft_half_f_dielectric2(vec2<weft_half>(ci, cr), eta);
+    let f_t = (weft_half(1.0) - f_in_out.x) * (weft_half(1.0) - f_in_out.y);
     let mp = m * p / cd2;
     let s = f_r * cos_half_phi * mp * ci;
     let v = f_t * mp * (ci / max(ci + cr, weft_half(2e-4)));
