@@ -223,9 +223,10 @@ struct GpuReport {
     size: u32,
     families: Vec<String>,
     tiers: Vec<TierRow>,
-    /// ρ(GPU ratio, model ratio) per family over tiers with both.
+    /// ρ(GPU ratio of the f32 files, model ratio) per family over tiers with
+    /// both: the model costs a tier's f32 files.
     spearman_model: Vec<Option<f64>>,
-    /// ρ(GPU ratio, llvmpipe ratio).
+    /// ρ(GPU ratio, llvmpipe ratio), each as drawn.
     spearman_llvmpipe: Option<f64>,
     scene_adapter: Option<String>,
     scene_size: Option<(u32, u32)>,
@@ -256,23 +257,29 @@ impl GpuReport {
                     frames: t.frames,
                     gpu_ratio: t.ratio_to_standard_fast,
                     f32_files_ratio: t.f32_files.as_ref().and_then(|f| f.ratio_to_standard_fast),
-                    llvmpipe_ratio: llvmpipe_ratio(generated, &m.material, &t.tier),
+                    // As drawn, like `gpu_ratio` (f16 files where both adapters have them).
+                    llvmpipe_ratio: llvmpipe_ratio(generated, &m.material, &t.tier)
+                        .map(|r| r.drawn),
                     model_ratios,
                     flip_mean: t.flip_mean,
                 });
             }
         }
-        let rho = |pick: &dyn Fn(&TierRow) -> Option<f64>| {
+        let rho = |gpu: &dyn Fn(&TierRow) -> Option<f64>,
+                   pick: &dyn Fn(&TierRow) -> Option<f64>| {
             let pairs: Vec<(f64, f64)> = tiers
                 .iter()
-                .filter_map(|t| Some((t.gpu_ratio?, pick(t)?)))
+                .filter_map(|t| Some((gpu(t)?, pick(t)?)))
                 .collect();
             spearman(&pairs)
         };
+        // The model costs a tier's f32 files: paired with their timing (a
+        // half-precision tier drawn from f16 files was timed in f32 too).
+        let f32_files = |t: &TierRow| t.f32_files_ratio.or(t.gpu_ratio);
         let spearman_model = (0..families.len())
-            .map(|i| rho(&|t: &TierRow| t.model_ratios[i]))
+            .map(|i| rho(&f32_files, &|t: &TierRow| t.model_ratios[i]))
             .collect();
-        let spearman_llvmpipe = rho(&|t: &TierRow| t.llvmpipe_ratio);
+        let spearman_llvmpipe = rho(&|t: &TierRow| t.gpu_ratio, &|t: &TierRow| t.llvmpipe_ratio);
         let scene_rows = scenes.map_or_else(Vec::new, |r| {
             r.scenes
                 .iter()
@@ -379,8 +386,8 @@ impl GpuReport {
             .collect();
         let _ = writeln!(
             o,
-            "\nSpearman rank correlation with this GPU's ratios over the {} tiers: {}; llvmpipe \
-             ρ = {}.",
+            "\nSpearman rank correlation with this GPU's ratios over the {} tiers (the model \
+             against the f32 files' ratios, the files it costs): {}; llvmpipe ρ = {}.",
             self.tiers.len(),
             model_rhos.join(", "),
             r(self.spearman_llvmpipe)

@@ -58,18 +58,49 @@ pub fn source_loops(
         .and_then(|w| trips::source_loops(&w, entry))
 }
 
-/// llvmpipe's `ratio_to_standard_fast` of (material, tier) from the committed measurements.
-pub fn llvmpipe_ratio(generated: &Path, material: &str, tier: &str) -> Option<f64> {
+/// A tier's time ÷ `standard` `fast`'s in one bench run, as drawn: a
+/// half-precision tier is drawn from its f16 files where the adapter has
+/// `shader-f16`, and then its portable f32 files are timed too. The model's
+/// tier rows cost the f32 files, so they pair with [`TierRatio::f32_files`]
+/// (like with like); its f16 rows with [`TierRatio::f16_files`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TierRatio {
+    /// The ratio as the bench drew the tier.
+    pub drawn: f64,
+    /// The f32 files' ratio, where the tier was drawn from f16 files.
+    pub f32_files: Option<f64>,
+}
+
+impl TierRatio {
+    /// The ratio of the tier's f32 files.
+    pub fn f32_files(&self) -> f64 {
+        self.f32_files.unwrap_or(self.drawn)
+    }
+
+    /// The ratio of the tier's f16 files, where the bench drew them.
+    pub fn f16_files(&self) -> Option<f64> {
+        self.f32_files.map(|_| self.drawn)
+    }
+}
+
+/// llvmpipe's ratios of (material, tier) from the committed measurements
+/// (`ratio_to_standard_fast`, and `f32_files` for a half-precision tier).
+pub fn llvmpipe_ratio(generated: &Path, material: &str, tier: &str) -> Option<TierRatio> {
     let path = generated
         .join("reports")
         .join(format!("{material}.measurements.json"));
     let json: serde_json::Value = serde_json::from_slice(&std::fs::read(path).ok()?).ok()?;
-    json.get("tiers")?
+    let t = json
+        .get("tiers")?
         .as_array()?
         .iter()
-        .find(|t| t.get("tier").and_then(|v| v.as_str()) == Some(tier))?
-        .get("ratio_to_standard_fast")?
-        .as_f64()
+        .find(|t| t.get("tier").and_then(|v| v.as_str()) == Some(tier))?;
+    Some(TierRatio {
+        drawn: t.get("ratio_to_standard_fast")?.as_f64()?,
+        f32_files: t
+            .get("f32_files")
+            .and_then(|f| f.get("ratio_to_standard_fast")?.as_f64()),
+    })
 }
 
 /// A real GPU's tier ratios, from a committed `cargo xtask bench gpu` report.
@@ -80,12 +111,12 @@ pub struct GpuTimings {
     /// The adapter as the report describes it.
     pub adapter: String,
     /// (material, tier, GPU ms ÷ `standard` `fast`).
-    pub ratios: Vec<(String, String, f64)>,
+    pub ratios: Vec<(String, String, TierRatio)>,
 }
 
 impl GpuTimings {
     /// The ratio of `material` `tier`.
-    pub fn ratio(&self, material: &str, tier: &str) -> Option<f64> {
+    pub fn ratio(&self, material: &str, tier: &str) -> Option<TierRatio> {
         self.ratios
             .iter()
             .find(|(m, t, _)| m == material && t == tier)
@@ -118,7 +149,10 @@ pub fn committed_gpu_timings(generated: &Path) -> Vec<GpuTimings> {
                     Some((
                         t.get("material")?.as_str()?.to_string(),
                         t.get("tier")?.as_str()?.to_string(),
-                        t.get("gpu_ratio")?.as_f64()?,
+                        TierRatio {
+                            drawn: t.get("gpu_ratio")?.as_f64()?,
+                            f32_files: t.get("f32_files_ratio").and_then(|v| v.as_f64()),
+                        },
                     ))
                 })
                 .collect();
@@ -178,5 +212,44 @@ mod tests {
         // Ties take their mean rank: x ranks 1.5, 1.5, 3; y ranks 1, 2, 3.
         let tied = spearman(&[(1.0, 1.0), (1.0, 2.0), (2.0, 3.0)]).unwrap();
         assert!((tied - 0.866_025).abs() < 1e-5, "{tied}");
+    }
+
+    /// A half-precision tier's timing pairs with the model by files: its f32
+    /// files' ratio with the f32 model, the drawn (f16) ratio with the f16
+    /// one; a tier drawn in f32 only has no f16 timing.
+    #[test]
+    fn tier_ratios_pair_like_with_like() {
+        let half = TierRatio {
+            drawn: 1.69,
+            f32_files: Some(1.01),
+        };
+        assert_eq!(half.f32_files(), 1.01);
+        assert_eq!(half.f16_files(), Some(1.69));
+        let plain = TierRatio {
+            drawn: 1.2,
+            f32_files: None,
+        };
+        assert_eq!(plain.f32_files(), 1.2);
+        assert_eq!(plain.f16_files(), None);
+    }
+
+    #[test]
+    fn llvmpipe_ratio_reads_the_f32_files_of_a_half_precision_tier() {
+        let root = std::env::temp_dir().join(format!("weft-tier-ratio-{}", std::process::id()));
+        let reports = root.join("reports");
+        std::fs::create_dir_all(&reports).unwrap();
+        std::fs::write(
+            reports.join("m.measurements.json"),
+            r#"{"tiers": [
+                {"tier": "fast", "ratio_to_standard_fast": 1.5},
+                {"tier": "low", "ratio_to_standard_fast": 2.5, "f32_files": {"ratio_to_standard_fast": 1.4}}
+            ]}"#,
+        )
+        .unwrap();
+        let fast = llvmpipe_ratio(&root, "m", "fast").unwrap();
+        let low = llvmpipe_ratio(&root, "m", "low").unwrap();
+        std::fs::remove_dir_all(&root).unwrap();
+        assert_eq!((fast.f32_files(), fast.f16_files()), (1.5, None));
+        assert_eq!((low.f32_files(), low.f16_files()), (1.4, Some(2.5)));
     }
 }

@@ -218,13 +218,20 @@ fn tier_table(o: &mut String, f: &FamilyStats, rows: &[TierRow]) {
 /// stages summed over the variant's passes). Needs the disassembly.
 pub fn tier_models(generated: &Path, f: &FamilyStats) -> Result<Vec<TierModel>> {
     let rows = tier_rows(generated, std::slice::from_ref(f))?;
-    Ok(models_of(generated, f, &rows))
+    Ok(models_of(generated, f, &rows, "f32"))
 }
 
-fn models_of(generated: &Path, f: &FamilyStats, rows: &[TierRow]) -> Vec<TierModel> {
+/// The model of each row's `precision` files (`f32`, or `f16` for the rows
+/// that have them); a row whose pipelines lack figures is left out.
+fn models_of(
+    generated: &Path,
+    f: &FamilyStats,
+    rows: &[TierRow],
+    precision: &str,
+) -> Vec<TierModel> {
     let index = library_index(f);
     let mut out = Vec::new();
-    for r in rows {
+    for r in rows.iter().filter(|r| precision == "f32" || r.has_f16) {
         let mut t = TierModel {
             material: r.material.clone(),
             tier: r.tier.clone(),
@@ -239,7 +246,7 @@ fn models_of(generated: &Path, f: &FamilyStats, rows: &[TierRow]) -> Vec<TierMod
             let key = (
                 r.material.as_str(),
                 r.variant.as_str(),
-                "f32",
+                precision,
                 pass.as_str(),
             );
             let m = index
@@ -261,8 +268,17 @@ fn models_of(generated: &Path, f: &FamilyStats, rows: &[TierRow]) -> Vec<TierMod
     out
 }
 
+/// One row of the loop-aware table: a tier's model for one kind of files,
+/// beside the timings of the same files.
+struct CostedRow {
+    label: String,
+    model: TierModel,
+    /// Picks the timing of these files from a tier's ratios.
+    files: fn(&loop_report::TierRatio) -> Option<f64>,
+}
+
 fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow]) {
-    let models = models_of(generated, f, rows);
+    let models = models_of(generated, f, rows, "f32");
     let Some(base) = models
         .iter()
         .find(|m| m.material == BASE.0 && m.tier == BASE.1)
@@ -270,14 +286,39 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
     else {
         return; // no disassembly captured
     };
+    // Each tier's f32 files, and after a half-precision tier its f16 files
+    // (what a device with `shader-f16` runs).
+    let f16 = models_of(generated, f, rows, "f16");
+    let mut costed = Vec::new();
+    for m in models {
+        let half = f16
+            .iter()
+            .find(|h| h.material == m.material && h.tier == m.tier)
+            .cloned();
+        let label = m.tier.clone();
+        costed.push(CostedRow {
+            label,
+            model: m,
+            files: |r| Some(r.f32_files()),
+        });
+        if let Some(h) = half {
+            costed.push(CostedRow {
+                label: format!("{} (f16)", h.tier),
+                model: h,
+                files: |r| r.f16_files(),
+            });
+        }
+    }
     let _ = writeln!(
         o,
         "\n## {}: loop-aware model per material × tier\n\nWeighted ISA cost (VALU 1, \
          transcendental 4, vector memory 8, scalar memory 2, waits 0) of the fragment stages of the \
          variant's passes: static (each block once) and executed (each block × the trip counts of \
          the loops around it, from the specialised WGSL; docs/performance.md). × standard fast: \
-         divided by `standard` `fast`. llvmpipe: `ratio_to_standard_fast` of \
-         `generated/reports/<material>.measurements.json`.\n",
+         divided by `standard` `fast`. A half-precision tier has a row for its f32 files and one \
+         for its f16 files (`(f16)`, what a device with `shader-f16` runs). llvmpipe: \
+         `ratio_to_standard_fast` of `generated/reports/<material>.measurements.json` for the same \
+         files (a half-precision tier's f32 row: its `f32_files` ratio).\n",
         f.family
     );
     let _ = writeln!(
@@ -285,22 +326,29 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
         "| material | tier | static cost | executed cost | static × standard fast | executed × standard fast | loops (unknown trip count) | llvmpipe × standard fast |"
     );
     let _ = writeln!(o, "|---|---|--:|--:|--:|--:|--:|--:|");
+    let llvmpipe_of = |c: &CostedRow| {
+        loop_report::llvmpipe_ratio(generated, &c.model.material, &c.model.tier)
+            .and_then(|r| (c.files)(&r))
+    };
     let mut pairs = Vec::new();
+    let mut statics = Vec::new();
     let mut unknown = Vec::new();
-    for m in &models {
+    for c in &costed {
+        let m = &c.model;
         let executed = m.executed_cost / base.executed_cost;
-        let llvmpipe = loop_report::llvmpipe_ratio(generated, &m.material, &m.tier);
+        let llvmpipe = llvmpipe_of(c);
         if let Some(l) = llvmpipe {
             pairs.push((executed, l));
+            statics.push((m.static_cost, l));
         }
         if m.unknown > 0 {
-            unknown.push(format!("{} {} ({})", m.material, m.tier, m.unknown));
+            unknown.push(format!("{} {} ({})", m.material, c.label, m.unknown));
         }
         let _ = writeln!(
             o,
             "| {} | {} | {:.0} | {:.0} | {:.2}× | {executed:.2}× | {} ({}) | {} |",
             m.material,
-            m.tier,
+            c.label,
             m.static_cost,
             m.executed_cost,
             m.static_cost / base.static_cost,
@@ -309,27 +357,25 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
             llvmpipe.map_or("–".into(), |l| format!("{l:.2}×")),
         );
     }
-    let statics: Vec<(f64, f64)> = models
-        .iter()
-        .filter_map(|m| {
-            loop_report::llvmpipe_ratio(generated, &m.material, &m.tier).map(|l| (m.static_cost, l))
-        })
-        .collect();
     let rho =
         |p: &[(f64, f64)]| loop_report::spearman(p).map_or("–".into(), |r| format!("{r:.3}"));
     let gpus: Vec<String> = loop_report::committed_gpu_timings(generated)
         .iter()
         .map(|g| {
-            let pairs: Vec<(f64, f64)> = models
+            let timed: Vec<(&CostedRow, f64)> = costed
                 .iter()
-                .filter_map(|m| {
-                    let gpu = g.ratio(&m.material, &m.tier)?;
-                    Some((m.executed_cost / base.executed_cost, gpu))
+                .filter_map(|c| {
+                    let r = g.ratio(&c.model.material, &c.model.tier)?;
+                    Some((c, (c.files)(&r)?))
                 })
                 .collect();
-            let statics: Vec<(f64, f64)> = models
+            let pairs: Vec<(f64, f64)> = timed
                 .iter()
-                .filter_map(|m| Some((m.static_cost, g.ratio(&m.material, &m.tier)?)))
+                .map(|(c, gpu)| (c.model.executed_cost / base.executed_cost, *gpu))
+                .collect();
+            let statics: Vec<(f64, f64)> = timed
+                .iter()
+                .map(|(c, gpu)| (c.model.static_cost, *gpu))
                 .collect();
             format!(
                 "{} (`generated/reports/{}`, {} pairs): executed cost ρ = {}, static cost ρ = {}",
@@ -343,9 +389,10 @@ fn loop_table(o: &mut String, generated: &Path, f: &FamilyStats, rows: &[TierRow
         .collect();
     let _ = writeln!(
         o,
-        "\nSpearman rank correlation with llvmpipe over the {} material × tier pairs with both: \
-         executed cost ρ = {}, static cost ρ = {}. With real GPUs' ratios (`cargo xtask bench \
-         gpu`): {}. Loops with an unknown trip count (counted once): {}.",
+        "\nSpearman rank correlation with llvmpipe over the {} material × tier pairs with both \
+         (each half-precision tier's f32 and f16 files apart): executed cost ρ = {}, static cost \
+         ρ = {}. With real GPUs' ratios (`cargo xtask bench gpu`): {}. Loops with an unknown trip \
+         count (counted once): {}.",
         pairs.len(),
         rho(&pairs),
         rho(&statics),
