@@ -29,8 +29,9 @@ fn weft_half_pow5(x: weft_half) -> weft_half {
 
 // GGX D in Filament's mediump form: with alpha = r^2,
 // k = alpha / ((1 - n.h^2) + (n.h alpha)^2) and D = k^2 / pi. k <= 1 / alpha
-// <= 126, so k^2 never overflows; `one_minus_n_dot_h2` = |n x h|^2 computed
-// in f32 (the cancellation near the peak is the reason for the form).
+// <= 126, so k^2 never overflows; `one_minus_n_dot_h2` = 1 - n.h^2 computed
+// in f32 and then rounded (formed from an f16 n.h it would cancel near the
+// peak, the reason for the form).
 fn weft_half_d_ggx(one_minus_n_dot_h2: weft_half, n_dot_h: weft_half, alpha: weft_half) -> weft_half {
     let a = n_dot_h * alpha;
     let k = alpha / (one_minus_n_dot_h2 + a * a);

@@ -214,9 +214,9 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
 // lobes' D V n.l (weft_half_spec_ggx_aniso2: lane 0 the narrow lobe, lane 1
 // the wide one, so that AMD's compiler packs both lobes' f16 arithmetic
 // into one v_pk_* instruction each; README, "On AMD's compiler"), Schlick
-// F, the layer weights, the split-sum albedos and the diffuse weights. Light radiance, SH, the
-// prefiltered environment and the table fetch stay f32; the noise factor is
-// applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
+// F, the layer weights, the split-sum albedos and the diffuse weights.
+// Light radiance, SH, the prefiltered environment and the table fetch stay
+// f32; the noise factor is applied in f32. The lobes' roughness is floored at 0.089 (f16's GGX peak
 // limit) and each width at 0.089^2; the table and the environment keep the
 // material's roughness. The table is read filtered, as fast (a nearest-texel
 // read costs more on a GPU).
