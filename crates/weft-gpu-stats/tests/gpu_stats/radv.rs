@@ -445,3 +445,84 @@ fn read_meta(name: &str) -> MaterialMetadata {
     let path = generated().join(name).join(format!("{name}.meta.json"));
     serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap()
 }
+
+/// Where half precision pays on AMD's compiler (issue 24, item 5;
+/// docs/performance.md, "The `low` rungs"): a `low` variant whose work pairs
+/// up in `vec2<f16>` has an f16 file with fewer fragment instructions than
+/// what it is measured against — `fast`'s file of the same keywords, or its
+/// own f32 file. The one place these claims are listed: the test fails when
+/// one no longer holds (the pairing was undone, or the compiler stopped
+/// packing it).
+const F16_GAINS: &[(&str, &str, &str, F16Baseline)] = &[
+    // Both lobes in one vec2 (weft_half_spec_ggx_aniso2).
+    (
+        "satin",
+        "low.normal_map-off.bidirectional-off",
+        "navi21",
+        F16Baseline::Fast,
+    ),
+    (
+        "satin",
+        "low.normal_map-off.bidirectional-on",
+        "navi21",
+        F16Baseline::Fast,
+    ),
+    // Each node's M/P blends and two transmissions paired.
+    (
+        "microcylinder",
+        "low.use_second_para-on.tangent_offsets-curve",
+        "navi21",
+        F16Baseline::OwnF32,
+    ),
+    (
+        "microcylinder",
+        "low.use_second_para-on.tangent_offsets-curve",
+        "gfx1100",
+        F16Baseline::OwnF32,
+    ),
+];
+
+#[derive(Clone, Copy, Debug)]
+enum F16Baseline {
+    /// `fast`'s f32 file of the same keyword values.
+    Fast,
+    /// The same variant's f32 file.
+    OwnF32,
+}
+
+#[test]
+fn half_precision_pays_where_work_pairs_up() {
+    let instructions = |family: &str, material: &str, variant: &str, precision: &str| {
+        let f = full()
+            .iter()
+            .find(|f| f.family == family)
+            .unwrap_or_else(|| panic!("no {family} figures"));
+        f.pipelines
+            .iter()
+            .find(|p| {
+                let s = &p.source;
+                s.kind == "material"
+                    && s.material == material
+                    && s.variant == variant
+                    && s.precision == precision
+                    && p.pass == "forward"
+            })
+            .and_then(|p| p.stage("fragment")?.get("Instructions"))
+            .unwrap_or_else(|| panic!("{family} {material} {variant} {precision}: no figures"))
+    };
+    for &(material, variant, family, baseline) in F16_GAINS {
+        let half = instructions(family, material, variant, "f16");
+        let against = match baseline {
+            F16Baseline::Fast => {
+                let fast = variant.replacen("low.", "fast.", 1);
+                instructions(family, material, &fast, "f32")
+            }
+            F16Baseline::OwnF32 => instructions(family, material, variant, "f32"),
+        };
+        assert!(
+            half < against,
+            "{family} {material} {variant}: the f16 file has {half} fragment instructions, \
+             not fewer than {against} ({baseline:?}); F16_GAINS and docs/performance.md claim a gain"
+        );
+    }
+}
