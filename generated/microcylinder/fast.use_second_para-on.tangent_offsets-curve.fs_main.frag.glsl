@@ -125,6 +125,8 @@ const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
 const float MC_GL2_T = 0.21132487;
 const float MC_GJ2_T = 0.31101775;
+const float MC_GL2_E = 0.36602542;
+const float MC_GJ2_E = 0.8228757;
 const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Fragment { WeftFrame _group_0_binding_0_fs; };
@@ -353,28 +355,29 @@ float mc_fast_half_len(float sa_2, float sb_1) {
 }
 
 vec3[2] mc_normal3_(vec3 t_1) {
-    vec3 e_2 = exp(((-0.5 * t_1) * t_1));
+    vec3 e_1 = exp(((-0.5 * t_1) * t_1));
     vec3 z = (abs(t_1) * 0.70710677);
     vec3 k = (vec3(1.0) / (vec3(1.0) + (0.3275911 * z)));
     vec3 poly = (k * (vec3(0.2548296) + (k * (vec3(-0.28449672) + (k * (vec3(1.4214138) + (k * (vec3(-1.4531521) + (k * 1.0614054)))))))));
-    vec3 half_ = (vec3(0.5) - ((0.5 * poly) * e_2));
-    return vec3[2]((e_2 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t_1, vec3(0.0))));
+    vec3 half_ = (vec3(0.5) - ((0.5 * poly) * e_1));
+    return vec3[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t_1, vec3(0.0))));
 }
 
-vec4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, vec2 r, float e_1) {
+vec4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, vec2 r, bool jacobi) {
+    float e_2 = (jacobi ? MC_GJ2_E : MC_GL2_E);
     float d_1 = (n1_.x - n0_.x);
-    vec3 xe = vec3((n0_.x - (e_1 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_1 * d_1)));
-    float dx = ((0.5 + e_1) * d_1);
-    vec3 _e26[2] = mc_normal3_((xe * q_1.inv_gamma_s));
+    vec3 xe = vec3((n0_.x - (e_2 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_2 * d_1)));
+    float dx = ((jacobi ? 1.3228757 : 0.86602545) * d_1);
+    vec3 _e30[2] = mc_normal3_((xe * q_1.inv_gamma_s));
     bool wide = ((abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT);
-    vec2 exact = ((_e26[1].yz - _e26[1].xy) / vec2((wide ? dx : 1.0)));
-    vec2 trap = ((0.5 * q_1.inv_gamma_s) * (_e26[0].xy + _e26[0].yz));
+    vec2 exact = ((_e30[1].yz - _e30[1].xy) / vec2((wide ? dx : 1.0)));
+    vec2 trap = ((0.5 * q_1.inv_gamma_s) * (_e30[0].xy + _e30[0].yz));
     vec2 gs = max((wide ? exact : trap), vec2(0.0));
-    vec2 _e58 = mc_fast_volume2_(vec2(n0_.x, n1_.x), q_1.inv_gamma_v);
+    vec2 _e62 = mc_fast_volume2_(vec2(n0_.x, n1_.x), q_1.inv_gamma_v);
     vec2 s_4 = (r * vec2(n0_.s, n1_.s));
     vec2 v_1 = (r * vec2(n0_.v, n1_.v));
     float surface = dot(gs, s_4);
-    float volume = (((1.0 - th_1.kd) * dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
+    float volume = (((1.0 - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
     return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2(n0_.p, n1_.p)));
 }
 
@@ -408,8 +411,8 @@ vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec
     float _e103 = mc_fast_half_len(s0_1, s1_2);
     float _e104 = mc_fast_half_len(s1_2, s2_2);
     float total = (_e103 + _e104);
-    vec4 _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, (tn / (1.0 - (2.0 * tn))));
-    return (_e111 / vec4(max(total, 1e-6)));
+    vec4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
+    return (_e106 / vec4(max(total, 1e-6)));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {

@@ -155,6 +155,8 @@ static const float MC_FAST_MIN_SPAN = 0.0001;
 static const float MC_FAST_SPLIT_DEG = 60.0;
 static const float MC_GL2_T = 0.21132487;
 static const float MC_GJ2_T = 0.31101775;
+static const float MC_GL2_E = 0.36602542;
+static const float MC_GJ2_E = 0.8228757;
 static const float MC_GJ2_W = 0.36296296;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }
@@ -470,30 +472,31 @@ ret_Constructarray2_float3_ Constructarray2_float3_(float3 arg0, float3 arg1) {
 typedef float3 ret_mc_normal3_[2];
 ret_mc_normal3_ mc_normal3_(float3 t_1)
 {
-    float3 e_2 = exp(((-0.5 * t_1) * t_1));
+    float3 e_1 = exp(((-0.5 * t_1) * t_1));
     float3 z = (abs(t_1) * 0.70710677);
     float3 k = ((1.0).xxx / ((1.0).xxx + (0.3275911 * z)));
     float3 poly = (k * ((0.2548296).xxx + (k * ((-0.28449672).xxx + (k * ((1.4214138).xxx + (k * ((-1.4531521).xxx + (k * 1.0614054)))))))));
-    float3 half_ = ((0.5).xxx - ((0.5 * poly) * e_2));
+    float3 half_ = ((0.5).xxx - ((0.5 * poly) * e_1));
     const float3 _e46 = weft_select3_f32bit((t_1 >= (0.0).xxx), half_, -(half_));
-    return Constructarray2_float3_((e_2 * MC_INV_SQRT_TWO_PI), _e46);
+    return Constructarray2_float3_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
 }
 
-float4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, float2 r, float e_1)
+float4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, float2 r, bool jacobi)
 {
+    float e_2 = (jacobi ? MC_GJ2_E : MC_GL2_E);
     float d_1 = (n1_.x - n0_.x);
-    float3 xe = float3((n0_.x - (e_1 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_1 * d_1)));
-    float dx = ((0.5 + e_1) * d_1);
-    const float3 _e26[2] = mc_normal3_((xe * q_1.inv_gamma_s));
+    float3 xe = float3((n0_.x - (e_2 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_2 * d_1)));
+    float dx = ((jacobi ? 1.3228757 : 0.86602545) * d_1);
+    const float3 _e30[2] = mc_normal3_((xe * q_1.inv_gamma_s));
     bool wide = ((abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT);
-    float2 exact = ((_e26[1].yz - _e26[1].xy) / ((wide ? dx : 1.0)).xx);
-    float2 trap = ((0.5 * q_1.inv_gamma_s) * (_e26[0].xy + _e26[0].yz));
+    float2 exact = ((_e30[1].yz - _e30[1].xy) / ((wide ? dx : 1.0)).xx);
+    float2 trap = ((0.5 * q_1.inv_gamma_s) * (_e30[0].xy + _e30[0].yz));
     float2 gs = max((wide ? exact : trap), (0.0).xx);
-    const float2 _e58 = mc_fast_volume2_(float2(n0_.x, n1_.x), q_1.inv_gamma_v);
+    const float2 _e62 = mc_fast_volume2_(float2(n0_.x, n1_.x), q_1.inv_gamma_v);
     float2 s_4 = (r * float2(n0_.s, n1_.s));
     float2 v_1 = (r * float2(n0_.v, n1_.v));
     float surface = dot(gs, s_4);
-    float volume = (((1.0 - th_1.kd) * dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
+    float volume = (((1.0 - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
     return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float2(n0_.p, n1_.p)));
 }
 
@@ -529,8 +532,8 @@ float4 mc_thread_curve_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_
     const float _e103 = mc_fast_half_len(s0_1, s1_2);
     const float _e104 = mc_fast_half_len(s1_2, s2_2);
     float total = (_e103 + _e104);
-    const float4 _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, (tn / (1.0 - (2.0 * tn))));
-    return (_e111 / (max(total, 1e-6)).xxxx);
+    const float4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
+    return (_e106 / (max(total, 1e-6)).xxxx);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {

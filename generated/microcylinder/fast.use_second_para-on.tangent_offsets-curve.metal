@@ -144,6 +144,8 @@ constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
 constant float MC_GL2_T = 0.21132487;
 constant float MC_GJ2_T = 0.31101775;
+constant float MC_GL2_E = 0.36602542;
+constant float MC_GJ2_E = 0.8228757;
 constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(
@@ -436,12 +438,12 @@ float mc_fast_half_len(
 type_12 mc_normal3_(
     metal::float3 t_1
 ) {
-    metal::float3 e_2 = metal::exp((-0.5 * t_1) * t_1);
+    metal::float3 e_1 = metal::exp((-0.5 * t_1) * t_1);
     metal::float3 z = metal::abs(t_1) * 0.70710677;
     metal::float3 k = metal::float3(1.0) / (metal::float3(1.0) + (0.3275911 * z));
     metal::float3 poly = k * (metal::float3(0.2548296) + (k * (metal::float3(-0.28449672) + (k * (metal::float3(1.4214138) + (k * (metal::float3(-1.4531521) + (k * 1.0614054))))))));
-    metal::float3 half_ = metal::float3(0.5) - ((0.5 * poly) * e_2);
-    return type_12 {{e_2 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t_1 >= metal::float3(0.0))}};
+    metal::float3 half_ = metal::float3(0.5) - ((0.5 * poly) * e_1);
+    return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t_1 >= metal::float3(0.0))}};
 }
 
 metal::float4 mc_fast_rule2_(
@@ -450,21 +452,22 @@ metal::float4 mc_fast_rule2_(
     McFastNode n0_,
     McFastNode n1_,
     metal::float2 r,
-    float e_1
+    bool jacobi
 ) {
+    float e_2 = jacobi ? MC_GJ2_E : MC_GL2_E;
     float d_1 = n1_.x - n0_.x;
-    metal::float3 xe = metal::float3(n0_.x - (e_1 * d_1), 0.5 * (n0_.x + n1_.x), n1_.x + (e_1 * d_1));
-    float dx = (0.5 + e_1) * d_1;
-    type_12 _e26 = mc_normal3_(xe * q_1.inv_gamma_s);
+    metal::float3 xe = metal::float3(n0_.x - (e_2 * d_1), 0.5 * (n0_.x + n1_.x), n1_.x + (e_2 * d_1));
+    float dx = (jacobi ? 1.3228757 : 0.86602545) * d_1;
+    type_12 _e30 = mc_normal3_(xe * q_1.inv_gamma_s);
     bool wide = (metal::abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT;
-    metal::float2 exact = (_e26.inner[1].yz - _e26.inner[1].xy) / metal::float2(wide ? dx : 1.0);
-    metal::float2 trap = (0.5 * q_1.inv_gamma_s) * (_e26.inner[0].xy + _e26.inner[0].yz);
+    metal::float2 exact = (_e30.inner[1].yz - _e30.inner[1].xy) / metal::float2(wide ? dx : 1.0);
+    metal::float2 trap = (0.5 * q_1.inv_gamma_s) * (_e30.inner[0].xy + _e30.inner[0].yz);
     metal::float2 gs = metal::max(wide ? exact : trap, metal::float2(0.0));
-    metal::float2 _e58 = mc_fast_volume2_(metal::float2(n0_.x, n1_.x), q_1.inv_gamma_v);
+    metal::float2 _e62 = mc_fast_volume2_(metal::float2(n0_.x, n1_.x), q_1.inv_gamma_v);
     metal::float2 s_4 = r * metal::float2(n0_.s, n1_.s);
     metal::float2 v_1 = r * metal::float2(n0_.v, n1_.v);
     float surface = metal::dot(gs, s_4);
-    float volume = ((1.0 - th_1.kd) * metal::dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y));
+    float volume = ((1.0 - th_1.kd) * metal::dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y));
     return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float2(n0_.p, n1_.p)));
 }
 
@@ -504,8 +507,8 @@ metal::float4 mc_thread_curve_fast(
     float _e103 = mc_fast_half_len(s0_1, s1_2);
     float _e104 = mc_fast_half_len(s1_2, s2_2);
     float total = _e103 + _e104;
-    metal::float4 _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, tn / (1.0 - (2.0 * tn)));
-    return _e111 / metal::float4(metal::max(total, 0.000001));
+    metal::float4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
+    return _e106 / metal::float4(metal::max(total, 0.000001));
 }
 
 McThread microcylinder_thread(

@@ -134,6 +134,8 @@ const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
 const MC_GL2_T: f32 = 0.21132487f;
 const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GL2_E: f32 = 0.36602542f;
+const MC_GJ2_E: f32 = 0.8228757f;
 const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 
@@ -364,28 +366,29 @@ fn mc_fast_half_len(sa_2: f32, sb_1: f32) -> f32 {
 }
 
 fn mc_normal3_(t_1: vec3<f32>) -> array<vec3<f32>, 2> {
-    let e_2 = exp(((-0.5f * t_1) * t_1));
+    let e_1 = exp(((-0.5f * t_1) * t_1));
     let z = (abs(t_1) * 0.70710677f);
     let k = (vec3(1f) / (vec3(1f) + (0.3275911f * z)));
     let poly = (k * (vec3(0.2548296f) + (k * (vec3(-0.28449672f) + (k * (vec3(1.4214138f) + (k * (vec3(-1.4531521f) + (k * 1.0614054f)))))))));
-    let half = (vec3(0.5f) - ((0.5f * poly) * e_2));
-    return array<vec3<f32>, 2>((e_2 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t_1 >= vec3(0f))));
+    let half = (vec3(0.5f) - ((0.5f * poly) * e_1));
+    return array<vec3<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t_1 >= vec3(0f))));
 }
 
-fn mc_fast_rule2_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNode, r: vec2<f32>, e_1: f32) -> vec4<f32> {
+fn mc_fast_rule2_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNode, r: vec2<f32>, jacobi: bool) -> vec4<f32> {
+    let e_2 = select(MC_GL2_E, MC_GJ2_E, jacobi);
     let d_1 = (n1_.x - n0_.x);
-    let xe = vec3<f32>((n0_.x - (e_1 * d_1)), (0.5f * (n0_.x + n1_.x)), (n1_.x + (e_1 * d_1)));
-    let dx = ((0.5f + e_1) * d_1);
-    let _e26 = mc_normal3_((xe * q_1.inv_gamma_s));
+    let xe = vec3<f32>((n0_.x - (e_2 * d_1)), (0.5f * (n0_.x + n1_.x)), (n1_.x + (e_2 * d_1)));
+    let dx = (select(0.86602545f, 1.3228757f, jacobi) * d_1);
+    let _e30 = mc_normal3_((xe * q_1.inv_gamma_s));
     let wide = ((abs(dx) * q_1.inv_gamma_s) >= MC_FAST_MIN_DT);
-    let exact = ((_e26[1].yz - _e26[1].xy) / vec2(select(1f, dx, wide)));
-    let trap = ((0.5f * q_1.inv_gamma_s) * (_e26[0].xy + _e26[0].yz));
+    let exact = ((_e30[1].yz - _e30[1].xy) / vec2(select(1f, dx, wide)));
+    let trap = ((0.5f * q_1.inv_gamma_s) * (_e30[0].xy + _e30[0].yz));
     let gs = max(select(trap, exact, wide), vec2(0f));
-    let _e58 = mc_fast_volume2_(vec2<f32>(n0_.x, n1_.x), q_1.inv_gamma_v);
+    let _e62 = mc_fast_volume2_(vec2<f32>(n0_.x, n1_.x), q_1.inv_gamma_v);
     let s_4 = (r * vec2<f32>(n0_.s, n1_.s));
     let v_1 = (r * vec2<f32>(n0_.v, n1_.v));
     let surface = dot(gs, s_4);
-    let volume = (((1f - th_1.kd) * dot(_e58, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
+    let volume = (((1f - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
     return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2<f32>(n0_.p, n1_.p)));
 }
 
@@ -420,8 +423,8 @@ fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: M
     let _e103 = mc_fast_half_len(s0_1, s1_2);
     let _e104 = mc_fast_half_len(s1_2, s2_2);
     let total = (_e103 + _e104);
-    let _e111 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, (tn / (1f - (2f * tn))));
-    return (_e111 / vec4(max(total, 0.000001f)));
+    let _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
+    return (_e106 / vec4(max(total, 0.000001f)));
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {

@@ -143,6 +143,8 @@ constant float MC_FAST_MIN_SPAN = 0.0001;
 constant float MC_FAST_SPLIT_DEG = 60.0;
 constant float MC_GL2_T = 0.21132487;
 constant float MC_GJ2_T = 0.31101775;
+constant float MC_GL2_E = 0.36602542;
+constant float MC_GJ2_E = 0.8228757;
 constant float MC_GJ2_W = 0.36296296;
 
 metal::float3 weft_safe_normalize(

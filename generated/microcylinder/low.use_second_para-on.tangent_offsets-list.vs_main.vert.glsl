@@ -124,6 +124,8 @@ const float MC_FAST_MIN_SPAN = 0.0001;
 const float MC_FAST_SPLIT_DEG = 60.0;
 const float MC_GL2_T = 0.21132487;
 const float MC_GJ2_T = 0.31101775;
+const float MC_GL2_E = 0.36602542;
+const float MC_GJ2_E = 0.8228757;
 const float MC_GJ2_W = 0.36296296;
 
 layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };

@@ -140,6 +140,8 @@ static const float MC_FAST_MIN_SPAN = 0.0001;
 static const float MC_FAST_SPLIT_DEG = 60.0;
 static const float MC_GL2_T = 0.21132487;
 static const float MC_GJ2_T = 0.31101775;
+static const float MC_GL2_E = 0.36602542;
+static const float MC_GJ2_E = 0.8228757;
 static const float MC_GJ2_W = 0.36296296;
 
 cbuffer weft_frame : register(b0) { WeftFrame weft_frame; }

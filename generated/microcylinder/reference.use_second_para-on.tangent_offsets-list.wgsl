@@ -119,6 +119,8 @@ const MC_FAST_MIN_SPAN: f32 = 0.0001f;
 const MC_FAST_SPLIT_DEG: f32 = 60f;
 const MC_GL2_T: f32 = 0.21132487f;
 const MC_GJ2_T: f32 = 0.31101775f;
+const MC_GL2_E: f32 = 0.36602542f;
+const MC_GJ2_E: f32 = 0.8228757f;
 const MC_GJ2_W: f32 = 0.36296296f;
 
 @group(0) @binding(0) 

@@ -276,14 +276,12 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha)
 
 float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1)
 {
-    float nv = max(n_dot_v_1, 0.001);
+    float2 x_2 = float2(max(n_dot_v_1, 0.001), n_dot_l);
     float alpha2_ = (alpha_1 * alpha_1);
-    float g_v = lerp(nv, 1.0, alpha_1);
-    float g_l = lerp(n_dot_l, 1.0, alpha_1);
-    float inv_gg = (1.0 / (g_v * g_l));
-    float q_v = (nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg)));
-    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg)));
-    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    float2 g = lerp(x_2, (1.0).xx, alpha_1);
+    float inv_gg = (1.0 / (g.x * g.y));
+    float2 q = (x_2 + ((alpha2_ * ((1.0).xx - x_2)) * (g.yx * inv_gg)));
+    float denominator = ((x_2.y * q.x) + (x_2.x * q.y));
     return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
 

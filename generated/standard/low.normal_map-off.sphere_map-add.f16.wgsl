@@ -225,14 +225,12 @@ fn weft_half_d_ggx(one_minus_n_dot_h2_: f16, n_dot_h: f16, alpha: f16) -> f16 {
 }
 
 fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f16, n_dot_l: f16, alpha_1: f16) -> f16 {
-    let nv = max(n_dot_v_1, 0.0010004044h);
+    let x_2 = vec2<f16>(max(n_dot_v_1, 0.0010004044h), n_dot_l);
     let alpha2_ = (alpha_1 * alpha_1);
-    let g_v = mix(nv, 1h, alpha_1);
-    let g_l = mix(n_dot_l, 1h, alpha_1);
-    let inv_gg = (1h / (g_v * g_l));
-    let q_v = (nv + ((alpha2_ * (1h - nv)) * (g_l * inv_gg)));
-    let q_l = (n_dot_l + ((alpha2_ * (1h - n_dot_l)) * (g_v * inv_gg)));
-    let denominator = ((n_dot_l * q_v) + (nv * q_l));
+    let g = mix(x_2, vec2(1h), alpha_1);
+    let inv_gg = (1h / (g.x * g.y));
+    let q = (x_2 + ((alpha2_ * (vec2(1h) - x_2)) * (g.yx * inv_gg)));
+    let denominator = ((x_2.y * q.x) + (x_2.x * q.y));
     return ((0.5h * n_dot_l) / max(denominator, 0.000100016594h));
 }
 

@@ -223,14 +223,12 @@ fn weft_half_d_ggx(one_minus_n_dot_h2_: f32, n_dot_h: f32, alpha: f32) -> f32 {
 }
 
 fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v_1: f32, n_dot_l: f32, alpha_1: f32) -> f32 {
-    let nv = max(n_dot_v_1, 0.001f);
+    let x_2 = vec2<f32>(max(n_dot_v_1, 0.001f), n_dot_l);
     let alpha2_ = (alpha_1 * alpha_1);
-    let g_v = mix(nv, 1f, alpha_1);
-    let g_l = mix(n_dot_l, 1f, alpha_1);
-    let inv_gg = (1f / (g_v * g_l));
-    let q_v = (nv + ((alpha2_ * (1f - nv)) * (g_l * inv_gg)));
-    let q_l = (n_dot_l + ((alpha2_ * (1f - n_dot_l)) * (g_v * inv_gg)));
-    let denominator = ((n_dot_l * q_v) + (nv * q_l));
+    let g = mix(x_2, vec2(1f), alpha_1);
+    let inv_gg = (1f / (g.x * g.y));
+    let q = (x_2 + ((alpha2_ * (vec2(1f) - x_2)) * (g.yx * inv_gg)));
+    let denominator = ((x_2.y * q.x) + (x_2.x * q.y));
     return ((0.5f * n_dot_l) / max(denominator, 0.0001f));
 }
 

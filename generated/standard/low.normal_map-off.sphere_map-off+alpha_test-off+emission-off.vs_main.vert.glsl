@@ -180,14 +180,12 @@ float weft_half_d_ggx(float one_minus_n_dot_h2_, float n_dot_h, float alpha) {
 }
 
 float weft_half_v_smith_ggx_correlated_newton_nl(float n_dot_v_1, float n_dot_l, float alpha_1) {
-    float nv = max(n_dot_v_1, 0.001);
+    vec2 x_2 = vec2(max(n_dot_v_1, 0.001), n_dot_l);
     float alpha2_ = (alpha_1 * alpha_1);
-    float g_v = mix(nv, 1.0, alpha_1);
-    float g_l = mix(n_dot_l, 1.0, alpha_1);
-    float inv_gg = (1.0 / (g_v * g_l));
-    float q_v = (nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg)));
-    float q_l = (n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg)));
-    float denominator = ((n_dot_l * q_v) + (nv * q_l));
+    vec2 g = mix(x_2, vec2(1.0), alpha_1);
+    float inv_gg = (1.0 / (g.x * g.y));
+    vec2 q = (x_2 + ((alpha2_ * (vec2(1.0) - x_2)) * (g.yx * inv_gg)));
+    float denominator = ((x_2.y * q.x) + (x_2.x * q.y));
     return ((0.5 * n_dot_l) / max(denominator, 0.0001));
 }
 

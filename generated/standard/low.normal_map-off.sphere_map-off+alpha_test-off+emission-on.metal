@@ -250,14 +250,12 @@ weft_half weft_half_v_smith_ggx_correlated_newton_nl(
     weft_half n_dot_l,
     weft_half alpha_1
 ) {
-    float nv = metal::max(n_dot_v_1, 0.001);
+    metal::float2 x_2 = metal::float2(metal::max(n_dot_v_1, 0.001), n_dot_l);
     weft_half alpha2_ = alpha_1 * alpha_1;
-    float g_v = metal::mix(nv, 1.0, alpha_1);
-    float g_l = metal::mix(n_dot_l, 1.0, alpha_1);
-    float inv_gg = 1.0 / (g_v * g_l);
-    float q_v = nv + ((alpha2_ * (1.0 - nv)) * (g_l * inv_gg));
-    weft_half q_l = n_dot_l + ((alpha2_ * (1.0 - n_dot_l)) * (g_v * inv_gg));
-    float denominator = (n_dot_l * q_v) + (nv * q_l);
+    metal::float2 g = metal::mix(x_2, metal::float2(1.0), alpha_1);
+    float inv_gg = 1.0 / (g.x * g.y);
+    metal::float2 q = x_2 + ((alpha2_ * (metal::float2(1.0) - x_2)) * (g.yx * inv_gg));
+    float denominator = (x_2.y * q.x) + (x_2.x * q.y);
     return (0.5 * n_dot_l) / metal::max(denominator, 0.0001);
 }
 

@@ -315,14 +315,12 @@ weft_half weft_half_v_smith_ggx_correlated_newton_nl(
     weft_half n_dot_l,
     weft_half alpha_1
 ) {
-    half nv = metal::max(n_dot_v_1, 0.0010004044h);
+    metal::half2 x_2 = metal::half2(metal::max(n_dot_v_1, 0.0010004044h), n_dot_l);
     weft_half alpha2_ = alpha_1 * alpha_1;
-    half g_v = metal::mix(nv, 1.0h, alpha_1);
-    half g_l = metal::mix(n_dot_l, 1.0h, alpha_1);
-    half inv_gg = 1.0h / (g_v * g_l);
-    half q_v = nv + ((alpha2_ * (1.0h - nv)) * (g_l * inv_gg));
-    weft_half q_l = n_dot_l + ((alpha2_ * (1.0h - n_dot_l)) * (g_v * inv_gg));
-    half denominator = (n_dot_l * q_v) + (nv * q_l);
+    metal::half2 g = metal::mix(x_2, metal::half2(1.0h), alpha_1);
+    half inv_gg = 1.0h / (g.x * g.y);
+    metal::half2 q = x_2 + ((alpha2_ * (metal::half2(1.0h) - x_2)) * (g.yx * inv_gg));
+    half denominator = (x_2.y * q.x) + (x_2.x * q.y);
     return (0.5h * n_dot_l) / metal::max(denominator, 0.000100016594h);
 }
 

@@ -61,17 +61,18 @@ fn weft_half_v_smith_ggx_correlated_fast_nl(n_dot_v: weft_half, n_dot_l: weft_ha
 // denominator is ~alpha (n.l + n.v) near zero, as Hammon's: floored at 1e-4
 // for the same reason.
 fn weft_half_v_smith_ggx_correlated_newton_nl(n_dot_v: weft_half, n_dot_l: weft_half, alpha: weft_half) -> weft_half {
-    let nv = max(n_dot_v, weft_half(WEFT_MIN_N_DOT_HALF));
+    // The view (lane 0) and light (lane 1) terms alike, in one vec2 so that
+    // a compiler packing f16 pairs (AMD's `v_pk_*`) does both at once.
+    let x = vec2<weft_half>(max(n_dot_v, weft_half(WEFT_MIN_N_DOT_HALF)), n_dot_l);
     let alpha2 = alpha * alpha;
-    let g_v = mix(nv, weft_half(1.0), alpha);
-    let g_l = mix(n_dot_l, weft_half(1.0), alpha);
+    let g = mix(x, vec2<weft_half>(1.0), alpha);
     // One reciprocal for both 1/g (a reciprocal costs four multiplies on
     // AMD's compiler): g_v g_l >= alpha (alpha + 1e-3 (1 - alpha)) >= 7e-5 at
     // the 0.089 roughness floor, a normal f16 number, and 1/(g_v g_l) <= 1.5e4.
-    let inv_gg = weft_half(1.0) / (g_v * g_l);
-    let q_v = nv + alpha2 * (weft_half(1.0) - nv) * (g_l * inv_gg);
-    let q_l = n_dot_l + alpha2 * (weft_half(1.0) - n_dot_l) * (g_v * inv_gg);
-    let denominator = n_dot_l * q_v + nv * q_l;
+    let inv_gg = weft_half(1.0) / (g.x * g.y);
+    // (q_v, q_l): q_v = x_v + alpha^2 (1 - x_v) / g_v, and so for l.
+    let q = x + alpha2 * (vec2<weft_half>(1.0) - x) * (g.yx * inv_gg);
+    let denominator = x.y * q.x + x.x * q.y;
     return weft_half(0.5) * n_dot_l / max(denominator, weft_half(1e-4));
 }
 

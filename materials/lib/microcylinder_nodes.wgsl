@@ -590,6 +590,9 @@ fn mc_fast_half_len(sa: f32, sb: f32) -> f32 {
 // (1/60) / (3/14)^2 = 98/270 of the width each).
 const MC_GL2_T: f32 = 0.211324865405;
 const MC_GJ2_T: f32 = 0.311017764983;
+// tn / (1 - 2 tn) of each: (sqrt 3 - 1) / 2 and (sqrt 7 - 1) / 2.
+const MC_GL2_E: f32 = 0.366025403784;
+const MC_GJ2_E: f32 = 0.822875655532;
 const MC_GJ2_W: f32 = 0.362962962963;
 
 // Standard normal at each t: (pdf, cdf - 1/2), as mc_normal4.
@@ -602,16 +605,19 @@ fn mc_normal3(t: vec3<f32>) -> array<vec3<f32>, 2> {
     return array<vec3<f32>, 2>(e * MC_INV_SQRT_TWO_PI, select(-half, half, t >= vec3<f32>(0.0)));
 }
 
-// The 2-node rule on one range: nodes at tn and 1 - tn of it, weights r;
+// The 2-node rule on one range: nodes at tn and 1 - tn of it (tn of the
+// Gauss-Jacobi pair if `jacobi`, else of Gauss-Legendre's), weights r;
 // theta_h linear through the nodes gives the cell edges at 0, 1/2, 1
-// (e = tn / (1 - 2 tn) node steps beyond the nodes); the surface Gaussian
+// (e = tn / (1 - 2 tn) node steps beyond the nodes, a constant of each rule:
+// no division); the surface Gaussian
 // averaged over each cell (mean of the edge pdfs below 0.1 gamma, as
 // mc_cell_means), the volume Gaussian at the nodes.
-fn mc_fast_rule2(q: McFastSet, th: McThread, n0: McFastNode, n1: McFastNode, r: vec2<f32>, e: f32) -> vec4<f32> {
+fn mc_fast_rule2(q: McFastSet, th: McThread, n0: McFastNode, n1: McFastNode, r: vec2<f32>, jacobi: bool) -> vec4<f32> {
+    let e = select(MC_GL2_E, MC_GJ2_E, jacobi);
     let d = n1.x - n0.x;
     let xe = vec3<f32>(n0.x - e * d, 0.5 * (n0.x + n1.x), n1.x + e * d);
     // Both cells span the same width in theta_h.
-    let dx = (0.5 + e) * d;
+    let dx = select(0.5 + MC_GL2_E, 0.5 + MC_GJ2_E, jacobi) * d;
     let nd = mc_normal3(xe * q.inv_gamma_s);
     let wide = abs(dx) * q.inv_gamma_s >= MC_FAST_MIN_DT;
     let exact = (nd[1].yz - nd[1].xy) / select(1.0, dx, wide);
@@ -652,5 +658,5 @@ fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread,
     let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
     let r = select(0.5, MC_GJ2_W, bump) * w * (l2 * inv_len);
     let total = mc_fast_half_len(s0, s1) + mc_fast_half_len(s1, s2);
-    return mc_fast_rule2(q, th, n0, n1, r, tn / (1.0 - 2.0 * tn)) / max(total, 1e-6);
+    return mc_fast_rule2(q, th, n0, n1, r, bump) / max(total, 1e-6);
 }

@@ -25,7 +25,7 @@
 //               the nodes; exact dielectric F_r in a one-division form,
 //               Schlick's transmission in and out; transcendental-light
 //               angle forms (one polynomial asin for theta_h, u() from a
-//               series in cos). 4.25x / 4.17x standard fast (navi21 /
+//               series in cos). 4.22x / 4.15x standard fast (navi21 /
 //               gfx1100 loop-aware model), worst FLIP 0.048 (README).
 //   low       = an approximation of the reference: the 3-node rule (the
 //               same clipped ranges, 3 nodes for lists and curves, erf-exact

@@ -467,6 +467,20 @@ const F16_GAINS: &[(&str, &str, &str, F16Baseline)] = &[
         "navi21",
         F16Baseline::Fast,
     ),
+    // The visibility's view and light terms paired
+    // (weft_half_v_smith_ggx_correlated_newton_nl).
+    (
+        "standard",
+        "low.normal_map-off.sphere_map-off",
+        "navi21",
+        F16Baseline::OwnF32,
+    ),
+    (
+        "standard",
+        "low.normal_map-off.sphere_map-off",
+        "gfx1100",
+        F16Baseline::OwnF32,
+    ),
     // Each node's M/P blends and two transmissions paired.
     (
         "microcylinder",
