@@ -481,6 +481,15 @@ const F16_GAINS: &[(&str, &str, &str, F16Baseline)] = &[
         "gfx1100",
         F16Baseline::OwnF32,
     ),
+    // Its F and diffuse weights (vec3 colours) in half; the default `ward`
+    // lobe stays f32. Not listed for gfx1100: 533 against 534 instructions
+    // there, too close to call a gain.
+    (
+        "silk",
+        "low.aniso_model-ward.flow_map-off",
+        "navi21",
+        F16Baseline::OwnF32,
+    ),
     // Each node's M/P blends and two transmissions paired.
     (
         "microcylinder",
