@@ -126,6 +126,27 @@ WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
     return WeftSurface(_e6, _e7);
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2) {
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_fs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_2.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_fs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    return _e66;
+}
+
 vec2 eye_seed_uv(vec2 uv, vec3 v_1, float height) {
     return (uv + (height * vec2(v_1.x, -(v_1.y))));
 }
@@ -210,17 +231,17 @@ void main() {
     WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 color = vec3(0.0);
     EyeLookup look = EyeLookup(vec2(0.0), vec3(0.0), 0.0);
-    mat4x4 model = _group_2_binding_0_fs.model;
-    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
-    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    mat4x4 model_1 = _group_2_binding_0_fs.model;
+    mat3x3 model3_1 = mat3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
+    mat4x4 nm_1 = _group_2_binding_0_fs.normal_matrix;
+    mat3x3 normal3_1 = mat3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
     WeftSurface _e23 = weft_surface(in_1.world_position, in_1.world_normal);
     vec3 v_2 = _e23.v;
     vec3 n_2 = _e23.n;
     vec3 _e26 = weft_main_light_direction();
-    vec3 _e33 = weft_safe_normalize((transpose(model3_) * n_2), vec3(0.0, 0.0, 1.0));
-    vec3 _e40 = weft_safe_normalize((transpose(normal3_) * v_2), vec3(0.0, 0.0, 1.0));
-    vec3 _e46 = weft_safe_normalize((model3_ * vec3(0.0, 0.0, 1.0)), n_2);
+    vec3 _e33 = weft_safe_normalize((transpose(model3_1) * n_2), vec3(0.0, 0.0, 1.0));
+    vec3 _e40 = weft_safe_normalize((transpose(normal3_1) * v_2), vec3(0.0, 0.0, 1.0));
+    vec3 _e46 = weft_safe_normalize((model3_1 * vec3(0.0, 0.0, 1.0)), n_2);
     float _e49 = _group_1_binding_0_fs.backlight_dimming;
     float dimming = (1.0 - (clamp(_e49, 0.0, 1.0) * clamp(-(dot(_e46, _e26)), 0.0, 1.0)));
     vec3 _e57 = weft_main_light_radiance();

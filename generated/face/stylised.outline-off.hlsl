@@ -248,6 +248,30 @@ WeftLightGeometry weft_main_light_geometry(float3 n_1, float3 v_1)
     return weftlightgeometry;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_2.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float2 weft_transform_uv(float2 uv_1, float4 st)
 {
     return ((uv_1 * st.xy) + st.zw);
@@ -272,9 +296,9 @@ FaceLight face_light(float3 l_1)
 {
     FaceLight out_1 = (FaceLight)0;
 
-    float4x4 model = weft_object.model;
-    const float3 _e10 = weft_safe_normalize(model[2].xyz, float3(0.0, 0.0, 1.0));
-    const float3 _e17 = weft_safe_normalize(model[0].xyz, float3(1.0, 0.0, 0.0));
+    float4x4 model_1 = weft_object.model;
+    const float3 _e10 = weft_safe_normalize(model_1[2].xyz, float3(0.0, 0.0, 1.0));
+    const float3 _e17 = weft_safe_normalize(model_1[0].xyz, float3(1.0, 0.0, 0.0));
     const float3 _e22 = weft_safe_normalize(float3(l_1.x, 0.0, l_1.z), _e10);
     out_1.f_dot_l = ((dot(_e10, _e22) * -0.5) + 0.5);
     out_1.from_right = (dot(_e17, _e22) >= 0.0);
@@ -296,27 +320,10 @@ float face_sdf_shadow(float2 uv_2, FaceLight light, float soft)
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
 {
-    WeftVaryings out_ = (WeftVaryings)0;
-
-    float4x4 model_1 = weft_object.model;
-    float3x3 model3_ = float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world = mul(float4(in_.position, 1.0), model_1);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
-    out_.world_position = world.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+    const WeftVaryings _e1 = weft_forward_vertex(in_);
+    const WeftVaryings weftvaryings_1 = _e1;
+    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
+    return weftvaryings_1_;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0

@@ -225,6 +225,31 @@ WeftLightGeometry weft_main_light_geometry(
     return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_1, _e2)), metal::saturate(metal::dot(n_1, _e4)), metal::saturate(metal::dot(v_1, _e4))};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out;
+    return _e66;
+}
+
 metal::float2 weft_transform_uv(
     metal::float2 uv_1,
     metal::float4 st
@@ -258,9 +283,9 @@ FaceLight face_light(
     constant WeftObject& weft_object
 ) {
     FaceLight out_1 = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3 _e10 = weft_safe_normalize(model[2].xyz, metal::float3(0.0, 0.0, 1.0));
-    metal::float3 _e17 = weft_safe_normalize(model[0].xyz, metal::float3(1.0, 0.0, 0.0));
+    metal::float4x4 model_1 = weft_object.model;
+    metal::float3 _e10 = weft_safe_normalize(model_1[2].xyz, metal::float3(0.0, 0.0, 1.0));
+    metal::float3 _e17 = weft_safe_normalize(model_1[0].xyz, metal::float3(1.0, 0.0, 0.0));
     metal::float3 _e22 = weft_safe_normalize(metal::float3(l_1.x, 0.0, l_1.z), _e10);
     out_1.f_dot_l = (metal::dot(_e10, _e22) * -0.5) + 0.5;
     out_1.from_right = metal::dot(_e17, _e22) >= 0.0;
@@ -303,24 +328,8 @@ vertex vs_mainOutput vs_main(
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent, varyings.uv0_ };
-    WeftVaryings out = {};
-    metal::float4x4 model_1 = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model_1[0].xyz, model_1[1].xyz, model_1[2].xyz);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    metal::float4 world = model_1 * metal::float4(in.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
-    out.world_position = world.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    WeftVaryings _e66 = out;
-    const auto _tmp = _e66;
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    const auto _tmp = _e1;
     return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
 }
 

@@ -197,6 +197,27 @@ WeftLightGeometry weft_main_light_geometry(vec3 n_1, vec3 v_1) {
     return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_1, _e2), 0.0, 1.0), clamp(dot(n_1, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_3) {
+    WeftVaryings out_1 = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_fs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_fs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_3.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_fs.view_proj;
+    out_1.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_1.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_3.normal), vec3(0.0));
+    out_1.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_3.tangent.xyz), vec3(0.0));
+    out_1.world_tangent = vec4(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e66 = out_1;
+    return _e66;
+}
+
 vec2 weft_transform_uv(vec2 uv_1, vec4 st) {
     return ((uv_1 * st.xy) + st.zw);
 }
@@ -217,9 +238,9 @@ float skin_seed_specular(vec3 n_2, vec3 l, vec3 h, float roughness_3, float mask
 
 FaceLight face_light(vec3 l_1) {
     FaceLight out_2 = FaceLight(0.0, false);
-    mat4x4 model = _group_2_binding_0_fs.model;
-    vec3 _e10 = weft_safe_normalize(model[2].xyz, vec3(0.0, 0.0, 1.0));
-    vec3 _e17 = weft_safe_normalize(model[0].xyz, vec3(1.0, 0.0, 0.0));
+    mat4x4 model_1 = _group_2_binding_0_fs.model;
+    vec3 _e10 = weft_safe_normalize(model_1[2].xyz, vec3(0.0, 0.0, 1.0));
+    vec3 _e17 = weft_safe_normalize(model_1[0].xyz, vec3(1.0, 0.0, 0.0));
     vec3 _e22 = weft_safe_normalize(vec3(l_1.x, 0.0, l_1.z), _e10);
     out_2.f_dot_l = ((dot(_e10, _e22) * -0.5) + 0.5);
     out_2.from_right = (dot(_e17, _e22) >= 0.0);

@@ -246,6 +246,30 @@ WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
     return weftsurface;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_3)
+{
+    WeftVaryings out_1 = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_3.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_1.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_3.normal, normal3_), (0.0).xxx);
+    out_1.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_3.tangent.xyz, model3_), (0.0).xxx);
+    out_1.world_tangent = float4(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e66 = out_1;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
 {
     float3 t_in = tangent.xyz;
@@ -501,9 +525,9 @@ VertexOutput_vs_fringe_shadow vs_fringe_shadow(WeftFringeShadowVertex in_)
     WeftFringeShadowVaryings out_ = (WeftFringeShadowVaryings)0;
 
     float4x4 _e3 = weft_object.model;
-    float3 world = mul(float4(in_.position, 1.0), _e3).xyz;
+    float3 world_1 = mul(float4(in_.position, 1.0), _e3).xyz;
     float4x4 _e11 = weft_frame.view_proj;
-    float4 clip_ = mul(float4(world, 1.0), _e11);
+    float4 clip_ = mul(float4(world_1, 1.0), _e11);
     float4 _e17 = weft_frame.light_direction;
     float3 l_1 = _e17.xyz;
     float l_len = length(l_1);
@@ -511,7 +535,7 @@ VertexOutput_vs_fringe_shadow vs_fringe_shadow(WeftFringeShadowVertex in_)
     float _e32 = material.fringe_shadow_length;
     float length_world = max(_e32, 0.0);
     float4x4 _e37 = weft_frame.view_proj;
-    float4 pushed = mul(float4((world + (travel * length_world)), 1.0), _e37);
+    float4 pushed = mul(float4((world_1 + (travel * length_world)), 1.0), _e37);
     if ((clip_.w > 1e-6)) {
         local = (pushed.w > 1e-6);
     } else {
@@ -534,27 +558,10 @@ float4 fs_fringe_shadow() : SV_Target0
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 {
-    WeftVaryings out_1 = (WeftVaryings)0;
-
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world_1 = mul(float4(in_1.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_1.clip_position = mul(float4(world_1.xyz, 1.0), _e43);
-    out_1.world_position = world_1.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_1.normal, normal3_), (0.0).xxx);
-    out_1.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_1.tangent.xyz, model3_), (0.0).xxx);
-    out_1.world_tangent = float4(_e62, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e66 = out_1;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+    const WeftVaryings _e1 = weft_forward_vertex(in_1);
+    const WeftVaryings weftvaryings_1 = _e1;
+    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
+    return weftvaryings_1_;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0

@@ -206,6 +206,31 @@ WeftSurface weft_surface(
     return WeftSurface {_e6, _e7};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_3,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out_1 = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_3.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out_1.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_3.normal, metal::float3(0.0));
+    out_1.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_3.tangent.xyz, metal::float3(0.0));
+    out_1.world_tangent = metal::float4(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e66 = out_1;
+    return _e66;
+}
+
 metal::float3x3 weft_tangent_frame(
     metal::float3 n_2,
     metal::float4 tangent
@@ -512,11 +537,11 @@ vertex vs_outlineOutput vs_outline(
     bool local_1 = {};
     WeftOutlineVaryings out = {};
     metal::float4x4 _e3 = weft_object.model;
-    metal::float4 world = _e3 * metal::float4(in.position, 1.0);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3 normal = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal;
+    metal::float4 world_1 = _e3 * metal::float4(in.position, 1.0);
+    metal::float4x4 nm_1 = weft_object.normal_matrix;
+    metal::float3 normal = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz) * in.normal;
     metal::float4x4 _e22 = weft_frame.view_proj;
-    metal::float4 clip = _e22 * metal::float4(world.xyz, 1.0);
+    metal::float4 clip = _e22 * metal::float4(world_1.xyz, 1.0);
     metal::float4 _e29 = weft_frame.viewport;
     metal::float2 size = _e29.xy;
     metal::float4x4 _e33 = weft_frame.view_proj;
@@ -579,24 +604,8 @@ vertex vs_mainOutput vs_main(
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in_1 = { varyings_2.position, varyings_2.normal, varyings_2.tangent_1, varyings_2.uv0_2 };
-    WeftVaryings out_1 = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm_1 = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    metal::float4 world_1 = model * metal::float4(in_1.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out_1.clip_position = _e43 * metal::float4(world_1.xyz, 1.0);
-    out_1.world_position = world_1.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_1.normal, metal::float3(0.0));
-    out_1.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in_1.tangent.xyz, metal::float3(0.0));
-    out_1.world_tangent = metal::float4(_e62, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e66 = out_1;
-    const auto _tmp_1 = _e66;
+    WeftVaryings _e1 = weft_forward_vertex(in_1, weft_frame, weft_object);
+    const auto _tmp_1 = _e1;
     return vs_mainOutput { _tmp_1.clip_position, _tmp_1.world_position, _tmp_1.world_normal, _tmp_1.world_tangent, _tmp_1.uv0_ };
 }
 

@@ -180,6 +180,27 @@ WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
     return WeftSurface(_e6, _e7);
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_4) {
+    WeftVaryings out_2 = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_4.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_4.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_2.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_2.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_4.normal), vec3(0.0));
+    out_2.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_4.tangent.xyz), vec3(0.0));
+    out_2.world_tangent = vec4(_e62, bitangent_sign);
+    out_2.uv0_ = in_4.uv0_;
+    WeftVaryings _e66 = out_2;
+    return _e66;
+}
+
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 t_in = tangent.xyz;
     vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -383,9 +404,9 @@ void main() {
     bool local_2 = false;
     WeftFringeShadowVaryings out_1 = WeftFringeShadowVaryings(vec4(0.0));
     mat4x4 _e3 = _group_2_binding_0_vs.model;
-    vec3 world = (_e3 * vec4(in_1.position, 1.0)).xyz;
+    vec3 world_1 = (_e3 * vec4(in_1.position, 1.0)).xyz;
     mat4x4 _e11 = _group_0_binding_0_vs.view_proj;
-    vec4 clip = (_e11 * vec4(world, 1.0));
+    vec4 clip = (_e11 * vec4(world_1, 1.0));
     vec4 _e17 = _group_0_binding_0_vs.light_direction;
     vec3 l_1 = _e17.xyz;
     float l_len = length(l_1);
@@ -393,7 +414,7 @@ void main() {
     float _e32 = _group_1_binding_0_vs.fringe_shadow_length;
     float length_world = max(_e32, 0.0);
     mat4x4 _e37 = _group_0_binding_0_vs.view_proj;
-    vec4 pushed = (_e37 * vec4((world + (travel * length_world)), 1.0));
+    vec4 pushed = (_e37 * vec4((world_1 + (travel * length_world)), 1.0));
     if ((clip.w > 1e-6)) {
         local_2 = (pushed.w > 1e-6);
     } else {

@@ -220,6 +220,31 @@ WeftSurface weft_surface(
     return WeftSurface {_e6, _e7};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_4,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out_2 = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_4.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_4.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out_2.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out_2.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_4.normal, metal::float3(0.0));
+    out_2.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_4.tangent.xyz, metal::float3(0.0));
+    out_2.world_tangent = metal::float4(_e62, bitangent_sign);
+    out_2.uv0_ = in_4.uv0_;
+    WeftVaryings _e66 = out_2;
+    return _e66;
+}
+
 metal::float3x3 weft_tangent_frame(
     metal::float3 n_2,
     metal::float4 tangent
@@ -681,11 +706,11 @@ vertex vs_outlineOutput vs_outline(
     bool local_1 = {};
     WeftOutlineVaryings out = {};
     metal::float4x4 _e3 = weft_object.model;
-    metal::float4 world = _e3 * metal::float4(in.position, 1.0);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3 normal = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal;
+    metal::float4 world_1 = _e3 * metal::float4(in.position, 1.0);
+    metal::float4x4 nm_1 = weft_object.normal_matrix;
+    metal::float3 normal = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz) * in.normal;
     metal::float4x4 _e22 = weft_frame.view_proj;
-    metal::float4 clip = _e22 * metal::float4(world.xyz, 1.0);
+    metal::float4 clip = _e22 * metal::float4(world_1.xyz, 1.0);
     metal::float4 _e29 = weft_frame.viewport;
     metal::float2 size = _e29.xy;
     metal::float4x4 _e33 = weft_frame.view_proj;
@@ -745,9 +770,9 @@ vertex vs_fringe_shadowOutput vs_fringe_shadow(
     bool local_2 = {};
     WeftFringeShadowVaryings out_1 = {};
     metal::float4x4 _e3 = weft_object.model;
-    metal::float3 world_1 = (_e3 * metal::float4(in_1.position, 1.0)).xyz;
+    metal::float3 world_2 = (_e3 * metal::float4(in_1.position, 1.0)).xyz;
     metal::float4x4 _e11 = weft_frame.view_proj;
-    metal::float4 clip_1 = _e11 * metal::float4(world_1, 1.0);
+    metal::float4 clip_1 = _e11 * metal::float4(world_2, 1.0);
     metal::float4 _e17 = weft_frame.light_direction;
     metal::float3 l_1 = _e17.xyz;
     float l_len = metal::length(l_1);
@@ -755,7 +780,7 @@ vertex vs_fringe_shadowOutput vs_fringe_shadow(
     float _e32 = material.fringe_shadow_length;
     float length_world = metal::max(_e32, 0.0);
     metal::float4x4 _e37 = weft_frame.view_proj;
-    metal::float4 pushed = _e37 * metal::float4(world_1 + (travel * length_world), 1.0);
+    metal::float4 pushed = _e37 * metal::float4(world_2 + (travel * length_world), 1.0);
     if (clip_1.w > 0.000001) {
         local_2 = pushed.w > 0.000001;
     } else {
@@ -800,24 +825,8 @@ vertex vs_mainOutput vs_main(
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in_2 = { varyings_4.position, varyings_4.normal, varyings_4.tangent_1, varyings_4.uv0_2 };
-    WeftVaryings out_2 = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm_1 = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    metal::float4 world_2 = model * metal::float4(in_2.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out_2.clip_position = _e43 * metal::float4(world_2.xyz, 1.0);
-    out_2.world_position = world_2.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
-    out_2.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
-    out_2.world_tangent = metal::float4(_e62, bitangent_sign);
-    out_2.uv0_ = in_2.uv0_;
-    WeftVaryings _e66 = out_2;
-    const auto _tmp_2 = _e66;
+    WeftVaryings _e1 = weft_forward_vertex(in_2, weft_frame, weft_object);
+    const auto _tmp_2 = _e1;
     return vs_mainOutput { _tmp_2.clip_position, _tmp_2.world_position, _tmp_2.world_normal, _tmp_2.world_tangent, _tmp_2.uv0_ };
 }
 

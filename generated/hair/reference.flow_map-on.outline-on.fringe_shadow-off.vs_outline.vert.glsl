@@ -182,6 +182,27 @@ WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
     return WeftSurface(_e6, _e7);
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_3) {
+    WeftVaryings out_1 = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_3.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_1.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_1.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_3.normal), vec3(0.0));
+    out_1.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_3.tangent.xyz), vec3(0.0));
+    out_1.world_tangent = vec4(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e66 = out_1;
+    return _e66;
+}
+
 mat3x3 weft_tangent_frame(vec3 n_2, vec4 tangent) {
     vec3 t_in = tangent.xyz;
     vec3 t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -501,11 +522,11 @@ void main() {
     bool local_1 = false;
     WeftOutlineVaryings out_ = WeftOutlineVaryings(vec4(0.0));
     mat4x4 _e3 = _group_2_binding_0_vs.model;
-    vec4 world = (_e3 * vec4(in_.position, 1.0));
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    vec3 normal = (mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in_.normal);
+    vec4 world_1 = (_e3 * vec4(in_.position, 1.0));
+    mat4x4 nm_1 = _group_2_binding_0_vs.normal_matrix;
+    vec3 normal = (mat3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz) * in_.normal);
     mat4x4 _e22 = _group_0_binding_0_vs.view_proj;
-    vec4 clip = (_e22 * vec4(world.xyz, 1.0));
+    vec4 clip = (_e22 * vec4(world_1.xyz, 1.0));
     vec4 _e29 = _group_0_binding_0_vs.viewport;
     vec2 size = _e29.xy;
     mat4x4 _e33 = _group_0_binding_0_vs.view_proj;

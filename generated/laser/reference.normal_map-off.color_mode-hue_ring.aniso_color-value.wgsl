@@ -250,6 +250,28 @@ fn weft_main_light_geometry(n_4: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry
     return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_4, _e2)), saturate(dot(n_4, _e4)), saturate(dot(v_1, _e4)));
 }
 
+fn weft_forward_vertex(in_2: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_2.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
 fn weft_tangent_frame(n_5: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
     let t_proj = (t_in - (n_5 * dot(n_5, t_in)));
@@ -420,25 +442,8 @@ fn laser_film_reference(cos_theta: f32, d1_: f32, d2_: f32, f0_3: vec3<f32>) -> 
 
 @vertex 
 fn vs_main(in: WeftVertexInput) -> WeftVaryings {
-    var out: WeftVaryings;
-
-    let model = weft_object.model;
-    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
-    let nm = weft_object.normal_matrix;
-    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    let world = (model * vec4<f32>(in.position, 1f));
-    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
-    let _e43 = weft_frame.view_proj;
-    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
-    out.world_position = world.xyz;
-    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e55;
-    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    let _e66 = out;
-    return _e66;
+    let _e1 = weft_forward_vertex(in);
+    return _e1;
 }
 
 @fragment 

@@ -292,6 +292,30 @@ WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
     return weftlightgeometry;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_2.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float2 weft_transform_uv(float2 uv, float4 st)
 {
     return ((uv * st.xy) + st.zw);
@@ -332,27 +356,10 @@ float3 laser_seed_color(float cos_theta, float2 layer_offsets)
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_)
 {
-    WeftVaryings out_ = (WeftVaryings)0;
-
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world = mul(float4(in_.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
-    out_.world_position = world.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+    const WeftVaryings _e1 = weft_forward_vertex(in_);
+    const WeftVaryings weftvaryings_1 = _e1;
+    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
+    return weftvaryings_1_;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0

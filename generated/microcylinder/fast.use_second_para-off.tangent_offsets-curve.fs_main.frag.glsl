@@ -86,6 +86,25 @@ struct McFastSet {
     float eta2_;
     float t02_;
 };
+struct McFastConst {
+    vec4 shape;
+    vec4 curve;
+    vec2 steps;
+};
+struct MicrocylinderVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 thread1_shape;
+    vec4 thread1_curve;
+    vec2 thread1_steps;
+    vec4 thread2_shape;
+    vec4 thread2_curve;
+    vec2 thread2_steps;
+    vec2 mean_fresnel;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -139,6 +158,13 @@ layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 4) flat in vec4 _vs2fs_location4;
+layout(location = 5) flat in vec4 _vs2fs_location5;
+layout(location = 6) flat in vec2 _vs2fs_location6;
+layout(location = 7) flat in vec4 _vs2fs_location7;
+layout(location = 8) flat in vec4 _vs2fs_location8;
+layout(location = 9) flat in vec2 _vs2fs_location9;
+layout(location = 10) flat in vec2 _vs2fs_location10;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -283,7 +309,36 @@ float mc_schlick_t(float c_1) {
     return (1.0 - ((x2_1 * x2_1) * x_2));
 }
 
-McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
+vec4 mc_fast_shape(McThread th) {
+    float _e2 = weft_f0_from_ior(th.eta);
+    return vec4((1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1.0 - _e2) * (1.0 - _e2)));
+}
+
+float mc_fast_half_len(float sa, float sb) {
+    vec2 s_3 = vec2(mix(sa, sb, MC_GL2_T), mix(sa, sb, 0.7886751));
+    vec2 l = sqrt((vec2(1.0) + (s_3 * s_3)));
+    return (0.25 * (l.x + l.y));
+}
+
+float mc_fast_clip_step(float sa_1, float sb_1) {
+    float ds = (sb_1 - sa_1);
+    return (1.0 / ((abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds));
+}
+
+McFastConst mc_fast_const(McThread th_1, vec4 heights[9]) {
+    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
+    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
+    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
+    float _e41 = mc_fast_half_len(s0_1, s1_2);
+    float _e42 = mc_fast_half_len(s1_2, s2_2);
+    float total = (_e41 + _e42);
+    vec4 _e44 = mc_fast_shape(th_1);
+    float _e50 = mc_fast_clip_step(s0_1, s1_2);
+    float _e51 = mc_fast_clip_step(s1_2, s2_2);
+    return McFastConst(_e44, vec4(s0_1, s1_2, s2_2, (1.0 / max(total, 1e-6))), vec2(_e50, _e51));
+}
+
+McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, vec4 shape) {
     vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     float ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -296,16 +351,15 @@ McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
     float s_lo_1 = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
     float s_hi_1 = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    float _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo_1, -1000000.0, MC_FAST_BIG), clamp(s_hi_1, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), shape.x, shape.y, clamp(s_lo_1, -1000000.0, MC_FAST_BIG), clamp(s_hi_1, -1000000.0, MC_FAST_BIG), shape.z, shape.w);
 }
 
-McFastNode mc_fast_node(McFastSet q, float ca, float sa) {
+McFastNode mc_fast_node(McFastSet q, float ca, float sa_2) {
     bool local_2 = false;
-    float si = ((q.wi.x * ca) + (q.wi.z * sa));
-    float sr = ((q.wr.x * ca) + (q.wr.z * sa));
-    float ni = ((q.wi.z * ca) - (q.wi.x * sa));
-    float nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    float si = ((q.wi.x * ca) + (q.wi.z * sa_2));
+    float sr = ((q.wr.x * ca) + (q.wr.z * sa_2));
+    float ni = ((q.wi.z * ca) - (q.wi.x * sa_2));
+    float nr = ((q.wr.z * ca) - (q.wr.x * sa_2));
     float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
@@ -339,31 +393,23 @@ vec2 mc_fast_volume2_(vec2 x_1, float inv_gamma) {
     return (exp(((-0.5 * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma));
 }
 
-vec2 mc_fast_clip(float s_lo, float s_hi, float sa_1, float sb, float ta) {
-    float ds = (sb - sa_1);
-    float inv = (1.0 / ((abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds));
-    float u0_ = ((s_lo - sa_1) * inv);
-    float u1_ = ((s_hi - sa_1) * inv);
+vec2 mc_fast_clip(float s_lo, float s_hi, float sa_3, float inv, float ta) {
+    float u0_ = ((s_lo - sa_3) * inv);
+    float u1_ = ((s_hi - sa_3) * inv);
     vec2 u_1 = clamp(vec2(min(u0_, u1_), max(u0_, u1_)), vec2(0.0), vec2(1.0));
     return ((u_1.x < u_1.y) ? (vec2(ta) + (0.5 * u_1)) : vec2(2.0, -1.0));
-}
-
-float mc_fast_half_len(float sa_2, float sb_1) {
-    vec2 s_3 = vec2(mix(sa_2, sb_1, MC_GL2_T), mix(sa_2, sb_1, 0.7886751));
-    vec2 l = sqrt((vec2(1.0) + (s_3 * s_3)));
-    return (0.25 * (l.x + l.y));
 }
 
 vec3[2] mc_normal3_(vec3 t_1) {
     vec3 e_1 = exp(((-0.5 * t_1) * t_1));
     vec3 z = (abs(t_1) * 0.70710677);
-    vec3 k = (vec3(1.0) / (vec3(1.0) + (0.3275911 * z)));
-    vec3 poly = (k * (vec3(0.2548296) + (k * (vec3(-0.28449672) + (k * (vec3(1.4214138) + (k * (vec3(-1.4531521) + (k * 1.0614054)))))))));
+    vec3 k_2 = (vec3(1.0) / (vec3(1.0) + (0.3275911 * z)));
+    vec3 poly = (k_2 * (vec3(0.2548296) + (k_2 * (vec3(-0.28449672) + (k_2 * (vec3(1.4214138) + (k_2 * (vec3(-1.4531521) + (k_2 * 1.0614054)))))))));
     vec3 half_ = (vec3(0.5) - ((0.5 * poly) * e_1));
     return vec3[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t_1, vec3(0.0))));
 }
 
-vec4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, vec2 r, bool jacobi) {
+vec4 mc_fast_rule2_(McFastSet q_1, McThread th_2, McFastNode n0_, McFastNode n1_, vec2 r, bool jacobi) {
     float e_2 = (jacobi ? MC_GJ2_E : MC_GL2_E);
     float d_1 = (n1_.x - n0_.x);
     vec3 xe = vec3((n0_.x - (e_2 * d_1)), (0.5 * (n0_.x + n1_.x)), (n1_.x + (e_2 * d_1)));
@@ -377,20 +423,20 @@ vec4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_
     vec2 s_4 = (r * vec2(n0_.s, n1_.s));
     vec2 v_1 = (r * vec2(n0_.v, n1_.v));
     float surface = dot(gs, s_4);
-    float volume = (((1.0 - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
-    return vec4((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2(n0_.p, n1_.p)));
+    float volume = (((1.0 - th_2.kd) * dot(_e62, v_1)) + (th_2.kd * (v_1.x + v_1.y)));
+    return vec4((vec3(surface) + (volume * th_2.albedo)), dot(r, vec2(n0_.p, n1_.p)));
 }
 
-vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec4 heights[9]) {
+vec4 mc_thread_curve_fast_with(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, McFastConst k) {
     bool local_3 = false;
-    McFastSet _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
-    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
-    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
-    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
-    vec2 _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0.0);
-    vec2 _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5);
-    float t0_ = min(_e48.x, _e52.x);
-    float t1_1 = max(max(_e48.y, _e52.y), t0_);
+    McFastSet _e6 = mc_fast_setup(fr_1, wi_1, wr_1, k.shape);
+    float s0_2 = k.curve.x;
+    float s1_3 = k.curve.y;
+    float s2_3 = k.curve.z;
+    vec2 _e18 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s0_2, k.steps.x, 0.0);
+    vec2 _e24 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s1_3, k.steps.y, 0.5);
+    float t0_ = min(_e18.x, _e24.x);
+    float t1_1 = max(max(_e18.y, _e24.y), t0_);
     float w = (t1_1 - t0_);
     if ((t0_ > 0.0001)) {
         local_3 = (t1_1 < 0.9999);
@@ -400,19 +446,16 @@ vec4 mc_thread_curve_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_2, vec
     bool bump = local_3;
     float tn = (bump ? MC_GJ2_T : MC_GL2_T);
     vec2 t_4 = vec2((t0_ + (tn * w)), (t1_1 - (tn * w)));
-    float _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    float _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    vec2 sl = vec2(_e78, _e80);
+    float _e50 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.x);
+    float _e52 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.y);
+    vec2 sl = vec2(_e50, _e52);
     vec2 l2_ = (vec2(1.0) + (sl * sl));
     vec2 inv_len = inversesqrt(l2_);
-    McFastNode _e91 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
-    McFastNode _e96 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    McFastNode _e63 = mc_fast_node(_e6, inv_len.x, (sl.x * inv_len.x));
+    McFastNode _e68 = mc_fast_node(_e6, inv_len.y, (sl.y * inv_len.y));
     vec2 r_2 = (((bump ? MC_GJ2_W : 0.5) * w) * (l2_ * inv_len));
-    float _e103 = mc_fast_half_len(s0_1, s1_2);
-    float _e104 = mc_fast_half_len(s1_2, s2_2);
-    float total = (_e103 + _e104);
-    vec4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
-    return (_e106 / vec4(max(total, 1e-6)));
+    vec4 _e75 = mc_fast_rule2_(_e6, th_3, _e63, _e68, r_2, bump);
+    return (_e75 * k.curve.w);
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
@@ -424,8 +467,20 @@ float microcylinder_mean_fresnel(float eta) {
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
+McFastConst microcylinder_fast_const(McThread th_4, vec4 heights_1[9]) {
+    McFastConst k_1 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
+    {
+        {
+            McFastConst _e10 = mc_fast_const(th_4, heights_1);
+            k_1 = _e10;
+        }
+    }
+    McFastConst _e11 = k_1;
+    return _e11;
+}
+
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    MicrocylinderVaryings in_1 = MicrocylinderVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9, _vs2fs_location10);
     vec4 s1_ = vec4(0.0);
     vec4 s2_ = vec4(0.0);
     vec4 _e4 = _group_1_binding_0_fs.albedo_map_st;
@@ -463,25 +518,22 @@ void main() {
     {
         {
             {
-                vec4 _e91[9] = _group_1_binding_0_fs.thread1_curve;
-                vec4 _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
-                s1_ = _e92;
+                vec4 _e93 = mc_thread_curve_fast_with(warp, _e80, _e79, _e29, McFastConst(in_1.thread1_shape, in_1.thread1_curve, in_1.thread1_steps));
+                s1_ = _e93;
             }
         }
     }
-    vec4 _e93 = s1_;
-    vec4 _e94 = s2_;
-    vec3 _e97 = mc_combine(_e93, _e94, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
-    vec3 _e98 = weft_main_light_radiance();
-    vec3 direct = (_e97 * _e98);
-    float _e102 = microcylinder_mean_fresnel(_e29.eta);
-    vec3 amb1_ = (_e29.albedo + vec3(_e102));
-    float _e107 = microcylinder_mean_fresnel(_e46.eta);
-    vec3 amb2_ = (_e46.albedo + vec3(_e107));
+    vec4 _e94 = s1_;
+    vec4 _e95 = s2_;
+    vec3 _e98 = mc_combine(_e94, _e95, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    vec3 _e99 = weft_main_light_radiance();
+    vec3 direct = (_e98 * _e99);
+    vec3 amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    vec3 amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     float cov = (a1_1 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
-    vec3 _e121 = weft_sh_irradiance(n_3);
-    vec3 ambient = (_e121 * ambient_albedo);
+    vec3 _e122 = weft_sh_irradiance(n_3);
+    vec3 ambient = (_e122 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

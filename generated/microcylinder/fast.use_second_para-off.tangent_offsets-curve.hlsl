@@ -116,6 +116,29 @@ struct McFastSet {
     int _end_pad_2;
 };
 
+struct McFastConst {
+    float4 shape;
+    float4 curve;
+    float2 steps;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct MicrocylinderVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -168,11 +191,18 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 #define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> albedo_map : register(t3, space1);
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_microcylinder {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
     float4 clip_position : SV_Position;
 };
 
@@ -181,6 +211,13 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
+    nointerpolation float4 thread1_shape_1 : LOC4;
+    nointerpolation float4 thread1_curve_1 : LOC5;
+    nointerpolation float2 thread1_steps_1 : LOC6;
+    nointerpolation float4 thread2_shape_1 : LOC7;
+    nointerpolation float4 thread2_curve_1 : LOC8;
+    nointerpolation float2 thread2_steps_1 : LOC9;
+    nointerpolation float2 mean_fresnel_1 : LOC10;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -268,6 +305,30 @@ WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
     const float3 _e7 = weft_safe_normalize(world_normal, _e6);
     const WeftSurface weftsurface = ConstructWeftSurface(_e6, _e7);
     return weftsurface;
+}
+
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_2.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
 }
 
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
@@ -358,6 +419,48 @@ float mc_schlick_t(float c_1)
     return (1.0 - ((x2_1 * x2_1) * x_2));
 }
 
+float4 mc_fast_shape(McThread th)
+{
+    const float _e2 = weft_f0_from_ior(th.eta);
+    return float4((1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1.0 - _e2) * (1.0 - _e2)));
+}
+
+float mc_fast_half_len(float sa, float sb)
+{
+    float2 s_3 = float2(lerp(sa, sb, MC_GL2_T), lerp(sa, sb, 0.7886751));
+    float2 l = sqrt(((1.0).xx + (s_3 * s_3)));
+    return (0.25 * (l.x + l.y));
+}
+
+float mc_fast_clip_step(float sa_1, float sb_1)
+{
+    float ds = (sb_1 - sa_1);
+    return (1.0 / ((abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds));
+}
+
+McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
+    McFastConst ret = (McFastConst)0;
+    ret.shape = arg0;
+    ret.curve = arg1;
+    ret.steps = arg2;
+    return ret;
+}
+
+McFastConst mc_fast_const(McThread th_1, float4 heights[9])
+{
+    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
+    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
+    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
+    const float _e41 = mc_fast_half_len(s0_1, s1_2);
+    const float _e42 = mc_fast_half_len(s1_2, s2_2);
+    float total = (_e41 + _e42);
+    const float4 _e44 = mc_fast_shape(th_1);
+    const float _e50 = mc_fast_clip_step(s0_1, s1_2);
+    const float _e51 = mc_fast_clip_step(s1_2, s2_2);
+    const McFastConst mcfastconst = ConstructMcFastConst(_e44, float4(s0_1, s1_2, s2_2, (1.0 / max(total, 1e-6))), float2(_e50, _e51));
+    return mcfastconst;
+}
+
 McFastSet ConstructMcFastSet(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11) {
     McFastSet ret = (McFastSet)0;
     ret.wi = arg0;
@@ -375,7 +478,7 @@ McFastSet ConstructMcFastSet(float3 arg0, float3 arg1, float arg2, float arg3, f
     return ret;
 }
 
-McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, McThread th)
+McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, float4 shape)
 {
     float3 li = float3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     float3 lr = float3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
@@ -389,8 +492,7 @@ McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, McThread th)
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
     float s_lo_1 = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
     float s_hi_1 = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    const float _e98 = weft_f0_from_ior(th.eta);
-    const McFastSet mcfastset = ConstructMcFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo_1, -1000000.0, MC_FAST_BIG), clamp(s_hi_1, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
+    const McFastSet mcfastset = ConstructMcFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), shape.x, shape.y, clamp(s_lo_1, -1000000.0, MC_FAST_BIG), clamp(s_hi_1, -1000000.0, MC_FAST_BIG), shape.z, shape.w);
     return mcfastset;
 }
 
@@ -403,14 +505,14 @@ McFastNode ConstructMcFastNode(float arg0, float arg1, float arg2, float arg3) {
     return ret;
 }
 
-McFastNode mc_fast_node(McFastSet q, float ca, float sa)
+McFastNode mc_fast_node(McFastSet q, float ca, float sa_2)
 {
     bool local_2 = (bool)0;
 
-    float si = ((q.wi.x * ca) + (q.wi.z * sa));
-    float sr = ((q.wr.x * ca) + (q.wr.z * sa));
-    float ni = ((q.wi.z * ca) - (q.wi.x * sa));
-    float nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    float si = ((q.wi.x * ca) + (q.wi.z * sa_2));
+    float sr = ((q.wr.x * ca) + (q.wr.z * sa_2));
+    float ni = ((q.wi.z * ca) - (q.wi.x * sa_2));
+    float nr = ((q.wr.z * ca) - (q.wr.x * sa_2));
     float ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     float cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if ((min(ci2_, cr2_) >= MC_MIN_PROJ2_)) {
@@ -446,21 +548,12 @@ float2 mc_fast_volume2_(float2 x_1, float inv_gamma)
     return (exp(((-0.5 * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma));
 }
 
-float2 mc_fast_clip(float s_lo, float s_hi, float sa_1, float sb, float ta)
+float2 mc_fast_clip(float s_lo, float s_hi, float sa_3, float inv, float ta)
 {
-    float ds = (sb - sa_1);
-    float inv = (1.0 / ((abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds));
-    float u0_ = ((s_lo - sa_1) * inv);
-    float u1_ = ((s_hi - sa_1) * inv);
+    float u0_ = ((s_lo - sa_3) * inv);
+    float u1_ = ((s_hi - sa_3) * inv);
     float2 u_1 = saturate(float2(min(u0_, u1_), max(u0_, u1_)));
     return ((u_1.x < u_1.y) ? ((ta).xx + (0.5 * u_1)) : float2(2.0, -1.0));
-}
-
-float mc_fast_half_len(float sa_2, float sb_1)
-{
-    float2 s_3 = float2(lerp(sa_2, sb_1, MC_GL2_T), lerp(sa_2, sb_1, 0.7886751));
-    float2 l = sqrt(((1.0).xx + (s_3 * s_3)));
-    return (0.25 * (l.x + l.y));
 }
 
 typedef float3 ret_Constructarray2_float3_[2];
@@ -474,14 +567,14 @@ ret_mc_normal3_ mc_normal3_(float3 t_1)
 {
     float3 e_1 = exp(((-0.5 * t_1) * t_1));
     float3 z = (abs(t_1) * 0.70710677);
-    float3 k = ((1.0).xxx / ((1.0).xxx + (0.3275911 * z)));
-    float3 poly = (k * ((0.2548296).xxx + (k * ((-0.28449672).xxx + (k * ((1.4214138).xxx + (k * ((-1.4531521).xxx + (k * 1.0614054)))))))));
+    float3 k_2 = ((1.0).xxx / ((1.0).xxx + (0.3275911 * z)));
+    float3 poly = (k_2 * ((0.2548296).xxx + (k_2 * ((-0.28449672).xxx + (k_2 * ((1.4214138).xxx + (k_2 * ((-1.4531521).xxx + (k_2 * 1.0614054)))))))));
     float3 half_ = ((0.5).xxx - ((0.5 * poly) * e_1));
     const float3 _e46 = weft_select3_f32bit((t_1 >= (0.0).xxx), half_, -(half_));
     return Constructarray2_float3_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
 }
 
-float4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n1_, float2 r, bool jacobi)
+float4 mc_fast_rule2_(McFastSet q_1, McThread th_2, McFastNode n0_, McFastNode n1_, float2 r, bool jacobi)
 {
     float e_2 = (jacobi ? MC_GJ2_E : MC_GL2_E);
     float d_1 = (n1_.x - n0_.x);
@@ -496,22 +589,22 @@ float4 mc_fast_rule2_(McFastSet q_1, McThread th_1, McFastNode n0_, McFastNode n
     float2 s_4 = (r * float2(n0_.s, n1_.s));
     float2 v_1 = (r * float2(n0_.v, n1_.v));
     float surface = dot(gs, s_4);
-    float volume = (((1.0 - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
-    return float4(((surface).xxx + (volume * th_1.albedo)), dot(r, float2(n0_.p, n1_.p)));
+    float volume = (((1.0 - th_2.kd) * dot(_e62, v_1)) + (th_2.kd * (v_1.x + v_1.y)));
+    return float4(((surface).xxx + (volume * th_2.albedo)), dot(r, float2(n0_.p, n1_.p)));
 }
 
-float4 mc_thread_curve_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_2, float4 heights[9])
+float4 mc_thread_curve_fast_with(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, McFastConst k)
 {
     bool local_3 = (bool)0;
 
-    const McFastSet _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
-    float s0_1 = (32.0 * (((-1.5 * heights[0].x) + (2.0 * heights[0].y)) - (0.5 * heights[0].z)));
-    float s1_2 = ((0.5 * 32.0) * (heights[4].y - heights[3].w));
-    float s2_2 = (32.0 * (((1.5 * heights[8].x) - (2.0 * heights[7].w)) + (0.5 * heights[7].z)));
-    const float2 _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0.0);
-    const float2 _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5);
-    float t0_ = min(_e48.x, _e52.x);
-    float t1_1 = max(max(_e48.y, _e52.y), t0_);
+    const McFastSet _e6 = mc_fast_setup(fr_1, wi_1, wr_1, k.shape);
+    float s0_2 = k.curve.x;
+    float s1_3 = k.curve.y;
+    float s2_3 = k.curve.z;
+    const float2 _e18 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s0_2, k.steps.x, 0.0);
+    const float2 _e24 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s1_3, k.steps.y, 0.5);
+    float t0_ = min(_e18.x, _e24.x);
+    float t1_1 = max(max(_e18.y, _e24.y), t0_);
     float w = (t1_1 - t0_);
     if ((t0_ > 0.0001)) {
         local_3 = (t1_1 < 0.9999);
@@ -521,19 +614,16 @@ float4 mc_thread_curve_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_
     bool bump = local_3;
     float tn = (bump ? MC_GJ2_T : MC_GL2_T);
     float2 t_4 = float2((t0_ + (tn * w)), (t1_1 - (tn * w)));
-    const float _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    const float _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    float2 sl = float2(_e78, _e80);
+    const float _e50 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.x);
+    const float _e52 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.y);
+    float2 sl = float2(_e50, _e52);
     float2 l2_ = ((1.0).xx + (sl * sl));
     float2 inv_len = rsqrt(l2_);
-    const McFastNode _e91 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
-    const McFastNode _e96 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    const McFastNode _e63 = mc_fast_node(_e6, inv_len.x, (sl.x * inv_len.x));
+    const McFastNode _e68 = mc_fast_node(_e6, inv_len.y, (sl.y * inv_len.y));
     float2 r_2 = (((bump ? MC_GJ2_W : 0.5) * w) * (l2_ * inv_len));
-    const float _e103 = mc_fast_half_len(s0_1, s1_2);
-    const float _e104 = mc_fast_half_len(s1_2, s2_2);
-    float total = (_e103 + _e104);
-    const float4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
-    return (_e106 / (max(total, 1e-6)).xxxx);
+    const float4 _e75 = mc_fast_rule2_(_e6, th_3, _e63, _e68, r_2, bump);
+    return (_e75 * k.curve.w);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -558,29 +648,65 @@ float microcylinder_mean_fresnel(float eta)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_)
+McFastConst microcylinder_fast_const(McThread th_4, float4 heights_1[9])
 {
-    WeftVaryings out_ = (WeftVaryings)0;
+    McFastConst k_1 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
 
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world = mul(float4(in_.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
-    out_.world_position = world.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+    {
+        {
+            const McFastConst _e10 = mc_fast_const(th_4, heights_1);
+            k_1 = _e10;
+        }
+    }
+    McFastConst _e11 = k_1;
+    const McFastConst mcfastconst_1 = _e11;
+    return mcfastconst_1;
+}
+
+MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float2 arg7, float4 arg8, float4 arg9, float2 arg10, float2 arg11) {
+    MicrocylinderVaryings ret = (MicrocylinderVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.thread1_shape = arg5;
+    ret.thread1_curve = arg6;
+    ret.thread1_steps = arg7;
+    ret.thread2_shape = arg8;
+    ret.thread2_curve = arg9;
+    ret.thread2_steps = arg10;
+    ret.mean_fresnel = arg11;
+    return ret;
+}
+
+VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
+{
+    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+
+    const WeftVaryings _e1 = weft_forward_vertex(in_);
+    float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    const McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, (1.0).xxx);
+    float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    const McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, (1.0).xxx);
+    float4 _e42[9] = material.thread1_curve;
+    const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    float4 _e61 = k2_.shape;
+    float4 _e63 = k2_.curve;
+    float2 _e65 = k2_.steps;
+    const float _e67 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e69 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, float2(_e67, _e69));
+    const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
+    return microcylindervaryings_1;
 }
 
 McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
@@ -593,7 +719,7 @@ McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    MicrocylinderVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1, fragmentinput_fs_main.thread1_shape_1, fragmentinput_fs_main.thread1_curve_1, fragmentinput_fs_main.thread1_steps_1, fragmentinput_fs_main.thread2_shape_1, fragmentinput_fs_main.thread2_curve_1, fragmentinput_fs_main.thread2_steps_1, fragmentinput_fs_main.mean_fresnel_1 };
     float4 s1_ = (0.0).xxxx;
     float4 s2_ = (0.0).xxxx;
 
@@ -632,25 +758,22 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         {
             {
-                float4 _e91[9] = material.thread1_curve;
-                const float4 _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
-                s1_ = _e92;
+                const float4 _e93 = mc_thread_curve_fast_with(warp, _e80, _e79, _e29, ConstructMcFastConst(in_1.thread1_shape, in_1.thread1_curve, in_1.thread1_steps));
+                s1_ = _e93;
             }
         }
     }
-    float4 _e93 = s1_;
-    float4 _e94 = s2_;
-    const float3 _e97 = mc_combine(_e93, _e94, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
-    const float3 _e98 = weft_main_light_radiance();
-    float3 direct = (_e97 * _e98);
-    const float _e102 = microcylinder_mean_fresnel(_e29.eta);
-    float3 amb1_ = (_e29.albedo + (_e102).xxx);
-    const float _e107 = microcylinder_mean_fresnel(_e46.eta);
-    float3 amb2_ = (_e46.albedo + (_e107).xxx);
+    float4 _e94 = s1_;
+    float4 _e95 = s2_;
+    const float3 _e98 = mc_combine(_e94, _e95, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    const float3 _e99 = weft_main_light_radiance();
+    float3 direct = (_e98 * _e99);
+    float3 amb1_ = (_e29.albedo + (in_1.mean_fresnel.x).xxx);
+    float3 amb2_ = (_e46.albedo + (in_1.mean_fresnel.y).xxx);
     float cov = (a1_1 + a2_1);
     float3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / (max(cov, 0.0001)).xxx) : amb1_);
-    const float3 _e121 = weft_sh_irradiance(n_3);
-    float3 ambient = (_e121 * ambient_albedo);
+    const float3 _e122 = weft_sh_irradiance(n_3);
+    float3 ambient = (_e122 * ambient_albedo);
     float3 radiance = clamp(((direct + ambient) * brightness), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

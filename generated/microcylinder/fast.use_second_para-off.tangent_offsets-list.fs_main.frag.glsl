@@ -86,6 +86,25 @@ struct McFastSet {
     float eta2_;
     float t02_;
 };
+struct McFastConst {
+    vec4 shape;
+    vec4 curve;
+    vec2 steps;
+};
+struct MicrocylinderVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 thread1_shape;
+    vec4 thread1_curve;
+    vec2 thread1_steps;
+    vec4 thread2_shape;
+    vec4 thread2_curve;
+    vec2 thread2_steps;
+    vec2 mean_fresnel;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -139,6 +158,13 @@ layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 4) flat in vec4 _vs2fs_location4;
+layout(location = 5) flat in vec4 _vs2fs_location5;
+layout(location = 6) flat in vec2 _vs2fs_location6;
+layout(location = 7) flat in vec4 _vs2fs_location7;
+layout(location = 8) flat in vec4 _vs2fs_location8;
+layout(location = 9) flat in vec2 _vs2fs_location9;
+layout(location = 10) flat in vec2 _vs2fs_location10;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -251,8 +277,8 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float 
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
-    vec4 k_5 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k_5 * (vec4(0.2548296) + (k_5 * (vec4(-0.28449672) + (k_5 * (vec4(1.4214138) + (k_5 * (vec4(-1.4531521) + (k_5 * 1.0614054)))))))));
+    vec4 k_6 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k_6 * (vec4(0.2548296) + (k_6 * (vec4(-0.28449672) + (k_6 * (vec4(1.4214138) + (k_6 * (vec4(-1.4531521) + (k_6 * 1.0614054)))))))));
     vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
     return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
 }
@@ -336,7 +362,12 @@ float mc_schlick_t(float c_1) {
     return (1.0 - ((x2_1 * x2_1) * x_2));
 }
 
-McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
+vec4 mc_fast_shape(McThread th) {
+    float _e2 = weft_f0_from_ior(th.eta);
+    return vec4((1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1.0 - _e2) * (1.0 - _e2)));
+}
+
+McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, vec4 shape) {
     vec3 li = vec3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     vec3 lr = vec3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     float ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -349,8 +380,7 @@ McFastSet mc_fast_setup(McFrame fr, vec3 wi, vec3 wr, McThread th) {
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
     float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
     float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    float _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), shape.x, shape.y, clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), shape.z, shape.w);
 }
 
 McFastNode mc_fast_node(McFastSet q, float ca, float sa) {
@@ -420,45 +450,45 @@ vec4 mc_fast_segment(McFastSet q_2, McThread th_2, float a0_, float a1_1, float 
     return _e47;
 }
 
-vec4 mc_thread_list_fast(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 offsets_a_4, vec4 offsets_b_4, int count) {
+vec4 mc_thread_list_fast_with(McFrame fr_1, vec3 wi_1, vec3 wr_1, McThread th_3, vec4 shape_1, vec4 offsets_a_4, vec4 offsets_b_4, int count) {
     vec4 acc = vec4(0.0);
     int k_4 = 0;
     int h_2 = 0;
     int i = 0;
     int n_6 = min(max(count, 1), MC_MAX_OFFSETS);
-    McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
-    float lo_s_1 = atan(_e10.s_lo);
-    float hi_s_1 = atan(_e10.s_hi);
+    McFastSet _e11 = mc_fast_setup(fr_1, wi_1, wr_1, shape_1);
+    float lo_s_1 = atan(_e11.s_lo);
+    float hi_s_1 = atan(_e11.s_hi);
     int segments = max((n_6 - 1), 1);
-    int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
+    int _e20 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e47 = i;
-            i = (_e47 + 1);
+            int _e48 = i;
+            i = (_e48 + 1);
         }
         loop_init = false;
-        int _e29 = i;
-        if ((_e29 < _e19)) {
+        int _e30 = i;
+        if ((_e30 < _e20)) {
         } else {
             break;
         }
         {
-            int _e31 = k_4;
-            int _e32 = h_2;
-            vec3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
-            vec4 _e34 = acc;
-            vec4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
-            acc = (_e34 + (_e37 * _e33.z));
-            int _e41 = k_4;
-            int _e42 = h_2;
-            ivec2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
-            k_4 = _e43.x;
-            h_2 = _e43.y;
+            int _e32 = k_4;
+            int _e33 = h_2;
+            vec3 _e34 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e32, _e33);
+            vec4 _e35 = acc;
+            vec4 _e38 = mc_fast_segment(_e11, th_3, _e34.x, _e34.y, lo_s_1, hi_s_1);
+            acc = (_e35 + (_e38 * _e34.z));
+            int _e42 = k_4;
+            int _e43 = h_2;
+            ivec2 _e44 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e42, _e43);
+            k_4 = _e44.x;
+            h_2 = _e44.y;
         }
     }
-    vec4 _e49 = acc;
-    return (_e49 / vec4(float(segments)));
+    vec4 _e50 = acc;
+    return (_e50 / vec4(float(segments)));
 }
 
 McThread microcylinder_thread(vec3 color, float ior_1, float isotropy, float gamma_s_deg, float gamma_v_deg, vec3 tint) {
@@ -470,8 +500,20 @@ float microcylinder_mean_fresnel(float eta) {
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
+McFastConst microcylinder_fast_const(McThread th_4, vec4 heights[9]) {
+    McFastConst k_5 = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
+    {
+        {
+            vec4 _e11 = mc_fast_shape(th_4);
+            k_5.shape = _e11;
+        }
+    }
+    McFastConst _e12 = k_5;
+    return _e12;
+}
+
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    MicrocylinderVaryings in_1 = MicrocylinderVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9, _vs2fs_location10);
     vec4 s1_ = vec4(0.0);
     vec4 s2_ = vec4(0.0);
     vec4 _e4 = _group_1_binding_0_fs.albedo_map_st;
@@ -509,27 +551,25 @@ void main() {
     {
         {
             {
-                vec4 _e91 = _group_1_binding_0_fs.thread1_offsets_a;
-                vec4 _e94 = _group_1_binding_0_fs.thread1_offsets_b;
-                int _e97 = _group_1_binding_0_fs.thread1_offset_count;
-                vec4 _e98 = mc_thread_list_fast(warp, _e80, _e79, _e29, _e91, _e94, _e97);
-                s1_ = _e98;
+                vec4 _e92 = _group_1_binding_0_fs.thread1_offsets_a;
+                vec4 _e95 = _group_1_binding_0_fs.thread1_offsets_b;
+                int _e98 = _group_1_binding_0_fs.thread1_offset_count;
+                vec4 _e99 = mc_thread_list_fast_with(warp, _e80, _e79, _e29, in_1.thread1_shape, _e92, _e95, _e98);
+                s1_ = _e99;
             }
         }
     }
-    vec4 _e99 = s1_;
-    vec4 _e100 = s2_;
-    vec3 _e103 = mc_combine(_e99, _e100, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
-    vec3 _e104 = weft_main_light_radiance();
-    vec3 direct = (_e103 * _e104);
-    float _e108 = microcylinder_mean_fresnel(_e29.eta);
-    vec3 amb1_ = (_e29.albedo + vec3(_e108));
-    float _e113 = microcylinder_mean_fresnel(_e46.eta);
-    vec3 amb2_ = (_e46.albedo + vec3(_e113));
+    vec4 _e100 = s1_;
+    vec4 _e101 = s2_;
+    vec3 _e104 = mc_combine(_e100, _e101, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
+    vec3 _e105 = weft_main_light_radiance();
+    vec3 direct = (_e104 * _e105);
+    vec3 amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    vec3 amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     float cov = (a1_2 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
-    vec3 _e127 = weft_sh_irradiance(n_7);
-    vec3 ambient = (_e127 * ambient_albedo);
+    vec3 _e128 = weft_sh_irradiance(n_7);
+    vec3 ambient = (_e128 * ambient_albedo);
     vec3 radiance = clamp(((direct + ambient) * brightness), vec3(0.0), vec3(65504.0));
     _fs2p_location0 = vec4(radiance, 1.0);
     return;

@@ -116,6 +116,29 @@ struct McFastSet {
     int _end_pad_2;
 };
 
+struct McFastConst {
+    float4 shape;
+    float4 curve;
+    float2 steps;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct MicrocylinderVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -168,11 +191,18 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 #define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> albedo_map : register(t3, space1);
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_microcylinder {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
     float4 clip_position : SV_Position;
 };
 
@@ -181,6 +211,13 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
+    nointerpolation float4 thread1_shape_1 : LOC4;
+    nointerpolation float4 thread1_curve_1 : LOC5;
+    nointerpolation float2 thread1_steps_1 : LOC6;
+    nointerpolation float4 thread2_shape_1 : LOC7;
+    nointerpolation float4 thread2_curve_1 : LOC8;
+    nointerpolation float2 thread2_steps_1 : LOC9;
+    nointerpolation float2 mean_fresnel_1 : LOC10;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -285,6 +322,30 @@ WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
     return weftsurface;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_2.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
 {
     float3 t_in = tangent.xyz;
@@ -344,8 +405,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
 {
     float4 e_1 = exp(((-0.5 * t) * t));
     float4 z = (abs(t) * 0.70710677);
-    float4 k_5 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
-    float4 poly = (k_5 * ((0.2548296).xxxx + (k_5 * ((-0.28449672).xxxx + (k_5 * ((1.4214138).xxxx + (k_5 * ((-1.4531521).xxxx + (k_5 * 1.0614054)))))))));
+    float4 k_6 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
+    float4 poly = (k_6 * ((0.2548296).xxxx + (k_6 * ((-0.28449672).xxxx + (k_6 * ((1.4214138).xxxx + (k_6 * ((-1.4531521).xxxx + (k_6 * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
     const float4 _e46 = weft_select4_f32bit((t >= (0.0).xxxx), half_, -(half_));
     return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
@@ -444,6 +505,12 @@ float mc_schlick_t(float c_1)
     return (1.0 - ((x2_1 * x2_1) * x_2));
 }
 
+float4 mc_fast_shape(McThread th)
+{
+    const float _e2 = weft_f0_from_ior(th.eta);
+    return float4((1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1.0 - _e2) * (1.0 - _e2)));
+}
+
 McFastSet ConstructMcFastSet(float3 arg0, float3 arg1, float arg2, float arg3, float arg4, float arg5, float arg6, float arg7, float arg8, float arg9, float arg10, float arg11) {
     McFastSet ret = (McFastSet)0;
     ret.wi = arg0;
@@ -461,7 +528,7 @@ McFastSet ConstructMcFastSet(float3 arg0, float3 arg1, float arg2, float arg3, f
     return ret;
 }
 
-McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, McThread th)
+McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, float4 shape)
 {
     float3 li = float3(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     float3 lr = float3(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
@@ -475,8 +542,7 @@ McFastSet mc_fast_setup(McFrame fr, float3 wi, float3 wr, McThread th)
     float br = (lr.z / ((lr.x < 0.0) ? min(lr.x, -1e-12) : max(lr.x, 1e-12)));
     float s_lo = max(((li.x < 0.0) ? bi : -1000000.0), ((lr.x < 0.0) ? br : -1000000.0));
     float s_hi = min(((li.x > 0.0) ? bi : MC_FAST_BIG), ((lr.x > 0.0) ? br : MC_FAST_BIG));
-    const float _e98 = weft_f0_from_ior(th.eta);
-    const McFastSet mcfastset = ConstructMcFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), (1.0 / max(th.gamma_s, MC_MIN_GAMMA)), (1.0 / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), (th.eta * th.eta), ((1.0 - _e98) * (1.0 - _e98)));
+    const McFastSet mcfastset = ConstructMcFastSet(li, lr, inv_ri, inv_rr, _e50, (ok_1 ? 1.0 : 0.0), shape.x, shape.y, clamp(s_lo, -1000000.0, MC_FAST_BIG), clamp(s_hi, -1000000.0, MC_FAST_BIG), shape.z, shape.w);
     return mcfastset;
 }
 
@@ -562,7 +628,7 @@ float4 mc_fast_segment(McFastSet q_2, McThread th_2, float a0_, float a1_1, floa
     return _e47;
 }
 
-float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 offsets_a_4, float4 offsets_b_4, int count)
+float4 mc_thread_list_fast_with(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3, float4 shape_1, float4 offsets_a_4, float4 offsets_b_4, int count)
 {
     float4 acc = (0.0).xxxx;
     int k_4 = int(0);
@@ -570,42 +636,42 @@ float4 mc_thread_list_fast(McFrame fr_1, float3 wi_1, float3 wr_1, McThread th_3
     int i = int(0);
 
     int n_6 = clamp(count, int(1), MC_MAX_OFFSETS);
-    const McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
-    float lo_s_1 = atan(_e10.s_lo);
-    float hi_s_1 = atan(_e10.s_hi);
+    const McFastSet _e11 = mc_fast_setup(fr_1, wi_1, wr_1, shape_1);
+    float lo_s_1 = atan(_e11.s_lo);
+    float hi_s_1 = atan(_e11.s_hi);
     int segments = max(asint(asuint(n_6) - asuint(int(1))), int(1));
-    const int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
+    const int _e20 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e47 = i;
-            i = asint(asuint(_e47) + asuint(int(1)));
+            int _e48 = i;
+            i = asint(asuint(_e48) + asuint(int(1)));
         }
         loop_init = false;
-        int _e29 = i;
-        if ((_e29 < _e19)) {
+        int _e30 = i;
+        if ((_e30 < _e20)) {
         } else {
             break;
         }
         {
-            int _e31 = k_4;
-            int _e32 = h_2;
-            const float3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
-            float4 _e34 = acc;
-            const float4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
-            acc = (_e34 + (_e37 * _e33.z));
-            int _e41 = k_4;
-            int _e42 = h_2;
-            const int2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
-            k_4 = _e43.x;
-            h_2 = _e43.y;
+            int _e32 = k_4;
+            int _e33 = h_2;
+            const float3 _e34 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e32, _e33);
+            float4 _e35 = acc;
+            const float4 _e38 = mc_fast_segment(_e11, th_3, _e34.x, _e34.y, lo_s_1, hi_s_1);
+            acc = (_e35 + (_e38 * _e34.z));
+            int _e42 = k_4;
+            int _e43 = h_2;
+            const int2 _e44 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e42, _e43);
+            k_4 = _e44.x;
+            h_2 = _e44.y;
         }
     }
-    float4 _e49 = acc;
-    return (_e49 / (float(segments)).xxxx);
+    float4 _e50 = acc;
+    return (_e50 / (float(segments)).xxxx);
 }
 
 McThread ConstructMcThread(float3 arg0, float arg1, float arg2, float arg3, float arg4) {
@@ -630,29 +696,73 @@ float microcylinder_mean_fresnel(float eta)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_)
-{
-    WeftVaryings out_ = (WeftVaryings)0;
+McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
+    McFastConst ret = (McFastConst)0;
+    ret.shape = arg0;
+    ret.curve = arg1;
+    ret.steps = arg2;
+    return ret;
+}
 
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world = mul(float4(in_.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
-    out_.world_position = world.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+McFastConst microcylinder_fast_const(McThread th_4, float4 heights[9])
+{
+    McFastConst k_5 = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+
+    {
+        {
+            const float4 _e11 = mc_fast_shape(th_4);
+            k_5.shape = _e11;
+        }
+    }
+    McFastConst _e12 = k_5;
+    const McFastConst mcfastconst = _e12;
+    return mcfastconst;
+}
+
+MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float2 arg7, float4 arg8, float4 arg9, float2 arg10, float2 arg11) {
+    MicrocylinderVaryings ret = (MicrocylinderVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.thread1_shape = arg5;
+    ret.thread1_curve = arg6;
+    ret.thread1_steps = arg7;
+    ret.thread2_shape = arg8;
+    ret.thread2_curve = arg9;
+    ret.thread2_steps = arg10;
+    ret.mean_fresnel = arg11;
+    return ret;
+}
+
+VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
+{
+    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+
+    const WeftVaryings _e1 = weft_forward_vertex(in_);
+    float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    const McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, (1.0).xxx);
+    float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    const McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, (1.0).xxx);
+    float4 _e42[9] = material.thread1_curve;
+    const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    float4 _e61 = k2_.shape;
+    float4 _e63 = k2_.curve;
+    float2 _e65 = k2_.steps;
+    const float _e67 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e69 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, float2(_e67, _e69));
+    const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
+    return microcylindervaryings_1;
 }
 
 McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
@@ -665,7 +775,7 @@ McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    MicrocylinderVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1, fragmentinput_fs_main.thread1_shape_1, fragmentinput_fs_main.thread1_curve_1, fragmentinput_fs_main.thread1_steps_1, fragmentinput_fs_main.thread2_shape_1, fragmentinput_fs_main.thread2_curve_1, fragmentinput_fs_main.thread2_steps_1, fragmentinput_fs_main.mean_fresnel_1 };
     float4 s1_ = (0.0).xxxx;
     float4 s2_ = (0.0).xxxx;
 
@@ -704,27 +814,25 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     {
         {
             {
-                float4 _e91 = material.thread1_offsets_a;
-                float4 _e94 = material.thread1_offsets_b;
-                int _e97 = material.thread1_offset_count;
-                const float4 _e98 = mc_thread_list_fast(warp, _e80, _e79, _e29, _e91, _e94, _e97);
-                s1_ = _e98;
+                float4 _e92 = material.thread1_offsets_a;
+                float4 _e95 = material.thread1_offsets_b;
+                int _e98 = material.thread1_offset_count;
+                const float4 _e99 = mc_thread_list_fast_with(warp, _e80, _e79, _e29, in_1.thread1_shape, _e92, _e95, _e98);
+                s1_ = _e99;
             }
         }
     }
-    float4 _e99 = s1_;
-    float4 _e100 = s2_;
-    const float3 _e103 = mc_combine(_e99, _e100, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
-    const float3 _e104 = weft_main_light_radiance();
-    float3 direct = (_e103 * _e104);
-    const float _e108 = microcylinder_mean_fresnel(_e29.eta);
-    float3 amb1_ = (_e29.albedo + (_e108).xxx);
-    const float _e113 = microcylinder_mean_fresnel(_e46.eta);
-    float3 amb2_ = (_e46.albedo + (_e113).xxx);
+    float4 _e100 = s1_;
+    float4 _e101 = s2_;
+    const float3 _e104 = mc_combine(_e100, _e101, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
+    const float3 _e105 = weft_main_light_radiance();
+    float3 direct = (_e104 * _e105);
+    float3 amb1_ = (_e29.albedo + (in_1.mean_fresnel.x).xxx);
+    float3 amb2_ = (_e46.albedo + (in_1.mean_fresnel.y).xxx);
     float cov = (a1_2 + a2_1);
     float3 ambient_albedo = ((cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / (max(cov, 0.0001)).xxx) : amb1_);
-    const float3 _e127 = weft_sh_irradiance(n_7);
-    float3 ambient = (_e127 * ambient_albedo);
+    const float3 _e128 = weft_sh_irradiance(n_7);
+    float3 ambient = (_e128 * ambient_albedo);
     float3 radiance = clamp(((direct + ambient) * brightness), (0.0).xxx, (65504.0).xxx);
     return float4(radiance, 1.0);
 }

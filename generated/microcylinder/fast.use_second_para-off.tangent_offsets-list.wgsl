@@ -95,6 +95,27 @@ struct McFastSet {
     t02_: f32,
 }
 
+struct McFastConst {
+    shape: vec4<f32>,
+    curve: vec4<f32>,
+    steps: vec2<f32>,
+}
+
+struct MicrocylinderVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) thread1_shape: vec4<f32>,
+    @location(5) @interpolate(flat) thread1_curve: vec4<f32>,
+    @location(6) @interpolate(flat) thread1_steps: vec2<f32>,
+    @location(7) @interpolate(flat) thread2_shape: vec4<f32>,
+    @location(8) @interpolate(flat) thread2_curve: vec4<f32>,
+    @location(9) @interpolate(flat) thread2_steps: vec2<f32>,
+    @location(10) @interpolate(flat) mean_fresnel: vec2<f32>,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TANGENT_OFFSETS_CURVE: u32 = 0u;
@@ -214,6 +235,28 @@ fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSur
     return WeftSurface(_e6, _e7);
 }
 
+fn weft_forward_vertex(in_2: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_2.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
     let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -261,8 +304,8 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
-    let k_5 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k_5 * (vec4(0.2548296f) + (k_5 * (vec4(-0.28449672f) + (k_5 * (vec4(1.4214138f) + (k_5 * (vec4(-1.4531521f) + (k_5 * 1.0614054f)))))))));
+    let k_6 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_6 * (vec4(0.2548296f) + (k_6 * (vec4(-0.28449672f) + (k_6 * (vec4(1.4214138f) + (k_6 * (vec4(-1.4531521f) + (k_6 * 1.0614054f)))))))));
     let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
     return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
 }
@@ -346,7 +389,12 @@ fn mc_schlick_t(c_1: f32) -> f32 {
     return (1f - ((x2_1 * x2_1) * x_2));
 }
 
-fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
+fn mc_fast_shape(th: McThread) -> vec4<f32> {
+    let _e2 = weft_f0_from_ior(th.eta);
+    return vec4<f32>((1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1f - _e2) * (1f - _e2)));
+}
+
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, shape: vec4<f32>) -> McFastSet {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     let ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -359,8 +407,7 @@ fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McF
     let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
     let s_lo = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
     let s_hi = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
-    let _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), (th.eta * th.eta), ((1f - _e98) * (1f - _e98)));
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), shape.x, shape.y, clamp(s_lo, -1000000f, MC_FAST_BIG), clamp(s_hi, -1000000f, MC_FAST_BIG), shape.z, shape.w);
 }
 
 fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
@@ -431,44 +478,44 @@ fn mc_fast_segment(q_2: McFastSet, th_2: McThread, a0_: f32, a1_1: f32, lo_s: f3
     return _e47;
 }
 
-fn mc_thread_list_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, offsets_a_4: vec4<f32>, offsets_b_4: vec4<f32>, count: i32) -> vec4<f32> {
+fn mc_thread_list_fast_with(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, shape_1: vec4<f32>, offsets_a_4: vec4<f32>, offsets_b_4: vec4<f32>, count: i32) -> vec4<f32> {
     var acc: vec4<f32> = vec4(0f);
     var k_4: i32 = 0i;
     var h_2: i32 = 0i;
     var i: i32 = 0i;
 
     let n_6 = clamp(count, 1i, MC_MAX_OFFSETS);
-    let _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
-    let lo_s_1 = atan(_e10.s_lo);
-    let hi_s_1 = atan(_e10.s_hi);
+    let _e11 = mc_fast_setup(fr_1, wi_1, wr_1, shape_1);
+    let lo_s_1 = atan(_e11.s_lo);
+    let hi_s_1 = atan(_e11.s_hi);
     let segments = max((n_6 - 1i), 1i);
-    let _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
+    let _e20 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     loop {
-        let _e29 = i;
-        if (_e29 < _e19) {
+        let _e30 = i;
+        if (_e30 < _e20) {
         } else {
             break;
         }
         {
-            let _e31 = k_4;
-            let _e32 = h_2;
-            let _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
-            let _e34 = acc;
-            let _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
-            acc = (_e34 + (_e37 * _e33.z));
-            let _e41 = k_4;
-            let _e42 = h_2;
-            let _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
-            k_4 = _e43.x;
-            h_2 = _e43.y;
+            let _e32 = k_4;
+            let _e33 = h_2;
+            let _e34 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e32, _e33);
+            let _e35 = acc;
+            let _e38 = mc_fast_segment(_e11, th_3, _e34.x, _e34.y, lo_s_1, hi_s_1);
+            acc = (_e35 + (_e38 * _e34.z));
+            let _e42 = k_4;
+            let _e43 = h_2;
+            let _e44 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e42, _e43);
+            k_4 = _e44.x;
+            h_2 = _e44.y;
         }
         continuing {
-            let _e47 = i;
-            i = (_e47 + 1i);
+            let _e48 = i;
+            i = (_e48 + 1i);
         }
     }
-    let _e49 = acc;
-    return (_e49 / vec4(f32(segments)));
+    let _e50 = acc;
+    return (_e50 / vec4(f32(segments)));
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
@@ -480,31 +527,48 @@ fn microcylinder_mean_fresnel(eta: f32) -> f32 {
     return (_e1 + ((1f - _e1) / 21f));
 }
 
-@vertex 
-fn vs_main(in: WeftVertexInput) -> WeftVaryings {
-    var out: WeftVaryings;
+fn microcylinder_fast_const(th_4: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
+    var k_5: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
 
-    let model = weft_object.model;
-    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
-    let nm = weft_object.normal_matrix;
-    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    let world = (model * vec4<f32>(in.position, 1f));
-    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
-    let _e43 = weft_frame.view_proj;
-    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
-    out.world_position = world.xyz;
-    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e55;
-    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    let _e66 = out;
-    return _e66;
+    {
+        {
+            let _e11 = mc_fast_shape(th_4);
+            k_5.shape = _e11;
+        }
+    }
+    let _e12 = k_5;
+    return _e12;
+}
+
+@vertex 
+fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
+    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+
+    let _e1 = weft_forward_vertex(in);
+    let _e4 = material.thread1_color;
+    let _e8 = material.thread1_ior;
+    let _e11 = material.thread1_isotropy;
+    let _e14 = material.thread1_gamma_s;
+    let _e17 = material.thread1_gamma_v;
+    let _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, vec3(1f));
+    let _e23 = material.thread2_color;
+    let _e27 = material.thread2_ior;
+    let _e30 = material.thread2_isotropy;
+    let _e33 = material.thread2_gamma_s;
+    let _e36 = material.thread2_gamma_v;
+    let _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1f));
+    let _e42 = material.thread1_curve;
+    let _e43 = microcylinder_fast_const(_e20, _e42);
+    let _e61 = k2_.shape;
+    let _e63 = k2_.curve;
+    let _e65 = k2_.steps;
+    let _e67 = microcylinder_mean_fresnel(_e20.eta);
+    let _e69 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e61, _e63, _e65, vec2<f32>(_e67, _e69));
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     var s1_: vec4<f32> = vec4(0f);
     var s2_: vec4<f32> = vec4(0f);
 
@@ -543,27 +607,25 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         {
             {
-                let _e91 = material.thread1_offsets_a;
-                let _e94 = material.thread1_offsets_b;
-                let _e97 = material.thread1_offset_count;
-                let _e98 = mc_thread_list_fast(warp, _e80, _e79, _e29, _e91, _e94, _e97);
-                s1_ = _e98;
+                let _e92 = material.thread1_offsets_a;
+                let _e95 = material.thread1_offsets_b;
+                let _e98 = material.thread1_offset_count;
+                let _e99 = mc_thread_list_fast_with(warp, _e80, _e79, _e29, in_1.thread1_shape, _e92, _e95, _e98);
+                s1_ = _e99;
             }
         }
     }
-    let _e99 = s1_;
-    let _e100 = s2_;
-    let _e103 = mc_combine(_e99, _e100, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
-    let _e104 = weft_main_light_radiance();
-    let direct = (_e103 * _e104);
-    let _e108 = microcylinder_mean_fresnel(_e29.eta);
-    let amb1_ = (_e29.albedo + vec3(_e108));
-    let _e113 = microcylinder_mean_fresnel(_e46.eta);
-    let amb2_ = (_e46.albedo + vec3(_e113));
+    let _e100 = s1_;
+    let _e101 = s2_;
+    let _e104 = mc_combine(_e100, _e101, a1_2, a2_1, dot(n_7, _e80), dot(n_7, _e79));
+    let _e105 = weft_main_light_radiance();
+    let direct = (_e104 * _e105);
+    let amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    let amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     let cov = (a1_2 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_2 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
-    let _e127 = weft_sh_irradiance(n_7);
-    let ambient = (_e127 * ambient_albedo);
+    let _e128 = weft_sh_irradiance(n_7);
+    let ambient = (_e128 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -102,8 +102,30 @@ struct McFastSet {
     float t02_;
     char _pad12[12];
 };
+struct McFastConst {
+    metal::float4 shape;
+    metal::float4 curve;
+    metal::float2 steps;
+    char _pad3[8];
+};
 struct type_12 {
     metal::float3 inner[2];
+};
+struct MicrocylinderVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 thread1_shape;
+    metal::float4 thread1_curve;
+    metal::float2 thread1_steps;
+    char _pad8[8];
+    metal::float4 thread2_shape;
+    metal::float4 thread2_curve;
+    metal::float2 thread2_steps;
+    metal::float2 mean_fresnel;
 };
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
@@ -234,6 +256,31 @@ WeftSurface weft_surface(
     return WeftSurface {_e6, _e7};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out;
+    return _e66;
+}
+
 metal::float3x3 weft_tangent_frame(
     metal::float3 n_2,
     metal::float4 tangent
@@ -343,11 +390,51 @@ float mc_schlick_t(
     return 1.0 - ((x2_1 * x2_1) * x_2);
 }
 
+metal::float4 mc_fast_shape(
+    McThread th
+) {
+    float _e2 = weft_f0_from_ior(th.eta);
+    return metal::float4(1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), th.eta * th.eta, (1.0 - _e2) * (1.0 - _e2));
+}
+
+float mc_fast_half_len(
+    float sa,
+    float sb
+) {
+    metal::float2 s_3 = metal::float2(metal::mix(sa, sb, MC_GL2_T), metal::mix(sa, sb, 0.7886751));
+    metal::float2 l = metal::sqrt(metal::float2(1.0) + (s_3 * s_3));
+    return 0.25 * (l.x + l.y);
+}
+
+float mc_fast_clip_step(
+    float sa_1,
+    float sb_1
+) {
+    float ds = sb_1 - sa_1;
+    return 1.0 / ((metal::abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds);
+}
+
+McFastConst mc_fast_const(
+    McThread th_1,
+    type_5 heights
+) {
+    float s0_1 = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
+    float s1_2 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
+    float s2_2 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
+    float _e41 = mc_fast_half_len(s0_1, s1_2);
+    float _e42 = mc_fast_half_len(s1_2, s2_2);
+    float total = _e41 + _e42;
+    metal::float4 _e44 = mc_fast_shape(th_1);
+    float _e50 = mc_fast_clip_step(s0_1, s1_2);
+    float _e51 = mc_fast_clip_step(s1_2, s2_2);
+    return McFastConst {_e44, metal::float4(s0_1, s1_2, s2_2, 1.0 / metal::max(total, 0.000001)), metal::float2(_e50, _e51)};
+}
+
 McFastSet mc_fast_setup(
     McFrame fr,
     metal::float3 wi,
     metal::float3 wr,
-    McThread th
+    metal::float4 shape
 ) {
     metal::float3 li = metal::float3(metal::dot(wi, fr.u), metal::dot(wi, fr.v), metal::dot(wi, fr.n));
     metal::float3 lr = metal::float3(metal::dot(wr, fr.u), metal::dot(wr, fr.v), metal::dot(wr, fr.n));
@@ -361,20 +448,19 @@ McFastSet mc_fast_setup(
     float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
     float s_lo_1 = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
     float s_hi_1 = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
-    float _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo_1, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi_1, -1000000.0, MC_FAST_BIG), th.eta * th.eta, (1.0 - _e98) * (1.0 - _e98)};
+    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, shape.x, shape.y, metal::clamp(s_lo_1, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi_1, -1000000.0, MC_FAST_BIG), shape.z, shape.w};
 }
 
 McFastNode mc_fast_node(
     McFastSet q,
     float ca,
-    float sa
+    float sa_2
 ) {
     bool local_2 = {};
-    float si = (q.wi.x * ca) + (q.wi.z * sa);
-    float sr = (q.wr[0] * ca) + (q.wr[2] * sa);
-    float ni = (q.wi.z * ca) - (q.wi.x * sa);
-    float nr = (q.wr[2] * ca) - (q.wr[0] * sa);
+    float si = (q.wi.x * ca) + (q.wi.z * sa_2);
+    float sr = (q.wr[0] * ca) + (q.wr[2] * sa_2);
+    float ni = (q.wi.z * ca) - (q.wi.x * sa_2);
+    float nr = (q.wr[2] * ca) - (q.wr[0] * sa_2);
     float ci2_ = (q.wi.y * q.wi.y) + (ni * ni);
     float cr2_ = (q.wr[1] * q.wr[1]) + (nr * nr);
     if (metal::min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
@@ -414,25 +500,14 @@ metal::float2 mc_fast_volume2_(
 metal::float2 mc_fast_clip(
     float s_lo,
     float s_hi,
-    float sa_1,
-    float sb,
+    float sa_3,
+    float inv,
     float ta
 ) {
-    float ds = sb - sa_1;
-    float inv = 1.0 / ((metal::abs(ds) < MC_FAST_MIN_DSLOPE) ? ((ds >= 0.0) ? MC_FAST_MIN_DSLOPE : -0.0001) : ds);
-    float u0_ = (s_lo - sa_1) * inv;
-    float u1_ = (s_hi - sa_1) * inv;
+    float u0_ = (s_lo - sa_3) * inv;
+    float u1_ = (s_hi - sa_3) * inv;
     metal::float2 u_1 = metal::saturate(metal::float2(metal::min(u0_, u1_), metal::max(u0_, u1_)));
     return (u_1.x < u_1.y) ? (metal::float2(ta) + (0.5 * u_1)) : metal::float2(2.0, -1.0);
-}
-
-float mc_fast_half_len(
-    float sa_2,
-    float sb_1
-) {
-    metal::float2 s_3 = metal::float2(metal::mix(sa_2, sb_1, MC_GL2_T), metal::mix(sa_2, sb_1, 0.7886751));
-    metal::float2 l = metal::sqrt(metal::float2(1.0) + (s_3 * s_3));
-    return 0.25 * (l.x + l.y);
 }
 
 type_12 mc_normal3_(
@@ -440,15 +515,15 @@ type_12 mc_normal3_(
 ) {
     metal::float3 e_1 = metal::exp((-0.5 * t_1) * t_1);
     metal::float3 z = metal::abs(t_1) * 0.70710677;
-    metal::float3 k = metal::float3(1.0) / (metal::float3(1.0) + (0.3275911 * z));
-    metal::float3 poly = k * (metal::float3(0.2548296) + (k * (metal::float3(-0.28449672) + (k * (metal::float3(1.4214138) + (k * (metal::float3(-1.4531521) + (k * 1.0614054))))))));
+    metal::float3 k_2 = metal::float3(1.0) / (metal::float3(1.0) + (0.3275911 * z));
+    metal::float3 poly = k_2 * (metal::float3(0.2548296) + (k_2 * (metal::float3(-0.28449672) + (k_2 * (metal::float3(1.4214138) + (k_2 * (metal::float3(-1.4531521) + (k_2 * 1.0614054))))))));
     metal::float3 half_ = metal::float3(0.5) - ((0.5 * poly) * e_1);
     return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t_1 >= metal::float3(0.0))}};
 }
 
 metal::float4 mc_fast_rule2_(
     McFastSet q_1,
-    McThread th_1,
+    McThread th_2,
     McFastNode n0_,
     McFastNode n1_,
     metal::float2 r,
@@ -467,26 +542,26 @@ metal::float4 mc_fast_rule2_(
     metal::float2 s_4 = r * metal::float2(n0_.s, n1_.s);
     metal::float2 v_1 = r * metal::float2(n0_.v, n1_.v);
     float surface = metal::dot(gs, s_4);
-    float volume = ((1.0 - th_1.kd) * metal::dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y));
-    return metal::float4(metal::float3(surface) + (volume * th_1.albedo), metal::dot(r, metal::float2(n0_.p, n1_.p)));
+    float volume = ((1.0 - th_2.kd) * metal::dot(_e62, v_1)) + (th_2.kd * (v_1.x + v_1.y));
+    return metal::float4(metal::float3(surface) + (volume * th_2.albedo), metal::dot(r, metal::float2(n0_.p, n1_.p)));
 }
 
-metal::float4 mc_thread_curve_fast(
+metal::float4 mc_thread_curve_fast_with(
     McFrame fr_1,
     metal::float3 wi_1,
     metal::float3 wr_1,
-    McThread th_2,
-    type_5 heights
+    McThread th_3,
+    McFastConst k
 ) {
     bool local_3 = {};
-    McFastSet _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
-    float s0_1 = 32.0 * (((-1.5 * heights.inner[0].x) + (2.0 * heights.inner[0].y)) - (0.5 * heights.inner[0].z));
-    float s1_2 = (0.5 * 32.0) * (heights.inner[4].y - heights.inner[3].w);
-    float s2_2 = 32.0 * (((1.5 * heights.inner[8].x) - (2.0 * heights.inner[7].w)) + (0.5 * heights.inner[7].z));
-    metal::float2 _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0.0);
-    metal::float2 _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5);
-    float t0_ = metal::min(_e48.x, _e52.x);
-    float t1_1 = metal::max(metal::max(_e48.y, _e52.y), t0_);
+    McFastSet _e6 = mc_fast_setup(fr_1, wi_1, wr_1, k.shape);
+    float s0_2 = k.curve.x;
+    float s1_3 = k.curve.y;
+    float s2_3 = k.curve.z;
+    metal::float2 _e18 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s0_2, k.steps.x, 0.0);
+    metal::float2 _e24 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s1_3, k.steps.y, 0.5);
+    float t0_ = metal::min(_e18.x, _e24.x);
+    float t1_1 = metal::max(metal::max(_e18.y, _e24.y), t0_);
     float w = t1_1 - t0_;
     if (t0_ > 0.0001) {
         local_3 = t1_1 < 0.9999;
@@ -496,19 +571,16 @@ metal::float4 mc_thread_curve_fast(
     bool bump = local_3;
     float tn = bump ? MC_GJ2_T : MC_GL2_T;
     metal::float2 t_4 = metal::float2(t0_ + (tn * w), t1_1 - (tn * w));
-    float _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    float _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    metal::float2 sl = metal::float2(_e78, _e80);
+    float _e50 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.x);
+    float _e52 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.y);
+    metal::float2 sl = metal::float2(_e50, _e52);
     metal::float2 l2_ = metal::float2(1.0) + (sl * sl);
     metal::float2 inv_len = metal::rsqrt(l2_);
-    McFastNode _e91 = mc_fast_node(_e5, inv_len.x, sl.x * inv_len.x);
-    McFastNode _e96 = mc_fast_node(_e5, inv_len.y, sl.y * inv_len.y);
+    McFastNode _e63 = mc_fast_node(_e6, inv_len.x, sl.x * inv_len.x);
+    McFastNode _e68 = mc_fast_node(_e6, inv_len.y, sl.y * inv_len.y);
     metal::float2 r_2 = ((bump ? MC_GJ2_W : 0.5) * w) * (l2_ * inv_len);
-    float _e103 = mc_fast_half_len(s0_1, s1_2);
-    float _e104 = mc_fast_half_len(s1_2, s2_2);
-    float total = _e103 + _e104;
-    metal::float4 _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
-    return _e106 / metal::float4(metal::max(total, 0.000001));
+    metal::float4 _e75 = mc_fast_rule2_(_e6, th_3, _e63, _e68, r_2, bump);
+    return _e75 * k.curve.w;
 }
 
 McThread microcylinder_thread(
@@ -529,44 +601,76 @@ float microcylinder_mean_fresnel(
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
-struct vs_mainInput {
+McFastConst microcylinder_fast_const(
+    McThread th_4,
+    type_5 heights_1
+) {
+    McFastConst k_1 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    {
+        {
+            McFastConst _e10 = mc_fast_const(th_4, heights_1);
+            k_1 = _e10;
+        }
+    }
+    McFastConst _e11 = k_1;
+    return _e11;
+}
+
+struct vs_microcylinderInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_microcylinderOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings [[stage_in]]
+vertex vs_microcylinderOutput vs_microcylinder(
+  vs_microcylinderInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    WeftVaryings out = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    metal::float4 world = model * metal::float4(in.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
-    out.world_position = world.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    WeftVaryings _e66 = out;
-    const auto _tmp = _e66;
-    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    metal::float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, metal::float3(1.0));
+    metal::float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, metal::float3(1.0));
+    type_5 _e42 = material.thread1_curve;
+    McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        type_5 _e54 = material.thread2_curve;
+        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    metal::float4 _e65 = k2_.shape;
+    metal::float4 _e67 = k2_.curve;
+    metal::float2 _e69 = k2_.steps;
+    float _e71 = microcylinder_mean_fresnel(_e20.eta);
+    float _e73 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e65, _e67, _e69, metal::float2(_e71, _e73)};
+    return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 
 
@@ -575,6 +679,13 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_1 [[color(0)]];
@@ -587,7 +698,7 @@ fragment fs_mainOutput fs_main(
 , metal::sampler material_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> albedo_map [[texture(0)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const MicrocylinderVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_, {}, varyings_1.thread1_shape, varyings_1.thread1_curve, varyings_1.thread1_steps, {}, varyings_1.thread2_shape, varyings_1.thread2_curve, varyings_1.thread2_steps, varyings_1.mean_fresnel };
     metal::float4 s1_ = metal::float4(0.0);
     metal::float4 s2_ = metal::float4(0.0);
     metal::float4 _e4 = material.albedo_map_st;
@@ -625,30 +736,26 @@ fragment fs_mainOutput fs_main(
     {
         {
             {
-                type_5 _e91 = material.thread1_curve;
-                metal::float4 _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
-                s1_ = _e92;
+                metal::float4 _e93 = mc_thread_curve_fast_with(warp, _e80, _e79, _e29, McFastConst {in_1.thread1_shape, in_1.thread1_curve, in_1.thread1_steps});
+                s1_ = _e93;
                 {
-                    type_5 _e95 = material.thread2_curve;
-                    metal::float4 _e96 = mc_thread_curve_fast(weft, _e80, _e79, _e46, _e95);
-                    s2_ = _e96;
+                    metal::float4 _e98 = mc_thread_curve_fast_with(weft, _e80, _e79, _e46, McFastConst {in_1.thread2_shape, in_1.thread2_curve, in_1.thread2_steps});
+                    s2_ = _e98;
                 }
             }
         }
     }
-    metal::float4 _e97 = s1_;
-    metal::float4 _e98 = s2_;
-    metal::float3 _e101 = mc_combine(_e97, _e98, a1_1, a2_1, metal::dot(n_3, _e80), metal::dot(n_3, _e79));
-    metal::float3 _e102 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = _e101 * _e102;
-    float _e106 = microcylinder_mean_fresnel(_e29.eta);
-    metal::float3 amb1_ = _e29.albedo + metal::float3(_e106);
-    float _e111 = microcylinder_mean_fresnel(_e46.eta);
-    metal::float3 amb2_ = _e46.albedo + metal::float3(_e111);
+    metal::float4 _e99 = s1_;
+    metal::float4 _e100 = s2_;
+    metal::float3 _e103 = mc_combine(_e99, _e100, a1_1, a2_1, metal::dot(n_3, _e80), metal::dot(n_3, _e79));
+    metal::float3 _e104 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e103 * _e104;
+    metal::float3 amb1_ = _e29.albedo + metal::float3(in_1.mean_fresnel.x);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(in_1.mean_fresnel.y);
     float cov = a1_1 + a2_1;
     metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
-    metal::float3 _e125 = weft_sh_irradiance(n_3, weft_frame);
-    metal::float3 ambient = _e125 * ambient_albedo;
+    metal::float3 _e127 = weft_sh_irradiance(n_3, weft_frame);
+    metal::float3 ambient = _e127 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

@@ -95,6 +95,27 @@ struct McFastSet {
     t02_: f32,
 }
 
+struct McFastConst {
+    shape: vec4<f32>,
+    curve: vec4<f32>,
+    steps: vec2<f32>,
+}
+
+struct MicrocylinderVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) thread1_shape: vec4<f32>,
+    @location(5) @interpolate(flat) thread1_curve: vec4<f32>,
+    @location(6) @interpolate(flat) thread1_steps: vec2<f32>,
+    @location(7) @interpolate(flat) thread2_shape: vec4<f32>,
+    @location(8) @interpolate(flat) thread2_curve: vec4<f32>,
+    @location(9) @interpolate(flat) thread2_steps: vec2<f32>,
+    @location(10) @interpolate(flat) mean_fresnel: vec2<f32>,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TANGENT_OFFSETS_CURVE: u32 = 0u;
@@ -214,6 +235,28 @@ fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSur
     return WeftSurface(_e6, _e7);
 }
 
+fn weft_forward_vertex(in_2: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_2.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
     let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -293,7 +336,36 @@ fn mc_schlick_t(c_1: f32) -> f32 {
     return (1f - ((x2_1 * x2_1) * x_2));
 }
 
-fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
+fn mc_fast_shape(th: McThread) -> vec4<f32> {
+    let _e2 = weft_f0_from_ior(th.eta);
+    return vec4<f32>((1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), (th.eta * th.eta), ((1f - _e2) * (1f - _e2)));
+}
+
+fn mc_fast_half_len(sa: f32, sb: f32) -> f32 {
+    let s_3 = vec2<f32>(mix(sa, sb, MC_GL2_T), mix(sa, sb, 0.7886751f));
+    let l = sqrt((vec2(1f) + (s_3 * s_3)));
+    return (0.25f * (l.x + l.y));
+}
+
+fn mc_fast_clip_step(sa_1: f32, sb_1: f32) -> f32 {
+    let ds = (sb_1 - sa_1);
+    return (1f / select(ds, select(-0.0001f, MC_FAST_MIN_DSLOPE, (ds >= 0f)), (abs(ds) < MC_FAST_MIN_DSLOPE)));
+}
+
+fn mc_fast_const(th_1: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
+    let s0_1 = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
+    let s1_2 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
+    let s2_2 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
+    let _e41 = mc_fast_half_len(s0_1, s1_2);
+    let _e42 = mc_fast_half_len(s1_2, s2_2);
+    let total = (_e41 + _e42);
+    let _e44 = mc_fast_shape(th_1);
+    let _e50 = mc_fast_clip_step(s0_1, s1_2);
+    let _e51 = mc_fast_clip_step(s1_2, s2_2);
+    return McFastConst(_e44, vec4<f32>(s0_1, s1_2, s2_2, (1f / max(total, 0.000001f))), vec2<f32>(_e50, _e51));
+}
+
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, shape: vec4<f32>) -> McFastSet {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     let ri2_ = ((li.x * li.x) + (li.z * li.z));
@@ -306,17 +378,16 @@ fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McF
     let br = (lr.z / select(max(lr.x, 0.000000000001f), min(lr.x, -0.000000000001f), (lr.x < 0f)));
     let s_lo_1 = max(select(-1000000f, bi, (li.x < 0f)), select(-1000000f, br, (lr.x < 0f)));
     let s_hi_1 = min(select(MC_FAST_BIG, bi, (li.x > 0f)), select(MC_FAST_BIG, br, (lr.x > 0f)));
-    let _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), (1f / max(th.gamma_s, MC_MIN_GAMMA)), (1f / max(th.gamma_v, MC_MIN_GAMMA)), clamp(s_lo_1, -1000000f, MC_FAST_BIG), clamp(s_hi_1, -1000000f, MC_FAST_BIG), (th.eta * th.eta), ((1f - _e98) * (1f - _e98)));
+    return McFastSet(li, lr, inv_ri, inv_rr, _e50, select(0f, 1f, ok_1), shape.x, shape.y, clamp(s_lo_1, -1000000f, MC_FAST_BIG), clamp(s_hi_1, -1000000f, MC_FAST_BIG), shape.z, shape.w);
 }
 
-fn mc_fast_node(q: McFastSet, ca: f32, sa: f32) -> McFastNode {
+fn mc_fast_node(q: McFastSet, ca: f32, sa_2: f32) -> McFastNode {
     var local_2: bool;
 
-    let si = ((q.wi.x * ca) + (q.wi.z * sa));
-    let sr = ((q.wr.x * ca) + (q.wr.z * sa));
-    let ni = ((q.wi.z * ca) - (q.wi.x * sa));
-    let nr = ((q.wr.z * ca) - (q.wr.x * sa));
+    let si = ((q.wi.x * ca) + (q.wi.z * sa_2));
+    let sr = ((q.wr.x * ca) + (q.wr.z * sa_2));
+    let ni = ((q.wi.z * ca) - (q.wi.x * sa_2));
+    let nr = ((q.wr.z * ca) - (q.wr.x * sa_2));
     let ci2_ = ((q.wi.y * q.wi.y) + (ni * ni));
     let cr2_ = ((q.wr.y * q.wr.y) + (nr * nr));
     if (min(ci2_, cr2_) >= MC_MIN_PROJ2_) {
@@ -350,31 +421,23 @@ fn mc_fast_volume2_(x_1: vec2<f32>, inv_gamma: f32) -> vec2<f32> {
     return (exp(((-0.5f * t_3) * t_3)) * (MC_INV_SQRT_TWO_PI * inv_gamma));
 }
 
-fn mc_fast_clip(s_lo: f32, s_hi: f32, sa_1: f32, sb: f32, ta: f32) -> vec2<f32> {
-    let ds = (sb - sa_1);
-    let inv = (1f / select(ds, select(-0.0001f, MC_FAST_MIN_DSLOPE, (ds >= 0f)), (abs(ds) < MC_FAST_MIN_DSLOPE)));
-    let u0_ = ((s_lo - sa_1) * inv);
-    let u1_ = ((s_hi - sa_1) * inv);
+fn mc_fast_clip(s_lo: f32, s_hi: f32, sa_3: f32, inv: f32, ta: f32) -> vec2<f32> {
+    let u0_ = ((s_lo - sa_3) * inv);
+    let u1_ = ((s_hi - sa_3) * inv);
     let u_1 = saturate(vec2<f32>(min(u0_, u1_), max(u0_, u1_)));
     return select(vec2<f32>(2f, -1f), (vec2(ta) + (0.5f * u_1)), (u_1.x < u_1.y));
-}
-
-fn mc_fast_half_len(sa_2: f32, sb_1: f32) -> f32 {
-    let s_3 = vec2<f32>(mix(sa_2, sb_1, MC_GL2_T), mix(sa_2, sb_1, 0.7886751f));
-    let l = sqrt((vec2(1f) + (s_3 * s_3)));
-    return (0.25f * (l.x + l.y));
 }
 
 fn mc_normal3_(t_1: vec3<f32>) -> array<vec3<f32>, 2> {
     let e_1 = exp(((-0.5f * t_1) * t_1));
     let z = (abs(t_1) * 0.70710677f);
-    let k = (vec3(1f) / (vec3(1f) + (0.3275911f * z)));
-    let poly = (k * (vec3(0.2548296f) + (k * (vec3(-0.28449672f) + (k * (vec3(1.4214138f) + (k * (vec3(-1.4531521f) + (k * 1.0614054f)))))))));
+    let k_2 = (vec3(1f) / (vec3(1f) + (0.3275911f * z)));
+    let poly = (k_2 * (vec3(0.2548296f) + (k_2 * (vec3(-0.28449672f) + (k_2 * (vec3(1.4214138f) + (k_2 * (vec3(-1.4531521f) + (k_2 * 1.0614054f)))))))));
     let half = (vec3(0.5f) - ((0.5f * poly) * e_1));
     return array<vec3<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t_1 >= vec3(0f))));
 }
 
-fn mc_fast_rule2_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNode, r: vec2<f32>, jacobi: bool) -> vec4<f32> {
+fn mc_fast_rule2_(q_1: McFastSet, th_2: McThread, n0_: McFastNode, n1_: McFastNode, r: vec2<f32>, jacobi: bool) -> vec4<f32> {
     let e_2 = select(MC_GL2_E, MC_GJ2_E, jacobi);
     let d_1 = (n1_.x - n0_.x);
     let xe = vec3<f32>((n0_.x - (e_2 * d_1)), (0.5f * (n0_.x + n1_.x)), (n1_.x + (e_2 * d_1)));
@@ -388,21 +451,21 @@ fn mc_fast_rule2_(q_1: McFastSet, th_1: McThread, n0_: McFastNode, n1_: McFastNo
     let s_4 = (r * vec2<f32>(n0_.s, n1_.s));
     let v_1 = (r * vec2<f32>(n0_.v, n1_.v));
     let surface = dot(gs, s_4);
-    let volume = (((1f - th_1.kd) * dot(_e62, v_1)) + (th_1.kd * (v_1.x + v_1.y)));
-    return vec4<f32>((vec3(surface) + (volume * th_1.albedo)), dot(r, vec2<f32>(n0_.p, n1_.p)));
+    let volume = (((1f - th_2.kd) * dot(_e62, v_1)) + (th_2.kd * (v_1.x + v_1.y)));
+    return vec4<f32>((vec3(surface) + (volume * th_2.albedo)), dot(r, vec2<f32>(n0_.p, n1_.p)));
 }
 
-fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
+fn mc_thread_curve_fast_with(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_3: McThread, k: McFastConst) -> vec4<f32> {
     var local_3: bool;
 
-    let _e5 = mc_fast_setup(fr_1, wi_1, wr_1, th_2);
-    let s0_1 = (32f * (((-1.5f * heights[0].x) + (2f * heights[0].y)) - (0.5f * heights[0].z)));
-    let s1_2 = ((0.5f * 32f) * (heights[4].y - heights[3].w));
-    let s2_2 = (32f * (((1.5f * heights[8].x) - (2f * heights[7].w)) + (0.5f * heights[7].z)));
-    let _e48 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s0_1, s1_2, 0f);
-    let _e52 = mc_fast_clip(_e5.s_lo, _e5.s_hi, s1_2, s2_2, 0.5f);
-    let t0_ = min(_e48.x, _e52.x);
-    let t1_1 = max(max(_e48.y, _e52.y), t0_);
+    let _e6 = mc_fast_setup(fr_1, wi_1, wr_1, k.shape);
+    let s0_2 = k.curve.x;
+    let s1_3 = k.curve.y;
+    let s2_3 = k.curve.z;
+    let _e18 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s0_2, k.steps.x, 0f);
+    let _e24 = mc_fast_clip(_e6.s_lo, _e6.s_hi, s1_3, k.steps.y, 0.5f);
+    let t0_ = min(_e18.x, _e24.x);
+    let t1_1 = max(max(_e18.y, _e24.y), t0_);
     let w = (t1_1 - t0_);
     if (t0_ > 0.0001f) {
         local_3 = (t1_1 < 0.9999f);
@@ -412,19 +475,16 @@ fn mc_thread_curve_fast(fr_1: McFrame, wi_1: vec3<f32>, wr_1: vec3<f32>, th_2: M
     let bump = local_3;
     let tn = select(MC_GL2_T, MC_GJ2_T, bump);
     let t_4 = vec2<f32>((t0_ + (tn * w)), (t1_1 - (tn * w)));
-    let _e78 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.x);
-    let _e80 = mc_fast_slope(s0_1, s1_2, s2_2, t_4.y);
-    let sl = vec2<f32>(_e78, _e80);
+    let _e50 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.x);
+    let _e52 = mc_fast_slope(s0_2, s1_3, s2_3, t_4.y);
+    let sl = vec2<f32>(_e50, _e52);
     let l2_ = (vec2(1f) + (sl * sl));
     let inv_len = inverseSqrt(l2_);
-    let _e91 = mc_fast_node(_e5, inv_len.x, (sl.x * inv_len.x));
-    let _e96 = mc_fast_node(_e5, inv_len.y, (sl.y * inv_len.y));
+    let _e63 = mc_fast_node(_e6, inv_len.x, (sl.x * inv_len.x));
+    let _e68 = mc_fast_node(_e6, inv_len.y, (sl.y * inv_len.y));
     let r_2 = ((select(0.5f, MC_GJ2_W, bump) * w) * (l2_ * inv_len));
-    let _e103 = mc_fast_half_len(s0_1, s1_2);
-    let _e104 = mc_fast_half_len(s1_2, s2_2);
-    let total = (_e103 + _e104);
-    let _e106 = mc_fast_rule2_(_e5, th_2, _e91, _e96, r_2, bump);
-    return (_e106 / vec4(max(total, 0.000001f)));
+    let _e75 = mc_fast_rule2_(_e6, th_3, _e63, _e68, r_2, bump);
+    return (_e75 * k.curve.w);
 }
 
 fn microcylinder_thread(color: vec3<f32>, ior_1: f32, isotropy: f32, gamma_s_deg: f32, gamma_v_deg: f32, tint: vec3<f32>) -> McThread {
@@ -436,31 +496,53 @@ fn microcylinder_mean_fresnel(eta: f32) -> f32 {
     return (_e1 + ((1f - _e1) / 21f));
 }
 
-@vertex 
-fn vs_main(in: WeftVertexInput) -> WeftVaryings {
-    var out: WeftVaryings;
+fn microcylinder_fast_const(th_4: McThread, heights_1: array<vec4<f32>, 9>) -> McFastConst {
+    var k_1: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
 
-    let model = weft_object.model;
-    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
-    let nm = weft_object.normal_matrix;
-    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    let world = (model * vec4<f32>(in.position, 1f));
-    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
-    let _e43 = weft_frame.view_proj;
-    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
-    out.world_position = world.xyz;
-    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e55;
-    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    let _e66 = out;
-    return _e66;
+    {
+        {
+            let _e10 = mc_fast_const(th_4, heights_1);
+            k_1 = _e10;
+        }
+    }
+    let _e11 = k_1;
+    return _e11;
+}
+
+@vertex 
+fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
+    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+
+    let _e1 = weft_forward_vertex(in);
+    let _e4 = material.thread1_color;
+    let _e8 = material.thread1_ior;
+    let _e11 = material.thread1_isotropy;
+    let _e14 = material.thread1_gamma_s;
+    let _e17 = material.thread1_gamma_v;
+    let _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, vec3(1f));
+    let _e23 = material.thread2_color;
+    let _e27 = material.thread2_ior;
+    let _e30 = material.thread2_isotropy;
+    let _e33 = material.thread2_gamma_s;
+    let _e36 = material.thread2_gamma_v;
+    let _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1f));
+    let _e42 = material.thread1_curve;
+    let _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        let _e54 = material.thread2_curve;
+        let _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    let _e65 = k2_.shape;
+    let _e67 = k2_.curve;
+    let _e69 = k2_.steps;
+    let _e71 = microcylinder_mean_fresnel(_e20.eta);
+    let _e73 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, vec2<f32>(_e71, _e73));
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     var s1_: vec4<f32> = vec4(0f);
     var s2_: vec4<f32> = vec4(0f);
 
@@ -499,30 +581,26 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     {
         {
             {
-                let _e91 = material.thread1_curve;
-                let _e92 = mc_thread_curve_fast(warp, _e80, _e79, _e29, _e91);
-                s1_ = _e92;
+                let _e93 = mc_thread_curve_fast_with(warp, _e80, _e79, _e29, McFastConst(in_1.thread1_shape, in_1.thread1_curve, in_1.thread1_steps));
+                s1_ = _e93;
                 {
-                    let _e95 = material.thread2_curve;
-                    let _e96 = mc_thread_curve_fast(weft, _e80, _e79, _e46, _e95);
-                    s2_ = _e96;
+                    let _e98 = mc_thread_curve_fast_with(weft, _e80, _e79, _e46, McFastConst(in_1.thread2_shape, in_1.thread2_curve, in_1.thread2_steps));
+                    s2_ = _e98;
                 }
             }
         }
     }
-    let _e97 = s1_;
-    let _e98 = s2_;
-    let _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
-    let _e102 = weft_main_light_radiance();
-    let direct = (_e101 * _e102);
-    let _e106 = microcylinder_mean_fresnel(_e29.eta);
-    let amb1_ = (_e29.albedo + vec3(_e106));
-    let _e111 = microcylinder_mean_fresnel(_e46.eta);
-    let amb2_ = (_e46.albedo + vec3(_e111));
+    let _e99 = s1_;
+    let _e100 = s2_;
+    let _e103 = mc_combine(_e99, _e100, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
+    let _e104 = weft_main_light_radiance();
+    let direct = (_e103 * _e104);
+    let amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    let amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     let cov = (a1_1 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
-    let _e125 = weft_sh_irradiance(n_3);
-    let ambient = (_e125 * ambient_albedo);
+    let _e127 = weft_sh_irradiance(n_3);
+    let ambient = (_e127 * ambient_albedo);
     let radiance = clamp(((direct + ambient) * brightness), vec3(0f), vec3(65504f));
     return vec4<f32>(radiance, 1f);
 }

@@ -105,6 +105,28 @@ struct McFastSet {
     float t02_;
     char _pad12[12];
 };
+struct McFastConst {
+    metal::float4 shape;
+    metal::float4 curve;
+    metal::float2 steps;
+    char _pad3[8];
+};
+struct MicrocylinderVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 thread1_shape;
+    metal::float4 thread1_curve;
+    metal::float2 thread1_steps;
+    char _pad8[8];
+    metal::float4 thread2_shape;
+    metal::float4 thread2_curve;
+    metal::float2 thread2_steps;
+    metal::float2 mean_fresnel;
+};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TANGENT_OFFSETS_CURVE = 0u;
@@ -234,6 +256,31 @@ WeftSurface weft_surface(
     return WeftSurface {_e6, _e7};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out;
+    return _e66;
+}
+
 metal::float3x3 weft_tangent_frame(
     metal::float3 n_2,
     metal::float4 tangent
@@ -299,8 +346,8 @@ type_12 mc_normal4_(
 ) {
     metal::float4 e_1 = metal::exp((-0.5 * t) * t);
     metal::float4 z = metal::abs(t) * 0.70710677;
-    metal::float4 k_5 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
-    metal::float4 poly = k_5 * (metal::float4(0.2548296) + (k_5 * (metal::float4(-0.28449672) + (k_5 * (metal::float4(1.4214138) + (k_5 * (metal::float4(-1.4531521) + (k_5 * 1.0614054))))))));
+    metal::float4 k_6 = metal::float4(1.0) / (metal::float4(1.0) + (0.3275911 * z));
+    metal::float4 poly = k_6 * (metal::float4(0.2548296) + (k_6 * (metal::float4(-0.28449672) + (k_6 * (metal::float4(1.4214138) + (k_6 * (metal::float4(-1.4531521) + (k_6 * 1.0614054))))))));
     metal::float4 half_ = metal::float4(0.5) - ((0.5 * poly) * e_1);
     return type_12 {{e_1 * MC_INV_SQRT_TWO_PI, metal::select(-(half_), half_, t >= metal::float4(0.0))}};
 }
@@ -420,11 +467,18 @@ float mc_schlick_t(
     return 1.0 - ((x2_1 * x2_1) * x_2);
 }
 
+metal::float4 mc_fast_shape(
+    McThread th
+) {
+    float _e2 = weft_f0_from_ior(th.eta);
+    return metal::float4(1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), th.eta * th.eta, (1.0 - _e2) * (1.0 - _e2));
+}
+
 McFastSet mc_fast_setup(
     McFrame fr,
     metal::float3 wi,
     metal::float3 wr,
-    McThread th
+    metal::float4 shape
 ) {
     metal::float3 li = metal::float3(metal::dot(wi, fr.u), metal::dot(wi, fr.v), metal::dot(wi, fr.n));
     metal::float3 lr = metal::float3(metal::dot(wr, fr.u), metal::dot(wr, fr.v), metal::dot(wr, fr.n));
@@ -438,8 +492,7 @@ McFastSet mc_fast_setup(
     float br = lr.z / ((lr.x < 0.0) ? metal::min(lr.x, -0.000000000001) : metal::max(lr.x, 0.000000000001));
     float s_lo = metal::max((li.x < 0.0) ? bi : -1000000.0, (lr.x < 0.0) ? br : -1000000.0);
     float s_hi = metal::min((li.x > 0.0) ? bi : MC_FAST_BIG, (lr.x > 0.0) ? br : MC_FAST_BIG);
-    float _e98 = weft_f0_from_ior(th.eta);
-    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, 1.0 / metal::max(th.gamma_s, MC_MIN_GAMMA), 1.0 / metal::max(th.gamma_v, MC_MIN_GAMMA), metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), th.eta * th.eta, (1.0 - _e98) * (1.0 - _e98)};
+    return McFastSet {li, lr, inv_ri, inv_rr, _e50, ok_1 ? 1.0 : 0.0, shape.x, shape.y, metal::clamp(s_lo, -1000000.0, MC_FAST_BIG), metal::clamp(s_hi, -1000000.0, MC_FAST_BIG), shape.z, shape.w};
 }
 
 McFastNode mc_fast_node(
@@ -530,11 +583,12 @@ metal::float4 mc_fast_segment(
     return _e47;
 }
 
-metal::float4 mc_thread_list_fast(
+metal::float4 mc_thread_list_fast_with(
     McFrame fr_1,
     metal::float3 wi_1,
     metal::float3 wr_1,
     McThread th_3,
+    metal::float4 shape_1,
     metal::float4 offsets_a_4,
     metal::float4 offsets_b_4,
     int count
@@ -544,42 +598,42 @@ metal::float4 mc_thread_list_fast(
     int h_2 = 0;
     int i = 0;
     int n_6 = metal::clamp(count, 1, MC_MAX_OFFSETS);
-    McFastSet _e10 = mc_fast_setup(fr_1, wi_1, wr_1, th_3);
-    float lo_s_1 = metal::atan(_e10.s_lo);
-    float hi_s_1 = metal::atan(_e10.s_hi);
+    McFastSet _e11 = mc_fast_setup(fr_1, wi_1, wr_1, shape_1);
+    float lo_s_1 = metal::atan(_e11.s_lo);
+    float hi_s_1 = metal::atan(_e11.s_hi);
     int segments = metal::max(as_type<int>(as_type<uint>(n_6) - as_type<uint>(1)), 1);
-    int _e19 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
+    int _e20 = mc_list_piece_count(offsets_a_4, offsets_b_4, n_6);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            int _e47 = i;
-            i = as_type<int>(as_type<uint>(_e47) + as_type<uint>(1));
+            int _e48 = i;
+            i = as_type<int>(as_type<uint>(_e48) + as_type<uint>(1));
         }
         loop_init = false;
-        int _e29 = i;
-        if (_e29 < _e19) {
+        int _e30 = i;
+        if (_e30 < _e20) {
         } else {
             break;
         }
         {
-            int _e31 = k_4;
-            int _e32 = h_2;
-            metal::float3 _e33 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e31, _e32);
-            metal::float4 _e34 = acc;
-            metal::float4 _e37 = mc_fast_segment(_e10, th_3, _e33.x, _e33.y, lo_s_1, hi_s_1);
-            acc = _e34 + (_e37 * _e33.z);
-            int _e41 = k_4;
-            int _e42 = h_2;
-            metal::int2 _e43 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e41, _e42);
-            k_4 = _e43.x;
-            h_2 = _e43.y;
+            int _e32 = k_4;
+            int _e33 = h_2;
+            metal::float3 _e34 = mc_list_piece(offsets_a_4, offsets_b_4, n_6, _e32, _e33);
+            metal::float4 _e35 = acc;
+            metal::float4 _e38 = mc_fast_segment(_e11, th_3, _e34.x, _e34.y, lo_s_1, hi_s_1);
+            acc = _e35 + (_e38 * _e34.z);
+            int _e42 = k_4;
+            int _e43 = h_2;
+            metal::int2 _e44 = mc_list_next(offsets_a_4, offsets_b_4, n_6, _e42, _e43);
+            k_4 = _e44.x;
+            h_2 = _e44.y;
         }
     }
-    metal::float4 _e49 = acc;
-    return _e49 / metal::float4(static_cast<float>(segments));
+    metal::float4 _e50 = acc;
+    return _e50 / metal::float4(static_cast<float>(segments));
 }
 
 McThread microcylinder_thread(
@@ -600,44 +654,76 @@ float microcylinder_mean_fresnel(
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
-struct vs_mainInput {
+McFastConst microcylinder_fast_const(
+    McThread th_4,
+    type_5 heights
+) {
+    McFastConst k_5 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    {
+        {
+            metal::float4 _e11 = mc_fast_shape(th_4);
+            k_5.shape = _e11;
+        }
+    }
+    McFastConst _e12 = k_5;
+    return _e12;
+}
+
+struct vs_microcylinderInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_microcylinderOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings [[stage_in]]
+vertex vs_microcylinderOutput vs_microcylinder(
+  vs_microcylinderInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    WeftVaryings out = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    metal::float4 world = model * metal::float4(in.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
-    out.world_position = world.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    WeftVaryings _e66 = out;
-    const auto _tmp = _e66;
-    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    metal::float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, metal::float3(1.0));
+    metal::float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, metal::float3(1.0));
+    type_5 _e42 = material.thread1_curve;
+    McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        type_5 _e54 = material.thread2_curve;
+        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    metal::float4 _e65 = k2_.shape;
+    metal::float4 _e67 = k2_.curve;
+    metal::float2 _e69 = k2_.steps;
+    float _e71 = microcylinder_mean_fresnel(_e20.eta);
+    float _e73 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e65, _e67, _e69, metal::float2(_e71, _e73)};
+    return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 
 
@@ -646,6 +732,13 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_1 [[color(0)]];
@@ -658,7 +751,7 @@ fragment fs_mainOutput fs_main(
 , metal::sampler material_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> albedo_map [[texture(0)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const MicrocylinderVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_, {}, varyings_1.thread1_shape, varyings_1.thread1_curve, varyings_1.thread1_steps, {}, varyings_1.thread2_shape, varyings_1.thread2_curve, varyings_1.thread2_steps, varyings_1.mean_fresnel };
     metal::float4 s1_ = metal::float4(0.0);
     metal::float4 s2_ = metal::float4(0.0);
     metal::float4 _e4 = material.albedo_map_st;
@@ -696,34 +789,32 @@ fragment fs_mainOutput fs_main(
     {
         {
             {
-                metal::float4 _e91 = material.thread1_offsets_a;
-                metal::float4 _e94 = material.thread1_offsets_b;
-                int _e97 = material.thread1_offset_count;
-                metal::float4 _e98 = mc_thread_list_fast(warp, _e80, _e79, _e29, _e91, _e94, _e97);
-                s1_ = _e98;
+                metal::float4 _e92 = material.thread1_offsets_a;
+                metal::float4 _e95 = material.thread1_offsets_b;
+                int _e98 = material.thread1_offset_count;
+                metal::float4 _e99 = mc_thread_list_fast_with(warp, _e80, _e79, _e29, in_1.thread1_shape, _e92, _e95, _e98);
+                s1_ = _e99;
                 {
-                    metal::float4 _e101 = material.thread2_offsets_a;
-                    metal::float4 _e104 = material.thread2_offsets_b;
-                    int _e107 = material.thread2_offset_count;
-                    metal::float4 _e108 = mc_thread_list_fast(weft, _e80, _e79, _e46, _e101, _e104, _e107);
-                    s2_ = _e108;
+                    metal::float4 _e103 = material.thread2_offsets_a;
+                    metal::float4 _e106 = material.thread2_offsets_b;
+                    int _e109 = material.thread2_offset_count;
+                    metal::float4 _e110 = mc_thread_list_fast_with(weft, _e80, _e79, _e46, in_1.thread2_shape, _e103, _e106, _e109);
+                    s2_ = _e110;
                 }
             }
         }
     }
-    metal::float4 _e109 = s1_;
-    metal::float4 _e110 = s2_;
-    metal::float3 _e113 = mc_combine(_e109, _e110, a1_2, a2_1, metal::dot(n_7, _e80), metal::dot(n_7, _e79));
-    metal::float3 _e114 = weft_main_light_radiance(weft_frame);
-    metal::float3 direct = _e113 * _e114;
-    float _e118 = microcylinder_mean_fresnel(_e29.eta);
-    metal::float3 amb1_ = _e29.albedo + metal::float3(_e118);
-    float _e123 = microcylinder_mean_fresnel(_e46.eta);
-    metal::float3 amb2_ = _e46.albedo + metal::float3(_e123);
+    metal::float4 _e111 = s1_;
+    metal::float4 _e112 = s2_;
+    metal::float3 _e115 = mc_combine(_e111, _e112, a1_2, a2_1, metal::dot(n_7, _e80), metal::dot(n_7, _e79));
+    metal::float3 _e116 = weft_main_light_radiance(weft_frame);
+    metal::float3 direct = _e115 * _e116;
+    metal::float3 amb1_ = _e29.albedo + metal::float3(in_1.mean_fresnel.x);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(in_1.mean_fresnel.y);
     float cov = a1_2 + a2_1;
     metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_2 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
-    metal::float3 _e137 = weft_sh_irradiance(n_7, weft_frame);
-    metal::float3 ambient = _e137 * ambient_albedo;
+    metal::float3 _e139 = weft_sh_irradiance(n_7, weft_frame);
+    metal::float3 ambient = _e139 * ambient_albedo;
     metal::float3 radiance = metal::clamp((direct + ambient) * brightness, metal::float3(0.0), metal::float3(65504.0));
     return fs_mainOutput { metal::float4(radiance, 1.0) };
 }

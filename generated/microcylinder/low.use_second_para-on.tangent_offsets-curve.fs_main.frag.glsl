@@ -85,6 +85,25 @@ struct McFastNode {
     float v;
     float p;
 };
+struct McFastConst {
+    vec4 shape;
+    vec4 curve;
+    vec2 steps;
+};
+struct MicrocylinderVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+    vec4 thread1_shape;
+    vec4 thread1_curve;
+    vec2 thread1_steps;
+    vec4 thread2_shape;
+    vec4 thread2_curve;
+    vec2 thread2_steps;
+    vec2 mean_fresnel;
+};
 const float WEFT_PI = 3.1415927;
 const float WEFT_INV_PI = 0.31830987;
 const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -138,6 +157,13 @@ layout(location = 0) smooth in vec3 _vs2fs_location0;
 layout(location = 1) smooth in vec3 _vs2fs_location1;
 layout(location = 2) smooth in vec4 _vs2fs_location2;
 layout(location = 3) smooth in vec2 _vs2fs_location3;
+layout(location = 4) flat in vec4 _vs2fs_location4;
+layout(location = 5) flat in vec4 _vs2fs_location5;
+layout(location = 6) flat in vec2 _vs2fs_location6;
+layout(location = 7) flat in vec4 _vs2fs_location7;
+layout(location = 8) flat in vec4 _vs2fs_location8;
+layout(location = 9) flat in vec2 _vs2fs_location9;
+layout(location = 10) flat in vec2 _vs2fs_location10;
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
@@ -281,8 +307,8 @@ vec3 mc_combine(vec4 t1_, vec4 t2_, float a1_, float a2_, float n_dot_wi, float 
 vec4[2] mc_normal4_(vec4 t) {
     vec4 e_1 = exp(((-0.5 * t) * t));
     vec4 z = (abs(t) * 0.70710677);
-    vec4 k = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
-    vec4 poly = (k * (vec4(0.2548296) + (k * (vec4(-0.28449672) + (k * (vec4(1.4214138) + (k * (vec4(-1.4531521) + (k * 1.0614054)))))))));
+    vec4 k_1 = (vec4(1.0) / (vec4(1.0) + (0.3275911 * z)));
+    vec4 poly = (k_1 * (vec4(0.2548296) + (k_1 * (vec4(-0.28449672) + (k_1 * (vec4(1.4214138) + (k_1 * (vec4(-1.4531521) + (k_1 * 1.0614054)))))))));
     vec4 half_ = (vec4(0.5) - ((0.5 * poly) * e_1));
     return vec4[2]((e_1 * MC_INV_SQRT_TWO_PI), mix(-(half_), half_, greaterThanEqual(t, vec4(0.0))));
 }
@@ -441,8 +467,14 @@ float microcylinder_mean_fresnel(float eta_2) {
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
+McFastConst microcylinder_fast_const(McThread th_3, vec4 heights_1[9]) {
+    McFastConst k = McFastConst(vec4(0.0), vec4(0.0), vec2(0.0));
+    McFastConst _e10 = k;
+    return _e10;
+}
+
 void main() {
-    WeftVaryings in_1 = WeftVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
+    MicrocylinderVaryings in_1 = MicrocylinderVaryings(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3, _vs2fs_location4, _vs2fs_location5, _vs2fs_location6, _vs2fs_location7, _vs2fs_location8, _vs2fs_location9, _vs2fs_location10);
     vec4 s1_ = vec4(0.0);
     vec4 s2_ = vec4(0.0);
     vec4 _e4 = _group_1_binding_0_fs.albedo_map_st;
@@ -496,10 +528,8 @@ void main() {
     vec3 _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
     vec3 _e102 = weft_main_light_radiance();
     vec3 direct = (_e101 * _e102);
-    float _e106 = microcylinder_mean_fresnel(_e29.eta);
-    vec3 amb1_ = (_e29.albedo + vec3(_e106));
-    float _e111 = microcylinder_mean_fresnel(_e46.eta);
-    vec3 amb2_ = (_e46.albedo + vec3(_e111));
+    vec3 amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    vec3 amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     float cov = (a1_1 + a2_1);
     vec3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001))) : amb1_);
     vec3 _e125 = weft_sh_irradiance(n_3);

@@ -112,6 +112,29 @@ struct McFastNode {
     float p;
 };
 
+struct McFastConst {
+    float4 shape;
+    float4 curve;
+    float2 steps;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct MicrocylinderVaryings {
+    float4 clip_position : SV_Position;
+    float3 world_position : LOC0;
+    float3 world_normal : LOC1;
+    float4 world_tangent : LOC2;
+    float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
+};
+
 static const float WEFT_PI = 3.1415927;
 static const float WEFT_INV_PI = 0.31830987;
 static const uint TANGENT_OFFSETS_CURVE = 0u;
@@ -164,11 +187,18 @@ StructuredBuffer<uint> nagaGroup1SamplerIndexArray : register(t64, space1);
 #define material_sampler (nagaSamplerHeap[nagaGroup1SamplerIndexArray[1]])
 Texture2D<float4> albedo_map : register(t3, space1);
 
-struct VertexOutput_vs_main {
+struct VertexOutput_vs_microcylinder {
     float3 world_position_2 : LOC0;
     float3 world_normal_1 : LOC1;
     float4 world_tangent : LOC2;
     float2 uv0_ : LOC3;
+    nointerpolation float4 thread1_shape : LOC4;
+    nointerpolation float4 thread1_curve : LOC5;
+    nointerpolation float2 thread1_steps : LOC6;
+    nointerpolation float4 thread2_shape : LOC7;
+    nointerpolation float4 thread2_curve : LOC8;
+    nointerpolation float2 thread2_steps : LOC9;
+    nointerpolation float2 mean_fresnel : LOC10;
     float4 clip_position : SV_Position;
 };
 
@@ -177,6 +207,13 @@ struct FragmentInput_fs_main {
     float3 world_normal_2 : LOC1;
     float4 world_tangent_1 : LOC2;
     float2 uv0_1 : LOC3;
+    nointerpolation float4 thread1_shape_1 : LOC4;
+    nointerpolation float4 thread1_curve_1 : LOC5;
+    nointerpolation float2 thread1_steps_1 : LOC6;
+    nointerpolation float4 thread2_shape_1 : LOC7;
+    nointerpolation float4 thread2_curve_1 : LOC8;
+    nointerpolation float2 thread2_steps_1 : LOC9;
+    nointerpolation float2 mean_fresnel_1 : LOC10;
     float4 clip_position_1 : SV_Position;
 };
 
@@ -276,6 +313,30 @@ WeftSurface weft_surface(float3 world_position_1, float3 world_normal)
     return weftsurface;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2)
+{
+    WeftVaryings out_ = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_2.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_2.normal, normal3_), (0.0).xxx);
+    out_.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_2.tangent.xyz, model3_), (0.0).xxx);
+    out_.world_tangent = float4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float3x3 weft_tangent_frame(float3 n_2, float4 tangent)
 {
     float3 t_in = tangent.xyz;
@@ -370,8 +431,8 @@ ret_mc_normal4_ mc_normal4_(float4 t)
 {
     float4 e_1 = exp(((-0.5 * t) * t));
     float4 z = (abs(t) * 0.70710677);
-    float4 k = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
-    float4 poly = (k * ((0.2548296).xxxx + (k * ((-0.28449672).xxxx + (k * ((1.4214138).xxxx + (k * ((-1.4531521).xxxx + (k * 1.0614054)))))))));
+    float4 k_1 = ((1.0).xxxx / ((1.0).xxxx + (0.3275911 * z)));
+    float4 poly = (k_1 * ((0.2548296).xxxx + (k_1 * ((-0.28449672).xxxx + (k_1 * ((1.4214138).xxxx + (k_1 * ((-1.4531521).xxxx + (k_1 * 1.0614054)))))))));
     float4 half_ = ((0.5).xxxx - ((0.5 * poly) * e_1));
     const float4 _e46 = weft_select4_f32bit((t >= (0.0).xxxx), half_, -(half_));
     return Constructarray2_float4_((e_1 * MC_INV_SQRT_TWO_PI), _e46);
@@ -584,29 +645,72 @@ float microcylinder_mean_fresnel(float eta_2)
     return (_e1 + ((1.0 - _e1) / 21.0));
 }
 
-VertexOutput_vs_main vs_main(WeftVertexInput in_)
-{
-    WeftVaryings out_ = (WeftVaryings)0;
+McFastConst ConstructMcFastConst(float4 arg0, float4 arg1, float2 arg2) {
+    McFastConst ret = (McFastConst)0;
+    ret.shape = arg0;
+    ret.curve = arg1;
+    ret.steps = arg2;
+    return ret;
+}
 
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    float4 world = mul(float4(in_.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_.clip_position = mul(float4(world.xyz, 1.0), _e43);
-    out_.world_position = world.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_.normal, normal3_), (0.0).xxx);
-    out_.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_.tangent.xyz, model3_), (0.0).xxx);
-    out_.world_tangent = float4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+McFastConst microcylinder_fast_const(McThread th_3, float4 heights_1[9])
+{
+    McFastConst k = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+
+    McFastConst _e10 = k;
+    const McFastConst mcfastconst = _e10;
+    return mcfastconst;
+}
+
+MicrocylinderVaryings ConstructMicrocylinderVaryings(float4 arg0, float3 arg1, float3 arg2, float4 arg3, float2 arg4, float4 arg5, float4 arg6, float2 arg7, float4 arg8, float4 arg9, float2 arg10, float2 arg11) {
+    MicrocylinderVaryings ret = (MicrocylinderVaryings)0;
+    ret.clip_position = arg0;
+    ret.world_position = arg1;
+    ret.world_normal = arg2;
+    ret.world_tangent = arg3;
+    ret.uv0_ = arg4;
+    ret.thread1_shape = arg5;
+    ret.thread1_curve = arg6;
+    ret.thread1_steps = arg7;
+    ret.thread2_shape = arg8;
+    ret.thread2_curve = arg9;
+    ret.thread2_steps = arg10;
+    ret.mean_fresnel = arg11;
+    return ret;
+}
+
+VertexOutput_vs_microcylinder vs_microcylinder(WeftVertexInput in_)
+{
+    McFastConst k2_ = ConstructMcFastConst((0.0).xxxx, (0.0).xxxx, (0.0).xx);
+
+    const WeftVaryings _e1 = weft_forward_vertex(in_);
+    float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    const McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, (1.0).xxx);
+    float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    const McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, (1.0).xxx);
+    float4 _e42[9] = material.thread1_curve;
+    const McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        float4 _e54[9] = material.thread2_curve;
+        const McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    float4 _e65 = k2_.shape;
+    float4 _e67 = k2_.curve;
+    float2 _e69 = k2_.steps;
+    const float _e71 = microcylinder_mean_fresnel(_e20.eta);
+    const float _e73 = microcylinder_mean_fresnel(_e39.eta);
+    const MicrocylinderVaryings microcylindervaryings = ConstructMicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, float2(_e71, _e73));
+    const VertexOutput_vs_microcylinder microcylindervaryings_1 = { microcylindervaryings.world_position, microcylindervaryings.world_normal, microcylindervaryings.world_tangent, microcylindervaryings.uv0_, microcylindervaryings.thread1_shape, microcylindervaryings.thread1_curve, microcylindervaryings.thread1_steps, microcylindervaryings.thread2_shape, microcylindervaryings.thread2_curve, microcylindervaryings.thread2_steps, microcylindervaryings.mean_fresnel, microcylindervaryings.clip_position };
+    return microcylindervaryings_1;
 }
 
 McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
@@ -619,7 +723,7 @@ McFrame ConstructMcFrame(float3 arg0, float3 arg1, float3 arg2) {
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
 {
-    WeftVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1 };
+    MicrocylinderVaryings in_1 = { fragmentinput_fs_main.clip_position_1, fragmentinput_fs_main.world_position_3, fragmentinput_fs_main.world_normal_2, fragmentinput_fs_main.world_tangent_1, fragmentinput_fs_main.uv0_1, fragmentinput_fs_main.thread1_shape_1, fragmentinput_fs_main.thread1_curve_1, fragmentinput_fs_main.thread1_steps_1, fragmentinput_fs_main.thread2_shape_1, fragmentinput_fs_main.thread2_curve_1, fragmentinput_fs_main.thread2_steps_1, fragmentinput_fs_main.mean_fresnel_1 };
     float4 s1_ = (0.0).xxxx;
     float4 s2_ = (0.0).xxxx;
 
@@ -674,10 +778,8 @@ float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0
     const float3 _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
     const float3 _e102 = weft_main_light_radiance();
     float3 direct = (_e101 * _e102);
-    const float _e106 = microcylinder_mean_fresnel(_e29.eta);
-    float3 amb1_ = (_e29.albedo + (_e106).xxx);
-    const float _e111 = microcylinder_mean_fresnel(_e46.eta);
-    float3 amb2_ = (_e46.albedo + (_e111).xxx);
+    float3 amb1_ = (_e29.albedo + (in_1.mean_fresnel.x).xxx);
+    float3 amb2_ = (_e46.albedo + (in_1.mean_fresnel.y).xxx);
     float cov = (a1_1 + a2_1);
     float3 ambient_albedo = ((cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / (max(cov, 0.0001)).xxx) : amb1_);
     const float3 _e125 = weft_sh_irradiance(n_3);

@@ -94,6 +94,27 @@ struct McFastNode {
     p: f32,
 }
 
+struct McFastConst {
+    shape: vec4<f32>,
+    curve: vec4<f32>,
+    steps: vec2<f32>,
+}
+
+struct MicrocylinderVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0_: vec2<f32>,
+    @location(4) @interpolate(flat) thread1_shape: vec4<f32>,
+    @location(5) @interpolate(flat) thread1_curve: vec4<f32>,
+    @location(6) @interpolate(flat) thread1_steps: vec2<f32>,
+    @location(7) @interpolate(flat) thread2_shape: vec4<f32>,
+    @location(8) @interpolate(flat) thread2_curve: vec4<f32>,
+    @location(9) @interpolate(flat) thread2_steps: vec2<f32>,
+    @location(10) @interpolate(flat) mean_fresnel: vec2<f32>,
+}
+
 const WEFT_PI: f32 = 3.1415927f;
 const WEFT_INV_PI: f32 = 0.31830987f;
 const TANGENT_OFFSETS_CURVE: u32 = 0u;
@@ -213,6 +234,28 @@ fn weft_surface(world_position_1: vec3<f32>, world_normal: vec3<f32>) -> WeftSur
     return WeftSurface(_e6, _e7);
 }
 
+fn weft_forward_vertex(in_2: WeftVertexInput) -> WeftVaryings {
+    var out: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_2.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_2.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0f));
+    out.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0f));
+    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    let _e66 = out;
+    return _e66;
+}
+
 fn weft_tangent_frame(n_2: vec3<f32>, tangent: vec4<f32>) -> mat3x3<f32> {
     let t_in = tangent.xyz;
     let t_proj = (t_in - (n_2 * dot(n_2, t_in)));
@@ -291,8 +334,8 @@ fn mc_combine(t1_: vec4<f32>, t2_: vec4<f32>, a1_: f32, a2_: f32, n_dot_wi: f32,
 fn mc_normal4_(t: vec4<f32>) -> array<vec4<f32>, 2> {
     let e_1 = exp(((-0.5f * t) * t));
     let z = (abs(t) * 0.70710677f);
-    let k = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
-    let poly = (k * (vec4(0.2548296f) + (k * (vec4(-0.28449672f) + (k * (vec4(1.4214138f) + (k * (vec4(-1.4531521f) + (k * 1.0614054f)))))))));
+    let k_1 = (vec4(1f) / (vec4(1f) + (0.3275911f * z)));
+    let poly = (k_1 * (vec4(0.2548296f) + (k_1 * (vec4(-0.28449672f) + (k_1 * (vec4(1.4214138f) + (k_1 * (vec4(-1.4531521f) + (k_1 * 1.0614054f)))))))));
     let half = (vec4(0.5f) - ((0.5f * poly) * e_1));
     return array<vec4<f32>, 2>((e_1 * MC_INV_SQRT_TWO_PI), select(-(half), half, (t >= vec4(0f))));
 }
@@ -453,31 +496,47 @@ fn microcylinder_mean_fresnel(eta_2: f32) -> f32 {
     return (_e1 + ((1f - _e1) / 21f));
 }
 
-@vertex 
-fn vs_main(in: WeftVertexInput) -> WeftVaryings {
-    var out: WeftVaryings;
+fn microcylinder_fast_const(th_3: McThread, heights_1: array<vec4<f32>, 9>) -> McFastConst {
+    var k: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
 
-    let model = weft_object.model;
-    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
-    let nm = weft_object.normal_matrix;
-    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    let world = (model * vec4<f32>(in.position, 1f));
-    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in.tangent.w < 0f)) * mirror);
-    let _e43 = weft_frame.view_proj;
-    out.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
-    out.world_position = world.xyz;
-    let _e55 = weft_safe_normalize((normal3_ * in.normal), vec3(0f));
-    out.world_normal = _e55;
-    let _e62 = weft_safe_normalize((model3_ * in.tangent.xyz), vec3(0f));
-    out.world_tangent = vec4<f32>(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    let _e66 = out;
-    return _e66;
+    let _e10 = k;
+    return _e10;
+}
+
+@vertex 
+fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
+    var k2_: McFastConst = McFastConst(vec4(0f), vec4(0f), vec2(0f));
+
+    let _e1 = weft_forward_vertex(in);
+    let _e4 = material.thread1_color;
+    let _e8 = material.thread1_ior;
+    let _e11 = material.thread1_isotropy;
+    let _e14 = material.thread1_gamma_s;
+    let _e17 = material.thread1_gamma_v;
+    let _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, vec3(1f));
+    let _e23 = material.thread2_color;
+    let _e27 = material.thread2_ior;
+    let _e30 = material.thread2_isotropy;
+    let _e33 = material.thread2_gamma_s;
+    let _e36 = material.thread2_gamma_v;
+    let _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, vec3(1f));
+    let _e42 = material.thread1_curve;
+    let _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        let _e54 = material.thread2_curve;
+        let _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    let _e65 = k2_.shape;
+    let _e67 = k2_.curve;
+    let _e69 = k2_.steps;
+    let _e71 = microcylinder_mean_fresnel(_e20.eta);
+    let _e73 = microcylinder_mean_fresnel(_e39.eta);
+    return MicrocylinderVaryings(_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, _e43.shape, _e43.curve, _e43.steps, _e65, _e67, _e69, vec2<f32>(_e71, _e73));
 }
 
 @fragment 
-fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in_1: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     var s1_: vec4<f32> = vec4(0f);
     var s2_: vec4<f32> = vec4(0f);
 
@@ -532,10 +591,8 @@ fn fs_main(in_1: WeftVaryings) -> @location(0) vec4<f32> {
     let _e101 = mc_combine(_e97, _e98, a1_1, a2_1, dot(n_3, _e80), dot(n_3, _e79));
     let _e102 = weft_main_light_radiance();
     let direct = (_e101 * _e102);
-    let _e106 = microcylinder_mean_fresnel(_e29.eta);
-    let amb1_ = (_e29.albedo + vec3(_e106));
-    let _e111 = microcylinder_mean_fresnel(_e46.eta);
-    let amb2_ = (_e46.albedo + vec3(_e111));
+    let amb1_ = (_e29.albedo + vec3(in_1.mean_fresnel.x));
+    let amb2_ = (_e46.albedo + vec3(in_1.mean_fresnel.y));
     let cov = (a1_1 + a2_1);
     let ambient_albedo = select(amb1_, (((a1_1 * amb1_) + (a2_1 * amb2_)) / vec3(max(cov, 0.0001f))), (cov > 0.0001f));
     let _e125 = weft_sh_irradiance(n_3);

@@ -88,6 +88,28 @@ struct McPsi {
     float ok;
     char _pad4[12];
 };
+struct McFastConst {
+    metal::float4 shape;
+    metal::float4 curve;
+    metal::float2 steps;
+    char _pad3[8];
+};
+struct MicrocylinderVaryings {
+    metal::float4 clip_position;
+    metal::float3 world_position;
+    metal::float3 world_normal;
+    metal::float4 world_tangent;
+    metal::float2 uv0_;
+    char _pad5[8];
+    metal::float4 thread1_shape;
+    metal::float4 thread1_curve;
+    metal::float2 thread1_steps;
+    char _pad8[8];
+    metal::float4 thread2_shape;
+    metal::float4 thread2_curve;
+    metal::float2 thread2_steps;
+    metal::float2 mean_fresnel;
+};
 constant float WEFT_PI = 3.1415927;
 constant float WEFT_INV_PI = 0.31830987;
 constant uint TANGENT_OFFSETS_CURVE = 0u;
@@ -230,6 +252,31 @@ WeftSurface weft_surface(
     metal::float3 _e6 = weft_view_direction(world_position_1, metal::float3(0.0, 0.0, 1.0), weft_frame);
     metal::float3 _e7 = weft_safe_normalize(world_normal, _e6);
     return WeftSurface {_e6, _e7};
+}
+
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out;
+    return _e66;
 }
 
 metal::float3x3 weft_tangent_frame(
@@ -479,44 +526,70 @@ float microcylinder_mean_fresnel(
     return _e1 + ((1.0 - _e1) / 21.0);
 }
 
-struct vs_mainInput {
+McFastConst microcylinder_fast_const(
+    McThread th_2,
+    type_5 heights
+) {
+    McFastConst k_2 = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    McFastConst _e10 = k_2;
+    return _e10;
+}
+
+struct vs_microcylinderInput {
     metal::float3 position [[attribute(0)]];
     metal::float3 normal [[attribute(1)]];
     metal::float4 tangent_1 [[attribute(2)]];
     metal::float2 uv0_ [[attribute(3)]];
 };
-struct vs_mainOutput {
+struct vs_microcylinderOutput {
     metal::float4 clip_position [[position]];
     metal::float3 world_position [[user(loc0), center_perspective]];
     metal::float3 world_normal [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
-vertex vs_mainOutput vs_main(
-  vs_mainInput varyings [[stage_in]]
+vertex vs_microcylinderOutput vs_microcylinder(
+  vs_microcylinderInput varyings [[stage_in]]
 , constant WeftFrame& weft_frame [[buffer(0)]]
 , constant WeftObject& weft_object [[buffer(2)]]
+, constant WeftMaterial& material [[buffer(1)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_1, varyings.uv0_ };
-    WeftVaryings out = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    metal::float4 world = model * metal::float4(in.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
-    out.world_position = world.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    WeftVaryings _e66 = out;
-    const auto _tmp = _e66;
-    return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
+    McFastConst k2_ = McFastConst {metal::float4(0.0), metal::float4(0.0), metal::float2(0.0)};
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    metal::float4 _e4 = material.thread1_color;
+    float _e8 = material.thread1_ior;
+    float _e11 = material.thread1_isotropy;
+    float _e14 = material.thread1_gamma_s;
+    float _e17 = material.thread1_gamma_v;
+    McThread _e20 = microcylinder_thread(_e4.xyz, _e8, _e11, _e14, _e17, metal::float3(1.0));
+    metal::float4 _e23 = material.thread2_color;
+    float _e27 = material.thread2_ior;
+    float _e30 = material.thread2_isotropy;
+    float _e33 = material.thread2_gamma_s;
+    float _e36 = material.thread2_gamma_v;
+    McThread _e39 = microcylinder_thread(_e23.xyz, _e27, _e30, _e33, _e36, metal::float3(1.0));
+    type_5 _e42 = material.thread1_curve;
+    McFastConst _e43 = microcylinder_fast_const(_e20, _e42);
+    {
+        type_5 _e54 = material.thread2_curve;
+        McFastConst _e55 = microcylinder_fast_const(_e39, _e54);
+        k2_ = _e55;
+    }
+    metal::float4 _e65 = k2_.shape;
+    metal::float4 _e67 = k2_.curve;
+    metal::float2 _e69 = k2_.steps;
+    float _e71 = microcylinder_mean_fresnel(_e20.eta);
+    float _e73 = microcylinder_mean_fresnel(_e39.eta);
+    const auto _tmp = MicrocylinderVaryings {_e1.clip_position, _e1.world_position, _e1.world_normal, _e1.world_tangent, _e1.uv0_, {}, _e43.shape, _e43.curve, _e43.steps, {}, _e65, _e67, _e69, metal::float2(_e71, _e73)};
+    return vs_microcylinderOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_, _tmp.thread1_shape, _tmp.thread1_curve, _tmp.thread1_steps, _tmp.thread2_shape, _tmp.thread2_curve, _tmp.thread2_steps, _tmp.mean_fresnel };
 }
 
 
@@ -525,6 +598,13 @@ struct fs_mainInput {
     metal::float3 world_normal_1 [[user(loc1), center_perspective]];
     metal::float4 world_tangent [[user(loc2), center_perspective]];
     metal::float2 uv0_ [[user(loc3), center_perspective]];
+    metal::float4 thread1_shape [[user(loc4), flat]];
+    metal::float4 thread1_curve [[user(loc5), flat]];
+    metal::float2 thread1_steps [[user(loc6), flat]];
+    metal::float4 thread2_shape [[user(loc7), flat]];
+    metal::float4 thread2_curve [[user(loc8), flat]];
+    metal::float2 thread2_steps [[user(loc9), flat]];
+    metal::float2 mean_fresnel [[user(loc10), flat]];
 };
 struct fs_mainOutput {
     metal::float4 member_1 [[color(0)]];
@@ -537,7 +617,7 @@ fragment fs_mainOutput fs_main(
 , metal::sampler material_sampler [[sampler(0)]]
 , metal::texture2d<float, metal::access::sample> albedo_map [[texture(0)]]
 ) {
-    const WeftVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_ };
+    const MicrocylinderVaryings in_1 = { clip_position, varyings_1.world_position_2, varyings_1.world_normal_1, varyings_1.world_tangent, varyings_1.uv0_, {}, varyings_1.thread1_shape, varyings_1.thread1_curve, varyings_1.thread1_steps, {}, varyings_1.thread2_shape, varyings_1.thread2_curve, varyings_1.thread2_steps, varyings_1.mean_fresnel };
     metal::float4 s1_ = metal::float4(0.0);
     metal::float4 s2_ = metal::float4(0.0);
     metal::float4 _e4 = material.albedo_map_st;
@@ -593,10 +673,8 @@ fragment fs_mainOutput fs_main(
     metal::float3 _e113 = mc_combine(_e109, _e110, a1_1, a2_1, metal::dot(n_4, _e80), metal::dot(n_4, _e79));
     metal::float3 _e114 = weft_main_light_radiance(weft_frame);
     metal::float3 direct = _e113 * _e114;
-    float _e118 = microcylinder_mean_fresnel(_e29.eta);
-    metal::float3 amb1_ = _e29.albedo + metal::float3(_e118);
-    float _e123 = microcylinder_mean_fresnel(_e46.eta);
-    metal::float3 amb2_ = _e46.albedo + metal::float3(_e123);
+    metal::float3 amb1_ = _e29.albedo + metal::float3(in_1.mean_fresnel.x);
+    metal::float3 amb2_ = _e46.albedo + metal::float3(in_1.mean_fresnel.y);
     float cov = a1_1 + a2_1;
     metal::float3 ambient_albedo = (cov > 0.0001) ? (((a1_1 * amb1_) + (a2_1 * amb2_)) / metal::float3(metal::max(cov, 0.0001))) : amb1_;
     metal::float3 _e137 = weft_sh_irradiance(n_4, weft_frame);

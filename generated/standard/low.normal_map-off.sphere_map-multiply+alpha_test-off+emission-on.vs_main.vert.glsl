@@ -168,6 +168,27 @@ WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_1) {
     return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_1, _e4), 0.0, 1.0));
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_2) {
+    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_2.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_.world_position = world.xyz;
+    vec3 _e55 = weft_safe_normalize((normal3_ * in_2.normal), vec3(0.0));
+    out_.world_normal = _e55;
+    vec3 _e62 = weft_safe_normalize((model3_ * in_2.tangent.xyz), vec3(0.0));
+    out_.world_tangent = vec4(_e62, bitangent_sign);
+    out_.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out_;
+    return _e66;
+}
+
 vec2 weft_transform_uv(vec2 uv, vec4 st) {
     return ((uv * st.xy) + st.zw);
 }
@@ -205,28 +226,12 @@ vec3 weft_half_f_schlick(vec3 f0_1, float v_dot_h) {
 
 void main() {
     WeftVertexInput in_ = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
-    WeftVaryings out_ = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
-    mat4x4 model = _group_2_binding_0_vs.model;
-    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
-    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    vec4 world = (model * vec4(in_.position, 1.0));
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
-    out_.clip_position = (_e43 * vec4(world.xyz, 1.0));
-    out_.world_position = world.xyz;
-    vec3 _e55 = weft_safe_normalize((normal3_ * in_.normal), vec3(0.0));
-    out_.world_normal = _e55;
-    vec3 _e62 = weft_safe_normalize((model3_ * in_.tangent.xyz), vec3(0.0));
-    out_.world_tangent = vec4(_e62, bitangent_sign);
-    out_.uv0_ = in_.uv0_;
-    WeftVaryings _e66 = out_;
-    gl_Position = _e66.clip_position;
-    _vs2fs_location0 = _e66.world_position;
-    _vs2fs_location1 = _e66.world_normal;
-    _vs2fs_location2 = _e66.world_tangent;
-    _vs2fs_location3 = _e66.uv0_;
+    WeftVaryings _e1 = weft_forward_vertex(in_);
+    gl_Position = _e1.clip_position;
+    _vs2fs_location0 = _e1.world_position;
+    _vs2fs_location1 = _e1.world_normal;
+    _vs2fs_location2 = _e1.world_tangent;
+    _vs2fs_location3 = _e1.uv0_;
     gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
     return;
 }

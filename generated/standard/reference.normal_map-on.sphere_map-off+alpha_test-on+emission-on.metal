@@ -278,6 +278,31 @@ WeftLightGeometry weft_main_light_geometry(
     return WeftLightGeometry {_e2, _e4, _e6, metal::saturate(metal::dot(n_4, _e2)), metal::saturate(metal::dot(n_4, _e4)), metal::saturate(metal::dot(v_1, _e4))};
 }
 
+WeftVaryings weft_forward_vertex(
+    WeftVertexInput in_2,
+    constant WeftFrame& weft_frame,
+    constant WeftObject& weft_object
+) {
+    WeftVaryings out = {};
+    metal::float4x4 model = weft_object.model;
+    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    metal::float4x4 nm = weft_object.normal_matrix;
+    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    metal::float4 world = model * metal::float4(in_2.position, 1.0);
+    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
+    float bitangent_sign = ((in_2.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
+    metal::float4x4 _e43 = weft_frame.view_proj;
+    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
+    out.world_position = world.xyz;
+    metal::float3 _e55 = weft_safe_normalize(normal3_ * in_2.normal, metal::float3(0.0));
+    out.world_normal = _e55;
+    metal::float3 _e62 = weft_safe_normalize(model3_ * in_2.tangent.xyz, metal::float3(0.0));
+    out.world_tangent = metal::float4(_e62, bitangent_sign);
+    out.uv0_ = in_2.uv0_;
+    WeftVaryings _e66 = out;
+    return _e66;
+}
+
 metal::float3x3 weft_tangent_frame(
     metal::float3 n_5,
     metal::float4 tangent
@@ -391,24 +416,8 @@ vertex vs_mainOutput vs_main(
 , constant WeftObject& weft_object [[buffer(2)]]
 ) {
     const WeftVertexInput in = { varyings.position, varyings.normal, varyings.tangent_2, varyings.uv0_ };
-    WeftVaryings out = {};
-    metal::float4x4 model = weft_object.model;
-    metal::float3x3 model3_ = metal::float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    metal::float4x4 nm = weft_object.normal_matrix;
-    metal::float3x3 normal3_ = metal::float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
-    metal::float4 world = model * metal::float4(in.position, 1.0);
-    float mirror = (metal::determinant(model3_) < 0.0) ? -1.0 : 1.0;
-    float bitangent_sign = ((in.tangent.w < 0.0) ? -1.0 : 1.0) * mirror;
-    metal::float4x4 _e43 = weft_frame.view_proj;
-    out.clip_position = _e43 * metal::float4(world.xyz, 1.0);
-    out.world_position = world.xyz;
-    metal::float3 _e55 = weft_safe_normalize(normal3_ * in.normal, metal::float3(0.0));
-    out.world_normal = _e55;
-    metal::float3 _e62 = weft_safe_normalize(model3_ * in.tangent.xyz, metal::float3(0.0));
-    out.world_tangent = metal::float4(_e62, bitangent_sign);
-    out.uv0_ = in.uv0_;
-    WeftVaryings _e66 = out;
-    const auto _tmp = _e66;
+    WeftVaryings _e1 = weft_forward_vertex(in, weft_frame, weft_object);
+    const auto _tmp = _e1;
     return vs_mainOutput { _tmp.clip_position, _tmp.world_position, _tmp.world_normal, _tmp.world_tangent, _tmp.uv0_ };
 }
 

@@ -245,6 +245,30 @@ WeftLightGeometry weft_main_light_geometry(float3 n_3, float3 v_1)
     return weftlightgeometry;
 }
 
+WeftVaryings weft_forward_vertex(WeftVertexInput in_3)
+{
+    WeftVaryings out_1 = (WeftVaryings)0;
+
+    float4x4 model = weft_object.model;
+    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    float4x4 nm = weft_object.normal_matrix;
+    float3x3 normal3_ = float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    float4 world = mul(float4(in_3.position, 1.0), model);
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    float4x4 _e43 = weft_frame.view_proj;
+    out_1.clip_position = mul(float4(world.xyz, 1.0), _e43);
+    out_1.world_position = world.xyz;
+    const float3 _e55 = weft_safe_normalize(mul(in_3.normal, normal3_), (0.0).xxx);
+    out_1.world_normal = _e55;
+    const float3 _e62 = weft_safe_normalize(mul(in_3.tangent.xyz, model3_), (0.0).xxx);
+    out_1.world_tangent = float4(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e66 = out_1;
+    const WeftVaryings weftvaryings = _e66;
+    return weftvaryings;
+}
+
 float3x3 weft_tangent_frame(float3 n_4, float4 tangent)
 {
     float3 t_in = tangent.xyz;
@@ -350,11 +374,11 @@ VertexOutput_vs_outline vs_outline(WeftOutlineVertex in_)
     WeftOutlineVaryings out_ = (WeftOutlineVaryings)0;
 
     float4x4 _e3 = weft_object.model;
-    float4 world = mul(float4(in_.position, 1.0), _e3);
-    float4x4 nm = weft_object.normal_matrix;
-    float3 normal = mul(in_.normal, float3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz));
+    float4 world_1 = mul(float4(in_.position, 1.0), _e3);
+    float4x4 nm_1 = weft_object.normal_matrix;
+    float3 normal = mul(in_.normal, float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz));
     float4x4 _e22 = weft_frame.view_proj;
-    float4 clip_ = mul(float4(world.xyz, 1.0), _e22);
+    float4 clip_ = mul(float4(world_1.xyz, 1.0), _e22);
     float4 _e29 = weft_frame.viewport;
     float2 size = _e29.xy;
     float4x4 _e33 = weft_frame.view_proj;
@@ -395,27 +419,10 @@ float4 fs_outline() : SV_Target0
 
 VertexOutput_vs_main vs_main(WeftVertexInput in_1)
 {
-    WeftVaryings out_1 = (WeftVaryings)0;
-
-    float4x4 model = weft_object.model;
-    float3x3 model3_ = float3x3(model[0].xyz, model[1].xyz, model[2].xyz);
-    float4x4 nm_1 = weft_object.normal_matrix;
-    float3x3 normal3_ = float3x3(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    float4 world_1 = mul(float4(in_1.position, 1.0), model);
-    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
-    float bitangent_sign = (((in_1.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
-    float4x4 _e43 = weft_frame.view_proj;
-    out_1.clip_position = mul(float4(world_1.xyz, 1.0), _e43);
-    out_1.world_position = world_1.xyz;
-    const float3 _e55 = weft_safe_normalize(mul(in_1.normal, normal3_), (0.0).xxx);
-    out_1.world_normal = _e55;
-    const float3 _e62 = weft_safe_normalize(mul(in_1.tangent.xyz, model3_), (0.0).xxx);
-    out_1.world_tangent = float4(_e62, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    WeftVaryings _e66 = out_1;
-    const WeftVaryings weftvaryings = _e66;
-    const VertexOutput_vs_main weftvaryings_1 = { weftvaryings.world_position, weftvaryings.world_normal, weftvaryings.world_tangent, weftvaryings.uv0_, weftvaryings.clip_position };
-    return weftvaryings_1;
+    const WeftVaryings _e1 = weft_forward_vertex(in_1);
+    const WeftVaryings weftvaryings_1 = _e1;
+    const VertexOutput_vs_main weftvaryings_1_ = { weftvaryings_1.world_position, weftvaryings_1.world_normal, weftvaryings_1.world_tangent, weftvaryings_1.uv0_, weftvaryings_1.clip_position };
+    return weftvaryings_1_;
 }
 
 float4 fs_main(FragmentInput_fs_main fragmentinput_fs_main) : SV_Target0

@@ -190,6 +190,28 @@ fn weft_main_light_geometry(n_2: vec3<f32>, v_1: vec3<f32>) -> WeftLightGeometry
     return WeftLightGeometry(_e2, _e4, _e6, saturate(dot(n_2, _e2)), saturate(dot(n_2, _e4)), saturate(dot(v_1, _e4)));
 }
 
+fn weft_forward_vertex(in_3: WeftVertexInput) -> WeftVaryings {
+    var out_1: WeftVaryings;
+
+    let model = weft_object.model;
+    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
+    let nm = weft_object.normal_matrix;
+    let normal3_ = mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    let world = (model * vec4<f32>(in_3.position, 1f));
+    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
+    let bitangent_sign = (select(1f, -1f, (in_3.tangent.w < 0f)) * mirror);
+    let _e43 = weft_frame.view_proj;
+    out_1.clip_position = (_e43 * vec4<f32>(world.xyz, 1f));
+    out_1.world_position = world.xyz;
+    let _e55 = weft_safe_normalize((normal3_ * in_3.normal), vec3(0f));
+    out_1.world_normal = _e55;
+    let _e62 = weft_safe_normalize((model3_ * in_3.tangent.xyz), vec3(0f));
+    out_1.world_tangent = vec4<f32>(_e62, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    let _e66 = out_1;
+    return _e66;
+}
+
 fn weft_transform_uv(uv: vec2<f32>, st: vec4<f32>) -> vec2<f32> {
     return ((uv * st.xy) + st.zw);
 }
@@ -218,11 +240,11 @@ fn vs_outline(in: WeftOutlineVertex) -> WeftOutlineVaryings {
     var out: WeftOutlineVaryings;
 
     let _e3 = weft_object.model;
-    let world = (_e3 * vec4<f32>(in.position, 1f));
-    let nm = weft_object.normal_matrix;
-    let normal = (mat3x3<f32>(nm[0].xyz, nm[1].xyz, nm[2].xyz) * in.normal);
+    let world_1 = (_e3 * vec4<f32>(in.position, 1f));
+    let nm_1 = weft_object.normal_matrix;
+    let normal = (mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz) * in.normal);
     let _e22 = weft_frame.view_proj;
-    let clip = (_e22 * vec4<f32>(world.xyz, 1f));
+    let clip = (_e22 * vec4<f32>(world_1.xyz, 1f));
     let _e29 = weft_frame.viewport;
     let size = _e29.xy;
     let _e33 = weft_frame.view_proj;
@@ -261,25 +283,8 @@ fn fs_outline() -> @location(0) vec4<f32> {
 
 @vertex 
 fn vs_main(in_1: WeftVertexInput) -> WeftVaryings {
-    var out_1: WeftVaryings;
-
-    let model = weft_object.model;
-    let model3_ = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
-    let nm_1 = weft_object.normal_matrix;
-    let normal3_ = mat3x3<f32>(nm_1[0].xyz, nm_1[1].xyz, nm_1[2].xyz);
-    let world_1 = (model * vec4<f32>(in_1.position, 1f));
-    let mirror = select(1f, -1f, (determinant(model3_) < 0f));
-    let bitangent_sign = (select(1f, -1f, (in_1.tangent.w < 0f)) * mirror);
-    let _e43 = weft_frame.view_proj;
-    out_1.clip_position = (_e43 * vec4<f32>(world_1.xyz, 1f));
-    out_1.world_position = world_1.xyz;
-    let _e55 = weft_safe_normalize((normal3_ * in_1.normal), vec3(0f));
-    out_1.world_normal = _e55;
-    let _e62 = weft_safe_normalize((model3_ * in_1.tangent.xyz), vec3(0f));
-    out_1.world_tangent = vec4<f32>(_e62, bitangent_sign);
-    out_1.uv0_ = in_1.uv0_;
-    let _e66 = out_1;
-    return _e66;
+    let _e1 = weft_forward_vertex(in_1);
+    return _e1;
 }
 
 @fragment 

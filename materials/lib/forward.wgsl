@@ -25,6 +25,12 @@ struct WeftVaryings {
 
 @vertex
 fn vs_main(in: WeftVertexInput) -> WeftVaryings {
+    return weft_forward_vertex(in);
+}
+
+// The body of vs_main, for a material whose vertex stage adds varyings of its
+// own (microcylinder's vs_microcylinder: values of its uniforms alone, flat).
+fn weft_forward_vertex(in: WeftVertexInput) -> WeftVaryings {
     let model = weft_object.model;
     let model3 = mat3x3<f32>(model[0].xyz, model[1].xyz, model[2].xyz);
     let nm = weft_object.normal_matrix;

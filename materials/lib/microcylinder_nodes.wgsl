@@ -344,8 +344,13 @@ fn mc_thread_curve_low(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
 //     both cells of equal width in theta_h: one division); the profile's
 //     arc length by 2-point Gauss-Legendre on each half (exact for a
 //     straight slope, < 1e-5 relative for the default arch).
-// mc_thread_list_fast / mc_thread_curve_fast keep their signatures
-// (tests/physics/microcylinder/ calls them).
+// What depends on a thread set's uniforms alone (its widths, eta, the
+// curve's slopes and arc length) is McFastConst: microcylinder.wgsl computes
+// it once per vertex and passes it flat (RDNA has no scalar float ALU, so in
+// the fragment stage it is per-pixel work; README, "Per-vertex constants").
+// mc_thread_list_fast / mc_thread_curve_fast keep their signatures and
+// compute it themselves (tests/physics/microcylinder/ calls them); the
+// material calls the `_with` forms.
 
 // Offset-list pieces (shared with low): segments beyond MC_FAST_SPLIT_DEG
 // are integrated as two halves.
@@ -449,8 +454,38 @@ fn mc_schlick_t(c: f32) -> f32 {
     return 1.0 - x2 * x2 * x;
 }
 
-// As mc_fast_pre: frame components, psi, the support in slope space.
-fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McFastSet {
+// A thread set's values that depend on its uniforms alone.
+struct McFastConst {
+    // 1/gamma_s, 1/gamma_v (gamma floored at MC_MIN_GAMMA), eta^2, (1 - F0)^2.
+    shape: vec4<f32>,
+    // A curve: its slopes at t = 0, 1/2, 1 and 1 / its arc length.
+    curve: vec4<f32>,
+    // A curve: 1 / the slope step of each half (mc_fast_clip_step).
+    steps: vec2<f32>,
+}
+
+fn mc_fast_shape(th: McThread) -> vec4<f32> {
+    let f0 = weft_f0_from_ior(th.eta);
+    return vec4<f32>(1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
+                     th.eta * th.eta, (1.0 - f0) * (1.0 - f0));
+}
+
+// The curve's slopes at t = 0, 1/2, 1 (one-sided and central differences of
+// its 33 heights, as the low tier), its arc length (mc_fast_half_len on each
+// half) and each half's inverse slope step.
+fn mc_fast_const(th: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
+    let n = f32(MC_CURVE_SEGMENTS);
+    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
+    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
+    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
+    let total = mc_fast_half_len(s0, s1) + mc_fast_half_len(s1, s2);
+    return McFastConst(mc_fast_shape(th), vec4<f32>(s0, s1, s2, 1.0 / max(total, 1e-6)),
+                       vec2<f32>(mc_fast_clip_step(s0, s1), mc_fast_clip_step(s1, s2)));
+}
+
+// As mc_fast_pre: frame components, psi, the support in slope space; `shape`
+// as McFastConst's.
+fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, shape: vec4<f32>) -> McFastSet {
     let li = vec3<f32>(dot(wi, fr.u), dot(wi, fr.v), dot(wi, fr.n));
     let lr = vec3<f32>(dot(wr, fr.u), dot(wr, fr.v), dot(wr, fr.n));
     let ri2 = li.x * li.x + li.z * li.z;
@@ -463,11 +498,9 @@ fn mc_fast_setup(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread) -> McF
     let br = lr.z / select(max(lr.x, 1e-12), min(lr.x, -1e-12), lr.x < 0.0);
     let s_lo = max(select(-MC_FAST_BIG, bi, li.x < 0.0), select(-MC_FAST_BIG, br, lr.x < 0.0));
     let s_hi = min(select(MC_FAST_BIG, bi, li.x > 0.0), select(MC_FAST_BIG, br, lr.x > 0.0));
-    let f0 = weft_f0_from_ior(th.eta);
-    return McFastSet(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok),
-                     1.0 / max(th.gamma_s, MC_MIN_GAMMA), 1.0 / max(th.gamma_v, MC_MIN_GAMMA),
+    return McFastSet(li, lr, inv_ri, inv_rr, u_psi, select(0.0, 1.0, ok), shape.x, shape.y,
                      clamp(s_lo, -MC_FAST_BIG, MC_FAST_BIG), clamp(s_hi, -MC_FAST_BIG, MC_FAST_BIG),
-                     th.eta * th.eta, (1.0 - f0) * (1.0 - f0));
+                     shape.z, shape.w);
 }
 
 // The factors at the offset with (cos, sin) = (ca, sa), as mc_low_node in
@@ -544,8 +577,12 @@ fn mc_fast_segment(q: McFastSet, th: McThread, a0: f32, a1: f32, lo_s: f32, hi_s
 // segment one piece, two halves beyond MC_FAST_SPLIT_DEG), segments weighted
 // equally; one loop over the pieces, no branches.
 fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
+    return mc_thread_list_fast_with(fr, wi, wr, th, mc_fast_shape(th), offsets_a, offsets_b, count);
+}
+
+fn mc_thread_list_fast_with(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, shape: vec4<f32>, offsets_a: vec4<f32>, offsets_b: vec4<f32>, count: i32) -> vec4<f32> {
     let n = clamp(count, 1, MC_MAX_OFFSETS);
-    let q = mc_fast_setup(fr, wi, wr, th);
+    let q = mc_fast_setup(fr, wi, wr, shape);
     let lo_s = atan(q.s_lo);
     let hi_s = atan(q.s_hi);
     // A single control point: one flat piece on it.
@@ -566,15 +603,20 @@ fn mc_thread_list_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, 
 
 // Curve, one half (as mc_fast_half_clip): the t in [ta, ta + 1/2] whose
 // slope (linear from sa to sb) lies in (s_lo, s_hi), as (t0, t1); empty as
-// (2, -1). A flat half (|sb - sa| < MC_FAST_MIN_DSLOPE) is taken with that
-// slope step, so that its interval is all or nothing.
-fn mc_fast_clip(s_lo: f32, s_hi: f32, sa: f32, sb: f32, ta: f32) -> vec2<f32> {
-    let ds = sb - sa;
-    let inv = 1.0 / select(ds, select(-MC_FAST_MIN_DSLOPE, MC_FAST_MIN_DSLOPE, ds >= 0.0), abs(ds) < MC_FAST_MIN_DSLOPE);
+// (2, -1). `inv` = mc_fast_clip_step(sa, sb).
+fn mc_fast_clip(s_lo: f32, s_hi: f32, sa: f32, inv: f32, ta: f32) -> vec2<f32> {
     let u0 = (s_lo - sa) * inv;
     let u1 = (s_hi - sa) * inv;
     let u = saturate(vec2<f32>(min(u0, u1), max(u0, u1)));
     return select(vec2<f32>(2.0, -1.0), ta + 0.5 * u, u.x < u.y);
+}
+
+// 1 / the slope step sb - sa of a half. A flat half (|sb - sa| <
+// MC_FAST_MIN_DSLOPE) is taken with that slope step, so that its interval is
+// all or nothing.
+fn mc_fast_clip_step(sa: f32, sb: f32) -> f32 {
+    let ds = sb - sa;
+    return 1.0 / select(ds, select(-MC_FAST_MIN_DSLOPE, MC_FAST_MIN_DSLOPE, ds >= 0.0), abs(ds) < MC_FAST_MIN_DSLOPE);
 }
 
 // Arc length of a half (t over 1/2, slope linear from sa to sb) by 2-point
@@ -637,13 +679,16 @@ fn mc_fast_rule2(q: McFastSet, th: McThread, n0: McFastNode, n1: McFastNode, r: 
 // range are support bounds, else Gauss-Legendre), each weighted by its arc
 // length sqrt(1 + s^2), offset atan(s); divided by the profile's arc length.
 fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, heights: array<vec4<f32>, 9>) -> vec4<f32> {
-    let q = mc_fast_setup(fr, wi, wr, th);
-    let n = f32(MC_CURVE_SEGMENTS);
-    let s0 = n * (-1.5 * heights[0].x + 2.0 * heights[0].y - 0.5 * heights[0].z);
-    let s1 = 0.5 * n * (heights[4].y - heights[3].w);
-    let s2 = n * (1.5 * heights[8].x - 2.0 * heights[7].w + 0.5 * heights[7].z);
-    let h0 = mc_fast_clip(q.s_lo, q.s_hi, s0, s1, 0.0);
-    let h1 = mc_fast_clip(q.s_lo, q.s_hi, s1, s2, 0.5);
+    return mc_thread_curve_fast_with(fr, wi, wr, th, mc_fast_const(th, heights));
+}
+
+fn mc_thread_curve_fast_with(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread, k: McFastConst) -> vec4<f32> {
+    let q = mc_fast_setup(fr, wi, wr, k.shape);
+    let s0 = k.curve.x;
+    let s1 = k.curve.y;
+    let s2 = k.curve.z;
+    let h0 = mc_fast_clip(q.s_lo, q.s_hi, s0, k.steps.x, 0.0);
+    let h1 = mc_fast_clip(q.s_lo, q.s_hi, s1, k.steps.y, 0.5);
     let t0 = min(h0.x, h1.x);
     let t1 = max(max(h0.y, h1.y), t0);
     let w = t1 - t0;
@@ -657,6 +702,5 @@ fn mc_thread_curve_fast(fr: McFrame, wi: vec3<f32>, wr: vec3<f32>, th: McThread,
     let n0 = mc_fast_node(q, inv_len.x, sl.x * inv_len.x);
     let n1 = mc_fast_node(q, inv_len.y, sl.y * inv_len.y);
     let r = select(0.5, MC_GJ2_W, bump) * w * (l2 * inv_len);
-    let total = mc_fast_half_len(s0, s1) + mc_fast_half_len(s1, s2);
-    return mc_fast_rule2(q, th, n0, n1, r, bump) / max(total, 1e-6);
+    return mc_fast_rule2(q, th, n0, n1, r, bump) * k.curve.w;
 }

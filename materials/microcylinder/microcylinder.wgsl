@@ -25,8 +25,9 @@
 //               the nodes; exact dielectric F_r in a one-division form,
 //               Schlick's transmission in and out; transcendental-light
 //               angle forms (one polynomial asin for theta_h, u() from a
-//               series in cos). 4.22x / 4.15x standard fast (navi21 /
-//               gfx1100 loop-aware model), worst FLIP 0.048 (README).
+//               series in cos); what depends on the uniforms alone from
+//               the vertex stage (below). 3.72x standard fast on navi21
+//               and gfx1100 (loop-aware model), worst FLIP 0.048 (README).
 //   low       = an approximation of the reference: the 3-node rule (the
 //               same clipped ranges, 3 nodes for lists and curves, erf-exact
 //               cell means of both Gaussians: fast's rule before the cost
@@ -43,7 +44,13 @@
 // Keywords: USE_SECOND_PARA (second thread set; off = a2 = 0),
 // TANGENT_OFFSETS = curve (the seed's curves) | list (Table II lists).
 //
-// Ambient (both tiers, cheap and documented as an approximation): L2 SH
+// Vertex stage (vs_microcylinder): lib/forward.wgsl's, plus what depends on
+// the uniforms alone, flat: fast's McFastConst per thread set and the
+// ambient's mean Fresnel per thread set. The same value at every vertex, so
+// the fragment stage reads it instead of computing it per pixel (README,
+// "Per-vertex constants").
+//
+// Ambient (all tiers, cheap and documented as an approximation): L2 SH
 // irradiance E(n)/pi times the coverage-weighted (A_j + mean Fresnel of
 // eta_j); no environment specular (README "Ambient" compares it with the
 // model's own hemispherical response).
@@ -67,8 +74,61 @@ fn microcylinder_mean_fresnel(eta: f32) -> f32 {
     return f0 + (1.0 - f0) / 21.0;
 }
 
+// lib/forward.wgsl's varyings (locations 0-3) and the flat values of the
+// uniforms alone (both thread sets'; zero for a thread set or tier that does
+// not read them).
+struct MicrocylinderVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+    @location(2) world_tangent: vec4<f32>,
+    @location(3) uv0: vec2<f32>,
+    @location(4) @interpolate(flat) thread1_shape: vec4<f32>,
+    @location(5) @interpolate(flat) thread1_curve: vec4<f32>,
+    @location(6) @interpolate(flat) thread1_steps: vec2<f32>,
+    @location(7) @interpolate(flat) thread2_shape: vec4<f32>,
+    @location(8) @interpolate(flat) thread2_curve: vec4<f32>,
+    @location(9) @interpolate(flat) thread2_steps: vec2<f32>,
+    // The ambient's mean Fresnel of thread sets 1 and 2.
+    @location(10) @interpolate(flat) mean_fresnel: vec2<f32>,
+}
+
+// The thread set's McFastConst where fast reads it (a list reads only its
+// shape), else zero.
+fn microcylinder_fast_const(th: McThread, heights: array<vec4<f32>, 9>) -> McFastConst {
+    var k = McFastConst(vec4<f32>(0.0), vec4<f32>(0.0), vec2<f32>(0.0));
+    if WEFT_TIER == TIER_FAST {
+        if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
+            k.shape = mc_fast_shape(th);
+        } else {
+            k = mc_fast_const(th, heights);
+        }
+    }
+    return k;
+}
+
+@vertex
+fn vs_microcylinder(in: WeftVertexInput) -> MicrocylinderVaryings {
+    let base = weft_forward_vertex(in);
+    // The colour and its texture tint do not enter what is computed here.
+    let th1 = microcylinder_thread(material.thread1_color.rgb, material.thread1_ior, material.thread1_isotropy,
+                                   material.thread1_gamma_s, material.thread1_gamma_v, vec3<f32>(1.0));
+    let th2 = microcylinder_thread(material.thread2_color.rgb, material.thread2_ior, material.thread2_isotropy,
+                                   material.thread2_gamma_s, material.thread2_gamma_v, vec3<f32>(1.0));
+    let k1 = microcylinder_fast_const(th1, material.thread1_curve);
+    var k2 = McFastConst(vec4<f32>(0.0), vec4<f32>(0.0), vec2<f32>(0.0));
+    if USE_SECOND_PARA {
+        k2 = microcylinder_fast_const(th2, material.thread2_curve);
+    }
+    return MicrocylinderVaryings(
+        base.clip_position, base.world_position, base.world_normal, base.world_tangent, base.uv0,
+        k1.shape, k1.curve, k1.steps, k2.shape, k2.curve, k2.steps,
+        vec2<f32>(microcylinder_mean_fresnel(th1.eta), microcylinder_mean_fresnel(th2.eta)),
+    );
+}
+
 @fragment
-fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
+fn fs_main(in: MicrocylinderVaryings) -> @location(0) vec4<f32> {
     // ------------------------------------------------------------ inputs
     let uv = weft_transform_uv(in.uv0, material.albedo_map_st);
     let tint = max(textureSample(albedo_map, material_sampler, uv).rgb, vec3<f32>(0.0));
@@ -129,14 +189,14 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
         }
     } else {
         if TANGENT_OFFSETS == TANGENT_OFFSETS_LIST {
-            s1 = mc_thread_list_fast(warp, l, v, th1, material.thread1_offsets_a, material.thread1_offsets_b, material.thread1_offset_count);
+            s1 = mc_thread_list_fast_with(warp, l, v, th1, in.thread1_shape, material.thread1_offsets_a, material.thread1_offsets_b, material.thread1_offset_count);
             if USE_SECOND_PARA {
-                s2 = mc_thread_list_fast(weft, l, v, th2, material.thread2_offsets_a, material.thread2_offsets_b, material.thread2_offset_count);
+                s2 = mc_thread_list_fast_with(weft, l, v, th2, in.thread2_shape, material.thread2_offsets_a, material.thread2_offsets_b, material.thread2_offset_count);
             }
         } else {
-            s1 = mc_thread_curve_fast(warp, l, v, th1, material.thread1_curve);
+            s1 = mc_thread_curve_fast_with(warp, l, v, th1, McFastConst(in.thread1_shape, in.thread1_curve, in.thread1_steps));
             if USE_SECOND_PARA {
-                s2 = mc_thread_curve_fast(weft, l, v, th2, material.thread2_curve);
+                s2 = mc_thread_curve_fast_with(weft, l, v, th2, McFastConst(in.thread2_shape, in.thread2_curve, in.thread2_steps));
             }
         }
     }
@@ -149,8 +209,8 @@ fn fs_main(in: WeftVaryings) -> @location(0) vec4<f32> {
     // A_j + F_avg(eta_j), F_avg = f0 + (1 - f0)/21 (the cosine-weighted
     // hemispherical mean of Schlick), coverage-weighted. No environment
     // specular. With no coverage at all, thread set 1's.
-    let amb1 = th1.albedo + vec3<f32>(microcylinder_mean_fresnel(th1.eta));
-    let amb2 = th2.albedo + vec3<f32>(microcylinder_mean_fresnel(th2.eta));
+    let amb1 = th1.albedo + vec3<f32>(in.mean_fresnel.x);
+    let amb2 = th2.albedo + vec3<f32>(in.mean_fresnel.y);
     let cov = a1 + a2;
     let ambient_albedo = select(amb1, (a1 * amb1 + a2 * amb2) / max(cov, 1e-4), cov > 1e-4);
     let ambient = weft_sh_irradiance(n) * ambient_albedo;

@@ -309,19 +309,34 @@ impl Param {
 }
 
 impl Material {
-    /// Entry points named only by passes variant `key` does not have: the
-    /// compiler removes them (and the code only they reach) from its module.
-    pub fn dropped_entry_points(&self, key: &VariantKey) -> Vec<String> {
-        let kept: Vec<&str> = self
-            .passes_of(key)
-            .flat_map(|p| [p.vertex.as_str(), p.fragment.as_str()])
-            .collect();
-        let mut dropped: Vec<String> = Vec::new();
-        for p in &self.passes {
+    /// The entry points variant `key`'s passes name (vertex and fragment).
+    pub fn kept_entry_points(&self, key: &VariantKey) -> Vec<String> {
+        let mut kept: Vec<String> = Vec::new();
+        for p in self.passes_of(key) {
             for name in [&p.vertex, &p.fragment] {
-                if !kept.contains(&name.as_str()) && !dropped.contains(name) {
-                    dropped.push(name.clone());
+                if !kept.contains(name) {
+                    kept.push(name.clone());
                 }
+            }
+        }
+        kept
+    }
+
+    /// Entry points of the WGSL (`defined`) that no pass of variant `key`
+    /// names: those of passes the variant does not have, and any a shared
+    /// library defines that this material's passes do not use (lib/forward.wgsl's
+    /// `vs_main` where a material has a vertex stage of its own). The compiler
+    /// removes them (and the code only they reach) from the variant's module.
+    pub fn dropped_entry_points<'a>(
+        &self,
+        key: &VariantKey,
+        defined: impl IntoIterator<Item = &'a str>,
+    ) -> Vec<String> {
+        let kept = self.kept_entry_points(key);
+        let mut dropped: Vec<String> = Vec::new();
+        for name in defined {
+            if !kept.iter().any(|k| k == name) && !dropped.iter().any(|d| d == name) {
+                dropped.push(name.to_string());
             }
         }
         dropped

@@ -72,7 +72,8 @@ pub fn compile_variant(
 ) -> Result<CompiledVariant, String> {
     let id = key.id(m);
     let mut values = Bindings {
-        drop_entry_points: m.dropped_entry_points(key),
+        drop_entry_points: m
+            .dropped_entry_points(key, module.entry_points.iter().map(|ep| ep.name.as_str())),
         ..Bindings::default()
     };
     values

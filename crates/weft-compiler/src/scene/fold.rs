@@ -63,8 +63,10 @@ pub struct FoldRequest {
     pub textures: BTreeMap<String, [f32; 4]>,
     /// The material uniform variable's name.
     pub uniform_var: String,
-    /// Entry points of the passes the instance does not draw (`when`).
-    pub drop_entry_points: Vec<String>,
+    /// Entry points of the passes the instance draws; the module's others
+    /// (passes it does not draw, a library's unused `vs_main`) are dropped.
+    /// `None` keeps every entry point (a module folded on its own).
+    pub keep_entry_points: Option<Vec<String>>,
 }
 
 /// The folded module and what folding left in the uniform.
@@ -153,7 +155,17 @@ pub fn fold(module: &Module, request: &FoldRequest) -> Result<Folded, String> {
             .iter()
             .map(|(k, v)| (k.clone(), *v))
             .collect(),
-        drop_entry_points: request.drop_entry_points.clone(),
+        drop_entry_points: module
+            .entry_points
+            .iter()
+            .filter(|ep| {
+                request
+                    .keep_entry_points
+                    .as_ref()
+                    .is_some_and(|keep| !keep.contains(&ep.name))
+            })
+            .map(|ep| ep.name.clone())
+            .collect(),
     };
     let module = crate::compile::specialise::specialise(&module, &bindings);
 

@@ -81,7 +81,11 @@ pub fn instance_values(
 ) -> InstanceValues {
     let mut fold = FoldRequest {
         uniform_var: UNIFORM_VAR.into(),
-        drop_entry_points: m.dropped_entry_points(&VariantKey::of_values(m, tier, &inst.keywords)),
+        keep_entry_points: Some(m.kept_entry_points(&VariantKey::of_values(
+            m,
+            tier,
+            &inst.keywords,
+        ))),
         ..Default::default()
     };
     fold.overrides

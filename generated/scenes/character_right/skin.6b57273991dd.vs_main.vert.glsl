@@ -1,0 +1,247 @@
+#version 450 core
+struct WeftFrame {
+    mat4x4 view_proj;
+    mat4x4 view;
+    vec4 camera_position;
+    vec4 light_direction;
+    vec4 light_color;
+    vec4 sh[9];
+    vec4 params;
+    vec4 viewport;
+};
+struct WeftObject {
+    mat4x4 model;
+    mat4x4 normal_matrix;
+};
+struct WeftOutlineVertex {
+    vec3 position;
+    vec3 normal;
+};
+struct WeftOutlineVaryings {
+    vec4 clip_position;
+};
+struct WeftSurface {
+    vec3 v;
+    vec3 n;
+};
+struct WeftLightGeometry {
+    vec3 l;
+    vec3 h;
+    float n_dot_v;
+    float n_dot_l;
+    float n_dot_h;
+    float v_dot_h;
+};
+struct WeftVertexInput {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uv0_;
+};
+struct WeftVaryings {
+    vec4 clip_position;
+    vec3 world_position;
+    vec3 world_normal;
+    vec4 world_tangent;
+    vec2 uv0_;
+};
+const float WEFT_PI = 3.1415927;
+const float WEFT_INV_PI = 0.31830987;
+const vec3 skin_lut_shape = vec3(4.0, 10.0, 20.0);
+const float skin_lut_ring = 3.1415927;
+const vec3 seed_lut_shape = vec3(4.0, 10.0, 20.0);
+const float seed_lut_ring = 1.5707964;
+const uint TIER_FAST = 0u;
+const uint TIER_REFERENCE = 1u;
+const uint TIER_SEED = 2u;
+const float WEFT_MIN_ROUGHNESS = 0.045;
+const float WEFT_MIN_N_DOT = 0.0001;
+const float WEFT_MAX_HALF = 65504.0;
+const float WEFT_DIELECTRIC_F0_ = 0.04;
+
+layout(std140, binding = 0) uniform WeftFrame_block_0Vertex { WeftFrame _group_0_binding_0_vs; };
+
+layout(std140, binding = 1) uniform WeftObject_block_1Vertex { WeftObject _group_2_binding_0_vs; };
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+layout(location = 2) in vec4 _p2vs_location2;
+layout(location = 3) in vec2 _p2vs_location3;
+layout(location = 0) smooth out vec3 _vs2fs_location0;
+layout(location = 1) smooth out vec3 _vs2fs_location1;
+layout(location = 2) smooth out vec4 _vs2fs_location2;
+layout(location = 3) smooth out vec2 _vs2fs_location3;
+
+float weft_pow5_(float x) {
+    float x2_ = (x * x);
+    return ((x2_ * x2_) * x);
+}
+
+float weft_clamp_cos(float c) {
+    return clamp(c, WEFT_MIN_N_DOT, 1.0);
+}
+
+vec3 weft_safe_normalize(vec3 v, vec3 fallback) {
+    float len2_ = dot(v, v);
+    return ((len2_ > 1e-20) ? (v * inversesqrt(max(len2_, 1e-20))) : fallback);
+}
+
+vec3 weft_safe_normalize_k1_(vec3 v_1) {
+    float len2_1 = dot(v_1, v_1);
+    return ((len2_1 > 1e-20) ? (v_1 * inversesqrt(max(len2_1, 1e-20))) : vec3(0.0, 0.0, 1.0));
+}
+
+vec3 weft_main_light_direction() {
+    vec4 _e2 = _group_0_binding_0_vs.light_direction;
+    vec3 _e4 = weft_safe_normalize_k1_(_e2.xyz);
+    return _e4;
+}
+
+vec3 weft_main_light_radiance() {
+    vec4 _e2 = _group_0_binding_0_vs.light_color;
+    return max(_e2.xyz, vec3(0.0));
+}
+
+vec3 weft_sh_irradiance(vec3 n_1) {
+    vec3 e = vec3(0.0);
+    vec4 sh[9] = _group_0_binding_0_vs.sh;
+    e = (sh[0].xyz * 0.282095);
+    vec3 _e9 = e;
+    e = (_e9 + (sh[1].xyz * (0.488603 * n_1.y)));
+    vec3 _e17 = e;
+    e = (_e17 + (sh[2].xyz * (0.488603 * n_1.z)));
+    vec3 _e25 = e;
+    e = (_e25 + (sh[3].xyz * (0.488603 * n_1.x)));
+    vec3 _e33 = e;
+    e = (_e33 + (sh[4].xyz * ((1.092548 * n_1.x) * n_1.y)));
+    vec3 _e43 = e;
+    e = (_e43 + (sh[5].xyz * ((1.092548 * n_1.y) * n_1.z)));
+    vec3 _e53 = e;
+    e = (_e53 + (sh[6].xyz * (0.315392 * (((3.0 * n_1.z) * n_1.z) - 1.0))));
+    vec3 _e67 = e;
+    e = (_e67 + (sh[7].xyz * ((1.092548 * n_1.x) * n_1.z)));
+    vec3 _e77 = e;
+    e = (_e77 + (sh[8].xyz * (0.546274 * ((n_1.x * n_1.x) - (n_1.y * n_1.y)))));
+    vec3 _e91 = e;
+    return max(_e91, vec3(0.0));
+}
+
+vec3 weft_view_direction_k2_(vec3 world_position) {
+    vec4 _e4 = _group_0_binding_0_vs.camera_position;
+    vec3 _e7 = weft_safe_normalize_k1_((_e4.xyz - world_position));
+    return _e7;
+}
+
+WeftSurface weft_surface(vec3 world_position_1, vec3 world_normal) {
+    vec3 _e2 = weft_view_direction_k2_(world_position_1);
+    vec3 _e3 = weft_safe_normalize(world_normal, _e2);
+    return WeftSurface(_e2, _e3);
+}
+
+WeftLightGeometry weft_main_light_geometry(vec3 n_2, vec3 v_2) {
+    vec3 _e2 = weft_main_light_direction();
+    vec3 _e4 = weft_safe_normalize((_e2 + v_2), n_2);
+    float _e6 = weft_clamp_cos(dot(n_2, v_2));
+    return WeftLightGeometry(_e2, _e4, _e6, clamp(dot(n_2, _e2), 0.0, 1.0), clamp(dot(n_2, _e4), 0.0, 1.0), clamp(dot(v_2, _e4), 0.0, 1.0));
+}
+
+vec3 weft_safe_normalize_k3_(vec3 v_3) {
+    float len2_2 = dot(v_3, v_3);
+    return ((len2_2 > 1e-20) ? (v_3 * inversesqrt(max(len2_2, 1e-20))) : vec3(0.0));
+}
+
+WeftVaryings weft_forward_vertex(WeftVertexInput in_3) {
+    WeftVaryings out_1 = WeftVaryings(vec4(0.0), vec3(0.0), vec3(0.0), vec4(0.0), vec2(0.0));
+    mat4x4 model = _group_2_binding_0_vs.model;
+    mat3x3 model3_ = mat3x3(model[0].xyz, model[1].xyz, model[2].xyz);
+    mat4x4 nm = _group_2_binding_0_vs.normal_matrix;
+    mat3x3 normal3_ = mat3x3(nm[0].xyz, nm[1].xyz, nm[2].xyz);
+    vec4 world = (model * vec4(in_3.position, 1.0));
+    float mirror = ((determinant(model3_) < 0.0) ? -1.0 : 1.0);
+    float bitangent_sign = (((in_3.tangent.w < 0.0) ? -1.0 : 1.0) * mirror);
+    mat4x4 _e43 = _group_0_binding_0_vs.view_proj;
+    out_1.clip_position = (_e43 * vec4(world.xyz, 1.0));
+    out_1.world_position = world.xyz;
+    vec3 _e53 = weft_safe_normalize_k3_((normal3_ * in_3.normal));
+    out_1.world_normal = _e53;
+    vec3 _e58 = weft_safe_normalize_k3_((model3_ * in_3.tangent.xyz));
+    out_1.world_tangent = vec4(_e58, bitangent_sign);
+    out_1.uv0_ = in_3.uv0_;
+    WeftVaryings _e62 = out_1;
+    return _e62;
+}
+
+vec2 weft_transform_uv_k4_(vec2 uv_1) {
+    return (uv_1 + vec2(0.0, 0.0));
+}
+
+vec3 weft_env_brdf_from_lut_k6_(vec2 scale_bias) {
+    vec2 sb = clamp(scale_bias, vec2(0.0), vec2(1.0));
+    return ((vec3(0.028) * sb.x) + vec3(sb.y));
+}
+
+float weft_d_ggx_nh_k10_(vec3 n_3, vec3 h) {
+    float noh = clamp(dot(n_3, h), 0.0, 1.0);
+    vec3 nxh = cross(n_3, h);
+    float d = (dot(nxh, nxh) + ((noh * noh) * 0.01977539));
+    return (0.01977539 / (WEFT_PI * max((d * d), 1e-30)));
+}
+
+float weft_v_smith_ggx_correlated_k11_(float n_dot_v_1, float n_dot_l) {
+    float _e6 = weft_clamp_cos(n_dot_v_1);
+    float _e7 = weft_clamp_cos(n_dot_l);
+    float lv = (_e7 * sqrt((((_e6 * _e6) * 0.9802246) + 0.01977539)));
+    float ll = (_e6 * sqrt((((_e7 * _e7) * 0.9802246) + 0.01977539)));
+    return (0.5 / (lv + ll));
+}
+
+float weft_d_ggx_nh_k12_(vec3 n_4, vec3 h_1) {
+    float noh_1 = clamp(dot(n_4, h_1), 0.0, 1.0);
+    vec3 nxh_1 = cross(n_4, h_1);
+    float d_1 = (dot(nxh_1, nxh_1) + ((noh_1 * noh_1) * 0.17850621));
+    return (0.17850621 / (WEFT_PI * max((d_1 * d_1), 1e-30)));
+}
+
+float weft_v_smith_ggx_correlated_k13_(float n_dot_v_2, float n_dot_l_1) {
+    float _e6 = weft_clamp_cos(n_dot_v_2);
+    float _e7 = weft_clamp_cos(n_dot_l_1);
+    float lv_1 = (_e7 * sqrt((((_e6 * _e6) * 0.8214938) + 0.17850621)));
+    float ll_1 = (_e6 * sqrt((((_e7 * _e7) * 0.8214938) + 0.17850621)));
+    return (0.5 / (lv_1 + ll_1));
+}
+
+vec3 weft_f_schlick_k14_(float v_dot_h) {
+    float _e5 = weft_pow5_((1.0 - clamp(v_dot_h, 0.0, 1.0)));
+    return (vec3(0.028) + (vec3(0.972, 0.972, 0.972) * _e5));
+}
+
+float skin_dual_ggx_k7_(vec3 n_5, vec3 h_2, float n_dot_v_3, float n_dot_l_2, float v_dot_h_1) {
+    float _e10 = weft_d_ggx_nh_k10_(n_5, h_2);
+    float _e11 = weft_v_smith_ggx_correlated_k11_(n_dot_v_3, n_dot_l_2);
+    float lobe0_ = (_e10 * _e11);
+    float _e13 = weft_d_ggx_nh_k12_(n_5, h_2);
+    float _e14 = weft_v_smith_ggx_correlated_k13_(n_dot_v_3, n_dot_l_2);
+    float lobe1_ = (_e13 * _e14);
+    vec3 _e16 = weft_f_schlick_k14_(v_dot_h_1);
+    float f = _e16.x;
+    return (mix(lobe0_, lobe1_, 0.15) * f);
+}
+
+float weft_specular_mip_k15_() {
+    float _e5 = _group_0_binding_0_vs.params.x;
+    float max_mip = max((_e5 - 1.0), 0.0);
+    return (0.675 * max_mip);
+}
+
+void main() {
+    WeftVertexInput in_1 = WeftVertexInput(_p2vs_location0, _p2vs_location1, _p2vs_location2, _p2vs_location3);
+    WeftVaryings _e1 = weft_forward_vertex(in_1);
+    gl_Position = _e1.clip_position;
+    _vs2fs_location0 = _e1.world_position;
+    _vs2fs_location1 = _e1.world_normal;
+    _vs2fs_location2 = _e1.world_tangent;
+    _vs2fs_location3 = _e1.uv0_;
+    gl_Position.yz = vec2(-gl_Position.y, gl_Position.z * 2.0 - gl_Position.w);
+    return;
+}
+
